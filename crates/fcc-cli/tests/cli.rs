@@ -1,0 +1,235 @@
+//! The `fcc` binary end to end: scene -> cluster -> labels, and its errors.
+
+use fcc_golden::{reference::reference_labels, Frame};
+use fcc_params::FccParams;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn fcc(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_fcc"))
+        .args(args)
+        .output()
+        .expect("run fcc")
+}
+
+fn tmpdir(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("fcc-cli-{}-{name}", std::process::id()));
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+fn s(p: &Path) -> &str {
+    p.to_str().unwrap()
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+/// Same partition: a bijection between the non-zero labels, zeros in the same places.
+fn same_partition(a: &[u32], b: &[u32]) -> bool {
+    use std::collections::HashMap;
+    let (mut ab, mut ba) = (HashMap::new(), HashMap::new());
+    a.iter().zip(b).all(|(&x, &y)| {
+        (x == 0) == (y == 0) && *ab.entry(x).or_insert(y) == y && *ba.entry(y).or_insert(x) == x
+    })
+}
+
+#[test]
+fn scene_then_cluster_matches_the_reference() {
+    let d = tmpdir("scene");
+    let (frame, gt, labels) = (d.join("f.npy"), d.join("gt.npy"), d.join("l.npy"));
+    let o = fcc(&[
+        "scene",
+        "--seed",
+        "3",
+        "--rows",
+        "32",
+        "--cols",
+        "512",
+        "--output",
+        s(&frame),
+        "--gt",
+        s(&gt),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let o = fcc(&[
+        "cluster",
+        "--input",
+        s(&frame),
+        "--output",
+        s(&labels),
+        "--fsize",
+        "5",
+        "--stats",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let stats: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    for key in [
+        "points",
+        "provisional",
+        "clusters",
+        "joins",
+        "overflow",
+        "time_ms",
+    ] {
+        assert!(stats.get(key).is_some(), "--stats lacks {key}: {stats}");
+    }
+    let img = fcc_npy::read_xyz(&frame).unwrap();
+    let got = fcc_npy::read_labels(&labels).unwrap();
+    assert_eq!((got.rows, got.cols), (32, 512));
+    let p = FccParams {
+        rows: 32,
+        cols: 512,
+        fsize: 5,
+        ..FccParams::default()
+    };
+    let want = reference_labels(&p, &Frame::from_xyz_f64(32, 512, &img.xyz));
+    assert!(same_partition(&want, &got.labels));
+    assert_eq!(
+        want, got.labels,
+        "numbering follows raster order of first pixel"
+    );
+    assert!(stats["clusters"].as_u64().unwrap() > 5);
+    let truth = fcc_npy::read_labels(&gt).unwrap();
+    assert!(truth.labels.iter().any(|&l| l > 0));
+}
+
+#[test]
+fn batch_writes_one_label_file_per_input() {
+    let d = tmpdir("batch");
+    let mut inputs = Vec::new();
+    for seed in 0..3 {
+        let f = d.join(format!("s{seed}.npy"));
+        let o = fcc(&[
+            "scene",
+            "--seed",
+            &seed.to_string(),
+            "--rows",
+            "16",
+            "--cols",
+            "256",
+            "--output",
+            s(&f),
+        ]);
+        assert!(o.status.success(), "{}", stderr(&o));
+        inputs.push(f);
+    }
+    let out = d.join("out");
+    let mut args = vec![
+        "cluster",
+        "--jobs",
+        "2",
+        "--stats",
+        "--output",
+        s(&out),
+        "--input",
+    ];
+    args.extend(inputs.iter().map(|p| s(p)));
+    let o = fcc(&args);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_eq!(String::from_utf8_lossy(&o.stdout).lines().count(), 3);
+    for seed in 0..3 {
+        assert!(out.join(format!("s{seed}.labels.npy")).exists());
+    }
+}
+
+fn assert_one_line_error(o: &Output, file: &Path, problem: &str) {
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(o));
+    let e = stderr(o);
+    assert_eq!(e.lines().count(), 1, "{e}");
+    assert!(e.contains(s(file)), "{e}");
+    assert!(e.contains(problem), "{e}");
+}
+
+#[test]
+fn bad_inputs_end_with_one_line_and_exit_code_2() {
+    let d = tmpdir("bad");
+    let not_npy = d.join("not.npy");
+    std::fs::write(&not_npy, "x,y,z\n1,2,3\n").unwrap();
+    let o = fcc(&[
+        "cluster",
+        "--input",
+        s(&not_npy),
+        "--output",
+        s(&d.join("o.npy")),
+    ]);
+    assert_one_line_error(&o, &not_npy, "not a .npy file");
+
+    let labels = d.join("labels.npy");
+    fcc_npy::write_labels(&labels, 2, 2, &[0, 1, 2, 3]).unwrap();
+    let o = fcc(&["cluster", "--input", s(&labels)]);
+    assert_one_line_error(&o, &labels, "is not (rows, cols, 3)");
+
+    let frame = d.join("frame.npy");
+    fcc_npy::write_xyz_f32(&frame, 2, 2, &[1.0; 12]).unwrap();
+    let mut bytes = std::fs::read(&frame).unwrap();
+    bytes.truncate(bytes.len() - 5);
+    let cut = d.join("cut.npy");
+    std::fs::write(&cut, bytes).unwrap();
+    let o = fcc(&["cluster", "--input", s(&cut)]);
+    assert_one_line_error(&o, &cut, "truncated");
+
+    let missing = d.join("missing.npy");
+    let o = fcc(&["cluster", "--input", s(&missing)]);
+    assert_one_line_error(&o, &missing, "cannot read");
+}
+
+#[test]
+fn bad_parameters_name_the_field() {
+    let d = tmpdir("params");
+    let frame = d.join("frame.npy");
+    fcc_npy::write_xyz_f32(&frame, 2, 2, &[1.0; 12]).unwrap();
+    let o = fcc(&["cluster", "--input", s(&frame), "--fsize", "4"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert_eq!(
+        stderr(&o).trim(),
+        "error: fsize = 4 is out of range: an odd number in 3 ..= 15"
+    );
+    let o = fcc(&["cluster", "--input", s(&frame), "--th-v", "0"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("th_v = 0 is out of range"),
+        "{}",
+        stderr(&o)
+    );
+    let o = fcc(&["cluster", "--input", s(&frame), "--merge", "fast"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("expected `exact` or `paper`"),
+        "{}",
+        stderr(&o)
+    );
+    let o = fcc(&["scene", "--rows", "4", "--output", s(&d.join("s.npy"))]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("rows"), "{}", stderr(&o));
+}
+
+#[test]
+fn paper_merge_is_selectable() {
+    let d = tmpdir("paper");
+    let frame = d.join("f.npy");
+    let o = fcc(&[
+        "scene",
+        "--seed",
+        "5",
+        "--rows",
+        "16",
+        "--cols",
+        "256",
+        "--output",
+        s(&frame),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let o = fcc(&[
+        "cluster",
+        "--input",
+        s(&frame),
+        "--merge",
+        "paper",
+        "--stats",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let stats: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(stats["merge"], "paper");
+}

@@ -1,0 +1,360 @@
+//! The one parameter set of Fast Channel Clustering.
+//!
+//! [`FccParams`] is built once (by the CLI, a test or a bench), validated, and
+//! then read by everything else: the golden model, the RTL generator, the
+//! Verilator benches and the Vivado scripts. Derived quantities (integer
+//! thresholds, window half-size, label range) are methods, computed in one
+//! place, so no other crate retypes a formula.
+
+use serde::{Deserialize, Serialize};
+use thiserror::Error;
+
+/// Fractional bits of the Q7.8 coordinate format.
+pub const FRAC_BITS: u32 = 8;
+/// One metre in Q7.8 units.
+pub const Q_ONE: f64 = (1u32 << FRAC_BITS) as f64;
+
+/// Allowed ranges, named once so errors, docs and the CLI agree.
+pub mod limits {
+    use std::ops::RangeInclusive;
+    /// Connection-filter size K (odd).
+    pub const FSIZE: RangeInclusive<usize> = 3..=15;
+    /// Provisional label width in bits.
+    pub const LABEL_BITS: RangeInclusive<u32> = 8..=20;
+    /// Thresholds in metres, exclusive on both ends.
+    pub const TH_MIN_EXCL: f64 = 0.0;
+    pub const TH_MAX_EXCL: f64 = 128.0;
+    /// Image sizes the golden model accepts.
+    pub const ROWS: RangeInclusive<usize> = 1..=4096;
+    pub const COLS: RangeInclusive<usize> = 1..=65536;
+    /// Image sizes the RTL generator accepts.
+    pub const HW_ROWS: RangeInclusive<usize> = 16..=128;
+    pub const HW_COLS: RangeInclusive<usize> = 256..=4096;
+    /// Filter sizes the RTL generator accepts.
+    pub const HW_FSIZE: RangeInclusive<usize> = 3..=11;
+    /// Label widths the RTL generator accepts (output slots are 16 bits).
+    pub const HW_LABEL_BITS: RangeInclusive<u32> = 8..=16;
+    /// Labels packed into one output beat.
+    pub const LABELS_PER_BEAT: [u32; 3] = [1, 2, 4];
+    /// Clock requested from the XDC, MHz.
+    pub const CLOCK_MHZ_MIN_EXCL: f64 = 0.0;
+    pub const CLOCK_MHZ_MAX: f64 = 500.0;
+}
+
+/// A parameter that is out of range. The message names the field, the value
+/// and what is allowed.
+#[derive(Debug, Error, Clone, PartialEq)]
+#[error("{field} = {value} is out of range: {allowed}")]
+pub struct ParamError {
+    pub field: &'static str,
+    pub value: String,
+    pub allowed: String,
+}
+
+fn range_err(field: &'static str, value: impl ToString, allowed: impl ToString) -> ParamError {
+    ParamError {
+        field,
+        value: value.to_string(),
+        allowed: allowed.to_string(),
+    }
+}
+
+/// Every setting of one FCC configuration.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FccParams {
+    /// Laser channels (image rows); row 0 is the top beam.
+    pub rows: usize,
+    /// Azimuth columns.
+    pub cols: usize,
+    /// Connection-filter size K (odd).
+    pub fsize: usize,
+    /// Intra-channel (horizontal) threshold, metres.
+    pub th_h: f64,
+    /// Inter-channel (vertical) threshold, metres.
+    pub th_v: f64,
+    /// Provisional label width B; labels are 1 ..= 2^B - 1.
+    pub label_bits: u32,
+    /// Clock the constraints ask for, MHz (hardware only).
+    pub clock_mhz: f64,
+    /// Output labels packed per AXI4-Stream beat (hardware only).
+    pub labels_per_beat: u32,
+}
+
+impl Default for FccParams {
+    /// The HDL-64E-like default: K = 7 on 64 x 2048, 0.5 m / 1.0 m, 15-bit labels.
+    fn default() -> Self {
+        FccParams {
+            rows: 64,
+            cols: 2048,
+            fsize: 7,
+            th_h: 0.5,
+            th_v: 1.0,
+            label_bits: 15,
+            clock_mhz: 200.0,
+            labels_per_beat: 4,
+        }
+    }
+}
+
+/// Quantise a threshold in metres: `floor(th * 256 + 0.5)`.
+pub fn quantize_threshold(th: f64) -> i64 {
+    (th * Q_ONE + 0.5).floor() as i64
+}
+
+impl FccParams {
+    /// Check every field against the ranges the golden model supports.
+    pub fn validate(&self) -> Result<(), ParamError> {
+        check_range("rows", self.rows, &limits::ROWS)?;
+        check_range("cols", self.cols, &limits::COLS)?;
+        check_fsize("fsize", self.fsize, &limits::FSIZE)?;
+        check_threshold("th_h", self.th_h)?;
+        check_threshold("th_v", self.th_v)?;
+        check_range("label_bits", self.label_bits, &limits::LABEL_BITS)?;
+        if !(self.clock_mhz > limits::CLOCK_MHZ_MIN_EXCL && self.clock_mhz <= limits::CLOCK_MHZ_MAX)
+        {
+            return Err(range_err(
+                "clock_mhz",
+                self.clock_mhz,
+                format!("0 < clock_mhz <= {}", limits::CLOCK_MHZ_MAX),
+            ));
+        }
+        if !limits::LABELS_PER_BEAT.contains(&self.labels_per_beat) {
+            return Err(range_err(
+                "labels_per_beat",
+                self.labels_per_beat,
+                "1, 2 or 4",
+            ));
+        }
+        Ok(())
+    }
+
+    /// [`validate`](Self::validate), plus the tighter ranges of the RTL generator.
+    pub fn validate_for_hardware(&self) -> Result<(), ParamError> {
+        self.validate()?;
+        check_range("rows", self.rows, &limits::HW_ROWS)?;
+        check_range("cols", self.cols, &limits::HW_COLS)?;
+        check_fsize("fsize", self.fsize, &limits::HW_FSIZE)?;
+        check_range("label_bits", self.label_bits, &limits::HW_LABEL_BITS)?;
+        Ok(())
+    }
+
+    /// Window half-size h = (K - 1) / 2: rows above the centre, columns either side.
+    pub fn half(&self) -> usize {
+        (self.fsize - 1) / 2
+    }
+
+    /// Window positions compared with each centre: K * (K - 1) / 2.
+    pub fn window_positions(&self) -> usize {
+        self.fsize * self.half()
+    }
+
+    /// Intra-channel threshold in Q7.8 units.
+    pub fn th_h_q(&self) -> i64 {
+        quantize_threshold(self.th_h)
+    }
+
+    /// Inter-channel threshold in Q7.8 units.
+    pub fn th_v_q(&self) -> i64 {
+        quantize_threshold(self.th_v)
+    }
+
+    /// Squared intra-channel threshold: a pair continues a run when d2 <= this.
+    pub fn th_h_sq(&self) -> i64 {
+        self.th_h_q() * self.th_h_q()
+    }
+
+    /// Squared inter-channel threshold: a pair joins when d2 < this.
+    pub fn th_v_sq(&self) -> i64 {
+        self.th_v_q() * self.th_v_q()
+    }
+
+    /// Largest provisional label, 2^B - 1.
+    pub fn max_label(&self) -> u32 {
+        (1u32 << self.label_bits) - 1
+    }
+
+    /// Pixels in one frame.
+    pub fn pixels(&self) -> usize {
+        self.rows * self.cols
+    }
+
+    /// The parameters as canonical JSON (stable field order), as written beside generated files.
+    pub fn to_json(&self) -> String {
+        serde_json::to_string_pretty(self).expect("FccParams always serialises")
+    }
+
+    /// A short, stable hash of the canonical JSON (FNV-1a 64), for generated-file headers.
+    pub fn hash(&self) -> String {
+        let mut h: u64 = 0xcbf2_9ce4_8422_2325;
+        for b in self.to_json().bytes() {
+            h ^= u64::from(b);
+            h = h.wrapping_mul(0x0000_0100_0000_01b3);
+        }
+        format!("{h:016x}")
+    }
+}
+
+fn check_range<T>(
+    field: &'static str,
+    v: T,
+    r: &std::ops::RangeInclusive<T>,
+) -> Result<(), ParamError>
+where
+    T: PartialOrd + std::fmt::Display + Copy,
+{
+    if r.contains(&v) {
+        Ok(())
+    } else {
+        Err(range_err(
+            field,
+            v,
+            format!("{} ..= {}", r.start(), r.end()),
+        ))
+    }
+}
+
+fn check_fsize(
+    field: &'static str,
+    k: usize,
+    r: &std::ops::RangeInclusive<usize>,
+) -> Result<(), ParamError> {
+    if r.contains(&k) && k % 2 == 1 {
+        Ok(())
+    } else {
+        Err(range_err(
+            field,
+            k,
+            format!("an odd number in {} ..= {}", r.start(), r.end()),
+        ))
+    }
+}
+
+fn check_threshold(field: &'static str, th: f64) -> Result<(), ParamError> {
+    if th.is_finite() && th > limits::TH_MIN_EXCL && th < limits::TH_MAX_EXCL {
+        Ok(())
+    } else {
+        Err(range_err(
+            field,
+            th,
+            format!(
+                "{} < {field} < {} metres",
+                limits::TH_MIN_EXCL,
+                limits::TH_MAX_EXCL
+            ),
+        ))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn default_is_valid_for_hardware() {
+        FccParams::default().validate_for_hardware().unwrap();
+    }
+
+    #[test]
+    fn even_fsize_names_the_field() {
+        let p = FccParams {
+            fsize: 6,
+            ..Default::default()
+        };
+        let e = p.validate().unwrap_err();
+        assert_eq!(e.field, "fsize");
+        assert_eq!(
+            e.to_string(),
+            "fsize = 6 is out of range: an odd number in 3 ..= 15"
+        );
+    }
+
+    #[test]
+    fn fsize_one_is_rejected() {
+        let p = FccParams {
+            fsize: 1,
+            ..Default::default()
+        };
+        assert_eq!(p.validate().unwrap_err().field, "fsize");
+    }
+
+    #[test]
+    fn thresholds_must_be_positive_and_below_128() {
+        for (th, ok) in [
+            (0.0, false),
+            (-1.0, false),
+            (128.0, false),
+            (f64::NAN, false),
+            (127.99, true),
+        ] {
+            let p = FccParams {
+                th_v: th,
+                ..Default::default()
+            };
+            assert_eq!(p.validate().is_ok(), ok, "th_v = {th}");
+            if !ok {
+                assert_eq!(p.validate().unwrap_err().field, "th_v");
+            }
+        }
+    }
+
+    #[test]
+    fn zero_rows_or_cols_rejected() {
+        let p = FccParams {
+            rows: 0,
+            ..Default::default()
+        };
+        assert_eq!(p.validate().unwrap_err().field, "rows");
+        let p = FccParams {
+            cols: 0,
+            ..Default::default()
+        };
+        assert_eq!(p.validate().unwrap_err().field, "cols");
+    }
+
+    #[test]
+    fn hardware_ranges_are_tighter() {
+        let p = FccParams {
+            fsize: 13,
+            ..Default::default()
+        };
+        p.validate().unwrap();
+        assert_eq!(p.validate_for_hardware().unwrap_err().field, "fsize");
+        let p = FccParams {
+            rows: 8,
+            ..Default::default()
+        };
+        assert_eq!(p.validate_for_hardware().unwrap_err().field, "rows");
+    }
+
+    #[test]
+    fn threshold_quantisation_rounds_half_up() {
+        assert_eq!(quantize_threshold(0.5), 128);
+        assert_eq!(quantize_threshold(1.0), 256);
+        // 0.001953125 m is exactly half a Q7.8 step: rounds up.
+        assert_eq!(quantize_threshold(0.001_953_125), 1);
+        assert_eq!(quantize_threshold(0.0019), 0);
+    }
+
+    #[test]
+    fn derived_sizes() {
+        let p = FccParams::default();
+        assert_eq!(p.half(), 3);
+        assert_eq!(p.window_positions(), 21);
+        assert_eq!(p.max_label(), 32767);
+        assert_eq!(p.th_v_sq(), 65536);
+    }
+
+    #[test]
+    fn json_round_trip_and_stable_hash() {
+        let p = FccParams::default();
+        let q: FccParams = serde_json::from_str(&p.to_json()).unwrap();
+        assert_eq!(p, q);
+        assert_eq!(p.hash(), q.hash());
+        let r = FccParams {
+            fsize: 5,
+            ..Default::default()
+        };
+        assert_ne!(p.hash(), r.hash());
+    }
+}

@@ -1,0 +1,157 @@
+//! Pass 3: the merge table and label update (spec §5 and §7).
+
+use crate::pass2::JoinSink;
+
+/// Exact connected components: a union-find over provisional labels with
+/// path halving, linking the larger root under the smaller, so every root
+/// is the smallest label of its component (its first run in raster order).
+#[derive(Debug, Clone)]
+pub struct ExactMerge {
+    parent: Vec<u32>,
+    /// Joins that united two different components.
+    pub merges: u64,
+}
+
+impl ExactMerge {
+    /// A table for labels `1 ..= provisional` (entry 0 is unused).
+    pub fn new(provisional: u32) -> Self {
+        ExactMerge {
+            parent: (0..=provisional).collect(),
+            merges: 0,
+        }
+    }
+
+    /// The root (smallest label) of `l`'s component, halving the path.
+    pub fn find(&mut self, mut l: u32) -> u32 {
+        while self.parent[l as usize] != l {
+            let grand = self.parent[self.parent[l as usize] as usize];
+            self.parent[l as usize] = grand;
+            l = grand;
+        }
+        l
+    }
+
+    /// Join the components of `a` and `b`.
+    pub fn union(&mut self, a: u32, b: u32) {
+        let (ra, rb) = (self.find(a), self.find(b));
+        if ra != rb {
+            let (lo, hi) = if ra < rb { (ra, rb) } else { (rb, ra) };
+            self.parent[hi as usize] = lo;
+            self.merges += 1;
+        }
+    }
+
+    /// Representative of every label: `rep[l]` is the root of `l`.
+    pub fn representatives(mut self) -> Vec<u32> {
+        (0..self.parent.len() as u32)
+            .map(|l| self.find(l))
+            .collect()
+    }
+}
+
+impl JoinSink for ExactMerge {
+    #[inline]
+    fn centre(&mut self, _label: u32) {}
+    #[inline]
+    fn join(&mut self, centre: u32, other: u32) {
+        // Most joins repeat one already made: equal parents mean one set.
+        if self.parent[centre as usize] != self.parent[other as usize] {
+            self.union(centre, other);
+        }
+    }
+    #[inline]
+    fn row_end(&mut self) {}
+}
+
+/// The merge table of the published Algorithm 2, kept so its losses can be
+/// reproduced and measured (spec §6). Not connected components in general.
+#[derive(Debug, Clone)]
+pub struct PaperMerge {
+    table: Vec<u32>,
+    current: u32,
+    collected: Vec<u32>,
+}
+
+impl PaperMerge {
+    /// `T[l] = l` for labels `0 ..= provisional`.
+    pub fn new(provisional: u32) -> Self {
+        PaperMerge {
+            table: (0..=provisional).collect(),
+            current: 0,
+            collected: Vec::new(),
+        }
+    }
+
+    fn collect(&mut self, l: u32) {
+        let t = self.table[l as usize];
+        if !self.collected.contains(&t) {
+            self.collected.push(t);
+        }
+    }
+
+    /// `T[L] = T[min]` for every collected L, in ascending order.
+    fn flush(&mut self) {
+        if self.collected.is_empty() {
+            return;
+        }
+        self.collected.sort_unstable();
+        let target = self.table[self.collected[0] as usize];
+        for &l in &self.collected {
+            self.table[l as usize] = target;
+        }
+        self.collected.clear();
+    }
+
+    /// Apply one ring-check join as its own flush of `{T[a], T[b]}`.
+    pub fn ring_join(&mut self, a: u32, b: u32) {
+        self.collect(a);
+        self.collect(b);
+        self.flush();
+    }
+
+    /// The output lookup `T[T[l]]` of every label.
+    pub fn representatives(mut self) -> Vec<u32> {
+        self.flush();
+        let t = &self.table;
+        t.iter().map(|&l| t[l as usize]).collect()
+    }
+}
+
+impl JoinSink for PaperMerge {
+    fn centre(&mut self, label: u32) {
+        if label != self.current {
+            self.flush();
+            self.current = label;
+        }
+    }
+    fn join(&mut self, centre: u32, other: u32) {
+        self.collect(centre);
+        self.collect(other);
+    }
+    fn row_end(&mut self) {
+        self.flush();
+        self.current = 0;
+    }
+}
+
+/// Final labels: 0 for unlabelled pixels, otherwise the representatives
+/// numbered 1..N in raster order of their first pixel. Returns (labels, N).
+pub fn renumber(provisional_labels: &[u32], rep: &[u32]) -> (Vec<u32>, u32) {
+    let mut id = vec![0u32; rep.len()];
+    let mut n = 0u32;
+    let labels = provisional_labels
+        .iter()
+        .map(|&l| {
+            if l == 0 {
+                return 0;
+            }
+            let r = rep[l as usize] as usize;
+            if id[r] == 0 {
+                n += 1;
+                id[r] = n;
+            }
+            id[r]
+        })
+        .collect();
+    (labels, n)
+}

@@ -1,0 +1,82 @@
+//! Pass 2: inter-channel grouping through the K x K connection filter (spec §4).
+
+use crate::frame::Frame;
+use crate::pass1::Pass1;
+use fcc_params::FccParams;
+
+/// Receives the events of pass 2 in scan order. The exact merge only needs
+/// [`join`](Self::join); the published merge table also needs to know when
+/// the centre's run changes and when a row ends.
+pub trait JoinSink {
+    /// A valid, labelled centre with provisional label `label` is about to be
+    /// filtered. Called for every such centre, in raster order.
+    fn centre(&mut self, label: u32);
+    /// The centre (label `centre`) is within `tV` of a valid, labelled pixel
+    /// above it with label `other`.
+    fn join(&mut self, centre: u32, other: u32);
+    /// The last column of a row has been filtered.
+    fn row_end(&mut self);
+}
+
+/// Run the connection filter over every valid centre.
+///
+/// For centre (i, j) the window holds the pixels (i - m, j + n) with
+/// `1 <= m <= h` and `|n| <= h`, h = (K - 1) / 2, that lie inside the image:
+/// only rows above, no wrap at the left and right edges. A window pixel
+/// joins the centre when both are labelled and `d2 < tV^2` (strict).
+/// Window pixels are visited row by row, left to right; a join that repeats
+/// the previous join of the same centre is counted but not reported again.
+/// Returns the number of joins (pairs that passed the threshold).
+pub fn pass2<S: JoinSink>(params: &FccParams, frame: &Frame, p1: &Pass1, sink: &mut S) -> u64 {
+    let th_sq = params.th_v_sq();
+    let h = params.half();
+    let cols = frame.cols;
+    // x, y, z and label side by side; label 0 marks a pixel that never joins.
+    let packed: Vec<[i32; 4]> = frame
+        .points
+        .iter()
+        .zip(&p1.labels)
+        .map(|(p, &l)| match p {
+            Some(p) if l != 0 => [i32::from(p[0]), i32::from(p[1]), i32::from(p[2]), l as i32],
+            _ => [0; 4],
+        })
+        .collect();
+    let mut joins = 0u64;
+    for i in 0..frame.rows {
+        let row = i * cols;
+        for j in 0..cols {
+            let pc = packed[row + j];
+            if pc[3] == 0 {
+                continue;
+            }
+            let lc = pc[3] as u32;
+            sink.centre(lc);
+            let lo = j.saturating_sub(h);
+            let hi = (j + h).min(cols - 1);
+            let mut last = 0u32;
+            for m in 1..=h.min(i) {
+                let up = (i - m) * cols;
+                for q in &packed[up + lo..=up + hi] {
+                    if q[3] == 0 {
+                        continue;
+                    }
+                    let (dx, dy, dz) = (
+                        i64::from(pc[0] - q[0]),
+                        i64::from(pc[1] - q[1]),
+                        i64::from(pc[2] - q[2]),
+                    );
+                    if dx * dx + dy * dy + dz * dz < th_sq {
+                        joins += 1;
+                        let ln = q[3] as u32;
+                        if ln != last {
+                            last = ln;
+                            sink.join(lc, ln);
+                        }
+                    }
+                }
+            }
+        }
+        sink.row_end();
+    }
+    joins
+}

@@ -1,0 +1,281 @@
+//! Hand-worked frames for each pass and for the whole model (spec examples).
+
+use fcc_golden::{
+    cluster, pass1, reference::reference_labels, split_components, Frame, GoldenError, MergeMode,
+};
+use fcc_params::FccParams;
+
+/// A frame from ASCII art: `#` is a point on a vertical grid at 10 m range,
+/// `spacing` metres apart in both directions; `.` is empty.
+fn grid(art: &str, spacing: f64) -> Frame {
+    let lines: Vec<&str> = art.split_whitespace().collect();
+    let (rows, cols) = (lines.len(), lines[0].len());
+    let mut xyz = Vec::new();
+    for (r, line) in lines.iter().enumerate() {
+        assert_eq!(line.len(), cols);
+        for (c, ch) in line.chars().enumerate() {
+            if ch == '#' {
+                xyz.extend([10.0, c as f64 * spacing, -(r as f64) * spacing]);
+            } else {
+                xyz.extend([f64::NAN; 3]);
+            }
+        }
+    }
+    Frame::from_xyz_f64(rows, cols, &xyz)
+}
+
+fn params_for(f: &Frame, fsize: usize, th_h: f64, th_v: f64) -> FccParams {
+    FccParams {
+        rows: f.rows,
+        cols: f.cols,
+        fsize,
+        th_h,
+        th_v,
+        ..FccParams::default()
+    }
+}
+
+fn run(f: &Frame, p: &FccParams) -> Vec<u32> {
+    let got = cluster(p, f, MergeMode::Exact).unwrap();
+    assert_eq!(got.labels, reference_labels(p, f), "model != reference");
+    got.labels
+}
+
+#[test]
+fn pass1_empty_pixels_do_not_break_a_run() {
+    let f = grid("#..#.#", 0.1);
+    // Consecutive valid pixels are 0.3 m and 0.2 m apart.
+    let p = params_for(&f, 3, 0.3, 1.0);
+    let p1 = pass1(&p, &f);
+    assert_eq!(p1.labels, vec![1, 0, 0, 1, 0, 1]);
+    assert_eq!(p1.provisional, 1);
+    let p = params_for(&f, 3, 0.25, 1.0);
+    assert_eq!(pass1(&p, &f).labels, vec![1, 0, 0, 2, 0, 2]);
+}
+
+#[test]
+fn pass1_threshold_is_inclusive() {
+    // Exactly 0.5 m apart (128 Q7.8 units): d2 == tH^2 continues the run.
+    let f = grid("##", 0.5);
+    assert_eq!(pass1(&params_for(&f, 3, 0.5, 1.0), &f).labels, vec![1, 1]);
+    assert_eq!(pass1(&params_for(&f, 3, 0.49, 1.0), &f).labels, vec![1, 2]);
+}
+
+#[test]
+fn pass1_labels_in_raster_order() {
+    let f = grid("#.# .#.", 1.0);
+    let p1 = pass1(&params_for(&f, 3, 0.5, 0.5), &f);
+    assert_eq!(p1.labels, vec![1, 0, 2, 0, 3, 0]);
+    assert_eq!(p1.provisional, 3);
+}
+
+#[test]
+fn ring_check_joins_first_and_last_runs() {
+    // A ring of points on a circle of radius 2 m: first and last are neighbours.
+    let cols = 16;
+    let mut xyz = Vec::new();
+    for c in 0..cols {
+        let a = std::f64::consts::TAU * c as f64 / cols as f64;
+        if c == 8 {
+            xyz.extend([f64::NAN; 3]); // a gap splits the ring into two runs
+        } else {
+            xyz.extend([2.0 * a.cos(), 2.0 * a.sin(), 0.0]);
+        }
+    }
+    let f = Frame::from_xyz_f64(1, cols, &xyz);
+    // Neighbours are 0.78 m apart; across the gap 1.53 m.
+    let p = params_for(&f, 3, 0.8, 1.0);
+    let p1 = pass1(&p, &f);
+    assert_eq!(
+        p1.labels,
+        vec![1, 1, 1, 1, 1, 1, 1, 1, 0, 2, 2, 2, 2, 2, 2, 2]
+    );
+    assert_eq!(p1.ring_joins, vec![(1, 2)]);
+    assert_eq!(
+        run(&f, &p),
+        vec![1, 1, 1, 1, 1, 1, 1, 1, 0, 1, 1, 1, 1, 1, 1, 1]
+    );
+}
+
+#[test]
+fn ring_check_needs_two_runs_and_close_ends() {
+    let f = grid("#.....#", 0.1);
+    let p = params_for(&f, 3, 0.2, 1.0);
+    let p1 = pass1(&p, &f);
+    assert!(p1.ring_joins.is_empty(), "ends are 0.6 m apart");
+    let f = grid("..#....", 0.1);
+    assert!(pass1(&p, &f).ring_joins.is_empty(), "a single point");
+}
+
+#[test]
+fn label_overflow_leaves_pixels_unlabelled() {
+    // 300 isolated points in one row with 8-bit labels: 255 labels, 45 unlabelled.
+    let art: String = "#.".repeat(300);
+    let f = grid(&art, 0.2);
+    let p = FccParams {
+        label_bits: 8,
+        ..params_for(&f, 3, 0.3, 0.3)
+    };
+    let got = cluster(&p, &f, MergeMode::Exact).unwrap();
+    assert!(got.overflow);
+    assert_eq!(got.unlabelled, 45);
+    assert_eq!(got.provisional, 255);
+    assert_eq!(got.clusters, 255);
+    assert_eq!(got.labels[2 * 254], 255);
+    assert_eq!(got.labels[2 * 255], 0);
+    assert_eq!(got.labels, reference_labels(&p, &f));
+}
+
+#[test]
+fn overflowed_runs_take_part_in_no_join() {
+    // Row 0 uses the only label; row 1's point sits under it but is unlabelled.
+    let f = grid("#. #.", 0.1);
+    let p = FccParams {
+        label_bits: 8,
+        ..params_for(&f, 3, 0.05, 1.0)
+    };
+    let mut f2 = Frame::empty(2, 300);
+    // 255 isolated runs in row 0, then one point right under the last one.
+    for c in 0..255 {
+        f2.set(0, c, Some([2560, (c as i16) * 100, 0]));
+    }
+    f2.set(1, 254, Some([2560, 25400, -10]));
+    let p2 = FccParams {
+        rows: 2,
+        cols: 300,
+        ..p.clone()
+    };
+    let got = cluster(&p2, &f2, MergeMode::Exact).unwrap();
+    assert!(got.overflow);
+    assert_eq!(got.labels[300 + 254], 0);
+    assert_eq!(got.unlabelled, 1);
+    assert_eq!(got.labels, reference_labels(&p2, &f2));
+    assert!(!cluster(&p, &f, MergeMode::Exact).unwrap().overflow);
+}
+
+#[test]
+fn pass2_threshold_is_strict() {
+    // Vertical neighbours exactly 1.0 m apart do not join when th_V = 1.0.
+    let f = grid("# #", 1.0);
+    assert_eq!(run(&f, &params_for(&f, 3, 0.5, 1.0)), vec![1, 2]);
+    assert_eq!(run(&f, &params_for(&f, 3, 0.5, 1.01)), vec![1, 1]);
+}
+
+#[test]
+fn pass2_window_reaches_h_rows_up_and_h_columns_across() {
+    // The top-left point is 2 rows up and 2 columns left of the bottom-right one.
+    let f = grid("#.... ..... ..#..", 0.1);
+    let th_v = 0.5; // larger than the 0.28 m distance
+    assert_eq!(
+        run(&f, &params_for(&f, 3, 0.05, th_v)),
+        vec![1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 0, 0]
+    );
+    assert_eq!(
+        run(&f, &params_for(&f, 5, 0.05, th_v)),
+        vec![1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0]
+    );
+}
+
+#[test]
+fn pass2_does_not_wrap_at_the_image_edges() {
+    // Same 3-D point at the left and right edges, one row apart: no join.
+    let mut f = Frame::empty(2, 8);
+    f.set(0, 7, Some([2560, 0, 0]));
+    f.set(1, 0, Some([2560, 0, 0]));
+    let p = params_for(&f, 3, 0.01, 1.0);
+    assert_eq!(
+        run(&f, &p),
+        vec![0, 0, 0, 0, 0, 0, 0, 1, 2, 0, 0, 0, 0, 0, 0, 0]
+    );
+}
+
+#[test]
+fn clusters_numbered_by_first_pixel_in_raster_order() {
+    // A U-shape: the right arm starts first in raster order only on row 0.
+    let f = grid("..#.# ..#.# ..###", 1.0);
+    let p = params_for(&f, 3, 1.0, 1.5);
+    let l = run(&f, &p);
+    assert_eq!(l, vec![0, 0, 1, 0, 1, 0, 0, 1, 0, 1, 0, 0, 1, 1, 1]);
+    let f = grid("#..#. #..#. .....", 1.0);
+    assert_eq!(
+        run(&f, &params_for(&f, 3, 0.5, 1.5)),
+        vec![1, 0, 0, 2, 0, 1, 0, 0, 2, 0, 0, 0, 0, 0, 0]
+    );
+}
+
+#[test]
+fn checkerboard_joins_diagonally_only() {
+    let f = grid("#.#.#. .#.#.# #.#.#.", 1.0);
+    // Diagonal neighbours are 1.41 m apart; horizontal valid neighbours 2 m.
+    assert_eq!(run(&f, &params_for(&f, 3, 1.0, 1.5)).iter().max(), Some(&1));
+    let l = run(&f, &params_for(&f, 3, 1.0, 1.4));
+    assert_eq!(l.iter().filter(|&&x| x > 0).count(), 9);
+    assert_eq!(l.iter().max(), Some(&9));
+}
+
+#[test]
+fn paper_merge_overwrite_splits_a_component() {
+    // Worked example of spec §6: run 3 is first linked to run 1 (T[3] = 1),
+    // then the flush of run 8 overwrites T[3] = T[2] = 2, cutting runs 1, 4
+    // and 7 off from the rest. Exact merging keeps one component.
+    let f = grid(
+        ".......#
+         ##...#.#
+         .#..#.##
+         ..##....",
+        1.0,
+    );
+    let p = params_for(&f, 3, 1.0, 1.5);
+    assert_eq!(pass1(&p, &f).provisional, 8);
+    let exact = cluster(&p, &f, MergeMode::Exact).unwrap();
+    let paper = cluster(&p, &f, MergeMode::Paper).unwrap();
+    assert_eq!(exact.clusters, 1);
+    assert_eq!(exact.labels, reference_labels(&p, &f));
+    assert_eq!(paper.clusters, 2);
+    assert_eq!(
+        paper.labels,
+        vec![
+            0, 0, 0, 0, 0, 0, 0, 1, //
+            2, 2, 0, 0, 0, 2, 0, 1, //
+            0, 2, 0, 0, 2, 0, 1, 1, //
+            0, 0, 2, 2, 0, 0, 0, 0,
+        ]
+    );
+    assert_eq!(split_components(&exact.labels, &paper.labels), 1);
+    assert_eq!(split_components(&exact.labels, &exact.labels), 0);
+}
+
+#[test]
+fn shape_mismatch_is_an_error() {
+    let f = Frame::empty(2, 3);
+    let p = FccParams {
+        rows: 3,
+        cols: 3,
+        ..FccParams::default()
+    };
+    let e = cluster(&p, &f, MergeMode::Exact).unwrap_err();
+    assert_eq!(e.to_string(), "frame is 2 x 3 but the parameters say 3 x 3");
+    assert!(matches!(e, GoldenError::Shape { .. }));
+}
+
+#[test]
+fn invalid_params_are_an_error() {
+    let f = Frame::empty(2, 3);
+    let p = FccParams {
+        rows: 2,
+        cols: 3,
+        fsize: 4,
+        ..FccParams::default()
+    };
+    let e = cluster(&p, &f, MergeMode::Exact).unwrap_err();
+    assert!(e.to_string().starts_with("fsize = 4"), "{e}");
+}
+
+#[test]
+fn empty_frame_has_no_clusters() {
+    let f = Frame::empty(4, 5);
+    let got = cluster(&params_for(&f, 3, 0.5, 1.0), &f, MergeMode::Exact).unwrap();
+    assert_eq!(got.clusters, 0);
+    assert_eq!(got.labels, vec![0; 20]);
+    assert!(!got.overflow);
+}
