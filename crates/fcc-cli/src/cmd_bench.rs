@@ -27,6 +27,12 @@ pub struct BenchArgs {
     /// Columns of the synthetic sensor.
     #[arg(long, default_value_t = FccParams::default().cols)]
     pub cols: usize,
+    /// Beam-dropout probability of the synthetic scenes.
+    #[arg(long, default_value_t = SceneConfig::default().dropout)]
+    pub dropout: f64,
+    /// Missing-return probability of the synthetic scenes.
+    #[arg(long, default_value_t = SceneConfig::default().missing)]
+    pub missing: f64,
     /// Write the table as JSON here as well.
     #[arg(long)]
     pub json: Option<std::path::PathBuf>,
@@ -80,6 +86,8 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
                 rows: args.rows,
                 cols: args.cols,
                 seed,
+                dropout: args.dropout,
+                missing: args.missing,
                 ..SceneConfig::default()
             };
             let s = generate(&cfg).with_context(|| format!("scene seed {seed}"))?;
@@ -135,8 +143,8 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
         });
     }
     println!(
-        "golden model, {} x {}, {} synthetic scenes, median of {} runs, release build",
-        args.rows, args.cols, args.frames, args.repeat
+        "golden model, {} x {}, {} synthetic scenes (dropout {}, missing {}), median of {} runs",
+        args.rows, args.cols, args.frames, args.dropout, args.missing, args.repeat
     );
     println!("| K | exact ms/frame (1 thread) | paper ms/frame | batch frames/s ({threads} threads) | points | provisional | joins | clusters exact | clusters paper | exact clusters split by paper |");
     println!("|---|---|---|---|---|---|---|---|---|---|");
