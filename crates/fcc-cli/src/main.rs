@@ -7,7 +7,7 @@
 use clap::{Parser, Subcommand};
 
 mod cmd_bench;
-mod cmd_cluster;
+mod cmd_lidar;
 mod cmd_scene;
 mod model_args;
 
@@ -24,8 +24,13 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Cluster range images (.npy, shape (R, C, 3)) with the golden model.
-    Cluster(cmd_cluster::ClusterArgs),
+    /// Cluster LiDAR frames with the golden model: Ouster captures, KITTI .bin,
+    /// PCD, PLY or .npy range images in; labels, pictures and statistics out.
+    Cluster(cmd_lidar::ClusterLidarArgs),
+    /// Convert captures and point clouds to .npy range images (R, C, 3).
+    Convert(cmd_lidar::ConvertArgs),
+    /// Clustering quality (PQ, SQ, RQ, over/under-segmentation) per K and merge mode.
+    Eval(cmd_lidar::EvalArgs),
     /// Make a synthetic LiDAR scene with ground truth.
     Scene(cmd_scene::SceneArgs),
     /// Time the golden model per K on synthetic scenes; compare exact and paper merging.
@@ -35,7 +40,9 @@ enum Command {
 fn main() {
     let cli = Cli::parse();
     let result = match &cli.command {
-        Command::Cluster(a) => cmd_cluster::run(a),
+        Command::Cluster(a) => cmd_lidar::run_cluster(a),
+        Command::Convert(a) => cmd_lidar::run_convert(a),
+        Command::Eval(a) => cmd_lidar::run_eval(a),
         Command::Scene(a) => cmd_scene::run(a),
         Command::Bench(a) => cmd_bench::run(a),
     };

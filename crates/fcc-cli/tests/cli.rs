@@ -115,7 +115,7 @@ fn batch_writes_one_label_file_per_input() {
         assert!(o.status.success(), "{}", stderr(&o));
         inputs.push(f);
     }
-    let out = d.join("out");
+    let out = d.join("labels.npy");
     let mut args = vec![
         "cluster",
         "--jobs",
@@ -130,7 +130,7 @@ fn batch_writes_one_label_file_per_input() {
     assert!(o.status.success(), "{}", stderr(&o));
     assert_eq!(String::from_utf8_lossy(&o.stdout).lines().count(), 3);
     for seed in 0..3 {
-        assert!(out.join(format!("s{seed}.labels.npy")).exists());
+        assert!(d.join(format!("labels_s{seed}.npy")).exists());
     }
 }
 
@@ -232,4 +232,87 @@ fn paper_merge_is_selectable() {
     assert!(o.status.success(), "{}", stderr(&o));
     let stats: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     assert_eq!(stats["merge"], "paper");
+}
+
+/// A real capture from the repository's test data.
+fn ouster_capture() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../fcc-lidar/tests/data/OS-2-128-U1_v2.3.0_1024x10.pcap")
+}
+
+#[test]
+fn ouster_capture_gives_labels_and_a_picture() {
+    let d = tmpdir("ouster");
+    let (png, labels) = (d.join("os2.png"), d.join("os2.npy"));
+    let o = fcc(&[
+        "cluster",
+        "--input",
+        s(&ouster_capture()),
+        "--min-points",
+        "40",
+        "--png",
+        s(&png),
+        "--output",
+        s(&labels),
+        "--stats",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let stats: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(
+        (stats["rows"].as_u64(), stats["cols"].as_u64()),
+        (Some(128), Some(1024))
+    );
+    let clusters = stats["clusters"].as_u64().unwrap();
+    assert!(
+        (20..400).contains(&clusters),
+        "{clusters} clusters of > 40 points"
+    );
+    assert!(
+        stats["ground_points"].as_u64().unwrap() > 1000,
+        "ground removed by default"
+    );
+    assert!(std::fs::read(&png).unwrap().starts_with(b"\x89PNG"));
+    let l = fcc_npy::read_labels(&labels).unwrap();
+    assert_eq!(l.labels.iter().max().copied(), Some(clusters as u32));
+}
+
+#[test]
+fn convert_then_cluster_a_capture_as_npy() {
+    let d = tmpdir("convert");
+    let npy = d.join("os2.npy");
+    let o = fcc(&[
+        "convert",
+        "--input",
+        s(&ouster_capture()),
+        "--output",
+        s(&npy),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let img = fcc_npy::read_xyz(&npy).unwrap();
+    assert_eq!((img.rows, img.cols), (128, 1024));
+}
+
+#[test]
+fn eval_prints_the_quality_table() {
+    let o = fcc(&[
+        "eval",
+        "--synthetic",
+        "2",
+        "--scene-rows",
+        "32",
+        "--scene-cols",
+        "512",
+        "--fsizes",
+        "3,7",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert!(out.contains("| K | merge | PQ |"), "{out}");
+    assert_eq!(
+        out.lines()
+            .filter(|l| l.starts_with("| 3 |") || l.starts_with("| 7 |"))
+            .count(),
+        4,
+        "{out}"
+    );
 }

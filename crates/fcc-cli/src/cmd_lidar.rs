@@ -1,0 +1,865 @@
+//! Real LiDAR data on the command line: cluster Ouster captures, KITTI /
+//! SemanticKITTI scans, PCD, PLY and `.npy` range images into labels,
+//! coloured PLY and PNG pictures; convert them to `.npy` range images; and
+//! measure clustering quality against ground truth.
+//!
+//! Commands (as wired in `main.rs`): [`ClusterLidarArgs`] / [`run_cluster`],
+//! [`ConvertArgs`] / [`run_convert`], [`EvalArgs`] / [`run_eval`].
+
+use crate::model_args::ModelArgs;
+use anyhow::{bail, Context};
+use clap::Args;
+use fcc_golden::MergeMode;
+use fcc_lidar::cloud::{read_point_cloud, write_ply, CloudFormat, PlyFormat};
+use fcc_lidar::eval::{evaluate, score_frame, synthetic_frames, EvalConfig, EvalFrame};
+use fcc_lidar::ground::{GroundMethod, GroundParams};
+use fcc_lidar::labels::{read_label_file, semantickitti_instances, write_label_file};
+use fcc_lidar::ouster::{
+    explain_no_frames, CaptureStats, CoordFrame, DecodeOptions, OusterFrame, OusterMetadata,
+    OusterReader,
+};
+use fcc_lidar::picture::{cluster_colour, render_overview, Overview};
+use fcc_lidar::pipeline::{cluster_image, PipelineConfig, PipelineResult};
+use fcc_lidar::projection::{
+    project, BackProjection, Projection, ProjectionConfig, VerticalLayout,
+};
+use fcc_lidar::RangeImage;
+use indicatif::{ProgressBar, ProgressStyle};
+use rayon::prelude::*;
+use serde::Serialize;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+/// How point clouds become range images.
+#[derive(Args, Debug, Clone)]
+pub struct ProjectionArgs {
+    /// Rows of the range image of a point cloud (beams).
+    #[arg(long, default_value_t = 64)]
+    pub rows: usize,
+    /// Columns of the range image of a point cloud.
+    #[arg(long, default_value_t = 2048)]
+    pub cols: usize,
+    /// Top of the vertical field of view, degrees.
+    #[arg(long, default_value_t = 3.0, allow_hyphen_values = true)]
+    pub fov_up: f64,
+    /// Bottom of the vertical field of view, degrees.
+    #[arg(long, default_value_t = -25.0, allow_hyphen_values = true)]
+    pub fov_down: f64,
+    /// Text file of beam elevations in degrees, one per line, top beam first;
+    /// replaces the field of view and sets the rows.
+    #[arg(long)]
+    pub beams: Option<PathBuf>,
+}
+
+impl ProjectionArgs {
+    fn config(&self) -> anyhow::Result<ProjectionConfig> {
+        let cfg = match &self.beams {
+            Some(path) => {
+                let text = std::fs::read_to_string(path)
+                    .with_context(|| format!("{}: cannot read", path.display()))?;
+                let beams = text
+                    .lines()
+                    .map(str::trim)
+                    .filter(|l| !l.is_empty() && !l.starts_with('#'))
+                    .enumerate()
+                    .map(|(i, l)| {
+                        l.parse::<f64>().with_context(|| {
+                            format!(
+                                "{}: line {}: `{l}` is not an angle in degrees",
+                                path.display(),
+                                i + 1
+                            )
+                        })
+                    })
+                    .collect::<anyhow::Result<Vec<f64>>>()?;
+                ProjectionConfig {
+                    rows: beams.len(),
+                    cols: self.cols,
+                    layout: VerticalLayout::Beams(beams),
+                }
+            }
+            None => ProjectionConfig {
+                rows: self.rows,
+                cols: self.cols,
+                layout: VerticalLayout::Fov {
+                    up_deg: self.fov_up,
+                    down_deg: self.fov_down,
+                },
+            },
+        };
+        cfg.validate()?;
+        Ok(cfg)
+    }
+}
+
+/// Ground removal before clustering.
+#[derive(Args, Debug, Clone)]
+pub struct GroundArgs {
+    /// Ground removal: `slope` (column walk seeded by a plane fit), `plane`
+    /// (RANSAC plane) or `none`. Default: `slope` for captures and point
+    /// clouds, `none` for .npy range images (taken as already prepared, as
+    /// FCC assumes).
+    #[arg(long)]
+    pub ground: Option<GroundMethod>,
+    /// Steepest rise between consecutive ground returns, degrees (`slope`).
+    #[arg(long, default_value_t = GroundParams::default().max_slope_deg)]
+    pub ground_max_slope: f64,
+    /// Distance from the ground plane still counted as ground, metres (`plane`).
+    #[arg(long, default_value_t = GroundParams::default().plane_distance_m)]
+    pub ground_distance: f64,
+}
+
+impl GroundArgs {
+    /// The method asked for, or the default for this kind of input.
+    fn method(&self, range_image: bool) -> GroundMethod {
+        self.ground.unwrap_or(if range_image {
+            GroundMethod::None
+        } else {
+            GroundMethod::Slope
+        })
+    }
+
+    fn params(&self, range_image: bool) -> anyhow::Result<GroundParams> {
+        let p = GroundParams {
+            method: self.method(range_image),
+            max_slope_deg: self.ground_max_slope,
+            plane_distance_m: self.ground_distance,
+            ..GroundParams::default()
+        };
+        p.validate()?;
+        Ok(p)
+    }
+}
+
+/// Ouster capture options.
+#[derive(Args, Debug, Clone)]
+pub struct OusterArgs {
+    /// Ouster metadata JSON of the capture(s) (default: the .json beside each
+    /// capture with the same name).
+    #[arg(long)]
+    pub meta: Option<PathBuf>,
+    /// Also use frames that miss columns (missing columns are empty).
+    #[arg(long)]
+    pub keep_incomplete: bool,
+    /// Points in the lidar frame instead of the sensor frame.
+    #[arg(long)]
+    pub lidar_frame: bool,
+    /// Skip this many frames of each capture.
+    #[arg(long, default_value_t = 0)]
+    pub skip_frames: usize,
+    /// Use at most this many frames of each capture.
+    #[arg(long)]
+    pub max_frames: Option<usize>,
+}
+
+#[derive(Args, Debug)]
+pub struct ClusterLidarArgs {
+    /// Inputs: Ouster captures (.pcap, .pcapng) with their JSON metadata,
+    /// point clouds (.bin KITTI/SemanticKITTI, .pcd, .ply) or range images
+    /// (.npy of shape (R, C, 3)). A capture gives one result per frame.
+    #[arg(long, short, required = true, num_args = 1..)]
+    pub input: Vec<PathBuf>,
+    #[command(flatten)]
+    pub model: ModelArgs,
+    #[command(flatten)]
+    pub ground: GroundArgs,
+    /// Drop clusters of N points or fewer (the authors' pipeline used 40).
+    #[arg(long, default_value_t = 0)]
+    pub min_points: usize,
+    #[command(flatten)]
+    pub projection: ProjectionArgs,
+    #[command(flatten)]
+    pub ouster: OusterArgs,
+    /// Ground truth per input, in input order: SemanticKITTI .label for a
+    /// point cloud, a .npy label image (R, C) for a range image. Shown beside
+    /// the clustering in the picture and scored in --stats.
+    #[arg(long, num_args = 1..)]
+    pub truth: Vec<PathBuf>,
+    /// Write the picture here (range image by cluster, ground truth, bird's-eye view).
+    #[arg(long)]
+    pub png: Option<PathBuf>,
+    /// Write the labels as a .npy label image (R, C) uint32; with several
+    /// results, `<stem>_<name>.npy` beside it.
+    #[arg(long, short, alias = "labels-npy")]
+    pub output: Option<PathBuf>,
+    /// Write SemanticKITTI .label: per input point for a point cloud, per
+    /// point of the PLY (valid pixels in raster order) for a range image.
+    #[arg(long)]
+    pub label: Option<PathBuf>,
+    /// Write the clustered points as a colour PLY with a label property.
+    #[arg(long)]
+    pub ply: Option<PathBuf>,
+    /// Half-width of the bird's-eye view, metres (default: from the data).
+    #[arg(long)]
+    pub bev_extent: Option<f32>,
+    /// Print a JSON summary per frame (one line each) on stdout.
+    #[arg(long)]
+    pub stats: bool,
+    /// Frames clustered in parallel (default: all cores).
+    #[arg(long)]
+    pub jobs: Option<usize>,
+}
+
+/// A range image ready for clustering, with what came with it.
+struct Item {
+    /// Input file stem, plus the frame id for captures.
+    name: String,
+    image: RangeImage,
+    /// Read from a .npy range image (no ground removal by default).
+    range_image: bool,
+    /// For point clouds: the projection, to map labels back to the points.
+    projection: Option<(Projection, Vec<[f32; 3]>)>,
+    /// Ground truth per pixel.
+    truth: Option<Vec<u32>>,
+    /// Ground truth per input point (point clouds).
+    truth_points: Option<Vec<u32>>,
+}
+
+fn stem(path: &Path) -> String {
+    path.file_stem()
+        .unwrap_or_default()
+        .to_string_lossy()
+        .into_owned()
+}
+
+/// `out` for a single result, `out` with `_<name>` before the extension otherwise.
+fn output_path(out: &Path, name: &str, single: bool) -> PathBuf {
+    if single {
+        return out.to_path_buf();
+    }
+    let ext = out
+        .extension()
+        .map(|e| format!(".{}", e.to_string_lossy()))
+        .unwrap_or_default();
+    out.with_file_name(format!("{}_{name}{ext}", stem(out)))
+}
+
+fn is_capture(path: &Path) -> bool {
+    matches!(
+        path.extension()
+            .and_then(|e| e.to_str())
+            .map(str::to_ascii_lowercase)
+            .as_deref(),
+        Some("pcap" | "pcapng")
+    )
+}
+
+fn is_npy(path: &Path) -> bool {
+    path.extension()
+        .and_then(|e| e.to_str())
+        .is_some_and(|e| e.eq_ignore_ascii_case("npy"))
+}
+
+fn metadata_for(capture: &Path, meta: Option<&Path>) -> anyhow::Result<OusterMetadata> {
+    let path = match meta {
+        Some(m) => m.to_path_buf(),
+        None => {
+            let guess = capture.with_extension("json");
+            if !guess.exists() {
+                bail!(
+                    "{}: an Ouster capture needs its metadata JSON: pass --meta FILE (looked for {})",
+                    capture.display(),
+                    guess.display()
+                );
+            }
+            guess
+        }
+    };
+    Ok(OusterMetadata::from_file(&path)?)
+}
+
+fn decode_options(o: &OusterArgs) -> DecodeOptions {
+    DecodeOptions {
+        frame: if o.lidar_frame {
+            CoordFrame::Lidar
+        } else {
+            CoordFrame::Sensor
+        },
+        keep_incomplete: o.keep_incomplete,
+        min_range_m: 0.0,
+    }
+}
+
+fn npy_image(path: &Path) -> anyhow::Result<RangeImage> {
+    let img = fcc_npy::read_xyz(path)?;
+    let xyz = img.xyz.iter().map(|&v| v as f32).collect();
+    Ok(RangeImage::from_xyz(img.rows, img.cols, xyz)?)
+}
+
+fn cloud_item(path: &Path, truth: Option<&Path>, proj: &ProjectionConfig) -> anyhow::Result<Item> {
+    let cloud = read_point_cloud(path)?;
+    let projection = project(&cloud.points, proj)?;
+    let (truth, truth_points) = match truth {
+        Some(t) => {
+            let raw = read_label_file(t, Some(cloud.len()))?;
+            let inst = semantickitti_instances(&raw);
+            (Some(projection.to_pixels(&inst, 0)?), Some(inst))
+        }
+        None => (None, None),
+    };
+    Ok(Item {
+        name: stem(path),
+        range_image: false,
+        image: projection.image.clone(),
+        projection: Some((projection, cloud.points)),
+        truth,
+        truth_points,
+    })
+}
+
+fn npy_item(path: &Path, truth: Option<&Path>) -> anyhow::Result<Item> {
+    let image = npy_image(path)?;
+    let truth = match truth {
+        Some(t) => {
+            let l = fcc_npy::read_labels(t)?;
+            if (l.rows, l.cols) != (image.rows, image.cols) {
+                bail!(
+                    "{}: ground truth is {} x {} but {} is {} x {}",
+                    t.display(),
+                    l.rows,
+                    l.cols,
+                    path.display(),
+                    image.rows,
+                    image.cols
+                );
+            }
+            Some(l.labels)
+        }
+        None => None,
+    };
+    Ok(Item {
+        name: stem(path),
+        range_image: true,
+        image,
+        projection: None,
+        truth,
+        truth_points: None,
+    })
+}
+
+/// The `--stats` line of one frame.
+#[derive(Serialize)]
+struct FrameStats {
+    input: String,
+    rows: usize,
+    cols: usize,
+    points: usize,
+    ground_points: usize,
+    clusters: u32,
+    clusters_before_min_points: u32,
+    fsize: usize,
+    merge: MergeMode,
+    /// Provisional labels allocated by pass 1.
+    provisional: u32,
+    /// Pass-2 pairs that passed the threshold.
+    joins: u64,
+    /// Joins that united two different components.
+    merges: u64,
+    overflow: bool,
+    /// Valid pixels left unlabelled by label overflow.
+    unlabelled: usize,
+    time_ms: f64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    quality: Option<fcc_lidar::eval::Scores>,
+}
+
+/// Half-width of the bird's-eye view: the 95th percentile of horizontal
+/// range, rounded up to 10 m, within 10..=80 m.
+fn auto_extent(image: &RangeImage) -> f32 {
+    let mut d: Vec<f32> = (0..image.pixels())
+        .filter_map(|i| image.point(i))
+        .map(|p| (p[0] * p[0] + p[1] * p[1]).sqrt())
+        .collect();
+    if d.is_empty() {
+        return 40.0;
+    }
+    let k = (d.len() * 95 / 100).min(d.len() - 1);
+    let (_, v, _) = d.select_nth_unstable_by(k, f32::total_cmp);
+    ((*v / 10.0).ceil() * 10.0).clamp(10.0, 80.0)
+}
+
+fn process(
+    args: &ClusterLidarArgs,
+    cfg: &PipelineConfig,
+    item: &Item,
+    single: bool,
+) -> anyhow::Result<String> {
+    let t = Instant::now();
+    let out: PipelineResult = cluster_image(&item.image, cfg).with_context(|| item.name.clone())?;
+    let time_ms = t.elapsed().as_secs_f64() * 1e3;
+    let mut quality = None;
+    if let Some(truth) = &item.truth {
+        quality = Some(score_frame(&out.labels, truth, &EvalConfig::default())?.scores());
+    }
+    if let Some(p) = &args.png {
+        let title = format!(
+            "{}: K={} {}, {} CLUSTERS{}, GROUND {}",
+            item.name,
+            out.params.fsize,
+            if args.model.merge == MergeMode::Exact {
+                "EXACT"
+            } else {
+                "PAPER"
+            },
+            out.clusters,
+            if args.min_points > 0 {
+                format!(" > {} POINTS", args.min_points)
+            } else {
+                String::new()
+            },
+            cfg.ground.method
+        );
+        let instances = item
+            .truth
+            .as_ref()
+            .map(|t| {
+                t.iter()
+                    .filter(|&&l| l != 0)
+                    .collect::<std::collections::HashSet<_>>()
+                    .len()
+            })
+            .unwrap_or(0);
+        let pic = render_overview(&Overview {
+            image: &item.image,
+            labels: &out.labels,
+            ground: Some(&out.ground.mask),
+            truth: item.truth.as_deref(),
+            title,
+            truth_title: format!("GROUND TRUTH: {instances} INSTANCES"),
+            bev_extent_m: args.bev_extent.unwrap_or_else(|| auto_extent(&item.image)),
+        })?;
+        pic.save_png(&output_path(p, &item.name, single))?;
+    }
+    if let Some(p) = &args.output {
+        fcc_npy::write_labels(
+            &output_path(p, &item.name, single),
+            item.image.rows,
+            item.image.cols,
+            &out.labels,
+        )?;
+    }
+    // Per-point labels: every input point of a cloud, valid pixels otherwise.
+    let (points, labels, ground): (Vec<[f32; 3]>, Vec<u32>, Vec<bool>) = match &item.projection {
+        Some((proj, pts)) => {
+            let labels = proj.labels_to_points(&out.labels, BackProjection::default())?;
+            let g: Vec<u32> = out.ground.mask.iter().map(|&g| u32::from(g)).collect();
+            let ground = proj.labels_to_points(&g, BackProjection::default())?;
+            (
+                pts.clone(),
+                labels,
+                ground.iter().map(|&g| g == 1).collect(),
+            )
+        }
+        None => {
+            let idx: Vec<usize> = (0..item.image.pixels())
+                .filter(|&i| item.image.point(i).is_some())
+                .collect();
+            (
+                idx.iter().filter_map(|&i| item.image.point(i)).collect(),
+                idx.iter().map(|&i| out.labels[i]).collect(),
+                idx.iter().map(|&i| out.ground.mask[i]).collect(),
+            )
+        }
+    };
+    if let (Some(truth_points), Some(_)) = (&item.truth_points, &quality) {
+        // For point clouds, score every input point, not only the pixel winners.
+        quality = Some(score_frame(&labels, truth_points, &EvalConfig::default())?.scores());
+    }
+    if let Some(p) = &args.label {
+        write_label_file(&output_path(p, &item.name, single), &labels, Some(&ground))?;
+    }
+    if let Some(p) = &args.ply {
+        let colours: Vec<[u8; 3]> = labels
+            .iter()
+            .zip(&ground)
+            .map(|(&l, &g)| {
+                if l == 0 && g {
+                    [110, 80, 50]
+                } else {
+                    cluster_colour(l)
+                }
+            })
+            .collect();
+        write_ply(
+            &output_path(p, &item.name, single),
+            &points,
+            Some(&colours),
+            Some(&labels),
+            PlyFormat::BinaryLittleEndian,
+        )?;
+    }
+    let stats = FrameStats {
+        input: item.name.clone(),
+        rows: item.image.rows,
+        cols: item.image.cols,
+        points: item.image.valid_count(),
+        ground_points: out.ground.count(),
+        clusters: out.clusters,
+        clusters_before_min_points: out.clustering.clusters,
+        fsize: out.params.fsize,
+        merge: args.model.merge,
+        provisional: out.clustering.provisional,
+        joins: out.clustering.joins,
+        merges: out.clustering.merges,
+        overflow: out.clustering.overflow,
+        unlabelled: out.clustering.unlabelled,
+        time_ms,
+        quality,
+    };
+    Ok(serde_json::to_string(&stats)?)
+}
+
+fn progress_bar(len: Option<u64>, what: &str) -> ProgressBar {
+    let pb = match len {
+        Some(n) => ProgressBar::new(n),
+        None => ProgressBar::new_spinner(),
+    };
+    let template = if len.is_some() {
+        format!("{{bar:40}} {{pos}}/{{len}} {what} {{elapsed}} (eta {{eta}})")
+    } else {
+        format!("{{spinner}} {{pos}} {what} {{elapsed}}")
+    };
+    if let Ok(style) = ProgressStyle::with_template(&template) {
+        pb.set_style(style);
+    }
+    pb
+}
+
+/// `fcc cluster` on real LiDAR data.
+pub fn run_cluster(args: &ClusterLidarArgs) -> anyhow::Result<()> {
+    if !args.truth.is_empty() && args.truth.len() != args.input.len() {
+        bail!(
+            "--truth names {} files for {} inputs: give one per input, in order",
+            args.truth.len(),
+            args.input.len()
+        );
+    }
+    let proj = args.projection.config()?;
+    let cfg_for = |range_image: bool| -> anyhow::Result<PipelineConfig> {
+        Ok(PipelineConfig {
+            params: args.model.params(1, 1)?,
+            mode: args.model.merge,
+            ground: args.ground.params(range_image)?,
+            min_points: args.min_points,
+        })
+    };
+    let cfgs = [cfg_for(false)?, cfg_for(true)?];
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(args.jobs.unwrap_or(0))
+        .build()?;
+    let batch = pool.current_num_threads().max(1) * 2;
+    // One result overall keeps output names as given.
+    let single = args.input.len() == 1
+        && (!is_capture(&args.input[0])
+            || args.ouster.max_frames == Some(1)
+            || capture_has_one_frame(&args.input[0], args));
+    let pb = progress_bar(None, "frames");
+    let mut lines = Vec::new();
+    let mut flush = |items: &mut Vec<Item>| -> anyhow::Result<()> {
+        let res: Vec<anyhow::Result<String>> = pool.install(|| {
+            items
+                .par_iter()
+                .map(|it| process(args, &cfgs[usize::from(it.range_image)], it, single))
+                .collect()
+        });
+        pb.inc(items.len() as u64);
+        items.clear();
+        for r in res {
+            lines.push(r?);
+        }
+        Ok(())
+    };
+    let mut items = Vec::new();
+    for (k, input) in args.input.iter().enumerate() {
+        let truth = args.truth.get(k).map(PathBuf::as_path);
+        if is_capture(input) {
+            if truth.is_some() {
+                bail!(
+                    "{}: ground truth for Ouster captures is not supported",
+                    input.display()
+                );
+            }
+            let (used, s) = for_each_frame(input, &args.ouster, |frame| {
+                items.push(Item {
+                    name: format!("{}_f{:05}", stem(input), frame.frame_id),
+                    range_image: false,
+                    image: frame.image,
+                    projection: None,
+                    truth: None,
+                    truth_points: None,
+                });
+                if items.len() >= batch {
+                    flush(&mut items)?;
+                }
+                Ok(())
+            })?;
+            eprintln!(
+                "{}: {} frames used of {} ({} lidar packets, {} malformed, {} incomplete frames dropped, {} unreassembled fragments)",
+                input.display(),
+                used,
+                s.frames,
+                s.lidar_packets,
+                s.malformed_packets,
+                s.incomplete_frames,
+                s.pcap.unreassembled_fragments
+            );
+        } else if is_npy(input) {
+            items.push(npy_item(input, truth)?);
+        } else if CloudFormat::from_path(input).is_some() {
+            items.push(cloud_item(input, truth, &proj)?);
+        } else {
+            bail!(
+                "{}: unknown input type (expected .pcap, .pcapng, .bin, .pcd, .ply or .npy)",
+                input.display()
+            );
+        }
+        if items.len() >= batch {
+            flush(&mut items)?;
+        }
+    }
+    flush(&mut items)?;
+    pb.finish_and_clear();
+    if args.stats {
+        for l in &lines {
+            println!("{l}");
+        }
+    }
+    Ok(())
+}
+
+/// Whether a capture holds exactly one usable frame (decoding it twice is
+/// cheap next to clustering and keeps output names simple).
+fn capture_has_one_frame(path: &Path, args: &ClusterLidarArgs) -> bool {
+    let Ok(meta) = metadata_for(path, args.ouster.meta.as_deref()) else {
+        return false;
+    };
+    let Ok(mut r) = OusterReader::open(path, &meta, decode_options(&args.ouster)) else {
+        return false;
+    };
+    let mut n = 0;
+    while let Ok(Some(_)) = r.next_frame() {
+        n += 1;
+        if n > args.ouster.skip_frames + 1 {
+            return false;
+        }
+    }
+    n == args.ouster.skip_frames + 1
+}
+
+/// Decode a capture (metadata from `--meta` or beside it), skip and cap
+/// frames as asked, and hand each frame to `f`. Returns the frames used and
+/// the decoder's statistics; a capture without a single frame is an error
+/// that says what it held instead.
+fn for_each_frame(
+    input: &Path,
+    o: &OusterArgs,
+    mut f: impl FnMut(OusterFrame) -> anyhow::Result<()>,
+) -> anyhow::Result<(usize, CaptureStats)> {
+    let meta = metadata_for(input, o.meta.as_deref())?;
+    let mut reader = OusterReader::open(input, &meta, decode_options(o))?;
+    let (mut n, mut used) = (0, 0);
+    while let Some(frame) = reader.next_frame()? {
+        n += 1;
+        if n <= o.skip_frames {
+            continue;
+        }
+        if o.max_frames.is_some_and(|m| used >= m) {
+            break;
+        }
+        used += 1;
+        f(frame)?;
+    }
+    let stats = reader.stats();
+    if stats.frames == 0 {
+        bail!("{}: {}", input.display(), explain_no_frames(&meta, &stats));
+    }
+    Ok((used, stats))
+}
+
+#[derive(Args, Debug)]
+pub struct ConvertArgs {
+    /// Inputs: Ouster captures, point clouds (.bin, .pcd, .ply).
+    #[arg(long, short, required = true, num_args = 1..)]
+    pub input: Vec<PathBuf>,
+    /// Output .npy range image (R, C, 3) float32, NaN = empty; with several
+    /// frames, `_<input>_f<frame>` is added before the extension.
+    #[arg(long, short)]
+    pub output: PathBuf,
+    #[command(flatten)]
+    pub projection: ProjectionArgs,
+    #[command(flatten)]
+    pub ouster: OusterArgs,
+}
+
+/// `fcc convert`: range images as .npy, for `cluster`, `sim` and other tools.
+pub fn run_convert(args: &ConvertArgs) -> anyhow::Result<()> {
+    let proj = args.projection.config()?;
+    let mut images: Vec<(String, RangeImage)> = Vec::new();
+    for input in &args.input {
+        if is_capture(input) {
+            for_each_frame(input, &args.ouster, |f| {
+                images.push((format!("{}_f{:05}", stem(input), f.frame_id), f.image));
+                Ok(())
+            })?;
+        } else if CloudFormat::from_path(input).is_some() {
+            let cloud = read_point_cloud(input)?;
+            images.push((stem(input), project(&cloud.points, &proj)?.image));
+        } else {
+            bail!(
+                "{}: unknown input type (expected .pcap, .pcapng, .bin, .pcd or .ply)",
+                input.display()
+            );
+        }
+    }
+    let single = images.len() == 1;
+    for (name, img) in &images {
+        let out = output_path(&args.output, name, single);
+        fcc_npy::write_xyz_f32(&out, img.rows, img.cols, &img.xyz)?;
+        eprintln!(
+            "{}: {} x {}, {} points",
+            out.display(),
+            img.rows,
+            img.cols,
+            img.valid_count()
+        );
+    }
+    Ok(())
+}
+
+#[derive(Args, Debug)]
+pub struct EvalArgs {
+    /// Evaluate on this many synthetic scenes (seeds 0..N) when no --input is given.
+    #[arg(long, default_value_t = 20)]
+    pub synthetic: u64,
+    /// Rows of the synthetic scenes.
+    #[arg(long, default_value_t = 64)]
+    pub scene_rows: usize,
+    /// Columns of the synthetic scenes.
+    #[arg(long, default_value_t = 2048)]
+    pub scene_cols: usize,
+    /// Render the synthetic scenes without ground (as after a perfect ground removal).
+    #[arg(long)]
+    pub no_ground: bool,
+    /// Point clouds with SemanticKITTI ground truth instead of synthetic scenes
+    /// (pair each with --truth, in order).
+    #[arg(long, num_args = 1..)]
+    pub input: Vec<PathBuf>,
+    /// SemanticKITTI .label files for --input.
+    #[arg(long, num_args = 1..)]
+    pub truth: Vec<PathBuf>,
+    #[command(flatten)]
+    pub projection: ProjectionArgs,
+    /// Filter sizes K to evaluate.
+    #[arg(long, value_delimiter = ',', default_values_t = [3, 5, 7, 9, 11])]
+    pub fsizes: Vec<usize>,
+    /// Merge modes to evaluate.
+    #[arg(long, value_delimiter = ',', default_values = ["exact", "paper"])]
+    pub modes: Vec<MergeMode>,
+    /// Intra-channel threshold th_H, metres.
+    #[arg(long, default_value_t = fcc_params::FccParams::default().th_h)]
+    pub th_h: f64,
+    /// Inter-channel threshold th_V, metres.
+    #[arg(long, default_value_t = fcc_params::FccParams::default().th_v)]
+    pub th_v: f64,
+    /// Provisional label width B.
+    #[arg(long, default_value_t = fcc_params::FccParams::default().label_bits)]
+    pub label_bits: u32,
+    #[command(flatten)]
+    pub ground: GroundArgs,
+    /// Drop clusters of N points or fewer before scoring.
+    #[arg(long, default_value_t = 0)]
+    pub min_points: usize,
+    /// Ignore ground-truth instances with fewer points.
+    #[arg(long, default_value_t = 1)]
+    pub min_instance_points: usize,
+    /// Write the table as JSON here.
+    #[arg(long)]
+    pub json: Option<PathBuf>,
+    /// Write the table as Markdown here.
+    #[arg(long)]
+    pub markdown: Option<PathBuf>,
+    /// Frames evaluated in parallel (default: all cores).
+    #[arg(long)]
+    pub jobs: Option<usize>,
+}
+
+/// `fcc eval`: the quality table.
+pub fn run_eval(args: &EvalArgs) -> anyhow::Result<()> {
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(args.jobs.unwrap_or(0))
+        .build()?;
+    let frames: Vec<EvalFrame> = if args.input.is_empty() {
+        if args.synthetic == 0 {
+            bail!("nothing to evaluate: give --synthetic N or --input with --truth");
+        }
+        eprintln!(
+            "rendering {} synthetic scenes of {} x {}",
+            args.synthetic, args.scene_rows, args.scene_cols
+        );
+        pool.install(|| {
+            synthetic_frames(
+                0..args.synthetic,
+                args.scene_rows,
+                args.scene_cols,
+                !args.no_ground,
+            )
+        })?
+    } else {
+        if args.truth.len() != args.input.len() {
+            bail!(
+                "--truth names {} files for {} inputs: give one per input, in order",
+                args.truth.len(),
+                args.input.len()
+            );
+        }
+        let proj = args.projection.config()?;
+        args.input
+            .iter()
+            .zip(&args.truth)
+            .map(|(i, t)| -> anyhow::Result<EvalFrame> {
+                let item = cloud_item(i, Some(t), &proj)?;
+                Ok(EvalFrame {
+                    name: item.name,
+                    image: item.image,
+                    truth: item.truth.unwrap_or_default(),
+                    ground: None,
+                })
+            })
+            .collect::<anyhow::Result<_>>()?
+    };
+    let base = PipelineConfig {
+        params: fcc_params::FccParams {
+            th_h: args.th_h,
+            th_v: args.th_v,
+            label_bits: args.label_bits,
+            ..fcc_params::FccParams::default()
+        },
+        mode: MergeMode::Exact,
+        ground: args.ground.params(false)?,
+        min_points: args.min_points,
+    };
+    let pb = progress_bar(Some(frames.len() as u64), "frames");
+    let table = pool.install(|| {
+        evaluate(
+            &frames,
+            &base,
+            &args.fsizes,
+            &args.modes,
+            &EvalConfig {
+                min_instance_points: args.min_instance_points,
+            },
+            &|| pb.inc(1),
+        )
+    })?;
+    pb.finish_and_clear();
+    let md = table.to_markdown();
+    println!("{md}");
+    if let Some(p) = &args.markdown {
+        std::fs::write(p, &md).with_context(|| format!("{}: cannot write", p.display()))?;
+    }
+    if let Some(p) = &args.json {
+        std::fs::write(p, serde_json::to_string_pretty(&table)?)
+            .with_context(|| format!("{}: cannot write", p.display()))?;
+    }
+    Ok(())
+}

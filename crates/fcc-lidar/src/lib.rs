@@ -1,0 +1,51 @@
+//! Real LiDAR in, labels, pictures and quality numbers out.
+//!
+//! Readers turn sensor data into [`RangeImage`]s, the row-major x, y, z
+//! images (NaN for no return) that the golden model quantises:
+//! - [`ouster`]: Ouster packet captures ([`pcap`]: classic pcap and pcapng)
+//!   with the sensor's JSON metadata, legacy and the 2.x single-return
+//!   profiles;
+//! - [`cloud`]: KITTI / SemanticKITTI `.bin`, PCD and PLY point clouds, which
+//!   [`projection`] turns into range images and whose labels it maps back to
+//!   every input point.
+//!
+//! [`ground`] removes the ground before clustering, [`pipeline`] runs ground
+//! removal, the golden model and the `--min-points` filter, [`labels`] and
+//! [`picture`] write `.label` files and PNG pictures, and [`eval`] measures
+//! clusterings against ground truth. `docs/lidar.md` describes the formats,
+//! conventions and metric definitions.
+//!
+//! ```
+//! use fcc_lidar::pipeline::{cluster_image, PipelineConfig};
+//! use fcc_lidar::RangeImage;
+//!
+//! // A 2 x 4 image: two points 0.2 m apart on the top row, the rest empty.
+//! let mut image = RangeImage::empty(2, 4);
+//! image.set(0, Some([10.0, 0.0, 0.5]));
+//! image.set(1, Some([10.0, 0.2, 0.5]));
+//! let cfg = PipelineConfig {
+//!     ground: fcc_lidar::ground::GroundParams {
+//!         method: fcc_lidar::ground::GroundMethod::None,
+//!         ..Default::default()
+//!     },
+//!     ..PipelineConfig::default()
+//! };
+//! let out = cluster_image(&image, &cfg)?;
+//! assert_eq!(out.labels, vec![1, 1, 0, 0, 0, 0, 0, 0]);
+//! # Ok::<(), fcc_lidar::LidarError>(())
+//! ```
+
+pub mod cloud;
+pub mod error;
+pub mod eval;
+pub mod ground;
+pub mod image;
+pub mod labels;
+pub mod ouster;
+pub mod pcap;
+pub mod picture;
+pub mod pipeline;
+pub mod projection;
+
+pub use error::{LidarError, Result};
+pub use image::RangeImage;
