@@ -7,8 +7,10 @@
 use clap::{Parser, Subcommand};
 
 mod cmd_bench;
+mod cmd_gen;
 mod cmd_lidar;
 mod cmd_scene;
+mod cmd_sim;
 mod model_args;
 
 #[derive(Parser)]
@@ -33,6 +35,10 @@ enum Command {
     Eval(cmd_lidar::EvalArgs),
     /// Make a synthetic LiDAR scene with ground truth.
     Scene(cmd_scene::SceneArgs),
+    /// Generate the RTL (Verilog, XDC, Vivado Tcl) for one configuration.
+    Gen(cmd_gen::GenArgs),
+    /// Run one frame through the generated RTL in Verilator and compare with the golden model.
+    Sim(cmd_sim::SimArgs),
     /// Time the golden model per K on synthetic scenes; compare exact and paper merging.
     Bench(cmd_bench::BenchArgs),
 }
@@ -45,6 +51,8 @@ fn main() {
         Command::Eval(a) => cmd_lidar::run_eval(a),
         Command::Scene(a) => cmd_scene::run(a),
         Command::Bench(a) => cmd_bench::run(a),
+        Command::Gen(a) => cmd_gen::run(a),
+        Command::Sim(a) => cmd_sim::run(a),
     };
     if let Err(e) = result {
         eprintln!("error: {e:#}");

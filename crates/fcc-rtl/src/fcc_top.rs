@@ -1,0 +1,381 @@
+//! `fcc_top`: the FCC core. AXI4-Stream pixels in, AXI4-Stream labels out.
+//!
+//! Input beat (64-bit `s_axis_tdata`, one pixel, raster order, `tlast` on the
+//! frame's last pixel): bits 15:0 x, 31:16 y, 47:32 z (Q7.8 two's complement),
+//! bit 48 valid (1 = the pixel holds a point), bits 63:49 reserved (ignored).
+//!
+//! Frame control: a `tlast` before the frame's last pixel ends the frame early
+//! (the remaining pixels count as empty); a missing `tlast` on the last pixel
+//! makes the core drop the following beats up to and including the next
+//! `tlast`. Either sets `status_frame_error` for that frame, whose labels are
+//! still emitted in full; the next frame needs no reset.
+//!
+//! Phases of a frame: RUN (one pixel per cycle through intra -> window ->
+//! distance tree -> sort network -> join FIFO -> union engine), DRAIN (the
+//! last joins are merged), OUT (flatten and read-back run together). After a
+//! reset the core first initialises the merge table (INIT).
+
+use fcc_params::FccParams;
+use rust_hdl::prelude::*;
+
+use crate::fcc_dist_tree::FccDistTree;
+use crate::fcc_fifo::FccFifo;
+use crate::fcc_intra::FccIntra;
+use crate::fcc_label_update::FccLabelUpdate;
+use crate::fcc_merge_table::FccMergeTable;
+use crate::fcc_sort_net::FccSortNet;
+use crate::fcc_window::FccWindow;
+use crate::types::{kb, JoinEntry, Pix};
+
+/// Join FIFO: 2^JOIN_FIFO_BITS entries.
+pub const JOIN_FIFO_BITS: usize = 9;
+
+#[derive(LogicBlock)]
+pub struct FccTop {
+    pub clk: Signal<In, Clock>,
+    pub rst: Signal<In, Bit>,
+    // AXI4-Stream slave: pixels.
+    pub s_axis_tdata: Signal<In, Bits<64>>,
+    pub s_axis_tvalid: Signal<In, Bit>,
+    pub s_axis_tready: Signal<Out, Bit>,
+    pub s_axis_tlast: Signal<In, Bit>,
+    // AXI4-Stream master: labels.
+    pub m_axis_tdata: Signal<Out, Bits<64>>,
+    pub m_axis_tkeep: Signal<Out, Bits<8>>,
+    pub m_axis_tvalid: Signal<Out, Bit>,
+    pub m_axis_tready: Signal<In, Bit>,
+    pub m_axis_tlast: Signal<Out, Bit>,
+    // Status of the last completed frame (stable from `status_frame_done`).
+    pub status_clusters: Signal<Out, Bits<16>>,
+    pub status_provisional: Signal<Out, Bits<16>>,
+    pub status_overflow: Signal<Out, Bit>,
+    pub status_unlabelled: Signal<Out, Bits<20>>,
+    pub status_frame_error: Signal<Out, Bit>,
+    pub status_joins: Signal<Out, Bits<24>>,
+    pub status_gear_stalls: Signal<Out, Bits<24>>,
+    /// One-cycle pulse when the frame's last label beat is accepted.
+    pub status_frame_done: Signal<Out, Bit>,
+    /// The core is waiting for the first pixel of a frame.
+    pub status_idle: Signal<Out, Bit>,
+    intra: FccIntra,
+    window: FccWindow,
+    dist_tree: FccDistTree,
+    sort_net: FccSortNet,
+    join_fifo: FccFifo<JoinEntry, JOIN_FIFO_BITS, { JOIN_FIFO_BITS + 1 }>,
+    merge_table: FccMergeTable,
+    label_update: FccLabelUpdate,
+    fsm: DFF<Bits<2>>,
+    row: DFF<Bits<8>>,
+    col: DFF<Bits<12>>,
+    pix: DFF<Bits<20>>,
+    pad: DFF<Bit>,
+    discard: DFF<Bit>,
+    in_done: DFF<Bit>,
+    err: DFF<Bit>,
+    last_seen: DFF<Bit>,
+    st_clusters: DFF<Bits<16>>,
+    st_prov: DFF<Bits<16>>,
+    st_ovf: DFF<Bit>,
+    st_unl: DFF<Bits<20>>,
+    st_err: DFF<Bit>,
+    st_joins: DFF<Bits<24>>,
+    st_gstall: DFF<Bits<24>>,
+    done_q: DFF<Bit>,
+    // Combinational.
+    en: Signal<Local, Bit>,
+    accept: Signal<Local, Bit>,
+    beat: Signal<Local, Bit>,
+    slot: Signal<Local, Pix>,
+    is_last: Signal<Local, Bit>,
+    drained: Signal<Local, Bit>,
+    // Constants.
+    f_init: Constant<Bits<2>>,
+    f_run: Constant<Bits<2>>,
+    f_drain: Constant<Bits<2>>,
+    f_out: Constant<Bits<2>>,
+    sign16: Constant<Bits<16>>,
+    zero8: Constant<Bits<8>>,
+    one8: Constant<Bits<8>>,
+    zero12: Constant<Bits<12>>,
+    one12: Constant<Bits<12>>,
+    last_col: Constant<Bits<12>>,
+    zero20: Constant<Bits<20>>,
+    one20: Constant<Bits<20>>,
+    last_pix: Constant<Bits<20>>,
+    fifo_limit: Constant<Bits<{ JOIN_FIFO_BITS + 1 }>>,
+    fifo_zero: Constant<Bits<{ JOIN_FIFO_BITS + 1 }>>,
+}
+
+impl FccTop {
+    /// Build the core for `p`. The caller validates `p` for hardware first.
+    pub fn new(p: &FccParams) -> Self {
+        Self {
+            clk: Default::default(),
+            rst: Default::default(),
+            s_axis_tdata: Default::default(),
+            s_axis_tvalid: Default::default(),
+            s_axis_tready: Default::default(),
+            s_axis_tlast: Default::default(),
+            m_axis_tdata: Default::default(),
+            m_axis_tkeep: Default::default(),
+            m_axis_tvalid: Default::default(),
+            m_axis_tready: Default::default(),
+            m_axis_tlast: Default::default(),
+            status_clusters: Default::default(),
+            status_provisional: Default::default(),
+            status_overflow: Default::default(),
+            status_unlabelled: Default::default(),
+            status_frame_error: Default::default(),
+            status_joins: Default::default(),
+            status_gear_stalls: Default::default(),
+            status_frame_done: Default::default(),
+            status_idle: Default::default(),
+            intra: FccIntra::new(p),
+            window: FccWindow::new(p),
+            dist_tree: FccDistTree::new(p),
+            sort_net: FccSortNet::new(p),
+            join_fifo: Default::default(),
+            merge_table: FccMergeTable::new(p),
+            label_update: FccLabelUpdate::new(p),
+            fsm: Default::default(),
+            row: Default::default(),
+            col: Default::default(),
+            pix: Default::default(),
+            pad: Default::default(),
+            discard: Default::default(),
+            in_done: Default::default(),
+            err: Default::default(),
+            last_seen: Default::default(),
+            st_clusters: Default::default(),
+            st_prov: Default::default(),
+            st_ovf: Default::default(),
+            st_unl: Default::default(),
+            st_err: Default::default(),
+            st_joins: Default::default(),
+            st_gstall: Default::default(),
+            done_q: Default::default(),
+            en: Default::default(),
+            accept: Default::default(),
+            beat: Default::default(),
+            slot: Default::default(),
+            is_last: Default::default(),
+            drained: Default::default(),
+            f_init: kb(0),
+            f_run: kb(1),
+            f_drain: kb(2),
+            f_out: kb(3),
+            sign16: kb(0x8000),
+            zero8: kb(0),
+            one8: kb(1),
+            zero12: kb(0),
+            one12: kb(1),
+            last_col: kb(p.cols as u64 - 1),
+            zero20: kb(0),
+            one20: kb(1),
+            last_pix: kb(p.pixels() as u64 - 1),
+            fifo_limit: kb((1u64 << JOIN_FIFO_BITS) - 2),
+            fifo_zero: kb(0),
+        }
+    }
+}
+
+impl Logic for FccTop {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(
+            self,
+            clk,
+            fsm,
+            row,
+            col,
+            pix,
+            pad,
+            discard,
+            in_done,
+            err,
+            last_seen,
+            st_clusters,
+            st_prov,
+            st_ovf,
+            st_unl,
+            st_err,
+            st_joins,
+            st_gstall,
+            done_q
+        );
+        self.intra.clk.next = self.clk.val();
+        self.window.clk.next = self.clk.val();
+        self.dist_tree.clk.next = self.clk.val();
+        self.sort_net.clk.next = self.clk.val();
+        self.join_fifo.clk.next = self.clk.val();
+        self.merge_table.clk.next = self.clk.val();
+        self.label_update.clk.next = self.clk.val();
+        // ---- Pipeline advance: the whole front end moves when the sort network can.
+        self.en.next = self.sort_net.ready.val();
+        // ---- Input stage: pixel slots, padding of a short frame, dropping of a long one.
+        self.is_last.next = self.pix.q.val() == self.last_pix.val();
+        self.s_axis_tready.next = (self.fsm.q.val() == self.f_run.val())
+            & !self.in_done.q.val()
+            & !self.pad.q.val()
+            & self.en.val();
+        if self.discard.q.val() {
+            self.s_axis_tready.next = true;
+        }
+        self.accept.next = self.s_axis_tvalid.val() & self.s_axis_tready.val();
+        self.beat.next = self.accept.val() & !self.discard.q.val();
+        self.slot.next.valid = self.beat.val()
+            | (self.pad.q.val()
+                & self.en.val()
+                & (self.fsm.q.val() == self.f_run.val())
+                & !self.in_done.q.val());
+        self.slot.next.ok = self.beat.val() & self.s_axis_tdata.val().get_bit(48);
+        self.slot.next.x = self.s_axis_tdata.val().get_bits::<16>(0) ^ self.sign16.val();
+        self.slot.next.y = self.s_axis_tdata.val().get_bits::<16>(16) ^ self.sign16.val();
+        self.slot.next.z = self.s_axis_tdata.val().get_bits::<16>(32) ^ self.sign16.val();
+        self.slot.next.row = self.row.q.val();
+        self.slot.next.col = self.col.q.val();
+        self.slot.next.first = self.pix.q.val() == self.zero20.val();
+        self.slot.next.last = self.is_last.val();
+        if self.slot.val().valid {
+            self.pix.d.next = self.pix.q.val() + self.one20.val();
+            self.col.d.next = self.col.q.val() + self.one12.val();
+            if self.col.q.val() == self.last_col.val() {
+                self.col.d.next = self.zero12.val();
+                self.row.d.next = self.row.q.val() + self.one8.val();
+            }
+            if self.is_last.val() {
+                self.pix.d.next = self.zero20.val();
+                self.col.d.next = self.zero12.val();
+                self.row.d.next = self.zero8.val();
+                self.in_done.d.next = true;
+                self.pad.d.next = false;
+            }
+        }
+        if self.beat.val() {
+            if self.s_axis_tlast.val() & !self.is_last.val() {
+                self.err.d.next = true;
+                self.pad.d.next = true;
+            }
+            if self.is_last.val() & !self.s_axis_tlast.val() {
+                self.err.d.next = true;
+                self.discard.d.next = true;
+            }
+        }
+        if self.discard.q.val() & self.s_axis_tvalid.val() & self.s_axis_tlast.val() {
+            self.discard.d.next = false;
+        }
+        // ---- Blocks.
+        self.intra.rst.next = self.rst.val();
+        self.intra.en.next = self.en.val();
+        self.intra.pix.next = self.slot.val();
+        self.window.rst.next = self.rst.val();
+        self.window.en.next = self.en.val();
+        self.window.inp.next.valid = self.intra.out.val().valid;
+        self.window.inp.next.ok = self.intra.out.val().ok;
+        self.window.inp.next.x = self.intra.out.val().x;
+        self.window.inp.next.y = self.intra.out.val().y;
+        self.window.inp.next.z = self.intra.out.val().z;
+        self.window.inp.next.label = self.intra.out.val().label;
+        self.window.inp.next.row = self.intra.out.val().row;
+        self.window.inp.next.col = self.intra.out.val().col;
+        self.window.inp.next.last = self.intra.out.val().last;
+        self.window.inp.next.ring = self.intra.out.val().ring;
+        self.window.inp.next.ring_a = self.intra.out.val().ring_a;
+        self.window.inp.next.ring_b = self.intra.out.val().ring_b;
+        self.dist_tree.rst.next = self.rst.val();
+        self.dist_tree.en.next = self.en.val();
+        self.dist_tree.centre_in.next = self.window.centre.val();
+        for e in 0..self.window.ent_ok.len() {
+            self.dist_tree.ent_ok[e].next = self.window.ent_ok[e].val();
+            self.dist_tree.ent_x[e].next = self.window.ent_x[e].val();
+            self.dist_tree.ent_y[e].next = self.window.ent_y[e].val();
+            self.dist_tree.ent_z[e].next = self.window.ent_z[e].val();
+            self.dist_tree.ent_label[e].next = self.window.ent_label[e].val();
+            self.sort_net.hit[e].next = self.dist_tree.hit[e].val();
+            self.sort_net.label[e].next = self.dist_tree.label[e].val();
+        }
+        self.sort_net.rst.next = self.rst.val();
+        self.sort_net.clear.next = self.label_update.rb_done.val();
+        self.sort_net.centre.next = self.dist_tree.centre.val();
+        self.sort_net.fifo_ok.next = self.join_fifo.count.val() < self.fifo_limit.val();
+        self.join_fifo.rst.next = self.rst.val();
+        self.join_fifo.push.next = self.sort_net.push.val();
+        self.join_fifo.din.next = self.sort_net.entry.val();
+        self.join_fifo.pop.next = self.merge_table.pop.val();
+        self.merge_table.rst.next = self.rst.val();
+        self.merge_table.head.next = self.join_fifo.dout.val();
+        self.merge_table.empty.next = self.join_fifo.empty.val();
+        self.merge_table.provisional.next = self.intra.provisional.val();
+        self.merge_table.gear_free.next = self.label_update.gear_free.val();
+        self.merge_table.flat_start.next = false;
+        self.label_update.rst.next = self.rst.val();
+        self.label_update.en.next = self.en.val();
+        self.label_update.wr_valid.next = self.intra.out.val().valid;
+        self.label_update.wr_state.next = self.intra.out.val().state;
+        self.label_update.wr_last.next = self.intra.out.val().last;
+        self.label_update.rb_start.next = false;
+        self.label_update.fv.next = self.merge_table.fv.val();
+        self.label_update.fval.next = self.merge_table.fval.val();
+        self.label_update.m_axis_tready.next = self.m_axis_tready.val();
+        self.m_axis_tdata.next = self.label_update.m_axis_tdata.val();
+        self.m_axis_tkeep.next = self.label_update.m_axis_tkeep.val();
+        self.m_axis_tvalid.next = self.label_update.m_axis_tvalid.val();
+        self.m_axis_tlast.next = self.label_update.m_axis_tlast.val();
+        // ---- Frame phases.
+        if self.sort_net.last_done.val() {
+            self.last_seen.d.next = true;
+        }
+        self.drained.next = self.last_seen.q.val()
+            & (self.join_fifo.count.val() == self.fifo_zero.val())
+            & self.merge_table.union_idle.val();
+        self.done_q.d.next = false;
+        if (self.fsm.q.val() == self.f_init.val()) & !self.merge_table.init_busy.val() {
+            self.fsm.d.next = self.f_run.val();
+        }
+        if (self.fsm.q.val() == self.f_run.val()) & self.in_done.q.val() {
+            self.fsm.d.next = self.f_drain.val();
+        }
+        if (self.fsm.q.val() == self.f_drain.val()) & self.drained.val() {
+            self.merge_table.flat_start.next = true;
+            self.label_update.rb_start.next = true;
+            self.fsm.d.next = self.f_out.val();
+        }
+        if (self.fsm.q.val() == self.f_out.val()) & self.label_update.rb_done.val() {
+            self.fsm.d.next = self.f_run.val();
+            self.in_done.d.next = false;
+            self.last_seen.d.next = false;
+            self.err.d.next = false;
+            self.done_q.d.next = true;
+            self.st_clusters.d.next = self.merge_table.clusters.val();
+            self.st_prov.d.next = self.intra.provisional.val().get_bits::<16>(0);
+            self.st_ovf.d.next = self.intra.overflow.val();
+            self.st_unl.d.next = self.intra.unlabelled.val();
+            self.st_err.d.next = self.err.q.val();
+            self.st_joins.d.next = self.sort_net.joins.val();
+            self.st_gstall.d.next = self.label_update.gear_stalls.val();
+        }
+        if self.rst.val() {
+            self.fsm.d.next = self.f_init.val();
+            self.row.d.next = self.zero8.val();
+            self.col.d.next = self.zero12.val();
+            self.pix.d.next = self.zero20.val();
+            self.pad.d.next = false;
+            self.discard.d.next = false;
+            self.in_done.d.next = false;
+            self.err.d.next = false;
+            self.last_seen.d.next = false;
+            self.done_q.d.next = false;
+        }
+        self.status_clusters.next = self.st_clusters.q.val();
+        self.status_provisional.next = self.st_prov.q.val();
+        self.status_overflow.next = self.st_ovf.q.val();
+        self.status_unlabelled.next = self.st_unl.q.val();
+        self.status_frame_error.next = self.st_err.q.val();
+        self.status_joins.next = self.st_joins.q.val();
+        self.status_gear_stalls.next = self.st_gstall.q.val();
+        self.status_frame_done.next = self.done_q.q.val();
+        self.status_idle.next = (self.fsm.q.val() == self.f_run.val())
+            & !self.in_done.q.val()
+            & (self.pix.q.val() == self.zero20.val());
+    }
+}

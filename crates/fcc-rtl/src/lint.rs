@@ -1,0 +1,58 @@
+//! Verilator lint of the generated Verilog (`verilator --lint-only -Wall`).
+
+use std::path::Path;
+use std::process::Command;
+
+use fcc_params::FccParams;
+
+use crate::{file_header, RtlError, TOP_MODULE};
+
+/// The waiver file written beside the Verilog. Every waiver says why.
+pub fn waivers(p: &FccParams) -> String {
+    let mut s = file_header(p, "//");
+    s.push_str("`verilator_config\n");
+    s.push_str(
+        "// The generator writes every module of the core into one file, fcc_top.v;\n\
+         // the file is named after the top module only.\n\
+         lint_off -rule DECLFILENAME -file \"*fcc_top.v\"\n\
+         // Bits 63:49 of an input beat are reserved and ignored by definition.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'s_axis_tdata'[63:49]*\"\n\
+         // rust-hdl writes each module's logic as one combinational always block.\n\
+         // The join FIFO's block computes `empty` from its pointers and reads\n\
+         // `pop`; the union engine's block reads `empty` and drives `pop`. The\n\
+         // loop exists only at block level, not between signals (rust-hdl's\n\
+         // check_logic_loops passes); it costs Verilator some speed, nothing else.\n\
+         lint_off -rule UNOPTFLAT -file \"*fcc_top.v\" -match \"*join_fifo$empty*\"\n",
+    );
+    s
+}
+
+/// Lint `verilog` with the waivers in `vlt`. Returns the log on success.
+pub fn lint_files(verilog: &Path, vlt: &Path) -> Result<String, RtlError> {
+    let out = Command::new("verilator")
+        .arg("--lint-only")
+        .arg("-Wall")
+        .arg("--top-module")
+        .arg(TOP_MODULE)
+        .arg(vlt)
+        .arg(verilog)
+        .output()
+        .map_err(|source| RtlError::ToolMissing {
+            tool: "verilator".into(),
+            package: "verilator".into(),
+            source,
+        })?;
+    let log = format!(
+        "{}{}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    if out.status.success() && !log.contains("%Warning") && !log.contains("%Error") {
+        Ok(log)
+    } else {
+        Err(RtlError::Lint {
+            path: verilog.to_path_buf(),
+            log,
+        })
+    }
+}

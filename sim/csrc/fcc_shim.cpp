@@ -1,0 +1,88 @@
+// C ABI around the Verilator model of fcc_top, loaded at run time by the
+// fcc-sim crate. One call advances one clock cycle.
+#include <cstdint>
+
+#include "Vfcc_top.h"
+#include "verilated.h"
+
+extern "C" {
+
+// Inputs for one cycle (must match `FccIn` in sim/src/ffi.rs).
+struct FccIn {
+    uint64_t s_tdata;
+    uint8_t s_tvalid;
+    uint8_t s_tlast;
+    uint8_t m_tready;
+    uint8_t rst;
+};
+
+// Outputs seen during that cycle, before its rising edge (must match `FccOut`).
+struct FccOut {
+    uint64_t m_tdata;
+    uint32_t clusters;
+    uint32_t provisional;
+    uint32_t unlabelled;
+    uint32_t joins;
+    uint32_t gear_stalls;
+    uint8_t s_tready;
+    uint8_t m_tvalid;
+    uint8_t m_tlast;
+    uint8_t m_tkeep;
+    uint8_t frame_done;
+    uint8_t frame_error;
+    uint8_t overflow;
+    uint8_t idle;
+};
+
+struct FccModel {
+    VerilatedContext ctx;
+    Vfcc_top* top;
+};
+
+void* fcc_new() {
+    FccModel* m = new FccModel;
+    m->top = new Vfcc_top(&m->ctx, "fcc_top");
+    m->top->clk = 0;
+    m->top->rst = 1;
+    m->top->eval();
+    return m;
+}
+
+void fcc_free(void* p) {
+    FccModel* m = static_cast<FccModel*>(p);
+    if (m == nullptr) return;
+    m->top->final();
+    delete m->top;
+    delete m;
+}
+
+void fcc_step(void* p, const FccIn* in, FccOut* out) {
+    FccModel* m = static_cast<FccModel*>(p);
+    Vfcc_top* t = m->top;
+    t->s_axis_tdata = in->s_tdata;
+    t->s_axis_tvalid = in->s_tvalid;
+    t->s_axis_tlast = in->s_tlast;
+    t->m_axis_tready = in->m_tready;
+    t->rst = in->rst;
+    t->clk = 0;
+    t->eval();
+    out->m_tdata = t->m_axis_tdata;
+    out->clusters = t->status_clusters;
+    out->provisional = t->status_provisional;
+    out->unlabelled = t->status_unlabelled;
+    out->joins = t->status_joins;
+    out->gear_stalls = t->status_gear_stalls;
+    out->s_tready = t->s_axis_tready;
+    out->m_tvalid = t->m_axis_tvalid;
+    out->m_tlast = t->m_axis_tlast;
+    out->m_tkeep = t->m_axis_tkeep;
+    out->frame_done = t->status_frame_done;
+    out->frame_error = t->status_frame_error;
+    out->overflow = t->status_overflow;
+    out->idle = t->status_idle;
+    t->clk = 1;
+    t->eval();
+    m->ctx.timeInc(1);
+}
+
+}  // extern "C"

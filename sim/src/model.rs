@@ -1,0 +1,299 @@
+//! Building and loading a Verilator model of `fcc_top` for one parameter set.
+//!
+//! The model is built on demand, not by a build script, so any configuration
+//! works without recompiling this crate: the RTL is generated into a cache
+//! directory keyed by the parameters and the generated text, verilated, the
+//! C shim (`csrc/fcc_shim.cpp`) is linked against it into a shared library,
+//! and the library is loaded with `libloading`. Builds go to a private
+//! directory that is renamed into place, so concurrent builders never see a
+//! half-built model. The cache root is `$FCC_SIM_CACHE`, else
+//! `$CARGO_TARGET_DIR/fcc-sim-cache`, else `target/fcc-sim-cache` in the workspace.
+
+use std::collections::HashMap;
+use std::ffi::c_void;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::sync::{Arc, Mutex, OnceLock};
+
+use fcc_params::FccParams;
+
+use crate::SimError;
+
+const SHIM: &str = include_str!("../csrc/fcc_shim.cpp");
+const LIB_NAME: &str = "libfcc_sim.so";
+
+/// Inputs of one cycle; layout shared with `FccIn` in the shim.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default)]
+pub struct FccIn {
+    pub s_tdata: u64,
+    pub s_tvalid: u8,
+    pub s_tlast: u8,
+    pub m_tready: u8,
+    pub rst: u8,
+}
+
+/// Outputs during one cycle, before its rising edge; layout shared with `FccOut`.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default)]
+pub struct FccOut {
+    pub m_tdata: u64,
+    pub clusters: u32,
+    pub provisional: u32,
+    pub unlabelled: u32,
+    pub joins: u32,
+    pub gear_stalls: u32,
+    pub s_tready: u8,
+    pub m_tvalid: u8,
+    pub m_tlast: u8,
+    pub m_tkeep: u8,
+    pub frame_done: u8,
+    pub frame_error: u8,
+    pub overflow: u8,
+    pub idle: u8,
+}
+
+type NewFn = unsafe extern "C" fn() -> *mut c_void;
+type FreeFn = unsafe extern "C" fn(*mut c_void);
+type StepFn = unsafe extern "C" fn(*mut c_void, *const FccIn, *mut FccOut);
+
+/// A loaded Verilator model (shared library) for one parameter set.
+pub struct Model {
+    pub params: FccParams,
+    /// Directory holding the generated RTL and the library.
+    pub dir: PathBuf,
+    new_fn: NewFn,
+    free_fn: FreeFn,
+    step_fn: StepFn,
+    // Keeps the function pointers above valid; dropped last.
+    _lib: libloading::Library,
+}
+
+impl std::fmt::Debug for Model {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Model").field("dir", &self.dir).finish()
+    }
+}
+
+/// One simulated instance of the core.
+pub struct Dut {
+    model: Arc<Model>,
+    handle: *mut c_void,
+    /// Rising edges simulated so far.
+    pub cycle: u64,
+}
+
+impl Dut {
+    pub fn new(model: Arc<Model>) -> Self {
+        // SAFETY: `fcc_new` allocates a fresh model; the library stays loaded
+        // for as long as `model` (held by this struct) lives.
+        let handle = unsafe { (model.new_fn)() };
+        Dut {
+            model,
+            handle,
+            cycle: 0,
+        }
+    }
+
+    pub fn params(&self) -> &FccParams {
+        &self.model.params
+    }
+
+    /// Advance one clock cycle with `inp`; returns the outputs seen before the edge.
+    pub fn step(&mut self, inp: &FccIn) -> FccOut {
+        let mut out = FccOut::default();
+        // SAFETY: `handle` came from `fcc_new` of the same library and is
+        // freed only in `drop`; both pointers refer to live `repr(C)` values.
+        unsafe { (self.model.step_fn)(self.handle, inp, &mut out) };
+        self.cycle += 1;
+        out
+    }
+}
+
+impl Drop for Dut {
+    fn drop(&mut self) {
+        // SAFETY: `handle` is freed exactly once, with the library still loaded.
+        unsafe { (self.model.free_fn)(self.handle) };
+    }
+}
+
+/// Where built models are kept.
+pub fn cache_root() -> PathBuf {
+    if let Some(dir) = std::env::var_os("FCC_SIM_CACHE") {
+        return PathBuf::from(dir);
+    }
+    if let Some(dir) = std::env::var_os("CARGO_TARGET_DIR") {
+        return PathBuf::from(dir).join("fcc-sim-cache");
+    }
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("..")
+        .join("target")
+        .join("fcc-sim-cache")
+}
+
+fn fnv(text: &str) -> u64 {
+    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
+    for b in text.bytes() {
+        h ^= u64::from(b);
+        h = h.wrapping_mul(0x0000_0100_0000_01b3);
+    }
+    h
+}
+
+/// Load the model for `p`, building it first if the cache lacks it. Models
+/// are shared within the process.
+pub fn load(p: &FccParams) -> Result<Arc<Model>, SimError> {
+    static MODELS: OnceLock<Mutex<HashMap<String, Arc<Model>>>> = OnceLock::new();
+    let models = MODELS.get_or_init(|| Mutex::new(HashMap::new()));
+    // One build at a time in this process: builds are heavy and the cache
+    // key is only known after generation.
+    let mut map = models.lock().unwrap_or_else(|e| e.into_inner());
+    let gen = fcc_rtl::generate(p)?;
+    let key = format!(
+        "{}-{:016x}",
+        p.hash(),
+        fnv(&format!("{}{SHIM}", gen.verilog))
+    );
+    if let Some(m) = map.get(&key) {
+        return Ok(m.clone());
+    }
+    let dir = cache_root().join(&key);
+    if !dir.join(LIB_NAME).exists() {
+        build(&gen, &dir)?;
+    }
+    let model = Arc::new(open(p, &dir)?);
+    map.insert(key, model.clone());
+    Ok(model)
+}
+
+fn open(p: &FccParams, dir: &Path) -> Result<Model, SimError> {
+    let path = dir.join(LIB_NAME);
+    // SAFETY: the library is one we built from our own shim; loading it runs
+    // no initialisers beyond the C++ runtime's.
+    let lib = unsafe { libloading::Library::new(&path) }.map_err(|source| SimError::Load {
+        path: path.clone(),
+        source,
+    })?;
+    // SAFETY: the symbol types match the `extern "C"` declarations in the shim.
+    let (new_fn, free_fn, step_fn) = unsafe {
+        let n: NewFn = *lib
+            .get::<NewFn>(b"fcc_new\0")
+            .map_err(|source| SimError::Load {
+                path: path.clone(),
+                source,
+            })?;
+        let f: FreeFn = *lib
+            .get::<FreeFn>(b"fcc_free\0")
+            .map_err(|source| SimError::Load {
+                path: path.clone(),
+                source,
+            })?;
+        let s: StepFn = *lib
+            .get::<StepFn>(b"fcc_step\0")
+            .map_err(|source| SimError::Load {
+                path: path.clone(),
+                source,
+            })?;
+        (n, f, s)
+    };
+    Ok(Model {
+        params: p.clone(),
+        dir: dir.to_path_buf(),
+        new_fn,
+        free_fn,
+        step_fn,
+        _lib: lib,
+    })
+}
+
+fn run(cmd: &mut Command, what: &str) -> Result<(), SimError> {
+    let out = cmd.output().map_err(|e| SimError::Tool {
+        tool: what.to_string(),
+        message: e.to_string(),
+    })?;
+    if out.status.success() {
+        Ok(())
+    } else {
+        Err(SimError::Build {
+            step: what.to_string(),
+            log: format!(
+                "{}{}",
+                String::from_utf8_lossy(&out.stdout),
+                String::from_utf8_lossy(&out.stderr)
+            ),
+        })
+    }
+}
+
+fn io(path: &Path) -> impl FnOnce(std::io::Error) -> SimError + '_ {
+    move |source| SimError::Io {
+        path: path.to_path_buf(),
+        source,
+    }
+}
+
+fn build(gen: &fcc_rtl::Generated, dir: &Path) -> Result<(), SimError> {
+    let root = dir.parent().unwrap_or(dir);
+    std::fs::create_dir_all(root).map_err(io(root))?;
+    let tmp = root.join(format!(
+        "{}.tmp-{}",
+        dir.file_name().and_then(|n| n.to_str()).unwrap_or("model"),
+        std::process::id()
+    ));
+    let _ = std::fs::remove_dir_all(&tmp);
+    std::fs::create_dir_all(&tmp).map_err(io(&tmp))?;
+    for (name, text) in gen.files() {
+        let path = tmp.join(name);
+        std::fs::write(&path, text).map_err(io(&path))?;
+    }
+    let shim = tmp.join("fcc_shim.cpp");
+    std::fs::write(&shim, SHIM).map_err(io(&shim))?;
+    let jobs = std::env::var("FCC_SIM_JOBS").unwrap_or_else(|_| "2".to_string());
+    run(
+        Command::new("verilator")
+            .current_dir(&tmp)
+            .args(["--cc", "--build", "-j", &jobs, "-Wno-fatal", "-O3"])
+            .args(["--x-assign", "fast", "--x-initial", "fast", "--noassert"])
+            .args(["-CFLAGS", "-fPIC -O1", "--top-module", fcc_rtl::TOP_MODULE])
+            .args(["-Mdir", "obj", "fcc_lint.vlt", "fcc_top.v"]),
+        "verilator",
+    )?;
+    let vroot = Command::new("verilator")
+        .arg("--getenv")
+        .arg("VERILATOR_ROOT")
+        .output()
+        .map_err(|e| SimError::Tool {
+            tool: "verilator".into(),
+            message: e.to_string(),
+        })?;
+    let vroot = PathBuf::from(String::from_utf8_lossy(&vroot.stdout).trim());
+    let inc = vroot.join("include");
+    let cxx = std::env::var("CXX").unwrap_or_else(|_| "c++".to_string());
+    run(
+        Command::new(&cxx)
+            .current_dir(&tmp)
+            .args(["-shared", "-fPIC", "-O1", "-std=c++17", "-Iobj"])
+            .arg(format!("-I{}", inc.display()))
+            .arg(format!("-I{}", inc.join("vltstd").display()))
+            .arg("fcc_shim.cpp")
+            .arg(inc.join("verilated.cpp"))
+            .arg(inc.join("verilated_threads.cpp"))
+            .arg("obj/Vfcc_top__ALL.a")
+            .args(["-pthread", "-latomic", "-o", LIB_NAME]),
+        "c++ (link the Verilator model)",
+    )?;
+    // Keep only what is needed to load and inspect the model.
+    let _ = std::fs::remove_dir_all(tmp.join("obj"));
+    match std::fs::rename(&tmp, dir) {
+        Ok(()) => Ok(()),
+        // Another process finished the same model first: use theirs.
+        Err(_) if dir.join(LIB_NAME).exists() => {
+            let _ = std::fs::remove_dir_all(&tmp);
+            Ok(())
+        }
+        Err(e) => Err(SimError::Io {
+            path: dir.to_path_buf(),
+            source: e,
+        }),
+    }
+}

@@ -1,0 +1,344 @@
+//! Verilator regression of the generated core against the golden model.
+//!
+//! Per K in {3, 5, 7, 9, 11}: every directed frame, seeded random frames with
+//! random input gaps and output back-pressure, early and late `tlast` with
+//! recovery, a reset in the middle of a frame (16 x 256), and two synthetic
+//! 64 x 2048 scenes whose cycle counts are printed. Models are built once per
+//! configuration and cached (see `fcc_sim::model`).
+
+use fcc_golden::Frame;
+use fcc_params::FccParams;
+use fcc_sim::{compare, expected, frames, load, run_and_check, Drive, Dut, FrameRun, Tlast};
+
+/// 16 x 256 with 11-bit labels, so the `label_overflow` and `checkerboard`
+/// frames (thousands of runs) exhaust the labels for every K.
+fn small(fsize: usize) -> FccParams {
+    FccParams {
+        rows: 16,
+        cols: 256,
+        fsize,
+        label_bits: 11,
+        ..Default::default()
+    }
+}
+
+fn dut(p: &FccParams) -> Dut {
+    let model = match load(p) {
+        Ok(m) => m,
+        Err(e) => panic!("{e}"),
+    };
+    let mut d = Dut::new(model);
+    d.reset(4);
+    d
+}
+
+fn check(d: &mut Dut, f: &Frame, drive: &Drive, what: &str) -> FrameRun {
+    match run_and_check(d, f, drive, what) {
+        Ok(r) => r,
+        Err(e) => panic!("{e}"),
+    }
+}
+
+fn directed_random_protocol(fsize: usize) {
+    let p = small(fsize);
+    let mut d = dut(&p);
+    // Directed corners, plain and under stress.
+    for (name, f) in frames::directed(&p) {
+        let run = check(&mut d, &f, &Drive::default(), name);
+        if name == "label_overflow" {
+            assert!(
+                run.overflow,
+                "label_overflow must exhaust {} labels",
+                p.max_label()
+            );
+        }
+        let stress = Drive {
+            gap: 0.25,
+            backpressure: 0.5,
+            seed: fsize as u64,
+            ..Default::default()
+        };
+        check(&mut d, &f, &stress, name);
+    }
+    // Seeded random frames with random gaps and back-pressure.
+    for seed in 0..6u64 {
+        let f = frames::random(&p, seed * 1000 + fsize as u64);
+        let drive = Drive {
+            gap: [0.0, 0.1, 0.5][seed as usize % 3],
+            backpressure: [0.0, 0.3, 0.7][(seed as usize / 2) % 3],
+            seed,
+            ..Default::default()
+        };
+        check(
+            &mut d,
+            &f,
+            &drive,
+            &format!("random {}", seed * 1000 + fsize as u64),
+        );
+    }
+    // Early tlast: the rest of the frame is empty; the error bit is set.
+    let f = frames::random(&p, 77);
+    let at = p.pixels() / 3;
+    let mut cut = f.clone();
+    for px in cut.points.iter_mut().skip(at + 1) {
+        *px = None;
+    }
+    let gold = expected(&p, &cut).unwrap();
+    let drive = Drive {
+        tlast: Tlast::Early { at },
+        gap: 0.2,
+        seed: 5,
+        ..Default::default()
+    };
+    let run = d.run_frame(&f, &drive).unwrap();
+    compare(&p, &gold, &run, "early tlast").unwrap();
+    assert!(run.frame_error, "early tlast must set frame_error");
+    let run = check(&mut d, &f, &Drive::default(), "after early tlast");
+    assert!(!run.frame_error);
+    // Late tlast: extra beats are dropped up to the next tlast.
+    let drive = Drive {
+        tlast: Tlast::Late { extra: 7 },
+        ..Default::default()
+    };
+    let run = check(&mut d, &f, &drive, "late tlast");
+    assert!(run.frame_error, "missing tlast must set frame_error");
+    let run = check(
+        &mut d,
+        &frames::ring(&p),
+        &Drive::default(),
+        "after late tlast",
+    );
+    assert!(!run.frame_error);
+    // Reset in the middle of a frame, then a clean frame.
+    d.feed_partial(&f, p.pixels() / 2, 1_000_000).unwrap();
+    d.reset(3);
+    check(&mut d, &frames::comb(&p), &Drive::default(), "after reset");
+}
+
+fn scenes(fsize: usize) {
+    let p = FccParams {
+        fsize,
+        ..Default::default()
+    };
+    let mut d = dut(&p);
+    for seed in [1u64, 2] {
+        let cfg = fcc_scene::SceneConfig {
+            rows: p.rows,
+            cols: p.cols,
+            seed,
+            ..Default::default()
+        };
+        let scene = fcc_scene::generate(&cfg).unwrap();
+        let f = Frame::from_xyz_f32(p.rows, p.cols, &scene.xyz);
+        let run = check(&mut d, &f, &Drive::default(), &format!("scene {seed}"));
+        let rc = p.pixels() as f64;
+        eprintln!(
+            "CYCLES fsize {fsize} scene {seed}: {} cycles = {:.3} x R x C, latency {} after last pixel, \
+             input stalls {} ({:.2}%), joins {}, provisional {}, clusters {}, read-back waits {}",
+            run.cycles,
+            run.cycles as f64 / rc,
+            run.latency,
+            run.input_stalls,
+            100.0 * run.input_stalls as f64 / rc,
+            run.joins,
+            run.provisional,
+            run.clusters,
+            run.gear_stalls,
+        );
+        if fsize == 7 {
+            assert!(
+                run.cycles as f64 <= 1.3 * rc,
+                "fsize 7 scene {seed}: {} cycles exceed 1.3 x R x C",
+                run.cycles
+            );
+        }
+    }
+    // The same scene again under back-pressure and gaps.
+    let cfg = fcc_scene::SceneConfig {
+        rows: p.rows,
+        cols: p.cols,
+        seed: 3,
+        ..Default::default()
+    };
+    let scene = fcc_scene::generate(&cfg).unwrap();
+    let f = Frame::from_xyz_f32(p.rows, p.cols, &scene.xyz);
+    let drive = Drive {
+        gap: 0.1,
+        backpressure: 0.3,
+        seed: 3,
+        ..Default::default()
+    };
+    check(&mut d, &f, &drive, "scene 3 stressed");
+}
+
+macro_rules! per_fsize {
+    ($($k:literal => $small:ident, $full:ident;)*) => {$(
+        #[test]
+        fn $small() {
+            directed_random_protocol($k);
+        }
+        #[test]
+        fn $full() {
+            scenes($k);
+        }
+    )*};
+}
+
+per_fsize! {
+    3 => fsize3_directed_random_protocol, fsize3_scenes_64x2048;
+    5 => fsize5_directed_random_protocol, fsize5_scenes_64x2048;
+    7 => fsize7_directed_random_protocol, fsize7_scenes_64x2048;
+    9 => fsize9_directed_random_protocol, fsize9_scenes_64x2048;
+    11 => fsize11_directed_random_protocol, fsize11_scenes_64x2048;
+}
+
+#[test]
+fn label_overflow_with_8_bit_labels() {
+    let p = FccParams {
+        label_bits: 8,
+        ..small(5)
+    };
+    let mut d = dut(&p);
+    let run = check(
+        &mut d,
+        &frames::label_overflow(&p),
+        &Drive::default(),
+        "label_overflow",
+    );
+    assert!(run.overflow && run.unlabelled > 0 && run.provisional == 255);
+    // The core recovers: the next frame fits in 255 labels.
+    let run = check(
+        &mut d,
+        &frames::u_shapes(&p),
+        &Drive::default(),
+        "after overflow",
+    );
+    assert!(!run.overflow);
+    for seed in 0..3 {
+        check(
+            &mut d,
+            &frames::random(&p, seed),
+            &Drive::default(),
+            "random",
+        );
+    }
+}
+
+#[test]
+fn one_and_two_labels_per_beat_and_odd_sizes() {
+    for (lpb, rows, cols, fsize) in [(1u32, 16, 256, 3usize), (2, 17, 257, 7), (4, 19, 259, 9)] {
+        let p = FccParams {
+            rows,
+            cols,
+            fsize,
+            labels_per_beat: lpb,
+            ..Default::default()
+        };
+        let mut d = dut(&p);
+        for (name, f) in frames::directed(&p).into_iter().take(6) {
+            let drive = Drive {
+                backpressure: 0.3,
+                gap: 0.1,
+                seed: 9,
+                ..Default::default()
+            };
+            let run = check(&mut d, &f, &drive, name);
+            assert_eq!(run.beats as usize, p.pixels().div_ceil(lpb as usize));
+        }
+        check(
+            &mut d,
+            &frames::random(&p, 11),
+            &Drive::default(),
+            "random 11",
+        );
+    }
+}
+
+#[test]
+fn mismatch_names_pixel_expected_got_and_seed() {
+    let p = small(3);
+    let f = frames::one_row(&p, 2);
+    let gold = expected(&p, &f).unwrap();
+    let mut run = FrameRun {
+        labels: gold.labels.clone(),
+        clusters: gold.clusters,
+        provisional: gold.provisional,
+        overflow: gold.overflow,
+        unlabelled: gold.unlabelled as u32,
+        ..Default::default()
+    };
+    compare(&p, &gold, &run, "seed 42").unwrap();
+    let i = 2 * p.cols + 7;
+    run.labels[i] += 1;
+    let e = compare(&p, &gold, &run, "seed 42").unwrap_err().to_string();
+    assert!(
+        e.contains("row 2 col 7") && e.contains("seed 42") && e.contains("!="),
+        "{e}"
+    );
+}
+
+#[test]
+fn bad_parameters_are_reported_not_panicked() {
+    let p = FccParams {
+        fsize: 4,
+        ..small(3)
+    };
+    let e = load(&p).unwrap_err().to_string();
+    assert!(e.contains("fsize"), "{e}");
+}
+
+/// The real Ouster captures in the repository, each at its own size
+/// (32, 64 and 128 beams x 1024 columns), ground left in: the hardest join
+/// load the core sees. K = 7, default thresholds.
+#[test]
+fn real_ouster_frames_at_their_own_size() {
+    use fcc_lidar::ouster::{read_capture, DecodeOptions, OusterMetadata};
+    let data =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../crates/fcc-lidar/tests/data");
+    let captures = [
+        (
+            "OS-0-128-U1_v2.3.0_1024x10.pcap",
+            "OS-0-128-U1_v2.3.0_1024x10.json",
+        ),
+        (
+            "OS-1-32-G_v2.1.1_1024x10.pcap",
+            "OS-1-32-G_v2.1.1_1024x10.json",
+        ),
+        (
+            "OS-1-64_1024x10_fw20.pcap",
+            "OS-1-64_sensor_config_reduced.json",
+        ),
+        (
+            "OS-2-128-U1_v2.3.0_1024x10.pcap",
+            "OS-2-128-U1_v2.3.0_1024x10.json",
+        ),
+    ];
+    for (pcap, json) in captures {
+        let meta = OusterMetadata::from_file(&data.join(json)).unwrap();
+        let capture = read_capture(&data.join(pcap), &meta, DecodeOptions::default()).unwrap();
+        assert!(!capture.frames.is_empty(), "{pcap}: no frame");
+        for frame in &capture.frames {
+            let img = &frame.image;
+            let p = FccParams {
+                rows: img.rows,
+                cols: img.cols,
+                ..Default::default()
+            };
+            let f = img.to_frame();
+            let mut d = dut(&p);
+            let run = check(&mut d, &f, &Drive::default(), pcap);
+            let rc = p.pixels() as f64;
+            eprintln!(
+                "CYCLES ouster {pcap} {} x {}: {} cycles = {:.3} x R x C, latency {}, input stalls {} ({:.2}%), joins {}",
+                img.rows,
+                img.cols,
+                run.cycles,
+                run.cycles as f64 / rc,
+                run.latency,
+                run.input_stalls,
+                100.0 * run.input_stalls as f64 / rc,
+                run.joins,
+            );
+        }
+    }
+}
