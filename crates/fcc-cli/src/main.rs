@@ -11,6 +11,7 @@ mod cmd_gen;
 mod cmd_lidar;
 mod cmd_scene;
 mod cmd_sim;
+mod cmd_synth;
 mod model_args;
 
 #[derive(Parser)]
@@ -39,6 +40,9 @@ enum Command {
     Gen(cmd_gen::GenArgs),
     /// Run one frame through the generated RTL in Verilator and compare with the golden model.
     Sim(cmd_sim::SimArgs),
+    /// Resource and pre-route timing estimate of the generated RTL (Yosys), or the
+    /// Vivado build when `vivado` is on PATH; `--all` writes docs/results.md.
+    Synth(cmd_synth::SynthArgs),
     /// Time the golden model per K on synthetic scenes; compare exact and paper merging.
     Bench(cmd_bench::BenchArgs),
 }
@@ -53,6 +57,7 @@ fn main() {
         Command::Bench(a) => cmd_bench::run(a),
         Command::Gen(a) => cmd_gen::run(a),
         Command::Sim(a) => cmd_sim::run(a),
+        Command::Synth(a) => cmd_synth::run(a),
     };
     if let Err(e) = result {
         eprintln!("error: {e:#}");

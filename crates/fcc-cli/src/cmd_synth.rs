@@ -1,0 +1,348 @@
+//! `fcc synth`: resources and a timing estimate of the generated core.
+//!
+//! One K: generate the RTL (or take `--rtl-dir`), synthesise it with Yosys
+//! (`synth_xilinx -family xc7`, `stat -json`, `sta`) and print a table row.
+//! When `vivado` is on PATH (and `--yosys` is not given), run the project's
+//! Vivado build script instead and print the routed figures.
+//!
+//! `--all`: every K the generator supports, written to `docs/results.md` and
+//! `docs/results.json` beside the paper's Table I and the targets; golden
+//! model times (`fcc bench --json`) and Verilator cycles are attached with
+//! `--bench-json` and `--cycles-json`, and `--from-json` re-renders a report
+//! without synthesising again.
+
+use std::path::{Path, PathBuf};
+
+use anyhow::Context;
+use clap::Args;
+use fcc_params::{limits, FccParams};
+use fcc_synth::results::{self, MeasureOptions, Report, ResultRow};
+use fcc_synth::vivado;
+use fcc_synth::yosys::YosysConfig;
+
+fn defaults() -> FccParams {
+    FccParams::default()
+}
+
+#[derive(Args, Debug)]
+pub struct SynthArgs {
+    /// Connection-filter size K (odd, 3..=11).
+    #[arg(long, default_value_t = defaults().fsize)]
+    pub fsize: usize,
+    /// Measure every K in 3..=11 and write the results document.
+    #[arg(long, conflicts_with_all = ["fsize", "rtl_dir"])]
+    pub all: bool,
+    /// Laser channels (image rows).
+    #[arg(long, default_value_t = defaults().rows)]
+    pub rows: usize,
+    /// Azimuth columns.
+    #[arg(long, default_value_t = defaults().cols)]
+    pub cols: usize,
+    /// Intra-channel threshold th_H, metres.
+    #[arg(long, default_value_t = defaults().th_h)]
+    pub th_h: f64,
+    /// Inter-channel threshold th_V, metres.
+    #[arg(long, default_value_t = defaults().th_v)]
+    pub th_v: f64,
+    /// Provisional label width B (8..=16 in hardware).
+    #[arg(long, default_value_t = defaults().label_bits)]
+    pub label_bits: u32,
+    /// Clock the XDC asks for, MHz.
+    #[arg(long, default_value_t = defaults().clock_mhz)]
+    pub clock_mhz: f64,
+    /// Output labels per AXI4-Stream beat (1, 2 or 4).
+    #[arg(long, default_value_t = defaults().labels_per_beat)]
+    pub labels_per_beat: u32,
+    /// Synthesise the Verilog already in this directory instead of generating it
+    /// (its fcc_params.json, when present, gives the parameters).
+    #[arg(long)]
+    pub rtl_dir: Option<PathBuf>,
+    /// Where the generated RTL, the Yosys script, its log and reports go.
+    #[arg(long, default_value = "target/fcc-synth")]
+    pub work_dir: PathBuf,
+    /// Use Yosys even when Vivado is on PATH.
+    #[arg(long)]
+    pub yosys: bool,
+    /// The Yosys executable.
+    #[arg(long, default_value = "yosys")]
+    pub yosys_bin: PathBuf,
+    /// Skip the timing estimate (faster).
+    #[arg(long)]
+    pub no_timing: bool,
+    /// Also count cells per block (a second synthesis). With --all it is done
+    /// for the targets' K = 7 row in any case.
+    #[arg(long)]
+    pub by_block: bool,
+    /// Repository root: holds scripts/ for the Vivado run.
+    #[arg(long, default_value = ".")]
+    pub repo_root: PathBuf,
+    /// With --all: the Markdown document.
+    #[arg(long, default_value = "docs/results.md")]
+    pub out: PathBuf,
+    /// With --all: the JSON beside it.
+    #[arg(long, default_value = "docs/results.json")]
+    pub json: PathBuf,
+    /// With --all: attach golden-model times from `fcc bench --json FILE` (same rows and columns).
+    #[arg(long)]
+    pub bench_json: Option<PathBuf>,
+    /// With --all: attach Verilator cycle counts (a JSON array of
+    /// {fsize, corpus, frames, cycles_per_frame, max_cycles_per_frame, latency_cycles}).
+    #[arg(long)]
+    pub cycles_json: Option<PathBuf>,
+    /// With --all: do not synthesise; read this results JSON, attach
+    /// --bench-json / --cycles-json and write the document again.
+    #[arg(long, requires = "all")]
+    pub from_json: Option<PathBuf>,
+}
+
+impl SynthArgs {
+    fn params(&self, fsize: usize) -> anyhow::Result<FccParams> {
+        let p = FccParams {
+            rows: self.rows,
+            cols: self.cols,
+            fsize,
+            th_h: self.th_h,
+            th_v: self.th_v,
+            label_bits: self.label_bits,
+            clock_mhz: self.clock_mhz,
+            labels_per_beat: self.labels_per_beat,
+        };
+        p.validate_for_hardware()?;
+        Ok(p)
+    }
+
+    fn yosys_config(&self) -> YosysConfig {
+        YosysConfig {
+            program: self.yosys_bin.clone(),
+            timing: !self.no_timing,
+            by_block: self.by_block,
+            ..YosysConfig::default()
+        }
+    }
+
+    /// The command line that regenerates the document, for its header.
+    fn command(&self) -> String {
+        let d = defaults();
+        let mut c = String::from("fcc synth --all");
+        let mut flag = |name: &str, v: String, default: String| {
+            if v != default {
+                c.push_str(&format!(" --{name} {v}"));
+            }
+        };
+        flag("rows", self.rows.to_string(), d.rows.to_string());
+        flag("cols", self.cols.to_string(), d.cols.to_string());
+        flag("th-h", self.th_h.to_string(), d.th_h.to_string());
+        flag("th-v", self.th_v.to_string(), d.th_v.to_string());
+        flag(
+            "label-bits",
+            self.label_bits.to_string(),
+            d.label_bits.to_string(),
+        );
+        flag(
+            "clock-mhz",
+            self.clock_mhz.to_string(),
+            d.clock_mhz.to_string(),
+        );
+        flag(
+            "labels-per-beat",
+            self.labels_per_beat.to_string(),
+            d.labels_per_beat.to_string(),
+        );
+        if self.bench_json.is_some() {
+            c.push_str(" --bench-json BENCH.json");
+        }
+        if self.cycles_json.is_some() {
+            c.push_str(" --cycles-json CYCLES.json");
+        }
+        c
+    }
+}
+
+fn read(path: &Path) -> anyhow::Result<String> {
+    std::fs::read_to_string(path).with_context(|| format!("{}: cannot read", path.display()))
+}
+
+pub fn run(args: &SynthArgs) -> anyhow::Result<()> {
+    if args.all {
+        return run_all(args);
+    }
+    let mut p = args.params(args.fsize)?;
+    if let Some(dir) = &args.rtl_dir {
+        let json = dir.join("fcc_params.json");
+        if json.is_file() {
+            p = serde_json::from_str(&read(&json)?)
+                .with_context(|| format!("{}: not a parameter file", json.display()))?;
+            eprintln!("parameters from {}", json.display());
+        }
+    }
+    let vivado_bin = if args.yosys {
+        None
+    } else {
+        vivado::find_on_path("vivado")
+    };
+    if let Some(vivado_bin) = vivado_bin {
+        return run_vivado(args, &p, &vivado_bin);
+    }
+    let work = args.work_dir.join(format!("k{}", p.fsize));
+    let cfg = args.yosys_config();
+    eprintln!(
+        "synthesising K = {} with {} (log in {}) ...",
+        p.fsize,
+        cfg.program.display(),
+        work.display()
+    );
+    let run = match &args.rtl_dir {
+        Some(dir) => fcc_synth::estimate_dir(dir, &work.join("yosys"), &cfg)?,
+        None => fcc_synth::estimate(&p, &work, &cfg)?,
+    };
+    eprintln!("{} in {:.0} s", run.yosys_version, run.seconds);
+    if let Some(t) = &run.timing {
+        eprintln!(
+            "critical path (pre-route, Yosys sta, not Vivado timing): {:.3} ns, {} logic levels, {} -> {}",
+            t.critical_path_ns, t.logic_levels, t.start, t.end
+        );
+        for w in &t.warnings {
+            eprintln!("sta warning: {w}");
+        }
+    }
+    let row = ResultRow::from_run(&p, Ok(run));
+    println!("{}", results::summary_header());
+    println!("{}", results::summary_row(&row));
+    if let Some(blocks) = &row.by_block {
+        println!();
+        println!("| block | Slice LUTs | FF | DSP48E1 | BRAM (36 eq.) |");
+        println!("|---|--:|--:|--:|--:|");
+        for (name, r) in blocks {
+            println!(
+                "| {name} | {} | {} | {} | {} |",
+                results::thousands(r.slice_luts),
+                results::thousands(r.ff),
+                r.dsp48e1,
+                r.bram36
+            );
+        }
+    }
+    Ok(())
+}
+
+fn run_vivado(args: &SynthArgs, p: &FccParams, vivado_bin: &Path) -> anyhow::Result<()> {
+    let work = args.work_dir.join(format!("k{}", p.fsize));
+    let rtl_dir = match &args.rtl_dir {
+        Some(d) => d.clone(),
+        None => {
+            let d = work.join(fcc_synth::flow::RTL_SUBDIR);
+            fcc_synth::flow::generate_rtl(p, &d)?;
+            d
+        }
+    };
+    let xdc = rtl_dir.join(vivado::XDC_FILE);
+    if !xdc.is_file() {
+        std::fs::write(&xdc, fcc_synth::flow::xdc(p))
+            .with_context(|| format!("{}: cannot write", xdc.display()))?;
+    }
+    let out = work.join("vivado");
+    eprintln!(
+        "running {} -source {} (reports in {}); pass --yosys for the Yosys estimate",
+        vivado_bin.display(),
+        vivado::BUILD_SCRIPT,
+        out.display()
+    );
+    let v = vivado::run_build(vivado_bin, &args.repo_root, &rtl_dir, &out, p.clock_mhz)?;
+    println!("| K | Slice LUTs | FF | DSP48E1 | RAMB36E1 | RAMB18E1 | BRAM (36 eq.) | WNS (ns) @ {} MHz | fmax (MHz) |", p.clock_mhz);
+    println!("|--:|--:|--:|--:|--:|--:|--:|--:|--:|");
+    println!(
+        "| {} | {} | {} | {} | {} | {} | {} | {:.3} | {:.0} |",
+        p.fsize,
+        results::thousands(v.slice_luts),
+        results::thousands(v.ff),
+        v.dsp,
+        v.ramb36,
+        v.ramb18,
+        v.bram36,
+        v.wns_ns,
+        v.fmax_mhz
+    );
+    Ok(())
+}
+
+fn run_all(args: &SynthArgs) -> anyhow::Result<()> {
+    let mut report = match &args.from_json {
+        Some(path) => Report::from_json(&read(path)?)
+            .map_err(anyhow::Error::msg)
+            .with_context(|| format!("{}", path.display()))?,
+        None => {
+            let base = args.params(defaults().fsize)?;
+            let fsizes: Vec<usize> = limits::HW_FSIZE.step_by(2).collect();
+            let opts = MeasureOptions {
+                fsizes,
+                yosys: args.yosys_config(),
+                by_block_for_targets: true,
+                work_dir: args.work_dir.clone(),
+                command: args.command(),
+            };
+            results::measure(&base, &opts, &mut |line| eprintln!("{line}"))?
+        }
+    };
+    report.command = args.command();
+    if let Some(path) = &args.bench_json {
+        let n = report
+            .attach_golden_bench(&read(path)?)
+            .map_err(anyhow::Error::msg)
+            .with_context(|| format!("{}", path.display()))?;
+        eprintln!("golden-model times for {n} K from {}", path.display());
+    }
+    if let Some(path) = &args.cycles_json {
+        let n = report
+            .attach_cycles_json(&read(path)?)
+            .map_err(anyhow::Error::msg)
+            .with_context(|| format!("{}", path.display()))?;
+        eprintln!("{n} cycle measurements from {}", path.display());
+    }
+    results::write_report(&report, &args.out, &args.json)?;
+    eprintln!("wrote {} and {}", args.out.display(), args.json.display());
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::Parser;
+
+    #[derive(Parser)]
+    struct Cli {
+        #[command(flatten)]
+        synth: SynthArgs,
+    }
+
+    fn parse(args: &[&str]) -> Result<SynthArgs, clap::Error> {
+        Cli::try_parse_from(std::iter::once("synth").chain(args.iter().copied())).map(|c| c.synth)
+    }
+
+    #[test]
+    fn defaults_are_the_default_parameters() {
+        let a = parse(&[]).unwrap();
+        assert_eq!(a.params(a.fsize).unwrap(), FccParams::default());
+    }
+
+    #[test]
+    fn all_conflicts_with_one_k_and_from_json_needs_all() {
+        assert!(parse(&["--all", "--fsize", "5"]).is_err());
+        assert!(parse(&["--all", "--rtl-dir", "x"]).is_err());
+        assert!(parse(&["--from-json", "r.json"]).is_err());
+        assert!(parse(&["--all", "--from-json", "r.json"]).is_ok());
+    }
+
+    #[test]
+    fn hardware_ranges_are_checked() {
+        let a = parse(&["--fsize", "13"]).unwrap();
+        let e = a.params(a.fsize).unwrap_err().to_string();
+        assert!(e.contains("fsize = 13"), "{e}");
+    }
+
+    #[test]
+    fn regenerating_command_names_only_changed_flags() {
+        assert_eq!(parse(&["--all"]).unwrap().command(), "fcc synth --all");
+        let a = parse(&["--all", "--rows", "32", "--clock-mhz", "250"]).unwrap();
+        assert_eq!(a.command(), "fcc synth --all --rows 32 --clock-mhz 250");
+    }
+}
