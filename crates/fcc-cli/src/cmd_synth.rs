@@ -54,7 +54,9 @@ pub struct SynthArgs {
     #[arg(long, default_value_t = defaults().labels_per_beat)]
     pub labels_per_beat: u32,
     /// Synthesise the Verilog already in this directory instead of generating it
-    /// (its fcc_params.json, when present, gives the parameters).
+    /// (its fcc_params.json, when present, gives the parameters). For the Vivado
+    /// build, the directory's parent must hold the generator's scripts/ and
+    /// constraints/ (as the repository root does for rtl_out/).
     #[arg(long)]
     pub rtl_dir: Option<PathBuf>,
     /// Where the generated RTL, the Yosys script, its log and reports go.
@@ -73,9 +75,6 @@ pub struct SynthArgs {
     /// for the targets' K = 7 row in any case.
     #[arg(long)]
     pub by_block: bool,
-    /// Repository root: holds scripts/ for the Vivado run.
-    #[arg(long, default_value = ".")]
-    pub repo_root: PathBuf,
     /// With --all: the Markdown document.
     #[arg(long, default_value = "docs/results.md")]
     pub out: PathBuf,
@@ -226,28 +225,29 @@ pub fn run(args: &SynthArgs) -> anyhow::Result<()> {
 }
 
 fn run_vivado(args: &SynthArgs, p: &FccParams, vivado_bin: &Path) -> anyhow::Result<()> {
-    let work = args.work_dir.join(format!("k{}", p.fsize));
-    let rtl_dir = match &args.rtl_dir {
-        Some(d) => d.clone(),
+    // The generator writes each configuration's own XDC and build script
+    // beside its Verilog (rtl_out/, constraints/, scripts/ of one root).
+    let root = match &args.rtl_dir {
+        Some(d) => d.parent().map(Path::to_path_buf).unwrap_or_default(),
         None => {
-            let d = work.join(fcc_synth::flow::RTL_SUBDIR);
-            fcc_synth::flow::generate_rtl(p, &d)?;
-            d
+            let root = args.work_dir.join(format!("k{}", p.fsize)).join("layout");
+            let layout = fcc_rtl::Layout {
+                rtl: root.join("rtl_out"),
+                constraints: root.join("constraints"),
+                scripts: root.join("scripts"),
+            };
+            fcc_rtl::write_all(p, &layout)?;
+            root
         }
     };
-    let xdc = rtl_dir.join(vivado::XDC_FILE);
-    if !xdc.is_file() {
-        std::fs::write(&xdc, fcc_synth::flow::xdc(p))
-            .with_context(|| format!("{}: cannot write", xdc.display()))?;
-    }
-    let out = work.join("vivado");
+    let out = args.work_dir.join(format!("k{}", p.fsize)).join("vivado");
     eprintln!(
         "running {} -source {} (reports in {}); pass --yosys for the Yosys estimate",
         vivado_bin.display(),
-        vivado::BUILD_SCRIPT,
+        root.join(vivado::BUILD_SCRIPT).display(),
         out.display()
     );
-    let v = vivado::run_build(vivado_bin, &args.repo_root, &rtl_dir, &out, p.clock_mhz)?;
+    let v = vivado::run_build(vivado_bin, &root, &out, p.clock_mhz)?;
     println!("| K | Slice LUTs | FF | DSP48E1 | RAMB36E1 | RAMB18E1 | BRAM (36 eq.) | WNS (ns) @ {} MHz | fmax (MHz) |", p.clock_mhz);
     println!("|--:|--:|--:|--:|--:|--:|--:|--:|--:|");
     println!(

@@ -7,6 +7,7 @@
 use clap::{Parser, Subcommand};
 
 mod cmd_bench;
+mod cmd_cycles;
 mod cmd_gen;
 mod cmd_lidar;
 mod cmd_scene;
@@ -43,6 +44,8 @@ enum Command {
     /// Resource and pre-route timing estimate of the generated RTL (Yosys), or the
     /// Vivado build when `vivado` is on PATH; `--all` writes docs/results.md.
     Synth(cmd_synth::SynthArgs),
+    /// Verilator cycles per frame per K on the synthetic corpus and the real Ouster frames.
+    Cycles(cmd_cycles::CyclesArgs),
     /// Time the golden model per K on synthetic scenes; compare exact and paper merging.
     Bench(cmd_bench::BenchArgs),
 }
@@ -55,6 +58,7 @@ fn main() {
         Command::Eval(a) => cmd_lidar::run_eval(a),
         Command::Scene(a) => cmd_scene::run(a),
         Command::Bench(a) => cmd_bench::run(a),
+        Command::Cycles(a) => cmd_cycles::run(a),
         Command::Gen(a) => cmd_gen::run(a),
         Command::Sim(a) => cmd_sim::run(a),
         Command::Synth(a) => cmd_synth::run(a),

@@ -181,6 +181,9 @@ pub fn write_all(p: &FccParams, layout: &Layout) -> Result<Vec<PathBuf>, RtlErro
         &vivado::relative(&layout.scripts, &layout.constraints.join("fcc_top.xdc")),
     );
     out.extend(write_files(&layout.scripts, &[("fcc_build.tcl", &tcl)])?);
+    let extra = vivado::extra_scripts(&g, layout)?;
+    let extra: Vec<(&str, &str)> = extra.iter().map(|(n, t)| (*n, t.as_str())).collect();
+    out.extend(write_files(&layout.scripts, &extra)?);
     Ok(out)
 }
 

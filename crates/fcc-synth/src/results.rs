@@ -172,6 +172,9 @@ pub struct CycleInput {
     pub fsize: usize,
     pub corpus: String,
     pub frames: u64,
+    /// Pixels per frame when the corpus is not the row's R x C (real sensors).
+    #[serde(default)]
+    pub pixels: Option<usize>,
     pub cycles_per_frame: f64,
     pub max_cycles_per_frame: f64,
     pub latency_cycles: f64,
@@ -308,7 +311,11 @@ impl Report {
             format!("not a JSON array of {{fsize, corpus, frames, cycles_per_frame, max_cycles_per_frame, latency_cycles}}: {e}")
         })?;
         for l in &lines {
-            let p = self.params_for(l.fsize);
+            let mut p = self.params_for(l.fsize);
+            if let Some(px) = l.pixels {
+                // Only the pixel count and the clock enter the rates.
+                (p.rows, p.cols) = (1, px);
+            }
             let m = CycleMeasure::new(
                 &l.corpus,
                 l.frames,

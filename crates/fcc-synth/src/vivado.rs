@@ -1,17 +1,19 @@
 //! The Vivado path: run the project's non-project build script and read its
 //! reports.
 //!
-//! Contract with the script ([`BUILD_SCRIPT`], kept with the RTL generator):
+//! Contract with the script the RTL generator writes beside the Verilog
+//! (`scripts/fcc_build.tcl` of a generated layout, [`BUILD_SCRIPT`]):
 //!
 //! ```text
 //! vivado -mode batch -nojournal -log OUT/vivado.log \
-//!        -source scripts/fcc_build.tcl -tclargs RTL_DIR OUT
+//!        -source <layout>/scripts/fcc_build.tcl -tclargs -out OUT
 //! ```
 //!
-//! - `RTL_DIR` holds the generated `fcc_top.v` and `fcc_top.xdc`;
-//! - the script synthesises, optimises, places and routes for the XC7Z045
-//!   and writes [`UTILIZATION_REPORT`] (`report_utilization`) and
-//!   [`TIMING_REPORT`] (`report_timing_summary`) into `OUT`.
+//! - the script reads `../rtl_out/fcc_top.v` and `../constraints/fcc_top.xdc`
+//!   relative to itself, so each generated configuration carries its own;
+//! - it synthesises, optimises, places and routes for the XC7Z045 and writes
+//!   [`UTILIZATION_REPORT`] (`report_utilization`) and [`TIMING_REPORT`]
+//!   (`report_timing_summary`) under `OUT`.
 //!
 //! Vivado is not available where this crate was written: the report readers
 //! follow the documented text layout of those two commands and are tested on
@@ -25,12 +27,12 @@ use serde::{Deserialize, Serialize};
 use crate::yosys::{start, TAIL};
 use crate::{io_err, tail_lines, SynthError};
 
-/// The build script, relative to the repository root.
+/// The build script, relative to the root of a generated layout.
 pub const BUILD_SCRIPT: &str = "scripts/fcc_build.tcl";
-/// The utilisation report the script writes into its output directory.
-pub const UTILIZATION_REPORT: &str = "utilization.rpt";
-/// The timing summary the script writes into its output directory.
-pub const TIMING_REPORT: &str = "timing.rpt";
+/// The routed utilisation report, relative to the script's `-out` directory.
+pub const UTILIZATION_REPORT: &str = "build/utilization_route.rpt";
+/// The routed timing summary, relative to the script's `-out` directory.
+pub const TIMING_REPORT: &str = "build/timing_route.rpt";
 /// The XDC the script reads from the RTL directory.
 pub const XDC_FILE: &str = "fcc_top.xdc";
 /// How to get Vivado, for error messages.
@@ -122,15 +124,15 @@ pub fn parse_wns(text: &str) -> Result<f64, String> {
         .ok_or_else(|| format!("WNS `{first}` is not a number (is the clock constrained?)"))
 }
 
-/// Run the build script for the generated RTL in `rtl_dir`; reports go to `out_dir`.
+/// Run the build script of the generated layout rooted at `layout_root`;
+/// reports go under `out_dir`.
 pub fn run_build(
     vivado: &Path,
-    repo_root: &Path,
-    rtl_dir: &Path,
+    layout_root: &Path,
     out_dir: &Path,
     clock_mhz: f64,
 ) -> Result<VivadoResult, SynthError> {
-    let script = repo_root.join(BUILD_SCRIPT);
+    let script = layout_root.join(BUILD_SCRIPT);
     if !script.is_file() {
         return Err(SynthError::Io {
             action: "find the Vivado build script",
@@ -140,7 +142,7 @@ pub fn run_build(
     }
     std::fs::create_dir_all(out_dir).map_err(io_err("create", out_dir))?;
     let out_dir = out_dir.canonicalize().map_err(io_err("open", out_dir))?;
-    let rtl_dir = rtl_dir.canonicalize().map_err(io_err("open", rtl_dir))?;
+    let script = script.canonicalize().map_err(io_err("open", &script))?;
     let log = out_dir.join("vivado.log");
     let out = start(
         vivado,
@@ -150,8 +152,7 @@ pub fn run_build(
             .arg(&log)
             .arg("-source")
             .arg(&script)
-            .arg("-tclargs")
-            .arg(&rtl_dir)
+            .args(["-tclargs", "-out"])
             .arg(&out_dir)
             .current_dir(&out_dir),
     )?;
@@ -174,7 +175,7 @@ pub fn run_build(
                 path: p,
                 reason: format!(
                     "Vivado finished but did not write it; {BUILD_SCRIPT} must take \
-                     `-tclargs RTL_DIR OUT` and write {UTILIZATION_REPORT} and {TIMING_REPORT} into OUT"
+                     `-tclargs -out OUT` and write {UTILIZATION_REPORT} and {TIMING_REPORT} under OUT"
                 ),
                 tail: tail_lines(&log_text, TAIL),
             });
@@ -301,18 +302,16 @@ mod tests {
         let fake = root.path().join("vivado");
         std::fs::write(&fake, "#!/bin/sh\necho \"$@\" > args.txt\n").unwrap();
         std::fs::set_permissions(&fake, std::fs::Permissions::from_mode(0o755)).unwrap();
-        let rtl = root.path().join("rtl");
-        std::fs::create_dir_all(&rtl).unwrap();
         let out = root.path().join("out");
-        let e = run_build(&fake, root.path(), &rtl, &out, 200.0).unwrap_err();
+        let e = run_build(&fake, root.path(), &out, 200.0).unwrap_err();
         assert!(
-            e.to_string().contains("must take `-tclargs RTL_DIR OUT`"),
+            e.to_string().contains("must take `-tclargs -out OUT`"),
             "{e}"
         );
         let args = std::fs::read_to_string(out.join("args.txt")).unwrap();
         assert!(args.starts_with("-mode batch -nojournal -log "), "{args}");
         assert!(
-            args.contains("-source ") && args.contains("-tclargs "),
+            args.contains("-source ") && args.contains("-tclargs -out "),
             "{args}"
         );
     }
@@ -322,7 +321,6 @@ mod tests {
         let root = tempfile::tempdir().unwrap();
         let e = run_build(
             Path::new("vivado"),
-            root.path(),
             root.path(),
             &root.path().join("out"),
             200.0,

@@ -1,0 +1,869 @@
+//! The Vivado deliverables: constraints and scripts follow the parameters and
+//! the generated port list, are deterministic, parse as Tcl, and run through
+//! `tclsh` with every Vivado command stubbed (a dry run: argument handling,
+//! paths, the order of the flow and every value handed to Vivado; not
+//! Vivado's own checks, which need Vivado).
+
+use std::collections::BTreeSet;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use fcc_params::FccParams;
+use fcc_rtl::vivado::{self, Port, PortDir};
+use fcc_rtl::{file_header, generate, write_all, Layout, TOP_MODULE};
+
+fn small() -> FccParams {
+    FccParams {
+        rows: 16,
+        cols: 256,
+        ..Default::default()
+    }
+}
+
+fn ports(p: &FccParams) -> Vec<Port> {
+    vivado::top_ports(&generate(p).unwrap().verilog)
+}
+
+/// All four generated files of `p` for the repository layout, by name.
+fn files(p: &FccParams) -> Vec<(String, String)> {
+    let g = generate(p).unwrap();
+    let mut out = vec![
+        ("fcc_top.xdc".to_string(), vivado::xdc(p)),
+        (
+            "fcc_build.tcl".to_string(),
+            vivado::tcl(p, "../rtl_out/fcc_top.v", "../constraints/fcc_top.xdc"),
+        ),
+    ];
+    for (n, t) in vivado::extra_scripts(&g, &Layout::default()).unwrap() {
+        out.push((n.to_string(), t));
+    }
+    out
+}
+
+fn file<'a>(files: &'a [(String, String)], name: &str) -> &'a str {
+    &files.iter().find(|(n, _)| n == name).unwrap().1
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("fcc-vivado-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+#[test]
+fn top_ports_are_read_from_the_generated_verilog() {
+    let ps = ports(&FccParams::default());
+    let find = |n: &str| {
+        ps.iter()
+            .find(|p| p.name == n)
+            .unwrap_or_else(|| panic!("{n}"))
+    };
+    assert_eq!(ps.first().unwrap().name, "clk");
+    assert_eq!(find("s_axis_tdata").width, 64);
+    assert_eq!(find("s_axis_tdata").dir, PortDir::In);
+    assert_eq!(find("s_axis_tready").dir, PortDir::Out);
+    assert_eq!(find("m_axis_tkeep").width, 8);
+    assert_eq!(find("status_unlabelled").width, 20);
+    assert_eq!(find("status_idle").width, 1);
+    // Only the top module's ports: nothing of the sub-modules.
+    let header = generate(&FccParams::default()).unwrap().verilog;
+    let list = header
+        .lines()
+        .find(|l| l.starts_with(&format!("module {TOP_MODULE}(")))
+        .unwrap();
+    assert_eq!(list.matches(',').count() + 1, ps.len(), "{list}");
+    assert!(vivado::top_ports("module other(a);\n input wire a;\nendmodule\n").is_empty());
+}
+
+#[test]
+fn period_follows_clock_mhz() {
+    let p = FccParams {
+        clock_mhz: 203.6,
+        ..small()
+    };
+    let f = files(&p);
+    let xdc = file(&f, "fcc_top.xdc");
+    assert!(
+        xdc.contains("create_clock -name clk -period 4.912 [get_ports clk]"),
+        "{xdc}"
+    );
+    // 20 % of 4.912 ns outside the core, on the streams and on rst.
+    assert_eq!(xdc.matches(" 0.982 [get_ports").count(), 3, "{xdc}");
+    let build = file(&f, "fcc_build.tcl");
+    assert!(build.contains("set clock_mhz 203.6\n"));
+    assert!(build.contains("set period_ns 4.912\n"));
+    let bd = file(&f, "fcc_zc706_bd.tcl");
+    assert!(bd.contains("CONFIG.PCW_FPGA0_PERIPHERAL_FREQMHZ {203.6}"));
+    // The default: 200 MHz, 5 ns.
+    let d = vivado::xdc(&FccParams::default());
+    assert!(d.contains("-period 5.000 "));
+    assert!(d.contains("set_input_delay -clock clk 1.000 "));
+}
+
+#[test]
+fn fabric_clock_above_the_ps_limit_is_capped_in_the_block_design_only() {
+    let p = FccParams {
+        clock_mhz: 300.0,
+        ..small()
+    };
+    let f = files(&p);
+    assert!(file(&f, "fcc_top.xdc").contains("-period 3.333 "));
+    let bd = file(&f, "fcc_zc706_bd.tcl");
+    assert!(bd.contains("CONFIG.PCW_FPGA0_PERIPHERAL_FREQMHZ {250}"));
+    assert!(bd.contains("--clock-mhz 300 is above the PS's 250 MHz"));
+}
+
+#[test]
+fn scripts_name_the_part_the_board_and_the_top() {
+    let f = files(&small());
+    for name in ["fcc_build.tcl", "fcc_package_ip.tcl", "fcc_zc706_bd.tcl"] {
+        assert!(
+            file(&f, name).contains("set part xc7z045ffg900-2\n"),
+            "{name}"
+        );
+    }
+    assert!(file(&f, "fcc_build.tcl")
+        .contains("synth_design -top $top -part $part -mode out_of_context\n"));
+    assert!(file(&f, "fcc_build.tcl").contains("set top fcc_top\n"));
+    assert!(file(&f, "fcc_package_ip.tcl").contains("set top fcc_top\n"));
+    let bd = file(&f, "fcc_zc706_bd.tcl");
+    assert!(bd.contains("set board_part xilinx.com:zc706:part0:1.4\n"));
+    assert!(bd.contains("create_bd_cell -type ip -vlnv fcc:fcc:fcc_top:0.1 fcc\n"));
+    assert_eq!(vivado::ip_vlnv(), "fcc:fcc:fcc_top:0.1");
+}
+
+#[test]
+fn every_file_carries_the_generated_header() {
+    for p in [FccParams::default(), small()] {
+        let header = file_header(&p, "#");
+        for (name, text) in files(&p) {
+            assert!(text.starts_with(&header), "{name}");
+            assert!(text.contains(&p.hash()), "{name}");
+        }
+    }
+}
+
+#[test]
+fn generation_is_deterministic() {
+    assert_eq!(files(&small()), files(&small()));
+    let other = FccParams {
+        fsize: 5,
+        ..small()
+    };
+    // Another parameter set changes at least the headers.
+    assert_ne!(files(&small()), files(&other));
+}
+
+/// `s_axis_*` and `m_axis_*` ports of the Verilog, each with its interface.
+fn axis_ports(ps: &[Port]) -> Vec<(&'static str, &Port)> {
+    let mut out = vec![];
+    for p in ps {
+        for (iface, _) in vivado::AXIS_INTERFACES {
+            if p.name.starts_with(&format!("{iface}_")) {
+                out.push((iface, p));
+            }
+        }
+    }
+    out
+}
+
+#[test]
+fn every_axis_port_is_mapped_in_the_ip_script() {
+    for p in [FccParams::default(), small()] {
+        let ps = ports(&p);
+        let f = files(&p);
+        let ip = file(&f, "fcc_package_ip.tcl");
+        let axis = axis_ports(&ps);
+        assert_eq!(axis.len(), 9, "4 slave + 5 master ports");
+        for (iface, port) in axis {
+            // The map lines sit in the block `fcc_axis $core <iface> <mode> { ... }`.
+            let start = ip
+                .find(&format!("fcc_axis $core {iface} "))
+                .unwrap_or_else(|| panic!("no interface {iface}"));
+            let block = &ip[start..start + ip[start..].find("\n}\n").unwrap() + 1];
+            let logical = port.name[iface.len() + 1..].to_uppercase();
+            assert!(
+                block.contains(&format!("\n    {logical} {}\n", port.name)),
+                "{} not mapped to {logical} in {block}",
+                port.name
+            );
+        }
+        assert!(ip.contains("fcc_axis $core s_axis slave {"));
+        assert!(ip.contains("fcc_axis $core m_axis master {"));
+        assert!(ip.contains(
+            "set_property value s_axis:m_axis [ipx::add_bus_parameter ASSOCIATED_BUSIF $clk_bus]"
+        ));
+        assert!(ip
+            .contains("set_property value rst [ipx::add_bus_parameter ASSOCIATED_RESET $clk_bus]"));
+        assert!(ip
+            .contains("set_property value ACTIVE_HIGH [ipx::add_bus_parameter POLARITY $rst_bus]"));
+        assert!(ip.contains("xilinx.com:interface:axis_rtl:1.0"));
+        assert!(ip.contains("ipx::save_core $core\n"));
+    }
+}
+
+#[test]
+fn every_port_is_constrained_in_the_xdc() {
+    let ps = ports(&FccParams::default());
+    let xdc = vivado::xdc(&FccParams::default());
+    for p in &ps {
+        let covered = if p.name == vivado::CLOCK_PORT {
+            xdc.contains("create_clock -name clk -period")
+        } else if p.name == vivado::RESET_PORT {
+            xdc.contains("[get_ports rst]\n")
+        } else if p.name.starts_with(vivado::STATUS_PREFIX) {
+            p.dir == PortDir::Out && xdc.contains("set_false_path -to [get_ports status_*]")
+        } else if p.name.starts_with("s_axis_") || p.name.starts_with("m_axis_") {
+            let filter = match p.dir {
+                PortDir::In => "set_input_delay -clock clk 1.000 [get_ports -filter {DIRECTION == IN} {s_axis_* m_axis_*}]",
+                PortDir::Out => "set_output_delay -clock clk 1.000 [get_ports -filter {DIRECTION == OUT} {s_axis_* m_axis_*}]",
+            };
+            xdc.contains(filter)
+        } else {
+            false
+        };
+        assert!(covered, "port {} has no constraint in fcc_top.xdc", p.name);
+    }
+}
+
+#[test]
+fn every_status_port_reaches_a_gpio_channel() {
+    let ps = ports(&FccParams::default());
+    let words = vivado::status_words(&ps).unwrap();
+    let status: Vec<&Port> = vivado::status_ports(&ps);
+    assert_eq!(status.len(), 9);
+    let packed: Vec<&str> = words
+        .iter()
+        .flat_map(|w| w.fields.iter().map(|(p, _)| p.name.as_str()))
+        .collect();
+    let declared: Vec<&str> = status.iter().map(|p| p.name.as_str()).collect();
+    assert_eq!(packed, declared, "every status port once, in order");
+    for w in &words {
+        assert!(w.width() <= vivado::GPIO_WIDTH_MAX);
+        let mut next = 0;
+        for (p, lsb) in &w.fields {
+            assert_eq!(*lsb, next);
+            next += p.width;
+        }
+    }
+    let bd = vivado::bd_tcl(&FccParams::default(), &ps).unwrap();
+    for p in status {
+        assert!(
+            bd.contains(&format!("connect_bd_net [get_bd_pins fcc/{}] ", p.name)),
+            "{}",
+            p.name
+        );
+    }
+    assert_eq!(
+        vivado::status_map_lines(&words)[0],
+        "status_gpio0 GPIO_DATA (0x0): [15:0] status_clusters, [31:16] status_provisional"
+    );
+}
+
+#[test]
+fn a_status_port_wider_than_a_gpio_channel_is_an_error() {
+    let mut ps = ports(&small());
+    ps.push(Port {
+        name: "status_wide".into(),
+        dir: PortDir::Out,
+        width: 40,
+    });
+    let e = vivado::bd_tcl(&small(), &ps).unwrap_err().to_string();
+    assert!(e.contains("status_wide is 40 bits wide"), "{e}");
+}
+
+#[test]
+fn dma_transfers_hold_one_whole_frame() {
+    let ps = ports(&small());
+    let p = FccParams::default();
+    assert_eq!(
+        vivado::dma_frame_bytes(&p, &ps).unwrap(),
+        (1 << 20, 1 << 18)
+    );
+    // 1 MiB needs 21 bits of length register.
+    assert_eq!(vivado::dma_length_width(&p, &ps).unwrap(), 21);
+    // A last beat with fewer labels still moves a whole beat.
+    let odd = FccParams {
+        rows: 17,
+        cols: 257,
+        labels_per_beat: 4,
+        ..small()
+    };
+    assert_eq!(
+        vivado::dma_frame_bytes(&odd, &ps).unwrap(),
+        (17 * 257 * 8, (17 * 257_u64).div_ceil(4) * 8)
+    );
+    // The largest hardware frame fits the DMA's widest length register.
+    let big = FccParams {
+        rows: 128,
+        cols: 4096,
+        labels_per_beat: 1,
+        ..small()
+    };
+    let w = vivado::dma_length_width(&big, &ps).unwrap();
+    assert!(w <= vivado::DMA_LENGTH_WIDTH_MAX);
+    assert!(1u64 << w > 128 * 4096 * 8);
+    let bd = vivado::bd_tcl(&p, &ps).unwrap();
+    assert!(bd.contains("CONFIG.c_sg_length_width {21}"));
+    assert!(bd.contains("CONFIG.c_m_axis_mm2s_tdata_width {64}"));
+    assert!(bd.contains("CONFIG.c_s_axis_s2mm_tdata_width {64}"));
+    assert!(bd.contains("CONFIG.c_include_sg {0}"));
+}
+
+/// Braces balance and never close more than they opened (ignoring `\{`).
+fn braces_balance(text: &str) -> bool {
+    let mut depth: i64 = 0;
+    let mut escaped = false;
+    for c in text.chars() {
+        match c {
+            _ if escaped => escaped = false,
+            '\\' => escaped = true,
+            '{' => depth += 1,
+            '}' => {
+                depth -= 1;
+                if depth < 0 {
+                    return false;
+                }
+            }
+            _ => {}
+        }
+    }
+    depth == 0
+}
+
+#[test]
+fn braces_balance_in_every_file() {
+    for (name, text) in files(&FccParams::default()) {
+        assert!(braces_balance(&text), "{name}");
+    }
+    assert!(!braces_balance("set a {b"));
+    assert!(!braces_balance("} {"));
+}
+
+#[test]
+fn committed_vivado_scripts_are_current() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let g = generate(&FccParams::default()).unwrap();
+    for (name, text) in vivado::extra_scripts(&g, &Layout::default()).unwrap() {
+        let path = root.join("scripts").join(name);
+        let got = std::fs::read_to_string(&path).unwrap_or_else(|e| {
+            panic!(
+                "{}: {e}; run `cargo run -- gen` from the repository root",
+                path.display()
+            )
+        });
+        assert!(
+            got == text,
+            "scripts/{name} differs from the generator's output; run `cargo run -- gen` and commit"
+        );
+    }
+}
+
+#[test]
+fn docs_quote_the_generated_status_map() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let doc = std::fs::read_to_string(root.join("docs/vivado.md")).unwrap();
+    let ps = ports(&FccParams::default());
+    let (mm2s, s2mm) = vivado::dma_frame_bytes(&FccParams::default(), &ps).unwrap();
+    for line in vivado::status_map_lines(&vivado::status_words(&ps).unwrap()) {
+        assert!(doc.contains(&line), "docs/vivado.md lacks `{line}`");
+    }
+    assert!(doc.contains(&format!("{mm2s}")) && doc.contains(&format!("{s2mm}")));
+    assert!(doc.contains("not run"));
+}
+
+// ---------------------------------------------------------------------------
+// tclsh: parse check and dry run.
+
+fn tclsh_present() -> bool {
+    Command::new("tclsh")
+        .stdin(std::process::Stdio::null())
+        .arg("/dev/null")
+        .output()
+        .is_ok()
+}
+
+/// Logs every command Tcl does not know (all of Vivado's) to the log file as
+/// a Tcl list and returns "" (or "100%" for a run's PROGRESS), then sources
+/// the script with the remaining arguments as `::argv`.
+const HARNESS: &str = r#"set ::fcc_log [open [lindex $argv 0] w]
+proc unknown {args} {
+    puts $::fcc_log [string map {"\n" " "} $args]
+    if {[lindex $args 0] eq "get_property" && [lindex $args 1] eq "PROGRESS"} { return 100% }
+    return ""
+}
+set script [lindex $argv 1]
+set ::argv [lrange $argv 2 end]
+set ::argc [llength $::argv]
+set code [catch {source $script} msg]
+close $::fcc_log
+if {$code == 1} { puts stderr "ERROR: $msg"; exit 1 }
+exit 0
+"#;
+
+/// The Vivado commands the scripts may call: each is in UG835. A command
+/// outside this list in a dry run is a typo (of Vivado's or of a Tcl
+/// built-in, which the stub would otherwise swallow).
+const VIVADO_COMMANDS: [&str; 55] = [
+    "add_files",
+    "apply_bd_automation",
+    "assign_bd_address",
+    "close_project",
+    "connect_bd_intf_net",
+    "connect_bd_net",
+    "create_bd_cell",
+    "create_bd_design",
+    "create_clock",
+    "create_project",
+    "current_fileset",
+    "current_project",
+    "get_bd_addr_segs",
+    "get_bd_addr_spaces",
+    "get_bd_cells",
+    "get_bd_intf_pins",
+    "get_bd_pins",
+    "get_cells",
+    "get_files",
+    "get_ports",
+    "get_property",
+    "get_runs",
+    "get_timing_paths",
+    "ipx::add_bus_interface",
+    "ipx::add_bus_parameter",
+    "ipx::add_port_map",
+    "ipx::check_integrity",
+    "ipx::create_xgui_files",
+    "ipx::current_core",
+    "ipx::package_project",
+    "ipx::remove_all_bus_interface",
+    "ipx::save_core",
+    "ipx::update_checksums",
+    "launch_runs",
+    "make_wrapper",
+    "opt_design",
+    "phys_opt_design",
+    "place_design",
+    "read_verilog",
+    "read_xdc",
+    "report_timing_summary",
+    "report_utilization",
+    "route_design",
+    "save_bd_design",
+    "set_false_path",
+    "set_input_delay",
+    "set_output_delay",
+    "set_property",
+    "synth_design",
+    "update_compile_order",
+    "update_ip_catalog",
+    "validate_bd_design",
+    "wait_on_run",
+    "write_checkpoint",
+    "write_hw_platform",
+];
+
+struct DryRun {
+    ok: bool,
+    stdout: String,
+    stderr: String,
+    /// The Vivado commands, in order, one string each.
+    log: Vec<String>,
+}
+
+impl DryRun {
+    fn has(&self, prefix: &str) -> bool {
+        self.log.iter().any(|l| l.starts_with(prefix))
+    }
+    /// `prefixes` occur in this order (other commands between them allowed).
+    fn in_order(&self, prefixes: &[&str]) {
+        let mut it = self.log.iter();
+        for p in prefixes {
+            assert!(
+                it.any(|l| l.starts_with(p)),
+                "`{p}` missing or out of order in:\n{}",
+                self.log.join("\n")
+            );
+        }
+    }
+    fn arg_after<'a>(&'a self, command: &str) -> &'a str {
+        let line = self
+            .log
+            .iter()
+            .find(|l| l.starts_with(command))
+            .unwrap_or_else(|| panic!("no {command}"));
+        line[command.len()..].trim()
+    }
+}
+
+/// Run `script` in `cwd` under the harness.
+fn dry_run(cwd: &Path, script: &Path, args: &[&str]) -> DryRun {
+    let harness = cwd.join("harness.tcl");
+    std::fs::write(&harness, HARNESS).unwrap();
+    let log = cwd.join("vivado_commands.log");
+    let out = Command::new("tclsh")
+        .current_dir(cwd)
+        .arg(&harness)
+        .arg(&log)
+        .arg(script)
+        .args(args)
+        .stdin(std::process::Stdio::null())
+        .output()
+        .unwrap();
+    let r = DryRun {
+        ok: out.status.success(),
+        stdout: String::from_utf8_lossy(&out.stdout).into_owned(),
+        stderr: String::from_utf8_lossy(&out.stderr).into_owned(),
+        log: std::fs::read_to_string(&log)
+            .unwrap_or_default()
+            .lines()
+            .map(str::to_string)
+            .collect(),
+    };
+    for line in &r.log {
+        let name = line.split(' ').next().unwrap_or_default();
+        assert!(
+            VIVADO_COMMANDS.contains(&name),
+            "{}: `{name}` is not a Vivado command the scripts are meant to call",
+            script.display()
+        );
+    }
+    r
+}
+
+/// A repository-shaped directory with the generated files of `p`, and a
+/// separate working directory to start "Vivado" in.
+fn generated_tree(name: &str, p: &FccParams) -> (PathBuf, PathBuf) {
+    let root = scratch(name);
+    let layout = Layout {
+        rtl: root.join("repo/rtl_out"),
+        constraints: root.join("repo/constraints"),
+        scripts: root.join("repo/scripts"),
+    };
+    write_all(p, &layout).unwrap();
+    let work = root.join("work");
+    std::fs::create_dir_all(&work).unwrap();
+    (layout.scripts, work)
+}
+
+#[test]
+fn every_file_is_complete_tcl() {
+    if !tclsh_present() {
+        eprintln!("tclsh not installed: Tcl parse check skipped");
+        return;
+    }
+    let (scripts, _) = generated_tree("complete", &FccParams::default());
+    let mut paths: Vec<PathBuf> = ["fcc_build.tcl", "fcc_package_ip.tcl", "fcc_zc706_bd.tcl"]
+        .iter()
+        .map(|n| scripts.join(n))
+        .collect();
+    paths.push(scripts.join("../constraints/fcc_top.xdc"));
+    let check = scripts.join("check.tcl");
+    std::fs::write(
+        &check,
+        "foreach path $argv {\n    set f [open $path]\n    set text [read $f]\n    close $f\n    \
+         if {![info complete $text]} { puts \"incomplete: $path\"; exit 1 }\n}\nputs complete\n",
+    )
+    .unwrap();
+    let out = Command::new("tclsh")
+        .arg(&check)
+        .args(&paths)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stdout)
+    );
+}
+
+#[test]
+fn xdc_dry_run_constrains_clock_streams_reset_and_status() {
+    if !tclsh_present() {
+        eprintln!("tclsh not installed: dry run skipped");
+        return;
+    }
+    let (scripts, work) = generated_tree("xdc", &FccParams::default());
+    let r = dry_run(&work, &scripts.join("../constraints/fcc_top.xdc"), &[]);
+    assert!(r.ok, "{}", r.stderr);
+    r.in_order(&[
+        "get_ports clk",
+        "create_clock -name clk -period 5.000 {}",
+        "get_ports clk",
+        "set_property HD.CLK_SRC BUFGCTRL_X0Y0 {}",
+        "get_ports -filter {DIRECTION == IN} {s_axis_* m_axis_*}",
+        "set_input_delay -clock clk 1.000 {}",
+        "get_ports -filter {DIRECTION == OUT} {s_axis_* m_axis_*}",
+        "set_output_delay -clock clk 1.000 {}",
+        "get_ports rst",
+        "set_input_delay -clock clk 1.000 {}",
+        "get_ports status_*",
+        "set_false_path -to {}",
+    ]);
+}
+
+#[test]
+fn build_dry_run_runs_the_whole_flow_on_the_generated_files() {
+    if !tclsh_present() {
+        eprintln!("tclsh not installed: dry run skipped");
+        return;
+    }
+    let (scripts, work) = generated_tree("build", &small());
+    let r = dry_run(&work, &scripts.join("fcc_build.tcl"), &[]);
+    assert!(r.ok, "{}", r.stderr);
+    let rtl = PathBuf::from(r.arg_after("read_verilog "));
+    assert!(
+        rtl.ends_with("rtl_out/fcc_top.v") && rtl.is_file(),
+        "{rtl:?}"
+    );
+    let xdc = PathBuf::from(r.arg_after("read_xdc -mode out_of_context "));
+    assert!(
+        xdc.ends_with("constraints/fcc_top.xdc") && xdc.is_file(),
+        "{xdc:?}"
+    );
+    let out = work.join("vivado_fcc/build");
+    r.in_order(&[
+        "read_verilog ",
+        "read_xdc -mode out_of_context ",
+        "synth_design -top fcc_top -part xc7z045ffg900-2 -mode out_of_context",
+        &format!(
+            "write_checkpoint -force {}",
+            out.join("post_synth.dcp").display()
+        ),
+        "report_utilization -file ",
+        "report_timing_summary -max_paths 10 -file ",
+        "opt_design",
+        "place_design",
+        "phys_opt_design",
+        "route_design",
+        &format!(
+            "write_checkpoint -force {}",
+            out.join("post_route.dcp").display()
+        ),
+        "report_utilization -file ",
+        "report_utilization -hierarchical -file ",
+        &format!(
+            "report_timing_summary -max_paths 10 -file {}",
+            out.join("timing_route.rpt").display()
+        ),
+        "get_timing_paths -delay_type max -max_paths 1 -nworst 1 -quiet",
+        "get_timing_paths -delay_type min -max_paths 1 -nworst 1 -quiet",
+        "get_cells -hierarchical -quiet -filter {REF_NAME =~ LUT*}",
+    ]);
+    let summary = std::fs::read_to_string(out.join("summary.txt")).unwrap();
+    for line in [
+        "part=xc7z045ffg900-2",
+        "top=fcc_top",
+        "clock_mhz=200",
+        "period_ns=5.000",
+        "wns_ns=none",
+        "lut=0",
+        "carry4=0",
+    ] {
+        assert!(summary.lines().any(|l| l == line), "{line} in {summary}");
+    }
+
+    // -out and -no_phys_opt.
+    let r = dry_run(
+        &work,
+        &scripts.join("fcc_build.tcl"),
+        &["-out", "elsewhere", "-no_phys_opt"],
+    );
+    assert!(r.ok, "{}", r.stderr);
+    assert!(!r.has("phys_opt_design"));
+    assert!(work.join("elsewhere/build/summary.txt").is_file());
+}
+
+#[test]
+fn scripts_answer_help_and_reject_unknown_arguments() {
+    if !tclsh_present() {
+        eprintln!("tclsh not installed: dry run skipped");
+        return;
+    }
+    let (scripts, work) = generated_tree("args", &small());
+    for name in ["fcc_build.tcl", "fcc_package_ip.tcl", "fcc_zc706_bd.tcl"] {
+        let script = scripts.join(name);
+        let r = dry_run(&work, &script, &["-help"]);
+        assert!(r.ok, "{name}: {}", r.stderr);
+        assert!(r.stdout.starts_with(&format!(
+            "usage: vivado -mode batch -source {name} -tclargs"
+        )));
+        assert!(r.log.is_empty(), "{name} ran Vivado commands for -help");
+
+        let r = dry_run(&work, &script, &["-frobnicate"]);
+        assert!(!r.ok, "{name}");
+        assert!(
+            r.stderr.contains("unknown argument '-frobnicate'"),
+            "{}",
+            r.stderr
+        );
+        assert!(r.stderr.contains("usage: vivado"), "{}", r.stderr);
+
+        let r = dry_run(&work, &script, &["-out"]);
+        assert!(
+            !r.ok && r.stderr.contains("-out needs a directory"),
+            "{}",
+            r.stderr
+        );
+    }
+}
+
+#[test]
+fn package_dry_run_maps_every_port_of_the_interfaces() {
+    if !tclsh_present() {
+        eprintln!("tclsh not installed: dry run skipped");
+        return;
+    }
+    let p = small();
+    let (scripts, work) = generated_tree("package", &p);
+    let r = dry_run(&work, &scripts.join("fcc_package_ip.tcl"), &[]);
+    assert!(r.ok, "{}", r.stderr);
+    let ip_dir = work.join("vivado_fcc/ip_repo/fcc_top");
+    r.in_order(&[
+        &format!(
+            "create_project -force fcc_ip_project {} -part xc7z045ffg900-2",
+            work.join("vivado_fcc/ip_project").display()
+        ),
+        "add_files -norecurse ",
+        "set_property top fcc_top {}",
+        "add_files -fileset constrs_1 -norecurse ",
+        "set_property USED_IN {synthesis implementation out_of_context} {}",
+        &format!(
+            "ipx::package_project -root_dir {} -vendor fcc -library fcc -taxonomy /UserIP -import_files -set_current true -force",
+            ip_dir.display()
+        ),
+        "set_property version 0.1 {}",
+        "ipx::remove_all_bus_interface {}",
+        "ipx::add_bus_interface s_axis {}",
+        "set_property interface_mode slave {}",
+        "ipx::add_bus_interface m_axis {}",
+        "set_property interface_mode master {}",
+        "ipx::add_bus_interface clk {}",
+        "ipx::add_bus_parameter ASSOCIATED_BUSIF {}",
+        "ipx::add_bus_interface rst {}",
+        "ipx::add_bus_parameter POLARITY {}",
+        "ipx::create_xgui_files {}",
+        "ipx::update_checksums {}",
+        "ipx::check_integrity {}",
+        "ipx::save_core {}",
+        "close_project",
+    ]);
+    let rtl = PathBuf::from(r.arg_after("add_files -norecurse "));
+    assert!(rtl.is_file(), "{rtl:?}");
+    // Every port map: logical name, then the physical port.
+    let mut mapped = BTreeSet::new();
+    for (i, l) in r.log.iter().enumerate() {
+        if let Some(rest) = l.strip_prefix("set_property physical_name ") {
+            let physical = rest.split(' ').next().unwrap().to_string();
+            let logical = r.log[i - 1]
+                .strip_prefix("ipx::add_port_map ")
+                .unwrap()
+                .split(' ')
+                .next()
+                .unwrap()
+                .to_string();
+            mapped.insert((logical, physical));
+        }
+    }
+    let mut expected = BTreeSet::new();
+    for (iface, port) in axis_ports(&ports(&p)) {
+        expected.insert((
+            port.name[iface.len() + 1..].to_uppercase(),
+            port.name.clone(),
+        ));
+    }
+    expected.insert(("CLK".into(), "clk".into()));
+    expected.insert(("RST".into(), "rst".into()));
+    assert_eq!(mapped, expected);
+    assert!(r.has("set_property value s_axis:m_axis {}"));
+    assert!(r.has("set_property value rst {}"));
+    assert!(r.has("set_property value ACTIVE_HIGH {}"));
+}
+
+#[test]
+fn block_design_dry_run_needs_the_ip_and_writes_the_software_map() {
+    if !tclsh_present() {
+        eprintln!("tclsh not installed: dry run skipped");
+        return;
+    }
+    let p = FccParams::default();
+    let (scripts, work) = generated_tree("bd", &p);
+    let script = scripts.join("fcc_zc706_bd.tcl");
+
+    let r = dry_run(&work, &script, &[]);
+    assert!(!r.ok);
+    assert!(r.stderr.contains("run fcc_package_ip.tcl"), "{}", r.stderr);
+    assert!(r.log.is_empty());
+
+    let ip = work.join("vivado_fcc/ip_repo/fcc_top");
+    std::fs::create_dir_all(&ip).unwrap();
+    std::fs::write(ip.join("component.xml"), "").unwrap();
+    let r = dry_run(&work, &script, &[]);
+    assert!(r.ok, "{}", r.stderr);
+    let proj = work.join("vivado_fcc/zc706");
+    r.in_order(&[
+        &format!(
+            "create_project -force fcc_zc706 {} -part xc7z045ffg900-2",
+            proj.display()
+        ),
+        "set_property board_part xilinx.com:zc706:part0:1.4 {}",
+        &format!(
+            "set_property ip_repo_paths {} {{}}",
+            work.join("vivado_fcc/ip_repo").display()
+        ),
+        "update_ip_catalog",
+        "create_bd_design fcc_zc706",
+        "create_bd_cell -type ip -vlnv xilinx.com:ip:processing_system7:5.5 ps7",
+        "apply_bd_automation -rule xilinx.com:bd_rule:processing_system7 -config {make_external \"FIXED_IO, DDR\" apply_board_preset \"1\" Master \"Disable\" Slave \"Disable\"} {}",
+        "set_property -dict {CONFIG.PCW_USE_M_AXI_GP0 1 CONFIG.PCW_USE_S_AXI_HP0 1 CONFIG.PCW_USE_FABRIC_INTERRUPT 1 CONFIG.PCW_IRQ_F2P_INTR 1 CONFIG.PCW_FPGA0_PERIPHERAL_FREQMHZ 200} {}",
+        "create_bd_cell -type ip -vlnv xilinx.com:ip:proc_sys_reset:5.0 rst_fclk0",
+        "create_bd_cell -type ip -vlnv xilinx.com:ip:axi_dma:7.1 dma",
+        "create_bd_cell -type ip -vlnv xilinx.com:ip:smartconnect:1.0 ctrl_smc",
+        "create_bd_cell -type ip -vlnv xilinx.com:ip:smartconnect:1.0 mem_smc",
+        "create_bd_cell -type ip -vlnv xilinx.com:ip:xlconcat:2.1 irq_concat",
+        "create_bd_cell -type ip -vlnv fcc:fcc:fcc_top:0.1 fcc",
+        "create_bd_cell -type ip -vlnv xilinx.com:ip:axi_gpio:2.0 status_gpio0",
+        "create_bd_cell -type ip -vlnv xilinx.com:ip:axi_gpio:2.0 status_gpio1",
+        "connect_bd_net ",
+        "connect_bd_intf_net ",
+        "assign_bd_address",
+        "validate_bd_design",
+        "save_bd_design",
+        "make_wrapper -files {} -top -import",
+        "set_property top fcc_zc706_wrapper {}",
+    ]);
+    assert!(!r.has("launch_runs"), "no bitstream without -bitstream");
+    // Every stubbed pin lookup names a pin the design has.
+    let pins: BTreeSet<&str> = r
+        .log
+        .iter()
+        .filter_map(|l| l.strip_prefix("get_bd_pins fcc/"))
+        .collect();
+    let ps = ports(&p);
+    let expected: BTreeSet<&str> = ["clk", "rst"]
+        .into_iter()
+        .chain(vivado::status_ports(&ps).iter().map(|p| p.name.as_str()))
+        .collect();
+    assert_eq!(pins, expected);
+    let map = std::fs::read_to_string(proj.join("fcc_zc706_map.txt")).unwrap();
+    assert!(map.contains("dma MM2S_LENGTH 1048576\n"), "{map}");
+    assert!(map.contains("dma S2MM_LENGTH 262144\n"), "{map}");
+    assert!(map.contains(
+        "status status_gpio1 GPIO2_DATA (0x8): [23:0] status_gear_stalls, [24] status_frame_done, [25] status_idle\n"
+    ));
+
+    let r = dry_run(&work, &script, &["-bitstream", "-jobs", "3"]);
+    assert!(r.ok, "{}", r.stderr);
+    r.in_order(&[
+        "make_wrapper ",
+        "launch_runs synth_1 -jobs 3",
+        "wait_on_run synth_1",
+        "launch_runs impl_1 -to_step write_bitstream -jobs 3",
+        "wait_on_run impl_1",
+        &format!(
+            "write_hw_platform -fixed -include_bit -force -file {}",
+            proj.join("fcc_zc706.xsa").display()
+        ),
+    ]);
+}
