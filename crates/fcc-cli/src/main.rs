@@ -10,6 +10,7 @@ mod cmd_bench;
 mod cmd_cycles;
 mod cmd_gen;
 mod cmd_lidar;
+mod cmd_results;
 mod cmd_scene;
 mod cmd_sim;
 mod cmd_synth;
@@ -46,6 +47,8 @@ enum Command {
     Synth(cmd_synth::SynthArgs),
     /// Verilator cycles per frame per K on the synthetic corpus and the real Ouster frames.
     Cycles(cmd_cycles::CyclesArgs),
+    /// Regenerate docs/results.md and its JSON: bench, cycles and synth for every K.
+    Results(cmd_results::ResultsArgs),
     /// Time the golden model per K on synthetic scenes; compare exact and paper merging.
     Bench(cmd_bench::BenchArgs),
 }
@@ -59,6 +62,7 @@ fn main() {
         Command::Scene(a) => cmd_scene::run(a),
         Command::Bench(a) => cmd_bench::run(a),
         Command::Cycles(a) => cmd_cycles::run(a),
+        Command::Results(a) => cmd_results::run(a),
         Command::Gen(a) => cmd_gen::run(a),
         Command::Sim(a) => cmd_sim::run(a),
         Command::Synth(a) => cmd_synth::run(a),

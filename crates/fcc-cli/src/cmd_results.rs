@@ -1,0 +1,89 @@
+//! `fcc results`: every hardware and software number of `docs/results.md` in
+//! one run: golden-model time per K (`fcc bench`), Verilator cycles per K on
+//! the synthetic corpus and the Ouster frames (`fcc cycles`), and Yosys
+//! resources and pre-route timing per K (`fcc synth --all`).
+
+use crate::cmd_bench::{self, BenchArgs};
+use crate::cmd_cycles::{self, CyclesArgs};
+use crate::cmd_synth::{self, SynthArgs};
+use anyhow::Context;
+use clap::{Args, Parser};
+use fcc_params::FccParams;
+use fcc_scene::SceneConfig;
+use fcc_synth::results::{self, Report};
+use std::path::PathBuf;
+
+#[derive(Args, Debug)]
+pub struct ResultsArgs {
+    /// Synthetic 64 x 2048 scenes for the golden-model times and the cycle counts.
+    #[arg(long, default_value_t = 4)]
+    pub frames: u64,
+    /// The Markdown document.
+    #[arg(long, default_value = "docs/results.md")]
+    pub out: PathBuf,
+    /// The JSON beside it.
+    #[arg(long, default_value = "docs/results.json")]
+    pub json: PathBuf,
+    /// Intermediate files (bench and cycle JSON, Yosys work).
+    #[arg(long, default_value = "target/fcc-results")]
+    pub work_dir: PathBuf,
+}
+
+/// `fcc synth` arguments as the command line would give them.
+#[derive(Parser)]
+struct SynthCli {
+    #[command(flatten)]
+    synth: SynthArgs,
+}
+
+pub fn run(args: &ResultsArgs) -> anyhow::Result<()> {
+    std::fs::create_dir_all(&args.work_dir)
+        .with_context(|| format!("{}: cannot create", args.work_dir.display()))?;
+    let fsizes = vec![3usize, 5, 7, 9, 11];
+    let bench_json = args.work_dir.join("bench.json");
+    let cycles_json = args.work_dir.join("cycles.json");
+    let base = FccParams::default();
+    eprintln!("1/3 golden model times (fcc bench)");
+    cmd_bench::run(&BenchArgs {
+        fsize: fsizes.clone(),
+        frames: args.frames,
+        repeat: 5,
+        rows: base.rows,
+        cols: base.cols,
+        dropout: SceneConfig::default().dropout,
+        missing: SceneConfig::default().missing,
+        json: Some(bench_json.clone()),
+    })?;
+    eprintln!("2/3 Verilator cycles (fcc cycles)");
+    cmd_cycles::run(&CyclesArgs {
+        fsize: fsizes,
+        frames: args.frames,
+        ouster_dir: PathBuf::from("crates/fcc-lidar/tests/data"),
+        json: Some(cycles_json.clone()),
+    })?;
+    eprintln!("3/3 Yosys resources and timing (fcc synth --all)");
+    let path = |p: &PathBuf| p.display().to_string();
+    let cli = SynthCli::try_parse_from([
+        "synth".to_string(),
+        "--all".into(),
+        "--bench-json".into(),
+        path(&bench_json),
+        "--cycles-json".into(),
+        path(&cycles_json),
+        "--out".into(),
+        path(&args.out),
+        "--json".into(),
+        path(&args.json),
+        "--work-dir".into(),
+        path(&args.work_dir.join("synth")),
+    ])?;
+    cmd_synth::run(&cli.synth)?;
+    // Name the command that regenerates the whole document.
+    let text = std::fs::read_to_string(&args.json)
+        .with_context(|| format!("{}: cannot read", args.json.display()))?;
+    let mut report = Report::from_json(&text).map_err(anyhow::Error::msg)?;
+    report.command = "fcc results".to_string();
+    results::write_report(&report, &args.out, &args.json)?;
+    eprintln!("wrote {} and {}", args.out.display(), args.json.display());
+    Ok(())
+}
