@@ -9,9 +9,7 @@ use fcc_golden::Frame;
 use fcc_params::FccParams;
 use fcc_sim::{Drive, Dut};
 
-fn defaults() -> FccParams {
-    FccParams::default()
-}
+use crate::model_args::HwArgs;
 
 /// The frame, the hardware parameters and how to drive the ports.
 #[derive(Args, Debug, Clone)]
@@ -22,27 +20,10 @@ pub struct SimArgs {
     /// Instead of --input, a synthetic scene with this seed (--rows x --cols).
     #[arg(long)]
     pub scene_seed: Option<u64>,
-    /// Rows of the synthetic scene.
-    #[arg(long, default_value_t = defaults().rows)]
-    pub rows: usize,
-    /// Columns of the synthetic scene.
-    #[arg(long, default_value_t = defaults().cols)]
-    pub cols: usize,
-    /// Connection-filter size K (odd, 3..=11).
-    #[arg(long, default_value_t = defaults().fsize)]
-    pub fsize: usize,
-    /// Intra-channel threshold th_H, metres.
-    #[arg(long, default_value_t = defaults().th_h)]
-    pub th_h: f64,
-    /// Inter-channel threshold th_V, metres.
-    #[arg(long, default_value_t = defaults().th_v)]
-    pub th_v: f64,
-    /// Provisional label width B (8..=16).
-    #[arg(long, default_value_t = defaults().label_bits)]
-    pub label_bits: u32,
-    /// Labels per output beat: 1, 2 or 4.
-    #[arg(long, default_value_t = defaults().labels_per_beat)]
-    pub labels_per_beat: u32,
+    /// K, thresholds, label width, labels per beat; --rows and --cols size the
+    /// synthetic scene (an --input frame brings its own).
+    #[command(flatten)]
+    pub hw: HwArgs,
     /// Probability of an idle input cycle between pixels.
     #[arg(long, default_value_t = 0.0)]
     pub gap: f64,
@@ -78,14 +59,14 @@ pub fn run(args: &SimArgs) -> anyhow::Result<()> {
         }
         (None, Some(seed)) => {
             let cfg = fcc_scene::SceneConfig {
-                rows: args.rows,
-                cols: args.cols,
+                rows: args.hw.rows,
+                cols: args.hw.cols,
                 seed,
                 ..Default::default()
             };
             let scene = fcc_scene::generate(&cfg).context("making the synthetic scene")?;
             (
-                Frame::from_xyz_f32(args.rows, args.cols, &scene.xyz),
+                Frame::from_xyz_f32(args.hw.rows, args.hw.cols, &scene.xyz),
                 format!("synthetic scene seed {seed}"),
             )
         }
@@ -94,12 +75,7 @@ pub fn run(args: &SimArgs) -> anyhow::Result<()> {
     let p = FccParams {
         rows: frame.rows,
         cols: frame.cols,
-        fsize: args.fsize,
-        th_h: args.th_h,
-        th_v: args.th_v,
-        label_bits: args.label_bits,
-        labels_per_beat: args.labels_per_beat,
-        ..defaults()
+        ..args.hw.unchecked()
     };
     p.validate_for_hardware()
         .context("this frame and these parameters cannot run on the RTL")?;

@@ -20,39 +20,19 @@ use fcc_synth::results::{self, MeasureOptions, Report, ResultRow};
 use fcc_synth::vivado;
 use fcc_synth::yosys::YosysConfig;
 
+use crate::model_args::HwArgs;
+
 fn defaults() -> FccParams {
     FccParams::default()
 }
 
 #[derive(Args, Debug)]
 pub struct SynthArgs {
-    /// Connection-filter size K (odd, 3..=11).
-    #[arg(long, default_value_t = defaults().fsize)]
-    pub fsize: usize,
+    #[command(flatten)]
+    pub hw: HwArgs,
     /// Measure every K in 3..=11 and write the results document.
     #[arg(long, conflicts_with_all = ["fsize", "rtl_dir"])]
     pub all: bool,
-    /// Laser channels (image rows).
-    #[arg(long, default_value_t = defaults().rows)]
-    pub rows: usize,
-    /// Azimuth columns.
-    #[arg(long, default_value_t = defaults().cols)]
-    pub cols: usize,
-    /// Intra-channel threshold th_H, metres.
-    #[arg(long, default_value_t = defaults().th_h)]
-    pub th_h: f64,
-    /// Inter-channel threshold th_V, metres.
-    #[arg(long, default_value_t = defaults().th_v)]
-    pub th_v: f64,
-    /// Provisional label width B (8..=16 in hardware).
-    #[arg(long, default_value_t = defaults().label_bits)]
-    pub label_bits: u32,
-    /// Clock the XDC asks for, MHz.
-    #[arg(long, default_value_t = defaults().clock_mhz)]
-    pub clock_mhz: f64,
-    /// Output labels per AXI4-Stream beat (1, 2 or 4).
-    #[arg(long, default_value_t = defaults().labels_per_beat)]
-    pub labels_per_beat: u32,
     /// Synthesise the Verilog already in this directory instead of generating it
     /// (its fcc_params.json, when present, gives the parameters). For the Vivado
     /// build, the directory's parent must hold the generator's scripts/ and
@@ -97,14 +77,8 @@ pub struct SynthArgs {
 impl SynthArgs {
     fn params(&self, fsize: usize) -> anyhow::Result<FccParams> {
         let p = FccParams {
-            rows: self.rows,
-            cols: self.cols,
             fsize,
-            th_h: self.th_h,
-            th_v: self.th_v,
-            label_bits: self.label_bits,
-            clock_mhz: self.clock_mhz,
-            labels_per_beat: self.labels_per_beat,
+            ..self.hw.unchecked()
         };
         p.validate_for_hardware()?;
         Ok(p)
@@ -121,32 +95,7 @@ impl SynthArgs {
 
     /// The command line that regenerates the document, for its header.
     fn command(&self) -> String {
-        let d = defaults();
-        let mut c = String::from("fcc synth --all");
-        let mut flag = |name: &str, v: String, default: String| {
-            if v != default {
-                c.push_str(&format!(" --{name} {v}"));
-            }
-        };
-        flag("rows", self.rows.to_string(), d.rows.to_string());
-        flag("cols", self.cols.to_string(), d.cols.to_string());
-        flag("th-h", self.th_h.to_string(), d.th_h.to_string());
-        flag("th-v", self.th_v.to_string(), d.th_v.to_string());
-        flag(
-            "label-bits",
-            self.label_bits.to_string(),
-            d.label_bits.to_string(),
-        );
-        flag(
-            "clock-mhz",
-            self.clock_mhz.to_string(),
-            d.clock_mhz.to_string(),
-        );
-        flag(
-            "labels-per-beat",
-            self.labels_per_beat.to_string(),
-            d.labels_per_beat.to_string(),
-        );
+        let mut c = format!("fcc synth --all{}", self.hw.changed_flags());
         if self.bench_json.is_some() {
             c.push_str(" --bench-json BENCH.json");
         }
@@ -165,7 +114,7 @@ pub fn run(args: &SynthArgs) -> anyhow::Result<()> {
     if args.all {
         return run_all(args);
     }
-    let mut p = args.params(args.fsize)?;
+    let mut p = args.params(args.hw.fsize)?;
     if let Some(dir) = &args.rtl_dir {
         let json = dir.join("fcc_params.json");
         if json.is_file() {
@@ -321,7 +270,7 @@ mod tests {
     #[test]
     fn defaults_are_the_default_parameters() {
         let a = parse(&[]).unwrap();
-        assert_eq!(a.params(a.fsize).unwrap(), FccParams::default());
+        assert_eq!(a.params(a.hw.fsize).unwrap(), FccParams::default());
     }
 
     #[test]
@@ -335,7 +284,7 @@ mod tests {
     #[test]
     fn hardware_ranges_are_checked() {
         let a = parse(&["--fsize", "13"]).unwrap();
-        let e = a.params(a.fsize).unwrap_err().to_string();
+        let e = a.params(a.hw.fsize).unwrap_err().to_string();
         assert!(e.contains("fsize = 13"), "{e}");
     }
 

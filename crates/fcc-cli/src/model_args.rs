@@ -1,5 +1,6 @@
 //! The clustering parameters shared by subcommands, defaulting to `FccParams::default()`.
 
+use anyhow::Context;
 use clap::Args;
 use fcc_golden::MergeMode;
 use fcc_params::FccParams;
@@ -42,5 +43,90 @@ impl ModelArgs {
         };
         p.validate()?;
         Ok(p)
+    }
+}
+
+/// Every parameter of a hardware configuration (`gen`, `sim`, `synth`).
+#[derive(Args, Debug, Clone)]
+pub struct HwArgs {
+    /// Connection-filter size K (odd, 3..=11 in hardware).
+    #[arg(long, default_value_t = defaults().fsize)]
+    pub fsize: usize,
+    /// Laser channels (image rows), 16..=128.
+    #[arg(long, default_value_t = defaults().rows)]
+    pub rows: usize,
+    /// Azimuth columns, 256..=4096.
+    #[arg(long, default_value_t = defaults().cols)]
+    pub cols: usize,
+    /// Intra-channel threshold th_H, metres.
+    #[arg(long, default_value_t = defaults().th_h)]
+    pub th_h: f64,
+    /// Inter-channel threshold th_V, metres.
+    #[arg(long, default_value_t = defaults().th_v)]
+    pub th_v: f64,
+    /// Provisional label width B (8..=16 in hardware).
+    #[arg(long, default_value_t = defaults().label_bits)]
+    pub label_bits: u32,
+    /// Clock the constraints ask for, MHz.
+    #[arg(long, default_value_t = defaults().clock_mhz)]
+    pub clock_mhz: f64,
+    /// Labels per output beat: 1, 2 or 4.
+    #[arg(long, default_value_t = defaults().labels_per_beat)]
+    pub labels_per_beat: u32,
+}
+
+impl HwArgs {
+    /// The parameters as given, not yet validated.
+    pub fn unchecked(&self) -> FccParams {
+        FccParams {
+            rows: self.rows,
+            cols: self.cols,
+            fsize: self.fsize,
+            th_h: self.th_h,
+            th_v: self.th_v,
+            label_bits: self.label_bits,
+            clock_mhz: self.clock_mhz,
+            labels_per_beat: self.labels_per_beat,
+        }
+    }
+
+    /// The parameters, validated for the RTL generator.
+    pub fn params(&self) -> anyhow::Result<FccParams> {
+        let p = self.unchecked();
+        p.validate_for_hardware()
+            .context("these parameters cannot be generated in hardware")?;
+        Ok(p)
+    }
+
+    /// The flags that differ from the defaults, as ` --name value` pairs
+    /// (K excluded), to name a command in generated reports.
+    pub fn changed_flags(&self) -> String {
+        let (d, p) = (defaults(), self.unchecked());
+        let pairs = [
+            ("rows", p.rows.to_string(), d.rows.to_string()),
+            ("cols", p.cols.to_string(), d.cols.to_string()),
+            ("th-h", p.th_h.to_string(), d.th_h.to_string()),
+            ("th-v", p.th_v.to_string(), d.th_v.to_string()),
+            (
+                "label-bits",
+                p.label_bits.to_string(),
+                d.label_bits.to_string(),
+            ),
+            (
+                "clock-mhz",
+                p.clock_mhz.to_string(),
+                d.clock_mhz.to_string(),
+            ),
+            (
+                "labels-per-beat",
+                p.labels_per_beat.to_string(),
+                d.labels_per_beat.to_string(),
+            ),
+        ];
+        pairs
+            .iter()
+            .filter(|(_, v, d)| v != d)
+            .map(|(n, v, _)| format!(" --{n} {v}"))
+            .collect()
     }
 }

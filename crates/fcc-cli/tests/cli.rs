@@ -316,3 +316,44 @@ fn eval_prints_the_quality_table() {
         "{out}"
     );
 }
+
+#[test]
+fn gen_writes_the_rtl_and_rejects_what_hardware_cannot_do() {
+    let d = tmpdir("gen");
+    let (rtl, xdc, tcl) = (d.join("rtl"), d.join("xdc"), d.join("tcl"));
+    let o = fcc(&[
+        "gen",
+        "--fsize",
+        "3",
+        "--rows",
+        "16",
+        "--cols",
+        "256",
+        "--clock-mhz",
+        "203.6",
+        "--no-lint",
+        "--out",
+        s(&rtl),
+        "--constraints",
+        s(&xdc),
+        "--scripts",
+        s(&tcl),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v = std::fs::read_to_string(rtl.join("fcc_top.v")).unwrap();
+    assert!(
+        v.contains("fsize=3") && v.contains("module fcc_top("),
+        "header and top"
+    );
+    assert!(std::fs::read_to_string(xdc.join("fcc_top.xdc"))
+        .unwrap()
+        .contains("4.912"));
+    assert!(tcl.join("fcc_build.tcl").exists());
+    let o = fcc(&["gen", "--fsize", "13", "--out", s(&rtl), "--no-lint"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("fsize = 13 is out of range: an odd number in 3 ..= 11"),
+        "{}",
+        stderr(&o)
+    );
+}
