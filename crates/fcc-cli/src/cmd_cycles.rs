@@ -13,7 +13,7 @@ use fcc_lidar::ouster::{read_capture, DecodeOptions, OusterMetadata};
 use fcc_params::FccParams;
 use fcc_scene::{generate, SceneConfig};
 use fcc_sim::{load, run_and_check, Drive, Dut};
-use fcc_synth::results::CycleInput;
+use fcc_synth::results::{CycleInput, SYNTHETIC_CORPUS};
 use std::path::{Path, PathBuf};
 
 /// The Ouster captures of the repository's test data: (capture, metadata).
@@ -129,7 +129,7 @@ pub fn collect(args: &CyclesArgs) -> anyhow::Result<Vec<CycleInput>> {
         };
         p.validate_for_hardware()?;
         eprintln!("K = {k}: {} synthetic scenes ...", scenes.len());
-        all.push(measure(&p, "synthetic", &scenes)?);
+        all.push(measure(&p, SYNTHETIC_CORPUS, &scenes)?);
         for (name, with_ground, without) in &ouster {
             let q = FccParams {
                 rows: with_ground.rows,
