@@ -18,5 +18,6 @@ constexpr uint64_t LABEL_BITS = 15u;
 constexpr uint64_t MAX_LABEL = 32767u;
 constexpr uint64_t LABELS_PER_BEAT = 4u;
 constexpr uint64_t INPUT_VALID_BIT = 48u;
-constexpr uint64_t JOIN_FIFO_DEPTH = 512u;
+constexpr uint64_t CENTRE_BUFFER_DEPTH = 512u;
+constexpr uint64_t INPUT_CREDITS = 496u;
 }  // namespace fcc

@@ -1,7 +1,14 @@
 //! `FccFifo`: a synchronous first-word-fall-through FIFO of `2^A` entries in
-//! block RAM (`AP1 = A + 1` pointer bits). `dout` shows the head whenever
-//! `empty` is low; `pop` takes it. A pushed entry becomes visible one cycle
-//! after the push (the RAM read is registered); `count` counts it at once.
+//! block RAM (`AP1 = A + 1` pointer bits), registered on both sides.
+//!
+//! Write side: `push` writes `din` (the caller makes sure there is room). Read side: `valid` and `dout` come straight from
+//! flip-flops (the RAM's fabric output register); `take` accepts the head.
+//! The RAM is read two cycles ahead, so after a `take` the next entry shows
+//! two cycles later: at most one entry every other cycle leaves the FIFO,
+//! which is as fast as its users (the join serializer and the union engine)
+//! consume. The RAM's ports are
+//! outputs too, so that side RAMs (`FccRam` of the same depth) can hold more
+//! fields of each entry and show them beside `dout`.
 
 use rust_hdl::prelude::*;
 
@@ -15,74 +22,109 @@ pub struct FccFifo<T: Synth, const A: usize, const AP1: usize> {
     // Write side.
     pub push: Signal<In, Bit>,
     pub din: Signal<In, T>,
-    pub count: Signal<Out, Bits<AP1>>,
     // Read side.
-    pub pop: Signal<In, Bit>,
+    pub valid: Signal<Out, Bit>,
     pub dout: Signal<Out, T>,
-    pub empty: Signal<Out, Bit>,
+    pub take: Signal<In, Bit>,
+    /// Entries written and not yet taken, one cycle late (registered).
+    pub level: Signal<Out, Bits<AP1>>,
+    // The RAM's ports, for side RAMs that hold more of each entry.
+    pub ram_re: Signal<Out, Bit>,
+    pub ram_raddr: Signal<Out, Bits<A>>,
+    pub ram_we: Signal<Out, Bit>,
+    pub ram_waddr: Signal<Out, Bits<A>>,
     ram: FccRam<T, A>,
     wp: DFF<Bits<AP1>>,
-    wp_d: DFF<Bits<AP1>>,
     rp: DFF<Bits<AP1>>,
-    rp_next: Signal<Local, Bits<AP1>>,
-    full: Signal<Local, Bit>,
+    tp: DFF<Bits<AP1>>,
+    level_q: DFF<Bits<AP1>>,
+    r1: DFF<Bit>,
+    ov: DFF<Bit>,
+    empty: Signal<Local, Bit>,
+    issue: Signal<Local, Bit>,
     one: Constant<Bits<AP1>>,
     zero: Constant<Bits<AP1>>,
-    full_pattern: Constant<Bits<AP1>>,
 }
 
-impl<T: Synth, const A: usize, const AP1: usize> Default for FccFifo<T, A, AP1> {
-    fn default() -> Self {
+impl<T: Synth, const A: usize, const AP1: usize> FccFifo<T, A, AP1> {
+    /// A FIFO storing the low `stored_bits` bits of each entry.
+    pub fn with_stored_bits(stored_bits: usize) -> Self {
         assert_eq!(AP1, A + 1);
         Self {
             clk: Default::default(),
             rst: Default::default(),
             push: Default::default(),
             din: Default::default(),
-            full: Default::default(),
-            count: Default::default(),
-            pop: Default::default(),
+            valid: Default::default(),
             dout: Default::default(),
-            empty: Default::default(),
-            ram: FccRam::new(1 << A),
+            take: Default::default(),
+            level: Default::default(),
+            ram_re: Default::default(),
+            ram_raddr: Default::default(),
+            ram_we: Default::default(),
+            ram_waddr: Default::default(),
+            ram: FccRam::with_stored_bits(1 << A, stored_bits),
             wp: Default::default(),
-            wp_d: Default::default(),
             rp: Default::default(),
-            rp_next: Default::default(),
+            tp: Default::default(),
+            level_q: Default::default(),
+            r1: Default::default(),
+            ov: Default::default(),
+            empty: Default::default(),
+            issue: Default::default(),
             one: kb(1),
             zero: kb(0),
-            full_pattern: kb(1 << A),
         }
+    }
+}
+
+impl<T: Synth, const A: usize, const AP1: usize> Default for FccFifo<T, A, AP1> {
+    fn default() -> Self {
+        Self::with_stored_bits(T::BITS)
     }
 }
 
 impl<T: Synth, const A: usize, const AP1: usize> Logic for FccFifo<T, A, AP1> {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clk, wp, wp_d, rp);
+        dff_setup!(self, clk, wp, rp, tp, level_q, r1, ov);
         self.ram.clk.next = self.clk.val();
-        self.empty.next = self.rp.q.val() == self.wp_d.q.val();
-        self.full.next = (self.wp.q.val() ^ self.rp.q.val()) == self.full_pattern.val();
-        self.count.next = self.wp.q.val() - self.rp.q.val();
-        self.rp_next.next = self.rp.q.val();
-        if self.pop.val() & !self.empty.val() {
-            self.rp_next.next = self.rp.q.val() + self.one.val();
+        // A word written in cycle t is in the RAM for a read issued in t+1.
+        self.empty.next = self.rp.q.val() == self.wp.q.val();
+        // At most one read in flight, and only into a free output register.
+        self.issue.next =
+            !self.empty.val() & !self.r1.q.val() & (!self.ov.q.val() | self.take.val());
+        self.ram.read_en.next = self.issue.val();
+        self.ram.read_addr.next = self.rp.q.val().get_bits::<A>(0);
+        if self.issue.val() {
+            self.rp.d.next = self.rp.q.val() + self.one.val();
         }
-        self.rp.d.next = self.rp_next.val();
-        self.ram.read_en.next = true;
-        self.ram.read_addr.next = self.rp_next.val().get_bits::<A>(0);
-        self.ram.write_en.next = self.push.val() & !self.full.val();
+        self.r1.d.next = self.issue.val();
+        self.ov.d.next = self.r1.q.val() | (self.ov.q.val() & !self.take.val());
+        self.ram.write_en.next = self.push.val();
         self.ram.write_addr.next = self.wp.q.val().get_bits::<A>(0);
         self.ram.write_data.next = self.din.val();
-        if self.push.val() & !self.full.val() {
+        if self.push.val() {
             self.wp.d.next = self.wp.q.val() + self.one.val();
         }
-        self.wp_d.d.next = self.wp.q.val();
+        if self.ov.q.val() & self.take.val() {
+            self.tp.d.next = self.tp.q.val() + self.one.val();
+        }
+        self.level_q.d.next = self.wp.q.val() - self.tp.q.val();
+        self.level.next = self.level_q.q.val();
+        self.ram_re.next = self.issue.val();
+        self.ram_raddr.next = self.rp.q.val().get_bits::<A>(0);
+        self.ram_we.next = self.push.val();
+        self.ram_waddr.next = self.wp.q.val().get_bits::<A>(0);
+        self.valid.next = self.ov.q.val();
         self.dout.next = self.ram.read_data.val();
         if self.rst.val() {
             self.wp.d.next = self.zero.val();
-            self.wp_d.d.next = self.zero.val();
             self.rp.d.next = self.zero.val();
+            self.tp.d.next = self.zero.val();
+            self.level_q.d.next = self.zero.val();
+            self.r1.d.next = false;
+            self.ov.d.next = false;
         }
     }
 }

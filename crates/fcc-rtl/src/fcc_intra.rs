@@ -8,29 +8,36 @@
 //! ring check joins the row's first and last runs when their end points are
 //! within `tH`.
 //!
-//! Timing: the pixel enters through `pix`, the squared distances take three
-//! enabled cycles, the label is decided in the fourth and `out` is registered,
-//! so a pixel appears on `out` four enabled cycles after it was on `pix`.
+//! Pipeline (no enable: bubbles travel as slots with `valid` low):
+//! * N0: the pixel against the row's previous valid point (`near`) and the
+//!   row's first valid point against its last (`ring`), both `FccSqDist`.
+//! * N7: the label decision. The next label is a 20-bit counter that keeps
+//!   counting past the last provisional label, so the decision is one add and
+//!   two multiplexers; whether a label fits is checked one stage later (labels
+//!   are allocated in order, so "raw label > 2^B - 1" is exactly "labels ran out").
+//! * N8: the range and ring comparisons; N9: the output codes; `out` is
+//!   registered, ten cycles after `pix`.
 
 use fcc_params::FccParams;
 use rust_hdl::prelude::*;
 
-use crate::fcc_sq_dist::FccSqDist;
+use crate::fcc_sq_dist::{FccSqDist, SQ_LATENCY};
 use crate::types::{kb, Lab, Pix};
+
+// The delay line below is written out for seven stages.
+const _: () = assert!(SQ_LATENCY == 7);
 
 #[derive(LogicBlock)]
 pub struct FccIntra {
     pub clk: Signal<In, Clock>,
     pub rst: Signal<In, Bit>,
-    /// Pipeline advance (the whole front end moves together).
-    pub en: Signal<In, Bit>,
     pub pix: Signal<In, Pix>,
     pub out: Signal<Out, Lab>,
-    // Status of the frame in progress.
+    // Status of the frame in progress (stable after its last pixel).
     pub provisional: Signal<Out, Bits<17>>,
     pub overflow: Signal<Out, Bit>,
     pub unlabelled: Signal<Out, Bits<20>>,
-    // Previous valid pixel of the row and the row's first valid pixel.
+    // N0: previous valid point of the row and the row's first valid point.
     prev_x: DFF<Bits<16>>,
     prev_y: DFF<Bits<16>>,
     prev_z: DFF<Bits<16>>,
@@ -40,49 +47,61 @@ pub struct FccIntra {
     first_z: DFF<Bits<16>>,
     near: FccSqDist,
     ring: FccSqDist,
-    // Delay line aligned with the distance units.
-    p1: DFF<Pix>,
-    p2: DFF<Pix>,
-    p3: DFF<Pix>,
-    fv1: DFF<Bit>,
-    fv2: DFF<Bit>,
-    fv3: DFF<Bit>,
-    hp1: DFF<Bit>,
-    hp2: DFF<Bit>,
-    hp3: DFF<Bit>,
-    // Labelling state.
-    next_label: DFF<Bits<17>>,
-    cur_label: DFF<Bits<16>>,
-    first_label: DFF<Bits<16>>,
-    row_any: DFF<Bit>,
-    count: DFF<Bits<17>>,
-    ovf: DFF<Bit>,
-    unl: DFF<Bits<20>>,
+    // Delay line N1 .. N7, aligned with the distance units.
+    pd: Vec<DFF<Pix>>,
+    fvd: Vec<DFF<Bit>>,
+    // N7: labelling state.
+    raw: DFF<Bits<20>>,
+    cur: DFF<Bits<20>>,
+    fl: DFF<Bits<20>>,
+    any: DFF<Bit>,
+    // N8 registers.
+    p8: DFF<Pix>,
+    cont8: DFF<Bit>,
+    lab8: DFF<Bits<20>>,
+    fl8: DFF<Bits<20>>,
+    cur8: DFF<Bits<20>>,
+    any8: DFF<Bit>,
+    ringle8: DFF<Bit>,
+    // N9 registers.
+    p9: DFF<Pix>,
+    cont9: DFF<Bit>,
+    lab9: DFF<Bits<16>>,
+    labok9: DFF<Bit>,
+    ring9: DFF<Bit>,
+    flok9: DFF<Bit>,
+    curok9: DFF<Bit>,
+    ne9: DFF<Bit>,
+    fl9: DFF<Bits<16>>,
+    cur9: DFF<Bits<16>>,
+    rdcol9: DFF<Bits<12>>,
     out_q: DFF<Lab>,
+    // Status.
+    unl: DFF<Bits<20>>,
+    rm1: DFF<Bits<20>>,
+    prov: DFF<Bits<17>>,
+    ovf: DFF<Bit>,
     // Combinational helpers.
     hp_eff: Signal<Local, Bit>,
     fv0: Signal<Local, Bit>,
+    p7: Signal<Local, Pix>,
     cont: Signal<Local, Bit>,
-    nl: Signal<Local, Bits<17>>,
-    cnt0: Signal<Local, Bits<17>>,
-    unl0: Signal<Local, Bits<20>>,
-    ovf0: Signal<Local, Bit>,
-    lab: Signal<Local, Bits<16>>,
-    st: Signal<Local, Bits<2>>,
-    cur_next: Signal<Local, Bits<16>>,
-    fl_eff: Signal<Local, Bits<16>>,
+    nl: Signal<Local, Bits<20>>,
+    newrun: Signal<Local, Bit>,
+    lab: Signal<Local, Bits<20>>,
+    fl_eff: Signal<Local, Bits<20>>,
+    cur_next: Signal<Local, Bits<20>>,
     any_eff: Signal<Local, Bit>,
-    ring_ok: Signal<Local, Bit>,
+    lok: Signal<Local, Bit>,
     // Constants.
-    zero12: Constant<Bits<12>>,
-    last_col: Constant<Bits<12>>,
+    pix_zero: Constant<Pix>,
     zero16: Constant<Bits<16>>,
-    zero17: Constant<Bits<17>>,
-    one17: Constant<Bits<17>>,
-    max_label: Constant<Bits<17>>,
     zero20: Constant<Bits<20>>,
     one20: Constant<Bits<20>>,
-    th_h_sq: Constant<Bits<32>>,
+    max20: Constant<Bits<20>>,
+    max17: Constant<Bits<17>>,
+    half: Constant<Bits<12>>,
+    wrap_col: Constant<Bits<12>>,
     st_empty: Constant<Bits<2>>,
     st_cont: Constant<Bits<2>>,
     st_new: Constant<Bits<2>>,
@@ -91,10 +110,10 @@ pub struct FccIntra {
 
 impl FccIntra {
     pub fn new(p: &FccParams) -> Self {
+        let th = p.th_h_sq() as u64;
         Self {
             clk: Default::default(),
             rst: Default::default(),
-            en: Default::default(),
             pix: Default::default(),
             out: Default::default(),
             provisional: Default::default(),
@@ -107,47 +126,56 @@ impl FccIntra {
             first_x: Default::default(),
             first_y: Default::default(),
             first_z: Default::default(),
-            near: Default::default(),
-            ring: Default::default(),
-            p1: Default::default(),
-            p2: Default::default(),
-            p3: Default::default(),
-            fv1: Default::default(),
-            fv2: Default::default(),
-            fv3: Default::default(),
-            hp1: Default::default(),
-            hp2: Default::default(),
-            hp3: Default::default(),
-            next_label: Default::default(),
-            cur_label: Default::default(),
-            first_label: Default::default(),
-            row_any: Default::default(),
-            count: Default::default(),
-            ovf: Default::default(),
-            unl: Default::default(),
+            near: FccSqDist::new(th, true),
+            ring: FccSqDist::new(th, true),
+            pd: (0..SQ_LATENCY).map(|_| Default::default()).collect(),
+            fvd: (0..SQ_LATENCY).map(|_| Default::default()).collect(),
+            raw: Default::default(),
+            cur: Default::default(),
+            fl: Default::default(),
+            any: Default::default(),
+            p8: Default::default(),
+            cont8: Default::default(),
+            lab8: Default::default(),
+            fl8: Default::default(),
+            cur8: Default::default(),
+            any8: Default::default(),
+            ringle8: Default::default(),
+            p9: Default::default(),
+            cont9: Default::default(),
+            lab9: Default::default(),
+            labok9: Default::default(),
+            ring9: Default::default(),
+            flok9: Default::default(),
+            curok9: Default::default(),
+            ne9: Default::default(),
+            fl9: Default::default(),
+            cur9: Default::default(),
+            rdcol9: Default::default(),
             out_q: Default::default(),
+            unl: Default::default(),
+            rm1: Default::default(),
+            prov: Default::default(),
+            ovf: Default::default(),
             hp_eff: Default::default(),
             fv0: Default::default(),
+            p7: Default::default(),
             cont: Default::default(),
             nl: Default::default(),
-            cnt0: Default::default(),
-            unl0: Default::default(),
-            ovf0: Default::default(),
+            newrun: Default::default(),
             lab: Default::default(),
-            st: Default::default(),
-            cur_next: Default::default(),
             fl_eff: Default::default(),
+            cur_next: Default::default(),
             any_eff: Default::default(),
-            ring_ok: Default::default(),
-            zero12: kb(0),
-            last_col: kb(p.cols as u64 - 1),
+            lok: Default::default(),
+            pix_zero: Constant::new(Pix::default()),
             zero16: kb(0),
-            zero17: kb(0),
-            one17: kb(1),
-            max_label: kb(u64::from(p.max_label())),
             zero20: kb(0),
             one20: kb(1),
-            th_h_sq: kb(p.th_h_sq() as u64),
+            max20: kb(u64::from(p.max_label())),
+            max17: kb(u64::from(p.max_label())),
+            half: kb(p.half() as u64),
+            wrap_col: kb((p.cols - p.half()) as u64),
             st_empty: kb(0),
             st_cont: kb(1),
             st_new: kb(2),
@@ -160,47 +188,28 @@ impl Logic for FccIntra {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self,
-            clk,
-            prev_x,
-            prev_y,
-            prev_z,
-            has_prev,
-            first_x,
-            first_y,
-            first_z,
-            p1,
-            p2,
-            p3,
-            fv1,
-            fv2,
-            fv3,
-            hp1,
-            hp2,
-            hp3,
-            next_label,
-            cur_label,
-            first_label,
-            row_any,
-            count,
-            ovf,
-            unl,
-            out_q
+            self, clk, prev_x, prev_y, prev_z, has_prev, first_x, first_y, first_z, raw, cur, fl,
+            any, p8, cont8, lab8, fl8, cur8, any8, ringle8, p9, cont9, lab9, labok9, ring9, flok9,
+            curok9, ne9, fl9, cur9, rdcol9, out_q, unl, rm1, prov, ovf
         );
-        // ---- Stage 0: the incoming pixel against the row's previous valid pixel.
-        self.hp_eff.next = (self.pix.val().col != self.zero12.val()) & self.has_prev.q.val();
+        for i in 0..7 {
+            self.pd[i].clock.next = self.clk.val();
+            self.fvd[i].clock.next = self.clk.val();
+        }
+        // ---- N0: the incoming pixel against the row's previous valid pixel.
+        self.hp_eff.next = !self.pix.val().col0 & self.has_prev.q.val();
         self.fv0.next = self.pix.val().valid & self.pix.val().ok & !self.hp_eff.val();
         self.near.clk.next = self.clk.val();
-        self.near.en.next = self.en.val();
         self.near.ax.next = self.pix.val().x;
         self.near.ay.next = self.pix.val().y;
         self.near.az.next = self.pix.val().z;
         self.near.bx.next = self.prev_x.q.val();
         self.near.by.next = self.prev_y.q.val();
         self.near.bz.next = self.prev_z.q.val();
+        self.near.en_in.next = self.pix.val().valid & self.pix.val().ok & self.hp_eff.val();
         // Ring: the row's first valid point against its last valid point.
         self.ring.clk.next = self.clk.val();
-        self.ring.en.next = self.en.val();
+        self.ring.en_in.next = true;
         self.ring.ax.next = self.first_x.q.val();
         self.ring.ay.next = self.first_y.q.val();
         self.ring.az.next = self.first_z.q.val();
@@ -217,115 +226,145 @@ impl Logic for FccIntra {
             self.ring.by.next = self.pix.val().y;
             self.ring.bz.next = self.pix.val().z;
         }
-        if self.en.val() {
-            self.p1.d.next = self.pix.val();
-            self.p2.d.next = self.p1.q.val();
-            self.p3.d.next = self.p2.q.val();
-            self.fv1.d.next = self.fv0.val();
-            self.fv2.d.next = self.fv1.q.val();
-            self.fv3.d.next = self.fv2.q.val();
-            self.hp1.d.next = self.hp_eff.val();
-            self.hp2.d.next = self.hp1.q.val();
-            self.hp3.d.next = self.hp2.q.val();
-            if self.pix.val().valid {
-                self.has_prev.d.next = self.pix.val().ok | self.hp_eff.val();
-                if self.pix.val().ok {
-                    self.prev_x.d.next = self.pix.val().x;
-                    self.prev_y.d.next = self.pix.val().y;
-                    self.prev_z.d.next = self.pix.val().z;
-                }
-                if self.fv0.val() {
-                    self.first_x.d.next = self.pix.val().x;
-                    self.first_y.d.next = self.pix.val().y;
-                    self.first_z.d.next = self.pix.val().z;
-                }
+        if self.pix.val().valid {
+            self.has_prev.d.next = self.pix.val().ok | self.hp_eff.val();
+            if self.pix.val().ok {
+                self.prev_x.d.next = self.pix.val().x;
+                self.prev_y.d.next = self.pix.val().y;
+                self.prev_z.d.next = self.pix.val().z;
+            }
+            if self.fv0.val() {
+                self.first_x.d.next = self.pix.val().x;
+                self.first_y.d.next = self.pix.val().y;
+                self.first_z.d.next = self.pix.val().z;
             }
         }
-        // ---- Stage 3: decide the label.
-        self.cont.next = self.hp3.q.val() & (self.near.d2.val() <= self.th_h_sq.val());
-        self.nl.next = self.next_label.q.val();
-        self.cnt0.next = self.count.q.val();
-        self.unl0.next = self.unl.q.val();
-        self.ovf0.next = self.ovf.q.val();
-        if self.p3.q.val().first {
-            self.nl.next = self.one17.val();
-            self.cnt0.next = self.zero17.val();
-            self.unl0.next = self.zero20.val();
-            self.ovf0.next = false;
+        // ---- N1 .. N7: delay line.
+        self.pd[0].d.next = self.pix.val();
+        self.fvd[0].d.next = self.fv0.val();
+        for i in 1..7 {
+            self.pd[i].d.next = self.pd[i - 1].q.val();
+            self.fvd[i].d.next = self.fvd[i - 1].q.val();
         }
-        self.lab.next = self.zero16.val();
-        self.st.next = self.st_empty.val();
-        self.cur_next.next = self.cur_label.q.val();
-        self.next_label.d.next = self.nl.val();
-        self.count.d.next = self.cnt0.val();
-        self.unl.d.next = self.unl0.val();
-        self.ovf.d.next = self.ovf0.val();
-        if self.p3.q.val().valid & self.p3.q.val().ok {
-            if self.cont.val() {
-                self.lab.next = self.cur_label.q.val();
-                self.st.next = self.st_cont.val();
-            } else if self.nl.val() <= self.max_label.val() {
-                self.lab.next = self.nl.val().get_bits::<16>(0);
-                self.st.next = self.st_new.val();
-                self.next_label.d.next = self.nl.val() + self.one17.val();
-                self.count.d.next = self.cnt0.val() + self.one17.val();
-            } else {
-                self.st.next = self.st_unl.val();
-                self.ovf.d.next = true;
-            }
-            if self.lab.val() == self.zero16.val() {
-                self.unl.d.next = self.unl0.val() + self.one20.val();
-            }
+        // ---- N7: decide the label (raw: may exceed the last provisional label).
+        self.p7.next = self.pd[6].q.val();
+        self.cont.next = self.near.hit.val();
+        self.nl.next = self.raw.q.val();
+        if self.p7.val().first {
+            self.nl.next = self.one20.val();
+        }
+        self.newrun.next = self.p7.val().valid & self.p7.val().ok & !self.cont.val();
+        self.lab.next = self.nl.val();
+        if self.cont.val() {
+            self.lab.next = self.cur.q.val();
+        }
+        self.cur_next.next = self.cur.q.val();
+        if self.p7.val().valid & self.p7.val().ok {
             self.cur_next.next = self.lab.val();
         }
-        self.fl_eff.next = self.first_label.q.val();
-        if self.fv3.q.val() {
+        self.fl_eff.next = self.fl.q.val();
+        if self.fvd[6].q.val() {
             self.fl_eff.next = self.lab.val();
         }
-        self.any_eff.next = ((self.p3.q.val().col != self.zero12.val()) & self.row_any.q.val())
-            | (self.p3.q.val().valid & self.p3.q.val().ok);
-        self.ring_ok.next = self.p3.q.val().valid
-            & (self.p3.q.val().col == self.last_col.val())
-            & self.any_eff.val()
-            & (self.fl_eff.val() != self.zero16.val())
-            & (self.cur_next.val() != self.zero16.val())
-            & (self.fl_eff.val() != self.cur_next.val())
-            & (self.ring.d2.val() <= self.th_h_sq.val());
-        if !(self.en.val() & self.p3.q.val().valid) {
-            self.next_label.d.next = self.next_label.q.val();
-            self.count.d.next = self.count.q.val();
-            self.unl.d.next = self.unl.q.val();
-            self.ovf.d.next = self.ovf.q.val();
+        self.any_eff.next =
+            (!self.p7.val().col0 & self.any.q.val()) | (self.p7.val().valid & self.p7.val().ok);
+        if self.p7.val().valid {
+            self.raw.d.next = self.nl.val();
+            if self.newrun.val() {
+                self.raw.d.next = self.nl.val() + self.one20.val();
+            }
+            self.cur.d.next = self.cur_next.val();
+            self.fl.d.next = self.fl_eff.val();
+            self.any.d.next = self.any_eff.val();
         }
-        if self.en.val() & self.p3.q.val().valid {
-            self.cur_label.d.next = self.cur_next.val();
-            self.first_label.d.next = self.fl_eff.val();
-            self.row_any.d.next = self.any_eff.val();
+        self.p8.d.next = self.p7.val();
+        self.cont8.d.next = self.cont.val();
+        self.lab8.d.next = self.lab.val();
+        self.fl8.d.next = self.fl_eff.val();
+        self.cur8.d.next = self.cur_next.val();
+        self.any8.d.next = self.any_eff.val();
+        self.ringle8.d.next = self.ring.hit.val();
+        // ---- N8: does each label fit, and the ring's comparisons.
+        self.p9.d.next = self.p8.q.val();
+        self.cont9.d.next = self.cont8.q.val();
+        self.lab9.d.next = self.lab8.q.val().get_bits::<16>(0);
+        self.labok9.d.next = self.lab8.q.val() <= self.max20.val();
+        self.ring9.d.next =
+            self.p8.q.val().valid & self.p8.q.val().coln & self.any8.q.val() & self.ringle8.q.val();
+        self.flok9.d.next = self.fl8.q.val() <= self.max20.val();
+        self.curok9.d.next = self.cur8.q.val() <= self.max20.val();
+        self.ne9.d.next = self.fl8.q.val() != self.cur8.q.val();
+        self.fl9.d.next = self.fl8.q.val().get_bits::<16>(0);
+        self.cur9.d.next = self.cur8.q.val().get_bits::<16>(0);
+        self.rdcol9.d.next = self.p8.q.val().col + self.half.val();
+        if self.p8.q.val().col >= self.wrap_col.val() {
+            self.rdcol9.d.next = self.p8.q.val().col - self.wrap_col.val();
         }
-        if self.en.val() {
-            self.out_q.d.next.valid = self.p3.q.val().valid;
-            self.out_q.d.next.ok = self.p3.q.val().ok;
-            self.out_q.d.next.x = self.p3.q.val().x;
-            self.out_q.d.next.y = self.p3.q.val().y;
-            self.out_q.d.next.z = self.p3.q.val().z;
-            self.out_q.d.next.label = self.lab.val();
-            self.out_q.d.next.state = self.st.val();
-            self.out_q.d.next.row = self.p3.q.val().row;
-            self.out_q.d.next.col = self.p3.q.val().col;
-            self.out_q.d.next.last = self.p3.q.val().last;
-            self.out_q.d.next.ring = self.ring_ok.val();
-            self.out_q.d.next.ring_a = self.fl_eff.val();
-            self.out_q.d.next.ring_b = self.cur_next.val();
+        // ---- N9: output codes.
+        self.lok.next = self.p9.q.val().valid & self.p9.q.val().ok & self.labok9.q.val();
+        self.out_q.d.next.valid = self.p9.q.val().valid;
+        self.out_q.d.next.lok = self.lok.val();
+        self.out_q.d.next.x = self.p9.q.val().x;
+        self.out_q.d.next.y = self.p9.q.val().y;
+        self.out_q.d.next.z = self.p9.q.val().z;
+        self.out_q.d.next.label = self.zero16.val();
+        if self.lok.val() {
+            self.out_q.d.next.label = self.lab9.q.val();
+        }
+        self.out_q.d.next.state = self.st_empty.val();
+        if self.p9.q.val().valid & self.p9.q.val().ok {
+            if self.cont9.q.val() {
+                self.out_q.d.next.state = self.st_cont.val();
+            } else if self.labok9.q.val() {
+                self.out_q.d.next.state = self.st_new.val();
+            } else {
+                self.out_q.d.next.state = self.st_unl.val();
+            }
+        }
+        self.out_q.d.next.row = self.p9.q.val().row;
+        self.out_q.d.next.col = self.p9.q.val().col;
+        self.out_q.d.next.rdcol = self.rdcol9.q.val();
+        self.out_q.d.next.last = self.p9.q.val().last;
+        self.out_q.d.next.ring =
+            self.ring9.q.val() & self.flok9.q.val() & self.curok9.q.val() & self.ne9.q.val();
+        self.out_q.d.next.ring_a = self.fl9.q.val();
+        self.out_q.d.next.ring_b = self.cur9.q.val();
+        if self.p9.q.val().valid {
+            if self.p9.q.val().first {
+                self.unl.d.next = self.zero20.val();
+            }
+            if self.p9.q.val().ok & !self.labok9.q.val() {
+                self.unl.d.next = self.unl.q.val() + self.one20.val();
+                if self.p9.q.val().first {
+                    self.unl.d.next = self.one20.val();
+                }
+            }
+        }
+        // ---- Status: labels used = min(raw - 1, 2^B - 1).
+        self.rm1.d.next = self.raw.q.val() - self.one20.val();
+        self.prov.d.next = self.rm1.q.val().get_bits::<17>(0);
+        self.ovf.d.next = false;
+        if self.rm1.q.val() > self.max20.val() {
+            self.prov.d.next = self.max17.val();
+            self.ovf.d.next = true;
         }
         if self.rst.val() {
-            self.p1.d.next.valid = false;
-            self.p2.d.next.valid = false;
-            self.p3.d.next.valid = false;
-            self.out_q.d.next.valid = false;
             self.has_prev.d.next = false;
+            self.pd[0].d.next.valid = false;
+            self.pd[1].d.next.valid = false;
+            self.pd[2].d.next.valid = false;
+            self.pd[3].d.next.valid = false;
+            self.pd[4].d.next.valid = false;
+            self.pd[5].d.next.valid = false;
+            // The whole last stage is reset, so that it stays a flip-flop
+            // (a shift-register LUT's output is slow).
+            self.pd[6].d.next = self.pix_zero.val();
+            self.p8.d.next.valid = false;
+            self.p9.d.next.valid = false;
+            self.out_q.d.next.valid = false;
         }
         self.out.next = self.out_q.q.val();
-        self.provisional.next = self.count.q.val();
+        self.provisional.next = self.prov.q.val();
         self.overflow.next = self.ovf.q.val();
         self.unlabelled.next = self.unl.q.val();
     }

@@ -1,5 +1,5 @@
-//! `FccRam`: a simple dual-port block RAM (one registered read port, one write
-//! port, one clock) whose depth is a run-time parameter.
+//! `FccRam`: a simple dual-port block RAM (one read port, one write port,
+//! one clock) whose depth is a run-time parameter.
 //!
 //! rust-hdl's own `RAM` widget always holds `2^A` words, which would waste
 //! block RAM for the frame buffer and line buffers, so this one is written as
@@ -7,6 +7,12 @@
 //! address written in the same cycle returns the old word; users that need the
 //! new word forward it themselves. Unwritten words are undefined in Verilog
 //! (0 in the rust-hdl model); every user writes before it reads.
+//!
+//! The read latency is 2 by default: the block RAM's own output register and
+//! one fabric register behind it, so nothing but a flip-flop ever hangs off a
+//! block RAM output (its clock-to-out is most of a 200 MHz cycle). The read
+//! issued with `read_en` in cycle t shows on `read_data` in cycle t+2 and holds
+//! until the next read arrives.
 
 use rust_hdl::prelude::*;
 
@@ -15,7 +21,7 @@ use crate::types::clog2;
 #[derive(LogicBlock)]
 pub struct FccRam<T: Synth, const A: usize> {
     pub clk: Signal<In, Clock>,
-    // Read port: `read_data` is registered and holds while `read_en` is low.
+    // Read port.
     pub read_en: Signal<In, Bit>,
     pub read_addr: Signal<In, Bits<A>>,
     pub read_data: Signal<Out, T>,
@@ -26,6 +32,7 @@ pub struct FccRam<T: Synth, const A: usize> {
     _depth: usize,
     _stored_bits: usize,
     _mem: Vec<T>,
+    _rd1: T,
 }
 
 impl<T: Synth, const A: usize> FccRam<T, A> {
@@ -53,6 +60,7 @@ impl<T: Synth, const A: usize> FccRam<T, A> {
             _depth: depth,
             _stored_bits: stored_bits,
             _mem: vec![T::default(); depth],
+            _rd1: T::default(),
         }
     }
 }
@@ -60,9 +68,10 @@ impl<T: Synth, const A: usize> FccRam<T, A> {
 impl<T: Synth, const A: usize> Logic for FccRam<T, A> {
     fn update(&mut self) {
         if self.clk.pos_edge() {
+            self.read_data.next = self._rd1;
             if self.read_en.val() {
                 let a = self.read_addr.val().index();
-                self.read_data.next = self._mem.get(a).copied().unwrap_or_default();
+                self._rd1 = self._mem.get(a).copied().unwrap_or_default();
             }
             if self.write_en.val() {
                 let a = self.write_addr.val().index();
@@ -97,13 +106,10 @@ impl<T: Synth, const A: usize> Logic for FccRam<T, A> {
             unused.push(format!("write_data[{}:{sw}]", tw - 1));
             (
                 format!("write_data[{}:0]", sw - 1),
-                format!("{{{}'d0, mem[{}]}}", tw - sw, idx("read_addr")),
+                format!("{{{}'d0, rd1}}", tw - sw),
             )
         } else {
-            (
-                "write_data".to_string(),
-                format!("mem[{}]", idx("read_addr")),
-            )
+            ("write_data".to_string(), "rd1".to_string())
         };
         let unused_decl = if unused.is_empty() {
             String::new()
@@ -119,16 +125,20 @@ impl<T: Synth, const A: usize> Logic for FccRam<T, A> {
         };
         Verilog::Custom(format!(
             "{unused_decl}reg [{sw_m1}:0] mem [0:{depth_m1}];\n\
+             // The block RAM's output register, then a fabric register.\n\
+             reg [{sw_m1}:0] rd1;\n\
              always @(posedge clk) begin\n\
              \x20   if (read_en) begin\n\
-             \x20       read_data <= {rdata};\n\
+             \x20       rd1 <= mem[{raddr}];\n\
              \x20   end\n\
              \x20   if (write_en) begin\n\
              \x20       mem[{waddr}] <= {wdata};\n\
              \x20   end\n\
+             \x20   read_data <= {rdata};\n\
              end\n",
             sw_m1 = sw - 1,
             depth_m1 = self._depth - 1,
+            raddr = idx("read_addr"),
             waddr = idx("write_addr"),
         ))
     }

@@ -11,24 +11,31 @@
 //! still emitted in full; the next frame needs no reset.
 //!
 //! Phases of a frame: RUN (one pixel per cycle through intra -> window ->
-//! distance tree -> sort network -> join FIFO -> union engine), DRAIN (the
+//! distance tree -> sort network -> centre buffer -> union engine), DRAIN (the
 //! last joins are merged), OUT (flatten and read-back run together). After a
 //! reset the core first initialises the merge table (INIT).
+//!
+//! Flow control: the front end (input stage to the centre buffer) never
+//! stalls. Every pixel slot taken holds a credit until the sort network either
+//! drops it (no record needed) or takes its record out of the centre buffer;
+//! `s_axis_tready` is a register that is high while fewer than `CREDITS`
+//! credits are out, so the buffer can never overflow and no enable fans out
+//! across the pipeline.
 
 use fcc_params::FccParams;
 use rust_hdl::prelude::*;
 
 use crate::fcc_dist_tree::FccDistTree;
-use crate::fcc_fifo::FccFifo;
 use crate::fcc_intra::FccIntra;
 use crate::fcc_label_update::FccLabelUpdate;
 use crate::fcc_merge_table::FccMergeTable;
-use crate::fcc_sort_net::FccSortNet;
+use crate::fcc_sort_net::{FccSortNet, CB_BITS};
 use crate::fcc_window::FccWindow;
-use crate::types::{kb, JoinEntry, Pix};
+use crate::types::{kb, Pix};
 
-/// Join FIFO: 2^JOIN_FIFO_BITS entries.
-pub const JOIN_FIFO_BITS: usize = 9;
+/// Pixel slots that may be between the input and the centre buffer's output:
+/// the buffer's size less a margin for the registered `s_axis_tready`.
+pub const CREDITS: usize = (1 << CB_BITS) - 16;
 
 #[derive(LogicBlock)]
 pub struct FccTop {
@@ -61,17 +68,24 @@ pub struct FccTop {
     window: FccWindow,
     dist_tree: FccDistTree,
     sort_net: FccSortNet,
-    join_fifo: FccFifo<JoinEntry, JOIN_FIFO_BITS, { JOIN_FIFO_BITS + 1 }>,
     merge_table: FccMergeTable,
     label_update: FccLabelUpdate,
     fsm: DFF<Bits<2>>,
+    tready_q: DFF<Bit>,
+    pad_go: DFF<Bit>,
+    slot_q: DFF<Pix>,
     row: DFF<Bits<8>>,
     col: DFF<Bits<12>>,
-    pix: DFF<Bits<20>>,
+    col0: DFF<Bit>,
+    col_last: DFF<Bit>,
+    row_last: DFF<Bit>,
+    first: DFF<Bit>,
     pad: DFF<Bit>,
     discard: DFF<Bit>,
     in_done: DFF<Bit>,
     err: DFF<Bit>,
+    credits: DFF<Bits<10>>,
+    room: DFF<Bit>,
     last_seen: DFF<Bit>,
     st_clusters: DFF<Bits<16>>,
     st_prov: DFF<Bits<16>>,
@@ -82,11 +96,14 @@ pub struct FccTop {
     st_gstall: DFF<Bits<24>>,
     done_q: DFF<Bit>,
     // Combinational.
-    en: Signal<Local, Bit>,
     accept: Signal<Local, Bit>,
     beat: Signal<Local, Bit>,
-    slot: Signal<Local, Pix>,
+    slot: Signal<Local, Bit>,
     is_last: Signal<Local, Bit>,
+    nxt_pad: Signal<Local, Bit>,
+    nxt_discard: Signal<Local, Bit>,
+    nxt_in_done: Signal<Local, Bit>,
+    nxt_run: Signal<Local, Bit>,
     drained: Signal<Local, Bit>,
     // Constants.
     f_init: Constant<Bits<2>>,
@@ -98,12 +115,12 @@ pub struct FccTop {
     one8: Constant<Bits<8>>,
     zero12: Constant<Bits<12>>,
     one12: Constant<Bits<12>>,
-    last_col: Constant<Bits<12>>,
-    zero20: Constant<Bits<20>>,
-    one20: Constant<Bits<20>>,
-    last_pix: Constant<Bits<20>>,
-    fifo_limit: Constant<Bits<{ JOIN_FIFO_BITS + 1 }>>,
-    fifo_zero: Constant<Bits<{ JOIN_FIFO_BITS + 1 }>>,
+    pen_col: Constant<Bits<12>>,
+    pen_row: Constant<Bits<8>>,
+    one10: Constant<Bits<10>>,
+    two10: Constant<Bits<10>>,
+    zero10: Constant<Bits<10>>,
+    limit: Constant<Bits<10>>,
 }
 
 impl FccTop {
@@ -134,17 +151,24 @@ impl FccTop {
             window: FccWindow::new(p),
             dist_tree: FccDistTree::new(p),
             sort_net: FccSortNet::new(p),
-            join_fifo: Default::default(),
             merge_table: FccMergeTable::new(p),
             label_update: FccLabelUpdate::new(p),
             fsm: Default::default(),
+            tready_q: Default::default(),
+            pad_go: Default::default(),
+            slot_q: Default::default(),
             row: Default::default(),
             col: Default::default(),
-            pix: Default::default(),
+            col0: Default::default(),
+            col_last: Default::default(),
+            row_last: Default::default(),
+            first: Default::default(),
             pad: Default::default(),
             discard: Default::default(),
             in_done: Default::default(),
             err: Default::default(),
+            credits: Default::default(),
+            room: Default::default(),
             last_seen: Default::default(),
             st_clusters: Default::default(),
             st_prov: Default::default(),
@@ -154,11 +178,14 @@ impl FccTop {
             st_joins: Default::default(),
             st_gstall: Default::default(),
             done_q: Default::default(),
-            en: Default::default(),
             accept: Default::default(),
             beat: Default::default(),
             slot: Default::default(),
             is_last: Default::default(),
+            nxt_pad: Default::default(),
+            nxt_discard: Default::default(),
+            nxt_in_done: Default::default(),
+            nxt_run: Default::default(),
             drained: Default::default(),
             f_init: kb(0),
             f_run: kb(1),
@@ -169,12 +196,12 @@ impl FccTop {
             one8: kb(1),
             zero12: kb(0),
             one12: kb(1),
-            last_col: kb(p.cols as u64 - 1),
-            zero20: kb(0),
-            one20: kb(1),
-            last_pix: kb(p.pixels() as u64 - 1),
-            fifo_limit: kb((1u64 << JOIN_FIFO_BITS) - 2),
-            fifo_zero: kb(0),
+            pen_col: kb(p.cols as u64 - 2),
+            pen_row: kb(p.rows as u64 - 2),
+            one10: kb(1),
+            two10: kb(2),
+            zero10: kb(0),
+            limit: kb(CREDITS as u64),
         }
     }
 }
@@ -186,13 +213,21 @@ impl Logic for FccTop {
             self,
             clk,
             fsm,
+            tready_q,
+            pad_go,
+            slot_q,
             row,
             col,
-            pix,
+            col0,
+            col_last,
+            row_last,
+            first,
             pad,
             discard,
             in_done,
             err,
+            credits,
+            room,
             last_seen,
             st_clusters,
             st_prov,
@@ -207,128 +242,88 @@ impl Logic for FccTop {
         self.window.clk.next = self.clk.val();
         self.dist_tree.clk.next = self.clk.val();
         self.sort_net.clk.next = self.clk.val();
-        self.join_fifo.clk.next = self.clk.val();
         self.merge_table.clk.next = self.clk.val();
         self.label_update.clk.next = self.clk.val();
-        // ---- Pipeline advance: the whole front end moves when the sort network can.
-        self.en.next = self.sort_net.ready.val();
         // ---- Input stage: pixel slots, padding of a short frame, dropping of a long one.
-        self.is_last.next = self.pix.q.val() == self.last_pix.val();
-        self.s_axis_tready.next = (self.fsm.q.val() == self.f_run.val())
-            & !self.in_done.q.val()
-            & !self.pad.q.val()
-            & self.en.val();
-        if self.discard.q.val() {
-            self.s_axis_tready.next = true;
-        }
-        self.accept.next = self.s_axis_tvalid.val() & self.s_axis_tready.val();
+        self.accept.next = self.s_axis_tvalid.val() & self.tready_q.q.val();
         self.beat.next = self.accept.val() & !self.discard.q.val();
-        self.slot.next.valid = self.beat.val()
-            | (self.pad.q.val()
-                & self.en.val()
-                & (self.fsm.q.val() == self.f_run.val())
-                & !self.in_done.q.val());
-        self.slot.next.ok = self.beat.val() & self.s_axis_tdata.val().get_bit(48);
-        self.slot.next.x = self.s_axis_tdata.val().get_bits::<16>(0) ^ self.sign16.val();
-        self.slot.next.y = self.s_axis_tdata.val().get_bits::<16>(16) ^ self.sign16.val();
-        self.slot.next.z = self.s_axis_tdata.val().get_bits::<16>(32) ^ self.sign16.val();
-        self.slot.next.row = self.row.q.val();
-        self.slot.next.col = self.col.q.val();
-        self.slot.next.first = self.pix.q.val() == self.zero20.val();
-        self.slot.next.last = self.is_last.val();
-        if self.slot.val().valid {
-            self.pix.d.next = self.pix.q.val() + self.one20.val();
+        self.slot.next = self.beat.val() | self.pad_go.q.val();
+        self.is_last.next = self.col_last.q.val() & self.row_last.q.val();
+        self.slot_q.d.next.valid = self.slot.val();
+        self.slot_q.d.next.ok = self.beat.val() & self.s_axis_tdata.val().get_bit(48);
+        self.slot_q.d.next.x = self.s_axis_tdata.val().get_bits::<16>(0) ^ self.sign16.val();
+        self.slot_q.d.next.y = self.s_axis_tdata.val().get_bits::<16>(16) ^ self.sign16.val();
+        self.slot_q.d.next.z = self.s_axis_tdata.val().get_bits::<16>(32) ^ self.sign16.val();
+        self.slot_q.d.next.row = self.row.q.val();
+        self.slot_q.d.next.col = self.col.q.val();
+        self.slot_q.d.next.first = self.first.q.val();
+        self.slot_q.d.next.last = self.is_last.val();
+        self.slot_q.d.next.col0 = self.col0.q.val();
+        self.slot_q.d.next.coln = self.col_last.q.val();
+        self.nxt_pad.next = self.pad.q.val();
+        self.nxt_discard.next = self.discard.q.val();
+        self.nxt_in_done.next = self.in_done.q.val();
+        if self.slot.val() {
+            self.first.d.next = false;
+            self.col0.d.next = self.col_last.q.val();
             self.col.d.next = self.col.q.val() + self.one12.val();
-            if self.col.q.val() == self.last_col.val() {
+            self.col_last.d.next = self.col.q.val() == self.pen_col.val();
+            if self.col_last.q.val() {
                 self.col.d.next = self.zero12.val();
+                self.col_last.d.next = false;
                 self.row.d.next = self.row.q.val() + self.one8.val();
+                self.row_last.d.next = self.row.q.val() == self.pen_row.val();
             }
             if self.is_last.val() {
-                self.pix.d.next = self.zero20.val();
-                self.col.d.next = self.zero12.val();
                 self.row.d.next = self.zero8.val();
-                self.in_done.d.next = true;
-                self.pad.d.next = false;
+                self.row_last.d.next = false;
+                self.first.d.next = true;
+                self.nxt_in_done.next = true;
+                self.nxt_pad.next = false;
             }
         }
         if self.beat.val() {
             if self.s_axis_tlast.val() & !self.is_last.val() {
                 self.err.d.next = true;
-                self.pad.d.next = true;
+                self.nxt_pad.next = true;
             }
             if self.is_last.val() & !self.s_axis_tlast.val() {
                 self.err.d.next = true;
-                self.discard.d.next = true;
+                self.nxt_discard.next = true;
             }
         }
-        if self.discard.q.val() & self.s_axis_tvalid.val() & self.s_axis_tlast.val() {
-            self.discard.d.next = false;
+        if self.discard.q.val() & self.accept.val() & self.s_axis_tlast.val() {
+            self.nxt_discard.next = false;
         }
-        // ---- Blocks.
-        self.intra.rst.next = self.rst.val();
-        self.intra.en.next = self.en.val();
-        self.intra.pix.next = self.slot.val();
-        self.window.rst.next = self.rst.val();
-        self.window.en.next = self.en.val();
-        self.window.inp.next.valid = self.intra.out.val().valid;
-        self.window.inp.next.ok = self.intra.out.val().ok;
-        self.window.inp.next.x = self.intra.out.val().x;
-        self.window.inp.next.y = self.intra.out.val().y;
-        self.window.inp.next.z = self.intra.out.val().z;
-        self.window.inp.next.label = self.intra.out.val().label;
-        self.window.inp.next.row = self.intra.out.val().row;
-        self.window.inp.next.col = self.intra.out.val().col;
-        self.window.inp.next.last = self.intra.out.val().last;
-        self.window.inp.next.ring = self.intra.out.val().ring;
-        self.window.inp.next.ring_a = self.intra.out.val().ring_a;
-        self.window.inp.next.ring_b = self.intra.out.val().ring_b;
-        self.dist_tree.rst.next = self.rst.val();
-        self.dist_tree.en.next = self.en.val();
-        self.dist_tree.centre_in.next = self.window.centre.val();
-        for e in 0..self.window.ent_ok.len() {
-            self.dist_tree.ent_ok[e].next = self.window.ent_ok[e].val();
-            self.dist_tree.ent_x[e].next = self.window.ent_x[e].val();
-            self.dist_tree.ent_y[e].next = self.window.ent_y[e].val();
-            self.dist_tree.ent_z[e].next = self.window.ent_z[e].val();
-            self.dist_tree.ent_label[e].next = self.window.ent_label[e].val();
-            self.sort_net.hit[e].next = self.dist_tree.hit[e].val();
-            self.sort_net.label[e].next = self.dist_tree.label[e].val();
+        // ---- Credits: one per slot, returned by the sort network.
+        self.credits.d.next = self.credits.q.val();
+        if self.slot.val() {
+            self.credits.d.next = self.credits.q.val() + self.one10.val();
+            if self.sort_net.drop.val() ^ self.sort_net.take.val() {
+                self.credits.d.next = self.credits.q.val();
+            }
+            if self.sort_net.drop.val() & self.sort_net.take.val() {
+                self.credits.d.next = self.credits.q.val() - self.one10.val();
+            }
+        } else {
+            if self.sort_net.drop.val() ^ self.sort_net.take.val() {
+                self.credits.d.next = self.credits.q.val() - self.one10.val();
+            }
+            if self.sort_net.drop.val() & self.sort_net.take.val() {
+                self.credits.d.next = self.credits.q.val() - self.two10.val();
+            }
         }
-        self.sort_net.rst.next = self.rst.val();
-        self.sort_net.clear.next = self.label_update.rb_done.val();
-        self.sort_net.centre.next = self.dist_tree.centre.val();
-        self.sort_net.fifo_ok.next = self.join_fifo.count.val() < self.fifo_limit.val();
-        self.join_fifo.rst.next = self.rst.val();
-        self.join_fifo.push.next = self.sort_net.push.val();
-        self.join_fifo.din.next = self.sort_net.entry.val();
-        self.join_fifo.pop.next = self.merge_table.pop.val();
-        self.merge_table.rst.next = self.rst.val();
-        self.merge_table.head.next = self.join_fifo.dout.val();
-        self.merge_table.empty.next = self.join_fifo.empty.val();
-        self.merge_table.provisional.next = self.intra.provisional.val();
-        self.merge_table.gear_free.next = self.label_update.gear_free.val();
-        self.merge_table.flat_start.next = false;
-        self.label_update.rst.next = self.rst.val();
-        self.label_update.en.next = self.en.val();
-        self.label_update.wr_valid.next = self.intra.out.val().valid;
-        self.label_update.wr_state.next = self.intra.out.val().state;
-        self.label_update.wr_last.next = self.intra.out.val().last;
-        self.label_update.rb_start.next = false;
-        self.label_update.fv.next = self.merge_table.fv.val();
-        self.label_update.fval.next = self.merge_table.fval.val();
-        self.label_update.m_axis_tready.next = self.m_axis_tready.val();
-        self.m_axis_tdata.next = self.label_update.m_axis_tdata.val();
-        self.m_axis_tkeep.next = self.label_update.m_axis_tkeep.val();
-        self.m_axis_tvalid.next = self.label_update.m_axis_tvalid.val();
-        self.m_axis_tlast.next = self.label_update.m_axis_tlast.val();
+        self.room.d.next = self.credits.q.val() < self.limit.val();
         // ---- Frame phases.
         if self.sort_net.last_done.val() {
             self.last_seen.d.next = true;
         }
         self.drained.next = self.last_seen.q.val()
-            & (self.join_fifo.count.val() == self.fifo_zero.val())
-            & self.merge_table.union_idle.val();
+            & self.merge_table.union_idle.val()
+            & self.sort_net.jq_empty.val();
         self.done_q.d.next = false;
+        self.merge_table.flat_start.next = false;
+        self.label_update.rb_start.next = false;
         if (self.fsm.q.val() == self.f_init.val()) & !self.merge_table.init_busy.val() {
             self.fsm.d.next = self.f_run.val();
         }
@@ -340,9 +335,11 @@ impl Logic for FccTop {
             self.label_update.rb_start.next = true;
             self.fsm.d.next = self.f_out.val();
         }
+        self.nxt_run.next = self.fsm.q.val() == self.f_run.val();
         if (self.fsm.q.val() == self.f_out.val()) & self.label_update.rb_done.val() {
             self.fsm.d.next = self.f_run.val();
-            self.in_done.d.next = false;
+            self.nxt_run.next = true;
+            self.nxt_in_done.next = false;
             self.last_seen.d.next = false;
             self.err.d.next = false;
             self.done_q.d.next = true;
@@ -354,18 +351,90 @@ impl Logic for FccTop {
             self.st_joins.d.next = self.sort_net.joins.val();
             self.st_gstall.d.next = self.label_update.gear_stalls.val();
         }
+        self.pad.d.next = self.nxt_pad.val();
+        self.discard.d.next = self.nxt_discard.val();
+        self.in_done.d.next = self.nxt_in_done.val();
+        // Next cycle's ready and padding slot, from registers and this cycle's events.
+        self.tready_q.d.next = self.nxt_discard.val()
+            | (self.nxt_run.val()
+                & !self.nxt_in_done.val()
+                & !self.nxt_pad.val()
+                & self.room.q.val());
+        self.pad_go.d.next =
+            self.nxt_pad.val() & self.nxt_run.val() & !self.nxt_in_done.val() & self.room.q.val();
         if self.rst.val() {
             self.fsm.d.next = self.f_init.val();
+            self.tready_q.d.next = false;
+            self.pad_go.d.next = false;
+            self.slot_q.d.next.valid = false;
             self.row.d.next = self.zero8.val();
             self.col.d.next = self.zero12.val();
-            self.pix.d.next = self.zero20.val();
+            self.col0.d.next = true;
+            self.col_last.d.next = false;
+            self.row_last.d.next = false;
+            self.first.d.next = true;
             self.pad.d.next = false;
             self.discard.d.next = false;
             self.in_done.d.next = false;
             self.err.d.next = false;
+            self.credits.d.next = self.zero10.val();
+            self.room.d.next = true;
             self.last_seen.d.next = false;
             self.done_q.d.next = false;
         }
+        // ---- Blocks.
+        self.intra.rst.next = self.rst.val();
+        self.intra.pix.next = self.slot_q.q.val();
+        self.window.rst.next = self.rst.val();
+        self.window.inp.next.valid = self.intra.out.val().valid;
+        self.window.inp.next.lok = self.intra.out.val().lok;
+        self.window.inp.next.x = self.intra.out.val().x;
+        self.window.inp.next.y = self.intra.out.val().y;
+        self.window.inp.next.z = self.intra.out.val().z;
+        self.window.inp.next.label = self.intra.out.val().label;
+        self.window.inp.next.row = self.intra.out.val().row;
+        self.window.inp.next.col = self.intra.out.val().col;
+        self.window.inp.next.rdcol = self.intra.out.val().rdcol;
+        self.window.inp.next.last = self.intra.out.val().last;
+        self.window.inp.next.ring = self.intra.out.val().ring;
+        self.window.inp.next.ring_a = self.intra.out.val().ring_a;
+        self.window.inp.next.ring_b = self.intra.out.val().ring_b;
+        self.window.rep_we.next = self.sort_net.rep_we.val();
+        self.window.rep_waddr.next = self.sort_net.rep_waddr.val();
+        self.window.rep_wdata.next = self.sort_net.rep_wdata.val();
+        self.dist_tree.rst.next = self.rst.val();
+        self.dist_tree.centre_in.next = self.window.centre.val();
+        for e in 0..self.window.ent_ok.len() {
+            self.dist_tree.ent_ok[e].next = self.window.ent_ok[e].val();
+            self.dist_tree.ent_x[e].next = self.window.ent_x[e].val();
+            self.dist_tree.ent_y[e].next = self.window.ent_y[e].val();
+            self.dist_tree.ent_z[e].next = self.window.ent_z[e].val();
+            self.sort_net.hit[e].next = self.dist_tree.hit[e].val();
+            self.sort_net.rep[e].next = self.window.ent_rep[e].val();
+        }
+        self.sort_net.rst.next = self.rst.val();
+        self.sort_net.clear.next = self.label_update.rb_done.val();
+        self.sort_net.centre.next = self.dist_tree.centre.val();
+        self.sort_net.jtake.next = self.merge_table.jtake.val();
+        self.merge_table.rst.next = self.rst.val();
+        self.merge_table.jv.next = self.sort_net.jv.val();
+        self.merge_table.ja.next = self.sort_net.ja.val();
+        self.merge_table.jb.next = self.sort_net.jb.val();
+        self.merge_table.jsame.next = self.sort_net.jsame.val();
+        self.merge_table.provisional.next = self.intra.provisional.val();
+        self.merge_table.gear_used.next = self.label_update.gear_used.val();
+        self.label_update.rst.next = self.rst.val();
+        self.label_update.wr_valid.next = self.intra.out.val().valid;
+        self.label_update.wr_state.next = self.intra.out.val().state;
+        self.label_update.wr_last.next = self.intra.out.val().last;
+        self.label_update.fv.next = self.merge_table.fv.val();
+        self.label_update.fval.next = self.merge_table.fval.val();
+        self.label_update.m_axis_tready.next = self.m_axis_tready.val();
+        self.m_axis_tdata.next = self.label_update.m_axis_tdata.val();
+        self.m_axis_tkeep.next = self.label_update.m_axis_tkeep.val();
+        self.m_axis_tvalid.next = self.label_update.m_axis_tvalid.val();
+        self.m_axis_tlast.next = self.label_update.m_axis_tlast.val();
+        self.s_axis_tready.next = self.tready_q.q.val();
         self.status_clusters.next = self.st_clusters.q.val();
         self.status_provisional.next = self.st_prov.q.val();
         self.status_overflow.next = self.st_ovf.q.val();
@@ -374,8 +443,7 @@ impl Logic for FccTop {
         self.status_joins.next = self.st_joins.q.val();
         self.status_gear_stalls.next = self.st_gstall.q.val();
         self.status_frame_done.next = self.done_q.q.val();
-        self.status_idle.next = (self.fsm.q.val() == self.f_run.val())
-            & !self.in_done.q.val()
-            & (self.pix.q.val() == self.zero20.val());
+        self.status_idle.next =
+            (self.fsm.q.val() == self.f_run.val()) & !self.in_done.q.val() & self.first.q.val();
     }
 }

@@ -3,7 +3,8 @@
 //! Each hardware block is a rust-hdl `LogicBlock` in a file of its own name
 //! (`fcc_intra`, `fcc_window`, `fcc_dist_tree`, `fcc_sort_net`,
 //! `fcc_merge_table`, `fcc_label_update`, `fcc_top`, plus the helpers
-//! `fcc_sq_dist`, `fcc_dist_unit`, `fcc_line_buf`, `fcc_fifo`, `fcc_ram`).
+//! `fcc_sq_dist`, `fcc_dist_unit`, `fcc_line_buf`, `fcc_fifo`, `fcc_ram`,
+//! `fcc_row_word`, `fcc_prefix_or`, `fcc_any_or`, `fcc_pick`).
 //! Sizes that vary with the configuration (K, rows, columns, label bits,
 //! thresholds, labels per beat) are read from [`FccParams`] when the blocks
 //! are built, so one binary generates every configuration.
@@ -11,6 +12,7 @@
 //! [`generate`] checks the parameters and the design, emits the Verilog and
 //! the files that travel with it; [`write_rtl`] writes them to a directory.
 
+mod fcc_any_or;
 mod fcc_dist_tree;
 mod fcc_dist_unit;
 mod fcc_fifo;
@@ -18,7 +20,10 @@ mod fcc_intra;
 mod fcc_label_update;
 mod fcc_line_buf;
 mod fcc_merge_table;
+mod fcc_pick;
+mod fcc_prefix_or;
 mod fcc_ram;
+mod fcc_row_word;
 mod fcc_sort_net;
 mod fcc_sq_dist;
 mod fcc_top;
@@ -34,7 +39,7 @@ use fcc_params::{FccParams, ParamError};
 use rust_hdl::prelude::*;
 use thiserror::Error;
 
-pub use fcc_top::{FccTop, JOIN_FIFO_BITS};
+pub use fcc_top::{FccTop, CREDITS};
 
 /// Version of this generator, written into every generated file.
 pub const GENERATOR_VERSION: &str = env!("CARGO_PKG_VERSION");
@@ -338,6 +343,7 @@ fn constants(p: &FccParams) -> Vec<(&'static str, u64)> {
         ("MAX_LABEL", u64::from(p.max_label())),
         ("LABELS_PER_BEAT", u64::from(p.labels_per_beat)),
         ("INPUT_VALID_BIT", 48),
-        ("JOIN_FIFO_DEPTH", 1u64 << JOIN_FIFO_BITS),
+        ("CENTRE_BUFFER_DEPTH", 1u64 << fcc_sort_net::CB_BITS),
+        ("INPUT_CREDITS", CREDITS as u64),
     ]
 }

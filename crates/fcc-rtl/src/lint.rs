@@ -18,11 +18,16 @@ pub fn waivers(p: &FccParams) -> String {
          // Bits 63:49 of an input beat are reserved and ignored by definition.\n\
          lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'s_axis_tdata'[63:49]*\"\n\
          // rust-hdl writes each module's logic as one combinational always block.\n\
-         // The join FIFO's block computes `empty` from its pointers and reads\n\
-         // `pop`; the union engine's block reads `empty` and drives `pop`. The\n\
-         // loop exists only at block level, not between signals (rust-hdl's\n\
-         // check_logic_loops passes); it costs Verilator some speed, nothing else.\n\
-         lint_off -rule UNOPTFLAT -file \"*fcc_top.v\" -match \"*join_fifo$empty*\"\n",
+         // The sort network's block feeds the prefix network `kp` (the kept\n\
+         // positions of the head record) and reads its outputs. The loop exists\n\
+         // only at block level, not between signals (rust-hdl's check_logic_loops\n\
+         // passes); it costs Verilator some speed, nothing else.\n\
+         lint_off -rule UNOPTFLAT -file \"*fcc_top.v\" -match \"*sort_net.kp.*\"\n\
+         // FccFifo offers its fill level and its RAM's ports (for side RAMs) to\n\
+         // every user. The centre buffer needs no level (the input credits bound\n\
+         // it) and the join queue has no side RAMs.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'cb$level'*\"\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'jq$ram_*\"\n",
     );
     s
 }

@@ -24,13 +24,18 @@ pub struct Pix {
     pub first: Bit,
     /// Last pixel of the frame.
     pub last: Bit,
+    /// First column of a row.
+    pub col0: Bit,
+    /// Last column of a row.
+    pub coln: Bit,
 }
 
-/// A labelled pixel: the output of `fcc_intra`, the centre of `fcc_window`.
+/// A labelled pixel: the output of `fcc_intra`.
 #[derive(Clone, Copy, Debug, PartialEq, Default, LogicStruct)]
 pub struct Lab {
     pub valid: Bit,
-    pub ok: Bit,
+    /// The pixel holds a point with a provisional label (it can join).
+    pub lok: Bit,
     pub x: Bits<16>,
     pub y: Bits<16>,
     pub z: Bits<16>,
@@ -41,6 +46,8 @@ pub struct Lab {
     pub state: Bits<2>,
     pub row: Bits<8>,
     pub col: Bits<12>,
+    /// Column `(col + h) mod C` that the window reads for this pixel.
+    pub rdcol: Bits<12>,
     pub last: Bit,
     /// Ring join of this row (set on the row's last pixel only).
     pub ring: Bit,
@@ -52,13 +59,14 @@ pub struct Lab {
 #[derive(Clone, Copy, Debug, PartialEq, Default, LogicStruct)]
 pub struct WinPix {
     pub valid: Bit,
-    pub ok: Bit,
+    pub lok: Bit,
     pub x: Bits<16>,
     pub y: Bits<16>,
     pub z: Bits<16>,
     pub label: Bits<16>,
     pub row: Bits<8>,
     pub col: Bits<12>,
+    pub rdcol: Bits<12>,
     pub last: Bit,
     pub ring: Bit,
     pub ring_a: Bits<16>,
@@ -72,8 +80,9 @@ pub struct Centre {
     pub y: Bits<16>,
     pub z: Bits<16>,
     pub valid: Bit,
-    pub ok: Bit,
+    pub lok: Bit,
     pub label: Bits<16>,
+    pub col: Bits<12>,
     pub last: Bit,
     pub ring: Bit,
     pub ring_a: Bits<16>,
@@ -84,22 +93,24 @@ pub struct Centre {
 #[derive(Clone, Copy, Debug, PartialEq, Default, LogicStruct)]
 pub struct Ctr {
     pub valid: Bit,
-    pub ok: Bit,
+    /// The centre is a point with a provisional label (it can join).
+    pub lok: Bit,
     pub label: Bits<16>,
+    pub col: Bits<12>,
     pub last: Bit,
     pub ring: Bit,
     pub ring_a: Bits<16>,
     pub ring_b: Bits<16>,
 }
 
-/// One line-buffer word: a point of a row above and its provisional label.
+/// One line-buffer word: a point of a row above, and whether it has a
+/// provisional label (only such points can join).
 #[derive(Clone, Copy, Debug, PartialEq, Default, LogicStruct)]
 pub struct LbEntry {
-    pub ok: Bit,
+    pub lok: Bit,
     pub x: Bits<16>,
     pub y: Bits<16>,
     pub z: Bits<16>,
-    pub label: Bits<16>,
 }
 
 /// Four 2-bit frame-buffer codes (pixels 4a .. 4a+3).
@@ -111,24 +122,28 @@ pub struct FbWord {
     pub s3: Bits<2>,
 }
 
-/// Joins of one centre label `c` with up to four labels `n0..n3` (valid
-/// slots are contiguous from `n0`). A ring join is an entry with `c = first`
-/// and `n0 = last`.
+/// The largest K the generator supports, and so the most positions of a window row.
+pub const MAX_K: usize = 11;
+
+/// The centre part of a centre-buffer record: the centre's join side, its
+/// ring join and the frame's end (the window rows travel in `FccRowPack` words).
 #[derive(Clone, Copy, Debug, PartialEq, Default, LogicStruct)]
-pub struct JoinEntry {
+pub struct CtrRec {
     pub c: Bits<16>,
-    pub n0: Bits<16>,
-    pub n1: Bits<16>,
-    pub n2: Bits<16>,
-    pub n3: Bits<16>,
-    pub v0: Bit,
-    pub v1: Bit,
-    pub v2: Bit,
-    pub v3: Bit,
+    pub ring_a: Bits<16>,
+    pub ring_b: Bits<16>,
+    pub ring: Bit,
+    pub last: Bit,
 }
 
-/// Joins carried by one FIFO entry.
-pub const JOIN_SLOTS: usize = 4;
+/// A join for the union engine: connect `a` and `b`; `same`: `a` is the
+/// previous join's `a`.
+#[derive(Clone, Copy, Debug, PartialEq, Default, LogicStruct)]
+pub struct JoinRec {
+    pub a: Bits<16>,
+    pub b: Bits<16>,
+    pub same: Bit,
+}
 
 /// A typed constant of `N` bits.
 pub fn kb<const N: usize>(v: u64) -> Constant<Bits<N>> {
@@ -142,4 +157,10 @@ pub fn clog2(n: usize) -> usize {
         w += 1;
     }
     w
+}
+
+/// A `Vec` of `n` default values (ports, registers and signals of a block
+/// whose count is a run-time parameter).
+pub fn vec_of<T: Default>(n: usize) -> Vec<T> {
+    (0..n).map(|_| T::default()).collect()
 }
