@@ -6243,6 +6243,8 @@ module fcc_label_update(clk,rst,wr_valid,wr_state,wr_last,rb_start,fv,fval,gear_
     localparam  g_of$5 = 4'h5;
     localparam  g_of$6 = 4'h6;
     localparam  g_of$7 = 4'h7;
+    localparam  g_of$8 = 4'h8;
+    localparam  g_of$9 = 4'h9;
     localparam  k_of$0 = 3'b10;
     localparam  k_of$1 = 3'b11;
     localparam  k_of$2 = 3'b100;
@@ -6441,9 +6443,15 @@ module fcc_label_update(clk,rst,wr_valid,wr_state,wr_last,rb_start,fv,fval,gear_
     reg  ghv;
     reg  pop;
     reg  pop2;
-    reg  [2:0] left;
-    reg  [3:0] npop;
-    reg  [3:0] tail;
+    reg  pop1;
+    reg  lz;
+    reg  l1;
+    reg  l2;
+    reg  lge2;
+    reg  gge2;
+    reg  [3:0] gn_p1;
+    reg  [3:0] gn_m1;
+    reg  [3:0] gn_m2;
     reg  fire;
     reg  ofree;
     reg  [15:0] lab$0;
@@ -6823,10 +6831,65 @@ module fcc_label_update(clk,rst,wr_valid,wr_state,wr_last,rb_start,fv,fval,gear_
         ofree = ~o_valid$q | m_axis_tready;
         hv = skn$q != zero3;
         ghv = gn$q != zero4;
-        left = sk$0$q[17:15] - u$q;
-        pop2 = hv & (left >= two3) & (gn$q >= two4);
-        pop = hv & (left != zero3) & ghv;
-        fire = hv & ofree & ((left == zero3) | (pop & ~pop2 & (left == one3)) | (pop2 & (left == two3)));
+        lz = sk$0$q[17:15] == u$q;
+        l1 = 1'b0;
+        l2 = 1'b0;
+        lge2 = 1'b0;
+        if (u$q == n_of$0) begin
+            if (sk$0$q[17:15] == n_of$1) begin
+                l1 = 1'b1;
+            end
+        end
+        if (u$q == n_of$1) begin
+            if (sk$0$q[17:15] == n_of$2) begin
+                l1 = 1'b1;
+            end
+        end
+        if (u$q == n_of$2) begin
+            if (sk$0$q[17:15] == n_of$3) begin
+                l1 = 1'b1;
+            end
+        end
+        if (u$q == n_of$3) begin
+            if (sk$0$q[17:15] == n_of$4) begin
+                l1 = 1'b1;
+            end
+        end
+        if (u$q == n_of$0) begin
+            if (sk$0$q[17:15] == n_of$2) begin
+                l2 = 1'b1;
+                lge2 = 1'b1;
+            end
+        end
+        if (u$q == n_of$1) begin
+            if (sk$0$q[17:15] == n_of$3) begin
+                l2 = 1'b1;
+                lge2 = 1'b1;
+            end
+        end
+        if (u$q == n_of$2) begin
+            if (sk$0$q[17:15] == n_of$4) begin
+                l2 = 1'b1;
+                lge2 = 1'b1;
+            end
+        end
+        if (u$q == n_of$0) begin
+            if (sk$0$q[17:15] == n_of$3) begin
+                lge2 = 1'b1;
+            end
+        end
+        if (u$q == n_of$1) begin
+            if (sk$0$q[17:15] == n_of$4) begin
+                lge2 = 1'b1;
+            end
+        end
+        if ((u$q == n_of$0) & (sk$0$q[17:15] == n_of$4)) begin
+            lge2 = 1'b1;
+        end
+        gge2 = (gn$q != zero4) & (gn$q != one4);
+        pop2 = hv & lge2 & gge2;
+        pop = hv & ~lz & ghv;
+        fire = hv & ofree & (lz | (l1 & ghv) | (l2 & gge2));
         nsrc$0 = sk$0$q[2:0];
         nsrc$1 = sk$0$q[5:3];
         nsrc$2 = sk$0$q[8:6];
@@ -7062,13 +7125,6 @@ module fcc_label_update(clk,rst,wr_valid,wr_state,wr_last,rb_start,fv,fval,gear_
         if (hv & ~fire & ofree) begin
             gstall$d = gstall$q + one24;
         end
-        npop = zero4;
-        if (pop) begin
-            npop = one4;
-        end
-        if (pop2) begin
-            npop = two4;
-        end
         if (pop) begin
             g$0$d = g$1$q;
         end
@@ -7108,34 +7164,52 @@ module fcc_label_update(clk,rst,wr_valid,wr_state,wr_last,rb_start,fv,fval,gear_
         if (pop2) begin
             g$5$d = g$7$q;
         end
-        tail = gn$q - npop;
-        if (fv & (tail == g_of$0)) begin
+        pop1 = pop & ~pop2;
+        if (fv & ((~pop & (gn$q == g_of$0)) | (pop1 & (gn$q == g_of$1)) | (pop2 & (gn$q == g_of$2)))) begin
             g$0$d = fval;
         end
-        if (fv & (tail == g_of$1)) begin
+        if (fv & ((~pop & (gn$q == g_of$1)) | (pop1 & (gn$q == g_of$2)) | (pop2 & (gn$q == g_of$3)))) begin
             g$1$d = fval;
         end
-        if (fv & (tail == g_of$2)) begin
+        if (fv & ((~pop & (gn$q == g_of$2)) | (pop1 & (gn$q == g_of$3)) | (pop2 & (gn$q == g_of$4)))) begin
             g$2$d = fval;
         end
-        if (fv & (tail == g_of$3)) begin
+        if (fv & ((~pop & (gn$q == g_of$3)) | (pop1 & (gn$q == g_of$4)) | (pop2 & (gn$q == g_of$5)))) begin
             g$3$d = fval;
         end
-        if (fv & (tail == g_of$4)) begin
+        if (fv & ((~pop & (gn$q == g_of$4)) | (pop1 & (gn$q == g_of$5)) | (pop2 & (gn$q == g_of$6)))) begin
             g$4$d = fval;
         end
-        if (fv & (tail == g_of$5)) begin
+        if (fv & ((~pop & (gn$q == g_of$5)) | (pop1 & (gn$q == g_of$6)) | (pop2 & (gn$q == g_of$7)))) begin
             g$5$d = fval;
         end
-        if (fv & (tail == g_of$6)) begin
+        if (fv & ((~pop & (gn$q == g_of$6)) | (pop1 & (gn$q == g_of$7)) | (pop2 & (gn$q == g_of$8)))) begin
             g$6$d = fval;
         end
-        if (fv & (tail == g_of$7)) begin
+        if (fv & ((~pop & (gn$q == g_of$7)) | (pop1 & (gn$q == g_of$8)) | (pop2 & (gn$q == g_of$9)))) begin
             g$7$d = fval;
         end
-        gn$d = tail;
+        gn_p1 = gn$q + one4;
+        gn_m1 = gn$q - one4;
+        gn_m2 = gn$q - two4;
         if (fv) begin
-            gn$d = tail + one4;
+            gn$d = gn_p1;
+        end
+        if (pop1) begin
+            if (fv) begin
+                gn$d = gn$q;
+            end
+            else begin
+                gn$d = gn_m1;
+            end
+        end
+        if (pop2) begin
+            if (fv) begin
+                gn$d = gn_m1;
+            end
+            else begin
+                gn$d = gn_m2;
+            end
         end
         gear_used = gn$q;
         issue = active$q & ((outst$q < four3) | fire);

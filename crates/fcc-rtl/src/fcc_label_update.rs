@@ -125,9 +125,17 @@ pub struct FccLabelUpdate {
     ghv: Signal<Local, Bit>,
     pop: Signal<Local, Bit>,
     pop2: Signal<Local, Bit>,
-    left: Signal<Local, Bits<3>>,
-    npop: Signal<Local, Bits<4>>,
-    tail: Signal<Local, Bits<4>>,
+    pop1: Signal<Local, Bit>,
+    /// The head beat needs 0, 1, 2, at least 2 more labels.
+    lz: Signal<Local, Bit>,
+    l1: Signal<Local, Bit>,
+    l2: Signal<Local, Bit>,
+    lge2: Signal<Local, Bit>,
+    /// At least two labels wait in the gearbox.
+    gge2: Signal<Local, Bit>,
+    gn_p1: Signal<Local, Bits<4>>,
+    gn_m1: Signal<Local, Bits<4>>,
+    gn_m2: Signal<Local, Bits<4>>,
     fire: Signal<Local, Bit>,
     ofree: Signal<Local, Bit>,
     lab: Vec<Signal<Local, Bits<16>>>,
@@ -232,9 +240,15 @@ impl FccLabelUpdate {
             ghv: Default::default(),
             pop: Default::default(),
             pop2: Default::default(),
-            left: Default::default(),
-            npop: Default::default(),
-            tail: Default::default(),
+            pop1: Default::default(),
+            lz: Default::default(),
+            l1: Default::default(),
+            l2: Default::default(),
+            lge2: Default::default(),
+            gge2: Default::default(),
+            gn_p1: Default::default(),
+            gn_m1: Default::default(),
+            gn_m2: Default::default(),
             fire: Default::default(),
             ofree: Default::default(),
             lab: vec_of(4),
@@ -244,7 +258,7 @@ impl FccLabelUpdate {
             slot_idx: (0..l).map(|i| kb(i as u64)).collect(),
             keep_n: (0..=4).map(|n| kb((1u64 << (2 * n)) - 1)).collect(),
             n_of: (0..=4).map(|n| kb(n as u64)).collect(),
-            g_of: (0..GEAR).map(|n| kb(n as u64)).collect(),
+            g_of: (0..GEAR + 2).map(|n| kb(n as u64)).collect(),
             k_of: (0..4).map(|k| kb(2 + k as u64)).collect(),
             beats_m1: kb((p.pixels().div_ceil(l) - 1) as u64),
             last_n: kb((p.pixels() - (p.pixels().div_ceil(l) - 1) * l) as u64),
@@ -334,17 +348,46 @@ impl Logic for FccLabelUpdate {
         self.ofree.next = !self.o_valid.q.val() | self.m_axis_tready.val();
         self.hv.next = self.skn.q.val() != self.zero3.val();
         self.ghv.next = self.gn.q.val() != self.zero4.val();
-        // Up to two new labels a cycle from the gearbox's head.
-        self.left.next = self.sk[0].q.val().need - self.u.q.val();
-        self.pop2.next = self.hv.val()
-            & (self.left.val() >= self.two3.val())
-            & (self.gn.q.val() >= self.two4.val());
-        self.pop.next = self.hv.val() & (self.left.val() != self.zero3.val()) & self.ghv.val();
+        // Up to two new labels a cycle from the gearbox's head. How many the
+        // head beat still needs (`need - u`) is decoded by equalities on the
+        // two 3-bit registers, one LUT level, rather than by a subtraction.
+        self.lz.next = self.sk[0].q.val().need == self.u.q.val();
+        self.l1.next = false;
+        self.l2.next = false;
+        self.lge2.next = false;
+        for k in 0..4 {
+            if self.u.q.val() == self.n_of[k].val() {
+                if self.sk[0].q.val().need == self.n_of[k + 1].val() {
+                    self.l1.next = true;
+                }
+            }
+        }
+        for k in 0..3 {
+            if self.u.q.val() == self.n_of[k].val() {
+                if self.sk[0].q.val().need == self.n_of[k + 2].val() {
+                    self.l2.next = true;
+                    self.lge2.next = true;
+                }
+            }
+        }
+        for k in 0..2 {
+            if self.u.q.val() == self.n_of[k].val() {
+                if self.sk[0].q.val().need == self.n_of[k + 3].val() {
+                    self.lge2.next = true;
+                }
+            }
+        }
+        if (self.u.q.val() == self.n_of[0].val())
+            & (self.sk[0].q.val().need == self.n_of[4].val())
+        {
+            self.lge2.next = true;
+        }
+        self.gge2.next = (self.gn.q.val() != self.zero4.val()) & (self.gn.q.val() != self.one4.val());
+        self.pop2.next = self.hv.val() & self.lge2.val() & self.gge2.val();
+        self.pop.next = self.hv.val() & !self.lz.val() & self.ghv.val();
         self.fire.next = self.hv.val()
             & self.ofree.val()
-            & ((self.left.val() == self.zero3.val())
-                | (self.pop.val() & !self.pop2.val() & (self.left.val() == self.one3.val()))
-                | (self.pop2.val() & (self.left.val() == self.two3.val())));
+            & (self.lz.val() | (self.l1.val() & self.ghv.val()) | (self.l2.val() & self.gge2.val()));
         // Slot sources of the head beat, then the carried run. A source equal
         // to a label being popped now (k == u, u + 1) reads the gearbox's head.
         self.nsrc[0].next = self.sk[0].q.val().s0;
@@ -426,14 +469,9 @@ impl Logic for FccLabelUpdate {
         if self.hv.val() & !self.fire.val() & self.ofree.val() {
             self.gstall.d.next = self.gstall.q.val() + self.one24.val();
         }
-        // ---- Gearbox: append the flattened label, drop the popped ones.
-        self.npop.next = self.zero4.val();
-        if self.pop.val() {
-            self.npop.next = self.one4.val();
-        }
-        if self.pop2.val() {
-            self.npop.next = self.two4.val();
-        }
+        // ---- Gearbox: append the flattened label, drop the popped ones. The
+        // new tail (`gn - popped`) and count are chosen among values computed
+        // from `gn` alone, so no adder follows the pop decision.
         for i in 0..7 {
             if self.pop.val() {
                 self.g[i].d.next = self.g[i + 1].q.val();
@@ -444,15 +482,35 @@ impl Logic for FccLabelUpdate {
                 self.g[i].d.next = self.g[i + 2].q.val();
             }
         }
-        self.tail.next = self.gn.q.val() - self.npop.val();
+        self.pop1.next = self.pop.val() & !self.pop2.val();
         for i in 0..8 {
-            if self.fv.val() & (self.tail.val() == self.g_of[i].val()) {
+            if self.fv.val()
+                & ((!self.pop.val() & (self.gn.q.val() == self.g_of[i].val()))
+                    | (self.pop1.val() & (self.gn.q.val() == self.g_of[i + 1].val()))
+                    | (self.pop2.val() & (self.gn.q.val() == self.g_of[i + 2].val())))
+            {
                 self.g[i].d.next = self.fval.val();
             }
         }
-        self.gn.d.next = self.tail.val();
+        self.gn_p1.next = self.gn.q.val() + self.one4.val();
+        self.gn_m1.next = self.gn.q.val() - self.one4.val();
+        self.gn_m2.next = self.gn.q.val() - self.two4.val();
         if self.fv.val() {
-            self.gn.d.next = self.tail.val() + self.one4.val();
+            self.gn.d.next = self.gn_p1.val();
+        }
+        if self.pop1.val() {
+            if self.fv.val() {
+                self.gn.d.next = self.gn.q.val();
+            } else {
+                self.gn.d.next = self.gn_m1.val();
+            }
+        }
+        if self.pop2.val() {
+            if self.fv.val() {
+                self.gn.d.next = self.gn_m1.val();
+            } else {
+                self.gn.d.next = self.gn_m2.val();
+            }
         }
         self.gear_used.next = self.gn.q.val();
         // ---- R0: issue the frame-buffer read of the next beat.
