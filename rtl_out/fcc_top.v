@@ -38231,6 +38231,8 @@ module fcc_window(clk,rst,inp,centre,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_ok$
     localparam  row_lo$0 = 8'h3;
     localparam  row_lo$1 = 8'h2;
     localparam  row_lo$2 = 8'h1;
+    localparam  zero8 = 8'h0;
+    localparam  zero12 = 12'h0;
 
     // Stub signals
     reg  lbs$0$clk;
@@ -39993,6 +39995,8 @@ module fcc_window(clk,rst,inp,centre,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_ok$
             w1$d[0:0] = 1'b0;
             w2$d[0:0] = 1'b0;
             w3$d[0:0] = 1'b0;
+            w2$d[73:66] = zero8;
+            w2$d[85:74] = zero12;
         end
         rv_valid$0$clock = clk;
         rv_col$0$clock = clk;

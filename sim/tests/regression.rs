@@ -292,28 +292,10 @@ fn bad_parameters_are_reported_not_panicked() {
 /// load the core sees. K = 7, default thresholds.
 #[test]
 fn real_ouster_frames_at_their_own_size() {
-    use fcc_lidar::ouster::{read_capture, DecodeOptions, OusterMetadata};
+    use fcc_lidar::ouster::{read_capture, DecodeOptions, OusterMetadata, SAMPLE_CAPTURES};
     let data =
         std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../crates/fcc-lidar/tests/data");
-    let captures = [
-        (
-            "OS-0-128-U1_v2.3.0_1024x10.pcap",
-            "OS-0-128-U1_v2.3.0_1024x10.json",
-        ),
-        (
-            "OS-1-32-G_v2.1.1_1024x10.pcap",
-            "OS-1-32-G_v2.1.1_1024x10.json",
-        ),
-        (
-            "OS-1-64_1024x10_fw20.pcap",
-            "OS-1-64_sensor_config_reduced.json",
-        ),
-        (
-            "OS-2-128-U1_v2.3.0_1024x10.pcap",
-            "OS-2-128-U1_v2.3.0_1024x10.json",
-        ),
-    ];
-    for (pcap, json) in captures {
+    for (pcap, json) in SAMPLE_CAPTURES {
         let meta = OusterMetadata::from_file(&data.join(json)).unwrap();
         let capture = read_capture(&data.join(pcap), &meta, DecodeOptions::default()).unwrap();
         assert!(!capture.frames.is_empty(), "{pcap}: no frame");

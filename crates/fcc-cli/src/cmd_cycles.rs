@@ -9,32 +9,12 @@ use anyhow::Context;
 use clap::Args;
 use fcc_golden::Frame;
 use fcc_lidar::ground::{detect_ground, GroundParams};
-use fcc_lidar::ouster::{read_capture, DecodeOptions, OusterMetadata};
+use fcc_lidar::ouster::{read_capture, DecodeOptions, OusterMetadata, SAMPLE_CAPTURES};
 use fcc_params::FccParams;
 use fcc_scene::{generate, SceneConfig};
 use fcc_sim::{load, run_and_check, Drive, Dut};
 use fcc_synth::results::{CycleInput, SYNTHETIC_CORPUS};
 use std::path::{Path, PathBuf};
-
-/// The Ouster captures of the repository's test data: (capture, metadata).
-const OUSTER: [(&str, &str); 4] = [
-    (
-        "OS-0-128-U1_v2.3.0_1024x10.pcap",
-        "OS-0-128-U1_v2.3.0_1024x10.json",
-    ),
-    (
-        "OS-1-32-G_v2.1.1_1024x10.pcap",
-        "OS-1-32-G_v2.1.1_1024x10.json",
-    ),
-    (
-        "OS-1-64_1024x10_fw20.pcap",
-        "OS-1-64_sensor_config_reduced.json",
-    ),
-    (
-        "OS-2-128-U1_v2.3.0_1024x10.pcap",
-        "OS-2-128-U1_v2.3.0_1024x10.json",
-    ),
-];
 
 #[derive(Args, Debug, Clone)]
 pub struct CyclesArgs {
@@ -83,7 +63,7 @@ fn measure(p: &FccParams, corpus: &str, frames: &[Frame]) -> anyhow::Result<Cycl
 /// The Ouster frames of `dir`, each with its ground left in and removed.
 fn ouster_frames(dir: &Path) -> anyhow::Result<Vec<(String, Frame, Frame)>> {
     let mut out = Vec::new();
-    for (pcap, json) in OUSTER {
+    for (pcap, json) in SAMPLE_CAPTURES {
         let meta = OusterMetadata::from_file(&dir.join(json))?;
         let cap = read_capture(&dir.join(pcap), &meta, DecodeOptions::default())?;
         for fr in cap.frames {

@@ -134,6 +134,28 @@ pub enum CoordFrame {
     Lidar,
 }
 
+/// The Ouster sample captures shipped in this crate's `tests/data`
+/// (BSD-3-Clause, licence beside them), as (capture, metadata) file names:
+/// 128 beams (OS-0, OS-2), 64 and 32 beams, 1024 columns each.
+pub const SAMPLE_CAPTURES: [(&str, &str); 4] = [
+    (
+        "OS-0-128-U1_v2.3.0_1024x10.pcap",
+        "OS-0-128-U1_v2.3.0_1024x10.json",
+    ),
+    (
+        "OS-1-32-G_v2.1.1_1024x10.pcap",
+        "OS-1-32-G_v2.1.1_1024x10.json",
+    ),
+    (
+        "OS-1-64_1024x10_fw20.pcap",
+        "OS-1-64_sensor_config_reduced.json",
+    ),
+    (
+        "OS-2-128-U1_v2.3.0_1024x10.pcap",
+        "OS-2-128-U1_v2.3.0_1024x10.json",
+    ),
+];
+
 /// Everything the decoder needs from the sensor's JSON metadata.
 #[derive(Debug, Clone, PartialEq)]
 pub struct OusterMetadata {

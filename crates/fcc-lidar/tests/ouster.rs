@@ -3,7 +3,7 @@
 
 use fcc_lidar::ouster::{
     read_capture, shifts_from_azimuth, CoordFrame, DecodeOptions, OusterMetadata, OusterReader,
-    Profile,
+    Profile, SAMPLE_CAPTURES,
 };
 use fcc_lidar::pcap::{PcapReader, PcapWriter};
 use std::path::{Path, PathBuf};
@@ -66,6 +66,11 @@ fn write_capture(path: &Path, packets: &[(u16, Vec<u8>)], mtu: Option<usize>) {
 
 #[test]
 fn every_sample_capture_gives_one_sensible_frame() {
+    let listed: Vec<(&str, &str)> = CAPTURES.iter().map(|c| (c.0, c.1)).collect();
+    assert_eq!(
+        listed, SAMPLE_CAPTURES,
+        "the public sample list and this test differ"
+    );
     for (pcap, json, profile, beams) in CAPTURES {
         let m = meta(json);
         assert_eq!(m.profile, profile, "{pcap}");

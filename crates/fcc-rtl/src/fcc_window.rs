@@ -93,6 +93,8 @@ pub struct FccWindow {
     col_hi: Vec<Constant<Bits<12>>>,
     /// Per window row r: lowest centre row with a row h-r above it.
     row_lo: Vec<Constant<Bits<8>>>,
+    zero8: Constant<Bits<8>>,
+    zero12: Constant<Bits<12>>,
     _k: usize,
     _h: usize,
 }
@@ -139,6 +141,8 @@ impl FccWindow {
             col_lo: (0..h).map(|n| kb((h - n) as u64)).collect(),
             col_hi: (0..h).map(|t| kb((c - 2 - t) as u64)).collect(),
             row_lo: (0..h).map(|r| kb((h - r) as u64)).collect(),
+            zero8: kb(0),
+            zero12: kb(0),
             _k: k,
             _h: h,
         }
@@ -226,6 +230,11 @@ impl Logic for FccWindow {
             self.w1.d.next.valid = false;
             self.w2.d.next.valid = false;
             self.w3.d.next.valid = false;
+            // W2's row and column feed the edge compares and the buffers' write
+            // address: a reset keeps them flip-flops, not the end of a shift
+            // register whose clock-to-out is five times slower.
+            self.w2.d.next.row = self.zero8.val();
+            self.w2.d.next.col = self.zero12.val();
         }
         // ---- The representative window, REP_LAG cycles behind.
         for i in 0..6 {
