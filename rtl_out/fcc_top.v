@@ -13198,7 +13198,6 @@ module fcc_sort_net(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit
     reg  kp$x$18;
     reg  kp$x$19;
     reg  kp$x$20;
-    reg  kp$x$21;
     wire  kp$pre$0;
     wire  kp$pre$1;
     wire  kp$pre$2;
@@ -13220,7 +13219,6 @@ module fcc_sort_net(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit
     wire  kp$pre$18;
     wire  kp$pre$19;
     wire  kp$pre$20;
-    wire  kp$pre$21;
     reg  mp$x$0;
     reg  mp$x$1;
     reg  mp$x$2;
@@ -13242,7 +13240,6 @@ module fcc_sort_net(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit
     reg  mp$x$18;
     reg  mp$x$19;
     reg  mp$x$20;
-    reg  mp$x$21;
     wire  mp$pre$0;
     wire  mp$pre$1;
     wire  mp$pre$2;
@@ -13264,7 +13261,53 @@ module fcc_sort_net(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit
     wire  mp$pre$18;
     wire  mp$pre$19;
     wire  mp$pre$20;
-    wire  mp$pre$21;
+    reg  ka$x$0;
+    reg  ka$x$1;
+    reg  ka$x$2;
+    reg  ka$x$3;
+    reg  ka$x$4;
+    reg  ka$x$5;
+    reg  ka$x$6;
+    reg  ka$x$7;
+    reg  ka$x$8;
+    reg  ka$x$9;
+    reg  ka$x$10;
+    reg  ka$x$11;
+    reg  ka$x$12;
+    reg  ka$x$13;
+    reg  ka$x$14;
+    reg  ka$x$15;
+    reg  ka$x$16;
+    reg  ka$x$17;
+    reg  ka$x$18;
+    reg  ka$x$19;
+    reg  ka$x$20;
+    wire  ka$any;
+    reg  mq$d;
+    wire  mq$q;
+    reg  mq$clock;
+    reg  mt$x$0;
+    reg  mt$x$1;
+    reg  mt$x$2;
+    reg  mt$x$3;
+    reg  mt$x$4;
+    reg  mt$x$5;
+    reg  mt$x$6;
+    reg  mt$x$7;
+    reg  mt$x$8;
+    reg  mt$x$9;
+    reg  mt$x$10;
+    reg  mt$x$11;
+    reg  mt$x$12;
+    reg  mt$x$13;
+    reg  mt$x$14;
+    reg  mt$x$15;
+    reg  mt$x$16;
+    reg  mt$x$17;
+    reg  mt$x$18;
+    reg  mt$x$19;
+    reg  mt$x$20;
+    wire  mt$two;
     reg  rp$d;
     wire  rp$q;
     reg  rp$clock;
@@ -17873,7 +17916,6 @@ module fcc_sort_net(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit
         .x$18(kp$x$18),
         .x$19(kp$x$19),
         .x$20(kp$x$20),
-        .x$21(kp$x$21),
         .pre$0(kp$pre$0),
         .pre$1(kp$pre$1),
         .pre$2(kp$pre$2),
@@ -17894,8 +17936,7 @@ module fcc_sort_net(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit
         .pre$17(kp$pre$17),
         .pre$18(kp$pre$18),
         .pre$19(kp$pre$19),
-        .pre$20(kp$pre$20),
-        .pre$21(kp$pre$21)
+        .pre$20(kp$pre$20)
     );
     fcc_sort_net__mp mp(
         .x$0(mp$x$0),
@@ -17919,7 +17960,6 @@ module fcc_sort_net(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit
         .x$18(mp$x$18),
         .x$19(mp$x$19),
         .x$20(mp$x$20),
-        .x$21(mp$x$21),
         .pre$0(mp$pre$0),
         .pre$1(mp$pre$1),
         .pre$2(mp$pre$2),
@@ -17940,8 +17980,60 @@ module fcc_sort_net(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit
         .pre$17(mp$pre$17),
         .pre$18(mp$pre$18),
         .pre$19(mp$pre$19),
-        .pre$20(mp$pre$20),
-        .pre$21(mp$pre$21)
+        .pre$20(mp$pre$20)
+    );
+    fcc_sort_net__ka ka(
+        .x$0(ka$x$0),
+        .x$1(ka$x$1),
+        .x$2(ka$x$2),
+        .x$3(ka$x$3),
+        .x$4(ka$x$4),
+        .x$5(ka$x$5),
+        .x$6(ka$x$6),
+        .x$7(ka$x$7),
+        .x$8(ka$x$8),
+        .x$9(ka$x$9),
+        .x$10(ka$x$10),
+        .x$11(ka$x$11),
+        .x$12(ka$x$12),
+        .x$13(ka$x$13),
+        .x$14(ka$x$14),
+        .x$15(ka$x$15),
+        .x$16(ka$x$16),
+        .x$17(ka$x$17),
+        .x$18(ka$x$18),
+        .x$19(ka$x$19),
+        .x$20(ka$x$20),
+        .any(ka$any)
+    );
+    fcc_sort_net__mq mq(
+        .d(mq$d),
+        .q(mq$q),
+        .clock(mq$clock)
+    );
+    fcc_sort_net__mt mt(
+        .x$0(mt$x$0),
+        .x$1(mt$x$1),
+        .x$2(mt$x$2),
+        .x$3(mt$x$3),
+        .x$4(mt$x$4),
+        .x$5(mt$x$5),
+        .x$6(mt$x$6),
+        .x$7(mt$x$7),
+        .x$8(mt$x$8),
+        .x$9(mt$x$9),
+        .x$10(mt$x$10),
+        .x$11(mt$x$11),
+        .x$12(mt$x$12),
+        .x$13(mt$x$13),
+        .x$14(mt$x$14),
+        .x$15(mt$x$15),
+        .x$16(mt$x$16),
+        .x$17(mt$x$17),
+        .x$18(mt$x$18),
+        .x$19(mt$x$19),
+        .x$20(mt$x$20),
+        .two(mt$two)
     );
     fcc_sort_net__rp rp(
         .d(rp$d),
@@ -18082,6 +18174,7 @@ module fcc_sort_net(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit
         emitted$clock = clk;
         ldone_q$clock = clk;
         joins_q$clock = clk;
+        mq$clock = clk;
         mask_c$d = mask_c$q;
         mask_v$d = mask_v$q;
         c1$d = c1$q;
@@ -18109,6 +18202,7 @@ module fcc_sort_net(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit
         emitted$d = emitted$q;
         ldone_q$d = ldone_q$q;
         joins_q$d = joins_q$q;
+        mq$d = mq$q;
         cs$0$clock = clk;
         cs$1$clock = clk;
         cs$2$clock = clk;
@@ -20291,97 +20385,201 @@ module fcc_sort_net(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit
         take = 1'b0;
         ldone_q$d = 1'b0;
         cb$take = 1'b0;
-        kp$x$21 = 1'b0;
-        mp$x$21 = 1'b0;
-        kany = kp$pre$21;
-        many = mp$pre$21;
+        many = mq$q;
+        kany = ka$any;
         kp$x$0 = hkeep$0;
+        ka$x$0 = hkeep$0;
         mp$x$0 = m$0$q;
+        mt$x$0 = m$0$q;
+        if (~ld$q) begin
+            mt$x$0 = hkeep$0;
+        end
         pk$sel$0 = sel$0$q;
         pk$v$0 = vals$0;
         kp$x$1 = hkeep$1;
+        ka$x$1 = hkeep$1;
         mp$x$1 = m$1$q;
+        mt$x$1 = m$1$q;
+        if (~ld$q) begin
+            mt$x$1 = hkeep$1;
+        end
         pk$sel$1 = sel$1$q;
         pk$v$1 = vals$1;
         kp$x$2 = hkeep$2;
+        ka$x$2 = hkeep$2;
         mp$x$2 = m$2$q;
+        mt$x$2 = m$2$q;
+        if (~ld$q) begin
+            mt$x$2 = hkeep$2;
+        end
         pk$sel$2 = sel$2$q;
         pk$v$2 = vals$2;
         kp$x$3 = hkeep$3;
+        ka$x$3 = hkeep$3;
         mp$x$3 = m$3$q;
+        mt$x$3 = m$3$q;
+        if (~ld$q) begin
+            mt$x$3 = hkeep$3;
+        end
         pk$sel$3 = sel$3$q;
         pk$v$3 = vals$3;
         kp$x$4 = hkeep$4;
+        ka$x$4 = hkeep$4;
         mp$x$4 = m$4$q;
+        mt$x$4 = m$4$q;
+        if (~ld$q) begin
+            mt$x$4 = hkeep$4;
+        end
         pk$sel$4 = sel$4$q;
         pk$v$4 = vals$4;
         kp$x$5 = hkeep$5;
+        ka$x$5 = hkeep$5;
         mp$x$5 = m$5$q;
+        mt$x$5 = m$5$q;
+        if (~ld$q) begin
+            mt$x$5 = hkeep$5;
+        end
         pk$sel$5 = sel$5$q;
         pk$v$5 = vals$5;
         kp$x$6 = hkeep$6;
+        ka$x$6 = hkeep$6;
         mp$x$6 = m$6$q;
+        mt$x$6 = m$6$q;
+        if (~ld$q) begin
+            mt$x$6 = hkeep$6;
+        end
         pk$sel$6 = sel$6$q;
         pk$v$6 = vals$6;
         kp$x$7 = hkeep$7;
+        ka$x$7 = hkeep$7;
         mp$x$7 = m$7$q;
+        mt$x$7 = m$7$q;
+        if (~ld$q) begin
+            mt$x$7 = hkeep$7;
+        end
         pk$sel$7 = sel$7$q;
         pk$v$7 = vals$7;
         kp$x$8 = hkeep$8;
+        ka$x$8 = hkeep$8;
         mp$x$8 = m$8$q;
+        mt$x$8 = m$8$q;
+        if (~ld$q) begin
+            mt$x$8 = hkeep$8;
+        end
         pk$sel$8 = sel$8$q;
         pk$v$8 = vals$8;
         kp$x$9 = hkeep$9;
+        ka$x$9 = hkeep$9;
         mp$x$9 = m$9$q;
+        mt$x$9 = m$9$q;
+        if (~ld$q) begin
+            mt$x$9 = hkeep$9;
+        end
         pk$sel$9 = sel$9$q;
         pk$v$9 = vals$9;
         kp$x$10 = hkeep$10;
+        ka$x$10 = hkeep$10;
         mp$x$10 = m$10$q;
+        mt$x$10 = m$10$q;
+        if (~ld$q) begin
+            mt$x$10 = hkeep$10;
+        end
         pk$sel$10 = sel$10$q;
         pk$v$10 = vals$10;
         kp$x$11 = hkeep$11;
+        ka$x$11 = hkeep$11;
         mp$x$11 = m$11$q;
+        mt$x$11 = m$11$q;
+        if (~ld$q) begin
+            mt$x$11 = hkeep$11;
+        end
         pk$sel$11 = sel$11$q;
         pk$v$11 = vals$11;
         kp$x$12 = hkeep$12;
+        ka$x$12 = hkeep$12;
         mp$x$12 = m$12$q;
+        mt$x$12 = m$12$q;
+        if (~ld$q) begin
+            mt$x$12 = hkeep$12;
+        end
         pk$sel$12 = sel$12$q;
         pk$v$12 = vals$12;
         kp$x$13 = hkeep$13;
+        ka$x$13 = hkeep$13;
         mp$x$13 = m$13$q;
+        mt$x$13 = m$13$q;
+        if (~ld$q) begin
+            mt$x$13 = hkeep$13;
+        end
         pk$sel$13 = sel$13$q;
         pk$v$13 = vals$13;
         kp$x$14 = hkeep$14;
+        ka$x$14 = hkeep$14;
         mp$x$14 = m$14$q;
+        mt$x$14 = m$14$q;
+        if (~ld$q) begin
+            mt$x$14 = hkeep$14;
+        end
         pk$sel$14 = sel$14$q;
         pk$v$14 = vals$14;
         kp$x$15 = hkeep$15;
+        ka$x$15 = hkeep$15;
         mp$x$15 = m$15$q;
+        mt$x$15 = m$15$q;
+        if (~ld$q) begin
+            mt$x$15 = hkeep$15;
+        end
         pk$sel$15 = sel$15$q;
         pk$v$15 = vals$15;
         kp$x$16 = hkeep$16;
+        ka$x$16 = hkeep$16;
         mp$x$16 = m$16$q;
+        mt$x$16 = m$16$q;
+        if (~ld$q) begin
+            mt$x$16 = hkeep$16;
+        end
         pk$sel$16 = sel$16$q;
         pk$v$16 = vals$16;
         kp$x$17 = hkeep$17;
+        ka$x$17 = hkeep$17;
         mp$x$17 = m$17$q;
+        mt$x$17 = m$17$q;
+        if (~ld$q) begin
+            mt$x$17 = hkeep$17;
+        end
         pk$sel$17 = sel$17$q;
         pk$v$17 = vals$17;
         kp$x$18 = hkeep$18;
+        ka$x$18 = hkeep$18;
         mp$x$18 = m$18$q;
+        mt$x$18 = m$18$q;
+        if (~ld$q) begin
+            mt$x$18 = hkeep$18;
+        end
         pk$sel$18 = sel$18$q;
         pk$v$18 = vals$18;
         kp$x$19 = hkeep$19;
+        ka$x$19 = hkeep$19;
         mp$x$19 = m$19$q;
+        mt$x$19 = m$19$q;
+        if (~ld$q) begin
+            mt$x$19 = hkeep$19;
+        end
         pk$sel$19 = sel$19$q;
         pk$v$19 = vals$19;
         kp$x$20 = hkeep$20;
+        ka$x$20 = hkeep$20;
         mp$x$20 = m$20$q;
+        mt$x$20 = m$20$q;
+        if (~ld$q) begin
+            mt$x$20 = hkeep$20;
+        end
         pk$sel$20 = sel$20$q;
         pk$v$20 = vals$20;
         done = 1'b0;
         if (~ld$q & cb$valid) begin
             ld$d = 1'b1;
+            mq$d = mt$two;
             rp$d = cb$dout[48:48];
             csame$d = last_av$q & (cb$dout[15:0] == last_a$q);
             rsame_c$d = cb$dout[31:16] == cb$dout[15:0];
@@ -20438,6 +20636,7 @@ module fcc_sort_net(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit
             end
         end
         if (ld$q & (ph$q == p_sel)) begin
+            mq$d = mt$two;
             sel$0$d = m$0$q & ~mp$pre$0;
             m$0$d = m$0$q & mp$pre$0;
             sel$1$d = m$1$q & ~mp$pre$1;
@@ -22238,6 +22437,39 @@ module fcc_sort_net__jq__wp(d,q,clock);
     end
 
 endmodule // fcc_sort_net__jq__wp
+
+
+module fcc_sort_net__ka(x$0,x$1,x$2,x$3,x$4,x$5,x$6,x$7,x$8,x$9,x$10,x$11,x$12,x$13,x$14,x$15,x$16,x$17,x$18,x$19,x$20,any);
+
+    // Module arguments
+    input wire  x$0;
+    input wire  x$1;
+    input wire  x$2;
+    input wire  x$3;
+    input wire  x$4;
+    input wire  x$5;
+    input wire  x$6;
+    input wire  x$7;
+    input wire  x$8;
+    input wire  x$9;
+    input wire  x$10;
+    input wire  x$11;
+    input wire  x$12;
+    input wire  x$13;
+    input wire  x$14;
+    input wire  x$15;
+    input wire  x$16;
+    input wire  x$17;
+    input wire  x$18;
+    input wire  x$19;
+    input wire  x$20;
+    output reg  any;
+
+    // Update code (custom)
+    always @(*) begin
+        any = |{x$20, x$19, x$18, x$17, x$16, x$15, x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+    end
+endmodule // fcc_sort_net__ka
 
 
 module fcc_sort_net__kd__0(d,q,clock);
@@ -25831,7 +26063,7 @@ module fcc_sort_net__knq__99(d,q,clock);
 endmodule // fcc_sort_net__knq__99
 
 
-module fcc_sort_net__kp(x$0,x$1,x$2,x$3,x$4,x$5,x$6,x$7,x$8,x$9,x$10,x$11,x$12,x$13,x$14,x$15,x$16,x$17,x$18,x$19,x$20,x$21,pre$0,pre$1,pre$2,pre$3,pre$4,pre$5,pre$6,pre$7,pre$8,pre$9,pre$10,pre$11,pre$12,pre$13,pre$14,pre$15,pre$16,pre$17,pre$18,pre$19,pre$20,pre$21);
+module fcc_sort_net__kp(x$0,x$1,x$2,x$3,x$4,x$5,x$6,x$7,x$8,x$9,x$10,x$11,x$12,x$13,x$14,x$15,x$16,x$17,x$18,x$19,x$20,pre$0,pre$1,pre$2,pre$3,pre$4,pre$5,pre$6,pre$7,pre$8,pre$9,pre$10,pre$11,pre$12,pre$13,pre$14,pre$15,pre$16,pre$17,pre$18,pre$19,pre$20);
 
     // Module arguments
     input wire  x$0;
@@ -25855,7 +26087,6 @@ module fcc_sort_net__kp(x$0,x$1,x$2,x$3,x$4,x$5,x$6,x$7,x$8,x$9,x$10,x$11,x$12,x
     input wire  x$18;
     input wire  x$19;
     input wire  x$20;
-    input wire  x$21;
     output reg  pre$0;
     output reg  pre$1;
     output reg  pre$2;
@@ -25877,42 +26108,34 @@ module fcc_sort_net__kp(x$0,x$1,x$2,x$3,x$4,x$5,x$6,x$7,x$8,x$9,x$10,x$11,x$12,x
     output reg  pre$18;
     output reg  pre$19;
     output reg  pre$20;
-    output reg  pre$21;
 
     // Update code (custom)
     // The last flag comes after every prefix, so nothing reads it.
     /* verilator lint_off UNUSEDSIGNAL */
-    wire unused_ok = x$21;
+    wire unused_ok = x$20;
     /* verilator lint_on UNUSEDSIGNAL */
-    wire [20:0] p0 = {x$20, x$19, x$18, x$17, x$16, x$15, x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
-    wire [20:0] p1 = p0 | {p0[19:0], 1'd0};
-    wire [20:0] p2 = p1 | {p1[18:0], 2'd0};
-    wire [20:0] p3 = p2 | {p2[16:0], 4'd0};
-    wire [20:0] p4 = p3 | {p3[12:0], 8'd0};
-    wire [20:0] p5 = p4 | {p4[4:0], 16'd0};
     always @(*) begin
         pre$0 = 1'b0;
-        pre$1 = p5[0];
-        pre$2 = p5[1];
-        pre$3 = p5[2];
-        pre$4 = p5[3];
-        pre$5 = p5[4];
-        pre$6 = p5[5];
-        pre$7 = p5[6];
-        pre$8 = p5[7];
-        pre$9 = p5[8];
-        pre$10 = p5[9];
-        pre$11 = p5[10];
-        pre$12 = p5[11];
-        pre$13 = p5[12];
-        pre$14 = p5[13];
-        pre$15 = p5[14];
-        pre$16 = p5[15];
-        pre$17 = p5[16];
-        pre$18 = p5[17];
-        pre$19 = p5[18];
-        pre$20 = p5[19];
-        pre$21 = p5[20];
+        pre$1 = |{x$0};
+        pre$2 = |{x$1, x$0};
+        pre$3 = |{x$2, x$1, x$0};
+        pre$4 = |{x$3, x$2, x$1, x$0};
+        pre$5 = |{x$4, x$3, x$2, x$1, x$0};
+        pre$6 = |{x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$7 = |{x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$8 = |{x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$9 = |{x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$10 = |{x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$11 = |{x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$12 = |{x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$13 = |{x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$14 = |{x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$15 = |{x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$16 = |{x$15, x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$17 = |{x$16, x$15, x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$18 = |{x$17, x$16, x$15, x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$19 = |{x$18, x$17, x$16, x$15, x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$20 = |{x$19, x$18, x$17, x$16, x$15, x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
     end
 endmodule // fcc_sort_net__kp
 
@@ -26430,7 +26653,7 @@ module fcc_sort_net__mask_v(d,q,clock);
 endmodule // fcc_sort_net__mask_v
 
 
-module fcc_sort_net__mp(x$0,x$1,x$2,x$3,x$4,x$5,x$6,x$7,x$8,x$9,x$10,x$11,x$12,x$13,x$14,x$15,x$16,x$17,x$18,x$19,x$20,x$21,pre$0,pre$1,pre$2,pre$3,pre$4,pre$5,pre$6,pre$7,pre$8,pre$9,pre$10,pre$11,pre$12,pre$13,pre$14,pre$15,pre$16,pre$17,pre$18,pre$19,pre$20,pre$21);
+module fcc_sort_net__mp(x$0,x$1,x$2,x$3,x$4,x$5,x$6,x$7,x$8,x$9,x$10,x$11,x$12,x$13,x$14,x$15,x$16,x$17,x$18,x$19,x$20,pre$0,pre$1,pre$2,pre$3,pre$4,pre$5,pre$6,pre$7,pre$8,pre$9,pre$10,pre$11,pre$12,pre$13,pre$14,pre$15,pre$16,pre$17,pre$18,pre$19,pre$20);
 
     // Module arguments
     input wire  x$0;
@@ -26454,7 +26677,6 @@ module fcc_sort_net__mp(x$0,x$1,x$2,x$3,x$4,x$5,x$6,x$7,x$8,x$9,x$10,x$11,x$12,x
     input wire  x$18;
     input wire  x$19;
     input wire  x$20;
-    input wire  x$21;
     output reg  pre$0;
     output reg  pre$1;
     output reg  pre$2;
@@ -26476,44 +26698,130 @@ module fcc_sort_net__mp(x$0,x$1,x$2,x$3,x$4,x$5,x$6,x$7,x$8,x$9,x$10,x$11,x$12,x
     output reg  pre$18;
     output reg  pre$19;
     output reg  pre$20;
-    output reg  pre$21;
 
     // Update code (custom)
     // The last flag comes after every prefix, so nothing reads it.
     /* verilator lint_off UNUSEDSIGNAL */
-    wire unused_ok = x$21;
+    wire unused_ok = x$20;
     /* verilator lint_on UNUSEDSIGNAL */
-    wire [20:0] p0 = {x$20, x$19, x$18, x$17, x$16, x$15, x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
-    wire [20:0] p1 = p0 | {p0[19:0], 1'd0};
-    wire [20:0] p2 = p1 | {p1[18:0], 2'd0};
-    wire [20:0] p3 = p2 | {p2[16:0], 4'd0};
-    wire [20:0] p4 = p3 | {p3[12:0], 8'd0};
-    wire [20:0] p5 = p4 | {p4[4:0], 16'd0};
     always @(*) begin
         pre$0 = 1'b0;
-        pre$1 = p5[0];
-        pre$2 = p5[1];
-        pre$3 = p5[2];
-        pre$4 = p5[3];
-        pre$5 = p5[4];
-        pre$6 = p5[5];
-        pre$7 = p5[6];
-        pre$8 = p5[7];
-        pre$9 = p5[8];
-        pre$10 = p5[9];
-        pre$11 = p5[10];
-        pre$12 = p5[11];
-        pre$13 = p5[12];
-        pre$14 = p5[13];
-        pre$15 = p5[14];
-        pre$16 = p5[15];
-        pre$17 = p5[16];
-        pre$18 = p5[17];
-        pre$19 = p5[18];
-        pre$20 = p5[19];
-        pre$21 = p5[20];
+        pre$1 = |{x$0};
+        pre$2 = |{x$1, x$0};
+        pre$3 = |{x$2, x$1, x$0};
+        pre$4 = |{x$3, x$2, x$1, x$0};
+        pre$5 = |{x$4, x$3, x$2, x$1, x$0};
+        pre$6 = |{x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$7 = |{x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$8 = |{x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$9 = |{x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$10 = |{x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$11 = |{x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$12 = |{x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$13 = |{x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$14 = |{x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$15 = |{x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$16 = |{x$15, x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$17 = |{x$16, x$15, x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$18 = |{x$17, x$16, x$15, x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$19 = |{x$18, x$17, x$16, x$15, x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$20 = |{x$19, x$18, x$17, x$16, x$15, x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
     end
 endmodule // fcc_sort_net__mp
+
+
+module fcc_sort_net__mq(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__mq
+
+
+module fcc_sort_net__mt(x$0,x$1,x$2,x$3,x$4,x$5,x$6,x$7,x$8,x$9,x$10,x$11,x$12,x$13,x$14,x$15,x$16,x$17,x$18,x$19,x$20,two);
+
+    // Module arguments
+    input wire  x$0;
+    input wire  x$1;
+    input wire  x$2;
+    input wire  x$3;
+    input wire  x$4;
+    input wire  x$5;
+    input wire  x$6;
+    input wire  x$7;
+    input wire  x$8;
+    input wire  x$9;
+    input wire  x$10;
+    input wire  x$11;
+    input wire  x$12;
+    input wire  x$13;
+    input wire  x$14;
+    input wire  x$15;
+    input wire  x$16;
+    input wire  x$17;
+    input wire  x$18;
+    input wire  x$19;
+    input wire  x$20;
+    output reg  two;
+
+    // Update code (custom)
+    wire a_0_2 = x$0 | x$1;
+    wire t_0_2 = (x$0 & x$1);
+    wire a_3_5 = x$3 | x$4;
+    wire t_3_5 = (x$3 & x$4);
+    wire a_2_5 = x$2 | a_3_5;
+    wire t_2_5 = (x$2 & a_3_5) | t_3_5;
+    wire a_0_5 = a_0_2 | a_2_5;
+    wire t_0_5 = (a_0_2 & a_2_5) | t_0_2 | t_2_5;
+    wire a_5_7 = x$5 | x$6;
+    wire t_5_7 = (x$5 & x$6);
+    wire a_8_10 = x$8 | x$9;
+    wire t_8_10 = (x$8 & x$9);
+    wire a_7_10 = x$7 | a_8_10;
+    wire t_7_10 = (x$7 & a_8_10) | t_8_10;
+    wire a_5_10 = a_5_7 | a_7_10;
+    wire t_5_10 = (a_5_7 & a_7_10) | t_5_7 | t_7_10;
+    wire a_0_10 = a_0_5 | a_5_10;
+    wire t_0_10 = (a_0_5 & a_5_10) | t_0_5 | t_5_10;
+    wire a_10_12 = x$10 | x$11;
+    wire t_10_12 = (x$10 & x$11);
+    wire a_13_15 = x$13 | x$14;
+    wire t_13_15 = (x$13 & x$14);
+    wire a_12_15 = x$12 | a_13_15;
+    wire t_12_15 = (x$12 & a_13_15) | t_13_15;
+    wire a_10_15 = a_10_12 | a_12_15;
+    wire t_10_15 = (a_10_12 & a_12_15) | t_10_12 | t_12_15;
+    wire a_16_18 = x$16 | x$17;
+    wire t_16_18 = (x$16 & x$17);
+    wire a_15_18 = x$15 | a_16_18;
+    wire t_15_18 = (x$15 & a_16_18) | t_16_18;
+    wire a_19_21 = x$19 | x$20;
+    wire t_19_21 = (x$19 & x$20);
+    wire a_18_21 = x$18 | a_19_21;
+    wire t_18_21 = (x$18 & a_19_21) | t_19_21;
+    wire a_15_21 = a_15_18 | a_18_21;
+    wire t_15_21 = (a_15_18 & a_18_21) | t_15_18 | t_18_21;
+    wire a_10_21 = a_10_15 | a_15_21;
+    wire t_10_21 = (a_10_15 & a_15_21) | t_10_15 | t_15_21;
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire a_0_21 = a_0_10 | a_10_21;
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire t_0_21 = (a_0_10 & a_10_21) | t_0_10 | t_10_21;
+    always @(*) begin
+        two = t_0_21;
+    end
+endmodule // fcc_sort_net__mt
 
 
 module fcc_sort_net__pack(v$0,v$1,v$2,v$3,v$4,v$5,v$6,v$7,v$8,v$9,v$10,v$11,v$12,v$13,v$14,v$15,v$16,v$17,v$18,v$19,v$20,f$0,f$1,f$2,f$3,f$4,f$5,f$6,f$7,f$8,f$9,f$10,f$11,f$12,f$13,f$14,f$15,f$16,f$17,f$18,f$19,f$20,word$0,word$1,word$2);
@@ -35938,34 +36246,28 @@ module fcc_sort_net__qp(x$0,x$1,x$2,x$3,x$4,x$5,x$6,x$7,x$8,x$9,x$10,x$11,x$12,x
     /* verilator lint_off UNUSEDSIGNAL */
     wire unused_ok = x$20;
     /* verilator lint_on UNUSEDSIGNAL */
-    wire [19:0] p0 = {x$19, x$18, x$17, x$16, x$15, x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
-    wire [19:0] p1 = p0 | {p0[18:0], 1'd0};
-    wire [19:0] p2 = p1 | {p1[17:0], 2'd0};
-    wire [19:0] p3 = p2 | {p2[15:0], 4'd0};
-    wire [19:0] p4 = p3 | {p3[11:0], 8'd0};
-    wire [19:0] p5 = p4 | {p4[3:0], 16'd0};
     always @(*) begin
         pre$0 = 1'b0;
-        pre$1 = p5[0];
-        pre$2 = p5[1];
-        pre$3 = p5[2];
-        pre$4 = p5[3];
-        pre$5 = p5[4];
-        pre$6 = p5[5];
-        pre$7 = p5[6];
-        pre$8 = p5[7];
-        pre$9 = p5[8];
-        pre$10 = p5[9];
-        pre$11 = p5[10];
-        pre$12 = p5[11];
-        pre$13 = p5[12];
-        pre$14 = p5[13];
-        pre$15 = p5[14];
-        pre$16 = p5[15];
-        pre$17 = p5[16];
-        pre$18 = p5[17];
-        pre$19 = p5[18];
-        pre$20 = p5[19];
+        pre$1 = |{x$0};
+        pre$2 = |{x$1, x$0};
+        pre$3 = |{x$2, x$1, x$0};
+        pre$4 = |{x$3, x$2, x$1, x$0};
+        pre$5 = |{x$4, x$3, x$2, x$1, x$0};
+        pre$6 = |{x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$7 = |{x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$8 = |{x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$9 = |{x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$10 = |{x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$11 = |{x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$12 = |{x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$13 = |{x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$14 = |{x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$15 = |{x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$16 = |{x$15, x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$17 = |{x$16, x$15, x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$18 = |{x$17, x$16, x$15, x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$19 = |{x$18, x$17, x$16, x$15, x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        pre$20 = |{x$19, x$18, x$17, x$16, x$15, x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
     end
 endmodule // fcc_sort_net__qp
 

@@ -377,17 +377,19 @@ impl Logic for FccLabelUpdate {
                 }
             }
         }
-        if (self.u.q.val() == self.n_of[0].val())
-            & (self.sk[0].q.val().need == self.n_of[4].val())
+        if (self.u.q.val() == self.n_of[0].val()) & (self.sk[0].q.val().need == self.n_of[4].val())
         {
             self.lge2.next = true;
         }
-        self.gge2.next = (self.gn.q.val() != self.zero4.val()) & (self.gn.q.val() != self.one4.val());
+        self.gge2.next =
+            (self.gn.q.val() != self.zero4.val()) & (self.gn.q.val() != self.one4.val());
         self.pop2.next = self.hv.val() & self.lge2.val() & self.gge2.val();
         self.pop.next = self.hv.val() & !self.lz.val() & self.ghv.val();
         self.fire.next = self.hv.val()
             & self.ofree.val()
-            & (self.lz.val() | (self.l1.val() & self.ghv.val()) | (self.l2.val() & self.gge2.val()));
+            & (self.lz.val()
+                | (self.l1.val() & self.ghv.val())
+                | (self.l2.val() & self.gge2.val()));
         // Slot sources of the head beat, then the carried run. A source equal
         // to a label being popped now (k == u, u + 1) reads the gearbox's head.
         self.nsrc[0].next = self.sk[0].q.val().s0;

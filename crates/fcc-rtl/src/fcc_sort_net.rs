@@ -46,6 +46,7 @@ use crate::fcc_pick::FccPick;
 use crate::fcc_prefix_or::FccPrefixOr;
 use crate::fcc_ram::FccRam;
 use crate::fcc_row_word::{FccRowPack, FccRowUnpack, ROW_BITS};
+use crate::fcc_two_or::FccTwoOr;
 use crate::types::{clog2, kb, vec_of, Ctr, CtrRec, JoinRec};
 
 /// Centre buffer: 2^CB_BITS records.
@@ -148,8 +149,17 @@ pub struct FccSortNet {
     hkeep: Vec<Signal<Local, Bit>>,
     kp: FccPrefixOr,
     mp: FccPrefixOr,
+    /// Any kept position in the head record: a reduction of its own, not
+    /// the last output of the prefix network `kp`.
     kany: Signal<Local, Bit>,
+    ka: FccAnyOr,
+    /// Any position left in `m`, from the register `mq`. Removing the first
+    /// set flag leaves some iff at least two were set, so `mq` is loaded with
+    /// "at least two" of the flags being reduced (`mt`), and no decision
+    /// waits on a reduction of `m`.
     many: Signal<Local, Bit>,
+    mq: DFF<Bit>,
+    mt: FccTwoOr,
     done: Signal<Local, Bit>,
     rp: DFF<Bit>,
     jq: FccFifo<JoinRec, JQ_BITS, { JQ_BITS + 1 }>,
@@ -272,10 +282,13 @@ impl FccSortNet {
             m: vec_of(n),
             sel: vec_of(n),
             hkeep: vec_of(n),
-            kp: FccPrefixOr::new(n + 1),
-            mp: FccPrefixOr::new(n + 1),
+            kp: FccPrefixOr::new(n),
+            mp: FccPrefixOr::new(n),
             kany: Default::default(),
+            ka: FccAnyOr::new(n),
             many: Default::default(),
+            mq: Default::default(),
+            mt: FccTwoOr::new(n),
             done: Default::default(),
             rp: Default::default(),
             jq: FccFifo::default(),
@@ -323,7 +336,7 @@ impl Logic for FccSortNet {
         dff_setup!(
             self, clk, mask_c, mask_v, c1, c_sm, c_sm1, c_sm2, rep_c, rcq, rcq2, wr_en, wr_addr,
             wr_data, push_q, drop_q, rec, ld, ph, rp, jfull, last_a, last_av, csame, rsame_c,
-            rsame_l, emitted, ldone_q, joins_q
+            rsame_l, emitted, ldone_q, joins_q, mq
         );
         for i in 0..(self._l - 1) {
             self.cs[i].clock.next = self.clk.val();
@@ -575,21 +588,23 @@ impl Logic for FccSortNet {
         self.take.next = false;
         self.ldone_q.d.next = false;
         self.cb.take.next = false;
-        for nn in self._n..(self._n + 1) {
-            self.kp.x[nn].next = false;
-            self.mp.x[nn].next = false;
-            self.kany.next = self.kp.pre[nn].val();
-            self.many.next = self.mp.pre[nn].val();
-        }
+        self.many.next = self.mq.q.val();
+        self.kany.next = self.ka.any.val();
         for e in 0..self._n {
             self.kp.x[e].next = self.hkeep[e].val();
+            self.ka.x[e].next = self.hkeep[e].val();
             self.mp.x[e].next = self.m[e].q.val();
+            self.mt.x[e].next = self.m[e].q.val();
+            if !self.ld.q.val() {
+                self.mt.x[e].next = self.hkeep[e].val();
+            }
             self.pk.sel[e].next = self.sel[e].q.val();
             self.pk.v[e].next = self.vals[e].val();
         }
         self.done.next = false;
         if !self.ld.q.val() & self.cb.valid.val() {
             self.ld.d.next = true;
+            self.mq.d.next = self.mt.two.val();
             self.rp.d.next = self.cb.dout.val().ring;
             // Is each join's `a` the previous join's? Decided once per record.
             self.csame.d.next =
@@ -610,6 +625,7 @@ impl Logic for FccSortNet {
             }
         }
         if self.ld.q.val() & (self.ph.q.val() == self.p_sel.val()) {
+            self.mq.d.next = self.mt.two.val();
             for e in 0..self._n {
                 self.sel[e].d.next = self.m[e].q.val() & !self.mp.pre[e].val();
                 self.m[e].d.next = self.m[e].q.val() & self.mp.pre[e].val();

@@ -4,7 +4,7 @@
 //! (`fcc_intra`, `fcc_window`, `fcc_dist_tree`, `fcc_sort_net`,
 //! `fcc_merge_table`, `fcc_label_update`, `fcc_top`, plus the helpers
 //! `fcc_sq_dist`, `fcc_dist_unit`, `fcc_line_buf`, `fcc_fifo`, `fcc_ram`,
-//! `fcc_row_word`, `fcc_prefix_or`, `fcc_any_or`, `fcc_pick`).
+//! `fcc_row_word`, `fcc_prefix_or`, `fcc_any_or`, `fcc_two_or`, `fcc_pick`).
 //! Sizes that vary with the configuration (K, rows, columns, label bits,
 //! thresholds, labels per beat) are read from [`FccParams`] when the blocks
 //! are built, so one binary generates every configuration.
@@ -27,6 +27,7 @@ mod fcc_row_word;
 mod fcc_sort_net;
 mod fcc_sq_dist;
 mod fcc_top;
+mod fcc_two_or;
 mod fcc_window;
 pub mod lint;
 pub mod types;
