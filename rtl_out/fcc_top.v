@@ -6835,53 +6835,35 @@ module fcc_label_update(clk,rst,wr_valid,wr_state,wr_last,rb_start,fv,fval,gear_
         l1 = 1'b0;
         l2 = 1'b0;
         lge2 = 1'b0;
-        if (u$q == n_of$0) begin
-            if (sk$0$q[17:15] == n_of$1) begin
-                l1 = 1'b1;
-            end
+        if ((u$q == n_of$0) & (sk$0$q[17:15] == n_of$1)) begin
+            l1 = 1'b1;
         end
-        if (u$q == n_of$1) begin
-            if (sk$0$q[17:15] == n_of$2) begin
-                l1 = 1'b1;
-            end
+        if ((u$q == n_of$1) & (sk$0$q[17:15] == n_of$2)) begin
+            l1 = 1'b1;
         end
-        if (u$q == n_of$2) begin
-            if (sk$0$q[17:15] == n_of$3) begin
-                l1 = 1'b1;
-            end
+        if ((u$q == n_of$2) & (sk$0$q[17:15] == n_of$3)) begin
+            l1 = 1'b1;
         end
-        if (u$q == n_of$3) begin
-            if (sk$0$q[17:15] == n_of$4) begin
-                l1 = 1'b1;
-            end
+        if ((u$q == n_of$3) & (sk$0$q[17:15] == n_of$4)) begin
+            l1 = 1'b1;
         end
-        if (u$q == n_of$0) begin
-            if (sk$0$q[17:15] == n_of$2) begin
-                l2 = 1'b1;
-                lge2 = 1'b1;
-            end
+        if ((u$q == n_of$0) & (sk$0$q[17:15] == n_of$2)) begin
+            l2 = 1'b1;
+            lge2 = 1'b1;
         end
-        if (u$q == n_of$1) begin
-            if (sk$0$q[17:15] == n_of$3) begin
-                l2 = 1'b1;
-                lge2 = 1'b1;
-            end
+        if ((u$q == n_of$1) & (sk$0$q[17:15] == n_of$3)) begin
+            l2 = 1'b1;
+            lge2 = 1'b1;
         end
-        if (u$q == n_of$2) begin
-            if (sk$0$q[17:15] == n_of$4) begin
-                l2 = 1'b1;
-                lge2 = 1'b1;
-            end
+        if ((u$q == n_of$2) & (sk$0$q[17:15] == n_of$4)) begin
+            l2 = 1'b1;
+            lge2 = 1'b1;
         end
-        if (u$q == n_of$0) begin
-            if (sk$0$q[17:15] == n_of$3) begin
-                lge2 = 1'b1;
-            end
+        if ((u$q == n_of$0) & (sk$0$q[17:15] == n_of$3)) begin
+            lge2 = 1'b1;
         end
-        if (u$q == n_of$1) begin
-            if (sk$0$q[17:15] == n_of$4) begin
-                lge2 = 1'b1;
-            end
+        if ((u$q == n_of$1) & (sk$0$q[17:15] == n_of$4)) begin
+            lge2 = 1'b1;
         end
         if ((u$q == n_of$0) & (sk$0$q[17:15] == n_of$4)) begin
             lge2 = 1'b1;

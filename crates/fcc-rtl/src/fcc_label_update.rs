@@ -356,25 +356,25 @@ impl Logic for FccLabelUpdate {
         self.l2.next = false;
         self.lge2.next = false;
         for k in 0..4 {
-            if self.u.q.val() == self.n_of[k].val() {
-                if self.sk[0].q.val().need == self.n_of[k + 1].val() {
-                    self.l1.next = true;
-                }
+            if (self.u.q.val() == self.n_of[k].val())
+                & (self.sk[0].q.val().need == self.n_of[k + 1].val())
+            {
+                self.l1.next = true;
             }
         }
         for k in 0..3 {
-            if self.u.q.val() == self.n_of[k].val() {
-                if self.sk[0].q.val().need == self.n_of[k + 2].val() {
-                    self.l2.next = true;
-                    self.lge2.next = true;
-                }
+            if (self.u.q.val() == self.n_of[k].val())
+                & (self.sk[0].q.val().need == self.n_of[k + 2].val())
+            {
+                self.l2.next = true;
+                self.lge2.next = true;
             }
         }
         for k in 0..2 {
-            if self.u.q.val() == self.n_of[k].val() {
-                if self.sk[0].q.val().need == self.n_of[k + 3].val() {
-                    self.lge2.next = true;
-                }
+            if (self.u.q.val() == self.n_of[k].val())
+                & (self.sk[0].q.val().need == self.n_of[k + 3].val())
+            {
+                self.lge2.next = true;
             }
         }
         if (self.u.q.val() == self.n_of[0].val()) & (self.sk[0].q.val().need == self.n_of[4].val())
