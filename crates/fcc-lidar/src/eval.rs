@@ -341,22 +341,13 @@ pub fn evaluate(
         }
     }
     let ground = if !frames.is_empty() && per_frame.iter().all(|(_, g)| g.is_some()) {
-        let mut s = GroundScore::default();
+        let (mut tp, mut fp, mut fn_) = (0, 0, 0);
         for g in per_frame.iter().filter_map(|(_, g)| g.as_ref()) {
-            s.true_positives += g.true_positives;
-            s.false_positives += g.false_positives;
-            s.false_negatives += g.false_negatives;
+            tp += g.true_positives;
+            fp += g.false_positives;
+            fn_ += g.false_negatives;
         }
-        let ratio = |a: usize, b: usize| {
-            if a + b == 0 {
-                1.0
-            } else {
-                a as f64 / (a + b) as f64
-            }
-        };
-        s.precision = ratio(s.true_positives, s.false_positives);
-        s.recall = ratio(s.true_positives, s.false_negatives);
-        Some(s)
+        Some(GroundScore::from_counts(tp, fp, fn_))
     } else {
         None
     };

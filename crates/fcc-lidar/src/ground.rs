@@ -196,15 +196,7 @@ pub fn detect_ground(image: &RangeImage, params: &GroundParams) -> Result<Ground
                         None => h.abs() <= params.seed_tolerance_m,
                         Some(q) => {
                             // Rise and run measured along the plane normal and across it.
-                            let d = [
-                                f64::from(p[0] - q[0]),
-                                f64::from(p[1] - q[1]),
-                                f64::from(p[2] - q[2]),
-                            ];
-                            let rise = d[0] * pl[0] + d[1] * pl[1] + d[2] * pl[2];
-                            let run = ((d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) - rise * rise)
-                                .max(0.0)
-                                .sqrt();
+                            let (rise, run) = rise_run(p, q, pl);
                             if run > params.max_gap_m {
                                 // Too far from the last ground return to follow
                                 // the slope: start again as at the column's foot.
@@ -230,15 +222,7 @@ pub fn detect_ground(image: &RangeImage, params: &GroundParams) -> Result<Ground
                     };
                     if let Some((j, q)) = below {
                         if mask[j] && !mask[i] {
-                            let d = [
-                                f64::from(p[0] - q[0]),
-                                f64::from(p[1] - q[1]),
-                                f64::from(p[2] - q[2]),
-                            ];
-                            let rise = d[0] * pl[0] + d[1] * pl[1] + d[2] * pl[2];
-                            let run = ((d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) - rise * rise)
-                                .max(0.0)
-                                .sqrt();
+                            let (rise, run) = rise_run(p, q, pl);
                             if rise > params.step_m && run <= params.foot_run_m {
                                 mask[j] = false;
                             }
@@ -263,6 +247,21 @@ impl SplitMix {
         z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
         ((z ^ (z >> 31)) % n as u64) as usize
     }
+}
+
+/// The step from `q` to `p` measured along the unit plane normal `n` (rise)
+/// and across it (run).
+fn rise_run(p: [f32; 3], q: [f32; 3], n: [f64; 4]) -> (f64, f64) {
+    let d = [
+        f64::from(p[0] - q[0]),
+        f64::from(p[1] - q[1]),
+        f64::from(p[2] - q[2]),
+    ];
+    let rise = d[0] * n[0] + d[1] * n[1] + d[2] * n[2];
+    let run = ((d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) - rise * rise)
+        .max(0.0)
+        .sqrt();
+    (rise, run)
 }
 
 fn plane_through(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> Option<[f64; 4]> {
@@ -371,6 +370,30 @@ pub struct GroundScore {
     pub recall: f64,
 }
 
+impl GroundScore {
+    /// The score of these counts, with precision and recall derived from them.
+    pub fn from_counts(
+        true_positives: usize,
+        false_positives: usize,
+        false_negatives: usize,
+    ) -> Self {
+        let ratio = |a: usize, b: usize| {
+            if a + b == 0 {
+                1.0
+            } else {
+                a as f64 / (a + b) as f64
+            }
+        };
+        Self {
+            true_positives,
+            false_positives,
+            false_negatives,
+            precision: ratio(true_positives, false_positives),
+            recall: ratio(true_positives, false_negatives),
+        }
+    }
+}
+
 /// Score a ground mask against the true one (pixels counted only where the
 /// image has a point).
 pub fn score_ground(image: &RangeImage, got: &[bool], truth: &[bool]) -> Result<GroundScore> {
@@ -398,16 +421,11 @@ pub fn score_ground(image: &RangeImage, got: &[bool], truth: &[bool]) -> Result<
             (false, false) => {}
         }
     }
-    let ratio = |a: usize, b: usize| {
-        if a + b == 0 {
-            1.0
-        } else {
-            a as f64 / (a + b) as f64
-        }
-    };
-    s.precision = ratio(s.true_positives, s.false_positives);
-    s.recall = ratio(s.true_positives, s.false_negatives);
-    Ok(s)
+    Ok(GroundScore::from_counts(
+        s.true_positives,
+        s.false_positives,
+        s.false_negatives,
+    ))
 }
 
 #[cfg(test)]
