@@ -7,13 +7,17 @@
 //! [`ConvertArgs`] / [`run_convert`], [`EvalArgs`] / [`run_eval`].
 
 use crate::model_args::ModelArgs;
+use crate::sensor_args::{for_each_velodyne_frame, velodyne_summary, VelodyneArgs};
 use anyhow::{bail, Context};
 use clap::Args;
 use fcc_golden::MergeMode;
-use fcc_lidar::cloud::{read_point_cloud, write_ply, CloudFormat, PlyFormat};
+use fcc_lidar::cloud::{read_point_cloud, write_ply_with_intensity, CloudFormat, PlyFormat};
+use fcc_lidar::clusters::{cluster_rows, write_cluster_table, ClusterRow};
 use fcc_lidar::eval::{evaluate, score_frame, synthetic_frames, EvalConfig, EvalFrame};
 use fcc_lidar::ground::{GroundMethod, GroundParams};
-use fcc_lidar::labels::{read_label_file, semantickitti_instances, write_label_file};
+use fcc_lidar::labels::{
+    read_label_file, semantickitti_instances, write_label_file, DEFAULT_LABEL_CLASS,
+};
 use fcc_lidar::ouster::{
     explain_no_frames, CaptureStats, CoordFrame, DecodeOptions, OusterFrame, OusterMetadata,
     OusterReader,
@@ -170,6 +174,8 @@ pub struct ClusterLidarArgs {
     pub projection: ProjectionArgs,
     #[command(flatten)]
     pub ouster: OusterArgs,
+    #[command(flatten)]
+    pub velodyne: VelodyneArgs,
     /// Ground truth per input, in input order: SemanticKITTI .label for a
     /// point cloud, a .npy label image (R, C) for a range image. Shown beside
     /// the clustering in the picture and scored in --stats.
@@ -186,9 +192,18 @@ pub struct ClusterLidarArgs {
     /// point of the PLY (valid pixels in raster order) for a range image.
     #[arg(long)]
     pub label: Option<PathBuf>,
-    /// Write the clustered points as a colour PLY with a label property.
+    /// Semantic class of clustered points in --label (SemanticKITTI id;
+    /// default 10, car, the commonest thing class).
+    #[arg(long, default_value_t = DEFAULT_LABEL_CLASS)]
+    pub label_class: u16,
+    /// Write the clustered points as a colour PLY with a label property
+    /// (and intensity when the input has it).
     #[arg(long)]
     pub ply: Option<PathBuf>,
+    /// Write one row per cluster per frame (id, points, centroid, box,
+    /// closest and farthest range, first pixel) as .csv or .json.
+    #[arg(long)]
+    pub clusters: Option<PathBuf>,
     /// Half-width of the bird's-eye view, metres (default: from the data).
     #[arg(long)]
     pub bev_extent: Option<f32>,
@@ -213,6 +228,8 @@ struct Item {
     truth: Option<Vec<u32>>,
     /// Ground truth per input point (point clouds).
     truth_points: Option<Vec<u32>>,
+    /// Intensity per input point (point clouds) or per pixel (range images).
+    intensity: Option<Vec<f32>>,
 }
 
 fn stem(path: &Path) -> String {
@@ -304,6 +321,7 @@ fn cloud_item(path: &Path, truth: Option<&Path>, proj: &ProjectionConfig) -> any
         projection: Some((projection, cloud.points)),
         truth,
         truth_points,
+        intensity: cloud.intensity,
     })
 }
 
@@ -334,6 +352,7 @@ fn npy_item(path: &Path, truth: Option<&Path>) -> anyhow::Result<Item> {
         projection: None,
         truth,
         truth_points: None,
+        intensity: None,
     })
 }
 
@@ -383,7 +402,7 @@ fn process(
     cfg: &PipelineConfig,
     item: &Item,
     single: bool,
-) -> anyhow::Result<String> {
+) -> anyhow::Result<(String, Vec<ClusterRow>)> {
     let t = Instant::now();
     let out: PipelineResult = cluster_image(&item.image, cfg).with_context(|| item.name.clone())?;
     let time_ms = t.elapsed().as_secs_f64() * 1e3;
@@ -439,7 +458,12 @@ fn process(
         )?;
     }
     // Per-point labels: every input point of a cloud, valid pixels otherwise.
-    let (points, labels, ground): (Vec<[f32; 3]>, Vec<u32>, Vec<bool>) = match &item.projection {
+    let (points, labels, ground, intensity): (
+        Vec<[f32; 3]>,
+        Vec<u32>,
+        Vec<bool>,
+        Option<Vec<f32>>,
+    ) = match &item.projection {
         Some((proj, pts)) => {
             let labels = proj.labels_to_points(&out.labels, BackProjection::default())?;
             let g: Vec<u32> = out.ground.mask.iter().map(|&g| u32::from(g)).collect();
@@ -448,6 +472,7 @@ fn process(
                 pts.clone(),
                 labels,
                 ground.iter().map(|&g| g == 1).collect(),
+                item.intensity.clone(),
             )
         }
         None => {
@@ -458,6 +483,9 @@ fn process(
                 idx.iter().filter_map(|&i| item.image.point(i)).collect(),
                 idx.iter().map(|&i| out.labels[i]).collect(),
                 idx.iter().map(|&i| out.ground.mask[i]).collect(),
+                item.intensity
+                    .as_ref()
+                    .map(|v| idx.iter().map(|&i| v[i]).collect()),
             )
         }
     };
@@ -466,7 +494,12 @@ fn process(
         quality = Some(score_frame(&labels, truth_points, &EvalConfig::default())?.scores());
     }
     if let Some(p) = &args.label {
-        write_label_file(&output_path(p, &item.name, single), &labels, Some(&ground))?;
+        write_label_file(
+            &output_path(p, &item.name, single),
+            &labels,
+            Some(&ground),
+            args.label_class,
+        )?;
     }
     if let Some(p) = &args.ply {
         let colours: Vec<[u8; 3]> = labels
@@ -480,11 +513,12 @@ fn process(
                 }
             })
             .collect();
-        write_ply(
+        write_ply_with_intensity(
             &output_path(p, &item.name, single),
             &points,
             Some(&colours),
             Some(&labels),
+            intensity.as_deref(),
             PlyFormat::BinaryLittleEndian,
         )?;
     }
@@ -506,7 +540,12 @@ fn process(
         time_ms,
         quality,
     };
-    Ok(serde_json::to_string(&stats)?)
+    let rows = if args.clusters.is_some() {
+        cluster_rows(&item.name, &points, &labels, &out.labels, item.image.cols)?
+    } else {
+        Vec::new()
+    };
+    Ok((serde_json::to_string(&stats)?, rows))
 }
 
 fn progress_bar(len: Option<u64>, what: &str) -> ProgressBar {
@@ -555,8 +594,9 @@ pub fn run_cluster(args: &ClusterLidarArgs) -> anyhow::Result<()> {
             || capture_has_one_frame(&args.input[0], args));
     let pb = progress_bar(None, "frames");
     let mut lines = Vec::new();
+    let mut table = Vec::new();
     let mut flush = |items: &mut Vec<Item>| -> anyhow::Result<()> {
-        let res: Vec<anyhow::Result<String>> = pool.install(|| {
+        let res: Vec<anyhow::Result<(String, Vec<ClusterRow>)>> = pool.install(|| {
             items
                 .par_iter()
                 .map(|it| process(args, &cfgs[usize::from(it.range_image)], it, single))
@@ -565,14 +605,51 @@ pub fn run_cluster(args: &ClusterLidarArgs) -> anyhow::Result<()> {
         pb.inc(items.len() as u64);
         items.clear();
         for r in res {
-            lines.push(r?);
+            let (line, rows) = r?;
+            lines.push(line);
+            table.extend(rows);
         }
         Ok(())
     };
     let mut items = Vec::new();
     for (k, input) in args.input.iter().enumerate() {
         let truth = args.truth.get(k).map(PathBuf::as_path);
-        if is_capture(input) {
+        if is_capture(input)
+            && args
+                .velodyne
+                .is_velodyne(input, args.ouster.meta.as_deref())
+        {
+            if truth.is_some() {
+                bail!(
+                    "{}: ground truth for Velodyne captures is not supported",
+                    input.display()
+                );
+            }
+            let o = &args.ouster;
+            let (used, s, model) = for_each_velodyne_frame(
+                input,
+                &args.velodyne,
+                o.keep_incomplete,
+                o.skip_frames,
+                o.max_frames,
+                |frame| {
+                    items.push(Item {
+                        name: format!("{}_f{:05}", stem(input), frame.index),
+                        range_image: false,
+                        image: frame.image,
+                        projection: None,
+                        truth: None,
+                        truth_points: None,
+                        intensity: Some(frame.intensity),
+                    });
+                    if items.len() >= batch {
+                        flush(&mut items)?;
+                    }
+                    Ok(())
+                },
+            )?;
+            eprintln!("{}", velodyne_summary(input, used, &s, model));
+        } else if is_capture(input) {
             if truth.is_some() {
                 bail!(
                     "{}: ground truth for Ouster captures is not supported",
@@ -587,6 +664,7 @@ pub fn run_cluster(args: &ClusterLidarArgs) -> anyhow::Result<()> {
                     projection: None,
                     truth: None,
                     truth_points: None,
+                    intensity: None,
                 });
                 if items.len() >= batch {
                     flush(&mut items)?;
@@ -619,6 +697,9 @@ pub fn run_cluster(args: &ClusterLidarArgs) -> anyhow::Result<()> {
     }
     flush(&mut items)?;
     pb.finish_and_clear();
+    if let Some(p) = &args.clusters {
+        write_cluster_table(p, &table)?;
+    }
     if args.stats {
         for l in &lines {
             println!("{l}");
@@ -630,6 +711,22 @@ pub fn run_cluster(args: &ClusterLidarArgs) -> anyhow::Result<()> {
 /// Whether a capture holds exactly one usable frame (decoding it twice is
 /// cheap next to clustering and keeps output names simple).
 fn capture_has_one_frame(path: &Path, args: &ClusterLidarArgs) -> bool {
+    if args.velodyne.is_velodyne(path, args.ouster.meta.as_deref()) {
+        let o = &args.ouster;
+        let mut n = 0;
+        let _ = for_each_velodyne_frame(
+            path,
+            &args.velodyne,
+            o.keep_incomplete,
+            o.skip_frames,
+            Some(2),
+            |_| {
+                n += 1;
+                Ok(())
+            },
+        );
+        return n == 1;
+    }
     let Ok(meta) = metadata_for(path, args.ouster.meta.as_deref()) else {
         return false;
     };
@@ -689,6 +786,8 @@ pub struct ConvertArgs {
     pub projection: ProjectionArgs,
     #[command(flatten)]
     pub ouster: OusterArgs,
+    #[command(flatten)]
+    pub velodyne: VelodyneArgs,
 }
 
 /// `fcc convert`: range images as .npy, for `cluster`, `sim` and other tools.
@@ -696,7 +795,25 @@ pub fn run_convert(args: &ConvertArgs) -> anyhow::Result<()> {
     let proj = args.projection.config()?;
     let mut images: Vec<(String, RangeImage)> = Vec::new();
     for input in &args.input {
-        if is_capture(input) {
+        if is_capture(input)
+            && args
+                .velodyne
+                .is_velodyne(input, args.ouster.meta.as_deref())
+        {
+            let o = &args.ouster;
+            let (used, s, model) = for_each_velodyne_frame(
+                input,
+                &args.velodyne,
+                o.keep_incomplete,
+                o.skip_frames,
+                o.max_frames,
+                |f| {
+                    images.push((format!("{}_f{:05}", stem(input), f.index), f.image));
+                    Ok(())
+                },
+            )?;
+            eprintln!("{}", velodyne_summary(input, used, &s, model));
+        } else if is_capture(input) {
             for_each_frame(input, &args.ouster, |f| {
                 images.push((format!("{}_f{:05}", stem(input), f.frame_id), f.image));
                 Ok(())

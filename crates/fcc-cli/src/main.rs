@@ -15,6 +15,7 @@ mod cmd_scene;
 mod cmd_sim;
 mod cmd_synth;
 mod model_args;
+mod sensor_args;
 
 #[derive(Parser)]
 #[command(

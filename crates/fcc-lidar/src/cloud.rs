@@ -522,9 +522,30 @@ pub fn write_ply(
     labels: Option<&[u32]>,
     format: PlyFormat,
 ) -> Result<()> {
+    write_ply_with_intensity(path, points, colours, labels, None, format)
+}
+
+/// Write points as PLY, with a colour, a label (a signed 32-bit `int`
+/// property, which Open3D and most readers keep) and an `intensity`
+/// (`float`) per point when given.
+pub fn write_ply_with_intensity(
+    path: &Path,
+    points: &[[f32; 3]],
+    colours: Option<&[[u8; 3]]>,
+    labels: Option<&[u32]>,
+    intensity: Option<&[f32]>,
+    format: PlyFormat,
+) -> Result<()> {
+    if let Some(l) = labels.and_then(|l| l.iter().find(|&&v| i32::try_from(v).is_err())) {
+        return Err(LidarError::Config(format!(
+            "{}: label {l} does not fit the signed 32-bit PLY label",
+            path.display()
+        )));
+    }
     for (what, n) in [
         ("colours", colours.map(<[_]>::len)),
         ("labels", labels.map(<[_]>::len)),
+        ("intensities", intensity.map(<[_]>::len)),
     ] {
         if let Some(n) = n {
             if n != points.len() {
@@ -551,8 +572,11 @@ pub fn write_ply(
     if colours.is_some() {
         header.push_str("property uchar red\nproperty uchar green\nproperty uchar blue\n");
     }
+    if intensity.is_some() {
+        header.push_str("property float intensity\n");
+    }
     if labels.is_some() {
-        header.push_str("property uint label\n");
+        header.push_str("property int label\n");
     }
     header.push_str("end_header\n");
     w.write_all(header.as_bytes()).map_err(io)?;
@@ -562,6 +586,9 @@ pub fn write_ply(
             let mut l = format!("{} {} {}", p[0], p[1], p[2]);
             if let Some(c) = colours {
                 l.push_str(&format!(" {} {} {}", c[i][0], c[i][1], c[i][2]));
+            }
+            if let Some(v) = intensity {
+                l.push_str(&format!(" {}", v[i]));
             }
             if let Some(lab) = labels {
                 l.push_str(&format!(" {}", lab[i]));
@@ -580,8 +607,17 @@ pub fn write_ply(
             if let Some(c) = colours {
                 w.write_all(&c[i]).map_err(io)?;
             }
+            if let Some(v) = intensity {
+                let v = v[i];
+                w.write_all(&if big {
+                    v.to_be_bytes()
+                } else {
+                    v.to_le_bytes()
+                })
+                .map_err(io)?;
+            }
             if let Some(lab) = labels {
-                let v = lab[i];
+                let v = lab[i] as i32;
                 w.write_all(&if big {
                     v.to_be_bytes()
                 } else {

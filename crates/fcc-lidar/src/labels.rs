@@ -30,32 +30,69 @@ pub fn unpack_label(label: u32) -> (u16, u16) {
     ((label & 0xffff) as u16, (label >> 16) as u16)
 }
 
-/// Write a SemanticKITTI `.label` file: per point, the cluster id as
-/// instance (0 = none) and class [`SEMANTIC_GROUND`] where `ground` says so.
-pub fn write_label_file(path: &Path, instances: &[u32], ground: Option<&[bool]>) -> Result<()> {
+/// The default semantic class of clustered points in `.label` files:
+/// SemanticKITTI "car" (10), the commonest thing class, so the dataset's
+/// own evaluator takes fcc's clusters as instances.
+pub const DEFAULT_LABEL_CLASS: u16 = 10;
+
+/// Raw SemanticKITTI labels: per point, the cluster id as instance with
+/// class `class` (0 = none, class 0), and class [`SEMANTIC_GROUND`] where
+/// `ground` says so.
+pub fn semantic_labels(instances: &[u32], ground: Option<&[bool]>, class: u16) -> Result<Vec<u32>> {
     if let Some(g) = ground {
         if g.len() != instances.len() {
             return Err(LidarError::Mismatch {
-                what: format!("ground flags for the labels of {}", path.display()),
+                what: "ground flags for the labels".into(),
                 expected: instances.len(),
                 got: g.len(),
             });
         }
     }
-    let mut out = Vec::with_capacity(instances.len() * 4);
-    for (i, &inst) in instances.iter().enumerate() {
-        let inst16 = u16::try_from(inst).map_err(|_| {
-            LidarError::Config(format!(
-                "{}: cluster id {inst} does not fit the 16-bit instance field of a .label file",
-                path.display()
-            ))
-        })?;
-        let sem = if ground.is_some_and(|g| g[i]) {
-            SEMANTIC_GROUND
-        } else {
-            0
-        };
-        out.extend_from_slice(&pack_label(sem, inst16).to_le_bytes());
+    instances
+        .iter()
+        .enumerate()
+        .map(|(i, &inst)| {
+            let inst16 = u16::try_from(inst).map_err(|_| {
+                LidarError::Config(format!(
+                    "cluster id {inst} does not fit the 16-bit instance field of a .label file"
+                ))
+            })?;
+            Ok(if inst16 != 0 {
+                pack_label(class, inst16)
+            } else if ground.is_some_and(|g| g[i]) {
+                pack_label(SEMANTIC_GROUND, 0)
+            } else {
+                0
+            })
+        })
+        .collect()
+}
+
+/// Write a SemanticKITTI `.label` file: per point, the cluster id as
+/// instance (0 = none) with class `class`, and class [`SEMANTIC_GROUND`]
+/// where `ground` says so.
+pub fn write_label_file(
+    path: &Path,
+    instances: &[u32],
+    ground: Option<&[bool]>,
+    class: u16,
+) -> Result<()> {
+    let labels = semantic_labels(instances, ground, class).map_err(|e| match e {
+        LidarError::Config(m) => LidarError::Config(format!("{}: {m}", path.display())),
+        LidarError::Mismatch {
+            what,
+            expected,
+            got,
+        } => LidarError::Mismatch {
+            what: format!("{what} of {}", path.display()),
+            expected,
+            got,
+        },
+        e => e,
+    })?;
+    let mut out = Vec::with_capacity(labels.len() * 4);
+    for l in labels {
+        out.extend_from_slice(&l.to_le_bytes());
     }
     std::fs::write(path, out).map_err(|e| LidarError::io(path, e))
 }
@@ -151,18 +188,30 @@ mod tests {
     fn label_files_round_trip_and_check_sizes() {
         let dir = tempfile::tempdir().unwrap();
         let p = dir.path().join("000000.label");
-        write_label_file(&p, &[0, 5, 70_000 - 4_465], Some(&[true, false, false])).unwrap();
+        write_label_file(&p, &[0, 5, 70_000 - 4_465], Some(&[true, false, false]), 0).unwrap();
         let raw = read_label_file(&p, Some(3)).unwrap();
         assert_eq!(
             raw.iter().map(|&l| unpack_label(l)).collect::<Vec<_>>(),
             vec![(49, 0), (0, 5), (0, 65_535)]
+        );
+        write_label_file(
+            &p,
+            &[0, 5, 0],
+            Some(&[true, false, false]),
+            DEFAULT_LABEL_CLASS,
+        )
+        .unwrap();
+        let raw = read_label_file(&p, Some(3)).unwrap();
+        assert_eq!(
+            raw.iter().map(|&l| unpack_label(l)).collect::<Vec<_>>(),
+            vec![(49, 0), (10, 5), (0, 0)]
         );
         let err = read_label_file(&p, Some(4)).unwrap_err().to_string();
         assert!(
             err.contains("000000.label") && err.contains("3 labels for a scan of 4 points"),
             "{err}"
         );
-        let err = write_label_file(&p, &[70_000], None)
+        let err = write_label_file(&p, &[70_000], None, 0)
             .unwrap_err()
             .to_string();
         assert!(err.contains("cluster id 70000 does not fit"), "{err}");

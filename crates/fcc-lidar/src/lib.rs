@@ -36,6 +36,7 @@
 //! ```
 
 pub mod cloud;
+pub mod clusters;
 pub mod error;
 pub mod eval;
 pub mod ground;
@@ -46,6 +47,8 @@ pub mod pcap;
 pub mod picture;
 pub mod pipeline;
 pub mod projection;
+pub mod semantickitti;
+pub mod velodyne;
 
 pub use error::{LidarError, Result};
 pub use image::RangeImage;

@@ -197,6 +197,6 @@ mod tests {
         assert_eq!(back.len(), img.valid_count());
         let text = std::fs::read(&p).unwrap();
         let header = String::from_utf8_lossy(&text[..300]);
-        assert!(header.contains("property uchar red") && header.contains("property uint label"));
+        assert!(header.contains("property uchar red") && header.contains("property int label"));
     }
 }
