@@ -857,13 +857,24 @@ pub struct EvalArgs {
     /// Render the synthetic scenes without ground (as after a perfect ground removal).
     #[arg(long)]
     pub no_ground: bool,
-    /// Point clouds with SemanticKITTI ground truth instead of synthetic scenes
-    /// (pair each with --truth, in order).
+    /// Inputs with ground truth instead of synthetic scenes (pair each with
+    /// --truth, in order): point clouds (.bin, .pcd, .ply) with SemanticKITTI
+    /// .label files, or .npy range images (R, C, 3) with .npy instance
+    /// images (R, C).
     #[arg(long, num_args = 1..)]
     pub input: Vec<PathBuf>,
-    /// SemanticKITTI .label files for --input.
+    /// Ground truth for --input: SemanticKITTI .label, or .npy label images.
     #[arg(long, num_args = 1..)]
     pub truth: Vec<PathBuf>,
+    /// Scoring rules: `fcc` (class-agnostic, void-aware; see docs/lidar.md)
+    /// or `semantickitti` (evaluate_panoptic.py's PanopticEval: 19 classes,
+    /// stuff counted; needs point clouds with .label ground truth).
+    #[arg(long, value_enum, default_value_t = Rules::Fcc)]
+    pub rules: Rules,
+    /// Semantic class of clustered points under `--rules semantickitti`
+    /// (SemanticKITTI id, as `cluster --label-class`).
+    #[arg(long, default_value_t = DEFAULT_LABEL_CLASS)]
+    pub label_class: u16,
     #[command(flatten)]
     pub projection: ProjectionArgs,
     /// Filter sizes K to evaluate.
@@ -886,9 +897,11 @@ pub struct EvalArgs {
     /// Drop clusters of N points or fewer before scoring.
     #[arg(long, default_value_t = 0)]
     pub min_points: usize,
-    /// Ignore ground-truth instances with fewer points.
-    #[arg(long, default_value_t = 1)]
-    pub min_instance_points: usize,
+    /// Ignore ground-truth instances with fewer points (`fcc` rules, default
+    /// 1); under `semantickitti`, unmatched segments with fewer points are
+    /// neither FN nor FP (default 50, as evaluate_panoptic.py).
+    #[arg(long)]
+    pub min_instance_points: Option<usize>,
     /// Write the table as JSON here.
     #[arg(long)]
     pub json: Option<PathBuf>,
@@ -900,11 +913,21 @@ pub struct EvalArgs {
     pub jobs: Option<usize>,
 }
 
+/// Scoring rules of `fcc eval`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Rules {
+    Fcc,
+    Semantickitti,
+}
+
 /// `fcc eval`: the quality table.
 pub fn run_eval(args: &EvalArgs) -> anyhow::Result<()> {
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(args.jobs.unwrap_or(0))
         .build()?;
+    if args.rules == Rules::Semantickitti {
+        return run_eval_semantickitti(args, &pool);
+    }
     let frames: Vec<EvalFrame> = if args.input.is_empty() {
         if args.synthetic == 0 {
             bail!("nothing to evaluate: give --synthetic N or --input with --truth");
@@ -934,7 +957,11 @@ pub fn run_eval(args: &EvalArgs) -> anyhow::Result<()> {
             .iter()
             .zip(&args.truth)
             .map(|(i, t)| -> anyhow::Result<EvalFrame> {
-                let item = cloud_item(i, Some(t), &proj)?;
+                let item = if is_npy(i) {
+                    npy_item(i, Some(t))?
+                } else {
+                    cloud_item(i, Some(t), &proj)?
+                };
                 Ok(EvalFrame {
                     name: item.name,
                     image: item.image,
@@ -944,17 +971,10 @@ pub fn run_eval(args: &EvalArgs) -> anyhow::Result<()> {
             })
             .collect::<anyhow::Result<_>>()?
     };
-    let base = PipelineConfig {
-        params: fcc_params::FccParams {
-            th_h: args.th_h,
-            th_v: args.th_v,
-            label_bits: args.label_bits,
-            ..fcc_params::FccParams::default()
-        },
-        mode: MergeMode::Exact,
-        ground: args.ground.params(false)?,
-        min_points: args.min_points,
-    };
+    // .npy range images are taken as prepared (no ground removal by
+    // default), as in `fcc cluster`.
+    let all_npy = !args.input.is_empty() && args.input.iter().all(|i| is_npy(i));
+    let base = eval_base(args, all_npy)?;
     let pb = progress_bar(Some(frames.len() as u64), "frames");
     let table = pool.install(|| {
         evaluate(
@@ -963,8 +983,83 @@ pub fn run_eval(args: &EvalArgs) -> anyhow::Result<()> {
             &args.fsizes,
             &args.modes,
             &EvalConfig {
-                min_instance_points: args.min_instance_points,
+                min_instance_points: args.min_instance_points.unwrap_or(1),
             },
+            &|| pb.inc(1),
+        )
+    })?;
+    pb.finish_and_clear();
+    let md = table.to_markdown();
+    println!("{md}");
+    if let Some(p) = &args.markdown {
+        std::fs::write(p, &md).with_context(|| format!("{}: cannot write", p.display()))?;
+    }
+    if let Some(p) = &args.json {
+        std::fs::write(p, serde_json::to_string_pretty(&table)?)
+            .with_context(|| format!("{}: cannot write", p.display()))?;
+    }
+    Ok(())
+}
+
+/// The pipeline settings of `fcc eval`.
+fn eval_base(args: &EvalArgs, range_images: bool) -> anyhow::Result<PipelineConfig> {
+    Ok(PipelineConfig {
+        params: fcc_params::FccParams {
+            th_h: args.th_h,
+            th_v: args.th_v,
+            label_bits: args.label_bits,
+            ..fcc_params::FccParams::default()
+        },
+        mode: MergeMode::Exact,
+        ground: args.ground.params(range_images)?,
+        min_points: args.min_points,
+    })
+}
+
+/// `fcc eval --rules semantickitti`: point clouds with their .label files,
+/// scored as SemanticKITTI's evaluate_panoptic.py scores them.
+fn run_eval_semantickitti(args: &EvalArgs, pool: &rayon::ThreadPool) -> anyhow::Result<()> {
+    use fcc_lidar::semantickitti::{evaluate, ScanTruth, DEFAULT_MIN_POINTS};
+    if args.input.is_empty() {
+        bail!("--rules semantickitti needs point clouds with SemanticKITTI ground truth: give --input and --truth");
+    }
+    if args.truth.len() != args.input.len() {
+        bail!(
+            "--truth names {} files for {} inputs: give one per input, in order",
+            args.truth.len(),
+            args.input.len()
+        );
+    }
+    let proj = args.projection.config()?;
+    let scans = args
+        .input
+        .iter()
+        .zip(&args.truth)
+        .map(|(i, t)| -> anyhow::Result<ScanTruth> {
+            if CloudFormat::from_path(i).is_none() {
+                bail!(
+                    "{}: --rules semantickitti scores point clouds (.bin, .pcd, .ply) with .label ground truth",
+                    i.display()
+                );
+            }
+            let cloud = read_point_cloud(i)?;
+            Ok(ScanTruth {
+                name: stem(i),
+                labels: read_label_file(t, Some(cloud.len()))?,
+                projection: project(&cloud.points, &proj)?,
+            })
+        })
+        .collect::<anyhow::Result<Vec<_>>>()?;
+    let base = eval_base(args, false)?;
+    let pb = progress_bar(Some(scans.len() as u64), "scans");
+    let table = pool.install(|| {
+        evaluate(
+            &scans,
+            &base,
+            &args.fsizes,
+            &args.modes,
+            args.label_class,
+            args.min_instance_points.unwrap_or(DEFAULT_MIN_POINTS),
             &|| pb.inc(1),
         )
     })?;

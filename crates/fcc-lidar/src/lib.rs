@@ -47,6 +47,7 @@ pub mod pcap;
 pub mod picture;
 pub mod pipeline;
 pub mod projection;
+pub mod rosbag;
 pub mod semantickitti;
 pub mod velodyne;
 
