@@ -176,6 +176,9 @@ pub struct ClusterLidarArgs {
     pub ouster: OusterArgs,
     #[command(flatten)]
     pub velodyne: VelodyneArgs,
+    /// Topic of .mcap inputs (default: the only sensor_msgs/msg/PointCloud2 topic).
+    #[arg(long)]
+    pub topic: Option<String>,
     /// Ground truth per input, in input order: SemanticKITTI .label for a
     /// point cloud, a .npy label image (R, C) for a range image. Shown beside
     /// the clustering in the picture and scored in --stats.
@@ -259,6 +262,87 @@ fn is_capture(path: &Path) -> bool {
             .as_deref(),
         Some("pcap" | "pcapng")
     )
+}
+
+fn is_mcap(path: &Path) -> bool {
+    path.extension()
+        .and_then(|e| e.to_str())
+        .is_some_and(|e| e.eq_ignore_ascii_case("mcap"))
+}
+
+/// The range image of one PointCloud2 message: organised clouds as they
+/// stand, unorganised ones projected (with the projection kept to map
+/// labels back to the points).
+fn cloud2_item(
+    name: String,
+    c: fcc_lidar::rosbag::Cloud2,
+    proj: &ProjectionConfig,
+) -> anyhow::Result<Item> {
+    if let Some((image, intensity)) = c.range_image()? {
+        return Ok(Item {
+            name,
+            range_image: false,
+            image,
+            projection: None,
+            truth: None,
+            truth_points: None,
+            intensity,
+        });
+    }
+    let (points, intensity) = c.finite_points();
+    let projection = project(&points, proj)?;
+    Ok(Item {
+        name,
+        range_image: false,
+        image: projection.image.clone(),
+        projection: Some((projection, points)),
+        truth: None,
+        truth_points: None,
+        intensity,
+    })
+}
+
+/// Every cloud of a recording as an item, handed to `f`; the summary line
+/// goes to stderr.
+fn for_each_mcap_item(
+    input: &Path,
+    topic: Option<&str>,
+    proj: &ProjectionConfig,
+    mut f: impl FnMut(Item) -> anyhow::Result<()>,
+) -> anyhow::Result<()> {
+    let mut err = None;
+    let s = fcc_lidar::rosbag::read_pointclouds(input, topic, |k, c| {
+        let item = match cloud2_item(format!("{}_m{k:05}", stem(input)), c, proj) {
+            Ok(i) => i,
+            Err(e) => {
+                err = Some(e);
+                return Err(fcc_lidar::LidarError::Config("stopped".into()));
+            }
+        };
+        f(item).map_err(|e| {
+            err = Some(e);
+            fcc_lidar::LidarError::Config("stopped".into())
+        })
+    });
+    if let Some(e) = err {
+        return Err(e);
+    }
+    let s = s?;
+    eprintln!(
+        "{}: {} PointCloud2 messages used, {} malformed{}{}",
+        input.display(),
+        s.clouds,
+        s.malformed,
+        s.first_problem
+            .as_ref()
+            .map(|p| format!(" (first: {p})"))
+            .unwrap_or_default(),
+        s.cut_short
+            .as_ref()
+            .map(|c| format!("; the file breaks off: {c}"))
+            .unwrap_or_default()
+    );
+    Ok(())
 }
 
 fn is_npy(path: &Path) -> bool {
@@ -589,6 +673,7 @@ pub fn run_cluster(args: &ClusterLidarArgs) -> anyhow::Result<()> {
     let batch = pool.current_num_threads().max(1) * 2;
     // One result overall keeps output names as given.
     let single = args.input.len() == 1
+        && !is_mcap(&args.input[0])
         && (!is_capture(&args.input[0])
             || args.ouster.max_frames == Some(1)
             || capture_has_one_frame(&args.input[0], args));
@@ -681,13 +766,27 @@ pub fn run_cluster(args: &ClusterLidarArgs) -> anyhow::Result<()> {
                 s.incomplete_frames,
                 s.pcap.unreassembled_fragments
             );
+        } else if is_mcap(input) {
+            if truth.is_some() {
+                bail!(
+                    "{}: ground truth for MCAP recordings is not supported",
+                    input.display()
+                );
+            }
+            for_each_mcap_item(input, args.topic.as_deref(), &proj, |item| {
+                items.push(item);
+                if items.len() >= batch {
+                    flush(&mut items)?;
+                }
+                Ok(())
+            })?;
         } else if is_npy(input) {
             items.push(npy_item(input, truth)?);
         } else if CloudFormat::from_path(input).is_some() {
             items.push(cloud_item(input, truth, &proj)?);
         } else {
             bail!(
-                "{}: unknown input type (expected .pcap, .pcapng, .bin, .pcd, .ply or .npy)",
+                "{}: unknown input type (expected .pcap, .pcapng, .mcap, .bin, .pcd, .ply or .npy)",
                 input.display()
             );
         }
@@ -788,6 +887,9 @@ pub struct ConvertArgs {
     pub ouster: OusterArgs,
     #[command(flatten)]
     pub velodyne: VelodyneArgs,
+    /// Topic of .mcap inputs (default: the only sensor_msgs/msg/PointCloud2 topic).
+    #[arg(long)]
+    pub topic: Option<String>,
 }
 
 /// `fcc convert`: range images as .npy, for `cluster`, `sim` and other tools.
@@ -818,12 +920,17 @@ pub fn run_convert(args: &ConvertArgs) -> anyhow::Result<()> {
                 images.push((format!("{}_f{:05}", stem(input), f.frame_id), f.image));
                 Ok(())
             })?;
+        } else if is_mcap(input) {
+            for_each_mcap_item(input, args.topic.as_deref(), &proj, |item| {
+                images.push((item.name, item.image));
+                Ok(())
+            })?;
         } else if CloudFormat::from_path(input).is_some() {
             let cloud = read_point_cloud(input)?;
             images.push((stem(input), project(&cloud.points, &proj)?.image));
         } else {
             bail!(
-                "{}: unknown input type (expected .pcap, .pcapng, .bin, .pcd or .ply)",
+                "{}: unknown input type (expected .pcap, .pcapng, .mcap, .bin, .pcd or .ply)",
                 input.display()
             );
         }
