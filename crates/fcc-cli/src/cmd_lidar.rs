@@ -49,7 +49,8 @@ pub struct ProjectionArgs {
     /// Bottom of the vertical field of view, degrees.
     #[arg(long, default_value_t = -25.0, allow_hyphen_values = true)]
     pub fov_down: f64,
-    /// Text file of beam elevations in degrees, one per line, top beam first;
+    /// Beam elevations: a built-in table (vlp16, vlp32c, hdl32e, hdl64e) or
+    /// a text file of elevations in degrees, one per line, top beam first;
     /// replaces the field of view and sets the rows.
     #[arg(long)]
     pub beams: Option<PathBuf>,
@@ -57,7 +58,21 @@ pub struct ProjectionArgs {
 
 impl ProjectionArgs {
     fn config(&self) -> anyhow::Result<ProjectionConfig> {
+        // A built-in beam table, unless a file of that name exists.
+        let table = self
+            .beams
+            .as_ref()
+            .filter(|p| !p.exists())
+            .and_then(|p| fcc_lidar::velodyne::beam_table(&p.to_string_lossy()));
         let cfg = match &self.beams {
+            Some(_) if table.is_some() => {
+                let beams = table.unwrap_or_default();
+                ProjectionConfig {
+                    rows: beams.len(),
+                    cols: self.cols,
+                    layout: VerticalLayout::Beams(beams),
+                }
+            }
             Some(path) => {
                 let text = std::fs::read_to_string(path)
                     .with_context(|| format!("{}: cannot read", path.display()))?;
@@ -852,6 +867,14 @@ fn for_each_frame(
     mut f: impl FnMut(OusterFrame) -> anyhow::Result<()>,
 ) -> anyhow::Result<(usize, CaptureStats)> {
     let meta = metadata_for(input, o.meta.as_deref())?;
+    if meta.transform_default && !o.lidar_frame {
+        eprintln!(
+            "{}: the metadata has no lidar_to_sensor_transform: using the {} default (x, y negated, z + {} mm)",
+            input.display(),
+            meta.prod_line.as_deref().unwrap_or("Ouster SDK"),
+            meta.lidar_to_sensor[11]
+        );
+    }
     let mut reader = OusterReader::open(input, &meta, decode_options(o))?;
     let (mut n, mut used) = (0, 0);
     while let Some(frame) = reader.next_frame()? {

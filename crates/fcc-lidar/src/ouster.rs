@@ -15,7 +15,8 @@
 //! z = (r - n) sin φ
 //! ```
 //!
-//! then `lidar_to_sensor_transform` (identity when absent) maps the lidar
+//! then `lidar_to_sensor_transform` (when absent, the product line's
+//! default, [`default_lidar_to_sensor`]) maps the lidar
 //! frame to the sensor frame, and millimetres become metres. Columns are
 //! destaggered: the pixel of beam `u` from column `v` lands in image column
 //! `(v + shift[u]) mod w`, with `pixel_shift_by_row` when the metadata has
@@ -184,6 +185,9 @@ pub struct OusterMetadata {
     pub beam_origin_default: bool,
     /// Row-major 4 x 4, translation in mm.
     pub lidar_to_sensor: [f64; 16],
+    /// True if `lidar_to_sensor` is the product line's default, not read
+    /// from the metadata.
+    pub transform_default: bool,
     pub udp_port_lidar: Option<u16>,
     pub udp_port_imu: Option<u16>,
 }
@@ -356,14 +360,17 @@ impl OusterMetadata {
                     _ => (default_beam_origin(prod_line.as_deref()), true),
                 },
             };
-        let lidar_to_sensor = match floats("lidar_to_sensor_transform")? {
-            None => IDENTITY,
-            Some(t) => t.as_slice().try_into().map_err(|_| {
-                bad(format!(
-                    "`lidar_to_sensor_transform` has {} numbers, not 16",
-                    t.len()
-                ))
-            })?,
+        let (lidar_to_sensor, transform_default) = match floats("lidar_to_sensor_transform")? {
+            None => (default_lidar_to_sensor(prod_line.as_deref()), true),
+            Some(t) => (
+                t.as_slice().try_into().map_err(|_| {
+                    bad(format!(
+                        "`lidar_to_sensor_transform` has {} numbers, not 16",
+                        t.len()
+                    ))
+                })?,
+                false,
+            ),
         };
         let prod_sn = match find(&root, "prod_sn") {
             Some(Value::String(s)) => s.trim().parse::<u64>().ok().filter(|&n| n != 0),
@@ -392,6 +399,7 @@ impl OusterMetadata {
             beam_origin_mm,
             beam_origin_default,
             lidar_to_sensor,
+            transform_default,
             udp_port_lidar: port("udp_port_lidar"),
             udp_port_imu: port("udp_port_imu"),
         })
@@ -436,6 +444,31 @@ pub fn default_beam_origin(prod_line: Option<&str>) -> f64 {
         Some(p) if p.starts_with("OS-2-") => 13.762,
         _ => DEFAULT_BEAM_ORIGIN_MM,
     }
+}
+
+/// The lidar-to-sensor transform of metadata that lacks one: the lidar
+/// frame turned half round about z (x and y negated) and lifted to the
+/// sensor's base, 78.296 mm on the OS-2 and 36.18 mm on the other lines (the
+/// values the OS-0, OS-1 and OS-2 metadata carry, and 36.18 mm is the
+/// default of Ouster's SDK).
+pub fn default_lidar_to_sensor(prod_line: Option<&str>) -> [f64; 16] {
+    let line: String = prod_line
+        .unwrap_or("")
+        .chars()
+        .filter(|c| c.is_ascii_alphanumeric())
+        .collect::<String>()
+        .to_ascii_uppercase();
+    let lift = if line.starts_with("OS2") {
+        78.296
+    } else {
+        36.18
+    };
+    [
+        -1.0, 0.0, 0.0, 0.0, //
+        0.0, -1.0, 0.0, 0.0, //
+        0.0, 0.0, 1.0, lift, //
+        0.0, 0.0, 0.0, 1.0,
+    ]
 }
 
 /// Destaggering shifts derived from the beam azimuth offsets:

@@ -173,6 +173,25 @@ impl std::str::FromStr for VelodyneModel {
     }
 }
 
+/// Beam elevations in degrees, top beam first, of a model by name
+/// (`vlp16`, `vlp32c`, `hdl32e`, `hdl64e`; case and dashes ignored): the
+/// `--beams` tables for projecting that sensor's point clouds. The HDL-64E
+/// table is the manual's nominal layout (upper block +2 to -8.33 degrees in
+/// steps of 1/3, lower block -8.83 to -24.33 degrees in steps of 1/2); each
+/// unit's calibration differs from it by a fraction of a step.
+pub fn beam_table(name: &str) -> Option<Vec<f64>> {
+    let model = VelodyneModel::from_name(name)?;
+    let mut e: Vec<f64> = match model.nominal() {
+        Some(t) => t.into_iter().map(|(e, _)| e).collect(),
+        None => (0..32)
+            .map(|i| 2.0 - f64::from(i) * (10.33 / 31.0))
+            .chain((0..32).map(|i| -8.83 - f64::from(i) * 0.5))
+            .collect(),
+    };
+    e.sort_by(|a, b| b.total_cmp(a));
+    Some(e)
+}
+
 /// VLP-32C laser elevation and azimuth correction (`rot_correction`), degrees, laser 0 first.
 const VLP32C: [(f64, f64); 32] = [
     (-25.0, 1.4),
@@ -1076,6 +1095,18 @@ mod tests {
             .unwrap_err()
             .to_string()
             .contains("--velodyne-calibration"));
+    }
+
+    #[test]
+    fn beam_tables_of_every_model_fall_strictly() {
+        for name in MODEL_NAMES {
+            let t = beam_table(name).unwrap();
+            assert_eq!(t.len(), VelodyneModel::from_name(name).unwrap().lasers());
+            assert!(t.windows(2).all(|w| w[0] > w[1]), "{name}: {t:?}");
+        }
+        let t = beam_table("HDL-64E").unwrap();
+        assert!((t[0] - 2.0).abs() < 1e-12 && (t[63] + 24.33).abs() < 1e-12);
+        assert!(beam_table("os1").is_none());
     }
 
     #[test]

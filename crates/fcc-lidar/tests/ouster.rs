@@ -551,3 +551,51 @@ fn pcapng_capture_decodes_like_classic() {
     assert_eq!(a.frames.len(), 1);
     assert!(a.frames[0].image == b.frames[0].image);
 }
+
+#[test]
+fn metadata_without_transform_takes_the_product_line_default() {
+    let reduced = meta("OS-1-64_sensor_config_reduced.json");
+    assert!(reduced.transform_default);
+    assert_eq!(
+        reduced.lidar_to_sensor,
+        fcc_lidar::ouster::default_lidar_to_sensor(None)
+    );
+    assert_eq!(reduced.lidar_to_sensor[11], 36.18);
+    // The default is what the metadata of each line carries.
+    for &(_, json, _, _) in CAPTURES
+        .iter()
+        .filter(|c| c.1 != "OS-1-64_sensor_config_reduced.json")
+    {
+        let m = meta(json);
+        assert!(!m.transform_default);
+        assert_eq!(
+            m.lidar_to_sensor,
+            fcc_lidar::ouster::default_lidar_to_sensor(m.prod_line.as_deref()),
+            "{json}"
+        );
+    }
+    // The OS-1-64 capture's sensor frame: the lidar frame turned half round, lifted 36.18 mm.
+    let pcap = data("OS-1-64_1024x10_fw20.pcap");
+    let s = &read_capture(&pcap, &reduced, DecodeOptions::default())
+        .unwrap()
+        .frames[0]
+        .image;
+    let opts = DecodeOptions {
+        frame: CoordFrame::Lidar,
+        ..DecodeOptions::default()
+    };
+    let l = &read_capture(&pcap, &reduced, opts).unwrap().frames[0].image;
+    let mut n = 0;
+    for i in 0..s.pixels() {
+        if let (Some(a), Some(b)) = (s.point(i), l.point(i)) {
+            assert!(
+                (a[0] + b[0]).abs() < 1e-4
+                    && (a[1] + b[1]).abs() < 1e-4
+                    && (a[2] - b[2] - 0.03618).abs() < 1e-4,
+                "pixel {i}: {a:?} vs {b:?}"
+            );
+            n += 1;
+        }
+    }
+    assert!(n > 10_000, "{n}");
+}
