@@ -455,6 +455,9 @@ fn npy_item(path: &Path, truth: Option<&Path>) -> anyhow::Result<Item> {
     })
 }
 
+/// Per point of the outputs: coordinates, cluster, ground, intensity.
+type PerPoint = (Vec<[f32; 3]>, Vec<u32>, Vec<bool>, Option<Vec<f32>>);
+
 /// The `--stats` line of one frame.
 #[derive(Serialize)]
 struct FrameStats {
@@ -557,12 +560,7 @@ fn process(
         )?;
     }
     // Per-point labels: every input point of a cloud, valid pixels otherwise.
-    let (points, labels, ground, intensity): (
-        Vec<[f32; 3]>,
-        Vec<u32>,
-        Vec<bool>,
-        Option<Vec<f32>>,
-    ) = match &item.projection {
+    let (points, labels, ground, intensity): PerPoint = match &item.projection {
         Some((proj, pts)) => {
             let labels = proj.labels_to_points(&out.labels, BackProjection::default())?;
             let g: Vec<u32> = out.ground.mask.iter().map(|&g| u32::from(g)).collect();

@@ -57,16 +57,12 @@ fn organised_clouds_become_range_images_top_beam_first() {
     assert!((elev(0) - 15.0).abs() < 1e-3, "{}", elev(0));
     assert!((elev(15) + 15.0).abs() < 1e-3, "{}", elev(15));
     let mut n = 0;
-    for i in 0..img.pixels() {
+    for (i, &v) in inten.iter().enumerate() {
         if let Some(p) = img.point(i) {
-            assert!(
-                on_scene(p, inten[i]),
-                "pixel {i}: {p:?} intensity {}",
-                inten[i]
-            );
+            assert!(on_scene(p, v), "pixel {i}: {p:?} intensity {v}");
             n += 1;
         } else {
-            assert!(inten[i].is_nan());
+            assert!(v.is_nan());
         }
     }
     assert_eq!(n, img.valid_count());
