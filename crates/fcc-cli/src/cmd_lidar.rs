@@ -762,7 +762,7 @@ pub fn run_cluster(args: &ClusterLidarArgs) -> anyhow::Result<()> {
                     projection: None,
                     truth: None,
                     truth_points: None,
-                    intensity: None,
+                    intensity: Some(frame.reflectivity),
                 });
                 if items.len() >= batch {
                     flush(&mut items)?;

@@ -113,6 +113,17 @@ impl Profile {
         }
     }
 
+    /// Reflectivity of the pixel starting at `px` (16 bits in LEGACY, 8
+    /// otherwise; the first return's in DUAL).
+    fn reflectivity(self, px: &[u8]) -> u16 {
+        match self {
+            Profile::Legacy => u16::from_le_bytes([px[4], px[5]]),
+            Profile::Rng19Rfl8Sig16Nir16 => u16::from(px[4]),
+            Profile::Rng15Rfl8Nir8 => u16::from(px[2]),
+            Profile::Rng19Rfl8Sig16Nir16Dual => u16::from(px[3]),
+        }
+    }
+
     /// Range in millimetres of the pixel starting at `px`; 0 = no return.
     fn range_mm(self, px: &[u8]) -> u32 {
         match self {
@@ -498,6 +509,8 @@ pub struct OusterFrame {
     pub frame_id: u16,
     /// Destaggered: rows = beams (row 0 the top beam), cols = columns per frame.
     pub image: RangeImage,
+    /// Reflectivity per pixel of `image` (NaN where it has no return).
+    pub reflectivity: Vec<f32>,
     pub stats: FrameStats,
 }
 
@@ -596,6 +609,7 @@ impl Lut {
 struct Assembly {
     frame_id: u16,
     range_mm: Vec<u32>,
+    reflectivity: Vec<u16>,
     received: Vec<bool>,
     stats: FrameStats,
 }
@@ -753,6 +767,7 @@ impl<R: Read> OusterReader<R> {
             let a = self.current.get_or_insert_with(|| Assembly {
                 frame_id: fid,
                 range_mm: vec![0; h * w],
+                reflectivity: vec![0; h * w],
                 received: vec![false; w],
                 stats: FrameStats::default(),
             });
@@ -771,12 +786,10 @@ impl<R: Read> OusterReader<R> {
             }
             let px0 = prof.column_header();
             for u in 0..h {
-                let r = if valid {
-                    prof.range_mm(&c[px0 + u * prof.pixel_bytes()..])
-                } else {
-                    0
-                };
+                let px = &c[px0 + u * prof.pixel_bytes()..];
+                let r = if valid { prof.range_mm(px) } else { 0 };
                 a.range_mm[u * w + mid] = r;
+                a.reflectivity[u * w + mid] = prof.reflectivity(px);
             }
         }
         done
@@ -793,6 +806,7 @@ impl<R: Read> OusterReader<R> {
         }
         let min_mm = self.opts.min_range_m * 1000.0;
         let mut image = RangeImage::empty(h, w);
+        let mut reflectivity = vec![f32::NAN; h * w];
         let mut returns = 0;
         for u in 0..h {
             let shift = m.pixel_shift_by_row[u].rem_euclid(w as i64) as usize;
@@ -803,6 +817,7 @@ impl<R: Read> OusterReader<R> {
                 }
                 let col = (v + shift) % w;
                 image.set(u * w + col, Some(self.lut.xyz_m(u, v, r)));
+                reflectivity[u * w + col] = f32::from(a.reflectivity[u * w + v]);
                 returns += 1;
             }
         }
@@ -813,6 +828,7 @@ impl<R: Read> OusterReader<R> {
         Some(OusterFrame {
             frame_id: a.frame_id,
             image,
+            reflectivity,
             stats,
         })
     }

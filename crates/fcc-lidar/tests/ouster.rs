@@ -406,6 +406,11 @@ fn streaming_reader_matches_read_capture() {
 
 /// Build the lidar packets of one frame of `profile` from known ranges
 /// (mm, per beam and measurement column), as the sensor would send them.
+/// The reflectivity `encode_frame` writes (plus 300 in LEGACY's 16 bits).
+fn reflectivity(u: usize, v: usize) -> u16 {
+    ((u * 31 + v) % 200 + 1) as u16
+}
+
 fn encode_frame(
     m: &OusterMetadata,
     frame_id: u16,
@@ -448,6 +453,13 @@ fn encode_frame(
                 px[ps - 1] = 0xff;
                 if m.profile == Profile::Rng19Rfl8Sig16Nir16Dual {
                     px[4..8].copy_from_slice(&(r + 5000).to_le_bytes());
+                }
+                let refl = reflectivity(u, v);
+                match m.profile {
+                    Profile::Legacy => px[4..6].copy_from_slice(&(refl + 300).to_le_bytes()),
+                    Profile::Rng19Rfl8Sig16Nir16 => px[4] = refl as u8,
+                    Profile::Rng15Rfl8Nir8 => px[2] = refl as u8,
+                    Profile::Rng19Rfl8Sig16Nir16Dual => px[3] = refl as u8,
                 }
                 p.extend_from_slice(&px);
             }
@@ -496,11 +508,18 @@ fn every_profile_decodes_known_ranges_exactly() {
         for u in 0..4 {
             let shift = m.pixel_shift_by_row[u] as usize;
             for v in 0..512 {
-                let r = img.range(u * 512 + (v + shift) % 512).unwrap();
+                let px = u * 512 + (v + shift) % 512;
+                let r = img.range(px).unwrap();
                 let want = range(u, v) as f32 / 1000.0;
                 assert!(
                     (r - want).abs() < 1e-3,
                     "{profile:?} beam {u} column {v}: {r} vs {want}"
+                );
+                let refl = reflectivity(u, v) + if profile == Profile::Legacy { 300 } else { 0 };
+                assert_eq!(
+                    cap.frames[0].reflectivity[px],
+                    f32::from(refl),
+                    "{profile:?} beam {u} column {v}: reflectivity"
                 );
             }
         }
