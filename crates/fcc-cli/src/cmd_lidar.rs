@@ -174,8 +174,9 @@ pub struct OusterArgs {
 #[derive(Args, Debug)]
 pub struct ClusterLidarArgs {
     /// Inputs: Ouster captures (.pcap, .pcapng) with their JSON metadata,
-    /// point clouds (.bin KITTI/SemanticKITTI, .pcd, .ply) or range images
-    /// (.npy of shape (R, C, 3)). A capture gives one result per frame.
+    /// Velodyne captures, ROS 2 recordings (.mcap, PointCloud2), point clouds
+    /// (.bin KITTI/SemanticKITTI, .pcd, .ply) or range images (.npy of shape
+    /// (R, C, 3)). A capture or recording gives one result per frame.
     #[arg(long, short, required = true, num_args = 1..)]
     pub input: Vec<PathBuf>,
     #[command(flatten)]
@@ -895,7 +896,8 @@ fn for_each_frame(
 
 #[derive(Args, Debug)]
 pub struct ConvertArgs {
-    /// Inputs: Ouster captures, point clouds (.bin, .pcd, .ply).
+    /// Inputs: Ouster and Velodyne captures, ROS 2 recordings (.mcap), point
+    /// clouds (.bin, .pcd, .ply).
     #[arg(long, short, required = true, num_args = 1..)]
     pub input: Vec<PathBuf>,
     /// Output .npy range image (R, C, 3) float32, NaN = empty; with several

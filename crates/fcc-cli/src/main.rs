@@ -30,8 +30,9 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Cluster LiDAR frames with the golden model: Ouster captures, KITTI .bin,
-    /// PCD, PLY or .npy range images in; labels, pictures and statistics out.
+    /// Cluster LiDAR frames with the golden model: Ouster and Velodyne captures,
+    /// ROS 2 recordings (.mcap), KITTI .bin, PCD, PLY or .npy range images in;
+    /// labels, cluster tables, pictures and statistics out.
     Cluster(cmd_lidar::ClusterLidarArgs),
     /// Convert captures and point clouds to .npy range images (R, C, 3).
     Convert(cmd_lidar::ConvertArgs),

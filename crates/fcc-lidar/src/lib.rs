@@ -5,15 +5,20 @@
 //! - [`ouster`]: Ouster packet captures ([`pcap`]: classic pcap and pcapng)
 //!   with the sensor's JSON metadata, legacy and the 2.x single-return
 //!   profiles;
+//! - [`velodyne`]: Velodyne packet captures (VLP-16, VLP-32C, HDL-32E,
+//!   HDL-64E with its calibration), one image per rotation;
+//! - [`rosbag`]: ROS 2 recordings (MCAP) of `sensor_msgs/msg/PointCloud2`;
 //! - [`cloud`]: KITTI / SemanticKITTI `.bin`, PCD and PLY point clouds, which
 //!   [`projection`] turns into range images and whose labels it maps back to
 //!   every input point.
 //!
 //! [`ground`] removes the ground before clustering, [`pipeline`] runs ground
 //! removal, the golden model and the `--min-points` filter, [`labels`] and
-//! [`picture`] write `.label` files and PNG pictures, and [`eval`] measures
-//! clusterings against ground truth. `docs/lidar.md` describes the formats,
-//! conventions and metric definitions.
+//! [`picture`] write `.label` files and PNG pictures, [`clusters`] the
+//! per-cluster table, and [`eval`] (fcc's rules) and [`semantickitti`]
+//! (SemanticKITTI's own) measure clusterings against ground truth.
+//! `docs/lidar.md` describes the formats, conventions and metric
+//! definitions.
 //!
 //! ```
 //! use fcc_lidar::pipeline::{cluster_image, PipelineConfig};
