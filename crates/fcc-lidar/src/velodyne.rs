@@ -846,16 +846,16 @@ impl<R: Read> VelodyneReader<R> {
         let seqs = model.sequences_per_block();
         let seq_step = block_step / seqs as f64;
         let mut seen: Vec<(bool, u16)> = Vec::with_capacity(BLOCKS);
+        let want = match self.opts.dual {
+            DualReturn::First => 0,
+            DualReturn::Second => 1,
+        };
         let mut done = None;
         for &(lower, azimuth, blk) in &blocks {
             // A block with the bank and azimuth of an earlier block of this
             // packet is another return of the same firing.
             let nth = seen.iter().filter(|&&s| s == (lower, azimuth)).count();
             seen.push((lower, azimuth));
-            let want = match self.opts.dual {
-                DualReturn::First => 0,
-                DualReturn::Second => 1,
-            };
             let second_exists = blocks
                 .iter()
                 .filter(|b| (b.0, b.1) == (lower, azimuth))
@@ -866,24 +866,22 @@ impl<R: Read> VelodyneReader<R> {
                 self.stats.other_return_blocks += 1;
                 continue;
             }
-            {
-                // Rotation boundary: the azimuth went backwards.
-                if let Some(prev) = self.last_block_azimuth {
-                    if azimuth < prev && prev - azimuth > 18000 {
-                        let ended = std::mem::take(&mut self.current);
-                        self.current.started_at_wrap = true;
-                        let f = self.finish(ended, true);
-                        if done.is_none() {
-                            done = f;
-                        }
-                    } else if f64::from(azimuth) - f64::from(prev)
-                        > MAX_GAP_CENTIDEG.max(3.0 * block_step)
-                    {
-                        self.current.gap = true;
+            // Rotation boundary: the azimuth went backwards past half a turn.
+            if let Some(prev) = self.last_block_azimuth {
+                if azimuth < prev && prev - azimuth > 18000 {
+                    let ended = std::mem::take(&mut self.current);
+                    self.current.started_at_wrap = true;
+                    let f = self.finish(ended, true);
+                    if done.is_none() {
+                        done = f;
                     }
+                } else if f64::from(azimuth) - f64::from(prev)
+                    > MAX_GAP_CENTIDEG.max(3.0 * block_step)
+                {
+                    self.current.gap = true;
                 }
-                self.last_block_azimuth = Some(azimuth);
             }
+            self.last_block_azimuth = Some(azimuth);
             let per_seq = 32 / seqs;
             for s in 0..seqs {
                 let seq_az = f64::from(azimuth) + seq_step * s as f64;

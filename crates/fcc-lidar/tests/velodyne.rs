@@ -410,3 +410,42 @@ fn calibration_file_errors_name_file_and_laser() {
     assert!((c.lasers[3].dist_correction - 1.2).abs() < 1e-12);
     assert!((c.lasers[3].rot_correction.to_degrees() - 1.5).abs() < 1e-12);
 }
+
+#[test]
+fn flipped_bytes_and_cuts_never_panic() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = dir.path().join("m.pcap");
+    let packets = payloads(&data("hdl64e.pcap"));
+    let mut seed = 0x2545_f491_4f6c_dd1du64;
+    let mut next = || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        seed
+    };
+    for round in 0..40 {
+        let mut ps = packets.clone();
+        for _ in 0..20 {
+            let k = (next() % ps.len() as u64) as usize;
+            let i = (next() % ps[k].len() as u64) as usize;
+            ps[k][i] = next() as u8;
+        }
+        write_capture(&p, &ps);
+        let opts = VelodyneOptions {
+            calibration: Some(data("hdl64e.yaml")),
+            keep_incomplete: round % 2 == 0,
+            ..VelodyneOptions::default()
+        };
+        let mut r = VelodyneReader::open(&p, opts).unwrap();
+        while let Ok(Some(f)) = r.next_frame() {
+            assert_eq!(f.image.rows, 64, "round {round}");
+        }
+    }
+    let bytes = std::fs::read(data("vlp16.pcap")).unwrap();
+    for len in (0..bytes.len()).step_by(1013) {
+        std::fs::write(&p, &bytes[..len]).unwrap();
+        if let Ok(mut r) = VelodyneReader::open(&p, VelodyneOptions::default()) {
+            while let Ok(Some(_)) = r.next_frame() {}
+        }
+    }
+}
