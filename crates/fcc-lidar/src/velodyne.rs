@@ -132,16 +132,17 @@ impl VelodyneModel {
         }
     }
 
-    /// Elevation and azimuth offset in degrees of each laser of the models
+    /// Elevation and `rot_correction` in degrees and vertical offset in
+    /// metres of each laser of the models
     /// whose geometry is the same for every unit (the user manuals); `None`
     /// for the HDL-64E, whose every unit has its own calibration.
-    fn nominal(self) -> Option<Vec<(f64, f64)>> {
+    fn nominal(self) -> Option<Vec<(f64, f64, f64)>> {
         match self {
             VelodyneModel::Vlp16 => Some(
                 (0..16)
                     .map(|i| {
                         let e = if i % 2 == 0 { -15 + i } else { i };
-                        (f64::from(e), 0.0)
+                        (f64::from(e), 0.0, VLP16_VERTICAL_MM[i as usize] / 1000.0)
                     })
                     .collect(),
             ),
@@ -151,11 +152,11 @@ impl VelodyneModel {
                         // Even lasers from -30.67 deg, odd lasers from -9.33 deg, 4/3 deg
                         // apart; the manual gives them to 0.01 deg.
                         let thirds = if i % 2 == 0 { -92 } else { -28 } + 4 * (i / 2);
-                        ((f64::from(thirds) / 3.0 * 100.0).round() / 100.0, 0.0)
+                        ((f64::from(thirds) / 3.0 * 100.0).round() / 100.0, 0.0, 0.0)
                     })
                     .collect(),
             ),
-            VelodyneModel::Vlp32c => Some(VLP32C.to_vec()),
+            VelodyneModel::Vlp32c => Some(VLP32C.iter().map(|&(e, off)| (e, -off, 0.0)).collect()),
             VelodyneModel::Hdl64e => None,
         }
     }
@@ -182,7 +183,7 @@ impl std::str::FromStr for VelodyneModel {
 pub fn beam_table(name: &str) -> Option<Vec<f64>> {
     let model = VelodyneModel::from_name(name)?;
     let mut e: Vec<f64> = match model.nominal() {
-        Some(t) => t.into_iter().map(|(e, _)| e).collect(),
+        Some(t) => t.into_iter().map(|(e, _, _)| e).collect(),
         None => (0..32)
             .map(|i| 2.0 - f64::from(i) * (10.33 / 31.0))
             .chain((0..32).map(|i| -8.83 - f64::from(i) * 0.5))
@@ -192,7 +193,15 @@ pub fn beam_table(name: &str) -> Option<Vec<f64>> {
     Some(e)
 }
 
-/// VLP-32C laser elevation and azimuth correction (`rot_correction`), degrees, laser 0 first.
+/// VLP-16 vertical offsets of the laser origins, mm, laser 0 first (the
+/// manual's laser table).
+const VLP16_VERTICAL_MM: [f64; 16] = [
+    11.2, -0.7, 9.7, -2.2, 8.1, -3.7, 6.6, -5.1, 5.1, -6.6, 3.7, -8.1, 2.2, -9.7, 0.7, -11.2,
+];
+
+/// VLP-32C laser elevation and azimuth offset, degrees, laser 0 first (the
+/// manual's table: a laser points at the block azimuth plus its offset, so
+/// its `rot_correction` is minus the offset).
 const VLP32C: [(f64, f64); 32] = [
     (-25.0, 1.4),
     (-1.0, -4.2),
@@ -271,9 +280,10 @@ impl VelodyneCalibration {
             model,
             lasers: table
                 .iter()
-                .map(|&(elev, rot)| LaserCorrection {
+                .map(|&(elev, rot, vert_offset)| LaserCorrection {
                     rot_correction: rot.to_radians(),
                     vert_correction: elev.to_radians(),
+                    vert_offset_correction: vert_offset,
                     ..LaserCorrection::default()
                 })
                 .collect(),

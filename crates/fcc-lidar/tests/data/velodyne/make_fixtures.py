@@ -32,11 +32,15 @@ WALLS_Y = (12.0, -12.0)
 STEP_CENTIDEG = 200
 START_CENTIDEG = 30000
 
+# VLP-16: elevation, azimuth offset, and the manual's vertical offsets (mm).
+VLP16_VERTICAL_MM = [11.2, -0.7, 9.7, -2.2, 8.1, -3.7, 6.6, -5.1, 5.1, -6.6, 3.7, -8.1, 2.2, -9.7, 0.7, -11.2]
 VLP16 = [(-15 + i if i % 2 == 0 else i, 0.0) for i in range(16)]
 HDL32E = [
     (round((-92 + 4 * (i // 2) if i % 2 == 0 else -28 + 4 * (i // 2)) / 3.0, 2), 0.0)
     for i in range(32)
 ]
+# VLP-32C: elevation and the manual's azimuth offset (a laser points at the
+# block azimuth plus its offset).
 VLP32C = [
     (-25.0, 1.4), (-1.0, -4.2), (-1.667, 1.4), (-15.639, -1.4), (-11.31, 1.4),
     (0.0, -1.4), (-0.667, 4.2), (-8.843, -1.4), (-7.254, 1.4), (0.333, -4.2),
@@ -227,9 +231,11 @@ def write_yaml(path, lasers):
 
 def main():
     flat = lambda table: [(e, r, 0.0, 0.0) for e, r in table]
-    build("vlp16", "vlp16", flat(VLP16), 0.002, 0x22)
-    build("vlp16_dual", "vlp16", flat(VLP16), 0.002, 0x22, mode=0x39, dual=True)
-    build("vlp32c", "vlp32c", flat(VLP32C), 0.004, 0x28, mode=0x38)
+    vlp16 = [(e, 0.0, VLP16_VERTICAL_MM[i] / 1000.0, 0.0) for i, (e, _) in enumerate(VLP16)]
+    build("vlp16", "vlp16", vlp16, 0.002, 0x22)
+    build("vlp16_dual", "vlp16", vlp16, 0.002, 0x22, mode=0x39, dual=True)
+    # laser_ray takes the rot correction: minus the azimuth offset.
+    build("vlp32c", "vlp32c", [(e, -off, 0.0, 0.0) for e, off in VLP32C], 0.004, 0x28, mode=0x38)
     build("hdl32e", "hdl32e", flat(HDL32E), 0.002, 0x21)
     cal = hdl64e_calibration()
     write_yaml("hdl64e.yaml", cal)
