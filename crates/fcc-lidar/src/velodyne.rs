@@ -121,14 +121,21 @@ impl VelodyneModel {
 
     /// Time of the firing of slot `k` of a sequence after its start, and the
     /// length of a sequence, in microseconds (the user manuals' timing
-    /// tables); the HDL-64E is taken as firing a block at once.
+    /// tables).
     fn firing_time_us(self, k: usize) -> (f64, f64) {
         match self {
             VelodyneModel::Vlp16 => (2.304 * k as f64, 55.296),
             // Lasers fire in pairs.
             VelodyneModel::Vlp32c => (2.304 * (k / 2) as f64, 55.296),
             VelodyneModel::Hdl32e => (1.152 * k as f64, 46.08),
-            VelodyneModel::Hdl64e => (0.0, 1.0),
+            // Four lasers of each bank fire every 6 µs, 1.26, 2.46 and 3.66 µs
+            // apart, in a 48 µs period shared by an upper and a lower block
+            // (S2; the S3's 7.2 and 57.6 µs give the same fractions of a
+            // period within 0.4 %).
+            VelodyneModel::Hdl64e => (
+                6.0 * (k / 4) as f64 + [0.0, 1.26, 2.46, 3.66][k % 4],
+                48.0,
+            ),
         }
     }
 

@@ -156,7 +156,8 @@ def timing(model, k):
         return 2.304 * (k // 2), 55.296
     if model == "hdl32e":
         return 1.152 * k, 46.08
-    return 0.0, 1.0
+    # HDL-64E S2: four lasers of a bank every 6 us, in a 48 us period.
+    return 6.0 * (k // 4) + [0.0, 1.26, 2.46, 3.66][k % 4], 48.0
 
 
 def build(name, model, lasers, resolution, product, mode=0x37, dual=False, dist=None):
