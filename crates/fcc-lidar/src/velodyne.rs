@@ -132,10 +132,7 @@ impl VelodyneModel {
             // apart, in a 48 µs period shared by an upper and a lower block
             // (S2; the S3's 7.2 and 57.6 µs give the same fractions of a
             // period within 0.4 %).
-            VelodyneModel::Hdl64e => (
-                6.0 * (k / 4) as f64 + [0.0, 1.26, 2.46, 3.66][k % 4],
-                48.0,
-            ),
+            VelodyneModel::Hdl64e => (6.0 * (k / 4) as f64 + [0.0, 1.26, 2.46, 3.66][k % 4], 48.0),
         }
     }
 
