@@ -105,11 +105,14 @@ pub fn velodyne_summary(
     s: &VelodyneStats,
     model: Option<VelodyneModel>,
 ) -> String {
-    let modes: Vec<String> = s
+    let mut modes: Vec<String> = s
         .return_modes
         .iter()
         .map(|(k, v)| format!("{k} {v}"))
         .collect();
+    if modes.is_empty() {
+        modes.push("not in the packets".into());
+    }
     format!(
         "{}: Velodyne {}, {} rotations used of {} ({} data packets, return modes [{}], {} malformed, {} of another model, {} partial rotations dropped)",
         input.display(),
