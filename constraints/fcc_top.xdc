@@ -5,10 +5,11 @@
 # OUT-OF-CONTEXT constraints of fcc_top: its own synthesis and implementation
 # (synth_design -mode out_of_context: no I/O buffers, no package pins), as
 # scripts/fcc_build.tcl runs them. The core never drives package pins; in a
-# system its ports meet logic on the same clock (AXI DMA, AXI GPIO, a reset
-# block). The port delays below model that logic: 20 % of the period is
-# spent outside the core on every AXI4-Stream input and output, so paths
-# between the core's registers and its ports get the remaining time.
+# system its ports meet logic on the same clock (AXI DMA, an AXI interconnect,
+# the PS's interrupt input, a reset block). The port delays below model that
+# logic: 20 % of the period is spent outside the core on every AXI input
+# and output and on irq, so paths between the core's registers and its ports
+# get the remaining time.
 #
 # Out of context only, on purpose: scripts/fcc_build.tcl reads this file with
 # read_xdc -mode out_of_context, and scripts/fcc_package_ip.tcl packages it in the
@@ -17,7 +18,8 @@
 # (scripts/fcc_zc706_bd.tcl) the core's ports become internal nets and these port
 # constraints are dropped: the clock is the Zynq PS's FCLK_CLK0, defined by
 # the PS7's own constraints, and the paths between the core and the DMA or
-# GPIO are timed as ordinary register-to-register paths of the whole design.
+# the interconnect are timed as ordinary register-to-register paths of the
+# whole design.
 # Scoping this file to the IP instead (SCOPED_TO_REF) would be wrong there:
 # get_ports would name the instance's pins, and create_clock would put a
 # second clock on the PS clock's net.
@@ -28,10 +30,13 @@ create_clock -name clk -period 5.000 [get_ports clk]
 # will in the system (UG905, HD.CLK_SRC), so clock skew is estimated.
 set_property HD.CLK_SRC BUFGCTRL_X0Y0 [get_ports clk]
 
-# AXI4-Stream (tdata, tvalid, tlast, tkeep and the opposite tready): 1.000 ns
-# outside the core on each side.
-set_input_delay -clock clk 1.000 [get_ports -filter {DIRECTION == IN} {s_axis_* m_axis_*}]
-set_output_delay -clock clk 1.000 [get_ports -filter {DIRECTION == OUT} {s_axis_* m_axis_*}]
+# AXI4-Stream (tdata, tvalid, tlast, tkeep and the opposite tready) and
+# AXI4-Lite (every channel): 1.000 ns outside the core on each side.
+set_input_delay -clock clk 1.000 [get_ports -filter {DIRECTION == IN} {s_axis_* m_axis_* s_axil_*}]
+set_output_delay -clock clk 1.000 [get_ports -filter {DIRECTION == OUT} {s_axis_* m_axis_* s_axil_*}]
+
+# irq: level, from a register; captured by the PS's interrupt input.
+set_output_delay -clock clk 1.000 [get_ports irq]
 
 # rst: synchronous, active high, from a register of the reset block
 # (proc_sys_reset in the ZC706 design). Timed like a data input: its release
@@ -40,9 +45,10 @@ set_input_delay -clock clk 1.000 [get_ports rst]
 
 # status_*: quasi-static. They are registers that change once per frame (the
 # counters when the last label beat is accepted, idle when a frame starts)
-# and are read by software through AXI GPIO after the DMA's completion
-# interrupt, thousands of cycles later: no register captures them on the
-# next edge, so the paths to these ports are not timed out of context.
-# (status_frame_done is a one-cycle pulse; in the ZC706 design it too only
-# reaches a GPIO data register.)
+# and carry the same values as the status registers, which software reads
+# through the AXI4-Lite port; a system that uses the ports samples them long
+# after the frame's interrupt: no register captures them on the next edge,
+# so the paths to these ports are not timed out of context.
+# (status_frame_done is a one-cycle pulse; the ZC706 design leaves the
+# status ports unconnected.)
 set_false_path -to [get_ports status_*]

@@ -11,12 +11,13 @@
 `default_nettype none
 
 
-module fcc_top(clk,rst,s_axis_tdata,s_axis_tvalid,s_axis_tready,s_axis_tlast,m_axis_tdata,m_axis_tkeep,m_axis_tvalid,m_axis_tready,m_axis_tlast,status_clusters,status_provisional,status_overflow,status_unlabelled,status_frame_error,status_joins,status_gear_stalls,status_frame_done,status_idle);
+module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_axis_tlast,m_axis_tdata,m_axis_tkeep,m_axis_tvalid,m_axis_tready,m_axis_tlast,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata,s_axil_wstrb,s_axil_wvalid,s_axil_wready,s_axil_bresp,s_axil_bvalid,s_axil_bready,s_axil_araddr,s_axil_arvalid,s_axil_arready,s_axil_rdata,s_axil_rresp,s_axil_rvalid,s_axil_rready,irq,status_clusters,status_provisional,status_overflow,status_unlabelled,status_frame_error,status_joins,status_gear_stalls,status_frame_done,status_idle);
 
     // Module arguments
     input wire  clk;
     input wire  rst;
     input wire  [63:0] s_axis_tdata;
+    input wire  [7:0] s_axis_tkeep;
     input wire  s_axis_tvalid;
     output reg  s_axis_tready;
     input wire  s_axis_tlast;
@@ -25,6 +26,24 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tvalid,s_axis_tready,s_axis_tlast,m_a
     output reg  m_axis_tvalid;
     input wire  m_axis_tready;
     output reg  m_axis_tlast;
+    input wire  [11:0] s_axil_awaddr;
+    input wire  s_axil_awvalid;
+    output reg  s_axil_awready;
+    input wire  [31:0] s_axil_wdata;
+    input wire  [3:0] s_axil_wstrb;
+    input wire  s_axil_wvalid;
+    output reg  s_axil_wready;
+    output reg  [1:0] s_axil_bresp;
+    output reg  s_axil_bvalid;
+    input wire  s_axil_bready;
+    input wire  [11:0] s_axil_araddr;
+    input wire  s_axil_arvalid;
+    output reg  s_axil_arready;
+    output reg  [31:0] s_axil_rdata;
+    output reg  [1:0] s_axil_rresp;
+    output reg  s_axil_rvalid;
+    input wire  s_axil_rready;
+    output reg  irq;
     output reg  [15:0] status_clusters;
     output reg  [15:0] status_provisional;
     output reg  status_overflow;
@@ -371,6 +390,44 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tvalid,s_axis_tready,s_axis_tlast,m_a
     reg  label_update$m_axis_tready;
     wire  label_update$rb_done;
     wire  [23:0] label_update$gear_stalls;
+    reg  regs$clk;
+    reg  regs$rst;
+    reg  [11:0] regs$s_axil_awaddr;
+    reg  regs$s_axil_awvalid;
+    wire  regs$s_axil_awready;
+    reg  [31:0] regs$s_axil_wdata;
+    reg  [3:0] regs$s_axil_wstrb;
+    reg  regs$s_axil_wvalid;
+    wire  regs$s_axil_wready;
+    wire  [1:0] regs$s_axil_bresp;
+    wire  regs$s_axil_bvalid;
+    reg  regs$s_axil_bready;
+    reg  [11:0] regs$s_axil_araddr;
+    reg  regs$s_axil_arvalid;
+    wire  regs$s_axil_arready;
+    wire  [31:0] regs$s_axil_rdata;
+    wire  [1:0] regs$s_axil_rresp;
+    wire  regs$s_axil_rvalid;
+    reg  regs$s_axil_rready;
+    reg  regs$frame_end;
+    reg  regs$idle;
+    reg  [15:0] regs$clusters;
+    reg  [15:0] regs$provisional;
+    reg  regs$overflow;
+    reg  [19:0] regs$unlabelled;
+    reg  regs$frame_error;
+    reg  [23:0] regs$joins;
+    reg  [23:0] regs$gear_stalls;
+    wire  regs$core_rst;
+    wire  regs$irq;
+    wire  regs$frame_done;
+    wire  [15:0] regs$st_clusters;
+    wire  [15:0] regs$st_provisional;
+    wire  regs$st_overflow;
+    wire  [19:0] regs$st_unlabelled;
+    wire  regs$st_frame_error;
+    wire  [23:0] regs$st_joins;
+    wire  [23:0] regs$st_gear_stalls;
     reg  [1:0] fsm$d;
     wire  [1:0] fsm$q;
     reg  fsm$clock;
@@ -422,30 +479,6 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tvalid,s_axis_tready,s_axis_tlast,m_a
     reg  last_seen$d;
     wire  last_seen$q;
     reg  last_seen$clock;
-    reg  [15:0] st_clusters$d;
-    wire  [15:0] st_clusters$q;
-    reg  st_clusters$clock;
-    reg  [15:0] st_prov$d;
-    wire  [15:0] st_prov$q;
-    reg  st_prov$clock;
-    reg  st_ovf$d;
-    wire  st_ovf$q;
-    reg  st_ovf$clock;
-    reg  [19:0] st_unl$d;
-    wire  [19:0] st_unl$q;
-    reg  st_unl$clock;
-    reg  st_err$d;
-    wire  st_err$q;
-    reg  st_err$clock;
-    reg  [23:0] st_joins$d;
-    wire  [23:0] st_joins$q;
-    reg  st_joins$clock;
-    reg  [23:0] st_gstall$d;
-    wire  [23:0] st_gstall$q;
-    reg  st_gstall$clock;
-    reg  done_q$d;
-    wire  done_q$q;
-    reg  done_q$clock;
 
     // Local signals
     reg  accept;
@@ -789,6 +822,46 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tvalid,s_axis_tready,s_axis_tlast,m_a
         .rb_done(label_update$rb_done),
         .gear_stalls(label_update$gear_stalls)
     );
+    fcc_regs regs(
+        .clk(regs$clk),
+        .rst(regs$rst),
+        .s_axil_awaddr(regs$s_axil_awaddr),
+        .s_axil_awvalid(regs$s_axil_awvalid),
+        .s_axil_awready(regs$s_axil_awready),
+        .s_axil_wdata(regs$s_axil_wdata),
+        .s_axil_wstrb(regs$s_axil_wstrb),
+        .s_axil_wvalid(regs$s_axil_wvalid),
+        .s_axil_wready(regs$s_axil_wready),
+        .s_axil_bresp(regs$s_axil_bresp),
+        .s_axil_bvalid(regs$s_axil_bvalid),
+        .s_axil_bready(regs$s_axil_bready),
+        .s_axil_araddr(regs$s_axil_araddr),
+        .s_axil_arvalid(regs$s_axil_arvalid),
+        .s_axil_arready(regs$s_axil_arready),
+        .s_axil_rdata(regs$s_axil_rdata),
+        .s_axil_rresp(regs$s_axil_rresp),
+        .s_axil_rvalid(regs$s_axil_rvalid),
+        .s_axil_rready(regs$s_axil_rready),
+        .frame_end(regs$frame_end),
+        .idle(regs$idle),
+        .clusters(regs$clusters),
+        .provisional(regs$provisional),
+        .overflow(regs$overflow),
+        .unlabelled(regs$unlabelled),
+        .frame_error(regs$frame_error),
+        .joins(regs$joins),
+        .gear_stalls(regs$gear_stalls),
+        .core_rst(regs$core_rst),
+        .irq(regs$irq),
+        .frame_done(regs$frame_done),
+        .st_clusters(regs$st_clusters),
+        .st_provisional(regs$st_provisional),
+        .st_overflow(regs$st_overflow),
+        .st_unlabelled(regs$st_unlabelled),
+        .st_frame_error(regs$st_frame_error),
+        .st_joins(regs$st_joins),
+        .st_gear_stalls(regs$st_gear_stalls)
+    );
     fcc_top__fsm fsm(
         .d(fsm$d),
         .q(fsm$q),
@@ -874,46 +947,6 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tvalid,s_axis_tready,s_axis_tlast,m_a
         .q(last_seen$q),
         .clock(last_seen$clock)
     );
-    fcc_top__st_clusters st_clusters(
-        .d(st_clusters$d),
-        .q(st_clusters$q),
-        .clock(st_clusters$clock)
-    );
-    fcc_top__st_prov st_prov(
-        .d(st_prov$d),
-        .q(st_prov$q),
-        .clock(st_prov$clock)
-    );
-    fcc_top__st_ovf st_ovf(
-        .d(st_ovf$d),
-        .q(st_ovf$q),
-        .clock(st_ovf$clock)
-    );
-    fcc_top__st_unl st_unl(
-        .d(st_unl$d),
-        .q(st_unl$q),
-        .clock(st_unl$clock)
-    );
-    fcc_top__st_err st_err(
-        .d(st_err$d),
-        .q(st_err$q),
-        .clock(st_err$clock)
-    );
-    fcc_top__st_joins st_joins(
-        .d(st_joins$d),
-        .q(st_joins$q),
-        .clock(st_joins$clock)
-    );
-    fcc_top__st_gstall st_gstall(
-        .d(st_gstall$d),
-        .q(st_gstall$q),
-        .clock(st_gstall$clock)
-    );
-    fcc_top__done_q done_q(
-        .d(done_q$d),
-        .q(done_q$q),
-        .clock(done_q$clock)
-    );
 
     // Update code
     always @(*) begin
@@ -934,14 +967,6 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tvalid,s_axis_tready,s_axis_tlast,m_a
         credits$clock = clk;
         room$clock = clk;
         last_seen$clock = clk;
-        st_clusters$clock = clk;
-        st_prov$clock = clk;
-        st_ovf$clock = clk;
-        st_unl$clock = clk;
-        st_err$clock = clk;
-        st_joins$clock = clk;
-        st_gstall$clock = clk;
-        done_q$clock = clk;
         fsm$d = fsm$q;
         tready_q$d = tready_q$q;
         pad_go$d = pad_go$q;
@@ -959,20 +984,39 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tvalid,s_axis_tready,s_axis_tlast,m_a
         credits$d = credits$q;
         room$d = room$q;
         last_seen$d = last_seen$q;
-        st_clusters$d = st_clusters$q;
-        st_prov$d = st_prov$q;
-        st_ovf$d = st_ovf$q;
-        st_unl$d = st_unl$q;
-        st_err$d = st_err$q;
-        st_joins$d = st_joins$q;
-        st_gstall$d = st_gstall$q;
-        done_q$d = done_q$q;
         intra$clk = clk;
         window$clk = clk;
         dist_tree$clk = clk;
         sort_net$clk = clk;
         merge_table$clk = clk;
         label_update$clk = clk;
+        regs$clk = clk;
+        regs$rst = rst;
+        regs$s_axil_awaddr = s_axil_awaddr;
+        regs$s_axil_awvalid = s_axil_awvalid;
+        regs$s_axil_wdata = s_axil_wdata;
+        regs$s_axil_wstrb = s_axil_wstrb;
+        regs$s_axil_wvalid = s_axil_wvalid;
+        regs$s_axil_bready = s_axil_bready;
+        regs$s_axil_araddr = s_axil_araddr;
+        regs$s_axil_arvalid = s_axil_arvalid;
+        regs$s_axil_rready = s_axil_rready;
+        s_axil_awready = regs$s_axil_awready;
+        s_axil_wready = regs$s_axil_wready;
+        s_axil_bresp = regs$s_axil_bresp;
+        s_axil_bvalid = regs$s_axil_bvalid;
+        s_axil_arready = regs$s_axil_arready;
+        s_axil_rdata = regs$s_axil_rdata;
+        s_axil_rresp = regs$s_axil_rresp;
+        s_axil_rvalid = regs$s_axil_rvalid;
+        irq = regs$irq;
+        regs$clusters = merge_table$clusters;
+        regs$provisional = intra$provisional[15:0];
+        regs$overflow = intra$overflow;
+        regs$unlabelled = intra$unlabelled;
+        regs$frame_error = err$q;
+        regs$joins = sort_net$joins;
+        regs$gear_stalls = label_update$gear_stalls;
         accept = s_axis_tvalid & tready_q$q;
         beat = accept & ~discard$q;
         slot = beat | pad_go$q;
@@ -1046,7 +1090,6 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tvalid,s_axis_tready,s_axis_tlast,m_a
             last_seen$d = 1'b1;
         end
         drained = last_seen$q & merge_table$union_idle & sort_net$jq_empty;
-        done_q$d = 1'b0;
         merge_table$flat_start = 1'b0;
         label_update$rb_start = 1'b0;
         if ((fsm$q == f_init) & ~merge_table$init_busy) begin
@@ -1061,27 +1104,21 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tvalid,s_axis_tready,s_axis_tlast,m_a
             fsm$d = f_out;
         end
         nxt_run = fsm$q == f_run;
+        regs$frame_end = 1'b0;
         if ((fsm$q == f_out) & label_update$rb_done) begin
             fsm$d = f_run;
             nxt_run = 1'b1;
             nxt_in_done = 1'b0;
             last_seen$d = 1'b0;
             err$d = 1'b0;
-            done_q$d = 1'b1;
-            st_clusters$d = merge_table$clusters;
-            st_prov$d = intra$provisional[15:0];
-            st_ovf$d = intra$overflow;
-            st_unl$d = intra$unlabelled;
-            st_err$d = err$q;
-            st_joins$d = sort_net$joins;
-            st_gstall$d = label_update$gear_stalls;
+            regs$frame_end = 1'b1;
         end
         pad$d = nxt_pad;
         discard$d = nxt_discard;
         in_done$d = nxt_in_done;
         tready_q$d = nxt_discard | (nxt_run & ~nxt_in_done & ~nxt_pad & room$q);
         pad_go$d = nxt_pad & nxt_run & ~nxt_in_done & room$q;
-        if (rst) begin
+        if (regs$core_rst) begin
             fsm$d = f_init;
             tready_q$d = 1'b0;
             pad_go$d = 1'b0;
@@ -1099,11 +1136,10 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tvalid,s_axis_tready,s_axis_tlast,m_a
             credits$d = zero10;
             room$d = 1'b1;
             last_seen$d = 1'b0;
-            done_q$d = 1'b0;
         end
-        intra$rst = rst;
+        intra$rst = regs$core_rst;
         intra$pix = slot_q$q;
-        window$rst = rst;
+        window$rst = regs$core_rst;
         window$inp[0:0] = intra$out[0:0];
         window$inp[1:1] = intra$out[1:1];
         window$inp[17:2] = intra$out[17:2];
@@ -1120,7 +1156,7 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tvalid,s_axis_tready,s_axis_tlast,m_a
         window$rep_we = sort_net$rep_we;
         window$rep_waddr = sort_net$rep_waddr;
         window$rep_wdata = sort_net$rep_wdata;
-        dist_tree$rst = rst;
+        dist_tree$rst = regs$core_rst;
         dist_tree$centre_in = window$centre;
         dist_tree$ent_ok$0 = window$ent_ok$0;
         dist_tree$ent_x$0 = window$ent_x$0;
@@ -1248,18 +1284,18 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tvalid,s_axis_tready,s_axis_tlast,m_a
         dist_tree$ent_z$20 = window$ent_z$20;
         sort_net$hit$20 = dist_tree$hit$20;
         sort_net$rep$20 = window$ent_rep$20;
-        sort_net$rst = rst;
+        sort_net$rst = regs$core_rst;
         sort_net$clear = label_update$rb_done;
         sort_net$centre = dist_tree$centre;
         sort_net$jtake = merge_table$jtake;
-        merge_table$rst = rst;
+        merge_table$rst = regs$core_rst;
         merge_table$jv = sort_net$jv;
         merge_table$ja = sort_net$ja;
         merge_table$jb = sort_net$jb;
         merge_table$jsame = sort_net$jsame;
         merge_table$provisional = intra$provisional;
         merge_table$gear_used = label_update$gear_used;
-        label_update$rst = rst;
+        label_update$rst = regs$core_rst;
         label_update$wr_valid = intra$out[0:0];
         label_update$wr_state = intra$out[67:66];
         label_update$wr_last = intra$out[100:100];
@@ -1271,15 +1307,16 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tvalid,s_axis_tready,s_axis_tlast,m_a
         m_axis_tvalid = label_update$m_axis_tvalid;
         m_axis_tlast = label_update$m_axis_tlast;
         s_axis_tready = tready_q$q;
-        status_clusters = st_clusters$q;
-        status_provisional = st_prov$q;
-        status_overflow = st_ovf$q;
-        status_unlabelled = st_unl$q;
-        status_frame_error = st_err$q;
-        status_joins = st_joins$q;
-        status_gear_stalls = st_gstall$q;
-        status_frame_done = done_q$q;
+        status_clusters = regs$st_clusters;
+        status_provisional = regs$st_provisional;
+        status_overflow = regs$st_overflow;
+        status_unlabelled = regs$st_unlabelled;
+        status_frame_error = regs$st_frame_error;
+        status_joins = regs$st_joins;
+        status_gear_stalls = regs$st_gear_stalls;
+        status_frame_done = regs$frame_done;
         status_idle = (fsm$q == f_run) & ~in_done$q & first$q;
+        regs$idle = (fsm$q == f_run) & ~in_done$q & first$q;
     end
 
 endmodule // fcc_top
@@ -4375,25 +4412,6 @@ module fcc_dist_tree__units__9__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
         hit <= en_d[5] & (pz < 36'd65536);
     end
 endmodule // fcc_dist_tree__units__9__sq
-
-
-module fcc_top__done_q(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__done_q
 
 
 module fcc_top__err(d,q,clock);
@@ -10298,6 +10316,836 @@ module fcc_top__pad_go(d,q,clock);
     end
 
 endmodule // fcc_top__pad_go
+
+
+module fcc_regs(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata,s_axil_wstrb,s_axil_wvalid,s_axil_wready,s_axil_bresp,s_axil_bvalid,s_axil_bready,s_axil_araddr,s_axil_arvalid,s_axil_arready,s_axil_rdata,s_axil_rresp,s_axil_rvalid,s_axil_rready,frame_end,idle,clusters,provisional,overflow,unlabelled,frame_error,joins,gear_stalls,core_rst,irq,frame_done,st_clusters,st_provisional,st_overflow,st_unlabelled,st_frame_error,st_joins,st_gear_stalls);
+
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  [11:0] s_axil_awaddr;
+    input wire  s_axil_awvalid;
+    output reg  s_axil_awready;
+    input wire  [31:0] s_axil_wdata;
+    input wire  [3:0] s_axil_wstrb;
+    input wire  s_axil_wvalid;
+    output reg  s_axil_wready;
+    output reg  [1:0] s_axil_bresp;
+    output reg  s_axil_bvalid;
+    input wire  s_axil_bready;
+    input wire  [11:0] s_axil_araddr;
+    input wire  s_axil_arvalid;
+    output reg  s_axil_arready;
+    output reg  [31:0] s_axil_rdata;
+    output reg  [1:0] s_axil_rresp;
+    output reg  s_axil_rvalid;
+    input wire  s_axil_rready;
+    input wire  frame_end;
+    input wire  idle;
+    input wire  [15:0] clusters;
+    input wire  [15:0] provisional;
+    input wire  overflow;
+    input wire  [19:0] unlabelled;
+    input wire  frame_error;
+    input wire  [23:0] joins;
+    input wire  [23:0] gear_stalls;
+    output reg  core_rst;
+    output reg  irq;
+    output reg  frame_done;
+    output reg  [15:0] st_clusters;
+    output reg  [15:0] st_provisional;
+    output reg  st_overflow;
+    output reg  [19:0] st_unlabelled;
+    output reg  st_frame_error;
+    output reg  [23:0] st_joins;
+    output reg  [23:0] st_gear_stalls;
+
+    // Constant declarations
+    localparam  a_control = 10'b10000;
+    localparam  a_status = 10'b10001;
+    localparam  bit_soft = 32'h1;
+    localparam  bit_irq = 32'h2;
+    localparam  bit_clear = 32'h4;
+    localparam  bit_done = 32'h1;
+    localparam  one32 = 32'h1;
+    localparam  zero32 = 32'h0;
+    localparam  zero16 = 16'h0;
+    localparam  zero20 = 20'h0;
+    localparam  zero24 = 24'h0;
+    localparam  okay = 2'b0;
+
+    // Stub signals
+    reg  [9:0] mux$addr;
+    reg  [15:0] mux$w16$0;
+    reg  [15:0] mux$w16$1;
+    reg  [19:0] mux$w20$0;
+    reg  [23:0] mux$w24$0;
+    reg  [23:0] mux$w24$1;
+    reg  [31:0] mux$w32$0;
+    reg  mux$flags$0;
+    reg  mux$flags$1;
+    reg  mux$flags$2;
+    reg  mux$flags$3;
+    reg  mux$flags$4;
+    wire  [31:0] mux$data;
+    reg  aw_v$d;
+    wire  aw_v$q;
+    reg  aw_v$clock;
+    reg  [9:0] aw_a$d;
+    wire  [9:0] aw_a$q;
+    reg  aw_a$clock;
+    reg  w_v$d;
+    wire  w_v$q;
+    reg  w_v$clock;
+    reg  [31:0] w_d$d;
+    wire  [31:0] w_d$q;
+    reg  w_d$clock;
+    reg  b_v$d;
+    wire  b_v$q;
+    reg  b_v$clock;
+    reg  r_v$d;
+    wire  r_v$q;
+    reg  r_v$clock;
+    reg  [31:0] r_d$d;
+    wire  [31:0] r_d$q;
+    reg  r_d$clock;
+    reg  irq_en$d;
+    wire  irq_en$q;
+    reg  irq_en$clock;
+    reg  done_sticky$d;
+    wire  done_sticky$q;
+    reg  done_sticky$clock;
+    reg  soft_q$d;
+    wire  soft_q$q;
+    reg  soft_q$clock;
+    reg  core_rst_q$d;
+    wire  core_rst_q$q;
+    reg  core_rst_q$clock;
+    reg  [31:0] count$d;
+    wire  [31:0] count$q;
+    reg  count$clock;
+    reg  done_q$d;
+    wire  done_q$q;
+    reg  done_q$clock;
+    reg  [15:0] s_clusters$d;
+    wire  [15:0] s_clusters$q;
+    reg  s_clusters$clock;
+    reg  [15:0] s_prov$d;
+    wire  [15:0] s_prov$q;
+    reg  s_prov$clock;
+    reg  s_ovf$d;
+    wire  s_ovf$q;
+    reg  s_ovf$clock;
+    reg  [19:0] s_unl$d;
+    wire  [19:0] s_unl$q;
+    reg  s_unl$clock;
+    reg  s_err$d;
+    wire  s_err$q;
+    reg  s_err$clock;
+    reg  [23:0] s_joins$d;
+    wire  [23:0] s_joins$q;
+    reg  s_joins$clock;
+    reg  [23:0] s_gstall$d;
+    wire  [23:0] s_gstall$q;
+    reg  s_gstall$clock;
+
+    // Local signals
+    reg  wr;
+    reg  clear;
+
+    // Sub module instances
+    fcc_regs__mux mux(
+        .addr(mux$addr),
+        .w16$0(mux$w16$0),
+        .w16$1(mux$w16$1),
+        .w20$0(mux$w20$0),
+        .w24$0(mux$w24$0),
+        .w24$1(mux$w24$1),
+        .w32$0(mux$w32$0),
+        .flags$0(mux$flags$0),
+        .flags$1(mux$flags$1),
+        .flags$2(mux$flags$2),
+        .flags$3(mux$flags$3),
+        .flags$4(mux$flags$4),
+        .data(mux$data)
+    );
+    fcc_regs__aw_v aw_v(
+        .d(aw_v$d),
+        .q(aw_v$q),
+        .clock(aw_v$clock)
+    );
+    fcc_regs__aw_a aw_a(
+        .d(aw_a$d),
+        .q(aw_a$q),
+        .clock(aw_a$clock)
+    );
+    fcc_regs__w_v w_v(
+        .d(w_v$d),
+        .q(w_v$q),
+        .clock(w_v$clock)
+    );
+    fcc_regs__w_d w_d(
+        .d(w_d$d),
+        .q(w_d$q),
+        .clock(w_d$clock)
+    );
+    fcc_regs__b_v b_v(
+        .d(b_v$d),
+        .q(b_v$q),
+        .clock(b_v$clock)
+    );
+    fcc_regs__r_v r_v(
+        .d(r_v$d),
+        .q(r_v$q),
+        .clock(r_v$clock)
+    );
+    fcc_regs__r_d r_d(
+        .d(r_d$d),
+        .q(r_d$q),
+        .clock(r_d$clock)
+    );
+    fcc_regs__irq_en irq_en(
+        .d(irq_en$d),
+        .q(irq_en$q),
+        .clock(irq_en$clock)
+    );
+    fcc_regs__done_sticky done_sticky(
+        .d(done_sticky$d),
+        .q(done_sticky$q),
+        .clock(done_sticky$clock)
+    );
+    fcc_regs__soft_q soft_q(
+        .d(soft_q$d),
+        .q(soft_q$q),
+        .clock(soft_q$clock)
+    );
+    fcc_regs__core_rst_q core_rst_q(
+        .d(core_rst_q$d),
+        .q(core_rst_q$q),
+        .clock(core_rst_q$clock)
+    );
+    fcc_regs__count count(
+        .d(count$d),
+        .q(count$q),
+        .clock(count$clock)
+    );
+    fcc_regs__done_q done_q(
+        .d(done_q$d),
+        .q(done_q$q),
+        .clock(done_q$clock)
+    );
+    fcc_regs__s_clusters s_clusters(
+        .d(s_clusters$d),
+        .q(s_clusters$q),
+        .clock(s_clusters$clock)
+    );
+    fcc_regs__s_prov s_prov(
+        .d(s_prov$d),
+        .q(s_prov$q),
+        .clock(s_prov$clock)
+    );
+    fcc_regs__s_ovf s_ovf(
+        .d(s_ovf$d),
+        .q(s_ovf$q),
+        .clock(s_ovf$clock)
+    );
+    fcc_regs__s_unl s_unl(
+        .d(s_unl$d),
+        .q(s_unl$q),
+        .clock(s_unl$clock)
+    );
+    fcc_regs__s_err s_err(
+        .d(s_err$d),
+        .q(s_err$q),
+        .clock(s_err$clock)
+    );
+    fcc_regs__s_joins s_joins(
+        .d(s_joins$d),
+        .q(s_joins$q),
+        .clock(s_joins$clock)
+    );
+    fcc_regs__s_gstall s_gstall(
+        .d(s_gstall$d),
+        .q(s_gstall$q),
+        .clock(s_gstall$clock)
+    );
+
+    // Update code
+    always @(*) begin
+        aw_v$clock = clk;
+        aw_a$clock = clk;
+        w_v$clock = clk;
+        w_d$clock = clk;
+        b_v$clock = clk;
+        r_v$clock = clk;
+        r_d$clock = clk;
+        irq_en$clock = clk;
+        done_sticky$clock = clk;
+        soft_q$clock = clk;
+        core_rst_q$clock = clk;
+        count$clock = clk;
+        done_q$clock = clk;
+        s_clusters$clock = clk;
+        s_prov$clock = clk;
+        s_ovf$clock = clk;
+        s_unl$clock = clk;
+        s_err$clock = clk;
+        s_joins$clock = clk;
+        s_gstall$clock = clk;
+        aw_v$d = aw_v$q;
+        aw_a$d = aw_a$q;
+        w_v$d = w_v$q;
+        w_d$d = w_d$q;
+        b_v$d = b_v$q;
+        r_v$d = r_v$q;
+        r_d$d = r_d$q;
+        irq_en$d = irq_en$q;
+        done_sticky$d = done_sticky$q;
+        soft_q$d = soft_q$q;
+        core_rst_q$d = core_rst_q$q;
+        count$d = count$q;
+        done_q$d = done_q$q;
+        s_clusters$d = s_clusters$q;
+        s_prov$d = s_prov$q;
+        s_ovf$d = s_ovf$q;
+        s_unl$d = s_unl$q;
+        s_err$d = s_err$q;
+        s_joins$d = s_joins$q;
+        s_gstall$d = s_gstall$q;
+        wr = aw_v$q & w_v$q & ~b_v$q;
+        if (s_axil_awvalid & ~aw_v$q) begin
+            aw_v$d = 1'b1;
+            aw_a$d = s_axil_awaddr[11:2];
+        end
+        if (s_axil_wvalid & ~w_v$q) begin
+            w_v$d = 1'b1;
+            w_d$d = s_axil_wdata;
+        end
+        if (b_v$q & s_axil_bready) begin
+            b_v$d = 1'b0;
+        end
+        soft_q$d = 1'b0;
+        clear = 1'b0;
+        if (wr) begin
+            aw_v$d = 1'b0;
+            w_v$d = 1'b0;
+            b_v$d = 1'b1;
+            if (aw_a$q == a_control) begin
+                irq_en$d = (w_d$q & bit_irq) != zero32;
+                soft_q$d = (w_d$q & bit_soft) != zero32;
+                clear = (w_d$q & bit_clear) != zero32;
+            end
+            if ((aw_a$q == a_status) & ((w_d$q & bit_done) != zero32)) begin
+                done_sticky$d = 1'b0;
+            end
+        end
+        done_q$d = frame_end;
+        if (frame_end) begin
+            done_sticky$d = 1'b1;
+            count$d = count$q + one32;
+            s_clusters$d = clusters;
+            s_prov$d = provisional;
+            s_ovf$d = overflow;
+            s_unl$d = unlabelled;
+            s_err$d = frame_error;
+            s_joins$d = joins;
+            s_gstall$d = gear_stalls;
+        end
+        if (clear) begin
+            done_sticky$d = 1'b0;
+            count$d = zero32;
+            s_clusters$d = zero16;
+            s_prov$d = zero16;
+            s_ovf$d = 1'b0;
+            s_unl$d = zero20;
+            s_err$d = 1'b0;
+            s_joins$d = zero24;
+            s_gstall$d = zero24;
+        end
+        mux$addr = s_axil_araddr[11:2];
+        mux$w32$0 = count$q;
+        mux$w16$0 = s_clusters$q;
+        mux$w16$1 = s_prov$q;
+        mux$w20$0 = s_unl$q;
+        mux$w24$0 = s_joins$q;
+        mux$w24$1 = s_gstall$q;
+        mux$flags$0 = irq_en$q;
+        mux$flags$1 = done_sticky$q;
+        mux$flags$2 = idle;
+        mux$flags$3 = s_ovf$q;
+        mux$flags$4 = s_err$q;
+        if (s_axil_arvalid & ~r_v$q) begin
+            r_v$d = 1'b1;
+            r_d$d = mux$data;
+        end
+        if (r_v$q & s_axil_rready) begin
+            r_v$d = 1'b0;
+        end
+        core_rst_q$d = rst | soft_q$q;
+        if (rst) begin
+            aw_v$d = 1'b0;
+            w_v$d = 1'b0;
+            b_v$d = 1'b0;
+            r_v$d = 1'b0;
+            irq_en$d = 1'b0;
+            done_sticky$d = 1'b0;
+            soft_q$d = 1'b0;
+            count$d = zero32;
+            done_q$d = 1'b0;
+            s_clusters$d = zero16;
+            s_prov$d = zero16;
+            s_ovf$d = 1'b0;
+            s_unl$d = zero20;
+            s_err$d = 1'b0;
+            s_joins$d = zero24;
+            s_gstall$d = zero24;
+        end
+        s_axil_awready = ~aw_v$q;
+        s_axil_wready = ~w_v$q;
+        s_axil_bvalid = b_v$q;
+        s_axil_bresp = okay;
+        s_axil_arready = ~r_v$q;
+        s_axil_rvalid = r_v$q;
+        s_axil_rdata = r_d$q;
+        s_axil_rresp = okay;
+        core_rst = core_rst_q$q;
+        irq = done_sticky$q & irq_en$q;
+        frame_done = done_q$q;
+        st_clusters = s_clusters$q;
+        st_provisional = s_prov$q;
+        st_overflow = s_ovf$q;
+        st_unlabelled = s_unl$q;
+        st_frame_error = s_err$q;
+        st_joins = s_joins$q;
+        st_gear_stalls = s_gstall$q;
+    end
+
+endmodule // fcc_regs
+
+
+module fcc_regs__aw_a(d,q,clock);
+
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__aw_a
+
+
+module fcc_regs__aw_v(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__aw_v
+
+
+module fcc_regs__b_v(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__b_v
+
+
+module fcc_regs__core_rst_q(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__core_rst_q
+
+
+module fcc_regs__count(d,q,clock);
+
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__count
+
+
+module fcc_regs__done_q(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__done_q
+
+
+module fcc_regs__done_sticky(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__done_sticky
+
+
+module fcc_regs__irq_en(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__irq_en
+
+
+module fcc_regs__mux(addr,w16$0,w16$1,w20$0,w24$0,w24$1,w32$0,flags$0,flags$1,flags$2,flags$3,flags$4,data);
+
+    // Module arguments
+    input wire  [9:0] addr;
+    input wire  [15:0] w16$0;
+    input wire  [15:0] w16$1;
+    input wire  [19:0] w20$0;
+    input wire  [23:0] w24$0;
+    input wire  [23:0] w24$1;
+    input wire  [31:0] w32$0;
+    input wire  flags$0;
+    input wire  flags$1;
+    input wire  flags$2;
+    input wire  flags$3;
+    input wire  flags$4;
+    output reg  [31:0] data;
+
+    // Update code (custom)
+    always @(*) begin
+        case (addr)
+            10'd0: data = 32'h46434331;
+            10'd1: data = 32'h00000100;
+            10'd2: data = 32'hf2a51f2e;
+            10'd3: data = 32'h668cf05b;
+            10'd4: data = 32'h00000007;
+            10'd5: data = 32'h00000040;
+            10'd6: data = 32'h00000800;
+            10'd7: data = 32'h0000000f;
+            10'd8: data = 32'h00000004;
+            10'd9: data = 32'h00030d40;
+            10'd16: data = {30'd0, flags$0, 1'b0};
+            10'd17: data = {30'd0, flags$2, flags$1};
+            10'd20: data = w32$0;
+            10'd21: data = {16'd0, w16$0};
+            10'd22: data = {16'd0, w16$1};
+            10'd23: data = {12'd0, w20$0};
+            10'd24: data = {30'd0, flags$4, flags$3};
+            10'd25: data = {8'd0, w24$0};
+            10'd26: data = {8'd0, w24$1};
+            default: data = 32'h00000000;
+        endcase
+    end
+endmodule // fcc_regs__mux
+
+
+module fcc_regs__r_d(d,q,clock);
+
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__r_d
+
+
+module fcc_regs__r_v(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__r_v
+
+
+module fcc_regs__s_clusters(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__s_clusters
+
+
+module fcc_regs__s_err(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__s_err
+
+
+module fcc_regs__s_gstall(d,q,clock);
+
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__s_gstall
+
+
+module fcc_regs__s_joins(d,q,clock);
+
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__s_joins
+
+
+module fcc_regs__s_ovf(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__s_ovf
+
+
+module fcc_regs__s_prov(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__s_prov
+
+
+module fcc_regs__s_unl(d,q,clock);
+
+    // Module arguments
+    input wire  [19:0] d;
+    output reg  [19:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 20'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__s_unl
+
+
+module fcc_regs__soft_q(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__soft_q
+
+
+module fcc_regs__w_d(d,q,clock);
+
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__w_d
+
+
+module fcc_regs__w_v(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__w_v
 
 
 module fcc_top__room(d,q,clock);
@@ -38235,139 +39083,6 @@ module fcc_sort_net__wr_en(d,q,clock);
     end
 
 endmodule // fcc_sort_net__wr_en
-
-
-module fcc_top__st_clusters(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__st_clusters
-
-
-module fcc_top__st_err(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__st_err
-
-
-module fcc_top__st_gstall(d,q,clock);
-
-    // Module arguments
-    input wire  [23:0] d;
-    output reg  [23:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 24'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__st_gstall
-
-
-module fcc_top__st_joins(d,q,clock);
-
-    // Module arguments
-    input wire  [23:0] d;
-    output reg  [23:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 24'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__st_joins
-
-
-module fcc_top__st_ovf(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__st_ovf
-
-
-module fcc_top__st_prov(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__st_prov
-
-
-module fcc_top__st_unl(d,q,clock);
-
-    // Module arguments
-    input wire  [19:0] d;
-    output reg  [19:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 20'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__st_unl
 
 
 module fcc_top__tready_q(d,q,clock);

@@ -3,8 +3,9 @@
 # Parameter hash: 668cf05bf2a51f2e
 #
 # Packages fcc_top as the Vivado IP fcc:fcc:fcc_top:0.1: AXI4-Stream slave s_axis (pixels),
-# AXI4-Stream master m_axis (labels), clock clk and active-high reset rst,
-# for the block design of scripts/fcc_zc706_bd.tcl.
+# AXI4-Stream master m_axis (labels), AXI4-Lite slave s_axil (the register
+# file, 4096 bytes), level-high interrupt irq, clock clk and
+# active-high reset rst, for the block design of scripts/fcc_zc706_bd.tcl.
 # Written to UG835 and UG1118; not run by the generator's tests.
 #
 # Usage (from any directory):
@@ -57,8 +58,8 @@ set_property display_name {FCC: Fast Channel Clustering of LiDAR range images} $
 set_property description {rows=64 cols=2048 fsize=7 th_h=0.5 th_v=1 label_bits=15 clock_mhz=200 labels_per_beat=4 (parameter hash 668cf05bf2a51f2e)} $core
 
 # The packager has already guessed interfaces from the port names. Replace
-# them with explicit ones: each AXI4-Stream port is mapped by name to its
-# logical signal here, so the result does not depend on the heuristics.
+# them with explicit ones: each AXI port is mapped by name to its logical
+# signal here, so the result does not depend on the heuristics.
 ipx::remove_all_bus_interface $core
 
 proc fcc_axis {core name mode maps} {
@@ -72,6 +73,7 @@ proc fcc_axis {core name mode maps} {
 }
 fcc_axis $core s_axis slave {
     TDATA s_axis_tdata
+    TKEEP s_axis_tkeep
     TVALID s_axis_tvalid
     TREADY s_axis_tready
     TLAST s_axis_tlast
@@ -84,13 +86,58 @@ fcc_axis $core m_axis master {
     TLAST m_axis_tlast
 }
 
+# AXI4-Lite register file: the slave interface and its memory map, one
+# address block over the whole decoded window.
+proc fcc_axim {core name mode maps} {
+    set bus [ipx::add_bus_interface $name $core]
+    set_property abstraction_type_vlnv xilinx.com:interface:aximm_rtl:1.0 $bus
+    set_property bus_type_vlnv xilinx.com:interface:aximm:1.0 $bus
+    set_property interface_mode $mode $bus
+    foreach {logical physical} $maps {
+        set_property physical_name $physical [ipx::add_port_map $logical $bus]
+    }
+    return $bus
+}
+set axil_bus [fcc_axim $core s_axil slave {
+    AWADDR s_axil_awaddr
+    AWVALID s_axil_awvalid
+    AWREADY s_axil_awready
+    WDATA s_axil_wdata
+    WSTRB s_axil_wstrb
+    WVALID s_axil_wvalid
+    WREADY s_axil_wready
+    BRESP s_axil_bresp
+    BVALID s_axil_bvalid
+    BREADY s_axil_bready
+    ARADDR s_axil_araddr
+    ARVALID s_axil_arvalid
+    ARREADY s_axil_arready
+    RDATA s_axil_rdata
+    RRESP s_axil_rresp
+    RVALID s_axil_rvalid
+    RREADY s_axil_rready
+}]
+set axil_map [ipx::add_memory_map s_axil $core]
+set_property slave_memory_map_ref s_axil $axil_bus
+set axil_block [ipx::add_address_block regs $axil_map]
+set_property range 4096 $axil_block
+set_property width 32 $axil_block
+
+# Interrupt: level high (STATUS.FRAME_DONE while CONTROL.IRQ_ENABLE).
+set irq_bus [ipx::add_bus_interface irq $core]
+set_property abstraction_type_vlnv xilinx.com:signal:interrupt_rtl:1.0 $irq_bus
+set_property bus_type_vlnv xilinx.com:signal:interrupt:1.0 $irq_bus
+set_property interface_mode master $irq_bus
+set_property physical_name irq [ipx::add_port_map INTERRUPT $irq_bus]
+set_property value LEVEL_HIGH [ipx::add_bus_parameter SENSITIVITY $irq_bus]
+
 # Clock: every interface is synchronous to it; its reset is rst.
 set clk_bus [ipx::add_bus_interface clk $core]
 set_property abstraction_type_vlnv xilinx.com:signal:clock_rtl:1.0 $clk_bus
 set_property bus_type_vlnv xilinx.com:signal:clock:1.0 $clk_bus
 set_property interface_mode slave $clk_bus
 set_property physical_name clk [ipx::add_port_map CLK $clk_bus]
-set_property value s_axis:m_axis [ipx::add_bus_parameter ASSOCIATED_BUSIF $clk_bus]
+set_property value s_axis:m_axis:s_axil [ipx::add_bus_parameter ASSOCIATED_BUSIF $clk_bus]
 set_property value rst [ipx::add_bus_parameter ASSOCIATED_RESET $clk_bus]
 
 # Reset: synchronous, active high.

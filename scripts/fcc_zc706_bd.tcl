@@ -5,9 +5,10 @@
 # Block design for the ZC706 (xilinx.com:zc706:part0:1.4, xc7z045ffg900-2): the Zynq PS7 with the
 # board preset; an AXI DMA in simple (register) mode that reads frames from
 # DDR into fcc_top's s_axis (MM2S) and writes its m_axis labels back to DDR
-# (S2MM); the core's status ports on AXI GPIO inputs; SmartConnects for
-# control (PS M_AXI_GP0) and memory (PS S_AXI_HP0); a processor system reset;
-# the DMA's two interrupts on IRQ_F2P. Everything runs on FCLK_CLK0.
+# (S2MM); the core's register port and the DMA's registers on the PS's
+# M_AXI_GP0 through a SmartConnect; memory (PS S_AXI_HP0) through another; a
+# processor system reset; the DMA's two interrupts and the core's irq on
+# IRQ_F2P. Everything runs on FCLK_CLK0.
 # Written to UG835 and UG994; not run by the generator's tests.
 #
 # Run scripts/fcc_package_ip.tcl first, with the same -out.
@@ -24,12 +25,28 @@
 # Software view (also written to DIR/zc706/fcc_zc706_map.txt with the addresses):
 #   DMA MM2S_LENGTH = 1048576 bytes per frame (131072 pixels, 8 bytes each)
 #   DMA S2MM_LENGTH = 262144 bytes per frame (4 labels per 8-byte beat)
-#   Interrupts: IRQ_F2P[0] = MM2S done (GIC ID 61), IRQ_F2P[1] = S2MM done (GIC ID 62)
-#   Status, valid once the S2MM transfer of the frame has completed:
-#   status_gpio0 GPIO_DATA (0x0): [15:0] status_clusters, [31:16] status_provisional
-#   status_gpio0 GPIO2_DATA (0x8): [0] status_overflow, [20:1] status_unlabelled, [21] status_frame_error
-#   status_gpio1 GPIO_DATA (0x0): [23:0] status_joins
-#   status_gpio1 GPIO2_DATA (0x8): [23:0] status_gear_stalls, [24] status_frame_done, [25] status_idle
+#   Interrupts: IRQ_F2P[0] = MM2S done (GIC ID 61), IRQ_F2P[1] = S2MM done (GIC ID 62),
+#     IRQ_F2P[2] = fcc irq, frame done (GIC ID 63, level high)
+#   fcc registers (offsets in the fcc segment; fields in rtl_out/fcc_regs.h):
+#     0x000 ID RO
+#     0x004 VERSION RO
+#     0x008 HASH_LO RO
+#     0x00C HASH_HI RO
+#     0x010 K_MAX RO
+#     0x014 ROWS_MAX RO
+#     0x018 COLS_MAX RO
+#     0x01C LABEL_BITS RO
+#     0x020 LABELS_PER_BEAT RO
+#     0x024 CLOCK_KHZ RO
+#     0x040 CONTROL RW
+#     0x044 STATUS W1C
+#     0x050 FRAME_COUNT RO
+#     0x054 CLUSTERS RO
+#     0x058 PROVISIONAL RO
+#     0x05C UNLABELLED RO
+#     0x060 FRAME_FLAGS RO
+#     0x064 JOINS RO
+#     0x068 GEAR_STALLS RO
 
 set usage {usage: vivado -mode batch -source fcc_zc706_bd.tcl -tclargs ?-out DIR? ?-bitstream? ?-jobs N?}
 set part xc7z045ffg900-2
@@ -98,36 +115,12 @@ set_property -dict [list \
 ] [get_bd_cells dma]
 
 create_bd_cell -type ip -vlnv xilinx.com:ip:smartconnect:1.0 ctrl_smc
-set_property -dict [list CONFIG.NUM_SI {1} CONFIG.NUM_MI {3}] [get_bd_cells ctrl_smc]
+set_property -dict [list CONFIG.NUM_SI {1} CONFIG.NUM_MI {2}] [get_bd_cells ctrl_smc]
 create_bd_cell -type ip -vlnv xilinx.com:ip:smartconnect:1.0 mem_smc
 set_property -dict [list CONFIG.NUM_SI {2} CONFIG.NUM_MI {1}] [get_bd_cells mem_smc]
 create_bd_cell -type ip -vlnv xilinx.com:ip:xlconcat:2.1 irq_concat
-set_property -dict [list CONFIG.NUM_PORTS {2}] [get_bd_cells irq_concat]
+set_property -dict [list CONFIG.NUM_PORTS {3}] [get_bd_cells irq_concat]
 create_bd_cell -type ip -vlnv fcc:fcc:fcc_top:0.1 fcc
-
-# Status ports into AXI GPIO inputs.
-create_bd_cell -type ip -vlnv xilinx.com:ip:axi_gpio:2.0 status_gpio0
-set_property -dict [list CONFIG.C_ALL_INPUTS {1} CONFIG.C_GPIO_WIDTH {32} CONFIG.C_IS_DUAL {1} CONFIG.C_ALL_INPUTS_2 {1} CONFIG.C_GPIO2_WIDTH {22}] [get_bd_cells status_gpio0]
-create_bd_cell -type ip -vlnv xilinx.com:ip:axi_gpio:2.0 status_gpio1
-set_property -dict [list CONFIG.C_ALL_INPUTS {1} CONFIG.C_GPIO_WIDTH {24} CONFIG.C_IS_DUAL {1} CONFIG.C_ALL_INPUTS_2 {1} CONFIG.C_GPIO2_WIDTH {26}] [get_bd_cells status_gpio1]
-create_bd_cell -type ip -vlnv xilinx.com:ip:xlconcat:2.1 status_word0
-set_property -dict [list CONFIG.NUM_PORTS {2} CONFIG.IN0_WIDTH {16} CONFIG.IN1_WIDTH {16}] [get_bd_cells status_word0]
-connect_bd_net [get_bd_pins fcc/status_clusters] [get_bd_pins status_word0/In0]
-connect_bd_net [get_bd_pins fcc/status_provisional] [get_bd_pins status_word0/In1]
-connect_bd_net [get_bd_pins status_word0/dout] [get_bd_pins status_gpio0/gpio_io_i]
-create_bd_cell -type ip -vlnv xilinx.com:ip:xlconcat:2.1 status_word1
-set_property -dict [list CONFIG.NUM_PORTS {3} CONFIG.IN0_WIDTH {1} CONFIG.IN1_WIDTH {20} CONFIG.IN2_WIDTH {1}] [get_bd_cells status_word1]
-connect_bd_net [get_bd_pins fcc/status_overflow] [get_bd_pins status_word1/In0]
-connect_bd_net [get_bd_pins fcc/status_unlabelled] [get_bd_pins status_word1/In1]
-connect_bd_net [get_bd_pins fcc/status_frame_error] [get_bd_pins status_word1/In2]
-connect_bd_net [get_bd_pins status_word1/dout] [get_bd_pins status_gpio0/gpio2_io_i]
-connect_bd_net [get_bd_pins fcc/status_joins] [get_bd_pins status_gpio1/gpio_io_i]
-create_bd_cell -type ip -vlnv xilinx.com:ip:xlconcat:2.1 status_word3
-set_property -dict [list CONFIG.NUM_PORTS {3} CONFIG.IN0_WIDTH {24} CONFIG.IN1_WIDTH {1} CONFIG.IN2_WIDTH {1}] [get_bd_cells status_word3]
-connect_bd_net [get_bd_pins fcc/status_gear_stalls] [get_bd_pins status_word3/In0]
-connect_bd_net [get_bd_pins fcc/status_frame_done] [get_bd_pins status_word3/In1]
-connect_bd_net [get_bd_pins fcc/status_idle] [get_bd_pins status_word3/In2]
-connect_bd_net [get_bd_pins status_word3/dout] [get_bd_pins status_gpio1/gpio2_io_i]
 
 # Clock and resets.
 connect_bd_net [get_bd_pins ps7/FCLK_CLK0] \
@@ -135,23 +128,19 @@ connect_bd_net [get_bd_pins ps7/FCLK_CLK0] \
     [get_bd_pins rst_fclk0/slowest_sync_clk] \
     [get_bd_pins ctrl_smc/aclk] [get_bd_pins mem_smc/aclk] \
     [get_bd_pins dma/s_axi_lite_aclk] [get_bd_pins dma/m_axi_mm2s_aclk] [get_bd_pins dma/m_axi_s2mm_aclk] \
-    [get_bd_pins fcc/clk] \
-    [get_bd_pins status_gpio0/s_axi_aclk] \
-    [get_bd_pins status_gpio1/s_axi_aclk]
+    [get_bd_pins fcc/clk]
 connect_bd_net [get_bd_pins ps7/FCLK_RESET0_N] [get_bd_pins rst_fclk0/ext_reset_in]
 connect_bd_net [get_bd_pins rst_fclk0/interconnect_aresetn] \
     [get_bd_pins ctrl_smc/aresetn] [get_bd_pins mem_smc/aresetn]
 connect_bd_net [get_bd_pins rst_fclk0/peripheral_aresetn] \
-    [get_bd_pins dma/axi_resetn] \
-    [get_bd_pins status_gpio0/s_axi_aresetn] \
-    [get_bd_pins status_gpio1/s_axi_aresetn]
+    [get_bd_pins dma/axi_resetn]
 connect_bd_net [get_bd_pins rst_fclk0/peripheral_reset] [get_bd_pins fcc/rst]
 
-# Control: PS -> DMA registers and GPIO; memory: DMA -> DDR; streams.
+# Control: PS -> DMA registers and the core's registers; memory: DMA -> DDR;
+# streams.
 connect_bd_intf_net [get_bd_intf_pins ps7/M_AXI_GP0] [get_bd_intf_pins ctrl_smc/S00_AXI]
 connect_bd_intf_net [get_bd_intf_pins ctrl_smc/M00_AXI] [get_bd_intf_pins dma/S_AXI_LITE]
-connect_bd_intf_net [get_bd_intf_pins ctrl_smc/M01_AXI] [get_bd_intf_pins status_gpio0/S_AXI]
-connect_bd_intf_net [get_bd_intf_pins ctrl_smc/M02_AXI] [get_bd_intf_pins status_gpio1/S_AXI]
+connect_bd_intf_net [get_bd_intf_pins ctrl_smc/M01_AXI] [get_bd_intf_pins fcc/s_axil]
 connect_bd_intf_net [get_bd_intf_pins dma/M_AXI_MM2S] [get_bd_intf_pins mem_smc/S00_AXI]
 connect_bd_intf_net [get_bd_intf_pins dma/M_AXI_S2MM] [get_bd_intf_pins mem_smc/S01_AXI]
 connect_bd_intf_net [get_bd_intf_pins mem_smc/M00_AXI] [get_bd_intf_pins ps7/S_AXI_HP0]
@@ -161,6 +150,7 @@ connect_bd_intf_net [get_bd_intf_pins fcc/m_axis] [get_bd_intf_pins dma/S_AXIS_S
 # Interrupts.
 connect_bd_net [get_bd_pins dma/mm2s_introut] [get_bd_pins irq_concat/In0]
 connect_bd_net [get_bd_pins dma/s2mm_introut] [get_bd_pins irq_concat/In1]
+connect_bd_net [get_bd_pins fcc/irq] [get_bd_pins irq_concat/In2]
 connect_bd_net [get_bd_pins irq_concat/dout] [get_bd_pins ps7/IRQ_F2P]
 
 assign_bd_address
@@ -169,16 +159,31 @@ save_bd_design
 
 file mkdir $proj_dir
 set map [open [file join $proj_dir ${design}_map.txt] w]
-puts $map "# fcc_zc706 software view: PS address segments (name offset range), DMA lengths, status bit fields"
+puts $map "# fcc_zc706 software view: PS address segments (name offset range), DMA lengths, fcc registers (offset name access)"
 foreach seg [get_bd_addr_segs -of_objects [get_bd_addr_spaces ps7/Data]] {
     puts $map "segment [get_property NAME $seg] [get_property OFFSET $seg] [get_property RANGE $seg]"
 }
 puts $map {dma MM2S_LENGTH 1048576}
 puts $map {dma S2MM_LENGTH 262144}
-puts $map {status status_gpio0 GPIO_DATA (0x0): [15:0] status_clusters, [31:16] status_provisional}
-puts $map {status status_gpio0 GPIO2_DATA (0x8): [0] status_overflow, [20:1] status_unlabelled, [21] status_frame_error}
-puts $map {status status_gpio1 GPIO_DATA (0x0): [23:0] status_joins}
-puts $map {status status_gpio1 GPIO2_DATA (0x8): [23:0] status_gear_stalls, [24] status_frame_done, [25] status_idle}
+puts $map {register 0x000 ID RO}
+puts $map {register 0x004 VERSION RO}
+puts $map {register 0x008 HASH_LO RO}
+puts $map {register 0x00C HASH_HI RO}
+puts $map {register 0x010 K_MAX RO}
+puts $map {register 0x014 ROWS_MAX RO}
+puts $map {register 0x018 COLS_MAX RO}
+puts $map {register 0x01C LABEL_BITS RO}
+puts $map {register 0x020 LABELS_PER_BEAT RO}
+puts $map {register 0x024 CLOCK_KHZ RO}
+puts $map {register 0x040 CONTROL RW}
+puts $map {register 0x044 STATUS W1C}
+puts $map {register 0x050 FRAME_COUNT RO}
+puts $map {register 0x054 CLUSTERS RO}
+puts $map {register 0x058 PROVISIONAL RO}
+puts $map {register 0x05C UNLABELLED RO}
+puts $map {register 0x060 FRAME_FLAGS RO}
+puts $map {register 0x064 JOINS RO}
+puts $map {register 0x068 GEAR_STALLS RO}
 close $map
 
 make_wrapper -files [get_files $design.bd] -top -import

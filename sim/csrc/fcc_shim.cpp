@@ -14,6 +14,15 @@ struct FccIn {
     uint8_t s_tlast;
     uint8_t m_tready;
     uint8_t rst;
+    // AXI4-Lite master side.
+    uint32_t awaddr;
+    uint32_t wdata;
+    uint32_t araddr;
+    uint8_t awvalid;
+    uint8_t wvalid;
+    uint8_t bready;
+    uint8_t arvalid;
+    uint8_t rready;
 };
 
 // Outputs seen during that cycle, before its rising edge (must match `FccOut`).
@@ -32,6 +41,16 @@ struct FccOut {
     uint8_t frame_error;
     uint8_t overflow;
     uint8_t idle;
+    // AXI4-Lite slave side and the interrupt.
+    uint32_t rdata;
+    uint8_t awready;
+    uint8_t wready;
+    uint8_t bvalid;
+    uint8_t bresp;
+    uint8_t arready;
+    uint8_t rvalid;
+    uint8_t rresp;
+    uint8_t irq;
 };
 
 struct FccModel {
@@ -64,6 +83,16 @@ void fcc_step(void* p, const FccIn* in, FccOut* out) {
     t->s_axis_tlast = in->s_tlast;
     t->m_axis_tready = in->m_tready;
     t->rst = in->rst;
+    t->s_axis_tkeep = 0xff;
+    t->s_axil_awaddr = in->awaddr;
+    t->s_axil_awvalid = in->awvalid;
+    t->s_axil_wdata = in->wdata;
+    t->s_axil_wstrb = 0xf;
+    t->s_axil_wvalid = in->wvalid;
+    t->s_axil_bready = in->bready;
+    t->s_axil_araddr = in->araddr;
+    t->s_axil_arvalid = in->arvalid;
+    t->s_axil_rready = in->rready;
     t->clk = 0;
     t->eval();
     out->m_tdata = t->m_axis_tdata;
@@ -80,6 +109,15 @@ void fcc_step(void* p, const FccIn* in, FccOut* out) {
     out->frame_error = t->status_frame_error;
     out->overflow = t->status_overflow;
     out->idle = t->status_idle;
+    out->rdata = t->s_axil_rdata;
+    out->awready = t->s_axil_awready;
+    out->wready = t->s_axil_wready;
+    out->bvalid = t->s_axil_bvalid;
+    out->bresp = t->s_axil_bresp;
+    out->arready = t->s_axil_arready;
+    out->rvalid = t->s_axil_rvalid;
+    out->rresp = t->s_axil_rresp;
+    out->irq = t->irq;
     t->clk = 1;
     t->eval();
     m->ctx.timeInc(1);

@@ -4,6 +4,7 @@ use fcc_golden::Frame;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
+use crate::axil::{AxilM, AxilPort, AxilS};
 use crate::model::{Dut, FccIn, FccOut};
 use crate::SimError;
 
@@ -121,6 +122,7 @@ impl Dut {
         for _ in 0..cycles {
             self.step(&inp);
         }
+        self.frames_seen = 0;
     }
 
     /// Offer the first `n` beats of `frame` (no gaps, output always ready)
@@ -140,7 +142,7 @@ impl Dut {
                 s_tvalid: 1,
                 s_tlast: u8::from(beats[i].1),
                 m_tready: 1,
-                rst: 0,
+                ..Default::default()
             };
             let out = self.step(&inp);
             if out.s_tready != 0 {
@@ -189,7 +191,7 @@ impl Dut {
                 s_tvalid: u8::from(offering),
                 s_tlast: u8::from(tlast),
                 m_tready: u8::from(ready),
-                rst: 0,
+                ..Default::default()
             };
             let now = self.cycle;
             let out: FccOut = self.step(&inp);
@@ -255,5 +257,35 @@ impl Dut {
             )));
         }
         Ok(run)
+    }
+}
+
+impl AxilPort for Dut {
+    /// One cycle of register access with the pixel stream idle and the
+    /// label stream ready.
+    fn axil_cycle(&mut self, m: &AxilM) -> AxilS {
+        let inp = FccIn {
+            m_tready: 1,
+            awaddr: m.awaddr,
+            awvalid: u8::from(m.awvalid),
+            wdata: m.wdata,
+            wvalid: u8::from(m.wvalid),
+            bready: u8::from(m.bready),
+            araddr: m.araddr,
+            arvalid: u8::from(m.arvalid),
+            rready: u8::from(m.rready),
+            ..Default::default()
+        };
+        let o = self.step(&inp);
+        AxilS {
+            awready: o.awready != 0,
+            wready: o.wready != 0,
+            bvalid: o.bvalid != 0,
+            bresp: o.bresp,
+            arready: o.arready != 0,
+            rvalid: o.rvalid != 0,
+            rdata: o.rdata,
+            rresp: o.rresp,
+        }
     }
 }

@@ -6,16 +6,20 @@
 //! back-pressure; [`check::compare`] compares every label with the golden
 //! model and reports the first differing pixel.
 
+pub mod axil;
 pub mod check;
 pub mod drive;
 pub mod frames;
 pub mod model;
+pub mod regs_bench;
 
 use std::path::PathBuf;
 
+pub use axil::{AxilM, AxilMaster, AxilPort, AxilS, WriteOrder};
 pub use check::{compare, expected};
 pub use drive::{frame_beats, Drive, FrameRun, Tlast};
 pub use model::{load, Dut, Model};
+pub use regs_bench::{load_regs, RegsDut, RegsIn, RegsOut};
 
 /// Everything that can go wrong in a simulation.
 #[derive(Debug, thiserror::Error)]
@@ -60,6 +64,57 @@ pub fn run_and_check(
     let p = dut.params().clone();
     let gold = expected(&p, frame)?;
     let run = dut.run_frame(frame, drive)?;
-    compare(&p, &gold, &run, &format!("{what} seed {}", drive.seed))?;
+    let what = format!("{what} seed {}", drive.seed);
+    compare(&p, &gold, &run, &what)?;
+    check_status_registers(dut, &run, &what)?;
     Ok(run)
+}
+
+/// Read the frame status through the AXI4-Lite registers (with BREADY /
+/// RREADY stalls) and compare it with what the status ports said; check and
+/// clear the sticky FRAME_DONE bit and that FRAME_COUNT moved on.
+pub fn check_status_registers(dut: &mut Dut, run: &FrameRun, what: &str) -> Result<(), SimError> {
+    use fcc_rtl::regmap::{bits, offset};
+    let mut m = AxilMaster::new(dut.cycle);
+    m.stall = 0.3;
+    let flags = u32::from(run.overflow) * bits::FLAGS_OVERFLOW
+        | u32::from(run.frame_error) * bits::FLAGS_FRAME_ERROR;
+    let expect = [
+        ("CLUSTERS", offset::CLUSTERS, run.clusters),
+        ("PROVISIONAL", offset::PROVISIONAL, run.provisional),
+        ("UNLABELLED", offset::UNLABELLED, run.unlabelled),
+        ("FRAME_FLAGS", offset::FRAME_FLAGS, flags),
+        ("JOINS", offset::JOINS, run.joins),
+        ("GEAR_STALLS", offset::GEAR_STALLS, run.gear_stalls),
+    ];
+    for (name, off, want) in expect {
+        let got = m.read(dut, off)?;
+        if got != want {
+            return Err(SimError::Mismatch(format!(
+                "{what}: register {name}: expected {want} != got {got}"
+            )));
+        }
+    }
+    let st = m.read(dut, offset::STATUS)?;
+    if st & bits::STATUS_FRAME_DONE == 0 {
+        return Err(SimError::Mismatch(format!(
+            "{what}: STATUS.FRAME_DONE not set after the frame (STATUS {st:#x})"
+        )));
+    }
+    m.write_ok(dut, offset::STATUS, bits::STATUS_FRAME_DONE)?;
+    let st = m.read(dut, offset::STATUS)?;
+    if st & bits::STATUS_FRAME_DONE != 0 {
+        return Err(SimError::Mismatch(format!(
+            "{what}: STATUS.FRAME_DONE not cleared by writing 1 (STATUS {st:#x})"
+        )));
+    }
+    let count = m.read(dut, offset::FRAME_COUNT)?;
+    if count <= dut.frames_seen {
+        return Err(SimError::Mismatch(format!(
+            "{what}: FRAME_COUNT {count} did not move on from {}",
+            dut.frames_seen
+        )));
+    }
+    dut.frames_seen = count;
+    Ok(())
 }

@@ -31,6 +31,14 @@ pub struct FccIn {
     pub s_tlast: u8,
     pub m_tready: u8,
     pub rst: u8,
+    pub awaddr: u32,
+    pub wdata: u32,
+    pub araddr: u32,
+    pub awvalid: u8,
+    pub wvalid: u8,
+    pub bready: u8,
+    pub arvalid: u8,
+    pub rready: u8,
 }
 
 /// Outputs during one cycle, before its rising edge; layout shared with `FccOut`.
@@ -51,6 +59,15 @@ pub struct FccOut {
     pub frame_error: u8,
     pub overflow: u8,
     pub idle: u8,
+    pub rdata: u32,
+    pub awready: u8,
+    pub wready: u8,
+    pub bvalid: u8,
+    pub bresp: u8,
+    pub arready: u8,
+    pub rvalid: u8,
+    pub rresp: u8,
+    pub irq: u8,
 }
 
 type NewFn = unsafe extern "C" fn() -> *mut c_void;
@@ -81,6 +98,8 @@ pub struct Dut {
     handle: *mut c_void,
     /// Rising edges simulated so far.
     pub cycle: u64,
+    /// FRAME_COUNT as last read by the bench (0 after a reset).
+    pub frames_seen: u32,
 }
 
 impl Dut {
@@ -92,6 +111,7 @@ impl Dut {
             model,
             handle,
             cycle: 0,
+            frames_seen: 0,
         }
     }
 
@@ -131,7 +151,7 @@ pub fn cache_root() -> PathBuf {
         .join("fcc-sim-cache")
 }
 
-fn fnv(text: &str) -> u64 {
+pub(crate) fn fnv(text: &str) -> u64 {
     let mut h: u64 = 0xcbf2_9ce4_8422_2325;
     for b in text.bytes() {
         h ^= u64::from(b);
@@ -159,7 +179,18 @@ pub fn load(p: &FccParams) -> Result<Arc<Model>, SimError> {
     }
     let dir = cache_root().join(&key);
     if !dir.join(LIB_NAME).exists() {
-        build(&gen, &dir)?;
+        let files: Vec<(&str, &str)> = gen.files();
+        build(
+            &files,
+            &dir,
+            &Shim {
+                name: "fcc_shim.cpp",
+                text: SHIM,
+                top: fcc_rtl::TOP_MODULE,
+                sources: &["fcc_lint.vlt", "fcc_top.v"],
+                lib: LIB_NAME,
+            },
+        )?;
     }
     let model = Arc::new(open(p, &dir)?);
     map.insert(key, model.clone());
@@ -232,7 +263,19 @@ fn io(path: &Path) -> impl FnOnce(std::io::Error) -> SimError + '_ {
     }
 }
 
-fn build(gen: &fcc_rtl::Generated, dir: &Path) -> Result<(), SimError> {
+/// What to verilate and link: the C shim, the top module, the files handed
+/// to Verilator and the library's name.
+pub(crate) struct Shim<'a> {
+    pub name: &'a str,
+    pub text: &'a str,
+    pub top: &'a str,
+    pub sources: &'a [&'a str],
+    pub lib: &'a str,
+}
+
+/// Write `files` and the shim into a private directory, verilate and link
+/// them, and rename the directory to `dir`.
+pub(crate) fn build(files: &[(&str, &str)], dir: &Path, shim: &Shim) -> Result<(), SimError> {
     let root = dir.parent().unwrap_or(dir);
     std::fs::create_dir_all(root).map_err(io(root))?;
     let tmp = root.join(format!(
@@ -242,20 +285,21 @@ fn build(gen: &fcc_rtl::Generated, dir: &Path) -> Result<(), SimError> {
     ));
     let _ = std::fs::remove_dir_all(&tmp);
     std::fs::create_dir_all(&tmp).map_err(io(&tmp))?;
-    for (name, text) in gen.files() {
+    for (name, text) in files {
         let path = tmp.join(name);
         std::fs::write(&path, text).map_err(io(&path))?;
     }
-    let shim = tmp.join("fcc_shim.cpp");
-    std::fs::write(&shim, SHIM).map_err(io(&shim))?;
+    let shim_path = tmp.join(shim.name);
+    std::fs::write(&shim_path, shim.text).map_err(io(&shim_path))?;
     let jobs = std::env::var("FCC_SIM_JOBS").unwrap_or_else(|_| "2".to_string());
     run(
         Command::new("verilator")
             .current_dir(&tmp)
             .args(["--cc", "--build", "-j", &jobs, "-Wno-fatal", "-O3"])
             .args(["--x-assign", "fast", "--x-initial", "fast", "--noassert"])
-            .args(["-CFLAGS", "-fPIC -O1", "--top-module", fcc_rtl::TOP_MODULE])
-            .args(["-Mdir", "obj", "fcc_lint.vlt", "fcc_top.v"]),
+            .args(["-CFLAGS", "-fPIC -O1", "--top-module", shim.top])
+            .args(["-Mdir", "obj"])
+            .args(shim.sources),
         "verilator",
     )?;
     let vroot = Command::new("verilator")
@@ -275,11 +319,11 @@ fn build(gen: &fcc_rtl::Generated, dir: &Path) -> Result<(), SimError> {
             .args(["-shared", "-fPIC", "-O1", "-std=c++17", "-Iobj"])
             .arg(format!("-I{}", inc.display()))
             .arg(format!("-I{}", inc.join("vltstd").display()))
-            .arg("fcc_shim.cpp")
+            .arg(shim.name)
             .arg(inc.join("verilated.cpp"))
             .arg(inc.join("verilated_threads.cpp"))
-            .arg("obj/Vfcc_top__ALL.a")
-            .args(["-pthread", "-latomic", "-o", LIB_NAME]),
+            .arg(format!("obj/V{}__ALL.a", shim.top))
+            .args(["-pthread", "-latomic", "-o", shim.lib]),
         "c++ (link the Verilator model)",
     )?;
     // Keep only what is needed to load and inspect the model.
@@ -287,7 +331,7 @@ fn build(gen: &fcc_rtl::Generated, dir: &Path) -> Result<(), SimError> {
     match std::fs::rename(&tmp, dir) {
         Ok(()) => Ok(()),
         // Another process finished the same model first: use theirs.
-        Err(_) if dir.join(LIB_NAME).exists() => {
+        Err(_) if dir.join(shim.lib).exists() => {
             let _ = std::fs::remove_dir_all(&tmp);
             Ok(())
         }

@@ -118,7 +118,7 @@ pub fn run(args: &SynthArgs) -> anyhow::Result<()> {
     if let Some(dir) = &args.rtl_dir {
         let json = dir.join("fcc_params.json");
         if json.is_file() {
-            p = serde_json::from_str(&read(&json)?)
+            p = fcc_rtl::ParamsFile::params_from_json(&read(&json)?)
                 .with_context(|| format!("{}: not a parameter file", json.display()))?;
             eprintln!("parameters from {}", json.display());
         }

@@ -29,8 +29,10 @@ use crate::fcc_dist_tree::FccDistTree;
 use crate::fcc_intra::FccIntra;
 use crate::fcc_label_update::FccLabelUpdate;
 use crate::fcc_merge_table::FccMergeTable;
+use crate::fcc_regs::FccRegs;
 use crate::fcc_sort_net::{FccSortNet, CB_BITS};
 use crate::fcc_window::FccWindow;
+use crate::regmap::ADDR_BITS;
 use crate::types::{kb, Pix};
 
 /// Pixel slots that may be between the input and the centre buffer's output:
@@ -43,6 +45,9 @@ pub struct FccTop {
     pub rst: Signal<In, Bit>,
     // AXI4-Stream slave: pixels.
     pub s_axis_tdata: Signal<In, Bits<64>>,
+    /// Ignored (every beat is one whole pixel); present so that an AXI DMA's
+    /// MM2S stream connects without a validation warning.
+    pub s_axis_tkeep: Signal<In, Bits<8>>,
     pub s_axis_tvalid: Signal<In, Bit>,
     pub s_axis_tready: Signal<Out, Bit>,
     pub s_axis_tlast: Signal<In, Bit>,
@@ -52,6 +57,26 @@ pub struct FccTop {
     pub m_axis_tvalid: Signal<Out, Bit>,
     pub m_axis_tready: Signal<In, Bit>,
     pub m_axis_tlast: Signal<Out, Bit>,
+    // AXI4-Lite slave: the register file (map in `regmap`).
+    pub s_axil_awaddr: Signal<In, Bits<ADDR_BITS>>,
+    pub s_axil_awvalid: Signal<In, Bit>,
+    pub s_axil_awready: Signal<Out, Bit>,
+    pub s_axil_wdata: Signal<In, Bits<32>>,
+    pub s_axil_wstrb: Signal<In, Bits<4>>,
+    pub s_axil_wvalid: Signal<In, Bit>,
+    pub s_axil_wready: Signal<Out, Bit>,
+    pub s_axil_bresp: Signal<Out, Bits<2>>,
+    pub s_axil_bvalid: Signal<Out, Bit>,
+    pub s_axil_bready: Signal<In, Bit>,
+    pub s_axil_araddr: Signal<In, Bits<ADDR_BITS>>,
+    pub s_axil_arvalid: Signal<In, Bit>,
+    pub s_axil_arready: Signal<Out, Bit>,
+    pub s_axil_rdata: Signal<Out, Bits<32>>,
+    pub s_axil_rresp: Signal<Out, Bits<2>>,
+    pub s_axil_rvalid: Signal<Out, Bit>,
+    pub s_axil_rready: Signal<In, Bit>,
+    /// Level-high interrupt: STATUS.FRAME_DONE while CONTROL.IRQ_ENABLE.
+    pub irq: Signal<Out, Bit>,
     // Status of the last completed frame (stable from `status_frame_done`).
     pub status_clusters: Signal<Out, Bits<16>>,
     pub status_provisional: Signal<Out, Bits<16>>,
@@ -70,6 +95,7 @@ pub struct FccTop {
     sort_net: FccSortNet,
     merge_table: FccMergeTable,
     label_update: FccLabelUpdate,
+    regs: FccRegs,
     fsm: DFF<Bits<2>>,
     tready_q: DFF<Bit>,
     pad_go: DFF<Bit>,
@@ -87,14 +113,6 @@ pub struct FccTop {
     credits: DFF<Bits<10>>,
     room: DFF<Bit>,
     last_seen: DFF<Bit>,
-    st_clusters: DFF<Bits<16>>,
-    st_prov: DFF<Bits<16>>,
-    st_ovf: DFF<Bit>,
-    st_unl: DFF<Bits<20>>,
-    st_err: DFF<Bit>,
-    st_joins: DFF<Bits<24>>,
-    st_gstall: DFF<Bits<24>>,
-    done_q: DFF<Bit>,
     // Combinational.
     accept: Signal<Local, Bit>,
     beat: Signal<Local, Bit>,
@@ -130,6 +148,7 @@ impl FccTop {
             clk: Default::default(),
             rst: Default::default(),
             s_axis_tdata: Default::default(),
+            s_axis_tkeep: Default::default(),
             s_axis_tvalid: Default::default(),
             s_axis_tready: Default::default(),
             s_axis_tlast: Default::default(),
@@ -138,6 +157,24 @@ impl FccTop {
             m_axis_tvalid: Default::default(),
             m_axis_tready: Default::default(),
             m_axis_tlast: Default::default(),
+            s_axil_awaddr: Default::default(),
+            s_axil_awvalid: Default::default(),
+            s_axil_awready: Default::default(),
+            s_axil_wdata: Default::default(),
+            s_axil_wstrb: Default::default(),
+            s_axil_wvalid: Default::default(),
+            s_axil_wready: Default::default(),
+            s_axil_bresp: Default::default(),
+            s_axil_bvalid: Default::default(),
+            s_axil_bready: Default::default(),
+            s_axil_araddr: Default::default(),
+            s_axil_arvalid: Default::default(),
+            s_axil_arready: Default::default(),
+            s_axil_rdata: Default::default(),
+            s_axil_rresp: Default::default(),
+            s_axil_rvalid: Default::default(),
+            s_axil_rready: Default::default(),
+            irq: Default::default(),
             status_clusters: Default::default(),
             status_provisional: Default::default(),
             status_overflow: Default::default(),
@@ -153,6 +190,7 @@ impl FccTop {
             sort_net: FccSortNet::new(p),
             merge_table: FccMergeTable::new(p),
             label_update: FccLabelUpdate::new(p),
+            regs: FccRegs::new(p),
             fsm: Default::default(),
             tready_q: Default::default(),
             pad_go: Default::default(),
@@ -170,14 +208,6 @@ impl FccTop {
             credits: Default::default(),
             room: Default::default(),
             last_seen: Default::default(),
-            st_clusters: Default::default(),
-            st_prov: Default::default(),
-            st_ovf: Default::default(),
-            st_unl: Default::default(),
-            st_err: Default::default(),
-            st_joins: Default::default(),
-            st_gstall: Default::default(),
-            done_q: Default::default(),
             accept: Default::default(),
             beat: Default::default(),
             slot: Default::default(),
@@ -210,33 +240,8 @@ impl Logic for FccTop {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self,
-            clk,
-            fsm,
-            tready_q,
-            pad_go,
-            slot_q,
-            row,
-            col,
-            col0,
-            col_last,
-            row_last,
-            first,
-            pad,
-            discard,
-            in_done,
-            err,
-            credits,
-            room,
-            last_seen,
-            st_clusters,
-            st_prov,
-            st_ovf,
-            st_unl,
-            st_err,
-            st_joins,
-            st_gstall,
-            done_q
+            self, clk, fsm, tready_q, pad_go, slot_q, row, col, col0, col_last, row_last, first,
+            pad, discard, in_done, err, credits, room, last_seen
         );
         self.intra.clk.next = self.clk.val();
         self.window.clk.next = self.clk.val();
@@ -244,6 +249,34 @@ impl Logic for FccTop {
         self.sort_net.clk.next = self.clk.val();
         self.merge_table.clk.next = self.clk.val();
         self.label_update.clk.next = self.clk.val();
+        self.regs.clk.next = self.clk.val();
+        // ---- Register file; the pipeline's reset is its `core_rst`.
+        self.regs.rst.next = self.rst.val();
+        self.regs.s_axil_awaddr.next = self.s_axil_awaddr.val();
+        self.regs.s_axil_awvalid.next = self.s_axil_awvalid.val();
+        self.regs.s_axil_wdata.next = self.s_axil_wdata.val();
+        self.regs.s_axil_wstrb.next = self.s_axil_wstrb.val();
+        self.regs.s_axil_wvalid.next = self.s_axil_wvalid.val();
+        self.regs.s_axil_bready.next = self.s_axil_bready.val();
+        self.regs.s_axil_araddr.next = self.s_axil_araddr.val();
+        self.regs.s_axil_arvalid.next = self.s_axil_arvalid.val();
+        self.regs.s_axil_rready.next = self.s_axil_rready.val();
+        self.s_axil_awready.next = self.regs.s_axil_awready.val();
+        self.s_axil_wready.next = self.regs.s_axil_wready.val();
+        self.s_axil_bresp.next = self.regs.s_axil_bresp.val();
+        self.s_axil_bvalid.next = self.regs.s_axil_bvalid.val();
+        self.s_axil_arready.next = self.regs.s_axil_arready.val();
+        self.s_axil_rdata.next = self.regs.s_axil_rdata.val();
+        self.s_axil_rresp.next = self.regs.s_axil_rresp.val();
+        self.s_axil_rvalid.next = self.regs.s_axil_rvalid.val();
+        self.irq.next = self.regs.irq.val();
+        self.regs.clusters.next = self.merge_table.clusters.val();
+        self.regs.provisional.next = self.intra.provisional.val().get_bits::<16>(0);
+        self.regs.overflow.next = self.intra.overflow.val();
+        self.regs.unlabelled.next = self.intra.unlabelled.val();
+        self.regs.frame_error.next = self.err.q.val();
+        self.regs.joins.next = self.sort_net.joins.val();
+        self.regs.gear_stalls.next = self.label_update.gear_stalls.val();
         // ---- Input stage: pixel slots, padding of a short frame, dropping of a long one.
         self.accept.next = self.s_axis_tvalid.val() & self.tready_q.q.val();
         self.beat.next = self.accept.val() & !self.discard.q.val();
@@ -321,7 +354,6 @@ impl Logic for FccTop {
         self.drained.next = self.last_seen.q.val()
             & self.merge_table.union_idle.val()
             & self.sort_net.jq_empty.val();
-        self.done_q.d.next = false;
         self.merge_table.flat_start.next = false;
         self.label_update.rb_start.next = false;
         if (self.fsm.q.val() == self.f_init.val()) & !self.merge_table.init_busy.val() {
@@ -336,20 +368,14 @@ impl Logic for FccTop {
             self.fsm.d.next = self.f_out.val();
         }
         self.nxt_run.next = self.fsm.q.val() == self.f_run.val();
+        self.regs.frame_end.next = false;
         if (self.fsm.q.val() == self.f_out.val()) & self.label_update.rb_done.val() {
             self.fsm.d.next = self.f_run.val();
             self.nxt_run.next = true;
             self.nxt_in_done.next = false;
             self.last_seen.d.next = false;
             self.err.d.next = false;
-            self.done_q.d.next = true;
-            self.st_clusters.d.next = self.merge_table.clusters.val();
-            self.st_prov.d.next = self.intra.provisional.val().get_bits::<16>(0);
-            self.st_ovf.d.next = self.intra.overflow.val();
-            self.st_unl.d.next = self.intra.unlabelled.val();
-            self.st_err.d.next = self.err.q.val();
-            self.st_joins.d.next = self.sort_net.joins.val();
-            self.st_gstall.d.next = self.label_update.gear_stalls.val();
+            self.regs.frame_end.next = true;
         }
         self.pad.d.next = self.nxt_pad.val();
         self.discard.d.next = self.nxt_discard.val();
@@ -362,7 +388,7 @@ impl Logic for FccTop {
                 & self.room.q.val());
         self.pad_go.d.next =
             self.nxt_pad.val() & self.nxt_run.val() & !self.nxt_in_done.val() & self.room.q.val();
-        if self.rst.val() {
+        if self.regs.core_rst.val() {
             self.fsm.d.next = self.f_init.val();
             self.tready_q.d.next = false;
             self.pad_go.d.next = false;
@@ -380,12 +406,11 @@ impl Logic for FccTop {
             self.credits.d.next = self.zero10.val();
             self.room.d.next = true;
             self.last_seen.d.next = false;
-            self.done_q.d.next = false;
         }
         // ---- Blocks.
-        self.intra.rst.next = self.rst.val();
+        self.intra.rst.next = self.regs.core_rst.val();
         self.intra.pix.next = self.slot_q.q.val();
-        self.window.rst.next = self.rst.val();
+        self.window.rst.next = self.regs.core_rst.val();
         self.window.inp.next.valid = self.intra.out.val().valid;
         self.window.inp.next.lok = self.intra.out.val().lok;
         self.window.inp.next.x = self.intra.out.val().x;
@@ -402,7 +427,7 @@ impl Logic for FccTop {
         self.window.rep_we.next = self.sort_net.rep_we.val();
         self.window.rep_waddr.next = self.sort_net.rep_waddr.val();
         self.window.rep_wdata.next = self.sort_net.rep_wdata.val();
-        self.dist_tree.rst.next = self.rst.val();
+        self.dist_tree.rst.next = self.regs.core_rst.val();
         self.dist_tree.centre_in.next = self.window.centre.val();
         for e in 0..self.window.ent_ok.len() {
             self.dist_tree.ent_ok[e].next = self.window.ent_ok[e].val();
@@ -412,18 +437,18 @@ impl Logic for FccTop {
             self.sort_net.hit[e].next = self.dist_tree.hit[e].val();
             self.sort_net.rep[e].next = self.window.ent_rep[e].val();
         }
-        self.sort_net.rst.next = self.rst.val();
+        self.sort_net.rst.next = self.regs.core_rst.val();
         self.sort_net.clear.next = self.label_update.rb_done.val();
         self.sort_net.centre.next = self.dist_tree.centre.val();
         self.sort_net.jtake.next = self.merge_table.jtake.val();
-        self.merge_table.rst.next = self.rst.val();
+        self.merge_table.rst.next = self.regs.core_rst.val();
         self.merge_table.jv.next = self.sort_net.jv.val();
         self.merge_table.ja.next = self.sort_net.ja.val();
         self.merge_table.jb.next = self.sort_net.jb.val();
         self.merge_table.jsame.next = self.sort_net.jsame.val();
         self.merge_table.provisional.next = self.intra.provisional.val();
         self.merge_table.gear_used.next = self.label_update.gear_used.val();
-        self.label_update.rst.next = self.rst.val();
+        self.label_update.rst.next = self.regs.core_rst.val();
         self.label_update.wr_valid.next = self.intra.out.val().valid;
         self.label_update.wr_state.next = self.intra.out.val().state;
         self.label_update.wr_last.next = self.intra.out.val().last;
@@ -435,15 +460,17 @@ impl Logic for FccTop {
         self.m_axis_tvalid.next = self.label_update.m_axis_tvalid.val();
         self.m_axis_tlast.next = self.label_update.m_axis_tlast.val();
         self.s_axis_tready.next = self.tready_q.q.val();
-        self.status_clusters.next = self.st_clusters.q.val();
-        self.status_provisional.next = self.st_prov.q.val();
-        self.status_overflow.next = self.st_ovf.q.val();
-        self.status_unlabelled.next = self.st_unl.q.val();
-        self.status_frame_error.next = self.st_err.q.val();
-        self.status_joins.next = self.st_joins.q.val();
-        self.status_gear_stalls.next = self.st_gstall.q.val();
-        self.status_frame_done.next = self.done_q.q.val();
+        self.status_clusters.next = self.regs.st_clusters.val();
+        self.status_provisional.next = self.regs.st_provisional.val();
+        self.status_overflow.next = self.regs.st_overflow.val();
+        self.status_unlabelled.next = self.regs.st_unlabelled.val();
+        self.status_frame_error.next = self.regs.st_frame_error.val();
+        self.status_joins.next = self.regs.st_joins.val();
+        self.status_gear_stalls.next = self.regs.st_gear_stalls.val();
+        self.status_frame_done.next = self.regs.frame_done.val();
         self.status_idle.next =
+            (self.fsm.q.val() == self.f_run.val()) & !self.in_done.q.val() & self.first.q.val();
+        self.regs.idle.next =
             (self.fsm.q.val() == self.f_run.val()) & !self.in_done.q.val() & self.first.q.val();
     }
 }

@@ -23,6 +23,8 @@ mod fcc_merge_table;
 mod fcc_pick;
 mod fcc_prefix_or;
 mod fcc_ram;
+mod fcc_reg_mux;
+mod fcc_regs;
 mod fcc_row_word;
 mod fcc_sort_net;
 mod fcc_sq_dist;
@@ -30,6 +32,7 @@ mod fcc_top;
 mod fcc_two_or;
 mod fcc_window;
 pub mod lint;
+pub mod regmap;
 pub mod types;
 pub mod vivado;
 
@@ -40,6 +43,7 @@ use fcc_params::{FccParams, ParamError};
 use rust_hdl::prelude::*;
 use thiserror::Error;
 
+pub use fcc_regs::FccRegs;
 pub use fcc_top::{FccTop, CREDITS};
 
 /// Version of this generator, written into every generated file.
@@ -80,8 +84,11 @@ pub struct Generated {
     pub verilog_header: String,
     /// `fcc_params.h`: the same as C++ constants, for the Verilator shim.
     pub cpp_header: String,
-    /// `fcc_params.json`: the canonical parameter set.
+    /// `fcc_params.json`: the canonical parameter set, the generator
+    /// version, the hash and the register map (see [`ParamsFile`]).
     pub params_json: String,
+    /// `fcc_regs.h`: the register map for C99 software.
+    pub regs_header: String,
     /// `fcc_lint.vlt`: the Verilator lint waivers, each with its reason.
     pub lint_waivers: String,
 }
@@ -94,6 +101,7 @@ impl Generated {
             ("fcc_params.vh", self.verilog_header.as_str()),
             ("fcc_params.h", self.cpp_header.as_str()),
             ("fcc_params.json", self.params_json.as_str()),
+            ("fcc_regs.h", self.regs_header.as_str()),
             ("fcc_lint.vlt", self.lint_waivers.as_str()),
         ]
     }
@@ -128,7 +136,7 @@ pub fn generate(p: &FccParams) -> Result<Generated, RtlError> {
     top.connect_all();
     check_all(&top).map_err(|e| RtlError::Check(format!("{e:?}")))?;
     let raw = generate_verilog_unchecked(&top);
-    let body = rename_modules(&constant_selects(&raw));
+    let body = rename_modules(&constant_selects(&raw), TOP_MODULE);
     let mut verilog = file_header(p, "//");
     verilog.push_str(&io_comment());
     verilog.push_str("`default_nettype none\n");
@@ -142,9 +150,64 @@ pub fn generate(p: &FccParams) -> Result<Generated, RtlError> {
         verilog,
         verilog_header: verilog_header(p),
         cpp_header: cpp_header(p),
-        params_json: format!("{}\n", p.to_json()),
+        params_json: params_json(p),
+        regs_header: regmap::c_header(p),
         lint_waivers: lint::waivers(p),
     })
+}
+
+/// Name of the register file's module when generated alone (its bench).
+pub const REGS_MODULE: &str = "fcc_regs";
+
+/// The Verilog of the register file `FccRegs` alone, as a module
+/// `fcc_regs` (for its own bench; the core's copy is inside `fcc_top.v`).
+pub fn generate_regs(p: &FccParams) -> Result<String, RtlError> {
+    p.validate_for_hardware()?;
+    let mut regs = FccRegs::new(p);
+    regs.connect_all();
+    check_all(&regs).map_err(|e| RtlError::Check(format!("{e:?}")))?;
+    let raw = generate_verilog_unchecked(&regs);
+    let mut v = file_header(p, "//");
+    v.push_str("`default_nettype none\n");
+    v.push_str(&rename_modules(&constant_selects(&raw), REGS_MODULE));
+    v.push_str("\n`default_nettype wire\n");
+    Ok(v)
+}
+
+/// The contents of `fcc_params.json`.
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct ParamsFile {
+    pub generator_version: String,
+    /// [`FccParams::hash`] of `params`.
+    pub params_hash: String,
+    /// The build: limits of the core and power-on defaults of its run registers.
+    pub params: FccParams,
+    /// The register map ([`regmap::registers`]).
+    pub registers: serde_json::Value,
+}
+
+impl ParamsFile {
+    /// Read `fcc_params.json` text; a plain [`FccParams`] object (files of
+    /// older generators) is accepted too.
+    pub fn params_from_json(text: &str) -> Result<FccParams, serde_json::Error> {
+        match serde_json::from_str::<ParamsFile>(text) {
+            Ok(f) => Ok(f.params),
+            Err(e) => serde_json::from_str::<FccParams>(text).map_err(|_| e),
+        }
+    }
+}
+
+fn params_json(p: &FccParams) -> String {
+    let f = ParamsFile {
+        generator_version: GENERATOR_VERSION.to_string(),
+        params_hash: p.hash(),
+        params: p.clone(),
+        registers: regmap::json(p),
+    };
+    format!(
+        "{}\n",
+        serde_json::to_string_pretty(&f).expect("the parameter file always serialises")
+    )
 }
 
 /// Write the generated files of `p` into `dir` (created if missing).
@@ -222,16 +285,18 @@ fn io_comment() -> String {
 }
 
 /// Give rust-hdl's path-named modules the house names: `top` becomes
-/// `fcc_top`, a block `top$intra` becomes `fcc_intra`, anything below a block
-/// `fcc_<block>__<path>`, and registers of the top `fcc_top__<name>`.
-fn rename_modules(v: &str) -> String {
-    const BLOCKS: [&str; 6] = [
+/// `top_name` (`fcc_top`), a block `top$intra` becomes `fcc_intra`, anything
+/// below a block `fcc_<block>__<path>`, and registers of the top
+/// `<top_name>__<name>`.
+fn rename_modules(v: &str, top_name: &str) -> String {
+    const BLOCKS: [&str; 7] = [
         "intra",
         "window",
         "dist_tree",
         "sort_net",
         "merge_table",
         "label_update",
+        "regs",
     ];
     let mut map = BTreeMap::new();
     for line in v.lines() {
@@ -241,14 +306,14 @@ fn rename_modules(v: &str) -> String {
                 .take_while(|c| c.is_ascii_alphanumeric() || *c == '_' || *c == '$')
                 .collect();
             let new = if name == "top" {
-                TOP_MODULE.to_string()
+                top_name.to_string()
             } else if let Some(path) = name.strip_prefix("top$") {
                 let first = path.split('$').next().unwrap_or_default();
                 let flat = path.replace('$', "__");
                 if BLOCKS.contains(&first) {
                     format!("fcc_{flat}")
                 } else {
-                    format!("{TOP_MODULE}__{flat}")
+                    format!("{top_name}__{flat}")
                 }
             } else {
                 format!("fcc_{}", name.replace('$', "__"))

@@ -17,6 +17,9 @@ pub fn waivers(p: &FccParams) -> String {
          lint_off -rule DECLFILENAME -file \"*fcc_top.v\"\n\
          // Bits 63:49 of an input beat are reserved and ignored by definition.\n\
          lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'s_axis_tdata'[63:49]*\"\n\
+         // s_axis_tkeep is ignored by definition: every beat is one whole pixel\n\
+         // (the port exists so that an AXI DMA's MM2S stream connects cleanly).\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'s_axis_tkeep'*\"\n\
          // rust-hdl writes each module's logic as one combinational always block.\n\
          // The sort network's block feeds the prefix network `kp` (the kept\n\
          // positions of the head record) and reads its outputs. The loop exists\n\
@@ -29,16 +32,46 @@ pub fn waivers(p: &FccParams) -> String {
          lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'cb$level'*\"\n\
          lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'jq$ram_*\"\n",
     );
+    s.push_str(&axil_waivers("fcc_top.v"));
     s
 }
 
-/// Lint `verilog` with the waivers in `vlt`. Returns the log on success.
+/// The waivers of the register file's ports, in `file`.
+fn axil_waivers(file: &str) -> String {
+    format!(
+        "// The register file ignores write strobes (every write is a full word,\n\
+         // see the register map) and decodes word addresses (bits 1:0 unused).\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{file}\" -match \"*'s_axil_wstrb'*\"\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{file}\" -match \"*'s_axil_awaddr'[1:0]*\"\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{file}\" -match \"*'s_axil_araddr'[1:0]*\"\n"
+    )
+}
+
+/// The waivers of `fcc_regs.v`, the register file generated alone for its bench.
+pub fn regs_waivers(p: &FccParams) -> String {
+    let mut s = file_header(p, "//");
+    s.push_str("`verilator_config\n");
+    s.push_str(
+        "// fcc_regs.v holds the register file and its read multiplexer.\n\
+         lint_off -rule DECLFILENAME -file \"*fcc_regs.v\"\n",
+    );
+    s.push_str(&axil_waivers("fcc_regs.v"));
+    s
+}
+
+/// Lint `verilog` (top module `fcc_top`) with the waivers in `vlt`.
+/// Returns the log on success.
 pub fn lint_files(verilog: &Path, vlt: &Path) -> Result<String, RtlError> {
+    lint_module(verilog, vlt, TOP_MODULE)
+}
+
+/// Lint `verilog` with top module `top` and the waivers in `vlt`.
+pub fn lint_module(verilog: &Path, vlt: &Path, top: &str) -> Result<String, RtlError> {
     let out = Command::new("verilator")
         .arg("--lint-only")
         .arg("-Wall")
         .arg("--top-module")
-        .arg(TOP_MODULE)
+        .arg(top)
         .arg(vlt)
         .arg(verilog)
         .output()

@@ -3,10 +3,10 @@
 //!
 //! | File | Function | What it does |
 //! |---|---|---|
-//! | `constraints/fcc_top.xdc` | [`xdc`] | clock, AXI4-Stream port delays, status false paths; out of context only |
+//! | `constraints/fcc_top.xdc` | [`xdc`] | clock, AXI4-Stream and AXI4-Lite port delays, status false paths; out of context only |
 //! | `scripts/fcc_build.tcl` | [`tcl`] | non-project synth / opt / place / route with reports |
-//! | `scripts/fcc_package_ip.tcl` | [`package_ip_tcl`] | `fcc_top` as an IP with its AXI4-Stream, clock and reset interfaces |
-//! | `scripts/fcc_zc706_bd.tcl` | [`bd_tcl`] | Zynq PS7 + AXI DMA + AXI GPIO + the core, for the board |
+//! | `scripts/fcc_package_ip.tcl` | [`package_ip_tcl`] | `fcc_top` as an IP with its AXI4-Stream, AXI4-Lite, interrupt, clock and reset interfaces |
+//! | `scripts/fcc_zc706_bd.tcl` | [`bd_tcl`] | Zynq PS7 + AXI DMA + the core (registers on M_AXI_GP0, `irq`), for the board |
 //!
 //! Vivado is not available where this generator is developed and tested: the
 //! scripts are written to the letter of the Vivado Tcl reference (UG835) and
@@ -46,8 +46,6 @@ pub const OOC_CLOCK_BUFFER: &str = "BUFGCTRL_X0Y0";
 pub const PS7_FCLK_MAX_MHZ: f64 = 250.0;
 /// Widest buffer length register of the AXI DMA (`c_sg_length_width`), bits.
 pub const DMA_LENGTH_WIDTH_MAX: u32 = 26;
-/// Widest AXI GPIO channel, bits.
-pub const GPIO_WIDTH_MAX: u32 = 32;
 /// Name of the block design (and of its project and wrapper).
 pub const BD_NAME: &str = "fcc_zc706";
 
@@ -58,13 +56,16 @@ pub const RESET_PORT: &str = "rst";
 pub const STATUS_PREFIX: &str = "status_";
 /// The AXI4-Stream interfaces of `fcc_top`: name and IP-XACT mode.
 pub const AXIS_INTERFACES: [(&str, &str); 2] = [("s_axis", "slave"), ("m_axis", "master")];
+/// The AXI4-Lite slave interface of `fcc_top` (the register file).
+pub const AXIL_INTERFACE: &str = "s_axil";
+/// The interrupt output.
+pub const IRQ_PORT: &str = "irq";
 
 /// IP catalogue entries the block design instantiates (one place to change
 /// them if a Vivado release retires a version).
 pub mod vlnv {
     pub const PS7: &str = "xilinx.com:ip:processing_system7:5.5";
     pub const DMA: &str = "xilinx.com:ip:axi_dma:7.1";
-    pub const GPIO: &str = "xilinx.com:ip:axi_gpio:2.0";
     pub const SMARTCONNECT: &str = "xilinx.com:ip:smartconnect:1.0";
     pub const RESET: &str = "xilinx.com:ip:proc_sys_reset:5.0";
     pub const CONCAT: &str = "xilinx.com:ip:xlconcat:2.1";
@@ -72,6 +73,14 @@ pub mod vlnv {
     pub const AXIS: (&str, &str) = (
         "xilinx.com:interface:axis_rtl:1.0",
         "xilinx.com:interface:axis:1.0",
+    );
+    pub const AXIMM: (&str, &str) = (
+        "xilinx.com:interface:aximm_rtl:1.0",
+        "xilinx.com:interface:aximm:1.0",
+    );
+    pub const INTERRUPT: (&str, &str) = (
+        "xilinx.com:signal:interrupt_rtl:1.0",
+        "xilinx.com:signal:interrupt:1.0",
     );
     pub const CLOCK: (&str, &str) = (
         "xilinx.com:signal:clock_rtl:1.0",
@@ -246,6 +255,7 @@ pub fn xdc(p: &FccParams) -> String {
     let axis: Vec<String> = AXIS_INTERFACES
         .iter()
         .map(|(i, _)| format!("{i}_*"))
+        .chain([format!("{AXIL_INTERFACE}_*")])
         .collect();
     let mut s = file_header(p, "#");
     s.push_str(&fill(
@@ -253,10 +263,11 @@ pub fn xdc(p: &FccParams) -> String {
 # OUT-OF-CONTEXT constraints of @TOP@: its own synthesis and implementation
 # (synth_design -mode out_of_context: no I/O buffers, no package pins), as
 # scripts/@BUILD@ runs them. The core never drives package pins; in a
-# system its ports meet logic on the same clock (AXI DMA, AXI GPIO, a reset
-# block). The port delays below model that logic: @PCT@ % of the period is
-# spent outside the core on every AXI4-Stream input and output, so paths
-# between the core's registers and its ports get the remaining time.
+# system its ports meet logic on the same clock (AXI DMA, an AXI interconnect,
+# the PS's interrupt input, a reset block). The port delays below model that
+# logic: @PCT@ % of the period is spent outside the core on every AXI input
+# and output and on irq, so paths between the core's registers and its ports
+# get the remaining time.
 #
 # Out of context only, on purpose: scripts/@BUILD@ reads this file with
 # read_xdc -mode out_of_context, and scripts/@PACKAGE@ packages it in the
@@ -265,7 +276,8 @@ pub fn xdc(p: &FccParams) -> String {
 # (scripts/@BD@) the core's ports become internal nets and these port
 # constraints are dropped: the clock is the Zynq PS's FCLK_CLK0, defined by
 # the PS7's own constraints, and the paths between the core and the DMA or
-# GPIO are timed as ordinary register-to-register paths of the whole design.
+# the interconnect are timed as ordinary register-to-register paths of the
+# whole design.
 # Scoping this file to the IP instead (SCOPED_TO_REF) would be wrong there:
 # get_ports would name the instance's pins, and create_clock would put a
 # second clock on the PS clock's net.
@@ -276,10 +288,13 @@ create_clock -name @CLK@ -period @PERIOD@ [get_ports @CLK@]
 # will in the system (UG905, HD.CLK_SRC), so clock skew is estimated.
 set_property HD.CLK_SRC @BUFG@ [get_ports @CLK@]
 
-# AXI4-Stream (tdata, tvalid, tlast, tkeep and the opposite tready): @IO@ ns
-# outside the core on each side.
+# AXI4-Stream (tdata, tvalid, tlast, tkeep and the opposite tready) and
+# AXI4-Lite (every channel): @IO@ ns outside the core on each side.
 set_input_delay -clock @CLK@ @IO@ [get_ports -filter {DIRECTION == IN} {@AXIS@}]
 set_output_delay -clock @CLK@ @IO@ [get_ports -filter {DIRECTION == OUT} {@AXIS@}]
+
+# @IRQ@: level, from a register; captured by the PS's interrupt input.
+set_output_delay -clock @CLK@ @IO@ [get_ports @IRQ@]
 
 # @RST@: synchronous, active high, from a register of the reset block
 # (proc_sys_reset in the ZC706 design). Timed like a data input: its release
@@ -288,11 +303,12 @@ set_input_delay -clock @CLK@ @IO@ [get_ports @RST@]
 
 # @STATUS@*: quasi-static. They are registers that change once per frame (the
 # counters when the last label beat is accepted, idle when a frame starts)
-# and are read by software through AXI GPIO after the DMA's completion
-# interrupt, thousands of cycles later: no register captures them on the
-# next edge, so the paths to these ports are not timed out of context.
-# (status_frame_done is a one-cycle pulse; in the ZC706 design it too only
-# reaches a GPIO data register.)
+# and carry the same values as the status registers, which software reads
+# through the AXI4-Lite port; a system that uses the ports samples them long
+# after the frame's interrupt: no register captures them on the next edge,
+# so the paths to these ports are not timed out of context.
+# (status_frame_done is a one-cycle pulse; the ZC706 design leaves the
+# status ports unconnected.)
 set_false_path -to [get_ports @STATUS@*]
 "##,
         &[
@@ -308,6 +324,7 @@ set_false_path -to [get_ports @STATUS@*]
             ("BUFG", OOC_CLOCK_BUFFER.to_string()),
             ("IO", format!("{io:.3}")),
             ("AXIS", axis.join(" ")),
+            ("IRQ", IRQ_PORT.to_string()),
             ("STATUS", STATUS_PREFIX.to_string()),
         ],
     ));
@@ -424,13 +441,23 @@ pub fn package_ip_tcl(p: &FccParams, ports: &[Port], rtl: &str, xdc: &str) -> St
         }
         axis.push_str("}\n");
     }
-    let busifs: Vec<&str> = AXIS_INTERFACES.iter().map(|(i, _)| *i).collect();
+    let mut axil = format!("fcc_axim $core {AXIL_INTERFACE} slave {{\n");
+    for (logical, port) in axis_port_maps(ports, AXIL_INTERFACE) {
+        axil.push_str(&format!("    {logical} {}\n", port.name));
+    }
+    axil.push_str("}\n");
+    let busifs: Vec<&str> = AXIS_INTERFACES
+        .iter()
+        .map(|(i, _)| *i)
+        .chain([AXIL_INTERFACE])
+        .collect();
     let mut s = file_header(p, "#");
     s.push_str(&fill(
         r##"#
 # Packages @TOP@ as the Vivado IP @VLNV@: AXI4-Stream slave s_axis (pixels),
-# AXI4-Stream master m_axis (labels), clock @CLK@ and active-high reset @RST@,
-# for the block design of scripts/@BD@.
+# AXI4-Stream master m_axis (labels), AXI4-Lite slave @AXIL@ (the register
+# file, @AXIL_RANGE@ bytes), level-high interrupt @IRQ@, clock @CLK@ and
+# active-high reset @RST@, for the block design of scripts/@BD@.
 # Written to UG835 and UG1118; not run by the generator's tests.
 #
 # Usage (from any directory):
@@ -469,8 +496,8 @@ set_property display_name {FCC: Fast Channel Clustering of LiDAR range images} $
 set_property description {@SUMMARY@ (parameter hash @HASH@)} $core
 
 # The packager has already guessed interfaces from the port names. Replace
-# them with explicit ones: each AXI4-Stream port is mapped by name to its
-# logical signal here, so the result does not depend on the heuristics.
+# them with explicit ones: each AXI port is mapped by name to its logical
+# signal here, so the result does not depend on the heuristics.
 ipx::remove_all_bus_interface $core
 
 proc fcc_axis {core name mode maps} {
@@ -483,6 +510,33 @@ proc fcc_axis {core name mode maps} {
     }
 }
 @AXIS_MAPS@
+# AXI4-Lite register file: the slave interface and its memory map, one
+# address block over the whole decoded window.
+proc fcc_axim {core name mode maps} {
+    set bus [ipx::add_bus_interface $name $core]
+    set_property abstraction_type_vlnv @AXIM_ABS@ $bus
+    set_property bus_type_vlnv @AXIM_BUS@ $bus
+    set_property interface_mode $mode $bus
+    foreach {logical physical} $maps {
+        set_property physical_name $physical [ipx::add_port_map $logical $bus]
+    }
+    return $bus
+}
+set axil_bus [@AXIL_MAPS@]
+set axil_map [ipx::add_memory_map @AXIL@ $core]
+set_property slave_memory_map_ref @AXIL@ $axil_bus
+set axil_block [ipx::add_address_block regs $axil_map]
+set_property range @AXIL_RANGE@ $axil_block
+set_property width 32 $axil_block
+
+# Interrupt: level high (STATUS.FRAME_DONE while CONTROL.IRQ_ENABLE).
+set irq_bus [ipx::add_bus_interface @IRQ@ $core]
+set_property abstraction_type_vlnv @IRQ_ABS@ $irq_bus
+set_property bus_type_vlnv @IRQ_BUS@ $irq_bus
+set_property interface_mode master $irq_bus
+set_property physical_name @IRQ@ [ipx::add_port_map INTERRUPT $irq_bus]
+set_property value LEVEL_HIGH [ipx::add_bus_parameter SENSITIVITY $irq_bus]
+
 # Clock: every interface is synchronous to it; its reset is @RST@.
 set clk_bus [ipx::add_bus_interface @CLK@ $core]
 set_property abstraction_type_vlnv @CLK_ABS@ $clk_bus
@@ -528,6 +582,14 @@ puts "@SCRIPT@: @VLNV@ packaged in $ip_dir (IP repository: $ip_repo)"
             ("AXIS_ABS", vlnv::AXIS.0.to_string()),
             ("AXIS_BUS", vlnv::AXIS.1.to_string()),
             ("AXIS_MAPS", axis),
+            ("AXIL", AXIL_INTERFACE.to_string()),
+            ("AXIL_MAPS", axil.trim_end().to_string()),
+            ("AXIL_RANGE", (1u32 << crate::regmap::ADDR_BITS).to_string()),
+            ("AXIM_ABS", vlnv::AXIMM.0.to_string()),
+            ("AXIM_BUS", vlnv::AXIMM.1.to_string()),
+            ("IRQ", IRQ_PORT.to_string()),
+            ("IRQ_ABS", vlnv::INTERRUPT.0.to_string()),
+            ("IRQ_BUS", vlnv::INTERRUPT.1.to_string()),
             ("CLK_ABS", vlnv::CLOCK.0.to_string()),
             ("CLK_BUS", vlnv::CLOCK.1.to_string()),
             ("RST_ABS", vlnv::RESET_SIGNAL.0.to_string()),
@@ -541,74 +603,12 @@ puts "@SCRIPT@: @VLNV@ packaged in $ip_dir (IP repository: $ip_repo)"
 // ---------------------------------------------------------------------------
 // scripts/fcc_zc706_bd.tcl
 
-/// One GPIO input channel: status ports packed from bit 0 upwards, in
-/// declaration order (`(port, lsb)`).
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct StatusWord {
-    pub fields: Vec<(Port, u32)>,
-}
-
-impl StatusWord {
-    pub fn width(&self) -> u32 {
-        self.fields.iter().map(|(p, _)| p.width).sum()
-    }
-}
-
-/// Pack the status ports into GPIO channels of at most [`GPIO_WIDTH_MAX`]
-/// bits, first fit in declaration order, no port split across channels.
-pub fn status_words(ports: &[Port]) -> Result<Vec<StatusWord>, RtlError> {
-    let mut words: Vec<StatusWord> = vec![];
-    for p in status_ports(ports) {
-        if p.width > GPIO_WIDTH_MAX {
-            return Err(RtlError::Check(format!(
-                "{} is {} bits wide; the ZC706 block design reads status ports of at most {GPIO_WIDTH_MAX} bits through AXI GPIO",
-                p.name, p.width
-            )));
-        }
-        match words.last_mut() {
-            Some(w) if w.width() + p.width <= GPIO_WIDTH_MAX => {
-                let lsb = w.width();
-                w.fields.push((p.clone(), lsb));
-            }
-            _ => words.push(StatusWord {
-                fields: vec![(p.clone(), 0)],
-            }),
-        }
-    }
-    Ok(words)
-}
-
-/// Where status word `k` is read: AXI GPIO cell `status_gpio<k/2>`, channel
-/// 1 (`GPIO_DATA`, offset 0x0, input pin `gpio_io_i`) or channel 2
-/// (`GPIO2_DATA`, offset 0x8, input pin `gpio2_io_i`).
-pub fn status_word_location(k: usize) -> (String, &'static str, u32, &'static str) {
-    let cell = format!("status_gpio{}", k / 2);
-    match k % 2 {
-        0 => (cell, "GPIO_DATA", 0x0, "gpio_io_i"),
-        _ => (cell, "GPIO2_DATA", 0x8, "gpio2_io_i"),
-    }
-}
-
-/// One line per status word: `status_gpio0 GPIO_DATA (0x0): [15:0] status_clusters, ...`.
-pub fn status_map_lines(words: &[StatusWord]) -> Vec<String> {
-    words
+/// One line per register of the core, for the software map:
+/// `0x040 CONTROL RW` (offset within the core's address segment).
+pub fn register_map_lines(p: &FccParams) -> Vec<String> {
+    crate::regmap::registers(p)
         .iter()
-        .enumerate()
-        .map(|(k, w)| {
-            let (cell, reg, off, _) = status_word_location(k);
-            let fields: Vec<String> = w
-                .fields
-                .iter()
-                .map(|(p, lsb)| {
-                    if p.width == 1 {
-                        format!("[{lsb}] {}", p.name)
-                    } else {
-                        format!("[{}:{lsb}] {}", lsb + p.width - 1, p.name)
-                    }
-                })
-                .collect();
-            format!("{cell} {reg} (0x{off:X}): {}", fields.join(", "))
-        })
+        .map(|r| format!("0x{:03X} {} {}", r.offset, r.name, r.access.as_str()))
         .collect()
 }
 
@@ -642,86 +642,24 @@ pub fn fclk_mhz(p: &FccParams) -> f64 {
 
 /// `fcc_zc706_bd.tcl`: the ZC706 block design around the packaged core.
 pub fn bd_tcl(p: &FccParams, ports: &[Port]) -> Result<String, RtlError> {
-    let words = status_words(ports)?;
     let (in_bytes, out_bytes) = dma_frame_bytes(p, ports)?;
     let len_width = dma_length_width(p, ports)?;
     let in_width = port(ports, "s_axis_tdata")?.width;
     let out_width = port(ports, "m_axis_tdata")?.width;
-    for name in [CLOCK_PORT, RESET_PORT] {
+    for name in [CLOCK_PORT, RESET_PORT, IRQ_PORT] {
         port(ports, name)?;
     }
-    let gpios = words.len().div_ceil(2);
+    if axis_port_maps(ports, AXIL_INTERFACE).is_empty() {
+        return Err(RtlError::Check(format!(
+            "{TOP_MODULE} has no {AXIL_INTERFACE}_* ports; the block design needs its register port"
+        )));
+    }
     let fclk = fclk_mhz(p);
-    let map_lines = status_map_lines(&words);
-
-    // GPIO cells and the status wiring.
-    let mut gpio = String::new();
-    for g in 0..gpios {
-        let dual = 2 * g + 1 < words.len();
-        gpio.push_str(&format!(
-            "create_bd_cell -type ip -vlnv {} status_gpio{g}\n\
-             set_property -dict [list CONFIG.C_ALL_INPUTS {{1}} CONFIG.C_GPIO_WIDTH {{{}}} CONFIG.C_IS_DUAL {{{}}}",
-            vlnv::GPIO,
-            words[2 * g].width(),
-            u8::from(dual)
-        ));
-        if dual {
-            gpio.push_str(&format!(
-                " CONFIG.C_ALL_INPUTS_2 {{1}} CONFIG.C_GPIO2_WIDTH {{{}}}",
-                words[2 * g + 1].width()
-            ));
-        }
-        gpio.push_str(&format!("] [get_bd_cells status_gpio{g}]\n"));
-    }
-    for (k, w) in words.iter().enumerate() {
-        let (cell, _, _, pin) = status_word_location(k);
-        if let [(only, _)] = w.fields.as_slice() {
-            gpio.push_str(&format!(
-                "connect_bd_net [get_bd_pins fcc/{}] [get_bd_pins {cell}/{pin}]\n",
-                only.name
-            ));
-            continue;
-        }
-        let widths: Vec<String> = w
-            .fields
-            .iter()
-            .enumerate()
-            .map(|(j, (p, _))| format!("CONFIG.IN{j}_WIDTH {{{}}}", p.width))
-            .collect();
-        gpio.push_str(&format!(
-            "create_bd_cell -type ip -vlnv {} status_word{k}\n\
-             set_property -dict [list CONFIG.NUM_PORTS {{{}}} {}] [get_bd_cells status_word{k}]\n",
-            vlnv::CONCAT,
-            w.fields.len(),
-            widths.join(" ")
-        ));
-        for (j, (p, _)) in w.fields.iter().enumerate() {
-            gpio.push_str(&format!(
-                "connect_bd_net [get_bd_pins fcc/{}] [get_bd_pins status_word{k}/In{j}]\n",
-                p.name
-            ));
-        }
-        gpio.push_str(&format!(
-            "connect_bd_net [get_bd_pins status_word{k}/dout] [get_bd_pins {cell}/{pin}]\n"
-        ));
-    }
-    let mut gpio_clk = String::new();
-    let mut gpio_rst = String::new();
-    let mut gpio_axi = String::new();
-    for g in 0..gpios {
-        gpio_clk.push_str(&format!(" \\\n    [get_bd_pins status_gpio{g}/s_axi_aclk]"));
-        gpio_rst.push_str(&format!(
-            " \\\n    [get_bd_pins status_gpio{g}/s_axi_aresetn]"
-        ));
-        gpio_axi.push_str(&format!(
-            "connect_bd_intf_net [get_bd_intf_pins ctrl_smc/M{:02}_AXI] [get_bd_intf_pins status_gpio{g}/S_AXI]\n",
-            g + 1
-        ));
-    }
-    let map_comment: String = map_lines.iter().map(|l| format!("#   {l}\n")).collect();
+    let map_lines = register_map_lines(p);
+    let map_comment: String = map_lines.iter().map(|l| format!("#     {l}\n")).collect();
     let map_puts: String = map_lines
         .iter()
-        .map(|l| format!("puts $map {{status {l}}}\n"))
+        .map(|l| format!("puts $map {{register {l}}}\n"))
         .collect();
     let clamp_note = if fclk < p.clock_mhz {
         format!(
@@ -738,9 +676,10 @@ pub fn bd_tcl(p: &FccParams, ports: &[Port]) -> Result<String, RtlError> {
 # Block design for the ZC706 (@BOARD@, @PART@): the Zynq PS7 with the
 # board preset; an AXI DMA in simple (register) mode that reads frames from
 # DDR into @TOP@'s s_axis (MM2S) and writes its m_axis labels back to DDR
-# (S2MM); the core's status ports on AXI GPIO inputs; SmartConnects for
-# control (PS M_AXI_GP0) and memory (PS S_AXI_HP0); a processor system reset;
-# the DMA's two interrupts on IRQ_F2P. Everything runs on FCLK_CLK0.
+# (S2MM); the core's register port and the DMA's registers on the PS's
+# M_AXI_GP0 through a SmartConnect; memory (PS S_AXI_HP0) through another; a
+# processor system reset; the DMA's two interrupts and the core's irq on
+# IRQ_F2P. Everything runs on FCLK_CLK0.
 # Written to UG835 and UG994; not run by the generator's tests.
 #
 # Run scripts/@PACKAGE@ first, with the same -out.
@@ -757,8 +696,9 @@ pub fn bd_tcl(p: &FccParams, ports: &[Port]) -> Result<String, RtlError> {
 # Software view (also written to DIR/zc706/@BD_NAME@_map.txt with the addresses):
 #   DMA MM2S_LENGTH = @IN_BYTES@ bytes per frame (@PIXELS@ pixels, @IN_BEAT@ bytes each)
 #   DMA S2MM_LENGTH = @OUT_BYTES@ bytes per frame (@LPB@ labels per @OUT_BEAT@-byte beat)
-#   Interrupts: IRQ_F2P[0] = MM2S done (GIC ID 61), IRQ_F2P[1] = S2MM done (GIC ID 62)
-#   Status, valid once the S2MM transfer of the frame has completed:
+#   Interrupts: IRQ_F2P[0] = MM2S done (GIC ID 61), IRQ_F2P[1] = S2MM done (GIC ID 62),
+#     IRQ_F2P[2] = fcc irq, frame done (GIC ID 63, level high)
+#   fcc registers (offsets in the fcc segment; fields in rtl_out/fcc_regs.h):
 @MAP_COMMENT@
 set usage {usage: vivado -mode batch -source @SCRIPT@ -tclargs ?-out DIR? ?-bitstream? ?-jobs N?}
 set part @PART@
@@ -808,33 +748,33 @@ set_property -dict [list \
 ] [get_bd_cells dma]
 
 create_bd_cell -type ip -vlnv @SMC@ ctrl_smc
-set_property -dict [list CONFIG.NUM_SI {1} CONFIG.NUM_MI {@CTRL_MI@}] [get_bd_cells ctrl_smc]
+set_property -dict [list CONFIG.NUM_SI {1} CONFIG.NUM_MI {2}] [get_bd_cells ctrl_smc]
 create_bd_cell -type ip -vlnv @SMC@ mem_smc
 set_property -dict [list CONFIG.NUM_SI {2} CONFIG.NUM_MI {1}] [get_bd_cells mem_smc]
 create_bd_cell -type ip -vlnv @CONCAT@ irq_concat
-set_property -dict [list CONFIG.NUM_PORTS {2}] [get_bd_cells irq_concat]
+set_property -dict [list CONFIG.NUM_PORTS {3}] [get_bd_cells irq_concat]
 create_bd_cell -type ip -vlnv @FCC_VLNV@ fcc
 
-# Status ports into AXI GPIO inputs.
-@GPIO@
 # Clock and resets.
 connect_bd_net [get_bd_pins ps7/FCLK_CLK0] \
     [get_bd_pins ps7/M_AXI_GP0_ACLK] [get_bd_pins ps7/S_AXI_HP0_ACLK] \
     [get_bd_pins rst_fclk0/slowest_sync_clk] \
     [get_bd_pins ctrl_smc/aclk] [get_bd_pins mem_smc/aclk] \
     [get_bd_pins dma/s_axi_lite_aclk] [get_bd_pins dma/m_axi_mm2s_aclk] [get_bd_pins dma/m_axi_s2mm_aclk] \
-    [get_bd_pins fcc/@CLK@]@GPIO_CLK@
+    [get_bd_pins fcc/@CLK@]
 connect_bd_net [get_bd_pins ps7/FCLK_RESET0_N] [get_bd_pins rst_fclk0/ext_reset_in]
 connect_bd_net [get_bd_pins rst_fclk0/interconnect_aresetn] \
     [get_bd_pins ctrl_smc/aresetn] [get_bd_pins mem_smc/aresetn]
 connect_bd_net [get_bd_pins rst_fclk0/peripheral_aresetn] \
-    [get_bd_pins dma/axi_resetn]@GPIO_RST@
+    [get_bd_pins dma/axi_resetn]
 connect_bd_net [get_bd_pins rst_fclk0/peripheral_reset] [get_bd_pins fcc/@RST@]
 
-# Control: PS -> DMA registers and GPIO; memory: DMA -> DDR; streams.
+# Control: PS -> DMA registers and the core's registers; memory: DMA -> DDR;
+# streams.
 connect_bd_intf_net [get_bd_intf_pins ps7/M_AXI_GP0] [get_bd_intf_pins ctrl_smc/S00_AXI]
 connect_bd_intf_net [get_bd_intf_pins ctrl_smc/M00_AXI] [get_bd_intf_pins dma/S_AXI_LITE]
-@GPIO_AXI@connect_bd_intf_net [get_bd_intf_pins dma/M_AXI_MM2S] [get_bd_intf_pins mem_smc/S00_AXI]
+connect_bd_intf_net [get_bd_intf_pins ctrl_smc/M01_AXI] [get_bd_intf_pins fcc/@AXIL@]
+connect_bd_intf_net [get_bd_intf_pins dma/M_AXI_MM2S] [get_bd_intf_pins mem_smc/S00_AXI]
 connect_bd_intf_net [get_bd_intf_pins dma/M_AXI_S2MM] [get_bd_intf_pins mem_smc/S01_AXI]
 connect_bd_intf_net [get_bd_intf_pins mem_smc/M00_AXI] [get_bd_intf_pins ps7/S_AXI_HP0]
 connect_bd_intf_net [get_bd_intf_pins dma/M_AXIS_MM2S] [get_bd_intf_pins fcc/s_axis]
@@ -843,6 +783,7 @@ connect_bd_intf_net [get_bd_intf_pins fcc/m_axis] [get_bd_intf_pins dma/S_AXIS_S
 # Interrupts.
 connect_bd_net [get_bd_pins dma/mm2s_introut] [get_bd_pins irq_concat/In0]
 connect_bd_net [get_bd_pins dma/s2mm_introut] [get_bd_pins irq_concat/In1]
+connect_bd_net [get_bd_pins fcc/@IRQ@] [get_bd_pins irq_concat/In2]
 connect_bd_net [get_bd_pins irq_concat/dout] [get_bd_pins ps7/IRQ_F2P]
 
 assign_bd_address
@@ -851,7 +792,7 @@ save_bd_design
 
 file mkdir $proj_dir
 set map [open [file join $proj_dir ${design}_map.txt] w]
-puts $map "# @BD_NAME@ software view: PS address segments (name offset range), DMA lengths, status bit fields"
+puts $map "# @BD_NAME@ software view: PS address segments (name offset range), DMA lengths, fcc registers (offset name access)"
 foreach seg [get_bd_addr_segs -of_objects [get_bd_addr_spaces ps7/Data]] {
     puts $map "segment [get_property NAME $seg] [get_property OFFSET $seg] [get_property RANGE $seg]"
 }
@@ -902,12 +843,9 @@ puts "@SCRIPT@: $design in $proj_dir"
                     "        -bitstream { set bitstream 1 }\n        -jobs {\n            if {[llength $args] == 0} { error \"-jobs needs a number\\n$usage\" }\n            set args [lassign $args jobs]\n        }\n",
                 ),
             ),
-            ("GPIO", gpio),
-            ("GPIO_CLK", gpio_clk),
-            ("GPIO_RST", gpio_rst),
-            ("GPIO_AXI", gpio_axi),
             ("MAP_PUTS", map_puts),
-            ("CTRL_MI", (1 + gpios).to_string()),
+            ("AXIL", AXIL_INTERFACE.to_string()),
+            ("IRQ", IRQ_PORT.to_string()),
             ("LEN_WIDTH", len_width.to_string()),
             ("IN_WIDTH", in_width.to_string()),
             ("OUT_WIDTH", out_width.to_string()),

@@ -112,3 +112,74 @@ fn bad_parameters_are_errors_not_panics() {
     };
     assert!(generate(&p).unwrap_err().to_string().contains("cols"));
 }
+
+#[test]
+fn register_file_alone_lints_clean() {
+    if !verilator_present() {
+        eprintln!("verilator not installed: lint skipped");
+        return;
+    }
+    let p = FccParams::default();
+    let dir = scratch("regs");
+    std::fs::create_dir_all(&dir).unwrap();
+    let v = dir.join("fcc_regs.v");
+    let vlt = dir.join("fcc_regs.vlt");
+    std::fs::write(&v, fcc_rtl::generate_regs(&p).unwrap()).unwrap();
+    std::fs::write(&vlt, lint::regs_waivers(&p)).unwrap();
+    if let Err(e) = lint::lint_module(&v, &vlt, fcc_rtl::REGS_MODULE) {
+        panic!("{e}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// `fcc_regs.h` is plain C99: it compiles warning-free with `-std=c99
+/// -pedantic`, and its constants are usable in constant expressions.
+#[test]
+fn register_header_compiles_as_c99() {
+    let cc = std::env::var("CC").unwrap_or_else(|_| "cc".to_string());
+    if std::process::Command::new(&cc)
+        .arg("--version")
+        .output()
+        .is_err()
+    {
+        assert!(
+            std::env::var("CI").as_deref() != Ok("true"),
+            "{cc} (a C compiler) is required in CI"
+        );
+        eprintln!("{cc} not installed: C99 check skipped");
+        return;
+    }
+    let p = FccParams::default();
+    let dir = scratch("regs-h");
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(dir.join("fcc_regs.h"), fcc_rtl::regmap::c_header(&p)).unwrap();
+    let main = "#include \"fcc_regs.h\"\n\
+        typedef char check_offset[(FCC_REG_CONTROL == 0x40u) ? 1 : -1];\n\
+        typedef char check_mask[(FCC_STATUS_FRAME_DONE_MASK == 1u) ? 1 : -1];\n\
+        int main(void) {\n\
+            volatile uint32_t regs[1024];\n\
+            uint64_t hash = ((uint64_t)regs[FCC_REG_HASH_HI / 4] << 32) | regs[FCC_REG_HASH_LO / 4];\n\
+            regs[FCC_REG_CONTROL / 4] = FCC_CONTROL_IRQ_ENABLE_MASK;\n\
+            return hash == FCC_PARAMS_HASH && regs[FCC_REG_ID / 4] == FCC_ID_MAGIC;\n\
+        }\n";
+    std::fs::write(dir.join("main.c"), main).unwrap();
+    let out = std::process::Command::new(&cc)
+        .current_dir(&dir)
+        .args([
+            "-std=c99",
+            "-pedantic",
+            "-Wall",
+            "-Wextra",
+            "-Werror",
+            "-fsyntax-only",
+            "main.c",
+        ])
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}

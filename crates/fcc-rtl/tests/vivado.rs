@@ -89,8 +89,8 @@ fn period_follows_clock_mhz() {
         xdc.contains("create_clock -name clk -period 4.912 [get_ports clk]"),
         "{xdc}"
     );
-    // 20 % of 4.912 ns outside the core, on the streams and on rst.
-    assert_eq!(xdc.matches(" 0.982 [get_ports").count(), 3, "{xdc}");
+    // 20 % of 4.912 ns outside the core, on the AXI ports, irq and rst.
+    assert_eq!(xdc.matches(" 0.982 [get_ports").count(), 4, "{xdc}");
     let build = file(&f, "fcc_build.tcl");
     assert!(build.contains("set clock_mhz 203.6\n"));
     assert!(build.contains("set period_ns 4.912\n"));
@@ -176,7 +176,7 @@ fn every_axis_port_is_mapped_in_the_ip_script() {
         let f = files(&p);
         let ip = file(&f, "fcc_package_ip.tcl");
         let axis = axis_ports(&ps);
-        assert_eq!(axis.len(), 9, "4 slave + 5 master ports");
+        assert_eq!(axis.len(), 10, "5 slave + 5 master ports");
         for (iface, port) in axis {
             // The map lines sit in the block `fcc_axis $core <iface> <mode> { ... }`.
             let start = ip
@@ -193,7 +193,27 @@ fn every_axis_port_is_mapped_in_the_ip_script() {
         assert!(ip.contains("fcc_axis $core s_axis slave {"));
         assert!(ip.contains("fcc_axis $core m_axis master {"));
         assert!(ip.contains(
-            "set_property value s_axis:m_axis [ipx::add_bus_parameter ASSOCIATED_BUSIF $clk_bus]"
+            "set_property value s_axis:m_axis:s_axil [ipx::add_bus_parameter ASSOCIATED_BUSIF $clk_bus]"
+        ));
+        // The register port: every s_axil_* port mapped, a 4 KiB memory map.
+        let start = ip
+            .find("fcc_axim $core s_axil slave {")
+            .expect("s_axil interface");
+        let block = &ip[start..start + ip[start..].find("\n}").unwrap() + 1];
+        for port in ps.iter().filter(|p| p.name.starts_with("s_axil_")) {
+            let logical = port.name["s_axil_".len()..].to_uppercase();
+            assert!(
+                block.contains(&format!("\n    {logical} {}\n", port.name)),
+                "{} not mapped to {logical} in {block}",
+                port.name
+            );
+        }
+        assert!(ip.contains("set_property range 4096 $axil_block"));
+        assert!(
+            ip.contains("set_property physical_name irq [ipx::add_port_map INTERRUPT $irq_bus]")
+        );
+        assert!(ip.contains(
+            "set_property value LEVEL_HIGH [ipx::add_bus_parameter SENSITIVITY $irq_bus]"
         ));
         assert!(ip
             .contains("set_property value rst [ipx::add_bus_parameter ASSOCIATED_RESET $clk_bus]"));
@@ -215,10 +235,15 @@ fn every_port_is_constrained_in_the_xdc() {
             xdc.contains("[get_ports rst]\n")
         } else if p.name.starts_with(vivado::STATUS_PREFIX) {
             p.dir == PortDir::Out && xdc.contains("set_false_path -to [get_ports status_*]")
-        } else if p.name.starts_with("s_axis_") || p.name.starts_with("m_axis_") {
+        } else if p.name == vivado::IRQ_PORT {
+            xdc.contains("set_output_delay -clock clk 1.000 [get_ports irq]\n")
+        } else if ["s_axis_", "m_axis_", "s_axil_"]
+            .iter()
+            .any(|pre| p.name.starts_with(pre))
+        {
             let filter = match p.dir {
-                PortDir::In => "set_input_delay -clock clk 1.000 [get_ports -filter {DIRECTION == IN} {s_axis_* m_axis_*}]",
-                PortDir::Out => "set_output_delay -clock clk 1.000 [get_ports -filter {DIRECTION == OUT} {s_axis_* m_axis_*}]",
+                PortDir::In => "set_input_delay -clock clk 1.000 [get_ports -filter {DIRECTION == IN} {s_axis_* m_axis_* s_axil_*}]",
+                PortDir::Out => "set_output_delay -clock clk 1.000 [get_ports -filter {DIRECTION == OUT} {s_axis_* m_axis_* s_axil_*}]",
             };
             xdc.contains(filter)
         } else {
@@ -229,49 +254,34 @@ fn every_port_is_constrained_in_the_xdc() {
 }
 
 #[test]
-fn every_status_port_reaches_a_gpio_channel() {
-    let ps = ports(&FccParams::default());
-    let words = vivado::status_words(&ps).unwrap();
-    let status: Vec<&Port> = vivado::status_ports(&ps);
-    assert_eq!(status.len(), 9);
-    let packed: Vec<&str> = words
-        .iter()
-        .flat_map(|w| w.fields.iter().map(|(p, _)| p.name.as_str()))
-        .collect();
-    let declared: Vec<&str> = status.iter().map(|p| p.name.as_str()).collect();
-    assert_eq!(packed, declared, "every status port once, in order");
-    for w in &words {
-        assert!(w.width() <= vivado::GPIO_WIDTH_MAX);
-        let mut next = 0;
-        for (p, lsb) in &w.fields {
-            assert_eq!(*lsb, next);
-            next += p.width;
-        }
-    }
-    let bd = vivado::bd_tcl(&FccParams::default(), &ps).unwrap();
-    for p in status {
-        assert!(
-            bd.contains(&format!("connect_bd_net [get_bd_pins fcc/{}] ", p.name)),
-            "{}",
-            p.name
-        );
-    }
-    assert_eq!(
-        vivado::status_map_lines(&words)[0],
-        "status_gpio0 GPIO_DATA (0x0): [15:0] status_clusters, [31:16] status_provisional"
+fn block_design_connects_the_register_port_and_irq() {
+    let p = FccParams::default();
+    let ps = ports(&p);
+    let bd = vivado::bd_tcl(&p, &ps).unwrap();
+    assert!(bd.contains(
+        "connect_bd_intf_net [get_bd_intf_pins ctrl_smc/M01_AXI] [get_bd_intf_pins fcc/s_axil]"
+    ));
+    assert!(bd.contains("connect_bd_net [get_bd_pins fcc/irq] [get_bd_pins irq_concat/In2]"));
+    assert!(bd.contains("CONFIG.NUM_PORTS {3}"));
+    assert!(
+        !bd.contains("axi_gpio"),
+        "no GPIO: the status is in the registers"
     );
+    assert!(!bd.contains("fcc/status_"), "status ports stay unconnected");
+    for l in vivado::register_map_lines(&p) {
+        assert!(bd.contains(&format!("puts $map {{register {l}}}")), "{l}");
+    }
+    assert_eq!(vivado::register_map_lines(&p)[10], "0x040 CONTROL RW");
 }
 
 #[test]
-fn a_status_port_wider_than_a_gpio_channel_is_an_error() {
-    let mut ps = ports(&small());
-    ps.push(Port {
-        name: "status_wide".into(),
-        dir: PortDir::Out,
-        width: 40,
-    });
+fn a_core_without_its_register_port_is_an_error() {
+    let ps: Vec<Port> = ports(&small())
+        .into_iter()
+        .filter(|p| !p.name.starts_with("s_axil_"))
+        .collect();
     let e = vivado::bd_tcl(&small(), &ps).unwrap_err().to_string();
-    assert!(e.contains("status_wide is 40 bits wide"), "{e}");
+    assert!(e.contains("s_axil"), "{e}");
 }
 
 #[test]
@@ -362,14 +372,12 @@ fn committed_vivado_scripts_are_current() {
 }
 
 #[test]
-fn docs_quote_the_generated_status_map() {
+fn docs_quote_the_dma_lengths_and_the_register_header() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
     let doc = std::fs::read_to_string(root.join("docs/vivado.md")).unwrap();
     let ps = ports(&FccParams::default());
     let (mm2s, s2mm) = vivado::dma_frame_bytes(&FccParams::default(), &ps).unwrap();
-    for line in vivado::status_map_lines(&vivado::status_words(&ps).unwrap()) {
-        assert!(doc.contains(&line), "docs/vivado.md lacks `{line}`");
-    }
+    assert!(doc.contains("fcc_regs.h") && doc.contains("M_AXI_GP0"));
     assert!(doc.contains(&format!("{mm2s}")) && doc.contains(&format!("{s2mm}")));
     assert!(doc.contains("not run"));
 }
@@ -406,7 +414,7 @@ exit 0
 /// The Vivado commands the scripts may call: each is in UG835. A command
 /// outside this list in a dry run is a typo (of Vivado's or of a Tcl
 /// built-in, which the stub would otherwise swallow).
-const VIVADO_COMMANDS: [&str; 55] = [
+const VIVADO_COMMANDS: [&str; 57] = [
     "add_files",
     "apply_bd_automation",
     "assign_bd_address",
@@ -431,7 +439,9 @@ const VIVADO_COMMANDS: [&str; 55] = [
     "get_runs",
     "get_timing_paths",
     "ipx::add_bus_interface",
+    "ipx::add_address_block",
     "ipx::add_bus_parameter",
+    "ipx::add_memory_map",
     "ipx::add_port_map",
     "ipx::check_integrity",
     "ipx::create_xgui_files",
@@ -579,7 +589,7 @@ fn every_file_is_complete_tcl() {
 }
 
 #[test]
-fn xdc_dry_run_constrains_clock_streams_reset_and_status() {
+fn xdc_dry_run_constrains_clock_axi_ports_irq_reset_and_status() {
     if !tclsh_present() {
         eprintln!("tclsh not installed: dry run skipped");
         return;
@@ -592,9 +602,11 @@ fn xdc_dry_run_constrains_clock_streams_reset_and_status() {
         "create_clock -name clk -period 5.000 {}",
         "get_ports clk",
         "set_property HD.CLK_SRC BUFGCTRL_X0Y0 {}",
-        "get_ports -filter {DIRECTION == IN} {s_axis_* m_axis_*}",
+        "get_ports -filter {DIRECTION == IN} {s_axis_* m_axis_* s_axil_*}",
         "set_input_delay -clock clk 1.000 {}",
-        "get_ports -filter {DIRECTION == OUT} {s_axis_* m_axis_*}",
+        "get_ports -filter {DIRECTION == OUT} {s_axis_* m_axis_* s_axil_*}",
+        "set_output_delay -clock clk 1.000 {}",
+        "get_ports irq",
         "set_output_delay -clock clk 1.000 {}",
         "get_ports rst",
         "set_input_delay -clock clk 1.000 {}",
@@ -739,6 +751,11 @@ fn package_dry_run_maps_every_port_of_the_interfaces() {
         "set_property interface_mode slave {}",
         "ipx::add_bus_interface m_axis {}",
         "set_property interface_mode master {}",
+        "ipx::add_bus_interface s_axil {}",
+        "ipx::add_memory_map s_axil {}",
+        "ipx::add_address_block regs {}",
+        "ipx::add_bus_interface irq {}",
+        "ipx::add_bus_parameter SENSITIVITY {}",
         "ipx::add_bus_interface clk {}",
         "ipx::add_bus_parameter ASSOCIATED_BUSIF {}",
         "ipx::add_bus_interface rst {}",
@@ -773,10 +790,15 @@ fn package_dry_run_maps_every_port_of_the_interfaces() {
             port.name.clone(),
         ));
     }
+    for port in ports(&p).iter().filter(|p| p.name.starts_with("s_axil_")) {
+        expected.insert((port.name[7..].to_uppercase(), port.name.clone()));
+    }
+    expected.insert(("INTERRUPT".into(), "irq".into()));
     expected.insert(("CLK".into(), "clk".into()));
     expected.insert(("RST".into(), "rst".into()));
     assert_eq!(mapped, expected);
-    assert!(r.has("set_property value s_axis:m_axis {}"));
+    assert!(r.has("set_property value s_axis:m_axis:s_axil {}"));
+    assert!(r.has("set_property range 4096 {}"));
     assert!(r.has("set_property value rst {}"));
     assert!(r.has("set_property value ACTIVE_HIGH {}"));
 }
@@ -823,8 +845,6 @@ fn block_design_dry_run_needs_the_ip_and_writes_the_software_map() {
         "create_bd_cell -type ip -vlnv xilinx.com:ip:smartconnect:1.0 mem_smc",
         "create_bd_cell -type ip -vlnv xilinx.com:ip:xlconcat:2.1 irq_concat",
         "create_bd_cell -type ip -vlnv fcc:fcc:fcc_top:0.1 fcc",
-        "create_bd_cell -type ip -vlnv xilinx.com:ip:axi_gpio:2.0 status_gpio0",
-        "create_bd_cell -type ip -vlnv xilinx.com:ip:axi_gpio:2.0 status_gpio1",
         "connect_bd_net ",
         "connect_bd_intf_net ",
         "assign_bd_address",
@@ -840,18 +860,18 @@ fn block_design_dry_run_needs_the_ip_and_writes_the_software_map() {
         .iter()
         .filter_map(|l| l.strip_prefix("get_bd_pins fcc/"))
         .collect();
-    let ps = ports(&p);
-    let expected: BTreeSet<&str> = ["clk", "rst"]
-        .into_iter()
-        .chain(vivado::status_ports(&ps).iter().map(|p| p.name.as_str()))
-        .collect();
+    let expected: BTreeSet<&str> = ["clk", "rst", "irq"].into_iter().collect();
     assert_eq!(pins, expected);
+    let intf: BTreeSet<&str> = r
+        .log
+        .iter()
+        .filter_map(|l| l.strip_prefix("get_bd_intf_pins fcc/"))
+        .collect();
+    assert_eq!(intf, ["m_axis", "s_axil", "s_axis"].into_iter().collect());
     let map = std::fs::read_to_string(proj.join("fcc_zc706_map.txt")).unwrap();
     assert!(map.contains("dma MM2S_LENGTH 1048576\n"), "{map}");
     assert!(map.contains("dma S2MM_LENGTH 262144\n"), "{map}");
-    assert!(map.contains(
-        "status status_gpio1 GPIO2_DATA (0x8): [23:0] status_gear_stalls, [24] status_frame_done, [25] status_idle\n"
-    ));
+    assert!(map.contains("register 0x044 STATUS W1C\n"), "{map}");
 
     let r = dry_run(&work, &script, &["-bitstream", "-jobs", "3"]);
     assert!(r.ok, "{}", r.stderr);

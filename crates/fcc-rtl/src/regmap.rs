@@ -1,0 +1,482 @@
+//! The register map of `fcc_top`'s AXI4-Lite slave, defined once.
+//!
+//! The offsets and bit positions are the constants of this module; the
+//! hardware (`FccRegs`) decodes them, and [`registers`] describes every
+//! register (access, reset value, fields, meaning) for the three documents
+//! derived from it: the C99 header `fcc_regs.h` ([`c_header`]), the
+//! `registers` list of `fcc_params.json` ([`json`]) and the table in
+//! docs/rtl.md ([`markdown_table`], checked by a test).
+//!
+//! Every register is 32 bits wide at a 4-byte aligned offset; the slave
+//! decodes address bits `ADDR_BITS - 1 : 2`. Reads of an unmapped offset
+//! return 0 with OKAY; writes to an unmapped or read-only offset are ignored
+//! (OKAY). Write strobes are ignored: every write is a full 32-bit write.
+
+use fcc_params::FccParams;
+use serde::Serialize;
+
+use crate::GENERATOR_VERSION;
+
+/// Address bits of the slave (a 4 KiB window, the smallest a Vivado address
+/// map assigns).
+pub const ADDR_BITS: usize = 12;
+
+/// Value of the ID register: "FCC1" in ASCII.
+pub const ID_MAGIC: u32 = 0x4643_4331;
+
+/// Byte offsets.
+pub mod offset {
+    pub const ID: u32 = 0x000;
+    pub const VERSION: u32 = 0x004;
+    pub const HASH_LO: u32 = 0x008;
+    pub const HASH_HI: u32 = 0x00C;
+    pub const K_MAX: u32 = 0x010;
+    pub const ROWS_MAX: u32 = 0x014;
+    pub const COLS_MAX: u32 = 0x018;
+    pub const LABEL_BITS: u32 = 0x01C;
+    pub const LABELS_PER_BEAT: u32 = 0x020;
+    pub const CLOCK_KHZ: u32 = 0x024;
+    pub const CONTROL: u32 = 0x040;
+    pub const STATUS: u32 = 0x044;
+    pub const FRAME_COUNT: u32 = 0x050;
+    pub const CLUSTERS: u32 = 0x054;
+    pub const PROVISIONAL: u32 = 0x058;
+    pub const UNLABELLED: u32 = 0x05C;
+    pub const FRAME_FLAGS: u32 = 0x060;
+    pub const JOINS: u32 = 0x064;
+    pub const GEAR_STALLS: u32 = 0x068;
+}
+
+/// Bit masks of the fields.
+pub mod bits {
+    /// CONTROL: write 1 to reset the pixel pipeline (self-clearing, reads 0).
+    pub const CONTROL_SOFT_RESET: u32 = 1 << 0;
+    /// CONTROL: raise `irq` while STATUS.FRAME_DONE is set.
+    pub const CONTROL_IRQ_ENABLE: u32 = 1 << 1;
+    /// CONTROL: write 1 to clear FRAME_COUNT, the latched frame status and
+    /// STATUS.FRAME_DONE (self-clearing, reads 0).
+    pub const CONTROL_CLEAR: u32 = 1 << 2;
+    /// STATUS: a frame ended since the bit was last cleared (write 1 to clear).
+    pub const STATUS_FRAME_DONE: u32 = 1 << 0;
+    /// STATUS: the core waits for the first pixel of a frame (read-only, live).
+    pub const STATUS_IDLE: u32 = 1 << 1;
+    /// FRAME_FLAGS: the last frame ran out of provisional labels.
+    pub const FLAGS_OVERFLOW: u32 = 1 << 0;
+    /// FRAME_FLAGS: the last frame's `tlast` came early or late.
+    pub const FLAGS_FRAME_ERROR: u32 = 1 << 1;
+}
+
+/// How software may access a register.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub enum Access {
+    /// Read-only: a build constant or hardware status.
+    #[serde(rename = "RO")]
+    ReadOnly,
+    /// Read/write control bits, some of them self-clearing.
+    #[serde(rename = "RW")]
+    ReadWrite,
+    /// Read; write 1 to a bit to clear it.
+    #[serde(rename = "W1C")]
+    WriteOneToClear,
+}
+
+impl Access {
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Access::ReadOnly => "RO",
+            Access::ReadWrite => "RW",
+            Access::WriteOneToClear => "W1C",
+        }
+    }
+}
+
+/// One field of a register.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Field {
+    pub name: &'static str,
+    pub lsb: u32,
+    pub width: u32,
+    pub doc: &'static str,
+}
+
+/// One register.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Register {
+    pub name: &'static str,
+    pub offset: u32,
+    pub access: Access,
+    /// Value after reset (for a build constant: its value in this build).
+    pub reset: u32,
+    /// The reset value is a property of the build (not the same in every build).
+    pub build_constant: bool,
+    pub doc: &'static str,
+    pub fields: Vec<Field>,
+}
+
+/// The generator version as one word: major << 16 | minor << 8 | patch.
+pub fn version_word() -> u32 {
+    let mut it = GENERATOR_VERSION
+        .split('.')
+        .map(|s| s.parse::<u32>().unwrap_or(0) & 0xff);
+    let major = it.next().unwrap_or(0);
+    let minor = it.next().unwrap_or(0);
+    let patch = it.next().unwrap_or(0);
+    (major << 16) | (minor << 8) | patch
+}
+
+/// The 64-bit parameter hash of `p` (the one in every generated file's header).
+pub fn hash_value(p: &FccParams) -> u64 {
+    u64::from_str_radix(&p.hash(), 16).expect("FccParams::hash is 16 hex digits")
+}
+
+/// The requested clock in kHz.
+pub fn clock_khz(p: &FccParams) -> u32 {
+    (p.clock_mhz * 1000.0).round() as u32
+}
+
+fn field(name: &'static str, lsb: u32, width: u32, doc: &'static str) -> Field {
+    Field {
+        name,
+        lsb,
+        width,
+        doc,
+    }
+}
+
+fn whole(name: &'static str, width: u32, doc: &'static str) -> Vec<Field> {
+    vec![field(name, 0, width, doc)]
+}
+
+/// Every register of the build `p`, in offset order.
+pub fn registers(p: &FccParams) -> Vec<Register> {
+    use Access::*;
+    let hash = hash_value(p);
+    let build = |name, offset, reset, doc, fields| Register {
+        name,
+        offset,
+        access: ReadOnly,
+        reset,
+        build_constant: true,
+        doc,
+        fields,
+    };
+    let status = |name, offset, doc, fields| Register {
+        name,
+        offset,
+        access: ReadOnly,
+        reset: 0,
+        build_constant: false,
+        doc,
+        fields,
+    };
+    vec![
+        build(
+            "ID",
+            offset::ID,
+            ID_MAGIC,
+            "Fixed magic \"FCC1\": an FCC core answers here",
+            whole("MAGIC", 32, "0x46434331"),
+        ),
+        build(
+            "VERSION",
+            offset::VERSION,
+            version_word(),
+            "Generator version",
+            vec![
+                field("PATCH", 0, 8, "patch"),
+                field("MINOR", 8, 8, "minor"),
+                field("MAJOR", 16, 8, "major"),
+            ],
+        ),
+        build(
+            "HASH_LO",
+            offset::HASH_LO,
+            hash as u32,
+            "Parameter hash of the build, bits 31:0",
+            whole("HASH", 32, "low word of the hash in the generated files' headers"),
+        ),
+        build(
+            "HASH_HI",
+            offset::HASH_HI,
+            (hash >> 32) as u32,
+            "Parameter hash of the build, bits 63:32",
+            whole("HASH", 32, "high word"),
+        ),
+        build(
+            "K_MAX",
+            offset::K_MAX,
+            p.fsize as u32,
+            "Largest filter size K the build runs",
+            whole("K", 4, "odd, 3 ..= 11"),
+        ),
+        build(
+            "ROWS_MAX",
+            offset::ROWS_MAX,
+            p.rows as u32,
+            "Most rows per frame",
+            whole("ROWS", 8, "16 ..= 128"),
+        ),
+        build(
+            "COLS_MAX",
+            offset::COLS_MAX,
+            p.cols as u32,
+            "Most columns per frame",
+            whole("COLS", 13, "256 ..= 4096"),
+        ),
+        build(
+            "LABEL_BITS",
+            offset::LABEL_BITS,
+            p.label_bits,
+            "Provisional label width B (labels 1 ..= 2^B - 1)",
+            whole("B", 5, "8 ..= 16"),
+        ),
+        build(
+            "LABELS_PER_BEAT",
+            offset::LABELS_PER_BEAT,
+            p.labels_per_beat,
+            "Labels per output beat L",
+            whole("L", 3, "1, 2 or 4"),
+        ),
+        build(
+            "CLOCK_KHZ",
+            offset::CLOCK_KHZ,
+            clock_khz(p),
+            "Clock the build is constrained for, kHz",
+            whole("KHZ", 32, "kHz"),
+        ),
+        Register {
+            name: "CONTROL",
+            offset: offset::CONTROL,
+            access: ReadWrite,
+            reset: 0,
+            build_constant: false,
+            doc: "Control",
+            fields: vec![
+                field(
+                    "SOFT_RESET",
+                    0,
+                    1,
+                    "write 1: reset the pixel pipeline (abandons a frame; registers keep their values); reads 0",
+                ),
+                field(
+                    "IRQ_ENABLE",
+                    1,
+                    1,
+                    "1: `irq` is high while STATUS.FRAME_DONE is set",
+                ),
+                field(
+                    "CLEAR",
+                    2,
+                    1,
+                    "write 1: clear FRAME_COUNT, the frame status registers and STATUS.FRAME_DONE; reads 0",
+                ),
+            ],
+        },
+        Register {
+            name: "STATUS",
+            offset: offset::STATUS,
+            access: WriteOneToClear,
+            reset: 0,
+            build_constant: false,
+            doc: "Core status",
+            fields: vec![
+                field(
+                    "FRAME_DONE",
+                    0,
+                    1,
+                    "sticky: a frame's last label beat left (write 1 to clear)",
+                ),
+                field(
+                    "IDLE",
+                    1,
+                    1,
+                    "read-only: the core waits for the first pixel of a frame",
+                ),
+            ],
+        },
+        status(
+            "FRAME_COUNT",
+            offset::FRAME_COUNT,
+            "Frames completed since reset or CLEAR (wraps)",
+            whole("COUNT", 32, "frames"),
+        ),
+        status(
+            "CLUSTERS",
+            offset::CLUSTERS,
+            "Last frame: clusters (largest label)",
+            whole("CLUSTERS", 16, "count"),
+        ),
+        status(
+            "PROVISIONAL",
+            offset::PROVISIONAL,
+            "Last frame: provisional labels used",
+            whole("PROVISIONAL", 16, "count"),
+        ),
+        status(
+            "UNLABELLED",
+            offset::UNLABELLED,
+            "Last frame: points left with label 0 (labels ran out)",
+            whole("UNLABELLED", 20, "count"),
+        ),
+        status(
+            "FRAME_FLAGS",
+            offset::FRAME_FLAGS,
+            "Last frame: flags",
+            vec![
+                field("OVERFLOW", 0, 1, "provisional labels ran out"),
+                field("FRAME_ERROR", 1, 1, "`tlast` came early or late"),
+            ],
+        ),
+        status(
+            "JOINS",
+            offset::JOINS,
+            "Last frame: joins sent to the union engine",
+            whole("JOINS", 24, "count"),
+        ),
+        status(
+            "GEAR_STALLS",
+            offset::GEAR_STALLS,
+            "Last frame: read-back cycles that waited for labels",
+            whole("STALLS", 24, "cycles"),
+        ),
+    ]
+}
+
+fn field_mask(f: &Field) -> u32 {
+    if f.width >= 32 {
+        u32::MAX
+    } else {
+        ((1u32 << f.width) - 1) << f.lsb
+    }
+}
+
+/// `fcc_regs.h`: offsets, field positions and masks, reset values (the build
+/// constants among them), the hash; C99, no includes beyond `<stdint.h>`.
+pub fn c_header(p: &FccParams) -> String {
+    let mut s = crate::file_header(p, "//");
+    s.push_str(
+        "// Register map of the fcc_top AXI4-Lite slave (32-bit registers, byte offsets).\n\
+         // Unmapped offsets read 0; write strobes are ignored (full-word writes).\n\
+         #ifndef FCC_REGS_H\n#define FCC_REGS_H\n\n#include <stdint.h>\n\n",
+    );
+    s.push_str(&format!(
+        "#define FCC_REGS_ADDR_BITS {ADDR_BITS}u\n#define FCC_ID_MAGIC 0x{ID_MAGIC:08X}u\n#define FCC_PARAMS_HASH 0x{:016X}ull\n\n",
+        hash_value(p)
+    ));
+    for r in registers(p) {
+        s.push_str(&format!(
+            "// {} ({}): {}\n#define FCC_REG_{} 0x{:03X}u\n#define FCC_REG_{}_RESET 0x{:08X}u\n",
+            r.name,
+            r.access.as_str(),
+            r.doc,
+            r.name,
+            r.offset,
+            r.name,
+            r.reset
+        ));
+        if r.fields.len() > 1 || r.fields[0].width < 32 {
+            for f in &r.fields {
+                s.push_str(&format!(
+                    "#define FCC_{}_{}_SHIFT {}u\n#define FCC_{}_{}_MASK 0x{:08X}u\n",
+                    r.name,
+                    f.name,
+                    f.lsb,
+                    r.name,
+                    f.name,
+                    field_mask(f)
+                ));
+            }
+        }
+        s.push('\n');
+    }
+    s.push_str("#endif  // FCC_REGS_H\n");
+    s
+}
+
+/// The register map as a JSON value (the `registers` list of `fcc_params.json`).
+pub fn json(p: &FccParams) -> serde_json::Value {
+    serde_json::to_value(registers(p)).expect("the register map always serialises")
+}
+
+/// The register table of docs/rtl.md. Reset values of build constants are
+/// described, not numbered, so the table is the same for every build.
+pub fn markdown_table(p: &FccParams) -> String {
+    let mut s = String::from(
+        "| Offset | Register | Access | Reset | Fields | Meaning |\n|---|---|---|---|---|---|\n",
+    );
+    for r in registers(p) {
+        let reset = if r.name == "ID" {
+            format!("`0x{:08X}`", r.reset)
+        } else if r.build_constant {
+            "build".to_string()
+        } else {
+            format!("`0x{:X}`", r.reset)
+        };
+        let fields: Vec<String> = r
+            .fields
+            .iter()
+            .map(|f| {
+                let bits = if f.width == 1 {
+                    format!("{}", f.lsb)
+                } else {
+                    format!("{}:{}", f.lsb + f.width - 1, f.lsb)
+                };
+                if r.fields.len() == 1 {
+                    format!("[{bits}]")
+                } else {
+                    format!("[{bits}] {}: {}", f.name, f.doc)
+                }
+            })
+            .collect();
+        s.push_str(&format!(
+            "| `0x{:03X}` | {} | {} | {} | {} | {} |\n",
+            r.offset,
+            r.name,
+            r.access.as_str(),
+            reset,
+            fields.join("; "),
+            r.doc
+        ));
+    }
+    s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn offsets_are_aligned_distinct_and_ascending() {
+        let regs = registers(&FccParams::default());
+        for w in regs.windows(2) {
+            assert!(w[0].offset < w[1].offset, "{} / {}", w[0].name, w[1].name);
+        }
+        for r in &regs {
+            assert_eq!(r.offset % 4, 0, "{}", r.name);
+            assert!(r.offset < (1 << ADDR_BITS), "{}", r.name);
+            for f in &r.fields {
+                assert!(f.lsb + f.width <= 32, "{}.{}", r.name, f.name);
+            }
+        }
+    }
+
+    #[test]
+    fn hash_registers_hold_the_parameter_hash() {
+        let p = FccParams::default();
+        let regs = registers(&p);
+        let lo = regs.iter().find(|r| r.name == "HASH_LO").unwrap().reset;
+        let hi = regs.iter().find(|r| r.name == "HASH_HI").unwrap().reset;
+        assert_eq!(format!("{hi:08x}{lo:08x}"), p.hash());
+    }
+
+    #[test]
+    fn c_header_names_every_register_and_field() {
+        let p = FccParams::default();
+        let h = c_header(&p);
+        assert!(h.contains("#define FCC_REG_CONTROL 0x040u"), "{h}");
+        assert!(h.contains("#define FCC_CONTROL_IRQ_ENABLE_MASK 0x00000002u"));
+        assert!(h.contains("#define FCC_REG_K_MAX_RESET 0x00000007u"));
+        assert!(h.contains(&format!("0x{}ull", p.hash().to_uppercase())));
+        assert!(!h.contains("#include <cstdint>"));
+    }
+}
