@@ -77,8 +77,8 @@ pub fn check_status_registers(dut: &mut Dut, run: &FrameRun, what: &str) -> Resu
     use fcc_rtl::regmap::{bits, offset};
     let mut m = AxilMaster::new(dut.cycle);
     m.stall = 0.3;
-    let flags = u32::from(run.overflow) * bits::FLAGS_OVERFLOW
-        | u32::from(run.frame_error) * bits::FLAGS_FRAME_ERROR;
+    let flags = (u32::from(run.overflow) * bits::FLAGS_OVERFLOW)
+        | (u32::from(run.frame_error) * bits::FLAGS_FRAME_ERROR);
     let expect = [
         ("CLUSTERS", offset::CLUSTERS, run.clusters),
         ("PROVISIONAL", offset::PROVISIONAL, run.provisional),
