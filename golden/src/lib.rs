@@ -30,8 +30,8 @@ pub mod reference;
 
 pub use frame::{dist2, quantize, quantize_point, Frame, Point};
 pub use merge::{renumber, ExactMerge, PaperMerge};
-pub use pass1::{pass1, Pass1};
-pub use pass2::{pass2, JoinSink};
+pub use pass1::{pass1, pass1_released, Pass1, Run};
+pub use pass2::{pass2, pass2_runs, JoinSink};
 
 use fcc_params::{FccParams, ParamError};
 use serde::{Deserialize, Serialize};
@@ -131,32 +131,30 @@ pub fn cluster(
             got: frame.points.len(),
         });
     }
-    let p1 = pass1(params, frame);
-    let (rep, joins, merges) = match mode {
+    let (mut p1, rep, joins, merges) = match mode {
         MergeMode::Exact => {
+            let p1 = pass1(params, frame);
             let mut m = ExactMerge::new(p1.provisional);
             for &(a, b) in &p1.ring_joins {
                 m.union(a, b);
             }
-            let joins = pass2(params, frame, &p1, &mut m);
+            let joins = pass2_runs(params, frame, &p1, &mut m);
             let merges = m.merges;
-            (m.representatives(), joins, merges)
+            (p1, m.representatives(), joins, merges)
         }
         MergeMode::Paper => {
+            let p1 = pass1_released(params, frame);
             let mut m = PaperMerge::new(p1.provisional);
-            for &(a, b) in &p1.ring_joins {
-                m.ring_join(a, b);
-            }
             let joins = pass2(params, frame, &p1, &mut m);
-            (m.representatives(), joins, 0)
+            (p1, m.representatives(), joins, 0)
         }
     };
-    let (labels, clusters) = renumber(&p1.labels, &rep);
+    let clusters = merge::renumber_runs(&mut p1, frame.cols, &rep);
     Ok(Clustering {
         rows: frame.rows,
         cols: frame.cols,
-        labels,
-        points: frame.valid_count(),
+        labels: p1.labels,
+        points: p1.points,
         clusters,
         provisional: p1.provisional,
         joins,

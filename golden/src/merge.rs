@@ -1,5 +1,6 @@
 //! Pass 3: the merge table and label update (spec §5 and §7).
 
+use crate::pass1::Pass1;
 use crate::pass2::JoinSink;
 
 /// Exact connected components: a union-find over provisional labels with
@@ -35,10 +36,16 @@ impl ExactMerge {
     pub fn union(&mut self, a: u32, b: u32) {
         let (ra, rb) = (self.find(a), self.find(b));
         if ra != rb {
-            let (lo, hi) = if ra < rb { (ra, rb) } else { (rb, ra) };
-            self.parent[hi as usize] = lo;
-            self.merges += 1;
+            self.link_roots(ra, rb);
         }
+    }
+
+    /// Link two different roots, the larger under the smaller.
+    pub(crate) fn link_roots(&mut self, ra: u32, rb: u32) {
+        debug_assert!(ra != rb && self.parent[ra as usize] == ra && self.parent[rb as usize] == rb);
+        let (lo, hi) = if ra < rb { (ra, rb) } else { (rb, ra) };
+        self.parent[hi as usize] = lo;
+        self.merges += 1;
     }
 
     /// Representative of every label: `rep[l]` is the root of `l`.
@@ -154,4 +161,30 @@ pub fn renumber(provisional_labels: &[u32], rep: &[u32]) -> (Vec<u32>, u32) {
         })
         .collect();
     (labels, n)
+}
+
+/// [`renumber`] run by run, in place: the provisional labels of `p1` become
+/// the final labels. Returns the number of clusters.
+pub(crate) fn renumber_runs(p1: &mut Pass1, cols: usize, rep: &[u32]) -> u32 {
+    let mut id = vec![0u32; rep.len()];
+    let mut n = 0u32;
+    for (i, bounds) in p1.row_runs.windows(2).enumerate() {
+        for run in &p1.runs[bounds[0]..bounds[1]] {
+            let r = rep[run.label as usize] as usize;
+            if id[r] == 0 {
+                n += 1;
+                id[r] = n;
+            }
+            let v = id[r];
+            let row = i * cols;
+            // Between its ends a run's row holds only its own pixels and
+            // empty ones.
+            for l in &mut p1.labels[row + run.first as usize..=row + run.last as usize] {
+                if *l != 0 {
+                    *l = v;
+                }
+            }
+        }
+    }
+    n
 }
