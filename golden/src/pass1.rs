@@ -14,7 +14,7 @@ pub struct Run {
 }
 
 /// What pass 1 leaves for the later passes.
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
 pub struct Pass1 {
     /// Provisional label of every pixel, raster order; 0 for an empty pixel
     /// or a pixel of a run that started after labels ran out.
@@ -52,7 +52,9 @@ impl Pass1 {
 /// row has at least two valid pixels and its first and last valid pixels are
 /// within `tH`, their runs are joined (the ring closes at azimuth 0).
 pub fn pass1(params: &FccParams, frame: &Frame) -> Pass1 {
-    label_runs(params, frame, RingHandling::Join)
+    let mut out = Pass1::default();
+    label_runs(params, frame, RingHandling::Join, &mut out);
+    out
 }
 
 /// Pass 1 with the ring handling of the authors' released code (spec §6):
@@ -61,30 +63,41 @@ pub fn pass1(params: &FccParams, frame: &Frame) -> Pass1 {
 /// is given back, so the next run allocated reuses it. Nothing is left in
 /// [`Pass1::ring_joins`].
 pub fn pass1_released(params: &FccParams, frame: &Frame) -> Pass1 {
-    label_runs(params, frame, RingHandling::Relabel)
+    let mut out = Pass1::default();
+    label_runs(params, frame, RingHandling::Relabel, &mut out);
+    out
 }
 
 #[derive(Clone, Copy, PartialEq, Eq)]
-enum RingHandling {
+pub(crate) enum RingHandling {
     /// Record a join for the merge (spec §3).
     Join,
     /// Relabel the last run with the first run's label (spec §6).
     Relabel,
 }
 
-fn label_runs(params: &FccParams, frame: &Frame, ring: RingHandling) -> Pass1 {
+/// Pass 1 into the buffers of `out`, which keep their allocations.
+pub(crate) fn label_runs(params: &FccParams, frame: &Frame, ring: RingHandling, out: &mut Pass1) {
     let th_sq = params.th_h_sq();
     let max_label = params.max_label();
     let cols = frame.cols;
-    let mut labels = vec![0u32; frame.points.len()];
+    let Pass1 {
+        labels,
+        ring_joins,
+        runs,
+        row_runs,
+        ..
+    } = out;
+    labels.clear();
+    labels.resize(frame.points.len(), 0);
+    ring_joins.clear();
+    runs.clear();
+    row_runs.clear();
+    row_runs.push(0);
     let mut next: u32 = 1;
     let mut overflow = false;
     let mut unlabelled = 0usize;
     let mut points = 0usize;
-    let mut ring_joins = Vec::new();
-    let mut runs = Vec::new();
-    let mut row_runs = Vec::with_capacity(frame.rows + 1);
-    row_runs.push(0);
 
     for (row_pts, row_labels) in frame
         .points
@@ -161,14 +174,8 @@ fn label_runs(params: &FccParams, frame: &Frame, ring: RingHandling) -> Pass1 {
         }
         row_runs.push(runs.len());
     }
-    Pass1 {
-        labels,
-        provisional: next - 1,
-        ring_joins,
-        overflow,
-        unlabelled,
-        points,
-        runs,
-        row_runs,
-    }
+    out.provisional = next - 1;
+    out.overflow = overflow;
+    out.unlabelled = unlabelled;
+    out.points = points;
 }

@@ -115,6 +115,17 @@ pub fn pass2<S: JoinSink>(params: &FccParams, frame: &Frame, p1: &Pass1, sink: &
 /// same components as [`pass2`] with an [`ExactMerge`] and returns the same
 /// count: the pairs of runs (labels) with at least one joining pixel pair.
 pub fn pass2_runs(params: &FccParams, frame: &Frame, p1: &Pass1, merge: &mut ExactMerge) -> u64 {
+    pass2_runs_with(params, frame, p1, merge, &mut Vec::new())
+}
+
+/// [`pass2_runs`] with its scratch space from the caller.
+pub(crate) fn pass2_runs_with(
+    params: &FccParams,
+    frame: &Frame,
+    p1: &Pass1,
+    merge: &mut ExactMerge,
+    from: &mut Vec<usize>,
+) -> u64 {
     let th_sq = params.th_v_sq();
     let h = params.half();
     let cols = frame.cols;
@@ -122,7 +133,8 @@ pub fn pass2_runs(params: &FccParams, frame: &Frame, p1: &Pass1, merge: &mut Exa
     let mut joins = 0u64;
     // Per row distance m above the centre row: the first run that may still
     // reach a centre run (runs of a row are sorted by column).
-    let mut from = vec![0usize; h + 1];
+    from.clear();
+    from.resize(h + 1, 0);
     for i in 1..frame.rows {
         let hm = h.min(i);
         for (m, f) in from.iter_mut().enumerate().take(hm + 1).skip(1) {
