@@ -131,13 +131,14 @@ pub(crate) fn pass2_runs_with(
     let cols = frame.cols;
     let pts = &frame.points;
     let mut joins = 0u64;
-    // Per row distance m above the centre row: the first run that may still
-    // reach a centre run (runs of a row are sorted by column).
+    // For the row m = 1 ..= h above the centre row, `from[m - 1]` is the
+    // first run that may still reach a centre run (runs of a row are sorted
+    // by column, and so are the centre runs).
     from.clear();
-    from.resize(h + 1, 0);
+    from.resize(h, 0);
     for i in 1..frame.rows {
         let hm = h.min(i);
-        for (m, f) in from.iter_mut().enumerate().take(hm + 1).skip(1) {
+        for (m, f) in (1..=hm).zip(from.iter_mut()) {
             *f = p1.row_runs[i - m];
         }
         let centre_row = &pts[i * cols..(i + 1) * cols];
@@ -146,14 +147,14 @@ pub(crate) fn pass2_runs_with(
             let lo = a.saturating_sub(h);
             let hi = b + h;
             let mut root = merge.find(run.label);
-            for m in 1..=hm {
+            for (m, start) in (1..=hm).zip(from.iter_mut()) {
                 let u = i - m;
                 let end = p1.row_runs[u + 1];
-                let mut k = from[m];
+                let mut k = *start;
                 while k < end && (p1.runs[k].last as usize) < lo {
                     k += 1;
                 }
-                from[m] = k;
+                *start = k;
                 let above_row = &pts[u * cols..(u + 1) * cols];
                 for other in &p1.runs[k..end] {
                     if other.first as usize > hi {

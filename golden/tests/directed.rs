@@ -1,8 +1,8 @@
 //! Hand-worked frames for each pass and for the whole model (spec examples).
 
 use fcc_golden::{
-    cluster, pass1, pass1_released, pass2, reference::reference_labels, renumber,
-    split_components, Frame, GoldenError, JoinSink, MergeMode, PaperMerge,
+    cluster, pass1, pass1_released, pass2, reference::reference_labels, renumber, split_components,
+    Frame, GoldenError, JoinSink, MergeMode, PaperMerge,
 };
 use fcc_params::FccParams;
 
@@ -351,7 +351,10 @@ fn paper_ring_on_a_row_of_one_run_gives_no_label_back() {
     assert_eq!(released.provisional, 2);
     let paper = cluster(&p, &f, MergeMode::Paper).unwrap();
     assert_eq!(paper.clusters, 2, "th_V = 0.5 m: the rows stay apart");
-    assert_eq!(paper.labels, cluster(&p, &f, MergeMode::Exact).unwrap().labels);
+    assert_eq!(
+        paper.labels,
+        cluster(&p, &f, MergeMode::Exact).unwrap().labels
+    );
 }
 
 #[test]
@@ -364,7 +367,10 @@ fn paper_empty_pixels_are_not_points_at_the_origin() {
     let p = params_for(&f, 3, 0.5, 1.0);
     let paper = cluster(&p, &f, MergeMode::Paper).unwrap();
     assert_eq!(paper.labels, vec![1, 0, 2]);
-    assert_eq!(paper.labels, cluster(&p, &f, MergeMode::Exact).unwrap().labels);
+    assert_eq!(
+        paper.labels,
+        cluster(&p, &f, MergeMode::Exact).unwrap().labels
+    );
 }
 
 #[test]
