@@ -19,7 +19,8 @@ pub struct Pass1 {
     /// Provisional label of every pixel, raster order; 0 for an empty pixel
     /// or a pixel of a run that started after labels ran out.
     pub labels: Vec<u32>,
-    /// Provisional labels allocated: they are `1 ..= provisional`.
+    /// Provisional labels allocated (and not given back by
+    /// [`pass1_released`]): they are `1 ..= provisional`.
     pub provisional: u32,
     /// Ring-check joins, one per row at most: (first run's label, last run's
     /// label). Empty from [`pass1_released`], which relabels instead.
@@ -31,6 +32,8 @@ pub struct Pass1 {
     /// Valid pixels in the frame.
     pub points: usize,
     /// The labelled runs of every row, left to right, rows one after another.
+    /// A run relabelled by [`pass1_released`] keeps its own entry, with the
+    /// label of its row's first run.
     pub runs: Vec<Run>,
     /// `runs[row_runs[i] .. row_runs[i + 1]]` are the runs of row `i`.
     pub row_runs: Vec<usize>,
