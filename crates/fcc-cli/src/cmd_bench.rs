@@ -83,8 +83,9 @@ fn time_ms(p: &FccParams, frames: &[Frame], mode: MergeMode, repeat: usize) -> a
     Ok(per_frame.iter().sum::<f64>() / per_frame.len() as f64)
 }
 
-/// Frames per second clustering every frame `repeat` times on the pool, one
-/// workspace per thread.
+/// Frames per second clustering the frames over and over on the pool for at
+/// least `repeat` rounds and a quarter of a second: each thread keeps one
+/// workspace and takes the next frame as it finishes one.
 fn batch_rate(
     pool: &rayon::ThreadPool,
     p: &FccParams,
@@ -92,18 +93,30 @@ fn batch_rate(
     mode: MergeMode,
     repeat: usize,
 ) -> anyhow::Result<f64> {
-    let batch = std::iter::repeat_n(frames, repeat.max(1))
-        .flatten()
-        .collect::<Vec<_>>();
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    let min_frames = frames.len() * repeat.max(1);
+    let next = AtomicUsize::new(0);
     let s = Instant::now();
-    pool.install(|| {
-        batch
-            .par_iter()
-            .try_for_each_init(Workspace::default, |ws, f| {
-                cluster_with(ws, p, f, mode).map(|out| ws.recycle(out))
-            })
-    })?;
-    Ok(batch.len() as f64 / s.elapsed().as_secs_f64())
+    let done = |n: usize| n >= min_frames && s.elapsed().as_secs_f64() >= 0.25;
+    let per_thread = pool.broadcast(|_| -> Result<usize, fcc_golden::GoldenError> {
+        let mut ws = Workspace::default();
+        let mut n = 0;
+        loop {
+            let i = next.fetch_add(1, Ordering::Relaxed);
+            if done(i) {
+                return Ok(n);
+            }
+            let out = cluster_with(&mut ws, p, &frames[i % frames.len()], mode)?;
+            ws.recycle(out);
+            n += 1;
+        }
+    });
+    let secs = s.elapsed().as_secs_f64();
+    let mut total = 0;
+    for n in per_thread {
+        total += n?;
+    }
+    Ok(total as f64 / secs)
 }
 
 pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
