@@ -30,8 +30,8 @@ pub mod reference;
 
 pub use frame::{dist2, quantize, quantize_point, Frame, Point};
 pub use merge::{renumber, ExactMerge, PaperMerge};
-pub use pass1::{pass1, Pass1};
-pub use pass2::{pass2, JoinSink};
+pub use pass1::{pass1, pass1_released, Pass1, Run};
+pub use pass2::{pass2, pass2_runs, JoinSink};
 
 use fcc_params::{FccParams, ParamError};
 use serde::{Deserialize, Serialize};
@@ -114,6 +114,35 @@ pub fn cluster(
     frame: &Frame,
     mode: MergeMode,
 ) -> Result<Clustering, GoldenError> {
+    cluster_with(&mut Workspace::default(), params, frame, mode)
+}
+
+/// The buffers of [`cluster_with`], kept from one frame to the next. With
+/// one workspace per thread, and each result handed back by
+/// [`recycle`](Self::recycle), `exact` clustering allocates nothing per frame
+/// once the buffers have grown to the frame size.
+#[derive(Debug, Clone, Default)]
+pub struct Workspace {
+    p1: Pass1,
+    merge: ExactMerge,
+    id: Vec<u32>,
+    from: Vec<usize>,
+}
+
+impl Workspace {
+    /// Give a finished result's label buffer back for the next frame.
+    pub fn recycle(&mut self, done: Clustering) {
+        self.p1.labels = done.labels;
+    }
+}
+
+/// As [`cluster`], reusing the buffers of `ws`.
+pub fn cluster_with(
+    ws: &mut Workspace,
+    params: &FccParams,
+    frame: &Frame,
+    mode: MergeMode,
+) -> Result<Clustering, GoldenError> {
     params.validate()?;
     if frame.rows != params.rows || frame.cols != params.cols {
         return Err(GoldenError::Shape {
@@ -131,32 +160,34 @@ pub fn cluster(
             got: frame.points.len(),
         });
     }
-    let p1 = pass1(params, frame);
-    let (rep, joins, merges) = match mode {
+    let (joins, merges, clusters) = match mode {
         MergeMode::Exact => {
-            let mut m = ExactMerge::new(p1.provisional);
-            for &(a, b) in &p1.ring_joins {
+            pass1::label_runs(params, frame, pass1::RingHandling::Join, &mut ws.p1);
+            let m = &mut ws.merge;
+            m.reset(ws.p1.provisional);
+            for &(a, b) in &ws.p1.ring_joins {
                 m.union(a, b);
             }
-            let joins = pass2(params, frame, &p1, &mut m);
+            let joins = pass2::pass2_runs_with(params, frame, &ws.p1, m, &mut ws.from);
             let merges = m.merges;
-            (m.representatives(), joins, merges)
+            let clusters = merge::renumber_runs(&mut ws.p1, frame.cols, m.flatten(), &mut ws.id);
+            (joins, merges, clusters)
         }
         MergeMode::Paper => {
-            let mut m = PaperMerge::new(p1.provisional);
-            for &(a, b) in &p1.ring_joins {
-                m.ring_join(a, b);
-            }
-            let joins = pass2(params, frame, &p1, &mut m);
-            (m.representatives(), joins, 0)
+            pass1::label_runs(params, frame, pass1::RingHandling::Relabel, &mut ws.p1);
+            let mut m = PaperMerge::new(ws.p1.provisional);
+            let joins = pass2(params, frame, &ws.p1, &mut m);
+            let rep = m.representatives();
+            let clusters = merge::renumber_runs(&mut ws.p1, frame.cols, &rep, &mut ws.id);
+            (joins, 0, clusters)
         }
     };
-    let (labels, clusters) = renumber(&p1.labels, &rep);
+    let p1 = &mut ws.p1;
     Ok(Clustering {
         rows: frame.rows,
         cols: frame.cols,
-        labels,
-        points: frame.valid_count(),
+        labels: std::mem::take(&mut p1.labels),
+        points: p1.points,
         clusters,
         provisional: p1.provisional,
         joins,

@@ -1,11 +1,12 @@
 //! Pass 3: the merge table and label update (spec §5 and §7).
 
+use crate::pass1::Pass1;
 use crate::pass2::JoinSink;
 
 /// Exact connected components: a union-find over provisional labels with
 /// path halving, linking the larger root under the smaller, so every root
 /// is the smallest label of its component (its first run in raster order).
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, Default)]
 pub struct ExactMerge {
     parent: Vec<u32>,
     /// Joins that united two different components.
@@ -19,6 +20,13 @@ impl ExactMerge {
             parent: (0..=provisional).collect(),
             merges: 0,
         }
+    }
+
+    /// Start again with labels `1 ..= provisional`, keeping the allocation.
+    pub fn reset(&mut self, provisional: u32) {
+        self.parent.clear();
+        self.parent.extend(0..=provisional);
+        self.merges = 0;
     }
 
     /// The root (smallest label) of `l`'s component, halving the path.
@@ -35,10 +43,27 @@ impl ExactMerge {
     pub fn union(&mut self, a: u32, b: u32) {
         let (ra, rb) = (self.find(a), self.find(b));
         if ra != rb {
-            let (lo, hi) = if ra < rb { (ra, rb) } else { (rb, ra) };
-            self.parent[hi as usize] = lo;
-            self.merges += 1;
+            self.link_roots(ra, rb);
         }
+    }
+
+    /// Link two different roots, the larger under the smaller.
+    pub(crate) fn link_roots(&mut self, ra: u32, rb: u32) {
+        debug_assert!(ra != rb && self.parent[ra as usize] == ra && self.parent[rb as usize] == rb);
+        let (lo, hi) = if ra < rb { (ra, rb) } else { (rb, ra) };
+        self.parent[hi as usize] = lo;
+        self.merges += 1;
+    }
+
+    /// Point every label straight at its root and return the roots, as
+    /// [`representatives`](Self::representatives) without consuming the table.
+    pub fn flatten(&mut self) -> &[u32] {
+        // A parent is smaller than its child, so it is already flattened.
+        for l in 0..self.parent.len() {
+            let p = self.parent[l] as usize;
+            self.parent[l] = self.parent[p];
+        }
+        &self.parent
     }
 
     /// Representative of every label: `rep[l]` is the root of `l`.
@@ -102,13 +127,6 @@ impl PaperMerge {
         self.collected.clear();
     }
 
-    /// Apply one ring-check join as its own flush of `{T[a], T[b]}`.
-    pub fn ring_join(&mut self, a: u32, b: u32) {
-        self.collect(a);
-        self.collect(b);
-        self.flush();
-    }
-
     /// The output lookup `T[T[l]]` of every label.
     pub fn representatives(mut self) -> Vec<u32> {
         self.flush();
@@ -154,4 +172,32 @@ pub fn renumber(provisional_labels: &[u32], rep: &[u32]) -> (Vec<u32>, u32) {
         })
         .collect();
     (labels, n)
+}
+
+/// [`renumber`] run by run, in place: the provisional labels of `p1` become
+/// the final labels. Returns the number of clusters.
+/// `id` is scratch space.
+pub(crate) fn renumber_runs(p1: &mut Pass1, cols: usize, rep: &[u32], id: &mut Vec<u32>) -> u32 {
+    id.clear();
+    id.resize(rep.len(), 0);
+    let mut n = 0u32;
+    for (i, bounds) in p1.row_runs.windows(2).enumerate() {
+        for run in &p1.runs[bounds[0]..bounds[1]] {
+            let r = rep[run.label as usize] as usize;
+            if id[r] == 0 {
+                n += 1;
+                id[r] = n;
+            }
+            let v = id[r];
+            let row = i * cols;
+            // Between its ends a run's row holds only its own pixels and
+            // empty ones.
+            for l in &mut p1.labels[row + run.first as usize..=row + run.last as usize] {
+                if *l != 0 {
+                    *l = v;
+                }
+            }
+        }
+    }
+    n
 }

@@ -1,7 +1,8 @@
 //! Hand-worked frames for each pass and for the whole model (spec examples).
 
 use fcc_golden::{
-    cluster, pass1, reference::reference_labels, split_components, Frame, GoldenError, MergeMode,
+    cluster, pass1, pass1_released, pass2, reference::reference_labels, renumber, split_components,
+    Frame, GoldenError, JoinSink, MergeMode, PaperMerge,
 };
 use fcc_params::FccParams;
 
@@ -243,6 +244,133 @@ fn paper_merge_overwrite_splits_a_component() {
     );
     assert_eq!(split_components(&exact.labels, &paper.labels), 1);
     assert_eq!(split_components(&exact.labels, &exact.labels), 0);
+}
+
+/// A frame from ASCII art on a vertical cylinder: `cols` columns around a
+/// circle whose neighbouring columns are 1 m apart, also across the seam
+/// (column C-1 to column 0); rows 1 m apart.
+fn cylinder(art: &str) -> Frame {
+    let lines: Vec<&str> = art.split_whitespace().collect();
+    let (rows, cols) = (lines.len(), lines[0].len());
+    let radius = 1.0 / (2.0 * (std::f64::consts::PI / cols as f64).sin());
+    let mut xyz = Vec::new();
+    for (r, line) in lines.iter().enumerate() {
+        assert_eq!(line.len(), cols);
+        for (c, ch) in line.chars().enumerate() {
+            let a = std::f64::consts::TAU * c as f64 / cols as f64;
+            if ch == '#' {
+                xyz.extend([radius * a.cos(), radius * a.sin(), -(r as f64)]);
+            } else {
+                xyz.extend([f64::NAN; 3]);
+            }
+        }
+    }
+    Frame::from_xyz_f64(rows, cols, &xyz)
+}
+
+#[test]
+fn paper_ring_relabels_the_seam_run_and_keeps_the_object_whole() {
+    // Spec §8, example H.
+    let f = cylinder(
+        ".#....#.
+         #..#..##
+         #.......",
+    );
+    let p = params_for(&f, 3, 1.1, 1.5);
+    let p1 = pass1(&p, &f);
+    assert_eq!(
+        p1.labels,
+        vec![
+            0, 1, 0, 0, 0, 0, 2, 0, //
+            3, 0, 0, 4, 0, 0, 5, 5, //
+            6, 0, 0, 0, 0, 0, 0, 0,
+        ]
+    );
+    assert_eq!(p1.ring_joins, vec![(3, 5)]);
+    // The released code: run 5 takes label 3 and label 5 goes to row 2.
+    let released = pass1_released(&p, &f);
+    assert_eq!(
+        released.labels,
+        vec![
+            0, 1, 0, 0, 0, 0, 2, 0, //
+            3, 0, 0, 4, 0, 0, 3, 3, //
+            5, 0, 0, 0, 0, 0, 0, 0,
+        ]
+    );
+    assert!(released.ring_joins.is_empty());
+    assert_eq!(released.provisional, 5);
+
+    let exact = cluster(&p, &f, MergeMode::Exact).unwrap();
+    let paper = cluster(&p, &f, MergeMode::Paper).unwrap();
+    let whole = vec![
+        0, 1, 0, 0, 0, 0, 1, 0, //
+        1, 0, 0, 2, 0, 0, 1, 1, //
+        1, 0, 0, 0, 0, 0, 0, 0,
+    ];
+    assert_eq!(exact.labels, whole);
+    assert_eq!(exact.labels, reference_labels(&p, &f));
+    assert_eq!(paper.labels, whole, "paper splits the seam object");
+    assert_eq!(paper.provisional, 5);
+
+    // The paper's text: the ring join is a table write before pass 2, which
+    // row 1's last flush overwrites (T[3] = 2), cutting run 1 off.
+    let mut text = PaperMerge::new(p1.provisional);
+    for &(a, b) in &p1.ring_joins {
+        text.join(a, b);
+        text.row_end();
+    }
+    pass2(&p, &f, &p1, &mut text);
+    let (as_text, clusters) = renumber(&p1.labels, &text.representatives());
+    assert_eq!(clusters, 3);
+    assert_eq!(
+        as_text,
+        vec![
+            0, 1, 0, 0, 0, 0, 2, 0, //
+            2, 0, 0, 3, 0, 0, 2, 2, //
+            2, 0, 0, 0, 0, 0, 0, 0,
+        ]
+    );
+    assert_eq!(split_components(&exact.labels, &as_text), 1);
+}
+
+#[test]
+fn paper_ring_on_a_row_of_one_run_gives_no_label_back() {
+    // Row 0 is one run all the way round; its ends are neighbours, so the
+    // ring check passes on a single run. The released code would give its
+    // label back and row 1's point would reuse label 1; here it gets 2.
+    let f = cylinder(
+        "########
+         ...#....",
+    );
+    let p = params_for(&f, 3, 1.1, 0.5);
+    let released = pass1_released(&p, &f);
+    assert_eq!(
+        released.labels,
+        vec![1, 1, 1, 1, 1, 1, 1, 1, 0, 0, 0, 2, 0, 0, 0, 0]
+    );
+    assert_eq!(released.provisional, 2);
+    let paper = cluster(&p, &f, MergeMode::Paper).unwrap();
+    assert_eq!(paper.clusters, 2, "th_V = 0.5 m: the rows stay apart");
+    assert_eq!(
+        paper.labels,
+        cluster(&p, &f, MergeMode::Exact).unwrap().labels
+    );
+}
+
+#[test]
+fn paper_empty_pixels_are_not_points_at_the_origin() {
+    // Two points 0.3 m from the sensor, 0.6 m apart, an empty pixel between
+    // them: fed as a zero (the released code) the empty pixel would chain
+    // them into one run at th_H = 0.5. Empty pixels are skipped here.
+    let xyz = [0.3, 0.0, 0.0, f64::NAN, 0.0, 0.0, -0.3, 0.0, 0.0];
+    let f = Frame::from_xyz_f64(1, 3, &xyz);
+    let p = params_for(&f, 3, 0.5, 1.0);
+    let paper = cluster(&p, &f, MergeMode::Paper).unwrap();
+    assert_eq!(paper.labels, vec![1, 0, 2]);
+    assert_eq!(
+        paper.labels,
+        cluster(&p, &f, MergeMode::Exact).unwrap().labels
+    );
 }
 
 #[test]

@@ -1,9 +1,10 @@
 //! `fcc bench`: golden-model time per frame for each K on synthetic scenes,
-//! single-threaded and as a parallel batch, and what `paper` merging loses.
+//! single-threaded and as a parallel batch, for `exact` and `paper` merging,
+//! and what `paper` merging loses.
 
 use anyhow::Context;
 use clap::Args;
-use fcc_golden::{cluster, split_components, Frame, MergeMode};
+use fcc_golden::{cluster, cluster_with, split_components, Frame, MergeMode, Workspace};
 use fcc_params::FccParams;
 use fcc_scene::{generate, SceneConfig};
 use rayon::prelude::*;
@@ -33,6 +34,9 @@ pub struct BenchArgs {
     /// Missing-return probability of the synthetic scenes.
     #[arg(long, default_value_t = SceneConfig::default().missing)]
     pub missing: f64,
+    /// Threads of the batch run (default: one per core).
+    #[arg(long)]
+    pub jobs: Option<usize>,
     /// Write the table as JSON here as well.
     #[arg(long)]
     pub json: Option<std::path::PathBuf>,
@@ -44,10 +48,13 @@ struct Row {
     exact_ms: f64,
     paper_ms: f64,
     batch_frames_per_s: f64,
+    paper_batch_frames_per_s: f64,
     threads: usize,
     points: f64,
     provisional: f64,
     joins: f64,
+    paper_provisional: f64,
+    paper_joins: f64,
     clusters_exact: u64,
     clusters_paper: u64,
     split_by_paper: u64,
@@ -58,19 +65,58 @@ fn median(mut v: Vec<f64>) -> f64 {
     v[v.len() / 2]
 }
 
-/// Median single-thread milliseconds of clustering each frame `repeat` times.
+/// Median single-thread milliseconds of clustering each frame `repeat` times,
+/// averaged over the frames. One workspace, as a tool looping over frames has.
 fn time_ms(p: &FccParams, frames: &[Frame], mode: MergeMode, repeat: usize) -> anyhow::Result<f64> {
+    let mut ws = Workspace::default();
     let mut per_frame = Vec::new();
     for f in frames {
         let mut t = Vec::new();
         for _ in 0..repeat.max(1) {
             let s = Instant::now();
-            std::hint::black_box(cluster(p, f, mode)?);
+            let out = std::hint::black_box(cluster_with(&mut ws, p, f, mode)?);
             t.push(s.elapsed().as_secs_f64() * 1e3);
+            ws.recycle(out);
         }
         per_frame.push(median(t));
     }
     Ok(per_frame.iter().sum::<f64>() / per_frame.len() as f64)
+}
+
+/// Frames per second clustering the frames over and over on the pool for at
+/// least `repeat` rounds and a quarter of a second: each thread keeps one
+/// workspace and takes the next frame as it finishes one.
+fn batch_rate(
+    pool: &rayon::ThreadPool,
+    p: &FccParams,
+    frames: &[Frame],
+    mode: MergeMode,
+    repeat: usize,
+) -> anyhow::Result<f64> {
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    let min_frames = frames.len() * repeat.max(1);
+    let next = AtomicUsize::new(0);
+    let s = Instant::now();
+    let done = |n: usize| n >= min_frames && s.elapsed().as_secs_f64() >= 0.25;
+    let per_thread = pool.broadcast(|_| -> Result<usize, fcc_golden::GoldenError> {
+        let mut ws = Workspace::default();
+        let mut n = 0;
+        loop {
+            let i = next.fetch_add(1, Ordering::Relaxed);
+            if done(i) {
+                return Ok(n);
+            }
+            let out = cluster_with(&mut ws, p, &frames[i % frames.len()], mode)?;
+            ws.recycle(out);
+            n += 1;
+        }
+    });
+    let secs = s.elapsed().as_secs_f64();
+    let mut total = 0;
+    for n in per_thread {
+        total += n?;
+    }
+    Ok(total as f64 / secs)
 }
 
 pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
@@ -94,7 +140,11 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
             Ok(Frame::from_xyz_f32(s.rows, s.cols, &s.xyz))
         })
         .collect::<anyhow::Result<Vec<_>>>()?;
-    let threads = rayon::current_num_threads();
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(args.jobs.unwrap_or(0))
+        .build()
+        .context("cannot start the batch threads")?;
+    let threads = pool.current_num_threads();
     let mut rows = Vec::new();
     for &k in &args.fsize {
         let p = FccParams {
@@ -107,15 +157,11 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
         eprintln!("K = {k} ...");
         let exact_ms = time_ms(&p, &frames, MergeMode::Exact, args.repeat)?;
         let paper_ms = time_ms(&p, &frames, MergeMode::Paper, args.repeat)?;
-        let batch = std::iter::repeat_n(&frames, args.repeat.max(1))
-            .flatten()
-            .collect::<Vec<_>>();
-        let s = Instant::now();
-        batch
-            .par_iter()
-            .try_for_each(|f| cluster(&p, f, MergeMode::Exact).map(|_| ()))?;
-        let batch_frames_per_s = batch.len() as f64 / s.elapsed().as_secs_f64();
+        let batch_frames_per_s = batch_rate(&pool, &p, &frames, MergeMode::Exact, args.repeat)?;
+        let paper_batch_frames_per_s =
+            batch_rate(&pool, &p, &frames, MergeMode::Paper, args.repeat)?;
         let (mut pts, mut prov, mut joins) = (0.0, 0.0, 0.0);
+        let (mut paper_prov, mut paper_joins) = (0.0, 0.0);
         let (mut ce, mut cp, mut split) = (0u64, 0u64, 0u64);
         for f in &frames {
             let e = cluster(&p, f, MergeMode::Exact)?;
@@ -123,6 +169,8 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
             pts += e.points as f64;
             prov += f64::from(e.provisional);
             joins += e.joins as f64;
+            paper_prov += f64::from(q.provisional);
+            paper_joins += q.joins as f64;
             ce += u64::from(e.clusters);
             cp += u64::from(q.clusters);
             split += split_components(&e.labels, &q.labels) as u64;
@@ -133,10 +181,13 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
             exact_ms,
             paper_ms,
             batch_frames_per_s,
+            paper_batch_frames_per_s,
             threads,
             points: pts / n,
             provisional: prov / n,
             joins: joins / n,
+            paper_provisional: paper_prov / n,
+            paper_joins: paper_joins / n,
             clusters_exact: ce,
             clusters_paper: cp,
             split_by_paper: split,
@@ -146,19 +197,31 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
         "golden model, {} x {}, {} synthetic scenes (dropout {}, missing {}), median of {} runs",
         args.rows, args.cols, args.frames, args.dropout, args.missing, args.repeat
     );
-    println!("| K | exact ms/frame (1 thread) | paper ms/frame | batch frames/s ({threads} threads) | points | provisional | joins | clusters exact | clusters paper | exact clusters split by paper |");
+    println!(
+        "| K | merge | ms/frame (1 thread) | batch frames/s ({threads} threads) | speed-up | points | provisional | joins | clusters | exact clusters split |"
+    );
     println!("|---|---|---|---|---|---|---|---|---|---|");
     for r in &rows {
         println!(
-            "| {} | {:.2} | {:.2} | {:.0} | {:.0} | {:.0} | {:.0} | {} | {} | {} ({:.1} %) |",
+            "| {} | exact | {:.3} | {:.0} | {:.2} x | {:.0} | {:.0} | {:.0} | {} | – |",
             r.fsize,
             r.exact_ms,
-            r.paper_ms,
             r.batch_frames_per_s,
+            r.batch_frames_per_s * r.exact_ms / 1e3,
             r.points,
             r.provisional,
             r.joins,
             r.clusters_exact,
+        );
+        println!(
+            "| {} | paper | {:.3} | {:.0} | {:.2} x | {:.0} | {:.0} | {:.0} | {} | {} ({:.1} %) |",
+            r.fsize,
+            r.paper_ms,
+            r.paper_batch_frames_per_s,
+            r.paper_batch_frames_per_s * r.paper_ms / 1e3,
+            r.points,
+            r.paper_provisional,
+            r.paper_joins,
             r.clusters_paper,
             r.split_by_paper,
             100.0 * r.split_by_paper as f64 / r.clusters_exact.max(1) as f64

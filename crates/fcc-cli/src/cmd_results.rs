@@ -52,6 +52,7 @@ pub fn run(args: &ResultsArgs) -> anyhow::Result<()> {
         cols: base.cols,
         dropout: SceneConfig::default().dropout,
         missing: SceneConfig::default().missing,
+        jobs: None,
         json: Some(bench_json.clone()),
     })?;
     eprintln!("2/3 Verilator cycles (fcc cycles)");

@@ -357,3 +357,51 @@ fn gen_writes_the_rtl_and_rejects_what_hardware_cannot_do() {
         stderr(&o)
     );
 }
+
+#[test]
+fn bench_prints_exact_and_paper_rows_and_its_json() {
+    let d = tmpdir("bench");
+    let json = d.join("bench.json");
+    let o = fcc(&[
+        "bench",
+        "--fsize",
+        "3,5",
+        "--frames",
+        "1",
+        "--repeat",
+        "1",
+        "--rows",
+        "16",
+        "--cols",
+        "128",
+        "--jobs",
+        "2",
+        "--json",
+        s(&json),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = String::from_utf8_lossy(&o.stdout);
+    for k in ["3", "5"] {
+        for merge in ["exact", "paper"] {
+            assert!(
+                out.lines()
+                    .any(|l| l.starts_with(&format!("| {k} | {merge} |"))),
+                "no K = {k} {merge} row in\n{out}"
+            );
+        }
+    }
+    assert!(out.contains("batch frames/s (2 threads)"), "{out}");
+    let rows: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    assert_eq!(rows.as_array().unwrap().len(), 2);
+    for field in [
+        "exact_ms",
+        "paper_ms",
+        "batch_frames_per_s",
+        "paper_batch_frames_per_s",
+        "threads",
+    ] {
+        assert!(rows[0][field].is_number(), "{field} missing: {rows}");
+    }
+    assert_eq!(rows[0]["threads"], 2);
+}

@@ -188,11 +188,17 @@ pub struct CycleInput {
 pub struct GoldenTiming {
     /// Median ms per frame, one thread, exact merging, release build.
     pub exact_ms: f64,
-    /// Frames per second clustering a batch on all threads.
+    /// Frames per second clustering a batch on all threads, exact merging.
     pub batch_frames_per_s: f64,
     /// Threads of the batch run.
     #[serde(default)]
     pub threads: Option<usize>,
+    /// Median ms per frame, one thread, `paper` merging.
+    #[serde(default)]
+    pub paper_ms: Option<f64>,
+    /// Frames per second of the batch, `paper` merging.
+    #[serde(default)]
+    pub paper_batch_frames_per_s: Option<f64>,
 }
 
 /// Everything measured for one K.
@@ -267,6 +273,10 @@ struct BenchLine {
     batch_frames_per_s: f64,
     #[serde(default)]
     threads: Option<usize>,
+    #[serde(default)]
+    paper_ms: Option<f64>,
+    #[serde(default)]
+    paper_batch_frames_per_s: Option<f64>,
 }
 
 impl Report {
@@ -287,6 +297,8 @@ impl Report {
                     exact_ms: l.exact_ms,
                     batch_frames_per_s: l.batch_frames_per_s,
                     threads: l.threads,
+                    paper_ms: l.paper_ms,
+                    paper_batch_frames_per_s: l.paper_batch_frames_per_s,
                 });
                 n += 1;
             }
@@ -855,18 +867,26 @@ pub fn render_markdown(report: &Report) -> String {
         s.push_str("Not measured yet.\n");
     } else {
         s.push_str(&format!(
-            "`fcc bench` on synthetic {} x {} scenes, release build, exact merging. The paper's \
-             CPU implementation (Table III): {} s to {} s per frame.\n\n",
+            "`fcc bench` on synthetic {} x {} scenes, release build: milliseconds per frame on \
+             one thread, and frames per second of a batch on `threads` threads (speed-up: batch rate \
+             over the one-thread rate), for `exact` merging and the published `paper` merge. \
+             The paper's CPU implementation (Table III): {} s to {} s per frame.\n\n",
             b.rows, b.cols, PAPER_CPU_S_PER_FRAME[0], PAPER_CPU_S_PER_FRAME[1]
         ));
-        s.push_str("| K | ms / frame (1 thread) | batch frames/s | threads |\n|--:|--:|--:|--:|\n");
+        s.push_str(
+            "| K | exact ms / frame (1 thread) | exact batch frames/s | speed-up | paper ms / frame \
+             (1 thread) | paper batch frames/s | threads |\n|--:|--:|--:|--:|--:|--:|--:|\n",
+        );
         for row in &report.rows {
             if let Some(g) = &row.golden {
                 s.push_str(&format!(
-                    "| {} | {:.2} | {:.0} | {} |\n",
+                    "| {} | {:.2} | {:.0} | {:.2} x | {} | {} | {} |\n",
                     row.fsize,
                     g.exact_ms,
                     g.batch_frames_per_s,
+                    g.batch_frames_per_s * g.exact_ms / 1e3,
+                    opt(g.paper_ms, |m| format!("{m:.2}")),
+                    opt(g.paper_batch_frames_per_s, |f| format!("{f:.0}")),
                     opt(g.threads, |t| t.to_string())
                 ));
             }
@@ -1136,7 +1156,10 @@ mod tests {
             ),
             "{md}"
         );
-        assert!(md.contains("| 7 | 12.50 | 160 | 2 |"), "{md}");
+        assert!(
+            md.contains("| 7 | 12.50 | 160 | 2.00 x | 11.00 | – | 2 |"),
+            "{md}"
+        );
         assert!(
             md.contains("| Cycles per frame (worst synthetic scene) | <= 170,394 | 150,000 | met, 20,394 under (12.0 %) |"),
             "{md}"
