@@ -11,6 +11,7 @@ in that file); a failure names the signal, the cycle and the value.
 """
 
 import json
+import logging
 import os
 import random
 
@@ -96,6 +97,9 @@ class Bench:
             AxiStreamBus.from_prefix(dut, "s_axis"), dut.clk, dut.rst, reset_active_level=True, byte_size=64
         )
         self.sink = AxiStreamSink(AxiStreamBus.from_prefix(dut, "m_axis"), dut.clk, dut.rst, reset_active_level=True)
+        # Not every frame's contents in the log.
+        self.source.log.setLevel(logging.WARNING)
+        self.sink.log.setLevel(logging.WARNING)
         self.joins = {}
 
     async def reset(self, cycles=4):

@@ -109,10 +109,16 @@ fn directed_random_protocol(fsize: usize) {
         "after late tlast",
     );
     assert!(!run.frame_error);
-    // Reset in the middle of a frame, then a clean frame.
+    // Reset in the middle of a frame, then a clean frame: its status, joins
+    // included, is that frame's alone (reset clears the joins counter).
+    let clean = check(&mut d, &frames::comb(&p), &Drive::default(), "before reset");
     d.feed_partial(&f, p.pixels() / 2, 1_000_000).unwrap();
     d.reset(3);
-    check(&mut d, &frames::comb(&p), &Drive::default(), "after reset");
+    let after = check(&mut d, &frames::comb(&p), &Drive::default(), "after reset");
+    assert_eq!(
+        after.joins, clean.joins,
+        "fsize {fsize}: status_joins after a reset in the middle of a frame counts the abandoned frame"
+    );
 }
 
 fn scenes(fsize: usize) {
