@@ -708,9 +708,7 @@ pub fn render_markdown(report: &Report) -> String {
         "Configuration: {} x {} range image, th_H = {} m, th_V = {} m, {}-bit labels, \
          {} labels per output beat, XDC clock {} MHz. Synthesis: {}, \
          `synth_xilinx -family xc7 -flatten -noiopad -noclkbuf`. \
-         How each number is measured: [results-method.md](results-method.md). \
-         Line and toggle coverage of the Verilator regression, per block: \
-         [coverage.md](coverage.md) (`bash sim/coverage.sh`).\n\n",
+         How each number is measured: [results-method.md](results-method.md).\n\n",
         b.rows,
         b.cols,
         b.th_h,
