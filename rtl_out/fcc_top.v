@@ -9228,6 +9228,7 @@ module fcc_merge_table(clk,rst,jv,ja,jb,jsame,jtake,init_busy,union_idle,flat_st
             f3v$d = 1'b0;
             f4v$d = 1'b0;
             infl$d = zero4;
+            par$d = 1'b0;
         end
     end
 
@@ -21562,7 +21563,7 @@ module fcc_sort_net(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit
         if (jpush) begin
             joins_q$d = joins_q$q + one24;
         end
-        if (clear) begin
+        if (clear | rst) begin
             joins_q$d = zero24;
         end
         jv = jq$valid;

@@ -1,9 +1,16 @@
 // C ABI around the Verilator model of fcc_top, loaded at run time by the
 // fcc-sim crate. One call advances one clock cycle.
+#include <atomic>
 #include <cstdint>
+#include <cstdlib>
+#include <string>
+#include <unistd.h>
 
 #include "Vfcc_top.h"
 #include "verilated.h"
+#if VM_COVERAGE
+#include "verilated_cov.h"
+#endif
 
 extern "C" {
 
@@ -71,6 +78,16 @@ void fcc_free(void* p) {
     FccModel* m = static_cast<FccModel*>(p);
     if (m == nullptr) return;
     m->top->final();
+#if VM_COVERAGE
+    // Coverage build (FCC_SIM_COVERAGE set when the model was built): one
+    // file of line and toggle counts per simulated instance.
+    if (const char* dir = std::getenv("FCC_SIM_COVERAGE")) {
+        static std::atomic<unsigned> serial{0};
+        std::string path = std::string(dir) + "/fcc-" + std::to_string(getpid()) + "-" +
+                           std::to_string(serial++) + ".dat";
+        m->ctx.coveragep()->write(path.c_str());
+    }
+#endif
     delete m->top;
     delete m;
 }

@@ -8,6 +8,11 @@
 //! directory that is renamed into place, so concurrent builders never see a
 //! half-built model. The cache root is `$FCC_SIM_CACHE`, else
 //! `$CARGO_TARGET_DIR/fcc-sim-cache`, else `target/fcc-sim-cache` in the workspace.
+//!
+//! With `FCC_SIM_COVERAGE=<dir>` the models are built with Verilator's line
+//! and toggle coverage (cached apart from the plain ones) and every simulated
+//! instance writes its counts to `<dir>/fcc-<pid>-<n>.dat` when dropped
+//! (`sim/coverage.sh` runs the regression so and summarises per block).
 
 use std::collections::HashMap;
 use std::ffi::c_void;
@@ -137,6 +142,13 @@ impl Drop for Dut {
     }
 }
 
+/// The directory for coverage counts (`FCC_SIM_COVERAGE`), created if needed.
+pub fn coverage_dir() -> Option<PathBuf> {
+    let dir = PathBuf::from(std::env::var_os("FCC_SIM_COVERAGE")?);
+    let _ = std::fs::create_dir_all(&dir);
+    Some(dir)
+}
+
 /// Where built models are kept.
 pub fn cache_root() -> PathBuf {
     if let Some(dir) = std::env::var_os("FCC_SIM_CACHE") {
@@ -169,10 +181,12 @@ pub fn load(p: &FccParams) -> Result<Arc<Model>, SimError> {
     // key is only known after generation.
     let mut map = models.lock().unwrap_or_else(|e| e.into_inner());
     let gen = fcc_rtl::generate(p)?;
+    let cov = coverage_dir().is_some();
     let key = format!(
-        "{}-{:016x}",
+        "{}-{:016x}{}",
         p.hash(),
-        fnv(&format!("{}{SHIM}", gen.verilog))
+        fnv(&format!("{}{SHIM}", gen.verilog)),
+        if cov { "-cov" } else { "" }
     );
     if let Some(m) = map.get(&key) {
         return Ok(m.clone());
@@ -189,6 +203,7 @@ pub fn load(p: &FccParams) -> Result<Arc<Model>, SimError> {
                 top: fcc_rtl::TOP_MODULE,
                 sources: &["fcc_lint.vlt", "fcc_top.v"],
                 lib: LIB_NAME,
+                coverage: cov,
             },
         )?;
     }
@@ -271,6 +286,8 @@ pub(crate) struct Shim<'a> {
     pub top: &'a str,
     pub sources: &'a [&'a str],
     pub lib: &'a str,
+    /// Verilator line and toggle coverage (`FCC_SIM_COVERAGE`).
+    pub coverage: bool,
 }
 
 /// Write `files` and the shim into a private directory, verilate and link
@@ -297,9 +314,22 @@ pub(crate) fn build(files: &[(&str, &str)], dir: &Path, shim: &Shim) -> Result<(
             .current_dir(&tmp)
             .args(["--cc", "--build", "-j", &jobs, "-Wno-fatal", "-O3"])
             .args(["--x-assign", "fast", "--x-initial", "fast", "--noassert"])
+            .args(if shim.coverage {
+                &["--coverage-line", "--coverage-toggle"][..]
+            } else {
+                &[][..]
+            })
             .args(["-CFLAGS", "-fPIC -O1", "--top-module", shim.top])
             .args(["-Mdir", "obj"])
-            .args(shim.sources),
+            // Coverage points name their file: an absolute path lets the
+            // summary find the source (after the rename, without `.tmp-<pid>`).
+            .args(shim.sources.iter().map(|s| {
+                if shim.coverage && s.ends_with(".v") {
+                    tmp.join(s)
+                } else {
+                    PathBuf::from(s)
+                }
+            })),
         "verilator",
     )?;
     let vroot = Command::new("verilator")
@@ -313,9 +343,13 @@ pub(crate) fn build(files: &[(&str, &str)], dir: &Path, shim: &Shim) -> Result<(
     let vroot = PathBuf::from(String::from_utf8_lossy(&vroot.stdout).trim());
     let inc = vroot.join("include");
     let cxx = std::env::var("CXX").unwrap_or_else(|_| "c++".to_string());
+    let mut link = Command::new(&cxx);
+    if shim.coverage {
+        link.arg("-DVM_COVERAGE=1")
+            .arg(inc.join("verilated_cov.cpp"));
+    }
     run(
-        Command::new(&cxx)
-            .current_dir(&tmp)
+        link.current_dir(&tmp)
             .args(["-shared", "-fPIC", "-O1", "-std=c++17", "-Iobj"])
             .arg(format!("-I{}", inc.display()))
             .arg(format!("-I{}", inc.join("vltstd").display()))

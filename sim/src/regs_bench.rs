@@ -98,6 +98,7 @@ pub fn load_regs(p: &FccParams) -> Result<Arc<RegsModel>, SimError> {
                 top: fcc_rtl::REGS_MODULE,
                 sources: &["fcc_regs.vlt", "fcc_regs.v"],
                 lib: LIB_NAME,
+                coverage: false,
             },
         )?;
     }

@@ -9,6 +9,7 @@
 use fcc_golden::Frame;
 use fcc_params::FccParams;
 use fcc_rtl::regmap::{bits, offset};
+use fcc_sim::model::FccIn;
 use fcc_sim::{
     compare, expected, frames, load, run_and_check, AxilMaster, Drive, Dut, FrameRun, Tlast,
 };
@@ -112,10 +113,16 @@ fn directed_random_protocol(fsize: usize) {
         "after late tlast",
     );
     assert!(!run.frame_error);
-    // Reset in the middle of a frame, then a clean frame.
+    // Reset in the middle of a frame, then a clean frame: its status, joins
+    // included, is that frame's alone (reset clears the joins counter).
+    let clean = check(&mut d, &frames::comb(&p), &Drive::default(), "before reset");
     d.feed_partial(&f, p.pixels() / 2, 1_000_000).unwrap();
     d.reset(3);
-    check(&mut d, &frames::comb(&p), &Drive::default(), "after reset");
+    let after = check(&mut d, &frames::comb(&p), &Drive::default(), "after reset");
+    assert_eq!(
+        after.joins, clean.joins,
+        "fsize {fsize}: status_joins after a reset in the middle of a frame counts the abandoned frame"
+    );
     // The same with CONTROL.SOFT_RESET through the registers: the frame is
     // abandoned, the registers keep their values, the next frame is clean.
     d.feed_partial(&f, p.pixels() / 3, 1_000_000).unwrap();
@@ -253,6 +260,53 @@ per_fsize! {
     7 => fsize7_directed_random_protocol, fsize7_scenes_64x2048;
     9 => fsize9_directed_random_protocol, fsize9_scenes_64x2048;
     11 => fsize11_directed_random_protocol, fsize11_scenes_64x2048;
+}
+
+/// A reset in every state of the top-level state machine and of the merge
+/// table: table initialisation, idle before the first pixel, the first
+/// pixels, the middle of the input, draining after the last pixel, the
+/// read-back with the sink stalled and with it running. After each, a clean
+/// frame must give the golden labels and the `status_joins` of a clean run.
+#[test]
+fn reset_in_every_state_of_the_top_state_machine() {
+    let p = small(3);
+    let mut d = dut(&p);
+    let f = frames::random(&p, 91);
+    let clean = check(&mut d, &frames::comb(&p), &Drive::default(), "clean comb");
+    let n = p.pixels();
+    let init = 1u64 << p.label_bits;
+    // (state, beats fed, then cycles with the sink stalled, then with it ready)
+    let points: [(&str, usize, u64, u64); 7] = [
+        ("table initialisation", 0, 10, 0),
+        ("idle before the first pixel", 0, init + 50, 0),
+        ("the first pixels", 5, 0, 0),
+        ("the middle of the input", n / 2, 0, 0),
+        ("drain after the last pixel", n, 1, 0),
+        ("read-back with the sink stalled", n, 400, 0),
+        ("read-back with the sink ready", n, 0, 300),
+    ];
+    for (state, beats, stalled, ready) in points {
+        d.reset(3);
+        d.feed_partial(&f, beats, 1_000_000).unwrap();
+        for _ in 0..stalled {
+            d.step(&FccIn::default());
+        }
+        for _ in 0..ready {
+            d.step(&FccIn {
+                m_tready: 1,
+                ..Default::default()
+            });
+        }
+        d.reset(3);
+        let what = format!("comb after a reset during {state}");
+        let run = check(&mut d, &frames::comb(&p), &Drive::default(), &what);
+        assert_eq!(
+            run.joins, clean.joins,
+            "{what}: status_joins {} != {} of a clean run",
+            run.joins, clean.joins
+        );
+        assert!(!run.frame_error, "{what}: frame_error set");
+    }
 }
 
 #[test]

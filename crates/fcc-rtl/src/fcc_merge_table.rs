@@ -526,6 +526,9 @@ impl Logic for FccMergeTable {
             self.f3v.d.next = false;
             self.f4v.d.next = false;
             self.infl.d.next = self.zero4.val();
+            // The slot phase has a reset of its own: nothing may rely on a
+            // flip-flop's power-up value (4-state simulation, reset-only flows).
+            self.par.d.next = false;
         }
     }
 }

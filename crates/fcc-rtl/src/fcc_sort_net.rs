@@ -681,7 +681,9 @@ impl Logic for FccSortNet {
         if self.jpush.val() {
             self.joins_q.d.next = self.joins_q.q.val() + self.one24.val();
         }
-        if self.clear.val() {
+        // Cleared at the end of a read-back and by reset, so that a frame
+        // abandoned by a reset does not count in the next frame's joins.
+        if self.clear.val() | self.rst.val() {
             self.joins_q.d.next = self.zero24.val();
         }
         self.jv.next = self.jq.valid.val();

@@ -1,0 +1,307 @@
+#!/usr/bin/env python3
+"""The cocotb bench of the generated `fcc_top` on Icarus Verilog.
+
+For every configuration (16 x 256, each K, 8..10 label bits) this
+1. generates the RTL with `fcc gen`, and a copy with every `initial` block
+   removed (flip-flops start as X: reset alone must bring the core up);
+2. writes the test frames as `.npy` and gets their expected labels and status
+   from `fcc cluster` (the golden model);
+3. simulates both variants with cocotb (`test_fcc_top.py`), several at once.
+
+Usage (from the repository root, in the virtual environment of
+`sim/cocotb/requirements.txt`):
+
+    python sim/cocotb/run_bench.py --fcc target/release/fcc [--fsize 3,7] [--jobs 2]
+
+It ends with one line `N passed, M failed` and exits non-zero on a failure.
+"""
+
+import argparse
+import json
+import os
+import re
+import resource
+import shutil
+import subprocess
+import sys
+import time
+from concurrent.futures import ThreadPoolExecutor
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+
+import frames as fr  # noqa: E402
+
+ROWS = 16
+COLS = 256
+TH_H = 0.5
+TH_V = 1.0
+# (label bits, labels per beat) of each K: every K, 8..10 label bits, and
+# every output width.
+CONFIGS = {3: (8, 1), 5: (9, 2), 7: (10, 4), 9: (9, 2), 11: (8, 4)}
+VARIANTS = ("generated", "reset_only")
+ALL_CASES = (
+    "empty",
+    "one point",
+    "all one cluster",
+    "label overflow",
+    "random",
+    "early tlast",
+    "late tlast",
+    "back to back",
+    "reset in the middle of a frame",
+)
+# The cases each configuration runs, per variant. Icarus is slow on this
+# design and slower the larger K (measured CPU per cycle: K = 3 about 1 ms,
+# K = 11 about 10 ms), so K = 3 and 5 run every case as generated, the larger
+# K a share of them, and the reset-only copies the cases that need the union
+# engine and a reset in the middle of a frame (the seeded random frame first:
+# its clean `status_joins` is the reference after the reset).
+CASES = {
+    3: {"generated": ALL_CASES, "reset_only": ("all one cluster", "random", "back to back", "reset in the middle of a frame")},
+    5: {"generated": ALL_CASES, "reset_only": ("random", "reset in the middle of a frame")},
+    7: {"generated": ("all one cluster", "label overflow", "random", "early tlast", "reset in the middle of a frame"),
+        "reset_only": ("random", "reset in the middle of a frame")},
+    9: {"generated": ("label overflow", "random", "late tlast"), "reset_only": ("random", "reset in the middle of a frame")},
+    11: {"generated": ("label overflow", "random"), "reset_only": ("random", "reset in the middle of a frame")},
+}
+
+
+def log(msg):
+    print(msg, flush=True)
+
+
+def run(cmd, **kw):
+    r = subprocess.run(cmd, capture_output=True, text=True, **kw)
+    if r.returncode != 0:
+        raise RuntimeError(f"{' '.join(map(str, cmd))} failed ({r.returncode}):\n{r.stdout}\n{r.stderr}")
+    return r.stdout
+
+
+def strip_initial(text):
+    """Remove every `initial begin ... end` block (the generator's power-up values)."""
+    out, n = re.subn(r"^[ \t]*initial[ \t]+begin\b.*?^[ \t]*end\b[^\n]*\n", "", text, flags=re.M | re.S)
+    if n == 0 or re.search(r"\binitial\b", out):
+        raise RuntimeError(f"could not strip the initial blocks ({n} removed, some left)")
+    return out, n
+
+
+def cases(k, rows, cols):
+    """The frames (name -> pixels, tlast, extra beats) and the cases of one configuration."""
+    seed = 1000 * k
+    rnd = [fr.random_frame(rows, cols, seed + i) for i in range(4)]
+    frames = {
+        "empty": (fr.empty(rows, cols), "normal"),
+        "one_point": (fr.one_point(rows, cols), "normal"),
+        "one_cluster": (fr.one_cluster(rows, cols), "normal"),
+        "label_overflow": (fr.label_overflow(rows, cols), "normal"),
+        f"random_{seed}": (rnd[0], "normal"),
+        f"random_{seed + 1}_early_tlast": (rnd[1], "early"),
+        f"random_{seed + 2}_late_tlast": (rnd[2], "late"),
+        f"random_{seed + 3}": (rnd[3], "normal"),
+    }
+    cs = [
+        ("empty", ["empty"], 0.0, 0.0),
+        ("one point", ["one_point"], 0.3, 0.3),
+        ("all one cluster", ["one_cluster"], 0.1, 0.6),
+        ("label overflow", ["label_overflow"], 0.0, 0.5),
+        ("random", [f"random_{seed}"], 0.3, 0.3),
+        ("early tlast", [f"random_{seed + 1}_early_tlast"], 0.2, 0.2),
+        ("late tlast", [f"random_{seed + 2}_late_tlast"], 0.0, 0.4),
+        ("back to back", [f"random_{seed + 3}", "one_cluster", "empty"], 0.0, 0.0),
+    ]
+    out = [
+        {"kind": "frames", "name": n, "frames": f, "gap": g, "backpressure": b, "seed": seed + i, "tlast": frames[f[0]][1]}
+        for i, (n, f, g, b) in enumerate(cs)
+    ]
+    out.append(
+        {
+            "kind": "reset_mid_frame",
+            "name": "reset in the middle of a frame",
+            "frames": [f"random_{seed}"],
+            "gap": 0.1,
+            "backpressure": 0.0,
+            "seed": seed + 99,
+            "tlast": "normal",
+            "reset_after": rows * cols // 2,
+        }
+    )
+    return frames, out
+
+
+def golden(fcc, work, name, pixels, k, bits):
+    """Expected labels and status of one frame from `fcc cluster`."""
+    npy = work / f"{name}.npy"
+    lab = work / f"{name}.labels.npy"
+    fr.write_npy_f32(npy, ROWS, COLS, pixels)
+    out = run(
+        [
+            fcc, "cluster", "--input", npy, "--output", lab, "--stats",
+            "--fsize", str(k), "--th-h", str(TH_H), "--th-v", str(TH_V), "--label-bits", str(bits),
+        ]
+    )
+    stats = json.loads([line for line in out.splitlines() if line.startswith("{")][-1])
+    return {
+        "labels": fr.read_npy_u32(lab),
+        "clusters": stats["clusters"],
+        "provisional": stats["provisional"],
+        "overflow": stats["overflow"],
+        "unlabelled": stats["unlabelled"],
+    }
+
+
+def prepare(fcc, root, k):
+    """Generate one configuration's RTL (both variants) and its manifest."""
+    bits, lpb = CONFIGS[k]
+    work = root / f"k{k}"
+    if work.exists():
+        shutil.rmtree(work)
+    gen = work / "gen"
+    run(
+        [
+            fcc, "gen", "--fsize", str(k), "--rows", str(ROWS), "--cols", str(COLS),
+            "--th-h", str(TH_H), "--th-v", str(TH_V), "--label-bits", str(bits),
+            "--labels-per-beat", str(lpb), "--out", gen, "--constraints", gen / "xdc",
+            "--scripts", gen / "tcl", "--no-lint",
+        ]
+    )
+    text = (gen / "fcc_top.v").read_text()
+    stripped, n = strip_initial(text)
+    (work / "reset_only").mkdir(parents=True)
+    (work / "reset_only" / "fcc_top.v").write_text(stripped)
+    (work / "generated").mkdir(parents=True)
+    shutil.copy(gen / "fcc_top.v", work / "generated" / "fcc_top.v")
+    frames, cs = cases(k, ROWS, COLS)
+    fdir = work / "frames"
+    fdir.mkdir()
+    flist = []
+    for name, (pixels, tlast) in frames.items():
+        if tlast == "early":
+            at = ROWS * COLS // 3
+            g = golden(fcc, fdir, name, fr.cut_after(pixels, at), k, bits)
+            beats = [fr.beat(p) for p in pixels[: at + 1]]
+        elif tlast == "late":
+            g = golden(fcc, fdir, name, pixels, k, bits)
+            beats = [fr.beat(p) for p in pixels] + [fr.beat((i, 0, 0)) for i in range(7)]
+        else:
+            g = golden(fcc, fdir, name, pixels, k, bits)
+            beats = [fr.beat(p) for p in pixels]
+        flist.append({"name": name, "beats": beats, **g})
+    if not next(f for f in flist if f["name"] == "label_overflow")["overflow"]:
+        raise RuntimeError(f"K={k}: the label_overflow frame does not exhaust {bits}-bit labels")
+    manifest = {
+        "fsize": k,
+        "rows": ROWS,
+        "cols": COLS,
+        "label_bits": bits,
+        "labels_per_beat": lpb,
+        "frames": flist,
+        "cases": cs,
+    }
+    for v in VARIANTS:
+        vc = [c for c in cs if c["name"] in CASES[k][v]]
+        m = dict(manifest, cases=vc, tag=f"K={k} {ROWS}x{COLS} B={bits} L={lpb} {v}")
+        (work / v / "manifest.json").write_text(json.dumps(m))
+    return work, n
+
+
+def simulate(work, variant):
+    """Build and run one variant with cocotb's Icarus runner (in this process)."""
+    from cocotb_tools.runner import get_runner
+
+    vdir = work / variant
+    runner = get_runner("icarus")
+    runner.build(
+        sources=[vdir / "fcc_top.v", HERE / "fcc_bench_top.v"],
+        hdl_toplevel="fcc_bench_top",
+        build_dir=vdir / "build",
+        timescale=("1ns", "1ps"),
+        always=True,
+        log_file=vdir / "build.log",
+    )
+    xml = runner.test(
+        hdl_toplevel="fcc_bench_top",
+        test_module="test_fcc_top",
+        build_dir=vdir / "build",
+        test_dir=vdir,
+        extra_env={"FCC_MANIFEST": str(vdir / "manifest.json")},
+        log_file=vdir / "sim.log",
+    )
+    from cocotb_tools.check_results import get_results
+
+    _, fails = get_results(xml)
+    return fails
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--fcc", required=True, help="the fcc binary")
+    ap.add_argument("--work", default="target/cocotb", help="work directory (default target/cocotb)")
+    ap.add_argument("--fsize", default=",".join(map(str, CONFIGS)), help="K values, comma separated")
+    ap.add_argument("--variants", default=",".join(VARIANTS), help="generated and/or reset_only")
+    ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1, help="simulations at once")
+    ap.add_argument("--one", nargs=2, metavar=("DIR", "VARIANT"), help=argparse.SUPPRESS)
+    a = ap.parse_args()
+    if a.one:
+        fails = simulate(Path(a.one[0]), a.one[1])
+        ru = [resource.getrusage(w) for w in (resource.RUSAGE_SELF, resource.RUSAGE_CHILDREN)]
+        print(f"cpu={sum(r.ru_utime + r.ru_stime for r in ru):.1f}", flush=True)
+        sys.exit(1 if fails else 0)
+    for tool in ("iverilog", "vvp"):
+        if shutil.which(tool) is None:
+            sys.exit(f"{tool} not found: install Icarus Verilog (Debian: apt-get install iverilog)")
+    fcc = str(Path(a.fcc).resolve())
+    root = Path(a.work).resolve()
+    ks = [int(x) for x in a.fsize.split(",") if x]
+    variants = [v for v in a.variants.split(",") if v]
+    for k in ks:
+        if k not in CONFIGS:
+            sys.exit(f"--fsize {k}: the bench has configurations for K in {sorted(CONFIGS)}")
+    for v in variants:
+        if v not in VARIANTS:
+            sys.exit(f"--variants {v}: expected one of {', '.join(VARIANTS)}")
+    t0 = time.time()
+    jobs = []
+    # Largest K first: the longest simulations start first.
+    for k in sorted(ks, reverse=True):
+        work, n = prepare(fcc, root, k)
+        log(f"K={k}: RTL generated ({n} initial blocks stripped for reset_only), golden labels from fcc cluster")
+        jobs += [(k, work, v) for v in variants]
+
+    def one(job):
+        k, work, v = job
+        t = time.time()
+        r = subprocess.run(
+            [sys.executable, str(Path(__file__).resolve()), "--fcc", fcc, "--one", str(work), v],
+            capture_output=True,
+            text=True,
+        )
+        dt = time.time() - t
+        ok = r.returncode == 0
+        cpu = next((ln[4:] for ln in r.stdout.splitlines() if ln.startswith("cpu=")), "?")
+        summary = ""
+        sim_log = work / v / "sim.log"
+        if sim_log.exists():
+            lines = sim_log.read_text(errors="replace").splitlines()
+            if ok:
+                summary = next((ln.strip() for ln in reversed(lines) if "cases," in ln), "")
+            else:
+                bad = [ln for ln in lines if "Error" in ln or "FAIL" in ln or "X/Z" in ln or "mismatch" in ln]
+                summary = "\n    ".join(bad[-12:]) or "\n    ".join(lines[-20:])
+        else:
+            summary = (r.stdout + r.stderr)[-3000:]
+        log(f"K={k} {v}: {'pass' if ok else 'FAIL'} in {dt:.0f} s ({cpu} s CPU)  {summary}")
+        return ok
+
+    with ThreadPoolExecutor(max_workers=max(1, a.jobs)) as ex:
+        results = list(ex.map(one, jobs))
+    passed = sum(results)
+    failed = len(results) - passed
+    log(f"cocotb bench on Icarus: {len(results)} simulations in {time.time() - t0:.0f} s")
+    log(f"{passed} passed, {failed} failed")
+    sys.exit(1 if failed else 0)
+
+
+if __name__ == "__main__":
+    main()

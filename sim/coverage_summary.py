@@ -1,0 +1,195 @@
+#!/usr/bin/env python3
+"""Per-block summary of Verilator line and toggle coverage of `fcc_top`.
+
+Reads the `.dat` files that the coverage build of the Verilator regression
+writes (`FCC_SIM_COVERAGE=<dir>`, see sim/coverage.sh) and prints Markdown:
+one row per block (the generator's top-level blocks: `fcc_top`'s own logic,
+`fcc_intra`, `fcc_window`, `fcc_dist_tree`, `fcc_sort_net`, `fcc_merge_table`,
+`fcc_label_update`), then, per block, the lines and the signals that no test
+reached.
+
+A coverage point is counted once per block, over every instance and every
+configuration the regression simulates: a line of a module (or a bit of a
+signal toggling 0->1 and 1->0) counts as reached when any instance of any
+configuration reached it. Submodules (`fcc_dist_tree__units__3__sq`, ...)
+belong to the block named before their first `__`.
+
+Usage: python3 sim/coverage_summary.py DIR [--command TEXT] [--max-list N]
+"""
+
+import argparse
+import collections
+import glob
+import os
+import re
+import sys
+
+BLOCK_ORDER = [
+    "fcc_top",
+    "fcc_intra",
+    "fcc_window",
+    "fcc_dist_tree",
+    "fcc_sort_net",
+    "fcc_merge_table",
+    "fcc_label_update",
+]
+
+
+def parse_dat(path):
+    """Yield (fields, count) of every coverage point of one .dat file."""
+    with open(path, encoding="latin1") as fh:
+        for line in fh:
+            if not line.startswith("C '"):
+                continue
+            end = line.rindex("'")
+            body = line[3:end]
+            count = int(line[end + 1 :].strip())
+            fields = {}
+            for part in body.split("\x01"):
+                if "\x02" in part:
+                    k, v = part.split("\x02", 1)
+                    fields[k] = v
+            yield fields, count
+
+
+class Sources:
+    """The generated Verilog each point's file name refers to (models are built
+    in `<key>.tmp-<pid>` and renamed to `<key>`), for module-relative line
+    numbers (equal across configurations) and the source text."""
+
+    def __init__(self):
+        self.files = {}
+
+    def get(self, fpath):
+        if fpath not in self.files:
+            real = re.sub(r"\.tmp-\d+(?=/)", "", fpath)
+            lines, starts = None, {}
+            try:
+                with open(real, encoding="utf-8", errors="replace") as fh:
+                    lines = fh.read().splitlines()
+                for i, ln in enumerate(lines, 1):
+                    m = re.match(r"module\s+([A-Za-z0-9_$]+)", ln)
+                    if m:
+                        starts[m.group(1)] = i
+            except OSError:
+                pass
+            self.files[fpath] = (lines, starts)
+        return self.files[fpath]
+
+    def locate(self, fpath, module, line):
+        """(line relative to the module's `module` line or the raw line, text)."""
+        lines, starts = self.get(fpath)
+        if lines is None or module not in starts:
+            return line, ""
+        text = lines[line - 1].strip() if 0 < line <= len(lines) else ""
+        return line - starts[module], text
+
+
+def block_of(module):
+    return module.split("__", 1)[0]
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("dir", help="directory of the .dat files")
+    ap.add_argument("--command", default="bash sim/coverage.sh", help="command named in the header")
+    ap.add_argument("--max-list", type=int, default=12, help="unreached items listed per block and kind")
+    a = ap.parse_args()
+    files = sorted(glob.glob(os.path.join(a.dir, "*.dat")))
+    if not files:
+        sys.exit(f"{a.dir}: no coverage .dat files (run the regression with FCC_SIM_COVERAGE={a.dir})")
+    # (kind, block, key) -> reached?  key ignores the instance path.
+    points = {}
+    source = {}  # (module, relative line) -> source text, for the unreached-lines list
+    srcs = Sources()
+    for path in files:
+        for f, count in parse_dat(path):
+            page = f.get("page", "")
+            if "/" not in page:
+                continue
+            kind, module = page.split("/", 1)
+            kind = {"v_line": "line", "v_branch": "line", "v_toggle": "toggle"}.get(kind)
+            if kind is None:
+                continue
+            blk = block_of(module)
+            if kind == "line":
+                rel, text = srcs.locate(f.get("f", ""), module, int(f.get("l", "0")))
+                key = (module, rel, f.get("n", ""), f.get("o", ""))
+                source.setdefault((module, rel), text)
+            else:
+                key = (module, f.get("o", ""))
+            k = (kind, blk, key)
+            points[k] = points.get(k, False) or count > 0
+    stats = collections.defaultdict(lambda: [0, 0, 0, 0])  # line hit, line all, toggle hit, toggle all
+    missed = collections.defaultdict(list)
+    for (kind, blk, key), hit in points.items():
+        s = stats[blk]
+        if kind == "line":
+            s[1] += 1
+            s[0] += int(hit)
+        else:
+            s[3] += 1
+            s[2] += int(hit)
+        if not hit:
+            missed[(kind, blk)].append(key)
+    blocks = [b for b in BLOCK_ORDER if b in stats] + sorted(b for b in stats if b not in BLOCK_ORDER)
+
+    def pct(h, n):
+        return "-" if n == 0 else f"{100.0 * h / n:.1f} %"
+
+    out = []
+    out.append(f"<!-- Generated by `{a.command}`. Do not edit: regenerate. -->\n")
+    out.append("# Coverage of the Verilator regression\n")
+    out.append(
+        "Verilator line and toggle coverage of the generated `fcc_top` over `cargo test -p fcc-sim` "
+        f"({len(files)} simulated instances, every configuration the regression builds). A point counts "
+        "once per block: reached when any instance of any configuration reached it. A toggle point is one "
+        "bit of one signal in one direction (0->1 or 1->0).\n"
+    )
+    out.append("| block | lines reached | line coverage | toggles reached | toggle coverage |")
+    out.append("|---|---:|---:|---:|---:|")
+    tot = [0, 0, 0, 0]
+    for b in blocks:
+        s = stats[b]
+        tot = [x + y for x, y in zip(tot, s)]
+        out.append(f"| `{b}` | {s[0]} / {s[1]} | {pct(s[0], s[1])} | {s[2]} / {s[3]} | {pct(s[2], s[3])} |")
+    out.append(f"| all | {tot[0]} / {tot[1]} | {pct(tot[0], tot[1])} | {tot[2]} / {tot[3]} | {pct(tot[2], tot[3])} |")
+    out.append("")
+    out.append("## Not reached, per block\n")
+    out.append(
+        "Lines are given as `module +N`: N lines below the `module` line of that module in the generated "
+        "`fcc_top.v` (the same for every configuration), with the Verilator point type and the source line.\n"
+    )
+    for b in blocks:
+        lines = sorted(missed.get(("line", b), []), key=lambda k: (k[0], k[1]))
+        toggles = missed.get(("toggle", b), [])
+        out.append(f"### `{b}`\n")
+        if not lines and not toggles:
+            out.append("Everything reached.\n")
+            continue
+        if lines:
+            out.append(f"{len(lines)} line points never reached:\n")
+            for m, ln, _n, o in lines[: a.max_list]:
+                text = source.get((m, ln), "").strip()
+                what = f" {o}" if o else ""
+                out.append(f"- `{m}` +{ln}{what}" + (f": `{text}`" if text else ""))
+            if len(lines) > a.max_list:
+                out.append(f"- ... and {len(lines) - a.max_list} more")
+            out.append("")
+        if toggles:
+            # Group bits of one signal: name[3]:0->1 -> name
+            sig = collections.Counter()
+            for m, o in toggles:
+                name = re.sub(r"\[\d+\]", "", o.split(":")[0])
+                sig[name] += 1
+            out.append(f"{len(toggles)} toggle points never reached, in {len(sig)} signals; the most:\n")
+            for name, n in sig.most_common(a.max_list):
+                out.append(f"- `{name}`: {n}")
+            if len(sig) > a.max_list:
+                out.append(f"- ... and {len(sig) - a.max_list} more signals")
+            out.append("")
+    print("\n".join(out))
+
+
+if __name__ == "__main__":
+    main()
