@@ -30,7 +30,7 @@ pub mod reference;
 
 pub use frame::{dist2, quantize, quantize_point, Frame, Point};
 pub use merge::{renumber, ExactMerge, PaperMerge};
-pub use pass1::{pass1, Pass1};
+pub use pass1::{pass1, runs_needed, Pass1};
 pub use pass2::{pass2, JoinSink};
 
 use fcc_params::{FccParams, ParamError};

@@ -15,7 +15,7 @@ use std::path::PathBuf;
 
 pub use check::{compare, expected};
 pub use drive::{frame_beats, Drive, FrameRun, Tlast};
-pub use model::{load, Dut, Model};
+pub use model::{cache_root, is_cached, load, Dut, Model};
 
 /// Everything that can go wrong in a simulation.
 #[derive(Debug, thiserror::Error)]

@@ -140,6 +140,24 @@ fn fnv(text: &str) -> u64 {
     h
 }
 
+fn cache_key(p: &FccParams, gen: &fcc_rtl::Generated) -> String {
+    format!(
+        "{}-{:016x}",
+        p.hash(),
+        fnv(&format!("{}{SHIM}", gen.verilog))
+    )
+}
+
+/// Whether the model for `p` is built and cached ([`load`] is then quick;
+/// otherwise it runs Verilator and the C++ compiler, minutes).
+pub fn is_cached(p: &FccParams) -> Result<bool, SimError> {
+    let gen = fcc_rtl::generate(p)?;
+    Ok(cache_root()
+        .join(cache_key(p, &gen))
+        .join(LIB_NAME)
+        .exists())
+}
+
 /// Load the model for `p`, building it first if the cache lacks it. Models
 /// are shared within the process.
 pub fn load(p: &FccParams) -> Result<Arc<Model>, SimError> {
@@ -149,11 +167,7 @@ pub fn load(p: &FccParams) -> Result<Arc<Model>, SimError> {
     // key is only known after generation.
     let mut map = models.lock().unwrap_or_else(|e| e.into_inner());
     let gen = fcc_rtl::generate(p)?;
-    let key = format!(
-        "{}-{:016x}",
-        p.hash(),
-        fnv(&format!("{}{SHIM}", gen.verilog))
-    );
+    let key = cache_key(p, &gen);
     if let Some(m) = map.get(&key) {
         return Ok(m.clone());
     }
