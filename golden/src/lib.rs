@@ -30,7 +30,7 @@ pub mod reference;
 
 pub use frame::{dist2, quantize, quantize_point, Frame, Point};
 pub use merge::{renumber, ExactMerge, PaperMerge};
-pub use pass1::{pass1, pass1_released, Pass1, Run};
+pub use pass1::{pass1, pass1_released, runs_needed, Pass1, Run};
 pub use pass2::{pass2, pass2_runs, JoinSink};
 
 use fcc_params::{FccParams, ParamError};

@@ -182,3 +182,22 @@ pub(crate) fn label_runs(params: &FccParams, frame: &Frame, ring: RingHandling, 
     out.unlabelled = unlabelled;
     out.points = points;
 }
+
+/// Provisional labels pass 1 would allocate with unlimited labels: the runs
+/// of every row, as [`pass1`] splits them. More than
+/// [`FccParams::max_label`] means label overflow.
+pub fn runs_needed(params: &FccParams, frame: &Frame) -> u64 {
+    let th_sq = params.th_h_sq();
+    let mut runs = 0u64;
+    for row in frame.points.chunks_exact(frame.cols) {
+        let mut prev = None;
+        for p in row.iter().flatten() {
+            let continues = prev.is_some_and(|q| dist2(*p, q) <= th_sq);
+            if !continues {
+                runs += 1;
+            }
+            prev = Some(*p);
+        }
+    }
+    runs
+}

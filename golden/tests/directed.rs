@@ -1,8 +1,8 @@
 //! Hand-worked frames for each pass and for the whole model (spec examples).
 
 use fcc_golden::{
-    cluster, pass1, pass1_released, pass2, reference::reference_labels, renumber, split_components,
-    Frame, GoldenError, JoinSink, MergeMode, PaperMerge,
+    cluster, pass1, pass1_released, pass2, reference::reference_labels, renumber, runs_needed,
+    split_components, Frame, GoldenError, JoinSink, MergeMode, PaperMerge,
 };
 use fcc_params::FccParams;
 
@@ -125,6 +125,30 @@ fn label_overflow_leaves_pixels_unlabelled() {
     assert_eq!(got.labels[2 * 254], 255);
     assert_eq!(got.labels[2 * 255], 0);
     assert_eq!(got.labels, reference_labels(&p, &f));
+}
+
+#[test]
+fn label_overflow_says_how_many_labels_and_bits_would_fit() {
+    // The 300 runs above need 300 labels: 9 bits.
+    let f = grid(&"#.".repeat(300), 0.2);
+    let p = FccParams {
+        label_bits: 8,
+        ..params_for(&f, 3, 0.3, 0.3)
+    };
+    assert_eq!(runs_needed(&p, &f), 300);
+    assert_eq!(FccParams::label_bits_for(runs_needed(&p, &f)), 9);
+    // Without overflow it is exactly what pass 1 allocates.
+    let wide = FccParams {
+        label_bits: 9,
+        ..p.clone()
+    };
+    assert_eq!(
+        runs_needed(&wide, &f),
+        u64::from(pass1(&wide, &f).provisional)
+    );
+    // Empty pixels do not break a run (points 0.05 m apart per column).
+    let f = grid("##..##.#", 0.05);
+    assert_eq!(runs_needed(&params_for(&f, 3, 0.3, 0.3), &f), 1);
 }
 
 #[test]

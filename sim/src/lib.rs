@@ -18,7 +18,7 @@ use std::path::PathBuf;
 pub use axil::{AxilM, AxilMaster, AxilPort, AxilS, WriteOrder};
 pub use check::{compare, expected};
 pub use drive::{frame_beats, Drive, FrameRun, Tlast};
-pub use model::{load, Dut, Model};
+pub use model::{cache_root, is_cached, load, Dut, Model};
 pub use regs_bench::{load_regs, RegsDut, RegsIn, RegsOut};
 
 /// Everything that can go wrong in a simulation.

@@ -172,6 +172,27 @@ pub(crate) fn fnv(text: &str) -> u64 {
     h
 }
 
+/// The cache directory's name: the parameters, the Verilog and the shim, and
+/// whether the model counts coverage.
+fn cache_key(p: &FccParams, gen: &fcc_rtl::Generated) -> String {
+    format!(
+        "{}-{:016x}{}",
+        p.hash(),
+        fnv(&format!("{}{SHIM}", gen.verilog)),
+        if coverage_dir().is_some() { "-cov" } else { "" }
+    )
+}
+
+/// Whether the model for `p` is built and cached ([`load`] is then quick;
+/// otherwise it runs Verilator and the C++ compiler, minutes).
+pub fn is_cached(p: &FccParams) -> Result<bool, SimError> {
+    let gen = fcc_rtl::generate(p)?;
+    Ok(cache_root()
+        .join(cache_key(p, &gen))
+        .join(LIB_NAME)
+        .exists())
+}
+
 /// Load the model for `p`, building it first if the cache lacks it. Models
 /// are shared within the process.
 pub fn load(p: &FccParams) -> Result<Arc<Model>, SimError> {
@@ -181,13 +202,7 @@ pub fn load(p: &FccParams) -> Result<Arc<Model>, SimError> {
     // key is only known after generation.
     let mut map = models.lock().unwrap_or_else(|e| e.into_inner());
     let gen = fcc_rtl::generate(p)?;
-    let cov = coverage_dir().is_some();
-    let key = format!(
-        "{}-{:016x}{}",
-        p.hash(),
-        fnv(&format!("{}{SHIM}", gen.verilog)),
-        if cov { "-cov" } else { "" }
-    );
+    let key = cache_key(p, &gen);
     if let Some(m) = map.get(&key) {
         return Ok(m.clone());
     }
@@ -203,7 +218,7 @@ pub fn load(p: &FccParams) -> Result<Arc<Model>, SimError> {
                 top: fcc_rtl::TOP_MODULE,
                 sources: &["fcc_lint.vlt", "fcc_top.v"],
                 lib: LIB_NAME,
-                coverage: cov,
+                coverage: coverage_dir().is_some(),
             },
         )?;
     }

@@ -441,3 +441,16 @@ fn real_ouster_frames_at_their_own_size() {
         }
     }
 }
+
+/// `fcc sim` says "building" or "loading the cached model" from this.
+#[test]
+fn cache_knows_built_models_from_unbuilt_ones() {
+    let p = small(3);
+    let _ = dut(&p);
+    assert!(fcc_sim::is_cached(&p).unwrap());
+    let never = FccParams {
+        th_h: 0.371,
+        ..small(3)
+    };
+    assert!(!fcc_sim::is_cached(&never).unwrap());
+}

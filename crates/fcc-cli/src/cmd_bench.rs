@@ -14,7 +14,7 @@ use std::time::Instant;
 #[derive(Args, Debug)]
 pub struct BenchArgs {
     /// Filter sizes to measure.
-    #[arg(long, value_delimiter = ',', default_values_t = [3usize, 5, 7, 9, 11])]
+    #[arg(long, num_args = 1.., value_delimiter = ',', allow_negative_numbers = true, default_values_t = [3usize, 5, 7, 9, 11])]
     pub fsize: Vec<usize>,
     /// Synthetic scenes (seeds 0..frames).
     #[arg(long, default_value_t = 8)]
@@ -29,10 +29,10 @@ pub struct BenchArgs {
     #[arg(long, default_value_t = FccParams::default().cols)]
     pub cols: usize,
     /// Beam-dropout probability of the synthetic scenes.
-    #[arg(long, default_value_t = SceneConfig::default().dropout)]
+    #[arg(long, allow_negative_numbers = true, default_value_t = SceneConfig::default().dropout)]
     pub dropout: f64,
     /// Missing-return probability of the synthetic scenes.
-    #[arg(long, default_value_t = SceneConfig::default().missing)]
+    #[arg(long, allow_negative_numbers = true, default_value_t = SceneConfig::default().missing)]
     pub missing: f64,
     /// Threads of the batch run (default: one per core).
     #[arg(long)]
@@ -228,7 +228,7 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
         );
     }
     if let Some(path) = &args.json {
-        std::fs::write(path, serde_json::to_string_pretty(&rows)?)
+        fcc_io::write_atomic(path, serde_json::to_string_pretty(&rows)?.as_bytes())
             .with_context(|| format!("{}: cannot write", path.display()))?;
     }
     Ok(())

@@ -9,7 +9,7 @@ use anyhow::Context;
 use clap::Args;
 use fcc_golden::Frame;
 use fcc_lidar::ground::{detect_ground, GroundParams};
-use fcc_lidar::ouster::{read_capture, DecodeOptions, OusterMetadata, SAMPLE_CAPTURES};
+use fcc_lidar::ouster::{read_capture, sample_dir, DecodeOptions, OusterMetadata, SAMPLE_CAPTURES};
 use fcc_params::FccParams;
 use fcc_scene::{generate, SceneConfig};
 use fcc_sim::{load, run_and_check, Drive, Dut};
@@ -19,14 +19,16 @@ use std::path::{Path, PathBuf};
 #[derive(Args, Debug, Clone)]
 pub struct CyclesArgs {
     /// Filter sizes to measure.
-    #[arg(long, value_delimiter = ',', default_values_t = [3usize, 5, 7, 9, 11])]
+    #[arg(long, num_args = 1.., value_delimiter = ',', allow_negative_numbers = true, default_values_t = [3usize, 5, 7, 9, 11])]
     pub fsize: Vec<usize>,
     /// Synthetic 64 x 2048 scenes per K (seeds 1..=N).
     #[arg(long, default_value_t = 4)]
     pub frames: u64,
-    /// Directory holding the Ouster captures and their metadata (empty string: skip them).
-    #[arg(long, default_value = "crates/fcc-lidar/tests/data")]
-    pub ouster_dir: PathBuf,
+    /// Directory holding the Ouster sample captures and their metadata
+    /// (default: fcc-lidar's tests/data in the source tree `fcc` was built
+    /// from; an empty string skips them).
+    #[arg(long)]
+    pub ouster_dir: Option<PathBuf>,
     /// Write the measurements here as JSON.
     #[arg(long)]
     pub json: Option<PathBuf>,
@@ -95,11 +97,16 @@ pub fn collect(args: &CyclesArgs) -> anyhow::Result<Vec<CycleInput>> {
             Ok(Frame::from_xyz_f32(s.rows, s.cols, &s.xyz))
         })
         .collect::<anyhow::Result<Vec<_>>>()?;
-    let ouster = if args.ouster_dir.as_os_str().is_empty() {
+    let dir = args.ouster_dir.clone().unwrap_or_else(sample_dir);
+    let ouster = if dir.as_os_str().is_empty() {
         Vec::new()
     } else {
-        ouster_frames(&args.ouster_dir)
-            .with_context(|| format!("Ouster captures in {}", args.ouster_dir.display()))?
+        ouster_frames(&dir).with_context(|| {
+            format!(
+                "Ouster sample captures in {} (pass --ouster-dir DIR, or --ouster-dir '' to skip them)",
+                dir.display()
+            )
+        })?
     };
     let mut all = Vec::new();
     for &k in &args.fsize {
@@ -149,7 +156,7 @@ pub fn run(args: &CyclesArgs) -> anyhow::Result<()> {
         );
     }
     if let Some(path) = &args.json {
-        std::fs::write(path, serde_json::to_string_pretty(&all)?)
+        fcc_io::write_atomic(path, serde_json::to_string_pretty(&all)?.as_bytes())
             .with_context(|| format!("{}: cannot write", path.display()))?;
     }
     Ok(())

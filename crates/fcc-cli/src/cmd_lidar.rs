@@ -22,7 +22,7 @@ use fcc_lidar::ouster::{
     explain_no_frames, CaptureStats, CoordFrame, DecodeOptions, OusterFrame, OusterMetadata,
     OusterReader,
 };
-use fcc_lidar::picture::{cluster_colour, render_overview, Overview};
+use fcc_lidar::picture::{cluster_colour, cluster_colours, render_overview, Overview};
 use fcc_lidar::pipeline::{cluster_image, PipelineConfig, PipelineResult};
 use fcc_lidar::projection::{
     project, BackProjection, Projection, ProjectionConfig, VerticalLayout,
@@ -121,10 +121,10 @@ pub struct GroundArgs {
     #[arg(long)]
     pub ground: Option<GroundMethod>,
     /// Steepest rise between consecutive ground returns, degrees (`slope`).
-    #[arg(long, default_value_t = GroundParams::default().max_slope_deg)]
+    #[arg(long, allow_negative_numbers = true, default_value_t = GroundParams::default().max_slope_deg)]
     pub ground_max_slope: f64,
     /// Distance from the ground plane still counted as ground, metres (`plane`).
-    #[arg(long, default_value_t = GroundParams::default().plane_distance_m)]
+    #[arg(long, allow_negative_numbers = true, default_value_t = GroundParams::default().plane_distance_m)]
     pub ground_distance: f64,
 }
 
@@ -224,7 +224,7 @@ pub struct ClusterLidarArgs {
     #[arg(long)]
     pub clusters: Option<PathBuf>,
     /// Half-width of the bird's-eye view, metres (default: from the data).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub bev_extent: Option<f32>,
     /// Print a JSON summary per frame (one line each) on stdout.
     #[arg(long)]
@@ -232,6 +232,77 @@ pub struct ClusterLidarArgs {
     /// Frames clustered in parallel (default: all cores).
     #[arg(long)]
     pub jobs: Option<usize>,
+    /// Make lost points an error: label overflow, coordinates beyond the
+    /// Q7.8 range, points outside the field of view, a capture with no frame.
+    #[arg(long)]
+    pub strict: bool,
+}
+
+impl ClusterLidarArgs {
+    /// Every file the run reads.
+    fn inputs(&self) -> Vec<&Path> {
+        let mut v: Vec<&Path> = self
+            .input
+            .iter()
+            .chain(&self.truth)
+            .map(PathBuf::as_path)
+            .collect();
+        v.extend(self.ouster.meta.as_deref());
+        v.extend(self.projection.beams.as_deref());
+        v.extend(self.velodyne.velodyne_calibration.as_deref());
+        v
+    }
+
+    /// Every output asked for, with its option, for one result (`name`).
+    fn outputs(&self, name: &str, single: bool) -> Vec<(&'static str, PathBuf)> {
+        [
+            ("--png", &self.png),
+            ("--output", &self.output),
+            ("--label", &self.label),
+            ("--ply", &self.ply),
+        ]
+        .into_iter()
+        .filter_map(|(flag, p)| p.as_ref().map(|p| (flag, output_path(p, name, single))))
+        .collect()
+    }
+
+    /// Refuse outputs that would overwrite an input or each other.
+    fn check_outputs(&self, name: &str, single: bool) -> anyhow::Result<()> {
+        let mut outs = self.outputs(name, single);
+        // One table for the whole run, named as given.
+        outs.extend(self.clusters.as_ref().map(|p| ("--clusters", p.clone())));
+        let outs: Vec<(&str, &Path)> = outs.iter().map(|(f, p)| (*f, p.as_path())).collect();
+        fcc_io::check_outputs(self.inputs(), &outs)?;
+        Ok(())
+    }
+}
+
+/// Refuse a `--png` path that does not end in `.png` (only PNG is written).
+pub fn check_png_path(png: Option<&Path>) -> anyhow::Result<()> {
+    if let Some(p) = png {
+        let ext = p.extension().and_then(|e| e.to_str()).unwrap_or("");
+        if !ext.eq_ignore_ascii_case("png") {
+            bail!(
+                "{}: --png writes PNG pictures only; give a name ending in .png",
+                p.display()
+            );
+        }
+    }
+    Ok(())
+}
+
+/// Points a frame lost on its way into the model.
+#[derive(Debug, Clone, Copy, Default)]
+struct Losses {
+    /// Point clouds: points above or below the vertical field of view.
+    outside_fov: usize,
+    /// Point clouds: points that lost their pixel to a nearer point (they
+    /// take a neighbour's label in per-point outputs).
+    pixel_shared: usize,
+    /// Point clouds: points with no pixel (zero or non-finite coordinates).
+    unprojected: usize,
+    /// Points in the input.
+    input_points: usize,
 }
 
 /// A range image ready for clustering, with what came with it.
@@ -249,6 +320,8 @@ struct Item {
     truth_points: Option<Vec<u32>>,
     /// Intensity per input point (point clouds) or per pixel (range images).
     intensity: Option<Vec<f32>>,
+    /// Points lost before the image was made.
+    losses: Losses,
 }
 
 fn stem(path: &Path) -> String {
@@ -298,6 +371,10 @@ fn cloud2_item(
         return Ok(Item {
             name,
             range_image: false,
+            losses: Losses {
+                input_points: image.valid_count(),
+                ..Losses::default()
+            },
             image,
             projection: None,
             truth: None,
@@ -307,9 +384,17 @@ fn cloud2_item(
     }
     let (points, intensity) = c.finite_points();
     let projection = project(&points, proj)?;
+    let unprojected = projection.unprojected_points();
+    let losses = Losses {
+        outside_fov: projection.outside_fov,
+        pixel_shared: points.len() - projection.kept_points() - unprojected,
+        unprojected,
+        input_points: points.len(),
+    };
     Ok(Item {
         name,
         range_image: false,
+        losses,
         image: projection.image.clone(),
         projection: Some((projection, points)),
         truth: None,
@@ -370,6 +455,9 @@ fn is_npy(path: &Path) -> bool {
 fn metadata_for(capture: &Path, meta: Option<&Path>) -> anyhow::Result<OusterMetadata> {
     let path = match meta {
         Some(m) => m.to_path_buf(),
+        None if !capture.exists() => {
+            bail!("{}: no such capture file", capture.display())
+        }
         None => {
             let guess = capture.with_extension("json");
             if !guess.exists() {
@@ -406,6 +494,13 @@ fn npy_image(path: &Path) -> anyhow::Result<RangeImage> {
 fn cloud_item(path: &Path, truth: Option<&Path>, proj: &ProjectionConfig) -> anyhow::Result<Item> {
     let cloud = read_point_cloud(path)?;
     let projection = project(&cloud.points, proj)?;
+    let unprojected = projection.unprojected_points();
+    let losses = Losses {
+        outside_fov: projection.outside_fov,
+        pixel_shared: cloud.points.len() - projection.kept_points() - unprojected,
+        unprojected,
+        input_points: cloud.points.len(),
+    };
     let (truth, truth_points) = match truth {
         Some(t) => {
             let raw = read_label_file(t, Some(cloud.len()))?;
@@ -422,6 +517,7 @@ fn cloud_item(path: &Path, truth: Option<&Path>, proj: &ProjectionConfig) -> any
         truth,
         truth_points,
         intensity: cloud.intensity,
+        losses,
     })
 }
 
@@ -448,6 +544,10 @@ fn npy_item(path: &Path, truth: Option<&Path>) -> anyhow::Result<Item> {
     Ok(Item {
         name: stem(path),
         range_image: true,
+        losses: Losses {
+            input_points: image.valid_count(),
+            ..Losses::default()
+        },
         image,
         projection: None,
         truth,
@@ -480,9 +580,28 @@ struct FrameStats {
     overflow: bool,
     /// Valid pixels left unlabelled by label overflow.
     unlabelled: usize,
+    /// Provisional labels the frame needs (more than 2^B - 1 on overflow).
+    labels_needed: u64,
+    /// Points (not ground) beyond the Q7.8 range (about ±128 m), not clustered.
+    out_of_range: usize,
+    /// Point clouds: input points, points above or below the field of view,
+    /// points that lost their pixel to a nearer point, points with no pixel.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    input_points: Option<usize>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    outside_fov: Option<usize>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pixel_shared: Option<usize>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    unprojected: Option<usize>,
     time_ms: f64,
+    /// PQ, SQ, RQ per pixel of the range image (as `fcc eval` scores).
     #[serde(skip_serializing_if = "Option::is_none")]
     quality: Option<fcc_lidar::eval::Scores>,
+    /// Point clouds: PQ, SQ, RQ per input point (points that shared a pixel
+    /// take their label from the back-projection).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    quality_per_point: Option<fcc_lidar::eval::Scores>,
 }
 
 /// Half-width of the bird's-eye view: the 95th percentile of horizontal
@@ -500,22 +619,87 @@ fn auto_extent(image: &RangeImage) -> f32 {
     ((*v / 10.0).ceil() * 10.0).clamp(10.0, 80.0)
 }
 
+/// What a frame lost, one sentence each: label overflow, points beyond the
+/// Q7.8 range, points outside the field of view.
+fn loss_warnings(item: &Item, out: &PipelineResult) -> Vec<String> {
+    let mut w = Vec::new();
+    let c = &out.clustering;
+    if c.overflow {
+        let bits = fcc_params::FccParams::label_bits_for(out.labels_needed);
+        w.push(format!(
+            "label overflow: {} of {} points left unlabelled; the frame needs {} provisional labels, --label-bits {} has {}; use --label-bits {bits}",
+            c.unlabelled,
+            c.points,
+            out.labels_needed,
+            out.params.label_bits,
+            out.params.max_label(),
+        ));
+    }
+    if out.out_of_range > 0 {
+        w.push(format!(
+            "{} points beyond the Q7.8 coordinate range (about ±128 m) were not clustered",
+            out.out_of_range
+        ));
+    }
+    let l = &item.losses;
+    if l.outside_fov > 0 {
+        w.push(format!(
+            "{} of {} points lie outside the vertical field of view and were squeezed into the top or bottom row ({} points lost their pixel to a nearer one); fit --fov-up/--fov-down or give --beams",
+            l.outside_fov, l.input_points, l.pixel_shared
+        ));
+    }
+    w
+}
+
+/// The caption's note on lost points, empty when none were lost.
+fn loss_caption(out: &PipelineResult) -> String {
+    let mut s = String::new();
+    if out.clustering.overflow {
+        s.push_str(&format!(
+            ", LABEL OVERFLOW: {} POINTS UNLABELLED",
+            out.clustering.unlabelled
+        ));
+    }
+    if out.out_of_range > 0 {
+        s.push_str(&format!(", {} POINTS OUT OF RANGE", out.out_of_range));
+    }
+    s
+}
+
+/// The caption's quality against ground truth, empty without it.
+fn quality_caption(q: Option<&fcc_lidar::eval::Scores>) -> String {
+    q.map(|q| format!(", PQ {:.3} SQ {:.3} RQ {:.3} (PER PIXEL)", q.pq, q.sq, q.rq))
+        .unwrap_or_default()
+}
+
 fn process(
     args: &ClusterLidarArgs,
     cfg: &PipelineConfig,
     item: &Item,
     single: bool,
 ) -> anyhow::Result<(String, Vec<ClusterRow>)> {
+    args.check_outputs(&item.name, single)?;
     let t = Instant::now();
     let out: PipelineResult = cluster_image(&item.image, cfg).with_context(|| item.name.clone())?;
     let time_ms = t.elapsed().as_secs_f64() * 1e3;
-    let mut quality = None;
-    if let Some(truth) = &item.truth {
-        quality = Some(score_frame(&out.labels, truth, &EvalConfig::default())?.scores());
+    let warnings = loss_warnings(item, &out);
+    if args.strict {
+        if let Some(w) = warnings.first() {
+            bail!("{}: {w} (--strict)", item.name);
+        }
     }
+    for w in &warnings {
+        eprintln!("warning: {}: {w}", item.name);
+    }
+    let cloud = item.projection.is_some();
+    let mut wrote: Vec<PathBuf> = Vec::new();
+    let quality = match &item.truth {
+        Some(truth) => Some(score_frame(&out.labels, truth, &EvalConfig::default())?.scores()),
+        None => None,
+    };
     if let Some(p) = &args.png {
         let title = format!(
-            "{}: K={} {}, {} CLUSTERS{}, GROUND {}",
+            "{}: K={} {}, {} CLUSTERS{}, GROUND {}{}{}",
             item.name,
             out.params.fsize,
             if args.model.merge == MergeMode::Exact {
@@ -529,7 +713,9 @@ fn process(
             } else {
                 String::new()
             },
-            cfg.ground.method
+            cfg.ground.method,
+            quality_caption(quality.as_ref()),
+            loss_caption(&out)
         );
         let instances = item
             .truth
@@ -550,15 +736,14 @@ fn process(
             truth_title: format!("GROUND TRUTH: {instances} INSTANCES"),
             bev_extent_m: args.bev_extent.unwrap_or_else(|| auto_extent(&item.image)),
         })?;
-        pic.save_png(&output_path(p, &item.name, single))?;
+        let path = output_path(p, &item.name, single);
+        pic.save_png(&path)?;
+        wrote.push(path);
     }
     if let Some(p) = &args.output {
-        fcc_npy::write_labels(
-            &output_path(p, &item.name, single),
-            item.image.rows,
-            item.image.cols,
-            &out.labels,
-        )?;
+        let path = output_path(p, &item.name, single);
+        fcc_npy::write_labels(&path, item.image.rows, item.image.cols, &out.labels)?;
+        wrote.push(path);
     }
     // Per-point labels: every input point of a cloud, valid pixels otherwise.
     let (points, labels, ground, intensity): PerPoint = match &item.projection {
@@ -587,19 +772,22 @@ fn process(
             )
         }
     };
-    if let (Some(truth_points), Some(_)) = (&item.truth_points, &quality) {
-        // For point clouds, score every input point, not only the pixel winners.
-        quality = Some(score_frame(&labels, truth_points, &EvalConfig::default())?.scores());
-    }
+    // For point clouds, also score every input point, not only the pixel
+    // winners (`fcc eval` scores pixels, as `quality` does).
+    let quality_per_point = match &item.truth_points {
+        Some(truth_points) => {
+            Some(score_frame(&labels, truth_points, &EvalConfig::default())?.scores())
+        }
+        None => None,
+    };
     if let Some(p) = &args.label {
-        write_label_file(
-            &output_path(p, &item.name, single),
-            &labels,
-            Some(&ground),
-            args.label_class,
-        )?;
+        let path = output_path(p, &item.name, single);
+        write_label_file(&path, &labels, Some(&ground), args.label_class)?;
+        wrote.push(path);
     }
     if let Some(p) = &args.ply {
+        // The picture's colours: touching clusters differ.
+        let map = cluster_colours(item.image.rows, item.image.cols, &out.labels);
         let colours: Vec<[u8; 3]> = labels
             .iter()
             .zip(&ground)
@@ -607,18 +795,28 @@ fn process(
                 if l == 0 && g {
                     [110, 80, 50]
                 } else {
-                    cluster_colour(l)
+                    map.get(&l).copied().unwrap_or_else(|| cluster_colour(l))
                 }
             })
             .collect();
+        let path = output_path(p, &item.name, single);
         write_ply_with_intensity(
-            &output_path(p, &item.name, single),
+            &path,
             &points,
             Some(&colours),
             Some(&labels),
             intensity.as_deref(),
             PlyFormat::BinaryLittleEndian,
         )?;
+        wrote.push(path);
+    }
+    for path in &wrote {
+        eprintln!(
+            "wrote {} ({}: {} clusters)",
+            path.display(),
+            item.name,
+            out.clusters
+        );
     }
     let stats = FrameStats {
         input: item.name.clone(),
@@ -635,8 +833,15 @@ fn process(
         merges: out.clustering.merges,
         overflow: out.clustering.overflow,
         unlabelled: out.clustering.unlabelled,
+        labels_needed: out.labels_needed,
+        out_of_range: out.out_of_range,
+        input_points: cloud.then_some(item.losses.input_points),
+        outside_fov: cloud.then_some(item.losses.outside_fov),
+        pixel_shared: cloud.then_some(item.losses.pixel_shared),
+        unprojected: cloud.then_some(item.losses.unprojected),
         time_ms,
         quality,
+        quality_per_point,
     };
     let rows = if args.clusters.is_some() {
         cluster_rows(&item.name, &points, &labels, &out.labels, item.image.cols)?
@@ -671,7 +876,10 @@ pub fn run_cluster(args: &ClusterLidarArgs) -> anyhow::Result<()> {
             args.input.len()
         );
     }
+    check_png_path(args.png.as_deref())?;
     let proj = args.projection.config()?;
+    // The outputs as given; the names of several results are checked per frame.
+    args.check_outputs("", true)?;
     let cfg_for = |range_image: bool| -> anyhow::Result<PipelineConfig> {
         Ok(PipelineConfig {
             params: args.model.params(1, 1)?,
@@ -735,6 +943,10 @@ pub fn run_cluster(args: &ClusterLidarArgs) -> anyhow::Result<()> {
                     items.push(Item {
                         name: format!("{}_f{:05}", stem(input), frame.index),
                         range_image: false,
+                        losses: Losses {
+                            input_points: frame.image.valid_count(),
+                            ..Losses::default()
+                        },
                         image: frame.image,
                         projection: None,
                         truth: None,
@@ -759,6 +971,10 @@ pub fn run_cluster(args: &ClusterLidarArgs) -> anyhow::Result<()> {
                 items.push(Item {
                     name: format!("{}_f{:05}", stem(input), frame.frame_id),
                     range_image: false,
+                    losses: Losses {
+                        input_points: frame.image.valid_count(),
+                        ..Losses::default()
+                    },
                     image: frame.image,
                     projection: None,
                     truth: None,
@@ -770,6 +986,22 @@ pub fn run_cluster(args: &ClusterLidarArgs) -> anyhow::Result<()> {
                 }
                 Ok(())
             })?;
+            if used == 0 {
+                let why = format!(
+                    "{}: no frame used of {} (--skip-frames {}{})",
+                    input.display(),
+                    s.frames,
+                    args.ouster.skip_frames,
+                    args.ouster
+                        .max_frames
+                        .map(|m| format!(", --max-frames {m}"))
+                        .unwrap_or_default()
+                );
+                if args.strict {
+                    bail!("{why} (--strict)");
+                }
+                eprintln!("warning: {why}");
+            }
             eprintln!(
                 "{}: {} frames used of {} ({} lidar packets, {} malformed, {} incomplete frames dropped, {} unreassembled fragments)",
                 input.display(),
@@ -810,6 +1042,9 @@ pub fn run_cluster(args: &ClusterLidarArgs) -> anyhow::Result<()> {
     }
     flush(&mut items)?;
     pb.finish_and_clear();
+    if lines.is_empty() {
+        bail!("no frame was clustered: nothing written");
+    }
     if let Some(p) = &args.clusters {
         write_cluster_table(p, &table)?;
     }
@@ -918,6 +1153,10 @@ pub struct ConvertArgs {
 /// `fcc convert`: range images as .npy, for `cluster`, `sim` and other tools.
 pub fn run_convert(args: &ConvertArgs) -> anyhow::Result<()> {
     let proj = args.projection.config()?;
+    let mut inputs: Vec<&Path> = args.input.iter().map(PathBuf::as_path).collect();
+    inputs.extend(args.ouster.meta.as_deref());
+    inputs.extend(args.projection.beams.as_deref());
+    fcc_io::check_outputs(inputs.iter().copied(), &[("--output", &args.output)])?;
     let mut images: Vec<(String, RangeImage)> = Vec::new();
     for input in &args.input {
         if is_capture(input)
@@ -939,10 +1178,18 @@ pub fn run_convert(args: &ConvertArgs) -> anyhow::Result<()> {
             )?;
             eprintln!("{}", velodyne_summary(input, used, &s, model));
         } else if is_capture(input) {
-            for_each_frame(input, &args.ouster, |f| {
+            let (used, s) = for_each_frame(input, &args.ouster, |f| {
                 images.push((format!("{}_f{:05}", stem(input), f.frame_id), f.image));
                 Ok(())
             })?;
+            if used == 0 {
+                eprintln!(
+                    "warning: {}: no frame used of {} (--skip-frames {})",
+                    input.display(),
+                    s.frames,
+                    args.ouster.skip_frames
+                );
+            }
         } else if is_mcap(input) {
             for_each_mcap_item(input, args.topic.as_deref(), &proj, |item| {
                 images.push((item.name, item.image));
@@ -950,7 +1197,16 @@ pub fn run_convert(args: &ConvertArgs) -> anyhow::Result<()> {
             })?;
         } else if CloudFormat::from_path(input).is_some() {
             let cloud = read_point_cloud(input)?;
-            images.push((stem(input), project(&cloud.points, &proj)?.image));
+            let projection = project(&cloud.points, &proj)?;
+            if projection.outside_fov > 0 {
+                eprintln!(
+                    "warning: {}: {} of {} points lie outside the vertical field of view and were squeezed into the top or bottom row; fit --fov-up/--fov-down or give --beams",
+                    input.display(),
+                    projection.outside_fov,
+                    cloud.points.len()
+                );
+            }
+            images.push((stem(input), projection.image));
         } else {
             bail!(
                 "{}: unknown input type (expected .pcap, .pcapng, .mcap, .bin, .pcd or .ply)",
@@ -958,12 +1214,16 @@ pub fn run_convert(args: &ConvertArgs) -> anyhow::Result<()> {
             );
         }
     }
+    if images.is_empty() {
+        bail!("no frame to convert: nothing written");
+    }
     let single = images.len() == 1;
     for (name, img) in &images {
         let out = output_path(&args.output, name, single);
+        fcc_io::check_outputs(inputs.iter().copied(), &[("--output", &out)])?;
         fcc_npy::write_xyz_f32(&out, img.rows, img.cols, &img.xyz)?;
         eprintln!(
-            "{}: {} x {}, {} points",
+            "wrote {}: {} x {}, {} points",
             out.display(),
             img.rows,
             img.cols,
@@ -1007,17 +1267,17 @@ pub struct EvalArgs {
     pub label_class: u16,
     #[command(flatten)]
     pub projection: ProjectionArgs,
-    /// Filter sizes K to evaluate.
-    #[arg(long, value_delimiter = ',', default_values_t = [3, 5, 7, 9, 11])]
-    pub fsizes: Vec<usize>,
-    /// Merge modes to evaluate.
-    #[arg(long, value_delimiter = ',', default_values = ["exact", "paper"])]
-    pub modes: Vec<MergeMode>,
+    /// Filter sizes K to evaluate: `--fsize 3 5 7` or `--fsize 3,5,7`.
+    #[arg(long, alias = "fsizes", num_args = 1.., value_delimiter = ',', allow_negative_numbers = true, default_values_t = [3, 5, 7, 9, 11])]
+    pub fsize: Vec<usize>,
+    /// Merge modes to evaluate: `--merge exact paper` or `--merge exact,paper`.
+    #[arg(long, alias = "modes", num_args = 1.., value_delimiter = ',', default_values = ["exact", "paper"])]
+    pub merge: Vec<MergeMode>,
     /// Intra-channel threshold th_H, metres.
-    #[arg(long, default_value_t = fcc_params::FccParams::default().th_h)]
+    #[arg(long, allow_negative_numbers = true, default_value_t = fcc_params::FccParams::default().th_h)]
     pub th_h: f64,
     /// Inter-channel threshold th_V, metres.
-    #[arg(long, default_value_t = fcc_params::FccParams::default().th_v)]
+    #[arg(long, allow_negative_numbers = true, default_value_t = fcc_params::FccParams::default().th_v)]
     pub th_v: f64,
     /// Provisional label width B.
     #[arg(long, default_value_t = fcc_params::FccParams::default().label_bits)]
@@ -1052,6 +1312,29 @@ pub enum Rules {
 
 /// `fcc eval`: the quality table.
 pub fn run_eval(args: &EvalArgs) -> anyhow::Result<()> {
+    let inputs: Vec<&Path> = args
+        .input
+        .iter()
+        .chain(&args.truth)
+        .map(PathBuf::as_path)
+        .collect();
+    let outputs: Vec<(&str, &Path)> = [("--json", &args.json), ("--markdown", &args.markdown)]
+        .into_iter()
+        .filter_map(|(f, p)| p.as_deref().map(|p| (f, p)))
+        .collect();
+    fcc_io::check_outputs(inputs, &outputs)?;
+    // .npy range images are taken as prepared (no ground removal by
+    // default), as in `fcc cluster`.
+    let all_npy = !args.input.is_empty() && args.input.iter().all(|i| is_npy(i));
+    let base = eval_base(args, all_npy)?;
+    base.params.validate()?;
+    for &k in &args.fsize {
+        fcc_params::FccParams {
+            fsize: k,
+            ..base.params.clone()
+        }
+        .validate()?;
+    }
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(args.jobs.unwrap_or(0))
         .build()?;
@@ -1101,17 +1384,13 @@ pub fn run_eval(args: &EvalArgs) -> anyhow::Result<()> {
             })
             .collect::<anyhow::Result<_>>()?
     };
-    // .npy range images are taken as prepared (no ground removal by
-    // default), as in `fcc cluster`.
-    let all_npy = !args.input.is_empty() && args.input.iter().all(|i| is_npy(i));
-    let base = eval_base(args, all_npy)?;
     let pb = progress_bar(Some(frames.len() as u64), "frames");
     let table = pool.install(|| {
         evaluate(
             &frames,
             &base,
-            &args.fsizes,
-            &args.modes,
+            &args.fsize,
+            &args.merge,
             &EvalConfig {
                 min_instance_points: args.min_instance_points.unwrap_or(1),
             },
@@ -1122,10 +1401,11 @@ pub fn run_eval(args: &EvalArgs) -> anyhow::Result<()> {
     let md = table.to_markdown();
     println!("{md}");
     if let Some(p) = &args.markdown {
-        std::fs::write(p, &md).with_context(|| format!("{}: cannot write", p.display()))?;
+        fcc_io::write_atomic(p, md.as_bytes())
+            .with_context(|| format!("{}: cannot write", p.display()))?;
     }
     if let Some(p) = &args.json {
-        std::fs::write(p, serde_json::to_string_pretty(&table)?)
+        fcc_io::write_atomic(p, serde_json::to_string_pretty(&table)?.as_bytes())
             .with_context(|| format!("{}: cannot write", p.display()))?;
     }
     Ok(())
@@ -1186,8 +1466,8 @@ fn run_eval_semantickitti(args: &EvalArgs, pool: &rayon::ThreadPool) -> anyhow::
         evaluate(
             &scans,
             &base,
-            &args.fsizes,
-            &args.modes,
+            &args.fsize,
+            &args.merge,
             args.label_class,
             args.min_instance_points.unwrap_or(DEFAULT_MIN_POINTS),
             &|| pb.inc(1),
@@ -1197,11 +1477,59 @@ fn run_eval_semantickitti(args: &EvalArgs, pool: &rayon::ThreadPool) -> anyhow::
     let md = table.to_markdown();
     println!("{md}");
     if let Some(p) = &args.markdown {
-        std::fs::write(p, &md).with_context(|| format!("{}: cannot write", p.display()))?;
+        fcc_io::write_atomic(p, md.as_bytes())
+            .with_context(|| format!("{}: cannot write", p.display()))?;
     }
     if let Some(p) = &args.json {
-        std::fs::write(p, serde_json::to_string_pretty(&table)?)
+        fcc_io::write_atomic(p, serde_json::to_string_pretty(&table)?.as_bytes())
             .with_context(|| format!("{}: cannot write", p.display()))?;
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn caption_shows_quality_with_ground_truth_and_lost_points() {
+        assert_eq!(quality_caption(None), "");
+        let q = fcc_lidar::eval::Scores {
+            pq: 0.6512,
+            sq: 0.8,
+            rq: 0.814,
+            over_segmentation: 0.0,
+            under_segmentation: 0.0,
+            clusters_per_frame: 1.0,
+            instances_per_frame: 1.0,
+        };
+        assert_eq!(
+            quality_caption(Some(&q)),
+            ", PQ 0.651 SQ 0.800 RQ 0.814 (PER PIXEL)"
+        );
+        // 300 isolated returns in one row with 8-bit labels: 45 unlabelled.
+        let mut img = RangeImage::empty(16, 600);
+        for c in (0..600).step_by(2) {
+            let a = std::f32::consts::TAU * c as f32 / 600.0;
+            img.set(c, Some([10.0 * a.cos(), 10.0 * a.sin(), 0.0]));
+        }
+        img.set(1, Some([200.0, 0.0, 0.0]));
+        let cfg = PipelineConfig {
+            params: fcc_params::FccParams {
+                label_bits: 8,
+                th_h: 0.05,
+                ..fcc_params::FccParams::default()
+            },
+            ground: GroundParams {
+                method: GroundMethod::None,
+                ..GroundParams::default()
+            },
+            ..PipelineConfig::default()
+        };
+        let out = cluster_image(&img, &cfg).unwrap();
+        assert_eq!(
+            loss_caption(&out),
+            ", LABEL OVERFLOW: 45 POINTS UNLABELLED, 1 POINTS OUT OF RANGE"
+        );
+    }
 }

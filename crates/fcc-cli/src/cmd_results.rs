@@ -59,7 +59,7 @@ pub fn run(args: &ResultsArgs) -> anyhow::Result<()> {
     cmd_cycles::run(&CyclesArgs {
         fsize: fsizes,
         frames: args.frames,
-        ouster_dir: PathBuf::from("crates/fcc-lidar/tests/data"),
+        ouster_dir: None,
         json: Some(cycles_json.clone()),
     })?;
     eprintln!("3/3 Yosys resources and timing (fcc synth --all)");

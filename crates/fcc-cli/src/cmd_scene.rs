@@ -54,10 +54,21 @@ impl SceneArgs {
 }
 
 pub fn run(args: &SceneArgs) -> anyhow::Result<()> {
+    let mut outputs = vec![("--output", args.output.as_path())];
+    outputs.extend(args.gt.as_deref().map(|g| ("--gt", g)));
+    fcc_io::check_outputs([], &outputs)?;
     let scene = generate(&args.config())?;
     fcc_npy::write_xyz_f32(&args.output, scene.rows, scene.cols, &scene.xyz)?;
+    eprintln!(
+        "wrote {}: {} x {}, {} points",
+        args.output.display(),
+        scene.rows,
+        scene.cols,
+        scene.xyz.chunks_exact(3).filter(|p| !p[0].is_nan()).count()
+    );
     if let Some(gt) = &args.gt {
         fcc_npy::write_labels(gt, scene.rows, scene.cols, &scene.gt)?;
+        eprintln!("wrote {}", gt.display());
     }
     Ok(())
 }

@@ -25,10 +25,10 @@ pub struct SimArgs {
     #[command(flatten)]
     pub hw: HwArgs,
     /// Probability of an idle input cycle between pixels.
-    #[arg(long, default_value_t = 0.0)]
+    #[arg(long, allow_negative_numbers = true, default_value_t = 0.0)]
     pub gap: f64,
     /// Probability that the output is not ready in a cycle.
-    #[arg(long, default_value_t = 0.0)]
+    #[arg(long, allow_negative_numbers = true, default_value_t = 0.0)]
     pub backpressure: f64,
     /// Seed of the gap and back-pressure patterns.
     #[arg(long, default_value_t = 0)]
@@ -46,7 +46,15 @@ fn probability(name: &str, v: f64) -> anyhow::Result<f64> {
     }
 }
 
-pub fn run(args: &SimArgs) -> anyhow::Result<()> {
+/// `size_given`: `--rows` or `--cols` was on the command line; they size a
+/// synthetic scene only, so an `--input` frame refuses them.
+pub fn run(args: &SimArgs, size_given: bool) -> anyhow::Result<()> {
+    if let (Some(path), true) = (&args.input, size_given) {
+        bail!(
+            "{}: --rows and --cols size a --scene-seed scene only; an --input frame brings its own size (drop them, or resample the frame)",
+            path.display()
+        );
+    }
     let frame_of = |rows: usize, cols: usize, xyz: &[f64]| Frame::from_xyz_f64(rows, cols, xyz);
     let (frame, source) = match (&args.input, args.scene_seed) {
         (Some(path), _) => {
@@ -85,8 +93,17 @@ pub fn run(args: &SimArgs) -> anyhow::Result<()> {
         seed: args.seed,
         ..Default::default()
     };
-    eprintln!("building or loading the Verilator model (cached)...");
+    let step = if fcc_sim::is_cached(&p)? {
+        "loading the cached Verilator model".to_string()
+    } else {
+        format!(
+            "building the Verilator model (first run of these parameters, a few minutes; cached in {})",
+            fcc_sim::cache_root().display()
+        )
+    };
+    let hb = crate::progress::Heartbeat::start(&step);
     let model = fcc_sim::load(&p).context("preparing the Verilator model")?;
+    hb.done();
     let mut dut = Dut::new(model);
     dut.reset(4);
     let gold = fcc_sim::expected(&p, &frame)?;

@@ -132,17 +132,24 @@ pub fn run(args: &SynthArgs) -> anyhow::Result<()> {
         return run_vivado(args, &p, &vivado_bin);
     }
     let work = args.work_dir.join(format!("k{}", p.fsize));
-    let cfg = args.yosys_config();
-    eprintln!(
-        "synthesising K = {} with {} (log in {}) ...",
+    // The script `fcc results` uses for this configuration.
+    let cfg = results::yosys_config_for(&p, &args.yosys_config(), true);
+    let hb = crate::progress::Heartbeat::start(&format!(
+        "synthesising K = {} with {}{} (log in {}; about two minutes per pass)",
         p.fsize,
         cfg.program.display(),
+        if cfg.by_block {
+            ", then again by block as the results document does"
+        } else {
+            ""
+        },
         work.display()
-    );
+    ));
     let run = match &args.rtl_dir {
         Some(dir) => fcc_synth::estimate_dir(dir, &work.join("yosys"), &cfg)?,
         None => fcc_synth::estimate(&p, &work, &cfg)?,
     };
+    hb.done();
     eprintln!("{} in {:.0} s", run.yosys_version, run.seconds);
     if let Some(t) = &run.timing {
         eprintln!(
@@ -229,7 +236,10 @@ fn run_all(args: &SynthArgs) -> anyhow::Result<()> {
                 work_dir: args.work_dir.clone(),
                 command: args.command(),
             };
-            results::measure(&base, &opts, &mut |line| eprintln!("{line}"))?
+            let hb = crate::progress::Heartbeat::start("synthesising every K");
+            let report = results::measure(&base, &opts, &mut |line| eprintln!("{line}"))?;
+            hb.done();
+            report
         }
     };
     report.command = args.command();
@@ -279,6 +289,24 @@ mod tests {
         assert!(parse(&["--all", "--rtl-dir", "x"]).is_err());
         assert!(parse(&["--from-json", "r.json"]).is_err());
         assert!(parse(&["--all", "--from-json", "r.json"]).is_ok());
+    }
+
+    #[test]
+    fn synth_of_the_target_configuration_runs_the_results_script() {
+        // `fcc synth --fsize 7` and `fcc results` must synthesise K = 7 with
+        // the same Yosys script, or they report different LUT counts.
+        let a = parse(&["--fsize", "7"]).unwrap();
+        let p = a.params(7).unwrap();
+        let files = [PathBuf::from("fcc_top.v"), PathBuf::from("fcc_intra.v")];
+        let blocks = vec!["fcc_intra".to_string()];
+        let synth = results::yosys_config_for(&p, &a.yosys_config(), true);
+        let all = parse(&["--all"]).unwrap();
+        let results_cfg = results::yosys_config_for(&p, &all.yosys_config(), true);
+        assert_eq!(
+            fcc_synth::yosys::script(&files, &synth, &blocks),
+            fcc_synth::yosys::script(&files, &results_cfg, &blocks)
+        );
+        assert!(synth.by_block, "the results document counts K = 7 by block");
     }
 
     #[test]

@@ -4,7 +4,7 @@
 //! arguments and hands it to the library crates. Errors end the program with
 //! one line on stderr and exit code 2.
 
-use clap::{Parser, Subcommand};
+use clap::{parser::ValueSource, CommandFactory, FromArgMatches, Parser, Subcommand};
 
 mod cmd_bench;
 mod cmd_cycles;
@@ -15,6 +15,7 @@ mod cmd_scene;
 mod cmd_sim;
 mod cmd_synth;
 mod model_args;
+mod progress;
 mod sensor_args;
 
 #[derive(Parser)]
@@ -56,7 +57,15 @@ enum Command {
 }
 
 fn main() {
-    let cli = Cli::parse();
+    let matches = Cli::command().get_matches();
+    let cli = Cli::from_arg_matches(&matches).unwrap_or_else(|e| e.exit());
+    // Options given on the command line (not defaults), for commands that
+    // must refuse an option that would be ignored.
+    let given = |sub: &str, id: &str| {
+        matches
+            .subcommand_matches(sub)
+            .is_some_and(|m| m.value_source(id) == Some(ValueSource::CommandLine))
+    };
     let result = match &cli.command {
         Command::Cluster(a) => cmd_lidar::run_cluster(a),
         Command::Convert(a) => cmd_lidar::run_convert(a),
@@ -66,11 +75,30 @@ fn main() {
         Command::Cycles(a) => cmd_cycles::run(a),
         Command::Results(a) => cmd_results::run(a),
         Command::Gen(a) => cmd_gen::run(a),
-        Command::Sim(a) => cmd_sim::run(a),
+        Command::Sim(a) => cmd_sim::run(a, given("sim", "rows") || given("sim", "cols")),
         Command::Synth(a) => cmd_synth::run(a),
     };
     if let Err(e) = result {
-        eprintln!("error: {e:#}");
+        eprintln!("error: {}", error_line(&e));
         std::process::exit(2);
     }
+}
+
+/// An error and its causes on one line, each cause once: a cause whose text
+/// an outer message already quotes (an OS error inside "path: cannot write:
+/// ...") is not repeated. Details a message carries on further lines (a
+/// tool's log tail) follow the first line.
+fn error_line(e: &anyhow::Error) -> String {
+    let mut line = String::new();
+    for cause in e.chain() {
+        let text = cause.to_string();
+        if line.contains(text.trim()) {
+            continue;
+        }
+        if !line.is_empty() {
+            line.push_str(": ");
+        }
+        line.push_str(text.trim());
+    }
+    line
 }

@@ -16,10 +16,10 @@ pub struct ModelArgs {
     #[arg(long, default_value_t = defaults().fsize)]
     pub fsize: usize,
     /// Intra-channel threshold th_H, metres.
-    #[arg(long, default_value_t = defaults().th_h)]
+    #[arg(long, allow_negative_numbers = true, default_value_t = defaults().th_h)]
     pub th_h: f64,
     /// Inter-channel threshold th_V, metres.
-    #[arg(long, default_value_t = defaults().th_v)]
+    #[arg(long, allow_negative_numbers = true, default_value_t = defaults().th_v)]
     pub th_v: f64,
     /// Provisional label width B (8..=20).
     #[arg(long, default_value_t = defaults().label_bits)]
@@ -59,16 +59,16 @@ pub struct HwArgs {
     #[arg(long, default_value_t = defaults().cols)]
     pub cols: usize,
     /// Intra-channel threshold th_H, metres.
-    #[arg(long, default_value_t = defaults().th_h)]
+    #[arg(long, allow_negative_numbers = true, default_value_t = defaults().th_h)]
     pub th_h: f64,
     /// Inter-channel threshold th_V, metres.
-    #[arg(long, default_value_t = defaults().th_v)]
+    #[arg(long, allow_negative_numbers = true, default_value_t = defaults().th_v)]
     pub th_v: f64,
     /// Provisional label width B (8..=16 in hardware).
     #[arg(long, default_value_t = defaults().label_bits)]
     pub label_bits: u32,
     /// Clock the constraints ask for, MHz.
-    #[arg(long, default_value_t = defaults().clock_mhz)]
+    #[arg(long, allow_negative_numbers = true, default_value_t = defaults().clock_mhz)]
     pub clock_mhz: f64,
     /// Labels per output beat: 1, 2 or 4.
     #[arg(long, default_value_t = defaults().labels_per_beat)]

@@ -4,7 +4,7 @@
 
 use crate::error::{LidarError, Result};
 use std::fs::File;
-use std::io::{BufRead, BufReader, BufWriter, Read, Write};
+use std::io::{BufRead, BufReader, Read, Write};
 use std::path::Path;
 
 /// Points in metres, with an intensity per point when the file has one.
@@ -101,7 +101,7 @@ pub fn write_kitti_bin(path: &Path, cloud: &PointCloud) -> Result<()> {
             out.extend_from_slice(&v.to_le_bytes());
         }
     }
-    std::fs::write(path, out).map_err(|e| LidarError::io(path, e))
+    fcc_io::write_atomic(path, &out).map_err(|e| LidarError::io(path, e))
 }
 
 fn field_f64(f: &pcd_rs::Field) -> Option<f64> {
@@ -557,8 +557,7 @@ pub fn write_ply_with_intensity(
             }
         }
     }
-    let file = File::create(path).map_err(|e| LidarError::io(path, e))?;
-    let mut w = BufWriter::new(file);
+    let mut w = fcc_io::AtomicFile::create(path).map_err(|e| LidarError::io(path, e))?;
     let io = |e| LidarError::io(path, e);
     let fmt = match format {
         PlyFormat::Ascii => "ascii",
@@ -627,7 +626,7 @@ pub fn write_ply_with_intensity(
             }
         }
     }
-    w.flush().map_err(io)
+    w.commit().map_err(io)
 }
 
 #[cfg(test)]

@@ -161,7 +161,7 @@ pub fn write_cluster_table(path: &Path, rows: &[ClusterRow]) -> Result<()> {
             )))
         }
     };
-    std::fs::write(path, text).map_err(|e| LidarError::io(path, e))
+    fcc_io::write_atomic(path, text.as_bytes()).map_err(|e| LidarError::io(path, e))
 }
 
 #[cfg(test)]

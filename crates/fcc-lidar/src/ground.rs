@@ -8,9 +8,12 @@
 //!   inliers); a point within `plane_distance_m` of the plane is ground;
 //! - `slope` (the default): the plane seeds a walk up every column from the
 //!   bottom beam. The first return of a column is ground if it lies within
-//!   `seed_tolerance_m` of the plane; every later return is ground if the
+//!   `seed_tolerance_m` of the plane and below the sensor; every later return is ground if the
 //!   rise from the last ground return of its column is at most
-//!   `tan(max_slope_deg)` times the run plus `step_m` (range noise) and it lies within `max_height_m` of the plane (a return
+//!   `tan(max_slope_deg)` times the run plus `step_m` (range noise), the same
+//!   holds from the return that started the column's ground (so the noise
+//!   allowance cannot add up, step by step, up a wall next to the sensor),
+//!   and it lies within `max_height_m` of the plane (a return
 //!   more than `max_gap_m` beyond the last ground return must meet the seed
 //!   tolerance again). A ground return with a non-ground return right above
 //!   it (closer than `foot_run_m` across the plane, higher by more than
@@ -185,31 +188,43 @@ pub fn detect_ground(image: &RangeImage, params: &GroundParams) -> Result<Ground
         GroundMethod::Slope => {
             let tan_max = params.max_slope_deg.to_radians().tan();
             for c in 0..image.cols {
-                let mut last: Option<[f32; 3]> = None;
+                // The last ground return, and the seed its stretch started from.
+                let mut last: Option<([f32; 3], [f32; 3])> = None;
                 for r in (0..image.rows).rev() {
                     let i = r * image.cols + c;
                     let Some(p) = image.point(i) else {
                         continue;
                     };
                     let h = dist(p);
-                    let ground = match last {
-                        None => h.abs() <= params.seed_tolerance_m,
-                        Some(q) => {
+                    // A seed lies near the plane and below the sensor (whose
+                    // height above the plane is pl[3]): a return above the
+                    // sensor looks up and cannot start the ground of a column.
+                    let seeded = h.abs() <= params.seed_tolerance_m && h < pl[3];
+                    let next = match last {
+                        None => seeded.then_some(p),
+                        Some((q, seed)) => {
                             // Rise and run measured along the plane normal and across it.
                             let (rise, run) = rise_run(p, q, pl);
                             if run > params.max_gap_m {
                                 // Too far from the last ground return to follow
                                 // the slope: start again as at the column's foot.
-                                h.abs() <= params.seed_tolerance_m
+                                seeded.then_some(p)
                             } else {
-                                h.abs() <= params.max_height_m
+                                // The slope holds step by step and from the seed
+                                // on: the noise allowance is granted once, not
+                                // per step, so beams close together cannot climb
+                                // a wall next to the sensor a centimetre at a time.
+                                let (rise_s, run_s) = rise_run(p, seed, pl);
+                                (h.abs() <= params.max_height_m
                                     && rise.abs() <= tan_max * run + params.step_m
+                                    && rise_s.abs() <= tan_max * run_s + params.step_m)
+                                    .then_some(seed)
                             }
                         }
                     };
-                    if ground {
+                    if let Some(seed) = next {
                         mask[i] = true;
-                        last = Some(p);
+                        last = Some((p, seed));
                     }
                 }
                 // The foot of an upright object: a ground return whose next
@@ -486,6 +501,84 @@ mod tests {
         )
         .unwrap();
         assert_eq!(none.count(), 0);
+    }
+
+    /// Ground 0.2 m below the sensor and, in a sector, a wall 1 m away: near
+    /// the sensor, beams 1 degree apart step up the wall by under 2 cm, less
+    /// than the noise allowance `step_m`.
+    fn near_wall() -> (RangeImage, Vec<bool>) {
+        let (rows, cols) = (32, 256);
+        let mut img = RangeImage::empty(rows, cols);
+        let mut truth = vec![false; rows * cols];
+        for r in 0..rows {
+            let e = (15.0 - 30.0 * r as f32 / (rows - 1) as f32).to_radians();
+            for c in 0..cols {
+                let az = std::f32::consts::TAU * c as f32 / cols as f32;
+                let i = r * cols + c;
+                let ground_hr = if e < 0.0 {
+                    0.2 / -e.tan()
+                } else {
+                    f32::INFINITY
+                };
+                let wall = (20..60).contains(&c);
+                let hr = if wall { ground_hr.min(1.0) } else { ground_hr };
+                if hr.is_finite() && hr < 60.0 {
+                    img.set(i, Some([hr * az.cos(), hr * az.sin(), hr * e.tan()]));
+                    truth[i] = hr == ground_hr;
+                }
+            }
+        }
+        (img, truth)
+    }
+
+    #[test]
+    fn a_lone_return_above_a_low_sensor_does_not_seed_ground() {
+        // The sensor 0.1 m above the ground (as OS-1-64's sample, on a
+        // table); one column holds a single return 0.5 m away at +10 degrees,
+        // 0.19 m above the plane: within the seed tolerance, but above the
+        // sensor.
+        let (rows, cols) = (16, 128);
+        let mut img = RangeImage::empty(rows, cols);
+        for r in rows / 2..rows {
+            let e = (-2.0 - 2.0 * (r - rows / 2) as f32).to_radians();
+            for c in 1..cols {
+                let az = std::f32::consts::TAU * c as f32 / cols as f32;
+                let hr = 0.1 / -e.tan();
+                img.set(r * cols + c, Some([hr * az.cos(), hr * az.sin(), -0.1]));
+            }
+        }
+        let e = 10f32.to_radians();
+        img.set(2 * cols, Some([0.5, 0.0, 0.5 * e.tan()]));
+        let g = detect_ground(&img, &GroundParams::default()).unwrap();
+        let pl = g.plane.unwrap();
+        assert!((pl[3] - 0.1).abs() < 0.01, "{pl:?}");
+        assert!(!g.mask[2 * cols], "a return above the sensor seeded ground");
+        assert!(
+            g.count() > (rows / 2) * (cols - 1) * 9 / 10,
+            "{}",
+            g.count()
+        );
+    }
+
+    #[test]
+    fn a_wall_next_to_the_sensor_is_not_climbed_as_ground() {
+        let (img, truth) = near_wall();
+        let g = detect_ground(&img, &GroundParams::default()).unwrap();
+        let climbed: Vec<(usize, usize, f32)> = (0..img.pixels())
+            .filter(|&i| g.mask[i] && !truth[i])
+            .filter_map(|i| img.point(i).map(|p| (i / img.cols, i % img.cols, p[2])))
+            // The wall's foot, up to the slope and noise tolerance above the
+            // last ground return (under 0.1 m here), may pass as ground.
+            .filter(|&(_, _, z)| z > -0.2 + 0.1)
+            .collect();
+        assert!(
+            climbed.is_empty(),
+            "{} wall returns above the ground called ground, first (row, col, z) {:?}",
+            climbed.len(),
+            climbed.first()
+        );
+        let s = score_ground(&img, &g.mask, &truth).unwrap();
+        assert!(s.recall > 0.99, "{s:?}");
     }
 
     #[test]

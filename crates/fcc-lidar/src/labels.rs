@@ -94,7 +94,7 @@ pub fn write_label_file(
     for l in labels {
         out.extend_from_slice(&l.to_le_bytes());
     }
-    std::fs::write(path, out).map_err(|e| LidarError::io(path, e))
+    fcc_io::write_atomic(path, &out).map_err(|e| LidarError::io(path, e))
 }
 
 /// Read a `.label` file; with `points`, its length must match the scan.

@@ -168,6 +168,14 @@ pub const SAMPLE_CAPTURES: [(&str, &str); 4] = [
     ),
 ];
 
+/// Where [`SAMPLE_CAPTURES`] are: this crate's `tests/data` in the source
+/// tree the program was built from (so tools find them from any directory).
+pub fn sample_dir() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests")
+        .join("data")
+}
+
 /// Everything the decoder needs from the sensor's JSON metadata.
 #[derive(Debug, Clone, PartialEq)]
 pub struct OusterMetadata {

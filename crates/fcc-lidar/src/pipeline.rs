@@ -7,7 +7,7 @@ use crate::ground::{detect_ground, Ground, GroundParams};
 use crate::image::RangeImage;
 use crate::labels::filter_min_points;
 use crate::picture::cluster_colour;
-use fcc_golden::{cluster, Clustering, MergeMode};
+use fcc_golden::{cluster, runs_needed, Clustering, MergeMode};
 use fcc_params::FccParams;
 use std::path::Path;
 
@@ -46,6 +46,12 @@ pub struct PipelineResult {
     pub clustering: Clustering,
     /// The parameters used (with this image's rows and cols).
     pub params: FccParams,
+    /// Points (not ground) whose coordinates do not fit the Q7.8 format
+    /// (beyond about ±128 m): the model never sees them, they stay unlabelled.
+    pub out_of_range: usize,
+    /// Provisional labels the frame needs: the runs of pass 1 (only counted on
+    /// label overflow; otherwise equal to `clustering.provisional`).
+    pub labels_needed: u64,
 }
 
 /// The parameters of `cfg` sized for `image`.
@@ -62,8 +68,15 @@ pub fn cluster_image(image: &RangeImage, cfg: &PipelineConfig) -> Result<Pipelin
     let params = params_for(image, &cfg.params);
     params.validate()?;
     let ground = detect_ground(image, &cfg.ground)?;
-    let frame = image.without(&ground.mask).to_frame();
+    let kept = image.without(&ground.mask);
+    let frame = kept.to_frame();
+    let out_of_range = kept.valid_count() - frame.valid_count();
     let clustering = cluster(&params, &frame, cfg.mode)?;
+    let labels_needed = if clustering.overflow {
+        runs_needed(&params, &frame)
+    } else {
+        u64::from(clustering.provisional)
+    };
     let (labels, clusters) = if cfg.min_points > 0 {
         filter_min_points(&clustering.labels, cfg.min_points)
     } else {
@@ -75,6 +88,8 @@ pub fn cluster_image(image: &RangeImage, cfg: &PipelineConfig) -> Result<Pipelin
         ground,
         clustering,
         params,
+        out_of_range,
+        labels_needed,
     })
 }
 
@@ -141,6 +156,51 @@ mod tests {
             }
         }
         img
+    }
+
+    #[test]
+    fn points_beyond_the_q7_8_range_are_counted_as_out_of_range() {
+        let mut img = RangeImage::empty(16, 256);
+        img.set(0, Some([10.0, 0.0, 0.0]));
+        img.set(1, Some([130.0, 0.0, 0.0]));
+        img.set(2, Some([0.0, -129.0, 0.0]));
+        let cfg = PipelineConfig {
+            ground: GroundParams {
+                method: GroundMethod::None,
+                ..GroundParams::default()
+            },
+            ..PipelineConfig::default()
+        };
+        let out = cluster_image(&img, &cfg).unwrap();
+        assert_eq!(out.out_of_range, 2);
+        assert_eq!(out.clustering.points, 1);
+        assert_eq!(&out.labels[..3], &[1, 0, 0]);
+    }
+
+    #[test]
+    fn label_overflow_counts_the_labels_the_frame_needs() {
+        // 300 isolated points in one row, 8-bit labels.
+        let mut img = RangeImage::empty(16, 600);
+        for c in (0..600).step_by(2) {
+            let a = std::f32::consts::TAU * c as f32 / 600.0;
+            img.set(c, Some([10.0 * a.cos(), 10.0 * a.sin(), 0.0]));
+        }
+        let cfg = PipelineConfig {
+            params: FccParams {
+                label_bits: 8,
+                th_h: 0.05,
+                ..FccParams::default()
+            },
+            ground: GroundParams {
+                method: GroundMethod::None,
+                ..GroundParams::default()
+            },
+            ..PipelineConfig::default()
+        };
+        let out = cluster_image(&img, &cfg).unwrap();
+        assert!(out.clustering.overflow);
+        assert_eq!(out.labels_needed, 300);
+        assert_eq!(out.clustering.unlabelled, 45);
     }
 
     #[test]

@@ -119,6 +119,30 @@ impl ProjectionConfig {
         };
         Some((row, col))
     }
+
+    /// Whether a point lies above or below the vertical field of view (it is
+    /// then put in the top or bottom row, where it crowds out other points):
+    /// outside `fov_down ..= fov_up`, or more than half a beam spacing beyond
+    /// the first or last beam of a beam table.
+    pub fn outside_fov(&self, p: [f32; 3]) -> bool {
+        let r = f64::from(norm(p));
+        if !(r.is_finite() && r > 0.0) {
+            return false;
+        }
+        let pitch = (f64::from(p[2]) / r).clamp(-1.0, 1.0).asin().to_degrees();
+        let (top, bottom) = match &self.layout {
+            VerticalLayout::Fov { up_deg, down_deg } => (*up_deg, *down_deg),
+            VerticalLayout::Beams(e) if e.len() >= 2 => {
+                let n = e.len();
+                (
+                    e[0] + (e[0] - e[1]) / 2.0,
+                    e[n - 1] - (e[n - 2] - e[n - 1]) / 2.0,
+                )
+            }
+            VerticalLayout::Beams(_) => return false,
+        };
+        pitch > top || pitch < bottom
+    }
 }
 
 /// A projected cloud: the range image, and which pixel each point fell in.
@@ -131,6 +155,9 @@ pub struct Projection {
     pub pixel_point: Vec<u32>,
     /// Per point: its range in metres (NaN for points with no pixel).
     pub point_range: Vec<f32>,
+    /// Points above or below the vertical field of view (squeezed into the
+    /// top or bottom row).
+    pub outside_fov: usize,
 }
 
 /// Project points to a range image; the nearest point wins each pixel.
@@ -147,10 +174,12 @@ pub fn project(points: &[[f32; 3]], cfg: &ProjectionConfig) -> Result<Projection
     let mut point_range = vec![f32::NAN; points.len()];
     let mut pixel_point = vec![NO_POINT; cfg.rows * cfg.cols];
     let mut best = vec![f32::INFINITY; cfg.rows * cfg.cols];
+    let mut outside_fov = 0;
     for (i, &p) in points.iter().enumerate() {
         let Some((r, c)) = cfg.pixel_of(p) else {
             continue;
         };
+        outside_fov += usize::from(cfg.outside_fov(p));
         let px = r * cfg.cols + c;
         let range = norm(p);
         point_pixel[i] = px as u32;
@@ -170,6 +199,7 @@ pub fn project(points: &[[f32; 3]], cfg: &ProjectionConfig) -> Result<Projection
         point_pixel,
         pixel_point,
         point_range,
+        outside_fov,
     })
 }
 
@@ -198,6 +228,11 @@ impl Projection {
     /// Points that won their pixel.
     pub fn kept_points(&self) -> usize {
         self.pixel_point.iter().filter(|&&i| i != NO_POINT).count()
+    }
+
+    /// Points with no pixel at all (zero or non-finite coordinates).
+    pub fn unprojected_points(&self) -> usize {
+        self.point_pixel.iter().filter(|&&p| p == NO_PIXEL).count()
     }
 
     /// A per-point value moved to the pixels (the winner's value; `empty`
@@ -333,6 +368,36 @@ mod tests {
             .unwrap_err()
             .to_string()
             .contains("strictly decreasing"));
+    }
+
+    #[test]
+    fn points_above_or_below_the_field_of_view_are_counted() {
+        let fov = ProjectionConfig {
+            rows: 4,
+            cols: 16,
+            layout: VerticalLayout::Fov {
+                up_deg: 10.0,
+                down_deg: -10.0,
+            },
+        };
+        let pts = [
+            at(0.0, 5.0, 10.0),
+            at(0.0, 15.0, 10.0),
+            at(0.0, -30.0, 10.0),
+            at(0.0, -9.9, 10.0),
+            [f32::NAN; 3],
+        ];
+        let p = project(&pts, &fov).unwrap();
+        assert_eq!(p.outside_fov, 2);
+        assert_eq!(p.unprojected_points(), 1);
+        let beams = ProjectionConfig {
+            rows: 3,
+            cols: 16,
+            layout: VerticalLayout::Beams(vec![2.0, 0.0, -2.0]),
+        };
+        // Half a spacing (1 degree) beyond the first and last beams is still in.
+        let pts = [at(0.0, 2.9, 10.0), at(0.0, 3.1, 10.0), at(0.0, -3.2, 10.0)];
+        assert_eq!(project(&pts, &beams).unwrap().outside_fov, 2);
     }
 
     #[test]

@@ -307,7 +307,7 @@ fn header(descr: &str, shape: &[usize]) -> Vec<u8> {
 }
 
 fn write_file(path: &Path, bytes: &[u8]) -> Result<(), NpyError> {
-    fs::write(path, bytes).map_err(|e| err(path, format!("cannot write: {e}")))
+    fcc_io::write_atomic(path, bytes).map_err(|e| err(path, format!("cannot write: {e}")))
 }
 
 /// Write a `(R, C)` little-endian uint32 label image.

@@ -174,6 +174,12 @@ impl FccParams {
         (1u32 << self.label_bits) - 1
     }
 
+    /// The smallest label width B whose labels `1 ..= 2^B - 1` hold `labels`
+    /// provisional labels (at least 1).
+    pub fn label_bits_for(labels: u64) -> u32 {
+        (64 - labels.leading_zeros()).max(1)
+    }
+
     /// Pixels in one frame.
     pub fn pixels(&self) -> usize {
         self.rows * self.cols
@@ -249,6 +255,15 @@ fn check_threshold(field: &'static str, th: f64) -> Result<(), ParamError> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn label_bits_for_is_the_narrowest_width_that_holds_the_labels() {
+        assert_eq!(FccParams::label_bits_for(0), 1);
+        assert_eq!(FccParams::label_bits_for(255), 8);
+        assert_eq!(FccParams::label_bits_for(256), 9);
+        assert_eq!(FccParams::label_bits_for(32_767), 15);
+        assert_eq!(FccParams::label_bits_for(32_768), 16);
+    }
 
     #[test]
     fn default_is_valid_for_hardware() {

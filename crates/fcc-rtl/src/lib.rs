@@ -241,6 +241,9 @@ impl Default for Layout {
 /// Write the RTL, the XDC and the Vivado script of `p`.
 pub fn write_all(p: &FccParams, layout: &Layout) -> Result<Vec<PathBuf>, RtlError> {
     let g = generate(p)?;
+    // Every file is made before the first is written: a configuration the
+    // board cannot run leaves nothing behind.
+    let extra = vivado::extra_scripts(&g, layout)?;
     let mut out = write_files(&layout.rtl, &g.files())?;
     let xdc = vivado::xdc(p);
     out.extend(write_files(&layout.constraints, &[("fcc_top.xdc", &xdc)])?);
@@ -250,7 +253,6 @@ pub fn write_all(p: &FccParams, layout: &Layout) -> Result<Vec<PathBuf>, RtlErro
         &vivado::relative(&layout.scripts, &layout.constraints.join("fcc_top.xdc")),
     );
     out.extend(write_files(&layout.scripts, &[("fcc_build.tcl", &tcl)])?);
-    let extra = vivado::extra_scripts(&g, layout)?;
     let extra: Vec<(&str, &str)> = extra.iter().map(|(n, t)| (*n, t.as_str())).collect();
     out.extend(write_files(&layout.scripts, &extra)?);
     Ok(out)
@@ -264,7 +266,7 @@ pub(crate) fn write_files(dir: &Path, files: &[(&str, &str)]) -> Result<Vec<Path
     let mut out = vec![];
     for (name, text) in files {
         let path = dir.join(name);
-        std::fs::write(&path, text).map_err(|source| RtlError::Io {
+        fcc_io::write_atomic(&path, text.as_bytes()).map_err(|source| RtlError::Io {
             path: path.clone(),
             source,
         })?;

@@ -635,9 +635,16 @@ pub fn dma_length_width(p: &FccParams, ports: &[Port]) -> Result<u32, RtlError> 
     Ok(bits)
 }
 
-/// The FCLK_CLK0 frequency the block design asks the PS for, MHz.
-pub fn fclk_mhz(p: &FccParams) -> f64 {
-    p.clock_mhz.min(PS7_FCLK_MAX_MHZ)
+/// The FCLK_CLK0 frequency the block design asks the PS for, MHz: the
+/// core's clock, which must be one the PS can give.
+pub fn fclk_mhz(p: &FccParams) -> Result<f64, RtlError> {
+    if p.clock_mhz > PS7_FCLK_MAX_MHZ {
+        return Err(RtlError::Check(format!(
+            "--clock-mhz {} is above {PS7_FCLK_MAX_MHZ} MHz, the fastest fabric clock (FCLK) the ZC706's Zynq PS can give the block design; choose at most {PS7_FCLK_MAX_MHZ}",
+            p.clock_mhz
+        )));
+    }
+    Ok(p.clock_mhz)
 }
 
 /// `fcc_zc706_bd.tcl`: the ZC706 block design around the packaged core.
@@ -654,21 +661,13 @@ pub fn bd_tcl(p: &FccParams, ports: &[Port]) -> Result<String, RtlError> {
             "{TOP_MODULE} has no {AXIL_INTERFACE}_* ports; the block design needs its register port"
         )));
     }
-    let fclk = fclk_mhz(p);
+    let fclk = fclk_mhz(p)?;
     let map_lines = register_map_lines(p);
     let map_comment: String = map_lines.iter().map(|l| format!("#     {l}\n")).collect();
     let map_puts: String = map_lines
         .iter()
         .map(|l| format!("puts $map {{register {l}}}\n"))
         .collect();
-    let clamp_note = if fclk < p.clock_mhz {
-        format!(
-            "# (--clock-mhz {} is above the PS's {PS7_FCLK_MAX_MHZ} MHz fabric clock limit.)\n",
-            p.clock_mhz
-        )
-    } else {
-        String::new()
-    };
 
     let mut s = file_header(p, "#");
     s.push_str(&fill(
@@ -692,7 +691,7 @@ pub fn bd_tcl(p: &FccParams, ports: &[Port]) -> Result<String, RtlError> {
 #
 # Clock: FCLK_CLK0 is asked for @FCLK@ MHz; the PS rounds it to what its PLL
 # dividers give, and the script prints the frequency it got.
-@CLAMP@#
+#
 # Software view (also written to DIR/zc706/@BD_NAME@_map.txt with the addresses):
 #   DMA MM2S_LENGTH = @IN_BYTES@ bytes per frame (@PIXELS@ pixels, @IN_BEAT@ bytes each)
 #   DMA S2MM_LENGTH = @OUT_BYTES@ bytes per frame (@LPB@ labels per @OUT_BEAT@-byte beat)
@@ -829,7 +828,6 @@ puts "@SCRIPT@: $design in $proj_dir"
             ("DEFAULT_OUT", DEFAULT_OUT.to_string()),
             ("BD_NAME", BD_NAME.to_string()),
             ("FCLK", format!("{fclk}")),
-            ("CLAMP", clamp_note),
             ("IN_BYTES", in_bytes.to_string()),
             ("OUT_BYTES", out_bytes.to_string()),
             ("PIXELS", p.pixels().to_string()),

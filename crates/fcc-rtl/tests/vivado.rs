@@ -103,16 +103,33 @@ fn period_follows_clock_mhz() {
 }
 
 #[test]
-fn fabric_clock_above_the_ps_limit_is_capped_in_the_block_design_only() {
+fn fabric_clock_above_the_ps_limit_is_refused_at_generation() {
     let p = FccParams {
         clock_mhz: 300.0,
         ..small()
     };
-    let f = files(&p);
-    assert!(file(&f, "fcc_top.xdc").contains("-period 3.333 "));
+    let g = generate(&p).unwrap();
+    let e = vivado::extra_scripts(&g, &Layout::default())
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("--clock-mhz 300 is above 250 MHz"), "{e}");
+    // Nothing is written, not even the RTL.
+    let root = std::env::temp_dir().join(format!("fcc-rtl-fclk-{}", std::process::id()));
+    let layout = Layout {
+        rtl: root.join("rtl_out"),
+        constraints: root.join("constraints"),
+        scripts: root.join("scripts"),
+    };
+    assert!(write_all(&p, &layout).is_err());
+    assert!(!root.exists(), "a refused configuration left files behind");
+    // The limit itself is accepted.
+    let at = FccParams {
+        clock_mhz: 250.0,
+        ..small()
+    };
+    let f = files(&at);
     let bd = file(&f, "fcc_zc706_bd.tcl");
     assert!(bd.contains("CONFIG.PCW_FPGA0_PERIPHERAL_FREQMHZ {250}"));
-    assert!(bd.contains("--clock-mhz 300 is above the PS's 250 MHz"));
 }
 
 #[test]
@@ -385,12 +402,39 @@ fn docs_quote_the_dma_lengths_and_the_register_header() {
 // ---------------------------------------------------------------------------
 // tclsh: parse check and dry run.
 
+/// Whether `tclsh` runs. Missing, it skips a test, except in CI
+/// (`CI=true`), where it fails the test: CI must run the dry runs.
 fn tclsh_present() -> bool {
-    Command::new("tclsh")
+    let ok = Command::new("tclsh")
         .stdin(std::process::Stdio::null())
         .arg("/dev/null")
         .output()
-        .is_ok()
+        .is_ok();
+    if !ok && std::env::var("CI").is_ok_and(|v| v == "true") {
+        panic!("tclsh is not installed and CI=true: install it (Debian: apt-get install tcl)");
+    }
+    ok
+}
+
+#[test]
+fn dry_runs_fail_in_ci_when_tclsh_is_missing() {
+    // Run one dry-run test of this binary again without tclsh on PATH.
+    let run = |ci: &str| {
+        Command::new(std::env::current_exe().unwrap())
+            .args(["--exact", "every_file_is_complete_tcl", "--test-threads=1"])
+            .env("PATH", "")
+            .env("CI", ci)
+            .output()
+            .unwrap()
+    };
+    let ci = run("true");
+    assert!(
+        !ci.status.success(),
+        "with CI=true and no tclsh the dry run passed: {}",
+        String::from_utf8_lossy(&ci.stdout)
+    );
+    assert!(String::from_utf8_lossy(&ci.stdout).contains("apt-get install tcl"));
+    assert!(run("").status.success(), "outside CI a missing tclsh skips");
 }
 
 /// Logs every command Tcl does not know (all of Vivado's) to the log file as

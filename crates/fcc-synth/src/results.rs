@@ -398,10 +398,7 @@ pub fn measure(
             fsize: k,
             ..base.clone()
         };
-        let cfg = YosysConfig {
-            by_block: opts.yosys.by_block || (opts.by_block_for_targets && TARGETS.applies_to(&p)),
-            ..opts.yosys.clone()
-        };
+        let cfg = yosys_config_for(&p, &opts.yosys, opts.by_block_for_targets);
         let dir = opts.work_dir.join(format!("k{k}"));
         progress(&format!(
             "K = {k}: generating and synthesising in {}{}",
@@ -439,6 +436,21 @@ fn summary_header_if(first: bool) -> String {
     }
 }
 
+/// The Yosys configuration used for `p`: `base`, with the by-block pass for
+/// the target configuration when `by_block_for_targets`. `fcc synth` and the
+/// results document both use it, so one configuration is synthesised by one
+/// script and gives one set of numbers.
+pub fn yosys_config_for(
+    p: &FccParams,
+    base: &YosysConfig,
+    by_block_for_targets: bool,
+) -> YosysConfig {
+    YosysConfig {
+        by_block: base.by_block || (by_block_for_targets && TARGETS.applies_to(p)),
+        ..base.clone()
+    }
+}
+
 /// Write the report as Markdown and as JSON.
 pub fn write_report(report: &Report, markdown: &Path, json: &Path) -> Result<(), SynthError> {
     for path in [markdown, json] {
@@ -446,10 +458,11 @@ pub fn write_report(report: &Report, markdown: &Path, json: &Path) -> Result<(),
             std::fs::create_dir_all(dir).map_err(io_err("create", dir))?;
         }
     }
-    std::fs::write(markdown, render_markdown(report)).map_err(io_err("write", markdown))?;
+    fcc_io::write_atomic(markdown, render_markdown(report).as_bytes())
+        .map_err(io_err("write", markdown))?;
     let text =
         serde_json::to_string_pretty(report).unwrap_or_else(|e| format!("{{\"error\": \"{e}\"}}"));
-    std::fs::write(json, format!("{text}\n")).map_err(io_err("write", json))?;
+    fcc_io::write_atomic(json, format!("{text}\n").as_bytes()).map_err(io_err("write", json))?;
     Ok(())
 }
 

@@ -4,8 +4,8 @@
 //! `stat_blocks_small_top.json` and `sta_small_top.log` from `small_top.v`;
 //! `stat_fcc_top_k3.json` and `sta_fcc_top_k3.log` from an early generated
 //! `fcc_top` with K = 3 (a snapshot of the format, not of today's design).
-//! Tests that run Yosys are skipped, with a note, when it is not installed,
-//! and take a lock so that only one Yosys runs at a time.
+//! Tests that run Yosys are skipped, with a note, when it is not installed
+//! (and fail when `CI=true`), and take a lock so that only one Yosys runs at a time.
 
 use std::path::{Path, PathBuf};
 use std::sync::Mutex;
@@ -27,6 +27,9 @@ fn read(name: &str) -> String {
 
 fn have_yosys() -> bool {
     let ok = yosys::version(Path::new("yosys")).is_ok();
+    if !ok && std::env::var("CI").is_ok_and(|v| v == "true") {
+        panic!("yosys is not installed and CI=true: install it (Debian: apt-get install yosys)");
+    }
     if !ok {
         eprintln!("yosys is not installed: skipping (apt-get install yosys)");
     }
