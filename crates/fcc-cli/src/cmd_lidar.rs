@@ -324,6 +324,31 @@ struct Item {
     losses: Losses,
 }
 
+impl Item {
+    /// One frame of a sensor capture (Ouster or Velodyne): named after the
+    /// file and the frame, with the sensor's intensity per pixel.
+    fn capture_frame(
+        input: &Path,
+        frame: impl Into<u64>,
+        image: RangeImage,
+        intensity: Vec<f32>,
+    ) -> Item {
+        Item {
+            name: format!("{}_f{:05}", stem(input), frame.into()),
+            range_image: false,
+            losses: Losses {
+                input_points: image.valid_count(),
+                ..Losses::default()
+            },
+            image,
+            projection: None,
+            truth: None,
+            truth_points: None,
+            intensity: Some(intensity),
+        }
+    }
+}
+
 fn stem(path: &Path) -> String {
     path.file_stem()
         .unwrap_or_default()
@@ -940,19 +965,12 @@ pub fn run_cluster(args: &ClusterLidarArgs) -> anyhow::Result<()> {
                 o.skip_frames,
                 o.max_frames,
                 |frame| {
-                    items.push(Item {
-                        name: format!("{}_f{:05}", stem(input), frame.index),
-                        range_image: false,
-                        losses: Losses {
-                            input_points: frame.image.valid_count(),
-                            ..Losses::default()
-                        },
-                        image: frame.image,
-                        projection: None,
-                        truth: None,
-                        truth_points: None,
-                        intensity: Some(frame.intensity),
-                    });
+                    items.push(Item::capture_frame(
+                        input,
+                        frame.index as u64,
+                        frame.image,
+                        frame.intensity,
+                    ));
                     if items.len() >= batch {
                         flush(&mut items)?;
                     }
@@ -968,19 +986,12 @@ pub fn run_cluster(args: &ClusterLidarArgs) -> anyhow::Result<()> {
                 );
             }
             let (used, s) = for_each_frame(input, &args.ouster, |frame| {
-                items.push(Item {
-                    name: format!("{}_f{:05}", stem(input), frame.frame_id),
-                    range_image: false,
-                    losses: Losses {
-                        input_points: frame.image.valid_count(),
-                        ..Losses::default()
-                    },
-                    image: frame.image,
-                    projection: None,
-                    truth: None,
-                    truth_points: None,
-                    intensity: Some(frame.reflectivity),
-                });
+                items.push(Item::capture_frame(
+                    input,
+                    frame.frame_id,
+                    frame.image,
+                    frame.reflectivity,
+                ));
                 if items.len() >= batch {
                     flush(&mut items)?;
                 }
