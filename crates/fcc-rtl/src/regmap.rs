@@ -1,6 +1,7 @@
 //! The register map of `fcc_top`'s AXI4-Lite slave, defined once.
 //!
-//! The offsets and bit positions are the constants of this module; the
+//! The offsets and bit positions are the constants of the `fcc-regmap` crate
+//! (re-exported here); the
 //! hardware (`FccRegs`) decodes them, and [`registers`] describes every
 //! register (access, reset value, fields, meaning) for the three documents
 //! derived from it: the C99 header `fcc_regs.h` ([`c_header`]), the
@@ -17,54 +18,7 @@ use serde::Serialize;
 
 use crate::GENERATOR_VERSION;
 
-/// Address bits of the slave (a 4 KiB window, the smallest a Vivado address
-/// map assigns).
-pub const ADDR_BITS: usize = 12;
-
-/// Value of the ID register: "FCC1" in ASCII.
-pub const ID_MAGIC: u32 = 0x4643_4331;
-
-/// Byte offsets.
-pub mod offset {
-    pub const ID: u32 = 0x000;
-    pub const VERSION: u32 = 0x004;
-    pub const HASH_LO: u32 = 0x008;
-    pub const HASH_HI: u32 = 0x00C;
-    pub const K_MAX: u32 = 0x010;
-    pub const ROWS_MAX: u32 = 0x014;
-    pub const COLS_MAX: u32 = 0x018;
-    pub const LABEL_BITS: u32 = 0x01C;
-    pub const LABELS_PER_BEAT: u32 = 0x020;
-    pub const CLOCK_KHZ: u32 = 0x024;
-    pub const CONTROL: u32 = 0x040;
-    pub const STATUS: u32 = 0x044;
-    pub const FRAME_COUNT: u32 = 0x050;
-    pub const CLUSTERS: u32 = 0x054;
-    pub const PROVISIONAL: u32 = 0x058;
-    pub const UNLABELLED: u32 = 0x05C;
-    pub const FRAME_FLAGS: u32 = 0x060;
-    pub const JOINS: u32 = 0x064;
-    pub const GEAR_STALLS: u32 = 0x068;
-}
-
-/// Bit masks of the fields.
-pub mod bits {
-    /// CONTROL: write 1 to reset the pixel pipeline (self-clearing, reads 0).
-    pub const CONTROL_SOFT_RESET: u32 = 1 << 0;
-    /// CONTROL: raise `irq` while STATUS.FRAME_DONE is set.
-    pub const CONTROL_IRQ_ENABLE: u32 = 1 << 1;
-    /// CONTROL: write 1 to clear FRAME_COUNT, the latched frame status and
-    /// STATUS.FRAME_DONE (self-clearing, reads 0).
-    pub const CONTROL_CLEAR: u32 = 1 << 2;
-    /// STATUS: a frame ended since the bit was last cleared (write 1 to clear).
-    pub const STATUS_FRAME_DONE: u32 = 1 << 0;
-    /// STATUS: the core waits for the first pixel of a frame (read-only, live).
-    pub const STATUS_IDLE: u32 = 1 << 1;
-    /// FRAME_FLAGS: the last frame ran out of provisional labels.
-    pub const FLAGS_OVERFLOW: u32 = 1 << 0;
-    /// FRAME_FLAGS: the last frame's `tlast` came early or late.
-    pub const FLAGS_FRAME_ERROR: u32 = 1 << 1;
-}
+pub use fcc_regmap::{bits, offset, ADDR_BITS, ID_MAGIC};
 
 /// How software may access a register.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]

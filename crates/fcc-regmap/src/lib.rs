@@ -1,0 +1,57 @@
+//! Offsets and bit fields of the FCC core's AXI4-Lite register file.
+//!
+//! This crate is the one place the addresses are written down. It has no
+//! dependencies and builds without `std`, so a bare-metal or embedded driver
+//! can use it as well as the RTL generator (`fcc-rtl`, which decodes these
+//! offsets in hardware and derives the C header, the JSON and the register
+//! table of docs/rtl.md from them).
+#![no_std]
+
+/// Address bits of the slave (a 4 KiB window, the smallest a Vivado address
+/// map assigns).
+pub const ADDR_BITS: usize = 12;
+
+/// Value of the ID register: "FCC1" in ASCII.
+pub const ID_MAGIC: u32 = 0x4643_4331;
+
+/// Byte offsets.
+pub mod offset {
+    pub const ID: u32 = 0x000;
+    pub const VERSION: u32 = 0x004;
+    pub const HASH_LO: u32 = 0x008;
+    pub const HASH_HI: u32 = 0x00C;
+    pub const K_MAX: u32 = 0x010;
+    pub const ROWS_MAX: u32 = 0x014;
+    pub const COLS_MAX: u32 = 0x018;
+    pub const LABEL_BITS: u32 = 0x01C;
+    pub const LABELS_PER_BEAT: u32 = 0x020;
+    pub const CLOCK_KHZ: u32 = 0x024;
+    pub const CONTROL: u32 = 0x040;
+    pub const STATUS: u32 = 0x044;
+    pub const FRAME_COUNT: u32 = 0x050;
+    pub const CLUSTERS: u32 = 0x054;
+    pub const PROVISIONAL: u32 = 0x058;
+    pub const UNLABELLED: u32 = 0x05C;
+    pub const FRAME_FLAGS: u32 = 0x060;
+    pub const JOINS: u32 = 0x064;
+    pub const GEAR_STALLS: u32 = 0x068;
+}
+
+/// Bit masks of the fields.
+pub mod bits {
+    /// CONTROL: write 1 to reset the pixel pipeline (self-clearing, reads 0).
+    pub const CONTROL_SOFT_RESET: u32 = 1 << 0;
+    /// CONTROL: raise `irq` while STATUS.FRAME_DONE is set.
+    pub const CONTROL_IRQ_ENABLE: u32 = 1 << 1;
+    /// CONTROL: write 1 to clear FRAME_COUNT, the latched frame status and
+    /// STATUS.FRAME_DONE (self-clearing, reads 0).
+    pub const CONTROL_CLEAR: u32 = 1 << 2;
+    /// STATUS: a frame ended since the bit was last cleared (write 1 to clear).
+    pub const STATUS_FRAME_DONE: u32 = 1 << 0;
+    /// STATUS: the core waits for the first pixel of a frame (read-only, live).
+    pub const STATUS_IDLE: u32 = 1 << 1;
+    /// FRAME_FLAGS: the last frame ran out of provisional labels.
+    pub const FLAGS_OVERFLOW: u32 = 1 << 0;
+    /// FRAME_FLAGS: the last frame's `tlast` came early or late.
+    pub const FLAGS_FRAME_ERROR: u32 = 1 << 1;
+}
