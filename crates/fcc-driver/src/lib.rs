@@ -25,6 +25,7 @@ pub mod linux;
 
 pub use driver::{
     BuildExpect, BuildInfo, Driver, FrameReport, FrameStatus, Pixels, RunConfig, Timeouts,
+    LABELS_PER_BEAT,
 };
 pub use error::{Channel, DmaCause, Error};
 pub use hal::{DmaBuffer, Hal, Window, DMA_ALIGN};
