@@ -309,3 +309,63 @@ fn compare(
     }
     Ok(())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use fcc_golden::{cluster, Frame};
+
+    #[test]
+    fn mismatch_names_first_pixel_expected_and_got_and_status_differences() {
+        let p = FccParams {
+            rows: 2,
+            cols: 3,
+            fsize: 3,
+            ..FccParams::default()
+        };
+        let xyz = [
+            10.0,
+            0.0,
+            0.0,
+            10.0,
+            0.25,
+            0.0,
+            f64::NAN,
+            0.0,
+            0.0, //
+            10.0,
+            0.0,
+            -0.5,
+            f64::NAN,
+            0.0,
+            0.0,
+            20.0,
+            0.0,
+            0.0,
+        ];
+        let gold = cluster(&p, &Frame::from_xyz_f64(2, 3, &xyz), MergeMode::Exact).unwrap();
+        let status = fcc_driver::FrameStatus {
+            clusters: gold.clusters,
+            provisional: gold.provisional,
+            ..Default::default()
+        };
+        compare("f", &p, &gold, &gold.labels, &status).unwrap();
+        let mut got = gold.labels.clone();
+        got[5] += 1;
+        let e = compare("f", &p, &gold, &got, &status)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("row 1 col 2: expected 2 != got 3 (1 pixels differ)"),
+            "{e}"
+        );
+        let bad = fcc_driver::FrameStatus {
+            clusters: 9,
+            ..status
+        };
+        let e = compare("f", &p, &gold, &gold.labels, &bad)
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("status clusters: expected 2 != got 9"), "{e}");
+    }
+}
