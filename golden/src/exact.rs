@@ -39,14 +39,18 @@ struct RunBox {
     last: u32,
     start: u32,
     end: u32,
-    lo: Point,
-    hi: Point,
+    /// x, y, z lower and upper bounds, and a fourth lane of 0 in both (four
+    /// lanes, so the gap between two boxes is computed lane-wise).
+    lo: [i32; 4],
+    hi: [i32; 4],
 }
 
 /// Buffers of the exact path.
 #[derive(Debug, Clone, Default)]
 pub(crate) struct Exact {
     px: Vec<Px>,
+    /// Where the runs of one row start, as indices into its points.
+    starts: Vec<u32>,
     runs: Vec<RunBox>,
     /// `runs[row_runs[i] .. row_runs[i + 1]]` are the runs of row `i`.
     row_runs: Vec<u32>,
@@ -106,6 +110,7 @@ impl Exact {
         let max_runs = params.max_label() as usize;
         let Exact {
             px,
+            starts,
             runs,
             row_runs,
             ring_joins,
@@ -120,11 +125,19 @@ impl Exact {
         let (mut overflow, mut unlabelled) = (false, 0usize);
         for row in frame.points.chunks_exact(frame.cols) {
             // Copy the row's valid points (those of unlabelled runs too, but
-            // no run refers to them).
+            // no run refers to them)
+            // and where runs start: at every step wider than tH (the first
+            // point starts a run whatever its distance to `prev`).
             let base = px.len();
+            starts.clear();
+            let mut prev = [i16::MIN; 3];
             for (c, q) in row.iter().enumerate() {
                 if let Some(p) = *q {
+                    if dist2(p, prev) > th_sq {
+                        starts.push((px.len() - base) as u32);
+                    }
                     px.push([p[0], p[1], p[2], c as u16 as i16]);
+                    prev = p;
                 }
             }
             let row_px = &px[base..];
@@ -133,7 +146,6 @@ impl Exact {
                 row_runs.push(runs.len() as u32);
                 continue;
             };
-            // Split the row's points into runs at every step wider than tH.
             let mut close = |start: usize, end: usize| {
                 if runs.len() < max_runs {
                     let (mut lo, mut hi) = ([i16::MAX; 4], [i16::MIN; 4]);
@@ -148,8 +160,8 @@ impl Exact {
                         last: col(&row_px[end - 1]) as u32,
                         start: (base + start) as u32,
                         end: (base + end) as u32,
-                        lo: point(&lo),
-                        hi: point(&hi),
+                        lo: [lo[0], lo[1], lo[2], 0].map(i32::from),
+                        hi: [hi[0], hi[1], hi[2], 0].map(i32::from),
                     });
                 } else {
                     overflow = true;
@@ -157,11 +169,9 @@ impl Exact {
                 }
             };
             let mut start = 0usize;
-            for (t, pair) in row_px.windows(2).enumerate() {
-                if dist2(point(&pair[1]), point(&pair[0])) > th_sq {
-                    close(start, t + 1);
-                    start = t + 1;
-                }
+            for &t in starts.iter().filter(|&&t| t != 0) {
+                close(start, t as usize);
+                start = t as usize;
             }
             close(start, row_px.len());
             let n = base + row_px.len();
@@ -276,14 +286,13 @@ impl Exact {
 /// squared distance of any of their pixel pairs.
 #[inline]
 fn box_gap_sq(a: &RunBox, b: &RunBox) -> i64 {
-    let mut g = 0i64;
-    for d in 0..3 {
-        let gap = (i64::from(a.lo[d]) - i64::from(b.hi[d]))
-            .max(i64::from(b.lo[d]) - i64::from(a.hi[d]))
-            .max(0);
-        g += gap * gap;
+    // Each gap is below 2^16, so its square fits in a u64 from a u32.
+    let mut sq = [0u64; 4];
+    for d in 0..4 {
+        let gap = (a.lo[d] - b.hi[d]).max(b.lo[d] - a.hi[d]).max(0) as u32;
+        sq[d] = u64::from(gap) * u64::from(gap);
     }
-    g
+    (sq[0] + sq[1] + sq[2] + sq[3]) as i64
 }
 
 /// Whether a point of run `a` and a point of run `b` at most `h` columns
@@ -295,11 +304,19 @@ fn runs_touch(px: &[Px], a: &RunBox, b: &RunBox, h: usize, th_sq: i64) -> bool {
     let (first, last) = (b.first as usize, b.last as usize);
     // Only centre points within h columns of the other run can join;
     // `other[lo..hi]` are the points within h columns of the centre point.
-    let from = centre.partition_point(|p| col(p) + h < first);
+    let from = if col(&centre[0]) + h >= first {
+        0
+    } else {
+        centre.partition_point(|p| col(p) + h < first)
+    };
     let Some(c0) = centre.get(from) else {
         return false;
     };
-    let mut lo = other.partition_point(|q| col(q) + h < col(c0));
+    let mut lo = if col(&other[0]) + h >= col(c0) {
+        0
+    } else {
+        other.partition_point(|q| col(q) + h < col(c0))
+    };
     let mut hi = lo;
     for p in &centre[from..] {
         let c = col(p);
