@@ -287,12 +287,11 @@ impl Exact {
 #[inline]
 fn box_gap_sq(a: &RunBox, b: &RunBox) -> i64 {
     // Each gap is below 2^16, so its square fits in a u64 from a u32.
-    let mut sq = [0u64; 4];
-    for d in 0..4 {
+    let sq = |d: usize| {
         let gap = (a.lo[d] - b.hi[d]).max(b.lo[d] - a.hi[d]).max(0) as u32;
-        sq[d] = u64::from(gap) * u64::from(gap);
-    }
-    (sq[0] + sq[1] + sq[2] + sq[3]) as i64
+        u64::from(gap) * u64::from(gap)
+    };
+    (sq(0) + sq(1) + sq(2) + sq(3)) as i64
 }
 
 /// Whether a point of run `a` and a point of run `b` at most `h` columns
