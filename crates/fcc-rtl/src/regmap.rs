@@ -18,7 +18,7 @@ use serde::Serialize;
 
 use crate::GENERATOR_VERSION;
 
-pub use fcc_regmap::{bits, offset, ADDR_BITS, ID_MAGIC};
+pub use fcc_regmap::{bits, offset, ADDR_BITS, ID_MAGIC, TH_Q_MAX};
 
 /// How software may access a register.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -65,6 +65,60 @@ pub struct Register {
     pub build_constant: bool,
     pub doc: &'static str,
     pub fields: Vec<Field>,
+    /// A run parameter: the values a write may take ([`run_range`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub range: Option<RunRange>,
+}
+
+/// The values a run-parameter register accepts (inclusive); RUN_K also
+/// requires an odd value.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub struct RunRange {
+    pub min: u32,
+    pub max: u32,
+}
+
+/// Smallest RUN_ROWS the build accepts. The datapath runs the build's own
+/// frame size only, so that is the only size accepted.
+pub fn run_rows_min(p: &FccParams) -> u32 {
+    p.rows as u32
+}
+
+/// Smallest RUN_COLS the build accepts (see [`run_rows_min`]).
+pub fn run_cols_min(p: &FccParams) -> u32 {
+    p.cols as u32
+}
+
+/// The range of the run-parameter register at `off` in the build `p`
+/// (`None` for any other offset). A write outside it is refused: the
+/// register keeps its value and its ERROR bit is set.
+pub fn run_range(p: &FccParams, off: u32) -> Option<RunRange> {
+    let (min, max) = match off {
+        offset::RUN_K => (3, p.fsize as u32),
+        offset::RUN_TH_H | offset::RUN_TH_V => (1, TH_Q_MAX),
+        offset::RUN_ROWS => (run_rows_min(p), p.rows as u32),
+        offset::RUN_COLS => (run_cols_min(p), p.cols as u32),
+        _ => return None,
+    };
+    Some(RunRange { min, max })
+}
+
+/// Whether `v` is a value the run-parameter register at `off` accepts.
+pub fn run_value_ok(p: &FccParams, off: u32, v: u32) -> bool {
+    run_range(p, off)
+        .is_some_and(|r| (r.min..=r.max).contains(&v) && (off != offset::RUN_K || v % 2 == 1))
+}
+
+/// The ERROR bit of the run-parameter register at `off`.
+pub fn run_error_bit(off: u32) -> Option<u32> {
+    match off {
+        offset::RUN_K => Some(bits::ERROR_K),
+        offset::RUN_TH_H => Some(bits::ERROR_TH_H),
+        offset::RUN_TH_V => Some(bits::ERROR_TH_V),
+        offset::RUN_ROWS => Some(bits::ERROR_ROWS),
+        offset::RUN_COLS => Some(bits::ERROR_COLS),
+        _ => None,
+    }
 }
 
 /// The generator version as one word: major << 16 | minor << 8 | patch.
@@ -113,6 +167,17 @@ pub fn registers(p: &FccParams) -> Vec<Register> {
         build_constant: true,
         doc,
         fields,
+        range: None,
+    };
+    let run = |name, offset, reset: usize, doc, fields| Register {
+        name,
+        offset,
+        access: ReadWrite,
+        reset: reset as u32,
+        build_constant: true,
+        doc,
+        fields,
+        range: run_range(p, offset),
     };
     let status = |name, offset, doc, fields| Register {
         name,
@@ -122,6 +187,7 @@ pub fn registers(p: &FccParams) -> Vec<Register> {
         build_constant: false,
         doc,
         fields,
+        range: None,
     };
     vec![
         build(
@@ -204,6 +270,7 @@ pub fn registers(p: &FccParams) -> Vec<Register> {
             access: ReadWrite,
             reset: 0,
             build_constant: false,
+            range: None,
             doc: "Control",
             fields: vec![
                 field(
@@ -232,6 +299,7 @@ pub fn registers(p: &FccParams) -> Vec<Register> {
             access: WriteOneToClear,
             reset: 0,
             build_constant: false,
+            range: None,
             doc: "Core status",
             fields: vec![
                 field(
@@ -246,6 +314,22 @@ pub fn registers(p: &FccParams) -> Vec<Register> {
                     1,
                     "read-only: the core waits for the first pixel of a frame",
                 ),
+            ],
+        },
+        Register {
+            name: "ERROR",
+            offset: offset::ERROR,
+            access: WriteOneToClear,
+            reset: 0,
+            build_constant: false,
+            range: None,
+            doc: "Refused writes of run parameters (sticky, write 1 to clear)",
+            fields: vec![
+                field("K", 0, 1, "a RUN_K write was refused"),
+                field("TH_H", 1, 1, "a RUN_TH_H write was refused"),
+                field("TH_V", 2, 1, "a RUN_TH_V write was refused"),
+                field("ROWS", 3, 1, "a RUN_ROWS write was refused"),
+                field("COLS", 4, 1, "a RUN_COLS write was refused"),
             ],
         },
         status(
@@ -292,6 +376,41 @@ pub fn registers(p: &FccParams) -> Vec<Register> {
             offset::GEAR_STALLS,
             "Last frame: read-back cycles that waited for labels",
             whole("STALLS", 24, "cycles"),
+        ),
+        run(
+            "RUN_K",
+            offset::RUN_K,
+            p.fsize,
+            "Run: filter size K, odd, 3 ..= K_MAX",
+            whole("K", 4, "odd, 3 ..= K_MAX"),
+        ),
+        run(
+            "RUN_TH_H",
+            offset::RUN_TH_H,
+            p.th_h_q() as usize,
+            "Run: intra-channel threshold tH = floor(th_H * 256 + 0.5), 1 ..= 0x8000",
+            whole("TH", 16, "Q7.8 metres"),
+        ),
+        run(
+            "RUN_TH_V",
+            offset::RUN_TH_V,
+            p.th_v_q() as usize,
+            "Run: inter-channel threshold tV = floor(th_V * 256 + 0.5), 1 ..= 0x8000",
+            whole("TH", 16, "Q7.8 metres"),
+        ),
+        run(
+            "RUN_ROWS",
+            offset::RUN_ROWS,
+            p.rows,
+            "Run: rows per frame (this version: ROWS_MAX only)",
+            whole("ROWS", 8, "rows"),
+        ),
+        run(
+            "RUN_COLS",
+            offset::RUN_COLS,
+            p.cols,
+            "Run: columns per frame (this version: COLS_MAX only)",
+            whole("COLS", 13, "columns"),
         ),
     ]
 }
@@ -340,6 +459,12 @@ pub fn c_header(p: &FccParams) -> String {
                     field_mask(f)
                 ));
             }
+        }
+        if let Some(rr) = r.range {
+            s.push_str(&format!(
+                "#define FCC_{}_MIN {}u\n#define FCC_{}_MAX {}u\n",
+                r.name, rr.min, r.name, rr.max
+            ));
         }
         s.push('\n');
     }
@@ -415,6 +540,32 @@ mod tests {
     }
 
     #[test]
+    fn run_ranges_refuse_even_k_zero_thresholds_and_sizes_beyond_the_build() {
+        let p = FccParams {
+            fsize: 11,
+            ..Default::default()
+        };
+        for k in 0..=16 {
+            let ok = k % 2 == 1 && (3..=11).contains(&k);
+            assert_eq!(run_value_ok(&p, offset::RUN_K, k), ok, "K {k}");
+        }
+        for off in [offset::RUN_TH_H, offset::RUN_TH_V] {
+            assert!(!run_value_ok(&p, off, 0));
+            assert!(run_value_ok(&p, off, 1));
+            assert!(run_value_ok(&p, off, TH_Q_MAX));
+            assert!(!run_value_ok(&p, off, TH_Q_MAX + 1));
+        }
+        // The largest threshold the parameters accept quantises to TH_Q_MAX.
+        assert_eq!(fcc_params::quantize_threshold(127.999) as u32, TH_Q_MAX);
+        for (off, max) in [(offset::RUN_ROWS, p.rows), (offset::RUN_COLS, p.cols)] {
+            assert!(run_value_ok(&p, off, max as u32));
+            assert!(!run_value_ok(&p, off, max as u32 + 1));
+            assert!(!run_value_ok(&p, off, 0));
+        }
+        assert!(!run_value_ok(&p, offset::CONTROL, 1));
+    }
+
+    #[test]
     fn hash_registers_hold_the_parameter_hash() {
         let p = FccParams::default();
         let regs = registers(&p);
@@ -430,6 +581,11 @@ mod tests {
         assert!(h.contains("#define FCC_REG_CONTROL 0x040u"), "{h}");
         assert!(h.contains("#define FCC_CONTROL_IRQ_ENABLE_MASK 0x00000002u"));
         assert!(h.contains("#define FCC_REG_K_MAX_RESET 0x00000007u"));
+        assert!(
+            h.contains("#define FCC_RUN_K_MIN 3u\n#define FCC_RUN_K_MAX 7u"),
+            "{h}"
+        );
+        assert!(h.contains("#define FCC_RUN_TH_V_MAX 32768u"), "{h}");
         assert!(h.contains(&format!("0x{}ull", p.hash().to_uppercase())));
         assert!(!h.contains("#include <cstdint>"));
     }
