@@ -18,7 +18,9 @@ use std::path::PathBuf;
 pub use axil::{AxilM, AxilMaster, AxilPort, AxilS, WriteOrder};
 pub use check::{compare, expected};
 pub use drive::{frame_beats, Drive, FrameRun, Tlast};
-pub use model::{cache_root, is_cached, load, Dut, Model};
+pub use model::{
+    cache_root, is_cached, is_cached_dir, load, load_dir, read_generated, Dut, GeneratedDir, Model,
+};
 pub use regs_bench::{load_regs, RegsDut, RegsIn, RegsOut};
 
 /// Everything that can go wrong in a simulation.
@@ -52,6 +54,9 @@ pub enum SimError {
     Protocol(String),
     #[error("{0}")]
     Mismatch(String),
+    /// Run parameters the build cannot run.
+    #[error("{0}")]
+    BadRun(String),
 }
 
 /// Run one frame on a fresh reset of `dut` and compare it with the golden model.
