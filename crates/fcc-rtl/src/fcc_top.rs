@@ -410,7 +410,9 @@ impl Logic for FccTop {
         // ---- Blocks.
         self.intra.rst.next = self.regs.core_rst.val();
         self.intra.pix.next = self.slot_q.q.val();
+        self.intra.th_h_c.next = self.regs.run_th_h_c.val();
         self.window.rst.next = self.regs.core_rst.val();
+        self.window.run_k.next = self.regs.run_k.val();
         self.window.inp.next.valid = self.intra.out.val().valid;
         self.window.inp.next.lok = self.intra.out.val().lok;
         self.window.inp.next.x = self.intra.out.val().x;
@@ -428,6 +430,7 @@ impl Logic for FccTop {
         self.window.rep_waddr.next = self.sort_net.rep_waddr.val();
         self.window.rep_wdata.next = self.sort_net.rep_wdata.val();
         self.dist_tree.rst.next = self.regs.core_rst.val();
+        self.dist_tree.th_v_c.next = self.regs.run_th_v_c.val();
         self.dist_tree.centre_in.next = self.window.centre.val();
         for e in 0..self.window.ent_ok.len() {
             self.dist_tree.ent_ok[e].next = self.window.ent_ok[e].val();

@@ -30,7 +30,11 @@ pub fn waivers(p: &FccParams) -> String {
          // every user. The centre buffer needs no level (the input credits bound\n\
          // it) and the join queue has no side RAMs.\n\
          lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'cb$level'*\"\n\
-         lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'jq$ram_*\"\n",
+         lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'jq$ram_*\"\n\
+         // The datapath runs the build's frame size: RUN_ROWS and RUN_COLS accept\n\
+         // only ROWS_MAX and COLS_MAX, so the active copies are not used yet.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'regs$run_rows'*\"\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'regs$run_cols'*\"\n",
     );
     s.push_str(&axil_waivers("fcc_top.v"));
     s
