@@ -35,6 +35,8 @@ pub struct FccIntra {
     pub pix: Signal<In, Pix>,
     /// The frame's last column, C - 1 (stable while a frame runs).
     pub last_col: Signal<In, Bits<12>>,
+    /// -(tH^2 + 1) (36-bit two's complement), from the run parameters.
+    pub th_h_c: Signal<In, Bits<36>>,
     pub out: Signal<Out, Lab>,
     // Status of the frame in progress (stable after its last pixel).
     pub provisional: Signal<Out, Bits<17>>,
@@ -115,12 +117,12 @@ pub struct FccIntra {
 
 impl FccIntra {
     pub fn new(p: &FccParams) -> Self {
-        let th = p.th_h_sq() as u64;
         Self {
             clk: Default::default(),
             rst: Default::default(),
             pix: Default::default(),
             last_col: Default::default(),
+            th_h_c: Default::default(),
             out: Default::default(),
             provisional: Default::default(),
             overflow: Default::default(),
@@ -132,8 +134,8 @@ impl FccIntra {
             first_x: Default::default(),
             first_y: Default::default(),
             first_z: Default::default(),
-            near: FccSqDist::new(th, true),
-            ring: FccSqDist::new(th, true),
+            near: FccSqDist::new(),
+            ring: FccSqDist::new(),
             pd: (0..SQ_LATENCY).map(|_| Default::default()).collect(),
             fvd: (0..SQ_LATENCY).map(|_| Default::default()).collect(),
             raw: Default::default(),
@@ -214,6 +216,8 @@ impl Logic for FccIntra {
         self.near.by.next = self.prev_y.q.val();
         self.near.bz.next = self.prev_z.q.val();
         self.near.en_in.next = self.pix.val().valid & self.pix.val().ok & self.hp_eff.val();
+        self.near.c.next = self.th_h_c.val();
+        self.ring.c.next = self.th_h_c.val();
         // Ring: the row's first valid point against its last valid point.
         self.ring.clk.next = self.clk.val();
         self.ring.en_in.next = true;

@@ -144,8 +144,6 @@ pub struct FccTop {
     one12: Constant<Bits<12>>,
     two8: Constant<Bits<8>>,
     two12: Constant<Bits<12>>,
-    def_rows: Constant<Bits<8>>,
-    def_cols: Constant<Bits<13>>,
     one10: Constant<Bits<10>>,
     two10: Constant<Bits<10>>,
     zero10: Constant<Bits<10>>,
@@ -245,8 +243,6 @@ impl FccTop {
             one12: kb(1),
             two8: kb(2),
             two12: kb(2),
-            def_rows: kb(p.rows as u64),
-            def_cols: kb(p.cols as u64),
             one10: kb(1),
             two10: kb(2),
             zero10: kb(0),
@@ -299,8 +295,8 @@ impl Logic for FccTop {
         self.regs.gear_stalls.next = self.label_update.gear_stalls.val();
         // ---- Run size of the frame (stable while a frame runs); derived
         // values registered, so the counters compare with flip-flops.
-        self.run_rows.next = self.def_rows.val();
-        self.run_cols.next = self.def_cols.val();
+        self.run_rows.next = self.regs.run_rows.val();
+        self.run_cols.next = self.regs.run_cols.val();
         // Modulo 4096: C = 4096 has C - 1 = 4095 in 12 bits.
         self.last_col.d.next = self.run_cols.val().get_bits::<12>(0) - self.one12.val();
         self.pen_col.d.next = self.run_cols.val().get_bits::<12>(0) - self.two12.val();
@@ -447,7 +443,9 @@ impl Logic for FccTop {
         self.intra.pix.next = self.slot_q.q.val();
         self.intra.last_col.next = self.last_col.q.val();
         self.window.last_col.next = self.last_col.q.val();
+        self.intra.th_h_c.next = self.regs.run_th_h_c.val();
         self.window.rst.next = self.regs.core_rst.val();
+        self.window.run_k.next = self.regs.run_k.val();
         self.window.inp.next.valid = self.intra.out.val().valid;
         self.window.inp.next.lok = self.intra.out.val().lok;
         self.window.inp.next.x = self.intra.out.val().x;
@@ -465,6 +463,7 @@ impl Logic for FccTop {
         self.window.rep_waddr.next = self.sort_net.rep_waddr.val();
         self.window.rep_wdata.next = self.sort_net.rep_wdata.val();
         self.dist_tree.rst.next = self.regs.core_rst.val();
+        self.dist_tree.th_v_c.next = self.regs.run_th_v_c.val();
         self.dist_tree.centre_in.next = self.window.centre.val();
         for e in 0..self.window.ent_ok.len() {
             self.dist_tree.ent_ok[e].next = self.window.ent_ok[e].val();

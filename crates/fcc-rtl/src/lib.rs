@@ -28,6 +28,7 @@ mod fcc_regs;
 mod fcc_row_word;
 mod fcc_sort_net;
 mod fcc_sq_dist;
+mod fcc_th_square;
 mod fcc_top;
 mod fcc_two_or;
 mod fcc_window;
