@@ -11,6 +11,7 @@
 #define FCC_REGS_ADDR_BITS 12u
 #define FCC_ID_MAGIC 0x46434331u
 #define FCC_PARAMS_HASH 0x668CF05BF2A51F2Eull
+#define FCC_RUN_COLS_MIN 32u
 
 // ID (RO): Fixed magic "FCC1": an FCC core answers here
 #define FCC_REG_ID 0x000u
@@ -160,13 +161,13 @@
 #define FCC_RUN_TH_V_TH_SHIFT 0u
 #define FCC_RUN_TH_V_TH_MASK 0x0000FFFFu
 
-// RUN_ROWS (RW): Run: rows per frame (this version: ROWS_MAX only)
+// RUN_ROWS (RW): Run: rows per frame, 1 ..= ROWS_MAX
 #define FCC_REG_RUN_ROWS 0x08Cu
 #define FCC_REG_RUN_ROWS_RESET 0x00000040u
 #define FCC_RUN_ROWS_ROWS_SHIFT 0u
 #define FCC_RUN_ROWS_ROWS_MASK 0x000000FFu
 
-// RUN_COLS (RW): Run: columns per frame (this version: COLS_MAX only)
+// RUN_COLS (RW): Run: columns per frame, RUN_COLS_MIN ..= COLS_MAX
 #define FCC_REG_RUN_COLS 0x090u
 #define FCC_REG_RUN_COLS_RESET 0x00000800u
 #define FCC_RUN_COLS_COLS_SHIFT 0u

@@ -12,6 +12,7 @@ pub mod drive;
 pub mod frames;
 pub mod model;
 pub mod regs_bench;
+pub mod run;
 
 use std::path::PathBuf;
 
@@ -22,6 +23,7 @@ pub use model::{
     cache_root, is_cached, is_cached_dir, load, load_dir, read_generated, Dut, GeneratedDir, Model,
 };
 pub use regs_bench::{load_regs, RegsDut, RegsIn, RegsOut};
+pub use run::{check_run, run_and_check_with, run_values};
 
 /// Everything that can go wrong in a simulation.
 #[derive(Debug, thiserror::Error)]
