@@ -1,9 +1,9 @@
 //! Range images in the golden model's integer form.
 
-use fcc_params::Q_ONE;
-
-/// A point in Q7.8 fixed point: x, y, z in units of 1/256 m.
-pub type Point = [i16; 3];
+/// The Q7.8 point and the quantisation rule (with the empty-pixel rule) are
+/// defined once, in `fcc-pixel`, shared with drivers that pack frames for
+/// the hardware.
+pub use fcc_pixel::{quantize, quantize_point, Point};
 
 /// A range image of `rows` x `cols` pixels in raster order (row 0 is the top
 /// beam); `None` is an empty pixel.
@@ -12,28 +12,6 @@ pub struct Frame {
     pub rows: usize,
     pub cols: usize,
     pub points: Vec<Option<Point>>,
-}
-
-/// Quantise one coordinate in metres to Q7.8:
-/// `sign(x) * floor(|x| * 256 + 0.5)`, or `None` when `x` is not finite or
-/// the result falls outside `[-32768, 32767]`.
-pub fn quantize(x: f64) -> Option<i16> {
-    if !x.is_finite() {
-        return None;
-    }
-    // |x| * 256 + 0.5 is non-negative, so truncation is the floor; the cast
-    // saturates, so huge values stay out of range.
-    let mag = (x.abs() * Q_ONE + 0.5) as u64;
-    if x < 0.0 {
-        (mag <= 32768).then(|| (-(mag as i32)) as i16)
-    } else {
-        (mag <= 32767).then_some(mag as i16)
-    }
-}
-
-/// Quantise a whole point; empty if any coordinate is.
-pub fn quantize_point(x: f64, y: f64, z: f64) -> Option<Point> {
-    Some([quantize(x)?, quantize(y)?, quantize(z)?])
 }
 
 impl Frame {

@@ -69,18 +69,7 @@ pub struct FrameRun {
     pub beats: u64,
 }
 
-/// The input beat of one pixel.
-pub fn pixel_beat(p: Option<[i16; 3]>) -> u64 {
-    match p {
-        None => 0,
-        Some([x, y, z]) => {
-            u64::from(x as u16)
-                | (u64::from(y as u16) << 16)
-                | (u64::from(z as u16) << 32)
-                | (1 << 48)
-        }
-    }
-}
+pub use fcc_pixel::pixel_beat;
 
 /// The input beats of a frame: (tdata, tlast).
 pub fn frame_beats(frame: &Frame, tlast: Tlast) -> Vec<(u64, bool)> {

@@ -7,6 +7,7 @@
 //! model and reports the first differing pixel.
 
 pub mod axil;
+pub mod board;
 pub mod check;
 pub mod drive;
 pub mod frames;
@@ -17,6 +18,9 @@ pub mod run;
 use std::path::PathBuf;
 
 pub use axil::{AxilM, AxilMaster, AxilPort, AxilS, WriteOrder};
+pub use board::{
+    build_expect, build_run, virtual_board, AxiDmaModel, Fault, VBuffer, VirtualBoard,
+};
 pub use check::{compare, expected};
 pub use drive::{frame_beats, Drive, FrameRun, Tlast};
 pub use model::{
@@ -59,6 +63,8 @@ pub enum SimError {
     /// Run parameters the build cannot run.
     #[error("{0}")]
     BadRun(String),
+    #[error("virtual board: {0}")]
+    Board(String),
 }
 
 /// Run one frame on a fresh reset of `dut` and compare it with the golden model.

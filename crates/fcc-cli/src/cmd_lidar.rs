@@ -697,16 +697,42 @@ fn quality_caption(q: Option<&fcc_lidar::eval::Scores>) -> String {
         .unwrap_or_default()
 }
 
+/// Hardware that clusters a frame in place of the golden model (`fcc board
+/// run`): it gets the frame without its ground and the golden model's
+/// result, and returns its own labels, already checked against it.
+pub trait Hardware {
+    fn cluster(
+        &self,
+        name: &str,
+        kept: &RangeImage,
+        gold: &PipelineResult,
+    ) -> anyhow::Result<Vec<u32>>;
+}
+
 fn process(
     args: &ClusterLidarArgs,
     cfg: &PipelineConfig,
     item: &Item,
     single: bool,
+    hw: Option<&dyn Hardware>,
 ) -> anyhow::Result<(String, Vec<ClusterRow>)> {
     args.check_outputs(&item.name, single)?;
     let t = Instant::now();
-    let out: PipelineResult = cluster_image(&item.image, cfg).with_context(|| item.name.clone())?;
+    let mut out: PipelineResult =
+        cluster_image(&item.image, cfg).with_context(|| item.name.clone())?;
     let time_ms = t.elapsed().as_secs_f64() * 1e3;
+    if let Some(hw) = hw {
+        // The outputs carry the hardware's labels (equal to the golden
+        // model's, or `cluster` failed), through the same min-points filter.
+        let kept = item.image.without(&out.ground.mask);
+        let labels = hw.cluster(&item.name, &kept, &out)?;
+        (out.labels, out.clusters) = if cfg.min_points > 0 {
+            fcc_lidar::labels::filter_min_points(&labels, cfg.min_points)
+        } else {
+            let clusters = labels.iter().copied().max().unwrap_or(0);
+            (labels, clusters)
+        };
+    }
     let warnings = loss_warnings(item, &out);
     if args.strict {
         if let Some(w) = warnings.first() {
@@ -894,6 +920,12 @@ fn progress_bar(len: Option<u64>, what: &str) -> ProgressBar {
 
 /// `fcc cluster` on real LiDAR data.
 pub fn run_cluster(args: &ClusterLidarArgs) -> anyhow::Result<()> {
+    run_cluster_on(args, None)
+}
+
+/// `fcc cluster`, with every frame also sent through `hw` (one frame at a
+/// time, in order) when given.
+pub fn run_cluster_on(args: &ClusterLidarArgs, hw: Option<&dyn Hardware>) -> anyhow::Result<()> {
     if !args.truth.is_empty() && args.truth.len() != args.input.len() {
         bail!(
             "--truth names {} files for {} inputs: give one per input, in order",
@@ -917,7 +949,11 @@ pub fn run_cluster(args: &ClusterLidarArgs) -> anyhow::Result<()> {
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(args.jobs.unwrap_or(0))
         .build()?;
-    let batch = pool.current_num_threads().max(1) * 2;
+    let batch = if hw.is_some() {
+        1
+    } else {
+        pool.current_num_threads().max(1) * 2
+    };
     // One result overall keeps output names as given.
     let single = args.input.len() == 1
         && !is_mcap(&args.input[0])
@@ -928,12 +964,26 @@ pub fn run_cluster(args: &ClusterLidarArgs) -> anyhow::Result<()> {
     let mut lines = Vec::new();
     let mut table = Vec::new();
     let mut flush = |items: &mut Vec<Item>| -> anyhow::Result<()> {
-        let res: Vec<anyhow::Result<(String, Vec<ClusterRow>)>> = pool.install(|| {
-            items
-                .par_iter()
-                .map(|it| process(args, &cfgs[usize::from(it.range_image)], it, single))
-                .collect()
-        });
+        let res: Vec<anyhow::Result<(String, Vec<ClusterRow>)>> = match hw {
+            None => pool.install(|| {
+                items
+                    .par_iter()
+                    .map(|it| process(args, &cfgs[usize::from(it.range_image)], it, single, None))
+                    .collect()
+            }),
+            Some(hw) => items
+                .iter()
+                .map(|it| {
+                    process(
+                        args,
+                        &cfgs[usize::from(it.range_image)],
+                        it,
+                        single,
+                        Some(hw),
+                    )
+                })
+                .collect(),
+        };
         pb.inc(items.len() as u64);
         items.clear();
         for r in res {

@@ -7,6 +7,7 @@
 use clap::{parser::ValueSource, CommandFactory, FromArgMatches, Parser, Subcommand};
 
 mod cmd_bench;
+mod cmd_board;
 mod cmd_cycles;
 mod cmd_gen;
 mod cmd_lidar;
@@ -54,6 +55,10 @@ enum Command {
     Results(cmd_results::ResultsArgs),
     /// Time the golden model per K on synthetic scenes; compare exact and paper merging.
     Bench(cmd_bench::BenchArgs),
+    /// Drive the core on a board (Linux UIO) or on the virtual board (Verilator
+    /// with a model of the AXI DMA), checking every label against the golden model.
+    #[command(subcommand)]
+    Board(cmd_board::BoardCommand),
 }
 
 fn main() {
@@ -77,6 +82,7 @@ fn main() {
         Command::Gen(a) => cmd_gen::run(a),
         Command::Sim(a) => cmd_sim::run(a, &|id| given("sim", id)),
         Command::Synth(a) => cmd_synth::run(a),
+        Command::Board(a) => cmd_board::run(a),
     };
     if let Err(e) = result {
         eprintln!("error: {}", error_line(&e));

@@ -9,10 +9,9 @@
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
-/// Fractional bits of the Q7.8 coordinate format.
-pub const FRAC_BITS: u32 = 8;
-/// One metre in Q7.8 units.
-pub const Q_ONE: f64 = (1u32 << FRAC_BITS) as f64;
+/// Fractional bits of the Q7.8 coordinate format, and one metre in Q7.8
+/// units (defined with the quantisation rule in `fcc-pixel`).
+pub use fcc_pixel::{FRAC_BITS, Q_ONE};
 
 /// Allowed ranges, named once so errors, docs and the CLI agree.
 pub mod limits {

@@ -1,0 +1,371 @@
+//! `fcc board run`: send frames through the core on a board (Linux, UIO and
+//! u-dma-buf) or on the virtual board (the Verilator model of the core with
+//! a model of the AXI DMA and memory), with the driver of `fcc-driver`;
+//! compare every label with the golden model; write the outputs of
+//! `fcc cluster`.
+
+use std::cell::RefCell;
+use std::collections::HashMap;
+use std::path::PathBuf;
+use std::time::Instant;
+
+use anyhow::{bail, Context};
+use clap::{Args, Subcommand};
+use fcc_driver::{Driver, Pixels, RunConfig};
+use fcc_golden::MergeMode;
+use fcc_lidar::pipeline::PipelineResult;
+use fcc_lidar::RangeImage;
+use fcc_params::FccParams;
+use fcc_sim::VirtualBoard;
+
+use crate::cmd_lidar::{run_cluster_on, ClusterLidarArgs, Hardware};
+
+#[derive(Subcommand, Debug)]
+pub enum BoardCommand {
+    /// Send every frame of the inputs through the core, check every label
+    /// against the golden model, print time, clusters and status per frame,
+    /// and write the outputs `fcc cluster` writes.
+    Run(BoardRunArgs),
+}
+
+#[derive(Args, Debug)]
+pub struct BoardRunArgs {
+    /// The virtual board: the generated core in Verilator (built for each
+    /// frame's size, K and thresholds on first use, then cached) behind a
+    /// model of the AXI DMA and memory; the same driver as on a board.
+    #[arg(long = "virtual", conflicts_with = "uio")]
+    pub virtual_board: bool,
+    /// On a board under Linux: the UIO device of the core's registers and
+    /// interrupt (its device-tree node name, or uioN).
+    #[arg(long, value_name = "NAME", requires = "params")]
+    pub uio: Option<String>,
+    /// With --uio: the UIO device of the AXI DMA's registers.
+    #[arg(long, value_name = "NAME", default_value = "dma")]
+    pub uio_dma: String,
+    /// With --uio: the u-dma-buf buffer for the frames (two frames of the
+    /// build's size).
+    #[arg(long, value_name = "NAME", default_value = "udmabuf0")]
+    pub udmabuf: String,
+    /// With --uio: the fcc_params.json of the bitstream's core (`fcc gen`
+    /// writes it beside the Verilog); its hash must match the core's.
+    #[arg(long, value_name = "FILE")]
+    pub params: Option<PathBuf>,
+    #[command(flatten)]
+    pub cluster: ClusterLidarArgs,
+}
+
+pub fn run(cmd: &BoardCommand) -> anyhow::Result<()> {
+    match cmd {
+        BoardCommand::Run(a) => run_board(a),
+    }
+}
+
+fn run_board(args: &BoardRunArgs) -> anyhow::Result<()> {
+    if args.cluster.model.merge != MergeMode::Exact {
+        bail!("the core computes exact connected components: drop --merge paper");
+    }
+    let t = Instant::now();
+    let report = if args.virtual_board {
+        let hw = Runner::new(Target::Virtual(HashMap::new()));
+        run_cluster_on(&args.cluster, Some(&hw))?;
+        hw.summary()
+    } else if let Some(core) = &args.uio {
+        let params = args.params.as_ref().context("--uio needs --params")?;
+        let hw = Runner::new(open_linux(args, core, params)?);
+        run_cluster_on(&args.cluster, Some(&hw))?;
+        hw.summary()
+    } else {
+        bail!(
+            "say where the core is: --virtual, or --uio NAME --params fcc_params.json on a board"
+        );
+    };
+    println!("{report} ({:.1} s)", t.elapsed().as_secs_f64());
+    Ok(())
+}
+
+/// The build of a bitstream from its `fcc_params.json`.
+#[cfg(target_os = "linux")]
+fn read_build(path: &std::path::Path) -> anyhow::Result<FccParams> {
+    #[derive(serde::Deserialize)]
+    struct File {
+        params: FccParams,
+    }
+    let text =
+        std::fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))?;
+    let f: File = serde_json::from_str(&text).with_context(|| {
+        format!(
+            "{}: not an fcc_params.json written by `fcc gen` (no \"params\")",
+            path.display()
+        )
+    })?;
+    f.params
+        .validate_for_hardware()
+        .with_context(|| path.display().to_string())?;
+    Ok(f.params)
+}
+
+#[cfg(target_os = "linux")]
+fn open_linux(args: &BoardRunArgs, core: &str, params: &std::path::Path) -> anyhow::Result<Target> {
+    let p = read_build(params)?;
+    if args.cluster.model.label_bits != p.label_bits {
+        bail!(
+            "--label-bits {} differs from the core's B = {} ({}): give --label-bits {}",
+            args.cluster.model.label_bits,
+            p.label_bits,
+            params.display(),
+            p.label_bits
+        );
+    }
+    let expect = fcc_sim::build_expect(&p)?;
+    let hal = fcc_driver::linux::LinuxHal::open(core, &args.uio_dma, &args.udmabuf)?;
+    let mut d = Driver::open(hal, &expect).map_err(|e| anyhow::anyhow!("{e}"))?;
+    recover_if_busy(&mut d, core)?;
+    Ok(Target::Linux(Box::new(d), p))
+}
+
+#[cfg(not(target_os = "linux"))]
+fn open_linux(_: &BoardRunArgs, _: &str, _: &std::path::Path) -> anyhow::Result<Target> {
+    bail!("--uio needs Linux (UIO and u-dma-buf); use --virtual here")
+}
+
+/// A core left mid-frame by an earlier run is reset before the first frame.
+#[cfg(target_os = "linux")]
+fn recover_if_busy<H: fcc_driver::Hal>(d: &mut Driver<H>, what: &str) -> anyhow::Result<()> {
+    if let Some((st, mm, s2)) = d.core_busy().map_err(|e| anyhow::anyhow!("{e}"))? {
+        eprintln!(
+            "{what}: the core or the DMA was busy (STATUS {st:#x}, MM2S DMASR {mm:#010x}, S2MM DMASR {s2:#010x}), left by an earlier run: resetting both"
+        );
+        d.recover().map_err(|e| anyhow::anyhow!("{e}"))?;
+    }
+    Ok(())
+}
+
+enum Target {
+    /// One virtual board per configuration (parameter hash).
+    Virtual(HashMap<String, Driver<VirtualBoard>>),
+    /// A board under Linux and the build of its core.
+    #[cfg(target_os = "linux")]
+    Linux(Box<Driver<fcc_driver::linux::LinuxHal>>, FccParams),
+}
+
+struct Runner {
+    target: RefCell<Target>,
+    frames: RefCell<(usize, f64)>,
+}
+
+impl Runner {
+    fn new(target: Target) -> Runner {
+        Runner {
+            target: RefCell::new(target),
+            frames: RefCell::new((0, 0.0)),
+        }
+    }
+
+    fn summary(&self) -> String {
+        let (n, ms) = *self.frames.borrow();
+        format!(
+            "PASS: {n} frame{} through the core, every label equal to the golden model's, {ms:.3} ms of core time",
+            if n == 1 { "" } else { "s" }
+        )
+    }
+}
+
+/// The run parameters of a frame under `p` (rows, cols, K, Q7.8 thresholds).
+fn run_config(p: &FccParams) -> RunConfig {
+    fcc_sim::build_run(p)
+}
+
+fn driver_err<E: std::fmt::Display>(
+    name: &str,
+) -> impl FnOnce(fcc_driver::Error<E>) -> anyhow::Error + '_ {
+    move |e| anyhow::anyhow!("{name}: {e}")
+}
+
+impl Hardware for Runner {
+    fn cluster(
+        &self,
+        name: &str,
+        kept: &RangeImage,
+        gold: &PipelineResult,
+    ) -> anyhow::Result<Vec<u32>> {
+        let p = FccParams {
+            labels_per_beat: fcc_driver::LABELS_PER_BEAT,
+            ..gold.params.clone()
+        };
+        let mut labels = vec![0u32; kept.pixels()];
+        let mut wall = Instant::now();
+        let mut target = self.target.borrow_mut();
+        let (report, clock_mhz, simulated) = match &mut *target {
+            Target::Virtual(boards) => {
+                p.validate_for_hardware()
+                    .with_context(|| format!("{name}: this frame cannot run on the core"))?;
+                let key = p.hash();
+                if !boards.contains_key(&key) {
+                    let step = if fcc_sim::is_cached(&p)? {
+                        format!("{name}: loading the cached Verilator model")
+                    } else {
+                        format!(
+                            "{name}: building the Verilator model of {} (first run of these parameters, a few minutes; cached in {})",
+                            fcc_rtl::param_summary(&p),
+                            fcc_sim::cache_root().display()
+                        )
+                    };
+                    let hb = crate::progress::Heartbeat::start(&step);
+                    let (board, expect) = fcc_sim::virtual_board(&p)?;
+                    hb.done();
+                    let d = Driver::open(board, &expect).map_err(driver_err(name))?;
+                    boards.insert(key.clone(), d);
+                }
+                let d = boards.get_mut(&key).context("virtual board")?;
+                wall = Instant::now();
+                eprintln!(
+                    "{name}: {} x {} through the virtual board ...",
+                    p.rows, p.cols
+                );
+                let r = d
+                    .run_frame(&run_config(&p), Pixels::XyzF32(&kept.xyz), &mut labels)
+                    .map_err(driver_err(name))?;
+                (r, p.clock_mhz, true)
+            }
+            #[cfg(target_os = "linux")]
+            Target::Linux(d, build) => {
+                let r = d
+                    .run_frame(&run_config(&p), Pixels::XyzF32(&kept.xyz), &mut labels)
+                    .map_err(driver_err(name))?;
+                (r, build.clock_mhz, false)
+            }
+        };
+        compare(name, &p, &gold.clustering, &labels, &report.status)?;
+        let s = &report.status;
+        let ms = report.time_ns as f64 / 1e6;
+        {
+            let mut f = self.frames.borrow_mut();
+            f.0 += 1;
+            f.1 += ms;
+        }
+        println!(
+            "{name}: {} x {}, K {}: {:.3} ms{} at {clock_mhz} MHz, {} clusters, {} provisional labels, {} joins, frame {}{}; labels equal to the golden model's",
+            p.rows,
+            p.cols,
+            p.fsize,
+            ms,
+            if simulated {
+                format!(" (simulated; {:.1} s wall)", wall.elapsed().as_secs_f64())
+            } else {
+                String::new()
+            },
+            s.clusters,
+            s.provisional,
+            s.joins,
+            s.frame_count,
+            if s.overflow {
+                format!(", LABEL OVERFLOW: {} points unlabelled", s.unlabelled)
+            } else {
+                String::new()
+            },
+        );
+        Ok(labels)
+    }
+}
+
+/// Every label and the status against the golden model; the first
+/// differing pixel on a mismatch.
+fn compare(
+    name: &str,
+    p: &FccParams,
+    gold: &fcc_golden::Clustering,
+    got: &[u32],
+    s: &fcc_driver::FrameStatus,
+) -> anyhow::Result<()> {
+    if let Some(i) = (0..gold.labels.len()).find(|&i| got.get(i) != Some(&gold.labels[i])) {
+        let bad = gold.labels.iter().zip(got).filter(|(a, b)| a != b).count();
+        bail!(
+            "{name}: the core's labels differ from the golden model's ({}): first mismatch at row {} col {}: expected {} != got {} ({bad} pixels differ)",
+            fcc_rtl::param_summary(p),
+            i / p.cols,
+            i % p.cols,
+            gold.labels[i],
+            got.get(i).map_or("nothing".to_string(), |v| v.to_string())
+        );
+    }
+    let pairs = [
+        ("clusters", u64::from(gold.clusters), u64::from(s.clusters)),
+        (
+            "provisional labels",
+            u64::from(gold.provisional),
+            u64::from(s.provisional),
+        ),
+        ("overflow", u64::from(gold.overflow), u64::from(s.overflow)),
+        (
+            "unlabelled points",
+            gold.unlabelled as u64,
+            u64::from(s.unlabelled),
+        ),
+    ];
+    for (what, e, g) in pairs {
+        if e != g {
+            bail!("{name}: status {what}: expected {e} != got {g}");
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use fcc_golden::{cluster, Frame};
+
+    #[test]
+    fn mismatch_names_first_pixel_expected_and_got_and_status_differences() {
+        let p = FccParams {
+            rows: 2,
+            cols: 3,
+            fsize: 3,
+            ..FccParams::default()
+        };
+        let xyz = [
+            10.0,
+            0.0,
+            0.0,
+            10.0,
+            0.25,
+            0.0,
+            f64::NAN,
+            0.0,
+            0.0, //
+            10.0,
+            0.0,
+            -0.5,
+            f64::NAN,
+            0.0,
+            0.0,
+            20.0,
+            0.0,
+            0.0,
+        ];
+        let gold = cluster(&p, &Frame::from_xyz_f64(2, 3, &xyz), MergeMode::Exact).unwrap();
+        let status = fcc_driver::FrameStatus {
+            clusters: gold.clusters,
+            provisional: gold.provisional,
+            ..Default::default()
+        };
+        compare("f", &p, &gold, &gold.labels, &status).unwrap();
+        let mut got = gold.labels.clone();
+        got[5] += 1;
+        let e = compare("f", &p, &gold, &got, &status)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("row 1 col 2: expected 2 != got 3 (1 pixels differ)"),
+            "{e}"
+        );
+        let bad = fcc_driver::FrameStatus {
+            clusters: 9,
+            ..status
+        };
+        let e = compare("f", &p, &gold, &gold.labels, &bad)
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("status clusters: expected 2 != got 9"), "{e}");
+    }
+}

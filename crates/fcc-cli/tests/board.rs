@@ -1,0 +1,156 @@
+//! `fcc board run --virtual` end to end: the four Ouster captures at their
+//! own size through the driver, the AXI DMA model and the Verilator model of
+//! the core, every label checked against the golden model by the command
+//! itself; its outputs equal those of `fcc cluster`; and its refusals.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+use fcc_lidar::ouster::SAMPLE_CAPTURES;
+
+fn fcc(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_fcc"))
+        .args(args)
+        .output()
+        .expect("run fcc")
+}
+
+fn tmpdir(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("fcc-board-{}-{name}", std::process::id()));
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+fn s(p: &Path) -> &str {
+    p.to_str().unwrap()
+}
+
+fn text(o: &Output) -> String {
+    format!(
+        "{}{}",
+        String::from_utf8_lossy(&o.stdout),
+        String::from_utf8_lossy(&o.stderr)
+    )
+}
+
+/// Each capture at its own size (32, 64 and 128 beams x 1024) on the
+/// default K = 7 core: the same Verilator models as the regression's
+/// `real_ouster_frames_at_their_own_size` (shared through the cache).
+#[test]
+fn ouster_captures_on_the_virtual_board_equal_the_golden_model() {
+    let data = Path::new(env!("CARGO_MANIFEST_DIR")).join("../fcc-lidar/tests/data");
+    let d = tmpdir("ouster");
+    for (pcap, json) in SAMPLE_CAPTURES {
+        let stem = pcap.trim_end_matches(".pcap");
+        let (hw, sw) = (
+            d.join(format!("{stem}_hw.npy")),
+            d.join(format!("{stem}_sw.npy")),
+        );
+        let input = data.join(pcap);
+        let meta = data.join(json);
+        let o = fcc(&[
+            "board",
+            "run",
+            "--virtual",
+            "--input",
+            s(&input),
+            "--meta",
+            s(&meta),
+            "--output",
+            s(&hw),
+        ]);
+        let out = text(&o);
+        assert!(o.status.success(), "{pcap}: {out}");
+        assert!(out.contains("labels equal to the golden model's"), "{out}");
+        assert!(out.contains("PASS: 1 frame through the core"), "{out}");
+        eprintln!("{out}");
+        let o = fcc(&[
+            "cluster",
+            "--input",
+            s(&input),
+            "--meta",
+            s(&meta),
+            "--output",
+            s(&sw),
+        ]);
+        assert!(o.status.success(), "{pcap}: {}", text(&o));
+        let (a, b) = (
+            fcc_npy::read_labels(&hw).unwrap(),
+            fcc_npy::read_labels(&sw).unwrap(),
+        );
+        assert_eq!((a.rows, a.cols), (b.rows, b.cols), "{pcap}");
+        if let Some(i) = (0..a.labels.len()).find(|&i| a.labels[i] != b.labels[i]) {
+            panic!(
+                "{pcap}: board output differs from fcc cluster at row {} col {}: expected {} != got {}",
+                i / a.cols,
+                i % a.cols,
+                b.labels[i],
+                a.labels[i]
+            );
+        }
+    }
+    let _ = std::fs::remove_dir_all(&d);
+}
+
+#[test]
+fn board_run_says_where_the_core_must_be_and_refuses_paper_merging() {
+    let data = Path::new(env!("CARGO_MANIFEST_DIR")).join("../fcc-lidar/tests/data");
+    let input = data.join(SAMPLE_CAPTURES[1].0);
+    let o = fcc(&["board", "run", "--input", s(&input)]);
+    assert!(!o.status.success());
+    assert!(
+        text(&o).contains("--virtual, or --uio NAME"),
+        "{}",
+        text(&o)
+    );
+    let o = fcc(&["board", "run", "--uio", "fcc", "--input", s(&input)]);
+    assert!(!o.status.success());
+    assert!(text(&o).contains("--params"), "{}", text(&o));
+    let o = fcc(&[
+        "board",
+        "run",
+        "--virtual",
+        "--merge",
+        "paper",
+        "--input",
+        s(&input),
+    ]);
+    assert!(!o.status.success());
+    assert!(text(&o).contains("drop --merge paper"), "{}", text(&o));
+}
+
+#[test]
+fn board_run_reads_the_build_from_fcc_params_json_and_refuses_garbage() {
+    let d = tmpdir("params");
+    let bad = d.join("fcc_params.json");
+    std::fs::write(&bad, "{\"rows\": 64}").unwrap();
+    let data = Path::new(env!("CARGO_MANIFEST_DIR")).join("../fcc-lidar/tests/data");
+    let input = data.join(SAMPLE_CAPTURES[1].0);
+    let o = fcc(&[
+        "board",
+        "run",
+        "--uio",
+        "fcc",
+        "--params",
+        s(&bad),
+        "--input",
+        s(&input),
+    ]);
+    assert!(!o.status.success());
+    assert!(text(&o).contains("not an fcc_params.json"), "{}", text(&o));
+    // A valid build, but no UIO device of that name on this machine.
+    let good = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../rtl_out/fcc_params.json");
+    let o = fcc(&[
+        "board",
+        "run",
+        "--uio",
+        "no-such-core",
+        "--params",
+        s(&good),
+        "--input",
+        s(&input),
+    ]);
+    assert!(!o.status.success());
+    assert!(text(&o).contains("UIO"), "{}", text(&o));
+    let _ = std::fs::remove_dir_all(&d);
+}

@@ -1,0 +1,262 @@
+//! `Driver::open` on a register-level fake of the core and the DMA: the
+//! checks that need no simulation (ID word, hash, labels per beat, DMA
+//! length width, a DMA reset that never ends, run parameters against the
+//! build's limits). Frames are run on the virtual board (`fcc-sim`).
+
+use std::collections::HashMap;
+use std::fmt;
+
+use fcc_driver::{dma, BuildExpect, DmaBuffer, Driver, Error, Hal, Pixels, RunConfig, Window};
+use fcc_regmap::{bits, offset, ID_MAGIC};
+
+#[derive(Debug)]
+struct Never;
+impl fmt::Display for Never {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str("never")
+    }
+}
+
+struct Buf(Vec<u8>, u64);
+impl DmaBuffer for Buf {
+    fn phys(&self) -> u64 {
+        self.1
+    }
+    fn bytes(&self) -> &[u8] {
+        &self.0
+    }
+    fn bytes_mut(&mut self) -> &mut [u8] {
+        &mut self.0
+    }
+}
+
+/// Registers as a map; time moves 1 us per access; the DMA's reset ends
+/// at once unless `reset_sticks`.
+struct Fake {
+    core: HashMap<u32, u32>,
+    dma: HashMap<u32, u32>,
+    t: u64,
+    reset_sticks: bool,
+}
+
+const HASH: u64 = 0x0123_4567_89ab_cdef;
+
+fn fake(lpb: u32) -> Fake {
+    let core = HashMap::from([
+        (offset::ID, ID_MAGIC),
+        (offset::HASH_LO, HASH as u32),
+        (offset::HASH_HI, (HASH >> 32) as u32),
+        (offset::K_MAX, 7),
+        (offset::ROWS_MAX, 16),
+        (offset::COLS_MAX, 256),
+        (offset::LABEL_BITS, 11),
+        (offset::LABELS_PER_BEAT, lpb),
+        (offset::CLOCK_KHZ, 200_000),
+        (offset::STATUS, bits::STATUS_IDLE),
+    ]);
+    Fake {
+        core,
+        dma: HashMap::from([
+            (dma::MM2S_DMASR, dma::SR_HALTED),
+            (dma::S2MM_DMASR, dma::SR_HALTED),
+        ]),
+        t: 0,
+        reset_sticks: false,
+    }
+}
+
+impl Hal for Fake {
+    type Buffer = Buf;
+    type Error = Never;
+    fn read32(&mut self, w: Window, o: u32) -> Result<u32, Never> {
+        self.t += 1000;
+        let m = match w {
+            Window::Core => &self.core,
+            Window::Dma => &self.dma,
+        };
+        Ok(m.get(&o).copied().unwrap_or(0))
+    }
+    fn write32(&mut self, w: Window, o: u32, v: u32) -> Result<(), Never> {
+        self.t += 1000;
+        match w {
+            Window::Core => {
+                if o == offset::CONTROL {
+                    self.core.insert(o, v & bits::CONTROL_IRQ_ENABLE);
+                }
+            }
+            Window::Dma => {
+                let v = if o == dma::MM2S_DMACR && !self.reset_sticks {
+                    v & !dma::CR_RESET
+                } else {
+                    v
+                };
+                self.dma.insert(o, v);
+            }
+        }
+        Ok(())
+    }
+    fn alloc_dma(&mut self, len: usize) -> Result<Buf, Never> {
+        Ok(Buf(vec![0; len], 0x1000_0000))
+    }
+    fn cache_clean(&mut self, _: &mut Buf, _: usize, _: usize) -> Result<(), Never> {
+        Ok(())
+    }
+    fn cache_invalidate(&mut self, _: &mut Buf, _: usize, _: usize) -> Result<(), Never> {
+        Ok(())
+    }
+    fn wait_irq(&mut self, us: u64) -> Result<bool, Never> {
+        self.t += us * 1000;
+        Ok(false)
+    }
+    fn now_ns(&mut self) -> u64 {
+        self.t
+    }
+}
+
+fn expect() -> BuildExpect {
+    BuildExpect {
+        hash: HASH,
+        th_h_q: 128,
+        th_v_q: 256,
+        dma_length_bits: 16,
+    }
+}
+
+fn open_err(hal: Fake, e: &BuildExpect) -> Error<Never> {
+    match Driver::open(hal, e) {
+        Ok(_) => panic!("open should fail"),
+        Err(e) => e,
+    }
+}
+
+#[test]
+fn wrong_id_word_says_no_fcc_core() {
+    let mut f = fake(4);
+    f.core.insert(offset::ID, 0xdead_beef);
+    let e = open_err(f, &expect());
+    assert!(matches!(e, Error::NotFcc { id: 0xdead_beef }), "{e}");
+    assert!(e.to_string().contains("no FCC core"), "{e}");
+}
+
+#[test]
+fn other_hash_names_both_hashes() {
+    let e = open_err(
+        fake(4),
+        &BuildExpect {
+            hash: 1,
+            ..expect()
+        },
+    );
+    let msg = e.to_string();
+    assert!(
+        msg.contains("0123456789abcdef") && msg.contains("0000000000000001"),
+        "{msg}"
+    );
+}
+
+#[test]
+fn two_labels_per_beat_is_refused_for_the_dma() {
+    let e = open_err(fake(2), &expect());
+    assert!(e.to_string().contains("--labels-per-beat 4"), "{e}");
+}
+
+#[test]
+fn dma_length_width_outside_pg021_range_is_refused() {
+    let e = open_err(
+        fake(4),
+        &BuildExpect {
+            dma_length_bits: 27,
+            ..expect()
+        },
+    );
+    assert!(e.to_string().contains("c_sg_length_width"), "{e}");
+}
+
+#[test]
+fn dma_reset_that_never_ends_is_a_clear_error() {
+    let mut f = fake(4);
+    f.reset_sticks = true;
+    let e = open_err(f, &expect());
+    assert!(matches!(e, Error::ResetStuck { .. }), "{e}");
+}
+
+#[test]
+fn frame_too_long_for_the_dma_length_register_is_refused() {
+    // 16 x 256 x 8 bytes = 32 KiB > 2^12 - 1.
+    let mut d = Driver::open(
+        fake(4),
+        &BuildExpect {
+            dma_length_bits: 12,
+            ..expect()
+        },
+    )
+    .unwrap();
+    let run = d.defaults();
+    let mut labels = vec![0; 4096];
+    let pts = vec![None; 4096];
+    let e = d
+        .run_frame(&run, Pixels::Points(&pts), &mut labels)
+        .unwrap_err();
+    assert!(
+        matches!(
+            e,
+            Error::TooLong {
+                bytes: 32768,
+                length_bits: 12,
+                ..
+            }
+        ),
+        "{e}"
+    );
+}
+
+#[test]
+fn run_parameters_outside_the_build_limits_are_refused() {
+    let mut d = Driver::open(fake(4), &expect()).unwrap();
+    let base = d.defaults();
+    assert_eq!(
+        base,
+        RunConfig {
+            rows: 16,
+            cols: 256,
+            k: 7,
+            th_h_q: 128,
+            th_v_q: 256
+        }
+    );
+    for (run, what) in [
+        (RunConfig { k: 9, ..base }, "K"),
+        (RunConfig { k: 1, ..base }, "K"),
+        (RunConfig { rows: 0, ..base }, "rows"),
+        (RunConfig { cols: 257, ..base }, "cols"),
+        (RunConfig { cols: 5, ..base }, "cols"),
+        (RunConfig { th_v_q: 0, ..base }, "th_V (Q7.8)"),
+        // Within the limits, but this core has no run registers.
+        (RunConfig { k: 5, ..base }, "K"),
+        (RunConfig { rows: 8, ..base }, "rows"),
+    ] {
+        match d.program_run(&run) {
+            Err(Error::RunParams { what: w, .. }) => assert_eq!(w, what, "{run:?}"),
+            other => panic!("{run:?}: expected a refusal of {what}, got {other:?}"),
+        }
+    }
+    d.program_run(&base).unwrap();
+}
+
+#[test]
+fn a_frame_that_never_finishes_times_out_with_the_state_seen() {
+    let mut d = Driver::open(fake(4), &expect()).unwrap();
+    let run = d.defaults();
+    let mut labels = vec![0; 4096];
+    let xyz = vec![1.0f32; 4096 * 3];
+    let e = d
+        .run_frame(&run, Pixels::XyzF32(&xyz), &mut labels)
+        .unwrap_err();
+    match &e {
+        Error::Timeout { stage, .. } => assert!(stage.contains("frame-done"), "{e}"),
+        _ => panic!("expected a timeout, got {e}"),
+    }
+    // MM2S was started with the whole frame before the wait.
+    let tx = d.hal().dma.get(&dma::MM2S_LENGTH).copied();
+    assert_eq!(tx, Some(4096 * 8));
+}

@@ -1,0 +1,90 @@
+//! The pixel and label formats of the FCC core, written once.
+//!
+//! The golden model (`fcc-golden`) quantises its input with [`quantize`] and
+//! [`quantize_point`]; drivers (`fcc-driver`, bare metal or Linux) quantise
+//! and pack frames with the same functions, so a frame sent to the hardware
+//! is exactly the frame the golden model clusters. No dependencies and no
+//! `std`, so an embedded driver can use it.
+//!
+//! Input beat (64 bits, one pixel): bits 15:0 x, 31:16 y, 47:32 z (Q7.8 two's
+//! complement), bit 48 = 1 when the pixel holds a point; bits 63:49 zero.
+//! Output beat (64 bits): label of slot `s` in bits `16*s+15 : 16*s`.
+#![no_std]
+
+/// Fractional bits of the Q7.8 coordinate format.
+pub const FRAC_BITS: u32 = 8;
+/// One metre in Q7.8 units.
+pub const Q_ONE: f64 = (1u32 << FRAC_BITS) as f64;
+
+/// A point in Q7.8 fixed point: x, y, z in units of 1/256 m.
+pub type Point = [i16; 3];
+
+/// Bit of the input beat that marks a pixel holding a point.
+pub const PIXEL_VALID_BIT: u32 = 48;
+/// Bytes of one input beat (one pixel).
+pub const PIXEL_BYTES: usize = 8;
+/// Bytes of one output beat.
+pub const LABEL_BEAT_BYTES: usize = 8;
+/// Bits of one label slot in an output beat.
+pub const LABEL_SLOT_BITS: u32 = 16;
+
+/// Quantise one coordinate in metres to Q7.8:
+/// `sign(x) * floor(|x| * 256 + 0.5)`, or `None` when `x` is not finite or
+/// the result falls outside `[-32768, 32767]`.
+pub fn quantize(x: f64) -> Option<i16> {
+    if !x.is_finite() {
+        return None;
+    }
+    let abs = if x < 0.0 { -x } else { x };
+    // |x| * 256 + 0.5 is non-negative, so truncation is the floor; the cast
+    // saturates, so huge values stay out of range.
+    let mag = (abs * Q_ONE + 0.5) as u64;
+    if x < 0.0 {
+        (mag <= 32768).then(|| (-(mag as i32)) as i16)
+    } else {
+        (mag <= 32767).then_some(mag as i16)
+    }
+}
+
+/// Quantise a whole point. The empty-pixel rule: the pixel is empty when any
+/// coordinate is (not finite, or outside the Q7.8 range).
+pub fn quantize_point(x: f64, y: f64, z: f64) -> Option<Point> {
+    Some([quantize(x)?, quantize(y)?, quantize(z)?])
+}
+
+/// The input beat of one pixel (0 for an empty pixel).
+pub fn pixel_beat(p: Option<Point>) -> u64 {
+    match p {
+        None => 0,
+        Some([x, y, z]) => {
+            u64::from(x as u16)
+                | (u64::from(y as u16) << 16)
+                | (u64::from(z as u16) << 32)
+                | (1 << PIXEL_VALID_BIT)
+        }
+    }
+}
+
+/// Label of slot `s` of an output beat.
+pub fn label_of_beat(beat: u64, s: usize) -> u32 {
+    ((beat >> (LABEL_SLOT_BITS as usize * s)) & 0xffff) as u32
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn pixel_beat_layout_and_empty_pixel() {
+        assert_eq!(pixel_beat(None), 0);
+        assert_eq!(pixel_beat(Some([1, -1, -32768])), 0x0001_8000_ffff_0001);
+    }
+
+    #[test]
+    fn label_slots_little_end_first() {
+        let beat = 0x0004_0003_0002_0001u64;
+        for s in 0..4 {
+            assert_eq!(label_of_beat(beat, s), s as u32 + 1);
+        }
+    }
+}
