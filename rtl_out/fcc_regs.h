@@ -166,20 +166,20 @@
 #define FCC_RUN_TH_V_MIN 1u
 #define FCC_RUN_TH_V_MAX 32768u
 
-// RUN_ROWS (RW): Run: rows per frame (this version: ROWS_MAX only)
+// RUN_ROWS (RW): Run: rows per frame, 1 ..= ROWS_MAX
 #define FCC_REG_RUN_ROWS 0x08Cu
 #define FCC_REG_RUN_ROWS_RESET 0x00000040u
 #define FCC_RUN_ROWS_ROWS_SHIFT 0u
 #define FCC_RUN_ROWS_ROWS_MASK 0x000000FFu
-#define FCC_RUN_ROWS_MIN 64u
+#define FCC_RUN_ROWS_MIN 1u
 #define FCC_RUN_ROWS_MAX 64u
 
-// RUN_COLS (RW): Run: columns per frame (this version: COLS_MAX only)
+// RUN_COLS (RW): Run: columns per frame, RUN_COLS_MIN ..= COLS_MAX
 #define FCC_REG_RUN_COLS 0x090u
 #define FCC_REG_RUN_COLS_RESET 0x00000800u
 #define FCC_RUN_COLS_COLS_SHIFT 0u
 #define FCC_RUN_COLS_COLS_MASK 0x00001FFFu
-#define FCC_RUN_COLS_MIN 2048u
+#define FCC_RUN_COLS_MIN 32u
 #define FCC_RUN_COLS_MAX 2048u
 
 #endif  // FCC_REGS_H

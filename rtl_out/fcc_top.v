@@ -64,8 +64,8 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
     localparam  one8 = 8'h1;
     localparam  zero12 = 12'h0;
     localparam  one12 = 12'h1;
-    localparam  pen_col = 12'h7fe;
-    localparam  pen_row = 8'h3e;
+    localparam  two8 = 8'h2;
+    localparam  two12 = 12'h2;
     localparam  one10 = 10'b1;
     localparam  two10 = 10'b10;
     localparam  zero10 = 10'b0;
@@ -75,6 +75,7 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
     reg  intra$clk;
     reg  intra$rst;
     reg  [73:0] intra$pix;
+    reg  [11:0] intra$last_col;
     reg  [35:0] intra$th_h_c;
     wire  [133:0] intra$out;
     wire  [16:0] intra$provisional;
@@ -83,6 +84,7 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
     reg  window$clk;
     reg  window$rst;
     reg  [131:0] window$inp;
+    reg  [11:0] window$last_col;
     reg  [3:0] window$run_k;
     wire  [111:0] window$centre;
     wire  window$ent_ok$0;
@@ -487,8 +489,22 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
     reg  last_seen$d;
     wire  last_seen$q;
     reg  last_seen$clock;
+    reg  [11:0] last_col$d;
+    wire  [11:0] last_col$q;
+    reg  last_col$clock;
+    reg  [11:0] pen_col$d;
+    wire  [11:0] pen_col$q;
+    reg  pen_col$clock;
+    reg  [7:0] pen_row$d;
+    wire  [7:0] pen_row$q;
+    reg  pen_row$clock;
+    reg  one_row$d;
+    wire  one_row$q;
+    reg  one_row$clock;
 
     // Local signals
+    reg  [7:0] run_rows;
+    reg  [12:0] run_cols;
     reg  accept;
     reg  beat;
     reg  slot;
@@ -504,6 +520,7 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
         .clk(intra$clk),
         .rst(intra$rst),
         .pix(intra$pix),
+        .last_col(intra$last_col),
         .th_h_c(intra$th_h_c),
         .out(intra$out),
         .provisional(intra$provisional),
@@ -514,6 +531,7 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
         .clk(window$clk),
         .rst(window$rst),
         .inp(window$inp),
+        .last_col(window$last_col),
         .run_k(window$run_k),
         .centre(window$centre),
         .ent_ok$0(window$ent_ok$0),
@@ -963,6 +981,26 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
         .q(last_seen$q),
         .clock(last_seen$clock)
     );
+    fcc_top__last_col last_col(
+        .d(last_col$d),
+        .q(last_col$q),
+        .clock(last_col$clock)
+    );
+    fcc_top__pen_col pen_col(
+        .d(pen_col$d),
+        .q(pen_col$q),
+        .clock(pen_col$clock)
+    );
+    fcc_top__pen_row pen_row(
+        .d(pen_row$d),
+        .q(pen_row$q),
+        .clock(pen_row$clock)
+    );
+    fcc_top__one_row one_row(
+        .d(one_row$d),
+        .q(one_row$q),
+        .clock(one_row$clock)
+    );
 
     // Update code
     always @(*) begin
@@ -983,6 +1021,10 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
         credits$clock = clk;
         room$clock = clk;
         last_seen$clock = clk;
+        last_col$clock = clk;
+        pen_col$clock = clk;
+        pen_row$clock = clk;
+        one_row$clock = clk;
         fsm$d = fsm$q;
         tready_q$d = tready_q$q;
         pad_go$d = pad_go$q;
@@ -1000,6 +1042,10 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
         credits$d = credits$q;
         room$d = room$q;
         last_seen$d = last_seen$q;
+        last_col$d = last_col$q;
+        pen_col$d = pen_col$q;
+        pen_row$d = pen_row$q;
+        one_row$d = one_row$q;
         intra$clk = clk;
         window$clk = clk;
         dist_tree$clk = clk;
@@ -1033,6 +1079,12 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
         regs$frame_error = err$q;
         regs$joins = sort_net$joins;
         regs$gear_stalls = label_update$gear_stalls;
+        run_rows = regs$run_rows;
+        run_cols = regs$run_cols;
+        last_col$d = run_cols[11:0] - one12;
+        pen_col$d = run_cols[11:0] - two12;
+        pen_row$d = run_rows - two8;
+        one_row$d = run_rows == one8;
         accept = s_axis_tvalid & tready_q$q;
         beat = accept & ~discard$q;
         slot = beat | pad_go$q;
@@ -1051,20 +1103,23 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
         nxt_pad = pad$q;
         nxt_discard = discard$q;
         nxt_in_done = in_done$q;
+        if (row$q == zero8) begin
+            row_last$d = one_row$q;
+        end
         if (slot) begin
             first$d = 1'b0;
             col0$d = col_last$q;
             col$d = col$q + one12;
-            col_last$d = col$q == pen_col;
+            col_last$d = col$q == pen_col$q;
             if (col_last$q) begin
                 col$d = zero12;
                 col_last$d = 1'b0;
                 row$d = row$q + one8;
-                row_last$d = row$q == pen_row;
+                row_last$d = row$q == pen_row$q;
             end
             if (is_last) begin
                 row$d = zero8;
-                row_last$d = 1'b0;
+                row_last$d = one_row$q;
                 first$d = 1'b1;
                 nxt_in_done = 1'b1;
                 nxt_pad = 1'b0;
@@ -1155,6 +1210,8 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
         end
         intra$rst = regs$core_rst;
         intra$pix = slot_q$q;
+        intra$last_col = last_col$q;
+        window$last_col = last_col$q;
         intra$th_h_c = regs$run_th_h_c;
         window$rst = regs$core_rst;
         window$run_k = regs$run_k;
@@ -4762,12 +4819,13 @@ module fcc_top__in_done(d,q,clock);
 endmodule // fcc_top__in_done
 
 
-module fcc_intra(clk,rst,pix,th_h_c,out,provisional,overflow,unlabelled);
+module fcc_intra(clk,rst,pix,last_col,th_h_c,out,provisional,overflow,unlabelled);
 
     // Module arguments
     input wire  clk;
     input wire  rst;
     input wire  [73:0] pix;
+    input wire  [11:0] last_col;
     input wire  [35:0] th_h_c;
     output reg  [133:0] out;
     output reg  [16:0] provisional;
@@ -4782,7 +4840,7 @@ module fcc_intra(clk,rst,pix,th_h_c,out,provisional,overflow,unlabelled);
     localparam  max20 = 20'h7fff;
     localparam  max17 = 17'b111111111111111;
     localparam  half = 12'h3;
-    localparam  wrap_col = 12'h7fd;
+    localparam  half_m1 = 12'h2;
     localparam  st_empty = 2'b0;
     localparam  st_cont = 2'b1;
     localparam  st_new = 2'b10;
@@ -4938,6 +4996,9 @@ module fcc_intra(clk,rst,pix,th_h_c,out,provisional,overflow,unlabelled);
     reg  [11:0] rdcol9$d;
     wire  [11:0] rdcol9$q;
     reg  rdcol9$clock;
+    reg  [11:0] wrap_col$d;
+    wire  [11:0] wrap_col$q;
+    reg  wrap_col$clock;
     reg  [133:0] out_q$d;
     wire  [133:0] out_q$q;
     reg  out_q$clock;
@@ -5207,6 +5268,11 @@ module fcc_intra(clk,rst,pix,th_h_c,out,provisional,overflow,unlabelled);
         .q(rdcol9$q),
         .clock(rdcol9$clock)
     );
+    fcc_intra__wrap_col wrap_col(
+        .d(wrap_col$d),
+        .q(wrap_col$q),
+        .clock(wrap_col$clock)
+    );
     fcc_intra__out_q out_q(
         .d(out_q$d),
         .q(out_q$q),
@@ -5264,6 +5330,7 @@ module fcc_intra(clk,rst,pix,th_h_c,out,provisional,overflow,unlabelled);
         fl9$clock = clk;
         cur9$clock = clk;
         rdcol9$clock = clk;
+        wrap_col$clock = clk;
         out_q$clock = clk;
         unl$clock = clk;
         rm1$clock = clk;
@@ -5298,6 +5365,7 @@ module fcc_intra(clk,rst,pix,th_h_c,out,provisional,overflow,unlabelled);
         fl9$d = fl9$q;
         cur9$d = cur9$q;
         rdcol9$d = rdcol9$q;
+        wrap_col$d = wrap_col$q;
         out_q$d = out_q$q;
         unl$d = unl$q;
         rm1$d = rm1$q;
@@ -5421,9 +5489,10 @@ module fcc_intra(clk,rst,pix,th_h_c,out,provisional,overflow,unlabelled);
         fl9$d = fl8$q[15:0];
         cur9$d = cur8$q[15:0];
         rdcol9$d = p8$q[69:58] + half;
-        if (p8$q[69:58] >= wrap_col) begin
-            rdcol9$d = p8$q[69:58] - wrap_col;
+        if (p8$q[69:58] >= wrap_col$q) begin
+            rdcol9$d = p8$q[69:58] - wrap_col$q;
         end
+        wrap_col$d = last_col - half_m1;
         lok = p9$q[0:0] & p9$q[1:1] & labok9$q;
         out_q$d[0:0] = p9$q[0:0];
         out_q$d[1:1] = lok;
@@ -6503,6 +6572,25 @@ module fcc_intra__unl(d,q,clock);
 endmodule // fcc_intra__unl
 
 
+module fcc_intra__wrap_col(d,q,clock);
+
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__wrap_col
+
+
 module fcc_label_update(clk,rst,wr_valid,wr_state,wr_last,rb_start,fv,fval,gear_used,m_axis_tdata,m_axis_tkeep,m_axis_tvalid,m_axis_tlast,m_axis_tready,rb_done,gear_stalls);
 
     // Module arguments
@@ -6556,8 +6644,8 @@ module fcc_label_update(clk,rst,wr_valid,wr_state,wr_last,rb_start,fv,fval,gear_
     localparam  k_of$1 = 3'b11;
     localparam  k_of$2 = 3'b100;
     localparam  k_of$3 = 3'b101;
-    localparam  beats_m1 = 20'h7fff;
-    localparam  last_n = 3'b100;
+    localparam  lpb_log = 2'b10;
+    localparam  lpb_m1 = 2'b11;
     localparam  one20 = 20'h1;
     localparam  lpb20 = 20'h4;
     localparam  lpb3 = 3'b100;
@@ -6604,6 +6692,15 @@ module fcc_label_update(clk,rst,wr_valid,wr_state,wr_last,rb_start,fv,fval,gear_
     reg  [16:0] waddr$d;
     wire  [16:0] waddr$q;
     reg  waddr$clock;
+    reg  [19:0] wcnt$d;
+    wire  [19:0] wcnt$q;
+    reg  wcnt$clock;
+    reg  [19:0] beats_m1$d;
+    wire  [19:0] beats_m1$q;
+    reg  beats_m1$clock;
+    reg  [2:0] last_n$d;
+    wire  [2:0] last_n$q;
+    reg  last_n$clock;
     reg  active$d;
     wire  active$q;
     reg  active$clock;
@@ -6770,6 +6867,7 @@ module fcc_label_update(clk,rst,wr_valid,wr_state,wr_last,rb_start,fv,fval,gear_
     reg  [2:0] nsrc$2;
     reg  [2:0] nsrc$3;
     reg  [15:0] runv;
+    reg  [1:0] wrem;
 
     // Sub module instances
     fcc_label_update__fb fb(
@@ -6805,6 +6903,21 @@ module fcc_label_update(clk,rst,wr_valid,wr_state,wr_last,rb_start,fv,fval,gear_
         .d(waddr$d),
         .q(waddr$q),
         .clock(waddr$clock)
+    );
+    fcc_label_update__wcnt wcnt(
+        .d(wcnt$d),
+        .q(wcnt$q),
+        .clock(wcnt$clock)
+    );
+    fcc_label_update__beats_m1 beats_m1(
+        .d(beats_m1$d),
+        .q(beats_m1$q),
+        .clock(beats_m1$clock)
+    );
+    fcc_label_update__last_n last_n(
+        .d(last_n$d),
+        .q(last_n$q),
+        .clock(last_n$clock)
     );
     fcc_label_update__active active(
         .d(active$d),
@@ -7014,6 +7127,9 @@ module fcc_label_update(clk,rst,wr_valid,wr_state,wr_last,rb_start,fv,fval,gear_
         ws2$clock = clk;
         wsub$clock = clk;
         waddr$clock = clk;
+        wcnt$clock = clk;
+        beats_m1$clock = clk;
+        last_n$clock = clk;
         active$clock = clk;
         rpix$clock = clk;
         beats$clock = clk;
@@ -7043,6 +7159,9 @@ module fcc_label_update(clk,rst,wr_valid,wr_state,wr_last,rb_start,fv,fval,gear_
         ws2$d = ws2$q;
         wsub$d = wsub$q;
         waddr$d = waddr$q;
+        wcnt$d = wcnt$q;
+        beats_m1$d = beats_m1$q;
+        last_n$d = last_n$q;
         active$d = active$q;
         rpix$d = rpix$q;
         beats$d = beats$q;
@@ -7099,6 +7218,7 @@ module fcc_label_update(clk,rst,wr_valid,wr_state,wr_last,rb_start,fv,fval,gear_
         g$6$d = g$6$q;
         g$7$clock = clk;
         g$7$d = g$7$q;
+        wrem = wcnt$q[1:0] & lpb_m1;
         fb$clk = clk;
         fb$write_en = 1'b0;
         fb$write_addr = waddr$q;
@@ -7130,9 +7250,22 @@ module fcc_label_update(clk,rst,wr_valid,wr_state,wr_last,rb_start,fv,fval,gear_
                 fb$write_en = 1'b1;
                 waddr$d = waddr$q + one17;
             end
+            wcnt$d = wcnt$q + one20;
             if (wr_last) begin
                 wsub$d = b2_0;
                 waddr$d = zero17;
+                wcnt$d = zero20;
+                beats_m1$d = wcnt$q >> lpb_log;
+                last_n$d = n_of$1;
+                if (wrem == b2_1) begin
+                    last_n$d = n_of$2;
+                end
+                if (wrem == b2_2) begin
+                    last_n$d = n_of$3;
+                end
+                if (wrem == b2_3) begin
+                    last_n$d = n_of$4;
+                end
             end
         end
         ofree = ~o_valid$q | m_axis_tready;
@@ -7510,7 +7643,7 @@ module fcc_label_update(clk,rst,wr_valid,wr_state,wr_last,rb_start,fv,fval,gear_
             r1_n$d = lpb3;
             r1_last$d = 1'b0;
             if (lastb$q) begin
-                r1_n$d = last_n;
+                r1_n$d = last_n$q;
                 r1_last$d = 1'b1;
                 active$d = 1'b0;
             end
@@ -7724,8 +7857,8 @@ module fcc_label_update(clk,rst,wr_valid,wr_state,wr_last,rb_start,fv,fval,gear_
         if (rb_start) begin
             active$d = 1'b1;
             rpix$d = zero20;
-            beats$d = beats_m1;
-            lastb$d = beats_m1 == zero20;
+            beats$d = beats_m1$q;
+            lastb$d = beats_m1$q == zero20;
             outst$d = zero3;
             r1v$d = 1'b0;
             r2v$d = 1'b0;
@@ -7748,6 +7881,7 @@ module fcc_label_update(clk,rst,wr_valid,wr_state,wr_last,rb_start,fv,fval,gear_
             gn$d = zero4;
             wsub$d = b2_0;
             waddr$d = zero17;
+            wcnt$d = zero20;
         end
         m_axis_tdata = o_data$q;
         m_axis_tkeep = o_keep$q;
@@ -7796,6 +7930,25 @@ module fcc_label_update__beats(d,q,clock);
     end
 
 endmodule // fcc_label_update__beats
+
+
+module fcc_label_update__beats_m1(d,q,clock);
+
+    // Module arguments
+    input wire  [19:0] d;
+    output reg  [19:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 20'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__beats_m1
 
 
 module fcc_label_update__cur_run(d,q,clock);
@@ -8151,6 +8304,25 @@ module fcc_label_update__labs__3(d,q,clock);
     end
 
 endmodule // fcc_label_update__labs__3
+
+
+module fcc_label_update__last_n(d,q,clock);
+
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__last_n
 
 
 module fcc_label_update__lastb(d,q,clock);
@@ -8571,6 +8743,25 @@ module fcc_label_update__waddr(d,q,clock);
 endmodule // fcc_label_update__waddr
 
 
+module fcc_label_update__wcnt(d,q,clock);
+
+    // Module arguments
+    input wire  [19:0] d;
+    output reg  [19:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 20'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__wcnt
+
+
 module fcc_label_update__ws0(d,q,clock);
 
     // Module arguments
@@ -8645,6 +8836,25 @@ module fcc_label_update__wsub(d,q,clock);
     end
 
 endmodule // fcc_label_update__wsub
+
+
+module fcc_top__last_col(d,q,clock);
+
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__last_col
 
 
 module fcc_top__last_seen(d,q,clock);
@@ -10570,6 +10780,25 @@ module fcc_merge_table__x1(d,q,clock);
 endmodule // fcc_merge_table__x1
 
 
+module fcc_top__one_row(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__one_row
+
+
 module fcc_top__pad(d,q,clock);
 
     // Module arguments
@@ -10606,6 +10835,44 @@ module fcc_top__pad_go(d,q,clock);
     end
 
 endmodule // fcc_top__pad_go
+
+
+module fcc_top__pen_col(d,q,clock);
+
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__pen_col
+
+
+module fcc_top__pen_row(d,q,clock);
+
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__pen_row
 
 
 module fcc_regs(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata,s_axil_wstrb,s_axil_wvalid,s_axil_wready,s_axil_bresp,s_axil_bvalid,s_axil_bready,s_axil_araddr,s_axil_arvalid,s_axil_arready,s_axil_rdata,s_axil_rresp,s_axil_rvalid,s_axil_rready,frame_end,idle,clusters,provisional,overflow,unlabelled,frame_error,joins,gear_stalls,core_rst,irq,frame_done,st_clusters,st_provisional,st_overflow,st_unlabelled,st_frame_error,st_joins,st_gear_stalls,run_k,run_th_h_c,run_th_v_c,run_rows,run_cols);
@@ -10673,9 +10940,9 @@ module fcc_regs(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata
     localparam  k_max = 32'h7;
     localparam  th_min = 32'h1;
     localparam  th_max = 32'h8000;
-    localparam  rows_min = 32'h40;
+    localparam  rows_min = 32'h1;
     localparam  rows_max = 32'h40;
-    localparam  cols_min = 32'h800;
+    localparam  cols_min = 32'h20;
     localparam  cols_max = 32'h800;
     localparam  def_k = 4'h7;
     localparam  def_thh = 16'h80;
@@ -40223,12 +40490,13 @@ module fcc_top__tready_q(d,q,clock);
 endmodule // fcc_top__tready_q
 
 
-module fcc_window(clk,rst,inp,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_ok$4,ent_ok$5,ent_ok$6,ent_ok$7,ent_ok$8,ent_ok$9,ent_ok$10,ent_ok$11,ent_ok$12,ent_ok$13,ent_ok$14,ent_ok$15,ent_ok$16,ent_ok$17,ent_ok$18,ent_ok$19,ent_ok$20,ent_x$0,ent_x$1,ent_x$2,ent_x$3,ent_x$4,ent_x$5,ent_x$6,ent_x$7,ent_x$8,ent_x$9,ent_x$10,ent_x$11,ent_x$12,ent_x$13,ent_x$14,ent_x$15,ent_x$16,ent_x$17,ent_x$18,ent_x$19,ent_x$20,ent_y$0,ent_y$1,ent_y$2,ent_y$3,ent_y$4,ent_y$5,ent_y$6,ent_y$7,ent_y$8,ent_y$9,ent_y$10,ent_y$11,ent_y$12,ent_y$13,ent_y$14,ent_y$15,ent_y$16,ent_y$17,ent_y$18,ent_y$19,ent_y$20,ent_z$0,ent_z$1,ent_z$2,ent_z$3,ent_z$4,ent_z$5,ent_z$6,ent_z$7,ent_z$8,ent_z$9,ent_z$10,ent_z$11,ent_z$12,ent_z$13,ent_z$14,ent_z$15,ent_z$16,ent_z$17,ent_z$18,ent_z$19,ent_z$20,ent_rep$0,ent_rep$1,ent_rep$2,ent_rep$3,ent_rep$4,ent_rep$5,ent_rep$6,ent_rep$7,ent_rep$8,ent_rep$9,ent_rep$10,ent_rep$11,ent_rep$12,ent_rep$13,ent_rep$14,ent_rep$15,ent_rep$16,ent_rep$17,ent_rep$18,ent_rep$19,ent_rep$20,rep_we,rep_waddr,rep_wdata);
+module fcc_window(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_ok$4,ent_ok$5,ent_ok$6,ent_ok$7,ent_ok$8,ent_ok$9,ent_ok$10,ent_ok$11,ent_ok$12,ent_ok$13,ent_ok$14,ent_ok$15,ent_ok$16,ent_ok$17,ent_ok$18,ent_ok$19,ent_ok$20,ent_x$0,ent_x$1,ent_x$2,ent_x$3,ent_x$4,ent_x$5,ent_x$6,ent_x$7,ent_x$8,ent_x$9,ent_x$10,ent_x$11,ent_x$12,ent_x$13,ent_x$14,ent_x$15,ent_x$16,ent_x$17,ent_x$18,ent_x$19,ent_x$20,ent_y$0,ent_y$1,ent_y$2,ent_y$3,ent_y$4,ent_y$5,ent_y$6,ent_y$7,ent_y$8,ent_y$9,ent_y$10,ent_y$11,ent_y$12,ent_y$13,ent_y$14,ent_y$15,ent_y$16,ent_y$17,ent_y$18,ent_y$19,ent_y$20,ent_z$0,ent_z$1,ent_z$2,ent_z$3,ent_z$4,ent_z$5,ent_z$6,ent_z$7,ent_z$8,ent_z$9,ent_z$10,ent_z$11,ent_z$12,ent_z$13,ent_z$14,ent_z$15,ent_z$16,ent_z$17,ent_z$18,ent_z$19,ent_z$20,ent_rep$0,ent_rep$1,ent_rep$2,ent_rep$3,ent_rep$4,ent_rep$5,ent_rep$6,ent_rep$7,ent_rep$8,ent_rep$9,ent_rep$10,ent_rep$11,ent_rep$12,ent_rep$13,ent_rep$14,ent_rep$15,ent_rep$16,ent_rep$17,ent_rep$18,ent_rep$19,ent_rep$20,rep_we,rep_waddr,rep_wdata);
 
     // Module arguments
     input wire  clk;
     input wire  rst;
     input wire  [131:0] inp;
+    input wire  [11:0] last_col;
     input wire  [3:0] run_k;
     output reg  [111:0] centre;
     output reg  ent_ok$0;
@@ -40344,9 +40612,9 @@ module fcc_window(clk,rst,inp,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,e
     localparam  col_lo$0 = 12'h3;
     localparam  col_lo$1 = 12'h2;
     localparam  col_lo$2 = 12'h1;
-    localparam  col_hi$0 = 12'h7fe;
-    localparam  col_hi$1 = 12'h7fd;
-    localparam  col_hi$2 = 12'h7fc;
+    localparam  hi_off$0 = 12'h1;
+    localparam  hi_off$1 = 12'h2;
+    localparam  hi_off$2 = 12'h3;
     localparam  row_lo$0 = 8'h3;
     localparam  row_lo$1 = 8'h2;
     localparam  row_lo$2 = 8'h1;
@@ -40826,6 +41094,15 @@ module fcc_window(clk,rst,inp,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,e
     reg  col_in$6$d;
     wire  col_in$6$q;
     reg  col_in$6$clock;
+    reg  [11:0] col_hi$0$d;
+    wire  [11:0] col_hi$0$q;
+    reg  col_hi$0$clock;
+    reg  [11:0] col_hi$1$d;
+    wire  [11:0] col_hi$1$q;
+    reg  col_hi$1$clock;
+    reg  [11:0] col_hi$2$d;
+    wire  [11:0] col_hi$2$q;
+    reg  col_hi$2$clock;
 
     // Local signals
     reg  view_lok$0;
@@ -41677,6 +41954,21 @@ module fcc_window(clk,rst,inp,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,e
         .q(col_in$6$q),
         .clock(col_in$6$clock)
     );
+    fcc_window__col_hi__0 col_hi$0(
+        .d(col_hi$0$d),
+        .q(col_hi$0$q),
+        .clock(col_hi$0$clock)
+    );
+    fcc_window__col_hi__1 col_hi$1(
+        .d(col_hi$1$d),
+        .q(col_hi$1$q),
+        .clock(col_hi$1$clock)
+    );
+    fcc_window__col_hi__2 col_hi$2(
+        .d(col_hi$2$d),
+        .q(col_hi$2$q),
+        .clock(col_hi$2$clock)
+    );
 
     // Update code
     always @(*) begin
@@ -42114,12 +42406,18 @@ module fcc_window(clk,rst,inp,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,e
         col_in$5$d = run_k >= col_k$5;
         col_in$6$clock = clk;
         col_in$6$d = run_k >= col_k$6;
+        col_hi$0$clock = clk;
+        col_hi$0$d = last_col - hi_off$0;
+        col_hi$1$clock = clk;
+        col_hi$1$d = last_col - hi_off$1;
+        col_hi$2$clock = clk;
+        col_hi$2$d = last_col - hi_off$2;
         col_in$0$d = (w2$q[85:74] >= col_lo$0) & (run_k >= col_k$0);
         col_in$1$d = (w2$q[85:74] >= col_lo$1) & (run_k >= col_k$1);
         col_in$2$d = (w2$q[85:74] >= col_lo$2) & (run_k >= col_k$2);
-        col_in$4$d = (w2$q[85:74] <= col_hi$0) & (run_k >= col_k$4);
-        col_in$5$d = (w2$q[85:74] <= col_hi$1) & (run_k >= col_k$5);
-        col_in$6$d = (w2$q[85:74] <= col_hi$2) & (run_k >= col_k$6);
+        col_in$4$d = (w2$q[85:74] <= col_hi$0$q) & (run_k >= col_k$4);
+        col_in$5$d = (w2$q[85:74] <= col_hi$1$q) & (run_k >= col_k$5);
+        col_in$6$d = (w2$q[85:74] <= col_hi$2$q) & (run_k >= col_k$6);
         if (rst) begin
             w1$d[0:0] = 1'b0;
             w2$d[0:0] = 1'b0;
@@ -42432,6 +42730,63 @@ module fcc_window(clk,rst,inp,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,e
     end
 
 endmodule // fcc_window
+
+
+module fcc_window__col_hi__0(d,q,clock);
+
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__col_hi__0
+
+
+module fcc_window__col_hi__1(d,q,clock);
+
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__col_hi__1
+
+
+module fcc_window__col_hi__2(d,q,clock);
+
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__col_hi__2
 
 
 module fcc_window__col_in__0(d,q,clock);

@@ -503,7 +503,13 @@ fn refused_run_writes_keep_the_old_value_and_set_their_error_bit() {
             ),
             (
                 offset::RUN_COLS,
-                vec![0, p.cols as u32 + 1, 8191, 0x1_0000 + p.cols as u32],
+                vec![
+                    0,
+                    regmap::RUN_COLS_MIN - 1,
+                    p.cols as u32 + 1,
+                    8191,
+                    0x1_0000 + p.cols as u32,
+                ],
             ),
         ];
         for (off, values) in bad {

@@ -362,8 +362,13 @@ impl<H: Hal> Driver<H> {
         if run.rows == 0 || run.rows > b.rows_max {
             return bad("rows", run.rows, "must be 1 ..= ROWS_MAX", b.rows_max);
         }
-        if run.cols < run.k || run.cols > b.cols_max {
-            return bad("cols", run.cols, "must be K ..= COLS_MAX", b.cols_max);
+        if run.cols < fcc_regmap::RUN_COLS_MIN || run.cols > b.cols_max {
+            return bad(
+                "cols",
+                run.cols,
+                "must be RUN_COLS_MIN ..= COLS_MAX",
+                b.cols_max,
+            );
         }
         if run.th_h_q == 0 {
             return bad("th_H (Q7.8)", 0, "must be at least", 1);

@@ -75,3 +75,10 @@ pub mod bits {
 /// Largest threshold register value: `floor(th * 256 + 0.5)` of a threshold
 /// below 128 m (the Q7.8 rule of the golden model).
 pub const TH_Q_MAX: u32 = 0x8000;
+
+/// Fewest columns a frame may have (RUN_COLS), in every build. The
+/// representative of a row's first columns is written back a few tens of
+/// cycles after the pixel, and the last pixels of the same row read it for
+/// the next row (the window reads column (j + h) mod C), so a row must be
+/// longer than that pipeline; 32 leaves a margin for K_MAX = 11.
+pub const RUN_COLS_MIN: u32 = 32;

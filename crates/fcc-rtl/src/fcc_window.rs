@@ -55,6 +55,8 @@ pub struct FccWindow {
     pub rst: Signal<In, Bit>,
     /// Labelled pixel stream (stage W0).
     pub inp: Signal<In, WinPix>,
+    /// The frame's last column, C - 1 (stable while a frame runs).
+    pub last_col: Signal<In, Bits<12>>,
     /// The frame's filter size K (odd, 3 ..= the build's K).
     pub run_k: Signal<In, Bits<4>>,
     /// Centre pixel of the window (stage W3).
@@ -96,8 +98,10 @@ pub struct FccWindow {
     col_in: Vec<DFF<Bit>>,
     /// Column offset n < h: the lowest centre column with j+n-h >= 0.
     col_lo: Vec<Constant<Bits<12>>>,
-    /// Column offset n = h+1+t: the highest centre column with j+n-h <= C-1.
-    col_hi: Vec<Constant<Bits<12>>>,
+    /// Column offset n = h+1+t: the highest centre column with j+n-h <= C-1
+    /// (C - 1 = `last_col`), i.e. C - 2 - t.
+    col_hi: Vec<DFF<Bits<12>>>,
+    hi_off: Vec<Constant<Bits<12>>>,
     /// Per window row r: lowest centre row with a row h-r above it.
     row_lo: Vec<Constant<Bits<8>>>,
     /// Per window row r: the smallest K whose window reaches it, 2(h-r)+1.
@@ -120,6 +124,7 @@ impl FccWindow {
             clk: Default::default(),
             rst: Default::default(),
             inp: Default::default(),
+            last_col: Default::default(),
             run_k: Default::default(),
             centre: Default::default(),
             ent_ok: vec_of(n),
@@ -151,7 +156,8 @@ impl FccWindow {
             row_in: vec_of(h),
             col_in: vec_of(k),
             col_lo: (0..h).map(|n| kb((h - n) as u64)).collect(),
-            col_hi: (0..h).map(|t| kb((c - 2 - t) as u64)).collect(),
+            col_hi: vec_of(h),
+            hi_off: (0..h).map(|t| kb(1 + t as u64)).collect(),
             row_lo: (0..h).map(|r| kb((h - r) as u64)).collect(),
             row_k: (0..h).map(|r| kb((2 * (h - r) + 1) as u64)).collect(),
             col_k: (0..k).map(|n| kb((2 * n.abs_diff(h) + 1) as u64)).collect(),
@@ -233,13 +239,17 @@ impl Logic for FccWindow {
             self.col_in[n].clock.next = self.clk.val();
             self.col_in[n].d.next = self.run_k.val() >= self.col_k[n].val();
         }
+        for t in 0..self._h {
+            self.col_hi[t].clock.next = self.clk.val();
+            self.col_hi[t].d.next = self.last_col.val() - self.hi_off[t].val();
+        }
         for hh in self._h..(self._h + 1) {
             for n in 0..self._h {
                 self.col_in[n].d.next = (self.w2.q.val().col >= self.col_lo[n].val())
                     & (self.run_k.val() >= self.col_k[n].val());
             }
             for n in (self._h + 1)..self._k {
-                self.col_in[n].d.next = (self.w2.q.val().col <= self.col_hi[n - hh - 1].val())
+                self.col_in[n].d.next = (self.w2.q.val().col <= self.col_hi[n - hh - 1].q.val())
                     & (self.run_k.val() >= self.col_k[n].val());
             }
         }

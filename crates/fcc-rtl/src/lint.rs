@@ -20,6 +20,9 @@ pub fn waivers(p: &FccParams) -> String {
          // s_axis_tkeep is ignored by definition: every beat is one whole pixel\n\
          // (the port exists so that an AXI DMA's MM2S stream connects cleanly).\n\
          lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'s_axis_tkeep'*\"\n\
+         // The frame's columns C (<= 4096) are used modulo 4096 (as C - 1 and\n\
+         // C - 2, both below 4096), so bit 12 of the run value is not read.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'run_cols'[12]*\"\n\
          // rust-hdl writes each module's logic as one combinational always block.\n\
          // The sort network's block feeds the prefix network `kp` (the kept\n\
          // positions of the head record) and reads its outputs. The loop exists\n\
@@ -30,11 +33,7 @@ pub fn waivers(p: &FccParams) -> String {
          // every user. The centre buffer needs no level (the input credits bound\n\
          // it) and the join queue has no side RAMs.\n\
          lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'cb$level'*\"\n\
-         lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'jq$ram_*\"\n\
-         // The datapath runs the build's frame size: RUN_ROWS and RUN_COLS accept\n\
-         // only ROWS_MAX and COLS_MAX, so the active copies are not used yet.\n\
-         lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'regs$run_rows'*\"\n\
-         lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'regs$run_cols'*\"\n",
+         lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'jq$ram_*\"\n",
     );
     s.push_str(&axil_waivers("fcc_top.v"));
     s

@@ -18,7 +18,7 @@ use serde::Serialize;
 
 use crate::GENERATOR_VERSION;
 
-pub use fcc_regmap::{bits, offset, ADDR_BITS, ID_MAGIC, TH_Q_MAX};
+pub use fcc_regmap::{bits, offset, ADDR_BITS, ID_MAGIC, RUN_COLS_MIN, TH_Q_MAX};
 
 /// How software may access a register.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -78,15 +78,15 @@ pub struct RunRange {
     pub max: u32,
 }
 
-/// Smallest RUN_ROWS the build accepts. The datapath runs the build's own
-/// frame size only, so that is the only size accepted.
-pub fn run_rows_min(p: &FccParams) -> u32 {
-    p.rows as u32
+/// Smallest RUN_ROWS a build accepts: a frame of one row runs.
+pub fn run_rows_min(_p: &FccParams) -> u32 {
+    1
 }
 
-/// Smallest RUN_COLS the build accepts (see [`run_rows_min`]).
-pub fn run_cols_min(p: &FccParams) -> u32 {
-    p.cols as u32
+/// Smallest RUN_COLS a build accepts ([`RUN_COLS_MIN`]; every build has
+/// at least 256 columns).
+pub fn run_cols_min(_p: &FccParams) -> u32 {
+    RUN_COLS_MIN
 }
 
 /// The range of the run-parameter register at `off` in the build `p`
@@ -402,14 +402,14 @@ pub fn registers(p: &FccParams) -> Vec<Register> {
             "RUN_ROWS",
             offset::RUN_ROWS,
             p.rows,
-            "Run: rows per frame (this version: ROWS_MAX only)",
+            "Run: rows per frame, 1 ..= ROWS_MAX",
             whole("ROWS", 8, "rows"),
         ),
         run(
             "RUN_COLS",
             offset::RUN_COLS,
             p.cols,
-            "Run: columns per frame (this version: COLS_MAX only)",
+            "Run: columns per frame, RUN_COLS_MIN ..= COLS_MAX",
             whole("COLS", 13, "columns"),
         ),
     ]
