@@ -74,8 +74,8 @@ pub enum RtlError {
     #[error("{0}")]
     Board(String),
     #[error(
-        "refusing to overwrite files of another configuration:\n  {}\nchoose another --out, or pass --force to replace them",
-        .0.join("\n  ")
+        "refusing to overwrite files of another configuration: {}; choose another --out, or pass --force to replace them",
+        .0.join(", ")
     )]
     OtherConfiguration(Vec<String>),
     #[error("verilator --lint-only -Wall reported problems in {path}:\n{log}")]
