@@ -48,9 +48,12 @@
 #define FCC_OUT_WORDS ((FCC_PIXELS + FCC_LPB - 1u) / FCC_LPB)
 #define FCC_IN_BYTES (FCC_PIXELS * 8u)
 #define FCC_OUT_BYTES (FCC_OUT_WORDS * 8u)
-/* Q7.8: 1 m = 256; bit 48 of an input word marks a pixel with a point. */
+/* Q7.8: 1 m = 256; bit 48 of an input word marks a pixel with a point
+ * (fcc-pixel, the format the golden model and the drivers share). */
 #define FCC_Q_ONE 256.0
 #define FCC_VALID_BIT 48u
+/* 16-bit fields: coordinates in an input word, labels in an output word. */
+#define FCC_SLOT_BITS 16u
 /* Polls before a frame is given up (each poll is one register read). */
 #define FCC_POLL_LIMIT 100000000u
 
@@ -97,14 +100,14 @@ uint64_t fcc_pack_pixel(double x, double y, double z)
     if (!fcc_quantize(x, &q[0]) || !fcc_quantize(y, &q[1]) || !fcc_quantize(z, &q[2])) {
         return 0;
     }
-    return (uint64_t)(uint16_t)q[0] | ((uint64_t)(uint16_t)q[1] << 16) |
-           ((uint64_t)(uint16_t)q[2] << 32) | ((uint64_t)1 << FCC_VALID_BIT);
+    return (uint64_t)(uint16_t)q[0] | ((uint64_t)(uint16_t)q[1] << FCC_SLOT_BITS) |
+           ((uint64_t)(uint16_t)q[2] << (2u * FCC_SLOT_BITS)) | ((uint64_t)1 << FCC_VALID_BIT);
 }
 
 /* The label of pixel i (raster order) in the output buffer. */
 static uint32_t fcc_label(uint32_t i)
 {
-    return (uint32_t)(fcc_out[i / FCC_LPB] >> (16u * (i % FCC_LPB))) & 0xFFFFu;
+    return (uint32_t)(fcc_out[i / FCC_LPB] >> (FCC_SLOT_BITS * (i % FCC_LPB))) & 0xFFFFu;
 }
 
 /* A demonstration frame: two short walls of points 10 m ahead, on the

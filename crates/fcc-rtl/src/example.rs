@@ -4,13 +4,11 @@
 //! quantisation rule. Every number in it comes from `fcc_regs.h` (written
 //! from the same register map) or from [`FccParams`] through the generator.
 
-use fcc_params::{FccParams, Q_ONE};
+use fcc_params::FccParams;
+use fcc_pixel::{LABEL_SLOT_BITS, PIXEL_BYTES, PIXEL_VALID_BIT, Q_ONE};
 
 use crate::file_header;
 use crate::vivado::{Board, Ps};
-
-/// Bit of the input word that marks a pixel holding a point.
-pub const INPUT_VALID_BIT: u32 = 48;
 
 /// Writes of the run-time registers, before the frame is sent.
 ///
@@ -50,7 +48,13 @@ pub fn c_example(p: &FccParams, board: Board) -> String {
             ("ADDR_NOTE", addr_note.to_string()),
             ("CACHE_LINE", cache_line.to_string()),
             ("Q_ONE", format!("{Q_ONE:.1}")),
-            ("VALID_BIT", INPUT_VALID_BIT.to_string()),
+            ("VALID_BIT", PIXEL_VALID_BIT.to_string()),
+            ("PIXEL_BYTES", PIXEL_BYTES.to_string()),
+            ("SLOT_BITS", LABEL_SLOT_BITS.to_string()),
+            (
+                "SLOT_MASK",
+                format!("0x{:X}u", (1u64 << LABEL_SLOT_BITS) - 1),
+            ),
             ("RUN_WRITES", run),
         ],
     ));
@@ -101,11 +105,14 @@ const EXAMPLE: &str = r#"//
 #define FCC_PIXELS (FCC_ROWS * FCC_COLS)
 #define FCC_LPB FCC_REG_LABELS_PER_BEAT_RESET
 #define FCC_OUT_WORDS ((FCC_PIXELS + FCC_LPB - 1u) / FCC_LPB)
-#define FCC_IN_BYTES (FCC_PIXELS * 8u)
-#define FCC_OUT_BYTES (FCC_OUT_WORDS * 8u)
-/* Q7.8: 1 m = 256; bit @VALID_BIT@ of an input word marks a pixel with a point. */
+#define FCC_IN_BYTES (FCC_PIXELS * @PIXEL_BYTES@u)
+#define FCC_OUT_BYTES (FCC_OUT_WORDS * @PIXEL_BYTES@u)
+/* Q7.8: 1 m = 256; bit @VALID_BIT@ of an input word marks a pixel with a point
+ * (fcc-pixel, the format the golden model and the drivers share). */
 #define FCC_Q_ONE @Q_ONE@
 #define FCC_VALID_BIT @VALID_BIT@u
+/* 16-bit fields: coordinates in an input word, labels in an output word. */
+#define FCC_SLOT_BITS @SLOT_BITS@u
 /* Polls before a frame is given up (each poll is one register read). */
 #define FCC_POLL_LIMIT 100000000u
 
@@ -152,14 +159,14 @@ uint64_t fcc_pack_pixel(double x, double y, double z)
     if (!fcc_quantize(x, &q[0]) || !fcc_quantize(y, &q[1]) || !fcc_quantize(z, &q[2])) {
         return 0;
     }
-    return (uint64_t)(uint16_t)q[0] | ((uint64_t)(uint16_t)q[1] << 16) |
-           ((uint64_t)(uint16_t)q[2] << 32) | ((uint64_t)1 << FCC_VALID_BIT);
+    return (uint64_t)(uint16_t)q[0] | ((uint64_t)(uint16_t)q[1] << FCC_SLOT_BITS) |
+           ((uint64_t)(uint16_t)q[2] << (2u * FCC_SLOT_BITS)) | ((uint64_t)1 << FCC_VALID_BIT);
 }
 
 /* The label of pixel i (raster order) in the output buffer. */
 static uint32_t fcc_label(uint32_t i)
 {
-    return (uint32_t)(fcc_out[i / FCC_LPB] >> (16u * (i % FCC_LPB))) & 0xFFFFu;
+    return (uint32_t)(fcc_out[i / FCC_LPB] >> (FCC_SLOT_BITS * (i % FCC_LPB))) & @SLOT_MASK@;
 }
 
 /* A demonstration frame: two short walls of points 10 m ahead, on the

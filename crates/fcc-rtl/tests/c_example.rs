@@ -133,17 +133,10 @@ fn example_retypes_no_register_offset_or_frame_size() {
     }
 }
 
-/// The golden model's input word for one pixel.
+/// The golden model's input word for one pixel (its quantisation, packed as
+/// the drivers pack it).
 fn golden_word(x: f64, y: f64, z: f64) -> u64 {
-    match fcc_golden::quantize_point(x, y, z) {
-        None => 0,
-        Some([qx, qy, qz]) => {
-            u64::from(qx as u16)
-                | (u64::from(qy as u16) << 16)
-                | (u64::from(qz as u16) << 32)
-                | (1 << fcc_rtl::example::INPUT_VALID_BIT)
-        }
-    }
+    fcc_pixel::pixel_beat(fcc_pixel::quantize_point(x, y, z))
 }
 
 #[test]
