@@ -15,9 +15,9 @@
 # read_xdc -mode out_of_context, and scripts/fcc_package_ip.tcl packages it in the
 # IP with USED_IN {synthesis implementation out_of_context}, so it constrains
 # the IP's own out-of-context synthesis and nothing else. In a block design
-# (scripts/fcc_zc706_bd.tcl) the core's ports become internal nets and these port
-# constraints are dropped: the clock is the Zynq PS's FCLK_CLK0, defined by
-# the PS7's own constraints, and the paths between the core and the DMA or
+# (scripts/fcc_<board>_bd.tcl) the core's ports become internal nets and these
+# port constraints are dropped: the clock is the Zynq PS's fabric clock,
+# defined by the PS's own constraints, and the paths between the core and the DMA or
 # the interconnect are timed as ordinary register-to-register paths of the
 # whole design.
 # Scoping this file to the IP instead (SCOPED_TO_REF) would be wrong there:
@@ -39,7 +39,7 @@ set_output_delay -clock clk 1.000 [get_ports -filter {DIRECTION == OUT} {s_axis_
 set_output_delay -clock clk 1.000 [get_ports irq]
 
 # rst: synchronous, active high, from a register of the reset block
-# (proc_sys_reset in the ZC706 design). Timed like a data input: its release
+# (proc_sys_reset in the block designs). Timed like a data input: its release
 # must reach every register it resets in the same cycle.
 set_input_delay -clock clk 1.000 [get_ports rst]
 
@@ -49,6 +49,6 @@ set_input_delay -clock clk 1.000 [get_ports rst]
 # through the AXI4-Lite port; a system that uses the ports samples them long
 # after the frame's interrupt: no register captures them on the next edge,
 # so the paths to these ports are not timed out of context.
-# (status_frame_done is a one-cycle pulse; the ZC706 design leaves the
+# (status_frame_done is a one-cycle pulse; the block designs leave the
 # status ports unconnected.)
 set_false_path -to [get_ports status_*]

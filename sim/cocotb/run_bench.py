@@ -162,7 +162,7 @@ def prepare(fcc, root, k):
         [
             fcc, "gen", "--fsize", str(k), "--rows", str(ROWS), "--cols", str(COLS),
             "--th-h", str(TH_H), "--th-v", str(TH_V), "--label-bits", str(bits),
-            "--labels-per-beat", str(lpb), "--out", gen, "--constraints", gen / "xdc",
+            "--labels-per-beat", str(lpb), "--rtl", gen, "--constraints", gen / "xdc",
             "--scripts", gen / "tcl", "--no-lint",
         ]
     )

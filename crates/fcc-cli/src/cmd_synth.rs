@@ -205,12 +205,13 @@ fn run_vivado(args: &SynthArgs, p: &FccParams, vivado_bin: &Path) -> anyhow::Res
         Some(d) => d.parent().map(Path::to_path_buf).unwrap_or_default(),
         None => {
             let root = args.work_dir.join(format!("k{}", p.fsize)).join("layout");
-            let layout = fcc_rtl::Layout {
-                rtl: root.join("rtl_out"),
-                constraints: root.join("constraints"),
-                scripts: root.join("scripts"),
+            // The work directory is this command's own: a previous run's
+            // configuration there is replaced.
+            let opts = fcc_rtl::WriteOptions {
+                force: true,
+                ..Default::default()
             };
-            fcc_rtl::write_all(p, &layout)?;
+            fcc_rtl::write_all_with(p, &fcc_rtl::Layout::under(&root), &opts)?;
             root
         }
     };

@@ -332,7 +332,7 @@ fn gen_writes_the_rtl_and_rejects_what_hardware_cannot_do() {
         "--clock-mhz",
         "203.6",
         "--no-lint",
-        "--out",
+        "--rtl",
         s(&rtl),
         "--constraints",
         s(&xdc),

@@ -411,7 +411,7 @@ fn gen_refuses_a_clock_the_ps_cannot_give() {
         "256",
         "--clock-mhz",
         "300",
-        "--out",
+        "--rtl",
         s(&out),
         "--constraints",
         s(&d.join("xdc")),
@@ -419,7 +419,7 @@ fn gen_refuses_a_clock_the_ps_cannot_give() {
         s(&d.join("tcl")),
         "--no-lint",
     ]);
-    assert_error(&o, "--clock-mhz 300 is above 250 MHz");
+    assert_error(&o, "--clock-mhz 300 is above 240 MHz");
     assert!(!out.exists(), "nothing is generated");
 }
 
@@ -533,4 +533,120 @@ fn point_cloud_quality_is_named_per_pixel_and_per_point() {
     }
     let help = String::from_utf8_lossy(&fcc(&["cluster", "--help"]).stdout).into_owned();
     assert!(help.contains("--strict"), "{help}");
+}
+
+/// Every file of a generated tree, with its contents.
+fn tree(root: &Path) -> Vec<(PathBuf, Vec<u8>)> {
+    let mut out = vec![];
+    let mut dirs = vec![root.to_path_buf()];
+    while let Some(d) = dirs.pop() {
+        for e in std::fs::read_dir(&d).unwrap() {
+            let p = e.unwrap().path();
+            if p.is_dir() {
+                dirs.push(p);
+            } else {
+                out.push((p.clone(), std::fs::read(&p).unwrap()));
+            }
+        }
+    }
+    out.sort();
+    out
+}
+
+#[test]
+fn gen_out_puts_rtl_constraints_and_scripts_under_it_and_leaves_the_current_directory_alone() {
+    // A directory holding a K = 7 configuration in the repository layout, as
+    // the repository root does.
+    let d = tmpdir("gen-trap");
+    let small = ["--rows", "16", "--cols", "256", "--no-lint"];
+    let mut k7 = vec!["gen", "--fsize", "7"];
+    k7.extend(small);
+    let o = fcc_in(Some(&d), &k7);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let before = tree(&d);
+    assert!(before
+        .iter()
+        .any(|(p, _)| p.ends_with("scripts/fcc_build.tcl")));
+
+    // K = 5 with --out: everything under the new directory, nothing else.
+    let mut k5 = vec!["gen", "--fsize", "5", "--out", "k5"];
+    k5.extend(small);
+    let o = fcc_in(Some(&d), &k5);
+    assert!(o.status.success(), "{}", stderr(&o));
+    for f in [
+        "k5/rtl_out/fcc_top.v",
+        "k5/rtl_out/fcc_params.json",
+        "k5/constraints/fcc_top.xdc",
+        "k5/scripts/fcc_build.tcl",
+        "k5/scripts/fcc_zc706_bd.tcl",
+        "k5/scripts/fcc_regs.h",
+        "k5/scripts/fcc_zc706_example.c",
+    ] {
+        assert!(d.join(f).is_file(), "{f} missing");
+    }
+    let build = std::fs::read_to_string(d.join("k5/scripts/fcc_build.tcl")).unwrap();
+    assert!(build.contains("fsize=5") && build.contains("../rtl_out/fcc_top.v"));
+    let after: Vec<_> = tree(&d)
+        .into_iter()
+        .filter(|(p, _)| !p.starts_with(d.join("k5")))
+        .collect();
+    assert!(after == before, "fcc gen --out changed files outside --out");
+}
+
+#[test]
+fn gen_refuses_to_overwrite_another_configuration_unless_forced() {
+    let d = tmpdir("gen-other");
+    let small = ["--rows", "16", "--cols", "256", "--no-lint"];
+    let mut k7 = vec!["gen", "--fsize", "7"];
+    k7.extend(small);
+    let o = fcc_in(Some(&d), &k7);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let before = tree(&d);
+    // The same configuration again: regenerated in place.
+    let o = fcc_in(Some(&d), &k7);
+    assert!(o.status.success(), "{}", stderr(&o));
+    // Another one in the same place: refused, nothing changed.
+    let mut k5 = vec!["gen", "--fsize", "5"];
+    k5.extend(small);
+    let o = fcc_in(Some(&d), &k5);
+    assert_error(&o, "refusing to overwrite files of another configuration");
+    assert!(
+        stderr(&o).contains("rtl_out/fcc_params.json"),
+        "{}",
+        stderr(&o)
+    );
+    assert!(stderr(&o).contains("--force"), "{}", stderr(&o));
+    assert!(tree(&d) == before, "a refused fcc gen changed files");
+    // --force replaces them.
+    k5.push("--force");
+    let o = fcc_in(Some(&d), &k5);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let json = std::fs::read_to_string(d.join("rtl_out/fcc_params.json")).unwrap();
+    assert!(json.contains("\"fsize\": 5"), "{json}");
+}
+
+#[test]
+fn gen_board_refuses_a_clock_the_boards_dma_cannot_meet() {
+    let d = tmpdir("gen-board");
+    let o = fcc(&[
+        "gen",
+        "--board",
+        "pynq-z2",
+        "--rows",
+        "16",
+        "--cols",
+        "256",
+        "--no-lint",
+        "--out",
+        s(&d.join("pynq")),
+    ]);
+    assert_error(&o, "--clock-mhz 200 is above 150 MHz");
+    assert!(!d.join("pynq").exists(), "nothing is generated");
+    let o = fcc(&["gen", "--board", "zc707", "--out", s(&d.join("x"))]);
+    assert!(!o.status.success());
+    assert!(
+        stderr(&o).contains("unknown board 'zc707'"),
+        "{}",
+        stderr(&o)
+    );
 }

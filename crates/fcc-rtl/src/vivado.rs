@@ -1,12 +1,14 @@
-//! The Vivado deliverables for the ZC706's XC7Z045, written from the same
-//! [`FccParams`] and the same generated port list as the RTL:
+//! The Vivado deliverables for the boards of [`Board`] (ZC706 by default),
+//! written from the same [`FccParams`] and the same generated port list as
+//! the RTL:
 //!
 //! | File | Function | What it does |
 //! |---|---|---|
 //! | `constraints/fcc_top.xdc` | [`xdc`] | clock, AXI4-Stream and AXI4-Lite port delays, status false paths; out of context only |
 //! | `scripts/fcc_build.tcl` | [`tcl`] | non-project synth / opt / place / route with reports |
 //! | `scripts/fcc_package_ip.tcl` | [`package_ip_tcl`] | `fcc_top` as an IP with its AXI4-Stream, AXI4-Lite, interrupt, clock and reset interfaces |
-//! | `scripts/fcc_zc706_bd.tcl` | [`bd_tcl`] | Zynq PS7 + AXI DMA + the core (registers on M_AXI_GP0, `irq`), for the board |
+//! | `scripts/fcc_<board>_bd.tcl` | [`bd_tcl`] | the board's Zynq PS + AXI DMA + the core (registers on the PS's control master, `irq`) |
+//! | `scripts/fcc_<board>_example.c` | [`crate::example::c_example`] | bare-metal C: one frame through the DMA, the register sequence |
 //!
 //! Vivado is not available where this generator is developed and tested: the
 //! scripts are written to the letter of the Vivado Tcl reference (UG835) and
@@ -23,10 +25,196 @@ use crate::{
     file_header, param_summary, Generated, Layout, RtlError, GENERATOR_VERSION, TOP_MODULE,
 };
 
-/// The FPGA on the ZC706 board.
-pub const PART: &str = "xc7z045ffg900-2";
-/// The ZC706 board files shipped with Vivado.
-pub const BOARD_PART: &str = "xilinx.com:zc706:part0:1.4";
+/// A board the generator writes a block design for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Board {
+    /// Xilinx ZC706: XC7Z045-2, the default.
+    #[default]
+    Zc706,
+    /// Avnet/Digilent ZedBoard: XC7Z020-1.
+    Zedboard,
+    /// TUL PYNQ-Z2: XC7Z020-1.
+    PynqZ2,
+    /// Xilinx ZCU104: XCZU7EV-2 (Zynq UltraScale+ MPSoC).
+    Zcu104,
+}
+
+/// The processing system of a board.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Ps {
+    /// Zynq-7000: `processing_system7`.
+    Ps7,
+    /// Zynq UltraScale+ MPSoC: `zynq_ultra_ps_e`.
+    ZynqUltra,
+}
+
+/// Everything the scripts need to know about one board: one row of the
+/// table, [`Board::info`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BoardInfo {
+    /// `fcc gen --board` name.
+    pub name: &'static str,
+    /// Name for people.
+    pub title: &'static str,
+    /// The device.
+    pub part: &'static str,
+    /// Vivado board part (board files).
+    pub board_part: &'static str,
+    pub ps: Ps,
+    /// Device family as IP-XACT names it (`supported_families`).
+    pub family: &'static str,
+    /// Highest clock of the design: the lower of the PS's fabric clock
+    /// limit and the AXI DMA's characterised Fmax on this part, MHz.
+    pub clock_max_mhz: f64,
+    /// Where [`Self::clock_max_mhz`] comes from.
+    pub clock_max_source: &'static str,
+    /// Block design name (and its project's and wrapper's).
+    pub bd_name: &'static str,
+    /// Block design script.
+    pub bd_script: &'static str,
+    /// Bare-metal C example.
+    pub example: &'static str,
+}
+
+/// Every board, in `--board` order.
+pub const BOARDS: [Board; 4] = [Board::Zc706, Board::Zedboard, Board::PynqZ2, Board::Zcu104];
+
+impl Board {
+    /// The board's row of the table.
+    pub fn info(self) -> BoardInfo {
+        match self {
+            Board::Zc706 => BoardInfo {
+                name: "zc706",
+                title: "ZC706",
+                part: "xc7z045ffg900-2",
+                board_part: "xilinx.com:zc706:part0:1.4",
+                ps: Ps::Ps7,
+                family: "zynq",
+                clock_max_mhz: 240.0,
+                clock_max_source: "AXI DataMover (the AXI DMA's engine), PG022 Maximum Frequencies: Kintex-7 -2 240 MHz (the Z-7045 fabric); the PS7 FCLK limit is 250 MHz",
+                bd_name: "fcc_zc706",
+                bd_script: "fcc_zc706_bd.tcl",
+                example: "fcc_zc706_example.c",
+            },
+            Board::Zedboard => BoardInfo {
+                name: "zedboard",
+                title: "ZedBoard",
+                part: "xc7z020clg484-1",
+                board_part: "avnet.com:zedboard:part0:1.4",
+                ps: Ps::Ps7,
+                family: "zynq",
+                clock_max_mhz: 150.0,
+                clock_max_source: "AXI DataMover (the AXI DMA's engine), PG022 Maximum Frequencies: Artix-7 -1 150 MHz (the Z-7020 fabric)",
+                bd_name: "fcc_zedboard",
+                bd_script: "fcc_zedboard_bd.tcl",
+                example: "fcc_zedboard_example.c",
+            },
+            Board::PynqZ2 => BoardInfo {
+                name: "pynq-z2",
+                title: "PYNQ-Z2",
+                part: "xc7z020clg400-1",
+                board_part: "tul.com.tw:pynq-z2:part0:1.0",
+                ps: Ps::Ps7,
+                family: "zynq",
+                clock_max_mhz: 150.0,
+                clock_max_source: "AXI DataMover (the AXI DMA's engine), PG022 Maximum Frequencies: Artix-7 -1 150 MHz (the Z-7020 fabric)",
+                bd_name: "fcc_pynq_z2",
+                bd_script: "fcc_pynq_z2_bd.tcl",
+                example: "fcc_pynq_z2_example.c",
+            },
+            Board::Zcu104 => BoardInfo {
+                name: "zcu104",
+                title: "ZCU104",
+                part: "xczu7ev-ffvc1156-2-e",
+                board_part: "xilinx.com:zcu104:part0:1.1",
+                ps: Ps::ZynqUltra,
+                family: "zynquplus",
+                clock_max_mhz: 250.0,
+                clock_max_source: "not characterised here: PG022's table lists 7-series families only; 250 MHz is this generator's assumption for the -2 UltraScale+ fabric, to be confirmed on the board",
+                bd_name: "fcc_zcu104",
+                bd_script: "fcc_zcu104_bd.tcl",
+                example: "fcc_zcu104_example.c",
+            },
+        }
+    }
+
+    /// The board of a `--board` name.
+    pub fn from_name(name: &str) -> Result<Board, String> {
+        BOARDS
+            .into_iter()
+            .find(|b| b.info().name == name)
+            .ok_or_else(|| {
+                let names: Vec<&str> = BOARDS.iter().map(|b| b.info().name).collect();
+                format!("unknown board '{name}'; choose one of {}", names.join(", "))
+            })
+    }
+}
+
+/// The PS side of a block design: IP, pins and settings of one PS flavour.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct PsInfo {
+    pub vlnv: &'static str,
+    pub automation_rule: &'static str,
+    pub automation_config: &'static str,
+    /// The fabric clock, its reset (active low), the control master and
+    /// its clock pin, the memory slave and its clock pin, the interrupt input.
+    pub clock: &'static str,
+    pub reset: &'static str,
+    pub master: &'static str,
+    pub master_clock: &'static str,
+    pub slave: &'static str,
+    pub slave_clock: &'static str,
+    pub irq: &'static str,
+    /// CONFIG properties that enable the master, the slave, the
+    /// interrupts, and set the fabric clock (`@FCLK@`).
+    pub config: &'static str,
+    /// The property that reads back the fabric clock the PS got.
+    pub actual_clock: &'static str,
+    /// GIC interrupt ID of `irq` bit 0.
+    pub gic_base: u32,
+    /// Address width the DMA needs to reach the PS's DDR.
+    pub dma_addr_width: u32,
+}
+
+impl Ps {
+    pub fn info(self) -> PsInfo {
+        match self {
+            Ps::Ps7 => PsInfo {
+                vlnv: vlnv::PS7,
+                automation_rule: vlnv::PS7_AUTOMATION,
+                automation_config: r#"{make_external "FIXED_IO, DDR" apply_board_preset "1" Master "Disable" Slave "Disable"}"#,
+                clock: "FCLK_CLK0",
+                reset: "FCLK_RESET0_N",
+                master: "M_AXI_GP0",
+                master_clock: "M_AXI_GP0_ACLK",
+                slave: "S_AXI_HP0",
+                slave_clock: "S_AXI_HP0_ACLK",
+                irq: "IRQ_F2P",
+                config: "    CONFIG.PCW_USE_M_AXI_GP0 {1} \\\n    CONFIG.PCW_USE_S_AXI_HP0 {1} \\\n    CONFIG.PCW_USE_FABRIC_INTERRUPT {1} \\\n    CONFIG.PCW_IRQ_F2P_INTR {1} \\\n    CONFIG.PCW_FPGA0_PERIPHERAL_FREQMHZ {@FCLK@} \\\n",
+                actual_clock: "CONFIG.PCW_ACT_FPGA0_PERIPHERAL_FREQMHZ",
+                gic_base: 61,
+                dma_addr_width: 32,
+            },
+            Ps::ZynqUltra => PsInfo {
+                vlnv: vlnv::ZYNQ_ULTRA,
+                automation_rule: vlnv::ZYNQ_ULTRA_AUTOMATION,
+                automation_config: r#"{apply_board_preset "1"}"#,
+                clock: "pl_clk0",
+                reset: "pl_resetn0",
+                master: "M_AXI_HPM0_FPD",
+                master_clock: "maxihpm0_fpd_aclk",
+                slave: "S_AXI_HP0_FPD",
+                slave_clock: "saxihp0_fpd_aclk",
+                irq: "pl_ps_irq0",
+                config: "    CONFIG.PSU__USE__M_AXI_GP0 {1} \\\n    CONFIG.PSU__USE__M_AXI_GP1 {0} \\\n    CONFIG.PSU__USE__S_AXI_GP2 {1} \\\n    CONFIG.PSU__USE__IRQ0 {1} \\\n    CONFIG.PSU__FPGA_PL0_ENABLE {1} \\\n    CONFIG.PSU__CRL_APB__PL0_REF_CTRL__FREQMHZ {@FCLK@} \\\n",
+                actual_clock: "CONFIG.PSU__CRL_APB__PL0_REF_CTRL__ACT_FREQMHZ",
+                gic_base: 121,
+                dma_addr_width: 40,
+            },
+        }
+    }
+}
+
 /// IP-XACT vendor and library of the packaged core.
 pub const IP_VENDOR: &str = "fcc";
 pub const IP_LIBRARY: &str = "fcc";
@@ -42,12 +230,8 @@ pub const IO_DELAY_FRACTION: f64 = 0.2;
 /// Global clock buffer assumed to drive `clk` in out-of-context
 /// implementation (UG905, `HD.CLK_SRC`); any BUFGCTRL site of the part does.
 pub const OOC_CLOCK_BUFFER: &str = "BUFGCTRL_X0Y0";
-/// Highest PL fabric clock (FCLK) the Zynq-7000 PS generates, MHz.
-pub const PS7_FCLK_MAX_MHZ: f64 = 250.0;
 /// Widest buffer length register of the AXI DMA (`c_sg_length_width`), bits.
 pub const DMA_LENGTH_WIDTH_MAX: u32 = 26;
-/// Name of the block design (and of its project and wrapper).
-pub const BD_NAME: &str = "fcc_zc706";
 
 /// The clock port, the reset port and the prefix of the status ports (house
 /// naming, `STYLE.md`).
@@ -70,6 +254,9 @@ pub mod vlnv {
     pub const RESET: &str = "xilinx.com:ip:proc_sys_reset:5.0";
     pub const CONCAT: &str = "xilinx.com:ip:xlconcat:2.1";
     pub const PS7_AUTOMATION: &str = "xilinx.com:bd_rule:processing_system7";
+    /// Zynq UltraScale+ PS, release 3.5 (Vivado 2023.1 and later).
+    pub const ZYNQ_ULTRA: &str = "xilinx.com:ip:zynq_ultra_ps_e:3.5";
+    pub const ZYNQ_ULTRA_AUTOMATION: &str = "xilinx.com:bd_rule:zynq_ultra_ps_e";
     pub const AXIS: (&str, &str) = (
         "xilinx.com:interface:axis_rtl:1.0",
         "xilinx.com:interface:axis:1.0",
@@ -203,6 +390,11 @@ pub fn status_ports(ports: &[Port]) -> Vec<&Port> {
 // ---------------------------------------------------------------------------
 // Templates.
 
+/// [`fill`] for the generator's other templates.
+pub(crate) fn fill_public(template: &str, vars: &[(&str, String)]) -> String {
+    fill(template, vars)
+}
+
 /// Replace every `@KEY@` of `template`; a key left over is a generator bug.
 fn fill(template: &str, vars: &[(&str, String)]) -> String {
     let mut s = template.to_string();
@@ -273,9 +465,9 @@ pub fn xdc(p: &FccParams) -> String {
 # read_xdc -mode out_of_context, and scripts/@PACKAGE@ packages it in the
 # IP with USED_IN {synthesis implementation out_of_context}, so it constrains
 # the IP's own out-of-context synthesis and nothing else. In a block design
-# (scripts/@BD@) the core's ports become internal nets and these port
-# constraints are dropped: the clock is the Zynq PS's FCLK_CLK0, defined by
-# the PS7's own constraints, and the paths between the core and the DMA or
+# (scripts/fcc_<board>_bd.tcl) the core's ports become internal nets and these
+# port constraints are dropped: the clock is the Zynq PS's fabric clock,
+# defined by the PS's own constraints, and the paths between the core and the DMA or
 # the interconnect are timed as ordinary register-to-register paths of the
 # whole design.
 # Scoping this file to the IP instead (SCOPED_TO_REF) would be wrong there:
@@ -297,7 +489,7 @@ set_output_delay -clock @CLK@ @IO@ [get_ports -filter {DIRECTION == OUT} {@AXIS@
 set_output_delay -clock @CLK@ @IO@ [get_ports @IRQ@]
 
 # @RST@: synchronous, active high, from a register of the reset block
-# (proc_sys_reset in the ZC706 design). Timed like a data input: its release
+# (proc_sys_reset in the block designs). Timed like a data input: its release
 # must reach every register it resets in the same cycle.
 set_input_delay -clock @CLK@ @IO@ [get_ports @RST@]
 
@@ -307,7 +499,7 @@ set_input_delay -clock @CLK@ @IO@ [get_ports @RST@]
 # through the AXI4-Lite port; a system that uses the ports samples them long
 # after the frame's interrupt: no register captures them on the next edge,
 # so the paths to these ports are not timed out of context.
-# (status_frame_done is a one-cycle pulse; the ZC706 design leaves the
+# (status_frame_done is a one-cycle pulse; the block designs leave the
 # status ports unconnected.)
 set_false_path -to [get_ports @STATUS@*]
 "##,
@@ -315,7 +507,6 @@ set_false_path -to [get_ports @STATUS@*]
             ("TOP", TOP_MODULE.to_string()),
             ("BUILD", BUILD_SCRIPT.to_string()),
             ("PACKAGE", PACKAGE_SCRIPT.to_string()),
-            ("BD", BD_SCRIPT.to_string()),
             ("PCT", format!("{pct}")),
             ("MHZ", format!("{}", p.clock_mhz)),
             ("PERIOD", format!("{period:.3}")),
@@ -337,17 +528,60 @@ set_false_path -to [get_ports @STATUS@*]
 /// File names of the scripts.
 pub const BUILD_SCRIPT: &str = "fcc_build.tcl";
 pub const PACKAGE_SCRIPT: &str = "fcc_package_ip.tcl";
-pub const BD_SCRIPT: &str = "fcc_zc706_bd.tcl";
+/// The register header, copied beside the C example.
+pub const REGS_HEADER: &str = "fcc_regs.h";
+
+/// Primitives counted in `summary.txt`, per family: (key, REF_NAME pattern).
+fn primitive_counts(board: Board) -> [(&'static str, &'static str); 7] {
+    match board.info().ps {
+        Ps::Ps7 => [
+            ("lut", "LUT*"),
+            ("srl", "SRL*"),
+            ("ff", "FD*"),
+            ("dsp48e1", "DSP48E1"),
+            ("ramb36e1", "RAMB36E1"),
+            ("ramb18e1", "RAMB18E1"),
+            ("carry4", "CARRY4"),
+        ],
+        Ps::ZynqUltra => [
+            ("lut", "LUT*"),
+            ("srl", "SRL*"),
+            ("ff", "FD*"),
+            ("dsp48e2", "DSP48E2"),
+            ("ramb36e2", "RAMB36E2"),
+            ("ramb18e2", "RAMB18E2"),
+            ("carry8", "CARRY8"),
+        ],
+    }
+}
+
+/// The `report_utilization` row of all LUTs of the slices or CLBs (logic,
+/// LUTRAM and SRL): "Slice LUTs" on 7-series, "CLB LUTs" on UltraScale+.
+pub fn lut_row(board: Board) -> &'static str {
+    match board.info().ps {
+        Ps::Ps7 => "Slice LUTs",
+        Ps::ZynqUltra => "CLB LUTs",
+    }
+}
 
 /// `fcc_build.tcl`: out-of-context synthesis, implementation and reports in
-/// non-project mode. `rtl` and `xdc` are the Verilog and constraint files
-/// relative to the directory of the script.
-pub fn tcl(p: &FccParams, rtl: &str, xdc: &str) -> String {
+/// non-project mode on the part of `board`; stops with an error when the
+/// routed design misses the clock. `rtl` and `xdc` are the Verilog and
+/// constraint files relative to the directory of the script.
+pub fn tcl(p: &FccParams, board: Board, rtl: &str, xdc: &str) -> String {
+    let b = board.info();
+    let counts: Vec<String> = primitive_counts(board)
+        .iter()
+        .map(|(k, pat)| format!("\"{k}=[fcc_count {pat}]\""))
+        .collect();
     let mut s = file_header(p, "#");
     s.push_str(&fill(
-        r##"#
-# Out-of-context synthesis, placement and routing of @TOP@ for the ZC706's
-# @PART@ in non-project mode, with utilisation and timing reports.
+        r##"# Board: @BOARD@ (@PART@)
+#
+# Out-of-context synthesis, placement and routing of @TOP@ for the @TITLE@'s
+# @PART@ in non-project mode, with utilisation, timing, methodology and DRC
+# reports. Stops with an error when the routed design's worst setup slack is
+# negative (the reports and summary.txt are written first).
 # Written to the Vivado Tcl reference (UG835); not run by the generator's tests.
 #
 # Usage (from any directory):
@@ -356,7 +590,8 @@ pub fn tcl(p: &FccParams, rtl: &str, xdc: &str) -> String {
 #     -no_phys_opt   skip phys_opt_design after placement
 # Writes post_synth.dcp, post_route.dcp, utilization_synth.rpt,
 # utilization_route.rpt, utilization_route_hier.rpt, timing_synth.rpt,
-# timing_route.rpt and summary.txt (key=value: worst slacks, primitive counts).
+# timing_route.rpt, methodology_route.rpt, drc_route.rpt and summary.txt
+# (key=value: worst slacks, all slice LUTs with LUTRAM and SRL, primitive counts).
 
 set usage {usage: vivado -mode batch -source @SCRIPT@ -tclargs ?-out DIR? ?-no_phys_opt?}
 set part @PART@
@@ -387,37 +622,57 @@ write_checkpoint -force [file join $out post_route.dcp]
 report_utilization -file [file join $out utilization_route.rpt]
 report_utilization -hierarchical -file [file join $out utilization_route_hier.rpt]
 report_timing_summary -max_paths 10 -file [file join $out timing_route.rpt]
+report_methodology -file [file join $out methodology_route.rpt]
+report_drc -file [file join $out drc_route.rpt]
 
-# Worst slack of the routed design ("none" if no path is constrained) and
-# primitive counts in the columns of the Yosys table of docs/rtl.md.
+# Worst slack of the routed design ("none" if no path is constrained),
+# the used count of a report_utilization row, and primitive counts in the
+# columns of the Yosys table of docs/results.md.
 proc fcc_slack {delay_type} {
     set path [get_timing_paths -delay_type $delay_type -max_paths 1 -nworst 1 -quiet]
     if {$path eq ""} { return none }
     return [get_property SLACK $path]
 }
+proc fcc_used {report row} {
+    foreach line [split $report \n] {
+        set cells [split $line |]
+        if {[llength $cells] > 2 && [string trimright [string trim [lindex $cells 1]] *] eq $row} {
+            return [string trim [lindex $cells 2]]
+        }
+    }
+    return none
+}
 proc fcc_count {ref_pattern} {
     return [llength [get_cells -hierarchical -quiet -filter "REF_NAME =~ $ref_pattern"]]
 }
+set util [report_utilization -return_string]
+set wns [fcc_slack max]
 set summary [list \
     "part=$part" "top=$top" "clock_mhz=$clock_mhz" "period_ns=$period_ns" \
-    "wns_ns=[fcc_slack max]" "whs_ns=[fcc_slack min]" \
-    "lut=[fcc_count LUT*]" "srl=[fcc_count SRL*]" "ff=[fcc_count FD*]" \
-    "dsp48e1=[fcc_count DSP48E1]" "ramb36e1=[fcc_count RAMB36E1]" \
-    "ramb18e1=[fcc_count RAMB18E1]" "carry4=[fcc_count CARRY4]"]
+    "wns_ns=$wns" "whs_ns=[fcc_slack min]" \
+    "slice_luts=[fcc_used $util {@LUT_ROW@}]" "lutram=[fcc_used $util {LUT as Memory}]" \
+    @COUNTS@]
 set f [open [file join $out summary.txt] w]
 puts $f [join $summary \n]
 close $f
 puts [join $summary \n]
+if {$wns ne "none" && $wns < 0} {
+    error "@SCRIPT@: the routed $top misses $clock_mhz MHz by [expr {-$wns}] ns (WNS $wns ns); see [file join $out timing_route.rpt], or regenerate with a lower --clock-mhz"
+}
 "##,
         &[
             ("TOP", TOP_MODULE.to_string()),
-            ("PART", PART.to_string()),
+            ("BOARD", b.name.to_string()),
+            ("TITLE", b.title.to_string()),
+            ("PART", b.part.to_string()),
             ("SCRIPT", BUILD_SCRIPT.to_string()),
             ("DEFAULT_OUT", DEFAULT_OUT.to_string()),
             ("MHZ", format!("{}", p.clock_mhz)),
             ("PERIOD", format!("{:.3}", period_ns(p))),
             ("RTL", rtl.to_string()),
             ("XDC", xdc.to_string()),
+            ("LUT_ROW", lut_row(board).to_string()),
+            ("COUNTS", counts.join(" ")),
             (
                 "ARGS",
                 args_block("        -no_phys_opt { set phys_opt 0 }\n"),
@@ -432,7 +687,13 @@ puts [join $summary \n]
 
 /// `fcc_package_ip.tcl`: package `fcc_top` as an IP. `rtl` and `xdc` are
 /// relative to the directory of the script.
-pub fn package_ip_tcl(p: &FccParams, ports: &[Port], rtl: &str, xdc: &str) -> String {
+pub fn package_ip_tcl(p: &FccParams, board: Board, ports: &[Port], rtl: &str, xdc: &str) -> String {
+    let b = board.info();
+    let families: Vec<String> = {
+        let mut f: Vec<&str> = BOARDS.iter().map(|b| b.info().family).collect();
+        f.dedup();
+        f.iter().map(|f| format!("{f} Production")).collect()
+    };
     let mut axis = String::new();
     for (iface, mode) in AXIS_INTERFACES {
         axis.push_str(&format!("fcc_axis $core {iface} {mode} {{\n"));
@@ -453,7 +714,8 @@ pub fn package_ip_tcl(p: &FccParams, ports: &[Port], rtl: &str, xdc: &str) -> St
         .collect();
     let mut s = file_header(p, "#");
     s.push_str(&fill(
-        r##"#
+        r##"# Board: @BOARD@ (@PART@)
+#
 # Packages @TOP@ as the Vivado IP @VLNV@: AXI4-Stream slave s_axis (pixels),
 # AXI4-Stream master m_axis (labels), AXI4-Lite slave @AXIL@ (the register
 # file, @AXIL_RANGE@ bytes), level-high interrupt @IRQ@, clock @CLK@ and
@@ -494,6 +756,16 @@ set_property name $top $core
 set_property version @VERSION@ $core
 set_property display_name {FCC: Fast Channel Clustering of LiDAR range images} $core
 set_property description {@SUMMARY@ (parameter hash @HASH@)} $core
+# Every family a generated block design targets.
+set_property supported_families {@FAMILIES@} $core
+
+# The packager imported the XDC into the IP's synthesis file group; keep it
+# out-of-context only there too (see the XDC's header).
+set ooc_xdc [ipx::get_files src/@XDC_NAME@ -of_objects [ipx::get_file_groups xilinx_anylanguagesynthesis -of_objects $core]]
+if {[llength $ooc_xdc] != 1} {
+    error "the packaged IP holds no src/@XDC_NAME@ in its synthesis files"
+}
+set_property USED_IN {synthesis implementation out_of_context} $ooc_xdc
 
 # The packager has already guessed interfaces from the port names. Replace
 # them with explicit ones: each AXI port is mapped by name to its logical
@@ -566,10 +838,16 @@ puts "@SCRIPT@: @VLNV@ packaged in $ip_dir (IP repository: $ip_repo)"
             ("VLNV", ip_vlnv()),
             ("CLK", CLOCK_PORT.to_string()),
             ("RST", RESET_PORT.to_string()),
-            ("BD", BD_SCRIPT.to_string()),
+            ("BD", b.bd_script.to_string()),
+            ("BOARD", b.name.to_string()),
+            ("FAMILIES", families.join(" ")),
+            (
+                "XDC_NAME",
+                xdc.rsplit('/').next().unwrap_or(xdc).to_string(),
+            ),
             ("SCRIPT", PACKAGE_SCRIPT.to_string()),
             ("DEFAULT_OUT", DEFAULT_OUT.to_string()),
-            ("PART", PART.to_string()),
+            ("PART", b.part.to_string()),
             ("RTL", rtl.to_string()),
             ("XDC", xdc.to_string()),
             ("ARGS", args_block("")),
@@ -601,7 +879,7 @@ puts "@SCRIPT@: @VLNV@ packaged in $ip_dir (IP repository: $ip_repo)"
 }
 
 // ---------------------------------------------------------------------------
-// scripts/fcc_zc706_bd.tcl
+// scripts/fcc_<board>_bd.tcl
 
 /// One line per register of the core, for the software map:
 /// `0x040 CONTROL RW` (offset within the core's address segment).
@@ -635,20 +913,23 @@ pub fn dma_length_width(p: &FccParams, ports: &[Port]) -> Result<u32, RtlError> 
     Ok(bits)
 }
 
-/// The FCLK_CLK0 frequency the block design asks the PS for, MHz: the
-/// core's clock, which must be one the PS can give.
-pub fn fclk_mhz(p: &FccParams) -> Result<f64, RtlError> {
-    if p.clock_mhz > PS7_FCLK_MAX_MHZ {
-        return Err(RtlError::Check(format!(
-            "--clock-mhz {} is above {PS7_FCLK_MAX_MHZ} MHz, the fastest fabric clock (FCLK) the ZC706's Zynq PS can give the block design; choose at most {PS7_FCLK_MAX_MHZ}",
-            p.clock_mhz
+/// The fabric clock the block design asks the PS for, MHz: the core's
+/// clock, which must be one the board's PS and AXI DMA can run at.
+pub fn fclk_mhz(p: &FccParams, board: Board) -> Result<f64, RtlError> {
+    let b = board.info();
+    if p.clock_mhz > b.clock_max_mhz {
+        return Err(RtlError::Board(format!(
+            "--clock-mhz {} is above {} MHz, the fastest clock the {}'s block design runs ({}: {}); choose at most {}",
+            p.clock_mhz, b.clock_max_mhz, b.title, b.part, b.clock_max_source, b.clock_max_mhz
         )));
     }
     Ok(p.clock_mhz)
 }
 
-/// `fcc_zc706_bd.tcl`: the ZC706 block design around the packaged core.
-pub fn bd_tcl(p: &FccParams, ports: &[Port]) -> Result<String, RtlError> {
+/// `fcc_<board>_bd.tcl`: the board's block design around the packaged core.
+pub fn bd_tcl(p: &FccParams, ports: &[Port], board: Board) -> Result<String, RtlError> {
+    let b = board.info();
+    let ps = b.ps.info();
     let (in_bytes, out_bytes) = dma_frame_bytes(p, ports)?;
     let len_width = dma_length_width(p, ports)?;
     let in_width = port(ports, "s_axis_tdata")?.width;
@@ -661,43 +942,53 @@ pub fn bd_tcl(p: &FccParams, ports: &[Port]) -> Result<String, RtlError> {
             "{TOP_MODULE} has no {AXIL_INTERFACE}_* ports; the block design needs its register port"
         )));
     }
-    let fclk = fclk_mhz(p)?;
+    let fclk = fclk_mhz(p, board)?;
     let map_lines = register_map_lines(p);
     let map_comment: String = map_lines.iter().map(|l| format!("#     {l}\n")).collect();
     let map_puts: String = map_lines
         .iter()
         .map(|l| format!("puts $map {{register {l}}}\n"))
         .collect();
+    let ps_name = match b.ps {
+        Ps::Ps7 => "PS7",
+        Ps::ZynqUltra => "Zynq UltraScale+ PS",
+    };
+    let config = fill(ps.config, &[("FCLK", format!("{fclk}"))]);
 
     let mut s = file_header(p, "#");
     s.push_str(&fill(
-        r##"#
-# Block design for the ZC706 (@BOARD@, @PART@): the Zynq PS7 with the
+        r##"# Board: @BOARD_NAME@ (@PART@)
+#
+# Block design for the @TITLE@ (@BOARD@, @PART@): the @PS_NAME@ with the
 # board preset; an AXI DMA in simple (register) mode that reads frames from
 # DDR into @TOP@'s s_axis (MM2S) and writes its m_axis labels back to DDR
 # (S2MM); the core's register port and the DMA's registers on the PS's
-# M_AXI_GP0 through a SmartConnect; memory (PS S_AXI_HP0) through another; a
+# @PS_MASTER@ through a SmartConnect; memory (PS @PS_SLAVE@) through another; a
 # processor system reset; the DMA's two interrupts and the core's irq on
-# IRQ_F2P. Everything runs on FCLK_CLK0.
+# @PS_IRQ@. Everything runs on @PS_CLOCK@.
 # Written to UG835 and UG994; not run by the generator's tests.
 #
 # Run scripts/@PACKAGE@ first, with the same -out.
 # Usage (from any directory):
 #   vivado -mode batch -source <repo>/scripts/@SCRIPT@ [-tclargs ?-out DIR? ?-bitstream? ?-jobs N?]
-#     -out DIR     project in DIR/zc706, core from DIR/ip_repo (default DIR: ./@DEFAULT_OUT@)
-#     -bitstream   also synthesise, implement, write the bitstream and export
-#                  DIR/zc706/@BD_NAME@.xsa for the software tools
+#     -out DIR     project in DIR/@BOARD_NAME@, core from DIR/ip_repo (default DIR: ./@DEFAULT_OUT@)
+#     -bitstream   also synthesise and implement; if the routed design meets
+#                  the clock (WNS >= 0), write the bitstream and export
+#                  DIR/@BOARD_NAME@/@BD_NAME@.xsa for the software tools;
+#                  otherwise stop with an error and write neither
 #     -jobs N      parallel jobs for -bitstream (default 2)
 #
-# Clock: FCLK_CLK0 is asked for @FCLK@ MHz; the PS rounds it to what its PLL
-# dividers give, and the script prints the frequency it got.
+# Clock: @PS_CLOCK@ is asked for @FCLK@ MHz (at most @CLOCK_MAX@ MHz on this board:
+# @CLOCK_MAX_SOURCE@); the PS rounds it to what its PLL dividers give,
+# and the script prints the frequency it got.
 #
-# Software view (also written to DIR/zc706/@BD_NAME@_map.txt with the addresses):
+# Software view (also written to DIR/@BOARD_NAME@/@BD_NAME@_map.txt with the addresses):
 #   DMA MM2S_LENGTH = @IN_BYTES@ bytes per frame (@PIXELS@ pixels, @IN_BEAT@ bytes each)
 #   DMA S2MM_LENGTH = @OUT_BYTES@ bytes per frame (@LPB@ labels per @OUT_BEAT@-byte beat)
-#   Interrupts: IRQ_F2P[0] = MM2S done (GIC ID 61), IRQ_F2P[1] = S2MM done (GIC ID 62),
-#     IRQ_F2P[2] = fcc irq, frame done (GIC ID 63, level high)
-#   fcc registers (offsets in the fcc segment; fields in rtl_out/fcc_regs.h):
+#   DMA addresses: @DMA_ADDR@ bits
+#   Interrupts: @PS_IRQ@[0] = MM2S done (GIC ID @GIC0@), @PS_IRQ@[1] = S2MM done (GIC ID @GIC1@),
+#     @PS_IRQ@[2] = fcc irq, frame done (GIC ID @GIC2@, level high)
+#   fcc registers (offsets in the fcc segment; fields in fcc_regs.h):
 @MAP_COMMENT@
 set usage {usage: vivado -mode batch -source @SCRIPT@ -tclargs ?-out DIR? ?-bitstream? ?-jobs N?}
 set part @PART@
@@ -706,7 +997,7 @@ set design @BD_NAME@
 set bitstream 0
 set jobs 2
 @ARGS@set ip_repo [file normalize [file join $out_base ip_repo]]
-set proj_dir [file normalize [file join $out_base zc706]]
+set proj_dir [file normalize [file join $out_base @BOARD_NAME@]]
 if {![file exists [file join $ip_repo @TOP@ component.xml]]} {
     error "no packaged @TOP@ in $ip_repo: run @PACKAGE@ -tclargs -out $out_base first"
 }
@@ -717,18 +1008,13 @@ set_property ip_repo_paths [list $ip_repo] [current_project]
 update_ip_catalog
 create_bd_design $design
 
-# Zynq PS: the board preset first (DDR, MIO, PS clocks of the ZC706), then
+# PS: the board preset first (DDR, MIO, PS clocks of the @TITLE@), then
 # what this design adds to it.
-create_bd_cell -type ip -vlnv @PS7@ ps7
-apply_bd_automation -rule @PS7_RULE@ -config {make_external "FIXED_IO, DDR" apply_board_preset "1" Master "Disable" Slave "Disable"} [get_bd_cells ps7]
+create_bd_cell -type ip -vlnv @PS_VLNV@ ps
+apply_bd_automation -rule @PS_RULE@ -config @PS_AUTO@ [get_bd_cells ps]
 set_property -dict [list \
-    CONFIG.PCW_USE_M_AXI_GP0 {1} \
-    CONFIG.PCW_USE_S_AXI_HP0 {1} \
-    CONFIG.PCW_USE_FABRIC_INTERRUPT {1} \
-    CONFIG.PCW_IRQ_F2P_INTR {1} \
-    CONFIG.PCW_FPGA0_PERIPHERAL_FREQMHZ {@FCLK@} \
-] [get_bd_cells ps7]
-puts "FCLK_CLK0: asked @FCLK@ MHz, got [get_property CONFIG.PCW_ACT_FPGA0_PERIPHERAL_FREQMHZ [get_bd_cells ps7]] MHz"
+@PS_CONFIG@] [get_bd_cells ps]
+puts "@PS_CLOCK@: asked @FCLK@ MHz, got [get_property @PS_ACT@ [get_bd_cells ps]] MHz"
 
 create_bd_cell -type ip -vlnv @RESET@ rst_fclk0
 
@@ -738,6 +1024,7 @@ set_property -dict [list \
     CONFIG.c_include_sg {0} \
     CONFIG.c_sg_include_stscntrl_strm {0} \
     CONFIG.c_sg_length_width {@LEN_WIDTH@} \
+    CONFIG.c_addr_width {@DMA_ADDR@} \
     CONFIG.c_include_mm2s {1} \
     CONFIG.c_m_axi_mm2s_data_width {@IN_WIDTH@} \
     CONFIG.c_m_axis_mm2s_tdata_width {@IN_WIDTH@} \
@@ -755,13 +1042,13 @@ set_property -dict [list CONFIG.NUM_PORTS {3}] [get_bd_cells irq_concat]
 create_bd_cell -type ip -vlnv @FCC_VLNV@ fcc
 
 # Clock and resets.
-connect_bd_net [get_bd_pins ps7/FCLK_CLK0] \
-    [get_bd_pins ps7/M_AXI_GP0_ACLK] [get_bd_pins ps7/S_AXI_HP0_ACLK] \
+connect_bd_net [get_bd_pins ps/@PS_CLOCK@] \
+    [get_bd_pins ps/@PS_MASTER_CLOCK@] [get_bd_pins ps/@PS_SLAVE_CLOCK@] \
     [get_bd_pins rst_fclk0/slowest_sync_clk] \
     [get_bd_pins ctrl_smc/aclk] [get_bd_pins mem_smc/aclk] \
     [get_bd_pins dma/s_axi_lite_aclk] [get_bd_pins dma/m_axi_mm2s_aclk] [get_bd_pins dma/m_axi_s2mm_aclk] \
     [get_bd_pins fcc/@CLK@]
-connect_bd_net [get_bd_pins ps7/FCLK_RESET0_N] [get_bd_pins rst_fclk0/ext_reset_in]
+connect_bd_net [get_bd_pins ps/@PS_RESET@] [get_bd_pins rst_fclk0/ext_reset_in]
 connect_bd_net [get_bd_pins rst_fclk0/interconnect_aresetn] \
     [get_bd_pins ctrl_smc/aresetn] [get_bd_pins mem_smc/aresetn]
 connect_bd_net [get_bd_pins rst_fclk0/peripheral_aresetn] \
@@ -770,12 +1057,12 @@ connect_bd_net [get_bd_pins rst_fclk0/peripheral_reset] [get_bd_pins fcc/@RST@]
 
 # Control: PS -> DMA registers and the core's registers; memory: DMA -> DDR;
 # streams.
-connect_bd_intf_net [get_bd_intf_pins ps7/M_AXI_GP0] [get_bd_intf_pins ctrl_smc/S00_AXI]
+connect_bd_intf_net [get_bd_intf_pins ps/@PS_MASTER@] [get_bd_intf_pins ctrl_smc/S00_AXI]
 connect_bd_intf_net [get_bd_intf_pins ctrl_smc/M00_AXI] [get_bd_intf_pins dma/S_AXI_LITE]
 connect_bd_intf_net [get_bd_intf_pins ctrl_smc/M01_AXI] [get_bd_intf_pins fcc/@AXIL@]
 connect_bd_intf_net [get_bd_intf_pins dma/M_AXI_MM2S] [get_bd_intf_pins mem_smc/S00_AXI]
 connect_bd_intf_net [get_bd_intf_pins dma/M_AXI_S2MM] [get_bd_intf_pins mem_smc/S01_AXI]
-connect_bd_intf_net [get_bd_intf_pins mem_smc/M00_AXI] [get_bd_intf_pins ps7/S_AXI_HP0]
+connect_bd_intf_net [get_bd_intf_pins mem_smc/M00_AXI] [get_bd_intf_pins ps/@PS_SLAVE@]
 connect_bd_intf_net [get_bd_intf_pins dma/M_AXIS_MM2S] [get_bd_intf_pins fcc/s_axis]
 connect_bd_intf_net [get_bd_intf_pins fcc/m_axis] [get_bd_intf_pins dma/S_AXIS_S2MM]
 
@@ -783,7 +1070,7 @@ connect_bd_intf_net [get_bd_intf_pins fcc/m_axis] [get_bd_intf_pins dma/S_AXIS_S
 connect_bd_net [get_bd_pins dma/mm2s_introut] [get_bd_pins irq_concat/In0]
 connect_bd_net [get_bd_pins dma/s2mm_introut] [get_bd_pins irq_concat/In1]
 connect_bd_net [get_bd_pins fcc/@IRQ@] [get_bd_pins irq_concat/In2]
-connect_bd_net [get_bd_pins irq_concat/dout] [get_bd_pins ps7/IRQ_F2P]
+connect_bd_net [get_bd_pins irq_concat/dout] [get_bd_pins ps/@PS_IRQ@]
 
 assign_bd_address
 validate_bd_design
@@ -792,7 +1079,7 @@ save_bd_design
 file mkdir $proj_dir
 set map [open [file join $proj_dir ${design}_map.txt] w]
 puts $map "# @BD_NAME@ software view: PS address segments (name offset range), DMA lengths, fcc registers (offset name access)"
-foreach seg [get_bd_addr_segs -of_objects [get_bd_addr_spaces ps7/Data]] {
+foreach seg [get_bd_addr_segs -of_objects [get_bd_addr_spaces ps/Data]] {
     puts $map "segment [get_property NAME $seg] [get_property OFFSET $seg] [get_property RANGE $seg]"
 }
 puts $map {dma MM2S_LENGTH @IN_BYTES@}
@@ -809,31 +1096,51 @@ if {$bitstream} {
     if {[get_property PROGRESS [get_runs synth_1]] ne "100%"} {
         error "synth_1 failed: see [get_property DIRECTORY [get_runs synth_1]]"
     }
-    launch_runs impl_1 -to_step write_bitstream -jobs $jobs
+    # Route first, check the clock is met, and only then write the
+    # bitstream and the hardware platform: a failing design leaves neither.
+    launch_runs impl_1 -to_step route_design -jobs $jobs
     wait_on_run impl_1
-    if {[get_property PROGRESS [get_runs impl_1]] ne "100%"} {
+    if {[string match *ERROR* [get_property STATUS [get_runs impl_1]]]} {
         error "impl_1 failed: see [get_property DIRECTORY [get_runs impl_1]]"
     }
-    puts "impl_1: WNS [get_property STATS.WNS [get_runs impl_1]] ns, WHS [get_property STATS.WHS [get_runs impl_1]] ns"
+    set wns [get_property STATS.WNS [get_runs impl_1]]
+    set whs [get_property STATS.WHS [get_runs impl_1]]
+    puts "impl_1 routed: WNS $wns ns, WHS $whs ns"
+    if {![string is double -strict $wns] || $wns < 0 || ![string is double -strict $whs] || $whs < 0} {
+        error "@SCRIPT@: the routed $design misses its clock (WNS '$wns' ns, WHS '$whs' ns): no bitstream, no .xsa; see the timing summary in [get_property DIRECTORY [get_runs impl_1]], or regenerate with a lower --clock-mhz"
+    }
+    launch_runs impl_1 -next_step -jobs $jobs
+    wait_on_run impl_1
+    if {[get_property PROGRESS [get_runs impl_1]] ne "100%"} {
+        error "impl_1 write_bitstream failed: see [get_property DIRECTORY [get_runs impl_1]]"
+    }
     write_hw_platform -fixed -include_bit -force -file [file join $proj_dir $design.xsa]
 }
 puts "@SCRIPT@: $design in $proj_dir"
 "##,
         &[
-            ("BOARD", BOARD_PART.to_string()),
-            ("PART", PART.to_string()),
+            ("BOARD", b.board_part.to_string()),
+            ("BOARD_NAME", b.name.to_string()),
+            ("TITLE", b.title.to_string()),
+            ("PART", b.part.to_string()),
             ("TOP", TOP_MODULE.to_string()),
             ("PACKAGE", PACKAGE_SCRIPT.to_string()),
-            ("SCRIPT", BD_SCRIPT.to_string()),
+            ("SCRIPT", b.bd_script.to_string()),
             ("DEFAULT_OUT", DEFAULT_OUT.to_string()),
-            ("BD_NAME", BD_NAME.to_string()),
+            ("BD_NAME", b.bd_name.to_string()),
             ("FCLK", format!("{fclk}")),
+            ("CLOCK_MAX", format!("{}", b.clock_max_mhz)),
+            ("CLOCK_MAX_SOURCE", b.clock_max_source.to_string()),
             ("IN_BYTES", in_bytes.to_string()),
             ("OUT_BYTES", out_bytes.to_string()),
             ("PIXELS", p.pixels().to_string()),
             ("IN_BEAT", (in_width / 8).to_string()),
             ("OUT_BEAT", (out_width / 8).to_string()),
             ("LPB", p.labels_per_beat.to_string()),
+            ("DMA_ADDR", ps.dma_addr_width.to_string()),
+            ("GIC0", ps.gic_base.to_string()),
+            ("GIC1", (ps.gic_base + 1).to_string()),
+            ("GIC2", (ps.gic_base + 2).to_string()),
             ("MAP_COMMENT", map_comment),
             (
                 "ARGS",
@@ -850,8 +1157,19 @@ puts "@SCRIPT@: $design in $proj_dir"
             ("CLK", CLOCK_PORT.to_string()),
             ("RST", RESET_PORT.to_string()),
             ("FCC_VLNV", ip_vlnv()),
-            ("PS7", vlnv::PS7.to_string()),
-            ("PS7_RULE", vlnv::PS7_AUTOMATION.to_string()),
+            ("PS_NAME", ps_name.to_string()),
+            ("PS_VLNV", ps.vlnv.to_string()),
+            ("PS_RULE", ps.automation_rule.to_string()),
+            ("PS_AUTO", ps.automation_config.to_string()),
+            ("PS_CONFIG", config),
+            ("PS_ACT", ps.actual_clock.to_string()),
+            ("PS_CLOCK", ps.clock.to_string()),
+            ("PS_RESET", ps.reset.to_string()),
+            ("PS_MASTER", ps.master.to_string()),
+            ("PS_MASTER_CLOCK", ps.master_clock.to_string()),
+            ("PS_SLAVE", ps.slave.to_string()),
+            ("PS_SLAVE_CLOCK", ps.slave_clock.to_string()),
+            ("PS_IRQ", ps.irq.to_string()),
             ("DMA", vlnv::DMA.to_string()),
             ("SMC", vlnv::SMARTCONNECT.to_string()),
             ("RESET", vlnv::RESET.to_string()),
@@ -861,21 +1179,26 @@ puts "@SCRIPT@: $design in $proj_dir"
     Ok(s)
 }
 
-/// The scripts that travel with `fcc_build.tcl`: `fcc_package_ip.tcl` and
-/// `fcc_zc706_bd.tcl`, for the directories of `layout`.
+/// The scripts and software that travel with `fcc_build.tcl` for `board`:
+/// `fcc_package_ip.tcl`, the block design, a copy of `fcc_regs.h` and the
+/// bare-metal C example, for the directories of `layout`.
 pub fn extra_scripts(
     g: &Generated,
     layout: &Layout,
+    board: Board,
 ) -> Result<Vec<(&'static str, String)>, RtlError> {
     let ports = top_ports(&g.verilog);
     let rtl = relative(&layout.scripts, &layout.rtl.join("fcc_top.v"));
     let xdc = relative(&layout.scripts, &layout.constraints.join("fcc_top.xdc"));
+    let b = board.info();
     Ok(vec![
         (
             PACKAGE_SCRIPT,
-            package_ip_tcl(&g.params, &ports, &rtl, &xdc),
+            package_ip_tcl(&g.params, board, &ports, &rtl, &xdc),
         ),
-        (BD_SCRIPT, bd_tcl(&g.params, &ports)?),
+        (b.bd_script, bd_tcl(&g.params, &ports, board)?),
+        (REGS_HEADER, g.regs_header.clone()),
+        (b.example, crate::example::c_example(&g.params, board)),
     ])
 }
 

@@ -28,7 +28,12 @@ fn committed_default_rtl_is_current() {
     expected.push(("constraints/fcc_top.xdc".into(), vivado::xdc(&p)));
     expected.push((
         "scripts/fcc_build.tcl".into(),
-        vivado::tcl(&p, "../rtl_out/fcc_top.v", "../constraints/fcc_top.xdc"),
+        vivado::tcl(
+            &p,
+            vivado::Board::Zc706,
+            "../rtl_out/fcc_top.v",
+            "../constraints/fcc_top.xdc",
+        ),
     ));
     for (name, text) in expected {
         let got = read(&root.join(&name));

@@ -9,7 +9,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use fcc_params::FccParams;
-use fcc_rtl::vivado::{self, Port, PortDir};
+use fcc_rtl::vivado::{self, Board, Port, PortDir, BOARDS};
 use fcc_rtl::{file_header, generate, write_all, Layout, TOP_MODULE};
 
 fn small() -> FccParams {
@@ -31,10 +31,15 @@ fn files(p: &FccParams) -> Vec<(String, String)> {
         ("fcc_top.xdc".to_string(), vivado::xdc(p)),
         (
             "fcc_build.tcl".to_string(),
-            vivado::tcl(p, "../rtl_out/fcc_top.v", "../constraints/fcc_top.xdc"),
+            vivado::tcl(
+                p,
+                Board::Zc706,
+                "../rtl_out/fcc_top.v",
+                "../constraints/fcc_top.xdc",
+            ),
         ),
     ];
-    for (n, t) in vivado::extra_scripts(&g, &Layout::default()).unwrap() {
+    for (n, t) in vivado::extra_scripts(&g, &Layout::default(), Board::Zc706).unwrap() {
         out.push((n.to_string(), t));
     }
     out
@@ -103,16 +108,17 @@ fn period_follows_clock_mhz() {
 }
 
 #[test]
-fn fabric_clock_above_the_ps_limit_is_refused_at_generation() {
+fn clock_above_the_zc706_dma_limit_is_refused_at_generation() {
     let p = FccParams {
-        clock_mhz: 300.0,
+        clock_mhz: 250.0,
         ..small()
     };
     let g = generate(&p).unwrap();
-    let e = vivado::extra_scripts(&g, &Layout::default())
+    let e = vivado::extra_scripts(&g, &Layout::default(), Board::Zc706)
         .unwrap_err()
         .to_string();
-    assert!(e.contains("--clock-mhz 300 is above 250 MHz"), "{e}");
+    assert!(e.contains("--clock-mhz 250 is above 240 MHz"), "{e}");
+    assert!(e.contains("PG022"), "{e}");
     // Nothing is written, not even the RTL.
     let root = std::env::temp_dir().join(format!("fcc-rtl-fclk-{}", std::process::id()));
     let layout = Layout {
@@ -124,12 +130,12 @@ fn fabric_clock_above_the_ps_limit_is_refused_at_generation() {
     assert!(!root.exists(), "a refused configuration left files behind");
     // The limit itself is accepted.
     let at = FccParams {
-        clock_mhz: 250.0,
+        clock_mhz: 240.0,
         ..small()
     };
     let f = files(&at);
     let bd = file(&f, "fcc_zc706_bd.tcl");
-    assert!(bd.contains("CONFIG.PCW_FPGA0_PERIPHERAL_FREQMHZ {250}"));
+    assert!(bd.contains("CONFIG.PCW_FPGA0_PERIPHERAL_FREQMHZ {240}"));
 }
 
 #[test]
@@ -154,9 +160,13 @@ fn scripts_name_the_part_the_board_and_the_top() {
 #[test]
 fn every_file_carries_the_generated_header() {
     for p in [FccParams::default(), small()] {
-        let header = file_header(&p, "#");
         for (name, text) in files(&p) {
-            assert!(text.starts_with(&header), "{name}");
+            let lead = if name.ends_with(".c") || name.ends_with(".h") {
+                "//"
+            } else {
+                "#"
+            };
+            assert!(text.starts_with(&file_header(&p, lead)), "{name}");
             assert!(text.contains(&p.hash()), "{name}");
         }
     }
@@ -274,7 +284,7 @@ fn every_port_is_constrained_in_the_xdc() {
 fn block_design_connects_the_register_port_and_irq() {
     let p = FccParams::default();
     let ps = ports(&p);
-    let bd = vivado::bd_tcl(&p, &ps).unwrap();
+    let bd = vivado::bd_tcl(&p, &ps, Board::Zc706).unwrap();
     assert!(bd.contains(
         "connect_bd_intf_net [get_bd_intf_pins ctrl_smc/M01_AXI] [get_bd_intf_pins fcc/s_axil]"
     ));
@@ -297,7 +307,9 @@ fn a_core_without_its_register_port_is_an_error() {
         .into_iter()
         .filter(|p| !p.name.starts_with("s_axil_"))
         .collect();
-    let e = vivado::bd_tcl(&small(), &ps).unwrap_err().to_string();
+    let e = vivado::bd_tcl(&small(), &ps, Board::Zc706)
+        .unwrap_err()
+        .to_string();
     assert!(e.contains("s_axil"), "{e}");
 }
 
@@ -332,7 +344,7 @@ fn dma_transfers_hold_one_whole_frame() {
     let w = vivado::dma_length_width(&big, &ps).unwrap();
     assert!(w <= vivado::DMA_LENGTH_WIDTH_MAX);
     assert!(1u64 << w > 128 * 4096 * 8);
-    let bd = vivado::bd_tcl(&p, &ps).unwrap();
+    let bd = vivado::bd_tcl(&p, &ps, Board::Zc706).unwrap();
     assert!(bd.contains("CONFIG.c_sg_length_width {21}"));
     assert!(bd.contains("CONFIG.c_m_axis_mm2s_tdata_width {64}"));
     assert!(bd.contains("CONFIG.c_s_axis_s2mm_tdata_width {64}"));
@@ -373,7 +385,7 @@ fn braces_balance_in_every_file() {
 fn committed_vivado_scripts_are_current() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
     let g = generate(&FccParams::default()).unwrap();
-    for (name, text) in vivado::extra_scripts(&g, &Layout::default()).unwrap() {
+    for (name, text) in vivado::extra_scripts(&g, &Layout::default(), Board::Zc706).unwrap() {
         let path = root.join("scripts").join(name);
         let got = std::fs::read_to_string(&path).unwrap_or_else(|e| {
             panic!(
@@ -440,10 +452,31 @@ fn dry_runs_fail_in_ci_when_tclsh_is_missing() {
 /// Logs every command Tcl does not know (all of Vivado's) to the log file as
 /// a Tcl list and returns "" (or "100%" for a run's PROGRESS), then sources
 /// the script with the remaining arguments as `::argv`.
+///
+/// Timing: without `FCC_STUB_WNS` no timing path exists (WNS "none") and a
+/// run's STATS.WNS and STATS.WHS are 0.250; with it, the worst path's slack
+/// and both run statistics are its value. `report_utilization
+/// -return_string` returns two rows of a utilisation table.
 const HARNESS: &str = r#"set ::fcc_log [open [lindex $argv 0] w]
+set ::fcc_util "| Slice LUTs                 | 9304 |     0 |    218600 |  4.26 |
+| CLB LUTs                   | 9304 |     0 |    230400 |  4.04 |
+|   LUT as Memory            |  304 |     0 |     70400 |  0.43 |"
 proc unknown {args} {
     puts $::fcc_log [string map {"\n" " "} $args]
-    if {[lindex $args 0] eq "get_property" && [lindex $args 1] eq "PROGRESS"} { return 100% }
+    set cmd [lindex $args 0]
+    set stub_wns [expr {[info exists ::env(FCC_STUB_WNS)] ? $::env(FCC_STUB_WNS) : ""}]
+    if {$cmd eq "get_property"} {
+        switch -- [lindex $args 1] {
+            PROGRESS { return 100% }
+            STATS.WNS - STATS.WHS - SLACK {
+                if {$stub_wns ne ""} { return $stub_wns }
+                return 0.250
+            }
+        }
+    }
+    if {$cmd eq "get_timing_paths" && $stub_wns ne ""} { return stub_path }
+    if {$cmd eq "ipx::get_files"} { return stub_ipx_file }
+    if {$cmd eq "report_utilization" && [lsearch -exact $args -return_string] >= 0} { return $::fcc_util }
     return ""
 }
 set script [lindex $argv 1]
@@ -458,7 +491,7 @@ exit 0
 /// The Vivado commands the scripts may call: each is in UG835. A command
 /// outside this list in a dry run is a typo (of Vivado's or of a Tcl
 /// built-in, which the stub would otherwise swallow).
-const VIVADO_COMMANDS: [&str; 57] = [
+const VIVADO_COMMANDS: [&str; 61] = [
     "add_files",
     "apply_bd_automation",
     "assign_bd_address",
@@ -490,6 +523,8 @@ const VIVADO_COMMANDS: [&str; 57] = [
     "ipx::check_integrity",
     "ipx::create_xgui_files",
     "ipx::current_core",
+    "ipx::get_file_groups",
+    "ipx::get_files",
     "ipx::package_project",
     "ipx::remove_all_bus_interface",
     "ipx::save_core",
@@ -501,6 +536,8 @@ const VIVADO_COMMANDS: [&str; 57] = [
     "place_design",
     "read_verilog",
     "read_xdc",
+    "report_drc",
+    "report_methodology",
     "report_timing_summary",
     "report_utilization",
     "route_design",
@@ -553,10 +590,20 @@ impl DryRun {
 
 /// Run `script` in `cwd` under the harness.
 fn dry_run(cwd: &Path, script: &Path, args: &[&str]) -> DryRun {
+    dry_run_wns(cwd, script, args, None)
+}
+
+/// [`dry_run`] with the stubbed timing of the routed design at `wns` ns.
+fn dry_run_wns(cwd: &Path, script: &Path, args: &[&str], wns: Option<&str>) -> DryRun {
     let harness = cwd.join("harness.tcl");
     std::fs::write(&harness, HARNESS).unwrap();
     let log = cwd.join("vivado_commands.log");
-    let out = Command::new("tclsh")
+    let mut cmd = Command::new("tclsh");
+    match wns {
+        Some(w) => cmd.env("FCC_STUB_WNS", w),
+        None => cmd.env_remove("FCC_STUB_WNS"),
+    };
+    let out = cmd
         .current_dir(cwd)
         .arg(&harness)
         .arg(&log)
@@ -589,13 +636,18 @@ fn dry_run(cwd: &Path, script: &Path, args: &[&str]) -> DryRun {
 /// A repository-shaped directory with the generated files of `p`, and a
 /// separate working directory to start "Vivado" in.
 fn generated_tree(name: &str, p: &FccParams) -> (PathBuf, PathBuf) {
+    generated_board_tree(name, p, Board::Zc706)
+}
+
+/// [`generated_tree`] for `board`.
+fn generated_board_tree(name: &str, p: &FccParams, board: Board) -> (PathBuf, PathBuf) {
     let root = scratch(name);
-    let layout = Layout {
-        rtl: root.join("repo/rtl_out"),
-        constraints: root.join("repo/constraints"),
-        scripts: root.join("repo/scripts"),
+    let layout = Layout::under(&root.join("repo"));
+    let opts = fcc_rtl::WriteOptions {
+        board,
+        force: false,
     };
-    write_all(p, &layout).unwrap();
+    fcc_rtl::write_all_with(p, &layout, &opts).unwrap();
     let work = root.join("work");
     std::fs::create_dir_all(&work).unwrap();
     (layout.scripts, work)
@@ -880,7 +932,7 @@ fn block_design_dry_run_needs_the_ip_and_writes_the_software_map() {
         ),
         "update_ip_catalog",
         "create_bd_design fcc_zc706",
-        "create_bd_cell -type ip -vlnv xilinx.com:ip:processing_system7:5.5 ps7",
+        "create_bd_cell -type ip -vlnv xilinx.com:ip:processing_system7:5.5 ps",
         "apply_bd_automation -rule xilinx.com:bd_rule:processing_system7 -config {make_external \"FIXED_IO, DDR\" apply_board_preset \"1\" Master \"Disable\" Slave \"Disable\"} {}",
         "set_property -dict {CONFIG.PCW_USE_M_AXI_GP0 1 CONFIG.PCW_USE_S_AXI_HP0 1 CONFIG.PCW_USE_FABRIC_INTERRUPT 1 CONFIG.PCW_IRQ_F2P_INTR 1 CONFIG.PCW_FPGA0_PERIPHERAL_FREQMHZ 200} {}",
         "create_bd_cell -type ip -vlnv xilinx.com:ip:proc_sys_reset:5.0 rst_fclk0",
@@ -923,11 +975,261 @@ fn block_design_dry_run_needs_the_ip_and_writes_the_software_map() {
         "make_wrapper ",
         "launch_runs synth_1 -jobs 3",
         "wait_on_run synth_1",
-        "launch_runs impl_1 -to_step write_bitstream -jobs 3",
+        "launch_runs impl_1 -to_step route_design -jobs 3",
+        "wait_on_run impl_1",
+        "get_property STATS.WNS {}",
+        "launch_runs impl_1 -next_step -jobs 3",
         "wait_on_run impl_1",
         &format!(
             "write_hw_platform -fixed -include_bit -force -file {}",
             proj.join("fcc_zc706.xsa").display()
         ),
     ]);
+}
+
+#[test]
+fn build_dry_run_stops_when_the_routed_wns_is_negative() {
+    if !tclsh_present() {
+        eprintln!("tclsh not installed: dry run skipped");
+        return;
+    }
+    let (scripts, work) = generated_tree("wns", &small());
+    let script = scripts.join("fcc_build.tcl");
+    let summary = work.join("vivado_fcc/build/summary.txt");
+
+    // Met: the flow ends normally, with the reports of the routed design.
+    let r = dry_run_wns(&work, &script, &[], Some("0.042"));
+    assert!(r.ok, "{}", r.stderr);
+    r.in_order(&[
+        "route_design",
+        "report_timing_summary -max_paths 10 -file ",
+        "report_methodology -file ",
+        "report_drc -file ",
+        "report_utilization -return_string",
+        "get_timing_paths -delay_type max",
+    ]);
+    let text = std::fs::read_to_string(&summary).unwrap();
+    for line in ["wns_ns=0.042", "slice_luts=9304", "lutram=304"] {
+        assert!(text.lines().any(|l| l == line), "{line} in {text}");
+    }
+
+    // Missed: the summary is still written, then the script fails loudly.
+    std::fs::remove_file(&summary).unwrap();
+    let r = dry_run_wns(&work, &script, &[], Some("-0.123"));
+    assert!(!r.ok, "a negative WNS passed");
+    assert!(
+        r.stderr
+            .contains("the routed fcc_top misses 200 MHz by 0.123 ns (WNS -0.123 ns)"),
+        "{}",
+        r.stderr
+    );
+    let text = std::fs::read_to_string(&summary).unwrap();
+    assert!(text.lines().any(|l| l == "wns_ns=-0.123"), "{text}");
+}
+
+#[test]
+fn block_design_dry_run_writes_no_bitstream_or_xsa_when_wns_is_negative() {
+    if !tclsh_present() {
+        eprintln!("tclsh not installed: dry run skipped");
+        return;
+    }
+    let (scripts, work) = generated_tree("bd-wns", &small());
+    let ip = work.join("vivado_fcc/ip_repo/fcc_top");
+    std::fs::create_dir_all(&ip).unwrap();
+    std::fs::write(ip.join("component.xml"), "").unwrap();
+    let script = scripts.join("fcc_zc706_bd.tcl");
+
+    let r = dry_run_wns(&work, &script, &["-bitstream"], Some("-0.5"));
+    assert!(!r.ok, "a negative WNS passed");
+    assert!(r.stderr.contains("misses its clock"), "{}", r.stderr);
+    assert!(r.stderr.contains("no bitstream, no .xsa"), "{}", r.stderr);
+    assert!(r.has("launch_runs impl_1 -to_step route_design"));
+    assert!(
+        !r.has("launch_runs impl_1 -next_step"),
+        "bitstream launched"
+    );
+    assert!(!r.has("write_hw_platform"), ".xsa written");
+
+    let r = dry_run_wns(&work, &script, &["-bitstream"], Some("0.0"));
+    assert!(r.ok, "{}", r.stderr);
+    r.in_order(&["launch_runs impl_1 -next_step", "write_hw_platform "]);
+}
+
+#[test]
+fn package_dry_run_keeps_the_xdc_out_of_context_and_declares_every_family() {
+    if !tclsh_present() {
+        eprintln!("tclsh not installed: dry run skipped");
+        return;
+    }
+    let (scripts, work) = generated_tree("package-ooc", &small());
+    let r = dry_run(&work, &scripts.join("fcc_package_ip.tcl"), &[]);
+    assert!(r.ok, "{}", r.stderr);
+    r.in_order(&[
+        "ipx::package_project ",
+        "set_property supported_families {zynq Production zynquplus Production} {}",
+        "ipx::get_file_groups xilinx_anylanguagesynthesis -of_objects {}",
+        "ipx::get_files src/fcc_top.xdc -of_objects {}",
+        "set_property USED_IN {synthesis implementation out_of_context} stub_ipx_file",
+        "ipx::save_core {}",
+    ]);
+}
+
+#[test]
+fn every_board_gets_a_block_design_that_dry_runs_with_its_own_ps() {
+    if !tclsh_present() {
+        eprintln!("tclsh not installed: dry run skipped");
+        return;
+    }
+    let p = FccParams {
+        clock_mhz: 100.0,
+        ..small()
+    };
+    for board in BOARDS {
+        let b = board.info();
+        let ps = b.ps.info();
+        let (scripts, work) = generated_board_tree(&format!("board-{}", b.name), &p, board);
+        // Only this board's block design is written.
+        for other in BOARDS.iter().filter(|o| **o != board) {
+            assert!(!scripts.join(other.info().bd_script).exists());
+        }
+        let build = dry_run(&work, &scripts.join("fcc_build.tcl"), &[]);
+        assert!(build.ok, "{}: {}", b.name, build.stderr);
+        assert!(build.has(&format!(
+            "synth_design -top fcc_top -part {} -mode out_of_context",
+            b.part
+        )));
+        let pkg = dry_run(&work, &scripts.join("fcc_package_ip.tcl"), &[]);
+        assert!(pkg.ok, "{}: {}", b.name, pkg.stderr);
+        let ip = work.join("vivado_fcc/ip_repo/fcc_top");
+        std::fs::create_dir_all(&ip).unwrap();
+        std::fs::write(ip.join("component.xml"), "").unwrap();
+        let r = dry_run(&work, &scripts.join(b.bd_script), &["-bitstream"]);
+        assert!(r.ok, "{}: {}", b.name, r.stderr);
+        let proj = work.join("vivado_fcc").join(b.name);
+        r.in_order(&[
+            &format!(
+                "create_project -force {} {} -part {}",
+                b.bd_name,
+                proj.display(),
+                b.part
+            ),
+            &format!("set_property board_part {} {{}}", b.board_part),
+            &format!("create_bd_cell -type ip -vlnv {} ps", ps.vlnv),
+            &format!("apply_bd_automation -rule {} ", ps.automation_rule),
+            "create_bd_cell -type ip -vlnv xilinx.com:ip:axi_dma:7.1 dma",
+            "assign_bd_address",
+            "validate_bd_design",
+            &format!("set_property top {}_wrapper {{}}", b.bd_name),
+            "write_hw_platform ",
+        ]);
+        // The PS pins used are the ones of this PS flavour.
+        let pins: BTreeSet<&str> = r
+            .log
+            .iter()
+            .filter_map(|l| l.strip_prefix("get_bd_pins ps/"))
+            .collect();
+        let want: BTreeSet<&str> = [ps.clock, ps.reset, ps.master_clock, ps.slave_clock, ps.irq]
+            .into_iter()
+            .collect();
+        assert_eq!(pins, want, "{}", b.name);
+        let intf: BTreeSet<&str> = r
+            .log
+            .iter()
+            .filter_map(|l| l.strip_prefix("get_bd_intf_pins ps/"))
+            .collect();
+        assert_eq!(
+            intf,
+            [ps.master, ps.slave].into_iter().collect(),
+            "{}",
+            b.name
+        );
+        let dict = r
+            .log
+            .iter()
+            .find(|l| l.starts_with("set_property -dict {CONFIG.c_include_sg"))
+            .unwrap();
+        assert!(
+            dict.contains(&format!("CONFIG.c_addr_width {}", ps.dma_addr_width)),
+            "{dict}"
+        );
+        match b.ps {
+            vivado::Ps::Ps7 => assert_eq!(ps.dma_addr_width, 32),
+            vivado::Ps::ZynqUltra => {
+                assert!(ps.dma_addr_width > 32);
+                assert!(r.has("set_property -dict {CONFIG.PSU__USE__M_AXI_GP0 1 CONFIG.PSU__USE__M_AXI_GP1 0 CONFIG.PSU__USE__S_AXI_GP2 1 CONFIG.PSU__USE__IRQ0 1 CONFIG.PSU__FPGA_PL0_ENABLE 1 CONFIG.PSU__CRL_APB__PL0_REF_CTRL__FREQMHZ 100} {}"));
+            }
+        }
+        assert!(proj.join(format!("{}_map.txt", b.bd_name)).is_file());
+        // The C example and its register header sit beside the block design.
+        assert!(scripts.join(b.example).is_file());
+        assert!(scripts.join("fcc_regs.h").is_file());
+    }
+}
+
+#[test]
+fn xc7z020_boards_refuse_a_clock_their_dma_cannot_meet() {
+    for board in [Board::Zedboard, Board::PynqZ2] {
+        let root = scratch(&format!("slow-{}", board.info().name));
+        let layout = Layout::under(&root.join("out"));
+        let opts = fcc_rtl::WriteOptions {
+            board,
+            force: false,
+        };
+        let e = fcc_rtl::write_all_with(&FccParams::default(), &layout, &opts)
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("--clock-mhz 200 is above 150 MHz"), "{e}");
+        assert!(e.contains("xc7z020") && e.contains("PG022"), "{e}");
+        assert!(!root.join("out").exists(), "a refused board left files");
+        let at = FccParams {
+            clock_mhz: 150.0,
+            ..FccParams::default()
+        };
+        fcc_rtl::write_all_with(&at, &layout, &opts).unwrap();
+    }
+}
+
+#[test]
+fn another_configuration_is_not_overwritten_without_force() {
+    let root = scratch("overwrite");
+    let layout = Layout::under(&root);
+    write_all(&small(), &layout).unwrap();
+    let before = std::fs::read_to_string(root.join("scripts/fcc_build.tcl")).unwrap();
+    // The same configuration regenerates in place.
+    write_all(&small(), &layout).unwrap();
+    let k5 = FccParams {
+        fsize: 5,
+        ..small()
+    };
+    let e = write_all(&k5, &layout).unwrap_err().to_string();
+    assert!(e.contains("refusing to overwrite"), "{e}");
+    assert!(e.contains("rtl_out/fcc_params.json"), "{e}");
+    assert!(e.contains("--force"), "{e}");
+    assert_eq!(
+        std::fs::read_to_string(root.join("scripts/fcc_build.tcl")).unwrap(),
+        before,
+        "a refused run changed a file"
+    );
+    // Same parameters, another board: the shared scripts name their board.
+    let zcu = fcc_rtl::WriteOptions {
+        board: Board::Zcu104,
+        force: false,
+    };
+    let e = fcc_rtl::write_all_with(&small(), &layout, &zcu)
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("board zc706"), "{e}");
+    // A file fcc gen did not write is not replaced either.
+    std::fs::write(root.join("constraints/fcc_top.xdc"), "# mine\n").unwrap();
+    let e = write_all(&small(), &layout).unwrap_err().to_string();
+    assert!(e.contains("not written by fcc gen"), "{e}");
+    // --force replaces all of them.
+    let force = fcc_rtl::WriteOptions {
+        board: Board::Zc706,
+        force: true,
+    };
+    fcc_rtl::write_all_with(&k5, &layout, &force).unwrap();
+    assert!(std::fs::read_to_string(root.join("scripts/fcc_build.tcl"))
+        .unwrap()
+        .contains(&k5.hash()));
 }

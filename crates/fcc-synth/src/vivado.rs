@@ -11,9 +11,13 @@
 //!
 //! - the script reads `../rtl_out/fcc_top.v` and `../constraints/fcc_top.xdc`
 //!   relative to itself, so each generated configuration carries its own;
-//! - it synthesises, optimises, places and routes for the XC7Z045 and writes
+//! - it synthesises, optimises, places and routes for the board's part (the
+//!   ZC706's XC7Z045 for the layouts this crate generates) and writes
 //!   [`UTILIZATION_REPORT`] (`report_utilization`) and [`TIMING_REPORT`]
-//!   (`report_timing_summary`) under `OUT`.
+//!   (`report_timing_summary`) under `OUT`;
+//! - when the routed design misses the clock (WNS < 0) it writes the reports
+//!   and then fails, so [`run_build`] reports a tool failure whose log tail
+//!   names the slack.
 //!
 //! Vivado is not available where this crate was written: the report readers
 //! follow the documented text layout of those two commands and are tested on

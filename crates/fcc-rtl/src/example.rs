@@ -1,0 +1,264 @@
+//! The bare-metal C example written beside a block design: one frame
+//! through the AXI DMA in simple mode (the Xilinx standalone `XAxiDma`
+//! driver) and the core's register sequence, with the golden model's
+//! quantisation rule. Every number in it comes from `fcc_regs.h` (written
+//! from the same register map) or from [`FccParams`] through the generator.
+
+use fcc_params::FccParams;
+use fcc_pixel::{LABEL_SLOT_BITS, PIXEL_BYTES, PIXEL_VALID_BIT, Q_ONE};
+
+use crate::file_header;
+use crate::vivado::{Board, Ps};
+
+/// Writes of the run-time registers, before the frame is sent.
+///
+/// RUN PARAMETERS GO HERE: when the register map gains the run-time
+/// registers (K, thresholds, rows, columns of one frame), this returns the C
+/// statements that program them from the example's `fcc_run` values. Until
+/// then the core runs every frame with its build parameters and this is
+/// empty; the example says so where the writes will appear.
+fn run_parameter_writes(_p: &FccParams) -> String {
+    String::new()
+}
+
+/// `fcc_<board>_example.c` for `p` on `board`.
+pub fn c_example(p: &FccParams, board: Board) -> String {
+    let b = board.info();
+    let (cache_line, addr_note) = match b.ps {
+        Ps::Ps7 => (32, "32-bit DMA addresses"),
+        Ps::ZynqUltra => (
+            64,
+            "DMA addresses wider than 32 bits (XAxiDma_SimpleTransfer writes both halves)",
+        ),
+    };
+    let run = run_parameter_writes(p);
+    let run = if run.is_empty() {
+        "    /* Run-time registers (K, thresholds, frame size) are not in this\n     * build's register map: the core runs with its build parameters. */\n"
+            .to_string()
+    } else {
+        run
+    };
+    let mut s = file_header(p, "//");
+    s.push_str(&format!("// Board: {} ({})\n", b.name, b.part));
+    s.push_str(&crate::vivado::fill_public(
+        EXAMPLE,
+        &[
+            ("TITLE", b.title.to_string()),
+            ("BD", b.bd_script.to_string()),
+            ("ADDR_NOTE", addr_note.to_string()),
+            ("CACHE_LINE", cache_line.to_string()),
+            ("Q_ONE", format!("{Q_ONE:.1}")),
+            ("VALID_BIT", PIXEL_VALID_BIT.to_string()),
+            ("PIXEL_BYTES", PIXEL_BYTES.to_string()),
+            ("SLOT_BITS", LABEL_SLOT_BITS.to_string()),
+            (
+                "SLOT_MASK",
+                format!("0x{:X}u", (1u64 << LABEL_SLOT_BITS) - 1),
+            ),
+            ("RUN_WRITES", run),
+        ],
+    ));
+    s
+}
+
+const EXAMPLE: &str = r#"//
+// Bare-metal example for the @TITLE@ block design (scripts/@BD@, exported
+// as an .xsa): sends one frame through the AXI DMA in simple mode, waits for
+// the core, and reads back the labels and the frame's status. C99, for a
+// Vitis standalone application; @ADDR_NOTE@.
+//
+// Build: add this file and fcc_regs.h (beside it, written by fcc gen from the
+// same parameters) to a standalone application on the exported platform.
+// The core's base address comes from xparameters.h (the cell is named
+// "fcc"); if the BSP names it differently, compile with -DFCC_BASEADDR=0x...
+// (the fcc segment in the block design's _map.txt). The DMA is found by
+// device ID (XPAR_AXIDMA_0_DEVICE_ID, or -DFCC_DMA_ID=...).
+//
+// The sequence: check ID and parameter hash; clear; enable the interrupt;
+// arm S2MM (labels) before MM2S (pixels); wait for STATUS.FRAME_DONE (the
+// level of the core's irq) and for both DMA channels; read the latched
+// status; clear FRAME_DONE.
+
+#include <math.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include "xaxidma.h"
+#include "xil_cache.h"
+#include "xil_io.h"
+#include "xil_printf.h"
+#include "xparameters.h"
+#include "xstatus.h"
+
+#include "fcc_regs.h"
+
+#ifndef FCC_BASEADDR
+#define FCC_BASEADDR XPAR_FCC_BASEADDR
+#endif
+#ifndef FCC_DMA_ID
+#define FCC_DMA_ID XPAR_AXIDMA_0_DEVICE_ID
+#endif
+
+/* The frame this build takes (build constants of fcc_regs.h). */
+#define FCC_ROWS FCC_REG_ROWS_MAX_RESET
+#define FCC_COLS FCC_REG_COLS_MAX_RESET
+#define FCC_PIXELS (FCC_ROWS * FCC_COLS)
+#define FCC_LPB FCC_REG_LABELS_PER_BEAT_RESET
+#define FCC_OUT_WORDS ((FCC_PIXELS + FCC_LPB - 1u) / FCC_LPB)
+#define FCC_IN_BYTES (FCC_PIXELS * @PIXEL_BYTES@u)
+#define FCC_OUT_BYTES (FCC_OUT_WORDS * @PIXEL_BYTES@u)
+/* Q7.8: 1 m = 256; bit @VALID_BIT@ of an input word marks a pixel with a point
+ * (fcc-pixel, the format the golden model and the drivers share). */
+#define FCC_Q_ONE @Q_ONE@
+#define FCC_VALID_BIT @VALID_BIT@u
+/* 16-bit fields: coordinates in an input word, labels in an output word. */
+#define FCC_SLOT_BITS @SLOT_BITS@u
+/* Polls before a frame is given up (each poll is one register read). */
+#define FCC_POLL_LIMIT 100000000u
+
+static uint64_t fcc_in[FCC_PIXELS] __attribute__((aligned(@CACHE_LINE@)));
+static uint64_t fcc_out[FCC_OUT_WORDS] __attribute__((aligned(@CACHE_LINE@)));
+
+static uint32_t fcc_rd(uint32_t offset) { return Xil_In32((UINTPTR)FCC_BASEADDR + offset); }
+static void fcc_wr(uint32_t offset, uint32_t value) { Xil_Out32((UINTPTR)FCC_BASEADDR + offset, value); }
+
+/* One coordinate in metres to Q7.8, the golden model's rule:
+ * sign(x) * floor(|x| * 256 + 0.5); 0 (no value) when x is not finite or the
+ * result is outside [-32768, 32767]. */
+int fcc_quantize(double x, int16_t *q)
+{
+    double mag;
+    uint32_t m;
+    if (!isfinite(x)) {
+        return 0;
+    }
+    mag = (x < 0.0 ? -x : x) * FCC_Q_ONE + 0.5;
+    if (mag >= 65536.0) {
+        return 0;
+    }
+    m = (uint32_t)mag; /* non-negative: truncation is the floor */
+    if (x < 0.0) {
+        if (m > 32768u) {
+            return 0;
+        }
+        *q = (int16_t)(-(int32_t)m);
+    } else {
+        if (m > 32767u) {
+            return 0;
+        }
+        *q = (int16_t)m;
+    }
+    return 1;
+}
+
+/* One input word: x, y, z in Q7.8 and the valid bit; an empty pixel (any
+ * coordinate without a value) is 0. */
+uint64_t fcc_pack_pixel(double x, double y, double z)
+{
+    int16_t q[3];
+    if (!fcc_quantize(x, &q[0]) || !fcc_quantize(y, &q[1]) || !fcc_quantize(z, &q[2])) {
+        return 0;
+    }
+    return (uint64_t)(uint16_t)q[0] | ((uint64_t)(uint16_t)q[1] << FCC_SLOT_BITS) |
+           ((uint64_t)(uint16_t)q[2] << (2u * FCC_SLOT_BITS)) | ((uint64_t)1 << FCC_VALID_BIT);
+}
+
+/* The label of pixel i (raster order) in the output buffer. */
+static uint32_t fcc_label(uint32_t i)
+{
+    return (uint32_t)(fcc_out[i / FCC_LPB] >> (FCC_SLOT_BITS * (i % FCC_LPB))) & @SLOT_MASK@;
+}
+
+/* A demonstration frame: two short walls of points 10 m ahead, on the
+ * first two rows, far enough apart to be two clusters. Replace it with a
+ * sensor's range image (x, y, z per pixel, NaN for no return). */
+static void fcc_demo_frame(void)
+{
+    uint32_t i;
+    for (i = 0; i < FCC_PIXELS; i++) {
+        uint32_t r = i / FCC_COLS, c = i % FCC_COLS;
+        int wall = r < 2u && (c < 4u || (c >= 16u && c < 20u));
+        fcc_in[i] = wall ? fcc_pack_pixel(10.0, 0.05 * (double)c, 0.1 * (double)r) : 0;
+    }
+}
+
+int main(void)
+{
+    XAxiDma dma;
+    XAxiDma_Config *cfg;
+    uint32_t polls, status, i, labelled = 0;
+    uint64_t hash;
+
+    /* 1. The right core: ID and the parameter hash of this build. */
+    if (fcc_rd(FCC_REG_ID) != FCC_ID_MAGIC) {
+        xil_printf("fcc: no FCC core at 0x%08x (ID 0x%08x)\r\n", (unsigned)FCC_BASEADDR,
+                   (unsigned)fcc_rd(FCC_REG_ID));
+        return 1;
+    }
+    hash = ((uint64_t)fcc_rd(FCC_REG_HASH_HI) << 32) | fcc_rd(FCC_REG_HASH_LO);
+    if (hash != FCC_PARAMS_HASH) {
+        xil_printf("fcc: the bitstream was built with other parameters (hash %08x%08x)\r\n",
+                   (unsigned)(hash >> 32), (unsigned)hash);
+        return 1;
+    }
+
+    /* 2. The DMA in simple mode, its interrupts off (this example polls). */
+    cfg = XAxiDma_LookupConfig(FCC_DMA_ID);
+    if (cfg == NULL || XAxiDma_CfgInitialize(&dma, cfg) != XST_SUCCESS || XAxiDma_HasSg(&dma)) {
+        xil_printf("fcc: AXI DMA %d not found or not in simple mode\r\n", (int)FCC_DMA_ID);
+        return 1;
+    }
+    XAxiDma_IntrDisable(&dma, XAXIDMA_IRQ_ALL_MASK, XAXIDMA_DEVICE_TO_DMA);
+    XAxiDma_IntrDisable(&dma, XAXIDMA_IRQ_ALL_MASK, XAXIDMA_DMA_TO_DEVICE);
+
+    /* 3. Clear the frame counter and status, then enable the interrupt
+     * (irq follows STATUS.FRAME_DONE). */
+    fcc_wr(FCC_REG_CONTROL, FCC_CONTROL_CLEAR_MASK);
+    fcc_wr(FCC_REG_CONTROL, FCC_CONTROL_IRQ_ENABLE_MASK);
+
+    /* 4. Run parameters. */
+@RUN_WRITES@
+    /* 5. The frame, out of the data cache; the label buffer invalidated. */
+    fcc_demo_frame();
+    Xil_DCacheFlushRange((UINTPTR)fcc_in, FCC_IN_BYTES);
+    Xil_DCacheInvalidateRange((UINTPTR)fcc_out, FCC_OUT_BYTES);
+
+    /* 6. Arm S2MM (labels) first, then start MM2S (pixels). */
+    if (XAxiDma_SimpleTransfer(&dma, (UINTPTR)fcc_out, FCC_OUT_BYTES, XAXIDMA_DEVICE_TO_DMA) != XST_SUCCESS ||
+        XAxiDma_SimpleTransfer(&dma, (UINTPTR)fcc_in, FCC_IN_BYTES, XAXIDMA_DMA_TO_DEVICE) != XST_SUCCESS) {
+        xil_printf("fcc: the DMA refused the transfer\r\n");
+        return 1;
+    }
+
+    /* 7. Wait for the frame: FRAME_DONE (irq) and both channels idle. */
+    for (polls = 0; polls < FCC_POLL_LIMIT; polls++) {
+        status = fcc_rd(FCC_REG_STATUS);
+        if ((status & FCC_STATUS_FRAME_DONE_MASK) && !XAxiDma_Busy(&dma, XAXIDMA_DEVICE_TO_DMA) &&
+            !XAxiDma_Busy(&dma, XAXIDMA_DMA_TO_DEVICE)) {
+            break;
+        }
+    }
+    if (polls == FCC_POLL_LIMIT) {
+        xil_printf("fcc: no frame done after %u polls; reset the DMA and write CONTROL.SOFT_RESET\r\n",
+                   (unsigned)FCC_POLL_LIMIT);
+        XAxiDma_Reset(&dma);
+        fcc_wr(FCC_REG_CONTROL, FCC_CONTROL_SOFT_RESET_MASK);
+        return 1;
+    }
+    Xil_DCacheInvalidateRange((UINTPTR)fcc_out, FCC_OUT_BYTES);
+
+    /* 8. The frame's latched status, then clear FRAME_DONE (and irq). */
+    xil_printf("fcc: frame %u: %u clusters, %u provisional labels, %u unlabelled, flags 0x%x, %u joins, %u stalls\r\n",
+               (unsigned)fcc_rd(FCC_REG_FRAME_COUNT), (unsigned)fcc_rd(FCC_REG_CLUSTERS),
+               (unsigned)fcc_rd(FCC_REG_PROVISIONAL), (unsigned)fcc_rd(FCC_REG_UNLABELLED),
+               (unsigned)fcc_rd(FCC_REG_FRAME_FLAGS), (unsigned)fcc_rd(FCC_REG_JOINS),
+               (unsigned)fcc_rd(FCC_REG_GEAR_STALLS));
+    fcc_wr(FCC_REG_STATUS, FCC_STATUS_FRAME_DONE_MASK);
+
+    for (i = 0; i < FCC_PIXELS; i++) {
+        labelled += fcc_label(i) != 0u;
+    }
+    xil_printf("fcc: %u labelled pixels\r\n", (unsigned)labelled);
+    return 0;
+}
+"#;
