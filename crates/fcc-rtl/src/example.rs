@@ -10,16 +10,26 @@ use fcc_pixel::{LABEL_SLOT_BITS, PIXEL_BYTES, PIXEL_VALID_BIT, Q_ONE};
 use crate::file_header;
 use crate::vivado::{Board, Ps};
 
-/// Writes of the run-time registers, before the frame is sent.
-///
-/// RUN PARAMETERS GO HERE: when the register map gains the run-time
-/// registers (K, thresholds, rows, columns of one frame), this returns the C
-/// statements that program them from the example's `fcc_run` values. Until
-/// then the core runs every frame with its build parameters and this is
-/// empty; the example says so where the writes will appear.
-fn run_parameter_writes(_p: &FccParams) -> String {
-    String::new()
-}
+/// Writes of the run-time registers, before the frame is sent: the frame's
+/// size, K and thresholds, then a check of ERROR (the register map's rules:
+/// a refused value keeps the old one and sets its bit).
+const RUN_WRITES: &str = r#"    /*    The frame's rows and columns, K and thresholds (Q7.8,
+     *    floor(th * 256 + 0.5)); here the build's power-on values. A core built
+     *    for larger frames or a larger K takes each frame's own values. The
+     *    core takes them at the start of the next frame; a refused value keeps
+     *    the old one and sets its ERROR bit. */
+    fcc_wr(FCC_REG_ERROR, FCC_ERROR_K_MASK | FCC_ERROR_TH_H_MASK | FCC_ERROR_TH_V_MASK |
+                              FCC_ERROR_ROWS_MASK | FCC_ERROR_COLS_MASK);
+    fcc_wr(FCC_REG_RUN_ROWS, FCC_ROWS);
+    fcc_wr(FCC_REG_RUN_COLS, FCC_COLS);
+    fcc_wr(FCC_REG_RUN_K, FCC_REG_RUN_K_RESET);
+    fcc_wr(FCC_REG_RUN_TH_H, FCC_REG_RUN_TH_H_RESET);
+    fcc_wr(FCC_REG_RUN_TH_V, FCC_REG_RUN_TH_V_RESET);
+    if (fcc_rd(FCC_REG_ERROR) != 0u) {
+        xil_printf("fcc: run parameters refused (ERROR 0x%02x)\r\n", (unsigned)fcc_rd(FCC_REG_ERROR));
+        return 1;
+    }
+"#;
 
 /// `fcc_<board>_example.c` for `p` on `board`.
 pub fn c_example(p: &FccParams, board: Board) -> String {
@@ -30,13 +40,6 @@ pub fn c_example(p: &FccParams, board: Board) -> String {
             64,
             "DMA addresses wider than 32 bits (XAxiDma_SimpleTransfer writes both halves)",
         ),
-    };
-    let run = run_parameter_writes(p);
-    let run = if run.is_empty() {
-        "    /* Run-time registers (K, thresholds, frame size) are not in this\n     * build's register map: the core runs with its build parameters. */\n"
-            .to_string()
-    } else {
-        run
     };
     let mut s = file_header(p, "//");
     s.push_str(&format!("// Board: {} ({})\n", b.name, b.part));
@@ -55,7 +58,7 @@ pub fn c_example(p: &FccParams, board: Board) -> String {
                 "SLOT_MASK",
                 format!("0x{:X}u", (1u64 << LABEL_SLOT_BITS) - 1),
             ),
-            ("RUN_WRITES", run),
+            ("RUN_WRITES", RUN_WRITES.to_string()),
         ],
     ));
     s
