@@ -20,15 +20,7 @@ void fcc_step(void* p, const FccIn* in, FccOut* out) {
             t->m_axis_tready = in->m_tready;
             t->rst = in->rst;
             t->s_axis_tkeep = 0xff;
-            t->s_axil_awaddr = in->awaddr;
-            t->s_axil_awvalid = in->awvalid;
-            t->s_axil_wdata = in->wdata;
-            t->s_axil_wstrb = 0xf;
-            t->s_axil_wvalid = in->wvalid;
-            t->s_axil_bready = in->bready;
-            t->s_axil_araddr = in->araddr;
-            t->s_axil_arvalid = in->arvalid;
-            t->s_axil_rready = in->rready;
+            vl_drive_axil(t, in);
         },
         [out](Vfcc_top* t) {
             out->m_tdata = t->m_axis_tdata;
@@ -45,15 +37,7 @@ void fcc_step(void* p, const FccIn* in, FccOut* out) {
             out->frame_error = t->status_frame_error;
             out->overflow = t->status_overflow;
             out->idle = t->status_idle;
-            out->rdata = t->s_axil_rdata;
-            out->awready = t->s_axil_awready;
-            out->wready = t->s_axil_wready;
-            out->bvalid = t->s_axil_bvalid;
-            out->bresp = t->s_axil_bresp;
-            out->arready = t->s_axil_arready;
-            out->rvalid = t->s_axil_rvalid;
-            out->rresp = t->s_axil_rresp;
-            out->irq = t->irq;
+            vl_sample_axil(t, out);
         });
 }
 
