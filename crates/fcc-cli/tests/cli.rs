@@ -2,8 +2,8 @@
 
 use fcc_golden::{reference::reference_labels, Frame};
 use fcc_params::FccParams;
-use fcc_testkit::{s, same_partition, stderr, tmpdir};
-use std::path::{Path, PathBuf};
+use fcc_testkit::{assert_one_line_error, s, same_partition, stderr, tmpdir};
+use std::path::PathBuf;
 use std::process::Output;
 
 fn fcc(args: &[&str]) -> Output {
@@ -107,14 +107,6 @@ fn batch_writes_one_label_file_per_input() {
     for seed in 0..3 {
         assert!(d.join(format!("labels_s{seed}.npy")).exists());
     }
-}
-
-fn assert_one_line_error(o: &Output, file: &Path, problem: &str) {
-    assert_eq!(o.status.code(), Some(2), "{}", stderr(o));
-    let e = stderr(o);
-    assert_eq!(e.lines().count(), 1, "{e}");
-    assert!(e.contains(s(file)), "{e}");
-    assert!(e.contains(problem), "{e}");
 }
 
 #[test]
