@@ -1,12 +1,16 @@
 //! Driving frames through the core over its AXI4-Stream ports.
 
 use fcc_golden::Frame;
+use fcc_pixel::{label_of_beat, LABEL_SLOT_BITS, LABEL_SLOT_BYTES};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
 use crate::axil::{AxilM, AxilPort, AxilS};
 use crate::model::{Dut, FccIn, FccOut};
 use crate::SimError;
+
+/// The TKEEP bits of a label slot that holds a label.
+const SLOT_KEEP: u8 = (1 << LABEL_SLOT_BYTES) - 1;
 
 /// Where `tlast` goes in the input stream.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -214,13 +218,13 @@ impl Dut {
                 }
                 run.beats += 1;
                 for s in 0..lpb {
-                    let keep = (out.m_tkeep >> (2 * s)) & 3;
+                    let keep = (out.m_tkeep >> (LABEL_SLOT_BYTES * s)) & SLOT_KEEP;
                     match keep {
-                        3 => run.labels.push(((out.m_tdata >> (16 * s)) & 0xffff) as u32),
+                        SLOT_KEEP => run.labels.push(label_of_beat(out.m_tdata, s)),
                         0 => {}
                         _ => {
                             return Err(SimError::Protocol(format!(
-                                "tkeep {:#04x} splits a 16-bit slot (cycle {now})",
+                                "tkeep {:#04x} splits a {LABEL_SLOT_BITS}-bit slot (cycle {now})",
                                 out.m_tkeep
                             )))
                         }

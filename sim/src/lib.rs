@@ -10,6 +10,7 @@ pub mod axil;
 pub mod board;
 pub mod check;
 pub mod drive;
+pub mod ffi;
 pub mod frames;
 pub mod model;
 pub mod regs_bench;

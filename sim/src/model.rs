@@ -3,7 +3,8 @@
 //! The model is built on demand, not by a build script, so any configuration
 //! works without recompiling this crate: the RTL is generated into a cache
 //! directory keyed by the parameters and the generated text, verilated, the
-//! C shim (`csrc/fcc_shim.cpp`) is linked against it into a shared library,
+//! C shim (`csrc/fcc_shim.cpp`, with `csrc/vl_model.h` and the `fcc_ffi.h`
+//! that [`crate::ffi`] generates) is linked against it into a shared library,
 //! and the library is loaded with `libloading`. Builds go to a private
 //! directory that is renamed into place, so concurrent builders never see a
 //! half-built model. The cache root is `$FCC_SIM_CACHE`, else
@@ -22,57 +23,58 @@ use std::sync::{Arc, Mutex, OnceLock};
 
 use fcc_params::FccParams;
 
+use crate::ffi::{self, c_struct};
 use crate::SimError;
 
 const SHIM: &str = include_str!("../csrc/fcc_shim.cpp");
 const LIB_NAME: &str = "libfcc_sim.so";
 
-/// Inputs of one cycle; layout shared with `FccIn` in the shim.
-#[repr(C)]
-#[derive(Debug, Clone, Copy, Default)]
-pub struct FccIn {
-    pub s_tdata: u64,
-    pub s_tvalid: u8,
-    pub s_tlast: u8,
-    pub m_tready: u8,
-    pub rst: u8,
-    pub awaddr: u32,
-    pub wdata: u32,
-    pub araddr: u32,
-    pub awvalid: u8,
-    pub wvalid: u8,
-    pub bready: u8,
-    pub arvalid: u8,
-    pub rready: u8,
+c_struct! {
+    /// Inputs of one cycle (declared to the shim by the generated `fcc_ffi.h`).
+    pub struct FccIn {
+        pub s_tdata: u64,
+        pub s_tvalid: u8,
+        pub s_tlast: u8,
+        pub m_tready: u8,
+        pub rst: u8,
+        pub awaddr: u32,
+        pub wdata: u32,
+        pub araddr: u32,
+        pub awvalid: u8,
+        pub wvalid: u8,
+        pub bready: u8,
+        pub arvalid: u8,
+        pub rready: u8,
+    }
 }
 
-/// Outputs during one cycle, before its rising edge; layout shared with `FccOut`.
-#[repr(C)]
-#[derive(Debug, Clone, Copy, Default)]
-pub struct FccOut {
-    pub m_tdata: u64,
-    pub clusters: u32,
-    pub provisional: u32,
-    pub unlabelled: u32,
-    pub joins: u32,
-    pub gear_stalls: u32,
-    pub s_tready: u8,
-    pub m_tvalid: u8,
-    pub m_tlast: u8,
-    pub m_tkeep: u8,
-    pub frame_done: u8,
-    pub frame_error: u8,
-    pub overflow: u8,
-    pub idle: u8,
-    pub rdata: u32,
-    pub awready: u8,
-    pub wready: u8,
-    pub bvalid: u8,
-    pub bresp: u8,
-    pub arready: u8,
-    pub rvalid: u8,
-    pub rresp: u8,
-    pub irq: u8,
+c_struct! {
+    /// Outputs during one cycle, before its rising edge.
+    pub struct FccOut {
+        pub m_tdata: u64,
+        pub clusters: u32,
+        pub provisional: u32,
+        pub unlabelled: u32,
+        pub joins: u32,
+        pub gear_stalls: u32,
+        pub s_tready: u8,
+        pub m_tvalid: u8,
+        pub m_tlast: u8,
+        pub m_tkeep: u8,
+        pub frame_done: u8,
+        pub frame_error: u8,
+        pub overflow: u8,
+        pub idle: u8,
+        pub rdata: u32,
+        pub awready: u8,
+        pub wready: u8,
+        pub bvalid: u8,
+        pub bresp: u8,
+        pub arready: u8,
+        pub rvalid: u8,
+        pub rresp: u8,
+        pub irq: u8,
+    }
 }
 
 type NewFn = unsafe extern "C" fn() -> *mut c_void;
@@ -172,13 +174,22 @@ pub(crate) fn fnv(text: &str) -> u64 {
     h
 }
 
+/// The text of the shim `shim` and of the files it includes, for cache keys.
+pub(crate) fn shim_text(shim: &str) -> String {
+    let mut s = shim.to_string();
+    for (_, text) in ffi::support_files() {
+        s.push_str(&text);
+    }
+    s
+}
+
 /// The cache directory's name: the parameters, the Verilog and the shim, and
 /// whether the model counts coverage.
 fn cache_key(p: &FccParams, verilog: &str) -> String {
     format!(
         "{}-{:016x}{}",
         p.hash(),
-        fnv(&format!("{verilog}{SHIM}")),
+        fnv(&format!("{verilog}{}", shim_text(SHIM))),
         if coverage_dir().is_some() { "-cov" } else { "" }
     )
 }
@@ -361,6 +372,10 @@ pub(crate) fn build(files: &[(&str, &str)], dir: &Path, shim: &Shim) -> Result<(
     let _ = std::fs::remove_dir_all(&tmp);
     std::fs::create_dir_all(&tmp).map_err(io(&tmp))?;
     for (name, text) in files {
+        let path = tmp.join(name);
+        std::fs::write(&path, text).map_err(io(&path))?;
+    }
+    for (name, text) in ffi::support_files() {
         let path = tmp.join(name);
         std::fs::write(&path, text).map_err(io(&path))?;
     }

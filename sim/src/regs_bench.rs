@@ -10,66 +10,67 @@ use std::sync::{Arc, Mutex, OnceLock};
 use fcc_params::FccParams;
 
 use crate::axil::{AxilM, AxilPort, AxilS};
-use crate::model::{build, cache_root, fnv, Shim};
+use crate::ffi::c_struct;
+use crate::model::{build, cache_root, fnv, shim_text, Shim};
 use crate::SimError;
 
 const SHIM: &str = include_str!("../csrc/fcc_regs_shim.cpp");
 const LIB_NAME: &str = "libfcc_regs_sim.so";
 
-/// Inputs of one cycle; layout shared with `RegsIn` in the shim.
-#[repr(C)]
-#[derive(Debug, Clone, Copy, Default)]
-pub struct RegsIn {
-    pub awaddr: u32,
-    pub wdata: u32,
-    pub araddr: u32,
-    pub unlabelled: u32,
-    pub joins: u32,
-    pub gear_stalls: u32,
-    pub clusters: u16,
-    pub provisional: u16,
-    pub awvalid: u8,
-    pub wvalid: u8,
-    pub bready: u8,
-    pub arvalid: u8,
-    pub rready: u8,
-    pub rst: u8,
-    pub frame_end: u8,
-    pub idle: u8,
-    pub overflow: u8,
-    pub frame_error: u8,
+c_struct! {
+    /// Inputs of one cycle (declared to the shim by the generated `fcc_ffi.h`).
+    pub struct RegsIn {
+        pub awaddr: u32,
+        pub wdata: u32,
+        pub araddr: u32,
+        pub unlabelled: u32,
+        pub joins: u32,
+        pub gear_stalls: u32,
+        pub clusters: u16,
+        pub provisional: u16,
+        pub awvalid: u8,
+        pub wvalid: u8,
+        pub bready: u8,
+        pub arvalid: u8,
+        pub rready: u8,
+        pub rst: u8,
+        pub frame_end: u8,
+        pub idle: u8,
+        pub overflow: u8,
+        pub frame_error: u8,
+    }
 }
 
-/// Outputs during one cycle; layout shared with `RegsOut` in the shim.
-#[repr(C)]
-#[derive(Debug, Clone, Copy, Default)]
-pub struct RegsOut {
-    /// Active -(tH^2 + 1), 36-bit two's complement.
-    pub run_th_h_c: u64,
-    /// Active -tV^2, 36-bit two's complement.
-    pub run_th_v_c: u64,
-    pub rdata: u32,
-    pub st_unlabelled: u32,
-    pub st_joins: u32,
-    pub st_gear_stalls: u32,
-    pub st_clusters: u16,
-    pub st_provisional: u16,
-    pub awready: u8,
-    pub wready: u8,
-    pub bvalid: u8,
-    pub bresp: u8,
-    pub arready: u8,
-    pub rvalid: u8,
-    pub rresp: u8,
-    pub irq: u8,
-    pub core_rst: u8,
-    pub frame_done: u8,
-    pub st_overflow: u8,
-    pub st_frame_error: u8,
-    /// Active run parameters.
-    pub run_k: u8,
-    pub run_rows: u8,
-    pub run_cols: u16,
+c_struct! {
+    /// Outputs during one cycle.
+    pub struct RegsOut {
+        /// Active -(tH^2 + 1), 36-bit two's complement.
+        pub run_th_h_c: u64,
+        /// Active -tV^2, 36-bit two's complement.
+        pub run_th_v_c: u64,
+        pub rdata: u32,
+        pub st_unlabelled: u32,
+        pub st_joins: u32,
+        pub st_gear_stalls: u32,
+        pub st_clusters: u16,
+        pub st_provisional: u16,
+        pub awready: u8,
+        pub wready: u8,
+        pub bvalid: u8,
+        pub bresp: u8,
+        pub arready: u8,
+        pub rvalid: u8,
+        pub rresp: u8,
+        pub irq: u8,
+        pub core_rst: u8,
+        pub frame_done: u8,
+        pub st_overflow: u8,
+        pub st_frame_error: u8,
+        /// Active run parameters.
+        pub run_k: u8,
+        pub run_rows: u8,
+        pub run_cols: u16,
+    }
 }
 
 type NewFn = unsafe extern "C" fn() -> *mut c_void;
@@ -91,7 +92,10 @@ pub fn load_regs(p: &FccParams) -> Result<Arc<RegsModel>, SimError> {
     let mut map = models.lock().unwrap_or_else(|e| e.into_inner());
     let verilog = fcc_rtl::generate_regs(p)?;
     let vlt = fcc_rtl::lint::regs_waivers(p);
-    let key = format!("regs-{:016x}", fnv(&format!("{verilog}{vlt}{SHIM}")));
+    let key = format!(
+        "regs-{:016x}",
+        fnv(&format!("{verilog}{vlt}{}", shim_text(SHIM)))
+    );
     if let Some(m) = map.get(&key) {
         return Ok(m.clone());
     }

@@ -101,32 +101,11 @@ impl HwArgs {
     /// The flags that differ from the defaults, as ` --name value` pairs
     /// (K excluded), to name a command in generated reports.
     pub fn changed_flags(&self) -> String {
-        let (d, p) = (defaults(), self.unchecked());
-        let pairs = [
-            ("rows", p.rows.to_string(), d.rows.to_string()),
-            ("cols", p.cols.to_string(), d.cols.to_string()),
-            ("th-h", p.th_h.to_string(), d.th_h.to_string()),
-            ("th-v", p.th_v.to_string(), d.th_v.to_string()),
-            (
-                "label-bits",
-                p.label_bits.to_string(),
-                d.label_bits.to_string(),
-            ),
-            (
-                "clock-mhz",
-                p.clock_mhz.to_string(),
-                d.clock_mhz.to_string(),
-            ),
-            (
-                "labels-per-beat",
-                p.labels_per_beat.to_string(),
-                d.labels_per_beat.to_string(),
-            ),
-        ];
-        pairs
-            .iter()
-            .filter(|(_, v, d)| v != d)
-            .map(|(n, v, _)| format!(" --{n} {v}"))
+        let (d, p) = (defaults().fields(), self.unchecked().fields());
+        p.iter()
+            .zip(&d)
+            .filter(|((name, v), (_, d))| *name != "fsize" && v != d)
+            .map(|((name, v), _)| format!(" --{} {v}", name.replace('_', "-")))
             .collect()
     }
 }

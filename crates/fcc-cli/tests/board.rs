@@ -3,34 +3,14 @@
 //! the core, every label checked against the golden model by the command
 //! itself; its outputs equal those of `fcc cluster`; and its refusals.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::path::Path;
+use std::process::Output;
 
 use fcc_lidar::ouster::SAMPLE_CAPTURES;
+use fcc_testkit::{lidar_data, s, text, tmpdir};
 
 fn fcc(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_fcc"))
-        .args(args)
-        .output()
-        .expect("run fcc")
-}
-
-fn tmpdir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("fcc-board-{}-{name}", std::process::id()));
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
-
-fn s(p: &Path) -> &str {
-    p.to_str().unwrap()
-}
-
-fn text(o: &Output) -> String {
-    format!(
-        "{}{}",
-        String::from_utf8_lossy(&o.stdout),
-        String::from_utf8_lossy(&o.stderr)
-    )
+    fcc_testkit::run_in(env!("CARGO_BIN_EXE_fcc"), None, args)
 }
 
 /// Each capture at its own size (32, 64 and 128 beams x 1024) on the
@@ -38,7 +18,7 @@ fn text(o: &Output) -> String {
 /// `real_ouster_frames_at_their_own_size` (shared through the cache).
 #[test]
 fn ouster_captures_on_the_virtual_board_equal_the_golden_model() {
-    let data = Path::new(env!("CARGO_MANIFEST_DIR")).join("../fcc-lidar/tests/data");
+    let data = lidar_data();
     let d = tmpdir("ouster");
     for (pcap, json) in SAMPLE_CAPTURES {
         let stem = pcap.trim_end_matches(".pcap");
@@ -94,7 +74,7 @@ fn ouster_captures_on_the_virtual_board_equal_the_golden_model() {
 
 #[test]
 fn board_run_says_where_the_core_must_be_and_refuses_paper_merging() {
-    let data = Path::new(env!("CARGO_MANIFEST_DIR")).join("../fcc-lidar/tests/data");
+    let data = lidar_data();
     let input = data.join(SAMPLE_CAPTURES[1].0);
     let o = fcc(&["board", "run", "--input", s(&input)]);
     assert!(!o.status.success());
@@ -124,7 +104,7 @@ fn board_run_reads_the_build_from_fcc_params_json_and_refuses_garbage() {
     let d = tmpdir("params");
     let bad = d.join("fcc_params.json");
     std::fs::write(&bad, "{\"rows\": 64}").unwrap();
-    let data = Path::new(env!("CARGO_MANIFEST_DIR")).join("../fcc-lidar/tests/data");
+    let data = lidar_data();
     let input = data.join(SAMPLE_CAPTURES[1].0);
     let o = fcc(&[
         "board",

@@ -2,37 +2,12 @@
 
 use fcc_golden::{reference::reference_labels, Frame};
 use fcc_params::FccParams;
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use fcc_testkit::{assert_one_line_error, s, same_partition, stderr, tmpdir};
+use std::path::PathBuf;
+use std::process::Output;
 
 fn fcc(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_fcc"))
-        .args(args)
-        .output()
-        .expect("run fcc")
-}
-
-fn tmpdir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("fcc-cli-{}-{name}", std::process::id()));
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
-
-fn s(p: &Path) -> &str {
-    p.to_str().unwrap()
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
-
-/// Same partition: a bijection between the non-zero labels, zeros in the same places.
-fn same_partition(a: &[u32], b: &[u32]) -> bool {
-    use std::collections::HashMap;
-    let (mut ab, mut ba) = (HashMap::new(), HashMap::new());
-    a.iter().zip(b).all(|(&x, &y)| {
-        (x == 0) == (y == 0) && *ab.entry(x).or_insert(y) == y && *ba.entry(y).or_insert(x) == x
-    })
+    fcc_testkit::run_in(env!("CARGO_BIN_EXE_fcc"), None, args)
 }
 
 #[test]
@@ -134,14 +109,6 @@ fn batch_writes_one_label_file_per_input() {
     }
 }
 
-fn assert_one_line_error(o: &Output, file: &Path, problem: &str) {
-    assert_eq!(o.status.code(), Some(2), "{}", stderr(o));
-    let e = stderr(o);
-    assert_eq!(e.lines().count(), 1, "{e}");
-    assert!(e.contains(s(file)), "{e}");
-    assert!(e.contains(problem), "{e}");
-}
-
 #[test]
 fn bad_inputs_end_with_one_line_and_exit_code_2() {
     let d = tmpdir("bad");
@@ -236,8 +203,7 @@ fn paper_merge_is_selectable() {
 
 /// A real capture from the repository's test data.
 fn ouster_capture() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../fcc-lidar/tests/data/OS-2-128-U1_v2.3.0_1024x10.pcap")
+    fcc_testkit::lidar_data().join("OS-2-128-U1_v2.3.0_1024x10.pcap")
 }
 
 #[test]

@@ -4,42 +4,16 @@
 
 use fcc_lidar::cloud::{read_ply, write_kitti_bin, PointCloud};
 use fcc_lidar::labels::{pack_label, read_label_file, unpack_label};
+use fcc_testkit::{assert_one_line_error, lidar_data, s, stderr, tmpdir};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::process::Output;
 
 fn fcc(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_fcc"))
-        .args(args)
-        .output()
-        .expect("run fcc")
-}
-
-fn tmpdir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("fcc-lidar-io-{}-{name}", std::process::id()));
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
-
-fn s(p: &Path) -> &str {
-    p.to_str().unwrap()
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
+    fcc_testkit::run_in(env!("CARGO_BIN_EXE_fcc"), None, args)
 }
 
 fn fixture(dir: &str, name: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../fcc-lidar/tests/data")
-        .join(dir)
-        .join(name)
-}
-
-fn assert_one_line_error(o: &Output, file: &Path, problem: &str) {
-    assert_eq!(o.status.code(), Some(2), "{}", stderr(o));
-    let e = stderr(o);
-    assert_eq!(e.lines().count(), 1, "{e}");
-    assert!(e.contains(s(file)) && e.contains(problem), "{e}");
+    lidar_data().join(dir).join(name)
 }
 
 #[test]

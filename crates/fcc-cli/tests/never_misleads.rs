@@ -1,35 +1,16 @@
 //! The command line never misleads: no lost input, no silent loss of points,
 //! one option vocabulary, one error format. Each test names the edge case.
 
+use fcc_testkit::{lidar_data, s, stderr, tmpdir};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::process::Output;
 
 fn fcc_in(dir: Option<&Path>, args: &[&str]) -> Output {
-    let mut c = Command::new(env!("CARGO_BIN_EXE_fcc"));
-    c.args(args);
-    if let Some(d) = dir {
-        c.current_dir(d);
-    }
-    c.output().expect("run fcc")
+    fcc_testkit::run_in(env!("CARGO_BIN_EXE_fcc"), dir, args)
 }
 
 fn fcc(args: &[&str]) -> Output {
     fcc_in(None, args)
-}
-
-fn tmpdir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("fcc-never-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
-
-fn s(p: &Path) -> &str {
-    p.to_str().unwrap()
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
 }
 
 fn stats(o: &Output) -> serde_json::Value {
@@ -38,9 +19,7 @@ fn stats(o: &Output) -> serde_json::Value {
 }
 
 fn capture(name: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../fcc-lidar/tests/data")
-        .join(name)
+    lidar_data().join(name)
 }
 
 const OS1_32: &str = "OS-1-32-G_v2.1.1_1024x10.pcap";

@@ -32,7 +32,7 @@ pub mod limits {
     /// Filter sizes the RTL generator accepts.
     pub const HW_FSIZE: RangeInclusive<usize> = 3..=11;
     /// Label widths the RTL generator accepts (output slots are 16 bits).
-    pub const HW_LABEL_BITS: RangeInclusive<u32> = 8..=16;
+    pub const HW_LABEL_BITS: RangeInclusive<u32> = 8..=fcc_pixel::LABEL_SLOT_BITS;
     /// Labels packed into one output beat.
     pub const LABELS_PER_BEAT: [u32; 3] = [1, 2, 4];
     /// Clock requested from the XDC, MHz.
@@ -184,6 +184,32 @@ impl FccParams {
         self.rows * self.cols
     }
 
+    /// Every field as `(name, value)`, in declaration order: the one list that
+    /// summaries and command lines are made from.
+    pub fn fields(&self) -> [(&'static str, String); 8] {
+        // No `..`: a new field must be added here to compile.
+        let FccParams {
+            rows,
+            cols,
+            fsize,
+            th_h,
+            th_v,
+            label_bits,
+            clock_mhz,
+            labels_per_beat,
+        } = self;
+        [
+            ("rows", rows.to_string()),
+            ("cols", cols.to_string()),
+            ("fsize", fsize.to_string()),
+            ("th_h", th_h.to_string()),
+            ("th_v", th_v.to_string()),
+            ("label_bits", label_bits.to_string()),
+            ("clock_mhz", clock_mhz.to_string()),
+            ("labels_per_beat", labels_per_beat.to_string()),
+        ]
+    }
+
     /// The parameters as canonical JSON (stable field order), as written beside generated files.
     pub fn to_json(&self) -> String {
         serde_json::to_string_pretty(self).expect("FccParams always serialises")
@@ -254,6 +280,17 @@ fn check_threshold(field: &'static str, th: f64) -> Result<(), ParamError> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn fields_name_every_json_key_in_order() {
+        let json = FccParams::default().to_json();
+        let keys: Vec<&str> = json
+            .lines()
+            .filter_map(|l| l.trim().strip_prefix('"')?.split('"').next())
+            .collect();
+        let names: Vec<&str> = FccParams::default().fields().iter().map(|f| f.0).collect();
+        assert_eq!(names, keys);
+    }
 
     #[test]
     fn label_bits_for_is_the_narrowest_width_that_holds_the_labels() {

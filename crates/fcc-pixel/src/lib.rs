@@ -27,6 +27,8 @@ pub const PIXEL_BYTES: usize = 8;
 pub const LABEL_BEAT_BYTES: usize = 8;
 /// Bits of one label slot in an output beat.
 pub const LABEL_SLOT_BITS: u32 = 16;
+/// Bytes of one label slot (`TKEEP` bits per label).
+pub const LABEL_SLOT_BYTES: usize = LABEL_SLOT_BITS as usize / 8;
 
 /// Quantise one coordinate in metres to Q7.8:
 /// `sign(x) * floor(|x| * 256 + 0.5)`, or `None` when `x` is not finite or
@@ -67,7 +69,7 @@ pub fn pixel_beat(p: Option<Point>) -> u64 {
 
 /// Label of slot `s` of an output beat.
 pub fn label_of_beat(beat: u64, s: usize) -> u32 {
-    ((beat >> (LABEL_SLOT_BITS as usize * s)) & 0xffff) as u32
+    ((beat >> (LABEL_SLOT_BITS as usize * s)) & ((1 << LABEL_SLOT_BITS) - 1)) as u32
 }
 
 #[cfg(test)]

@@ -122,10 +122,11 @@ impl Generated {
 
 /// One line naming the parameters, for headers and messages.
 pub fn param_summary(p: &FccParams) -> String {
-    format!(
-        "rows={} cols={} fsize={} th_h={} th_v={} label_bits={} clock_mhz={} labels_per_beat={}",
-        p.rows, p.cols, p.fsize, p.th_h, p.th_v, p.label_bits, p.clock_mhz, p.labels_per_beat
-    )
+    p.fields()
+        .iter()
+        .map(|(name, value)| format!("{name}={value}"))
+        .collect::<Vec<_>>()
+        .join(" ")
 }
 
 /// The header every generated file starts with (`prefix` is the comment leader).

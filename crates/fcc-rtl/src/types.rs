@@ -123,7 +123,7 @@ pub struct FbWord {
 }
 
 /// The largest K the generator supports, and so the most positions of a window row.
-pub const MAX_K: usize = 11;
+pub const MAX_K: usize = *fcc_params::limits::HW_FSIZE.end();
 
 /// The centre part of a centre-buffer record: the centre's join side, its
 /// ring join and the frame's end (the window rows travel in `FccRowPack` words).

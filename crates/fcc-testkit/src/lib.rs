@@ -1,0 +1,104 @@
+//! Helpers shared by the integration tests of the workspace: running the
+//! `fcc` binary, scratch directories, fixtures and the checks on its error
+//! output. Used only as a dev-dependency.
+
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+/// Run the binary `exe` with `args`, in `dir` if given (pass
+/// `env!("CARGO_BIN_EXE_fcc")` from the test).
+pub fn run_in(exe: &str, dir: Option<&Path>, args: &[&str]) -> Output {
+    let mut c = Command::new(exe);
+    c.args(args);
+    if let Some(d) = dir {
+        c.current_dir(d);
+    }
+    c.output()
+        .unwrap_or_else(|e| panic!("cannot run {exe}: {e}"))
+}
+
+/// A fresh, empty scratch directory named after the test binary, the process
+/// and `name`.
+pub fn tmpdir(name: &str) -> PathBuf {
+    let exe = std::env::current_exe().ok();
+    let test = exe
+        .as_deref()
+        .and_then(Path::file_stem)
+        .and_then(|s| s.to_str())
+        .map(|s| s.split('-').next().unwrap_or(s))
+        .unwrap_or("test");
+    let d = std::env::temp_dir().join(format!("fcc-{test}-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap_or_else(|e| panic!("cannot create {}: {e}", d.display()));
+    d
+}
+
+/// A path as `&str`, for command-line arguments.
+pub fn s(p: &Path) -> &str {
+    p.to_str()
+        .unwrap_or_else(|| panic!("not UTF-8: {}", p.display()))
+}
+
+/// The standard error of a run.
+pub fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+/// Standard output then standard error of a run.
+pub fn text(o: &Output) -> String {
+    format!("{}{}", String::from_utf8_lossy(&o.stdout), stderr(o))
+}
+
+/// The LiDAR capture fixtures (`crates/fcc-lidar/tests/data`).
+pub fn lidar_data() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../fcc-lidar/tests/data")
+}
+
+/// The run failed with exit code 2 and one line naming `file` and `problem`.
+pub fn assert_one_line_error(o: &Output, file: &Path, problem: &str) {
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(o));
+    let e = stderr(o);
+    assert_eq!(e.lines().count(), 1, "{e}");
+    assert!(e.contains(s(file)) && e.contains(problem), "{e}");
+}
+
+/// Same partition: a bijection between the non-zero labels, zeros in the
+/// same places.
+pub fn same_partition(a: &[u32], b: &[u32]) -> bool {
+    let (mut ab, mut ba) = (HashMap::new(), HashMap::new());
+    a.len() == b.len()
+        && a.iter().zip(b).all(|(&x, &y)| {
+            (x == 0) == (y == 0) && *ab.entry(x).or_insert(y) == y && *ba.entry(y).or_insert(x) == x
+        })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn same_partition_needs_a_bijection_and_the_same_zeros() {
+        assert!(same_partition(&[0, 1, 1, 2], &[0, 7, 7, 3]));
+        assert!(
+            !same_partition(&[0, 1, 1, 2], &[0, 7, 7, 7]),
+            "two labels onto one"
+        );
+        assert!(
+            !same_partition(&[0, 1, 2, 2], &[0, 7, 7, 3]),
+            "one label onto two"
+        );
+        assert!(!same_partition(&[0, 1], &[1, 1]), "zero moved");
+        assert!(!same_partition(&[1, 1], &[1]), "lengths differ");
+    }
+
+    #[test]
+    fn tmpdir_is_empty_even_when_it_existed() {
+        let d = tmpdir("reuse");
+        std::fs::write(d.join("old"), b"x").unwrap();
+        let d2 = tmpdir("reuse");
+        assert_eq!(d, d2);
+        assert_eq!(std::fs::read_dir(&d2).unwrap().count(), 0);
+        let _ = std::fs::remove_dir_all(&d2);
+    }
+}

@@ -1,0 +1,93 @@
+// Life-cycle of one Verilator model behind the C ABI of the fcc-sim shims:
+// create with reset high, free (writing coverage counts in a coverage
+// build), and one clock cycle per step.
+#pragma once
+#include <atomic>
+#include <cstdlib>
+#include <string>
+#include <unistd.h>
+
+#include "verilated.h"
+#if VM_COVERAGE
+#include "verilated_cov.h"
+#endif
+
+template <class Top>
+struct VlModel {
+    VerilatedContext ctx;
+    Top* top;
+};
+
+// A fresh model named `name`, clock low and reset held.
+template <class Top>
+void* vl_model_new(const char* name) {
+    auto* m = new VlModel<Top>;
+    m->top = new Top(&m->ctx, name);
+    m->top->clk = 0;
+    m->top->rst = 1;
+    m->top->eval();
+    return m;
+}
+
+template <class Top>
+void vl_model_free(void* p) {
+    auto* m = static_cast<VlModel<Top>*>(p);
+    if (m == nullptr) return;
+    m->top->final();
+#if VM_COVERAGE
+    // Coverage build (FCC_SIM_COVERAGE set when the model was built): one
+    // file of line and toggle counts per simulated instance.
+    if (const char* dir = std::getenv("FCC_SIM_COVERAGE")) {
+        static std::atomic<unsigned> serial{0};
+        std::string path = std::string(dir) + "/fcc-" + std::to_string(getpid()) + "-" +
+                           std::to_string(serial++) + ".dat";
+        m->ctx.coveragep()->write(path.c_str());
+    }
+#endif
+    delete m->top;
+    delete m;
+}
+
+// One clock cycle: `drive` sets the inputs, the model settles with the clock
+// low, `sample` reads the outputs seen before the rising edge, then the edge.
+template <class Top, class Drive, class Sample>
+void vl_model_step(void* p, Drive drive, Sample sample) {
+    auto* m = static_cast<VlModel<Top>*>(p);
+    Top* t = m->top;
+    drive(t);
+    t->clk = 0;
+    t->eval();
+    sample(t);
+    t->clk = 1;
+    t->eval();
+    m->ctx.timeInc(1);
+}
+
+// The AXI4-Lite slave port (`s_axil_*`) from the master side of `in`, all
+// byte lanes written.
+template <class Top, class In>
+void vl_drive_axil(Top* t, const In* in) {
+    t->s_axil_awaddr = in->awaddr;
+    t->s_axil_awvalid = in->awvalid;
+    t->s_axil_wdata = in->wdata;
+    t->s_axil_wstrb = 0xf;
+    t->s_axil_wvalid = in->wvalid;
+    t->s_axil_bready = in->bready;
+    t->s_axil_araddr = in->araddr;
+    t->s_axil_arvalid = in->arvalid;
+    t->s_axil_rready = in->rready;
+}
+
+// The slave side of the AXI4-Lite port and the interrupt into `out`.
+template <class Top, class Out>
+void vl_sample_axil(Top* t, Out* out) {
+    out->rdata = t->s_axil_rdata;
+    out->awready = t->s_axil_awready;
+    out->wready = t->s_axil_wready;
+    out->bvalid = t->s_axil_bvalid;
+    out->bresp = t->s_axil_bresp;
+    out->arready = t->s_axil_arready;
+    out->rvalid = t->s_axil_rvalid;
+    out->rresp = t->s_axil_rresp;
+    out->irq = t->irq;
+}
