@@ -11,6 +11,7 @@
 #define FCC_REGS_ADDR_BITS 12u
 #define FCC_ID_MAGIC 0x46434331u
 #define FCC_PARAMS_HASH 0x668CF05BF2A51F2Eull
+#define FCC_RUN_COLS_MIN 32u
 
 // ID (RO): Fixed magic "FCC1": an FCC core answers here
 #define FCC_REG_ID 0x000u
@@ -86,6 +87,20 @@
 #define FCC_STATUS_IDLE_SHIFT 1u
 #define FCC_STATUS_IDLE_MASK 0x00000002u
 
+// ERROR (W1C): Refused writes of run parameters (sticky, write 1 to clear)
+#define FCC_REG_ERROR 0x048u
+#define FCC_REG_ERROR_RESET 0x00000000u
+#define FCC_ERROR_K_SHIFT 0u
+#define FCC_ERROR_K_MASK 0x00000001u
+#define FCC_ERROR_TH_H_SHIFT 1u
+#define FCC_ERROR_TH_H_MASK 0x00000002u
+#define FCC_ERROR_TH_V_SHIFT 2u
+#define FCC_ERROR_TH_V_MASK 0x00000004u
+#define FCC_ERROR_ROWS_SHIFT 3u
+#define FCC_ERROR_ROWS_MASK 0x00000008u
+#define FCC_ERROR_COLS_SHIFT 4u
+#define FCC_ERROR_COLS_MASK 0x00000010u
+
 // FRAME_COUNT (RO): Frames completed since reset or CLEAR (wraps)
 #define FCC_REG_FRAME_COUNT 0x050u
 #define FCC_REG_FRAME_COUNT_RESET 0x00000000u
@@ -127,5 +142,35 @@
 #define FCC_REG_GEAR_STALLS_RESET 0x00000000u
 #define FCC_GEAR_STALLS_STALLS_SHIFT 0u
 #define FCC_GEAR_STALLS_STALLS_MASK 0x00FFFFFFu
+
+// RUN_K (RW): Run: filter size K, odd, 3 ..= K_MAX
+#define FCC_REG_RUN_K 0x080u
+#define FCC_REG_RUN_K_RESET 0x00000007u
+#define FCC_RUN_K_K_SHIFT 0u
+#define FCC_RUN_K_K_MASK 0x0000000Fu
+
+// RUN_TH_H (RW): Run: intra-channel threshold tH = floor(th_H * 256 + 0.5), 1 ..= 0x8000
+#define FCC_REG_RUN_TH_H 0x084u
+#define FCC_REG_RUN_TH_H_RESET 0x00000080u
+#define FCC_RUN_TH_H_TH_SHIFT 0u
+#define FCC_RUN_TH_H_TH_MASK 0x0000FFFFu
+
+// RUN_TH_V (RW): Run: inter-channel threshold tV = floor(th_V * 256 + 0.5), 1 ..= 0x8000
+#define FCC_REG_RUN_TH_V 0x088u
+#define FCC_REG_RUN_TH_V_RESET 0x00000100u
+#define FCC_RUN_TH_V_TH_SHIFT 0u
+#define FCC_RUN_TH_V_TH_MASK 0x0000FFFFu
+
+// RUN_ROWS (RW): Run: rows per frame, 1 ..= ROWS_MAX
+#define FCC_REG_RUN_ROWS 0x08Cu
+#define FCC_REG_RUN_ROWS_RESET 0x00000040u
+#define FCC_RUN_ROWS_ROWS_SHIFT 0u
+#define FCC_RUN_ROWS_ROWS_MASK 0x000000FFu
+
+// RUN_COLS (RW): Run: columns per frame, RUN_COLS_MIN ..= COLS_MAX
+#define FCC_REG_RUN_COLS 0x090u
+#define FCC_REG_RUN_COLS_RESET 0x00000800u
+#define FCC_RUN_COLS_COLS_SHIFT 0u
+#define FCC_RUN_COLS_COLS_MASK 0x00001FFFu
 
 #endif  // FCC_REGS_H

@@ -64,8 +64,8 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
     localparam  one8 = 8'h1;
     localparam  zero12 = 12'h0;
     localparam  one12 = 12'h1;
-    localparam  pen_col = 12'h7fe;
-    localparam  pen_row = 8'h3e;
+    localparam  two8 = 8'h2;
+    localparam  two12 = 12'h2;
     localparam  one10 = 10'b1;
     localparam  two10 = 10'b10;
     localparam  zero10 = 10'b0;
@@ -75,6 +75,8 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
     reg  intra$clk;
     reg  intra$rst;
     reg  [73:0] intra$pix;
+    reg  [11:0] intra$last_col;
+    reg  [35:0] intra$th_h_c;
     wire  [133:0] intra$out;
     wire  [16:0] intra$provisional;
     wire  intra$overflow;
@@ -82,6 +84,8 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
     reg  window$clk;
     reg  window$rst;
     reg  [131:0] window$inp;
+    reg  [11:0] window$last_col;
+    reg  [3:0] window$run_k;
     wire  [111:0] window$centre;
     wire  window$ent_ok$0;
     wire  window$ent_ok$1;
@@ -278,6 +282,7 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
     reg  [15:0] dist_tree$ent_z$18;
     reg  [15:0] dist_tree$ent_z$19;
     reg  [15:0] dist_tree$ent_z$20;
+    reg  [35:0] dist_tree$th_v_c;
     wire  [63:0] dist_tree$centre;
     wire  dist_tree$hit$0;
     wire  dist_tree$hit$1;
@@ -428,6 +433,11 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
     wire  regs$st_frame_error;
     wire  [23:0] regs$st_joins;
     wire  [23:0] regs$st_gear_stalls;
+    wire  [3:0] regs$run_k;
+    wire  [35:0] regs$run_th_h_c;
+    wire  [35:0] regs$run_th_v_c;
+    wire  [7:0] regs$run_rows;
+    wire  [12:0] regs$run_cols;
     reg  [1:0] fsm$d;
     wire  [1:0] fsm$q;
     reg  fsm$clock;
@@ -479,8 +489,22 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
     reg  last_seen$d;
     wire  last_seen$q;
     reg  last_seen$clock;
+    reg  [11:0] last_col$d;
+    wire  [11:0] last_col$q;
+    reg  last_col$clock;
+    reg  [11:0] pen_col$d;
+    wire  [11:0] pen_col$q;
+    reg  pen_col$clock;
+    reg  [7:0] pen_row$d;
+    wire  [7:0] pen_row$q;
+    reg  pen_row$clock;
+    reg  one_row$d;
+    wire  one_row$q;
+    reg  one_row$clock;
 
     // Local signals
+    reg  [7:0] run_rows;
+    reg  [12:0] run_cols;
     reg  accept;
     reg  beat;
     reg  slot;
@@ -496,6 +520,8 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
         .clk(intra$clk),
         .rst(intra$rst),
         .pix(intra$pix),
+        .last_col(intra$last_col),
+        .th_h_c(intra$th_h_c),
         .out(intra$out),
         .provisional(intra$provisional),
         .overflow(intra$overflow),
@@ -505,6 +531,8 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
         .clk(window$clk),
         .rst(window$rst),
         .inp(window$inp),
+        .last_col(window$last_col),
+        .run_k(window$run_k),
         .centre(window$centre),
         .ent_ok$0(window$ent_ok$0),
         .ent_ok$1(window$ent_ok$1),
@@ -703,6 +731,7 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
         .ent_z$18(dist_tree$ent_z$18),
         .ent_z$19(dist_tree$ent_z$19),
         .ent_z$20(dist_tree$ent_z$20),
+        .th_v_c(dist_tree$th_v_c),
         .centre(dist_tree$centre),
         .hit$0(dist_tree$hit$0),
         .hit$1(dist_tree$hit$1),
@@ -860,7 +889,12 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
         .st_unlabelled(regs$st_unlabelled),
         .st_frame_error(regs$st_frame_error),
         .st_joins(regs$st_joins),
-        .st_gear_stalls(regs$st_gear_stalls)
+        .st_gear_stalls(regs$st_gear_stalls),
+        .run_k(regs$run_k),
+        .run_th_h_c(regs$run_th_h_c),
+        .run_th_v_c(regs$run_th_v_c),
+        .run_rows(regs$run_rows),
+        .run_cols(regs$run_cols)
     );
     fcc_top__fsm fsm(
         .d(fsm$d),
@@ -947,6 +981,26 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
         .q(last_seen$q),
         .clock(last_seen$clock)
     );
+    fcc_top__last_col last_col(
+        .d(last_col$d),
+        .q(last_col$q),
+        .clock(last_col$clock)
+    );
+    fcc_top__pen_col pen_col(
+        .d(pen_col$d),
+        .q(pen_col$q),
+        .clock(pen_col$clock)
+    );
+    fcc_top__pen_row pen_row(
+        .d(pen_row$d),
+        .q(pen_row$q),
+        .clock(pen_row$clock)
+    );
+    fcc_top__one_row one_row(
+        .d(one_row$d),
+        .q(one_row$q),
+        .clock(one_row$clock)
+    );
 
     // Update code
     always @(*) begin
@@ -967,6 +1021,10 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
         credits$clock = clk;
         room$clock = clk;
         last_seen$clock = clk;
+        last_col$clock = clk;
+        pen_col$clock = clk;
+        pen_row$clock = clk;
+        one_row$clock = clk;
         fsm$d = fsm$q;
         tready_q$d = tready_q$q;
         pad_go$d = pad_go$q;
@@ -984,6 +1042,10 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
         credits$d = credits$q;
         room$d = room$q;
         last_seen$d = last_seen$q;
+        last_col$d = last_col$q;
+        pen_col$d = pen_col$q;
+        pen_row$d = pen_row$q;
+        one_row$d = one_row$q;
         intra$clk = clk;
         window$clk = clk;
         dist_tree$clk = clk;
@@ -1017,6 +1079,12 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
         regs$frame_error = err$q;
         regs$joins = sort_net$joins;
         regs$gear_stalls = label_update$gear_stalls;
+        run_rows = regs$run_rows;
+        run_cols = regs$run_cols;
+        last_col$d = run_cols[11:0] - one12;
+        pen_col$d = run_cols[11:0] - two12;
+        pen_row$d = run_rows - two8;
+        one_row$d = run_rows == one8;
         accept = s_axis_tvalid & tready_q$q;
         beat = accept & ~discard$q;
         slot = beat | pad_go$q;
@@ -1035,20 +1103,23 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
         nxt_pad = pad$q;
         nxt_discard = discard$q;
         nxt_in_done = in_done$q;
+        if (row$q == zero8) begin
+            row_last$d = one_row$q;
+        end
         if (slot) begin
             first$d = 1'b0;
             col0$d = col_last$q;
             col$d = col$q + one12;
-            col_last$d = col$q == pen_col;
+            col_last$d = col$q == pen_col$q;
             if (col_last$q) begin
                 col$d = zero12;
                 col_last$d = 1'b0;
                 row$d = row$q + one8;
-                row_last$d = row$q == pen_row;
+                row_last$d = row$q == pen_row$q;
             end
             if (is_last) begin
                 row$d = zero8;
-                row_last$d = 1'b0;
+                row_last$d = one_row$q;
                 first$d = 1'b1;
                 nxt_in_done = 1'b1;
                 nxt_pad = 1'b0;
@@ -1139,7 +1210,11 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
         end
         intra$rst = regs$core_rst;
         intra$pix = slot_q$q;
+        intra$last_col = last_col$q;
+        window$last_col = last_col$q;
+        intra$th_h_c = regs$run_th_h_c;
         window$rst = regs$core_rst;
+        window$run_k = regs$run_k;
         window$inp[0:0] = intra$out[0:0];
         window$inp[1:1] = intra$out[1:1];
         window$inp[17:2] = intra$out[17:2];
@@ -1157,6 +1232,7 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
         window$rep_waddr = sort_net$rep_waddr;
         window$rep_wdata = sort_net$rep_wdata;
         dist_tree$rst = regs$core_rst;
+        dist_tree$th_v_c = regs$run_th_v_c;
         dist_tree$centre_in = window$centre;
         dist_tree$ent_ok$0 = window$ent_ok$0;
         dist_tree$ent_x$0 = window$ent_x$0;
@@ -1417,7 +1493,7 @@ module fcc_top__discard(d,q,clock);
 endmodule // fcc_top__discard
 
 
-module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_ok$4,ent_ok$5,ent_ok$6,ent_ok$7,ent_ok$8,ent_ok$9,ent_ok$10,ent_ok$11,ent_ok$12,ent_ok$13,ent_ok$14,ent_ok$15,ent_ok$16,ent_ok$17,ent_ok$18,ent_ok$19,ent_ok$20,ent_x$0,ent_x$1,ent_x$2,ent_x$3,ent_x$4,ent_x$5,ent_x$6,ent_x$7,ent_x$8,ent_x$9,ent_x$10,ent_x$11,ent_x$12,ent_x$13,ent_x$14,ent_x$15,ent_x$16,ent_x$17,ent_x$18,ent_x$19,ent_x$20,ent_y$0,ent_y$1,ent_y$2,ent_y$3,ent_y$4,ent_y$5,ent_y$6,ent_y$7,ent_y$8,ent_y$9,ent_y$10,ent_y$11,ent_y$12,ent_y$13,ent_y$14,ent_y$15,ent_y$16,ent_y$17,ent_y$18,ent_y$19,ent_y$20,ent_z$0,ent_z$1,ent_z$2,ent_z$3,ent_z$4,ent_z$5,ent_z$6,ent_z$7,ent_z$8,ent_z$9,ent_z$10,ent_z$11,ent_z$12,ent_z$13,ent_z$14,ent_z$15,ent_z$16,ent_z$17,ent_z$18,ent_z$19,ent_z$20,centre,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit$6,hit$7,hit$8,hit$9,hit$10,hit$11,hit$12,hit$13,hit$14,hit$15,hit$16,hit$17,hit$18,hit$19,hit$20);
+module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_ok$4,ent_ok$5,ent_ok$6,ent_ok$7,ent_ok$8,ent_ok$9,ent_ok$10,ent_ok$11,ent_ok$12,ent_ok$13,ent_ok$14,ent_ok$15,ent_ok$16,ent_ok$17,ent_ok$18,ent_ok$19,ent_ok$20,ent_x$0,ent_x$1,ent_x$2,ent_x$3,ent_x$4,ent_x$5,ent_x$6,ent_x$7,ent_x$8,ent_x$9,ent_x$10,ent_x$11,ent_x$12,ent_x$13,ent_x$14,ent_x$15,ent_x$16,ent_x$17,ent_x$18,ent_x$19,ent_x$20,ent_y$0,ent_y$1,ent_y$2,ent_y$3,ent_y$4,ent_y$5,ent_y$6,ent_y$7,ent_y$8,ent_y$9,ent_y$10,ent_y$11,ent_y$12,ent_y$13,ent_y$14,ent_y$15,ent_y$16,ent_y$17,ent_y$18,ent_y$19,ent_y$20,ent_z$0,ent_z$1,ent_z$2,ent_z$3,ent_z$4,ent_z$5,ent_z$6,ent_z$7,ent_z$8,ent_z$9,ent_z$10,ent_z$11,ent_z$12,ent_z$13,ent_z$14,ent_z$15,ent_z$16,ent_z$17,ent_z$18,ent_z$19,ent_z$20,th_v_c,centre,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit$6,hit$7,hit$8,hit$9,hit$10,hit$11,hit$12,hit$13,hit$14,hit$15,hit$16,hit$17,hit$18,hit$19,hit$20);
 
     // Module arguments
     input wire  clk;
@@ -1507,6 +1583,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
     input wire  [15:0] ent_z$18;
     input wire  [15:0] ent_z$19;
     input wire  [15:0] ent_z$20;
+    input wire  [35:0] th_v_c;
     output reg  [63:0] centre;
     output reg  hit$0;
     output reg  hit$1;
@@ -1542,6 +1619,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
     reg  [15:0] units$0$nx;
     reg  [15:0] units$0$ny;
     reg  [15:0] units$0$nz;
+    reg  [35:0] units$0$th_c;
     wire  units$0$hit;
     reg  units$1$clk;
     reg  [15:0] units$1$cx;
@@ -1551,6 +1629,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
     reg  [15:0] units$1$nx;
     reg  [15:0] units$1$ny;
     reg  [15:0] units$1$nz;
+    reg  [35:0] units$1$th_c;
     wire  units$1$hit;
     reg  units$2$clk;
     reg  [15:0] units$2$cx;
@@ -1560,6 +1639,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
     reg  [15:0] units$2$nx;
     reg  [15:0] units$2$ny;
     reg  [15:0] units$2$nz;
+    reg  [35:0] units$2$th_c;
     wire  units$2$hit;
     reg  units$3$clk;
     reg  [15:0] units$3$cx;
@@ -1569,6 +1649,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
     reg  [15:0] units$3$nx;
     reg  [15:0] units$3$ny;
     reg  [15:0] units$3$nz;
+    reg  [35:0] units$3$th_c;
     wire  units$3$hit;
     reg  units$4$clk;
     reg  [15:0] units$4$cx;
@@ -1578,6 +1659,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
     reg  [15:0] units$4$nx;
     reg  [15:0] units$4$ny;
     reg  [15:0] units$4$nz;
+    reg  [35:0] units$4$th_c;
     wire  units$4$hit;
     reg  units$5$clk;
     reg  [15:0] units$5$cx;
@@ -1587,6 +1669,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
     reg  [15:0] units$5$nx;
     reg  [15:0] units$5$ny;
     reg  [15:0] units$5$nz;
+    reg  [35:0] units$5$th_c;
     wire  units$5$hit;
     reg  units$6$clk;
     reg  [15:0] units$6$cx;
@@ -1596,6 +1679,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
     reg  [15:0] units$6$nx;
     reg  [15:0] units$6$ny;
     reg  [15:0] units$6$nz;
+    reg  [35:0] units$6$th_c;
     wire  units$6$hit;
     reg  units$7$clk;
     reg  [15:0] units$7$cx;
@@ -1605,6 +1689,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
     reg  [15:0] units$7$nx;
     reg  [15:0] units$7$ny;
     reg  [15:0] units$7$nz;
+    reg  [35:0] units$7$th_c;
     wire  units$7$hit;
     reg  units$8$clk;
     reg  [15:0] units$8$cx;
@@ -1614,6 +1699,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
     reg  [15:0] units$8$nx;
     reg  [15:0] units$8$ny;
     reg  [15:0] units$8$nz;
+    reg  [35:0] units$8$th_c;
     wire  units$8$hit;
     reg  units$9$clk;
     reg  [15:0] units$9$cx;
@@ -1623,6 +1709,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
     reg  [15:0] units$9$nx;
     reg  [15:0] units$9$ny;
     reg  [15:0] units$9$nz;
+    reg  [35:0] units$9$th_c;
     wire  units$9$hit;
     reg  units$10$clk;
     reg  [15:0] units$10$cx;
@@ -1632,6 +1719,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
     reg  [15:0] units$10$nx;
     reg  [15:0] units$10$ny;
     reg  [15:0] units$10$nz;
+    reg  [35:0] units$10$th_c;
     wire  units$10$hit;
     reg  units$11$clk;
     reg  [15:0] units$11$cx;
@@ -1641,6 +1729,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
     reg  [15:0] units$11$nx;
     reg  [15:0] units$11$ny;
     reg  [15:0] units$11$nz;
+    reg  [35:0] units$11$th_c;
     wire  units$11$hit;
     reg  units$12$clk;
     reg  [15:0] units$12$cx;
@@ -1650,6 +1739,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
     reg  [15:0] units$12$nx;
     reg  [15:0] units$12$ny;
     reg  [15:0] units$12$nz;
+    reg  [35:0] units$12$th_c;
     wire  units$12$hit;
     reg  units$13$clk;
     reg  [15:0] units$13$cx;
@@ -1659,6 +1749,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
     reg  [15:0] units$13$nx;
     reg  [15:0] units$13$ny;
     reg  [15:0] units$13$nz;
+    reg  [35:0] units$13$th_c;
     wire  units$13$hit;
     reg  units$14$clk;
     reg  [15:0] units$14$cx;
@@ -1668,6 +1759,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
     reg  [15:0] units$14$nx;
     reg  [15:0] units$14$ny;
     reg  [15:0] units$14$nz;
+    reg  [35:0] units$14$th_c;
     wire  units$14$hit;
     reg  units$15$clk;
     reg  [15:0] units$15$cx;
@@ -1677,6 +1769,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
     reg  [15:0] units$15$nx;
     reg  [15:0] units$15$ny;
     reg  [15:0] units$15$nz;
+    reg  [35:0] units$15$th_c;
     wire  units$15$hit;
     reg  units$16$clk;
     reg  [15:0] units$16$cx;
@@ -1686,6 +1779,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
     reg  [15:0] units$16$nx;
     reg  [15:0] units$16$ny;
     reg  [15:0] units$16$nz;
+    reg  [35:0] units$16$th_c;
     wire  units$16$hit;
     reg  units$17$clk;
     reg  [15:0] units$17$cx;
@@ -1695,6 +1789,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
     reg  [15:0] units$17$nx;
     reg  [15:0] units$17$ny;
     reg  [15:0] units$17$nz;
+    reg  [35:0] units$17$th_c;
     wire  units$17$hit;
     reg  units$18$clk;
     reg  [15:0] units$18$cx;
@@ -1704,6 +1799,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
     reg  [15:0] units$18$nx;
     reg  [15:0] units$18$ny;
     reg  [15:0] units$18$nz;
+    reg  [35:0] units$18$th_c;
     wire  units$18$hit;
     reg  units$19$clk;
     reg  [15:0] units$19$cx;
@@ -1713,6 +1809,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
     reg  [15:0] units$19$nx;
     reg  [15:0] units$19$ny;
     reg  [15:0] units$19$nz;
+    reg  [35:0] units$19$th_c;
     wire  units$19$hit;
     reg  units$20$clk;
     reg  [15:0] units$20$cx;
@@ -1722,6 +1819,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
     reg  [15:0] units$20$nx;
     reg  [15:0] units$20$ny;
     reg  [15:0] units$20$nz;
+    reg  [35:0] units$20$th_c;
     wire  units$20$hit;
     reg  [63:0] cd$0$d;
     wire  [63:0] cd$0$q;
@@ -1758,6 +1856,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .nx(units$0$nx),
         .ny(units$0$ny),
         .nz(units$0$nz),
+        .th_c(units$0$th_c),
         .hit(units$0$hit)
     );
     fcc_dist_tree__units__1 units$1(
@@ -1769,6 +1868,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .nx(units$1$nx),
         .ny(units$1$ny),
         .nz(units$1$nz),
+        .th_c(units$1$th_c),
         .hit(units$1$hit)
     );
     fcc_dist_tree__units__2 units$2(
@@ -1780,6 +1880,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .nx(units$2$nx),
         .ny(units$2$ny),
         .nz(units$2$nz),
+        .th_c(units$2$th_c),
         .hit(units$2$hit)
     );
     fcc_dist_tree__units__3 units$3(
@@ -1791,6 +1892,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .nx(units$3$nx),
         .ny(units$3$ny),
         .nz(units$3$nz),
+        .th_c(units$3$th_c),
         .hit(units$3$hit)
     );
     fcc_dist_tree__units__4 units$4(
@@ -1802,6 +1904,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .nx(units$4$nx),
         .ny(units$4$ny),
         .nz(units$4$nz),
+        .th_c(units$4$th_c),
         .hit(units$4$hit)
     );
     fcc_dist_tree__units__5 units$5(
@@ -1813,6 +1916,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .nx(units$5$nx),
         .ny(units$5$ny),
         .nz(units$5$nz),
+        .th_c(units$5$th_c),
         .hit(units$5$hit)
     );
     fcc_dist_tree__units__6 units$6(
@@ -1824,6 +1928,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .nx(units$6$nx),
         .ny(units$6$ny),
         .nz(units$6$nz),
+        .th_c(units$6$th_c),
         .hit(units$6$hit)
     );
     fcc_dist_tree__units__7 units$7(
@@ -1835,6 +1940,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .nx(units$7$nx),
         .ny(units$7$ny),
         .nz(units$7$nz),
+        .th_c(units$7$th_c),
         .hit(units$7$hit)
     );
     fcc_dist_tree__units__8 units$8(
@@ -1846,6 +1952,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .nx(units$8$nx),
         .ny(units$8$ny),
         .nz(units$8$nz),
+        .th_c(units$8$th_c),
         .hit(units$8$hit)
     );
     fcc_dist_tree__units__9 units$9(
@@ -1857,6 +1964,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .nx(units$9$nx),
         .ny(units$9$ny),
         .nz(units$9$nz),
+        .th_c(units$9$th_c),
         .hit(units$9$hit)
     );
     fcc_dist_tree__units__10 units$10(
@@ -1868,6 +1976,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .nx(units$10$nx),
         .ny(units$10$ny),
         .nz(units$10$nz),
+        .th_c(units$10$th_c),
         .hit(units$10$hit)
     );
     fcc_dist_tree__units__11 units$11(
@@ -1879,6 +1988,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .nx(units$11$nx),
         .ny(units$11$ny),
         .nz(units$11$nz),
+        .th_c(units$11$th_c),
         .hit(units$11$hit)
     );
     fcc_dist_tree__units__12 units$12(
@@ -1890,6 +2000,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .nx(units$12$nx),
         .ny(units$12$ny),
         .nz(units$12$nz),
+        .th_c(units$12$th_c),
         .hit(units$12$hit)
     );
     fcc_dist_tree__units__13 units$13(
@@ -1901,6 +2012,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .nx(units$13$nx),
         .ny(units$13$ny),
         .nz(units$13$nz),
+        .th_c(units$13$th_c),
         .hit(units$13$hit)
     );
     fcc_dist_tree__units__14 units$14(
@@ -1912,6 +2024,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .nx(units$14$nx),
         .ny(units$14$ny),
         .nz(units$14$nz),
+        .th_c(units$14$th_c),
         .hit(units$14$hit)
     );
     fcc_dist_tree__units__15 units$15(
@@ -1923,6 +2036,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .nx(units$15$nx),
         .ny(units$15$ny),
         .nz(units$15$nz),
+        .th_c(units$15$th_c),
         .hit(units$15$hit)
     );
     fcc_dist_tree__units__16 units$16(
@@ -1934,6 +2048,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .nx(units$16$nx),
         .ny(units$16$ny),
         .nz(units$16$nz),
+        .th_c(units$16$th_c),
         .hit(units$16$hit)
     );
     fcc_dist_tree__units__17 units$17(
@@ -1945,6 +2060,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .nx(units$17$nx),
         .ny(units$17$ny),
         .nz(units$17$nz),
+        .th_c(units$17$th_c),
         .hit(units$17$hit)
     );
     fcc_dist_tree__units__18 units$18(
@@ -1956,6 +2072,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .nx(units$18$nx),
         .ny(units$18$ny),
         .nz(units$18$nz),
+        .th_c(units$18$th_c),
         .hit(units$18$hit)
     );
     fcc_dist_tree__units__19 units$19(
@@ -1967,6 +2084,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .nx(units$19$nx),
         .ny(units$19$ny),
         .nz(units$19$nz),
+        .th_c(units$19$th_c),
         .hit(units$19$hit)
     );
     fcc_dist_tree__units__20 units$20(
@@ -1978,6 +2096,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .nx(units$20$nx),
         .ny(units$20$ny),
         .nz(units$20$nz),
+        .th_c(units$20$th_c),
         .hit(units$20$hit)
     );
     fcc_dist_tree__cd__0 cd$0(
@@ -2026,6 +2145,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         units$0$nx = ent_x$0;
         units$0$ny = ent_y$0;
         units$0$nz = ent_z$0;
+        units$0$th_c = th_v_c;
         hit$0 = units$0$hit;
         units$1$clk = clk;
         units$1$cx = centre_in[15:0];
@@ -2035,6 +2155,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         units$1$nx = ent_x$1;
         units$1$ny = ent_y$1;
         units$1$nz = ent_z$1;
+        units$1$th_c = th_v_c;
         hit$1 = units$1$hit;
         units$2$clk = clk;
         units$2$cx = centre_in[15:0];
@@ -2044,6 +2165,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         units$2$nx = ent_x$2;
         units$2$ny = ent_y$2;
         units$2$nz = ent_z$2;
+        units$2$th_c = th_v_c;
         hit$2 = units$2$hit;
         units$3$clk = clk;
         units$3$cx = centre_in[15:0];
@@ -2053,6 +2175,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         units$3$nx = ent_x$3;
         units$3$ny = ent_y$3;
         units$3$nz = ent_z$3;
+        units$3$th_c = th_v_c;
         hit$3 = units$3$hit;
         units$4$clk = clk;
         units$4$cx = centre_in[15:0];
@@ -2062,6 +2185,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         units$4$nx = ent_x$4;
         units$4$ny = ent_y$4;
         units$4$nz = ent_z$4;
+        units$4$th_c = th_v_c;
         hit$4 = units$4$hit;
         units$5$clk = clk;
         units$5$cx = centre_in[15:0];
@@ -2071,6 +2195,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         units$5$nx = ent_x$5;
         units$5$ny = ent_y$5;
         units$5$nz = ent_z$5;
+        units$5$th_c = th_v_c;
         hit$5 = units$5$hit;
         units$6$clk = clk;
         units$6$cx = centre_in[15:0];
@@ -2080,6 +2205,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         units$6$nx = ent_x$6;
         units$6$ny = ent_y$6;
         units$6$nz = ent_z$6;
+        units$6$th_c = th_v_c;
         hit$6 = units$6$hit;
         units$7$clk = clk;
         units$7$cx = centre_in[15:0];
@@ -2089,6 +2215,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         units$7$nx = ent_x$7;
         units$7$ny = ent_y$7;
         units$7$nz = ent_z$7;
+        units$7$th_c = th_v_c;
         hit$7 = units$7$hit;
         units$8$clk = clk;
         units$8$cx = centre_in[15:0];
@@ -2098,6 +2225,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         units$8$nx = ent_x$8;
         units$8$ny = ent_y$8;
         units$8$nz = ent_z$8;
+        units$8$th_c = th_v_c;
         hit$8 = units$8$hit;
         units$9$clk = clk;
         units$9$cx = centre_in[15:0];
@@ -2107,6 +2235,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         units$9$nx = ent_x$9;
         units$9$ny = ent_y$9;
         units$9$nz = ent_z$9;
+        units$9$th_c = th_v_c;
         hit$9 = units$9$hit;
         units$10$clk = clk;
         units$10$cx = centre_in[15:0];
@@ -2116,6 +2245,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         units$10$nx = ent_x$10;
         units$10$ny = ent_y$10;
         units$10$nz = ent_z$10;
+        units$10$th_c = th_v_c;
         hit$10 = units$10$hit;
         units$11$clk = clk;
         units$11$cx = centre_in[15:0];
@@ -2125,6 +2255,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         units$11$nx = ent_x$11;
         units$11$ny = ent_y$11;
         units$11$nz = ent_z$11;
+        units$11$th_c = th_v_c;
         hit$11 = units$11$hit;
         units$12$clk = clk;
         units$12$cx = centre_in[15:0];
@@ -2134,6 +2265,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         units$12$nx = ent_x$12;
         units$12$ny = ent_y$12;
         units$12$nz = ent_z$12;
+        units$12$th_c = th_v_c;
         hit$12 = units$12$hit;
         units$13$clk = clk;
         units$13$cx = centre_in[15:0];
@@ -2143,6 +2275,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         units$13$nx = ent_x$13;
         units$13$ny = ent_y$13;
         units$13$nz = ent_z$13;
+        units$13$th_c = th_v_c;
         hit$13 = units$13$hit;
         units$14$clk = clk;
         units$14$cx = centre_in[15:0];
@@ -2152,6 +2285,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         units$14$nx = ent_x$14;
         units$14$ny = ent_y$14;
         units$14$nz = ent_z$14;
+        units$14$th_c = th_v_c;
         hit$14 = units$14$hit;
         units$15$clk = clk;
         units$15$cx = centre_in[15:0];
@@ -2161,6 +2295,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         units$15$nx = ent_x$15;
         units$15$ny = ent_y$15;
         units$15$nz = ent_z$15;
+        units$15$th_c = th_v_c;
         hit$15 = units$15$hit;
         units$16$clk = clk;
         units$16$cx = centre_in[15:0];
@@ -2170,6 +2305,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         units$16$nx = ent_x$16;
         units$16$ny = ent_y$16;
         units$16$nz = ent_z$16;
+        units$16$th_c = th_v_c;
         hit$16 = units$16$hit;
         units$17$clk = clk;
         units$17$cx = centre_in[15:0];
@@ -2179,6 +2315,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         units$17$nx = ent_x$17;
         units$17$ny = ent_y$17;
         units$17$nz = ent_z$17;
+        units$17$th_c = th_v_c;
         hit$17 = units$17$hit;
         units$18$clk = clk;
         units$18$cx = centre_in[15:0];
@@ -2188,6 +2325,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         units$18$nx = ent_x$18;
         units$18$ny = ent_y$18;
         units$18$nz = ent_z$18;
+        units$18$th_c = th_v_c;
         hit$18 = units$18$hit;
         units$19$clk = clk;
         units$19$cx = centre_in[15:0];
@@ -2197,6 +2335,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         units$19$nx = ent_x$19;
         units$19$ny = ent_y$19;
         units$19$nz = ent_z$19;
+        units$19$th_c = th_v_c;
         hit$19 = units$19$hit;
         units$20$clk = clk;
         units$20$cx = centre_in[15:0];
@@ -2206,6 +2345,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         units$20$nx = ent_x$20;
         units$20$ny = ent_y$20;
         units$20$nz = ent_z$20;
+        units$20$th_c = th_v_c;
         hit$20 = units$20$hit;
         c0[0:0] = centre_in[48:48];
         c0[1:1] = centre_in[49:49];
@@ -2377,7 +2517,7 @@ module fcc_dist_tree__cd__6(d,q,clock);
 endmodule // fcc_dist_tree__cd__6
 
 
-module fcc_dist_tree__units__0(clk,cx,cy,cz,nok,nx,ny,nz,hit);
+module fcc_dist_tree__units__0(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -2388,6 +2528,7 @@ module fcc_dist_tree__units__0(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     input wire  [15:0] nx;
     input wire  [15:0] ny;
     input wire  [15:0] nz;
+    input wire  [35:0] th_c;
     output reg  hit;
 
     // Stub signals
@@ -2399,6 +2540,7 @@ module fcc_dist_tree__units__0(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     reg  [15:0] sq$by;
     reg  [15:0] sq$bz;
     reg  sq$en_in;
+    reg  [35:0] sq$c;
     wire  sq$hit;
 
     // Sub module instances
@@ -2411,6 +2553,7 @@ module fcc_dist_tree__units__0(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         .by(sq$by),
         .bz(sq$bz),
         .en_in(sq$en_in),
+        .c(sq$c),
         .hit(sq$hit)
     );
 
@@ -2424,13 +2567,14 @@ module fcc_dist_tree__units__0(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         sq$by = ny;
         sq$bz = nz;
         sq$en_in = nok;
+        sq$c = th_c;
         hit = sq$hit;
     end
 
 endmodule // fcc_dist_tree__units__0
 
 
-module fcc_dist_tree__units__0__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
+module fcc_dist_tree__units__0__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -2441,6 +2585,7 @@ module fcc_dist_tree__units__0__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     input wire  [15:0] by;
     input wire  [15:0] bz;
     input wire  en_in;
+    input wire  [35:0] c;
     output reg  hit;
 
     // Update code (custom)
@@ -2450,7 +2595,11 @@ module fcc_dist_tree__units__0__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     reg signed [16:0] dy1, dz1, dz2;
     reg signed [16:0] xa, ya, za;
     reg signed [33:0] mx, my, mz;
-    reg [35:0] px, py, pz;
+    reg [35:0] px, py;
+    // Only the sign of the sum is used (the DSP's P register holds it all).
+    /* verilator lint_off UNUSEDSIGNAL */
+    reg [35:0] pz;
+    /* verilator lint_on UNUSEDSIGNAL */
     reg [5:0] en_d;
     always @(posedge clk) begin
         dx <= $signed({1'b0, ax}) - $signed({1'b0, bx});
@@ -2465,16 +2614,16 @@ module fcc_dist_tree__units__0__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
         mx <= xa * xa;
         my <= ya * ya;
         mz <= za * za;
-        px <= {2'b0, mx};
+        px <= {2'b0, mx} + c;
         py <= px + {2'b0, my};
         pz <= py + {2'b0, mz};
         en_d <= {en_d[4:0], en_in};
-        hit <= en_d[5] & (pz < 36'd65536);
+        hit <= en_d[5] & pz[35];
     end
 endmodule // fcc_dist_tree__units__0__sq
 
 
-module fcc_dist_tree__units__1(clk,cx,cy,cz,nok,nx,ny,nz,hit);
+module fcc_dist_tree__units__1(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -2485,6 +2634,7 @@ module fcc_dist_tree__units__1(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     input wire  [15:0] nx;
     input wire  [15:0] ny;
     input wire  [15:0] nz;
+    input wire  [35:0] th_c;
     output reg  hit;
 
     // Stub signals
@@ -2496,6 +2646,7 @@ module fcc_dist_tree__units__1(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     reg  [15:0] sq$by;
     reg  [15:0] sq$bz;
     reg  sq$en_in;
+    reg  [35:0] sq$c;
     wire  sq$hit;
 
     // Sub module instances
@@ -2508,6 +2659,7 @@ module fcc_dist_tree__units__1(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         .by(sq$by),
         .bz(sq$bz),
         .en_in(sq$en_in),
+        .c(sq$c),
         .hit(sq$hit)
     );
 
@@ -2521,13 +2673,14 @@ module fcc_dist_tree__units__1(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         sq$by = ny;
         sq$bz = nz;
         sq$en_in = nok;
+        sq$c = th_c;
         hit = sq$hit;
     end
 
 endmodule // fcc_dist_tree__units__1
 
 
-module fcc_dist_tree__units__1__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
+module fcc_dist_tree__units__1__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -2538,6 +2691,7 @@ module fcc_dist_tree__units__1__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     input wire  [15:0] by;
     input wire  [15:0] bz;
     input wire  en_in;
+    input wire  [35:0] c;
     output reg  hit;
 
     // Update code (custom)
@@ -2547,7 +2701,11 @@ module fcc_dist_tree__units__1__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     reg signed [16:0] dy1, dz1, dz2;
     reg signed [16:0] xa, ya, za;
     reg signed [33:0] mx, my, mz;
-    reg [35:0] px, py, pz;
+    reg [35:0] px, py;
+    // Only the sign of the sum is used (the DSP's P register holds it all).
+    /* verilator lint_off UNUSEDSIGNAL */
+    reg [35:0] pz;
+    /* verilator lint_on UNUSEDSIGNAL */
     reg [5:0] en_d;
     always @(posedge clk) begin
         dx <= $signed({1'b0, ax}) - $signed({1'b0, bx});
@@ -2562,16 +2720,16 @@ module fcc_dist_tree__units__1__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
         mx <= xa * xa;
         my <= ya * ya;
         mz <= za * za;
-        px <= {2'b0, mx};
+        px <= {2'b0, mx} + c;
         py <= px + {2'b0, my};
         pz <= py + {2'b0, mz};
         en_d <= {en_d[4:0], en_in};
-        hit <= en_d[5] & (pz < 36'd65536);
+        hit <= en_d[5] & pz[35];
     end
 endmodule // fcc_dist_tree__units__1__sq
 
 
-module fcc_dist_tree__units__10(clk,cx,cy,cz,nok,nx,ny,nz,hit);
+module fcc_dist_tree__units__10(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -2582,6 +2740,7 @@ module fcc_dist_tree__units__10(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     input wire  [15:0] nx;
     input wire  [15:0] ny;
     input wire  [15:0] nz;
+    input wire  [35:0] th_c;
     output reg  hit;
 
     // Stub signals
@@ -2593,6 +2752,7 @@ module fcc_dist_tree__units__10(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     reg  [15:0] sq$by;
     reg  [15:0] sq$bz;
     reg  sq$en_in;
+    reg  [35:0] sq$c;
     wire  sq$hit;
 
     // Sub module instances
@@ -2605,6 +2765,7 @@ module fcc_dist_tree__units__10(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         .by(sq$by),
         .bz(sq$bz),
         .en_in(sq$en_in),
+        .c(sq$c),
         .hit(sq$hit)
     );
 
@@ -2618,13 +2779,14 @@ module fcc_dist_tree__units__10(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         sq$by = ny;
         sq$bz = nz;
         sq$en_in = nok;
+        sq$c = th_c;
         hit = sq$hit;
     end
 
 endmodule // fcc_dist_tree__units__10
 
 
-module fcc_dist_tree__units__10__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
+module fcc_dist_tree__units__10__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -2635,6 +2797,7 @@ module fcc_dist_tree__units__10__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     input wire  [15:0] by;
     input wire  [15:0] bz;
     input wire  en_in;
+    input wire  [35:0] c;
     output reg  hit;
 
     // Update code (custom)
@@ -2644,7 +2807,11 @@ module fcc_dist_tree__units__10__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     reg signed [16:0] dy1, dz1, dz2;
     reg signed [16:0] xa, ya, za;
     reg signed [33:0] mx, my, mz;
-    reg [35:0] px, py, pz;
+    reg [35:0] px, py;
+    // Only the sign of the sum is used (the DSP's P register holds it all).
+    /* verilator lint_off UNUSEDSIGNAL */
+    reg [35:0] pz;
+    /* verilator lint_on UNUSEDSIGNAL */
     reg [5:0] en_d;
     always @(posedge clk) begin
         dx <= $signed({1'b0, ax}) - $signed({1'b0, bx});
@@ -2659,16 +2826,16 @@ module fcc_dist_tree__units__10__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
         mx <= xa * xa;
         my <= ya * ya;
         mz <= za * za;
-        px <= {2'b0, mx};
+        px <= {2'b0, mx} + c;
         py <= px + {2'b0, my};
         pz <= py + {2'b0, mz};
         en_d <= {en_d[4:0], en_in};
-        hit <= en_d[5] & (pz < 36'd65536);
+        hit <= en_d[5] & pz[35];
     end
 endmodule // fcc_dist_tree__units__10__sq
 
 
-module fcc_dist_tree__units__11(clk,cx,cy,cz,nok,nx,ny,nz,hit);
+module fcc_dist_tree__units__11(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -2679,6 +2846,7 @@ module fcc_dist_tree__units__11(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     input wire  [15:0] nx;
     input wire  [15:0] ny;
     input wire  [15:0] nz;
+    input wire  [35:0] th_c;
     output reg  hit;
 
     // Stub signals
@@ -2690,6 +2858,7 @@ module fcc_dist_tree__units__11(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     reg  [15:0] sq$by;
     reg  [15:0] sq$bz;
     reg  sq$en_in;
+    reg  [35:0] sq$c;
     wire  sq$hit;
 
     // Sub module instances
@@ -2702,6 +2871,7 @@ module fcc_dist_tree__units__11(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         .by(sq$by),
         .bz(sq$bz),
         .en_in(sq$en_in),
+        .c(sq$c),
         .hit(sq$hit)
     );
 
@@ -2715,13 +2885,14 @@ module fcc_dist_tree__units__11(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         sq$by = ny;
         sq$bz = nz;
         sq$en_in = nok;
+        sq$c = th_c;
         hit = sq$hit;
     end
 
 endmodule // fcc_dist_tree__units__11
 
 
-module fcc_dist_tree__units__11__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
+module fcc_dist_tree__units__11__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -2732,6 +2903,7 @@ module fcc_dist_tree__units__11__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     input wire  [15:0] by;
     input wire  [15:0] bz;
     input wire  en_in;
+    input wire  [35:0] c;
     output reg  hit;
 
     // Update code (custom)
@@ -2741,7 +2913,11 @@ module fcc_dist_tree__units__11__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     reg signed [16:0] dy1, dz1, dz2;
     reg signed [16:0] xa, ya, za;
     reg signed [33:0] mx, my, mz;
-    reg [35:0] px, py, pz;
+    reg [35:0] px, py;
+    // Only the sign of the sum is used (the DSP's P register holds it all).
+    /* verilator lint_off UNUSEDSIGNAL */
+    reg [35:0] pz;
+    /* verilator lint_on UNUSEDSIGNAL */
     reg [5:0] en_d;
     always @(posedge clk) begin
         dx <= $signed({1'b0, ax}) - $signed({1'b0, bx});
@@ -2756,16 +2932,16 @@ module fcc_dist_tree__units__11__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
         mx <= xa * xa;
         my <= ya * ya;
         mz <= za * za;
-        px <= {2'b0, mx};
+        px <= {2'b0, mx} + c;
         py <= px + {2'b0, my};
         pz <= py + {2'b0, mz};
         en_d <= {en_d[4:0], en_in};
-        hit <= en_d[5] & (pz < 36'd65536);
+        hit <= en_d[5] & pz[35];
     end
 endmodule // fcc_dist_tree__units__11__sq
 
 
-module fcc_dist_tree__units__12(clk,cx,cy,cz,nok,nx,ny,nz,hit);
+module fcc_dist_tree__units__12(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -2776,6 +2952,7 @@ module fcc_dist_tree__units__12(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     input wire  [15:0] nx;
     input wire  [15:0] ny;
     input wire  [15:0] nz;
+    input wire  [35:0] th_c;
     output reg  hit;
 
     // Stub signals
@@ -2787,6 +2964,7 @@ module fcc_dist_tree__units__12(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     reg  [15:0] sq$by;
     reg  [15:0] sq$bz;
     reg  sq$en_in;
+    reg  [35:0] sq$c;
     wire  sq$hit;
 
     // Sub module instances
@@ -2799,6 +2977,7 @@ module fcc_dist_tree__units__12(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         .by(sq$by),
         .bz(sq$bz),
         .en_in(sq$en_in),
+        .c(sq$c),
         .hit(sq$hit)
     );
 
@@ -2812,13 +2991,14 @@ module fcc_dist_tree__units__12(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         sq$by = ny;
         sq$bz = nz;
         sq$en_in = nok;
+        sq$c = th_c;
         hit = sq$hit;
     end
 
 endmodule // fcc_dist_tree__units__12
 
 
-module fcc_dist_tree__units__12__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
+module fcc_dist_tree__units__12__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -2829,6 +3009,7 @@ module fcc_dist_tree__units__12__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     input wire  [15:0] by;
     input wire  [15:0] bz;
     input wire  en_in;
+    input wire  [35:0] c;
     output reg  hit;
 
     // Update code (custom)
@@ -2838,7 +3019,11 @@ module fcc_dist_tree__units__12__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     reg signed [16:0] dy1, dz1, dz2;
     reg signed [16:0] xa, ya, za;
     reg signed [33:0] mx, my, mz;
-    reg [35:0] px, py, pz;
+    reg [35:0] px, py;
+    // Only the sign of the sum is used (the DSP's P register holds it all).
+    /* verilator lint_off UNUSEDSIGNAL */
+    reg [35:0] pz;
+    /* verilator lint_on UNUSEDSIGNAL */
     reg [5:0] en_d;
     always @(posedge clk) begin
         dx <= $signed({1'b0, ax}) - $signed({1'b0, bx});
@@ -2853,16 +3038,16 @@ module fcc_dist_tree__units__12__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
         mx <= xa * xa;
         my <= ya * ya;
         mz <= za * za;
-        px <= {2'b0, mx};
+        px <= {2'b0, mx} + c;
         py <= px + {2'b0, my};
         pz <= py + {2'b0, mz};
         en_d <= {en_d[4:0], en_in};
-        hit <= en_d[5] & (pz < 36'd65536);
+        hit <= en_d[5] & pz[35];
     end
 endmodule // fcc_dist_tree__units__12__sq
 
 
-module fcc_dist_tree__units__13(clk,cx,cy,cz,nok,nx,ny,nz,hit);
+module fcc_dist_tree__units__13(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -2873,6 +3058,7 @@ module fcc_dist_tree__units__13(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     input wire  [15:0] nx;
     input wire  [15:0] ny;
     input wire  [15:0] nz;
+    input wire  [35:0] th_c;
     output reg  hit;
 
     // Stub signals
@@ -2884,6 +3070,7 @@ module fcc_dist_tree__units__13(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     reg  [15:0] sq$by;
     reg  [15:0] sq$bz;
     reg  sq$en_in;
+    reg  [35:0] sq$c;
     wire  sq$hit;
 
     // Sub module instances
@@ -2896,6 +3083,7 @@ module fcc_dist_tree__units__13(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         .by(sq$by),
         .bz(sq$bz),
         .en_in(sq$en_in),
+        .c(sq$c),
         .hit(sq$hit)
     );
 
@@ -2909,13 +3097,14 @@ module fcc_dist_tree__units__13(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         sq$by = ny;
         sq$bz = nz;
         sq$en_in = nok;
+        sq$c = th_c;
         hit = sq$hit;
     end
 
 endmodule // fcc_dist_tree__units__13
 
 
-module fcc_dist_tree__units__13__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
+module fcc_dist_tree__units__13__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -2926,6 +3115,7 @@ module fcc_dist_tree__units__13__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     input wire  [15:0] by;
     input wire  [15:0] bz;
     input wire  en_in;
+    input wire  [35:0] c;
     output reg  hit;
 
     // Update code (custom)
@@ -2935,7 +3125,11 @@ module fcc_dist_tree__units__13__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     reg signed [16:0] dy1, dz1, dz2;
     reg signed [16:0] xa, ya, za;
     reg signed [33:0] mx, my, mz;
-    reg [35:0] px, py, pz;
+    reg [35:0] px, py;
+    // Only the sign of the sum is used (the DSP's P register holds it all).
+    /* verilator lint_off UNUSEDSIGNAL */
+    reg [35:0] pz;
+    /* verilator lint_on UNUSEDSIGNAL */
     reg [5:0] en_d;
     always @(posedge clk) begin
         dx <= $signed({1'b0, ax}) - $signed({1'b0, bx});
@@ -2950,16 +3144,16 @@ module fcc_dist_tree__units__13__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
         mx <= xa * xa;
         my <= ya * ya;
         mz <= za * za;
-        px <= {2'b0, mx};
+        px <= {2'b0, mx} + c;
         py <= px + {2'b0, my};
         pz <= py + {2'b0, mz};
         en_d <= {en_d[4:0], en_in};
-        hit <= en_d[5] & (pz < 36'd65536);
+        hit <= en_d[5] & pz[35];
     end
 endmodule // fcc_dist_tree__units__13__sq
 
 
-module fcc_dist_tree__units__14(clk,cx,cy,cz,nok,nx,ny,nz,hit);
+module fcc_dist_tree__units__14(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -2970,6 +3164,7 @@ module fcc_dist_tree__units__14(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     input wire  [15:0] nx;
     input wire  [15:0] ny;
     input wire  [15:0] nz;
+    input wire  [35:0] th_c;
     output reg  hit;
 
     // Stub signals
@@ -2981,6 +3176,7 @@ module fcc_dist_tree__units__14(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     reg  [15:0] sq$by;
     reg  [15:0] sq$bz;
     reg  sq$en_in;
+    reg  [35:0] sq$c;
     wire  sq$hit;
 
     // Sub module instances
@@ -2993,6 +3189,7 @@ module fcc_dist_tree__units__14(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         .by(sq$by),
         .bz(sq$bz),
         .en_in(sq$en_in),
+        .c(sq$c),
         .hit(sq$hit)
     );
 
@@ -3006,13 +3203,14 @@ module fcc_dist_tree__units__14(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         sq$by = ny;
         sq$bz = nz;
         sq$en_in = nok;
+        sq$c = th_c;
         hit = sq$hit;
     end
 
 endmodule // fcc_dist_tree__units__14
 
 
-module fcc_dist_tree__units__14__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
+module fcc_dist_tree__units__14__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -3023,6 +3221,7 @@ module fcc_dist_tree__units__14__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     input wire  [15:0] by;
     input wire  [15:0] bz;
     input wire  en_in;
+    input wire  [35:0] c;
     output reg  hit;
 
     // Update code (custom)
@@ -3032,7 +3231,11 @@ module fcc_dist_tree__units__14__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     reg signed [16:0] dy1, dz1, dz2;
     reg signed [16:0] xa, ya, za;
     reg signed [33:0] mx, my, mz;
-    reg [35:0] px, py, pz;
+    reg [35:0] px, py;
+    // Only the sign of the sum is used (the DSP's P register holds it all).
+    /* verilator lint_off UNUSEDSIGNAL */
+    reg [35:0] pz;
+    /* verilator lint_on UNUSEDSIGNAL */
     reg [5:0] en_d;
     always @(posedge clk) begin
         dx <= $signed({1'b0, ax}) - $signed({1'b0, bx});
@@ -3047,16 +3250,16 @@ module fcc_dist_tree__units__14__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
         mx <= xa * xa;
         my <= ya * ya;
         mz <= za * za;
-        px <= {2'b0, mx};
+        px <= {2'b0, mx} + c;
         py <= px + {2'b0, my};
         pz <= py + {2'b0, mz};
         en_d <= {en_d[4:0], en_in};
-        hit <= en_d[5] & (pz < 36'd65536);
+        hit <= en_d[5] & pz[35];
     end
 endmodule // fcc_dist_tree__units__14__sq
 
 
-module fcc_dist_tree__units__15(clk,cx,cy,cz,nok,nx,ny,nz,hit);
+module fcc_dist_tree__units__15(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -3067,6 +3270,7 @@ module fcc_dist_tree__units__15(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     input wire  [15:0] nx;
     input wire  [15:0] ny;
     input wire  [15:0] nz;
+    input wire  [35:0] th_c;
     output reg  hit;
 
     // Stub signals
@@ -3078,6 +3282,7 @@ module fcc_dist_tree__units__15(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     reg  [15:0] sq$by;
     reg  [15:0] sq$bz;
     reg  sq$en_in;
+    reg  [35:0] sq$c;
     wire  sq$hit;
 
     // Sub module instances
@@ -3090,6 +3295,7 @@ module fcc_dist_tree__units__15(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         .by(sq$by),
         .bz(sq$bz),
         .en_in(sq$en_in),
+        .c(sq$c),
         .hit(sq$hit)
     );
 
@@ -3103,13 +3309,14 @@ module fcc_dist_tree__units__15(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         sq$by = ny;
         sq$bz = nz;
         sq$en_in = nok;
+        sq$c = th_c;
         hit = sq$hit;
     end
 
 endmodule // fcc_dist_tree__units__15
 
 
-module fcc_dist_tree__units__15__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
+module fcc_dist_tree__units__15__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -3120,6 +3327,7 @@ module fcc_dist_tree__units__15__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     input wire  [15:0] by;
     input wire  [15:0] bz;
     input wire  en_in;
+    input wire  [35:0] c;
     output reg  hit;
 
     // Update code (custom)
@@ -3129,7 +3337,11 @@ module fcc_dist_tree__units__15__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     reg signed [16:0] dy1, dz1, dz2;
     reg signed [16:0] xa, ya, za;
     reg signed [33:0] mx, my, mz;
-    reg [35:0] px, py, pz;
+    reg [35:0] px, py;
+    // Only the sign of the sum is used (the DSP's P register holds it all).
+    /* verilator lint_off UNUSEDSIGNAL */
+    reg [35:0] pz;
+    /* verilator lint_on UNUSEDSIGNAL */
     reg [5:0] en_d;
     always @(posedge clk) begin
         dx <= $signed({1'b0, ax}) - $signed({1'b0, bx});
@@ -3144,16 +3356,16 @@ module fcc_dist_tree__units__15__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
         mx <= xa * xa;
         my <= ya * ya;
         mz <= za * za;
-        px <= {2'b0, mx};
+        px <= {2'b0, mx} + c;
         py <= px + {2'b0, my};
         pz <= py + {2'b0, mz};
         en_d <= {en_d[4:0], en_in};
-        hit <= en_d[5] & (pz < 36'd65536);
+        hit <= en_d[5] & pz[35];
     end
 endmodule // fcc_dist_tree__units__15__sq
 
 
-module fcc_dist_tree__units__16(clk,cx,cy,cz,nok,nx,ny,nz,hit);
+module fcc_dist_tree__units__16(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -3164,6 +3376,7 @@ module fcc_dist_tree__units__16(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     input wire  [15:0] nx;
     input wire  [15:0] ny;
     input wire  [15:0] nz;
+    input wire  [35:0] th_c;
     output reg  hit;
 
     // Stub signals
@@ -3175,6 +3388,7 @@ module fcc_dist_tree__units__16(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     reg  [15:0] sq$by;
     reg  [15:0] sq$bz;
     reg  sq$en_in;
+    reg  [35:0] sq$c;
     wire  sq$hit;
 
     // Sub module instances
@@ -3187,6 +3401,7 @@ module fcc_dist_tree__units__16(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         .by(sq$by),
         .bz(sq$bz),
         .en_in(sq$en_in),
+        .c(sq$c),
         .hit(sq$hit)
     );
 
@@ -3200,13 +3415,14 @@ module fcc_dist_tree__units__16(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         sq$by = ny;
         sq$bz = nz;
         sq$en_in = nok;
+        sq$c = th_c;
         hit = sq$hit;
     end
 
 endmodule // fcc_dist_tree__units__16
 
 
-module fcc_dist_tree__units__16__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
+module fcc_dist_tree__units__16__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -3217,6 +3433,7 @@ module fcc_dist_tree__units__16__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     input wire  [15:0] by;
     input wire  [15:0] bz;
     input wire  en_in;
+    input wire  [35:0] c;
     output reg  hit;
 
     // Update code (custom)
@@ -3226,7 +3443,11 @@ module fcc_dist_tree__units__16__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     reg signed [16:0] dy1, dz1, dz2;
     reg signed [16:0] xa, ya, za;
     reg signed [33:0] mx, my, mz;
-    reg [35:0] px, py, pz;
+    reg [35:0] px, py;
+    // Only the sign of the sum is used (the DSP's P register holds it all).
+    /* verilator lint_off UNUSEDSIGNAL */
+    reg [35:0] pz;
+    /* verilator lint_on UNUSEDSIGNAL */
     reg [5:0] en_d;
     always @(posedge clk) begin
         dx <= $signed({1'b0, ax}) - $signed({1'b0, bx});
@@ -3241,16 +3462,16 @@ module fcc_dist_tree__units__16__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
         mx <= xa * xa;
         my <= ya * ya;
         mz <= za * za;
-        px <= {2'b0, mx};
+        px <= {2'b0, mx} + c;
         py <= px + {2'b0, my};
         pz <= py + {2'b0, mz};
         en_d <= {en_d[4:0], en_in};
-        hit <= en_d[5] & (pz < 36'd65536);
+        hit <= en_d[5] & pz[35];
     end
 endmodule // fcc_dist_tree__units__16__sq
 
 
-module fcc_dist_tree__units__17(clk,cx,cy,cz,nok,nx,ny,nz,hit);
+module fcc_dist_tree__units__17(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -3261,6 +3482,7 @@ module fcc_dist_tree__units__17(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     input wire  [15:0] nx;
     input wire  [15:0] ny;
     input wire  [15:0] nz;
+    input wire  [35:0] th_c;
     output reg  hit;
 
     // Stub signals
@@ -3272,6 +3494,7 @@ module fcc_dist_tree__units__17(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     reg  [15:0] sq$by;
     reg  [15:0] sq$bz;
     reg  sq$en_in;
+    reg  [35:0] sq$c;
     wire  sq$hit;
 
     // Sub module instances
@@ -3284,6 +3507,7 @@ module fcc_dist_tree__units__17(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         .by(sq$by),
         .bz(sq$bz),
         .en_in(sq$en_in),
+        .c(sq$c),
         .hit(sq$hit)
     );
 
@@ -3297,13 +3521,14 @@ module fcc_dist_tree__units__17(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         sq$by = ny;
         sq$bz = nz;
         sq$en_in = nok;
+        sq$c = th_c;
         hit = sq$hit;
     end
 
 endmodule // fcc_dist_tree__units__17
 
 
-module fcc_dist_tree__units__17__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
+module fcc_dist_tree__units__17__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -3314,6 +3539,7 @@ module fcc_dist_tree__units__17__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     input wire  [15:0] by;
     input wire  [15:0] bz;
     input wire  en_in;
+    input wire  [35:0] c;
     output reg  hit;
 
     // Update code (custom)
@@ -3323,7 +3549,11 @@ module fcc_dist_tree__units__17__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     reg signed [16:0] dy1, dz1, dz2;
     reg signed [16:0] xa, ya, za;
     reg signed [33:0] mx, my, mz;
-    reg [35:0] px, py, pz;
+    reg [35:0] px, py;
+    // Only the sign of the sum is used (the DSP's P register holds it all).
+    /* verilator lint_off UNUSEDSIGNAL */
+    reg [35:0] pz;
+    /* verilator lint_on UNUSEDSIGNAL */
     reg [5:0] en_d;
     always @(posedge clk) begin
         dx <= $signed({1'b0, ax}) - $signed({1'b0, bx});
@@ -3338,16 +3568,16 @@ module fcc_dist_tree__units__17__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
         mx <= xa * xa;
         my <= ya * ya;
         mz <= za * za;
-        px <= {2'b0, mx};
+        px <= {2'b0, mx} + c;
         py <= px + {2'b0, my};
         pz <= py + {2'b0, mz};
         en_d <= {en_d[4:0], en_in};
-        hit <= en_d[5] & (pz < 36'd65536);
+        hit <= en_d[5] & pz[35];
     end
 endmodule // fcc_dist_tree__units__17__sq
 
 
-module fcc_dist_tree__units__18(clk,cx,cy,cz,nok,nx,ny,nz,hit);
+module fcc_dist_tree__units__18(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -3358,6 +3588,7 @@ module fcc_dist_tree__units__18(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     input wire  [15:0] nx;
     input wire  [15:0] ny;
     input wire  [15:0] nz;
+    input wire  [35:0] th_c;
     output reg  hit;
 
     // Stub signals
@@ -3369,6 +3600,7 @@ module fcc_dist_tree__units__18(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     reg  [15:0] sq$by;
     reg  [15:0] sq$bz;
     reg  sq$en_in;
+    reg  [35:0] sq$c;
     wire  sq$hit;
 
     // Sub module instances
@@ -3381,6 +3613,7 @@ module fcc_dist_tree__units__18(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         .by(sq$by),
         .bz(sq$bz),
         .en_in(sq$en_in),
+        .c(sq$c),
         .hit(sq$hit)
     );
 
@@ -3394,13 +3627,14 @@ module fcc_dist_tree__units__18(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         sq$by = ny;
         sq$bz = nz;
         sq$en_in = nok;
+        sq$c = th_c;
         hit = sq$hit;
     end
 
 endmodule // fcc_dist_tree__units__18
 
 
-module fcc_dist_tree__units__18__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
+module fcc_dist_tree__units__18__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -3411,6 +3645,7 @@ module fcc_dist_tree__units__18__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     input wire  [15:0] by;
     input wire  [15:0] bz;
     input wire  en_in;
+    input wire  [35:0] c;
     output reg  hit;
 
     // Update code (custom)
@@ -3420,7 +3655,11 @@ module fcc_dist_tree__units__18__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     reg signed [16:0] dy1, dz1, dz2;
     reg signed [16:0] xa, ya, za;
     reg signed [33:0] mx, my, mz;
-    reg [35:0] px, py, pz;
+    reg [35:0] px, py;
+    // Only the sign of the sum is used (the DSP's P register holds it all).
+    /* verilator lint_off UNUSEDSIGNAL */
+    reg [35:0] pz;
+    /* verilator lint_on UNUSEDSIGNAL */
     reg [5:0] en_d;
     always @(posedge clk) begin
         dx <= $signed({1'b0, ax}) - $signed({1'b0, bx});
@@ -3435,16 +3674,16 @@ module fcc_dist_tree__units__18__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
         mx <= xa * xa;
         my <= ya * ya;
         mz <= za * za;
-        px <= {2'b0, mx};
+        px <= {2'b0, mx} + c;
         py <= px + {2'b0, my};
         pz <= py + {2'b0, mz};
         en_d <= {en_d[4:0], en_in};
-        hit <= en_d[5] & (pz < 36'd65536);
+        hit <= en_d[5] & pz[35];
     end
 endmodule // fcc_dist_tree__units__18__sq
 
 
-module fcc_dist_tree__units__19(clk,cx,cy,cz,nok,nx,ny,nz,hit);
+module fcc_dist_tree__units__19(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -3455,6 +3694,7 @@ module fcc_dist_tree__units__19(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     input wire  [15:0] nx;
     input wire  [15:0] ny;
     input wire  [15:0] nz;
+    input wire  [35:0] th_c;
     output reg  hit;
 
     // Stub signals
@@ -3466,6 +3706,7 @@ module fcc_dist_tree__units__19(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     reg  [15:0] sq$by;
     reg  [15:0] sq$bz;
     reg  sq$en_in;
+    reg  [35:0] sq$c;
     wire  sq$hit;
 
     // Sub module instances
@@ -3478,6 +3719,7 @@ module fcc_dist_tree__units__19(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         .by(sq$by),
         .bz(sq$bz),
         .en_in(sq$en_in),
+        .c(sq$c),
         .hit(sq$hit)
     );
 
@@ -3491,13 +3733,14 @@ module fcc_dist_tree__units__19(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         sq$by = ny;
         sq$bz = nz;
         sq$en_in = nok;
+        sq$c = th_c;
         hit = sq$hit;
     end
 
 endmodule // fcc_dist_tree__units__19
 
 
-module fcc_dist_tree__units__19__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
+module fcc_dist_tree__units__19__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -3508,6 +3751,7 @@ module fcc_dist_tree__units__19__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     input wire  [15:0] by;
     input wire  [15:0] bz;
     input wire  en_in;
+    input wire  [35:0] c;
     output reg  hit;
 
     // Update code (custom)
@@ -3517,7 +3761,11 @@ module fcc_dist_tree__units__19__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     reg signed [16:0] dy1, dz1, dz2;
     reg signed [16:0] xa, ya, za;
     reg signed [33:0] mx, my, mz;
-    reg [35:0] px, py, pz;
+    reg [35:0] px, py;
+    // Only the sign of the sum is used (the DSP's P register holds it all).
+    /* verilator lint_off UNUSEDSIGNAL */
+    reg [35:0] pz;
+    /* verilator lint_on UNUSEDSIGNAL */
     reg [5:0] en_d;
     always @(posedge clk) begin
         dx <= $signed({1'b0, ax}) - $signed({1'b0, bx});
@@ -3532,16 +3780,16 @@ module fcc_dist_tree__units__19__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
         mx <= xa * xa;
         my <= ya * ya;
         mz <= za * za;
-        px <= {2'b0, mx};
+        px <= {2'b0, mx} + c;
         py <= px + {2'b0, my};
         pz <= py + {2'b0, mz};
         en_d <= {en_d[4:0], en_in};
-        hit <= en_d[5] & (pz < 36'd65536);
+        hit <= en_d[5] & pz[35];
     end
 endmodule // fcc_dist_tree__units__19__sq
 
 
-module fcc_dist_tree__units__2(clk,cx,cy,cz,nok,nx,ny,nz,hit);
+module fcc_dist_tree__units__2(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -3552,6 +3800,7 @@ module fcc_dist_tree__units__2(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     input wire  [15:0] nx;
     input wire  [15:0] ny;
     input wire  [15:0] nz;
+    input wire  [35:0] th_c;
     output reg  hit;
 
     // Stub signals
@@ -3563,6 +3812,7 @@ module fcc_dist_tree__units__2(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     reg  [15:0] sq$by;
     reg  [15:0] sq$bz;
     reg  sq$en_in;
+    reg  [35:0] sq$c;
     wire  sq$hit;
 
     // Sub module instances
@@ -3575,6 +3825,7 @@ module fcc_dist_tree__units__2(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         .by(sq$by),
         .bz(sq$bz),
         .en_in(sq$en_in),
+        .c(sq$c),
         .hit(sq$hit)
     );
 
@@ -3588,13 +3839,14 @@ module fcc_dist_tree__units__2(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         sq$by = ny;
         sq$bz = nz;
         sq$en_in = nok;
+        sq$c = th_c;
         hit = sq$hit;
     end
 
 endmodule // fcc_dist_tree__units__2
 
 
-module fcc_dist_tree__units__2__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
+module fcc_dist_tree__units__2__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -3605,6 +3857,7 @@ module fcc_dist_tree__units__2__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     input wire  [15:0] by;
     input wire  [15:0] bz;
     input wire  en_in;
+    input wire  [35:0] c;
     output reg  hit;
 
     // Update code (custom)
@@ -3614,7 +3867,11 @@ module fcc_dist_tree__units__2__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     reg signed [16:0] dy1, dz1, dz2;
     reg signed [16:0] xa, ya, za;
     reg signed [33:0] mx, my, mz;
-    reg [35:0] px, py, pz;
+    reg [35:0] px, py;
+    // Only the sign of the sum is used (the DSP's P register holds it all).
+    /* verilator lint_off UNUSEDSIGNAL */
+    reg [35:0] pz;
+    /* verilator lint_on UNUSEDSIGNAL */
     reg [5:0] en_d;
     always @(posedge clk) begin
         dx <= $signed({1'b0, ax}) - $signed({1'b0, bx});
@@ -3629,16 +3886,16 @@ module fcc_dist_tree__units__2__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
         mx <= xa * xa;
         my <= ya * ya;
         mz <= za * za;
-        px <= {2'b0, mx};
+        px <= {2'b0, mx} + c;
         py <= px + {2'b0, my};
         pz <= py + {2'b0, mz};
         en_d <= {en_d[4:0], en_in};
-        hit <= en_d[5] & (pz < 36'd65536);
+        hit <= en_d[5] & pz[35];
     end
 endmodule // fcc_dist_tree__units__2__sq
 
 
-module fcc_dist_tree__units__20(clk,cx,cy,cz,nok,nx,ny,nz,hit);
+module fcc_dist_tree__units__20(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -3649,6 +3906,7 @@ module fcc_dist_tree__units__20(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     input wire  [15:0] nx;
     input wire  [15:0] ny;
     input wire  [15:0] nz;
+    input wire  [35:0] th_c;
     output reg  hit;
 
     // Stub signals
@@ -3660,6 +3918,7 @@ module fcc_dist_tree__units__20(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     reg  [15:0] sq$by;
     reg  [15:0] sq$bz;
     reg  sq$en_in;
+    reg  [35:0] sq$c;
     wire  sq$hit;
 
     // Sub module instances
@@ -3672,6 +3931,7 @@ module fcc_dist_tree__units__20(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         .by(sq$by),
         .bz(sq$bz),
         .en_in(sq$en_in),
+        .c(sq$c),
         .hit(sq$hit)
     );
 
@@ -3685,13 +3945,14 @@ module fcc_dist_tree__units__20(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         sq$by = ny;
         sq$bz = nz;
         sq$en_in = nok;
+        sq$c = th_c;
         hit = sq$hit;
     end
 
 endmodule // fcc_dist_tree__units__20
 
 
-module fcc_dist_tree__units__20__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
+module fcc_dist_tree__units__20__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -3702,6 +3963,7 @@ module fcc_dist_tree__units__20__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     input wire  [15:0] by;
     input wire  [15:0] bz;
     input wire  en_in;
+    input wire  [35:0] c;
     output reg  hit;
 
     // Update code (custom)
@@ -3711,7 +3973,11 @@ module fcc_dist_tree__units__20__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     reg signed [16:0] dy1, dz1, dz2;
     reg signed [16:0] xa, ya, za;
     reg signed [33:0] mx, my, mz;
-    reg [35:0] px, py, pz;
+    reg [35:0] px, py;
+    // Only the sign of the sum is used (the DSP's P register holds it all).
+    /* verilator lint_off UNUSEDSIGNAL */
+    reg [35:0] pz;
+    /* verilator lint_on UNUSEDSIGNAL */
     reg [5:0] en_d;
     always @(posedge clk) begin
         dx <= $signed({1'b0, ax}) - $signed({1'b0, bx});
@@ -3726,16 +3992,16 @@ module fcc_dist_tree__units__20__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
         mx <= xa * xa;
         my <= ya * ya;
         mz <= za * za;
-        px <= {2'b0, mx};
+        px <= {2'b0, mx} + c;
         py <= px + {2'b0, my};
         pz <= py + {2'b0, mz};
         en_d <= {en_d[4:0], en_in};
-        hit <= en_d[5] & (pz < 36'd65536);
+        hit <= en_d[5] & pz[35];
     end
 endmodule // fcc_dist_tree__units__20__sq
 
 
-module fcc_dist_tree__units__3(clk,cx,cy,cz,nok,nx,ny,nz,hit);
+module fcc_dist_tree__units__3(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -3746,6 +4012,7 @@ module fcc_dist_tree__units__3(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     input wire  [15:0] nx;
     input wire  [15:0] ny;
     input wire  [15:0] nz;
+    input wire  [35:0] th_c;
     output reg  hit;
 
     // Stub signals
@@ -3757,6 +4024,7 @@ module fcc_dist_tree__units__3(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     reg  [15:0] sq$by;
     reg  [15:0] sq$bz;
     reg  sq$en_in;
+    reg  [35:0] sq$c;
     wire  sq$hit;
 
     // Sub module instances
@@ -3769,6 +4037,7 @@ module fcc_dist_tree__units__3(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         .by(sq$by),
         .bz(sq$bz),
         .en_in(sq$en_in),
+        .c(sq$c),
         .hit(sq$hit)
     );
 
@@ -3782,13 +4051,14 @@ module fcc_dist_tree__units__3(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         sq$by = ny;
         sq$bz = nz;
         sq$en_in = nok;
+        sq$c = th_c;
         hit = sq$hit;
     end
 
 endmodule // fcc_dist_tree__units__3
 
 
-module fcc_dist_tree__units__3__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
+module fcc_dist_tree__units__3__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -3799,6 +4069,7 @@ module fcc_dist_tree__units__3__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     input wire  [15:0] by;
     input wire  [15:0] bz;
     input wire  en_in;
+    input wire  [35:0] c;
     output reg  hit;
 
     // Update code (custom)
@@ -3808,7 +4079,11 @@ module fcc_dist_tree__units__3__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     reg signed [16:0] dy1, dz1, dz2;
     reg signed [16:0] xa, ya, za;
     reg signed [33:0] mx, my, mz;
-    reg [35:0] px, py, pz;
+    reg [35:0] px, py;
+    // Only the sign of the sum is used (the DSP's P register holds it all).
+    /* verilator lint_off UNUSEDSIGNAL */
+    reg [35:0] pz;
+    /* verilator lint_on UNUSEDSIGNAL */
     reg [5:0] en_d;
     always @(posedge clk) begin
         dx <= $signed({1'b0, ax}) - $signed({1'b0, bx});
@@ -3823,16 +4098,16 @@ module fcc_dist_tree__units__3__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
         mx <= xa * xa;
         my <= ya * ya;
         mz <= za * za;
-        px <= {2'b0, mx};
+        px <= {2'b0, mx} + c;
         py <= px + {2'b0, my};
         pz <= py + {2'b0, mz};
         en_d <= {en_d[4:0], en_in};
-        hit <= en_d[5] & (pz < 36'd65536);
+        hit <= en_d[5] & pz[35];
     end
 endmodule // fcc_dist_tree__units__3__sq
 
 
-module fcc_dist_tree__units__4(clk,cx,cy,cz,nok,nx,ny,nz,hit);
+module fcc_dist_tree__units__4(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -3843,6 +4118,7 @@ module fcc_dist_tree__units__4(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     input wire  [15:0] nx;
     input wire  [15:0] ny;
     input wire  [15:0] nz;
+    input wire  [35:0] th_c;
     output reg  hit;
 
     // Stub signals
@@ -3854,6 +4130,7 @@ module fcc_dist_tree__units__4(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     reg  [15:0] sq$by;
     reg  [15:0] sq$bz;
     reg  sq$en_in;
+    reg  [35:0] sq$c;
     wire  sq$hit;
 
     // Sub module instances
@@ -3866,6 +4143,7 @@ module fcc_dist_tree__units__4(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         .by(sq$by),
         .bz(sq$bz),
         .en_in(sq$en_in),
+        .c(sq$c),
         .hit(sq$hit)
     );
 
@@ -3879,13 +4157,14 @@ module fcc_dist_tree__units__4(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         sq$by = ny;
         sq$bz = nz;
         sq$en_in = nok;
+        sq$c = th_c;
         hit = sq$hit;
     end
 
 endmodule // fcc_dist_tree__units__4
 
 
-module fcc_dist_tree__units__4__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
+module fcc_dist_tree__units__4__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -3896,6 +4175,7 @@ module fcc_dist_tree__units__4__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     input wire  [15:0] by;
     input wire  [15:0] bz;
     input wire  en_in;
+    input wire  [35:0] c;
     output reg  hit;
 
     // Update code (custom)
@@ -3905,7 +4185,11 @@ module fcc_dist_tree__units__4__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     reg signed [16:0] dy1, dz1, dz2;
     reg signed [16:0] xa, ya, za;
     reg signed [33:0] mx, my, mz;
-    reg [35:0] px, py, pz;
+    reg [35:0] px, py;
+    // Only the sign of the sum is used (the DSP's P register holds it all).
+    /* verilator lint_off UNUSEDSIGNAL */
+    reg [35:0] pz;
+    /* verilator lint_on UNUSEDSIGNAL */
     reg [5:0] en_d;
     always @(posedge clk) begin
         dx <= $signed({1'b0, ax}) - $signed({1'b0, bx});
@@ -3920,16 +4204,16 @@ module fcc_dist_tree__units__4__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
         mx <= xa * xa;
         my <= ya * ya;
         mz <= za * za;
-        px <= {2'b0, mx};
+        px <= {2'b0, mx} + c;
         py <= px + {2'b0, my};
         pz <= py + {2'b0, mz};
         en_d <= {en_d[4:0], en_in};
-        hit <= en_d[5] & (pz < 36'd65536);
+        hit <= en_d[5] & pz[35];
     end
 endmodule // fcc_dist_tree__units__4__sq
 
 
-module fcc_dist_tree__units__5(clk,cx,cy,cz,nok,nx,ny,nz,hit);
+module fcc_dist_tree__units__5(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -3940,6 +4224,7 @@ module fcc_dist_tree__units__5(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     input wire  [15:0] nx;
     input wire  [15:0] ny;
     input wire  [15:0] nz;
+    input wire  [35:0] th_c;
     output reg  hit;
 
     // Stub signals
@@ -3951,6 +4236,7 @@ module fcc_dist_tree__units__5(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     reg  [15:0] sq$by;
     reg  [15:0] sq$bz;
     reg  sq$en_in;
+    reg  [35:0] sq$c;
     wire  sq$hit;
 
     // Sub module instances
@@ -3963,6 +4249,7 @@ module fcc_dist_tree__units__5(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         .by(sq$by),
         .bz(sq$bz),
         .en_in(sq$en_in),
+        .c(sq$c),
         .hit(sq$hit)
     );
 
@@ -3976,13 +4263,14 @@ module fcc_dist_tree__units__5(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         sq$by = ny;
         sq$bz = nz;
         sq$en_in = nok;
+        sq$c = th_c;
         hit = sq$hit;
     end
 
 endmodule // fcc_dist_tree__units__5
 
 
-module fcc_dist_tree__units__5__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
+module fcc_dist_tree__units__5__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -3993,6 +4281,7 @@ module fcc_dist_tree__units__5__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     input wire  [15:0] by;
     input wire  [15:0] bz;
     input wire  en_in;
+    input wire  [35:0] c;
     output reg  hit;
 
     // Update code (custom)
@@ -4002,7 +4291,11 @@ module fcc_dist_tree__units__5__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     reg signed [16:0] dy1, dz1, dz2;
     reg signed [16:0] xa, ya, za;
     reg signed [33:0] mx, my, mz;
-    reg [35:0] px, py, pz;
+    reg [35:0] px, py;
+    // Only the sign of the sum is used (the DSP's P register holds it all).
+    /* verilator lint_off UNUSEDSIGNAL */
+    reg [35:0] pz;
+    /* verilator lint_on UNUSEDSIGNAL */
     reg [5:0] en_d;
     always @(posedge clk) begin
         dx <= $signed({1'b0, ax}) - $signed({1'b0, bx});
@@ -4017,16 +4310,16 @@ module fcc_dist_tree__units__5__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
         mx <= xa * xa;
         my <= ya * ya;
         mz <= za * za;
-        px <= {2'b0, mx};
+        px <= {2'b0, mx} + c;
         py <= px + {2'b0, my};
         pz <= py + {2'b0, mz};
         en_d <= {en_d[4:0], en_in};
-        hit <= en_d[5] & (pz < 36'd65536);
+        hit <= en_d[5] & pz[35];
     end
 endmodule // fcc_dist_tree__units__5__sq
 
 
-module fcc_dist_tree__units__6(clk,cx,cy,cz,nok,nx,ny,nz,hit);
+module fcc_dist_tree__units__6(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -4037,6 +4330,7 @@ module fcc_dist_tree__units__6(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     input wire  [15:0] nx;
     input wire  [15:0] ny;
     input wire  [15:0] nz;
+    input wire  [35:0] th_c;
     output reg  hit;
 
     // Stub signals
@@ -4048,6 +4342,7 @@ module fcc_dist_tree__units__6(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     reg  [15:0] sq$by;
     reg  [15:0] sq$bz;
     reg  sq$en_in;
+    reg  [35:0] sq$c;
     wire  sq$hit;
 
     // Sub module instances
@@ -4060,6 +4355,7 @@ module fcc_dist_tree__units__6(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         .by(sq$by),
         .bz(sq$bz),
         .en_in(sq$en_in),
+        .c(sq$c),
         .hit(sq$hit)
     );
 
@@ -4073,13 +4369,14 @@ module fcc_dist_tree__units__6(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         sq$by = ny;
         sq$bz = nz;
         sq$en_in = nok;
+        sq$c = th_c;
         hit = sq$hit;
     end
 
 endmodule // fcc_dist_tree__units__6
 
 
-module fcc_dist_tree__units__6__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
+module fcc_dist_tree__units__6__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -4090,6 +4387,7 @@ module fcc_dist_tree__units__6__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     input wire  [15:0] by;
     input wire  [15:0] bz;
     input wire  en_in;
+    input wire  [35:0] c;
     output reg  hit;
 
     // Update code (custom)
@@ -4099,7 +4397,11 @@ module fcc_dist_tree__units__6__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     reg signed [16:0] dy1, dz1, dz2;
     reg signed [16:0] xa, ya, za;
     reg signed [33:0] mx, my, mz;
-    reg [35:0] px, py, pz;
+    reg [35:0] px, py;
+    // Only the sign of the sum is used (the DSP's P register holds it all).
+    /* verilator lint_off UNUSEDSIGNAL */
+    reg [35:0] pz;
+    /* verilator lint_on UNUSEDSIGNAL */
     reg [5:0] en_d;
     always @(posedge clk) begin
         dx <= $signed({1'b0, ax}) - $signed({1'b0, bx});
@@ -4114,16 +4416,16 @@ module fcc_dist_tree__units__6__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
         mx <= xa * xa;
         my <= ya * ya;
         mz <= za * za;
-        px <= {2'b0, mx};
+        px <= {2'b0, mx} + c;
         py <= px + {2'b0, my};
         pz <= py + {2'b0, mz};
         en_d <= {en_d[4:0], en_in};
-        hit <= en_d[5] & (pz < 36'd65536);
+        hit <= en_d[5] & pz[35];
     end
 endmodule // fcc_dist_tree__units__6__sq
 
 
-module fcc_dist_tree__units__7(clk,cx,cy,cz,nok,nx,ny,nz,hit);
+module fcc_dist_tree__units__7(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -4134,6 +4436,7 @@ module fcc_dist_tree__units__7(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     input wire  [15:0] nx;
     input wire  [15:0] ny;
     input wire  [15:0] nz;
+    input wire  [35:0] th_c;
     output reg  hit;
 
     // Stub signals
@@ -4145,6 +4448,7 @@ module fcc_dist_tree__units__7(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     reg  [15:0] sq$by;
     reg  [15:0] sq$bz;
     reg  sq$en_in;
+    reg  [35:0] sq$c;
     wire  sq$hit;
 
     // Sub module instances
@@ -4157,6 +4461,7 @@ module fcc_dist_tree__units__7(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         .by(sq$by),
         .bz(sq$bz),
         .en_in(sq$en_in),
+        .c(sq$c),
         .hit(sq$hit)
     );
 
@@ -4170,13 +4475,14 @@ module fcc_dist_tree__units__7(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         sq$by = ny;
         sq$bz = nz;
         sq$en_in = nok;
+        sq$c = th_c;
         hit = sq$hit;
     end
 
 endmodule // fcc_dist_tree__units__7
 
 
-module fcc_dist_tree__units__7__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
+module fcc_dist_tree__units__7__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -4187,6 +4493,7 @@ module fcc_dist_tree__units__7__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     input wire  [15:0] by;
     input wire  [15:0] bz;
     input wire  en_in;
+    input wire  [35:0] c;
     output reg  hit;
 
     // Update code (custom)
@@ -4196,7 +4503,11 @@ module fcc_dist_tree__units__7__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     reg signed [16:0] dy1, dz1, dz2;
     reg signed [16:0] xa, ya, za;
     reg signed [33:0] mx, my, mz;
-    reg [35:0] px, py, pz;
+    reg [35:0] px, py;
+    // Only the sign of the sum is used (the DSP's P register holds it all).
+    /* verilator lint_off UNUSEDSIGNAL */
+    reg [35:0] pz;
+    /* verilator lint_on UNUSEDSIGNAL */
     reg [5:0] en_d;
     always @(posedge clk) begin
         dx <= $signed({1'b0, ax}) - $signed({1'b0, bx});
@@ -4211,16 +4522,16 @@ module fcc_dist_tree__units__7__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
         mx <= xa * xa;
         my <= ya * ya;
         mz <= za * za;
-        px <= {2'b0, mx};
+        px <= {2'b0, mx} + c;
         py <= px + {2'b0, my};
         pz <= py + {2'b0, mz};
         en_d <= {en_d[4:0], en_in};
-        hit <= en_d[5] & (pz < 36'd65536);
+        hit <= en_d[5] & pz[35];
     end
 endmodule // fcc_dist_tree__units__7__sq
 
 
-module fcc_dist_tree__units__8(clk,cx,cy,cz,nok,nx,ny,nz,hit);
+module fcc_dist_tree__units__8(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -4231,6 +4542,7 @@ module fcc_dist_tree__units__8(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     input wire  [15:0] nx;
     input wire  [15:0] ny;
     input wire  [15:0] nz;
+    input wire  [35:0] th_c;
     output reg  hit;
 
     // Stub signals
@@ -4242,6 +4554,7 @@ module fcc_dist_tree__units__8(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     reg  [15:0] sq$by;
     reg  [15:0] sq$bz;
     reg  sq$en_in;
+    reg  [35:0] sq$c;
     wire  sq$hit;
 
     // Sub module instances
@@ -4254,6 +4567,7 @@ module fcc_dist_tree__units__8(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         .by(sq$by),
         .bz(sq$bz),
         .en_in(sq$en_in),
+        .c(sq$c),
         .hit(sq$hit)
     );
 
@@ -4267,13 +4581,14 @@ module fcc_dist_tree__units__8(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         sq$by = ny;
         sq$bz = nz;
         sq$en_in = nok;
+        sq$c = th_c;
         hit = sq$hit;
     end
 
 endmodule // fcc_dist_tree__units__8
 
 
-module fcc_dist_tree__units__8__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
+module fcc_dist_tree__units__8__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -4284,6 +4599,7 @@ module fcc_dist_tree__units__8__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     input wire  [15:0] by;
     input wire  [15:0] bz;
     input wire  en_in;
+    input wire  [35:0] c;
     output reg  hit;
 
     // Update code (custom)
@@ -4293,7 +4609,11 @@ module fcc_dist_tree__units__8__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     reg signed [16:0] dy1, dz1, dz2;
     reg signed [16:0] xa, ya, za;
     reg signed [33:0] mx, my, mz;
-    reg [35:0] px, py, pz;
+    reg [35:0] px, py;
+    // Only the sign of the sum is used (the DSP's P register holds it all).
+    /* verilator lint_off UNUSEDSIGNAL */
+    reg [35:0] pz;
+    /* verilator lint_on UNUSEDSIGNAL */
     reg [5:0] en_d;
     always @(posedge clk) begin
         dx <= $signed({1'b0, ax}) - $signed({1'b0, bx});
@@ -4308,16 +4628,16 @@ module fcc_dist_tree__units__8__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
         mx <= xa * xa;
         my <= ya * ya;
         mz <= za * za;
-        px <= {2'b0, mx};
+        px <= {2'b0, mx} + c;
         py <= px + {2'b0, my};
         pz <= py + {2'b0, mz};
         en_d <= {en_d[4:0], en_in};
-        hit <= en_d[5] & (pz < 36'd65536);
+        hit <= en_d[5] & pz[35];
     end
 endmodule // fcc_dist_tree__units__8__sq
 
 
-module fcc_dist_tree__units__9(clk,cx,cy,cz,nok,nx,ny,nz,hit);
+module fcc_dist_tree__units__9(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -4328,6 +4648,7 @@ module fcc_dist_tree__units__9(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     input wire  [15:0] nx;
     input wire  [15:0] ny;
     input wire  [15:0] nz;
+    input wire  [35:0] th_c;
     output reg  hit;
 
     // Stub signals
@@ -4339,6 +4660,7 @@ module fcc_dist_tree__units__9(clk,cx,cy,cz,nok,nx,ny,nz,hit);
     reg  [15:0] sq$by;
     reg  [15:0] sq$bz;
     reg  sq$en_in;
+    reg  [35:0] sq$c;
     wire  sq$hit;
 
     // Sub module instances
@@ -4351,6 +4673,7 @@ module fcc_dist_tree__units__9(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         .by(sq$by),
         .bz(sq$bz),
         .en_in(sq$en_in),
+        .c(sq$c),
         .hit(sq$hit)
     );
 
@@ -4364,13 +4687,14 @@ module fcc_dist_tree__units__9(clk,cx,cy,cz,nok,nx,ny,nz,hit);
         sq$by = ny;
         sq$bz = nz;
         sq$en_in = nok;
+        sq$c = th_c;
         hit = sq$hit;
     end
 
 endmodule // fcc_dist_tree__units__9
 
 
-module fcc_dist_tree__units__9__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
+module fcc_dist_tree__units__9__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -4381,6 +4705,7 @@ module fcc_dist_tree__units__9__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     input wire  [15:0] by;
     input wire  [15:0] bz;
     input wire  en_in;
+    input wire  [35:0] c;
     output reg  hit;
 
     // Update code (custom)
@@ -4390,7 +4715,11 @@ module fcc_dist_tree__units__9__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
     reg signed [16:0] dy1, dz1, dz2;
     reg signed [16:0] xa, ya, za;
     reg signed [33:0] mx, my, mz;
-    reg [35:0] px, py, pz;
+    reg [35:0] px, py;
+    // Only the sign of the sum is used (the DSP's P register holds it all).
+    /* verilator lint_off UNUSEDSIGNAL */
+    reg [35:0] pz;
+    /* verilator lint_on UNUSEDSIGNAL */
     reg [5:0] en_d;
     always @(posedge clk) begin
         dx <= $signed({1'b0, ax}) - $signed({1'b0, bx});
@@ -4405,11 +4734,11 @@ module fcc_dist_tree__units__9__sq(clk,ax,ay,az,bx,by,bz,en_in,hit);
         mx <= xa * xa;
         my <= ya * ya;
         mz <= za * za;
-        px <= {2'b0, mx};
+        px <= {2'b0, mx} + c;
         py <= px + {2'b0, my};
         pz <= py + {2'b0, mz};
         en_d <= {en_d[4:0], en_in};
-        hit <= en_d[5] & (pz < 36'd65536);
+        hit <= en_d[5] & pz[35];
     end
 endmodule // fcc_dist_tree__units__9__sq
 
@@ -4490,12 +4819,14 @@ module fcc_top__in_done(d,q,clock);
 endmodule // fcc_top__in_done
 
 
-module fcc_intra(clk,rst,pix,out,provisional,overflow,unlabelled);
+module fcc_intra(clk,rst,pix,last_col,th_h_c,out,provisional,overflow,unlabelled);
 
     // Module arguments
     input wire  clk;
     input wire  rst;
     input wire  [73:0] pix;
+    input wire  [11:0] last_col;
+    input wire  [35:0] th_h_c;
     output reg  [133:0] out;
     output reg  [16:0] provisional;
     output reg  overflow;
@@ -4509,7 +4840,7 @@ module fcc_intra(clk,rst,pix,out,provisional,overflow,unlabelled);
     localparam  max20 = 20'h7fff;
     localparam  max17 = 17'b111111111111111;
     localparam  half = 12'h3;
-    localparam  wrap_col = 12'h7fd;
+    localparam  half_m1 = 12'h2;
     localparam  st_empty = 2'b0;
     localparam  st_cont = 2'b1;
     localparam  st_new = 2'b10;
@@ -4545,6 +4876,7 @@ module fcc_intra(clk,rst,pix,out,provisional,overflow,unlabelled);
     reg  [15:0] near$by;
     reg  [15:0] near$bz;
     reg  near$en_in;
+    reg  [35:0] near$c;
     wire  near$hit;
     reg  ring$clk;
     reg  [15:0] ring$ax;
@@ -4554,6 +4886,7 @@ module fcc_intra(clk,rst,pix,out,provisional,overflow,unlabelled);
     reg  [15:0] ring$by;
     reg  [15:0] ring$bz;
     reg  ring$en_in;
+    reg  [35:0] ring$c;
     wire  ring$hit;
     reg  [73:0] pd$0$d;
     wire  [73:0] pd$0$q;
@@ -4663,6 +4996,9 @@ module fcc_intra(clk,rst,pix,out,provisional,overflow,unlabelled);
     reg  [11:0] rdcol9$d;
     wire  [11:0] rdcol9$q;
     reg  rdcol9$clock;
+    reg  [11:0] wrap_col$d;
+    wire  [11:0] wrap_col$q;
+    reg  wrap_col$clock;
     reg  [133:0] out_q$d;
     wire  [133:0] out_q$q;
     reg  out_q$clock;
@@ -4737,6 +5073,7 @@ module fcc_intra(clk,rst,pix,out,provisional,overflow,unlabelled);
         .by(near$by),
         .bz(near$bz),
         .en_in(near$en_in),
+        .c(near$c),
         .hit(near$hit)
     );
     fcc_intra__ring ring(
@@ -4748,6 +5085,7 @@ module fcc_intra(clk,rst,pix,out,provisional,overflow,unlabelled);
         .by(ring$by),
         .bz(ring$bz),
         .en_in(ring$en_in),
+        .c(ring$c),
         .hit(ring$hit)
     );
     fcc_intra__pd__0 pd$0(
@@ -4930,6 +5268,11 @@ module fcc_intra(clk,rst,pix,out,provisional,overflow,unlabelled);
         .q(rdcol9$q),
         .clock(rdcol9$clock)
     );
+    fcc_intra__wrap_col wrap_col(
+        .d(wrap_col$d),
+        .q(wrap_col$q),
+        .clock(wrap_col$clock)
+    );
     fcc_intra__out_q out_q(
         .d(out_q$d),
         .q(out_q$q),
@@ -4987,6 +5330,7 @@ module fcc_intra(clk,rst,pix,out,provisional,overflow,unlabelled);
         fl9$clock = clk;
         cur9$clock = clk;
         rdcol9$clock = clk;
+        wrap_col$clock = clk;
         out_q$clock = clk;
         unl$clock = clk;
         rm1$clock = clk;
@@ -5021,6 +5365,7 @@ module fcc_intra(clk,rst,pix,out,provisional,overflow,unlabelled);
         fl9$d = fl9$q;
         cur9$d = cur9$q;
         rdcol9$d = rdcol9$q;
+        wrap_col$d = wrap_col$q;
         out_q$d = out_q$q;
         unl$d = unl$q;
         rm1$d = rm1$q;
@@ -5050,6 +5395,8 @@ module fcc_intra(clk,rst,pix,out,provisional,overflow,unlabelled);
         near$by = prev_y$q;
         near$bz = prev_z$q;
         near$en_in = pix[0:0] & pix[1:1] & hp_eff;
+        near$c = th_h_c;
+        ring$c = th_h_c;
         ring$clk = clk;
         ring$en_in = 1'b1;
         ring$ax = first_x$q;
@@ -5142,9 +5489,10 @@ module fcc_intra(clk,rst,pix,out,provisional,overflow,unlabelled);
         fl9$d = fl8$q[15:0];
         cur9$d = cur8$q[15:0];
         rdcol9$d = p8$q[69:58] + half;
-        if (p8$q[69:58] >= wrap_col) begin
-            rdcol9$d = p8$q[69:58] - wrap_col;
+        if (p8$q[69:58] >= wrap_col$q) begin
+            rdcol9$d = p8$q[69:58] - wrap_col$q;
         end
+        wrap_col$d = last_col - half_m1;
         lok = p9$q[0:0] & p9$q[1:1] & labok9$q;
         out_q$d[0:0] = p9$q[0:0];
         out_q$d[1:1] = lok;
@@ -5727,7 +6075,7 @@ module fcc_intra__ne9(d,q,clock);
 endmodule // fcc_intra__ne9
 
 
-module fcc_intra__near(clk,ax,ay,az,bx,by,bz,en_in,hit);
+module fcc_intra__near(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -5738,6 +6086,7 @@ module fcc_intra__near(clk,ax,ay,az,bx,by,bz,en_in,hit);
     input wire  [15:0] by;
     input wire  [15:0] bz;
     input wire  en_in;
+    input wire  [35:0] c;
     output reg  hit;
 
     // Update code (custom)
@@ -5747,7 +6096,11 @@ module fcc_intra__near(clk,ax,ay,az,bx,by,bz,en_in,hit);
     reg signed [16:0] dy1, dz1, dz2;
     reg signed [16:0] xa, ya, za;
     reg signed [33:0] mx, my, mz;
-    reg [35:0] px, py, pz;
+    reg [35:0] px, py;
+    // Only the sign of the sum is used (the DSP's P register holds it all).
+    /* verilator lint_off UNUSEDSIGNAL */
+    reg [35:0] pz;
+    /* verilator lint_on UNUSEDSIGNAL */
     reg [5:0] en_d;
     always @(posedge clk) begin
         dx <= $signed({1'b0, ax}) - $signed({1'b0, bx});
@@ -5762,11 +6115,11 @@ module fcc_intra__near(clk,ax,ay,az,bx,by,bz,en_in,hit);
         mx <= xa * xa;
         my <= ya * ya;
         mz <= za * za;
-        px <= {2'b0, mx};
+        px <= {2'b0, mx} + c;
         py <= px + {2'b0, my};
         pz <= py + {2'b0, mz};
         en_d <= {en_d[4:0], en_in};
-        hit <= en_d[5] & (pz <= 36'd16384);
+        hit <= en_d[5] & pz[35];
     end
 endmodule // fcc_intra__near
 
@@ -6094,7 +6447,7 @@ module fcc_intra__rdcol9(d,q,clock);
 endmodule // fcc_intra__rdcol9
 
 
-module fcc_intra__ring(clk,ax,ay,az,bx,by,bz,en_in,hit);
+module fcc_intra__ring(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -6105,6 +6458,7 @@ module fcc_intra__ring(clk,ax,ay,az,bx,by,bz,en_in,hit);
     input wire  [15:0] by;
     input wire  [15:0] bz;
     input wire  en_in;
+    input wire  [35:0] c;
     output reg  hit;
 
     // Update code (custom)
@@ -6114,7 +6468,11 @@ module fcc_intra__ring(clk,ax,ay,az,bx,by,bz,en_in,hit);
     reg signed [16:0] dy1, dz1, dz2;
     reg signed [16:0] xa, ya, za;
     reg signed [33:0] mx, my, mz;
-    reg [35:0] px, py, pz;
+    reg [35:0] px, py;
+    // Only the sign of the sum is used (the DSP's P register holds it all).
+    /* verilator lint_off UNUSEDSIGNAL */
+    reg [35:0] pz;
+    /* verilator lint_on UNUSEDSIGNAL */
     reg [5:0] en_d;
     always @(posedge clk) begin
         dx <= $signed({1'b0, ax}) - $signed({1'b0, bx});
@@ -6129,11 +6487,11 @@ module fcc_intra__ring(clk,ax,ay,az,bx,by,bz,en_in,hit);
         mx <= xa * xa;
         my <= ya * ya;
         mz <= za * za;
-        px <= {2'b0, mx};
+        px <= {2'b0, mx} + c;
         py <= px + {2'b0, my};
         pz <= py + {2'b0, mz};
         en_d <= {en_d[4:0], en_in};
-        hit <= en_d[5] & (pz <= 36'd16384);
+        hit <= en_d[5] & pz[35];
     end
 endmodule // fcc_intra__ring
 
@@ -6214,6 +6572,25 @@ module fcc_intra__unl(d,q,clock);
 endmodule // fcc_intra__unl
 
 
+module fcc_intra__wrap_col(d,q,clock);
+
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__wrap_col
+
+
 module fcc_label_update(clk,rst,wr_valid,wr_state,wr_last,rb_start,fv,fval,gear_used,m_axis_tdata,m_axis_tkeep,m_axis_tvalid,m_axis_tlast,m_axis_tready,rb_done,gear_stalls);
 
     // Module arguments
@@ -6267,8 +6644,8 @@ module fcc_label_update(clk,rst,wr_valid,wr_state,wr_last,rb_start,fv,fval,gear_
     localparam  k_of$1 = 3'b11;
     localparam  k_of$2 = 3'b100;
     localparam  k_of$3 = 3'b101;
-    localparam  beats_m1 = 20'h7fff;
-    localparam  last_n = 3'b100;
+    localparam  lpb_log = 2'b10;
+    localparam  lpb_m1 = 2'b11;
     localparam  one20 = 20'h1;
     localparam  lpb20 = 20'h4;
     localparam  lpb3 = 3'b100;
@@ -6315,6 +6692,15 @@ module fcc_label_update(clk,rst,wr_valid,wr_state,wr_last,rb_start,fv,fval,gear_
     reg  [16:0] waddr$d;
     wire  [16:0] waddr$q;
     reg  waddr$clock;
+    reg  [19:0] wcnt$d;
+    wire  [19:0] wcnt$q;
+    reg  wcnt$clock;
+    reg  [19:0] beats_m1$d;
+    wire  [19:0] beats_m1$q;
+    reg  beats_m1$clock;
+    reg  [2:0] last_n$d;
+    wire  [2:0] last_n$q;
+    reg  last_n$clock;
     reg  active$d;
     wire  active$q;
     reg  active$clock;
@@ -6481,6 +6867,7 @@ module fcc_label_update(clk,rst,wr_valid,wr_state,wr_last,rb_start,fv,fval,gear_
     reg  [2:0] nsrc$2;
     reg  [2:0] nsrc$3;
     reg  [15:0] runv;
+    reg  [1:0] wrem;
 
     // Sub module instances
     fcc_label_update__fb fb(
@@ -6516,6 +6903,21 @@ module fcc_label_update(clk,rst,wr_valid,wr_state,wr_last,rb_start,fv,fval,gear_
         .d(waddr$d),
         .q(waddr$q),
         .clock(waddr$clock)
+    );
+    fcc_label_update__wcnt wcnt(
+        .d(wcnt$d),
+        .q(wcnt$q),
+        .clock(wcnt$clock)
+    );
+    fcc_label_update__beats_m1 beats_m1(
+        .d(beats_m1$d),
+        .q(beats_m1$q),
+        .clock(beats_m1$clock)
+    );
+    fcc_label_update__last_n last_n(
+        .d(last_n$d),
+        .q(last_n$q),
+        .clock(last_n$clock)
     );
     fcc_label_update__active active(
         .d(active$d),
@@ -6725,6 +7127,9 @@ module fcc_label_update(clk,rst,wr_valid,wr_state,wr_last,rb_start,fv,fval,gear_
         ws2$clock = clk;
         wsub$clock = clk;
         waddr$clock = clk;
+        wcnt$clock = clk;
+        beats_m1$clock = clk;
+        last_n$clock = clk;
         active$clock = clk;
         rpix$clock = clk;
         beats$clock = clk;
@@ -6754,6 +7159,9 @@ module fcc_label_update(clk,rst,wr_valid,wr_state,wr_last,rb_start,fv,fval,gear_
         ws2$d = ws2$q;
         wsub$d = wsub$q;
         waddr$d = waddr$q;
+        wcnt$d = wcnt$q;
+        beats_m1$d = beats_m1$q;
+        last_n$d = last_n$q;
         active$d = active$q;
         rpix$d = rpix$q;
         beats$d = beats$q;
@@ -6810,6 +7218,7 @@ module fcc_label_update(clk,rst,wr_valid,wr_state,wr_last,rb_start,fv,fval,gear_
         g$6$d = g$6$q;
         g$7$clock = clk;
         g$7$d = g$7$q;
+        wrem = wcnt$q[1:0] & lpb_m1;
         fb$clk = clk;
         fb$write_en = 1'b0;
         fb$write_addr = waddr$q;
@@ -6841,9 +7250,22 @@ module fcc_label_update(clk,rst,wr_valid,wr_state,wr_last,rb_start,fv,fval,gear_
                 fb$write_en = 1'b1;
                 waddr$d = waddr$q + one17;
             end
+            wcnt$d = wcnt$q + one20;
             if (wr_last) begin
                 wsub$d = b2_0;
                 waddr$d = zero17;
+                wcnt$d = zero20;
+                beats_m1$d = wcnt$q >> lpb_log;
+                last_n$d = n_of$1;
+                if (wrem == b2_1) begin
+                    last_n$d = n_of$2;
+                end
+                if (wrem == b2_2) begin
+                    last_n$d = n_of$3;
+                end
+                if (wrem == b2_3) begin
+                    last_n$d = n_of$4;
+                end
             end
         end
         ofree = ~o_valid$q | m_axis_tready;
@@ -7221,7 +7643,7 @@ module fcc_label_update(clk,rst,wr_valid,wr_state,wr_last,rb_start,fv,fval,gear_
             r1_n$d = lpb3;
             r1_last$d = 1'b0;
             if (lastb$q) begin
-                r1_n$d = last_n;
+                r1_n$d = last_n$q;
                 r1_last$d = 1'b1;
                 active$d = 1'b0;
             end
@@ -7435,8 +7857,8 @@ module fcc_label_update(clk,rst,wr_valid,wr_state,wr_last,rb_start,fv,fval,gear_
         if (rb_start) begin
             active$d = 1'b1;
             rpix$d = zero20;
-            beats$d = beats_m1;
-            lastb$d = beats_m1 == zero20;
+            beats$d = beats_m1$q;
+            lastb$d = beats_m1$q == zero20;
             outst$d = zero3;
             r1v$d = 1'b0;
             r2v$d = 1'b0;
@@ -7459,6 +7881,7 @@ module fcc_label_update(clk,rst,wr_valid,wr_state,wr_last,rb_start,fv,fval,gear_
             gn$d = zero4;
             wsub$d = b2_0;
             waddr$d = zero17;
+            wcnt$d = zero20;
         end
         m_axis_tdata = o_data$q;
         m_axis_tkeep = o_keep$q;
@@ -7507,6 +7930,25 @@ module fcc_label_update__beats(d,q,clock);
     end
 
 endmodule // fcc_label_update__beats
+
+
+module fcc_label_update__beats_m1(d,q,clock);
+
+    // Module arguments
+    input wire  [19:0] d;
+    output reg  [19:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 20'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__beats_m1
 
 
 module fcc_label_update__cur_run(d,q,clock);
@@ -7862,6 +8304,25 @@ module fcc_label_update__labs__3(d,q,clock);
     end
 
 endmodule // fcc_label_update__labs__3
+
+
+module fcc_label_update__last_n(d,q,clock);
+
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__last_n
 
 
 module fcc_label_update__lastb(d,q,clock);
@@ -8282,6 +8743,25 @@ module fcc_label_update__waddr(d,q,clock);
 endmodule // fcc_label_update__waddr
 
 
+module fcc_label_update__wcnt(d,q,clock);
+
+    // Module arguments
+    input wire  [19:0] d;
+    output reg  [19:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 20'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__wcnt
+
+
 module fcc_label_update__ws0(d,q,clock);
 
     // Module arguments
@@ -8356,6 +8836,25 @@ module fcc_label_update__wsub(d,q,clock);
     end
 
 endmodule // fcc_label_update__wsub
+
+
+module fcc_top__last_col(d,q,clock);
+
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__last_col
 
 
 module fcc_top__last_seen(d,q,clock);
@@ -10281,6 +10780,25 @@ module fcc_merge_table__x1(d,q,clock);
 endmodule // fcc_merge_table__x1
 
 
+module fcc_top__one_row(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__one_row
+
+
 module fcc_top__pad(d,q,clock);
 
     // Module arguments
@@ -10319,7 +10837,45 @@ module fcc_top__pad_go(d,q,clock);
 endmodule // fcc_top__pad_go
 
 
-module fcc_regs(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata,s_axil_wstrb,s_axil_wvalid,s_axil_wready,s_axil_bresp,s_axil_bvalid,s_axil_bready,s_axil_araddr,s_axil_arvalid,s_axil_arready,s_axil_rdata,s_axil_rresp,s_axil_rvalid,s_axil_rready,frame_end,idle,clusters,provisional,overflow,unlabelled,frame_error,joins,gear_stalls,core_rst,irq,frame_done,st_clusters,st_provisional,st_overflow,st_unlabelled,st_frame_error,st_joins,st_gear_stalls);
+module fcc_top__pen_col(d,q,clock);
+
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__pen_col
+
+
+module fcc_top__pen_row(d,q,clock);
+
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__pen_row
+
+
+module fcc_regs(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata,s_axil_wstrb,s_axil_wvalid,s_axil_wready,s_axil_bresp,s_axil_bvalid,s_axil_bready,s_axil_araddr,s_axil_arvalid,s_axil_arready,s_axil_rdata,s_axil_rresp,s_axil_rvalid,s_axil_rready,frame_end,idle,clusters,provisional,overflow,unlabelled,frame_error,joins,gear_stalls,core_rst,irq,frame_done,st_clusters,st_provisional,st_overflow,st_unlabelled,st_frame_error,st_joins,st_gear_stalls,run_k,run_th_h_c,run_th_v_c,run_rows,run_cols);
 
     // Module arguments
     input wire  clk;
@@ -10360,10 +10916,44 @@ module fcc_regs(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata
     output reg  st_frame_error;
     output reg  [23:0] st_joins;
     output reg  [23:0] st_gear_stalls;
+    output reg  [3:0] run_k;
+    output reg  [35:0] run_th_h_c;
+    output reg  [35:0] run_th_v_c;
+    output reg  [7:0] run_rows;
+    output reg  [12:0] run_cols;
 
     // Constant declarations
     localparam  a_control = 10'b10000;
     localparam  a_status = 10'b10001;
+    localparam  a_error = 10'b10010;
+    localparam  a_run_k = 10'b100000;
+    localparam  a_run_thh = 10'b100001;
+    localparam  a_run_thv = 10'b100010;
+    localparam  a_run_rows = 10'b100011;
+    localparam  a_run_cols = 10'b100100;
+    localparam  bit_err_k = 32'h1;
+    localparam  bit_err_thh = 32'h2;
+    localparam  bit_err_thv = 32'h4;
+    localparam  bit_err_rows = 32'h8;
+    localparam  bit_err_cols = 32'h10;
+    localparam  k_min = 32'h3;
+    localparam  k_max = 32'h7;
+    localparam  th_min = 32'h1;
+    localparam  th_max = 32'h8000;
+    localparam  rows_min = 32'h1;
+    localparam  rows_max = 32'h40;
+    localparam  cols_min = 32'h20;
+    localparam  cols_max = 32'h800;
+    localparam  def_k = 4'h7;
+    localparam  def_thh = 16'h80;
+    localparam  def_thv = 16'h100;
+    localparam  def_thh_c = 36'hfffffbfff;
+    localparam  def_thv_c = 36'hfffff0000;
+    localparam  def_rows = 8'h40;
+    localparam  def_cols = 13'b100000000000;
+    localparam  def_k16 = 16'h7;
+    localparam  def_rows16 = 16'h40;
+    localparam  def_cols16 = 16'h800;
     localparam  bit_soft = 32'h1;
     localparam  bit_irq = 32'h2;
     localparam  bit_clear = 32'h4;
@@ -10379,6 +10969,11 @@ module fcc_regs(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata
     reg  [9:0] mux$addr;
     reg  [15:0] mux$w16$0;
     reg  [15:0] mux$w16$1;
+    reg  [15:0] mux$w16$2;
+    reg  [15:0] mux$w16$3;
+    reg  [15:0] mux$w16$4;
+    reg  [15:0] mux$w16$5;
+    reg  [15:0] mux$w16$6;
     reg  [19:0] mux$w20$0;
     reg  [23:0] mux$w24$0;
     reg  [23:0] mux$w24$1;
@@ -10388,6 +10983,11 @@ module fcc_regs(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata
     reg  mux$flags$2;
     reg  mux$flags$3;
     reg  mux$flags$4;
+    reg  mux$flags$5;
+    reg  mux$flags$6;
+    reg  mux$flags$7;
+    reg  mux$flags$8;
+    reg  mux$flags$9;
     wire  [31:0] mux$data;
     reg  aw_v$d;
     wire  aw_v$q;
@@ -10449,8 +11049,76 @@ module fcc_regs(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata
     reg  [23:0] s_gstall$d;
     wire  [23:0] s_gstall$q;
     reg  s_gstall$clock;
+    reg  [15:0] sh_k$d;
+    wire  [15:0] sh_k$q;
+    reg  sh_k$clock;
+    reg  [15:0] sh_thh$d;
+    wire  [15:0] sh_thh$q;
+    reg  sh_thh$clock;
+    reg  [15:0] sh_thv$d;
+    wire  [15:0] sh_thv$q;
+    reg  sh_thv$clock;
+    reg  [35:0] sh_thh_c$d;
+    wire  [35:0] sh_thh_c$q;
+    reg  sh_thh_c$clock;
+    reg  [35:0] sh_thv_c$d;
+    wire  [35:0] sh_thv_c$q;
+    reg  sh_thv_c$clock;
+    reg  [15:0] sh_rows$d;
+    wire  [15:0] sh_rows$q;
+    reg  sh_rows$clock;
+    reg  [15:0] sh_cols$d;
+    wire  [15:0] sh_cols$q;
+    reg  sh_cols$clock;
+    reg  [3:0] act_k$d;
+    wire  [3:0] act_k$q;
+    reg  act_k$clock;
+    reg  [35:0] act_thh_c$d;
+    wire  [35:0] act_thh_c$q;
+    reg  act_thh_c$clock;
+    reg  [35:0] act_thv_c$d;
+    wire  [35:0] act_thv_c$q;
+    reg  act_thv_c$clock;
+    reg  [7:0] act_rows$d;
+    wire  [7:0] act_rows$q;
+    reg  act_rows$clock;
+    reg  [12:0] act_cols$d;
+    wire  [12:0] act_cols$q;
+    reg  act_cols$clock;
+    reg  err_k$d;
+    wire  err_k$q;
+    reg  err_k$clock;
+    reg  err_thh$d;
+    wire  err_thh$q;
+    reg  err_thh$clock;
+    reg  err_thv$d;
+    wire  err_thv$q;
+    reg  err_thv$clock;
+    reg  err_rows$d;
+    wire  err_rows$q;
+    reg  err_rows$clock;
+    reg  err_cols$d;
+    wire  err_cols$q;
+    reg  err_cols$clock;
+    reg  sq$clk;
+    reg  sq$rst;
+    reg  sq$start;
+    reg  [15:0] sq$a;
+    wire  sq$busy;
+    wire  [35:0] sq$c_lt;
+    wire  [35:0] sq$c_le;
+    reg  sq_v$d;
+    wire  sq_v$q;
+    reg  sq_v$clock;
+    reg  [15:0] sq_a$d;
+    wire  [15:0] sq_a$q;
+    reg  sq_a$clock;
+    reg  sq_busy_q$d;
+    wire  sq_busy_q$q;
+    reg  sq_busy_q$clock;
 
     // Local signals
+    reg  th_ok;
     reg  wr;
     reg  clear;
 
@@ -10459,6 +11127,11 @@ module fcc_regs(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata
         .addr(mux$addr),
         .w16$0(mux$w16$0),
         .w16$1(mux$w16$1),
+        .w16$2(mux$w16$2),
+        .w16$3(mux$w16$3),
+        .w16$4(mux$w16$4),
+        .w16$5(mux$w16$5),
+        .w16$6(mux$w16$6),
         .w20$0(mux$w20$0),
         .w24$0(mux$w24$0),
         .w24$1(mux$w24$1),
@@ -10468,6 +11141,11 @@ module fcc_regs(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata
         .flags$2(mux$flags$2),
         .flags$3(mux$flags$3),
         .flags$4(mux$flags$4),
+        .flags$5(mux$flags$5),
+        .flags$6(mux$flags$6),
+        .flags$7(mux$flags$7),
+        .flags$8(mux$flags$8),
+        .flags$9(mux$flags$9),
         .data(mux$data)
     );
     fcc_regs__aw_v aw_v(
@@ -10570,6 +11248,115 @@ module fcc_regs(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata
         .q(s_gstall$q),
         .clock(s_gstall$clock)
     );
+    fcc_regs__sh_k sh_k(
+        .d(sh_k$d),
+        .q(sh_k$q),
+        .clock(sh_k$clock)
+    );
+    fcc_regs__sh_thh sh_thh(
+        .d(sh_thh$d),
+        .q(sh_thh$q),
+        .clock(sh_thh$clock)
+    );
+    fcc_regs__sh_thv sh_thv(
+        .d(sh_thv$d),
+        .q(sh_thv$q),
+        .clock(sh_thv$clock)
+    );
+    fcc_regs__sh_thh_c sh_thh_c(
+        .d(sh_thh_c$d),
+        .q(sh_thh_c$q),
+        .clock(sh_thh_c$clock)
+    );
+    fcc_regs__sh_thv_c sh_thv_c(
+        .d(sh_thv_c$d),
+        .q(sh_thv_c$q),
+        .clock(sh_thv_c$clock)
+    );
+    fcc_regs__sh_rows sh_rows(
+        .d(sh_rows$d),
+        .q(sh_rows$q),
+        .clock(sh_rows$clock)
+    );
+    fcc_regs__sh_cols sh_cols(
+        .d(sh_cols$d),
+        .q(sh_cols$q),
+        .clock(sh_cols$clock)
+    );
+    fcc_regs__act_k act_k(
+        .d(act_k$d),
+        .q(act_k$q),
+        .clock(act_k$clock)
+    );
+    fcc_regs__act_thh_c act_thh_c(
+        .d(act_thh_c$d),
+        .q(act_thh_c$q),
+        .clock(act_thh_c$clock)
+    );
+    fcc_regs__act_thv_c act_thv_c(
+        .d(act_thv_c$d),
+        .q(act_thv_c$q),
+        .clock(act_thv_c$clock)
+    );
+    fcc_regs__act_rows act_rows(
+        .d(act_rows$d),
+        .q(act_rows$q),
+        .clock(act_rows$clock)
+    );
+    fcc_regs__act_cols act_cols(
+        .d(act_cols$d),
+        .q(act_cols$q),
+        .clock(act_cols$clock)
+    );
+    fcc_regs__err_k err_k(
+        .d(err_k$d),
+        .q(err_k$q),
+        .clock(err_k$clock)
+    );
+    fcc_regs__err_thh err_thh(
+        .d(err_thh$d),
+        .q(err_thh$q),
+        .clock(err_thh$clock)
+    );
+    fcc_regs__err_thv err_thv(
+        .d(err_thv$d),
+        .q(err_thv$q),
+        .clock(err_thv$clock)
+    );
+    fcc_regs__err_rows err_rows(
+        .d(err_rows$d),
+        .q(err_rows$q),
+        .clock(err_rows$clock)
+    );
+    fcc_regs__err_cols err_cols(
+        .d(err_cols$d),
+        .q(err_cols$q),
+        .clock(err_cols$clock)
+    );
+    fcc_regs__sq sq(
+        .clk(sq$clk),
+        .rst(sq$rst),
+        .start(sq$start),
+        .a(sq$a),
+        .busy(sq$busy),
+        .c_lt(sq$c_lt),
+        .c_le(sq$c_le)
+    );
+    fcc_regs__sq_v sq_v(
+        .d(sq_v$d),
+        .q(sq_v$q),
+        .clock(sq_v$clock)
+    );
+    fcc_regs__sq_a sq_a(
+        .d(sq_a$d),
+        .q(sq_a$q),
+        .clock(sq_a$clock)
+    );
+    fcc_regs__sq_busy_q sq_busy_q(
+        .d(sq_busy_q$d),
+        .q(sq_busy_q$q),
+        .clock(sq_busy_q$clock)
+    );
 
     // Update code
     always @(*) begin
@@ -10593,6 +11380,26 @@ module fcc_regs(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata
         s_err$clock = clk;
         s_joins$clock = clk;
         s_gstall$clock = clk;
+        sh_k$clock = clk;
+        sh_thh$clock = clk;
+        sh_thv$clock = clk;
+        sh_thh_c$clock = clk;
+        sh_thv_c$clock = clk;
+        sh_rows$clock = clk;
+        sh_cols$clock = clk;
+        act_k$clock = clk;
+        act_thh_c$clock = clk;
+        act_thv_c$clock = clk;
+        act_rows$clock = clk;
+        act_cols$clock = clk;
+        err_k$clock = clk;
+        err_thh$clock = clk;
+        err_thv$clock = clk;
+        err_rows$clock = clk;
+        err_cols$clock = clk;
+        sq_v$clock = clk;
+        sq_a$clock = clk;
+        sq_busy_q$clock = clk;
         aw_v$d = aw_v$q;
         aw_a$d = aw_a$q;
         w_v$d = w_v$q;
@@ -10613,7 +11420,32 @@ module fcc_regs(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata
         s_err$d = s_err$q;
         s_joins$d = s_joins$q;
         s_gstall$d = s_gstall$q;
-        wr = aw_v$q & w_v$q & ~b_v$q;
+        sh_k$d = sh_k$q;
+        sh_thh$d = sh_thh$q;
+        sh_thv$d = sh_thv$q;
+        sh_thh_c$d = sh_thh_c$q;
+        sh_thv_c$d = sh_thv_c$q;
+        sh_rows$d = sh_rows$q;
+        sh_cols$d = sh_cols$q;
+        act_k$d = act_k$q;
+        act_thh_c$d = act_thh_c$q;
+        act_thv_c$d = act_thv_c$q;
+        act_rows$d = act_rows$q;
+        act_cols$d = act_cols$q;
+        err_k$d = err_k$q;
+        err_thh$d = err_thh$q;
+        err_thv$d = err_thv$q;
+        err_rows$d = err_rows$q;
+        err_cols$d = err_cols$q;
+        sq_v$d = sq_v$q;
+        sq_a$d = sq_a$q;
+        sq_busy_q$d = sq_busy_q$q;
+        sq$clk = clk;
+        sq$rst = rst;
+        sq$a = w_d$q[15:0];
+        sq$start = 1'b0;
+        wr = aw_v$q & w_v$q & ~b_v$q & ~sq$busy & ~sq_busy_q$q;
+        th_ok = (w_d$q >= th_min) & (w_d$q <= th_max);
         if (s_axil_awvalid & ~aw_v$q) begin
             aw_v$d = 1'b1;
             aw_a$d = s_axil_awaddr[11:2];
@@ -10639,6 +11471,87 @@ module fcc_regs(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata
             if ((aw_a$q == a_status) & ((w_d$q & bit_done) != zero32)) begin
                 done_sticky$d = 1'b0;
             end
+            if (aw_a$q == a_error) begin
+                if ((w_d$q & bit_err_k) != zero32) begin
+                    err_k$d = 1'b0;
+                end
+                if ((w_d$q & bit_err_thh) != zero32) begin
+                    err_thh$d = 1'b0;
+                end
+                if ((w_d$q & bit_err_thv) != zero32) begin
+                    err_thv$d = 1'b0;
+                end
+                if ((w_d$q & bit_err_rows) != zero32) begin
+                    err_rows$d = 1'b0;
+                end
+                if ((w_d$q & bit_err_cols) != zero32) begin
+                    err_cols$d = 1'b0;
+                end
+            end
+            if (aw_a$q == a_run_k) begin
+                if ((w_d$q >= k_min) & (w_d$q <= k_max) & w_d$q[0]) begin
+                    sh_k$d = w_d$q[15:0];
+                end
+                else begin
+                    err_k$d = 1'b1;
+                end
+            end
+            if (aw_a$q == a_run_rows) begin
+                if ((w_d$q >= rows_min) & (w_d$q <= rows_max)) begin
+                    sh_rows$d = w_d$q[15:0];
+                end
+                else begin
+                    err_rows$d = 1'b1;
+                end
+            end
+            if (aw_a$q == a_run_cols) begin
+                if ((w_d$q >= cols_min) & (w_d$q <= cols_max)) begin
+                    sh_cols$d = w_d$q[15:0];
+                end
+                else begin
+                    err_cols$d = 1'b1;
+                end
+            end
+            if (aw_a$q == a_run_thh) begin
+                if (th_ok) begin
+                    b_v$d = 1'b0;
+                    sq$start = 1'b1;
+                    sq_v$d = 1'b0;
+                end
+                else begin
+                    err_thh$d = 1'b1;
+                end
+            end
+            if (aw_a$q == a_run_thv) begin
+                if (th_ok) begin
+                    b_v$d = 1'b0;
+                    sq$start = 1'b1;
+                    sq_v$d = 1'b1;
+                end
+                else begin
+                    err_thv$d = 1'b1;
+                end
+            end
+            sq_a$d = w_d$q[15:0];
+        end
+        sq_busy_q$d = sq$busy;
+        if (sq_busy_q$q & ~sq$busy) begin
+            b_v$d = 1'b1;
+            if (sq_v$q) begin
+                sh_thv$d = sq_a$q;
+                sh_thv_c$d = sq$c_lt;
+            end
+            else begin
+                sh_thh$d = sq_a$q;
+                sh_thh_c$d = sq$c_le;
+            end
+        end
+        if (idle) begin
+            act_k$d = sh_k$q[3:0];
+            act_thh_c$d = sh_thh_c$q;
+            act_thv_c$d = sh_thv_c$q;
+            act_rows$d = sh_rows$q[7:0];
+            act_cols$d = sh_cols$q[12:0];
         end
         done_q$d = frame_end;
         if (frame_end) begin
@@ -10675,6 +11588,16 @@ module fcc_regs(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata
         mux$flags$2 = idle;
         mux$flags$3 = s_ovf$q;
         mux$flags$4 = s_err$q;
+        mux$flags$5 = err_k$q;
+        mux$flags$6 = err_thh$q;
+        mux$flags$7 = err_thv$q;
+        mux$flags$8 = err_rows$q;
+        mux$flags$9 = err_cols$q;
+        mux$w16$2 = sh_k$q;
+        mux$w16$3 = sh_thh$q;
+        mux$w16$4 = sh_thv$q;
+        mux$w16$5 = sh_rows$q;
+        mux$w16$6 = sh_cols$q;
         if (s_axil_arvalid & ~r_v$q) begin
             r_v$d = 1'b1;
             r_d$d = mux$data;
@@ -10700,6 +11623,24 @@ module fcc_regs(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata
             s_err$d = 1'b0;
             s_joins$d = zero24;
             s_gstall$d = zero24;
+            sh_k$d = def_k16;
+            sh_thh$d = def_thh;
+            sh_thv$d = def_thv;
+            sh_thh_c$d = def_thh_c;
+            sh_thv_c$d = def_thv_c;
+            sh_rows$d = def_rows16;
+            sh_cols$d = def_cols16;
+            act_k$d = def_k;
+            act_thh_c$d = def_thh_c;
+            act_thv_c$d = def_thv_c;
+            act_rows$d = def_rows;
+            act_cols$d = def_cols;
+            err_k$d = 1'b0;
+            err_thh$d = 1'b0;
+            err_thv$d = 1'b0;
+            err_rows$d = 1'b0;
+            err_cols$d = 1'b0;
+            sq_busy_q$d = 1'b0;
         end
         s_axil_awready = ~aw_v$q;
         s_axil_wready = ~w_v$q;
@@ -10719,9 +11660,109 @@ module fcc_regs(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata
         st_frame_error = s_err$q;
         st_joins = s_joins$q;
         st_gear_stalls = s_gstall$q;
+        run_k = act_k$q;
+        run_th_h_c = act_thh_c$q;
+        run_th_v_c = act_thv_c$q;
+        run_rows = act_rows$q;
+        run_cols = act_cols$q;
     end
 
 endmodule // fcc_regs
+
+
+module fcc_regs__act_cols(d,q,clock);
+
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__act_cols
+
+
+module fcc_regs__act_k(d,q,clock);
+
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 4'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__act_k
+
+
+module fcc_regs__act_rows(d,q,clock);
+
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__act_rows
+
+
+module fcc_regs__act_thh_c(d,q,clock);
+
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__act_thh_c
+
+
+module fcc_regs__act_thv_c(d,q,clock);
+
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__act_thv_c
 
 
 module fcc_regs__aw_a(d,q,clock);
@@ -10857,6 +11898,101 @@ module fcc_regs__done_sticky(d,q,clock);
 endmodule // fcc_regs__done_sticky
 
 
+module fcc_regs__err_cols(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__err_cols
+
+
+module fcc_regs__err_k(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__err_k
+
+
+module fcc_regs__err_rows(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__err_rows
+
+
+module fcc_regs__err_thh(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__err_thh
+
+
+module fcc_regs__err_thv(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__err_thv
+
+
 module fcc_regs__irq_en(d,q,clock);
 
     // Module arguments
@@ -10876,12 +12012,17 @@ module fcc_regs__irq_en(d,q,clock);
 endmodule // fcc_regs__irq_en
 
 
-module fcc_regs__mux(addr,w16$0,w16$1,w20$0,w24$0,w24$1,w32$0,flags$0,flags$1,flags$2,flags$3,flags$4,data);
+module fcc_regs__mux(addr,w16$0,w16$1,w16$2,w16$3,w16$4,w16$5,w16$6,w20$0,w24$0,w24$1,w32$0,flags$0,flags$1,flags$2,flags$3,flags$4,flags$5,flags$6,flags$7,flags$8,flags$9,data);
 
     // Module arguments
     input wire  [9:0] addr;
     input wire  [15:0] w16$0;
     input wire  [15:0] w16$1;
+    input wire  [15:0] w16$2;
+    input wire  [15:0] w16$3;
+    input wire  [15:0] w16$4;
+    input wire  [15:0] w16$5;
+    input wire  [15:0] w16$6;
     input wire  [19:0] w20$0;
     input wire  [23:0] w24$0;
     input wire  [23:0] w24$1;
@@ -10891,6 +12032,11 @@ module fcc_regs__mux(addr,w16$0,w16$1,w20$0,w24$0,w24$1,w32$0,flags$0,flags$1,fl
     input wire  flags$2;
     input wire  flags$3;
     input wire  flags$4;
+    input wire  flags$5;
+    input wire  flags$6;
+    input wire  flags$7;
+    input wire  flags$8;
+    input wire  flags$9;
     output reg  [31:0] data;
 
     // Update code (custom)
@@ -10908,6 +12054,7 @@ module fcc_regs__mux(addr,w16$0,w16$1,w20$0,w24$0,w24$1,w32$0,flags$0,flags$1,fl
             10'd9: data = 32'h00030d40;
             10'd16: data = {30'd0, flags$0, 1'b0};
             10'd17: data = {30'd0, flags$2, flags$1};
+            10'd18: data = {27'd0, flags$9, flags$8, flags$7, flags$6, flags$5};
             10'd20: data = w32$0;
             10'd21: data = {16'd0, w16$0};
             10'd22: data = {16'd0, w16$1};
@@ -10915,6 +12062,11 @@ module fcc_regs__mux(addr,w16$0,w16$1,w20$0,w24$0,w24$1,w32$0,flags$0,flags$1,fl
             10'd24: data = {30'd0, flags$4, flags$3};
             10'd25: data = {8'd0, w24$0};
             10'd26: data = {8'd0, w24$1};
+            10'd32: data = {16'd0, w16$2};
+            10'd33: data = {16'd0, w16$3};
+            10'd34: data = {16'd0, w16$4};
+            10'd35: data = {16'd0, w16$5};
+            10'd36: data = {16'd0, w16$6};
             default: data = 32'h00000000;
         endcase
     end
@@ -11092,6 +12244,139 @@ module fcc_regs__s_unl(d,q,clock);
 endmodule // fcc_regs__s_unl
 
 
+module fcc_regs__sh_cols(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__sh_cols
+
+
+module fcc_regs__sh_k(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__sh_k
+
+
+module fcc_regs__sh_rows(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__sh_rows
+
+
+module fcc_regs__sh_thh(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__sh_thh
+
+
+module fcc_regs__sh_thh_c(d,q,clock);
+
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__sh_thh_c
+
+
+module fcc_regs__sh_thv(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__sh_thv
+
+
+module fcc_regs__sh_thv_c(d,q,clock);
+
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__sh_thv_c
+
+
 module fcc_regs__soft_q(d,q,clock);
 
     // Module arguments
@@ -11109,6 +12394,106 @@ module fcc_regs__soft_q(d,q,clock);
     end
 
 endmodule // fcc_regs__soft_q
+
+
+module fcc_regs__sq(clk,rst,start,a,busy,c_lt,c_le);
+
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  start;
+    input wire  [15:0] a;
+    output reg  busy;
+    output reg  [35:0] c_lt;
+    output reg  [35:0] c_le;
+
+    // Update code (custom)
+    // Shift and add: acc += c for every set bit of m, c doubles, m halves.
+    reg [15:0] m;
+    reg [31:0] c;
+    reg [31:0] acc;
+    reg run;
+    always @(posedge clk) begin
+        if (rst) begin
+            run <= 1'b0;
+        end else if (start) begin
+            m <= a;
+            c <= {16'd0, a};
+            acc <= 32'd0;
+            run <= 1'b1;
+        end else if (run) begin
+            if (m == 16'd0) begin
+                run <= 1'b0;
+            end else begin
+                if (m[0]) acc <= acc + c;
+                c <= {c[30:0], 1'b0};
+                m <= {1'b0, m[15:1]};
+            end
+        end
+    end
+    always @(*) begin
+        busy = run;
+        c_lt = 36'd0 - {4'd0, acc};
+        c_le = ~{4'd0, acc};
+    end
+endmodule // fcc_regs__sq
+
+
+module fcc_regs__sq_a(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__sq_a
+
+
+module fcc_regs__sq_busy_q(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__sq_busy_q
+
+
+module fcc_regs__sq_v(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__sq_v
 
 
 module fcc_regs__w_d(d,q,clock);
@@ -39105,12 +40490,14 @@ module fcc_top__tready_q(d,q,clock);
 endmodule // fcc_top__tready_q
 
 
-module fcc_window(clk,rst,inp,centre,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_ok$4,ent_ok$5,ent_ok$6,ent_ok$7,ent_ok$8,ent_ok$9,ent_ok$10,ent_ok$11,ent_ok$12,ent_ok$13,ent_ok$14,ent_ok$15,ent_ok$16,ent_ok$17,ent_ok$18,ent_ok$19,ent_ok$20,ent_x$0,ent_x$1,ent_x$2,ent_x$3,ent_x$4,ent_x$5,ent_x$6,ent_x$7,ent_x$8,ent_x$9,ent_x$10,ent_x$11,ent_x$12,ent_x$13,ent_x$14,ent_x$15,ent_x$16,ent_x$17,ent_x$18,ent_x$19,ent_x$20,ent_y$0,ent_y$1,ent_y$2,ent_y$3,ent_y$4,ent_y$5,ent_y$6,ent_y$7,ent_y$8,ent_y$9,ent_y$10,ent_y$11,ent_y$12,ent_y$13,ent_y$14,ent_y$15,ent_y$16,ent_y$17,ent_y$18,ent_y$19,ent_y$20,ent_z$0,ent_z$1,ent_z$2,ent_z$3,ent_z$4,ent_z$5,ent_z$6,ent_z$7,ent_z$8,ent_z$9,ent_z$10,ent_z$11,ent_z$12,ent_z$13,ent_z$14,ent_z$15,ent_z$16,ent_z$17,ent_z$18,ent_z$19,ent_z$20,ent_rep$0,ent_rep$1,ent_rep$2,ent_rep$3,ent_rep$4,ent_rep$5,ent_rep$6,ent_rep$7,ent_rep$8,ent_rep$9,ent_rep$10,ent_rep$11,ent_rep$12,ent_rep$13,ent_rep$14,ent_rep$15,ent_rep$16,ent_rep$17,ent_rep$18,ent_rep$19,ent_rep$20,rep_we,rep_waddr,rep_wdata);
+module fcc_window(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_ok$4,ent_ok$5,ent_ok$6,ent_ok$7,ent_ok$8,ent_ok$9,ent_ok$10,ent_ok$11,ent_ok$12,ent_ok$13,ent_ok$14,ent_ok$15,ent_ok$16,ent_ok$17,ent_ok$18,ent_ok$19,ent_ok$20,ent_x$0,ent_x$1,ent_x$2,ent_x$3,ent_x$4,ent_x$5,ent_x$6,ent_x$7,ent_x$8,ent_x$9,ent_x$10,ent_x$11,ent_x$12,ent_x$13,ent_x$14,ent_x$15,ent_x$16,ent_x$17,ent_x$18,ent_x$19,ent_x$20,ent_y$0,ent_y$1,ent_y$2,ent_y$3,ent_y$4,ent_y$5,ent_y$6,ent_y$7,ent_y$8,ent_y$9,ent_y$10,ent_y$11,ent_y$12,ent_y$13,ent_y$14,ent_y$15,ent_y$16,ent_y$17,ent_y$18,ent_y$19,ent_y$20,ent_z$0,ent_z$1,ent_z$2,ent_z$3,ent_z$4,ent_z$5,ent_z$6,ent_z$7,ent_z$8,ent_z$9,ent_z$10,ent_z$11,ent_z$12,ent_z$13,ent_z$14,ent_z$15,ent_z$16,ent_z$17,ent_z$18,ent_z$19,ent_z$20,ent_rep$0,ent_rep$1,ent_rep$2,ent_rep$3,ent_rep$4,ent_rep$5,ent_rep$6,ent_rep$7,ent_rep$8,ent_rep$9,ent_rep$10,ent_rep$11,ent_rep$12,ent_rep$13,ent_rep$14,ent_rep$15,ent_rep$16,ent_rep$17,ent_rep$18,ent_rep$19,ent_rep$20,rep_we,rep_waddr,rep_wdata);
 
     // Module arguments
     input wire  clk;
     input wire  rst;
     input wire  [131:0] inp;
+    input wire  [11:0] last_col;
+    input wire  [3:0] run_k;
     output reg  [111:0] centre;
     output reg  ent_ok$0;
     output reg  ent_ok$1;
@@ -39225,12 +40612,22 @@ module fcc_window(clk,rst,inp,centre,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_ok$
     localparam  col_lo$0 = 12'h3;
     localparam  col_lo$1 = 12'h2;
     localparam  col_lo$2 = 12'h1;
-    localparam  col_hi$0 = 12'h7fe;
-    localparam  col_hi$1 = 12'h7fd;
-    localparam  col_hi$2 = 12'h7fc;
+    localparam  hi_off$0 = 12'h1;
+    localparam  hi_off$1 = 12'h2;
+    localparam  hi_off$2 = 12'h3;
     localparam  row_lo$0 = 8'h3;
     localparam  row_lo$1 = 8'h2;
     localparam  row_lo$2 = 8'h1;
+    localparam  row_k$0 = 4'h7;
+    localparam  row_k$1 = 4'h5;
+    localparam  row_k$2 = 4'h3;
+    localparam  col_k$0 = 4'h7;
+    localparam  col_k$1 = 4'h5;
+    localparam  col_k$2 = 4'h3;
+    localparam  col_k$3 = 4'h1;
+    localparam  col_k$4 = 4'h3;
+    localparam  col_k$5 = 4'h5;
+    localparam  col_k$6 = 4'h7;
     localparam  zero8 = 8'h0;
     localparam  zero12 = 12'h0;
 
@@ -39697,6 +41094,15 @@ module fcc_window(clk,rst,inp,centre,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_ok$
     reg  col_in$6$d;
     wire  col_in$6$q;
     reg  col_in$6$clock;
+    reg  [11:0] col_hi$0$d;
+    wire  [11:0] col_hi$0$q;
+    reg  col_hi$0$clock;
+    reg  [11:0] col_hi$1$d;
+    wire  [11:0] col_hi$1$q;
+    reg  col_hi$1$clock;
+    reg  [11:0] col_hi$2$d;
+    wire  [11:0] col_hi$2$q;
+    reg  col_hi$2$clock;
 
     // Local signals
     reg  view_lok$0;
@@ -40548,6 +41954,21 @@ module fcc_window(clk,rst,inp,centre,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_ok$
         .q(col_in$6$q),
         .clock(col_in$6$clock)
     );
+    fcc_window__col_hi__0 col_hi$0(
+        .d(col_hi$0$d),
+        .q(col_hi$0$q),
+        .clock(col_hi$0$clock)
+    );
+    fcc_window__col_hi__1 col_hi$1(
+        .d(col_hi$1$d),
+        .q(col_hi$1$q),
+        .clock(col_hi$1$clock)
+    );
+    fcc_window__col_hi__2 col_hi$2(
+        .d(col_hi$2$d),
+        .q(col_hi$2$q),
+        .clock(col_hi$2$clock)
+    );
 
     // Update code
     always @(*) begin
@@ -40966,31 +42387,37 @@ module fcc_window(clk,rst,inp,centre,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_ok$
             win_z$20$d = view_z$20;
         end
         row_in$0$clock = clk;
-        row_in$0$d = w2$q[73:66] >= row_lo$0;
+        row_in$0$d = (w2$q[73:66] >= row_lo$0) & (run_k >= row_k$0);
         row_in$1$clock = clk;
-        row_in$1$d = w2$q[73:66] >= row_lo$1;
+        row_in$1$d = (w2$q[73:66] >= row_lo$1) & (run_k >= row_k$1);
         row_in$2$clock = clk;
-        row_in$2$d = w2$q[73:66] >= row_lo$2;
+        row_in$2$d = (w2$q[73:66] >= row_lo$2) & (run_k >= row_k$2);
         col_in$0$clock = clk;
-        col_in$0$d = 1'b1;
+        col_in$0$d = run_k >= col_k$0;
         col_in$1$clock = clk;
-        col_in$1$d = 1'b1;
+        col_in$1$d = run_k >= col_k$1;
         col_in$2$clock = clk;
-        col_in$2$d = 1'b1;
+        col_in$2$d = run_k >= col_k$2;
         col_in$3$clock = clk;
-        col_in$3$d = 1'b1;
+        col_in$3$d = run_k >= col_k$3;
         col_in$4$clock = clk;
-        col_in$4$d = 1'b1;
+        col_in$4$d = run_k >= col_k$4;
         col_in$5$clock = clk;
-        col_in$5$d = 1'b1;
+        col_in$5$d = run_k >= col_k$5;
         col_in$6$clock = clk;
-        col_in$6$d = 1'b1;
-        col_in$0$d = w2$q[85:74] >= col_lo$0;
-        col_in$1$d = w2$q[85:74] >= col_lo$1;
-        col_in$2$d = w2$q[85:74] >= col_lo$2;
-        col_in$4$d = w2$q[85:74] <= col_hi$0;
-        col_in$5$d = w2$q[85:74] <= col_hi$1;
-        col_in$6$d = w2$q[85:74] <= col_hi$2;
+        col_in$6$d = run_k >= col_k$6;
+        col_hi$0$clock = clk;
+        col_hi$0$d = last_col - hi_off$0;
+        col_hi$1$clock = clk;
+        col_hi$1$d = last_col - hi_off$1;
+        col_hi$2$clock = clk;
+        col_hi$2$d = last_col - hi_off$2;
+        col_in$0$d = (w2$q[85:74] >= col_lo$0) & (run_k >= col_k$0);
+        col_in$1$d = (w2$q[85:74] >= col_lo$1) & (run_k >= col_k$1);
+        col_in$2$d = (w2$q[85:74] >= col_lo$2) & (run_k >= col_k$2);
+        col_in$4$d = (w2$q[85:74] <= col_hi$0$q) & (run_k >= col_k$4);
+        col_in$5$d = (w2$q[85:74] <= col_hi$1$q) & (run_k >= col_k$5);
+        col_in$6$d = (w2$q[85:74] <= col_hi$2$q) & (run_k >= col_k$6);
         if (rst) begin
             w1$d[0:0] = 1'b0;
             w2$d[0:0] = 1'b0;
@@ -41303,6 +42730,63 @@ module fcc_window(clk,rst,inp,centre,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_ok$
     end
 
 endmodule // fcc_window
+
+
+module fcc_window__col_hi__0(d,q,clock);
+
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__col_hi__0
+
+
+module fcc_window__col_hi__1(d,q,clock);
+
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__col_hi__1
+
+
+module fcc_window__col_hi__2(d,q,clock);
+
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__col_hi__2
 
 
 module fcc_window__col_in__0(d,q,clock);

@@ -40,6 +40,7 @@
 #     0x024 CLOCK_KHZ RO
 #     0x040 CONTROL RW
 #     0x044 STATUS W1C
+#     0x048 ERROR W1C
 #     0x050 FRAME_COUNT RO
 #     0x054 CLUSTERS RO
 #     0x058 PROVISIONAL RO
@@ -47,6 +48,11 @@
 #     0x060 FRAME_FLAGS RO
 #     0x064 JOINS RO
 #     0x068 GEAR_STALLS RO
+#     0x080 RUN_K RW
+#     0x084 RUN_TH_H RW
+#     0x088 RUN_TH_V RW
+#     0x08C RUN_ROWS RW
+#     0x090 RUN_COLS RW
 
 set usage {usage: vivado -mode batch -source fcc_zc706_bd.tcl -tclargs ?-out DIR? ?-bitstream? ?-jobs N?}
 set part xc7z045ffg900-2
@@ -177,6 +183,7 @@ puts $map {register 0x020 LABELS_PER_BEAT RO}
 puts $map {register 0x024 CLOCK_KHZ RO}
 puts $map {register 0x040 CONTROL RW}
 puts $map {register 0x044 STATUS W1C}
+puts $map {register 0x048 ERROR W1C}
 puts $map {register 0x050 FRAME_COUNT RO}
 puts $map {register 0x054 CLUSTERS RO}
 puts $map {register 0x058 PROVISIONAL RO}
@@ -184,6 +191,11 @@ puts $map {register 0x05C UNLABELLED RO}
 puts $map {register 0x060 FRAME_FLAGS RO}
 puts $map {register 0x064 JOINS RO}
 puts $map {register 0x068 GEAR_STALLS RO}
+puts $map {register 0x080 RUN_K RW}
+puts $map {register 0x084 RUN_TH_H RW}
+puts $map {register 0x088 RUN_TH_V RW}
+puts $map {register 0x08C RUN_ROWS RW}
+puts $map {register 0x090 RUN_COLS RW}
 close $map
 
 make_wrapper -files [get_files $design.bd] -top -import

@@ -238,11 +238,11 @@ impl Dut {
         let last = last_out.unwrap_or(self.cycle);
         run.cycles = last + 1 - first;
         run.latency = last.saturating_sub(last_in);
-        if run.labels.len() != p.pixels() {
+        let pixels = frame.rows * frame.cols;
+        if run.labels.len() != pixels {
             return Err(SimError::Protocol(format!(
-                "{} labels out for a frame of {} pixels",
+                "{} labels out for a frame of {pixels} pixels",
                 run.labels.len(),
-                p.pixels()
             )));
         }
         Ok(run)

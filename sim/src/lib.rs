@@ -13,6 +13,7 @@ pub mod drive;
 pub mod frames;
 pub mod model;
 pub mod regs_bench;
+pub mod run;
 
 use std::path::PathBuf;
 
@@ -22,8 +23,11 @@ pub use board::{
 };
 pub use check::{compare, expected};
 pub use drive::{frame_beats, Drive, FrameRun, Tlast};
-pub use model::{cache_root, is_cached, load, Dut, Model};
+pub use model::{
+    cache_root, is_cached, is_cached_dir, load, load_dir, read_generated, Dut, GeneratedDir, Model,
+};
 pub use regs_bench::{load_regs, RegsDut, RegsIn, RegsOut};
+pub use run::{check_run, run_and_check_with, run_values};
 
 /// Everything that can go wrong in a simulation.
 #[derive(Debug, thiserror::Error)]
@@ -58,6 +62,9 @@ pub enum SimError {
     Mismatch(String),
     #[error("virtual board: {0}")]
     Board(String),
+    /// Run parameters the build cannot run.
+    #[error("{0}")]
+    BadRun(String),
 }
 
 /// Run one frame on a fresh reset of `dut` and compare it with the golden model.

@@ -174,11 +174,11 @@ pub(crate) fn fnv(text: &str) -> u64 {
 
 /// The cache directory's name: the parameters, the Verilog and the shim, and
 /// whether the model counts coverage.
-fn cache_key(p: &FccParams, gen: &fcc_rtl::Generated) -> String {
+fn cache_key(p: &FccParams, verilog: &str) -> String {
     format!(
         "{}-{:016x}{}",
         p.hash(),
-        fnv(&format!("{}{SHIM}", gen.verilog)),
+        fnv(&format!("{verilog}{SHIM}")),
         if coverage_dir().is_some() { "-cov" } else { "" }
     )
 }
@@ -188,7 +188,40 @@ fn cache_key(p: &FccParams, gen: &fcc_rtl::Generated) -> String {
 pub fn is_cached(p: &FccParams) -> Result<bool, SimError> {
     let gen = fcc_rtl::generate(p)?;
     Ok(cache_root()
-        .join(cache_key(p, &gen))
+        .join(cache_key(p, &gen.verilog))
+        .join(LIB_NAME)
+        .exists())
+}
+
+/// The Verilog and lint waivers of a configuration that `fcc gen --out dir`
+/// wrote, with its build parameters.
+pub struct GeneratedDir {
+    pub params: FccParams,
+    pub verilog: String,
+    pub waivers: String,
+}
+
+/// Read the configuration generated into `dir` (`fcc_params.json`,
+/// `fcc_top.v`, `fcc_lint.vlt`; found by `fcc_rtl::generated_rtl_dir`).
+pub fn read_generated(dir: &Path) -> Result<GeneratedDir, SimError> {
+    let rtl = fcc_rtl::generated_rtl_dir(dir)?;
+    let params = fcc_rtl::read_generated_params(dir)?;
+    let read = |name: &str| {
+        let path = rtl.join(name);
+        std::fs::read_to_string(&path).map_err(io(&path))
+    };
+    Ok(GeneratedDir {
+        params,
+        verilog: read("fcc_top.v")?,
+        waivers: read("fcc_lint.vlt")?,
+    })
+}
+
+/// Whether the model of the configuration generated into `dir` is cached.
+pub fn is_cached_dir(dir: &Path) -> Result<bool, SimError> {
+    let g = read_generated(dir)?;
+    Ok(cache_root()
+        .join(cache_key(&g.params, &g.verilog))
         .join(LIB_NAME)
         .exists())
 }
@@ -196,19 +229,29 @@ pub fn is_cached(p: &FccParams) -> Result<bool, SimError> {
 /// Load the model for `p`, building it first if the cache lacks it. Models
 /// are shared within the process.
 pub fn load(p: &FccParams) -> Result<Arc<Model>, SimError> {
+    let gen = fcc_rtl::generate(p)?;
+    load_verilog(p, &gen.verilog, &gen.lint_waivers)
+}
+
+/// Load the model of the configuration generated into `dir` by `fcc gen`:
+/// its own Verilog, as written there (nothing is regenerated).
+pub fn load_dir(dir: &Path) -> Result<Arc<Model>, SimError> {
+    let g = read_generated(dir)?;
+    load_verilog(&g.params, &g.verilog, &g.waivers)
+}
+
+fn load_verilog(p: &FccParams, verilog: &str, waivers: &str) -> Result<Arc<Model>, SimError> {
     static MODELS: OnceLock<Mutex<HashMap<String, Arc<Model>>>> = OnceLock::new();
     let models = MODELS.get_or_init(|| Mutex::new(HashMap::new()));
-    // One build at a time in this process: builds are heavy and the cache
-    // key is only known after generation.
+    // One build at a time in this process: builds are heavy.
     let mut map = models.lock().unwrap_or_else(|e| e.into_inner());
-    let gen = fcc_rtl::generate(p)?;
-    let key = cache_key(p, &gen);
+    let key = cache_key(p, verilog);
     if let Some(m) = map.get(&key) {
         return Ok(m.clone());
     }
     let dir = cache_root().join(&key);
     if !dir.join(LIB_NAME).exists() {
-        let files: Vec<(&str, &str)> = gen.files();
+        let files: Vec<(&str, &str)> = vec![("fcc_top.v", verilog), ("fcc_lint.vlt", waivers)];
         build(
             &files,
             &dir,

@@ -1,5 +1,12 @@
 //! `fcc sim`: run one frame through the Verilator model of the RTL, compare
 //! every label with the golden model and report cycles.
+//!
+//! Without `--rtl` the core is generated for the frame's own size and the
+//! flags; with `--rtl DIR` it is the configuration `fcc gen --out DIR` wrote
+//! (its Verilog as it is there, its limits from its `fcc_params.json`), and
+//! the frame's run parameters (its rows and columns, `--fsize`, `--th-h`,
+//! `--th-v`; flags not given keep the build's power-on values) are written
+//! into the run registers before the frame.
 
 use std::path::PathBuf;
 
@@ -36,6 +43,11 @@ pub struct SimArgs {
     /// Write the hardware's labels as a (rows, cols) .npy.
     #[arg(long)]
     pub output: Option<PathBuf>,
+    /// Run on the configuration generated into DIR by `fcc gen --out DIR`
+    /// (built once for its limits), programming the frame's size, K and
+    /// thresholds through its registers.
+    #[arg(long, value_name = "DIR")]
+    pub rtl: Option<PathBuf>,
 }
 
 fn probability(name: &str, v: f64) -> anyhow::Result<f64> {
@@ -46,16 +58,46 @@ fn probability(name: &str, v: f64) -> anyhow::Result<f64> {
     }
 }
 
-/// `size_given`: `--rows` or `--cols` was on the command line; they size a
-/// synthetic scene only, so an `--input` frame refuses them.
-pub fn run(args: &SimArgs, size_given: bool) -> anyhow::Result<()> {
+/// `given(name)`: the option `name` (clap id) was on the command line.
+/// `--rows` and `--cols` size a synthetic scene only, so an `--input` frame
+/// refuses them.
+pub fn run(args: &SimArgs, given: &dyn Fn(&str) -> bool) -> anyhow::Result<()> {
+    let size_given = given("rows") || given("cols");
     if let (Some(path), true) = (&args.input, size_given) {
         bail!(
             "{}: --rows and --cols size a --scene-seed scene only; an --input frame brings its own size (drop them, or resample the frame)",
             path.display()
         );
     }
+    let build = match &args.rtl {
+        Some(dir) => {
+            let g = fcc_sim::read_generated(dir)?;
+            for (id, flag) in [
+                ("label_bits", "--label-bits"),
+                ("labels_per_beat", "--labels-per-beat"),
+                ("clock_mhz", "--clock-mhz"),
+            ] {
+                if given(id) {
+                    bail!(
+                        "{flag} is fixed by the build in {} ({}); drop it, or generate another configuration",
+                        dir.display(),
+                        fcc_rtl::param_summary(&g.params)
+                    );
+                }
+            }
+            Some(g.params)
+        }
+        None => None,
+    };
     let frame_of = |rows: usize, cols: usize, xyz: &[f64]| Frame::from_xyz_f64(rows, cols, xyz);
+    // A synthetic scene on a generated configuration defaults to its limits.
+    let (scene_rows, scene_cols) = match &build {
+        Some(b) => (
+            if given("rows") { args.hw.rows } else { b.rows },
+            if given("cols") { args.hw.cols } else { b.cols },
+        ),
+        None => (args.hw.rows, args.hw.cols),
+    };
     let (frame, source) = match (&args.input, args.scene_seed) {
         (Some(path), _) => {
             let img =
@@ -67,45 +109,69 @@ pub fn run(args: &SimArgs, size_given: bool) -> anyhow::Result<()> {
         }
         (None, Some(seed)) => {
             let cfg = fcc_scene::SceneConfig {
-                rows: args.hw.rows,
-                cols: args.hw.cols,
+                rows: scene_rows,
+                cols: scene_cols,
                 seed,
                 ..Default::default()
             };
             let scene = fcc_scene::generate(&cfg).context("making the synthetic scene")?;
             (
-                Frame::from_xyz_f32(args.hw.rows, args.hw.cols, &scene.xyz),
+                Frame::from_xyz_f32(scene_rows, scene_cols, &scene.xyz),
                 format!("synthetic scene seed {seed}"),
             )
         }
         (None, None) => bail!("give a frame with --input FILE.npy or --scene-seed N"),
     };
-    let p = FccParams {
-        rows: frame.rows,
-        cols: frame.cols,
-        ..args.hw.unchecked()
-    };
-    p.validate_for_hardware()
-        .context("this frame and these parameters cannot run on the RTL")?;
     let drive = Drive {
         gap: probability("gap", args.gap)?,
         backpressure: probability("backpressure", args.backpressure)?,
         seed: args.seed,
         ..Default::default()
     };
-    let step = if fcc_sim::is_cached(&p)? {
-        "loading the cached Verilator model".to_string()
-    } else {
-        format!(
-            "building the Verilator model (first run of these parameters, a few minutes; cached in {})",
-            fcc_sim::cache_root().display()
-        )
+    // `p`: what the frame runs with (the golden model's parameters).
+    let (p, mut dut) = match (&args.rtl, &build) {
+        (Some(dir), Some(b)) => {
+            let p = FccParams {
+                rows: frame.rows,
+                cols: frame.cols,
+                fsize: if given("fsize") {
+                    args.hw.fsize
+                } else {
+                    b.fsize
+                },
+                th_h: if given("th_h") { args.hw.th_h } else { b.th_h },
+                th_v: if given("th_v") { args.hw.th_v } else { b.th_v },
+                ..b.clone()
+            };
+            fcc_sim::check_run(b, &p).with_context(|| {
+                format!(
+                    "this frame and these parameters cannot run on the build in {}",
+                    dir.display()
+                )
+            })?;
+            let cached = fcc_sim::is_cached_dir(dir)?;
+            let model = load_with_progress(cached, || fcc_sim::load_dir(dir))?;
+            let mut dut = Dut::new(model);
+            dut.reset(4);
+            dut.program_run(&p)
+                .context("programming the run registers")?;
+            (p, dut)
+        }
+        _ => {
+            let p = FccParams {
+                rows: frame.rows,
+                cols: frame.cols,
+                ..args.hw.unchecked()
+            };
+            p.validate_for_hardware()
+                .context("this frame and these parameters cannot run on the RTL")?;
+            let cached = fcc_sim::is_cached(&p)?;
+            let model = load_with_progress(cached, || fcc_sim::load(&p))?;
+            let mut dut = Dut::new(model);
+            dut.reset(4);
+            (p, dut)
+        }
     };
-    let hb = crate::progress::Heartbeat::start(&step);
-    let model = fcc_sim::load(&p).context("preparing the Verilator model")?;
-    hb.done();
-    let mut dut = Dut::new(model);
-    dut.reset(4);
     let gold = fcc_sim::expected(&p, &frame)?;
     let run = dut.run_frame(&frame, &drive)?;
     if let Some(out) = &args.output {
@@ -123,7 +189,16 @@ pub fn run(args: &SimArgs, size_given: bool) -> anyhow::Result<()> {
         "PASS: {} labels match the golden model ({source})",
         p.pixels()
     );
-    println!("fcc_top: {}", fcc_rtl::param_summary(&p));
+    match (&args.rtl, &build) {
+        (Some(dir), Some(b)) => {
+            println!("fcc_top: {} ({})", fcc_rtl::param_summary(b), dir.display());
+            println!(
+                "run registers: rows={} cols={} fsize={} th_h={} th_v={}",
+                p.rows, p.cols, p.fsize, p.th_h, p.th_v
+            );
+        }
+        _ => println!("fcc_top: {}", fcc_rtl::param_summary(&p)),
+    }
     println!(
         "clusters {}, provisional labels {}, unique joins {}",
         run.clusters, run.provisional, run.joins
@@ -141,4 +216,24 @@ pub fn run(args: &SimArgs, size_given: bool) -> anyhow::Result<()> {
         run.gear_stalls
     );
     Ok(())
+}
+
+/// Load a Verilator model, saying whether it is being built (minutes) or
+/// loaded from the cache.
+fn load_with_progress(
+    cached: bool,
+    load: impl FnOnce() -> Result<std::sync::Arc<fcc_sim::Model>, fcc_sim::SimError>,
+) -> anyhow::Result<std::sync::Arc<fcc_sim::Model>> {
+    let step = if cached {
+        "loading the cached Verilator model".to_string()
+    } else {
+        format!(
+            "building the Verilator model (first run of this configuration, a few minutes; cached in {})",
+            fcc_sim::cache_root().display()
+        )
+    };
+    let hb = crate::progress::Heartbeat::start(&step);
+    let model = load().context("preparing the Verilator model")?;
+    hb.done();
+    Ok(model)
 }

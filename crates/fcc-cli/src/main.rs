@@ -80,7 +80,7 @@ fn main() {
         Command::Cycles(a) => cmd_cycles::run(a),
         Command::Results(a) => cmd_results::run(a),
         Command::Gen(a) => cmd_gen::run(a),
-        Command::Sim(a) => cmd_sim::run(a, given("sim", "rows") || given("sim", "cols")),
+        Command::Sim(a) => cmd_sim::run(a, &|id| given("sim", id)),
         Command::Synth(a) => cmd_synth::run(a),
         Command::Board(a) => cmd_board::run(a),
     };

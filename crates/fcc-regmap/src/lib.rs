@@ -28,6 +28,7 @@ pub mod offset {
     pub const CLOCK_KHZ: u32 = 0x024;
     pub const CONTROL: u32 = 0x040;
     pub const STATUS: u32 = 0x044;
+    pub const ERROR: u32 = 0x048;
     pub const FRAME_COUNT: u32 = 0x050;
     pub const CLUSTERS: u32 = 0x054;
     pub const PROVISIONAL: u32 = 0x058;
@@ -35,6 +36,11 @@ pub mod offset {
     pub const FRAME_FLAGS: u32 = 0x060;
     pub const JOINS: u32 = 0x064;
     pub const GEAR_STALLS: u32 = 0x068;
+    pub const RUN_K: u32 = 0x080;
+    pub const RUN_TH_H: u32 = 0x084;
+    pub const RUN_TH_V: u32 = 0x088;
+    pub const RUN_ROWS: u32 = 0x08C;
+    pub const RUN_COLS: u32 = 0x090;
 }
 
 /// Bit masks of the fields.
@@ -54,4 +60,25 @@ pub mod bits {
     pub const FLAGS_OVERFLOW: u32 = 1 << 0;
     /// FRAME_FLAGS: the last frame's `tlast` came early or late.
     pub const FLAGS_FRAME_ERROR: u32 = 1 << 1;
+    /// ERROR: a write to RUN_K was refused (sticky, write 1 to clear).
+    pub const ERROR_K: u32 = 1 << 0;
+    /// ERROR: a write to RUN_TH_H was refused.
+    pub const ERROR_TH_H: u32 = 1 << 1;
+    /// ERROR: a write to RUN_TH_V was refused.
+    pub const ERROR_TH_V: u32 = 1 << 2;
+    /// ERROR: a write to RUN_ROWS was refused.
+    pub const ERROR_ROWS: u32 = 1 << 3;
+    /// ERROR: a write to RUN_COLS was refused.
+    pub const ERROR_COLS: u32 = 1 << 4;
 }
+
+/// Largest threshold register value: `floor(th * 256 + 0.5)` of a threshold
+/// below 128 m (the Q7.8 rule of the golden model).
+pub const TH_Q_MAX: u32 = 0x8000;
+
+/// Fewest columns a frame may have (RUN_COLS), in every build. The
+/// representative of a row's first columns is written back a few tens of
+/// cycles after the pixel, and the last pixels of the same row read it for
+/// the next row (the window reads column (j + h) mod C), so a row must be
+/// longer than that pipeline; 32 leaves a margin for K_MAX = 11.
+pub const RUN_COLS_MIN: u32 = 32;

@@ -24,6 +24,8 @@ pub struct FccDistTree {
     pub ent_x: Vec<Signal<In, Bits<16>>>,
     pub ent_y: Vec<Signal<In, Bits<16>>>,
     pub ent_z: Vec<Signal<In, Bits<16>>>,
+    /// -tV^2 (36-bit two's complement), from the run parameters.
+    pub th_v_c: Signal<In, Bits<36>>,
     // To the sort network.
     pub centre: Signal<Out, Ctr>,
     pub hit: Vec<Signal<Out, Bit>>,
@@ -45,9 +47,10 @@ impl FccDistTree {
             ent_x: vec_of(n),
             ent_y: vec_of(n),
             ent_z: vec_of(n),
+            th_v_c: Default::default(),
             centre: Default::default(),
             hit: vec_of(n),
-            units: (0..n).map(|_| FccDistUnit::new(p)).collect(),
+            units: (0..n).map(|_| FccDistUnit::new()).collect(),
             cd: (0..SQ_LATENCY).map(|_| Default::default()).collect(),
             c0: Default::default(),
             ctr_zero: Constant::new(Ctr::default()),
@@ -68,6 +71,7 @@ impl Logic for FccDistTree {
             self.units[e].nx.next = self.ent_x[e].val();
             self.units[e].ny.next = self.ent_y[e].val();
             self.units[e].nz.next = self.ent_z[e].val();
+            self.units[e].th_c.next = self.th_v_c.val();
             self.hit[e].next = self.units[e].hit.val();
         }
         self.c0.next.valid = self.centre_in.val().valid;

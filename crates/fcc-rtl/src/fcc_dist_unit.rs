@@ -1,8 +1,8 @@
 //! `FccDistUnit`: one distance processor of `fcc_dist_tree`: is the centre
 //! closer than `tV` (strictly) to one window position? An `FccSqDist` (seven
-//! registered stages) with the position's `ok` as its enable.
+//! registered stages) with the position's `ok` as its enable and `-tV^2` as
+//! its addend.
 
-use fcc_params::FccParams;
 use rust_hdl::prelude::*;
 
 use crate::fcc_sq_dist::FccSqDist;
@@ -19,13 +19,15 @@ pub struct FccDistUnit {
     pub nx: Signal<In, Bits<16>>,
     pub ny: Signal<In, Bits<16>>,
     pub nz: Signal<In, Bits<16>>,
+    /// -tV^2 (36-bit two's complement), from the run parameters.
+    pub th_c: Signal<In, Bits<36>>,
     /// `SQ_LATENCY` cycles later (registered).
     pub hit: Signal<Out, Bit>,
     sq: FccSqDist,
 }
 
 impl FccDistUnit {
-    pub fn new(p: &FccParams) -> Self {
+    pub fn new() -> Self {
         Self {
             clk: Default::default(),
             cx: Default::default(),
@@ -35,9 +37,16 @@ impl FccDistUnit {
             nx: Default::default(),
             ny: Default::default(),
             nz: Default::default(),
+            th_c: Default::default(),
             hit: Default::default(),
-            sq: FccSqDist::new(p.th_v_sq() as u64, false),
+            sq: FccSqDist::new(),
         }
+    }
+}
+
+impl Default for FccDistUnit {
+    fn default() -> Self {
+        Self::new()
     }
 }
 
@@ -52,6 +61,7 @@ impl Logic for FccDistUnit {
         self.sq.by.next = self.ny.val();
         self.sq.bz.next = self.nz.val();
         self.sq.en_in.next = self.nok.val();
+        self.sq.c.next = self.th_c.val();
         self.hit.next = self.sq.hit.val();
     }
 }

@@ -16,7 +16,8 @@
 //!   two multiplexers; whether a label fits is checked one stage later (labels
 //!   are allocated in order, so "raw label > 2^B - 1" is exactly "labels ran out").
 //! * N8: the range and ring comparisons; N9: the output codes; `out` is
-//!   registered, ten cycles after `pix`.
+//!   registered, ten cycles after `pix`. The window's read column
+//!   `(j + h) mod C` (`rdcol`) follows the frame's columns (`last_col`).
 
 use fcc_params::FccParams;
 use rust_hdl::prelude::*;
@@ -32,6 +33,10 @@ pub struct FccIntra {
     pub clk: Signal<In, Clock>,
     pub rst: Signal<In, Bit>,
     pub pix: Signal<In, Pix>,
+    /// The frame's last column, C - 1 (stable while a frame runs).
+    pub last_col: Signal<In, Bits<12>>,
+    /// -(tH^2 + 1) (36-bit two's complement), from the run parameters.
+    pub th_h_c: Signal<In, Bits<36>>,
     pub out: Signal<Out, Lab>,
     // Status of the frame in progress (stable after its last pixel).
     pub provisional: Signal<Out, Bits<17>>,
@@ -75,6 +80,8 @@ pub struct FccIntra {
     fl9: DFF<Bits<16>>,
     cur9: DFF<Bits<16>>,
     rdcol9: DFF<Bits<12>>,
+    /// `C - h`: the first column whose read address wraps.
+    wrap_col: DFF<Bits<12>>,
     out_q: DFF<Lab>,
     // Status.
     unl: DFF<Bits<20>>,
@@ -101,7 +108,7 @@ pub struct FccIntra {
     max20: Constant<Bits<20>>,
     max17: Constant<Bits<17>>,
     half: Constant<Bits<12>>,
-    wrap_col: Constant<Bits<12>>,
+    half_m1: Constant<Bits<12>>,
     st_empty: Constant<Bits<2>>,
     st_cont: Constant<Bits<2>>,
     st_new: Constant<Bits<2>>,
@@ -110,11 +117,12 @@ pub struct FccIntra {
 
 impl FccIntra {
     pub fn new(p: &FccParams) -> Self {
-        let th = p.th_h_sq() as u64;
         Self {
             clk: Default::default(),
             rst: Default::default(),
             pix: Default::default(),
+            last_col: Default::default(),
+            th_h_c: Default::default(),
             out: Default::default(),
             provisional: Default::default(),
             overflow: Default::default(),
@@ -126,8 +134,8 @@ impl FccIntra {
             first_x: Default::default(),
             first_y: Default::default(),
             first_z: Default::default(),
-            near: FccSqDist::new(th, true),
-            ring: FccSqDist::new(th, true),
+            near: FccSqDist::new(),
+            ring: FccSqDist::new(),
             pd: (0..SQ_LATENCY).map(|_| Default::default()).collect(),
             fvd: (0..SQ_LATENCY).map(|_| Default::default()).collect(),
             raw: Default::default(),
@@ -152,6 +160,7 @@ impl FccIntra {
             fl9: Default::default(),
             cur9: Default::default(),
             rdcol9: Default::default(),
+            wrap_col: Default::default(),
             out_q: Default::default(),
             unl: Default::default(),
             rm1: Default::default(),
@@ -175,7 +184,7 @@ impl FccIntra {
             max20: kb(u64::from(p.max_label())),
             max17: kb(u64::from(p.max_label())),
             half: kb(p.half() as u64),
-            wrap_col: kb((p.cols - p.half()) as u64),
+            half_m1: kb(p.half() as u64 - 1),
             st_empty: kb(0),
             st_cont: kb(1),
             st_new: kb(2),
@@ -190,7 +199,7 @@ impl Logic for FccIntra {
         dff_setup!(
             self, clk, prev_x, prev_y, prev_z, has_prev, first_x, first_y, first_z, raw, cur, fl,
             any, p8, cont8, lab8, fl8, cur8, any8, ringle8, p9, cont9, lab9, labok9, ring9, flok9,
-            curok9, ne9, fl9, cur9, rdcol9, out_q, unl, rm1, prov, ovf
+            curok9, ne9, fl9, cur9, rdcol9, wrap_col, out_q, unl, rm1, prov, ovf
         );
         for i in 0..7 {
             self.pd[i].clock.next = self.clk.val();
@@ -207,6 +216,8 @@ impl Logic for FccIntra {
         self.near.by.next = self.prev_y.q.val();
         self.near.bz.next = self.prev_z.q.val();
         self.near.en_in.next = self.pix.val().valid & self.pix.val().ok & self.hp_eff.val();
+        self.near.c.next = self.th_h_c.val();
+        self.ring.c.next = self.th_h_c.val();
         // Ring: the row's first valid point against its last valid point.
         self.ring.clk.next = self.clk.val();
         self.ring.en_in.next = true;
@@ -297,9 +308,10 @@ impl Logic for FccIntra {
         self.fl9.d.next = self.fl8.q.val().get_bits::<16>(0);
         self.cur9.d.next = self.cur8.q.val().get_bits::<16>(0);
         self.rdcol9.d.next = self.p8.q.val().col + self.half.val();
-        if self.p8.q.val().col >= self.wrap_col.val() {
-            self.rdcol9.d.next = self.p8.q.val().col - self.wrap_col.val();
+        if self.p8.q.val().col >= self.wrap_col.q.val() {
+            self.rdcol9.d.next = self.p8.q.val().col - self.wrap_col.q.val();
         }
+        self.wrap_col.d.next = self.last_col.val() - self.half_m1.val();
         // ---- N9: output codes.
         self.lok.next = self.p9.q.val().valid & self.p9.q.val().ok & self.labok9.q.val();
         self.out_q.d.next.valid = self.p9.q.val().valid;

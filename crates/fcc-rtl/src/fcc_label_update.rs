@@ -82,6 +82,11 @@ pub struct FccLabelUpdate {
     ws2: DFF<Bits<2>>,
     wsub: DFF<Bits<2>>,
     waddr: DFF<Bits<17>>,
+    /// Pixels written in this frame so far, and at its last pixel the
+    /// frame's beats less one and labels in its last beat.
+    wcnt: DFF<Bits<20>>,
+    beats_m1: DFF<Bits<20>>,
+    last_n: DFF<Bits<3>>,
     // R0 .. R3.
     active: DFF<Bit>,
     rpix: DFF<Bits<20>>,
@@ -141,6 +146,7 @@ pub struct FccLabelUpdate {
     lab: Vec<Signal<Local, Bits<16>>>,
     nsrc: Vec<Signal<Local, Bits<3>>>,
     runv: Signal<Local, Bits<16>>,
+    wrem: Signal<Local, Bits<2>>,
     // Constants.
     slot_off: Vec<Constant<Bits<2>>>,
     slot_idx: Vec<Constant<Bits<3>>>,
@@ -148,9 +154,9 @@ pub struct FccLabelUpdate {
     n_of: Vec<Constant<Bits<3>>>,
     g_of: Vec<Constant<Bits<4>>>,
     k_of: Vec<Constant<Bits<3>>>,
-    /// Beats of a frame, less one; labels in its last beat.
-    beats_m1: Constant<Bits<20>>,
-    last_n: Constant<Bits<3>>,
+    /// log2 of the labels per beat; labels per beat less one.
+    lpb_log: Constant<Bits<2>>,
+    lpb_m1: Constant<Bits<2>>,
     one20: Constant<Bits<20>>,
     lpb20: Constant<Bits<20>>,
     lpb3: Constant<Bits<3>>,
@@ -203,6 +209,9 @@ impl FccLabelUpdate {
             ws2: Default::default(),
             wsub: Default::default(),
             waddr: Default::default(),
+            wcnt: Default::default(),
+            beats_m1: Default::default(),
+            last_n: Default::default(),
             active: Default::default(),
             rpix: Default::default(),
             beats: Default::default(),
@@ -254,14 +263,15 @@ impl FccLabelUpdate {
             lab: vec_of(4),
             nsrc: vec_of(4),
             runv: Default::default(),
+            wrem: Default::default(),
             slot_off: (0..l).map(|i| kb(i as u64)).collect(),
             slot_idx: (0..l).map(|i| kb(i as u64)).collect(),
             keep_n: (0..=4).map(|n| kb((1u64 << (2 * n)) - 1)).collect(),
             n_of: (0..=4).map(|n| kb(n as u64)).collect(),
             g_of: (0..GEAR + 2).map(|n| kb(n as u64)).collect(),
             k_of: (0..4).map(|k| kb(2 + k as u64)).collect(),
-            beats_m1: kb((p.pixels().div_ceil(l) - 1) as u64),
-            last_n: kb((p.pixels() - (p.pixels().div_ceil(l) - 1) * l) as u64),
+            lpb_log: kb(u64::from(l.trailing_zeros())),
+            lpb_m1: kb(l as u64 - 1),
             one20: kb(1),
             lpb20: kb(l as u64),
             lpb3: kb(l as u64),
@@ -293,9 +303,9 @@ impl Logic for FccLabelUpdate {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clk, ws0, ws1, ws2, wsub, waddr, active, rpix, beats, lastb, outst, r1v, r1_sub,
-            r1_n, r1_last, r2v, r2_sub, r2_n, r2_last, d3v, d3, skn, u, cur_run, gn, o_valid,
-            o_data, o_keep, o_last, gstall
+            self, clk, ws0, ws1, ws2, wsub, waddr, wcnt, beats_m1, last_n, active, rpix, beats,
+            lastb, outst, r1v, r1_sub, r1_n, r1_last, r2v, r2_sub, r2_n, r2_last, d3v, d3, skn, u,
+            cur_run, gn, o_valid, o_data, o_keep, o_last, gstall
         );
         for i in 0..4 {
             self.sk[i].clock.next = self.clk.val();
@@ -308,6 +318,7 @@ impl Logic for FccLabelUpdate {
             self.g[i].d.next = self.g[i].q.val();
         }
         // ---- Frame-buffer writes: four codes per word.
+        self.wrem.next = self.wcnt.q.val().get_bits::<2>(0) & self.lpb_m1.val();
         self.fb.clk.next = self.clk.val();
         self.fb.write_en.next = false;
         self.fb.write_addr.next = self.waddr.q.val();
@@ -339,9 +350,23 @@ impl Logic for FccLabelUpdate {
                 self.fb.write_en.next = true;
                 self.waddr.d.next = self.waddr.q.val() + self.one17.val();
             }
+            self.wcnt.d.next = self.wcnt.q.val() + self.one20.val();
             if self.wr_last.val() {
                 self.wsub.d.next = self.b2_0.val();
                 self.waddr.d.next = self.zero17.val();
+                // `wcnt` is the frame's pixels less one (L is a power of two).
+                self.wcnt.d.next = self.zero20.val();
+                self.beats_m1.d.next = self.wcnt.q.val() >> self.lpb_log.val();
+                self.last_n.d.next = self.n_of[1].val();
+                if self.wrem.val() == self.b2_1.val() {
+                    self.last_n.d.next = self.n_of[2].val();
+                }
+                if self.wrem.val() == self.b2_2.val() {
+                    self.last_n.d.next = self.n_of[3].val();
+                }
+                if self.wrem.val() == self.b2_3.val() {
+                    self.last_n.d.next = self.n_of[4].val();
+                }
             }
         }
         // ---- The head beat: collect its new labels, then leave.
@@ -526,7 +551,7 @@ impl Logic for FccLabelUpdate {
             self.r1_n.d.next = self.lpb3.val();
             self.r1_last.d.next = false;
             if self.lastb.q.val() {
-                self.r1_n.d.next = self.last_n.val();
+                self.r1_n.d.next = self.last_n.q.val();
                 self.r1_last.d.next = true;
                 self.active.d.next = false;
             }
@@ -621,8 +646,8 @@ impl Logic for FccLabelUpdate {
         if self.rb_start.val() {
             self.active.d.next = true;
             self.rpix.d.next = self.zero20.val();
-            self.beats.d.next = self.beats_m1.val();
-            self.lastb.d.next = self.beats_m1.val() == self.zero20.val();
+            self.beats.d.next = self.beats_m1.q.val();
+            self.lastb.d.next = self.beats_m1.q.val() == self.zero20.val();
             self.outst.d.next = self.zero3.val();
             self.r1v.d.next = false;
             self.r2v.d.next = false;
@@ -645,6 +670,7 @@ impl Logic for FccLabelUpdate {
             self.gn.d.next = self.zero4.val();
             self.wsub.d.next = self.b2_0.val();
             self.waddr.d.next = self.zero17.val();
+            self.wcnt.d.next = self.zero20.val();
         }
         self.m_axis_tdata.next = self.o_data.q.val().into();
         self.m_axis_tkeep.next = self.o_keep.q.val();

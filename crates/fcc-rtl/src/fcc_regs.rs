@@ -15,13 +15,32 @@
 //! FRAME_DONE and IRQ_ENABLE. `core_rst` (registered) resets the pixel
 //! pipeline on `rst` and for one cycle after a write of CONTROL.SOFT_RESET;
 //! the register file itself is reset by `rst` only.
+//!
+//! Run parameters: a write to RUN_K .. RUN_COLS is checked against
+//! `regmap::run_range`; a value outside it is refused (the register keeps its
+//! value, the register's ERROR bit is set). An accepted value goes into the
+//! register software reads back (the shadow); the core uses the *active* copy
+//! (`run_*` outputs), loaded from the shadow in every cycle the core is idle
+//! (waiting for a frame's first pixel), so a frame never sees a change. A
+//! threshold is also squared for the distance units, serially (shift and add,
+//! at most 18 cycles, no DSP) before the write's response is given: the
+//! shadow threshold and its square change together. `run_th_h_c` =
+//! -(tH^2 + 1) and `run_th_v_c` = -tV^2 (36-bit two's complement) are the
+//! addends of the distance units' first DSP, so that a hit is the sign of the
+//! sum (`d2 <= tH^2` and `d2 < tV^2`).
 
 use fcc_params::FccParams;
 use rust_hdl::prelude::*;
 
 use crate::fcc_reg_mux::{FccRegMux, MuxSrc, WORD_BITS};
+use crate::fcc_th_square::FccThSquare;
 use crate::regmap::{self, bits, offset, ADDR_BITS};
 use crate::types::kb;
+
+/// `-(v)` in 36-bit two's complement.
+fn neg36(v: u64) -> u64 {
+    (1u64 << 36).wrapping_sub(v) & ((1u64 << 36) - 1)
+}
 
 /// A `MuxSrc::Flags` list from (field mask, flag input) pairs.
 fn flags(f: &[(u32, usize)]) -> Vec<Option<usize>> {
@@ -82,6 +101,14 @@ pub struct FccRegs {
     pub st_frame_error: Signal<Out, Bit>,
     pub st_joins: Signal<Out, Bits<24>>,
     pub st_gear_stalls: Signal<Out, Bits<24>>,
+    // Active run parameters (constant during a frame).
+    pub run_k: Signal<Out, Bits<4>>,
+    /// -(tH^2 + 1), 36-bit two's complement.
+    pub run_th_h_c: Signal<Out, Bits<36>>,
+    /// -tV^2, 36-bit two's complement.
+    pub run_th_v_c: Signal<Out, Bits<36>>,
+    pub run_rows: Signal<Out, Bits<8>>,
+    pub run_cols: Signal<Out, Bits<13>>,
     mux: FccRegMux,
     // Write channel.
     aw_v: DFF<Bit>,
@@ -106,10 +133,64 @@ pub struct FccRegs {
     s_err: DFF<Bit>,
     s_joins: DFF<Bits<24>>,
     s_gstall: DFF<Bits<24>>,
+    // Run parameters: shadow (written, read back) and active (used).
+    sh_k: DFF<Bits<16>>,
+    sh_thh: DFF<Bits<16>>,
+    sh_thv: DFF<Bits<16>>,
+    sh_thh_c: DFF<Bits<36>>,
+    sh_thv_c: DFF<Bits<36>>,
+    sh_rows: DFF<Bits<16>>,
+    sh_cols: DFF<Bits<16>>,
+    act_k: DFF<Bits<4>>,
+    act_thh_c: DFF<Bits<36>>,
+    act_thv_c: DFF<Bits<36>>,
+    act_rows: DFF<Bits<8>>,
+    act_cols: DFF<Bits<13>>,
+    err_k: DFF<Bit>,
+    err_thh: DFF<Bit>,
+    err_thv: DFF<Bit>,
+    err_rows: DFF<Bit>,
+    err_cols: DFF<Bit>,
+    // Squarer of a threshold write; `sq_v`: TH_V (else TH_H); `sq_a`: the
+    // value; `sq_busy_q`: `sq.busy` one cycle late (its fall is the end).
+    sq: FccThSquare,
+    sq_v: DFF<Bit>,
+    sq_a: DFF<Bits<16>>,
+    sq_busy_q: DFF<Bit>,
+    th_ok: Signal<Local, Bit>,
     wr: Signal<Local, Bit>,
     clear: Signal<Local, Bit>,
     a_control: Constant<Bits<WORD_BITS>>,
     a_status: Constant<Bits<WORD_BITS>>,
+    a_error: Constant<Bits<WORD_BITS>>,
+    a_run_k: Constant<Bits<WORD_BITS>>,
+    a_run_thh: Constant<Bits<WORD_BITS>>,
+    a_run_thv: Constant<Bits<WORD_BITS>>,
+    a_run_rows: Constant<Bits<WORD_BITS>>,
+    a_run_cols: Constant<Bits<WORD_BITS>>,
+    bit_err_k: Constant<Bits<32>>,
+    bit_err_thh: Constant<Bits<32>>,
+    bit_err_thv: Constant<Bits<32>>,
+    bit_err_rows: Constant<Bits<32>>,
+    bit_err_cols: Constant<Bits<32>>,
+    k_min: Constant<Bits<32>>,
+    k_max: Constant<Bits<32>>,
+    th_min: Constant<Bits<32>>,
+    th_max: Constant<Bits<32>>,
+    rows_min: Constant<Bits<32>>,
+    rows_max: Constant<Bits<32>>,
+    cols_min: Constant<Bits<32>>,
+    cols_max: Constant<Bits<32>>,
+    def_k: Constant<Bits<4>>,
+    def_thh: Constant<Bits<16>>,
+    def_thv: Constant<Bits<16>>,
+    def_thh_c: Constant<Bits<36>>,
+    def_thv_c: Constant<Bits<36>>,
+    def_rows: Constant<Bits<8>>,
+    def_cols: Constant<Bits<13>>,
+    def_k16: Constant<Bits<16>>,
+    def_rows16: Constant<Bits<16>>,
+    def_cols16: Constant<Bits<16>>,
     bit_soft: Constant<Bits<32>>,
     bit_irq: Constant<Bits<32>>,
     bit_clear: Constant<Bits<32>>,
@@ -134,7 +215,21 @@ impl FccRegs {
                 offset::UNLABELLED => MuxSrc::W20(0),
                 offset::JOINS => MuxSrc::W24(0),
                 offset::GEAR_STALLS => MuxSrc::W24(1),
-                // Flags: 0 irq_en, 1 done_sticky, 2 idle, 3 overflow, 4 frame_error.
+                // Read back: the shadow values.
+                offset::RUN_K => MuxSrc::W16(2),
+                offset::RUN_TH_H => MuxSrc::W16(3),
+                offset::RUN_TH_V => MuxSrc::W16(4),
+                offset::RUN_ROWS => MuxSrc::W16(5),
+                offset::RUN_COLS => MuxSrc::W16(6),
+                // Flags: 0 irq_en, 1 done_sticky, 2 idle, 3 overflow,
+                // 4 frame_error, 5 .. 9 the ERROR bits.
+                offset::ERROR => MuxSrc::Flags(flags(&[
+                    (bits::ERROR_K, 5),
+                    (bits::ERROR_TH_H, 6),
+                    (bits::ERROR_TH_V, 7),
+                    (bits::ERROR_ROWS, 8),
+                    (bits::ERROR_COLS, 9),
+                ])),
                 offset::CONTROL => MuxSrc::Flags(flags(&[(bits::CONTROL_IRQ_ENABLE, 0)])),
                 offset::STATUS => MuxSrc::Flags(flags(&[
                     (bits::STATUS_FRAME_DONE, 1),
@@ -151,6 +246,19 @@ impl FccRegs {
             };
             entries.push((r.offset, src));
         }
+        let range = |off| {
+            let r = regmap::run_range(p, off).expect("a run register");
+            (kb(u64::from(r.min)), kb(u64::from(r.max)))
+        };
+        let (k_min, k_max) = range(offset::RUN_K);
+        let (th_min, th_max) = range(offset::RUN_TH_H);
+        assert_eq!(
+            regmap::run_range(p, offset::RUN_TH_H),
+            regmap::run_range(p, offset::RUN_TH_V)
+        );
+        let (rows_min, rows_max) = range(offset::RUN_ROWS);
+        let (cols_min, cols_max) = range(offset::RUN_COLS);
+        let bit = |b: u32| kb(u64::from(b));
         Self {
             clk: Default::default(),
             rst: Default::default(),
@@ -190,6 +298,11 @@ impl FccRegs {
             st_frame_error: Default::default(),
             st_joins: Default::default(),
             st_gear_stalls: Default::default(),
+            run_k: Default::default(),
+            run_th_h_c: Default::default(),
+            run_th_v_c: Default::default(),
+            run_rows: Default::default(),
+            run_cols: Default::default(),
             mux: FccRegMux::new(entries),
             aw_v: Default::default(),
             aw_a: Default::default(),
@@ -211,10 +324,61 @@ impl FccRegs {
             s_err: Default::default(),
             s_joins: Default::default(),
             s_gstall: Default::default(),
+            sh_k: Default::default(),
+            sh_thh: Default::default(),
+            sh_thv: Default::default(),
+            sh_thh_c: Default::default(),
+            sh_thv_c: Default::default(),
+            sh_rows: Default::default(),
+            sh_cols: Default::default(),
+            act_k: Default::default(),
+            act_thh_c: Default::default(),
+            act_thv_c: Default::default(),
+            act_rows: Default::default(),
+            act_cols: Default::default(),
+            err_k: Default::default(),
+            err_thh: Default::default(),
+            err_thv: Default::default(),
+            err_rows: Default::default(),
+            err_cols: Default::default(),
+            sq: FccThSquare::new(),
+            sq_v: Default::default(),
+            sq_a: Default::default(),
+            sq_busy_q: Default::default(),
+            th_ok: Default::default(),
             wr: Default::default(),
             clear: Default::default(),
             a_control: word(offset::CONTROL),
             a_status: word(offset::STATUS),
+            a_error: word(offset::ERROR),
+            a_run_k: word(offset::RUN_K),
+            a_run_thh: word(offset::RUN_TH_H),
+            a_run_thv: word(offset::RUN_TH_V),
+            a_run_rows: word(offset::RUN_ROWS),
+            a_run_cols: word(offset::RUN_COLS),
+            bit_err_k: bit(bits::ERROR_K),
+            bit_err_thh: bit(bits::ERROR_TH_H),
+            bit_err_thv: bit(bits::ERROR_TH_V),
+            bit_err_rows: bit(bits::ERROR_ROWS),
+            bit_err_cols: bit(bits::ERROR_COLS),
+            k_min,
+            k_max,
+            th_min,
+            th_max,
+            rows_min,
+            rows_max,
+            cols_min,
+            cols_max,
+            def_k: kb(p.fsize as u64),
+            def_thh: kb(p.th_h_q() as u64),
+            def_thv: kb(p.th_v_q() as u64),
+            def_thh_c: kb(neg36(p.th_h_sq() as u64 + 1)),
+            def_thv_c: kb(neg36(p.th_v_sq() as u64)),
+            def_rows: kb(p.rows as u64),
+            def_cols: kb(p.cols as u64),
+            def_k16: kb(p.fsize as u64),
+            def_rows16: kb(p.rows as u64),
+            def_cols16: kb(p.cols as u64),
             bit_soft: kb(u64::from(bits::CONTROL_SOFT_RESET)),
             bit_irq: kb(u64::from(bits::CONTROL_IRQ_ENABLE)),
             bit_clear: kb(u64::from(bits::CONTROL_CLEAR)),
@@ -254,10 +418,42 @@ impl Logic for FccRegs {
             s_unl,
             s_err,
             s_joins,
-            s_gstall
+            s_gstall,
+            sh_k,
+            sh_thh,
+            sh_thv,
+            sh_thh_c,
+            sh_thv_c,
+            sh_rows,
+            sh_cols,
+            act_k,
+            act_thh_c,
+            act_thv_c,
+            act_rows,
+            act_cols,
+            err_k,
+            err_thh,
+            err_thv,
+            err_rows,
+            err_cols,
+            sq_v,
+            sq_a,
+            sq_busy_q
         );
+        self.sq.clk.next = self.clk.val();
+        self.sq.rst.next = self.rst.val();
+        self.sq.a.next = self.w_d.q.val().get_bits::<16>(0);
+        self.sq.start.next = false;
         // ---- Write channel: AW and W held in either order, then one write.
-        self.wr.next = self.aw_v.q.val() & self.w_v.q.val() & !self.b_v.q.val();
+        // (A threshold write is answered when its square is ready: no write
+        // is performed while the squarer runs.)
+        self.wr.next = self.aw_v.q.val()
+            & self.w_v.q.val()
+            & !self.b_v.q.val()
+            & !self.sq.busy.val()
+            & !self.sq_busy_q.q.val();
+        self.th_ok.next =
+            (self.w_d.q.val() >= self.th_min.val()) & (self.w_d.q.val() <= self.th_max.val());
         if self.s_axil_awvalid.val() & !self.aw_v.q.val() {
             self.aw_v.d.next = true;
             self.aw_a.d.next = self.s_axil_awaddr.val().get_bits::<WORD_BITS>(2);
@@ -285,6 +481,93 @@ impl Logic for FccRegs {
             {
                 self.done_sticky.d.next = false;
             }
+            // ERROR: write 1 to clear.
+            if self.aw_a.q.val() == self.a_error.val() {
+                if (self.w_d.q.val() & self.bit_err_k.val()) != self.zero32.val() {
+                    self.err_k.d.next = false;
+                }
+                if (self.w_d.q.val() & self.bit_err_thh.val()) != self.zero32.val() {
+                    self.err_thh.d.next = false;
+                }
+                if (self.w_d.q.val() & self.bit_err_thv.val()) != self.zero32.val() {
+                    self.err_thv.d.next = false;
+                }
+                if (self.w_d.q.val() & self.bit_err_rows.val()) != self.zero32.val() {
+                    self.err_rows.d.next = false;
+                }
+                if (self.w_d.q.val() & self.bit_err_cols.val()) != self.zero32.val() {
+                    self.err_cols.d.next = false;
+                }
+            }
+            // Run parameters: taken if in range, else refused with an error bit.
+            if self.aw_a.q.val() == self.a_run_k.val() {
+                if (self.w_d.q.val() >= self.k_min.val())
+                    & (self.w_d.q.val() <= self.k_max.val())
+                    & self.w_d.q.val().get_bit(0)
+                {
+                    self.sh_k.d.next = self.w_d.q.val().get_bits::<16>(0);
+                } else {
+                    self.err_k.d.next = true;
+                }
+            }
+            if self.aw_a.q.val() == self.a_run_rows.val() {
+                if (self.w_d.q.val() >= self.rows_min.val())
+                    & (self.w_d.q.val() <= self.rows_max.val())
+                {
+                    self.sh_rows.d.next = self.w_d.q.val().get_bits::<16>(0);
+                } else {
+                    self.err_rows.d.next = true;
+                }
+            }
+            if self.aw_a.q.val() == self.a_run_cols.val() {
+                if (self.w_d.q.val() >= self.cols_min.val())
+                    & (self.w_d.q.val() <= self.cols_max.val())
+                {
+                    self.sh_cols.d.next = self.w_d.q.val().get_bits::<16>(0);
+                } else {
+                    self.err_cols.d.next = true;
+                }
+            }
+            // A threshold starts the squarer; the response waits for it.
+            if self.aw_a.q.val() == self.a_run_thh.val() {
+                if self.th_ok.val() {
+                    self.b_v.d.next = false;
+                    self.sq.start.next = true;
+                    self.sq_v.d.next = false;
+                } else {
+                    self.err_thh.d.next = true;
+                }
+            }
+            if self.aw_a.q.val() == self.a_run_thv.val() {
+                if self.th_ok.val() {
+                    self.b_v.d.next = false;
+                    self.sq.start.next = true;
+                    self.sq_v.d.next = true;
+                } else {
+                    self.err_thv.d.next = true;
+                }
+            }
+            self.sq_a.d.next = self.w_d.q.val().get_bits::<16>(0);
+        }
+        // ---- Squarer done: the shadow threshold and its square together.
+        self.sq_busy_q.d.next = self.sq.busy.val();
+        if self.sq_busy_q.q.val() & !self.sq.busy.val() {
+            self.b_v.d.next = true;
+            if self.sq_v.q.val() {
+                self.sh_thv.d.next = self.sq_a.q.val();
+                self.sh_thv_c.d.next = self.sq.c_lt.val();
+            } else {
+                self.sh_thh.d.next = self.sq_a.q.val();
+                self.sh_thh_c.d.next = self.sq.c_le.val();
+            }
+        }
+        // ---- Active run parameters: loaded while the core waits for a frame.
+        if self.idle.val() {
+            self.act_k.d.next = self.sh_k.q.val().get_bits::<4>(0);
+            self.act_thh_c.d.next = self.sh_thh_c.q.val();
+            self.act_thv_c.d.next = self.sh_thv_c.q.val();
+            self.act_rows.d.next = self.sh_rows.q.val().get_bits::<8>(0);
+            self.act_cols.d.next = self.sh_cols.q.val().get_bits::<13>(0);
         }
         // ---- Frame end: latch the status, count, set FRAME_DONE.
         self.done_q.d.next = self.frame_end.val();
@@ -323,6 +606,16 @@ impl Logic for FccRegs {
         self.mux.flags[2].next = self.idle.val();
         self.mux.flags[3].next = self.s_ovf.q.val();
         self.mux.flags[4].next = self.s_err.q.val();
+        self.mux.flags[5].next = self.err_k.q.val();
+        self.mux.flags[6].next = self.err_thh.q.val();
+        self.mux.flags[7].next = self.err_thv.q.val();
+        self.mux.flags[8].next = self.err_rows.q.val();
+        self.mux.flags[9].next = self.err_cols.q.val();
+        self.mux.w16[2].next = self.sh_k.q.val();
+        self.mux.w16[3].next = self.sh_thh.q.val();
+        self.mux.w16[4].next = self.sh_thv.q.val();
+        self.mux.w16[5].next = self.sh_rows.q.val();
+        self.mux.w16[6].next = self.sh_cols.q.val();
         if self.s_axil_arvalid.val() & !self.r_v.q.val() {
             self.r_v.d.next = true;
             self.r_d.d.next = self.mux.data.val();
@@ -349,6 +642,24 @@ impl Logic for FccRegs {
             self.s_err.d.next = false;
             self.s_joins.d.next = self.zero24.val();
             self.s_gstall.d.next = self.zero24.val();
+            self.sh_k.d.next = self.def_k16.val();
+            self.sh_thh.d.next = self.def_thh.val();
+            self.sh_thv.d.next = self.def_thv.val();
+            self.sh_thh_c.d.next = self.def_thh_c.val();
+            self.sh_thv_c.d.next = self.def_thv_c.val();
+            self.sh_rows.d.next = self.def_rows16.val();
+            self.sh_cols.d.next = self.def_cols16.val();
+            self.act_k.d.next = self.def_k.val();
+            self.act_thh_c.d.next = self.def_thh_c.val();
+            self.act_thv_c.d.next = self.def_thv_c.val();
+            self.act_rows.d.next = self.def_rows.val();
+            self.act_cols.d.next = self.def_cols.val();
+            self.err_k.d.next = false;
+            self.err_thh.d.next = false;
+            self.err_thv.d.next = false;
+            self.err_rows.d.next = false;
+            self.err_cols.d.next = false;
+            self.sq_busy_q.d.next = false;
         }
         // ---- Outputs.
         self.s_axil_awready.next = !self.aw_v.q.val();
@@ -369,5 +680,10 @@ impl Logic for FccRegs {
         self.st_frame_error.next = self.s_err.q.val();
         self.st_joins.next = self.s_joins.q.val();
         self.st_gear_stalls.next = self.s_gstall.q.val();
+        self.run_k.next = self.act_k.q.val();
+        self.run_th_h_c.next = self.act_thh_c.q.val();
+        self.run_th_v_c.next = self.act_thv_c.q.val();
+        self.run_rows.next = self.act_rows.q.val();
+        self.run_cols.next = self.act_cols.q.val();
     }
 }

@@ -113,7 +113,16 @@ pub struct FccTop {
     credits: DFF<Bits<10>>,
     room: DFF<Bit>,
     last_seen: DFF<Bit>,
+    /// Run size of the frame: `run_cols - 1`, `run_cols - 2`, `run_rows - 2`,
+    /// `run_rows == 1`.
+    last_col: DFF<Bits<12>>,
+    pen_col: DFF<Bits<12>>,
+    pen_row: DFF<Bits<8>>,
+    one_row: DFF<Bit>,
     // Combinational.
+    /// Rows and columns of the frame (the run registers).
+    run_rows: Signal<Local, Bits<8>>,
+    run_cols: Signal<Local, Bits<13>>,
     accept: Signal<Local, Bit>,
     beat: Signal<Local, Bit>,
     slot: Signal<Local, Bit>,
@@ -133,8 +142,8 @@ pub struct FccTop {
     one8: Constant<Bits<8>>,
     zero12: Constant<Bits<12>>,
     one12: Constant<Bits<12>>,
-    pen_col: Constant<Bits<12>>,
-    pen_row: Constant<Bits<8>>,
+    two8: Constant<Bits<8>>,
+    two12: Constant<Bits<12>>,
     one10: Constant<Bits<10>>,
     two10: Constant<Bits<10>>,
     zero10: Constant<Bits<10>>,
@@ -208,6 +217,12 @@ impl FccTop {
             credits: Default::default(),
             room: Default::default(),
             last_seen: Default::default(),
+            last_col: Default::default(),
+            pen_col: Default::default(),
+            pen_row: Default::default(),
+            one_row: Default::default(),
+            run_rows: Default::default(),
+            run_cols: Default::default(),
             accept: Default::default(),
             beat: Default::default(),
             slot: Default::default(),
@@ -226,8 +241,8 @@ impl FccTop {
             one8: kb(1),
             zero12: kb(0),
             one12: kb(1),
-            pen_col: kb(p.cols as u64 - 2),
-            pen_row: kb(p.rows as u64 - 2),
+            two8: kb(2),
+            two12: kb(2),
             one10: kb(1),
             two10: kb(2),
             zero10: kb(0),
@@ -241,7 +256,8 @@ impl Logic for FccTop {
     fn update(&mut self) {
         dff_setup!(
             self, clk, fsm, tready_q, pad_go, slot_q, row, col, col0, col_last, row_last, first,
-            pad, discard, in_done, err, credits, room, last_seen
+            pad, discard, in_done, err, credits, room, last_seen, last_col, pen_col, pen_row,
+            one_row
         );
         self.intra.clk.next = self.clk.val();
         self.window.clk.next = self.clk.val();
@@ -277,6 +293,15 @@ impl Logic for FccTop {
         self.regs.frame_error.next = self.err.q.val();
         self.regs.joins.next = self.sort_net.joins.val();
         self.regs.gear_stalls.next = self.label_update.gear_stalls.val();
+        // ---- Run size of the frame (stable while a frame runs); derived
+        // values registered, so the counters compare with flip-flops.
+        self.run_rows.next = self.regs.run_rows.val();
+        self.run_cols.next = self.regs.run_cols.val();
+        // Modulo 4096: C = 4096 has C - 1 = 4095 in 12 bits.
+        self.last_col.d.next = self.run_cols.val().get_bits::<12>(0) - self.one12.val();
+        self.pen_col.d.next = self.run_cols.val().get_bits::<12>(0) - self.two12.val();
+        self.pen_row.d.next = self.run_rows.val() - self.two8.val();
+        self.one_row.d.next = self.run_rows.val() == self.one8.val();
         // ---- Input stage: pixel slots, padding of a short frame, dropping of a long one.
         self.accept.next = self.s_axis_tvalid.val() & self.tready_q.q.val();
         self.beat.next = self.accept.val() & !self.discard.q.val();
@@ -296,20 +321,26 @@ impl Logic for FccTop {
         self.nxt_pad.next = self.pad.q.val();
         self.nxt_discard.next = self.discard.q.val();
         self.nxt_in_done.next = self.in_done.q.val();
+        // Row 0 is the last row of a one-row frame. The run registers may
+        // change up to the frame's first pixel; `one_row` follows them two
+        // cycles later, long before row 0's last pixel (C >= 3).
+        if self.row.q.val() == self.zero8.val() {
+            self.row_last.d.next = self.one_row.q.val();
+        }
         if self.slot.val() {
             self.first.d.next = false;
             self.col0.d.next = self.col_last.q.val();
             self.col.d.next = self.col.q.val() + self.one12.val();
-            self.col_last.d.next = self.col.q.val() == self.pen_col.val();
+            self.col_last.d.next = self.col.q.val() == self.pen_col.q.val();
             if self.col_last.q.val() {
                 self.col.d.next = self.zero12.val();
                 self.col_last.d.next = false;
                 self.row.d.next = self.row.q.val() + self.one8.val();
-                self.row_last.d.next = self.row.q.val() == self.pen_row.val();
+                self.row_last.d.next = self.row.q.val() == self.pen_row.q.val();
             }
             if self.is_last.val() {
                 self.row.d.next = self.zero8.val();
-                self.row_last.d.next = false;
+                self.row_last.d.next = self.one_row.q.val();
                 self.first.d.next = true;
                 self.nxt_in_done.next = true;
                 self.nxt_pad.next = false;
@@ -410,7 +441,11 @@ impl Logic for FccTop {
         // ---- Blocks.
         self.intra.rst.next = self.regs.core_rst.val();
         self.intra.pix.next = self.slot_q.q.val();
+        self.intra.last_col.next = self.last_col.q.val();
+        self.window.last_col.next = self.last_col.q.val();
+        self.intra.th_h_c.next = self.regs.run_th_h_c.val();
         self.window.rst.next = self.regs.core_rst.val();
+        self.window.run_k.next = self.regs.run_k.val();
         self.window.inp.next.valid = self.intra.out.val().valid;
         self.window.inp.next.lok = self.intra.out.val().lok;
         self.window.inp.next.x = self.intra.out.val().x;
@@ -428,6 +463,7 @@ impl Logic for FccTop {
         self.window.rep_waddr.next = self.sort_net.rep_waddr.val();
         self.window.rep_wdata.next = self.sort_net.rep_wdata.val();
         self.dist_tree.rst.next = self.regs.core_rst.val();
+        self.dist_tree.th_v_c.next = self.regs.run_th_v_c.val();
         self.dist_tree.centre_in.next = self.window.centre.val();
         for e in 0..self.window.ent_ok.len() {
             self.dist_tree.ent_ok[e].next = self.window.ent_ok[e].val();

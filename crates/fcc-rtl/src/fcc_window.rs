@@ -21,6 +21,11 @@
 //! `ent_ok`. Entry e = r*K + n: r = 0 is the top row (i-h), n = 0 the left
 //! column (j-h).
 //!
+//! The window is built for the build's K (`K_MAX`); a frame run with a
+//! smaller odd K (`run_k`, constant during a frame) masks the positions more
+//! than (K-1)/2 rows above or columns beside the centre, through the same
+//! registered row and column flags as the image edges.
+//!
 //! A second, narrower window of the same shape holds each upper pixel's
 //! *representative* (`ent_rep`): a provisional label already known to be in
 //! its component, chosen by `fcc_sort_net` when that pixel was the centre and
@@ -50,6 +55,10 @@ pub struct FccWindow {
     pub rst: Signal<In, Bit>,
     /// Labelled pixel stream (stage W0).
     pub inp: Signal<In, WinPix>,
+    /// The frame's last column, C - 1 (stable while a frame runs).
+    pub last_col: Signal<In, Bits<12>>,
+    /// The frame's filter size K (odd, 3 ..= the build's K).
+    pub run_k: Signal<In, Bits<4>>,
     /// Centre pixel of the window (stage W3).
     pub centre: Signal<Out, Centre>,
     // Window entries for `centre`, row-major from the top row.
@@ -89,10 +98,16 @@ pub struct FccWindow {
     col_in: Vec<DFF<Bit>>,
     /// Column offset n < h: the lowest centre column with j+n-h >= 0.
     col_lo: Vec<Constant<Bits<12>>>,
-    /// Column offset n = h+1+t: the highest centre column with j+n-h <= C-1.
-    col_hi: Vec<Constant<Bits<12>>>,
+    /// Column offset n = h+1+t: the highest centre column with j+n-h <= C-1
+    /// (C - 1 = `last_col`), i.e. C - 2 - t.
+    col_hi: Vec<DFF<Bits<12>>>,
+    hi_off: Vec<Constant<Bits<12>>>,
     /// Per window row r: lowest centre row with a row h-r above it.
     row_lo: Vec<Constant<Bits<8>>>,
+    /// Per window row r: the smallest K whose window reaches it, 2(h-r)+1.
+    row_k: Vec<Constant<Bits<4>>>,
+    /// Per window column n: the smallest K whose window reaches it, 2|n-h|+1.
+    col_k: Vec<Constant<Bits<4>>>,
     zero8: Constant<Bits<8>>,
     zero12: Constant<Bits<12>>,
     _k: usize,
@@ -109,6 +124,8 @@ impl FccWindow {
             clk: Default::default(),
             rst: Default::default(),
             inp: Default::default(),
+            last_col: Default::default(),
+            run_k: Default::default(),
             centre: Default::default(),
             ent_ok: vec_of(n),
             ent_x: vec_of(n),
@@ -139,8 +156,11 @@ impl FccWindow {
             row_in: vec_of(h),
             col_in: vec_of(k),
             col_lo: (0..h).map(|n| kb((h - n) as u64)).collect(),
-            col_hi: (0..h).map(|t| kb((c - 2 - t) as u64)).collect(),
+            col_hi: vec_of(h),
+            hi_off: (0..h).map(|t| kb(1 + t as u64)).collect(),
             row_lo: (0..h).map(|r| kb((h - r) as u64)).collect(),
+            row_k: (0..h).map(|r| kb((2 * (h - r) + 1) as u64)).collect(),
+            col_k: (0..k).map(|n| kb((2 * n.abs_diff(h) + 1) as u64)).collect(),
             zero8: kb(0),
             zero12: kb(0),
             _k: k,
@@ -212,18 +232,25 @@ impl Logic for FccWindow {
         // Edge masks of the pixel that becomes the centre in W3.
         for r in 0..self._h {
             self.row_in[r].clock.next = self.clk.val();
-            self.row_in[r].d.next = self.w2.q.val().row >= self.row_lo[r].val();
+            self.row_in[r].d.next = (self.w2.q.val().row >= self.row_lo[r].val())
+                & (self.run_k.val() >= self.row_k[r].val());
         }
         for n in 0..self._k {
             self.col_in[n].clock.next = self.clk.val();
-            self.col_in[n].d.next = true;
+            self.col_in[n].d.next = self.run_k.val() >= self.col_k[n].val();
+        }
+        for t in 0..self._h {
+            self.col_hi[t].clock.next = self.clk.val();
+            self.col_hi[t].d.next = self.last_col.val() - self.hi_off[t].val();
         }
         for hh in self._h..(self._h + 1) {
             for n in 0..self._h {
-                self.col_in[n].d.next = self.w2.q.val().col >= self.col_lo[n].val();
+                self.col_in[n].d.next = (self.w2.q.val().col >= self.col_lo[n].val())
+                    & (self.run_k.val() >= self.col_k[n].val());
             }
             for n in (self._h + 1)..self._k {
-                self.col_in[n].d.next = self.w2.q.val().col <= self.col_hi[n - hh - 1].val();
+                self.col_in[n].d.next = (self.w2.q.val().col <= self.col_hi[n - hh - 1].q.val())
+                    & (self.run_k.val() >= self.col_k[n].val());
             }
         }
         if self.rst.val() {

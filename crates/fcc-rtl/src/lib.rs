@@ -28,6 +28,7 @@ mod fcc_regs;
 mod fcc_row_word;
 mod fcc_sort_net;
 mod fcc_sq_dist;
+mod fcc_th_square;
 mod fcc_top;
 mod fcc_two_or;
 mod fcc_window;
@@ -72,6 +73,10 @@ pub enum RtlError {
     },
     #[error("verilator --lint-only -Wall reported problems in {path}:\n{log}")]
     Lint { path: PathBuf, log: String },
+    #[error("{dir}: no generated configuration here (no fcc_params.json in it or in {dir}/rtl); make one with `fcc gen --out {dir}`")]
+    NotGenerated { dir: PathBuf },
+    #[error("{path}: {message}")]
+    BadParamsFile { path: PathBuf, message: String },
 }
 
 /// The generated files of one configuration, as text.
@@ -195,6 +200,39 @@ impl ParamsFile {
             Err(e) => serde_json::from_str::<FccParams>(text).map_err(|_| e),
         }
     }
+}
+
+/// The directory of a configuration written by `fcc gen --out DIR` that
+/// holds its `fcc_params.json` and Verilog: `DIR` itself, or `DIR/rtl`. This
+/// is the one place that knows where `fcc gen` puts them.
+pub fn generated_rtl_dir(dir: &Path) -> Result<PathBuf, RtlError> {
+    [dir.to_path_buf(), dir.join("rtl")]
+        .into_iter()
+        .find(|d| d.join("fcc_params.json").is_file())
+        .ok_or_else(|| RtlError::NotGenerated {
+            dir: dir.to_path_buf(),
+        })
+}
+
+/// The build parameters of the configuration generated into `dir` (see
+/// [`generated_rtl_dir`]): the limits of the core and the power-on values of
+/// its run registers.
+pub fn read_generated_params(dir: &Path) -> Result<FccParams, RtlError> {
+    let path = generated_rtl_dir(dir)?.join("fcc_params.json");
+    let text = std::fs::read_to_string(&path).map_err(|e| RtlError::BadParamsFile {
+        path: path.clone(),
+        message: format!("cannot read: {e}"),
+    })?;
+    let p = ParamsFile::params_from_json(&text).map_err(|e| RtlError::BadParamsFile {
+        path: path.clone(),
+        message: format!("not a parameter file of fcc gen: {e}"),
+    })?;
+    p.validate_for_hardware()
+        .map_err(|e| RtlError::BadParamsFile {
+            path,
+            message: e.to_string(),
+        })?;
+    Ok(p)
 }
 
 fn params_json(p: &FccParams) -> String {

@@ -20,6 +20,9 @@ pub fn waivers(p: &FccParams) -> String {
          // s_axis_tkeep is ignored by definition: every beat is one whole pixel\n\
          // (the port exists so that an AXI DMA's MM2S stream connects cleanly).\n\
          lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'s_axis_tkeep'*\"\n\
+         // The frame's columns C (<= 4096) are used modulo 4096 (as C - 1 and\n\
+         // C - 2, both below 4096), so bit 12 of the run value is not read.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'run_cols'[12]*\"\n\
          // rust-hdl writes each module's logic as one combinational always block.\n\
          // The sort network's block feeds the prefix network `kp` (the kept\n\
          // positions of the head record) and reads its outputs. The loop exists\n\

@@ -18,7 +18,7 @@ use serde::Serialize;
 
 use crate::GENERATOR_VERSION;
 
-pub use fcc_regmap::{bits, offset, ADDR_BITS, ID_MAGIC};
+pub use fcc_regmap::{bits, offset, ADDR_BITS, ID_MAGIC, RUN_COLS_MIN, TH_Q_MAX};
 
 /// How software may access a register.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -67,6 +67,57 @@ pub struct Register {
     pub fields: Vec<Field>,
 }
 
+/// The values a run-parameter register accepts (inclusive); RUN_K also
+/// requires an odd value.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub struct RunRange {
+    pub min: u32,
+    pub max: u32,
+}
+
+/// Smallest RUN_ROWS a build accepts: a frame of one row runs.
+pub fn run_rows_min(_p: &FccParams) -> u32 {
+    1
+}
+
+/// Smallest RUN_COLS a build accepts ([`RUN_COLS_MIN`]; every build has
+/// at least 256 columns).
+pub fn run_cols_min(_p: &FccParams) -> u32 {
+    RUN_COLS_MIN
+}
+
+/// The range of the run-parameter register at `off` in the build `p`
+/// (`None` for any other offset). A write outside it is refused: the
+/// register keeps its value and its ERROR bit is set.
+pub fn run_range(p: &FccParams, off: u32) -> Option<RunRange> {
+    let (min, max) = match off {
+        offset::RUN_K => (3, p.fsize as u32),
+        offset::RUN_TH_H | offset::RUN_TH_V => (1, TH_Q_MAX),
+        offset::RUN_ROWS => (run_rows_min(p), p.rows as u32),
+        offset::RUN_COLS => (run_cols_min(p), p.cols as u32),
+        _ => return None,
+    };
+    Some(RunRange { min, max })
+}
+
+/// Whether `v` is a value the run-parameter register at `off` accepts.
+pub fn run_value_ok(p: &FccParams, off: u32, v: u32) -> bool {
+    run_range(p, off)
+        .is_some_and(|r| (r.min..=r.max).contains(&v) && (off != offset::RUN_K || v % 2 == 1))
+}
+
+/// The ERROR bit of the run-parameter register at `off`.
+pub fn run_error_bit(off: u32) -> Option<u32> {
+    match off {
+        offset::RUN_K => Some(bits::ERROR_K),
+        offset::RUN_TH_H => Some(bits::ERROR_TH_H),
+        offset::RUN_TH_V => Some(bits::ERROR_TH_V),
+        offset::RUN_ROWS => Some(bits::ERROR_ROWS),
+        offset::RUN_COLS => Some(bits::ERROR_COLS),
+        _ => None,
+    }
+}
+
 /// The generator version as one word: major << 16 | minor << 8 | patch.
 pub fn version_word() -> u32 {
     let mut it = GENERATOR_VERSION
@@ -110,6 +161,15 @@ pub fn registers(p: &FccParams) -> Vec<Register> {
         offset,
         access: ReadOnly,
         reset,
+        build_constant: true,
+        doc,
+        fields,
+    };
+    let run = |name, offset, reset: usize, doc, fields| Register {
+        name,
+        offset,
+        access: ReadWrite,
+        reset: reset as u32,
         build_constant: true,
         doc,
         fields,
@@ -248,6 +308,21 @@ pub fn registers(p: &FccParams) -> Vec<Register> {
                 ),
             ],
         },
+        Register {
+            name: "ERROR",
+            offset: offset::ERROR,
+            access: WriteOneToClear,
+            reset: 0,
+            build_constant: false,
+            doc: "Refused writes of run parameters (sticky, write 1 to clear)",
+            fields: vec![
+                field("K", 0, 1, "a RUN_K write was refused"),
+                field("TH_H", 1, 1, "a RUN_TH_H write was refused"),
+                field("TH_V", 2, 1, "a RUN_TH_V write was refused"),
+                field("ROWS", 3, 1, "a RUN_ROWS write was refused"),
+                field("COLS", 4, 1, "a RUN_COLS write was refused"),
+            ],
+        },
         status(
             "FRAME_COUNT",
             offset::FRAME_COUNT,
@@ -293,6 +368,41 @@ pub fn registers(p: &FccParams) -> Vec<Register> {
             "Last frame: read-back cycles that waited for labels",
             whole("STALLS", 24, "cycles"),
         ),
+        run(
+            "RUN_K",
+            offset::RUN_K,
+            p.fsize,
+            "Run: filter size K, odd, 3 ..= K_MAX",
+            whole("K", 4, "odd, 3 ..= K_MAX"),
+        ),
+        run(
+            "RUN_TH_H",
+            offset::RUN_TH_H,
+            p.th_h_q() as usize,
+            "Run: intra-channel threshold tH = floor(th_H * 256 + 0.5), 1 ..= 0x8000",
+            whole("TH", 16, "Q7.8 metres"),
+        ),
+        run(
+            "RUN_TH_V",
+            offset::RUN_TH_V,
+            p.th_v_q() as usize,
+            "Run: inter-channel threshold tV = floor(th_V * 256 + 0.5), 1 ..= 0x8000",
+            whole("TH", 16, "Q7.8 metres"),
+        ),
+        run(
+            "RUN_ROWS",
+            offset::RUN_ROWS,
+            p.rows,
+            "Run: rows per frame, 1 ..= ROWS_MAX",
+            whole("ROWS", 8, "rows"),
+        ),
+        run(
+            "RUN_COLS",
+            offset::RUN_COLS,
+            p.cols,
+            "Run: columns per frame, RUN_COLS_MIN ..= COLS_MAX",
+            whole("COLS", 13, "columns"),
+        ),
     ]
 }
 
@@ -314,7 +424,7 @@ pub fn c_header(p: &FccParams) -> String {
          #ifndef FCC_REGS_H\n#define FCC_REGS_H\n\n#include <stdint.h>\n\n",
     );
     s.push_str(&format!(
-        "#define FCC_REGS_ADDR_BITS {ADDR_BITS}u\n#define FCC_ID_MAGIC 0x{ID_MAGIC:08X}u\n#define FCC_PARAMS_HASH 0x{:016X}ull\n\n",
+        "#define FCC_REGS_ADDR_BITS {ADDR_BITS}u\n#define FCC_ID_MAGIC 0x{ID_MAGIC:08X}u\n#define FCC_PARAMS_HASH 0x{:016X}ull\n#define FCC_RUN_COLS_MIN {RUN_COLS_MIN}u\n\n",
         hash_value(p)
     ));
     for r in registers(p) {
