@@ -46,7 +46,9 @@ struct Fake {
 
 /// The run registers' rule of docs/rtl.md for the fake's build (K_MAX 7,
 /// ROWS_MAX 16, COLS_MAX 256): (register, ERROR bit, accepts).
-fn run_rule(o: u32) -> Option<(u32, fn(u32) -> bool)> {
+type Accepts = fn(u32) -> bool;
+
+fn run_rule(o: u32) -> Option<(u32, Accepts)> {
     Some(match o {
         offset::RUN_K => (bits::ERROR_K, |v| v % 2 == 1 && (3..=7).contains(&v)),
         offset::RUN_TH_H => (bits::ERROR_TH_H, |v| (1..=0x8000).contains(&v)),
