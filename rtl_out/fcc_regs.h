@@ -11,7 +11,6 @@
 #define FCC_REGS_ADDR_BITS 12u
 #define FCC_ID_MAGIC 0x46434331u
 #define FCC_PARAMS_HASH 0x668CF05BF2A51F2Eull
-#define FCC_RUN_COLS_MIN 32u
 
 // ID (RO): Fixed magic "FCC1": an FCC core answers here
 #define FCC_REG_ID 0x000u
@@ -148,29 +147,39 @@
 #define FCC_REG_RUN_K_RESET 0x00000007u
 #define FCC_RUN_K_K_SHIFT 0u
 #define FCC_RUN_K_K_MASK 0x0000000Fu
+#define FCC_RUN_K_MIN 3u
+#define FCC_RUN_K_MAX 7u
 
 // RUN_TH_H (RW): Run: intra-channel threshold tH = floor(th_H * 256 + 0.5), 1 ..= 0x8000
 #define FCC_REG_RUN_TH_H 0x084u
 #define FCC_REG_RUN_TH_H_RESET 0x00000080u
 #define FCC_RUN_TH_H_TH_SHIFT 0u
 #define FCC_RUN_TH_H_TH_MASK 0x0000FFFFu
+#define FCC_RUN_TH_H_MIN 1u
+#define FCC_RUN_TH_H_MAX 32768u
 
 // RUN_TH_V (RW): Run: inter-channel threshold tV = floor(th_V * 256 + 0.5), 1 ..= 0x8000
 #define FCC_REG_RUN_TH_V 0x088u
 #define FCC_REG_RUN_TH_V_RESET 0x00000100u
 #define FCC_RUN_TH_V_TH_SHIFT 0u
 #define FCC_RUN_TH_V_TH_MASK 0x0000FFFFu
+#define FCC_RUN_TH_V_MIN 1u
+#define FCC_RUN_TH_V_MAX 32768u
 
 // RUN_ROWS (RW): Run: rows per frame, 1 ..= ROWS_MAX
 #define FCC_REG_RUN_ROWS 0x08Cu
 #define FCC_REG_RUN_ROWS_RESET 0x00000040u
 #define FCC_RUN_ROWS_ROWS_SHIFT 0u
 #define FCC_RUN_ROWS_ROWS_MASK 0x000000FFu
+#define FCC_RUN_ROWS_MIN 1u
+#define FCC_RUN_ROWS_MAX 64u
 
 // RUN_COLS (RW): Run: columns per frame, RUN_COLS_MIN ..= COLS_MAX
 #define FCC_REG_RUN_COLS 0x090u
 #define FCC_REG_RUN_COLS_RESET 0x00000800u
 #define FCC_RUN_COLS_COLS_SHIFT 0u
 #define FCC_RUN_COLS_COLS_MASK 0x00001FFFu
+#define FCC_RUN_COLS_MIN 32u
+#define FCC_RUN_COLS_MAX 2048u
 
 #endif  // FCC_REGS_H

@@ -21,6 +21,7 @@
 //! assert_eq!(out.clusters, 1);
 //! ```
 
+mod exact;
 mod frame;
 mod merge;
 mod pass1;
@@ -31,7 +32,7 @@ pub mod reference;
 pub use frame::{dist2, quantize, quantize_point, Frame, Point};
 pub use merge::{renumber, ExactMerge, PaperMerge};
 pub use pass1::{pass1, pass1_released, runs_needed, Pass1, Run};
-pub use pass2::{pass2, pass2_runs, JoinSink};
+pub use pass2::{pass2, JoinSink};
 
 use fcc_params::{FccParams, ParamError};
 use serde::{Deserialize, Serialize};
@@ -123,16 +124,16 @@ pub fn cluster(
 /// once the buffers have grown to the frame size.
 #[derive(Debug, Clone, Default)]
 pub struct Workspace {
+    exact: exact::Exact,
     p1: Pass1,
-    merge: ExactMerge,
     id: Vec<u32>,
-    from: Vec<usize>,
+    labels: Vec<u32>,
 }
 
 impl Workspace {
     /// Give a finished result's label buffer back for the next frame.
     pub fn recycle(&mut self, done: Clustering) {
-        self.p1.labels = done.labels;
+        self.labels = done.labels;
     }
 }
 
@@ -160,41 +161,45 @@ pub fn cluster_with(
             got: frame.points.len(),
         });
     }
-    let (joins, merges, clusters) = match mode {
+    match mode {
         MergeMode::Exact => {
-            pass1::label_runs(params, frame, pass1::RingHandling::Join, &mut ws.p1);
-            let m = &mut ws.merge;
-            m.reset(ws.p1.provisional);
-            for &(a, b) in &ws.p1.ring_joins {
-                m.union(a, b);
-            }
-            let joins = pass2::pass2_runs_with(params, frame, &ws.p1, m, &mut ws.from);
-            let merges = m.merges;
-            let clusters = merge::renumber_runs(&mut ws.p1, frame.cols, m.flatten(), &mut ws.id);
-            (joins, merges, clusters)
+            let mut labels = std::mem::take(&mut ws.labels);
+            let s = ws.exact.run(params, frame, &mut labels);
+            Ok(Clustering {
+                rows: frame.rows,
+                cols: frame.cols,
+                labels,
+                points: s.points,
+                clusters: s.clusters,
+                provisional: s.provisional,
+                joins: s.joins,
+                merges: s.merges,
+                overflow: s.overflow,
+                unlabelled: s.unlabelled,
+            })
         }
         MergeMode::Paper => {
-            pass1::label_runs(params, frame, pass1::RingHandling::Relabel, &mut ws.p1);
-            let mut m = PaperMerge::new(ws.p1.provisional);
-            let joins = pass2(params, frame, &ws.p1, &mut m);
+            let p1 = &mut ws.p1;
+            p1.labels = std::mem::take(&mut ws.labels);
+            pass1::label_runs(params, frame, pass1::RingHandling::Relabel, p1);
+            let mut m = PaperMerge::new(p1.provisional);
+            let joins = pass2(params, frame, p1, &mut m);
             let rep = m.representatives();
-            let clusters = merge::renumber_runs(&mut ws.p1, frame.cols, &rep, &mut ws.id);
-            (joins, 0, clusters)
+            let clusters = merge::renumber_runs(p1, frame.cols, &rep, &mut ws.id);
+            Ok(Clustering {
+                rows: frame.rows,
+                cols: frame.cols,
+                labels: std::mem::take(&mut p1.labels),
+                points: p1.points,
+                clusters,
+                provisional: p1.provisional,
+                joins,
+                merges: 0,
+                overflow: p1.overflow,
+                unlabelled: p1.unlabelled,
+            })
         }
-    };
-    let p1 = &mut ws.p1;
-    Ok(Clustering {
-        rows: frame.rows,
-        cols: frame.cols,
-        labels: std::mem::take(&mut p1.labels),
-        points: p1.points,
-        clusters,
-        provisional: p1.provisional,
-        joins,
-        merges,
-        overflow: p1.overflow,
-        unlabelled: p1.unlabelled,
-    })
+    }
 }
 
 /// Components of `reference` that `got` splits into more than one label:

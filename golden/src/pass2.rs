@@ -1,7 +1,6 @@
 //! Pass 2: inter-channel grouping through the K x K connection filter (spec §4).
 
-use crate::frame::{dist2, Frame, Point};
-use crate::merge::ExactMerge;
+use crate::frame::Frame;
 use crate::pass1::Pass1;
 use fcc_params::FccParams;
 
@@ -103,102 +102,4 @@ pub fn pass2<S: JoinSink>(params: &FccParams, frame: &Frame, p1: &Pass1, sink: &
         sink.row_end();
     }
     joins
-}
-
-/// Pass 2 for exact merging, run against run (spec §4 and §5).
-///
-/// The components only depend on which pairs of runs have at least one
-/// joining pixel pair, so each pair of runs whose columns come within `h`
-/// of each other, at most `h` rows apart, is visited once, and its pixel
-/// pairs are only compared until the first join (most pixel pairs are
-/// between runs already joined, so this skips most distances). Unites the
-/// same components as [`pass2`] with an [`ExactMerge`] and returns the same
-/// count: the pairs of runs (labels) with at least one joining pixel pair.
-pub fn pass2_runs(params: &FccParams, frame: &Frame, p1: &Pass1, merge: &mut ExactMerge) -> u64 {
-    pass2_runs_with(params, frame, p1, merge, &mut Vec::new())
-}
-
-/// [`pass2_runs`] with its scratch space from the caller.
-pub(crate) fn pass2_runs_with(
-    params: &FccParams,
-    frame: &Frame,
-    p1: &Pass1,
-    merge: &mut ExactMerge,
-    from: &mut Vec<usize>,
-) -> u64 {
-    let th_sq = params.th_v_sq();
-    let h = params.half();
-    let cols = frame.cols;
-    let pts = &frame.points;
-    let mut joins = 0u64;
-    // For the row m = 1 ..= h above the centre row, `from[m - 1]` is the
-    // first run that may still reach a centre run (runs of a row are sorted
-    // by column, and so are the centre runs).
-    from.clear();
-    from.resize(h, 0);
-    for i in 1..frame.rows {
-        let hm = h.min(i);
-        for (m, f) in (1..=hm).zip(from.iter_mut()) {
-            *f = p1.row_runs[i - m];
-        }
-        let centre_row = &pts[i * cols..(i + 1) * cols];
-        for run in p1.runs_of_row(i) {
-            let (a, b) = (run.first as usize, run.last as usize);
-            let lo = a.saturating_sub(h);
-            let hi = b + h;
-            let mut root = merge.find(run.label);
-            for (m, start) in (1..=hm).zip(from.iter_mut()) {
-                let u = i - m;
-                let end = p1.row_runs[u + 1];
-                let mut k = *start;
-                while k < end && (p1.runs[k].last as usize) < lo {
-                    k += 1;
-                }
-                *start = k;
-                let above_row = &pts[u * cols..(u + 1) * cols];
-                for other in &p1.runs[k..end] {
-                    if other.first as usize > hi {
-                        break;
-                    }
-                    let (c, d) = (other.first as usize, other.last as usize);
-                    if runs_touch(centre_row, (a, b), above_row, (c, d), h, th_sq) {
-                        joins += 1;
-                        let r = merge.find(other.label);
-                        if r != root {
-                            merge.link_roots(root, r);
-                            root = root.min(r);
-                        }
-                    }
-                }
-            }
-        }
-    }
-    joins
-}
-
-/// Whether some valid pixel of `centre[a..=b]` and some valid pixel of
-/// `above[c..=d]` at most `h` columns apart are closer than `tV`.
-#[inline]
-fn runs_touch(
-    centre: &[Option<Point>],
-    (a, b): (usize, usize),
-    above: &[Option<Point>],
-    (c, d): (usize, usize),
-    h: usize,
-    th_sq: i64,
-) -> bool {
-    // Only centre columns within h of the other run can join.
-    let first = a.max(c.saturating_sub(h));
-    let last = b.min(d + h);
-    for (j, p) in centre.iter().enumerate().take(last + 1).skip(first) {
-        let Some(p) = *p else { continue };
-        let lo = c.max(j.saturating_sub(h));
-        let hi = d.min(j + h);
-        for q in above[lo..=hi].iter().flatten() {
-            if dist2(p, *q) < th_sq {
-                return true;
-            }
-        }
-    }
-    false
 }

@@ -4,8 +4,8 @@
 //! workspace gives the same results as a fresh one.
 
 use fcc_golden::{
-    cluster, cluster_with, pass1, pass2, pass2_runs, reference::reference_labels, renumber,
-    Clustering, ExactMerge, Frame, MergeMode, Workspace,
+    cluster, cluster_with, pass1, pass2, reference::reference_labels, renumber, Clustering,
+    ExactMerge, Frame, MergeMode, Workspace,
 };
 use fcc_params::FccParams;
 use proptest::prelude::*;
@@ -138,19 +138,31 @@ fn run_path_under_label_overflow_equals_plain_path() {
 }
 
 #[test]
-fn pass2_runs_unites_what_pass2_unites() {
-    let f = random_frame(16, 90, 80, 0.25, 9);
-    let p = params(16, 90, 5, 0.2, 0.4, 15);
-    let p1 = pass1(&p, &f);
-    let (mut a, mut b) = (
-        ExactMerge::new(p1.provisional),
-        ExactMerge::new(p1.provisional),
-    );
-    let ja = pass2(&p, &f, &p1, &mut a);
-    let jb = pass2_runs(&p, &f, &p1, &mut b);
-    assert_eq!(ja, jb);
-    assert!(jb > 0 && b.merges > 0);
-    assert_eq!(a.representatives(), b.representatives());
+fn run_path_on_columns_past_the_i16_range_equals_plain_path() {
+    // The run path keeps columns in 16 bits: objects beyond column 32767,
+    // and one spanning it, with gaps, on three rows.
+    let (rows, cols) = (3, 40_000);
+    let mut f = Frame::empty(rows, cols);
+    for (n, c) in (32_700..32_840).chain(39_900..40_000).enumerate() {
+        for r in 0..rows {
+            if (n + r) % 5 != 0 {
+                let y = (c % 100) as i16 * 20;
+                f.set(r, c, Some([2560, y, -(r as i16) * 40]));
+            }
+        }
+    }
+    for k in [3usize, 5] {
+        let p = params(rows, cols, k, 0.1, 0.3, 15);
+        let got = cluster(&p, &f, MergeMode::Exact).unwrap();
+        assert!(
+            got.joins > 0 && got.clusters >= 2,
+            "K = {k}: joins {}, clusters {}",
+            got.joins,
+            got.clusters
+        );
+        compare(&p, &f, &got, 0).unwrap();
+        assert_eq!(got.labels, reference_labels(&p, &f), "K = {k}");
+    }
 }
 
 #[test]

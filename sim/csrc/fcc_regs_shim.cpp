@@ -31,6 +31,8 @@ struct RegsIn {
 
 // Outputs seen during that cycle, before its rising edge (must match `RegsOut`).
 struct RegsOut {
+    uint64_t run_th_h_c;
+    uint64_t run_th_v_c;
     uint32_t rdata;
     uint32_t st_unlabelled;
     uint32_t st_joins;
@@ -49,6 +51,9 @@ struct RegsOut {
     uint8_t frame_done;
     uint8_t st_overflow;
     uint8_t st_frame_error;
+    uint8_t run_k;
+    uint8_t run_rows;
+    uint16_t run_cols;
 };
 
 struct RegsModel {
@@ -115,6 +120,11 @@ void fcc_regs_step(void* p, const RegsIn* in, RegsOut* out) {
     out->frame_done = t->frame_done;
     out->st_overflow = t->st_overflow;
     out->st_frame_error = t->st_frame_error;
+    out->run_k = t->run_k;
+    out->run_rows = t->run_rows;
+    out->run_cols = t->run_cols;
+    out->run_th_h_c = t->run_th_h_c;
+    out->run_th_v_c = t->run_th_v_c;
     t->clk = 1;
     t->eval();
     m->ctx.timeInc(1);

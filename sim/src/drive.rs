@@ -150,12 +150,24 @@ impl Dut {
 
     /// Drive one frame in and collect its labels.
     pub fn run_frame(&mut self, frame: &Frame, drive: &Drive) -> Result<FrameRun, SimError> {
+        self.run_frame_from(frame, drive, 0)
+    }
+
+    /// [`run_frame`](Self::run_frame) for a frame whose first `skip` beats
+    /// were already accepted (by [`feed_partial`](Self::feed_partial)):
+    /// drive the rest and collect the frame's labels.
+    pub fn run_frame_from(
+        &mut self,
+        frame: &Frame,
+        drive: &Drive,
+        skip: usize,
+    ) -> Result<FrameRun, SimError> {
         let p = self.params().clone();
         let lpb = p.labels_per_beat as usize;
         let beats = frame_beats(frame, drive.tlast);
         let mut rng = ChaCha8Rng::seed_from_u64(drive.seed);
         let mut run = FrameRun::default();
-        let mut idx = 0usize;
+        let mut idx = skip.min(beats.len());
         let mut offering = false;
         let mut first_in: Option<u64> = None;
         let mut last_in = 0u64;

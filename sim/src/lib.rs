@@ -61,11 +61,11 @@ pub enum SimError {
     Protocol(String),
     #[error("{0}")]
     Mismatch(String),
-    #[error("virtual board: {0}")]
-    Board(String),
     /// Run parameters the build cannot run.
     #[error("{0}")]
     BadRun(String),
+    #[error("virtual board: {0}")]
+    Board(String),
 }
 
 /// Run one frame on a fresh reset of `dut` and compare it with the golden model.

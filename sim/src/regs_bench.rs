@@ -44,6 +44,10 @@ pub struct RegsIn {
 #[repr(C)]
 #[derive(Debug, Clone, Copy, Default)]
 pub struct RegsOut {
+    /// Active -(tH^2 + 1), 36-bit two's complement.
+    pub run_th_h_c: u64,
+    /// Active -tV^2, 36-bit two's complement.
+    pub run_th_v_c: u64,
     pub rdata: u32,
     pub st_unlabelled: u32,
     pub st_joins: u32,
@@ -62,6 +66,10 @@ pub struct RegsOut {
     pub frame_done: u8,
     pub st_overflow: u8,
     pub st_frame_error: u8,
+    /// Active run parameters.
+    pub run_k: u8,
+    pub run_rows: u8,
+    pub run_cols: u16,
 }
 
 type NewFn = unsafe extern "C" fn() -> *mut c_void;

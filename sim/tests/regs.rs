@@ -283,6 +283,14 @@ fn clear_zeroes_count_status_and_frame_done() {
     assert_eq!(d.idle().irq, 0);
 }
 
+const RUN_REGS: [u32; 5] = [
+    offset::RUN_K,
+    offset::RUN_TH_H,
+    offset::RUN_TH_V,
+    offset::RUN_ROWS,
+    offset::RUN_COLS,
+];
+
 /// What software should read back, kept beside the model.
 #[derive(Default)]
 struct RefRegs {
@@ -290,12 +298,20 @@ struct RefRegs {
     done: bool,
     count: u32,
     last: RegsIn,
+    /// ERROR bits.
+    err: u32,
+    /// Values written to the run registers and accepted (else power-on).
+    run: std::collections::HashMap<u32, u32>,
 }
 
 impl RefRegs {
     fn read(&self, p: &FccParams, off: u32, idle: bool) -> u32 {
         let c = &self.last;
+        if let Some(v) = self.run.get(&off) {
+            return *v;
+        }
         match off {
+            offset::ERROR => self.err,
             offset::CONTROL => u32::from(self.irq_en) << 1,
             offset::STATUS => u32::from(self.done) | (u32::from(idle) << 1),
             offset::FRAME_COUNT => self.count,
@@ -317,15 +333,35 @@ impl RefRegs {
             offset::CONTROL => {
                 self.irq_en = v & bits::CONTROL_IRQ_ENABLE != 0;
                 if v & bits::CONTROL_CLEAR != 0 {
-                    *self = RefRegs {
-                        irq_en: self.irq_en,
-                        ..Default::default()
-                    };
+                    self.done = false;
+                    self.count = 0;
+                    self.last = RegsIn::default();
                 }
             }
             offset::STATUS if v & bits::STATUS_FRAME_DONE != 0 => self.done = false,
+            offset::ERROR => self.err &= !v,
             _ => {}
         }
+    }
+
+    fn write_run(&mut self, p: &FccParams, off: u32, v: u32) {
+        if regmap::run_value_ok(p, off, v) {
+            self.run.insert(off, v);
+        } else if let Some(b) = regmap::run_error_bit(off) {
+            self.err |= b;
+        }
+    }
+}
+
+/// A value for the run register `off`: mostly near the ends of its range
+/// (both sides), sometimes anything.
+fn run_value(p: &FccParams, off: u32, rng: &mut ChaCha8Rng) -> u32 {
+    let r = regmap::run_range(p, off).unwrap();
+    match rng.gen_range(0..4) {
+        0 => rng.gen(),
+        1 => r.min.saturating_sub(rng.gen_range(0..2)),
+        2 => r.max + rng.gen_range(0..2),
+        _ => rng.gen_range(r.min..=r.max),
     }
 }
 
@@ -335,7 +371,7 @@ fn seeded_random_accesses_match_the_reference_map() {
     let offsets: Vec<u32> = regmap::registers(&p)
         .iter()
         .map(|r| r.offset)
-        .chain([0x028, 0x048, 0x100, 0xffc])
+        .chain([0x028, 0x04c, 0x100, 0xffc])
         .collect();
     for seed in 0..4u64 {
         let mut d = dut(&p);
@@ -360,6 +396,11 @@ fn seeded_random_accesses_match_the_reference_map() {
                         "step {step}: read {off:#05x}: expected {want:#x} != got {got:#x} (seed {seed})"
                     );
                 }
+                4..=6 if RUN_REGS.contains(&off) => {
+                    let v = run_value(&p, off, &mut rng);
+                    m.write_ok(&mut d, off, v).unwrap();
+                    r.write_run(&p, off, v);
+                }
                 4..=6 => {
                     // Soft reset is left to its own test: keep the model simple.
                     let v = rng.gen::<u32>() & !bits::CONTROL_SOFT_RESET;
@@ -377,5 +418,142 @@ fn seeded_random_accesses_match_the_reference_map() {
             let irq = d.idle().irq != 0;
             assert_eq!(irq, r.done && r.irq_en, "step {step}: irq (seed {seed})");
         }
+    }
+}
+
+/// The active copy the core sees: -(tH^2 + 1) and -tV^2 as 36-bit two's
+/// complement.
+fn addends(th_h: u32, th_v: u32) -> (u64, u64) {
+    let m = (1u64 << 36) - 1;
+    let h = u64::from(th_h).pow(2);
+    let v = u64::from(th_v).pow(2);
+    ((!h) & m, (1u64 << 36).wrapping_sub(v) & m)
+}
+
+fn active(o: &fcc_sim::RegsOut) -> (u8, u64, u64, u8, u16) {
+    (o.run_k, o.run_th_h_c, o.run_th_v_c, o.run_rows, o.run_cols)
+}
+
+#[test]
+fn run_registers_power_on_to_the_build_and_reach_the_core_only_while_idle() {
+    for p in builds() {
+        let mut d = dut(&p);
+        let mut m = AxilMaster::new(6);
+        let (h, v) = addends(p.th_h_q() as u32, p.th_v_q() as u32);
+        let build = (p.fsize as u8, h, v, p.rows as u8, p.cols as u16);
+        assert_eq!(active(&d.idle()), build, "power-on active values");
+        // While a frame runs (idle low) a write changes the read-back value only.
+        d.live.idle = 0;
+        let k = if p.fsize == 3 { 3 } else { p.fsize as u32 - 2 };
+        m.write_ok(&mut d, offset::RUN_K, k).unwrap();
+        m.write_ok(&mut d, offset::RUN_TH_H, 1).unwrap();
+        m.write_ok(&mut d, offset::RUN_TH_V, 0x8000).unwrap();
+        for _ in 0..40 {
+            assert_eq!(active(&d.idle()), build, "changed during a frame");
+        }
+        assert_eq!(m.read(&mut d, offset::RUN_K).unwrap(), k);
+        assert_eq!(m.read(&mut d, offset::RUN_TH_H).unwrap(), 1);
+        assert_eq!(m.read(&mut d, offset::RUN_TH_V).unwrap(), 0x8000);
+        // Idle again: taken within a cycle.
+        d.live.idle = 1;
+        d.idle();
+        let (h, v) = addends(1, 0x8000);
+        assert_eq!(
+            active(&d.idle()),
+            (k as u8, h, v, p.rows as u8, p.cols as u16),
+            "taken when idle"
+        );
+        // Squares of every bit pattern's extremes, each written while idle.
+        for (th_h, th_v) in [(0x7fff, 0x5555), (0x0101, 0x00ff), (128, 256)] {
+            m.write_ok(&mut d, offset::RUN_TH_H, th_h).unwrap();
+            m.write_ok(&mut d, offset::RUN_TH_V, th_v).unwrap();
+            d.idle();
+            let o = d.idle();
+            assert_eq!(
+                (o.run_th_h_c, o.run_th_v_c),
+                addends(th_h, th_v),
+                "squares of {th_h:#x}, {th_v:#x}"
+            );
+        }
+        // A power-on reset restores the build's values.
+        d.reset(1);
+        d.idle();
+        assert_eq!(active(&d.idle()), build, "after rst");
+        assert_eq!(m.read(&mut d, offset::RUN_K).unwrap(), p.fsize as u32);
+    }
+}
+
+#[test]
+fn refused_run_writes_keep_the_old_value_and_set_their_error_bit() {
+    for p in builds() {
+        let mut d = dut(&p);
+        let mut m = AxilMaster::new(7);
+        d.live.idle = 1;
+        let kmax = p.fsize as u32;
+        let bad: Vec<(u32, Vec<u32>)> = vec![
+            (
+                offset::RUN_K,
+                vec![0, 1, 2, 4, kmax + 1, kmax + 2, 13, 0x103, u32::MAX],
+            ),
+            (offset::RUN_TH_H, vec![0, 0x8001, 0x1_0000, u32::MAX]),
+            (offset::RUN_TH_V, vec![0, 0x8001, 0x1_0001, 0x8000_0001]),
+            (
+                offset::RUN_ROWS,
+                vec![0, p.rows as u32 + 1, 255, 0x100 + p.rows as u32],
+            ),
+            (
+                offset::RUN_COLS,
+                vec![
+                    0,
+                    regmap::RUN_COLS_MIN - 1,
+                    p.cols as u32 + 1,
+                    8191,
+                    0x1_0000 + p.cols as u32,
+                ],
+            ),
+        ];
+        for (off, values) in bad {
+            let bit = regmap::run_error_bit(off).unwrap();
+            let before = m.read(&mut d, off).unwrap();
+            let act = active(&d.idle());
+            for v in values {
+                assert!(!regmap::run_value_ok(&p, off, v));
+                m.write_ok(&mut d, off, v).unwrap();
+                let got = m.read(&mut d, off).unwrap();
+                assert_eq!(got, before, "{off:#05x} <- {v:#x}: value must stay");
+                let err = m.read(&mut d, offset::ERROR).unwrap();
+                assert_eq!(
+                    err, bit,
+                    "{off:#05x} <- {v:#x}: ERROR expected {bit:#x} != got {err:#x}"
+                );
+                assert_eq!(
+                    active(&d.idle()),
+                    act,
+                    "{off:#05x} <- {v:#x}: active changed"
+                );
+                // Writing 0 clears nothing; writing the bit clears it.
+                m.write_ok(&mut d, offset::ERROR, 0).unwrap();
+                assert_eq!(m.read(&mut d, offset::ERROR).unwrap(), bit);
+                m.write_ok(&mut d, offset::ERROR, bit).unwrap();
+                assert_eq!(m.read(&mut d, offset::ERROR).unwrap(), 0);
+            }
+        }
+        // Valid values at both ends are taken and set no bit.
+        for off in RUN_REGS {
+            let r = regmap::run_range(&p, off).unwrap();
+            for v in [r.min, r.max] {
+                let v = if off == offset::RUN_K { v | 1 } else { v };
+                m.write_ok(&mut d, off, v).unwrap();
+                assert_eq!(m.read(&mut d, off).unwrap(), v, "{off:#05x} <- {v}");
+            }
+        }
+        assert_eq!(m.read(&mut d, offset::ERROR).unwrap(), 0);
+        // Errors accumulate, one bit per register.
+        m.write_ok(&mut d, offset::RUN_K, 2).unwrap();
+        m.write_ok(&mut d, offset::RUN_COLS, 0).unwrap();
+        assert_eq!(
+            m.read(&mut d, offset::ERROR).unwrap(),
+            bits::ERROR_K | bits::ERROR_COLS
+        );
     }
 }

@@ -160,6 +160,24 @@ pub fn run(args: &SynthArgs) -> anyhow::Result<()> {
             eprintln!("sta warning: {w}");
         }
     }
+    if let Some(r) = &run.routing {
+        use fcc_synth::routing::{FANOUT_LIMIT, HOP_LIMIT};
+        eprintln!(
+            "routing hops (netlist, before placement): at most {} ({} endpoints over {HOP_LIMIT}); \
+             {} nets over {FANOUT_LIMIT} loads",
+            r.worst_hops, r.endpoints_over_limit, r.nets_over_limit
+        );
+        for p in &r.worst_paths {
+            eprintln!("  {} hops: {} -> {}", p.hops, p.start, p.end);
+        }
+        eprintln!("highest fanout (clock aside):");
+        for n in &r.top_fanout {
+            eprintln!(
+                "  {:>6} loads  {}  (driven by {})",
+                n.loads, n.net, n.driver
+            );
+        }
+    }
     let row = ResultRow::from_run(&p, Ok(run));
     println!("{}", results::summary_header());
     println!("{}", results::summary_row(&row));

@@ -390,6 +390,7 @@ fn bench_prints_exact_and_paper_rows_and_its_json() {
             );
         }
     }
+    assert!(out.contains("batch frames/s (1 thread)"), "{out}");
     assert!(out.contains("batch frames/s (2 threads)"), "{out}");
     let rows: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
@@ -399,6 +400,9 @@ fn bench_prints_exact_and_paper_rows_and_its_json() {
         "paper_ms",
         "batch_frames_per_s",
         "paper_batch_frames_per_s",
+        "one_thread_batch_frames_per_s",
+        "speedup",
+        "paper_speedup",
         "threads",
     ] {
         assert!(rows[0][field].is_number(), "{field} missing: {rows}");

@@ -65,6 +65,9 @@ pub struct Register {
     pub build_constant: bool,
     pub doc: &'static str,
     pub fields: Vec<Field>,
+    /// A run parameter: the values a write may take ([`run_range`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub range: Option<RunRange>,
 }
 
 /// The values a run-parameter register accepts (inclusive); RUN_K also
@@ -164,6 +167,7 @@ pub fn registers(p: &FccParams) -> Vec<Register> {
         build_constant: true,
         doc,
         fields,
+        range: None,
     };
     let run = |name, offset, reset: usize, doc, fields| Register {
         name,
@@ -173,6 +177,7 @@ pub fn registers(p: &FccParams) -> Vec<Register> {
         build_constant: true,
         doc,
         fields,
+        range: run_range(p, offset),
     };
     let status = |name, offset, doc, fields| Register {
         name,
@@ -182,6 +187,7 @@ pub fn registers(p: &FccParams) -> Vec<Register> {
         build_constant: false,
         doc,
         fields,
+        range: None,
     };
     vec![
         build(
@@ -264,6 +270,7 @@ pub fn registers(p: &FccParams) -> Vec<Register> {
             access: ReadWrite,
             reset: 0,
             build_constant: false,
+            range: None,
             doc: "Control",
             fields: vec![
                 field(
@@ -292,6 +299,7 @@ pub fn registers(p: &FccParams) -> Vec<Register> {
             access: WriteOneToClear,
             reset: 0,
             build_constant: false,
+            range: None,
             doc: "Core status",
             fields: vec![
                 field(
@@ -314,6 +322,7 @@ pub fn registers(p: &FccParams) -> Vec<Register> {
             access: WriteOneToClear,
             reset: 0,
             build_constant: false,
+            range: None,
             doc: "Refused writes of run parameters (sticky, write 1 to clear)",
             fields: vec![
                 field("K", 0, 1, "a RUN_K write was refused"),
@@ -424,7 +433,7 @@ pub fn c_header(p: &FccParams) -> String {
          #ifndef FCC_REGS_H\n#define FCC_REGS_H\n\n#include <stdint.h>\n\n",
     );
     s.push_str(&format!(
-        "#define FCC_REGS_ADDR_BITS {ADDR_BITS}u\n#define FCC_ID_MAGIC 0x{ID_MAGIC:08X}u\n#define FCC_PARAMS_HASH 0x{:016X}ull\n#define FCC_RUN_COLS_MIN {RUN_COLS_MIN}u\n\n",
+        "#define FCC_REGS_ADDR_BITS {ADDR_BITS}u\n#define FCC_ID_MAGIC 0x{ID_MAGIC:08X}u\n#define FCC_PARAMS_HASH 0x{:016X}ull\n\n",
         hash_value(p)
     ));
     for r in registers(p) {
@@ -450,6 +459,12 @@ pub fn c_header(p: &FccParams) -> String {
                     field_mask(f)
                 ));
             }
+        }
+        if let Some(rr) = r.range {
+            s.push_str(&format!(
+                "#define FCC_{}_MIN {}u\n#define FCC_{}_MAX {}u\n",
+                r.name, rr.min, r.name, rr.max
+            ));
         }
         s.push('\n');
     }
@@ -525,6 +540,32 @@ mod tests {
     }
 
     #[test]
+    fn run_ranges_refuse_even_k_zero_thresholds_and_sizes_beyond_the_build() {
+        let p = FccParams {
+            fsize: 11,
+            ..Default::default()
+        };
+        for k in 0..=16 {
+            let ok = k % 2 == 1 && (3..=11).contains(&k);
+            assert_eq!(run_value_ok(&p, offset::RUN_K, k), ok, "K {k}");
+        }
+        for off in [offset::RUN_TH_H, offset::RUN_TH_V] {
+            assert!(!run_value_ok(&p, off, 0));
+            assert!(run_value_ok(&p, off, 1));
+            assert!(run_value_ok(&p, off, TH_Q_MAX));
+            assert!(!run_value_ok(&p, off, TH_Q_MAX + 1));
+        }
+        // The largest threshold the parameters accept quantises to TH_Q_MAX.
+        assert_eq!(fcc_params::quantize_threshold(127.999) as u32, TH_Q_MAX);
+        for (off, max) in [(offset::RUN_ROWS, p.rows), (offset::RUN_COLS, p.cols)] {
+            assert!(run_value_ok(&p, off, max as u32));
+            assert!(!run_value_ok(&p, off, max as u32 + 1));
+            assert!(!run_value_ok(&p, off, 0));
+        }
+        assert!(!run_value_ok(&p, offset::CONTROL, 1));
+    }
+
+    #[test]
     fn hash_registers_hold_the_parameter_hash() {
         let p = FccParams::default();
         let regs = registers(&p);
@@ -540,6 +581,11 @@ mod tests {
         assert!(h.contains("#define FCC_REG_CONTROL 0x040u"), "{h}");
         assert!(h.contains("#define FCC_CONTROL_IRQ_ENABLE_MASK 0x00000002u"));
         assert!(h.contains("#define FCC_REG_K_MAX_RESET 0x00000007u"));
+        assert!(
+            h.contains("#define FCC_RUN_K_MIN 3u\n#define FCC_RUN_K_MAX 7u"),
+            "{h}"
+        );
+        assert!(h.contains("#define FCC_RUN_TH_V_MAX 32768u"), "{h}");
         assert!(h.contains(&format!("0x{}ull", p.hash().to_uppercase())));
         assert!(!h.contains("#include <cstdint>"));
     }

@@ -2,7 +2,9 @@
 //!
 //! - [`yosys`] runs `synth_xilinx -family xc7` on a set of Verilog files,
 //!   reads `stat -json` into [`Resources`] and Yosys's `sta` (with the Xilinx
-//!   cell models and their `specify` delays) into [`Timing`].
+//!   cell models and their `specify` delays, in a second Yosys session on the
+//!   synthesised netlist) into [`Timing`], and measures the netlist's fanout
+//!   and routing hops ([`Routing`]).
 //! - [`flow`] generates the RTL of one [`fcc_params::FccParams`] with
 //!   `fcc-rtl` and runs the estimate on it.
 //! - [`results`] runs the estimate for every K the generator supports and
@@ -19,6 +21,7 @@
 pub mod flow;
 pub mod resources;
 pub mod results;
+pub mod routing;
 pub mod sta;
 pub mod vivado;
 pub mod yosys;
@@ -27,6 +30,7 @@ use std::path::PathBuf;
 
 pub use flow::{estimate, estimate_dir};
 pub use resources::Resources;
+pub use routing::Routing;
 pub use sta::Timing;
 pub use yosys::{YosysConfig, YosysRun};
 

@@ -13,6 +13,7 @@ use fcc_params::FccParams;
 use serde::{Deserialize, Serialize};
 
 use crate::flow;
+use crate::routing::Routing;
 use crate::yosys::{YosysConfig, YosysRun};
 use crate::{io_err, Resources, SynthError, Timing};
 
@@ -79,14 +80,19 @@ pub struct Targets {
     pub critical_path_ns: f64,
     /// Cycles per frame divided by rows x cols.
     pub cycles_per_pixel: f64,
+    /// Most general-routing hops on any path ([`crate::routing`]).
+    pub routing_hops: u32,
+    /// Most loads on any net but the clock.
+    pub net_loads: usize,
 }
 
 /// The corpus name of the synthetic 64 x 2048 scenes the cycle target is about.
 pub const SYNTHETIC_CORPUS: &str = "synthetic";
 
 /// The targets: K = 7 on 64 x 2048, no more logic than the paper, a quarter
-/// of its block RAM (90 of 362.5 tiles), a 3.0 ns pre-route path and at most
-/// 1.3 cycles per pixel.
+/// of its block RAM (90 of 362.5 tiles), a 3.0 ns pre-route path, at most
+/// 1.3 cycles per pixel, no path over 5 routing hops and no net but the clock
+/// over 64 loads.
 pub const TARGETS: Targets = Targets {
     rows: 64,
     cols: 2048,
@@ -97,6 +103,8 @@ pub const TARGETS: Targets = Targets {
     bram36: 90.0,
     critical_path_ns: 3.0,
     cycles_per_pixel: 1.3,
+    routing_hops: crate::routing::HOP_LIMIT,
+    net_loads: crate::routing::FANOUT_LIMIT,
 };
 
 impl Targets {
@@ -199,6 +207,10 @@ pub struct GoldenTiming {
     /// Frames per second of the batch, `paper` merging.
     #[serde(default)]
     pub paper_batch_frames_per_s: Option<f64>,
+    /// The batch rate over the same batch's rate on one thread, exact
+    /// merging (absent from older bench files).
+    #[serde(default)]
+    pub speedup: Option<f64>,
 }
 
 /// Everything measured for one K.
@@ -209,6 +221,9 @@ pub struct ResultRow {
     pub params_hash: String,
     pub resources: Option<Resources>,
     pub timing: Option<Timing>,
+    /// Fanout and routing hops of the netlist.
+    #[serde(default)]
+    pub routing: Option<Routing>,
     /// Cells per first-level block (when asked for).
     #[serde(default)]
     pub by_block: Option<BTreeMap<String, Resources>>,
@@ -234,6 +249,7 @@ impl ResultRow {
             params_hash: p.hash(),
             resources: None,
             timing: None,
+            routing: None,
             by_block: None,
             synth_error: None,
             synth_seconds: None,
@@ -244,6 +260,7 @@ impl ResultRow {
             Ok(r) => {
                 row.resources = Some(r.resources);
                 row.timing = r.timing;
+                row.routing = r.routing;
                 row.by_block = r.by_block;
                 row.synth_seconds = Some(r.seconds);
             }
@@ -277,6 +294,8 @@ struct BenchLine {
     paper_ms: Option<f64>,
     #[serde(default)]
     paper_batch_frames_per_s: Option<f64>,
+    #[serde(default)]
+    speedup: Option<f64>,
 }
 
 impl Report {
@@ -299,6 +318,7 @@ impl Report {
                     threads: l.threads,
                     paper_ms: l.paper_ms,
                     paper_batch_frames_per_s: l.paper_batch_frames_per_s,
+                    speedup: l.speedup,
                 });
                 n += 1;
             }
@@ -710,6 +730,33 @@ pub fn check_targets(row: &ResultRow, t: &Targets) -> Vec<TargetCheck> {
                 .unwrap_or_default(),
         ),
         check(
+            "Routing hops on the longest path",
+            t.routing_hops as f64,
+            row.routing.as_ref().map(|x| x.worst_hops as f64),
+            "",
+            0,
+            row.routing
+                .as_ref()
+                .and_then(|x| x.worst_paths.first())
+                .map(|p| format!("{} to {}", p.start, p.end))
+                .unwrap_or_default(),
+        ),
+        check(
+            "Loads on the highest-fanout net (clock aside)",
+            t.net_loads as f64,
+            row.routing
+                .as_ref()
+                .and_then(|x| x.top_fanout.first())
+                .map(|n| n.loads as f64),
+            "",
+            0,
+            row.routing
+                .as_ref()
+                .and_then(|x| x.top_fanout.first())
+                .map(|n| format!("{} (driven by {})", n.net, n.driver))
+                .unwrap_or_default(),
+        ),
+        check(
             "Cycles per frame (worst synthetic scene)",
             t.cycles_per_pixel * pixels,
             worst_cycles,
@@ -718,6 +765,67 @@ pub fn check_targets(row: &ResultRow, t: &Targets) -> Vec<TargetCheck> {
             format!("target is {} x {} x {}", t.cycles_per_pixel, t.rows, t.cols),
         ),
     ]
+}
+
+/// The fanout and routing-hop tables.
+fn render_routing(s: &mut String, report: &Report) {
+    use crate::routing::{FANOUT_LIMIT, HOP_LIMIT};
+    s.push_str("\n## Fanout and routing hops\n\n");
+    s.push_str(&format!(
+        "What the pre-route estimate cannot see, read from the synthesised netlist: \
+         general-routing hops between the launching and the capturing element (carry-chain, \
+         wide-multiplexer, LUT-to-carry and DSP-cascade links do not count; targets: no \
+         path over {HOP_LIMIT} hops) and the loads of every net but the clock (target: none \
+         over {FANOUT_LIMIT}). Yosys keeps fanout that Vivado may replicate (`max_fanout`) \
+         or pack differently, so these are the netlist's figures before placement.\n\n"
+    ));
+    s.push_str(&format!(
+        "| K | most hops | endpoints over {HOP_LIMIT} hops | longest path from | to | nets over {FANOUT_LIMIT} loads | most loads |\n\
+         |--:|--:|--:|---|---|--:|--:|\n"
+    ));
+    for row in &report.rows {
+        match &row.routing {
+            Some(r) => {
+                let (from, to) = r
+                    .worst_paths
+                    .first()
+                    .map(|p| (code(&p.start), code(&p.end)))
+                    .unwrap_or_default();
+                s.push_str(&format!(
+                    "| {} | {} | {} | {from} | {to} | {} | {} |\n",
+                    row.fsize,
+                    r.worst_hops,
+                    thousands(r.endpoints_over_limit as u64),
+                    r.nets_over_limit,
+                    r.top_fanout
+                        .first()
+                        .map_or("–".to_string(), |n| thousands(n.loads as u64)),
+                ));
+            }
+            None => s.push_str(&format!(
+                "| {} | – | – | {} | | – | – |\n",
+                row.fsize,
+                cell_text(row.synth_error.as_deref().unwrap_or("not measured"))
+            )),
+        }
+    }
+    let measured: Vec<&ResultRow> = report.rows.iter().filter(|r| r.routing.is_some()).collect();
+    if measured.is_empty() {
+        return;
+    }
+    s.push_str("\nThe ten highest-fanout nets of each K:\n\n");
+    s.push_str("| K | net | loads | driven by |\n|--:|---|--:|---|\n");
+    for row in measured {
+        for n in &row.routing.as_ref().expect("filtered").top_fanout {
+            s.push_str(&format!(
+                "| {} | {} | {} | {} |\n",
+                row.fsize,
+                code(&n.net),
+                thousands(n.loads as u64),
+                code(&n.driver)
+            ));
+        }
+    }
 }
 
 /// The results document.
@@ -836,6 +944,8 @@ pub fn render_markdown(report: &Report) -> String {
         }
     }
 
+    render_routing(&mut s, report);
+
     // Cycles.
     s.push_str("\n## Cycles and frame rate (Verilator)\n\n");
     let cycle_rows: Vec<(usize, &CycleMeasure)> = report
@@ -882,7 +992,7 @@ pub fn render_markdown(report: &Report) -> String {
         s.push_str(&format!(
             "`fcc bench` on synthetic {} x {} scenes, release build: milliseconds per frame on \
              one thread, and frames per second of a batch on `threads` threads (speed-up: batch rate \
-             over the one-thread rate), for `exact` merging and the published `paper` merge. \
+             over the same batch's rate on one thread), for `exact` merging and the published `paper` merge. \
              The paper's CPU implementation (Table III): {} s to {} s per frame.\n\n",
             b.rows, b.cols, PAPER_CPU_S_PER_FRAME[0], PAPER_CPU_S_PER_FRAME[1]
         ));
@@ -893,11 +1003,11 @@ pub fn render_markdown(report: &Report) -> String {
         for row in &report.rows {
             if let Some(g) = &row.golden {
                 s.push_str(&format!(
-                    "| {} | {:.2} | {:.0} | {:.2} x | {} | {} | {} |\n",
+                    "| {} | {:.2} | {:.0} | {} | {} | {} | {} |\n",
                     row.fsize,
                     g.exact_ms,
                     g.batch_frames_per_s,
-                    g.batch_frames_per_s * g.exact_ms / 1e3,
+                    opt(g.speedup, |x| format!("{x:.2} x")),
                     opt(g.paper_ms, |m| format!("{m:.2}")),
                     opt(g.paper_batch_frames_per_s, |f| format!("{f:.0}")),
                     opt(g.threads, |t| t.to_string())
@@ -1011,6 +1121,7 @@ mod tests {
             params_hash: "0".into(),
             resources: Some(r),
             timing: Some(timing(t)),
+            routing: None,
             by_block: None,
             synth_error: None,
             synth_seconds: Some(1.0),
@@ -1104,6 +1215,61 @@ mod tests {
     }
 
     #[test]
+    fn routing_tables_and_targets() {
+        use crate::routing::{HopPath, NetFanout};
+        let mut r = row(7, resources(6_000, 6_000, 69, 62, 0), 2.9);
+        r.routing = Some(Routing {
+            top_fanout: vec![
+                NetFanout {
+                    net: "rst_q".into(),
+                    loads: 949,
+                    driver: "rst_q (FDRE.Q)".into(),
+                },
+                NetFanout {
+                    net: "fire".into(),
+                    loads: 65,
+                    driver: "fire_LUT6 (LUT6.O)".into(),
+                },
+            ],
+            nets_over_limit: 2,
+            worst_hops: 6,
+            worst_paths: vec![HopPath {
+                hops: 6,
+                start: "x_q (FDRE.Q)".into(),
+                end: "y_q (FDRE.D)".into(),
+                through: vec![],
+            }],
+            endpoints_over_limit: 12,
+        });
+        let checks = check_targets(&r, &TARGETS);
+        let hops = checks
+            .iter()
+            .find(|c| c.metric == "Routing hops on the longest path")
+            .unwrap();
+        assert_eq!(hops.met, Some(false));
+        assert_eq!(hops.dominated_by, "x_q (FDRE.Q) to y_q (FDRE.D)");
+        let loads = checks
+            .iter()
+            .find(|c| c.metric.starts_with("Loads on the highest-fanout net"))
+            .unwrap();
+        assert_eq!(loads.measured.as_deref(), Some("949"));
+        assert_eq!(loads.met, Some(false));
+        let md = render_markdown(&report(vec![r, row(9, resources(1, 1, 1, 1, 0), 2.0)]));
+        assert!(
+            md.contains("| 7 | 6 | 12 | `x_q (FDRE.Q)` | `y_q (FDRE.D)` | 2 | 949 |"),
+            "{md}"
+        );
+        assert!(
+            md.contains("| 9 | – | – | not measured | | – | – |"),
+            "{md}"
+        );
+        assert!(
+            md.contains("| 7 | `fire` | 65 | `fire_LUT6 (LUT6.O)` |"),
+            "{md}"
+        );
+    }
+
+    #[test]
     fn by_block_names_the_dominant_blocks() {
         let mut r = row(7, resources(10_000, 9_000, 69, 80, 4), 2.0);
         r.by_block = Some(BTreeMap::from([
@@ -1154,7 +1320,7 @@ mod tests {
         assert!(rep.attach_cycles(7, m));
         assert!(!rep.attach_cycles(9, CycleMeasure::new("x", 1, 1.0, 1.0, 1.0, &p)));
         let n = rep
-            .attach_golden_bench(r#"[{"fsize": 7, "exact_ms": 12.5, "paper_ms": 11.0, "batch_frames_per_s": 160.0, "threads": 2}, {"fsize": 3, "exact_ms": 1.0, "batch_frames_per_s": 1.0}]"#)
+            .attach_golden_bench(r#"[{"fsize": 7, "exact_ms": 12.5, "paper_ms": 11.0, "batch_frames_per_s": 160.0, "speedup": 1.9, "threads": 2}, {"fsize": 3, "exact_ms": 1.0, "batch_frames_per_s": 1.0}]"#)
             .unwrap();
         assert_eq!(n, 1);
         // A real sensor's frame is listed but does not enter the target.
@@ -1170,7 +1336,7 @@ mod tests {
             "{md}"
         );
         assert!(
-            md.contains("| 7 | 12.50 | 160 | 2.00 x | 11.00 | – | 2 |"),
+            md.contains("| 7 | 12.50 | 160 | 1.90 x | 11.00 | – | 2 |"),
             "{md}"
         );
         assert!(

@@ -1,10 +1,12 @@
-//! Run Yosys: `synth_xilinx` for the 7 series, `stat -json`, then `sta` with
-//! the Xilinx cell models.
+//! Run Yosys: `synth_xilinx` for the 7 series, `stat -json` and the flat
+//! netlist, then `sta` with the Xilinx cell models in a second session.
 //!
-//! One Yosys process runs one script ([`script`]), written into a work
-//! directory together with its log (`yosys.log`), the cell counts
-//! (`stat.json`) and the timing report (`sta.log`), so a run can be inspected
-//! and repeated by hand: `cd WORK && yosys -s synth.ys`.
+//! One Yosys process runs the synthesis script ([`script`]), written into a
+//! work directory together with its log (`yosys.log`), the cell counts
+//! (`stat.json`) and the netlist (`netlist.json`); a second process runs the
+//! timing script ([`sta_script`], log `sta_yosys.log`, report `sta.log`) on
+//! that netlist alone. Both can be repeated by hand:
+//! `cd WORK && yosys -s synth.ys && yosys -s sta.ys`.
 //!
 //! Choices, and why:
 //! - `-flatten`: `sta` only times paths inside one module, and cell counts of
@@ -19,9 +21,13 @@
 //!   everything inside them flattened. Nothing is optimised across block
 //!   boundaries there, so its totals differ a little from the flat run; it is
 //!   used only to say which block dominates.
-//! - `autoname` before `sta`: names the cells Yosys created after the nets
-//!   they drive, so the critical path names registers of the RTL rather than
-//!   `$abc$123` numbers. It changes no cell.
+//! - `autoname` before writing the netlist: names the cells Yosys created
+//!   after the nets they drive, so the critical path and the fanout tables
+//!   name registers of the RTL rather than `$abc$123` numbers. It changes no
+//!   cell.
+//! - A fresh session for `sta`: reading the cell models with `-specify` into
+//!   the session that synthesised the design gives wrong paths on newer Yosys
+//!   versions; the second session reads only the netlist and the models.
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -29,6 +35,7 @@ use std::time::Instant;
 
 use serde::{Deserialize, Serialize};
 
+use crate::routing::{self, Routing};
 use crate::{io_err, tail_lines, Resources, SynthError, Timing};
 
 /// How to install Yosys, for error messages.
@@ -43,6 +50,11 @@ pub const LOG_FILE: &str = "yosys.log";
 pub const STAT_FILE: &str = "stat.json";
 pub const STA_FILE: &str = "sta.log";
 pub const BLOCKS_FILE: &str = "stat_blocks.json";
+/// The flat netlist after synthesis (Yosys JSON), read by the timing session
+/// and by [`crate::routing`].
+pub const NETLIST_FILE: &str = "netlist.json";
+pub const STA_SCRIPT_FILE: &str = "sta.ys";
+pub const STA_LOG_FILE: &str = "sta_yosys.log";
 
 /// How to run Yosys.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -53,7 +65,8 @@ pub struct YosysConfig {
     pub top: String,
     /// `synth_xilinx -family`.
     pub family: String,
-    /// Run `sta` after synthesis.
+    /// Run `sta` (in a second Yosys session) and measure fanout and routing
+    /// hops after synthesis.
     pub timing: bool,
     /// Also count cells per first-level block (a second synthesis, about twice the time).
     pub by_block: bool,
@@ -77,6 +90,9 @@ pub struct YosysRun {
     pub resources: Resources,
     /// `None` when the run was made without timing.
     pub timing: Option<Timing>,
+    /// Fanout and routing hops of the netlist; `None` without timing.
+    #[serde(default)]
+    pub routing: Option<Routing>,
     /// Cells per first-level block, and the top's own cells under the top's name;
     /// `None` unless asked for.
     pub by_block: Option<std::collections::BTreeMap<String, Resources>>,
@@ -120,11 +136,9 @@ pub fn script(files: &[PathBuf], cfg: &YosysConfig, blocks: &[String]) -> String
     s.push_str(&format!("log {STEP_MARK} stat\n"));
     s.push_str(&format!("tee -q -o {STAT_FILE} stat -json\n"));
     if cfg.timing {
-        s.push_str(&format!("log {STEP_MARK} cell models\n"));
+        s.push_str(&format!("log {STEP_MARK} netlist\n"));
         s.push_str("autoname\n");
-        s.push_str("read_verilog -lib -specify +/xilinx/cells_sim.v\n");
-        s.push_str(&format!("log {STEP_MARK} sta\n"));
-        s.push_str(&format!("tee -q -o {STA_FILE} sta\n"));
+        s.push_str(&format!("write_json {NETLIST_FILE}\n"));
     }
     if by_block {
         s.push_str(&format!("log {STEP_MARK} by-block synth\n"));
@@ -144,6 +158,25 @@ pub fn script(files: &[PathBuf], cfg: &YosysConfig, blocks: &[String]) -> String
             cfg.top
         ));
     }
+    s
+}
+
+/// The timing script, run in a fresh Yosys session on the netlist the
+/// synthesis script wrote: reading the cell models into the synthesis session
+/// itself gives wrong paths on newer Yosys versions.
+pub fn sta_script(top: &str) -> String {
+    let mut s = String::new();
+    s.push_str("# Pre-route timing estimate of the synthesised netlist, written by fcc-synth.\n");
+    s.push_str(&format!(
+        "# Run again from this directory with: yosys -s {STA_SCRIPT_FILE}\n"
+    ));
+    s.push_str(&format!("log {STEP_MARK} read netlist\n"));
+    s.push_str(&format!("read_json {NETLIST_FILE}\n"));
+    s.push_str(&format!("log {STEP_MARK} cell models\n"));
+    s.push_str("read_verilog -lib -specify +/xilinx/cells_sim.v\n");
+    s.push_str(&format!("hierarchy -top {top}\n"));
+    s.push_str(&format!("log {STEP_MARK} sta\n"));
+    s.push_str(&format!("tee -q -o {STA_FILE} sta\n"));
     s
 }
 
@@ -249,7 +282,7 @@ pub fn synthesize(
     std::fs::write(&script_path, script(&files, cfg, &blocks))
         .map_err(io_err("write", &script_path))?;
     let log_path = work_dir.join(LOG_FILE);
-    for stale in [STAT_FILE, STA_FILE, BLOCKS_FILE] {
+    for stale in [STAT_FILE, STA_FILE, BLOCKS_FILE, NETLIST_FILE] {
         let p = work_dir.join(stale);
         if p.exists() {
             std::fs::remove_file(&p).map_err(io_err("remove", &p))?;
@@ -292,6 +325,7 @@ pub fn synthesize(
         tail: log_tail(),
     })?;
     let timing = if cfg.timing {
+        run_sta(cfg, &work_dir)?;
         let sta_path = work_dir.join(STA_FILE);
         let sta = std::fs::read_to_string(&sta_path).map_err(io_err("read", &sta_path))?;
         Some(
@@ -300,6 +334,20 @@ pub fn synthesize(
                 path: sta_path.clone(),
                 reason,
                 tail: tail_lines(&sta, TAIL),
+            })?,
+        )
+    } else {
+        None
+    };
+    let routing = if cfg.timing {
+        let path = work_dir.join(NETLIST_FILE);
+        let text = std::fs::read_to_string(&path).map_err(io_err("read", &path))?;
+        Some(
+            routing::analyse(&text, &cfg.top).map_err(|reason| SynthError::Parse {
+                what: "the synthesised netlist".into(),
+                path: path.clone(),
+                reason,
+                tail: log_tail(),
             })?,
         )
     } else {
@@ -324,11 +372,37 @@ pub fn synthesize(
     Ok(YosysRun {
         resources,
         timing,
+        routing,
         by_block,
         yosys_version,
         seconds,
         work_dir,
     })
+}
+
+/// Run [`sta_script`] in a fresh Yosys process in `work_dir`.
+fn run_sta(cfg: &YosysConfig, work_dir: &Path) -> Result<(), SynthError> {
+    let script_path = work_dir.join(STA_SCRIPT_FILE);
+    std::fs::write(&script_path, sta_script(&cfg.top)).map_err(io_err("write", &script_path))?;
+    let out = start(
+        &cfg.program,
+        INSTALL,
+        Command::new(&cfg.program)
+            .args(["-q", "-l", STA_LOG_FILE, "-s", STA_SCRIPT_FILE])
+            .current_dir(work_dir),
+    )?;
+    if !out.status.success() {
+        let log_path = work_dir.join(STA_LOG_FILE);
+        let log = std::fs::read_to_string(&log_path).unwrap_or_default();
+        return Err(SynthError::ToolFailed {
+            tool: cfg.program.display().to_string(),
+            step: failed_step(&log),
+            status: out.status.to_string(),
+            log: log_path,
+            tail: tail_lines(&log, TAIL),
+        });
+    }
+    Ok(())
 }
 
 #[cfg(test)]
@@ -346,9 +420,18 @@ mod tests {
         assert!(s.contains("read_verilog \"/b c/y.v\"\n"));
         assert!(s.contains("synth_xilinx -family xc7 -top fcc_top -flatten -noiopad -noclkbuf\n"));
         let stat = s.find("stat -json").unwrap();
-        let models = s.find("-specify +/xilinx/cells_sim.v").unwrap();
-        let sta = s.find("tee -q -o sta.log sta").unwrap();
-        assert!(stat < models && models < sta);
+        let netlist = s.find("write_json netlist.json").unwrap();
+        assert!(stat < netlist);
+        // Timing runs in its own session, on the netlist.
+        assert!(!s.contains("-specify") && !s.contains(" sta\n"), "{s}");
+        let t = sta_script("fcc_top");
+        let read = t.find("read_json netlist.json").unwrap();
+        let models = t
+            .find("read_verilog -lib -specify +/xilinx/cells_sim.v")
+            .unwrap();
+        let sta = t.find("tee -q -o sta.log sta").unwrap();
+        assert!(read < models && models < sta, "{t}");
+        assert!(t.contains("hierarchy -top fcc_top\n"));
     }
 
     #[test]
@@ -358,7 +441,10 @@ mod tests {
             ..Default::default()
         };
         let s = script(&[PathBuf::from("/a.v")], &cfg, &[]);
-        assert!(!s.contains(" sta\n") && !s.contains("-specify"), "{s}");
+        assert!(
+            !s.contains(" sta\n") && !s.contains("-specify") && !s.contains("write_json"),
+            "{s}"
+        );
     }
 
     #[test]
@@ -374,7 +460,7 @@ mod tests {
         );
         assert!(s.contains("design -save input\n"));
         let reload = s.find("design -load input").unwrap();
-        assert!(s.find(" sta\n").unwrap() < reload);
+        assert!(s.find("write_json netlist.json").unwrap() < reload);
         assert!(s.contains("setattr -mod -set keep_hierarchy 1 fcc_intra fcc_window\n"));
         assert!(s.contains("stat -json -top fcc_top\n"));
     }

@@ -142,10 +142,39 @@ fn yosys_measures_the_small_design() {
     let blocks = run.by_block.as_ref().unwrap();
     assert_eq!(blocks["fcc_mul"].dsp48e1, 1);
     assert_eq!(blocks["fcc_mem"].ramb18e1, 1);
+    // Fanout and hops from the netlist: `rst` (a primary input) is among the
+    // highest-fanout nets, the list is sorted, the clock is not in it, and
+    // every output is registered, so every path is short.
+    let routing = run.routing.as_ref().unwrap();
+    let rst = routing
+        .top_fanout
+        .iter()
+        .find(|n| n.net == "rst")
+        .unwrap_or_else(|| panic!("rst among the highest-fanout nets: {routing:?}"));
+    assert!(rst.loads >= 1, "{rst:?}");
+    assert!(
+        routing
+            .top_fanout
+            .windows(2)
+            .all(|w| w[0].loads >= w[1].loads),
+        "{routing:?}"
+    );
+    assert!(rst.driver.contains("primary input"), "{rst:?}");
+    assert!(
+        routing.top_fanout.iter().all(|n| n.net != "clk"),
+        "the clock is left out: {routing:?}"
+    );
+    assert!(
+        routing.worst_hops >= 1 && routing.worst_hops <= 4,
+        "{routing:?}"
+    );
     for f in [
         yosys::SCRIPT_FILE,
         yosys::LOG_FILE,
         yosys::STAT_FILE,
+        yosys::NETLIST_FILE,
+        yosys::STA_SCRIPT_FILE,
+        yosys::STA_LOG_FILE,
         yosys::STA_FILE,
     ] {
         assert!(work.path().join(f).is_file(), "{f} is kept for inspection");
