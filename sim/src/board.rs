@@ -546,17 +546,14 @@ impl VirtualBoard {
     }
 }
 
-/// What a driver expects of the build `p` on its block design: the hash,
-/// the thresholds in Q7.8 and the DMA's length width as `fcc gen` sets it
+/// What a driver expects of the build `p` on its block design: the hash
+/// and the DMA's length width as `fcc gen` sets it
 /// (`fcc_rtl::vivado::dma_length_width`).
 pub fn build_expect(p: &fcc_params::FccParams) -> Result<fcc_driver::BuildExpect, SimError> {
     let gen = fcc_rtl::generate(p)?;
     let ports = fcc_rtl::vivado::top_ports(&gen.verilog);
-    let q = |v: i64| u32::try_from(v).unwrap_or(u32::MAX);
     Ok(fcc_driver::BuildExpect {
         hash: fcc_rtl::regmap::hash_value(p),
-        th_h_q: q(p.th_h_q()),
-        th_v_q: q(p.th_v_q()),
         dma_length_bits: fcc_rtl::vivado::dma_length_width(p, &ports)?,
     })
 }
@@ -566,14 +563,23 @@ pub fn build_expect(p: &fcc_params::FccParams) -> Result<fcc_driver::BuildExpect
 pub fn virtual_board(
     p: &fcc_params::FccParams,
 ) -> Result<(VirtualBoard, fcc_driver::BuildExpect), SimError> {
+    virtual_board_with(p, crate::load(p)?)
+}
+
+/// A virtual board around `model`, the Verilator model of the build `p`
+/// (from [`crate::load`] or [`crate::load_dir`]), and the driver's
+/// expectations of it.
+pub fn virtual_board_with(
+    p: &fcc_params::FccParams,
+    model: std::sync::Arc<crate::Model>,
+) -> Result<(VirtualBoard, fcc_driver::BuildExpect), SimError> {
     let expect = build_expect(p)?;
-    let model = crate::load(p)?;
     let board = VirtualBoard::new(model, expect.dma_length_bits, VirtualBoard::mem_for(p));
     Ok((board, expect))
 }
 
-/// The run parameters of the build `p` itself (what a core without run
-/// registers runs).
+/// The run parameters of `p` (for a core built from `p`: its power-on
+/// run values).
 pub fn build_run(p: &fcc_params::FccParams) -> fcc_driver::RunConfig {
     let q = |v: i64| u32::try_from(v).unwrap_or(u32::MAX);
     fcc_driver::RunConfig {

@@ -226,20 +226,25 @@ fn wrong_build_and_wrong_run_parameters_are_refused() {
     let mut labels = vec![0u32; p.pixels()];
     let base = build_run(&p);
     let bad = [
-        RunConfig { k: 4, ..base },
-        RunConfig { k: 5, ..base },
-        RunConfig { rows: 17, ..base },
-        RunConfig { th_h_q: 0, ..base },
-        RunConfig {
-            th_v_q: base.th_v_q + 1,
-            ..base
-        },
+        (RunConfig { k: 4, ..base }, "RUN_K = 4"),
+        (RunConfig { k: 9, ..base }, "RUN_K = 9"),
+        (RunConfig { rows: 17, ..base }, "RUN_ROWS = 17"),
+        (RunConfig { cols: 31, ..base }, "RUN_COLS = 31"),
+        (RunConfig { th_h_q: 0, ..base }, "RUN_TH_H = 0"),
+        (
+            RunConfig {
+                th_v_q: 0x8001,
+                ..base
+            },
+            "RUN_TH_V = 32769",
+        ),
     ];
-    for run in bad {
+    for (run, name) in bad {
         let e = d
             .run_frame(&run, Pixels::Points(&f.points), &mut labels)
             .expect_err("refused");
-        assert!(matches!(e, Error::RunParams { .. }), "{run:?}: {e}");
+        assert!(matches!(e, Error::RunRefused { .. }), "{run:?}: {e}");
+        assert!(e.to_string().contains(name), "{run:?}: {e}");
     }
     let short = &f.points[..100];
     let e = d

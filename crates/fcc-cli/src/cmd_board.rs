@@ -5,7 +5,6 @@
 //! `fcc cluster`.
 
 use std::cell::RefCell;
-use std::collections::HashMap;
 use std::path::PathBuf;
 use std::time::Instant;
 
@@ -30,11 +29,17 @@ pub enum BoardCommand {
 
 #[derive(Args, Debug)]
 pub struct BoardRunArgs {
-    /// The virtual board: the generated core in Verilator (built for each
-    /// frame's size, K and thresholds on first use, then cached) behind a
-    /// model of the AXI DMA and memory; the same driver as on a board.
+    /// The virtual board: one core in Verilator (built on first use, then
+    /// cached) behind a model of the AXI DMA and memory; the same driver as
+    /// on a board. The core is the K_max = 11, 128 x 2048, 16-bit-label
+    /// build, or the one in --rtl DIR; every frame runs at its own size, K
+    /// and thresholds, set through the run registers.
     #[arg(long = "virtual", conflicts_with = "uio")]
     pub virtual_board: bool,
+    /// With --virtual: the configuration `fcc gen --out DIR` wrote, instead
+    /// of the K_max = 11, 128 x 2048 build.
+    #[arg(long, value_name = "DIR", requires = "virtual_board")]
+    pub rtl: Option<PathBuf>,
     /// On a board under Linux: the UIO device of the core's registers and
     /// interrupt (its device-tree node name, or uioN).
     #[arg(long, value_name = "NAME", requires = "params")]
@@ -54,25 +59,83 @@ pub struct BoardRunArgs {
     pub cluster: ClusterLidarArgs,
 }
 
-pub fn run(cmd: &BoardCommand) -> anyhow::Result<()> {
+/// `given(id)`: the option `id` (clap id) of `board run` was on the command
+/// line.
+pub fn run(cmd: &BoardCommand, given: &dyn Fn(&str) -> bool) -> anyhow::Result<()> {
     match cmd {
-        BoardCommand::Run(a) => run_board(a),
+        BoardCommand::Run(a) => run_board(a, given),
     }
 }
 
-fn run_board(args: &BoardRunArgs) -> anyhow::Result<()> {
+/// The core of `fcc board run --virtual` without --rtl: one build for every
+/// sensor (K_max = 11, 128 rows, 2048 columns, 16-bit labels, 4 labels per
+/// beat), the same as the run-time-size regression's.
+pub fn virtual_build() -> FccParams {
+    FccParams {
+        rows: 128,
+        cols: 2048,
+        fsize: 11,
+        label_bits: 16,
+        labels_per_beat: fcc_driver::LABELS_PER_BEAT,
+        ..FccParams::default()
+    }
+}
+
+/// The build's label bits B for the golden model: `--label-bits` must be B
+/// when given; when not, it is B.
+fn label_bits_of(
+    args: &BoardRunArgs,
+    given: &dyn Fn(&str) -> bool,
+    build: &FccParams,
+    where_: &str,
+) -> anyhow::Result<ClusterLidarArgs> {
+    let mut cluster = args.cluster.clone();
+    if given("label_bits") && cluster.model.label_bits != build.label_bits {
+        bail!(
+            "--label-bits {} differs from the core's B = {} ({where_}): drop it or give --label-bits {}",
+            cluster.model.label_bits,
+            build.label_bits,
+            build.label_bits
+        );
+    }
+    cluster.model.label_bits = build.label_bits;
+    Ok(cluster)
+}
+
+fn run_board(args: &BoardRunArgs, given: &dyn Fn(&str) -> bool) -> anyhow::Result<()> {
     if args.cluster.model.merge != MergeMode::Exact {
         bail!("the core computes exact connected components: drop --merge paper");
     }
     let t = Instant::now();
     let report = if args.virtual_board {
-        let hw = Runner::new(Target::Virtual(HashMap::new()));
-        run_cluster_on(&args.cluster, Some(&hw))?;
+        let (build, model, where_) = match &args.rtl {
+            Some(dir) => {
+                let g = fcc_sim::read_generated(dir)?;
+                let model = crate::cmd_sim::load_generated(dir)?;
+                (g.params, model, dir.display().to_string())
+            }
+            None => {
+                let b = virtual_build();
+                let model = crate::cmd_sim::load_params(&b)?;
+                (b, model, "the virtual board's build".to_string())
+            }
+        };
+        let cluster = label_bits_of(args, given, &build, &where_)?;
+        println!(
+            "virtual board: one core for K_max {}, up to {} x {}, B = {} ({where_}); each frame runs at its own size, K and thresholds, set through the run registers",
+            build.fsize, build.rows, build.cols, build.label_bits
+        );
+        let (board, expect) = fcc_sim::virtual_board_with(&build, model)?;
+        let mut d = Driver::open(board, &expect).map_err(|e| anyhow::anyhow!("{e}"))?;
+        recover_if_busy(&mut d, "virtual board")?;
+        let hw = Runner::new(Target::Virtual(Box::new(d), build));
+        run_cluster_on(&cluster, Some(&hw))?;
         hw.summary()
     } else if let Some(core) = &args.uio {
         let params = args.params.as_ref().context("--uio needs --params")?;
-        let hw = Runner::new(open_linux(args, core, params)?);
-        run_cluster_on(&args.cluster, Some(&hw))?;
+        let (target, cluster) = open_linux(args, given, core, params)?;
+        let hw = Runner::new(target);
+        run_cluster_on(&cluster, Some(&hw))?;
         hw.summary()
     } else {
         bail!(
@@ -105,31 +168,32 @@ fn read_build(path: &std::path::Path) -> anyhow::Result<FccParams> {
 }
 
 #[cfg(target_os = "linux")]
-fn open_linux(args: &BoardRunArgs, core: &str, params: &std::path::Path) -> anyhow::Result<Target> {
+fn open_linux(
+    args: &BoardRunArgs,
+    given: &dyn Fn(&str) -> bool,
+    core: &str,
+    params: &std::path::Path,
+) -> anyhow::Result<(Target, ClusterLidarArgs)> {
     let p = read_build(params)?;
-    if args.cluster.model.label_bits != p.label_bits {
-        bail!(
-            "--label-bits {} differs from the core's B = {} ({}): give --label-bits {}",
-            args.cluster.model.label_bits,
-            p.label_bits,
-            params.display(),
-            p.label_bits
-        );
-    }
+    let cluster = label_bits_of(args, given, &p, &params.display().to_string())?;
     let expect = fcc_sim::build_expect(&p)?;
     let hal = fcc_driver::linux::LinuxHal::open(core, &args.uio_dma, &args.udmabuf)?;
     let mut d = Driver::open(hal, &expect).map_err(|e| anyhow::anyhow!("{e}"))?;
     recover_if_busy(&mut d, core)?;
-    Ok(Target::Linux(Box::new(d), p))
+    Ok((Target::Linux(Box::new(d), p), cluster))
 }
 
 #[cfg(not(target_os = "linux"))]
-fn open_linux(_: &BoardRunArgs, _: &str, _: &std::path::Path) -> anyhow::Result<Target> {
+fn open_linux(
+    _: &BoardRunArgs,
+    _: &dyn Fn(&str) -> bool,
+    _: &str,
+    _: &std::path::Path,
+) -> anyhow::Result<(Target, ClusterLidarArgs)> {
     bail!("--uio needs Linux (UIO and u-dma-buf); use --virtual here")
 }
 
 /// A core left mid-frame by an earlier run is reset before the first frame.
-#[cfg(target_os = "linux")]
 fn recover_if_busy<H: fcc_driver::Hal>(d: &mut Driver<H>, what: &str) -> anyhow::Result<()> {
     if let Some((st, mm, s2)) = d.core_busy().map_err(|e| anyhow::anyhow!("{e}"))? {
         eprintln!(
@@ -141,8 +205,8 @@ fn recover_if_busy<H: fcc_driver::Hal>(d: &mut Driver<H>, what: &str) -> anyhow:
 }
 
 enum Target {
-    /// One virtual board per configuration (parameter hash).
-    Virtual(HashMap<String, Driver<VirtualBoard>>),
+    /// The virtual board and the build of its core.
+    Virtual(Box<Driver<VirtualBoard>>, FccParams),
     /// A board under Linux and the build of its core.
     #[cfg(target_os = "linux")]
     Linux(Box<Driver<fcc_driver::linux::LinuxHal>>, FccParams),
@@ -188,49 +252,28 @@ impl Hardware for Runner {
         kept: &RangeImage,
         gold: &PipelineResult,
     ) -> anyhow::Result<Vec<u32>> {
-        let p = FccParams {
-            labels_per_beat: fcc_driver::LABELS_PER_BEAT,
-            ..gold.params.clone()
-        };
         let mut labels = vec![0u32; kept.pixels()];
-        let mut wall = Instant::now();
         let mut target = self.target.borrow_mut();
+        // What the frame runs with: its rows and columns, K and thresholds
+        // (the golden model's parameters, whose B is the build's).
+        let p = gold.params.clone();
+        let run = run_config(&p);
+        let wall = Instant::now();
         let (report, clock_mhz, simulated) = match &mut *target {
-            Target::Virtual(boards) => {
-                p.validate_for_hardware()
-                    .with_context(|| format!("{name}: this frame cannot run on the core"))?;
-                let key = p.hash();
-                if !boards.contains_key(&key) {
-                    let step = if fcc_sim::is_cached(&p)? {
-                        format!("{name}: loading the cached Verilator model")
-                    } else {
-                        format!(
-                            "{name}: building the Verilator model of {} (first run of these parameters, a few minutes; cached in {})",
-                            fcc_rtl::param_summary(&p),
-                            fcc_sim::cache_root().display()
-                        )
-                    };
-                    let hb = crate::progress::Heartbeat::start(&step);
-                    let (board, expect) = fcc_sim::virtual_board(&p)?;
-                    hb.done();
-                    let d = Driver::open(board, &expect).map_err(driver_err(name))?;
-                    boards.insert(key.clone(), d);
-                }
-                let d = boards.get_mut(&key).context("virtual board")?;
-                wall = Instant::now();
+            Target::Virtual(d, build) => {
                 eprintln!(
-                    "{name}: {} x {} through the virtual board ...",
-                    p.rows, p.cols
+                    "{name}: {} x {}, K {} through the virtual board ...",
+                    p.rows, p.cols, p.fsize
                 );
                 let r = d
-                    .run_frame(&run_config(&p), Pixels::XyzF32(&kept.xyz), &mut labels)
+                    .run_frame(&run, Pixels::XyzF32(&kept.xyz), &mut labels)
                     .map_err(driver_err(name))?;
-                (r, p.clock_mhz, true)
+                (r, build.clock_mhz, true)
             }
             #[cfg(target_os = "linux")]
             Target::Linux(d, build) => {
                 let r = d
-                    .run_frame(&run_config(&p), Pixels::XyzF32(&kept.xyz), &mut labels)
+                    .run_frame(&run, Pixels::XyzF32(&kept.xyz), &mut labels)
                     .map_err(driver_err(name))?;
                 (r, build.clock_mhz, false)
             }

@@ -171,7 +171,7 @@ pub struct OusterArgs {
     pub max_frames: Option<usize>,
 }
 
-#[derive(Args, Debug)]
+#[derive(Args, Debug, Clone)]
 pub struct ClusterLidarArgs {
     /// Inputs: Ouster captures (.pcap, .pcapng) with their JSON metadata,
     /// Velodyne captures, ROS 2 recordings (.mcap, PointCloud2), point clouds

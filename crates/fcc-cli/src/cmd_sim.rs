@@ -149,8 +149,7 @@ pub fn run(args: &SimArgs, given: &dyn Fn(&str) -> bool) -> anyhow::Result<()> {
                     dir.display()
                 )
             })?;
-            let cached = fcc_sim::is_cached_dir(dir)?;
-            let model = load_with_progress(cached, || fcc_sim::load_dir(dir))?;
+            let model = load_generated(dir)?;
             let mut dut = Dut::new(model);
             dut.reset(4);
             dut.program_run(&p)
@@ -165,8 +164,7 @@ pub fn run(args: &SimArgs, given: &dyn Fn(&str) -> bool) -> anyhow::Result<()> {
             };
             p.validate_for_hardware()
                 .context("this frame and these parameters cannot run on the RTL")?;
-            let cached = fcc_sim::is_cached(&p)?;
-            let model = load_with_progress(cached, || fcc_sim::load(&p))?;
+            let model = load_params(&p)?;
             let mut dut = Dut::new(model);
             dut.reset(4);
             (p, dut)
@@ -216,6 +214,19 @@ pub fn run(args: &SimArgs, given: &dyn Fn(&str) -> bool) -> anyhow::Result<()> {
         run.gear_stalls
     );
     Ok(())
+}
+
+/// The Verilator model of the configuration `fcc gen --out DIR` wrote into
+/// `dir` (its own Verilog), with progress.
+pub fn load_generated(dir: &std::path::Path) -> anyhow::Result<std::sync::Arc<fcc_sim::Model>> {
+    let cached = fcc_sim::is_cached_dir(dir)?;
+    load_with_progress(cached, || fcc_sim::load_dir(dir))
+}
+
+/// The Verilator model of the core generated from `p`, with progress.
+pub fn load_params(p: &FccParams) -> anyhow::Result<std::sync::Arc<fcc_sim::Model>> {
+    let cached = fcc_sim::is_cached(p)?;
+    load_with_progress(cached, || fcc_sim::load(p))
 }
 
 /// Load a Verilator model, saying whether it is being built (minutes) or

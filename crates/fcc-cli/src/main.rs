@@ -82,7 +82,12 @@ fn main() {
         Command::Gen(a) => cmd_gen::run(a),
         Command::Sim(a) => cmd_sim::run(a, &|id| given("sim", id)),
         Command::Synth(a) => cmd_synth::run(a),
-        Command::Board(a) => cmd_board::run(a),
+        Command::Board(a) => cmd_board::run(a, &|id| {
+            matches
+                .subcommand_matches("board")
+                .and_then(|m| m.subcommand_matches("run"))
+                .is_some_and(|m| m.value_source(id) == Some(ValueSource::CommandLine))
+        }),
     };
     if let Err(e) = result {
         eprintln!("error: {}", error_line(&e));

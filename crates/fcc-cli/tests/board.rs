@@ -1,7 +1,9 @@
 //! `fcc board run --virtual` end to end: the four Ouster captures at their
-//! own size through the driver, the AXI DMA model and the Verilator model of
-//! the core, every label checked against the golden model by the command
-//! itself; its outputs equal those of `fcc cluster`; and its refusals.
+//! own size on one K_max = 11, 128 x 2048 core (programmed through its run
+//! registers, never rebuilt) through the driver, the AXI DMA model and the
+//! Verilator model of the core, every label checked against the golden
+//! model by the command itself; its outputs equal those of `fcc cluster`;
+//! and its refusals.
 
 use std::path::Path;
 use std::process::Output;
@@ -13,9 +15,9 @@ fn fcc(args: &[&str]) -> Output {
     fcc_testkit::run_in(env!("CARGO_BIN_EXE_fcc"), None, args)
 }
 
-/// Each capture at its own size (32, 64 and 128 beams x 1024) on the
-/// default K = 7 core: the same Verilator models as the regression's
-/// `real_ouster_frames_at_their_own_size` (shared through the cache).
+/// Each capture at its own size (32, 64 and 128 beams x 1024), K = 7, on
+/// the K_max = 11, 128 x 2048, B = 16 core: the same Verilator model as
+/// fcc-sim's `run_size` test (shared through the cache).
 #[test]
 fn ouster_captures_on_the_virtual_board_equal_the_golden_model() {
     let data = lidar_data();
@@ -42,10 +44,13 @@ fn ouster_captures_on_the_virtual_board_equal_the_golden_model() {
         let out = text(&o);
         assert!(o.status.success(), "{pcap}: {out}");
         assert!(out.contains("labels equal to the golden model's"), "{out}");
+        assert!(out.contains("K_max 11"), "one K_max = 11 core: {out}");
         assert!(out.contains("PASS: 1 frame through the core"), "{out}");
         eprintln!("{out}");
         let o = fcc(&[
             "cluster",
+            "--label-bits",
+            "16",
             "--input",
             s(&input),
             "--meta",
@@ -70,6 +75,48 @@ fn ouster_captures_on_the_virtual_board_equal_the_golden_model() {
         }
     }
     let _ = std::fs::remove_dir_all(&d);
+}
+
+/// A K the core cannot run is refused by the core (its ERROR register),
+/// named, and the command stops before sending the frame. The next frame
+/// on the same core after a refusal is checked in fcc-sim's board test.
+#[test]
+fn run_value_the_core_refuses_names_the_register() {
+    let data = Path::new(env!("CARGO_MANIFEST_DIR")).join("../fcc-lidar/tests/data");
+    let (pcap, json) = SAMPLE_CAPTURES[0];
+    let o = fcc(&[
+        "board",
+        "run",
+        "--virtual",
+        "--fsize",
+        "13",
+        "--input",
+        s(&data.join(pcap)),
+        "--meta",
+        s(&data.join(json)),
+    ]);
+    let out = text(&o);
+    assert!(!o.status.success(), "{out}");
+    assert!(out.contains("the core refused RUN_K = 13"), "{out}");
+    assert!(out.contains("K_MAX 11"), "{out}");
+    assert!(!out.contains("PASS"), "{out}");
+    let o = fcc(&[
+        "board",
+        "run",
+        "--virtual",
+        "--label-bits",
+        "12",
+        "--input",
+        s(&data.join(pcap)),
+        "--meta",
+        s(&data.join(json)),
+    ]);
+    let out = text(&o);
+    assert!(!o.status.success(), "{out}");
+    assert!(
+        out.contains("--label-bits 12 differs from the core's B = 16"),
+        "{out}"
+    );
 }
 
 #[test]

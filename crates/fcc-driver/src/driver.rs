@@ -4,13 +4,16 @@ use fcc_pixel::{label_of_beat, pixel_beat, quantize_point, Point, LABEL_BEAT_BYT
 use fcc_regmap::{bits, offset, ID_MAGIC};
 
 use crate::dma;
-use crate::error::{Channel, DmaCause, Error};
+use crate::error::{Channel, DmaCause, Error, RefusedBits};
 use crate::hal::{DmaBuffer, Hal, Window, DMA_ALIGN};
 
 /// Labels per output beat the driver takes: the AXI DMA's S2MM channel needs
 /// every beat of a packet whole except the last, so every slot of a beat
 /// must hold a label.
 pub const LABELS_PER_BEAT: u32 = 4;
+/// Every bit of the ERROR register (one per run register).
+const ERROR_ALL: u32 =
+    bits::ERROR_K | bits::ERROR_TH_H | bits::ERROR_TH_V | bits::ERROR_ROWS | bits::ERROR_COLS;
 /// Bytes of one label in the S2MM buffer.
 const LABEL_BYTES: usize = 2;
 
@@ -38,9 +41,6 @@ impl RunConfig {
 pub struct BuildExpect {
     /// The parameter hash (`FCC_PARAMS_HASH`).
     pub hash: u64,
-    /// The build's thresholds in Q7.8: the power-on run values.
-    pub th_h_q: u32,
-    pub th_v_q: u32,
     /// Bits of the AXI DMA's length registers (`c_sg_length_width`).
     pub dma_length_bits: u32,
 }
@@ -231,14 +231,18 @@ impl<H: Hal> Driver<H> {
         let pixels = build.rows_max as usize * build.cols_max as usize;
         let tx = hal.alloc_dma(round_up(pixels * PIXEL_BYTES))?;
         let rx = hal.alloc_dma(round_up(label_buffer_bytes(pixels)))?;
+        // The power-on run values (the build's), or what the last program
+        // left in the run registers.
+        let mut rd = |o| hal.read32(Window::Core, o);
+        let defaults = RunConfig {
+            rows: rd(offset::RUN_ROWS)?,
+            cols: rd(offset::RUN_COLS)?,
+            k: rd(offset::RUN_K)?,
+            th_h_q: rd(offset::RUN_TH_H)?,
+            th_v_q: rd(offset::RUN_TH_V)?,
+        };
         let mut d = Driver {
-            defaults: RunConfig {
-                rows: build.rows_max,
-                cols: build.cols_max,
-                k: build.k_max,
-                th_h_q: expect.th_h_q,
-                th_v_q: expect.th_v_q,
-            },
+            defaults,
             timeouts: Timeouts::for_build(&build),
             length_bits: expect.dma_length_bits,
             build,
@@ -341,70 +345,32 @@ impl<H: Hal> Driver<H> {
         Ok(())
     }
 
-    /// Check `run` against the build's limits and set it for the next
-    /// frame (the core takes run parameters at a frame's start).
+    /// Set `run` for the next frame (the core takes run parameters at a
+    /// frame's start). The core checks each value against its build's
+    /// limits; a refusal is [`Error::RunRefused`].
     pub fn program_run(&mut self, run: &RunConfig) -> Res<(), H> {
-        let b = self.build;
-        let bad = |what, value, allowed, limit| {
-            Err(Error::RunParams {
-                what,
-                value,
-                allowed,
-                limit,
-            })
-        };
-        if run.k & 1 == 0 || run.k < 3 {
-            return bad("K", run.k, "must be odd and at least", 3);
-        }
-        if run.k > b.k_max {
-            return bad("K", run.k, "exceeds the build's K_MAX", b.k_max);
-        }
-        if run.rows == 0 || run.rows > b.rows_max {
-            return bad("rows", run.rows, "must be 1 ..= ROWS_MAX", b.rows_max);
-        }
-        if run.cols < fcc_regmap::RUN_COLS_MIN || run.cols > b.cols_max {
-            return bad(
-                "cols",
-                run.cols,
-                "must be RUN_COLS_MIN ..= COLS_MAX",
-                b.cols_max,
-            );
-        }
-        if run.th_h_q == 0 {
-            return bad("th_H (Q7.8)", 0, "must be at least", 1);
-        }
-        if run.th_v_q == 0 {
-            return bad("th_V (Q7.8)", 0, "must be at least", 1);
-        }
         self.write_run_registers(run)
     }
 
-    /// The one place the run registers are written.
-    ///
-    /// This core's register file has no run registers yet: rows, columns, K
-    /// and the thresholds are the build's, so a run must ask for exactly
-    /// those. When the run registers exist (RUN_K, RUN_TH_H, RUN_TH_V,
-    /// RUN_ROWS, RUN_COLS and the W1C ERROR register), this writes each
-    /// value, then reads ERROR: a set bit means the core refused that value
-    /// (the old one stays), which is reported and cleared.
+    /// The one place the run registers are written: clear ERROR, write
+    /// each value, read ERROR. A set bit means the core refused that value
+    /// (it keeps the old one); the bits are cleared and reported.
     fn write_run_registers(&mut self, run: &RunConfig) -> Res<(), H> {
-        let d = self.defaults;
-        let pairs = [
-            ("rows", run.rows, d.rows),
-            ("cols", run.cols, d.cols),
-            ("K", run.k, d.k),
-            ("th_H (Q7.8)", run.th_h_q, d.th_h_q),
-            ("th_V (Q7.8)", run.th_v_q, d.th_v_q),
-        ];
-        for (what, value, built) in pairs {
-            if value != built {
-                return Err(Error::RunParams {
-                    what,
-                    value,
-                    allowed: "this core has no run-time parameter registers and runs only its build value",
-                    limit: built,
-                });
-            }
+        self.core_w(offset::ERROR, ERROR_ALL)?;
+        self.core_w(offset::RUN_K, run.k)?;
+        self.core_w(offset::RUN_TH_H, run.th_h_q)?;
+        self.core_w(offset::RUN_TH_V, run.th_v_q)?;
+        self.core_w(offset::RUN_ROWS, run.rows)?;
+        self.core_w(offset::RUN_COLS, run.cols)?;
+        let refused = self.core_r(offset::ERROR)? & ERROR_ALL;
+        if refused != 0 {
+            self.core_w(offset::ERROR, refused)?;
+            let b = &self.build;
+            return Err(Error::RunRefused {
+                bits: RefusedBits(refused),
+                run: *run,
+                limits: (b.k_max, b.rows_max, b.cols_max),
+            });
         }
         Ok(())
     }

@@ -4,6 +4,48 @@
 use core::fmt;
 
 use crate::dma;
+use crate::driver::RunConfig;
+
+/// The bits of the core's ERROR register: which run registers refused the
+/// value written.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct RefusedBits(pub u32);
+
+impl RefusedBits {
+    /// The refused registers: name, the value the run asked for, the range
+    /// the core takes (docs/rtl.md).
+    pub fn registers(
+        self,
+        run: &RunConfig,
+    ) -> impl Iterator<Item = (&'static str, u32, &'static str)> + '_ {
+        use fcc_regmap::bits;
+        [
+            (bits::ERROR_K, "RUN_K", run.k, "odd, 3 ..= K_MAX"),
+            (
+                bits::ERROR_TH_H,
+                "RUN_TH_H",
+                run.th_h_q,
+                "1 ..= 0x8000 (Q7.8)",
+            ),
+            (
+                bits::ERROR_TH_V,
+                "RUN_TH_V",
+                run.th_v_q,
+                "1 ..= 0x8000 (Q7.8)",
+            ),
+            (bits::ERROR_ROWS, "RUN_ROWS", run.rows, "1 ..= ROWS_MAX"),
+            (
+                bits::ERROR_COLS,
+                "RUN_COLS",
+                run.cols,
+                "RUN_COLS_MIN (32) ..= COLS_MAX",
+            ),
+        ]
+        .into_iter()
+        .filter(move |(b, ..)| self.0 & b != 0)
+        .map(|(_, name, v, range)| (name, v, range))
+    }
+}
 
 /// A DMA channel.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -62,13 +104,13 @@ pub enum Error<E> {
     HashMismatch { expected: u64, found: u64 },
     /// The core's build cannot be driven by this driver.
     Unsupported(&'static str),
-    /// The run parameters are outside the build's limits, or cannot be set
-    /// on this core.
-    RunParams {
-        what: &'static str,
-        value: u32,
-        allowed: &'static str,
-        limit: u32,
+    /// The core refused run values (its ERROR register): it keeps the
+    /// previous ones; ERROR was cleared.
+    RunRefused {
+        bits: RefusedBits,
+        run: RunConfig,
+        /// The build's limits (K_MAX, ROWS_MAX, COLS_MAX).
+        limits: (u32, u32, u32),
     },
     /// The frame's data does not hold `rows * cols` pixels.
     FrameSize { expected: usize, got: usize },
@@ -132,12 +174,18 @@ impl<E: fmt::Display> fmt::Display for Error<E> {
                 "the core was built from other parameters: its hash is {found:016x}, the software expects {expected:016x}; load the bitstream of these parameters or give the core's fcc_params.json"
             ),
             Error::Unsupported(why) => write!(f, "this core cannot be driven: {why}"),
-            Error::RunParams {
-                what,
-                value,
-                allowed,
-                limit,
-            } => write!(f, "run parameter {what} = {value}: {allowed} {limit}"),
+            Error::RunRefused { bits, run, limits } => {
+                f.write_str("the core refused")?;
+                for (i, (name, v, range)) in bits.registers(run).enumerate() {
+                    let sep = if i == 0 { " " } else { "; " };
+                    write!(f, "{sep}{name} = {v} (takes {range})")?;
+                }
+                write!(
+                    f,
+                    "; this build has K_MAX {}, ROWS_MAX {}, COLS_MAX {} (ERROR {:#04x}, cleared; the frame was not sent)",
+                    limits.0, limits.1, limits.2, bits.0
+                )
+            }
             Error::FrameSize { expected, got } => write!(
                 f,
                 "the frame holds {got} pixels, the run parameters say {expected}"

@@ -27,5 +27,5 @@ pub use driver::{
     BuildExpect, BuildInfo, Driver, FrameReport, FrameStatus, Pixels, RunConfig, Timeouts,
     LABELS_PER_BEAT,
 };
-pub use error::{Channel, DmaCause, Error};
+pub use error::{Channel, DmaCause, Error, RefusedBits};
 pub use hal::{DmaBuffer, Hal, Window, DMA_ALIGN};

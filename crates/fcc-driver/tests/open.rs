@@ -1,12 +1,14 @@
 //! `Driver::open` on a register-level fake of the core and the DMA: the
 //! checks that need no simulation (ID word, hash, labels per beat, DMA
-//! length width, a DMA reset that never ends, run parameters against the
-//! build's limits). Frames are run on the virtual board (`fcc-sim`).
+//! length width, a DMA reset that never ends, the run registers and the
+//! ERROR register). Frames are run on the virtual board (`fcc-sim`).
 
 use std::collections::HashMap;
 use std::fmt;
 
-use fcc_driver::{dma, BuildExpect, DmaBuffer, Driver, Error, Hal, Pixels, RunConfig, Window};
+use fcc_driver::{
+    dma, BuildExpect, DmaBuffer, Driver, Error, Hal, Pixels, RefusedBits, RunConfig, Window,
+};
 use fcc_regmap::{bits, offset, ID_MAGIC};
 
 #[derive(Debug)]
@@ -31,12 +33,30 @@ impl DmaBuffer for Buf {
 }
 
 /// Registers as a map; time moves 1 us per access; the DMA's reset ends
-/// at once unless `reset_sticks`.
+/// at once unless `reset_sticks`. The run registers take a value within
+/// the build's limits (docs/rtl.md) and otherwise keep theirs and set their
+/// ERROR bit; ERROR is write-1-to-clear. `writes` logs every core write.
 struct Fake {
     core: HashMap<u32, u32>,
     dma: HashMap<u32, u32>,
     t: u64,
     reset_sticks: bool,
+    writes: Vec<(u32, u32)>,
+}
+
+/// The run registers' rule of docs/rtl.md for the fake's build (K_MAX 7,
+/// ROWS_MAX 16, COLS_MAX 256): (register, ERROR bit, accepts).
+type Accepts = fn(u32) -> bool;
+
+fn run_rule(o: u32) -> Option<(u32, Accepts)> {
+    Some(match o {
+        offset::RUN_K => (bits::ERROR_K, |v| v % 2 == 1 && (3..=7).contains(&v)),
+        offset::RUN_TH_H => (bits::ERROR_TH_H, |v| (1..=0x8000).contains(&v)),
+        offset::RUN_TH_V => (bits::ERROR_TH_V, |v| (1..=0x8000).contains(&v)),
+        offset::RUN_ROWS => (bits::ERROR_ROWS, |v| (1..=16).contains(&v)),
+        offset::RUN_COLS => (bits::ERROR_COLS, |v| (32..=256).contains(&v)),
+        _ => return None,
+    })
 }
 
 const HASH: u64 = 0x0123_4567_89ab_cdef;
@@ -53,6 +73,11 @@ fn fake(lpb: u32) -> Fake {
         (offset::LABELS_PER_BEAT, lpb),
         (offset::CLOCK_KHZ, 200_000),
         (offset::STATUS, bits::STATUS_IDLE),
+        (offset::RUN_K, 7),
+        (offset::RUN_TH_H, 128),
+        (offset::RUN_TH_V, 256),
+        (offset::RUN_ROWS, 16),
+        (offset::RUN_COLS, 256),
     ]);
     Fake {
         core,
@@ -62,6 +87,7 @@ fn fake(lpb: u32) -> Fake {
         ]),
         t: 0,
         reset_sticks: false,
+        writes: Vec::new(),
     }
 }
 
@@ -80,8 +106,17 @@ impl Hal for Fake {
         self.t += 1000;
         match w {
             Window::Core => {
+                self.writes.push((o, v));
                 if o == offset::CONTROL {
                     self.core.insert(o, v & bits::CONTROL_IRQ_ENABLE);
+                } else if o == offset::ERROR {
+                    *self.core.entry(o).or_default() &= !v;
+                } else if let Some((bit, ok)) = run_rule(o) {
+                    if ok(v) {
+                        self.core.insert(o, v);
+                    } else {
+                        *self.core.entry(offset::ERROR).or_default() |= bit;
+                    }
                 }
             }
             Window::Dma => {
@@ -116,8 +151,6 @@ impl Hal for Fake {
 fn expect() -> BuildExpect {
     BuildExpect {
         hash: HASH,
-        th_h_q: 128,
-        th_v_q: 256,
         dma_length_bits: 16,
     }
 }
@@ -211,34 +244,129 @@ fn frame_too_long_for_the_dma_length_register_is_refused() {
 }
 
 #[test]
-fn run_parameters_outside_the_build_limits_are_refused() {
-    let mut d = Driver::open(fake(4), &expect()).unwrap();
-    let base = d.defaults();
+fn defaults_are_read_from_the_run_registers() {
+    let mut f = fake(4);
+    f.core.insert(offset::RUN_K, 5);
+    f.core.insert(offset::RUN_COLS, 64);
+    let d = Driver::open(f, &expect()).unwrap();
     assert_eq!(
-        base,
+        d.defaults(),
         RunConfig {
             rows: 16,
-            cols: 256,
-            k: 7,
+            cols: 64,
+            k: 5,
             th_h_q: 128,
             th_v_q: 256
         }
     );
-    for (run, what) in [
-        (RunConfig { k: 9, ..base }, "K"),
-        (RunConfig { k: 1, ..base }, "K"),
-        (RunConfig { rows: 0, ..base }, "rows"),
-        (RunConfig { cols: 257, ..base }, "cols"),
-        (RunConfig { cols: 5, ..base }, "cols"),
-        (RunConfig { th_v_q: 0, ..base }, "th_V (Q7.8)"),
-        // Within the limits, but this core has no run registers.
-        (RunConfig { k: 5, ..base }, "K"),
-        (RunConfig { rows: 8, ..base }, "rows"),
+}
+
+#[test]
+fn run_values_are_written_to_the_run_registers() {
+    let mut d = Driver::open(fake(4), &expect()).unwrap();
+    let run = RunConfig {
+        rows: 3,
+        cols: 32,
+        k: 3,
+        th_h_q: 1,
+        th_v_q: 0x8000,
+    };
+    d.program_run(&run).unwrap();
+    let c = &d.hal().core;
+    let got = [
+        offset::RUN_ROWS,
+        offset::RUN_COLS,
+        offset::RUN_K,
+        offset::RUN_TH_H,
+        offset::RUN_TH_V,
+    ]
+    .map(|o| c[&o]);
+    assert_eq!(got, [3, 32, 3, 1, 0x8000]);
+    assert_eq!(c.get(&offset::ERROR).copied().unwrap_or(0), 0);
+}
+
+#[test]
+fn refused_run_values_name_their_registers_and_clear_error() {
+    let mut d = Driver::open(fake(4), &expect()).unwrap();
+    let base = d.defaults();
+    for (run, want, names) in [
+        (
+            RunConfig { k: 9, ..base },
+            bits::ERROR_K,
+            &["RUN_K = 9"][..],
+        ),
+        (RunConfig { k: 4, ..base }, bits::ERROR_K, &["RUN_K = 4"]),
+        (RunConfig { k: 1, ..base }, bits::ERROR_K, &["RUN_K = 1"]),
+        (
+            RunConfig { th_h_q: 0, ..base },
+            bits::ERROR_TH_H,
+            &["RUN_TH_H = 0"],
+        ),
+        (
+            RunConfig {
+                th_v_q: 0x8001,
+                ..base
+            },
+            bits::ERROR_TH_V,
+            &["RUN_TH_V = 32769"],
+        ),
+        (
+            RunConfig { rows: 0, ..base },
+            bits::ERROR_ROWS,
+            &["RUN_ROWS = 0"],
+        ),
+        (
+            RunConfig { rows: 17, ..base },
+            bits::ERROR_ROWS,
+            &["RUN_ROWS = 17"],
+        ),
+        (
+            RunConfig { cols: 257, ..base },
+            bits::ERROR_COLS,
+            &["RUN_COLS = 257"],
+        ),
+        (
+            RunConfig { cols: 31, ..base },
+            bits::ERROR_COLS,
+            &["RUN_COLS = 31"],
+        ),
+        (
+            RunConfig {
+                k: 13,
+                cols: 300,
+                ..base
+            },
+            bits::ERROR_K | bits::ERROR_COLS,
+            &["RUN_K = 13", "RUN_COLS = 300"],
+        ),
     ] {
-        match d.program_run(&run) {
-            Err(Error::RunParams { what: w, .. }) => assert_eq!(w, what, "{run:?}"),
-            other => panic!("{run:?}: expected a refusal of {what}, got {other:?}"),
+        // A stale bit from before must not be blamed on this run.
+        d.hal().core.insert(offset::ERROR, bits::ERROR_ROWS);
+        d.hal().writes.clear();
+        let e = d
+            .program_run(&run)
+            .expect_err(&format!("{run:?} should be refused"));
+        match &e {
+            Error::RunRefused {
+                bits: b, run: r, ..
+            } => {
+                assert_eq!(*b, RefusedBits(want), "{run:?}: {e}");
+                assert_eq!(r, &run);
+            }
+            _ => panic!("{run:?}: expected a refusal, got {e}"),
         }
+        let msg = e.to_string();
+        for n in names {
+            assert!(msg.contains(n), "{run:?}: {msg}");
+        }
+        assert!(msg.contains("K_MAX 7, ROWS_MAX 16, COLS_MAX 256"), "{msg}");
+        // ERROR cleared first (all bits), and the refused bits written back.
+        let w = &d.hal().writes;
+        assert_eq!(w.first(), Some(&(offset::ERROR, 0x1f)), "{w:?}");
+        assert_eq!(w.last(), Some(&(offset::ERROR, want)), "{w:?}");
+        assert_eq!(d.hal().core[&offset::ERROR], 0, "{run:?}");
+        // The core kept its values; a good run goes through.
+        assert_eq!(d.hal().core[&offset::RUN_K], 7);
     }
     d.program_run(&base).unwrap();
 }
