@@ -424,6 +424,7 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
     reg  [23:0] regs$joins;
     reg  [23:0] regs$gear_stalls;
     wire  regs$core_rst;
+    wire  regs$core_rst_next;
     wire  regs$irq;
     wire  regs$frame_done;
     wire  [15:0] regs$st_clusters;
@@ -881,6 +882,7 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
         .joins(regs$joins),
         .gear_stalls(regs$gear_stalls),
         .core_rst(regs$core_rst),
+        .core_rst_next(regs$core_rst_next),
         .irq(regs$irq),
         .frame_done(regs$frame_done),
         .st_clusters(regs$st_clusters),
@@ -1189,6 +1191,10 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
         in_done$d = nxt_in_done;
         tready_q$d = nxt_discard | (nxt_run & ~nxt_in_done & ~nxt_pad & room$q);
         pad_go$d = nxt_pad & nxt_run & ~nxt_in_done & room$q;
+        if (regs$core_rst_next) begin
+            tready_q$d = 1'b0;
+            pad_go$d = 1'b0;
+        end
         if (regs$core_rst) begin
             fsm$d = f_init;
             tready_q$d = 1'b0;
@@ -10875,7 +10881,7 @@ module fcc_top__pen_row(d,q,clock);
 endmodule // fcc_top__pen_row
 
 
-module fcc_regs(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata,s_axil_wstrb,s_axil_wvalid,s_axil_wready,s_axil_bresp,s_axil_bvalid,s_axil_bready,s_axil_araddr,s_axil_arvalid,s_axil_arready,s_axil_rdata,s_axil_rresp,s_axil_rvalid,s_axil_rready,frame_end,idle,clusters,provisional,overflow,unlabelled,frame_error,joins,gear_stalls,core_rst,irq,frame_done,st_clusters,st_provisional,st_overflow,st_unlabelled,st_frame_error,st_joins,st_gear_stalls,run_k,run_th_h_c,run_th_v_c,run_rows,run_cols);
+module fcc_regs(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata,s_axil_wstrb,s_axil_wvalid,s_axil_wready,s_axil_bresp,s_axil_bvalid,s_axil_bready,s_axil_araddr,s_axil_arvalid,s_axil_arready,s_axil_rdata,s_axil_rresp,s_axil_rvalid,s_axil_rready,frame_end,idle,clusters,provisional,overflow,unlabelled,frame_error,joins,gear_stalls,core_rst,core_rst_next,irq,frame_done,st_clusters,st_provisional,st_overflow,st_unlabelled,st_frame_error,st_joins,st_gear_stalls,run_k,run_th_h_c,run_th_v_c,run_rows,run_cols);
 
     // Module arguments
     input wire  clk;
@@ -10907,6 +10913,7 @@ module fcc_regs(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata
     input wire  [23:0] joins;
     input wire  [23:0] gear_stalls;
     output reg  core_rst;
+    output reg  core_rst_next;
     output reg  irq;
     output reg  frame_done;
     output reg  [15:0] st_clusters;
@@ -11606,6 +11613,7 @@ module fcc_regs(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata
             r_v$d = 1'b0;
         end
         core_rst_q$d = rst | soft_q$q;
+        core_rst_next = rst | soft_q$q;
         if (rst) begin
             aw_v$d = 1'b0;
             w_v$d = 1'b0;

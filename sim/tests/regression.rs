@@ -454,3 +454,74 @@ fn cache_knows_built_models_from_unbuilt_ones() {
     };
     assert!(!fcc_sim::is_cached(&never).unwrap());
 }
+
+/// How a short reset reaches the core.
+#[derive(Clone, Copy, Debug)]
+enum ShortReset {
+    /// `rst` high for this many cycles.
+    Pin(u64),
+    /// CONTROL.SOFT_RESET written this many times back to back.
+    Soft(u32),
+}
+
+fn short_reset(d: &mut Dut, how: ShortReset, m: &mut AxilMaster) {
+    match how {
+        ShortReset::Pin(n) => d.reset(n),
+        ShortReset::Soft(n) => {
+            for _ in 0..n {
+                m.write_ok(d, offset::CONTROL, bits::CONTROL_SOFT_RESET)
+                    .unwrap();
+            }
+        }
+    }
+}
+
+/// A reset of one or two cycles (the `rst` pin, or CONTROL.SOFT_RESET) right
+/// after a finished frame, and in the middle of a frame, then seeded random
+/// frames: each must give the golden labels.
+fn short_reset_then_random_frames(fsize: usize) {
+    let p = small(fsize);
+    let mut d = dut(&p);
+    let mut m = AxilMaster::new(fsize as u64);
+    let hows = [
+        ShortReset::Pin(1),
+        ShortReset::Pin(2),
+        ShortReset::Soft(1),
+        ShortReset::Soft(2),
+    ];
+    for (i, how) in hows.into_iter().enumerate() {
+        for mid_frame in [false, true] {
+            let seed = 21 + 10 * i as u64 + u64::from(mid_frame);
+            let f = frames::random(&p, seed);
+            let what = format!("fsize {fsize}, seed {seed}, before {how:?}");
+            check(&mut d, &f, &Drive::default(), &what);
+            if mid_frame {
+                d.feed_partial(&f, p.pixels() / 2, 1_000_000).unwrap();
+            }
+            short_reset(&mut d, how, &mut m);
+            let at = if mid_frame {
+                "in the middle of a frame"
+            } else {
+                "after a frame"
+            };
+            let what = format!("fsize {fsize}, seed {seed}, same frame after {how:?} {at}");
+            check(&mut d, &f, &Drive::default(), &what);
+            let g = frames::random(&p, seed + 5);
+            let what = format!(
+                "fsize {fsize}, seed {}, next frame after {how:?} {at}",
+                seed + 5
+            );
+            check(&mut d, &g, &Drive::default(), &what);
+        }
+    }
+}
+
+#[test]
+fn fsize3_one_and_two_cycle_reset_after_and_within_a_frame() {
+    short_reset_then_random_frames(3);
+}
+
+#[test]
+fn fsize11_one_and_two_cycle_reset_after_and_within_a_frame() {
+    short_reset_then_random_frames(11);
+}

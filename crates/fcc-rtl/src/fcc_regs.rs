@@ -14,7 +14,8 @@
 //! `frame_done` pulses with the latched values already on `st_*`. `irq` is
 //! FRAME_DONE and IRQ_ENABLE. `core_rst` (registered) resets the pixel
 //! pipeline on `rst` and for one cycle after a write of CONTROL.SOFT_RESET;
-//! the register file itself is reset by `rst` only.
+//! `core_rst_next` is the same one cycle earlier. The register file itself
+//! is reset by `rst` only.
 //!
 //! Run parameters: a write to RUN_K .. RUN_COLS is checked against
 //! `regmap::run_range`; a value outside it is refused (the register keeps its
@@ -92,6 +93,10 @@ pub struct FccRegs {
     pub gear_stalls: Signal<In, Bits<24>>,
     // To the core and the top's ports.
     pub core_rst: Signal<Out, Bit>,
+    /// `core_rst` one cycle ahead (its flip-flop's input): lets the top drop
+    /// `s_axis_tready` before the pipeline's reset cycle, so no beat is
+    /// taken while the pipeline is in reset.
+    pub core_rst_next: Signal<Out, Bit>,
     pub irq: Signal<Out, Bit>,
     pub frame_done: Signal<Out, Bit>,
     pub st_clusters: Signal<Out, Bits<16>>,
@@ -289,6 +294,7 @@ impl FccRegs {
             joins: Default::default(),
             gear_stalls: Default::default(),
             core_rst: Default::default(),
+            core_rst_next: Default::default(),
             irq: Default::default(),
             frame_done: Default::default(),
             st_clusters: Default::default(),
@@ -625,6 +631,7 @@ impl Logic for FccRegs {
         }
         // ---- Reset of the pipeline: power-on reset or a soft reset.
         self.core_rst_q.d.next = self.rst.val() | self.soft_q.q.val();
+        self.core_rst_next.next = self.rst.val() | self.soft_q.q.val();
         if self.rst.val() {
             self.aw_v.d.next = false;
             self.w_v.d.next = false;

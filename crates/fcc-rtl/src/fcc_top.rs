@@ -419,6 +419,13 @@ impl Logic for FccTop {
                 & self.room.q.val());
         self.pad_go.d.next =
             self.nxt_pad.val() & self.nxt_run.val() & !self.nxt_in_done.val() & self.room.q.val();
+        // The pipeline's reset is one cycle behind `rst` and the soft reset:
+        // `s_axis_tready` goes low in the cycle before it, so a beat offered
+        // right after a short reset waits instead of being taken and lost.
+        if self.regs.core_rst_next.val() {
+            self.tready_q.d.next = false;
+            self.pad_go.d.next = false;
+        }
         if self.regs.core_rst.val() {
             self.fsm.d.next = self.f_init.val();
             self.tready_q.d.next = false;
