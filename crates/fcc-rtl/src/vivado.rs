@@ -493,12 +493,14 @@ set_output_delay -clock @CLK@ @IO@ [get_ports @IRQ@]
 # must reach every register it resets in the same cycle.
 set_input_delay -clock @CLK@ @IO@ [get_ports @RST@]
 
-# @STATUS@*: quasi-static. They are registers that change once per frame (the
-# counters when the last label beat is accepted, idle when a frame starts)
-# and carry the same values as the status registers, which software reads
-# through the AXI4-Lite port; a system that uses the ports samples them long
-# after the frame's interrupt: no register captures them on the next edge,
-# so the paths to these ports are not timed out of context.
+# @STATUS@*: quasi-static. The counters and flags are registers that change
+# once per frame (when the last label beat is accepted); status_idle is
+# combinational (an AND of three state registers) and changes when a frame
+# starts and ends. They carry the same values as the status registers,
+# which software reads through the AXI4-Lite port; a system that uses the
+# ports samples them long after the frame's interrupt: no register captures
+# them on the next edge, so the paths to these ports are not timed out of
+# context.
 # (status_frame_done is a one-cycle pulse; the block designs leave the
 # status ports unconnected.)
 set_false_path -to [get_ports @STATUS@*]
