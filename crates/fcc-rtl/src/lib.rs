@@ -81,7 +81,7 @@ pub enum RtlError {
     OtherConfiguration(Vec<String>),
     #[error("verilator --lint-only -Wall reported problems in {path}:\n{log}")]
     Lint { path: PathBuf, log: String },
-    #[error("{dir}: no generated configuration here (no fcc_params.json in it or in {dir}/rtl); make one with `fcc gen --out {dir}`")]
+    #[error("{dir}: no generated configuration here (no fcc_params.json in {dir}/rtl_out or in it); make one with `fcc gen --out {dir}`")]
     NotGenerated { dir: PathBuf },
     #[error("{path}: {message}")]
     BadParamsFile { path: PathBuf, message: String },
@@ -212,10 +212,12 @@ impl ParamsFile {
 }
 
 /// The directory of a configuration written by `fcc gen --out DIR` that
-/// holds its `fcc_params.json` and Verilog: `DIR` itself, or `DIR/rtl`. This
-/// is the one place that knows where `fcc gen` puts them.
+/// holds its `fcc_params.json` and Verilog: `DIR/rtl_out` ([`RTL_DIR`], the
+/// layout `fcc gen --out` writes), or `DIR` itself (a Verilog directory
+/// given directly, e.g. one written with `fcc gen --rtl`). This is the one
+/// place that knows where `fcc gen` puts them.
 pub fn generated_rtl_dir(dir: &Path) -> Result<PathBuf, RtlError> {
-    [dir.to_path_buf(), dir.join("rtl")]
+    [dir.join(RTL_DIR), dir.to_path_buf()]
         .into_iter()
         .find(|d| d.join("fcc_params.json").is_file())
         .ok_or_else(|| RtlError::NotGenerated {
