@@ -101,6 +101,8 @@ pub fn header() -> String {
         crate::model::FccOut::c_decl(),
         crate::regs_bench::RegsIn::c_decl(),
         crate::regs_bench::RegsOut::c_decl(),
+        crate::merge_bench::MergeIn::c_decl(),
+        crate::merge_bench::MergeOut::c_decl(),
     ] {
         s.push_str(&d);
         s.push('\n');
@@ -145,7 +147,9 @@ mod tests {
     #[test]
     fn header_declares_every_shim_struct_once() {
         let h = header();
-        for name in ["FccIn", "FccOut", "RegsIn", "RegsOut"] {
+        for name in [
+            "FccIn", "FccOut", "RegsIn", "RegsOut", "MergeIn", "MergeOut",
+        ] {
             assert_eq!(h.matches(&format!("struct {name} {{")).count(), 1, "{name}");
         }
     }

@@ -11,12 +11,56 @@
 //!
 //! [`generate`] checks the parameters and the design, emits the Verilog and
 //! the files that travel with it; [`write_rtl`] writes them to a directory.
+//!
+//! # Naming and rust-hdl idioms
+//!
+//! **Blocks.** One `#[derive(LogicBlock)]` struct per file, the file and the
+//! Verilog module named after the block (`fcc_union_engine.rs`,
+//! `FccUnionEngine`). Ports come first, grouped by interface with a comment;
+//! sub-blocks and registers are private. A block that has sub-blocks only
+//! wires them in its `update()` (as rust-hdl's `sync_fifo.rs` does), plus at
+//! most a small state register that says which sub-block is in charge. A
+//! sub-block field's name becomes part of its module's name
+//! (`fcc_merge_table__union_engine`) and of every register path in a timing
+//! report, so it is named for its role.
+//!
+//! **Registers and signals** are named for what they hold, in full words
+//! (`kept_root`, `next_label`, `word_valid_s1`), never `x0 d0 cr`. rust-hdl
+//! already emits a `DFF`'s ports as `name$q` and `name$d`, so there is no
+//! `_q` suffix. A value carried down a pipeline takes the number of its stage,
+//! in pipeline order, as a suffix (`label_s2`, `label_s3`). A pair of
+//! registers that take turns is named for the turn (`walk_even`,
+//! `walk_odd`). Internal links with back-pressure use one stream shape:
+//! `<link>_valid`, `<link>_ready` (or `<link>_take` where the receiver says
+//! it took the item in this cycle), `<link>_data` or named data fields.
+//! Ports that `fcc_top` wires keep their established short names.
+//!
+//! **State machines** are `#[derive(LogicState)]` enums held in a `DFF`
+//! (`MergeMode { Init, Union, Flatten }`), decoded once with a `match` into
+//! one `Bit` per state that the sub-blocks take as an `active` input, never
+//! `Bits<2>` constants.
+//!
+//! **Constants.** Numbers in `update()` are `Constant<Bits<N>>` fields made
+//! with [`types::kb`] (`one16`, `last_word`), not literals: rust-hdl writes a
+//! literal as a 32- or 64-bit Verilog constant, which Verilator's width lint
+//! rejects, and a named constant says what the number is.
+//!
+//! **Defaults, then overrides.** Every combinational signal and every `DFF`
+//! input a block drives is given its default value at the top of `update()`
+//! (`dff_setup!` holds registers; signals get an explicit default), and later
+//! `if`s override it; the last assignment wins, so the reset branch comes
+//! last. This keeps the emitted `always @(*)` free of latches.
+//!
+//! **Block RAM.** Reads go through `FccRam` (two-cycle read, read-first);
+//! a user that needs the word written in the cycle of its read forwards it
+//! itself, from registers (`fcc_table_ports`).
 
 pub mod example;
 mod fcc_any_or;
 mod fcc_dist_tree;
 mod fcc_dist_unit;
 mod fcc_fifo;
+mod fcc_flatten;
 mod fcc_intra;
 mod fcc_label_update;
 mod fcc_line_buf;
@@ -29,9 +73,12 @@ mod fcc_regs;
 mod fcc_row_word;
 mod fcc_sort_net;
 mod fcc_sq_dist;
+mod fcc_table_init;
+mod fcc_table_ports;
 mod fcc_th_square;
 mod fcc_top;
 mod fcc_two_or;
+mod fcc_union_engine;
 mod fcc_window;
 pub mod lint;
 pub mod regmap;
@@ -184,6 +231,25 @@ pub fn generate_regs(p: &FccParams) -> Result<String, RtlError> {
     let mut v = file_header(p, "//");
     v.push_str("`default_nettype none\n");
     v.push_str(&rename_modules(&constant_selects(&raw), REGS_MODULE));
+    v.push_str("\n`default_nettype wire\n");
+    Ok(v)
+}
+
+/// Name of the merge table's module when generated alone (its bench).
+pub const MERGE_TABLE_MODULE: &str = "fcc_merge_table";
+
+/// The Verilog of the merge table `FccMergeTable` alone, as a module
+/// `fcc_merge_table` with its sub-blocks (for its own bench; the core's copy
+/// is inside `fcc_top.v`).
+pub fn generate_merge_table(p: &FccParams) -> Result<String, RtlError> {
+    p.validate_for_hardware()?;
+    let mut table = fcc_merge_table::FccMergeTable::new(p);
+    table.connect_all();
+    check_all(&table).map_err(|e| RtlError::Check(format!("{e:?}")))?;
+    let raw = generate_verilog_unchecked(&table);
+    let mut v = file_header(p, "//");
+    v.push_str("`default_nettype none\n");
+    v.push_str(&rename_modules(&constant_selects(&raw), MERGE_TABLE_MODULE));
     v.push_str("\n`default_nettype wire\n");
     Ok(v)
 }

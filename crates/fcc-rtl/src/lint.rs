@@ -36,7 +36,21 @@ pub fn waivers(p: &FccParams) -> String {
          lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'jq$ram_*\"\n",
     );
     s.push_str(&axil_waivers("fcc_top.v"));
+    s.push_str(&enum_register_waivers("fcc_top.v"));
     s
+}
+
+/// The waivers of a register that holds a `LogicState` enum, in `file`:
+/// rust-hdl declares the enum's values as `Enum$Value` parameters in every
+/// module that sees the type (the register's own module reads none of them)
+/// and sets the register's simulation start value with a 64-bit zero.
+fn enum_register_waivers(file: &str) -> String {
+    format!(
+        "// rust-hdl declares every LogicState enum's values in each module that\n\
+         // holds the type, used or not, and starts an enum register at 64'h0.\n\
+         lint_off -rule UNUSEDPARAM -file \"*{file}\" -match \"*Parameter is not used: '*$*'*\"\n\
+         lint_off -rule WIDTH -file \"*{file}\" -match \"*Assign RHS's CONST '64'h0' generates 64 bits*\"\n"
+    )
 }
 
 /// The waivers of the register file's ports, in `file`.
@@ -96,4 +110,17 @@ pub fn lint_module(verilog: &Path, vlt: &Path, top: &str) -> Result<String, RtlE
             log,
         })
     }
+}
+
+/// The waivers of `fcc_merge_table.v`, the merge table generated alone for
+/// its bench.
+pub fn merge_table_waivers(p: &FccParams) -> String {
+    let mut s = file_header(p, "//");
+    s.push_str("`verilator_config\n");
+    s.push_str(
+        "// fcc_merge_table.v holds the merge table and its sub-blocks.\n\
+         lint_off -rule DECLFILENAME -file \"*fcc_merge_table.v\"\n",
+    );
+    s.push_str(&enum_register_waivers("fcc_merge_table.v"));
+    s
 }

@@ -1,0 +1,36 @@
+// C ABI around the Verilator model of fcc_merge_table (the merge table alone),
+// loaded at run time by the fcc-sim crate. One call advances one clock cycle.
+#include "Vfcc_merge_table.h"
+#include "fcc_ffi.h"
+#include "vl_model.h"
+
+extern "C" {
+
+void* fcc_merge_new() { return vl_model_new<Vfcc_merge_table>("fcc_merge_table"); }
+
+void fcc_merge_free(void* p) { vl_model_free<Vfcc_merge_table>(p); }
+
+void fcc_merge_step(void* p, const MergeIn* in, MergeOut* out) {
+    vl_model_step<Vfcc_merge_table>(
+        p,
+        [in](Vfcc_merge_table* t) {
+            t->rst = in->rst;
+            t->jv = in->jv;
+            t->ja = in->ja;
+            t->jb = in->jb;
+            t->jsame = in->jsame;
+            t->flat_start = in->flat_start;
+            t->provisional = in->provisional;
+            t->gear_used = in->gear_used;
+        },
+        [out](Vfcc_merge_table* t) {
+            out->jtake = t->jtake;
+            out->init_busy = t->init_busy;
+            out->union_idle = t->union_idle;
+            out->fv = t->fv;
+            out->fval = t->fval;
+            out->clusters = t->clusters;
+        });
+}
+
+}  // extern "C"
