@@ -14,12 +14,19 @@ signal toggling 0->1 and 1->0) counts as reached when any instance of any
 configuration reached it. Submodules (`fcc_dist_tree__units__3__sq`, ...)
 belong to the block named before their first `__`.
 
-Usage: python3 sim/coverage_summary.py DIR [--command TEXT] [--max-list N]
+With `--json PATH` it also writes the per-block counts as JSON
+({command, instances, blocks: [{block, line_hit, line_total, toggle_hit,
+toggle_total}]}), which `fcc synth --all --coverage-json PATH` renders into
+docs/results.md. Blocks it does not know (new sub-blocks) are listed after the
+known ones, by name.
+
+Usage: python3 sim/coverage_summary.py DIR [--command TEXT] [--max-list N] [--json PATH]
 """
 
 import argparse
 import collections
 import glob
+import json
 import os
 import re
 import sys
@@ -94,6 +101,7 @@ def main():
     ap.add_argument("dir", help="directory of the .dat files")
     ap.add_argument("--command", default="bash sim/coverage.sh", help="command named in the header")
     ap.add_argument("--max-list", type=int, default=12, help="unreached items listed per block and kind")
+    ap.add_argument("--json", help="also write the per-block counts to this JSON file")
     a = ap.parse_args()
     files = sorted(glob.glob(os.path.join(a.dir, "*.dat")))
     if not files:
@@ -133,6 +141,25 @@ def main():
         if not hit:
             missed[(kind, blk)].append(key)
     blocks = [b for b in BLOCK_ORDER if b in stats] + sorted(b for b in stats if b not in BLOCK_ORDER)
+
+    if a.json:
+        summary = {
+            "command": a.command,
+            "instances": len(files),
+            "blocks": [
+                {
+                    "block": b,
+                    "line_hit": stats[b][0],
+                    "line_total": stats[b][1],
+                    "toggle_hit": stats[b][2],
+                    "toggle_total": stats[b][3],
+                }
+                for b in blocks
+            ],
+        }
+        with open(a.json, "w", encoding="utf-8") as fh:
+            json.dump(summary, fh, indent=2)
+            fh.write("\n")
 
     def pct(h, n):
         return "-" if n == 0 else f"{100.0 * h / n:.1f} %"
