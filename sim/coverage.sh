@@ -1,17 +1,27 @@
 #!/usr/bin/env bash
-# Verilator line and toggle coverage of fcc_top over the Verilator regression,
-# summarised per block into docs/coverage.md.
+# Verilator line and toggle coverage of fcc_top over the Verilator regression
+# (sim/tests/regression.rs and the directed corners of sim/tests/corners.rs),
+# summarised per block into docs/coverage.md (what is never reached) and
+# docs/coverage.json, then rendered into the coverage table of docs/results.md
+# (`fcc synth --all --from-json docs/results.json --coverage-json docs/coverage.json`:
+# nothing else in the results changes).
 #
-#   bash sim/coverage.sh                 # the whole regression (cargo test -p fcc-sim)
-#   bash sim/coverage.sh fsize3          # only the tests whose name contains fsize3
+#   bash sim/coverage.sh                          # the whole regression
+#   bash sim/coverage.sh --skip scenes_64x2048    # without the 64 x 2048 scenes
+#   bash sim/coverage.sh fsize3                   # only the tests whose name contains fsize3
 #
-# The coverage models are cached apart from the plain ones (key suffix -cov);
-# the counts go to target/fcc-coverage (emptied first).
+# Arguments go to the test binaries (name filters, --skip). The coverage
+# models are cached apart from the plain ones (key suffix -cov); the counts go
+# to target/fcc-coverage (emptied first).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out="$PWD/target/fcc-coverage"
 rm -rf "$out"
 mkdir -p "$out"
-FCC_SIM_COVERAGE="$out" cargo test -p fcc-sim --test regression -- "$@"
-python3 sim/coverage_summary.py "$out" --command "bash sim/coverage.sh${*:+ $*}" > docs/coverage.md
-echo "wrote docs/coverage.md from $(ls "$out"/*.dat | wc -l) coverage files"
+FCC_SIM_COVERAGE="$out" cargo test -p fcc-sim --test regression --test corners -- "$@"
+python3 sim/coverage_summary.py "$out" --command "bash sim/coverage.sh${*:+ $*}" \
+    --json docs/coverage.json > docs/coverage.md.tmp
+mv docs/coverage.md.tmp docs/coverage.md
+echo "wrote docs/coverage.md and docs/coverage.json from $(ls "$out"/*.dat | wc -l) coverage files"
+cargo run --release -q -p fcc-cli -- synth --all --from-json docs/results.json \
+    --coverage-json docs/coverage.json

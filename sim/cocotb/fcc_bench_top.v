@@ -7,7 +7,10 @@
 // * m_axis_tdata, m_axis_tkeep, m_axis_tlast must be 0 or 1 in every bit while
 //   m_axis_tvalid is high and on every cycle after the first accepted output beat;
 // * every status word must be 0 or 1 in every bit on every cycle after the
-//   first status_frame_done.
+//   first status_frame_done;
+// * the AXI4-Lite handshakes (awready, wready, bvalid, arready, rvalid) and irq
+//   must be 0 or 1; bresp while bvalid, rdata and rresp while rvalid, must be
+//   0 or 1 in every bit.
 // The first violation sets x_fail, names the signal in x_sig (index into
 // X_NAMES of test_fcc_top.py) and its cycle in x_cycle, and is printed.
 // The counters (cycle, accepted input and output beats) serve the test's
@@ -33,7 +36,26 @@ module fcc_bench_top (
     output wire [23:0] status_joins,
     output wire [23:0] status_gear_stalls,
     output wire        status_frame_done,
-    output wire        status_idle
+    output wire        status_idle,
+    // The register file, driven by the test's AXI4-Lite master.
+    input  wire [11:0] s_axil_awaddr,
+    input  wire        s_axil_awvalid,
+    output wire        s_axil_awready,
+    input  wire [31:0] s_axil_wdata,
+    input  wire [3:0]  s_axil_wstrb,
+    input  wire        s_axil_wvalid,
+    output wire        s_axil_wready,
+    output wire [1:0]  s_axil_bresp,
+    output wire        s_axil_bvalid,
+    input  wire        s_axil_bready,
+    input  wire [11:0] s_axil_araddr,
+    input  wire        s_axil_arvalid,
+    output wire        s_axil_arready,
+    output wire [31:0] s_axil_rdata,
+    output wire [1:0]  s_axil_rresp,
+    output wire        s_axil_rvalid,
+    input  wire        s_axil_rready,
+    output wire        irq
 );
     fcc_top core (
         .clk(clk), .rst(rst),
@@ -47,16 +69,16 @@ module fcc_bench_top (
         .status_frame_error(status_frame_error), .status_joins(status_joins),
         .status_gear_stalls(status_gear_stalls), .status_frame_done(status_frame_done),
         .status_idle(status_idle),
-        // Inputs this bench does not drive yet, tied to their idle values
-        // (an AXI4-Lite master can take these over): every byte kept, the
-        // register port idle, its responses always accepted.
-        .s_axis_tkeep(8'hff),
-        .s_axil_awaddr(12'd0), .s_axil_awvalid(1'b0), .s_axil_awready(),
-        .s_axil_wdata(32'd0), .s_axil_wstrb(4'hf), .s_axil_wvalid(1'b0), .s_axil_wready(),
-        .s_axil_bresp(), .s_axil_bvalid(), .s_axil_bready(1'b1),
-        .s_axil_araddr(12'd0), .s_axil_arvalid(1'b0), .s_axil_arready(),
-        .s_axil_rdata(), .s_axil_rresp(), .s_axil_rvalid(), .s_axil_rready(1'b1),
-        .irq()
+        .s_axil_awaddr(s_axil_awaddr), .s_axil_awvalid(s_axil_awvalid), .s_axil_awready(s_axil_awready),
+        .s_axil_wdata(s_axil_wdata), .s_axil_wstrb(s_axil_wstrb), .s_axil_wvalid(s_axil_wvalid),
+        .s_axil_wready(s_axil_wready),
+        .s_axil_bresp(s_axil_bresp), .s_axil_bvalid(s_axil_bvalid), .s_axil_bready(s_axil_bready),
+        .s_axil_araddr(s_axil_araddr), .s_axil_arvalid(s_axil_arvalid), .s_axil_arready(s_axil_arready),
+        .s_axil_rdata(s_axil_rdata), .s_axil_rresp(s_axil_rresp), .s_axil_rvalid(s_axil_rvalid),
+        .s_axil_rready(s_axil_rready),
+        .irq(irq),
+        // The source sends whole beats: every byte kept.
+        .s_axis_tkeep(8'hff)
     );
 
     reg [31:0] cycle = 0;
@@ -96,6 +118,15 @@ module fcc_bench_top (
             `FCC_CHECK(status_seen || status_frame_done === 1'b1, 11, "status_frame_error", status_frame_error)
             `FCC_CHECK(status_seen || status_frame_done === 1'b1, 12, "status_joins", status_joins)
             `FCC_CHECK(status_seen || status_frame_done === 1'b1, 13, "status_gear_stalls", status_gear_stalls)
+            `FCC_CHECK(1, 14, "s_axil_awready", s_axil_awready)
+            `FCC_CHECK(1, 15, "s_axil_wready", s_axil_wready)
+            `FCC_CHECK(1, 16, "s_axil_bvalid", s_axil_bvalid)
+            `FCC_CHECK(1, 17, "s_axil_arready", s_axil_arready)
+            `FCC_CHECK(1, 18, "s_axil_rvalid", s_axil_rvalid)
+            `FCC_CHECK(1, 19, "irq", irq)
+            `FCC_CHECK(s_axil_bvalid === 1'b1, 20, "s_axil_bresp", s_axil_bresp)
+            `FCC_CHECK(s_axil_rvalid === 1'b1, 21, "s_axil_rdata", s_axil_rdata)
+            `FCC_CHECK(s_axil_rvalid === 1'b1, 22, "s_axil_rresp", s_axil_rresp)
             if (s_axis_tvalid === 1'b1 && s_axis_tready === 1'b1) in_beats <= in_beats + 1;
             if (m_axis_tvalid === 1'b1 && m_axis_tready === 1'b1) begin
                 out_beats <= out_beats + 1;

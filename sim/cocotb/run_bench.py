@@ -51,6 +51,7 @@ ALL_CASES = (
     "late tlast",
     "back to back",
     "reset in the middle of a frame",
+    "registers",
 )
 # The cases each configuration runs, per variant. Icarus is slow on this
 # design and slower the larger K (measured CPU per cycle: K = 3 about 1 ms,
@@ -58,8 +59,12 @@ ALL_CASES = (
 # K a share of them, and the reset-only copies the cases that need the union
 # engine and a reset in the middle of a frame (the seeded random frame first:
 # its clean `status_joins` is the reference after the reset).
+# The register file through the AXI4-Lite master ("registers": a short frame
+# with run parameters other than the build's) runs on K = 5 as generated and
+# on K = 3 reset-only.
 CASES = {
-    3: {"generated": ALL_CASES, "reset_only": ("all one cluster", "random", "back to back", "reset in the middle of a frame")},
+    3: {"generated": ALL_CASES[:-1],
+        "reset_only": ("all one cluster", "random", "back to back", "reset in the middle of a frame", "registers")},
     5: {"generated": ALL_CASES, "reset_only": ("random", "reset in the middle of a frame")},
     7: {"generated": ("all one cluster", "label overflow", "random", "early tlast", "reset in the middle of a frame"),
         "reset_only": ("random", "reset in the middle of a frame")},
@@ -85,6 +90,16 @@ def strip_initial(text):
     if n == 0 or re.search(r"\binitial\b", out):
         raise RuntimeError(f"could not strip the initial blocks ({n} removed, some left)")
     return out, n
+
+
+# The "registers" case: a frame of RUN_ROWS x RUN_COLS run with K = 3 and
+# these thresholds, programmed through RUN_* (the register values are those
+# `fcc gen` gives a core generated for them, so no rule is written twice).
+RUN_ROWS = 8
+RUN_COLS = 128
+RUN_K = 3
+RUN_TH_H = 0.25
+RUN_TH_V = 0.75
 
 
 def cases(k, rows, cols):
@@ -127,18 +142,30 @@ def cases(k, rows, cols):
             "reset_after": rows * cols // 2,
         }
     )
+    frames["run_params"] = (fr.random_frame(RUN_ROWS, RUN_COLS, seed + 7), "normal")
+    out.append(
+        {
+            "kind": "registers",
+            "name": "registers",
+            "frames": ["run_params"],
+            "gap": 0.2,
+            "backpressure": 0.3,
+            "seed": seed + 77,
+            "tlast": "normal",
+        }
+    )
     return frames, out
 
 
-def golden(fcc, work, name, pixels, k, bits):
+def golden(fcc, work, name, pixels, k, bits, rows=ROWS, cols=COLS, th_h=TH_H, th_v=TH_V):
     """Expected labels and status of one frame from `fcc cluster`."""
     npy = work / f"{name}.npy"
     lab = work / f"{name}.labels.npy"
-    fr.write_npy_f32(npy, ROWS, COLS, pixels)
+    fr.write_npy_f32(npy, rows, cols, pixels)
     out = run(
         [
             fcc, "cluster", "--input", npy, "--output", lab, "--stats",
-            "--fsize", str(k), "--th-h", str(TH_H), "--th-v", str(TH_V), "--label-bits", str(bits),
+            "--fsize", str(k), "--th-h", str(th_h), "--th-v", str(th_v), "--label-bits", str(bits),
         ]
     )
     stats = json.loads([line for line in out.splitlines() if line.startswith("{")][-1])
@@ -151,27 +178,42 @@ def golden(fcc, work, name, pixels, k, bits):
     }
 
 
+def gen(fcc, out, k, bits, lpb, th_h=TH_H, th_v=TH_V):
+    """`fcc gen` of one configuration into `out` (no lint)."""
+    run(
+        [
+            fcc, "gen", "--fsize", str(k), "--rows", str(ROWS), "--cols", str(COLS),
+            "--th-h", str(th_h), "--th-v", str(th_v), "--label-bits", str(bits),
+            "--labels-per-beat", str(lpb), "--rtl", out, "--constraints", out / "xdc",
+            "--scripts", out / "tcl", "--no-lint",
+        ]
+    )
+    return json.loads((out / "fcc_params.json").read_text())
+
+
 def prepare(fcc, root, k):
     """Generate one configuration's RTL (both variants) and its manifest."""
     bits, lpb = CONFIGS[k]
     work = root / f"k{k}"
     if work.exists():
         shutil.rmtree(work)
-    gen = work / "gen"
-    run(
-        [
-            fcc, "gen", "--fsize", str(k), "--rows", str(ROWS), "--cols", str(COLS),
-            "--th-h", str(TH_H), "--th-v", str(TH_V), "--label-bits", str(bits),
-            "--labels-per-beat", str(lpb), "--rtl", gen, "--constraints", gen / "xdc",
-            "--scripts", gen / "tcl", "--no-lint",
-        ]
-    )
-    text = (gen / "fcc_top.v").read_text()
+    gen_dir = work / "gen"
+    build = gen(fcc, gen_dir, k, bits, lpb)
+    # The thresholds and K of the "registers" case as register words.
+    run_regs = {r["name"]: r["reset"] for r in gen(fcc, work / "gen_run", RUN_K, bits, lpb, RUN_TH_H, RUN_TH_V)["registers"]}
+    run_params = {
+        "RUN_K": run_regs["RUN_K"],
+        "RUN_TH_H": run_regs["RUN_TH_H"],
+        "RUN_TH_V": run_regs["RUN_TH_V"],
+        "RUN_ROWS": RUN_ROWS,
+        "RUN_COLS": RUN_COLS,
+    }
+    text = (gen_dir / "fcc_top.v").read_text()
     stripped, n = strip_initial(text)
     (work / "reset_only").mkdir(parents=True)
     (work / "reset_only" / "fcc_top.v").write_text(stripped)
     (work / "generated").mkdir(parents=True)
-    shutil.copy(gen / "fcc_top.v", work / "generated" / "fcc_top.v")
+    shutil.copy(gen_dir / "fcc_top.v", work / "generated" / "fcc_top.v")
     frames, cs = cases(k, ROWS, COLS)
     fdir = work / "frames"
     fdir.mkdir()
@@ -184,6 +226,9 @@ def prepare(fcc, root, k):
         elif tlast == "late":
             g = golden(fcc, fdir, name, pixels, k, bits)
             beats = [fr.beat(p) for p in pixels] + [fr.beat((i, 0, 0)) for i in range(7)]
+        elif name == "run_params":
+            g = golden(fcc, fdir, name, pixels, RUN_K, bits, RUN_ROWS, RUN_COLS, RUN_TH_H, RUN_TH_V)
+            beats = [fr.beat(p) for p in pixels]
         else:
             g = golden(fcc, fdir, name, pixels, k, bits)
             beats = [fr.beat(p) for p in pixels]
@@ -198,6 +243,11 @@ def prepare(fcc, root, k):
         "labels_per_beat": lpb,
         "frames": flist,
         "cases": cs,
+        # The register map of the build (offsets, fields, reset values), its
+        # parameter hash, and the run parameters of the "registers" case.
+        "registers": build["registers"],
+        "params_hash": build["params_hash"],
+        "run_params": run_params,
     }
     for v in VARIANTS:
         vc = [c for c in cs if c["name"] in CASES[k][v]]

@@ -24,6 +24,9 @@ pub struct ResultsArgs {
     /// The JSON beside it.
     #[arg(long, default_value = "docs/results.json")]
     pub json: PathBuf,
+    /// The coverage summary of `sim/coverage.sh`, attached when the file exists.
+    #[arg(long, default_value = "docs/coverage.json")]
+    pub coverage_json: PathBuf,
     /// Intermediate files (bench and cycle JSON, Yosys work).
     #[arg(long, default_value = "target/fcc-results")]
     pub work_dir: PathBuf,
@@ -64,7 +67,7 @@ pub fn run(args: &ResultsArgs) -> anyhow::Result<()> {
     })?;
     eprintln!("3/3 Yosys resources and timing (fcc synth --all)");
     let path = |p: &PathBuf| p.display().to_string();
-    let cli = SynthCli::try_parse_from([
+    let mut synth_args = vec![
         "synth".to_string(),
         "--all".into(),
         "--bench-json".into(),
@@ -77,7 +80,16 @@ pub fn run(args: &ResultsArgs) -> anyhow::Result<()> {
         path(&args.json),
         "--work-dir".into(),
         path(&args.work_dir.join("synth")),
-    ])?;
+    ];
+    if args.coverage_json.is_file() {
+        synth_args.extend(["--coverage-json".into(), path(&args.coverage_json)]);
+    } else {
+        eprintln!(
+            "{}: not found, the coverage table stays empty (bash sim/coverage.sh writes it)",
+            args.coverage_json.display()
+        );
+    }
+    let cli = SynthCli::try_parse_from(synth_args)?;
     cmd_synth::run(&cli.synth)?;
     // Name the command that regenerates the whole document.
     let text = std::fs::read_to_string(&args.json)

@@ -68,8 +68,13 @@ pub struct SynthArgs {
     /// {fsize, corpus, frames, cycles_per_frame, max_cycles_per_frame, latency_cycles}).
     #[arg(long)]
     pub cycles_json: Option<PathBuf>,
+    /// With --all: attach the per-block coverage summary of `sim/coverage.sh`
+    /// (the JSON of `sim/coverage_summary.py --json`, committed as docs/coverage.json).
+    #[arg(long)]
+    pub coverage_json: Option<PathBuf>,
     /// With --all: do not synthesise; read this results JSON, attach
-    /// --bench-json / --cycles-json and write the document again.
+    /// --bench-json / --cycles-json / --coverage-json and write the document
+    /// again (what the JSON already holds is kept).
     #[arg(long, requires = "all")]
     pub from_json: Option<PathBuf>,
 }
@@ -101,6 +106,22 @@ impl SynthArgs {
         }
         if self.cycles_json.is_some() {
             c.push_str(" --cycles-json CYCLES.json");
+        }
+        if self.coverage_json.is_some() {
+            c.push_str(" --coverage-json docs/coverage.json");
+        }
+        c
+    }
+
+    /// The command for the header of a report re-rendered from `previous`'s
+    /// JSON: the command that made it, with the inputs attached now.
+    fn command_after(&self, previous: &str) -> String {
+        let mut c = previous.to_string();
+        for flag in self.command().split(" --").skip(1) {
+            let flag = format!(" --{flag}");
+            if !c.contains(&flag) {
+                c.push_str(&flag);
+            }
         }
         c
     }
@@ -261,7 +282,17 @@ fn run_all(args: &SynthArgs) -> anyhow::Result<()> {
             report
         }
     };
-    report.command = args.command();
+    report.command = match &args.from_json {
+        Some(_) => args.command_after(&report.command),
+        None => args.command(),
+    };
+    if let Some(path) = &args.coverage_json {
+        let n = report
+            .attach_coverage_json(&read(path)?)
+            .map_err(anyhow::Error::msg)
+            .with_context(|| format!("{}", path.display()))?;
+        eprintln!("coverage of {n} blocks from {}", path.display());
+    }
     if let Some(path) = &args.bench_json {
         let n = report
             .attach_golden_bench(&read(path)?)
@@ -340,5 +371,25 @@ mod tests {
         assert_eq!(parse(&["--all"]).unwrap().command(), "fcc synth --all");
         let a = parse(&["--all", "--rows", "32", "--clock-mhz", "250"]).unwrap();
         assert_eq!(a.command(), "fcc synth --all --rows 32 --clock-mhz 250");
+    }
+
+    #[test]
+    fn re_rendering_keeps_the_command_that_made_the_report() {
+        let a = parse(&[
+            "--all",
+            "--from-json",
+            "r.json",
+            "--coverage-json",
+            "c.json",
+        ])
+        .unwrap();
+        assert_eq!(
+            a.command_after("fcc synth --all --bench-json BENCH.json"),
+            "fcc synth --all --bench-json BENCH.json --coverage-json docs/coverage.json"
+        );
+        assert_eq!(
+            a.command_after("fcc results --coverage-json docs/coverage.json"),
+            "fcc results --coverage-json docs/coverage.json"
+        );
     }
 }

@@ -280,6 +280,30 @@ pub struct Report {
     /// The command that regenerates the report.
     pub command: String,
     pub rows: Vec<ResultRow>,
+    /// Verilator line and toggle coverage per block (`sim/coverage.sh`);
+    /// `None` until attached.
+    #[serde(default)]
+    pub coverage: Option<Coverage>,
+}
+
+/// Line and toggle coverage of one block of `fcc_top`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct BlockCoverage {
+    pub block: String,
+    pub line_hit: u64,
+    pub line_total: u64,
+    pub toggle_hit: u64,
+    pub toggle_total: u64,
+}
+
+/// The coverage summary `sim/coverage_summary.py --json` writes.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Coverage {
+    /// The command that measured it.
+    pub command: String,
+    /// Simulated model instances the counts come from.
+    pub instances: u64,
+    pub blocks: Vec<BlockCoverage>,
 }
 
 /// One line of the golden model bench's JSON (other fields are ignored).
@@ -302,6 +326,27 @@ impl Report {
     /// Read a report written by [`write_report`].
     pub fn from_json(text: &str) -> Result<Report, String> {
         serde_json::from_str(text).map_err(|e| format!("not a results JSON file: {e}"))
+    }
+
+    /// Attach the coverage summary of `sim/coverage.sh` (replacing any earlier one).
+    /// Returns how many blocks it has.
+    pub fn attach_coverage_json(&mut self, text: &str) -> Result<usize, String> {
+        let c: Coverage = serde_json::from_str(text)
+            .map_err(|e| format!("not the JSON of `sim/coverage_summary.py --json`: {e}"))?;
+        if c.blocks.is_empty() {
+            return Err("the coverage summary lists no block".into());
+        }
+        for b in &c.blocks {
+            if b.line_hit > b.line_total || b.toggle_hit > b.toggle_total {
+                return Err(format!(
+                    "block {}: more points reached than there are",
+                    b.block
+                ));
+            }
+        }
+        let n = c.blocks.len();
+        self.coverage = Some(c);
+        Ok(n)
     }
 
     /// Attach the golden-model times of `fcc bench --json` to the rows of the same K.
@@ -409,6 +454,7 @@ pub fn measure(
         yosys_version: None,
         command: opts.command.clone(),
         rows: vec![],
+        coverage: None,
     };
     if opts.fsizes.contains(&TARGETS.fsize) {
         report.base.fsize = TARGETS.fsize;
@@ -828,6 +874,61 @@ fn render_routing(s: &mut String, report: &Report) {
     }
 }
 
+/// A percentage of `hit` over `total`, or a dash when there is nothing to reach.
+fn percent(hit: u64, total: u64) -> String {
+    if total == 0 {
+        "–".into()
+    } else {
+        format!("{:.1} %", 100.0 * hit as f64 / total as f64)
+    }
+}
+
+fn render_coverage(s: &mut String, report: &Report) {
+    s.push_str("\n## Coverage of the Verilator regression\n\n");
+    let Some(c) = &report.coverage else {
+        s.push_str("Not measured yet (`bash sim/coverage.sh`).\n");
+        return;
+    };
+    s.push_str(&format!(
+        "Verilator line and toggle coverage of `fcc_top` per block, from `{}` ({} simulated \
+         instances); a point counts when any instance of any configuration reached it. What is \
+         never reached, per block: [coverage.md](coverage.md).\n\n",
+        c.command, c.instances
+    ));
+    s.push_str(
+        "| block | lines reached | line coverage | toggles reached | toggle coverage |\n\
+         |---|--:|--:|--:|--:|\n",
+    );
+    let mut tot = [0u64; 4];
+    for b in &c.blocks {
+        for (t, x) in tot
+            .iter_mut()
+            .zip([b.line_hit, b.line_total, b.toggle_hit, b.toggle_total])
+        {
+            *t += x;
+        }
+        s.push_str(&format!(
+            "| `{}` | {} / {} | {} | {} / {} | {} |\n",
+            b.block,
+            thousands(b.line_hit),
+            thousands(b.line_total),
+            percent(b.line_hit, b.line_total),
+            thousands(b.toggle_hit),
+            thousands(b.toggle_total),
+            percent(b.toggle_hit, b.toggle_total)
+        ));
+    }
+    s.push_str(&format!(
+        "| all | {} / {} | {} | {} / {} | {} |\n",
+        thousands(tot[0]),
+        thousands(tot[1]),
+        percent(tot[0], tot[1]),
+        thousands(tot[2]),
+        thousands(tot[3]),
+        percent(tot[2], tot[3])
+    ));
+}
+
 /// The results document.
 pub fn render_markdown(report: &Report) -> String {
     let b = &report.base;
@@ -1016,6 +1117,8 @@ pub fn render_markdown(report: &Report) -> String {
         }
     }
 
+    render_coverage(&mut s, report);
+
     // Targets.
     let t = TARGETS;
     s.push_str(&format!(
@@ -1136,6 +1239,7 @@ mod tests {
             yosys_version: Some("Yosys 0.23".into()),
             command: "fcc synth --all".into(),
             rows,
+            coverage: None,
         }
     }
 
@@ -1366,6 +1470,61 @@ mod tests {
             .unwrap_err();
         assert!(e.contains("K = 9"), "{e}");
         assert!(rep.attach_cycles_json("{}").is_err());
+    }
+
+    const COVERAGE: &str = r#"{"command": "bash sim/coverage.sh", "instances": 12,
+        "blocks": [{"block": "fcc_top", "line_hit": 90, "line_total": 100, "toggle_hit": 1,
+                    "toggle_total": 3},
+                   {"block": "fcc_merge_table_queue", "line_hit": 0, "line_total": 0,
+                    "toggle_hit": 2, "toggle_total": 2}]}"#;
+
+    #[test]
+    fn coverage_table_rendered_and_kept_through_json() {
+        let mut rep = report(vec![row(3, resources(1, 2, 3, 4, 5), 1.5)]);
+        assert!(render_markdown(&rep).contains(
+            "## Coverage of the Verilator regression\n\nNot measured yet (`bash sim/coverage.sh`)."
+        ));
+        assert_eq!(rep.attach_coverage_json(COVERAGE).unwrap(), 2);
+        let md = render_markdown(&rep);
+        assert!(
+            md.contains("from `bash sim/coverage.sh` (12 simulated instances)"),
+            "{md}"
+        );
+        assert!(
+            md.contains("| `fcc_top` | 90 / 100 | 90.0 % | 1 / 3 | 33.3 % |"),
+            "{md}"
+        );
+        // A block the summary names is listed even when the renderer never heard of it.
+        assert!(
+            md.contains("| `fcc_merge_table_queue` | 0 / 0 | – | 2 / 2 | 100.0 % |"),
+            "{md}"
+        );
+        assert!(
+            md.contains("| all | 90 / 100 | 90.0 % | 3 / 5 | 60.0 % |"),
+            "{md}"
+        );
+        // Re-rendering from the JSON keeps the table.
+        let text = serde_json::to_string_pretty(&rep).unwrap();
+        assert_eq!(render_markdown(&Report::from_json(&text).unwrap()), md);
+    }
+
+    #[test]
+    fn coverage_json_errors_say_what_is_wrong() {
+        let mut rep = report(vec![]);
+        let e = rep.attach_coverage_json("[]").unwrap_err();
+        assert!(e.contains("sim/coverage_summary.py --json"), "{e}");
+        let e = rep
+            .attach_coverage_json(r#"{"command": "c", "instances": 1, "blocks": []}"#)
+            .unwrap_err();
+        assert!(e.contains("no block"), "{e}");
+        let e = rep
+            .attach_coverage_json(
+                r#"{"command": "c", "instances": 1, "blocks": [{"block": "fcc_intra",
+                    "line_hit": 3, "line_total": 2, "toggle_hit": 0, "toggle_total": 0}]}"#,
+            )
+            .unwrap_err();
+        assert!(e.contains("fcc_intra"), "{e}");
+        assert!(rep.coverage.is_none());
     }
 
     #[test]

@@ -1,0 +1,128 @@
+//! Directed corners for what the regression alone never reached (see
+//! docs/coverage.md): the read-back waiting on a sink that stalls for long
+//! stretches (every queue of the label updater full), dense frames fed without
+//! gaps (input credits running low), and a sink that is never ready until the
+//! whole frame is in. All on the 16 x 256, K = 3, 11-bit configuration of the
+//! regression, so no model beyond the regression's is built.
+
+use fcc_params::FccParams;
+use fcc_sim::model::FccIn;
+use fcc_sim::{frames, load, run_and_check, Drive, Dut, FrameRun};
+
+fn small() -> FccParams {
+    FccParams {
+        rows: 16,
+        cols: 256,
+        fsize: 3,
+        label_bits: 11,
+        ..Default::default()
+    }
+}
+
+fn dut(p: &FccParams) -> Dut {
+    let model = match load(p) {
+        Ok(m) => m,
+        Err(e) => panic!("{e}"),
+    };
+    let mut d = Dut::new(model);
+    d.reset(4);
+    d
+}
+
+fn check(d: &mut Dut, f: &fcc_golden::Frame, drive: &Drive, what: &str) -> FrameRun {
+    match run_and_check(d, f, drive, what) {
+        Ok(r) => r,
+        Err(e) => panic!("{e}"),
+    }
+}
+
+/// The sink is ready one cycle in twenty: the output register, the decoded
+/// beat queue and the gearbox fill and the flatten pass waits on them.
+#[test]
+fn readback_waits_on_a_sink_ready_one_cycle_in_twenty() {
+    let p = small();
+    let mut d = dut(&p);
+    for (seed, f) in [
+        (1u64, frames::random(&p, 4001)),
+        (2, frames::checkerboard(&p)),
+        (3, frames::label_overflow(&p)),
+    ] {
+        let drive = Drive {
+            backpressure: 0.95,
+            seed,
+            max_cycles: 2_000_000,
+            ..Default::default()
+        };
+        let run = check(&mut d, &f, &drive, "sink ready 1 in 20");
+        assert!(run.labels.len() == p.pixels());
+    }
+}
+
+/// The sink is held not ready until every pixel has been accepted and the
+/// drain is over, then runs free: the read-back starts against a full
+/// output path.
+#[test]
+fn readback_starts_against_a_sink_stalled_for_the_whole_frame() {
+    let p = small();
+    let mut d = dut(&p);
+    let f = frames::u_shapes(&p);
+    // Stall the sink while the whole frame goes in, then a while longer.
+    let beats = fcc_sim::drive::frame_beats(&f, fcc_sim::Tlast::Normal);
+    let mut i = 0;
+    let mut guard = 0u64;
+    while i < beats.len() {
+        let out = d.step(&FccIn {
+            s_tdata: beats[i].0,
+            s_tvalid: 1,
+            s_tlast: u8::from(beats[i].1),
+            m_tready: 0,
+            ..Default::default()
+        });
+        assert_eq!(out.frame_done, 0, "frame_done with the sink stalled");
+        if out.s_tready != 0 {
+            i += 1;
+        }
+        guard += 1;
+        assert!(guard < 1_000_000, "input not taken with the sink stalled");
+    }
+    for _ in 0..3000 {
+        let out = d.step(&FccIn::default());
+        assert_eq!(out.frame_done, 0, "frame_done with the sink stalled");
+    }
+    // The whole frame was accepted: the labels come out once the sink runs.
+    let run = match d.run_frame_from(&f, &Drive::default(), beats.len()) {
+        Ok(r) => r,
+        Err(e) => panic!("{e}"),
+    };
+    let gold = fcc_sim::expected(&p, &f).unwrap();
+    if let Err(e) = fcc_sim::compare(&p, &gold, &run, "u_shapes after a stalled sink") {
+        panic!("{e}");
+    }
+}
+
+/// Frames with the most joins per pixel, fed with no gaps and the sink
+/// always ready, then with the sink mostly stalled: the centre buffer and
+/// the join queue run as full as this size allows.
+#[test]
+fn dense_frames_without_input_gaps_under_full_and_no_backpressure() {
+    let p = small();
+    let mut d = dut(&p);
+    for (name, f) in [
+        ("checkerboard", frames::checkerboard(&p)),
+        ("comb", frames::comb(&p)),
+        ("staircase", frames::staircase(&p)),
+    ] {
+        let run = check(&mut d, &f, &Drive::default(), name);
+        eprintln!(
+            "{name}: joins {}, input stalls {}, read-back waits {}",
+            run.joins, run.input_stalls, run.gear_stalls
+        );
+        let drive = Drive {
+            backpressure: 0.9,
+            seed: 7,
+            max_cycles: 2_000_000,
+            ..Default::default()
+        };
+        check(&mut d, &f, &drive, name);
+    }
+}
