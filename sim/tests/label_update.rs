@@ -145,11 +145,15 @@ fn run_frame(d: &mut LuDut, f: &Frame, pace: Pace, rng: &mut ChaCha8Rng, what: &
     });
     let mut got = Vec::new();
     let mut pushed = 0;
+    // Labels the gearbox may hold now: its count seen last cycle (before
+    // that cycle's pops) plus that cycle's push.
     let mut gear_used = 0u8;
+    let mut pushed_last = false;
     let limit = 40 * f.codes.len() + 1000;
     for cycle in 0..limit {
-        let push =
-            pushed < f.compact.len() && gear_used < GEAR_SLOTS && !rng.gen_bool(pace.push_gap);
+        let push = pushed < f.compact.len()
+            && gear_used + u8::from(pushed_last) < GEAR_SLOTS
+            && !rng.gen_bool(pace.push_gap);
         let tready = !rng.gen_bool(pace.backpressure);
         let o: LuOut = d.step(&LuIn {
             fv: u8::from(push),
@@ -163,6 +167,7 @@ fn run_frame(d: &mut LuDut, f: &Frame, pace: Pace, rng: &mut ChaCha8Rng, what: &
             o.gear_used
         );
         gear_used = o.gear_used;
+        pushed_last = push;
         if push {
             pushed += 1;
         }
