@@ -53,6 +53,10 @@ pub struct FccBeatAssembly {
     out_keep: DFF<Bits<8>>,
     out_last: DFF<Bit>,
     stall_count: DFF<Bits<24>>,
+    /// `clear`, one cycle late: zeroes `stall_count` (no beat waits in the
+    /// cycle after a start, the queue being empty), keeping the counter off
+    /// the start net.
+    clear_s1: DFF<Bit>,
     collected_word: Signal<Local, OutWord>,
     out_free: Signal<Local, Bit>,
     /// The head beat needs 0, 1, 2, at least 2 more labels.
@@ -101,6 +105,7 @@ impl FccBeatAssembly {
             out_keep: Default::default(),
             out_last: Default::default(),
             stall_count: Default::default(),
+            clear_s1: Default::default(),
             collected_word: Default::default(),
             out_free: Default::default(),
             needs_none: Default::default(),
@@ -136,7 +141,8 @@ impl Logic for FccBeatAssembly {
             out_data,
             out_keep,
             out_last,
-            stall_count
+            stall_count,
+            clear_s1
         );
         for k in 0..4 {
             self.collected[k].clock.next = self.clk.val();
@@ -250,9 +256,12 @@ impl Logic for FccBeatAssembly {
         if self.head_valid.val() & !self.done.val() & self.out_free.val() {
             self.stall_count.d.next = self.stall_count.q.val() + self.one24.val();
         }
+        self.clear_s1.d.next = self.clear.val();
+        if self.clear_s1.q.val() {
+            self.stall_count.d.next = self.zero24.val();
+        }
         if self.clear.val() {
             self.taken.d.next = self.zero3.val();
-            self.stall_count.d.next = self.zero24.val();
         }
         if self.rst.val() {
             self.taken.d.next = self.zero3.val();

@@ -7,9 +7,9 @@
 //! (`pop` and `pop_two`) a cycle from the front.
 //!
 //! A ring of eight slots: a push writes the slot `write_slot` points at, a pop
-//! only moves `read_slot` (so the pop decision drives a few pointer bits, not
-//! every slot); `front` and `second` are the slots at `read_slot` and
-//! `read_slot + 1`. The new count is chosen among values computed from
+//! only moves `read_slot` and `second_slot` (so the pop decision drives a few
+//! pointer bits, not every slot); `front` and `second` are the slots they
+//! point at. The new count is chosen among values computed from
 //! `count` alone, so no adder follows the pop decision.
 
 use rust_hdl::prelude::*;
@@ -40,9 +40,10 @@ pub struct FccGearbox {
     slots: Vec<DFF<Bits<16>>>,
     count: DFF<Bits<4>>,
     read_slot: DFF<Bits<3>>,
+    /// Always `read_slot + 1`: a register of its own, so that each pointer
+    /// selects one 16-bit multiplexer (under 64 loads a bit).
+    second_slot: DFF<Bits<3>>,
     write_slot: DFF<Bits<3>>,
-    /// `read_slot + 1`.
-    second_slot: Signal<Local, Bits<3>>,
     pop_one: Signal<Local, Bit>,
     count_inc: Signal<Local, Bits<4>>,
     count_dec: Signal<Local, Bits<4>>,
@@ -98,7 +99,7 @@ impl Default for FccGearbox {
 impl Logic for FccGearbox {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clk, count, read_slot, write_slot);
+        dff_setup!(self, clk, count, read_slot, second_slot, write_slot);
         for i in 0..8 {
             self.slots[i].clock.next = self.clk.val();
             self.slots[i].d.next = self.slots[i].q.val();
@@ -108,14 +109,13 @@ impl Logic for FccGearbox {
         self.has_two.next = (self.count.q.val() != self.count_is[0].val())
             & (self.count.q.val() != self.count_is[1].val());
         // The front two labels.
-        self.second_slot.next = self.read_slot.q.val() + self.one3.val();
         self.front.next = self.slots[0].q.val();
         self.second.next = self.slots[0].q.val();
         for i in 0..8 {
             if self.read_slot.q.val() == self.slot_is[i].val() {
                 self.front.next = self.slots[i].q.val();
             }
-            if self.second_slot.val() == self.slot_is[i].val() {
+            if self.second_slot.q.val() == self.slot_is[i].val() {
                 self.second.next = self.slots[i].q.val();
             }
         }
@@ -130,9 +130,11 @@ impl Logic for FccGearbox {
         }
         if self.pop.val() {
             self.read_slot.d.next = self.read_slot.q.val() + self.one3.val();
+            self.second_slot.d.next = self.second_slot.q.val() + self.one3.val();
         }
         if self.pop_two.val() {
             self.read_slot.d.next = self.read_slot.q.val() + self.two3.val();
+            self.second_slot.d.next = self.second_slot.q.val() + self.two3.val();
         }
         self.pop_one.next = self.pop.val() & !self.pop_two.val();
         self.count_inc.next = self.count.q.val() + self.one.val();
@@ -158,6 +160,7 @@ impl Logic for FccGearbox {
         if self.clear.val() | self.rst.val() {
             self.count.d.next = self.count_is[0].val();
             self.read_slot.d.next = self.slot_is[0].val();
+            self.second_slot.d.next = self.slot_is[1].val();
             self.write_slot.d.next = self.slot_is[0].val();
         }
     }
