@@ -12,6 +12,7 @@ pub mod check;
 pub mod drive;
 pub mod ffi;
 pub mod frames;
+pub mod label_update_bench;
 pub mod merge_bench;
 pub mod model;
 pub mod regs_bench;
@@ -26,6 +27,7 @@ pub use board::{
 };
 pub use check::{compare, expected};
 pub use drive::{frame_beats, Drive, FrameRun, Tlast};
+pub use label_update_bench::{load_label_update, LuDut, LuIn, LuOut};
 pub use merge_bench::{load_merge_table, MergeDut, MergeIn, MergeOut};
 pub use model::{
     cache_root, is_cached, is_cached_dir, load, load_dir, read_generated, Dut, GeneratedDir, Model,

@@ -24,7 +24,7 @@
 //! (`run_*` outputs), loaded from the shadow in every cycle the core is idle
 //! (waiting for a frame's first pixel), so a frame never sees a change. A
 //! threshold is also squared for the distance units, serially (shift and add,
-//! at most 18 cycles, no DSP) before the write's response is given: the
+//! at most 19 cycles, no DSP) before the write's response is given: the
 //! shadow threshold and its square change together. `run_th_h_c` =
 //! -(tH^2 + 1) and `run_th_v_c` = -tV^2 (36-bit two's complement) are the
 //! addends of the distance units' first DSP, so that a hit is the sign of the
@@ -157,10 +157,13 @@ pub struct FccRegs {
     err_rows: DFF<Bit>,
     err_cols: DFF<Bit>,
     // Squarer of a threshold write; `sq_v`: TH_V (else TH_H); `sq_a`: the
-    // value; `sq_busy_q`: `sq.busy` one cycle late (its fall is the end).
+    // value; `sq_start`: the write, one cycle late, starts the squarer on
+    // `sq_a` (so the write data's range check does not reach the squarer's
+    // registers); `sq_busy_q`: `sq.busy` one cycle late (its fall is the end).
     sq: FccThSquare,
     sq_v: DFF<Bit>,
     sq_a: DFF<Bits<16>>,
+    sq_start: DFF<Bit>,
     sq_busy_q: DFF<Bit>,
     th_ok: Signal<Local, Bit>,
     wr: Signal<Local, Bit>,
@@ -350,6 +353,7 @@ impl FccRegs {
             sq: FccThSquare::new(),
             sq_v: Default::default(),
             sq_a: Default::default(),
+            sq_start: Default::default(),
             sq_busy_q: Default::default(),
             th_ok: Default::default(),
             wr: Default::default(),
@@ -444,18 +448,21 @@ impl Logic for FccRegs {
             err_cols,
             sq_v,
             sq_a,
+            sq_start,
             sq_busy_q
         );
         self.sq.clk.next = self.clk.val();
         self.sq.rst.next = self.rst.val();
-        self.sq.a.next = self.w_d.q.val().get_bits::<16>(0);
-        self.sq.start.next = false;
+        self.sq.a.next = self.sq_a.q.val();
+        self.sq.start.next = self.sq_start.q.val();
+        self.sq_start.d.next = false;
         // ---- Write channel: AW and W held in either order, then one write.
         // (A threshold write is answered when its square is ready: no write
-        // is performed while the squarer runs.)
+        // is performed while the squarer starts or runs.)
         self.wr.next = self.aw_v.q.val()
             & self.w_v.q.val()
             & !self.b_v.q.val()
+            & !self.sq_start.q.val()
             & !self.sq.busy.val()
             & !self.sq_busy_q.q.val();
         self.th_ok.next =
@@ -538,7 +545,7 @@ impl Logic for FccRegs {
             if self.aw_a.q.val() == self.a_run_thh.val() {
                 if self.th_ok.val() {
                     self.b_v.d.next = false;
-                    self.sq.start.next = true;
+                    self.sq_start.d.next = true;
                     self.sq_v.d.next = false;
                 } else {
                     self.err_thh.d.next = true;
@@ -547,7 +554,7 @@ impl Logic for FccRegs {
             if self.aw_a.q.val() == self.a_run_thv.val() {
                 if self.th_ok.val() {
                     self.b_v.d.next = false;
-                    self.sq.start.next = true;
+                    self.sq_start.d.next = true;
                     self.sq_v.d.next = true;
                 } else {
                     self.err_thv.d.next = true;
@@ -633,6 +640,7 @@ impl Logic for FccRegs {
         self.core_rst_q.d.next = self.rst.val() | self.soft_q.q.val();
         self.core_rst_next.next = self.rst.val() | self.soft_q.q.val();
         if self.rst.val() {
+            self.sq_start.d.next = false;
             self.aw_v.d.next = false;
             self.w_v.d.next = false;
             self.b_v.d.next = false;

@@ -4,7 +4,9 @@
 //! (`fcc_intra`, `fcc_window`, `fcc_dist_tree`, `fcc_sort_net`,
 //! `fcc_merge_table`, `fcc_label_update`, `fcc_top`, plus the helpers
 //! `fcc_sq_dist`, `fcc_dist_unit`, `fcc_line_buf`, `fcc_fifo`, `fcc_ram`,
-//! `fcc_row_word`, `fcc_prefix_or`, `fcc_any_or`, `fcc_two_or`, `fcc_pick`).
+//! `fcc_row_word`, `fcc_prefix_or`, `fcc_any_or`, `fcc_two_or`, `fcc_pick`;
+//! inside `fcc_label_update`: `fcc_fb_writer`, `fcc_rb_pipeline`,
+//! `fcc_beat_queue`, `fcc_gearbox`, `fcc_beat_assembly`, `fcc_slot_mux`).
 //! Sizes that vary with the configuration (K, rows, columns, label bits,
 //! thresholds, labels per beat) are read from [`FccParams`] when the blocks
 //! are built, so one binary generates every configuration.
@@ -57,10 +59,14 @@
 
 pub mod example;
 mod fcc_any_or;
+mod fcc_beat_assembly;
+mod fcc_beat_queue;
 mod fcc_dist_tree;
 mod fcc_dist_unit;
+mod fcc_fb_writer;
 mod fcc_fifo;
 mod fcc_flatten;
+mod fcc_gearbox;
 mod fcc_intra;
 mod fcc_label_update;
 mod fcc_line_buf;
@@ -68,9 +74,11 @@ mod fcc_merge_table;
 mod fcc_pick;
 mod fcc_prefix_or;
 mod fcc_ram;
+mod fcc_rb_pipeline;
 mod fcc_reg_mux;
 mod fcc_regs;
 mod fcc_row_word;
+mod fcc_slot_mux;
 mod fcc_sort_net;
 mod fcc_sq_dist;
 mod fcc_table_init;
@@ -250,6 +258,28 @@ pub fn generate_merge_table(p: &FccParams) -> Result<String, RtlError> {
     let mut v = file_header(p, "//");
     v.push_str("`default_nettype none\n");
     v.push_str(&rename_modules(&constant_selects(&raw), MERGE_TABLE_MODULE));
+    v.push_str("\n`default_nettype wire\n");
+    Ok(v)
+}
+
+/// Name of the label updater's Verilog module when it is generated alone.
+pub const LABEL_UPDATE_MODULE: &str = "fcc_label_update";
+
+/// The label updater `fcc_label_update` alone, for its bench: the frame
+/// buffer, the read-back pipeline, the decoded-beat queue, the gearbox and
+/// the output register of the build `p`.
+pub fn generate_label_update(p: &FccParams) -> Result<String, RtlError> {
+    p.validate_for_hardware()?;
+    let mut block = fcc_label_update::FccLabelUpdate::new(p);
+    block.connect_all();
+    check_all(&block).map_err(|e| RtlError::Check(format!("{e:?}")))?;
+    let raw = generate_verilog_unchecked(&block);
+    let mut v = file_header(p, "//");
+    v.push_str("`default_nettype none\n");
+    v.push_str(&rename_modules(
+        &constant_selects(&raw),
+        LABEL_UPDATE_MODULE,
+    ));
     v.push_str("\n`default_nettype wire\n");
     Ok(v)
 }

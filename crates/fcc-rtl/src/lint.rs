@@ -76,6 +76,18 @@ pub fn regs_waivers(p: &FccParams) -> String {
     s
 }
 
+/// The waivers of `fcc_label_update.v`, the label updater generated alone
+/// for its bench.
+pub fn label_update_waivers(p: &FccParams) -> String {
+    let mut s = file_header(p, "//");
+    s.push_str("`verilator_config\n");
+    s.push_str(
+        "// fcc_label_update.v holds the label updater and its sub-blocks.\n\
+         lint_off -rule DECLFILENAME -file \"*fcc_label_update.v\"\n",
+    );
+    s
+}
+
 /// Lint `verilog` (top module `fcc_top`) with the waivers in `vlt`.
 /// Returns the log on success.
 pub fn lint_files(verilog: &Path, vlt: &Path) -> Result<String, RtlError> {

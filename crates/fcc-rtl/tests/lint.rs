@@ -138,6 +138,30 @@ fn register_file_alone_lints_clean() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+#[test]
+fn label_updater_alone_lints_clean_for_every_labels_per_beat() {
+    if !verilator_present() {
+        eprintln!("verilator not installed: lint skipped");
+        return;
+    }
+    for lpb in [1, 2, 4] {
+        let p = FccParams {
+            labels_per_beat: lpb,
+            ..Default::default()
+        };
+        let dir = scratch(&format!("label_update{lpb}"));
+        std::fs::create_dir_all(&dir).unwrap();
+        let v = dir.join("fcc_label_update.v");
+        let vlt = dir.join("fcc_label_update.vlt");
+        std::fs::write(&v, fcc_rtl::generate_label_update(&p).unwrap()).unwrap();
+        std::fs::write(&vlt, lint::label_update_waivers(&p)).unwrap();
+        if let Err(e) = lint::lint_module(&v, &vlt, fcc_rtl::LABEL_UPDATE_MODULE) {
+            panic!("labels per beat {lpb}: {e}");
+        }
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+}
+
 /// `fcc_regs.h` is plain C99: it compiles warning-free with `-std=c99
 /// -pedantic`, and its constants are usable in constant expressions.
 #[test]
