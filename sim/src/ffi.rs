@@ -103,6 +103,8 @@ pub fn header() -> String {
         crate::regs_bench::RegsOut::c_decl(),
         crate::merge_bench::MergeIn::c_decl(),
         crate::merge_bench::MergeOut::c_decl(),
+        crate::window_bench::WinIn::c_decl(),
+        crate::window_bench::WinOut::c_decl(),
     ] {
         s.push_str(&d);
         s.push('\n');
@@ -148,7 +150,7 @@ mod tests {
     fn header_declares_every_shim_struct_once() {
         let h = header();
         for name in [
-            "FccIn", "FccOut", "RegsIn", "RegsOut", "MergeIn", "MergeOut",
+            "FccIn", "FccOut", "RegsIn", "RegsOut", "MergeIn", "MergeOut", "WinIn", "WinOut",
         ] {
             assert_eq!(h.matches(&format!("struct {name} {{")).count(), 1, "{name}");
         }
