@@ -439,6 +439,24 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
     wire  [35:0] regs$run_th_v_c;
     wire  [7:0] regs$run_rows;
     wire  [12:0] regs$run_cols;
+    reg  intra_rst$clock;
+    reg  intra_rst$d;
+    wire  intra_rst$q;
+    reg  window_rst$clock;
+    reg  window_rst$d;
+    wire  window_rst$q;
+    reg  dist_tree_rst$clock;
+    reg  dist_tree_rst$d;
+    wire  dist_tree_rst$q;
+    reg  sort_net_rst$clock;
+    reg  sort_net_rst$d;
+    wire  sort_net_rst$q;
+    reg  merge_table_rst$clock;
+    reg  merge_table_rst$d;
+    wire  merge_table_rst$q;
+    reg  label_update_rst$clock;
+    reg  label_update_rst$d;
+    wire  label_update_rst$q;
     reg  [1:0] fsm$d;
     wire  [1:0] fsm$q;
     reg  fsm$clock;
@@ -898,6 +916,36 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
         .run_rows(regs$run_rows),
         .run_cols(regs$run_cols)
     );
+    fcc_top__intra_rst intra_rst(
+        .clock(intra_rst$clock),
+        .d(intra_rst$d),
+        .q(intra_rst$q)
+    );
+    fcc_top__window_rst window_rst(
+        .clock(window_rst$clock),
+        .d(window_rst$d),
+        .q(window_rst$q)
+    );
+    fcc_top__dist_tree_rst dist_tree_rst(
+        .clock(dist_tree_rst$clock),
+        .d(dist_tree_rst$d),
+        .q(dist_tree_rst$q)
+    );
+    fcc_top__sort_net_rst sort_net_rst(
+        .clock(sort_net_rst$clock),
+        .d(sort_net_rst$d),
+        .q(sort_net_rst$q)
+    );
+    fcc_top__merge_table_rst merge_table_rst(
+        .clock(merge_table_rst$clock),
+        .d(merge_table_rst$d),
+        .q(merge_table_rst$q)
+    );
+    fcc_top__label_update_rst label_update_rst(
+        .clock(label_update_rst$clock),
+        .d(label_update_rst$d),
+        .q(label_update_rst$q)
+    );
     fcc_top__fsm fsm(
         .d(fsm$d),
         .q(fsm$q),
@@ -1214,12 +1262,24 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
             room$d = 1'b1;
             last_seen$d = 1'b0;
         end
-        intra$rst = regs$core_rst;
+        intra_rst$clock = clk;
+        window_rst$clock = clk;
+        dist_tree_rst$clock = clk;
+        sort_net_rst$clock = clk;
+        merge_table_rst$clock = clk;
+        label_update_rst$clock = clk;
+        intra_rst$d = regs$core_rst_next;
+        window_rst$d = regs$core_rst_next;
+        dist_tree_rst$d = regs$core_rst_next;
+        sort_net_rst$d = regs$core_rst_next;
+        merge_table_rst$d = regs$core_rst_next;
+        label_update_rst$d = regs$core_rst_next;
+        intra$rst = intra_rst$q;
         intra$pix = slot_q$q;
         intra$last_col = last_col$q;
         window$last_col = last_col$q;
         intra$th_h_c = regs$run_th_h_c;
-        window$rst = regs$core_rst;
+        window$rst = window_rst$q;
         window$run_k = regs$run_k;
         window$inp[0:0] = intra$out[0:0];
         window$inp[1:1] = intra$out[1:1];
@@ -1237,7 +1297,7 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
         window$rep_we = sort_net$rep_we;
         window$rep_waddr = sort_net$rep_waddr;
         window$rep_wdata = sort_net$rep_wdata;
-        dist_tree$rst = regs$core_rst;
+        dist_tree$rst = dist_tree_rst$q;
         dist_tree$th_v_c = regs$run_th_v_c;
         dist_tree$centre_in = window$centre;
         dist_tree$ent_ok$0 = window$ent_ok$0;
@@ -1366,18 +1426,18 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
         dist_tree$ent_z$20 = window$ent_z$20;
         sort_net$hit$20 = dist_tree$hit$20;
         sort_net$rep$20 = window$ent_rep$20;
-        sort_net$rst = regs$core_rst;
+        sort_net$rst = sort_net_rst$q;
         sort_net$clear = label_update$rb_done;
         sort_net$centre = dist_tree$centre;
         sort_net$jtake = merge_table$jtake;
-        merge_table$rst = regs$core_rst;
+        merge_table$rst = merge_table_rst$q;
         merge_table$jv = sort_net$jv;
         merge_table$ja = sort_net$ja;
         merge_table$jb = sort_net$jb;
         merge_table$jsame = sort_net$jsame;
         merge_table$provisional = intra$provisional;
         merge_table$gear_used = label_update$gear_used;
-        label_update$rst = regs$core_rst;
+        label_update$rst = label_update_rst$q;
         label_update$wr_valid = intra$out[0:0];
         label_update$wr_state = intra$out[67:66];
         label_update$wr_last = intra$out[100:100];
@@ -4749,6 +4809,27 @@ module fcc_dist_tree__units__9__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 endmodule // fcc_dist_tree__units__9__sq
 
 
+module fcc_top__dist_tree_rst(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* max_fanout = 64 *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_top__dist_tree_rst
+
+
 module fcc_top__err(d,q,clock);
 
     // Module arguments
@@ -6595,6 +6676,27 @@ module fcc_intra__wrap_col(d,q,clock);
     end
 
 endmodule // fcc_intra__wrap_col
+
+
+module fcc_top__intra_rst(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* max_fanout = 64 *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_top__intra_rst
 
 
 module fcc_label_update(clk,rst,wr_valid,wr_state,wr_last,rb_start,fv,fval,gear_used,m_axis_tdata,m_axis_tkeep,m_axis_tvalid,m_axis_tlast,m_axis_tready,rb_done,gear_stalls);
@@ -9791,6 +9893,27 @@ module fcc_label_update__writer__word_pos(d,q,clock);
 endmodule // fcc_label_update__writer__word_pos
 
 
+module fcc_top__label_update_rst(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* max_fanout = 64 *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_top__label_update_rst
+
+
 module fcc_top__last_col(d,q,clock);
 
     // Module arguments
@@ -12041,6 +12164,27 @@ module fcc_merge_table__union_engine__word_valid_s2(d,q,clock);
     end
 
 endmodule // fcc_merge_table__union_engine__word_valid_s2
+
+
+module fcc_top__merge_table_rst(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* max_fanout = 64 *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_top__merge_table_rst
 
 
 module fcc_top__one_row(d,q,clock);
@@ -41767,6 +41911,27 @@ module fcc_sort_net__wr_en(d,q,clock);
 endmodule // fcc_sort_net__wr_en
 
 
+module fcc_top__sort_net_rst(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* max_fanout = 64 *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_top__sort_net_rst
+
+
 module fcc_top__tready_q(d,q,clock);
 
     // Module arguments
@@ -42228,6 +42393,87 @@ module fcc_window(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,e
     reg  [131:0] w3$d;
     wire  [131:0] w3$q;
     reg  w3$clock;
+    reg  shift_en$0$clock;
+    reg  shift_en$0$d;
+    wire  shift_en$0$q;
+    reg  shift_en$1$clock;
+    reg  shift_en$1$d;
+    wire  shift_en$1$q;
+    reg  shift_en$2$clock;
+    reg  shift_en$2$d;
+    wire  shift_en$2$q;
+    reg  shift_en$3$clock;
+    reg  shift_en$3$d;
+    wire  shift_en$3$q;
+    reg  shift_en$4$clock;
+    reg  shift_en$4$d;
+    wire  shift_en$4$q;
+    reg  shift_en$5$clock;
+    reg  shift_en$5$d;
+    wire  shift_en$5$q;
+    reg  shift_en$6$clock;
+    reg  shift_en$6$d;
+    wire  shift_en$6$q;
+    reg  shift_en$7$clock;
+    reg  shift_en$7$d;
+    wire  shift_en$7$q;
+    reg  shift_en$8$clock;
+    reg  shift_en$8$d;
+    wire  shift_en$8$q;
+    reg  shift_en$9$clock;
+    reg  shift_en$9$d;
+    wire  shift_en$9$q;
+    reg  shift_en$10$clock;
+    reg  shift_en$10$d;
+    wire  shift_en$10$q;
+    reg  shift_en$11$clock;
+    reg  shift_en$11$d;
+    wire  shift_en$11$q;
+    reg  shift_en$12$clock;
+    reg  shift_en$12$d;
+    wire  shift_en$12$q;
+    reg  shift_en$13$clock;
+    reg  shift_en$13$d;
+    wire  shift_en$13$q;
+    reg  shift_en$14$clock;
+    reg  shift_en$14$d;
+    wire  shift_en$14$q;
+    reg  shift_en$15$clock;
+    reg  shift_en$15$d;
+    wire  shift_en$15$q;
+    reg  shift_en$16$clock;
+    reg  shift_en$16$d;
+    wire  shift_en$16$q;
+    reg  shift_en$17$clock;
+    reg  shift_en$17$d;
+    wire  shift_en$17$q;
+    reg  shift_en$18$clock;
+    reg  shift_en$18$d;
+    wire  shift_en$18$q;
+    reg  shift_en$19$clock;
+    reg  shift_en$19$d;
+    wire  shift_en$19$q;
+    reg  shift_en$20$clock;
+    reg  shift_en$20$d;
+    wire  shift_en$20$q;
+    reg  lb_write_en$0$clock;
+    reg  lb_write_en$0$d;
+    wire  lb_write_en$0$q;
+    reg  lb_write_en$1$clock;
+    reg  lb_write_en$1$d;
+    wire  lb_write_en$1$q;
+    reg  lb_write_en$2$clock;
+    reg  lb_write_en$2$d;
+    wire  lb_write_en$2$q;
+    reg  lb_write_addr$0$clock;
+    reg  [11:0] lb_write_addr$0$d;
+    wire  [11:0] lb_write_addr$0$q;
+    reg  lb_write_addr$1$clock;
+    reg  [11:0] lb_write_addr$1$d;
+    wire  [11:0] lb_write_addr$1$q;
+    reg  lb_write_addr$2$clock;
+    reg  [11:0] lb_write_addr$2$d;
+    wire  [11:0] lb_write_addr$2$q;
     reg  rv_valid$0$d;
     wire  rv_valid$0$q;
     reg  rv_valid$0$clock;
@@ -42360,6 +42606,69 @@ module fcc_window(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,e
     reg  [15:0] rwin$20$d;
     wire  [15:0] rwin$20$q;
     reg  rwin$20$clock;
+    reg  rep_shift_en$0$clock;
+    reg  rep_shift_en$0$d;
+    wire  rep_shift_en$0$q;
+    reg  rep_shift_en$1$clock;
+    reg  rep_shift_en$1$d;
+    wire  rep_shift_en$1$q;
+    reg  rep_shift_en$2$clock;
+    reg  rep_shift_en$2$d;
+    wire  rep_shift_en$2$q;
+    reg  rep_shift_en$3$clock;
+    reg  rep_shift_en$3$d;
+    wire  rep_shift_en$3$q;
+    reg  rep_shift_en$4$clock;
+    reg  rep_shift_en$4$d;
+    wire  rep_shift_en$4$q;
+    reg  rep_shift_en$5$clock;
+    reg  rep_shift_en$5$d;
+    wire  rep_shift_en$5$q;
+    reg  rep_shift_en$6$clock;
+    reg  rep_shift_en$6$d;
+    wire  rep_shift_en$6$q;
+    reg  rep_shift_en$7$clock;
+    reg  rep_shift_en$7$d;
+    wire  rep_shift_en$7$q;
+    reg  rep_shift_en$8$clock;
+    reg  rep_shift_en$8$d;
+    wire  rep_shift_en$8$q;
+    reg  rep_shift_en$9$clock;
+    reg  rep_shift_en$9$d;
+    wire  rep_shift_en$9$q;
+    reg  rep_shift_en$10$clock;
+    reg  rep_shift_en$10$d;
+    wire  rep_shift_en$10$q;
+    reg  rep_shift_en$11$clock;
+    reg  rep_shift_en$11$d;
+    wire  rep_shift_en$11$q;
+    reg  rep_shift_en$12$clock;
+    reg  rep_shift_en$12$d;
+    wire  rep_shift_en$12$q;
+    reg  rep_shift_en$13$clock;
+    reg  rep_shift_en$13$d;
+    wire  rep_shift_en$13$q;
+    reg  rep_shift_en$14$clock;
+    reg  rep_shift_en$14$d;
+    wire  rep_shift_en$14$q;
+    reg  rep_shift_en$15$clock;
+    reg  rep_shift_en$15$d;
+    wire  rep_shift_en$15$q;
+    reg  rep_shift_en$16$clock;
+    reg  rep_shift_en$16$d;
+    wire  rep_shift_en$16$q;
+    reg  rep_shift_en$17$clock;
+    reg  rep_shift_en$17$d;
+    wire  rep_shift_en$17$q;
+    reg  rep_shift_en$18$clock;
+    reg  rep_shift_en$18$d;
+    wire  rep_shift_en$18$q;
+    reg  rep_shift_en$19$clock;
+    reg  rep_shift_en$19$d;
+    wire  rep_shift_en$19$q;
+    reg  rep_shift_en$20$clock;
+    reg  rep_shift_en$20$d;
+    wire  rep_shift_en$20$q;
     reg  row_in$0$d;
     wire  row_in$0$q;
     reg  row_in$0$clock;
@@ -42988,6 +43297,141 @@ module fcc_window(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,e
         .q(w3$q),
         .clock(w3$clock)
     );
+    fcc_window__shift_en__0 shift_en$0(
+        .clock(shift_en$0$clock),
+        .d(shift_en$0$d),
+        .q(shift_en$0$q)
+    );
+    fcc_window__shift_en__1 shift_en$1(
+        .clock(shift_en$1$clock),
+        .d(shift_en$1$d),
+        .q(shift_en$1$q)
+    );
+    fcc_window__shift_en__2 shift_en$2(
+        .clock(shift_en$2$clock),
+        .d(shift_en$2$d),
+        .q(shift_en$2$q)
+    );
+    fcc_window__shift_en__3 shift_en$3(
+        .clock(shift_en$3$clock),
+        .d(shift_en$3$d),
+        .q(shift_en$3$q)
+    );
+    fcc_window__shift_en__4 shift_en$4(
+        .clock(shift_en$4$clock),
+        .d(shift_en$4$d),
+        .q(shift_en$4$q)
+    );
+    fcc_window__shift_en__5 shift_en$5(
+        .clock(shift_en$5$clock),
+        .d(shift_en$5$d),
+        .q(shift_en$5$q)
+    );
+    fcc_window__shift_en__6 shift_en$6(
+        .clock(shift_en$6$clock),
+        .d(shift_en$6$d),
+        .q(shift_en$6$q)
+    );
+    fcc_window__shift_en__7 shift_en$7(
+        .clock(shift_en$7$clock),
+        .d(shift_en$7$d),
+        .q(shift_en$7$q)
+    );
+    fcc_window__shift_en__8 shift_en$8(
+        .clock(shift_en$8$clock),
+        .d(shift_en$8$d),
+        .q(shift_en$8$q)
+    );
+    fcc_window__shift_en__9 shift_en$9(
+        .clock(shift_en$9$clock),
+        .d(shift_en$9$d),
+        .q(shift_en$9$q)
+    );
+    fcc_window__shift_en__10 shift_en$10(
+        .clock(shift_en$10$clock),
+        .d(shift_en$10$d),
+        .q(shift_en$10$q)
+    );
+    fcc_window__shift_en__11 shift_en$11(
+        .clock(shift_en$11$clock),
+        .d(shift_en$11$d),
+        .q(shift_en$11$q)
+    );
+    fcc_window__shift_en__12 shift_en$12(
+        .clock(shift_en$12$clock),
+        .d(shift_en$12$d),
+        .q(shift_en$12$q)
+    );
+    fcc_window__shift_en__13 shift_en$13(
+        .clock(shift_en$13$clock),
+        .d(shift_en$13$d),
+        .q(shift_en$13$q)
+    );
+    fcc_window__shift_en__14 shift_en$14(
+        .clock(shift_en$14$clock),
+        .d(shift_en$14$d),
+        .q(shift_en$14$q)
+    );
+    fcc_window__shift_en__15 shift_en$15(
+        .clock(shift_en$15$clock),
+        .d(shift_en$15$d),
+        .q(shift_en$15$q)
+    );
+    fcc_window__shift_en__16 shift_en$16(
+        .clock(shift_en$16$clock),
+        .d(shift_en$16$d),
+        .q(shift_en$16$q)
+    );
+    fcc_window__shift_en__17 shift_en$17(
+        .clock(shift_en$17$clock),
+        .d(shift_en$17$d),
+        .q(shift_en$17$q)
+    );
+    fcc_window__shift_en__18 shift_en$18(
+        .clock(shift_en$18$clock),
+        .d(shift_en$18$d),
+        .q(shift_en$18$q)
+    );
+    fcc_window__shift_en__19 shift_en$19(
+        .clock(shift_en$19$clock),
+        .d(shift_en$19$d),
+        .q(shift_en$19$q)
+    );
+    fcc_window__shift_en__20 shift_en$20(
+        .clock(shift_en$20$clock),
+        .d(shift_en$20$d),
+        .q(shift_en$20$q)
+    );
+    fcc_window__lb_write_en__0 lb_write_en$0(
+        .clock(lb_write_en$0$clock),
+        .d(lb_write_en$0$d),
+        .q(lb_write_en$0$q)
+    );
+    fcc_window__lb_write_en__1 lb_write_en$1(
+        .clock(lb_write_en$1$clock),
+        .d(lb_write_en$1$d),
+        .q(lb_write_en$1$q)
+    );
+    fcc_window__lb_write_en__2 lb_write_en$2(
+        .clock(lb_write_en$2$clock),
+        .d(lb_write_en$2$d),
+        .q(lb_write_en$2$q)
+    );
+    fcc_window__lb_write_addr__0 lb_write_addr$0(
+        .clock(lb_write_addr$0$clock),
+        .d(lb_write_addr$0$d),
+        .q(lb_write_addr$0$q)
+    );
+    fcc_window__lb_write_addr__1 lb_write_addr$1(
+        .clock(lb_write_addr$1$clock),
+        .d(lb_write_addr$1$d),
+        .q(lb_write_addr$1$q)
+    );
+    fcc_window__lb_write_addr__2 lb_write_addr$2(
+        .clock(lb_write_addr$2$clock),
+        .d(lb_write_addr$2$d),
+        .q(lb_write_addr$2$q)
+    );
     fcc_window__rv_valid__0 rv_valid$0(
         .d(rv_valid$0$d),
         .q(rv_valid$0$q),
@@ -43200,6 +43644,111 @@ module fcc_window(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,e
         .q(rwin$20$q),
         .clock(rwin$20$clock)
     );
+    fcc_window__rep_shift_en__0 rep_shift_en$0(
+        .clock(rep_shift_en$0$clock),
+        .d(rep_shift_en$0$d),
+        .q(rep_shift_en$0$q)
+    );
+    fcc_window__rep_shift_en__1 rep_shift_en$1(
+        .clock(rep_shift_en$1$clock),
+        .d(rep_shift_en$1$d),
+        .q(rep_shift_en$1$q)
+    );
+    fcc_window__rep_shift_en__2 rep_shift_en$2(
+        .clock(rep_shift_en$2$clock),
+        .d(rep_shift_en$2$d),
+        .q(rep_shift_en$2$q)
+    );
+    fcc_window__rep_shift_en__3 rep_shift_en$3(
+        .clock(rep_shift_en$3$clock),
+        .d(rep_shift_en$3$d),
+        .q(rep_shift_en$3$q)
+    );
+    fcc_window__rep_shift_en__4 rep_shift_en$4(
+        .clock(rep_shift_en$4$clock),
+        .d(rep_shift_en$4$d),
+        .q(rep_shift_en$4$q)
+    );
+    fcc_window__rep_shift_en__5 rep_shift_en$5(
+        .clock(rep_shift_en$5$clock),
+        .d(rep_shift_en$5$d),
+        .q(rep_shift_en$5$q)
+    );
+    fcc_window__rep_shift_en__6 rep_shift_en$6(
+        .clock(rep_shift_en$6$clock),
+        .d(rep_shift_en$6$d),
+        .q(rep_shift_en$6$q)
+    );
+    fcc_window__rep_shift_en__7 rep_shift_en$7(
+        .clock(rep_shift_en$7$clock),
+        .d(rep_shift_en$7$d),
+        .q(rep_shift_en$7$q)
+    );
+    fcc_window__rep_shift_en__8 rep_shift_en$8(
+        .clock(rep_shift_en$8$clock),
+        .d(rep_shift_en$8$d),
+        .q(rep_shift_en$8$q)
+    );
+    fcc_window__rep_shift_en__9 rep_shift_en$9(
+        .clock(rep_shift_en$9$clock),
+        .d(rep_shift_en$9$d),
+        .q(rep_shift_en$9$q)
+    );
+    fcc_window__rep_shift_en__10 rep_shift_en$10(
+        .clock(rep_shift_en$10$clock),
+        .d(rep_shift_en$10$d),
+        .q(rep_shift_en$10$q)
+    );
+    fcc_window__rep_shift_en__11 rep_shift_en$11(
+        .clock(rep_shift_en$11$clock),
+        .d(rep_shift_en$11$d),
+        .q(rep_shift_en$11$q)
+    );
+    fcc_window__rep_shift_en__12 rep_shift_en$12(
+        .clock(rep_shift_en$12$clock),
+        .d(rep_shift_en$12$d),
+        .q(rep_shift_en$12$q)
+    );
+    fcc_window__rep_shift_en__13 rep_shift_en$13(
+        .clock(rep_shift_en$13$clock),
+        .d(rep_shift_en$13$d),
+        .q(rep_shift_en$13$q)
+    );
+    fcc_window__rep_shift_en__14 rep_shift_en$14(
+        .clock(rep_shift_en$14$clock),
+        .d(rep_shift_en$14$d),
+        .q(rep_shift_en$14$q)
+    );
+    fcc_window__rep_shift_en__15 rep_shift_en$15(
+        .clock(rep_shift_en$15$clock),
+        .d(rep_shift_en$15$d),
+        .q(rep_shift_en$15$q)
+    );
+    fcc_window__rep_shift_en__16 rep_shift_en$16(
+        .clock(rep_shift_en$16$clock),
+        .d(rep_shift_en$16$d),
+        .q(rep_shift_en$16$q)
+    );
+    fcc_window__rep_shift_en__17 rep_shift_en$17(
+        .clock(rep_shift_en$17$clock),
+        .d(rep_shift_en$17$d),
+        .q(rep_shift_en$17$q)
+    );
+    fcc_window__rep_shift_en__18 rep_shift_en$18(
+        .clock(rep_shift_en$18$clock),
+        .d(rep_shift_en$18$d),
+        .q(rep_shift_en$18$q)
+    );
+    fcc_window__rep_shift_en__19 rep_shift_en$19(
+        .clock(rep_shift_en$19$clock),
+        .d(rep_shift_en$19$d),
+        .q(rep_shift_en$19$q)
+    );
+    fcc_window__rep_shift_en__20 rep_shift_en$20(
+        .clock(rep_shift_en$20$clock),
+        .d(rep_shift_en$20$d),
+        .q(rep_shift_en$20$q)
+    );
     fcc_window__row_in__0 row_in$0(
         .d(row_in$0$d),
         .q(row_in$0$q),
@@ -43277,18 +43826,39 @@ module fcc_window(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,e
         lbs$0$clk = clk;
         lbs$0$read_en = inp[0:0];
         lbs$0$read_addr = inp[97:86];
-        lbs$0$write_en = w2$q[0:0];
-        lbs$0$write_addr = w2$q[85:74];
+        lbs$0$write_en = lb_write_en$0$q;
+        lbs$0$write_addr = lb_write_addr$0$q;
+        lb_write_en$0$clock = clk;
+        lb_write_en$0$d = w1$q[0:0] & ~rst;
+        lb_write_addr$0$clock = clk;
+        lb_write_addr$0$d = w1$q[85:74];
+        if (rst) begin
+            lb_write_addr$0$d = zero12;
+        end
         lbs$1$clk = clk;
         lbs$1$read_en = inp[0:0];
         lbs$1$read_addr = inp[97:86];
-        lbs$1$write_en = w2$q[0:0];
-        lbs$1$write_addr = w2$q[85:74];
+        lbs$1$write_en = lb_write_en$1$q;
+        lbs$1$write_addr = lb_write_addr$1$q;
+        lb_write_en$1$clock = clk;
+        lb_write_en$1$d = w1$q[0:0] & ~rst;
+        lb_write_addr$1$clock = clk;
+        lb_write_addr$1$d = w1$q[85:74];
+        if (rst) begin
+            lb_write_addr$1$d = zero12;
+        end
         lbs$2$clk = clk;
         lbs$2$read_en = inp[0:0];
         lbs$2$read_addr = inp[97:86];
-        lbs$2$write_en = w2$q[0:0];
-        lbs$2$write_addr = w2$q[85:74];
+        lbs$2$write_en = lb_write_en$2$q;
+        lbs$2$write_addr = lb_write_addr$2$q;
+        lb_write_en$2$clock = clk;
+        lb_write_en$2$d = w1$q[0:0] & ~rst;
+        lb_write_addr$2$clock = clk;
+        lb_write_addr$2$d = w1$q[85:74];
+        if (rst) begin
+            lb_write_addr$2$d = zero12;
+        end
         w1$d = inp;
         w2$d = w1$q;
         w3$d = w2$q;
@@ -43396,7 +43966,9 @@ module fcc_window(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,e
         win_x$0$d = win_x$0$q;
         win_y$0$d = win_y$0$q;
         win_z$0$d = win_z$0$q;
-        if (w2$q[0:0]) begin
+        shift_en$0$clock = clk;
+        shift_en$0$d = w1$q[0:0] & ~rst;
+        if (shift_en$0$q) begin
             win_lok$0$d = view_lok$0;
             win_x$0$d = view_x$0;
             win_y$0$d = view_y$0;
@@ -43410,7 +43982,9 @@ module fcc_window(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,e
         win_x$1$d = win_x$1$q;
         win_y$1$d = win_y$1$q;
         win_z$1$d = win_z$1$q;
-        if (w2$q[0:0]) begin
+        shift_en$1$clock = clk;
+        shift_en$1$d = w1$q[0:0] & ~rst;
+        if (shift_en$1$q) begin
             win_lok$1$d = view_lok$1;
             win_x$1$d = view_x$1;
             win_y$1$d = view_y$1;
@@ -43424,7 +43998,9 @@ module fcc_window(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,e
         win_x$2$d = win_x$2$q;
         win_y$2$d = win_y$2$q;
         win_z$2$d = win_z$2$q;
-        if (w2$q[0:0]) begin
+        shift_en$2$clock = clk;
+        shift_en$2$d = w1$q[0:0] & ~rst;
+        if (shift_en$2$q) begin
             win_lok$2$d = view_lok$2;
             win_x$2$d = view_x$2;
             win_y$2$d = view_y$2;
@@ -43438,7 +44014,9 @@ module fcc_window(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,e
         win_x$3$d = win_x$3$q;
         win_y$3$d = win_y$3$q;
         win_z$3$d = win_z$3$q;
-        if (w2$q[0:0]) begin
+        shift_en$3$clock = clk;
+        shift_en$3$d = w1$q[0:0] & ~rst;
+        if (shift_en$3$q) begin
             win_lok$3$d = view_lok$3;
             win_x$3$d = view_x$3;
             win_y$3$d = view_y$3;
@@ -43452,7 +44030,9 @@ module fcc_window(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,e
         win_x$4$d = win_x$4$q;
         win_y$4$d = win_y$4$q;
         win_z$4$d = win_z$4$q;
-        if (w2$q[0:0]) begin
+        shift_en$4$clock = clk;
+        shift_en$4$d = w1$q[0:0] & ~rst;
+        if (shift_en$4$q) begin
             win_lok$4$d = view_lok$4;
             win_x$4$d = view_x$4;
             win_y$4$d = view_y$4;
@@ -43466,7 +44046,9 @@ module fcc_window(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,e
         win_x$5$d = win_x$5$q;
         win_y$5$d = win_y$5$q;
         win_z$5$d = win_z$5$q;
-        if (w2$q[0:0]) begin
+        shift_en$5$clock = clk;
+        shift_en$5$d = w1$q[0:0] & ~rst;
+        if (shift_en$5$q) begin
             win_lok$5$d = view_lok$5;
             win_x$5$d = view_x$5;
             win_y$5$d = view_y$5;
@@ -43480,7 +44062,9 @@ module fcc_window(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,e
         win_x$6$d = win_x$6$q;
         win_y$6$d = win_y$6$q;
         win_z$6$d = win_z$6$q;
-        if (w2$q[0:0]) begin
+        shift_en$6$clock = clk;
+        shift_en$6$d = w1$q[0:0] & ~rst;
+        if (shift_en$6$q) begin
             win_lok$6$d = view_lok$6;
             win_x$6$d = view_x$6;
             win_y$6$d = view_y$6;
@@ -43494,7 +44078,9 @@ module fcc_window(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,e
         win_x$7$d = win_x$7$q;
         win_y$7$d = win_y$7$q;
         win_z$7$d = win_z$7$q;
-        if (w2$q[0:0]) begin
+        shift_en$7$clock = clk;
+        shift_en$7$d = w1$q[0:0] & ~rst;
+        if (shift_en$7$q) begin
             win_lok$7$d = view_lok$7;
             win_x$7$d = view_x$7;
             win_y$7$d = view_y$7;
@@ -43508,7 +44094,9 @@ module fcc_window(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,e
         win_x$8$d = win_x$8$q;
         win_y$8$d = win_y$8$q;
         win_z$8$d = win_z$8$q;
-        if (w2$q[0:0]) begin
+        shift_en$8$clock = clk;
+        shift_en$8$d = w1$q[0:0] & ~rst;
+        if (shift_en$8$q) begin
             win_lok$8$d = view_lok$8;
             win_x$8$d = view_x$8;
             win_y$8$d = view_y$8;
@@ -43522,7 +44110,9 @@ module fcc_window(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,e
         win_x$9$d = win_x$9$q;
         win_y$9$d = win_y$9$q;
         win_z$9$d = win_z$9$q;
-        if (w2$q[0:0]) begin
+        shift_en$9$clock = clk;
+        shift_en$9$d = w1$q[0:0] & ~rst;
+        if (shift_en$9$q) begin
             win_lok$9$d = view_lok$9;
             win_x$9$d = view_x$9;
             win_y$9$d = view_y$9;
@@ -43536,7 +44126,9 @@ module fcc_window(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,e
         win_x$10$d = win_x$10$q;
         win_y$10$d = win_y$10$q;
         win_z$10$d = win_z$10$q;
-        if (w2$q[0:0]) begin
+        shift_en$10$clock = clk;
+        shift_en$10$d = w1$q[0:0] & ~rst;
+        if (shift_en$10$q) begin
             win_lok$10$d = view_lok$10;
             win_x$10$d = view_x$10;
             win_y$10$d = view_y$10;
@@ -43550,7 +44142,9 @@ module fcc_window(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,e
         win_x$11$d = win_x$11$q;
         win_y$11$d = win_y$11$q;
         win_z$11$d = win_z$11$q;
-        if (w2$q[0:0]) begin
+        shift_en$11$clock = clk;
+        shift_en$11$d = w1$q[0:0] & ~rst;
+        if (shift_en$11$q) begin
             win_lok$11$d = view_lok$11;
             win_x$11$d = view_x$11;
             win_y$11$d = view_y$11;
@@ -43564,7 +44158,9 @@ module fcc_window(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,e
         win_x$12$d = win_x$12$q;
         win_y$12$d = win_y$12$q;
         win_z$12$d = win_z$12$q;
-        if (w2$q[0:0]) begin
+        shift_en$12$clock = clk;
+        shift_en$12$d = w1$q[0:0] & ~rst;
+        if (shift_en$12$q) begin
             win_lok$12$d = view_lok$12;
             win_x$12$d = view_x$12;
             win_y$12$d = view_y$12;
@@ -43578,7 +44174,9 @@ module fcc_window(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,e
         win_x$13$d = win_x$13$q;
         win_y$13$d = win_y$13$q;
         win_z$13$d = win_z$13$q;
-        if (w2$q[0:0]) begin
+        shift_en$13$clock = clk;
+        shift_en$13$d = w1$q[0:0] & ~rst;
+        if (shift_en$13$q) begin
             win_lok$13$d = view_lok$13;
             win_x$13$d = view_x$13;
             win_y$13$d = view_y$13;
@@ -43592,7 +44190,9 @@ module fcc_window(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,e
         win_x$14$d = win_x$14$q;
         win_y$14$d = win_y$14$q;
         win_z$14$d = win_z$14$q;
-        if (w2$q[0:0]) begin
+        shift_en$14$clock = clk;
+        shift_en$14$d = w1$q[0:0] & ~rst;
+        if (shift_en$14$q) begin
             win_lok$14$d = view_lok$14;
             win_x$14$d = view_x$14;
             win_y$14$d = view_y$14;
@@ -43606,7 +44206,9 @@ module fcc_window(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,e
         win_x$15$d = win_x$15$q;
         win_y$15$d = win_y$15$q;
         win_z$15$d = win_z$15$q;
-        if (w2$q[0:0]) begin
+        shift_en$15$clock = clk;
+        shift_en$15$d = w1$q[0:0] & ~rst;
+        if (shift_en$15$q) begin
             win_lok$15$d = view_lok$15;
             win_x$15$d = view_x$15;
             win_y$15$d = view_y$15;
@@ -43620,7 +44222,9 @@ module fcc_window(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,e
         win_x$16$d = win_x$16$q;
         win_y$16$d = win_y$16$q;
         win_z$16$d = win_z$16$q;
-        if (w2$q[0:0]) begin
+        shift_en$16$clock = clk;
+        shift_en$16$d = w1$q[0:0] & ~rst;
+        if (shift_en$16$q) begin
             win_lok$16$d = view_lok$16;
             win_x$16$d = view_x$16;
             win_y$16$d = view_y$16;
@@ -43634,7 +44238,9 @@ module fcc_window(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,e
         win_x$17$d = win_x$17$q;
         win_y$17$d = win_y$17$q;
         win_z$17$d = win_z$17$q;
-        if (w2$q[0:0]) begin
+        shift_en$17$clock = clk;
+        shift_en$17$d = w1$q[0:0] & ~rst;
+        if (shift_en$17$q) begin
             win_lok$17$d = view_lok$17;
             win_x$17$d = view_x$17;
             win_y$17$d = view_y$17;
@@ -43648,7 +44254,9 @@ module fcc_window(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,e
         win_x$18$d = win_x$18$q;
         win_y$18$d = win_y$18$q;
         win_z$18$d = win_z$18$q;
-        if (w2$q[0:0]) begin
+        shift_en$18$clock = clk;
+        shift_en$18$d = w1$q[0:0] & ~rst;
+        if (shift_en$18$q) begin
             win_lok$18$d = view_lok$18;
             win_x$18$d = view_x$18;
             win_y$18$d = view_y$18;
@@ -43662,7 +44270,9 @@ module fcc_window(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,e
         win_x$19$d = win_x$19$q;
         win_y$19$d = win_y$19$q;
         win_z$19$d = win_z$19$q;
-        if (w2$q[0:0]) begin
+        shift_en$19$clock = clk;
+        shift_en$19$d = w1$q[0:0] & ~rst;
+        if (shift_en$19$q) begin
             win_lok$19$d = view_lok$19;
             win_x$19$d = view_x$19;
             win_y$19$d = view_y$19;
@@ -43676,7 +44286,9 @@ module fcc_window(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,e
         win_x$20$d = win_x$20$q;
         win_y$20$d = win_y$20$q;
         win_z$20$d = win_z$20$q;
-        if (w2$q[0:0]) begin
+        shift_en$20$clock = clk;
+        shift_en$20$d = w1$q[0:0] & ~rst;
+        if (shift_en$20$q) begin
             win_lok$20$d = view_lok$20;
             win_x$20$d = view_x$20;
             win_y$20$d = view_y$20;
@@ -43796,127 +44408,169 @@ module fcc_window(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,e
         rlb$2$write_data = rview$10;
         rwin$0$clock = clk;
         rwin$0$d = rwin$0$q;
-        if (rv_valid$5$q) begin
+        rep_shift_en$0$clock = clk;
+        rep_shift_en$0$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$0$q) begin
             rwin$0$d = rview$0;
         end
         ent_rep$0 = rwin$0$q;
         rwin$1$clock = clk;
         rwin$1$d = rwin$1$q;
-        if (rv_valid$5$q) begin
+        rep_shift_en$1$clock = clk;
+        rep_shift_en$1$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$1$q) begin
             rwin$1$d = rview$1;
         end
         ent_rep$1 = rwin$1$q;
         rwin$2$clock = clk;
         rwin$2$d = rwin$2$q;
-        if (rv_valid$5$q) begin
+        rep_shift_en$2$clock = clk;
+        rep_shift_en$2$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$2$q) begin
             rwin$2$d = rview$2;
         end
         ent_rep$2 = rwin$2$q;
         rwin$3$clock = clk;
         rwin$3$d = rwin$3$q;
-        if (rv_valid$5$q) begin
+        rep_shift_en$3$clock = clk;
+        rep_shift_en$3$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$3$q) begin
             rwin$3$d = rview$3;
         end
         ent_rep$3 = rwin$3$q;
         rwin$4$clock = clk;
         rwin$4$d = rwin$4$q;
-        if (rv_valid$5$q) begin
+        rep_shift_en$4$clock = clk;
+        rep_shift_en$4$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$4$q) begin
             rwin$4$d = rview$4;
         end
         ent_rep$4 = rwin$4$q;
         rwin$5$clock = clk;
         rwin$5$d = rwin$5$q;
-        if (rv_valid$5$q) begin
+        rep_shift_en$5$clock = clk;
+        rep_shift_en$5$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$5$q) begin
             rwin$5$d = rview$5;
         end
         ent_rep$5 = rwin$5$q;
         rwin$6$clock = clk;
         rwin$6$d = rwin$6$q;
-        if (rv_valid$5$q) begin
+        rep_shift_en$6$clock = clk;
+        rep_shift_en$6$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$6$q) begin
             rwin$6$d = rview$6;
         end
         ent_rep$6 = rwin$6$q;
         rwin$7$clock = clk;
         rwin$7$d = rwin$7$q;
-        if (rv_valid$5$q) begin
+        rep_shift_en$7$clock = clk;
+        rep_shift_en$7$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$7$q) begin
             rwin$7$d = rview$7;
         end
         ent_rep$7 = rwin$7$q;
         rwin$8$clock = clk;
         rwin$8$d = rwin$8$q;
-        if (rv_valid$5$q) begin
+        rep_shift_en$8$clock = clk;
+        rep_shift_en$8$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$8$q) begin
             rwin$8$d = rview$8;
         end
         ent_rep$8 = rwin$8$q;
         rwin$9$clock = clk;
         rwin$9$d = rwin$9$q;
-        if (rv_valid$5$q) begin
+        rep_shift_en$9$clock = clk;
+        rep_shift_en$9$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$9$q) begin
             rwin$9$d = rview$9;
         end
         ent_rep$9 = rwin$9$q;
         rwin$10$clock = clk;
         rwin$10$d = rwin$10$q;
-        if (rv_valid$5$q) begin
+        rep_shift_en$10$clock = clk;
+        rep_shift_en$10$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$10$q) begin
             rwin$10$d = rview$10;
         end
         ent_rep$10 = rwin$10$q;
         rwin$11$clock = clk;
         rwin$11$d = rwin$11$q;
-        if (rv_valid$5$q) begin
+        rep_shift_en$11$clock = clk;
+        rep_shift_en$11$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$11$q) begin
             rwin$11$d = rview$11;
         end
         ent_rep$11 = rwin$11$q;
         rwin$12$clock = clk;
         rwin$12$d = rwin$12$q;
-        if (rv_valid$5$q) begin
+        rep_shift_en$12$clock = clk;
+        rep_shift_en$12$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$12$q) begin
             rwin$12$d = rview$12;
         end
         ent_rep$12 = rwin$12$q;
         rwin$13$clock = clk;
         rwin$13$d = rwin$13$q;
-        if (rv_valid$5$q) begin
+        rep_shift_en$13$clock = clk;
+        rep_shift_en$13$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$13$q) begin
             rwin$13$d = rview$13;
         end
         ent_rep$13 = rwin$13$q;
         rwin$14$clock = clk;
         rwin$14$d = rwin$14$q;
-        if (rv_valid$5$q) begin
+        rep_shift_en$14$clock = clk;
+        rep_shift_en$14$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$14$q) begin
             rwin$14$d = rview$14;
         end
         ent_rep$14 = rwin$14$q;
         rwin$15$clock = clk;
         rwin$15$d = rwin$15$q;
-        if (rv_valid$5$q) begin
+        rep_shift_en$15$clock = clk;
+        rep_shift_en$15$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$15$q) begin
             rwin$15$d = rview$15;
         end
         ent_rep$15 = rwin$15$q;
         rwin$16$clock = clk;
         rwin$16$d = rwin$16$q;
-        if (rv_valid$5$q) begin
+        rep_shift_en$16$clock = clk;
+        rep_shift_en$16$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$16$q) begin
             rwin$16$d = rview$16;
         end
         ent_rep$16 = rwin$16$q;
         rwin$17$clock = clk;
         rwin$17$d = rwin$17$q;
-        if (rv_valid$5$q) begin
+        rep_shift_en$17$clock = clk;
+        rep_shift_en$17$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$17$q) begin
             rwin$17$d = rview$17;
         end
         ent_rep$17 = rwin$17$q;
         rwin$18$clock = clk;
         rwin$18$d = rwin$18$q;
-        if (rv_valid$5$q) begin
+        rep_shift_en$18$clock = clk;
+        rep_shift_en$18$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$18$q) begin
             rwin$18$d = rview$18;
         end
         ent_rep$18 = rwin$18$q;
         rwin$19$clock = clk;
         rwin$19$d = rwin$19$q;
-        if (rv_valid$5$q) begin
+        rep_shift_en$19$clock = clk;
+        rep_shift_en$19$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$19$q) begin
             rwin$19$d = rview$19;
         end
         ent_rep$19 = rwin$19$q;
         rwin$20$clock = clk;
         rwin$20$d = rwin$20$q;
-        if (rv_valid$5$q) begin
+        rep_shift_en$20$clock = clk;
+        rep_shift_en$20$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$20$q) begin
             rwin$20$d = rview$20;
         end
         ent_rep$20 = rwin$20$q;
@@ -44218,6 +44872,132 @@ module fcc_window__col_in__6(d,q,clock);
 endmodule // fcc_window__col_in__6
 
 
+module fcc_window__lb_write_addr__0(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg [11:0] held;
+    initial begin
+        held = 12'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__lb_write_addr__0
+
+
+module fcc_window__lb_write_addr__1(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg [11:0] held;
+    initial begin
+        held = 12'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__lb_write_addr__1
+
+
+module fcc_window__lb_write_addr__2(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg [11:0] held;
+    initial begin
+        held = 12'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__lb_write_addr__2
+
+
+module fcc_window__lb_write_en__0(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__lb_write_en__0
+
+
+module fcc_window__lb_write_en__1(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__lb_write_en__1
+
+
+module fcc_window__lb_write_en__2(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__lb_write_en__2
+
+
 module fcc_window__lbs__0(clk,read_en,read_addr,rd_lok,rd_x,rd_y,rd_z,write_en,write_addr,wr_lok,wr_x,wr_y,wr_z);
 
     // Module arguments
@@ -44483,6 +45263,447 @@ module fcc_window__lbs__2__ram(clk,read_en,read_addr,read_data,write_en,write_ad
         read_data <= rd1;
     end
 endmodule // fcc_window__lbs__2__ram
+
+
+module fcc_window__rep_shift_en__0(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__rep_shift_en__0
+
+
+module fcc_window__rep_shift_en__1(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__rep_shift_en__1
+
+
+module fcc_window__rep_shift_en__10(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__rep_shift_en__10
+
+
+module fcc_window__rep_shift_en__11(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__rep_shift_en__11
+
+
+module fcc_window__rep_shift_en__12(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__rep_shift_en__12
+
+
+module fcc_window__rep_shift_en__13(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__rep_shift_en__13
+
+
+module fcc_window__rep_shift_en__14(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__rep_shift_en__14
+
+
+module fcc_window__rep_shift_en__15(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__rep_shift_en__15
+
+
+module fcc_window__rep_shift_en__16(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__rep_shift_en__16
+
+
+module fcc_window__rep_shift_en__17(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__rep_shift_en__17
+
+
+module fcc_window__rep_shift_en__18(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__rep_shift_en__18
+
+
+module fcc_window__rep_shift_en__19(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__rep_shift_en__19
+
+
+module fcc_window__rep_shift_en__2(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__rep_shift_en__2
+
+
+module fcc_window__rep_shift_en__20(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__rep_shift_en__20
+
+
+module fcc_window__rep_shift_en__3(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__rep_shift_en__3
+
+
+module fcc_window__rep_shift_en__4(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__rep_shift_en__4
+
+
+module fcc_window__rep_shift_en__5(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__rep_shift_en__5
+
+
+module fcc_window__rep_shift_en__6(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__rep_shift_en__6
+
+
+module fcc_window__rep_shift_en__7(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__rep_shift_en__7
+
+
+module fcc_window__rep_shift_en__8(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__rep_shift_en__8
+
+
+module fcc_window__rep_shift_en__9(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__rep_shift_en__9
 
 
 module fcc_window__rlb__0(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
@@ -45339,6 +46560,447 @@ module fcc_window__rwin__9(d,q,clock);
     end
 
 endmodule // fcc_window__rwin__9
+
+
+module fcc_window__shift_en__0(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__shift_en__0
+
+
+module fcc_window__shift_en__1(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__shift_en__1
+
+
+module fcc_window__shift_en__10(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__shift_en__10
+
+
+module fcc_window__shift_en__11(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__shift_en__11
+
+
+module fcc_window__shift_en__12(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__shift_en__12
+
+
+module fcc_window__shift_en__13(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__shift_en__13
+
+
+module fcc_window__shift_en__14(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__shift_en__14
+
+
+module fcc_window__shift_en__15(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__shift_en__15
+
+
+module fcc_window__shift_en__16(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__shift_en__16
+
+
+module fcc_window__shift_en__17(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__shift_en__17
+
+
+module fcc_window__shift_en__18(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__shift_en__18
+
+
+module fcc_window__shift_en__19(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__shift_en__19
+
+
+module fcc_window__shift_en__2(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__shift_en__2
+
+
+module fcc_window__shift_en__20(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__shift_en__20
+
+
+module fcc_window__shift_en__3(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__shift_en__3
+
+
+module fcc_window__shift_en__4(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__shift_en__4
+
+
+module fcc_window__shift_en__5(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__shift_en__5
+
+
+module fcc_window__shift_en__6(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__shift_en__6
+
+
+module fcc_window__shift_en__7(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__shift_en__7
+
+
+module fcc_window__shift_en__8(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__shift_en__8
+
+
+module fcc_window__shift_en__9(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__shift_en__9
 
 
 module fcc_window__w1(d,q,clock);
@@ -46992,4 +48654,25 @@ module fcc_window__win_z__9(d,q,clock);
     end
 
 endmodule // fcc_window__win_z__9
+
+
+module fcc_top__window_rst(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* max_fanout = 64 *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_top__window_rst
 `default_nettype wire

@@ -105,6 +105,8 @@ pub fn header() -> String {
         crate::merge_bench::MergeOut::c_decl(),
         crate::label_update_bench::LuIn::c_decl(),
         crate::label_update_bench::LuOut::c_decl(),
+        crate::window_bench::WinIn::c_decl(),
+        crate::window_bench::WinOut::c_decl(),
     ] {
         s.push_str(&d);
         s.push('\n');
@@ -151,6 +153,7 @@ mod tests {
         let h = header();
         for name in [
             "FccIn", "FccOut", "RegsIn", "RegsOut", "MergeIn", "MergeOut", "LuIn", "LuOut",
+            "WinIn", "WinOut",
         ] {
             assert_eq!(h.matches(&format!("struct {name} {{")).count(), 1, "{name}");
         }

@@ -17,6 +17,7 @@ pub mod merge_bench;
 pub mod model;
 pub mod regs_bench;
 pub mod run;
+pub mod window_bench;
 
 use std::path::PathBuf;
 
@@ -34,6 +35,7 @@ pub use model::{
 };
 pub use regs_bench::{load_regs, RegsDut, RegsIn, RegsOut};
 pub use run::{check_run, run_and_check_with, run_values};
+pub use window_bench::{load_window, WinEntry, WinIn, WinOut, WindowDut};
 
 /// Everything that can go wrong in a simulation.
 #[derive(Debug, thiserror::Error)]

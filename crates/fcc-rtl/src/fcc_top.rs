@@ -27,6 +27,7 @@ use rust_hdl::prelude::*;
 
 use crate::fcc_dist_tree::FccDistTree;
 use crate::fcc_intra::FccIntra;
+use crate::fcc_keep_reg::FccKeepReg;
 use crate::fcc_label_update::FccLabelUpdate;
 use crate::fcc_merge_table::FccMergeTable;
 use crate::fcc_regs::FccRegs;
@@ -38,6 +39,9 @@ use crate::types::{kb, Pix};
 /// Pixel slots that may be between the input and the centre buffer's output:
 /// the buffer's size less a margin for the registered `s_axis_tready`.
 pub const CREDITS: usize = (1 << CB_BITS) - 16;
+
+/// Loads per copy of the pipeline's reset that Vivado replicates down to.
+const RESET_FANOUT: usize = 64;
 
 #[derive(LogicBlock)]
 pub struct FccTop {
@@ -96,6 +100,14 @@ pub struct FccTop {
     merge_table: FccMergeTable,
     label_update: FccLabelUpdate,
     regs: FccRegs,
+    // The pipeline's reset tree: one copy of the register file's `core_rst`
+    // per block (the top's own registers use `core_rst` itself).
+    intra_rst: FccKeepReg<Bit>,
+    window_rst: FccKeepReg<Bit>,
+    dist_tree_rst: FccKeepReg<Bit>,
+    sort_net_rst: FccKeepReg<Bit>,
+    merge_table_rst: FccKeepReg<Bit>,
+    label_update_rst: FccKeepReg<Bit>,
     fsm: DFF<Bits<2>>,
     tready_q: DFF<Bit>,
     pad_go: DFF<Bit>,
@@ -200,6 +212,12 @@ impl FccTop {
             merge_table: FccMergeTable::new(p),
             label_update: FccLabelUpdate::new(p),
             regs: FccRegs::new(p),
+            intra_rst: FccKeepReg::with_max_fanout(RESET_FANOUT),
+            window_rst: FccKeepReg::with_max_fanout(RESET_FANOUT),
+            dist_tree_rst: FccKeepReg::with_max_fanout(RESET_FANOUT),
+            sort_net_rst: FccKeepReg::with_max_fanout(RESET_FANOUT),
+            merge_table_rst: FccKeepReg::with_max_fanout(RESET_FANOUT),
+            label_update_rst: FccKeepReg::with_max_fanout(RESET_FANOUT),
             fsm: Default::default(),
             tready_q: Default::default(),
             pad_go: Default::default(),
@@ -445,13 +463,27 @@ impl Logic for FccTop {
             self.room.d.next = true;
             self.last_seen.d.next = false;
         }
+        // ---- Reset tree: each copy is `core_rst`'s flip-flop again (same
+        // input, same cycle), so every block leaves reset in the same cycle.
+        self.intra_rst.clock.next = self.clk.val();
+        self.window_rst.clock.next = self.clk.val();
+        self.dist_tree_rst.clock.next = self.clk.val();
+        self.sort_net_rst.clock.next = self.clk.val();
+        self.merge_table_rst.clock.next = self.clk.val();
+        self.label_update_rst.clock.next = self.clk.val();
+        self.intra_rst.d.next = self.regs.core_rst_next.val();
+        self.window_rst.d.next = self.regs.core_rst_next.val();
+        self.dist_tree_rst.d.next = self.regs.core_rst_next.val();
+        self.sort_net_rst.d.next = self.regs.core_rst_next.val();
+        self.merge_table_rst.d.next = self.regs.core_rst_next.val();
+        self.label_update_rst.d.next = self.regs.core_rst_next.val();
         // ---- Blocks.
-        self.intra.rst.next = self.regs.core_rst.val();
+        self.intra.rst.next = self.intra_rst.q.val();
         self.intra.pix.next = self.slot_q.q.val();
         self.intra.last_col.next = self.last_col.q.val();
         self.window.last_col.next = self.last_col.q.val();
         self.intra.th_h_c.next = self.regs.run_th_h_c.val();
-        self.window.rst.next = self.regs.core_rst.val();
+        self.window.rst.next = self.window_rst.q.val();
         self.window.run_k.next = self.regs.run_k.val();
         self.window.inp.next.valid = self.intra.out.val().valid;
         self.window.inp.next.lok = self.intra.out.val().lok;
@@ -469,7 +501,7 @@ impl Logic for FccTop {
         self.window.rep_we.next = self.sort_net.rep_we.val();
         self.window.rep_waddr.next = self.sort_net.rep_waddr.val();
         self.window.rep_wdata.next = self.sort_net.rep_wdata.val();
-        self.dist_tree.rst.next = self.regs.core_rst.val();
+        self.dist_tree.rst.next = self.dist_tree_rst.q.val();
         self.dist_tree.th_v_c.next = self.regs.run_th_v_c.val();
         self.dist_tree.centre_in.next = self.window.centre.val();
         for e in 0..self.window.ent_ok.len() {
@@ -480,18 +512,18 @@ impl Logic for FccTop {
             self.sort_net.hit[e].next = self.dist_tree.hit[e].val();
             self.sort_net.rep[e].next = self.window.ent_rep[e].val();
         }
-        self.sort_net.rst.next = self.regs.core_rst.val();
+        self.sort_net.rst.next = self.sort_net_rst.q.val();
         self.sort_net.clear.next = self.label_update.rb_done.val();
         self.sort_net.centre.next = self.dist_tree.centre.val();
         self.sort_net.jtake.next = self.merge_table.jtake.val();
-        self.merge_table.rst.next = self.regs.core_rst.val();
+        self.merge_table.rst.next = self.merge_table_rst.q.val();
         self.merge_table.jv.next = self.sort_net.jv.val();
         self.merge_table.ja.next = self.sort_net.ja.val();
         self.merge_table.jb.next = self.sort_net.jb.val();
         self.merge_table.jsame.next = self.sort_net.jsame.val();
         self.merge_table.provisional.next = self.intra.provisional.val();
         self.merge_table.gear_used.next = self.label_update.gear_used.val();
-        self.label_update.rst.next = self.regs.core_rst.val();
+        self.label_update.rst.next = self.label_update_rst.q.val();
         self.label_update.wr_valid.next = self.intra.out.val().valid;
         self.label_update.wr_state.next = self.intra.out.val().state;
         self.label_update.wr_last.next = self.intra.out.val().last;

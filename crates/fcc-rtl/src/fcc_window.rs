@@ -38,6 +38,7 @@
 use fcc_params::FccParams;
 use rust_hdl::prelude::*;
 
+use crate::fcc_keep_reg::FccKeepReg;
 use crate::fcc_line_buf::FccLineBuf;
 use crate::fcc_ram::FccRam;
 use crate::fcc_sq_dist::SQ_LATENCY;
@@ -85,12 +86,19 @@ pub struct FccWindow {
     w1: DFF<WinPix>,
     w2: DFF<WinPix>,
     w3: DFF<WinPix>,
+    /// Copies of W2's `valid`, one per window entry: the entry's shift enable.
+    shift_en: Vec<FccKeepReg<Bit>>,
+    /// Copies of W2's `valid` and `col`, one per line buffer: its write port.
+    lb_write_en: Vec<FccKeepReg<Bit>>,
+    lb_write_addr: Vec<FccKeepReg<Bits<12>>>,
     // The representative window: pixel delay W4 .. W9, buffers, registers.
     rv_valid: Vec<DFF<Bit>>,
     rv_col: Vec<DFF<Bits<12>>>,
     rv_rdcol: Vec<DFF<Bits<12>>>,
     rlb: Vec<FccRam<Bits<16>, 12>>,
     rwin: Vec<DFF<Bits<16>>>,
+    /// Copies of R2's `valid` (`rv_valid[5]`), one per representative entry.
+    rep_shift_en: Vec<FccKeepReg<Bit>>,
     rview: Vec<Signal<Local, Bits<16>>>,
     /// Window row r lies inside the image (for the W3 centre).
     row_in: Vec<DFF<Bit>>,
@@ -147,11 +155,15 @@ impl FccWindow {
             w1: Default::default(),
             w2: Default::default(),
             w3: Default::default(),
+            shift_en: vec_of(n),
+            lb_write_en: vec_of(h),
+            lb_write_addr: vec_of(h),
             rv_valid: vec_of(6),
             rv_col: vec_of(6),
             rv_rdcol: vec_of(4),
             rlb: (0..h).map(|_| FccRam::new(c)).collect(),
             rwin: vec_of(n),
+            rep_shift_en: vec_of(n),
             rview: vec_of(n),
             row_in: vec_of(h),
             col_in: vec_of(k),
@@ -178,8 +190,15 @@ impl Logic for FccWindow {
             self.lbs[j].clk.next = self.clk.val();
             self.lbs[j].read_en.next = self.inp.val().valid;
             self.lbs[j].read_addr.next = self.inp.val().rdcol;
-            self.lbs[j].write_en.next = self.w2.q.val().valid;
-            self.lbs[j].write_addr.next = self.w2.q.val().col;
+            self.lbs[j].write_en.next = self.lb_write_en[j].q.val();
+            self.lbs[j].write_addr.next = self.lb_write_addr[j].q.val();
+            self.lb_write_en[j].clock.next = self.clk.val();
+            self.lb_write_en[j].d.next = self.w1.q.val().valid & !self.rst.val();
+            self.lb_write_addr[j].clock.next = self.clk.val();
+            self.lb_write_addr[j].d.next = self.w1.q.val().col;
+            if self.rst.val() {
+                self.lb_write_addr[j].d.next = self.zero12.val();
+            }
         }
         self.w1.d.next = self.inp.val();
         self.w2.d.next = self.w1.q.val();
@@ -222,7 +241,9 @@ impl Logic for FccWindow {
             self.win_x[e].d.next = self.win_x[e].q.val();
             self.win_y[e].d.next = self.win_y[e].q.val();
             self.win_z[e].d.next = self.win_z[e].q.val();
-            if self.w2.q.val().valid {
+            self.shift_en[e].clock.next = self.clk.val();
+            self.shift_en[e].d.next = self.w1.q.val().valid & !self.rst.val();
+            if self.shift_en[e].q.val() {
                 self.win_lok[e].d.next = self.view_lok[e].val();
                 self.win_x[e].d.next = self.view_x[e].val();
                 self.win_y[e].d.next = self.view_y[e].val();
@@ -309,7 +330,9 @@ impl Logic for FccWindow {
         for e in 0..(self._k * self._h) {
             self.rwin[e].clock.next = self.clk.val();
             self.rwin[e].d.next = self.rwin[e].q.val();
-            if self.rv_valid[5].q.val() {
+            self.rep_shift_en[e].clock.next = self.clk.val();
+            self.rep_shift_en[e].d.next = self.rv_valid[4].q.val() & !self.rst.val();
+            if self.rep_shift_en[e].q.val() {
                 self.rwin[e].d.next = self.rview[e].val();
             }
             self.ent_rep[e].next = self.rwin[e].q.val();

@@ -4,8 +4,8 @@
 //! (`fcc_intra`, `fcc_window`, `fcc_dist_tree`, `fcc_sort_net`,
 //! `fcc_merge_table`, `fcc_label_update`, `fcc_top`, plus the helpers
 //! `fcc_sq_dist`, `fcc_dist_unit`, `fcc_line_buf`, `fcc_fifo`, `fcc_ram`,
-//! `fcc_row_word`, `fcc_prefix_or`, `fcc_any_or`, `fcc_two_or`, `fcc_pick`;
-//! inside `fcc_label_update`: `fcc_fb_writer`, `fcc_rb_pipeline`,
+//! `fcc_row_word`, `fcc_keep_reg`, `fcc_prefix_or`, `fcc_any_or`, `fcc_two_or`,
+//! `fcc_pick`; inside `fcc_label_update`: `fcc_fb_writer`, `fcc_rb_pipeline`,
 //! `fcc_beat_queue`, `fcc_gearbox`, `fcc_beat_assembly`, `fcc_slot_mux`).
 //! Sizes that vary with the configuration (K, rows, columns, label bits,
 //! thresholds, labels per beat) are read from [`FccParams`] when the blocks
@@ -68,6 +68,7 @@ mod fcc_fifo;
 mod fcc_flatten;
 mod fcc_gearbox;
 mod fcc_intra;
+mod fcc_keep_reg;
 mod fcc_label_update;
 mod fcc_line_buf;
 mod fcc_merge_table;
@@ -88,6 +89,7 @@ mod fcc_top;
 mod fcc_two_or;
 mod fcc_union_engine;
 mod fcc_window;
+mod fcc_window_probe;
 pub mod lint;
 pub mod regmap;
 pub mod types;
@@ -280,6 +282,25 @@ pub fn generate_label_update(p: &FccParams) -> Result<String, RtlError> {
         &constant_selects(&raw),
         LABEL_UPDATE_MODULE,
     ));
+    v.push_str("\n`default_nettype wire\n");
+    Ok(v)
+}
+
+/// Name of the window probe's module (the window's bench).
+pub const WINDOW_MODULE: &str = "fcc_window_probe";
+
+/// The Verilog of `fcc_window` and its line buffers behind the scalar ports
+/// of `FccWindowProbe`, as a module `fcc_window_probe` (for the window's own
+/// bench; the core's copy is inside `fcc_top.v`).
+pub fn generate_window(p: &FccParams) -> Result<String, RtlError> {
+    p.validate_for_hardware()?;
+    let mut probe = fcc_window_probe::FccWindowProbe::new(p);
+    probe.connect_all();
+    check_all(&probe).map_err(|e| RtlError::Check(format!("{e:?}")))?;
+    let raw = generate_verilog_unchecked(&probe);
+    let mut v = file_header(p, "//");
+    v.push_str("`default_nettype none\n");
+    v.push_str(&rename_modules(&constant_selects(&raw), WINDOW_MODULE));
     v.push_str("\n`default_nettype wire\n");
     Ok(v)
 }

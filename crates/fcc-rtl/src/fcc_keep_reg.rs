@@ -1,0 +1,98 @@
+//! `FccKeepReg`: a flip-flop that synthesis must keep apart from its
+//! equivalents.
+//!
+//! A net with many loads is split by giving each small group of loads its own
+//! copy of the register that drives it (same input, same reset, same
+//! cycle). Synthesis tools merge such equivalent registers back into one
+//! (Yosys `opt_merge`, Vivado's equivalent-register removal), so this block is
+//! written as `Verilog::Custom` with `keep` on the register (Vivado) and on its
+//! process (Yosys takes the attribute onto the flip-flop cell). In every other
+//! respect it is rust-hdl's `DFF`: `q` follows `d` on the rising clock edge,
+//! and powers up at `T::default()`.
+//!
+//! A copy whose loads may still exceed the fanout target (a reset copy that
+//! serves a whole block) is built with [`FccKeepReg::with_max_fanout`]: the
+//! register carries Vivado's `max_fanout` instead of `keep` (Vivado's
+//! `keep` would forbid the replication): Vivado may merge such copies, then
+//! replicates the register until no copy drives more than that many loads.
+//! Yosys ignores `max_fanout` and keeps the copies apart.
+
+use rust_hdl::prelude::*;
+
+#[derive(LogicBlock)]
+pub struct FccKeepReg<T: Synth> {
+    pub clock: Signal<In, Clock>,
+    pub d: Signal<In, T>,
+    pub q: Signal<Out, T>,
+    _max_fanout: Option<usize>,
+}
+
+impl<T: Synth> Default for FccKeepReg<T> {
+    fn default() -> Self {
+        Self {
+            clock: Default::default(),
+            d: Default::default(),
+            q: Default::default(),
+            _max_fanout: None,
+        }
+    }
+}
+
+impl<T: Synth> FccKeepReg<T> {
+    /// A copy that Vivado may replicate until no copy drives more than
+    /// `loads` loads.
+    pub fn with_max_fanout(loads: usize) -> Self {
+        assert!(loads >= 2, "max_fanout {loads} is below 2");
+        Self {
+            _max_fanout: Some(loads),
+            ..Default::default()
+        }
+    }
+}
+
+impl<T: Synth> Logic for FccKeepReg<T> {
+    fn update(&mut self) {
+        if self.clock.pos_edge() {
+            self.q.next = self.d.val();
+        }
+    }
+
+    fn connect(&mut self) {
+        self.q.connect();
+    }
+
+    fn hdl(&self) -> Verilog {
+        let w = T::BITS;
+        let range = if w == 1 {
+            String::new()
+        } else {
+            format!("[{}:0] ", w - 1)
+        };
+        let attrs = match self._max_fanout {
+            Some(n) => format!("max_fanout = {n}"),
+            None => "keep = \"true\"".to_string(),
+        };
+        Verilog::Custom(format!(
+            "(* {attrs} *) reg {range}held;\n\
+             initial begin\n\
+             \x20   held = {init:x};\n\
+             end\n\
+             (* keep = \"true\" *) always @(posedge clock) begin\n\
+             \x20   held <= d;\n\
+             end\n\
+             always @(*) begin\n\
+             \x20   q = held;\n\
+             end\n",
+            init = T::default().verilog()
+        ))
+    }
+
+    fn timing(&self) -> Vec<TimingInfo> {
+        vec![TimingInfo {
+            name: "keep_reg".into(),
+            clock: "clock".into(),
+            inputs: vec!["d".into()],
+            outputs: vec!["q".into()],
+        }]
+    }
+}
