@@ -54,23 +54,41 @@
 //! **Block RAM.** Reads go through `FccRam` (two-cycle read, read-first);
 //! a user that needs the word written in the cycle of its read forwards it
 //! itself, from registers (`fcc_table_ports`).
+//!
+//! **The binder loop.** `#[hdl_gen]` unrolls a `for` loop while it writes
+//! the Verilog: the bounds are Rust expressions evaluated at generation, but
+//! a vector index (`self.rep[r * kk + n]`) is kept as text and evaluated with
+//! only the enclosing loops' variables in scope, so it cannot read a field
+//! such as `self._k`, and `update()` cannot hold a `let`. A loop of one
+//! iteration binds such a value to a name the index can use:
+//! `for kk in self._k..(self._k + 1) { ... self.rep[r * kk + n] ... }` reads
+//! "let kk = K". In the Rust simulation it is an ordinary loop that runs
+//! once. Blocks name these loop variables after the field they bind (`kk`
+//! for `_k`, `dd` for `_dp`, `l` for `_l`).
 
 pub mod example;
 mod fcc_any_or;
+mod fcc_centre_buf;
 mod fcc_dist_tree;
 mod fcc_dist_unit;
 mod fcc_fifo;
 mod fcc_flatten;
 mod fcc_intra;
+mod fcc_join_queue;
+mod fcc_known_mask;
 mod fcc_label_update;
 mod fcc_line_buf;
+mod fcc_match_delay;
 mod fcc_merge_table;
+mod fcc_min_tree;
 mod fcc_pick;
 mod fcc_prefix_or;
 mod fcc_ram;
 mod fcc_reg_mux;
 mod fcc_regs;
 mod fcc_row_word;
+mod fcc_serializer;
+mod fcc_sort_filter;
 mod fcc_sort_net;
 mod fcc_sq_dist;
 mod fcc_table_init;
