@@ -20,7 +20,7 @@ pub struct FccJoinQueue {
     pub clear: Signal<In, Bit>,
     // From the serializer.
     pub push: Signal<In, Bit>,
-    pub join: Signal<In, JoinRec>,
+    pub din: Signal<In, JoinRec>,
     /// The queue can take a join this cycle.
     pub room: Signal<Out, Bit>,
     // To the union engine.
@@ -49,7 +49,7 @@ impl Default for FccJoinQueue {
             rst: Default::default(),
             clear: Default::default(),
             push: Default::default(),
-            join: Default::default(),
+            din: Default::default(),
             room: Default::default(),
             jv: Default::default(),
             ja: Default::default(),
@@ -76,7 +76,7 @@ impl Logic for FccJoinQueue {
         self.queue.clk.next = self.clk.val();
         self.queue.rst.next = self.rst.val();
         self.queue.push.next = self.push.val();
-        self.queue.din.next = self.join.val();
+        self.queue.din.next = self.din.val();
         self.queue.take.next = self.jtake.val();
         self.nearly_full.d.next = self.queue.level.val() >= self.high_level.val();
         self.room.next = !self.nearly_full.q.val();

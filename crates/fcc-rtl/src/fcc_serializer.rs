@@ -59,9 +59,9 @@ pub struct FccSerializer {
     /// Take the head record (its joins are out); its input credit returns.
     pub take: Signal<Out, Bit>,
     // To the join queue.
-    pub room: Signal<In, Bit>,
-    pub push: Signal<Out, Bit>,
-    pub join: Signal<Out, JoinRec>,
+    pub join_room: Signal<In, Bit>,
+    pub join_push: Signal<Out, Bit>,
+    pub join_rec: Signal<Out, JoinRec>,
     /// The frame's last record has been taken (registered).
     pub last_done: Signal<Out, Bit>,
     loaded: DFF<Bit>,
@@ -108,9 +108,9 @@ impl FccSerializer {
             head_rep: vec_of(n),
             head_keep: vec_of(n),
             take: Default::default(),
-            room: Default::default(),
-            push: Default::default(),
-            join: Default::default(),
+            join_room: Default::default(),
+            join_push: Default::default(),
+            join_rec: Default::default(),
             last_done: Default::default(),
             loaded: Default::default(),
             phase: Default::default(),
@@ -174,10 +174,10 @@ impl Logic for FccSerializer {
             self.pick.v[e].next = self.head_rep[e].val();
         }
         self.pending_two.d.next = self.pending_two_or.two.val();
-        self.push.next = false;
-        self.join.next.a = self.head.val().c;
-        self.join.next.b = self.pick.o.val();
-        self.join.next.same = self.centre_same.q.val() | self.emitted.q.val();
+        self.join_push.next = false;
+        self.join_rec.next.a = self.head.val().c;
+        self.join_rec.next.b = self.pick.o.val();
+        self.join_rec.next.same = self.centre_same.q.val() | self.emitted.q.val();
         self.done.next = false;
         if !self.loaded.q.val() & self.head_valid.val() {
             self.loaded.d.next = true;
@@ -219,8 +219,8 @@ impl Logic for FccSerializer {
                     }
                 }
                 SerPhase::Emit => {
-                    if self.room.val() {
-                        self.push.next = true;
+                    if self.join_room.val() {
+                        self.join_push.next = true;
                         self.emitted.d.next = true;
                         self.prev_a.d.next = self.head.val().c;
                         self.prev_a_valid.d.next = true;
@@ -235,13 +235,13 @@ impl Logic for FccSerializer {
                     }
                 }
                 SerPhase::Ring => {
-                    if self.room.val() {
-                        self.push.next = true;
-                        self.join.next.a = self.head.val().ring_a;
-                        self.join.next.b = self.head.val().ring_b;
-                        self.join.next.same = self.ring_same_prev.q.val();
+                    if self.join_room.val() {
+                        self.join_push.next = true;
+                        self.join_rec.next.a = self.head.val().ring_a;
+                        self.join_rec.next.b = self.head.val().ring_b;
+                        self.join_rec.next.same = self.ring_same_prev.q.val();
                         if self.emitted.q.val() {
-                            self.join.next.same = self.ring_same_centre.q.val();
+                            self.join_rec.next.same = self.ring_same_centre.q.val();
                         }
                         self.prev_a.d.next = self.head.val().ring_a;
                         self.prev_a_valid.d.next = true;

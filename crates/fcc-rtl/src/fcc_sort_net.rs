@@ -144,9 +144,9 @@ impl Logic for FccSortNet {
         self.last_done.next = self.serializer.last_done.val();
         // Serializer -> join queue -> union engine.
         self.join_queue.clear.next = self.clear.val();
-        self.join_queue.push.next = self.serializer.push.val();
-        self.join_queue.join.next = self.serializer.join.val();
-        self.serializer.room.next = self.join_queue.room.val();
+        self.join_queue.push.next = self.serializer.join_push.val();
+        self.join_queue.din.next = self.serializer.join_rec.val();
+        self.serializer.join_room.next = self.join_queue.room.val();
         self.join_queue.jtake.next = self.jtake.val();
         self.jv.next = self.join_queue.jv.val();
         self.ja.next = self.join_queue.ja.val();
