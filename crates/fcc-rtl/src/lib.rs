@@ -5,8 +5,12 @@
 //! `fcc_merge_table`, `fcc_label_update`, `fcc_top`, plus the helpers
 //! `fcc_sq_dist`, `fcc_dist_unit`, `fcc_line_buf`, `fcc_fifo`, `fcc_ram`,
 //! `fcc_row_word`, `fcc_keep_reg`, `fcc_prefix_or`, `fcc_any_or`, `fcc_two_or`,
-//! `fcc_pick`; inside `fcc_label_update`: `fcc_fb_writer`, `fcc_rb_pipeline`,
-//! `fcc_beat_queue`, `fcc_gearbox`, `fcc_beat_assembly`, `fcc_slot_mux`).
+//! `fcc_pick`; inside `fcc_sort_net`: `fcc_sort_filter` (with `fcc_min_tree`,
+//! `fcc_known_mask`, `fcc_match_delay`), `fcc_centre_buf`, `fcc_serializer`,
+//! `fcc_join_queue`; inside `fcc_merge_table`: `fcc_table_init`,
+//! `fcc_union_engine`, `fcc_flatten`, `fcc_table_ports`; inside
+//! `fcc_label_update`: `fcc_fb_writer`, `fcc_rb_pipeline`, `fcc_beat_queue`,
+//! `fcc_gearbox`, `fcc_beat_assembly`, `fcc_slot_mux`).
 //! Sizes that vary with the configuration (K, rows, columns, label bits,
 //! thresholds, labels per beat) are read from [`FccParams`] when the blocks
 //! are built, so one binary generates every configuration.
@@ -56,11 +60,23 @@
 //! **Block RAM.** Reads go through `FccRam` (two-cycle read, read-first);
 //! a user that needs the word written in the cycle of its read forwards it
 //! itself, from registers (`fcc_table_ports`).
+//!
+//! **The binder loop.** `#[hdl_gen]` unrolls a `for` loop while it writes
+//! the Verilog: the bounds are Rust expressions evaluated at generation, but
+//! a vector index (`self.rep[r * kk + n]`) is kept as text and evaluated with
+//! only the enclosing loops' variables in scope, so it cannot read a field
+//! such as `self._k`, and `update()` cannot hold a `let`. A loop of one
+//! iteration binds such a value to a name the index can use:
+//! `for kk in self._k..(self._k + 1) { ... self.rep[r * kk + n] ... }` reads
+//! "let kk = K". In the Rust simulation it is an ordinary loop that runs
+//! once. Blocks name these loop variables after the field they bind (`kk`
+//! for `_k`, `dd` for `_dp`, `l` for `_l`).
 
 pub mod example;
 mod fcc_any_or;
 mod fcc_beat_assembly;
 mod fcc_beat_queue;
+mod fcc_centre_buf;
 mod fcc_dist_tree;
 mod fcc_dist_unit;
 mod fcc_fb_writer;
@@ -69,9 +85,13 @@ mod fcc_flatten;
 mod fcc_gearbox;
 mod fcc_intra;
 mod fcc_keep_reg;
+mod fcc_join_queue;
+mod fcc_known_mask;
 mod fcc_label_update;
 mod fcc_line_buf;
+mod fcc_match_delay;
 mod fcc_merge_table;
+mod fcc_min_tree;
 mod fcc_pick;
 mod fcc_prefix_or;
 mod fcc_ram;
@@ -80,6 +100,8 @@ mod fcc_reg_mux;
 mod fcc_regs;
 mod fcc_row_word;
 mod fcc_slot_mux;
+mod fcc_serializer;
+mod fcc_sort_filter;
 mod fcc_sort_net;
 mod fcc_sq_dist;
 mod fcc_table_init;

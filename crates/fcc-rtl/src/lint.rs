@@ -24,16 +24,22 @@ pub fn waivers(p: &FccParams) -> String {
          // C - 2, both below 4096), so bit 12 of the run value is not read.\n\
          lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'run_cols'[12]*\"\n\
          // rust-hdl writes each module's logic as one combinational always block.\n\
-         // The sort network's block feeds the prefix network `kp` (the kept\n\
-         // positions of the head record) and reads its outputs. The loop exists\n\
-         // only at block level, not between signals (rust-hdl's check_logic_loops\n\
-         // passes); it costs Verilator some speed, nothing else.\n\
-         lint_off -rule UNOPTFLAT -file \"*fcc_top.v\" -match \"*sort_net.kp.*\"\n\
+         // The serializer's block feeds the prefix network `head_earlier` (the\n\
+         // kept positions of the head record) and reads its outputs. The loop\n\
+         // exists only at block level, not between signals (rust-hdl's\n\
+         // check_logic_loops passes); it costs Verilator some speed, nothing else.\n\
+         lint_off -rule UNOPTFLAT -file \"*fcc_top.v\" -match \"*serializer.head_earlier.*\"\n\
          // FccFifo offers its fill level and its RAM's ports (for side RAMs) to\n\
          // every user. The centre buffer needs no level (the input credits bound\n\
          // it) and the join queue has no side RAMs.\n\
-         lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'cb$level'*\"\n\
-         lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'jq$ram_*\"\n",
+         lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'records$level'*\"\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'queue$ram_*\"\n\
+         // rust-hdl declares a state enum's names (`SerPhase`) as localparams in\n\
+         // every module that holds the enum, the state register's DFF included,\n\
+         // which does not read them, and that DFF initialises its output with a\n\
+         // 64-bit zero.\n\
+         lint_off -rule UNUSEDPARAM -file \"*fcc_top.v\" -match \"*'SerPhase$*\"\n\
+         lint_off -rule WIDTH -file \"*fcc_top.v\" -match \"*expects 2 bits on the Assign RHS, but Assign RHS's CONST '64'h0'*\"\n",
     );
     s.push_str(&axil_waivers("fcc_top.v"));
     s.push_str(&enum_register_waivers("fcc_top.v"));

@@ -1,0 +1,325 @@
+//! `FccSortFilter`: reduces the window positions that matched a centre to
+//! the few joins the centre needs, one centre per cycle without stalls, and
+//! writes the centre's representative back to the window.
+//!
+//! Stages (L = ceil(log2 positions) levels of the minimum tree):
+//!
+//! * S0: the centre's run (`same_run`: same label as the last labelled
+//!   centre). The representatives of the matched positions enter the
+//!   registered minimum tree (`FccMinTree`); the matches, their adjacency
+//!   (`adj`) and representatives enter the delay lines (`FccMatchDelay`).
+//! * S1: the sliding mask of positions already matched by this run
+//!   (`FccKnownMask`).
+//! * SM = S(L+1): the smallest representative among the matches, `min`. The
+//!   run's representative becomes min(run_rep, min) (min(c, min) for a new
+//!   run) and is written back to the window as the centre's representative.
+//! * SM+1: a match is kept unless it is known, `adj`, has the run's
+//!   representative (before this centre), or has representative `min` while
+//!   an earlier position also has `min`.
+//! * SM+2: a centre with kept matches, a ring join or the frame's end asks
+//!   for a centre-buffer record (`rec_push` in SM+3); any other valid centre
+//!   returns its input credit (`credit_drop`).
+//!
+//! The record's row values (`rec_rep`) and kept flags (`rec_keep`) show
+//! beside `rec` in SM+3.
+
+use fcc_params::FccParams;
+use rust_hdl::prelude::*;
+
+use crate::fcc_any_or::FccAnyOr;
+use crate::fcc_known_mask::FccKnownMask;
+use crate::fcc_match_delay::FccMatchDelay;
+use crate::fcc_min_tree::FccMinTree;
+use crate::fcc_prefix_or::FccPrefixOr;
+use crate::types::{clog2, kb, vec_of, Ctr, CtrRec};
+
+/// What the filter carries about a centre from stage to stage.
+#[derive(Clone, Copy, Debug, PartialEq, Default, LogicStruct)]
+pub struct FiltCtr {
+    pub valid: Bit,
+    /// A labelled point: it can join.
+    pub elig: Bit,
+    /// Same label as the last labelled centre of the frame.
+    pub same_run: Bit,
+    pub c: Bits<16>,
+    pub col: Bits<12>,
+    pub last: Bit,
+    pub ring: Bit,
+    pub ring_a: Bits<16>,
+    pub ring_b: Bits<16>,
+}
+
+#[derive(LogicBlock)]
+pub struct FccSortFilter {
+    pub clk: Signal<In, Clock>,
+    pub rst: Signal<In, Bit>,
+    // From the distance tree and the window (S0).
+    pub centre: Signal<In, Ctr>,
+    pub hit: Vec<Signal<In, Bit>>,
+    pub rep: Vec<Signal<In, Bits<16>>>,
+    // The centre pixel's representative, back to the window.
+    pub rep_we: Signal<Out, Bit>,
+    pub rep_waddr: Signal<Out, Bits<12>>,
+    pub rep_wdata: Signal<Out, Bits<16>>,
+    // To the centre buffer (SM+3).
+    pub rec_push: Signal<Out, Bit>,
+    pub rec: Signal<Out, CtrRec>,
+    pub rec_rep: Vec<Signal<Out, Bits<16>>>,
+    pub rec_keep: Vec<Signal<Out, Bit>>,
+    /// A valid centre that needs no record (its input credit returns).
+    pub credit_drop: Signal<Out, Bit>,
+    // ---- S0.
+    last_label: DFF<Bits<16>>,
+    last_label_valid: DFF<Bit>,
+    ctr_s0: Signal<Local, FiltCtr>,
+    // ---- The centre from stage to stage: S1, S2 .. SL, SM, SM+1, SM+2.
+    ctr_s1: DFF<FiltCtr>,
+    ctr_tree: Vec<DFF<FiltCtr>>,
+    ctr_sm: DFF<FiltCtr>,
+    ctr_sm1: DFF<FiltCtr>,
+    ctr_sm2: DFF<FiltCtr>,
+    match_delay: FccMatchDelay,
+    min_tree: FccMinTree,
+    known_mask: FccKnownMask,
+    // ---- SM.
+    run_rep: DFF<Bits<16>>,
+    /// The run's representative before this centre, and after it.
+    run_rep_before: Signal<Local, Bits<16>>,
+    run_rep_after: Signal<Local, Bits<16>>,
+    run_rep_sm1: DFF<Bits<16>>,
+    run_rep_sm2: DFF<Bits<16>>,
+    rep_write_en: DFF<Bit>,
+    rep_write_col: DFF<Bits<12>>,
+    rep_write_value: DFF<Bits<16>>,
+    /// A match with the smallest representative; a position whose
+    /// representative is the run's.
+    is_min: Vec<DFF<Bit>>,
+    is_run_rep: Vec<DFF<Bit>>,
+    // ---- SM+1.
+    min_earlier: FccPrefixOr,
+    keep: Vec<DFF<Bit>>,
+    // ---- SM+2.
+    keep_any: FccAnyOr,
+    need_rec: Signal<Local, Bit>,
+    keep_sm3: Vec<DFF<Bit>>,
+    rec_push_q: DFF<Bit>,
+    credit_drop_q: DFF<Bit>,
+    rec_q: DFF<CtrRec>,
+    ctr_zero: Constant<FiltCtr>,
+    zero16: Constant<Bits<16>>,
+    _n: usize,
+    /// Levels of the minimum tree.
+    _l: usize,
+}
+
+impl FccSortFilter {
+    pub fn new(p: &FccParams) -> Self {
+        let k = p.fsize;
+        let h = p.half();
+        let n = p.window_positions();
+        assert!(n <= 64);
+        let l = clog2(n);
+        Self {
+            clk: Default::default(),
+            rst: Default::default(),
+            centre: Default::default(),
+            hit: vec_of(n),
+            rep: vec_of(n),
+            rep_we: Default::default(),
+            rep_waddr: Default::default(),
+            rep_wdata: Default::default(),
+            rec_push: Default::default(),
+            rec: Default::default(),
+            rec_rep: vec_of(n),
+            rec_keep: vec_of(n),
+            credit_drop: Default::default(),
+            last_label: Default::default(),
+            last_label_valid: Default::default(),
+            ctr_s0: Default::default(),
+            ctr_s1: Default::default(),
+            ctr_tree: vec_of(l - 1),
+            ctr_sm: Default::default(),
+            ctr_sm1: Default::default(),
+            ctr_sm2: Default::default(),
+            match_delay: FccMatchDelay::new(k, h, l),
+            min_tree: FccMinTree::new(n),
+            // S1 .. SM+1.
+            known_mask: FccKnownMask::new(k, h, l + 1),
+            run_rep: Default::default(),
+            run_rep_before: Default::default(),
+            run_rep_after: Default::default(),
+            run_rep_sm1: Default::default(),
+            run_rep_sm2: Default::default(),
+            rep_write_en: Default::default(),
+            rep_write_col: Default::default(),
+            rep_write_value: Default::default(),
+            is_min: vec_of(n),
+            is_run_rep: vec_of(n),
+            min_earlier: FccPrefixOr::new(n),
+            keep: vec_of(n),
+            keep_any: FccAnyOr::new(n),
+            need_rec: Default::default(),
+            keep_sm3: vec_of(n),
+            rec_push_q: Default::default(),
+            credit_drop_q: Default::default(),
+            rec_q: Default::default(),
+            ctr_zero: Constant::new(FiltCtr::default()),
+            zero16: kb(0),
+            _n: n,
+            _l: l,
+        }
+    }
+}
+
+impl Logic for FccSortFilter {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(
+            self,
+            clk,
+            last_label,
+            last_label_valid,
+            ctr_s1,
+            ctr_sm,
+            ctr_sm1,
+            ctr_sm2,
+            run_rep,
+            run_rep_sm1,
+            run_rep_sm2,
+            rep_write_en,
+            rep_write_col,
+            rep_write_value,
+            rec_push_q,
+            credit_drop_q,
+            rec_q
+        );
+        for i in 0..(self._l - 1) {
+            self.ctr_tree[i].clock.next = self.clk.val();
+        }
+        for e in 0..self._n {
+            self.is_min[e].clock.next = self.clk.val();
+            self.is_run_rep[e].clock.next = self.clk.val();
+            self.keep[e].clock.next = self.clk.val();
+            self.keep_sm3[e].clock.next = self.clk.val();
+        }
+        self.min_tree.clk.next = self.clk.val();
+        self.known_mask.clk.next = self.clk.val();
+        self.match_delay.clk.next = self.clk.val();
+        self.match_delay.rst.next = self.rst.val();
+        // ---- S0: the centre's run and the adjacent duplicates.
+        self.ctr_s0.next.valid = self.centre.val().valid;
+        self.ctr_s0.next.elig = self.centre.val().valid & self.centre.val().lok;
+        self.ctr_s0.next.same_run =
+            self.last_label_valid.q.val() & (self.centre.val().label == self.last_label.q.val());
+        self.ctr_s0.next.c = self.centre.val().label;
+        self.ctr_s0.next.col = self.centre.val().col;
+        self.ctr_s0.next.last = self.centre.val().last;
+        self.ctr_s0.next.ring = self.centre.val().ring;
+        self.ctr_s0.next.ring_a = self.centre.val().ring_a;
+        self.ctr_s0.next.ring_b = self.centre.val().ring_b;
+        if self.centre.val().valid & self.centre.val().lok {
+            self.last_label.d.next = self.centre.val().label;
+            self.last_label_valid.d.next = true;
+        }
+        if self.centre.val().valid & self.centre.val().last {
+            self.last_label_valid.d.next = false;
+        }
+        self.ctr_s1.d.next = self.ctr_s0.val();
+        self.ctr_tree[0].d.next = self.ctr_s1.q.val();
+        for i in 1..(self._l - 1) {
+            self.ctr_tree[i].d.next = self.ctr_tree[i - 1].q.val();
+        }
+        for l in self._l..(self._l + 1) {
+            self.ctr_sm.d.next = self.ctr_tree[l - 2].q.val();
+        }
+        self.ctr_sm1.d.next = self.ctr_sm.q.val();
+        self.ctr_sm2.d.next = self.ctr_sm1.q.val();
+        for e in 0..self._n {
+            self.min_tree.hit[e].next = self.hit[e].val();
+            self.min_tree.value[e].next = self.rep[e].val();
+            self.match_delay.hit[e].next = self.hit[e].val();
+            self.match_delay.rep[e].next = self.rep[e].val();
+        }
+        // ---- S1: the sliding mask of positions already matched by this run.
+        self.known_mask.valid.next = self.ctr_s1.q.val().valid;
+        self.known_mask.elig.next = self.ctr_s1.q.val().elig;
+        self.known_mask.same_run.next = self.ctr_s1.q.val().same_run;
+        for e in 0..self._n {
+            self.known_mask.hit[e].next = self.match_delay.hit_s1[e].val();
+        }
+        // ---- SM: the run's representative; matches with the smallest one.
+        self.run_rep_before.next = self.ctr_sm.q.val().c;
+        if self.ctr_sm.q.val().same_run {
+            self.run_rep_before.next = self.run_rep.q.val();
+        }
+        self.run_rep_after.next = self.run_rep_before.val();
+        if self.min_tree.min.val() < self.run_rep_before.val() {
+            self.run_rep_after.next = self.min_tree.min.val();
+        }
+        if self.ctr_sm.q.val().elig {
+            self.run_rep.d.next = self.run_rep_after.val();
+        }
+        self.run_rep_sm1.d.next = self.run_rep_before.val();
+        self.rep_write_en.d.next = self.ctr_sm.q.val().valid;
+        self.rep_write_col.d.next = self.ctr_sm.q.val().col;
+        self.rep_write_value.d.next = self.zero16.val();
+        if self.ctr_sm.q.val().elig {
+            self.rep_write_value.d.next = self.run_rep_after.val();
+        }
+        for e in 0..self._n {
+            self.is_min[e].d.next = self.match_delay.hit_sm[e].val()
+                & (self.match_delay.rep_sm[e].val() == self.min_tree.min.val());
+            self.is_run_rep[e].d.next =
+                self.match_delay.rep_sm[e].val() == self.run_rep_before.val();
+        }
+        self.rep_we.next = self.rep_write_en.q.val();
+        self.rep_waddr.next = self.rep_write_col.q.val();
+        self.rep_wdata.next = self.rep_write_value.q.val();
+        // ---- SM+1: keep a match unless known, adjacent or a second minimum.
+        for e in 0..self._n {
+            self.min_earlier.x[e].next = self.is_min[e].q.val();
+            self.keep[e].d.next = self.ctr_sm1.q.val().elig
+                & self.match_delay.hit_sm1[e].val()
+                & !self.match_delay.adj_sm1[e].val()
+                & !self.known_mask.known_late[e].val()
+                & !self.is_run_rep[e].q.val()
+                & !(self.is_min[e].q.val() & self.min_earlier.pre[e].val());
+        }
+        self.run_rep_sm2.d.next = self.run_rep_sm1.q.val();
+        // ---- SM+2: does the centre need a record?
+        for e in 0..self._n {
+            self.keep_any.x[e].next = self.keep[e].q.val();
+            self.keep_sm3[e].d.next = self.keep[e].q.val();
+        }
+        self.need_rec.next =
+            self.keep_any.any.val() | self.ctr_sm2.q.val().ring | self.ctr_sm2.q.val().last;
+        self.rec_push_q.d.next = self.ctr_sm2.q.val().valid & self.need_rec.val();
+        self.credit_drop_q.d.next = self.ctr_sm2.q.val().valid & !self.need_rec.val();
+        self.rec_q.d.next.c = self.run_rep_sm2.q.val();
+        self.rec_q.d.next.ring_a = self.ctr_sm2.q.val().ring_a;
+        self.rec_q.d.next.ring_b = self.ctr_sm2.q.val().ring_b;
+        self.rec_q.d.next.ring = self.ctr_sm2.q.val().ring;
+        self.rec_q.d.next.last = self.ctr_sm2.q.val().last;
+        // ---- SM+3: the record.
+        self.rec_push.next = self.rec_push_q.q.val();
+        self.credit_drop.next = self.credit_drop_q.q.val();
+        self.rec.next = self.rec_q.q.val();
+        for e in 0..self._n {
+            self.rec_rep[e].next = self.match_delay.rep_sm3[e].val();
+            self.rec_keep[e].next = self.keep_sm3[e].q.val();
+        }
+        if self.rst.val() {
+            self.last_label_valid.d.next = false;
+            self.ctr_s1.d.next.valid = false;
+            for i in 0..(self._l - 1) {
+                self.ctr_tree[i].d.next = self.ctr_zero.val();
+            }
+            self.ctr_sm.d.next.valid = false;
+            self.ctr_sm1.d.next.valid = false;
+            self.ctr_sm2.d.next.valid = false;
+            self.rec_push_q.d.next = false;
+            self.credit_drop_q.d.next = false;
+            self.rep_write_en.d.next = false;
+        }
+    }
+}
