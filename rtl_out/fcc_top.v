@@ -11,7 +11,7 @@
 `default_nettype none
 
 
-module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_axis_tlast,m_axis_tdata,m_axis_tkeep,m_axis_tvalid,m_axis_tready,m_axis_tlast,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata,s_axil_wstrb,s_axil_wvalid,s_axil_wready,s_axil_bresp,s_axil_bvalid,s_axil_bready,s_axil_araddr,s_axil_arvalid,s_axil_arready,s_axil_rdata,s_axil_rresp,s_axil_rvalid,s_axil_rready,irq,status_clusters,status_provisional,status_overflow,status_unlabelled,status_frame_error,status_joins,status_gear_stalls,status_frame_done,status_idle);
+module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_axis_tlast,m_axis_tdata,m_axis_tkeep,m_axis_tvalid,m_axis_tready,m_axis_tlast,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata,s_axil_wstrb,s_axil_wvalid,s_axil_wready,s_axil_bresp,s_axil_bvalid,s_axil_bready,s_axil_araddr,s_axil_arvalid,s_axil_arready,s_axil_rdata,s_axil_rresp,s_axil_rvalid,s_axil_rready,irq,status_clusters,status_provisional,status_overflow,status_unlabelled,status_frame_error,status_joins,status_gear_stalls,status_frame_done,status_idle);
 
     // Module arguments
     input wire  clk;
@@ -517,7 +517,7 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
     reg  drained;
 
     // Sub module instances
-    fcc_intra intra(
+    fcc_intra_k7_668cf05b intra(
         .clk(intra$clk),
         .rst(intra$rst),
         .pix(intra$pix),
@@ -528,7 +528,7 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
         .overflow(intra$overflow),
         .unlabelled(intra$unlabelled)
     );
-    fcc_window window(
+    fcc_window_k7_668cf05b window(
         .clk(window$clk),
         .rst(window$rst),
         .inp(window$inp),
@@ -644,7 +644,7 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
         .rep_waddr(window$rep_waddr),
         .rep_wdata(window$rep_wdata)
     );
-    fcc_dist_tree dist_tree(
+    fcc_dist_tree_k7_668cf05b dist_tree(
         .clk(dist_tree$clk),
         .rst(dist_tree$rst),
         .centre_in(dist_tree$centre_in),
@@ -756,7 +756,7 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
         .hit$19(dist_tree$hit$19),
         .hit$20(dist_tree$hit$20)
     );
-    fcc_sort_net sort_net(
+    fcc_sort_net_k7_668cf05b sort_net(
         .clk(sort_net$clk),
         .rst(sort_net$rst),
         .clear(sort_net$clear),
@@ -817,7 +817,7 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
         .take(sort_net$take),
         .joins(sort_net$joins)
     );
-    fcc_merge_table merge_table(
+    fcc_merge_table_k7_668cf05b merge_table(
         .clk(merge_table$clk),
         .rst(merge_table$rst),
         .jv(merge_table$jv),
@@ -834,7 +834,7 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
         .gear_used(merge_table$gear_used),
         .clusters(merge_table$clusters)
     );
-    fcc_label_update label_update(
+    fcc_label_update_k7_668cf05b label_update(
         .clk(label_update$clk),
         .rst(label_update$rst),
         .wr_valid(label_update$wr_valid),
@@ -852,7 +852,7 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
         .rb_done(label_update$rb_done),
         .gear_stalls(label_update$gear_stalls)
     );
-    fcc_regs regs(
+    fcc_regs_k7_668cf05b regs(
         .clk(regs$clk),
         .rst(regs$rst),
         .s_axil_awaddr(regs$s_axil_awaddr),
@@ -898,107 +898,107 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
         .run_rows(regs$run_rows),
         .run_cols(regs$run_cols)
     );
-    fcc_top__fsm fsm(
+    fcc_top__fsm_k7_668cf05b fsm(
         .d(fsm$d),
         .q(fsm$q),
         .clock(fsm$clock)
     );
-    fcc_top__tready_q tready_q(
+    fcc_top__tready_q_k7_668cf05b tready_q(
         .d(tready_q$d),
         .q(tready_q$q),
         .clock(tready_q$clock)
     );
-    fcc_top__pad_go pad_go(
+    fcc_top__pad_go_k7_668cf05b pad_go(
         .d(pad_go$d),
         .q(pad_go$q),
         .clock(pad_go$clock)
     );
-    fcc_top__slot_q slot_q(
+    fcc_top__slot_q_k7_668cf05b slot_q(
         .d(slot_q$d),
         .q(slot_q$q),
         .clock(slot_q$clock)
     );
-    fcc_top__row row(
+    fcc_top__row_k7_668cf05b row(
         .d(row$d),
         .q(row$q),
         .clock(row$clock)
     );
-    fcc_top__col col(
+    fcc_top__col_k7_668cf05b col(
         .d(col$d),
         .q(col$q),
         .clock(col$clock)
     );
-    fcc_top__col0 col0(
+    fcc_top__col0_k7_668cf05b col0(
         .d(col0$d),
         .q(col0$q),
         .clock(col0$clock)
     );
-    fcc_top__col_last col_last(
+    fcc_top__col_last_k7_668cf05b col_last(
         .d(col_last$d),
         .q(col_last$q),
         .clock(col_last$clock)
     );
-    fcc_top__row_last row_last(
+    fcc_top__row_last_k7_668cf05b row_last(
         .d(row_last$d),
         .q(row_last$q),
         .clock(row_last$clock)
     );
-    fcc_top__first first(
+    fcc_top__first_k7_668cf05b first(
         .d(first$d),
         .q(first$q),
         .clock(first$clock)
     );
-    fcc_top__pad pad(
+    fcc_top__pad_k7_668cf05b pad(
         .d(pad$d),
         .q(pad$q),
         .clock(pad$clock)
     );
-    fcc_top__discard discard(
+    fcc_top__discard_k7_668cf05b discard(
         .d(discard$d),
         .q(discard$q),
         .clock(discard$clock)
     );
-    fcc_top__in_done in_done(
+    fcc_top__in_done_k7_668cf05b in_done(
         .d(in_done$d),
         .q(in_done$q),
         .clock(in_done$clock)
     );
-    fcc_top__err err(
+    fcc_top__err_k7_668cf05b err(
         .d(err$d),
         .q(err$q),
         .clock(err$clock)
     );
-    fcc_top__credits credits(
+    fcc_top__credits_k7_668cf05b credits(
         .d(credits$d),
         .q(credits$q),
         .clock(credits$clock)
     );
-    fcc_top__room room(
+    fcc_top__room_k7_668cf05b room(
         .d(room$d),
         .q(room$q),
         .clock(room$clock)
     );
-    fcc_top__last_seen last_seen(
+    fcc_top__last_seen_k7_668cf05b last_seen(
         .d(last_seen$d),
         .q(last_seen$q),
         .clock(last_seen$clock)
     );
-    fcc_top__last_col last_col(
+    fcc_top__last_col_k7_668cf05b last_col(
         .d(last_col$d),
         .q(last_col$q),
         .clock(last_col$clock)
     );
-    fcc_top__pen_col pen_col(
+    fcc_top__pen_col_k7_668cf05b pen_col(
         .d(pen_col$d),
         .q(pen_col$q),
         .clock(pen_col$clock)
     );
-    fcc_top__pen_row pen_row(
+    fcc_top__pen_row_k7_668cf05b pen_row(
         .d(pen_row$d),
         .q(pen_row$q),
         .clock(pen_row$clock)
     );
-    fcc_top__one_row one_row(
+    fcc_top__one_row_k7_668cf05b one_row(
         .d(one_row$d),
         .q(one_row$q),
         .clock(one_row$clock)
@@ -1401,10 +1401,10 @@ module fcc_top(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axis_tready,s_a
         regs$idle = (fsm$q == f_run) & ~in_done$q & first$q;
     end
 
-endmodule // fcc_top
+endmodule // fcc_top_k7_668cf05b
 
 
-module fcc_top__col(d,q,clock);
+module fcc_top__col_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [11:0] d;
@@ -1420,29 +1420,10 @@ module fcc_top__col(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_top__col
+endmodule // fcc_top__col_k7_668cf05b
 
 
-module fcc_top__col0(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__col0
-
-
-module fcc_top__col_last(d,q,clock);
+module fcc_top__col0_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -1458,10 +1439,29 @@ module fcc_top__col_last(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_top__col_last
+endmodule // fcc_top__col0_k7_668cf05b
 
 
-module fcc_top__credits(d,q,clock);
+module fcc_top__col_last_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__col_last_k7_668cf05b
+
+
+module fcc_top__credits_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [9:0] d;
@@ -1477,10 +1477,10 @@ module fcc_top__credits(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_top__credits
+endmodule // fcc_top__credits_k7_668cf05b
 
 
-module fcc_top__discard(d,q,clock);
+module fcc_top__discard_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -1496,10 +1496,10 @@ module fcc_top__discard(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_top__discard
+endmodule // fcc_top__discard_k7_668cf05b
 
 
-module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_ok$4,ent_ok$5,ent_ok$6,ent_ok$7,ent_ok$8,ent_ok$9,ent_ok$10,ent_ok$11,ent_ok$12,ent_ok$13,ent_ok$14,ent_ok$15,ent_ok$16,ent_ok$17,ent_ok$18,ent_ok$19,ent_ok$20,ent_x$0,ent_x$1,ent_x$2,ent_x$3,ent_x$4,ent_x$5,ent_x$6,ent_x$7,ent_x$8,ent_x$9,ent_x$10,ent_x$11,ent_x$12,ent_x$13,ent_x$14,ent_x$15,ent_x$16,ent_x$17,ent_x$18,ent_x$19,ent_x$20,ent_y$0,ent_y$1,ent_y$2,ent_y$3,ent_y$4,ent_y$5,ent_y$6,ent_y$7,ent_y$8,ent_y$9,ent_y$10,ent_y$11,ent_y$12,ent_y$13,ent_y$14,ent_y$15,ent_y$16,ent_y$17,ent_y$18,ent_y$19,ent_y$20,ent_z$0,ent_z$1,ent_z$2,ent_z$3,ent_z$4,ent_z$5,ent_z$6,ent_z$7,ent_z$8,ent_z$9,ent_z$10,ent_z$11,ent_z$12,ent_z$13,ent_z$14,ent_z$15,ent_z$16,ent_z$17,ent_z$18,ent_z$19,ent_z$20,th_v_c,centre,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit$6,hit$7,hit$8,hit$9,hit$10,hit$11,hit$12,hit$13,hit$14,hit$15,hit$16,hit$17,hit$18,hit$19,hit$20);
+module fcc_dist_tree_k7_668cf05b(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_ok$4,ent_ok$5,ent_ok$6,ent_ok$7,ent_ok$8,ent_ok$9,ent_ok$10,ent_ok$11,ent_ok$12,ent_ok$13,ent_ok$14,ent_ok$15,ent_ok$16,ent_ok$17,ent_ok$18,ent_ok$19,ent_ok$20,ent_x$0,ent_x$1,ent_x$2,ent_x$3,ent_x$4,ent_x$5,ent_x$6,ent_x$7,ent_x$8,ent_x$9,ent_x$10,ent_x$11,ent_x$12,ent_x$13,ent_x$14,ent_x$15,ent_x$16,ent_x$17,ent_x$18,ent_x$19,ent_x$20,ent_y$0,ent_y$1,ent_y$2,ent_y$3,ent_y$4,ent_y$5,ent_y$6,ent_y$7,ent_y$8,ent_y$9,ent_y$10,ent_y$11,ent_y$12,ent_y$13,ent_y$14,ent_y$15,ent_y$16,ent_y$17,ent_y$18,ent_y$19,ent_y$20,ent_z$0,ent_z$1,ent_z$2,ent_z$3,ent_z$4,ent_z$5,ent_z$6,ent_z$7,ent_z$8,ent_z$9,ent_z$10,ent_z$11,ent_z$12,ent_z$13,ent_z$14,ent_z$15,ent_z$16,ent_z$17,ent_z$18,ent_z$19,ent_z$20,th_v_c,centre,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit$6,hit$7,hit$8,hit$9,hit$10,hit$11,hit$12,hit$13,hit$14,hit$15,hit$16,hit$17,hit$18,hit$19,hit$20);
 
     // Module arguments
     input wire  clk;
@@ -1853,7 +1853,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
     reg  [63:0] c0;
 
     // Sub module instances
-    fcc_dist_tree__units__0 units$0(
+    fcc_dist_tree__units__0_k7_668cf05b units$0(
         .clk(units$0$clk),
         .cx(units$0$cx),
         .cy(units$0$cy),
@@ -1865,7 +1865,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .th_c(units$0$th_c),
         .hit(units$0$hit)
     );
-    fcc_dist_tree__units__1 units$1(
+    fcc_dist_tree__units__1_k7_668cf05b units$1(
         .clk(units$1$clk),
         .cx(units$1$cx),
         .cy(units$1$cy),
@@ -1877,7 +1877,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .th_c(units$1$th_c),
         .hit(units$1$hit)
     );
-    fcc_dist_tree__units__2 units$2(
+    fcc_dist_tree__units__2_k7_668cf05b units$2(
         .clk(units$2$clk),
         .cx(units$2$cx),
         .cy(units$2$cy),
@@ -1889,7 +1889,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .th_c(units$2$th_c),
         .hit(units$2$hit)
     );
-    fcc_dist_tree__units__3 units$3(
+    fcc_dist_tree__units__3_k7_668cf05b units$3(
         .clk(units$3$clk),
         .cx(units$3$cx),
         .cy(units$3$cy),
@@ -1901,7 +1901,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .th_c(units$3$th_c),
         .hit(units$3$hit)
     );
-    fcc_dist_tree__units__4 units$4(
+    fcc_dist_tree__units__4_k7_668cf05b units$4(
         .clk(units$4$clk),
         .cx(units$4$cx),
         .cy(units$4$cy),
@@ -1913,7 +1913,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .th_c(units$4$th_c),
         .hit(units$4$hit)
     );
-    fcc_dist_tree__units__5 units$5(
+    fcc_dist_tree__units__5_k7_668cf05b units$5(
         .clk(units$5$clk),
         .cx(units$5$cx),
         .cy(units$5$cy),
@@ -1925,7 +1925,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .th_c(units$5$th_c),
         .hit(units$5$hit)
     );
-    fcc_dist_tree__units__6 units$6(
+    fcc_dist_tree__units__6_k7_668cf05b units$6(
         .clk(units$6$clk),
         .cx(units$6$cx),
         .cy(units$6$cy),
@@ -1937,7 +1937,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .th_c(units$6$th_c),
         .hit(units$6$hit)
     );
-    fcc_dist_tree__units__7 units$7(
+    fcc_dist_tree__units__7_k7_668cf05b units$7(
         .clk(units$7$clk),
         .cx(units$7$cx),
         .cy(units$7$cy),
@@ -1949,7 +1949,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .th_c(units$7$th_c),
         .hit(units$7$hit)
     );
-    fcc_dist_tree__units__8 units$8(
+    fcc_dist_tree__units__8_k7_668cf05b units$8(
         .clk(units$8$clk),
         .cx(units$8$cx),
         .cy(units$8$cy),
@@ -1961,7 +1961,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .th_c(units$8$th_c),
         .hit(units$8$hit)
     );
-    fcc_dist_tree__units__9 units$9(
+    fcc_dist_tree__units__9_k7_668cf05b units$9(
         .clk(units$9$clk),
         .cx(units$9$cx),
         .cy(units$9$cy),
@@ -1973,7 +1973,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .th_c(units$9$th_c),
         .hit(units$9$hit)
     );
-    fcc_dist_tree__units__10 units$10(
+    fcc_dist_tree__units__10_k7_668cf05b units$10(
         .clk(units$10$clk),
         .cx(units$10$cx),
         .cy(units$10$cy),
@@ -1985,7 +1985,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .th_c(units$10$th_c),
         .hit(units$10$hit)
     );
-    fcc_dist_tree__units__11 units$11(
+    fcc_dist_tree__units__11_k7_668cf05b units$11(
         .clk(units$11$clk),
         .cx(units$11$cx),
         .cy(units$11$cy),
@@ -1997,7 +1997,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .th_c(units$11$th_c),
         .hit(units$11$hit)
     );
-    fcc_dist_tree__units__12 units$12(
+    fcc_dist_tree__units__12_k7_668cf05b units$12(
         .clk(units$12$clk),
         .cx(units$12$cx),
         .cy(units$12$cy),
@@ -2009,7 +2009,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .th_c(units$12$th_c),
         .hit(units$12$hit)
     );
-    fcc_dist_tree__units__13 units$13(
+    fcc_dist_tree__units__13_k7_668cf05b units$13(
         .clk(units$13$clk),
         .cx(units$13$cx),
         .cy(units$13$cy),
@@ -2021,7 +2021,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .th_c(units$13$th_c),
         .hit(units$13$hit)
     );
-    fcc_dist_tree__units__14 units$14(
+    fcc_dist_tree__units__14_k7_668cf05b units$14(
         .clk(units$14$clk),
         .cx(units$14$cx),
         .cy(units$14$cy),
@@ -2033,7 +2033,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .th_c(units$14$th_c),
         .hit(units$14$hit)
     );
-    fcc_dist_tree__units__15 units$15(
+    fcc_dist_tree__units__15_k7_668cf05b units$15(
         .clk(units$15$clk),
         .cx(units$15$cx),
         .cy(units$15$cy),
@@ -2045,7 +2045,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .th_c(units$15$th_c),
         .hit(units$15$hit)
     );
-    fcc_dist_tree__units__16 units$16(
+    fcc_dist_tree__units__16_k7_668cf05b units$16(
         .clk(units$16$clk),
         .cx(units$16$cx),
         .cy(units$16$cy),
@@ -2057,7 +2057,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .th_c(units$16$th_c),
         .hit(units$16$hit)
     );
-    fcc_dist_tree__units__17 units$17(
+    fcc_dist_tree__units__17_k7_668cf05b units$17(
         .clk(units$17$clk),
         .cx(units$17$cx),
         .cy(units$17$cy),
@@ -2069,7 +2069,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .th_c(units$17$th_c),
         .hit(units$17$hit)
     );
-    fcc_dist_tree__units__18 units$18(
+    fcc_dist_tree__units__18_k7_668cf05b units$18(
         .clk(units$18$clk),
         .cx(units$18$cx),
         .cy(units$18$cy),
@@ -2081,7 +2081,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .th_c(units$18$th_c),
         .hit(units$18$hit)
     );
-    fcc_dist_tree__units__19 units$19(
+    fcc_dist_tree__units__19_k7_668cf05b units$19(
         .clk(units$19$clk),
         .cx(units$19$cx),
         .cy(units$19$cy),
@@ -2093,7 +2093,7 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .th_c(units$19$th_c),
         .hit(units$19$hit)
     );
-    fcc_dist_tree__units__20 units$20(
+    fcc_dist_tree__units__20_k7_668cf05b units$20(
         .clk(units$20$clk),
         .cx(units$20$cx),
         .cy(units$20$cy),
@@ -2105,37 +2105,37 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         .th_c(units$20$th_c),
         .hit(units$20$hit)
     );
-    fcc_dist_tree__cd__0 cd$0(
+    fcc_dist_tree__cd__0_k7_668cf05b cd$0(
         .d(cd$0$d),
         .q(cd$0$q),
         .clock(cd$0$clock)
     );
-    fcc_dist_tree__cd__1 cd$1(
+    fcc_dist_tree__cd__1_k7_668cf05b cd$1(
         .d(cd$1$d),
         .q(cd$1$q),
         .clock(cd$1$clock)
     );
-    fcc_dist_tree__cd__2 cd$2(
+    fcc_dist_tree__cd__2_k7_668cf05b cd$2(
         .d(cd$2$d),
         .q(cd$2$q),
         .clock(cd$2$clock)
     );
-    fcc_dist_tree__cd__3 cd$3(
+    fcc_dist_tree__cd__3_k7_668cf05b cd$3(
         .d(cd$3$d),
         .q(cd$3$q),
         .clock(cd$3$clock)
     );
-    fcc_dist_tree__cd__4 cd$4(
+    fcc_dist_tree__cd__4_k7_668cf05b cd$4(
         .d(cd$4$d),
         .q(cd$4$q),
         .clock(cd$4$clock)
     );
-    fcc_dist_tree__cd__5 cd$5(
+    fcc_dist_tree__cd__5_k7_668cf05b cd$5(
         .d(cd$5$d),
         .q(cd$5$q),
         .clock(cd$5$clock)
     );
-    fcc_dist_tree__cd__6 cd$6(
+    fcc_dist_tree__cd__6_k7_668cf05b cd$6(
         .d(cd$6$d),
         .q(cd$6$q),
         .clock(cd$6$clock)
@@ -2387,29 +2387,10 @@ module fcc_dist_tree(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_o
         centre = cd$6$q;
     end
 
-endmodule // fcc_dist_tree
+endmodule // fcc_dist_tree_k7_668cf05b
 
 
-module fcc_dist_tree__cd__0(d,q,clock);
-
-    // Module arguments
-    input wire  [63:0] d;
-    output reg  [63:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 64'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_dist_tree__cd__0
-
-
-module fcc_dist_tree__cd__1(d,q,clock);
+module fcc_dist_tree__cd__0_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [63:0] d;
@@ -2425,29 +2406,10 @@ module fcc_dist_tree__cd__1(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_dist_tree__cd__1
+endmodule // fcc_dist_tree__cd__0_k7_668cf05b
 
 
-module fcc_dist_tree__cd__2(d,q,clock);
-
-    // Module arguments
-    input wire  [63:0] d;
-    output reg  [63:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 64'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_dist_tree__cd__2
-
-
-module fcc_dist_tree__cd__3(d,q,clock);
+module fcc_dist_tree__cd__1_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [63:0] d;
@@ -2463,29 +2425,10 @@ module fcc_dist_tree__cd__3(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_dist_tree__cd__3
+endmodule // fcc_dist_tree__cd__1_k7_668cf05b
 
 
-module fcc_dist_tree__cd__4(d,q,clock);
-
-    // Module arguments
-    input wire  [63:0] d;
-    output reg  [63:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 64'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_dist_tree__cd__4
-
-
-module fcc_dist_tree__cd__5(d,q,clock);
+module fcc_dist_tree__cd__2_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [63:0] d;
@@ -2501,10 +2444,10 @@ module fcc_dist_tree__cd__5(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_dist_tree__cd__5
+endmodule // fcc_dist_tree__cd__2_k7_668cf05b
 
 
-module fcc_dist_tree__cd__6(d,q,clock);
+module fcc_dist_tree__cd__3_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [63:0] d;
@@ -2520,10 +2463,67 @@ module fcc_dist_tree__cd__6(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_dist_tree__cd__6
+endmodule // fcc_dist_tree__cd__3_k7_668cf05b
 
 
-module fcc_dist_tree__units__0(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
+module fcc_dist_tree__cd__4_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_dist_tree__cd__4_k7_668cf05b
+
+
+module fcc_dist_tree__cd__5_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_dist_tree__cd__5_k7_668cf05b
+
+
+module fcc_dist_tree__cd__6_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_dist_tree__cd__6_k7_668cf05b
+
+
+module fcc_dist_tree__units__0_k7_668cf05b(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -2550,7 +2550,7 @@ module fcc_dist_tree__units__0(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
     wire  sq$hit;
 
     // Sub module instances
-    fcc_dist_tree__units__0__sq sq(
+    fcc_dist_tree__units__0__sq_k7_668cf05b sq(
         .clk(sq$clk),
         .ax(sq$ax),
         .ay(sq$ay),
@@ -2577,10 +2577,10 @@ module fcc_dist_tree__units__0(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
         hit = sq$hit;
     end
 
-endmodule // fcc_dist_tree__units__0
+endmodule // fcc_dist_tree__units__0_k7_668cf05b
 
 
-module fcc_dist_tree__units__0__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
+module fcc_dist_tree__units__0__sq_k7_668cf05b(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -2626,10 +2626,10 @@ module fcc_dist_tree__units__0__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
         en_d <= {en_d[4:0], en_in};
         hit <= en_d[5] & pz[35];
     end
-endmodule // fcc_dist_tree__units__0__sq
+endmodule // fcc_dist_tree__units__0__sq_k7_668cf05b
 
 
-module fcc_dist_tree__units__1(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
+module fcc_dist_tree__units__1_k7_668cf05b(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -2656,7 +2656,7 @@ module fcc_dist_tree__units__1(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
     wire  sq$hit;
 
     // Sub module instances
-    fcc_dist_tree__units__1__sq sq(
+    fcc_dist_tree__units__1__sq_k7_668cf05b sq(
         .clk(sq$clk),
         .ax(sq$ax),
         .ay(sq$ay),
@@ -2683,10 +2683,10 @@ module fcc_dist_tree__units__1(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
         hit = sq$hit;
     end
 
-endmodule // fcc_dist_tree__units__1
+endmodule // fcc_dist_tree__units__1_k7_668cf05b
 
 
-module fcc_dist_tree__units__1__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
+module fcc_dist_tree__units__1__sq_k7_668cf05b(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -2732,10 +2732,10 @@ module fcc_dist_tree__units__1__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
         en_d <= {en_d[4:0], en_in};
         hit <= en_d[5] & pz[35];
     end
-endmodule // fcc_dist_tree__units__1__sq
+endmodule // fcc_dist_tree__units__1__sq_k7_668cf05b
 
 
-module fcc_dist_tree__units__10(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
+module fcc_dist_tree__units__10_k7_668cf05b(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -2762,7 +2762,7 @@ module fcc_dist_tree__units__10(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
     wire  sq$hit;
 
     // Sub module instances
-    fcc_dist_tree__units__10__sq sq(
+    fcc_dist_tree__units__10__sq_k7_668cf05b sq(
         .clk(sq$clk),
         .ax(sq$ax),
         .ay(sq$ay),
@@ -2789,10 +2789,10 @@ module fcc_dist_tree__units__10(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
         hit = sq$hit;
     end
 
-endmodule // fcc_dist_tree__units__10
+endmodule // fcc_dist_tree__units__10_k7_668cf05b
 
 
-module fcc_dist_tree__units__10__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
+module fcc_dist_tree__units__10__sq_k7_668cf05b(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -2838,10 +2838,10 @@ module fcc_dist_tree__units__10__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
         en_d <= {en_d[4:0], en_in};
         hit <= en_d[5] & pz[35];
     end
-endmodule // fcc_dist_tree__units__10__sq
+endmodule // fcc_dist_tree__units__10__sq_k7_668cf05b
 
 
-module fcc_dist_tree__units__11(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
+module fcc_dist_tree__units__11_k7_668cf05b(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -2868,7 +2868,7 @@ module fcc_dist_tree__units__11(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
     wire  sq$hit;
 
     // Sub module instances
-    fcc_dist_tree__units__11__sq sq(
+    fcc_dist_tree__units__11__sq_k7_668cf05b sq(
         .clk(sq$clk),
         .ax(sq$ax),
         .ay(sq$ay),
@@ -2895,10 +2895,10 @@ module fcc_dist_tree__units__11(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
         hit = sq$hit;
     end
 
-endmodule // fcc_dist_tree__units__11
+endmodule // fcc_dist_tree__units__11_k7_668cf05b
 
 
-module fcc_dist_tree__units__11__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
+module fcc_dist_tree__units__11__sq_k7_668cf05b(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -2944,10 +2944,10 @@ module fcc_dist_tree__units__11__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
         en_d <= {en_d[4:0], en_in};
         hit <= en_d[5] & pz[35];
     end
-endmodule // fcc_dist_tree__units__11__sq
+endmodule // fcc_dist_tree__units__11__sq_k7_668cf05b
 
 
-module fcc_dist_tree__units__12(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
+module fcc_dist_tree__units__12_k7_668cf05b(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -2974,7 +2974,7 @@ module fcc_dist_tree__units__12(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
     wire  sq$hit;
 
     // Sub module instances
-    fcc_dist_tree__units__12__sq sq(
+    fcc_dist_tree__units__12__sq_k7_668cf05b sq(
         .clk(sq$clk),
         .ax(sq$ax),
         .ay(sq$ay),
@@ -3001,10 +3001,10 @@ module fcc_dist_tree__units__12(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
         hit = sq$hit;
     end
 
-endmodule // fcc_dist_tree__units__12
+endmodule // fcc_dist_tree__units__12_k7_668cf05b
 
 
-module fcc_dist_tree__units__12__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
+module fcc_dist_tree__units__12__sq_k7_668cf05b(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -3050,10 +3050,10 @@ module fcc_dist_tree__units__12__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
         en_d <= {en_d[4:0], en_in};
         hit <= en_d[5] & pz[35];
     end
-endmodule // fcc_dist_tree__units__12__sq
+endmodule // fcc_dist_tree__units__12__sq_k7_668cf05b
 
 
-module fcc_dist_tree__units__13(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
+module fcc_dist_tree__units__13_k7_668cf05b(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -3080,7 +3080,7 @@ module fcc_dist_tree__units__13(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
     wire  sq$hit;
 
     // Sub module instances
-    fcc_dist_tree__units__13__sq sq(
+    fcc_dist_tree__units__13__sq_k7_668cf05b sq(
         .clk(sq$clk),
         .ax(sq$ax),
         .ay(sq$ay),
@@ -3107,10 +3107,10 @@ module fcc_dist_tree__units__13(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
         hit = sq$hit;
     end
 
-endmodule // fcc_dist_tree__units__13
+endmodule // fcc_dist_tree__units__13_k7_668cf05b
 
 
-module fcc_dist_tree__units__13__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
+module fcc_dist_tree__units__13__sq_k7_668cf05b(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -3156,10 +3156,10 @@ module fcc_dist_tree__units__13__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
         en_d <= {en_d[4:0], en_in};
         hit <= en_d[5] & pz[35];
     end
-endmodule // fcc_dist_tree__units__13__sq
+endmodule // fcc_dist_tree__units__13__sq_k7_668cf05b
 
 
-module fcc_dist_tree__units__14(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
+module fcc_dist_tree__units__14_k7_668cf05b(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -3186,7 +3186,7 @@ module fcc_dist_tree__units__14(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
     wire  sq$hit;
 
     // Sub module instances
-    fcc_dist_tree__units__14__sq sq(
+    fcc_dist_tree__units__14__sq_k7_668cf05b sq(
         .clk(sq$clk),
         .ax(sq$ax),
         .ay(sq$ay),
@@ -3213,10 +3213,10 @@ module fcc_dist_tree__units__14(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
         hit = sq$hit;
     end
 
-endmodule // fcc_dist_tree__units__14
+endmodule // fcc_dist_tree__units__14_k7_668cf05b
 
 
-module fcc_dist_tree__units__14__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
+module fcc_dist_tree__units__14__sq_k7_668cf05b(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -3262,10 +3262,10 @@ module fcc_dist_tree__units__14__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
         en_d <= {en_d[4:0], en_in};
         hit <= en_d[5] & pz[35];
     end
-endmodule // fcc_dist_tree__units__14__sq
+endmodule // fcc_dist_tree__units__14__sq_k7_668cf05b
 
 
-module fcc_dist_tree__units__15(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
+module fcc_dist_tree__units__15_k7_668cf05b(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -3292,7 +3292,7 @@ module fcc_dist_tree__units__15(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
     wire  sq$hit;
 
     // Sub module instances
-    fcc_dist_tree__units__15__sq sq(
+    fcc_dist_tree__units__15__sq_k7_668cf05b sq(
         .clk(sq$clk),
         .ax(sq$ax),
         .ay(sq$ay),
@@ -3319,10 +3319,10 @@ module fcc_dist_tree__units__15(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
         hit = sq$hit;
     end
 
-endmodule // fcc_dist_tree__units__15
+endmodule // fcc_dist_tree__units__15_k7_668cf05b
 
 
-module fcc_dist_tree__units__15__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
+module fcc_dist_tree__units__15__sq_k7_668cf05b(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -3368,10 +3368,10 @@ module fcc_dist_tree__units__15__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
         en_d <= {en_d[4:0], en_in};
         hit <= en_d[5] & pz[35];
     end
-endmodule // fcc_dist_tree__units__15__sq
+endmodule // fcc_dist_tree__units__15__sq_k7_668cf05b
 
 
-module fcc_dist_tree__units__16(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
+module fcc_dist_tree__units__16_k7_668cf05b(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -3398,7 +3398,7 @@ module fcc_dist_tree__units__16(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
     wire  sq$hit;
 
     // Sub module instances
-    fcc_dist_tree__units__16__sq sq(
+    fcc_dist_tree__units__16__sq_k7_668cf05b sq(
         .clk(sq$clk),
         .ax(sq$ax),
         .ay(sq$ay),
@@ -3425,10 +3425,10 @@ module fcc_dist_tree__units__16(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
         hit = sq$hit;
     end
 
-endmodule // fcc_dist_tree__units__16
+endmodule // fcc_dist_tree__units__16_k7_668cf05b
 
 
-module fcc_dist_tree__units__16__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
+module fcc_dist_tree__units__16__sq_k7_668cf05b(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -3474,10 +3474,10 @@ module fcc_dist_tree__units__16__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
         en_d <= {en_d[4:0], en_in};
         hit <= en_d[5] & pz[35];
     end
-endmodule // fcc_dist_tree__units__16__sq
+endmodule // fcc_dist_tree__units__16__sq_k7_668cf05b
 
 
-module fcc_dist_tree__units__17(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
+module fcc_dist_tree__units__17_k7_668cf05b(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -3504,7 +3504,7 @@ module fcc_dist_tree__units__17(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
     wire  sq$hit;
 
     // Sub module instances
-    fcc_dist_tree__units__17__sq sq(
+    fcc_dist_tree__units__17__sq_k7_668cf05b sq(
         .clk(sq$clk),
         .ax(sq$ax),
         .ay(sq$ay),
@@ -3531,10 +3531,10 @@ module fcc_dist_tree__units__17(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
         hit = sq$hit;
     end
 
-endmodule // fcc_dist_tree__units__17
+endmodule // fcc_dist_tree__units__17_k7_668cf05b
 
 
-module fcc_dist_tree__units__17__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
+module fcc_dist_tree__units__17__sq_k7_668cf05b(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -3580,10 +3580,10 @@ module fcc_dist_tree__units__17__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
         en_d <= {en_d[4:0], en_in};
         hit <= en_d[5] & pz[35];
     end
-endmodule // fcc_dist_tree__units__17__sq
+endmodule // fcc_dist_tree__units__17__sq_k7_668cf05b
 
 
-module fcc_dist_tree__units__18(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
+module fcc_dist_tree__units__18_k7_668cf05b(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -3610,7 +3610,7 @@ module fcc_dist_tree__units__18(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
     wire  sq$hit;
 
     // Sub module instances
-    fcc_dist_tree__units__18__sq sq(
+    fcc_dist_tree__units__18__sq_k7_668cf05b sq(
         .clk(sq$clk),
         .ax(sq$ax),
         .ay(sq$ay),
@@ -3637,10 +3637,10 @@ module fcc_dist_tree__units__18(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
         hit = sq$hit;
     end
 
-endmodule // fcc_dist_tree__units__18
+endmodule // fcc_dist_tree__units__18_k7_668cf05b
 
 
-module fcc_dist_tree__units__18__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
+module fcc_dist_tree__units__18__sq_k7_668cf05b(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -3686,10 +3686,10 @@ module fcc_dist_tree__units__18__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
         en_d <= {en_d[4:0], en_in};
         hit <= en_d[5] & pz[35];
     end
-endmodule // fcc_dist_tree__units__18__sq
+endmodule // fcc_dist_tree__units__18__sq_k7_668cf05b
 
 
-module fcc_dist_tree__units__19(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
+module fcc_dist_tree__units__19_k7_668cf05b(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -3716,7 +3716,7 @@ module fcc_dist_tree__units__19(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
     wire  sq$hit;
 
     // Sub module instances
-    fcc_dist_tree__units__19__sq sq(
+    fcc_dist_tree__units__19__sq_k7_668cf05b sq(
         .clk(sq$clk),
         .ax(sq$ax),
         .ay(sq$ay),
@@ -3743,10 +3743,10 @@ module fcc_dist_tree__units__19(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
         hit = sq$hit;
     end
 
-endmodule // fcc_dist_tree__units__19
+endmodule // fcc_dist_tree__units__19_k7_668cf05b
 
 
-module fcc_dist_tree__units__19__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
+module fcc_dist_tree__units__19__sq_k7_668cf05b(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -3792,10 +3792,10 @@ module fcc_dist_tree__units__19__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
         en_d <= {en_d[4:0], en_in};
         hit <= en_d[5] & pz[35];
     end
-endmodule // fcc_dist_tree__units__19__sq
+endmodule // fcc_dist_tree__units__19__sq_k7_668cf05b
 
 
-module fcc_dist_tree__units__2(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
+module fcc_dist_tree__units__2_k7_668cf05b(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -3822,7 +3822,7 @@ module fcc_dist_tree__units__2(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
     wire  sq$hit;
 
     // Sub module instances
-    fcc_dist_tree__units__2__sq sq(
+    fcc_dist_tree__units__2__sq_k7_668cf05b sq(
         .clk(sq$clk),
         .ax(sq$ax),
         .ay(sq$ay),
@@ -3849,10 +3849,10 @@ module fcc_dist_tree__units__2(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
         hit = sq$hit;
     end
 
-endmodule // fcc_dist_tree__units__2
+endmodule // fcc_dist_tree__units__2_k7_668cf05b
 
 
-module fcc_dist_tree__units__2__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
+module fcc_dist_tree__units__2__sq_k7_668cf05b(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -3898,10 +3898,10 @@ module fcc_dist_tree__units__2__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
         en_d <= {en_d[4:0], en_in};
         hit <= en_d[5] & pz[35];
     end
-endmodule // fcc_dist_tree__units__2__sq
+endmodule // fcc_dist_tree__units__2__sq_k7_668cf05b
 
 
-module fcc_dist_tree__units__20(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
+module fcc_dist_tree__units__20_k7_668cf05b(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -3928,7 +3928,7 @@ module fcc_dist_tree__units__20(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
     wire  sq$hit;
 
     // Sub module instances
-    fcc_dist_tree__units__20__sq sq(
+    fcc_dist_tree__units__20__sq_k7_668cf05b sq(
         .clk(sq$clk),
         .ax(sq$ax),
         .ay(sq$ay),
@@ -3955,10 +3955,10 @@ module fcc_dist_tree__units__20(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
         hit = sq$hit;
     end
 
-endmodule // fcc_dist_tree__units__20
+endmodule // fcc_dist_tree__units__20_k7_668cf05b
 
 
-module fcc_dist_tree__units__20__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
+module fcc_dist_tree__units__20__sq_k7_668cf05b(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -4004,10 +4004,10 @@ module fcc_dist_tree__units__20__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
         en_d <= {en_d[4:0], en_in};
         hit <= en_d[5] & pz[35];
     end
-endmodule // fcc_dist_tree__units__20__sq
+endmodule // fcc_dist_tree__units__20__sq_k7_668cf05b
 
 
-module fcc_dist_tree__units__3(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
+module fcc_dist_tree__units__3_k7_668cf05b(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -4034,7 +4034,7 @@ module fcc_dist_tree__units__3(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
     wire  sq$hit;
 
     // Sub module instances
-    fcc_dist_tree__units__3__sq sq(
+    fcc_dist_tree__units__3__sq_k7_668cf05b sq(
         .clk(sq$clk),
         .ax(sq$ax),
         .ay(sq$ay),
@@ -4061,10 +4061,10 @@ module fcc_dist_tree__units__3(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
         hit = sq$hit;
     end
 
-endmodule // fcc_dist_tree__units__3
+endmodule // fcc_dist_tree__units__3_k7_668cf05b
 
 
-module fcc_dist_tree__units__3__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
+module fcc_dist_tree__units__3__sq_k7_668cf05b(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -4110,10 +4110,10 @@ module fcc_dist_tree__units__3__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
         en_d <= {en_d[4:0], en_in};
         hit <= en_d[5] & pz[35];
     end
-endmodule // fcc_dist_tree__units__3__sq
+endmodule // fcc_dist_tree__units__3__sq_k7_668cf05b
 
 
-module fcc_dist_tree__units__4(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
+module fcc_dist_tree__units__4_k7_668cf05b(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -4140,7 +4140,7 @@ module fcc_dist_tree__units__4(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
     wire  sq$hit;
 
     // Sub module instances
-    fcc_dist_tree__units__4__sq sq(
+    fcc_dist_tree__units__4__sq_k7_668cf05b sq(
         .clk(sq$clk),
         .ax(sq$ax),
         .ay(sq$ay),
@@ -4167,10 +4167,10 @@ module fcc_dist_tree__units__4(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
         hit = sq$hit;
     end
 
-endmodule // fcc_dist_tree__units__4
+endmodule // fcc_dist_tree__units__4_k7_668cf05b
 
 
-module fcc_dist_tree__units__4__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
+module fcc_dist_tree__units__4__sq_k7_668cf05b(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -4216,10 +4216,10 @@ module fcc_dist_tree__units__4__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
         en_d <= {en_d[4:0], en_in};
         hit <= en_d[5] & pz[35];
     end
-endmodule // fcc_dist_tree__units__4__sq
+endmodule // fcc_dist_tree__units__4__sq_k7_668cf05b
 
 
-module fcc_dist_tree__units__5(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
+module fcc_dist_tree__units__5_k7_668cf05b(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -4246,7 +4246,7 @@ module fcc_dist_tree__units__5(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
     wire  sq$hit;
 
     // Sub module instances
-    fcc_dist_tree__units__5__sq sq(
+    fcc_dist_tree__units__5__sq_k7_668cf05b sq(
         .clk(sq$clk),
         .ax(sq$ax),
         .ay(sq$ay),
@@ -4273,10 +4273,10 @@ module fcc_dist_tree__units__5(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
         hit = sq$hit;
     end
 
-endmodule // fcc_dist_tree__units__5
+endmodule // fcc_dist_tree__units__5_k7_668cf05b
 
 
-module fcc_dist_tree__units__5__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
+module fcc_dist_tree__units__5__sq_k7_668cf05b(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -4322,10 +4322,10 @@ module fcc_dist_tree__units__5__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
         en_d <= {en_d[4:0], en_in};
         hit <= en_d[5] & pz[35];
     end
-endmodule // fcc_dist_tree__units__5__sq
+endmodule // fcc_dist_tree__units__5__sq_k7_668cf05b
 
 
-module fcc_dist_tree__units__6(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
+module fcc_dist_tree__units__6_k7_668cf05b(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -4352,7 +4352,7 @@ module fcc_dist_tree__units__6(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
     wire  sq$hit;
 
     // Sub module instances
-    fcc_dist_tree__units__6__sq sq(
+    fcc_dist_tree__units__6__sq_k7_668cf05b sq(
         .clk(sq$clk),
         .ax(sq$ax),
         .ay(sq$ay),
@@ -4379,10 +4379,10 @@ module fcc_dist_tree__units__6(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
         hit = sq$hit;
     end
 
-endmodule // fcc_dist_tree__units__6
+endmodule // fcc_dist_tree__units__6_k7_668cf05b
 
 
-module fcc_dist_tree__units__6__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
+module fcc_dist_tree__units__6__sq_k7_668cf05b(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -4428,10 +4428,10 @@ module fcc_dist_tree__units__6__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
         en_d <= {en_d[4:0], en_in};
         hit <= en_d[5] & pz[35];
     end
-endmodule // fcc_dist_tree__units__6__sq
+endmodule // fcc_dist_tree__units__6__sq_k7_668cf05b
 
 
-module fcc_dist_tree__units__7(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
+module fcc_dist_tree__units__7_k7_668cf05b(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -4458,7 +4458,7 @@ module fcc_dist_tree__units__7(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
     wire  sq$hit;
 
     // Sub module instances
-    fcc_dist_tree__units__7__sq sq(
+    fcc_dist_tree__units__7__sq_k7_668cf05b sq(
         .clk(sq$clk),
         .ax(sq$ax),
         .ay(sq$ay),
@@ -4485,10 +4485,10 @@ module fcc_dist_tree__units__7(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
         hit = sq$hit;
     end
 
-endmodule // fcc_dist_tree__units__7
+endmodule // fcc_dist_tree__units__7_k7_668cf05b
 
 
-module fcc_dist_tree__units__7__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
+module fcc_dist_tree__units__7__sq_k7_668cf05b(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -4534,10 +4534,10 @@ module fcc_dist_tree__units__7__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
         en_d <= {en_d[4:0], en_in};
         hit <= en_d[5] & pz[35];
     end
-endmodule // fcc_dist_tree__units__7__sq
+endmodule // fcc_dist_tree__units__7__sq_k7_668cf05b
 
 
-module fcc_dist_tree__units__8(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
+module fcc_dist_tree__units__8_k7_668cf05b(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -4564,7 +4564,7 @@ module fcc_dist_tree__units__8(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
     wire  sq$hit;
 
     // Sub module instances
-    fcc_dist_tree__units__8__sq sq(
+    fcc_dist_tree__units__8__sq_k7_668cf05b sq(
         .clk(sq$clk),
         .ax(sq$ax),
         .ay(sq$ay),
@@ -4591,10 +4591,10 @@ module fcc_dist_tree__units__8(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
         hit = sq$hit;
     end
 
-endmodule // fcc_dist_tree__units__8
+endmodule // fcc_dist_tree__units__8_k7_668cf05b
 
 
-module fcc_dist_tree__units__8__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
+module fcc_dist_tree__units__8__sq_k7_668cf05b(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -4640,10 +4640,10 @@ module fcc_dist_tree__units__8__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
         en_d <= {en_d[4:0], en_in};
         hit <= en_d[5] & pz[35];
     end
-endmodule // fcc_dist_tree__units__8__sq
+endmodule // fcc_dist_tree__units__8__sq_k7_668cf05b
 
 
-module fcc_dist_tree__units__9(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
+module fcc_dist_tree__units__9_k7_668cf05b(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
 
     // Module arguments
     input wire  clk;
@@ -4670,7 +4670,7 @@ module fcc_dist_tree__units__9(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
     wire  sq$hit;
 
     // Sub module instances
-    fcc_dist_tree__units__9__sq sq(
+    fcc_dist_tree__units__9__sq_k7_668cf05b sq(
         .clk(sq$clk),
         .ax(sq$ax),
         .ay(sq$ay),
@@ -4697,10 +4697,10 @@ module fcc_dist_tree__units__9(clk,cx,cy,cz,nok,nx,ny,nz,th_c,hit);
         hit = sq$hit;
     end
 
-endmodule // fcc_dist_tree__units__9
+endmodule // fcc_dist_tree__units__9_k7_668cf05b
 
 
-module fcc_dist_tree__units__9__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
+module fcc_dist_tree__units__9__sq_k7_668cf05b(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -4746,10 +4746,10 @@ module fcc_dist_tree__units__9__sq(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
         en_d <= {en_d[4:0], en_in};
         hit <= en_d[5] & pz[35];
     end
-endmodule // fcc_dist_tree__units__9__sq
+endmodule // fcc_dist_tree__units__9__sq_k7_668cf05b
 
 
-module fcc_top__err(d,q,clock);
+module fcc_top__err_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -4765,10 +4765,10 @@ module fcc_top__err(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_top__err
+endmodule // fcc_top__err_k7_668cf05b
 
 
-module fcc_top__first(d,q,clock);
+module fcc_top__first_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -4784,10 +4784,10 @@ module fcc_top__first(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_top__first
+endmodule // fcc_top__first_k7_668cf05b
 
 
-module fcc_top__fsm(d,q,clock);
+module fcc_top__fsm_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [1:0] d;
@@ -4803,10 +4803,10 @@ module fcc_top__fsm(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_top__fsm
+endmodule // fcc_top__fsm_k7_668cf05b
 
 
-module fcc_top__in_done(d,q,clock);
+module fcc_top__in_done_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -4822,10 +4822,10 @@ module fcc_top__in_done(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_top__in_done
+endmodule // fcc_top__in_done_k7_668cf05b
 
 
-module fcc_intra(clk,rst,pix,last_col,th_h_c,out,provisional,overflow,unlabelled);
+module fcc_intra_k7_668cf05b(clk,rst,pix,last_col,th_h_c,out,provisional,overflow,unlabelled);
 
     // Module arguments
     input wire  clk;
@@ -5035,42 +5035,42 @@ module fcc_intra(clk,rst,pix,last_col,th_h_c,out,provisional,overflow,unlabelled
     reg  lok;
 
     // Sub module instances
-    fcc_intra__prev_x prev_x(
+    fcc_intra__prev_x_k7_668cf05b prev_x(
         .d(prev_x$d),
         .q(prev_x$q),
         .clock(prev_x$clock)
     );
-    fcc_intra__prev_y prev_y(
+    fcc_intra__prev_y_k7_668cf05b prev_y(
         .d(prev_y$d),
         .q(prev_y$q),
         .clock(prev_y$clock)
     );
-    fcc_intra__prev_z prev_z(
+    fcc_intra__prev_z_k7_668cf05b prev_z(
         .d(prev_z$d),
         .q(prev_z$q),
         .clock(prev_z$clock)
     );
-    fcc_intra__has_prev has_prev(
+    fcc_intra__has_prev_k7_668cf05b has_prev(
         .d(has_prev$d),
         .q(has_prev$q),
         .clock(has_prev$clock)
     );
-    fcc_intra__first_x first_x(
+    fcc_intra__first_x_k7_668cf05b first_x(
         .d(first_x$d),
         .q(first_x$q),
         .clock(first_x$clock)
     );
-    fcc_intra__first_y first_y(
+    fcc_intra__first_y_k7_668cf05b first_y(
         .d(first_y$d),
         .q(first_y$q),
         .clock(first_y$clock)
     );
-    fcc_intra__first_z first_z(
+    fcc_intra__first_z_k7_668cf05b first_z(
         .d(first_z$d),
         .q(first_z$q),
         .clock(first_z$clock)
     );
-    fcc_intra__near near(
+    fcc_intra__near_k7_668cf05b near(
         .clk(near$clk),
         .ax(near$ax),
         .ay(near$ay),
@@ -5082,7 +5082,7 @@ module fcc_intra(clk,rst,pix,last_col,th_h_c,out,provisional,overflow,unlabelled
         .c(near$c),
         .hit(near$hit)
     );
-    fcc_intra__ring ring(
+    fcc_intra__ring_k7_668cf05b ring(
         .clk(ring$clk),
         .ax(ring$ax),
         .ay(ring$ay),
@@ -5094,212 +5094,212 @@ module fcc_intra(clk,rst,pix,last_col,th_h_c,out,provisional,overflow,unlabelled
         .c(ring$c),
         .hit(ring$hit)
     );
-    fcc_intra__pd__0 pd$0(
+    fcc_intra__pd__0_k7_668cf05b pd$0(
         .d(pd$0$d),
         .q(pd$0$q),
         .clock(pd$0$clock)
     );
-    fcc_intra__pd__1 pd$1(
+    fcc_intra__pd__1_k7_668cf05b pd$1(
         .d(pd$1$d),
         .q(pd$1$q),
         .clock(pd$1$clock)
     );
-    fcc_intra__pd__2 pd$2(
+    fcc_intra__pd__2_k7_668cf05b pd$2(
         .d(pd$2$d),
         .q(pd$2$q),
         .clock(pd$2$clock)
     );
-    fcc_intra__pd__3 pd$3(
+    fcc_intra__pd__3_k7_668cf05b pd$3(
         .d(pd$3$d),
         .q(pd$3$q),
         .clock(pd$3$clock)
     );
-    fcc_intra__pd__4 pd$4(
+    fcc_intra__pd__4_k7_668cf05b pd$4(
         .d(pd$4$d),
         .q(pd$4$q),
         .clock(pd$4$clock)
     );
-    fcc_intra__pd__5 pd$5(
+    fcc_intra__pd__5_k7_668cf05b pd$5(
         .d(pd$5$d),
         .q(pd$5$q),
         .clock(pd$5$clock)
     );
-    fcc_intra__pd__6 pd$6(
+    fcc_intra__pd__6_k7_668cf05b pd$6(
         .d(pd$6$d),
         .q(pd$6$q),
         .clock(pd$6$clock)
     );
-    fcc_intra__fvd__0 fvd$0(
+    fcc_intra__fvd__0_k7_668cf05b fvd$0(
         .d(fvd$0$d),
         .q(fvd$0$q),
         .clock(fvd$0$clock)
     );
-    fcc_intra__fvd__1 fvd$1(
+    fcc_intra__fvd__1_k7_668cf05b fvd$1(
         .d(fvd$1$d),
         .q(fvd$1$q),
         .clock(fvd$1$clock)
     );
-    fcc_intra__fvd__2 fvd$2(
+    fcc_intra__fvd__2_k7_668cf05b fvd$2(
         .d(fvd$2$d),
         .q(fvd$2$q),
         .clock(fvd$2$clock)
     );
-    fcc_intra__fvd__3 fvd$3(
+    fcc_intra__fvd__3_k7_668cf05b fvd$3(
         .d(fvd$3$d),
         .q(fvd$3$q),
         .clock(fvd$3$clock)
     );
-    fcc_intra__fvd__4 fvd$4(
+    fcc_intra__fvd__4_k7_668cf05b fvd$4(
         .d(fvd$4$d),
         .q(fvd$4$q),
         .clock(fvd$4$clock)
     );
-    fcc_intra__fvd__5 fvd$5(
+    fcc_intra__fvd__5_k7_668cf05b fvd$5(
         .d(fvd$5$d),
         .q(fvd$5$q),
         .clock(fvd$5$clock)
     );
-    fcc_intra__fvd__6 fvd$6(
+    fcc_intra__fvd__6_k7_668cf05b fvd$6(
         .d(fvd$6$d),
         .q(fvd$6$q),
         .clock(fvd$6$clock)
     );
-    fcc_intra__raw raw(
+    fcc_intra__raw_k7_668cf05b raw(
         .d(raw$d),
         .q(raw$q),
         .clock(raw$clock)
     );
-    fcc_intra__cur cur(
+    fcc_intra__cur_k7_668cf05b cur(
         .d(cur$d),
         .q(cur$q),
         .clock(cur$clock)
     );
-    fcc_intra__fl fl(
+    fcc_intra__fl_k7_668cf05b fl(
         .d(fl$d),
         .q(fl$q),
         .clock(fl$clock)
     );
-    fcc_intra__any any(
+    fcc_intra__any_k7_668cf05b any(
         .d(any$d),
         .q(any$q),
         .clock(any$clock)
     );
-    fcc_intra__p8 p8(
+    fcc_intra__p8_k7_668cf05b p8(
         .d(p8$d),
         .q(p8$q),
         .clock(p8$clock)
     );
-    fcc_intra__cont8 cont8(
+    fcc_intra__cont8_k7_668cf05b cont8(
         .d(cont8$d),
         .q(cont8$q),
         .clock(cont8$clock)
     );
-    fcc_intra__lab8 lab8(
+    fcc_intra__lab8_k7_668cf05b lab8(
         .d(lab8$d),
         .q(lab8$q),
         .clock(lab8$clock)
     );
-    fcc_intra__fl8 fl8(
+    fcc_intra__fl8_k7_668cf05b fl8(
         .d(fl8$d),
         .q(fl8$q),
         .clock(fl8$clock)
     );
-    fcc_intra__cur8 cur8(
+    fcc_intra__cur8_k7_668cf05b cur8(
         .d(cur8$d),
         .q(cur8$q),
         .clock(cur8$clock)
     );
-    fcc_intra__any8 any8(
+    fcc_intra__any8_k7_668cf05b any8(
         .d(any8$d),
         .q(any8$q),
         .clock(any8$clock)
     );
-    fcc_intra__ringle8 ringle8(
+    fcc_intra__ringle8_k7_668cf05b ringle8(
         .d(ringle8$d),
         .q(ringle8$q),
         .clock(ringle8$clock)
     );
-    fcc_intra__p9 p9(
+    fcc_intra__p9_k7_668cf05b p9(
         .d(p9$d),
         .q(p9$q),
         .clock(p9$clock)
     );
-    fcc_intra__cont9 cont9(
+    fcc_intra__cont9_k7_668cf05b cont9(
         .d(cont9$d),
         .q(cont9$q),
         .clock(cont9$clock)
     );
-    fcc_intra__lab9 lab9(
+    fcc_intra__lab9_k7_668cf05b lab9(
         .d(lab9$d),
         .q(lab9$q),
         .clock(lab9$clock)
     );
-    fcc_intra__labok9 labok9(
+    fcc_intra__labok9_k7_668cf05b labok9(
         .d(labok9$d),
         .q(labok9$q),
         .clock(labok9$clock)
     );
-    fcc_intra__ring9 ring9(
+    fcc_intra__ring9_k7_668cf05b ring9(
         .d(ring9$d),
         .q(ring9$q),
         .clock(ring9$clock)
     );
-    fcc_intra__flok9 flok9(
+    fcc_intra__flok9_k7_668cf05b flok9(
         .d(flok9$d),
         .q(flok9$q),
         .clock(flok9$clock)
     );
-    fcc_intra__curok9 curok9(
+    fcc_intra__curok9_k7_668cf05b curok9(
         .d(curok9$d),
         .q(curok9$q),
         .clock(curok9$clock)
     );
-    fcc_intra__ne9 ne9(
+    fcc_intra__ne9_k7_668cf05b ne9(
         .d(ne9$d),
         .q(ne9$q),
         .clock(ne9$clock)
     );
-    fcc_intra__fl9 fl9(
+    fcc_intra__fl9_k7_668cf05b fl9(
         .d(fl9$d),
         .q(fl9$q),
         .clock(fl9$clock)
     );
-    fcc_intra__cur9 cur9(
+    fcc_intra__cur9_k7_668cf05b cur9(
         .d(cur9$d),
         .q(cur9$q),
         .clock(cur9$clock)
     );
-    fcc_intra__rdcol9 rdcol9(
+    fcc_intra__rdcol9_k7_668cf05b rdcol9(
         .d(rdcol9$d),
         .q(rdcol9$q),
         .clock(rdcol9$clock)
     );
-    fcc_intra__wrap_col wrap_col(
+    fcc_intra__wrap_col_k7_668cf05b wrap_col(
         .d(wrap_col$d),
         .q(wrap_col$q),
         .clock(wrap_col$clock)
     );
-    fcc_intra__out_q out_q(
+    fcc_intra__out_q_k7_668cf05b out_q(
         .d(out_q$d),
         .q(out_q$q),
         .clock(out_q$clock)
     );
-    fcc_intra__unl unl(
+    fcc_intra__unl_k7_668cf05b unl(
         .d(unl$d),
         .q(unl$q),
         .clock(unl$clock)
     );
-    fcc_intra__rm1 rm1(
+    fcc_intra__rm1_k7_668cf05b rm1(
         .d(rm1$d),
         .q(rm1$q),
         .clock(rm1$clock)
     );
-    fcc_intra__prov prov(
+    fcc_intra__prov_k7_668cf05b prov(
         .d(prov$d),
         .q(prov$q),
         .clock(prov$clock)
     );
-    fcc_intra__ovf ovf(
+    fcc_intra__ovf_k7_668cf05b ovf(
         .d(ovf$d),
         .q(ovf$q),
         .clock(ovf$clock)
@@ -5565,29 +5565,10 @@ module fcc_intra(clk,rst,pix,last_col,th_h_c,out,provisional,overflow,unlabelled
         unlabelled = unl$q;
     end
 
-endmodule // fcc_intra
+endmodule // fcc_intra_k7_668cf05b
 
 
-module fcc_intra__any(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__any
-
-
-module fcc_intra__any8(d,q,clock);
+module fcc_intra__any_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -5603,29 +5584,10 @@ module fcc_intra__any8(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_intra__any8
+endmodule // fcc_intra__any_k7_668cf05b
 
 
-module fcc_intra__cont8(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__cont8
-
-
-module fcc_intra__cont9(d,q,clock);
+module fcc_intra__any8_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -5641,10 +5603,48 @@ module fcc_intra__cont9(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_intra__cont9
+endmodule // fcc_intra__any8_k7_668cf05b
 
 
-module fcc_intra__cur(d,q,clock);
+module fcc_intra__cont8_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__cont8_k7_668cf05b
+
+
+module fcc_intra__cont9_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__cont9_k7_668cf05b
+
+
+module fcc_intra__cur_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [19:0] d;
@@ -5660,124 +5660,10 @@ module fcc_intra__cur(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_intra__cur
+endmodule // fcc_intra__cur_k7_668cf05b
 
 
-module fcc_intra__cur8(d,q,clock);
-
-    // Module arguments
-    input wire  [19:0] d;
-    output reg  [19:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 20'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__cur8
-
-
-module fcc_intra__cur9(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__cur9
-
-
-module fcc_intra__curok9(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__curok9
-
-
-module fcc_intra__first_x(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__first_x
-
-
-module fcc_intra__first_y(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__first_y
-
-
-module fcc_intra__first_z(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__first_z
-
-
-module fcc_intra__fl(d,q,clock);
+module fcc_intra__cur8_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [19:0] d;
@@ -5793,29 +5679,10 @@ module fcc_intra__fl(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_intra__fl
+endmodule // fcc_intra__cur8_k7_668cf05b
 
 
-module fcc_intra__fl8(d,q,clock);
-
-    // Module arguments
-    input wire  [19:0] d;
-    output reg  [19:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 20'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__fl8
-
-
-module fcc_intra__fl9(d,q,clock);
+module fcc_intra__cur9_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -5831,29 +5698,10 @@ module fcc_intra__fl9(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_intra__fl9
+endmodule // fcc_intra__cur9_k7_668cf05b
 
 
-module fcc_intra__flok9(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__flok9
-
-
-module fcc_intra__fvd__0(d,q,clock);
+module fcc_intra__curok9_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -5869,162 +5717,10 @@ module fcc_intra__fvd__0(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_intra__fvd__0
+endmodule // fcc_intra__curok9_k7_668cf05b
 
 
-module fcc_intra__fvd__1(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__fvd__1
-
-
-module fcc_intra__fvd__2(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__fvd__2
-
-
-module fcc_intra__fvd__3(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__fvd__3
-
-
-module fcc_intra__fvd__4(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__fvd__4
-
-
-module fcc_intra__fvd__5(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__fvd__5
-
-
-module fcc_intra__fvd__6(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__fvd__6
-
-
-module fcc_intra__has_prev(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__has_prev
-
-
-module fcc_intra__lab8(d,q,clock);
-
-    // Module arguments
-    input wire  [19:0] d;
-    output reg  [19:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 20'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__lab8
-
-
-module fcc_intra__lab9(d,q,clock);
+module fcc_intra__first_x_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -6040,10 +5736,105 @@ module fcc_intra__lab9(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_intra__lab9
+endmodule // fcc_intra__first_x_k7_668cf05b
 
 
-module fcc_intra__labok9(d,q,clock);
+module fcc_intra__first_y_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__first_y_k7_668cf05b
+
+
+module fcc_intra__first_z_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__first_z_k7_668cf05b
+
+
+module fcc_intra__fl_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [19:0] d;
+    output reg  [19:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 20'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__fl_k7_668cf05b
+
+
+module fcc_intra__fl8_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [19:0] d;
+    output reg  [19:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 20'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__fl8_k7_668cf05b
+
+
+module fcc_intra__fl9_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__fl9_k7_668cf05b
+
+
+module fcc_intra__flok9_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -6059,10 +5850,10 @@ module fcc_intra__labok9(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_intra__labok9
+endmodule // fcc_intra__flok9_k7_668cf05b
 
 
-module fcc_intra__ne9(d,q,clock);
+module fcc_intra__fvd__0_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -6078,10 +5869,219 @@ module fcc_intra__ne9(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_intra__ne9
+endmodule // fcc_intra__fvd__0_k7_668cf05b
 
 
-module fcc_intra__near(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
+module fcc_intra__fvd__1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__fvd__1_k7_668cf05b
+
+
+module fcc_intra__fvd__2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__fvd__2_k7_668cf05b
+
+
+module fcc_intra__fvd__3_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__fvd__3_k7_668cf05b
+
+
+module fcc_intra__fvd__4_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__fvd__4_k7_668cf05b
+
+
+module fcc_intra__fvd__5_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__fvd__5_k7_668cf05b
+
+
+module fcc_intra__fvd__6_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__fvd__6_k7_668cf05b
+
+
+module fcc_intra__has_prev_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__has_prev_k7_668cf05b
+
+
+module fcc_intra__lab8_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [19:0] d;
+    output reg  [19:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 20'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__lab8_k7_668cf05b
+
+
+module fcc_intra__lab9_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__lab9_k7_668cf05b
+
+
+module fcc_intra__labok9_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__labok9_k7_668cf05b
+
+
+module fcc_intra__ne9_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__ne9_k7_668cf05b
+
+
+module fcc_intra__near_k7_668cf05b(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -6127,10 +6127,10 @@ module fcc_intra__near(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
         en_d <= {en_d[4:0], en_in};
         hit <= en_d[5] & pz[35];
     end
-endmodule // fcc_intra__near
+endmodule // fcc_intra__near_k7_668cf05b
 
 
-module fcc_intra__out_q(d,q,clock);
+module fcc_intra__out_q_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [133:0] d;
@@ -6146,10 +6146,10 @@ module fcc_intra__out_q(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_intra__out_q
+endmodule // fcc_intra__out_q_k7_668cf05b
 
 
-module fcc_intra__ovf(d,q,clock);
+module fcc_intra__ovf_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -6165,29 +6165,10 @@ module fcc_intra__ovf(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_intra__ovf
+endmodule // fcc_intra__ovf_k7_668cf05b
 
 
-module fcc_intra__p8(d,q,clock);
-
-    // Module arguments
-    input wire  [73:0] d;
-    output reg  [73:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 74'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__p8
-
-
-module fcc_intra__p9(d,q,clock);
+module fcc_intra__p8_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [73:0] d;
@@ -6203,29 +6184,10 @@ module fcc_intra__p9(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_intra__p9
+endmodule // fcc_intra__p8_k7_668cf05b
 
 
-module fcc_intra__pd__0(d,q,clock);
-
-    // Module arguments
-    input wire  [73:0] d;
-    output reg  [73:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 74'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__pd__0
-
-
-module fcc_intra__pd__1(d,q,clock);
+module fcc_intra__p9_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [73:0] d;
@@ -6241,29 +6203,10 @@ module fcc_intra__pd__1(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_intra__pd__1
+endmodule // fcc_intra__p9_k7_668cf05b
 
 
-module fcc_intra__pd__2(d,q,clock);
-
-    // Module arguments
-    input wire  [73:0] d;
-    output reg  [73:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 74'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__pd__2
-
-
-module fcc_intra__pd__3(d,q,clock);
+module fcc_intra__pd__0_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [73:0] d;
@@ -6279,29 +6222,10 @@ module fcc_intra__pd__3(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_intra__pd__3
+endmodule // fcc_intra__pd__0_k7_668cf05b
 
 
-module fcc_intra__pd__4(d,q,clock);
-
-    // Module arguments
-    input wire  [73:0] d;
-    output reg  [73:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 74'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__pd__4
-
-
-module fcc_intra__pd__5(d,q,clock);
+module fcc_intra__pd__1_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [73:0] d;
@@ -6317,10 +6241,10 @@ module fcc_intra__pd__5(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_intra__pd__5
+endmodule // fcc_intra__pd__1_k7_668cf05b
 
 
-module fcc_intra__pd__6(d,q,clock);
+module fcc_intra__pd__2_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [73:0] d;
@@ -6336,10 +6260,86 @@ module fcc_intra__pd__6(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_intra__pd__6
+endmodule // fcc_intra__pd__2_k7_668cf05b
 
 
-module fcc_intra__prev_x(d,q,clock);
+module fcc_intra__pd__3_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [73:0] d;
+    output reg  [73:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 74'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__pd__3_k7_668cf05b
+
+
+module fcc_intra__pd__4_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [73:0] d;
+    output reg  [73:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 74'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__pd__4_k7_668cf05b
+
+
+module fcc_intra__pd__5_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [73:0] d;
+    output reg  [73:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 74'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__pd__5_k7_668cf05b
+
+
+module fcc_intra__pd__6_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [73:0] d;
+    output reg  [73:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 74'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__pd__6_k7_668cf05b
+
+
+module fcc_intra__prev_x_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -6355,29 +6355,10 @@ module fcc_intra__prev_x(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_intra__prev_x
+endmodule // fcc_intra__prev_x_k7_668cf05b
 
 
-module fcc_intra__prev_y(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__prev_y
-
-
-module fcc_intra__prev_z(d,q,clock);
+module fcc_intra__prev_y_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -6393,10 +6374,29 @@ module fcc_intra__prev_z(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_intra__prev_z
+endmodule // fcc_intra__prev_y_k7_668cf05b
 
 
-module fcc_intra__prov(d,q,clock);
+module fcc_intra__prev_z_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__prev_z_k7_668cf05b
+
+
+module fcc_intra__prov_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [16:0] d;
@@ -6412,10 +6412,10 @@ module fcc_intra__prov(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_intra__prov
+endmodule // fcc_intra__prov_k7_668cf05b
 
 
-module fcc_intra__raw(d,q,clock);
+module fcc_intra__raw_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [19:0] d;
@@ -6431,10 +6431,10 @@ module fcc_intra__raw(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_intra__raw
+endmodule // fcc_intra__raw_k7_668cf05b
 
 
-module fcc_intra__rdcol9(d,q,clock);
+module fcc_intra__rdcol9_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [11:0] d;
@@ -6450,10 +6450,10 @@ module fcc_intra__rdcol9(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_intra__rdcol9
+endmodule // fcc_intra__rdcol9_k7_668cf05b
 
 
-module fcc_intra__ring(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
+module fcc_intra__ring_k7_668cf05b(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
     input wire  clk;
@@ -6499,29 +6499,10 @@ module fcc_intra__ring(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
         en_d <= {en_d[4:0], en_in};
         hit <= en_d[5] & pz[35];
     end
-endmodule // fcc_intra__ring
+endmodule // fcc_intra__ring_k7_668cf05b
 
 
-module fcc_intra__ring9(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__ring9
-
-
-module fcc_intra__ringle8(d,q,clock);
+module fcc_intra__ring9_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -6537,10 +6518,29 @@ module fcc_intra__ringle8(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_intra__ringle8
+endmodule // fcc_intra__ring9_k7_668cf05b
 
 
-module fcc_intra__rm1(d,q,clock);
+module fcc_intra__ringle8_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__ringle8_k7_668cf05b
+
+
+module fcc_intra__rm1_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [19:0] d;
@@ -6556,10 +6556,10 @@ module fcc_intra__rm1(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_intra__rm1
+endmodule // fcc_intra__rm1_k7_668cf05b
 
 
-module fcc_intra__unl(d,q,clock);
+module fcc_intra__unl_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [19:0] d;
@@ -6575,10 +6575,10 @@ module fcc_intra__unl(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_intra__unl
+endmodule // fcc_intra__unl_k7_668cf05b
 
 
-module fcc_intra__wrap_col(d,q,clock);
+module fcc_intra__wrap_col_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [11:0] d;
@@ -6594,10 +6594,10 @@ module fcc_intra__wrap_col(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_intra__wrap_col
+endmodule // fcc_intra__wrap_col_k7_668cf05b
 
 
-module fcc_label_update(clk,rst,wr_valid,wr_state,wr_last,rb_start,fv,fval,gear_used,m_axis_tdata,m_axis_tkeep,m_axis_tvalid,m_axis_tlast,m_axis_tready,rb_done,gear_stalls);
+module fcc_label_update_k7_668cf05b(clk,rst,wr_valid,wr_state,wr_last,rb_start,fv,fval,gear_used,m_axis_tdata,m_axis_tkeep,m_axis_tvalid,m_axis_tlast,m_axis_tready,rb_done,gear_stalls);
 
     // Module arguments
     input wire  clk;
@@ -6617,17 +6617,65 @@ module fcc_label_update(clk,rst,wr_valid,wr_state,wr_last,rb_start,fv,fval,gear_
     output reg  rb_done;
     output reg  [23:0] gear_stalls;
 
+    // Constant declarations
+    localparam  slot_off$0 = 2'b0;
+    localparam  slot_off$1 = 2'b1;
+    localparam  slot_off$2 = 2'b10;
+    localparam  slot_off$3 = 2'b11;
+    localparam  slot_idx$0 = 3'b0;
+    localparam  slot_idx$1 = 3'b1;
+    localparam  slot_idx$2 = 3'b10;
+    localparam  slot_idx$3 = 3'b11;
+    localparam  keep_n$0 = 8'h0;
+    localparam  keep_n$1 = 8'h3;
+    localparam  keep_n$2 = 8'hf;
+    localparam  keep_n$3 = 8'h3f;
+    localparam  keep_n$4 = 8'hff;
+    localparam  n_of$0 = 3'b0;
+    localparam  n_of$1 = 3'b1;
+    localparam  n_of$2 = 3'b10;
+    localparam  n_of$3 = 3'b11;
+    localparam  n_of$4 = 3'b100;
+    localparam  g_of$0 = 4'h0;
+    localparam  g_of$1 = 4'h1;
+    localparam  g_of$2 = 4'h2;
+    localparam  g_of$3 = 4'h3;
+    localparam  g_of$4 = 4'h4;
+    localparam  g_of$5 = 4'h5;
+    localparam  g_of$6 = 4'h6;
+    localparam  g_of$7 = 4'h7;
+    localparam  g_of$8 = 4'h8;
+    localparam  g_of$9 = 4'h9;
+    localparam  k_of$0 = 3'b10;
+    localparam  k_of$1 = 3'b11;
+    localparam  k_of$2 = 3'b100;
+    localparam  k_of$3 = 3'b101;
+    localparam  lpb_log = 2'b10;
+    localparam  lpb_m1 = 2'b11;
+    localparam  one20 = 20'h1;
+    localparam  lpb20 = 20'h4;
+    localparam  lpb3 = 3'b100;
+    localparam  b2_0 = 2'b0;
+    localparam  b2_1 = 2'b1;
+    localparam  b2_2 = 2'b10;
+    localparam  b2_3 = 2'b11;
+    localparam  s_zero = 3'b0;
+    localparam  s_cur = 3'b1;
+    localparam  one3 = 3'b1;
+    localparam  two3 = 3'b10;
+    localparam  two4 = 4'h2;
+    localparam  zero3 = 3'b0;
+    localparam  four3 = 3'b100;
+    localparam  zero4 = 4'h0;
+    localparam  one4 = 4'h1;
+    localparam  zero16 = 16'h0;
+    localparam  zero17 = 17'b0;
+    localparam  one17 = 17'b1;
+    localparam  zero20 = 20'h0;
+    localparam  one24 = 24'h1;
+    localparam  zero24 = 24'h0;
+
     // Stub signals
-    reg  writer$clk;
-    reg  writer$rst;
-    reg  writer$pixel_valid;
-    reg  [1:0] writer$pixel_code;
-    reg  writer$pixel_last;
-    wire  writer$write_en;
-    wire  [16:0] writer$write_addr;
-    wire  [7:0] writer$write_data;
-    wire  [19:0] writer$beats_m1;
-    wire  [2:0] writer$last_beat_labels;
     reg  fb$clk;
     reg  fb$read_en;
     reg  [16:0] fb$read_addr;
@@ -6635,71 +6683,200 @@ module fcc_label_update(clk,rst,wr_valid,wr_state,wr_last,rb_start,fv,fval,gear_
     reg  fb$write_en;
     reg  [16:0] fb$write_addr;
     reg  [7:0] fb$write_data;
-    reg  pipeline$clk;
-    reg  pipeline$rst;
-    reg  pipeline$start;
-    reg  [19:0] pipeline$beats_m1;
-    reg  [2:0] pipeline$last_beat_labels;
-    reg  pipeline$beat_done;
-    wire  pipeline$read_en;
-    wire  [16:0] pipeline$read_addr;
-    reg  [7:0] pipeline$read_data;
-    wire  pipeline$beat_valid;
-    wire  [26:0] pipeline$beat;
-    reg  queue$clk;
-    reg  queue$rst;
-    reg  queue$clear;
-    reg  queue$in_valid;
-    reg  [26:0] queue$in_beat;
-    reg  queue$pop;
-    wire  queue$head_valid;
-    wire  [26:0] queue$head;
-    reg  gearbox$clk;
-    reg  gearbox$rst;
-    reg  gearbox$clear;
-    reg  gearbox$push_valid;
-    reg  [15:0] gearbox$push_label;
-    reg  gearbox$pop;
-    reg  gearbox$pop_two;
-    wire  [15:0] gearbox$front;
-    wire  [15:0] gearbox$second;
-    wire  [3:0] gearbox$used;
-    wire  gearbox$has_one;
-    wire  gearbox$has_two;
-    reg  assembly$clk;
-    reg  assembly$rst;
-    reg  assembly$clear;
-    reg  assembly$head_valid;
-    reg  [26:0] assembly$head;
-    wire  assembly$head_done;
-    reg  [15:0] assembly$gear_front;
-    reg  [15:0] assembly$gear_second;
-    reg  assembly$gear_has_one;
-    reg  assembly$gear_has_two;
-    wire  assembly$gear_pop;
-    wire  assembly$gear_pop_two;
-    wire  [63:0] assembly$m_axis_tdata;
-    wire  [7:0] assembly$m_axis_tkeep;
-    wire  assembly$m_axis_tvalid;
-    wire  assembly$m_axis_tlast;
-    reg  assembly$m_axis_tready;
-    wire  assembly$frame_sent;
-    wire  [23:0] assembly$gear_stalls;
+    reg  [1:0] ws0$d;
+    wire  [1:0] ws0$q;
+    reg  ws0$clock;
+    reg  [1:0] ws1$d;
+    wire  [1:0] ws1$q;
+    reg  ws1$clock;
+    reg  [1:0] ws2$d;
+    wire  [1:0] ws2$q;
+    reg  ws2$clock;
+    reg  [1:0] wsub$d;
+    wire  [1:0] wsub$q;
+    reg  wsub$clock;
+    reg  [16:0] waddr$d;
+    wire  [16:0] waddr$q;
+    reg  waddr$clock;
+    reg  [19:0] wcnt$d;
+    wire  [19:0] wcnt$q;
+    reg  wcnt$clock;
+    reg  [19:0] beats_m1$d;
+    wire  [19:0] beats_m1$q;
+    reg  beats_m1$clock;
+    reg  [2:0] last_n$d;
+    wire  [2:0] last_n$q;
+    reg  last_n$clock;
+    reg  active$d;
+    wire  active$q;
+    reg  active$clock;
+    reg  [19:0] rpix$d;
+    wire  [19:0] rpix$q;
+    reg  rpix$clock;
+    reg  [19:0] beats$d;
+    wire  [19:0] beats$q;
+    reg  beats$clock;
+    reg  lastb$d;
+    wire  lastb$q;
+    reg  lastb$clock;
+    reg  [2:0] outst$d;
+    wire  [2:0] outst$q;
+    reg  outst$clock;
+    reg  r1v$d;
+    wire  r1v$q;
+    reg  r1v$clock;
+    reg  [1:0] r1_sub$d;
+    wire  [1:0] r1_sub$q;
+    reg  r1_sub$clock;
+    reg  [2:0] r1_n$d;
+    wire  [2:0] r1_n$q;
+    reg  r1_n$clock;
+    reg  r1_last$d;
+    wire  r1_last$q;
+    reg  r1_last$clock;
+    reg  r2v$d;
+    wire  r2v$q;
+    reg  r2v$clock;
+    reg  [1:0] r2_sub$d;
+    wire  [1:0] r2_sub$q;
+    reg  r2_sub$clock;
+    reg  [2:0] r2_n$d;
+    wire  [2:0] r2_n$q;
+    reg  r2_n$clock;
+    reg  r2_last$d;
+    wire  r2_last$q;
+    reg  r2_last$clock;
+    reg  d3v$d;
+    wire  d3v$q;
+    reg  d3v$clock;
+    reg  [26:0] d3$d;
+    wire  [26:0] d3$q;
+    reg  d3$clock;
+    reg  [26:0] sk$0$d;
+    wire  [26:0] sk$0$q;
+    reg  sk$0$clock;
+    reg  [26:0] sk$1$d;
+    wire  [26:0] sk$1$q;
+    reg  sk$1$clock;
+    reg  [26:0] sk$2$d;
+    wire  [26:0] sk$2$q;
+    reg  sk$2$clock;
+    reg  [26:0] sk$3$d;
+    wire  [26:0] sk$3$q;
+    reg  sk$3$clock;
+    reg  [2:0] skn$d;
+    wire  [2:0] skn$q;
+    reg  skn$clock;
+    reg  [2:0] u$d;
+    wire  [2:0] u$q;
+    reg  u$clock;
+    reg  [15:0] labs$0$d;
+    wire  [15:0] labs$0$q;
+    reg  labs$0$clock;
+    reg  [15:0] labs$1$d;
+    wire  [15:0] labs$1$q;
+    reg  labs$1$clock;
+    reg  [15:0] labs$2$d;
+    wire  [15:0] labs$2$q;
+    reg  labs$2$clock;
+    reg  [15:0] labs$3$d;
+    wire  [15:0] labs$3$q;
+    reg  labs$3$clock;
+    reg  [15:0] cur_run$d;
+    wire  [15:0] cur_run$q;
+    reg  cur_run$clock;
+    reg  [15:0] g$0$d;
+    wire  [15:0] g$0$q;
+    reg  g$0$clock;
+    reg  [15:0] g$1$d;
+    wire  [15:0] g$1$q;
+    reg  g$1$clock;
+    reg  [15:0] g$2$d;
+    wire  [15:0] g$2$q;
+    reg  g$2$clock;
+    reg  [15:0] g$3$d;
+    wire  [15:0] g$3$q;
+    reg  g$3$clock;
+    reg  [15:0] g$4$d;
+    wire  [15:0] g$4$q;
+    reg  g$4$clock;
+    reg  [15:0] g$5$d;
+    wire  [15:0] g$5$q;
+    reg  g$5$clock;
+    reg  [15:0] g$6$d;
+    wire  [15:0] g$6$q;
+    reg  g$6$clock;
+    reg  [15:0] g$7$d;
+    wire  [15:0] g$7$q;
+    reg  g$7$clock;
+    reg  [3:0] gn$d;
+    wire  [3:0] gn$q;
+    reg  gn$clock;
+    reg  o_valid$d;
+    wire  o_valid$q;
+    reg  o_valid$clock;
+    reg  [63:0] o_data$d;
+    wire  [63:0] o_data$q;
+    reg  o_data$clock;
+    reg  [7:0] o_keep$d;
+    wire  [7:0] o_keep$q;
+    reg  o_keep$clock;
+    reg  o_last$d;
+    wire  o_last$q;
+    reg  o_last$clock;
+    reg  [23:0] gstall$d;
+    wire  [23:0] gstall$q;
+    reg  gstall$clock;
+
+    // Local signals
+    reg  issue;
+    reg  [1:0] st$0;
+    reg  [1:0] st$1;
+    reg  [1:0] st$2;
+    reg  [1:0] st$3;
+    reg  [2:0] src$0;
+    reg  [2:0] src$1;
+    reg  [2:0] src$2;
+    reg  [2:0] src$3;
+    reg  [2:0] src$4;
+    reg  [2:0] slot$0;
+    reg  [2:0] slot$1;
+    reg  [2:0] slot$2;
+    reg  [2:0] slot$3;
+    reg  [2:0] nnew$0;
+    reg  [2:0] nnew$1;
+    reg  [2:0] nnew$2;
+    reg  [2:0] nnew$3;
+    reg  [2:0] nnew$4;
+    reg  [1:0] idx;
+    reg  hv;
+    reg  ghv;
+    reg  pop;
+    reg  pop2;
+    reg  pop1;
+    reg  lz;
+    reg  l1;
+    reg  l2;
+    reg  lge2;
+    reg  gge2;
+    reg  [3:0] gn_p1;
+    reg  [3:0] gn_m1;
+    reg  [3:0] gn_m2;
+    reg  fire;
+    reg  ofree;
+    reg  [15:0] lab$0;
+    reg  [15:0] lab$1;
+    reg  [15:0] lab$2;
+    reg  [15:0] lab$3;
+    reg  [2:0] nsrc$0;
+    reg  [2:0] nsrc$1;
+    reg  [2:0] nsrc$2;
+    reg  [2:0] nsrc$3;
+    reg  [15:0] runv;
+    reg  [1:0] wrem;
 
     // Sub module instances
-    fcc_label_update__writer writer(
-        .clk(writer$clk),
-        .rst(writer$rst),
-        .pixel_valid(writer$pixel_valid),
-        .pixel_code(writer$pixel_code),
-        .pixel_last(writer$pixel_last),
-        .write_en(writer$write_en),
-        .write_addr(writer$write_addr),
-        .write_data(writer$write_data),
-        .beats_m1(writer$beats_m1),
-        .last_beat_labels(writer$last_beat_labels)
-    );
-    fcc_label_update__fb fb(
+    fcc_label_update__fb_k7_668cf05b fb(
         .clk(fb$clk),
         .read_en(fb$read_en),
         .read_addr(fb$read_addr),
@@ -6708,534 +6885,1022 @@ module fcc_label_update(clk,rst,wr_valid,wr_state,wr_last,rb_start,fv,fval,gear_
         .write_addr(fb$write_addr),
         .write_data(fb$write_data)
     );
-    fcc_label_update__pipeline pipeline(
-        .clk(pipeline$clk),
-        .rst(pipeline$rst),
-        .start(pipeline$start),
-        .beats_m1(pipeline$beats_m1),
-        .last_beat_labels(pipeline$last_beat_labels),
-        .beat_done(pipeline$beat_done),
-        .read_en(pipeline$read_en),
-        .read_addr(pipeline$read_addr),
-        .read_data(pipeline$read_data),
-        .beat_valid(pipeline$beat_valid),
-        .beat(pipeline$beat)
+    fcc_label_update__ws0_k7_668cf05b ws0(
+        .d(ws0$d),
+        .q(ws0$q),
+        .clock(ws0$clock)
     );
-    fcc_label_update__queue queue(
-        .clk(queue$clk),
-        .rst(queue$rst),
-        .clear(queue$clear),
-        .in_valid(queue$in_valid),
-        .in_beat(queue$in_beat),
-        .pop(queue$pop),
-        .head_valid(queue$head_valid),
-        .head(queue$head)
+    fcc_label_update__ws1_k7_668cf05b ws1(
+        .d(ws1$d),
+        .q(ws1$q),
+        .clock(ws1$clock)
     );
-    fcc_label_update__gearbox gearbox(
-        .clk(gearbox$clk),
-        .rst(gearbox$rst),
-        .clear(gearbox$clear),
-        .push_valid(gearbox$push_valid),
-        .push_label(gearbox$push_label),
-        .pop(gearbox$pop),
-        .pop_two(gearbox$pop_two),
-        .front(gearbox$front),
-        .second(gearbox$second),
-        .used(gearbox$used),
-        .has_one(gearbox$has_one),
-        .has_two(gearbox$has_two)
+    fcc_label_update__ws2_k7_668cf05b ws2(
+        .d(ws2$d),
+        .q(ws2$q),
+        .clock(ws2$clock)
     );
-    fcc_label_update__assembly assembly(
-        .clk(assembly$clk),
-        .rst(assembly$rst),
-        .clear(assembly$clear),
-        .head_valid(assembly$head_valid),
-        .head(assembly$head),
-        .head_done(assembly$head_done),
-        .gear_front(assembly$gear_front),
-        .gear_second(assembly$gear_second),
-        .gear_has_one(assembly$gear_has_one),
-        .gear_has_two(assembly$gear_has_two),
-        .gear_pop(assembly$gear_pop),
-        .gear_pop_two(assembly$gear_pop_two),
-        .m_axis_tdata(assembly$m_axis_tdata),
-        .m_axis_tkeep(assembly$m_axis_tkeep),
-        .m_axis_tvalid(assembly$m_axis_tvalid),
-        .m_axis_tlast(assembly$m_axis_tlast),
-        .m_axis_tready(assembly$m_axis_tready),
-        .frame_sent(assembly$frame_sent),
-        .gear_stalls(assembly$gear_stalls)
+    fcc_label_update__wsub_k7_668cf05b wsub(
+        .d(wsub$d),
+        .q(wsub$q),
+        .clock(wsub$clock)
+    );
+    fcc_label_update__waddr_k7_668cf05b waddr(
+        .d(waddr$d),
+        .q(waddr$q),
+        .clock(waddr$clock)
+    );
+    fcc_label_update__wcnt_k7_668cf05b wcnt(
+        .d(wcnt$d),
+        .q(wcnt$q),
+        .clock(wcnt$clock)
+    );
+    fcc_label_update__beats_m1_k7_668cf05b beats_m1(
+        .d(beats_m1$d),
+        .q(beats_m1$q),
+        .clock(beats_m1$clock)
+    );
+    fcc_label_update__last_n_k7_668cf05b last_n(
+        .d(last_n$d),
+        .q(last_n$q),
+        .clock(last_n$clock)
+    );
+    fcc_label_update__active_k7_668cf05b active(
+        .d(active$d),
+        .q(active$q),
+        .clock(active$clock)
+    );
+    fcc_label_update__rpix_k7_668cf05b rpix(
+        .d(rpix$d),
+        .q(rpix$q),
+        .clock(rpix$clock)
+    );
+    fcc_label_update__beats_k7_668cf05b beats(
+        .d(beats$d),
+        .q(beats$q),
+        .clock(beats$clock)
+    );
+    fcc_label_update__lastb_k7_668cf05b lastb(
+        .d(lastb$d),
+        .q(lastb$q),
+        .clock(lastb$clock)
+    );
+    fcc_label_update__outst_k7_668cf05b outst(
+        .d(outst$d),
+        .q(outst$q),
+        .clock(outst$clock)
+    );
+    fcc_label_update__r1v_k7_668cf05b r1v(
+        .d(r1v$d),
+        .q(r1v$q),
+        .clock(r1v$clock)
+    );
+    fcc_label_update__r1_sub_k7_668cf05b r1_sub(
+        .d(r1_sub$d),
+        .q(r1_sub$q),
+        .clock(r1_sub$clock)
+    );
+    fcc_label_update__r1_n_k7_668cf05b r1_n(
+        .d(r1_n$d),
+        .q(r1_n$q),
+        .clock(r1_n$clock)
+    );
+    fcc_label_update__r1_last_k7_668cf05b r1_last(
+        .d(r1_last$d),
+        .q(r1_last$q),
+        .clock(r1_last$clock)
+    );
+    fcc_label_update__r2v_k7_668cf05b r2v(
+        .d(r2v$d),
+        .q(r2v$q),
+        .clock(r2v$clock)
+    );
+    fcc_label_update__r2_sub_k7_668cf05b r2_sub(
+        .d(r2_sub$d),
+        .q(r2_sub$q),
+        .clock(r2_sub$clock)
+    );
+    fcc_label_update__r2_n_k7_668cf05b r2_n(
+        .d(r2_n$d),
+        .q(r2_n$q),
+        .clock(r2_n$clock)
+    );
+    fcc_label_update__r2_last_k7_668cf05b r2_last(
+        .d(r2_last$d),
+        .q(r2_last$q),
+        .clock(r2_last$clock)
+    );
+    fcc_label_update__d3v_k7_668cf05b d3v(
+        .d(d3v$d),
+        .q(d3v$q),
+        .clock(d3v$clock)
+    );
+    fcc_label_update__d3_k7_668cf05b d3(
+        .d(d3$d),
+        .q(d3$q),
+        .clock(d3$clock)
+    );
+    fcc_label_update__sk__0_k7_668cf05b sk$0(
+        .d(sk$0$d),
+        .q(sk$0$q),
+        .clock(sk$0$clock)
+    );
+    fcc_label_update__sk__1_k7_668cf05b sk$1(
+        .d(sk$1$d),
+        .q(sk$1$q),
+        .clock(sk$1$clock)
+    );
+    fcc_label_update__sk__2_k7_668cf05b sk$2(
+        .d(sk$2$d),
+        .q(sk$2$q),
+        .clock(sk$2$clock)
+    );
+    fcc_label_update__sk__3_k7_668cf05b sk$3(
+        .d(sk$3$d),
+        .q(sk$3$q),
+        .clock(sk$3$clock)
+    );
+    fcc_label_update__skn_k7_668cf05b skn(
+        .d(skn$d),
+        .q(skn$q),
+        .clock(skn$clock)
+    );
+    fcc_label_update__u_k7_668cf05b u(
+        .d(u$d),
+        .q(u$q),
+        .clock(u$clock)
+    );
+    fcc_label_update__labs__0_k7_668cf05b labs$0(
+        .d(labs$0$d),
+        .q(labs$0$q),
+        .clock(labs$0$clock)
+    );
+    fcc_label_update__labs__1_k7_668cf05b labs$1(
+        .d(labs$1$d),
+        .q(labs$1$q),
+        .clock(labs$1$clock)
+    );
+    fcc_label_update__labs__2_k7_668cf05b labs$2(
+        .d(labs$2$d),
+        .q(labs$2$q),
+        .clock(labs$2$clock)
+    );
+    fcc_label_update__labs__3_k7_668cf05b labs$3(
+        .d(labs$3$d),
+        .q(labs$3$q),
+        .clock(labs$3$clock)
+    );
+    fcc_label_update__cur_run_k7_668cf05b cur_run(
+        .d(cur_run$d),
+        .q(cur_run$q),
+        .clock(cur_run$clock)
+    );
+    fcc_label_update__g__0_k7_668cf05b g$0(
+        .d(g$0$d),
+        .q(g$0$q),
+        .clock(g$0$clock)
+    );
+    fcc_label_update__g__1_k7_668cf05b g$1(
+        .d(g$1$d),
+        .q(g$1$q),
+        .clock(g$1$clock)
+    );
+    fcc_label_update__g__2_k7_668cf05b g$2(
+        .d(g$2$d),
+        .q(g$2$q),
+        .clock(g$2$clock)
+    );
+    fcc_label_update__g__3_k7_668cf05b g$3(
+        .d(g$3$d),
+        .q(g$3$q),
+        .clock(g$3$clock)
+    );
+    fcc_label_update__g__4_k7_668cf05b g$4(
+        .d(g$4$d),
+        .q(g$4$q),
+        .clock(g$4$clock)
+    );
+    fcc_label_update__g__5_k7_668cf05b g$5(
+        .d(g$5$d),
+        .q(g$5$q),
+        .clock(g$5$clock)
+    );
+    fcc_label_update__g__6_k7_668cf05b g$6(
+        .d(g$6$d),
+        .q(g$6$q),
+        .clock(g$6$clock)
+    );
+    fcc_label_update__g__7_k7_668cf05b g$7(
+        .d(g$7$d),
+        .q(g$7$q),
+        .clock(g$7$clock)
+    );
+    fcc_label_update__gn_k7_668cf05b gn(
+        .d(gn$d),
+        .q(gn$q),
+        .clock(gn$clock)
+    );
+    fcc_label_update__o_valid_k7_668cf05b o_valid(
+        .d(o_valid$d),
+        .q(o_valid$q),
+        .clock(o_valid$clock)
+    );
+    fcc_label_update__o_data_k7_668cf05b o_data(
+        .d(o_data$d),
+        .q(o_data$q),
+        .clock(o_data$clock)
+    );
+    fcc_label_update__o_keep_k7_668cf05b o_keep(
+        .d(o_keep$d),
+        .q(o_keep$q),
+        .clock(o_keep$clock)
+    );
+    fcc_label_update__o_last_k7_668cf05b o_last(
+        .d(o_last$d),
+        .q(o_last$q),
+        .clock(o_last$clock)
+    );
+    fcc_label_update__gstall_k7_668cf05b gstall(
+        .d(gstall$d),
+        .q(gstall$q),
+        .clock(gstall$clock)
     );
 
     // Update code
     always @(*) begin
-        writer$clk = clk;
+        ws0$clock = clk;
+        ws1$clock = clk;
+        ws2$clock = clk;
+        wsub$clock = clk;
+        waddr$clock = clk;
+        wcnt$clock = clk;
+        beats_m1$clock = clk;
+        last_n$clock = clk;
+        active$clock = clk;
+        rpix$clock = clk;
+        beats$clock = clk;
+        lastb$clock = clk;
+        outst$clock = clk;
+        r1v$clock = clk;
+        r1_sub$clock = clk;
+        r1_n$clock = clk;
+        r1_last$clock = clk;
+        r2v$clock = clk;
+        r2_sub$clock = clk;
+        r2_n$clock = clk;
+        r2_last$clock = clk;
+        d3v$clock = clk;
+        d3$clock = clk;
+        skn$clock = clk;
+        u$clock = clk;
+        cur_run$clock = clk;
+        gn$clock = clk;
+        o_valid$clock = clk;
+        o_data$clock = clk;
+        o_keep$clock = clk;
+        o_last$clock = clk;
+        gstall$clock = clk;
+        ws0$d = ws0$q;
+        ws1$d = ws1$q;
+        ws2$d = ws2$q;
+        wsub$d = wsub$q;
+        waddr$d = waddr$q;
+        wcnt$d = wcnt$q;
+        beats_m1$d = beats_m1$q;
+        last_n$d = last_n$q;
+        active$d = active$q;
+        rpix$d = rpix$q;
+        beats$d = beats$q;
+        lastb$d = lastb$q;
+        outst$d = outst$q;
+        r1v$d = r1v$q;
+        r1_sub$d = r1_sub$q;
+        r1_n$d = r1_n$q;
+        r1_last$d = r1_last$q;
+        r2v$d = r2v$q;
+        r2_sub$d = r2_sub$q;
+        r2_n$d = r2_n$q;
+        r2_last$d = r2_last$q;
+        d3v$d = d3v$q;
+        d3$d = d3$q;
+        skn$d = skn$q;
+        u$d = u$q;
+        cur_run$d = cur_run$q;
+        gn$d = gn$q;
+        o_valid$d = o_valid$q;
+        o_data$d = o_data$q;
+        o_keep$d = o_keep$q;
+        o_last$d = o_last$q;
+        gstall$d = gstall$q;
+        sk$0$clock = clk;
+        sk$0$d = sk$0$q;
+        labs$0$clock = clk;
+        labs$0$d = labs$0$q;
+        sk$1$clock = clk;
+        sk$1$d = sk$1$q;
+        labs$1$clock = clk;
+        labs$1$d = labs$1$q;
+        sk$2$clock = clk;
+        sk$2$d = sk$2$q;
+        labs$2$clock = clk;
+        labs$2$d = labs$2$q;
+        sk$3$clock = clk;
+        sk$3$d = sk$3$q;
+        labs$3$clock = clk;
+        labs$3$d = labs$3$q;
+        g$0$clock = clk;
+        g$0$d = g$0$q;
+        g$1$clock = clk;
+        g$1$d = g$1$q;
+        g$2$clock = clk;
+        g$2$d = g$2$q;
+        g$3$clock = clk;
+        g$3$d = g$3$q;
+        g$4$clock = clk;
+        g$4$d = g$4$q;
+        g$5$clock = clk;
+        g$5$d = g$5$q;
+        g$6$clock = clk;
+        g$6$d = g$6$q;
+        g$7$clock = clk;
+        g$7$d = g$7$q;
+        wrem = wcnt$q[1:0] & lpb_m1;
         fb$clk = clk;
-        pipeline$clk = clk;
-        queue$clk = clk;
-        gearbox$clk = clk;
-        assembly$clk = clk;
-        writer$rst = rst;
-        pipeline$rst = rst;
-        queue$rst = rst;
-        gearbox$rst = rst;
-        assembly$rst = rst;
-        writer$pixel_valid = wr_valid;
-        writer$pixel_code = wr_state;
-        writer$pixel_last = wr_last;
-        fb$write_en = writer$write_en;
-        fb$write_addr = writer$write_addr;
-        fb$write_data = writer$write_data;
-        pipeline$start = rb_start;
-        pipeline$beats_m1 = writer$beats_m1;
-        pipeline$last_beat_labels = writer$last_beat_labels;
-        pipeline$beat_done = assembly$head_done;
-        fb$read_en = pipeline$read_en;
-        fb$read_addr = pipeline$read_addr;
-        pipeline$read_data = fb$read_data;
-        queue$clear = rb_start;
-        queue$in_valid = pipeline$beat_valid;
-        queue$in_beat = pipeline$beat;
-        queue$pop = assembly$head_done;
-        gearbox$clear = rb_start;
-        gearbox$push_valid = fv;
-        gearbox$push_label = fval;
-        gearbox$pop = assembly$gear_pop;
-        gearbox$pop_two = assembly$gear_pop_two;
-        gear_used = gearbox$used;
-        assembly$clear = rb_start;
-        assembly$head_valid = queue$head_valid;
-        assembly$head = queue$head;
-        assembly$gear_front = gearbox$front;
-        assembly$gear_second = gearbox$second;
-        assembly$gear_has_one = gearbox$has_one;
-        assembly$gear_has_two = gearbox$has_two;
-        assembly$m_axis_tready = m_axis_tready;
-        m_axis_tdata = assembly$m_axis_tdata;
-        m_axis_tkeep = assembly$m_axis_tkeep;
-        m_axis_tvalid = assembly$m_axis_tvalid;
-        m_axis_tlast = assembly$m_axis_tlast;
-        rb_done = assembly$frame_sent;
-        gear_stalls = assembly$gear_stalls;
-    end
-
-endmodule // fcc_label_update
-
-
-module fcc_label_update__assembly(clk,rst,clear,head_valid,head,head_done,gear_front,gear_second,gear_has_one,gear_has_two,gear_pop,gear_pop_two,m_axis_tdata,m_axis_tkeep,m_axis_tvalid,m_axis_tlast,m_axis_tready,frame_sent,gear_stalls);
-
-    // Module arguments
-    input wire  clk;
-    input wire  rst;
-    input wire  clear;
-    input wire  head_valid;
-    input wire  [26:0] head;
-    output reg  head_done;
-    input wire  [15:0] gear_front;
-    input wire  [15:0] gear_second;
-    input wire  gear_has_one;
-    input wire  gear_has_two;
-    output reg  gear_pop;
-    output reg  gear_pop_two;
-    output reg  [63:0] m_axis_tdata;
-    output reg  [7:0] m_axis_tkeep;
-    output reg  m_axis_tvalid;
-    output reg  m_axis_tlast;
-    input wire  m_axis_tready;
-    output reg  frame_sent;
-    output reg  [23:0] gear_stalls;
-
-    // Constant declarations
-    localparam  count$0 = 3'b0;
-    localparam  count$1 = 3'b1;
-    localparam  count$2 = 3'b10;
-    localparam  count$3 = 3'b11;
-    localparam  count$4 = 3'b100;
-    localparam  one3 = 3'b1;
-    localparam  two3 = 3'b10;
-    localparam  zero3 = 3'b0;
-    localparam  one24 = 24'h1;
-    localparam  zero24 = 24'h0;
-
-    // Stub signals
-    reg  [2:0] slot_mux$0$source;
-    reg  [2:0] slot_mux$0$taken;
-    reg  [15:0] slot_mux$0$carried;
-    reg  [63:0] slot_mux$0$collected;
-    reg  [15:0] slot_mux$0$gear_head;
-    reg  [15:0] slot_mux$0$gear_next;
-    wire  [15:0] slot_mux$0$label;
-    reg  [2:0] slot_mux$1$source;
-    reg  [2:0] slot_mux$1$taken;
-    reg  [15:0] slot_mux$1$carried;
-    reg  [63:0] slot_mux$1$collected;
-    reg  [15:0] slot_mux$1$gear_head;
-    reg  [15:0] slot_mux$1$gear_next;
-    wire  [15:0] slot_mux$1$label;
-    reg  [2:0] slot_mux$2$source;
-    reg  [2:0] slot_mux$2$taken;
-    reg  [15:0] slot_mux$2$carried;
-    reg  [63:0] slot_mux$2$collected;
-    reg  [15:0] slot_mux$2$gear_head;
-    reg  [15:0] slot_mux$2$gear_next;
-    wire  [15:0] slot_mux$2$label;
-    reg  [2:0] slot_mux$3$source;
-    reg  [2:0] slot_mux$3$taken;
-    reg  [15:0] slot_mux$3$carried;
-    reg  [63:0] slot_mux$3$collected;
-    reg  [15:0] slot_mux$3$gear_head;
-    reg  [15:0] slot_mux$3$gear_next;
-    wire  [15:0] slot_mux$3$label;
-    reg  [2:0] run_mux$source;
-    reg  [2:0] run_mux$taken;
-    reg  [15:0] run_mux$carried;
-    reg  [63:0] run_mux$collected;
-    reg  [15:0] run_mux$gear_head;
-    reg  [15:0] run_mux$gear_next;
-    wire  [15:0] run_mux$label;
-    reg  [2:0] taken$d;
-    wire  [2:0] taken$q;
-    reg  taken$clock;
-    reg  [15:0] collected$0$d;
-    wire  [15:0] collected$0$q;
-    reg  collected$0$clock;
-    reg  [15:0] collected$1$d;
-    wire  [15:0] collected$1$q;
-    reg  collected$1$clock;
-    reg  [15:0] collected$2$d;
-    wire  [15:0] collected$2$q;
-    reg  collected$2$clock;
-    reg  [15:0] collected$3$d;
-    wire  [15:0] collected$3$q;
-    reg  collected$3$clock;
-    reg  [15:0] carried_run$d;
-    wire  [15:0] carried_run$q;
-    reg  carried_run$clock;
-    reg  out_valid$d;
-    wire  out_valid$q;
-    reg  out_valid$clock;
-    reg  [63:0] out_data$d;
-    wire  [63:0] out_data$q;
-    reg  out_data$clock;
-    reg  [7:0] out_keep$d;
-    wire  [7:0] out_keep$q;
-    reg  out_keep$clock;
-    reg  out_last$d;
-    wire  out_last$q;
-    reg  out_last$clock;
-    reg  [23:0] stall_count$d;
-    wire  [23:0] stall_count$q;
-    reg  stall_count$clock;
-    reg  clear_s1$d;
-    wire  clear_s1$q;
-    reg  clear_s1$clock;
-
-    // Local signals
-    reg  [63:0] collected_word;
-    reg  out_free;
-    reg  needs_none;
-    reg  needs_one;
-    reg  needs_two;
-    reg  needs_two_plus;
-    reg  done;
-
-    // Sub module instances
-    fcc_label_update__assembly__slot_mux__0 slot_mux$0(
-        .source(slot_mux$0$source),
-        .taken(slot_mux$0$taken),
-        .carried(slot_mux$0$carried),
-        .collected(slot_mux$0$collected),
-        .gear_head(slot_mux$0$gear_head),
-        .gear_next(slot_mux$0$gear_next),
-        .label(slot_mux$0$label)
-    );
-    fcc_label_update__assembly__slot_mux__1 slot_mux$1(
-        .source(slot_mux$1$source),
-        .taken(slot_mux$1$taken),
-        .carried(slot_mux$1$carried),
-        .collected(slot_mux$1$collected),
-        .gear_head(slot_mux$1$gear_head),
-        .gear_next(slot_mux$1$gear_next),
-        .label(slot_mux$1$label)
-    );
-    fcc_label_update__assembly__slot_mux__2 slot_mux$2(
-        .source(slot_mux$2$source),
-        .taken(slot_mux$2$taken),
-        .carried(slot_mux$2$carried),
-        .collected(slot_mux$2$collected),
-        .gear_head(slot_mux$2$gear_head),
-        .gear_next(slot_mux$2$gear_next),
-        .label(slot_mux$2$label)
-    );
-    fcc_label_update__assembly__slot_mux__3 slot_mux$3(
-        .source(slot_mux$3$source),
-        .taken(slot_mux$3$taken),
-        .carried(slot_mux$3$carried),
-        .collected(slot_mux$3$collected),
-        .gear_head(slot_mux$3$gear_head),
-        .gear_next(slot_mux$3$gear_next),
-        .label(slot_mux$3$label)
-    );
-    fcc_label_update__assembly__run_mux run_mux(
-        .source(run_mux$source),
-        .taken(run_mux$taken),
-        .carried(run_mux$carried),
-        .collected(run_mux$collected),
-        .gear_head(run_mux$gear_head),
-        .gear_next(run_mux$gear_next),
-        .label(run_mux$label)
-    );
-    fcc_label_update__assembly__taken taken(
-        .d(taken$d),
-        .q(taken$q),
-        .clock(taken$clock)
-    );
-    fcc_label_update__assembly__collected__0 collected$0(
-        .d(collected$0$d),
-        .q(collected$0$q),
-        .clock(collected$0$clock)
-    );
-    fcc_label_update__assembly__collected__1 collected$1(
-        .d(collected$1$d),
-        .q(collected$1$q),
-        .clock(collected$1$clock)
-    );
-    fcc_label_update__assembly__collected__2 collected$2(
-        .d(collected$2$d),
-        .q(collected$2$q),
-        .clock(collected$2$clock)
-    );
-    fcc_label_update__assembly__collected__3 collected$3(
-        .d(collected$3$d),
-        .q(collected$3$q),
-        .clock(collected$3$clock)
-    );
-    fcc_label_update__assembly__carried_run carried_run(
-        .d(carried_run$d),
-        .q(carried_run$q),
-        .clock(carried_run$clock)
-    );
-    fcc_label_update__assembly__out_valid out_valid(
-        .d(out_valid$d),
-        .q(out_valid$q),
-        .clock(out_valid$clock)
-    );
-    fcc_label_update__assembly__out_data out_data(
-        .d(out_data$d),
-        .q(out_data$q),
-        .clock(out_data$clock)
-    );
-    fcc_label_update__assembly__out_keep out_keep(
-        .d(out_keep$d),
-        .q(out_keep$q),
-        .clock(out_keep$clock)
-    );
-    fcc_label_update__assembly__out_last out_last(
-        .d(out_last$d),
-        .q(out_last$q),
-        .clock(out_last$clock)
-    );
-    fcc_label_update__assembly__stall_count stall_count(
-        .d(stall_count$d),
-        .q(stall_count$q),
-        .clock(stall_count$clock)
-    );
-    fcc_label_update__assembly__clear_s1 clear_s1(
-        .d(clear_s1$d),
-        .q(clear_s1$q),
-        .clock(clear_s1$clock)
-    );
-
-    // Update code
-    always @(*) begin
-        taken$clock = clk;
-        carried_run$clock = clk;
-        out_valid$clock = clk;
-        out_data$clock = clk;
-        out_keep$clock = clk;
-        out_last$clock = clk;
-        stall_count$clock = clk;
-        clear_s1$clock = clk;
-        taken$d = taken$q;
-        carried_run$d = carried_run$q;
-        out_valid$d = out_valid$q;
-        out_data$d = out_data$q;
-        out_keep$d = out_keep$q;
-        out_last$d = out_last$q;
-        stall_count$d = stall_count$q;
-        clear_s1$d = clear_s1$q;
-        collected$0$clock = clk;
-        collected$0$d = collected$0$q;
-        collected$1$clock = clk;
-        collected$1$d = collected$1$q;
-        collected$2$clock = clk;
-        collected$2$d = collected$2$q;
-        collected$3$clock = clk;
-        collected$3$d = collected$3$q;
-        out_free = ~out_valid$q | m_axis_tready;
-        needs_none = head[17:15] == taken$q;
-        needs_one = 1'b0;
-        needs_two = 1'b0;
-        needs_two_plus = 1'b0;
-        if ((taken$q == count$0) & (head[17:15] == count$1)) begin
-            needs_one = 1'b1;
+        fb$write_en = 1'b0;
+        fb$write_addr = waddr$q;
+        fb$write_data[1:0] = ws0$q;
+        fb$write_data[3:2] = ws1$q;
+        fb$write_data[5:4] = ws2$q;
+        fb$write_data[7:6] = wr_state;
+        if (wsub$q == b2_0) begin
+            fb$write_data[1:0] = wr_state;
         end
-        if ((taken$q == count$1) & (head[17:15] == count$2)) begin
-            needs_one = 1'b1;
+        if (wsub$q == b2_1) begin
+            fb$write_data[3:2] = wr_state;
         end
-        if ((taken$q == count$2) & (head[17:15] == count$3)) begin
-            needs_one = 1'b1;
+        if (wsub$q == b2_2) begin
+            fb$write_data[5:4] = wr_state;
         end
-        if ((taken$q == count$3) & (head[17:15] == count$4)) begin
-            needs_one = 1'b1;
-        end
-        if ((taken$q == count$0) & (head[17:15] == count$2)) begin
-            needs_two = 1'b1;
-            needs_two_plus = 1'b1;
-        end
-        if ((taken$q == count$1) & (head[17:15] == count$3)) begin
-            needs_two = 1'b1;
-            needs_two_plus = 1'b1;
-        end
-        if ((taken$q == count$2) & (head[17:15] == count$4)) begin
-            needs_two = 1'b1;
-            needs_two_plus = 1'b1;
-        end
-        if ((taken$q == count$0) & (head[17:15] == count$3)) begin
-            needs_two_plus = 1'b1;
-        end
-        if ((taken$q == count$1) & (head[17:15] == count$4)) begin
-            needs_two_plus = 1'b1;
-        end
-        if ((taken$q == count$0) & (head[17:15] == count$4)) begin
-            needs_two_plus = 1'b1;
-        end
-        gear_pop_two = head_valid & needs_two_plus & gear_has_two;
-        gear_pop = head_valid & ~needs_none & gear_has_one;
-        done = head_valid & out_free & (needs_none | (needs_one & gear_has_one) | (needs_two & gear_has_two));
-        head_done = done;
-        collected_word[15:0] = collected$0$q;
-        collected_word[31:16] = collected$1$q;
-        collected_word[47:32] = collected$2$q;
-        collected_word[63:48] = collected$3$q;
-        slot_mux$0$taken = taken$q;
-        slot_mux$0$carried = carried_run$q;
-        slot_mux$0$collected = collected_word;
-        slot_mux$0$gear_head = gear_front;
-        slot_mux$0$gear_next = gear_second;
-        slot_mux$1$taken = taken$q;
-        slot_mux$1$carried = carried_run$q;
-        slot_mux$1$collected = collected_word;
-        slot_mux$1$gear_head = gear_front;
-        slot_mux$1$gear_next = gear_second;
-        slot_mux$2$taken = taken$q;
-        slot_mux$2$carried = carried_run$q;
-        slot_mux$2$collected = collected_word;
-        slot_mux$2$gear_head = gear_front;
-        slot_mux$2$gear_next = gear_second;
-        slot_mux$3$taken = taken$q;
-        slot_mux$3$carried = carried_run$q;
-        slot_mux$3$collected = collected_word;
-        slot_mux$3$gear_head = gear_front;
-        slot_mux$3$gear_next = gear_second;
-        slot_mux$0$source = head[2:0];
-        slot_mux$1$source = head[5:3];
-        slot_mux$2$source = head[8:6];
-        slot_mux$3$source = head[11:9];
-        run_mux$source = head[14:12];
-        run_mux$taken = taken$q;
-        run_mux$carried = carried_run$q;
-        run_mux$collected = collected_word;
-        run_mux$gear_head = gear_front;
-        run_mux$gear_next = gear_second;
-        if (gear_pop) begin
-            if (taken$q == count$0) begin
-                collected$0$d = gear_front;
+        if (wr_valid) begin
+            if (wsub$q == b2_0) begin
+                ws0$d = wr_state;
             end
-            if (taken$q == count$1) begin
-                collected$1$d = gear_front;
+            if (wsub$q == b2_1) begin
+                ws1$d = wr_state;
             end
-            if (taken$q == count$2) begin
-                collected$2$d = gear_front;
+            if (wsub$q == b2_2) begin
+                ws2$d = wr_state;
             end
-            if (taken$q == count$3) begin
-                collected$3$d = gear_front;
+            wsub$d = wsub$q + b2_1;
+            if ((wsub$q == b2_3) | wr_last) begin
+                fb$write_en = 1'b1;
+                waddr$d = waddr$q + one17;
             end
-            taken$d = taken$q + one3;
-        end
-        if (gear_pop_two) begin
-            if (taken$q == count$0) begin
-                collected$1$d = gear_second;
+            wcnt$d = wcnt$q + one20;
+            if (wr_last) begin
+                wsub$d = b2_0;
+                waddr$d = zero17;
+                wcnt$d = zero20;
+                beats_m1$d = wcnt$q >> lpb_log;
+                last_n$d = n_of$1;
+                if (wrem == b2_1) begin
+                    last_n$d = n_of$2;
+                end
+                if (wrem == b2_2) begin
+                    last_n$d = n_of$3;
+                end
+                if (wrem == b2_3) begin
+                    last_n$d = n_of$4;
+                end
             end
-            if (taken$q == count$1) begin
-                collected$2$d = gear_second;
+        end
+        ofree = ~o_valid$q | m_axis_tready;
+        hv = skn$q != zero3;
+        ghv = gn$q != zero4;
+        lz = sk$0$q[17:15] == u$q;
+        l1 = 1'b0;
+        l2 = 1'b0;
+        lge2 = 1'b0;
+        if ((u$q == n_of$0) & (sk$0$q[17:15] == n_of$1)) begin
+            l1 = 1'b1;
+        end
+        if ((u$q == n_of$1) & (sk$0$q[17:15] == n_of$2)) begin
+            l1 = 1'b1;
+        end
+        if ((u$q == n_of$2) & (sk$0$q[17:15] == n_of$3)) begin
+            l1 = 1'b1;
+        end
+        if ((u$q == n_of$3) & (sk$0$q[17:15] == n_of$4)) begin
+            l1 = 1'b1;
+        end
+        if ((u$q == n_of$0) & (sk$0$q[17:15] == n_of$2)) begin
+            l2 = 1'b1;
+            lge2 = 1'b1;
+        end
+        if ((u$q == n_of$1) & (sk$0$q[17:15] == n_of$3)) begin
+            l2 = 1'b1;
+            lge2 = 1'b1;
+        end
+        if ((u$q == n_of$2) & (sk$0$q[17:15] == n_of$4)) begin
+            l2 = 1'b1;
+            lge2 = 1'b1;
+        end
+        if ((u$q == n_of$0) & (sk$0$q[17:15] == n_of$3)) begin
+            lge2 = 1'b1;
+        end
+        if ((u$q == n_of$1) & (sk$0$q[17:15] == n_of$4)) begin
+            lge2 = 1'b1;
+        end
+        if ((u$q == n_of$0) & (sk$0$q[17:15] == n_of$4)) begin
+            lge2 = 1'b1;
+        end
+        gge2 = (gn$q != zero4) & (gn$q != one4);
+        pop2 = hv & lge2 & gge2;
+        pop = hv & ~lz & ghv;
+        fire = hv & ofree & (lz | (l1 & ghv) | (l2 & gge2));
+        nsrc$0 = sk$0$q[2:0];
+        nsrc$1 = sk$0$q[5:3];
+        nsrc$2 = sk$0$q[8:6];
+        nsrc$3 = sk$0$q[11:9];
+        lab$0 = zero16;
+        if (nsrc$0 == s_cur) begin
+            lab$0 = cur_run$q;
+        end
+        if (nsrc$0 == k_of$0) begin
+            lab$0 = labs$0$q;
+            if (u$q == n_of$0) begin
+                lab$0 = g$0$q;
             end
-            if (taken$q == count$2) begin
-                collected$3$d = gear_second;
+        end
+        if (nsrc$0 == k_of$1) begin
+            lab$0 = labs$1$q;
+            if (u$q == n_of$1) begin
+                lab$0 = g$0$q;
             end
-            taken$d = taken$q + two3;
         end
-        if (out_valid$q & m_axis_tready) begin
-            out_valid$d = 1'b0;
+        if (nsrc$0 == k_of$2) begin
+            lab$0 = labs$2$q;
+            if (u$q == n_of$2) begin
+                lab$0 = g$0$q;
+            end
         end
-        if (out_free) begin
-            out_data$d[15:0] = slot_mux$0$label;
-            out_data$d[31:16] = slot_mux$1$label;
-            out_data$d[47:32] = slot_mux$2$label;
+        if (nsrc$0 == k_of$3) begin
+            lab$0 = labs$3$q;
+            if (u$q == n_of$3) begin
+                lab$0 = g$0$q;
+            end
         end
-        if (done) begin
-            carried_run$d = run_mux$label;
-            taken$d = zero3;
-            out_valid$d = 1'b1;
-            out_data$d[63:48] = slot_mux$3$label;
-            out_keep$d = head[25:18];
-            out_last$d = head[26:26];
+        if ((nsrc$0 == k_of$1) & (u$q == n_of$0)) begin
+            lab$0 = g$1$q;
         end
-        if (head_valid & ~done & out_free) begin
-            stall_count$d = stall_count$q + one24;
+        if ((nsrc$0 == k_of$2) & (u$q == n_of$1)) begin
+            lab$0 = g$1$q;
         end
-        clear_s1$d = clear;
-        if (clear_s1$q) begin
-            stall_count$d = zero24;
+        if ((nsrc$0 == k_of$3) & (u$q == n_of$2)) begin
+            lab$0 = g$1$q;
         end
-        if (clear) begin
-            taken$d = zero3;
+        lab$1 = zero16;
+        if (nsrc$1 == s_cur) begin
+            lab$1 = cur_run$q;
+        end
+        if (nsrc$1 == k_of$0) begin
+            lab$1 = labs$0$q;
+            if (u$q == n_of$0) begin
+                lab$1 = g$0$q;
+            end
+        end
+        if (nsrc$1 == k_of$1) begin
+            lab$1 = labs$1$q;
+            if (u$q == n_of$1) begin
+                lab$1 = g$0$q;
+            end
+        end
+        if (nsrc$1 == k_of$2) begin
+            lab$1 = labs$2$q;
+            if (u$q == n_of$2) begin
+                lab$1 = g$0$q;
+            end
+        end
+        if (nsrc$1 == k_of$3) begin
+            lab$1 = labs$3$q;
+            if (u$q == n_of$3) begin
+                lab$1 = g$0$q;
+            end
+        end
+        if ((nsrc$1 == k_of$1) & (u$q == n_of$0)) begin
+            lab$1 = g$1$q;
+        end
+        if ((nsrc$1 == k_of$2) & (u$q == n_of$1)) begin
+            lab$1 = g$1$q;
+        end
+        if ((nsrc$1 == k_of$3) & (u$q == n_of$2)) begin
+            lab$1 = g$1$q;
+        end
+        lab$2 = zero16;
+        if (nsrc$2 == s_cur) begin
+            lab$2 = cur_run$q;
+        end
+        if (nsrc$2 == k_of$0) begin
+            lab$2 = labs$0$q;
+            if (u$q == n_of$0) begin
+                lab$2 = g$0$q;
+            end
+        end
+        if (nsrc$2 == k_of$1) begin
+            lab$2 = labs$1$q;
+            if (u$q == n_of$1) begin
+                lab$2 = g$0$q;
+            end
+        end
+        if (nsrc$2 == k_of$2) begin
+            lab$2 = labs$2$q;
+            if (u$q == n_of$2) begin
+                lab$2 = g$0$q;
+            end
+        end
+        if (nsrc$2 == k_of$3) begin
+            lab$2 = labs$3$q;
+            if (u$q == n_of$3) begin
+                lab$2 = g$0$q;
+            end
+        end
+        if ((nsrc$2 == k_of$1) & (u$q == n_of$0)) begin
+            lab$2 = g$1$q;
+        end
+        if ((nsrc$2 == k_of$2) & (u$q == n_of$1)) begin
+            lab$2 = g$1$q;
+        end
+        if ((nsrc$2 == k_of$3) & (u$q == n_of$2)) begin
+            lab$2 = g$1$q;
+        end
+        lab$3 = zero16;
+        if (nsrc$3 == s_cur) begin
+            lab$3 = cur_run$q;
+        end
+        if (nsrc$3 == k_of$0) begin
+            lab$3 = labs$0$q;
+            if (u$q == n_of$0) begin
+                lab$3 = g$0$q;
+            end
+        end
+        if (nsrc$3 == k_of$1) begin
+            lab$3 = labs$1$q;
+            if (u$q == n_of$1) begin
+                lab$3 = g$0$q;
+            end
+        end
+        if (nsrc$3 == k_of$2) begin
+            lab$3 = labs$2$q;
+            if (u$q == n_of$2) begin
+                lab$3 = g$0$q;
+            end
+        end
+        if (nsrc$3 == k_of$3) begin
+            lab$3 = labs$3$q;
+            if (u$q == n_of$3) begin
+                lab$3 = g$0$q;
+            end
+        end
+        if ((nsrc$3 == k_of$1) & (u$q == n_of$0)) begin
+            lab$3 = g$1$q;
+        end
+        if ((nsrc$3 == k_of$2) & (u$q == n_of$1)) begin
+            lab$3 = g$1$q;
+        end
+        if ((nsrc$3 == k_of$3) & (u$q == n_of$2)) begin
+            lab$3 = g$1$q;
+        end
+        runv = zero16;
+        if (sk$0$q[14:12] == s_cur) begin
+            runv = cur_run$q;
+        end
+        if (sk$0$q[14:12] == k_of$0) begin
+            runv = labs$0$q;
+            if (u$q == n_of$0) begin
+                runv = g$0$q;
+            end
+        end
+        if (sk$0$q[14:12] == k_of$1) begin
+            runv = labs$1$q;
+            if (u$q == n_of$1) begin
+                runv = g$0$q;
+            end
+        end
+        if (sk$0$q[14:12] == k_of$2) begin
+            runv = labs$2$q;
+            if (u$q == n_of$2) begin
+                runv = g$0$q;
+            end
+        end
+        if (sk$0$q[14:12] == k_of$3) begin
+            runv = labs$3$q;
+            if (u$q == n_of$3) begin
+                runv = g$0$q;
+            end
+        end
+        if ((sk$0$q[14:12] == k_of$1) & (u$q == n_of$0)) begin
+            runv = g$1$q;
+        end
+        if ((sk$0$q[14:12] == k_of$2) & (u$q == n_of$1)) begin
+            runv = g$1$q;
+        end
+        if ((sk$0$q[14:12] == k_of$3) & (u$q == n_of$2)) begin
+            runv = g$1$q;
+        end
+        if (fire) begin
+            cur_run$d = runv;
+        end
+        if (pop) begin
+            if (u$q == n_of$0) begin
+                labs$0$d = g$0$q;
+            end
+            if (u$q == n_of$1) begin
+                labs$1$d = g$0$q;
+            end
+            if (u$q == n_of$2) begin
+                labs$2$d = g$0$q;
+            end
+            if (u$q == n_of$3) begin
+                labs$3$d = g$0$q;
+            end
+            u$d = u$q + one3;
+        end
+        if (pop2) begin
+            if (u$q == n_of$0) begin
+                labs$1$d = g$1$q;
+            end
+            if (u$q == n_of$1) begin
+                labs$2$d = g$1$q;
+            end
+            if (u$q == n_of$2) begin
+                labs$3$d = g$1$q;
+            end
+            u$d = u$q + two3;
+        end
+        if (o_valid$q & m_axis_tready) begin
+            o_valid$d = 1'b0;
+        end
+        if (fire) begin
+            u$d = zero3;
+            o_valid$d = 1'b1;
+            o_data$d[15:0] = lab$0;
+            o_data$d[31:16] = lab$1;
+            o_data$d[47:32] = lab$2;
+            o_data$d[63:48] = lab$3;
+            o_keep$d = sk$0$q[25:18];
+            o_last$d = sk$0$q[26:26];
+        end
+        if (hv & ~fire & ofree) begin
+            gstall$d = gstall$q + one24;
+        end
+        if (pop) begin
+            g$0$d = g$1$q;
+        end
+        if (pop) begin
+            g$1$d = g$2$q;
+        end
+        if (pop) begin
+            g$2$d = g$3$q;
+        end
+        if (pop) begin
+            g$3$d = g$4$q;
+        end
+        if (pop) begin
+            g$4$d = g$5$q;
+        end
+        if (pop) begin
+            g$5$d = g$6$q;
+        end
+        if (pop) begin
+            g$6$d = g$7$q;
+        end
+        if (pop2) begin
+            g$0$d = g$2$q;
+        end
+        if (pop2) begin
+            g$1$d = g$3$q;
+        end
+        if (pop2) begin
+            g$2$d = g$4$q;
+        end
+        if (pop2) begin
+            g$3$d = g$5$q;
+        end
+        if (pop2) begin
+            g$4$d = g$6$q;
+        end
+        if (pop2) begin
+            g$5$d = g$7$q;
+        end
+        pop1 = pop & ~pop2;
+        if (fv & ((~pop & (gn$q == g_of$0)) | (pop1 & (gn$q == g_of$1)) | (pop2 & (gn$q == g_of$2)))) begin
+            g$0$d = fval;
+        end
+        if (fv & ((~pop & (gn$q == g_of$1)) | (pop1 & (gn$q == g_of$2)) | (pop2 & (gn$q == g_of$3)))) begin
+            g$1$d = fval;
+        end
+        if (fv & ((~pop & (gn$q == g_of$2)) | (pop1 & (gn$q == g_of$3)) | (pop2 & (gn$q == g_of$4)))) begin
+            g$2$d = fval;
+        end
+        if (fv & ((~pop & (gn$q == g_of$3)) | (pop1 & (gn$q == g_of$4)) | (pop2 & (gn$q == g_of$5)))) begin
+            g$3$d = fval;
+        end
+        if (fv & ((~pop & (gn$q == g_of$4)) | (pop1 & (gn$q == g_of$5)) | (pop2 & (gn$q == g_of$6)))) begin
+            g$4$d = fval;
+        end
+        if (fv & ((~pop & (gn$q == g_of$5)) | (pop1 & (gn$q == g_of$6)) | (pop2 & (gn$q == g_of$7)))) begin
+            g$5$d = fval;
+        end
+        if (fv & ((~pop & (gn$q == g_of$6)) | (pop1 & (gn$q == g_of$7)) | (pop2 & (gn$q == g_of$8)))) begin
+            g$6$d = fval;
+        end
+        if (fv & ((~pop & (gn$q == g_of$7)) | (pop1 & (gn$q == g_of$8)) | (pop2 & (gn$q == g_of$9)))) begin
+            g$7$d = fval;
+        end
+        gn_p1 = gn$q + one4;
+        gn_m1 = gn$q - one4;
+        gn_m2 = gn$q - two4;
+        if (fv) begin
+            gn$d = gn_p1;
+        end
+        if (pop1) begin
+            if (fv) begin
+                gn$d = gn$q;
+            end
+            else begin
+                gn$d = gn_m1;
+            end
+        end
+        if (pop2) begin
+            if (fv) begin
+                gn$d = gn_m1;
+            end
+            else begin
+                gn$d = gn_m2;
+            end
+        end
+        gear_used = gn$q;
+        issue = active$q & ((outst$q < four3) | fire);
+        fb$read_en = issue;
+        fb$read_addr = rpix$q[18:2];
+        r1v$d = issue;
+        if (issue) begin
+            r1_sub$d = rpix$q[1:0];
+            r1_n$d = lpb3;
+            r1_last$d = 1'b0;
+            if (lastb$q) begin
+                r1_n$d = last_n$q;
+                r1_last$d = 1'b1;
+                active$d = 1'b0;
+            end
+            rpix$d = rpix$q + lpb20;
+            beats$d = beats$q - one20;
+            lastb$d = beats$q == one20;
+        end
+        if (issue & ~fire) begin
+            outst$d = outst$q + one3;
+        end
+        if (~issue & fire) begin
+            outst$d = outst$q - one3;
+        end
+        r2v$d = r1v$q;
+        r2_sub$d = r1_sub$q;
+        r2_n$d = r1_n$q;
+        r2_last$d = r1_last$q;
+        st$0 = b2_0;
+        st$1 = b2_0;
+        st$2 = b2_0;
+        st$3 = b2_0;
+        idx = r2_sub$q + slot_off$0;
+        if (idx == b2_0) begin
+            st$0 = fb$read_data[1:0];
+        end
+        if (idx == b2_1) begin
+            st$0 = fb$read_data[3:2];
+        end
+        if (idx == b2_2) begin
+            st$0 = fb$read_data[5:4];
+        end
+        if (idx == b2_3) begin
+            st$0 = fb$read_data[7:6];
+        end
+        if (slot_idx$0 >= r2_n$q) begin
+            st$0 = b2_0;
+        end
+        idx = r2_sub$q + slot_off$1;
+        if (idx == b2_0) begin
+            st$1 = fb$read_data[1:0];
+        end
+        if (idx == b2_1) begin
+            st$1 = fb$read_data[3:2];
+        end
+        if (idx == b2_2) begin
+            st$1 = fb$read_data[5:4];
+        end
+        if (idx == b2_3) begin
+            st$1 = fb$read_data[7:6];
+        end
+        if (slot_idx$1 >= r2_n$q) begin
+            st$1 = b2_0;
+        end
+        idx = r2_sub$q + slot_off$2;
+        if (idx == b2_0) begin
+            st$2 = fb$read_data[1:0];
+        end
+        if (idx == b2_1) begin
+            st$2 = fb$read_data[3:2];
+        end
+        if (idx == b2_2) begin
+            st$2 = fb$read_data[5:4];
+        end
+        if (idx == b2_3) begin
+            st$2 = fb$read_data[7:6];
+        end
+        if (slot_idx$2 >= r2_n$q) begin
+            st$2 = b2_0;
+        end
+        idx = r2_sub$q + slot_off$3;
+        if (idx == b2_0) begin
+            st$3 = fb$read_data[1:0];
+        end
+        if (idx == b2_1) begin
+            st$3 = fb$read_data[3:2];
+        end
+        if (idx == b2_2) begin
+            st$3 = fb$read_data[5:4];
+        end
+        if (idx == b2_3) begin
+            st$3 = fb$read_data[7:6];
+        end
+        if (slot_idx$3 >= r2_n$q) begin
+            st$3 = b2_0;
+        end
+        src$0 = s_cur;
+        nnew$0 = zero3;
+        src$1 = src$0;
+        nnew$1 = nnew$0;
+        if (st$0 == b2_2) begin
+            src$1 = nnew$0 + k_of$0;
+            nnew$1 = nnew$0 + one3;
+        end
+        if (st$0 == b2_3) begin
+            src$1 = s_zero;
+        end
+        slot$0 = src$1;
+        if (st$0 == b2_0) begin
+            slot$0 = s_zero;
+        end
+        src$2 = src$1;
+        nnew$2 = nnew$1;
+        if (st$1 == b2_2) begin
+            src$2 = nnew$1 + k_of$0;
+            nnew$2 = nnew$1 + one3;
+        end
+        if (st$1 == b2_3) begin
+            src$2 = s_zero;
+        end
+        slot$1 = src$2;
+        if (st$1 == b2_0) begin
+            slot$1 = s_zero;
+        end
+        src$3 = src$2;
+        nnew$3 = nnew$2;
+        if (st$2 == b2_2) begin
+            src$3 = nnew$2 + k_of$0;
+            nnew$3 = nnew$2 + one3;
+        end
+        if (st$2 == b2_3) begin
+            src$3 = s_zero;
+        end
+        slot$2 = src$3;
+        if (st$2 == b2_0) begin
+            slot$2 = s_zero;
+        end
+        src$4 = src$3;
+        nnew$4 = nnew$3;
+        if (st$3 == b2_2) begin
+            src$4 = nnew$3 + k_of$0;
+            nnew$4 = nnew$3 + one3;
+        end
+        if (st$3 == b2_3) begin
+            src$4 = s_zero;
+        end
+        slot$3 = src$4;
+        if (st$3 == b2_0) begin
+            slot$3 = s_zero;
+        end
+        d3v$d = r2v$q;
+        d3$d[2:0] = slot$0;
+        d3$d[5:3] = slot$1;
+        d3$d[8:6] = slot$2;
+        d3$d[11:9] = slot$3;
+        d3$d[14:12] = src$4;
+        d3$d[17:15] = nnew$4;
+        d3$d[25:18] = keep_n$0;
+        if (r2_n$q == n_of$0) begin
+            d3$d[25:18] = keep_n$0;
+        end
+        if (r2_n$q == n_of$1) begin
+            d3$d[25:18] = keep_n$1;
+        end
+        if (r2_n$q == n_of$2) begin
+            d3$d[25:18] = keep_n$2;
+        end
+        if (r2_n$q == n_of$3) begin
+            d3$d[25:18] = keep_n$3;
+        end
+        if (r2_n$q == n_of$4) begin
+            d3$d[25:18] = keep_n$4;
+        end
+        d3$d[26:26] = r2_last$q;
+        if (fire) begin
+            sk$0$d = sk$1$q;
+        end
+        if (fire) begin
+            sk$1$d = sk$2$q;
+        end
+        if (fire) begin
+            sk$2$d = sk$3$q;
+        end
+        if (fire) begin
+            if (d3v$q & (skn$q == n_of$1)) begin
+                sk$0$d = d3$q;
+            end
+        end
+        else if (d3v$q & (skn$q == n_of$0)) begin
+            sk$0$d = d3$q;
+        end
+        if (fire) begin
+            if (d3v$q & (skn$q == n_of$2)) begin
+                sk$1$d = d3$q;
+            end
+        end
+        else if (d3v$q & (skn$q == n_of$1)) begin
+            sk$1$d = d3$q;
+        end
+        if (fire) begin
+            if (d3v$q & (skn$q == n_of$3)) begin
+                sk$2$d = d3$q;
+            end
+        end
+        else if (d3v$q & (skn$q == n_of$2)) begin
+            sk$2$d = d3$q;
+        end
+        if (fire) begin
+            if (d3v$q & (skn$q == n_of$4)) begin
+                sk$3$d = d3$q;
+            end
+        end
+        else if (d3v$q & (skn$q == n_of$3)) begin
+            sk$3$d = d3$q;
+        end
+        if (d3v$q & ~fire) begin
+            skn$d = skn$q + one3;
+        end
+        if (~d3v$q & fire) begin
+            skn$d = skn$q - one3;
+        end
+        if (rb_start) begin
+            active$d = 1'b1;
+            rpix$d = zero20;
+            beats$d = beats_m1$q;
+            lastb$d = beats_m1$q == zero20;
+            outst$d = zero3;
+            r1v$d = 1'b0;
+            r2v$d = 1'b0;
+            d3v$d = 1'b0;
+            skn$d = zero3;
+            u$d = zero3;
+            cur_run$d = zero16;
+            gn$d = zero4;
+            gstall$d = zero24;
         end
         if (rst) begin
-            taken$d = zero3;
-            out_valid$d = 1'b0;
+            active$d = 1'b0;
+            outst$d = zero3;
+            r1v$d = 1'b0;
+            r2v$d = 1'b0;
+            d3v$d = 1'b0;
+            skn$d = zero3;
+            u$d = zero3;
+            o_valid$d = 1'b0;
+            gn$d = zero4;
+            wsub$d = b2_0;
+            waddr$d = zero17;
+            wcnt$d = zero20;
         end
-        m_axis_tdata = out_data$q;
-        m_axis_tkeep = out_keep$q;
-        m_axis_tvalid = out_valid$q;
-        m_axis_tlast = out_last$q;
-        frame_sent = out_valid$q & m_axis_tready & out_last$q;
-        gear_stalls = stall_count$q;
+        m_axis_tdata = o_data$q;
+        m_axis_tkeep = o_keep$q;
+        m_axis_tvalid = o_valid$q;
+        m_axis_tlast = o_last$q;
+        rb_done = o_valid$q & m_axis_tready & o_last$q;
+        gear_stalls = gstall$q;
     end
 
-endmodule // fcc_label_update__assembly
+endmodule // fcc_label_update_k7_668cf05b
 
 
-module fcc_label_update__assembly__carried_run(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__assembly__carried_run
-
-
-module fcc_label_update__assembly__clear_s1(d,q,clock);
+module fcc_label_update__active_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -7251,10 +7916,48 @@ module fcc_label_update__assembly__clear_s1(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_label_update__assembly__clear_s1
+endmodule // fcc_label_update__active_k7_668cf05b
 
 
-module fcc_label_update__assembly__collected__0(d,q,clock);
+module fcc_label_update__beats_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [19:0] d;
+    output reg  [19:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 20'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__beats_k7_668cf05b
+
+
+module fcc_label_update__beats_m1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [19:0] d;
+    output reg  [19:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 20'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__beats_m1_k7_668cf05b
+
+
+module fcc_label_update__cur_run_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -7270,105 +7973,29 @@ module fcc_label_update__assembly__collected__0(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_label_update__assembly__collected__0
+endmodule // fcc_label_update__cur_run_k7_668cf05b
 
 
-module fcc_label_update__assembly__collected__1(d,q,clock);
+module fcc_label_update__d3_k7_668cf05b(d,q,clock);
 
     // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
+    input wire  [26:0] d;
+    output reg  [26:0] q;
     input wire  clock;
 
     // Update code (custom)
     initial begin
-       q = 16'h0;
+       q = 27'h0;
     end
 
     always @(posedge clock) begin
        q <= d;
     end
 
-endmodule // fcc_label_update__assembly__collected__1
+endmodule // fcc_label_update__d3_k7_668cf05b
 
 
-module fcc_label_update__assembly__collected__2(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__assembly__collected__2
-
-
-module fcc_label_update__assembly__collected__3(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__assembly__collected__3
-
-
-module fcc_label_update__assembly__out_data(d,q,clock);
-
-    // Module arguments
-    input wire  [63:0] d;
-    output reg  [63:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 64'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__assembly__out_data
-
-
-module fcc_label_update__assembly__out_keep(d,q,clock);
-
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__assembly__out_keep
-
-
-module fcc_label_update__assembly__out_last(d,q,clock);
+module fcc_label_update__d3v_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -7384,452 +8011,10 @@ module fcc_label_update__assembly__out_last(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_label_update__assembly__out_last
+endmodule // fcc_label_update__d3v_k7_668cf05b
 
 
-module fcc_label_update__assembly__out_valid(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__assembly__out_valid
-
-
-module fcc_label_update__assembly__run_mux(source,taken,carried,collected,gear_head,gear_next,label);
-
-    // Module arguments
-    input wire  [2:0] source;
-    input wire  [2:0] taken;
-    input wire  [15:0] carried;
-    input wire  [63:0] collected;
-    input wire  [15:0] gear_head;
-    input wire  [15:0] gear_next;
-    output reg  [15:0] label;
-
-    // Constant declarations
-    localparam  src_carried = 3'b1;
-    localparam  src_new$0 = 3'b10;
-    localparam  src_new$1 = 3'b11;
-    localparam  src_new$2 = 3'b100;
-    localparam  src_new$3 = 3'b101;
-    localparam  count$0 = 3'b0;
-    localparam  count$1 = 3'b1;
-    localparam  count$2 = 3'b10;
-    localparam  count$3 = 3'b11;
-    localparam  zero16 = 16'h0;
-
-    // Local signals
-    reg  [15:0] collected_k$0;
-    reg  [15:0] collected_k$1;
-    reg  [15:0] collected_k$2;
-    reg  [15:0] collected_k$3;
-
-    // Update code
-    always @(*) begin
-        collected_k$0 = collected[15:0];
-        collected_k$1 = collected[31:16];
-        collected_k$2 = collected[47:32];
-        collected_k$3 = collected[63:48];
-        label = zero16;
-        if (source == src_carried) begin
-            label = carried;
-        end
-        if (source == src_new$0) begin
-            label = collected_k$0;
-            if (taken == count$0) begin
-                label = gear_head;
-            end
-        end
-        if (source == src_new$1) begin
-            label = collected_k$1;
-            if (taken == count$1) begin
-                label = gear_head;
-            end
-        end
-        if (source == src_new$2) begin
-            label = collected_k$2;
-            if (taken == count$2) begin
-                label = gear_head;
-            end
-        end
-        if (source == src_new$3) begin
-            label = collected_k$3;
-            if (taken == count$3) begin
-                label = gear_head;
-            end
-        end
-        if ((source == src_new$1) & (taken == count$0)) begin
-            label = gear_next;
-        end
-        if ((source == src_new$2) & (taken == count$1)) begin
-            label = gear_next;
-        end
-        if ((source == src_new$3) & (taken == count$2)) begin
-            label = gear_next;
-        end
-    end
-
-endmodule // fcc_label_update__assembly__run_mux
-
-
-module fcc_label_update__assembly__slot_mux__0(source,taken,carried,collected,gear_head,gear_next,label);
-
-    // Module arguments
-    input wire  [2:0] source;
-    input wire  [2:0] taken;
-    input wire  [15:0] carried;
-    input wire  [63:0] collected;
-    input wire  [15:0] gear_head;
-    input wire  [15:0] gear_next;
-    output reg  [15:0] label;
-
-    // Constant declarations
-    localparam  src_carried = 3'b1;
-    localparam  src_new$0 = 3'b10;
-    localparam  src_new$1 = 3'b11;
-    localparam  src_new$2 = 3'b100;
-    localparam  src_new$3 = 3'b101;
-    localparam  count$0 = 3'b0;
-    localparam  count$1 = 3'b1;
-    localparam  count$2 = 3'b10;
-    localparam  count$3 = 3'b11;
-    localparam  zero16 = 16'h0;
-
-    // Local signals
-    reg  [15:0] collected_k$0;
-    reg  [15:0] collected_k$1;
-    reg  [15:0] collected_k$2;
-    reg  [15:0] collected_k$3;
-
-    // Update code
-    always @(*) begin
-        collected_k$0 = collected[15:0];
-        collected_k$1 = collected[31:16];
-        collected_k$2 = collected[47:32];
-        collected_k$3 = collected[63:48];
-        label = zero16;
-        if (source == src_carried) begin
-            label = carried;
-        end
-        if (source == src_new$0) begin
-            label = collected_k$0;
-            if (taken == count$0) begin
-                label = gear_head;
-            end
-        end
-        if (source == src_new$1) begin
-            label = collected_k$1;
-            if (taken == count$1) begin
-                label = gear_head;
-            end
-        end
-        if (source == src_new$2) begin
-            label = collected_k$2;
-            if (taken == count$2) begin
-                label = gear_head;
-            end
-        end
-        if (source == src_new$3) begin
-            label = collected_k$3;
-            if (taken == count$3) begin
-                label = gear_head;
-            end
-        end
-        if ((source == src_new$1) & (taken == count$0)) begin
-            label = gear_next;
-        end
-        if ((source == src_new$2) & (taken == count$1)) begin
-            label = gear_next;
-        end
-        if ((source == src_new$3) & (taken == count$2)) begin
-            label = gear_next;
-        end
-    end
-
-endmodule // fcc_label_update__assembly__slot_mux__0
-
-
-module fcc_label_update__assembly__slot_mux__1(source,taken,carried,collected,gear_head,gear_next,label);
-
-    // Module arguments
-    input wire  [2:0] source;
-    input wire  [2:0] taken;
-    input wire  [15:0] carried;
-    input wire  [63:0] collected;
-    input wire  [15:0] gear_head;
-    input wire  [15:0] gear_next;
-    output reg  [15:0] label;
-
-    // Constant declarations
-    localparam  src_carried = 3'b1;
-    localparam  src_new$0 = 3'b10;
-    localparam  src_new$1 = 3'b11;
-    localparam  src_new$2 = 3'b100;
-    localparam  src_new$3 = 3'b101;
-    localparam  count$0 = 3'b0;
-    localparam  count$1 = 3'b1;
-    localparam  count$2 = 3'b10;
-    localparam  count$3 = 3'b11;
-    localparam  zero16 = 16'h0;
-
-    // Local signals
-    reg  [15:0] collected_k$0;
-    reg  [15:0] collected_k$1;
-    reg  [15:0] collected_k$2;
-    reg  [15:0] collected_k$3;
-
-    // Update code
-    always @(*) begin
-        collected_k$0 = collected[15:0];
-        collected_k$1 = collected[31:16];
-        collected_k$2 = collected[47:32];
-        collected_k$3 = collected[63:48];
-        label = zero16;
-        if (source == src_carried) begin
-            label = carried;
-        end
-        if (source == src_new$0) begin
-            label = collected_k$0;
-            if (taken == count$0) begin
-                label = gear_head;
-            end
-        end
-        if (source == src_new$1) begin
-            label = collected_k$1;
-            if (taken == count$1) begin
-                label = gear_head;
-            end
-        end
-        if (source == src_new$2) begin
-            label = collected_k$2;
-            if (taken == count$2) begin
-                label = gear_head;
-            end
-        end
-        if (source == src_new$3) begin
-            label = collected_k$3;
-            if (taken == count$3) begin
-                label = gear_head;
-            end
-        end
-        if ((source == src_new$1) & (taken == count$0)) begin
-            label = gear_next;
-        end
-        if ((source == src_new$2) & (taken == count$1)) begin
-            label = gear_next;
-        end
-        if ((source == src_new$3) & (taken == count$2)) begin
-            label = gear_next;
-        end
-    end
-
-endmodule // fcc_label_update__assembly__slot_mux__1
-
-
-module fcc_label_update__assembly__slot_mux__2(source,taken,carried,collected,gear_head,gear_next,label);
-
-    // Module arguments
-    input wire  [2:0] source;
-    input wire  [2:0] taken;
-    input wire  [15:0] carried;
-    input wire  [63:0] collected;
-    input wire  [15:0] gear_head;
-    input wire  [15:0] gear_next;
-    output reg  [15:0] label;
-
-    // Constant declarations
-    localparam  src_carried = 3'b1;
-    localparam  src_new$0 = 3'b10;
-    localparam  src_new$1 = 3'b11;
-    localparam  src_new$2 = 3'b100;
-    localparam  src_new$3 = 3'b101;
-    localparam  count$0 = 3'b0;
-    localparam  count$1 = 3'b1;
-    localparam  count$2 = 3'b10;
-    localparam  count$3 = 3'b11;
-    localparam  zero16 = 16'h0;
-
-    // Local signals
-    reg  [15:0] collected_k$0;
-    reg  [15:0] collected_k$1;
-    reg  [15:0] collected_k$2;
-    reg  [15:0] collected_k$3;
-
-    // Update code
-    always @(*) begin
-        collected_k$0 = collected[15:0];
-        collected_k$1 = collected[31:16];
-        collected_k$2 = collected[47:32];
-        collected_k$3 = collected[63:48];
-        label = zero16;
-        if (source == src_carried) begin
-            label = carried;
-        end
-        if (source == src_new$0) begin
-            label = collected_k$0;
-            if (taken == count$0) begin
-                label = gear_head;
-            end
-        end
-        if (source == src_new$1) begin
-            label = collected_k$1;
-            if (taken == count$1) begin
-                label = gear_head;
-            end
-        end
-        if (source == src_new$2) begin
-            label = collected_k$2;
-            if (taken == count$2) begin
-                label = gear_head;
-            end
-        end
-        if (source == src_new$3) begin
-            label = collected_k$3;
-            if (taken == count$3) begin
-                label = gear_head;
-            end
-        end
-        if ((source == src_new$1) & (taken == count$0)) begin
-            label = gear_next;
-        end
-        if ((source == src_new$2) & (taken == count$1)) begin
-            label = gear_next;
-        end
-        if ((source == src_new$3) & (taken == count$2)) begin
-            label = gear_next;
-        end
-    end
-
-endmodule // fcc_label_update__assembly__slot_mux__2
-
-
-module fcc_label_update__assembly__slot_mux__3(source,taken,carried,collected,gear_head,gear_next,label);
-
-    // Module arguments
-    input wire  [2:0] source;
-    input wire  [2:0] taken;
-    input wire  [15:0] carried;
-    input wire  [63:0] collected;
-    input wire  [15:0] gear_head;
-    input wire  [15:0] gear_next;
-    output reg  [15:0] label;
-
-    // Constant declarations
-    localparam  src_carried = 3'b1;
-    localparam  src_new$0 = 3'b10;
-    localparam  src_new$1 = 3'b11;
-    localparam  src_new$2 = 3'b100;
-    localparam  src_new$3 = 3'b101;
-    localparam  count$0 = 3'b0;
-    localparam  count$1 = 3'b1;
-    localparam  count$2 = 3'b10;
-    localparam  count$3 = 3'b11;
-    localparam  zero16 = 16'h0;
-
-    // Local signals
-    reg  [15:0] collected_k$0;
-    reg  [15:0] collected_k$1;
-    reg  [15:0] collected_k$2;
-    reg  [15:0] collected_k$3;
-
-    // Update code
-    always @(*) begin
-        collected_k$0 = collected[15:0];
-        collected_k$1 = collected[31:16];
-        collected_k$2 = collected[47:32];
-        collected_k$3 = collected[63:48];
-        label = zero16;
-        if (source == src_carried) begin
-            label = carried;
-        end
-        if (source == src_new$0) begin
-            label = collected_k$0;
-            if (taken == count$0) begin
-                label = gear_head;
-            end
-        end
-        if (source == src_new$1) begin
-            label = collected_k$1;
-            if (taken == count$1) begin
-                label = gear_head;
-            end
-        end
-        if (source == src_new$2) begin
-            label = collected_k$2;
-            if (taken == count$2) begin
-                label = gear_head;
-            end
-        end
-        if (source == src_new$3) begin
-            label = collected_k$3;
-            if (taken == count$3) begin
-                label = gear_head;
-            end
-        end
-        if ((source == src_new$1) & (taken == count$0)) begin
-            label = gear_next;
-        end
-        if ((source == src_new$2) & (taken == count$1)) begin
-            label = gear_next;
-        end
-        if ((source == src_new$3) & (taken == count$2)) begin
-            label = gear_next;
-        end
-    end
-
-endmodule // fcc_label_update__assembly__slot_mux__3
-
-
-module fcc_label_update__assembly__stall_count(d,q,clock);
-
-    // Module arguments
-    input wire  [23:0] d;
-    output reg  [23:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 24'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__assembly__stall_count
-
-
-module fcc_label_update__assembly__taken(d,q,clock);
-
-    // Module arguments
-    input wire  [2:0] d;
-    output reg  [2:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 3'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__assembly__taken
-
-
-module fcc_label_update__fb(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
+module fcc_label_update__fb_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
 
     // Module arguments
     input wire  clk;
@@ -7858,296 +8043,162 @@ module fcc_label_update__fb(clk,read_en,read_addr,read_data,write_en,write_addr,
         end
         read_data <= rd1;
     end
-endmodule // fcc_label_update__fb
+endmodule // fcc_label_update__fb_k7_668cf05b
 
 
-module fcc_label_update__gearbox(clk,rst,clear,push_valid,push_label,pop,pop_two,front,second,used,has_one,has_two);
+module fcc_label_update__g__0_k7_668cf05b(d,q,clock);
 
     // Module arguments
-    input wire  clk;
-    input wire  rst;
-    input wire  clear;
-    input wire  push_valid;
-    input wire  [15:0] push_label;
-    input wire  pop;
-    input wire  pop_two;
-    output reg  [15:0] front;
-    output reg  [15:0] second;
-    output reg  [3:0] used;
-    output reg  has_one;
-    output reg  has_two;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
 
-    // Constant declarations
-    localparam  count_is$0 = 4'h0;
-    localparam  count_is$1 = 4'h1;
-    localparam  slot_is$0 = 3'b0;
-    localparam  slot_is$1 = 3'b1;
-    localparam  slot_is$2 = 3'b10;
-    localparam  slot_is$3 = 3'b11;
-    localparam  slot_is$4 = 3'b100;
-    localparam  slot_is$5 = 3'b101;
-    localparam  slot_is$6 = 3'b110;
-    localparam  slot_is$7 = 3'b111;
-    localparam  one = 4'h1;
-    localparam  two = 4'h2;
-    localparam  one3 = 3'b1;
-    localparam  two3 = 3'b10;
-
-    // Stub signals
-    reg  [15:0] slots$0$d;
-    wire  [15:0] slots$0$q;
-    reg  slots$0$clock;
-    reg  [15:0] slots$1$d;
-    wire  [15:0] slots$1$q;
-    reg  slots$1$clock;
-    reg  [15:0] slots$2$d;
-    wire  [15:0] slots$2$q;
-    reg  slots$2$clock;
-    reg  [15:0] slots$3$d;
-    wire  [15:0] slots$3$q;
-    reg  slots$3$clock;
-    reg  [15:0] slots$4$d;
-    wire  [15:0] slots$4$q;
-    reg  slots$4$clock;
-    reg  [15:0] slots$5$d;
-    wire  [15:0] slots$5$q;
-    reg  slots$5$clock;
-    reg  [15:0] slots$6$d;
-    wire  [15:0] slots$6$q;
-    reg  slots$6$clock;
-    reg  [15:0] slots$7$d;
-    wire  [15:0] slots$7$q;
-    reg  slots$7$clock;
-    reg  [3:0] count$d;
-    wire  [3:0] count$q;
-    reg  count$clock;
-    reg  [2:0] read_slot$d;
-    wire  [2:0] read_slot$q;
-    reg  read_slot$clock;
-    reg  [2:0] second_slot$d;
-    wire  [2:0] second_slot$q;
-    reg  second_slot$clock;
-    reg  [2:0] write_slot$d;
-    wire  [2:0] write_slot$q;
-    reg  write_slot$clock;
-
-    // Local signals
-    reg  pop_one;
-    reg  [3:0] count_inc;
-    reg  [3:0] count_dec;
-    reg  [3:0] count_dec2;
-
-    // Sub module instances
-    fcc_label_update__gearbox__slots__0 slots$0(
-        .d(slots$0$d),
-        .q(slots$0$q),
-        .clock(slots$0$clock)
-    );
-    fcc_label_update__gearbox__slots__1 slots$1(
-        .d(slots$1$d),
-        .q(slots$1$q),
-        .clock(slots$1$clock)
-    );
-    fcc_label_update__gearbox__slots__2 slots$2(
-        .d(slots$2$d),
-        .q(slots$2$q),
-        .clock(slots$2$clock)
-    );
-    fcc_label_update__gearbox__slots__3 slots$3(
-        .d(slots$3$d),
-        .q(slots$3$q),
-        .clock(slots$3$clock)
-    );
-    fcc_label_update__gearbox__slots__4 slots$4(
-        .d(slots$4$d),
-        .q(slots$4$q),
-        .clock(slots$4$clock)
-    );
-    fcc_label_update__gearbox__slots__5 slots$5(
-        .d(slots$5$d),
-        .q(slots$5$q),
-        .clock(slots$5$clock)
-    );
-    fcc_label_update__gearbox__slots__6 slots$6(
-        .d(slots$6$d),
-        .q(slots$6$q),
-        .clock(slots$6$clock)
-    );
-    fcc_label_update__gearbox__slots__7 slots$7(
-        .d(slots$7$d),
-        .q(slots$7$q),
-        .clock(slots$7$clock)
-    );
-    fcc_label_update__gearbox__count count(
-        .d(count$d),
-        .q(count$q),
-        .clock(count$clock)
-    );
-    fcc_label_update__gearbox__read_slot read_slot(
-        .d(read_slot$d),
-        .q(read_slot$q),
-        .clock(read_slot$clock)
-    );
-    fcc_label_update__gearbox__second_slot second_slot(
-        .d(second_slot$d),
-        .q(second_slot$q),
-        .clock(second_slot$clock)
-    );
-    fcc_label_update__gearbox__write_slot write_slot(
-        .d(write_slot$d),
-        .q(write_slot$q),
-        .clock(write_slot$clock)
-    );
-
-    // Update code
-    always @(*) begin
-        count$clock = clk;
-        read_slot$clock = clk;
-        second_slot$clock = clk;
-        write_slot$clock = clk;
-        count$d = count$q;
-        read_slot$d = read_slot$q;
-        second_slot$d = second_slot$q;
-        write_slot$d = write_slot$q;
-        slots$0$clock = clk;
-        slots$0$d = slots$0$q;
-        slots$1$clock = clk;
-        slots$1$d = slots$1$q;
-        slots$2$clock = clk;
-        slots$2$d = slots$2$q;
-        slots$3$clock = clk;
-        slots$3$d = slots$3$q;
-        slots$4$clock = clk;
-        slots$4$d = slots$4$q;
-        slots$5$clock = clk;
-        slots$5$d = slots$5$q;
-        slots$6$clock = clk;
-        slots$6$d = slots$6$q;
-        slots$7$clock = clk;
-        slots$7$d = slots$7$q;
-        used = count$q;
-        has_one = count$q != count_is$0;
-        has_two = (count$q != count_is$0) & (count$q != count_is$1);
-        front = slots$0$q;
-        second = slots$0$q;
-        if (read_slot$q == slot_is$0) begin
-            front = slots$0$q;
-        end
-        if (second_slot$q == slot_is$0) begin
-            second = slots$0$q;
-        end
-        if (read_slot$q == slot_is$1) begin
-            front = slots$1$q;
-        end
-        if (second_slot$q == slot_is$1) begin
-            second = slots$1$q;
-        end
-        if (read_slot$q == slot_is$2) begin
-            front = slots$2$q;
-        end
-        if (second_slot$q == slot_is$2) begin
-            second = slots$2$q;
-        end
-        if (read_slot$q == slot_is$3) begin
-            front = slots$3$q;
-        end
-        if (second_slot$q == slot_is$3) begin
-            second = slots$3$q;
-        end
-        if (read_slot$q == slot_is$4) begin
-            front = slots$4$q;
-        end
-        if (second_slot$q == slot_is$4) begin
-            second = slots$4$q;
-        end
-        if (read_slot$q == slot_is$5) begin
-            front = slots$5$q;
-        end
-        if (second_slot$q == slot_is$5) begin
-            second = slots$5$q;
-        end
-        if (read_slot$q == slot_is$6) begin
-            front = slots$6$q;
-        end
-        if (second_slot$q == slot_is$6) begin
-            second = slots$6$q;
-        end
-        if (read_slot$q == slot_is$7) begin
-            front = slots$7$q;
-        end
-        if (second_slot$q == slot_is$7) begin
-            second = slots$7$q;
-        end
-        if (push_valid) begin
-            if (write_slot$q == slot_is$0) begin
-                slots$0$d = push_label;
-            end
-            if (write_slot$q == slot_is$1) begin
-                slots$1$d = push_label;
-            end
-            if (write_slot$q == slot_is$2) begin
-                slots$2$d = push_label;
-            end
-            if (write_slot$q == slot_is$3) begin
-                slots$3$d = push_label;
-            end
-            if (write_slot$q == slot_is$4) begin
-                slots$4$d = push_label;
-            end
-            if (write_slot$q == slot_is$5) begin
-                slots$5$d = push_label;
-            end
-            if (write_slot$q == slot_is$6) begin
-                slots$6$d = push_label;
-            end
-            if (write_slot$q == slot_is$7) begin
-                slots$7$d = push_label;
-            end
-            write_slot$d = write_slot$q + one3;
-        end
-        if (pop) begin
-            read_slot$d = read_slot$q + one3;
-            second_slot$d = second_slot$q + one3;
-        end
-        if (pop_two) begin
-            read_slot$d = read_slot$q + two3;
-            second_slot$d = second_slot$q + two3;
-        end
-        pop_one = pop & ~pop_two;
-        count_inc = count$q + one;
-        count_dec = count$q - one;
-        count_dec2 = count$q - two;
-        if (push_valid) begin
-            count$d = count_inc;
-        end
-        if (pop_one) begin
-            if (push_valid) begin
-                count$d = count$q;
-            end
-            else begin
-                count$d = count_dec;
-            end
-        end
-        if (pop_two) begin
-            if (push_valid) begin
-                count$d = count_dec;
-            end
-            else begin
-                count$d = count_dec2;
-            end
-        end
-        if (clear | rst) begin
-            count$d = count_is$0;
-            read_slot$d = slot_is$0;
-            second_slot$d = slot_is$1;
-            write_slot$d = slot_is$0;
-        end
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
     end
 
-endmodule // fcc_label_update__gearbox
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__g__0_k7_668cf05b
 
 
-module fcc_label_update__gearbox__count(d,q,clock);
+module fcc_label_update__g__1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__g__1_k7_668cf05b
+
+
+module fcc_label_update__g__2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__g__2_k7_668cf05b
+
+
+module fcc_label_update__g__3_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__g__3_k7_668cf05b
+
+
+module fcc_label_update__g__4_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__g__4_k7_668cf05b
+
+
+module fcc_label_update__g__5_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__g__5_k7_668cf05b
+
+
+module fcc_label_update__g__6_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__g__6_k7_668cf05b
+
+
+module fcc_label_update__g__7_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__g__7_k7_668cf05b
+
+
+module fcc_label_update__gn_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [3:0] d;
@@ -8163,10 +8214,105 @@ module fcc_label_update__gearbox__count(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_label_update__gearbox__count
+endmodule // fcc_label_update__gn_k7_668cf05b
 
 
-module fcc_label_update__gearbox__read_slot(d,q,clock);
+module fcc_label_update__gstall_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__gstall_k7_668cf05b
+
+
+module fcc_label_update__labs__0_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__labs__0_k7_668cf05b
+
+
+module fcc_label_update__labs__1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__labs__1_k7_668cf05b
+
+
+module fcc_label_update__labs__2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__labs__2_k7_668cf05b
+
+
+module fcc_label_update__labs__3_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__labs__3_k7_668cf05b
+
+
+module fcc_label_update__last_n_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [2:0] d;
@@ -8182,664 +8328,10 @@ module fcc_label_update__gearbox__read_slot(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_label_update__gearbox__read_slot
+endmodule // fcc_label_update__last_n_k7_668cf05b
 
 
-module fcc_label_update__gearbox__second_slot(d,q,clock);
-
-    // Module arguments
-    input wire  [2:0] d;
-    output reg  [2:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 3'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__gearbox__second_slot
-
-
-module fcc_label_update__gearbox__slots__0(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__gearbox__slots__0
-
-
-module fcc_label_update__gearbox__slots__1(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__gearbox__slots__1
-
-
-module fcc_label_update__gearbox__slots__2(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__gearbox__slots__2
-
-
-module fcc_label_update__gearbox__slots__3(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__gearbox__slots__3
-
-
-module fcc_label_update__gearbox__slots__4(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__gearbox__slots__4
-
-
-module fcc_label_update__gearbox__slots__5(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__gearbox__slots__5
-
-
-module fcc_label_update__gearbox__slots__6(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__gearbox__slots__6
-
-
-module fcc_label_update__gearbox__slots__7(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__gearbox__slots__7
-
-
-module fcc_label_update__gearbox__write_slot(d,q,clock);
-
-    // Module arguments
-    input wire  [2:0] d;
-    output reg  [2:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 3'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__gearbox__write_slot
-
-
-module fcc_label_update__pipeline(clk,rst,start,beats_m1,last_beat_labels,beat_done,read_en,read_addr,read_data,beat_valid,beat);
-
-    // Module arguments
-    input wire  clk;
-    input wire  rst;
-    input wire  start;
-    input wire  [19:0] beats_m1;
-    input wire  [2:0] last_beat_labels;
-    input wire  beat_done;
-    output reg  read_en;
-    output reg  [16:0] read_addr;
-    input wire  [7:0] read_data;
-    output reg  beat_valid;
-    output reg  [26:0] beat;
-
-    // Constant declarations
-    localparam  pos$0 = 2'b0;
-    localparam  pos$1 = 2'b1;
-    localparam  pos$2 = 2'b10;
-    localparam  pos$3 = 2'b11;
-    localparam  slot_off$0 = 2'b0;
-    localparam  slot_off$1 = 2'b1;
-    localparam  slot_off$2 = 2'b10;
-    localparam  slot_off$3 = 2'b11;
-    localparam  slot_idx$0 = 3'b0;
-    localparam  slot_idx$1 = 3'b1;
-    localparam  slot_idx$2 = 3'b10;
-    localparam  slot_idx$3 = 3'b11;
-    localparam  keep_n$0 = 8'h0;
-    localparam  keep_n$1 = 8'h3;
-    localparam  keep_n$2 = 8'hf;
-    localparam  keep_n$3 = 8'h3f;
-    localparam  keep_n$4 = 8'hff;
-    localparam  labels$0 = 3'b0;
-    localparam  labels$1 = 3'b1;
-    localparam  labels$2 = 3'b10;
-    localparam  labels$3 = 3'b11;
-    localparam  labels$4 = 3'b100;
-    localparam  code_empty = 2'b0;
-    localparam  code_labelled = 2'b10;
-    localparam  code_unlabelled = 2'b11;
-    localparam  src_zero = 3'b0;
-    localparam  src_carried = 3'b1;
-    localparam  src_new = 3'b10;
-    localparam  max_in_flight = 3'b100;
-    localparam  lpb3 = 3'b100;
-    localparam  lpb20 = 20'h4;
-    localparam  one3 = 3'b1;
-    localparam  zero3 = 3'b0;
-    localparam  one20 = 20'h1;
-    localparam  zero20 = 20'h0;
-
-    // Stub signals
-    reg  active$d;
-    wire  active$q;
-    reg  active$clock;
-    reg  [19:0] pixel$d;
-    wire  [19:0] pixel$q;
-    reg  pixel$clock;
-    reg  [19:0] beats_left$d;
-    wire  [19:0] beats_left$q;
-    reg  beats_left$clock;
-    reg  last_next$d;
-    wire  last_next$q;
-    reg  last_next$clock;
-    reg  first_next$d;
-    wire  first_next$q;
-    reg  first_next$clock;
-    reg  [2:0] in_flight$d;
-    wire  [2:0] in_flight$q;
-    reg  in_flight$clock;
-    reg  valid_s1$d;
-    wire  valid_s1$q;
-    reg  valid_s1$clock;
-    reg  [1:0] word_pos_s1$d;
-    wire  [1:0] word_pos_s1$q;
-    reg  word_pos_s1$clock;
-    reg  [2:0] labels_s1$d;
-    wire  [2:0] labels_s1$q;
-    reg  labels_s1$clock;
-    reg  last_s1$d;
-    wire  last_s1$q;
-    reg  last_s1$clock;
-    reg  first_s1$d;
-    wire  first_s1$q;
-    reg  first_s1$clock;
-    reg  valid_s2$d;
-    wire  valid_s2$q;
-    reg  valid_s2$clock;
-    reg  [1:0] word_pos_s2$d;
-    wire  [1:0] word_pos_s2$q;
-    reg  word_pos_s2$clock;
-    reg  [2:0] labels_s2$d;
-    wire  [2:0] labels_s2$q;
-    reg  labels_s2$clock;
-    reg  last_s2$d;
-    wire  last_s2$q;
-    reg  last_s2$clock;
-    reg  first_s2$d;
-    wire  first_s2$q;
-    reg  first_s2$clock;
-    reg  valid_s3$d;
-    wire  valid_s3$q;
-    reg  valid_s3$clock;
-    reg  [26:0] beat_s3$d;
-    wire  [26:0] beat_s3$q;
-    reg  beat_s3$clock;
-
-    // Local signals
-    reg  issue;
-    reg  [1:0] code$0;
-    reg  [1:0] code$1;
-    reg  [1:0] code$2;
-    reg  [1:0] code$3;
-    reg  [2:0] run_src$0;
-    reg  [2:0] run_src$1;
-    reg  [2:0] run_src$2;
-    reg  [2:0] run_src$3;
-    reg  [2:0] run_src$4;
-    reg  [2:0] new_count$0;
-    reg  [2:0] new_count$1;
-    reg  [2:0] new_count$2;
-    reg  [2:0] new_count$3;
-    reg  [2:0] new_count$4;
-    reg  [2:0] slot_src$0;
-    reg  [2:0] slot_src$1;
-    reg  [2:0] slot_src$2;
-    reg  [2:0] slot_src$3;
-    reg  [1:0] pos_in_word;
-
-    // Sub module instances
-    fcc_label_update__pipeline__active active(
-        .d(active$d),
-        .q(active$q),
-        .clock(active$clock)
-    );
-    fcc_label_update__pipeline__pixel pixel(
-        .d(pixel$d),
-        .q(pixel$q),
-        .clock(pixel$clock)
-    );
-    fcc_label_update__pipeline__beats_left beats_left(
-        .d(beats_left$d),
-        .q(beats_left$q),
-        .clock(beats_left$clock)
-    );
-    fcc_label_update__pipeline__last_next last_next(
-        .d(last_next$d),
-        .q(last_next$q),
-        .clock(last_next$clock)
-    );
-    fcc_label_update__pipeline__first_next first_next(
-        .d(first_next$d),
-        .q(first_next$q),
-        .clock(first_next$clock)
-    );
-    fcc_label_update__pipeline__in_flight in_flight(
-        .d(in_flight$d),
-        .q(in_flight$q),
-        .clock(in_flight$clock)
-    );
-    fcc_label_update__pipeline__valid_s1 valid_s1(
-        .d(valid_s1$d),
-        .q(valid_s1$q),
-        .clock(valid_s1$clock)
-    );
-    fcc_label_update__pipeline__word_pos_s1 word_pos_s1(
-        .d(word_pos_s1$d),
-        .q(word_pos_s1$q),
-        .clock(word_pos_s1$clock)
-    );
-    fcc_label_update__pipeline__labels_s1 labels_s1(
-        .d(labels_s1$d),
-        .q(labels_s1$q),
-        .clock(labels_s1$clock)
-    );
-    fcc_label_update__pipeline__last_s1 last_s1(
-        .d(last_s1$d),
-        .q(last_s1$q),
-        .clock(last_s1$clock)
-    );
-    fcc_label_update__pipeline__first_s1 first_s1(
-        .d(first_s1$d),
-        .q(first_s1$q),
-        .clock(first_s1$clock)
-    );
-    fcc_label_update__pipeline__valid_s2 valid_s2(
-        .d(valid_s2$d),
-        .q(valid_s2$q),
-        .clock(valid_s2$clock)
-    );
-    fcc_label_update__pipeline__word_pos_s2 word_pos_s2(
-        .d(word_pos_s2$d),
-        .q(word_pos_s2$q),
-        .clock(word_pos_s2$clock)
-    );
-    fcc_label_update__pipeline__labels_s2 labels_s2(
-        .d(labels_s2$d),
-        .q(labels_s2$q),
-        .clock(labels_s2$clock)
-    );
-    fcc_label_update__pipeline__last_s2 last_s2(
-        .d(last_s2$d),
-        .q(last_s2$q),
-        .clock(last_s2$clock)
-    );
-    fcc_label_update__pipeline__first_s2 first_s2(
-        .d(first_s2$d),
-        .q(first_s2$q),
-        .clock(first_s2$clock)
-    );
-    fcc_label_update__pipeline__valid_s3 valid_s3(
-        .d(valid_s3$d),
-        .q(valid_s3$q),
-        .clock(valid_s3$clock)
-    );
-    fcc_label_update__pipeline__beat_s3 beat_s3(
-        .d(beat_s3$d),
-        .q(beat_s3$q),
-        .clock(beat_s3$clock)
-    );
-
-    // Update code
-    always @(*) begin
-        active$clock = clk;
-        pixel$clock = clk;
-        beats_left$clock = clk;
-        last_next$clock = clk;
-        first_next$clock = clk;
-        in_flight$clock = clk;
-        valid_s1$clock = clk;
-        word_pos_s1$clock = clk;
-        labels_s1$clock = clk;
-        last_s1$clock = clk;
-        first_s1$clock = clk;
-        valid_s2$clock = clk;
-        word_pos_s2$clock = clk;
-        labels_s2$clock = clk;
-        last_s2$clock = clk;
-        first_s2$clock = clk;
-        valid_s3$clock = clk;
-        beat_s3$clock = clk;
-        active$d = active$q;
-        pixel$d = pixel$q;
-        beats_left$d = beats_left$q;
-        last_next$d = last_next$q;
-        first_next$d = first_next$q;
-        in_flight$d = in_flight$q;
-        valid_s1$d = valid_s1$q;
-        word_pos_s1$d = word_pos_s1$q;
-        labels_s1$d = labels_s1$q;
-        last_s1$d = last_s1$q;
-        first_s1$d = first_s1$q;
-        valid_s2$d = valid_s2$q;
-        word_pos_s2$d = word_pos_s2$q;
-        labels_s2$d = labels_s2$q;
-        last_s2$d = last_s2$q;
-        first_s2$d = first_s2$q;
-        valid_s3$d = valid_s3$q;
-        beat_s3$d = beat_s3$q;
-        issue = active$q & ((in_flight$q < max_in_flight) | beat_done);
-        read_en = issue;
-        read_addr = pixel$q[18:2];
-        valid_s1$d = issue;
-        if (issue) begin
-            word_pos_s1$d = pixel$q[1:0];
-            labels_s1$d = lpb3;
-            last_s1$d = 1'b0;
-            first_s1$d = first_next$q;
-            first_next$d = 1'b0;
-            if (last_next$q) begin
-                labels_s1$d = last_beat_labels;
-                last_s1$d = 1'b1;
-                active$d = 1'b0;
-            end
-            pixel$d = pixel$q + lpb20;
-            beats_left$d = beats_left$q - one20;
-            last_next$d = beats_left$q == one20;
-        end
-        if (issue & ~beat_done) begin
-            in_flight$d = in_flight$q + one3;
-        end
-        if (~issue & beat_done) begin
-            in_flight$d = in_flight$q - one3;
-        end
-        valid_s2$d = valid_s1$q;
-        word_pos_s2$d = word_pos_s1$q;
-        labels_s2$d = labels_s1$q;
-        last_s2$d = last_s1$q;
-        first_s2$d = first_s1$q;
-        code$0 = code_empty;
-        code$1 = code_empty;
-        code$2 = code_empty;
-        code$3 = code_empty;
-        pos_in_word = word_pos_s2$q + slot_off$0;
-        if (pos_in_word == pos$0) begin
-            code$0 = read_data[1:0];
-        end
-        if (pos_in_word == pos$1) begin
-            code$0 = read_data[3:2];
-        end
-        if (pos_in_word == pos$2) begin
-            code$0 = read_data[5:4];
-        end
-        if (pos_in_word == pos$3) begin
-            code$0 = read_data[7:6];
-        end
-        if (slot_idx$0 >= labels_s2$q) begin
-            code$0 = code_empty;
-        end
-        pos_in_word = word_pos_s2$q + slot_off$1;
-        if (pos_in_word == pos$0) begin
-            code$1 = read_data[1:0];
-        end
-        if (pos_in_word == pos$1) begin
-            code$1 = read_data[3:2];
-        end
-        if (pos_in_word == pos$2) begin
-            code$1 = read_data[5:4];
-        end
-        if (pos_in_word == pos$3) begin
-            code$1 = read_data[7:6];
-        end
-        if (slot_idx$1 >= labels_s2$q) begin
-            code$1 = code_empty;
-        end
-        pos_in_word = word_pos_s2$q + slot_off$2;
-        if (pos_in_word == pos$0) begin
-            code$2 = read_data[1:0];
-        end
-        if (pos_in_word == pos$1) begin
-            code$2 = read_data[3:2];
-        end
-        if (pos_in_word == pos$2) begin
-            code$2 = read_data[5:4];
-        end
-        if (pos_in_word == pos$3) begin
-            code$2 = read_data[7:6];
-        end
-        if (slot_idx$2 >= labels_s2$q) begin
-            code$2 = code_empty;
-        end
-        pos_in_word = word_pos_s2$q + slot_off$3;
-        if (pos_in_word == pos$0) begin
-            code$3 = read_data[1:0];
-        end
-        if (pos_in_word == pos$1) begin
-            code$3 = read_data[3:2];
-        end
-        if (pos_in_word == pos$2) begin
-            code$3 = read_data[5:4];
-        end
-        if (pos_in_word == pos$3) begin
-            code$3 = read_data[7:6];
-        end
-        if (slot_idx$3 >= labels_s2$q) begin
-            code$3 = code_empty;
-        end
-        run_src$0 = src_carried;
-        if (first_s2$q) begin
-            run_src$0 = src_zero;
-        end
-        new_count$0 = zero3;
-        run_src$1 = run_src$0;
-        new_count$1 = new_count$0;
-        if (code$0 == code_labelled) begin
-            run_src$1 = new_count$0 + src_new;
-            new_count$1 = new_count$0 + one3;
-        end
-        if (code$0 == code_unlabelled) begin
-            run_src$1 = src_zero;
-        end
-        slot_src$0 = run_src$1;
-        if (code$0 == code_empty) begin
-            slot_src$0 = src_zero;
-        end
-        run_src$2 = run_src$1;
-        new_count$2 = new_count$1;
-        if (code$1 == code_labelled) begin
-            run_src$2 = new_count$1 + src_new;
-            new_count$2 = new_count$1 + one3;
-        end
-        if (code$1 == code_unlabelled) begin
-            run_src$2 = src_zero;
-        end
-        slot_src$1 = run_src$2;
-        if (code$1 == code_empty) begin
-            slot_src$1 = src_zero;
-        end
-        run_src$3 = run_src$2;
-        new_count$3 = new_count$2;
-        if (code$2 == code_labelled) begin
-            run_src$3 = new_count$2 + src_new;
-            new_count$3 = new_count$2 + one3;
-        end
-        if (code$2 == code_unlabelled) begin
-            run_src$3 = src_zero;
-        end
-        slot_src$2 = run_src$3;
-        if (code$2 == code_empty) begin
-            slot_src$2 = src_zero;
-        end
-        run_src$4 = run_src$3;
-        new_count$4 = new_count$3;
-        if (code$3 == code_labelled) begin
-            run_src$4 = new_count$3 + src_new;
-            new_count$4 = new_count$3 + one3;
-        end
-        if (code$3 == code_unlabelled) begin
-            run_src$4 = src_zero;
-        end
-        slot_src$3 = run_src$4;
-        if (code$3 == code_empty) begin
-            slot_src$3 = src_zero;
-        end
-        valid_s3$d = valid_s2$q;
-        beat_s3$d[2:0] = slot_src$0;
-        beat_s3$d[5:3] = slot_src$1;
-        beat_s3$d[8:6] = slot_src$2;
-        beat_s3$d[11:9] = slot_src$3;
-        beat_s3$d[14:12] = run_src$4;
-        beat_s3$d[17:15] = new_count$4;
-        beat_s3$d[25:18] = keep_n$0;
-        if (labels_s2$q == labels$0) begin
-            beat_s3$d[25:18] = keep_n$0;
-        end
-        if (labels_s2$q == labels$1) begin
-            beat_s3$d[25:18] = keep_n$1;
-        end
-        if (labels_s2$q == labels$2) begin
-            beat_s3$d[25:18] = keep_n$2;
-        end
-        if (labels_s2$q == labels$3) begin
-            beat_s3$d[25:18] = keep_n$3;
-        end
-        if (labels_s2$q == labels$4) begin
-            beat_s3$d[25:18] = keep_n$4;
-        end
-        beat_s3$d[26:26] = last_s2$q;
-        beat_valid = valid_s3$q;
-        beat = beat_s3$q;
-        if (start) begin
-            active$d = 1'b1;
-            pixel$d = zero20;
-            beats_left$d = beats_m1;
-            last_next$d = beats_m1 == zero20;
-            first_next$d = 1'b1;
-            in_flight$d = zero3;
-            valid_s1$d = 1'b0;
-            valid_s2$d = 1'b0;
-            valid_s3$d = 1'b0;
-        end
-        if (rst) begin
-            active$d = 1'b0;
-            in_flight$d = zero3;
-            valid_s1$d = 1'b0;
-            valid_s2$d = 1'b0;
-            valid_s3$d = 1'b0;
-        end
-    end
-
-endmodule // fcc_label_update__pipeline
-
-
-module fcc_label_update__pipeline__active(d,q,clock);
+module fcc_label_update__lastb_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -8855,29 +8347,257 @@ module fcc_label_update__pipeline__active(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_label_update__pipeline__active
+endmodule // fcc_label_update__lastb_k7_668cf05b
 
 
-module fcc_label_update__pipeline__beat_s3(d,q,clock);
+module fcc_label_update__o_data_k7_668cf05b(d,q,clock);
 
     // Module arguments
-    input wire  [26:0] d;
-    output reg  [26:0] q;
+    input wire  [63:0] d;
+    output reg  [63:0] q;
     input wire  clock;
 
     // Update code (custom)
     initial begin
-       q = 27'h0;
+       q = 64'h0;
     end
 
     always @(posedge clock) begin
        q <= d;
     end
 
-endmodule // fcc_label_update__pipeline__beat_s3
+endmodule // fcc_label_update__o_data_k7_668cf05b
 
 
-module fcc_label_update__pipeline__beats_left(d,q,clock);
+module fcc_label_update__o_keep_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__o_keep_k7_668cf05b
+
+
+module fcc_label_update__o_last_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__o_last_k7_668cf05b
+
+
+module fcc_label_update__o_valid_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__o_valid_k7_668cf05b
+
+
+module fcc_label_update__outst_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__outst_k7_668cf05b
+
+
+module fcc_label_update__r1_last_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__r1_last_k7_668cf05b
+
+
+module fcc_label_update__r1_n_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__r1_n_k7_668cf05b
+
+
+module fcc_label_update__r1_sub_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__r1_sub_k7_668cf05b
+
+
+module fcc_label_update__r1v_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__r1v_k7_668cf05b
+
+
+module fcc_label_update__r2_last_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__r2_last_k7_668cf05b
+
+
+module fcc_label_update__r2_n_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__r2_n_k7_668cf05b
+
+
+module fcc_label_update__r2_sub_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__r2_sub_k7_668cf05b
+
+
+module fcc_label_update__r2v_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__r2v_k7_668cf05b
+
+
+module fcc_label_update__rpix_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [19:0] d;
@@ -8893,459 +8613,10 @@ module fcc_label_update__pipeline__beats_left(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_label_update__pipeline__beats_left
+endmodule // fcc_label_update__rpix_k7_668cf05b
 
 
-module fcc_label_update__pipeline__first_next(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__pipeline__first_next
-
-
-module fcc_label_update__pipeline__first_s1(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__pipeline__first_s1
-
-
-module fcc_label_update__pipeline__first_s2(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__pipeline__first_s2
-
-
-module fcc_label_update__pipeline__in_flight(d,q,clock);
-
-    // Module arguments
-    input wire  [2:0] d;
-    output reg  [2:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 3'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__pipeline__in_flight
-
-
-module fcc_label_update__pipeline__labels_s1(d,q,clock);
-
-    // Module arguments
-    input wire  [2:0] d;
-    output reg  [2:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 3'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__pipeline__labels_s1
-
-
-module fcc_label_update__pipeline__labels_s2(d,q,clock);
-
-    // Module arguments
-    input wire  [2:0] d;
-    output reg  [2:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 3'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__pipeline__labels_s2
-
-
-module fcc_label_update__pipeline__last_next(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__pipeline__last_next
-
-
-module fcc_label_update__pipeline__last_s1(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__pipeline__last_s1
-
-
-module fcc_label_update__pipeline__last_s2(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__pipeline__last_s2
-
-
-module fcc_label_update__pipeline__pixel(d,q,clock);
-
-    // Module arguments
-    input wire  [19:0] d;
-    output reg  [19:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 20'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__pipeline__pixel
-
-
-module fcc_label_update__pipeline__valid_s1(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__pipeline__valid_s1
-
-
-module fcc_label_update__pipeline__valid_s2(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__pipeline__valid_s2
-
-
-module fcc_label_update__pipeline__valid_s3(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__pipeline__valid_s3
-
-
-module fcc_label_update__pipeline__word_pos_s1(d,q,clock);
-
-    // Module arguments
-    input wire  [1:0] d;
-    output reg  [1:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 2'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__pipeline__word_pos_s1
-
-
-module fcc_label_update__pipeline__word_pos_s2(d,q,clock);
-
-    // Module arguments
-    input wire  [1:0] d;
-    output reg  [1:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 2'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__pipeline__word_pos_s2
-
-
-module fcc_label_update__queue(clk,rst,clear,in_valid,in_beat,pop,head_valid,head);
-
-    // Module arguments
-    input wire  clk;
-    input wire  rst;
-    input wire  clear;
-    input wire  in_valid;
-    input wire  [26:0] in_beat;
-    input wire  pop;
-    output reg  head_valid;
-    output reg  [26:0] head;
-
-    // Constant declarations
-    localparam  count_is$0 = 3'b0;
-    localparam  entry_is$0 = 2'b0;
-    localparam  entry_is$1 = 2'b1;
-    localparam  entry_is$2 = 2'b10;
-    localparam  entry_is$3 = 2'b11;
-    localparam  one = 3'b1;
-    localparam  one2 = 2'b1;
-
-    // Stub signals
-    reg  [26:0] entries$0$d;
-    wire  [26:0] entries$0$q;
-    reg  entries$0$clock;
-    reg  [26:0] entries$1$d;
-    wire  [26:0] entries$1$q;
-    reg  entries$1$clock;
-    reg  [26:0] entries$2$d;
-    wire  [26:0] entries$2$q;
-    reg  entries$2$clock;
-    reg  [26:0] entries$3$d;
-    wire  [26:0] entries$3$q;
-    reg  entries$3$clock;
-    reg  [2:0] count$d;
-    wire  [2:0] count$q;
-    reg  count$clock;
-    reg  [1:0] read_entry$d;
-    wire  [1:0] read_entry$q;
-    reg  read_entry$clock;
-    reg  [1:0] write_entry$d;
-    wire  [1:0] write_entry$q;
-    reg  write_entry$clock;
-
-    // Sub module instances
-    fcc_label_update__queue__entries__0 entries$0(
-        .d(entries$0$d),
-        .q(entries$0$q),
-        .clock(entries$0$clock)
-    );
-    fcc_label_update__queue__entries__1 entries$1(
-        .d(entries$1$d),
-        .q(entries$1$q),
-        .clock(entries$1$clock)
-    );
-    fcc_label_update__queue__entries__2 entries$2(
-        .d(entries$2$d),
-        .q(entries$2$q),
-        .clock(entries$2$clock)
-    );
-    fcc_label_update__queue__entries__3 entries$3(
-        .d(entries$3$d),
-        .q(entries$3$q),
-        .clock(entries$3$clock)
-    );
-    fcc_label_update__queue__count count(
-        .d(count$d),
-        .q(count$q),
-        .clock(count$clock)
-    );
-    fcc_label_update__queue__read_entry read_entry(
-        .d(read_entry$d),
-        .q(read_entry$q),
-        .clock(read_entry$clock)
-    );
-    fcc_label_update__queue__write_entry write_entry(
-        .d(write_entry$d),
-        .q(write_entry$q),
-        .clock(write_entry$clock)
-    );
-
-    // Update code
-    always @(*) begin
-        count$clock = clk;
-        read_entry$clock = clk;
-        write_entry$clock = clk;
-        count$d = count$q;
-        read_entry$d = read_entry$q;
-        write_entry$d = write_entry$q;
-        entries$0$clock = clk;
-        entries$0$d = entries$0$q;
-        entries$1$clock = clk;
-        entries$1$d = entries$1$q;
-        entries$2$clock = clk;
-        entries$2$d = entries$2$q;
-        entries$3$clock = clk;
-        entries$3$d = entries$3$q;
-        head_valid = count$q != count_is$0;
-        head = entries$0$q;
-        if (read_entry$q == entry_is$0) begin
-            head = entries$0$q;
-        end
-        if (read_entry$q == entry_is$1) begin
-            head = entries$1$q;
-        end
-        if (read_entry$q == entry_is$2) begin
-            head = entries$2$q;
-        end
-        if (read_entry$q == entry_is$3) begin
-            head = entries$3$q;
-        end
-        if (in_valid) begin
-            if (write_entry$q == entry_is$0) begin
-                entries$0$d = in_beat;
-            end
-            if (write_entry$q == entry_is$1) begin
-                entries$1$d = in_beat;
-            end
-            if (write_entry$q == entry_is$2) begin
-                entries$2$d = in_beat;
-            end
-            if (write_entry$q == entry_is$3) begin
-                entries$3$d = in_beat;
-            end
-            write_entry$d = write_entry$q + one2;
-        end
-        if (pop) begin
-            read_entry$d = read_entry$q + one2;
-        end
-        if (in_valid & ~pop) begin
-            count$d = count$q + one;
-        end
-        if (~in_valid & pop) begin
-            count$d = count$q - one;
-        end
-        if (clear | rst) begin
-            count$d = count_is$0;
-            read_entry$d = entry_is$0;
-            write_entry$d = entry_is$0;
-        end
-    end
-
-endmodule // fcc_label_update__queue
-
-
-module fcc_label_update__queue__count(d,q,clock);
-
-    // Module arguments
-    input wire  [2:0] d;
-    output reg  [2:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 3'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__queue__count
-
-
-module fcc_label_update__queue__entries__0(d,q,clock);
+module fcc_label_update__sk__0_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [26:0] d;
@@ -9361,29 +8632,10 @@ module fcc_label_update__queue__entries__0(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_label_update__queue__entries__0
+endmodule // fcc_label_update__sk__0_k7_668cf05b
 
 
-module fcc_label_update__queue__entries__1(d,q,clock);
-
-    // Module arguments
-    input wire  [26:0] d;
-    output reg  [26:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 27'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__queue__entries__1
-
-
-module fcc_label_update__queue__entries__2(d,q,clock);
+module fcc_label_update__sk__1_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [26:0] d;
@@ -9399,10 +8651,10 @@ module fcc_label_update__queue__entries__2(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_label_update__queue__entries__2
+endmodule // fcc_label_update__sk__1_k7_668cf05b
 
 
-module fcc_label_update__queue__entries__3(d,q,clock);
+module fcc_label_update__sk__2_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [26:0] d;
@@ -9418,304 +8670,29 @@ module fcc_label_update__queue__entries__3(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_label_update__queue__entries__3
+endmodule // fcc_label_update__sk__2_k7_668cf05b
 
 
-module fcc_label_update__queue__read_entry(d,q,clock);
+module fcc_label_update__sk__3_k7_668cf05b(d,q,clock);
 
     // Module arguments
-    input wire  [1:0] d;
-    output reg  [1:0] q;
+    input wire  [26:0] d;
+    output reg  [26:0] q;
     input wire  clock;
 
     // Update code (custom)
     initial begin
-       q = 2'h0;
+       q = 27'h0;
     end
 
     always @(posedge clock) begin
        q <= d;
     end
 
-endmodule // fcc_label_update__queue__read_entry
+endmodule // fcc_label_update__sk__3_k7_668cf05b
 
 
-module fcc_label_update__queue__write_entry(d,q,clock);
-
-    // Module arguments
-    input wire  [1:0] d;
-    output reg  [1:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 2'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__queue__write_entry
-
-
-module fcc_label_update__writer(clk,rst,pixel_valid,pixel_code,pixel_last,write_en,write_addr,write_data,beats_m1,last_beat_labels);
-
-    // Module arguments
-    input wire  clk;
-    input wire  rst;
-    input wire  pixel_valid;
-    input wire  [1:0] pixel_code;
-    input wire  pixel_last;
-    output reg  write_en;
-    output reg  [16:0] write_addr;
-    output reg  [7:0] write_data;
-    output reg  [19:0] beats_m1;
-    output reg  [2:0] last_beat_labels;
-
-    // Constant declarations
-    localparam  pos$0 = 2'b0;
-    localparam  pos$1 = 2'b1;
-    localparam  pos$2 = 2'b10;
-    localparam  pos$3 = 2'b11;
-    localparam  last_labels$0 = 3'b1;
-    localparam  last_labels$1 = 3'b10;
-    localparam  last_labels$2 = 3'b11;
-    localparam  last_labels$3 = 3'b100;
-    localparam  lpb_log = 2'b10;
-    localparam  lpb_m1 = 2'b11;
-    localparam  one17 = 17'b1;
-    localparam  zero17 = 17'b0;
-    localparam  one20 = 20'h1;
-    localparam  zero20 = 20'h0;
-
-    // Stub signals
-    reg  [1:0] code0$d;
-    wire  [1:0] code0$q;
-    reg  code0$clock;
-    reg  [1:0] code1$d;
-    wire  [1:0] code1$q;
-    reg  code1$clock;
-    reg  [1:0] code2$d;
-    wire  [1:0] code2$q;
-    reg  code2$clock;
-    reg  [1:0] word_pos$d;
-    wire  [1:0] word_pos$q;
-    reg  word_pos$clock;
-    reg  [16:0] word_addr$d;
-    wire  [16:0] word_addr$q;
-    reg  word_addr$clock;
-    reg  [19:0] pixel_count$d;
-    wire  [19:0] pixel_count$q;
-    reg  pixel_count$clock;
-    reg  [19:0] frame_beats_m1$d;
-    wire  [19:0] frame_beats_m1$q;
-    reg  frame_beats_m1$clock;
-    reg  [2:0] frame_last_labels$d;
-    wire  [2:0] frame_last_labels$q;
-    reg  frame_last_labels$clock;
-
-    // Local signals
-    reg  [1:0] last_beat_pos;
-
-    // Sub module instances
-    fcc_label_update__writer__code0 code0(
-        .d(code0$d),
-        .q(code0$q),
-        .clock(code0$clock)
-    );
-    fcc_label_update__writer__code1 code1(
-        .d(code1$d),
-        .q(code1$q),
-        .clock(code1$clock)
-    );
-    fcc_label_update__writer__code2 code2(
-        .d(code2$d),
-        .q(code2$q),
-        .clock(code2$clock)
-    );
-    fcc_label_update__writer__word_pos word_pos(
-        .d(word_pos$d),
-        .q(word_pos$q),
-        .clock(word_pos$clock)
-    );
-    fcc_label_update__writer__word_addr word_addr(
-        .d(word_addr$d),
-        .q(word_addr$q),
-        .clock(word_addr$clock)
-    );
-    fcc_label_update__writer__pixel_count pixel_count(
-        .d(pixel_count$d),
-        .q(pixel_count$q),
-        .clock(pixel_count$clock)
-    );
-    fcc_label_update__writer__frame_beats_m1 frame_beats_m1(
-        .d(frame_beats_m1$d),
-        .q(frame_beats_m1$q),
-        .clock(frame_beats_m1$clock)
-    );
-    fcc_label_update__writer__frame_last_labels frame_last_labels(
-        .d(frame_last_labels$d),
-        .q(frame_last_labels$q),
-        .clock(frame_last_labels$clock)
-    );
-
-    // Update code
-    always @(*) begin
-        code0$clock = clk;
-        code1$clock = clk;
-        code2$clock = clk;
-        word_pos$clock = clk;
-        word_addr$clock = clk;
-        pixel_count$clock = clk;
-        frame_beats_m1$clock = clk;
-        frame_last_labels$clock = clk;
-        code0$d = code0$q;
-        code1$d = code1$q;
-        code2$d = code2$q;
-        word_pos$d = word_pos$q;
-        word_addr$d = word_addr$q;
-        pixel_count$d = pixel_count$q;
-        frame_beats_m1$d = frame_beats_m1$q;
-        frame_last_labels$d = frame_last_labels$q;
-        last_beat_pos = pixel_count$q[1:0] & lpb_m1;
-        write_en = 1'b0;
-        write_addr = word_addr$q;
-        write_data[1:0] = code0$q;
-        write_data[3:2] = code1$q;
-        write_data[5:4] = code2$q;
-        write_data[7:6] = pixel_code;
-        if (word_pos$q == pos$0) begin
-            write_data[1:0] = pixel_code;
-        end
-        if (word_pos$q == pos$1) begin
-            write_data[3:2] = pixel_code;
-        end
-        if (word_pos$q == pos$2) begin
-            write_data[5:4] = pixel_code;
-        end
-        if (pixel_valid) begin
-            if (word_pos$q == pos$0) begin
-                code0$d = pixel_code;
-            end
-            if (word_pos$q == pos$1) begin
-                code1$d = pixel_code;
-            end
-            if (word_pos$q == pos$2) begin
-                code2$d = pixel_code;
-            end
-            word_pos$d = word_pos$q + pos$1;
-            if ((word_pos$q == pos$3) | pixel_last) begin
-                write_en = 1'b1;
-                word_addr$d = word_addr$q + one17;
-            end
-            pixel_count$d = pixel_count$q + one20;
-            if (pixel_last) begin
-                word_pos$d = pos$0;
-                word_addr$d = zero17;
-                pixel_count$d = zero20;
-                frame_beats_m1$d = pixel_count$q >> lpb_log;
-                frame_last_labels$d = last_labels$0;
-                if (last_beat_pos == pos$1) begin
-                    frame_last_labels$d = last_labels$1;
-                end
-                if (last_beat_pos == pos$2) begin
-                    frame_last_labels$d = last_labels$2;
-                end
-                if (last_beat_pos == pos$3) begin
-                    frame_last_labels$d = last_labels$3;
-                end
-            end
-        end
-        if (rst) begin
-            word_pos$d = pos$0;
-            word_addr$d = zero17;
-            pixel_count$d = zero20;
-        end
-        beats_m1 = frame_beats_m1$q;
-        last_beat_labels = frame_last_labels$q;
-    end
-
-endmodule // fcc_label_update__writer
-
-
-module fcc_label_update__writer__code0(d,q,clock);
-
-    // Module arguments
-    input wire  [1:0] d;
-    output reg  [1:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 2'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__writer__code0
-
-
-module fcc_label_update__writer__code1(d,q,clock);
-
-    // Module arguments
-    input wire  [1:0] d;
-    output reg  [1:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 2'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__writer__code1
-
-
-module fcc_label_update__writer__code2(d,q,clock);
-
-    // Module arguments
-    input wire  [1:0] d;
-    output reg  [1:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 2'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__writer__code2
-
-
-module fcc_label_update__writer__frame_beats_m1(d,q,clock);
-
-    // Module arguments
-    input wire  [19:0] d;
-    output reg  [19:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 20'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__writer__frame_beats_m1
-
-
-module fcc_label_update__writer__frame_last_labels(d,q,clock);
+module fcc_label_update__skn_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [2:0] d;
@@ -9731,29 +8708,29 @@ module fcc_label_update__writer__frame_last_labels(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_label_update__writer__frame_last_labels
+endmodule // fcc_label_update__skn_k7_668cf05b
 
 
-module fcc_label_update__writer__pixel_count(d,q,clock);
+module fcc_label_update__u_k7_668cf05b(d,q,clock);
 
     // Module arguments
-    input wire  [19:0] d;
-    output reg  [19:0] q;
+    input wire  [2:0] d;
+    output reg  [2:0] q;
     input wire  clock;
 
     // Update code (custom)
     initial begin
-       q = 20'h0;
+       q = 3'h0;
     end
 
     always @(posedge clock) begin
        q <= d;
     end
 
-endmodule // fcc_label_update__writer__pixel_count
+endmodule // fcc_label_update__u_k7_668cf05b
 
 
-module fcc_label_update__writer__word_addr(d,q,clock);
+module fcc_label_update__waddr_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [16:0] d;
@@ -9769,10 +8746,29 @@ module fcc_label_update__writer__word_addr(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_label_update__writer__word_addr
+endmodule // fcc_label_update__waddr_k7_668cf05b
 
 
-module fcc_label_update__writer__word_pos(d,q,clock);
+module fcc_label_update__wcnt_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [19:0] d;
+    output reg  [19:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 20'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__wcnt_k7_668cf05b
+
+
+module fcc_label_update__ws0_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [1:0] d;
@@ -9788,10 +8784,67 @@ module fcc_label_update__writer__word_pos(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_label_update__writer__word_pos
+endmodule // fcc_label_update__ws0_k7_668cf05b
 
 
-module fcc_top__last_col(d,q,clock);
+module fcc_label_update__ws1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__ws1_k7_668cf05b
+
+
+module fcc_label_update__ws2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__ws2_k7_668cf05b
+
+
+module fcc_label_update__wsub_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__wsub_k7_668cf05b
+
+
+module fcc_top__last_col_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [11:0] d;
@@ -9807,10 +8860,10 @@ module fcc_top__last_col(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_top__last_col
+endmodule // fcc_top__last_col_k7_668cf05b
 
 
-module fcc_top__last_seen(d,q,clock);
+module fcc_top__last_seen_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -9826,10 +8879,10 @@ module fcc_top__last_seen(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_top__last_seen
+endmodule // fcc_top__last_seen_k7_668cf05b
 
 
-module fcc_merge_table(clk,rst,jv,ja,jb,jsame,jtake,init_busy,union_idle,flat_start,provisional,fv,fval,gear_used,clusters);
+module fcc_merge_table_k7_668cf05b(clk,rst,jv,ja,jb,jsame,jtake,init_busy,union_idle,flat_start,provisional,fv,fval,gear_used,clusters);
 
     // Module arguments
     input wire  clk;
@@ -9848,624 +8901,865 @@ module fcc_merge_table(clk,rst,jv,ja,jb,jsame,jtake,init_busy,union_idle,flat_st
     input wire  [3:0] gear_used;
     output reg  [15:0] clusters;
 
-    // Enums
-    localparam MergeMode$Init = 0;
-    localparam MergeMode$Union = 1;
-    localparam MergeMode$Flatten = 2;
-
-    // Stub signals
-    reg  [1:0] mode$d;
-    wire  [1:0] mode$q;
-    reg  mode$clock;
-    reg  table_init$clk;
-    reg  table_init$rst;
-    reg  table_init$active;
-    wire  [15:0] table_init$write_addr;
-    wire  table_init$done;
-    reg  union_engine$clk;
-    reg  union_engine$rst;
-    reg  union_engine$active;
-    reg  union_engine$join_valid;
-    reg  [15:0] union_engine$join_a;
-    reg  [15:0] union_engine$join_b;
-    reg  union_engine$join_same;
-    wire  union_engine$join_take;
-    reg  union_engine$word_root;
-    reg  [15:0] union_engine$word_parent;
-    wire  union_engine$read_en;
-    wire  [15:0] union_engine$read_addr;
-    wire  union_engine$link_en;
-    wire  [15:0] union_engine$link_addr;
-    wire  [15:0] union_engine$link_data;
-    wire  union_engine$idle;
-    reg  flatten$clk;
-    reg  flatten$rst;
-    reg  flatten$active;
-    reg  flatten$start;
-    wire  flatten$done;
-    reg  [16:0] flatten$provisional;
-    reg  [3:0] flatten$gear_used;
-    reg  flatten$word_root;
-    reg  [15:0] flatten$word_parent;
-    wire  flatten$read_en;
-    wire  [15:0] flatten$read_addr;
-    wire  flatten$write_en;
-    wire  [15:0] flatten$write_addr;
-    wire  flatten$out_valid;
-    wire  [15:0] flatten$out_label;
-    wire  [15:0] flatten$clusters;
-    reg  ports$clk;
-    reg  ports$rst;
-    reg  ports$init_active;
-    reg  ports$flatten_active;
-    reg  [15:0] ports$init_write_addr;
-    reg  ports$union_read_en;
-    reg  [15:0] ports$union_read_addr;
-    reg  ports$link_en;
-    reg  [15:0] ports$link_addr;
-    reg  [15:0] ports$link_data;
-    reg  ports$flatten_read_en;
-    reg  [15:0] ports$flatten_read_addr;
-    reg  ports$flatten_write_en;
-    reg  [15:0] ports$flatten_write_addr;
-    wire  ports$word_root;
-    wire  [15:0] ports$word_parent;
-
-    // Local signals
-    reg  init_active;
-    reg  union_active;
-    reg  flatten_active;
-
-    // Sub module instances
-    fcc_merge_table__mode mode(
-        .d(mode$d),
-        .q(mode$q),
-        .clock(mode$clock)
-    );
-    fcc_merge_table__table_init table_init(
-        .clk(table_init$clk),
-        .rst(table_init$rst),
-        .active(table_init$active),
-        .write_addr(table_init$write_addr),
-        .done(table_init$done)
-    );
-    fcc_merge_table__union_engine union_engine(
-        .clk(union_engine$clk),
-        .rst(union_engine$rst),
-        .active(union_engine$active),
-        .join_valid(union_engine$join_valid),
-        .join_a(union_engine$join_a),
-        .join_b(union_engine$join_b),
-        .join_same(union_engine$join_same),
-        .join_take(union_engine$join_take),
-        .word_root(union_engine$word_root),
-        .word_parent(union_engine$word_parent),
-        .read_en(union_engine$read_en),
-        .read_addr(union_engine$read_addr),
-        .link_en(union_engine$link_en),
-        .link_addr(union_engine$link_addr),
-        .link_data(union_engine$link_data),
-        .idle(union_engine$idle)
-    );
-    fcc_merge_table__flatten flatten(
-        .clk(flatten$clk),
-        .rst(flatten$rst),
-        .active(flatten$active),
-        .start(flatten$start),
-        .done(flatten$done),
-        .provisional(flatten$provisional),
-        .gear_used(flatten$gear_used),
-        .word_root(flatten$word_root),
-        .word_parent(flatten$word_parent),
-        .read_en(flatten$read_en),
-        .read_addr(flatten$read_addr),
-        .write_en(flatten$write_en),
-        .write_addr(flatten$write_addr),
-        .out_valid(flatten$out_valid),
-        .out_label(flatten$out_label),
-        .clusters(flatten$clusters)
-    );
-    fcc_merge_table__ports ports(
-        .clk(ports$clk),
-        .rst(ports$rst),
-        .init_active(ports$init_active),
-        .flatten_active(ports$flatten_active),
-        .init_write_addr(ports$init_write_addr),
-        .union_read_en(ports$union_read_en),
-        .union_read_addr(ports$union_read_addr),
-        .link_en(ports$link_en),
-        .link_addr(ports$link_addr),
-        .link_data(ports$link_data),
-        .flatten_read_en(ports$flatten_read_en),
-        .flatten_read_addr(ports$flatten_read_addr),
-        .flatten_write_en(ports$flatten_write_en),
-        .flatten_write_addr(ports$flatten_write_addr),
-        .word_root(ports$word_root),
-        .word_parent(ports$word_parent)
-    );
-
-    // Update code
-    always @(*) begin
-        mode$clock = clk;
-        mode$d = mode$q;
-        table_init$clk = clk;
-        union_engine$clk = clk;
-        flatten$clk = clk;
-        ports$clk = clk;
-        table_init$rst = rst;
-        union_engine$rst = rst;
-        flatten$rst = rst;
-        ports$rst = rst;
-        init_active = 1'b0;
-        union_active = 1'b0;
-        flatten_active = 1'b0;
-        case (mode$q)
-            MergeMode$Init:
-                begin
-                    init_active = 1'b1;
-                end
-            MergeMode$Union:
-                begin
-                    union_active = 1'b1;
-                end
-            MergeMode$Flatten:
-                begin
-                    flatten_active = 1'b1;
-                end
-        endcase
-        if (table_init$done | flatten$done) begin
-            mode$d = MergeMode$Union;
-        end
-        if (flat_start) begin
-            mode$d = MergeMode$Flatten;
-        end
-        if (rst) begin
-            mode$d = MergeMode$Init;
-        end
-        table_init$active = init_active;
-        union_engine$active = union_active;
-        flatten$active = flatten_active;
-        ports$init_active = init_active;
-        ports$flatten_active = flatten_active;
-        init_busy = init_active;
-        union_engine$join_valid = jv;
-        union_engine$join_a = ja;
-        union_engine$join_b = jb;
-        union_engine$join_same = jsame;
-        jtake = union_engine$join_take;
-        union_idle = union_engine$idle;
-        union_engine$word_root = ports$word_root;
-        union_engine$word_parent = ports$word_parent;
-        flatten$start = flat_start;
-        flatten$provisional = provisional;
-        flatten$gear_used = gear_used;
-        flatten$word_root = ports$word_root;
-        flatten$word_parent = ports$word_parent;
-        fv = flatten$out_valid;
-        fval = flatten$out_label;
-        clusters = flatten$clusters;
-        ports$init_write_addr = table_init$write_addr;
-        ports$union_read_en = union_engine$read_en;
-        ports$union_read_addr = union_engine$read_addr;
-        ports$link_en = union_engine$link_en;
-        ports$link_addr = union_engine$link_addr;
-        ports$link_data = union_engine$link_data;
-        ports$flatten_read_en = flatten$read_en;
-        ports$flatten_read_addr = flatten$read_addr;
-        ports$flatten_write_en = flatten$write_en;
-        ports$flatten_write_addr = flatten$write_addr;
-    end
-
-endmodule // fcc_merge_table
-
-
-module fcc_merge_table__flatten(clk,rst,active,start,done,provisional,gear_used,word_root,word_parent,read_en,read_addr,write_en,write_addr,out_valid,out_label,clusters);
-
-    // Module arguments
-    input wire  clk;
-    input wire  rst;
-    input wire  active;
-    input wire  start;
-    output reg  done;
-    input wire  [16:0] provisional;
-    input wire  [3:0] gear_used;
-    input wire  word_root;
-    input wire  [15:0] word_parent;
-    output reg  read_en;
-    output reg  [15:0] read_addr;
-    output reg  write_en;
-    output reg  [15:0] write_addr;
-    output reg  out_valid;
-    output reg  [15:0] out_label;
-    output reg  [15:0] clusters;
-
     // Constant declarations
-    localparam  gear_room = 4'h6;
-    localparam  zero4 = 4'h0;
-    localparam  one4 = 4'h1;
+    localparam  m_union = 2'b0;
+    localparam  m_init = 2'b1;
+    localparam  m_flat = 2'b10;
     localparam  zero16 = 16'h0;
     localparam  one16 = 16'h1;
     localparam  two16 = 16'h2;
     localparam  zero17 = 17'b0;
     localparam  one17 = 17'b1;
+    localparam  zero4 = 4'h0;
+    localparam  six4 = 4'h6;
+    localparam  one4 = 4'h1;
+    localparam  last_word = 17'b111111111111111;
 
     // Stub signals
-    reg  compact_ram$clk;
-    reg  compact_ram$read_en;
-    reg  [15:0] compact_ram$read_addr;
-    wire  [15:0] compact_ram$read_data;
-    reg  compact_ram$write_en;
-    reg  [15:0] compact_ram$write_addr;
-    reg  [15:0] compact_ram$write_data;
-    reg  [16:0] next_label$d;
-    wire  [16:0] next_label$q;
-    reg  next_label$clock;
-    reg  [3:0] in_flight$d;
-    wire  [3:0] in_flight$q;
-    reg  in_flight$clock;
-    reg  has_room$d;
-    wire  has_room$q;
-    reg  has_room$clock;
-    reg  more_labels$d;
-    wire  more_labels$q;
-    reg  more_labels$clock;
-    reg  label_valid_s1$d;
-    wire  label_valid_s1$q;
-    reg  label_valid_s1$clock;
-    reg  [15:0] label_s1$d;
-    wire  [15:0] label_s1$q;
-    reg  label_s1$clock;
-    reg  label_valid_s2$d;
-    wire  label_valid_s2$q;
-    reg  label_valid_s2$clock;
-    reg  [15:0] label_s2$d;
-    wire  [15:0] label_s2$q;
-    reg  label_s2$clock;
-    reg  [15:0] label_minus1_s2$d;
-    wire  [15:0] label_minus1_s2$q;
-    reg  label_minus1_s2$clock;
-    reg  [15:0] label_minus2_s2$d;
-    wire  [15:0] label_minus2_s2$q;
-    reg  label_minus2_s2$clock;
-    reg  label_valid_s3$d;
-    wire  label_valid_s3$q;
-    reg  label_valid_s3$clock;
-    reg  [15:0] label_s3$d;
-    wire  [15:0] label_s3$q;
-    reg  label_s3$clock;
-    reg  is_root_s3$d;
-    wire  is_root_s3$q;
-    reg  is_root_s3$clock;
-    reg  [15:0] new_number_s3$d;
-    wire  [15:0] new_number_s3$q;
-    reg  new_number_s3$clock;
-    reg  parent_is_prev_s3$d;
-    wire  parent_is_prev_s3$q;
-    reg  parent_is_prev_s3$clock;
-    reg  parent_is_prev2_s3$d;
-    wire  parent_is_prev2_s3$q;
-    reg  parent_is_prev2_s3$clock;
-    reg  label_valid_s4$d;
-    wire  label_valid_s4$q;
-    reg  label_valid_s4$clock;
-    reg  [15:0] label_s4$d;
-    wire  [15:0] label_s4$q;
-    reg  label_s4$clock;
-    reg  is_root_s4$d;
-    wire  is_root_s4$q;
-    reg  is_root_s4$clock;
-    reg  [15:0] new_number_s4$d;
-    wire  [15:0] new_number_s4$q;
-    reg  new_number_s4$clock;
-    reg  parent_is_prev_s4$d;
-    wire  parent_is_prev_s4$q;
-    reg  parent_is_prev_s4$clock;
-    reg  parent_is_prev2_s4$d;
-    wire  parent_is_prev2_s4$q;
-    reg  parent_is_prev2_s4$clock;
-    reg  [15:0] cluster_count$d;
-    wire  [15:0] cluster_count$q;
-    reg  cluster_count$clock;
-    reg  [15:0] value_prev$d;
-    wire  [15:0] value_prev$q;
-    reg  value_prev$clock;
-    reg  [15:0] value_prev2$d;
-    wire  [15:0] value_prev2$q;
-    reg  value_prev2$clock;
+    reg  t_ram$clk;
+    reg  t_ram$read_en;
+    reg  [15:0] t_ram$read_addr;
+    wire  [15:0] t_ram$read_data;
+    reg  t_ram$write_en;
+    reg  [15:0] t_ram$write_addr;
+    reg  [15:0] t_ram$write_data;
+    reg  r_ram$clk;
+    reg  r_ram$read_en;
+    reg  [15:0] r_ram$read_addr;
+    wire  r_ram$read_data;
+    reg  r_ram$write_en;
+    reg  [15:0] r_ram$write_addr;
+    reg  r_ram$write_data;
+    reg  c_ram$clk;
+    reg  c_ram$read_en;
+    reg  [15:0] c_ram$read_addr;
+    wire  [15:0] c_ram$read_data;
+    reg  c_ram$write_en;
+    reg  [15:0] c_ram$write_addr;
+    reg  [15:0] c_ram$write_data;
+    reg  [1:0] mode$d;
+    wire  [1:0] mode$q;
+    reg  mode$clock;
+    reg  [16:0] ic$d;
+    wire  [16:0] ic$q;
+    reg  ic$clock;
+    reg  njv$d;
+    wire  njv$q;
+    reg  njv$clock;
+    reg  [15:0] nja$d;
+    wire  [15:0] nja$q;
+    reg  nja$clock;
+    reg  [15:0] njb$d;
+    wire  [15:0] njb$q;
+    reg  njb$clock;
+    reg  njs$d;
+    wire  njs$q;
+    reg  njs$clock;
+    reg  busy$d;
+    wire  busy$q;
+    reg  busy$clock;
+    reg  par$d;
+    wire  par$q;
+    reg  par$clock;
+    reg  [15:0] x0$d;
+    wire  [15:0] x0$q;
+    reg  x0$clock;
+    reg  [15:0] x1$d;
+    wire  [15:0] x1$q;
+    reg  x1$clock;
+    reg  d0$d;
+    wire  d0$q;
+    reg  d0$clock;
+    reg  d1$d;
+    wire  d1$q;
+    reg  d1$clock;
+    reg  second$d;
+    wire  second$q;
+    reg  second$clock;
+    reg  ldc$d;
+    wire  ldc$q;
+    reg  ldc$clock;
+    reg  [15:0] pend$d;
+    wire  [15:0] pend$q;
+    reg  pend$clock;
+    reg  [15:0] cr$d;
+    wire  [15:0] cr$q;
+    reg  cr$clock;
+    reg  i1v$d;
+    wire  i1v$q;
+    reg  i1v$clock;
+    reg  i2v$d;
+    wire  i2v$q;
+    reg  i2v$clock;
+    reg  wq_en$d;
+    wire  wq_en$q;
+    reg  wq_en$clock;
+    reg  [15:0] wq_addr$d;
+    wire  [15:0] wq_addr$q;
+    reg  wq_addr$clock;
+    reg  [15:0] wq_data$d;
+    wire  [15:0] wq_data$q;
+    reg  wq_data$clock;
+    reg  [15:0] wq2_data$d;
+    wire  [15:0] wq2_data$q;
+    reg  wq2_data$clock;
+    reg  [15:0] rq$d;
+    wire  [15:0] rq$q;
+    reg  rq$clock;
+    reg  rq_en$d;
+    wire  rq_en$q;
+    reg  rq_en$clock;
+    reg  fw$d;
+    wire  fw$q;
+    reg  fw$clock;
+    reg  [16:0] fl$d;
+    wire  [16:0] fl$q;
+    reg  fl$clock;
+    reg  [3:0] infl$d;
+    wire  [3:0] infl$q;
+    reg  infl$clock;
+    reg  room$d;
+    wire  room$q;
+    reg  room$clock;
+    reg  more$d;
+    wire  more$q;
+    reg  more$clock;
+    reg  f1v$d;
+    wire  f1v$q;
+    reg  f1v$clock;
+    reg  [15:0] f1l$d;
+    wire  [15:0] f1l$q;
+    reg  f1l$clock;
+    reg  f2v$d;
+    wire  f2v$q;
+    reg  f2v$clock;
+    reg  [15:0] f2l$d;
+    wire  [15:0] f2l$q;
+    reg  f2l$clock;
+    reg  [15:0] lm1$d;
+    wire  [15:0] lm1$q;
+    reg  lm1$clock;
+    reg  [15:0] lm2$d;
+    wire  [15:0] lm2$q;
+    reg  lm2$clock;
+    reg  f3v$d;
+    wire  f3v$q;
+    reg  f3v$clock;
+    reg  [15:0] f3l$d;
+    wire  [15:0] f3l$q;
+    reg  f3l$clock;
+    reg  f3root$d;
+    wire  f3root$q;
+    reg  f3root$clock;
+    reg  [15:0] f3rv$d;
+    wire  [15:0] f3rv$q;
+    reg  f3rv$clock;
+    reg  f3d1$d;
+    wire  f3d1$q;
+    reg  f3d1$clock;
+    reg  f3d2$d;
+    wire  f3d2$q;
+    reg  f3d2$clock;
+    reg  f4v$d;
+    wire  f4v$q;
+    reg  f4v$clock;
+    reg  [15:0] f4l$d;
+    wire  [15:0] f4l$q;
+    reg  f4l$clock;
+    reg  f4root$d;
+    wire  f4root$q;
+    reg  f4root$clock;
+    reg  [15:0] f4rv$d;
+    wire  [15:0] f4rv$q;
+    reg  f4rv$clock;
+    reg  f4d1$d;
+    wire  f4d1$q;
+    reg  f4d1$clock;
+    reg  f4d2$d;
+    wire  f4d2$q;
+    reg  f4d2$clock;
+    reg  [15:0] ncl$d;
+    wire  [15:0] ncl$q;
+    reg  ncl$clock;
+    reg  [15:0] lastv$d;
+    wire  [15:0] lastv$q;
+    reg  lastv$clock;
+    reg  [15:0] lastv2$d;
+    wire  [15:0] lastv2$q;
+    reg  lastv2$clock;
 
     // Local signals
+    reg  root;
+    reg  [15:0] parent;
+    reg  cont;
+    reg  found;
+    reg  sd;
+    reg  od;
+    reg  link;
+    reg  start;
+    reg  [15:0] lo;
+    reg  [15:0] hi;
+    reg  re;
+    reg  t_we;
+    reg  [15:0] t_waddr;
+    reg  [15:0] t_wdata;
+    reg  r_wdata;
+    reg  [15:0] raddr;
     reg  issue;
-    reg  [15:0] value;
+    reg  [15:0] val;
 
     // Sub module instances
-    fcc_merge_table__flatten__compact_ram compact_ram(
-        .clk(compact_ram$clk),
-        .read_en(compact_ram$read_en),
-        .read_addr(compact_ram$read_addr),
-        .read_data(compact_ram$read_data),
-        .write_en(compact_ram$write_en),
-        .write_addr(compact_ram$write_addr),
-        .write_data(compact_ram$write_data)
+    fcc_merge_table__t_ram_k7_668cf05b t_ram(
+        .clk(t_ram$clk),
+        .read_en(t_ram$read_en),
+        .read_addr(t_ram$read_addr),
+        .read_data(t_ram$read_data),
+        .write_en(t_ram$write_en),
+        .write_addr(t_ram$write_addr),
+        .write_data(t_ram$write_data)
     );
-    fcc_merge_table__flatten__next_label next_label(
-        .d(next_label$d),
-        .q(next_label$q),
-        .clock(next_label$clock)
+    fcc_merge_table__r_ram_k7_668cf05b r_ram(
+        .clk(r_ram$clk),
+        .read_en(r_ram$read_en),
+        .read_addr(r_ram$read_addr),
+        .read_data(r_ram$read_data),
+        .write_en(r_ram$write_en),
+        .write_addr(r_ram$write_addr),
+        .write_data(r_ram$write_data)
     );
-    fcc_merge_table__flatten__in_flight in_flight(
-        .d(in_flight$d),
-        .q(in_flight$q),
-        .clock(in_flight$clock)
+    fcc_merge_table__c_ram_k7_668cf05b c_ram(
+        .clk(c_ram$clk),
+        .read_en(c_ram$read_en),
+        .read_addr(c_ram$read_addr),
+        .read_data(c_ram$read_data),
+        .write_en(c_ram$write_en),
+        .write_addr(c_ram$write_addr),
+        .write_data(c_ram$write_data)
     );
-    fcc_merge_table__flatten__has_room has_room(
-        .d(has_room$d),
-        .q(has_room$q),
-        .clock(has_room$clock)
+    fcc_merge_table__mode_k7_668cf05b mode(
+        .d(mode$d),
+        .q(mode$q),
+        .clock(mode$clock)
     );
-    fcc_merge_table__flatten__more_labels more_labels(
-        .d(more_labels$d),
-        .q(more_labels$q),
-        .clock(more_labels$clock)
+    fcc_merge_table__ic_k7_668cf05b ic(
+        .d(ic$d),
+        .q(ic$q),
+        .clock(ic$clock)
     );
-    fcc_merge_table__flatten__label_valid_s1 label_valid_s1(
-        .d(label_valid_s1$d),
-        .q(label_valid_s1$q),
-        .clock(label_valid_s1$clock)
+    fcc_merge_table__njv_k7_668cf05b njv(
+        .d(njv$d),
+        .q(njv$q),
+        .clock(njv$clock)
     );
-    fcc_merge_table__flatten__label_s1 label_s1(
-        .d(label_s1$d),
-        .q(label_s1$q),
-        .clock(label_s1$clock)
+    fcc_merge_table__nja_k7_668cf05b nja(
+        .d(nja$d),
+        .q(nja$q),
+        .clock(nja$clock)
     );
-    fcc_merge_table__flatten__label_valid_s2 label_valid_s2(
-        .d(label_valid_s2$d),
-        .q(label_valid_s2$q),
-        .clock(label_valid_s2$clock)
+    fcc_merge_table__njb_k7_668cf05b njb(
+        .d(njb$d),
+        .q(njb$q),
+        .clock(njb$clock)
     );
-    fcc_merge_table__flatten__label_s2 label_s2(
-        .d(label_s2$d),
-        .q(label_s2$q),
-        .clock(label_s2$clock)
+    fcc_merge_table__njs_k7_668cf05b njs(
+        .d(njs$d),
+        .q(njs$q),
+        .clock(njs$clock)
     );
-    fcc_merge_table__flatten__label_minus1_s2 label_minus1_s2(
-        .d(label_minus1_s2$d),
-        .q(label_minus1_s2$q),
-        .clock(label_minus1_s2$clock)
+    fcc_merge_table__busy_k7_668cf05b busy(
+        .d(busy$d),
+        .q(busy$q),
+        .clock(busy$clock)
     );
-    fcc_merge_table__flatten__label_minus2_s2 label_minus2_s2(
-        .d(label_minus2_s2$d),
-        .q(label_minus2_s2$q),
-        .clock(label_minus2_s2$clock)
+    fcc_merge_table__par_k7_668cf05b par(
+        .d(par$d),
+        .q(par$q),
+        .clock(par$clock)
     );
-    fcc_merge_table__flatten__label_valid_s3 label_valid_s3(
-        .d(label_valid_s3$d),
-        .q(label_valid_s3$q),
-        .clock(label_valid_s3$clock)
+    fcc_merge_table__x0_k7_668cf05b x0(
+        .d(x0$d),
+        .q(x0$q),
+        .clock(x0$clock)
     );
-    fcc_merge_table__flatten__label_s3 label_s3(
-        .d(label_s3$d),
-        .q(label_s3$q),
-        .clock(label_s3$clock)
+    fcc_merge_table__x1_k7_668cf05b x1(
+        .d(x1$d),
+        .q(x1$q),
+        .clock(x1$clock)
     );
-    fcc_merge_table__flatten__is_root_s3 is_root_s3(
-        .d(is_root_s3$d),
-        .q(is_root_s3$q),
-        .clock(is_root_s3$clock)
+    fcc_merge_table__d0_k7_668cf05b d0(
+        .d(d0$d),
+        .q(d0$q),
+        .clock(d0$clock)
     );
-    fcc_merge_table__flatten__new_number_s3 new_number_s3(
-        .d(new_number_s3$d),
-        .q(new_number_s3$q),
-        .clock(new_number_s3$clock)
+    fcc_merge_table__d1_k7_668cf05b d1(
+        .d(d1$d),
+        .q(d1$q),
+        .clock(d1$clock)
     );
-    fcc_merge_table__flatten__parent_is_prev_s3 parent_is_prev_s3(
-        .d(parent_is_prev_s3$d),
-        .q(parent_is_prev_s3$q),
-        .clock(parent_is_prev_s3$clock)
+    fcc_merge_table__second_k7_668cf05b second(
+        .d(second$d),
+        .q(second$q),
+        .clock(second$clock)
     );
-    fcc_merge_table__flatten__parent_is_prev2_s3 parent_is_prev2_s3(
-        .d(parent_is_prev2_s3$d),
-        .q(parent_is_prev2_s3$q),
-        .clock(parent_is_prev2_s3$clock)
+    fcc_merge_table__ldc_k7_668cf05b ldc(
+        .d(ldc$d),
+        .q(ldc$q),
+        .clock(ldc$clock)
     );
-    fcc_merge_table__flatten__label_valid_s4 label_valid_s4(
-        .d(label_valid_s4$d),
-        .q(label_valid_s4$q),
-        .clock(label_valid_s4$clock)
+    fcc_merge_table__pend_k7_668cf05b pend(
+        .d(pend$d),
+        .q(pend$q),
+        .clock(pend$clock)
     );
-    fcc_merge_table__flatten__label_s4 label_s4(
-        .d(label_s4$d),
-        .q(label_s4$q),
-        .clock(label_s4$clock)
+    fcc_merge_table__cr_k7_668cf05b cr(
+        .d(cr$d),
+        .q(cr$q),
+        .clock(cr$clock)
     );
-    fcc_merge_table__flatten__is_root_s4 is_root_s4(
-        .d(is_root_s4$d),
-        .q(is_root_s4$q),
-        .clock(is_root_s4$clock)
+    fcc_merge_table__i1v_k7_668cf05b i1v(
+        .d(i1v$d),
+        .q(i1v$q),
+        .clock(i1v$clock)
     );
-    fcc_merge_table__flatten__new_number_s4 new_number_s4(
-        .d(new_number_s4$d),
-        .q(new_number_s4$q),
-        .clock(new_number_s4$clock)
+    fcc_merge_table__i2v_k7_668cf05b i2v(
+        .d(i2v$d),
+        .q(i2v$q),
+        .clock(i2v$clock)
     );
-    fcc_merge_table__flatten__parent_is_prev_s4 parent_is_prev_s4(
-        .d(parent_is_prev_s4$d),
-        .q(parent_is_prev_s4$q),
-        .clock(parent_is_prev_s4$clock)
+    fcc_merge_table__wq_en_k7_668cf05b wq_en(
+        .d(wq_en$d),
+        .q(wq_en$q),
+        .clock(wq_en$clock)
     );
-    fcc_merge_table__flatten__parent_is_prev2_s4 parent_is_prev2_s4(
-        .d(parent_is_prev2_s4$d),
-        .q(parent_is_prev2_s4$q),
-        .clock(parent_is_prev2_s4$clock)
+    fcc_merge_table__wq_addr_k7_668cf05b wq_addr(
+        .d(wq_addr$d),
+        .q(wq_addr$q),
+        .clock(wq_addr$clock)
     );
-    fcc_merge_table__flatten__cluster_count cluster_count(
-        .d(cluster_count$d),
-        .q(cluster_count$q),
-        .clock(cluster_count$clock)
+    fcc_merge_table__wq_data_k7_668cf05b wq_data(
+        .d(wq_data$d),
+        .q(wq_data$q),
+        .clock(wq_data$clock)
     );
-    fcc_merge_table__flatten__value_prev value_prev(
-        .d(value_prev$d),
-        .q(value_prev$q),
-        .clock(value_prev$clock)
+    fcc_merge_table__wq2_data_k7_668cf05b wq2_data(
+        .d(wq2_data$d),
+        .q(wq2_data$q),
+        .clock(wq2_data$clock)
     );
-    fcc_merge_table__flatten__value_prev2 value_prev2(
-        .d(value_prev2$d),
-        .q(value_prev2$q),
-        .clock(value_prev2$clock)
+    fcc_merge_table__rq_k7_668cf05b rq(
+        .d(rq$d),
+        .q(rq$q),
+        .clock(rq$clock)
+    );
+    fcc_merge_table__rq_en_k7_668cf05b rq_en(
+        .d(rq_en$d),
+        .q(rq_en$q),
+        .clock(rq_en$clock)
+    );
+    fcc_merge_table__fw_k7_668cf05b fw(
+        .d(fw$d),
+        .q(fw$q),
+        .clock(fw$clock)
+    );
+    fcc_merge_table__fl_k7_668cf05b fl(
+        .d(fl$d),
+        .q(fl$q),
+        .clock(fl$clock)
+    );
+    fcc_merge_table__infl_k7_668cf05b infl(
+        .d(infl$d),
+        .q(infl$q),
+        .clock(infl$clock)
+    );
+    fcc_merge_table__room_k7_668cf05b room(
+        .d(room$d),
+        .q(room$q),
+        .clock(room$clock)
+    );
+    fcc_merge_table__more_k7_668cf05b more(
+        .d(more$d),
+        .q(more$q),
+        .clock(more$clock)
+    );
+    fcc_merge_table__f1v_k7_668cf05b f1v(
+        .d(f1v$d),
+        .q(f1v$q),
+        .clock(f1v$clock)
+    );
+    fcc_merge_table__f1l_k7_668cf05b f1l(
+        .d(f1l$d),
+        .q(f1l$q),
+        .clock(f1l$clock)
+    );
+    fcc_merge_table__f2v_k7_668cf05b f2v(
+        .d(f2v$d),
+        .q(f2v$q),
+        .clock(f2v$clock)
+    );
+    fcc_merge_table__f2l_k7_668cf05b f2l(
+        .d(f2l$d),
+        .q(f2l$q),
+        .clock(f2l$clock)
+    );
+    fcc_merge_table__lm1_k7_668cf05b lm1(
+        .d(lm1$d),
+        .q(lm1$q),
+        .clock(lm1$clock)
+    );
+    fcc_merge_table__lm2_k7_668cf05b lm2(
+        .d(lm2$d),
+        .q(lm2$q),
+        .clock(lm2$clock)
+    );
+    fcc_merge_table__f3v_k7_668cf05b f3v(
+        .d(f3v$d),
+        .q(f3v$q),
+        .clock(f3v$clock)
+    );
+    fcc_merge_table__f3l_k7_668cf05b f3l(
+        .d(f3l$d),
+        .q(f3l$q),
+        .clock(f3l$clock)
+    );
+    fcc_merge_table__f3root_k7_668cf05b f3root(
+        .d(f3root$d),
+        .q(f3root$q),
+        .clock(f3root$clock)
+    );
+    fcc_merge_table__f3rv_k7_668cf05b f3rv(
+        .d(f3rv$d),
+        .q(f3rv$q),
+        .clock(f3rv$clock)
+    );
+    fcc_merge_table__f3d1_k7_668cf05b f3d1(
+        .d(f3d1$d),
+        .q(f3d1$q),
+        .clock(f3d1$clock)
+    );
+    fcc_merge_table__f3d2_k7_668cf05b f3d2(
+        .d(f3d2$d),
+        .q(f3d2$q),
+        .clock(f3d2$clock)
+    );
+    fcc_merge_table__f4v_k7_668cf05b f4v(
+        .d(f4v$d),
+        .q(f4v$q),
+        .clock(f4v$clock)
+    );
+    fcc_merge_table__f4l_k7_668cf05b f4l(
+        .d(f4l$d),
+        .q(f4l$q),
+        .clock(f4l$clock)
+    );
+    fcc_merge_table__f4root_k7_668cf05b f4root(
+        .d(f4root$d),
+        .q(f4root$q),
+        .clock(f4root$clock)
+    );
+    fcc_merge_table__f4rv_k7_668cf05b f4rv(
+        .d(f4rv$d),
+        .q(f4rv$q),
+        .clock(f4rv$clock)
+    );
+    fcc_merge_table__f4d1_k7_668cf05b f4d1(
+        .d(f4d1$d),
+        .q(f4d1$q),
+        .clock(f4d1$clock)
+    );
+    fcc_merge_table__f4d2_k7_668cf05b f4d2(
+        .d(f4d2$d),
+        .q(f4d2$q),
+        .clock(f4d2$clock)
+    );
+    fcc_merge_table__ncl_k7_668cf05b ncl(
+        .d(ncl$d),
+        .q(ncl$q),
+        .clock(ncl$clock)
+    );
+    fcc_merge_table__lastv_k7_668cf05b lastv(
+        .d(lastv$d),
+        .q(lastv$q),
+        .clock(lastv$clock)
+    );
+    fcc_merge_table__lastv2_k7_668cf05b lastv2(
+        .d(lastv2$d),
+        .q(lastv2$q),
+        .clock(lastv2$clock)
     );
 
     // Update code
     always @(*) begin
-        next_label$clock = clk;
-        in_flight$clock = clk;
-        has_room$clock = clk;
-        more_labels$clock = clk;
-        label_valid_s1$clock = clk;
-        label_s1$clock = clk;
-        label_valid_s2$clock = clk;
-        label_s2$clock = clk;
-        label_minus1_s2$clock = clk;
-        label_minus2_s2$clock = clk;
-        label_valid_s3$clock = clk;
-        label_s3$clock = clk;
-        is_root_s3$clock = clk;
-        new_number_s3$clock = clk;
-        parent_is_prev_s3$clock = clk;
-        parent_is_prev2_s3$clock = clk;
-        label_valid_s4$clock = clk;
-        label_s4$clock = clk;
-        is_root_s4$clock = clk;
-        new_number_s4$clock = clk;
-        parent_is_prev_s4$clock = clk;
-        parent_is_prev2_s4$clock = clk;
-        cluster_count$clock = clk;
-        value_prev$clock = clk;
-        value_prev2$clock = clk;
-        next_label$d = next_label$q;
-        in_flight$d = in_flight$q;
-        has_room$d = has_room$q;
-        more_labels$d = more_labels$q;
-        label_valid_s1$d = label_valid_s1$q;
-        label_s1$d = label_s1$q;
-        label_valid_s2$d = label_valid_s2$q;
-        label_s2$d = label_s2$q;
-        label_minus1_s2$d = label_minus1_s2$q;
-        label_minus2_s2$d = label_minus2_s2$q;
-        label_valid_s3$d = label_valid_s3$q;
-        label_s3$d = label_s3$q;
-        is_root_s3$d = is_root_s3$q;
-        new_number_s3$d = new_number_s3$q;
-        parent_is_prev_s3$d = parent_is_prev_s3$q;
-        parent_is_prev2_s3$d = parent_is_prev2_s3$q;
-        label_valid_s4$d = label_valid_s4$q;
-        label_s4$d = label_s4$q;
-        is_root_s4$d = is_root_s4$q;
-        new_number_s4$d = new_number_s4$q;
-        parent_is_prev_s4$d = parent_is_prev_s4$q;
-        parent_is_prev2_s4$d = parent_is_prev2_s4$q;
-        cluster_count$d = cluster_count$q;
-        value_prev$d = value_prev$q;
-        value_prev2$d = value_prev2$q;
-        compact_ram$clk = clk;
-        has_room$d = (in_flight$q + gear_used) <= gear_room;
-        issue = active & more_labels$q & has_room$q;
-        more_labels$d = next_label$q <= provisional;
+        mode$clock = clk;
+        ic$clock = clk;
+        njv$clock = clk;
+        nja$clock = clk;
+        njb$clock = clk;
+        njs$clock = clk;
+        busy$clock = clk;
+        par$clock = clk;
+        x0$clock = clk;
+        x1$clock = clk;
+        d0$clock = clk;
+        d1$clock = clk;
+        second$clock = clk;
+        ldc$clock = clk;
+        pend$clock = clk;
+        cr$clock = clk;
+        i1v$clock = clk;
+        i2v$clock = clk;
+        wq_en$clock = clk;
+        wq_addr$clock = clk;
+        wq_data$clock = clk;
+        wq2_data$clock = clk;
+        rq$clock = clk;
+        rq_en$clock = clk;
+        fw$clock = clk;
+        fl$clock = clk;
+        infl$clock = clk;
+        room$clock = clk;
+        more$clock = clk;
+        f1v$clock = clk;
+        f1l$clock = clk;
+        f2v$clock = clk;
+        f2l$clock = clk;
+        lm1$clock = clk;
+        lm2$clock = clk;
+        f3v$clock = clk;
+        f3l$clock = clk;
+        f3root$clock = clk;
+        f3rv$clock = clk;
+        f3d1$clock = clk;
+        f3d2$clock = clk;
+        f4v$clock = clk;
+        f4l$clock = clk;
+        f4root$clock = clk;
+        f4rv$clock = clk;
+        f4d1$clock = clk;
+        f4d2$clock = clk;
+        ncl$clock = clk;
+        lastv$clock = clk;
+        lastv2$clock = clk;
+        mode$d = mode$q;
+        ic$d = ic$q;
+        njv$d = njv$q;
+        nja$d = nja$q;
+        njb$d = njb$q;
+        njs$d = njs$q;
+        busy$d = busy$q;
+        par$d = par$q;
+        x0$d = x0$q;
+        x1$d = x1$q;
+        d0$d = d0$q;
+        d1$d = d1$q;
+        second$d = second$q;
+        ldc$d = ldc$q;
+        pend$d = pend$q;
+        cr$d = cr$q;
+        i1v$d = i1v$q;
+        i2v$d = i2v$q;
+        wq_en$d = wq_en$q;
+        wq_addr$d = wq_addr$q;
+        wq_data$d = wq_data$q;
+        wq2_data$d = wq2_data$q;
+        rq$d = rq$q;
+        rq_en$d = rq_en$q;
+        fw$d = fw$q;
+        fl$d = fl$q;
+        infl$d = infl$q;
+        room$d = room$q;
+        more$d = more$q;
+        f1v$d = f1v$q;
+        f1l$d = f1l$q;
+        f2v$d = f2v$q;
+        f2l$d = f2l$q;
+        lm1$d = lm1$q;
+        lm2$d = lm2$q;
+        f3v$d = f3v$q;
+        f3l$d = f3l$q;
+        f3root$d = f3root$q;
+        f3rv$d = f3rv$q;
+        f3d1$d = f3d1$q;
+        f3d2$d = f3d2$q;
+        f4v$d = f4v$q;
+        f4l$d = f4l$q;
+        f4root$d = f4root$q;
+        f4rv$d = f4rv$q;
+        f4d1$d = f4d1$q;
+        f4d2$d = f4d2$q;
+        ncl$d = ncl$q;
+        lastv$d = lastv$q;
+        lastv2$d = lastv2$q;
+        t_ram$clk = clk;
+        r_ram$clk = clk;
+        c_ram$clk = clk;
+        root = r_ram$read_data;
+        parent = t_ram$read_data;
+        if (fw$q) begin
+            root = 1'b0;
+            parent = wq2_data$q;
+        end
+        lo = x0$q;
+        hi = x1$q;
+        if (x1$q < x0$q) begin
+            lo = x1$q;
+            hi = x0$q;
+        end
+        par$d = ~par$q;
+        t_we = 1'b0;
+        t_waddr = hi;
+        t_wdata = lo;
+        r_wdata = 1'b0;
+        re = 1'b0;
+        start = 1'b0;
+        link = 1'b0;
+        cont = 1'b0;
+        found = 1'b0;
+        jtake = jv & ~njv$q;
+        if (jtake) begin
+            njv$d = 1'b1;
+            nja$d = ja;
+            njb$d = jb;
+            njs$d = jsame;
+        end
+        sd = d0$q;
+        od = d1$q;
+        if (par$q) begin
+            sd = d1$q;
+            od = d0$q;
+        end
+        pend$d = nja$q;
+        if (njs$q) begin
+            pend$d = njb$q;
+        end
+        if (jtake) begin
+            pend$d = ja;
+            if (jsame) begin
+                pend$d = jb;
+            end
+        end
+        second$d = 1'b0;
+        ldc$d = 1'b0;
+        if (mode$q == m_union) begin
+            cont = i2v$q & ~root;
+            found = i2v$q & root;
+            link = busy$q & (sd | found) & od;
+            if (cont) begin
+                re = 1'b1;
+                if (par$q) begin
+                    x1$d = parent;
+                end
+                else begin
+                    x0$d = parent;
+                end
+            end
+            if (found) begin
+                if (par$q) begin
+                    d1$d = 1'b1;
+                end
+                else begin
+                    d0$d = 1'b1;
+                end
+            end
+            if (second$q) begin
+                re = 1'b1;
+            end
+            if (link) begin
+                t_we = x0$q != x1$q;
+                cr$d = lo;
+                busy$d = 1'b0;
+            end
+            if (ldc$q) begin
+                if (par$q) begin
+                    x1$d = cr$q;
+                end
+                else begin
+                    x0$d = cr$q;
+                end
+            end
+            start = njv$q & (~busy$q | link);
+            if (start) begin
+                njv$d = jtake;
+                busy$d = 1'b1;
+                re = 1'b1;
+                if (par$q) begin
+                    d1$d = 1'b0;
+                    x1$d = pend$q;
+                    d0$d = njs$q;
+                    x0$d = njb$q;
+                end
+                else begin
+                    d0$d = 1'b0;
+                    x0$d = pend$q;
+                    d1$d = njs$q;
+                    x1$d = njb$q;
+                end
+                ldc$d = njs$q;
+                if (~njs$q) begin
+                    second$d = 1'b1;
+                    pend$d = njb$q;
+                end
+            end
+        end
+        if (mode$q == m_init) begin
+            t_we = 1'b1;
+            t_waddr = ic$q[15:0];
+            r_wdata = 1'b1;
+            ic$d = ic$q + one17;
+            if (ic$q == last_word) begin
+                mode$d = m_union;
+            end
+        end
+        room$d = (infl$q + gear_used) <= six4;
+        issue = (mode$q == m_flat) & more$q & room$q;
+        more$d = fl$q <= provisional;
         if (issue) begin
-            more_labels$d = next_label$q < provisional;
-            next_label$d = next_label$q + one17;
+            more$d = fl$q < provisional;
         end
-        read_en = issue;
-        read_addr = next_label$q[15:0];
-        label_valid_s1$d = issue;
-        label_s1$d = next_label$q[15:0];
-        label_valid_s2$d = label_valid_s1$q;
-        label_s2$d = label_s1$q;
-        label_minus1_s2$d = label_s1$q - one16;
-        label_minus2_s2$d = label_s1$q - two16;
-        compact_ram$read_en = label_valid_s2$q;
-        compact_ram$read_addr = word_parent;
-        label_valid_s3$d = label_valid_s2$q;
-        label_s3$d = label_s2$q;
-        is_root_s3$d = word_root;
-        new_number_s3$d = cluster_count$q + one16;
-        parent_is_prev_s3$d = word_parent == label_minus1_s2$q;
-        parent_is_prev2_s3$d = word_parent == label_minus2_s2$q;
-        write_en = label_valid_s2$q;
-        write_addr = label_s2$q;
-        if (label_valid_s2$q & word_root) begin
-            cluster_count$d = cluster_count$q + one16;
+        f1v$d = issue;
+        f1l$d = fl$q[15:0];
+        f2v$d = f1v$q;
+        f2l$d = f1l$q;
+        lm1$d = f1l$q - one16;
+        lm2$d = f1l$q - two16;
+        if (issue) begin
+            re = 1'b1;
+            fl$d = fl$q + one17;
         end
-        label_valid_s4$d = label_valid_s3$q;
-        label_s4$d = label_s3$q;
-        is_root_s4$d = is_root_s3$q;
-        new_number_s4$d = new_number_s3$q;
-        parent_is_prev_s4$d = parent_is_prev_s3$q;
-        parent_is_prev2_s4$d = parent_is_prev2_s3$q;
-        value = compact_ram$read_data;
-        if (parent_is_prev2_s4$q) begin
-            value = value_prev2$q;
+        if (mode$q == m_flat) begin
+            pend$d = fl$q[15:0];
+            if (issue) begin
+                pend$d = fl$q[15:0] + one16;
+            end
         end
-        if (parent_is_prev_s4$q) begin
-            value = value_prev$q;
+        c_ram$read_en = f2v$q;
+        c_ram$read_addr = parent;
+        f3v$d = f2v$q;
+        f3l$d = f2l$q;
+        f3root$d = root;
+        f3rv$d = ncl$q + one16;
+        f3d1$d = parent == lm1$q;
+        f3d2$d = parent == lm2$q;
+        if (f2v$q) begin
+            t_we = 1'b1;
+            t_waddr = f2l$q;
+            r_wdata = 1'b1;
+            if (root) begin
+                ncl$d = ncl$q + one16;
+            end
         end
-        if (is_root_s4$q) begin
-            value = new_number_s4$q;
+        f4v$d = f3v$q;
+        f4l$d = f3l$q;
+        f4root$d = f3root$q;
+        f4rv$d = f3rv$q;
+        f4d1$d = f3d1$q;
+        f4d2$d = f3d2$q;
+        val = c_ram$read_data;
+        if (f4d2$q) begin
+            val = lastv2$q;
         end
-        compact_ram$write_en = label_valid_s4$q;
-        compact_ram$write_addr = label_s4$q;
-        compact_ram$write_data = value;
-        out_valid = label_valid_s4$q;
-        out_label = value;
-        if (label_valid_s4$q) begin
-            value_prev$d = value;
-            value_prev2$d = value_prev$q;
+        if (f4d1$q) begin
+            val = lastv$q;
         end
-        if (issue & ~label_valid_s4$q) begin
-            in_flight$d = in_flight$q + one4;
+        if (f4root$q) begin
+            val = f4rv$q;
         end
-        if (~issue & label_valid_s4$q) begin
-            in_flight$d = in_flight$q - one4;
+        c_ram$write_en = f4v$q;
+        c_ram$write_addr = f4l$q;
+        c_ram$write_data = val;
+        fv = f4v$q;
+        fval = val;
+        if (f4v$q) begin
+            lastv$d = val;
+            lastv2$d = lastv$q;
         end
-        done = active & ~more_labels$q & (in_flight$q == zero4);
-        if (start) begin
-            next_label$d = one17;
-            cluster_count$d = zero16;
-            in_flight$d = zero4;
-            more_labels$d = provisional != zero17;
+        if (issue & ~f4v$q) begin
+            infl$d = infl$q + one4;
         end
-        clusters = cluster_count$q;
+        if (~issue & f4v$q) begin
+            infl$d = infl$q - one4;
+        end
+        if ((mode$q == m_flat) & ~more$q & (infl$q == zero4)) begin
+            mode$d = m_union;
+        end
+        if (flat_start) begin
+            mode$d = m_flat;
+            fl$d = one17;
+            pend$d = one16;
+            ncl$d = zero16;
+            infl$d = zero4;
+            more$d = provisional != zero17;
+        end
+        raddr = pend$q;
+        if (cont) begin
+            raddr = parent;
+        end
+        t_ram$read_en = re;
+        t_ram$read_addr = raddr;
+        t_ram$write_en = t_we;
+        t_ram$write_addr = t_waddr;
+        t_ram$write_data = t_wdata;
+        r_ram$read_en = re;
+        r_ram$read_addr = raddr;
+        r_ram$write_en = t_we;
+        r_ram$write_addr = t_waddr;
+        r_ram$write_data = r_wdata;
+        i1v$d = re & (mode$q == m_union);
+        i2v$d = i1v$q;
+        wq_en$d = t_we;
+        wq_addr$d = t_waddr;
+        wq_data$d = t_wdata;
+        wq2_data$d = wq_data$q;
+        rq$d = raddr;
+        rq_en$d = re;
+        fw$d = wq_en$q & rq_en$q & (wq_addr$q == rq$q);
+        init_busy = mode$q == m_init;
+        union_idle = ~busy$q & ~njv$q;
+        clusters = ncl$q;
         if (rst) begin
-            has_room$d = 1'b0;
-            label_valid_s1$d = 1'b0;
-            label_valid_s2$d = 1'b0;
-            label_valid_s3$d = 1'b0;
-            label_valid_s4$d = 1'b0;
-            in_flight$d = zero4;
+            mode$d = m_init;
+            ic$d = zero17;
+            njv$d = 1'b0;
+            busy$d = 1'b0;
+            second$d = 1'b0;
+            ldc$d = 1'b0;
+            room$d = 1'b0;
+            i1v$d = 1'b0;
+            i2v$d = 1'b0;
+            wq_en$d = 1'b0;
+            rq_en$d = 1'b0;
+            fw$d = 1'b0;
+            f1v$d = 1'b0;
+            f2v$d = 1'b0;
+            f3v$d = 1'b0;
+            f4v$d = 1'b0;
+            infl$d = zero4;
+            par$d = 1'b0;
         end
     end
 
-endmodule // fcc_merge_table__flatten
+endmodule // fcc_merge_table_k7_668cf05b
 
 
-module fcc_merge_table__flatten__cluster_count(d,q,clock);
+module fcc_merge_table__busy_k7_668cf05b(d,q,clock);
 
     // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
+    input wire  d;
+    output reg  q;
     input wire  clock;
 
     // Update code (custom)
     initial begin
-       q = 16'h0;
+       q = 1'h0;
     end
 
     always @(posedge clock) begin
        q <= d;
     end
 
-endmodule // fcc_merge_table__flatten__cluster_count
+endmodule // fcc_merge_table__busy_k7_668cf05b
 
 
-module fcc_merge_table__flatten__compact_ram(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
+module fcc_merge_table__c_ram_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
 
     // Module arguments
     input wire  clk;
@@ -10494,86 +9788,10 @@ module fcc_merge_table__flatten__compact_ram(clk,read_en,read_addr,read_data,wri
         end
         read_data <= {1'd0, rd1};
     end
-endmodule // fcc_merge_table__flatten__compact_ram
+endmodule // fcc_merge_table__c_ram_k7_668cf05b
 
 
-module fcc_merge_table__flatten__has_room(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__flatten__has_room
-
-
-module fcc_merge_table__flatten__in_flight(d,q,clock);
-
-    // Module arguments
-    input wire  [3:0] d;
-    output reg  [3:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 4'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__flatten__in_flight
-
-
-module fcc_merge_table__flatten__is_root_s3(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__flatten__is_root_s3
-
-
-module fcc_merge_table__flatten__is_root_s4(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__flatten__is_root_s4
-
-
-module fcc_merge_table__flatten__label_minus1_s2(d,q,clock);
+module fcc_merge_table__cr_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -10589,105 +9807,10 @@ module fcc_merge_table__flatten__label_minus1_s2(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_merge_table__flatten__label_minus1_s2
+endmodule // fcc_merge_table__cr_k7_668cf05b
 
 
-module fcc_merge_table__flatten__label_minus2_s2(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__flatten__label_minus2_s2
-
-
-module fcc_merge_table__flatten__label_s1(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__flatten__label_s1
-
-
-module fcc_merge_table__flatten__label_s2(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__flatten__label_s2
-
-
-module fcc_merge_table__flatten__label_s3(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__flatten__label_s3
-
-
-module fcc_merge_table__flatten__label_s4(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__flatten__label_s4
-
-
-module fcc_merge_table__flatten__label_valid_s1(d,q,clock);
+module fcc_merge_table__d0_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -10703,29 +9826,10 @@ module fcc_merge_table__flatten__label_valid_s1(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_merge_table__flatten__label_valid_s1
+endmodule // fcc_merge_table__d0_k7_668cf05b
 
 
-module fcc_merge_table__flatten__label_valid_s2(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__flatten__label_valid_s2
-
-
-module fcc_merge_table__flatten__label_valid_s3(d,q,clock);
+module fcc_merge_table__d1_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -10741,48 +9845,10 @@ module fcc_merge_table__flatten__label_valid_s3(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_merge_table__flatten__label_valid_s3
+endmodule // fcc_merge_table__d1_k7_668cf05b
 
 
-module fcc_merge_table__flatten__label_valid_s4(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__flatten__label_valid_s4
-
-
-module fcc_merge_table__flatten__more_labels(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__flatten__more_labels
-
-
-module fcc_merge_table__flatten__new_number_s3(d,q,clock);
+module fcc_merge_table__f1l_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -10798,10 +9864,29 @@ module fcc_merge_table__flatten__new_number_s3(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_merge_table__flatten__new_number_s3
+endmodule // fcc_merge_table__f1l_k7_668cf05b
 
 
-module fcc_merge_table__flatten__new_number_s4(d,q,clock);
+module fcc_merge_table__f1v_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__f1v_k7_668cf05b
+
+
+module fcc_merge_table__f2l_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -10817,10 +9902,257 @@ module fcc_merge_table__flatten__new_number_s4(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_merge_table__flatten__new_number_s4
+endmodule // fcc_merge_table__f2l_k7_668cf05b
 
 
-module fcc_merge_table__flatten__next_label(d,q,clock);
+module fcc_merge_table__f2v_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__f2v_k7_668cf05b
+
+
+module fcc_merge_table__f3d1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__f3d1_k7_668cf05b
+
+
+module fcc_merge_table__f3d2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__f3d2_k7_668cf05b
+
+
+module fcc_merge_table__f3l_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__f3l_k7_668cf05b
+
+
+module fcc_merge_table__f3root_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__f3root_k7_668cf05b
+
+
+module fcc_merge_table__f3rv_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__f3rv_k7_668cf05b
+
+
+module fcc_merge_table__f3v_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__f3v_k7_668cf05b
+
+
+module fcc_merge_table__f4d1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__f4d1_k7_668cf05b
+
+
+module fcc_merge_table__f4d2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__f4d2_k7_668cf05b
+
+
+module fcc_merge_table__f4l_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__f4l_k7_668cf05b
+
+
+module fcc_merge_table__f4root_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__f4root_k7_668cf05b
+
+
+module fcc_merge_table__f4rv_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__f4rv_k7_668cf05b
+
+
+module fcc_merge_table__f4v_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__f4v_k7_668cf05b
+
+
+module fcc_merge_table__fl_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [16:0] d;
@@ -10836,29 +10168,10 @@ module fcc_merge_table__flatten__next_label(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_merge_table__flatten__next_label
+endmodule // fcc_merge_table__fl_k7_668cf05b
 
 
-module fcc_merge_table__flatten__parent_is_prev2_s3(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__flatten__parent_is_prev2_s3
-
-
-module fcc_merge_table__flatten__parent_is_prev2_s4(d,q,clock);
+module fcc_merge_table__fw_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -10874,29 +10187,10 @@ module fcc_merge_table__flatten__parent_is_prev2_s4(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_merge_table__flatten__parent_is_prev2_s4
+endmodule // fcc_merge_table__fw_k7_668cf05b
 
 
-module fcc_merge_table__flatten__parent_is_prev_s3(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__flatten__parent_is_prev_s3
-
-
-module fcc_merge_table__flatten__parent_is_prev_s4(d,q,clock);
+module fcc_merge_table__i1v_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -10912,10 +10206,67 @@ module fcc_merge_table__flatten__parent_is_prev_s4(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_merge_table__flatten__parent_is_prev_s4
+endmodule // fcc_merge_table__i1v_k7_668cf05b
 
 
-module fcc_merge_table__flatten__value_prev(d,q,clock);
+module fcc_merge_table__i2v_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__i2v_k7_668cf05b
+
+
+module fcc_merge_table__ic_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__ic_k7_668cf05b
+
+
+module fcc_merge_table__infl_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 4'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__infl_k7_668cf05b
+
+
+module fcc_merge_table__lastv_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -10931,10 +10282,10 @@ module fcc_merge_table__flatten__value_prev(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_merge_table__flatten__value_prev
+endmodule // fcc_merge_table__lastv_k7_668cf05b
 
 
-module fcc_merge_table__flatten__value_prev2(d,q,clock);
+module fcc_merge_table__lastv2_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -10950,218 +10301,86 @@ module fcc_merge_table__flatten__value_prev2(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_merge_table__flatten__value_prev2
+endmodule // fcc_merge_table__lastv2_k7_668cf05b
 
 
-module fcc_merge_table__mode(d,q,clock);
+module fcc_merge_table__ldc_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__ldc_k7_668cf05b
+
+
+module fcc_merge_table__lm1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__lm1_k7_668cf05b
+
+
+module fcc_merge_table__lm2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__lm2_k7_668cf05b
+
+
+module fcc_merge_table__mode_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [1:0] d;
     output reg  [1:0] q;
     input wire  clock;
 
-    // Enums
-    localparam MergeMode$Init = 0;
-    localparam MergeMode$Union = 1;
-    localparam MergeMode$Flatten = 2;
-
     // Update code (custom)
     initial begin
-       q = 64'h0;
+       q = 2'h0;
     end
 
     always @(posedge clock) begin
        q <= d;
     end
 
-endmodule // fcc_merge_table__mode
+endmodule // fcc_merge_table__mode_k7_668cf05b
 
 
-module fcc_merge_table__ports(clk,rst,init_active,flatten_active,init_write_addr,union_read_en,union_read_addr,link_en,link_addr,link_data,flatten_read_en,flatten_read_addr,flatten_write_en,flatten_write_addr,word_root,word_parent);
-
-    // Module arguments
-    input wire  clk;
-    input wire  rst;
-    input wire  init_active;
-    input wire  flatten_active;
-    input wire  [15:0] init_write_addr;
-    input wire  union_read_en;
-    input wire  [15:0] union_read_addr;
-    input wire  link_en;
-    input wire  [15:0] link_addr;
-    input wire  [15:0] link_data;
-    input wire  flatten_read_en;
-    input wire  [15:0] flatten_read_addr;
-    input wire  flatten_write_en;
-    input wire  [15:0] flatten_write_addr;
-    output reg  word_root;
-    output reg  [15:0] word_parent;
-
-    // Stub signals
-    reg  parent_ram$clk;
-    reg  parent_ram$read_en;
-    reg  [15:0] parent_ram$read_addr;
-    wire  [15:0] parent_ram$read_data;
-    reg  parent_ram$write_en;
-    reg  [15:0] parent_ram$write_addr;
-    reg  [15:0] parent_ram$write_data;
-    reg  root_ram$clk;
-    reg  root_ram$read_en;
-    reg  [15:0] root_ram$read_addr;
-    wire  root_ram$read_data;
-    reg  root_ram$write_en;
-    reg  [15:0] root_ram$write_addr;
-    reg  root_ram$write_data;
-    reg  fwd_write_en$d;
-    wire  fwd_write_en$q;
-    reg  fwd_write_en$clock;
-    reg  [15:0] fwd_write_addr$d;
-    wire  [15:0] fwd_write_addr$q;
-    reg  fwd_write_addr$clock;
-    reg  [15:0] fwd_write_data$d;
-    wire  [15:0] fwd_write_data$q;
-    reg  fwd_write_data$clock;
-    reg  [15:0] fwd_write_data_s2$d;
-    wire  [15:0] fwd_write_data_s2$q;
-    reg  fwd_write_data_s2$clock;
-    reg  fwd_read_en$d;
-    wire  fwd_read_en$q;
-    reg  fwd_read_en$clock;
-    reg  [15:0] fwd_read_addr$d;
-    wire  [15:0] fwd_read_addr$q;
-    reg  fwd_read_addr$clock;
-    reg  forward_hit$d;
-    wire  forward_hit$q;
-    reg  forward_hit$clock;
-
-    // Local signals
-    reg  read_en;
-    reg  [15:0] read_addr;
-    reg  write_en;
-    reg  [15:0] write_addr;
-    reg  write_root;
-
-    // Sub module instances
-    fcc_merge_table__ports__parent_ram parent_ram(
-        .clk(parent_ram$clk),
-        .read_en(parent_ram$read_en),
-        .read_addr(parent_ram$read_addr),
-        .read_data(parent_ram$read_data),
-        .write_en(parent_ram$write_en),
-        .write_addr(parent_ram$write_addr),
-        .write_data(parent_ram$write_data)
-    );
-    fcc_merge_table__ports__root_ram root_ram(
-        .clk(root_ram$clk),
-        .read_en(root_ram$read_en),
-        .read_addr(root_ram$read_addr),
-        .read_data(root_ram$read_data),
-        .write_en(root_ram$write_en),
-        .write_addr(root_ram$write_addr),
-        .write_data(root_ram$write_data)
-    );
-    fcc_merge_table__ports__fwd_write_en fwd_write_en(
-        .d(fwd_write_en$d),
-        .q(fwd_write_en$q),
-        .clock(fwd_write_en$clock)
-    );
-    fcc_merge_table__ports__fwd_write_addr fwd_write_addr(
-        .d(fwd_write_addr$d),
-        .q(fwd_write_addr$q),
-        .clock(fwd_write_addr$clock)
-    );
-    fcc_merge_table__ports__fwd_write_data fwd_write_data(
-        .d(fwd_write_data$d),
-        .q(fwd_write_data$q),
-        .clock(fwd_write_data$clock)
-    );
-    fcc_merge_table__ports__fwd_write_data_s2 fwd_write_data_s2(
-        .d(fwd_write_data_s2$d),
-        .q(fwd_write_data_s2$q),
-        .clock(fwd_write_data_s2$clock)
-    );
-    fcc_merge_table__ports__fwd_read_en fwd_read_en(
-        .d(fwd_read_en$d),
-        .q(fwd_read_en$q),
-        .clock(fwd_read_en$clock)
-    );
-    fcc_merge_table__ports__fwd_read_addr fwd_read_addr(
-        .d(fwd_read_addr$d),
-        .q(fwd_read_addr$q),
-        .clock(fwd_read_addr$clock)
-    );
-    fcc_merge_table__ports__forward_hit forward_hit(
-        .d(forward_hit$d),
-        .q(forward_hit$q),
-        .clock(forward_hit$clock)
-    );
-
-    // Update code
-    always @(*) begin
-        fwd_write_en$clock = clk;
-        fwd_write_addr$clock = clk;
-        fwd_write_data$clock = clk;
-        fwd_write_data_s2$clock = clk;
-        fwd_read_en$clock = clk;
-        fwd_read_addr$clock = clk;
-        forward_hit$clock = clk;
-        fwd_write_en$d = fwd_write_en$q;
-        fwd_write_addr$d = fwd_write_addr$q;
-        fwd_write_data$d = fwd_write_data$q;
-        fwd_write_data_s2$d = fwd_write_data_s2$q;
-        fwd_read_en$d = fwd_read_en$q;
-        fwd_read_addr$d = fwd_read_addr$q;
-        forward_hit$d = forward_hit$q;
-        parent_ram$clk = clk;
-        root_ram$clk = clk;
-        read_en = union_read_en | flatten_read_en;
-        read_addr = union_read_addr;
-        if (flatten_active) begin
-            read_addr = flatten_read_addr;
-        end
-        write_en = link_en | init_active | flatten_write_en;
-        write_root = init_active | flatten_write_en;
-        write_addr = link_addr;
-        if (init_active) begin
-            write_addr = init_write_addr;
-        end
-        if (flatten_write_en) begin
-            write_addr = flatten_write_addr;
-        end
-        parent_ram$read_en = read_en;
-        parent_ram$read_addr = read_addr;
-        parent_ram$write_en = write_en;
-        parent_ram$write_addr = write_addr;
-        parent_ram$write_data = link_data;
-        root_ram$read_en = read_en;
-        root_ram$read_addr = read_addr;
-        root_ram$write_en = write_en;
-        root_ram$write_addr = write_addr;
-        root_ram$write_data = write_root;
-        fwd_write_en$d = write_en;
-        fwd_write_addr$d = write_addr;
-        fwd_write_data$d = link_data;
-        fwd_write_data_s2$d = fwd_write_data$q;
-        fwd_read_en$d = read_en;
-        fwd_read_addr$d = read_addr;
-        forward_hit$d = fwd_write_en$q & fwd_read_en$q & (fwd_write_addr$q == fwd_read_addr$q);
-        word_root = root_ram$read_data;
-        word_parent = parent_ram$read_data;
-        if (forward_hit$q) begin
-            word_root = 1'b0;
-            word_parent = fwd_write_data_s2$q;
-        end
-        if (rst) begin
-            fwd_write_en$d = 1'b0;
-            fwd_read_en$d = 1'b0;
-            forward_hit$d = 1'b0;
-        end
-    end
-
-endmodule // fcc_merge_table__ports
-
-
-module fcc_merge_table__ports__forward_hit(d,q,clock);
+module fcc_merge_table__more_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -11177,10 +10396,10 @@ module fcc_merge_table__ports__forward_hit(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_merge_table__ports__forward_hit
+endmodule // fcc_merge_table__more_k7_668cf05b
 
 
-module fcc_merge_table__ports__fwd_read_addr(d,q,clock);
+module fcc_merge_table__ncl_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -11196,10 +10415,48 @@ module fcc_merge_table__ports__fwd_read_addr(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_merge_table__ports__fwd_read_addr
+endmodule // fcc_merge_table__ncl_k7_668cf05b
 
 
-module fcc_merge_table__ports__fwd_read_en(d,q,clock);
+module fcc_merge_table__nja_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__nja_k7_668cf05b
+
+
+module fcc_merge_table__njb_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__njb_k7_668cf05b
+
+
+module fcc_merge_table__njs_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -11215,67 +10472,10 @@ module fcc_merge_table__ports__fwd_read_en(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_merge_table__ports__fwd_read_en
+endmodule // fcc_merge_table__njs_k7_668cf05b
 
 
-module fcc_merge_table__ports__fwd_write_addr(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__ports__fwd_write_addr
-
-
-module fcc_merge_table__ports__fwd_write_data(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__ports__fwd_write_data
-
-
-module fcc_merge_table__ports__fwd_write_data_s2(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__ports__fwd_write_data_s2
-
-
-module fcc_merge_table__ports__fwd_write_en(d,q,clock);
+module fcc_merge_table__njv_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -11291,42 +10491,48 @@ module fcc_merge_table__ports__fwd_write_en(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_merge_table__ports__fwd_write_en
+endmodule // fcc_merge_table__njv_k7_668cf05b
 
 
-module fcc_merge_table__ports__parent_ram(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
+module fcc_merge_table__par_k7_668cf05b(d,q,clock);
 
     // Module arguments
-    input wire  clk;
-    input wire  read_en;
-    input wire  [15:0] read_addr;
-    output reg  [15:0] read_data;
-    input wire  write_en;
-    input wire  [15:0] write_addr;
-    input wire  [15:0] write_data;
+    input wire  d;
+    output reg  q;
+    input wire  clock;
 
     // Update code (custom)
-    // Address bits above the depth and data bits above the stored width are
-    // not used by this instance.
-    /* verilator lint_off UNUSEDSIGNAL */
-    wire unused_ok = &{1'b0, read_addr[15:15], write_addr[15:15], write_data[15:15]};
-    /* verilator lint_on UNUSEDSIGNAL */
-    reg [14:0] mem [0:32767];
-    // The block RAM's output register, then a fabric register.
-    reg [14:0] rd1;
-    always @(posedge clk) begin
-        if (read_en) begin
-            rd1 <= mem[read_addr[14:0]];
-        end
-        if (write_en) begin
-            mem[write_addr[14:0]] <= write_data[14:0];
-        end
-        read_data <= {1'd0, rd1};
+    initial begin
+       q = 1'h0;
     end
-endmodule // fcc_merge_table__ports__parent_ram
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__par_k7_668cf05b
 
 
-module fcc_merge_table__ports__root_ram(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
+module fcc_merge_table__pend_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__pend_k7_668cf05b
+
+
+module fcc_merge_table__r_ram_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
 
     // Module arguments
     input wire  clk;
@@ -11355,448 +10561,118 @@ module fcc_merge_table__ports__root_ram(clk,read_en,read_addr,read_data,write_en
         end
         read_data <= rd1;
     end
-endmodule // fcc_merge_table__ports__root_ram
+endmodule // fcc_merge_table__r_ram_k7_668cf05b
 
 
-module fcc_merge_table__table_init(clk,rst,active,write_addr,done);
+module fcc_merge_table__room_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__room_k7_668cf05b
+
+
+module fcc_merge_table__rq_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__rq_k7_668cf05b
+
+
+module fcc_merge_table__rq_en_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__rq_en_k7_668cf05b
+
+
+module fcc_merge_table__second_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__second_k7_668cf05b
+
+
+module fcc_merge_table__t_ram_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
 
     // Module arguments
     input wire  clk;
-    input wire  rst;
-    input wire  active;
-    output reg  [15:0] write_addr;
-    output reg  done;
-
-    // Constant declarations
-    localparam  zero = 17'b0;
-    localparam  one = 17'b1;
-    localparam  last_word = 17'b111111111111111;
-
-    // Stub signals
-    reg  [16:0] word$d;
-    wire  [16:0] word$q;
-    reg  word$clock;
-
-    // Sub module instances
-    fcc_merge_table__table_init__word word(
-        .d(word$d),
-        .q(word$q),
-        .clock(word$clock)
-    );
-
-    // Update code
-    always @(*) begin
-        word$clock = clk;
-        word$d = word$q;
-        write_addr = word$q[15:0];
-        done = 1'b0;
-        if (active) begin
-            word$d = word$q + one;
-            done = word$q == last_word;
-        end
-        if (rst) begin
-            word$d = zero;
-        end
-    end
-
-endmodule // fcc_merge_table__table_init
-
-
-module fcc_merge_table__table_init__word(d,q,clock);
-
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
+    input wire  read_en;
+    input wire  [15:0] read_addr;
+    output reg  [15:0] read_data;
+    input wire  write_en;
+    input wire  [15:0] write_addr;
+    input wire  [15:0] write_data;
 
     // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__table_init__word
-
-
-module fcc_merge_table__union_engine(clk,rst,active,join_valid,join_a,join_b,join_same,join_take,word_root,word_parent,read_en,read_addr,link_en,link_addr,link_data,idle);
-
-    // Module arguments
-    input wire  clk;
-    input wire  rst;
-    input wire  active;
-    input wire  join_valid;
-    input wire  [15:0] join_a;
-    input wire  [15:0] join_b;
-    input wire  join_same;
-    output reg  join_take;
-    input wire  word_root;
-    input wire  [15:0] word_parent;
-    output reg  read_en;
-    output reg  [15:0] read_addr;
-    output reg  link_en;
-    output reg  [15:0] link_addr;
-    output reg  [15:0] link_data;
-    output reg  idle;
-
-    // Stub signals
-    reg  next_valid$d;
-    wire  next_valid$q;
-    reg  next_valid$clock;
-    reg  [15:0] next_a$d;
-    wire  [15:0] next_a$q;
-    reg  next_a$clock;
-    reg  [15:0] next_b$d;
-    wire  [15:0] next_b$q;
-    reg  next_b$clock;
-    reg  next_same$d;
-    wire  next_same$q;
-    reg  next_same$clock;
-    reg  join_busy$d;
-    wire  join_busy$q;
-    reg  join_busy$clock;
-    reg  odd_turn$d;
-    wire  odd_turn$q;
-    reg  odd_turn$clock;
-    reg  [15:0] walk_even$d;
-    wire  [15:0] walk_even$q;
-    reg  walk_even$clock;
-    reg  [15:0] walk_odd$d;
-    wire  [15:0] walk_odd$q;
-    reg  walk_odd$clock;
-    reg  done_even$d;
-    wire  done_even$q;
-    reg  done_even$clock;
-    reg  done_odd$d;
-    wire  done_odd$q;
-    reg  done_odd$clock;
-    reg  read_b_due$d;
-    wire  read_b_due$q;
-    reg  read_b_due$clock;
-    reg  take_kept_root$d;
-    wire  take_kept_root$q;
-    reg  take_kept_root$clock;
-    reg  [15:0] next_read_addr$d;
-    wire  [15:0] next_read_addr$q;
-    reg  next_read_addr$clock;
-    reg  [15:0] kept_root$d;
-    wire  [15:0] kept_root$q;
-    reg  kept_root$clock;
-    reg  word_valid_s1$d;
-    wire  word_valid_s1$q;
-    reg  word_valid_s1$clock;
-    reg  word_valid_s2$d;
-    wire  word_valid_s2$q;
-    reg  word_valid_s2$clock;
-
-    // Local signals
-    reg  walk_continues;
-    reg  root_found;
-    reg  turn_done;
-    reg  other_done;
-    reg  link;
-    reg  start;
-    reg  [15:0] low_root;
-    reg  [15:0] high_root;
-
-    // Sub module instances
-    fcc_merge_table__union_engine__next_valid next_valid(
-        .d(next_valid$d),
-        .q(next_valid$q),
-        .clock(next_valid$clock)
-    );
-    fcc_merge_table__union_engine__next_a next_a(
-        .d(next_a$d),
-        .q(next_a$q),
-        .clock(next_a$clock)
-    );
-    fcc_merge_table__union_engine__next_b next_b(
-        .d(next_b$d),
-        .q(next_b$q),
-        .clock(next_b$clock)
-    );
-    fcc_merge_table__union_engine__next_same next_same(
-        .d(next_same$d),
-        .q(next_same$q),
-        .clock(next_same$clock)
-    );
-    fcc_merge_table__union_engine__join_busy join_busy(
-        .d(join_busy$d),
-        .q(join_busy$q),
-        .clock(join_busy$clock)
-    );
-    fcc_merge_table__union_engine__odd_turn odd_turn(
-        .d(odd_turn$d),
-        .q(odd_turn$q),
-        .clock(odd_turn$clock)
-    );
-    fcc_merge_table__union_engine__walk_even walk_even(
-        .d(walk_even$d),
-        .q(walk_even$q),
-        .clock(walk_even$clock)
-    );
-    fcc_merge_table__union_engine__walk_odd walk_odd(
-        .d(walk_odd$d),
-        .q(walk_odd$q),
-        .clock(walk_odd$clock)
-    );
-    fcc_merge_table__union_engine__done_even done_even(
-        .d(done_even$d),
-        .q(done_even$q),
-        .clock(done_even$clock)
-    );
-    fcc_merge_table__union_engine__done_odd done_odd(
-        .d(done_odd$d),
-        .q(done_odd$q),
-        .clock(done_odd$clock)
-    );
-    fcc_merge_table__union_engine__read_b_due read_b_due(
-        .d(read_b_due$d),
-        .q(read_b_due$q),
-        .clock(read_b_due$clock)
-    );
-    fcc_merge_table__union_engine__take_kept_root take_kept_root(
-        .d(take_kept_root$d),
-        .q(take_kept_root$q),
-        .clock(take_kept_root$clock)
-    );
-    fcc_merge_table__union_engine__next_read_addr next_read_addr(
-        .d(next_read_addr$d),
-        .q(next_read_addr$q),
-        .clock(next_read_addr$clock)
-    );
-    fcc_merge_table__union_engine__kept_root kept_root(
-        .d(kept_root$d),
-        .q(kept_root$q),
-        .clock(kept_root$clock)
-    );
-    fcc_merge_table__union_engine__word_valid_s1 word_valid_s1(
-        .d(word_valid_s1$d),
-        .q(word_valid_s1$q),
-        .clock(word_valid_s1$clock)
-    );
-    fcc_merge_table__union_engine__word_valid_s2 word_valid_s2(
-        .d(word_valid_s2$d),
-        .q(word_valid_s2$q),
-        .clock(word_valid_s2$clock)
-    );
-
-    // Update code
-    always @(*) begin
-        next_valid$clock = clk;
-        next_a$clock = clk;
-        next_b$clock = clk;
-        next_same$clock = clk;
-        join_busy$clock = clk;
-        odd_turn$clock = clk;
-        walk_even$clock = clk;
-        walk_odd$clock = clk;
-        done_even$clock = clk;
-        done_odd$clock = clk;
-        read_b_due$clock = clk;
-        take_kept_root$clock = clk;
-        next_read_addr$clock = clk;
-        kept_root$clock = clk;
-        word_valid_s1$clock = clk;
-        word_valid_s2$clock = clk;
-        next_valid$d = next_valid$q;
-        next_a$d = next_a$q;
-        next_b$d = next_b$q;
-        next_same$d = next_same$q;
-        join_busy$d = join_busy$q;
-        odd_turn$d = odd_turn$q;
-        walk_even$d = walk_even$q;
-        walk_odd$d = walk_odd$q;
-        done_even$d = done_even$q;
-        done_odd$d = done_odd$q;
-        read_b_due$d = read_b_due$q;
-        take_kept_root$d = take_kept_root$q;
-        next_read_addr$d = next_read_addr$q;
-        kept_root$d = kept_root$q;
-        word_valid_s1$d = word_valid_s1$q;
-        word_valid_s2$d = word_valid_s2$q;
-        low_root = walk_even$q;
-        high_root = walk_odd$q;
-        if (walk_odd$q < walk_even$q) begin
-            low_root = walk_odd$q;
-            high_root = walk_even$q;
+    // Address bits above the depth and data bits above the stored width are
+    // not used by this instance.
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire unused_ok = &{1'b0, read_addr[15:15], write_addr[15:15], write_data[15:15]};
+    /* verilator lint_on UNUSEDSIGNAL */
+    reg [14:0] mem [0:32767];
+    // The block RAM's output register, then a fabric register.
+    reg [14:0] rd1;
+    always @(posedge clk) begin
+        if (read_en) begin
+            rd1 <= mem[read_addr[14:0]];
         end
-        odd_turn$d = ~odd_turn$q;
-        read_en = 1'b0;
-        link_en = 1'b0;
-        start = 1'b0;
-        link = 1'b0;
-        walk_continues = 1'b0;
-        root_found = 1'b0;
-        join_take = join_valid & ~next_valid$q;
-        if (join_take) begin
-            next_valid$d = 1'b1;
-            next_a$d = join_a;
-            next_b$d = join_b;
-            next_same$d = join_same;
+        if (write_en) begin
+            mem[write_addr[14:0]] <= write_data[14:0];
         end
-        turn_done = done_even$q;
-        other_done = done_odd$q;
-        if (odd_turn$q) begin
-            turn_done = done_odd$q;
-            other_done = done_even$q;
-        end
-        next_read_addr$d = next_a$q;
-        if (next_same$q) begin
-            next_read_addr$d = next_b$q;
-        end
-        if (join_take) begin
-            next_read_addr$d = join_a;
-            if (join_same) begin
-                next_read_addr$d = join_b;
-            end
-        end
-        read_b_due$d = 1'b0;
-        take_kept_root$d = 1'b0;
-        if (active) begin
-            walk_continues = word_valid_s2$q & ~word_root;
-            root_found = word_valid_s2$q & word_root;
-            link = join_busy$q & (turn_done | root_found) & other_done;
-            if (walk_continues) begin
-                read_en = 1'b1;
-                if (odd_turn$q) begin
-                    walk_odd$d = word_parent;
-                end
-                else begin
-                    walk_even$d = word_parent;
-                end
-            end
-            if (root_found) begin
-                if (odd_turn$q) begin
-                    done_odd$d = 1'b1;
-                end
-                else begin
-                    done_even$d = 1'b1;
-                end
-            end
-            if (read_b_due$q) begin
-                read_en = 1'b1;
-            end
-            if (link) begin
-                link_en = walk_even$q != walk_odd$q;
-                kept_root$d = low_root;
-                join_busy$d = 1'b0;
-            end
-            if (take_kept_root$q) begin
-                if (odd_turn$q) begin
-                    walk_odd$d = kept_root$q;
-                end
-                else begin
-                    walk_even$d = kept_root$q;
-                end
-            end
-            start = next_valid$q & (~join_busy$q | link);
-            if (start) begin
-                next_valid$d = join_take;
-                join_busy$d = 1'b1;
-                read_en = 1'b1;
-                if (odd_turn$q) begin
-                    done_odd$d = 1'b0;
-                    walk_odd$d = next_read_addr$q;
-                    done_even$d = next_same$q;
-                    walk_even$d = next_b$q;
-                end
-                else begin
-                    done_even$d = 1'b0;
-                    walk_even$d = next_read_addr$q;
-                    done_odd$d = next_same$q;
-                    walk_odd$d = next_b$q;
-                end
-                take_kept_root$d = next_same$q;
-                if (~next_same$q) begin
-                    read_b_due$d = 1'b1;
-                    next_read_addr$d = next_b$q;
-                end
-            end
-        end
-        read_addr = next_read_addr$q;
-        if (walk_continues) begin
-            read_addr = word_parent;
-        end
-        link_addr = high_root;
-        link_data = low_root;
-        word_valid_s1$d = read_en;
-        word_valid_s2$d = word_valid_s1$q;
-        idle = ~join_busy$q & ~next_valid$q;
-        if (rst) begin
-            next_valid$d = 1'b0;
-            join_busy$d = 1'b0;
-            read_b_due$d = 1'b0;
-            take_kept_root$d = 1'b0;
-            word_valid_s1$d = 1'b0;
-            word_valid_s2$d = 1'b0;
-            odd_turn$d = 1'b0;
-        end
+        read_data <= {1'd0, rd1};
     end
-
-endmodule // fcc_merge_table__union_engine
-
-
-module fcc_merge_table__union_engine__done_even(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__union_engine__done_even
+endmodule // fcc_merge_table__t_ram_k7_668cf05b
 
 
-module fcc_merge_table__union_engine__done_odd(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__union_engine__done_odd
-
-
-module fcc_merge_table__union_engine__join_busy(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__union_engine__join_busy
-
-
-module fcc_merge_table__union_engine__kept_root(d,q,clock);
+module fcc_merge_table__wq2_data_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -11812,29 +10688,10 @@ module fcc_merge_table__union_engine__kept_root(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_merge_table__union_engine__kept_root
+endmodule // fcc_merge_table__wq2_data_k7_668cf05b
 
 
-module fcc_merge_table__union_engine__next_a(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__union_engine__next_a
-
-
-module fcc_merge_table__union_engine__next_b(d,q,clock);
+module fcc_merge_table__wq_addr_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -11850,124 +10707,10 @@ module fcc_merge_table__union_engine__next_b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_merge_table__union_engine__next_b
+endmodule // fcc_merge_table__wq_addr_k7_668cf05b
 
 
-module fcc_merge_table__union_engine__next_read_addr(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__union_engine__next_read_addr
-
-
-module fcc_merge_table__union_engine__next_same(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__union_engine__next_same
-
-
-module fcc_merge_table__union_engine__next_valid(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__union_engine__next_valid
-
-
-module fcc_merge_table__union_engine__odd_turn(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__union_engine__odd_turn
-
-
-module fcc_merge_table__union_engine__read_b_due(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__union_engine__read_b_due
-
-
-module fcc_merge_table__union_engine__take_kept_root(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__union_engine__take_kept_root
-
-
-module fcc_merge_table__union_engine__walk_even(d,q,clock);
+module fcc_merge_table__wq_data_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -11983,10 +10726,29 @@ module fcc_merge_table__union_engine__walk_even(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_merge_table__union_engine__walk_even
+endmodule // fcc_merge_table__wq_data_k7_668cf05b
 
 
-module fcc_merge_table__union_engine__walk_odd(d,q,clock);
+module fcc_merge_table__wq_en_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__wq_en_k7_668cf05b
+
+
+module fcc_merge_table__x0_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -12002,10 +10764,29 @@ module fcc_merge_table__union_engine__walk_odd(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_merge_table__union_engine__walk_odd
+endmodule // fcc_merge_table__x0_k7_668cf05b
 
 
-module fcc_merge_table__union_engine__word_valid_s1(d,q,clock);
+module fcc_merge_table__x1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__x1_k7_668cf05b
+
+
+module fcc_top__one_row_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -12021,29 +10802,10 @@ module fcc_merge_table__union_engine__word_valid_s1(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_merge_table__union_engine__word_valid_s1
+endmodule // fcc_top__one_row_k7_668cf05b
 
 
-module fcc_merge_table__union_engine__word_valid_s2(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__union_engine__word_valid_s2
-
-
-module fcc_top__one_row(d,q,clock);
+module fcc_top__pad_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -12059,29 +10821,10 @@ module fcc_top__one_row(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_top__one_row
+endmodule // fcc_top__pad_k7_668cf05b
 
 
-module fcc_top__pad(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__pad
-
-
-module fcc_top__pad_go(d,q,clock);
+module fcc_top__pad_go_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -12097,10 +10840,10 @@ module fcc_top__pad_go(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_top__pad_go
+endmodule // fcc_top__pad_go_k7_668cf05b
 
 
-module fcc_top__pen_col(d,q,clock);
+module fcc_top__pen_col_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [11:0] d;
@@ -12116,10 +10859,10 @@ module fcc_top__pen_col(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_top__pen_col
+endmodule // fcc_top__pen_col_k7_668cf05b
 
 
-module fcc_top__pen_row(d,q,clock);
+module fcc_top__pen_row_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [7:0] d;
@@ -12135,10 +10878,10 @@ module fcc_top__pen_row(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_top__pen_row
+endmodule // fcc_top__pen_row_k7_668cf05b
 
 
-module fcc_regs(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata,s_axil_wstrb,s_axil_wvalid,s_axil_wready,s_axil_bresp,s_axil_bvalid,s_axil_bready,s_axil_araddr,s_axil_arvalid,s_axil_arready,s_axil_rdata,s_axil_rresp,s_axil_rvalid,s_axil_rready,frame_end,idle,clusters,provisional,overflow,unlabelled,frame_error,joins,gear_stalls,core_rst,core_rst_next,irq,frame_done,st_clusters,st_provisional,st_overflow,st_unlabelled,st_frame_error,st_joins,st_gear_stalls,run_k,run_th_h_c,run_th_v_c,run_rows,run_cols);
+module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata,s_axil_wstrb,s_axil_wvalid,s_axil_wready,s_axil_bresp,s_axil_bvalid,s_axil_bready,s_axil_araddr,s_axil_arvalid,s_axil_arready,s_axil_rdata,s_axil_rresp,s_axil_rvalid,s_axil_rready,frame_end,idle,clusters,provisional,overflow,unlabelled,frame_error,joins,gear_stalls,core_rst,core_rst_next,irq,frame_done,st_clusters,st_provisional,st_overflow,st_unlabelled,st_frame_error,st_joins,st_gear_stalls,run_k,run_th_h_c,run_th_v_c,run_rows,run_cols);
 
     // Module arguments
     input wire  clk;
@@ -12377,9 +11120,6 @@ module fcc_regs(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata
     reg  [15:0] sq_a$d;
     wire  [15:0] sq_a$q;
     reg  sq_a$clock;
-    reg  sq_start$d;
-    wire  sq_start$q;
-    reg  sq_start$clock;
     reg  sq_busy_q$d;
     wire  sq_busy_q$q;
     reg  sq_busy_q$clock;
@@ -12390,7 +11130,7 @@ module fcc_regs(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata
     reg  clear;
 
     // Sub module instances
-    fcc_regs__mux mux(
+    fcc_regs__mux_k7_668cf05b mux(
         .addr(mux$addr),
         .w16$0(mux$w16$0),
         .w16$1(mux$w16$1),
@@ -12415,192 +11155,192 @@ module fcc_regs(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata
         .flags$9(mux$flags$9),
         .data(mux$data)
     );
-    fcc_regs__aw_v aw_v(
+    fcc_regs__aw_v_k7_668cf05b aw_v(
         .d(aw_v$d),
         .q(aw_v$q),
         .clock(aw_v$clock)
     );
-    fcc_regs__aw_a aw_a(
+    fcc_regs__aw_a_k7_668cf05b aw_a(
         .d(aw_a$d),
         .q(aw_a$q),
         .clock(aw_a$clock)
     );
-    fcc_regs__w_v w_v(
+    fcc_regs__w_v_k7_668cf05b w_v(
         .d(w_v$d),
         .q(w_v$q),
         .clock(w_v$clock)
     );
-    fcc_regs__w_d w_d(
+    fcc_regs__w_d_k7_668cf05b w_d(
         .d(w_d$d),
         .q(w_d$q),
         .clock(w_d$clock)
     );
-    fcc_regs__b_v b_v(
+    fcc_regs__b_v_k7_668cf05b b_v(
         .d(b_v$d),
         .q(b_v$q),
         .clock(b_v$clock)
     );
-    fcc_regs__r_v r_v(
+    fcc_regs__r_v_k7_668cf05b r_v(
         .d(r_v$d),
         .q(r_v$q),
         .clock(r_v$clock)
     );
-    fcc_regs__r_d r_d(
+    fcc_regs__r_d_k7_668cf05b r_d(
         .d(r_d$d),
         .q(r_d$q),
         .clock(r_d$clock)
     );
-    fcc_regs__irq_en irq_en(
+    fcc_regs__irq_en_k7_668cf05b irq_en(
         .d(irq_en$d),
         .q(irq_en$q),
         .clock(irq_en$clock)
     );
-    fcc_regs__done_sticky done_sticky(
+    fcc_regs__done_sticky_k7_668cf05b done_sticky(
         .d(done_sticky$d),
         .q(done_sticky$q),
         .clock(done_sticky$clock)
     );
-    fcc_regs__soft_q soft_q(
+    fcc_regs__soft_q_k7_668cf05b soft_q(
         .d(soft_q$d),
         .q(soft_q$q),
         .clock(soft_q$clock)
     );
-    fcc_regs__core_rst_q core_rst_q(
+    fcc_regs__core_rst_q_k7_668cf05b core_rst_q(
         .d(core_rst_q$d),
         .q(core_rst_q$q),
         .clock(core_rst_q$clock)
     );
-    fcc_regs__count count(
+    fcc_regs__count_k7_668cf05b count(
         .d(count$d),
         .q(count$q),
         .clock(count$clock)
     );
-    fcc_regs__done_q done_q(
+    fcc_regs__done_q_k7_668cf05b done_q(
         .d(done_q$d),
         .q(done_q$q),
         .clock(done_q$clock)
     );
-    fcc_regs__s_clusters s_clusters(
+    fcc_regs__s_clusters_k7_668cf05b s_clusters(
         .d(s_clusters$d),
         .q(s_clusters$q),
         .clock(s_clusters$clock)
     );
-    fcc_regs__s_prov s_prov(
+    fcc_regs__s_prov_k7_668cf05b s_prov(
         .d(s_prov$d),
         .q(s_prov$q),
         .clock(s_prov$clock)
     );
-    fcc_regs__s_ovf s_ovf(
+    fcc_regs__s_ovf_k7_668cf05b s_ovf(
         .d(s_ovf$d),
         .q(s_ovf$q),
         .clock(s_ovf$clock)
     );
-    fcc_regs__s_unl s_unl(
+    fcc_regs__s_unl_k7_668cf05b s_unl(
         .d(s_unl$d),
         .q(s_unl$q),
         .clock(s_unl$clock)
     );
-    fcc_regs__s_err s_err(
+    fcc_regs__s_err_k7_668cf05b s_err(
         .d(s_err$d),
         .q(s_err$q),
         .clock(s_err$clock)
     );
-    fcc_regs__s_joins s_joins(
+    fcc_regs__s_joins_k7_668cf05b s_joins(
         .d(s_joins$d),
         .q(s_joins$q),
         .clock(s_joins$clock)
     );
-    fcc_regs__s_gstall s_gstall(
+    fcc_regs__s_gstall_k7_668cf05b s_gstall(
         .d(s_gstall$d),
         .q(s_gstall$q),
         .clock(s_gstall$clock)
     );
-    fcc_regs__sh_k sh_k(
+    fcc_regs__sh_k_k7_668cf05b sh_k(
         .d(sh_k$d),
         .q(sh_k$q),
         .clock(sh_k$clock)
     );
-    fcc_regs__sh_thh sh_thh(
+    fcc_regs__sh_thh_k7_668cf05b sh_thh(
         .d(sh_thh$d),
         .q(sh_thh$q),
         .clock(sh_thh$clock)
     );
-    fcc_regs__sh_thv sh_thv(
+    fcc_regs__sh_thv_k7_668cf05b sh_thv(
         .d(sh_thv$d),
         .q(sh_thv$q),
         .clock(sh_thv$clock)
     );
-    fcc_regs__sh_thh_c sh_thh_c(
+    fcc_regs__sh_thh_c_k7_668cf05b sh_thh_c(
         .d(sh_thh_c$d),
         .q(sh_thh_c$q),
         .clock(sh_thh_c$clock)
     );
-    fcc_regs__sh_thv_c sh_thv_c(
+    fcc_regs__sh_thv_c_k7_668cf05b sh_thv_c(
         .d(sh_thv_c$d),
         .q(sh_thv_c$q),
         .clock(sh_thv_c$clock)
     );
-    fcc_regs__sh_rows sh_rows(
+    fcc_regs__sh_rows_k7_668cf05b sh_rows(
         .d(sh_rows$d),
         .q(sh_rows$q),
         .clock(sh_rows$clock)
     );
-    fcc_regs__sh_cols sh_cols(
+    fcc_regs__sh_cols_k7_668cf05b sh_cols(
         .d(sh_cols$d),
         .q(sh_cols$q),
         .clock(sh_cols$clock)
     );
-    fcc_regs__act_k act_k(
+    fcc_regs__act_k_k7_668cf05b act_k(
         .d(act_k$d),
         .q(act_k$q),
         .clock(act_k$clock)
     );
-    fcc_regs__act_thh_c act_thh_c(
+    fcc_regs__act_thh_c_k7_668cf05b act_thh_c(
         .d(act_thh_c$d),
         .q(act_thh_c$q),
         .clock(act_thh_c$clock)
     );
-    fcc_regs__act_thv_c act_thv_c(
+    fcc_regs__act_thv_c_k7_668cf05b act_thv_c(
         .d(act_thv_c$d),
         .q(act_thv_c$q),
         .clock(act_thv_c$clock)
     );
-    fcc_regs__act_rows act_rows(
+    fcc_regs__act_rows_k7_668cf05b act_rows(
         .d(act_rows$d),
         .q(act_rows$q),
         .clock(act_rows$clock)
     );
-    fcc_regs__act_cols act_cols(
+    fcc_regs__act_cols_k7_668cf05b act_cols(
         .d(act_cols$d),
         .q(act_cols$q),
         .clock(act_cols$clock)
     );
-    fcc_regs__err_k err_k(
+    fcc_regs__err_k_k7_668cf05b err_k(
         .d(err_k$d),
         .q(err_k$q),
         .clock(err_k$clock)
     );
-    fcc_regs__err_thh err_thh(
+    fcc_regs__err_thh_k7_668cf05b err_thh(
         .d(err_thh$d),
         .q(err_thh$q),
         .clock(err_thh$clock)
     );
-    fcc_regs__err_thv err_thv(
+    fcc_regs__err_thv_k7_668cf05b err_thv(
         .d(err_thv$d),
         .q(err_thv$q),
         .clock(err_thv$clock)
     );
-    fcc_regs__err_rows err_rows(
+    fcc_regs__err_rows_k7_668cf05b err_rows(
         .d(err_rows$d),
         .q(err_rows$q),
         .clock(err_rows$clock)
     );
-    fcc_regs__err_cols err_cols(
+    fcc_regs__err_cols_k7_668cf05b err_cols(
         .d(err_cols$d),
         .q(err_cols$q),
         .clock(err_cols$clock)
     );
-    fcc_regs__sq sq(
+    fcc_regs__sq_k7_668cf05b sq(
         .clk(sq$clk),
         .rst(sq$rst),
         .start(sq$start),
@@ -12609,22 +11349,17 @@ module fcc_regs(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata
         .c_lt(sq$c_lt),
         .c_le(sq$c_le)
     );
-    fcc_regs__sq_v sq_v(
+    fcc_regs__sq_v_k7_668cf05b sq_v(
         .d(sq_v$d),
         .q(sq_v$q),
         .clock(sq_v$clock)
     );
-    fcc_regs__sq_a sq_a(
+    fcc_regs__sq_a_k7_668cf05b sq_a(
         .d(sq_a$d),
         .q(sq_a$q),
         .clock(sq_a$clock)
     );
-    fcc_regs__sq_start sq_start(
-        .d(sq_start$d),
-        .q(sq_start$q),
-        .clock(sq_start$clock)
-    );
-    fcc_regs__sq_busy_q sq_busy_q(
+    fcc_regs__sq_busy_q_k7_668cf05b sq_busy_q(
         .d(sq_busy_q$d),
         .q(sq_busy_q$q),
         .clock(sq_busy_q$clock)
@@ -12671,7 +11406,6 @@ module fcc_regs(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata
         err_cols$clock = clk;
         sq_v$clock = clk;
         sq_a$clock = clk;
-        sq_start$clock = clk;
         sq_busy_q$clock = clk;
         aw_v$d = aw_v$q;
         aw_a$d = aw_a$q;
@@ -12712,14 +11446,12 @@ module fcc_regs(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata
         err_cols$d = err_cols$q;
         sq_v$d = sq_v$q;
         sq_a$d = sq_a$q;
-        sq_start$d = sq_start$q;
         sq_busy_q$d = sq_busy_q$q;
         sq$clk = clk;
         sq$rst = rst;
-        sq$a = sq_a$q;
-        sq$start = sq_start$q;
-        sq_start$d = 1'b0;
-        wr = aw_v$q & w_v$q & ~b_v$q & ~sq_start$q & ~sq$busy & ~sq_busy_q$q;
+        sq$a = w_d$q[15:0];
+        sq$start = 1'b0;
+        wr = aw_v$q & w_v$q & ~b_v$q & ~sq$busy & ~sq_busy_q$q;
         th_ok = (w_d$q >= th_min) & (w_d$q <= th_max);
         if (s_axil_awvalid & ~aw_v$q) begin
             aw_v$d = 1'b1;
@@ -12790,7 +11522,7 @@ module fcc_regs(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata
             if (aw_a$q == a_run_thh) begin
                 if (th_ok) begin
                     b_v$d = 1'b0;
-                    sq_start$d = 1'b1;
+                    sq$start = 1'b1;
                     sq_v$d = 1'b0;
                 end
                 else begin
@@ -12800,7 +11532,7 @@ module fcc_regs(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata
             if (aw_a$q == a_run_thv) begin
                 if (th_ok) begin
                     b_v$d = 1'b0;
-                    sq_start$d = 1'b1;
+                    sq$start = 1'b1;
                     sq_v$d = 1'b1;
                 end
                 else begin
@@ -12883,7 +11615,6 @@ module fcc_regs(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata
         core_rst_q$d = rst | soft_q$q;
         core_rst_next = rst | soft_q$q;
         if (rst) begin
-            sq_start$d = 1'b0;
             aw_v$d = 1'b0;
             w_v$d = 1'b0;
             b_v$d = 1'b0;
@@ -12944,10 +11675,10 @@ module fcc_regs(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata
         run_cols = act_cols$q;
     end
 
-endmodule // fcc_regs
+endmodule // fcc_regs_k7_668cf05b
 
 
-module fcc_regs__act_cols(d,q,clock);
+module fcc_regs__act_cols_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [12:0] d;
@@ -12963,10 +11694,10 @@ module fcc_regs__act_cols(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__act_cols
+endmodule // fcc_regs__act_cols_k7_668cf05b
 
 
-module fcc_regs__act_k(d,q,clock);
+module fcc_regs__act_k_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [3:0] d;
@@ -12982,10 +11713,10 @@ module fcc_regs__act_k(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__act_k
+endmodule // fcc_regs__act_k_k7_668cf05b
 
 
-module fcc_regs__act_rows(d,q,clock);
+module fcc_regs__act_rows_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [7:0] d;
@@ -13001,29 +11732,10 @@ module fcc_regs__act_rows(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__act_rows
+endmodule // fcc_regs__act_rows_k7_668cf05b
 
 
-module fcc_regs__act_thh_c(d,q,clock);
-
-    // Module arguments
-    input wire  [35:0] d;
-    output reg  [35:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 36'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__act_thh_c
-
-
-module fcc_regs__act_thv_c(d,q,clock);
+module fcc_regs__act_thh_c_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [35:0] d;
@@ -13039,10 +11751,29 @@ module fcc_regs__act_thv_c(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__act_thv_c
+endmodule // fcc_regs__act_thh_c_k7_668cf05b
 
 
-module fcc_regs__aw_a(d,q,clock);
+module fcc_regs__act_thv_c_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__act_thv_c_k7_668cf05b
+
+
+module fcc_regs__aw_a_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [9:0] d;
@@ -13058,29 +11789,10 @@ module fcc_regs__aw_a(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__aw_a
+endmodule // fcc_regs__aw_a_k7_668cf05b
 
 
-module fcc_regs__aw_v(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__aw_v
-
-
-module fcc_regs__b_v(d,q,clock);
+module fcc_regs__aw_v_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -13096,10 +11808,10 @@ module fcc_regs__b_v(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__b_v
+endmodule // fcc_regs__aw_v_k7_668cf05b
 
 
-module fcc_regs__core_rst_q(d,q,clock);
+module fcc_regs__b_v_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -13115,10 +11827,29 @@ module fcc_regs__core_rst_q(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__core_rst_q
+endmodule // fcc_regs__b_v_k7_668cf05b
 
 
-module fcc_regs__count(d,q,clock);
+module fcc_regs__core_rst_q_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__core_rst_q_k7_668cf05b
+
+
+module fcc_regs__count_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [31:0] d;
@@ -13134,29 +11865,10 @@ module fcc_regs__count(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__count
+endmodule // fcc_regs__count_k7_668cf05b
 
 
-module fcc_regs__done_q(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__done_q
-
-
-module fcc_regs__done_sticky(d,q,clock);
+module fcc_regs__done_q_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -13172,29 +11884,10 @@ module fcc_regs__done_sticky(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__done_sticky
+endmodule // fcc_regs__done_q_k7_668cf05b
 
 
-module fcc_regs__err_cols(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__err_cols
-
-
-module fcc_regs__err_k(d,q,clock);
+module fcc_regs__done_sticky_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -13210,29 +11903,10 @@ module fcc_regs__err_k(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__err_k
+endmodule // fcc_regs__done_sticky_k7_668cf05b
 
 
-module fcc_regs__err_rows(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__err_rows
-
-
-module fcc_regs__err_thh(d,q,clock);
+module fcc_regs__err_cols_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -13248,29 +11922,10 @@ module fcc_regs__err_thh(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__err_thh
+endmodule // fcc_regs__err_cols_k7_668cf05b
 
 
-module fcc_regs__err_thv(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__err_thv
-
-
-module fcc_regs__irq_en(d,q,clock);
+module fcc_regs__err_k_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -13286,10 +11941,86 @@ module fcc_regs__irq_en(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__irq_en
+endmodule // fcc_regs__err_k_k7_668cf05b
 
 
-module fcc_regs__mux(addr,w16$0,w16$1,w16$2,w16$3,w16$4,w16$5,w16$6,w20$0,w24$0,w24$1,w32$0,flags$0,flags$1,flags$2,flags$3,flags$4,flags$5,flags$6,flags$7,flags$8,flags$9,data);
+module fcc_regs__err_rows_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__err_rows_k7_668cf05b
+
+
+module fcc_regs__err_thh_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__err_thh_k7_668cf05b
+
+
+module fcc_regs__err_thv_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__err_thv_k7_668cf05b
+
+
+module fcc_regs__irq_en_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__irq_en_k7_668cf05b
+
+
+module fcc_regs__mux_k7_668cf05b(addr,w16$0,w16$1,w16$2,w16$3,w16$4,w16$5,w16$6,w20$0,w24$0,w24$1,w32$0,flags$0,flags$1,flags$2,flags$3,flags$4,flags$5,flags$6,flags$7,flags$8,flags$9,data);
 
     // Module arguments
     input wire  [9:0] addr;
@@ -13347,10 +12078,10 @@ module fcc_regs__mux(addr,w16$0,w16$1,w16$2,w16$3,w16$4,w16$5,w16$6,w20$0,w24$0,
             default: data = 32'h00000000;
         endcase
     end
-endmodule // fcc_regs__mux
+endmodule // fcc_regs__mux_k7_668cf05b
 
 
-module fcc_regs__r_d(d,q,clock);
+module fcc_regs__r_d_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [31:0] d;
@@ -13366,10 +12097,10 @@ module fcc_regs__r_d(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__r_d
+endmodule // fcc_regs__r_d_k7_668cf05b
 
 
-module fcc_regs__r_v(d,q,clock);
+module fcc_regs__r_v_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -13385,10 +12116,10 @@ module fcc_regs__r_v(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__r_v
+endmodule // fcc_regs__r_v_k7_668cf05b
 
 
-module fcc_regs__s_clusters(d,q,clock);
+module fcc_regs__s_clusters_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -13404,67 +12135,10 @@ module fcc_regs__s_clusters(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__s_clusters
+endmodule // fcc_regs__s_clusters_k7_668cf05b
 
 
-module fcc_regs__s_err(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__s_err
-
-
-module fcc_regs__s_gstall(d,q,clock);
-
-    // Module arguments
-    input wire  [23:0] d;
-    output reg  [23:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 24'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__s_gstall
-
-
-module fcc_regs__s_joins(d,q,clock);
-
-    // Module arguments
-    input wire  [23:0] d;
-    output reg  [23:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 24'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__s_joins
-
-
-module fcc_regs__s_ovf(d,q,clock);
+module fcc_regs__s_err_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -13480,10 +12154,67 @@ module fcc_regs__s_ovf(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__s_ovf
+endmodule // fcc_regs__s_err_k7_668cf05b
 
 
-module fcc_regs__s_prov(d,q,clock);
+module fcc_regs__s_gstall_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__s_gstall_k7_668cf05b
+
+
+module fcc_regs__s_joins_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__s_joins_k7_668cf05b
+
+
+module fcc_regs__s_ovf_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__s_ovf_k7_668cf05b
+
+
+module fcc_regs__s_prov_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -13499,10 +12230,10 @@ module fcc_regs__s_prov(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__s_prov
+endmodule // fcc_regs__s_prov_k7_668cf05b
 
 
-module fcc_regs__s_unl(d,q,clock);
+module fcc_regs__s_unl_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [19:0] d;
@@ -13518,29 +12249,10 @@ module fcc_regs__s_unl(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__s_unl
+endmodule // fcc_regs__s_unl_k7_668cf05b
 
 
-module fcc_regs__sh_cols(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__sh_cols
-
-
-module fcc_regs__sh_k(d,q,clock);
+module fcc_regs__sh_cols_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -13556,29 +12268,10 @@ module fcc_regs__sh_k(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__sh_k
+endmodule // fcc_regs__sh_cols_k7_668cf05b
 
 
-module fcc_regs__sh_rows(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__sh_rows
-
-
-module fcc_regs__sh_thh(d,q,clock);
+module fcc_regs__sh_k_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -13594,10 +12287,48 @@ module fcc_regs__sh_thh(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__sh_thh
+endmodule // fcc_regs__sh_k_k7_668cf05b
 
 
-module fcc_regs__sh_thh_c(d,q,clock);
+module fcc_regs__sh_rows_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__sh_rows_k7_668cf05b
+
+
+module fcc_regs__sh_thh_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__sh_thh_k7_668cf05b
+
+
+module fcc_regs__sh_thh_c_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [35:0] d;
@@ -13613,10 +12344,10 @@ module fcc_regs__sh_thh_c(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__sh_thh_c
+endmodule // fcc_regs__sh_thh_c_k7_668cf05b
 
 
-module fcc_regs__sh_thv(d,q,clock);
+module fcc_regs__sh_thv_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -13632,10 +12363,10 @@ module fcc_regs__sh_thv(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__sh_thv
+endmodule // fcc_regs__sh_thv_k7_668cf05b
 
 
-module fcc_regs__sh_thv_c(d,q,clock);
+module fcc_regs__sh_thv_c_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [35:0] d;
@@ -13651,10 +12382,10 @@ module fcc_regs__sh_thv_c(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__sh_thv_c
+endmodule // fcc_regs__sh_thv_c_k7_668cf05b
 
 
-module fcc_regs__soft_q(d,q,clock);
+module fcc_regs__soft_q_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -13670,10 +12401,10 @@ module fcc_regs__soft_q(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__soft_q
+endmodule // fcc_regs__soft_q_k7_668cf05b
 
 
-module fcc_regs__sq(clk,rst,start,a,busy,c_lt,c_le);
+module fcc_regs__sq_k7_668cf05b(clk,rst,start,a,busy,c_lt,c_le);
 
     // Module arguments
     input wire  clk;
@@ -13713,10 +12444,10 @@ module fcc_regs__sq(clk,rst,start,a,busy,c_lt,c_le);
         c_lt = 36'd0 - {4'd0, acc};
         c_le = ~{4'd0, acc};
     end
-endmodule // fcc_regs__sq
+endmodule // fcc_regs__sq_k7_668cf05b
 
 
-module fcc_regs__sq_a(d,q,clock);
+module fcc_regs__sq_a_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -13732,29 +12463,10 @@ module fcc_regs__sq_a(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__sq_a
+endmodule // fcc_regs__sq_a_k7_668cf05b
 
 
-module fcc_regs__sq_busy_q(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__sq_busy_q
-
-
-module fcc_regs__sq_start(d,q,clock);
+module fcc_regs__sq_busy_q_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -13770,10 +12482,10 @@ module fcc_regs__sq_start(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__sq_start
+endmodule // fcc_regs__sq_busy_q_k7_668cf05b
 
 
-module fcc_regs__sq_v(d,q,clock);
+module fcc_regs__sq_v_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -13789,10 +12501,10 @@ module fcc_regs__sq_v(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__sq_v
+endmodule // fcc_regs__sq_v_k7_668cf05b
 
 
-module fcc_regs__w_d(d,q,clock);
+module fcc_regs__w_d_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [31:0] d;
@@ -13808,29 +12520,10 @@ module fcc_regs__w_d(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__w_d
+endmodule // fcc_regs__w_d_k7_668cf05b
 
 
-module fcc_regs__w_v(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__w_v
-
-
-module fcc_top__room(d,q,clock);
+module fcc_regs__w_v_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -13846,10 +12539,29 @@ module fcc_top__room(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_top__room
+endmodule // fcc_regs__w_v_k7_668cf05b
 
 
-module fcc_top__row(d,q,clock);
+module fcc_top__room_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__room_k7_668cf05b
+
+
+module fcc_top__row_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [7:0] d;
@@ -13865,10 +12577,10 @@ module fcc_top__row(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_top__row
+endmodule // fcc_top__row_k7_668cf05b
 
 
-module fcc_top__row_last(d,q,clock);
+module fcc_top__row_last_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -13884,10 +12596,10 @@ module fcc_top__row_last(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_top__row_last
+endmodule // fcc_top__row_last_k7_668cf05b
 
 
-module fcc_top__slot_q(d,q,clock);
+module fcc_top__slot_q_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [73:0] d;
@@ -13903,10 +12615,10 @@ module fcc_top__slot_q(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_top__slot_q
+endmodule // fcc_top__slot_q_k7_668cf05b
 
 
-module fcc_sort_net(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit$6,hit$7,hit$8,hit$9,hit$10,hit$11,hit$12,hit$13,hit$14,hit$15,hit$16,hit$17,hit$18,hit$19,hit$20,rep$0,rep$1,rep$2,rep$3,rep$4,rep$5,rep$6,rep$7,rep$8,rep$9,rep$10,rep$11,rep$12,rep$13,rep$14,rep$15,rep$16,rep$17,rep$18,rep$19,rep$20,rep_we,rep_waddr,rep_wdata,jv,ja,jb,jsame,jtake,jq_empty,last_done,drop,take,joins);
+module fcc_sort_net_k7_668cf05b(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit$6,hit$7,hit$8,hit$9,hit$10,hit$11,hit$12,hit$13,hit$14,hit$15,hit$16,hit$17,hit$18,hit$19,hit$20,rep$0,rep$1,rep$2,rep$3,rep$4,rep$5,rep$6,rep$7,rep$8,rep$9,rep$10,rep$11,rep$12,rep$13,rep$14,rep$15,rep$16,rep$17,rep$18,rep$19,rep$20,rep_we,rep_waddr,rep_wdata,jv,ja,jb,jsame,jtake,jq_empty,last_done,drop,take,joins);
 
     // Module arguments
     input wire  clk;
@@ -17003,3762 +15715,3762 @@ module fcc_sort_net(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit
     reg  [15:0] vals$20;
 
     // Sub module instances
-    fcc_sort_net__mask_c mask_c(
+    fcc_sort_net__mask_c_k7_668cf05b mask_c(
         .d(mask_c$d),
         .q(mask_c$q),
         .clock(mask_c$clock)
     );
-    fcc_sort_net__mask_v mask_v(
+    fcc_sort_net__mask_v_k7_668cf05b mask_v(
         .d(mask_v$d),
         .q(mask_v$q),
         .clock(mask_v$clock)
     );
-    fcc_sort_net__c1 c1(
+    fcc_sort_net__c1_k7_668cf05b c1(
         .d(c1$d),
         .q(c1$q),
         .clock(c1$clock)
     );
-    fcc_sort_net__cs__0 cs$0(
+    fcc_sort_net__cs__0_k7_668cf05b cs$0(
         .d(cs$0$d),
         .q(cs$0$q),
         .clock(cs$0$clock)
     );
-    fcc_sort_net__cs__1 cs$1(
+    fcc_sort_net__cs__1_k7_668cf05b cs$1(
         .d(cs$1$d),
         .q(cs$1$q),
         .clock(cs$1$clock)
     );
-    fcc_sort_net__cs__2 cs$2(
+    fcc_sort_net__cs__2_k7_668cf05b cs$2(
         .d(cs$2$d),
         .q(cs$2$q),
         .clock(cs$2$clock)
     );
-    fcc_sort_net__cs__3 cs$3(
+    fcc_sort_net__cs__3_k7_668cf05b cs$3(
         .d(cs$3$d),
         .q(cs$3$q),
         .clock(cs$3$clock)
     );
-    fcc_sort_net__c_sm c_sm(
+    fcc_sort_net__c_sm_k7_668cf05b c_sm(
         .d(c_sm$d),
         .q(c_sm$q),
         .clock(c_sm$clock)
     );
-    fcc_sort_net__c_sm1 c_sm1(
+    fcc_sort_net__c_sm1_k7_668cf05b c_sm1(
         .d(c_sm1$d),
         .q(c_sm1$q),
         .clock(c_sm1$clock)
     );
-    fcc_sort_net__c_sm2 c_sm2(
+    fcc_sort_net__c_sm2_k7_668cf05b c_sm2(
         .d(c_sm2$d),
         .q(c_sm2$q),
         .clock(c_sm2$clock)
     );
-    fcc_sort_net__ps_hit__0 ps_hit$0(
+    fcc_sort_net__ps_hit__0_k7_668cf05b ps_hit$0(
         .d(ps_hit$0$d),
         .q(ps_hit$0$q),
         .clock(ps_hit$0$clock)
     );
-    fcc_sort_net__ps_hit__1 ps_hit$1(
+    fcc_sort_net__ps_hit__1_k7_668cf05b ps_hit$1(
         .d(ps_hit$1$d),
         .q(ps_hit$1$q),
         .clock(ps_hit$1$clock)
     );
-    fcc_sort_net__ps_hit__2 ps_hit$2(
+    fcc_sort_net__ps_hit__2_k7_668cf05b ps_hit$2(
         .d(ps_hit$2$d),
         .q(ps_hit$2$q),
         .clock(ps_hit$2$clock)
     );
-    fcc_sort_net__ps_hit__3 ps_hit$3(
+    fcc_sort_net__ps_hit__3_k7_668cf05b ps_hit$3(
         .d(ps_hit$3$d),
         .q(ps_hit$3$q),
         .clock(ps_hit$3$clock)
     );
-    fcc_sort_net__ps_hit__4 ps_hit$4(
+    fcc_sort_net__ps_hit__4_k7_668cf05b ps_hit$4(
         .d(ps_hit$4$d),
         .q(ps_hit$4$q),
         .clock(ps_hit$4$clock)
     );
-    fcc_sort_net__ps_hit__5 ps_hit$5(
+    fcc_sort_net__ps_hit__5_k7_668cf05b ps_hit$5(
         .d(ps_hit$5$d),
         .q(ps_hit$5$q),
         .clock(ps_hit$5$clock)
     );
-    fcc_sort_net__ps_hit__6 ps_hit$6(
+    fcc_sort_net__ps_hit__6_k7_668cf05b ps_hit$6(
         .d(ps_hit$6$d),
         .q(ps_hit$6$q),
         .clock(ps_hit$6$clock)
     );
-    fcc_sort_net__ps_hit__7 ps_hit$7(
+    fcc_sort_net__ps_hit__7_k7_668cf05b ps_hit$7(
         .d(ps_hit$7$d),
         .q(ps_hit$7$q),
         .clock(ps_hit$7$clock)
     );
-    fcc_sort_net__ps_hit__8 ps_hit$8(
+    fcc_sort_net__ps_hit__8_k7_668cf05b ps_hit$8(
         .d(ps_hit$8$d),
         .q(ps_hit$8$q),
         .clock(ps_hit$8$clock)
     );
-    fcc_sort_net__ps_hit__9 ps_hit$9(
+    fcc_sort_net__ps_hit__9_k7_668cf05b ps_hit$9(
         .d(ps_hit$9$d),
         .q(ps_hit$9$q),
         .clock(ps_hit$9$clock)
     );
-    fcc_sort_net__ps_hit__10 ps_hit$10(
+    fcc_sort_net__ps_hit__10_k7_668cf05b ps_hit$10(
         .d(ps_hit$10$d),
         .q(ps_hit$10$q),
         .clock(ps_hit$10$clock)
     );
-    fcc_sort_net__ps_hit__11 ps_hit$11(
+    fcc_sort_net__ps_hit__11_k7_668cf05b ps_hit$11(
         .d(ps_hit$11$d),
         .q(ps_hit$11$q),
         .clock(ps_hit$11$clock)
     );
-    fcc_sort_net__ps_hit__12 ps_hit$12(
+    fcc_sort_net__ps_hit__12_k7_668cf05b ps_hit$12(
         .d(ps_hit$12$d),
         .q(ps_hit$12$q),
         .clock(ps_hit$12$clock)
     );
-    fcc_sort_net__ps_hit__13 ps_hit$13(
+    fcc_sort_net__ps_hit__13_k7_668cf05b ps_hit$13(
         .d(ps_hit$13$d),
         .q(ps_hit$13$q),
         .clock(ps_hit$13$clock)
     );
-    fcc_sort_net__ps_hit__14 ps_hit$14(
+    fcc_sort_net__ps_hit__14_k7_668cf05b ps_hit$14(
         .d(ps_hit$14$d),
         .q(ps_hit$14$q),
         .clock(ps_hit$14$clock)
     );
-    fcc_sort_net__ps_hit__15 ps_hit$15(
+    fcc_sort_net__ps_hit__15_k7_668cf05b ps_hit$15(
         .d(ps_hit$15$d),
         .q(ps_hit$15$q),
         .clock(ps_hit$15$clock)
     );
-    fcc_sort_net__ps_hit__16 ps_hit$16(
+    fcc_sort_net__ps_hit__16_k7_668cf05b ps_hit$16(
         .d(ps_hit$16$d),
         .q(ps_hit$16$q),
         .clock(ps_hit$16$clock)
     );
-    fcc_sort_net__ps_hit__17 ps_hit$17(
+    fcc_sort_net__ps_hit__17_k7_668cf05b ps_hit$17(
         .d(ps_hit$17$d),
         .q(ps_hit$17$q),
         .clock(ps_hit$17$clock)
     );
-    fcc_sort_net__ps_hit__18 ps_hit$18(
+    fcc_sort_net__ps_hit__18_k7_668cf05b ps_hit$18(
         .d(ps_hit$18$d),
         .q(ps_hit$18$q),
         .clock(ps_hit$18$clock)
     );
-    fcc_sort_net__ps_hit__19 ps_hit$19(
+    fcc_sort_net__ps_hit__19_k7_668cf05b ps_hit$19(
         .d(ps_hit$19$d),
         .q(ps_hit$19$q),
         .clock(ps_hit$19$clock)
     );
-    fcc_sort_net__ps_hit__20 ps_hit$20(
+    fcc_sort_net__ps_hit__20_k7_668cf05b ps_hit$20(
         .d(ps_hit$20$d),
         .q(ps_hit$20$q),
         .clock(ps_hit$20$clock)
     );
-    fcc_sort_net__ps_hit__21 ps_hit$21(
+    fcc_sort_net__ps_hit__21_k7_668cf05b ps_hit$21(
         .d(ps_hit$21$d),
         .q(ps_hit$21$q),
         .clock(ps_hit$21$clock)
     );
-    fcc_sort_net__ps_hit__22 ps_hit$22(
+    fcc_sort_net__ps_hit__22_k7_668cf05b ps_hit$22(
         .d(ps_hit$22$d),
         .q(ps_hit$22$q),
         .clock(ps_hit$22$clock)
     );
-    fcc_sort_net__ps_hit__23 ps_hit$23(
+    fcc_sort_net__ps_hit__23_k7_668cf05b ps_hit$23(
         .d(ps_hit$23$d),
         .q(ps_hit$23$q),
         .clock(ps_hit$23$clock)
     );
-    fcc_sort_net__ps_hit__24 ps_hit$24(
+    fcc_sort_net__ps_hit__24_k7_668cf05b ps_hit$24(
         .d(ps_hit$24$d),
         .q(ps_hit$24$q),
         .clock(ps_hit$24$clock)
     );
-    fcc_sort_net__ps_hit__25 ps_hit$25(
+    fcc_sort_net__ps_hit__25_k7_668cf05b ps_hit$25(
         .d(ps_hit$25$d),
         .q(ps_hit$25$q),
         .clock(ps_hit$25$clock)
     );
-    fcc_sort_net__ps_hit__26 ps_hit$26(
+    fcc_sort_net__ps_hit__26_k7_668cf05b ps_hit$26(
         .d(ps_hit$26$d),
         .q(ps_hit$26$q),
         .clock(ps_hit$26$clock)
     );
-    fcc_sort_net__ps_hit__27 ps_hit$27(
+    fcc_sort_net__ps_hit__27_k7_668cf05b ps_hit$27(
         .d(ps_hit$27$d),
         .q(ps_hit$27$q),
         .clock(ps_hit$27$clock)
     );
-    fcc_sort_net__ps_hit__28 ps_hit$28(
+    fcc_sort_net__ps_hit__28_k7_668cf05b ps_hit$28(
         .d(ps_hit$28$d),
         .q(ps_hit$28$q),
         .clock(ps_hit$28$clock)
     );
-    fcc_sort_net__ps_hit__29 ps_hit$29(
+    fcc_sort_net__ps_hit__29_k7_668cf05b ps_hit$29(
         .d(ps_hit$29$d),
         .q(ps_hit$29$q),
         .clock(ps_hit$29$clock)
     );
-    fcc_sort_net__ps_hit__30 ps_hit$30(
+    fcc_sort_net__ps_hit__30_k7_668cf05b ps_hit$30(
         .d(ps_hit$30$d),
         .q(ps_hit$30$q),
         .clock(ps_hit$30$clock)
     );
-    fcc_sort_net__ps_hit__31 ps_hit$31(
+    fcc_sort_net__ps_hit__31_k7_668cf05b ps_hit$31(
         .d(ps_hit$31$d),
         .q(ps_hit$31$q),
         .clock(ps_hit$31$clock)
     );
-    fcc_sort_net__ps_hit__32 ps_hit$32(
+    fcc_sort_net__ps_hit__32_k7_668cf05b ps_hit$32(
         .d(ps_hit$32$d),
         .q(ps_hit$32$q),
         .clock(ps_hit$32$clock)
     );
-    fcc_sort_net__ps_hit__33 ps_hit$33(
+    fcc_sort_net__ps_hit__33_k7_668cf05b ps_hit$33(
         .d(ps_hit$33$d),
         .q(ps_hit$33$q),
         .clock(ps_hit$33$clock)
     );
-    fcc_sort_net__ps_hit__34 ps_hit$34(
+    fcc_sort_net__ps_hit__34_k7_668cf05b ps_hit$34(
         .d(ps_hit$34$d),
         .q(ps_hit$34$q),
         .clock(ps_hit$34$clock)
     );
-    fcc_sort_net__ps_hit__35 ps_hit$35(
+    fcc_sort_net__ps_hit__35_k7_668cf05b ps_hit$35(
         .d(ps_hit$35$d),
         .q(ps_hit$35$q),
         .clock(ps_hit$35$clock)
     );
-    fcc_sort_net__ps_hit__36 ps_hit$36(
+    fcc_sort_net__ps_hit__36_k7_668cf05b ps_hit$36(
         .d(ps_hit$36$d),
         .q(ps_hit$36$q),
         .clock(ps_hit$36$clock)
     );
-    fcc_sort_net__ps_hit__37 ps_hit$37(
+    fcc_sort_net__ps_hit__37_k7_668cf05b ps_hit$37(
         .d(ps_hit$37$d),
         .q(ps_hit$37$q),
         .clock(ps_hit$37$clock)
     );
-    fcc_sort_net__ps_hit__38 ps_hit$38(
+    fcc_sort_net__ps_hit__38_k7_668cf05b ps_hit$38(
         .d(ps_hit$38$d),
         .q(ps_hit$38$q),
         .clock(ps_hit$38$clock)
     );
-    fcc_sort_net__ps_hit__39 ps_hit$39(
+    fcc_sort_net__ps_hit__39_k7_668cf05b ps_hit$39(
         .d(ps_hit$39$d),
         .q(ps_hit$39$q),
         .clock(ps_hit$39$clock)
     );
-    fcc_sort_net__ps_hit__40 ps_hit$40(
+    fcc_sort_net__ps_hit__40_k7_668cf05b ps_hit$40(
         .d(ps_hit$40$d),
         .q(ps_hit$40$q),
         .clock(ps_hit$40$clock)
     );
-    fcc_sort_net__ps_hit__41 ps_hit$41(
+    fcc_sort_net__ps_hit__41_k7_668cf05b ps_hit$41(
         .d(ps_hit$41$d),
         .q(ps_hit$41$q),
         .clock(ps_hit$41$clock)
     );
-    fcc_sort_net__ps_hit__42 ps_hit$42(
+    fcc_sort_net__ps_hit__42_k7_668cf05b ps_hit$42(
         .d(ps_hit$42$d),
         .q(ps_hit$42$q),
         .clock(ps_hit$42$clock)
     );
-    fcc_sort_net__ps_hit__43 ps_hit$43(
+    fcc_sort_net__ps_hit__43_k7_668cf05b ps_hit$43(
         .d(ps_hit$43$d),
         .q(ps_hit$43$q),
         .clock(ps_hit$43$clock)
     );
-    fcc_sort_net__ps_hit__44 ps_hit$44(
+    fcc_sort_net__ps_hit__44_k7_668cf05b ps_hit$44(
         .d(ps_hit$44$d),
         .q(ps_hit$44$q),
         .clock(ps_hit$44$clock)
     );
-    fcc_sort_net__ps_hit__45 ps_hit$45(
+    fcc_sort_net__ps_hit__45_k7_668cf05b ps_hit$45(
         .d(ps_hit$45$d),
         .q(ps_hit$45$q),
         .clock(ps_hit$45$clock)
     );
-    fcc_sort_net__ps_hit__46 ps_hit$46(
+    fcc_sort_net__ps_hit__46_k7_668cf05b ps_hit$46(
         .d(ps_hit$46$d),
         .q(ps_hit$46$q),
         .clock(ps_hit$46$clock)
     );
-    fcc_sort_net__ps_hit__47 ps_hit$47(
+    fcc_sort_net__ps_hit__47_k7_668cf05b ps_hit$47(
         .d(ps_hit$47$d),
         .q(ps_hit$47$q),
         .clock(ps_hit$47$clock)
     );
-    fcc_sort_net__ps_hit__48 ps_hit$48(
+    fcc_sort_net__ps_hit__48_k7_668cf05b ps_hit$48(
         .d(ps_hit$48$d),
         .q(ps_hit$48$q),
         .clock(ps_hit$48$clock)
     );
-    fcc_sort_net__ps_hit__49 ps_hit$49(
+    fcc_sort_net__ps_hit__49_k7_668cf05b ps_hit$49(
         .d(ps_hit$49$d),
         .q(ps_hit$49$q),
         .clock(ps_hit$49$clock)
     );
-    fcc_sort_net__ps_hit__50 ps_hit$50(
+    fcc_sort_net__ps_hit__50_k7_668cf05b ps_hit$50(
         .d(ps_hit$50$d),
         .q(ps_hit$50$q),
         .clock(ps_hit$50$clock)
     );
-    fcc_sort_net__ps_hit__51 ps_hit$51(
+    fcc_sort_net__ps_hit__51_k7_668cf05b ps_hit$51(
         .d(ps_hit$51$d),
         .q(ps_hit$51$q),
         .clock(ps_hit$51$clock)
     );
-    fcc_sort_net__ps_hit__52 ps_hit$52(
+    fcc_sort_net__ps_hit__52_k7_668cf05b ps_hit$52(
         .d(ps_hit$52$d),
         .q(ps_hit$52$q),
         .clock(ps_hit$52$clock)
     );
-    fcc_sort_net__ps_hit__53 ps_hit$53(
+    fcc_sort_net__ps_hit__53_k7_668cf05b ps_hit$53(
         .d(ps_hit$53$d),
         .q(ps_hit$53$q),
         .clock(ps_hit$53$clock)
     );
-    fcc_sort_net__ps_hit__54 ps_hit$54(
+    fcc_sort_net__ps_hit__54_k7_668cf05b ps_hit$54(
         .d(ps_hit$54$d),
         .q(ps_hit$54$q),
         .clock(ps_hit$54$clock)
     );
-    fcc_sort_net__ps_hit__55 ps_hit$55(
+    fcc_sort_net__ps_hit__55_k7_668cf05b ps_hit$55(
         .d(ps_hit$55$d),
         .q(ps_hit$55$q),
         .clock(ps_hit$55$clock)
     );
-    fcc_sort_net__ps_hit__56 ps_hit$56(
+    fcc_sort_net__ps_hit__56_k7_668cf05b ps_hit$56(
         .d(ps_hit$56$d),
         .q(ps_hit$56$q),
         .clock(ps_hit$56$clock)
     );
-    fcc_sort_net__ps_hit__57 ps_hit$57(
+    fcc_sort_net__ps_hit__57_k7_668cf05b ps_hit$57(
         .d(ps_hit$57$d),
         .q(ps_hit$57$q),
         .clock(ps_hit$57$clock)
     );
-    fcc_sort_net__ps_hit__58 ps_hit$58(
+    fcc_sort_net__ps_hit__58_k7_668cf05b ps_hit$58(
         .d(ps_hit$58$d),
         .q(ps_hit$58$q),
         .clock(ps_hit$58$clock)
     );
-    fcc_sort_net__ps_hit__59 ps_hit$59(
+    fcc_sort_net__ps_hit__59_k7_668cf05b ps_hit$59(
         .d(ps_hit$59$d),
         .q(ps_hit$59$q),
         .clock(ps_hit$59$clock)
     );
-    fcc_sort_net__ps_hit__60 ps_hit$60(
+    fcc_sort_net__ps_hit__60_k7_668cf05b ps_hit$60(
         .d(ps_hit$60$d),
         .q(ps_hit$60$q),
         .clock(ps_hit$60$clock)
     );
-    fcc_sort_net__ps_hit__61 ps_hit$61(
+    fcc_sort_net__ps_hit__61_k7_668cf05b ps_hit$61(
         .d(ps_hit$61$d),
         .q(ps_hit$61$q),
         .clock(ps_hit$61$clock)
     );
-    fcc_sort_net__ps_hit__62 ps_hit$62(
+    fcc_sort_net__ps_hit__62_k7_668cf05b ps_hit$62(
         .d(ps_hit$62$d),
         .q(ps_hit$62$q),
         .clock(ps_hit$62$clock)
     );
-    fcc_sort_net__ps_hit__63 ps_hit$63(
+    fcc_sort_net__ps_hit__63_k7_668cf05b ps_hit$63(
         .d(ps_hit$63$d),
         .q(ps_hit$63$q),
         .clock(ps_hit$63$clock)
     );
-    fcc_sort_net__ps_hit__64 ps_hit$64(
+    fcc_sort_net__ps_hit__64_k7_668cf05b ps_hit$64(
         .d(ps_hit$64$d),
         .q(ps_hit$64$q),
         .clock(ps_hit$64$clock)
     );
-    fcc_sort_net__ps_hit__65 ps_hit$65(
+    fcc_sort_net__ps_hit__65_k7_668cf05b ps_hit$65(
         .d(ps_hit$65$d),
         .q(ps_hit$65$q),
         .clock(ps_hit$65$clock)
     );
-    fcc_sort_net__ps_hit__66 ps_hit$66(
+    fcc_sort_net__ps_hit__66_k7_668cf05b ps_hit$66(
         .d(ps_hit$66$d),
         .q(ps_hit$66$q),
         .clock(ps_hit$66$clock)
     );
-    fcc_sort_net__ps_hit__67 ps_hit$67(
+    fcc_sort_net__ps_hit__67_k7_668cf05b ps_hit$67(
         .d(ps_hit$67$d),
         .q(ps_hit$67$q),
         .clock(ps_hit$67$clock)
     );
-    fcc_sort_net__ps_hit__68 ps_hit$68(
+    fcc_sort_net__ps_hit__68_k7_668cf05b ps_hit$68(
         .d(ps_hit$68$d),
         .q(ps_hit$68$q),
         .clock(ps_hit$68$clock)
     );
-    fcc_sort_net__ps_hit__69 ps_hit$69(
+    fcc_sort_net__ps_hit__69_k7_668cf05b ps_hit$69(
         .d(ps_hit$69$d),
         .q(ps_hit$69$q),
         .clock(ps_hit$69$clock)
     );
-    fcc_sort_net__ps_hit__70 ps_hit$70(
+    fcc_sort_net__ps_hit__70_k7_668cf05b ps_hit$70(
         .d(ps_hit$70$d),
         .q(ps_hit$70$q),
         .clock(ps_hit$70$clock)
     );
-    fcc_sort_net__ps_hit__71 ps_hit$71(
+    fcc_sort_net__ps_hit__71_k7_668cf05b ps_hit$71(
         .d(ps_hit$71$d),
         .q(ps_hit$71$q),
         .clock(ps_hit$71$clock)
     );
-    fcc_sort_net__ps_hit__72 ps_hit$72(
+    fcc_sort_net__ps_hit__72_k7_668cf05b ps_hit$72(
         .d(ps_hit$72$d),
         .q(ps_hit$72$q),
         .clock(ps_hit$72$clock)
     );
-    fcc_sort_net__ps_hit__73 ps_hit$73(
+    fcc_sort_net__ps_hit__73_k7_668cf05b ps_hit$73(
         .d(ps_hit$73$d),
         .q(ps_hit$73$q),
         .clock(ps_hit$73$clock)
     );
-    fcc_sort_net__ps_hit__74 ps_hit$74(
+    fcc_sort_net__ps_hit__74_k7_668cf05b ps_hit$74(
         .d(ps_hit$74$d),
         .q(ps_hit$74$q),
         .clock(ps_hit$74$clock)
     );
-    fcc_sort_net__ps_hit__75 ps_hit$75(
+    fcc_sort_net__ps_hit__75_k7_668cf05b ps_hit$75(
         .d(ps_hit$75$d),
         .q(ps_hit$75$q),
         .clock(ps_hit$75$clock)
     );
-    fcc_sort_net__ps_hit__76 ps_hit$76(
+    fcc_sort_net__ps_hit__76_k7_668cf05b ps_hit$76(
         .d(ps_hit$76$d),
         .q(ps_hit$76$q),
         .clock(ps_hit$76$clock)
     );
-    fcc_sort_net__ps_hit__77 ps_hit$77(
+    fcc_sort_net__ps_hit__77_k7_668cf05b ps_hit$77(
         .d(ps_hit$77$d),
         .q(ps_hit$77$q),
         .clock(ps_hit$77$clock)
     );
-    fcc_sort_net__ps_hit__78 ps_hit$78(
+    fcc_sort_net__ps_hit__78_k7_668cf05b ps_hit$78(
         .d(ps_hit$78$d),
         .q(ps_hit$78$q),
         .clock(ps_hit$78$clock)
     );
-    fcc_sort_net__ps_hit__79 ps_hit$79(
+    fcc_sort_net__ps_hit__79_k7_668cf05b ps_hit$79(
         .d(ps_hit$79$d),
         .q(ps_hit$79$q),
         .clock(ps_hit$79$clock)
     );
-    fcc_sort_net__ps_hit__80 ps_hit$80(
+    fcc_sort_net__ps_hit__80_k7_668cf05b ps_hit$80(
         .d(ps_hit$80$d),
         .q(ps_hit$80$q),
         .clock(ps_hit$80$clock)
     );
-    fcc_sort_net__ps_hit__81 ps_hit$81(
+    fcc_sort_net__ps_hit__81_k7_668cf05b ps_hit$81(
         .d(ps_hit$81$d),
         .q(ps_hit$81$q),
         .clock(ps_hit$81$clock)
     );
-    fcc_sort_net__ps_hit__82 ps_hit$82(
+    fcc_sort_net__ps_hit__82_k7_668cf05b ps_hit$82(
         .d(ps_hit$82$d),
         .q(ps_hit$82$q),
         .clock(ps_hit$82$clock)
     );
-    fcc_sort_net__ps_hit__83 ps_hit$83(
+    fcc_sort_net__ps_hit__83_k7_668cf05b ps_hit$83(
         .d(ps_hit$83$d),
         .q(ps_hit$83$q),
         .clock(ps_hit$83$clock)
     );
-    fcc_sort_net__ps_hit__84 ps_hit$84(
+    fcc_sort_net__ps_hit__84_k7_668cf05b ps_hit$84(
         .d(ps_hit$84$d),
         .q(ps_hit$84$q),
         .clock(ps_hit$84$clock)
     );
-    fcc_sort_net__ps_hit__85 ps_hit$85(
+    fcc_sort_net__ps_hit__85_k7_668cf05b ps_hit$85(
         .d(ps_hit$85$d),
         .q(ps_hit$85$q),
         .clock(ps_hit$85$clock)
     );
-    fcc_sort_net__ps_hit__86 ps_hit$86(
+    fcc_sort_net__ps_hit__86_k7_668cf05b ps_hit$86(
         .d(ps_hit$86$d),
         .q(ps_hit$86$q),
         .clock(ps_hit$86$clock)
     );
-    fcc_sort_net__ps_hit__87 ps_hit$87(
+    fcc_sort_net__ps_hit__87_k7_668cf05b ps_hit$87(
         .d(ps_hit$87$d),
         .q(ps_hit$87$q),
         .clock(ps_hit$87$clock)
     );
-    fcc_sort_net__ps_hit__88 ps_hit$88(
+    fcc_sort_net__ps_hit__88_k7_668cf05b ps_hit$88(
         .d(ps_hit$88$d),
         .q(ps_hit$88$q),
         .clock(ps_hit$88$clock)
     );
-    fcc_sort_net__ps_hit__89 ps_hit$89(
+    fcc_sort_net__ps_hit__89_k7_668cf05b ps_hit$89(
         .d(ps_hit$89$d),
         .q(ps_hit$89$q),
         .clock(ps_hit$89$clock)
     );
-    fcc_sort_net__ps_hit__90 ps_hit$90(
+    fcc_sort_net__ps_hit__90_k7_668cf05b ps_hit$90(
         .d(ps_hit$90$d),
         .q(ps_hit$90$q),
         .clock(ps_hit$90$clock)
     );
-    fcc_sort_net__ps_hit__91 ps_hit$91(
+    fcc_sort_net__ps_hit__91_k7_668cf05b ps_hit$91(
         .d(ps_hit$91$d),
         .q(ps_hit$91$q),
         .clock(ps_hit$91$clock)
     );
-    fcc_sort_net__ps_hit__92 ps_hit$92(
+    fcc_sort_net__ps_hit__92_k7_668cf05b ps_hit$92(
         .d(ps_hit$92$d),
         .q(ps_hit$92$q),
         .clock(ps_hit$92$clock)
     );
-    fcc_sort_net__ps_hit__93 ps_hit$93(
+    fcc_sort_net__ps_hit__93_k7_668cf05b ps_hit$93(
         .d(ps_hit$93$d),
         .q(ps_hit$93$q),
         .clock(ps_hit$93$clock)
     );
-    fcc_sort_net__ps_hit__94 ps_hit$94(
+    fcc_sort_net__ps_hit__94_k7_668cf05b ps_hit$94(
         .d(ps_hit$94$d),
         .q(ps_hit$94$q),
         .clock(ps_hit$94$clock)
     );
-    fcc_sort_net__ps_hit__95 ps_hit$95(
+    fcc_sort_net__ps_hit__95_k7_668cf05b ps_hit$95(
         .d(ps_hit$95$d),
         .q(ps_hit$95$q),
         .clock(ps_hit$95$clock)
     );
-    fcc_sort_net__ps_hit__96 ps_hit$96(
+    fcc_sort_net__ps_hit__96_k7_668cf05b ps_hit$96(
         .d(ps_hit$96$d),
         .q(ps_hit$96$q),
         .clock(ps_hit$96$clock)
     );
-    fcc_sort_net__ps_hit__97 ps_hit$97(
+    fcc_sort_net__ps_hit__97_k7_668cf05b ps_hit$97(
         .d(ps_hit$97$d),
         .q(ps_hit$97$q),
         .clock(ps_hit$97$clock)
     );
-    fcc_sort_net__ps_hit__98 ps_hit$98(
+    fcc_sort_net__ps_hit__98_k7_668cf05b ps_hit$98(
         .d(ps_hit$98$d),
         .q(ps_hit$98$q),
         .clock(ps_hit$98$clock)
     );
-    fcc_sort_net__ps_hit__99 ps_hit$99(
+    fcc_sort_net__ps_hit__99_k7_668cf05b ps_hit$99(
         .d(ps_hit$99$d),
         .q(ps_hit$99$q),
         .clock(ps_hit$99$clock)
     );
-    fcc_sort_net__ps_hit__100 ps_hit$100(
+    fcc_sort_net__ps_hit__100_k7_668cf05b ps_hit$100(
         .d(ps_hit$100$d),
         .q(ps_hit$100$q),
         .clock(ps_hit$100$clock)
     );
-    fcc_sort_net__ps_hit__101 ps_hit$101(
+    fcc_sort_net__ps_hit__101_k7_668cf05b ps_hit$101(
         .d(ps_hit$101$d),
         .q(ps_hit$101$q),
         .clock(ps_hit$101$clock)
     );
-    fcc_sort_net__ps_hit__102 ps_hit$102(
+    fcc_sort_net__ps_hit__102_k7_668cf05b ps_hit$102(
         .d(ps_hit$102$d),
         .q(ps_hit$102$q),
         .clock(ps_hit$102$clock)
     );
-    fcc_sort_net__ps_hit__103 ps_hit$103(
+    fcc_sort_net__ps_hit__103_k7_668cf05b ps_hit$103(
         .d(ps_hit$103$d),
         .q(ps_hit$103$q),
         .clock(ps_hit$103$clock)
     );
-    fcc_sort_net__ps_hit__104 ps_hit$104(
+    fcc_sort_net__ps_hit__104_k7_668cf05b ps_hit$104(
         .d(ps_hit$104$d),
         .q(ps_hit$104$q),
         .clock(ps_hit$104$clock)
     );
-    fcc_sort_net__ps_hit__105 ps_hit$105(
+    fcc_sort_net__ps_hit__105_k7_668cf05b ps_hit$105(
         .d(ps_hit$105$d),
         .q(ps_hit$105$q),
         .clock(ps_hit$105$clock)
     );
-    fcc_sort_net__ps_hit__106 ps_hit$106(
+    fcc_sort_net__ps_hit__106_k7_668cf05b ps_hit$106(
         .d(ps_hit$106$d),
         .q(ps_hit$106$q),
         .clock(ps_hit$106$clock)
     );
-    fcc_sort_net__ps_hit__107 ps_hit$107(
+    fcc_sort_net__ps_hit__107_k7_668cf05b ps_hit$107(
         .d(ps_hit$107$d),
         .q(ps_hit$107$q),
         .clock(ps_hit$107$clock)
     );
-    fcc_sort_net__ps_hit__108 ps_hit$108(
+    fcc_sort_net__ps_hit__108_k7_668cf05b ps_hit$108(
         .d(ps_hit$108$d),
         .q(ps_hit$108$q),
         .clock(ps_hit$108$clock)
     );
-    fcc_sort_net__ps_hit__109 ps_hit$109(
+    fcc_sort_net__ps_hit__109_k7_668cf05b ps_hit$109(
         .d(ps_hit$109$d),
         .q(ps_hit$109$q),
         .clock(ps_hit$109$clock)
     );
-    fcc_sort_net__ps_hit__110 ps_hit$110(
+    fcc_sort_net__ps_hit__110_k7_668cf05b ps_hit$110(
         .d(ps_hit$110$d),
         .q(ps_hit$110$q),
         .clock(ps_hit$110$clock)
     );
-    fcc_sort_net__ps_hit__111 ps_hit$111(
+    fcc_sort_net__ps_hit__111_k7_668cf05b ps_hit$111(
         .d(ps_hit$111$d),
         .q(ps_hit$111$q),
         .clock(ps_hit$111$clock)
     );
-    fcc_sort_net__ps_hit__112 ps_hit$112(
+    fcc_sort_net__ps_hit__112_k7_668cf05b ps_hit$112(
         .d(ps_hit$112$d),
         .q(ps_hit$112$q),
         .clock(ps_hit$112$clock)
     );
-    fcc_sort_net__ps_hit__113 ps_hit$113(
+    fcc_sort_net__ps_hit__113_k7_668cf05b ps_hit$113(
         .d(ps_hit$113$d),
         .q(ps_hit$113$q),
         .clock(ps_hit$113$clock)
     );
-    fcc_sort_net__ps_hit__114 ps_hit$114(
+    fcc_sort_net__ps_hit__114_k7_668cf05b ps_hit$114(
         .d(ps_hit$114$d),
         .q(ps_hit$114$q),
         .clock(ps_hit$114$clock)
     );
-    fcc_sort_net__ps_hit__115 ps_hit$115(
+    fcc_sort_net__ps_hit__115_k7_668cf05b ps_hit$115(
         .d(ps_hit$115$d),
         .q(ps_hit$115$q),
         .clock(ps_hit$115$clock)
     );
-    fcc_sort_net__ps_hit__116 ps_hit$116(
+    fcc_sort_net__ps_hit__116_k7_668cf05b ps_hit$116(
         .d(ps_hit$116$d),
         .q(ps_hit$116$q),
         .clock(ps_hit$116$clock)
     );
-    fcc_sort_net__ps_hit__117 ps_hit$117(
+    fcc_sort_net__ps_hit__117_k7_668cf05b ps_hit$117(
         .d(ps_hit$117$d),
         .q(ps_hit$117$q),
         .clock(ps_hit$117$clock)
     );
-    fcc_sort_net__ps_hit__118 ps_hit$118(
+    fcc_sort_net__ps_hit__118_k7_668cf05b ps_hit$118(
         .d(ps_hit$118$d),
         .q(ps_hit$118$q),
         .clock(ps_hit$118$clock)
     );
-    fcc_sort_net__ps_hit__119 ps_hit$119(
+    fcc_sort_net__ps_hit__119_k7_668cf05b ps_hit$119(
         .d(ps_hit$119$d),
         .q(ps_hit$119$q),
         .clock(ps_hit$119$clock)
     );
-    fcc_sort_net__ps_hit__120 ps_hit$120(
+    fcc_sort_net__ps_hit__120_k7_668cf05b ps_hit$120(
         .d(ps_hit$120$d),
         .q(ps_hit$120$q),
         .clock(ps_hit$120$clock)
     );
-    fcc_sort_net__ps_hit__121 ps_hit$121(
+    fcc_sort_net__ps_hit__121_k7_668cf05b ps_hit$121(
         .d(ps_hit$121$d),
         .q(ps_hit$121$q),
         .clock(ps_hit$121$clock)
     );
-    fcc_sort_net__ps_hit__122 ps_hit$122(
+    fcc_sort_net__ps_hit__122_k7_668cf05b ps_hit$122(
         .d(ps_hit$122$d),
         .q(ps_hit$122$q),
         .clock(ps_hit$122$clock)
     );
-    fcc_sort_net__ps_hit__123 ps_hit$123(
+    fcc_sort_net__ps_hit__123_k7_668cf05b ps_hit$123(
         .d(ps_hit$123$d),
         .q(ps_hit$123$q),
         .clock(ps_hit$123$clock)
     );
-    fcc_sort_net__ps_hit__124 ps_hit$124(
+    fcc_sort_net__ps_hit__124_k7_668cf05b ps_hit$124(
         .d(ps_hit$124$d),
         .q(ps_hit$124$q),
         .clock(ps_hit$124$clock)
     );
-    fcc_sort_net__ps_hit__125 ps_hit$125(
+    fcc_sort_net__ps_hit__125_k7_668cf05b ps_hit$125(
         .d(ps_hit$125$d),
         .q(ps_hit$125$q),
         .clock(ps_hit$125$clock)
     );
-    fcc_sort_net__ps_hit__126 ps_hit$126(
+    fcc_sort_net__ps_hit__126_k7_668cf05b ps_hit$126(
         .d(ps_hit$126$d),
         .q(ps_hit$126$q),
         .clock(ps_hit$126$clock)
     );
-    fcc_sort_net__ps_hit__127 ps_hit$127(
+    fcc_sort_net__ps_hit__127_k7_668cf05b ps_hit$127(
         .d(ps_hit$127$d),
         .q(ps_hit$127$q),
         .clock(ps_hit$127$clock)
     );
-    fcc_sort_net__ps_hit__128 ps_hit$128(
+    fcc_sort_net__ps_hit__128_k7_668cf05b ps_hit$128(
         .d(ps_hit$128$d),
         .q(ps_hit$128$q),
         .clock(ps_hit$128$clock)
     );
-    fcc_sort_net__ps_hit__129 ps_hit$129(
+    fcc_sort_net__ps_hit__129_k7_668cf05b ps_hit$129(
         .d(ps_hit$129$d),
         .q(ps_hit$129$q),
         .clock(ps_hit$129$clock)
     );
-    fcc_sort_net__ps_hit__130 ps_hit$130(
+    fcc_sort_net__ps_hit__130_k7_668cf05b ps_hit$130(
         .d(ps_hit$130$d),
         .q(ps_hit$130$q),
         .clock(ps_hit$130$clock)
     );
-    fcc_sort_net__ps_hit__131 ps_hit$131(
+    fcc_sort_net__ps_hit__131_k7_668cf05b ps_hit$131(
         .d(ps_hit$131$d),
         .q(ps_hit$131$q),
         .clock(ps_hit$131$clock)
     );
-    fcc_sort_net__ps_hit__132 ps_hit$132(
+    fcc_sort_net__ps_hit__132_k7_668cf05b ps_hit$132(
         .d(ps_hit$132$d),
         .q(ps_hit$132$q),
         .clock(ps_hit$132$clock)
     );
-    fcc_sort_net__ps_hit__133 ps_hit$133(
+    fcc_sort_net__ps_hit__133_k7_668cf05b ps_hit$133(
         .d(ps_hit$133$d),
         .q(ps_hit$133$q),
         .clock(ps_hit$133$clock)
     );
-    fcc_sort_net__ps_hit__134 ps_hit$134(
+    fcc_sort_net__ps_hit__134_k7_668cf05b ps_hit$134(
         .d(ps_hit$134$d),
         .q(ps_hit$134$q),
         .clock(ps_hit$134$clock)
     );
-    fcc_sort_net__ps_hit__135 ps_hit$135(
+    fcc_sort_net__ps_hit__135_k7_668cf05b ps_hit$135(
         .d(ps_hit$135$d),
         .q(ps_hit$135$q),
         .clock(ps_hit$135$clock)
     );
-    fcc_sort_net__ps_hit__136 ps_hit$136(
+    fcc_sort_net__ps_hit__136_k7_668cf05b ps_hit$136(
         .d(ps_hit$136$d),
         .q(ps_hit$136$q),
         .clock(ps_hit$136$clock)
     );
-    fcc_sort_net__ps_hit__137 ps_hit$137(
+    fcc_sort_net__ps_hit__137_k7_668cf05b ps_hit$137(
         .d(ps_hit$137$d),
         .q(ps_hit$137$q),
         .clock(ps_hit$137$clock)
     );
-    fcc_sort_net__ps_hit__138 ps_hit$138(
+    fcc_sort_net__ps_hit__138_k7_668cf05b ps_hit$138(
         .d(ps_hit$138$d),
         .q(ps_hit$138$q),
         .clock(ps_hit$138$clock)
     );
-    fcc_sort_net__ps_hit__139 ps_hit$139(
+    fcc_sort_net__ps_hit__139_k7_668cf05b ps_hit$139(
         .d(ps_hit$139$d),
         .q(ps_hit$139$q),
         .clock(ps_hit$139$clock)
     );
-    fcc_sort_net__ps_hit__140 ps_hit$140(
+    fcc_sort_net__ps_hit__140_k7_668cf05b ps_hit$140(
         .d(ps_hit$140$d),
         .q(ps_hit$140$q),
         .clock(ps_hit$140$clock)
     );
-    fcc_sort_net__ps_hit__141 ps_hit$141(
+    fcc_sort_net__ps_hit__141_k7_668cf05b ps_hit$141(
         .d(ps_hit$141$d),
         .q(ps_hit$141$q),
         .clock(ps_hit$141$clock)
     );
-    fcc_sort_net__ps_hit__142 ps_hit$142(
+    fcc_sort_net__ps_hit__142_k7_668cf05b ps_hit$142(
         .d(ps_hit$142$d),
         .q(ps_hit$142$q),
         .clock(ps_hit$142$clock)
     );
-    fcc_sort_net__ps_hit__143 ps_hit$143(
+    fcc_sort_net__ps_hit__143_k7_668cf05b ps_hit$143(
         .d(ps_hit$143$d),
         .q(ps_hit$143$q),
         .clock(ps_hit$143$clock)
     );
-    fcc_sort_net__ps_hit__144 ps_hit$144(
+    fcc_sort_net__ps_hit__144_k7_668cf05b ps_hit$144(
         .d(ps_hit$144$d),
         .q(ps_hit$144$q),
         .clock(ps_hit$144$clock)
     );
-    fcc_sort_net__ps_hit__145 ps_hit$145(
+    fcc_sort_net__ps_hit__145_k7_668cf05b ps_hit$145(
         .d(ps_hit$145$d),
         .q(ps_hit$145$q),
         .clock(ps_hit$145$clock)
     );
-    fcc_sort_net__ps_hit__146 ps_hit$146(
+    fcc_sort_net__ps_hit__146_k7_668cf05b ps_hit$146(
         .d(ps_hit$146$d),
         .q(ps_hit$146$q),
         .clock(ps_hit$146$clock)
     );
-    fcc_sort_net__ps_adj__0 ps_adj$0(
+    fcc_sort_net__ps_adj__0_k7_668cf05b ps_adj$0(
         .d(ps_adj$0$d),
         .q(ps_adj$0$q),
         .clock(ps_adj$0$clock)
     );
-    fcc_sort_net__ps_adj__1 ps_adj$1(
+    fcc_sort_net__ps_adj__1_k7_668cf05b ps_adj$1(
         .d(ps_adj$1$d),
         .q(ps_adj$1$q),
         .clock(ps_adj$1$clock)
     );
-    fcc_sort_net__ps_adj__2 ps_adj$2(
+    fcc_sort_net__ps_adj__2_k7_668cf05b ps_adj$2(
         .d(ps_adj$2$d),
         .q(ps_adj$2$q),
         .clock(ps_adj$2$clock)
     );
-    fcc_sort_net__ps_adj__3 ps_adj$3(
+    fcc_sort_net__ps_adj__3_k7_668cf05b ps_adj$3(
         .d(ps_adj$3$d),
         .q(ps_adj$3$q),
         .clock(ps_adj$3$clock)
     );
-    fcc_sort_net__ps_adj__4 ps_adj$4(
+    fcc_sort_net__ps_adj__4_k7_668cf05b ps_adj$4(
         .d(ps_adj$4$d),
         .q(ps_adj$4$q),
         .clock(ps_adj$4$clock)
     );
-    fcc_sort_net__ps_adj__5 ps_adj$5(
+    fcc_sort_net__ps_adj__5_k7_668cf05b ps_adj$5(
         .d(ps_adj$5$d),
         .q(ps_adj$5$q),
         .clock(ps_adj$5$clock)
     );
-    fcc_sort_net__ps_adj__6 ps_adj$6(
+    fcc_sort_net__ps_adj__6_k7_668cf05b ps_adj$6(
         .d(ps_adj$6$d),
         .q(ps_adj$6$q),
         .clock(ps_adj$6$clock)
     );
-    fcc_sort_net__ps_adj__7 ps_adj$7(
+    fcc_sort_net__ps_adj__7_k7_668cf05b ps_adj$7(
         .d(ps_adj$7$d),
         .q(ps_adj$7$q),
         .clock(ps_adj$7$clock)
     );
-    fcc_sort_net__ps_adj__8 ps_adj$8(
+    fcc_sort_net__ps_adj__8_k7_668cf05b ps_adj$8(
         .d(ps_adj$8$d),
         .q(ps_adj$8$q),
         .clock(ps_adj$8$clock)
     );
-    fcc_sort_net__ps_adj__9 ps_adj$9(
+    fcc_sort_net__ps_adj__9_k7_668cf05b ps_adj$9(
         .d(ps_adj$9$d),
         .q(ps_adj$9$q),
         .clock(ps_adj$9$clock)
     );
-    fcc_sort_net__ps_adj__10 ps_adj$10(
+    fcc_sort_net__ps_adj__10_k7_668cf05b ps_adj$10(
         .d(ps_adj$10$d),
         .q(ps_adj$10$q),
         .clock(ps_adj$10$clock)
     );
-    fcc_sort_net__ps_adj__11 ps_adj$11(
+    fcc_sort_net__ps_adj__11_k7_668cf05b ps_adj$11(
         .d(ps_adj$11$d),
         .q(ps_adj$11$q),
         .clock(ps_adj$11$clock)
     );
-    fcc_sort_net__ps_adj__12 ps_adj$12(
+    fcc_sort_net__ps_adj__12_k7_668cf05b ps_adj$12(
         .d(ps_adj$12$d),
         .q(ps_adj$12$q),
         .clock(ps_adj$12$clock)
     );
-    fcc_sort_net__ps_adj__13 ps_adj$13(
+    fcc_sort_net__ps_adj__13_k7_668cf05b ps_adj$13(
         .d(ps_adj$13$d),
         .q(ps_adj$13$q),
         .clock(ps_adj$13$clock)
     );
-    fcc_sort_net__ps_adj__14 ps_adj$14(
+    fcc_sort_net__ps_adj__14_k7_668cf05b ps_adj$14(
         .d(ps_adj$14$d),
         .q(ps_adj$14$q),
         .clock(ps_adj$14$clock)
     );
-    fcc_sort_net__ps_adj__15 ps_adj$15(
+    fcc_sort_net__ps_adj__15_k7_668cf05b ps_adj$15(
         .d(ps_adj$15$d),
         .q(ps_adj$15$q),
         .clock(ps_adj$15$clock)
     );
-    fcc_sort_net__ps_adj__16 ps_adj$16(
+    fcc_sort_net__ps_adj__16_k7_668cf05b ps_adj$16(
         .d(ps_adj$16$d),
         .q(ps_adj$16$q),
         .clock(ps_adj$16$clock)
     );
-    fcc_sort_net__ps_adj__17 ps_adj$17(
+    fcc_sort_net__ps_adj__17_k7_668cf05b ps_adj$17(
         .d(ps_adj$17$d),
         .q(ps_adj$17$q),
         .clock(ps_adj$17$clock)
     );
-    fcc_sort_net__ps_adj__18 ps_adj$18(
+    fcc_sort_net__ps_adj__18_k7_668cf05b ps_adj$18(
         .d(ps_adj$18$d),
         .q(ps_adj$18$q),
         .clock(ps_adj$18$clock)
     );
-    fcc_sort_net__ps_adj__19 ps_adj$19(
+    fcc_sort_net__ps_adj__19_k7_668cf05b ps_adj$19(
         .d(ps_adj$19$d),
         .q(ps_adj$19$q),
         .clock(ps_adj$19$clock)
     );
-    fcc_sort_net__ps_adj__20 ps_adj$20(
+    fcc_sort_net__ps_adj__20_k7_668cf05b ps_adj$20(
         .d(ps_adj$20$d),
         .q(ps_adj$20$q),
         .clock(ps_adj$20$clock)
     );
-    fcc_sort_net__ps_adj__21 ps_adj$21(
+    fcc_sort_net__ps_adj__21_k7_668cf05b ps_adj$21(
         .d(ps_adj$21$d),
         .q(ps_adj$21$q),
         .clock(ps_adj$21$clock)
     );
-    fcc_sort_net__ps_adj__22 ps_adj$22(
+    fcc_sort_net__ps_adj__22_k7_668cf05b ps_adj$22(
         .d(ps_adj$22$d),
         .q(ps_adj$22$q),
         .clock(ps_adj$22$clock)
     );
-    fcc_sort_net__ps_adj__23 ps_adj$23(
+    fcc_sort_net__ps_adj__23_k7_668cf05b ps_adj$23(
         .d(ps_adj$23$d),
         .q(ps_adj$23$q),
         .clock(ps_adj$23$clock)
     );
-    fcc_sort_net__ps_adj__24 ps_adj$24(
+    fcc_sort_net__ps_adj__24_k7_668cf05b ps_adj$24(
         .d(ps_adj$24$d),
         .q(ps_adj$24$q),
         .clock(ps_adj$24$clock)
     );
-    fcc_sort_net__ps_adj__25 ps_adj$25(
+    fcc_sort_net__ps_adj__25_k7_668cf05b ps_adj$25(
         .d(ps_adj$25$d),
         .q(ps_adj$25$q),
         .clock(ps_adj$25$clock)
     );
-    fcc_sort_net__ps_adj__26 ps_adj$26(
+    fcc_sort_net__ps_adj__26_k7_668cf05b ps_adj$26(
         .d(ps_adj$26$d),
         .q(ps_adj$26$q),
         .clock(ps_adj$26$clock)
     );
-    fcc_sort_net__ps_adj__27 ps_adj$27(
+    fcc_sort_net__ps_adj__27_k7_668cf05b ps_adj$27(
         .d(ps_adj$27$d),
         .q(ps_adj$27$q),
         .clock(ps_adj$27$clock)
     );
-    fcc_sort_net__ps_adj__28 ps_adj$28(
+    fcc_sort_net__ps_adj__28_k7_668cf05b ps_adj$28(
         .d(ps_adj$28$d),
         .q(ps_adj$28$q),
         .clock(ps_adj$28$clock)
     );
-    fcc_sort_net__ps_adj__29 ps_adj$29(
+    fcc_sort_net__ps_adj__29_k7_668cf05b ps_adj$29(
         .d(ps_adj$29$d),
         .q(ps_adj$29$q),
         .clock(ps_adj$29$clock)
     );
-    fcc_sort_net__ps_adj__30 ps_adj$30(
+    fcc_sort_net__ps_adj__30_k7_668cf05b ps_adj$30(
         .d(ps_adj$30$d),
         .q(ps_adj$30$q),
         .clock(ps_adj$30$clock)
     );
-    fcc_sort_net__ps_adj__31 ps_adj$31(
+    fcc_sort_net__ps_adj__31_k7_668cf05b ps_adj$31(
         .d(ps_adj$31$d),
         .q(ps_adj$31$q),
         .clock(ps_adj$31$clock)
     );
-    fcc_sort_net__ps_adj__32 ps_adj$32(
+    fcc_sort_net__ps_adj__32_k7_668cf05b ps_adj$32(
         .d(ps_adj$32$d),
         .q(ps_adj$32$q),
         .clock(ps_adj$32$clock)
     );
-    fcc_sort_net__ps_adj__33 ps_adj$33(
+    fcc_sort_net__ps_adj__33_k7_668cf05b ps_adj$33(
         .d(ps_adj$33$d),
         .q(ps_adj$33$q),
         .clock(ps_adj$33$clock)
     );
-    fcc_sort_net__ps_adj__34 ps_adj$34(
+    fcc_sort_net__ps_adj__34_k7_668cf05b ps_adj$34(
         .d(ps_adj$34$d),
         .q(ps_adj$34$q),
         .clock(ps_adj$34$clock)
     );
-    fcc_sort_net__ps_adj__35 ps_adj$35(
+    fcc_sort_net__ps_adj__35_k7_668cf05b ps_adj$35(
         .d(ps_adj$35$d),
         .q(ps_adj$35$q),
         .clock(ps_adj$35$clock)
     );
-    fcc_sort_net__ps_adj__36 ps_adj$36(
+    fcc_sort_net__ps_adj__36_k7_668cf05b ps_adj$36(
         .d(ps_adj$36$d),
         .q(ps_adj$36$q),
         .clock(ps_adj$36$clock)
     );
-    fcc_sort_net__ps_adj__37 ps_adj$37(
+    fcc_sort_net__ps_adj__37_k7_668cf05b ps_adj$37(
         .d(ps_adj$37$d),
         .q(ps_adj$37$q),
         .clock(ps_adj$37$clock)
     );
-    fcc_sort_net__ps_adj__38 ps_adj$38(
+    fcc_sort_net__ps_adj__38_k7_668cf05b ps_adj$38(
         .d(ps_adj$38$d),
         .q(ps_adj$38$q),
         .clock(ps_adj$38$clock)
     );
-    fcc_sort_net__ps_adj__39 ps_adj$39(
+    fcc_sort_net__ps_adj__39_k7_668cf05b ps_adj$39(
         .d(ps_adj$39$d),
         .q(ps_adj$39$q),
         .clock(ps_adj$39$clock)
     );
-    fcc_sort_net__ps_adj__40 ps_adj$40(
+    fcc_sort_net__ps_adj__40_k7_668cf05b ps_adj$40(
         .d(ps_adj$40$d),
         .q(ps_adj$40$q),
         .clock(ps_adj$40$clock)
     );
-    fcc_sort_net__ps_adj__41 ps_adj$41(
+    fcc_sort_net__ps_adj__41_k7_668cf05b ps_adj$41(
         .d(ps_adj$41$d),
         .q(ps_adj$41$q),
         .clock(ps_adj$41$clock)
     );
-    fcc_sort_net__ps_adj__42 ps_adj$42(
+    fcc_sort_net__ps_adj__42_k7_668cf05b ps_adj$42(
         .d(ps_adj$42$d),
         .q(ps_adj$42$q),
         .clock(ps_adj$42$clock)
     );
-    fcc_sort_net__ps_adj__43 ps_adj$43(
+    fcc_sort_net__ps_adj__43_k7_668cf05b ps_adj$43(
         .d(ps_adj$43$d),
         .q(ps_adj$43$q),
         .clock(ps_adj$43$clock)
     );
-    fcc_sort_net__ps_adj__44 ps_adj$44(
+    fcc_sort_net__ps_adj__44_k7_668cf05b ps_adj$44(
         .d(ps_adj$44$d),
         .q(ps_adj$44$q),
         .clock(ps_adj$44$clock)
     );
-    fcc_sort_net__ps_adj__45 ps_adj$45(
+    fcc_sort_net__ps_adj__45_k7_668cf05b ps_adj$45(
         .d(ps_adj$45$d),
         .q(ps_adj$45$q),
         .clock(ps_adj$45$clock)
     );
-    fcc_sort_net__ps_adj__46 ps_adj$46(
+    fcc_sort_net__ps_adj__46_k7_668cf05b ps_adj$46(
         .d(ps_adj$46$d),
         .q(ps_adj$46$q),
         .clock(ps_adj$46$clock)
     );
-    fcc_sort_net__ps_adj__47 ps_adj$47(
+    fcc_sort_net__ps_adj__47_k7_668cf05b ps_adj$47(
         .d(ps_adj$47$d),
         .q(ps_adj$47$q),
         .clock(ps_adj$47$clock)
     );
-    fcc_sort_net__ps_adj__48 ps_adj$48(
+    fcc_sort_net__ps_adj__48_k7_668cf05b ps_adj$48(
         .d(ps_adj$48$d),
         .q(ps_adj$48$q),
         .clock(ps_adj$48$clock)
     );
-    fcc_sort_net__ps_adj__49 ps_adj$49(
+    fcc_sort_net__ps_adj__49_k7_668cf05b ps_adj$49(
         .d(ps_adj$49$d),
         .q(ps_adj$49$q),
         .clock(ps_adj$49$clock)
     );
-    fcc_sort_net__ps_adj__50 ps_adj$50(
+    fcc_sort_net__ps_adj__50_k7_668cf05b ps_adj$50(
         .d(ps_adj$50$d),
         .q(ps_adj$50$q),
         .clock(ps_adj$50$clock)
     );
-    fcc_sort_net__ps_adj__51 ps_adj$51(
+    fcc_sort_net__ps_adj__51_k7_668cf05b ps_adj$51(
         .d(ps_adj$51$d),
         .q(ps_adj$51$q),
         .clock(ps_adj$51$clock)
     );
-    fcc_sort_net__ps_adj__52 ps_adj$52(
+    fcc_sort_net__ps_adj__52_k7_668cf05b ps_adj$52(
         .d(ps_adj$52$d),
         .q(ps_adj$52$q),
         .clock(ps_adj$52$clock)
     );
-    fcc_sort_net__ps_adj__53 ps_adj$53(
+    fcc_sort_net__ps_adj__53_k7_668cf05b ps_adj$53(
         .d(ps_adj$53$d),
         .q(ps_adj$53$q),
         .clock(ps_adj$53$clock)
     );
-    fcc_sort_net__ps_adj__54 ps_adj$54(
+    fcc_sort_net__ps_adj__54_k7_668cf05b ps_adj$54(
         .d(ps_adj$54$d),
         .q(ps_adj$54$q),
         .clock(ps_adj$54$clock)
     );
-    fcc_sort_net__ps_adj__55 ps_adj$55(
+    fcc_sort_net__ps_adj__55_k7_668cf05b ps_adj$55(
         .d(ps_adj$55$d),
         .q(ps_adj$55$q),
         .clock(ps_adj$55$clock)
     );
-    fcc_sort_net__ps_adj__56 ps_adj$56(
+    fcc_sort_net__ps_adj__56_k7_668cf05b ps_adj$56(
         .d(ps_adj$56$d),
         .q(ps_adj$56$q),
         .clock(ps_adj$56$clock)
     );
-    fcc_sort_net__ps_adj__57 ps_adj$57(
+    fcc_sort_net__ps_adj__57_k7_668cf05b ps_adj$57(
         .d(ps_adj$57$d),
         .q(ps_adj$57$q),
         .clock(ps_adj$57$clock)
     );
-    fcc_sort_net__ps_adj__58 ps_adj$58(
+    fcc_sort_net__ps_adj__58_k7_668cf05b ps_adj$58(
         .d(ps_adj$58$d),
         .q(ps_adj$58$q),
         .clock(ps_adj$58$clock)
     );
-    fcc_sort_net__ps_adj__59 ps_adj$59(
+    fcc_sort_net__ps_adj__59_k7_668cf05b ps_adj$59(
         .d(ps_adj$59$d),
         .q(ps_adj$59$q),
         .clock(ps_adj$59$clock)
     );
-    fcc_sort_net__ps_adj__60 ps_adj$60(
+    fcc_sort_net__ps_adj__60_k7_668cf05b ps_adj$60(
         .d(ps_adj$60$d),
         .q(ps_adj$60$q),
         .clock(ps_adj$60$clock)
     );
-    fcc_sort_net__ps_adj__61 ps_adj$61(
+    fcc_sort_net__ps_adj__61_k7_668cf05b ps_adj$61(
         .d(ps_adj$61$d),
         .q(ps_adj$61$q),
         .clock(ps_adj$61$clock)
     );
-    fcc_sort_net__ps_adj__62 ps_adj$62(
+    fcc_sort_net__ps_adj__62_k7_668cf05b ps_adj$62(
         .d(ps_adj$62$d),
         .q(ps_adj$62$q),
         .clock(ps_adj$62$clock)
     );
-    fcc_sort_net__ps_adj__63 ps_adj$63(
+    fcc_sort_net__ps_adj__63_k7_668cf05b ps_adj$63(
         .d(ps_adj$63$d),
         .q(ps_adj$63$q),
         .clock(ps_adj$63$clock)
     );
-    fcc_sort_net__ps_adj__64 ps_adj$64(
+    fcc_sort_net__ps_adj__64_k7_668cf05b ps_adj$64(
         .d(ps_adj$64$d),
         .q(ps_adj$64$q),
         .clock(ps_adj$64$clock)
     );
-    fcc_sort_net__ps_adj__65 ps_adj$65(
+    fcc_sort_net__ps_adj__65_k7_668cf05b ps_adj$65(
         .d(ps_adj$65$d),
         .q(ps_adj$65$q),
         .clock(ps_adj$65$clock)
     );
-    fcc_sort_net__ps_adj__66 ps_adj$66(
+    fcc_sort_net__ps_adj__66_k7_668cf05b ps_adj$66(
         .d(ps_adj$66$d),
         .q(ps_adj$66$q),
         .clock(ps_adj$66$clock)
     );
-    fcc_sort_net__ps_adj__67 ps_adj$67(
+    fcc_sort_net__ps_adj__67_k7_668cf05b ps_adj$67(
         .d(ps_adj$67$d),
         .q(ps_adj$67$q),
         .clock(ps_adj$67$clock)
     );
-    fcc_sort_net__ps_adj__68 ps_adj$68(
+    fcc_sort_net__ps_adj__68_k7_668cf05b ps_adj$68(
         .d(ps_adj$68$d),
         .q(ps_adj$68$q),
         .clock(ps_adj$68$clock)
     );
-    fcc_sort_net__ps_adj__69 ps_adj$69(
+    fcc_sort_net__ps_adj__69_k7_668cf05b ps_adj$69(
         .d(ps_adj$69$d),
         .q(ps_adj$69$q),
         .clock(ps_adj$69$clock)
     );
-    fcc_sort_net__ps_adj__70 ps_adj$70(
+    fcc_sort_net__ps_adj__70_k7_668cf05b ps_adj$70(
         .d(ps_adj$70$d),
         .q(ps_adj$70$q),
         .clock(ps_adj$70$clock)
     );
-    fcc_sort_net__ps_adj__71 ps_adj$71(
+    fcc_sort_net__ps_adj__71_k7_668cf05b ps_adj$71(
         .d(ps_adj$71$d),
         .q(ps_adj$71$q),
         .clock(ps_adj$71$clock)
     );
-    fcc_sort_net__ps_adj__72 ps_adj$72(
+    fcc_sort_net__ps_adj__72_k7_668cf05b ps_adj$72(
         .d(ps_adj$72$d),
         .q(ps_adj$72$q),
         .clock(ps_adj$72$clock)
     );
-    fcc_sort_net__ps_adj__73 ps_adj$73(
+    fcc_sort_net__ps_adj__73_k7_668cf05b ps_adj$73(
         .d(ps_adj$73$d),
         .q(ps_adj$73$q),
         .clock(ps_adj$73$clock)
     );
-    fcc_sort_net__ps_adj__74 ps_adj$74(
+    fcc_sort_net__ps_adj__74_k7_668cf05b ps_adj$74(
         .d(ps_adj$74$d),
         .q(ps_adj$74$q),
         .clock(ps_adj$74$clock)
     );
-    fcc_sort_net__ps_adj__75 ps_adj$75(
+    fcc_sort_net__ps_adj__75_k7_668cf05b ps_adj$75(
         .d(ps_adj$75$d),
         .q(ps_adj$75$q),
         .clock(ps_adj$75$clock)
     );
-    fcc_sort_net__ps_adj__76 ps_adj$76(
+    fcc_sort_net__ps_adj__76_k7_668cf05b ps_adj$76(
         .d(ps_adj$76$d),
         .q(ps_adj$76$q),
         .clock(ps_adj$76$clock)
     );
-    fcc_sort_net__ps_adj__77 ps_adj$77(
+    fcc_sort_net__ps_adj__77_k7_668cf05b ps_adj$77(
         .d(ps_adj$77$d),
         .q(ps_adj$77$q),
         .clock(ps_adj$77$clock)
     );
-    fcc_sort_net__ps_adj__78 ps_adj$78(
+    fcc_sort_net__ps_adj__78_k7_668cf05b ps_adj$78(
         .d(ps_adj$78$d),
         .q(ps_adj$78$q),
         .clock(ps_adj$78$clock)
     );
-    fcc_sort_net__ps_adj__79 ps_adj$79(
+    fcc_sort_net__ps_adj__79_k7_668cf05b ps_adj$79(
         .d(ps_adj$79$d),
         .q(ps_adj$79$q),
         .clock(ps_adj$79$clock)
     );
-    fcc_sort_net__ps_adj__80 ps_adj$80(
+    fcc_sort_net__ps_adj__80_k7_668cf05b ps_adj$80(
         .d(ps_adj$80$d),
         .q(ps_adj$80$q),
         .clock(ps_adj$80$clock)
     );
-    fcc_sort_net__ps_adj__81 ps_adj$81(
+    fcc_sort_net__ps_adj__81_k7_668cf05b ps_adj$81(
         .d(ps_adj$81$d),
         .q(ps_adj$81$q),
         .clock(ps_adj$81$clock)
     );
-    fcc_sort_net__ps_adj__82 ps_adj$82(
+    fcc_sort_net__ps_adj__82_k7_668cf05b ps_adj$82(
         .d(ps_adj$82$d),
         .q(ps_adj$82$q),
         .clock(ps_adj$82$clock)
     );
-    fcc_sort_net__ps_adj__83 ps_adj$83(
+    fcc_sort_net__ps_adj__83_k7_668cf05b ps_adj$83(
         .d(ps_adj$83$d),
         .q(ps_adj$83$q),
         .clock(ps_adj$83$clock)
     );
-    fcc_sort_net__ps_adj__84 ps_adj$84(
+    fcc_sort_net__ps_adj__84_k7_668cf05b ps_adj$84(
         .d(ps_adj$84$d),
         .q(ps_adj$84$q),
         .clock(ps_adj$84$clock)
     );
-    fcc_sort_net__ps_adj__85 ps_adj$85(
+    fcc_sort_net__ps_adj__85_k7_668cf05b ps_adj$85(
         .d(ps_adj$85$d),
         .q(ps_adj$85$q),
         .clock(ps_adj$85$clock)
     );
-    fcc_sort_net__ps_adj__86 ps_adj$86(
+    fcc_sort_net__ps_adj__86_k7_668cf05b ps_adj$86(
         .d(ps_adj$86$d),
         .q(ps_adj$86$q),
         .clock(ps_adj$86$clock)
     );
-    fcc_sort_net__ps_adj__87 ps_adj$87(
+    fcc_sort_net__ps_adj__87_k7_668cf05b ps_adj$87(
         .d(ps_adj$87$d),
         .q(ps_adj$87$q),
         .clock(ps_adj$87$clock)
     );
-    fcc_sort_net__ps_adj__88 ps_adj$88(
+    fcc_sort_net__ps_adj__88_k7_668cf05b ps_adj$88(
         .d(ps_adj$88$d),
         .q(ps_adj$88$q),
         .clock(ps_adj$88$clock)
     );
-    fcc_sort_net__ps_adj__89 ps_adj$89(
+    fcc_sort_net__ps_adj__89_k7_668cf05b ps_adj$89(
         .d(ps_adj$89$d),
         .q(ps_adj$89$q),
         .clock(ps_adj$89$clock)
     );
-    fcc_sort_net__ps_adj__90 ps_adj$90(
+    fcc_sort_net__ps_adj__90_k7_668cf05b ps_adj$90(
         .d(ps_adj$90$d),
         .q(ps_adj$90$q),
         .clock(ps_adj$90$clock)
     );
-    fcc_sort_net__ps_adj__91 ps_adj$91(
+    fcc_sort_net__ps_adj__91_k7_668cf05b ps_adj$91(
         .d(ps_adj$91$d),
         .q(ps_adj$91$q),
         .clock(ps_adj$91$clock)
     );
-    fcc_sort_net__ps_adj__92 ps_adj$92(
+    fcc_sort_net__ps_adj__92_k7_668cf05b ps_adj$92(
         .d(ps_adj$92$d),
         .q(ps_adj$92$q),
         .clock(ps_adj$92$clock)
     );
-    fcc_sort_net__ps_adj__93 ps_adj$93(
+    fcc_sort_net__ps_adj__93_k7_668cf05b ps_adj$93(
         .d(ps_adj$93$d),
         .q(ps_adj$93$q),
         .clock(ps_adj$93$clock)
     );
-    fcc_sort_net__ps_adj__94 ps_adj$94(
+    fcc_sort_net__ps_adj__94_k7_668cf05b ps_adj$94(
         .d(ps_adj$94$d),
         .q(ps_adj$94$q),
         .clock(ps_adj$94$clock)
     );
-    fcc_sort_net__ps_adj__95 ps_adj$95(
+    fcc_sort_net__ps_adj__95_k7_668cf05b ps_adj$95(
         .d(ps_adj$95$d),
         .q(ps_adj$95$q),
         .clock(ps_adj$95$clock)
     );
-    fcc_sort_net__ps_adj__96 ps_adj$96(
+    fcc_sort_net__ps_adj__96_k7_668cf05b ps_adj$96(
         .d(ps_adj$96$d),
         .q(ps_adj$96$q),
         .clock(ps_adj$96$clock)
     );
-    fcc_sort_net__ps_adj__97 ps_adj$97(
+    fcc_sort_net__ps_adj__97_k7_668cf05b ps_adj$97(
         .d(ps_adj$97$d),
         .q(ps_adj$97$q),
         .clock(ps_adj$97$clock)
     );
-    fcc_sort_net__ps_adj__98 ps_adj$98(
+    fcc_sort_net__ps_adj__98_k7_668cf05b ps_adj$98(
         .d(ps_adj$98$d),
         .q(ps_adj$98$q),
         .clock(ps_adj$98$clock)
     );
-    fcc_sort_net__ps_adj__99 ps_adj$99(
+    fcc_sort_net__ps_adj__99_k7_668cf05b ps_adj$99(
         .d(ps_adj$99$d),
         .q(ps_adj$99$q),
         .clock(ps_adj$99$clock)
     );
-    fcc_sort_net__ps_adj__100 ps_adj$100(
+    fcc_sort_net__ps_adj__100_k7_668cf05b ps_adj$100(
         .d(ps_adj$100$d),
         .q(ps_adj$100$q),
         .clock(ps_adj$100$clock)
     );
-    fcc_sort_net__ps_adj__101 ps_adj$101(
+    fcc_sort_net__ps_adj__101_k7_668cf05b ps_adj$101(
         .d(ps_adj$101$d),
         .q(ps_adj$101$q),
         .clock(ps_adj$101$clock)
     );
-    fcc_sort_net__ps_adj__102 ps_adj$102(
+    fcc_sort_net__ps_adj__102_k7_668cf05b ps_adj$102(
         .d(ps_adj$102$d),
         .q(ps_adj$102$q),
         .clock(ps_adj$102$clock)
     );
-    fcc_sort_net__ps_adj__103 ps_adj$103(
+    fcc_sort_net__ps_adj__103_k7_668cf05b ps_adj$103(
         .d(ps_adj$103$d),
         .q(ps_adj$103$q),
         .clock(ps_adj$103$clock)
     );
-    fcc_sort_net__ps_adj__104 ps_adj$104(
+    fcc_sort_net__ps_adj__104_k7_668cf05b ps_adj$104(
         .d(ps_adj$104$d),
         .q(ps_adj$104$q),
         .clock(ps_adj$104$clock)
     );
-    fcc_sort_net__ps_adj__105 ps_adj$105(
+    fcc_sort_net__ps_adj__105_k7_668cf05b ps_adj$105(
         .d(ps_adj$105$d),
         .q(ps_adj$105$q),
         .clock(ps_adj$105$clock)
     );
-    fcc_sort_net__ps_adj__106 ps_adj$106(
+    fcc_sort_net__ps_adj__106_k7_668cf05b ps_adj$106(
         .d(ps_adj$106$d),
         .q(ps_adj$106$q),
         .clock(ps_adj$106$clock)
     );
-    fcc_sort_net__ps_adj__107 ps_adj$107(
+    fcc_sort_net__ps_adj__107_k7_668cf05b ps_adj$107(
         .d(ps_adj$107$d),
         .q(ps_adj$107$q),
         .clock(ps_adj$107$clock)
     );
-    fcc_sort_net__ps_adj__108 ps_adj$108(
+    fcc_sort_net__ps_adj__108_k7_668cf05b ps_adj$108(
         .d(ps_adj$108$d),
         .q(ps_adj$108$q),
         .clock(ps_adj$108$clock)
     );
-    fcc_sort_net__ps_adj__109 ps_adj$109(
+    fcc_sort_net__ps_adj__109_k7_668cf05b ps_adj$109(
         .d(ps_adj$109$d),
         .q(ps_adj$109$q),
         .clock(ps_adj$109$clock)
     );
-    fcc_sort_net__ps_adj__110 ps_adj$110(
+    fcc_sort_net__ps_adj__110_k7_668cf05b ps_adj$110(
         .d(ps_adj$110$d),
         .q(ps_adj$110$q),
         .clock(ps_adj$110$clock)
     );
-    fcc_sort_net__ps_adj__111 ps_adj$111(
+    fcc_sort_net__ps_adj__111_k7_668cf05b ps_adj$111(
         .d(ps_adj$111$d),
         .q(ps_adj$111$q),
         .clock(ps_adj$111$clock)
     );
-    fcc_sort_net__ps_adj__112 ps_adj$112(
+    fcc_sort_net__ps_adj__112_k7_668cf05b ps_adj$112(
         .d(ps_adj$112$d),
         .q(ps_adj$112$q),
         .clock(ps_adj$112$clock)
     );
-    fcc_sort_net__ps_adj__113 ps_adj$113(
+    fcc_sort_net__ps_adj__113_k7_668cf05b ps_adj$113(
         .d(ps_adj$113$d),
         .q(ps_adj$113$q),
         .clock(ps_adj$113$clock)
     );
-    fcc_sort_net__ps_adj__114 ps_adj$114(
+    fcc_sort_net__ps_adj__114_k7_668cf05b ps_adj$114(
         .d(ps_adj$114$d),
         .q(ps_adj$114$q),
         .clock(ps_adj$114$clock)
     );
-    fcc_sort_net__ps_adj__115 ps_adj$115(
+    fcc_sort_net__ps_adj__115_k7_668cf05b ps_adj$115(
         .d(ps_adj$115$d),
         .q(ps_adj$115$q),
         .clock(ps_adj$115$clock)
     );
-    fcc_sort_net__ps_adj__116 ps_adj$116(
+    fcc_sort_net__ps_adj__116_k7_668cf05b ps_adj$116(
         .d(ps_adj$116$d),
         .q(ps_adj$116$q),
         .clock(ps_adj$116$clock)
     );
-    fcc_sort_net__ps_adj__117 ps_adj$117(
+    fcc_sort_net__ps_adj__117_k7_668cf05b ps_adj$117(
         .d(ps_adj$117$d),
         .q(ps_adj$117$q),
         .clock(ps_adj$117$clock)
     );
-    fcc_sort_net__ps_adj__118 ps_adj$118(
+    fcc_sort_net__ps_adj__118_k7_668cf05b ps_adj$118(
         .d(ps_adj$118$d),
         .q(ps_adj$118$q),
         .clock(ps_adj$118$clock)
     );
-    fcc_sort_net__ps_adj__119 ps_adj$119(
+    fcc_sort_net__ps_adj__119_k7_668cf05b ps_adj$119(
         .d(ps_adj$119$d),
         .q(ps_adj$119$q),
         .clock(ps_adj$119$clock)
     );
-    fcc_sort_net__ps_adj__120 ps_adj$120(
+    fcc_sort_net__ps_adj__120_k7_668cf05b ps_adj$120(
         .d(ps_adj$120$d),
         .q(ps_adj$120$q),
         .clock(ps_adj$120$clock)
     );
-    fcc_sort_net__ps_adj__121 ps_adj$121(
+    fcc_sort_net__ps_adj__121_k7_668cf05b ps_adj$121(
         .d(ps_adj$121$d),
         .q(ps_adj$121$q),
         .clock(ps_adj$121$clock)
     );
-    fcc_sort_net__ps_adj__122 ps_adj$122(
+    fcc_sort_net__ps_adj__122_k7_668cf05b ps_adj$122(
         .d(ps_adj$122$d),
         .q(ps_adj$122$q),
         .clock(ps_adj$122$clock)
     );
-    fcc_sort_net__ps_adj__123 ps_adj$123(
+    fcc_sort_net__ps_adj__123_k7_668cf05b ps_adj$123(
         .d(ps_adj$123$d),
         .q(ps_adj$123$q),
         .clock(ps_adj$123$clock)
     );
-    fcc_sort_net__ps_adj__124 ps_adj$124(
+    fcc_sort_net__ps_adj__124_k7_668cf05b ps_adj$124(
         .d(ps_adj$124$d),
         .q(ps_adj$124$q),
         .clock(ps_adj$124$clock)
     );
-    fcc_sort_net__ps_adj__125 ps_adj$125(
+    fcc_sort_net__ps_adj__125_k7_668cf05b ps_adj$125(
         .d(ps_adj$125$d),
         .q(ps_adj$125$q),
         .clock(ps_adj$125$clock)
     );
-    fcc_sort_net__ps_adj__126 ps_adj$126(
+    fcc_sort_net__ps_adj__126_k7_668cf05b ps_adj$126(
         .d(ps_adj$126$d),
         .q(ps_adj$126$q),
         .clock(ps_adj$126$clock)
     );
-    fcc_sort_net__ps_adj__127 ps_adj$127(
+    fcc_sort_net__ps_adj__127_k7_668cf05b ps_adj$127(
         .d(ps_adj$127$d),
         .q(ps_adj$127$q),
         .clock(ps_adj$127$clock)
     );
-    fcc_sort_net__ps_adj__128 ps_adj$128(
+    fcc_sort_net__ps_adj__128_k7_668cf05b ps_adj$128(
         .d(ps_adj$128$d),
         .q(ps_adj$128$q),
         .clock(ps_adj$128$clock)
     );
-    fcc_sort_net__ps_adj__129 ps_adj$129(
+    fcc_sort_net__ps_adj__129_k7_668cf05b ps_adj$129(
         .d(ps_adj$129$d),
         .q(ps_adj$129$q),
         .clock(ps_adj$129$clock)
     );
-    fcc_sort_net__ps_adj__130 ps_adj$130(
+    fcc_sort_net__ps_adj__130_k7_668cf05b ps_adj$130(
         .d(ps_adj$130$d),
         .q(ps_adj$130$q),
         .clock(ps_adj$130$clock)
     );
-    fcc_sort_net__ps_adj__131 ps_adj$131(
+    fcc_sort_net__ps_adj__131_k7_668cf05b ps_adj$131(
         .d(ps_adj$131$d),
         .q(ps_adj$131$q),
         .clock(ps_adj$131$clock)
     );
-    fcc_sort_net__ps_adj__132 ps_adj$132(
+    fcc_sort_net__ps_adj__132_k7_668cf05b ps_adj$132(
         .d(ps_adj$132$d),
         .q(ps_adj$132$q),
         .clock(ps_adj$132$clock)
     );
-    fcc_sort_net__ps_adj__133 ps_adj$133(
+    fcc_sort_net__ps_adj__133_k7_668cf05b ps_adj$133(
         .d(ps_adj$133$d),
         .q(ps_adj$133$q),
         .clock(ps_adj$133$clock)
     );
-    fcc_sort_net__ps_adj__134 ps_adj$134(
+    fcc_sort_net__ps_adj__134_k7_668cf05b ps_adj$134(
         .d(ps_adj$134$d),
         .q(ps_adj$134$q),
         .clock(ps_adj$134$clock)
     );
-    fcc_sort_net__ps_adj__135 ps_adj$135(
+    fcc_sort_net__ps_adj__135_k7_668cf05b ps_adj$135(
         .d(ps_adj$135$d),
         .q(ps_adj$135$q),
         .clock(ps_adj$135$clock)
     );
-    fcc_sort_net__ps_adj__136 ps_adj$136(
+    fcc_sort_net__ps_adj__136_k7_668cf05b ps_adj$136(
         .d(ps_adj$136$d),
         .q(ps_adj$136$q),
         .clock(ps_adj$136$clock)
     );
-    fcc_sort_net__ps_adj__137 ps_adj$137(
+    fcc_sort_net__ps_adj__137_k7_668cf05b ps_adj$137(
         .d(ps_adj$137$d),
         .q(ps_adj$137$q),
         .clock(ps_adj$137$clock)
     );
-    fcc_sort_net__ps_adj__138 ps_adj$138(
+    fcc_sort_net__ps_adj__138_k7_668cf05b ps_adj$138(
         .d(ps_adj$138$d),
         .q(ps_adj$138$q),
         .clock(ps_adj$138$clock)
     );
-    fcc_sort_net__ps_adj__139 ps_adj$139(
+    fcc_sort_net__ps_adj__139_k7_668cf05b ps_adj$139(
         .d(ps_adj$139$d),
         .q(ps_adj$139$q),
         .clock(ps_adj$139$clock)
     );
-    fcc_sort_net__ps_adj__140 ps_adj$140(
+    fcc_sort_net__ps_adj__140_k7_668cf05b ps_adj$140(
         .d(ps_adj$140$d),
         .q(ps_adj$140$q),
         .clock(ps_adj$140$clock)
     );
-    fcc_sort_net__ps_adj__141 ps_adj$141(
+    fcc_sort_net__ps_adj__141_k7_668cf05b ps_adj$141(
         .d(ps_adj$141$d),
         .q(ps_adj$141$q),
         .clock(ps_adj$141$clock)
     );
-    fcc_sort_net__ps_adj__142 ps_adj$142(
+    fcc_sort_net__ps_adj__142_k7_668cf05b ps_adj$142(
         .d(ps_adj$142$d),
         .q(ps_adj$142$q),
         .clock(ps_adj$142$clock)
     );
-    fcc_sort_net__ps_adj__143 ps_adj$143(
+    fcc_sort_net__ps_adj__143_k7_668cf05b ps_adj$143(
         .d(ps_adj$143$d),
         .q(ps_adj$143$q),
         .clock(ps_adj$143$clock)
     );
-    fcc_sort_net__ps_adj__144 ps_adj$144(
+    fcc_sort_net__ps_adj__144_k7_668cf05b ps_adj$144(
         .d(ps_adj$144$d),
         .q(ps_adj$144$q),
         .clock(ps_adj$144$clock)
     );
-    fcc_sort_net__ps_adj__145 ps_adj$145(
+    fcc_sort_net__ps_adj__145_k7_668cf05b ps_adj$145(
         .d(ps_adj$145$d),
         .q(ps_adj$145$q),
         .clock(ps_adj$145$clock)
     );
-    fcc_sort_net__ps_adj__146 ps_adj$146(
+    fcc_sort_net__ps_adj__146_k7_668cf05b ps_adj$146(
         .d(ps_adj$146$d),
         .q(ps_adj$146$q),
         .clock(ps_adj$146$clock)
     );
-    fcc_sort_net__ps_rep__0 ps_rep$0(
+    fcc_sort_net__ps_rep__0_k7_668cf05b ps_rep$0(
         .d(ps_rep$0$d),
         .q(ps_rep$0$q),
         .clock(ps_rep$0$clock)
     );
-    fcc_sort_net__ps_rep__1 ps_rep$1(
+    fcc_sort_net__ps_rep__1_k7_668cf05b ps_rep$1(
         .d(ps_rep$1$d),
         .q(ps_rep$1$q),
         .clock(ps_rep$1$clock)
     );
-    fcc_sort_net__ps_rep__2 ps_rep$2(
+    fcc_sort_net__ps_rep__2_k7_668cf05b ps_rep$2(
         .d(ps_rep$2$d),
         .q(ps_rep$2$q),
         .clock(ps_rep$2$clock)
     );
-    fcc_sort_net__ps_rep__3 ps_rep$3(
+    fcc_sort_net__ps_rep__3_k7_668cf05b ps_rep$3(
         .d(ps_rep$3$d),
         .q(ps_rep$3$q),
         .clock(ps_rep$3$clock)
     );
-    fcc_sort_net__ps_rep__4 ps_rep$4(
+    fcc_sort_net__ps_rep__4_k7_668cf05b ps_rep$4(
         .d(ps_rep$4$d),
         .q(ps_rep$4$q),
         .clock(ps_rep$4$clock)
     );
-    fcc_sort_net__ps_rep__5 ps_rep$5(
+    fcc_sort_net__ps_rep__5_k7_668cf05b ps_rep$5(
         .d(ps_rep$5$d),
         .q(ps_rep$5$q),
         .clock(ps_rep$5$clock)
     );
-    fcc_sort_net__ps_rep__6 ps_rep$6(
+    fcc_sort_net__ps_rep__6_k7_668cf05b ps_rep$6(
         .d(ps_rep$6$d),
         .q(ps_rep$6$q),
         .clock(ps_rep$6$clock)
     );
-    fcc_sort_net__ps_rep__7 ps_rep$7(
+    fcc_sort_net__ps_rep__7_k7_668cf05b ps_rep$7(
         .d(ps_rep$7$d),
         .q(ps_rep$7$q),
         .clock(ps_rep$7$clock)
     );
-    fcc_sort_net__ps_rep__8 ps_rep$8(
+    fcc_sort_net__ps_rep__8_k7_668cf05b ps_rep$8(
         .d(ps_rep$8$d),
         .q(ps_rep$8$q),
         .clock(ps_rep$8$clock)
     );
-    fcc_sort_net__ps_rep__9 ps_rep$9(
+    fcc_sort_net__ps_rep__9_k7_668cf05b ps_rep$9(
         .d(ps_rep$9$d),
         .q(ps_rep$9$q),
         .clock(ps_rep$9$clock)
     );
-    fcc_sort_net__ps_rep__10 ps_rep$10(
+    fcc_sort_net__ps_rep__10_k7_668cf05b ps_rep$10(
         .d(ps_rep$10$d),
         .q(ps_rep$10$q),
         .clock(ps_rep$10$clock)
     );
-    fcc_sort_net__ps_rep__11 ps_rep$11(
+    fcc_sort_net__ps_rep__11_k7_668cf05b ps_rep$11(
         .d(ps_rep$11$d),
         .q(ps_rep$11$q),
         .clock(ps_rep$11$clock)
     );
-    fcc_sort_net__ps_rep__12 ps_rep$12(
+    fcc_sort_net__ps_rep__12_k7_668cf05b ps_rep$12(
         .d(ps_rep$12$d),
         .q(ps_rep$12$q),
         .clock(ps_rep$12$clock)
     );
-    fcc_sort_net__ps_rep__13 ps_rep$13(
+    fcc_sort_net__ps_rep__13_k7_668cf05b ps_rep$13(
         .d(ps_rep$13$d),
         .q(ps_rep$13$q),
         .clock(ps_rep$13$clock)
     );
-    fcc_sort_net__ps_rep__14 ps_rep$14(
+    fcc_sort_net__ps_rep__14_k7_668cf05b ps_rep$14(
         .d(ps_rep$14$d),
         .q(ps_rep$14$q),
         .clock(ps_rep$14$clock)
     );
-    fcc_sort_net__ps_rep__15 ps_rep$15(
+    fcc_sort_net__ps_rep__15_k7_668cf05b ps_rep$15(
         .d(ps_rep$15$d),
         .q(ps_rep$15$q),
         .clock(ps_rep$15$clock)
     );
-    fcc_sort_net__ps_rep__16 ps_rep$16(
+    fcc_sort_net__ps_rep__16_k7_668cf05b ps_rep$16(
         .d(ps_rep$16$d),
         .q(ps_rep$16$q),
         .clock(ps_rep$16$clock)
     );
-    fcc_sort_net__ps_rep__17 ps_rep$17(
+    fcc_sort_net__ps_rep__17_k7_668cf05b ps_rep$17(
         .d(ps_rep$17$d),
         .q(ps_rep$17$q),
         .clock(ps_rep$17$clock)
     );
-    fcc_sort_net__ps_rep__18 ps_rep$18(
+    fcc_sort_net__ps_rep__18_k7_668cf05b ps_rep$18(
         .d(ps_rep$18$d),
         .q(ps_rep$18$q),
         .clock(ps_rep$18$clock)
     );
-    fcc_sort_net__ps_rep__19 ps_rep$19(
+    fcc_sort_net__ps_rep__19_k7_668cf05b ps_rep$19(
         .d(ps_rep$19$d),
         .q(ps_rep$19$q),
         .clock(ps_rep$19$clock)
     );
-    fcc_sort_net__ps_rep__20 ps_rep$20(
+    fcc_sort_net__ps_rep__20_k7_668cf05b ps_rep$20(
         .d(ps_rep$20$d),
         .q(ps_rep$20$q),
         .clock(ps_rep$20$clock)
     );
-    fcc_sort_net__ps_rep__21 ps_rep$21(
+    fcc_sort_net__ps_rep__21_k7_668cf05b ps_rep$21(
         .d(ps_rep$21$d),
         .q(ps_rep$21$q),
         .clock(ps_rep$21$clock)
     );
-    fcc_sort_net__ps_rep__22 ps_rep$22(
+    fcc_sort_net__ps_rep__22_k7_668cf05b ps_rep$22(
         .d(ps_rep$22$d),
         .q(ps_rep$22$q),
         .clock(ps_rep$22$clock)
     );
-    fcc_sort_net__ps_rep__23 ps_rep$23(
+    fcc_sort_net__ps_rep__23_k7_668cf05b ps_rep$23(
         .d(ps_rep$23$d),
         .q(ps_rep$23$q),
         .clock(ps_rep$23$clock)
     );
-    fcc_sort_net__ps_rep__24 ps_rep$24(
+    fcc_sort_net__ps_rep__24_k7_668cf05b ps_rep$24(
         .d(ps_rep$24$d),
         .q(ps_rep$24$q),
         .clock(ps_rep$24$clock)
     );
-    fcc_sort_net__ps_rep__25 ps_rep$25(
+    fcc_sort_net__ps_rep__25_k7_668cf05b ps_rep$25(
         .d(ps_rep$25$d),
         .q(ps_rep$25$q),
         .clock(ps_rep$25$clock)
     );
-    fcc_sort_net__ps_rep__26 ps_rep$26(
+    fcc_sort_net__ps_rep__26_k7_668cf05b ps_rep$26(
         .d(ps_rep$26$d),
         .q(ps_rep$26$q),
         .clock(ps_rep$26$clock)
     );
-    fcc_sort_net__ps_rep__27 ps_rep$27(
+    fcc_sort_net__ps_rep__27_k7_668cf05b ps_rep$27(
         .d(ps_rep$27$d),
         .q(ps_rep$27$q),
         .clock(ps_rep$27$clock)
     );
-    fcc_sort_net__ps_rep__28 ps_rep$28(
+    fcc_sort_net__ps_rep__28_k7_668cf05b ps_rep$28(
         .d(ps_rep$28$d),
         .q(ps_rep$28$q),
         .clock(ps_rep$28$clock)
     );
-    fcc_sort_net__ps_rep__29 ps_rep$29(
+    fcc_sort_net__ps_rep__29_k7_668cf05b ps_rep$29(
         .d(ps_rep$29$d),
         .q(ps_rep$29$q),
         .clock(ps_rep$29$clock)
     );
-    fcc_sort_net__ps_rep__30 ps_rep$30(
+    fcc_sort_net__ps_rep__30_k7_668cf05b ps_rep$30(
         .d(ps_rep$30$d),
         .q(ps_rep$30$q),
         .clock(ps_rep$30$clock)
     );
-    fcc_sort_net__ps_rep__31 ps_rep$31(
+    fcc_sort_net__ps_rep__31_k7_668cf05b ps_rep$31(
         .d(ps_rep$31$d),
         .q(ps_rep$31$q),
         .clock(ps_rep$31$clock)
     );
-    fcc_sort_net__ps_rep__32 ps_rep$32(
+    fcc_sort_net__ps_rep__32_k7_668cf05b ps_rep$32(
         .d(ps_rep$32$d),
         .q(ps_rep$32$q),
         .clock(ps_rep$32$clock)
     );
-    fcc_sort_net__ps_rep__33 ps_rep$33(
+    fcc_sort_net__ps_rep__33_k7_668cf05b ps_rep$33(
         .d(ps_rep$33$d),
         .q(ps_rep$33$q),
         .clock(ps_rep$33$clock)
     );
-    fcc_sort_net__ps_rep__34 ps_rep$34(
+    fcc_sort_net__ps_rep__34_k7_668cf05b ps_rep$34(
         .d(ps_rep$34$d),
         .q(ps_rep$34$q),
         .clock(ps_rep$34$clock)
     );
-    fcc_sort_net__ps_rep__35 ps_rep$35(
+    fcc_sort_net__ps_rep__35_k7_668cf05b ps_rep$35(
         .d(ps_rep$35$d),
         .q(ps_rep$35$q),
         .clock(ps_rep$35$clock)
     );
-    fcc_sort_net__ps_rep__36 ps_rep$36(
+    fcc_sort_net__ps_rep__36_k7_668cf05b ps_rep$36(
         .d(ps_rep$36$d),
         .q(ps_rep$36$q),
         .clock(ps_rep$36$clock)
     );
-    fcc_sort_net__ps_rep__37 ps_rep$37(
+    fcc_sort_net__ps_rep__37_k7_668cf05b ps_rep$37(
         .d(ps_rep$37$d),
         .q(ps_rep$37$q),
         .clock(ps_rep$37$clock)
     );
-    fcc_sort_net__ps_rep__38 ps_rep$38(
+    fcc_sort_net__ps_rep__38_k7_668cf05b ps_rep$38(
         .d(ps_rep$38$d),
         .q(ps_rep$38$q),
         .clock(ps_rep$38$clock)
     );
-    fcc_sort_net__ps_rep__39 ps_rep$39(
+    fcc_sort_net__ps_rep__39_k7_668cf05b ps_rep$39(
         .d(ps_rep$39$d),
         .q(ps_rep$39$q),
         .clock(ps_rep$39$clock)
     );
-    fcc_sort_net__ps_rep__40 ps_rep$40(
+    fcc_sort_net__ps_rep__40_k7_668cf05b ps_rep$40(
         .d(ps_rep$40$d),
         .q(ps_rep$40$q),
         .clock(ps_rep$40$clock)
     );
-    fcc_sort_net__ps_rep__41 ps_rep$41(
+    fcc_sort_net__ps_rep__41_k7_668cf05b ps_rep$41(
         .d(ps_rep$41$d),
         .q(ps_rep$41$q),
         .clock(ps_rep$41$clock)
     );
-    fcc_sort_net__ps_rep__42 ps_rep$42(
+    fcc_sort_net__ps_rep__42_k7_668cf05b ps_rep$42(
         .d(ps_rep$42$d),
         .q(ps_rep$42$q),
         .clock(ps_rep$42$clock)
     );
-    fcc_sort_net__ps_rep__43 ps_rep$43(
+    fcc_sort_net__ps_rep__43_k7_668cf05b ps_rep$43(
         .d(ps_rep$43$d),
         .q(ps_rep$43$q),
         .clock(ps_rep$43$clock)
     );
-    fcc_sort_net__ps_rep__44 ps_rep$44(
+    fcc_sort_net__ps_rep__44_k7_668cf05b ps_rep$44(
         .d(ps_rep$44$d),
         .q(ps_rep$44$q),
         .clock(ps_rep$44$clock)
     );
-    fcc_sort_net__ps_rep__45 ps_rep$45(
+    fcc_sort_net__ps_rep__45_k7_668cf05b ps_rep$45(
         .d(ps_rep$45$d),
         .q(ps_rep$45$q),
         .clock(ps_rep$45$clock)
     );
-    fcc_sort_net__ps_rep__46 ps_rep$46(
+    fcc_sort_net__ps_rep__46_k7_668cf05b ps_rep$46(
         .d(ps_rep$46$d),
         .q(ps_rep$46$q),
         .clock(ps_rep$46$clock)
     );
-    fcc_sort_net__ps_rep__47 ps_rep$47(
+    fcc_sort_net__ps_rep__47_k7_668cf05b ps_rep$47(
         .d(ps_rep$47$d),
         .q(ps_rep$47$q),
         .clock(ps_rep$47$clock)
     );
-    fcc_sort_net__ps_rep__48 ps_rep$48(
+    fcc_sort_net__ps_rep__48_k7_668cf05b ps_rep$48(
         .d(ps_rep$48$d),
         .q(ps_rep$48$q),
         .clock(ps_rep$48$clock)
     );
-    fcc_sort_net__ps_rep__49 ps_rep$49(
+    fcc_sort_net__ps_rep__49_k7_668cf05b ps_rep$49(
         .d(ps_rep$49$d),
         .q(ps_rep$49$q),
         .clock(ps_rep$49$clock)
     );
-    fcc_sort_net__ps_rep__50 ps_rep$50(
+    fcc_sort_net__ps_rep__50_k7_668cf05b ps_rep$50(
         .d(ps_rep$50$d),
         .q(ps_rep$50$q),
         .clock(ps_rep$50$clock)
     );
-    fcc_sort_net__ps_rep__51 ps_rep$51(
+    fcc_sort_net__ps_rep__51_k7_668cf05b ps_rep$51(
         .d(ps_rep$51$d),
         .q(ps_rep$51$q),
         .clock(ps_rep$51$clock)
     );
-    fcc_sort_net__ps_rep__52 ps_rep$52(
+    fcc_sort_net__ps_rep__52_k7_668cf05b ps_rep$52(
         .d(ps_rep$52$d),
         .q(ps_rep$52$q),
         .clock(ps_rep$52$clock)
     );
-    fcc_sort_net__ps_rep__53 ps_rep$53(
+    fcc_sort_net__ps_rep__53_k7_668cf05b ps_rep$53(
         .d(ps_rep$53$d),
         .q(ps_rep$53$q),
         .clock(ps_rep$53$clock)
     );
-    fcc_sort_net__ps_rep__54 ps_rep$54(
+    fcc_sort_net__ps_rep__54_k7_668cf05b ps_rep$54(
         .d(ps_rep$54$d),
         .q(ps_rep$54$q),
         .clock(ps_rep$54$clock)
     );
-    fcc_sort_net__ps_rep__55 ps_rep$55(
+    fcc_sort_net__ps_rep__55_k7_668cf05b ps_rep$55(
         .d(ps_rep$55$d),
         .q(ps_rep$55$q),
         .clock(ps_rep$55$clock)
     );
-    fcc_sort_net__ps_rep__56 ps_rep$56(
+    fcc_sort_net__ps_rep__56_k7_668cf05b ps_rep$56(
         .d(ps_rep$56$d),
         .q(ps_rep$56$q),
         .clock(ps_rep$56$clock)
     );
-    fcc_sort_net__ps_rep__57 ps_rep$57(
+    fcc_sort_net__ps_rep__57_k7_668cf05b ps_rep$57(
         .d(ps_rep$57$d),
         .q(ps_rep$57$q),
         .clock(ps_rep$57$clock)
     );
-    fcc_sort_net__ps_rep__58 ps_rep$58(
+    fcc_sort_net__ps_rep__58_k7_668cf05b ps_rep$58(
         .d(ps_rep$58$d),
         .q(ps_rep$58$q),
         .clock(ps_rep$58$clock)
     );
-    fcc_sort_net__ps_rep__59 ps_rep$59(
+    fcc_sort_net__ps_rep__59_k7_668cf05b ps_rep$59(
         .d(ps_rep$59$d),
         .q(ps_rep$59$q),
         .clock(ps_rep$59$clock)
     );
-    fcc_sort_net__ps_rep__60 ps_rep$60(
+    fcc_sort_net__ps_rep__60_k7_668cf05b ps_rep$60(
         .d(ps_rep$60$d),
         .q(ps_rep$60$q),
         .clock(ps_rep$60$clock)
     );
-    fcc_sort_net__ps_rep__61 ps_rep$61(
+    fcc_sort_net__ps_rep__61_k7_668cf05b ps_rep$61(
         .d(ps_rep$61$d),
         .q(ps_rep$61$q),
         .clock(ps_rep$61$clock)
     );
-    fcc_sort_net__ps_rep__62 ps_rep$62(
+    fcc_sort_net__ps_rep__62_k7_668cf05b ps_rep$62(
         .d(ps_rep$62$d),
         .q(ps_rep$62$q),
         .clock(ps_rep$62$clock)
     );
-    fcc_sort_net__ps_rep__63 ps_rep$63(
+    fcc_sort_net__ps_rep__63_k7_668cf05b ps_rep$63(
         .d(ps_rep$63$d),
         .q(ps_rep$63$q),
         .clock(ps_rep$63$clock)
     );
-    fcc_sort_net__ps_rep__64 ps_rep$64(
+    fcc_sort_net__ps_rep__64_k7_668cf05b ps_rep$64(
         .d(ps_rep$64$d),
         .q(ps_rep$64$q),
         .clock(ps_rep$64$clock)
     );
-    fcc_sort_net__ps_rep__65 ps_rep$65(
+    fcc_sort_net__ps_rep__65_k7_668cf05b ps_rep$65(
         .d(ps_rep$65$d),
         .q(ps_rep$65$q),
         .clock(ps_rep$65$clock)
     );
-    fcc_sort_net__ps_rep__66 ps_rep$66(
+    fcc_sort_net__ps_rep__66_k7_668cf05b ps_rep$66(
         .d(ps_rep$66$d),
         .q(ps_rep$66$q),
         .clock(ps_rep$66$clock)
     );
-    fcc_sort_net__ps_rep__67 ps_rep$67(
+    fcc_sort_net__ps_rep__67_k7_668cf05b ps_rep$67(
         .d(ps_rep$67$d),
         .q(ps_rep$67$q),
         .clock(ps_rep$67$clock)
     );
-    fcc_sort_net__ps_rep__68 ps_rep$68(
+    fcc_sort_net__ps_rep__68_k7_668cf05b ps_rep$68(
         .d(ps_rep$68$d),
         .q(ps_rep$68$q),
         .clock(ps_rep$68$clock)
     );
-    fcc_sort_net__ps_rep__69 ps_rep$69(
+    fcc_sort_net__ps_rep__69_k7_668cf05b ps_rep$69(
         .d(ps_rep$69$d),
         .q(ps_rep$69$q),
         .clock(ps_rep$69$clock)
     );
-    fcc_sort_net__ps_rep__70 ps_rep$70(
+    fcc_sort_net__ps_rep__70_k7_668cf05b ps_rep$70(
         .d(ps_rep$70$d),
         .q(ps_rep$70$q),
         .clock(ps_rep$70$clock)
     );
-    fcc_sort_net__ps_rep__71 ps_rep$71(
+    fcc_sort_net__ps_rep__71_k7_668cf05b ps_rep$71(
         .d(ps_rep$71$d),
         .q(ps_rep$71$q),
         .clock(ps_rep$71$clock)
     );
-    fcc_sort_net__ps_rep__72 ps_rep$72(
+    fcc_sort_net__ps_rep__72_k7_668cf05b ps_rep$72(
         .d(ps_rep$72$d),
         .q(ps_rep$72$q),
         .clock(ps_rep$72$clock)
     );
-    fcc_sort_net__ps_rep__73 ps_rep$73(
+    fcc_sort_net__ps_rep__73_k7_668cf05b ps_rep$73(
         .d(ps_rep$73$d),
         .q(ps_rep$73$q),
         .clock(ps_rep$73$clock)
     );
-    fcc_sort_net__ps_rep__74 ps_rep$74(
+    fcc_sort_net__ps_rep__74_k7_668cf05b ps_rep$74(
         .d(ps_rep$74$d),
         .q(ps_rep$74$q),
         .clock(ps_rep$74$clock)
     );
-    fcc_sort_net__ps_rep__75 ps_rep$75(
+    fcc_sort_net__ps_rep__75_k7_668cf05b ps_rep$75(
         .d(ps_rep$75$d),
         .q(ps_rep$75$q),
         .clock(ps_rep$75$clock)
     );
-    fcc_sort_net__ps_rep__76 ps_rep$76(
+    fcc_sort_net__ps_rep__76_k7_668cf05b ps_rep$76(
         .d(ps_rep$76$d),
         .q(ps_rep$76$q),
         .clock(ps_rep$76$clock)
     );
-    fcc_sort_net__ps_rep__77 ps_rep$77(
+    fcc_sort_net__ps_rep__77_k7_668cf05b ps_rep$77(
         .d(ps_rep$77$d),
         .q(ps_rep$77$q),
         .clock(ps_rep$77$clock)
     );
-    fcc_sort_net__ps_rep__78 ps_rep$78(
+    fcc_sort_net__ps_rep__78_k7_668cf05b ps_rep$78(
         .d(ps_rep$78$d),
         .q(ps_rep$78$q),
         .clock(ps_rep$78$clock)
     );
-    fcc_sort_net__ps_rep__79 ps_rep$79(
+    fcc_sort_net__ps_rep__79_k7_668cf05b ps_rep$79(
         .d(ps_rep$79$d),
         .q(ps_rep$79$q),
         .clock(ps_rep$79$clock)
     );
-    fcc_sort_net__ps_rep__80 ps_rep$80(
+    fcc_sort_net__ps_rep__80_k7_668cf05b ps_rep$80(
         .d(ps_rep$80$d),
         .q(ps_rep$80$q),
         .clock(ps_rep$80$clock)
     );
-    fcc_sort_net__ps_rep__81 ps_rep$81(
+    fcc_sort_net__ps_rep__81_k7_668cf05b ps_rep$81(
         .d(ps_rep$81$d),
         .q(ps_rep$81$q),
         .clock(ps_rep$81$clock)
     );
-    fcc_sort_net__ps_rep__82 ps_rep$82(
+    fcc_sort_net__ps_rep__82_k7_668cf05b ps_rep$82(
         .d(ps_rep$82$d),
         .q(ps_rep$82$q),
         .clock(ps_rep$82$clock)
     );
-    fcc_sort_net__ps_rep__83 ps_rep$83(
+    fcc_sort_net__ps_rep__83_k7_668cf05b ps_rep$83(
         .d(ps_rep$83$d),
         .q(ps_rep$83$q),
         .clock(ps_rep$83$clock)
     );
-    fcc_sort_net__ps_rep__84 ps_rep$84(
+    fcc_sort_net__ps_rep__84_k7_668cf05b ps_rep$84(
         .d(ps_rep$84$d),
         .q(ps_rep$84$q),
         .clock(ps_rep$84$clock)
     );
-    fcc_sort_net__ps_rep__85 ps_rep$85(
+    fcc_sort_net__ps_rep__85_k7_668cf05b ps_rep$85(
         .d(ps_rep$85$d),
         .q(ps_rep$85$q),
         .clock(ps_rep$85$clock)
     );
-    fcc_sort_net__ps_rep__86 ps_rep$86(
+    fcc_sort_net__ps_rep__86_k7_668cf05b ps_rep$86(
         .d(ps_rep$86$d),
         .q(ps_rep$86$q),
         .clock(ps_rep$86$clock)
     );
-    fcc_sort_net__ps_rep__87 ps_rep$87(
+    fcc_sort_net__ps_rep__87_k7_668cf05b ps_rep$87(
         .d(ps_rep$87$d),
         .q(ps_rep$87$q),
         .clock(ps_rep$87$clock)
     );
-    fcc_sort_net__ps_rep__88 ps_rep$88(
+    fcc_sort_net__ps_rep__88_k7_668cf05b ps_rep$88(
         .d(ps_rep$88$d),
         .q(ps_rep$88$q),
         .clock(ps_rep$88$clock)
     );
-    fcc_sort_net__ps_rep__89 ps_rep$89(
+    fcc_sort_net__ps_rep__89_k7_668cf05b ps_rep$89(
         .d(ps_rep$89$d),
         .q(ps_rep$89$q),
         .clock(ps_rep$89$clock)
     );
-    fcc_sort_net__ps_rep__90 ps_rep$90(
+    fcc_sort_net__ps_rep__90_k7_668cf05b ps_rep$90(
         .d(ps_rep$90$d),
         .q(ps_rep$90$q),
         .clock(ps_rep$90$clock)
     );
-    fcc_sort_net__ps_rep__91 ps_rep$91(
+    fcc_sort_net__ps_rep__91_k7_668cf05b ps_rep$91(
         .d(ps_rep$91$d),
         .q(ps_rep$91$q),
         .clock(ps_rep$91$clock)
     );
-    fcc_sort_net__ps_rep__92 ps_rep$92(
+    fcc_sort_net__ps_rep__92_k7_668cf05b ps_rep$92(
         .d(ps_rep$92$d),
         .q(ps_rep$92$q),
         .clock(ps_rep$92$clock)
     );
-    fcc_sort_net__ps_rep__93 ps_rep$93(
+    fcc_sort_net__ps_rep__93_k7_668cf05b ps_rep$93(
         .d(ps_rep$93$d),
         .q(ps_rep$93$q),
         .clock(ps_rep$93$clock)
     );
-    fcc_sort_net__ps_rep__94 ps_rep$94(
+    fcc_sort_net__ps_rep__94_k7_668cf05b ps_rep$94(
         .d(ps_rep$94$d),
         .q(ps_rep$94$q),
         .clock(ps_rep$94$clock)
     );
-    fcc_sort_net__ps_rep__95 ps_rep$95(
+    fcc_sort_net__ps_rep__95_k7_668cf05b ps_rep$95(
         .d(ps_rep$95$d),
         .q(ps_rep$95$q),
         .clock(ps_rep$95$clock)
     );
-    fcc_sort_net__ps_rep__96 ps_rep$96(
+    fcc_sort_net__ps_rep__96_k7_668cf05b ps_rep$96(
         .d(ps_rep$96$d),
         .q(ps_rep$96$q),
         .clock(ps_rep$96$clock)
     );
-    fcc_sort_net__ps_rep__97 ps_rep$97(
+    fcc_sort_net__ps_rep__97_k7_668cf05b ps_rep$97(
         .d(ps_rep$97$d),
         .q(ps_rep$97$q),
         .clock(ps_rep$97$clock)
     );
-    fcc_sort_net__ps_rep__98 ps_rep$98(
+    fcc_sort_net__ps_rep__98_k7_668cf05b ps_rep$98(
         .d(ps_rep$98$d),
         .q(ps_rep$98$q),
         .clock(ps_rep$98$clock)
     );
-    fcc_sort_net__ps_rep__99 ps_rep$99(
+    fcc_sort_net__ps_rep__99_k7_668cf05b ps_rep$99(
         .d(ps_rep$99$d),
         .q(ps_rep$99$q),
         .clock(ps_rep$99$clock)
     );
-    fcc_sort_net__ps_rep__100 ps_rep$100(
+    fcc_sort_net__ps_rep__100_k7_668cf05b ps_rep$100(
         .d(ps_rep$100$d),
         .q(ps_rep$100$q),
         .clock(ps_rep$100$clock)
     );
-    fcc_sort_net__ps_rep__101 ps_rep$101(
+    fcc_sort_net__ps_rep__101_k7_668cf05b ps_rep$101(
         .d(ps_rep$101$d),
         .q(ps_rep$101$q),
         .clock(ps_rep$101$clock)
     );
-    fcc_sort_net__ps_rep__102 ps_rep$102(
+    fcc_sort_net__ps_rep__102_k7_668cf05b ps_rep$102(
         .d(ps_rep$102$d),
         .q(ps_rep$102$q),
         .clock(ps_rep$102$clock)
     );
-    fcc_sort_net__ps_rep__103 ps_rep$103(
+    fcc_sort_net__ps_rep__103_k7_668cf05b ps_rep$103(
         .d(ps_rep$103$d),
         .q(ps_rep$103$q),
         .clock(ps_rep$103$clock)
     );
-    fcc_sort_net__ps_rep__104 ps_rep$104(
+    fcc_sort_net__ps_rep__104_k7_668cf05b ps_rep$104(
         .d(ps_rep$104$d),
         .q(ps_rep$104$q),
         .clock(ps_rep$104$clock)
     );
-    fcc_sort_net__ps_rep__105 ps_rep$105(
+    fcc_sort_net__ps_rep__105_k7_668cf05b ps_rep$105(
         .d(ps_rep$105$d),
         .q(ps_rep$105$q),
         .clock(ps_rep$105$clock)
     );
-    fcc_sort_net__ps_rep__106 ps_rep$106(
+    fcc_sort_net__ps_rep__106_k7_668cf05b ps_rep$106(
         .d(ps_rep$106$d),
         .q(ps_rep$106$q),
         .clock(ps_rep$106$clock)
     );
-    fcc_sort_net__ps_rep__107 ps_rep$107(
+    fcc_sort_net__ps_rep__107_k7_668cf05b ps_rep$107(
         .d(ps_rep$107$d),
         .q(ps_rep$107$q),
         .clock(ps_rep$107$clock)
     );
-    fcc_sort_net__ps_rep__108 ps_rep$108(
+    fcc_sort_net__ps_rep__108_k7_668cf05b ps_rep$108(
         .d(ps_rep$108$d),
         .q(ps_rep$108$q),
         .clock(ps_rep$108$clock)
     );
-    fcc_sort_net__ps_rep__109 ps_rep$109(
+    fcc_sort_net__ps_rep__109_k7_668cf05b ps_rep$109(
         .d(ps_rep$109$d),
         .q(ps_rep$109$q),
         .clock(ps_rep$109$clock)
     );
-    fcc_sort_net__ps_rep__110 ps_rep$110(
+    fcc_sort_net__ps_rep__110_k7_668cf05b ps_rep$110(
         .d(ps_rep$110$d),
         .q(ps_rep$110$q),
         .clock(ps_rep$110$clock)
     );
-    fcc_sort_net__ps_rep__111 ps_rep$111(
+    fcc_sort_net__ps_rep__111_k7_668cf05b ps_rep$111(
         .d(ps_rep$111$d),
         .q(ps_rep$111$q),
         .clock(ps_rep$111$clock)
     );
-    fcc_sort_net__ps_rep__112 ps_rep$112(
+    fcc_sort_net__ps_rep__112_k7_668cf05b ps_rep$112(
         .d(ps_rep$112$d),
         .q(ps_rep$112$q),
         .clock(ps_rep$112$clock)
     );
-    fcc_sort_net__ps_rep__113 ps_rep$113(
+    fcc_sort_net__ps_rep__113_k7_668cf05b ps_rep$113(
         .d(ps_rep$113$d),
         .q(ps_rep$113$q),
         .clock(ps_rep$113$clock)
     );
-    fcc_sort_net__ps_rep__114 ps_rep$114(
+    fcc_sort_net__ps_rep__114_k7_668cf05b ps_rep$114(
         .d(ps_rep$114$d),
         .q(ps_rep$114$q),
         .clock(ps_rep$114$clock)
     );
-    fcc_sort_net__ps_rep__115 ps_rep$115(
+    fcc_sort_net__ps_rep__115_k7_668cf05b ps_rep$115(
         .d(ps_rep$115$d),
         .q(ps_rep$115$q),
         .clock(ps_rep$115$clock)
     );
-    fcc_sort_net__ps_rep__116 ps_rep$116(
+    fcc_sort_net__ps_rep__116_k7_668cf05b ps_rep$116(
         .d(ps_rep$116$d),
         .q(ps_rep$116$q),
         .clock(ps_rep$116$clock)
     );
-    fcc_sort_net__ps_rep__117 ps_rep$117(
+    fcc_sort_net__ps_rep__117_k7_668cf05b ps_rep$117(
         .d(ps_rep$117$d),
         .q(ps_rep$117$q),
         .clock(ps_rep$117$clock)
     );
-    fcc_sort_net__ps_rep__118 ps_rep$118(
+    fcc_sort_net__ps_rep__118_k7_668cf05b ps_rep$118(
         .d(ps_rep$118$d),
         .q(ps_rep$118$q),
         .clock(ps_rep$118$clock)
     );
-    fcc_sort_net__ps_rep__119 ps_rep$119(
+    fcc_sort_net__ps_rep__119_k7_668cf05b ps_rep$119(
         .d(ps_rep$119$d),
         .q(ps_rep$119$q),
         .clock(ps_rep$119$clock)
     );
-    fcc_sort_net__ps_rep__120 ps_rep$120(
+    fcc_sort_net__ps_rep__120_k7_668cf05b ps_rep$120(
         .d(ps_rep$120$d),
         .q(ps_rep$120$q),
         .clock(ps_rep$120$clock)
     );
-    fcc_sort_net__ps_rep__121 ps_rep$121(
+    fcc_sort_net__ps_rep__121_k7_668cf05b ps_rep$121(
         .d(ps_rep$121$d),
         .q(ps_rep$121$q),
         .clock(ps_rep$121$clock)
     );
-    fcc_sort_net__ps_rep__122 ps_rep$122(
+    fcc_sort_net__ps_rep__122_k7_668cf05b ps_rep$122(
         .d(ps_rep$122$d),
         .q(ps_rep$122$q),
         .clock(ps_rep$122$clock)
     );
-    fcc_sort_net__ps_rep__123 ps_rep$123(
+    fcc_sort_net__ps_rep__123_k7_668cf05b ps_rep$123(
         .d(ps_rep$123$d),
         .q(ps_rep$123$q),
         .clock(ps_rep$123$clock)
     );
-    fcc_sort_net__ps_rep__124 ps_rep$124(
+    fcc_sort_net__ps_rep__124_k7_668cf05b ps_rep$124(
         .d(ps_rep$124$d),
         .q(ps_rep$124$q),
         .clock(ps_rep$124$clock)
     );
-    fcc_sort_net__ps_rep__125 ps_rep$125(
+    fcc_sort_net__ps_rep__125_k7_668cf05b ps_rep$125(
         .d(ps_rep$125$d),
         .q(ps_rep$125$q),
         .clock(ps_rep$125$clock)
     );
-    fcc_sort_net__ps_rep__126 ps_rep$126(
+    fcc_sort_net__ps_rep__126_k7_668cf05b ps_rep$126(
         .d(ps_rep$126$d),
         .q(ps_rep$126$q),
         .clock(ps_rep$126$clock)
     );
-    fcc_sort_net__ps_rep__127 ps_rep$127(
+    fcc_sort_net__ps_rep__127_k7_668cf05b ps_rep$127(
         .d(ps_rep$127$d),
         .q(ps_rep$127$q),
         .clock(ps_rep$127$clock)
     );
-    fcc_sort_net__ps_rep__128 ps_rep$128(
+    fcc_sort_net__ps_rep__128_k7_668cf05b ps_rep$128(
         .d(ps_rep$128$d),
         .q(ps_rep$128$q),
         .clock(ps_rep$128$clock)
     );
-    fcc_sort_net__ps_rep__129 ps_rep$129(
+    fcc_sort_net__ps_rep__129_k7_668cf05b ps_rep$129(
         .d(ps_rep$129$d),
         .q(ps_rep$129$q),
         .clock(ps_rep$129$clock)
     );
-    fcc_sort_net__ps_rep__130 ps_rep$130(
+    fcc_sort_net__ps_rep__130_k7_668cf05b ps_rep$130(
         .d(ps_rep$130$d),
         .q(ps_rep$130$q),
         .clock(ps_rep$130$clock)
     );
-    fcc_sort_net__ps_rep__131 ps_rep$131(
+    fcc_sort_net__ps_rep__131_k7_668cf05b ps_rep$131(
         .d(ps_rep$131$d),
         .q(ps_rep$131$q),
         .clock(ps_rep$131$clock)
     );
-    fcc_sort_net__ps_rep__132 ps_rep$132(
+    fcc_sort_net__ps_rep__132_k7_668cf05b ps_rep$132(
         .d(ps_rep$132$d),
         .q(ps_rep$132$q),
         .clock(ps_rep$132$clock)
     );
-    fcc_sort_net__ps_rep__133 ps_rep$133(
+    fcc_sort_net__ps_rep__133_k7_668cf05b ps_rep$133(
         .d(ps_rep$133$d),
         .q(ps_rep$133$q),
         .clock(ps_rep$133$clock)
     );
-    fcc_sort_net__ps_rep__134 ps_rep$134(
+    fcc_sort_net__ps_rep__134_k7_668cf05b ps_rep$134(
         .d(ps_rep$134$d),
         .q(ps_rep$134$q),
         .clock(ps_rep$134$clock)
     );
-    fcc_sort_net__ps_rep__135 ps_rep$135(
+    fcc_sort_net__ps_rep__135_k7_668cf05b ps_rep$135(
         .d(ps_rep$135$d),
         .q(ps_rep$135$q),
         .clock(ps_rep$135$clock)
     );
-    fcc_sort_net__ps_rep__136 ps_rep$136(
+    fcc_sort_net__ps_rep__136_k7_668cf05b ps_rep$136(
         .d(ps_rep$136$d),
         .q(ps_rep$136$q),
         .clock(ps_rep$136$clock)
     );
-    fcc_sort_net__ps_rep__137 ps_rep$137(
+    fcc_sort_net__ps_rep__137_k7_668cf05b ps_rep$137(
         .d(ps_rep$137$d),
         .q(ps_rep$137$q),
         .clock(ps_rep$137$clock)
     );
-    fcc_sort_net__ps_rep__138 ps_rep$138(
+    fcc_sort_net__ps_rep__138_k7_668cf05b ps_rep$138(
         .d(ps_rep$138$d),
         .q(ps_rep$138$q),
         .clock(ps_rep$138$clock)
     );
-    fcc_sort_net__ps_rep__139 ps_rep$139(
+    fcc_sort_net__ps_rep__139_k7_668cf05b ps_rep$139(
         .d(ps_rep$139$d),
         .q(ps_rep$139$q),
         .clock(ps_rep$139$clock)
     );
-    fcc_sort_net__ps_rep__140 ps_rep$140(
+    fcc_sort_net__ps_rep__140_k7_668cf05b ps_rep$140(
         .d(ps_rep$140$d),
         .q(ps_rep$140$q),
         .clock(ps_rep$140$clock)
     );
-    fcc_sort_net__ps_rep__141 ps_rep$141(
+    fcc_sort_net__ps_rep__141_k7_668cf05b ps_rep$141(
         .d(ps_rep$141$d),
         .q(ps_rep$141$q),
         .clock(ps_rep$141$clock)
     );
-    fcc_sort_net__ps_rep__142 ps_rep$142(
+    fcc_sort_net__ps_rep__142_k7_668cf05b ps_rep$142(
         .d(ps_rep$142$d),
         .q(ps_rep$142$q),
         .clock(ps_rep$142$clock)
     );
-    fcc_sort_net__ps_rep__143 ps_rep$143(
+    fcc_sort_net__ps_rep__143_k7_668cf05b ps_rep$143(
         .d(ps_rep$143$d),
         .q(ps_rep$143$q),
         .clock(ps_rep$143$clock)
     );
-    fcc_sort_net__ps_rep__144 ps_rep$144(
+    fcc_sort_net__ps_rep__144_k7_668cf05b ps_rep$144(
         .d(ps_rep$144$d),
         .q(ps_rep$144$q),
         .clock(ps_rep$144$clock)
     );
-    fcc_sort_net__ps_rep__145 ps_rep$145(
+    fcc_sort_net__ps_rep__145_k7_668cf05b ps_rep$145(
         .d(ps_rep$145$d),
         .q(ps_rep$145$q),
         .clock(ps_rep$145$clock)
     );
-    fcc_sort_net__ps_rep__146 ps_rep$146(
+    fcc_sort_net__ps_rep__146_k7_668cf05b ps_rep$146(
         .d(ps_rep$146$d),
         .q(ps_rep$146$q),
         .clock(ps_rep$146$clock)
     );
-    fcc_sort_net__ps_rep__147 ps_rep$147(
+    fcc_sort_net__ps_rep__147_k7_668cf05b ps_rep$147(
         .d(ps_rep$147$d),
         .q(ps_rep$147$q),
         .clock(ps_rep$147$clock)
     );
-    fcc_sort_net__ps_rep__148 ps_rep$148(
+    fcc_sort_net__ps_rep__148_k7_668cf05b ps_rep$148(
         .d(ps_rep$148$d),
         .q(ps_rep$148$q),
         .clock(ps_rep$148$clock)
     );
-    fcc_sort_net__ps_rep__149 ps_rep$149(
+    fcc_sort_net__ps_rep__149_k7_668cf05b ps_rep$149(
         .d(ps_rep$149$d),
         .q(ps_rep$149$q),
         .clock(ps_rep$149$clock)
     );
-    fcc_sort_net__ps_rep__150 ps_rep$150(
+    fcc_sort_net__ps_rep__150_k7_668cf05b ps_rep$150(
         .d(ps_rep$150$d),
         .q(ps_rep$150$q),
         .clock(ps_rep$150$clock)
     );
-    fcc_sort_net__ps_rep__151 ps_rep$151(
+    fcc_sort_net__ps_rep__151_k7_668cf05b ps_rep$151(
         .d(ps_rep$151$d),
         .q(ps_rep$151$q),
         .clock(ps_rep$151$clock)
     );
-    fcc_sort_net__ps_rep__152 ps_rep$152(
+    fcc_sort_net__ps_rep__152_k7_668cf05b ps_rep$152(
         .d(ps_rep$152$d),
         .q(ps_rep$152$q),
         .clock(ps_rep$152$clock)
     );
-    fcc_sort_net__ps_rep__153 ps_rep$153(
+    fcc_sort_net__ps_rep__153_k7_668cf05b ps_rep$153(
         .d(ps_rep$153$d),
         .q(ps_rep$153$q),
         .clock(ps_rep$153$clock)
     );
-    fcc_sort_net__ps_rep__154 ps_rep$154(
+    fcc_sort_net__ps_rep__154_k7_668cf05b ps_rep$154(
         .d(ps_rep$154$d),
         .q(ps_rep$154$q),
         .clock(ps_rep$154$clock)
     );
-    fcc_sort_net__ps_rep__155 ps_rep$155(
+    fcc_sort_net__ps_rep__155_k7_668cf05b ps_rep$155(
         .d(ps_rep$155$d),
         .q(ps_rep$155$q),
         .clock(ps_rep$155$clock)
     );
-    fcc_sort_net__ps_rep__156 ps_rep$156(
+    fcc_sort_net__ps_rep__156_k7_668cf05b ps_rep$156(
         .d(ps_rep$156$d),
         .q(ps_rep$156$q),
         .clock(ps_rep$156$clock)
     );
-    fcc_sort_net__ps_rep__157 ps_rep$157(
+    fcc_sort_net__ps_rep__157_k7_668cf05b ps_rep$157(
         .d(ps_rep$157$d),
         .q(ps_rep$157$q),
         .clock(ps_rep$157$clock)
     );
-    fcc_sort_net__ps_rep__158 ps_rep$158(
+    fcc_sort_net__ps_rep__158_k7_668cf05b ps_rep$158(
         .d(ps_rep$158$d),
         .q(ps_rep$158$q),
         .clock(ps_rep$158$clock)
     );
-    fcc_sort_net__ps_rep__159 ps_rep$159(
+    fcc_sort_net__ps_rep__159_k7_668cf05b ps_rep$159(
         .d(ps_rep$159$d),
         .q(ps_rep$159$q),
         .clock(ps_rep$159$clock)
     );
-    fcc_sort_net__ps_rep__160 ps_rep$160(
+    fcc_sort_net__ps_rep__160_k7_668cf05b ps_rep$160(
         .d(ps_rep$160$d),
         .q(ps_rep$160$q),
         .clock(ps_rep$160$clock)
     );
-    fcc_sort_net__ps_rep__161 ps_rep$161(
+    fcc_sort_net__ps_rep__161_k7_668cf05b ps_rep$161(
         .d(ps_rep$161$d),
         .q(ps_rep$161$q),
         .clock(ps_rep$161$clock)
     );
-    fcc_sort_net__ps_rep__162 ps_rep$162(
+    fcc_sort_net__ps_rep__162_k7_668cf05b ps_rep$162(
         .d(ps_rep$162$d),
         .q(ps_rep$162$q),
         .clock(ps_rep$162$clock)
     );
-    fcc_sort_net__ps_rep__163 ps_rep$163(
+    fcc_sort_net__ps_rep__163_k7_668cf05b ps_rep$163(
         .d(ps_rep$163$d),
         .q(ps_rep$163$q),
         .clock(ps_rep$163$clock)
     );
-    fcc_sort_net__ps_rep__164 ps_rep$164(
+    fcc_sort_net__ps_rep__164_k7_668cf05b ps_rep$164(
         .d(ps_rep$164$d),
         .q(ps_rep$164$q),
         .clock(ps_rep$164$clock)
     );
-    fcc_sort_net__ps_rep__165 ps_rep$165(
+    fcc_sort_net__ps_rep__165_k7_668cf05b ps_rep$165(
         .d(ps_rep$165$d),
         .q(ps_rep$165$q),
         .clock(ps_rep$165$clock)
     );
-    fcc_sort_net__ps_rep__166 ps_rep$166(
+    fcc_sort_net__ps_rep__166_k7_668cf05b ps_rep$166(
         .d(ps_rep$166$d),
         .q(ps_rep$166$q),
         .clock(ps_rep$166$clock)
     );
-    fcc_sort_net__ps_rep__167 ps_rep$167(
+    fcc_sort_net__ps_rep__167_k7_668cf05b ps_rep$167(
         .d(ps_rep$167$d),
         .q(ps_rep$167$q),
         .clock(ps_rep$167$clock)
     );
-    fcc_sort_net__ps_rep__168 ps_rep$168(
+    fcc_sort_net__ps_rep__168_k7_668cf05b ps_rep$168(
         .d(ps_rep$168$d),
         .q(ps_rep$168$q),
         .clock(ps_rep$168$clock)
     );
-    fcc_sort_net__ps_rep__169 ps_rep$169(
+    fcc_sort_net__ps_rep__169_k7_668cf05b ps_rep$169(
         .d(ps_rep$169$d),
         .q(ps_rep$169$q),
         .clock(ps_rep$169$clock)
     );
-    fcc_sort_net__ps_rep__170 ps_rep$170(
+    fcc_sort_net__ps_rep__170_k7_668cf05b ps_rep$170(
         .d(ps_rep$170$d),
         .q(ps_rep$170$q),
         .clock(ps_rep$170$clock)
     );
-    fcc_sort_net__ps_rep__171 ps_rep$171(
+    fcc_sort_net__ps_rep__171_k7_668cf05b ps_rep$171(
         .d(ps_rep$171$d),
         .q(ps_rep$171$q),
         .clock(ps_rep$171$clock)
     );
-    fcc_sort_net__ps_rep__172 ps_rep$172(
+    fcc_sort_net__ps_rep__172_k7_668cf05b ps_rep$172(
         .d(ps_rep$172$d),
         .q(ps_rep$172$q),
         .clock(ps_rep$172$clock)
     );
-    fcc_sort_net__ps_rep__173 ps_rep$173(
+    fcc_sort_net__ps_rep__173_k7_668cf05b ps_rep$173(
         .d(ps_rep$173$d),
         .q(ps_rep$173$q),
         .clock(ps_rep$173$clock)
     );
-    fcc_sort_net__ps_rep__174 ps_rep$174(
+    fcc_sort_net__ps_rep__174_k7_668cf05b ps_rep$174(
         .d(ps_rep$174$d),
         .q(ps_rep$174$q),
         .clock(ps_rep$174$clock)
     );
-    fcc_sort_net__ps_rep__175 ps_rep$175(
+    fcc_sort_net__ps_rep__175_k7_668cf05b ps_rep$175(
         .d(ps_rep$175$d),
         .q(ps_rep$175$q),
         .clock(ps_rep$175$clock)
     );
-    fcc_sort_net__ps_rep__176 ps_rep$176(
+    fcc_sort_net__ps_rep__176_k7_668cf05b ps_rep$176(
         .d(ps_rep$176$d),
         .q(ps_rep$176$q),
         .clock(ps_rep$176$clock)
     );
-    fcc_sort_net__ps_rep__177 ps_rep$177(
+    fcc_sort_net__ps_rep__177_k7_668cf05b ps_rep$177(
         .d(ps_rep$177$d),
         .q(ps_rep$177$q),
         .clock(ps_rep$177$clock)
     );
-    fcc_sort_net__ps_rep__178 ps_rep$178(
+    fcc_sort_net__ps_rep__178_k7_668cf05b ps_rep$178(
         .d(ps_rep$178$d),
         .q(ps_rep$178$q),
         .clock(ps_rep$178$clock)
     );
-    fcc_sort_net__ps_rep__179 ps_rep$179(
+    fcc_sort_net__ps_rep__179_k7_668cf05b ps_rep$179(
         .d(ps_rep$179$d),
         .q(ps_rep$179$q),
         .clock(ps_rep$179$clock)
     );
-    fcc_sort_net__ps_rep__180 ps_rep$180(
+    fcc_sort_net__ps_rep__180_k7_668cf05b ps_rep$180(
         .d(ps_rep$180$d),
         .q(ps_rep$180$q),
         .clock(ps_rep$180$clock)
     );
-    fcc_sort_net__ps_rep__181 ps_rep$181(
+    fcc_sort_net__ps_rep__181_k7_668cf05b ps_rep$181(
         .d(ps_rep$181$d),
         .q(ps_rep$181$q),
         .clock(ps_rep$181$clock)
     );
-    fcc_sort_net__ps_rep__182 ps_rep$182(
+    fcc_sort_net__ps_rep__182_k7_668cf05b ps_rep$182(
         .d(ps_rep$182$d),
         .q(ps_rep$182$q),
         .clock(ps_rep$182$clock)
     );
-    fcc_sort_net__ps_rep__183 ps_rep$183(
+    fcc_sort_net__ps_rep__183_k7_668cf05b ps_rep$183(
         .d(ps_rep$183$d),
         .q(ps_rep$183$q),
         .clock(ps_rep$183$clock)
     );
-    fcc_sort_net__ps_rep__184 ps_rep$184(
+    fcc_sort_net__ps_rep__184_k7_668cf05b ps_rep$184(
         .d(ps_rep$184$d),
         .q(ps_rep$184$q),
         .clock(ps_rep$184$clock)
     );
-    fcc_sort_net__ps_rep__185 ps_rep$185(
+    fcc_sort_net__ps_rep__185_k7_668cf05b ps_rep$185(
         .d(ps_rep$185$d),
         .q(ps_rep$185$q),
         .clock(ps_rep$185$clock)
     );
-    fcc_sort_net__ps_rep__186 ps_rep$186(
+    fcc_sort_net__ps_rep__186_k7_668cf05b ps_rep$186(
         .d(ps_rep$186$d),
         .q(ps_rep$186$q),
         .clock(ps_rep$186$clock)
     );
-    fcc_sort_net__ps_rep__187 ps_rep$187(
+    fcc_sort_net__ps_rep__187_k7_668cf05b ps_rep$187(
         .d(ps_rep$187$d),
         .q(ps_rep$187$q),
         .clock(ps_rep$187$clock)
     );
-    fcc_sort_net__ps_rep__188 ps_rep$188(
+    fcc_sort_net__ps_rep__188_k7_668cf05b ps_rep$188(
         .d(ps_rep$188$d),
         .q(ps_rep$188$q),
         .clock(ps_rep$188$clock)
     );
-    fcc_sort_net__known__0 known$0(
+    fcc_sort_net__known__0_k7_668cf05b known$0(
         .d(known$0$d),
         .q(known$0$q),
         .clock(known$0$clock)
     );
-    fcc_sort_net__known__1 known$1(
+    fcc_sort_net__known__1_k7_668cf05b known$1(
         .d(known$1$d),
         .q(known$1$q),
         .clock(known$1$clock)
     );
-    fcc_sort_net__known__2 known$2(
+    fcc_sort_net__known__2_k7_668cf05b known$2(
         .d(known$2$d),
         .q(known$2$q),
         .clock(known$2$clock)
     );
-    fcc_sort_net__known__3 known$3(
+    fcc_sort_net__known__3_k7_668cf05b known$3(
         .d(known$3$d),
         .q(known$3$q),
         .clock(known$3$clock)
     );
-    fcc_sort_net__known__4 known$4(
+    fcc_sort_net__known__4_k7_668cf05b known$4(
         .d(known$4$d),
         .q(known$4$q),
         .clock(known$4$clock)
     );
-    fcc_sort_net__known__5 known$5(
+    fcc_sort_net__known__5_k7_668cf05b known$5(
         .d(known$5$d),
         .q(known$5$q),
         .clock(known$5$clock)
     );
-    fcc_sort_net__known__6 known$6(
+    fcc_sort_net__known__6_k7_668cf05b known$6(
         .d(known$6$d),
         .q(known$6$q),
         .clock(known$6$clock)
     );
-    fcc_sort_net__known__7 known$7(
+    fcc_sort_net__known__7_k7_668cf05b known$7(
         .d(known$7$d),
         .q(known$7$q),
         .clock(known$7$clock)
     );
-    fcc_sort_net__known__8 known$8(
+    fcc_sort_net__known__8_k7_668cf05b known$8(
         .d(known$8$d),
         .q(known$8$q),
         .clock(known$8$clock)
     );
-    fcc_sort_net__known__9 known$9(
+    fcc_sort_net__known__9_k7_668cf05b known$9(
         .d(known$9$d),
         .q(known$9$q),
         .clock(known$9$clock)
     );
-    fcc_sort_net__known__10 known$10(
+    fcc_sort_net__known__10_k7_668cf05b known$10(
         .d(known$10$d),
         .q(known$10$q),
         .clock(known$10$clock)
     );
-    fcc_sort_net__known__11 known$11(
+    fcc_sort_net__known__11_k7_668cf05b known$11(
         .d(known$11$d),
         .q(known$11$q),
         .clock(known$11$clock)
     );
-    fcc_sort_net__known__12 known$12(
+    fcc_sort_net__known__12_k7_668cf05b known$12(
         .d(known$12$d),
         .q(known$12$q),
         .clock(known$12$clock)
     );
-    fcc_sort_net__known__13 known$13(
+    fcc_sort_net__known__13_k7_668cf05b known$13(
         .d(known$13$d),
         .q(known$13$q),
         .clock(known$13$clock)
     );
-    fcc_sort_net__known__14 known$14(
+    fcc_sort_net__known__14_k7_668cf05b known$14(
         .d(known$14$d),
         .q(known$14$q),
         .clock(known$14$clock)
     );
-    fcc_sort_net__known__15 known$15(
+    fcc_sort_net__known__15_k7_668cf05b known$15(
         .d(known$15$d),
         .q(known$15$q),
         .clock(known$15$clock)
     );
-    fcc_sort_net__known__16 known$16(
+    fcc_sort_net__known__16_k7_668cf05b known$16(
         .d(known$16$d),
         .q(known$16$q),
         .clock(known$16$clock)
     );
-    fcc_sort_net__known__17 known$17(
+    fcc_sort_net__known__17_k7_668cf05b known$17(
         .d(known$17$d),
         .q(known$17$q),
         .clock(known$17$clock)
     );
-    fcc_sort_net__known__18 known$18(
+    fcc_sort_net__known__18_k7_668cf05b known$18(
         .d(known$18$d),
         .q(known$18$q),
         .clock(known$18$clock)
     );
-    fcc_sort_net__known__19 known$19(
+    fcc_sort_net__known__19_k7_668cf05b known$19(
         .d(known$19$d),
         .q(known$19$q),
         .clock(known$19$clock)
     );
-    fcc_sort_net__known__20 known$20(
+    fcc_sort_net__known__20_k7_668cf05b known$20(
         .d(known$20$d),
         .q(known$20$q),
         .clock(known$20$clock)
     );
-    fcc_sort_net__knq__0 knq$0(
+    fcc_sort_net__knq__0_k7_668cf05b knq$0(
         .d(knq$0$d),
         .q(knq$0$q),
         .clock(knq$0$clock)
     );
-    fcc_sort_net__knq__1 knq$1(
+    fcc_sort_net__knq__1_k7_668cf05b knq$1(
         .d(knq$1$d),
         .q(knq$1$q),
         .clock(knq$1$clock)
     );
-    fcc_sort_net__knq__2 knq$2(
+    fcc_sort_net__knq__2_k7_668cf05b knq$2(
         .d(knq$2$d),
         .q(knq$2$q),
         .clock(knq$2$clock)
     );
-    fcc_sort_net__knq__3 knq$3(
+    fcc_sort_net__knq__3_k7_668cf05b knq$3(
         .d(knq$3$d),
         .q(knq$3$q),
         .clock(knq$3$clock)
     );
-    fcc_sort_net__knq__4 knq$4(
+    fcc_sort_net__knq__4_k7_668cf05b knq$4(
         .d(knq$4$d),
         .q(knq$4$q),
         .clock(knq$4$clock)
     );
-    fcc_sort_net__knq__5 knq$5(
+    fcc_sort_net__knq__5_k7_668cf05b knq$5(
         .d(knq$5$d),
         .q(knq$5$q),
         .clock(knq$5$clock)
     );
-    fcc_sort_net__knq__6 knq$6(
+    fcc_sort_net__knq__6_k7_668cf05b knq$6(
         .d(knq$6$d),
         .q(knq$6$q),
         .clock(knq$6$clock)
     );
-    fcc_sort_net__knq__7 knq$7(
+    fcc_sort_net__knq__7_k7_668cf05b knq$7(
         .d(knq$7$d),
         .q(knq$7$q),
         .clock(knq$7$clock)
     );
-    fcc_sort_net__knq__8 knq$8(
+    fcc_sort_net__knq__8_k7_668cf05b knq$8(
         .d(knq$8$d),
         .q(knq$8$q),
         .clock(knq$8$clock)
     );
-    fcc_sort_net__knq__9 knq$9(
+    fcc_sort_net__knq__9_k7_668cf05b knq$9(
         .d(knq$9$d),
         .q(knq$9$q),
         .clock(knq$9$clock)
     );
-    fcc_sort_net__knq__10 knq$10(
+    fcc_sort_net__knq__10_k7_668cf05b knq$10(
         .d(knq$10$d),
         .q(knq$10$q),
         .clock(knq$10$clock)
     );
-    fcc_sort_net__knq__11 knq$11(
+    fcc_sort_net__knq__11_k7_668cf05b knq$11(
         .d(knq$11$d),
         .q(knq$11$q),
         .clock(knq$11$clock)
     );
-    fcc_sort_net__knq__12 knq$12(
+    fcc_sort_net__knq__12_k7_668cf05b knq$12(
         .d(knq$12$d),
         .q(knq$12$q),
         .clock(knq$12$clock)
     );
-    fcc_sort_net__knq__13 knq$13(
+    fcc_sort_net__knq__13_k7_668cf05b knq$13(
         .d(knq$13$d),
         .q(knq$13$q),
         .clock(knq$13$clock)
     );
-    fcc_sort_net__knq__14 knq$14(
+    fcc_sort_net__knq__14_k7_668cf05b knq$14(
         .d(knq$14$d),
         .q(knq$14$q),
         .clock(knq$14$clock)
     );
-    fcc_sort_net__knq__15 knq$15(
+    fcc_sort_net__knq__15_k7_668cf05b knq$15(
         .d(knq$15$d),
         .q(knq$15$q),
         .clock(knq$15$clock)
     );
-    fcc_sort_net__knq__16 knq$16(
+    fcc_sort_net__knq__16_k7_668cf05b knq$16(
         .d(knq$16$d),
         .q(knq$16$q),
         .clock(knq$16$clock)
     );
-    fcc_sort_net__knq__17 knq$17(
+    fcc_sort_net__knq__17_k7_668cf05b knq$17(
         .d(knq$17$d),
         .q(knq$17$q),
         .clock(knq$17$clock)
     );
-    fcc_sort_net__knq__18 knq$18(
+    fcc_sort_net__knq__18_k7_668cf05b knq$18(
         .d(knq$18$d),
         .q(knq$18$q),
         .clock(knq$18$clock)
     );
-    fcc_sort_net__knq__19 knq$19(
+    fcc_sort_net__knq__19_k7_668cf05b knq$19(
         .d(knq$19$d),
         .q(knq$19$q),
         .clock(knq$19$clock)
     );
-    fcc_sort_net__knq__20 knq$20(
+    fcc_sort_net__knq__20_k7_668cf05b knq$20(
         .d(knq$20$d),
         .q(knq$20$q),
         .clock(knq$20$clock)
     );
-    fcc_sort_net__knq__21 knq$21(
+    fcc_sort_net__knq__21_k7_668cf05b knq$21(
         .d(knq$21$d),
         .q(knq$21$q),
         .clock(knq$21$clock)
     );
-    fcc_sort_net__knq__22 knq$22(
+    fcc_sort_net__knq__22_k7_668cf05b knq$22(
         .d(knq$22$d),
         .q(knq$22$q),
         .clock(knq$22$clock)
     );
-    fcc_sort_net__knq__23 knq$23(
+    fcc_sort_net__knq__23_k7_668cf05b knq$23(
         .d(knq$23$d),
         .q(knq$23$q),
         .clock(knq$23$clock)
     );
-    fcc_sort_net__knq__24 knq$24(
+    fcc_sort_net__knq__24_k7_668cf05b knq$24(
         .d(knq$24$d),
         .q(knq$24$q),
         .clock(knq$24$clock)
     );
-    fcc_sort_net__knq__25 knq$25(
+    fcc_sort_net__knq__25_k7_668cf05b knq$25(
         .d(knq$25$d),
         .q(knq$25$q),
         .clock(knq$25$clock)
     );
-    fcc_sort_net__knq__26 knq$26(
+    fcc_sort_net__knq__26_k7_668cf05b knq$26(
         .d(knq$26$d),
         .q(knq$26$q),
         .clock(knq$26$clock)
     );
-    fcc_sort_net__knq__27 knq$27(
+    fcc_sort_net__knq__27_k7_668cf05b knq$27(
         .d(knq$27$d),
         .q(knq$27$q),
         .clock(knq$27$clock)
     );
-    fcc_sort_net__knq__28 knq$28(
+    fcc_sort_net__knq__28_k7_668cf05b knq$28(
         .d(knq$28$d),
         .q(knq$28$q),
         .clock(knq$28$clock)
     );
-    fcc_sort_net__knq__29 knq$29(
+    fcc_sort_net__knq__29_k7_668cf05b knq$29(
         .d(knq$29$d),
         .q(knq$29$q),
         .clock(knq$29$clock)
     );
-    fcc_sort_net__knq__30 knq$30(
+    fcc_sort_net__knq__30_k7_668cf05b knq$30(
         .d(knq$30$d),
         .q(knq$30$q),
         .clock(knq$30$clock)
     );
-    fcc_sort_net__knq__31 knq$31(
+    fcc_sort_net__knq__31_k7_668cf05b knq$31(
         .d(knq$31$d),
         .q(knq$31$q),
         .clock(knq$31$clock)
     );
-    fcc_sort_net__knq__32 knq$32(
+    fcc_sort_net__knq__32_k7_668cf05b knq$32(
         .d(knq$32$d),
         .q(knq$32$q),
         .clock(knq$32$clock)
     );
-    fcc_sort_net__knq__33 knq$33(
+    fcc_sort_net__knq__33_k7_668cf05b knq$33(
         .d(knq$33$d),
         .q(knq$33$q),
         .clock(knq$33$clock)
     );
-    fcc_sort_net__knq__34 knq$34(
+    fcc_sort_net__knq__34_k7_668cf05b knq$34(
         .d(knq$34$d),
         .q(knq$34$q),
         .clock(knq$34$clock)
     );
-    fcc_sort_net__knq__35 knq$35(
+    fcc_sort_net__knq__35_k7_668cf05b knq$35(
         .d(knq$35$d),
         .q(knq$35$q),
         .clock(knq$35$clock)
     );
-    fcc_sort_net__knq__36 knq$36(
+    fcc_sort_net__knq__36_k7_668cf05b knq$36(
         .d(knq$36$d),
         .q(knq$36$q),
         .clock(knq$36$clock)
     );
-    fcc_sort_net__knq__37 knq$37(
+    fcc_sort_net__knq__37_k7_668cf05b knq$37(
         .d(knq$37$d),
         .q(knq$37$q),
         .clock(knq$37$clock)
     );
-    fcc_sort_net__knq__38 knq$38(
+    fcc_sort_net__knq__38_k7_668cf05b knq$38(
         .d(knq$38$d),
         .q(knq$38$q),
         .clock(knq$38$clock)
     );
-    fcc_sort_net__knq__39 knq$39(
+    fcc_sort_net__knq__39_k7_668cf05b knq$39(
         .d(knq$39$d),
         .q(knq$39$q),
         .clock(knq$39$clock)
     );
-    fcc_sort_net__knq__40 knq$40(
+    fcc_sort_net__knq__40_k7_668cf05b knq$40(
         .d(knq$40$d),
         .q(knq$40$q),
         .clock(knq$40$clock)
     );
-    fcc_sort_net__knq__41 knq$41(
+    fcc_sort_net__knq__41_k7_668cf05b knq$41(
         .d(knq$41$d),
         .q(knq$41$q),
         .clock(knq$41$clock)
     );
-    fcc_sort_net__knq__42 knq$42(
+    fcc_sort_net__knq__42_k7_668cf05b knq$42(
         .d(knq$42$d),
         .q(knq$42$q),
         .clock(knq$42$clock)
     );
-    fcc_sort_net__knq__43 knq$43(
+    fcc_sort_net__knq__43_k7_668cf05b knq$43(
         .d(knq$43$d),
         .q(knq$43$q),
         .clock(knq$43$clock)
     );
-    fcc_sort_net__knq__44 knq$44(
+    fcc_sort_net__knq__44_k7_668cf05b knq$44(
         .d(knq$44$d),
         .q(knq$44$q),
         .clock(knq$44$clock)
     );
-    fcc_sort_net__knq__45 knq$45(
+    fcc_sort_net__knq__45_k7_668cf05b knq$45(
         .d(knq$45$d),
         .q(knq$45$q),
         .clock(knq$45$clock)
     );
-    fcc_sort_net__knq__46 knq$46(
+    fcc_sort_net__knq__46_k7_668cf05b knq$46(
         .d(knq$46$d),
         .q(knq$46$q),
         .clock(knq$46$clock)
     );
-    fcc_sort_net__knq__47 knq$47(
+    fcc_sort_net__knq__47_k7_668cf05b knq$47(
         .d(knq$47$d),
         .q(knq$47$q),
         .clock(knq$47$clock)
     );
-    fcc_sort_net__knq__48 knq$48(
+    fcc_sort_net__knq__48_k7_668cf05b knq$48(
         .d(knq$48$d),
         .q(knq$48$q),
         .clock(knq$48$clock)
     );
-    fcc_sort_net__knq__49 knq$49(
+    fcc_sort_net__knq__49_k7_668cf05b knq$49(
         .d(knq$49$d),
         .q(knq$49$q),
         .clock(knq$49$clock)
     );
-    fcc_sort_net__knq__50 knq$50(
+    fcc_sort_net__knq__50_k7_668cf05b knq$50(
         .d(knq$50$d),
         .q(knq$50$q),
         .clock(knq$50$clock)
     );
-    fcc_sort_net__knq__51 knq$51(
+    fcc_sort_net__knq__51_k7_668cf05b knq$51(
         .d(knq$51$d),
         .q(knq$51$q),
         .clock(knq$51$clock)
     );
-    fcc_sort_net__knq__52 knq$52(
+    fcc_sort_net__knq__52_k7_668cf05b knq$52(
         .d(knq$52$d),
         .q(knq$52$q),
         .clock(knq$52$clock)
     );
-    fcc_sort_net__knq__53 knq$53(
+    fcc_sort_net__knq__53_k7_668cf05b knq$53(
         .d(knq$53$d),
         .q(knq$53$q),
         .clock(knq$53$clock)
     );
-    fcc_sort_net__knq__54 knq$54(
+    fcc_sort_net__knq__54_k7_668cf05b knq$54(
         .d(knq$54$d),
         .q(knq$54$q),
         .clock(knq$54$clock)
     );
-    fcc_sort_net__knq__55 knq$55(
+    fcc_sort_net__knq__55_k7_668cf05b knq$55(
         .d(knq$55$d),
         .q(knq$55$q),
         .clock(knq$55$clock)
     );
-    fcc_sort_net__knq__56 knq$56(
+    fcc_sort_net__knq__56_k7_668cf05b knq$56(
         .d(knq$56$d),
         .q(knq$56$q),
         .clock(knq$56$clock)
     );
-    fcc_sort_net__knq__57 knq$57(
+    fcc_sort_net__knq__57_k7_668cf05b knq$57(
         .d(knq$57$d),
         .q(knq$57$q),
         .clock(knq$57$clock)
     );
-    fcc_sort_net__knq__58 knq$58(
+    fcc_sort_net__knq__58_k7_668cf05b knq$58(
         .d(knq$58$d),
         .q(knq$58$q),
         .clock(knq$58$clock)
     );
-    fcc_sort_net__knq__59 knq$59(
+    fcc_sort_net__knq__59_k7_668cf05b knq$59(
         .d(knq$59$d),
         .q(knq$59$q),
         .clock(knq$59$clock)
     );
-    fcc_sort_net__knq__60 knq$60(
+    fcc_sort_net__knq__60_k7_668cf05b knq$60(
         .d(knq$60$d),
         .q(knq$60$q),
         .clock(knq$60$clock)
     );
-    fcc_sort_net__knq__61 knq$61(
+    fcc_sort_net__knq__61_k7_668cf05b knq$61(
         .d(knq$61$d),
         .q(knq$61$q),
         .clock(knq$61$clock)
     );
-    fcc_sort_net__knq__62 knq$62(
+    fcc_sort_net__knq__62_k7_668cf05b knq$62(
         .d(knq$62$d),
         .q(knq$62$q),
         .clock(knq$62$clock)
     );
-    fcc_sort_net__knq__63 knq$63(
+    fcc_sort_net__knq__63_k7_668cf05b knq$63(
         .d(knq$63$d),
         .q(knq$63$q),
         .clock(knq$63$clock)
     );
-    fcc_sort_net__knq__64 knq$64(
+    fcc_sort_net__knq__64_k7_668cf05b knq$64(
         .d(knq$64$d),
         .q(knq$64$q),
         .clock(knq$64$clock)
     );
-    fcc_sort_net__knq__65 knq$65(
+    fcc_sort_net__knq__65_k7_668cf05b knq$65(
         .d(knq$65$d),
         .q(knq$65$q),
         .clock(knq$65$clock)
     );
-    fcc_sort_net__knq__66 knq$66(
+    fcc_sort_net__knq__66_k7_668cf05b knq$66(
         .d(knq$66$d),
         .q(knq$66$q),
         .clock(knq$66$clock)
     );
-    fcc_sort_net__knq__67 knq$67(
+    fcc_sort_net__knq__67_k7_668cf05b knq$67(
         .d(knq$67$d),
         .q(knq$67$q),
         .clock(knq$67$clock)
     );
-    fcc_sort_net__knq__68 knq$68(
+    fcc_sort_net__knq__68_k7_668cf05b knq$68(
         .d(knq$68$d),
         .q(knq$68$q),
         .clock(knq$68$clock)
     );
-    fcc_sort_net__knq__69 knq$69(
+    fcc_sort_net__knq__69_k7_668cf05b knq$69(
         .d(knq$69$d),
         .q(knq$69$q),
         .clock(knq$69$clock)
     );
-    fcc_sort_net__knq__70 knq$70(
+    fcc_sort_net__knq__70_k7_668cf05b knq$70(
         .d(knq$70$d),
         .q(knq$70$q),
         .clock(knq$70$clock)
     );
-    fcc_sort_net__knq__71 knq$71(
+    fcc_sort_net__knq__71_k7_668cf05b knq$71(
         .d(knq$71$d),
         .q(knq$71$q),
         .clock(knq$71$clock)
     );
-    fcc_sort_net__knq__72 knq$72(
+    fcc_sort_net__knq__72_k7_668cf05b knq$72(
         .d(knq$72$d),
         .q(knq$72$q),
         .clock(knq$72$clock)
     );
-    fcc_sort_net__knq__73 knq$73(
+    fcc_sort_net__knq__73_k7_668cf05b knq$73(
         .d(knq$73$d),
         .q(knq$73$q),
         .clock(knq$73$clock)
     );
-    fcc_sort_net__knq__74 knq$74(
+    fcc_sort_net__knq__74_k7_668cf05b knq$74(
         .d(knq$74$d),
         .q(knq$74$q),
         .clock(knq$74$clock)
     );
-    fcc_sort_net__knq__75 knq$75(
+    fcc_sort_net__knq__75_k7_668cf05b knq$75(
         .d(knq$75$d),
         .q(knq$75$q),
         .clock(knq$75$clock)
     );
-    fcc_sort_net__knq__76 knq$76(
+    fcc_sort_net__knq__76_k7_668cf05b knq$76(
         .d(knq$76$d),
         .q(knq$76$q),
         .clock(knq$76$clock)
     );
-    fcc_sort_net__knq__77 knq$77(
+    fcc_sort_net__knq__77_k7_668cf05b knq$77(
         .d(knq$77$d),
         .q(knq$77$q),
         .clock(knq$77$clock)
     );
-    fcc_sort_net__knq__78 knq$78(
+    fcc_sort_net__knq__78_k7_668cf05b knq$78(
         .d(knq$78$d),
         .q(knq$78$q),
         .clock(knq$78$clock)
     );
-    fcc_sort_net__knq__79 knq$79(
+    fcc_sort_net__knq__79_k7_668cf05b knq$79(
         .d(knq$79$d),
         .q(knq$79$q),
         .clock(knq$79$clock)
     );
-    fcc_sort_net__knq__80 knq$80(
+    fcc_sort_net__knq__80_k7_668cf05b knq$80(
         .d(knq$80$d),
         .q(knq$80$q),
         .clock(knq$80$clock)
     );
-    fcc_sort_net__knq__81 knq$81(
+    fcc_sort_net__knq__81_k7_668cf05b knq$81(
         .d(knq$81$d),
         .q(knq$81$q),
         .clock(knq$81$clock)
     );
-    fcc_sort_net__knq__82 knq$82(
+    fcc_sort_net__knq__82_k7_668cf05b knq$82(
         .d(knq$82$d),
         .q(knq$82$q),
         .clock(knq$82$clock)
     );
-    fcc_sort_net__knq__83 knq$83(
+    fcc_sort_net__knq__83_k7_668cf05b knq$83(
         .d(knq$83$d),
         .q(knq$83$q),
         .clock(knq$83$clock)
     );
-    fcc_sort_net__knq__84 knq$84(
+    fcc_sort_net__knq__84_k7_668cf05b knq$84(
         .d(knq$84$d),
         .q(knq$84$q),
         .clock(knq$84$clock)
     );
-    fcc_sort_net__knq__85 knq$85(
+    fcc_sort_net__knq__85_k7_668cf05b knq$85(
         .d(knq$85$d),
         .q(knq$85$q),
         .clock(knq$85$clock)
     );
-    fcc_sort_net__knq__86 knq$86(
+    fcc_sort_net__knq__86_k7_668cf05b knq$86(
         .d(knq$86$d),
         .q(knq$86$q),
         .clock(knq$86$clock)
     );
-    fcc_sort_net__knq__87 knq$87(
+    fcc_sort_net__knq__87_k7_668cf05b knq$87(
         .d(knq$87$d),
         .q(knq$87$q),
         .clock(knq$87$clock)
     );
-    fcc_sort_net__knq__88 knq$88(
+    fcc_sort_net__knq__88_k7_668cf05b knq$88(
         .d(knq$88$d),
         .q(knq$88$q),
         .clock(knq$88$clock)
     );
-    fcc_sort_net__knq__89 knq$89(
+    fcc_sort_net__knq__89_k7_668cf05b knq$89(
         .d(knq$89$d),
         .q(knq$89$q),
         .clock(knq$89$clock)
     );
-    fcc_sort_net__knq__90 knq$90(
+    fcc_sort_net__knq__90_k7_668cf05b knq$90(
         .d(knq$90$d),
         .q(knq$90$q),
         .clock(knq$90$clock)
     );
-    fcc_sort_net__knq__91 knq$91(
+    fcc_sort_net__knq__91_k7_668cf05b knq$91(
         .d(knq$91$d),
         .q(knq$91$q),
         .clock(knq$91$clock)
     );
-    fcc_sort_net__knq__92 knq$92(
+    fcc_sort_net__knq__92_k7_668cf05b knq$92(
         .d(knq$92$d),
         .q(knq$92$q),
         .clock(knq$92$clock)
     );
-    fcc_sort_net__knq__93 knq$93(
+    fcc_sort_net__knq__93_k7_668cf05b knq$93(
         .d(knq$93$d),
         .q(knq$93$q),
         .clock(knq$93$clock)
     );
-    fcc_sort_net__knq__94 knq$94(
+    fcc_sort_net__knq__94_k7_668cf05b knq$94(
         .d(knq$94$d),
         .q(knq$94$q),
         .clock(knq$94$clock)
     );
-    fcc_sort_net__knq__95 knq$95(
+    fcc_sort_net__knq__95_k7_668cf05b knq$95(
         .d(knq$95$d),
         .q(knq$95$q),
         .clock(knq$95$clock)
     );
-    fcc_sort_net__knq__96 knq$96(
+    fcc_sort_net__knq__96_k7_668cf05b knq$96(
         .d(knq$96$d),
         .q(knq$96$q),
         .clock(knq$96$clock)
     );
-    fcc_sort_net__knq__97 knq$97(
+    fcc_sort_net__knq__97_k7_668cf05b knq$97(
         .d(knq$97$d),
         .q(knq$97$q),
         .clock(knq$97$clock)
     );
-    fcc_sort_net__knq__98 knq$98(
+    fcc_sort_net__knq__98_k7_668cf05b knq$98(
         .d(knq$98$d),
         .q(knq$98$q),
         .clock(knq$98$clock)
     );
-    fcc_sort_net__knq__99 knq$99(
+    fcc_sort_net__knq__99_k7_668cf05b knq$99(
         .d(knq$99$d),
         .q(knq$99$q),
         .clock(knq$99$clock)
     );
-    fcc_sort_net__knq__100 knq$100(
+    fcc_sort_net__knq__100_k7_668cf05b knq$100(
         .d(knq$100$d),
         .q(knq$100$q),
         .clock(knq$100$clock)
     );
-    fcc_sort_net__knq__101 knq$101(
+    fcc_sort_net__knq__101_k7_668cf05b knq$101(
         .d(knq$101$d),
         .q(knq$101$q),
         .clock(knq$101$clock)
     );
-    fcc_sort_net__knq__102 knq$102(
+    fcc_sort_net__knq__102_k7_668cf05b knq$102(
         .d(knq$102$d),
         .q(knq$102$q),
         .clock(knq$102$clock)
     );
-    fcc_sort_net__knq__103 knq$103(
+    fcc_sort_net__knq__103_k7_668cf05b knq$103(
         .d(knq$103$d),
         .q(knq$103$q),
         .clock(knq$103$clock)
     );
-    fcc_sort_net__knq__104 knq$104(
+    fcc_sort_net__knq__104_k7_668cf05b knq$104(
         .d(knq$104$d),
         .q(knq$104$q),
         .clock(knq$104$clock)
     );
-    fcc_sort_net__knq__105 knq$105(
+    fcc_sort_net__knq__105_k7_668cf05b knq$105(
         .d(knq$105$d),
         .q(knq$105$q),
         .clock(knq$105$clock)
     );
-    fcc_sort_net__knq__106 knq$106(
+    fcc_sort_net__knq__106_k7_668cf05b knq$106(
         .d(knq$106$d),
         .q(knq$106$q),
         .clock(knq$106$clock)
     );
-    fcc_sort_net__knq__107 knq$107(
+    fcc_sort_net__knq__107_k7_668cf05b knq$107(
         .d(knq$107$d),
         .q(knq$107$q),
         .clock(knq$107$clock)
     );
-    fcc_sort_net__knq__108 knq$108(
+    fcc_sort_net__knq__108_k7_668cf05b knq$108(
         .d(knq$108$d),
         .q(knq$108$q),
         .clock(knq$108$clock)
     );
-    fcc_sort_net__knq__109 knq$109(
+    fcc_sort_net__knq__109_k7_668cf05b knq$109(
         .d(knq$109$d),
         .q(knq$109$q),
         .clock(knq$109$clock)
     );
-    fcc_sort_net__knq__110 knq$110(
+    fcc_sort_net__knq__110_k7_668cf05b knq$110(
         .d(knq$110$d),
         .q(knq$110$q),
         .clock(knq$110$clock)
     );
-    fcc_sort_net__knq__111 knq$111(
+    fcc_sort_net__knq__111_k7_668cf05b knq$111(
         .d(knq$111$d),
         .q(knq$111$q),
         .clock(knq$111$clock)
     );
-    fcc_sort_net__knq__112 knq$112(
+    fcc_sort_net__knq__112_k7_668cf05b knq$112(
         .d(knq$112$d),
         .q(knq$112$q),
         .clock(knq$112$clock)
     );
-    fcc_sort_net__knq__113 knq$113(
+    fcc_sort_net__knq__113_k7_668cf05b knq$113(
         .d(knq$113$d),
         .q(knq$113$q),
         .clock(knq$113$clock)
     );
-    fcc_sort_net__knq__114 knq$114(
+    fcc_sort_net__knq__114_k7_668cf05b knq$114(
         .d(knq$114$d),
         .q(knq$114$q),
         .clock(knq$114$clock)
     );
-    fcc_sort_net__knq__115 knq$115(
+    fcc_sort_net__knq__115_k7_668cf05b knq$115(
         .d(knq$115$d),
         .q(knq$115$q),
         .clock(knq$115$clock)
     );
-    fcc_sort_net__knq__116 knq$116(
+    fcc_sort_net__knq__116_k7_668cf05b knq$116(
         .d(knq$116$d),
         .q(knq$116$q),
         .clock(knq$116$clock)
     );
-    fcc_sort_net__knq__117 knq$117(
+    fcc_sort_net__knq__117_k7_668cf05b knq$117(
         .d(knq$117$d),
         .q(knq$117$q),
         .clock(knq$117$clock)
     );
-    fcc_sort_net__knq__118 knq$118(
+    fcc_sort_net__knq__118_k7_668cf05b knq$118(
         .d(knq$118$d),
         .q(knq$118$q),
         .clock(knq$118$clock)
     );
-    fcc_sort_net__knq__119 knq$119(
+    fcc_sort_net__knq__119_k7_668cf05b knq$119(
         .d(knq$119$d),
         .q(knq$119$q),
         .clock(knq$119$clock)
     );
-    fcc_sort_net__knq__120 knq$120(
+    fcc_sort_net__knq__120_k7_668cf05b knq$120(
         .d(knq$120$d),
         .q(knq$120$q),
         .clock(knq$120$clock)
     );
-    fcc_sort_net__knq__121 knq$121(
+    fcc_sort_net__knq__121_k7_668cf05b knq$121(
         .d(knq$121$d),
         .q(knq$121$q),
         .clock(knq$121$clock)
     );
-    fcc_sort_net__knq__122 knq$122(
+    fcc_sort_net__knq__122_k7_668cf05b knq$122(
         .d(knq$122$d),
         .q(knq$122$q),
         .clock(knq$122$clock)
     );
-    fcc_sort_net__knq__123 knq$123(
+    fcc_sort_net__knq__123_k7_668cf05b knq$123(
         .d(knq$123$d),
         .q(knq$123$q),
         .clock(knq$123$clock)
     );
-    fcc_sort_net__knq__124 knq$124(
+    fcc_sort_net__knq__124_k7_668cf05b knq$124(
         .d(knq$124$d),
         .q(knq$124$q),
         .clock(knq$124$clock)
     );
-    fcc_sort_net__knq__125 knq$125(
+    fcc_sort_net__knq__125_k7_668cf05b knq$125(
         .d(knq$125$d),
         .q(knq$125$q),
         .clock(knq$125$clock)
     );
-    fcc_sort_net__tn__0 tn$0(
+    fcc_sort_net__tn__0_k7_668cf05b tn$0(
         .d(tn$0$d),
         .q(tn$0$q),
         .clock(tn$0$clock)
     );
-    fcc_sort_net__tn__1 tn$1(
+    fcc_sort_net__tn__1_k7_668cf05b tn$1(
         .d(tn$1$d),
         .q(tn$1$q),
         .clock(tn$1$clock)
     );
-    fcc_sort_net__tn__2 tn$2(
+    fcc_sort_net__tn__2_k7_668cf05b tn$2(
         .d(tn$2$d),
         .q(tn$2$q),
         .clock(tn$2$clock)
     );
-    fcc_sort_net__tn__3 tn$3(
+    fcc_sort_net__tn__3_k7_668cf05b tn$3(
         .d(tn$3$d),
         .q(tn$3$q),
         .clock(tn$3$clock)
     );
-    fcc_sort_net__tn__4 tn$4(
+    fcc_sort_net__tn__4_k7_668cf05b tn$4(
         .d(tn$4$d),
         .q(tn$4$q),
         .clock(tn$4$clock)
     );
-    fcc_sort_net__tn__5 tn$5(
+    fcc_sort_net__tn__5_k7_668cf05b tn$5(
         .d(tn$5$d),
         .q(tn$5$q),
         .clock(tn$5$clock)
     );
-    fcc_sort_net__tn__6 tn$6(
+    fcc_sort_net__tn__6_k7_668cf05b tn$6(
         .d(tn$6$d),
         .q(tn$6$q),
         .clock(tn$6$clock)
     );
-    fcc_sort_net__tn__7 tn$7(
+    fcc_sort_net__tn__7_k7_668cf05b tn$7(
         .d(tn$7$d),
         .q(tn$7$q),
         .clock(tn$7$clock)
     );
-    fcc_sort_net__tn__8 tn$8(
+    fcc_sort_net__tn__8_k7_668cf05b tn$8(
         .d(tn$8$d),
         .q(tn$8$q),
         .clock(tn$8$clock)
     );
-    fcc_sort_net__tn__9 tn$9(
+    fcc_sort_net__tn__9_k7_668cf05b tn$9(
         .d(tn$9$d),
         .q(tn$9$q),
         .clock(tn$9$clock)
     );
-    fcc_sort_net__tn__10 tn$10(
+    fcc_sort_net__tn__10_k7_668cf05b tn$10(
         .d(tn$10$d),
         .q(tn$10$q),
         .clock(tn$10$clock)
     );
-    fcc_sort_net__tn__11 tn$11(
+    fcc_sort_net__tn__11_k7_668cf05b tn$11(
         .d(tn$11$d),
         .q(tn$11$q),
         .clock(tn$11$clock)
     );
-    fcc_sort_net__tn__12 tn$12(
+    fcc_sort_net__tn__12_k7_668cf05b tn$12(
         .d(tn$12$d),
         .q(tn$12$q),
         .clock(tn$12$clock)
     );
-    fcc_sort_net__tn__13 tn$13(
+    fcc_sort_net__tn__13_k7_668cf05b tn$13(
         .d(tn$13$d),
         .q(tn$13$q),
         .clock(tn$13$clock)
     );
-    fcc_sort_net__tn__14 tn$14(
+    fcc_sort_net__tn__14_k7_668cf05b tn$14(
         .d(tn$14$d),
         .q(tn$14$q),
         .clock(tn$14$clock)
     );
-    fcc_sort_net__tn__15 tn$15(
+    fcc_sort_net__tn__15_k7_668cf05b tn$15(
         .d(tn$15$d),
         .q(tn$15$q),
         .clock(tn$15$clock)
     );
-    fcc_sort_net__tn__16 tn$16(
+    fcc_sort_net__tn__16_k7_668cf05b tn$16(
         .d(tn$16$d),
         .q(tn$16$q),
         .clock(tn$16$clock)
     );
-    fcc_sort_net__tn__17 tn$17(
+    fcc_sort_net__tn__17_k7_668cf05b tn$17(
         .d(tn$17$d),
         .q(tn$17$q),
         .clock(tn$17$clock)
     );
-    fcc_sort_net__tn__18 tn$18(
+    fcc_sort_net__tn__18_k7_668cf05b tn$18(
         .d(tn$18$d),
         .q(tn$18$q),
         .clock(tn$18$clock)
     );
-    fcc_sort_net__tn__19 tn$19(
+    fcc_sort_net__tn__19_k7_668cf05b tn$19(
         .d(tn$19$d),
         .q(tn$19$q),
         .clock(tn$19$clock)
     );
-    fcc_sort_net__tn__20 tn$20(
+    fcc_sort_net__tn__20_k7_668cf05b tn$20(
         .d(tn$20$d),
         .q(tn$20$q),
         .clock(tn$20$clock)
     );
-    fcc_sort_net__tn__21 tn$21(
+    fcc_sort_net__tn__21_k7_668cf05b tn$21(
         .d(tn$21$d),
         .q(tn$21$q),
         .clock(tn$21$clock)
     );
-    fcc_sort_net__tn__22 tn$22(
+    fcc_sort_net__tn__22_k7_668cf05b tn$22(
         .d(tn$22$d),
         .q(tn$22$q),
         .clock(tn$22$clock)
     );
-    fcc_sort_net__tn__23 tn$23(
+    fcc_sort_net__tn__23_k7_668cf05b tn$23(
         .d(tn$23$d),
         .q(tn$23$q),
         .clock(tn$23$clock)
     );
-    fcc_sort_net__tn__24 tn$24(
+    fcc_sort_net__tn__24_k7_668cf05b tn$24(
         .d(tn$24$d),
         .q(tn$24$q),
         .clock(tn$24$clock)
     );
-    fcc_sort_net__tn__25 tn$25(
+    fcc_sort_net__tn__25_k7_668cf05b tn$25(
         .d(tn$25$d),
         .q(tn$25$q),
         .clock(tn$25$clock)
     );
-    fcc_sort_net__tn__26 tn$26(
+    fcc_sort_net__tn__26_k7_668cf05b tn$26(
         .d(tn$26$d),
         .q(tn$26$q),
         .clock(tn$26$clock)
     );
-    fcc_sort_net__tn__27 tn$27(
+    fcc_sort_net__tn__27_k7_668cf05b tn$27(
         .d(tn$27$d),
         .q(tn$27$q),
         .clock(tn$27$clock)
     );
-    fcc_sort_net__tn__28 tn$28(
+    fcc_sort_net__tn__28_k7_668cf05b tn$28(
         .d(tn$28$d),
         .q(tn$28$q),
         .clock(tn$28$clock)
     );
-    fcc_sort_net__tn__29 tn$29(
+    fcc_sort_net__tn__29_k7_668cf05b tn$29(
         .d(tn$29$d),
         .q(tn$29$q),
         .clock(tn$29$clock)
     );
-    fcc_sort_net__tn__30 tn$30(
+    fcc_sort_net__tn__30_k7_668cf05b tn$30(
         .d(tn$30$d),
         .q(tn$30$q),
         .clock(tn$30$clock)
     );
-    fcc_sort_net__tn__31 tn$31(
+    fcc_sort_net__tn__31_k7_668cf05b tn$31(
         .d(tn$31$d),
         .q(tn$31$q),
         .clock(tn$31$clock)
     );
-    fcc_sort_net__tn__32 tn$32(
+    fcc_sort_net__tn__32_k7_668cf05b tn$32(
         .d(tn$32$d),
         .q(tn$32$q),
         .clock(tn$32$clock)
     );
-    fcc_sort_net__tn__33 tn$33(
+    fcc_sort_net__tn__33_k7_668cf05b tn$33(
         .d(tn$33$d),
         .q(tn$33$q),
         .clock(tn$33$clock)
     );
-    fcc_sort_net__tn__34 tn$34(
+    fcc_sort_net__tn__34_k7_668cf05b tn$34(
         .d(tn$34$d),
         .q(tn$34$q),
         .clock(tn$34$clock)
     );
-    fcc_sort_net__tn__35 tn$35(
+    fcc_sort_net__tn__35_k7_668cf05b tn$35(
         .d(tn$35$d),
         .q(tn$35$q),
         .clock(tn$35$clock)
     );
-    fcc_sort_net__tn__36 tn$36(
+    fcc_sort_net__tn__36_k7_668cf05b tn$36(
         .d(tn$36$d),
         .q(tn$36$q),
         .clock(tn$36$clock)
     );
-    fcc_sort_net__tn__37 tn$37(
+    fcc_sort_net__tn__37_k7_668cf05b tn$37(
         .d(tn$37$d),
         .q(tn$37$q),
         .clock(tn$37$clock)
     );
-    fcc_sort_net__tn__38 tn$38(
+    fcc_sort_net__tn__38_k7_668cf05b tn$38(
         .d(tn$38$d),
         .q(tn$38$q),
         .clock(tn$38$clock)
     );
-    fcc_sort_net__tn__39 tn$39(
+    fcc_sort_net__tn__39_k7_668cf05b tn$39(
         .d(tn$39$d),
         .q(tn$39$q),
         .clock(tn$39$clock)
     );
-    fcc_sort_net__tn__40 tn$40(
+    fcc_sort_net__tn__40_k7_668cf05b tn$40(
         .d(tn$40$d),
         .q(tn$40$q),
         .clock(tn$40$clock)
     );
-    fcc_sort_net__tn__41 tn$41(
+    fcc_sort_net__tn__41_k7_668cf05b tn$41(
         .d(tn$41$d),
         .q(tn$41$q),
         .clock(tn$41$clock)
     );
-    fcc_sort_net__tn__42 tn$42(
+    fcc_sort_net__tn__42_k7_668cf05b tn$42(
         .d(tn$42$d),
         .q(tn$42$q),
         .clock(tn$42$clock)
     );
-    fcc_sort_net__tn__43 tn$43(
+    fcc_sort_net__tn__43_k7_668cf05b tn$43(
         .d(tn$43$d),
         .q(tn$43$q),
         .clock(tn$43$clock)
     );
-    fcc_sort_net__tn__44 tn$44(
+    fcc_sort_net__tn__44_k7_668cf05b tn$44(
         .d(tn$44$d),
         .q(tn$44$q),
         .clock(tn$44$clock)
     );
-    fcc_sort_net__tn__45 tn$45(
+    fcc_sort_net__tn__45_k7_668cf05b tn$45(
         .d(tn$45$d),
         .q(tn$45$q),
         .clock(tn$45$clock)
     );
-    fcc_sort_net__tn__46 tn$46(
+    fcc_sort_net__tn__46_k7_668cf05b tn$46(
         .d(tn$46$d),
         .q(tn$46$q),
         .clock(tn$46$clock)
     );
-    fcc_sort_net__tn__47 tn$47(
+    fcc_sort_net__tn__47_k7_668cf05b tn$47(
         .d(tn$47$d),
         .q(tn$47$q),
         .clock(tn$47$clock)
     );
-    fcc_sort_net__tn__48 tn$48(
+    fcc_sort_net__tn__48_k7_668cf05b tn$48(
         .d(tn$48$d),
         .q(tn$48$q),
         .clock(tn$48$clock)
     );
-    fcc_sort_net__tn__49 tn$49(
+    fcc_sort_net__tn__49_k7_668cf05b tn$49(
         .d(tn$49$d),
         .q(tn$49$q),
         .clock(tn$49$clock)
     );
-    fcc_sort_net__tn__50 tn$50(
+    fcc_sort_net__tn__50_k7_668cf05b tn$50(
         .d(tn$50$d),
         .q(tn$50$q),
         .clock(tn$50$clock)
     );
-    fcc_sort_net__tn__51 tn$51(
+    fcc_sort_net__tn__51_k7_668cf05b tn$51(
         .d(tn$51$d),
         .q(tn$51$q),
         .clock(tn$51$clock)
     );
-    fcc_sort_net__tn__52 tn$52(
+    fcc_sort_net__tn__52_k7_668cf05b tn$52(
         .d(tn$52$d),
         .q(tn$52$q),
         .clock(tn$52$clock)
     );
-    fcc_sort_net__tn__53 tn$53(
+    fcc_sort_net__tn__53_k7_668cf05b tn$53(
         .d(tn$53$d),
         .q(tn$53$q),
         .clock(tn$53$clock)
     );
-    fcc_sort_net__tn__54 tn$54(
+    fcc_sort_net__tn__54_k7_668cf05b tn$54(
         .d(tn$54$d),
         .q(tn$54$q),
         .clock(tn$54$clock)
     );
-    fcc_sort_net__tn__55 tn$55(
+    fcc_sort_net__tn__55_k7_668cf05b tn$55(
         .d(tn$55$d),
         .q(tn$55$q),
         .clock(tn$55$clock)
     );
-    fcc_sort_net__tn__56 tn$56(
+    fcc_sort_net__tn__56_k7_668cf05b tn$56(
         .d(tn$56$d),
         .q(tn$56$q),
         .clock(tn$56$clock)
     );
-    fcc_sort_net__tn__57 tn$57(
+    fcc_sort_net__tn__57_k7_668cf05b tn$57(
         .d(tn$57$d),
         .q(tn$57$q),
         .clock(tn$57$clock)
     );
-    fcc_sort_net__tn__58 tn$58(
+    fcc_sort_net__tn__58_k7_668cf05b tn$58(
         .d(tn$58$d),
         .q(tn$58$q),
         .clock(tn$58$clock)
     );
-    fcc_sort_net__tn__59 tn$59(
+    fcc_sort_net__tn__59_k7_668cf05b tn$59(
         .d(tn$59$d),
         .q(tn$59$q),
         .clock(tn$59$clock)
     );
-    fcc_sort_net__tn__60 tn$60(
+    fcc_sort_net__tn__60_k7_668cf05b tn$60(
         .d(tn$60$d),
         .q(tn$60$q),
         .clock(tn$60$clock)
     );
-    fcc_sort_net__tn__61 tn$61(
+    fcc_sort_net__tn__61_k7_668cf05b tn$61(
         .d(tn$61$d),
         .q(tn$61$q),
         .clock(tn$61$clock)
     );
-    fcc_sort_net__tn__62 tn$62(
+    fcc_sort_net__tn__62_k7_668cf05b tn$62(
         .d(tn$62$d),
         .q(tn$62$q),
         .clock(tn$62$clock)
     );
-    fcc_sort_net__rep_c rep_c(
+    fcc_sort_net__rep_c_k7_668cf05b rep_c(
         .d(rep_c$d),
         .q(rep_c$q),
         .clock(rep_c$clock)
     );
-    fcc_sort_net__rcq rcq(
+    fcc_sort_net__rcq_k7_668cf05b rcq(
         .d(rcq$d),
         .q(rcq$q),
         .clock(rcq$clock)
     );
-    fcc_sort_net__rcq2 rcq2(
+    fcc_sort_net__rcq2_k7_668cf05b rcq2(
         .d(rcq2$d),
         .q(rcq2$q),
         .clock(rcq2$clock)
     );
-    fcc_sort_net__wr_en wr_en(
+    fcc_sort_net__wr_en_k7_668cf05b wr_en(
         .d(wr_en$d),
         .q(wr_en$q),
         .clock(wr_en$clock)
     );
-    fcc_sort_net__wr_addr wr_addr(
+    fcc_sort_net__wr_addr_k7_668cf05b wr_addr(
         .d(wr_addr$d),
         .q(wr_addr$q),
         .clock(wr_addr$clock)
     );
-    fcc_sort_net__wr_data wr_data(
+    fcc_sort_net__wr_data_k7_668cf05b wr_data(
         .d(wr_data$d),
         .q(wr_data$q),
         .clock(wr_data$clock)
     );
-    fcc_sort_net__eqm__0 eqm$0(
+    fcc_sort_net__eqm__0_k7_668cf05b eqm$0(
         .d(eqm$0$d),
         .q(eqm$0$q),
         .clock(eqm$0$clock)
     );
-    fcc_sort_net__eqm__1 eqm$1(
+    fcc_sort_net__eqm__1_k7_668cf05b eqm$1(
         .d(eqm$1$d),
         .q(eqm$1$q),
         .clock(eqm$1$clock)
     );
-    fcc_sort_net__eqm__2 eqm$2(
+    fcc_sort_net__eqm__2_k7_668cf05b eqm$2(
         .d(eqm$2$d),
         .q(eqm$2$q),
         .clock(eqm$2$clock)
     );
-    fcc_sort_net__eqm__3 eqm$3(
+    fcc_sort_net__eqm__3_k7_668cf05b eqm$3(
         .d(eqm$3$d),
         .q(eqm$3$q),
         .clock(eqm$3$clock)
     );
-    fcc_sort_net__eqm__4 eqm$4(
+    fcc_sort_net__eqm__4_k7_668cf05b eqm$4(
         .d(eqm$4$d),
         .q(eqm$4$q),
         .clock(eqm$4$clock)
     );
-    fcc_sort_net__eqm__5 eqm$5(
+    fcc_sort_net__eqm__5_k7_668cf05b eqm$5(
         .d(eqm$5$d),
         .q(eqm$5$q),
         .clock(eqm$5$clock)
     );
-    fcc_sort_net__eqm__6 eqm$6(
+    fcc_sort_net__eqm__6_k7_668cf05b eqm$6(
         .d(eqm$6$d),
         .q(eqm$6$q),
         .clock(eqm$6$clock)
     );
-    fcc_sort_net__eqm__7 eqm$7(
+    fcc_sort_net__eqm__7_k7_668cf05b eqm$7(
         .d(eqm$7$d),
         .q(eqm$7$q),
         .clock(eqm$7$clock)
     );
-    fcc_sort_net__eqm__8 eqm$8(
+    fcc_sort_net__eqm__8_k7_668cf05b eqm$8(
         .d(eqm$8$d),
         .q(eqm$8$q),
         .clock(eqm$8$clock)
     );
-    fcc_sort_net__eqm__9 eqm$9(
+    fcc_sort_net__eqm__9_k7_668cf05b eqm$9(
         .d(eqm$9$d),
         .q(eqm$9$q),
         .clock(eqm$9$clock)
     );
-    fcc_sort_net__eqm__10 eqm$10(
+    fcc_sort_net__eqm__10_k7_668cf05b eqm$10(
         .d(eqm$10$d),
         .q(eqm$10$q),
         .clock(eqm$10$clock)
     );
-    fcc_sort_net__eqm__11 eqm$11(
+    fcc_sort_net__eqm__11_k7_668cf05b eqm$11(
         .d(eqm$11$d),
         .q(eqm$11$q),
         .clock(eqm$11$clock)
     );
-    fcc_sort_net__eqm__12 eqm$12(
+    fcc_sort_net__eqm__12_k7_668cf05b eqm$12(
         .d(eqm$12$d),
         .q(eqm$12$q),
         .clock(eqm$12$clock)
     );
-    fcc_sort_net__eqm__13 eqm$13(
+    fcc_sort_net__eqm__13_k7_668cf05b eqm$13(
         .d(eqm$13$d),
         .q(eqm$13$q),
         .clock(eqm$13$clock)
     );
-    fcc_sort_net__eqm__14 eqm$14(
+    fcc_sort_net__eqm__14_k7_668cf05b eqm$14(
         .d(eqm$14$d),
         .q(eqm$14$q),
         .clock(eqm$14$clock)
     );
-    fcc_sort_net__eqm__15 eqm$15(
+    fcc_sort_net__eqm__15_k7_668cf05b eqm$15(
         .d(eqm$15$d),
         .q(eqm$15$q),
         .clock(eqm$15$clock)
     );
-    fcc_sort_net__eqm__16 eqm$16(
+    fcc_sort_net__eqm__16_k7_668cf05b eqm$16(
         .d(eqm$16$d),
         .q(eqm$16$q),
         .clock(eqm$16$clock)
     );
-    fcc_sort_net__eqm__17 eqm$17(
+    fcc_sort_net__eqm__17_k7_668cf05b eqm$17(
         .d(eqm$17$d),
         .q(eqm$17$q),
         .clock(eqm$17$clock)
     );
-    fcc_sort_net__eqm__18 eqm$18(
+    fcc_sort_net__eqm__18_k7_668cf05b eqm$18(
         .d(eqm$18$d),
         .q(eqm$18$q),
         .clock(eqm$18$clock)
     );
-    fcc_sort_net__eqm__19 eqm$19(
+    fcc_sort_net__eqm__19_k7_668cf05b eqm$19(
         .d(eqm$19$d),
         .q(eqm$19$q),
         .clock(eqm$19$clock)
     );
-    fcc_sort_net__eqm__20 eqm$20(
+    fcc_sort_net__eqm__20_k7_668cf05b eqm$20(
         .d(eqm$20$d),
         .q(eqm$20$q),
         .clock(eqm$20$clock)
     );
-    fcc_sort_net__eqrc__0 eqrc$0(
+    fcc_sort_net__eqrc__0_k7_668cf05b eqrc$0(
         .d(eqrc$0$d),
         .q(eqrc$0$q),
         .clock(eqrc$0$clock)
     );
-    fcc_sort_net__eqrc__1 eqrc$1(
+    fcc_sort_net__eqrc__1_k7_668cf05b eqrc$1(
         .d(eqrc$1$d),
         .q(eqrc$1$q),
         .clock(eqrc$1$clock)
     );
-    fcc_sort_net__eqrc__2 eqrc$2(
+    fcc_sort_net__eqrc__2_k7_668cf05b eqrc$2(
         .d(eqrc$2$d),
         .q(eqrc$2$q),
         .clock(eqrc$2$clock)
     );
-    fcc_sort_net__eqrc__3 eqrc$3(
+    fcc_sort_net__eqrc__3_k7_668cf05b eqrc$3(
         .d(eqrc$3$d),
         .q(eqrc$3$q),
         .clock(eqrc$3$clock)
     );
-    fcc_sort_net__eqrc__4 eqrc$4(
+    fcc_sort_net__eqrc__4_k7_668cf05b eqrc$4(
         .d(eqrc$4$d),
         .q(eqrc$4$q),
         .clock(eqrc$4$clock)
     );
-    fcc_sort_net__eqrc__5 eqrc$5(
+    fcc_sort_net__eqrc__5_k7_668cf05b eqrc$5(
         .d(eqrc$5$d),
         .q(eqrc$5$q),
         .clock(eqrc$5$clock)
     );
-    fcc_sort_net__eqrc__6 eqrc$6(
+    fcc_sort_net__eqrc__6_k7_668cf05b eqrc$6(
         .d(eqrc$6$d),
         .q(eqrc$6$q),
         .clock(eqrc$6$clock)
     );
-    fcc_sort_net__eqrc__7 eqrc$7(
+    fcc_sort_net__eqrc__7_k7_668cf05b eqrc$7(
         .d(eqrc$7$d),
         .q(eqrc$7$q),
         .clock(eqrc$7$clock)
     );
-    fcc_sort_net__eqrc__8 eqrc$8(
+    fcc_sort_net__eqrc__8_k7_668cf05b eqrc$8(
         .d(eqrc$8$d),
         .q(eqrc$8$q),
         .clock(eqrc$8$clock)
     );
-    fcc_sort_net__eqrc__9 eqrc$9(
+    fcc_sort_net__eqrc__9_k7_668cf05b eqrc$9(
         .d(eqrc$9$d),
         .q(eqrc$9$q),
         .clock(eqrc$9$clock)
     );
-    fcc_sort_net__eqrc__10 eqrc$10(
+    fcc_sort_net__eqrc__10_k7_668cf05b eqrc$10(
         .d(eqrc$10$d),
         .q(eqrc$10$q),
         .clock(eqrc$10$clock)
     );
-    fcc_sort_net__eqrc__11 eqrc$11(
+    fcc_sort_net__eqrc__11_k7_668cf05b eqrc$11(
         .d(eqrc$11$d),
         .q(eqrc$11$q),
         .clock(eqrc$11$clock)
     );
-    fcc_sort_net__eqrc__12 eqrc$12(
+    fcc_sort_net__eqrc__12_k7_668cf05b eqrc$12(
         .d(eqrc$12$d),
         .q(eqrc$12$q),
         .clock(eqrc$12$clock)
     );
-    fcc_sort_net__eqrc__13 eqrc$13(
+    fcc_sort_net__eqrc__13_k7_668cf05b eqrc$13(
         .d(eqrc$13$d),
         .q(eqrc$13$q),
         .clock(eqrc$13$clock)
     );
-    fcc_sort_net__eqrc__14 eqrc$14(
+    fcc_sort_net__eqrc__14_k7_668cf05b eqrc$14(
         .d(eqrc$14$d),
         .q(eqrc$14$q),
         .clock(eqrc$14$clock)
     );
-    fcc_sort_net__eqrc__15 eqrc$15(
+    fcc_sort_net__eqrc__15_k7_668cf05b eqrc$15(
         .d(eqrc$15$d),
         .q(eqrc$15$q),
         .clock(eqrc$15$clock)
     );
-    fcc_sort_net__eqrc__16 eqrc$16(
+    fcc_sort_net__eqrc__16_k7_668cf05b eqrc$16(
         .d(eqrc$16$d),
         .q(eqrc$16$q),
         .clock(eqrc$16$clock)
     );
-    fcc_sort_net__eqrc__17 eqrc$17(
+    fcc_sort_net__eqrc__17_k7_668cf05b eqrc$17(
         .d(eqrc$17$d),
         .q(eqrc$17$q),
         .clock(eqrc$17$clock)
     );
-    fcc_sort_net__eqrc__18 eqrc$18(
+    fcc_sort_net__eqrc__18_k7_668cf05b eqrc$18(
         .d(eqrc$18$d),
         .q(eqrc$18$q),
         .clock(eqrc$18$clock)
     );
-    fcc_sort_net__eqrc__19 eqrc$19(
+    fcc_sort_net__eqrc__19_k7_668cf05b eqrc$19(
         .d(eqrc$19$d),
         .q(eqrc$19$q),
         .clock(eqrc$19$clock)
     );
-    fcc_sort_net__eqrc__20 eqrc$20(
+    fcc_sort_net__eqrc__20_k7_668cf05b eqrc$20(
         .d(eqrc$20$d),
         .q(eqrc$20$q),
         .clock(eqrc$20$clock)
     );
-    fcc_sort_net__qp qp(
+    fcc_sort_net__qp_k7_668cf05b qp(
         .x$0(qp$x$0),
         .x$1(qp$x$1),
         .x$2(qp$x$2),
@@ -20802,217 +19514,217 @@ module fcc_sort_net(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit
         .pre$19(qp$pre$19),
         .pre$20(qp$pre$20)
     );
-    fcc_sort_net__keepq__0 keepq$0(
+    fcc_sort_net__keepq__0_k7_668cf05b keepq$0(
         .d(keepq$0$d),
         .q(keepq$0$q),
         .clock(keepq$0$clock)
     );
-    fcc_sort_net__keepq__1 keepq$1(
+    fcc_sort_net__keepq__1_k7_668cf05b keepq$1(
         .d(keepq$1$d),
         .q(keepq$1$q),
         .clock(keepq$1$clock)
     );
-    fcc_sort_net__keepq__2 keepq$2(
+    fcc_sort_net__keepq__2_k7_668cf05b keepq$2(
         .d(keepq$2$d),
         .q(keepq$2$q),
         .clock(keepq$2$clock)
     );
-    fcc_sort_net__keepq__3 keepq$3(
+    fcc_sort_net__keepq__3_k7_668cf05b keepq$3(
         .d(keepq$3$d),
         .q(keepq$3$q),
         .clock(keepq$3$clock)
     );
-    fcc_sort_net__keepq__4 keepq$4(
+    fcc_sort_net__keepq__4_k7_668cf05b keepq$4(
         .d(keepq$4$d),
         .q(keepq$4$q),
         .clock(keepq$4$clock)
     );
-    fcc_sort_net__keepq__5 keepq$5(
+    fcc_sort_net__keepq__5_k7_668cf05b keepq$5(
         .d(keepq$5$d),
         .q(keepq$5$q),
         .clock(keepq$5$clock)
     );
-    fcc_sort_net__keepq__6 keepq$6(
+    fcc_sort_net__keepq__6_k7_668cf05b keepq$6(
         .d(keepq$6$d),
         .q(keepq$6$q),
         .clock(keepq$6$clock)
     );
-    fcc_sort_net__keepq__7 keepq$7(
+    fcc_sort_net__keepq__7_k7_668cf05b keepq$7(
         .d(keepq$7$d),
         .q(keepq$7$q),
         .clock(keepq$7$clock)
     );
-    fcc_sort_net__keepq__8 keepq$8(
+    fcc_sort_net__keepq__8_k7_668cf05b keepq$8(
         .d(keepq$8$d),
         .q(keepq$8$q),
         .clock(keepq$8$clock)
     );
-    fcc_sort_net__keepq__9 keepq$9(
+    fcc_sort_net__keepq__9_k7_668cf05b keepq$9(
         .d(keepq$9$d),
         .q(keepq$9$q),
         .clock(keepq$9$clock)
     );
-    fcc_sort_net__keepq__10 keepq$10(
+    fcc_sort_net__keepq__10_k7_668cf05b keepq$10(
         .d(keepq$10$d),
         .q(keepq$10$q),
         .clock(keepq$10$clock)
     );
-    fcc_sort_net__keepq__11 keepq$11(
+    fcc_sort_net__keepq__11_k7_668cf05b keepq$11(
         .d(keepq$11$d),
         .q(keepq$11$q),
         .clock(keepq$11$clock)
     );
-    fcc_sort_net__keepq__12 keepq$12(
+    fcc_sort_net__keepq__12_k7_668cf05b keepq$12(
         .d(keepq$12$d),
         .q(keepq$12$q),
         .clock(keepq$12$clock)
     );
-    fcc_sort_net__keepq__13 keepq$13(
+    fcc_sort_net__keepq__13_k7_668cf05b keepq$13(
         .d(keepq$13$d),
         .q(keepq$13$q),
         .clock(keepq$13$clock)
     );
-    fcc_sort_net__keepq__14 keepq$14(
+    fcc_sort_net__keepq__14_k7_668cf05b keepq$14(
         .d(keepq$14$d),
         .q(keepq$14$q),
         .clock(keepq$14$clock)
     );
-    fcc_sort_net__keepq__15 keepq$15(
+    fcc_sort_net__keepq__15_k7_668cf05b keepq$15(
         .d(keepq$15$d),
         .q(keepq$15$q),
         .clock(keepq$15$clock)
     );
-    fcc_sort_net__keepq__16 keepq$16(
+    fcc_sort_net__keepq__16_k7_668cf05b keepq$16(
         .d(keepq$16$d),
         .q(keepq$16$q),
         .clock(keepq$16$clock)
     );
-    fcc_sort_net__keepq__17 keepq$17(
+    fcc_sort_net__keepq__17_k7_668cf05b keepq$17(
         .d(keepq$17$d),
         .q(keepq$17$q),
         .clock(keepq$17$clock)
     );
-    fcc_sort_net__keepq__18 keepq$18(
+    fcc_sort_net__keepq__18_k7_668cf05b keepq$18(
         .d(keepq$18$d),
         .q(keepq$18$q),
         .clock(keepq$18$clock)
     );
-    fcc_sort_net__keepq__19 keepq$19(
+    fcc_sort_net__keepq__19_k7_668cf05b keepq$19(
         .d(keepq$19$d),
         .q(keepq$19$q),
         .clock(keepq$19$clock)
     );
-    fcc_sort_net__keepq__20 keepq$20(
+    fcc_sort_net__keepq__20_k7_668cf05b keepq$20(
         .d(keepq$20$d),
         .q(keepq$20$q),
         .clock(keepq$20$clock)
     );
-    fcc_sort_net__kd__0 kd$0(
+    fcc_sort_net__kd__0_k7_668cf05b kd$0(
         .d(kd$0$d),
         .q(kd$0$q),
         .clock(kd$0$clock)
     );
-    fcc_sort_net__kd__1 kd$1(
+    fcc_sort_net__kd__1_k7_668cf05b kd$1(
         .d(kd$1$d),
         .q(kd$1$q),
         .clock(kd$1$clock)
     );
-    fcc_sort_net__kd__2 kd$2(
+    fcc_sort_net__kd__2_k7_668cf05b kd$2(
         .d(kd$2$d),
         .q(kd$2$q),
         .clock(kd$2$clock)
     );
-    fcc_sort_net__kd__3 kd$3(
+    fcc_sort_net__kd__3_k7_668cf05b kd$3(
         .d(kd$3$d),
         .q(kd$3$q),
         .clock(kd$3$clock)
     );
-    fcc_sort_net__kd__4 kd$4(
+    fcc_sort_net__kd__4_k7_668cf05b kd$4(
         .d(kd$4$d),
         .q(kd$4$q),
         .clock(kd$4$clock)
     );
-    fcc_sort_net__kd__5 kd$5(
+    fcc_sort_net__kd__5_k7_668cf05b kd$5(
         .d(kd$5$d),
         .q(kd$5$q),
         .clock(kd$5$clock)
     );
-    fcc_sort_net__kd__6 kd$6(
+    fcc_sort_net__kd__6_k7_668cf05b kd$6(
         .d(kd$6$d),
         .q(kd$6$q),
         .clock(kd$6$clock)
     );
-    fcc_sort_net__kd__7 kd$7(
+    fcc_sort_net__kd__7_k7_668cf05b kd$7(
         .d(kd$7$d),
         .q(kd$7$q),
         .clock(kd$7$clock)
     );
-    fcc_sort_net__kd__8 kd$8(
+    fcc_sort_net__kd__8_k7_668cf05b kd$8(
         .d(kd$8$d),
         .q(kd$8$q),
         .clock(kd$8$clock)
     );
-    fcc_sort_net__kd__9 kd$9(
+    fcc_sort_net__kd__9_k7_668cf05b kd$9(
         .d(kd$9$d),
         .q(kd$9$q),
         .clock(kd$9$clock)
     );
-    fcc_sort_net__kd__10 kd$10(
+    fcc_sort_net__kd__10_k7_668cf05b kd$10(
         .d(kd$10$d),
         .q(kd$10$q),
         .clock(kd$10$clock)
     );
-    fcc_sort_net__kd__11 kd$11(
+    fcc_sort_net__kd__11_k7_668cf05b kd$11(
         .d(kd$11$d),
         .q(kd$11$q),
         .clock(kd$11$clock)
     );
-    fcc_sort_net__kd__12 kd$12(
+    fcc_sort_net__kd__12_k7_668cf05b kd$12(
         .d(kd$12$d),
         .q(kd$12$q),
         .clock(kd$12$clock)
     );
-    fcc_sort_net__kd__13 kd$13(
+    fcc_sort_net__kd__13_k7_668cf05b kd$13(
         .d(kd$13$d),
         .q(kd$13$q),
         .clock(kd$13$clock)
     );
-    fcc_sort_net__kd__14 kd$14(
+    fcc_sort_net__kd__14_k7_668cf05b kd$14(
         .d(kd$14$d),
         .q(kd$14$q),
         .clock(kd$14$clock)
     );
-    fcc_sort_net__kd__15 kd$15(
+    fcc_sort_net__kd__15_k7_668cf05b kd$15(
         .d(kd$15$d),
         .q(kd$15$q),
         .clock(kd$15$clock)
     );
-    fcc_sort_net__kd__16 kd$16(
+    fcc_sort_net__kd__16_k7_668cf05b kd$16(
         .d(kd$16$d),
         .q(kd$16$q),
         .clock(kd$16$clock)
     );
-    fcc_sort_net__kd__17 kd$17(
+    fcc_sort_net__kd__17_k7_668cf05b kd$17(
         .d(kd$17$d),
         .q(kd$17$q),
         .clock(kd$17$clock)
     );
-    fcc_sort_net__kd__18 kd$18(
+    fcc_sort_net__kd__18_k7_668cf05b kd$18(
         .d(kd$18$d),
         .q(kd$18$q),
         .clock(kd$18$clock)
     );
-    fcc_sort_net__kd__19 kd$19(
+    fcc_sort_net__kd__19_k7_668cf05b kd$19(
         .d(kd$19$d),
         .q(kd$19$q),
         .clock(kd$19$clock)
     );
-    fcc_sort_net__kd__20 kd$20(
+    fcc_sort_net__kd__20_k7_668cf05b kd$20(
         .d(kd$20$d),
         .q(kd$20$q),
         .clock(kd$20$clock)
     );
-    fcc_sort_net__ap ap(
+    fcc_sort_net__ap_k7_668cf05b ap(
         .x$0(ap$x$0),
         .x$1(ap$x$1),
         .x$2(ap$x$2),
@@ -21036,22 +19748,22 @@ module fcc_sort_net(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit
         .x$20(ap$x$20),
         .any(ap$any)
     );
-    fcc_sort_net__push_q push_q(
+    fcc_sort_net__push_q_k7_668cf05b push_q(
         .d(push_q$d),
         .q(push_q$q),
         .clock(push_q$clock)
     );
-    fcc_sort_net__drop_q drop_q(
+    fcc_sort_net__drop_q_k7_668cf05b drop_q(
         .d(drop_q$d),
         .q(drop_q$q),
         .clock(drop_q$clock)
     );
-    fcc_sort_net__rec rec(
+    fcc_sort_net__rec_k7_668cf05b rec(
         .d(rec$d),
         .q(rec$q),
         .clock(rec$clock)
     );
-    fcc_sort_net__cb cb(
+    fcc_sort_net__cb_k7_668cf05b cb(
         .clk(cb$clk),
         .rst(cb$rst),
         .push(cb$push),
@@ -21065,7 +19777,7 @@ module fcc_sort_net(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit
         .ram_we(cb$ram_we),
         .ram_waddr(cb$ram_waddr)
     );
-    fcc_sort_net__rows__0 rows$0(
+    fcc_sort_net__rows__0_k7_668cf05b rows$0(
         .clk(rows$0$clk),
         .read_en(rows$0$read_en),
         .read_addr(rows$0$read_addr),
@@ -21074,7 +19786,7 @@ module fcc_sort_net(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit
         .write_addr(rows$0$write_addr),
         .write_data(rows$0$write_data)
     );
-    fcc_sort_net__rows__1 rows$1(
+    fcc_sort_net__rows__1_k7_668cf05b rows$1(
         .clk(rows$1$clk),
         .read_en(rows$1$read_en),
         .read_addr(rows$1$read_addr),
@@ -21083,7 +19795,7 @@ module fcc_sort_net(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit
         .write_addr(rows$1$write_addr),
         .write_data(rows$1$write_data)
     );
-    fcc_sort_net__rows__2 rows$2(
+    fcc_sort_net__rows__2_k7_668cf05b rows$2(
         .clk(rows$2$clk),
         .read_en(rows$2$read_en),
         .read_addr(rows$2$read_addr),
@@ -21092,7 +19804,7 @@ module fcc_sort_net(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit
         .write_addr(rows$2$write_addr),
         .write_data(rows$2$write_data)
     );
-    fcc_sort_net__pack pack(
+    fcc_sort_net__pack_k7_668cf05b pack(
         .v$0(pack$v$0),
         .v$1(pack$v$1),
         .v$2(pack$v$2),
@@ -21139,7 +19851,7 @@ module fcc_sort_net(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit
         .word$1(pack$word$1),
         .word$2(pack$word$2)
     );
-    fcc_sort_net__unpack unpack(
+    fcc_sort_net__unpack_k7_668cf05b unpack(
         .word$0(unpack$word$0),
         .word$1(unpack$word$1),
         .word$2(unpack$word$2),
@@ -21186,227 +19898,227 @@ module fcc_sort_net(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit
         .f$19(unpack$f$19),
         .f$20(unpack$f$20)
     );
-    fcc_sort_net__ld ld(
+    fcc_sort_net__ld_k7_668cf05b ld(
         .d(ld$d),
         .q(ld$q),
         .clock(ld$clock)
     );
-    fcc_sort_net__ph ph(
+    fcc_sort_net__ph_k7_668cf05b ph(
         .d(ph$d),
         .q(ph$q),
         .clock(ph$clock)
     );
-    fcc_sort_net__m__0 m$0(
+    fcc_sort_net__m__0_k7_668cf05b m$0(
         .d(m$0$d),
         .q(m$0$q),
         .clock(m$0$clock)
     );
-    fcc_sort_net__m__1 m$1(
+    fcc_sort_net__m__1_k7_668cf05b m$1(
         .d(m$1$d),
         .q(m$1$q),
         .clock(m$1$clock)
     );
-    fcc_sort_net__m__2 m$2(
+    fcc_sort_net__m__2_k7_668cf05b m$2(
         .d(m$2$d),
         .q(m$2$q),
         .clock(m$2$clock)
     );
-    fcc_sort_net__m__3 m$3(
+    fcc_sort_net__m__3_k7_668cf05b m$3(
         .d(m$3$d),
         .q(m$3$q),
         .clock(m$3$clock)
     );
-    fcc_sort_net__m__4 m$4(
+    fcc_sort_net__m__4_k7_668cf05b m$4(
         .d(m$4$d),
         .q(m$4$q),
         .clock(m$4$clock)
     );
-    fcc_sort_net__m__5 m$5(
+    fcc_sort_net__m__5_k7_668cf05b m$5(
         .d(m$5$d),
         .q(m$5$q),
         .clock(m$5$clock)
     );
-    fcc_sort_net__m__6 m$6(
+    fcc_sort_net__m__6_k7_668cf05b m$6(
         .d(m$6$d),
         .q(m$6$q),
         .clock(m$6$clock)
     );
-    fcc_sort_net__m__7 m$7(
+    fcc_sort_net__m__7_k7_668cf05b m$7(
         .d(m$7$d),
         .q(m$7$q),
         .clock(m$7$clock)
     );
-    fcc_sort_net__m__8 m$8(
+    fcc_sort_net__m__8_k7_668cf05b m$8(
         .d(m$8$d),
         .q(m$8$q),
         .clock(m$8$clock)
     );
-    fcc_sort_net__m__9 m$9(
+    fcc_sort_net__m__9_k7_668cf05b m$9(
         .d(m$9$d),
         .q(m$9$q),
         .clock(m$9$clock)
     );
-    fcc_sort_net__m__10 m$10(
+    fcc_sort_net__m__10_k7_668cf05b m$10(
         .d(m$10$d),
         .q(m$10$q),
         .clock(m$10$clock)
     );
-    fcc_sort_net__m__11 m$11(
+    fcc_sort_net__m__11_k7_668cf05b m$11(
         .d(m$11$d),
         .q(m$11$q),
         .clock(m$11$clock)
     );
-    fcc_sort_net__m__12 m$12(
+    fcc_sort_net__m__12_k7_668cf05b m$12(
         .d(m$12$d),
         .q(m$12$q),
         .clock(m$12$clock)
     );
-    fcc_sort_net__m__13 m$13(
+    fcc_sort_net__m__13_k7_668cf05b m$13(
         .d(m$13$d),
         .q(m$13$q),
         .clock(m$13$clock)
     );
-    fcc_sort_net__m__14 m$14(
+    fcc_sort_net__m__14_k7_668cf05b m$14(
         .d(m$14$d),
         .q(m$14$q),
         .clock(m$14$clock)
     );
-    fcc_sort_net__m__15 m$15(
+    fcc_sort_net__m__15_k7_668cf05b m$15(
         .d(m$15$d),
         .q(m$15$q),
         .clock(m$15$clock)
     );
-    fcc_sort_net__m__16 m$16(
+    fcc_sort_net__m__16_k7_668cf05b m$16(
         .d(m$16$d),
         .q(m$16$q),
         .clock(m$16$clock)
     );
-    fcc_sort_net__m__17 m$17(
+    fcc_sort_net__m__17_k7_668cf05b m$17(
         .d(m$17$d),
         .q(m$17$q),
         .clock(m$17$clock)
     );
-    fcc_sort_net__m__18 m$18(
+    fcc_sort_net__m__18_k7_668cf05b m$18(
         .d(m$18$d),
         .q(m$18$q),
         .clock(m$18$clock)
     );
-    fcc_sort_net__m__19 m$19(
+    fcc_sort_net__m__19_k7_668cf05b m$19(
         .d(m$19$d),
         .q(m$19$q),
         .clock(m$19$clock)
     );
-    fcc_sort_net__m__20 m$20(
+    fcc_sort_net__m__20_k7_668cf05b m$20(
         .d(m$20$d),
         .q(m$20$q),
         .clock(m$20$clock)
     );
-    fcc_sort_net__sel__0 sel$0(
+    fcc_sort_net__sel__0_k7_668cf05b sel$0(
         .d(sel$0$d),
         .q(sel$0$q),
         .clock(sel$0$clock)
     );
-    fcc_sort_net__sel__1 sel$1(
+    fcc_sort_net__sel__1_k7_668cf05b sel$1(
         .d(sel$1$d),
         .q(sel$1$q),
         .clock(sel$1$clock)
     );
-    fcc_sort_net__sel__2 sel$2(
+    fcc_sort_net__sel__2_k7_668cf05b sel$2(
         .d(sel$2$d),
         .q(sel$2$q),
         .clock(sel$2$clock)
     );
-    fcc_sort_net__sel__3 sel$3(
+    fcc_sort_net__sel__3_k7_668cf05b sel$3(
         .d(sel$3$d),
         .q(sel$3$q),
         .clock(sel$3$clock)
     );
-    fcc_sort_net__sel__4 sel$4(
+    fcc_sort_net__sel__4_k7_668cf05b sel$4(
         .d(sel$4$d),
         .q(sel$4$q),
         .clock(sel$4$clock)
     );
-    fcc_sort_net__sel__5 sel$5(
+    fcc_sort_net__sel__5_k7_668cf05b sel$5(
         .d(sel$5$d),
         .q(sel$5$q),
         .clock(sel$5$clock)
     );
-    fcc_sort_net__sel__6 sel$6(
+    fcc_sort_net__sel__6_k7_668cf05b sel$6(
         .d(sel$6$d),
         .q(sel$6$q),
         .clock(sel$6$clock)
     );
-    fcc_sort_net__sel__7 sel$7(
+    fcc_sort_net__sel__7_k7_668cf05b sel$7(
         .d(sel$7$d),
         .q(sel$7$q),
         .clock(sel$7$clock)
     );
-    fcc_sort_net__sel__8 sel$8(
+    fcc_sort_net__sel__8_k7_668cf05b sel$8(
         .d(sel$8$d),
         .q(sel$8$q),
         .clock(sel$8$clock)
     );
-    fcc_sort_net__sel__9 sel$9(
+    fcc_sort_net__sel__9_k7_668cf05b sel$9(
         .d(sel$9$d),
         .q(sel$9$q),
         .clock(sel$9$clock)
     );
-    fcc_sort_net__sel__10 sel$10(
+    fcc_sort_net__sel__10_k7_668cf05b sel$10(
         .d(sel$10$d),
         .q(sel$10$q),
         .clock(sel$10$clock)
     );
-    fcc_sort_net__sel__11 sel$11(
+    fcc_sort_net__sel__11_k7_668cf05b sel$11(
         .d(sel$11$d),
         .q(sel$11$q),
         .clock(sel$11$clock)
     );
-    fcc_sort_net__sel__12 sel$12(
+    fcc_sort_net__sel__12_k7_668cf05b sel$12(
         .d(sel$12$d),
         .q(sel$12$q),
         .clock(sel$12$clock)
     );
-    fcc_sort_net__sel__13 sel$13(
+    fcc_sort_net__sel__13_k7_668cf05b sel$13(
         .d(sel$13$d),
         .q(sel$13$q),
         .clock(sel$13$clock)
     );
-    fcc_sort_net__sel__14 sel$14(
+    fcc_sort_net__sel__14_k7_668cf05b sel$14(
         .d(sel$14$d),
         .q(sel$14$q),
         .clock(sel$14$clock)
     );
-    fcc_sort_net__sel__15 sel$15(
+    fcc_sort_net__sel__15_k7_668cf05b sel$15(
         .d(sel$15$d),
         .q(sel$15$q),
         .clock(sel$15$clock)
     );
-    fcc_sort_net__sel__16 sel$16(
+    fcc_sort_net__sel__16_k7_668cf05b sel$16(
         .d(sel$16$d),
         .q(sel$16$q),
         .clock(sel$16$clock)
     );
-    fcc_sort_net__sel__17 sel$17(
+    fcc_sort_net__sel__17_k7_668cf05b sel$17(
         .d(sel$17$d),
         .q(sel$17$q),
         .clock(sel$17$clock)
     );
-    fcc_sort_net__sel__18 sel$18(
+    fcc_sort_net__sel__18_k7_668cf05b sel$18(
         .d(sel$18$d),
         .q(sel$18$q),
         .clock(sel$18$clock)
     );
-    fcc_sort_net__sel__19 sel$19(
+    fcc_sort_net__sel__19_k7_668cf05b sel$19(
         .d(sel$19$d),
         .q(sel$19$q),
         .clock(sel$19$clock)
     );
-    fcc_sort_net__sel__20 sel$20(
+    fcc_sort_net__sel__20_k7_668cf05b sel$20(
         .d(sel$20$d),
         .q(sel$20$q),
         .clock(sel$20$clock)
     );
-    fcc_sort_net__kp kp(
+    fcc_sort_net__kp_k7_668cf05b kp(
         .x$0(kp$x$0),
         .x$1(kp$x$1),
         .x$2(kp$x$2),
@@ -21450,7 +20162,7 @@ module fcc_sort_net(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit
         .pre$19(kp$pre$19),
         .pre$20(kp$pre$20)
     );
-    fcc_sort_net__mp mp(
+    fcc_sort_net__mp_k7_668cf05b mp(
         .x$0(mp$x$0),
         .x$1(mp$x$1),
         .x$2(mp$x$2),
@@ -21494,7 +20206,7 @@ module fcc_sort_net(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit
         .pre$19(mp$pre$19),
         .pre$20(mp$pre$20)
     );
-    fcc_sort_net__ka ka(
+    fcc_sort_net__ka_k7_668cf05b ka(
         .x$0(ka$x$0),
         .x$1(ka$x$1),
         .x$2(ka$x$2),
@@ -21518,12 +20230,12 @@ module fcc_sort_net(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit
         .x$20(ka$x$20),
         .any(ka$any)
     );
-    fcc_sort_net__mq mq(
+    fcc_sort_net__mq_k7_668cf05b mq(
         .d(mq$d),
         .q(mq$q),
         .clock(mq$clock)
     );
-    fcc_sort_net__mt mt(
+    fcc_sort_net__mt_k7_668cf05b mt(
         .x$0(mt$x$0),
         .x$1(mt$x$1),
         .x$2(mt$x$2),
@@ -21547,12 +20259,12 @@ module fcc_sort_net(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit
         .x$20(mt$x$20),
         .two(mt$two)
     );
-    fcc_sort_net__rp rp(
+    fcc_sort_net__rp_k7_668cf05b rp(
         .d(rp$d),
         .q(rp$q),
         .clock(rp$clock)
     );
-    fcc_sort_net__jq jq(
+    fcc_sort_net__jq_k7_668cf05b jq(
         .clk(jq$clk),
         .rst(jq$rst),
         .push(jq$push),
@@ -21566,42 +20278,42 @@ module fcc_sort_net(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit
         .ram_we(jq$ram_we),
         .ram_waddr(jq$ram_waddr)
     );
-    fcc_sort_net__jfull jfull(
+    fcc_sort_net__jfull_k7_668cf05b jfull(
         .d(jfull$d),
         .q(jfull$q),
         .clock(jfull$clock)
     );
-    fcc_sort_net__last_a last_a(
+    fcc_sort_net__last_a_k7_668cf05b last_a(
         .d(last_a$d),
         .q(last_a$q),
         .clock(last_a$clock)
     );
-    fcc_sort_net__last_av last_av(
+    fcc_sort_net__last_av_k7_668cf05b last_av(
         .d(last_av$d),
         .q(last_av$q),
         .clock(last_av$clock)
     );
-    fcc_sort_net__csame csame(
+    fcc_sort_net__csame_k7_668cf05b csame(
         .d(csame$d),
         .q(csame$q),
         .clock(csame$clock)
     );
-    fcc_sort_net__rsame_c rsame_c(
+    fcc_sort_net__rsame_c_k7_668cf05b rsame_c(
         .d(rsame_c$d),
         .q(rsame_c$q),
         .clock(rsame_c$clock)
     );
-    fcc_sort_net__rsame_l rsame_l(
+    fcc_sort_net__rsame_l_k7_668cf05b rsame_l(
         .d(rsame_l$d),
         .q(rsame_l$q),
         .clock(rsame_l$clock)
     );
-    fcc_sort_net__emitted emitted(
+    fcc_sort_net__emitted_k7_668cf05b emitted(
         .d(emitted$d),
         .q(emitted$q),
         .clock(emitted$clock)
     );
-    fcc_sort_net__pk pk(
+    fcc_sort_net__pk_k7_668cf05b pk(
         .sel$0(pk$sel$0),
         .sel$1(pk$sel$1),
         .sel$2(pk$sel$2),
@@ -21646,12 +20358,12 @@ module fcc_sort_net(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit
         .v$20(pk$v$20),
         .o(pk$o)
     );
-    fcc_sort_net__ldone_q ldone_q(
+    fcc_sort_net__ldone_q_k7_668cf05b ldone_q(
         .d(ldone_q$d),
         .q(ldone_q$q),
         .clock(ldone_q$clock)
     );
-    fcc_sort_net__joins_q joins_q(
+    fcc_sort_net__joins_q_k7_668cf05b joins_q(
         .d(joins_q$d),
         .q(joins_q$q),
         .clock(joins_q$clock)
@@ -24296,10 +23008,10 @@ module fcc_sort_net(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit
         end
     end
 
-endmodule // fcc_sort_net
+endmodule // fcc_sort_net_k7_668cf05b
 
 
-module fcc_sort_net__ap(x$0,x$1,x$2,x$3,x$4,x$5,x$6,x$7,x$8,x$9,x$10,x$11,x$12,x$13,x$14,x$15,x$16,x$17,x$18,x$19,x$20,any);
+module fcc_sort_net__ap_k7_668cf05b(x$0,x$1,x$2,x$3,x$4,x$5,x$6,x$7,x$8,x$9,x$10,x$11,x$12,x$13,x$14,x$15,x$16,x$17,x$18,x$19,x$20,any);
 
     // Module arguments
     input wire  x$0;
@@ -24329,29 +23041,10 @@ module fcc_sort_net__ap(x$0,x$1,x$2,x$3,x$4,x$5,x$6,x$7,x$8,x$9,x$10,x$11,x$12,x
     always @(*) begin
         any = |{x$20, x$19, x$18, x$17, x$16, x$15, x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
     end
-endmodule // fcc_sort_net__ap
+endmodule // fcc_sort_net__ap_k7_668cf05b
 
 
-module fcc_sort_net__c1(d,q,clock);
-
-    // Module arguments
-    input wire  [64:0] d;
-    output reg  [64:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 65'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__c1
-
-
-module fcc_sort_net__c_sm(d,q,clock);
+module fcc_sort_net__c1_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [64:0] d;
@@ -24367,29 +23060,10 @@ module fcc_sort_net__c_sm(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__c_sm
+endmodule // fcc_sort_net__c1_k7_668cf05b
 
 
-module fcc_sort_net__c_sm1(d,q,clock);
-
-    // Module arguments
-    input wire  [64:0] d;
-    output reg  [64:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 65'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__c_sm1
-
-
-module fcc_sort_net__c_sm2(d,q,clock);
+module fcc_sort_net__c_sm_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [64:0] d;
@@ -24405,10 +23079,48 @@ module fcc_sort_net__c_sm2(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__c_sm2
+endmodule // fcc_sort_net__c_sm_k7_668cf05b
 
 
-module fcc_sort_net__cb(clk,rst,push,din,valid,dout,take,level,ram_re,ram_raddr,ram_we,ram_waddr);
+module fcc_sort_net__c_sm1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [64:0] d;
+    output reg  [64:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 65'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__c_sm1_k7_668cf05b
+
+
+module fcc_sort_net__c_sm2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [64:0] d;
+    output reg  [64:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 65'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__c_sm2_k7_668cf05b
+
+
+module fcc_sort_net__cb_k7_668cf05b(clk,rst,push,din,valid,dout,take,level,ram_re,ram_raddr,ram_we,ram_waddr);
 
     // Module arguments
     input wire  clk;
@@ -24460,7 +23172,7 @@ module fcc_sort_net__cb(clk,rst,push,din,valid,dout,take,level,ram_re,ram_raddr,
     reg  issue;
 
     // Sub module instances
-    fcc_sort_net__cb__ram ram(
+    fcc_sort_net__cb__ram_k7_668cf05b ram(
         .clk(ram$clk),
         .read_en(ram$read_en),
         .read_addr(ram$read_addr),
@@ -24469,32 +23181,32 @@ module fcc_sort_net__cb(clk,rst,push,din,valid,dout,take,level,ram_re,ram_raddr,
         .write_addr(ram$write_addr),
         .write_data(ram$write_data)
     );
-    fcc_sort_net__cb__wp wp(
+    fcc_sort_net__cb__wp_k7_668cf05b wp(
         .d(wp$d),
         .q(wp$q),
         .clock(wp$clock)
     );
-    fcc_sort_net__cb__rp rp(
+    fcc_sort_net__cb__rp_k7_668cf05b rp(
         .d(rp$d),
         .q(rp$q),
         .clock(rp$clock)
     );
-    fcc_sort_net__cb__tp tp(
+    fcc_sort_net__cb__tp_k7_668cf05b tp(
         .d(tp$d),
         .q(tp$q),
         .clock(tp$clock)
     );
-    fcc_sort_net__cb__level_q level_q(
+    fcc_sort_net__cb__level_q_k7_668cf05b level_q(
         .d(level_q$d),
         .q(level_q$q),
         .clock(level_q$clock)
     );
-    fcc_sort_net__cb__r1 r1(
+    fcc_sort_net__cb__r1_k7_668cf05b r1(
         .d(r1$d),
         .q(r1$q),
         .clock(r1$clock)
     );
-    fcc_sort_net__cb__ov ov(
+    fcc_sort_net__cb__ov_k7_668cf05b ov(
         .d(ov$d),
         .q(ov$q),
         .clock(ov$clock)
@@ -24551,10 +23263,10 @@ module fcc_sort_net__cb(clk,rst,push,din,valid,dout,take,level,ram_re,ram_raddr,
         end
     end
 
-endmodule // fcc_sort_net__cb
+endmodule // fcc_sort_net__cb_k7_668cf05b
 
 
-module fcc_sort_net__cb__level_q(d,q,clock);
+module fcc_sort_net__cb__level_q_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [9:0] d;
@@ -24570,29 +23282,10 @@ module fcc_sort_net__cb__level_q(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__cb__level_q
+endmodule // fcc_sort_net__cb__level_q_k7_668cf05b
 
 
-module fcc_sort_net__cb__ov(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__cb__ov
-
-
-module fcc_sort_net__cb__r1(d,q,clock);
+module fcc_sort_net__cb__ov_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -24608,10 +23301,29 @@ module fcc_sort_net__cb__r1(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__cb__r1
+endmodule // fcc_sort_net__cb__ov_k7_668cf05b
 
 
-module fcc_sort_net__cb__ram(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
+module fcc_sort_net__cb__r1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__cb__r1_k7_668cf05b
+
+
+module fcc_sort_net__cb__ram_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
 
     // Module arguments
     input wire  clk;
@@ -24635,29 +23347,10 @@ module fcc_sort_net__cb__ram(clk,read_en,read_addr,read_data,write_en,write_addr
         end
         read_data <= rd1;
     end
-endmodule // fcc_sort_net__cb__ram
+endmodule // fcc_sort_net__cb__ram_k7_668cf05b
 
 
-module fcc_sort_net__cb__rp(d,q,clock);
-
-    // Module arguments
-    input wire  [9:0] d;
-    output reg  [9:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 10'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__cb__rp
-
-
-module fcc_sort_net__cb__tp(d,q,clock);
+module fcc_sort_net__cb__rp_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [9:0] d;
@@ -24673,10 +23366,10 @@ module fcc_sort_net__cb__tp(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__cb__tp
+endmodule // fcc_sort_net__cb__rp_k7_668cf05b
 
 
-module fcc_sort_net__cb__wp(d,q,clock);
+module fcc_sort_net__cb__tp_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [9:0] d;
@@ -24692,10 +23385,29 @@ module fcc_sort_net__cb__wp(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__cb__wp
+endmodule // fcc_sort_net__cb__tp_k7_668cf05b
 
 
-module fcc_sort_net__cs__0(d,q,clock);
+module fcc_sort_net__cb__wp_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 10'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__cb__wp_k7_668cf05b
+
+
+module fcc_sort_net__cs__0_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [64:0] d;
@@ -24711,29 +23423,10 @@ module fcc_sort_net__cs__0(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__cs__0
+endmodule // fcc_sort_net__cs__0_k7_668cf05b
 
 
-module fcc_sort_net__cs__1(d,q,clock);
-
-    // Module arguments
-    input wire  [64:0] d;
-    output reg  [64:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 65'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__cs__1
-
-
-module fcc_sort_net__cs__2(d,q,clock);
+module fcc_sort_net__cs__1_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [64:0] d;
@@ -24749,10 +23442,10 @@ module fcc_sort_net__cs__2(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__cs__2
+endmodule // fcc_sort_net__cs__1_k7_668cf05b
 
 
-module fcc_sort_net__cs__3(d,q,clock);
+module fcc_sort_net__cs__2_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [64:0] d;
@@ -24768,10 +23461,29 @@ module fcc_sort_net__cs__3(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__cs__3
+endmodule // fcc_sort_net__cs__2_k7_668cf05b
 
 
-module fcc_sort_net__csame(d,q,clock);
+module fcc_sort_net__cs__3_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [64:0] d;
+    output reg  [64:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 65'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__cs__3_k7_668cf05b
+
+
+module fcc_sort_net__csame_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -24787,29 +23499,10 @@ module fcc_sort_net__csame(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__csame
+endmodule // fcc_sort_net__csame_k7_668cf05b
 
 
-module fcc_sort_net__drop_q(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__drop_q
-
-
-module fcc_sort_net__emitted(d,q,clock);
+module fcc_sort_net__drop_q_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -24825,29 +23518,10 @@ module fcc_sort_net__emitted(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__emitted
+endmodule // fcc_sort_net__drop_q_k7_668cf05b
 
 
-module fcc_sort_net__eqm__0(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__eqm__0
-
-
-module fcc_sort_net__eqm__1(d,q,clock);
+module fcc_sort_net__emitted_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -24863,29 +23537,10 @@ module fcc_sort_net__eqm__1(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__eqm__1
+endmodule // fcc_sort_net__emitted_k7_668cf05b
 
 
-module fcc_sort_net__eqm__10(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__eqm__10
-
-
-module fcc_sort_net__eqm__11(d,q,clock);
+module fcc_sort_net__eqm__0_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -24901,29 +23556,10 @@ module fcc_sort_net__eqm__11(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__eqm__11
+endmodule // fcc_sort_net__eqm__0_k7_668cf05b
 
 
-module fcc_sort_net__eqm__12(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__eqm__12
-
-
-module fcc_sort_net__eqm__13(d,q,clock);
+module fcc_sort_net__eqm__1_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -24939,29 +23575,10 @@ module fcc_sort_net__eqm__13(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__eqm__13
+endmodule // fcc_sort_net__eqm__1_k7_668cf05b
 
 
-module fcc_sort_net__eqm__14(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__eqm__14
-
-
-module fcc_sort_net__eqm__15(d,q,clock);
+module fcc_sort_net__eqm__10_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -24977,29 +23594,10 @@ module fcc_sort_net__eqm__15(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__eqm__15
+endmodule // fcc_sort_net__eqm__10_k7_668cf05b
 
 
-module fcc_sort_net__eqm__16(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__eqm__16
-
-
-module fcc_sort_net__eqm__17(d,q,clock);
+module fcc_sort_net__eqm__11_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -25015,29 +23613,10 @@ module fcc_sort_net__eqm__17(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__eqm__17
+endmodule // fcc_sort_net__eqm__11_k7_668cf05b
 
 
-module fcc_sort_net__eqm__18(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__eqm__18
-
-
-module fcc_sort_net__eqm__19(d,q,clock);
+module fcc_sort_net__eqm__12_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -25053,29 +23632,10 @@ module fcc_sort_net__eqm__19(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__eqm__19
+endmodule // fcc_sort_net__eqm__12_k7_668cf05b
 
 
-module fcc_sort_net__eqm__2(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__eqm__2
-
-
-module fcc_sort_net__eqm__20(d,q,clock);
+module fcc_sort_net__eqm__13_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -25091,29 +23651,10 @@ module fcc_sort_net__eqm__20(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__eqm__20
+endmodule // fcc_sort_net__eqm__13_k7_668cf05b
 
 
-module fcc_sort_net__eqm__3(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__eqm__3
-
-
-module fcc_sort_net__eqm__4(d,q,clock);
+module fcc_sort_net__eqm__14_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -25129,29 +23670,10 @@ module fcc_sort_net__eqm__4(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__eqm__4
+endmodule // fcc_sort_net__eqm__14_k7_668cf05b
 
 
-module fcc_sort_net__eqm__5(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__eqm__5
-
-
-module fcc_sort_net__eqm__6(d,q,clock);
+module fcc_sort_net__eqm__15_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -25167,29 +23689,10 @@ module fcc_sort_net__eqm__6(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__eqm__6
+endmodule // fcc_sort_net__eqm__15_k7_668cf05b
 
 
-module fcc_sort_net__eqm__7(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__eqm__7
-
-
-module fcc_sort_net__eqm__8(d,q,clock);
+module fcc_sort_net__eqm__16_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -25205,29 +23708,10 @@ module fcc_sort_net__eqm__8(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__eqm__8
+endmodule // fcc_sort_net__eqm__16_k7_668cf05b
 
 
-module fcc_sort_net__eqm__9(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__eqm__9
-
-
-module fcc_sort_net__eqrc__0(d,q,clock);
+module fcc_sort_net__eqm__17_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -25243,29 +23727,10 @@ module fcc_sort_net__eqrc__0(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__eqrc__0
+endmodule // fcc_sort_net__eqm__17_k7_668cf05b
 
 
-module fcc_sort_net__eqrc__1(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__eqrc__1
-
-
-module fcc_sort_net__eqrc__10(d,q,clock);
+module fcc_sort_net__eqm__18_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -25281,29 +23746,10 @@ module fcc_sort_net__eqrc__10(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__eqrc__10
+endmodule // fcc_sort_net__eqm__18_k7_668cf05b
 
 
-module fcc_sort_net__eqrc__11(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__eqrc__11
-
-
-module fcc_sort_net__eqrc__12(d,q,clock);
+module fcc_sort_net__eqm__19_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -25319,29 +23765,10 @@ module fcc_sort_net__eqrc__12(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__eqrc__12
+endmodule // fcc_sort_net__eqm__19_k7_668cf05b
 
 
-module fcc_sort_net__eqrc__13(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__eqrc__13
-
-
-module fcc_sort_net__eqrc__14(d,q,clock);
+module fcc_sort_net__eqm__2_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -25357,29 +23784,10 @@ module fcc_sort_net__eqrc__14(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__eqrc__14
+endmodule // fcc_sort_net__eqm__2_k7_668cf05b
 
 
-module fcc_sort_net__eqrc__15(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__eqrc__15
-
-
-module fcc_sort_net__eqrc__16(d,q,clock);
+module fcc_sort_net__eqm__20_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -25395,29 +23803,10 @@ module fcc_sort_net__eqrc__16(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__eqrc__16
+endmodule // fcc_sort_net__eqm__20_k7_668cf05b
 
 
-module fcc_sort_net__eqrc__17(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__eqrc__17
-
-
-module fcc_sort_net__eqrc__18(d,q,clock);
+module fcc_sort_net__eqm__3_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -25433,29 +23822,10 @@ module fcc_sort_net__eqrc__18(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__eqrc__18
+endmodule // fcc_sort_net__eqm__3_k7_668cf05b
 
 
-module fcc_sort_net__eqrc__19(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__eqrc__19
-
-
-module fcc_sort_net__eqrc__2(d,q,clock);
+module fcc_sort_net__eqm__4_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -25471,29 +23841,10 @@ module fcc_sort_net__eqrc__2(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__eqrc__2
+endmodule // fcc_sort_net__eqm__4_k7_668cf05b
 
 
-module fcc_sort_net__eqrc__20(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__eqrc__20
-
-
-module fcc_sort_net__eqrc__3(d,q,clock);
+module fcc_sort_net__eqm__5_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -25509,29 +23860,10 @@ module fcc_sort_net__eqrc__3(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__eqrc__3
+endmodule // fcc_sort_net__eqm__5_k7_668cf05b
 
 
-module fcc_sort_net__eqrc__4(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__eqrc__4
-
-
-module fcc_sort_net__eqrc__5(d,q,clock);
+module fcc_sort_net__eqm__6_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -25547,29 +23879,10 @@ module fcc_sort_net__eqrc__5(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__eqrc__5
+endmodule // fcc_sort_net__eqm__6_k7_668cf05b
 
 
-module fcc_sort_net__eqrc__6(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__eqrc__6
-
-
-module fcc_sort_net__eqrc__7(d,q,clock);
+module fcc_sort_net__eqm__7_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -25585,29 +23898,10 @@ module fcc_sort_net__eqrc__7(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__eqrc__7
+endmodule // fcc_sort_net__eqm__7_k7_668cf05b
 
 
-module fcc_sort_net__eqrc__8(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__eqrc__8
-
-
-module fcc_sort_net__eqrc__9(d,q,clock);
+module fcc_sort_net__eqm__8_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -25623,10 +23917,10 @@ module fcc_sort_net__eqrc__9(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__eqrc__9
+endmodule // fcc_sort_net__eqm__8_k7_668cf05b
 
 
-module fcc_sort_net__jfull(d,q,clock);
+module fcc_sort_net__eqm__9_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -25642,10 +23936,428 @@ module fcc_sort_net__jfull(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__jfull
+endmodule // fcc_sort_net__eqm__9_k7_668cf05b
 
 
-module fcc_sort_net__joins_q(d,q,clock);
+module fcc_sort_net__eqrc__0_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__eqrc__0_k7_668cf05b
+
+
+module fcc_sort_net__eqrc__1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__eqrc__1_k7_668cf05b
+
+
+module fcc_sort_net__eqrc__10_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__eqrc__10_k7_668cf05b
+
+
+module fcc_sort_net__eqrc__11_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__eqrc__11_k7_668cf05b
+
+
+module fcc_sort_net__eqrc__12_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__eqrc__12_k7_668cf05b
+
+
+module fcc_sort_net__eqrc__13_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__eqrc__13_k7_668cf05b
+
+
+module fcc_sort_net__eqrc__14_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__eqrc__14_k7_668cf05b
+
+
+module fcc_sort_net__eqrc__15_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__eqrc__15_k7_668cf05b
+
+
+module fcc_sort_net__eqrc__16_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__eqrc__16_k7_668cf05b
+
+
+module fcc_sort_net__eqrc__17_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__eqrc__17_k7_668cf05b
+
+
+module fcc_sort_net__eqrc__18_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__eqrc__18_k7_668cf05b
+
+
+module fcc_sort_net__eqrc__19_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__eqrc__19_k7_668cf05b
+
+
+module fcc_sort_net__eqrc__2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__eqrc__2_k7_668cf05b
+
+
+module fcc_sort_net__eqrc__20_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__eqrc__20_k7_668cf05b
+
+
+module fcc_sort_net__eqrc__3_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__eqrc__3_k7_668cf05b
+
+
+module fcc_sort_net__eqrc__4_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__eqrc__4_k7_668cf05b
+
+
+module fcc_sort_net__eqrc__5_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__eqrc__5_k7_668cf05b
+
+
+module fcc_sort_net__eqrc__6_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__eqrc__6_k7_668cf05b
+
+
+module fcc_sort_net__eqrc__7_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__eqrc__7_k7_668cf05b
+
+
+module fcc_sort_net__eqrc__8_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__eqrc__8_k7_668cf05b
+
+
+module fcc_sort_net__eqrc__9_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__eqrc__9_k7_668cf05b
+
+
+module fcc_sort_net__jfull_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__jfull_k7_668cf05b
+
+
+module fcc_sort_net__joins_q_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [23:0] d;
@@ -25661,10 +24373,10 @@ module fcc_sort_net__joins_q(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__joins_q
+endmodule // fcc_sort_net__joins_q_k7_668cf05b
 
 
-module fcc_sort_net__jq(clk,rst,push,din,valid,dout,take,level,ram_re,ram_raddr,ram_we,ram_waddr);
+module fcc_sort_net__jq_k7_668cf05b(clk,rst,push,din,valid,dout,take,level,ram_re,ram_raddr,ram_we,ram_waddr);
 
     // Module arguments
     input wire  clk;
@@ -25716,7 +24428,7 @@ module fcc_sort_net__jq(clk,rst,push,din,valid,dout,take,level,ram_re,ram_raddr,
     reg  issue;
 
     // Sub module instances
-    fcc_sort_net__jq__ram ram(
+    fcc_sort_net__jq__ram_k7_668cf05b ram(
         .clk(ram$clk),
         .read_en(ram$read_en),
         .read_addr(ram$read_addr),
@@ -25725,32 +24437,32 @@ module fcc_sort_net__jq(clk,rst,push,din,valid,dout,take,level,ram_re,ram_raddr,
         .write_addr(ram$write_addr),
         .write_data(ram$write_data)
     );
-    fcc_sort_net__jq__wp wp(
+    fcc_sort_net__jq__wp_k7_668cf05b wp(
         .d(wp$d),
         .q(wp$q),
         .clock(wp$clock)
     );
-    fcc_sort_net__jq__rp rp(
+    fcc_sort_net__jq__rp_k7_668cf05b rp(
         .d(rp$d),
         .q(rp$q),
         .clock(rp$clock)
     );
-    fcc_sort_net__jq__tp tp(
+    fcc_sort_net__jq__tp_k7_668cf05b tp(
         .d(tp$d),
         .q(tp$q),
         .clock(tp$clock)
     );
-    fcc_sort_net__jq__level_q level_q(
+    fcc_sort_net__jq__level_q_k7_668cf05b level_q(
         .d(level_q$d),
         .q(level_q$q),
         .clock(level_q$clock)
     );
-    fcc_sort_net__jq__r1 r1(
+    fcc_sort_net__jq__r1_k7_668cf05b r1(
         .d(r1$d),
         .q(r1$q),
         .clock(r1$clock)
     );
-    fcc_sort_net__jq__ov ov(
+    fcc_sort_net__jq__ov_k7_668cf05b ov(
         .d(ov$d),
         .q(ov$q),
         .clock(ov$clock)
@@ -25807,10 +24519,10 @@ module fcc_sort_net__jq(clk,rst,push,din,valid,dout,take,level,ram_re,ram_raddr,
         end
     end
 
-endmodule // fcc_sort_net__jq
+endmodule // fcc_sort_net__jq_k7_668cf05b
 
 
-module fcc_sort_net__jq__level_q(d,q,clock);
+module fcc_sort_net__jq__level_q_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [12:0] d;
@@ -25826,29 +24538,10 @@ module fcc_sort_net__jq__level_q(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__jq__level_q
+endmodule // fcc_sort_net__jq__level_q_k7_668cf05b
 
 
-module fcc_sort_net__jq__ov(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__jq__ov
-
-
-module fcc_sort_net__jq__r1(d,q,clock);
+module fcc_sort_net__jq__ov_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -25864,10 +24557,29 @@ module fcc_sort_net__jq__r1(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__jq__r1
+endmodule // fcc_sort_net__jq__ov_k7_668cf05b
 
 
-module fcc_sort_net__jq__ram(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
+module fcc_sort_net__jq__r1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__jq__r1_k7_668cf05b
+
+
+module fcc_sort_net__jq__ram_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
 
     // Module arguments
     input wire  clk;
@@ -25891,29 +24603,10 @@ module fcc_sort_net__jq__ram(clk,read_en,read_addr,read_data,write_en,write_addr
         end
         read_data <= rd1;
     end
-endmodule // fcc_sort_net__jq__ram
+endmodule // fcc_sort_net__jq__ram_k7_668cf05b
 
 
-module fcc_sort_net__jq__rp(d,q,clock);
-
-    // Module arguments
-    input wire  [12:0] d;
-    output reg  [12:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 13'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__jq__rp
-
-
-module fcc_sort_net__jq__tp(d,q,clock);
+module fcc_sort_net__jq__rp_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [12:0] d;
@@ -25929,10 +24622,10 @@ module fcc_sort_net__jq__tp(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__jq__tp
+endmodule // fcc_sort_net__jq__rp_k7_668cf05b
 
 
-module fcc_sort_net__jq__wp(d,q,clock);
+module fcc_sort_net__jq__tp_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [12:0] d;
@@ -25948,10 +24641,29 @@ module fcc_sort_net__jq__wp(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__jq__wp
+endmodule // fcc_sort_net__jq__tp_k7_668cf05b
 
 
-module fcc_sort_net__ka(x$0,x$1,x$2,x$3,x$4,x$5,x$6,x$7,x$8,x$9,x$10,x$11,x$12,x$13,x$14,x$15,x$16,x$17,x$18,x$19,x$20,any);
+module fcc_sort_net__jq__wp_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 13'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__jq__wp_k7_668cf05b
+
+
+module fcc_sort_net__ka_k7_668cf05b(x$0,x$1,x$2,x$3,x$4,x$5,x$6,x$7,x$8,x$9,x$10,x$11,x$12,x$13,x$14,x$15,x$16,x$17,x$18,x$19,x$20,any);
 
     // Module arguments
     input wire  x$0;
@@ -25981,10 +24693,10 @@ module fcc_sort_net__ka(x$0,x$1,x$2,x$3,x$4,x$5,x$6,x$7,x$8,x$9,x$10,x$11,x$12,x
     always @(*) begin
         any = |{x$20, x$19, x$18, x$17, x$16, x$15, x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
     end
-endmodule // fcc_sort_net__ka
+endmodule // fcc_sort_net__ka_k7_668cf05b
 
 
-module fcc_sort_net__kd__0(d,q,clock);
+module fcc_sort_net__kd__0_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26000,10 +24712,10 @@ module fcc_sort_net__kd__0(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__kd__0
+endmodule // fcc_sort_net__kd__0_k7_668cf05b
 
 
-module fcc_sort_net__kd__1(d,q,clock);
+module fcc_sort_net__kd__1_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26019,10 +24731,10 @@ module fcc_sort_net__kd__1(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__kd__1
+endmodule // fcc_sort_net__kd__1_k7_668cf05b
 
 
-module fcc_sort_net__kd__10(d,q,clock);
+module fcc_sort_net__kd__10_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26038,10 +24750,10 @@ module fcc_sort_net__kd__10(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__kd__10
+endmodule // fcc_sort_net__kd__10_k7_668cf05b
 
 
-module fcc_sort_net__kd__11(d,q,clock);
+module fcc_sort_net__kd__11_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26057,10 +24769,10 @@ module fcc_sort_net__kd__11(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__kd__11
+endmodule // fcc_sort_net__kd__11_k7_668cf05b
 
 
-module fcc_sort_net__kd__12(d,q,clock);
+module fcc_sort_net__kd__12_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26076,10 +24788,10 @@ module fcc_sort_net__kd__12(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__kd__12
+endmodule // fcc_sort_net__kd__12_k7_668cf05b
 
 
-module fcc_sort_net__kd__13(d,q,clock);
+module fcc_sort_net__kd__13_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26095,10 +24807,10 @@ module fcc_sort_net__kd__13(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__kd__13
+endmodule // fcc_sort_net__kd__13_k7_668cf05b
 
 
-module fcc_sort_net__kd__14(d,q,clock);
+module fcc_sort_net__kd__14_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26114,10 +24826,10 @@ module fcc_sort_net__kd__14(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__kd__14
+endmodule // fcc_sort_net__kd__14_k7_668cf05b
 
 
-module fcc_sort_net__kd__15(d,q,clock);
+module fcc_sort_net__kd__15_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26133,10 +24845,10 @@ module fcc_sort_net__kd__15(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__kd__15
+endmodule // fcc_sort_net__kd__15_k7_668cf05b
 
 
-module fcc_sort_net__kd__16(d,q,clock);
+module fcc_sort_net__kd__16_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26152,10 +24864,10 @@ module fcc_sort_net__kd__16(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__kd__16
+endmodule // fcc_sort_net__kd__16_k7_668cf05b
 
 
-module fcc_sort_net__kd__17(d,q,clock);
+module fcc_sort_net__kd__17_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26171,10 +24883,10 @@ module fcc_sort_net__kd__17(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__kd__17
+endmodule // fcc_sort_net__kd__17_k7_668cf05b
 
 
-module fcc_sort_net__kd__18(d,q,clock);
+module fcc_sort_net__kd__18_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26190,10 +24902,10 @@ module fcc_sort_net__kd__18(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__kd__18
+endmodule // fcc_sort_net__kd__18_k7_668cf05b
 
 
-module fcc_sort_net__kd__19(d,q,clock);
+module fcc_sort_net__kd__19_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26209,10 +24921,10 @@ module fcc_sort_net__kd__19(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__kd__19
+endmodule // fcc_sort_net__kd__19_k7_668cf05b
 
 
-module fcc_sort_net__kd__2(d,q,clock);
+module fcc_sort_net__kd__2_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26228,10 +24940,10 @@ module fcc_sort_net__kd__2(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__kd__2
+endmodule // fcc_sort_net__kd__2_k7_668cf05b
 
 
-module fcc_sort_net__kd__20(d,q,clock);
+module fcc_sort_net__kd__20_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26247,10 +24959,10 @@ module fcc_sort_net__kd__20(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__kd__20
+endmodule // fcc_sort_net__kd__20_k7_668cf05b
 
 
-module fcc_sort_net__kd__3(d,q,clock);
+module fcc_sort_net__kd__3_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26266,10 +24978,10 @@ module fcc_sort_net__kd__3(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__kd__3
+endmodule // fcc_sort_net__kd__3_k7_668cf05b
 
 
-module fcc_sort_net__kd__4(d,q,clock);
+module fcc_sort_net__kd__4_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26285,10 +24997,10 @@ module fcc_sort_net__kd__4(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__kd__4
+endmodule // fcc_sort_net__kd__4_k7_668cf05b
 
 
-module fcc_sort_net__kd__5(d,q,clock);
+module fcc_sort_net__kd__5_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26304,10 +25016,10 @@ module fcc_sort_net__kd__5(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__kd__5
+endmodule // fcc_sort_net__kd__5_k7_668cf05b
 
 
-module fcc_sort_net__kd__6(d,q,clock);
+module fcc_sort_net__kd__6_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26323,10 +25035,10 @@ module fcc_sort_net__kd__6(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__kd__6
+endmodule // fcc_sort_net__kd__6_k7_668cf05b
 
 
-module fcc_sort_net__kd__7(d,q,clock);
+module fcc_sort_net__kd__7_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26342,10 +25054,10 @@ module fcc_sort_net__kd__7(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__kd__7
+endmodule // fcc_sort_net__kd__7_k7_668cf05b
 
 
-module fcc_sort_net__kd__8(d,q,clock);
+module fcc_sort_net__kd__8_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26361,10 +25073,10 @@ module fcc_sort_net__kd__8(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__kd__8
+endmodule // fcc_sort_net__kd__8_k7_668cf05b
 
 
-module fcc_sort_net__kd__9(d,q,clock);
+module fcc_sort_net__kd__9_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26380,10 +25092,10 @@ module fcc_sort_net__kd__9(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__kd__9
+endmodule // fcc_sort_net__kd__9_k7_668cf05b
 
 
-module fcc_sort_net__keepq__0(d,q,clock);
+module fcc_sort_net__keepq__0_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26399,10 +25111,10 @@ module fcc_sort_net__keepq__0(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__keepq__0
+endmodule // fcc_sort_net__keepq__0_k7_668cf05b
 
 
-module fcc_sort_net__keepq__1(d,q,clock);
+module fcc_sort_net__keepq__1_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26418,10 +25130,10 @@ module fcc_sort_net__keepq__1(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__keepq__1
+endmodule // fcc_sort_net__keepq__1_k7_668cf05b
 
 
-module fcc_sort_net__keepq__10(d,q,clock);
+module fcc_sort_net__keepq__10_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26437,10 +25149,10 @@ module fcc_sort_net__keepq__10(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__keepq__10
+endmodule // fcc_sort_net__keepq__10_k7_668cf05b
 
 
-module fcc_sort_net__keepq__11(d,q,clock);
+module fcc_sort_net__keepq__11_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26456,10 +25168,10 @@ module fcc_sort_net__keepq__11(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__keepq__11
+endmodule // fcc_sort_net__keepq__11_k7_668cf05b
 
 
-module fcc_sort_net__keepq__12(d,q,clock);
+module fcc_sort_net__keepq__12_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26475,10 +25187,10 @@ module fcc_sort_net__keepq__12(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__keepq__12
+endmodule // fcc_sort_net__keepq__12_k7_668cf05b
 
 
-module fcc_sort_net__keepq__13(d,q,clock);
+module fcc_sort_net__keepq__13_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26494,10 +25206,10 @@ module fcc_sort_net__keepq__13(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__keepq__13
+endmodule // fcc_sort_net__keepq__13_k7_668cf05b
 
 
-module fcc_sort_net__keepq__14(d,q,clock);
+module fcc_sort_net__keepq__14_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26513,10 +25225,10 @@ module fcc_sort_net__keepq__14(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__keepq__14
+endmodule // fcc_sort_net__keepq__14_k7_668cf05b
 
 
-module fcc_sort_net__keepq__15(d,q,clock);
+module fcc_sort_net__keepq__15_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26532,10 +25244,10 @@ module fcc_sort_net__keepq__15(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__keepq__15
+endmodule // fcc_sort_net__keepq__15_k7_668cf05b
 
 
-module fcc_sort_net__keepq__16(d,q,clock);
+module fcc_sort_net__keepq__16_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26551,10 +25263,10 @@ module fcc_sort_net__keepq__16(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__keepq__16
+endmodule // fcc_sort_net__keepq__16_k7_668cf05b
 
 
-module fcc_sort_net__keepq__17(d,q,clock);
+module fcc_sort_net__keepq__17_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26570,10 +25282,10 @@ module fcc_sort_net__keepq__17(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__keepq__17
+endmodule // fcc_sort_net__keepq__17_k7_668cf05b
 
 
-module fcc_sort_net__keepq__18(d,q,clock);
+module fcc_sort_net__keepq__18_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26589,10 +25301,10 @@ module fcc_sort_net__keepq__18(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__keepq__18
+endmodule // fcc_sort_net__keepq__18_k7_668cf05b
 
 
-module fcc_sort_net__keepq__19(d,q,clock);
+module fcc_sort_net__keepq__19_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26608,10 +25320,10 @@ module fcc_sort_net__keepq__19(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__keepq__19
+endmodule // fcc_sort_net__keepq__19_k7_668cf05b
 
 
-module fcc_sort_net__keepq__2(d,q,clock);
+module fcc_sort_net__keepq__2_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26627,10 +25339,10 @@ module fcc_sort_net__keepq__2(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__keepq__2
+endmodule // fcc_sort_net__keepq__2_k7_668cf05b
 
 
-module fcc_sort_net__keepq__20(d,q,clock);
+module fcc_sort_net__keepq__20_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26646,10 +25358,10 @@ module fcc_sort_net__keepq__20(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__keepq__20
+endmodule // fcc_sort_net__keepq__20_k7_668cf05b
 
 
-module fcc_sort_net__keepq__3(d,q,clock);
+module fcc_sort_net__keepq__3_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26665,10 +25377,10 @@ module fcc_sort_net__keepq__3(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__keepq__3
+endmodule // fcc_sort_net__keepq__3_k7_668cf05b
 
 
-module fcc_sort_net__keepq__4(d,q,clock);
+module fcc_sort_net__keepq__4_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26684,10 +25396,10 @@ module fcc_sort_net__keepq__4(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__keepq__4
+endmodule // fcc_sort_net__keepq__4_k7_668cf05b
 
 
-module fcc_sort_net__keepq__5(d,q,clock);
+module fcc_sort_net__keepq__5_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26703,10 +25415,10 @@ module fcc_sort_net__keepq__5(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__keepq__5
+endmodule // fcc_sort_net__keepq__5_k7_668cf05b
 
 
-module fcc_sort_net__keepq__6(d,q,clock);
+module fcc_sort_net__keepq__6_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26722,10 +25434,10 @@ module fcc_sort_net__keepq__6(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__keepq__6
+endmodule // fcc_sort_net__keepq__6_k7_668cf05b
 
 
-module fcc_sort_net__keepq__7(d,q,clock);
+module fcc_sort_net__keepq__7_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26741,10 +25453,10 @@ module fcc_sort_net__keepq__7(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__keepq__7
+endmodule // fcc_sort_net__keepq__7_k7_668cf05b
 
 
-module fcc_sort_net__keepq__8(d,q,clock);
+module fcc_sort_net__keepq__8_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26760,10 +25472,10 @@ module fcc_sort_net__keepq__8(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__keepq__8
+endmodule // fcc_sort_net__keepq__8_k7_668cf05b
 
 
-module fcc_sort_net__keepq__9(d,q,clock);
+module fcc_sort_net__keepq__9_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26779,10 +25491,10 @@ module fcc_sort_net__keepq__9(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__keepq__9
+endmodule // fcc_sort_net__keepq__9_k7_668cf05b
 
 
-module fcc_sort_net__known__0(d,q,clock);
+module fcc_sort_net__known__0_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26798,10 +25510,10 @@ module fcc_sort_net__known__0(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__known__0
+endmodule // fcc_sort_net__known__0_k7_668cf05b
 
 
-module fcc_sort_net__known__1(d,q,clock);
+module fcc_sort_net__known__1_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26817,10 +25529,10 @@ module fcc_sort_net__known__1(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__known__1
+endmodule // fcc_sort_net__known__1_k7_668cf05b
 
 
-module fcc_sort_net__known__10(d,q,clock);
+module fcc_sort_net__known__10_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26836,10 +25548,10 @@ module fcc_sort_net__known__10(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__known__10
+endmodule // fcc_sort_net__known__10_k7_668cf05b
 
 
-module fcc_sort_net__known__11(d,q,clock);
+module fcc_sort_net__known__11_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26855,10 +25567,10 @@ module fcc_sort_net__known__11(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__known__11
+endmodule // fcc_sort_net__known__11_k7_668cf05b
 
 
-module fcc_sort_net__known__12(d,q,clock);
+module fcc_sort_net__known__12_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26874,10 +25586,10 @@ module fcc_sort_net__known__12(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__known__12
+endmodule // fcc_sort_net__known__12_k7_668cf05b
 
 
-module fcc_sort_net__known__13(d,q,clock);
+module fcc_sort_net__known__13_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26893,10 +25605,10 @@ module fcc_sort_net__known__13(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__known__13
+endmodule // fcc_sort_net__known__13_k7_668cf05b
 
 
-module fcc_sort_net__known__14(d,q,clock);
+module fcc_sort_net__known__14_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26912,10 +25624,10 @@ module fcc_sort_net__known__14(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__known__14
+endmodule // fcc_sort_net__known__14_k7_668cf05b
 
 
-module fcc_sort_net__known__15(d,q,clock);
+module fcc_sort_net__known__15_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26931,10 +25643,10 @@ module fcc_sort_net__known__15(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__known__15
+endmodule // fcc_sort_net__known__15_k7_668cf05b
 
 
-module fcc_sort_net__known__16(d,q,clock);
+module fcc_sort_net__known__16_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26950,10 +25662,10 @@ module fcc_sort_net__known__16(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__known__16
+endmodule // fcc_sort_net__known__16_k7_668cf05b
 
 
-module fcc_sort_net__known__17(d,q,clock);
+module fcc_sort_net__known__17_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26969,10 +25681,10 @@ module fcc_sort_net__known__17(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__known__17
+endmodule // fcc_sort_net__known__17_k7_668cf05b
 
 
-module fcc_sort_net__known__18(d,q,clock);
+module fcc_sort_net__known__18_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -26988,10 +25700,10 @@ module fcc_sort_net__known__18(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__known__18
+endmodule // fcc_sort_net__known__18_k7_668cf05b
 
 
-module fcc_sort_net__known__19(d,q,clock);
+module fcc_sort_net__known__19_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27007,10 +25719,10 @@ module fcc_sort_net__known__19(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__known__19
+endmodule // fcc_sort_net__known__19_k7_668cf05b
 
 
-module fcc_sort_net__known__2(d,q,clock);
+module fcc_sort_net__known__2_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27026,10 +25738,10 @@ module fcc_sort_net__known__2(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__known__2
+endmodule // fcc_sort_net__known__2_k7_668cf05b
 
 
-module fcc_sort_net__known__20(d,q,clock);
+module fcc_sort_net__known__20_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27045,10 +25757,10 @@ module fcc_sort_net__known__20(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__known__20
+endmodule // fcc_sort_net__known__20_k7_668cf05b
 
 
-module fcc_sort_net__known__3(d,q,clock);
+module fcc_sort_net__known__3_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27064,10 +25776,10 @@ module fcc_sort_net__known__3(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__known__3
+endmodule // fcc_sort_net__known__3_k7_668cf05b
 
 
-module fcc_sort_net__known__4(d,q,clock);
+module fcc_sort_net__known__4_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27083,10 +25795,10 @@ module fcc_sort_net__known__4(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__known__4
+endmodule // fcc_sort_net__known__4_k7_668cf05b
 
 
-module fcc_sort_net__known__5(d,q,clock);
+module fcc_sort_net__known__5_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27102,10 +25814,10 @@ module fcc_sort_net__known__5(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__known__5
+endmodule // fcc_sort_net__known__5_k7_668cf05b
 
 
-module fcc_sort_net__known__6(d,q,clock);
+module fcc_sort_net__known__6_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27121,10 +25833,10 @@ module fcc_sort_net__known__6(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__known__6
+endmodule // fcc_sort_net__known__6_k7_668cf05b
 
 
-module fcc_sort_net__known__7(d,q,clock);
+module fcc_sort_net__known__7_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27140,10 +25852,10 @@ module fcc_sort_net__known__7(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__known__7
+endmodule // fcc_sort_net__known__7_k7_668cf05b
 
 
-module fcc_sort_net__known__8(d,q,clock);
+module fcc_sort_net__known__8_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27159,10 +25871,10 @@ module fcc_sort_net__known__8(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__known__8
+endmodule // fcc_sort_net__known__8_k7_668cf05b
 
 
-module fcc_sort_net__known__9(d,q,clock);
+module fcc_sort_net__known__9_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27178,10 +25890,10 @@ module fcc_sort_net__known__9(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__known__9
+endmodule // fcc_sort_net__known__9_k7_668cf05b
 
 
-module fcc_sort_net__knq__0(d,q,clock);
+module fcc_sort_net__knq__0_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27197,10 +25909,10 @@ module fcc_sort_net__knq__0(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__0
+endmodule // fcc_sort_net__knq__0_k7_668cf05b
 
 
-module fcc_sort_net__knq__1(d,q,clock);
+module fcc_sort_net__knq__1_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27216,10 +25928,10 @@ module fcc_sort_net__knq__1(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__1
+endmodule // fcc_sort_net__knq__1_k7_668cf05b
 
 
-module fcc_sort_net__knq__10(d,q,clock);
+module fcc_sort_net__knq__10_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27235,10 +25947,10 @@ module fcc_sort_net__knq__10(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__10
+endmodule // fcc_sort_net__knq__10_k7_668cf05b
 
 
-module fcc_sort_net__knq__100(d,q,clock);
+module fcc_sort_net__knq__100_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27254,10 +25966,10 @@ module fcc_sort_net__knq__100(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__100
+endmodule // fcc_sort_net__knq__100_k7_668cf05b
 
 
-module fcc_sort_net__knq__101(d,q,clock);
+module fcc_sort_net__knq__101_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27273,10 +25985,10 @@ module fcc_sort_net__knq__101(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__101
+endmodule // fcc_sort_net__knq__101_k7_668cf05b
 
 
-module fcc_sort_net__knq__102(d,q,clock);
+module fcc_sort_net__knq__102_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27292,10 +26004,10 @@ module fcc_sort_net__knq__102(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__102
+endmodule // fcc_sort_net__knq__102_k7_668cf05b
 
 
-module fcc_sort_net__knq__103(d,q,clock);
+module fcc_sort_net__knq__103_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27311,10 +26023,10 @@ module fcc_sort_net__knq__103(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__103
+endmodule // fcc_sort_net__knq__103_k7_668cf05b
 
 
-module fcc_sort_net__knq__104(d,q,clock);
+module fcc_sort_net__knq__104_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27330,10 +26042,10 @@ module fcc_sort_net__knq__104(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__104
+endmodule // fcc_sort_net__knq__104_k7_668cf05b
 
 
-module fcc_sort_net__knq__105(d,q,clock);
+module fcc_sort_net__knq__105_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27349,10 +26061,10 @@ module fcc_sort_net__knq__105(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__105
+endmodule // fcc_sort_net__knq__105_k7_668cf05b
 
 
-module fcc_sort_net__knq__106(d,q,clock);
+module fcc_sort_net__knq__106_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27368,10 +26080,10 @@ module fcc_sort_net__knq__106(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__106
+endmodule // fcc_sort_net__knq__106_k7_668cf05b
 
 
-module fcc_sort_net__knq__107(d,q,clock);
+module fcc_sort_net__knq__107_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27387,10 +26099,10 @@ module fcc_sort_net__knq__107(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__107
+endmodule // fcc_sort_net__knq__107_k7_668cf05b
 
 
-module fcc_sort_net__knq__108(d,q,clock);
+module fcc_sort_net__knq__108_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27406,10 +26118,10 @@ module fcc_sort_net__knq__108(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__108
+endmodule // fcc_sort_net__knq__108_k7_668cf05b
 
 
-module fcc_sort_net__knq__109(d,q,clock);
+module fcc_sort_net__knq__109_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27425,10 +26137,10 @@ module fcc_sort_net__knq__109(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__109
+endmodule // fcc_sort_net__knq__109_k7_668cf05b
 
 
-module fcc_sort_net__knq__11(d,q,clock);
+module fcc_sort_net__knq__11_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27444,10 +26156,10 @@ module fcc_sort_net__knq__11(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__11
+endmodule // fcc_sort_net__knq__11_k7_668cf05b
 
 
-module fcc_sort_net__knq__110(d,q,clock);
+module fcc_sort_net__knq__110_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27463,10 +26175,10 @@ module fcc_sort_net__knq__110(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__110
+endmodule // fcc_sort_net__knq__110_k7_668cf05b
 
 
-module fcc_sort_net__knq__111(d,q,clock);
+module fcc_sort_net__knq__111_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27482,10 +26194,10 @@ module fcc_sort_net__knq__111(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__111
+endmodule // fcc_sort_net__knq__111_k7_668cf05b
 
 
-module fcc_sort_net__knq__112(d,q,clock);
+module fcc_sort_net__knq__112_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27501,10 +26213,10 @@ module fcc_sort_net__knq__112(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__112
+endmodule // fcc_sort_net__knq__112_k7_668cf05b
 
 
-module fcc_sort_net__knq__113(d,q,clock);
+module fcc_sort_net__knq__113_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27520,10 +26232,10 @@ module fcc_sort_net__knq__113(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__113
+endmodule // fcc_sort_net__knq__113_k7_668cf05b
 
 
-module fcc_sort_net__knq__114(d,q,clock);
+module fcc_sort_net__knq__114_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27539,10 +26251,10 @@ module fcc_sort_net__knq__114(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__114
+endmodule // fcc_sort_net__knq__114_k7_668cf05b
 
 
-module fcc_sort_net__knq__115(d,q,clock);
+module fcc_sort_net__knq__115_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27558,10 +26270,10 @@ module fcc_sort_net__knq__115(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__115
+endmodule // fcc_sort_net__knq__115_k7_668cf05b
 
 
-module fcc_sort_net__knq__116(d,q,clock);
+module fcc_sort_net__knq__116_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27577,10 +26289,10 @@ module fcc_sort_net__knq__116(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__116
+endmodule // fcc_sort_net__knq__116_k7_668cf05b
 
 
-module fcc_sort_net__knq__117(d,q,clock);
+module fcc_sort_net__knq__117_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27596,10 +26308,10 @@ module fcc_sort_net__knq__117(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__117
+endmodule // fcc_sort_net__knq__117_k7_668cf05b
 
 
-module fcc_sort_net__knq__118(d,q,clock);
+module fcc_sort_net__knq__118_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27615,10 +26327,10 @@ module fcc_sort_net__knq__118(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__118
+endmodule // fcc_sort_net__knq__118_k7_668cf05b
 
 
-module fcc_sort_net__knq__119(d,q,clock);
+module fcc_sort_net__knq__119_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27634,10 +26346,10 @@ module fcc_sort_net__knq__119(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__119
+endmodule // fcc_sort_net__knq__119_k7_668cf05b
 
 
-module fcc_sort_net__knq__12(d,q,clock);
+module fcc_sort_net__knq__12_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27653,10 +26365,10 @@ module fcc_sort_net__knq__12(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__12
+endmodule // fcc_sort_net__knq__12_k7_668cf05b
 
 
-module fcc_sort_net__knq__120(d,q,clock);
+module fcc_sort_net__knq__120_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27672,10 +26384,10 @@ module fcc_sort_net__knq__120(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__120
+endmodule // fcc_sort_net__knq__120_k7_668cf05b
 
 
-module fcc_sort_net__knq__121(d,q,clock);
+module fcc_sort_net__knq__121_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27691,10 +26403,10 @@ module fcc_sort_net__knq__121(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__121
+endmodule // fcc_sort_net__knq__121_k7_668cf05b
 
 
-module fcc_sort_net__knq__122(d,q,clock);
+module fcc_sort_net__knq__122_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27710,10 +26422,10 @@ module fcc_sort_net__knq__122(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__122
+endmodule // fcc_sort_net__knq__122_k7_668cf05b
 
 
-module fcc_sort_net__knq__123(d,q,clock);
+module fcc_sort_net__knq__123_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27729,10 +26441,10 @@ module fcc_sort_net__knq__123(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__123
+endmodule // fcc_sort_net__knq__123_k7_668cf05b
 
 
-module fcc_sort_net__knq__124(d,q,clock);
+module fcc_sort_net__knq__124_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27748,10 +26460,10 @@ module fcc_sort_net__knq__124(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__124
+endmodule // fcc_sort_net__knq__124_k7_668cf05b
 
 
-module fcc_sort_net__knq__125(d,q,clock);
+module fcc_sort_net__knq__125_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27767,10 +26479,10 @@ module fcc_sort_net__knq__125(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__125
+endmodule // fcc_sort_net__knq__125_k7_668cf05b
 
 
-module fcc_sort_net__knq__13(d,q,clock);
+module fcc_sort_net__knq__13_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27786,10 +26498,10 @@ module fcc_sort_net__knq__13(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__13
+endmodule // fcc_sort_net__knq__13_k7_668cf05b
 
 
-module fcc_sort_net__knq__14(d,q,clock);
+module fcc_sort_net__knq__14_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27805,10 +26517,10 @@ module fcc_sort_net__knq__14(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__14
+endmodule // fcc_sort_net__knq__14_k7_668cf05b
 
 
-module fcc_sort_net__knq__15(d,q,clock);
+module fcc_sort_net__knq__15_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27824,10 +26536,10 @@ module fcc_sort_net__knq__15(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__15
+endmodule // fcc_sort_net__knq__15_k7_668cf05b
 
 
-module fcc_sort_net__knq__16(d,q,clock);
+module fcc_sort_net__knq__16_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27843,10 +26555,10 @@ module fcc_sort_net__knq__16(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__16
+endmodule // fcc_sort_net__knq__16_k7_668cf05b
 
 
-module fcc_sort_net__knq__17(d,q,clock);
+module fcc_sort_net__knq__17_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27862,10 +26574,10 @@ module fcc_sort_net__knq__17(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__17
+endmodule // fcc_sort_net__knq__17_k7_668cf05b
 
 
-module fcc_sort_net__knq__18(d,q,clock);
+module fcc_sort_net__knq__18_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27881,10 +26593,10 @@ module fcc_sort_net__knq__18(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__18
+endmodule // fcc_sort_net__knq__18_k7_668cf05b
 
 
-module fcc_sort_net__knq__19(d,q,clock);
+module fcc_sort_net__knq__19_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27900,10 +26612,10 @@ module fcc_sort_net__knq__19(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__19
+endmodule // fcc_sort_net__knq__19_k7_668cf05b
 
 
-module fcc_sort_net__knq__2(d,q,clock);
+module fcc_sort_net__knq__2_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27919,10 +26631,10 @@ module fcc_sort_net__knq__2(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__2
+endmodule // fcc_sort_net__knq__2_k7_668cf05b
 
 
-module fcc_sort_net__knq__20(d,q,clock);
+module fcc_sort_net__knq__20_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27938,10 +26650,10 @@ module fcc_sort_net__knq__20(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__20
+endmodule // fcc_sort_net__knq__20_k7_668cf05b
 
 
-module fcc_sort_net__knq__21(d,q,clock);
+module fcc_sort_net__knq__21_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27957,10 +26669,10 @@ module fcc_sort_net__knq__21(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__21
+endmodule // fcc_sort_net__knq__21_k7_668cf05b
 
 
-module fcc_sort_net__knq__22(d,q,clock);
+module fcc_sort_net__knq__22_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27976,10 +26688,10 @@ module fcc_sort_net__knq__22(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__22
+endmodule // fcc_sort_net__knq__22_k7_668cf05b
 
 
-module fcc_sort_net__knq__23(d,q,clock);
+module fcc_sort_net__knq__23_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -27995,10 +26707,10 @@ module fcc_sort_net__knq__23(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__23
+endmodule // fcc_sort_net__knq__23_k7_668cf05b
 
 
-module fcc_sort_net__knq__24(d,q,clock);
+module fcc_sort_net__knq__24_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28014,10 +26726,10 @@ module fcc_sort_net__knq__24(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__24
+endmodule // fcc_sort_net__knq__24_k7_668cf05b
 
 
-module fcc_sort_net__knq__25(d,q,clock);
+module fcc_sort_net__knq__25_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28033,10 +26745,10 @@ module fcc_sort_net__knq__25(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__25
+endmodule // fcc_sort_net__knq__25_k7_668cf05b
 
 
-module fcc_sort_net__knq__26(d,q,clock);
+module fcc_sort_net__knq__26_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28052,10 +26764,10 @@ module fcc_sort_net__knq__26(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__26
+endmodule // fcc_sort_net__knq__26_k7_668cf05b
 
 
-module fcc_sort_net__knq__27(d,q,clock);
+module fcc_sort_net__knq__27_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28071,10 +26783,10 @@ module fcc_sort_net__knq__27(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__27
+endmodule // fcc_sort_net__knq__27_k7_668cf05b
 
 
-module fcc_sort_net__knq__28(d,q,clock);
+module fcc_sort_net__knq__28_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28090,10 +26802,10 @@ module fcc_sort_net__knq__28(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__28
+endmodule // fcc_sort_net__knq__28_k7_668cf05b
 
 
-module fcc_sort_net__knq__29(d,q,clock);
+module fcc_sort_net__knq__29_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28109,10 +26821,10 @@ module fcc_sort_net__knq__29(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__29
+endmodule // fcc_sort_net__knq__29_k7_668cf05b
 
 
-module fcc_sort_net__knq__3(d,q,clock);
+module fcc_sort_net__knq__3_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28128,10 +26840,10 @@ module fcc_sort_net__knq__3(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__3
+endmodule // fcc_sort_net__knq__3_k7_668cf05b
 
 
-module fcc_sort_net__knq__30(d,q,clock);
+module fcc_sort_net__knq__30_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28147,10 +26859,10 @@ module fcc_sort_net__knq__30(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__30
+endmodule // fcc_sort_net__knq__30_k7_668cf05b
 
 
-module fcc_sort_net__knq__31(d,q,clock);
+module fcc_sort_net__knq__31_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28166,10 +26878,10 @@ module fcc_sort_net__knq__31(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__31
+endmodule // fcc_sort_net__knq__31_k7_668cf05b
 
 
-module fcc_sort_net__knq__32(d,q,clock);
+module fcc_sort_net__knq__32_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28185,10 +26897,10 @@ module fcc_sort_net__knq__32(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__32
+endmodule // fcc_sort_net__knq__32_k7_668cf05b
 
 
-module fcc_sort_net__knq__33(d,q,clock);
+module fcc_sort_net__knq__33_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28204,10 +26916,10 @@ module fcc_sort_net__knq__33(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__33
+endmodule // fcc_sort_net__knq__33_k7_668cf05b
 
 
-module fcc_sort_net__knq__34(d,q,clock);
+module fcc_sort_net__knq__34_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28223,10 +26935,10 @@ module fcc_sort_net__knq__34(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__34
+endmodule // fcc_sort_net__knq__34_k7_668cf05b
 
 
-module fcc_sort_net__knq__35(d,q,clock);
+module fcc_sort_net__knq__35_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28242,10 +26954,10 @@ module fcc_sort_net__knq__35(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__35
+endmodule // fcc_sort_net__knq__35_k7_668cf05b
 
 
-module fcc_sort_net__knq__36(d,q,clock);
+module fcc_sort_net__knq__36_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28261,10 +26973,10 @@ module fcc_sort_net__knq__36(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__36
+endmodule // fcc_sort_net__knq__36_k7_668cf05b
 
 
-module fcc_sort_net__knq__37(d,q,clock);
+module fcc_sort_net__knq__37_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28280,10 +26992,10 @@ module fcc_sort_net__knq__37(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__37
+endmodule // fcc_sort_net__knq__37_k7_668cf05b
 
 
-module fcc_sort_net__knq__38(d,q,clock);
+module fcc_sort_net__knq__38_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28299,10 +27011,10 @@ module fcc_sort_net__knq__38(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__38
+endmodule // fcc_sort_net__knq__38_k7_668cf05b
 
 
-module fcc_sort_net__knq__39(d,q,clock);
+module fcc_sort_net__knq__39_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28318,10 +27030,10 @@ module fcc_sort_net__knq__39(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__39
+endmodule // fcc_sort_net__knq__39_k7_668cf05b
 
 
-module fcc_sort_net__knq__4(d,q,clock);
+module fcc_sort_net__knq__4_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28337,10 +27049,10 @@ module fcc_sort_net__knq__4(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__4
+endmodule // fcc_sort_net__knq__4_k7_668cf05b
 
 
-module fcc_sort_net__knq__40(d,q,clock);
+module fcc_sort_net__knq__40_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28356,10 +27068,10 @@ module fcc_sort_net__knq__40(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__40
+endmodule // fcc_sort_net__knq__40_k7_668cf05b
 
 
-module fcc_sort_net__knq__41(d,q,clock);
+module fcc_sort_net__knq__41_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28375,10 +27087,10 @@ module fcc_sort_net__knq__41(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__41
+endmodule // fcc_sort_net__knq__41_k7_668cf05b
 
 
-module fcc_sort_net__knq__42(d,q,clock);
+module fcc_sort_net__knq__42_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28394,10 +27106,10 @@ module fcc_sort_net__knq__42(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__42
+endmodule // fcc_sort_net__knq__42_k7_668cf05b
 
 
-module fcc_sort_net__knq__43(d,q,clock);
+module fcc_sort_net__knq__43_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28413,10 +27125,10 @@ module fcc_sort_net__knq__43(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__43
+endmodule // fcc_sort_net__knq__43_k7_668cf05b
 
 
-module fcc_sort_net__knq__44(d,q,clock);
+module fcc_sort_net__knq__44_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28432,10 +27144,10 @@ module fcc_sort_net__knq__44(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__44
+endmodule // fcc_sort_net__knq__44_k7_668cf05b
 
 
-module fcc_sort_net__knq__45(d,q,clock);
+module fcc_sort_net__knq__45_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28451,10 +27163,10 @@ module fcc_sort_net__knq__45(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__45
+endmodule // fcc_sort_net__knq__45_k7_668cf05b
 
 
-module fcc_sort_net__knq__46(d,q,clock);
+module fcc_sort_net__knq__46_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28470,10 +27182,10 @@ module fcc_sort_net__knq__46(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__46
+endmodule // fcc_sort_net__knq__46_k7_668cf05b
 
 
-module fcc_sort_net__knq__47(d,q,clock);
+module fcc_sort_net__knq__47_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28489,10 +27201,10 @@ module fcc_sort_net__knq__47(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__47
+endmodule // fcc_sort_net__knq__47_k7_668cf05b
 
 
-module fcc_sort_net__knq__48(d,q,clock);
+module fcc_sort_net__knq__48_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28508,10 +27220,10 @@ module fcc_sort_net__knq__48(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__48
+endmodule // fcc_sort_net__knq__48_k7_668cf05b
 
 
-module fcc_sort_net__knq__49(d,q,clock);
+module fcc_sort_net__knq__49_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28527,10 +27239,10 @@ module fcc_sort_net__knq__49(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__49
+endmodule // fcc_sort_net__knq__49_k7_668cf05b
 
 
-module fcc_sort_net__knq__5(d,q,clock);
+module fcc_sort_net__knq__5_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28546,10 +27258,10 @@ module fcc_sort_net__knq__5(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__5
+endmodule // fcc_sort_net__knq__5_k7_668cf05b
 
 
-module fcc_sort_net__knq__50(d,q,clock);
+module fcc_sort_net__knq__50_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28565,10 +27277,10 @@ module fcc_sort_net__knq__50(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__50
+endmodule // fcc_sort_net__knq__50_k7_668cf05b
 
 
-module fcc_sort_net__knq__51(d,q,clock);
+module fcc_sort_net__knq__51_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28584,10 +27296,10 @@ module fcc_sort_net__knq__51(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__51
+endmodule // fcc_sort_net__knq__51_k7_668cf05b
 
 
-module fcc_sort_net__knq__52(d,q,clock);
+module fcc_sort_net__knq__52_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28603,10 +27315,10 @@ module fcc_sort_net__knq__52(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__52
+endmodule // fcc_sort_net__knq__52_k7_668cf05b
 
 
-module fcc_sort_net__knq__53(d,q,clock);
+module fcc_sort_net__knq__53_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28622,10 +27334,10 @@ module fcc_sort_net__knq__53(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__53
+endmodule // fcc_sort_net__knq__53_k7_668cf05b
 
 
-module fcc_sort_net__knq__54(d,q,clock);
+module fcc_sort_net__knq__54_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28641,10 +27353,10 @@ module fcc_sort_net__knq__54(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__54
+endmodule // fcc_sort_net__knq__54_k7_668cf05b
 
 
-module fcc_sort_net__knq__55(d,q,clock);
+module fcc_sort_net__knq__55_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28660,10 +27372,10 @@ module fcc_sort_net__knq__55(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__55
+endmodule // fcc_sort_net__knq__55_k7_668cf05b
 
 
-module fcc_sort_net__knq__56(d,q,clock);
+module fcc_sort_net__knq__56_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28679,10 +27391,10 @@ module fcc_sort_net__knq__56(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__56
+endmodule // fcc_sort_net__knq__56_k7_668cf05b
 
 
-module fcc_sort_net__knq__57(d,q,clock);
+module fcc_sort_net__knq__57_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28698,10 +27410,10 @@ module fcc_sort_net__knq__57(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__57
+endmodule // fcc_sort_net__knq__57_k7_668cf05b
 
 
-module fcc_sort_net__knq__58(d,q,clock);
+module fcc_sort_net__knq__58_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28717,10 +27429,10 @@ module fcc_sort_net__knq__58(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__58
+endmodule // fcc_sort_net__knq__58_k7_668cf05b
 
 
-module fcc_sort_net__knq__59(d,q,clock);
+module fcc_sort_net__knq__59_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28736,10 +27448,10 @@ module fcc_sort_net__knq__59(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__59
+endmodule // fcc_sort_net__knq__59_k7_668cf05b
 
 
-module fcc_sort_net__knq__6(d,q,clock);
+module fcc_sort_net__knq__6_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28755,10 +27467,10 @@ module fcc_sort_net__knq__6(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__6
+endmodule // fcc_sort_net__knq__6_k7_668cf05b
 
 
-module fcc_sort_net__knq__60(d,q,clock);
+module fcc_sort_net__knq__60_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28774,10 +27486,10 @@ module fcc_sort_net__knq__60(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__60
+endmodule // fcc_sort_net__knq__60_k7_668cf05b
 
 
-module fcc_sort_net__knq__61(d,q,clock);
+module fcc_sort_net__knq__61_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28793,10 +27505,10 @@ module fcc_sort_net__knq__61(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__61
+endmodule // fcc_sort_net__knq__61_k7_668cf05b
 
 
-module fcc_sort_net__knq__62(d,q,clock);
+module fcc_sort_net__knq__62_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28812,10 +27524,10 @@ module fcc_sort_net__knq__62(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__62
+endmodule // fcc_sort_net__knq__62_k7_668cf05b
 
 
-module fcc_sort_net__knq__63(d,q,clock);
+module fcc_sort_net__knq__63_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28831,10 +27543,10 @@ module fcc_sort_net__knq__63(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__63
+endmodule // fcc_sort_net__knq__63_k7_668cf05b
 
 
-module fcc_sort_net__knq__64(d,q,clock);
+module fcc_sort_net__knq__64_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28850,10 +27562,10 @@ module fcc_sort_net__knq__64(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__64
+endmodule // fcc_sort_net__knq__64_k7_668cf05b
 
 
-module fcc_sort_net__knq__65(d,q,clock);
+module fcc_sort_net__knq__65_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28869,10 +27581,10 @@ module fcc_sort_net__knq__65(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__65
+endmodule // fcc_sort_net__knq__65_k7_668cf05b
 
 
-module fcc_sort_net__knq__66(d,q,clock);
+module fcc_sort_net__knq__66_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28888,10 +27600,10 @@ module fcc_sort_net__knq__66(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__66
+endmodule // fcc_sort_net__knq__66_k7_668cf05b
 
 
-module fcc_sort_net__knq__67(d,q,clock);
+module fcc_sort_net__knq__67_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28907,10 +27619,10 @@ module fcc_sort_net__knq__67(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__67
+endmodule // fcc_sort_net__knq__67_k7_668cf05b
 
 
-module fcc_sort_net__knq__68(d,q,clock);
+module fcc_sort_net__knq__68_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28926,10 +27638,10 @@ module fcc_sort_net__knq__68(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__68
+endmodule // fcc_sort_net__knq__68_k7_668cf05b
 
 
-module fcc_sort_net__knq__69(d,q,clock);
+module fcc_sort_net__knq__69_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28945,10 +27657,10 @@ module fcc_sort_net__knq__69(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__69
+endmodule // fcc_sort_net__knq__69_k7_668cf05b
 
 
-module fcc_sort_net__knq__7(d,q,clock);
+module fcc_sort_net__knq__7_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28964,10 +27676,10 @@ module fcc_sort_net__knq__7(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__7
+endmodule // fcc_sort_net__knq__7_k7_668cf05b
 
 
-module fcc_sort_net__knq__70(d,q,clock);
+module fcc_sort_net__knq__70_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -28983,10 +27695,10 @@ module fcc_sort_net__knq__70(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__70
+endmodule // fcc_sort_net__knq__70_k7_668cf05b
 
 
-module fcc_sort_net__knq__71(d,q,clock);
+module fcc_sort_net__knq__71_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -29002,10 +27714,10 @@ module fcc_sort_net__knq__71(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__71
+endmodule // fcc_sort_net__knq__71_k7_668cf05b
 
 
-module fcc_sort_net__knq__72(d,q,clock);
+module fcc_sort_net__knq__72_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -29021,10 +27733,10 @@ module fcc_sort_net__knq__72(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__72
+endmodule // fcc_sort_net__knq__72_k7_668cf05b
 
 
-module fcc_sort_net__knq__73(d,q,clock);
+module fcc_sort_net__knq__73_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -29040,10 +27752,10 @@ module fcc_sort_net__knq__73(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__73
+endmodule // fcc_sort_net__knq__73_k7_668cf05b
 
 
-module fcc_sort_net__knq__74(d,q,clock);
+module fcc_sort_net__knq__74_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -29059,10 +27771,10 @@ module fcc_sort_net__knq__74(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__74
+endmodule // fcc_sort_net__knq__74_k7_668cf05b
 
 
-module fcc_sort_net__knq__75(d,q,clock);
+module fcc_sort_net__knq__75_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -29078,10 +27790,10 @@ module fcc_sort_net__knq__75(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__75
+endmodule // fcc_sort_net__knq__75_k7_668cf05b
 
 
-module fcc_sort_net__knq__76(d,q,clock);
+module fcc_sort_net__knq__76_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -29097,10 +27809,10 @@ module fcc_sort_net__knq__76(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__76
+endmodule // fcc_sort_net__knq__76_k7_668cf05b
 
 
-module fcc_sort_net__knq__77(d,q,clock);
+module fcc_sort_net__knq__77_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -29116,10 +27828,10 @@ module fcc_sort_net__knq__77(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__77
+endmodule // fcc_sort_net__knq__77_k7_668cf05b
 
 
-module fcc_sort_net__knq__78(d,q,clock);
+module fcc_sort_net__knq__78_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -29135,10 +27847,10 @@ module fcc_sort_net__knq__78(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__78
+endmodule // fcc_sort_net__knq__78_k7_668cf05b
 
 
-module fcc_sort_net__knq__79(d,q,clock);
+module fcc_sort_net__knq__79_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -29154,10 +27866,10 @@ module fcc_sort_net__knq__79(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__79
+endmodule // fcc_sort_net__knq__79_k7_668cf05b
 
 
-module fcc_sort_net__knq__8(d,q,clock);
+module fcc_sort_net__knq__8_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -29173,10 +27885,10 @@ module fcc_sort_net__knq__8(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__8
+endmodule // fcc_sort_net__knq__8_k7_668cf05b
 
 
-module fcc_sort_net__knq__80(d,q,clock);
+module fcc_sort_net__knq__80_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -29192,10 +27904,10 @@ module fcc_sort_net__knq__80(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__80
+endmodule // fcc_sort_net__knq__80_k7_668cf05b
 
 
-module fcc_sort_net__knq__81(d,q,clock);
+module fcc_sort_net__knq__81_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -29211,10 +27923,10 @@ module fcc_sort_net__knq__81(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__81
+endmodule // fcc_sort_net__knq__81_k7_668cf05b
 
 
-module fcc_sort_net__knq__82(d,q,clock);
+module fcc_sort_net__knq__82_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -29230,10 +27942,10 @@ module fcc_sort_net__knq__82(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__82
+endmodule // fcc_sort_net__knq__82_k7_668cf05b
 
 
-module fcc_sort_net__knq__83(d,q,clock);
+module fcc_sort_net__knq__83_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -29249,10 +27961,10 @@ module fcc_sort_net__knq__83(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__83
+endmodule // fcc_sort_net__knq__83_k7_668cf05b
 
 
-module fcc_sort_net__knq__84(d,q,clock);
+module fcc_sort_net__knq__84_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -29268,10 +27980,10 @@ module fcc_sort_net__knq__84(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__84
+endmodule // fcc_sort_net__knq__84_k7_668cf05b
 
 
-module fcc_sort_net__knq__85(d,q,clock);
+module fcc_sort_net__knq__85_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -29287,10 +27999,10 @@ module fcc_sort_net__knq__85(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__85
+endmodule // fcc_sort_net__knq__85_k7_668cf05b
 
 
-module fcc_sort_net__knq__86(d,q,clock);
+module fcc_sort_net__knq__86_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -29306,10 +28018,10 @@ module fcc_sort_net__knq__86(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__86
+endmodule // fcc_sort_net__knq__86_k7_668cf05b
 
 
-module fcc_sort_net__knq__87(d,q,clock);
+module fcc_sort_net__knq__87_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -29325,10 +28037,10 @@ module fcc_sort_net__knq__87(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__87
+endmodule // fcc_sort_net__knq__87_k7_668cf05b
 
 
-module fcc_sort_net__knq__88(d,q,clock);
+module fcc_sort_net__knq__88_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -29344,10 +28056,10 @@ module fcc_sort_net__knq__88(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__88
+endmodule // fcc_sort_net__knq__88_k7_668cf05b
 
 
-module fcc_sort_net__knq__89(d,q,clock);
+module fcc_sort_net__knq__89_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -29363,10 +28075,10 @@ module fcc_sort_net__knq__89(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__89
+endmodule // fcc_sort_net__knq__89_k7_668cf05b
 
 
-module fcc_sort_net__knq__9(d,q,clock);
+module fcc_sort_net__knq__9_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -29382,10 +28094,10 @@ module fcc_sort_net__knq__9(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__9
+endmodule // fcc_sort_net__knq__9_k7_668cf05b
 
 
-module fcc_sort_net__knq__90(d,q,clock);
+module fcc_sort_net__knq__90_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -29401,10 +28113,10 @@ module fcc_sort_net__knq__90(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__90
+endmodule // fcc_sort_net__knq__90_k7_668cf05b
 
 
-module fcc_sort_net__knq__91(d,q,clock);
+module fcc_sort_net__knq__91_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -29420,10 +28132,10 @@ module fcc_sort_net__knq__91(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__91
+endmodule // fcc_sort_net__knq__91_k7_668cf05b
 
 
-module fcc_sort_net__knq__92(d,q,clock);
+module fcc_sort_net__knq__92_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -29439,10 +28151,10 @@ module fcc_sort_net__knq__92(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__92
+endmodule // fcc_sort_net__knq__92_k7_668cf05b
 
 
-module fcc_sort_net__knq__93(d,q,clock);
+module fcc_sort_net__knq__93_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -29458,10 +28170,10 @@ module fcc_sort_net__knq__93(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__93
+endmodule // fcc_sort_net__knq__93_k7_668cf05b
 
 
-module fcc_sort_net__knq__94(d,q,clock);
+module fcc_sort_net__knq__94_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -29477,10 +28189,10 @@ module fcc_sort_net__knq__94(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__94
+endmodule // fcc_sort_net__knq__94_k7_668cf05b
 
 
-module fcc_sort_net__knq__95(d,q,clock);
+module fcc_sort_net__knq__95_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -29496,10 +28208,10 @@ module fcc_sort_net__knq__95(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__95
+endmodule // fcc_sort_net__knq__95_k7_668cf05b
 
 
-module fcc_sort_net__knq__96(d,q,clock);
+module fcc_sort_net__knq__96_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -29515,10 +28227,10 @@ module fcc_sort_net__knq__96(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__96
+endmodule // fcc_sort_net__knq__96_k7_668cf05b
 
 
-module fcc_sort_net__knq__97(d,q,clock);
+module fcc_sort_net__knq__97_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -29534,10 +28246,10 @@ module fcc_sort_net__knq__97(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__97
+endmodule // fcc_sort_net__knq__97_k7_668cf05b
 
 
-module fcc_sort_net__knq__98(d,q,clock);
+module fcc_sort_net__knq__98_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -29553,10 +28265,10 @@ module fcc_sort_net__knq__98(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__98
+endmodule // fcc_sort_net__knq__98_k7_668cf05b
 
 
-module fcc_sort_net__knq__99(d,q,clock);
+module fcc_sort_net__knq__99_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -29572,10 +28284,10 @@ module fcc_sort_net__knq__99(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__knq__99
+endmodule // fcc_sort_net__knq__99_k7_668cf05b
 
 
-module fcc_sort_net__kp(x$0,x$1,x$2,x$3,x$4,x$5,x$6,x$7,x$8,x$9,x$10,x$11,x$12,x$13,x$14,x$15,x$16,x$17,x$18,x$19,x$20,pre$0,pre$1,pre$2,pre$3,pre$4,pre$5,pre$6,pre$7,pre$8,pre$9,pre$10,pre$11,pre$12,pre$13,pre$14,pre$15,pre$16,pre$17,pre$18,pre$19,pre$20);
+module fcc_sort_net__kp_k7_668cf05b(x$0,x$1,x$2,x$3,x$4,x$5,x$6,x$7,x$8,x$9,x$10,x$11,x$12,x$13,x$14,x$15,x$16,x$17,x$18,x$19,x$20,pre$0,pre$1,pre$2,pre$3,pre$4,pre$5,pre$6,pre$7,pre$8,pre$9,pre$10,pre$11,pre$12,pre$13,pre$14,pre$15,pre$16,pre$17,pre$18,pre$19,pre$20);
 
     // Module arguments
     input wire  x$0;
@@ -29649,10 +28361,10 @@ module fcc_sort_net__kp(x$0,x$1,x$2,x$3,x$4,x$5,x$6,x$7,x$8,x$9,x$10,x$11,x$12,x
         pre$19 = |{x$18, x$17, x$16, x$15, x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
         pre$20 = |{x$19, x$18, x$17, x$16, x$15, x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
     end
-endmodule // fcc_sort_net__kp
+endmodule // fcc_sort_net__kp_k7_668cf05b
 
 
-module fcc_sort_net__last_a(d,q,clock);
+module fcc_sort_net__last_a_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -29668,29 +28380,10 @@ module fcc_sort_net__last_a(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__last_a
+endmodule // fcc_sort_net__last_a_k7_668cf05b
 
 
-module fcc_sort_net__last_av(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__last_av
-
-
-module fcc_sort_net__ld(d,q,clock);
+module fcc_sort_net__last_av_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -29706,29 +28399,10 @@ module fcc_sort_net__ld(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ld
+endmodule // fcc_sort_net__last_av_k7_668cf05b
 
 
-module fcc_sort_net__ldone_q(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__ldone_q
-
-
-module fcc_sort_net__m__0(d,q,clock);
+module fcc_sort_net__ld_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -29744,29 +28418,10 @@ module fcc_sort_net__m__0(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__m__0
+endmodule // fcc_sort_net__ld_k7_668cf05b
 
 
-module fcc_sort_net__m__1(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__m__1
-
-
-module fcc_sort_net__m__10(d,q,clock);
+module fcc_sort_net__ldone_q_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -29782,29 +28437,10 @@ module fcc_sort_net__m__10(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__m__10
+endmodule // fcc_sort_net__ldone_q_k7_668cf05b
 
 
-module fcc_sort_net__m__11(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__m__11
-
-
-module fcc_sort_net__m__12(d,q,clock);
+module fcc_sort_net__m__0_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -29820,29 +28456,10 @@ module fcc_sort_net__m__12(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__m__12
+endmodule // fcc_sort_net__m__0_k7_668cf05b
 
 
-module fcc_sort_net__m__13(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__m__13
-
-
-module fcc_sort_net__m__14(d,q,clock);
+module fcc_sort_net__m__1_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -29858,29 +28475,10 @@ module fcc_sort_net__m__14(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__m__14
+endmodule // fcc_sort_net__m__1_k7_668cf05b
 
 
-module fcc_sort_net__m__15(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__m__15
-
-
-module fcc_sort_net__m__16(d,q,clock);
+module fcc_sort_net__m__10_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -29896,29 +28494,10 @@ module fcc_sort_net__m__16(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__m__16
+endmodule // fcc_sort_net__m__10_k7_668cf05b
 
 
-module fcc_sort_net__m__17(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__m__17
-
-
-module fcc_sort_net__m__18(d,q,clock);
+module fcc_sort_net__m__11_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -29934,29 +28513,10 @@ module fcc_sort_net__m__18(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__m__18
+endmodule // fcc_sort_net__m__11_k7_668cf05b
 
 
-module fcc_sort_net__m__19(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__m__19
-
-
-module fcc_sort_net__m__2(d,q,clock);
+module fcc_sort_net__m__12_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -29972,29 +28532,10 @@ module fcc_sort_net__m__2(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__m__2
+endmodule // fcc_sort_net__m__12_k7_668cf05b
 
 
-module fcc_sort_net__m__20(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__m__20
-
-
-module fcc_sort_net__m__3(d,q,clock);
+module fcc_sort_net__m__13_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -30010,29 +28551,10 @@ module fcc_sort_net__m__3(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__m__3
+endmodule // fcc_sort_net__m__13_k7_668cf05b
 
 
-module fcc_sort_net__m__4(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__m__4
-
-
-module fcc_sort_net__m__5(d,q,clock);
+module fcc_sort_net__m__14_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -30048,29 +28570,10 @@ module fcc_sort_net__m__5(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__m__5
+endmodule // fcc_sort_net__m__14_k7_668cf05b
 
 
-module fcc_sort_net__m__6(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__m__6
-
-
-module fcc_sort_net__m__7(d,q,clock);
+module fcc_sort_net__m__15_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -30086,29 +28589,10 @@ module fcc_sort_net__m__7(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__m__7
+endmodule // fcc_sort_net__m__15_k7_668cf05b
 
 
-module fcc_sort_net__m__8(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__m__8
-
-
-module fcc_sort_net__m__9(d,q,clock);
+module fcc_sort_net__m__16_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -30124,10 +28608,238 @@ module fcc_sort_net__m__9(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__m__9
+endmodule // fcc_sort_net__m__16_k7_668cf05b
 
 
-module fcc_sort_net__mask_c(d,q,clock);
+module fcc_sort_net__m__17_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__m__17_k7_668cf05b
+
+
+module fcc_sort_net__m__18_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__m__18_k7_668cf05b
+
+
+module fcc_sort_net__m__19_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__m__19_k7_668cf05b
+
+
+module fcc_sort_net__m__2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__m__2_k7_668cf05b
+
+
+module fcc_sort_net__m__20_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__m__20_k7_668cf05b
+
+
+module fcc_sort_net__m__3_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__m__3_k7_668cf05b
+
+
+module fcc_sort_net__m__4_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__m__4_k7_668cf05b
+
+
+module fcc_sort_net__m__5_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__m__5_k7_668cf05b
+
+
+module fcc_sort_net__m__6_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__m__6_k7_668cf05b
+
+
+module fcc_sort_net__m__7_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__m__7_k7_668cf05b
+
+
+module fcc_sort_net__m__8_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__m__8_k7_668cf05b
+
+
+module fcc_sort_net__m__9_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__m__9_k7_668cf05b
+
+
+module fcc_sort_net__mask_c_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -30143,10 +28855,10 @@ module fcc_sort_net__mask_c(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__mask_c
+endmodule // fcc_sort_net__mask_c_k7_668cf05b
 
 
-module fcc_sort_net__mask_v(d,q,clock);
+module fcc_sort_net__mask_v_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -30162,10 +28874,10 @@ module fcc_sort_net__mask_v(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__mask_v
+endmodule // fcc_sort_net__mask_v_k7_668cf05b
 
 
-module fcc_sort_net__mp(x$0,x$1,x$2,x$3,x$4,x$5,x$6,x$7,x$8,x$9,x$10,x$11,x$12,x$13,x$14,x$15,x$16,x$17,x$18,x$19,x$20,pre$0,pre$1,pre$2,pre$3,pre$4,pre$5,pre$6,pre$7,pre$8,pre$9,pre$10,pre$11,pre$12,pre$13,pre$14,pre$15,pre$16,pre$17,pre$18,pre$19,pre$20);
+module fcc_sort_net__mp_k7_668cf05b(x$0,x$1,x$2,x$3,x$4,x$5,x$6,x$7,x$8,x$9,x$10,x$11,x$12,x$13,x$14,x$15,x$16,x$17,x$18,x$19,x$20,pre$0,pre$1,pre$2,pre$3,pre$4,pre$5,pre$6,pre$7,pre$8,pre$9,pre$10,pre$11,pre$12,pre$13,pre$14,pre$15,pre$16,pre$17,pre$18,pre$19,pre$20);
 
     // Module arguments
     input wire  x$0;
@@ -30239,10 +28951,10 @@ module fcc_sort_net__mp(x$0,x$1,x$2,x$3,x$4,x$5,x$6,x$7,x$8,x$9,x$10,x$11,x$12,x
         pre$19 = |{x$18, x$17, x$16, x$15, x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
         pre$20 = |{x$19, x$18, x$17, x$16, x$15, x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
     end
-endmodule // fcc_sort_net__mp
+endmodule // fcc_sort_net__mp_k7_668cf05b
 
 
-module fcc_sort_net__mq(d,q,clock);
+module fcc_sort_net__mq_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -30258,10 +28970,10 @@ module fcc_sort_net__mq(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__mq
+endmodule // fcc_sort_net__mq_k7_668cf05b
 
 
-module fcc_sort_net__mt(x$0,x$1,x$2,x$3,x$4,x$5,x$6,x$7,x$8,x$9,x$10,x$11,x$12,x$13,x$14,x$15,x$16,x$17,x$18,x$19,x$20,two);
+module fcc_sort_net__mt_k7_668cf05b(x$0,x$1,x$2,x$3,x$4,x$5,x$6,x$7,x$8,x$9,x$10,x$11,x$12,x$13,x$14,x$15,x$16,x$17,x$18,x$19,x$20,two);
 
     // Module arguments
     input wire  x$0;
@@ -30333,10 +29045,10 @@ module fcc_sort_net__mt(x$0,x$1,x$2,x$3,x$4,x$5,x$6,x$7,x$8,x$9,x$10,x$11,x$12,x
     always @(*) begin
         two = t_0_21;
     end
-endmodule // fcc_sort_net__mt
+endmodule // fcc_sort_net__mt_k7_668cf05b
 
 
-module fcc_sort_net__pack(v$0,v$1,v$2,v$3,v$4,v$5,v$6,v$7,v$8,v$9,v$10,v$11,v$12,v$13,v$14,v$15,v$16,v$17,v$18,v$19,v$20,f$0,f$1,f$2,f$3,f$4,f$5,f$6,f$7,f$8,f$9,f$10,f$11,f$12,f$13,f$14,f$15,f$16,f$17,f$18,f$19,f$20,word$0,word$1,word$2);
+module fcc_sort_net__pack_k7_668cf05b(v$0,v$1,v$2,v$3,v$4,v$5,v$6,v$7,v$8,v$9,v$10,v$11,v$12,v$13,v$14,v$15,v$16,v$17,v$18,v$19,v$20,f$0,f$1,f$2,f$3,f$4,f$5,f$6,f$7,f$8,f$9,f$10,f$11,f$12,f$13,f$14,f$15,f$16,f$17,f$18,f$19,f$20,word$0,word$1,word$2);
 
     // Module arguments
     input wire  [15:0] v$0;
@@ -30391,10 +29103,10 @@ module fcc_sort_net__pack(v$0,v$1,v$2,v$3,v$4,v$5,v$6,v$7,v$8,v$9,v$10,v$11,v$12
         word$1 = {68'd0, f$13, f$12, f$11, f$10, f$9, f$8, f$7, v$13, v$12, v$11, v$10, v$9, v$8, v$7};
         word$2 = {68'd0, f$20, f$19, f$18, f$17, f$16, f$15, f$14, v$20, v$19, v$18, v$17, v$16, v$15, v$14};
     end
-endmodule // fcc_sort_net__pack
+endmodule // fcc_sort_net__pack_k7_668cf05b
 
 
-module fcc_sort_net__ph(d,q,clock);
+module fcc_sort_net__ph_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [1:0] d;
@@ -30410,10 +29122,10 @@ module fcc_sort_net__ph(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ph
+endmodule // fcc_sort_net__ph_k7_668cf05b
 
 
-module fcc_sort_net__pk(sel$0,sel$1,sel$2,sel$3,sel$4,sel$5,sel$6,sel$7,sel$8,sel$9,sel$10,sel$11,sel$12,sel$13,sel$14,sel$15,sel$16,sel$17,sel$18,sel$19,sel$20,v$0,v$1,v$2,v$3,v$4,v$5,v$6,v$7,v$8,v$9,v$10,v$11,v$12,v$13,v$14,v$15,v$16,v$17,v$18,v$19,v$20,o);
+module fcc_sort_net__pk_k7_668cf05b(sel$0,sel$1,sel$2,sel$3,sel$4,sel$5,sel$6,sel$7,sel$8,sel$9,sel$10,sel$11,sel$12,sel$13,sel$14,sel$15,sel$16,sel$17,sel$18,sel$19,sel$20,v$0,v$1,v$2,v$3,v$4,v$5,v$6,v$7,v$8,v$9,v$10,v$11,v$12,v$13,v$14,v$15,v$16,v$17,v$18,v$19,v$20,o);
 
     // Module arguments
     input wire  sel$0;
@@ -30508,10 +29220,10 @@ module fcc_sort_net__pk(sel$0,sel$1,sel$2,sel$3,sel$4,sel$5,sel$6,sel$7,sel$8,se
     always @(*) begin
         o = t5_0;
     end
-endmodule // fcc_sort_net__pk
+endmodule // fcc_sort_net__pk_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__0(d,q,clock);
+module fcc_sort_net__ps_adj__0_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -30527,10 +29239,10 @@ module fcc_sort_net__ps_adj__0(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__0
+endmodule // fcc_sort_net__ps_adj__0_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__1(d,q,clock);
+module fcc_sort_net__ps_adj__1_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -30546,10 +29258,10 @@ module fcc_sort_net__ps_adj__1(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__1
+endmodule // fcc_sort_net__ps_adj__1_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__10(d,q,clock);
+module fcc_sort_net__ps_adj__10_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -30565,10 +29277,10 @@ module fcc_sort_net__ps_adj__10(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__10
+endmodule // fcc_sort_net__ps_adj__10_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__100(d,q,clock);
+module fcc_sort_net__ps_adj__100_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -30584,10 +29296,10 @@ module fcc_sort_net__ps_adj__100(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__100
+endmodule // fcc_sort_net__ps_adj__100_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__101(d,q,clock);
+module fcc_sort_net__ps_adj__101_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -30603,10 +29315,10 @@ module fcc_sort_net__ps_adj__101(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__101
+endmodule // fcc_sort_net__ps_adj__101_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__102(d,q,clock);
+module fcc_sort_net__ps_adj__102_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -30622,10 +29334,10 @@ module fcc_sort_net__ps_adj__102(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__102
+endmodule // fcc_sort_net__ps_adj__102_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__103(d,q,clock);
+module fcc_sort_net__ps_adj__103_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -30641,10 +29353,10 @@ module fcc_sort_net__ps_adj__103(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__103
+endmodule // fcc_sort_net__ps_adj__103_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__104(d,q,clock);
+module fcc_sort_net__ps_adj__104_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -30660,10 +29372,10 @@ module fcc_sort_net__ps_adj__104(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__104
+endmodule // fcc_sort_net__ps_adj__104_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__105(d,q,clock);
+module fcc_sort_net__ps_adj__105_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -30679,10 +29391,10 @@ module fcc_sort_net__ps_adj__105(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__105
+endmodule // fcc_sort_net__ps_adj__105_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__106(d,q,clock);
+module fcc_sort_net__ps_adj__106_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -30698,10 +29410,10 @@ module fcc_sort_net__ps_adj__106(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__106
+endmodule // fcc_sort_net__ps_adj__106_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__107(d,q,clock);
+module fcc_sort_net__ps_adj__107_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -30717,10 +29429,10 @@ module fcc_sort_net__ps_adj__107(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__107
+endmodule // fcc_sort_net__ps_adj__107_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__108(d,q,clock);
+module fcc_sort_net__ps_adj__108_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -30736,10 +29448,10 @@ module fcc_sort_net__ps_adj__108(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__108
+endmodule // fcc_sort_net__ps_adj__108_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__109(d,q,clock);
+module fcc_sort_net__ps_adj__109_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -30755,10 +29467,10 @@ module fcc_sort_net__ps_adj__109(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__109
+endmodule // fcc_sort_net__ps_adj__109_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__11(d,q,clock);
+module fcc_sort_net__ps_adj__11_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -30774,10 +29486,10 @@ module fcc_sort_net__ps_adj__11(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__11
+endmodule // fcc_sort_net__ps_adj__11_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__110(d,q,clock);
+module fcc_sort_net__ps_adj__110_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -30793,10 +29505,10 @@ module fcc_sort_net__ps_adj__110(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__110
+endmodule // fcc_sort_net__ps_adj__110_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__111(d,q,clock);
+module fcc_sort_net__ps_adj__111_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -30812,10 +29524,10 @@ module fcc_sort_net__ps_adj__111(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__111
+endmodule // fcc_sort_net__ps_adj__111_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__112(d,q,clock);
+module fcc_sort_net__ps_adj__112_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -30831,10 +29543,10 @@ module fcc_sort_net__ps_adj__112(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__112
+endmodule // fcc_sort_net__ps_adj__112_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__113(d,q,clock);
+module fcc_sort_net__ps_adj__113_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -30850,10 +29562,10 @@ module fcc_sort_net__ps_adj__113(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__113
+endmodule // fcc_sort_net__ps_adj__113_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__114(d,q,clock);
+module fcc_sort_net__ps_adj__114_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -30869,10 +29581,10 @@ module fcc_sort_net__ps_adj__114(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__114
+endmodule // fcc_sort_net__ps_adj__114_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__115(d,q,clock);
+module fcc_sort_net__ps_adj__115_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -30888,10 +29600,10 @@ module fcc_sort_net__ps_adj__115(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__115
+endmodule // fcc_sort_net__ps_adj__115_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__116(d,q,clock);
+module fcc_sort_net__ps_adj__116_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -30907,10 +29619,10 @@ module fcc_sort_net__ps_adj__116(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__116
+endmodule // fcc_sort_net__ps_adj__116_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__117(d,q,clock);
+module fcc_sort_net__ps_adj__117_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -30926,10 +29638,10 @@ module fcc_sort_net__ps_adj__117(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__117
+endmodule // fcc_sort_net__ps_adj__117_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__118(d,q,clock);
+module fcc_sort_net__ps_adj__118_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -30945,10 +29657,10 @@ module fcc_sort_net__ps_adj__118(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__118
+endmodule // fcc_sort_net__ps_adj__118_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__119(d,q,clock);
+module fcc_sort_net__ps_adj__119_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -30964,10 +29676,10 @@ module fcc_sort_net__ps_adj__119(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__119
+endmodule // fcc_sort_net__ps_adj__119_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__12(d,q,clock);
+module fcc_sort_net__ps_adj__12_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -30983,10 +29695,10 @@ module fcc_sort_net__ps_adj__12(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__12
+endmodule // fcc_sort_net__ps_adj__12_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__120(d,q,clock);
+module fcc_sort_net__ps_adj__120_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31002,10 +29714,10 @@ module fcc_sort_net__ps_adj__120(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__120
+endmodule // fcc_sort_net__ps_adj__120_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__121(d,q,clock);
+module fcc_sort_net__ps_adj__121_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31021,10 +29733,10 @@ module fcc_sort_net__ps_adj__121(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__121
+endmodule // fcc_sort_net__ps_adj__121_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__122(d,q,clock);
+module fcc_sort_net__ps_adj__122_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31040,10 +29752,10 @@ module fcc_sort_net__ps_adj__122(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__122
+endmodule // fcc_sort_net__ps_adj__122_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__123(d,q,clock);
+module fcc_sort_net__ps_adj__123_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31059,10 +29771,10 @@ module fcc_sort_net__ps_adj__123(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__123
+endmodule // fcc_sort_net__ps_adj__123_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__124(d,q,clock);
+module fcc_sort_net__ps_adj__124_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31078,10 +29790,10 @@ module fcc_sort_net__ps_adj__124(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__124
+endmodule // fcc_sort_net__ps_adj__124_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__125(d,q,clock);
+module fcc_sort_net__ps_adj__125_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31097,10 +29809,10 @@ module fcc_sort_net__ps_adj__125(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__125
+endmodule // fcc_sort_net__ps_adj__125_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__126(d,q,clock);
+module fcc_sort_net__ps_adj__126_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31116,10 +29828,10 @@ module fcc_sort_net__ps_adj__126(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__126
+endmodule // fcc_sort_net__ps_adj__126_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__127(d,q,clock);
+module fcc_sort_net__ps_adj__127_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31135,10 +29847,10 @@ module fcc_sort_net__ps_adj__127(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__127
+endmodule // fcc_sort_net__ps_adj__127_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__128(d,q,clock);
+module fcc_sort_net__ps_adj__128_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31154,10 +29866,10 @@ module fcc_sort_net__ps_adj__128(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__128
+endmodule // fcc_sort_net__ps_adj__128_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__129(d,q,clock);
+module fcc_sort_net__ps_adj__129_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31173,10 +29885,10 @@ module fcc_sort_net__ps_adj__129(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__129
+endmodule // fcc_sort_net__ps_adj__129_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__13(d,q,clock);
+module fcc_sort_net__ps_adj__13_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31192,10 +29904,10 @@ module fcc_sort_net__ps_adj__13(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__13
+endmodule // fcc_sort_net__ps_adj__13_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__130(d,q,clock);
+module fcc_sort_net__ps_adj__130_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31211,10 +29923,10 @@ module fcc_sort_net__ps_adj__130(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__130
+endmodule // fcc_sort_net__ps_adj__130_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__131(d,q,clock);
+module fcc_sort_net__ps_adj__131_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31230,10 +29942,10 @@ module fcc_sort_net__ps_adj__131(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__131
+endmodule // fcc_sort_net__ps_adj__131_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__132(d,q,clock);
+module fcc_sort_net__ps_adj__132_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31249,10 +29961,10 @@ module fcc_sort_net__ps_adj__132(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__132
+endmodule // fcc_sort_net__ps_adj__132_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__133(d,q,clock);
+module fcc_sort_net__ps_adj__133_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31268,10 +29980,10 @@ module fcc_sort_net__ps_adj__133(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__133
+endmodule // fcc_sort_net__ps_adj__133_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__134(d,q,clock);
+module fcc_sort_net__ps_adj__134_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31287,10 +29999,10 @@ module fcc_sort_net__ps_adj__134(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__134
+endmodule // fcc_sort_net__ps_adj__134_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__135(d,q,clock);
+module fcc_sort_net__ps_adj__135_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31306,10 +30018,10 @@ module fcc_sort_net__ps_adj__135(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__135
+endmodule // fcc_sort_net__ps_adj__135_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__136(d,q,clock);
+module fcc_sort_net__ps_adj__136_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31325,10 +30037,10 @@ module fcc_sort_net__ps_adj__136(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__136
+endmodule // fcc_sort_net__ps_adj__136_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__137(d,q,clock);
+module fcc_sort_net__ps_adj__137_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31344,10 +30056,10 @@ module fcc_sort_net__ps_adj__137(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__137
+endmodule // fcc_sort_net__ps_adj__137_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__138(d,q,clock);
+module fcc_sort_net__ps_adj__138_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31363,10 +30075,10 @@ module fcc_sort_net__ps_adj__138(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__138
+endmodule // fcc_sort_net__ps_adj__138_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__139(d,q,clock);
+module fcc_sort_net__ps_adj__139_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31382,10 +30094,10 @@ module fcc_sort_net__ps_adj__139(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__139
+endmodule // fcc_sort_net__ps_adj__139_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__14(d,q,clock);
+module fcc_sort_net__ps_adj__14_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31401,10 +30113,10 @@ module fcc_sort_net__ps_adj__14(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__14
+endmodule // fcc_sort_net__ps_adj__14_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__140(d,q,clock);
+module fcc_sort_net__ps_adj__140_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31420,10 +30132,10 @@ module fcc_sort_net__ps_adj__140(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__140
+endmodule // fcc_sort_net__ps_adj__140_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__141(d,q,clock);
+module fcc_sort_net__ps_adj__141_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31439,10 +30151,10 @@ module fcc_sort_net__ps_adj__141(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__141
+endmodule // fcc_sort_net__ps_adj__141_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__142(d,q,clock);
+module fcc_sort_net__ps_adj__142_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31458,10 +30170,10 @@ module fcc_sort_net__ps_adj__142(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__142
+endmodule // fcc_sort_net__ps_adj__142_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__143(d,q,clock);
+module fcc_sort_net__ps_adj__143_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31477,10 +30189,10 @@ module fcc_sort_net__ps_adj__143(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__143
+endmodule // fcc_sort_net__ps_adj__143_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__144(d,q,clock);
+module fcc_sort_net__ps_adj__144_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31496,10 +30208,10 @@ module fcc_sort_net__ps_adj__144(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__144
+endmodule // fcc_sort_net__ps_adj__144_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__145(d,q,clock);
+module fcc_sort_net__ps_adj__145_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31515,10 +30227,10 @@ module fcc_sort_net__ps_adj__145(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__145
+endmodule // fcc_sort_net__ps_adj__145_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__146(d,q,clock);
+module fcc_sort_net__ps_adj__146_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31534,10 +30246,10 @@ module fcc_sort_net__ps_adj__146(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__146
+endmodule // fcc_sort_net__ps_adj__146_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__15(d,q,clock);
+module fcc_sort_net__ps_adj__15_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31553,10 +30265,10 @@ module fcc_sort_net__ps_adj__15(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__15
+endmodule // fcc_sort_net__ps_adj__15_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__16(d,q,clock);
+module fcc_sort_net__ps_adj__16_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31572,10 +30284,10 @@ module fcc_sort_net__ps_adj__16(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__16
+endmodule // fcc_sort_net__ps_adj__16_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__17(d,q,clock);
+module fcc_sort_net__ps_adj__17_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31591,10 +30303,10 @@ module fcc_sort_net__ps_adj__17(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__17
+endmodule // fcc_sort_net__ps_adj__17_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__18(d,q,clock);
+module fcc_sort_net__ps_adj__18_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31610,10 +30322,10 @@ module fcc_sort_net__ps_adj__18(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__18
+endmodule // fcc_sort_net__ps_adj__18_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__19(d,q,clock);
+module fcc_sort_net__ps_adj__19_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31629,10 +30341,10 @@ module fcc_sort_net__ps_adj__19(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__19
+endmodule // fcc_sort_net__ps_adj__19_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__2(d,q,clock);
+module fcc_sort_net__ps_adj__2_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31648,10 +30360,10 @@ module fcc_sort_net__ps_adj__2(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__2
+endmodule // fcc_sort_net__ps_adj__2_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__20(d,q,clock);
+module fcc_sort_net__ps_adj__20_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31667,10 +30379,10 @@ module fcc_sort_net__ps_adj__20(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__20
+endmodule // fcc_sort_net__ps_adj__20_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__21(d,q,clock);
+module fcc_sort_net__ps_adj__21_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31686,10 +30398,10 @@ module fcc_sort_net__ps_adj__21(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__21
+endmodule // fcc_sort_net__ps_adj__21_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__22(d,q,clock);
+module fcc_sort_net__ps_adj__22_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31705,10 +30417,10 @@ module fcc_sort_net__ps_adj__22(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__22
+endmodule // fcc_sort_net__ps_adj__22_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__23(d,q,clock);
+module fcc_sort_net__ps_adj__23_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31724,10 +30436,10 @@ module fcc_sort_net__ps_adj__23(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__23
+endmodule // fcc_sort_net__ps_adj__23_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__24(d,q,clock);
+module fcc_sort_net__ps_adj__24_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31743,10 +30455,10 @@ module fcc_sort_net__ps_adj__24(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__24
+endmodule // fcc_sort_net__ps_adj__24_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__25(d,q,clock);
+module fcc_sort_net__ps_adj__25_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31762,10 +30474,10 @@ module fcc_sort_net__ps_adj__25(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__25
+endmodule // fcc_sort_net__ps_adj__25_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__26(d,q,clock);
+module fcc_sort_net__ps_adj__26_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31781,10 +30493,10 @@ module fcc_sort_net__ps_adj__26(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__26
+endmodule // fcc_sort_net__ps_adj__26_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__27(d,q,clock);
+module fcc_sort_net__ps_adj__27_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31800,10 +30512,10 @@ module fcc_sort_net__ps_adj__27(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__27
+endmodule // fcc_sort_net__ps_adj__27_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__28(d,q,clock);
+module fcc_sort_net__ps_adj__28_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31819,10 +30531,10 @@ module fcc_sort_net__ps_adj__28(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__28
+endmodule // fcc_sort_net__ps_adj__28_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__29(d,q,clock);
+module fcc_sort_net__ps_adj__29_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31838,10 +30550,10 @@ module fcc_sort_net__ps_adj__29(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__29
+endmodule // fcc_sort_net__ps_adj__29_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__3(d,q,clock);
+module fcc_sort_net__ps_adj__3_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31857,10 +30569,10 @@ module fcc_sort_net__ps_adj__3(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__3
+endmodule // fcc_sort_net__ps_adj__3_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__30(d,q,clock);
+module fcc_sort_net__ps_adj__30_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31876,10 +30588,10 @@ module fcc_sort_net__ps_adj__30(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__30
+endmodule // fcc_sort_net__ps_adj__30_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__31(d,q,clock);
+module fcc_sort_net__ps_adj__31_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31895,10 +30607,10 @@ module fcc_sort_net__ps_adj__31(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__31
+endmodule // fcc_sort_net__ps_adj__31_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__32(d,q,clock);
+module fcc_sort_net__ps_adj__32_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31914,10 +30626,10 @@ module fcc_sort_net__ps_adj__32(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__32
+endmodule // fcc_sort_net__ps_adj__32_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__33(d,q,clock);
+module fcc_sort_net__ps_adj__33_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31933,10 +30645,10 @@ module fcc_sort_net__ps_adj__33(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__33
+endmodule // fcc_sort_net__ps_adj__33_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__34(d,q,clock);
+module fcc_sort_net__ps_adj__34_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31952,10 +30664,10 @@ module fcc_sort_net__ps_adj__34(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__34
+endmodule // fcc_sort_net__ps_adj__34_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__35(d,q,clock);
+module fcc_sort_net__ps_adj__35_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31971,10 +30683,10 @@ module fcc_sort_net__ps_adj__35(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__35
+endmodule // fcc_sort_net__ps_adj__35_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__36(d,q,clock);
+module fcc_sort_net__ps_adj__36_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -31990,10 +30702,10 @@ module fcc_sort_net__ps_adj__36(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__36
+endmodule // fcc_sort_net__ps_adj__36_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__37(d,q,clock);
+module fcc_sort_net__ps_adj__37_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32009,10 +30721,10 @@ module fcc_sort_net__ps_adj__37(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__37
+endmodule // fcc_sort_net__ps_adj__37_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__38(d,q,clock);
+module fcc_sort_net__ps_adj__38_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32028,10 +30740,10 @@ module fcc_sort_net__ps_adj__38(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__38
+endmodule // fcc_sort_net__ps_adj__38_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__39(d,q,clock);
+module fcc_sort_net__ps_adj__39_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32047,10 +30759,10 @@ module fcc_sort_net__ps_adj__39(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__39
+endmodule // fcc_sort_net__ps_adj__39_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__4(d,q,clock);
+module fcc_sort_net__ps_adj__4_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32066,10 +30778,10 @@ module fcc_sort_net__ps_adj__4(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__4
+endmodule // fcc_sort_net__ps_adj__4_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__40(d,q,clock);
+module fcc_sort_net__ps_adj__40_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32085,10 +30797,10 @@ module fcc_sort_net__ps_adj__40(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__40
+endmodule // fcc_sort_net__ps_adj__40_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__41(d,q,clock);
+module fcc_sort_net__ps_adj__41_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32104,10 +30816,10 @@ module fcc_sort_net__ps_adj__41(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__41
+endmodule // fcc_sort_net__ps_adj__41_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__42(d,q,clock);
+module fcc_sort_net__ps_adj__42_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32123,10 +30835,10 @@ module fcc_sort_net__ps_adj__42(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__42
+endmodule // fcc_sort_net__ps_adj__42_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__43(d,q,clock);
+module fcc_sort_net__ps_adj__43_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32142,10 +30854,10 @@ module fcc_sort_net__ps_adj__43(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__43
+endmodule // fcc_sort_net__ps_adj__43_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__44(d,q,clock);
+module fcc_sort_net__ps_adj__44_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32161,10 +30873,10 @@ module fcc_sort_net__ps_adj__44(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__44
+endmodule // fcc_sort_net__ps_adj__44_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__45(d,q,clock);
+module fcc_sort_net__ps_adj__45_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32180,10 +30892,10 @@ module fcc_sort_net__ps_adj__45(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__45
+endmodule // fcc_sort_net__ps_adj__45_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__46(d,q,clock);
+module fcc_sort_net__ps_adj__46_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32199,10 +30911,10 @@ module fcc_sort_net__ps_adj__46(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__46
+endmodule // fcc_sort_net__ps_adj__46_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__47(d,q,clock);
+module fcc_sort_net__ps_adj__47_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32218,10 +30930,10 @@ module fcc_sort_net__ps_adj__47(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__47
+endmodule // fcc_sort_net__ps_adj__47_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__48(d,q,clock);
+module fcc_sort_net__ps_adj__48_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32237,10 +30949,10 @@ module fcc_sort_net__ps_adj__48(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__48
+endmodule // fcc_sort_net__ps_adj__48_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__49(d,q,clock);
+module fcc_sort_net__ps_adj__49_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32256,10 +30968,10 @@ module fcc_sort_net__ps_adj__49(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__49
+endmodule // fcc_sort_net__ps_adj__49_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__5(d,q,clock);
+module fcc_sort_net__ps_adj__5_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32275,10 +30987,10 @@ module fcc_sort_net__ps_adj__5(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__5
+endmodule // fcc_sort_net__ps_adj__5_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__50(d,q,clock);
+module fcc_sort_net__ps_adj__50_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32294,10 +31006,10 @@ module fcc_sort_net__ps_adj__50(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__50
+endmodule // fcc_sort_net__ps_adj__50_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__51(d,q,clock);
+module fcc_sort_net__ps_adj__51_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32313,10 +31025,10 @@ module fcc_sort_net__ps_adj__51(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__51
+endmodule // fcc_sort_net__ps_adj__51_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__52(d,q,clock);
+module fcc_sort_net__ps_adj__52_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32332,10 +31044,10 @@ module fcc_sort_net__ps_adj__52(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__52
+endmodule // fcc_sort_net__ps_adj__52_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__53(d,q,clock);
+module fcc_sort_net__ps_adj__53_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32351,10 +31063,10 @@ module fcc_sort_net__ps_adj__53(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__53
+endmodule // fcc_sort_net__ps_adj__53_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__54(d,q,clock);
+module fcc_sort_net__ps_adj__54_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32370,10 +31082,10 @@ module fcc_sort_net__ps_adj__54(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__54
+endmodule // fcc_sort_net__ps_adj__54_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__55(d,q,clock);
+module fcc_sort_net__ps_adj__55_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32389,10 +31101,10 @@ module fcc_sort_net__ps_adj__55(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__55
+endmodule // fcc_sort_net__ps_adj__55_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__56(d,q,clock);
+module fcc_sort_net__ps_adj__56_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32408,10 +31120,10 @@ module fcc_sort_net__ps_adj__56(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__56
+endmodule // fcc_sort_net__ps_adj__56_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__57(d,q,clock);
+module fcc_sort_net__ps_adj__57_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32427,10 +31139,10 @@ module fcc_sort_net__ps_adj__57(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__57
+endmodule // fcc_sort_net__ps_adj__57_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__58(d,q,clock);
+module fcc_sort_net__ps_adj__58_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32446,10 +31158,10 @@ module fcc_sort_net__ps_adj__58(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__58
+endmodule // fcc_sort_net__ps_adj__58_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__59(d,q,clock);
+module fcc_sort_net__ps_adj__59_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32465,10 +31177,10 @@ module fcc_sort_net__ps_adj__59(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__59
+endmodule // fcc_sort_net__ps_adj__59_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__6(d,q,clock);
+module fcc_sort_net__ps_adj__6_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32484,10 +31196,10 @@ module fcc_sort_net__ps_adj__6(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__6
+endmodule // fcc_sort_net__ps_adj__6_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__60(d,q,clock);
+module fcc_sort_net__ps_adj__60_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32503,10 +31215,10 @@ module fcc_sort_net__ps_adj__60(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__60
+endmodule // fcc_sort_net__ps_adj__60_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__61(d,q,clock);
+module fcc_sort_net__ps_adj__61_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32522,10 +31234,10 @@ module fcc_sort_net__ps_adj__61(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__61
+endmodule // fcc_sort_net__ps_adj__61_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__62(d,q,clock);
+module fcc_sort_net__ps_adj__62_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32541,10 +31253,10 @@ module fcc_sort_net__ps_adj__62(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__62
+endmodule // fcc_sort_net__ps_adj__62_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__63(d,q,clock);
+module fcc_sort_net__ps_adj__63_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32560,10 +31272,10 @@ module fcc_sort_net__ps_adj__63(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__63
+endmodule // fcc_sort_net__ps_adj__63_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__64(d,q,clock);
+module fcc_sort_net__ps_adj__64_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32579,10 +31291,10 @@ module fcc_sort_net__ps_adj__64(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__64
+endmodule // fcc_sort_net__ps_adj__64_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__65(d,q,clock);
+module fcc_sort_net__ps_adj__65_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32598,10 +31310,10 @@ module fcc_sort_net__ps_adj__65(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__65
+endmodule // fcc_sort_net__ps_adj__65_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__66(d,q,clock);
+module fcc_sort_net__ps_adj__66_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32617,10 +31329,10 @@ module fcc_sort_net__ps_adj__66(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__66
+endmodule // fcc_sort_net__ps_adj__66_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__67(d,q,clock);
+module fcc_sort_net__ps_adj__67_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32636,10 +31348,10 @@ module fcc_sort_net__ps_adj__67(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__67
+endmodule // fcc_sort_net__ps_adj__67_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__68(d,q,clock);
+module fcc_sort_net__ps_adj__68_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32655,10 +31367,10 @@ module fcc_sort_net__ps_adj__68(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__68
+endmodule // fcc_sort_net__ps_adj__68_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__69(d,q,clock);
+module fcc_sort_net__ps_adj__69_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32674,10 +31386,10 @@ module fcc_sort_net__ps_adj__69(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__69
+endmodule // fcc_sort_net__ps_adj__69_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__7(d,q,clock);
+module fcc_sort_net__ps_adj__7_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32693,10 +31405,10 @@ module fcc_sort_net__ps_adj__7(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__7
+endmodule // fcc_sort_net__ps_adj__7_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__70(d,q,clock);
+module fcc_sort_net__ps_adj__70_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32712,10 +31424,10 @@ module fcc_sort_net__ps_adj__70(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__70
+endmodule // fcc_sort_net__ps_adj__70_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__71(d,q,clock);
+module fcc_sort_net__ps_adj__71_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32731,10 +31443,10 @@ module fcc_sort_net__ps_adj__71(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__71
+endmodule // fcc_sort_net__ps_adj__71_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__72(d,q,clock);
+module fcc_sort_net__ps_adj__72_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32750,10 +31462,10 @@ module fcc_sort_net__ps_adj__72(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__72
+endmodule // fcc_sort_net__ps_adj__72_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__73(d,q,clock);
+module fcc_sort_net__ps_adj__73_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32769,10 +31481,10 @@ module fcc_sort_net__ps_adj__73(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__73
+endmodule // fcc_sort_net__ps_adj__73_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__74(d,q,clock);
+module fcc_sort_net__ps_adj__74_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32788,10 +31500,10 @@ module fcc_sort_net__ps_adj__74(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__74
+endmodule // fcc_sort_net__ps_adj__74_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__75(d,q,clock);
+module fcc_sort_net__ps_adj__75_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32807,10 +31519,10 @@ module fcc_sort_net__ps_adj__75(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__75
+endmodule // fcc_sort_net__ps_adj__75_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__76(d,q,clock);
+module fcc_sort_net__ps_adj__76_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32826,10 +31538,10 @@ module fcc_sort_net__ps_adj__76(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__76
+endmodule // fcc_sort_net__ps_adj__76_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__77(d,q,clock);
+module fcc_sort_net__ps_adj__77_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32845,10 +31557,10 @@ module fcc_sort_net__ps_adj__77(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__77
+endmodule // fcc_sort_net__ps_adj__77_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__78(d,q,clock);
+module fcc_sort_net__ps_adj__78_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32864,10 +31576,10 @@ module fcc_sort_net__ps_adj__78(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__78
+endmodule // fcc_sort_net__ps_adj__78_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__79(d,q,clock);
+module fcc_sort_net__ps_adj__79_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32883,10 +31595,10 @@ module fcc_sort_net__ps_adj__79(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__79
+endmodule // fcc_sort_net__ps_adj__79_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__8(d,q,clock);
+module fcc_sort_net__ps_adj__8_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32902,10 +31614,10 @@ module fcc_sort_net__ps_adj__8(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__8
+endmodule // fcc_sort_net__ps_adj__8_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__80(d,q,clock);
+module fcc_sort_net__ps_adj__80_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32921,10 +31633,10 @@ module fcc_sort_net__ps_adj__80(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__80
+endmodule // fcc_sort_net__ps_adj__80_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__81(d,q,clock);
+module fcc_sort_net__ps_adj__81_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32940,10 +31652,10 @@ module fcc_sort_net__ps_adj__81(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__81
+endmodule // fcc_sort_net__ps_adj__81_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__82(d,q,clock);
+module fcc_sort_net__ps_adj__82_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32959,10 +31671,10 @@ module fcc_sort_net__ps_adj__82(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__82
+endmodule // fcc_sort_net__ps_adj__82_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__83(d,q,clock);
+module fcc_sort_net__ps_adj__83_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32978,10 +31690,10 @@ module fcc_sort_net__ps_adj__83(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__83
+endmodule // fcc_sort_net__ps_adj__83_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__84(d,q,clock);
+module fcc_sort_net__ps_adj__84_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -32997,10 +31709,10 @@ module fcc_sort_net__ps_adj__84(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__84
+endmodule // fcc_sort_net__ps_adj__84_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__85(d,q,clock);
+module fcc_sort_net__ps_adj__85_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33016,10 +31728,10 @@ module fcc_sort_net__ps_adj__85(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__85
+endmodule // fcc_sort_net__ps_adj__85_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__86(d,q,clock);
+module fcc_sort_net__ps_adj__86_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33035,10 +31747,10 @@ module fcc_sort_net__ps_adj__86(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__86
+endmodule // fcc_sort_net__ps_adj__86_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__87(d,q,clock);
+module fcc_sort_net__ps_adj__87_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33054,10 +31766,10 @@ module fcc_sort_net__ps_adj__87(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__87
+endmodule // fcc_sort_net__ps_adj__87_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__88(d,q,clock);
+module fcc_sort_net__ps_adj__88_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33073,10 +31785,10 @@ module fcc_sort_net__ps_adj__88(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__88
+endmodule // fcc_sort_net__ps_adj__88_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__89(d,q,clock);
+module fcc_sort_net__ps_adj__89_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33092,10 +31804,10 @@ module fcc_sort_net__ps_adj__89(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__89
+endmodule // fcc_sort_net__ps_adj__89_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__9(d,q,clock);
+module fcc_sort_net__ps_adj__9_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33111,10 +31823,10 @@ module fcc_sort_net__ps_adj__9(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__9
+endmodule // fcc_sort_net__ps_adj__9_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__90(d,q,clock);
+module fcc_sort_net__ps_adj__90_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33130,10 +31842,10 @@ module fcc_sort_net__ps_adj__90(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__90
+endmodule // fcc_sort_net__ps_adj__90_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__91(d,q,clock);
+module fcc_sort_net__ps_adj__91_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33149,10 +31861,10 @@ module fcc_sort_net__ps_adj__91(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__91
+endmodule // fcc_sort_net__ps_adj__91_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__92(d,q,clock);
+module fcc_sort_net__ps_adj__92_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33168,10 +31880,10 @@ module fcc_sort_net__ps_adj__92(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__92
+endmodule // fcc_sort_net__ps_adj__92_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__93(d,q,clock);
+module fcc_sort_net__ps_adj__93_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33187,10 +31899,10 @@ module fcc_sort_net__ps_adj__93(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__93
+endmodule // fcc_sort_net__ps_adj__93_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__94(d,q,clock);
+module fcc_sort_net__ps_adj__94_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33206,10 +31918,10 @@ module fcc_sort_net__ps_adj__94(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__94
+endmodule // fcc_sort_net__ps_adj__94_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__95(d,q,clock);
+module fcc_sort_net__ps_adj__95_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33225,10 +31937,10 @@ module fcc_sort_net__ps_adj__95(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__95
+endmodule // fcc_sort_net__ps_adj__95_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__96(d,q,clock);
+module fcc_sort_net__ps_adj__96_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33244,10 +31956,10 @@ module fcc_sort_net__ps_adj__96(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__96
+endmodule // fcc_sort_net__ps_adj__96_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__97(d,q,clock);
+module fcc_sort_net__ps_adj__97_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33263,10 +31975,10 @@ module fcc_sort_net__ps_adj__97(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__97
+endmodule // fcc_sort_net__ps_adj__97_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__98(d,q,clock);
+module fcc_sort_net__ps_adj__98_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33282,10 +31994,10 @@ module fcc_sort_net__ps_adj__98(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__98
+endmodule // fcc_sort_net__ps_adj__98_k7_668cf05b
 
 
-module fcc_sort_net__ps_adj__99(d,q,clock);
+module fcc_sort_net__ps_adj__99_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33301,10 +32013,10 @@ module fcc_sort_net__ps_adj__99(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_adj__99
+endmodule // fcc_sort_net__ps_adj__99_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__0(d,q,clock);
+module fcc_sort_net__ps_hit__0_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33320,10 +32032,10 @@ module fcc_sort_net__ps_hit__0(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__0
+endmodule // fcc_sort_net__ps_hit__0_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__1(d,q,clock);
+module fcc_sort_net__ps_hit__1_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33339,10 +32051,10 @@ module fcc_sort_net__ps_hit__1(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__1
+endmodule // fcc_sort_net__ps_hit__1_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__10(d,q,clock);
+module fcc_sort_net__ps_hit__10_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33358,10 +32070,10 @@ module fcc_sort_net__ps_hit__10(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__10
+endmodule // fcc_sort_net__ps_hit__10_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__100(d,q,clock);
+module fcc_sort_net__ps_hit__100_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33377,10 +32089,10 @@ module fcc_sort_net__ps_hit__100(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__100
+endmodule // fcc_sort_net__ps_hit__100_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__101(d,q,clock);
+module fcc_sort_net__ps_hit__101_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33396,10 +32108,10 @@ module fcc_sort_net__ps_hit__101(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__101
+endmodule // fcc_sort_net__ps_hit__101_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__102(d,q,clock);
+module fcc_sort_net__ps_hit__102_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33415,10 +32127,10 @@ module fcc_sort_net__ps_hit__102(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__102
+endmodule // fcc_sort_net__ps_hit__102_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__103(d,q,clock);
+module fcc_sort_net__ps_hit__103_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33434,10 +32146,10 @@ module fcc_sort_net__ps_hit__103(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__103
+endmodule // fcc_sort_net__ps_hit__103_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__104(d,q,clock);
+module fcc_sort_net__ps_hit__104_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33453,10 +32165,10 @@ module fcc_sort_net__ps_hit__104(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__104
+endmodule // fcc_sort_net__ps_hit__104_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__105(d,q,clock);
+module fcc_sort_net__ps_hit__105_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33472,10 +32184,10 @@ module fcc_sort_net__ps_hit__105(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__105
+endmodule // fcc_sort_net__ps_hit__105_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__106(d,q,clock);
+module fcc_sort_net__ps_hit__106_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33491,10 +32203,10 @@ module fcc_sort_net__ps_hit__106(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__106
+endmodule // fcc_sort_net__ps_hit__106_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__107(d,q,clock);
+module fcc_sort_net__ps_hit__107_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33510,10 +32222,10 @@ module fcc_sort_net__ps_hit__107(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__107
+endmodule // fcc_sort_net__ps_hit__107_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__108(d,q,clock);
+module fcc_sort_net__ps_hit__108_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33529,10 +32241,10 @@ module fcc_sort_net__ps_hit__108(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__108
+endmodule // fcc_sort_net__ps_hit__108_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__109(d,q,clock);
+module fcc_sort_net__ps_hit__109_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33548,10 +32260,10 @@ module fcc_sort_net__ps_hit__109(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__109
+endmodule // fcc_sort_net__ps_hit__109_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__11(d,q,clock);
+module fcc_sort_net__ps_hit__11_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33567,10 +32279,10 @@ module fcc_sort_net__ps_hit__11(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__11
+endmodule // fcc_sort_net__ps_hit__11_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__110(d,q,clock);
+module fcc_sort_net__ps_hit__110_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33586,10 +32298,10 @@ module fcc_sort_net__ps_hit__110(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__110
+endmodule // fcc_sort_net__ps_hit__110_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__111(d,q,clock);
+module fcc_sort_net__ps_hit__111_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33605,10 +32317,10 @@ module fcc_sort_net__ps_hit__111(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__111
+endmodule // fcc_sort_net__ps_hit__111_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__112(d,q,clock);
+module fcc_sort_net__ps_hit__112_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33624,10 +32336,10 @@ module fcc_sort_net__ps_hit__112(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__112
+endmodule // fcc_sort_net__ps_hit__112_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__113(d,q,clock);
+module fcc_sort_net__ps_hit__113_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33643,10 +32355,10 @@ module fcc_sort_net__ps_hit__113(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__113
+endmodule // fcc_sort_net__ps_hit__113_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__114(d,q,clock);
+module fcc_sort_net__ps_hit__114_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33662,10 +32374,10 @@ module fcc_sort_net__ps_hit__114(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__114
+endmodule // fcc_sort_net__ps_hit__114_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__115(d,q,clock);
+module fcc_sort_net__ps_hit__115_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33681,10 +32393,10 @@ module fcc_sort_net__ps_hit__115(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__115
+endmodule // fcc_sort_net__ps_hit__115_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__116(d,q,clock);
+module fcc_sort_net__ps_hit__116_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33700,10 +32412,10 @@ module fcc_sort_net__ps_hit__116(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__116
+endmodule // fcc_sort_net__ps_hit__116_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__117(d,q,clock);
+module fcc_sort_net__ps_hit__117_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33719,10 +32431,10 @@ module fcc_sort_net__ps_hit__117(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__117
+endmodule // fcc_sort_net__ps_hit__117_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__118(d,q,clock);
+module fcc_sort_net__ps_hit__118_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33738,10 +32450,10 @@ module fcc_sort_net__ps_hit__118(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__118
+endmodule // fcc_sort_net__ps_hit__118_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__119(d,q,clock);
+module fcc_sort_net__ps_hit__119_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33757,10 +32469,10 @@ module fcc_sort_net__ps_hit__119(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__119
+endmodule // fcc_sort_net__ps_hit__119_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__12(d,q,clock);
+module fcc_sort_net__ps_hit__12_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33776,10 +32488,10 @@ module fcc_sort_net__ps_hit__12(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__12
+endmodule // fcc_sort_net__ps_hit__12_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__120(d,q,clock);
+module fcc_sort_net__ps_hit__120_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33795,10 +32507,10 @@ module fcc_sort_net__ps_hit__120(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__120
+endmodule // fcc_sort_net__ps_hit__120_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__121(d,q,clock);
+module fcc_sort_net__ps_hit__121_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33814,10 +32526,10 @@ module fcc_sort_net__ps_hit__121(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__121
+endmodule // fcc_sort_net__ps_hit__121_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__122(d,q,clock);
+module fcc_sort_net__ps_hit__122_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33833,10 +32545,10 @@ module fcc_sort_net__ps_hit__122(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__122
+endmodule // fcc_sort_net__ps_hit__122_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__123(d,q,clock);
+module fcc_sort_net__ps_hit__123_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33852,10 +32564,10 @@ module fcc_sort_net__ps_hit__123(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__123
+endmodule // fcc_sort_net__ps_hit__123_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__124(d,q,clock);
+module fcc_sort_net__ps_hit__124_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33871,10 +32583,10 @@ module fcc_sort_net__ps_hit__124(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__124
+endmodule // fcc_sort_net__ps_hit__124_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__125(d,q,clock);
+module fcc_sort_net__ps_hit__125_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33890,10 +32602,10 @@ module fcc_sort_net__ps_hit__125(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__125
+endmodule // fcc_sort_net__ps_hit__125_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__126(d,q,clock);
+module fcc_sort_net__ps_hit__126_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33909,10 +32621,10 @@ module fcc_sort_net__ps_hit__126(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__126
+endmodule // fcc_sort_net__ps_hit__126_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__127(d,q,clock);
+module fcc_sort_net__ps_hit__127_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33928,10 +32640,10 @@ module fcc_sort_net__ps_hit__127(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__127
+endmodule // fcc_sort_net__ps_hit__127_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__128(d,q,clock);
+module fcc_sort_net__ps_hit__128_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33947,10 +32659,10 @@ module fcc_sort_net__ps_hit__128(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__128
+endmodule // fcc_sort_net__ps_hit__128_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__129(d,q,clock);
+module fcc_sort_net__ps_hit__129_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33966,10 +32678,10 @@ module fcc_sort_net__ps_hit__129(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__129
+endmodule // fcc_sort_net__ps_hit__129_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__13(d,q,clock);
+module fcc_sort_net__ps_hit__13_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -33985,10 +32697,10 @@ module fcc_sort_net__ps_hit__13(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__13
+endmodule // fcc_sort_net__ps_hit__13_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__130(d,q,clock);
+module fcc_sort_net__ps_hit__130_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34004,10 +32716,10 @@ module fcc_sort_net__ps_hit__130(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__130
+endmodule // fcc_sort_net__ps_hit__130_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__131(d,q,clock);
+module fcc_sort_net__ps_hit__131_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34023,10 +32735,10 @@ module fcc_sort_net__ps_hit__131(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__131
+endmodule // fcc_sort_net__ps_hit__131_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__132(d,q,clock);
+module fcc_sort_net__ps_hit__132_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34042,10 +32754,10 @@ module fcc_sort_net__ps_hit__132(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__132
+endmodule // fcc_sort_net__ps_hit__132_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__133(d,q,clock);
+module fcc_sort_net__ps_hit__133_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34061,10 +32773,10 @@ module fcc_sort_net__ps_hit__133(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__133
+endmodule // fcc_sort_net__ps_hit__133_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__134(d,q,clock);
+module fcc_sort_net__ps_hit__134_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34080,10 +32792,10 @@ module fcc_sort_net__ps_hit__134(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__134
+endmodule // fcc_sort_net__ps_hit__134_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__135(d,q,clock);
+module fcc_sort_net__ps_hit__135_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34099,10 +32811,10 @@ module fcc_sort_net__ps_hit__135(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__135
+endmodule // fcc_sort_net__ps_hit__135_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__136(d,q,clock);
+module fcc_sort_net__ps_hit__136_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34118,10 +32830,10 @@ module fcc_sort_net__ps_hit__136(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__136
+endmodule // fcc_sort_net__ps_hit__136_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__137(d,q,clock);
+module fcc_sort_net__ps_hit__137_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34137,10 +32849,10 @@ module fcc_sort_net__ps_hit__137(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__137
+endmodule // fcc_sort_net__ps_hit__137_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__138(d,q,clock);
+module fcc_sort_net__ps_hit__138_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34156,10 +32868,10 @@ module fcc_sort_net__ps_hit__138(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__138
+endmodule // fcc_sort_net__ps_hit__138_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__139(d,q,clock);
+module fcc_sort_net__ps_hit__139_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34175,10 +32887,10 @@ module fcc_sort_net__ps_hit__139(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__139
+endmodule // fcc_sort_net__ps_hit__139_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__14(d,q,clock);
+module fcc_sort_net__ps_hit__14_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34194,10 +32906,10 @@ module fcc_sort_net__ps_hit__14(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__14
+endmodule // fcc_sort_net__ps_hit__14_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__140(d,q,clock);
+module fcc_sort_net__ps_hit__140_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34213,10 +32925,10 @@ module fcc_sort_net__ps_hit__140(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__140
+endmodule // fcc_sort_net__ps_hit__140_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__141(d,q,clock);
+module fcc_sort_net__ps_hit__141_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34232,10 +32944,10 @@ module fcc_sort_net__ps_hit__141(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__141
+endmodule // fcc_sort_net__ps_hit__141_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__142(d,q,clock);
+module fcc_sort_net__ps_hit__142_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34251,10 +32963,10 @@ module fcc_sort_net__ps_hit__142(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__142
+endmodule // fcc_sort_net__ps_hit__142_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__143(d,q,clock);
+module fcc_sort_net__ps_hit__143_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34270,10 +32982,10 @@ module fcc_sort_net__ps_hit__143(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__143
+endmodule // fcc_sort_net__ps_hit__143_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__144(d,q,clock);
+module fcc_sort_net__ps_hit__144_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34289,10 +33001,10 @@ module fcc_sort_net__ps_hit__144(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__144
+endmodule // fcc_sort_net__ps_hit__144_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__145(d,q,clock);
+module fcc_sort_net__ps_hit__145_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34308,10 +33020,10 @@ module fcc_sort_net__ps_hit__145(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__145
+endmodule // fcc_sort_net__ps_hit__145_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__146(d,q,clock);
+module fcc_sort_net__ps_hit__146_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34327,10 +33039,10 @@ module fcc_sort_net__ps_hit__146(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__146
+endmodule // fcc_sort_net__ps_hit__146_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__15(d,q,clock);
+module fcc_sort_net__ps_hit__15_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34346,10 +33058,10 @@ module fcc_sort_net__ps_hit__15(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__15
+endmodule // fcc_sort_net__ps_hit__15_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__16(d,q,clock);
+module fcc_sort_net__ps_hit__16_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34365,10 +33077,10 @@ module fcc_sort_net__ps_hit__16(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__16
+endmodule // fcc_sort_net__ps_hit__16_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__17(d,q,clock);
+module fcc_sort_net__ps_hit__17_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34384,10 +33096,10 @@ module fcc_sort_net__ps_hit__17(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__17
+endmodule // fcc_sort_net__ps_hit__17_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__18(d,q,clock);
+module fcc_sort_net__ps_hit__18_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34403,10 +33115,10 @@ module fcc_sort_net__ps_hit__18(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__18
+endmodule // fcc_sort_net__ps_hit__18_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__19(d,q,clock);
+module fcc_sort_net__ps_hit__19_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34422,10 +33134,10 @@ module fcc_sort_net__ps_hit__19(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__19
+endmodule // fcc_sort_net__ps_hit__19_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__2(d,q,clock);
+module fcc_sort_net__ps_hit__2_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34441,10 +33153,10 @@ module fcc_sort_net__ps_hit__2(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__2
+endmodule // fcc_sort_net__ps_hit__2_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__20(d,q,clock);
+module fcc_sort_net__ps_hit__20_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34460,10 +33172,10 @@ module fcc_sort_net__ps_hit__20(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__20
+endmodule // fcc_sort_net__ps_hit__20_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__21(d,q,clock);
+module fcc_sort_net__ps_hit__21_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34479,10 +33191,10 @@ module fcc_sort_net__ps_hit__21(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__21
+endmodule // fcc_sort_net__ps_hit__21_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__22(d,q,clock);
+module fcc_sort_net__ps_hit__22_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34498,10 +33210,10 @@ module fcc_sort_net__ps_hit__22(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__22
+endmodule // fcc_sort_net__ps_hit__22_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__23(d,q,clock);
+module fcc_sort_net__ps_hit__23_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34517,10 +33229,10 @@ module fcc_sort_net__ps_hit__23(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__23
+endmodule // fcc_sort_net__ps_hit__23_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__24(d,q,clock);
+module fcc_sort_net__ps_hit__24_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34536,10 +33248,10 @@ module fcc_sort_net__ps_hit__24(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__24
+endmodule // fcc_sort_net__ps_hit__24_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__25(d,q,clock);
+module fcc_sort_net__ps_hit__25_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34555,10 +33267,10 @@ module fcc_sort_net__ps_hit__25(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__25
+endmodule // fcc_sort_net__ps_hit__25_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__26(d,q,clock);
+module fcc_sort_net__ps_hit__26_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34574,10 +33286,10 @@ module fcc_sort_net__ps_hit__26(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__26
+endmodule // fcc_sort_net__ps_hit__26_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__27(d,q,clock);
+module fcc_sort_net__ps_hit__27_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34593,10 +33305,10 @@ module fcc_sort_net__ps_hit__27(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__27
+endmodule // fcc_sort_net__ps_hit__27_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__28(d,q,clock);
+module fcc_sort_net__ps_hit__28_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34612,10 +33324,10 @@ module fcc_sort_net__ps_hit__28(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__28
+endmodule // fcc_sort_net__ps_hit__28_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__29(d,q,clock);
+module fcc_sort_net__ps_hit__29_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34631,10 +33343,10 @@ module fcc_sort_net__ps_hit__29(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__29
+endmodule // fcc_sort_net__ps_hit__29_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__3(d,q,clock);
+module fcc_sort_net__ps_hit__3_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34650,10 +33362,10 @@ module fcc_sort_net__ps_hit__3(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__3
+endmodule // fcc_sort_net__ps_hit__3_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__30(d,q,clock);
+module fcc_sort_net__ps_hit__30_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34669,10 +33381,10 @@ module fcc_sort_net__ps_hit__30(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__30
+endmodule // fcc_sort_net__ps_hit__30_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__31(d,q,clock);
+module fcc_sort_net__ps_hit__31_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34688,10 +33400,10 @@ module fcc_sort_net__ps_hit__31(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__31
+endmodule // fcc_sort_net__ps_hit__31_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__32(d,q,clock);
+module fcc_sort_net__ps_hit__32_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34707,10 +33419,10 @@ module fcc_sort_net__ps_hit__32(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__32
+endmodule // fcc_sort_net__ps_hit__32_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__33(d,q,clock);
+module fcc_sort_net__ps_hit__33_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34726,10 +33438,10 @@ module fcc_sort_net__ps_hit__33(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__33
+endmodule // fcc_sort_net__ps_hit__33_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__34(d,q,clock);
+module fcc_sort_net__ps_hit__34_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34745,10 +33457,10 @@ module fcc_sort_net__ps_hit__34(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__34
+endmodule // fcc_sort_net__ps_hit__34_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__35(d,q,clock);
+module fcc_sort_net__ps_hit__35_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34764,10 +33476,10 @@ module fcc_sort_net__ps_hit__35(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__35
+endmodule // fcc_sort_net__ps_hit__35_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__36(d,q,clock);
+module fcc_sort_net__ps_hit__36_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34783,10 +33495,10 @@ module fcc_sort_net__ps_hit__36(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__36
+endmodule // fcc_sort_net__ps_hit__36_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__37(d,q,clock);
+module fcc_sort_net__ps_hit__37_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34802,10 +33514,10 @@ module fcc_sort_net__ps_hit__37(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__37
+endmodule // fcc_sort_net__ps_hit__37_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__38(d,q,clock);
+module fcc_sort_net__ps_hit__38_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34821,10 +33533,10 @@ module fcc_sort_net__ps_hit__38(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__38
+endmodule // fcc_sort_net__ps_hit__38_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__39(d,q,clock);
+module fcc_sort_net__ps_hit__39_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34840,10 +33552,10 @@ module fcc_sort_net__ps_hit__39(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__39
+endmodule // fcc_sort_net__ps_hit__39_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__4(d,q,clock);
+module fcc_sort_net__ps_hit__4_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34859,10 +33571,10 @@ module fcc_sort_net__ps_hit__4(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__4
+endmodule // fcc_sort_net__ps_hit__4_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__40(d,q,clock);
+module fcc_sort_net__ps_hit__40_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34878,10 +33590,10 @@ module fcc_sort_net__ps_hit__40(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__40
+endmodule // fcc_sort_net__ps_hit__40_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__41(d,q,clock);
+module fcc_sort_net__ps_hit__41_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34897,10 +33609,10 @@ module fcc_sort_net__ps_hit__41(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__41
+endmodule // fcc_sort_net__ps_hit__41_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__42(d,q,clock);
+module fcc_sort_net__ps_hit__42_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34916,10 +33628,10 @@ module fcc_sort_net__ps_hit__42(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__42
+endmodule // fcc_sort_net__ps_hit__42_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__43(d,q,clock);
+module fcc_sort_net__ps_hit__43_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34935,10 +33647,10 @@ module fcc_sort_net__ps_hit__43(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__43
+endmodule // fcc_sort_net__ps_hit__43_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__44(d,q,clock);
+module fcc_sort_net__ps_hit__44_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34954,10 +33666,10 @@ module fcc_sort_net__ps_hit__44(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__44
+endmodule // fcc_sort_net__ps_hit__44_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__45(d,q,clock);
+module fcc_sort_net__ps_hit__45_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34973,10 +33685,10 @@ module fcc_sort_net__ps_hit__45(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__45
+endmodule // fcc_sort_net__ps_hit__45_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__46(d,q,clock);
+module fcc_sort_net__ps_hit__46_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -34992,10 +33704,10 @@ module fcc_sort_net__ps_hit__46(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__46
+endmodule // fcc_sort_net__ps_hit__46_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__47(d,q,clock);
+module fcc_sort_net__ps_hit__47_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35011,10 +33723,10 @@ module fcc_sort_net__ps_hit__47(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__47
+endmodule // fcc_sort_net__ps_hit__47_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__48(d,q,clock);
+module fcc_sort_net__ps_hit__48_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35030,10 +33742,10 @@ module fcc_sort_net__ps_hit__48(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__48
+endmodule // fcc_sort_net__ps_hit__48_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__49(d,q,clock);
+module fcc_sort_net__ps_hit__49_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35049,10 +33761,10 @@ module fcc_sort_net__ps_hit__49(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__49
+endmodule // fcc_sort_net__ps_hit__49_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__5(d,q,clock);
+module fcc_sort_net__ps_hit__5_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35068,10 +33780,10 @@ module fcc_sort_net__ps_hit__5(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__5
+endmodule // fcc_sort_net__ps_hit__5_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__50(d,q,clock);
+module fcc_sort_net__ps_hit__50_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35087,10 +33799,10 @@ module fcc_sort_net__ps_hit__50(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__50
+endmodule // fcc_sort_net__ps_hit__50_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__51(d,q,clock);
+module fcc_sort_net__ps_hit__51_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35106,10 +33818,10 @@ module fcc_sort_net__ps_hit__51(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__51
+endmodule // fcc_sort_net__ps_hit__51_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__52(d,q,clock);
+module fcc_sort_net__ps_hit__52_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35125,10 +33837,10 @@ module fcc_sort_net__ps_hit__52(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__52
+endmodule // fcc_sort_net__ps_hit__52_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__53(d,q,clock);
+module fcc_sort_net__ps_hit__53_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35144,10 +33856,10 @@ module fcc_sort_net__ps_hit__53(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__53
+endmodule // fcc_sort_net__ps_hit__53_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__54(d,q,clock);
+module fcc_sort_net__ps_hit__54_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35163,10 +33875,10 @@ module fcc_sort_net__ps_hit__54(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__54
+endmodule // fcc_sort_net__ps_hit__54_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__55(d,q,clock);
+module fcc_sort_net__ps_hit__55_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35182,10 +33894,10 @@ module fcc_sort_net__ps_hit__55(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__55
+endmodule // fcc_sort_net__ps_hit__55_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__56(d,q,clock);
+module fcc_sort_net__ps_hit__56_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35201,10 +33913,10 @@ module fcc_sort_net__ps_hit__56(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__56
+endmodule // fcc_sort_net__ps_hit__56_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__57(d,q,clock);
+module fcc_sort_net__ps_hit__57_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35220,10 +33932,10 @@ module fcc_sort_net__ps_hit__57(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__57
+endmodule // fcc_sort_net__ps_hit__57_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__58(d,q,clock);
+module fcc_sort_net__ps_hit__58_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35239,10 +33951,10 @@ module fcc_sort_net__ps_hit__58(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__58
+endmodule // fcc_sort_net__ps_hit__58_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__59(d,q,clock);
+module fcc_sort_net__ps_hit__59_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35258,10 +33970,10 @@ module fcc_sort_net__ps_hit__59(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__59
+endmodule // fcc_sort_net__ps_hit__59_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__6(d,q,clock);
+module fcc_sort_net__ps_hit__6_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35277,10 +33989,10 @@ module fcc_sort_net__ps_hit__6(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__6
+endmodule // fcc_sort_net__ps_hit__6_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__60(d,q,clock);
+module fcc_sort_net__ps_hit__60_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35296,10 +34008,10 @@ module fcc_sort_net__ps_hit__60(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__60
+endmodule // fcc_sort_net__ps_hit__60_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__61(d,q,clock);
+module fcc_sort_net__ps_hit__61_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35315,10 +34027,10 @@ module fcc_sort_net__ps_hit__61(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__61
+endmodule // fcc_sort_net__ps_hit__61_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__62(d,q,clock);
+module fcc_sort_net__ps_hit__62_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35334,10 +34046,10 @@ module fcc_sort_net__ps_hit__62(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__62
+endmodule // fcc_sort_net__ps_hit__62_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__63(d,q,clock);
+module fcc_sort_net__ps_hit__63_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35353,10 +34065,10 @@ module fcc_sort_net__ps_hit__63(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__63
+endmodule // fcc_sort_net__ps_hit__63_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__64(d,q,clock);
+module fcc_sort_net__ps_hit__64_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35372,10 +34084,10 @@ module fcc_sort_net__ps_hit__64(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__64
+endmodule // fcc_sort_net__ps_hit__64_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__65(d,q,clock);
+module fcc_sort_net__ps_hit__65_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35391,10 +34103,10 @@ module fcc_sort_net__ps_hit__65(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__65
+endmodule // fcc_sort_net__ps_hit__65_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__66(d,q,clock);
+module fcc_sort_net__ps_hit__66_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35410,10 +34122,10 @@ module fcc_sort_net__ps_hit__66(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__66
+endmodule // fcc_sort_net__ps_hit__66_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__67(d,q,clock);
+module fcc_sort_net__ps_hit__67_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35429,10 +34141,10 @@ module fcc_sort_net__ps_hit__67(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__67
+endmodule // fcc_sort_net__ps_hit__67_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__68(d,q,clock);
+module fcc_sort_net__ps_hit__68_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35448,10 +34160,10 @@ module fcc_sort_net__ps_hit__68(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__68
+endmodule // fcc_sort_net__ps_hit__68_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__69(d,q,clock);
+module fcc_sort_net__ps_hit__69_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35467,10 +34179,10 @@ module fcc_sort_net__ps_hit__69(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__69
+endmodule // fcc_sort_net__ps_hit__69_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__7(d,q,clock);
+module fcc_sort_net__ps_hit__7_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35486,10 +34198,10 @@ module fcc_sort_net__ps_hit__7(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__7
+endmodule // fcc_sort_net__ps_hit__7_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__70(d,q,clock);
+module fcc_sort_net__ps_hit__70_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35505,10 +34217,10 @@ module fcc_sort_net__ps_hit__70(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__70
+endmodule // fcc_sort_net__ps_hit__70_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__71(d,q,clock);
+module fcc_sort_net__ps_hit__71_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35524,10 +34236,10 @@ module fcc_sort_net__ps_hit__71(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__71
+endmodule // fcc_sort_net__ps_hit__71_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__72(d,q,clock);
+module fcc_sort_net__ps_hit__72_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35543,10 +34255,10 @@ module fcc_sort_net__ps_hit__72(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__72
+endmodule // fcc_sort_net__ps_hit__72_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__73(d,q,clock);
+module fcc_sort_net__ps_hit__73_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35562,10 +34274,10 @@ module fcc_sort_net__ps_hit__73(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__73
+endmodule // fcc_sort_net__ps_hit__73_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__74(d,q,clock);
+module fcc_sort_net__ps_hit__74_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35581,10 +34293,10 @@ module fcc_sort_net__ps_hit__74(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__74
+endmodule // fcc_sort_net__ps_hit__74_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__75(d,q,clock);
+module fcc_sort_net__ps_hit__75_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35600,10 +34312,10 @@ module fcc_sort_net__ps_hit__75(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__75
+endmodule // fcc_sort_net__ps_hit__75_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__76(d,q,clock);
+module fcc_sort_net__ps_hit__76_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35619,10 +34331,10 @@ module fcc_sort_net__ps_hit__76(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__76
+endmodule // fcc_sort_net__ps_hit__76_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__77(d,q,clock);
+module fcc_sort_net__ps_hit__77_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35638,10 +34350,10 @@ module fcc_sort_net__ps_hit__77(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__77
+endmodule // fcc_sort_net__ps_hit__77_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__78(d,q,clock);
+module fcc_sort_net__ps_hit__78_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35657,10 +34369,10 @@ module fcc_sort_net__ps_hit__78(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__78
+endmodule // fcc_sort_net__ps_hit__78_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__79(d,q,clock);
+module fcc_sort_net__ps_hit__79_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35676,10 +34388,10 @@ module fcc_sort_net__ps_hit__79(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__79
+endmodule // fcc_sort_net__ps_hit__79_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__8(d,q,clock);
+module fcc_sort_net__ps_hit__8_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35695,10 +34407,10 @@ module fcc_sort_net__ps_hit__8(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__8
+endmodule // fcc_sort_net__ps_hit__8_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__80(d,q,clock);
+module fcc_sort_net__ps_hit__80_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35714,10 +34426,10 @@ module fcc_sort_net__ps_hit__80(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__80
+endmodule // fcc_sort_net__ps_hit__80_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__81(d,q,clock);
+module fcc_sort_net__ps_hit__81_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35733,10 +34445,10 @@ module fcc_sort_net__ps_hit__81(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__81
+endmodule // fcc_sort_net__ps_hit__81_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__82(d,q,clock);
+module fcc_sort_net__ps_hit__82_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35752,10 +34464,10 @@ module fcc_sort_net__ps_hit__82(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__82
+endmodule // fcc_sort_net__ps_hit__82_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__83(d,q,clock);
+module fcc_sort_net__ps_hit__83_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35771,10 +34483,10 @@ module fcc_sort_net__ps_hit__83(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__83
+endmodule // fcc_sort_net__ps_hit__83_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__84(d,q,clock);
+module fcc_sort_net__ps_hit__84_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35790,10 +34502,10 @@ module fcc_sort_net__ps_hit__84(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__84
+endmodule // fcc_sort_net__ps_hit__84_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__85(d,q,clock);
+module fcc_sort_net__ps_hit__85_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35809,10 +34521,10 @@ module fcc_sort_net__ps_hit__85(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__85
+endmodule // fcc_sort_net__ps_hit__85_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__86(d,q,clock);
+module fcc_sort_net__ps_hit__86_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35828,10 +34540,10 @@ module fcc_sort_net__ps_hit__86(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__86
+endmodule // fcc_sort_net__ps_hit__86_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__87(d,q,clock);
+module fcc_sort_net__ps_hit__87_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35847,10 +34559,10 @@ module fcc_sort_net__ps_hit__87(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__87
+endmodule // fcc_sort_net__ps_hit__87_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__88(d,q,clock);
+module fcc_sort_net__ps_hit__88_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35866,10 +34578,10 @@ module fcc_sort_net__ps_hit__88(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__88
+endmodule // fcc_sort_net__ps_hit__88_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__89(d,q,clock);
+module fcc_sort_net__ps_hit__89_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35885,10 +34597,10 @@ module fcc_sort_net__ps_hit__89(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__89
+endmodule // fcc_sort_net__ps_hit__89_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__9(d,q,clock);
+module fcc_sort_net__ps_hit__9_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35904,10 +34616,10 @@ module fcc_sort_net__ps_hit__9(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__9
+endmodule // fcc_sort_net__ps_hit__9_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__90(d,q,clock);
+module fcc_sort_net__ps_hit__90_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35923,10 +34635,10 @@ module fcc_sort_net__ps_hit__90(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__90
+endmodule // fcc_sort_net__ps_hit__90_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__91(d,q,clock);
+module fcc_sort_net__ps_hit__91_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35942,10 +34654,10 @@ module fcc_sort_net__ps_hit__91(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__91
+endmodule // fcc_sort_net__ps_hit__91_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__92(d,q,clock);
+module fcc_sort_net__ps_hit__92_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35961,10 +34673,10 @@ module fcc_sort_net__ps_hit__92(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__92
+endmodule // fcc_sort_net__ps_hit__92_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__93(d,q,clock);
+module fcc_sort_net__ps_hit__93_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35980,10 +34692,10 @@ module fcc_sort_net__ps_hit__93(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__93
+endmodule // fcc_sort_net__ps_hit__93_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__94(d,q,clock);
+module fcc_sort_net__ps_hit__94_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -35999,10 +34711,10 @@ module fcc_sort_net__ps_hit__94(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__94
+endmodule // fcc_sort_net__ps_hit__94_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__95(d,q,clock);
+module fcc_sort_net__ps_hit__95_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -36018,10 +34730,10 @@ module fcc_sort_net__ps_hit__95(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__95
+endmodule // fcc_sort_net__ps_hit__95_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__96(d,q,clock);
+module fcc_sort_net__ps_hit__96_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -36037,10 +34749,10 @@ module fcc_sort_net__ps_hit__96(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__96
+endmodule // fcc_sort_net__ps_hit__96_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__97(d,q,clock);
+module fcc_sort_net__ps_hit__97_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -36056,10 +34768,10 @@ module fcc_sort_net__ps_hit__97(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__97
+endmodule // fcc_sort_net__ps_hit__97_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__98(d,q,clock);
+module fcc_sort_net__ps_hit__98_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -36075,10 +34787,10 @@ module fcc_sort_net__ps_hit__98(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__98
+endmodule // fcc_sort_net__ps_hit__98_k7_668cf05b
 
 
-module fcc_sort_net__ps_hit__99(d,q,clock);
+module fcc_sort_net__ps_hit__99_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -36094,10 +34806,10 @@ module fcc_sort_net__ps_hit__99(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_hit__99
+endmodule // fcc_sort_net__ps_hit__99_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__0(d,q,clock);
+module fcc_sort_net__ps_rep__0_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36113,10 +34825,10 @@ module fcc_sort_net__ps_rep__0(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__0
+endmodule // fcc_sort_net__ps_rep__0_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__1(d,q,clock);
+module fcc_sort_net__ps_rep__1_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36132,10 +34844,10 @@ module fcc_sort_net__ps_rep__1(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__1
+endmodule // fcc_sort_net__ps_rep__1_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__10(d,q,clock);
+module fcc_sort_net__ps_rep__10_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36151,10 +34863,10 @@ module fcc_sort_net__ps_rep__10(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__10
+endmodule // fcc_sort_net__ps_rep__10_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__100(d,q,clock);
+module fcc_sort_net__ps_rep__100_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36170,10 +34882,10 @@ module fcc_sort_net__ps_rep__100(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__100
+endmodule // fcc_sort_net__ps_rep__100_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__101(d,q,clock);
+module fcc_sort_net__ps_rep__101_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36189,10 +34901,10 @@ module fcc_sort_net__ps_rep__101(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__101
+endmodule // fcc_sort_net__ps_rep__101_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__102(d,q,clock);
+module fcc_sort_net__ps_rep__102_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36208,10 +34920,10 @@ module fcc_sort_net__ps_rep__102(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__102
+endmodule // fcc_sort_net__ps_rep__102_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__103(d,q,clock);
+module fcc_sort_net__ps_rep__103_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36227,10 +34939,10 @@ module fcc_sort_net__ps_rep__103(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__103
+endmodule // fcc_sort_net__ps_rep__103_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__104(d,q,clock);
+module fcc_sort_net__ps_rep__104_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36246,10 +34958,10 @@ module fcc_sort_net__ps_rep__104(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__104
+endmodule // fcc_sort_net__ps_rep__104_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__105(d,q,clock);
+module fcc_sort_net__ps_rep__105_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36265,10 +34977,10 @@ module fcc_sort_net__ps_rep__105(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__105
+endmodule // fcc_sort_net__ps_rep__105_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__106(d,q,clock);
+module fcc_sort_net__ps_rep__106_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36284,10 +34996,10 @@ module fcc_sort_net__ps_rep__106(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__106
+endmodule // fcc_sort_net__ps_rep__106_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__107(d,q,clock);
+module fcc_sort_net__ps_rep__107_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36303,10 +35015,10 @@ module fcc_sort_net__ps_rep__107(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__107
+endmodule // fcc_sort_net__ps_rep__107_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__108(d,q,clock);
+module fcc_sort_net__ps_rep__108_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36322,10 +35034,10 @@ module fcc_sort_net__ps_rep__108(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__108
+endmodule // fcc_sort_net__ps_rep__108_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__109(d,q,clock);
+module fcc_sort_net__ps_rep__109_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36341,10 +35053,10 @@ module fcc_sort_net__ps_rep__109(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__109
+endmodule // fcc_sort_net__ps_rep__109_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__11(d,q,clock);
+module fcc_sort_net__ps_rep__11_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36360,10 +35072,10 @@ module fcc_sort_net__ps_rep__11(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__11
+endmodule // fcc_sort_net__ps_rep__11_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__110(d,q,clock);
+module fcc_sort_net__ps_rep__110_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36379,10 +35091,10 @@ module fcc_sort_net__ps_rep__110(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__110
+endmodule // fcc_sort_net__ps_rep__110_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__111(d,q,clock);
+module fcc_sort_net__ps_rep__111_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36398,10 +35110,10 @@ module fcc_sort_net__ps_rep__111(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__111
+endmodule // fcc_sort_net__ps_rep__111_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__112(d,q,clock);
+module fcc_sort_net__ps_rep__112_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36417,10 +35129,10 @@ module fcc_sort_net__ps_rep__112(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__112
+endmodule // fcc_sort_net__ps_rep__112_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__113(d,q,clock);
+module fcc_sort_net__ps_rep__113_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36436,10 +35148,10 @@ module fcc_sort_net__ps_rep__113(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__113
+endmodule // fcc_sort_net__ps_rep__113_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__114(d,q,clock);
+module fcc_sort_net__ps_rep__114_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36455,10 +35167,10 @@ module fcc_sort_net__ps_rep__114(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__114
+endmodule // fcc_sort_net__ps_rep__114_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__115(d,q,clock);
+module fcc_sort_net__ps_rep__115_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36474,10 +35186,10 @@ module fcc_sort_net__ps_rep__115(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__115
+endmodule // fcc_sort_net__ps_rep__115_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__116(d,q,clock);
+module fcc_sort_net__ps_rep__116_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36493,10 +35205,10 @@ module fcc_sort_net__ps_rep__116(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__116
+endmodule // fcc_sort_net__ps_rep__116_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__117(d,q,clock);
+module fcc_sort_net__ps_rep__117_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36512,10 +35224,10 @@ module fcc_sort_net__ps_rep__117(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__117
+endmodule // fcc_sort_net__ps_rep__117_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__118(d,q,clock);
+module fcc_sort_net__ps_rep__118_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36531,10 +35243,10 @@ module fcc_sort_net__ps_rep__118(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__118
+endmodule // fcc_sort_net__ps_rep__118_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__119(d,q,clock);
+module fcc_sort_net__ps_rep__119_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36550,10 +35262,10 @@ module fcc_sort_net__ps_rep__119(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__119
+endmodule // fcc_sort_net__ps_rep__119_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__12(d,q,clock);
+module fcc_sort_net__ps_rep__12_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36569,10 +35281,10 @@ module fcc_sort_net__ps_rep__12(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__12
+endmodule // fcc_sort_net__ps_rep__12_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__120(d,q,clock);
+module fcc_sort_net__ps_rep__120_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36588,10 +35300,10 @@ module fcc_sort_net__ps_rep__120(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__120
+endmodule // fcc_sort_net__ps_rep__120_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__121(d,q,clock);
+module fcc_sort_net__ps_rep__121_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36607,10 +35319,10 @@ module fcc_sort_net__ps_rep__121(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__121
+endmodule // fcc_sort_net__ps_rep__121_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__122(d,q,clock);
+module fcc_sort_net__ps_rep__122_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36626,10 +35338,10 @@ module fcc_sort_net__ps_rep__122(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__122
+endmodule // fcc_sort_net__ps_rep__122_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__123(d,q,clock);
+module fcc_sort_net__ps_rep__123_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36645,10 +35357,10 @@ module fcc_sort_net__ps_rep__123(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__123
+endmodule // fcc_sort_net__ps_rep__123_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__124(d,q,clock);
+module fcc_sort_net__ps_rep__124_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36664,10 +35376,10 @@ module fcc_sort_net__ps_rep__124(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__124
+endmodule // fcc_sort_net__ps_rep__124_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__125(d,q,clock);
+module fcc_sort_net__ps_rep__125_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36683,10 +35395,10 @@ module fcc_sort_net__ps_rep__125(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__125
+endmodule // fcc_sort_net__ps_rep__125_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__126(d,q,clock);
+module fcc_sort_net__ps_rep__126_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36702,10 +35414,10 @@ module fcc_sort_net__ps_rep__126(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__126
+endmodule // fcc_sort_net__ps_rep__126_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__127(d,q,clock);
+module fcc_sort_net__ps_rep__127_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36721,10 +35433,10 @@ module fcc_sort_net__ps_rep__127(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__127
+endmodule // fcc_sort_net__ps_rep__127_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__128(d,q,clock);
+module fcc_sort_net__ps_rep__128_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36740,10 +35452,10 @@ module fcc_sort_net__ps_rep__128(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__128
+endmodule // fcc_sort_net__ps_rep__128_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__129(d,q,clock);
+module fcc_sort_net__ps_rep__129_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36759,10 +35471,10 @@ module fcc_sort_net__ps_rep__129(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__129
+endmodule // fcc_sort_net__ps_rep__129_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__13(d,q,clock);
+module fcc_sort_net__ps_rep__13_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36778,10 +35490,10 @@ module fcc_sort_net__ps_rep__13(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__13
+endmodule // fcc_sort_net__ps_rep__13_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__130(d,q,clock);
+module fcc_sort_net__ps_rep__130_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36797,10 +35509,10 @@ module fcc_sort_net__ps_rep__130(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__130
+endmodule // fcc_sort_net__ps_rep__130_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__131(d,q,clock);
+module fcc_sort_net__ps_rep__131_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36816,10 +35528,10 @@ module fcc_sort_net__ps_rep__131(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__131
+endmodule // fcc_sort_net__ps_rep__131_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__132(d,q,clock);
+module fcc_sort_net__ps_rep__132_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36835,10 +35547,10 @@ module fcc_sort_net__ps_rep__132(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__132
+endmodule // fcc_sort_net__ps_rep__132_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__133(d,q,clock);
+module fcc_sort_net__ps_rep__133_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36854,10 +35566,10 @@ module fcc_sort_net__ps_rep__133(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__133
+endmodule // fcc_sort_net__ps_rep__133_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__134(d,q,clock);
+module fcc_sort_net__ps_rep__134_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36873,10 +35585,10 @@ module fcc_sort_net__ps_rep__134(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__134
+endmodule // fcc_sort_net__ps_rep__134_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__135(d,q,clock);
+module fcc_sort_net__ps_rep__135_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36892,10 +35604,10 @@ module fcc_sort_net__ps_rep__135(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__135
+endmodule // fcc_sort_net__ps_rep__135_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__136(d,q,clock);
+module fcc_sort_net__ps_rep__136_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36911,10 +35623,10 @@ module fcc_sort_net__ps_rep__136(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__136
+endmodule // fcc_sort_net__ps_rep__136_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__137(d,q,clock);
+module fcc_sort_net__ps_rep__137_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36930,10 +35642,10 @@ module fcc_sort_net__ps_rep__137(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__137
+endmodule // fcc_sort_net__ps_rep__137_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__138(d,q,clock);
+module fcc_sort_net__ps_rep__138_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36949,10 +35661,10 @@ module fcc_sort_net__ps_rep__138(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__138
+endmodule // fcc_sort_net__ps_rep__138_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__139(d,q,clock);
+module fcc_sort_net__ps_rep__139_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36968,10 +35680,10 @@ module fcc_sort_net__ps_rep__139(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__139
+endmodule // fcc_sort_net__ps_rep__139_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__14(d,q,clock);
+module fcc_sort_net__ps_rep__14_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -36987,10 +35699,10 @@ module fcc_sort_net__ps_rep__14(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__14
+endmodule // fcc_sort_net__ps_rep__14_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__140(d,q,clock);
+module fcc_sort_net__ps_rep__140_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37006,10 +35718,10 @@ module fcc_sort_net__ps_rep__140(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__140
+endmodule // fcc_sort_net__ps_rep__140_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__141(d,q,clock);
+module fcc_sort_net__ps_rep__141_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37025,10 +35737,10 @@ module fcc_sort_net__ps_rep__141(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__141
+endmodule // fcc_sort_net__ps_rep__141_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__142(d,q,clock);
+module fcc_sort_net__ps_rep__142_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37044,10 +35756,10 @@ module fcc_sort_net__ps_rep__142(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__142
+endmodule // fcc_sort_net__ps_rep__142_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__143(d,q,clock);
+module fcc_sort_net__ps_rep__143_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37063,10 +35775,10 @@ module fcc_sort_net__ps_rep__143(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__143
+endmodule // fcc_sort_net__ps_rep__143_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__144(d,q,clock);
+module fcc_sort_net__ps_rep__144_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37082,10 +35794,10 @@ module fcc_sort_net__ps_rep__144(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__144
+endmodule // fcc_sort_net__ps_rep__144_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__145(d,q,clock);
+module fcc_sort_net__ps_rep__145_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37101,10 +35813,10 @@ module fcc_sort_net__ps_rep__145(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__145
+endmodule // fcc_sort_net__ps_rep__145_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__146(d,q,clock);
+module fcc_sort_net__ps_rep__146_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37120,10 +35832,10 @@ module fcc_sort_net__ps_rep__146(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__146
+endmodule // fcc_sort_net__ps_rep__146_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__147(d,q,clock);
+module fcc_sort_net__ps_rep__147_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37139,10 +35851,10 @@ module fcc_sort_net__ps_rep__147(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__147
+endmodule // fcc_sort_net__ps_rep__147_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__148(d,q,clock);
+module fcc_sort_net__ps_rep__148_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37158,10 +35870,10 @@ module fcc_sort_net__ps_rep__148(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__148
+endmodule // fcc_sort_net__ps_rep__148_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__149(d,q,clock);
+module fcc_sort_net__ps_rep__149_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37177,10 +35889,10 @@ module fcc_sort_net__ps_rep__149(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__149
+endmodule // fcc_sort_net__ps_rep__149_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__15(d,q,clock);
+module fcc_sort_net__ps_rep__15_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37196,10 +35908,10 @@ module fcc_sort_net__ps_rep__15(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__15
+endmodule // fcc_sort_net__ps_rep__15_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__150(d,q,clock);
+module fcc_sort_net__ps_rep__150_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37215,10 +35927,10 @@ module fcc_sort_net__ps_rep__150(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__150
+endmodule // fcc_sort_net__ps_rep__150_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__151(d,q,clock);
+module fcc_sort_net__ps_rep__151_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37234,10 +35946,10 @@ module fcc_sort_net__ps_rep__151(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__151
+endmodule // fcc_sort_net__ps_rep__151_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__152(d,q,clock);
+module fcc_sort_net__ps_rep__152_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37253,10 +35965,10 @@ module fcc_sort_net__ps_rep__152(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__152
+endmodule // fcc_sort_net__ps_rep__152_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__153(d,q,clock);
+module fcc_sort_net__ps_rep__153_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37272,10 +35984,10 @@ module fcc_sort_net__ps_rep__153(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__153
+endmodule // fcc_sort_net__ps_rep__153_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__154(d,q,clock);
+module fcc_sort_net__ps_rep__154_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37291,10 +36003,10 @@ module fcc_sort_net__ps_rep__154(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__154
+endmodule // fcc_sort_net__ps_rep__154_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__155(d,q,clock);
+module fcc_sort_net__ps_rep__155_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37310,10 +36022,10 @@ module fcc_sort_net__ps_rep__155(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__155
+endmodule // fcc_sort_net__ps_rep__155_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__156(d,q,clock);
+module fcc_sort_net__ps_rep__156_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37329,10 +36041,10 @@ module fcc_sort_net__ps_rep__156(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__156
+endmodule // fcc_sort_net__ps_rep__156_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__157(d,q,clock);
+module fcc_sort_net__ps_rep__157_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37348,10 +36060,10 @@ module fcc_sort_net__ps_rep__157(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__157
+endmodule // fcc_sort_net__ps_rep__157_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__158(d,q,clock);
+module fcc_sort_net__ps_rep__158_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37367,10 +36079,10 @@ module fcc_sort_net__ps_rep__158(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__158
+endmodule // fcc_sort_net__ps_rep__158_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__159(d,q,clock);
+module fcc_sort_net__ps_rep__159_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37386,10 +36098,10 @@ module fcc_sort_net__ps_rep__159(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__159
+endmodule // fcc_sort_net__ps_rep__159_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__16(d,q,clock);
+module fcc_sort_net__ps_rep__16_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37405,10 +36117,10 @@ module fcc_sort_net__ps_rep__16(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__16
+endmodule // fcc_sort_net__ps_rep__16_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__160(d,q,clock);
+module fcc_sort_net__ps_rep__160_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37424,10 +36136,10 @@ module fcc_sort_net__ps_rep__160(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__160
+endmodule // fcc_sort_net__ps_rep__160_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__161(d,q,clock);
+module fcc_sort_net__ps_rep__161_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37443,10 +36155,10 @@ module fcc_sort_net__ps_rep__161(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__161
+endmodule // fcc_sort_net__ps_rep__161_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__162(d,q,clock);
+module fcc_sort_net__ps_rep__162_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37462,10 +36174,10 @@ module fcc_sort_net__ps_rep__162(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__162
+endmodule // fcc_sort_net__ps_rep__162_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__163(d,q,clock);
+module fcc_sort_net__ps_rep__163_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37481,10 +36193,10 @@ module fcc_sort_net__ps_rep__163(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__163
+endmodule // fcc_sort_net__ps_rep__163_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__164(d,q,clock);
+module fcc_sort_net__ps_rep__164_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37500,10 +36212,10 @@ module fcc_sort_net__ps_rep__164(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__164
+endmodule // fcc_sort_net__ps_rep__164_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__165(d,q,clock);
+module fcc_sort_net__ps_rep__165_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37519,10 +36231,10 @@ module fcc_sort_net__ps_rep__165(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__165
+endmodule // fcc_sort_net__ps_rep__165_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__166(d,q,clock);
+module fcc_sort_net__ps_rep__166_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37538,10 +36250,10 @@ module fcc_sort_net__ps_rep__166(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__166
+endmodule // fcc_sort_net__ps_rep__166_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__167(d,q,clock);
+module fcc_sort_net__ps_rep__167_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37557,10 +36269,10 @@ module fcc_sort_net__ps_rep__167(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__167
+endmodule // fcc_sort_net__ps_rep__167_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__168(d,q,clock);
+module fcc_sort_net__ps_rep__168_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37576,10 +36288,10 @@ module fcc_sort_net__ps_rep__168(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__168
+endmodule // fcc_sort_net__ps_rep__168_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__169(d,q,clock);
+module fcc_sort_net__ps_rep__169_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37595,10 +36307,10 @@ module fcc_sort_net__ps_rep__169(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__169
+endmodule // fcc_sort_net__ps_rep__169_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__17(d,q,clock);
+module fcc_sort_net__ps_rep__17_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37614,10 +36326,10 @@ module fcc_sort_net__ps_rep__17(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__17
+endmodule // fcc_sort_net__ps_rep__17_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__170(d,q,clock);
+module fcc_sort_net__ps_rep__170_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37633,10 +36345,10 @@ module fcc_sort_net__ps_rep__170(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__170
+endmodule // fcc_sort_net__ps_rep__170_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__171(d,q,clock);
+module fcc_sort_net__ps_rep__171_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37652,10 +36364,10 @@ module fcc_sort_net__ps_rep__171(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__171
+endmodule // fcc_sort_net__ps_rep__171_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__172(d,q,clock);
+module fcc_sort_net__ps_rep__172_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37671,10 +36383,10 @@ module fcc_sort_net__ps_rep__172(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__172
+endmodule // fcc_sort_net__ps_rep__172_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__173(d,q,clock);
+module fcc_sort_net__ps_rep__173_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37690,10 +36402,10 @@ module fcc_sort_net__ps_rep__173(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__173
+endmodule // fcc_sort_net__ps_rep__173_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__174(d,q,clock);
+module fcc_sort_net__ps_rep__174_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37709,10 +36421,10 @@ module fcc_sort_net__ps_rep__174(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__174
+endmodule // fcc_sort_net__ps_rep__174_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__175(d,q,clock);
+module fcc_sort_net__ps_rep__175_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37728,10 +36440,10 @@ module fcc_sort_net__ps_rep__175(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__175
+endmodule // fcc_sort_net__ps_rep__175_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__176(d,q,clock);
+module fcc_sort_net__ps_rep__176_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37747,10 +36459,10 @@ module fcc_sort_net__ps_rep__176(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__176
+endmodule // fcc_sort_net__ps_rep__176_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__177(d,q,clock);
+module fcc_sort_net__ps_rep__177_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37766,10 +36478,10 @@ module fcc_sort_net__ps_rep__177(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__177
+endmodule // fcc_sort_net__ps_rep__177_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__178(d,q,clock);
+module fcc_sort_net__ps_rep__178_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37785,10 +36497,10 @@ module fcc_sort_net__ps_rep__178(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__178
+endmodule // fcc_sort_net__ps_rep__178_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__179(d,q,clock);
+module fcc_sort_net__ps_rep__179_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37804,10 +36516,10 @@ module fcc_sort_net__ps_rep__179(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__179
+endmodule // fcc_sort_net__ps_rep__179_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__18(d,q,clock);
+module fcc_sort_net__ps_rep__18_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37823,10 +36535,10 @@ module fcc_sort_net__ps_rep__18(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__18
+endmodule // fcc_sort_net__ps_rep__18_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__180(d,q,clock);
+module fcc_sort_net__ps_rep__180_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37842,10 +36554,10 @@ module fcc_sort_net__ps_rep__180(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__180
+endmodule // fcc_sort_net__ps_rep__180_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__181(d,q,clock);
+module fcc_sort_net__ps_rep__181_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37861,10 +36573,10 @@ module fcc_sort_net__ps_rep__181(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__181
+endmodule // fcc_sort_net__ps_rep__181_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__182(d,q,clock);
+module fcc_sort_net__ps_rep__182_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37880,10 +36592,10 @@ module fcc_sort_net__ps_rep__182(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__182
+endmodule // fcc_sort_net__ps_rep__182_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__183(d,q,clock);
+module fcc_sort_net__ps_rep__183_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37899,10 +36611,10 @@ module fcc_sort_net__ps_rep__183(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__183
+endmodule // fcc_sort_net__ps_rep__183_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__184(d,q,clock);
+module fcc_sort_net__ps_rep__184_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37918,10 +36630,10 @@ module fcc_sort_net__ps_rep__184(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__184
+endmodule // fcc_sort_net__ps_rep__184_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__185(d,q,clock);
+module fcc_sort_net__ps_rep__185_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37937,10 +36649,10 @@ module fcc_sort_net__ps_rep__185(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__185
+endmodule // fcc_sort_net__ps_rep__185_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__186(d,q,clock);
+module fcc_sort_net__ps_rep__186_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37956,10 +36668,10 @@ module fcc_sort_net__ps_rep__186(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__186
+endmodule // fcc_sort_net__ps_rep__186_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__187(d,q,clock);
+module fcc_sort_net__ps_rep__187_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37975,10 +36687,10 @@ module fcc_sort_net__ps_rep__187(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__187
+endmodule // fcc_sort_net__ps_rep__187_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__188(d,q,clock);
+module fcc_sort_net__ps_rep__188_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -37994,10 +36706,10 @@ module fcc_sort_net__ps_rep__188(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__188
+endmodule // fcc_sort_net__ps_rep__188_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__19(d,q,clock);
+module fcc_sort_net__ps_rep__19_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38013,10 +36725,10 @@ module fcc_sort_net__ps_rep__19(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__19
+endmodule // fcc_sort_net__ps_rep__19_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__2(d,q,clock);
+module fcc_sort_net__ps_rep__2_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38032,10 +36744,10 @@ module fcc_sort_net__ps_rep__2(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__2
+endmodule // fcc_sort_net__ps_rep__2_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__20(d,q,clock);
+module fcc_sort_net__ps_rep__20_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38051,10 +36763,10 @@ module fcc_sort_net__ps_rep__20(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__20
+endmodule // fcc_sort_net__ps_rep__20_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__21(d,q,clock);
+module fcc_sort_net__ps_rep__21_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38070,10 +36782,10 @@ module fcc_sort_net__ps_rep__21(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__21
+endmodule // fcc_sort_net__ps_rep__21_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__22(d,q,clock);
+module fcc_sort_net__ps_rep__22_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38089,10 +36801,10 @@ module fcc_sort_net__ps_rep__22(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__22
+endmodule // fcc_sort_net__ps_rep__22_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__23(d,q,clock);
+module fcc_sort_net__ps_rep__23_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38108,10 +36820,10 @@ module fcc_sort_net__ps_rep__23(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__23
+endmodule // fcc_sort_net__ps_rep__23_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__24(d,q,clock);
+module fcc_sort_net__ps_rep__24_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38127,10 +36839,10 @@ module fcc_sort_net__ps_rep__24(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__24
+endmodule // fcc_sort_net__ps_rep__24_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__25(d,q,clock);
+module fcc_sort_net__ps_rep__25_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38146,10 +36858,10 @@ module fcc_sort_net__ps_rep__25(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__25
+endmodule // fcc_sort_net__ps_rep__25_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__26(d,q,clock);
+module fcc_sort_net__ps_rep__26_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38165,10 +36877,10 @@ module fcc_sort_net__ps_rep__26(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__26
+endmodule // fcc_sort_net__ps_rep__26_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__27(d,q,clock);
+module fcc_sort_net__ps_rep__27_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38184,10 +36896,10 @@ module fcc_sort_net__ps_rep__27(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__27
+endmodule // fcc_sort_net__ps_rep__27_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__28(d,q,clock);
+module fcc_sort_net__ps_rep__28_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38203,10 +36915,10 @@ module fcc_sort_net__ps_rep__28(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__28
+endmodule // fcc_sort_net__ps_rep__28_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__29(d,q,clock);
+module fcc_sort_net__ps_rep__29_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38222,10 +36934,10 @@ module fcc_sort_net__ps_rep__29(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__29
+endmodule // fcc_sort_net__ps_rep__29_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__3(d,q,clock);
+module fcc_sort_net__ps_rep__3_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38241,10 +36953,10 @@ module fcc_sort_net__ps_rep__3(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__3
+endmodule // fcc_sort_net__ps_rep__3_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__30(d,q,clock);
+module fcc_sort_net__ps_rep__30_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38260,10 +36972,10 @@ module fcc_sort_net__ps_rep__30(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__30
+endmodule // fcc_sort_net__ps_rep__30_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__31(d,q,clock);
+module fcc_sort_net__ps_rep__31_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38279,10 +36991,10 @@ module fcc_sort_net__ps_rep__31(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__31
+endmodule // fcc_sort_net__ps_rep__31_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__32(d,q,clock);
+module fcc_sort_net__ps_rep__32_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38298,10 +37010,10 @@ module fcc_sort_net__ps_rep__32(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__32
+endmodule // fcc_sort_net__ps_rep__32_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__33(d,q,clock);
+module fcc_sort_net__ps_rep__33_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38317,10 +37029,10 @@ module fcc_sort_net__ps_rep__33(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__33
+endmodule // fcc_sort_net__ps_rep__33_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__34(d,q,clock);
+module fcc_sort_net__ps_rep__34_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38336,10 +37048,10 @@ module fcc_sort_net__ps_rep__34(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__34
+endmodule // fcc_sort_net__ps_rep__34_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__35(d,q,clock);
+module fcc_sort_net__ps_rep__35_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38355,10 +37067,10 @@ module fcc_sort_net__ps_rep__35(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__35
+endmodule // fcc_sort_net__ps_rep__35_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__36(d,q,clock);
+module fcc_sort_net__ps_rep__36_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38374,10 +37086,10 @@ module fcc_sort_net__ps_rep__36(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__36
+endmodule // fcc_sort_net__ps_rep__36_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__37(d,q,clock);
+module fcc_sort_net__ps_rep__37_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38393,10 +37105,10 @@ module fcc_sort_net__ps_rep__37(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__37
+endmodule // fcc_sort_net__ps_rep__37_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__38(d,q,clock);
+module fcc_sort_net__ps_rep__38_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38412,10 +37124,10 @@ module fcc_sort_net__ps_rep__38(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__38
+endmodule // fcc_sort_net__ps_rep__38_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__39(d,q,clock);
+module fcc_sort_net__ps_rep__39_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38431,10 +37143,10 @@ module fcc_sort_net__ps_rep__39(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__39
+endmodule // fcc_sort_net__ps_rep__39_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__4(d,q,clock);
+module fcc_sort_net__ps_rep__4_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38450,10 +37162,10 @@ module fcc_sort_net__ps_rep__4(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__4
+endmodule // fcc_sort_net__ps_rep__4_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__40(d,q,clock);
+module fcc_sort_net__ps_rep__40_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38469,10 +37181,10 @@ module fcc_sort_net__ps_rep__40(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__40
+endmodule // fcc_sort_net__ps_rep__40_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__41(d,q,clock);
+module fcc_sort_net__ps_rep__41_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38488,10 +37200,10 @@ module fcc_sort_net__ps_rep__41(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__41
+endmodule // fcc_sort_net__ps_rep__41_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__42(d,q,clock);
+module fcc_sort_net__ps_rep__42_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38507,10 +37219,10 @@ module fcc_sort_net__ps_rep__42(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__42
+endmodule // fcc_sort_net__ps_rep__42_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__43(d,q,clock);
+module fcc_sort_net__ps_rep__43_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38526,10 +37238,10 @@ module fcc_sort_net__ps_rep__43(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__43
+endmodule // fcc_sort_net__ps_rep__43_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__44(d,q,clock);
+module fcc_sort_net__ps_rep__44_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38545,10 +37257,10 @@ module fcc_sort_net__ps_rep__44(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__44
+endmodule // fcc_sort_net__ps_rep__44_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__45(d,q,clock);
+module fcc_sort_net__ps_rep__45_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38564,10 +37276,10 @@ module fcc_sort_net__ps_rep__45(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__45
+endmodule // fcc_sort_net__ps_rep__45_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__46(d,q,clock);
+module fcc_sort_net__ps_rep__46_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38583,10 +37295,10 @@ module fcc_sort_net__ps_rep__46(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__46
+endmodule // fcc_sort_net__ps_rep__46_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__47(d,q,clock);
+module fcc_sort_net__ps_rep__47_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38602,10 +37314,10 @@ module fcc_sort_net__ps_rep__47(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__47
+endmodule // fcc_sort_net__ps_rep__47_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__48(d,q,clock);
+module fcc_sort_net__ps_rep__48_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38621,10 +37333,10 @@ module fcc_sort_net__ps_rep__48(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__48
+endmodule // fcc_sort_net__ps_rep__48_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__49(d,q,clock);
+module fcc_sort_net__ps_rep__49_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38640,10 +37352,10 @@ module fcc_sort_net__ps_rep__49(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__49
+endmodule // fcc_sort_net__ps_rep__49_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__5(d,q,clock);
+module fcc_sort_net__ps_rep__5_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38659,10 +37371,10 @@ module fcc_sort_net__ps_rep__5(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__5
+endmodule // fcc_sort_net__ps_rep__5_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__50(d,q,clock);
+module fcc_sort_net__ps_rep__50_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38678,10 +37390,10 @@ module fcc_sort_net__ps_rep__50(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__50
+endmodule // fcc_sort_net__ps_rep__50_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__51(d,q,clock);
+module fcc_sort_net__ps_rep__51_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38697,10 +37409,10 @@ module fcc_sort_net__ps_rep__51(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__51
+endmodule // fcc_sort_net__ps_rep__51_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__52(d,q,clock);
+module fcc_sort_net__ps_rep__52_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38716,10 +37428,10 @@ module fcc_sort_net__ps_rep__52(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__52
+endmodule // fcc_sort_net__ps_rep__52_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__53(d,q,clock);
+module fcc_sort_net__ps_rep__53_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38735,10 +37447,10 @@ module fcc_sort_net__ps_rep__53(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__53
+endmodule // fcc_sort_net__ps_rep__53_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__54(d,q,clock);
+module fcc_sort_net__ps_rep__54_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38754,10 +37466,10 @@ module fcc_sort_net__ps_rep__54(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__54
+endmodule // fcc_sort_net__ps_rep__54_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__55(d,q,clock);
+module fcc_sort_net__ps_rep__55_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38773,10 +37485,10 @@ module fcc_sort_net__ps_rep__55(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__55
+endmodule // fcc_sort_net__ps_rep__55_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__56(d,q,clock);
+module fcc_sort_net__ps_rep__56_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38792,10 +37504,10 @@ module fcc_sort_net__ps_rep__56(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__56
+endmodule // fcc_sort_net__ps_rep__56_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__57(d,q,clock);
+module fcc_sort_net__ps_rep__57_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38811,10 +37523,10 @@ module fcc_sort_net__ps_rep__57(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__57
+endmodule // fcc_sort_net__ps_rep__57_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__58(d,q,clock);
+module fcc_sort_net__ps_rep__58_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38830,10 +37542,10 @@ module fcc_sort_net__ps_rep__58(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__58
+endmodule // fcc_sort_net__ps_rep__58_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__59(d,q,clock);
+module fcc_sort_net__ps_rep__59_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38849,10 +37561,10 @@ module fcc_sort_net__ps_rep__59(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__59
+endmodule // fcc_sort_net__ps_rep__59_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__6(d,q,clock);
+module fcc_sort_net__ps_rep__6_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38868,10 +37580,10 @@ module fcc_sort_net__ps_rep__6(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__6
+endmodule // fcc_sort_net__ps_rep__6_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__60(d,q,clock);
+module fcc_sort_net__ps_rep__60_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38887,10 +37599,10 @@ module fcc_sort_net__ps_rep__60(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__60
+endmodule // fcc_sort_net__ps_rep__60_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__61(d,q,clock);
+module fcc_sort_net__ps_rep__61_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38906,10 +37618,10 @@ module fcc_sort_net__ps_rep__61(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__61
+endmodule // fcc_sort_net__ps_rep__61_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__62(d,q,clock);
+module fcc_sort_net__ps_rep__62_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38925,10 +37637,10 @@ module fcc_sort_net__ps_rep__62(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__62
+endmodule // fcc_sort_net__ps_rep__62_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__63(d,q,clock);
+module fcc_sort_net__ps_rep__63_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38944,10 +37656,10 @@ module fcc_sort_net__ps_rep__63(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__63
+endmodule // fcc_sort_net__ps_rep__63_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__64(d,q,clock);
+module fcc_sort_net__ps_rep__64_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38963,10 +37675,10 @@ module fcc_sort_net__ps_rep__64(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__64
+endmodule // fcc_sort_net__ps_rep__64_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__65(d,q,clock);
+module fcc_sort_net__ps_rep__65_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -38982,10 +37694,10 @@ module fcc_sort_net__ps_rep__65(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__65
+endmodule // fcc_sort_net__ps_rep__65_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__66(d,q,clock);
+module fcc_sort_net__ps_rep__66_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -39001,10 +37713,10 @@ module fcc_sort_net__ps_rep__66(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__66
+endmodule // fcc_sort_net__ps_rep__66_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__67(d,q,clock);
+module fcc_sort_net__ps_rep__67_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -39020,10 +37732,10 @@ module fcc_sort_net__ps_rep__67(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__67
+endmodule // fcc_sort_net__ps_rep__67_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__68(d,q,clock);
+module fcc_sort_net__ps_rep__68_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -39039,10 +37751,10 @@ module fcc_sort_net__ps_rep__68(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__68
+endmodule // fcc_sort_net__ps_rep__68_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__69(d,q,clock);
+module fcc_sort_net__ps_rep__69_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -39058,10 +37770,10 @@ module fcc_sort_net__ps_rep__69(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__69
+endmodule // fcc_sort_net__ps_rep__69_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__7(d,q,clock);
+module fcc_sort_net__ps_rep__7_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -39077,10 +37789,10 @@ module fcc_sort_net__ps_rep__7(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__7
+endmodule // fcc_sort_net__ps_rep__7_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__70(d,q,clock);
+module fcc_sort_net__ps_rep__70_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -39096,10 +37808,10 @@ module fcc_sort_net__ps_rep__70(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__70
+endmodule // fcc_sort_net__ps_rep__70_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__71(d,q,clock);
+module fcc_sort_net__ps_rep__71_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -39115,10 +37827,10 @@ module fcc_sort_net__ps_rep__71(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__71
+endmodule // fcc_sort_net__ps_rep__71_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__72(d,q,clock);
+module fcc_sort_net__ps_rep__72_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -39134,10 +37846,10 @@ module fcc_sort_net__ps_rep__72(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__72
+endmodule // fcc_sort_net__ps_rep__72_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__73(d,q,clock);
+module fcc_sort_net__ps_rep__73_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -39153,10 +37865,10 @@ module fcc_sort_net__ps_rep__73(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__73
+endmodule // fcc_sort_net__ps_rep__73_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__74(d,q,clock);
+module fcc_sort_net__ps_rep__74_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -39172,10 +37884,10 @@ module fcc_sort_net__ps_rep__74(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__74
+endmodule // fcc_sort_net__ps_rep__74_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__75(d,q,clock);
+module fcc_sort_net__ps_rep__75_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -39191,10 +37903,10 @@ module fcc_sort_net__ps_rep__75(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__75
+endmodule // fcc_sort_net__ps_rep__75_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__76(d,q,clock);
+module fcc_sort_net__ps_rep__76_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -39210,10 +37922,10 @@ module fcc_sort_net__ps_rep__76(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__76
+endmodule // fcc_sort_net__ps_rep__76_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__77(d,q,clock);
+module fcc_sort_net__ps_rep__77_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -39229,10 +37941,10 @@ module fcc_sort_net__ps_rep__77(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__77
+endmodule // fcc_sort_net__ps_rep__77_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__78(d,q,clock);
+module fcc_sort_net__ps_rep__78_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -39248,10 +37960,10 @@ module fcc_sort_net__ps_rep__78(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__78
+endmodule // fcc_sort_net__ps_rep__78_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__79(d,q,clock);
+module fcc_sort_net__ps_rep__79_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -39267,10 +37979,10 @@ module fcc_sort_net__ps_rep__79(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__79
+endmodule // fcc_sort_net__ps_rep__79_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__8(d,q,clock);
+module fcc_sort_net__ps_rep__8_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -39286,10 +37998,10 @@ module fcc_sort_net__ps_rep__8(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__8
+endmodule // fcc_sort_net__ps_rep__8_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__80(d,q,clock);
+module fcc_sort_net__ps_rep__80_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -39305,10 +38017,10 @@ module fcc_sort_net__ps_rep__80(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__80
+endmodule // fcc_sort_net__ps_rep__80_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__81(d,q,clock);
+module fcc_sort_net__ps_rep__81_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -39324,10 +38036,10 @@ module fcc_sort_net__ps_rep__81(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__81
+endmodule // fcc_sort_net__ps_rep__81_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__82(d,q,clock);
+module fcc_sort_net__ps_rep__82_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -39343,10 +38055,10 @@ module fcc_sort_net__ps_rep__82(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__82
+endmodule // fcc_sort_net__ps_rep__82_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__83(d,q,clock);
+module fcc_sort_net__ps_rep__83_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -39362,10 +38074,10 @@ module fcc_sort_net__ps_rep__83(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__83
+endmodule // fcc_sort_net__ps_rep__83_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__84(d,q,clock);
+module fcc_sort_net__ps_rep__84_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -39381,10 +38093,10 @@ module fcc_sort_net__ps_rep__84(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__84
+endmodule // fcc_sort_net__ps_rep__84_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__85(d,q,clock);
+module fcc_sort_net__ps_rep__85_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -39400,10 +38112,10 @@ module fcc_sort_net__ps_rep__85(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__85
+endmodule // fcc_sort_net__ps_rep__85_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__86(d,q,clock);
+module fcc_sort_net__ps_rep__86_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -39419,10 +38131,10 @@ module fcc_sort_net__ps_rep__86(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__86
+endmodule // fcc_sort_net__ps_rep__86_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__87(d,q,clock);
+module fcc_sort_net__ps_rep__87_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -39438,10 +38150,10 @@ module fcc_sort_net__ps_rep__87(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__87
+endmodule // fcc_sort_net__ps_rep__87_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__88(d,q,clock);
+module fcc_sort_net__ps_rep__88_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -39457,10 +38169,10 @@ module fcc_sort_net__ps_rep__88(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__88
+endmodule // fcc_sort_net__ps_rep__88_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__89(d,q,clock);
+module fcc_sort_net__ps_rep__89_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -39476,10 +38188,10 @@ module fcc_sort_net__ps_rep__89(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__89
+endmodule // fcc_sort_net__ps_rep__89_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__9(d,q,clock);
+module fcc_sort_net__ps_rep__9_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -39495,10 +38207,10 @@ module fcc_sort_net__ps_rep__9(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__9
+endmodule // fcc_sort_net__ps_rep__9_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__90(d,q,clock);
+module fcc_sort_net__ps_rep__90_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -39514,10 +38226,10 @@ module fcc_sort_net__ps_rep__90(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__90
+endmodule // fcc_sort_net__ps_rep__90_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__91(d,q,clock);
+module fcc_sort_net__ps_rep__91_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -39533,10 +38245,10 @@ module fcc_sort_net__ps_rep__91(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__91
+endmodule // fcc_sort_net__ps_rep__91_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__92(d,q,clock);
+module fcc_sort_net__ps_rep__92_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -39552,10 +38264,10 @@ module fcc_sort_net__ps_rep__92(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__92
+endmodule // fcc_sort_net__ps_rep__92_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__93(d,q,clock);
+module fcc_sort_net__ps_rep__93_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -39571,10 +38283,10 @@ module fcc_sort_net__ps_rep__93(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__93
+endmodule // fcc_sort_net__ps_rep__93_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__94(d,q,clock);
+module fcc_sort_net__ps_rep__94_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -39590,10 +38302,10 @@ module fcc_sort_net__ps_rep__94(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__94
+endmodule // fcc_sort_net__ps_rep__94_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__95(d,q,clock);
+module fcc_sort_net__ps_rep__95_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -39609,10 +38321,10 @@ module fcc_sort_net__ps_rep__95(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__95
+endmodule // fcc_sort_net__ps_rep__95_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__96(d,q,clock);
+module fcc_sort_net__ps_rep__96_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -39628,10 +38340,10 @@ module fcc_sort_net__ps_rep__96(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__96
+endmodule // fcc_sort_net__ps_rep__96_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__97(d,q,clock);
+module fcc_sort_net__ps_rep__97_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -39647,10 +38359,10 @@ module fcc_sort_net__ps_rep__97(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__97
+endmodule // fcc_sort_net__ps_rep__97_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__98(d,q,clock);
+module fcc_sort_net__ps_rep__98_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -39666,10 +38378,10 @@ module fcc_sort_net__ps_rep__98(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__98
+endmodule // fcc_sort_net__ps_rep__98_k7_668cf05b
 
 
-module fcc_sort_net__ps_rep__99(d,q,clock);
+module fcc_sort_net__ps_rep__99_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -39685,10 +38397,10 @@ module fcc_sort_net__ps_rep__99(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__ps_rep__99
+endmodule // fcc_sort_net__ps_rep__99_k7_668cf05b
 
 
-module fcc_sort_net__push_q(d,q,clock);
+module fcc_sort_net__push_q_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -39704,10 +38416,10 @@ module fcc_sort_net__push_q(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__push_q
+endmodule // fcc_sort_net__push_q_k7_668cf05b
 
 
-module fcc_sort_net__qp(x$0,x$1,x$2,x$3,x$4,x$5,x$6,x$7,x$8,x$9,x$10,x$11,x$12,x$13,x$14,x$15,x$16,x$17,x$18,x$19,x$20,pre$0,pre$1,pre$2,pre$3,pre$4,pre$5,pre$6,pre$7,pre$8,pre$9,pre$10,pre$11,pre$12,pre$13,pre$14,pre$15,pre$16,pre$17,pre$18,pre$19,pre$20);
+module fcc_sort_net__qp_k7_668cf05b(x$0,x$1,x$2,x$3,x$4,x$5,x$6,x$7,x$8,x$9,x$10,x$11,x$12,x$13,x$14,x$15,x$16,x$17,x$18,x$19,x$20,pre$0,pre$1,pre$2,pre$3,pre$4,pre$5,pre$6,pre$7,pre$8,pre$9,pre$10,pre$11,pre$12,pre$13,pre$14,pre$15,pre$16,pre$17,pre$18,pre$19,pre$20);
 
     // Module arguments
     input wire  x$0;
@@ -39781,29 +38493,10 @@ module fcc_sort_net__qp(x$0,x$1,x$2,x$3,x$4,x$5,x$6,x$7,x$8,x$9,x$10,x$11,x$12,x
         pre$19 = |{x$18, x$17, x$16, x$15, x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
         pre$20 = |{x$19, x$18, x$17, x$16, x$15, x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
     end
-endmodule // fcc_sort_net__qp
+endmodule // fcc_sort_net__qp_k7_668cf05b
 
 
-module fcc_sort_net__rcq(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__rcq
-
-
-module fcc_sort_net__rcq2(d,q,clock);
+module fcc_sort_net__rcq_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -39819,10 +38512,29 @@ module fcc_sort_net__rcq2(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__rcq2
+endmodule // fcc_sort_net__rcq_k7_668cf05b
 
 
-module fcc_sort_net__rec(d,q,clock);
+module fcc_sort_net__rcq2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__rcq2_k7_668cf05b
+
+
+module fcc_sort_net__rec_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [49:0] d;
@@ -39838,10 +38550,10 @@ module fcc_sort_net__rec(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__rec
+endmodule // fcc_sort_net__rec_k7_668cf05b
 
 
-module fcc_sort_net__rep_c(d,q,clock);
+module fcc_sort_net__rep_c_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -39857,42 +38569,10 @@ module fcc_sort_net__rep_c(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__rep_c
+endmodule // fcc_sort_net__rep_c_k7_668cf05b
 
 
-module fcc_sort_net__rows__0(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
-
-    // Module arguments
-    input wire  clk;
-    input wire  read_en;
-    input wire  [8:0] read_addr;
-    output reg  [186:0] read_data;
-    input wire  write_en;
-    input wire  [8:0] write_addr;
-    input wire  [186:0] write_data;
-
-    // Update code (custom)
-    // Address bits above the depth and data bits above the stored width are
-    // not used by this instance.
-    /* verilator lint_off UNUSEDSIGNAL */
-    wire unused_ok = &{1'b0, write_data[186:119]};
-    /* verilator lint_on UNUSEDSIGNAL */
-    reg [118:0] mem [0:511];
-    // The block RAM's output register, then a fabric register.
-    reg [118:0] rd1;
-    always @(posedge clk) begin
-        if (read_en) begin
-            rd1 <= mem[read_addr];
-        end
-        if (write_en) begin
-            mem[write_addr] <= write_data[118:0];
-        end
-        read_data <= {68'd0, rd1};
-    end
-endmodule // fcc_sort_net__rows__0
-
-
-module fcc_sort_net__rows__1(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
+module fcc_sort_net__rows__0_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
 
     // Module arguments
     input wire  clk;
@@ -39921,10 +38601,10 @@ module fcc_sort_net__rows__1(clk,read_en,read_addr,read_data,write_en,write_addr
         end
         read_data <= {68'd0, rd1};
     end
-endmodule // fcc_sort_net__rows__1
+endmodule // fcc_sort_net__rows__0_k7_668cf05b
 
 
-module fcc_sort_net__rows__2(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
+module fcc_sort_net__rows__1_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
 
     // Module arguments
     input wire  clk;
@@ -39953,48 +38633,42 @@ module fcc_sort_net__rows__2(clk,read_en,read_addr,read_data,write_en,write_addr
         end
         read_data <= {68'd0, rd1};
     end
-endmodule // fcc_sort_net__rows__2
+endmodule // fcc_sort_net__rows__1_k7_668cf05b
 
 
-module fcc_sort_net__rp(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__rp
-
-
-module fcc_sort_net__rsame_c(d,q,clock);
+module fcc_sort_net__rows__2_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
 
     // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
+    input wire  clk;
+    input wire  read_en;
+    input wire  [8:0] read_addr;
+    output reg  [186:0] read_data;
+    input wire  write_en;
+    input wire  [8:0] write_addr;
+    input wire  [186:0] write_data;
 
     // Update code (custom)
-    initial begin
-       q = 1'h0;
+    // Address bits above the depth and data bits above the stored width are
+    // not used by this instance.
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire unused_ok = &{1'b0, write_data[186:119]};
+    /* verilator lint_on UNUSEDSIGNAL */
+    reg [118:0] mem [0:511];
+    // The block RAM's output register, then a fabric register.
+    reg [118:0] rd1;
+    always @(posedge clk) begin
+        if (read_en) begin
+            rd1 <= mem[read_addr];
+        end
+        if (write_en) begin
+            mem[write_addr] <= write_data[118:0];
+        end
+        read_data <= {68'd0, rd1};
     end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__rsame_c
+endmodule // fcc_sort_net__rows__2_k7_668cf05b
 
 
-module fcc_sort_net__rsame_l(d,q,clock);
+module fcc_sort_net__rp_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -40010,29 +38684,10 @@ module fcc_sort_net__rsame_l(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__rsame_l
+endmodule // fcc_sort_net__rp_k7_668cf05b
 
 
-module fcc_sort_net__sel__0(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__sel__0
-
-
-module fcc_sort_net__sel__1(d,q,clock);
+module fcc_sort_net__rsame_c_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -40048,29 +38703,10 @@ module fcc_sort_net__sel__1(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__sel__1
+endmodule // fcc_sort_net__rsame_c_k7_668cf05b
 
 
-module fcc_sort_net__sel__10(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__sel__10
-
-
-module fcc_sort_net__sel__11(d,q,clock);
+module fcc_sort_net__rsame_l_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -40086,29 +38722,10 @@ module fcc_sort_net__sel__11(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__sel__11
+endmodule // fcc_sort_net__rsame_l_k7_668cf05b
 
 
-module fcc_sort_net__sel__12(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__sel__12
-
-
-module fcc_sort_net__sel__13(d,q,clock);
+module fcc_sort_net__sel__0_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -40124,29 +38741,10 @@ module fcc_sort_net__sel__13(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__sel__13
+endmodule // fcc_sort_net__sel__0_k7_668cf05b
 
 
-module fcc_sort_net__sel__14(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__sel__14
-
-
-module fcc_sort_net__sel__15(d,q,clock);
+module fcc_sort_net__sel__1_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -40162,29 +38760,10 @@ module fcc_sort_net__sel__15(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__sel__15
+endmodule // fcc_sort_net__sel__1_k7_668cf05b
 
 
-module fcc_sort_net__sel__16(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__sel__16
-
-
-module fcc_sort_net__sel__17(d,q,clock);
+module fcc_sort_net__sel__10_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -40200,29 +38779,10 @@ module fcc_sort_net__sel__17(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__sel__17
+endmodule // fcc_sort_net__sel__10_k7_668cf05b
 
 
-module fcc_sort_net__sel__18(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__sel__18
-
-
-module fcc_sort_net__sel__19(d,q,clock);
+module fcc_sort_net__sel__11_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -40238,29 +38798,10 @@ module fcc_sort_net__sel__19(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__sel__19
+endmodule // fcc_sort_net__sel__11_k7_668cf05b
 
 
-module fcc_sort_net__sel__2(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__sel__2
-
-
-module fcc_sort_net__sel__20(d,q,clock);
+module fcc_sort_net__sel__12_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -40276,29 +38817,10 @@ module fcc_sort_net__sel__20(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__sel__20
+endmodule // fcc_sort_net__sel__12_k7_668cf05b
 
 
-module fcc_sort_net__sel__3(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__sel__3
-
-
-module fcc_sort_net__sel__4(d,q,clock);
+module fcc_sort_net__sel__13_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -40314,29 +38836,10 @@ module fcc_sort_net__sel__4(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__sel__4
+endmodule // fcc_sort_net__sel__13_k7_668cf05b
 
 
-module fcc_sort_net__sel__5(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__sel__5
-
-
-module fcc_sort_net__sel__6(d,q,clock);
+module fcc_sort_net__sel__14_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -40352,29 +38855,10 @@ module fcc_sort_net__sel__6(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__sel__6
+endmodule // fcc_sort_net__sel__14_k7_668cf05b
 
 
-module fcc_sort_net__sel__7(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__sel__7
-
-
-module fcc_sort_net__sel__8(d,q,clock);
+module fcc_sort_net__sel__15_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -40390,10 +38874,10 @@ module fcc_sort_net__sel__8(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__sel__8
+endmodule // fcc_sort_net__sel__15_k7_668cf05b
 
 
-module fcc_sort_net__sel__9(d,q,clock);
+module fcc_sort_net__sel__16_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -40409,10 +38893,238 @@ module fcc_sort_net__sel__9(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__sel__9
+endmodule // fcc_sort_net__sel__16_k7_668cf05b
 
 
-module fcc_sort_net__tn__0(d,q,clock);
+module fcc_sort_net__sel__17_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__sel__17_k7_668cf05b
+
+
+module fcc_sort_net__sel__18_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__sel__18_k7_668cf05b
+
+
+module fcc_sort_net__sel__19_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__sel__19_k7_668cf05b
+
+
+module fcc_sort_net__sel__2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__sel__2_k7_668cf05b
+
+
+module fcc_sort_net__sel__20_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__sel__20_k7_668cf05b
+
+
+module fcc_sort_net__sel__3_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__sel__3_k7_668cf05b
+
+
+module fcc_sort_net__sel__4_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__sel__4_k7_668cf05b
+
+
+module fcc_sort_net__sel__5_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__sel__5_k7_668cf05b
+
+
+module fcc_sort_net__sel__6_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__sel__6_k7_668cf05b
+
+
+module fcc_sort_net__sel__7_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__sel__7_k7_668cf05b
+
+
+module fcc_sort_net__sel__8_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__sel__8_k7_668cf05b
+
+
+module fcc_sort_net__sel__9_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__sel__9_k7_668cf05b
+
+
+module fcc_sort_net__tn__0_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -40428,29 +39140,10 @@ module fcc_sort_net__tn__0(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__tn__0
+endmodule // fcc_sort_net__tn__0_k7_668cf05b
 
 
-module fcc_sort_net__tn__1(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__tn__1
-
-
-module fcc_sort_net__tn__10(d,q,clock);
+module fcc_sort_net__tn__1_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -40466,29 +39159,10 @@ module fcc_sort_net__tn__10(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__tn__10
+endmodule // fcc_sort_net__tn__1_k7_668cf05b
 
 
-module fcc_sort_net__tn__11(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__tn__11
-
-
-module fcc_sort_net__tn__12(d,q,clock);
+module fcc_sort_net__tn__10_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -40504,29 +39178,10 @@ module fcc_sort_net__tn__12(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__tn__12
+endmodule // fcc_sort_net__tn__10_k7_668cf05b
 
 
-module fcc_sort_net__tn__13(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__tn__13
-
-
-module fcc_sort_net__tn__14(d,q,clock);
+module fcc_sort_net__tn__11_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -40542,29 +39197,10 @@ module fcc_sort_net__tn__14(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__tn__14
+endmodule // fcc_sort_net__tn__11_k7_668cf05b
 
 
-module fcc_sort_net__tn__15(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__tn__15
-
-
-module fcc_sort_net__tn__16(d,q,clock);
+module fcc_sort_net__tn__12_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -40580,29 +39216,10 @@ module fcc_sort_net__tn__16(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__tn__16
+endmodule // fcc_sort_net__tn__12_k7_668cf05b
 
 
-module fcc_sort_net__tn__17(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__tn__17
-
-
-module fcc_sort_net__tn__18(d,q,clock);
+module fcc_sort_net__tn__13_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -40618,29 +39235,10 @@ module fcc_sort_net__tn__18(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__tn__18
+endmodule // fcc_sort_net__tn__13_k7_668cf05b
 
 
-module fcc_sort_net__tn__19(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__tn__19
-
-
-module fcc_sort_net__tn__2(d,q,clock);
+module fcc_sort_net__tn__14_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -40656,29 +39254,10 @@ module fcc_sort_net__tn__2(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__tn__2
+endmodule // fcc_sort_net__tn__14_k7_668cf05b
 
 
-module fcc_sort_net__tn__20(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__tn__20
-
-
-module fcc_sort_net__tn__21(d,q,clock);
+module fcc_sort_net__tn__15_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -40694,29 +39273,10 @@ module fcc_sort_net__tn__21(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__tn__21
+endmodule // fcc_sort_net__tn__15_k7_668cf05b
 
 
-module fcc_sort_net__tn__22(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__tn__22
-
-
-module fcc_sort_net__tn__23(d,q,clock);
+module fcc_sort_net__tn__16_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -40732,29 +39292,10 @@ module fcc_sort_net__tn__23(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__tn__23
+endmodule // fcc_sort_net__tn__16_k7_668cf05b
 
 
-module fcc_sort_net__tn__24(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__tn__24
-
-
-module fcc_sort_net__tn__25(d,q,clock);
+module fcc_sort_net__tn__17_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -40770,29 +39311,10 @@ module fcc_sort_net__tn__25(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__tn__25
+endmodule // fcc_sort_net__tn__17_k7_668cf05b
 
 
-module fcc_sort_net__tn__26(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__tn__26
-
-
-module fcc_sort_net__tn__27(d,q,clock);
+module fcc_sort_net__tn__18_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -40808,29 +39330,10 @@ module fcc_sort_net__tn__27(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__tn__27
+endmodule // fcc_sort_net__tn__18_k7_668cf05b
 
 
-module fcc_sort_net__tn__28(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__tn__28
-
-
-module fcc_sort_net__tn__29(d,q,clock);
+module fcc_sort_net__tn__19_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -40846,29 +39349,10 @@ module fcc_sort_net__tn__29(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__tn__29
+endmodule // fcc_sort_net__tn__19_k7_668cf05b
 
 
-module fcc_sort_net__tn__3(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__tn__3
-
-
-module fcc_sort_net__tn__30(d,q,clock);
+module fcc_sort_net__tn__2_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -40884,29 +39368,10 @@ module fcc_sort_net__tn__30(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__tn__30
+endmodule // fcc_sort_net__tn__2_k7_668cf05b
 
 
-module fcc_sort_net__tn__31(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__tn__31
-
-
-module fcc_sort_net__tn__32(d,q,clock);
+module fcc_sort_net__tn__20_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -40922,29 +39387,10 @@ module fcc_sort_net__tn__32(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__tn__32
+endmodule // fcc_sort_net__tn__20_k7_668cf05b
 
 
-module fcc_sort_net__tn__33(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__tn__33
-
-
-module fcc_sort_net__tn__34(d,q,clock);
+module fcc_sort_net__tn__21_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -40960,29 +39406,10 @@ module fcc_sort_net__tn__34(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__tn__34
+endmodule // fcc_sort_net__tn__21_k7_668cf05b
 
 
-module fcc_sort_net__tn__35(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__tn__35
-
-
-module fcc_sort_net__tn__36(d,q,clock);
+module fcc_sort_net__tn__22_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -40998,29 +39425,10 @@ module fcc_sort_net__tn__36(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__tn__36
+endmodule // fcc_sort_net__tn__22_k7_668cf05b
 
 
-module fcc_sort_net__tn__37(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__tn__37
-
-
-module fcc_sort_net__tn__38(d,q,clock);
+module fcc_sort_net__tn__23_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -41036,29 +39444,10 @@ module fcc_sort_net__tn__38(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__tn__38
+endmodule // fcc_sort_net__tn__23_k7_668cf05b
 
 
-module fcc_sort_net__tn__39(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__tn__39
-
-
-module fcc_sort_net__tn__4(d,q,clock);
+module fcc_sort_net__tn__24_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -41074,29 +39463,10 @@ module fcc_sort_net__tn__4(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__tn__4
+endmodule // fcc_sort_net__tn__24_k7_668cf05b
 
 
-module fcc_sort_net__tn__40(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__tn__40
-
-
-module fcc_sort_net__tn__41(d,q,clock);
+module fcc_sort_net__tn__25_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -41112,29 +39482,10 @@ module fcc_sort_net__tn__41(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__tn__41
+endmodule // fcc_sort_net__tn__25_k7_668cf05b
 
 
-module fcc_sort_net__tn__42(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__tn__42
-
-
-module fcc_sort_net__tn__43(d,q,clock);
+module fcc_sort_net__tn__26_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -41150,29 +39501,10 @@ module fcc_sort_net__tn__43(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__tn__43
+endmodule // fcc_sort_net__tn__26_k7_668cf05b
 
 
-module fcc_sort_net__tn__44(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__tn__44
-
-
-module fcc_sort_net__tn__45(d,q,clock);
+module fcc_sort_net__tn__27_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -41188,29 +39520,10 @@ module fcc_sort_net__tn__45(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__tn__45
+endmodule // fcc_sort_net__tn__27_k7_668cf05b
 
 
-module fcc_sort_net__tn__46(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__tn__46
-
-
-module fcc_sort_net__tn__47(d,q,clock);
+module fcc_sort_net__tn__28_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -41226,29 +39539,10 @@ module fcc_sort_net__tn__47(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__tn__47
+endmodule // fcc_sort_net__tn__28_k7_668cf05b
 
 
-module fcc_sort_net__tn__48(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__tn__48
-
-
-module fcc_sort_net__tn__49(d,q,clock);
+module fcc_sort_net__tn__29_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -41264,29 +39558,10 @@ module fcc_sort_net__tn__49(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__tn__49
+endmodule // fcc_sort_net__tn__29_k7_668cf05b
 
 
-module fcc_sort_net__tn__5(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__tn__5
-
-
-module fcc_sort_net__tn__50(d,q,clock);
+module fcc_sort_net__tn__3_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -41302,29 +39577,10 @@ module fcc_sort_net__tn__50(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__tn__50
+endmodule // fcc_sort_net__tn__3_k7_668cf05b
 
 
-module fcc_sort_net__tn__51(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__tn__51
-
-
-module fcc_sort_net__tn__52(d,q,clock);
+module fcc_sort_net__tn__30_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -41340,29 +39596,10 @@ module fcc_sort_net__tn__52(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__tn__52
+endmodule // fcc_sort_net__tn__30_k7_668cf05b
 
 
-module fcc_sort_net__tn__53(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__tn__53
-
-
-module fcc_sort_net__tn__54(d,q,clock);
+module fcc_sort_net__tn__31_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -41378,29 +39615,10 @@ module fcc_sort_net__tn__54(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__tn__54
+endmodule // fcc_sort_net__tn__31_k7_668cf05b
 
 
-module fcc_sort_net__tn__55(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__tn__55
-
-
-module fcc_sort_net__tn__56(d,q,clock);
+module fcc_sort_net__tn__32_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -41416,29 +39634,10 @@ module fcc_sort_net__tn__56(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__tn__56
+endmodule // fcc_sort_net__tn__32_k7_668cf05b
 
 
-module fcc_sort_net__tn__57(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__tn__57
-
-
-module fcc_sort_net__tn__58(d,q,clock);
+module fcc_sort_net__tn__33_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -41454,29 +39653,10 @@ module fcc_sort_net__tn__58(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__tn__58
+endmodule // fcc_sort_net__tn__33_k7_668cf05b
 
 
-module fcc_sort_net__tn__59(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__tn__59
-
-
-module fcc_sort_net__tn__6(d,q,clock);
+module fcc_sort_net__tn__34_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -41492,29 +39672,10 @@ module fcc_sort_net__tn__6(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__tn__6
+endmodule // fcc_sort_net__tn__34_k7_668cf05b
 
 
-module fcc_sort_net__tn__60(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__tn__60
-
-
-module fcc_sort_net__tn__61(d,q,clock);
+module fcc_sort_net__tn__35_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -41530,29 +39691,10 @@ module fcc_sort_net__tn__61(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__tn__61
+endmodule // fcc_sort_net__tn__35_k7_668cf05b
 
 
-module fcc_sort_net__tn__62(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__tn__62
-
-
-module fcc_sort_net__tn__7(d,q,clock);
+module fcc_sort_net__tn__36_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -41568,29 +39710,10 @@ module fcc_sort_net__tn__7(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__tn__7
+endmodule // fcc_sort_net__tn__36_k7_668cf05b
 
 
-module fcc_sort_net__tn__8(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__tn__8
-
-
-module fcc_sort_net__tn__9(d,q,clock);
+module fcc_sort_net__tn__37_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -41606,10 +39729,599 @@ module fcc_sort_net__tn__9(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__tn__9
+endmodule // fcc_sort_net__tn__37_k7_668cf05b
 
 
-module fcc_sort_net__unpack(word$0,word$1,word$2,v$0,v$1,v$2,v$3,v$4,v$5,v$6,v$7,v$8,v$9,v$10,v$11,v$12,v$13,v$14,v$15,v$16,v$17,v$18,v$19,v$20,f$0,f$1,f$2,f$3,f$4,f$5,f$6,f$7,f$8,f$9,f$10,f$11,f$12,f$13,f$14,f$15,f$16,f$17,f$18,f$19,f$20);
+module fcc_sort_net__tn__38_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__tn__38_k7_668cf05b
+
+
+module fcc_sort_net__tn__39_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__tn__39_k7_668cf05b
+
+
+module fcc_sort_net__tn__4_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__tn__4_k7_668cf05b
+
+
+module fcc_sort_net__tn__40_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__tn__40_k7_668cf05b
+
+
+module fcc_sort_net__tn__41_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__tn__41_k7_668cf05b
+
+
+module fcc_sort_net__tn__42_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__tn__42_k7_668cf05b
+
+
+module fcc_sort_net__tn__43_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__tn__43_k7_668cf05b
+
+
+module fcc_sort_net__tn__44_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__tn__44_k7_668cf05b
+
+
+module fcc_sort_net__tn__45_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__tn__45_k7_668cf05b
+
+
+module fcc_sort_net__tn__46_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__tn__46_k7_668cf05b
+
+
+module fcc_sort_net__tn__47_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__tn__47_k7_668cf05b
+
+
+module fcc_sort_net__tn__48_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__tn__48_k7_668cf05b
+
+
+module fcc_sort_net__tn__49_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__tn__49_k7_668cf05b
+
+
+module fcc_sort_net__tn__5_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__tn__5_k7_668cf05b
+
+
+module fcc_sort_net__tn__50_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__tn__50_k7_668cf05b
+
+
+module fcc_sort_net__tn__51_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__tn__51_k7_668cf05b
+
+
+module fcc_sort_net__tn__52_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__tn__52_k7_668cf05b
+
+
+module fcc_sort_net__tn__53_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__tn__53_k7_668cf05b
+
+
+module fcc_sort_net__tn__54_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__tn__54_k7_668cf05b
+
+
+module fcc_sort_net__tn__55_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__tn__55_k7_668cf05b
+
+
+module fcc_sort_net__tn__56_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__tn__56_k7_668cf05b
+
+
+module fcc_sort_net__tn__57_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__tn__57_k7_668cf05b
+
+
+module fcc_sort_net__tn__58_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__tn__58_k7_668cf05b
+
+
+module fcc_sort_net__tn__59_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__tn__59_k7_668cf05b
+
+
+module fcc_sort_net__tn__6_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__tn__6_k7_668cf05b
+
+
+module fcc_sort_net__tn__60_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__tn__60_k7_668cf05b
+
+
+module fcc_sort_net__tn__61_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__tn__61_k7_668cf05b
+
+
+module fcc_sort_net__tn__62_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__tn__62_k7_668cf05b
+
+
+module fcc_sort_net__tn__7_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__tn__7_k7_668cf05b
+
+
+module fcc_sort_net__tn__8_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__tn__8_k7_668cf05b
+
+
+module fcc_sort_net__tn__9_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__tn__9_k7_668cf05b
+
+
+module fcc_sort_net__unpack_k7_668cf05b(word$0,word$1,word$2,v$0,v$1,v$2,v$3,v$4,v$5,v$6,v$7,v$8,v$9,v$10,v$11,v$12,v$13,v$14,v$15,v$16,v$17,v$18,v$19,v$20,f$0,f$1,f$2,f$3,f$4,f$5,f$6,f$7,f$8,f$9,f$10,f$11,f$12,f$13,f$14,f$15,f$16,f$17,f$18,f$19,f$20);
 
     // Module arguments
     input wire  [186:0] word$0;
@@ -41707,10 +40419,10 @@ module fcc_sort_net__unpack(word$0,word$1,word$2,v$0,v$1,v$2,v$3,v$4,v$5,v$6,v$7
         v$20 = word$2[111:96];
         f$20 = word$2[118];
     end
-endmodule // fcc_sort_net__unpack
+endmodule // fcc_sort_net__unpack_k7_668cf05b
 
 
-module fcc_sort_net__wr_addr(d,q,clock);
+module fcc_sort_net__wr_addr_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [11:0] d;
@@ -41726,10 +40438,10 @@ module fcc_sort_net__wr_addr(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__wr_addr
+endmodule // fcc_sort_net__wr_addr_k7_668cf05b
 
 
-module fcc_sort_net__wr_data(d,q,clock);
+module fcc_sort_net__wr_data_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -41745,29 +40457,10 @@ module fcc_sort_net__wr_data(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__wr_data
+endmodule // fcc_sort_net__wr_data_k7_668cf05b
 
 
-module fcc_sort_net__wr_en(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__wr_en
-
-
-module fcc_top__tready_q(d,q,clock);
+module fcc_sort_net__wr_en_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -41783,10 +40476,29 @@ module fcc_top__tready_q(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_top__tready_q
+endmodule // fcc_sort_net__wr_en_k7_668cf05b
 
 
-module fcc_window(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_ok$4,ent_ok$5,ent_ok$6,ent_ok$7,ent_ok$8,ent_ok$9,ent_ok$10,ent_ok$11,ent_ok$12,ent_ok$13,ent_ok$14,ent_ok$15,ent_ok$16,ent_ok$17,ent_ok$18,ent_ok$19,ent_ok$20,ent_x$0,ent_x$1,ent_x$2,ent_x$3,ent_x$4,ent_x$5,ent_x$6,ent_x$7,ent_x$8,ent_x$9,ent_x$10,ent_x$11,ent_x$12,ent_x$13,ent_x$14,ent_x$15,ent_x$16,ent_x$17,ent_x$18,ent_x$19,ent_x$20,ent_y$0,ent_y$1,ent_y$2,ent_y$3,ent_y$4,ent_y$5,ent_y$6,ent_y$7,ent_y$8,ent_y$9,ent_y$10,ent_y$11,ent_y$12,ent_y$13,ent_y$14,ent_y$15,ent_y$16,ent_y$17,ent_y$18,ent_y$19,ent_y$20,ent_z$0,ent_z$1,ent_z$2,ent_z$3,ent_z$4,ent_z$5,ent_z$6,ent_z$7,ent_z$8,ent_z$9,ent_z$10,ent_z$11,ent_z$12,ent_z$13,ent_z$14,ent_z$15,ent_z$16,ent_z$17,ent_z$18,ent_z$19,ent_z$20,ent_rep$0,ent_rep$1,ent_rep$2,ent_rep$3,ent_rep$4,ent_rep$5,ent_rep$6,ent_rep$7,ent_rep$8,ent_rep$9,ent_rep$10,ent_rep$11,ent_rep$12,ent_rep$13,ent_rep$14,ent_rep$15,ent_rep$16,ent_rep$17,ent_rep$18,ent_rep$19,ent_rep$20,rep_we,rep_waddr,rep_wdata);
+module fcc_top__tready_q_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__tready_q_k7_668cf05b
+
+
+module fcc_window_k7_668cf05b(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_ok$4,ent_ok$5,ent_ok$6,ent_ok$7,ent_ok$8,ent_ok$9,ent_ok$10,ent_ok$11,ent_ok$12,ent_ok$13,ent_ok$14,ent_ok$15,ent_ok$16,ent_ok$17,ent_ok$18,ent_ok$19,ent_ok$20,ent_x$0,ent_x$1,ent_x$2,ent_x$3,ent_x$4,ent_x$5,ent_x$6,ent_x$7,ent_x$8,ent_x$9,ent_x$10,ent_x$11,ent_x$12,ent_x$13,ent_x$14,ent_x$15,ent_x$16,ent_x$17,ent_x$18,ent_x$19,ent_x$20,ent_y$0,ent_y$1,ent_y$2,ent_y$3,ent_y$4,ent_y$5,ent_y$6,ent_y$7,ent_y$8,ent_y$9,ent_y$10,ent_y$11,ent_y$12,ent_y$13,ent_y$14,ent_y$15,ent_y$16,ent_y$17,ent_y$18,ent_y$19,ent_y$20,ent_z$0,ent_z$1,ent_z$2,ent_z$3,ent_z$4,ent_z$5,ent_z$6,ent_z$7,ent_z$8,ent_z$9,ent_z$10,ent_z$11,ent_z$12,ent_z$13,ent_z$14,ent_z$15,ent_z$16,ent_z$17,ent_z$18,ent_z$19,ent_z$20,ent_rep$0,ent_rep$1,ent_rep$2,ent_rep$3,ent_rep$4,ent_rep$5,ent_rep$6,ent_rep$7,ent_rep$8,ent_rep$9,ent_rep$10,ent_rep$11,ent_rep$12,ent_rep$13,ent_rep$14,ent_rep$15,ent_rep$16,ent_rep$17,ent_rep$18,ent_rep$19,ent_rep$20,rep_we,rep_waddr,rep_wdata);
 
     // Module arguments
     input wire  clk;
@@ -42508,7 +41220,7 @@ module fcc_window(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,e
     reg  [15:0] rview$20;
 
     // Sub module instances
-    fcc_window__lbs__0 lbs$0(
+    fcc_window__lbs__0_k7_668cf05b lbs$0(
         .clk(lbs$0$clk),
         .read_en(lbs$0$read_en),
         .read_addr(lbs$0$read_addr),
@@ -42523,7 +41235,7 @@ module fcc_window(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,e
         .wr_y(lbs$0$wr_y),
         .wr_z(lbs$0$wr_z)
     );
-    fcc_window__lbs__1 lbs$1(
+    fcc_window__lbs__1_k7_668cf05b lbs$1(
         .clk(lbs$1$clk),
         .read_en(lbs$1$read_en),
         .read_addr(lbs$1$read_addr),
@@ -42538,7 +41250,7 @@ module fcc_window(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,e
         .wr_y(lbs$1$wr_y),
         .wr_z(lbs$1$wr_z)
     );
-    fcc_window__lbs__2 lbs$2(
+    fcc_window__lbs__2_k7_668cf05b lbs$2(
         .clk(lbs$2$clk),
         .read_en(lbs$2$read_en),
         .read_addr(lbs$2$read_addr),
@@ -42553,522 +41265,522 @@ module fcc_window(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,e
         .wr_y(lbs$2$wr_y),
         .wr_z(lbs$2$wr_z)
     );
-    fcc_window__win_lok__0 win_lok$0(
+    fcc_window__win_lok__0_k7_668cf05b win_lok$0(
         .d(win_lok$0$d),
         .q(win_lok$0$q),
         .clock(win_lok$0$clock)
     );
-    fcc_window__win_lok__1 win_lok$1(
+    fcc_window__win_lok__1_k7_668cf05b win_lok$1(
         .d(win_lok$1$d),
         .q(win_lok$1$q),
         .clock(win_lok$1$clock)
     );
-    fcc_window__win_lok__2 win_lok$2(
+    fcc_window__win_lok__2_k7_668cf05b win_lok$2(
         .d(win_lok$2$d),
         .q(win_lok$2$q),
         .clock(win_lok$2$clock)
     );
-    fcc_window__win_lok__3 win_lok$3(
+    fcc_window__win_lok__3_k7_668cf05b win_lok$3(
         .d(win_lok$3$d),
         .q(win_lok$3$q),
         .clock(win_lok$3$clock)
     );
-    fcc_window__win_lok__4 win_lok$4(
+    fcc_window__win_lok__4_k7_668cf05b win_lok$4(
         .d(win_lok$4$d),
         .q(win_lok$4$q),
         .clock(win_lok$4$clock)
     );
-    fcc_window__win_lok__5 win_lok$5(
+    fcc_window__win_lok__5_k7_668cf05b win_lok$5(
         .d(win_lok$5$d),
         .q(win_lok$5$q),
         .clock(win_lok$5$clock)
     );
-    fcc_window__win_lok__6 win_lok$6(
+    fcc_window__win_lok__6_k7_668cf05b win_lok$6(
         .d(win_lok$6$d),
         .q(win_lok$6$q),
         .clock(win_lok$6$clock)
     );
-    fcc_window__win_lok__7 win_lok$7(
+    fcc_window__win_lok__7_k7_668cf05b win_lok$7(
         .d(win_lok$7$d),
         .q(win_lok$7$q),
         .clock(win_lok$7$clock)
     );
-    fcc_window__win_lok__8 win_lok$8(
+    fcc_window__win_lok__8_k7_668cf05b win_lok$8(
         .d(win_lok$8$d),
         .q(win_lok$8$q),
         .clock(win_lok$8$clock)
     );
-    fcc_window__win_lok__9 win_lok$9(
+    fcc_window__win_lok__9_k7_668cf05b win_lok$9(
         .d(win_lok$9$d),
         .q(win_lok$9$q),
         .clock(win_lok$9$clock)
     );
-    fcc_window__win_lok__10 win_lok$10(
+    fcc_window__win_lok__10_k7_668cf05b win_lok$10(
         .d(win_lok$10$d),
         .q(win_lok$10$q),
         .clock(win_lok$10$clock)
     );
-    fcc_window__win_lok__11 win_lok$11(
+    fcc_window__win_lok__11_k7_668cf05b win_lok$11(
         .d(win_lok$11$d),
         .q(win_lok$11$q),
         .clock(win_lok$11$clock)
     );
-    fcc_window__win_lok__12 win_lok$12(
+    fcc_window__win_lok__12_k7_668cf05b win_lok$12(
         .d(win_lok$12$d),
         .q(win_lok$12$q),
         .clock(win_lok$12$clock)
     );
-    fcc_window__win_lok__13 win_lok$13(
+    fcc_window__win_lok__13_k7_668cf05b win_lok$13(
         .d(win_lok$13$d),
         .q(win_lok$13$q),
         .clock(win_lok$13$clock)
     );
-    fcc_window__win_lok__14 win_lok$14(
+    fcc_window__win_lok__14_k7_668cf05b win_lok$14(
         .d(win_lok$14$d),
         .q(win_lok$14$q),
         .clock(win_lok$14$clock)
     );
-    fcc_window__win_lok__15 win_lok$15(
+    fcc_window__win_lok__15_k7_668cf05b win_lok$15(
         .d(win_lok$15$d),
         .q(win_lok$15$q),
         .clock(win_lok$15$clock)
     );
-    fcc_window__win_lok__16 win_lok$16(
+    fcc_window__win_lok__16_k7_668cf05b win_lok$16(
         .d(win_lok$16$d),
         .q(win_lok$16$q),
         .clock(win_lok$16$clock)
     );
-    fcc_window__win_lok__17 win_lok$17(
+    fcc_window__win_lok__17_k7_668cf05b win_lok$17(
         .d(win_lok$17$d),
         .q(win_lok$17$q),
         .clock(win_lok$17$clock)
     );
-    fcc_window__win_lok__18 win_lok$18(
+    fcc_window__win_lok__18_k7_668cf05b win_lok$18(
         .d(win_lok$18$d),
         .q(win_lok$18$q),
         .clock(win_lok$18$clock)
     );
-    fcc_window__win_lok__19 win_lok$19(
+    fcc_window__win_lok__19_k7_668cf05b win_lok$19(
         .d(win_lok$19$d),
         .q(win_lok$19$q),
         .clock(win_lok$19$clock)
     );
-    fcc_window__win_lok__20 win_lok$20(
+    fcc_window__win_lok__20_k7_668cf05b win_lok$20(
         .d(win_lok$20$d),
         .q(win_lok$20$q),
         .clock(win_lok$20$clock)
     );
-    fcc_window__win_x__0 win_x$0(
+    fcc_window__win_x__0_k7_668cf05b win_x$0(
         .d(win_x$0$d),
         .q(win_x$0$q),
         .clock(win_x$0$clock)
     );
-    fcc_window__win_x__1 win_x$1(
+    fcc_window__win_x__1_k7_668cf05b win_x$1(
         .d(win_x$1$d),
         .q(win_x$1$q),
         .clock(win_x$1$clock)
     );
-    fcc_window__win_x__2 win_x$2(
+    fcc_window__win_x__2_k7_668cf05b win_x$2(
         .d(win_x$2$d),
         .q(win_x$2$q),
         .clock(win_x$2$clock)
     );
-    fcc_window__win_x__3 win_x$3(
+    fcc_window__win_x__3_k7_668cf05b win_x$3(
         .d(win_x$3$d),
         .q(win_x$3$q),
         .clock(win_x$3$clock)
     );
-    fcc_window__win_x__4 win_x$4(
+    fcc_window__win_x__4_k7_668cf05b win_x$4(
         .d(win_x$4$d),
         .q(win_x$4$q),
         .clock(win_x$4$clock)
     );
-    fcc_window__win_x__5 win_x$5(
+    fcc_window__win_x__5_k7_668cf05b win_x$5(
         .d(win_x$5$d),
         .q(win_x$5$q),
         .clock(win_x$5$clock)
     );
-    fcc_window__win_x__6 win_x$6(
+    fcc_window__win_x__6_k7_668cf05b win_x$6(
         .d(win_x$6$d),
         .q(win_x$6$q),
         .clock(win_x$6$clock)
     );
-    fcc_window__win_x__7 win_x$7(
+    fcc_window__win_x__7_k7_668cf05b win_x$7(
         .d(win_x$7$d),
         .q(win_x$7$q),
         .clock(win_x$7$clock)
     );
-    fcc_window__win_x__8 win_x$8(
+    fcc_window__win_x__8_k7_668cf05b win_x$8(
         .d(win_x$8$d),
         .q(win_x$8$q),
         .clock(win_x$8$clock)
     );
-    fcc_window__win_x__9 win_x$9(
+    fcc_window__win_x__9_k7_668cf05b win_x$9(
         .d(win_x$9$d),
         .q(win_x$9$q),
         .clock(win_x$9$clock)
     );
-    fcc_window__win_x__10 win_x$10(
+    fcc_window__win_x__10_k7_668cf05b win_x$10(
         .d(win_x$10$d),
         .q(win_x$10$q),
         .clock(win_x$10$clock)
     );
-    fcc_window__win_x__11 win_x$11(
+    fcc_window__win_x__11_k7_668cf05b win_x$11(
         .d(win_x$11$d),
         .q(win_x$11$q),
         .clock(win_x$11$clock)
     );
-    fcc_window__win_x__12 win_x$12(
+    fcc_window__win_x__12_k7_668cf05b win_x$12(
         .d(win_x$12$d),
         .q(win_x$12$q),
         .clock(win_x$12$clock)
     );
-    fcc_window__win_x__13 win_x$13(
+    fcc_window__win_x__13_k7_668cf05b win_x$13(
         .d(win_x$13$d),
         .q(win_x$13$q),
         .clock(win_x$13$clock)
     );
-    fcc_window__win_x__14 win_x$14(
+    fcc_window__win_x__14_k7_668cf05b win_x$14(
         .d(win_x$14$d),
         .q(win_x$14$q),
         .clock(win_x$14$clock)
     );
-    fcc_window__win_x__15 win_x$15(
+    fcc_window__win_x__15_k7_668cf05b win_x$15(
         .d(win_x$15$d),
         .q(win_x$15$q),
         .clock(win_x$15$clock)
     );
-    fcc_window__win_x__16 win_x$16(
+    fcc_window__win_x__16_k7_668cf05b win_x$16(
         .d(win_x$16$d),
         .q(win_x$16$q),
         .clock(win_x$16$clock)
     );
-    fcc_window__win_x__17 win_x$17(
+    fcc_window__win_x__17_k7_668cf05b win_x$17(
         .d(win_x$17$d),
         .q(win_x$17$q),
         .clock(win_x$17$clock)
     );
-    fcc_window__win_x__18 win_x$18(
+    fcc_window__win_x__18_k7_668cf05b win_x$18(
         .d(win_x$18$d),
         .q(win_x$18$q),
         .clock(win_x$18$clock)
     );
-    fcc_window__win_x__19 win_x$19(
+    fcc_window__win_x__19_k7_668cf05b win_x$19(
         .d(win_x$19$d),
         .q(win_x$19$q),
         .clock(win_x$19$clock)
     );
-    fcc_window__win_x__20 win_x$20(
+    fcc_window__win_x__20_k7_668cf05b win_x$20(
         .d(win_x$20$d),
         .q(win_x$20$q),
         .clock(win_x$20$clock)
     );
-    fcc_window__win_y__0 win_y$0(
+    fcc_window__win_y__0_k7_668cf05b win_y$0(
         .d(win_y$0$d),
         .q(win_y$0$q),
         .clock(win_y$0$clock)
     );
-    fcc_window__win_y__1 win_y$1(
+    fcc_window__win_y__1_k7_668cf05b win_y$1(
         .d(win_y$1$d),
         .q(win_y$1$q),
         .clock(win_y$1$clock)
     );
-    fcc_window__win_y__2 win_y$2(
+    fcc_window__win_y__2_k7_668cf05b win_y$2(
         .d(win_y$2$d),
         .q(win_y$2$q),
         .clock(win_y$2$clock)
     );
-    fcc_window__win_y__3 win_y$3(
+    fcc_window__win_y__3_k7_668cf05b win_y$3(
         .d(win_y$3$d),
         .q(win_y$3$q),
         .clock(win_y$3$clock)
     );
-    fcc_window__win_y__4 win_y$4(
+    fcc_window__win_y__4_k7_668cf05b win_y$4(
         .d(win_y$4$d),
         .q(win_y$4$q),
         .clock(win_y$4$clock)
     );
-    fcc_window__win_y__5 win_y$5(
+    fcc_window__win_y__5_k7_668cf05b win_y$5(
         .d(win_y$5$d),
         .q(win_y$5$q),
         .clock(win_y$5$clock)
     );
-    fcc_window__win_y__6 win_y$6(
+    fcc_window__win_y__6_k7_668cf05b win_y$6(
         .d(win_y$6$d),
         .q(win_y$6$q),
         .clock(win_y$6$clock)
     );
-    fcc_window__win_y__7 win_y$7(
+    fcc_window__win_y__7_k7_668cf05b win_y$7(
         .d(win_y$7$d),
         .q(win_y$7$q),
         .clock(win_y$7$clock)
     );
-    fcc_window__win_y__8 win_y$8(
+    fcc_window__win_y__8_k7_668cf05b win_y$8(
         .d(win_y$8$d),
         .q(win_y$8$q),
         .clock(win_y$8$clock)
     );
-    fcc_window__win_y__9 win_y$9(
+    fcc_window__win_y__9_k7_668cf05b win_y$9(
         .d(win_y$9$d),
         .q(win_y$9$q),
         .clock(win_y$9$clock)
     );
-    fcc_window__win_y__10 win_y$10(
+    fcc_window__win_y__10_k7_668cf05b win_y$10(
         .d(win_y$10$d),
         .q(win_y$10$q),
         .clock(win_y$10$clock)
     );
-    fcc_window__win_y__11 win_y$11(
+    fcc_window__win_y__11_k7_668cf05b win_y$11(
         .d(win_y$11$d),
         .q(win_y$11$q),
         .clock(win_y$11$clock)
     );
-    fcc_window__win_y__12 win_y$12(
+    fcc_window__win_y__12_k7_668cf05b win_y$12(
         .d(win_y$12$d),
         .q(win_y$12$q),
         .clock(win_y$12$clock)
     );
-    fcc_window__win_y__13 win_y$13(
+    fcc_window__win_y__13_k7_668cf05b win_y$13(
         .d(win_y$13$d),
         .q(win_y$13$q),
         .clock(win_y$13$clock)
     );
-    fcc_window__win_y__14 win_y$14(
+    fcc_window__win_y__14_k7_668cf05b win_y$14(
         .d(win_y$14$d),
         .q(win_y$14$q),
         .clock(win_y$14$clock)
     );
-    fcc_window__win_y__15 win_y$15(
+    fcc_window__win_y__15_k7_668cf05b win_y$15(
         .d(win_y$15$d),
         .q(win_y$15$q),
         .clock(win_y$15$clock)
     );
-    fcc_window__win_y__16 win_y$16(
+    fcc_window__win_y__16_k7_668cf05b win_y$16(
         .d(win_y$16$d),
         .q(win_y$16$q),
         .clock(win_y$16$clock)
     );
-    fcc_window__win_y__17 win_y$17(
+    fcc_window__win_y__17_k7_668cf05b win_y$17(
         .d(win_y$17$d),
         .q(win_y$17$q),
         .clock(win_y$17$clock)
     );
-    fcc_window__win_y__18 win_y$18(
+    fcc_window__win_y__18_k7_668cf05b win_y$18(
         .d(win_y$18$d),
         .q(win_y$18$q),
         .clock(win_y$18$clock)
     );
-    fcc_window__win_y__19 win_y$19(
+    fcc_window__win_y__19_k7_668cf05b win_y$19(
         .d(win_y$19$d),
         .q(win_y$19$q),
         .clock(win_y$19$clock)
     );
-    fcc_window__win_y__20 win_y$20(
+    fcc_window__win_y__20_k7_668cf05b win_y$20(
         .d(win_y$20$d),
         .q(win_y$20$q),
         .clock(win_y$20$clock)
     );
-    fcc_window__win_z__0 win_z$0(
+    fcc_window__win_z__0_k7_668cf05b win_z$0(
         .d(win_z$0$d),
         .q(win_z$0$q),
         .clock(win_z$0$clock)
     );
-    fcc_window__win_z__1 win_z$1(
+    fcc_window__win_z__1_k7_668cf05b win_z$1(
         .d(win_z$1$d),
         .q(win_z$1$q),
         .clock(win_z$1$clock)
     );
-    fcc_window__win_z__2 win_z$2(
+    fcc_window__win_z__2_k7_668cf05b win_z$2(
         .d(win_z$2$d),
         .q(win_z$2$q),
         .clock(win_z$2$clock)
     );
-    fcc_window__win_z__3 win_z$3(
+    fcc_window__win_z__3_k7_668cf05b win_z$3(
         .d(win_z$3$d),
         .q(win_z$3$q),
         .clock(win_z$3$clock)
     );
-    fcc_window__win_z__4 win_z$4(
+    fcc_window__win_z__4_k7_668cf05b win_z$4(
         .d(win_z$4$d),
         .q(win_z$4$q),
         .clock(win_z$4$clock)
     );
-    fcc_window__win_z__5 win_z$5(
+    fcc_window__win_z__5_k7_668cf05b win_z$5(
         .d(win_z$5$d),
         .q(win_z$5$q),
         .clock(win_z$5$clock)
     );
-    fcc_window__win_z__6 win_z$6(
+    fcc_window__win_z__6_k7_668cf05b win_z$6(
         .d(win_z$6$d),
         .q(win_z$6$q),
         .clock(win_z$6$clock)
     );
-    fcc_window__win_z__7 win_z$7(
+    fcc_window__win_z__7_k7_668cf05b win_z$7(
         .d(win_z$7$d),
         .q(win_z$7$q),
         .clock(win_z$7$clock)
     );
-    fcc_window__win_z__8 win_z$8(
+    fcc_window__win_z__8_k7_668cf05b win_z$8(
         .d(win_z$8$d),
         .q(win_z$8$q),
         .clock(win_z$8$clock)
     );
-    fcc_window__win_z__9 win_z$9(
+    fcc_window__win_z__9_k7_668cf05b win_z$9(
         .d(win_z$9$d),
         .q(win_z$9$q),
         .clock(win_z$9$clock)
     );
-    fcc_window__win_z__10 win_z$10(
+    fcc_window__win_z__10_k7_668cf05b win_z$10(
         .d(win_z$10$d),
         .q(win_z$10$q),
         .clock(win_z$10$clock)
     );
-    fcc_window__win_z__11 win_z$11(
+    fcc_window__win_z__11_k7_668cf05b win_z$11(
         .d(win_z$11$d),
         .q(win_z$11$q),
         .clock(win_z$11$clock)
     );
-    fcc_window__win_z__12 win_z$12(
+    fcc_window__win_z__12_k7_668cf05b win_z$12(
         .d(win_z$12$d),
         .q(win_z$12$q),
         .clock(win_z$12$clock)
     );
-    fcc_window__win_z__13 win_z$13(
+    fcc_window__win_z__13_k7_668cf05b win_z$13(
         .d(win_z$13$d),
         .q(win_z$13$q),
         .clock(win_z$13$clock)
     );
-    fcc_window__win_z__14 win_z$14(
+    fcc_window__win_z__14_k7_668cf05b win_z$14(
         .d(win_z$14$d),
         .q(win_z$14$q),
         .clock(win_z$14$clock)
     );
-    fcc_window__win_z__15 win_z$15(
+    fcc_window__win_z__15_k7_668cf05b win_z$15(
         .d(win_z$15$d),
         .q(win_z$15$q),
         .clock(win_z$15$clock)
     );
-    fcc_window__win_z__16 win_z$16(
+    fcc_window__win_z__16_k7_668cf05b win_z$16(
         .d(win_z$16$d),
         .q(win_z$16$q),
         .clock(win_z$16$clock)
     );
-    fcc_window__win_z__17 win_z$17(
+    fcc_window__win_z__17_k7_668cf05b win_z$17(
         .d(win_z$17$d),
         .q(win_z$17$q),
         .clock(win_z$17$clock)
     );
-    fcc_window__win_z__18 win_z$18(
+    fcc_window__win_z__18_k7_668cf05b win_z$18(
         .d(win_z$18$d),
         .q(win_z$18$q),
         .clock(win_z$18$clock)
     );
-    fcc_window__win_z__19 win_z$19(
+    fcc_window__win_z__19_k7_668cf05b win_z$19(
         .d(win_z$19$d),
         .q(win_z$19$q),
         .clock(win_z$19$clock)
     );
-    fcc_window__win_z__20 win_z$20(
+    fcc_window__win_z__20_k7_668cf05b win_z$20(
         .d(win_z$20$d),
         .q(win_z$20$q),
         .clock(win_z$20$clock)
     );
-    fcc_window__w1 w1(
+    fcc_window__w1_k7_668cf05b w1(
         .d(w1$d),
         .q(w1$q),
         .clock(w1$clock)
     );
-    fcc_window__w2 w2(
+    fcc_window__w2_k7_668cf05b w2(
         .d(w2$d),
         .q(w2$q),
         .clock(w2$clock)
     );
-    fcc_window__w3 w3(
+    fcc_window__w3_k7_668cf05b w3(
         .d(w3$d),
         .q(w3$q),
         .clock(w3$clock)
     );
-    fcc_window__rv_valid__0 rv_valid$0(
+    fcc_window__rv_valid__0_k7_668cf05b rv_valid$0(
         .d(rv_valid$0$d),
         .q(rv_valid$0$q),
         .clock(rv_valid$0$clock)
     );
-    fcc_window__rv_valid__1 rv_valid$1(
+    fcc_window__rv_valid__1_k7_668cf05b rv_valid$1(
         .d(rv_valid$1$d),
         .q(rv_valid$1$q),
         .clock(rv_valid$1$clock)
     );
-    fcc_window__rv_valid__2 rv_valid$2(
+    fcc_window__rv_valid__2_k7_668cf05b rv_valid$2(
         .d(rv_valid$2$d),
         .q(rv_valid$2$q),
         .clock(rv_valid$2$clock)
     );
-    fcc_window__rv_valid__3 rv_valid$3(
+    fcc_window__rv_valid__3_k7_668cf05b rv_valid$3(
         .d(rv_valid$3$d),
         .q(rv_valid$3$q),
         .clock(rv_valid$3$clock)
     );
-    fcc_window__rv_valid__4 rv_valid$4(
+    fcc_window__rv_valid__4_k7_668cf05b rv_valid$4(
         .d(rv_valid$4$d),
         .q(rv_valid$4$q),
         .clock(rv_valid$4$clock)
     );
-    fcc_window__rv_valid__5 rv_valid$5(
+    fcc_window__rv_valid__5_k7_668cf05b rv_valid$5(
         .d(rv_valid$5$d),
         .q(rv_valid$5$q),
         .clock(rv_valid$5$clock)
     );
-    fcc_window__rv_col__0 rv_col$0(
+    fcc_window__rv_col__0_k7_668cf05b rv_col$0(
         .d(rv_col$0$d),
         .q(rv_col$0$q),
         .clock(rv_col$0$clock)
     );
-    fcc_window__rv_col__1 rv_col$1(
+    fcc_window__rv_col__1_k7_668cf05b rv_col$1(
         .d(rv_col$1$d),
         .q(rv_col$1$q),
         .clock(rv_col$1$clock)
     );
-    fcc_window__rv_col__2 rv_col$2(
+    fcc_window__rv_col__2_k7_668cf05b rv_col$2(
         .d(rv_col$2$d),
         .q(rv_col$2$q),
         .clock(rv_col$2$clock)
     );
-    fcc_window__rv_col__3 rv_col$3(
+    fcc_window__rv_col__3_k7_668cf05b rv_col$3(
         .d(rv_col$3$d),
         .q(rv_col$3$q),
         .clock(rv_col$3$clock)
     );
-    fcc_window__rv_col__4 rv_col$4(
+    fcc_window__rv_col__4_k7_668cf05b rv_col$4(
         .d(rv_col$4$d),
         .q(rv_col$4$q),
         .clock(rv_col$4$clock)
     );
-    fcc_window__rv_col__5 rv_col$5(
+    fcc_window__rv_col__5_k7_668cf05b rv_col$5(
         .d(rv_col$5$d),
         .q(rv_col$5$q),
         .clock(rv_col$5$clock)
     );
-    fcc_window__rv_rdcol__0 rv_rdcol$0(
+    fcc_window__rv_rdcol__0_k7_668cf05b rv_rdcol$0(
         .d(rv_rdcol$0$d),
         .q(rv_rdcol$0$q),
         .clock(rv_rdcol$0$clock)
     );
-    fcc_window__rv_rdcol__1 rv_rdcol$1(
+    fcc_window__rv_rdcol__1_k7_668cf05b rv_rdcol$1(
         .d(rv_rdcol$1$d),
         .q(rv_rdcol$1$q),
         .clock(rv_rdcol$1$clock)
     );
-    fcc_window__rv_rdcol__2 rv_rdcol$2(
+    fcc_window__rv_rdcol__2_k7_668cf05b rv_rdcol$2(
         .d(rv_rdcol$2$d),
         .q(rv_rdcol$2$q),
         .clock(rv_rdcol$2$clock)
     );
-    fcc_window__rv_rdcol__3 rv_rdcol$3(
+    fcc_window__rv_rdcol__3_k7_668cf05b rv_rdcol$3(
         .d(rv_rdcol$3$d),
         .q(rv_rdcol$3$q),
         .clock(rv_rdcol$3$clock)
     );
-    fcc_window__rlb__0 rlb$0(
+    fcc_window__rlb__0_k7_668cf05b rlb$0(
         .clk(rlb$0$clk),
         .read_en(rlb$0$read_en),
         .read_addr(rlb$0$read_addr),
@@ -43077,7 +41789,7 @@ module fcc_window(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,e
         .write_addr(rlb$0$write_addr),
         .write_data(rlb$0$write_data)
     );
-    fcc_window__rlb__1 rlb$1(
+    fcc_window__rlb__1_k7_668cf05b rlb$1(
         .clk(rlb$1$clk),
         .read_en(rlb$1$read_en),
         .read_addr(rlb$1$read_addr),
@@ -43086,7 +41798,7 @@ module fcc_window(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,e
         .write_addr(rlb$1$write_addr),
         .write_data(rlb$1$write_data)
     );
-    fcc_window__rlb__2 rlb$2(
+    fcc_window__rlb__2_k7_668cf05b rlb$2(
         .clk(rlb$2$clk),
         .read_en(rlb$2$read_en),
         .read_addr(rlb$2$read_addr),
@@ -43095,172 +41807,172 @@ module fcc_window(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,e
         .write_addr(rlb$2$write_addr),
         .write_data(rlb$2$write_data)
     );
-    fcc_window__rwin__0 rwin$0(
+    fcc_window__rwin__0_k7_668cf05b rwin$0(
         .d(rwin$0$d),
         .q(rwin$0$q),
         .clock(rwin$0$clock)
     );
-    fcc_window__rwin__1 rwin$1(
+    fcc_window__rwin__1_k7_668cf05b rwin$1(
         .d(rwin$1$d),
         .q(rwin$1$q),
         .clock(rwin$1$clock)
     );
-    fcc_window__rwin__2 rwin$2(
+    fcc_window__rwin__2_k7_668cf05b rwin$2(
         .d(rwin$2$d),
         .q(rwin$2$q),
         .clock(rwin$2$clock)
     );
-    fcc_window__rwin__3 rwin$3(
+    fcc_window__rwin__3_k7_668cf05b rwin$3(
         .d(rwin$3$d),
         .q(rwin$3$q),
         .clock(rwin$3$clock)
     );
-    fcc_window__rwin__4 rwin$4(
+    fcc_window__rwin__4_k7_668cf05b rwin$4(
         .d(rwin$4$d),
         .q(rwin$4$q),
         .clock(rwin$4$clock)
     );
-    fcc_window__rwin__5 rwin$5(
+    fcc_window__rwin__5_k7_668cf05b rwin$5(
         .d(rwin$5$d),
         .q(rwin$5$q),
         .clock(rwin$5$clock)
     );
-    fcc_window__rwin__6 rwin$6(
+    fcc_window__rwin__6_k7_668cf05b rwin$6(
         .d(rwin$6$d),
         .q(rwin$6$q),
         .clock(rwin$6$clock)
     );
-    fcc_window__rwin__7 rwin$7(
+    fcc_window__rwin__7_k7_668cf05b rwin$7(
         .d(rwin$7$d),
         .q(rwin$7$q),
         .clock(rwin$7$clock)
     );
-    fcc_window__rwin__8 rwin$8(
+    fcc_window__rwin__8_k7_668cf05b rwin$8(
         .d(rwin$8$d),
         .q(rwin$8$q),
         .clock(rwin$8$clock)
     );
-    fcc_window__rwin__9 rwin$9(
+    fcc_window__rwin__9_k7_668cf05b rwin$9(
         .d(rwin$9$d),
         .q(rwin$9$q),
         .clock(rwin$9$clock)
     );
-    fcc_window__rwin__10 rwin$10(
+    fcc_window__rwin__10_k7_668cf05b rwin$10(
         .d(rwin$10$d),
         .q(rwin$10$q),
         .clock(rwin$10$clock)
     );
-    fcc_window__rwin__11 rwin$11(
+    fcc_window__rwin__11_k7_668cf05b rwin$11(
         .d(rwin$11$d),
         .q(rwin$11$q),
         .clock(rwin$11$clock)
     );
-    fcc_window__rwin__12 rwin$12(
+    fcc_window__rwin__12_k7_668cf05b rwin$12(
         .d(rwin$12$d),
         .q(rwin$12$q),
         .clock(rwin$12$clock)
     );
-    fcc_window__rwin__13 rwin$13(
+    fcc_window__rwin__13_k7_668cf05b rwin$13(
         .d(rwin$13$d),
         .q(rwin$13$q),
         .clock(rwin$13$clock)
     );
-    fcc_window__rwin__14 rwin$14(
+    fcc_window__rwin__14_k7_668cf05b rwin$14(
         .d(rwin$14$d),
         .q(rwin$14$q),
         .clock(rwin$14$clock)
     );
-    fcc_window__rwin__15 rwin$15(
+    fcc_window__rwin__15_k7_668cf05b rwin$15(
         .d(rwin$15$d),
         .q(rwin$15$q),
         .clock(rwin$15$clock)
     );
-    fcc_window__rwin__16 rwin$16(
+    fcc_window__rwin__16_k7_668cf05b rwin$16(
         .d(rwin$16$d),
         .q(rwin$16$q),
         .clock(rwin$16$clock)
     );
-    fcc_window__rwin__17 rwin$17(
+    fcc_window__rwin__17_k7_668cf05b rwin$17(
         .d(rwin$17$d),
         .q(rwin$17$q),
         .clock(rwin$17$clock)
     );
-    fcc_window__rwin__18 rwin$18(
+    fcc_window__rwin__18_k7_668cf05b rwin$18(
         .d(rwin$18$d),
         .q(rwin$18$q),
         .clock(rwin$18$clock)
     );
-    fcc_window__rwin__19 rwin$19(
+    fcc_window__rwin__19_k7_668cf05b rwin$19(
         .d(rwin$19$d),
         .q(rwin$19$q),
         .clock(rwin$19$clock)
     );
-    fcc_window__rwin__20 rwin$20(
+    fcc_window__rwin__20_k7_668cf05b rwin$20(
         .d(rwin$20$d),
         .q(rwin$20$q),
         .clock(rwin$20$clock)
     );
-    fcc_window__row_in__0 row_in$0(
+    fcc_window__row_in__0_k7_668cf05b row_in$0(
         .d(row_in$0$d),
         .q(row_in$0$q),
         .clock(row_in$0$clock)
     );
-    fcc_window__row_in__1 row_in$1(
+    fcc_window__row_in__1_k7_668cf05b row_in$1(
         .d(row_in$1$d),
         .q(row_in$1$q),
         .clock(row_in$1$clock)
     );
-    fcc_window__row_in__2 row_in$2(
+    fcc_window__row_in__2_k7_668cf05b row_in$2(
         .d(row_in$2$d),
         .q(row_in$2$q),
         .clock(row_in$2$clock)
     );
-    fcc_window__col_in__0 col_in$0(
+    fcc_window__col_in__0_k7_668cf05b col_in$0(
         .d(col_in$0$d),
         .q(col_in$0$q),
         .clock(col_in$0$clock)
     );
-    fcc_window__col_in__1 col_in$1(
+    fcc_window__col_in__1_k7_668cf05b col_in$1(
         .d(col_in$1$d),
         .q(col_in$1$q),
         .clock(col_in$1$clock)
     );
-    fcc_window__col_in__2 col_in$2(
+    fcc_window__col_in__2_k7_668cf05b col_in$2(
         .d(col_in$2$d),
         .q(col_in$2$q),
         .clock(col_in$2$clock)
     );
-    fcc_window__col_in__3 col_in$3(
+    fcc_window__col_in__3_k7_668cf05b col_in$3(
         .d(col_in$3$d),
         .q(col_in$3$q),
         .clock(col_in$3$clock)
     );
-    fcc_window__col_in__4 col_in$4(
+    fcc_window__col_in__4_k7_668cf05b col_in$4(
         .d(col_in$4$d),
         .q(col_in$4$q),
         .clock(col_in$4$clock)
     );
-    fcc_window__col_in__5 col_in$5(
+    fcc_window__col_in__5_k7_668cf05b col_in$5(
         .d(col_in$5$d),
         .q(col_in$5$q),
         .clock(col_in$5$clock)
     );
-    fcc_window__col_in__6 col_in$6(
+    fcc_window__col_in__6_k7_668cf05b col_in$6(
         .d(col_in$6$d),
         .q(col_in$6$q),
         .clock(col_in$6$clock)
     );
-    fcc_window__col_hi__0 col_hi$0(
+    fcc_window__col_hi__0_k7_668cf05b col_hi$0(
         .d(col_hi$0$d),
         .q(col_hi$0$q),
         .clock(col_hi$0$clock)
     );
-    fcc_window__col_hi__1 col_hi$1(
+    fcc_window__col_hi__1_k7_668cf05b col_hi$1(
         .d(col_hi$1$d),
         .q(col_hi$1$q),
         .clock(col_hi$1$clock)
     );
-    fcc_window__col_hi__2 col_hi$2(
+    fcc_window__col_hi__2_k7_668cf05b col_hi$2(
         .d(col_hi$2$d),
         .q(col_hi$2$q),
         .clock(col_hi$2$clock)
@@ -44025,29 +42737,10 @@ module fcc_window(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,e
         ent_z$20 = win_z$20$q;
     end
 
-endmodule // fcc_window
+endmodule // fcc_window_k7_668cf05b
 
 
-module fcc_window__col_hi__0(d,q,clock);
-
-    // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 12'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__col_hi__0
-
-
-module fcc_window__col_hi__1(d,q,clock);
+module fcc_window__col_hi__0_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [11:0] d;
@@ -44063,10 +42756,10 @@ module fcc_window__col_hi__1(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__col_hi__1
+endmodule // fcc_window__col_hi__0_k7_668cf05b
 
 
-module fcc_window__col_hi__2(d,q,clock);
+module fcc_window__col_hi__1_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [11:0] d;
@@ -44082,10 +42775,29 @@ module fcc_window__col_hi__2(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__col_hi__2
+endmodule // fcc_window__col_hi__1_k7_668cf05b
 
 
-module fcc_window__col_in__0(d,q,clock);
+module fcc_window__col_hi__2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__col_hi__2_k7_668cf05b
+
+
+module fcc_window__col_in__0_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -44101,29 +42813,10 @@ module fcc_window__col_in__0(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__col_in__0
+endmodule // fcc_window__col_in__0_k7_668cf05b
 
 
-module fcc_window__col_in__1(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__col_in__1
-
-
-module fcc_window__col_in__2(d,q,clock);
+module fcc_window__col_in__1_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -44139,29 +42832,10 @@ module fcc_window__col_in__2(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__col_in__2
+endmodule // fcc_window__col_in__1_k7_668cf05b
 
 
-module fcc_window__col_in__3(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__col_in__3
-
-
-module fcc_window__col_in__4(d,q,clock);
+module fcc_window__col_in__2_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -44177,29 +42851,10 @@ module fcc_window__col_in__4(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__col_in__4
+endmodule // fcc_window__col_in__2_k7_668cf05b
 
 
-module fcc_window__col_in__5(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__col_in__5
-
-
-module fcc_window__col_in__6(d,q,clock);
+module fcc_window__col_in__3_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -44215,10 +42870,67 @@ module fcc_window__col_in__6(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__col_in__6
+endmodule // fcc_window__col_in__3_k7_668cf05b
 
 
-module fcc_window__lbs__0(clk,read_en,read_addr,rd_lok,rd_x,rd_y,rd_z,write_en,write_addr,wr_lok,wr_x,wr_y,wr_z);
+module fcc_window__col_in__4_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__col_in__4_k7_668cf05b
+
+
+module fcc_window__col_in__5_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__col_in__5_k7_668cf05b
+
+
+module fcc_window__col_in__6_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__col_in__6_k7_668cf05b
+
+
+module fcc_window__lbs__0_k7_668cf05b(clk,read_en,read_addr,rd_lok,rd_x,rd_y,rd_z,write_en,write_addr,wr_lok,wr_x,wr_y,wr_z);
 
     // Module arguments
     input wire  clk;
@@ -44245,7 +42957,7 @@ module fcc_window__lbs__0(clk,read_en,read_addr,rd_lok,rd_x,rd_y,rd_z,write_en,w
     reg  [48:0] ram$write_data;
 
     // Sub module instances
-    fcc_window__lbs__0__ram ram(
+    fcc_window__lbs__0__ram_k7_668cf05b ram(
         .clk(ram$clk),
         .read_en(ram$read_en),
         .read_addr(ram$read_addr),
@@ -44272,10 +42984,10 @@ module fcc_window__lbs__0(clk,read_en,read_addr,rd_lok,rd_x,rd_y,rd_z,write_en,w
         rd_z = ram$read_data[48:33];
     end
 
-endmodule // fcc_window__lbs__0
+endmodule // fcc_window__lbs__0_k7_668cf05b
 
 
-module fcc_window__lbs__0__ram(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
+module fcc_window__lbs__0__ram_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
 
     // Module arguments
     input wire  clk;
@@ -44304,10 +43016,10 @@ module fcc_window__lbs__0__ram(clk,read_en,read_addr,read_data,write_en,write_ad
         end
         read_data <= rd1;
     end
-endmodule // fcc_window__lbs__0__ram
+endmodule // fcc_window__lbs__0__ram_k7_668cf05b
 
 
-module fcc_window__lbs__1(clk,read_en,read_addr,rd_lok,rd_x,rd_y,rd_z,write_en,write_addr,wr_lok,wr_x,wr_y,wr_z);
+module fcc_window__lbs__1_k7_668cf05b(clk,read_en,read_addr,rd_lok,rd_x,rd_y,rd_z,write_en,write_addr,wr_lok,wr_x,wr_y,wr_z);
 
     // Module arguments
     input wire  clk;
@@ -44334,7 +43046,7 @@ module fcc_window__lbs__1(clk,read_en,read_addr,rd_lok,rd_x,rd_y,rd_z,write_en,w
     reg  [48:0] ram$write_data;
 
     // Sub module instances
-    fcc_window__lbs__1__ram ram(
+    fcc_window__lbs__1__ram_k7_668cf05b ram(
         .clk(ram$clk),
         .read_en(ram$read_en),
         .read_addr(ram$read_addr),
@@ -44361,10 +43073,10 @@ module fcc_window__lbs__1(clk,read_en,read_addr,rd_lok,rd_x,rd_y,rd_z,write_en,w
         rd_z = ram$read_data[48:33];
     end
 
-endmodule // fcc_window__lbs__1
+endmodule // fcc_window__lbs__1_k7_668cf05b
 
 
-module fcc_window__lbs__1__ram(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
+module fcc_window__lbs__1__ram_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
 
     // Module arguments
     input wire  clk;
@@ -44393,10 +43105,10 @@ module fcc_window__lbs__1__ram(clk,read_en,read_addr,read_data,write_en,write_ad
         end
         read_data <= rd1;
     end
-endmodule // fcc_window__lbs__1__ram
+endmodule // fcc_window__lbs__1__ram_k7_668cf05b
 
 
-module fcc_window__lbs__2(clk,read_en,read_addr,rd_lok,rd_x,rd_y,rd_z,write_en,write_addr,wr_lok,wr_x,wr_y,wr_z);
+module fcc_window__lbs__2_k7_668cf05b(clk,read_en,read_addr,rd_lok,rd_x,rd_y,rd_z,write_en,write_addr,wr_lok,wr_x,wr_y,wr_z);
 
     // Module arguments
     input wire  clk;
@@ -44423,7 +43135,7 @@ module fcc_window__lbs__2(clk,read_en,read_addr,rd_lok,rd_x,rd_y,rd_z,write_en,w
     reg  [48:0] ram$write_data;
 
     // Sub module instances
-    fcc_window__lbs__2__ram ram(
+    fcc_window__lbs__2__ram_k7_668cf05b ram(
         .clk(ram$clk),
         .read_en(ram$read_en),
         .read_addr(ram$read_addr),
@@ -44450,10 +43162,10 @@ module fcc_window__lbs__2(clk,read_en,read_addr,rd_lok,rd_x,rd_y,rd_z,write_en,w
         rd_z = ram$read_data[48:33];
     end
 
-endmodule // fcc_window__lbs__2
+endmodule // fcc_window__lbs__2_k7_668cf05b
 
 
-module fcc_window__lbs__2__ram(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
+module fcc_window__lbs__2__ram_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
 
     // Module arguments
     input wire  clk;
@@ -44482,42 +43194,10 @@ module fcc_window__lbs__2__ram(clk,read_en,read_addr,read_data,write_en,write_ad
         end
         read_data <= rd1;
     end
-endmodule // fcc_window__lbs__2__ram
+endmodule // fcc_window__lbs__2__ram_k7_668cf05b
 
 
-module fcc_window__rlb__0(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
-
-    // Module arguments
-    input wire  clk;
-    input wire  read_en;
-    input wire  [11:0] read_addr;
-    output reg  [15:0] read_data;
-    input wire  write_en;
-    input wire  [11:0] write_addr;
-    input wire  [15:0] write_data;
-
-    // Update code (custom)
-    // Address bits above the depth and data bits above the stored width are
-    // not used by this instance.
-    /* verilator lint_off UNUSEDSIGNAL */
-    wire unused_ok = &{1'b0, read_addr[11:11], write_addr[11:11]};
-    /* verilator lint_on UNUSEDSIGNAL */
-    reg [15:0] mem [0:2047];
-    // The block RAM's output register, then a fabric register.
-    reg [15:0] rd1;
-    always @(posedge clk) begin
-        if (read_en) begin
-            rd1 <= mem[read_addr[10:0]];
-        end
-        if (write_en) begin
-            mem[write_addr[10:0]] <= write_data;
-        end
-        read_data <= rd1;
-    end
-endmodule // fcc_window__rlb__0
-
-
-module fcc_window__rlb__1(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
+module fcc_window__rlb__0_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
 
     // Module arguments
     input wire  clk;
@@ -44546,10 +43226,10 @@ module fcc_window__rlb__1(clk,read_en,read_addr,read_data,write_en,write_addr,wr
         end
         read_data <= rd1;
     end
-endmodule // fcc_window__rlb__1
+endmodule // fcc_window__rlb__0_k7_668cf05b
 
 
-module fcc_window__rlb__2(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
+module fcc_window__rlb__1_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
 
     // Module arguments
     input wire  clk;
@@ -44578,10 +43258,42 @@ module fcc_window__rlb__2(clk,read_en,read_addr,read_data,write_en,write_addr,wr
         end
         read_data <= rd1;
     end
-endmodule // fcc_window__rlb__2
+endmodule // fcc_window__rlb__1_k7_668cf05b
 
 
-module fcc_window__row_in__0(d,q,clock);
+module fcc_window__rlb__2_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
+
+    // Module arguments
+    input wire  clk;
+    input wire  read_en;
+    input wire  [11:0] read_addr;
+    output reg  [15:0] read_data;
+    input wire  write_en;
+    input wire  [11:0] write_addr;
+    input wire  [15:0] write_data;
+
+    // Update code (custom)
+    // Address bits above the depth and data bits above the stored width are
+    // not used by this instance.
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire unused_ok = &{1'b0, read_addr[11:11], write_addr[11:11]};
+    /* verilator lint_on UNUSEDSIGNAL */
+    reg [15:0] mem [0:2047];
+    // The block RAM's output register, then a fabric register.
+    reg [15:0] rd1;
+    always @(posedge clk) begin
+        if (read_en) begin
+            rd1 <= mem[read_addr[10:0]];
+        end
+        if (write_en) begin
+            mem[write_addr[10:0]] <= write_data;
+        end
+        read_data <= rd1;
+    end
+endmodule // fcc_window__rlb__2_k7_668cf05b
+
+
+module fcc_window__row_in__0_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -44597,29 +43309,10 @@ module fcc_window__row_in__0(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__row_in__0
+endmodule // fcc_window__row_in__0_k7_668cf05b
 
 
-module fcc_window__row_in__1(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__row_in__1
-
-
-module fcc_window__row_in__2(d,q,clock);
+module fcc_window__row_in__1_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -44635,200 +43328,10 @@ module fcc_window__row_in__2(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__row_in__2
+endmodule // fcc_window__row_in__1_k7_668cf05b
 
 
-module fcc_window__rv_col__0(d,q,clock);
-
-    // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 12'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rv_col__0
-
-
-module fcc_window__rv_col__1(d,q,clock);
-
-    // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 12'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rv_col__1
-
-
-module fcc_window__rv_col__2(d,q,clock);
-
-    // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 12'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rv_col__2
-
-
-module fcc_window__rv_col__3(d,q,clock);
-
-    // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 12'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rv_col__3
-
-
-module fcc_window__rv_col__4(d,q,clock);
-
-    // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 12'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rv_col__4
-
-
-module fcc_window__rv_col__5(d,q,clock);
-
-    // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 12'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rv_col__5
-
-
-module fcc_window__rv_rdcol__0(d,q,clock);
-
-    // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 12'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rv_rdcol__0
-
-
-module fcc_window__rv_rdcol__1(d,q,clock);
-
-    // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 12'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rv_rdcol__1
-
-
-module fcc_window__rv_rdcol__2(d,q,clock);
-
-    // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 12'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rv_rdcol__2
-
-
-module fcc_window__rv_rdcol__3(d,q,clock);
-
-    // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 12'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rv_rdcol__3
-
-
-module fcc_window__rv_valid__0(d,q,clock);
+module fcc_window__row_in__2_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -44844,10 +43347,200 @@ module fcc_window__rv_valid__0(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__rv_valid__0
+endmodule // fcc_window__row_in__2_k7_668cf05b
 
 
-module fcc_window__rv_valid__1(d,q,clock);
+module fcc_window__rv_col__0_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rv_col__0_k7_668cf05b
+
+
+module fcc_window__rv_col__1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rv_col__1_k7_668cf05b
+
+
+module fcc_window__rv_col__2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rv_col__2_k7_668cf05b
+
+
+module fcc_window__rv_col__3_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rv_col__3_k7_668cf05b
+
+
+module fcc_window__rv_col__4_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rv_col__4_k7_668cf05b
+
+
+module fcc_window__rv_col__5_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rv_col__5_k7_668cf05b
+
+
+module fcc_window__rv_rdcol__0_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rv_rdcol__0_k7_668cf05b
+
+
+module fcc_window__rv_rdcol__1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rv_rdcol__1_k7_668cf05b
+
+
+module fcc_window__rv_rdcol__2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rv_rdcol__2_k7_668cf05b
+
+
+module fcc_window__rv_rdcol__3_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rv_rdcol__3_k7_668cf05b
+
+
+module fcc_window__rv_valid__0_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -44863,29 +43556,10 @@ module fcc_window__rv_valid__1(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__rv_valid__1
+endmodule // fcc_window__rv_valid__0_k7_668cf05b
 
 
-module fcc_window__rv_valid__2(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rv_valid__2
-
-
-module fcc_window__rv_valid__3(d,q,clock);
+module fcc_window__rv_valid__1_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -44901,29 +43575,10 @@ module fcc_window__rv_valid__3(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__rv_valid__3
+endmodule // fcc_window__rv_valid__1_k7_668cf05b
 
 
-module fcc_window__rv_valid__4(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rv_valid__4
-
-
-module fcc_window__rv_valid__5(d,q,clock);
+module fcc_window__rv_valid__2_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -44939,10 +43594,67 @@ module fcc_window__rv_valid__5(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__rv_valid__5
+endmodule // fcc_window__rv_valid__2_k7_668cf05b
 
 
-module fcc_window__rwin__0(d,q,clock);
+module fcc_window__rv_valid__3_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rv_valid__3_k7_668cf05b
+
+
+module fcc_window__rv_valid__4_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rv_valid__4_k7_668cf05b
+
+
+module fcc_window__rv_valid__5_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rv_valid__5_k7_668cf05b
+
+
+module fcc_window__rwin__0_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -44958,29 +43670,10 @@ module fcc_window__rwin__0(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__rwin__0
+endmodule // fcc_window__rwin__0_k7_668cf05b
 
 
-module fcc_window__rwin__1(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rwin__1
-
-
-module fcc_window__rwin__10(d,q,clock);
+module fcc_window__rwin__1_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -44996,29 +43689,10 @@ module fcc_window__rwin__10(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__rwin__10
+endmodule // fcc_window__rwin__1_k7_668cf05b
 
 
-module fcc_window__rwin__11(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rwin__11
-
-
-module fcc_window__rwin__12(d,q,clock);
+module fcc_window__rwin__10_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -45034,29 +43708,10 @@ module fcc_window__rwin__12(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__rwin__12
+endmodule // fcc_window__rwin__10_k7_668cf05b
 
 
-module fcc_window__rwin__13(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rwin__13
-
-
-module fcc_window__rwin__14(d,q,clock);
+module fcc_window__rwin__11_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -45072,29 +43727,10 @@ module fcc_window__rwin__14(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__rwin__14
+endmodule // fcc_window__rwin__11_k7_668cf05b
 
 
-module fcc_window__rwin__15(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rwin__15
-
-
-module fcc_window__rwin__16(d,q,clock);
+module fcc_window__rwin__12_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -45110,29 +43746,10 @@ module fcc_window__rwin__16(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__rwin__16
+endmodule // fcc_window__rwin__12_k7_668cf05b
 
 
-module fcc_window__rwin__17(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rwin__17
-
-
-module fcc_window__rwin__18(d,q,clock);
+module fcc_window__rwin__13_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -45148,29 +43765,10 @@ module fcc_window__rwin__18(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__rwin__18
+endmodule // fcc_window__rwin__13_k7_668cf05b
 
 
-module fcc_window__rwin__19(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rwin__19
-
-
-module fcc_window__rwin__2(d,q,clock);
+module fcc_window__rwin__14_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -45186,29 +43784,10 @@ module fcc_window__rwin__2(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__rwin__2
+endmodule // fcc_window__rwin__14_k7_668cf05b
 
 
-module fcc_window__rwin__20(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rwin__20
-
-
-module fcc_window__rwin__3(d,q,clock);
+module fcc_window__rwin__15_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -45224,29 +43803,10 @@ module fcc_window__rwin__3(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__rwin__3
+endmodule // fcc_window__rwin__15_k7_668cf05b
 
 
-module fcc_window__rwin__4(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rwin__4
-
-
-module fcc_window__rwin__5(d,q,clock);
+module fcc_window__rwin__16_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -45262,29 +43822,10 @@ module fcc_window__rwin__5(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__rwin__5
+endmodule // fcc_window__rwin__16_k7_668cf05b
 
 
-module fcc_window__rwin__6(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rwin__6
-
-
-module fcc_window__rwin__7(d,q,clock);
+module fcc_window__rwin__17_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -45300,29 +43841,10 @@ module fcc_window__rwin__7(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__rwin__7
+endmodule // fcc_window__rwin__17_k7_668cf05b
 
 
-module fcc_window__rwin__8(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rwin__8
-
-
-module fcc_window__rwin__9(d,q,clock);
+module fcc_window__rwin__18_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -45338,10 +43860,200 @@ module fcc_window__rwin__9(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__rwin__9
+endmodule // fcc_window__rwin__18_k7_668cf05b
 
 
-module fcc_window__w1(d,q,clock);
+module fcc_window__rwin__19_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rwin__19_k7_668cf05b
+
+
+module fcc_window__rwin__2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rwin__2_k7_668cf05b
+
+
+module fcc_window__rwin__20_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rwin__20_k7_668cf05b
+
+
+module fcc_window__rwin__3_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rwin__3_k7_668cf05b
+
+
+module fcc_window__rwin__4_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rwin__4_k7_668cf05b
+
+
+module fcc_window__rwin__5_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rwin__5_k7_668cf05b
+
+
+module fcc_window__rwin__6_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rwin__6_k7_668cf05b
+
+
+module fcc_window__rwin__7_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rwin__7_k7_668cf05b
+
+
+module fcc_window__rwin__8_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rwin__8_k7_668cf05b
+
+
+module fcc_window__rwin__9_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rwin__9_k7_668cf05b
+
+
+module fcc_window__w1_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [131:0] d;
@@ -45357,29 +44069,10 @@ module fcc_window__w1(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__w1
+endmodule // fcc_window__w1_k7_668cf05b
 
 
-module fcc_window__w2(d,q,clock);
-
-    // Module arguments
-    input wire  [131:0] d;
-    output reg  [131:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 132'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__w2
-
-
-module fcc_window__w3(d,q,clock);
+module fcc_window__w2_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [131:0] d;
@@ -45395,48 +44088,29 @@ module fcc_window__w3(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__w3
+endmodule // fcc_window__w2_k7_668cf05b
 
 
-module fcc_window__win_lok__0(d,q,clock);
+module fcc_window__w3_k7_668cf05b(d,q,clock);
 
     // Module arguments
-    input wire  d;
-    output reg  q;
+    input wire  [131:0] d;
+    output reg  [131:0] q;
     input wire  clock;
 
     // Update code (custom)
     initial begin
-       q = 1'h0;
+       q = 132'h0;
     end
 
     always @(posedge clock) begin
        q <= d;
     end
 
-endmodule // fcc_window__win_lok__0
+endmodule // fcc_window__w3_k7_668cf05b
 
 
-module fcc_window__win_lok__1(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__win_lok__1
-
-
-module fcc_window__win_lok__10(d,q,clock);
+module fcc_window__win_lok__0_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -45452,29 +44126,10 @@ module fcc_window__win_lok__10(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_lok__10
+endmodule // fcc_window__win_lok__0_k7_668cf05b
 
 
-module fcc_window__win_lok__11(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__win_lok__11
-
-
-module fcc_window__win_lok__12(d,q,clock);
+module fcc_window__win_lok__1_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -45490,29 +44145,10 @@ module fcc_window__win_lok__12(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_lok__12
+endmodule // fcc_window__win_lok__1_k7_668cf05b
 
 
-module fcc_window__win_lok__13(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__win_lok__13
-
-
-module fcc_window__win_lok__14(d,q,clock);
+module fcc_window__win_lok__10_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -45528,29 +44164,10 @@ module fcc_window__win_lok__14(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_lok__14
+endmodule // fcc_window__win_lok__10_k7_668cf05b
 
 
-module fcc_window__win_lok__15(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__win_lok__15
-
-
-module fcc_window__win_lok__16(d,q,clock);
+module fcc_window__win_lok__11_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -45566,29 +44183,10 @@ module fcc_window__win_lok__16(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_lok__16
+endmodule // fcc_window__win_lok__11_k7_668cf05b
 
 
-module fcc_window__win_lok__17(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__win_lok__17
-
-
-module fcc_window__win_lok__18(d,q,clock);
+module fcc_window__win_lok__12_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -45604,29 +44202,10 @@ module fcc_window__win_lok__18(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_lok__18
+endmodule // fcc_window__win_lok__12_k7_668cf05b
 
 
-module fcc_window__win_lok__19(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__win_lok__19
-
-
-module fcc_window__win_lok__2(d,q,clock);
+module fcc_window__win_lok__13_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -45642,29 +44221,10 @@ module fcc_window__win_lok__2(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_lok__2
+endmodule // fcc_window__win_lok__13_k7_668cf05b
 
 
-module fcc_window__win_lok__20(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__win_lok__20
-
-
-module fcc_window__win_lok__3(d,q,clock);
+module fcc_window__win_lok__14_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -45680,29 +44240,10 @@ module fcc_window__win_lok__3(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_lok__3
+endmodule // fcc_window__win_lok__14_k7_668cf05b
 
 
-module fcc_window__win_lok__4(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__win_lok__4
-
-
-module fcc_window__win_lok__5(d,q,clock);
+module fcc_window__win_lok__15_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -45718,29 +44259,10 @@ module fcc_window__win_lok__5(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_lok__5
+endmodule // fcc_window__win_lok__15_k7_668cf05b
 
 
-module fcc_window__win_lok__6(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__win_lok__6
-
-
-module fcc_window__win_lok__7(d,q,clock);
+module fcc_window__win_lok__16_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -45756,29 +44278,10 @@ module fcc_window__win_lok__7(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_lok__7
+endmodule // fcc_window__win_lok__16_k7_668cf05b
 
 
-module fcc_window__win_lok__8(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__win_lok__8
-
-
-module fcc_window__win_lok__9(d,q,clock);
+module fcc_window__win_lok__17_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -45794,10 +44297,219 @@ module fcc_window__win_lok__9(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_lok__9
+endmodule // fcc_window__win_lok__17_k7_668cf05b
 
 
-module fcc_window__win_x__0(d,q,clock);
+module fcc_window__win_lok__18_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_lok__18_k7_668cf05b
+
+
+module fcc_window__win_lok__19_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_lok__19_k7_668cf05b
+
+
+module fcc_window__win_lok__2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_lok__2_k7_668cf05b
+
+
+module fcc_window__win_lok__20_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_lok__20_k7_668cf05b
+
+
+module fcc_window__win_lok__3_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_lok__3_k7_668cf05b
+
+
+module fcc_window__win_lok__4_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_lok__4_k7_668cf05b
+
+
+module fcc_window__win_lok__5_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_lok__5_k7_668cf05b
+
+
+module fcc_window__win_lok__6_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_lok__6_k7_668cf05b
+
+
+module fcc_window__win_lok__7_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_lok__7_k7_668cf05b
+
+
+module fcc_window__win_lok__8_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_lok__8_k7_668cf05b
+
+
+module fcc_window__win_lok__9_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_lok__9_k7_668cf05b
+
+
+module fcc_window__win_x__0_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -45813,29 +44525,10 @@ module fcc_window__win_x__0(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_x__0
+endmodule // fcc_window__win_x__0_k7_668cf05b
 
 
-module fcc_window__win_x__1(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__win_x__1
-
-
-module fcc_window__win_x__10(d,q,clock);
+module fcc_window__win_x__1_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -45851,29 +44544,10 @@ module fcc_window__win_x__10(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_x__10
+endmodule // fcc_window__win_x__1_k7_668cf05b
 
 
-module fcc_window__win_x__11(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__win_x__11
-
-
-module fcc_window__win_x__12(d,q,clock);
+module fcc_window__win_x__10_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -45889,29 +44563,10 @@ module fcc_window__win_x__12(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_x__12
+endmodule // fcc_window__win_x__10_k7_668cf05b
 
 
-module fcc_window__win_x__13(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__win_x__13
-
-
-module fcc_window__win_x__14(d,q,clock);
+module fcc_window__win_x__11_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -45927,29 +44582,10 @@ module fcc_window__win_x__14(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_x__14
+endmodule // fcc_window__win_x__11_k7_668cf05b
 
 
-module fcc_window__win_x__15(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__win_x__15
-
-
-module fcc_window__win_x__16(d,q,clock);
+module fcc_window__win_x__12_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -45965,29 +44601,10 @@ module fcc_window__win_x__16(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_x__16
+endmodule // fcc_window__win_x__12_k7_668cf05b
 
 
-module fcc_window__win_x__17(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__win_x__17
-
-
-module fcc_window__win_x__18(d,q,clock);
+module fcc_window__win_x__13_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -46003,29 +44620,10 @@ module fcc_window__win_x__18(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_x__18
+endmodule // fcc_window__win_x__13_k7_668cf05b
 
 
-module fcc_window__win_x__19(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__win_x__19
-
-
-module fcc_window__win_x__2(d,q,clock);
+module fcc_window__win_x__14_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -46041,29 +44639,10 @@ module fcc_window__win_x__2(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_x__2
+endmodule // fcc_window__win_x__14_k7_668cf05b
 
 
-module fcc_window__win_x__20(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__win_x__20
-
-
-module fcc_window__win_x__3(d,q,clock);
+module fcc_window__win_x__15_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -46079,29 +44658,10 @@ module fcc_window__win_x__3(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_x__3
+endmodule // fcc_window__win_x__15_k7_668cf05b
 
 
-module fcc_window__win_x__4(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__win_x__4
-
-
-module fcc_window__win_x__5(d,q,clock);
+module fcc_window__win_x__16_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -46117,29 +44677,10 @@ module fcc_window__win_x__5(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_x__5
+endmodule // fcc_window__win_x__16_k7_668cf05b
 
 
-module fcc_window__win_x__6(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__win_x__6
-
-
-module fcc_window__win_x__7(d,q,clock);
+module fcc_window__win_x__17_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -46155,29 +44696,10 @@ module fcc_window__win_x__7(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_x__7
+endmodule // fcc_window__win_x__17_k7_668cf05b
 
 
-module fcc_window__win_x__8(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__win_x__8
-
-
-module fcc_window__win_x__9(d,q,clock);
+module fcc_window__win_x__18_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -46193,29 +44715,10 @@ module fcc_window__win_x__9(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_x__9
+endmodule // fcc_window__win_x__18_k7_668cf05b
 
 
-module fcc_window__win_y__0(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__win_y__0
-
-
-module fcc_window__win_y__1(d,q,clock);
+module fcc_window__win_x__19_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -46231,29 +44734,10 @@ module fcc_window__win_y__1(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_y__1
+endmodule // fcc_window__win_x__19_k7_668cf05b
 
 
-module fcc_window__win_y__10(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__win_y__10
-
-
-module fcc_window__win_y__11(d,q,clock);
+module fcc_window__win_x__2_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -46269,29 +44753,10 @@ module fcc_window__win_y__11(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_y__11
+endmodule // fcc_window__win_x__2_k7_668cf05b
 
 
-module fcc_window__win_y__12(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__win_y__12
-
-
-module fcc_window__win_y__13(d,q,clock);
+module fcc_window__win_x__20_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -46307,29 +44772,10 @@ module fcc_window__win_y__13(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_y__13
+endmodule // fcc_window__win_x__20_k7_668cf05b
 
 
-module fcc_window__win_y__14(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__win_y__14
-
-
-module fcc_window__win_y__15(d,q,clock);
+module fcc_window__win_x__3_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -46345,29 +44791,10 @@ module fcc_window__win_y__15(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_y__15
+endmodule // fcc_window__win_x__3_k7_668cf05b
 
 
-module fcc_window__win_y__16(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__win_y__16
-
-
-module fcc_window__win_y__17(d,q,clock);
+module fcc_window__win_x__4_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -46383,29 +44810,10 @@ module fcc_window__win_y__17(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_y__17
+endmodule // fcc_window__win_x__4_k7_668cf05b
 
 
-module fcc_window__win_y__18(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__win_y__18
-
-
-module fcc_window__win_y__19(d,q,clock);
+module fcc_window__win_x__5_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -46421,29 +44829,10 @@ module fcc_window__win_y__19(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_y__19
+endmodule // fcc_window__win_x__5_k7_668cf05b
 
 
-module fcc_window__win_y__2(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__win_y__2
-
-
-module fcc_window__win_y__20(d,q,clock);
+module fcc_window__win_x__6_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -46459,29 +44848,10 @@ module fcc_window__win_y__20(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_y__20
+endmodule // fcc_window__win_x__6_k7_668cf05b
 
 
-module fcc_window__win_y__3(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__win_y__3
-
-
-module fcc_window__win_y__4(d,q,clock);
+module fcc_window__win_x__7_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -46497,29 +44867,10 @@ module fcc_window__win_y__4(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_y__4
+endmodule // fcc_window__win_x__7_k7_668cf05b
 
 
-module fcc_window__win_y__5(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__win_y__5
-
-
-module fcc_window__win_y__6(d,q,clock);
+module fcc_window__win_x__8_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -46535,29 +44886,10 @@ module fcc_window__win_y__6(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_y__6
+endmodule // fcc_window__win_x__8_k7_668cf05b
 
 
-module fcc_window__win_y__7(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__win_y__7
-
-
-module fcc_window__win_y__8(d,q,clock);
+module fcc_window__win_x__9_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -46573,29 +44905,10 @@ module fcc_window__win_y__8(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_y__8
+endmodule // fcc_window__win_x__9_k7_668cf05b
 
 
-module fcc_window__win_y__9(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__win_y__9
-
-
-module fcc_window__win_z__0(d,q,clock);
+module fcc_window__win_y__0_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -46611,29 +44924,10 @@ module fcc_window__win_z__0(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_z__0
+endmodule // fcc_window__win_y__0_k7_668cf05b
 
 
-module fcc_window__win_z__1(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__win_z__1
-
-
-module fcc_window__win_z__10(d,q,clock);
+module fcc_window__win_y__1_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -46649,29 +44943,10 @@ module fcc_window__win_z__10(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_z__10
+endmodule // fcc_window__win_y__1_k7_668cf05b
 
 
-module fcc_window__win_z__11(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__win_z__11
-
-
-module fcc_window__win_z__12(d,q,clock);
+module fcc_window__win_y__10_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -46687,29 +44962,10 @@ module fcc_window__win_z__12(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_z__12
+endmodule // fcc_window__win_y__10_k7_668cf05b
 
 
-module fcc_window__win_z__13(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__win_z__13
-
-
-module fcc_window__win_z__14(d,q,clock);
+module fcc_window__win_y__11_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -46725,29 +44981,10 @@ module fcc_window__win_z__14(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_z__14
+endmodule // fcc_window__win_y__11_k7_668cf05b
 
 
-module fcc_window__win_z__15(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__win_z__15
-
-
-module fcc_window__win_z__16(d,q,clock);
+module fcc_window__win_y__12_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -46763,29 +45000,10 @@ module fcc_window__win_z__16(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_z__16
+endmodule // fcc_window__win_y__12_k7_668cf05b
 
 
-module fcc_window__win_z__17(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__win_z__17
-
-
-module fcc_window__win_z__18(d,q,clock);
+module fcc_window__win_y__13_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -46801,29 +45019,10 @@ module fcc_window__win_z__18(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_z__18
+endmodule // fcc_window__win_y__13_k7_668cf05b
 
 
-module fcc_window__win_z__19(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__win_z__19
-
-
-module fcc_window__win_z__2(d,q,clock);
+module fcc_window__win_y__14_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -46839,29 +45038,10 @@ module fcc_window__win_z__2(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_z__2
+endmodule // fcc_window__win_y__14_k7_668cf05b
 
 
-module fcc_window__win_z__20(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__win_z__20
-
-
-module fcc_window__win_z__3(d,q,clock);
+module fcc_window__win_y__15_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -46877,29 +45057,10 @@ module fcc_window__win_z__3(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_z__3
+endmodule // fcc_window__win_y__15_k7_668cf05b
 
 
-module fcc_window__win_z__4(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__win_z__4
-
-
-module fcc_window__win_z__5(d,q,clock);
+module fcc_window__win_y__16_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -46915,29 +45076,10 @@ module fcc_window__win_z__5(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_z__5
+endmodule // fcc_window__win_y__16_k7_668cf05b
 
 
-module fcc_window__win_z__6(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__win_z__6
-
-
-module fcc_window__win_z__7(d,q,clock);
+module fcc_window__win_y__17_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -46953,29 +45095,10 @@ module fcc_window__win_z__7(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_z__7
+endmodule // fcc_window__win_y__17_k7_668cf05b
 
 
-module fcc_window__win_z__8(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__win_z__8
-
-
-module fcc_window__win_z__9(d,q,clock);
+module fcc_window__win_y__18_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -46991,5 +45114,594 @@ module fcc_window__win_z__9(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__win_z__9
+endmodule // fcc_window__win_y__18_k7_668cf05b
+
+
+module fcc_window__win_y__19_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_y__19_k7_668cf05b
+
+
+module fcc_window__win_y__2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_y__2_k7_668cf05b
+
+
+module fcc_window__win_y__20_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_y__20_k7_668cf05b
+
+
+module fcc_window__win_y__3_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_y__3_k7_668cf05b
+
+
+module fcc_window__win_y__4_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_y__4_k7_668cf05b
+
+
+module fcc_window__win_y__5_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_y__5_k7_668cf05b
+
+
+module fcc_window__win_y__6_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_y__6_k7_668cf05b
+
+
+module fcc_window__win_y__7_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_y__7_k7_668cf05b
+
+
+module fcc_window__win_y__8_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_y__8_k7_668cf05b
+
+
+module fcc_window__win_y__9_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_y__9_k7_668cf05b
+
+
+module fcc_window__win_z__0_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_z__0_k7_668cf05b
+
+
+module fcc_window__win_z__1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_z__1_k7_668cf05b
+
+
+module fcc_window__win_z__10_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_z__10_k7_668cf05b
+
+
+module fcc_window__win_z__11_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_z__11_k7_668cf05b
+
+
+module fcc_window__win_z__12_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_z__12_k7_668cf05b
+
+
+module fcc_window__win_z__13_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_z__13_k7_668cf05b
+
+
+module fcc_window__win_z__14_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_z__14_k7_668cf05b
+
+
+module fcc_window__win_z__15_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_z__15_k7_668cf05b
+
+
+module fcc_window__win_z__16_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_z__16_k7_668cf05b
+
+
+module fcc_window__win_z__17_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_z__17_k7_668cf05b
+
+
+module fcc_window__win_z__18_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_z__18_k7_668cf05b
+
+
+module fcc_window__win_z__19_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_z__19_k7_668cf05b
+
+
+module fcc_window__win_z__2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_z__2_k7_668cf05b
+
+
+module fcc_window__win_z__20_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_z__20_k7_668cf05b
+
+
+module fcc_window__win_z__3_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_z__3_k7_668cf05b
+
+
+module fcc_window__win_z__4_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_z__4_k7_668cf05b
+
+
+module fcc_window__win_z__5_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_z__5_k7_668cf05b
+
+
+module fcc_window__win_z__6_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_z__6_k7_668cf05b
+
+
+module fcc_window__win_z__7_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_z__7_k7_668cf05b
+
+
+module fcc_window__win_z__8_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_z__8_k7_668cf05b
+
+
+module fcc_window__win_z__9_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__win_z__9_k7_668cf05b
 `default_nettype wire

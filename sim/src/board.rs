@@ -551,7 +551,7 @@ impl VirtualBoard {
 /// (`fcc_rtl::vivado::dma_length_width`).
 pub fn build_expect(p: &fcc_params::FccParams) -> Result<fcc_driver::BuildExpect, SimError> {
     let gen = fcc_rtl::generate(p)?;
-    let ports = fcc_rtl::vivado::top_ports(&gen.verilog);
+    let ports = fcc_rtl::vivado::top_ports(&gen.verilog, &fcc_rtl::top_module(p));
     Ok(fcc_driver::BuildExpect {
         hash: fcc_rtl::regmap::hash_value(p),
         dma_length_bits: fcc_rtl::vivado::dma_length_width(p, &ports)?,
