@@ -229,6 +229,21 @@ impl<H: Hal> Driver<H> {
             ));
         }
         let pixels = build.rows_max as usize * build.cols_max as usize;
+        // The build's largest frame must fit the DMA's length registers;
+        // refused here rather than at the first large frame.
+        let max = (1usize << expect.dma_length_bits) - 1;
+        for (channel, bytes) in [
+            (Channel::Mm2s, pixels * PIXEL_BYTES),
+            (Channel::S2mm, label_buffer_bytes(pixels)),
+        ] {
+            if bytes > max {
+                return Err(Error::TooLong {
+                    channel,
+                    bytes,
+                    length_bits: expect.dma_length_bits,
+                });
+            }
+        }
         let tx = hal.alloc_dma(round_up(pixels * PIXEL_BYTES))?;
         let rx = hal.alloc_dma(round_up(label_buffer_bytes(pixels)))?;
         // The power-on run values (the build's), or what the last program

@@ -214,22 +214,15 @@ fn dma_reset_that_never_ends_is_a_clear_error() {
 }
 
 #[test]
-fn frame_too_long_for_the_dma_length_register_is_refused() {
-    // 16 x 256 x 8 bytes = 32 KiB > 2^12 - 1.
-    let mut d = Driver::open(
+fn build_whose_largest_frame_exceeds_the_dma_length_register_is_refused_at_open() {
+    // The build's 16 x 256 frame: 16 x 256 x 8 bytes = 32 KiB > 2^12 - 1.
+    let e = open_err(
         fake(4),
         &BuildExpect {
             dma_length_bits: 12,
             ..expect()
         },
-    )
-    .unwrap();
-    let run = d.defaults();
-    let mut labels = vec![0; 4096];
-    let pts = vec![None; 4096];
-    let e = d
-        .run_frame(&run, Pixels::Points(&pts), &mut labels)
-        .unwrap_err();
+    );
     assert!(
         matches!(
             e,
@@ -241,6 +234,18 @@ fn frame_too_long_for_the_dma_length_register_is_refused() {
         ),
         "{e}"
     );
+    assert!(e.to_string().contains("c_sg_length_width"), "{e}");
+    // 2^15 - 1 < 32768 <= 2^16 - 1: one bit short is refused, the exact width opens.
+    for (bits, ok) in [(15, false), (16, true)] {
+        let r = Driver::open(
+            fake(4),
+            &BuildExpect {
+                dma_length_bits: bits,
+                ..expect()
+            },
+        );
+        assert_eq!(r.is_ok(), ok, "{bits} bits");
+    }
 }
 
 #[test]
