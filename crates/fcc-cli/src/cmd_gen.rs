@@ -10,7 +10,7 @@ use fcc_rtl::{Layout, WriteOptions};
 
 use crate::model_args::HwArgs;
 
-fn parse_board(s: &str) -> Result<Board, String> {
+pub(crate) fn parse_board(s: &str) -> Result<Board, String> {
     Board::from_name(s)
 }
 
