@@ -8901,865 +8901,624 @@ module fcc_merge_table_k7_668cf05b(clk,rst,jv,ja,jb,jsame,jtake,init_busy,union_
     input wire  [3:0] gear_used;
     output reg  [15:0] clusters;
 
-    // Constant declarations
-    localparam  m_union = 2'b0;
-    localparam  m_init = 2'b1;
-    localparam  m_flat = 2'b10;
-    localparam  zero16 = 16'h0;
-    localparam  one16 = 16'h1;
-    localparam  two16 = 16'h2;
-    localparam  zero17 = 17'b0;
-    localparam  one17 = 17'b1;
-    localparam  zero4 = 4'h0;
-    localparam  six4 = 4'h6;
-    localparam  one4 = 4'h1;
-    localparam  last_word = 17'b111111111111111;
+    // Enums
+    localparam MergeMode$Init = 0;
+    localparam MergeMode$Union = 1;
+    localparam MergeMode$Flatten = 2;
 
     // Stub signals
-    reg  t_ram$clk;
-    reg  t_ram$read_en;
-    reg  [15:0] t_ram$read_addr;
-    wire  [15:0] t_ram$read_data;
-    reg  t_ram$write_en;
-    reg  [15:0] t_ram$write_addr;
-    reg  [15:0] t_ram$write_data;
-    reg  r_ram$clk;
-    reg  r_ram$read_en;
-    reg  [15:0] r_ram$read_addr;
-    wire  r_ram$read_data;
-    reg  r_ram$write_en;
-    reg  [15:0] r_ram$write_addr;
-    reg  r_ram$write_data;
-    reg  c_ram$clk;
-    reg  c_ram$read_en;
-    reg  [15:0] c_ram$read_addr;
-    wire  [15:0] c_ram$read_data;
-    reg  c_ram$write_en;
-    reg  [15:0] c_ram$write_addr;
-    reg  [15:0] c_ram$write_data;
     reg  [1:0] mode$d;
     wire  [1:0] mode$q;
     reg  mode$clock;
-    reg  [16:0] ic$d;
-    wire  [16:0] ic$q;
-    reg  ic$clock;
-    reg  njv$d;
-    wire  njv$q;
-    reg  njv$clock;
-    reg  [15:0] nja$d;
-    wire  [15:0] nja$q;
-    reg  nja$clock;
-    reg  [15:0] njb$d;
-    wire  [15:0] njb$q;
-    reg  njb$clock;
-    reg  njs$d;
-    wire  njs$q;
-    reg  njs$clock;
-    reg  busy$d;
-    wire  busy$q;
-    reg  busy$clock;
-    reg  par$d;
-    wire  par$q;
-    reg  par$clock;
-    reg  [15:0] x0$d;
-    wire  [15:0] x0$q;
-    reg  x0$clock;
-    reg  [15:0] x1$d;
-    wire  [15:0] x1$q;
-    reg  x1$clock;
-    reg  d0$d;
-    wire  d0$q;
-    reg  d0$clock;
-    reg  d1$d;
-    wire  d1$q;
-    reg  d1$clock;
-    reg  second$d;
-    wire  second$q;
-    reg  second$clock;
-    reg  ldc$d;
-    wire  ldc$q;
-    reg  ldc$clock;
-    reg  [15:0] pend$d;
-    wire  [15:0] pend$q;
-    reg  pend$clock;
-    reg  [15:0] cr$d;
-    wire  [15:0] cr$q;
-    reg  cr$clock;
-    reg  i1v$d;
-    wire  i1v$q;
-    reg  i1v$clock;
-    reg  i2v$d;
-    wire  i2v$q;
-    reg  i2v$clock;
-    reg  wq_en$d;
-    wire  wq_en$q;
-    reg  wq_en$clock;
-    reg  [15:0] wq_addr$d;
-    wire  [15:0] wq_addr$q;
-    reg  wq_addr$clock;
-    reg  [15:0] wq_data$d;
-    wire  [15:0] wq_data$q;
-    reg  wq_data$clock;
-    reg  [15:0] wq2_data$d;
-    wire  [15:0] wq2_data$q;
-    reg  wq2_data$clock;
-    reg  [15:0] rq$d;
-    wire  [15:0] rq$q;
-    reg  rq$clock;
-    reg  rq_en$d;
-    wire  rq_en$q;
-    reg  rq_en$clock;
-    reg  fw$d;
-    wire  fw$q;
-    reg  fw$clock;
-    reg  [16:0] fl$d;
-    wire  [16:0] fl$q;
-    reg  fl$clock;
-    reg  [3:0] infl$d;
-    wire  [3:0] infl$q;
-    reg  infl$clock;
-    reg  room$d;
-    wire  room$q;
-    reg  room$clock;
-    reg  more$d;
-    wire  more$q;
-    reg  more$clock;
-    reg  f1v$d;
-    wire  f1v$q;
-    reg  f1v$clock;
-    reg  [15:0] f1l$d;
-    wire  [15:0] f1l$q;
-    reg  f1l$clock;
-    reg  f2v$d;
-    wire  f2v$q;
-    reg  f2v$clock;
-    reg  [15:0] f2l$d;
-    wire  [15:0] f2l$q;
-    reg  f2l$clock;
-    reg  [15:0] lm1$d;
-    wire  [15:0] lm1$q;
-    reg  lm1$clock;
-    reg  [15:0] lm2$d;
-    wire  [15:0] lm2$q;
-    reg  lm2$clock;
-    reg  f3v$d;
-    wire  f3v$q;
-    reg  f3v$clock;
-    reg  [15:0] f3l$d;
-    wire  [15:0] f3l$q;
-    reg  f3l$clock;
-    reg  f3root$d;
-    wire  f3root$q;
-    reg  f3root$clock;
-    reg  [15:0] f3rv$d;
-    wire  [15:0] f3rv$q;
-    reg  f3rv$clock;
-    reg  f3d1$d;
-    wire  f3d1$q;
-    reg  f3d1$clock;
-    reg  f3d2$d;
-    wire  f3d2$q;
-    reg  f3d2$clock;
-    reg  f4v$d;
-    wire  f4v$q;
-    reg  f4v$clock;
-    reg  [15:0] f4l$d;
-    wire  [15:0] f4l$q;
-    reg  f4l$clock;
-    reg  f4root$d;
-    wire  f4root$q;
-    reg  f4root$clock;
-    reg  [15:0] f4rv$d;
-    wire  [15:0] f4rv$q;
-    reg  f4rv$clock;
-    reg  f4d1$d;
-    wire  f4d1$q;
-    reg  f4d1$clock;
-    reg  f4d2$d;
-    wire  f4d2$q;
-    reg  f4d2$clock;
-    reg  [15:0] ncl$d;
-    wire  [15:0] ncl$q;
-    reg  ncl$clock;
-    reg  [15:0] lastv$d;
-    wire  [15:0] lastv$q;
-    reg  lastv$clock;
-    reg  [15:0] lastv2$d;
-    wire  [15:0] lastv2$q;
-    reg  lastv2$clock;
+    reg  table_init$clk;
+    reg  table_init$rst;
+    reg  table_init$active;
+    wire  [15:0] table_init$write_addr;
+    wire  table_init$done;
+    reg  union_engine$clk;
+    reg  union_engine$rst;
+    reg  union_engine$active;
+    reg  union_engine$join_valid;
+    reg  [15:0] union_engine$join_a;
+    reg  [15:0] union_engine$join_b;
+    reg  union_engine$join_same;
+    wire  union_engine$join_take;
+    reg  union_engine$word_root;
+    reg  [15:0] union_engine$word_parent;
+    wire  union_engine$read_en;
+    wire  [15:0] union_engine$read_addr;
+    wire  union_engine$link_en;
+    wire  [15:0] union_engine$link_addr;
+    wire  [15:0] union_engine$link_data;
+    wire  union_engine$idle;
+    reg  flatten$clk;
+    reg  flatten$rst;
+    reg  flatten$active;
+    reg  flatten$start;
+    wire  flatten$done;
+    reg  [16:0] flatten$provisional;
+    reg  [3:0] flatten$gear_used;
+    reg  flatten$word_root;
+    reg  [15:0] flatten$word_parent;
+    wire  flatten$read_en;
+    wire  [15:0] flatten$read_addr;
+    wire  flatten$write_en;
+    wire  [15:0] flatten$write_addr;
+    wire  flatten$out_valid;
+    wire  [15:0] flatten$out_label;
+    wire  [15:0] flatten$clusters;
+    reg  ports$clk;
+    reg  ports$rst;
+    reg  ports$init_active;
+    reg  ports$flatten_active;
+    reg  [15:0] ports$init_write_addr;
+    reg  ports$union_read_en;
+    reg  [15:0] ports$union_read_addr;
+    reg  ports$link_en;
+    reg  [15:0] ports$link_addr;
+    reg  [15:0] ports$link_data;
+    reg  ports$flatten_read_en;
+    reg  [15:0] ports$flatten_read_addr;
+    reg  ports$flatten_write_en;
+    reg  [15:0] ports$flatten_write_addr;
+    wire  ports$word_root;
+    wire  [15:0] ports$word_parent;
 
     // Local signals
-    reg  root;
-    reg  [15:0] parent;
-    reg  cont;
-    reg  found;
-    reg  sd;
-    reg  od;
-    reg  link;
-    reg  start;
-    reg  [15:0] lo;
-    reg  [15:0] hi;
-    reg  re;
-    reg  t_we;
-    reg  [15:0] t_waddr;
-    reg  [15:0] t_wdata;
-    reg  r_wdata;
-    reg  [15:0] raddr;
-    reg  issue;
-    reg  [15:0] val;
+    reg  init_active;
+    reg  union_active;
+    reg  flatten_active;
 
     // Sub module instances
-    fcc_merge_table__t_ram_k7_668cf05b t_ram(
-        .clk(t_ram$clk),
-        .read_en(t_ram$read_en),
-        .read_addr(t_ram$read_addr),
-        .read_data(t_ram$read_data),
-        .write_en(t_ram$write_en),
-        .write_addr(t_ram$write_addr),
-        .write_data(t_ram$write_data)
-    );
-    fcc_merge_table__r_ram_k7_668cf05b r_ram(
-        .clk(r_ram$clk),
-        .read_en(r_ram$read_en),
-        .read_addr(r_ram$read_addr),
-        .read_data(r_ram$read_data),
-        .write_en(r_ram$write_en),
-        .write_addr(r_ram$write_addr),
-        .write_data(r_ram$write_data)
-    );
-    fcc_merge_table__c_ram_k7_668cf05b c_ram(
-        .clk(c_ram$clk),
-        .read_en(c_ram$read_en),
-        .read_addr(c_ram$read_addr),
-        .read_data(c_ram$read_data),
-        .write_en(c_ram$write_en),
-        .write_addr(c_ram$write_addr),
-        .write_data(c_ram$write_data)
-    );
     fcc_merge_table__mode_k7_668cf05b mode(
         .d(mode$d),
         .q(mode$q),
         .clock(mode$clock)
     );
-    fcc_merge_table__ic_k7_668cf05b ic(
-        .d(ic$d),
-        .q(ic$q),
-        .clock(ic$clock)
+    fcc_merge_table__table_init_k7_668cf05b table_init(
+        .clk(table_init$clk),
+        .rst(table_init$rst),
+        .active(table_init$active),
+        .write_addr(table_init$write_addr),
+        .done(table_init$done)
     );
-    fcc_merge_table__njv_k7_668cf05b njv(
-        .d(njv$d),
-        .q(njv$q),
-        .clock(njv$clock)
+    fcc_merge_table__union_engine_k7_668cf05b union_engine(
+        .clk(union_engine$clk),
+        .rst(union_engine$rst),
+        .active(union_engine$active),
+        .join_valid(union_engine$join_valid),
+        .join_a(union_engine$join_a),
+        .join_b(union_engine$join_b),
+        .join_same(union_engine$join_same),
+        .join_take(union_engine$join_take),
+        .word_root(union_engine$word_root),
+        .word_parent(union_engine$word_parent),
+        .read_en(union_engine$read_en),
+        .read_addr(union_engine$read_addr),
+        .link_en(union_engine$link_en),
+        .link_addr(union_engine$link_addr),
+        .link_data(union_engine$link_data),
+        .idle(union_engine$idle)
     );
-    fcc_merge_table__nja_k7_668cf05b nja(
-        .d(nja$d),
-        .q(nja$q),
-        .clock(nja$clock)
+    fcc_merge_table__flatten_k7_668cf05b flatten(
+        .clk(flatten$clk),
+        .rst(flatten$rst),
+        .active(flatten$active),
+        .start(flatten$start),
+        .done(flatten$done),
+        .provisional(flatten$provisional),
+        .gear_used(flatten$gear_used),
+        .word_root(flatten$word_root),
+        .word_parent(flatten$word_parent),
+        .read_en(flatten$read_en),
+        .read_addr(flatten$read_addr),
+        .write_en(flatten$write_en),
+        .write_addr(flatten$write_addr),
+        .out_valid(flatten$out_valid),
+        .out_label(flatten$out_label),
+        .clusters(flatten$clusters)
     );
-    fcc_merge_table__njb_k7_668cf05b njb(
-        .d(njb$d),
-        .q(njb$q),
-        .clock(njb$clock)
-    );
-    fcc_merge_table__njs_k7_668cf05b njs(
-        .d(njs$d),
-        .q(njs$q),
-        .clock(njs$clock)
-    );
-    fcc_merge_table__busy_k7_668cf05b busy(
-        .d(busy$d),
-        .q(busy$q),
-        .clock(busy$clock)
-    );
-    fcc_merge_table__par_k7_668cf05b par(
-        .d(par$d),
-        .q(par$q),
-        .clock(par$clock)
-    );
-    fcc_merge_table__x0_k7_668cf05b x0(
-        .d(x0$d),
-        .q(x0$q),
-        .clock(x0$clock)
-    );
-    fcc_merge_table__x1_k7_668cf05b x1(
-        .d(x1$d),
-        .q(x1$q),
-        .clock(x1$clock)
-    );
-    fcc_merge_table__d0_k7_668cf05b d0(
-        .d(d0$d),
-        .q(d0$q),
-        .clock(d0$clock)
-    );
-    fcc_merge_table__d1_k7_668cf05b d1(
-        .d(d1$d),
-        .q(d1$q),
-        .clock(d1$clock)
-    );
-    fcc_merge_table__second_k7_668cf05b second(
-        .d(second$d),
-        .q(second$q),
-        .clock(second$clock)
-    );
-    fcc_merge_table__ldc_k7_668cf05b ldc(
-        .d(ldc$d),
-        .q(ldc$q),
-        .clock(ldc$clock)
-    );
-    fcc_merge_table__pend_k7_668cf05b pend(
-        .d(pend$d),
-        .q(pend$q),
-        .clock(pend$clock)
-    );
-    fcc_merge_table__cr_k7_668cf05b cr(
-        .d(cr$d),
-        .q(cr$q),
-        .clock(cr$clock)
-    );
-    fcc_merge_table__i1v_k7_668cf05b i1v(
-        .d(i1v$d),
-        .q(i1v$q),
-        .clock(i1v$clock)
-    );
-    fcc_merge_table__i2v_k7_668cf05b i2v(
-        .d(i2v$d),
-        .q(i2v$q),
-        .clock(i2v$clock)
-    );
-    fcc_merge_table__wq_en_k7_668cf05b wq_en(
-        .d(wq_en$d),
-        .q(wq_en$q),
-        .clock(wq_en$clock)
-    );
-    fcc_merge_table__wq_addr_k7_668cf05b wq_addr(
-        .d(wq_addr$d),
-        .q(wq_addr$q),
-        .clock(wq_addr$clock)
-    );
-    fcc_merge_table__wq_data_k7_668cf05b wq_data(
-        .d(wq_data$d),
-        .q(wq_data$q),
-        .clock(wq_data$clock)
-    );
-    fcc_merge_table__wq2_data_k7_668cf05b wq2_data(
-        .d(wq2_data$d),
-        .q(wq2_data$q),
-        .clock(wq2_data$clock)
-    );
-    fcc_merge_table__rq_k7_668cf05b rq(
-        .d(rq$d),
-        .q(rq$q),
-        .clock(rq$clock)
-    );
-    fcc_merge_table__rq_en_k7_668cf05b rq_en(
-        .d(rq_en$d),
-        .q(rq_en$q),
-        .clock(rq_en$clock)
-    );
-    fcc_merge_table__fw_k7_668cf05b fw(
-        .d(fw$d),
-        .q(fw$q),
-        .clock(fw$clock)
-    );
-    fcc_merge_table__fl_k7_668cf05b fl(
-        .d(fl$d),
-        .q(fl$q),
-        .clock(fl$clock)
-    );
-    fcc_merge_table__infl_k7_668cf05b infl(
-        .d(infl$d),
-        .q(infl$q),
-        .clock(infl$clock)
-    );
-    fcc_merge_table__room_k7_668cf05b room(
-        .d(room$d),
-        .q(room$q),
-        .clock(room$clock)
-    );
-    fcc_merge_table__more_k7_668cf05b more(
-        .d(more$d),
-        .q(more$q),
-        .clock(more$clock)
-    );
-    fcc_merge_table__f1v_k7_668cf05b f1v(
-        .d(f1v$d),
-        .q(f1v$q),
-        .clock(f1v$clock)
-    );
-    fcc_merge_table__f1l_k7_668cf05b f1l(
-        .d(f1l$d),
-        .q(f1l$q),
-        .clock(f1l$clock)
-    );
-    fcc_merge_table__f2v_k7_668cf05b f2v(
-        .d(f2v$d),
-        .q(f2v$q),
-        .clock(f2v$clock)
-    );
-    fcc_merge_table__f2l_k7_668cf05b f2l(
-        .d(f2l$d),
-        .q(f2l$q),
-        .clock(f2l$clock)
-    );
-    fcc_merge_table__lm1_k7_668cf05b lm1(
-        .d(lm1$d),
-        .q(lm1$q),
-        .clock(lm1$clock)
-    );
-    fcc_merge_table__lm2_k7_668cf05b lm2(
-        .d(lm2$d),
-        .q(lm2$q),
-        .clock(lm2$clock)
-    );
-    fcc_merge_table__f3v_k7_668cf05b f3v(
-        .d(f3v$d),
-        .q(f3v$q),
-        .clock(f3v$clock)
-    );
-    fcc_merge_table__f3l_k7_668cf05b f3l(
-        .d(f3l$d),
-        .q(f3l$q),
-        .clock(f3l$clock)
-    );
-    fcc_merge_table__f3root_k7_668cf05b f3root(
-        .d(f3root$d),
-        .q(f3root$q),
-        .clock(f3root$clock)
-    );
-    fcc_merge_table__f3rv_k7_668cf05b f3rv(
-        .d(f3rv$d),
-        .q(f3rv$q),
-        .clock(f3rv$clock)
-    );
-    fcc_merge_table__f3d1_k7_668cf05b f3d1(
-        .d(f3d1$d),
-        .q(f3d1$q),
-        .clock(f3d1$clock)
-    );
-    fcc_merge_table__f3d2_k7_668cf05b f3d2(
-        .d(f3d2$d),
-        .q(f3d2$q),
-        .clock(f3d2$clock)
-    );
-    fcc_merge_table__f4v_k7_668cf05b f4v(
-        .d(f4v$d),
-        .q(f4v$q),
-        .clock(f4v$clock)
-    );
-    fcc_merge_table__f4l_k7_668cf05b f4l(
-        .d(f4l$d),
-        .q(f4l$q),
-        .clock(f4l$clock)
-    );
-    fcc_merge_table__f4root_k7_668cf05b f4root(
-        .d(f4root$d),
-        .q(f4root$q),
-        .clock(f4root$clock)
-    );
-    fcc_merge_table__f4rv_k7_668cf05b f4rv(
-        .d(f4rv$d),
-        .q(f4rv$q),
-        .clock(f4rv$clock)
-    );
-    fcc_merge_table__f4d1_k7_668cf05b f4d1(
-        .d(f4d1$d),
-        .q(f4d1$q),
-        .clock(f4d1$clock)
-    );
-    fcc_merge_table__f4d2_k7_668cf05b f4d2(
-        .d(f4d2$d),
-        .q(f4d2$q),
-        .clock(f4d2$clock)
-    );
-    fcc_merge_table__ncl_k7_668cf05b ncl(
-        .d(ncl$d),
-        .q(ncl$q),
-        .clock(ncl$clock)
-    );
-    fcc_merge_table__lastv_k7_668cf05b lastv(
-        .d(lastv$d),
-        .q(lastv$q),
-        .clock(lastv$clock)
-    );
-    fcc_merge_table__lastv2_k7_668cf05b lastv2(
-        .d(lastv2$d),
-        .q(lastv2$q),
-        .clock(lastv2$clock)
+    fcc_merge_table__ports_k7_668cf05b ports(
+        .clk(ports$clk),
+        .rst(ports$rst),
+        .init_active(ports$init_active),
+        .flatten_active(ports$flatten_active),
+        .init_write_addr(ports$init_write_addr),
+        .union_read_en(ports$union_read_en),
+        .union_read_addr(ports$union_read_addr),
+        .link_en(ports$link_en),
+        .link_addr(ports$link_addr),
+        .link_data(ports$link_data),
+        .flatten_read_en(ports$flatten_read_en),
+        .flatten_read_addr(ports$flatten_read_addr),
+        .flatten_write_en(ports$flatten_write_en),
+        .flatten_write_addr(ports$flatten_write_addr),
+        .word_root(ports$word_root),
+        .word_parent(ports$word_parent)
     );
 
     // Update code
     always @(*) begin
         mode$clock = clk;
-        ic$clock = clk;
-        njv$clock = clk;
-        nja$clock = clk;
-        njb$clock = clk;
-        njs$clock = clk;
-        busy$clock = clk;
-        par$clock = clk;
-        x0$clock = clk;
-        x1$clock = clk;
-        d0$clock = clk;
-        d1$clock = clk;
-        second$clock = clk;
-        ldc$clock = clk;
-        pend$clock = clk;
-        cr$clock = clk;
-        i1v$clock = clk;
-        i2v$clock = clk;
-        wq_en$clock = clk;
-        wq_addr$clock = clk;
-        wq_data$clock = clk;
-        wq2_data$clock = clk;
-        rq$clock = clk;
-        rq_en$clock = clk;
-        fw$clock = clk;
-        fl$clock = clk;
-        infl$clock = clk;
-        room$clock = clk;
-        more$clock = clk;
-        f1v$clock = clk;
-        f1l$clock = clk;
-        f2v$clock = clk;
-        f2l$clock = clk;
-        lm1$clock = clk;
-        lm2$clock = clk;
-        f3v$clock = clk;
-        f3l$clock = clk;
-        f3root$clock = clk;
-        f3rv$clock = clk;
-        f3d1$clock = clk;
-        f3d2$clock = clk;
-        f4v$clock = clk;
-        f4l$clock = clk;
-        f4root$clock = clk;
-        f4rv$clock = clk;
-        f4d1$clock = clk;
-        f4d2$clock = clk;
-        ncl$clock = clk;
-        lastv$clock = clk;
-        lastv2$clock = clk;
         mode$d = mode$q;
-        ic$d = ic$q;
-        njv$d = njv$q;
-        nja$d = nja$q;
-        njb$d = njb$q;
-        njs$d = njs$q;
-        busy$d = busy$q;
-        par$d = par$q;
-        x0$d = x0$q;
-        x1$d = x1$q;
-        d0$d = d0$q;
-        d1$d = d1$q;
-        second$d = second$q;
-        ldc$d = ldc$q;
-        pend$d = pend$q;
-        cr$d = cr$q;
-        i1v$d = i1v$q;
-        i2v$d = i2v$q;
-        wq_en$d = wq_en$q;
-        wq_addr$d = wq_addr$q;
-        wq_data$d = wq_data$q;
-        wq2_data$d = wq2_data$q;
-        rq$d = rq$q;
-        rq_en$d = rq_en$q;
-        fw$d = fw$q;
-        fl$d = fl$q;
-        infl$d = infl$q;
-        room$d = room$q;
-        more$d = more$q;
-        f1v$d = f1v$q;
-        f1l$d = f1l$q;
-        f2v$d = f2v$q;
-        f2l$d = f2l$q;
-        lm1$d = lm1$q;
-        lm2$d = lm2$q;
-        f3v$d = f3v$q;
-        f3l$d = f3l$q;
-        f3root$d = f3root$q;
-        f3rv$d = f3rv$q;
-        f3d1$d = f3d1$q;
-        f3d2$d = f3d2$q;
-        f4v$d = f4v$q;
-        f4l$d = f4l$q;
-        f4root$d = f4root$q;
-        f4rv$d = f4rv$q;
-        f4d1$d = f4d1$q;
-        f4d2$d = f4d2$q;
-        ncl$d = ncl$q;
-        lastv$d = lastv$q;
-        lastv2$d = lastv2$q;
-        t_ram$clk = clk;
-        r_ram$clk = clk;
-        c_ram$clk = clk;
-        root = r_ram$read_data;
-        parent = t_ram$read_data;
-        if (fw$q) begin
-            root = 1'b0;
-            parent = wq2_data$q;
-        end
-        lo = x0$q;
-        hi = x1$q;
-        if (x1$q < x0$q) begin
-            lo = x1$q;
-            hi = x0$q;
-        end
-        par$d = ~par$q;
-        t_we = 1'b0;
-        t_waddr = hi;
-        t_wdata = lo;
-        r_wdata = 1'b0;
-        re = 1'b0;
-        start = 1'b0;
-        link = 1'b0;
-        cont = 1'b0;
-        found = 1'b0;
-        jtake = jv & ~njv$q;
-        if (jtake) begin
-            njv$d = 1'b1;
-            nja$d = ja;
-            njb$d = jb;
-            njs$d = jsame;
-        end
-        sd = d0$q;
-        od = d1$q;
-        if (par$q) begin
-            sd = d1$q;
-            od = d0$q;
-        end
-        pend$d = nja$q;
-        if (njs$q) begin
-            pend$d = njb$q;
-        end
-        if (jtake) begin
-            pend$d = ja;
-            if (jsame) begin
-                pend$d = jb;
-            end
-        end
-        second$d = 1'b0;
-        ldc$d = 1'b0;
-        if (mode$q == m_union) begin
-            cont = i2v$q & ~root;
-            found = i2v$q & root;
-            link = busy$q & (sd | found) & od;
-            if (cont) begin
-                re = 1'b1;
-                if (par$q) begin
-                    x1$d = parent;
+        table_init$clk = clk;
+        union_engine$clk = clk;
+        flatten$clk = clk;
+        ports$clk = clk;
+        table_init$rst = rst;
+        union_engine$rst = rst;
+        flatten$rst = rst;
+        ports$rst = rst;
+        init_active = 1'b0;
+        union_active = 1'b0;
+        flatten_active = 1'b0;
+        case (mode$q)
+            MergeMode$Init:
+                begin
+                    init_active = 1'b1;
                 end
-                else begin
-                    x0$d = parent;
+            MergeMode$Union:
+                begin
+                    union_active = 1'b1;
                 end
-            end
-            if (found) begin
-                if (par$q) begin
-                    d1$d = 1'b1;
+            MergeMode$Flatten:
+                begin
+                    flatten_active = 1'b1;
                 end
-                else begin
-                    d0$d = 1'b1;
-                end
-            end
-            if (second$q) begin
-                re = 1'b1;
-            end
-            if (link) begin
-                t_we = x0$q != x1$q;
-                cr$d = lo;
-                busy$d = 1'b0;
-            end
-            if (ldc$q) begin
-                if (par$q) begin
-                    x1$d = cr$q;
-                end
-                else begin
-                    x0$d = cr$q;
-                end
-            end
-            start = njv$q & (~busy$q | link);
-            if (start) begin
-                njv$d = jtake;
-                busy$d = 1'b1;
-                re = 1'b1;
-                if (par$q) begin
-                    d1$d = 1'b0;
-                    x1$d = pend$q;
-                    d0$d = njs$q;
-                    x0$d = njb$q;
-                end
-                else begin
-                    d0$d = 1'b0;
-                    x0$d = pend$q;
-                    d1$d = njs$q;
-                    x1$d = njb$q;
-                end
-                ldc$d = njs$q;
-                if (~njs$q) begin
-                    second$d = 1'b1;
-                    pend$d = njb$q;
-                end
-            end
-        end
-        if (mode$q == m_init) begin
-            t_we = 1'b1;
-            t_waddr = ic$q[15:0];
-            r_wdata = 1'b1;
-            ic$d = ic$q + one17;
-            if (ic$q == last_word) begin
-                mode$d = m_union;
-            end
-        end
-        room$d = (infl$q + gear_used) <= six4;
-        issue = (mode$q == m_flat) & more$q & room$q;
-        more$d = fl$q <= provisional;
-        if (issue) begin
-            more$d = fl$q < provisional;
-        end
-        f1v$d = issue;
-        f1l$d = fl$q[15:0];
-        f2v$d = f1v$q;
-        f2l$d = f1l$q;
-        lm1$d = f1l$q - one16;
-        lm2$d = f1l$q - two16;
-        if (issue) begin
-            re = 1'b1;
-            fl$d = fl$q + one17;
-        end
-        if (mode$q == m_flat) begin
-            pend$d = fl$q[15:0];
-            if (issue) begin
-                pend$d = fl$q[15:0] + one16;
-            end
-        end
-        c_ram$read_en = f2v$q;
-        c_ram$read_addr = parent;
-        f3v$d = f2v$q;
-        f3l$d = f2l$q;
-        f3root$d = root;
-        f3rv$d = ncl$q + one16;
-        f3d1$d = parent == lm1$q;
-        f3d2$d = parent == lm2$q;
-        if (f2v$q) begin
-            t_we = 1'b1;
-            t_waddr = f2l$q;
-            r_wdata = 1'b1;
-            if (root) begin
-                ncl$d = ncl$q + one16;
-            end
-        end
-        f4v$d = f3v$q;
-        f4l$d = f3l$q;
-        f4root$d = f3root$q;
-        f4rv$d = f3rv$q;
-        f4d1$d = f3d1$q;
-        f4d2$d = f3d2$q;
-        val = c_ram$read_data;
-        if (f4d2$q) begin
-            val = lastv2$q;
-        end
-        if (f4d1$q) begin
-            val = lastv$q;
-        end
-        if (f4root$q) begin
-            val = f4rv$q;
-        end
-        c_ram$write_en = f4v$q;
-        c_ram$write_addr = f4l$q;
-        c_ram$write_data = val;
-        fv = f4v$q;
-        fval = val;
-        if (f4v$q) begin
-            lastv$d = val;
-            lastv2$d = lastv$q;
-        end
-        if (issue & ~f4v$q) begin
-            infl$d = infl$q + one4;
-        end
-        if (~issue & f4v$q) begin
-            infl$d = infl$q - one4;
-        end
-        if ((mode$q == m_flat) & ~more$q & (infl$q == zero4)) begin
-            mode$d = m_union;
+        endcase
+        if (table_init$done | flatten$done) begin
+            mode$d = MergeMode$Union;
         end
         if (flat_start) begin
-            mode$d = m_flat;
-            fl$d = one17;
-            pend$d = one16;
-            ncl$d = zero16;
-            infl$d = zero4;
-            more$d = provisional != zero17;
+            mode$d = MergeMode$Flatten;
         end
-        raddr = pend$q;
-        if (cont) begin
-            raddr = parent;
-        end
-        t_ram$read_en = re;
-        t_ram$read_addr = raddr;
-        t_ram$write_en = t_we;
-        t_ram$write_addr = t_waddr;
-        t_ram$write_data = t_wdata;
-        r_ram$read_en = re;
-        r_ram$read_addr = raddr;
-        r_ram$write_en = t_we;
-        r_ram$write_addr = t_waddr;
-        r_ram$write_data = r_wdata;
-        i1v$d = re & (mode$q == m_union);
-        i2v$d = i1v$q;
-        wq_en$d = t_we;
-        wq_addr$d = t_waddr;
-        wq_data$d = t_wdata;
-        wq2_data$d = wq_data$q;
-        rq$d = raddr;
-        rq_en$d = re;
-        fw$d = wq_en$q & rq_en$q & (wq_addr$q == rq$q);
-        init_busy = mode$q == m_init;
-        union_idle = ~busy$q & ~njv$q;
-        clusters = ncl$q;
         if (rst) begin
-            mode$d = m_init;
-            ic$d = zero17;
-            njv$d = 1'b0;
-            busy$d = 1'b0;
-            second$d = 1'b0;
-            ldc$d = 1'b0;
-            room$d = 1'b0;
-            i1v$d = 1'b0;
-            i2v$d = 1'b0;
-            wq_en$d = 1'b0;
-            rq_en$d = 1'b0;
-            fw$d = 1'b0;
-            f1v$d = 1'b0;
-            f2v$d = 1'b0;
-            f3v$d = 1'b0;
-            f4v$d = 1'b0;
-            infl$d = zero4;
-            par$d = 1'b0;
+            mode$d = MergeMode$Init;
         end
+        table_init$active = init_active;
+        union_engine$active = union_active;
+        flatten$active = flatten_active;
+        ports$init_active = init_active;
+        ports$flatten_active = flatten_active;
+        init_busy = init_active;
+        union_engine$join_valid = jv;
+        union_engine$join_a = ja;
+        union_engine$join_b = jb;
+        union_engine$join_same = jsame;
+        jtake = union_engine$join_take;
+        union_idle = union_engine$idle;
+        union_engine$word_root = ports$word_root;
+        union_engine$word_parent = ports$word_parent;
+        flatten$start = flat_start;
+        flatten$provisional = provisional;
+        flatten$gear_used = gear_used;
+        flatten$word_root = ports$word_root;
+        flatten$word_parent = ports$word_parent;
+        fv = flatten$out_valid;
+        fval = flatten$out_label;
+        clusters = flatten$clusters;
+        ports$init_write_addr = table_init$write_addr;
+        ports$union_read_en = union_engine$read_en;
+        ports$union_read_addr = union_engine$read_addr;
+        ports$link_en = union_engine$link_en;
+        ports$link_addr = union_engine$link_addr;
+        ports$link_data = union_engine$link_data;
+        ports$flatten_read_en = flatten$read_en;
+        ports$flatten_read_addr = flatten$read_addr;
+        ports$flatten_write_en = flatten$write_en;
+        ports$flatten_write_addr = flatten$write_addr;
     end
 
 endmodule // fcc_merge_table_k7_668cf05b
 
 
-module fcc_merge_table__busy_k7_668cf05b(d,q,clock);
+module fcc_merge_table__flatten_k7_668cf05b(clk,rst,active,start,done,provisional,gear_used,word_root,word_parent,read_en,read_addr,write_en,write_addr,out_valid,out_label,clusters);
 
     // Module arguments
-    input wire  d;
-    output reg  q;
+    input wire  clk;
+    input wire  rst;
+    input wire  active;
+    input wire  start;
+    output reg  done;
+    input wire  [16:0] provisional;
+    input wire  [3:0] gear_used;
+    input wire  word_root;
+    input wire  [15:0] word_parent;
+    output reg  read_en;
+    output reg  [15:0] read_addr;
+    output reg  write_en;
+    output reg  [15:0] write_addr;
+    output reg  out_valid;
+    output reg  [15:0] out_label;
+    output reg  [15:0] clusters;
+
+    // Constant declarations
+    localparam  gear_room = 4'h6;
+    localparam  zero4 = 4'h0;
+    localparam  one4 = 4'h1;
+    localparam  zero16 = 16'h0;
+    localparam  one16 = 16'h1;
+    localparam  two16 = 16'h2;
+    localparam  zero17 = 17'b0;
+    localparam  one17 = 17'b1;
+
+    // Stub signals
+    reg  compact_ram$clk;
+    reg  compact_ram$read_en;
+    reg  [15:0] compact_ram$read_addr;
+    wire  [15:0] compact_ram$read_data;
+    reg  compact_ram$write_en;
+    reg  [15:0] compact_ram$write_addr;
+    reg  [15:0] compact_ram$write_data;
+    reg  [16:0] next_label$d;
+    wire  [16:0] next_label$q;
+    reg  next_label$clock;
+    reg  [3:0] in_flight$d;
+    wire  [3:0] in_flight$q;
+    reg  in_flight$clock;
+    reg  has_room$d;
+    wire  has_room$q;
+    reg  has_room$clock;
+    reg  more_labels$d;
+    wire  more_labels$q;
+    reg  more_labels$clock;
+    reg  label_valid_s1$d;
+    wire  label_valid_s1$q;
+    reg  label_valid_s1$clock;
+    reg  [15:0] label_s1$d;
+    wire  [15:0] label_s1$q;
+    reg  label_s1$clock;
+    reg  label_valid_s2$d;
+    wire  label_valid_s2$q;
+    reg  label_valid_s2$clock;
+    reg  [15:0] label_s2$d;
+    wire  [15:0] label_s2$q;
+    reg  label_s2$clock;
+    reg  [15:0] label_minus1_s2$d;
+    wire  [15:0] label_minus1_s2$q;
+    reg  label_minus1_s2$clock;
+    reg  [15:0] label_minus2_s2$d;
+    wire  [15:0] label_minus2_s2$q;
+    reg  label_minus2_s2$clock;
+    reg  label_valid_s3$d;
+    wire  label_valid_s3$q;
+    reg  label_valid_s3$clock;
+    reg  [15:0] label_s3$d;
+    wire  [15:0] label_s3$q;
+    reg  label_s3$clock;
+    reg  is_root_s3$d;
+    wire  is_root_s3$q;
+    reg  is_root_s3$clock;
+    reg  [15:0] new_number_s3$d;
+    wire  [15:0] new_number_s3$q;
+    reg  new_number_s3$clock;
+    reg  parent_is_prev_s3$d;
+    wire  parent_is_prev_s3$q;
+    reg  parent_is_prev_s3$clock;
+    reg  parent_is_prev2_s3$d;
+    wire  parent_is_prev2_s3$q;
+    reg  parent_is_prev2_s3$clock;
+    reg  label_valid_s4$d;
+    wire  label_valid_s4$q;
+    reg  label_valid_s4$clock;
+    reg  [15:0] label_s4$d;
+    wire  [15:0] label_s4$q;
+    reg  label_s4$clock;
+    reg  is_root_s4$d;
+    wire  is_root_s4$q;
+    reg  is_root_s4$clock;
+    reg  [15:0] new_number_s4$d;
+    wire  [15:0] new_number_s4$q;
+    reg  new_number_s4$clock;
+    reg  parent_is_prev_s4$d;
+    wire  parent_is_prev_s4$q;
+    reg  parent_is_prev_s4$clock;
+    reg  parent_is_prev2_s4$d;
+    wire  parent_is_prev2_s4$q;
+    reg  parent_is_prev2_s4$clock;
+    reg  [15:0] cluster_count$d;
+    wire  [15:0] cluster_count$q;
+    reg  cluster_count$clock;
+    reg  [15:0] value_prev$d;
+    wire  [15:0] value_prev$q;
+    reg  value_prev$clock;
+    reg  [15:0] value_prev2$d;
+    wire  [15:0] value_prev2$q;
+    reg  value_prev2$clock;
+
+    // Local signals
+    reg  issue;
+    reg  [15:0] value;
+
+    // Sub module instances
+    fcc_merge_table__flatten__compact_ram_k7_668cf05b compact_ram(
+        .clk(compact_ram$clk),
+        .read_en(compact_ram$read_en),
+        .read_addr(compact_ram$read_addr),
+        .read_data(compact_ram$read_data),
+        .write_en(compact_ram$write_en),
+        .write_addr(compact_ram$write_addr),
+        .write_data(compact_ram$write_data)
+    );
+    fcc_merge_table__flatten__next_label_k7_668cf05b next_label(
+        .d(next_label$d),
+        .q(next_label$q),
+        .clock(next_label$clock)
+    );
+    fcc_merge_table__flatten__in_flight_k7_668cf05b in_flight(
+        .d(in_flight$d),
+        .q(in_flight$q),
+        .clock(in_flight$clock)
+    );
+    fcc_merge_table__flatten__has_room_k7_668cf05b has_room(
+        .d(has_room$d),
+        .q(has_room$q),
+        .clock(has_room$clock)
+    );
+    fcc_merge_table__flatten__more_labels_k7_668cf05b more_labels(
+        .d(more_labels$d),
+        .q(more_labels$q),
+        .clock(more_labels$clock)
+    );
+    fcc_merge_table__flatten__label_valid_s1_k7_668cf05b label_valid_s1(
+        .d(label_valid_s1$d),
+        .q(label_valid_s1$q),
+        .clock(label_valid_s1$clock)
+    );
+    fcc_merge_table__flatten__label_s1_k7_668cf05b label_s1(
+        .d(label_s1$d),
+        .q(label_s1$q),
+        .clock(label_s1$clock)
+    );
+    fcc_merge_table__flatten__label_valid_s2_k7_668cf05b label_valid_s2(
+        .d(label_valid_s2$d),
+        .q(label_valid_s2$q),
+        .clock(label_valid_s2$clock)
+    );
+    fcc_merge_table__flatten__label_s2_k7_668cf05b label_s2(
+        .d(label_s2$d),
+        .q(label_s2$q),
+        .clock(label_s2$clock)
+    );
+    fcc_merge_table__flatten__label_minus1_s2_k7_668cf05b label_minus1_s2(
+        .d(label_minus1_s2$d),
+        .q(label_minus1_s2$q),
+        .clock(label_minus1_s2$clock)
+    );
+    fcc_merge_table__flatten__label_minus2_s2_k7_668cf05b label_minus2_s2(
+        .d(label_minus2_s2$d),
+        .q(label_minus2_s2$q),
+        .clock(label_minus2_s2$clock)
+    );
+    fcc_merge_table__flatten__label_valid_s3_k7_668cf05b label_valid_s3(
+        .d(label_valid_s3$d),
+        .q(label_valid_s3$q),
+        .clock(label_valid_s3$clock)
+    );
+    fcc_merge_table__flatten__label_s3_k7_668cf05b label_s3(
+        .d(label_s3$d),
+        .q(label_s3$q),
+        .clock(label_s3$clock)
+    );
+    fcc_merge_table__flatten__is_root_s3_k7_668cf05b is_root_s3(
+        .d(is_root_s3$d),
+        .q(is_root_s3$q),
+        .clock(is_root_s3$clock)
+    );
+    fcc_merge_table__flatten__new_number_s3_k7_668cf05b new_number_s3(
+        .d(new_number_s3$d),
+        .q(new_number_s3$q),
+        .clock(new_number_s3$clock)
+    );
+    fcc_merge_table__flatten__parent_is_prev_s3_k7_668cf05b parent_is_prev_s3(
+        .d(parent_is_prev_s3$d),
+        .q(parent_is_prev_s3$q),
+        .clock(parent_is_prev_s3$clock)
+    );
+    fcc_merge_table__flatten__parent_is_prev2_s3_k7_668cf05b parent_is_prev2_s3(
+        .d(parent_is_prev2_s3$d),
+        .q(parent_is_prev2_s3$q),
+        .clock(parent_is_prev2_s3$clock)
+    );
+    fcc_merge_table__flatten__label_valid_s4_k7_668cf05b label_valid_s4(
+        .d(label_valid_s4$d),
+        .q(label_valid_s4$q),
+        .clock(label_valid_s4$clock)
+    );
+    fcc_merge_table__flatten__label_s4_k7_668cf05b label_s4(
+        .d(label_s4$d),
+        .q(label_s4$q),
+        .clock(label_s4$clock)
+    );
+    fcc_merge_table__flatten__is_root_s4_k7_668cf05b is_root_s4(
+        .d(is_root_s4$d),
+        .q(is_root_s4$q),
+        .clock(is_root_s4$clock)
+    );
+    fcc_merge_table__flatten__new_number_s4_k7_668cf05b new_number_s4(
+        .d(new_number_s4$d),
+        .q(new_number_s4$q),
+        .clock(new_number_s4$clock)
+    );
+    fcc_merge_table__flatten__parent_is_prev_s4_k7_668cf05b parent_is_prev_s4(
+        .d(parent_is_prev_s4$d),
+        .q(parent_is_prev_s4$q),
+        .clock(parent_is_prev_s4$clock)
+    );
+    fcc_merge_table__flatten__parent_is_prev2_s4_k7_668cf05b parent_is_prev2_s4(
+        .d(parent_is_prev2_s4$d),
+        .q(parent_is_prev2_s4$q),
+        .clock(parent_is_prev2_s4$clock)
+    );
+    fcc_merge_table__flatten__cluster_count_k7_668cf05b cluster_count(
+        .d(cluster_count$d),
+        .q(cluster_count$q),
+        .clock(cluster_count$clock)
+    );
+    fcc_merge_table__flatten__value_prev_k7_668cf05b value_prev(
+        .d(value_prev$d),
+        .q(value_prev$q),
+        .clock(value_prev$clock)
+    );
+    fcc_merge_table__flatten__value_prev2_k7_668cf05b value_prev2(
+        .d(value_prev2$d),
+        .q(value_prev2$q),
+        .clock(value_prev2$clock)
+    );
+
+    // Update code
+    always @(*) begin
+        next_label$clock = clk;
+        in_flight$clock = clk;
+        has_room$clock = clk;
+        more_labels$clock = clk;
+        label_valid_s1$clock = clk;
+        label_s1$clock = clk;
+        label_valid_s2$clock = clk;
+        label_s2$clock = clk;
+        label_minus1_s2$clock = clk;
+        label_minus2_s2$clock = clk;
+        label_valid_s3$clock = clk;
+        label_s3$clock = clk;
+        is_root_s3$clock = clk;
+        new_number_s3$clock = clk;
+        parent_is_prev_s3$clock = clk;
+        parent_is_prev2_s3$clock = clk;
+        label_valid_s4$clock = clk;
+        label_s4$clock = clk;
+        is_root_s4$clock = clk;
+        new_number_s4$clock = clk;
+        parent_is_prev_s4$clock = clk;
+        parent_is_prev2_s4$clock = clk;
+        cluster_count$clock = clk;
+        value_prev$clock = clk;
+        value_prev2$clock = clk;
+        next_label$d = next_label$q;
+        in_flight$d = in_flight$q;
+        has_room$d = has_room$q;
+        more_labels$d = more_labels$q;
+        label_valid_s1$d = label_valid_s1$q;
+        label_s1$d = label_s1$q;
+        label_valid_s2$d = label_valid_s2$q;
+        label_s2$d = label_s2$q;
+        label_minus1_s2$d = label_minus1_s2$q;
+        label_minus2_s2$d = label_minus2_s2$q;
+        label_valid_s3$d = label_valid_s3$q;
+        label_s3$d = label_s3$q;
+        is_root_s3$d = is_root_s3$q;
+        new_number_s3$d = new_number_s3$q;
+        parent_is_prev_s3$d = parent_is_prev_s3$q;
+        parent_is_prev2_s3$d = parent_is_prev2_s3$q;
+        label_valid_s4$d = label_valid_s4$q;
+        label_s4$d = label_s4$q;
+        is_root_s4$d = is_root_s4$q;
+        new_number_s4$d = new_number_s4$q;
+        parent_is_prev_s4$d = parent_is_prev_s4$q;
+        parent_is_prev2_s4$d = parent_is_prev2_s4$q;
+        cluster_count$d = cluster_count$q;
+        value_prev$d = value_prev$q;
+        value_prev2$d = value_prev2$q;
+        compact_ram$clk = clk;
+        has_room$d = (in_flight$q + gear_used) <= gear_room;
+        issue = active & more_labels$q & has_room$q;
+        more_labels$d = next_label$q <= provisional;
+        if (issue) begin
+            more_labels$d = next_label$q < provisional;
+            next_label$d = next_label$q + one17;
+        end
+        read_en = issue;
+        read_addr = next_label$q[15:0];
+        label_valid_s1$d = issue;
+        label_s1$d = next_label$q[15:0];
+        label_valid_s2$d = label_valid_s1$q;
+        label_s2$d = label_s1$q;
+        label_minus1_s2$d = label_s1$q - one16;
+        label_minus2_s2$d = label_s1$q - two16;
+        compact_ram$read_en = label_valid_s2$q;
+        compact_ram$read_addr = word_parent;
+        label_valid_s3$d = label_valid_s2$q;
+        label_s3$d = label_s2$q;
+        is_root_s3$d = word_root;
+        new_number_s3$d = cluster_count$q + one16;
+        parent_is_prev_s3$d = word_parent == label_minus1_s2$q;
+        parent_is_prev2_s3$d = word_parent == label_minus2_s2$q;
+        write_en = label_valid_s2$q;
+        write_addr = label_s2$q;
+        if (label_valid_s2$q & word_root) begin
+            cluster_count$d = cluster_count$q + one16;
+        end
+        label_valid_s4$d = label_valid_s3$q;
+        label_s4$d = label_s3$q;
+        is_root_s4$d = is_root_s3$q;
+        new_number_s4$d = new_number_s3$q;
+        parent_is_prev_s4$d = parent_is_prev_s3$q;
+        parent_is_prev2_s4$d = parent_is_prev2_s3$q;
+        value = compact_ram$read_data;
+        if (parent_is_prev2_s4$q) begin
+            value = value_prev2$q;
+        end
+        if (parent_is_prev_s4$q) begin
+            value = value_prev$q;
+        end
+        if (is_root_s4$q) begin
+            value = new_number_s4$q;
+        end
+        compact_ram$write_en = label_valid_s4$q;
+        compact_ram$write_addr = label_s4$q;
+        compact_ram$write_data = value;
+        out_valid = label_valid_s4$q;
+        out_label = value;
+        if (label_valid_s4$q) begin
+            value_prev$d = value;
+            value_prev2$d = value_prev$q;
+        end
+        if (issue & ~label_valid_s4$q) begin
+            in_flight$d = in_flight$q + one4;
+        end
+        if (~issue & label_valid_s4$q) begin
+            in_flight$d = in_flight$q - one4;
+        end
+        done = active & ~more_labels$q & (in_flight$q == zero4);
+        if (start) begin
+            next_label$d = one17;
+            cluster_count$d = zero16;
+            in_flight$d = zero4;
+            more_labels$d = provisional != zero17;
+        end
+        clusters = cluster_count$q;
+        if (rst) begin
+            has_room$d = 1'b0;
+            label_valid_s1$d = 1'b0;
+            label_valid_s2$d = 1'b0;
+            label_valid_s3$d = 1'b0;
+            label_valid_s4$d = 1'b0;
+            in_flight$d = zero4;
+        end
+    end
+
+endmodule // fcc_merge_table__flatten_k7_668cf05b
+
+
+module fcc_merge_table__flatten__cluster_count_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
 
     // Update code (custom)
     initial begin
-       q = 1'h0;
+       q = 16'h0;
     end
 
     always @(posedge clock) begin
        q <= d;
     end
 
-endmodule // fcc_merge_table__busy_k7_668cf05b
+endmodule // fcc_merge_table__flatten__cluster_count_k7_668cf05b
 
 
-module fcc_merge_table__c_ram_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
+module fcc_merge_table__flatten__compact_ram_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
 
     // Module arguments
     input wire  clk;
@@ -9788,29 +9547,10 @@ module fcc_merge_table__c_ram_k7_668cf05b(clk,read_en,read_addr,read_data,write_
         end
         read_data <= {1'd0, rd1};
     end
-endmodule // fcc_merge_table__c_ram_k7_668cf05b
+endmodule // fcc_merge_table__flatten__compact_ram_k7_668cf05b
 
 
-module fcc_merge_table__cr_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__cr_k7_668cf05b
-
-
-module fcc_merge_table__d0_k7_668cf05b(d,q,clock);
+module fcc_merge_table__flatten__has_room_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -9826,428 +9566,10 @@ module fcc_merge_table__d0_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_merge_table__d0_k7_668cf05b
+endmodule // fcc_merge_table__flatten__has_room_k7_668cf05b
 
 
-module fcc_merge_table__d1_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__d1_k7_668cf05b
-
-
-module fcc_merge_table__f1l_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__f1l_k7_668cf05b
-
-
-module fcc_merge_table__f1v_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__f1v_k7_668cf05b
-
-
-module fcc_merge_table__f2l_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__f2l_k7_668cf05b
-
-
-module fcc_merge_table__f2v_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__f2v_k7_668cf05b
-
-
-module fcc_merge_table__f3d1_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__f3d1_k7_668cf05b
-
-
-module fcc_merge_table__f3d2_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__f3d2_k7_668cf05b
-
-
-module fcc_merge_table__f3l_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__f3l_k7_668cf05b
-
-
-module fcc_merge_table__f3root_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__f3root_k7_668cf05b
-
-
-module fcc_merge_table__f3rv_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__f3rv_k7_668cf05b
-
-
-module fcc_merge_table__f3v_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__f3v_k7_668cf05b
-
-
-module fcc_merge_table__f4d1_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__f4d1_k7_668cf05b
-
-
-module fcc_merge_table__f4d2_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__f4d2_k7_668cf05b
-
-
-module fcc_merge_table__f4l_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__f4l_k7_668cf05b
-
-
-module fcc_merge_table__f4root_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__f4root_k7_668cf05b
-
-
-module fcc_merge_table__f4rv_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__f4rv_k7_668cf05b
-
-
-module fcc_merge_table__f4v_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__f4v_k7_668cf05b
-
-
-module fcc_merge_table__fl_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__fl_k7_668cf05b
-
-
-module fcc_merge_table__fw_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__fw_k7_668cf05b
-
-
-module fcc_merge_table__i1v_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__i1v_k7_668cf05b
-
-
-module fcc_merge_table__i2v_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__i2v_k7_668cf05b
-
-
-module fcc_merge_table__ic_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [16:0] d;
-    output reg  [16:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 17'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__ic_k7_668cf05b
-
-
-module fcc_merge_table__infl_k7_668cf05b(d,q,clock);
+module fcc_merge_table__flatten__in_flight_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [3:0] d;
@@ -10263,48 +9585,10 @@ module fcc_merge_table__infl_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_merge_table__infl_k7_668cf05b
+endmodule // fcc_merge_table__flatten__in_flight_k7_668cf05b
 
 
-module fcc_merge_table__lastv_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__lastv_k7_668cf05b
-
-
-module fcc_merge_table__lastv2_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__lastv2_k7_668cf05b
-
-
-module fcc_merge_table__ldc_k7_668cf05b(d,q,clock);
+module fcc_merge_table__flatten__is_root_s3_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -10320,10 +9604,29 @@ module fcc_merge_table__ldc_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_merge_table__ldc_k7_668cf05b
+endmodule // fcc_merge_table__flatten__is_root_s3_k7_668cf05b
 
 
-module fcc_merge_table__lm1_k7_668cf05b(d,q,clock);
+module fcc_merge_table__flatten__is_root_s4_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__flatten__is_root_s4_k7_668cf05b
+
+
+module fcc_merge_table__flatten__label_minus1_s2_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -10339,10 +9642,10 @@ module fcc_merge_table__lm1_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_merge_table__lm1_k7_668cf05b
+endmodule // fcc_merge_table__flatten__label_minus1_s2_k7_668cf05b
 
 
-module fcc_merge_table__lm2_k7_668cf05b(d,q,clock);
+module fcc_merge_table__flatten__label_minus2_s2_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -10358,7 +9661,349 @@ module fcc_merge_table__lm2_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_merge_table__lm2_k7_668cf05b
+endmodule // fcc_merge_table__flatten__label_minus2_s2_k7_668cf05b
+
+
+module fcc_merge_table__flatten__label_s1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__flatten__label_s1_k7_668cf05b
+
+
+module fcc_merge_table__flatten__label_s2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__flatten__label_s2_k7_668cf05b
+
+
+module fcc_merge_table__flatten__label_s3_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__flatten__label_s3_k7_668cf05b
+
+
+module fcc_merge_table__flatten__label_s4_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__flatten__label_s4_k7_668cf05b
+
+
+module fcc_merge_table__flatten__label_valid_s1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__flatten__label_valid_s1_k7_668cf05b
+
+
+module fcc_merge_table__flatten__label_valid_s2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__flatten__label_valid_s2_k7_668cf05b
+
+
+module fcc_merge_table__flatten__label_valid_s3_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__flatten__label_valid_s3_k7_668cf05b
+
+
+module fcc_merge_table__flatten__label_valid_s4_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__flatten__label_valid_s4_k7_668cf05b
+
+
+module fcc_merge_table__flatten__more_labels_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__flatten__more_labels_k7_668cf05b
+
+
+module fcc_merge_table__flatten__new_number_s3_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__flatten__new_number_s3_k7_668cf05b
+
+
+module fcc_merge_table__flatten__new_number_s4_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__flatten__new_number_s4_k7_668cf05b
+
+
+module fcc_merge_table__flatten__next_label_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [16:0] d;
+    output reg  [16:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 17'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__flatten__next_label_k7_668cf05b
+
+
+module fcc_merge_table__flatten__parent_is_prev2_s3_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__flatten__parent_is_prev2_s3_k7_668cf05b
+
+
+module fcc_merge_table__flatten__parent_is_prev2_s4_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__flatten__parent_is_prev2_s4_k7_668cf05b
+
+
+module fcc_merge_table__flatten__parent_is_prev_s3_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__flatten__parent_is_prev_s3_k7_668cf05b
+
+
+module fcc_merge_table__flatten__parent_is_prev_s4_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__flatten__parent_is_prev_s4_k7_668cf05b
+
+
+module fcc_merge_table__flatten__value_prev_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__flatten__value_prev_k7_668cf05b
+
+
+module fcc_merge_table__flatten__value_prev2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__flatten__value_prev2_k7_668cf05b
 
 
 module fcc_merge_table__mode_k7_668cf05b(d,q,clock);
@@ -10368,9 +10013,14 @@ module fcc_merge_table__mode_k7_668cf05b(d,q,clock);
     output reg  [1:0] q;
     input wire  clock;
 
+    // Enums
+    localparam MergeMode$Init = 0;
+    localparam MergeMode$Union = 1;
+    localparam MergeMode$Flatten = 2;
+
     // Update code (custom)
     initial begin
-       q = 2'h0;
+       q = 64'h0;
     end
 
     always @(posedge clock) begin
@@ -10380,7 +10030,191 @@ module fcc_merge_table__mode_k7_668cf05b(d,q,clock);
 endmodule // fcc_merge_table__mode_k7_668cf05b
 
 
-module fcc_merge_table__more_k7_668cf05b(d,q,clock);
+module fcc_merge_table__ports_k7_668cf05b(clk,rst,init_active,flatten_active,init_write_addr,union_read_en,union_read_addr,link_en,link_addr,link_data,flatten_read_en,flatten_read_addr,flatten_write_en,flatten_write_addr,word_root,word_parent);
+
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  init_active;
+    input wire  flatten_active;
+    input wire  [15:0] init_write_addr;
+    input wire  union_read_en;
+    input wire  [15:0] union_read_addr;
+    input wire  link_en;
+    input wire  [15:0] link_addr;
+    input wire  [15:0] link_data;
+    input wire  flatten_read_en;
+    input wire  [15:0] flatten_read_addr;
+    input wire  flatten_write_en;
+    input wire  [15:0] flatten_write_addr;
+    output reg  word_root;
+    output reg  [15:0] word_parent;
+
+    // Stub signals
+    reg  parent_ram$clk;
+    reg  parent_ram$read_en;
+    reg  [15:0] parent_ram$read_addr;
+    wire  [15:0] parent_ram$read_data;
+    reg  parent_ram$write_en;
+    reg  [15:0] parent_ram$write_addr;
+    reg  [15:0] parent_ram$write_data;
+    reg  root_ram$clk;
+    reg  root_ram$read_en;
+    reg  [15:0] root_ram$read_addr;
+    wire  root_ram$read_data;
+    reg  root_ram$write_en;
+    reg  [15:0] root_ram$write_addr;
+    reg  root_ram$write_data;
+    reg  fwd_write_en$d;
+    wire  fwd_write_en$q;
+    reg  fwd_write_en$clock;
+    reg  [15:0] fwd_write_addr$d;
+    wire  [15:0] fwd_write_addr$q;
+    reg  fwd_write_addr$clock;
+    reg  [15:0] fwd_write_data$d;
+    wire  [15:0] fwd_write_data$q;
+    reg  fwd_write_data$clock;
+    reg  [15:0] fwd_write_data_s2$d;
+    wire  [15:0] fwd_write_data_s2$q;
+    reg  fwd_write_data_s2$clock;
+    reg  fwd_read_en$d;
+    wire  fwd_read_en$q;
+    reg  fwd_read_en$clock;
+    reg  [15:0] fwd_read_addr$d;
+    wire  [15:0] fwd_read_addr$q;
+    reg  fwd_read_addr$clock;
+    reg  forward_hit$d;
+    wire  forward_hit$q;
+    reg  forward_hit$clock;
+
+    // Local signals
+    reg  read_en;
+    reg  [15:0] read_addr;
+    reg  write_en;
+    reg  [15:0] write_addr;
+    reg  write_root;
+
+    // Sub module instances
+    fcc_merge_table__ports__parent_ram_k7_668cf05b parent_ram(
+        .clk(parent_ram$clk),
+        .read_en(parent_ram$read_en),
+        .read_addr(parent_ram$read_addr),
+        .read_data(parent_ram$read_data),
+        .write_en(parent_ram$write_en),
+        .write_addr(parent_ram$write_addr),
+        .write_data(parent_ram$write_data)
+    );
+    fcc_merge_table__ports__root_ram_k7_668cf05b root_ram(
+        .clk(root_ram$clk),
+        .read_en(root_ram$read_en),
+        .read_addr(root_ram$read_addr),
+        .read_data(root_ram$read_data),
+        .write_en(root_ram$write_en),
+        .write_addr(root_ram$write_addr),
+        .write_data(root_ram$write_data)
+    );
+    fcc_merge_table__ports__fwd_write_en_k7_668cf05b fwd_write_en(
+        .d(fwd_write_en$d),
+        .q(fwd_write_en$q),
+        .clock(fwd_write_en$clock)
+    );
+    fcc_merge_table__ports__fwd_write_addr_k7_668cf05b fwd_write_addr(
+        .d(fwd_write_addr$d),
+        .q(fwd_write_addr$q),
+        .clock(fwd_write_addr$clock)
+    );
+    fcc_merge_table__ports__fwd_write_data_k7_668cf05b fwd_write_data(
+        .d(fwd_write_data$d),
+        .q(fwd_write_data$q),
+        .clock(fwd_write_data$clock)
+    );
+    fcc_merge_table__ports__fwd_write_data_s2_k7_668cf05b fwd_write_data_s2(
+        .d(fwd_write_data_s2$d),
+        .q(fwd_write_data_s2$q),
+        .clock(fwd_write_data_s2$clock)
+    );
+    fcc_merge_table__ports__fwd_read_en_k7_668cf05b fwd_read_en(
+        .d(fwd_read_en$d),
+        .q(fwd_read_en$q),
+        .clock(fwd_read_en$clock)
+    );
+    fcc_merge_table__ports__fwd_read_addr_k7_668cf05b fwd_read_addr(
+        .d(fwd_read_addr$d),
+        .q(fwd_read_addr$q),
+        .clock(fwd_read_addr$clock)
+    );
+    fcc_merge_table__ports__forward_hit_k7_668cf05b forward_hit(
+        .d(forward_hit$d),
+        .q(forward_hit$q),
+        .clock(forward_hit$clock)
+    );
+
+    // Update code
+    always @(*) begin
+        fwd_write_en$clock = clk;
+        fwd_write_addr$clock = clk;
+        fwd_write_data$clock = clk;
+        fwd_write_data_s2$clock = clk;
+        fwd_read_en$clock = clk;
+        fwd_read_addr$clock = clk;
+        forward_hit$clock = clk;
+        fwd_write_en$d = fwd_write_en$q;
+        fwd_write_addr$d = fwd_write_addr$q;
+        fwd_write_data$d = fwd_write_data$q;
+        fwd_write_data_s2$d = fwd_write_data_s2$q;
+        fwd_read_en$d = fwd_read_en$q;
+        fwd_read_addr$d = fwd_read_addr$q;
+        forward_hit$d = forward_hit$q;
+        parent_ram$clk = clk;
+        root_ram$clk = clk;
+        read_en = union_read_en | flatten_read_en;
+        read_addr = union_read_addr;
+        if (flatten_active) begin
+            read_addr = flatten_read_addr;
+        end
+        write_en = link_en | init_active | flatten_write_en;
+        write_root = init_active | flatten_write_en;
+        write_addr = link_addr;
+        if (init_active) begin
+            write_addr = init_write_addr;
+        end
+        if (flatten_write_en) begin
+            write_addr = flatten_write_addr;
+        end
+        parent_ram$read_en = read_en;
+        parent_ram$read_addr = read_addr;
+        parent_ram$write_en = write_en;
+        parent_ram$write_addr = write_addr;
+        parent_ram$write_data = link_data;
+        root_ram$read_en = read_en;
+        root_ram$read_addr = read_addr;
+        root_ram$write_en = write_en;
+        root_ram$write_addr = write_addr;
+        root_ram$write_data = write_root;
+        fwd_write_en$d = write_en;
+        fwd_write_addr$d = write_addr;
+        fwd_write_data$d = link_data;
+        fwd_write_data_s2$d = fwd_write_data$q;
+        fwd_read_en$d = read_en;
+        fwd_read_addr$d = read_addr;
+        forward_hit$d = fwd_write_en$q & fwd_read_en$q & (fwd_write_addr$q == fwd_read_addr$q);
+        word_root = root_ram$read_data;
+        word_parent = parent_ram$read_data;
+        if (forward_hit$q) begin
+            word_root = 1'b0;
+            word_parent = fwd_write_data_s2$q;
+        end
+        if (rst) begin
+            fwd_write_en$d = 1'b0;
+            fwd_read_en$d = 1'b0;
+            forward_hit$d = 1'b0;
+        end
+    end
+
+endmodule // fcc_merge_table__ports_k7_668cf05b
+
+
+module fcc_merge_table__ports__forward_hit_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -10396,29 +10230,10 @@ module fcc_merge_table__more_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_merge_table__more_k7_668cf05b
+endmodule // fcc_merge_table__ports__forward_hit_k7_668cf05b
 
 
-module fcc_merge_table__ncl_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__ncl_k7_668cf05b
-
-
-module fcc_merge_table__nja_k7_668cf05b(d,q,clock);
+module fcc_merge_table__ports__fwd_read_addr_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -10434,29 +10249,10 @@ module fcc_merge_table__nja_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_merge_table__nja_k7_668cf05b
+endmodule // fcc_merge_table__ports__fwd_read_addr_k7_668cf05b
 
 
-module fcc_merge_table__njb_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__njb_k7_668cf05b
-
-
-module fcc_merge_table__njs_k7_668cf05b(d,q,clock);
+module fcc_merge_table__ports__fwd_read_en_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -10472,48 +10268,10 @@ module fcc_merge_table__njs_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_merge_table__njs_k7_668cf05b
+endmodule // fcc_merge_table__ports__fwd_read_en_k7_668cf05b
 
 
-module fcc_merge_table__njv_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__njv_k7_668cf05b
-
-
-module fcc_merge_table__par_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__par_k7_668cf05b
-
-
-module fcc_merge_table__pend_k7_668cf05b(d,q,clock);
+module fcc_merge_table__ports__fwd_write_addr_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -10529,10 +10287,99 @@ module fcc_merge_table__pend_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_merge_table__pend_k7_668cf05b
+endmodule // fcc_merge_table__ports__fwd_write_addr_k7_668cf05b
 
 
-module fcc_merge_table__r_ram_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
+module fcc_merge_table__ports__fwd_write_data_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__ports__fwd_write_data_k7_668cf05b
+
+
+module fcc_merge_table__ports__fwd_write_data_s2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__ports__fwd_write_data_s2_k7_668cf05b
+
+
+module fcc_merge_table__ports__fwd_write_en_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__ports__fwd_write_en_k7_668cf05b
+
+
+module fcc_merge_table__ports__parent_ram_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
+
+    // Module arguments
+    input wire  clk;
+    input wire  read_en;
+    input wire  [15:0] read_addr;
+    output reg  [15:0] read_data;
+    input wire  write_en;
+    input wire  [15:0] write_addr;
+    input wire  [15:0] write_data;
+
+    // Update code (custom)
+    // Address bits above the depth and data bits above the stored width are
+    // not used by this instance.
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire unused_ok = &{1'b0, read_addr[15:15], write_addr[15:15], write_data[15:15]};
+    /* verilator lint_on UNUSEDSIGNAL */
+    reg [14:0] mem [0:32767];
+    // The block RAM's output register, then a fabric register.
+    reg [14:0] rd1;
+    always @(posedge clk) begin
+        if (read_en) begin
+            rd1 <= mem[read_addr[14:0]];
+        end
+        if (write_en) begin
+            mem[write_addr[14:0]] <= write_data[14:0];
+        end
+        read_data <= {1'd0, rd1};
+    end
+endmodule // fcc_merge_table__ports__parent_ram_k7_668cf05b
+
+
+module fcc_merge_table__ports__root_ram_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
 
     // Module arguments
     input wire  clk;
@@ -10561,175 +10408,391 @@ module fcc_merge_table__r_ram_k7_668cf05b(clk,read_en,read_addr,read_data,write_
         end
         read_data <= rd1;
     end
-endmodule // fcc_merge_table__r_ram_k7_668cf05b
+endmodule // fcc_merge_table__ports__root_ram_k7_668cf05b
 
 
-module fcc_merge_table__room_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__room_k7_668cf05b
-
-
-module fcc_merge_table__rq_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__rq_k7_668cf05b
-
-
-module fcc_merge_table__rq_en_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__rq_en_k7_668cf05b
-
-
-module fcc_merge_table__second_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__second_k7_668cf05b
-
-
-module fcc_merge_table__t_ram_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
+module fcc_merge_table__table_init_k7_668cf05b(clk,rst,active,write_addr,done);
 
     // Module arguments
     input wire  clk;
-    input wire  read_en;
-    input wire  [15:0] read_addr;
-    output reg  [15:0] read_data;
-    input wire  write_en;
-    input wire  [15:0] write_addr;
-    input wire  [15:0] write_data;
+    input wire  rst;
+    input wire  active;
+    output reg  [15:0] write_addr;
+    output reg  done;
 
-    // Update code (custom)
-    // Address bits above the depth and data bits above the stored width are
-    // not used by this instance.
-    /* verilator lint_off UNUSEDSIGNAL */
-    wire unused_ok = &{1'b0, read_addr[15:15], write_addr[15:15], write_data[15:15]};
-    /* verilator lint_on UNUSEDSIGNAL */
-    reg [14:0] mem [0:32767];
-    // The block RAM's output register, then a fabric register.
-    reg [14:0] rd1;
-    always @(posedge clk) begin
-        if (read_en) begin
-            rd1 <= mem[read_addr[14:0]];
+    // Constant declarations
+    localparam  zero = 17'b0;
+    localparam  one = 17'b1;
+    localparam  last_word = 17'b111111111111111;
+
+    // Stub signals
+    reg  [16:0] word$d;
+    wire  [16:0] word$q;
+    reg  word$clock;
+
+    // Sub module instances
+    fcc_merge_table__table_init__word_k7_668cf05b word(
+        .d(word$d),
+        .q(word$q),
+        .clock(word$clock)
+    );
+
+    // Update code
+    always @(*) begin
+        word$clock = clk;
+        word$d = word$q;
+        write_addr = word$q[15:0];
+        done = 1'b0;
+        if (active) begin
+            word$d = word$q + one;
+            done = word$q == last_word;
         end
-        if (write_en) begin
-            mem[write_addr[14:0]] <= write_data[14:0];
+        if (rst) begin
+            word$d = zero;
         end
-        read_data <= {1'd0, rd1};
     end
-endmodule // fcc_merge_table__t_ram_k7_668cf05b
+
+endmodule // fcc_merge_table__table_init_k7_668cf05b
 
 
-module fcc_merge_table__wq2_data_k7_668cf05b(d,q,clock);
+module fcc_merge_table__table_init__word_k7_668cf05b(d,q,clock);
 
     // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
+    input wire  [16:0] d;
+    output reg  [16:0] q;
     input wire  clock;
 
     // Update code (custom)
     initial begin
-       q = 16'h0;
+       q = 17'h0;
     end
 
     always @(posedge clock) begin
        q <= d;
     end
 
-endmodule // fcc_merge_table__wq2_data_k7_668cf05b
+endmodule // fcc_merge_table__table_init__word_k7_668cf05b
 
 
-module fcc_merge_table__wq_addr_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__wq_addr_k7_668cf05b
-
-
-module fcc_merge_table__wq_data_k7_668cf05b(d,q,clock);
+module fcc_merge_table__union_engine_k7_668cf05b(clk,rst,active,join_valid,join_a,join_b,join_same,join_take,word_root,word_parent,read_en,read_addr,link_en,link_addr,link_data,idle);
 
     // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
+    input wire  clk;
+    input wire  rst;
+    input wire  active;
+    input wire  join_valid;
+    input wire  [15:0] join_a;
+    input wire  [15:0] join_b;
+    input wire  join_same;
+    output reg  join_take;
+    input wire  word_root;
+    input wire  [15:0] word_parent;
+    output reg  read_en;
+    output reg  [15:0] read_addr;
+    output reg  link_en;
+    output reg  [15:0] link_addr;
+    output reg  [15:0] link_data;
+    output reg  idle;
 
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
+    // Stub signals
+    reg  next_valid$d;
+    wire  next_valid$q;
+    reg  next_valid$clock;
+    reg  [15:0] next_a$d;
+    wire  [15:0] next_a$q;
+    reg  next_a$clock;
+    reg  [15:0] next_b$d;
+    wire  [15:0] next_b$q;
+    reg  next_b$clock;
+    reg  next_same$d;
+    wire  next_same$q;
+    reg  next_same$clock;
+    reg  join_busy$d;
+    wire  join_busy$q;
+    reg  join_busy$clock;
+    reg  odd_turn$d;
+    wire  odd_turn$q;
+    reg  odd_turn$clock;
+    reg  [15:0] walk_even$d;
+    wire  [15:0] walk_even$q;
+    reg  walk_even$clock;
+    reg  [15:0] walk_odd$d;
+    wire  [15:0] walk_odd$q;
+    reg  walk_odd$clock;
+    reg  done_even$d;
+    wire  done_even$q;
+    reg  done_even$clock;
+    reg  done_odd$d;
+    wire  done_odd$q;
+    reg  done_odd$clock;
+    reg  read_b_due$d;
+    wire  read_b_due$q;
+    reg  read_b_due$clock;
+    reg  take_kept_root$d;
+    wire  take_kept_root$q;
+    reg  take_kept_root$clock;
+    reg  [15:0] next_read_addr$d;
+    wire  [15:0] next_read_addr$q;
+    reg  next_read_addr$clock;
+    reg  [15:0] kept_root$d;
+    wire  [15:0] kept_root$q;
+    reg  kept_root$clock;
+    reg  word_valid_s1$d;
+    wire  word_valid_s1$q;
+    reg  word_valid_s1$clock;
+    reg  word_valid_s2$d;
+    wire  word_valid_s2$q;
+    reg  word_valid_s2$clock;
+
+    // Local signals
+    reg  walk_continues;
+    reg  root_found;
+    reg  turn_done;
+    reg  other_done;
+    reg  link;
+    reg  start;
+    reg  [15:0] low_root;
+    reg  [15:0] high_root;
+
+    // Sub module instances
+    fcc_merge_table__union_engine__next_valid_k7_668cf05b next_valid(
+        .d(next_valid$d),
+        .q(next_valid$q),
+        .clock(next_valid$clock)
+    );
+    fcc_merge_table__union_engine__next_a_k7_668cf05b next_a(
+        .d(next_a$d),
+        .q(next_a$q),
+        .clock(next_a$clock)
+    );
+    fcc_merge_table__union_engine__next_b_k7_668cf05b next_b(
+        .d(next_b$d),
+        .q(next_b$q),
+        .clock(next_b$clock)
+    );
+    fcc_merge_table__union_engine__next_same_k7_668cf05b next_same(
+        .d(next_same$d),
+        .q(next_same$q),
+        .clock(next_same$clock)
+    );
+    fcc_merge_table__union_engine__join_busy_k7_668cf05b join_busy(
+        .d(join_busy$d),
+        .q(join_busy$q),
+        .clock(join_busy$clock)
+    );
+    fcc_merge_table__union_engine__odd_turn_k7_668cf05b odd_turn(
+        .d(odd_turn$d),
+        .q(odd_turn$q),
+        .clock(odd_turn$clock)
+    );
+    fcc_merge_table__union_engine__walk_even_k7_668cf05b walk_even(
+        .d(walk_even$d),
+        .q(walk_even$q),
+        .clock(walk_even$clock)
+    );
+    fcc_merge_table__union_engine__walk_odd_k7_668cf05b walk_odd(
+        .d(walk_odd$d),
+        .q(walk_odd$q),
+        .clock(walk_odd$clock)
+    );
+    fcc_merge_table__union_engine__done_even_k7_668cf05b done_even(
+        .d(done_even$d),
+        .q(done_even$q),
+        .clock(done_even$clock)
+    );
+    fcc_merge_table__union_engine__done_odd_k7_668cf05b done_odd(
+        .d(done_odd$d),
+        .q(done_odd$q),
+        .clock(done_odd$clock)
+    );
+    fcc_merge_table__union_engine__read_b_due_k7_668cf05b read_b_due(
+        .d(read_b_due$d),
+        .q(read_b_due$q),
+        .clock(read_b_due$clock)
+    );
+    fcc_merge_table__union_engine__take_kept_root_k7_668cf05b take_kept_root(
+        .d(take_kept_root$d),
+        .q(take_kept_root$q),
+        .clock(take_kept_root$clock)
+    );
+    fcc_merge_table__union_engine__next_read_addr_k7_668cf05b next_read_addr(
+        .d(next_read_addr$d),
+        .q(next_read_addr$q),
+        .clock(next_read_addr$clock)
+    );
+    fcc_merge_table__union_engine__kept_root_k7_668cf05b kept_root(
+        .d(kept_root$d),
+        .q(kept_root$q),
+        .clock(kept_root$clock)
+    );
+    fcc_merge_table__union_engine__word_valid_s1_k7_668cf05b word_valid_s1(
+        .d(word_valid_s1$d),
+        .q(word_valid_s1$q),
+        .clock(word_valid_s1$clock)
+    );
+    fcc_merge_table__union_engine__word_valid_s2_k7_668cf05b word_valid_s2(
+        .d(word_valid_s2$d),
+        .q(word_valid_s2$q),
+        .clock(word_valid_s2$clock)
+    );
+
+    // Update code
+    always @(*) begin
+        next_valid$clock = clk;
+        next_a$clock = clk;
+        next_b$clock = clk;
+        next_same$clock = clk;
+        join_busy$clock = clk;
+        odd_turn$clock = clk;
+        walk_even$clock = clk;
+        walk_odd$clock = clk;
+        done_even$clock = clk;
+        done_odd$clock = clk;
+        read_b_due$clock = clk;
+        take_kept_root$clock = clk;
+        next_read_addr$clock = clk;
+        kept_root$clock = clk;
+        word_valid_s1$clock = clk;
+        word_valid_s2$clock = clk;
+        next_valid$d = next_valid$q;
+        next_a$d = next_a$q;
+        next_b$d = next_b$q;
+        next_same$d = next_same$q;
+        join_busy$d = join_busy$q;
+        odd_turn$d = odd_turn$q;
+        walk_even$d = walk_even$q;
+        walk_odd$d = walk_odd$q;
+        done_even$d = done_even$q;
+        done_odd$d = done_odd$q;
+        read_b_due$d = read_b_due$q;
+        take_kept_root$d = take_kept_root$q;
+        next_read_addr$d = next_read_addr$q;
+        kept_root$d = kept_root$q;
+        word_valid_s1$d = word_valid_s1$q;
+        word_valid_s2$d = word_valid_s2$q;
+        low_root = walk_even$q;
+        high_root = walk_odd$q;
+        if (walk_odd$q < walk_even$q) begin
+            low_root = walk_odd$q;
+            high_root = walk_even$q;
+        end
+        odd_turn$d = ~odd_turn$q;
+        read_en = 1'b0;
+        link_en = 1'b0;
+        start = 1'b0;
+        link = 1'b0;
+        walk_continues = 1'b0;
+        root_found = 1'b0;
+        join_take = join_valid & ~next_valid$q;
+        if (join_take) begin
+            next_valid$d = 1'b1;
+            next_a$d = join_a;
+            next_b$d = join_b;
+            next_same$d = join_same;
+        end
+        turn_done = done_even$q;
+        other_done = done_odd$q;
+        if (odd_turn$q) begin
+            turn_done = done_odd$q;
+            other_done = done_even$q;
+        end
+        next_read_addr$d = next_a$q;
+        if (next_same$q) begin
+            next_read_addr$d = next_b$q;
+        end
+        if (join_take) begin
+            next_read_addr$d = join_a;
+            if (join_same) begin
+                next_read_addr$d = join_b;
+            end
+        end
+        read_b_due$d = 1'b0;
+        take_kept_root$d = 1'b0;
+        if (active) begin
+            walk_continues = word_valid_s2$q & ~word_root;
+            root_found = word_valid_s2$q & word_root;
+            link = join_busy$q & (turn_done | root_found) & other_done;
+            if (walk_continues) begin
+                read_en = 1'b1;
+                if (odd_turn$q) begin
+                    walk_odd$d = word_parent;
+                end
+                else begin
+                    walk_even$d = word_parent;
+                end
+            end
+            if (root_found) begin
+                if (odd_turn$q) begin
+                    done_odd$d = 1'b1;
+                end
+                else begin
+                    done_even$d = 1'b1;
+                end
+            end
+            if (read_b_due$q) begin
+                read_en = 1'b1;
+            end
+            if (link) begin
+                link_en = walk_even$q != walk_odd$q;
+                kept_root$d = low_root;
+                join_busy$d = 1'b0;
+            end
+            if (take_kept_root$q) begin
+                if (odd_turn$q) begin
+                    walk_odd$d = kept_root$q;
+                end
+                else begin
+                    walk_even$d = kept_root$q;
+                end
+            end
+            start = next_valid$q & (~join_busy$q | link);
+            if (start) begin
+                next_valid$d = join_take;
+                join_busy$d = 1'b1;
+                read_en = 1'b1;
+                if (odd_turn$q) begin
+                    done_odd$d = 1'b0;
+                    walk_odd$d = next_read_addr$q;
+                    done_even$d = next_same$q;
+                    walk_even$d = next_b$q;
+                end
+                else begin
+                    done_even$d = 1'b0;
+                    walk_even$d = next_read_addr$q;
+                    done_odd$d = next_same$q;
+                    walk_odd$d = next_b$q;
+                end
+                take_kept_root$d = next_same$q;
+                if (~next_same$q) begin
+                    read_b_due$d = 1'b1;
+                    next_read_addr$d = next_b$q;
+                end
+            end
+        end
+        read_addr = next_read_addr$q;
+        if (walk_continues) begin
+            read_addr = word_parent;
+        end
+        link_addr = high_root;
+        link_data = low_root;
+        word_valid_s1$d = read_en;
+        word_valid_s2$d = word_valid_s1$q;
+        idle = ~join_busy$q & ~next_valid$q;
+        if (rst) begin
+            next_valid$d = 1'b0;
+            join_busy$d = 1'b0;
+            read_b_due$d = 1'b0;
+            take_kept_root$d = 1'b0;
+            word_valid_s1$d = 1'b0;
+            word_valid_s2$d = 1'b0;
+            odd_turn$d = 1'b0;
+        end
     end
 
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_merge_table__wq_data_k7_668cf05b
+endmodule // fcc_merge_table__union_engine_k7_668cf05b
 
 
-module fcc_merge_table__wq_en_k7_668cf05b(d,q,clock);
+module fcc_merge_table__union_engine__done_even_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -10745,10 +10808,48 @@ module fcc_merge_table__wq_en_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_merge_table__wq_en_k7_668cf05b
+endmodule // fcc_merge_table__union_engine__done_even_k7_668cf05b
 
 
-module fcc_merge_table__x0_k7_668cf05b(d,q,clock);
+module fcc_merge_table__union_engine__done_odd_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__union_engine__done_odd_k7_668cf05b
+
+
+module fcc_merge_table__union_engine__join_busy_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__union_engine__join_busy_k7_668cf05b
+
+
+module fcc_merge_table__union_engine__kept_root_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -10764,10 +10865,10 @@ module fcc_merge_table__x0_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_merge_table__x0_k7_668cf05b
+endmodule // fcc_merge_table__union_engine__kept_root_k7_668cf05b
 
 
-module fcc_merge_table__x1_k7_668cf05b(d,q,clock);
+module fcc_merge_table__union_engine__next_a_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -10783,7 +10884,216 @@ module fcc_merge_table__x1_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_merge_table__x1_k7_668cf05b
+endmodule // fcc_merge_table__union_engine__next_a_k7_668cf05b
+
+
+module fcc_merge_table__union_engine__next_b_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__union_engine__next_b_k7_668cf05b
+
+
+module fcc_merge_table__union_engine__next_read_addr_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__union_engine__next_read_addr_k7_668cf05b
+
+
+module fcc_merge_table__union_engine__next_same_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__union_engine__next_same_k7_668cf05b
+
+
+module fcc_merge_table__union_engine__next_valid_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__union_engine__next_valid_k7_668cf05b
+
+
+module fcc_merge_table__union_engine__odd_turn_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__union_engine__odd_turn_k7_668cf05b
+
+
+module fcc_merge_table__union_engine__read_b_due_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__union_engine__read_b_due_k7_668cf05b
+
+
+module fcc_merge_table__union_engine__take_kept_root_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__union_engine__take_kept_root_k7_668cf05b
+
+
+module fcc_merge_table__union_engine__walk_even_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__union_engine__walk_even_k7_668cf05b
+
+
+module fcc_merge_table__union_engine__walk_odd_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__union_engine__walk_odd_k7_668cf05b
+
+
+module fcc_merge_table__union_engine__word_valid_s1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__union_engine__word_valid_s1_k7_668cf05b
+
+
+module fcc_merge_table__union_engine__word_valid_s2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_merge_table__union_engine__word_valid_s2_k7_668cf05b
 
 
 module fcc_top__one_row_k7_668cf05b(d,q,clock);

@@ -266,11 +266,18 @@ pub fn generate_regs(p: &FccParams) -> Result<String, RtlError> {
     Ok(v)
 }
 
-/// Name of the merge table's module when generated alone (its bench).
-pub const MERGE_TABLE_MODULE: &str = "fcc_merge_table";
+/// Name of the merge table's module when generated alone (its bench),
+/// before the configuration suffix.
+pub const MERGE_TABLE_NAME: &str = "fcc_merge_table";
+
+/// The merge table's module when generated alone for `p`:
+/// `fcc_merge_table_k7_1b2c3d4e`.
+pub fn merge_table_module(p: &FccParams) -> String {
+    format!("{MERGE_TABLE_NAME}{}", p.module_suffix())
+}
 
 /// The Verilog of the merge table `FccMergeTable` alone, as a module
-/// `fcc_merge_table` with its sub-blocks (for its own bench; the core's copy
+/// [`merge_table_module`] with its sub-blocks (for its own bench; the core's copy
 /// is inside `fcc_top.v`).
 pub fn generate_merge_table(p: &FccParams) -> Result<String, RtlError> {
     p.validate_for_hardware()?;
@@ -280,7 +287,11 @@ pub fn generate_merge_table(p: &FccParams) -> Result<String, RtlError> {
     let raw = generate_verilog_unchecked(&table);
     let mut v = file_header(p, "//");
     v.push_str("`default_nettype none\n");
-    v.push_str(&rename_modules(&constant_selects(&raw), MERGE_TABLE_MODULE));
+    v.push_str(&rename_modules(
+        &constant_selects(&raw),
+        MERGE_TABLE_NAME,
+        &p.module_suffix(),
+    ));
     v.push_str("\n`default_nettype wire\n");
     Ok(v)
 }
