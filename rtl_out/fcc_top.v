@@ -6617,65 +6617,17 @@ module fcc_label_update_k7_668cf05b(clk,rst,wr_valid,wr_state,wr_last,rb_start,f
     output reg  rb_done;
     output reg  [23:0] gear_stalls;
 
-    // Constant declarations
-    localparam  slot_off$0 = 2'b0;
-    localparam  slot_off$1 = 2'b1;
-    localparam  slot_off$2 = 2'b10;
-    localparam  slot_off$3 = 2'b11;
-    localparam  slot_idx$0 = 3'b0;
-    localparam  slot_idx$1 = 3'b1;
-    localparam  slot_idx$2 = 3'b10;
-    localparam  slot_idx$3 = 3'b11;
-    localparam  keep_n$0 = 8'h0;
-    localparam  keep_n$1 = 8'h3;
-    localparam  keep_n$2 = 8'hf;
-    localparam  keep_n$3 = 8'h3f;
-    localparam  keep_n$4 = 8'hff;
-    localparam  n_of$0 = 3'b0;
-    localparam  n_of$1 = 3'b1;
-    localparam  n_of$2 = 3'b10;
-    localparam  n_of$3 = 3'b11;
-    localparam  n_of$4 = 3'b100;
-    localparam  g_of$0 = 4'h0;
-    localparam  g_of$1 = 4'h1;
-    localparam  g_of$2 = 4'h2;
-    localparam  g_of$3 = 4'h3;
-    localparam  g_of$4 = 4'h4;
-    localparam  g_of$5 = 4'h5;
-    localparam  g_of$6 = 4'h6;
-    localparam  g_of$7 = 4'h7;
-    localparam  g_of$8 = 4'h8;
-    localparam  g_of$9 = 4'h9;
-    localparam  k_of$0 = 3'b10;
-    localparam  k_of$1 = 3'b11;
-    localparam  k_of$2 = 3'b100;
-    localparam  k_of$3 = 3'b101;
-    localparam  lpb_log = 2'b10;
-    localparam  lpb_m1 = 2'b11;
-    localparam  one20 = 20'h1;
-    localparam  lpb20 = 20'h4;
-    localparam  lpb3 = 3'b100;
-    localparam  b2_0 = 2'b0;
-    localparam  b2_1 = 2'b1;
-    localparam  b2_2 = 2'b10;
-    localparam  b2_3 = 2'b11;
-    localparam  s_zero = 3'b0;
-    localparam  s_cur = 3'b1;
-    localparam  one3 = 3'b1;
-    localparam  two3 = 3'b10;
-    localparam  two4 = 4'h2;
-    localparam  zero3 = 3'b0;
-    localparam  four3 = 3'b100;
-    localparam  zero4 = 4'h0;
-    localparam  one4 = 4'h1;
-    localparam  zero16 = 16'h0;
-    localparam  zero17 = 17'b0;
-    localparam  one17 = 17'b1;
-    localparam  zero20 = 20'h0;
-    localparam  one24 = 24'h1;
-    localparam  zero24 = 24'h0;
-
     // Stub signals
+    reg  writer$clk;
+    reg  writer$rst;
+    reg  writer$pixel_valid;
+    reg  [1:0] writer$pixel_code;
+    reg  writer$pixel_last;
+    wire  writer$write_en;
+    wire  [16:0] writer$write_addr;
+    wire  [7:0] writer$write_data;
+    wire  [19:0] writer$beats_m1;
+    wire  [2:0] writer$last_beat_labels;
     reg  fb$clk;
     reg  fb$read_en;
     reg  [16:0] fb$read_addr;
@@ -6683,199 +6635,70 @@ module fcc_label_update_k7_668cf05b(clk,rst,wr_valid,wr_state,wr_last,rb_start,f
     reg  fb$write_en;
     reg  [16:0] fb$write_addr;
     reg  [7:0] fb$write_data;
-    reg  [1:0] ws0$d;
-    wire  [1:0] ws0$q;
-    reg  ws0$clock;
-    reg  [1:0] ws1$d;
-    wire  [1:0] ws1$q;
-    reg  ws1$clock;
-    reg  [1:0] ws2$d;
-    wire  [1:0] ws2$q;
-    reg  ws2$clock;
-    reg  [1:0] wsub$d;
-    wire  [1:0] wsub$q;
-    reg  wsub$clock;
-    reg  [16:0] waddr$d;
-    wire  [16:0] waddr$q;
-    reg  waddr$clock;
-    reg  [19:0] wcnt$d;
-    wire  [19:0] wcnt$q;
-    reg  wcnt$clock;
-    reg  [19:0] beats_m1$d;
-    wire  [19:0] beats_m1$q;
-    reg  beats_m1$clock;
-    reg  [2:0] last_n$d;
-    wire  [2:0] last_n$q;
-    reg  last_n$clock;
-    reg  active$d;
-    wire  active$q;
-    reg  active$clock;
-    reg  [19:0] rpix$d;
-    wire  [19:0] rpix$q;
-    reg  rpix$clock;
-    reg  [19:0] beats$d;
-    wire  [19:0] beats$q;
-    reg  beats$clock;
-    reg  lastb$d;
-    wire  lastb$q;
-    reg  lastb$clock;
-    reg  [2:0] outst$d;
-    wire  [2:0] outst$q;
-    reg  outst$clock;
-    reg  r1v$d;
-    wire  r1v$q;
-    reg  r1v$clock;
-    reg  [1:0] r1_sub$d;
-    wire  [1:0] r1_sub$q;
-    reg  r1_sub$clock;
-    reg  [2:0] r1_n$d;
-    wire  [2:0] r1_n$q;
-    reg  r1_n$clock;
-    reg  r1_last$d;
-    wire  r1_last$q;
-    reg  r1_last$clock;
-    reg  r2v$d;
-    wire  r2v$q;
-    reg  r2v$clock;
-    reg  [1:0] r2_sub$d;
-    wire  [1:0] r2_sub$q;
-    reg  r2_sub$clock;
-    reg  [2:0] r2_n$d;
-    wire  [2:0] r2_n$q;
-    reg  r2_n$clock;
-    reg  r2_last$d;
-    wire  r2_last$q;
-    reg  r2_last$clock;
-    reg  d3v$d;
-    wire  d3v$q;
-    reg  d3v$clock;
-    reg  [26:0] d3$d;
-    wire  [26:0] d3$q;
-    reg  d3$clock;
-    reg  [26:0] sk$0$d;
-    wire  [26:0] sk$0$q;
-    reg  sk$0$clock;
-    reg  [26:0] sk$1$d;
-    wire  [26:0] sk$1$q;
-    reg  sk$1$clock;
-    reg  [26:0] sk$2$d;
-    wire  [26:0] sk$2$q;
-    reg  sk$2$clock;
-    reg  [26:0] sk$3$d;
-    wire  [26:0] sk$3$q;
-    reg  sk$3$clock;
-    reg  [2:0] skn$d;
-    wire  [2:0] skn$q;
-    reg  skn$clock;
-    reg  [2:0] u$d;
-    wire  [2:0] u$q;
-    reg  u$clock;
-    reg  [15:0] labs$0$d;
-    wire  [15:0] labs$0$q;
-    reg  labs$0$clock;
-    reg  [15:0] labs$1$d;
-    wire  [15:0] labs$1$q;
-    reg  labs$1$clock;
-    reg  [15:0] labs$2$d;
-    wire  [15:0] labs$2$q;
-    reg  labs$2$clock;
-    reg  [15:0] labs$3$d;
-    wire  [15:0] labs$3$q;
-    reg  labs$3$clock;
-    reg  [15:0] cur_run$d;
-    wire  [15:0] cur_run$q;
-    reg  cur_run$clock;
-    reg  [15:0] g$0$d;
-    wire  [15:0] g$0$q;
-    reg  g$0$clock;
-    reg  [15:0] g$1$d;
-    wire  [15:0] g$1$q;
-    reg  g$1$clock;
-    reg  [15:0] g$2$d;
-    wire  [15:0] g$2$q;
-    reg  g$2$clock;
-    reg  [15:0] g$3$d;
-    wire  [15:0] g$3$q;
-    reg  g$3$clock;
-    reg  [15:0] g$4$d;
-    wire  [15:0] g$4$q;
-    reg  g$4$clock;
-    reg  [15:0] g$5$d;
-    wire  [15:0] g$5$q;
-    reg  g$5$clock;
-    reg  [15:0] g$6$d;
-    wire  [15:0] g$6$q;
-    reg  g$6$clock;
-    reg  [15:0] g$7$d;
-    wire  [15:0] g$7$q;
-    reg  g$7$clock;
-    reg  [3:0] gn$d;
-    wire  [3:0] gn$q;
-    reg  gn$clock;
-    reg  o_valid$d;
-    wire  o_valid$q;
-    reg  o_valid$clock;
-    reg  [63:0] o_data$d;
-    wire  [63:0] o_data$q;
-    reg  o_data$clock;
-    reg  [7:0] o_keep$d;
-    wire  [7:0] o_keep$q;
-    reg  o_keep$clock;
-    reg  o_last$d;
-    wire  o_last$q;
-    reg  o_last$clock;
-    reg  [23:0] gstall$d;
-    wire  [23:0] gstall$q;
-    reg  gstall$clock;
-
-    // Local signals
-    reg  issue;
-    reg  [1:0] st$0;
-    reg  [1:0] st$1;
-    reg  [1:0] st$2;
-    reg  [1:0] st$3;
-    reg  [2:0] src$0;
-    reg  [2:0] src$1;
-    reg  [2:0] src$2;
-    reg  [2:0] src$3;
-    reg  [2:0] src$4;
-    reg  [2:0] slot$0;
-    reg  [2:0] slot$1;
-    reg  [2:0] slot$2;
-    reg  [2:0] slot$3;
-    reg  [2:0] nnew$0;
-    reg  [2:0] nnew$1;
-    reg  [2:0] nnew$2;
-    reg  [2:0] nnew$3;
-    reg  [2:0] nnew$4;
-    reg  [1:0] idx;
-    reg  hv;
-    reg  ghv;
-    reg  pop;
-    reg  pop2;
-    reg  pop1;
-    reg  lz;
-    reg  l1;
-    reg  l2;
-    reg  lge2;
-    reg  gge2;
-    reg  [3:0] gn_p1;
-    reg  [3:0] gn_m1;
-    reg  [3:0] gn_m2;
-    reg  fire;
-    reg  ofree;
-    reg  [15:0] lab$0;
-    reg  [15:0] lab$1;
-    reg  [15:0] lab$2;
-    reg  [15:0] lab$3;
-    reg  [2:0] nsrc$0;
-    reg  [2:0] nsrc$1;
-    reg  [2:0] nsrc$2;
-    reg  [2:0] nsrc$3;
-    reg  [15:0] runv;
-    reg  [1:0] wrem;
+    reg  pipeline$clk;
+    reg  pipeline$rst;
+    reg  pipeline$start;
+    reg  [19:0] pipeline$beats_m1;
+    reg  [2:0] pipeline$last_beat_labels;
+    reg  pipeline$beat_done;
+    wire  pipeline$read_en;
+    wire  [16:0] pipeline$read_addr;
+    reg  [7:0] pipeline$read_data;
+    wire  pipeline$beat_valid;
+    wire  [26:0] pipeline$beat;
+    reg  queue$clk;
+    reg  queue$rst;
+    reg  queue$clear;
+    reg  queue$in_valid;
+    reg  [26:0] queue$in_beat;
+    reg  queue$pop;
+    wire  queue$head_valid;
+    wire  [26:0] queue$head;
+    reg  gearbox$clk;
+    reg  gearbox$rst;
+    reg  gearbox$clear;
+    reg  gearbox$push_valid;
+    reg  [15:0] gearbox$push_label;
+    reg  gearbox$pop;
+    reg  gearbox$pop_two;
+    wire  [15:0] gearbox$front;
+    wire  [15:0] gearbox$second;
+    wire  [3:0] gearbox$used;
+    wire  gearbox$has_one;
+    wire  gearbox$has_two;
+    reg  assembly$clk;
+    reg  assembly$rst;
+    reg  assembly$clear;
+    reg  assembly$head_valid;
+    reg  [26:0] assembly$head;
+    wire  assembly$head_done;
+    reg  [15:0] assembly$gear_front;
+    reg  [15:0] assembly$gear_second;
+    reg  assembly$gear_has_one;
+    reg  assembly$gear_has_two;
+    wire  assembly$gear_pop;
+    wire  assembly$gear_pop_two;
+    wire  [63:0] assembly$m_axis_tdata;
+    wire  [7:0] assembly$m_axis_tkeep;
+    wire  assembly$m_axis_tvalid;
+    wire  assembly$m_axis_tlast;
+    reg  assembly$m_axis_tready;
+    wire  assembly$frame_sent;
+    wire  [23:0] assembly$gear_stalls;
 
     // Sub module instances
+    fcc_label_update__writer_k7_668cf05b writer(
+        .clk(writer$clk),
+        .rst(writer$rst),
+        .pixel_valid(writer$pixel_valid),
+        .pixel_code(writer$pixel_code),
+        .pixel_last(writer$pixel_last),
+        .write_en(writer$write_en),
+        .write_addr(writer$write_addr),
+        .write_data(writer$write_data),
+        .beats_m1(writer$beats_m1),
+        .last_beat_labels(writer$last_beat_labels)
+    );
     fcc_label_update__fb_k7_668cf05b fb(
         .clk(fb$clk),
         .read_en(fb$read_en),
@@ -6885,1079 +6708,515 @@ module fcc_label_update_k7_668cf05b(clk,rst,wr_valid,wr_state,wr_last,rb_start,f
         .write_addr(fb$write_addr),
         .write_data(fb$write_data)
     );
-    fcc_label_update__ws0_k7_668cf05b ws0(
-        .d(ws0$d),
-        .q(ws0$q),
-        .clock(ws0$clock)
+    fcc_label_update__pipeline_k7_668cf05b pipeline(
+        .clk(pipeline$clk),
+        .rst(pipeline$rst),
+        .start(pipeline$start),
+        .beats_m1(pipeline$beats_m1),
+        .last_beat_labels(pipeline$last_beat_labels),
+        .beat_done(pipeline$beat_done),
+        .read_en(pipeline$read_en),
+        .read_addr(pipeline$read_addr),
+        .read_data(pipeline$read_data),
+        .beat_valid(pipeline$beat_valid),
+        .beat(pipeline$beat)
     );
-    fcc_label_update__ws1_k7_668cf05b ws1(
-        .d(ws1$d),
-        .q(ws1$q),
-        .clock(ws1$clock)
+    fcc_label_update__queue_k7_668cf05b queue(
+        .clk(queue$clk),
+        .rst(queue$rst),
+        .clear(queue$clear),
+        .in_valid(queue$in_valid),
+        .in_beat(queue$in_beat),
+        .pop(queue$pop),
+        .head_valid(queue$head_valid),
+        .head(queue$head)
     );
-    fcc_label_update__ws2_k7_668cf05b ws2(
-        .d(ws2$d),
-        .q(ws2$q),
-        .clock(ws2$clock)
+    fcc_label_update__gearbox_k7_668cf05b gearbox(
+        .clk(gearbox$clk),
+        .rst(gearbox$rst),
+        .clear(gearbox$clear),
+        .push_valid(gearbox$push_valid),
+        .push_label(gearbox$push_label),
+        .pop(gearbox$pop),
+        .pop_two(gearbox$pop_two),
+        .front(gearbox$front),
+        .second(gearbox$second),
+        .used(gearbox$used),
+        .has_one(gearbox$has_one),
+        .has_two(gearbox$has_two)
     );
-    fcc_label_update__wsub_k7_668cf05b wsub(
-        .d(wsub$d),
-        .q(wsub$q),
-        .clock(wsub$clock)
-    );
-    fcc_label_update__waddr_k7_668cf05b waddr(
-        .d(waddr$d),
-        .q(waddr$q),
-        .clock(waddr$clock)
-    );
-    fcc_label_update__wcnt_k7_668cf05b wcnt(
-        .d(wcnt$d),
-        .q(wcnt$q),
-        .clock(wcnt$clock)
-    );
-    fcc_label_update__beats_m1_k7_668cf05b beats_m1(
-        .d(beats_m1$d),
-        .q(beats_m1$q),
-        .clock(beats_m1$clock)
-    );
-    fcc_label_update__last_n_k7_668cf05b last_n(
-        .d(last_n$d),
-        .q(last_n$q),
-        .clock(last_n$clock)
-    );
-    fcc_label_update__active_k7_668cf05b active(
-        .d(active$d),
-        .q(active$q),
-        .clock(active$clock)
-    );
-    fcc_label_update__rpix_k7_668cf05b rpix(
-        .d(rpix$d),
-        .q(rpix$q),
-        .clock(rpix$clock)
-    );
-    fcc_label_update__beats_k7_668cf05b beats(
-        .d(beats$d),
-        .q(beats$q),
-        .clock(beats$clock)
-    );
-    fcc_label_update__lastb_k7_668cf05b lastb(
-        .d(lastb$d),
-        .q(lastb$q),
-        .clock(lastb$clock)
-    );
-    fcc_label_update__outst_k7_668cf05b outst(
-        .d(outst$d),
-        .q(outst$q),
-        .clock(outst$clock)
-    );
-    fcc_label_update__r1v_k7_668cf05b r1v(
-        .d(r1v$d),
-        .q(r1v$q),
-        .clock(r1v$clock)
-    );
-    fcc_label_update__r1_sub_k7_668cf05b r1_sub(
-        .d(r1_sub$d),
-        .q(r1_sub$q),
-        .clock(r1_sub$clock)
-    );
-    fcc_label_update__r1_n_k7_668cf05b r1_n(
-        .d(r1_n$d),
-        .q(r1_n$q),
-        .clock(r1_n$clock)
-    );
-    fcc_label_update__r1_last_k7_668cf05b r1_last(
-        .d(r1_last$d),
-        .q(r1_last$q),
-        .clock(r1_last$clock)
-    );
-    fcc_label_update__r2v_k7_668cf05b r2v(
-        .d(r2v$d),
-        .q(r2v$q),
-        .clock(r2v$clock)
-    );
-    fcc_label_update__r2_sub_k7_668cf05b r2_sub(
-        .d(r2_sub$d),
-        .q(r2_sub$q),
-        .clock(r2_sub$clock)
-    );
-    fcc_label_update__r2_n_k7_668cf05b r2_n(
-        .d(r2_n$d),
-        .q(r2_n$q),
-        .clock(r2_n$clock)
-    );
-    fcc_label_update__r2_last_k7_668cf05b r2_last(
-        .d(r2_last$d),
-        .q(r2_last$q),
-        .clock(r2_last$clock)
-    );
-    fcc_label_update__d3v_k7_668cf05b d3v(
-        .d(d3v$d),
-        .q(d3v$q),
-        .clock(d3v$clock)
-    );
-    fcc_label_update__d3_k7_668cf05b d3(
-        .d(d3$d),
-        .q(d3$q),
-        .clock(d3$clock)
-    );
-    fcc_label_update__sk__0_k7_668cf05b sk$0(
-        .d(sk$0$d),
-        .q(sk$0$q),
-        .clock(sk$0$clock)
-    );
-    fcc_label_update__sk__1_k7_668cf05b sk$1(
-        .d(sk$1$d),
-        .q(sk$1$q),
-        .clock(sk$1$clock)
-    );
-    fcc_label_update__sk__2_k7_668cf05b sk$2(
-        .d(sk$2$d),
-        .q(sk$2$q),
-        .clock(sk$2$clock)
-    );
-    fcc_label_update__sk__3_k7_668cf05b sk$3(
-        .d(sk$3$d),
-        .q(sk$3$q),
-        .clock(sk$3$clock)
-    );
-    fcc_label_update__skn_k7_668cf05b skn(
-        .d(skn$d),
-        .q(skn$q),
-        .clock(skn$clock)
-    );
-    fcc_label_update__u_k7_668cf05b u(
-        .d(u$d),
-        .q(u$q),
-        .clock(u$clock)
-    );
-    fcc_label_update__labs__0_k7_668cf05b labs$0(
-        .d(labs$0$d),
-        .q(labs$0$q),
-        .clock(labs$0$clock)
-    );
-    fcc_label_update__labs__1_k7_668cf05b labs$1(
-        .d(labs$1$d),
-        .q(labs$1$q),
-        .clock(labs$1$clock)
-    );
-    fcc_label_update__labs__2_k7_668cf05b labs$2(
-        .d(labs$2$d),
-        .q(labs$2$q),
-        .clock(labs$2$clock)
-    );
-    fcc_label_update__labs__3_k7_668cf05b labs$3(
-        .d(labs$3$d),
-        .q(labs$3$q),
-        .clock(labs$3$clock)
-    );
-    fcc_label_update__cur_run_k7_668cf05b cur_run(
-        .d(cur_run$d),
-        .q(cur_run$q),
-        .clock(cur_run$clock)
-    );
-    fcc_label_update__g__0_k7_668cf05b g$0(
-        .d(g$0$d),
-        .q(g$0$q),
-        .clock(g$0$clock)
-    );
-    fcc_label_update__g__1_k7_668cf05b g$1(
-        .d(g$1$d),
-        .q(g$1$q),
-        .clock(g$1$clock)
-    );
-    fcc_label_update__g__2_k7_668cf05b g$2(
-        .d(g$2$d),
-        .q(g$2$q),
-        .clock(g$2$clock)
-    );
-    fcc_label_update__g__3_k7_668cf05b g$3(
-        .d(g$3$d),
-        .q(g$3$q),
-        .clock(g$3$clock)
-    );
-    fcc_label_update__g__4_k7_668cf05b g$4(
-        .d(g$4$d),
-        .q(g$4$q),
-        .clock(g$4$clock)
-    );
-    fcc_label_update__g__5_k7_668cf05b g$5(
-        .d(g$5$d),
-        .q(g$5$q),
-        .clock(g$5$clock)
-    );
-    fcc_label_update__g__6_k7_668cf05b g$6(
-        .d(g$6$d),
-        .q(g$6$q),
-        .clock(g$6$clock)
-    );
-    fcc_label_update__g__7_k7_668cf05b g$7(
-        .d(g$7$d),
-        .q(g$7$q),
-        .clock(g$7$clock)
-    );
-    fcc_label_update__gn_k7_668cf05b gn(
-        .d(gn$d),
-        .q(gn$q),
-        .clock(gn$clock)
-    );
-    fcc_label_update__o_valid_k7_668cf05b o_valid(
-        .d(o_valid$d),
-        .q(o_valid$q),
-        .clock(o_valid$clock)
-    );
-    fcc_label_update__o_data_k7_668cf05b o_data(
-        .d(o_data$d),
-        .q(o_data$q),
-        .clock(o_data$clock)
-    );
-    fcc_label_update__o_keep_k7_668cf05b o_keep(
-        .d(o_keep$d),
-        .q(o_keep$q),
-        .clock(o_keep$clock)
-    );
-    fcc_label_update__o_last_k7_668cf05b o_last(
-        .d(o_last$d),
-        .q(o_last$q),
-        .clock(o_last$clock)
-    );
-    fcc_label_update__gstall_k7_668cf05b gstall(
-        .d(gstall$d),
-        .q(gstall$q),
-        .clock(gstall$clock)
+    fcc_label_update__assembly_k7_668cf05b assembly(
+        .clk(assembly$clk),
+        .rst(assembly$rst),
+        .clear(assembly$clear),
+        .head_valid(assembly$head_valid),
+        .head(assembly$head),
+        .head_done(assembly$head_done),
+        .gear_front(assembly$gear_front),
+        .gear_second(assembly$gear_second),
+        .gear_has_one(assembly$gear_has_one),
+        .gear_has_two(assembly$gear_has_two),
+        .gear_pop(assembly$gear_pop),
+        .gear_pop_two(assembly$gear_pop_two),
+        .m_axis_tdata(assembly$m_axis_tdata),
+        .m_axis_tkeep(assembly$m_axis_tkeep),
+        .m_axis_tvalid(assembly$m_axis_tvalid),
+        .m_axis_tlast(assembly$m_axis_tlast),
+        .m_axis_tready(assembly$m_axis_tready),
+        .frame_sent(assembly$frame_sent),
+        .gear_stalls(assembly$gear_stalls)
     );
 
     // Update code
     always @(*) begin
-        ws0$clock = clk;
-        ws1$clock = clk;
-        ws2$clock = clk;
-        wsub$clock = clk;
-        waddr$clock = clk;
-        wcnt$clock = clk;
-        beats_m1$clock = clk;
-        last_n$clock = clk;
-        active$clock = clk;
-        rpix$clock = clk;
-        beats$clock = clk;
-        lastb$clock = clk;
-        outst$clock = clk;
-        r1v$clock = clk;
-        r1_sub$clock = clk;
-        r1_n$clock = clk;
-        r1_last$clock = clk;
-        r2v$clock = clk;
-        r2_sub$clock = clk;
-        r2_n$clock = clk;
-        r2_last$clock = clk;
-        d3v$clock = clk;
-        d3$clock = clk;
-        skn$clock = clk;
-        u$clock = clk;
-        cur_run$clock = clk;
-        gn$clock = clk;
-        o_valid$clock = clk;
-        o_data$clock = clk;
-        o_keep$clock = clk;
-        o_last$clock = clk;
-        gstall$clock = clk;
-        ws0$d = ws0$q;
-        ws1$d = ws1$q;
-        ws2$d = ws2$q;
-        wsub$d = wsub$q;
-        waddr$d = waddr$q;
-        wcnt$d = wcnt$q;
-        beats_m1$d = beats_m1$q;
-        last_n$d = last_n$q;
-        active$d = active$q;
-        rpix$d = rpix$q;
-        beats$d = beats$q;
-        lastb$d = lastb$q;
-        outst$d = outst$q;
-        r1v$d = r1v$q;
-        r1_sub$d = r1_sub$q;
-        r1_n$d = r1_n$q;
-        r1_last$d = r1_last$q;
-        r2v$d = r2v$q;
-        r2_sub$d = r2_sub$q;
-        r2_n$d = r2_n$q;
-        r2_last$d = r2_last$q;
-        d3v$d = d3v$q;
-        d3$d = d3$q;
-        skn$d = skn$q;
-        u$d = u$q;
-        cur_run$d = cur_run$q;
-        gn$d = gn$q;
-        o_valid$d = o_valid$q;
-        o_data$d = o_data$q;
-        o_keep$d = o_keep$q;
-        o_last$d = o_last$q;
-        gstall$d = gstall$q;
-        sk$0$clock = clk;
-        sk$0$d = sk$0$q;
-        labs$0$clock = clk;
-        labs$0$d = labs$0$q;
-        sk$1$clock = clk;
-        sk$1$d = sk$1$q;
-        labs$1$clock = clk;
-        labs$1$d = labs$1$q;
-        sk$2$clock = clk;
-        sk$2$d = sk$2$q;
-        labs$2$clock = clk;
-        labs$2$d = labs$2$q;
-        sk$3$clock = clk;
-        sk$3$d = sk$3$q;
-        labs$3$clock = clk;
-        labs$3$d = labs$3$q;
-        g$0$clock = clk;
-        g$0$d = g$0$q;
-        g$1$clock = clk;
-        g$1$d = g$1$q;
-        g$2$clock = clk;
-        g$2$d = g$2$q;
-        g$3$clock = clk;
-        g$3$d = g$3$q;
-        g$4$clock = clk;
-        g$4$d = g$4$q;
-        g$5$clock = clk;
-        g$5$d = g$5$q;
-        g$6$clock = clk;
-        g$6$d = g$6$q;
-        g$7$clock = clk;
-        g$7$d = g$7$q;
-        wrem = wcnt$q[1:0] & lpb_m1;
+        writer$clk = clk;
         fb$clk = clk;
-        fb$write_en = 1'b0;
-        fb$write_addr = waddr$q;
-        fb$write_data[1:0] = ws0$q;
-        fb$write_data[3:2] = ws1$q;
-        fb$write_data[5:4] = ws2$q;
-        fb$write_data[7:6] = wr_state;
-        if (wsub$q == b2_0) begin
-            fb$write_data[1:0] = wr_state;
-        end
-        if (wsub$q == b2_1) begin
-            fb$write_data[3:2] = wr_state;
-        end
-        if (wsub$q == b2_2) begin
-            fb$write_data[5:4] = wr_state;
-        end
-        if (wr_valid) begin
-            if (wsub$q == b2_0) begin
-                ws0$d = wr_state;
-            end
-            if (wsub$q == b2_1) begin
-                ws1$d = wr_state;
-            end
-            if (wsub$q == b2_2) begin
-                ws2$d = wr_state;
-            end
-            wsub$d = wsub$q + b2_1;
-            if ((wsub$q == b2_3) | wr_last) begin
-                fb$write_en = 1'b1;
-                waddr$d = waddr$q + one17;
-            end
-            wcnt$d = wcnt$q + one20;
-            if (wr_last) begin
-                wsub$d = b2_0;
-                waddr$d = zero17;
-                wcnt$d = zero20;
-                beats_m1$d = wcnt$q >> lpb_log;
-                last_n$d = n_of$1;
-                if (wrem == b2_1) begin
-                    last_n$d = n_of$2;
-                end
-                if (wrem == b2_2) begin
-                    last_n$d = n_of$3;
-                end
-                if (wrem == b2_3) begin
-                    last_n$d = n_of$4;
-                end
-            end
-        end
-        ofree = ~o_valid$q | m_axis_tready;
-        hv = skn$q != zero3;
-        ghv = gn$q != zero4;
-        lz = sk$0$q[17:15] == u$q;
-        l1 = 1'b0;
-        l2 = 1'b0;
-        lge2 = 1'b0;
-        if ((u$q == n_of$0) & (sk$0$q[17:15] == n_of$1)) begin
-            l1 = 1'b1;
-        end
-        if ((u$q == n_of$1) & (sk$0$q[17:15] == n_of$2)) begin
-            l1 = 1'b1;
-        end
-        if ((u$q == n_of$2) & (sk$0$q[17:15] == n_of$3)) begin
-            l1 = 1'b1;
-        end
-        if ((u$q == n_of$3) & (sk$0$q[17:15] == n_of$4)) begin
-            l1 = 1'b1;
-        end
-        if ((u$q == n_of$0) & (sk$0$q[17:15] == n_of$2)) begin
-            l2 = 1'b1;
-            lge2 = 1'b1;
-        end
-        if ((u$q == n_of$1) & (sk$0$q[17:15] == n_of$3)) begin
-            l2 = 1'b1;
-            lge2 = 1'b1;
-        end
-        if ((u$q == n_of$2) & (sk$0$q[17:15] == n_of$4)) begin
-            l2 = 1'b1;
-            lge2 = 1'b1;
-        end
-        if ((u$q == n_of$0) & (sk$0$q[17:15] == n_of$3)) begin
-            lge2 = 1'b1;
-        end
-        if ((u$q == n_of$1) & (sk$0$q[17:15] == n_of$4)) begin
-            lge2 = 1'b1;
-        end
-        if ((u$q == n_of$0) & (sk$0$q[17:15] == n_of$4)) begin
-            lge2 = 1'b1;
-        end
-        gge2 = (gn$q != zero4) & (gn$q != one4);
-        pop2 = hv & lge2 & gge2;
-        pop = hv & ~lz & ghv;
-        fire = hv & ofree & (lz | (l1 & ghv) | (l2 & gge2));
-        nsrc$0 = sk$0$q[2:0];
-        nsrc$1 = sk$0$q[5:3];
-        nsrc$2 = sk$0$q[8:6];
-        nsrc$3 = sk$0$q[11:9];
-        lab$0 = zero16;
-        if (nsrc$0 == s_cur) begin
-            lab$0 = cur_run$q;
-        end
-        if (nsrc$0 == k_of$0) begin
-            lab$0 = labs$0$q;
-            if (u$q == n_of$0) begin
-                lab$0 = g$0$q;
-            end
-        end
-        if (nsrc$0 == k_of$1) begin
-            lab$0 = labs$1$q;
-            if (u$q == n_of$1) begin
-                lab$0 = g$0$q;
-            end
-        end
-        if (nsrc$0 == k_of$2) begin
-            lab$0 = labs$2$q;
-            if (u$q == n_of$2) begin
-                lab$0 = g$0$q;
-            end
-        end
-        if (nsrc$0 == k_of$3) begin
-            lab$0 = labs$3$q;
-            if (u$q == n_of$3) begin
-                lab$0 = g$0$q;
-            end
-        end
-        if ((nsrc$0 == k_of$1) & (u$q == n_of$0)) begin
-            lab$0 = g$1$q;
-        end
-        if ((nsrc$0 == k_of$2) & (u$q == n_of$1)) begin
-            lab$0 = g$1$q;
-        end
-        if ((nsrc$0 == k_of$3) & (u$q == n_of$2)) begin
-            lab$0 = g$1$q;
-        end
-        lab$1 = zero16;
-        if (nsrc$1 == s_cur) begin
-            lab$1 = cur_run$q;
-        end
-        if (nsrc$1 == k_of$0) begin
-            lab$1 = labs$0$q;
-            if (u$q == n_of$0) begin
-                lab$1 = g$0$q;
-            end
-        end
-        if (nsrc$1 == k_of$1) begin
-            lab$1 = labs$1$q;
-            if (u$q == n_of$1) begin
-                lab$1 = g$0$q;
-            end
-        end
-        if (nsrc$1 == k_of$2) begin
-            lab$1 = labs$2$q;
-            if (u$q == n_of$2) begin
-                lab$1 = g$0$q;
-            end
-        end
-        if (nsrc$1 == k_of$3) begin
-            lab$1 = labs$3$q;
-            if (u$q == n_of$3) begin
-                lab$1 = g$0$q;
-            end
-        end
-        if ((nsrc$1 == k_of$1) & (u$q == n_of$0)) begin
-            lab$1 = g$1$q;
-        end
-        if ((nsrc$1 == k_of$2) & (u$q == n_of$1)) begin
-            lab$1 = g$1$q;
-        end
-        if ((nsrc$1 == k_of$3) & (u$q == n_of$2)) begin
-            lab$1 = g$1$q;
-        end
-        lab$2 = zero16;
-        if (nsrc$2 == s_cur) begin
-            lab$2 = cur_run$q;
-        end
-        if (nsrc$2 == k_of$0) begin
-            lab$2 = labs$0$q;
-            if (u$q == n_of$0) begin
-                lab$2 = g$0$q;
-            end
-        end
-        if (nsrc$2 == k_of$1) begin
-            lab$2 = labs$1$q;
-            if (u$q == n_of$1) begin
-                lab$2 = g$0$q;
-            end
-        end
-        if (nsrc$2 == k_of$2) begin
-            lab$2 = labs$2$q;
-            if (u$q == n_of$2) begin
-                lab$2 = g$0$q;
-            end
-        end
-        if (nsrc$2 == k_of$3) begin
-            lab$2 = labs$3$q;
-            if (u$q == n_of$3) begin
-                lab$2 = g$0$q;
-            end
-        end
-        if ((nsrc$2 == k_of$1) & (u$q == n_of$0)) begin
-            lab$2 = g$1$q;
-        end
-        if ((nsrc$2 == k_of$2) & (u$q == n_of$1)) begin
-            lab$2 = g$1$q;
-        end
-        if ((nsrc$2 == k_of$3) & (u$q == n_of$2)) begin
-            lab$2 = g$1$q;
-        end
-        lab$3 = zero16;
-        if (nsrc$3 == s_cur) begin
-            lab$3 = cur_run$q;
-        end
-        if (nsrc$3 == k_of$0) begin
-            lab$3 = labs$0$q;
-            if (u$q == n_of$0) begin
-                lab$3 = g$0$q;
-            end
-        end
-        if (nsrc$3 == k_of$1) begin
-            lab$3 = labs$1$q;
-            if (u$q == n_of$1) begin
-                lab$3 = g$0$q;
-            end
-        end
-        if (nsrc$3 == k_of$2) begin
-            lab$3 = labs$2$q;
-            if (u$q == n_of$2) begin
-                lab$3 = g$0$q;
-            end
-        end
-        if (nsrc$3 == k_of$3) begin
-            lab$3 = labs$3$q;
-            if (u$q == n_of$3) begin
-                lab$3 = g$0$q;
-            end
-        end
-        if ((nsrc$3 == k_of$1) & (u$q == n_of$0)) begin
-            lab$3 = g$1$q;
-        end
-        if ((nsrc$3 == k_of$2) & (u$q == n_of$1)) begin
-            lab$3 = g$1$q;
-        end
-        if ((nsrc$3 == k_of$3) & (u$q == n_of$2)) begin
-            lab$3 = g$1$q;
-        end
-        runv = zero16;
-        if (sk$0$q[14:12] == s_cur) begin
-            runv = cur_run$q;
-        end
-        if (sk$0$q[14:12] == k_of$0) begin
-            runv = labs$0$q;
-            if (u$q == n_of$0) begin
-                runv = g$0$q;
-            end
-        end
-        if (sk$0$q[14:12] == k_of$1) begin
-            runv = labs$1$q;
-            if (u$q == n_of$1) begin
-                runv = g$0$q;
-            end
-        end
-        if (sk$0$q[14:12] == k_of$2) begin
-            runv = labs$2$q;
-            if (u$q == n_of$2) begin
-                runv = g$0$q;
-            end
-        end
-        if (sk$0$q[14:12] == k_of$3) begin
-            runv = labs$3$q;
-            if (u$q == n_of$3) begin
-                runv = g$0$q;
-            end
-        end
-        if ((sk$0$q[14:12] == k_of$1) & (u$q == n_of$0)) begin
-            runv = g$1$q;
-        end
-        if ((sk$0$q[14:12] == k_of$2) & (u$q == n_of$1)) begin
-            runv = g$1$q;
-        end
-        if ((sk$0$q[14:12] == k_of$3) & (u$q == n_of$2)) begin
-            runv = g$1$q;
-        end
-        if (fire) begin
-            cur_run$d = runv;
-        end
-        if (pop) begin
-            if (u$q == n_of$0) begin
-                labs$0$d = g$0$q;
-            end
-            if (u$q == n_of$1) begin
-                labs$1$d = g$0$q;
-            end
-            if (u$q == n_of$2) begin
-                labs$2$d = g$0$q;
-            end
-            if (u$q == n_of$3) begin
-                labs$3$d = g$0$q;
-            end
-            u$d = u$q + one3;
-        end
-        if (pop2) begin
-            if (u$q == n_of$0) begin
-                labs$1$d = g$1$q;
-            end
-            if (u$q == n_of$1) begin
-                labs$2$d = g$1$q;
-            end
-            if (u$q == n_of$2) begin
-                labs$3$d = g$1$q;
-            end
-            u$d = u$q + two3;
-        end
-        if (o_valid$q & m_axis_tready) begin
-            o_valid$d = 1'b0;
-        end
-        if (fire) begin
-            u$d = zero3;
-            o_valid$d = 1'b1;
-            o_data$d[15:0] = lab$0;
-            o_data$d[31:16] = lab$1;
-            o_data$d[47:32] = lab$2;
-            o_data$d[63:48] = lab$3;
-            o_keep$d = sk$0$q[25:18];
-            o_last$d = sk$0$q[26:26];
-        end
-        if (hv & ~fire & ofree) begin
-            gstall$d = gstall$q + one24;
-        end
-        if (pop) begin
-            g$0$d = g$1$q;
-        end
-        if (pop) begin
-            g$1$d = g$2$q;
-        end
-        if (pop) begin
-            g$2$d = g$3$q;
-        end
-        if (pop) begin
-            g$3$d = g$4$q;
-        end
-        if (pop) begin
-            g$4$d = g$5$q;
-        end
-        if (pop) begin
-            g$5$d = g$6$q;
-        end
-        if (pop) begin
-            g$6$d = g$7$q;
-        end
-        if (pop2) begin
-            g$0$d = g$2$q;
-        end
-        if (pop2) begin
-            g$1$d = g$3$q;
-        end
-        if (pop2) begin
-            g$2$d = g$4$q;
-        end
-        if (pop2) begin
-            g$3$d = g$5$q;
-        end
-        if (pop2) begin
-            g$4$d = g$6$q;
-        end
-        if (pop2) begin
-            g$5$d = g$7$q;
-        end
-        pop1 = pop & ~pop2;
-        if (fv & ((~pop & (gn$q == g_of$0)) | (pop1 & (gn$q == g_of$1)) | (pop2 & (gn$q == g_of$2)))) begin
-            g$0$d = fval;
-        end
-        if (fv & ((~pop & (gn$q == g_of$1)) | (pop1 & (gn$q == g_of$2)) | (pop2 & (gn$q == g_of$3)))) begin
-            g$1$d = fval;
-        end
-        if (fv & ((~pop & (gn$q == g_of$2)) | (pop1 & (gn$q == g_of$3)) | (pop2 & (gn$q == g_of$4)))) begin
-            g$2$d = fval;
-        end
-        if (fv & ((~pop & (gn$q == g_of$3)) | (pop1 & (gn$q == g_of$4)) | (pop2 & (gn$q == g_of$5)))) begin
-            g$3$d = fval;
-        end
-        if (fv & ((~pop & (gn$q == g_of$4)) | (pop1 & (gn$q == g_of$5)) | (pop2 & (gn$q == g_of$6)))) begin
-            g$4$d = fval;
-        end
-        if (fv & ((~pop & (gn$q == g_of$5)) | (pop1 & (gn$q == g_of$6)) | (pop2 & (gn$q == g_of$7)))) begin
-            g$5$d = fval;
-        end
-        if (fv & ((~pop & (gn$q == g_of$6)) | (pop1 & (gn$q == g_of$7)) | (pop2 & (gn$q == g_of$8)))) begin
-            g$6$d = fval;
-        end
-        if (fv & ((~pop & (gn$q == g_of$7)) | (pop1 & (gn$q == g_of$8)) | (pop2 & (gn$q == g_of$9)))) begin
-            g$7$d = fval;
-        end
-        gn_p1 = gn$q + one4;
-        gn_m1 = gn$q - one4;
-        gn_m2 = gn$q - two4;
-        if (fv) begin
-            gn$d = gn_p1;
-        end
-        if (pop1) begin
-            if (fv) begin
-                gn$d = gn$q;
-            end
-            else begin
-                gn$d = gn_m1;
-            end
-        end
-        if (pop2) begin
-            if (fv) begin
-                gn$d = gn_m1;
-            end
-            else begin
-                gn$d = gn_m2;
-            end
-        end
-        gear_used = gn$q;
-        issue = active$q & ((outst$q < four3) | fire);
-        fb$read_en = issue;
-        fb$read_addr = rpix$q[18:2];
-        r1v$d = issue;
-        if (issue) begin
-            r1_sub$d = rpix$q[1:0];
-            r1_n$d = lpb3;
-            r1_last$d = 1'b0;
-            if (lastb$q) begin
-                r1_n$d = last_n$q;
-                r1_last$d = 1'b1;
-                active$d = 1'b0;
-            end
-            rpix$d = rpix$q + lpb20;
-            beats$d = beats$q - one20;
-            lastb$d = beats$q == one20;
-        end
-        if (issue & ~fire) begin
-            outst$d = outst$q + one3;
-        end
-        if (~issue & fire) begin
-            outst$d = outst$q - one3;
-        end
-        r2v$d = r1v$q;
-        r2_sub$d = r1_sub$q;
-        r2_n$d = r1_n$q;
-        r2_last$d = r1_last$q;
-        st$0 = b2_0;
-        st$1 = b2_0;
-        st$2 = b2_0;
-        st$3 = b2_0;
-        idx = r2_sub$q + slot_off$0;
-        if (idx == b2_0) begin
-            st$0 = fb$read_data[1:0];
-        end
-        if (idx == b2_1) begin
-            st$0 = fb$read_data[3:2];
-        end
-        if (idx == b2_2) begin
-            st$0 = fb$read_data[5:4];
-        end
-        if (idx == b2_3) begin
-            st$0 = fb$read_data[7:6];
-        end
-        if (slot_idx$0 >= r2_n$q) begin
-            st$0 = b2_0;
-        end
-        idx = r2_sub$q + slot_off$1;
-        if (idx == b2_0) begin
-            st$1 = fb$read_data[1:0];
-        end
-        if (idx == b2_1) begin
-            st$1 = fb$read_data[3:2];
-        end
-        if (idx == b2_2) begin
-            st$1 = fb$read_data[5:4];
-        end
-        if (idx == b2_3) begin
-            st$1 = fb$read_data[7:6];
-        end
-        if (slot_idx$1 >= r2_n$q) begin
-            st$1 = b2_0;
-        end
-        idx = r2_sub$q + slot_off$2;
-        if (idx == b2_0) begin
-            st$2 = fb$read_data[1:0];
-        end
-        if (idx == b2_1) begin
-            st$2 = fb$read_data[3:2];
-        end
-        if (idx == b2_2) begin
-            st$2 = fb$read_data[5:4];
-        end
-        if (idx == b2_3) begin
-            st$2 = fb$read_data[7:6];
-        end
-        if (slot_idx$2 >= r2_n$q) begin
-            st$2 = b2_0;
-        end
-        idx = r2_sub$q + slot_off$3;
-        if (idx == b2_0) begin
-            st$3 = fb$read_data[1:0];
-        end
-        if (idx == b2_1) begin
-            st$3 = fb$read_data[3:2];
-        end
-        if (idx == b2_2) begin
-            st$3 = fb$read_data[5:4];
-        end
-        if (idx == b2_3) begin
-            st$3 = fb$read_data[7:6];
-        end
-        if (slot_idx$3 >= r2_n$q) begin
-            st$3 = b2_0;
-        end
-        src$0 = s_cur;
-        nnew$0 = zero3;
-        src$1 = src$0;
-        nnew$1 = nnew$0;
-        if (st$0 == b2_2) begin
-            src$1 = nnew$0 + k_of$0;
-            nnew$1 = nnew$0 + one3;
-        end
-        if (st$0 == b2_3) begin
-            src$1 = s_zero;
-        end
-        slot$0 = src$1;
-        if (st$0 == b2_0) begin
-            slot$0 = s_zero;
-        end
-        src$2 = src$1;
-        nnew$2 = nnew$1;
-        if (st$1 == b2_2) begin
-            src$2 = nnew$1 + k_of$0;
-            nnew$2 = nnew$1 + one3;
-        end
-        if (st$1 == b2_3) begin
-            src$2 = s_zero;
-        end
-        slot$1 = src$2;
-        if (st$1 == b2_0) begin
-            slot$1 = s_zero;
-        end
-        src$3 = src$2;
-        nnew$3 = nnew$2;
-        if (st$2 == b2_2) begin
-            src$3 = nnew$2 + k_of$0;
-            nnew$3 = nnew$2 + one3;
-        end
-        if (st$2 == b2_3) begin
-            src$3 = s_zero;
-        end
-        slot$2 = src$3;
-        if (st$2 == b2_0) begin
-            slot$2 = s_zero;
-        end
-        src$4 = src$3;
-        nnew$4 = nnew$3;
-        if (st$3 == b2_2) begin
-            src$4 = nnew$3 + k_of$0;
-            nnew$4 = nnew$3 + one3;
-        end
-        if (st$3 == b2_3) begin
-            src$4 = s_zero;
-        end
-        slot$3 = src$4;
-        if (st$3 == b2_0) begin
-            slot$3 = s_zero;
-        end
-        d3v$d = r2v$q;
-        d3$d[2:0] = slot$0;
-        d3$d[5:3] = slot$1;
-        d3$d[8:6] = slot$2;
-        d3$d[11:9] = slot$3;
-        d3$d[14:12] = src$4;
-        d3$d[17:15] = nnew$4;
-        d3$d[25:18] = keep_n$0;
-        if (r2_n$q == n_of$0) begin
-            d3$d[25:18] = keep_n$0;
-        end
-        if (r2_n$q == n_of$1) begin
-            d3$d[25:18] = keep_n$1;
-        end
-        if (r2_n$q == n_of$2) begin
-            d3$d[25:18] = keep_n$2;
-        end
-        if (r2_n$q == n_of$3) begin
-            d3$d[25:18] = keep_n$3;
-        end
-        if (r2_n$q == n_of$4) begin
-            d3$d[25:18] = keep_n$4;
-        end
-        d3$d[26:26] = r2_last$q;
-        if (fire) begin
-            sk$0$d = sk$1$q;
-        end
-        if (fire) begin
-            sk$1$d = sk$2$q;
-        end
-        if (fire) begin
-            sk$2$d = sk$3$q;
-        end
-        if (fire) begin
-            if (d3v$q & (skn$q == n_of$1)) begin
-                sk$0$d = d3$q;
-            end
-        end
-        else if (d3v$q & (skn$q == n_of$0)) begin
-            sk$0$d = d3$q;
-        end
-        if (fire) begin
-            if (d3v$q & (skn$q == n_of$2)) begin
-                sk$1$d = d3$q;
-            end
-        end
-        else if (d3v$q & (skn$q == n_of$1)) begin
-            sk$1$d = d3$q;
-        end
-        if (fire) begin
-            if (d3v$q & (skn$q == n_of$3)) begin
-                sk$2$d = d3$q;
-            end
-        end
-        else if (d3v$q & (skn$q == n_of$2)) begin
-            sk$2$d = d3$q;
-        end
-        if (fire) begin
-            if (d3v$q & (skn$q == n_of$4)) begin
-                sk$3$d = d3$q;
-            end
-        end
-        else if (d3v$q & (skn$q == n_of$3)) begin
-            sk$3$d = d3$q;
-        end
-        if (d3v$q & ~fire) begin
-            skn$d = skn$q + one3;
-        end
-        if (~d3v$q & fire) begin
-            skn$d = skn$q - one3;
-        end
-        if (rb_start) begin
-            active$d = 1'b1;
-            rpix$d = zero20;
-            beats$d = beats_m1$q;
-            lastb$d = beats_m1$q == zero20;
-            outst$d = zero3;
-            r1v$d = 1'b0;
-            r2v$d = 1'b0;
-            d3v$d = 1'b0;
-            skn$d = zero3;
-            u$d = zero3;
-            cur_run$d = zero16;
-            gn$d = zero4;
-            gstall$d = zero24;
-        end
-        if (rst) begin
-            active$d = 1'b0;
-            outst$d = zero3;
-            r1v$d = 1'b0;
-            r2v$d = 1'b0;
-            d3v$d = 1'b0;
-            skn$d = zero3;
-            u$d = zero3;
-            o_valid$d = 1'b0;
-            gn$d = zero4;
-            wsub$d = b2_0;
-            waddr$d = zero17;
-            wcnt$d = zero20;
-        end
-        m_axis_tdata = o_data$q;
-        m_axis_tkeep = o_keep$q;
-        m_axis_tvalid = o_valid$q;
-        m_axis_tlast = o_last$q;
-        rb_done = o_valid$q & m_axis_tready & o_last$q;
-        gear_stalls = gstall$q;
+        pipeline$clk = clk;
+        queue$clk = clk;
+        gearbox$clk = clk;
+        assembly$clk = clk;
+        writer$rst = rst;
+        pipeline$rst = rst;
+        queue$rst = rst;
+        gearbox$rst = rst;
+        assembly$rst = rst;
+        writer$pixel_valid = wr_valid;
+        writer$pixel_code = wr_state;
+        writer$pixel_last = wr_last;
+        fb$write_en = writer$write_en;
+        fb$write_addr = writer$write_addr;
+        fb$write_data = writer$write_data;
+        pipeline$start = rb_start;
+        pipeline$beats_m1 = writer$beats_m1;
+        pipeline$last_beat_labels = writer$last_beat_labels;
+        pipeline$beat_done = assembly$head_done;
+        fb$read_en = pipeline$read_en;
+        fb$read_addr = pipeline$read_addr;
+        pipeline$read_data = fb$read_data;
+        queue$clear = rb_start;
+        queue$in_valid = pipeline$beat_valid;
+        queue$in_beat = pipeline$beat;
+        queue$pop = assembly$head_done;
+        gearbox$clear = rb_start;
+        gearbox$push_valid = fv;
+        gearbox$push_label = fval;
+        gearbox$pop = assembly$gear_pop;
+        gearbox$pop_two = assembly$gear_pop_two;
+        gear_used = gearbox$used;
+        assembly$clear = rb_start;
+        assembly$head_valid = queue$head_valid;
+        assembly$head = queue$head;
+        assembly$gear_front = gearbox$front;
+        assembly$gear_second = gearbox$second;
+        assembly$gear_has_one = gearbox$has_one;
+        assembly$gear_has_two = gearbox$has_two;
+        assembly$m_axis_tready = m_axis_tready;
+        m_axis_tdata = assembly$m_axis_tdata;
+        m_axis_tkeep = assembly$m_axis_tkeep;
+        m_axis_tvalid = assembly$m_axis_tvalid;
+        m_axis_tlast = assembly$m_axis_tlast;
+        rb_done = assembly$frame_sent;
+        gear_stalls = assembly$gear_stalls;
     end
 
 endmodule // fcc_label_update_k7_668cf05b
 
 
-module fcc_label_update__active_k7_668cf05b(d,q,clock);
+module fcc_label_update__assembly_k7_668cf05b(clk,rst,clear,head_valid,head,head_done,gear_front,gear_second,gear_has_one,gear_has_two,gear_pop,gear_pop_two,m_axis_tdata,m_axis_tkeep,m_axis_tvalid,m_axis_tlast,m_axis_tready,frame_sent,gear_stalls);
 
     // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
+    input wire  clk;
+    input wire  rst;
+    input wire  clear;
+    input wire  head_valid;
+    input wire  [26:0] head;
+    output reg  head_done;
+    input wire  [15:0] gear_front;
+    input wire  [15:0] gear_second;
+    input wire  gear_has_one;
+    input wire  gear_has_two;
+    output reg  gear_pop;
+    output reg  gear_pop_two;
+    output reg  [63:0] m_axis_tdata;
+    output reg  [7:0] m_axis_tkeep;
+    output reg  m_axis_tvalid;
+    output reg  m_axis_tlast;
+    input wire  m_axis_tready;
+    output reg  frame_sent;
+    output reg  [23:0] gear_stalls;
 
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
+    // Constant declarations
+    localparam  count$0 = 3'b0;
+    localparam  count$1 = 3'b1;
+    localparam  count$2 = 3'b10;
+    localparam  count$3 = 3'b11;
+    localparam  count$4 = 3'b100;
+    localparam  one3 = 3'b1;
+    localparam  two3 = 3'b10;
+    localparam  zero3 = 3'b0;
+    localparam  one24 = 24'h1;
+    localparam  zero24 = 24'h0;
+
+    // Stub signals
+    reg  [2:0] slot_mux$0$source;
+    reg  [2:0] slot_mux$0$taken;
+    reg  [15:0] slot_mux$0$carried;
+    reg  [63:0] slot_mux$0$collected;
+    reg  [15:0] slot_mux$0$gear_head;
+    reg  [15:0] slot_mux$0$gear_next;
+    wire  [15:0] slot_mux$0$label;
+    reg  [2:0] slot_mux$1$source;
+    reg  [2:0] slot_mux$1$taken;
+    reg  [15:0] slot_mux$1$carried;
+    reg  [63:0] slot_mux$1$collected;
+    reg  [15:0] slot_mux$1$gear_head;
+    reg  [15:0] slot_mux$1$gear_next;
+    wire  [15:0] slot_mux$1$label;
+    reg  [2:0] slot_mux$2$source;
+    reg  [2:0] slot_mux$2$taken;
+    reg  [15:0] slot_mux$2$carried;
+    reg  [63:0] slot_mux$2$collected;
+    reg  [15:0] slot_mux$2$gear_head;
+    reg  [15:0] slot_mux$2$gear_next;
+    wire  [15:0] slot_mux$2$label;
+    reg  [2:0] slot_mux$3$source;
+    reg  [2:0] slot_mux$3$taken;
+    reg  [15:0] slot_mux$3$carried;
+    reg  [63:0] slot_mux$3$collected;
+    reg  [15:0] slot_mux$3$gear_head;
+    reg  [15:0] slot_mux$3$gear_next;
+    wire  [15:0] slot_mux$3$label;
+    reg  [2:0] run_mux$source;
+    reg  [2:0] run_mux$taken;
+    reg  [15:0] run_mux$carried;
+    reg  [63:0] run_mux$collected;
+    reg  [15:0] run_mux$gear_head;
+    reg  [15:0] run_mux$gear_next;
+    wire  [15:0] run_mux$label;
+    reg  [2:0] taken$d;
+    wire  [2:0] taken$q;
+    reg  taken$clock;
+    reg  [15:0] collected$0$d;
+    wire  [15:0] collected$0$q;
+    reg  collected$0$clock;
+    reg  [15:0] collected$1$d;
+    wire  [15:0] collected$1$q;
+    reg  collected$1$clock;
+    reg  [15:0] collected$2$d;
+    wire  [15:0] collected$2$q;
+    reg  collected$2$clock;
+    reg  [15:0] collected$3$d;
+    wire  [15:0] collected$3$q;
+    reg  collected$3$clock;
+    reg  [15:0] carried_run$d;
+    wire  [15:0] carried_run$q;
+    reg  carried_run$clock;
+    reg  out_valid$d;
+    wire  out_valid$q;
+    reg  out_valid$clock;
+    reg  [63:0] out_data$d;
+    wire  [63:0] out_data$q;
+    reg  out_data$clock;
+    reg  [7:0] out_keep$d;
+    wire  [7:0] out_keep$q;
+    reg  out_keep$clock;
+    reg  out_last$d;
+    wire  out_last$q;
+    reg  out_last$clock;
+    reg  [23:0] stall_count$d;
+    wire  [23:0] stall_count$q;
+    reg  stall_count$clock;
+    reg  clear_s1$d;
+    wire  clear_s1$q;
+    reg  clear_s1$clock;
+
+    // Local signals
+    reg  [63:0] collected_word;
+    reg  out_free;
+    reg  needs_none;
+    reg  needs_one;
+    reg  needs_two;
+    reg  needs_two_plus;
+    reg  done;
+
+    // Sub module instances
+    fcc_label_update__assembly__slot_mux__0_k7_668cf05b slot_mux$0(
+        .source(slot_mux$0$source),
+        .taken(slot_mux$0$taken),
+        .carried(slot_mux$0$carried),
+        .collected(slot_mux$0$collected),
+        .gear_head(slot_mux$0$gear_head),
+        .gear_next(slot_mux$0$gear_next),
+        .label(slot_mux$0$label)
+    );
+    fcc_label_update__assembly__slot_mux__1_k7_668cf05b slot_mux$1(
+        .source(slot_mux$1$source),
+        .taken(slot_mux$1$taken),
+        .carried(slot_mux$1$carried),
+        .collected(slot_mux$1$collected),
+        .gear_head(slot_mux$1$gear_head),
+        .gear_next(slot_mux$1$gear_next),
+        .label(slot_mux$1$label)
+    );
+    fcc_label_update__assembly__slot_mux__2_k7_668cf05b slot_mux$2(
+        .source(slot_mux$2$source),
+        .taken(slot_mux$2$taken),
+        .carried(slot_mux$2$carried),
+        .collected(slot_mux$2$collected),
+        .gear_head(slot_mux$2$gear_head),
+        .gear_next(slot_mux$2$gear_next),
+        .label(slot_mux$2$label)
+    );
+    fcc_label_update__assembly__slot_mux__3_k7_668cf05b slot_mux$3(
+        .source(slot_mux$3$source),
+        .taken(slot_mux$3$taken),
+        .carried(slot_mux$3$carried),
+        .collected(slot_mux$3$collected),
+        .gear_head(slot_mux$3$gear_head),
+        .gear_next(slot_mux$3$gear_next),
+        .label(slot_mux$3$label)
+    );
+    fcc_label_update__assembly__run_mux_k7_668cf05b run_mux(
+        .source(run_mux$source),
+        .taken(run_mux$taken),
+        .carried(run_mux$carried),
+        .collected(run_mux$collected),
+        .gear_head(run_mux$gear_head),
+        .gear_next(run_mux$gear_next),
+        .label(run_mux$label)
+    );
+    fcc_label_update__assembly__taken_k7_668cf05b taken(
+        .d(taken$d),
+        .q(taken$q),
+        .clock(taken$clock)
+    );
+    fcc_label_update__assembly__collected__0_k7_668cf05b collected$0(
+        .d(collected$0$d),
+        .q(collected$0$q),
+        .clock(collected$0$clock)
+    );
+    fcc_label_update__assembly__collected__1_k7_668cf05b collected$1(
+        .d(collected$1$d),
+        .q(collected$1$q),
+        .clock(collected$1$clock)
+    );
+    fcc_label_update__assembly__collected__2_k7_668cf05b collected$2(
+        .d(collected$2$d),
+        .q(collected$2$q),
+        .clock(collected$2$clock)
+    );
+    fcc_label_update__assembly__collected__3_k7_668cf05b collected$3(
+        .d(collected$3$d),
+        .q(collected$3$q),
+        .clock(collected$3$clock)
+    );
+    fcc_label_update__assembly__carried_run_k7_668cf05b carried_run(
+        .d(carried_run$d),
+        .q(carried_run$q),
+        .clock(carried_run$clock)
+    );
+    fcc_label_update__assembly__out_valid_k7_668cf05b out_valid(
+        .d(out_valid$d),
+        .q(out_valid$q),
+        .clock(out_valid$clock)
+    );
+    fcc_label_update__assembly__out_data_k7_668cf05b out_data(
+        .d(out_data$d),
+        .q(out_data$q),
+        .clock(out_data$clock)
+    );
+    fcc_label_update__assembly__out_keep_k7_668cf05b out_keep(
+        .d(out_keep$d),
+        .q(out_keep$q),
+        .clock(out_keep$clock)
+    );
+    fcc_label_update__assembly__out_last_k7_668cf05b out_last(
+        .d(out_last$d),
+        .q(out_last$q),
+        .clock(out_last$clock)
+    );
+    fcc_label_update__assembly__stall_count_k7_668cf05b stall_count(
+        .d(stall_count$d),
+        .q(stall_count$q),
+        .clock(stall_count$clock)
+    );
+    fcc_label_update__assembly__clear_s1_k7_668cf05b clear_s1(
+        .d(clear_s1$d),
+        .q(clear_s1$q),
+        .clock(clear_s1$clock)
+    );
+
+    // Update code
+    always @(*) begin
+        taken$clock = clk;
+        carried_run$clock = clk;
+        out_valid$clock = clk;
+        out_data$clock = clk;
+        out_keep$clock = clk;
+        out_last$clock = clk;
+        stall_count$clock = clk;
+        clear_s1$clock = clk;
+        taken$d = taken$q;
+        carried_run$d = carried_run$q;
+        out_valid$d = out_valid$q;
+        out_data$d = out_data$q;
+        out_keep$d = out_keep$q;
+        out_last$d = out_last$q;
+        stall_count$d = stall_count$q;
+        clear_s1$d = clear_s1$q;
+        collected$0$clock = clk;
+        collected$0$d = collected$0$q;
+        collected$1$clock = clk;
+        collected$1$d = collected$1$q;
+        collected$2$clock = clk;
+        collected$2$d = collected$2$q;
+        collected$3$clock = clk;
+        collected$3$d = collected$3$q;
+        out_free = ~out_valid$q | m_axis_tready;
+        needs_none = head[17:15] == taken$q;
+        needs_one = 1'b0;
+        needs_two = 1'b0;
+        needs_two_plus = 1'b0;
+        if ((taken$q == count$0) & (head[17:15] == count$1)) begin
+            needs_one = 1'b1;
+        end
+        if ((taken$q == count$1) & (head[17:15] == count$2)) begin
+            needs_one = 1'b1;
+        end
+        if ((taken$q == count$2) & (head[17:15] == count$3)) begin
+            needs_one = 1'b1;
+        end
+        if ((taken$q == count$3) & (head[17:15] == count$4)) begin
+            needs_one = 1'b1;
+        end
+        if ((taken$q == count$0) & (head[17:15] == count$2)) begin
+            needs_two = 1'b1;
+            needs_two_plus = 1'b1;
+        end
+        if ((taken$q == count$1) & (head[17:15] == count$3)) begin
+            needs_two = 1'b1;
+            needs_two_plus = 1'b1;
+        end
+        if ((taken$q == count$2) & (head[17:15] == count$4)) begin
+            needs_two = 1'b1;
+            needs_two_plus = 1'b1;
+        end
+        if ((taken$q == count$0) & (head[17:15] == count$3)) begin
+            needs_two_plus = 1'b1;
+        end
+        if ((taken$q == count$1) & (head[17:15] == count$4)) begin
+            needs_two_plus = 1'b1;
+        end
+        if ((taken$q == count$0) & (head[17:15] == count$4)) begin
+            needs_two_plus = 1'b1;
+        end
+        gear_pop_two = head_valid & needs_two_plus & gear_has_two;
+        gear_pop = head_valid & ~needs_none & gear_has_one;
+        done = head_valid & out_free & (needs_none | (needs_one & gear_has_one) | (needs_two & gear_has_two));
+        head_done = done;
+        collected_word[15:0] = collected$0$q;
+        collected_word[31:16] = collected$1$q;
+        collected_word[47:32] = collected$2$q;
+        collected_word[63:48] = collected$3$q;
+        slot_mux$0$taken = taken$q;
+        slot_mux$0$carried = carried_run$q;
+        slot_mux$0$collected = collected_word;
+        slot_mux$0$gear_head = gear_front;
+        slot_mux$0$gear_next = gear_second;
+        slot_mux$1$taken = taken$q;
+        slot_mux$1$carried = carried_run$q;
+        slot_mux$1$collected = collected_word;
+        slot_mux$1$gear_head = gear_front;
+        slot_mux$1$gear_next = gear_second;
+        slot_mux$2$taken = taken$q;
+        slot_mux$2$carried = carried_run$q;
+        slot_mux$2$collected = collected_word;
+        slot_mux$2$gear_head = gear_front;
+        slot_mux$2$gear_next = gear_second;
+        slot_mux$3$taken = taken$q;
+        slot_mux$3$carried = carried_run$q;
+        slot_mux$3$collected = collected_word;
+        slot_mux$3$gear_head = gear_front;
+        slot_mux$3$gear_next = gear_second;
+        slot_mux$0$source = head[2:0];
+        slot_mux$1$source = head[5:3];
+        slot_mux$2$source = head[8:6];
+        slot_mux$3$source = head[11:9];
+        run_mux$source = head[14:12];
+        run_mux$taken = taken$q;
+        run_mux$carried = carried_run$q;
+        run_mux$collected = collected_word;
+        run_mux$gear_head = gear_front;
+        run_mux$gear_next = gear_second;
+        if (gear_pop) begin
+            if (taken$q == count$0) begin
+                collected$0$d = gear_front;
+            end
+            if (taken$q == count$1) begin
+                collected$1$d = gear_front;
+            end
+            if (taken$q == count$2) begin
+                collected$2$d = gear_front;
+            end
+            if (taken$q == count$3) begin
+                collected$3$d = gear_front;
+            end
+            taken$d = taken$q + one3;
+        end
+        if (gear_pop_two) begin
+            if (taken$q == count$0) begin
+                collected$1$d = gear_second;
+            end
+            if (taken$q == count$1) begin
+                collected$2$d = gear_second;
+            end
+            if (taken$q == count$2) begin
+                collected$3$d = gear_second;
+            end
+            taken$d = taken$q + two3;
+        end
+        if (out_valid$q & m_axis_tready) begin
+            out_valid$d = 1'b0;
+        end
+        if (out_free) begin
+            out_data$d[15:0] = slot_mux$0$label;
+            out_data$d[31:16] = slot_mux$1$label;
+            out_data$d[47:32] = slot_mux$2$label;
+        end
+        if (done) begin
+            carried_run$d = run_mux$label;
+            taken$d = zero3;
+            out_valid$d = 1'b1;
+            out_data$d[63:48] = slot_mux$3$label;
+            out_keep$d = head[25:18];
+            out_last$d = head[26:26];
+        end
+        if (head_valid & ~done & out_free) begin
+            stall_count$d = stall_count$q + one24;
+        end
+        clear_s1$d = clear;
+        if (clear_s1$q) begin
+            stall_count$d = zero24;
+        end
+        if (clear) begin
+            taken$d = zero3;
+        end
+        if (rst) begin
+            taken$d = zero3;
+            out_valid$d = 1'b0;
+        end
+        m_axis_tdata = out_data$q;
+        m_axis_tkeep = out_keep$q;
+        m_axis_tvalid = out_valid$q;
+        m_axis_tlast = out_last$q;
+        frame_sent = out_valid$q & m_axis_tready & out_last$q;
+        gear_stalls = stall_count$q;
     end
 
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__active_k7_668cf05b
+endmodule // fcc_label_update__assembly_k7_668cf05b
 
 
-module fcc_label_update__beats_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [19:0] d;
-    output reg  [19:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 20'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__beats_k7_668cf05b
-
-
-module fcc_label_update__beats_m1_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [19:0] d;
-    output reg  [19:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 20'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__beats_m1_k7_668cf05b
-
-
-module fcc_label_update__cur_run_k7_668cf05b(d,q,clock);
+module fcc_label_update__assembly__carried_run_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -7973,29 +7232,10 @@ module fcc_label_update__cur_run_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_label_update__cur_run_k7_668cf05b
+endmodule // fcc_label_update__assembly__carried_run_k7_668cf05b
 
 
-module fcc_label_update__d3_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [26:0] d;
-    output reg  [26:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 27'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__d3_k7_668cf05b
-
-
-module fcc_label_update__d3v_k7_668cf05b(d,q,clock);
+module fcc_label_update__assembly__clear_s1_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -8011,7 +7251,582 @@ module fcc_label_update__d3v_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_label_update__d3v_k7_668cf05b
+endmodule // fcc_label_update__assembly__clear_s1_k7_668cf05b
+
+
+module fcc_label_update__assembly__collected__0_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__assembly__collected__0_k7_668cf05b
+
+
+module fcc_label_update__assembly__collected__1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__assembly__collected__1_k7_668cf05b
+
+
+module fcc_label_update__assembly__collected__2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__assembly__collected__2_k7_668cf05b
+
+
+module fcc_label_update__assembly__collected__3_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__assembly__collected__3_k7_668cf05b
+
+
+module fcc_label_update__assembly__out_data_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [63:0] d;
+    output reg  [63:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__assembly__out_data_k7_668cf05b
+
+
+module fcc_label_update__assembly__out_keep_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__assembly__out_keep_k7_668cf05b
+
+
+module fcc_label_update__assembly__out_last_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__assembly__out_last_k7_668cf05b
+
+
+module fcc_label_update__assembly__out_valid_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__assembly__out_valid_k7_668cf05b
+
+
+module fcc_label_update__assembly__run_mux_k7_668cf05b(source,taken,carried,collected,gear_head,gear_next,label);
+
+    // Module arguments
+    input wire  [2:0] source;
+    input wire  [2:0] taken;
+    input wire  [15:0] carried;
+    input wire  [63:0] collected;
+    input wire  [15:0] gear_head;
+    input wire  [15:0] gear_next;
+    output reg  [15:0] label;
+
+    // Constant declarations
+    localparam  src_carried = 3'b1;
+    localparam  src_new$0 = 3'b10;
+    localparam  src_new$1 = 3'b11;
+    localparam  src_new$2 = 3'b100;
+    localparam  src_new$3 = 3'b101;
+    localparam  count$0 = 3'b0;
+    localparam  count$1 = 3'b1;
+    localparam  count$2 = 3'b10;
+    localparam  count$3 = 3'b11;
+    localparam  zero16 = 16'h0;
+
+    // Local signals
+    reg  [15:0] collected_k$0;
+    reg  [15:0] collected_k$1;
+    reg  [15:0] collected_k$2;
+    reg  [15:0] collected_k$3;
+
+    // Update code
+    always @(*) begin
+        collected_k$0 = collected[15:0];
+        collected_k$1 = collected[31:16];
+        collected_k$2 = collected[47:32];
+        collected_k$3 = collected[63:48];
+        label = zero16;
+        if (source == src_carried) begin
+            label = carried;
+        end
+        if (source == src_new$0) begin
+            label = collected_k$0;
+            if (taken == count$0) begin
+                label = gear_head;
+            end
+        end
+        if (source == src_new$1) begin
+            label = collected_k$1;
+            if (taken == count$1) begin
+                label = gear_head;
+            end
+        end
+        if (source == src_new$2) begin
+            label = collected_k$2;
+            if (taken == count$2) begin
+                label = gear_head;
+            end
+        end
+        if (source == src_new$3) begin
+            label = collected_k$3;
+            if (taken == count$3) begin
+                label = gear_head;
+            end
+        end
+        if ((source == src_new$1) & (taken == count$0)) begin
+            label = gear_next;
+        end
+        if ((source == src_new$2) & (taken == count$1)) begin
+            label = gear_next;
+        end
+        if ((source == src_new$3) & (taken == count$2)) begin
+            label = gear_next;
+        end
+    end
+
+endmodule // fcc_label_update__assembly__run_mux_k7_668cf05b
+
+
+module fcc_label_update__assembly__slot_mux__0_k7_668cf05b(source,taken,carried,collected,gear_head,gear_next,label);
+
+    // Module arguments
+    input wire  [2:0] source;
+    input wire  [2:0] taken;
+    input wire  [15:0] carried;
+    input wire  [63:0] collected;
+    input wire  [15:0] gear_head;
+    input wire  [15:0] gear_next;
+    output reg  [15:0] label;
+
+    // Constant declarations
+    localparam  src_carried = 3'b1;
+    localparam  src_new$0 = 3'b10;
+    localparam  src_new$1 = 3'b11;
+    localparam  src_new$2 = 3'b100;
+    localparam  src_new$3 = 3'b101;
+    localparam  count$0 = 3'b0;
+    localparam  count$1 = 3'b1;
+    localparam  count$2 = 3'b10;
+    localparam  count$3 = 3'b11;
+    localparam  zero16 = 16'h0;
+
+    // Local signals
+    reg  [15:0] collected_k$0;
+    reg  [15:0] collected_k$1;
+    reg  [15:0] collected_k$2;
+    reg  [15:0] collected_k$3;
+
+    // Update code
+    always @(*) begin
+        collected_k$0 = collected[15:0];
+        collected_k$1 = collected[31:16];
+        collected_k$2 = collected[47:32];
+        collected_k$3 = collected[63:48];
+        label = zero16;
+        if (source == src_carried) begin
+            label = carried;
+        end
+        if (source == src_new$0) begin
+            label = collected_k$0;
+            if (taken == count$0) begin
+                label = gear_head;
+            end
+        end
+        if (source == src_new$1) begin
+            label = collected_k$1;
+            if (taken == count$1) begin
+                label = gear_head;
+            end
+        end
+        if (source == src_new$2) begin
+            label = collected_k$2;
+            if (taken == count$2) begin
+                label = gear_head;
+            end
+        end
+        if (source == src_new$3) begin
+            label = collected_k$3;
+            if (taken == count$3) begin
+                label = gear_head;
+            end
+        end
+        if ((source == src_new$1) & (taken == count$0)) begin
+            label = gear_next;
+        end
+        if ((source == src_new$2) & (taken == count$1)) begin
+            label = gear_next;
+        end
+        if ((source == src_new$3) & (taken == count$2)) begin
+            label = gear_next;
+        end
+    end
+
+endmodule // fcc_label_update__assembly__slot_mux__0_k7_668cf05b
+
+
+module fcc_label_update__assembly__slot_mux__1_k7_668cf05b(source,taken,carried,collected,gear_head,gear_next,label);
+
+    // Module arguments
+    input wire  [2:0] source;
+    input wire  [2:0] taken;
+    input wire  [15:0] carried;
+    input wire  [63:0] collected;
+    input wire  [15:0] gear_head;
+    input wire  [15:0] gear_next;
+    output reg  [15:0] label;
+
+    // Constant declarations
+    localparam  src_carried = 3'b1;
+    localparam  src_new$0 = 3'b10;
+    localparam  src_new$1 = 3'b11;
+    localparam  src_new$2 = 3'b100;
+    localparam  src_new$3 = 3'b101;
+    localparam  count$0 = 3'b0;
+    localparam  count$1 = 3'b1;
+    localparam  count$2 = 3'b10;
+    localparam  count$3 = 3'b11;
+    localparam  zero16 = 16'h0;
+
+    // Local signals
+    reg  [15:0] collected_k$0;
+    reg  [15:0] collected_k$1;
+    reg  [15:0] collected_k$2;
+    reg  [15:0] collected_k$3;
+
+    // Update code
+    always @(*) begin
+        collected_k$0 = collected[15:0];
+        collected_k$1 = collected[31:16];
+        collected_k$2 = collected[47:32];
+        collected_k$3 = collected[63:48];
+        label = zero16;
+        if (source == src_carried) begin
+            label = carried;
+        end
+        if (source == src_new$0) begin
+            label = collected_k$0;
+            if (taken == count$0) begin
+                label = gear_head;
+            end
+        end
+        if (source == src_new$1) begin
+            label = collected_k$1;
+            if (taken == count$1) begin
+                label = gear_head;
+            end
+        end
+        if (source == src_new$2) begin
+            label = collected_k$2;
+            if (taken == count$2) begin
+                label = gear_head;
+            end
+        end
+        if (source == src_new$3) begin
+            label = collected_k$3;
+            if (taken == count$3) begin
+                label = gear_head;
+            end
+        end
+        if ((source == src_new$1) & (taken == count$0)) begin
+            label = gear_next;
+        end
+        if ((source == src_new$2) & (taken == count$1)) begin
+            label = gear_next;
+        end
+        if ((source == src_new$3) & (taken == count$2)) begin
+            label = gear_next;
+        end
+    end
+
+endmodule // fcc_label_update__assembly__slot_mux__1_k7_668cf05b
+
+
+module fcc_label_update__assembly__slot_mux__2_k7_668cf05b(source,taken,carried,collected,gear_head,gear_next,label);
+
+    // Module arguments
+    input wire  [2:0] source;
+    input wire  [2:0] taken;
+    input wire  [15:0] carried;
+    input wire  [63:0] collected;
+    input wire  [15:0] gear_head;
+    input wire  [15:0] gear_next;
+    output reg  [15:0] label;
+
+    // Constant declarations
+    localparam  src_carried = 3'b1;
+    localparam  src_new$0 = 3'b10;
+    localparam  src_new$1 = 3'b11;
+    localparam  src_new$2 = 3'b100;
+    localparam  src_new$3 = 3'b101;
+    localparam  count$0 = 3'b0;
+    localparam  count$1 = 3'b1;
+    localparam  count$2 = 3'b10;
+    localparam  count$3 = 3'b11;
+    localparam  zero16 = 16'h0;
+
+    // Local signals
+    reg  [15:0] collected_k$0;
+    reg  [15:0] collected_k$1;
+    reg  [15:0] collected_k$2;
+    reg  [15:0] collected_k$3;
+
+    // Update code
+    always @(*) begin
+        collected_k$0 = collected[15:0];
+        collected_k$1 = collected[31:16];
+        collected_k$2 = collected[47:32];
+        collected_k$3 = collected[63:48];
+        label = zero16;
+        if (source == src_carried) begin
+            label = carried;
+        end
+        if (source == src_new$0) begin
+            label = collected_k$0;
+            if (taken == count$0) begin
+                label = gear_head;
+            end
+        end
+        if (source == src_new$1) begin
+            label = collected_k$1;
+            if (taken == count$1) begin
+                label = gear_head;
+            end
+        end
+        if (source == src_new$2) begin
+            label = collected_k$2;
+            if (taken == count$2) begin
+                label = gear_head;
+            end
+        end
+        if (source == src_new$3) begin
+            label = collected_k$3;
+            if (taken == count$3) begin
+                label = gear_head;
+            end
+        end
+        if ((source == src_new$1) & (taken == count$0)) begin
+            label = gear_next;
+        end
+        if ((source == src_new$2) & (taken == count$1)) begin
+            label = gear_next;
+        end
+        if ((source == src_new$3) & (taken == count$2)) begin
+            label = gear_next;
+        end
+    end
+
+endmodule // fcc_label_update__assembly__slot_mux__2_k7_668cf05b
+
+
+module fcc_label_update__assembly__slot_mux__3_k7_668cf05b(source,taken,carried,collected,gear_head,gear_next,label);
+
+    // Module arguments
+    input wire  [2:0] source;
+    input wire  [2:0] taken;
+    input wire  [15:0] carried;
+    input wire  [63:0] collected;
+    input wire  [15:0] gear_head;
+    input wire  [15:0] gear_next;
+    output reg  [15:0] label;
+
+    // Constant declarations
+    localparam  src_carried = 3'b1;
+    localparam  src_new$0 = 3'b10;
+    localparam  src_new$1 = 3'b11;
+    localparam  src_new$2 = 3'b100;
+    localparam  src_new$3 = 3'b101;
+    localparam  count$0 = 3'b0;
+    localparam  count$1 = 3'b1;
+    localparam  count$2 = 3'b10;
+    localparam  count$3 = 3'b11;
+    localparam  zero16 = 16'h0;
+
+    // Local signals
+    reg  [15:0] collected_k$0;
+    reg  [15:0] collected_k$1;
+    reg  [15:0] collected_k$2;
+    reg  [15:0] collected_k$3;
+
+    // Update code
+    always @(*) begin
+        collected_k$0 = collected[15:0];
+        collected_k$1 = collected[31:16];
+        collected_k$2 = collected[47:32];
+        collected_k$3 = collected[63:48];
+        label = zero16;
+        if (source == src_carried) begin
+            label = carried;
+        end
+        if (source == src_new$0) begin
+            label = collected_k$0;
+            if (taken == count$0) begin
+                label = gear_head;
+            end
+        end
+        if (source == src_new$1) begin
+            label = collected_k$1;
+            if (taken == count$1) begin
+                label = gear_head;
+            end
+        end
+        if (source == src_new$2) begin
+            label = collected_k$2;
+            if (taken == count$2) begin
+                label = gear_head;
+            end
+        end
+        if (source == src_new$3) begin
+            label = collected_k$3;
+            if (taken == count$3) begin
+                label = gear_head;
+            end
+        end
+        if ((source == src_new$1) & (taken == count$0)) begin
+            label = gear_next;
+        end
+        if ((source == src_new$2) & (taken == count$1)) begin
+            label = gear_next;
+        end
+        if ((source == src_new$3) & (taken == count$2)) begin
+            label = gear_next;
+        end
+    end
+
+endmodule // fcc_label_update__assembly__slot_mux__3_k7_668cf05b
+
+
+module fcc_label_update__assembly__stall_count_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__assembly__stall_count_k7_668cf05b
+
+
+module fcc_label_update__assembly__taken_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__assembly__taken_k7_668cf05b
 
 
 module fcc_label_update__fb_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
@@ -8046,159 +7861,293 @@ module fcc_label_update__fb_k7_668cf05b(clk,read_en,read_addr,read_data,write_en
 endmodule // fcc_label_update__fb_k7_668cf05b
 
 
-module fcc_label_update__g__0_k7_668cf05b(d,q,clock);
+module fcc_label_update__gearbox_k7_668cf05b(clk,rst,clear,push_valid,push_label,pop,pop_two,front,second,used,has_one,has_two);
 
     // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
+    input wire  clk;
+    input wire  rst;
+    input wire  clear;
+    input wire  push_valid;
+    input wire  [15:0] push_label;
+    input wire  pop;
+    input wire  pop_two;
+    output reg  [15:0] front;
+    output reg  [15:0] second;
+    output reg  [3:0] used;
+    output reg  has_one;
+    output reg  has_two;
 
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
+    // Constant declarations
+    localparam  count_is$0 = 4'h0;
+    localparam  count_is$1 = 4'h1;
+    localparam  slot_is$0 = 3'b0;
+    localparam  slot_is$1 = 3'b1;
+    localparam  slot_is$2 = 3'b10;
+    localparam  slot_is$3 = 3'b11;
+    localparam  slot_is$4 = 3'b100;
+    localparam  slot_is$5 = 3'b101;
+    localparam  slot_is$6 = 3'b110;
+    localparam  slot_is$7 = 3'b111;
+    localparam  one = 4'h1;
+    localparam  two = 4'h2;
+    localparam  one3 = 3'b1;
+    localparam  two3 = 3'b10;
+
+    // Stub signals
+    reg  [15:0] slots$0$d;
+    wire  [15:0] slots$0$q;
+    reg  slots$0$clock;
+    reg  [15:0] slots$1$d;
+    wire  [15:0] slots$1$q;
+    reg  slots$1$clock;
+    reg  [15:0] slots$2$d;
+    wire  [15:0] slots$2$q;
+    reg  slots$2$clock;
+    reg  [15:0] slots$3$d;
+    wire  [15:0] slots$3$q;
+    reg  slots$3$clock;
+    reg  [15:0] slots$4$d;
+    wire  [15:0] slots$4$q;
+    reg  slots$4$clock;
+    reg  [15:0] slots$5$d;
+    wire  [15:0] slots$5$q;
+    reg  slots$5$clock;
+    reg  [15:0] slots$6$d;
+    wire  [15:0] slots$6$q;
+    reg  slots$6$clock;
+    reg  [15:0] slots$7$d;
+    wire  [15:0] slots$7$q;
+    reg  slots$7$clock;
+    reg  [3:0] count$d;
+    wire  [3:0] count$q;
+    reg  count$clock;
+    reg  [2:0] read_slot$d;
+    wire  [2:0] read_slot$q;
+    reg  read_slot$clock;
+    reg  [2:0] second_slot$d;
+    wire  [2:0] second_slot$q;
+    reg  second_slot$clock;
+    reg  [2:0] write_slot$d;
+    wire  [2:0] write_slot$q;
+    reg  write_slot$clock;
+
+    // Local signals
+    reg  pop_one;
+    reg  [3:0] count_inc;
+    reg  [3:0] count_dec;
+    reg  [3:0] count_dec2;
+
+    // Sub module instances
+    fcc_label_update__gearbox__slots__0_k7_668cf05b slots$0(
+        .d(slots$0$d),
+        .q(slots$0$q),
+        .clock(slots$0$clock)
+    );
+    fcc_label_update__gearbox__slots__1_k7_668cf05b slots$1(
+        .d(slots$1$d),
+        .q(slots$1$q),
+        .clock(slots$1$clock)
+    );
+    fcc_label_update__gearbox__slots__2_k7_668cf05b slots$2(
+        .d(slots$2$d),
+        .q(slots$2$q),
+        .clock(slots$2$clock)
+    );
+    fcc_label_update__gearbox__slots__3_k7_668cf05b slots$3(
+        .d(slots$3$d),
+        .q(slots$3$q),
+        .clock(slots$3$clock)
+    );
+    fcc_label_update__gearbox__slots__4_k7_668cf05b slots$4(
+        .d(slots$4$d),
+        .q(slots$4$q),
+        .clock(slots$4$clock)
+    );
+    fcc_label_update__gearbox__slots__5_k7_668cf05b slots$5(
+        .d(slots$5$d),
+        .q(slots$5$q),
+        .clock(slots$5$clock)
+    );
+    fcc_label_update__gearbox__slots__6_k7_668cf05b slots$6(
+        .d(slots$6$d),
+        .q(slots$6$q),
+        .clock(slots$6$clock)
+    );
+    fcc_label_update__gearbox__slots__7_k7_668cf05b slots$7(
+        .d(slots$7$d),
+        .q(slots$7$q),
+        .clock(slots$7$clock)
+    );
+    fcc_label_update__gearbox__count_k7_668cf05b count(
+        .d(count$d),
+        .q(count$q),
+        .clock(count$clock)
+    );
+    fcc_label_update__gearbox__read_slot_k7_668cf05b read_slot(
+        .d(read_slot$d),
+        .q(read_slot$q),
+        .clock(read_slot$clock)
+    );
+    fcc_label_update__gearbox__second_slot_k7_668cf05b second_slot(
+        .d(second_slot$d),
+        .q(second_slot$q),
+        .clock(second_slot$clock)
+    );
+    fcc_label_update__gearbox__write_slot_k7_668cf05b write_slot(
+        .d(write_slot$d),
+        .q(write_slot$q),
+        .clock(write_slot$clock)
+    );
+
+    // Update code
+    always @(*) begin
+        count$clock = clk;
+        read_slot$clock = clk;
+        second_slot$clock = clk;
+        write_slot$clock = clk;
+        count$d = count$q;
+        read_slot$d = read_slot$q;
+        second_slot$d = second_slot$q;
+        write_slot$d = write_slot$q;
+        slots$0$clock = clk;
+        slots$0$d = slots$0$q;
+        slots$1$clock = clk;
+        slots$1$d = slots$1$q;
+        slots$2$clock = clk;
+        slots$2$d = slots$2$q;
+        slots$3$clock = clk;
+        slots$3$d = slots$3$q;
+        slots$4$clock = clk;
+        slots$4$d = slots$4$q;
+        slots$5$clock = clk;
+        slots$5$d = slots$5$q;
+        slots$6$clock = clk;
+        slots$6$d = slots$6$q;
+        slots$7$clock = clk;
+        slots$7$d = slots$7$q;
+        used = count$q;
+        has_one = count$q != count_is$0;
+        has_two = (count$q != count_is$0) & (count$q != count_is$1);
+        front = slots$0$q;
+        second = slots$0$q;
+        if (read_slot$q == slot_is$0) begin
+            front = slots$0$q;
+        end
+        if (second_slot$q == slot_is$0) begin
+            second = slots$0$q;
+        end
+        if (read_slot$q == slot_is$1) begin
+            front = slots$1$q;
+        end
+        if (second_slot$q == slot_is$1) begin
+            second = slots$1$q;
+        end
+        if (read_slot$q == slot_is$2) begin
+            front = slots$2$q;
+        end
+        if (second_slot$q == slot_is$2) begin
+            second = slots$2$q;
+        end
+        if (read_slot$q == slot_is$3) begin
+            front = slots$3$q;
+        end
+        if (second_slot$q == slot_is$3) begin
+            second = slots$3$q;
+        end
+        if (read_slot$q == slot_is$4) begin
+            front = slots$4$q;
+        end
+        if (second_slot$q == slot_is$4) begin
+            second = slots$4$q;
+        end
+        if (read_slot$q == slot_is$5) begin
+            front = slots$5$q;
+        end
+        if (second_slot$q == slot_is$5) begin
+            second = slots$5$q;
+        end
+        if (read_slot$q == slot_is$6) begin
+            front = slots$6$q;
+        end
+        if (second_slot$q == slot_is$6) begin
+            second = slots$6$q;
+        end
+        if (read_slot$q == slot_is$7) begin
+            front = slots$7$q;
+        end
+        if (second_slot$q == slot_is$7) begin
+            second = slots$7$q;
+        end
+        if (push_valid) begin
+            if (write_slot$q == slot_is$0) begin
+                slots$0$d = push_label;
+            end
+            if (write_slot$q == slot_is$1) begin
+                slots$1$d = push_label;
+            end
+            if (write_slot$q == slot_is$2) begin
+                slots$2$d = push_label;
+            end
+            if (write_slot$q == slot_is$3) begin
+                slots$3$d = push_label;
+            end
+            if (write_slot$q == slot_is$4) begin
+                slots$4$d = push_label;
+            end
+            if (write_slot$q == slot_is$5) begin
+                slots$5$d = push_label;
+            end
+            if (write_slot$q == slot_is$6) begin
+                slots$6$d = push_label;
+            end
+            if (write_slot$q == slot_is$7) begin
+                slots$7$d = push_label;
+            end
+            write_slot$d = write_slot$q + one3;
+        end
+        if (pop) begin
+            read_slot$d = read_slot$q + one3;
+            second_slot$d = second_slot$q + one3;
+        end
+        if (pop_two) begin
+            read_slot$d = read_slot$q + two3;
+            second_slot$d = second_slot$q + two3;
+        end
+        pop_one = pop & ~pop_two;
+        count_inc = count$q + one;
+        count_dec = count$q - one;
+        count_dec2 = count$q - two;
+        if (push_valid) begin
+            count$d = count_inc;
+        end
+        if (pop_one) begin
+            if (push_valid) begin
+                count$d = count$q;
+            end
+            else begin
+                count$d = count_dec;
+            end
+        end
+        if (pop_two) begin
+            if (push_valid) begin
+                count$d = count_dec;
+            end
+            else begin
+                count$d = count_dec2;
+            end
+        end
+        if (clear | rst) begin
+            count$d = count_is$0;
+            read_slot$d = slot_is$0;
+            second_slot$d = slot_is$1;
+            write_slot$d = slot_is$0;
+        end
     end
 
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__g__0_k7_668cf05b
+endmodule // fcc_label_update__gearbox_k7_668cf05b
 
 
-module fcc_label_update__g__1_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__g__1_k7_668cf05b
-
-
-module fcc_label_update__g__2_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__g__2_k7_668cf05b
-
-
-module fcc_label_update__g__3_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__g__3_k7_668cf05b
-
-
-module fcc_label_update__g__4_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__g__4_k7_668cf05b
-
-
-module fcc_label_update__g__5_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__g__5_k7_668cf05b
-
-
-module fcc_label_update__g__6_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__g__6_k7_668cf05b
-
-
-module fcc_label_update__g__7_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__g__7_k7_668cf05b
-
-
-module fcc_label_update__gn_k7_668cf05b(d,q,clock);
+module fcc_label_update__gearbox__count_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [3:0] d;
@@ -8214,105 +8163,10 @@ module fcc_label_update__gn_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_label_update__gn_k7_668cf05b
+endmodule // fcc_label_update__gearbox__count_k7_668cf05b
 
 
-module fcc_label_update__gstall_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [23:0] d;
-    output reg  [23:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 24'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__gstall_k7_668cf05b
-
-
-module fcc_label_update__labs__0_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__labs__0_k7_668cf05b
-
-
-module fcc_label_update__labs__1_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__labs__1_k7_668cf05b
-
-
-module fcc_label_update__labs__2_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__labs__2_k7_668cf05b
-
-
-module fcc_label_update__labs__3_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__labs__3_k7_668cf05b
-
-
-module fcc_label_update__last_n_k7_668cf05b(d,q,clock);
+module fcc_label_update__gearbox__read_slot_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [2:0] d;
@@ -8328,105 +8182,10 @@ module fcc_label_update__last_n_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_label_update__last_n_k7_668cf05b
+endmodule // fcc_label_update__gearbox__read_slot_k7_668cf05b
 
 
-module fcc_label_update__lastb_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__lastb_k7_668cf05b
-
-
-module fcc_label_update__o_data_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [63:0] d;
-    output reg  [63:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 64'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__o_data_k7_668cf05b
-
-
-module fcc_label_update__o_keep_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__o_keep_k7_668cf05b
-
-
-module fcc_label_update__o_last_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__o_last_k7_668cf05b
-
-
-module fcc_label_update__o_valid_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__o_valid_k7_668cf05b
-
-
-module fcc_label_update__outst_k7_668cf05b(d,q,clock);
+module fcc_label_update__gearbox__second_slot_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [2:0] d;
@@ -8442,29 +8201,162 @@ module fcc_label_update__outst_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_label_update__outst_k7_668cf05b
+endmodule // fcc_label_update__gearbox__second_slot_k7_668cf05b
 
 
-module fcc_label_update__r1_last_k7_668cf05b(d,q,clock);
+module fcc_label_update__gearbox__slots__0_k7_668cf05b(d,q,clock);
 
     // Module arguments
-    input wire  d;
-    output reg  q;
+    input wire  [15:0] d;
+    output reg  [15:0] q;
     input wire  clock;
 
     // Update code (custom)
     initial begin
-       q = 1'h0;
+       q = 16'h0;
     end
 
     always @(posedge clock) begin
        q <= d;
     end
 
-endmodule // fcc_label_update__r1_last_k7_668cf05b
+endmodule // fcc_label_update__gearbox__slots__0_k7_668cf05b
 
 
-module fcc_label_update__r1_n_k7_668cf05b(d,q,clock);
+module fcc_label_update__gearbox__slots__1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__gearbox__slots__1_k7_668cf05b
+
+
+module fcc_label_update__gearbox__slots__2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__gearbox__slots__2_k7_668cf05b
+
+
+module fcc_label_update__gearbox__slots__3_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__gearbox__slots__3_k7_668cf05b
+
+
+module fcc_label_update__gearbox__slots__4_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__gearbox__slots__4_k7_668cf05b
+
+
+module fcc_label_update__gearbox__slots__5_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__gearbox__slots__5_k7_668cf05b
+
+
+module fcc_label_update__gearbox__slots__6_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__gearbox__slots__6_k7_668cf05b
+
+
+module fcc_label_update__gearbox__slots__7_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__gearbox__slots__7_k7_668cf05b
+
+
+module fcc_label_update__gearbox__write_slot_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [2:0] d;
@@ -8480,29 +8372,474 @@ module fcc_label_update__r1_n_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_label_update__r1_n_k7_668cf05b
+endmodule // fcc_label_update__gearbox__write_slot_k7_668cf05b
 
 
-module fcc_label_update__r1_sub_k7_668cf05b(d,q,clock);
+module fcc_label_update__pipeline_k7_668cf05b(clk,rst,start,beats_m1,last_beat_labels,beat_done,read_en,read_addr,read_data,beat_valid,beat);
 
     // Module arguments
-    input wire  [1:0] d;
-    output reg  [1:0] q;
-    input wire  clock;
+    input wire  clk;
+    input wire  rst;
+    input wire  start;
+    input wire  [19:0] beats_m1;
+    input wire  [2:0] last_beat_labels;
+    input wire  beat_done;
+    output reg  read_en;
+    output reg  [16:0] read_addr;
+    input wire  [7:0] read_data;
+    output reg  beat_valid;
+    output reg  [26:0] beat;
 
-    // Update code (custom)
-    initial begin
-       q = 2'h0;
+    // Constant declarations
+    localparam  pos$0 = 2'b0;
+    localparam  pos$1 = 2'b1;
+    localparam  pos$2 = 2'b10;
+    localparam  pos$3 = 2'b11;
+    localparam  slot_off$0 = 2'b0;
+    localparam  slot_off$1 = 2'b1;
+    localparam  slot_off$2 = 2'b10;
+    localparam  slot_off$3 = 2'b11;
+    localparam  slot_idx$0 = 3'b0;
+    localparam  slot_idx$1 = 3'b1;
+    localparam  slot_idx$2 = 3'b10;
+    localparam  slot_idx$3 = 3'b11;
+    localparam  keep_n$0 = 8'h0;
+    localparam  keep_n$1 = 8'h3;
+    localparam  keep_n$2 = 8'hf;
+    localparam  keep_n$3 = 8'h3f;
+    localparam  keep_n$4 = 8'hff;
+    localparam  labels$0 = 3'b0;
+    localparam  labels$1 = 3'b1;
+    localparam  labels$2 = 3'b10;
+    localparam  labels$3 = 3'b11;
+    localparam  labels$4 = 3'b100;
+    localparam  code_empty = 2'b0;
+    localparam  code_labelled = 2'b10;
+    localparam  code_unlabelled = 2'b11;
+    localparam  src_zero = 3'b0;
+    localparam  src_carried = 3'b1;
+    localparam  src_new = 3'b10;
+    localparam  max_in_flight = 3'b100;
+    localparam  lpb3 = 3'b100;
+    localparam  lpb20 = 20'h4;
+    localparam  one3 = 3'b1;
+    localparam  zero3 = 3'b0;
+    localparam  one20 = 20'h1;
+    localparam  zero20 = 20'h0;
+
+    // Stub signals
+    reg  active$d;
+    wire  active$q;
+    reg  active$clock;
+    reg  [19:0] pixel$d;
+    wire  [19:0] pixel$q;
+    reg  pixel$clock;
+    reg  [19:0] beats_left$d;
+    wire  [19:0] beats_left$q;
+    reg  beats_left$clock;
+    reg  last_next$d;
+    wire  last_next$q;
+    reg  last_next$clock;
+    reg  first_next$d;
+    wire  first_next$q;
+    reg  first_next$clock;
+    reg  [2:0] in_flight$d;
+    wire  [2:0] in_flight$q;
+    reg  in_flight$clock;
+    reg  valid_s1$d;
+    wire  valid_s1$q;
+    reg  valid_s1$clock;
+    reg  [1:0] word_pos_s1$d;
+    wire  [1:0] word_pos_s1$q;
+    reg  word_pos_s1$clock;
+    reg  [2:0] labels_s1$d;
+    wire  [2:0] labels_s1$q;
+    reg  labels_s1$clock;
+    reg  last_s1$d;
+    wire  last_s1$q;
+    reg  last_s1$clock;
+    reg  first_s1$d;
+    wire  first_s1$q;
+    reg  first_s1$clock;
+    reg  valid_s2$d;
+    wire  valid_s2$q;
+    reg  valid_s2$clock;
+    reg  [1:0] word_pos_s2$d;
+    wire  [1:0] word_pos_s2$q;
+    reg  word_pos_s2$clock;
+    reg  [2:0] labels_s2$d;
+    wire  [2:0] labels_s2$q;
+    reg  labels_s2$clock;
+    reg  last_s2$d;
+    wire  last_s2$q;
+    reg  last_s2$clock;
+    reg  first_s2$d;
+    wire  first_s2$q;
+    reg  first_s2$clock;
+    reg  valid_s3$d;
+    wire  valid_s3$q;
+    reg  valid_s3$clock;
+    reg  [26:0] beat_s3$d;
+    wire  [26:0] beat_s3$q;
+    reg  beat_s3$clock;
+
+    // Local signals
+    reg  issue;
+    reg  [1:0] code$0;
+    reg  [1:0] code$1;
+    reg  [1:0] code$2;
+    reg  [1:0] code$3;
+    reg  [2:0] run_src$0;
+    reg  [2:0] run_src$1;
+    reg  [2:0] run_src$2;
+    reg  [2:0] run_src$3;
+    reg  [2:0] run_src$4;
+    reg  [2:0] new_count$0;
+    reg  [2:0] new_count$1;
+    reg  [2:0] new_count$2;
+    reg  [2:0] new_count$3;
+    reg  [2:0] new_count$4;
+    reg  [2:0] slot_src$0;
+    reg  [2:0] slot_src$1;
+    reg  [2:0] slot_src$2;
+    reg  [2:0] slot_src$3;
+    reg  [1:0] pos_in_word;
+
+    // Sub module instances
+    fcc_label_update__pipeline__active_k7_668cf05b active(
+        .d(active$d),
+        .q(active$q),
+        .clock(active$clock)
+    );
+    fcc_label_update__pipeline__pixel_k7_668cf05b pixel(
+        .d(pixel$d),
+        .q(pixel$q),
+        .clock(pixel$clock)
+    );
+    fcc_label_update__pipeline__beats_left_k7_668cf05b beats_left(
+        .d(beats_left$d),
+        .q(beats_left$q),
+        .clock(beats_left$clock)
+    );
+    fcc_label_update__pipeline__last_next_k7_668cf05b last_next(
+        .d(last_next$d),
+        .q(last_next$q),
+        .clock(last_next$clock)
+    );
+    fcc_label_update__pipeline__first_next_k7_668cf05b first_next(
+        .d(first_next$d),
+        .q(first_next$q),
+        .clock(first_next$clock)
+    );
+    fcc_label_update__pipeline__in_flight_k7_668cf05b in_flight(
+        .d(in_flight$d),
+        .q(in_flight$q),
+        .clock(in_flight$clock)
+    );
+    fcc_label_update__pipeline__valid_s1_k7_668cf05b valid_s1(
+        .d(valid_s1$d),
+        .q(valid_s1$q),
+        .clock(valid_s1$clock)
+    );
+    fcc_label_update__pipeline__word_pos_s1_k7_668cf05b word_pos_s1(
+        .d(word_pos_s1$d),
+        .q(word_pos_s1$q),
+        .clock(word_pos_s1$clock)
+    );
+    fcc_label_update__pipeline__labels_s1_k7_668cf05b labels_s1(
+        .d(labels_s1$d),
+        .q(labels_s1$q),
+        .clock(labels_s1$clock)
+    );
+    fcc_label_update__pipeline__last_s1_k7_668cf05b last_s1(
+        .d(last_s1$d),
+        .q(last_s1$q),
+        .clock(last_s1$clock)
+    );
+    fcc_label_update__pipeline__first_s1_k7_668cf05b first_s1(
+        .d(first_s1$d),
+        .q(first_s1$q),
+        .clock(first_s1$clock)
+    );
+    fcc_label_update__pipeline__valid_s2_k7_668cf05b valid_s2(
+        .d(valid_s2$d),
+        .q(valid_s2$q),
+        .clock(valid_s2$clock)
+    );
+    fcc_label_update__pipeline__word_pos_s2_k7_668cf05b word_pos_s2(
+        .d(word_pos_s2$d),
+        .q(word_pos_s2$q),
+        .clock(word_pos_s2$clock)
+    );
+    fcc_label_update__pipeline__labels_s2_k7_668cf05b labels_s2(
+        .d(labels_s2$d),
+        .q(labels_s2$q),
+        .clock(labels_s2$clock)
+    );
+    fcc_label_update__pipeline__last_s2_k7_668cf05b last_s2(
+        .d(last_s2$d),
+        .q(last_s2$q),
+        .clock(last_s2$clock)
+    );
+    fcc_label_update__pipeline__first_s2_k7_668cf05b first_s2(
+        .d(first_s2$d),
+        .q(first_s2$q),
+        .clock(first_s2$clock)
+    );
+    fcc_label_update__pipeline__valid_s3_k7_668cf05b valid_s3(
+        .d(valid_s3$d),
+        .q(valid_s3$q),
+        .clock(valid_s3$clock)
+    );
+    fcc_label_update__pipeline__beat_s3_k7_668cf05b beat_s3(
+        .d(beat_s3$d),
+        .q(beat_s3$q),
+        .clock(beat_s3$clock)
+    );
+
+    // Update code
+    always @(*) begin
+        active$clock = clk;
+        pixel$clock = clk;
+        beats_left$clock = clk;
+        last_next$clock = clk;
+        first_next$clock = clk;
+        in_flight$clock = clk;
+        valid_s1$clock = clk;
+        word_pos_s1$clock = clk;
+        labels_s1$clock = clk;
+        last_s1$clock = clk;
+        first_s1$clock = clk;
+        valid_s2$clock = clk;
+        word_pos_s2$clock = clk;
+        labels_s2$clock = clk;
+        last_s2$clock = clk;
+        first_s2$clock = clk;
+        valid_s3$clock = clk;
+        beat_s3$clock = clk;
+        active$d = active$q;
+        pixel$d = pixel$q;
+        beats_left$d = beats_left$q;
+        last_next$d = last_next$q;
+        first_next$d = first_next$q;
+        in_flight$d = in_flight$q;
+        valid_s1$d = valid_s1$q;
+        word_pos_s1$d = word_pos_s1$q;
+        labels_s1$d = labels_s1$q;
+        last_s1$d = last_s1$q;
+        first_s1$d = first_s1$q;
+        valid_s2$d = valid_s2$q;
+        word_pos_s2$d = word_pos_s2$q;
+        labels_s2$d = labels_s2$q;
+        last_s2$d = last_s2$q;
+        first_s2$d = first_s2$q;
+        valid_s3$d = valid_s3$q;
+        beat_s3$d = beat_s3$q;
+        issue = active$q & ((in_flight$q < max_in_flight) | beat_done);
+        read_en = issue;
+        read_addr = pixel$q[18:2];
+        valid_s1$d = issue;
+        if (issue) begin
+            word_pos_s1$d = pixel$q[1:0];
+            labels_s1$d = lpb3;
+            last_s1$d = 1'b0;
+            first_s1$d = first_next$q;
+            first_next$d = 1'b0;
+            if (last_next$q) begin
+                labels_s1$d = last_beat_labels;
+                last_s1$d = 1'b1;
+                active$d = 1'b0;
+            end
+            pixel$d = pixel$q + lpb20;
+            beats_left$d = beats_left$q - one20;
+            last_next$d = beats_left$q == one20;
+        end
+        if (issue & ~beat_done) begin
+            in_flight$d = in_flight$q + one3;
+        end
+        if (~issue & beat_done) begin
+            in_flight$d = in_flight$q - one3;
+        end
+        valid_s2$d = valid_s1$q;
+        word_pos_s2$d = word_pos_s1$q;
+        labels_s2$d = labels_s1$q;
+        last_s2$d = last_s1$q;
+        first_s2$d = first_s1$q;
+        code$0 = code_empty;
+        code$1 = code_empty;
+        code$2 = code_empty;
+        code$3 = code_empty;
+        pos_in_word = word_pos_s2$q + slot_off$0;
+        if (pos_in_word == pos$0) begin
+            code$0 = read_data[1:0];
+        end
+        if (pos_in_word == pos$1) begin
+            code$0 = read_data[3:2];
+        end
+        if (pos_in_word == pos$2) begin
+            code$0 = read_data[5:4];
+        end
+        if (pos_in_word == pos$3) begin
+            code$0 = read_data[7:6];
+        end
+        if (slot_idx$0 >= labels_s2$q) begin
+            code$0 = code_empty;
+        end
+        pos_in_word = word_pos_s2$q + slot_off$1;
+        if (pos_in_word == pos$0) begin
+            code$1 = read_data[1:0];
+        end
+        if (pos_in_word == pos$1) begin
+            code$1 = read_data[3:2];
+        end
+        if (pos_in_word == pos$2) begin
+            code$1 = read_data[5:4];
+        end
+        if (pos_in_word == pos$3) begin
+            code$1 = read_data[7:6];
+        end
+        if (slot_idx$1 >= labels_s2$q) begin
+            code$1 = code_empty;
+        end
+        pos_in_word = word_pos_s2$q + slot_off$2;
+        if (pos_in_word == pos$0) begin
+            code$2 = read_data[1:0];
+        end
+        if (pos_in_word == pos$1) begin
+            code$2 = read_data[3:2];
+        end
+        if (pos_in_word == pos$2) begin
+            code$2 = read_data[5:4];
+        end
+        if (pos_in_word == pos$3) begin
+            code$2 = read_data[7:6];
+        end
+        if (slot_idx$2 >= labels_s2$q) begin
+            code$2 = code_empty;
+        end
+        pos_in_word = word_pos_s2$q + slot_off$3;
+        if (pos_in_word == pos$0) begin
+            code$3 = read_data[1:0];
+        end
+        if (pos_in_word == pos$1) begin
+            code$3 = read_data[3:2];
+        end
+        if (pos_in_word == pos$2) begin
+            code$3 = read_data[5:4];
+        end
+        if (pos_in_word == pos$3) begin
+            code$3 = read_data[7:6];
+        end
+        if (slot_idx$3 >= labels_s2$q) begin
+            code$3 = code_empty;
+        end
+        run_src$0 = src_carried;
+        if (first_s2$q) begin
+            run_src$0 = src_zero;
+        end
+        new_count$0 = zero3;
+        run_src$1 = run_src$0;
+        new_count$1 = new_count$0;
+        if (code$0 == code_labelled) begin
+            run_src$1 = new_count$0 + src_new;
+            new_count$1 = new_count$0 + one3;
+        end
+        if (code$0 == code_unlabelled) begin
+            run_src$1 = src_zero;
+        end
+        slot_src$0 = run_src$1;
+        if (code$0 == code_empty) begin
+            slot_src$0 = src_zero;
+        end
+        run_src$2 = run_src$1;
+        new_count$2 = new_count$1;
+        if (code$1 == code_labelled) begin
+            run_src$2 = new_count$1 + src_new;
+            new_count$2 = new_count$1 + one3;
+        end
+        if (code$1 == code_unlabelled) begin
+            run_src$2 = src_zero;
+        end
+        slot_src$1 = run_src$2;
+        if (code$1 == code_empty) begin
+            slot_src$1 = src_zero;
+        end
+        run_src$3 = run_src$2;
+        new_count$3 = new_count$2;
+        if (code$2 == code_labelled) begin
+            run_src$3 = new_count$2 + src_new;
+            new_count$3 = new_count$2 + one3;
+        end
+        if (code$2 == code_unlabelled) begin
+            run_src$3 = src_zero;
+        end
+        slot_src$2 = run_src$3;
+        if (code$2 == code_empty) begin
+            slot_src$2 = src_zero;
+        end
+        run_src$4 = run_src$3;
+        new_count$4 = new_count$3;
+        if (code$3 == code_labelled) begin
+            run_src$4 = new_count$3 + src_new;
+            new_count$4 = new_count$3 + one3;
+        end
+        if (code$3 == code_unlabelled) begin
+            run_src$4 = src_zero;
+        end
+        slot_src$3 = run_src$4;
+        if (code$3 == code_empty) begin
+            slot_src$3 = src_zero;
+        end
+        valid_s3$d = valid_s2$q;
+        beat_s3$d[2:0] = slot_src$0;
+        beat_s3$d[5:3] = slot_src$1;
+        beat_s3$d[8:6] = slot_src$2;
+        beat_s3$d[11:9] = slot_src$3;
+        beat_s3$d[14:12] = run_src$4;
+        beat_s3$d[17:15] = new_count$4;
+        beat_s3$d[25:18] = keep_n$0;
+        if (labels_s2$q == labels$0) begin
+            beat_s3$d[25:18] = keep_n$0;
+        end
+        if (labels_s2$q == labels$1) begin
+            beat_s3$d[25:18] = keep_n$1;
+        end
+        if (labels_s2$q == labels$2) begin
+            beat_s3$d[25:18] = keep_n$2;
+        end
+        if (labels_s2$q == labels$3) begin
+            beat_s3$d[25:18] = keep_n$3;
+        end
+        if (labels_s2$q == labels$4) begin
+            beat_s3$d[25:18] = keep_n$4;
+        end
+        beat_s3$d[26:26] = last_s2$q;
+        beat_valid = valid_s3$q;
+        beat = beat_s3$q;
+        if (start) begin
+            active$d = 1'b1;
+            pixel$d = zero20;
+            beats_left$d = beats_m1;
+            last_next$d = beats_m1 == zero20;
+            first_next$d = 1'b1;
+            in_flight$d = zero3;
+            valid_s1$d = 1'b0;
+            valid_s2$d = 1'b0;
+            valid_s3$d = 1'b0;
+        end
+        if (rst) begin
+            active$d = 1'b0;
+            in_flight$d = zero3;
+            valid_s1$d = 1'b0;
+            valid_s2$d = 1'b0;
+            valid_s3$d = 1'b0;
+        end
     end
 
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__r1_sub_k7_668cf05b
+endmodule // fcc_label_update__pipeline_k7_668cf05b
 
 
-module fcc_label_update__r1v_k7_668cf05b(d,q,clock);
+module fcc_label_update__pipeline__active_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -8518,86 +8855,29 @@ module fcc_label_update__r1v_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_label_update__r1v_k7_668cf05b
+endmodule // fcc_label_update__pipeline__active_k7_668cf05b
 
 
-module fcc_label_update__r2_last_k7_668cf05b(d,q,clock);
+module fcc_label_update__pipeline__beat_s3_k7_668cf05b(d,q,clock);
 
     // Module arguments
-    input wire  d;
-    output reg  q;
+    input wire  [26:0] d;
+    output reg  [26:0] q;
     input wire  clock;
 
     // Update code (custom)
     initial begin
-       q = 1'h0;
+       q = 27'h0;
     end
 
     always @(posedge clock) begin
        q <= d;
     end
 
-endmodule // fcc_label_update__r2_last_k7_668cf05b
+endmodule // fcc_label_update__pipeline__beat_s3_k7_668cf05b
 
 
-module fcc_label_update__r2_n_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [2:0] d;
-    output reg  [2:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 3'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__r2_n_k7_668cf05b
-
-
-module fcc_label_update__r2_sub_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [1:0] d;
-    output reg  [1:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 2'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__r2_sub_k7_668cf05b
-
-
-module fcc_label_update__r2v_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__r2v_k7_668cf05b
-
-
-module fcc_label_update__rpix_k7_668cf05b(d,q,clock);
+module fcc_label_update__pipeline__beats_left_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [19:0] d;
@@ -8613,86 +8893,67 @@ module fcc_label_update__rpix_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_label_update__rpix_k7_668cf05b
+endmodule // fcc_label_update__pipeline__beats_left_k7_668cf05b
 
 
-module fcc_label_update__sk__0_k7_668cf05b(d,q,clock);
+module fcc_label_update__pipeline__first_next_k7_668cf05b(d,q,clock);
 
     // Module arguments
-    input wire  [26:0] d;
-    output reg  [26:0] q;
+    input wire  d;
+    output reg  q;
     input wire  clock;
 
     // Update code (custom)
     initial begin
-       q = 27'h0;
+       q = 1'h0;
     end
 
     always @(posedge clock) begin
        q <= d;
     end
 
-endmodule // fcc_label_update__sk__0_k7_668cf05b
+endmodule // fcc_label_update__pipeline__first_next_k7_668cf05b
 
 
-module fcc_label_update__sk__1_k7_668cf05b(d,q,clock);
+module fcc_label_update__pipeline__first_s1_k7_668cf05b(d,q,clock);
 
     // Module arguments
-    input wire  [26:0] d;
-    output reg  [26:0] q;
+    input wire  d;
+    output reg  q;
     input wire  clock;
 
     // Update code (custom)
     initial begin
-       q = 27'h0;
+       q = 1'h0;
     end
 
     always @(posedge clock) begin
        q <= d;
     end
 
-endmodule // fcc_label_update__sk__1_k7_668cf05b
+endmodule // fcc_label_update__pipeline__first_s1_k7_668cf05b
 
 
-module fcc_label_update__sk__2_k7_668cf05b(d,q,clock);
+module fcc_label_update__pipeline__first_s2_k7_668cf05b(d,q,clock);
 
     // Module arguments
-    input wire  [26:0] d;
-    output reg  [26:0] q;
+    input wire  d;
+    output reg  q;
     input wire  clock;
 
     // Update code (custom)
     initial begin
-       q = 27'h0;
+       q = 1'h0;
     end
 
     always @(posedge clock) begin
        q <= d;
     end
 
-endmodule // fcc_label_update__sk__2_k7_668cf05b
+endmodule // fcc_label_update__pipeline__first_s2_k7_668cf05b
 
 
-module fcc_label_update__sk__3_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [26:0] d;
-    output reg  [26:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 27'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__sk__3_k7_668cf05b
-
-
-module fcc_label_update__skn_k7_668cf05b(d,q,clock);
+module fcc_label_update__pipeline__in_flight_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [2:0] d;
@@ -8708,10 +8969,10 @@ module fcc_label_update__skn_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_label_update__skn_k7_668cf05b
+endmodule // fcc_label_update__pipeline__in_flight_k7_668cf05b
 
 
-module fcc_label_update__u_k7_668cf05b(d,q,clock);
+module fcc_label_update__pipeline__labels_s1_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [2:0] d;
@@ -8727,10 +8988,772 @@ module fcc_label_update__u_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_label_update__u_k7_668cf05b
+endmodule // fcc_label_update__pipeline__labels_s1_k7_668cf05b
 
 
-module fcc_label_update__waddr_k7_668cf05b(d,q,clock);
+module fcc_label_update__pipeline__labels_s2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__pipeline__labels_s2_k7_668cf05b
+
+
+module fcc_label_update__pipeline__last_next_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__pipeline__last_next_k7_668cf05b
+
+
+module fcc_label_update__pipeline__last_s1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__pipeline__last_s1_k7_668cf05b
+
+
+module fcc_label_update__pipeline__last_s2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__pipeline__last_s2_k7_668cf05b
+
+
+module fcc_label_update__pipeline__pixel_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [19:0] d;
+    output reg  [19:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 20'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__pipeline__pixel_k7_668cf05b
+
+
+module fcc_label_update__pipeline__valid_s1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__pipeline__valid_s1_k7_668cf05b
+
+
+module fcc_label_update__pipeline__valid_s2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__pipeline__valid_s2_k7_668cf05b
+
+
+module fcc_label_update__pipeline__valid_s3_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__pipeline__valid_s3_k7_668cf05b
+
+
+module fcc_label_update__pipeline__word_pos_s1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__pipeline__word_pos_s1_k7_668cf05b
+
+
+module fcc_label_update__pipeline__word_pos_s2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__pipeline__word_pos_s2_k7_668cf05b
+
+
+module fcc_label_update__queue_k7_668cf05b(clk,rst,clear,in_valid,in_beat,pop,head_valid,head);
+
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  clear;
+    input wire  in_valid;
+    input wire  [26:0] in_beat;
+    input wire  pop;
+    output reg  head_valid;
+    output reg  [26:0] head;
+
+    // Constant declarations
+    localparam  count_is$0 = 3'b0;
+    localparam  entry_is$0 = 2'b0;
+    localparam  entry_is$1 = 2'b1;
+    localparam  entry_is$2 = 2'b10;
+    localparam  entry_is$3 = 2'b11;
+    localparam  one = 3'b1;
+    localparam  one2 = 2'b1;
+
+    // Stub signals
+    reg  [26:0] entries$0$d;
+    wire  [26:0] entries$0$q;
+    reg  entries$0$clock;
+    reg  [26:0] entries$1$d;
+    wire  [26:0] entries$1$q;
+    reg  entries$1$clock;
+    reg  [26:0] entries$2$d;
+    wire  [26:0] entries$2$q;
+    reg  entries$2$clock;
+    reg  [26:0] entries$3$d;
+    wire  [26:0] entries$3$q;
+    reg  entries$3$clock;
+    reg  [2:0] count$d;
+    wire  [2:0] count$q;
+    reg  count$clock;
+    reg  [1:0] read_entry$d;
+    wire  [1:0] read_entry$q;
+    reg  read_entry$clock;
+    reg  [1:0] write_entry$d;
+    wire  [1:0] write_entry$q;
+    reg  write_entry$clock;
+
+    // Sub module instances
+    fcc_label_update__queue__entries__0_k7_668cf05b entries$0(
+        .d(entries$0$d),
+        .q(entries$0$q),
+        .clock(entries$0$clock)
+    );
+    fcc_label_update__queue__entries__1_k7_668cf05b entries$1(
+        .d(entries$1$d),
+        .q(entries$1$q),
+        .clock(entries$1$clock)
+    );
+    fcc_label_update__queue__entries__2_k7_668cf05b entries$2(
+        .d(entries$2$d),
+        .q(entries$2$q),
+        .clock(entries$2$clock)
+    );
+    fcc_label_update__queue__entries__3_k7_668cf05b entries$3(
+        .d(entries$3$d),
+        .q(entries$3$q),
+        .clock(entries$3$clock)
+    );
+    fcc_label_update__queue__count_k7_668cf05b count(
+        .d(count$d),
+        .q(count$q),
+        .clock(count$clock)
+    );
+    fcc_label_update__queue__read_entry_k7_668cf05b read_entry(
+        .d(read_entry$d),
+        .q(read_entry$q),
+        .clock(read_entry$clock)
+    );
+    fcc_label_update__queue__write_entry_k7_668cf05b write_entry(
+        .d(write_entry$d),
+        .q(write_entry$q),
+        .clock(write_entry$clock)
+    );
+
+    // Update code
+    always @(*) begin
+        count$clock = clk;
+        read_entry$clock = clk;
+        write_entry$clock = clk;
+        count$d = count$q;
+        read_entry$d = read_entry$q;
+        write_entry$d = write_entry$q;
+        entries$0$clock = clk;
+        entries$0$d = entries$0$q;
+        entries$1$clock = clk;
+        entries$1$d = entries$1$q;
+        entries$2$clock = clk;
+        entries$2$d = entries$2$q;
+        entries$3$clock = clk;
+        entries$3$d = entries$3$q;
+        head_valid = count$q != count_is$0;
+        head = entries$0$q;
+        if (read_entry$q == entry_is$0) begin
+            head = entries$0$q;
+        end
+        if (read_entry$q == entry_is$1) begin
+            head = entries$1$q;
+        end
+        if (read_entry$q == entry_is$2) begin
+            head = entries$2$q;
+        end
+        if (read_entry$q == entry_is$3) begin
+            head = entries$3$q;
+        end
+        if (in_valid) begin
+            if (write_entry$q == entry_is$0) begin
+                entries$0$d = in_beat;
+            end
+            if (write_entry$q == entry_is$1) begin
+                entries$1$d = in_beat;
+            end
+            if (write_entry$q == entry_is$2) begin
+                entries$2$d = in_beat;
+            end
+            if (write_entry$q == entry_is$3) begin
+                entries$3$d = in_beat;
+            end
+            write_entry$d = write_entry$q + one2;
+        end
+        if (pop) begin
+            read_entry$d = read_entry$q + one2;
+        end
+        if (in_valid & ~pop) begin
+            count$d = count$q + one;
+        end
+        if (~in_valid & pop) begin
+            count$d = count$q - one;
+        end
+        if (clear | rst) begin
+            count$d = count_is$0;
+            read_entry$d = entry_is$0;
+            write_entry$d = entry_is$0;
+        end
+    end
+
+endmodule // fcc_label_update__queue_k7_668cf05b
+
+
+module fcc_label_update__queue__count_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__queue__count_k7_668cf05b
+
+
+module fcc_label_update__queue__entries__0_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [26:0] d;
+    output reg  [26:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 27'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__queue__entries__0_k7_668cf05b
+
+
+module fcc_label_update__queue__entries__1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [26:0] d;
+    output reg  [26:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 27'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__queue__entries__1_k7_668cf05b
+
+
+module fcc_label_update__queue__entries__2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [26:0] d;
+    output reg  [26:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 27'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__queue__entries__2_k7_668cf05b
+
+
+module fcc_label_update__queue__entries__3_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [26:0] d;
+    output reg  [26:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 27'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__queue__entries__3_k7_668cf05b
+
+
+module fcc_label_update__queue__read_entry_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__queue__read_entry_k7_668cf05b
+
+
+module fcc_label_update__queue__write_entry_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__queue__write_entry_k7_668cf05b
+
+
+module fcc_label_update__writer_k7_668cf05b(clk,rst,pixel_valid,pixel_code,pixel_last,write_en,write_addr,write_data,beats_m1,last_beat_labels);
+
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  pixel_valid;
+    input wire  [1:0] pixel_code;
+    input wire  pixel_last;
+    output reg  write_en;
+    output reg  [16:0] write_addr;
+    output reg  [7:0] write_data;
+    output reg  [19:0] beats_m1;
+    output reg  [2:0] last_beat_labels;
+
+    // Constant declarations
+    localparam  pos$0 = 2'b0;
+    localparam  pos$1 = 2'b1;
+    localparam  pos$2 = 2'b10;
+    localparam  pos$3 = 2'b11;
+    localparam  last_labels$0 = 3'b1;
+    localparam  last_labels$1 = 3'b10;
+    localparam  last_labels$2 = 3'b11;
+    localparam  last_labels$3 = 3'b100;
+    localparam  lpb_log = 2'b10;
+    localparam  lpb_m1 = 2'b11;
+    localparam  one17 = 17'b1;
+    localparam  zero17 = 17'b0;
+    localparam  one20 = 20'h1;
+    localparam  zero20 = 20'h0;
+
+    // Stub signals
+    reg  [1:0] code0$d;
+    wire  [1:0] code0$q;
+    reg  code0$clock;
+    reg  [1:0] code1$d;
+    wire  [1:0] code1$q;
+    reg  code1$clock;
+    reg  [1:0] code2$d;
+    wire  [1:0] code2$q;
+    reg  code2$clock;
+    reg  [1:0] word_pos$d;
+    wire  [1:0] word_pos$q;
+    reg  word_pos$clock;
+    reg  [16:0] word_addr$d;
+    wire  [16:0] word_addr$q;
+    reg  word_addr$clock;
+    reg  [19:0] pixel_count$d;
+    wire  [19:0] pixel_count$q;
+    reg  pixel_count$clock;
+    reg  [19:0] frame_beats_m1$d;
+    wire  [19:0] frame_beats_m1$q;
+    reg  frame_beats_m1$clock;
+    reg  [2:0] frame_last_labels$d;
+    wire  [2:0] frame_last_labels$q;
+    reg  frame_last_labels$clock;
+
+    // Local signals
+    reg  [1:0] last_beat_pos;
+
+    // Sub module instances
+    fcc_label_update__writer__code0_k7_668cf05b code0(
+        .d(code0$d),
+        .q(code0$q),
+        .clock(code0$clock)
+    );
+    fcc_label_update__writer__code1_k7_668cf05b code1(
+        .d(code1$d),
+        .q(code1$q),
+        .clock(code1$clock)
+    );
+    fcc_label_update__writer__code2_k7_668cf05b code2(
+        .d(code2$d),
+        .q(code2$q),
+        .clock(code2$clock)
+    );
+    fcc_label_update__writer__word_pos_k7_668cf05b word_pos(
+        .d(word_pos$d),
+        .q(word_pos$q),
+        .clock(word_pos$clock)
+    );
+    fcc_label_update__writer__word_addr_k7_668cf05b word_addr(
+        .d(word_addr$d),
+        .q(word_addr$q),
+        .clock(word_addr$clock)
+    );
+    fcc_label_update__writer__pixel_count_k7_668cf05b pixel_count(
+        .d(pixel_count$d),
+        .q(pixel_count$q),
+        .clock(pixel_count$clock)
+    );
+    fcc_label_update__writer__frame_beats_m1_k7_668cf05b frame_beats_m1(
+        .d(frame_beats_m1$d),
+        .q(frame_beats_m1$q),
+        .clock(frame_beats_m1$clock)
+    );
+    fcc_label_update__writer__frame_last_labels_k7_668cf05b frame_last_labels(
+        .d(frame_last_labels$d),
+        .q(frame_last_labels$q),
+        .clock(frame_last_labels$clock)
+    );
+
+    // Update code
+    always @(*) begin
+        code0$clock = clk;
+        code1$clock = clk;
+        code2$clock = clk;
+        word_pos$clock = clk;
+        word_addr$clock = clk;
+        pixel_count$clock = clk;
+        frame_beats_m1$clock = clk;
+        frame_last_labels$clock = clk;
+        code0$d = code0$q;
+        code1$d = code1$q;
+        code2$d = code2$q;
+        word_pos$d = word_pos$q;
+        word_addr$d = word_addr$q;
+        pixel_count$d = pixel_count$q;
+        frame_beats_m1$d = frame_beats_m1$q;
+        frame_last_labels$d = frame_last_labels$q;
+        last_beat_pos = pixel_count$q[1:0] & lpb_m1;
+        write_en = 1'b0;
+        write_addr = word_addr$q;
+        write_data[1:0] = code0$q;
+        write_data[3:2] = code1$q;
+        write_data[5:4] = code2$q;
+        write_data[7:6] = pixel_code;
+        if (word_pos$q == pos$0) begin
+            write_data[1:0] = pixel_code;
+        end
+        if (word_pos$q == pos$1) begin
+            write_data[3:2] = pixel_code;
+        end
+        if (word_pos$q == pos$2) begin
+            write_data[5:4] = pixel_code;
+        end
+        if (pixel_valid) begin
+            if (word_pos$q == pos$0) begin
+                code0$d = pixel_code;
+            end
+            if (word_pos$q == pos$1) begin
+                code1$d = pixel_code;
+            end
+            if (word_pos$q == pos$2) begin
+                code2$d = pixel_code;
+            end
+            word_pos$d = word_pos$q + pos$1;
+            if ((word_pos$q == pos$3) | pixel_last) begin
+                write_en = 1'b1;
+                word_addr$d = word_addr$q + one17;
+            end
+            pixel_count$d = pixel_count$q + one20;
+            if (pixel_last) begin
+                word_pos$d = pos$0;
+                word_addr$d = zero17;
+                pixel_count$d = zero20;
+                frame_beats_m1$d = pixel_count$q >> lpb_log;
+                frame_last_labels$d = last_labels$0;
+                if (last_beat_pos == pos$1) begin
+                    frame_last_labels$d = last_labels$1;
+                end
+                if (last_beat_pos == pos$2) begin
+                    frame_last_labels$d = last_labels$2;
+                end
+                if (last_beat_pos == pos$3) begin
+                    frame_last_labels$d = last_labels$3;
+                end
+            end
+        end
+        if (rst) begin
+            word_pos$d = pos$0;
+            word_addr$d = zero17;
+            pixel_count$d = zero20;
+        end
+        beats_m1 = frame_beats_m1$q;
+        last_beat_labels = frame_last_labels$q;
+    end
+
+endmodule // fcc_label_update__writer_k7_668cf05b
+
+
+module fcc_label_update__writer__code0_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__writer__code0_k7_668cf05b
+
+
+module fcc_label_update__writer__code1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__writer__code1_k7_668cf05b
+
+
+module fcc_label_update__writer__code2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__writer__code2_k7_668cf05b
+
+
+module fcc_label_update__writer__frame_beats_m1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [19:0] d;
+    output reg  [19:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 20'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__writer__frame_beats_m1_k7_668cf05b
+
+
+module fcc_label_update__writer__frame_last_labels_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__writer__frame_last_labels_k7_668cf05b
+
+
+module fcc_label_update__writer__pixel_count_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [19:0] d;
+    output reg  [19:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 20'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__writer__pixel_count_k7_668cf05b
+
+
+module fcc_label_update__writer__word_addr_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [16:0] d;
@@ -8746,29 +9769,10 @@ module fcc_label_update__waddr_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_label_update__waddr_k7_668cf05b
+endmodule // fcc_label_update__writer__word_addr_k7_668cf05b
 
 
-module fcc_label_update__wcnt_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [19:0] d;
-    output reg  [19:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 20'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__wcnt_k7_668cf05b
-
-
-module fcc_label_update__ws0_k7_668cf05b(d,q,clock);
+module fcc_label_update__writer__word_pos_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [1:0] d;
@@ -8784,64 +9788,7 @@ module fcc_label_update__ws0_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_label_update__ws0_k7_668cf05b
-
-
-module fcc_label_update__ws1_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [1:0] d;
-    output reg  [1:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 2'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__ws1_k7_668cf05b
-
-
-module fcc_label_update__ws2_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [1:0] d;
-    output reg  [1:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 2'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__ws2_k7_668cf05b
-
-
-module fcc_label_update__wsub_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [1:0] d;
-    output reg  [1:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 2'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__wsub_k7_668cf05b
+endmodule // fcc_label_update__writer__word_pos_k7_668cf05b
 
 
 module fcc_top__last_col_k7_668cf05b(d,q,clock);
@@ -11430,6 +12377,9 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
     reg  [15:0] sq_a$d;
     wire  [15:0] sq_a$q;
     reg  sq_a$clock;
+    reg  sq_start$d;
+    wire  sq_start$q;
+    reg  sq_start$clock;
     reg  sq_busy_q$d;
     wire  sq_busy_q$q;
     reg  sq_busy_q$clock;
@@ -11669,6 +12619,11 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
         .q(sq_a$q),
         .clock(sq_a$clock)
     );
+    fcc_regs__sq_start_k7_668cf05b sq_start(
+        .d(sq_start$d),
+        .q(sq_start$q),
+        .clock(sq_start$clock)
+    );
     fcc_regs__sq_busy_q_k7_668cf05b sq_busy_q(
         .d(sq_busy_q$d),
         .q(sq_busy_q$q),
@@ -11716,6 +12671,7 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
         err_cols$clock = clk;
         sq_v$clock = clk;
         sq_a$clock = clk;
+        sq_start$clock = clk;
         sq_busy_q$clock = clk;
         aw_v$d = aw_v$q;
         aw_a$d = aw_a$q;
@@ -11756,12 +12712,14 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
         err_cols$d = err_cols$q;
         sq_v$d = sq_v$q;
         sq_a$d = sq_a$q;
+        sq_start$d = sq_start$q;
         sq_busy_q$d = sq_busy_q$q;
         sq$clk = clk;
         sq$rst = rst;
-        sq$a = w_d$q[15:0];
-        sq$start = 1'b0;
-        wr = aw_v$q & w_v$q & ~b_v$q & ~sq$busy & ~sq_busy_q$q;
+        sq$a = sq_a$q;
+        sq$start = sq_start$q;
+        sq_start$d = 1'b0;
+        wr = aw_v$q & w_v$q & ~b_v$q & ~sq_start$q & ~sq$busy & ~sq_busy_q$q;
         th_ok = (w_d$q >= th_min) & (w_d$q <= th_max);
         if (s_axil_awvalid & ~aw_v$q) begin
             aw_v$d = 1'b1;
@@ -11832,7 +12790,7 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
             if (aw_a$q == a_run_thh) begin
                 if (th_ok) begin
                     b_v$d = 1'b0;
-                    sq$start = 1'b1;
+                    sq_start$d = 1'b1;
                     sq_v$d = 1'b0;
                 end
                 else begin
@@ -11842,7 +12800,7 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
             if (aw_a$q == a_run_thv) begin
                 if (th_ok) begin
                     b_v$d = 1'b0;
-                    sq$start = 1'b1;
+                    sq_start$d = 1'b1;
                     sq_v$d = 1'b1;
                 end
                 else begin
@@ -11925,6 +12883,7 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
         core_rst_q$d = rst | soft_q$q;
         core_rst_next = rst | soft_q$q;
         if (rst) begin
+            sq_start$d = 1'b0;
             aw_v$d = 1'b0;
             w_v$d = 1'b0;
             b_v$d = 1'b0;
@@ -12793,6 +13752,25 @@ module fcc_regs__sq_busy_q_k7_668cf05b(d,q,clock);
     end
 
 endmodule // fcc_regs__sq_busy_q_k7_668cf05b
+
+
+module fcc_regs__sq_start_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__sq_start_k7_668cf05b
 
 
 module fcc_regs__sq_v_k7_668cf05b(d,q,clock);

@@ -296,8 +296,14 @@ pub fn generate_merge_table(p: &FccParams) -> Result<String, RtlError> {
     Ok(v)
 }
 
-/// Name of the label updater's Verilog module when it is generated alone.
-pub const LABEL_UPDATE_MODULE: &str = "fcc_label_update";
+/// Name of the label updater's Verilog module when it is generated alone,
+/// before the configuration suffix.
+pub const LABEL_UPDATE_NAME: &str = "fcc_label_update";
+
+/// The label updater's module when generated alone for `p`.
+pub fn label_update_module(p: &FccParams) -> String {
+    format!("{LABEL_UPDATE_NAME}{}", p.module_suffix())
+}
 
 /// The label updater `fcc_label_update` alone, for its bench: the frame
 /// buffer, the read-back pipeline, the decoded-beat queue, the gearbox and
@@ -312,7 +318,8 @@ pub fn generate_label_update(p: &FccParams) -> Result<String, RtlError> {
     v.push_str("`default_nettype none\n");
     v.push_str(&rename_modules(
         &constant_selects(&raw),
-        LABEL_UPDATE_MODULE,
+        LABEL_UPDATE_NAME,
+        &p.module_suffix(),
     ));
     v.push_str("\n`default_nettype wire\n");
     Ok(v)
