@@ -157,7 +157,7 @@ fn label_updater_alone_lints_clean_for_every_labels_per_beat() {
         let vlt = dir.join("fcc_label_update.vlt");
         std::fs::write(&v, fcc_rtl::generate_label_update(&p).unwrap()).unwrap();
         std::fs::write(&vlt, lint::label_update_waivers(&p)).unwrap();
-        if let Err(e) = lint::lint_module(&v, &vlt, fcc_rtl::LABEL_UPDATE_MODULE) {
+        if let Err(e) = lint::lint_module(&v, &vlt, &fcc_rtl::label_update_module(&p)) {
             panic!("labels per beat {lpb}: {e}");
         }
         let _ = std::fs::remove_dir_all(&dir);
