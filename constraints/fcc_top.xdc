@@ -2,7 +2,7 @@
 # Parameters: rows=64 cols=2048 fsize=7 th_h=0.5 th_v=1 label_bits=15 clock_mhz=200 labels_per_beat=4
 # Parameter hash: 668cf05bf2a51f2e
 #
-# OUT-OF-CONTEXT constraints of fcc_top: its own synthesis and implementation
+# OUT-OF-CONTEXT constraints of fcc_top_k7_668cf05b: its own synthesis and implementation
 # (synth_design -mode out_of_context: no I/O buffers, no package pins), as
 # scripts/fcc_build.tcl runs them. The core never drives package pins; in a
 # system its ports meet logic on the same clock (AXI DMA, an AXI interconnect,

@@ -3,6 +3,8 @@
 // Parameter hash: 668cf05bf2a51f2e
 `ifndef FCC_PARAMS_VH
 `define FCC_PARAMS_VH
+// The core's module name: instantiate `FCC_TOP_MODULE.
+`define FCC_TOP_MODULE fcc_top_k7_668cf05b
 `define FCC_ROWS 64
 `define FCC_COLS 2048
 `define FCC_PIXELS 131072

@@ -11,6 +11,9 @@
 #define FCC_REGS_ADDR_BITS 12u
 #define FCC_ID_MAGIC 0x46434331u
 #define FCC_PARAMS_HASH 0x668CF05BF2A51F2Eull
+// The core's Verilog module and packaged IP name (fcc gen names every module
+// of a configuration with the same suffix).
+#define FCC_TOP_MODULE "fcc_top_k7_668cf05b"
 
 // ID (RO): Fixed magic "FCC1": an FCC core answers here
 #define FCC_REG_ID 0x000u

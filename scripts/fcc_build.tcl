@@ -3,7 +3,7 @@
 # Parameter hash: 668cf05bf2a51f2e
 # Board: zc706 (xc7z045ffg900-2)
 #
-# Out-of-context synthesis, placement and routing of fcc_top for the ZC706's
+# Out-of-context synthesis, placement and routing of fcc_top_k7_668cf05b for the ZC706's
 # xc7z045ffg900-2 in non-project mode, with utilisation, timing, methodology and DRC
 # reports. Stops with an error when the routed design's worst setup slack is
 # negative (the reports and summary.txt are written first).
@@ -20,7 +20,7 @@
 
 set usage {usage: vivado -mode batch -source fcc_build.tcl -tclargs ?-out DIR? ?-no_phys_opt?}
 set part xc7z045ffg900-2
-set top fcc_top
+set top fcc_top_k7_668cf05b
 set clock_mhz 200
 set period_ns 5.000
 set here [file dirname [file normalize [info script]]]

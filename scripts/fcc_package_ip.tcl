@@ -3,7 +3,7 @@
 # Parameter hash: 668cf05bf2a51f2e
 # Board: zc706 (xc7z045ffg900-2)
 #
-# Packages fcc_top as the Vivado IP fcc:fcc:fcc_top:0.1: AXI4-Stream slave s_axis (pixels),
+# Packages fcc_top_k7_668cf05b as the Vivado IP fcc:fcc:fcc_top_k7_668cf05b:0.1: AXI4-Stream slave s_axis (pixels),
 # AXI4-Stream master m_axis (labels), AXI4-Lite slave s_axil (the register
 # file, 4096 bytes), level-high interrupt irq, clock clk and
 # active-high reset rst, for the block design of scripts/fcc_zc706_bd.tcl.
@@ -11,14 +11,14 @@
 #
 # Usage (from any directory):
 #   vivado -mode batch -source <repo>/scripts/fcc_package_ip.tcl [-tclargs ?-out DIR?]
-#     -out DIR   the IP goes to DIR/ip_repo/fcc_top, the scratch project to
+#     -out DIR   the IP goes to DIR/ip_repo/fcc_top_k7_668cf05b, the scratch project to
 #                DIR/ip_project (default DIR: ./vivado_fcc)
 # The IP holds one configuration (its description names the parameter hash):
 # after `fcc gen` with other parameters, run this again.
 
 set usage {usage: vivado -mode batch -source fcc_package_ip.tcl -tclargs ?-out DIR?}
 set part xc7z045ffg900-2
-set top fcc_top
+set top fcc_top_k7_668cf05b
 set here [file dirname [file normalize [info script]]]
 set rtl [file normalize [file join $here ../rtl_out/fcc_top.v]]
 set xdc [file normalize [file join $here ../constraints/fcc_top.xdc]]
@@ -164,4 +164,4 @@ ipx::update_checksums $core
 ipx::check_integrity $core
 ipx::save_core $core
 close_project
-puts "fcc_package_ip.tcl: fcc:fcc:fcc_top:0.1 packaged in $ip_dir (IP repository: $ip_repo)"
+puts "fcc_package_ip.tcl: fcc:fcc:fcc_top_k7_668cf05b:0.1 packaged in $ip_dir (IP repository: $ip_repo)"

@@ -5,7 +5,7 @@
 #
 # Block design for the ZC706 (xilinx.com:zc706:part0:1.4, xc7z045ffg900-2): the PS7 with the
 # board preset; an AXI DMA in simple (register) mode that reads frames from
-# DDR into fcc_top's s_axis (MM2S) and writes its m_axis labels back to DDR
+# DDR into fcc_top_k7_668cf05b's s_axis (MM2S) and writes its m_axis labels back to DDR
 # (S2MM); the core's register port and the DMA's registers on the PS's
 # M_AXI_GP0 through a SmartConnect; memory (PS S_AXI_HP0) through another; a
 # processor system reset; the DMA's two interrupts and the core's irq on
@@ -86,8 +86,8 @@ while {[llength $args] > 0} {
 }
 set ip_repo [file normalize [file join $out_base ip_repo]]
 set proj_dir [file normalize [file join $out_base zc706]]
-if {![file exists [file join $ip_repo fcc_top component.xml]]} {
-    error "no packaged fcc_top in $ip_repo: run fcc_package_ip.tcl -tclargs -out $out_base first"
+if {![file exists [file join $ip_repo fcc_top_k7_668cf05b component.xml]]} {
+    error "no packaged fcc_top_k7_668cf05b in $ip_repo: run fcc_package_ip.tcl -tclargs -out $out_base first"
 }
 
 create_project -force $design $proj_dir -part $part
@@ -132,7 +132,7 @@ create_bd_cell -type ip -vlnv xilinx.com:ip:smartconnect:1.0 mem_smc
 set_property -dict [list CONFIG.NUM_SI {2} CONFIG.NUM_MI {1}] [get_bd_cells mem_smc]
 create_bd_cell -type ip -vlnv xilinx.com:ip:xlconcat:2.1 irq_concat
 set_property -dict [list CONFIG.NUM_PORTS {3}] [get_bd_cells irq_concat]
-create_bd_cell -type ip -vlnv fcc:fcc:fcc_top:0.1 fcc
+create_bd_cell -type ip -vlnv fcc:fcc:fcc_top_k7_668cf05b:0.1 fcc
 
 # Clock and resets.
 connect_bd_net [get_bd_pins ps/FCLK_CLK0] \

@@ -6,5 +6,7 @@ set -eu
 verilog=${1:-rtl_out/fcc_top.v}
 log=$(mktemp)
 trap 'rm -f "$log"' EXIT
-yosys -q -l "$log" -p "read_verilog $verilog; synth_xilinx -family xc7 -top fcc_top -flatten; stat" >/dev/null
+# The top (fcc_top and the configuration's suffix) is the one module nothing
+# instantiates: synth_xilinx without -top finds it (hierarchy -auto-top).
+yosys -q -l "$log" -p "read_verilog $verilog; synth_xilinx -family xc7 -flatten; stat" >/dev/null
 sed -n '/Printing statistics/,$p' "$log" | grep -E 'Number of cells|LUT|FD[RSCP]E|DSP48E1|RAMB|CARRY4|MUXF|SRL'

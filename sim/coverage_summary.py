@@ -92,6 +92,16 @@ class Sources:
         return line - starts[module], text
 
 
+# Generated module names end in the configuration's suffix, `_k<K>_<8 hex
+# digits of the parameter hash>` (FccParams::module_suffix); points of one
+# module in several configurations are merged under the name without it.
+CONFIG_SUFFIX = re.compile(r"_k\d+_[0-9a-f]{8}$")
+
+
+def base_name(module):
+    return CONFIG_SUFFIX.sub("", module)
+
+
 def block_of(module):
     return module.split("__", 1)[0]
 
@@ -115,13 +125,14 @@ def main():
             page = f.get("page", "")
             if "/" not in page:
                 continue
-            kind, module = page.split("/", 1)
+            kind, full = page.split("/", 1)
             kind = {"v_line": "line", "v_branch": "line", "v_toggle": "toggle"}.get(kind)
             if kind is None:
                 continue
+            module = base_name(full)
             blk = block_of(module)
             if kind == "line":
-                rel, text = srcs.locate(f.get("f", ""), module, int(f.get("l", "0")))
+                rel, text = srcs.locate(f.get("f", ""), full, int(f.get("l", "0")))
                 key = (module, rel, f.get("n", ""), f.get("o", ""))
                 source.setdefault((module, rel), text)
             else:

@@ -1,5 +1,6 @@
-// Bench top of the cocotb test: the generated fcc_top with its ports passed
-// through, and a 4-state checker that runs in the simulator every cycle
+// Bench top of the cocotb test: the generated core (its module name,
+// fcc_top and the configuration's suffix, is `FCC_TOP_MODULE of the
+// fcc_params.vh generated beside it) with its ports passed through, and a 4-state checker that runs in the simulator every cycle
 // (cheaper than sampling every output from Python).
 //
 // After the first reset has been released (`armed`), on every rising edge:
@@ -16,6 +17,7 @@
 // The counters (cycle, accepted input and output beats) serve the test's
 // time-outs and its reset in the middle of a frame.
 `timescale 1ns / 1ps
+`include "fcc_params.vh"
 module fcc_bench_top (
     input  wire        clk,
     input  wire        rst,
@@ -57,7 +59,7 @@ module fcc_bench_top (
     input  wire        s_axil_rready,
     output wire        irq
 );
-    fcc_top core (
+    `FCC_TOP_MODULE core (
         .clk(clk), .rst(rst),
         .s_axis_tdata(s_axis_tdata), .s_axis_tvalid(s_axis_tvalid),
         .s_axis_tready(s_axis_tready), .s_axis_tlast(s_axis_tlast),

@@ -214,6 +214,9 @@ def prepare(fcc, root, k):
     (work / "reset_only" / "fcc_top.v").write_text(stripped)
     (work / "generated").mkdir(parents=True)
     shutil.copy(gen_dir / "fcc_top.v", work / "generated" / "fcc_top.v")
+    # The bench top instantiates `FCC_TOP_MODULE, the configuration's name.
+    for v in VARIANTS:
+        shutil.copy(gen_dir / "fcc_params.vh", work / v / "fcc_params.vh")
     frames, cs = cases(k, ROWS, COLS)
     fdir = work / "frames"
     fdir.mkdir()
@@ -264,6 +267,7 @@ def simulate(work, variant):
     runner = get_runner("icarus")
     runner.build(
         sources=[vdir / "fcc_top.v", HERE / "fcc_bench_top.v"],
+        includes=[vdir],
         hdl_toplevel="fcc_bench_top",
         build_dir=vdir / "build",
         timescale=("1ns", "1ps"),

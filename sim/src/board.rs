@@ -546,15 +546,26 @@ impl VirtualBoard {
     }
 }
 
-/// What a driver expects of the build `p` on its block design: the hash
-/// and the DMA's length width as `fcc gen` sets it
-/// (`fcc_rtl::vivado::dma_length_width`).
+/// What a driver expects of the build `p` on the virtual board: the hash,
+/// the DMA's length width as `fcc gen` sets it
+/// (`fcc_rtl::vivado::dma_length_width`) and the address width of the
+/// ZC706's DMA, which the virtual board models (memory below 4 GiB).
 pub fn build_expect(p: &fcc_params::FccParams) -> Result<fcc_driver::BuildExpect, SimError> {
+    build_expect_for(p, fcc_rtl::vivado::Board::Zc706)
+}
+
+/// [`build_expect`] for the block design of `board`: its DMA's address
+/// width comes from the board table (40 bits on the ZCU104).
+pub fn build_expect_for(
+    p: &fcc_params::FccParams,
+    board: fcc_rtl::vivado::Board,
+) -> Result<fcc_driver::BuildExpect, SimError> {
     let gen = fcc_rtl::generate(p)?;
-    let ports = fcc_rtl::vivado::top_ports(&gen.verilog);
+    let ports = fcc_rtl::vivado::top_ports(&gen.verilog, &fcc_rtl::top_module(p));
     Ok(fcc_driver::BuildExpect {
         hash: fcc_rtl::regmap::hash_value(p),
         dma_length_bits: fcc_rtl::vivado::dma_length_width(p, &ports)?,
+        dma_addr_bits: board.info().ps.info().dma_addr_width,
     })
 }
 

@@ -84,7 +84,8 @@ pub fn load_label_update(p: &FccParams) -> Result<Arc<LuModel>, SimError> {
             &Shim {
                 name: "fcc_label_update_shim.cpp",
                 text: SHIM,
-                top: fcc_rtl::LABEL_UPDATE_MODULE,
+                top: &fcc_rtl::label_update_module(p),
+                prefix: "Vfcc_label_update",
                 sources: &["fcc_label_update.vlt", "fcc_label_update.v"],
                 lib: LIB_NAME,
                 coverage: false,

@@ -23,8 +23,8 @@ use std::path::PathBuf;
 
 pub use axil::{AxilM, AxilMaster, AxilPort, AxilS, WriteOrder};
 pub use board::{
-    build_expect, build_run, virtual_board, virtual_board_with, AxiDmaModel, Fault, VBuffer,
-    VirtualBoard,
+    build_expect, build_expect_for, build_run, virtual_board, virtual_board_with, AxiDmaModel,
+    Fault, VBuffer, VirtualBoard,
 };
 pub use check::{compare, expected};
 pub use drive::{frame_beats, Drive, FrameRun, Tlast};

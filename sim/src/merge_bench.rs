@@ -83,7 +83,8 @@ pub fn load_merge_table(p: &FccParams) -> Result<Arc<MergeModel>, SimError> {
             &Shim {
                 name: "fcc_merge_shim.cpp",
                 text: SHIM,
-                top: fcc_rtl::MERGE_TABLE_MODULE,
+                top: &fcc_rtl::merge_table_module(p),
+                prefix: "Vfcc_merge_table",
                 sources: &["fcc_merge_table.vlt", "fcc_merge_table.v"],
                 lib: LIB_NAME,
                 coverage: false,

@@ -221,9 +221,11 @@ pub fn read_generated(dir: &Path) -> Result<GeneratedDir, SimError> {
         let path = rtl.join(name);
         std::fs::read_to_string(&path).map_err(io(&path))
     };
+    let verilog = read("fcc_top.v")?;
+    fcc_rtl::check_top_module(&params, &verilog, &rtl.join("fcc_top.v"))?;
     Ok(GeneratedDir {
         params,
-        verilog: read("fcc_top.v")?,
+        verilog,
         waivers: read("fcc_lint.vlt")?,
     })
 }
@@ -262,6 +264,7 @@ fn load_verilog(p: &FccParams, verilog: &str, waivers: &str) -> Result<Arc<Model
     }
     let dir = cache_root().join(&key);
     if !dir.join(LIB_NAME).exists() {
+        let top = fcc_rtl::top_module(p);
         let files: Vec<(&str, &str)> = vec![("fcc_top.v", verilog), ("fcc_lint.vlt", waivers)];
         build(
             &files,
@@ -269,7 +272,8 @@ fn load_verilog(p: &FccParams, verilog: &str, waivers: &str) -> Result<Arc<Model
             &Shim {
                 name: "fcc_shim.cpp",
                 text: SHIM,
-                top: fcc_rtl::TOP_MODULE,
+                top: &top,
+                prefix: "Vfcc_top",
                 sources: &["fcc_lint.vlt", "fcc_top.v"],
                 lib: LIB_NAME,
                 coverage: coverage_dir().is_some(),
@@ -352,7 +356,11 @@ fn io(path: &Path) -> impl FnOnce(std::io::Error) -> SimError + '_ {
 pub(crate) struct Shim<'a> {
     pub name: &'a str,
     pub text: &'a str,
+    /// The top module: its name carries the configuration's suffix.
     pub top: &'a str,
+    /// Verilator's `--prefix`: the C++ class the shim includes and uses,
+    /// the same for every configuration.
+    pub prefix: &'a str,
     pub sources: &'a [&'a str],
     pub lib: &'a str,
     /// Verilator line and toggle coverage (`FCC_SIM_COVERAGE`).
@@ -393,6 +401,7 @@ pub(crate) fn build(files: &[(&str, &str)], dir: &Path, shim: &Shim) -> Result<(
                 &[][..]
             })
             .args(["-CFLAGS", "-fPIC -O1", "--top-module", shim.top])
+            .args(["--prefix", shim.prefix])
             .args(["-Mdir", "obj"])
             // Coverage points name their file: an absolute path lets the
             // summary find the source (after the rename, without `.tmp-<pid>`).
@@ -429,7 +438,7 @@ pub(crate) fn build(files: &[(&str, &str)], dir: &Path, shim: &Shim) -> Result<(
             .arg(shim.name)
             .arg(inc.join("verilated.cpp"))
             .arg(inc.join("verilated_threads.cpp"))
-            .arg(format!("obj/V{}__ALL.a", shim.top))
+            .arg(format!("obj/{}__ALL.a", shim.prefix))
             .args(["-pthread", "-latomic", "-o", shim.lib]),
         "c++ (link the Verilator model)",
     )?;

@@ -107,7 +107,8 @@ pub fn load_regs(p: &FccParams) -> Result<Arc<RegsModel>, SimError> {
             &Shim {
                 name: "fcc_regs_shim.cpp",
                 text: SHIM,
-                top: fcc_rtl::REGS_MODULE,
+                top: &fcc_rtl::regs_module(p),
+                prefix: "Vfcc_regs",
                 sources: &["fcc_regs.vlt", "fcc_regs.v"],
                 lib: LIB_NAME,
                 coverage: false,

@@ -77,7 +77,8 @@ pub fn load_window(p: &FccParams) -> Result<Arc<WindowModel>, SimError> {
             &Shim {
                 name: "fcc_window_shim.cpp",
                 text: SHIM,
-                top: fcc_rtl::WINDOW_MODULE,
+                top: &fcc_rtl::window_module(p),
+                prefix: "Vfcc_window_probe",
                 sources: &["fcc_window_probe.v"],
                 lib: LIB_NAME,
                 coverage: false,

@@ -55,6 +55,11 @@ pub struct BoardRunArgs {
     /// writes it beside the Verilog); its hash must match the core's.
     #[arg(long, value_name = "FILE")]
     pub params: Option<PathBuf>,
+    /// With --uio: the board the bitstream's block design was made for
+    /// (`fcc gen --board`): its DMA's address width (40 bits on the
+    /// ZCU104, 32 on the Zynq-7000 boards).
+    #[arg(long, default_value = "zc706", value_parser = crate::cmd_gen::parse_board, requires = "uio")]
+    pub board: fcc_rtl::vivado::Board,
     #[command(flatten)]
     pub cluster: ClusterLidarArgs,
 }
@@ -176,7 +181,7 @@ fn open_linux(
 ) -> anyhow::Result<(Target, ClusterLidarArgs)> {
     let p = read_build(params)?;
     let cluster = label_bits_of(args, given, &p, &params.display().to_string())?;
-    let expect = fcc_sim::build_expect(&p)?;
+    let expect = fcc_sim::build_expect_for(&p, args.board)?;
     let hal = fcc_driver::linux::LinuxHal::open(core, &args.uio_dma, &args.udmabuf)?;
     let mut d = Driver::open(hal, &expect).map_err(|e| anyhow::anyhow!("{e}"))?;
     recover_if_busy(&mut d, core)?;

@@ -10,7 +10,7 @@ use fcc_rtl::{Layout, WriteOptions};
 
 use crate::model_args::HwArgs;
 
-fn parse_board(s: &str) -> Result<Board, String> {
+pub(crate) fn parse_board(s: &str) -> Result<Board, String> {
     Board::from_name(s)
 }
 
@@ -77,15 +77,17 @@ pub fn run(args: &GenArgs) -> anyhow::Result<()> {
         println!("lint skipped (--no-lint)");
     } else {
         let rtl: &Path = &layout.rtl;
-        fcc_rtl::lint::lint_files(&rtl.join("fcc_top.v"), &rtl.join("fcc_lint.vlt"))
+        fcc_rtl::lint::lint_files(&p, &rtl.join("fcc_top.v"), &rtl.join("fcc_lint.vlt"))
             .context("linting the generated Verilog (use --no-lint to skip)")?;
         println!("verilator --lint-only -Wall: clean");
     }
     println!(
-        "fcc_top: {} (hash {}), board {}",
+        "{}: {} (hash {}), board {}, IP {}",
+        fcc_rtl::top_module(&p),
         fcc_rtl::param_summary(&p),
         p.hash(),
-        args.board.info().name
+        args.board.info().name,
+        fcc_rtl::vivado::ip_vlnv(&p)
     );
     Ok(())
 }

@@ -189,13 +189,22 @@ pub fn run(args: &SimArgs, given: &dyn Fn(&str) -> bool) -> anyhow::Result<()> {
     );
     match (&args.rtl, &build) {
         (Some(dir), Some(b)) => {
-            println!("fcc_top: {} ({})", fcc_rtl::param_summary(b), dir.display());
+            println!(
+                "{}: {} ({})",
+                fcc_rtl::top_module(b),
+                fcc_rtl::param_summary(b),
+                dir.display()
+            );
             println!(
                 "run registers: rows={} cols={} fsize={} th_h={} th_v={}",
                 p.rows, p.cols, p.fsize, p.th_h, p.th_v
             );
         }
-        _ => println!("fcc_top: {}", fcc_rtl::param_summary(&p)),
+        _ => println!(
+            "{}: {}",
+            fcc_rtl::top_module(&p),
+            fcc_rtl::param_summary(&p)
+        ),
     }
     println!(
         "clusters {}, provisional labels {}, unique joins {}",

@@ -308,7 +308,7 @@ fn gen_writes_the_rtl_and_rejects_what_hardware_cannot_do() {
     assert!(o.status.success(), "{}", stderr(&o));
     let v = std::fs::read_to_string(rtl.join("fcc_top.v")).unwrap();
     assert!(
-        v.contains("fsize=3") && v.contains("module fcc_top("),
+        v.contains("fsize=3") && v.contains("module fcc_top_k3_"),
         "header and top"
     );
     assert!(std::fs::read_to_string(xdc.join("fcc_top.xdc"))

@@ -43,6 +43,12 @@ pub struct BuildExpect {
     pub hash: u64,
     /// Bits of the AXI DMA's length registers (`c_sg_length_width`).
     pub dma_length_bits: u32,
+    /// Bits of the AXI DMA's addresses (`c_addr_width`), from the board
+    /// table (`fcc_rtl::vivado::PsInfo::dma_addr_width`): 32 on the Zynq-7000
+    /// boards, 40 on the ZCU104. Above 32 the driver writes the MSB halves
+    /// of the address registers (PG021 MM2S_SA_MSB, S2MM_DA_MSB), which a
+    /// 32-bit DMA does not have.
+    pub dma_addr_bits: u32,
 }
 
 /// The build as the core reports it.
@@ -180,6 +186,7 @@ pub struct Driver<H: Hal> {
     build: BuildInfo,
     defaults: RunConfig,
     length_bits: u32,
+    addr_bits: u32,
     pub timeouts: Timeouts,
     tx: H::Buffer,
     rx: H::Buffer,
@@ -229,8 +236,39 @@ impl<H: Hal> Driver<H> {
             ));
         }
         let pixels = build.rows_max as usize * build.cols_max as usize;
+        // The build's largest frame must fit the DMA's length registers;
+        // refused here rather than at the first large frame.
+        let max = (1usize << expect.dma_length_bits) - 1;
+        for (channel, bytes) in [
+            (Channel::Mm2s, pixels * PIXEL_BYTES),
+            (Channel::S2mm, label_buffer_bytes(pixels)),
+        ] {
+            if bytes > max {
+                return Err(Error::TooLong {
+                    channel,
+                    bytes,
+                    length_bits: expect.dma_length_bits,
+                });
+            }
+        }
+        if !(32..=64).contains(&expect.dma_addr_bits) {
+            return Err(Error::Unsupported(
+                "the DMA's address width (c_addr_width) must be 32 ..= 64 bits",
+            ));
+        }
         let tx = hal.alloc_dma(round_up(pixels * PIXEL_BYTES))?;
         let rx = hal.alloc_dma(round_up(label_buffer_bytes(pixels)))?;
+        for b in [&tx, &rx] {
+            let end = b.phys().checked_add(b.bytes().len() as u64);
+            let limit = 1u128 << expect.dma_addr_bits;
+            if end.is_none_or(|e| u128::from(e) > limit) {
+                return Err(Error::BufferAddress {
+                    phys: b.phys(),
+                    len: b.bytes().len(),
+                    addr_bits: expect.dma_addr_bits,
+                });
+            }
+        }
         // The power-on run values (the build's), or what the last program
         // left in the run registers.
         let mut rd = |o| hal.read32(Window::Core, o);
@@ -245,6 +283,7 @@ impl<H: Hal> Driver<H> {
             defaults,
             timeouts: Timeouts::for_build(&build),
             length_bits: expect.dma_length_bits,
+            addr_bits: expect.dma_addr_bits,
             build,
             hal,
             tx,
@@ -436,12 +475,16 @@ impl<H: Hal> Driver<H> {
         self.dma_w(dma::S2MM_DMASR, dma::SR_IRQS)?;
         self.dma_w(dma::S2MM_DMACR, cr)?;
         self.dma_w(dma::S2MM_DA, rx_phys as u32)?;
-        self.dma_w(dma::S2MM_DA_MSB, (rx_phys >> 32) as u32)?;
+        if self.addr_bits > 32 {
+            self.dma_w(dma::S2MM_DA_MSB, (rx_phys >> 32) as u32)?;
+        }
         self.dma_w(dma::S2MM_LENGTH, rx_bytes as u32)?;
         self.dma_w(dma::MM2S_DMASR, dma::SR_IRQS)?;
         self.dma_w(dma::MM2S_DMACR, cr)?;
         self.dma_w(dma::MM2S_SA, tx_phys as u32)?;
-        self.dma_w(dma::MM2S_SA_MSB, (tx_phys >> 32) as u32)?;
+        if self.addr_bits > 32 {
+            self.dma_w(dma::MM2S_SA_MSB, (tx_phys >> 32) as u32)?;
+        }
         let t0 = self.hal.now_ns();
         self.dma_w(dma::MM2S_LENGTH, tx_bytes as u32)?;
 

@@ -120,6 +120,12 @@ pub enum Error<E> {
         bytes: usize,
         length_bits: u32,
     },
+    /// A DMA buffer lies (partly) beyond the DMA's address width.
+    BufferAddress {
+        phys: u64,
+        len: usize,
+        addr_bits: u32,
+    },
     /// The labels buffer is too small.
     LabelsBuffer { expected: usize, got: usize },
     /// A DMA channel stopped with error bits set (the driver reset the DMA
@@ -198,6 +204,14 @@ impl<E: fmt::Display> fmt::Display for Error<E> {
                 f,
                 "{channel}: {bytes} bytes exceed the DMA's {length_bits}-bit length register (at most {} bytes); rebuild the block design with a wider c_sg_length_width",
                 (1u64 << length_bits) - 1
+            ),
+            Error::BufferAddress {
+                phys,
+                len,
+                addr_bits,
+            } => write!(
+                f,
+                "a DMA buffer of {len} bytes at 0x{phys:x} reaches beyond the DMA's {addr_bits}-bit addresses; allocate DMA memory lower, or build the block design for a board whose DMA has wider addresses (c_addr_width)"
             ),
             Error::LabelsBuffer { expected, got } => write!(
                 f,

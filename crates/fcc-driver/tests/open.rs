@@ -42,6 +42,8 @@ struct Fake {
     t: u64,
     reset_sticks: bool,
     writes: Vec<(u32, u32)>,
+    /// Physical address of every buffer.
+    phys: u64,
 }
 
 /// The run registers' rule of docs/rtl.md for the fake's build (K_MAX 7,
@@ -88,6 +90,7 @@ fn fake(lpb: u32) -> Fake {
         t: 0,
         reset_sticks: false,
         writes: Vec::new(),
+        phys: 0x1000_0000,
     }
 }
 
@@ -131,7 +134,7 @@ impl Hal for Fake {
         Ok(())
     }
     fn alloc_dma(&mut self, len: usize) -> Result<Buf, Never> {
-        Ok(Buf(vec![0; len], 0x1000_0000))
+        Ok(Buf(vec![0; len], self.phys))
     }
     fn cache_clean(&mut self, _: &mut Buf, _: usize, _: usize) -> Result<(), Never> {
         Ok(())
@@ -152,6 +155,7 @@ fn expect() -> BuildExpect {
     BuildExpect {
         hash: HASH,
         dma_length_bits: 16,
+        dma_addr_bits: 32,
     }
 }
 
@@ -214,22 +218,15 @@ fn dma_reset_that_never_ends_is_a_clear_error() {
 }
 
 #[test]
-fn frame_too_long_for_the_dma_length_register_is_refused() {
-    // 16 x 256 x 8 bytes = 32 KiB > 2^12 - 1.
-    let mut d = Driver::open(
+fn build_whose_largest_frame_exceeds_the_dma_length_register_is_refused_at_open() {
+    // The build's 16 x 256 frame: 16 x 256 x 8 bytes = 32 KiB > 2^12 - 1.
+    let e = open_err(
         fake(4),
         &BuildExpect {
             dma_length_bits: 12,
             ..expect()
         },
-    )
-    .unwrap();
-    let run = d.defaults();
-    let mut labels = vec![0; 4096];
-    let pts = vec![None; 4096];
-    let e = d
-        .run_frame(&run, Pixels::Points(&pts), &mut labels)
-        .unwrap_err();
+    );
     assert!(
         matches!(
             e,
@@ -241,6 +238,18 @@ fn frame_too_long_for_the_dma_length_register_is_refused() {
         ),
         "{e}"
     );
+    assert!(e.to_string().contains("c_sg_length_width"), "{e}");
+    // 2^15 - 1 < 32768 <= 2^16 - 1: one bit short is refused, the exact width opens.
+    for (bits, ok) in [(15, false), (16, true)] {
+        let r = Driver::open(
+            fake(4),
+            &BuildExpect {
+                dma_length_bits: bits,
+                ..expect()
+            },
+        );
+        assert_eq!(r.is_ok(), ok, "{bits} bits");
+    }
 }
 
 #[test]
@@ -387,4 +396,73 @@ fn a_frame_that_never_finishes_times_out_with_the_state_seen() {
     // MM2S was started with the whole frame before the wait.
     let tx = d.hal().dma.get(&dma::MM2S_LENGTH).copied();
     assert_eq!(tx, Some(4096 * 8));
+}
+
+#[test]
+fn buffer_above_4_gib_is_refused_by_a_32_bit_dma_and_taken_by_a_40_bit_one() {
+    let high = |addr_bits| {
+        let mut f = fake(4);
+        f.phys = 0x8_0000_0000;
+        Driver::open(
+            f,
+            &BuildExpect {
+                dma_addr_bits: addr_bits,
+                ..expect()
+            },
+        )
+    };
+    let e = match high(32) {
+        Ok(_) => panic!("a 32-bit DMA took a buffer at 32 GiB"),
+        Err(e) => e,
+    };
+    assert!(
+        matches!(
+            e,
+            Error::BufferAddress {
+                phys: 0x8_0000_0000,
+                addr_bits: 32,
+                ..
+            }
+        ),
+        "{e}"
+    );
+    assert!(e.to_string().contains("c_addr_width"), "{e}");
+    // 40 bits (the ZCU104): the MSB halves of both addresses are written.
+    let mut d = high(40).unwrap();
+    let run = d.defaults();
+    let mut labels = vec![0; 4096];
+    let pts = vec![None; 4096];
+    let _ = d.run_frame(&run, Pixels::Points(&pts), &mut labels);
+    assert_eq!(d.hal().dma.get(&dma::MM2S_SA_MSB), Some(&0x8));
+    assert_eq!(d.hal().dma.get(&dma::S2MM_DA_MSB), Some(&0x8));
+    assert_eq!(d.hal().dma.get(&dma::MM2S_SA), Some(&0));
+    // The pixel buffer (16 x 256 x 8 bytes, the larger) ending exactly at
+    // 2^40 fits; one cache line higher it does not.
+    for (phys, ok) in [
+        ((1u64 << 40) - 32768, true),
+        ((1u64 << 40) - 32768 + 32, false),
+    ] {
+        let mut f = fake(4);
+        f.phys = phys;
+        let r = Driver::open(
+            f,
+            &BuildExpect {
+                dma_addr_bits: 40,
+                ..expect()
+            },
+        );
+        assert_eq!(r.is_ok(), ok, "buffer at 0x{phys:x}");
+    }
+}
+
+#[test]
+fn a_32_bit_dma_gets_no_msb_address_writes() {
+    let mut d = Driver::open(fake(4), &expect()).unwrap();
+    let run = d.defaults();
+    let mut labels = vec![0; 4096];
+    let pts = vec![None; 4096];
+    let _ = d.run_frame(&run, Pixels::Points(&pts), &mut labels);
+    assert_eq!(d.hal().dma.get(&dma::MM2S_SA), Some(&0x1000_0000));
+    assert!(!d.hal().dma.contains_key(&dma::MM2S_SA_MSB));
+    assert!(!d.hal().dma.contains_key(&dma::S2MM_DA_MSB));
 }

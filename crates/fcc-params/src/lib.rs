@@ -224,6 +224,21 @@ impl FccParams {
         }
         format!("{h:016x}")
     }
+
+    /// A short name of the configuration, `k<K>_<first 8 hex digits of the
+    /// hash>` (e.g. `k7_1b2c3d4e`): readable K for people, the hash so that
+    /// any two parameter sets differ. It names the generated Verilog modules
+    /// ([`module_suffix`](Self::module_suffix)) and the packaged IP.
+    pub fn config_tag(&self) -> String {
+        format!("k{}_{}", self.fsize, &self.hash()[..8])
+    }
+
+    /// The suffix every generated Verilog module name carries, `_` and
+    /// [`config_tag`](Self::config_tag): `fcc_top_k7_1b2c3d4e`. Two
+    /// configurations' modules can then be compiled together.
+    pub fn module_suffix(&self) -> String {
+        format!("_{}", self.config_tag())
+    }
 }
 
 fn check_range<T>(
@@ -407,5 +422,17 @@ mod tests {
             ..Default::default()
         };
         assert_ne!(p.hash(), r.hash());
+    }
+
+    #[test]
+    fn module_suffix_names_k_and_differs_for_a_threshold_change() {
+        let p = FccParams::default();
+        assert_eq!(p.module_suffix(), format!("_k7_{}", &p.hash()[..8]));
+        let q = FccParams {
+            th_h: 0.75,
+            ..Default::default()
+        };
+        assert_eq!(q.config_tag().len(), p.config_tag().len());
+        assert_ne!(p.module_suffix(), q.module_suffix());
     }
 }

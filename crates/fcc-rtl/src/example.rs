@@ -200,7 +200,8 @@ int main(void)
     }
     hash = ((uint64_t)fcc_rd(FCC_REG_HASH_HI) << 32) | fcc_rd(FCC_REG_HASH_LO);
     if (hash != FCC_PARAMS_HASH) {
-        xil_printf("fcc: the bitstream was built with other parameters (hash %08x%08x)\r\n",
+        xil_printf("fcc: the bitstream was built with other parameters (hash %08x%08x); "
+                   "this program is for " FCC_TOP_MODULE "\r\n",
                    (unsigned)(hash >> 32), (unsigned)hash);
         return 1;
     }

@@ -130,8 +130,18 @@ pub use fcc_top::{FccTop, CREDITS};
 /// Version of this generator, written into every generated file.
 pub const GENERATOR_VERSION: &str = env!("CARGO_PKG_VERSION");
 
-/// Name of the top-level Verilog module.
-pub const TOP_MODULE: &str = "fcc_top";
+/// The top-level module's name before the configuration suffix (and the
+/// name of the files it is written to: `fcc_top.v`, `fcc_top.xdc`).
+pub const TOP_NAME: &str = "fcc_top";
+
+/// The top-level Verilog module of `p`: [`TOP_NAME`] and
+/// [`FccParams::module_suffix`], e.g. `fcc_top_k7_1b2c3d4e`. Every module of
+/// the configuration carries the same suffix, so two configurations can be
+/// compiled into one simulation or one Vivado project; the packaged IP has
+/// this name too.
+pub fn top_module(p: &FccParams) -> String {
+    format!("{TOP_NAME}{}", p.module_suffix())
+}
 
 /// Everything that can go wrong while generating or checking RTL.
 #[derive(Debug, Error)]
@@ -164,6 +174,8 @@ pub enum RtlError {
     NotGenerated { dir: PathBuf },
     #[error("{path}: {message}")]
     BadParamsFile { path: PathBuf, message: String },
+    #[error("{path}: no module {top}, the top module of its fcc_params.json (written by an older fcc gen, or edited); regenerate it with fcc gen")]
+    NoTopModule { path: PathBuf, top: String },
 }
 
 /// The generated files of one configuration, as text.
@@ -229,7 +241,7 @@ pub fn generate(p: &FccParams) -> Result<Generated, RtlError> {
     top.connect_all();
     check_all(&top).map_err(|e| RtlError::Check(format!("{e:?}")))?;
     let raw = generate_verilog_unchecked(&top);
-    let body = rename_modules(&constant_selects(&raw), TOP_MODULE);
+    let body = rename_modules(&constant_selects(&raw), TOP_NAME, &p.module_suffix());
     let mut verilog = file_header(p, "//");
     verilog.push_str(&io_comment());
     verilog.push_str("`default_nettype none\n");
@@ -249,11 +261,18 @@ pub fn generate(p: &FccParams) -> Result<Generated, RtlError> {
     })
 }
 
-/// Name of the register file's module when generated alone (its bench).
-pub const REGS_MODULE: &str = "fcc_regs";
+/// Name of the register file's module when generated alone (its bench),
+/// before the configuration suffix.
+pub const REGS_NAME: &str = "fcc_regs";
+
+/// The register file's module when generated alone for `p`:
+/// `fcc_regs_k7_1b2c3d4e`.
+pub fn regs_module(p: &FccParams) -> String {
+    format!("{REGS_NAME}{}", p.module_suffix())
+}
 
 /// The Verilog of the register file `FccRegs` alone, as a module
-/// `fcc_regs` (for its own bench; the core's copy is inside `fcc_top.v`).
+/// [`regs_module`] (for its own bench; the core's copy is inside `fcc_top.v`).
 pub fn generate_regs(p: &FccParams) -> Result<String, RtlError> {
     p.validate_for_hardware()?;
     let mut regs = FccRegs::new(p);
@@ -262,16 +281,27 @@ pub fn generate_regs(p: &FccParams) -> Result<String, RtlError> {
     let raw = generate_verilog_unchecked(&regs);
     let mut v = file_header(p, "//");
     v.push_str("`default_nettype none\n");
-    v.push_str(&rename_modules(&constant_selects(&raw), REGS_MODULE));
+    v.push_str(&rename_modules(
+        &constant_selects(&raw),
+        REGS_NAME,
+        &p.module_suffix(),
+    ));
     v.push_str("\n`default_nettype wire\n");
     Ok(v)
 }
 
-/// Name of the merge table's module when generated alone (its bench).
-pub const MERGE_TABLE_MODULE: &str = "fcc_merge_table";
+/// Name of the merge table's module when generated alone (its bench),
+/// before the configuration suffix.
+pub const MERGE_TABLE_NAME: &str = "fcc_merge_table";
+
+/// The merge table's module when generated alone for `p`:
+/// `fcc_merge_table_k7_1b2c3d4e`.
+pub fn merge_table_module(p: &FccParams) -> String {
+    format!("{MERGE_TABLE_NAME}{}", p.module_suffix())
+}
 
 /// The Verilog of the merge table `FccMergeTable` alone, as a module
-/// `fcc_merge_table` with its sub-blocks (for its own bench; the core's copy
+/// [`merge_table_module`] with its sub-blocks (for its own bench; the core's copy
 /// is inside `fcc_top.v`).
 pub fn generate_merge_table(p: &FccParams) -> Result<String, RtlError> {
     p.validate_for_hardware()?;
@@ -281,13 +311,23 @@ pub fn generate_merge_table(p: &FccParams) -> Result<String, RtlError> {
     let raw = generate_verilog_unchecked(&table);
     let mut v = file_header(p, "//");
     v.push_str("`default_nettype none\n");
-    v.push_str(&rename_modules(&constant_selects(&raw), MERGE_TABLE_MODULE));
+    v.push_str(&rename_modules(
+        &constant_selects(&raw),
+        MERGE_TABLE_NAME,
+        &p.module_suffix(),
+    ));
     v.push_str("\n`default_nettype wire\n");
     Ok(v)
 }
 
-/// Name of the label updater's Verilog module when it is generated alone.
-pub const LABEL_UPDATE_MODULE: &str = "fcc_label_update";
+/// Name of the label updater's Verilog module when it is generated alone,
+/// before the configuration suffix.
+pub const LABEL_UPDATE_NAME: &str = "fcc_label_update";
+
+/// The label updater's module when generated alone for `p`.
+pub fn label_update_module(p: &FccParams) -> String {
+    format!("{LABEL_UPDATE_NAME}{}", p.module_suffix())
+}
 
 /// The label updater `fcc_label_update` alone, for its bench: the frame
 /// buffer, the read-back pipeline, the decoded-beat queue, the gearbox and
@@ -302,17 +342,24 @@ pub fn generate_label_update(p: &FccParams) -> Result<String, RtlError> {
     v.push_str("`default_nettype none\n");
     v.push_str(&rename_modules(
         &constant_selects(&raw),
-        LABEL_UPDATE_MODULE,
+        LABEL_UPDATE_NAME,
+        &p.module_suffix(),
     ));
     v.push_str("\n`default_nettype wire\n");
     Ok(v)
 }
 
-/// Name of the window probe's module (the window's bench).
-pub const WINDOW_MODULE: &str = "fcc_window_probe";
+/// Name of the window probe's module (the window's bench), before the
+/// configuration suffix.
+pub const WINDOW_NAME: &str = "fcc_window_probe";
+
+/// The window probe's module when generated alone for `p`.
+pub fn window_module(p: &FccParams) -> String {
+    format!("{WINDOW_NAME}{}", p.module_suffix())
+}
 
 /// The Verilog of `fcc_window` and its line buffers behind the scalar ports
-/// of `FccWindowProbe`, as a module `fcc_window_probe` (for the window's own
+/// of `FccWindowProbe`, as a module [`window_module`] (for the window's own
 /// bench; the core's copy is inside `fcc_top.v`).
 pub fn generate_window(p: &FccParams) -> Result<String, RtlError> {
     p.validate_for_hardware()?;
@@ -322,7 +369,11 @@ pub fn generate_window(p: &FccParams) -> Result<String, RtlError> {
     let raw = generate_verilog_unchecked(&probe);
     let mut v = file_header(p, "//");
     v.push_str("`default_nettype none\n");
-    v.push_str(&rename_modules(&constant_selects(&raw), WINDOW_MODULE));
+    v.push_str(&rename_modules(
+        &constant_selects(&raw),
+        WINDOW_NAME,
+        &p.module_suffix(),
+    ));
     v.push_str("\n`default_nettype wire\n");
     Ok(v)
 }
@@ -333,6 +384,10 @@ pub struct ParamsFile {
     pub generator_version: String,
     /// [`FccParams::hash`] of `params`.
     pub params_hash: String,
+    /// [`top_module`] of `params`: the name of the core's Verilog module
+    /// and of the packaged IP (absent in files of older generators).
+    #[serde(default)]
+    pub top_module: String,
     /// The build: limits of the core and power-on defaults of its run registers.
     pub params: FccParams,
     /// The register map ([`regmap::registers`]).
@@ -385,10 +440,25 @@ pub fn read_generated_params(dir: &Path) -> Result<FccParams, RtlError> {
     Ok(p)
 }
 
+/// Check that `verilog` (read from `path`) declares the top module of `p`.
+pub fn check_top_module(p: &FccParams, verilog: &str, path: &Path) -> Result<(), RtlError> {
+    let top = top_module(p);
+    let header = format!("module {top}(");
+    if verilog.lines().any(|l| l.trim_start().starts_with(&header)) {
+        Ok(())
+    } else {
+        Err(RtlError::NoTopModule {
+            path: path.to_path_buf(),
+            top,
+        })
+    }
+}
+
 fn params_json(p: &FccParams) -> String {
     let f = ParamsFile {
         generator_version: GENERATOR_VERSION.to_string(),
         params_hash: p.hash(),
+        top_module: top_module(p),
         params: p.clone(),
         registers: regmap::json(p),
     };
@@ -584,11 +654,13 @@ fn io_comment() -> String {
         .to_string()
 }
 
-/// Give rust-hdl's path-named modules the house names: `top` becomes
-/// `top_name` (`fcc_top`), a block `top$intra` becomes `fcc_intra`, anything
-/// below a block `fcc_<block>__<path>`, and registers of the top
-/// `<top_name>__<name>`.
-fn rename_modules(v: &str, top_name: &str) -> String {
+/// Give rust-hdl's path-named modules the house names, each followed by the
+/// configuration's `suffix`: `top` becomes `top_name` (`fcc_top`), a block
+/// `top$intra` becomes `fcc_intra`, anything below a block
+/// `fcc_<block>__<path>`, and registers of the top `<top_name>__<name>`.
+/// Every `module X` declared in `v` is renamed, and every use of `X` with
+/// it, so blocks added later are covered without a list.
+fn rename_modules(v: &str, top_name: &str, suffix: &str) -> String {
     const BLOCKS: [&str; 7] = [
         "intra",
         "window",
@@ -618,7 +690,7 @@ fn rename_modules(v: &str, top_name: &str) -> String {
             } else {
                 format!("fcc_{}", name.replace('$', "__"))
             };
-            map.insert(name, new);
+            map.insert(name, format!("{new}{suffix}"));
         }
     }
     let mut out = String::with_capacity(v.len());
@@ -675,6 +747,10 @@ fn constant_selects(v: &str) -> String {
 fn verilog_header(p: &FccParams) -> String {
     let mut s = file_header(p, "//");
     s.push_str("`ifndef FCC_PARAMS_VH\n`define FCC_PARAMS_VH\n");
+    s.push_str(&format!(
+        "// The core's module name: instantiate `FCC_TOP_MODULE.\n`define FCC_TOP_MODULE {}\n",
+        top_module(p)
+    ));
     for (k, v) in constants(p) {
         s.push_str(&format!("`define FCC_{k} {v}\n"));
     }

@@ -5,7 +5,7 @@ use std::process::Command;
 
 use fcc_params::FccParams;
 
-use crate::{file_header, RtlError, TOP_MODULE};
+use crate::{file_header, top_module, RtlError};
 
 /// The waiver file written beside the Verilog. Every waiver says why.
 pub fn waivers(p: &FccParams) -> String {
@@ -94,10 +94,10 @@ pub fn label_update_waivers(p: &FccParams) -> String {
     s
 }
 
-/// Lint `verilog` (top module `fcc_top`) with the waivers in `vlt`.
-/// Returns the log on success.
-pub fn lint_files(verilog: &Path, vlt: &Path) -> Result<String, RtlError> {
-    lint_module(verilog, vlt, TOP_MODULE)
+/// Lint `verilog`, generated for `p` (top module [`top_module`]), with the
+/// waivers in `vlt`. Returns the log on success.
+pub fn lint_files(p: &FccParams, verilog: &Path, vlt: &Path) -> Result<String, RtlError> {
+    lint_module(verilog, vlt, &top_module(p))
 }
 
 /// Lint `verilog` with top module `top` and the waivers in `vlt`.

@@ -433,8 +433,11 @@ pub fn c_header(p: &FccParams) -> String {
          #ifndef FCC_REGS_H\n#define FCC_REGS_H\n\n#include <stdint.h>\n\n",
     );
     s.push_str(&format!(
-        "#define FCC_REGS_ADDR_BITS {ADDR_BITS}u\n#define FCC_ID_MAGIC 0x{ID_MAGIC:08X}u\n#define FCC_PARAMS_HASH 0x{:016X}ull\n\n",
-        hash_value(p)
+        "#define FCC_REGS_ADDR_BITS {ADDR_BITS}u\n#define FCC_ID_MAGIC 0x{ID_MAGIC:08X}u\n#define FCC_PARAMS_HASH 0x{:016X}ull\n\
+         // The core's Verilog module and packaged IP name (fcc gen names every module\n\
+         // of a configuration with the same suffix).\n#define FCC_TOP_MODULE \"{}\"\n\n",
+        hash_value(p),
+        crate::top_module(p)
     ));
     for r in registers(p) {
         s.push_str(&format!(

@@ -22,7 +22,8 @@
 use fcc_params::FccParams;
 
 use crate::{
-    file_header, param_summary, Generated, Layout, RtlError, GENERATOR_VERSION, TOP_MODULE,
+    file_header, param_summary, top_module, Generated, Layout, RtlError, GENERATOR_VERSION,
+    TOP_NAME,
 };
 
 /// A board the generator writes a block design for.
@@ -292,9 +293,16 @@ pub fn ip_version() -> String {
     format!("{major}.{minor}")
 }
 
-/// `vendor:library:name:version` of the packaged core.
-pub fn ip_vlnv() -> String {
-    format!("{IP_VENDOR}:{IP_LIBRARY}:{TOP_MODULE}:{}", ip_version())
+/// `vendor:library:name:version` of the packaged core of `p`. The name is
+/// the top module's, so it changes with the configuration
+/// (`fcc:fcc:fcc_top_k7_1b2c3d4e:0.1`): two configurations can sit in one
+/// IP repository and one project.
+pub fn ip_vlnv(p: &FccParams) -> String {
+    format!(
+        "{IP_VENDOR}:{IP_LIBRARY}:{}:{}",
+        top_module(p),
+        ip_version()
+    )
 }
 
 // ---------------------------------------------------------------------------
@@ -315,15 +323,15 @@ pub struct Port {
     pub width: u32,
 }
 
-/// The ports of the top module, in declaration order, read from the
-/// generated Verilog (`input wire [63:0] s_axis_tdata;` ...). Empty if the
-/// module is missing.
-pub fn top_ports(verilog: &str) -> Vec<Port> {
+/// The ports of the module `top` (see [`top_module`]), in declaration
+/// order, read from the generated Verilog (`input wire [63:0]
+/// s_axis_tdata;` ...). Empty if the module is missing.
+pub fn top_ports(verilog: &str, top: &str) -> Vec<Port> {
     let decl = regex::Regex::new(
         r"^\s*(input|output)\s+(?:wire|reg)?\s*(?:\[(\d+):(\d+)\])?\s*([A-Za-z_][A-Za-z0-9_]*)\s*;",
     )
     .expect("valid regex");
-    let header = format!("module {TOP_MODULE}(");
+    let header = format!("module {top}(");
     let mut ports = vec![];
     let mut inside = false;
     for line in verilog.lines() {
@@ -360,7 +368,7 @@ pub fn top_ports(verilog: &str) -> Vec<Port> {
 fn port<'a>(ports: &'a [Port], name: &str) -> Result<&'a Port, RtlError> {
     ports.iter().find(|p| p.name == name).ok_or_else(|| {
         RtlError::Check(format!(
-            "{TOP_MODULE} has no port {name}; the Vivado scripts need it"
+            "{TOP_NAME} has no port {name}; the Vivado scripts need it"
         ))
     })
 }
@@ -506,7 +514,7 @@ set_input_delay -clock @CLK@ @IO@ [get_ports @RST@]
 set_false_path -to [get_ports @STATUS@*]
 "##,
         &[
-            ("TOP", TOP_MODULE.to_string()),
+            ("TOP", top_module(p)),
             ("BUILD", BUILD_SCRIPT.to_string()),
             ("PACKAGE", PACKAGE_SCRIPT.to_string()),
             ("PCT", format!("{pct}")),
@@ -663,7 +671,7 @@ if {$wns ne "none" && $wns < 0} {
 }
 "##,
         &[
-            ("TOP", TOP_MODULE.to_string()),
+            ("TOP", top_module(p)),
             ("BOARD", b.name.to_string()),
             ("TITLE", b.title.to_string()),
             ("PART", b.part.to_string()),
@@ -836,8 +844,8 @@ close_project
 puts "@SCRIPT@: @VLNV@ packaged in $ip_dir (IP repository: $ip_repo)"
 "##,
         &[
-            ("TOP", TOP_MODULE.to_string()),
-            ("VLNV", ip_vlnv()),
+            ("TOP", top_module(p)),
+            ("VLNV", ip_vlnv(p)),
             ("CLK", CLOCK_PORT.to_string()),
             ("RST", RESET_PORT.to_string()),
             ("BD", b.bd_script.to_string()),
@@ -941,7 +949,7 @@ pub fn bd_tcl(p: &FccParams, ports: &[Port], board: Board) -> Result<String, Rtl
     }
     if axis_port_maps(ports, AXIL_INTERFACE).is_empty() {
         return Err(RtlError::Check(format!(
-            "{TOP_MODULE} has no {AXIL_INTERFACE}_* ports; the block design needs its register port"
+            "{TOP_NAME} has no {AXIL_INTERFACE}_* ports; the block design needs its register port"
         )));
     }
     let fclk = fclk_mhz(p, board)?;
@@ -1125,7 +1133,7 @@ puts "@SCRIPT@: $design in $proj_dir"
             ("BOARD_NAME", b.name.to_string()),
             ("TITLE", b.title.to_string()),
             ("PART", b.part.to_string()),
-            ("TOP", TOP_MODULE.to_string()),
+            ("TOP", top_module(p)),
             ("PACKAGE", PACKAGE_SCRIPT.to_string()),
             ("SCRIPT", b.bd_script.to_string()),
             ("DEFAULT_OUT", DEFAULT_OUT.to_string()),
@@ -1158,7 +1166,7 @@ puts "@SCRIPT@: $design in $proj_dir"
             ("OUT_WIDTH", out_width.to_string()),
             ("CLK", CLOCK_PORT.to_string()),
             ("RST", RESET_PORT.to_string()),
-            ("FCC_VLNV", ip_vlnv()),
+            ("FCC_VLNV", ip_vlnv(p)),
             ("PS_NAME", ps_name.to_string()),
             ("PS_VLNV", ps.vlnv.to_string()),
             ("PS_RULE", ps.automation_rule.to_string()),
@@ -1189,7 +1197,7 @@ pub fn extra_scripts(
     layout: &Layout,
     board: Board,
 ) -> Result<Vec<(&'static str, String)>, RtlError> {
-    let ports = top_ports(&g.verilog);
+    let ports = top_ports(&g.verilog, &top_module(&g.params));
     let rtl = relative(&layout.scripts, &layout.rtl.join("fcc_top.v"));
     let xdc = relative(&layout.scripts, &layout.constraints.join("fcc_top.xdc"));
     let b = board.info();

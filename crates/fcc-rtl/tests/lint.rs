@@ -42,7 +42,8 @@ fn lint_clean_for_every_fsize() {
     for fsize in [3, 5, 7, 9, 11] {
         let dir = scratch(&format!("k{fsize}"));
         write_rtl(&small(fsize), &dir).unwrap();
-        if let Err(e) = lint::lint_files(&dir.join("fcc_top.v"), &dir.join("fcc_lint.vlt")) {
+        let files = (dir.join("fcc_top.v"), dir.join("fcc_lint.vlt"));
+        if let Err(e) = lint::lint_files(&small(fsize), &files.0, &files.1) {
             panic!("fsize {fsize}: {e}");
         }
         let _ = std::fs::remove_dir_all(&dir);
@@ -76,7 +77,7 @@ fn lint_clean_default_and_odd_sizes() {
     ] {
         let dir = scratch(&format!("p{}", p.hash()));
         write_rtl(&p, &dir).unwrap();
-        if let Err(e) = lint::lint_files(&dir.join("fcc_top.v"), &dir.join("fcc_lint.vlt")) {
+        if let Err(e) = lint::lint_files(&p, &dir.join("fcc_top.v"), &dir.join("fcc_lint.vlt")) {
             panic!("{}: {e}", fcc_rtl::param_summary(&p));
         }
         let _ = std::fs::remove_dir_all(&dir);
@@ -90,15 +91,16 @@ fn generation_is_deterministic_and_named() {
     let b = generate(&p).unwrap();
     assert_eq!(a, b);
     for m in [
-        "module fcc_top(",
-        "module fcc_intra(",
-        "module fcc_window(",
-        "module fcc_dist_tree(",
-        "module fcc_sort_net(",
-        "module fcc_merge_table(",
-        "module fcc_label_update(",
+        "fcc_top",
+        "fcc_intra",
+        "fcc_window",
+        "fcc_dist_tree",
+        "fcc_sort_net",
+        "fcc_merge_table",
+        "fcc_label_update",
     ] {
-        assert!(a.verilog.contains(m), "missing {m}");
+        let m = format!("module {m}{}(", p.module_suffix());
+        assert!(a.verilog.contains(&m), "missing {m}");
     }
     assert!(a.verilog.contains(&p.hash()));
     assert!(!a.verilog.contains("module top"));
@@ -132,7 +134,7 @@ fn register_file_alone_lints_clean() {
     let vlt = dir.join("fcc_regs.vlt");
     std::fs::write(&v, fcc_rtl::generate_regs(&p).unwrap()).unwrap();
     std::fs::write(&vlt, lint::regs_waivers(&p)).unwrap();
-    if let Err(e) = lint::lint_module(&v, &vlt, fcc_rtl::REGS_MODULE) {
+    if let Err(e) = lint::lint_module(&v, &vlt, &fcc_rtl::regs_module(&p)) {
         panic!("{e}");
     }
     let _ = std::fs::remove_dir_all(&dir);
@@ -155,7 +157,7 @@ fn label_updater_alone_lints_clean_for_every_labels_per_beat() {
         let vlt = dir.join("fcc_label_update.vlt");
         std::fs::write(&v, fcc_rtl::generate_label_update(&p).unwrap()).unwrap();
         std::fs::write(&vlt, lint::label_update_waivers(&p)).unwrap();
-        if let Err(e) = lint::lint_module(&v, &vlt, fcc_rtl::LABEL_UPDATE_MODULE) {
+        if let Err(e) = lint::lint_module(&v, &vlt, &fcc_rtl::label_update_module(&p)) {
             panic!("labels per beat {lpb}: {e}");
         }
         let _ = std::fs::remove_dir_all(&dir);
@@ -210,6 +212,129 @@ fn register_header_compiles_as_c99() {
         out.status.success(),
         "{}",
         String::from_utf8_lossy(&out.stderr)
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The names of the modules `verilog` declares.
+fn module_names(verilog: &str) -> Vec<String> {
+    verilog
+        .lines()
+        .filter_map(|l| l.trim_start().strip_prefix("module "))
+        .map(|r| {
+            r.split(['(', ' ', ';'])
+                .next()
+                .unwrap_or_default()
+                .to_string()
+        })
+        .collect()
+}
+
+#[test]
+fn every_module_carries_the_suffix_and_two_configurations_share_none() {
+    // Differ in one run-register default only: the Verilog differs, K does not.
+    let a = small(5);
+    let b = FccParams {
+        th_h: 0.75,
+        ..small(5)
+    };
+    let (va, vb) = (generate(&a).unwrap().verilog, generate(&b).unwrap().verilog);
+    let (ma, mb) = (module_names(&va), module_names(&vb));
+    assert!(ma.len() > 7, "{ma:?}");
+    for (p, names) in [(&a, &ma), (&b, &mb)] {
+        for m in names {
+            assert!(
+                m.ends_with(&p.module_suffix()),
+                "{m} lacks {}",
+                p.module_suffix()
+            );
+        }
+    }
+    let shared: Vec<&String> = ma.iter().filter(|m| mb.contains(m)).collect();
+    assert!(shared.is_empty(), "modules of both: {shared:?}");
+    // Every use of a module is renamed with its declaration: nothing
+    // instantiates a name that is not declared.
+    let inst =
+        regex::Regex::new(r"(?m)^\s*(fcc_[A-Za-z0-9_$]+)\s+[A-Za-z_][A-Za-z0-9_$]*\s*\(").unwrap();
+    for c in inst.captures_iter(&va) {
+        assert!(
+            ma.contains(&c[1].to_string()),
+            "{} is instantiated, not declared",
+            &c[1]
+        );
+    }
+}
+
+/// `verilator --lint-only` of `files` under the top `top` (a wrapper).
+fn lint_together(files: &[PathBuf], top: &str) -> (bool, String) {
+    let out = std::process::Command::new("verilator")
+        // The wrapper leaves the cores' stream ports open on purpose.
+        .args(["--lint-only", "-Wno-PINMISSING", "--top-module", top])
+        .args(files)
+        .output()
+        .unwrap();
+    let log = format!(
+        "{}{}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    (out.status.success() && !log.contains("%Error"), log)
+}
+
+#[test]
+fn two_configurations_compile_together_in_one_design() {
+    if !verilator_present() {
+        eprintln!("verilator not installed: lint skipped");
+        return;
+    }
+    let dir = scratch("two-configs");
+    let (p3, p5) = (small(3), small(5));
+    write_rtl(&p3, &dir.join("k3")).unwrap();
+    write_rtl(&p5, &dir.join("k5")).unwrap();
+    // One design that instantiates both cores (clock and reset only: the
+    // point is elaboration of both module sets side by side).
+    let wrapper = dir.join("both.v");
+    std::fs::write(
+        &wrapper,
+        format!(
+            "module both(input wire clk, input wire rst);\n  \
+             {} k3 (.clk(clk), .rst(rst));\n  {} k5 (.clk(clk), .rst(rst));\nendmodule\n",
+            fcc_rtl::top_module(&p3),
+            fcc_rtl::top_module(&p5)
+        ),
+    )
+    .unwrap();
+    // Each configuration's own waivers, as `fcc gen` lints it.
+    let vlt = [dir.join("k3/fcc_lint.vlt"), dir.join("k5/fcc_lint.vlt")];
+    let (ok, log) = lint_together(
+        &[
+            vlt[0].clone(),
+            vlt[1].clone(),
+            wrapper.clone(),
+            dir.join("k3/fcc_top.v"),
+            dir.join("k5/fcc_top.v"),
+        ],
+        "both",
+    );
+    assert!(ok, "K = 3 and K = 5 clash:\n{log}");
+
+    // The check can fail: two copies of one configuration's modules clash.
+    std::fs::create_dir_all(dir.join("k3b")).unwrap();
+    std::fs::copy(dir.join("k3/fcc_top.v"), dir.join("k3b/fcc_top.v")).unwrap();
+    let (ok, log) = lint_together(
+        &[
+            vlt[0].clone(),
+            vlt[1].clone(),
+            wrapper,
+            dir.join("k3/fcc_top.v"),
+            dir.join("k3b/fcc_top.v"),
+            dir.join("k5/fcc_top.v"),
+        ],
+        "both",
+    );
+    assert!(
+        !ok && log.contains("MODDUP"),
+        "a duplicate module passed:\n{log}"
     );
     let _ = std::fs::remove_dir_all(&dir);
 }

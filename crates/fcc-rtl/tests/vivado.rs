@@ -10,7 +10,7 @@ use std::process::Command;
 
 use fcc_params::FccParams;
 use fcc_rtl::vivado::{self, Board, Port, PortDir, BOARDS};
-use fcc_rtl::{file_header, generate, write_all, Layout, TOP_MODULE};
+use fcc_rtl::{file_header, generate, top_module, write_all, Layout};
 
 fn small() -> FccParams {
     FccParams {
@@ -21,7 +21,7 @@ fn small() -> FccParams {
 }
 
 fn ports(p: &FccParams) -> Vec<Port> {
-    vivado::top_ports(&generate(p).unwrap().verilog)
+    vivado::top_ports(&generate(p).unwrap().verilog, &top_module(p))
 }
 
 /// All four generated files of `p` for the repository layout, by name.
@@ -76,10 +76,12 @@ fn top_ports_are_read_from_the_generated_verilog() {
     let header = generate(&FccParams::default()).unwrap().verilog;
     let list = header
         .lines()
-        .find(|l| l.starts_with(&format!("module {TOP_MODULE}(")))
+        .find(|l| l.starts_with(&format!("module {}(", top_module(&FccParams::default()))))
         .unwrap();
     assert_eq!(list.matches(',').count() + 1, ps.len(), "{list}");
-    assert!(vivado::top_ports("module other(a);\n input wire a;\nendmodule\n").is_empty());
+    assert!(
+        vivado::top_ports("module other(a);\n input wire a;\nendmodule\n", "fcc_top").is_empty()
+    );
 }
 
 #[test]
@@ -140,7 +142,9 @@ fn clock_above_the_zc706_dma_limit_is_refused_at_generation() {
 
 #[test]
 fn scripts_name_the_part_the_board_and_the_top() {
-    let f = files(&small());
+    let p = small();
+    let f = files(&p);
+    let top = top_module(&p);
     for name in ["fcc_build.tcl", "fcc_package_ip.tcl", "fcc_zc706_bd.tcl"] {
         assert!(
             file(&f, name).contains("set part xc7z045ffg900-2\n"),
@@ -149,12 +153,14 @@ fn scripts_name_the_part_the_board_and_the_top() {
     }
     assert!(file(&f, "fcc_build.tcl")
         .contains("synth_design -top $top -part $part -mode out_of_context\n"));
-    assert!(file(&f, "fcc_build.tcl").contains("set top fcc_top\n"));
-    assert!(file(&f, "fcc_package_ip.tcl").contains("set top fcc_top\n"));
+    assert!(file(&f, "fcc_build.tcl").contains(&format!("set top {top}\n")));
+    assert!(file(&f, "fcc_package_ip.tcl").contains(&format!("set top {top}\n")));
     let bd = file(&f, "fcc_zc706_bd.tcl");
     assert!(bd.contains("set board_part xilinx.com:zc706:part0:1.4\n"));
-    assert!(bd.contains("create_bd_cell -type ip -vlnv fcc:fcc:fcc_top:0.1 fcc\n"));
-    assert_eq!(vivado::ip_vlnv(), "fcc:fcc:fcc_top:0.1");
+    assert!(bd.contains(&format!(
+        "create_bd_cell -type ip -vlnv fcc:fcc:{top}:0.1 fcc\n"
+    )));
+    assert_eq!(vivado::ip_vlnv(&p), format!("fcc:fcc:{top}:0.1"));
 }
 
 #[test]
@@ -717,6 +723,7 @@ fn build_dry_run_runs_the_whole_flow_on_the_generated_files() {
         eprintln!("tclsh not installed: dry run skipped");
         return;
     }
+    let top = top_module(&small());
     let (scripts, work) = generated_tree("build", &small());
     let r = dry_run(&work, &scripts.join("fcc_build.tcl"), &[]);
     assert!(r.ok, "{}", r.stderr);
@@ -734,7 +741,7 @@ fn build_dry_run_runs_the_whole_flow_on_the_generated_files() {
     r.in_order(&[
         "read_verilog ",
         "read_xdc -mode out_of_context ",
-        "synth_design -top fcc_top -part xc7z045ffg900-2 -mode out_of_context",
+        &format!("synth_design -top {top} -part xc7z045ffg900-2 -mode out_of_context"),
         &format!(
             "write_checkpoint -force {}",
             out.join("post_synth.dcp").display()
@@ -762,7 +769,7 @@ fn build_dry_run_runs_the_whole_flow_on_the_generated_files() {
     let summary = std::fs::read_to_string(out.join("summary.txt")).unwrap();
     for line in [
         "part=xc7z045ffg900-2",
-        "top=fcc_top",
+        &format!("top={top}"),
         "clock_mhz=200",
         "period_ns=5.000",
         "wns_ns=none",
@@ -827,14 +834,14 @@ fn package_dry_run_maps_every_port_of_the_interfaces() {
     let (scripts, work) = generated_tree("package", &p);
     let r = dry_run(&work, &scripts.join("fcc_package_ip.tcl"), &[]);
     assert!(r.ok, "{}", r.stderr);
-    let ip_dir = work.join("vivado_fcc/ip_repo/fcc_top");
+    let ip_dir = work.join("vivado_fcc/ip_repo").join(top_module(&p));
     r.in_order(&[
         &format!(
             "create_project -force fcc_ip_project {} -part xc7z045ffg900-2",
             work.join("vivado_fcc/ip_project").display()
         ),
         "add_files -norecurse ",
-        "set_property top fcc_top {}",
+        &format!("set_property top {} {{}}", top_module(&p)),
         "add_files -fileset constrs_1 -norecurse ",
         "set_property USED_IN {synthesis implementation out_of_context} {}",
         &format!(
@@ -914,7 +921,7 @@ fn block_design_dry_run_needs_the_ip_and_writes_the_software_map() {
     assert!(r.stderr.contains("run fcc_package_ip.tcl"), "{}", r.stderr);
     assert!(r.log.is_empty());
 
-    let ip = work.join("vivado_fcc/ip_repo/fcc_top");
+    let ip = work.join("vivado_fcc/ip_repo").join(top_module(&p));
     std::fs::create_dir_all(&ip).unwrap();
     std::fs::write(ip.join("component.xml"), "").unwrap();
     let r = dry_run(&work, &script, &[]);
@@ -940,7 +947,10 @@ fn block_design_dry_run_needs_the_ip_and_writes_the_software_map() {
         "create_bd_cell -type ip -vlnv xilinx.com:ip:smartconnect:1.0 ctrl_smc",
         "create_bd_cell -type ip -vlnv xilinx.com:ip:smartconnect:1.0 mem_smc",
         "create_bd_cell -type ip -vlnv xilinx.com:ip:xlconcat:2.1 irq_concat",
-        "create_bd_cell -type ip -vlnv fcc:fcc:fcc_top:0.1 fcc",
+        &format!(
+            "create_bd_cell -type ip -vlnv fcc:fcc:{}:0.1 fcc",
+            top_module(&p)
+        ),
         "connect_bd_net ",
         "connect_bd_intf_net ",
         "assign_bd_address",
@@ -1018,8 +1028,10 @@ fn build_dry_run_stops_when_the_routed_wns_is_negative() {
     let r = dry_run_wns(&work, &script, &[], Some("-0.123"));
     assert!(!r.ok, "a negative WNS passed");
     assert!(
-        r.stderr
-            .contains("the routed fcc_top misses 200 MHz by 0.123 ns (WNS -0.123 ns)"),
+        r.stderr.contains(&format!(
+            "the routed {} misses 200 MHz by 0.123 ns (WNS -0.123 ns)",
+            top_module(&small())
+        )),
         "{}",
         r.stderr
     );
@@ -1034,7 +1046,7 @@ fn block_design_dry_run_writes_no_bitstream_or_xsa_when_wns_is_negative() {
         return;
     }
     let (scripts, work) = generated_tree("bd-wns", &small());
-    let ip = work.join("vivado_fcc/ip_repo/fcc_top");
+    let ip = work.join("vivado_fcc/ip_repo").join(top_module(&small()));
     std::fs::create_dir_all(&ip).unwrap();
     std::fs::write(ip.join("component.xml"), "").unwrap();
     let script = scripts.join("fcc_zc706_bd.tcl");
@@ -1095,12 +1107,13 @@ fn every_board_gets_a_block_design_that_dry_runs_with_its_own_ps() {
         let build = dry_run(&work, &scripts.join("fcc_build.tcl"), &[]);
         assert!(build.ok, "{}: {}", b.name, build.stderr);
         assert!(build.has(&format!(
-            "synth_design -top fcc_top -part {} -mode out_of_context",
+            "synth_design -top {} -part {} -mode out_of_context",
+            top_module(&p),
             b.part
         )));
         let pkg = dry_run(&work, &scripts.join("fcc_package_ip.tcl"), &[]);
         assert!(pkg.ok, "{}: {}", b.name, pkg.stderr);
-        let ip = work.join("vivado_fcc/ip_repo/fcc_top");
+        let ip = work.join("vivado_fcc/ip_repo").join(top_module(&p));
         std::fs::create_dir_all(&ip).unwrap();
         std::fs::write(ip.join("component.xml"), "").unwrap();
         let r = dry_run(&work, &scripts.join(b.bd_script), &["-bitstream"]);

@@ -512,6 +512,7 @@ pub fn yosys_config_for(
     by_block_for_targets: bool,
 ) -> YosysConfig {
     YosysConfig {
+        top: fcc_rtl::top_module(p),
         by_block: base.by_block || (by_block_for_targets && TARGETS.applies_to(p)),
         ..base.clone()
     }
@@ -1162,7 +1163,7 @@ pub fn render_markdown(report: &Report) -> String {
                         .then_with(|| a.0.cmp(b.0))
                 });
                 for (name, r) in v {
-                    let label = if name == fcc_rtl::TOP_MODULE {
+                    let label = if name == fcc_rtl::TOP_NAME {
                         format!("{name} (between blocks)")
                     } else {
                         name.clone()

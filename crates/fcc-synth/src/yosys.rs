@@ -61,7 +61,9 @@ pub const STA_LOG_FILE: &str = "sta_yosys.log";
 pub struct YosysConfig {
     /// The Yosys executable (looked up on PATH unless it is a path).
     pub program: PathBuf,
-    /// Top module.
+    /// Top module: [`fcc_rtl::top_module`] of the configuration (set by
+    /// [`crate::results::yosys_config_for`]; the default, the bare
+    /// [`fcc_rtl::TOP_NAME`], suits hand-written test designs).
     pub top: String,
     /// `synth_xilinx -family`.
     pub family: String,
@@ -76,7 +78,7 @@ impl Default for YosysConfig {
     fn default() -> Self {
         YosysConfig {
             program: PathBuf::from("yosys"),
-            top: fcc_rtl::TOP_MODULE.to_string(),
+            top: fcc_rtl::TOP_NAME.to_string(),
             family: "xc7".to_string(),
             timing: true,
             by_block: false,
@@ -200,6 +202,17 @@ pub fn block_modules(files: &[PathBuf], top: &str) -> Result<Vec<String>, SynthE
     blocks.sort();
     blocks.dedup();
     Ok(blocks)
+}
+
+/// A block's name without the configuration suffix its top `top` carries
+/// (`fcc_intra_k7_1b2c3d4e` -> `fcc_intra`), so reports name blocks the same
+/// for every configuration.
+pub fn block_name(module: &str, top: &str) -> String {
+    let suffix = top.strip_prefix(fcc_rtl::TOP_NAME).unwrap_or("");
+    if suffix.is_empty() {
+        return module.to_string();
+    }
+    module.strip_suffix(suffix).unwrap_or(module).to_string()
 }
 
 /// Start `program` with `args`, mapping a failure to start to [`SynthError::ToolMissing`].
@@ -357,14 +370,16 @@ pub fn synthesize(
         let path = work_dir.join(BLOCKS_FILE);
         let text = std::fs::read_to_string(&path).map_err(io_err("read", &path))?;
         Some(
-            Resources::blocks_from_stat_json(&text, &cfg.top).map_err(|reason| {
-                SynthError::Parse {
+            Resources::blocks_from_stat_json(&text, &cfg.top)
+                .map_err(|reason| SynthError::Parse {
                     what: "the by-block cell counts of `stat -json -top`".into(),
                     path: path.clone(),
                     reason,
                     tail: log_tail(),
-                }
-            })?,
+                })?
+                .into_iter()
+                .map(|(name, r)| (block_name(&name, &cfg.top), r))
+                .collect(),
         )
     } else {
         None
@@ -479,6 +494,15 @@ mod tests {
             block_modules(&[f], "fcc_top").unwrap(),
             vec!["fcc_intra".to_string(), "fcc_window".to_string()]
         );
+    }
+
+    #[test]
+    fn block_names_lose_the_configuration_suffix_of_the_top() {
+        let top = "fcc_top_k7_1b2c3d4e";
+        assert_eq!(block_name("fcc_intra_k7_1b2c3d4e", top), "fcc_intra");
+        assert_eq!(block_name(top, top), "fcc_top");
+        assert_eq!(block_name("other", top), "other");
+        assert_eq!(block_name("fcc_intra", "fcc_top"), "fcc_intra");
     }
 
     #[test]
