@@ -117,8 +117,13 @@ impl SynthArgs {
     /// JSON: the command that made it, with the inputs attached now.
     fn command_after(&self, previous: &str) -> String {
         let mut c = previous.to_string();
+        // `fcc results` always measures every K: `--all` is implied there.
+        let implied_all = previous.starts_with("fcc results");
         for flag in self.command().split(" --").skip(1) {
             let flag = format!(" --{flag}");
+            if implied_all && flag.trim() == "--all" {
+                continue;
+            }
             if !c.contains(&flag) {
                 c.push_str(&flag);
             }
