@@ -6958,6 +6958,7 @@ module fcc_label_update__assembly_k7_668cf05b(clk,rst,clear,head_valid,head,head
     localparam  zero3 = 3'b0;
     localparam  one24 = 24'h1;
     localparam  zero24 = 24'h0;
+    localparam  zero16 = 16'h0;
 
     // Stub signals
     reg  [2:0] slot_mux$0$source;
@@ -7280,7 +7281,7 @@ module fcc_label_update__assembly_k7_668cf05b(clk,rst,clear,head_valid,head,head
         if (out_valid$q & m_axis_tready) begin
             out_valid$d = 1'b0;
         end
-        if (out_free) begin
+        if (out_free & head_valid) begin
             out_data$d[15:0] = slot_mux$0$label;
             out_data$d[31:16] = slot_mux$1$label;
             out_data$d[47:32] = slot_mux$2$label;
@@ -7306,6 +7307,11 @@ module fcc_label_update__assembly_k7_668cf05b(clk,rst,clear,head_valid,head,head
         if (rst) begin
             taken$d = zero3;
             out_valid$d = 1'b0;
+            carried_run$d = zero16;
+            collected$0$d = zero16;
+            collected$1$d = zero16;
+            collected$2$d = zero16;
+            collected$3$d = zero16;
         end
         m_axis_tdata = out_data$q;
         m_axis_tkeep = out_keep$q;
@@ -7994,6 +8000,7 @@ module fcc_label_update__gearbox_k7_668cf05b(clk,rst,clear,push_valid,push_label
     localparam  two = 4'h2;
     localparam  one3 = 3'b1;
     localparam  two3 = 3'b10;
+    localparam  empty_slot = 16'h0;
 
     // Stub signals
     reg  [15:0] slots$0$d;
@@ -8243,6 +8250,16 @@ module fcc_label_update__gearbox_k7_668cf05b(clk,rst,clear,push_valid,push_label
             read_slot$d = slot_is$0;
             second_slot$d = slot_is$1;
             write_slot$d = slot_is$0;
+        end
+        if (rst) begin
+            slots$0$d = empty_slot;
+            slots$1$d = empty_slot;
+            slots$2$d = empty_slot;
+            slots$3$d = empty_slot;
+            slots$4$d = empty_slot;
+            slots$5$d = empty_slot;
+            slots$6$d = empty_slot;
+            slots$7$d = empty_slot;
         end
     end
 

@@ -71,6 +71,7 @@ pub struct FccBeatAssembly {
     zero3: Constant<Bits<3>>,
     one24: Constant<Bits<24>>,
     zero24: Constant<Bits<24>>,
+    zero16: Constant<Bits<16>>,
 }
 
 impl FccBeatAssembly {
@@ -119,6 +120,7 @@ impl FccBeatAssembly {
             zero3: kb(0),
             one24: kb(1),
             zero24: kb(0),
+            zero16: kb(0),
         }
     }
 }
@@ -237,10 +239,12 @@ impl Logic for FccBeatAssembly {
         if self.out_valid.q.val() & self.m_axis_tready.val() {
             self.out_valid.d.next = false;
         }
-        // Slots 0 .. 2 load whenever the register is free (what they hold
-        // without `out_valid` is never seen), the rest with the beat: the
-        // enable is two nets of under 64 loads each, not one of 90.
-        if self.out_free.val() {
+        // Slots 0 .. 2 load whenever the register is free and a head beat
+        // waits (what they hold without `out_valid` is never seen, and is
+        // never X: the head and the labels it selects are defined), the rest
+        // with the beat: the enable is two nets of under 64 loads each, not
+        // one of 90.
+        if self.out_free.val() & self.head_valid.val() {
             self.out_data.d.next.l0 = self.slot_mux[0].label.val();
             self.out_data.d.next.l1 = self.slot_mux[1].label.val();
             self.out_data.d.next.l2 = self.slot_mux[2].label.val();
@@ -266,6 +270,10 @@ impl Logic for FccBeatAssembly {
         if self.rst.val() {
             self.taken.d.next = self.zero3.val();
             self.out_valid.d.next = false;
+            self.carried_run.d.next = self.zero16.val();
+            for k in 0..4 {
+                self.collected[k].d.next = self.zero16.val();
+            }
         }
         self.m_axis_tdata.next = self.out_data.q.val().into();
         self.m_axis_tkeep.next = self.out_keep.q.val();

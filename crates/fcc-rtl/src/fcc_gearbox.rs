@@ -54,6 +54,9 @@ pub struct FccGearbox {
     two: Constant<Bits<4>>,
     one3: Constant<Bits<3>>,
     two3: Constant<Bits<3>>,
+    /// What a slot holds after reset: the output register loads slots while
+    /// `m_axis_tvalid` is low, so no slot may ever be X (reset-only flows).
+    empty_slot: Constant<Bits<16>>,
 }
 
 impl FccGearbox {
@@ -86,6 +89,7 @@ impl FccGearbox {
             two: kb(2),
             one3: kb(1),
             two3: kb(2),
+            empty_slot: kb(0),
         }
     }
 }
@@ -162,6 +166,11 @@ impl Logic for FccGearbox {
             self.read_slot.d.next = self.slot_is[0].val();
             self.second_slot.d.next = self.slot_is[1].val();
             self.write_slot.d.next = self.slot_is[0].val();
+        }
+        if self.rst.val() {
+            for i in 0..8 {
+                self.slots[i].d.next = self.empty_slot.val();
+            }
         }
     }
 }
