@@ -7,6 +7,7 @@
 //! model and reports the first differing pixel.
 
 pub mod axil;
+pub mod block;
 pub mod board;
 pub mod check;
 pub mod drive;

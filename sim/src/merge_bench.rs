@@ -3,18 +3,17 @@
 //! flattened against random gearbox back-pressure, and compared with the
 //! golden model's `ExactMerge`.
 
-use std::collections::HashMap;
 use std::ffi::c_void;
-use std::path::Path;
-use std::sync::{Arc, Mutex, OnceLock};
+use std::sync::{Arc, OnceLock};
 
 use fcc_golden::{renumber, ExactMerge};
 use fcc_params::FccParams;
 use rand::rngs::StdRng;
 use rand::Rng;
 
+use crate::block::{load_block, BlockBuild, BlockCache, BlockInstance, BlockModel};
 use crate::ffi::c_struct;
-use crate::model::{build, cache_root, fnv, shim_text, Shim};
+use crate::model::Shim;
 use crate::SimError;
 
 const SHIM: &str = include_str!("../csrc/fcc_merge_shim.cpp");
@@ -46,41 +45,25 @@ c_struct! {
     }
 }
 
-type NewFn = unsafe extern "C" fn() -> *mut c_void;
-type FreeFn = unsafe extern "C" fn(*mut c_void);
 type StepFn = unsafe extern "C" fn(*mut c_void, *const MergeIn, *mut MergeOut);
 
 /// A loaded Verilator model of `fcc_merge_table`.
-pub struct MergeModel {
-    new_fn: NewFn,
-    free_fn: FreeFn,
-    step_fn: StepFn,
-    _lib: libloading::Library,
-}
+pub type MergeModel = BlockModel<StepFn>;
 
 /// Load the merge-table model of the build `p`, building it if needed.
 pub fn load_merge_table(p: &FccParams) -> Result<Arc<MergeModel>, SimError> {
-    static MODELS: OnceLock<Mutex<HashMap<String, Arc<MergeModel>>>> = OnceLock::new();
-    let models = MODELS.get_or_init(|| Mutex::new(HashMap::new()));
-    let mut map = models.lock().unwrap_or_else(|e| e.into_inner());
+    static MODELS: BlockCache<StepFn> = OnceLock::new();
     let verilog = fcc_rtl::generate_merge_table(p)?;
     let vlt = fcc_rtl::lint::merge_table_waivers(p);
-    let key = format!(
-        "merge-{:016x}",
-        fnv(&format!("{verilog}{vlt}{}", shim_text(SHIM)))
-    );
-    if let Some(m) = map.get(&key) {
-        return Ok(m.clone());
-    }
-    let dir = cache_root().join(&key);
-    if !dir.join(LIB_NAME).exists() {
-        build(
-            &[
+    load_block(
+        &MODELS,
+        &BlockBuild {
+            key: "merge",
+            files: &[
                 ("fcc_merge_table.v", &verilog),
                 ("fcc_merge_table.vlt", &vlt),
             ],
-            &dir,
-            &Shim {
+            shim: Shim {
                 name: "fcc_merge_shim.cpp",
                 text: SHIM,
                 top: &fcc_rtl::merge_table_module(p),
@@ -89,35 +72,9 @@ pub fn load_merge_table(p: &FccParams) -> Result<Arc<MergeModel>, SimError> {
                 lib: LIB_NAME,
                 coverage: false,
             },
-        )?;
-    }
-    let model = Arc::new(open(&dir)?);
-    map.insert(key, model.clone());
-    Ok(model)
-}
-
-fn open(dir: &Path) -> Result<MergeModel, SimError> {
-    let path = dir.join(LIB_NAME);
-    let err = |source| SimError::Load {
-        path: path.clone(),
-        source,
-    };
-    // SAFETY: the library is built from our own shim; loading it runs no
-    // initialisers beyond the C++ runtime's.
-    let lib = unsafe { libloading::Library::new(&path) }.map_err(err)?;
-    // SAFETY: the symbol types match the `extern "C"` declarations in the shim.
-    let (new_fn, free_fn, step_fn) = unsafe {
-        let n: NewFn = *lib.get::<NewFn>(b"fcc_merge_new\0").map_err(err)?;
-        let f: FreeFn = *lib.get::<FreeFn>(b"fcc_merge_free\0").map_err(err)?;
-        let s: StepFn = *lib.get::<StepFn>(b"fcc_merge_step\0").map_err(err)?;
-        (n, f, s)
-    };
-    Ok(MergeModel {
-        new_fn,
-        free_fn,
-        step_fn,
-        _lib: lib,
-    })
+            symbol: "fcc_merge",
+        },
+    )
 }
 
 /// One frame for the merge table: labels `1 ..= provisional` and the joins
@@ -182,19 +139,16 @@ pub struct MergeResult {
 
 /// One simulated merge table.
 pub struct MergeDut {
-    model: Arc<MergeModel>,
-    handle: *mut c_void,
+    dut: BlockInstance<StepFn>,
     label_bits: u32,
     cycles: u64,
 }
 
 impl MergeDut {
     pub fn new(model: Arc<MergeModel>, p: &FccParams) -> Self {
-        // SAFETY: a fresh model from the same library, freed in `drop`.
-        let handle = unsafe { (model.new_fn)() };
+        let dut = BlockInstance::new(model);
         MergeDut {
-            model,
-            handle,
+            dut,
             label_bits: p.label_bits,
             cycles: 0,
         }
@@ -203,8 +157,9 @@ impl MergeDut {
     /// One cycle with `inp`.
     pub fn step(&mut self, inp: &MergeIn) -> MergeOut {
         let mut out = MergeOut::default();
+        let (step, handle) = self.dut.step_fn();
         // SAFETY: `handle` is live; both pointers refer to `repr(C)` values.
-        unsafe { (self.model.step_fn)(self.handle, inp, &mut out) };
+        unsafe { step(handle, inp, &mut out) };
         self.cycles += 1;
         out
     }
@@ -326,13 +281,6 @@ impl MergeDut {
             union_cycles,
             flatten_cycles: self.cycles - flat_start,
         })
-    }
-}
-
-impl Drop for MergeDut {
-    fn drop(&mut self) {
-        // SAFETY: freed exactly once, with the library still loaded.
-        unsafe { (self.model.free_fn)(self.handle) };
     }
 }
 

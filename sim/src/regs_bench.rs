@@ -2,16 +2,15 @@
 //! from `fcc_rtl::generate_regs`, driven through its AXI4-Lite port and its
 //! frame-status inputs.
 
-use std::collections::HashMap;
 use std::ffi::c_void;
-use std::path::Path;
-use std::sync::{Arc, Mutex, OnceLock};
+use std::sync::{Arc, OnceLock};
 
 use fcc_params::FccParams;
 
 use crate::axil::{AxilM, AxilPort, AxilS};
+use crate::block::{load_block, BlockBuild, BlockCache, BlockInstance, BlockModel};
 use crate::ffi::c_struct;
-use crate::model::{build, cache_root, fnv, shim_text, Shim};
+use crate::model::Shim;
 use crate::SimError;
 
 const SHIM: &str = include_str!("../csrc/fcc_regs_shim.cpp");
@@ -73,38 +72,22 @@ c_struct! {
     }
 }
 
-type NewFn = unsafe extern "C" fn() -> *mut c_void;
-type FreeFn = unsafe extern "C" fn(*mut c_void);
 type StepFn = unsafe extern "C" fn(*mut c_void, *const RegsIn, *mut RegsOut);
 
 /// A loaded Verilator model of `fcc_regs`.
-pub struct RegsModel {
-    new_fn: NewFn,
-    free_fn: FreeFn,
-    step_fn: StepFn,
-    _lib: libloading::Library,
-}
+pub type RegsModel = BlockModel<StepFn>;
 
 /// Load the register-file model of the build `p`, building it if needed.
 pub fn load_regs(p: &FccParams) -> Result<Arc<RegsModel>, SimError> {
-    static MODELS: OnceLock<Mutex<HashMap<String, Arc<RegsModel>>>> = OnceLock::new();
-    let models = MODELS.get_or_init(|| Mutex::new(HashMap::new()));
-    let mut map = models.lock().unwrap_or_else(|e| e.into_inner());
+    static MODELS: BlockCache<StepFn> = OnceLock::new();
     let verilog = fcc_rtl::generate_regs(p)?;
     let vlt = fcc_rtl::lint::regs_waivers(p);
-    let key = format!(
-        "regs-{:016x}",
-        fnv(&format!("{verilog}{vlt}{}", shim_text(SHIM)))
-    );
-    if let Some(m) = map.get(&key) {
-        return Ok(m.clone());
-    }
-    let dir = cache_root().join(&key);
-    if !dir.join(LIB_NAME).exists() {
-        build(
-            &[("fcc_regs.v", &verilog), ("fcc_regs.vlt", &vlt)],
-            &dir,
-            &Shim {
+    load_block(
+        &MODELS,
+        &BlockBuild {
+            key: "regs",
+            files: &[("fcc_regs.v", &verilog), ("fcc_regs.vlt", &vlt)],
+            shim: Shim {
                 name: "fcc_regs_shim.cpp",
                 text: SHIM,
                 top: &fcc_rtl::regs_module(p),
@@ -113,41 +96,14 @@ pub fn load_regs(p: &FccParams) -> Result<Arc<RegsModel>, SimError> {
                 lib: LIB_NAME,
                 coverage: false,
             },
-        )?;
-    }
-    let model = Arc::new(open(&dir)?);
-    map.insert(key, model.clone());
-    Ok(model)
-}
-
-fn open(dir: &Path) -> Result<RegsModel, SimError> {
-    let path = dir.join(LIB_NAME);
-    let err = |source| SimError::Load {
-        path: path.clone(),
-        source,
-    };
-    // SAFETY: the library is built from our own shim; loading it runs no
-    // initialisers beyond the C++ runtime's.
-    let lib = unsafe { libloading::Library::new(&path) }.map_err(err)?;
-    // SAFETY: the symbol types match the `extern "C"` declarations in the shim.
-    let (new_fn, free_fn, step_fn) = unsafe {
-        let n: NewFn = *lib.get::<NewFn>(b"fcc_regs_new\0").map_err(err)?;
-        let f: FreeFn = *lib.get::<FreeFn>(b"fcc_regs_free\0").map_err(err)?;
-        let s: StepFn = *lib.get::<StepFn>(b"fcc_regs_step\0").map_err(err)?;
-        (n, f, s)
-    };
-    Ok(RegsModel {
-        new_fn,
-        free_fn,
-        step_fn,
-        _lib: lib,
-    })
+            symbol: "fcc_regs",
+        },
+    )
 }
 
 /// One simulated register file.
 pub struct RegsDut {
-    model: Arc<RegsModel>,
-    handle: *mut c_void,
+    dut: BlockInstance<StepFn>,
     /// The non-AXI inputs applied in every cycle (frame status, reset).
     pub live: RegsIn,
     /// The outputs of the last cycle.
@@ -156,11 +112,9 @@ pub struct RegsDut {
 
 impl RegsDut {
     pub fn new(model: Arc<RegsModel>) -> Self {
-        // SAFETY: a fresh model from the same library, freed in `drop`.
-        let handle = unsafe { (model.new_fn)() };
+        let dut = BlockInstance::new(model);
         RegsDut {
-            model,
-            handle,
+            dut,
             live: RegsIn::default(),
             last: RegsOut::default(),
         }
@@ -169,8 +123,9 @@ impl RegsDut {
     /// One cycle with `inp`.
     pub fn step(&mut self, inp: &RegsIn) -> RegsOut {
         let mut out = RegsOut::default();
+        let (step, handle) = self.dut.step_fn();
         // SAFETY: `handle` is live; both pointers refer to `repr(C)` values.
-        unsafe { (self.model.step_fn)(self.handle, inp, &mut out) };
+        unsafe { step(handle, inp, &mut out) };
         self.last = out;
         out
     }
@@ -194,13 +149,6 @@ impl RegsDut {
             };
             self.step(&inp);
         }
-    }
-}
-
-impl Drop for RegsDut {
-    fn drop(&mut self) {
-        // SAFETY: freed exactly once, with the library still loaded.
-        unsafe { (self.model.free_fn)(self.handle) };
     }
 }
 

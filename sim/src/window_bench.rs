@@ -3,15 +3,14 @@
 //! through the scalar ports of `fcc_window_probe`, every window entry read
 //! back in every cycle.
 
-use std::collections::HashMap;
 use std::ffi::c_void;
-use std::path::Path;
-use std::sync::{Arc, Mutex, OnceLock};
+use std::sync::{Arc, OnceLock};
 
 use fcc_params::FccParams;
 
+use crate::block::{load_block, BlockBuild, BlockCache, BlockInstance, BlockModel};
 use crate::ffi::c_struct;
-use crate::model::{build, cache_root, fnv, shim_text, Shim};
+use crate::model::Shim;
 use crate::SimError;
 
 const SHIM: &str = include_str!("../csrc/fcc_window_shim.cpp");
@@ -43,38 +42,21 @@ c_struct! {
     }
 }
 
-type NewFn = unsafe extern "C" fn() -> *mut c_void;
-type FreeFn = unsafe extern "C" fn(*mut c_void);
 type StepFn = unsafe extern "C" fn(*mut c_void, *const WinIn, *mut WinOut, *mut u64, u32);
 
 /// A loaded Verilator model of `fcc_window_probe`.
-pub struct WindowModel {
-    new_fn: NewFn,
-    free_fn: FreeFn,
-    step_fn: StepFn,
-    entries: usize,
-    _lib: libloading::Library,
-}
+pub type WindowModel = BlockModel<StepFn>;
 
 /// Load the window model of the build `p`, building it if needed.
 pub fn load_window(p: &FccParams) -> Result<Arc<WindowModel>, SimError> {
-    static MODELS: OnceLock<Mutex<HashMap<String, Arc<WindowModel>>>> = OnceLock::new();
-    let models = MODELS.get_or_init(|| Mutex::new(HashMap::new()));
-    let mut map = models.lock().unwrap_or_else(|e| e.into_inner());
+    static MODELS: BlockCache<StepFn> = OnceLock::new();
     let verilog = fcc_rtl::generate_window(p)?;
-    let key = format!(
-        "window-{:016x}",
-        fnv(&format!("{verilog}{}", shim_text(SHIM)))
-    );
-    if let Some(m) = map.get(&key) {
-        return Ok(m.clone());
-    }
-    let dir = cache_root().join(&key);
-    if !dir.join(LIB_NAME).exists() {
-        build(
-            &[("fcc_window_probe.v", &verilog)],
-            &dir,
-            &Shim {
+    load_block(
+        &MODELS,
+        &BlockBuild {
+            key: "window",
+            files: &[("fcc_window_probe.v", &verilog)],
+            shim: Shim {
                 name: "fcc_window_shim.cpp",
                 text: SHIM,
                 top: &fcc_rtl::window_module(p),
@@ -83,36 +65,9 @@ pub fn load_window(p: &FccParams) -> Result<Arc<WindowModel>, SimError> {
                 lib: LIB_NAME,
                 coverage: false,
             },
-        )?;
-    }
-    let model = Arc::new(open(&dir, p.window_positions())?);
-    map.insert(key, model.clone());
-    Ok(model)
-}
-
-fn open(dir: &Path, entries: usize) -> Result<WindowModel, SimError> {
-    let path = dir.join(LIB_NAME);
-    let err = |source| SimError::Load {
-        path: path.clone(),
-        source,
-    };
-    // SAFETY: the library is built from our own shim; loading it runs no
-    // initialisers beyond the C++ runtime's.
-    let lib = unsafe { libloading::Library::new(&path) }.map_err(err)?;
-    // SAFETY: the symbol types match the `extern "C"` declarations in the shim.
-    let (new_fn, free_fn, step_fn) = unsafe {
-        let n: NewFn = *lib.get::<NewFn>(b"fcc_window_new\0").map_err(err)?;
-        let f: FreeFn = *lib.get::<FreeFn>(b"fcc_window_free\0").map_err(err)?;
-        let s: StepFn = *lib.get::<StepFn>(b"fcc_window_step\0").map_err(err)?;
-        (n, f, s)
-    };
-    Ok(WindowModel {
-        new_fn,
-        free_fn,
-        step_fn,
-        entries,
-        _lib: lib,
-    })
+            symbol: "fcc_window",
+        },
+    )
 }
 
 /// One window entry as the probe reads it.
@@ -126,31 +81,27 @@ pub struct WinEntry {
 
 /// One simulated window.
 pub struct WindowDut {
-    model: Arc<WindowModel>,
-    handle: *mut c_void,
+    dut: BlockInstance<StepFn>,
     entries: Vec<u64>,
 }
 
 impl WindowDut {
-    pub fn new(model: Arc<WindowModel>) -> Self {
-        // SAFETY: a fresh model from the same library, freed in `drop`.
-        let handle = unsafe { (model.new_fn)() };
-        let entries = vec![0; model.entries];
-        WindowDut {
-            model,
-            handle,
-            entries,
-        }
+    /// An instance of `model`, the window model of the build `p`.
+    pub fn new(model: Arc<WindowModel>, p: &FccParams) -> Self {
+        let dut = BlockInstance::new(model);
+        let entries = vec![0; p.window_positions()];
+        WindowDut { dut, entries }
     }
 
     /// One cycle with `inp`: the centre and its `K*h` entries (row-major
     /// from the top row) seen before the clock edge.
     pub fn step(&mut self, inp: &WinIn) -> (WinOut, Vec<WinEntry>) {
         let mut out = WinOut::default();
+        let (step, handle) = self.dut.step_fn();
         // SAFETY: `handle` is live; `entries` holds the model's entry count.
         unsafe {
-            (self.model.step_fn)(
-                self.handle,
+            step(
+                handle,
                 inp,
                 &mut out,
                 self.entries.as_mut_ptr(),
@@ -168,12 +119,5 @@ impl WindowDut {
             })
             .collect();
         (out, ents)
-    }
-}
-
-impl Drop for WindowDut {
-    fn drop(&mut self) {
-        // SAFETY: freed exactly once, with the library still loaded.
-        unsafe { (self.model.free_fn)(self.handle) };
     }
 }

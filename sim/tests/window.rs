@@ -76,7 +76,7 @@ fn run(p: &FccParams, frames: &[Frame], gap: f64, seed: u64) {
         Ok(m) => m,
         Err(e) => panic!("{e}"),
     };
-    let mut dut = WindowDut::new(model);
+    let mut dut = WindowDut::new(model, p);
     let mut rng = ChaCha8Rng::seed_from_u64(seed ^ 0x9e37);
     let h = p.half();
     let idle = |f: &Frame| WinIn {
