@@ -135,6 +135,8 @@ struct Count {
     golden_pairs: usize,
     merges: usize,
     emitted: usize,
+    /// Cycles a centre waited for an input credit.
+    credit_stalls: usize,
 }
 
 /// A sort network of build `p` that runs frames back to back, as `fcc_top`
@@ -208,6 +210,9 @@ impl Bench {
             let mut c = SnCentre::default();
             hit.fill(0);
             rep.fill(0);
+            if next < rows * cols && credits >= CREDITS {
+                self.count.credit_stalls += 1;
+            }
             let send = next < rows * cols && credits < CREDITS && !self.rng.gen_bool(d.gap);
             if send {
                 let (i, j) = (next / cols, next % cols);
@@ -355,14 +360,15 @@ impl Bench {
         let c = &self.count;
         eprintln!(
             "SORT_NET fsize {} {what}: {} frames, golden pairs {}, merges needed {}, joins emitted {}, \
-             dropped {} ({:.1} %)",
+             dropped {} ({:.1} %), credit stalls {}",
             self.p.fsize,
             c.frames,
             c.golden_pairs,
             c.merges,
             c.emitted,
             c.golden_pairs as i64 - c.emitted as i64,
-            100.0 * (c.golden_pairs as f64 - c.emitted as f64) / (c.golden_pairs.max(1) as f64)
+            100.0 * (c.golden_pairs as f64 - c.emitted as f64) / (c.golden_pairs.max(1) as f64),
+            c.credit_stalls
         );
     }
 }
@@ -407,27 +413,34 @@ fn every_frame_kind(fsize: usize) {
     b.report("stressed");
 }
 
-/// Every pixel one point: every window position matches, the join queue
-/// fills behind a union engine ready one cycle in twenty, the serializer
-/// and centre buffer back up and the input credits run out.
-fn one_blob_backs_up(fsize: usize) {
+/// Columns alternately near and far: every pixel is its own run, and each
+/// matches the same-range pixels of the rows above, so every centre keeps
+/// joins. A union engine ready one cycle in twenty fills the join queue, the
+/// serializer and the centre buffer back up, and the input credits run out
+/// (the test fails if they never do).
+fn striped_frame_backs_up_to_the_input(fsize: usize) {
     let p = build(fsize);
     let mut f = frames::empty(&p);
     for r in 0..p.rows {
         for c in 0..p.cols {
-            f.set(r, c, frames::point_at(&p, r, c, 5.0));
+            let range = if c % 2 == 0 { 5.0 } else { 20.0 };
+            f.set(r, c, frames::point_at(&p, r, c, range));
         }
     }
     let mut b = Bench::new(&p, 0xb10b + fsize as u64);
     b.frame(
-        "one blob",
+        "striped",
         &f,
         Drive {
             gap: 0.0,
             ready: 0.05,
         },
     );
-    b.report("one blob, slow union engine");
+    b.report("striped, slow union engine");
+    assert!(
+        b.count.credit_stalls > 0,
+        "K {fsize}: the input never waited for a credit"
+    );
 }
 
 macro_rules! per_k {
@@ -438,15 +451,15 @@ macro_rules! per_k {
         }
         #[test]
         fn $blob() {
-            one_blob_backs_up($k);
+            striped_frame_backs_up_to_the_input($k);
         }
     )*};
 }
 
 per_k! {
-    3: random_directed_and_scene_frames_connect_as_golden_fsize3, one_blob_with_slow_union_engine_fsize3;
-    5: random_directed_and_scene_frames_connect_as_golden_fsize5, one_blob_with_slow_union_engine_fsize5;
-    7: random_directed_and_scene_frames_connect_as_golden_fsize7, one_blob_with_slow_union_engine_fsize7;
-    9: random_directed_and_scene_frames_connect_as_golden_fsize9, one_blob_with_slow_union_engine_fsize9;
-    11: random_directed_and_scene_frames_connect_as_golden_fsize11, one_blob_with_slow_union_engine_fsize11;
+    3: random_directed_and_scene_frames_connect_as_golden_fsize3, striped_frame_with_slow_union_engine_fsize3;
+    5: random_directed_and_scene_frames_connect_as_golden_fsize5, striped_frame_with_slow_union_engine_fsize5;
+    7: random_directed_and_scene_frames_connect_as_golden_fsize7, striped_frame_with_slow_union_engine_fsize7;
+    9: random_directed_and_scene_frames_connect_as_golden_fsize9, striped_frame_with_slow_union_engine_fsize9;
+    11: random_directed_and_scene_frames_connect_as_golden_fsize11, striped_frame_with_slow_union_engine_fsize11;
 }
