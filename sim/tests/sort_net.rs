@@ -197,7 +197,8 @@ impl Bench {
         let mut next = 0usize;
         let mut emitted: Vec<(u32, u32)> = Vec::new();
         let (mut last_done, mut quiet) = (false, 0);
-        let limit = 64 * rows * cols + 100_000;
+        // Cycles without a centre sent, a credit returned or a join taken.
+        let mut idle = 0usize;
         let (mut hit, mut rep) = (vec![0u8; n], vec![0u16; n]);
         // The join counter clears at the start of a frame.
         let clear = SnIn {
@@ -206,7 +207,13 @@ impl Bench {
         };
         self.dut.step(&clear, &hit, &rep);
         for cycle in 0.. {
-            assert!(cycle < limit, "{ctx}: not drained after {cycle} cycles");
+            assert!(
+                idle < 10_000,
+                "{ctx}: stuck at cycle {cycle}: {next} centres sent, {} joins taken, {credits} \
+                 credits out",
+                emitted.len()
+            );
+            idle += 1;
             let mut c = SnCentre::default();
             hit.fill(0);
             rep.fill(0);
@@ -254,6 +261,7 @@ impl Bench {
                         }
                     }
                 }
+                idle = 0;
                 due.push_back(next);
                 credits += 1;
                 next += 1;
@@ -282,6 +290,7 @@ impl Bench {
                 if returned != 0 {
                     assert!(credits > 0, "{ctx}: more credits returned than taken");
                     credits -= 1;
+                    idle = 0;
                 }
             }
             if out.jv != 0 && jready {
@@ -291,6 +300,7 @@ impl Bench {
                     assert_eq!(prev, Some(a), "{ctx}: jsame with a new ja, join {}", emitted.len());
                 }
                 emitted.push((a, b));
+                idle = 0;
             }
             last_done |= out.last_done != 0;
             quiet = if last_done && next == rows * cols && out.jv == 0 && out.jq_empty != 0 {
@@ -415,7 +425,7 @@ fn every_frame_kind(fsize: usize) {
 
 /// Columns alternately near and far: every pixel is its own run, and each
 /// matches the same-range pixels of the rows above, so every centre keeps
-/// joins. A union engine ready one cycle in twenty fills the join queue, the
+/// joins. A union engine ready one cycle in five fills the join queue, the
 /// serializer and the centre buffer back up, and the input credits run out
 /// (the test fails if they never do).
 fn striped_frame_backs_up_to_the_input(fsize: usize) {
@@ -433,7 +443,7 @@ fn striped_frame_backs_up_to_the_input(fsize: usize) {
         &f,
         Drive {
             gap: 0.0,
-            ready: 0.05,
+            ready: 0.2,
         },
     );
     b.report("striped, slow union engine");
