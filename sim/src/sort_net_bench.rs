@@ -81,8 +81,7 @@ pub fn pack_centre(c: &SnCentre) -> u64 {
         | u64::from(c.ring_b) << 48
 }
 
-type StepFn =
-    unsafe extern "C" fn(*mut c_void, *const SnIn, *const u8, *const u16, *mut SnOut);
+type StepFn = unsafe extern "C" fn(*mut c_void, *const SnIn, *const u8, *const u16, *mut SnOut);
 
 /// A loaded Verilator model of `fcc_sort_net`.
 pub type SortNetModel = BlockModel<StepFn>;

@@ -184,9 +184,10 @@ impl Bench {
         let th = p.th_v_sq();
         let rings: Vec<Option<(u32, u32)>> = (0..rows)
             .map(|i| {
-                p1.ring_joins.iter().copied().find(|&(_, b)| {
-                    labels[i * cols..(i + 1) * cols].contains(&b)
-                })
+                p1.ring_joins
+                    .iter()
+                    .copied()
+                    .find(|&(_, b)| labels[i * cols..(i + 1) * cols].contains(&b))
             })
             .collect();
         // Representatives the block wrote back, per pixel; the centres
@@ -297,7 +298,12 @@ impl Bench {
                 let (a, b) = (u32::from(out.ja), u32::from(out.jb));
                 if out.jsame != 0 {
                     let prev = emitted.last().map(|j| j.0);
-                    assert_eq!(prev, Some(a), "{ctx}: jsame with a new ja, join {}", emitted.len());
+                    assert_eq!(
+                        prev,
+                        Some(a),
+                        "{ctx}: jsame with a new ja, join {}",
+                        emitted.len()
+                    );
                 }
                 emitted.push((a, b));
                 idle = 0;
@@ -310,7 +316,11 @@ impl Bench {
             };
             if quiet == 4 {
                 assert_eq!(credits, 0, "{ctx}: input credits not returned");
-                assert!(due.is_empty(), "{ctx}: {} representatives not written", due.len());
+                assert!(
+                    due.is_empty(),
+                    "{ctx}: {} representatives not written",
+                    due.len()
+                );
                 assert_eq!(
                     out.joins as usize,
                     emitted.len(),
@@ -409,7 +419,11 @@ fn every_frame_kind(fsize: usize) {
     b.report("free-running");
     let mut b = Bench::new(&p, seed ^ 0xbac0);
     for s in 0..2 {
-        b.frame(&format!("random {s} stressed"), &frames::random(&p, seed + 100 + s), STRESSED);
+        b.frame(
+            &format!("random {s} stressed"),
+            &frames::random(&p, seed + 100 + s),
+            STRESSED,
+        );
     }
     let cfg = fcc_scene::SceneConfig {
         rows: p.rows,
