@@ -107,6 +107,8 @@ pub fn header() -> String {
         crate::label_update_bench::LuOut::c_decl(),
         crate::window_bench::WinIn::c_decl(),
         crate::window_bench::WinOut::c_decl(),
+        crate::sort_net_bench::SnIn::c_decl(),
+        crate::sort_net_bench::SnOut::c_decl(),
     ] {
         s.push_str(&d);
         s.push('\n');
@@ -153,7 +155,7 @@ mod tests {
         let h = header();
         for name in [
             "FccIn", "FccOut", "RegsIn", "RegsOut", "MergeIn", "MergeOut", "LuIn", "LuOut",
-            "WinIn", "WinOut",
+            "WinIn", "WinOut", "SnIn", "SnOut",
         ] {
             assert_eq!(h.matches(&format!("struct {name} {{")).count(), 1, "{name}");
         }

@@ -18,6 +18,7 @@ pub mod merge_bench;
 pub mod model;
 pub mod regs_bench;
 pub mod run;
+pub mod sort_net_bench;
 pub mod window_bench;
 
 use std::path::PathBuf;
@@ -36,6 +37,7 @@ pub use model::{
 };
 pub use regs_bench::{load_regs, RegsDut, RegsIn, RegsOut};
 pub use run::{check_run, run_and_check_with, run_values};
+pub use sort_net_bench::{load_sort_net, pack_centre, SnCentre, SnIn, SnOut, SortNetDut};
 pub use window_bench::{load_window, WinEntry, WinIn, WinOut, WindowDut};
 
 /// Everything that can go wrong in a simulation.

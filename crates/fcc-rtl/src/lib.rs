@@ -378,6 +378,36 @@ pub fn generate_window(p: &FccParams) -> Result<String, RtlError> {
     Ok(v)
 }
 
+/// Name of the sort network's module when generated alone (its bench),
+/// before the configuration suffix.
+pub const SORT_NET_NAME: &str = "fcc_sort_net";
+
+/// The sort network's module when generated alone for `p`.
+pub fn sort_net_module(p: &FccParams) -> String {
+    format!("{SORT_NET_NAME}{}", p.module_suffix())
+}
+
+/// The Verilog of the sort network `FccSortNet` alone (sort filter, centre
+/// buffer, serializer, join queue), as a module [`sort_net_module`] (for its
+/// own bench; the core's copy is inside `fcc_top.v`). Its per-position ports
+/// keep rust-hdl's names `hit$e` and `rep$e`.
+pub fn generate_sort_net(p: &FccParams) -> Result<String, RtlError> {
+    p.validate_for_hardware()?;
+    let mut block = fcc_sort_net::FccSortNet::new(p);
+    block.connect_all();
+    check_all(&block).map_err(|e| RtlError::Check(format!("{e:?}")))?;
+    let raw = generate_verilog_unchecked(&block);
+    let mut v = file_header(p, "//");
+    v.push_str("`default_nettype none\n");
+    v.push_str(&rename_modules(
+        &constant_selects(&raw),
+        SORT_NET_NAME,
+        &p.module_suffix(),
+    ));
+    v.push_str("\n`default_nettype wire\n");
+    Ok(v)
+}
+
 /// The contents of `fcc_params.json`.
 #[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct ParamsFile {

@@ -142,3 +142,22 @@ pub fn merge_table_waivers(p: &FccParams) -> String {
     s.push_str(&enum_register_waivers("fcc_merge_table.v"));
     s
 }
+
+/// The waivers of `fcc_sort_net.v`, the sort network generated alone for
+/// its bench: the core's waivers of the same sub-blocks (see [`waivers`]).
+pub fn sort_net_waivers(p: &FccParams) -> String {
+    let mut s = file_header(p, "//");
+    s.push_str("`verilator_config\n");
+    s.push_str(
+        "// fcc_sort_net.v holds the sort network and its sub-blocks.\n\
+         lint_off -rule DECLFILENAME -file \"*fcc_sort_net.v\"\n\
+         // The serializer's combinational block feeds its prefix network and\n\
+         // reads its outputs (a block-level loop only, as in fcc_top.v).\n\
+         lint_off -rule UNOPTFLAT -file \"*fcc_sort_net.v\" -match \"*serializer.head_earlier.*\"\n\
+         // FccFifo's fill level and side-RAM ports, unused here as in fcc_top.v.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*fcc_sort_net.v\" -match \"*'records$level'*\"\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*fcc_sort_net.v\" -match \"*'queue$ram_*\"\n",
+    );
+    s.push_str(&enum_register_waivers("fcc_sort_net.v"));
+    s
+}

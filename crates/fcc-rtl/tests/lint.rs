@@ -164,6 +164,30 @@ fn label_updater_alone_lints_clean_for_every_labels_per_beat() {
     }
 }
 
+#[test]
+fn sort_network_alone_lints_clean_for_every_k() {
+    if !verilator_present() {
+        eprintln!("verilator not installed: lint skipped");
+        return;
+    }
+    for fsize in [3, 11] {
+        let p = FccParams {
+            fsize,
+            ..Default::default()
+        };
+        let dir = scratch(&format!("sort_net{fsize}"));
+        std::fs::create_dir_all(&dir).unwrap();
+        let v = dir.join("fcc_sort_net.v");
+        let vlt = dir.join("fcc_sort_net.vlt");
+        std::fs::write(&v, fcc_rtl::generate_sort_net(&p).unwrap()).unwrap();
+        std::fs::write(&vlt, lint::sort_net_waivers(&p)).unwrap();
+        if let Err(e) = lint::lint_module(&v, &vlt, &fcc_rtl::sort_net_module(&p)) {
+            panic!("K = {fsize}: {e}");
+        }
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+}
+
 /// `fcc_regs.h` is plain C99: it compiles warning-free with `-std=c99
 /// -pedantic`, and its constants are usable in constant expressions.
 #[test]
