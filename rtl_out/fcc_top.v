@@ -55,10 +55,6 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
     output reg  status_idle;
 
     // Constant declarations
-    localparam  f_init = 2'b0;
-    localparam  f_run = 2'b1;
-    localparam  f_drain = 2'b10;
-    localparam  f_out = 2'b11;
     localparam  sign16 = 16'h8000;
     localparam  zero8 = 8'h0;
     localparam  one8 = 8'h1;
@@ -70,6 +66,12 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
     localparam  two10 = 10'b10;
     localparam  zero10 = 10'b0;
     localparam  limit = 10'b111110000;
+
+    // Enums
+    localparam Phase$Init = 0;
+    localparam Phase$Run = 1;
+    localparam Phase$Drain = 2;
+    localparam Phase$Out = 3;
 
     // Stub signals
     reg  intra$clk;
@@ -448,18 +450,15 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
     reg  dist_tree_rst$clock;
     reg  dist_tree_rst$d;
     wire  dist_tree_rst$q;
-    reg  sort_net_rst$clock;
-    reg  sort_net_rst$d;
-    wire  sort_net_rst$q;
     reg  merge_table_rst$clock;
     reg  merge_table_rst$d;
     wire  merge_table_rst$q;
     reg  label_update_rst$clock;
     reg  label_update_rst$d;
     wire  label_update_rst$q;
-    reg  [1:0] fsm$d;
-    wire  [1:0] fsm$q;
-    reg  fsm$clock;
+    reg  [1:0] phase$d;
+    wire  [1:0] phase$q;
+    reg  phase$clock;
     reg  tready_q$d;
     wire  tready_q$q;
     reg  tready_q$clock;
@@ -931,11 +930,6 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
         .d(dist_tree_rst$d),
         .q(dist_tree_rst$q)
     );
-    fcc_top__sort_net_rst_k7_668cf05b sort_net_rst(
-        .clock(sort_net_rst$clock),
-        .d(sort_net_rst$d),
-        .q(sort_net_rst$q)
-    );
     fcc_top__merge_table_rst_k7_668cf05b merge_table_rst(
         .clock(merge_table_rst$clock),
         .d(merge_table_rst$d),
@@ -946,10 +940,10 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
         .d(label_update_rst$d),
         .q(label_update_rst$q)
     );
-    fcc_top__fsm_k7_668cf05b fsm(
-        .d(fsm$d),
-        .q(fsm$q),
-        .clock(fsm$clock)
+    fcc_top__phase_k7_668cf05b phase(
+        .d(phase$d),
+        .q(phase$q),
+        .clock(phase$clock)
     );
     fcc_top__tready_q_k7_668cf05b tready_q(
         .d(tready_q$d),
@@ -1054,7 +1048,7 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
 
     // Update code
     always @(*) begin
-        fsm$clock = clk;
+        phase$clock = clk;
         tready_q$clock = clk;
         pad_go$clock = clk;
         slot_q$clock = clk;
@@ -1075,7 +1069,7 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
         pen_col$clock = clk;
         pen_row$clock = clk;
         one_row$clock = clk;
-        fsm$d = fsm$q;
+        phase$d = phase$q;
         tready_q$d = tready_q$q;
         pad_go$d = pad_go$q;
         slot_q$d = slot_q$q;
@@ -1213,21 +1207,21 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
         drained = last_seen$q & merge_table$union_idle & sort_net$jq_empty;
         merge_table$flat_start = 1'b0;
         label_update$rb_start = 1'b0;
-        if ((fsm$q == f_init) & ~merge_table$init_busy) begin
-            fsm$d = f_run;
+        if ((phase$q == Phase$Init) & ~merge_table$init_busy) begin
+            phase$d = Phase$Run;
         end
-        if ((fsm$q == f_run) & in_done$q) begin
-            fsm$d = f_drain;
+        if ((phase$q == Phase$Run) & in_done$q) begin
+            phase$d = Phase$Drain;
         end
-        if ((fsm$q == f_drain) & drained) begin
+        if ((phase$q == Phase$Drain) & drained) begin
             merge_table$flat_start = 1'b1;
             label_update$rb_start = 1'b1;
-            fsm$d = f_out;
+            phase$d = Phase$Out;
         end
-        nxt_run = fsm$q == f_run;
+        nxt_run = phase$q == Phase$Run;
         regs$frame_end = 1'b0;
-        if ((fsm$q == f_out) & label_update$rb_done) begin
-            fsm$d = f_run;
+        if ((phase$q == Phase$Out) & label_update$rb_done) begin
+            phase$d = Phase$Run;
             nxt_run = 1'b1;
             nxt_in_done = 1'b0;
             last_seen$d = 1'b0;
@@ -1244,7 +1238,7 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
             pad_go$d = 1'b0;
         end
         if (regs$core_rst) begin
-            fsm$d = f_init;
+            phase$d = Phase$Init;
             tready_q$d = 1'b0;
             pad_go$d = 1'b0;
             slot_q$d[0:0] = 1'b0;
@@ -1265,13 +1259,11 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
         intra_rst$clock = clk;
         window_rst$clock = clk;
         dist_tree_rst$clock = clk;
-        sort_net_rst$clock = clk;
         merge_table_rst$clock = clk;
         label_update_rst$clock = clk;
         intra_rst$d = regs$core_rst_next;
         window_rst$d = regs$core_rst_next;
         dist_tree_rst$d = regs$core_rst_next;
-        sort_net_rst$d = regs$core_rst_next;
         merge_table_rst$d = regs$core_rst_next;
         label_update_rst$d = regs$core_rst_next;
         intra$rst = intra_rst$q;
@@ -1426,7 +1418,7 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
         dist_tree$ent_z$20 = window$ent_z$20;
         sort_net$hit$20 = dist_tree$hit$20;
         sort_net$rep$20 = window$ent_rep$20;
-        sort_net$rst = sort_net_rst$q;
+        sort_net$rst = regs$core_rst_next;
         sort_net$clear = label_update$rb_done;
         sort_net$centre = dist_tree$centre;
         sort_net$jtake = merge_table$jtake;
@@ -1457,8 +1449,8 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
         status_joins = regs$st_joins;
         status_gear_stalls = regs$st_gear_stalls;
         status_frame_done = regs$frame_done;
-        status_idle = (fsm$q == f_run) & ~in_done$q & first$q;
-        regs$idle = (fsm$q == f_run) & ~in_done$q & first$q;
+        status_idle = (phase$q == Phase$Run) & ~in_done$q & first$q;
+        regs$idle = (phase$q == Phase$Run) & ~in_done$q & first$q;
     end
 
 endmodule // fcc_top_k7_668cf05b
@@ -4866,25 +4858,6 @@ module fcc_top__first_k7_668cf05b(d,q,clock);
     end
 
 endmodule // fcc_top__first_k7_668cf05b
-
-
-module fcc_top__fsm_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [1:0] d;
-    output reg  [1:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 2'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__fsm_k7_668cf05b
 
 
 module fcc_top__in_done_k7_668cf05b(d,q,clock);
@@ -10288,6 +10261,9 @@ module fcc_merge_table__flatten_k7_668cf05b(clk,rst,active,start,done,provisiona
     reg  label_valid_s4$d;
     wire  label_valid_s4$q;
     reg  label_valid_s4$clock;
+    reg  out_valid_s4$clock;
+    reg  out_valid_s4$d;
+    wire  out_valid_s4$q;
     reg  [15:0] label_s4$d;
     wire  [15:0] label_s4$q;
     reg  label_s4$clock;
@@ -10412,6 +10388,11 @@ module fcc_merge_table__flatten_k7_668cf05b(clk,rst,active,start,done,provisiona
         .q(label_valid_s4$q),
         .clock(label_valid_s4$clock)
     );
+    fcc_merge_table__flatten__out_valid_s4_k7_668cf05b out_valid_s4(
+        .clock(out_valid_s4$clock),
+        .d(out_valid_s4$d),
+        .q(out_valid_s4$q)
+    );
     fcc_merge_table__flatten__label_s4_k7_668cf05b label_s4(
         .d(label_s4$d),
         .q(label_s4$q),
@@ -10535,6 +10516,8 @@ module fcc_merge_table__flatten_k7_668cf05b(clk,rst,active,start,done,provisiona
             cluster_count$d = cluster_count$q + one16;
         end
         label_valid_s4$d = label_valid_s3$q;
+        out_valid_s4$clock = clk;
+        out_valid_s4$d = label_valid_s3$q & ~rst;
         label_s4$d = label_s3$q;
         is_root_s4$d = is_root_s3$q;
         new_number_s4$d = new_number_s3$q;
@@ -10553,7 +10536,7 @@ module fcc_merge_table__flatten_k7_668cf05b(clk,rst,active,start,done,provisiona
         compact_ram$write_en = label_valid_s4$q;
         compact_ram$write_addr = label_s4$q;
         compact_ram$write_data = value;
-        out_valid = label_valid_s4$q;
+        out_valid = out_valid_s4$q;
         out_label = value;
         if (label_valid_s4$q) begin
             value_prev$d = value;
@@ -10977,6 +10960,27 @@ module fcc_merge_table__flatten__next_label_k7_668cf05b(d,q,clock);
     end
 
 endmodule // fcc_merge_table__flatten__next_label_k7_668cf05b
+
+
+module fcc_merge_table__flatten__out_valid_s4_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_merge_table__flatten__out_valid_s4_k7_668cf05b
 
 
 module fcc_merge_table__flatten__parent_is_prev2_s3_k7_668cf05b(d,q,clock);
@@ -12299,6 +12303,31 @@ module fcc_top__pen_row_k7_668cf05b(d,q,clock);
 endmodule // fcc_top__pen_row_k7_668cf05b
 
 
+module fcc_top__phase_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+
+    // Enums
+    localparam Phase$Init = 0;
+    localparam Phase$Run = 1;
+    localparam Phase$Drain = 2;
+    localparam Phase$Out = 3;
+
+    // Update code (custom)
+    initial begin
+       q = 64'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__phase_k7_668cf05b
+
+
 module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata,s_axil_wstrb,s_axil_wvalid,s_axil_wready,s_axil_bresp,s_axil_bvalid,s_axil_bready,s_axil_araddr,s_axil_arvalid,s_axil_arready,s_axil_rdata,s_axil_rresp,s_axil_rvalid,s_axil_rready,frame_end,idle,clusters,provisional,overflow,unlabelled,frame_error,joins,gear_stalls,core_rst,core_rst_next,irq,frame_done,st_clusters,st_provisional,st_overflow,st_unlabelled,st_frame_error,st_joins,st_gear_stalls,run_k,run_th_h_c,run_th_v_c,run_rows,run_cols);
 
     // Module arguments
@@ -12361,14 +12390,14 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
     localparam  bit_err_thv = 32'h4;
     localparam  bit_err_rows = 32'h8;
     localparam  bit_err_cols = 32'h10;
-    localparam  k_min = 32'h3;
-    localparam  k_max = 32'h7;
-    localparam  th_min = 32'h1;
-    localparam  th_max = 32'h8000;
-    localparam  rows_min = 32'h1;
-    localparam  rows_max = 32'h40;
-    localparam  cols_min = 32'h20;
-    localparam  cols_max = 32'h800;
+    localparam  k_min = 16'h3;
+    localparam  k_max = 16'h7;
+    localparam  th_min = 16'h1;
+    localparam  th_max = 16'h8000;
+    localparam  rows_min = 16'h1;
+    localparam  rows_max = 16'h40;
+    localparam  cols_min = 16'h20;
+    localparam  cols_max = 16'h800;
     localparam  def_k = 4'h7;
     localparam  def_thh = 16'h80;
     localparam  def_thv = 16'h100;
@@ -12426,6 +12455,21 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
     reg  [31:0] w_d$d;
     wire  [31:0] w_d$q;
     reg  w_d$clock;
+    reg  w_hi_zero$d;
+    wire  w_hi_zero$q;
+    reg  w_hi_zero$clock;
+    reg  w_lo_ok_k$d;
+    wire  w_lo_ok_k$q;
+    reg  w_lo_ok_k$clock;
+    reg  w_lo_ok_th$d;
+    wire  w_lo_ok_th$q;
+    reg  w_lo_ok_th$clock;
+    reg  w_lo_ok_rows$d;
+    wire  w_lo_ok_rows$q;
+    reg  w_lo_ok_rows$clock;
+    reg  w_lo_ok_cols$d;
+    wire  w_lo_ok_cols$q;
+    reg  w_lo_ok_cols$clock;
     reg  b_v$d;
     wire  b_v$q;
     reg  b_v$clock;
@@ -12546,7 +12590,6 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
     reg  sq_busy_q$clock;
 
     // Local signals
-    reg  th_ok;
     reg  wr;
     reg  clear;
 
@@ -12595,6 +12638,31 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
         .d(w_d$d),
         .q(w_d$q),
         .clock(w_d$clock)
+    );
+    fcc_regs__w_hi_zero_k7_668cf05b w_hi_zero(
+        .d(w_hi_zero$d),
+        .q(w_hi_zero$q),
+        .clock(w_hi_zero$clock)
+    );
+    fcc_regs__w_lo_ok_k_k7_668cf05b w_lo_ok_k(
+        .d(w_lo_ok_k$d),
+        .q(w_lo_ok_k$q),
+        .clock(w_lo_ok_k$clock)
+    );
+    fcc_regs__w_lo_ok_th_k7_668cf05b w_lo_ok_th(
+        .d(w_lo_ok_th$d),
+        .q(w_lo_ok_th$q),
+        .clock(w_lo_ok_th$clock)
+    );
+    fcc_regs__w_lo_ok_rows_k7_668cf05b w_lo_ok_rows(
+        .d(w_lo_ok_rows$d),
+        .q(w_lo_ok_rows$q),
+        .clock(w_lo_ok_rows$clock)
+    );
+    fcc_regs__w_lo_ok_cols_k7_668cf05b w_lo_ok_cols(
+        .d(w_lo_ok_cols$d),
+        .q(w_lo_ok_cols$q),
+        .clock(w_lo_ok_cols$clock)
     );
     fcc_regs__b_v_k7_668cf05b b_v(
         .d(b_v$d),
@@ -12797,6 +12865,11 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
         aw_a$clock = clk;
         w_v$clock = clk;
         w_d$clock = clk;
+        w_hi_zero$clock = clk;
+        w_lo_ok_k$clock = clk;
+        w_lo_ok_th$clock = clk;
+        w_lo_ok_rows$clock = clk;
+        w_lo_ok_cols$clock = clk;
         b_v$clock = clk;
         r_v$clock = clk;
         r_d$clock = clk;
@@ -12838,6 +12911,11 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
         aw_a$d = aw_a$q;
         w_v$d = w_v$q;
         w_d$d = w_d$q;
+        w_hi_zero$d = w_hi_zero$q;
+        w_lo_ok_k$d = w_lo_ok_k$q;
+        w_lo_ok_th$d = w_lo_ok_th$q;
+        w_lo_ok_rows$d = w_lo_ok_rows$q;
+        w_lo_ok_cols$d = w_lo_ok_cols$q;
         b_v$d = b_v$q;
         r_v$d = r_v$q;
         r_d$d = r_d$q;
@@ -12881,7 +12959,6 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
         sq$start = sq_start$q;
         sq_start$d = 1'b0;
         wr = aw_v$q & w_v$q & ~b_v$q & ~sq_start$q & ~sq$busy & ~sq_busy_q$q;
-        th_ok = (w_d$q >= th_min) & (w_d$q <= th_max);
         if (s_axil_awvalid & ~aw_v$q) begin
             aw_v$d = 1'b1;
             aw_a$d = s_axil_awaddr[11:2];
@@ -12889,6 +12966,11 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
         if (s_axil_wvalid & ~w_v$q) begin
             w_v$d = 1'b1;
             w_d$d = s_axil_wdata;
+            w_hi_zero$d = s_axil_wdata[31:16] == zero16;
+            w_lo_ok_k$d = (s_axil_wdata[15:0] >= k_min) & (s_axil_wdata[15:0] <= k_max) & s_axil_wdata[0];
+            w_lo_ok_th$d = (s_axil_wdata[15:0] >= th_min) & (s_axil_wdata[15:0] <= th_max);
+            w_lo_ok_rows$d = (s_axil_wdata[15:0] >= rows_min) & (s_axil_wdata[15:0] <= rows_max);
+            w_lo_ok_cols$d = (s_axil_wdata[15:0] >= cols_min) & (s_axil_wdata[15:0] <= cols_max);
         end
         if (b_v$q & s_axil_bready) begin
             b_v$d = 1'b0;
@@ -12925,7 +13007,7 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
                 end
             end
             if (aw_a$q == a_run_k) begin
-                if ((w_d$q >= k_min) & (w_d$q <= k_max) & w_d$q[0]) begin
+                if (w_hi_zero$q & w_lo_ok_k$q) begin
                     sh_k$d = w_d$q[15:0];
                 end
                 else begin
@@ -12933,7 +13015,7 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
                 end
             end
             if (aw_a$q == a_run_rows) begin
-                if ((w_d$q >= rows_min) & (w_d$q <= rows_max)) begin
+                if (w_hi_zero$q & w_lo_ok_rows$q) begin
                     sh_rows$d = w_d$q[15:0];
                 end
                 else begin
@@ -12941,7 +13023,7 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
                 end
             end
             if (aw_a$q == a_run_cols) begin
-                if ((w_d$q >= cols_min) & (w_d$q <= cols_max)) begin
+                if (w_hi_zero$q & w_lo_ok_cols$q) begin
                     sh_cols$d = w_d$q[15:0];
                 end
                 else begin
@@ -12949,7 +13031,7 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
                 end
             end
             if (aw_a$q == a_run_thh) begin
-                if (th_ok) begin
+                if (w_hi_zero$q & w_lo_ok_th$q) begin
                     b_v$d = 1'b0;
                     sq_start$d = 1'b1;
                     sq_v$d = 1'b0;
@@ -12959,7 +13041,7 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
                 end
             end
             if (aw_a$q == a_run_thv) begin
-                if (th_ok) begin
+                if (w_hi_zero$q & w_lo_ok_th$q) begin
                     b_v$d = 1'b0;
                     sq_start$d = 1'b1;
                     sq_v$d = 1'b1;
@@ -13972,6 +14054,101 @@ module fcc_regs__w_d_k7_668cf05b(d,q,clock);
 endmodule // fcc_regs__w_d_k7_668cf05b
 
 
+module fcc_regs__w_hi_zero_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__w_hi_zero_k7_668cf05b
+
+
+module fcc_regs__w_lo_ok_cols_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__w_lo_ok_cols_k7_668cf05b
+
+
+module fcc_regs__w_lo_ok_k_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__w_lo_ok_k_k7_668cf05b
+
+
+module fcc_regs__w_lo_ok_rows_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__w_lo_ok_rows_k7_668cf05b
+
+
+module fcc_regs__w_lo_ok_th_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__w_lo_ok_th_k7_668cf05b
+
+
 module fcc_regs__w_v_k7_668cf05b(d,q,clock);
 
     // Module arguments
@@ -14379,6 +14556,18 @@ module fcc_sort_net_k7_668cf05b(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit
     reg  join_queue$jtake;
     wire  join_queue$empty;
     wire  [23:0] join_queue$joins;
+    reg  filter_rst$clock;
+    reg  filter_rst$d;
+    wire  filter_rst$q;
+    reg  centre_buf_rst$clock;
+    reg  centre_buf_rst$d;
+    wire  centre_buf_rst$q;
+    reg  serializer_rst$clock;
+    reg  serializer_rst$d;
+    wire  serializer_rst$q;
+    reg  join_queue_rst$clock;
+    reg  join_queue_rst$d;
+    wire  join_queue_rst$q;
 
     // Sub module instances
     fcc_sort_net__filter_k7_668cf05b filter(
@@ -14637,17 +14826,45 @@ module fcc_sort_net_k7_668cf05b(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit
         .empty(join_queue$empty),
         .joins(join_queue$joins)
     );
+    fcc_sort_net__filter_rst_k7_668cf05b filter_rst(
+        .clock(filter_rst$clock),
+        .d(filter_rst$d),
+        .q(filter_rst$q)
+    );
+    fcc_sort_net__centre_buf_rst_k7_668cf05b centre_buf_rst(
+        .clock(centre_buf_rst$clock),
+        .d(centre_buf_rst$d),
+        .q(centre_buf_rst$q)
+    );
+    fcc_sort_net__serializer_rst_k7_668cf05b serializer_rst(
+        .clock(serializer_rst$clock),
+        .d(serializer_rst$d),
+        .q(serializer_rst$q)
+    );
+    fcc_sort_net__join_queue_rst_k7_668cf05b join_queue_rst(
+        .clock(join_queue_rst$clock),
+        .d(join_queue_rst$d),
+        .q(join_queue_rst$q)
+    );
 
     // Update code
     always @(*) begin
+        filter_rst$clock = clk;
+        centre_buf_rst$clock = clk;
+        serializer_rst$clock = clk;
+        join_queue_rst$clock = clk;
+        filter_rst$d = rst;
+        centre_buf_rst$d = rst;
+        serializer_rst$d = rst;
+        join_queue_rst$d = rst;
         filter$clk = clk;
-        filter$rst = rst;
+        filter$rst = filter_rst$q;
         centre_buf$clk = clk;
-        centre_buf$rst = rst;
+        centre_buf$rst = centre_buf_rst$q;
         serializer$clk = clk;
-        serializer$rst = rst;
+        serializer$rst = serializer_rst$q;
         join_queue$clk = clk;
-        join_queue$rst = rst;
+        join_queue$rst = join_queue_rst$q;
         filter$centre = centre;
         filter$hit$0 = hit$0;
         filter$rep$0 = rep$0;
@@ -15818,6 +16035,27 @@ module fcc_sort_net__centre_buf__unpack_k7_668cf05b(word$0,word$1,word$2,v$0,v$1
         f$20 = word$2[118];
     end
 endmodule // fcc_sort_net__centre_buf__unpack_k7_668cf05b
+
+
+module fcc_sort_net__centre_buf_rst_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* max_fanout = 64 *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_sort_net__centre_buf_rst_k7_668cf05b
 
 
 module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit$6,hit$7,hit$8,hit$9,hit$10,hit$11,hit$12,hit$13,hit$14,hit$15,hit$16,hit$17,hit$18,hit$19,hit$20,rep$0,rep$1,rep$2,rep$3,rep$4,rep$5,rep$6,rep$7,rep$8,rep$9,rep$10,rep$11,rep$12,rep$13,rep$14,rep$15,rep$16,rep$17,rep$18,rep$19,rep$20,rep_we,rep_waddr,rep_wdata,rec_push,rec,rec_rep$0,rec_rep$1,rec_rep$2,rec_rep$3,rec_rep$4,rec_rep$5,rec_rep$6,rec_rep$7,rec_rep$8,rec_rep$9,rec_rep$10,rec_rep$11,rec_rep$12,rec_rep$13,rec_rep$14,rec_rep$15,rec_rep$16,rec_rep$17,rec_rep$18,rec_rep$19,rec_rep$20,rec_keep$0,rec_keep$1,rec_keep$2,rec_keep$3,rec_keep$4,rec_keep$5,rec_keep$6,rec_keep$7,rec_keep$8,rec_keep$9,rec_keep$10,rec_keep$11,rec_keep$12,rec_keep$13,rec_keep$14,rec_keep$15,rec_keep$16,rec_keep$17,rec_keep$18,rec_keep$19,rec_keep$20,credit_drop);
@@ -40943,6 +41181,27 @@ module fcc_sort_net__filter__run_rep_sm2_k7_668cf05b(d,q,clock);
 endmodule // fcc_sort_net__filter__run_rep_sm2_k7_668cf05b
 
 
+module fcc_sort_net__filter_rst_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* max_fanout = 64 *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_sort_net__filter_rst_k7_668cf05b
+
+
 module fcc_sort_net__join_queue_k7_668cf05b(clk,rst,clear,push,din,room,jv,ja,jb,jsame,jtake,empty,joins);
 
     // Module arguments
@@ -41368,6 +41627,27 @@ module fcc_sort_net__join_queue__queue__wp_k7_668cf05b(d,q,clock);
     end
 
 endmodule // fcc_sort_net__join_queue__queue__wp_k7_668cf05b
+
+
+module fcc_sort_net__join_queue_rst_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* max_fanout = 64 *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_sort_net__join_queue_rst_k7_668cf05b
 
 
 module fcc_sort_net__serializer_k7_668cf05b(clk,rst,head_valid,head,head_rep$0,head_rep$1,head_rep$2,head_rep$3,head_rep$4,head_rep$5,head_rep$6,head_rep$7,head_rep$8,head_rep$9,head_rep$10,head_rep$11,head_rep$12,head_rep$13,head_rep$14,head_rep$15,head_rep$16,head_rep$17,head_rep$18,head_rep$19,head_rep$20,head_keep$0,head_keep$1,head_keep$2,head_keep$3,head_keep$4,head_keep$5,head_keep$6,head_keep$7,head_keep$8,head_keep$9,head_keep$10,head_keep$11,head_keep$12,head_keep$13,head_keep$14,head_keep$15,head_keep$16,head_keep$17,head_keep$18,head_keep$19,head_keep$20,take,join_room,join_push,join_rec,last_done);
@@ -44776,7 +45056,7 @@ module fcc_sort_net__serializer__selected__9_k7_668cf05b(d,q,clock);
 endmodule // fcc_sort_net__serializer__selected__9_k7_668cf05b
 
 
-module fcc_top__sort_net_rst_k7_668cf05b(clock,d,q);
+module fcc_sort_net__serializer_rst_k7_668cf05b(clock,d,q);
 
     // Module arguments
     input wire  clock;
@@ -44794,7 +45074,7 @@ module fcc_top__sort_net_rst_k7_668cf05b(clock,d,q);
     always @(*) begin
         q = held;
     end
-endmodule // fcc_top__sort_net_rst_k7_668cf05b
+endmodule // fcc_sort_net__serializer_rst_k7_668cf05b
 
 
 module fcc_top__tready_q_k7_668cf05b(d,q,clock);

@@ -164,6 +164,9 @@ impl Bench {
         for _ in 0..4 {
             dut.step(&rst, &vec![0; n], &vec![0; n]);
         }
+        // The sub-blocks' resets are registered copies of `rst`: they leave
+        // reset one cycle after it.
+        dut.step(&SnIn::default(), &vec![0; n], &vec![0; n]);
         Bench {
             p: p.clone(),
             dut,

@@ -18,7 +18,11 @@
 //! is reset by `rst` only.
 //!
 //! Run parameters: a write to RUN_K .. RUN_COLS is checked against
-//! `regmap::run_range`; a value outside it is refused (the register keeps its
+//! `regmap::run_range` (every range ends below 2^16; the checks are
+//! registered with the write data as W is taken, in two halves, `w_hi_zero`
+//! for bits 31:16 and `w_lo_ok_*` for bits 15:0, so no range comparator lies
+//! between the held data and the registers the write sets); a value outside
+//! it is refused (the register keeps its
 //! value, the register's ERROR bit is set). An accepted value goes into the
 //! register software reads back (the shadow); the core uses the *active* copy
 //! (`run_*` outputs), loaded from the shadow in every cycle the core is idle
@@ -120,6 +124,13 @@ pub struct FccRegs {
     aw_a: DFF<Bits<WORD_BITS>>,
     w_v: DFF<Bit>,
     w_d: DFF<Bits<32>>,
+    // `w_d` checked as W is taken: bits 31:16 zero, and bits 15:0 in the
+    // run ranges of RUN_K, RUN_TH_H / RUN_TH_V, RUN_ROWS, RUN_COLS.
+    w_hi_zero: DFF<Bit>,
+    w_lo_ok_k: DFF<Bit>,
+    w_lo_ok_th: DFF<Bit>,
+    w_lo_ok_rows: DFF<Bit>,
+    w_lo_ok_cols: DFF<Bit>,
     b_v: DFF<Bit>,
     // Read channel.
     r_v: DFF<Bit>,
@@ -165,7 +176,6 @@ pub struct FccRegs {
     sq_a: DFF<Bits<16>>,
     sq_start: DFF<Bit>,
     sq_busy_q: DFF<Bit>,
-    th_ok: Signal<Local, Bit>,
     wr: Signal<Local, Bit>,
     clear: Signal<Local, Bit>,
     a_control: Constant<Bits<WORD_BITS>>,
@@ -181,14 +191,14 @@ pub struct FccRegs {
     bit_err_thv: Constant<Bits<32>>,
     bit_err_rows: Constant<Bits<32>>,
     bit_err_cols: Constant<Bits<32>>,
-    k_min: Constant<Bits<32>>,
-    k_max: Constant<Bits<32>>,
-    th_min: Constant<Bits<32>>,
-    th_max: Constant<Bits<32>>,
-    rows_min: Constant<Bits<32>>,
-    rows_max: Constant<Bits<32>>,
-    cols_min: Constant<Bits<32>>,
-    cols_max: Constant<Bits<32>>,
+    k_min: Constant<Bits<16>>,
+    k_max: Constant<Bits<16>>,
+    th_min: Constant<Bits<16>>,
+    th_max: Constant<Bits<16>>,
+    rows_min: Constant<Bits<16>>,
+    rows_max: Constant<Bits<16>>,
+    cols_min: Constant<Bits<16>>,
+    cols_max: Constant<Bits<16>>,
     def_k: Constant<Bits<4>>,
     def_thh: Constant<Bits<16>>,
     def_thv: Constant<Bits<16>>,
@@ -256,6 +266,10 @@ impl FccRegs {
         }
         let range = |off| {
             let r = regmap::run_range(p, off).expect("a run register");
+            assert!(
+                r.max < 1 << 16,
+                "run range of {off:#x} ends at or above 2^16"
+            );
             (kb(u64::from(r.min)), kb(u64::from(r.max)))
         };
         let (k_min, k_max) = range(offset::RUN_K);
@@ -317,6 +331,11 @@ impl FccRegs {
             aw_a: Default::default(),
             w_v: Default::default(),
             w_d: Default::default(),
+            w_hi_zero: Default::default(),
+            w_lo_ok_k: Default::default(),
+            w_lo_ok_th: Default::default(),
+            w_lo_ok_rows: Default::default(),
+            w_lo_ok_cols: Default::default(),
             b_v: Default::default(),
             r_v: Default::default(),
             r_d: Default::default(),
@@ -355,7 +374,6 @@ impl FccRegs {
             sq_a: Default::default(),
             sq_start: Default::default(),
             sq_busy_q: Default::default(),
-            th_ok: Default::default(),
             wr: Default::default(),
             clear: Default::default(),
             a_control: word(offset::CONTROL),
@@ -413,6 +431,11 @@ impl Logic for FccRegs {
             aw_a,
             w_v,
             w_d,
+            w_hi_zero,
+            w_lo_ok_k,
+            w_lo_ok_th,
+            w_lo_ok_rows,
+            w_lo_ok_cols,
             b_v,
             r_v,
             r_d,
@@ -465,8 +488,6 @@ impl Logic for FccRegs {
             & !self.sq_start.q.val()
             & !self.sq.busy.val()
             & !self.sq_busy_q.q.val();
-        self.th_ok.next =
-            (self.w_d.q.val() >= self.th_min.val()) & (self.w_d.q.val() <= self.th_max.val());
         if self.s_axil_awvalid.val() & !self.aw_v.q.val() {
             self.aw_v.d.next = true;
             self.aw_a.d.next = self.s_axil_awaddr.val().get_bits::<WORD_BITS>(2);
@@ -474,6 +495,19 @@ impl Logic for FccRegs {
         if self.s_axil_wvalid.val() & !self.w_v.q.val() {
             self.w_v.d.next = true;
             self.w_d.d.next = self.s_axil_wdata.val();
+            self.w_hi_zero.d.next = self.s_axil_wdata.val().get_bits::<16>(16) == self.zero16.val();
+            self.w_lo_ok_k.d.next = (self.s_axil_wdata.val().get_bits::<16>(0) >= self.k_min.val())
+                & (self.s_axil_wdata.val().get_bits::<16>(0) <= self.k_max.val())
+                & self.s_axil_wdata.val().get_bit(0);
+            self.w_lo_ok_th.d.next = (self.s_axil_wdata.val().get_bits::<16>(0)
+                >= self.th_min.val())
+                & (self.s_axil_wdata.val().get_bits::<16>(0) <= self.th_max.val());
+            self.w_lo_ok_rows.d.next = (self.s_axil_wdata.val().get_bits::<16>(0)
+                >= self.rows_min.val())
+                & (self.s_axil_wdata.val().get_bits::<16>(0) <= self.rows_max.val());
+            self.w_lo_ok_cols.d.next = (self.s_axil_wdata.val().get_bits::<16>(0)
+                >= self.cols_min.val())
+                & (self.s_axil_wdata.val().get_bits::<16>(0) <= self.cols_max.val());
         }
         if self.b_v.q.val() & self.s_axil_bready.val() {
             self.b_v.d.next = false;
@@ -514,28 +548,21 @@ impl Logic for FccRegs {
             }
             // Run parameters: taken if in range, else refused with an error bit.
             if self.aw_a.q.val() == self.a_run_k.val() {
-                if (self.w_d.q.val() >= self.k_min.val())
-                    & (self.w_d.q.val() <= self.k_max.val())
-                    & self.w_d.q.val().get_bit(0)
-                {
+                if self.w_hi_zero.q.val() & self.w_lo_ok_k.q.val() {
                     self.sh_k.d.next = self.w_d.q.val().get_bits::<16>(0);
                 } else {
                     self.err_k.d.next = true;
                 }
             }
             if self.aw_a.q.val() == self.a_run_rows.val() {
-                if (self.w_d.q.val() >= self.rows_min.val())
-                    & (self.w_d.q.val() <= self.rows_max.val())
-                {
+                if self.w_hi_zero.q.val() & self.w_lo_ok_rows.q.val() {
                     self.sh_rows.d.next = self.w_d.q.val().get_bits::<16>(0);
                 } else {
                     self.err_rows.d.next = true;
                 }
             }
             if self.aw_a.q.val() == self.a_run_cols.val() {
-                if (self.w_d.q.val() >= self.cols_min.val())
-                    & (self.w_d.q.val() <= self.cols_max.val())
-                {
+                if self.w_hi_zero.q.val() & self.w_lo_ok_cols.q.val() {
                     self.sh_cols.d.next = self.w_d.q.val().get_bits::<16>(0);
                 } else {
                     self.err_cols.d.next = true;
@@ -543,7 +570,7 @@ impl Logic for FccRegs {
             }
             // A threshold starts the squarer; the response waits for it.
             if self.aw_a.q.val() == self.a_run_thh.val() {
-                if self.th_ok.val() {
+                if self.w_hi_zero.q.val() & self.w_lo_ok_th.q.val() {
                     self.b_v.d.next = false;
                     self.sq_start.d.next = true;
                     self.sq_v.d.next = false;
@@ -552,7 +579,7 @@ impl Logic for FccRegs {
                 }
             }
             if self.aw_a.q.val() == self.a_run_thv.val() {
-                if self.th_ok.val() {
+                if self.w_hi_zero.q.val() & self.w_lo_ok_th.q.val() {
                     self.b_v.d.next = false;
                     self.sq_start.d.next = true;
                     self.sq_v.d.next = true;

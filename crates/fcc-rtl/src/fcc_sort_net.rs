@@ -24,6 +24,10 @@
 //! centre (c for a new run): both ends are in the components of c and n,
 //! which is what a join of c and n needs.
 //!
+//! Reset: `rst` is the reset one cycle ahead. Each sub-block has its own
+//! registered copy of it (`FccKeepReg`), so the block's reset net is split
+//! four ways and the sub-blocks are in reset in the cycle after `rst`.
+//!
 //! A record taken and a centre that needed no record return their input
 //! credit (`take`, `drop`), which `fcc_top` counts to drive `s_axis_tready`.
 
@@ -32,6 +36,7 @@ use rust_hdl::prelude::*;
 
 use crate::fcc_centre_buf::FccCentreBuf;
 use crate::fcc_join_queue::FccJoinQueue;
+use crate::fcc_keep_reg::{FccKeepReg, RESET_FANOUT};
 use crate::fcc_serializer::FccSerializer;
 use crate::fcc_sort_filter::FccSortFilter;
 use crate::types::{vec_of, Ctr};
@@ -41,6 +46,7 @@ pub use crate::fcc_centre_buf::CB_BITS;
 #[derive(LogicBlock)]
 pub struct FccSortNet {
     pub clk: Signal<In, Clock>,
+    /// Reset, one cycle ahead of the sub-blocks' (see the module doc).
     pub rst: Signal<In, Bit>,
     /// Clear the join counter (start of a frame).
     pub clear: Signal<In, Bit>,
@@ -72,6 +78,10 @@ pub struct FccSortNet {
     centre_buf: FccCentreBuf,
     serializer: FccSerializer,
     join_queue: FccJoinQueue,
+    filter_rst: FccKeepReg<Bit>,
+    centre_buf_rst: FccKeepReg<Bit>,
+    serializer_rst: FccKeepReg<Bit>,
+    join_queue_rst: FccKeepReg<Bit>,
     _n: usize,
 }
 
@@ -102,6 +112,10 @@ impl FccSortNet {
             centre_buf: FccCentreBuf::new(p),
             serializer: FccSerializer::new(p),
             join_queue: FccJoinQueue::default(),
+            filter_rst: FccKeepReg::with_max_fanout(RESET_FANOUT),
+            centre_buf_rst: FccKeepReg::with_max_fanout(RESET_FANOUT),
+            serializer_rst: FccKeepReg::with_max_fanout(RESET_FANOUT),
+            join_queue_rst: FccKeepReg::with_max_fanout(RESET_FANOUT),
             _n: n,
         }
     }
@@ -110,14 +124,23 @@ impl FccSortNet {
 impl Logic for FccSortNet {
     #[hdl_gen]
     fn update(&mut self) {
+        // Reset: one registered copy per sub-block.
+        self.filter_rst.clock.next = self.clk.val();
+        self.centre_buf_rst.clock.next = self.clk.val();
+        self.serializer_rst.clock.next = self.clk.val();
+        self.join_queue_rst.clock.next = self.clk.val();
+        self.filter_rst.d.next = self.rst.val();
+        self.centre_buf_rst.d.next = self.rst.val();
+        self.serializer_rst.d.next = self.rst.val();
+        self.join_queue_rst.d.next = self.rst.val();
         self.filter.clk.next = self.clk.val();
-        self.filter.rst.next = self.rst.val();
+        self.filter.rst.next = self.filter_rst.q.val();
         self.centre_buf.clk.next = self.clk.val();
-        self.centre_buf.rst.next = self.rst.val();
+        self.centre_buf.rst.next = self.centre_buf_rst.q.val();
         self.serializer.clk.next = self.clk.val();
-        self.serializer.rst.next = self.rst.val();
+        self.serializer.rst.next = self.serializer_rst.q.val();
         self.join_queue.clk.next = self.clk.val();
-        self.join_queue.rst.next = self.rst.val();
+        self.join_queue.rst.next = self.join_queue_rst.q.val();
         // Filter: the centre and its window in; the representative back out.
         self.filter.centre.next = self.centre.val();
         for e in 0..self._n {

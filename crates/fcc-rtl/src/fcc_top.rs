@@ -27,7 +27,7 @@ use rust_hdl::prelude::*;
 
 use crate::fcc_dist_tree::FccDistTree;
 use crate::fcc_intra::FccIntra;
-use crate::fcc_keep_reg::FccKeepReg;
+use crate::fcc_keep_reg::{FccKeepReg, RESET_FANOUT};
 use crate::fcc_label_update::FccLabelUpdate;
 use crate::fcc_merge_table::FccMergeTable;
 use crate::fcc_regs::FccRegs;
@@ -40,8 +40,18 @@ use crate::types::{kb, Pix};
 /// the buffer's size less a margin for the registered `s_axis_tready`.
 pub const CREDITS: usize = (1 << CB_BITS) - 16;
 
-/// Loads per copy of the pipeline's reset that Vivado replicates down to.
-const RESET_FANOUT: usize = 64;
+/// Phase of a frame (see the module doc).
+#[derive(Copy, Clone, Debug, PartialEq, LogicState)]
+pub enum Phase {
+    /// After reset, until the merge table is initialised.
+    Init,
+    /// Pixels are taken.
+    Run,
+    /// The frame's pixels are in; the last joins are merged.
+    Drain,
+    /// Flatten and read-back: the frame's labels leave.
+    Out,
+}
 
 #[derive(LogicBlock)]
 pub struct FccTop {
@@ -101,14 +111,14 @@ pub struct FccTop {
     label_update: FccLabelUpdate,
     regs: FccRegs,
     // The pipeline's reset tree: one copy of the register file's `core_rst`
-    // per block (the top's own registers use `core_rst` itself).
+    // per block (the top's own registers use `core_rst` itself; `sort_net`
+    // makes one per sub-block from `core_rst_next`).
     intra_rst: FccKeepReg<Bit>,
     window_rst: FccKeepReg<Bit>,
     dist_tree_rst: FccKeepReg<Bit>,
-    sort_net_rst: FccKeepReg<Bit>,
     merge_table_rst: FccKeepReg<Bit>,
     label_update_rst: FccKeepReg<Bit>,
-    fsm: DFF<Bits<2>>,
+    phase: DFF<Phase>,
     tready_q: DFF<Bit>,
     pad_go: DFF<Bit>,
     slot_q: DFF<Pix>,
@@ -145,10 +155,6 @@ pub struct FccTop {
     nxt_run: Signal<Local, Bit>,
     drained: Signal<Local, Bit>,
     // Constants.
-    f_init: Constant<Bits<2>>,
-    f_run: Constant<Bits<2>>,
-    f_drain: Constant<Bits<2>>,
-    f_out: Constant<Bits<2>>,
     sign16: Constant<Bits<16>>,
     zero8: Constant<Bits<8>>,
     one8: Constant<Bits<8>>,
@@ -215,10 +221,9 @@ impl FccTop {
             intra_rst: FccKeepReg::with_max_fanout(RESET_FANOUT),
             window_rst: FccKeepReg::with_max_fanout(RESET_FANOUT),
             dist_tree_rst: FccKeepReg::with_max_fanout(RESET_FANOUT),
-            sort_net_rst: FccKeepReg::with_max_fanout(RESET_FANOUT),
             merge_table_rst: FccKeepReg::with_max_fanout(RESET_FANOUT),
             label_update_rst: FccKeepReg::with_max_fanout(RESET_FANOUT),
-            fsm: Default::default(),
+            phase: Default::default(),
             tready_q: Default::default(),
             pad_go: Default::default(),
             slot_q: Default::default(),
@@ -250,10 +255,6 @@ impl FccTop {
             nxt_in_done: Default::default(),
             nxt_run: Default::default(),
             drained: Default::default(),
-            f_init: kb(0),
-            f_run: kb(1),
-            f_drain: kb(2),
-            f_out: kb(3),
             sign16: kb(0x8000),
             zero8: kb(0),
             one8: kb(1),
@@ -273,7 +274,7 @@ impl Logic for FccTop {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clk, fsm, tready_q, pad_go, slot_q, row, col, col0, col_last, row_last, first,
+            self, clk, phase, tready_q, pad_go, slot_q, row, col, col0, col_last, row_last, first,
             pad, discard, in_done, err, credits, room, last_seen, last_col, pen_col, pen_row,
             one_row
         );
@@ -405,21 +406,21 @@ impl Logic for FccTop {
             & self.sort_net.jq_empty.val();
         self.merge_table.flat_start.next = false;
         self.label_update.rb_start.next = false;
-        if (self.fsm.q.val() == self.f_init.val()) & !self.merge_table.init_busy.val() {
-            self.fsm.d.next = self.f_run.val();
+        if (self.phase.q.val() == Phase::Init) & !self.merge_table.init_busy.val() {
+            self.phase.d.next = Phase::Run;
         }
-        if (self.fsm.q.val() == self.f_run.val()) & self.in_done.q.val() {
-            self.fsm.d.next = self.f_drain.val();
+        if (self.phase.q.val() == Phase::Run) & self.in_done.q.val() {
+            self.phase.d.next = Phase::Drain;
         }
-        if (self.fsm.q.val() == self.f_drain.val()) & self.drained.val() {
+        if (self.phase.q.val() == Phase::Drain) & self.drained.val() {
             self.merge_table.flat_start.next = true;
             self.label_update.rb_start.next = true;
-            self.fsm.d.next = self.f_out.val();
+            self.phase.d.next = Phase::Out;
         }
-        self.nxt_run.next = self.fsm.q.val() == self.f_run.val();
+        self.nxt_run.next = self.phase.q.val() == Phase::Run;
         self.regs.frame_end.next = false;
-        if (self.fsm.q.val() == self.f_out.val()) & self.label_update.rb_done.val() {
-            self.fsm.d.next = self.f_run.val();
+        if (self.phase.q.val() == Phase::Out) & self.label_update.rb_done.val() {
+            self.phase.d.next = Phase::Run;
             self.nxt_run.next = true;
             self.nxt_in_done.next = false;
             self.last_seen.d.next = false;
@@ -445,7 +446,7 @@ impl Logic for FccTop {
             self.pad_go.d.next = false;
         }
         if self.regs.core_rst.val() {
-            self.fsm.d.next = self.f_init.val();
+            self.phase.d.next = Phase::Init;
             self.tready_q.d.next = false;
             self.pad_go.d.next = false;
             self.slot_q.d.next.valid = false;
@@ -468,13 +469,11 @@ impl Logic for FccTop {
         self.intra_rst.clock.next = self.clk.val();
         self.window_rst.clock.next = self.clk.val();
         self.dist_tree_rst.clock.next = self.clk.val();
-        self.sort_net_rst.clock.next = self.clk.val();
         self.merge_table_rst.clock.next = self.clk.val();
         self.label_update_rst.clock.next = self.clk.val();
         self.intra_rst.d.next = self.regs.core_rst_next.val();
         self.window_rst.d.next = self.regs.core_rst_next.val();
         self.dist_tree_rst.d.next = self.regs.core_rst_next.val();
-        self.sort_net_rst.d.next = self.regs.core_rst_next.val();
         self.merge_table_rst.d.next = self.regs.core_rst_next.val();
         self.label_update_rst.d.next = self.regs.core_rst_next.val();
         // ---- Blocks.
@@ -512,7 +511,8 @@ impl Logic for FccTop {
             self.sort_net.hit[e].next = self.dist_tree.hit[e].val();
             self.sort_net.rep[e].next = self.window.ent_rep[e].val();
         }
-        self.sort_net.rst.next = self.sort_net_rst.q.val();
+        // `sort_net` registers its sub-blocks' copies itself.
+        self.sort_net.rst.next = self.regs.core_rst_next.val();
         self.sort_net.clear.next = self.label_update.rb_done.val();
         self.sort_net.centre.next = self.dist_tree.centre.val();
         self.sort_net.jtake.next = self.merge_table.jtake.val();
@@ -544,8 +544,8 @@ impl Logic for FccTop {
         self.status_gear_stalls.next = self.regs.st_gear_stalls.val();
         self.status_frame_done.next = self.regs.frame_done.val();
         self.status_idle.next =
-            (self.fsm.q.val() == self.f_run.val()) & !self.in_done.q.val() & self.first.q.val();
+            (self.phase.q.val() == Phase::Run) & !self.in_done.q.val() & self.first.q.val();
         self.regs.idle.next =
-            (self.fsm.q.val() == self.f_run.val()) & !self.in_done.q.val() & self.first.q.val();
+            (self.phase.q.val() == Phase::Run) & !self.in_done.q.val() & self.first.q.val();
     }
 }
