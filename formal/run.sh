@@ -21,7 +21,7 @@ root="$(cd "$here/.." && pwd)"
 
 fcc="$root/target/release/fcc"
 work="$root/target/formal"
-fifo_depth=24
+fifo_depth=12
 top_depth=12
 solver=z3
 only=""

@@ -59,8 +59,7 @@ fn run_formal(work: &str, args: &[&str]) -> Option<(bool, String)> {
 
 #[test]
 fn join_queue_and_centre_buffer_fifos_hold_for_bounded_cycles_after_reset() {
-    let Some((ok, text)) = run_formal("proofs", &["--fifo-depth", "12"])
-    else {
+    let Some((ok, text)) = run_formal("proofs", &["--fifo-depth", "12"]) else {
         return;
     };
     assert!(ok, "a bounded proof failed:\n{text}");
@@ -77,7 +76,10 @@ fn false_fifo_level_property_yields_counterexample() {
     let Some((ok, text)) = run_formal("wrong", &["--wrong", "--fifo-depth", "6"]) else {
         return;
     };
-    assert!(ok, "the deliberately false property was not refuted:\n{text}");
+    assert!(
+        ok,
+        "the deliberately false property was not refuted:\n{text}"
+    );
     assert!(
         text.contains("join_queue_fifo_wrong: FAILED"),
         "no counterexample reported:\n{text}"
