@@ -261,6 +261,24 @@ pub fn generate(p: &FccParams) -> Result<Generated, RtlError> {
     })
 }
 
+/// Check `block` and emit it alone as the module `name` with the
+/// configuration suffix of `p`, for its own bench (the core's copy is inside
+/// `fcc_top.v`). `p` has been validated for hardware.
+fn generate_block<B: Block>(p: &FccParams, mut block: B, name: &str) -> Result<String, RtlError> {
+    block.connect_all();
+    check_all(&block).map_err(|e| RtlError::Check(format!("{e:?}")))?;
+    let raw = generate_verilog_unchecked(&block);
+    let mut v = file_header(p, "//");
+    v.push_str("`default_nettype none\n");
+    v.push_str(&rename_modules(
+        &constant_selects(&raw),
+        name,
+        &p.module_suffix(),
+    ));
+    v.push_str("\n`default_nettype wire\n");
+    Ok(v)
+}
+
 /// Name of the register file's module when generated alone (its bench),
 /// before the configuration suffix.
 pub const REGS_NAME: &str = "fcc_regs";
@@ -275,19 +293,7 @@ pub fn regs_module(p: &FccParams) -> String {
 /// [`regs_module`] (for its own bench; the core's copy is inside `fcc_top.v`).
 pub fn generate_regs(p: &FccParams) -> Result<String, RtlError> {
     p.validate_for_hardware()?;
-    let mut regs = FccRegs::new(p);
-    regs.connect_all();
-    check_all(&regs).map_err(|e| RtlError::Check(format!("{e:?}")))?;
-    let raw = generate_verilog_unchecked(&regs);
-    let mut v = file_header(p, "//");
-    v.push_str("`default_nettype none\n");
-    v.push_str(&rename_modules(
-        &constant_selects(&raw),
-        REGS_NAME,
-        &p.module_suffix(),
-    ));
-    v.push_str("\n`default_nettype wire\n");
-    Ok(v)
+    generate_block(p, FccRegs::new(p), REGS_NAME)
 }
 
 /// Name of the merge table's module when generated alone (its bench),
@@ -305,19 +311,7 @@ pub fn merge_table_module(p: &FccParams) -> String {
 /// is inside `fcc_top.v`).
 pub fn generate_merge_table(p: &FccParams) -> Result<String, RtlError> {
     p.validate_for_hardware()?;
-    let mut table = fcc_merge_table::FccMergeTable::new(p);
-    table.connect_all();
-    check_all(&table).map_err(|e| RtlError::Check(format!("{e:?}")))?;
-    let raw = generate_verilog_unchecked(&table);
-    let mut v = file_header(p, "//");
-    v.push_str("`default_nettype none\n");
-    v.push_str(&rename_modules(
-        &constant_selects(&raw),
-        MERGE_TABLE_NAME,
-        &p.module_suffix(),
-    ));
-    v.push_str("\n`default_nettype wire\n");
-    Ok(v)
+    generate_block(p, fcc_merge_table::FccMergeTable::new(p), MERGE_TABLE_NAME)
 }
 
 /// Name of the label updater's Verilog module when it is generated alone,
@@ -334,19 +328,11 @@ pub fn label_update_module(p: &FccParams) -> String {
 /// the output register of the build `p`.
 pub fn generate_label_update(p: &FccParams) -> Result<String, RtlError> {
     p.validate_for_hardware()?;
-    let mut block = fcc_label_update::FccLabelUpdate::new(p);
-    block.connect_all();
-    check_all(&block).map_err(|e| RtlError::Check(format!("{e:?}")))?;
-    let raw = generate_verilog_unchecked(&block);
-    let mut v = file_header(p, "//");
-    v.push_str("`default_nettype none\n");
-    v.push_str(&rename_modules(
-        &constant_selects(&raw),
+    generate_block(
+        p,
+        fcc_label_update::FccLabelUpdate::new(p),
         LABEL_UPDATE_NAME,
-        &p.module_suffix(),
-    ));
-    v.push_str("\n`default_nettype wire\n");
-    Ok(v)
+    )
 }
 
 /// Name of the window probe's module (the window's bench), before the
@@ -363,19 +349,7 @@ pub fn window_module(p: &FccParams) -> String {
 /// bench; the core's copy is inside `fcc_top.v`).
 pub fn generate_window(p: &FccParams) -> Result<String, RtlError> {
     p.validate_for_hardware()?;
-    let mut probe = fcc_window_probe::FccWindowProbe::new(p);
-    probe.connect_all();
-    check_all(&probe).map_err(|e| RtlError::Check(format!("{e:?}")))?;
-    let raw = generate_verilog_unchecked(&probe);
-    let mut v = file_header(p, "//");
-    v.push_str("`default_nettype none\n");
-    v.push_str(&rename_modules(
-        &constant_selects(&raw),
-        WINDOW_NAME,
-        &p.module_suffix(),
-    ));
-    v.push_str("\n`default_nettype wire\n");
-    Ok(v)
+    generate_block(p, fcc_window_probe::FccWindowProbe::new(p), WINDOW_NAME)
 }
 
 /// Name of the sort network's module when generated alone (its bench),
@@ -393,19 +367,7 @@ pub fn sort_net_module(p: &FccParams) -> String {
 /// keep rust-hdl's names `hit$e` and `rep$e`.
 pub fn generate_sort_net(p: &FccParams) -> Result<String, RtlError> {
     p.validate_for_hardware()?;
-    let mut block = fcc_sort_net::FccSortNet::new(p);
-    block.connect_all();
-    check_all(&block).map_err(|e| RtlError::Check(format!("{e:?}")))?;
-    let raw = generate_verilog_unchecked(&block);
-    let mut v = file_header(p, "//");
-    v.push_str("`default_nettype none\n");
-    v.push_str(&rename_modules(
-        &constant_selects(&raw),
-        SORT_NET_NAME,
-        &p.module_suffix(),
-    ));
-    v.push_str("\n`default_nettype wire\n");
-    Ok(v)
+    generate_block(p, fcc_sort_net::FccSortNet::new(p), SORT_NET_NAME)
 }
 
 /// The contents of `fcc_params.json`.
