@@ -32,7 +32,7 @@ pub mod reference;
 pub use frame::{dist2, quantize, quantize_point, Frame, Point};
 pub use merge::{renumber, ExactMerge, PaperMerge};
 pub use pass1::{pass1, pass1_released, runs_needed, Pass1, Run};
-pub use pass2::{pass2, JoinSink};
+pub use pass2::{pass2, pass2_with, JoinSink, Pass2Buffers};
 
 use fcc_params::{FccParams, ParamError};
 use serde::{Deserialize, Serialize};
@@ -120,12 +120,15 @@ pub fn cluster(
 
 /// The buffers of [`cluster_with`], kept from one frame to the next. With
 /// one workspace per thread, and each result handed back by
-/// [`recycle`](Self::recycle), `exact` clustering allocates nothing per frame
-/// once the buffers have grown to the frame size.
+/// [`recycle`](Self::recycle), clustering (`exact` or `paper`) allocates
+/// nothing per frame once the buffers have grown to the frame size.
 #[derive(Debug, Clone, Default)]
 pub struct Workspace {
     exact: exact::Exact,
     p1: Pass1,
+    paper: PaperMerge,
+    pass2: Pass2Buffers,
+    rep: Vec<u32>,
     id: Vec<u32>,
     labels: Vec<u32>,
 }
@@ -182,10 +185,11 @@ pub fn cluster_with(
             let p1 = &mut ws.p1;
             p1.labels = std::mem::take(&mut ws.labels);
             pass1::label_runs(params, frame, pass1::RingHandling::Relabel, p1);
-            let mut m = PaperMerge::new(p1.provisional);
-            let joins = pass2(params, frame, p1, &mut m);
-            let rep = m.representatives();
-            let clusters = merge::renumber_runs(p1, frame.cols, &rep, &mut ws.id);
+            let m = &mut ws.paper;
+            m.reset(p1.provisional);
+            let joins = pass2_with(&mut ws.pass2, params, frame, p1, m);
+            m.representatives_into(&mut ws.rep);
+            let clusters = merge::renumber_runs(p1, frame.cols, &ws.rep, &mut ws.id);
             Ok(Clustering {
                 rows: frame.rows,
                 cols: frame.cols,

@@ -90,7 +90,7 @@ impl JoinSink for ExactMerge {
 
 /// The merge table of the published Algorithm 2, kept so its losses can be
 /// reproduced and measured (spec §6). Not connected components in general.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, Default)]
 pub struct PaperMerge {
     table: Vec<u32>,
     current: u32,
@@ -100,11 +100,18 @@ pub struct PaperMerge {
 impl PaperMerge {
     /// `T[l] = l` for labels `0 ..= provisional`.
     pub fn new(provisional: u32) -> Self {
-        PaperMerge {
-            table: (0..=provisional).collect(),
-            current: 0,
-            collected: Vec::new(),
-        }
+        let mut m = PaperMerge::default();
+        m.reset(provisional);
+        m
+    }
+
+    /// Start again with `T[l] = l` for labels `0 ..= provisional`, keeping
+    /// the buffers (no allocation once they have grown).
+    pub fn reset(&mut self, provisional: u32) {
+        self.table.clear();
+        self.table.extend(0..=provisional);
+        self.current = 0;
+        self.collected.clear();
     }
 
     fn collect(&mut self, l: u32) {
@@ -129,9 +136,17 @@ impl PaperMerge {
 
     /// The output lookup `T[T[l]]` of every label.
     pub fn representatives(mut self) -> Vec<u32> {
+        let mut rep = Vec::new();
+        self.representatives_into(&mut rep);
+        rep
+    }
+
+    /// As [`representatives`](Self::representatives), into `rep`'s buffer.
+    pub fn representatives_into(&mut self, rep: &mut Vec<u32>) {
         self.flush();
         let t = &self.table;
-        t.iter().map(|&l| t[l as usize]).collect()
+        rep.clear();
+        rep.extend(t.iter().map(|&l| t[l as usize]));
     }
 }
 

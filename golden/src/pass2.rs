@@ -29,26 +29,45 @@ pub trait JoinSink {
 /// Returns the number of distinct label pairs joined: pairs (centre label,
 /// window label) with at least one pixel pair that passed the threshold.
 pub fn pass2<S: JoinSink>(params: &FccParams, frame: &Frame, p1: &Pass1, sink: &mut S) -> u64 {
+    pass2_with(&mut Pass2Buffers::default(), params, frame, p1, sink)
+}
+
+/// The buffers of [`pass2_with`], kept from one frame to the next.
+#[derive(Debug, Clone, Default)]
+pub struct Pass2Buffers {
+    packed: Vec<[i32; 4]>,
+    counted_by: Vec<u32>,
+    first_run_pairs: Vec<u32>,
+}
+
+/// As [`pass2`], reusing the buffers of `buf` (no allocation once they have
+/// grown to the frame size).
+pub fn pass2_with<S: JoinSink>(
+    buf: &mut Pass2Buffers,
+    params: &FccParams,
+    frame: &Frame,
+    p1: &Pass1,
+    sink: &mut S,
+) -> u64 {
     let th_sq = params.th_v_sq();
     let h = params.half();
     let cols = frame.cols;
     // x, y, z and label side by side; label 0 marks a pixel that never joins.
-    let packed: Vec<[i32; 4]> = frame
-        .points
-        .iter()
-        .zip(&p1.labels)
-        .map(|(p, &l)| match p {
-            Some(p) if l != 0 => [i32::from(p[0]), i32::from(p[1]), i32::from(p[2]), l as i32],
-            _ => [0; 4],
-        })
-        .collect();
+    let packed = &mut buf.packed;
+    packed.clear();
+    packed.extend(frame.points.iter().zip(&p1.labels).map(|(p, &l)| match p {
+        Some(p) if l != 0 => [i32::from(p[0]), i32::from(p[1]), i32::from(p[2]), l as i32],
+        _ => [0; 4],
+    }));
     let mut joins = 0u64;
     // The centre label that last counted a pair with each window label. A
     // label's centres are consecutive, except the run the released ring
     // handling relabels with the row's first label (spec §6): the window
     // labels counted with the first run are kept for it.
-    let mut counted_by = vec![0u32; p1.provisional as usize + 1];
-    let mut first_run_pairs: Vec<u32> = Vec::new();
+    let counted_by = &mut buf.counted_by;
+    counted_by.clear();
+    counted_by.resize(p1.provisional as usize + 1, 0);
+    let first_run_pairs = &mut buf.first_run_pairs;
     for i in 0..frame.rows {
         let row = i * cols;
         let (mut first_label, mut past_first_run) = (0u32, false);

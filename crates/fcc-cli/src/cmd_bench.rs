@@ -7,6 +7,8 @@
 //! several times in a row, with its data in the core's caches and its branches
 //! learnt, and times short stretches that a busy machine seldom interrupts,
 //! while a batch goes through all the frames and counts every interruption.
+//! Batches have a fixed size and the one-thread and pooled runs alternate, so
+//! a slow stretch of a shared machine does not land on one side only.
 
 use anyhow::Context;
 use clap::Args;
@@ -25,7 +27,8 @@ pub struct BenchArgs {
     /// Synthetic scenes (seeds 0..frames).
     #[arg(long, default_value_t = 8)]
     pub frames: u64,
-    /// Times each frame is clustered per K; the median is reported.
+    /// Times each frame is clustered per K, and batch runs per K on one
+    /// thread and on the pool; medians are reported.
     #[arg(long, default_value_t = 5)]
     pub repeat: usize,
     /// Beams (rows) of the synthetic sensor.
@@ -58,7 +61,8 @@ struct Row {
     /// The batch on one thread: the rate the speed-up is measured against.
     one_thread_batch_frames_per_s: f64,
     paper_one_thread_batch_frames_per_s: f64,
-    /// `batch_frames_per_s` over `one_thread_batch_frames_per_s`.
+    /// Median over alternating runs of the same batch of the pool's rate over
+    /// the one-thread rate.
     speedup: f64,
     paper_speedup: f64,
     threads: usize,
@@ -95,33 +99,28 @@ fn time_ms(p: &FccParams, frames: &[Frame], mode: MergeMode, repeat: usize) -> a
     Ok(per_frame.iter().sum::<f64>() / per_frame.len() as f64)
 }
 
-/// Frames per second clustering the frames over and over on the pool for at
-/// least `repeat` rounds and a quarter of a second: each thread keeps one
-/// workspace and takes the next frame as it finishes one.
-fn batch_rate(
+/// Frames per second of one fixed-size batch: `rounds` passes over the
+/// frames, split between the pool's threads by a fixed stride (thread t of
+/// T takes items t, t + T, ...), so the threads share nothing but the frames.
+/// Each thread keeps one workspace, as a tool going through a dataset does.
+fn batch_run(
     pool: &rayon::ThreadPool,
     p: &FccParams,
     frames: &[Frame],
     mode: MergeMode,
-    repeat: usize,
+    rounds: usize,
 ) -> anyhow::Result<f64> {
-    use std::sync::atomic::{AtomicUsize, Ordering};
-    let min_frames = frames.len() * repeat.max(1);
-    let next = AtomicUsize::new(0);
+    let items = frames.len() * rounds;
     let s = Instant::now();
-    let done = |n: usize| n >= min_frames && s.elapsed().as_secs_f64() >= 0.25;
-    let per_thread = pool.broadcast(|_| -> Result<usize, fcc_golden::GoldenError> {
+    let per_thread = pool.broadcast(|ctx| -> Result<usize, fcc_golden::GoldenError> {
         let mut ws = Workspace::default();
         let mut n = 0;
-        loop {
-            let i = next.fetch_add(1, Ordering::Relaxed);
-            if done(i) {
-                return Ok(n);
-            }
+        for i in (ctx.index()..items).step_by(ctx.num_threads()) {
             let out = cluster_with(&mut ws, p, &frames[i % frames.len()], mode)?;
-            ws.recycle(out);
+            ws.recycle(std::hint::black_box(out));
             n += 1;
         }
+        Ok(n)
     });
     let secs = s.elapsed().as_secs_f64();
     let mut total = 0;
@@ -129,6 +128,48 @@ fn batch_rate(
         total += n?;
     }
     Ok(total as f64 / secs)
+}
+
+/// A one-thread batch should last at least this long.
+const BATCH_RUN_SECS: f64 = 0.1;
+
+struct BatchRates {
+    /// Median frames per second of the batch on one thread.
+    one: f64,
+    /// Median frames per second of the batch on the pool.
+    pool: f64,
+    /// Median over the pairs of the pool's rate over the one-thread rate.
+    speedup: f64,
+}
+
+/// The batch on one thread and on the pool, `repeat` times each in
+/// alternation after one warm-up of each, every run the same size (enough
+/// rounds for [`BATCH_RUN_SECS`] on one thread). Pairing the runs keeps a
+/// slow stretch of a shared machine from landing on one side only.
+fn batch_rates(
+    pool: &rayon::ThreadPool,
+    one: &rayon::ThreadPool,
+    p: &FccParams,
+    frames: &[Frame],
+    mode: MergeMode,
+    repeat: usize,
+) -> anyhow::Result<BatchRates> {
+    let round_secs = frames.len() as f64 / batch_run(one, p, frames, mode, 1)?;
+    let rounds = ((BATCH_RUN_SECS / round_secs).ceil() as usize).max(1);
+    batch_run(pool, p, frames, mode, rounds)?;
+    let (mut ones, mut pools, mut ratios) = (Vec::new(), Vec::new(), Vec::new());
+    for _ in 0..repeat.max(1) {
+        let o = batch_run(one, p, frames, mode, rounds)?;
+        let q = batch_run(pool, p, frames, mode, rounds)?;
+        ones.push(o);
+        pools.push(q);
+        ratios.push(q / o);
+    }
+    Ok(BatchRates {
+        one: median(ones),
+        pool: median(pools),
+        speedup: median(ratios),
+    })
 }
 
 pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
@@ -173,13 +214,8 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
         eprintln!("K = {k} ...");
         let exact_ms = time_ms(&p, &frames, MergeMode::Exact, args.repeat)?;
         let paper_ms = time_ms(&p, &frames, MergeMode::Paper, args.repeat)?;
-        let batch_frames_per_s = batch_rate(&pool, &p, &frames, MergeMode::Exact, args.repeat)?;
-        let paper_batch_frames_per_s =
-            batch_rate(&pool, &p, &frames, MergeMode::Paper, args.repeat)?;
-        let one_thread_batch_frames_per_s =
-            batch_rate(&one, &p, &frames, MergeMode::Exact, args.repeat)?;
-        let paper_one_thread_batch_frames_per_s =
-            batch_rate(&one, &p, &frames, MergeMode::Paper, args.repeat)?;
+        let exact = batch_rates(&pool, &one, &p, &frames, MergeMode::Exact, args.repeat)?;
+        let paper = batch_rates(&pool, &one, &p, &frames, MergeMode::Paper, args.repeat)?;
         let (mut pts, mut prov, mut joins) = (0.0, 0.0, 0.0);
         let (mut paper_prov, mut paper_joins) = (0.0, 0.0);
         let (mut ce, mut cp, mut split) = (0u64, 0u64, 0u64);
@@ -200,12 +236,12 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
             fsize: k,
             exact_ms,
             paper_ms,
-            batch_frames_per_s,
-            paper_batch_frames_per_s,
-            one_thread_batch_frames_per_s,
-            paper_one_thread_batch_frames_per_s,
-            speedup: batch_frames_per_s / one_thread_batch_frames_per_s,
-            paper_speedup: paper_batch_frames_per_s / paper_one_thread_batch_frames_per_s,
+            batch_frames_per_s: exact.pool,
+            paper_batch_frames_per_s: paper.pool,
+            one_thread_batch_frames_per_s: exact.one,
+            paper_one_thread_batch_frames_per_s: paper.one,
+            speedup: exact.speedup,
+            paper_speedup: paper.speedup,
             threads,
             points: pts / n,
             provisional: prov / n,
