@@ -100,9 +100,9 @@ fn time_ms(p: &FccParams, frames: &[Frame], mode: MergeMode, repeat: usize) -> a
 }
 
 /// Frames per second of one fixed-size batch: `rounds` passes over the
-/// frames, split between the pool's threads by a fixed stride (thread t of
-/// T takes items t, t + T, ...), so the threads share nothing but the frames.
-/// Each thread keeps one workspace, as a tool going through a dataset does.
+/// frames, each thread taking the next frame as it finishes one (frames
+/// differ in cost, so a fixed split would leave one thread waiting). Each
+/// thread keeps one workspace, as a tool going through a dataset does.
 fn batch_run(
     pool: &rayon::ThreadPool,
     p: &FccParams,
@@ -110,17 +110,22 @@ fn batch_run(
     mode: MergeMode,
     rounds: usize,
 ) -> anyhow::Result<f64> {
+    use std::sync::atomic::{AtomicUsize, Ordering};
     let items = frames.len() * rounds;
+    let next = AtomicUsize::new(0);
     let s = Instant::now();
-    let per_thread = pool.broadcast(|ctx| -> Result<usize, fcc_golden::GoldenError> {
+    let per_thread = pool.broadcast(|_| -> Result<usize, fcc_golden::GoldenError> {
         let mut ws = Workspace::default();
         let mut n = 0;
-        for i in (ctx.index()..items).step_by(ctx.num_threads()) {
+        loop {
+            let i = next.fetch_add(1, Ordering::Relaxed);
+            if i >= items {
+                return Ok(n);
+            }
             let out = cluster_with(&mut ws, p, &frames[i % frames.len()], mode)?;
             ws.recycle(std::hint::black_box(out));
             n += 1;
         }
-        Ok(n)
     });
     let secs = s.elapsed().as_secs_f64();
     let mut total = 0;
