@@ -7,7 +7,7 @@ use crate::ground::{detect_ground, Ground, GroundParams};
 use crate::image::RangeImage;
 use crate::labels::filter_min_points;
 use crate::picture::cluster_colour;
-use fcc_golden::{cluster, runs_needed, Clustering, MergeMode};
+use fcc_golden::{cluster_with, runs_needed, Clustering, MergeMode, Workspace};
 use fcc_params::FccParams;
 use std::path::Path;
 
@@ -63,6 +63,12 @@ pub fn params_for(image: &RangeImage, params: &FccParams) -> FccParams {
     }
 }
 
+thread_local! {
+    /// The golden model's buffers, kept by each thread from one image to
+    /// the next (only the returned labels are allocated per image).
+    static WORKSPACE: std::cell::RefCell<Workspace> = Default::default();
+}
+
 /// Remove the ground, cluster with the golden model, drop small clusters.
 pub fn cluster_image(image: &RangeImage, cfg: &PipelineConfig) -> Result<PipelineResult> {
     let params = params_for(image, &cfg.params);
@@ -71,7 +77,8 @@ pub fn cluster_image(image: &RangeImage, cfg: &PipelineConfig) -> Result<Pipelin
     let kept = image.without(&ground.mask);
     let frame = kept.to_frame();
     let out_of_range = kept.valid_count() - frame.valid_count();
-    let clustering = cluster(&params, &frame, cfg.mode)?;
+    let clustering =
+        WORKSPACE.with(|ws| cluster_with(&mut ws.borrow_mut(), &params, &frame, cfg.mode))?;
     let labels_needed = if clustering.overflow {
         runs_needed(&params, &frame)
     } else {
