@@ -50,9 +50,10 @@ if [ ! -x "$fcc" ]; then
     exit 2
 fi
 
-# The smallest configuration: K = 3, 16 x 256, 8 label bits.
+# The smallest configuration the generator accepts (K, rows, columns and
+# label width at their hardware minima).
 mkdir -p "$work"
-"$fcc" gen --fsize 3 --rows 16 --cols 256 --label-bits 8 --out "$work/gen" --force --no-lint >"$work/gen.log"
+"$fcc" gen --smallest --out "$work/gen" --force --no-lint >"$work/gen.log"
 rtl="$work/gen/rtl_out"
 top=$(sed -n 's/^`define FCC_TOP_MODULE \([A-Za-z0-9_]*\).*/\1/p' "$rtl/fcc_params.vh")
 suffix="${top#fcc_top}"
@@ -112,7 +113,7 @@ fifo_proof() {
 
 want() { [ -z "$only" ] || [ "$only" = "$1" ]; }
 
-echo "formal: $top (K = 3, 16 x 256, 8 label bits), solver $solver"
+echo "formal: $(tail -n 1 "$work/gen.log"), solver $solver"
 if [ "$wrong" = 1 ]; then
     fifo_proof join_queue_fifo_wrong "fcc_sort_net__join_queue__queue$suffix"
     if [ "$failed" = 1 ]; then

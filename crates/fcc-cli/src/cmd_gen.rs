@@ -44,6 +44,11 @@ pub struct GenArgs {
     /// Do not run `verilator --lint-only -Wall` on the result.
     #[arg(long)]
     pub no_lint: bool,
+    /// The smallest configuration the generator accepts: K, rows, columns
+    /// and label width at their hardware minima (the other parameters as
+    /// given). The bounded proofs use it.
+    #[arg(long, conflicts_with_all = ["fsize", "rows", "cols", "label_bits"])]
+    pub smallest: bool,
 }
 
 impl GenArgs {
@@ -63,7 +68,17 @@ impl GenArgs {
 }
 
 pub fn run(args: &GenArgs) -> anyhow::Result<()> {
-    let p = args.hw.params()?;
+    let p = if args.smallest {
+        use fcc_params::limits;
+        let mut hw = args.hw.clone();
+        hw.fsize = *limits::HW_FSIZE.start();
+        hw.rows = *limits::HW_ROWS.start();
+        hw.cols = *limits::HW_COLS.start();
+        hw.label_bits = *limits::HW_LABEL_BITS.start();
+        hw.params()?
+    } else {
+        args.hw.params()?
+    };
     let layout = args.layout();
     let opts = WriteOptions {
         board: args.board,

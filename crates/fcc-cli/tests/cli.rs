@@ -325,6 +325,39 @@ fn gen_writes_the_rtl_and_rejects_what_hardware_cannot_do() {
 }
 
 #[test]
+fn gen_smallest_takes_every_size_at_its_hardware_minimum() {
+    use fcc_params::limits;
+    let d = tmpdir("gen-smallest");
+    let o = fcc(&["gen", "--smallest", "--out", s(&d), "--no-lint"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let json: serde_json::Value = serde_json::from_str(
+        &std::fs::read_to_string(d.join("rtl_out").join("fcc_params.json")).unwrap(),
+    )
+    .unwrap();
+    let p: fcc_params::FccParams = serde_json::from_value(json["params"].clone()).unwrap();
+    assert_eq!(
+        (p.fsize, p.rows, p.cols, p.label_bits),
+        (
+            *limits::HW_FSIZE.start(),
+            *limits::HW_ROWS.start(),
+            *limits::HW_COLS.start(),
+            *limits::HW_LABEL_BITS.start()
+        )
+    );
+    let o = fcc(&[
+        "gen",
+        "--smallest",
+        "--fsize",
+        "5",
+        "--out",
+        s(&d),
+        "--no-lint",
+    ]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("--fsize"), "{}", stderr(&o));
+}
+
+#[test]
 fn bench_prints_exact_and_paper_rows_and_its_json() {
     let d = tmpdir("bench");
     let json = d.join("bench.json");
