@@ -14,7 +14,8 @@
 #                      [--wrong]
 # --wrong checks a deliberately false FIFO property instead: the run must end
 # in a counterexample (exit status 0 when it does, 1 when the false property
-# passes). Exit status otherwise: 0 when every proof passes, 1 when one fails.
+# passes or gives no verdict). Exit status otherwise: 0 when every proof
+# passes, 1 when one fails or ends without a verdict (a solver that stopped).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/.." && pwd)"
@@ -35,7 +36,7 @@ while [ $# -gt 0 ]; do
         --solver) solver="$2"; shift 2 ;;
         --only) only="$2"; shift 2 ;;
         --wrong) wrong=1; shift ;;
-        -h|--help) sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        -h|--help) awk 'NR > 1 && /^#/ { sub(/^# ?/, ""); print; next } NR > 1 { exit }' "$0"; exit 0 ;;
         *) echo "formal/run.sh: unknown argument '$1' (try --help)" >&2; exit 2 ;;
     esac
 done
@@ -75,6 +76,7 @@ port_width() {
 
 # One proof: NAME WRAPPER TOPMODULE DEPTH DEFINES...
 failed=0
+no_result=0
 prove() {
     local name="$1" wrapper="$2" wtop="$3" depth="$4"; shift 4
     local defs=("$@") dir="$work/$name"
@@ -94,10 +96,16 @@ prove() {
     secs=$(awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.1f", b - a }')
     if [ "$status" = 0 ] && grep -q "Status: PASSED" "$dir/smtbmc.log"; then
         echo "$name: PASSED, depth $depth cycles after reset, ${secs} s ($solver)"
-    else
+    elif grep -q "Status: FAILED" "$dir/smtbmc.log"; then
         echo "$name: FAILED at depth $depth (${secs} s); counterexample: $dir/trace.vcd"
         grep -E "Assert failed|failed" "$dir/smtbmc.log" | head -5 || true
         failed=1
+    else
+        # No verdict: the solver or yosys-smtbmc stopped (a crash, a
+        # timeout, a solver that cannot take this model).
+        echo "$name: NO RESULT at depth $depth (${secs} s): yosys-smtbmc ended without a verdict (exit status $status); see $dir/smtbmc.log"
+        tail -n 3 "$dir/smtbmc.log" | sed 's/^/    /'
+        no_result=1
     fi
 }
 
@@ -116,6 +124,10 @@ want() { [ -z "$only" ] || [ "$only" = "$1" ]; }
 echo "formal: $(tail -n 1 "$work/gen.log"), solver $solver"
 if [ "$wrong" = 1 ]; then
     fifo_proof join_queue_fifo_wrong "fcc_sort_net__join_queue__queue$suffix"
+    if [ "$no_result" = 1 ]; then
+        echo "formal: no verdict on the deliberately false property" >&2
+        exit 1
+    fi
     if [ "$failed" = 1 ]; then
         echo "formal: the deliberately false property has a counterexample, as it must"
         exit 0
@@ -143,4 +155,4 @@ if [ "$only" = top_axis ]; then
         -DM_DW="$(port_width "$top" m_axis_tdata)" -DM_KW="$(port_width "$top" m_axis_tkeep)" \
         -DAW="$(port_width "$top" s_axil_awaddr)" -DDW="$(port_width "$top" s_axil_wdata)"
 fi
-exit "$failed"
+[ "$failed" = 0 ] && [ "$no_result" = 0 ]
