@@ -14556,9 +14556,6 @@ module fcc_sort_net_k7_668cf05b(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit
     reg  join_queue$jtake;
     wire  join_queue$empty;
     wire  [23:0] join_queue$joins;
-    reg  filter_rst$clock;
-    reg  filter_rst$d;
-    wire  filter_rst$q;
     reg  centre_buf_rst$clock;
     reg  centre_buf_rst$d;
     wire  centre_buf_rst$q;
@@ -14826,11 +14823,6 @@ module fcc_sort_net_k7_668cf05b(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit
         .empty(join_queue$empty),
         .joins(join_queue$joins)
     );
-    fcc_sort_net__filter_rst_k7_668cf05b filter_rst(
-        .clock(filter_rst$clock),
-        .d(filter_rst$d),
-        .q(filter_rst$q)
-    );
     fcc_sort_net__centre_buf_rst_k7_668cf05b centre_buf_rst(
         .clock(centre_buf_rst$clock),
         .d(centre_buf_rst$d),
@@ -14849,16 +14841,14 @@ module fcc_sort_net_k7_668cf05b(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit
 
     // Update code
     always @(*) begin
-        filter_rst$clock = clk;
         centre_buf_rst$clock = clk;
         serializer_rst$clock = clk;
         join_queue_rst$clock = clk;
-        filter_rst$d = rst;
         centre_buf_rst$d = rst;
         serializer_rst$d = rst;
         join_queue_rst$d = rst;
         filter$clk = clk;
-        filter$rst = filter_rst$q;
+        filter$rst = rst;
         centre_buf$clk = clk;
         centre_buf$rst = centre_buf_rst$q;
         serializer$clk = clk;
@@ -16156,7 +16146,8 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
     output reg  credit_drop;
 
     // Constant declarations
-    localparam  ctr_zero = 65'h0;
+    localparam  ctr_zero = 33'h0;
+    localparam  ring_zero = 32'h0;
     localparam  zero16 = 16'h0;
 
     // Stub signals
@@ -16166,30 +16157,54 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
     reg  last_label_valid$d;
     wire  last_label_valid$q;
     reg  last_label_valid$clock;
-    reg  [64:0] ctr_s1$d;
-    wire  [64:0] ctr_s1$q;
+    reg  [32:0] ctr_s1$d;
+    wire  [32:0] ctr_s1$q;
     reg  ctr_s1$clock;
-    reg  [64:0] ctr_tree$0$d;
-    wire  [64:0] ctr_tree$0$q;
+    reg  [32:0] ctr_tree$0$d;
+    wire  [32:0] ctr_tree$0$q;
     reg  ctr_tree$0$clock;
-    reg  [64:0] ctr_tree$1$d;
-    wire  [64:0] ctr_tree$1$q;
+    reg  [32:0] ctr_tree$1$d;
+    wire  [32:0] ctr_tree$1$q;
     reg  ctr_tree$1$clock;
-    reg  [64:0] ctr_tree$2$d;
-    wire  [64:0] ctr_tree$2$q;
+    reg  [32:0] ctr_tree$2$d;
+    wire  [32:0] ctr_tree$2$q;
     reg  ctr_tree$2$clock;
-    reg  [64:0] ctr_tree$3$d;
-    wire  [64:0] ctr_tree$3$q;
+    reg  [32:0] ctr_tree$3$d;
+    wire  [32:0] ctr_tree$3$q;
     reg  ctr_tree$3$clock;
-    reg  [64:0] ctr_sm$d;
-    wire  [64:0] ctr_sm$q;
+    reg  [32:0] ctr_sm$d;
+    wire  [32:0] ctr_sm$q;
     reg  ctr_sm$clock;
-    reg  [64:0] ctr_sm1$d;
-    wire  [64:0] ctr_sm1$q;
+    reg  [32:0] ctr_sm1$d;
+    wire  [32:0] ctr_sm1$q;
     reg  ctr_sm1$clock;
-    reg  [64:0] ctr_sm2$d;
-    wire  [64:0] ctr_sm2$q;
+    reg  [32:0] ctr_sm2$d;
+    wire  [32:0] ctr_sm2$q;
     reg  ctr_sm2$clock;
+    reg  [31:0] ring_s1$d;
+    wire  [31:0] ring_s1$q;
+    reg  ring_s1$clock;
+    reg  [31:0] ring_tree$0$d;
+    wire  [31:0] ring_tree$0$q;
+    reg  ring_tree$0$clock;
+    reg  [31:0] ring_tree$1$d;
+    wire  [31:0] ring_tree$1$q;
+    reg  ring_tree$1$clock;
+    reg  [31:0] ring_tree$2$d;
+    wire  [31:0] ring_tree$2$q;
+    reg  ring_tree$2$clock;
+    reg  [31:0] ring_tree$3$d;
+    wire  [31:0] ring_tree$3$q;
+    reg  ring_tree$3$clock;
+    reg  [31:0] ring_sm$d;
+    wire  [31:0] ring_sm$q;
+    reg  ring_sm$clock;
+    reg  [31:0] ring_sm1$d;
+    wire  [31:0] ring_sm1$q;
+    reg  ring_sm1$clock;
+    reg  [31:0] ring_sm2$d;
+    wire  [31:0] ring_sm2$q;
+    reg  ring_sm2$clock;
     reg  match_delay$clk;
     reg  match_delay$rst;
     reg  match_delay$hit$0;
@@ -16404,6 +16419,27 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
     reg  [15:0] min_tree$value$19;
     reg  [15:0] min_tree$value$20;
     wire  [15:0] min_tree$min;
+    wire  min_tree$first$0;
+    wire  min_tree$first$1;
+    wire  min_tree$first$2;
+    wire  min_tree$first$3;
+    wire  min_tree$first$4;
+    wire  min_tree$first$5;
+    wire  min_tree$first$6;
+    wire  min_tree$first$7;
+    wire  min_tree$first$8;
+    wire  min_tree$first$9;
+    wire  min_tree$first$10;
+    wire  min_tree$first$11;
+    wire  min_tree$first$12;
+    wire  min_tree$first$13;
+    wire  min_tree$first$14;
+    wire  min_tree$first$15;
+    wire  min_tree$first$16;
+    wire  min_tree$first$17;
+    wire  min_tree$first$18;
+    wire  min_tree$first$19;
+    wire  min_tree$first$20;
     reg  known_mask$clk;
     reg  known_mask$valid;
     reg  known_mask$elig;
@@ -16468,69 +16504,69 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
     reg  [15:0] rep_write_value$d;
     wire  [15:0] rep_write_value$q;
     reg  rep_write_value$clock;
-    reg  is_min$0$d;
-    wire  is_min$0$q;
-    reg  is_min$0$clock;
-    reg  is_min$1$d;
-    wire  is_min$1$q;
-    reg  is_min$1$clock;
-    reg  is_min$2$d;
-    wire  is_min$2$q;
-    reg  is_min$2$clock;
-    reg  is_min$3$d;
-    wire  is_min$3$q;
-    reg  is_min$3$clock;
-    reg  is_min$4$d;
-    wire  is_min$4$q;
-    reg  is_min$4$clock;
-    reg  is_min$5$d;
-    wire  is_min$5$q;
-    reg  is_min$5$clock;
-    reg  is_min$6$d;
-    wire  is_min$6$q;
-    reg  is_min$6$clock;
-    reg  is_min$7$d;
-    wire  is_min$7$q;
-    reg  is_min$7$clock;
-    reg  is_min$8$d;
-    wire  is_min$8$q;
-    reg  is_min$8$clock;
-    reg  is_min$9$d;
-    wire  is_min$9$q;
-    reg  is_min$9$clock;
-    reg  is_min$10$d;
-    wire  is_min$10$q;
-    reg  is_min$10$clock;
-    reg  is_min$11$d;
-    wire  is_min$11$q;
-    reg  is_min$11$clock;
-    reg  is_min$12$d;
-    wire  is_min$12$q;
-    reg  is_min$12$clock;
-    reg  is_min$13$d;
-    wire  is_min$13$q;
-    reg  is_min$13$clock;
-    reg  is_min$14$d;
-    wire  is_min$14$q;
-    reg  is_min$14$clock;
-    reg  is_min$15$d;
-    wire  is_min$15$q;
-    reg  is_min$15$clock;
-    reg  is_min$16$d;
-    wire  is_min$16$q;
-    reg  is_min$16$clock;
-    reg  is_min$17$d;
-    wire  is_min$17$q;
-    reg  is_min$17$clock;
-    reg  is_min$18$d;
-    wire  is_min$18$q;
-    reg  is_min$18$clock;
-    reg  is_min$19$d;
-    wire  is_min$19$q;
-    reg  is_min$19$clock;
-    reg  is_min$20$d;
-    wire  is_min$20$q;
-    reg  is_min$20$clock;
+    reg  later_min$0$d;
+    wire  later_min$0$q;
+    reg  later_min$0$clock;
+    reg  later_min$1$d;
+    wire  later_min$1$q;
+    reg  later_min$1$clock;
+    reg  later_min$2$d;
+    wire  later_min$2$q;
+    reg  later_min$2$clock;
+    reg  later_min$3$d;
+    wire  later_min$3$q;
+    reg  later_min$3$clock;
+    reg  later_min$4$d;
+    wire  later_min$4$q;
+    reg  later_min$4$clock;
+    reg  later_min$5$d;
+    wire  later_min$5$q;
+    reg  later_min$5$clock;
+    reg  later_min$6$d;
+    wire  later_min$6$q;
+    reg  later_min$6$clock;
+    reg  later_min$7$d;
+    wire  later_min$7$q;
+    reg  later_min$7$clock;
+    reg  later_min$8$d;
+    wire  later_min$8$q;
+    reg  later_min$8$clock;
+    reg  later_min$9$d;
+    wire  later_min$9$q;
+    reg  later_min$9$clock;
+    reg  later_min$10$d;
+    wire  later_min$10$q;
+    reg  later_min$10$clock;
+    reg  later_min$11$d;
+    wire  later_min$11$q;
+    reg  later_min$11$clock;
+    reg  later_min$12$d;
+    wire  later_min$12$q;
+    reg  later_min$12$clock;
+    reg  later_min$13$d;
+    wire  later_min$13$q;
+    reg  later_min$13$clock;
+    reg  later_min$14$d;
+    wire  later_min$14$q;
+    reg  later_min$14$clock;
+    reg  later_min$15$d;
+    wire  later_min$15$q;
+    reg  later_min$15$clock;
+    reg  later_min$16$d;
+    wire  later_min$16$q;
+    reg  later_min$16$clock;
+    reg  later_min$17$d;
+    wire  later_min$17$q;
+    reg  later_min$17$clock;
+    reg  later_min$18$d;
+    wire  later_min$18$q;
+    reg  later_min$18$clock;
+    reg  later_min$19$d;
+    wire  later_min$19$q;
+    reg  later_min$19$clock;
+    reg  later_min$20$d;
+    wire  later_min$20$q;
+    reg  later_min$20$clock;
     reg  is_run_rep$0$d;
     wire  is_run_rep$0$q;
     reg  is_run_rep$0$clock;
@@ -16594,48 +16630,6 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
     reg  is_run_rep$20$d;
     wire  is_run_rep$20$q;
     reg  is_run_rep$20$clock;
-    reg  min_earlier$x$0;
-    reg  min_earlier$x$1;
-    reg  min_earlier$x$2;
-    reg  min_earlier$x$3;
-    reg  min_earlier$x$4;
-    reg  min_earlier$x$5;
-    reg  min_earlier$x$6;
-    reg  min_earlier$x$7;
-    reg  min_earlier$x$8;
-    reg  min_earlier$x$9;
-    reg  min_earlier$x$10;
-    reg  min_earlier$x$11;
-    reg  min_earlier$x$12;
-    reg  min_earlier$x$13;
-    reg  min_earlier$x$14;
-    reg  min_earlier$x$15;
-    reg  min_earlier$x$16;
-    reg  min_earlier$x$17;
-    reg  min_earlier$x$18;
-    reg  min_earlier$x$19;
-    reg  min_earlier$x$20;
-    wire  min_earlier$pre$0;
-    wire  min_earlier$pre$1;
-    wire  min_earlier$pre$2;
-    wire  min_earlier$pre$3;
-    wire  min_earlier$pre$4;
-    wire  min_earlier$pre$5;
-    wire  min_earlier$pre$6;
-    wire  min_earlier$pre$7;
-    wire  min_earlier$pre$8;
-    wire  min_earlier$pre$9;
-    wire  min_earlier$pre$10;
-    wire  min_earlier$pre$11;
-    wire  min_earlier$pre$12;
-    wire  min_earlier$pre$13;
-    wire  min_earlier$pre$14;
-    wire  min_earlier$pre$15;
-    wire  min_earlier$pre$16;
-    wire  min_earlier$pre$17;
-    wire  min_earlier$pre$18;
-    wire  min_earlier$pre$19;
-    wire  min_earlier$pre$20;
     reg  keep$0$d;
     wire  keep$0$q;
     reg  keep$0$clock;
@@ -16793,9 +16787,37 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
     reg  [49:0] rec_q$d;
     wire  [49:0] rec_q$q;
     reg  rec_q$clock;
+    reg  valid_rst$clock;
+    reg  valid_rst$d;
+    wire  valid_rst$q;
+    reg  tree_rst$0$clock;
+    reg  tree_rst$0$d;
+    wire  tree_rst$0$q;
+    reg  tree_rst$1$clock;
+    reg  tree_rst$1$d;
+    wire  tree_rst$1$q;
+    reg  tree_rst$2$clock;
+    reg  tree_rst$2$d;
+    wire  tree_rst$2$q;
+    reg  tree_rst$3$clock;
+    reg  tree_rst$3$d;
+    wire  tree_rst$3$q;
+    reg  tree_rst$4$clock;
+    reg  tree_rst$4$d;
+    wire  tree_rst$4$q;
+    reg  tree_rst$5$clock;
+    reg  tree_rst$5$d;
+    wire  tree_rst$5$q;
+    reg  tree_rst$6$clock;
+    reg  tree_rst$6$d;
+    wire  tree_rst$6$q;
+    reg  tree_rst$7$clock;
+    reg  tree_rst$7$d;
+    wire  tree_rst$7$q;
 
     // Local signals
-    reg  [64:0] ctr_s0;
+    reg  [32:0] ctr_s0;
+    reg  [31:0] ring_s0;
     reg  [15:0] run_rep_before;
     reg  [15:0] run_rep_after;
     reg  need_rec;
@@ -16850,6 +16872,46 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
         .d(ctr_sm2$d),
         .q(ctr_sm2$q),
         .clock(ctr_sm2$clock)
+    );
+    fcc_sort_net__filter__ring_s1_k7_668cf05b ring_s1(
+        .d(ring_s1$d),
+        .q(ring_s1$q),
+        .clock(ring_s1$clock)
+    );
+    fcc_sort_net__filter__ring_tree__0_k7_668cf05b ring_tree$0(
+        .d(ring_tree$0$d),
+        .q(ring_tree$0$q),
+        .clock(ring_tree$0$clock)
+    );
+    fcc_sort_net__filter__ring_tree__1_k7_668cf05b ring_tree$1(
+        .d(ring_tree$1$d),
+        .q(ring_tree$1$q),
+        .clock(ring_tree$1$clock)
+    );
+    fcc_sort_net__filter__ring_tree__2_k7_668cf05b ring_tree$2(
+        .d(ring_tree$2$d),
+        .q(ring_tree$2$q),
+        .clock(ring_tree$2$clock)
+    );
+    fcc_sort_net__filter__ring_tree__3_k7_668cf05b ring_tree$3(
+        .d(ring_tree$3$d),
+        .q(ring_tree$3$q),
+        .clock(ring_tree$3$clock)
+    );
+    fcc_sort_net__filter__ring_sm_k7_668cf05b ring_sm(
+        .d(ring_sm$d),
+        .q(ring_sm$q),
+        .clock(ring_sm$clock)
+    );
+    fcc_sort_net__filter__ring_sm1_k7_668cf05b ring_sm1(
+        .d(ring_sm1$d),
+        .q(ring_sm1$q),
+        .clock(ring_sm1$clock)
+    );
+    fcc_sort_net__filter__ring_sm2_k7_668cf05b ring_sm2(
+        .d(ring_sm2$d),
+        .q(ring_sm2$q),
+        .clock(ring_sm2$clock)
     );
     fcc_sort_net__filter__match_delay_k7_668cf05b match_delay(
         .clk(match_delay$clk),
@@ -17067,7 +17129,28 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
         .value$18(min_tree$value$18),
         .value$19(min_tree$value$19),
         .value$20(min_tree$value$20),
-        .min(min_tree$min)
+        .min(min_tree$min),
+        .first$0(min_tree$first$0),
+        .first$1(min_tree$first$1),
+        .first$2(min_tree$first$2),
+        .first$3(min_tree$first$3),
+        .first$4(min_tree$first$4),
+        .first$5(min_tree$first$5),
+        .first$6(min_tree$first$6),
+        .first$7(min_tree$first$7),
+        .first$8(min_tree$first$8),
+        .first$9(min_tree$first$9),
+        .first$10(min_tree$first$10),
+        .first$11(min_tree$first$11),
+        .first$12(min_tree$first$12),
+        .first$13(min_tree$first$13),
+        .first$14(min_tree$first$14),
+        .first$15(min_tree$first$15),
+        .first$16(min_tree$first$16),
+        .first$17(min_tree$first$17),
+        .first$18(min_tree$first$18),
+        .first$19(min_tree$first$19),
+        .first$20(min_tree$first$20)
     );
     fcc_sort_net__filter__known_mask_k7_668cf05b known_mask(
         .clk(known_mask$clk),
@@ -17147,110 +17230,110 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
         .q(rep_write_value$q),
         .clock(rep_write_value$clock)
     );
-    fcc_sort_net__filter__is_min__0_k7_668cf05b is_min$0(
-        .d(is_min$0$d),
-        .q(is_min$0$q),
-        .clock(is_min$0$clock)
+    fcc_sort_net__filter__later_min__0_k7_668cf05b later_min$0(
+        .d(later_min$0$d),
+        .q(later_min$0$q),
+        .clock(later_min$0$clock)
     );
-    fcc_sort_net__filter__is_min__1_k7_668cf05b is_min$1(
-        .d(is_min$1$d),
-        .q(is_min$1$q),
-        .clock(is_min$1$clock)
+    fcc_sort_net__filter__later_min__1_k7_668cf05b later_min$1(
+        .d(later_min$1$d),
+        .q(later_min$1$q),
+        .clock(later_min$1$clock)
     );
-    fcc_sort_net__filter__is_min__2_k7_668cf05b is_min$2(
-        .d(is_min$2$d),
-        .q(is_min$2$q),
-        .clock(is_min$2$clock)
+    fcc_sort_net__filter__later_min__2_k7_668cf05b later_min$2(
+        .d(later_min$2$d),
+        .q(later_min$2$q),
+        .clock(later_min$2$clock)
     );
-    fcc_sort_net__filter__is_min__3_k7_668cf05b is_min$3(
-        .d(is_min$3$d),
-        .q(is_min$3$q),
-        .clock(is_min$3$clock)
+    fcc_sort_net__filter__later_min__3_k7_668cf05b later_min$3(
+        .d(later_min$3$d),
+        .q(later_min$3$q),
+        .clock(later_min$3$clock)
     );
-    fcc_sort_net__filter__is_min__4_k7_668cf05b is_min$4(
-        .d(is_min$4$d),
-        .q(is_min$4$q),
-        .clock(is_min$4$clock)
+    fcc_sort_net__filter__later_min__4_k7_668cf05b later_min$4(
+        .d(later_min$4$d),
+        .q(later_min$4$q),
+        .clock(later_min$4$clock)
     );
-    fcc_sort_net__filter__is_min__5_k7_668cf05b is_min$5(
-        .d(is_min$5$d),
-        .q(is_min$5$q),
-        .clock(is_min$5$clock)
+    fcc_sort_net__filter__later_min__5_k7_668cf05b later_min$5(
+        .d(later_min$5$d),
+        .q(later_min$5$q),
+        .clock(later_min$5$clock)
     );
-    fcc_sort_net__filter__is_min__6_k7_668cf05b is_min$6(
-        .d(is_min$6$d),
-        .q(is_min$6$q),
-        .clock(is_min$6$clock)
+    fcc_sort_net__filter__later_min__6_k7_668cf05b later_min$6(
+        .d(later_min$6$d),
+        .q(later_min$6$q),
+        .clock(later_min$6$clock)
     );
-    fcc_sort_net__filter__is_min__7_k7_668cf05b is_min$7(
-        .d(is_min$7$d),
-        .q(is_min$7$q),
-        .clock(is_min$7$clock)
+    fcc_sort_net__filter__later_min__7_k7_668cf05b later_min$7(
+        .d(later_min$7$d),
+        .q(later_min$7$q),
+        .clock(later_min$7$clock)
     );
-    fcc_sort_net__filter__is_min__8_k7_668cf05b is_min$8(
-        .d(is_min$8$d),
-        .q(is_min$8$q),
-        .clock(is_min$8$clock)
+    fcc_sort_net__filter__later_min__8_k7_668cf05b later_min$8(
+        .d(later_min$8$d),
+        .q(later_min$8$q),
+        .clock(later_min$8$clock)
     );
-    fcc_sort_net__filter__is_min__9_k7_668cf05b is_min$9(
-        .d(is_min$9$d),
-        .q(is_min$9$q),
-        .clock(is_min$9$clock)
+    fcc_sort_net__filter__later_min__9_k7_668cf05b later_min$9(
+        .d(later_min$9$d),
+        .q(later_min$9$q),
+        .clock(later_min$9$clock)
     );
-    fcc_sort_net__filter__is_min__10_k7_668cf05b is_min$10(
-        .d(is_min$10$d),
-        .q(is_min$10$q),
-        .clock(is_min$10$clock)
+    fcc_sort_net__filter__later_min__10_k7_668cf05b later_min$10(
+        .d(later_min$10$d),
+        .q(later_min$10$q),
+        .clock(later_min$10$clock)
     );
-    fcc_sort_net__filter__is_min__11_k7_668cf05b is_min$11(
-        .d(is_min$11$d),
-        .q(is_min$11$q),
-        .clock(is_min$11$clock)
+    fcc_sort_net__filter__later_min__11_k7_668cf05b later_min$11(
+        .d(later_min$11$d),
+        .q(later_min$11$q),
+        .clock(later_min$11$clock)
     );
-    fcc_sort_net__filter__is_min__12_k7_668cf05b is_min$12(
-        .d(is_min$12$d),
-        .q(is_min$12$q),
-        .clock(is_min$12$clock)
+    fcc_sort_net__filter__later_min__12_k7_668cf05b later_min$12(
+        .d(later_min$12$d),
+        .q(later_min$12$q),
+        .clock(later_min$12$clock)
     );
-    fcc_sort_net__filter__is_min__13_k7_668cf05b is_min$13(
-        .d(is_min$13$d),
-        .q(is_min$13$q),
-        .clock(is_min$13$clock)
+    fcc_sort_net__filter__later_min__13_k7_668cf05b later_min$13(
+        .d(later_min$13$d),
+        .q(later_min$13$q),
+        .clock(later_min$13$clock)
     );
-    fcc_sort_net__filter__is_min__14_k7_668cf05b is_min$14(
-        .d(is_min$14$d),
-        .q(is_min$14$q),
-        .clock(is_min$14$clock)
+    fcc_sort_net__filter__later_min__14_k7_668cf05b later_min$14(
+        .d(later_min$14$d),
+        .q(later_min$14$q),
+        .clock(later_min$14$clock)
     );
-    fcc_sort_net__filter__is_min__15_k7_668cf05b is_min$15(
-        .d(is_min$15$d),
-        .q(is_min$15$q),
-        .clock(is_min$15$clock)
+    fcc_sort_net__filter__later_min__15_k7_668cf05b later_min$15(
+        .d(later_min$15$d),
+        .q(later_min$15$q),
+        .clock(later_min$15$clock)
     );
-    fcc_sort_net__filter__is_min__16_k7_668cf05b is_min$16(
-        .d(is_min$16$d),
-        .q(is_min$16$q),
-        .clock(is_min$16$clock)
+    fcc_sort_net__filter__later_min__16_k7_668cf05b later_min$16(
+        .d(later_min$16$d),
+        .q(later_min$16$q),
+        .clock(later_min$16$clock)
     );
-    fcc_sort_net__filter__is_min__17_k7_668cf05b is_min$17(
-        .d(is_min$17$d),
-        .q(is_min$17$q),
-        .clock(is_min$17$clock)
+    fcc_sort_net__filter__later_min__17_k7_668cf05b later_min$17(
+        .d(later_min$17$d),
+        .q(later_min$17$q),
+        .clock(later_min$17$clock)
     );
-    fcc_sort_net__filter__is_min__18_k7_668cf05b is_min$18(
-        .d(is_min$18$d),
-        .q(is_min$18$q),
-        .clock(is_min$18$clock)
+    fcc_sort_net__filter__later_min__18_k7_668cf05b later_min$18(
+        .d(later_min$18$d),
+        .q(later_min$18$q),
+        .clock(later_min$18$clock)
     );
-    fcc_sort_net__filter__is_min__19_k7_668cf05b is_min$19(
-        .d(is_min$19$d),
-        .q(is_min$19$q),
-        .clock(is_min$19$clock)
+    fcc_sort_net__filter__later_min__19_k7_668cf05b later_min$19(
+        .d(later_min$19$d),
+        .q(later_min$19$q),
+        .clock(later_min$19$clock)
     );
-    fcc_sort_net__filter__is_min__20_k7_668cf05b is_min$20(
-        .d(is_min$20$d),
-        .q(is_min$20$q),
-        .clock(is_min$20$clock)
+    fcc_sort_net__filter__later_min__20_k7_668cf05b later_min$20(
+        .d(later_min$20$d),
+        .q(later_min$20$q),
+        .clock(later_min$20$clock)
     );
     fcc_sort_net__filter__is_run_rep__0_k7_668cf05b is_run_rep$0(
         .d(is_run_rep$0$d),
@@ -17356,50 +17439,6 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
         .d(is_run_rep$20$d),
         .q(is_run_rep$20$q),
         .clock(is_run_rep$20$clock)
-    );
-    fcc_sort_net__filter__min_earlier_k7_668cf05b min_earlier(
-        .x$0(min_earlier$x$0),
-        .x$1(min_earlier$x$1),
-        .x$2(min_earlier$x$2),
-        .x$3(min_earlier$x$3),
-        .x$4(min_earlier$x$4),
-        .x$5(min_earlier$x$5),
-        .x$6(min_earlier$x$6),
-        .x$7(min_earlier$x$7),
-        .x$8(min_earlier$x$8),
-        .x$9(min_earlier$x$9),
-        .x$10(min_earlier$x$10),
-        .x$11(min_earlier$x$11),
-        .x$12(min_earlier$x$12),
-        .x$13(min_earlier$x$13),
-        .x$14(min_earlier$x$14),
-        .x$15(min_earlier$x$15),
-        .x$16(min_earlier$x$16),
-        .x$17(min_earlier$x$17),
-        .x$18(min_earlier$x$18),
-        .x$19(min_earlier$x$19),
-        .x$20(min_earlier$x$20),
-        .pre$0(min_earlier$pre$0),
-        .pre$1(min_earlier$pre$1),
-        .pre$2(min_earlier$pre$2),
-        .pre$3(min_earlier$pre$3),
-        .pre$4(min_earlier$pre$4),
-        .pre$5(min_earlier$pre$5),
-        .pre$6(min_earlier$pre$6),
-        .pre$7(min_earlier$pre$7),
-        .pre$8(min_earlier$pre$8),
-        .pre$9(min_earlier$pre$9),
-        .pre$10(min_earlier$pre$10),
-        .pre$11(min_earlier$pre$11),
-        .pre$12(min_earlier$pre$12),
-        .pre$13(min_earlier$pre$13),
-        .pre$14(min_earlier$pre$14),
-        .pre$15(min_earlier$pre$15),
-        .pre$16(min_earlier$pre$16),
-        .pre$17(min_earlier$pre$17),
-        .pre$18(min_earlier$pre$18),
-        .pre$19(min_earlier$pre$19),
-        .pre$20(min_earlier$pre$20)
     );
     fcc_sort_net__filter__keep__0_k7_668cf05b keep$0(
         .d(keep$0$d),
@@ -17650,6 +17689,51 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
         .q(rec_q$q),
         .clock(rec_q$clock)
     );
+    fcc_sort_net__filter__valid_rst_k7_668cf05b valid_rst(
+        .clock(valid_rst$clock),
+        .d(valid_rst$d),
+        .q(valid_rst$q)
+    );
+    fcc_sort_net__filter__tree_rst__0_k7_668cf05b tree_rst$0(
+        .clock(tree_rst$0$clock),
+        .d(tree_rst$0$d),
+        .q(tree_rst$0$q)
+    );
+    fcc_sort_net__filter__tree_rst__1_k7_668cf05b tree_rst$1(
+        .clock(tree_rst$1$clock),
+        .d(tree_rst$1$d),
+        .q(tree_rst$1$q)
+    );
+    fcc_sort_net__filter__tree_rst__2_k7_668cf05b tree_rst$2(
+        .clock(tree_rst$2$clock),
+        .d(tree_rst$2$d),
+        .q(tree_rst$2$q)
+    );
+    fcc_sort_net__filter__tree_rst__3_k7_668cf05b tree_rst$3(
+        .clock(tree_rst$3$clock),
+        .d(tree_rst$3$d),
+        .q(tree_rst$3$q)
+    );
+    fcc_sort_net__filter__tree_rst__4_k7_668cf05b tree_rst$4(
+        .clock(tree_rst$4$clock),
+        .d(tree_rst$4$d),
+        .q(tree_rst$4$q)
+    );
+    fcc_sort_net__filter__tree_rst__5_k7_668cf05b tree_rst$5(
+        .clock(tree_rst$5$clock),
+        .d(tree_rst$5$d),
+        .q(tree_rst$5$q)
+    );
+    fcc_sort_net__filter__tree_rst__6_k7_668cf05b tree_rst$6(
+        .clock(tree_rst$6$clock),
+        .d(tree_rst$6$d),
+        .q(tree_rst$6$q)
+    );
+    fcc_sort_net__filter__tree_rst__7_k7_668cf05b tree_rst$7(
+        .clock(tree_rst$7$clock),
+        .d(tree_rst$7$d),
+        .q(tree_rst$7$q)
+    );
 
     // Update code
     always @(*) begin
@@ -17659,6 +17743,10 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
         ctr_sm$clock = clk;
         ctr_sm1$clock = clk;
         ctr_sm2$clock = clk;
+        ring_s1$clock = clk;
+        ring_sm$clock = clk;
+        ring_sm1$clock = clk;
+        ring_sm2$clock = clk;
         run_rep$clock = clk;
         run_rep_sm1$clock = clk;
         run_rep_sm2$clock = clk;
@@ -17674,6 +17762,10 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
         ctr_sm$d = ctr_sm$q;
         ctr_sm1$d = ctr_sm1$q;
         ctr_sm2$d = ctr_sm2$q;
+        ring_s1$d = ring_s1$q;
+        ring_sm$d = ring_sm$q;
+        ring_sm1$d = ring_sm1$q;
+        ring_sm2$d = ring_sm2$q;
         run_rep$d = run_rep$q;
         run_rep_sm1$d = run_rep_sm1$q;
         run_rep_sm2$d = run_rep_sm2$q;
@@ -17684,90 +17776,112 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
         credit_drop_q$d = credit_drop_q$q;
         rec_q$d = rec_q$q;
         ctr_tree$0$clock = clk;
+        ring_tree$0$clock = clk;
         ctr_tree$1$clock = clk;
+        ring_tree$1$clock = clk;
         ctr_tree$2$clock = clk;
+        ring_tree$2$clock = clk;
         ctr_tree$3$clock = clk;
-        is_min$0$clock = clk;
+        ring_tree$3$clock = clk;
+        valid_rst$clock = clk;
+        valid_rst$d = rst;
+        tree_rst$0$clock = clk;
+        tree_rst$0$d = rst;
+        tree_rst$1$clock = clk;
+        tree_rst$1$d = rst;
+        tree_rst$2$clock = clk;
+        tree_rst$2$d = rst;
+        tree_rst$3$clock = clk;
+        tree_rst$3$d = rst;
+        tree_rst$4$clock = clk;
+        tree_rst$4$d = rst;
+        tree_rst$5$clock = clk;
+        tree_rst$5$d = rst;
+        tree_rst$6$clock = clk;
+        tree_rst$6$d = rst;
+        tree_rst$7$clock = clk;
+        tree_rst$7$d = rst;
+        later_min$0$clock = clk;
         is_run_rep$0$clock = clk;
         keep$0$clock = clk;
         keep_sm3$0$clock = clk;
-        is_min$1$clock = clk;
+        later_min$1$clock = clk;
         is_run_rep$1$clock = clk;
         keep$1$clock = clk;
         keep_sm3$1$clock = clk;
-        is_min$2$clock = clk;
+        later_min$2$clock = clk;
         is_run_rep$2$clock = clk;
         keep$2$clock = clk;
         keep_sm3$2$clock = clk;
-        is_min$3$clock = clk;
+        later_min$3$clock = clk;
         is_run_rep$3$clock = clk;
         keep$3$clock = clk;
         keep_sm3$3$clock = clk;
-        is_min$4$clock = clk;
+        later_min$4$clock = clk;
         is_run_rep$4$clock = clk;
         keep$4$clock = clk;
         keep_sm3$4$clock = clk;
-        is_min$5$clock = clk;
+        later_min$5$clock = clk;
         is_run_rep$5$clock = clk;
         keep$5$clock = clk;
         keep_sm3$5$clock = clk;
-        is_min$6$clock = clk;
+        later_min$6$clock = clk;
         is_run_rep$6$clock = clk;
         keep$6$clock = clk;
         keep_sm3$6$clock = clk;
-        is_min$7$clock = clk;
+        later_min$7$clock = clk;
         is_run_rep$7$clock = clk;
         keep$7$clock = clk;
         keep_sm3$7$clock = clk;
-        is_min$8$clock = clk;
+        later_min$8$clock = clk;
         is_run_rep$8$clock = clk;
         keep$8$clock = clk;
         keep_sm3$8$clock = clk;
-        is_min$9$clock = clk;
+        later_min$9$clock = clk;
         is_run_rep$9$clock = clk;
         keep$9$clock = clk;
         keep_sm3$9$clock = clk;
-        is_min$10$clock = clk;
+        later_min$10$clock = clk;
         is_run_rep$10$clock = clk;
         keep$10$clock = clk;
         keep_sm3$10$clock = clk;
-        is_min$11$clock = clk;
+        later_min$11$clock = clk;
         is_run_rep$11$clock = clk;
         keep$11$clock = clk;
         keep_sm3$11$clock = clk;
-        is_min$12$clock = clk;
+        later_min$12$clock = clk;
         is_run_rep$12$clock = clk;
         keep$12$clock = clk;
         keep_sm3$12$clock = clk;
-        is_min$13$clock = clk;
+        later_min$13$clock = clk;
         is_run_rep$13$clock = clk;
         keep$13$clock = clk;
         keep_sm3$13$clock = clk;
-        is_min$14$clock = clk;
+        later_min$14$clock = clk;
         is_run_rep$14$clock = clk;
         keep$14$clock = clk;
         keep_sm3$14$clock = clk;
-        is_min$15$clock = clk;
+        later_min$15$clock = clk;
         is_run_rep$15$clock = clk;
         keep$15$clock = clk;
         keep_sm3$15$clock = clk;
-        is_min$16$clock = clk;
+        later_min$16$clock = clk;
         is_run_rep$16$clock = clk;
         keep$16$clock = clk;
         keep_sm3$16$clock = clk;
-        is_min$17$clock = clk;
+        later_min$17$clock = clk;
         is_run_rep$17$clock = clk;
         keep$17$clock = clk;
         keep_sm3$17$clock = clk;
-        is_min$18$clock = clk;
+        later_min$18$clock = clk;
         is_run_rep$18$clock = clk;
         keep$18$clock = clk;
         keep_sm3$18$clock = clk;
-        is_min$19$clock = clk;
+        later_min$19$clock = clk;
         is_run_rep$19$clock = clk;
         keep$19$clock = clk;
         keep_sm3$19$clock = clk;
-        is_min$20$clock = clk;
+        later_min$20$clock = clk;
         is_run_rep$20$clock = clk;
         keep$20$clock = clk;
         keep_sm3$20$clock = clk;
@@ -17782,8 +17896,8 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
         ctr_s0[30:19] = centre[29:18];
         ctr_s0[31:31] = centre[30:30];
         ctr_s0[32:32] = centre[31:31];
-        ctr_s0[48:33] = centre[47:32];
-        ctr_s0[64:49] = centre[63:48];
+        ring_s0[15:0] = centre[47:32];
+        ring_s0[31:16] = centre[63:48];
         if (centre[0:0] & centre[1:1]) begin
             last_label$d = centre[17:2];
             last_label_valid$d = 1'b1;
@@ -17799,6 +17913,14 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
         ctr_sm$d = ctr_tree$3$q;
         ctr_sm1$d = ctr_sm$q;
         ctr_sm2$d = ctr_sm1$q;
+        ring_s1$d = ring_s0;
+        ring_tree$0$d = ring_s1$q;
+        ring_tree$1$d = ring_tree$0$q;
+        ring_tree$2$d = ring_tree$1$q;
+        ring_tree$3$d = ring_tree$2$q;
+        ring_sm$d = ring_tree$3$q;
+        ring_sm1$d = ring_sm$q;
+        ring_sm2$d = ring_sm1$q;
         min_tree$hit$0 = hit$0;
         min_tree$value$0 = rep$0;
         match_delay$hit$0 = hit$0;
@@ -17925,93 +18047,72 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
         if (ctr_sm$q[1:1]) begin
             rep_write_value$d = run_rep_after;
         end
-        is_min$0$d = match_delay$hit_sm$0 & (match_delay$rep_sm$0 == min_tree$min);
+        later_min$0$d = match_delay$hit_sm$0 & (match_delay$rep_sm$0 == min_tree$min) & ~min_tree$first$0;
         is_run_rep$0$d = match_delay$rep_sm$0 == run_rep_before;
-        is_min$1$d = match_delay$hit_sm$1 & (match_delay$rep_sm$1 == min_tree$min);
+        later_min$1$d = match_delay$hit_sm$1 & (match_delay$rep_sm$1 == min_tree$min) & ~min_tree$first$1;
         is_run_rep$1$d = match_delay$rep_sm$1 == run_rep_before;
-        is_min$2$d = match_delay$hit_sm$2 & (match_delay$rep_sm$2 == min_tree$min);
+        later_min$2$d = match_delay$hit_sm$2 & (match_delay$rep_sm$2 == min_tree$min) & ~min_tree$first$2;
         is_run_rep$2$d = match_delay$rep_sm$2 == run_rep_before;
-        is_min$3$d = match_delay$hit_sm$3 & (match_delay$rep_sm$3 == min_tree$min);
+        later_min$3$d = match_delay$hit_sm$3 & (match_delay$rep_sm$3 == min_tree$min) & ~min_tree$first$3;
         is_run_rep$3$d = match_delay$rep_sm$3 == run_rep_before;
-        is_min$4$d = match_delay$hit_sm$4 & (match_delay$rep_sm$4 == min_tree$min);
+        later_min$4$d = match_delay$hit_sm$4 & (match_delay$rep_sm$4 == min_tree$min) & ~min_tree$first$4;
         is_run_rep$4$d = match_delay$rep_sm$4 == run_rep_before;
-        is_min$5$d = match_delay$hit_sm$5 & (match_delay$rep_sm$5 == min_tree$min);
+        later_min$5$d = match_delay$hit_sm$5 & (match_delay$rep_sm$5 == min_tree$min) & ~min_tree$first$5;
         is_run_rep$5$d = match_delay$rep_sm$5 == run_rep_before;
-        is_min$6$d = match_delay$hit_sm$6 & (match_delay$rep_sm$6 == min_tree$min);
+        later_min$6$d = match_delay$hit_sm$6 & (match_delay$rep_sm$6 == min_tree$min) & ~min_tree$first$6;
         is_run_rep$6$d = match_delay$rep_sm$6 == run_rep_before;
-        is_min$7$d = match_delay$hit_sm$7 & (match_delay$rep_sm$7 == min_tree$min);
+        later_min$7$d = match_delay$hit_sm$7 & (match_delay$rep_sm$7 == min_tree$min) & ~min_tree$first$7;
         is_run_rep$7$d = match_delay$rep_sm$7 == run_rep_before;
-        is_min$8$d = match_delay$hit_sm$8 & (match_delay$rep_sm$8 == min_tree$min);
+        later_min$8$d = match_delay$hit_sm$8 & (match_delay$rep_sm$8 == min_tree$min) & ~min_tree$first$8;
         is_run_rep$8$d = match_delay$rep_sm$8 == run_rep_before;
-        is_min$9$d = match_delay$hit_sm$9 & (match_delay$rep_sm$9 == min_tree$min);
+        later_min$9$d = match_delay$hit_sm$9 & (match_delay$rep_sm$9 == min_tree$min) & ~min_tree$first$9;
         is_run_rep$9$d = match_delay$rep_sm$9 == run_rep_before;
-        is_min$10$d = match_delay$hit_sm$10 & (match_delay$rep_sm$10 == min_tree$min);
+        later_min$10$d = match_delay$hit_sm$10 & (match_delay$rep_sm$10 == min_tree$min) & ~min_tree$first$10;
         is_run_rep$10$d = match_delay$rep_sm$10 == run_rep_before;
-        is_min$11$d = match_delay$hit_sm$11 & (match_delay$rep_sm$11 == min_tree$min);
+        later_min$11$d = match_delay$hit_sm$11 & (match_delay$rep_sm$11 == min_tree$min) & ~min_tree$first$11;
         is_run_rep$11$d = match_delay$rep_sm$11 == run_rep_before;
-        is_min$12$d = match_delay$hit_sm$12 & (match_delay$rep_sm$12 == min_tree$min);
+        later_min$12$d = match_delay$hit_sm$12 & (match_delay$rep_sm$12 == min_tree$min) & ~min_tree$first$12;
         is_run_rep$12$d = match_delay$rep_sm$12 == run_rep_before;
-        is_min$13$d = match_delay$hit_sm$13 & (match_delay$rep_sm$13 == min_tree$min);
+        later_min$13$d = match_delay$hit_sm$13 & (match_delay$rep_sm$13 == min_tree$min) & ~min_tree$first$13;
         is_run_rep$13$d = match_delay$rep_sm$13 == run_rep_before;
-        is_min$14$d = match_delay$hit_sm$14 & (match_delay$rep_sm$14 == min_tree$min);
+        later_min$14$d = match_delay$hit_sm$14 & (match_delay$rep_sm$14 == min_tree$min) & ~min_tree$first$14;
         is_run_rep$14$d = match_delay$rep_sm$14 == run_rep_before;
-        is_min$15$d = match_delay$hit_sm$15 & (match_delay$rep_sm$15 == min_tree$min);
+        later_min$15$d = match_delay$hit_sm$15 & (match_delay$rep_sm$15 == min_tree$min) & ~min_tree$first$15;
         is_run_rep$15$d = match_delay$rep_sm$15 == run_rep_before;
-        is_min$16$d = match_delay$hit_sm$16 & (match_delay$rep_sm$16 == min_tree$min);
+        later_min$16$d = match_delay$hit_sm$16 & (match_delay$rep_sm$16 == min_tree$min) & ~min_tree$first$16;
         is_run_rep$16$d = match_delay$rep_sm$16 == run_rep_before;
-        is_min$17$d = match_delay$hit_sm$17 & (match_delay$rep_sm$17 == min_tree$min);
+        later_min$17$d = match_delay$hit_sm$17 & (match_delay$rep_sm$17 == min_tree$min) & ~min_tree$first$17;
         is_run_rep$17$d = match_delay$rep_sm$17 == run_rep_before;
-        is_min$18$d = match_delay$hit_sm$18 & (match_delay$rep_sm$18 == min_tree$min);
+        later_min$18$d = match_delay$hit_sm$18 & (match_delay$rep_sm$18 == min_tree$min) & ~min_tree$first$18;
         is_run_rep$18$d = match_delay$rep_sm$18 == run_rep_before;
-        is_min$19$d = match_delay$hit_sm$19 & (match_delay$rep_sm$19 == min_tree$min);
+        later_min$19$d = match_delay$hit_sm$19 & (match_delay$rep_sm$19 == min_tree$min) & ~min_tree$first$19;
         is_run_rep$19$d = match_delay$rep_sm$19 == run_rep_before;
-        is_min$20$d = match_delay$hit_sm$20 & (match_delay$rep_sm$20 == min_tree$min);
+        later_min$20$d = match_delay$hit_sm$20 & (match_delay$rep_sm$20 == min_tree$min) & ~min_tree$first$20;
         is_run_rep$20$d = match_delay$rep_sm$20 == run_rep_before;
         rep_we = rep_write_en$q;
         rep_waddr = rep_write_col$q;
         rep_wdata = rep_write_value$q;
-        min_earlier$x$0 = is_min$0$q;
-        keep$0$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$0 & ~match_delay$adj_sm1$0 & ~known_mask$known_late$0 & ~is_run_rep$0$q & ~(is_min$0$q & min_earlier$pre$0);
-        min_earlier$x$1 = is_min$1$q;
-        keep$1$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$1 & ~match_delay$adj_sm1$1 & ~known_mask$known_late$1 & ~is_run_rep$1$q & ~(is_min$1$q & min_earlier$pre$1);
-        min_earlier$x$2 = is_min$2$q;
-        keep$2$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$2 & ~match_delay$adj_sm1$2 & ~known_mask$known_late$2 & ~is_run_rep$2$q & ~(is_min$2$q & min_earlier$pre$2);
-        min_earlier$x$3 = is_min$3$q;
-        keep$3$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$3 & ~match_delay$adj_sm1$3 & ~known_mask$known_late$3 & ~is_run_rep$3$q & ~(is_min$3$q & min_earlier$pre$3);
-        min_earlier$x$4 = is_min$4$q;
-        keep$4$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$4 & ~match_delay$adj_sm1$4 & ~known_mask$known_late$4 & ~is_run_rep$4$q & ~(is_min$4$q & min_earlier$pre$4);
-        min_earlier$x$5 = is_min$5$q;
-        keep$5$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$5 & ~match_delay$adj_sm1$5 & ~known_mask$known_late$5 & ~is_run_rep$5$q & ~(is_min$5$q & min_earlier$pre$5);
-        min_earlier$x$6 = is_min$6$q;
-        keep$6$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$6 & ~match_delay$adj_sm1$6 & ~known_mask$known_late$6 & ~is_run_rep$6$q & ~(is_min$6$q & min_earlier$pre$6);
-        min_earlier$x$7 = is_min$7$q;
-        keep$7$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$7 & ~match_delay$adj_sm1$7 & ~known_mask$known_late$7 & ~is_run_rep$7$q & ~(is_min$7$q & min_earlier$pre$7);
-        min_earlier$x$8 = is_min$8$q;
-        keep$8$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$8 & ~match_delay$adj_sm1$8 & ~known_mask$known_late$8 & ~is_run_rep$8$q & ~(is_min$8$q & min_earlier$pre$8);
-        min_earlier$x$9 = is_min$9$q;
-        keep$9$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$9 & ~match_delay$adj_sm1$9 & ~known_mask$known_late$9 & ~is_run_rep$9$q & ~(is_min$9$q & min_earlier$pre$9);
-        min_earlier$x$10 = is_min$10$q;
-        keep$10$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$10 & ~match_delay$adj_sm1$10 & ~known_mask$known_late$10 & ~is_run_rep$10$q & ~(is_min$10$q & min_earlier$pre$10);
-        min_earlier$x$11 = is_min$11$q;
-        keep$11$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$11 & ~match_delay$adj_sm1$11 & ~known_mask$known_late$11 & ~is_run_rep$11$q & ~(is_min$11$q & min_earlier$pre$11);
-        min_earlier$x$12 = is_min$12$q;
-        keep$12$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$12 & ~match_delay$adj_sm1$12 & ~known_mask$known_late$12 & ~is_run_rep$12$q & ~(is_min$12$q & min_earlier$pre$12);
-        min_earlier$x$13 = is_min$13$q;
-        keep$13$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$13 & ~match_delay$adj_sm1$13 & ~known_mask$known_late$13 & ~is_run_rep$13$q & ~(is_min$13$q & min_earlier$pre$13);
-        min_earlier$x$14 = is_min$14$q;
-        keep$14$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$14 & ~match_delay$adj_sm1$14 & ~known_mask$known_late$14 & ~is_run_rep$14$q & ~(is_min$14$q & min_earlier$pre$14);
-        min_earlier$x$15 = is_min$15$q;
-        keep$15$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$15 & ~match_delay$adj_sm1$15 & ~known_mask$known_late$15 & ~is_run_rep$15$q & ~(is_min$15$q & min_earlier$pre$15);
-        min_earlier$x$16 = is_min$16$q;
-        keep$16$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$16 & ~match_delay$adj_sm1$16 & ~known_mask$known_late$16 & ~is_run_rep$16$q & ~(is_min$16$q & min_earlier$pre$16);
-        min_earlier$x$17 = is_min$17$q;
-        keep$17$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$17 & ~match_delay$adj_sm1$17 & ~known_mask$known_late$17 & ~is_run_rep$17$q & ~(is_min$17$q & min_earlier$pre$17);
-        min_earlier$x$18 = is_min$18$q;
-        keep$18$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$18 & ~match_delay$adj_sm1$18 & ~known_mask$known_late$18 & ~is_run_rep$18$q & ~(is_min$18$q & min_earlier$pre$18);
-        min_earlier$x$19 = is_min$19$q;
-        keep$19$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$19 & ~match_delay$adj_sm1$19 & ~known_mask$known_late$19 & ~is_run_rep$19$q & ~(is_min$19$q & min_earlier$pre$19);
-        min_earlier$x$20 = is_min$20$q;
-        keep$20$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$20 & ~match_delay$adj_sm1$20 & ~known_mask$known_late$20 & ~is_run_rep$20$q & ~(is_min$20$q & min_earlier$pre$20);
+        keep$0$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$0 & ~match_delay$adj_sm1$0 & ~known_mask$known_late$0 & ~is_run_rep$0$q & ~later_min$0$q;
+        keep$1$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$1 & ~match_delay$adj_sm1$1 & ~known_mask$known_late$1 & ~is_run_rep$1$q & ~later_min$1$q;
+        keep$2$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$2 & ~match_delay$adj_sm1$2 & ~known_mask$known_late$2 & ~is_run_rep$2$q & ~later_min$2$q;
+        keep$3$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$3 & ~match_delay$adj_sm1$3 & ~known_mask$known_late$3 & ~is_run_rep$3$q & ~later_min$3$q;
+        keep$4$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$4 & ~match_delay$adj_sm1$4 & ~known_mask$known_late$4 & ~is_run_rep$4$q & ~later_min$4$q;
+        keep$5$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$5 & ~match_delay$adj_sm1$5 & ~known_mask$known_late$5 & ~is_run_rep$5$q & ~later_min$5$q;
+        keep$6$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$6 & ~match_delay$adj_sm1$6 & ~known_mask$known_late$6 & ~is_run_rep$6$q & ~later_min$6$q;
+        keep$7$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$7 & ~match_delay$adj_sm1$7 & ~known_mask$known_late$7 & ~is_run_rep$7$q & ~later_min$7$q;
+        keep$8$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$8 & ~match_delay$adj_sm1$8 & ~known_mask$known_late$8 & ~is_run_rep$8$q & ~later_min$8$q;
+        keep$9$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$9 & ~match_delay$adj_sm1$9 & ~known_mask$known_late$9 & ~is_run_rep$9$q & ~later_min$9$q;
+        keep$10$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$10 & ~match_delay$adj_sm1$10 & ~known_mask$known_late$10 & ~is_run_rep$10$q & ~later_min$10$q;
+        keep$11$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$11 & ~match_delay$adj_sm1$11 & ~known_mask$known_late$11 & ~is_run_rep$11$q & ~later_min$11$q;
+        keep$12$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$12 & ~match_delay$adj_sm1$12 & ~known_mask$known_late$12 & ~is_run_rep$12$q & ~later_min$12$q;
+        keep$13$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$13 & ~match_delay$adj_sm1$13 & ~known_mask$known_late$13 & ~is_run_rep$13$q & ~later_min$13$q;
+        keep$14$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$14 & ~match_delay$adj_sm1$14 & ~known_mask$known_late$14 & ~is_run_rep$14$q & ~later_min$14$q;
+        keep$15$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$15 & ~match_delay$adj_sm1$15 & ~known_mask$known_late$15 & ~is_run_rep$15$q & ~later_min$15$q;
+        keep$16$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$16 & ~match_delay$adj_sm1$16 & ~known_mask$known_late$16 & ~is_run_rep$16$q & ~later_min$16$q;
+        keep$17$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$17 & ~match_delay$adj_sm1$17 & ~known_mask$known_late$17 & ~is_run_rep$17$q & ~later_min$17$q;
+        keep$18$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$18 & ~match_delay$adj_sm1$18 & ~known_mask$known_late$18 & ~is_run_rep$18$q & ~later_min$18$q;
+        keep$19$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$19 & ~match_delay$adj_sm1$19 & ~known_mask$known_late$19 & ~is_run_rep$19$q & ~later_min$19$q;
+        keep$20$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$20 & ~match_delay$adj_sm1$20 & ~known_mask$known_late$20 & ~is_run_rep$20$q & ~later_min$20$q;
         run_rep_sm2$d = run_rep_sm1$q;
         keep_any$x$0 = keep$0$q;
         keep_sm3$0$d = keep$0$q;
@@ -18059,8 +18160,8 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
         rec_push_q$d = ctr_sm2$q[0:0] & need_rec;
         credit_drop_q$d = ctr_sm2$q[0:0] & ~need_rec;
         rec_q$d[15:0] = run_rep_sm2$q;
-        rec_q$d[31:16] = ctr_sm2$q[48:33];
-        rec_q$d[47:32] = ctr_sm2$q[64:49];
+        rec_q$d[31:16] = ring_sm2$q[15:0];
+        rec_q$d[47:32] = ring_sm2$q[31:16];
         rec_q$d[48:48] = ctr_sm2$q[32:32];
         rec_q$d[49:49] = ctr_sm2$q[31:31];
         rec_push = rec_push_q$q;
@@ -18108,19 +18209,39 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
         rec_keep$19 = keep_sm3$19$q;
         rec_rep$20 = match_delay$rep_sm3$20;
         rec_keep$20 = keep_sm3$20$q;
-        if (rst) begin
+        if (valid_rst$q) begin
             last_label_valid$d = 1'b0;
             ctr_s1$d[0:0] = 1'b0;
-            ctr_tree$0$d = ctr_zero;
-            ctr_tree$1$d = ctr_zero;
-            ctr_tree$2$d = ctr_zero;
-            ctr_tree$3$d = ctr_zero;
             ctr_sm$d[0:0] = 1'b0;
             ctr_sm1$d[0:0] = 1'b0;
             ctr_sm2$d[0:0] = 1'b0;
             rec_push_q$d = 1'b0;
             credit_drop_q$d = 1'b0;
             rep_write_en$d = 1'b0;
+        end
+        if (tree_rst$0$q) begin
+            ctr_tree$0$d = ctr_zero;
+        end
+        if (tree_rst$1$q) begin
+            ring_tree$0$d = ring_zero;
+        end
+        if (tree_rst$2$q) begin
+            ctr_tree$1$d = ctr_zero;
+        end
+        if (tree_rst$3$q) begin
+            ring_tree$1$d = ring_zero;
+        end
+        if (tree_rst$4$q) begin
+            ctr_tree$2$d = ctr_zero;
+        end
+        if (tree_rst$5$q) begin
+            ring_tree$2$d = ring_zero;
+        end
+        if (tree_rst$6$q) begin
+            ctr_tree$3$d = ctr_zero;
+        end
+        if (tree_rst$7$q) begin
+            ring_tree$3$d = ring_zero;
         end
     end
 
@@ -18149,13 +18270,13 @@ endmodule // fcc_sort_net__filter__credit_drop_q_k7_668cf05b
 module fcc_sort_net__filter__ctr_s1_k7_668cf05b(d,q,clock);
 
     // Module arguments
-    input wire  [64:0] d;
-    output reg  [64:0] q;
+    input wire  [32:0] d;
+    output reg  [32:0] q;
     input wire  clock;
 
     // Update code (custom)
     initial begin
-       q = 65'h0;
+       q = 33'h0;
     end
 
     always @(posedge clock) begin
@@ -18168,13 +18289,13 @@ endmodule // fcc_sort_net__filter__ctr_s1_k7_668cf05b
 module fcc_sort_net__filter__ctr_sm_k7_668cf05b(d,q,clock);
 
     // Module arguments
-    input wire  [64:0] d;
-    output reg  [64:0] q;
+    input wire  [32:0] d;
+    output reg  [32:0] q;
     input wire  clock;
 
     // Update code (custom)
     initial begin
-       q = 65'h0;
+       q = 33'h0;
     end
 
     always @(posedge clock) begin
@@ -18187,13 +18308,13 @@ endmodule // fcc_sort_net__filter__ctr_sm_k7_668cf05b
 module fcc_sort_net__filter__ctr_sm1_k7_668cf05b(d,q,clock);
 
     // Module arguments
-    input wire  [64:0] d;
-    output reg  [64:0] q;
+    input wire  [32:0] d;
+    output reg  [32:0] q;
     input wire  clock;
 
     // Update code (custom)
     initial begin
-       q = 65'h0;
+       q = 33'h0;
     end
 
     always @(posedge clock) begin
@@ -18206,13 +18327,13 @@ endmodule // fcc_sort_net__filter__ctr_sm1_k7_668cf05b
 module fcc_sort_net__filter__ctr_sm2_k7_668cf05b(d,q,clock);
 
     // Module arguments
-    input wire  [64:0] d;
-    output reg  [64:0] q;
+    input wire  [32:0] d;
+    output reg  [32:0] q;
     input wire  clock;
 
     // Update code (custom)
     initial begin
-       q = 65'h0;
+       q = 33'h0;
     end
 
     always @(posedge clock) begin
@@ -18225,13 +18346,13 @@ endmodule // fcc_sort_net__filter__ctr_sm2_k7_668cf05b
 module fcc_sort_net__filter__ctr_tree__0_k7_668cf05b(d,q,clock);
 
     // Module arguments
-    input wire  [64:0] d;
-    output reg  [64:0] q;
+    input wire  [32:0] d;
+    output reg  [32:0] q;
     input wire  clock;
 
     // Update code (custom)
     initial begin
-       q = 65'h0;
+       q = 33'h0;
     end
 
     always @(posedge clock) begin
@@ -18244,13 +18365,13 @@ endmodule // fcc_sort_net__filter__ctr_tree__0_k7_668cf05b
 module fcc_sort_net__filter__ctr_tree__1_k7_668cf05b(d,q,clock);
 
     // Module arguments
-    input wire  [64:0] d;
-    output reg  [64:0] q;
+    input wire  [32:0] d;
+    output reg  [32:0] q;
     input wire  clock;
 
     // Update code (custom)
     initial begin
-       q = 65'h0;
+       q = 33'h0;
     end
 
     always @(posedge clock) begin
@@ -18263,13 +18384,13 @@ endmodule // fcc_sort_net__filter__ctr_tree__1_k7_668cf05b
 module fcc_sort_net__filter__ctr_tree__2_k7_668cf05b(d,q,clock);
 
     // Module arguments
-    input wire  [64:0] d;
-    output reg  [64:0] q;
+    input wire  [32:0] d;
+    output reg  [32:0] q;
     input wire  clock;
 
     // Update code (custom)
     initial begin
-       q = 65'h0;
+       q = 33'h0;
     end
 
     always @(posedge clock) begin
@@ -18282,13 +18403,13 @@ endmodule // fcc_sort_net__filter__ctr_tree__2_k7_668cf05b
 module fcc_sort_net__filter__ctr_tree__3_k7_668cf05b(d,q,clock);
 
     // Module arguments
-    input wire  [64:0] d;
-    output reg  [64:0] q;
+    input wire  [32:0] d;
+    output reg  [32:0] q;
     input wire  clock;
 
     // Update code (custom)
     initial begin
-       q = 65'h0;
+       q = 33'h0;
     end
 
     always @(posedge clock) begin
@@ -18296,405 +18417,6 @@ module fcc_sort_net__filter__ctr_tree__3_k7_668cf05b(d,q,clock);
     end
 
 endmodule // fcc_sort_net__filter__ctr_tree__3_k7_668cf05b
-
-
-module fcc_sort_net__filter__is_min__0_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__filter__is_min__0_k7_668cf05b
-
-
-module fcc_sort_net__filter__is_min__1_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__filter__is_min__1_k7_668cf05b
-
-
-module fcc_sort_net__filter__is_min__10_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__filter__is_min__10_k7_668cf05b
-
-
-module fcc_sort_net__filter__is_min__11_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__filter__is_min__11_k7_668cf05b
-
-
-module fcc_sort_net__filter__is_min__12_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__filter__is_min__12_k7_668cf05b
-
-
-module fcc_sort_net__filter__is_min__13_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__filter__is_min__13_k7_668cf05b
-
-
-module fcc_sort_net__filter__is_min__14_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__filter__is_min__14_k7_668cf05b
-
-
-module fcc_sort_net__filter__is_min__15_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__filter__is_min__15_k7_668cf05b
-
-
-module fcc_sort_net__filter__is_min__16_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__filter__is_min__16_k7_668cf05b
-
-
-module fcc_sort_net__filter__is_min__17_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__filter__is_min__17_k7_668cf05b
-
-
-module fcc_sort_net__filter__is_min__18_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__filter__is_min__18_k7_668cf05b
-
-
-module fcc_sort_net__filter__is_min__19_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__filter__is_min__19_k7_668cf05b
-
-
-module fcc_sort_net__filter__is_min__2_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__filter__is_min__2_k7_668cf05b
-
-
-module fcc_sort_net__filter__is_min__20_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__filter__is_min__20_k7_668cf05b
-
-
-module fcc_sort_net__filter__is_min__3_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__filter__is_min__3_k7_668cf05b
-
-
-module fcc_sort_net__filter__is_min__4_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__filter__is_min__4_k7_668cf05b
-
-
-module fcc_sort_net__filter__is_min__5_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__filter__is_min__5_k7_668cf05b
-
-
-module fcc_sort_net__filter__is_min__6_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__filter__is_min__6_k7_668cf05b
-
-
-module fcc_sort_net__filter__is_min__7_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__filter__is_min__7_k7_668cf05b
-
-
-module fcc_sort_net__filter__is_min__8_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__filter__is_min__8_k7_668cf05b
-
-
-module fcc_sort_net__filter__is_min__9_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__filter__is_min__9_k7_668cf05b
 
 
 module fcc_sort_net__filter__is_run_rep__0_k7_668cf05b(d,q,clock);
@@ -24522,6 +24244,405 @@ module fcc_sort_net__filter__last_label_valid_k7_668cf05b(d,q,clock);
 endmodule // fcc_sort_net__filter__last_label_valid_k7_668cf05b
 
 
+module fcc_sort_net__filter__later_min__0_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__later_min__0_k7_668cf05b
+
+
+module fcc_sort_net__filter__later_min__1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__later_min__1_k7_668cf05b
+
+
+module fcc_sort_net__filter__later_min__10_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__later_min__10_k7_668cf05b
+
+
+module fcc_sort_net__filter__later_min__11_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__later_min__11_k7_668cf05b
+
+
+module fcc_sort_net__filter__later_min__12_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__later_min__12_k7_668cf05b
+
+
+module fcc_sort_net__filter__later_min__13_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__later_min__13_k7_668cf05b
+
+
+module fcc_sort_net__filter__later_min__14_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__later_min__14_k7_668cf05b
+
+
+module fcc_sort_net__filter__later_min__15_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__later_min__15_k7_668cf05b
+
+
+module fcc_sort_net__filter__later_min__16_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__later_min__16_k7_668cf05b
+
+
+module fcc_sort_net__filter__later_min__17_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__later_min__17_k7_668cf05b
+
+
+module fcc_sort_net__filter__later_min__18_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__later_min__18_k7_668cf05b
+
+
+module fcc_sort_net__filter__later_min__19_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__later_min__19_k7_668cf05b
+
+
+module fcc_sort_net__filter__later_min__2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__later_min__2_k7_668cf05b
+
+
+module fcc_sort_net__filter__later_min__20_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__later_min__20_k7_668cf05b
+
+
+module fcc_sort_net__filter__later_min__3_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__later_min__3_k7_668cf05b
+
+
+module fcc_sort_net__filter__later_min__4_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__later_min__4_k7_668cf05b
+
+
+module fcc_sort_net__filter__later_min__5_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__later_min__5_k7_668cf05b
+
+
+module fcc_sort_net__filter__later_min__6_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__later_min__6_k7_668cf05b
+
+
+module fcc_sort_net__filter__later_min__7_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__later_min__7_k7_668cf05b
+
+
+module fcc_sort_net__filter__later_min__8_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__later_min__8_k7_668cf05b
+
+
+module fcc_sort_net__filter__later_min__9_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__later_min__9_k7_668cf05b
+
+
 module fcc_sort_net__filter__match_delay_k7_668cf05b(clk,rst,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit$6,hit$7,hit$8,hit$9,hit$10,hit$11,hit$12,hit$13,hit$14,hit$15,hit$16,hit$17,hit$18,hit$19,hit$20,rep$0,rep$1,rep$2,rep$3,rep$4,rep$5,rep$6,rep$7,rep$8,rep$9,rep$10,rep$11,rep$12,rep$13,rep$14,rep$15,rep$16,rep$17,rep$18,rep$19,rep$20,hit_s1$0,hit_s1$1,hit_s1$2,hit_s1$3,hit_s1$4,hit_s1$5,hit_s1$6,hit_s1$7,hit_s1$8,hit_s1$9,hit_s1$10,hit_s1$11,hit_s1$12,hit_s1$13,hit_s1$14,hit_s1$15,hit_s1$16,hit_s1$17,hit_s1$18,hit_s1$19,hit_s1$20,hit_sm$0,hit_sm$1,hit_sm$2,hit_sm$3,hit_sm$4,hit_sm$5,hit_sm$6,hit_sm$7,hit_sm$8,hit_sm$9,hit_sm$10,hit_sm$11,hit_sm$12,hit_sm$13,hit_sm$14,hit_sm$15,hit_sm$16,hit_sm$17,hit_sm$18,hit_sm$19,hit_sm$20,rep_sm$0,rep_sm$1,rep_sm$2,rep_sm$3,rep_sm$4,rep_sm$5,rep_sm$6,rep_sm$7,rep_sm$8,rep_sm$9,rep_sm$10,rep_sm$11,rep_sm$12,rep_sm$13,rep_sm$14,rep_sm$15,rep_sm$16,rep_sm$17,rep_sm$18,rep_sm$19,rep_sm$20,hit_sm1$0,hit_sm1$1,hit_sm1$2,hit_sm1$3,hit_sm1$4,hit_sm1$5,hit_sm1$6,hit_sm1$7,hit_sm1$8,hit_sm1$9,hit_sm1$10,hit_sm1$11,hit_sm1$12,hit_sm1$13,hit_sm1$14,hit_sm1$15,hit_sm1$16,hit_sm1$17,hit_sm1$18,hit_sm1$19,hit_sm1$20,adj_sm1$0,adj_sm1$1,adj_sm1$2,adj_sm1$3,adj_sm1$4,adj_sm1$5,adj_sm1$6,adj_sm1$7,adj_sm1$8,adj_sm1$9,adj_sm1$10,adj_sm1$11,adj_sm1$12,adj_sm1$13,adj_sm1$14,adj_sm1$15,adj_sm1$16,adj_sm1$17,adj_sm1$18,adj_sm1$19,adj_sm1$20,rep_sm3$0,rep_sm3$1,rep_sm3$2,rep_sm3$3,rep_sm3$4,rep_sm3$5,rep_sm3$6,rep_sm3$7,rep_sm3$8,rep_sm3$9,rep_sm3$10,rep_sm3$11,rep_sm3$12,rep_sm3$13,rep_sm3$14,rep_sm3$15,rep_sm3$16,rep_sm3$17,rep_sm3$18,rep_sm3$19,rep_sm3$20);
 
     // Module arguments
@@ -26149,6 +26270,24 @@ module fcc_sort_net__filter__match_delay_k7_668cf05b(clk,rst,hit$0,hit$1,hit$2,h
     reg  [15:0] rep_line$188$d;
     wire  [15:0] rep_line$188$q;
     reg  rep_line$188$clock;
+    reg  rep_rst$0$clock;
+    reg  rep_rst$0$d;
+    wire  rep_rst$0$q;
+    reg  rep_rst$1$clock;
+    reg  rep_rst$1$d;
+    wire  rep_rst$1$q;
+    reg  rep_rst$2$clock;
+    reg  rep_rst$2$d;
+    wire  rep_rst$2$q;
+    reg  rep_rst$3$clock;
+    reg  rep_rst$3$d;
+    wire  rep_rst$3$q;
+    reg  rep_rst$4$clock;
+    reg  rep_rst$4$d;
+    wire  rep_rst$4$q;
+    reg  rep_rst$5$clock;
+    reg  rep_rst$5$d;
+    wire  rep_rst$5$q;
 
     // Sub module instances
     fcc_sort_net__filter__match_delay__hit_line__0_k7_668cf05b hit_line$0(
@@ -28566,6 +28705,36 @@ module fcc_sort_net__filter__match_delay_k7_668cf05b(clk,rst,hit$0,hit$1,hit$2,h
         .q(rep_line$188$q),
         .clock(rep_line$188$clock)
     );
+    fcc_sort_net__filter__match_delay__rep_rst__0_k7_668cf05b rep_rst$0(
+        .clock(rep_rst$0$clock),
+        .d(rep_rst$0$d),
+        .q(rep_rst$0$q)
+    );
+    fcc_sort_net__filter__match_delay__rep_rst__1_k7_668cf05b rep_rst$1(
+        .clock(rep_rst$1$clock),
+        .d(rep_rst$1$d),
+        .q(rep_rst$1$q)
+    );
+    fcc_sort_net__filter__match_delay__rep_rst__2_k7_668cf05b rep_rst$2(
+        .clock(rep_rst$2$clock),
+        .d(rep_rst$2$d),
+        .q(rep_rst$2$q)
+    );
+    fcc_sort_net__filter__match_delay__rep_rst__3_k7_668cf05b rep_rst$3(
+        .clock(rep_rst$3$clock),
+        .d(rep_rst$3$d),
+        .q(rep_rst$3$q)
+    );
+    fcc_sort_net__filter__match_delay__rep_rst__4_k7_668cf05b rep_rst$4(
+        .clock(rep_rst$4$clock),
+        .d(rep_rst$4$d),
+        .q(rep_rst$4$q)
+    );
+    fcc_sort_net__filter__match_delay__rep_rst__5_k7_668cf05b rep_rst$5(
+        .clock(rep_rst$5$clock),
+        .d(rep_rst$5$d),
+        .q(rep_rst$5$q)
+    );
 
     // Update code
     always @(*) begin
@@ -29052,6 +29221,18 @@ module fcc_sort_net__filter__match_delay_k7_668cf05b(clk,rst,hit$0,hit$1,hit$2,h
         adj_line$145$clock = clk;
         hit_line$146$clock = clk;
         adj_line$146$clock = clk;
+        rep_rst$0$clock = clk;
+        rep_rst$0$d = rst;
+        rep_rst$1$clock = clk;
+        rep_rst$1$d = rst;
+        rep_rst$2$clock = clk;
+        rep_rst$2$d = rst;
+        rep_rst$3$clock = clk;
+        rep_rst$3$d = rst;
+        rep_rst$4$clock = clk;
+        rep_rst$4$d = rst;
+        rep_rst$5$clock = clk;
+        rep_rst$5$d = rst;
         rep_line$0$d = rep$0;
         rep_line$9$d = rep$1;
         rep_line$18$d = rep$2;
@@ -29141,9 +29322,6 @@ module fcc_sort_net__filter__match_delay_k7_668cf05b(clk,rst,hit$0,hit$1,hit$2,h
         hit_sm1$0 = hit_line$6$q;
         adj_sm1$0 = adj_line$6$q;
         rep_sm3$0 = rep_line$8$q;
-        if (rst) begin
-            rep_line$5$d = zero16;
-        end
         rep_line$10$d = rep_line$9$q;
         rep_line$11$d = rep_line$10$q;
         rep_line$12$d = rep_line$11$q;
@@ -29170,9 +29348,6 @@ module fcc_sort_net__filter__match_delay_k7_668cf05b(clk,rst,hit$0,hit$1,hit$2,h
         hit_sm1$1 = hit_line$13$q;
         adj_sm1$1 = adj_line$13$q;
         rep_sm3$1 = rep_line$17$q;
-        if (rst) begin
-            rep_line$14$d = zero16;
-        end
         rep_line$19$d = rep_line$18$q;
         rep_line$20$d = rep_line$19$q;
         rep_line$21$d = rep_line$20$q;
@@ -29199,9 +29374,6 @@ module fcc_sort_net__filter__match_delay_k7_668cf05b(clk,rst,hit$0,hit$1,hit$2,h
         hit_sm1$2 = hit_line$20$q;
         adj_sm1$2 = adj_line$20$q;
         rep_sm3$2 = rep_line$26$q;
-        if (rst) begin
-            rep_line$23$d = zero16;
-        end
         rep_line$28$d = rep_line$27$q;
         rep_line$29$d = rep_line$28$q;
         rep_line$30$d = rep_line$29$q;
@@ -29228,9 +29400,6 @@ module fcc_sort_net__filter__match_delay_k7_668cf05b(clk,rst,hit$0,hit$1,hit$2,h
         hit_sm1$3 = hit_line$27$q;
         adj_sm1$3 = adj_line$27$q;
         rep_sm3$3 = rep_line$35$q;
-        if (rst) begin
-            rep_line$32$d = zero16;
-        end
         rep_line$37$d = rep_line$36$q;
         rep_line$38$d = rep_line$37$q;
         rep_line$39$d = rep_line$38$q;
@@ -29257,9 +29426,6 @@ module fcc_sort_net__filter__match_delay_k7_668cf05b(clk,rst,hit$0,hit$1,hit$2,h
         hit_sm1$4 = hit_line$34$q;
         adj_sm1$4 = adj_line$34$q;
         rep_sm3$4 = rep_line$44$q;
-        if (rst) begin
-            rep_line$41$d = zero16;
-        end
         rep_line$46$d = rep_line$45$q;
         rep_line$47$d = rep_line$46$q;
         rep_line$48$d = rep_line$47$q;
@@ -29286,9 +29452,6 @@ module fcc_sort_net__filter__match_delay_k7_668cf05b(clk,rst,hit$0,hit$1,hit$2,h
         hit_sm1$5 = hit_line$41$q;
         adj_sm1$5 = adj_line$41$q;
         rep_sm3$5 = rep_line$53$q;
-        if (rst) begin
-            rep_line$50$d = zero16;
-        end
         rep_line$55$d = rep_line$54$q;
         rep_line$56$d = rep_line$55$q;
         rep_line$57$d = rep_line$56$q;
@@ -29315,9 +29478,6 @@ module fcc_sort_net__filter__match_delay_k7_668cf05b(clk,rst,hit$0,hit$1,hit$2,h
         hit_sm1$6 = hit_line$48$q;
         adj_sm1$6 = adj_line$48$q;
         rep_sm3$6 = rep_line$62$q;
-        if (rst) begin
-            rep_line$59$d = zero16;
-        end
         rep_line$64$d = rep_line$63$q;
         rep_line$65$d = rep_line$64$q;
         rep_line$66$d = rep_line$65$q;
@@ -29344,9 +29504,6 @@ module fcc_sort_net__filter__match_delay_k7_668cf05b(clk,rst,hit$0,hit$1,hit$2,h
         hit_sm1$7 = hit_line$55$q;
         adj_sm1$7 = adj_line$55$q;
         rep_sm3$7 = rep_line$71$q;
-        if (rst) begin
-            rep_line$68$d = zero16;
-        end
         rep_line$73$d = rep_line$72$q;
         rep_line$74$d = rep_line$73$q;
         rep_line$75$d = rep_line$74$q;
@@ -29373,9 +29530,6 @@ module fcc_sort_net__filter__match_delay_k7_668cf05b(clk,rst,hit$0,hit$1,hit$2,h
         hit_sm1$8 = hit_line$62$q;
         adj_sm1$8 = adj_line$62$q;
         rep_sm3$8 = rep_line$80$q;
-        if (rst) begin
-            rep_line$77$d = zero16;
-        end
         rep_line$82$d = rep_line$81$q;
         rep_line$83$d = rep_line$82$q;
         rep_line$84$d = rep_line$83$q;
@@ -29402,9 +29556,6 @@ module fcc_sort_net__filter__match_delay_k7_668cf05b(clk,rst,hit$0,hit$1,hit$2,h
         hit_sm1$9 = hit_line$69$q;
         adj_sm1$9 = adj_line$69$q;
         rep_sm3$9 = rep_line$89$q;
-        if (rst) begin
-            rep_line$86$d = zero16;
-        end
         rep_line$91$d = rep_line$90$q;
         rep_line$92$d = rep_line$91$q;
         rep_line$93$d = rep_line$92$q;
@@ -29431,9 +29582,6 @@ module fcc_sort_net__filter__match_delay_k7_668cf05b(clk,rst,hit$0,hit$1,hit$2,h
         hit_sm1$10 = hit_line$76$q;
         adj_sm1$10 = adj_line$76$q;
         rep_sm3$10 = rep_line$98$q;
-        if (rst) begin
-            rep_line$95$d = zero16;
-        end
         rep_line$100$d = rep_line$99$q;
         rep_line$101$d = rep_line$100$q;
         rep_line$102$d = rep_line$101$q;
@@ -29460,9 +29608,6 @@ module fcc_sort_net__filter__match_delay_k7_668cf05b(clk,rst,hit$0,hit$1,hit$2,h
         hit_sm1$11 = hit_line$83$q;
         adj_sm1$11 = adj_line$83$q;
         rep_sm3$11 = rep_line$107$q;
-        if (rst) begin
-            rep_line$104$d = zero16;
-        end
         rep_line$109$d = rep_line$108$q;
         rep_line$110$d = rep_line$109$q;
         rep_line$111$d = rep_line$110$q;
@@ -29489,9 +29634,6 @@ module fcc_sort_net__filter__match_delay_k7_668cf05b(clk,rst,hit$0,hit$1,hit$2,h
         hit_sm1$12 = hit_line$90$q;
         adj_sm1$12 = adj_line$90$q;
         rep_sm3$12 = rep_line$116$q;
-        if (rst) begin
-            rep_line$113$d = zero16;
-        end
         rep_line$118$d = rep_line$117$q;
         rep_line$119$d = rep_line$118$q;
         rep_line$120$d = rep_line$119$q;
@@ -29518,9 +29660,6 @@ module fcc_sort_net__filter__match_delay_k7_668cf05b(clk,rst,hit$0,hit$1,hit$2,h
         hit_sm1$13 = hit_line$97$q;
         adj_sm1$13 = adj_line$97$q;
         rep_sm3$13 = rep_line$125$q;
-        if (rst) begin
-            rep_line$122$d = zero16;
-        end
         rep_line$127$d = rep_line$126$q;
         rep_line$128$d = rep_line$127$q;
         rep_line$129$d = rep_line$128$q;
@@ -29547,9 +29686,6 @@ module fcc_sort_net__filter__match_delay_k7_668cf05b(clk,rst,hit$0,hit$1,hit$2,h
         hit_sm1$14 = hit_line$104$q;
         adj_sm1$14 = adj_line$104$q;
         rep_sm3$14 = rep_line$134$q;
-        if (rst) begin
-            rep_line$131$d = zero16;
-        end
         rep_line$136$d = rep_line$135$q;
         rep_line$137$d = rep_line$136$q;
         rep_line$138$d = rep_line$137$q;
@@ -29576,9 +29712,6 @@ module fcc_sort_net__filter__match_delay_k7_668cf05b(clk,rst,hit$0,hit$1,hit$2,h
         hit_sm1$15 = hit_line$111$q;
         adj_sm1$15 = adj_line$111$q;
         rep_sm3$15 = rep_line$143$q;
-        if (rst) begin
-            rep_line$140$d = zero16;
-        end
         rep_line$145$d = rep_line$144$q;
         rep_line$146$d = rep_line$145$q;
         rep_line$147$d = rep_line$146$q;
@@ -29605,9 +29738,6 @@ module fcc_sort_net__filter__match_delay_k7_668cf05b(clk,rst,hit$0,hit$1,hit$2,h
         hit_sm1$16 = hit_line$118$q;
         adj_sm1$16 = adj_line$118$q;
         rep_sm3$16 = rep_line$152$q;
-        if (rst) begin
-            rep_line$149$d = zero16;
-        end
         rep_line$154$d = rep_line$153$q;
         rep_line$155$d = rep_line$154$q;
         rep_line$156$d = rep_line$155$q;
@@ -29634,9 +29764,6 @@ module fcc_sort_net__filter__match_delay_k7_668cf05b(clk,rst,hit$0,hit$1,hit$2,h
         hit_sm1$17 = hit_line$125$q;
         adj_sm1$17 = adj_line$125$q;
         rep_sm3$17 = rep_line$161$q;
-        if (rst) begin
-            rep_line$158$d = zero16;
-        end
         rep_line$163$d = rep_line$162$q;
         rep_line$164$d = rep_line$163$q;
         rep_line$165$d = rep_line$164$q;
@@ -29663,9 +29790,6 @@ module fcc_sort_net__filter__match_delay_k7_668cf05b(clk,rst,hit$0,hit$1,hit$2,h
         hit_sm1$18 = hit_line$132$q;
         adj_sm1$18 = adj_line$132$q;
         rep_sm3$18 = rep_line$170$q;
-        if (rst) begin
-            rep_line$167$d = zero16;
-        end
         rep_line$172$d = rep_line$171$q;
         rep_line$173$d = rep_line$172$q;
         rep_line$174$d = rep_line$173$q;
@@ -29692,9 +29816,6 @@ module fcc_sort_net__filter__match_delay_k7_668cf05b(clk,rst,hit$0,hit$1,hit$2,h
         hit_sm1$19 = hit_line$139$q;
         adj_sm1$19 = adj_line$139$q;
         rep_sm3$19 = rep_line$179$q;
-        if (rst) begin
-            rep_line$176$d = zero16;
-        end
         rep_line$181$d = rep_line$180$q;
         rep_line$182$d = rep_line$181$q;
         rep_line$183$d = rep_line$182$q;
@@ -29721,7 +29842,67 @@ module fcc_sort_net__filter__match_delay_k7_668cf05b(clk,rst,hit$0,hit$1,hit$2,h
         hit_sm1$20 = hit_line$146$q;
         adj_sm1$20 = adj_line$146$q;
         rep_sm3$20 = rep_line$188$q;
-        if (rst) begin
+        if (rep_rst$0$q) begin
+            rep_line$5$d = zero16;
+        end
+        if (rep_rst$0$q) begin
+            rep_line$14$d = zero16;
+        end
+        if (rep_rst$0$q) begin
+            rep_line$23$d = zero16;
+        end
+        if (rep_rst$0$q) begin
+            rep_line$32$d = zero16;
+        end
+        if (rep_rst$1$q) begin
+            rep_line$41$d = zero16;
+        end
+        if (rep_rst$1$q) begin
+            rep_line$50$d = zero16;
+        end
+        if (rep_rst$1$q) begin
+            rep_line$59$d = zero16;
+        end
+        if (rep_rst$1$q) begin
+            rep_line$68$d = zero16;
+        end
+        if (rep_rst$2$q) begin
+            rep_line$77$d = zero16;
+        end
+        if (rep_rst$2$q) begin
+            rep_line$86$d = zero16;
+        end
+        if (rep_rst$2$q) begin
+            rep_line$95$d = zero16;
+        end
+        if (rep_rst$2$q) begin
+            rep_line$104$d = zero16;
+        end
+        if (rep_rst$3$q) begin
+            rep_line$113$d = zero16;
+        end
+        if (rep_rst$3$q) begin
+            rep_line$122$d = zero16;
+        end
+        if (rep_rst$3$q) begin
+            rep_line$131$d = zero16;
+        end
+        if (rep_rst$3$q) begin
+            rep_line$140$d = zero16;
+        end
+        if (rep_rst$4$q) begin
+            rep_line$149$d = zero16;
+        end
+        if (rep_rst$4$q) begin
+            rep_line$158$d = zero16;
+        end
+        if (rep_rst$4$q) begin
+            rep_line$167$d = zero16;
+        end
+        if (rep_rst$4$q) begin
+            rep_line$176$d = zero16;
+        end
+        if (rep_rst$5$q) begin
             rep_line$185$d = zero16;
         end
     end
@@ -38906,84 +39087,133 @@ module fcc_sort_net__filter__match_delay__rep_line__99_k7_668cf05b(d,q,clock);
 endmodule // fcc_sort_net__filter__match_delay__rep_line__99_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_earlier_k7_668cf05b(x$0,x$1,x$2,x$3,x$4,x$5,x$6,x$7,x$8,x$9,x$10,x$11,x$12,x$13,x$14,x$15,x$16,x$17,x$18,x$19,x$20,pre$0,pre$1,pre$2,pre$3,pre$4,pre$5,pre$6,pre$7,pre$8,pre$9,pre$10,pre$11,pre$12,pre$13,pre$14,pre$15,pre$16,pre$17,pre$18,pre$19,pre$20);
+module fcc_sort_net__filter__match_delay__rep_rst__0_k7_668cf05b(clock,d,q);
 
     // Module arguments
-    input wire  x$0;
-    input wire  x$1;
-    input wire  x$2;
-    input wire  x$3;
-    input wire  x$4;
-    input wire  x$5;
-    input wire  x$6;
-    input wire  x$7;
-    input wire  x$8;
-    input wire  x$9;
-    input wire  x$10;
-    input wire  x$11;
-    input wire  x$12;
-    input wire  x$13;
-    input wire  x$14;
-    input wire  x$15;
-    input wire  x$16;
-    input wire  x$17;
-    input wire  x$18;
-    input wire  x$19;
-    input wire  x$20;
-    output reg  pre$0;
-    output reg  pre$1;
-    output reg  pre$2;
-    output reg  pre$3;
-    output reg  pre$4;
-    output reg  pre$5;
-    output reg  pre$6;
-    output reg  pre$7;
-    output reg  pre$8;
-    output reg  pre$9;
-    output reg  pre$10;
-    output reg  pre$11;
-    output reg  pre$12;
-    output reg  pre$13;
-    output reg  pre$14;
-    output reg  pre$15;
-    output reg  pre$16;
-    output reg  pre$17;
-    output reg  pre$18;
-    output reg  pre$19;
-    output reg  pre$20;
+    input wire  clock;
+    input wire  d;
+    output reg  q;
 
     // Update code (custom)
-    // The last flag comes after every prefix, so nothing reads it.
-    /* verilator lint_off UNUSEDSIGNAL */
-    wire unused_ok = x$20;
-    /* verilator lint_on UNUSEDSIGNAL */
-    always @(*) begin
-        pre$0 = 1'b0;
-        pre$1 = |{x$0};
-        pre$2 = |{x$1, x$0};
-        pre$3 = |{x$2, x$1, x$0};
-        pre$4 = |{x$3, x$2, x$1, x$0};
-        pre$5 = |{x$4, x$3, x$2, x$1, x$0};
-        pre$6 = |{x$5, x$4, x$3, x$2, x$1, x$0};
-        pre$7 = |{x$6, x$5, x$4, x$3, x$2, x$1, x$0};
-        pre$8 = |{x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
-        pre$9 = |{x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
-        pre$10 = |{x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
-        pre$11 = |{x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
-        pre$12 = |{x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
-        pre$13 = |{x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
-        pre$14 = |{x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
-        pre$15 = |{x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
-        pre$16 = |{x$15, x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
-        pre$17 = |{x$16, x$15, x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
-        pre$18 = |{x$17, x$16, x$15, x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
-        pre$19 = |{x$18, x$17, x$16, x$15, x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
-        pre$20 = |{x$19, x$18, x$17, x$16, x$15, x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
     end
-endmodule // fcc_sort_net__filter__min_earlier_k7_668cf05b
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_sort_net__filter__match_delay__rep_rst__0_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree_k7_668cf05b(clk,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit$6,hit$7,hit$8,hit$9,hit$10,hit$11,hit$12,hit$13,hit$14,hit$15,hit$16,hit$17,hit$18,hit$19,hit$20,value$0,value$1,value$2,value$3,value$4,value$5,value$6,value$7,value$8,value$9,value$10,value$11,value$12,value$13,value$14,value$15,value$16,value$17,value$18,value$19,value$20,min);
+module fcc_sort_net__filter__match_delay__rep_rst__1_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_sort_net__filter__match_delay__rep_rst__1_k7_668cf05b
+
+
+module fcc_sort_net__filter__match_delay__rep_rst__2_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_sort_net__filter__match_delay__rep_rst__2_k7_668cf05b
+
+
+module fcc_sort_net__filter__match_delay__rep_rst__3_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_sort_net__filter__match_delay__rep_rst__3_k7_668cf05b
+
+
+module fcc_sort_net__filter__match_delay__rep_rst__4_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_sort_net__filter__match_delay__rep_rst__4_k7_668cf05b
+
+
+module fcc_sort_net__filter__match_delay__rep_rst__5_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_sort_net__filter__match_delay__rep_rst__5_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree_k7_668cf05b(clk,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit$6,hit$7,hit$8,hit$9,hit$10,hit$11,hit$12,hit$13,hit$14,hit$15,hit$16,hit$17,hit$18,hit$19,hit$20,value$0,value$1,value$2,value$3,value$4,value$5,value$6,value$7,value$8,value$9,value$10,value$11,value$12,value$13,value$14,value$15,value$16,value$17,value$18,value$19,value$20,min,first$0,first$1,first$2,first$3,first$4,first$5,first$6,first$7,first$8,first$9,first$10,first$11,first$12,first$13,first$14,first$15,first$16,first$17,first$18,first$19,first$20);
 
     // Module arguments
     input wire  clk;
@@ -39030,8 +39260,61 @@ module fcc_sort_net__filter__min_tree_k7_668cf05b(clk,hit$0,hit$1,hit$2,hit$3,hi
     input wire  [15:0] value$19;
     input wire  [15:0] value$20;
     output reg  [15:0] min;
+    output reg  first$0;
+    output reg  first$1;
+    output reg  first$2;
+    output reg  first$3;
+    output reg  first$4;
+    output reg  first$5;
+    output reg  first$6;
+    output reg  first$7;
+    output reg  first$8;
+    output reg  first$9;
+    output reg  first$10;
+    output reg  first$11;
+    output reg  first$12;
+    output reg  first$13;
+    output reg  first$14;
+    output reg  first$15;
+    output reg  first$16;
+    output reg  first$17;
+    output reg  first$18;
+    output reg  first$19;
+    output reg  first$20;
 
     // Constant declarations
+    localparam  position$0 = 6'b0;
+    localparam  position$1 = 6'b1;
+    localparam  position$2 = 6'b10;
+    localparam  position$3 = 6'b11;
+    localparam  position$4 = 6'b100;
+    localparam  position$5 = 6'b101;
+    localparam  position$6 = 6'b110;
+    localparam  position$7 = 6'b111;
+    localparam  position$8 = 6'b1000;
+    localparam  position$9 = 6'b1001;
+    localparam  position$10 = 6'b1010;
+    localparam  position$11 = 6'b1011;
+    localparam  position$12 = 6'b1100;
+    localparam  position$13 = 6'b1101;
+    localparam  position$14 = 6'b1110;
+    localparam  position$15 = 6'b1111;
+    localparam  position$16 = 6'b10000;
+    localparam  position$17 = 6'b10001;
+    localparam  position$18 = 6'b10010;
+    localparam  position$19 = 6'b10011;
+    localparam  position$20 = 6'b10100;
+    localparam  position$21 = 6'b10101;
+    localparam  position$22 = 6'b10110;
+    localparam  position$23 = 6'b10111;
+    localparam  position$24 = 6'b11000;
+    localparam  position$25 = 6'b11001;
+    localparam  position$26 = 6'b11010;
+    localparam  position$27 = 6'b11011;
+    localparam  position$28 = 6'b11100;
+    localparam  position$29 = 6'b11101;
+    localparam  position$30 = 6'b11110;
+    localparam  position$31 = 6'b11111;
     localparam  all_ones = 16'hffff;
 
     // Stub signals
@@ -39224,6 +39507,321 @@ module fcc_sort_net__filter__min_tree_k7_668cf05b(clk,hit$0,hit$1,hit$2,hit$3,hi
     reg  [15:0] node$62$d;
     wire  [15:0] node$62$q;
     reg  node$62$clock;
+    reg  flagged$0$d;
+    wire  flagged$0$q;
+    reg  flagged$0$clock;
+    reg  flagged$1$d;
+    wire  flagged$1$q;
+    reg  flagged$1$clock;
+    reg  flagged$2$d;
+    wire  flagged$2$q;
+    reg  flagged$2$clock;
+    reg  flagged$3$d;
+    wire  flagged$3$q;
+    reg  flagged$3$clock;
+    reg  flagged$4$d;
+    wire  flagged$4$q;
+    reg  flagged$4$clock;
+    reg  flagged$5$d;
+    wire  flagged$5$q;
+    reg  flagged$5$clock;
+    reg  flagged$6$d;
+    wire  flagged$6$q;
+    reg  flagged$6$clock;
+    reg  flagged$7$d;
+    wire  flagged$7$q;
+    reg  flagged$7$clock;
+    reg  flagged$8$d;
+    wire  flagged$8$q;
+    reg  flagged$8$clock;
+    reg  flagged$9$d;
+    wire  flagged$9$q;
+    reg  flagged$9$clock;
+    reg  flagged$10$d;
+    wire  flagged$10$q;
+    reg  flagged$10$clock;
+    reg  flagged$11$d;
+    wire  flagged$11$q;
+    reg  flagged$11$clock;
+    reg  flagged$12$d;
+    wire  flagged$12$q;
+    reg  flagged$12$clock;
+    reg  flagged$13$d;
+    wire  flagged$13$q;
+    reg  flagged$13$clock;
+    reg  flagged$14$d;
+    wire  flagged$14$q;
+    reg  flagged$14$clock;
+    reg  flagged$15$d;
+    wire  flagged$15$q;
+    reg  flagged$15$clock;
+    reg  flagged$16$d;
+    wire  flagged$16$q;
+    reg  flagged$16$clock;
+    reg  flagged$17$d;
+    wire  flagged$17$q;
+    reg  flagged$17$clock;
+    reg  flagged$18$d;
+    wire  flagged$18$q;
+    reg  flagged$18$clock;
+    reg  flagged$19$d;
+    wire  flagged$19$q;
+    reg  flagged$19$clock;
+    reg  flagged$20$d;
+    wire  flagged$20$q;
+    reg  flagged$20$clock;
+    reg  flagged$21$d;
+    wire  flagged$21$q;
+    reg  flagged$21$clock;
+    reg  flagged$22$d;
+    wire  flagged$22$q;
+    reg  flagged$22$clock;
+    reg  flagged$23$d;
+    wire  flagged$23$q;
+    reg  flagged$23$clock;
+    reg  flagged$24$d;
+    wire  flagged$24$q;
+    reg  flagged$24$clock;
+    reg  flagged$25$d;
+    wire  flagged$25$q;
+    reg  flagged$25$clock;
+    reg  flagged$26$d;
+    wire  flagged$26$q;
+    reg  flagged$26$clock;
+    reg  flagged$27$d;
+    wire  flagged$27$q;
+    reg  flagged$27$clock;
+    reg  flagged$28$d;
+    wire  flagged$28$q;
+    reg  flagged$28$clock;
+    reg  flagged$29$d;
+    wire  flagged$29$q;
+    reg  flagged$29$clock;
+    reg  flagged$30$d;
+    wire  flagged$30$q;
+    reg  flagged$30$clock;
+    reg  flagged$31$d;
+    wire  flagged$31$q;
+    reg  flagged$31$clock;
+    reg  flagged$32$d;
+    wire  flagged$32$q;
+    reg  flagged$32$clock;
+    reg  flagged$33$d;
+    wire  flagged$33$q;
+    reg  flagged$33$clock;
+    reg  flagged$34$d;
+    wire  flagged$34$q;
+    reg  flagged$34$clock;
+    reg  flagged$35$d;
+    wire  flagged$35$q;
+    reg  flagged$35$clock;
+    reg  flagged$36$d;
+    wire  flagged$36$q;
+    reg  flagged$36$clock;
+    reg  flagged$37$d;
+    wire  flagged$37$q;
+    reg  flagged$37$clock;
+    reg  flagged$38$d;
+    wire  flagged$38$q;
+    reg  flagged$38$clock;
+    reg  flagged$39$d;
+    wire  flagged$39$q;
+    reg  flagged$39$clock;
+    reg  flagged$40$d;
+    wire  flagged$40$q;
+    reg  flagged$40$clock;
+    reg  flagged$41$d;
+    wire  flagged$41$q;
+    reg  flagged$41$clock;
+    reg  flagged$42$d;
+    wire  flagged$42$q;
+    reg  flagged$42$clock;
+    reg  flagged$43$d;
+    wire  flagged$43$q;
+    reg  flagged$43$clock;
+    reg  flagged$44$d;
+    wire  flagged$44$q;
+    reg  flagged$44$clock;
+    reg  flagged$45$d;
+    wire  flagged$45$q;
+    reg  flagged$45$clock;
+    reg  flagged$46$d;
+    wire  flagged$46$q;
+    reg  flagged$46$clock;
+    reg  flagged$47$d;
+    wire  flagged$47$q;
+    reg  flagged$47$clock;
+    reg  flagged$48$d;
+    wire  flagged$48$q;
+    reg  flagged$48$clock;
+    reg  flagged$49$d;
+    wire  flagged$49$q;
+    reg  flagged$49$clock;
+    reg  flagged$50$d;
+    wire  flagged$50$q;
+    reg  flagged$50$clock;
+    reg  flagged$51$d;
+    wire  flagged$51$q;
+    reg  flagged$51$clock;
+    reg  flagged$52$d;
+    wire  flagged$52$q;
+    reg  flagged$52$clock;
+    reg  flagged$53$d;
+    wire  flagged$53$q;
+    reg  flagged$53$clock;
+    reg  flagged$54$d;
+    wire  flagged$54$q;
+    reg  flagged$54$clock;
+    reg  flagged$55$d;
+    wire  flagged$55$q;
+    reg  flagged$55$clock;
+    reg  flagged$56$d;
+    wire  flagged$56$q;
+    reg  flagged$56$clock;
+    reg  flagged$57$d;
+    wire  flagged$57$q;
+    reg  flagged$57$clock;
+    reg  flagged$58$d;
+    wire  flagged$58$q;
+    reg  flagged$58$clock;
+    reg  flagged$59$d;
+    wire  flagged$59$q;
+    reg  flagged$59$clock;
+    reg  flagged$60$d;
+    wire  flagged$60$q;
+    reg  flagged$60$clock;
+    reg  flagged$61$d;
+    wire  flagged$61$q;
+    reg  flagged$61$clock;
+    reg  flagged$62$d;
+    wire  flagged$62$q;
+    reg  flagged$62$clock;
+    reg  [5:0] winner$0$d;
+    wire  [5:0] winner$0$q;
+    reg  winner$0$clock;
+    reg  [5:0] winner$1$d;
+    wire  [5:0] winner$1$q;
+    reg  winner$1$clock;
+    reg  [5:0] winner$2$d;
+    wire  [5:0] winner$2$q;
+    reg  winner$2$clock;
+    reg  [5:0] winner$3$d;
+    wire  [5:0] winner$3$q;
+    reg  winner$3$clock;
+    reg  [5:0] winner$4$d;
+    wire  [5:0] winner$4$q;
+    reg  winner$4$clock;
+    reg  [5:0] winner$5$d;
+    wire  [5:0] winner$5$q;
+    reg  winner$5$clock;
+    reg  [5:0] winner$6$d;
+    wire  [5:0] winner$6$q;
+    reg  winner$6$clock;
+    reg  [5:0] winner$7$d;
+    wire  [5:0] winner$7$q;
+    reg  winner$7$clock;
+    reg  [5:0] winner$8$d;
+    wire  [5:0] winner$8$q;
+    reg  winner$8$clock;
+    reg  [5:0] winner$9$d;
+    wire  [5:0] winner$9$q;
+    reg  winner$9$clock;
+    reg  [5:0] winner$10$d;
+    wire  [5:0] winner$10$q;
+    reg  winner$10$clock;
+    reg  [5:0] winner$11$d;
+    wire  [5:0] winner$11$q;
+    reg  winner$11$clock;
+    reg  [5:0] winner$12$d;
+    wire  [5:0] winner$12$q;
+    reg  winner$12$clock;
+    reg  [5:0] winner$13$d;
+    wire  [5:0] winner$13$q;
+    reg  winner$13$clock;
+    reg  [5:0] winner$14$d;
+    wire  [5:0] winner$14$q;
+    reg  winner$14$clock;
+    reg  [5:0] winner$15$d;
+    wire  [5:0] winner$15$q;
+    reg  winner$15$clock;
+    reg  [5:0] winner$16$d;
+    wire  [5:0] winner$16$q;
+    reg  winner$16$clock;
+    reg  [5:0] winner$17$d;
+    wire  [5:0] winner$17$q;
+    reg  winner$17$clock;
+    reg  [5:0] winner$18$d;
+    wire  [5:0] winner$18$q;
+    reg  winner$18$clock;
+    reg  [5:0] winner$19$d;
+    wire  [5:0] winner$19$q;
+    reg  winner$19$clock;
+    reg  [5:0] winner$20$d;
+    wire  [5:0] winner$20$q;
+    reg  winner$20$clock;
+    reg  [5:0] winner$21$d;
+    wire  [5:0] winner$21$q;
+    reg  winner$21$clock;
+    reg  [5:0] winner$22$d;
+    wire  [5:0] winner$22$q;
+    reg  winner$22$clock;
+    reg  [5:0] winner$23$d;
+    wire  [5:0] winner$23$q;
+    reg  winner$23$clock;
+    reg  [5:0] winner$24$d;
+    wire  [5:0] winner$24$q;
+    reg  winner$24$clock;
+    reg  [5:0] winner$25$d;
+    wire  [5:0] winner$25$q;
+    reg  winner$25$clock;
+    reg  [5:0] winner$26$d;
+    wire  [5:0] winner$26$q;
+    reg  winner$26$clock;
+    reg  [5:0] winner$27$d;
+    wire  [5:0] winner$27$q;
+    reg  winner$27$clock;
+    reg  [5:0] winner$28$d;
+    wire  [5:0] winner$28$q;
+    reg  winner$28$clock;
+    reg  [5:0] winner$29$d;
+    wire  [5:0] winner$29$q;
+    reg  winner$29$clock;
+    reg  [5:0] winner$30$d;
+    wire  [5:0] winner$30$q;
+    reg  winner$30$clock;
+
+    // Local signals
+    reg  left_wins$0;
+    reg  left_wins$1;
+    reg  left_wins$2;
+    reg  left_wins$3;
+    reg  left_wins$4;
+    reg  left_wins$5;
+    reg  left_wins$6;
+    reg  left_wins$7;
+    reg  left_wins$8;
+    reg  left_wins$9;
+    reg  left_wins$10;
+    reg  left_wins$11;
+    reg  left_wins$12;
+    reg  left_wins$13;
+    reg  left_wins$14;
+    reg  left_wins$15;
+    reg  left_wins$16;
+    reg  left_wins$17;
+    reg  left_wins$18;
+    reg  left_wins$19;
+    reg  left_wins$20;
+    reg  left_wins$21;
+    reg  left_wins$22;
+    reg  left_wins$23;
+    reg  left_wins$24;
+    reg  left_wins$25;
+    reg  left_wins$26;
+    reg  left_wins$27;
+    reg  left_wins$28;
+    reg  left_wins$29;
+    reg  left_wins$30;
 
     // Sub module instances
     fcc_sort_net__filter__min_tree__node__0_k7_668cf05b node$0(
@@ -39541,295 +40139,2295 @@ module fcc_sort_net__filter__min_tree_k7_668cf05b(clk,hit$0,hit$1,hit$2,hit$3,hi
         .q(node$62$q),
         .clock(node$62$clock)
     );
+    fcc_sort_net__filter__min_tree__flagged__0_k7_668cf05b flagged$0(
+        .d(flagged$0$d),
+        .q(flagged$0$q),
+        .clock(flagged$0$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__1_k7_668cf05b flagged$1(
+        .d(flagged$1$d),
+        .q(flagged$1$q),
+        .clock(flagged$1$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__2_k7_668cf05b flagged$2(
+        .d(flagged$2$d),
+        .q(flagged$2$q),
+        .clock(flagged$2$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__3_k7_668cf05b flagged$3(
+        .d(flagged$3$d),
+        .q(flagged$3$q),
+        .clock(flagged$3$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__4_k7_668cf05b flagged$4(
+        .d(flagged$4$d),
+        .q(flagged$4$q),
+        .clock(flagged$4$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__5_k7_668cf05b flagged$5(
+        .d(flagged$5$d),
+        .q(flagged$5$q),
+        .clock(flagged$5$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__6_k7_668cf05b flagged$6(
+        .d(flagged$6$d),
+        .q(flagged$6$q),
+        .clock(flagged$6$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__7_k7_668cf05b flagged$7(
+        .d(flagged$7$d),
+        .q(flagged$7$q),
+        .clock(flagged$7$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__8_k7_668cf05b flagged$8(
+        .d(flagged$8$d),
+        .q(flagged$8$q),
+        .clock(flagged$8$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__9_k7_668cf05b flagged$9(
+        .d(flagged$9$d),
+        .q(flagged$9$q),
+        .clock(flagged$9$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__10_k7_668cf05b flagged$10(
+        .d(flagged$10$d),
+        .q(flagged$10$q),
+        .clock(flagged$10$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__11_k7_668cf05b flagged$11(
+        .d(flagged$11$d),
+        .q(flagged$11$q),
+        .clock(flagged$11$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__12_k7_668cf05b flagged$12(
+        .d(flagged$12$d),
+        .q(flagged$12$q),
+        .clock(flagged$12$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__13_k7_668cf05b flagged$13(
+        .d(flagged$13$d),
+        .q(flagged$13$q),
+        .clock(flagged$13$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__14_k7_668cf05b flagged$14(
+        .d(flagged$14$d),
+        .q(flagged$14$q),
+        .clock(flagged$14$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__15_k7_668cf05b flagged$15(
+        .d(flagged$15$d),
+        .q(flagged$15$q),
+        .clock(flagged$15$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__16_k7_668cf05b flagged$16(
+        .d(flagged$16$d),
+        .q(flagged$16$q),
+        .clock(flagged$16$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__17_k7_668cf05b flagged$17(
+        .d(flagged$17$d),
+        .q(flagged$17$q),
+        .clock(flagged$17$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__18_k7_668cf05b flagged$18(
+        .d(flagged$18$d),
+        .q(flagged$18$q),
+        .clock(flagged$18$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__19_k7_668cf05b flagged$19(
+        .d(flagged$19$d),
+        .q(flagged$19$q),
+        .clock(flagged$19$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__20_k7_668cf05b flagged$20(
+        .d(flagged$20$d),
+        .q(flagged$20$q),
+        .clock(flagged$20$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__21_k7_668cf05b flagged$21(
+        .d(flagged$21$d),
+        .q(flagged$21$q),
+        .clock(flagged$21$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__22_k7_668cf05b flagged$22(
+        .d(flagged$22$d),
+        .q(flagged$22$q),
+        .clock(flagged$22$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__23_k7_668cf05b flagged$23(
+        .d(flagged$23$d),
+        .q(flagged$23$q),
+        .clock(flagged$23$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__24_k7_668cf05b flagged$24(
+        .d(flagged$24$d),
+        .q(flagged$24$q),
+        .clock(flagged$24$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__25_k7_668cf05b flagged$25(
+        .d(flagged$25$d),
+        .q(flagged$25$q),
+        .clock(flagged$25$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__26_k7_668cf05b flagged$26(
+        .d(flagged$26$d),
+        .q(flagged$26$q),
+        .clock(flagged$26$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__27_k7_668cf05b flagged$27(
+        .d(flagged$27$d),
+        .q(flagged$27$q),
+        .clock(flagged$27$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__28_k7_668cf05b flagged$28(
+        .d(flagged$28$d),
+        .q(flagged$28$q),
+        .clock(flagged$28$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__29_k7_668cf05b flagged$29(
+        .d(flagged$29$d),
+        .q(flagged$29$q),
+        .clock(flagged$29$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__30_k7_668cf05b flagged$30(
+        .d(flagged$30$d),
+        .q(flagged$30$q),
+        .clock(flagged$30$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__31_k7_668cf05b flagged$31(
+        .d(flagged$31$d),
+        .q(flagged$31$q),
+        .clock(flagged$31$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__32_k7_668cf05b flagged$32(
+        .d(flagged$32$d),
+        .q(flagged$32$q),
+        .clock(flagged$32$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__33_k7_668cf05b flagged$33(
+        .d(flagged$33$d),
+        .q(flagged$33$q),
+        .clock(flagged$33$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__34_k7_668cf05b flagged$34(
+        .d(flagged$34$d),
+        .q(flagged$34$q),
+        .clock(flagged$34$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__35_k7_668cf05b flagged$35(
+        .d(flagged$35$d),
+        .q(flagged$35$q),
+        .clock(flagged$35$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__36_k7_668cf05b flagged$36(
+        .d(flagged$36$d),
+        .q(flagged$36$q),
+        .clock(flagged$36$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__37_k7_668cf05b flagged$37(
+        .d(flagged$37$d),
+        .q(flagged$37$q),
+        .clock(flagged$37$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__38_k7_668cf05b flagged$38(
+        .d(flagged$38$d),
+        .q(flagged$38$q),
+        .clock(flagged$38$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__39_k7_668cf05b flagged$39(
+        .d(flagged$39$d),
+        .q(flagged$39$q),
+        .clock(flagged$39$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__40_k7_668cf05b flagged$40(
+        .d(flagged$40$d),
+        .q(flagged$40$q),
+        .clock(flagged$40$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__41_k7_668cf05b flagged$41(
+        .d(flagged$41$d),
+        .q(flagged$41$q),
+        .clock(flagged$41$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__42_k7_668cf05b flagged$42(
+        .d(flagged$42$d),
+        .q(flagged$42$q),
+        .clock(flagged$42$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__43_k7_668cf05b flagged$43(
+        .d(flagged$43$d),
+        .q(flagged$43$q),
+        .clock(flagged$43$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__44_k7_668cf05b flagged$44(
+        .d(flagged$44$d),
+        .q(flagged$44$q),
+        .clock(flagged$44$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__45_k7_668cf05b flagged$45(
+        .d(flagged$45$d),
+        .q(flagged$45$q),
+        .clock(flagged$45$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__46_k7_668cf05b flagged$46(
+        .d(flagged$46$d),
+        .q(flagged$46$q),
+        .clock(flagged$46$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__47_k7_668cf05b flagged$47(
+        .d(flagged$47$d),
+        .q(flagged$47$q),
+        .clock(flagged$47$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__48_k7_668cf05b flagged$48(
+        .d(flagged$48$d),
+        .q(flagged$48$q),
+        .clock(flagged$48$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__49_k7_668cf05b flagged$49(
+        .d(flagged$49$d),
+        .q(flagged$49$q),
+        .clock(flagged$49$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__50_k7_668cf05b flagged$50(
+        .d(flagged$50$d),
+        .q(flagged$50$q),
+        .clock(flagged$50$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__51_k7_668cf05b flagged$51(
+        .d(flagged$51$d),
+        .q(flagged$51$q),
+        .clock(flagged$51$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__52_k7_668cf05b flagged$52(
+        .d(flagged$52$d),
+        .q(flagged$52$q),
+        .clock(flagged$52$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__53_k7_668cf05b flagged$53(
+        .d(flagged$53$d),
+        .q(flagged$53$q),
+        .clock(flagged$53$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__54_k7_668cf05b flagged$54(
+        .d(flagged$54$d),
+        .q(flagged$54$q),
+        .clock(flagged$54$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__55_k7_668cf05b flagged$55(
+        .d(flagged$55$d),
+        .q(flagged$55$q),
+        .clock(flagged$55$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__56_k7_668cf05b flagged$56(
+        .d(flagged$56$d),
+        .q(flagged$56$q),
+        .clock(flagged$56$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__57_k7_668cf05b flagged$57(
+        .d(flagged$57$d),
+        .q(flagged$57$q),
+        .clock(flagged$57$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__58_k7_668cf05b flagged$58(
+        .d(flagged$58$d),
+        .q(flagged$58$q),
+        .clock(flagged$58$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__59_k7_668cf05b flagged$59(
+        .d(flagged$59$d),
+        .q(flagged$59$q),
+        .clock(flagged$59$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__60_k7_668cf05b flagged$60(
+        .d(flagged$60$d),
+        .q(flagged$60$q),
+        .clock(flagged$60$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__61_k7_668cf05b flagged$61(
+        .d(flagged$61$d),
+        .q(flagged$61$q),
+        .clock(flagged$61$clock)
+    );
+    fcc_sort_net__filter__min_tree__flagged__62_k7_668cf05b flagged$62(
+        .d(flagged$62$d),
+        .q(flagged$62$q),
+        .clock(flagged$62$clock)
+    );
+    fcc_sort_net__filter__min_tree__winner__0_k7_668cf05b winner$0(
+        .d(winner$0$d),
+        .q(winner$0$q),
+        .clock(winner$0$clock)
+    );
+    fcc_sort_net__filter__min_tree__winner__1_k7_668cf05b winner$1(
+        .d(winner$1$d),
+        .q(winner$1$q),
+        .clock(winner$1$clock)
+    );
+    fcc_sort_net__filter__min_tree__winner__2_k7_668cf05b winner$2(
+        .d(winner$2$d),
+        .q(winner$2$q),
+        .clock(winner$2$clock)
+    );
+    fcc_sort_net__filter__min_tree__winner__3_k7_668cf05b winner$3(
+        .d(winner$3$d),
+        .q(winner$3$q),
+        .clock(winner$3$clock)
+    );
+    fcc_sort_net__filter__min_tree__winner__4_k7_668cf05b winner$4(
+        .d(winner$4$d),
+        .q(winner$4$q),
+        .clock(winner$4$clock)
+    );
+    fcc_sort_net__filter__min_tree__winner__5_k7_668cf05b winner$5(
+        .d(winner$5$d),
+        .q(winner$5$q),
+        .clock(winner$5$clock)
+    );
+    fcc_sort_net__filter__min_tree__winner__6_k7_668cf05b winner$6(
+        .d(winner$6$d),
+        .q(winner$6$q),
+        .clock(winner$6$clock)
+    );
+    fcc_sort_net__filter__min_tree__winner__7_k7_668cf05b winner$7(
+        .d(winner$7$d),
+        .q(winner$7$q),
+        .clock(winner$7$clock)
+    );
+    fcc_sort_net__filter__min_tree__winner__8_k7_668cf05b winner$8(
+        .d(winner$8$d),
+        .q(winner$8$q),
+        .clock(winner$8$clock)
+    );
+    fcc_sort_net__filter__min_tree__winner__9_k7_668cf05b winner$9(
+        .d(winner$9$d),
+        .q(winner$9$q),
+        .clock(winner$9$clock)
+    );
+    fcc_sort_net__filter__min_tree__winner__10_k7_668cf05b winner$10(
+        .d(winner$10$d),
+        .q(winner$10$q),
+        .clock(winner$10$clock)
+    );
+    fcc_sort_net__filter__min_tree__winner__11_k7_668cf05b winner$11(
+        .d(winner$11$d),
+        .q(winner$11$q),
+        .clock(winner$11$clock)
+    );
+    fcc_sort_net__filter__min_tree__winner__12_k7_668cf05b winner$12(
+        .d(winner$12$d),
+        .q(winner$12$q),
+        .clock(winner$12$clock)
+    );
+    fcc_sort_net__filter__min_tree__winner__13_k7_668cf05b winner$13(
+        .d(winner$13$d),
+        .q(winner$13$q),
+        .clock(winner$13$clock)
+    );
+    fcc_sort_net__filter__min_tree__winner__14_k7_668cf05b winner$14(
+        .d(winner$14$d),
+        .q(winner$14$q),
+        .clock(winner$14$clock)
+    );
+    fcc_sort_net__filter__min_tree__winner__15_k7_668cf05b winner$15(
+        .d(winner$15$d),
+        .q(winner$15$q),
+        .clock(winner$15$clock)
+    );
+    fcc_sort_net__filter__min_tree__winner__16_k7_668cf05b winner$16(
+        .d(winner$16$d),
+        .q(winner$16$q),
+        .clock(winner$16$clock)
+    );
+    fcc_sort_net__filter__min_tree__winner__17_k7_668cf05b winner$17(
+        .d(winner$17$d),
+        .q(winner$17$q),
+        .clock(winner$17$clock)
+    );
+    fcc_sort_net__filter__min_tree__winner__18_k7_668cf05b winner$18(
+        .d(winner$18$d),
+        .q(winner$18$q),
+        .clock(winner$18$clock)
+    );
+    fcc_sort_net__filter__min_tree__winner__19_k7_668cf05b winner$19(
+        .d(winner$19$d),
+        .q(winner$19$q),
+        .clock(winner$19$clock)
+    );
+    fcc_sort_net__filter__min_tree__winner__20_k7_668cf05b winner$20(
+        .d(winner$20$d),
+        .q(winner$20$q),
+        .clock(winner$20$clock)
+    );
+    fcc_sort_net__filter__min_tree__winner__21_k7_668cf05b winner$21(
+        .d(winner$21$d),
+        .q(winner$21$q),
+        .clock(winner$21$clock)
+    );
+    fcc_sort_net__filter__min_tree__winner__22_k7_668cf05b winner$22(
+        .d(winner$22$d),
+        .q(winner$22$q),
+        .clock(winner$22$clock)
+    );
+    fcc_sort_net__filter__min_tree__winner__23_k7_668cf05b winner$23(
+        .d(winner$23$d),
+        .q(winner$23$q),
+        .clock(winner$23$clock)
+    );
+    fcc_sort_net__filter__min_tree__winner__24_k7_668cf05b winner$24(
+        .d(winner$24$d),
+        .q(winner$24$q),
+        .clock(winner$24$clock)
+    );
+    fcc_sort_net__filter__min_tree__winner__25_k7_668cf05b winner$25(
+        .d(winner$25$d),
+        .q(winner$25$q),
+        .clock(winner$25$clock)
+    );
+    fcc_sort_net__filter__min_tree__winner__26_k7_668cf05b winner$26(
+        .d(winner$26$d),
+        .q(winner$26$q),
+        .clock(winner$26$clock)
+    );
+    fcc_sort_net__filter__min_tree__winner__27_k7_668cf05b winner$27(
+        .d(winner$27$d),
+        .q(winner$27$q),
+        .clock(winner$27$clock)
+    );
+    fcc_sort_net__filter__min_tree__winner__28_k7_668cf05b winner$28(
+        .d(winner$28$d),
+        .q(winner$28$q),
+        .clock(winner$28$clock)
+    );
+    fcc_sort_net__filter__min_tree__winner__29_k7_668cf05b winner$29(
+        .d(winner$29$d),
+        .q(winner$29$q),
+        .clock(winner$29$clock)
+    );
+    fcc_sort_net__filter__min_tree__winner__30_k7_668cf05b winner$30(
+        .d(winner$30$d),
+        .q(winner$30$q),
+        .clock(winner$30$clock)
+    );
 
     // Update code
     always @(*) begin
         node$0$clock = clk;
+        flagged$0$clock = clk;
         node$1$clock = clk;
+        flagged$1$clock = clk;
         node$2$clock = clk;
+        flagged$2$clock = clk;
         node$3$clock = clk;
+        flagged$3$clock = clk;
         node$4$clock = clk;
+        flagged$4$clock = clk;
         node$5$clock = clk;
+        flagged$5$clock = clk;
         node$6$clock = clk;
+        flagged$6$clock = clk;
         node$7$clock = clk;
+        flagged$7$clock = clk;
         node$8$clock = clk;
+        flagged$8$clock = clk;
         node$9$clock = clk;
+        flagged$9$clock = clk;
         node$10$clock = clk;
+        flagged$10$clock = clk;
         node$11$clock = clk;
+        flagged$11$clock = clk;
         node$12$clock = clk;
+        flagged$12$clock = clk;
         node$13$clock = clk;
+        flagged$13$clock = clk;
         node$14$clock = clk;
+        flagged$14$clock = clk;
         node$15$clock = clk;
+        flagged$15$clock = clk;
         node$16$clock = clk;
+        flagged$16$clock = clk;
         node$17$clock = clk;
+        flagged$17$clock = clk;
         node$18$clock = clk;
+        flagged$18$clock = clk;
         node$19$clock = clk;
+        flagged$19$clock = clk;
         node$20$clock = clk;
+        flagged$20$clock = clk;
         node$21$clock = clk;
+        flagged$21$clock = clk;
         node$22$clock = clk;
+        flagged$22$clock = clk;
         node$23$clock = clk;
+        flagged$23$clock = clk;
         node$24$clock = clk;
+        flagged$24$clock = clk;
         node$25$clock = clk;
+        flagged$25$clock = clk;
         node$26$clock = clk;
+        flagged$26$clock = clk;
         node$27$clock = clk;
+        flagged$27$clock = clk;
         node$28$clock = clk;
+        flagged$28$clock = clk;
         node$29$clock = clk;
+        flagged$29$clock = clk;
         node$30$clock = clk;
+        flagged$30$clock = clk;
         node$31$clock = clk;
+        flagged$31$clock = clk;
         node$32$clock = clk;
+        flagged$32$clock = clk;
         node$33$clock = clk;
+        flagged$33$clock = clk;
         node$34$clock = clk;
+        flagged$34$clock = clk;
         node$35$clock = clk;
+        flagged$35$clock = clk;
         node$36$clock = clk;
+        flagged$36$clock = clk;
         node$37$clock = clk;
+        flagged$37$clock = clk;
         node$38$clock = clk;
+        flagged$38$clock = clk;
         node$39$clock = clk;
+        flagged$39$clock = clk;
         node$40$clock = clk;
+        flagged$40$clock = clk;
         node$41$clock = clk;
+        flagged$41$clock = clk;
         node$42$clock = clk;
+        flagged$42$clock = clk;
         node$43$clock = clk;
+        flagged$43$clock = clk;
         node$44$clock = clk;
+        flagged$44$clock = clk;
         node$45$clock = clk;
+        flagged$45$clock = clk;
         node$46$clock = clk;
+        flagged$46$clock = clk;
         node$47$clock = clk;
+        flagged$47$clock = clk;
         node$48$clock = clk;
+        flagged$48$clock = clk;
         node$49$clock = clk;
+        flagged$49$clock = clk;
         node$50$clock = clk;
+        flagged$50$clock = clk;
         node$51$clock = clk;
+        flagged$51$clock = clk;
         node$52$clock = clk;
+        flagged$52$clock = clk;
         node$53$clock = clk;
+        flagged$53$clock = clk;
         node$54$clock = clk;
+        flagged$54$clock = clk;
         node$55$clock = clk;
+        flagged$55$clock = clk;
         node$56$clock = clk;
+        flagged$56$clock = clk;
         node$57$clock = clk;
+        flagged$57$clock = clk;
         node$58$clock = clk;
+        flagged$58$clock = clk;
         node$59$clock = clk;
+        flagged$59$clock = clk;
         node$60$clock = clk;
+        flagged$60$clock = clk;
         node$61$clock = clk;
+        flagged$61$clock = clk;
         node$62$clock = clk;
+        flagged$62$clock = clk;
+        winner$0$clock = clk;
+        winner$1$clock = clk;
+        winner$2$clock = clk;
+        winner$3$clock = clk;
+        winner$4$clock = clk;
+        winner$5$clock = clk;
+        winner$6$clock = clk;
+        winner$7$clock = clk;
+        winner$8$clock = clk;
+        winner$9$clock = clk;
+        winner$10$clock = clk;
+        winner$11$clock = clk;
+        winner$12$clock = clk;
+        winner$13$clock = clk;
+        winner$14$clock = clk;
+        winner$15$clock = clk;
+        winner$16$clock = clk;
+        winner$17$clock = clk;
+        winner$18$clock = clk;
+        winner$19$clock = clk;
+        winner$20$clock = clk;
+        winner$21$clock = clk;
+        winner$22$clock = clk;
+        winner$23$clock = clk;
+        winner$24$clock = clk;
+        winner$25$clock = clk;
+        winner$26$clock = clk;
+        winner$27$clock = clk;
+        winner$28$clock = clk;
+        winner$29$clock = clk;
+        winner$30$clock = clk;
         node$31$d = all_ones;
         if (hit$0) begin
             node$31$d = value$0;
         end
+        flagged$31$d = hit$0;
         node$32$d = all_ones;
         if (hit$1) begin
             node$32$d = value$1;
         end
+        flagged$32$d = hit$1;
         node$33$d = all_ones;
         if (hit$2) begin
             node$33$d = value$2;
         end
+        flagged$33$d = hit$2;
         node$34$d = all_ones;
         if (hit$3) begin
             node$34$d = value$3;
         end
+        flagged$34$d = hit$3;
         node$35$d = all_ones;
         if (hit$4) begin
             node$35$d = value$4;
         end
+        flagged$35$d = hit$4;
         node$36$d = all_ones;
         if (hit$5) begin
             node$36$d = value$5;
         end
+        flagged$36$d = hit$5;
         node$37$d = all_ones;
         if (hit$6) begin
             node$37$d = value$6;
         end
+        flagged$37$d = hit$6;
         node$38$d = all_ones;
         if (hit$7) begin
             node$38$d = value$7;
         end
+        flagged$38$d = hit$7;
         node$39$d = all_ones;
         if (hit$8) begin
             node$39$d = value$8;
         end
+        flagged$39$d = hit$8;
         node$40$d = all_ones;
         if (hit$9) begin
             node$40$d = value$9;
         end
+        flagged$40$d = hit$9;
         node$41$d = all_ones;
         if (hit$10) begin
             node$41$d = value$10;
         end
+        flagged$41$d = hit$10;
         node$42$d = all_ones;
         if (hit$11) begin
             node$42$d = value$11;
         end
+        flagged$42$d = hit$11;
         node$43$d = all_ones;
         if (hit$12) begin
             node$43$d = value$12;
         end
+        flagged$43$d = hit$12;
         node$44$d = all_ones;
         if (hit$13) begin
             node$44$d = value$13;
         end
+        flagged$44$d = hit$13;
         node$45$d = all_ones;
         if (hit$14) begin
             node$45$d = value$14;
         end
+        flagged$45$d = hit$14;
         node$46$d = all_ones;
         if (hit$15) begin
             node$46$d = value$15;
         end
+        flagged$46$d = hit$15;
         node$47$d = all_ones;
         if (hit$16) begin
             node$47$d = value$16;
         end
+        flagged$47$d = hit$16;
         node$48$d = all_ones;
         if (hit$17) begin
             node$48$d = value$17;
         end
+        flagged$48$d = hit$17;
         node$49$d = all_ones;
         if (hit$18) begin
             node$49$d = value$18;
         end
+        flagged$49$d = hit$18;
         node$50$d = all_ones;
         if (hit$19) begin
             node$50$d = value$19;
         end
+        flagged$50$d = hit$19;
         node$51$d = all_ones;
         if (hit$20) begin
             node$51$d = value$20;
         end
+        flagged$51$d = hit$20;
         node$52$d = all_ones;
+        flagged$52$d = 1'b0;
         node$53$d = all_ones;
+        flagged$53$d = 1'b0;
         node$54$d = all_ones;
+        flagged$54$d = 1'b0;
         node$55$d = all_ones;
+        flagged$55$d = 1'b0;
         node$56$d = all_ones;
+        flagged$56$d = 1'b0;
         node$57$d = all_ones;
+        flagged$57$d = 1'b0;
         node$58$d = all_ones;
+        flagged$58$d = 1'b0;
         node$59$d = all_ones;
+        flagged$59$d = 1'b0;
         node$60$d = all_ones;
+        flagged$60$d = 1'b0;
         node$61$d = all_ones;
+        flagged$61$d = 1'b0;
         node$62$d = all_ones;
+        flagged$62$d = 1'b0;
+        left_wins$0 = (flagged$1$q & ~flagged$2$q) | ((flagged$1$q == flagged$2$q) & (node$1$q <= node$2$q));
         node$0$d = node$2$q;
-        if (node$1$q <= node$2$q) begin
+        if (left_wins$0) begin
             node$0$d = node$1$q;
         end
+        flagged$0$d = flagged$1$q | flagged$2$q;
+        left_wins$1 = (flagged$3$q & ~flagged$4$q) | ((flagged$3$q == flagged$4$q) & (node$3$q <= node$4$q));
         node$1$d = node$4$q;
-        if (node$3$q <= node$4$q) begin
+        if (left_wins$1) begin
             node$1$d = node$3$q;
         end
+        flagged$1$d = flagged$3$q | flagged$4$q;
+        left_wins$2 = (flagged$5$q & ~flagged$6$q) | ((flagged$5$q == flagged$6$q) & (node$5$q <= node$6$q));
         node$2$d = node$6$q;
-        if (node$5$q <= node$6$q) begin
+        if (left_wins$2) begin
             node$2$d = node$5$q;
         end
+        flagged$2$d = flagged$5$q | flagged$6$q;
+        left_wins$3 = (flagged$7$q & ~flagged$8$q) | ((flagged$7$q == flagged$8$q) & (node$7$q <= node$8$q));
         node$3$d = node$8$q;
-        if (node$7$q <= node$8$q) begin
+        if (left_wins$3) begin
             node$3$d = node$7$q;
         end
+        flagged$3$d = flagged$7$q | flagged$8$q;
+        left_wins$4 = (flagged$9$q & ~flagged$10$q) | ((flagged$9$q == flagged$10$q) & (node$9$q <= node$10$q));
         node$4$d = node$10$q;
-        if (node$9$q <= node$10$q) begin
+        if (left_wins$4) begin
             node$4$d = node$9$q;
         end
+        flagged$4$d = flagged$9$q | flagged$10$q;
+        left_wins$5 = (flagged$11$q & ~flagged$12$q) | ((flagged$11$q == flagged$12$q) & (node$11$q <= node$12$q));
         node$5$d = node$12$q;
-        if (node$11$q <= node$12$q) begin
+        if (left_wins$5) begin
             node$5$d = node$11$q;
         end
+        flagged$5$d = flagged$11$q | flagged$12$q;
+        left_wins$6 = (flagged$13$q & ~flagged$14$q) | ((flagged$13$q == flagged$14$q) & (node$13$q <= node$14$q));
         node$6$d = node$14$q;
-        if (node$13$q <= node$14$q) begin
+        if (left_wins$6) begin
             node$6$d = node$13$q;
         end
+        flagged$6$d = flagged$13$q | flagged$14$q;
+        left_wins$7 = (flagged$15$q & ~flagged$16$q) | ((flagged$15$q == flagged$16$q) & (node$15$q <= node$16$q));
         node$7$d = node$16$q;
-        if (node$15$q <= node$16$q) begin
+        if (left_wins$7) begin
             node$7$d = node$15$q;
         end
+        flagged$7$d = flagged$15$q | flagged$16$q;
+        left_wins$8 = (flagged$17$q & ~flagged$18$q) | ((flagged$17$q == flagged$18$q) & (node$17$q <= node$18$q));
         node$8$d = node$18$q;
-        if (node$17$q <= node$18$q) begin
+        if (left_wins$8) begin
             node$8$d = node$17$q;
         end
+        flagged$8$d = flagged$17$q | flagged$18$q;
+        left_wins$9 = (flagged$19$q & ~flagged$20$q) | ((flagged$19$q == flagged$20$q) & (node$19$q <= node$20$q));
         node$9$d = node$20$q;
-        if (node$19$q <= node$20$q) begin
+        if (left_wins$9) begin
             node$9$d = node$19$q;
         end
+        flagged$9$d = flagged$19$q | flagged$20$q;
+        left_wins$10 = (flagged$21$q & ~flagged$22$q) | ((flagged$21$q == flagged$22$q) & (node$21$q <= node$22$q));
         node$10$d = node$22$q;
-        if (node$21$q <= node$22$q) begin
+        if (left_wins$10) begin
             node$10$d = node$21$q;
         end
+        flagged$10$d = flagged$21$q | flagged$22$q;
+        left_wins$11 = (flagged$23$q & ~flagged$24$q) | ((flagged$23$q == flagged$24$q) & (node$23$q <= node$24$q));
         node$11$d = node$24$q;
-        if (node$23$q <= node$24$q) begin
+        if (left_wins$11) begin
             node$11$d = node$23$q;
         end
+        flagged$11$d = flagged$23$q | flagged$24$q;
+        left_wins$12 = (flagged$25$q & ~flagged$26$q) | ((flagged$25$q == flagged$26$q) & (node$25$q <= node$26$q));
         node$12$d = node$26$q;
-        if (node$25$q <= node$26$q) begin
+        if (left_wins$12) begin
             node$12$d = node$25$q;
         end
+        flagged$12$d = flagged$25$q | flagged$26$q;
+        left_wins$13 = (flagged$27$q & ~flagged$28$q) | ((flagged$27$q == flagged$28$q) & (node$27$q <= node$28$q));
         node$13$d = node$28$q;
-        if (node$27$q <= node$28$q) begin
+        if (left_wins$13) begin
             node$13$d = node$27$q;
         end
+        flagged$13$d = flagged$27$q | flagged$28$q;
+        left_wins$14 = (flagged$29$q & ~flagged$30$q) | ((flagged$29$q == flagged$30$q) & (node$29$q <= node$30$q));
         node$14$d = node$30$q;
-        if (node$29$q <= node$30$q) begin
+        if (left_wins$14) begin
             node$14$d = node$29$q;
         end
+        flagged$14$d = flagged$29$q | flagged$30$q;
+        left_wins$15 = (flagged$31$q & ~flagged$32$q) | ((flagged$31$q == flagged$32$q) & (node$31$q <= node$32$q));
         node$15$d = node$32$q;
-        if (node$31$q <= node$32$q) begin
+        if (left_wins$15) begin
             node$15$d = node$31$q;
         end
+        flagged$15$d = flagged$31$q | flagged$32$q;
+        left_wins$16 = (flagged$33$q & ~flagged$34$q) | ((flagged$33$q == flagged$34$q) & (node$33$q <= node$34$q));
         node$16$d = node$34$q;
-        if (node$33$q <= node$34$q) begin
+        if (left_wins$16) begin
             node$16$d = node$33$q;
         end
+        flagged$16$d = flagged$33$q | flagged$34$q;
+        left_wins$17 = (flagged$35$q & ~flagged$36$q) | ((flagged$35$q == flagged$36$q) & (node$35$q <= node$36$q));
         node$17$d = node$36$q;
-        if (node$35$q <= node$36$q) begin
+        if (left_wins$17) begin
             node$17$d = node$35$q;
         end
+        flagged$17$d = flagged$35$q | flagged$36$q;
+        left_wins$18 = (flagged$37$q & ~flagged$38$q) | ((flagged$37$q == flagged$38$q) & (node$37$q <= node$38$q));
         node$18$d = node$38$q;
-        if (node$37$q <= node$38$q) begin
+        if (left_wins$18) begin
             node$18$d = node$37$q;
         end
+        flagged$18$d = flagged$37$q | flagged$38$q;
+        left_wins$19 = (flagged$39$q & ~flagged$40$q) | ((flagged$39$q == flagged$40$q) & (node$39$q <= node$40$q));
         node$19$d = node$40$q;
-        if (node$39$q <= node$40$q) begin
+        if (left_wins$19) begin
             node$19$d = node$39$q;
         end
+        flagged$19$d = flagged$39$q | flagged$40$q;
+        left_wins$20 = (flagged$41$q & ~flagged$42$q) | ((flagged$41$q == flagged$42$q) & (node$41$q <= node$42$q));
         node$20$d = node$42$q;
-        if (node$41$q <= node$42$q) begin
+        if (left_wins$20) begin
             node$20$d = node$41$q;
         end
+        flagged$20$d = flagged$41$q | flagged$42$q;
+        left_wins$21 = (flagged$43$q & ~flagged$44$q) | ((flagged$43$q == flagged$44$q) & (node$43$q <= node$44$q));
         node$21$d = node$44$q;
-        if (node$43$q <= node$44$q) begin
+        if (left_wins$21) begin
             node$21$d = node$43$q;
         end
+        flagged$21$d = flagged$43$q | flagged$44$q;
+        left_wins$22 = (flagged$45$q & ~flagged$46$q) | ((flagged$45$q == flagged$46$q) & (node$45$q <= node$46$q));
         node$22$d = node$46$q;
-        if (node$45$q <= node$46$q) begin
+        if (left_wins$22) begin
             node$22$d = node$45$q;
         end
+        flagged$22$d = flagged$45$q | flagged$46$q;
+        left_wins$23 = (flagged$47$q & ~flagged$48$q) | ((flagged$47$q == flagged$48$q) & (node$47$q <= node$48$q));
         node$23$d = node$48$q;
-        if (node$47$q <= node$48$q) begin
+        if (left_wins$23) begin
             node$23$d = node$47$q;
         end
+        flagged$23$d = flagged$47$q | flagged$48$q;
+        left_wins$24 = (flagged$49$q & ~flagged$50$q) | ((flagged$49$q == flagged$50$q) & (node$49$q <= node$50$q));
         node$24$d = node$50$q;
-        if (node$49$q <= node$50$q) begin
+        if (left_wins$24) begin
             node$24$d = node$49$q;
         end
+        flagged$24$d = flagged$49$q | flagged$50$q;
+        left_wins$25 = (flagged$51$q & ~flagged$52$q) | ((flagged$51$q == flagged$52$q) & (node$51$q <= node$52$q));
         node$25$d = node$52$q;
-        if (node$51$q <= node$52$q) begin
+        if (left_wins$25) begin
             node$25$d = node$51$q;
         end
+        flagged$25$d = flagged$51$q | flagged$52$q;
+        left_wins$26 = (flagged$53$q & ~flagged$54$q) | ((flagged$53$q == flagged$54$q) & (node$53$q <= node$54$q));
         node$26$d = node$54$q;
-        if (node$53$q <= node$54$q) begin
+        if (left_wins$26) begin
             node$26$d = node$53$q;
         end
+        flagged$26$d = flagged$53$q | flagged$54$q;
+        left_wins$27 = (flagged$55$q & ~flagged$56$q) | ((flagged$55$q == flagged$56$q) & (node$55$q <= node$56$q));
         node$27$d = node$56$q;
-        if (node$55$q <= node$56$q) begin
+        if (left_wins$27) begin
             node$27$d = node$55$q;
         end
+        flagged$27$d = flagged$55$q | flagged$56$q;
+        left_wins$28 = (flagged$57$q & ~flagged$58$q) | ((flagged$57$q == flagged$58$q) & (node$57$q <= node$58$q));
         node$28$d = node$58$q;
-        if (node$57$q <= node$58$q) begin
+        if (left_wins$28) begin
             node$28$d = node$57$q;
         end
+        flagged$28$d = flagged$57$q | flagged$58$q;
+        left_wins$29 = (flagged$59$q & ~flagged$60$q) | ((flagged$59$q == flagged$60$q) & (node$59$q <= node$60$q));
         node$29$d = node$60$q;
-        if (node$59$q <= node$60$q) begin
+        if (left_wins$29) begin
             node$29$d = node$59$q;
         end
+        flagged$29$d = flagged$59$q | flagged$60$q;
+        left_wins$30 = (flagged$61$q & ~flagged$62$q) | ((flagged$61$q == flagged$62$q) & (node$61$q <= node$62$q));
         node$30$d = node$62$q;
-        if (node$61$q <= node$62$q) begin
+        if (left_wins$30) begin
             node$30$d = node$61$q;
         end
+        flagged$30$d = flagged$61$q | flagged$62$q;
+        winner$15$d = position$1;
+        if (left_wins$15) begin
+            winner$15$d = position$0;
+        end
+        winner$16$d = position$3;
+        if (left_wins$16) begin
+            winner$16$d = position$2;
+        end
+        winner$17$d = position$5;
+        if (left_wins$17) begin
+            winner$17$d = position$4;
+        end
+        winner$18$d = position$7;
+        if (left_wins$18) begin
+            winner$18$d = position$6;
+        end
+        winner$19$d = position$9;
+        if (left_wins$19) begin
+            winner$19$d = position$8;
+        end
+        winner$20$d = position$11;
+        if (left_wins$20) begin
+            winner$20$d = position$10;
+        end
+        winner$21$d = position$13;
+        if (left_wins$21) begin
+            winner$21$d = position$12;
+        end
+        winner$22$d = position$15;
+        if (left_wins$22) begin
+            winner$22$d = position$14;
+        end
+        winner$23$d = position$17;
+        if (left_wins$23) begin
+            winner$23$d = position$16;
+        end
+        winner$24$d = position$19;
+        if (left_wins$24) begin
+            winner$24$d = position$18;
+        end
+        winner$25$d = position$21;
+        if (left_wins$25) begin
+            winner$25$d = position$20;
+        end
+        winner$26$d = position$23;
+        if (left_wins$26) begin
+            winner$26$d = position$22;
+        end
+        winner$27$d = position$25;
+        if (left_wins$27) begin
+            winner$27$d = position$24;
+        end
+        winner$28$d = position$27;
+        if (left_wins$28) begin
+            winner$28$d = position$26;
+        end
+        winner$29$d = position$29;
+        if (left_wins$29) begin
+            winner$29$d = position$28;
+        end
+        winner$30$d = position$31;
+        if (left_wins$30) begin
+            winner$30$d = position$30;
+        end
+        winner$0$d = winner$2$q;
+        if (left_wins$0) begin
+            winner$0$d = winner$1$q;
+        end
+        winner$1$d = winner$4$q;
+        if (left_wins$1) begin
+            winner$1$d = winner$3$q;
+        end
+        winner$2$d = winner$6$q;
+        if (left_wins$2) begin
+            winner$2$d = winner$5$q;
+        end
+        winner$3$d = winner$8$q;
+        if (left_wins$3) begin
+            winner$3$d = winner$7$q;
+        end
+        winner$4$d = winner$10$q;
+        if (left_wins$4) begin
+            winner$4$d = winner$9$q;
+        end
+        winner$5$d = winner$12$q;
+        if (left_wins$5) begin
+            winner$5$d = winner$11$q;
+        end
+        winner$6$d = winner$14$q;
+        if (left_wins$6) begin
+            winner$6$d = winner$13$q;
+        end
+        winner$7$d = winner$16$q;
+        if (left_wins$7) begin
+            winner$7$d = winner$15$q;
+        end
+        winner$8$d = winner$18$q;
+        if (left_wins$8) begin
+            winner$8$d = winner$17$q;
+        end
+        winner$9$d = winner$20$q;
+        if (left_wins$9) begin
+            winner$9$d = winner$19$q;
+        end
+        winner$10$d = winner$22$q;
+        if (left_wins$10) begin
+            winner$10$d = winner$21$q;
+        end
+        winner$11$d = winner$24$q;
+        if (left_wins$11) begin
+            winner$11$d = winner$23$q;
+        end
+        winner$12$d = winner$26$q;
+        if (left_wins$12) begin
+            winner$12$d = winner$25$q;
+        end
+        winner$13$d = winner$28$q;
+        if (left_wins$13) begin
+            winner$13$d = winner$27$q;
+        end
+        winner$14$d = winner$30$q;
+        if (left_wins$14) begin
+            winner$14$d = winner$29$q;
+        end
         min = node$0$q;
+        first$0 = flagged$0$q & (winner$0$q == position$0);
+        first$1 = flagged$0$q & (winner$0$q == position$1);
+        first$2 = flagged$0$q & (winner$0$q == position$2);
+        first$3 = flagged$0$q & (winner$0$q == position$3);
+        first$4 = flagged$0$q & (winner$0$q == position$4);
+        first$5 = flagged$0$q & (winner$0$q == position$5);
+        first$6 = flagged$0$q & (winner$0$q == position$6);
+        first$7 = flagged$0$q & (winner$0$q == position$7);
+        first$8 = flagged$0$q & (winner$0$q == position$8);
+        first$9 = flagged$0$q & (winner$0$q == position$9);
+        first$10 = flagged$0$q & (winner$0$q == position$10);
+        first$11 = flagged$0$q & (winner$0$q == position$11);
+        first$12 = flagged$0$q & (winner$0$q == position$12);
+        first$13 = flagged$0$q & (winner$0$q == position$13);
+        first$14 = flagged$0$q & (winner$0$q == position$14);
+        first$15 = flagged$0$q & (winner$0$q == position$15);
+        first$16 = flagged$0$q & (winner$0$q == position$16);
+        first$17 = flagged$0$q & (winner$0$q == position$17);
+        first$18 = flagged$0$q & (winner$0$q == position$18);
+        first$19 = flagged$0$q & (winner$0$q == position$19);
+        first$20 = flagged$0$q & (winner$0$q == position$20);
     end
 
 endmodule // fcc_sort_net__filter__min_tree_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__0_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__0_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__1_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__10_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__10_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__11_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__11_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__12_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__12_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__13_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__13_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__14_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__14_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__15_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__15_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__16_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__16_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__17_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__17_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__18_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__18_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__19_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__19_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__2_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__20_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__20_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__21_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__21_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__22_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__22_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__23_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__23_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__24_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__24_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__25_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__25_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__26_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__26_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__27_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__27_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__28_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__28_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__29_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__29_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__3_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__3_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__30_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__30_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__31_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__31_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__32_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__32_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__33_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__33_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__34_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__34_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__35_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__35_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__36_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__36_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__37_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__37_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__38_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__38_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__39_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__39_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__4_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__4_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__40_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__40_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__41_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__41_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__42_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__42_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__43_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__43_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__44_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__44_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__45_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__45_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__46_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__46_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__47_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__47_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__48_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__48_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__49_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__49_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__5_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__5_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__50_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__50_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__51_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__51_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__52_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__52_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__53_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__53_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__54_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__54_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__55_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__55_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__56_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__56_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__57_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__57_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__58_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__58_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__59_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__59_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__6_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__6_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__60_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__60_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__61_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__61_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__62_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__62_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__7_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__7_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__8_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__8_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__flagged__9_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__flagged__9_k7_668cf05b
 
 
 module fcc_sort_net__filter__min_tree__node__0_k7_668cf05b(d,q,clock);
@@ -41029,6 +43627,595 @@ module fcc_sort_net__filter__min_tree__node__9_k7_668cf05b(d,q,clock);
 endmodule // fcc_sort_net__filter__min_tree__node__9_k7_668cf05b
 
 
+module fcc_sort_net__filter__min_tree__winner__0_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__winner__0_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__winner__1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__winner__1_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__winner__10_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__winner__10_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__winner__11_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__winner__11_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__winner__12_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__winner__12_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__winner__13_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__winner__13_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__winner__14_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__winner__14_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__winner__15_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__winner__15_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__winner__16_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__winner__16_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__winner__17_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__winner__17_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__winner__18_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__winner__18_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__winner__19_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__winner__19_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__winner__2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__winner__2_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__winner__20_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__winner__20_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__winner__21_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__winner__21_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__winner__22_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__winner__22_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__winner__23_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__winner__23_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__winner__24_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__winner__24_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__winner__25_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__winner__25_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__winner__26_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__winner__26_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__winner__27_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__winner__27_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__winner__28_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__winner__28_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__winner__29_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__winner__29_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__winner__3_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__winner__3_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__winner__30_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__winner__30_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__winner__4_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__winner__4_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__winner__5_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__winner__5_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__winner__6_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__winner__6_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__winner__7_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__winner__7_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__winner__8_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__winner__8_k7_668cf05b
+
+
+module fcc_sort_net__filter__min_tree__winner__9_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [5:0] d;
+    output reg  [5:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 6'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__min_tree__winner__9_k7_668cf05b
+
+
 module fcc_sort_net__filter__rec_push_q_k7_668cf05b(d,q,clock);
 
     // Module arguments
@@ -41124,6 +44311,158 @@ module fcc_sort_net__filter__rep_write_value_k7_668cf05b(d,q,clock);
 endmodule // fcc_sort_net__filter__rep_write_value_k7_668cf05b
 
 
+module fcc_sort_net__filter__ring_s1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__ring_s1_k7_668cf05b
+
+
+module fcc_sort_net__filter__ring_sm_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__ring_sm_k7_668cf05b
+
+
+module fcc_sort_net__filter__ring_sm1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__ring_sm1_k7_668cf05b
+
+
+module fcc_sort_net__filter__ring_sm2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__ring_sm2_k7_668cf05b
+
+
+module fcc_sort_net__filter__ring_tree__0_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__ring_tree__0_k7_668cf05b
+
+
+module fcc_sort_net__filter__ring_tree__1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__ring_tree__1_k7_668cf05b
+
+
+module fcc_sort_net__filter__ring_tree__2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__ring_tree__2_k7_668cf05b
+
+
+module fcc_sort_net__filter__ring_tree__3_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__ring_tree__3_k7_668cf05b
+
+
 module fcc_sort_net__filter__run_rep_k7_668cf05b(d,q,clock);
 
     // Module arguments
@@ -41181,7 +44520,7 @@ module fcc_sort_net__filter__run_rep_sm2_k7_668cf05b(d,q,clock);
 endmodule // fcc_sort_net__filter__run_rep_sm2_k7_668cf05b
 
 
-module fcc_sort_net__filter_rst_k7_668cf05b(clock,d,q);
+module fcc_sort_net__filter__tree_rst__0_k7_668cf05b(clock,d,q);
 
     // Module arguments
     input wire  clock;
@@ -41189,7 +44528,7 @@ module fcc_sort_net__filter_rst_k7_668cf05b(clock,d,q);
     output reg  q;
 
     // Update code (custom)
-    (* max_fanout = 64 *) reg held;
+    (* keep = "true" *) reg held;
     initial begin
         held = 1'h0;
     end
@@ -41199,7 +44538,175 @@ module fcc_sort_net__filter_rst_k7_668cf05b(clock,d,q);
     always @(*) begin
         q = held;
     end
-endmodule // fcc_sort_net__filter_rst_k7_668cf05b
+endmodule // fcc_sort_net__filter__tree_rst__0_k7_668cf05b
+
+
+module fcc_sort_net__filter__tree_rst__1_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_sort_net__filter__tree_rst__1_k7_668cf05b
+
+
+module fcc_sort_net__filter__tree_rst__2_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_sort_net__filter__tree_rst__2_k7_668cf05b
+
+
+module fcc_sort_net__filter__tree_rst__3_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_sort_net__filter__tree_rst__3_k7_668cf05b
+
+
+module fcc_sort_net__filter__tree_rst__4_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_sort_net__filter__tree_rst__4_k7_668cf05b
+
+
+module fcc_sort_net__filter__tree_rst__5_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_sort_net__filter__tree_rst__5_k7_668cf05b
+
+
+module fcc_sort_net__filter__tree_rst__6_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_sort_net__filter__tree_rst__6_k7_668cf05b
+
+
+module fcc_sort_net__filter__tree_rst__7_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_sort_net__filter__tree_rst__7_k7_668cf05b
+
+
+module fcc_sort_net__filter__valid_rst_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_sort_net__filter__valid_rst_k7_668cf05b
 
 
 module fcc_sort_net__join_queue_k7_668cf05b(clk,rst,clear,push,din,room,jv,ja,jb,jsame,jtake,empty,joins);
@@ -43366,50 +46873,18 @@ module fcc_sort_net__serializer__head_two_k7_668cf05b(x$0,x$1,x$2,x$3,x$4,x$5,x$
     output reg  two;
 
     // Update code (custom)
-    wire a_0_2 = x$0 | x$1;
-    wire t_0_2 = (x$0 & x$1);
-    wire a_3_5 = x$3 | x$4;
-    wire t_3_5 = (x$3 & x$4);
-    wire a_2_5 = x$2 | a_3_5;
-    wire t_2_5 = (x$2 & a_3_5) | t_3_5;
-    wire a_0_5 = a_0_2 | a_2_5;
-    wire t_0_5 = (a_0_2 & a_2_5) | t_0_2 | t_2_5;
-    wire a_5_7 = x$5 | x$6;
-    wire t_5_7 = (x$5 & x$6);
-    wire a_8_10 = x$8 | x$9;
-    wire t_8_10 = (x$8 & x$9);
-    wire a_7_10 = x$7 | a_8_10;
-    wire t_7_10 = (x$7 & a_8_10) | t_8_10;
-    wire a_5_10 = a_5_7 | a_7_10;
-    wire t_5_10 = (a_5_7 & a_7_10) | t_5_7 | t_7_10;
-    wire a_0_10 = a_0_5 | a_5_10;
-    wire t_0_10 = (a_0_5 & a_5_10) | t_0_5 | t_5_10;
-    wire a_10_12 = x$10 | x$11;
-    wire t_10_12 = (x$10 & x$11);
-    wire a_13_15 = x$13 | x$14;
-    wire t_13_15 = (x$13 & x$14);
-    wire a_12_15 = x$12 | a_13_15;
-    wire t_12_15 = (x$12 & a_13_15) | t_13_15;
-    wire a_10_15 = a_10_12 | a_12_15;
-    wire t_10_15 = (a_10_12 & a_12_15) | t_10_12 | t_12_15;
-    wire a_16_18 = x$16 | x$17;
-    wire t_16_18 = (x$16 & x$17);
-    wire a_15_18 = x$15 | a_16_18;
-    wire t_15_18 = (x$15 & a_16_18) | t_16_18;
-    wire a_19_21 = x$19 | x$20;
-    wire t_19_21 = (x$19 & x$20);
-    wire a_18_21 = x$18 | a_19_21;
-    wire t_18_21 = (x$18 & a_19_21) | t_19_21;
-    wire a_15_21 = a_15_18 | a_18_21;
-    wire t_15_21 = (a_15_18 & a_18_21) | t_15_18 | t_18_21;
-    wire a_10_21 = a_10_15 | a_15_21;
-    wire t_10_21 = (a_10_15 & a_15_21) | t_10_15 | t_15_21;
-    /* verilator lint_off UNUSEDSIGNAL */
-    wire a_0_21 = a_0_10 | a_10_21;
-    /* verilator lint_on UNUSEDSIGNAL */
-    wire t_0_21 = (a_0_10 & a_10_21) | t_0_10 | t_10_21;
+    wire a1_0 = |{x$0, x$1, x$2, x$3, x$4, x$5};
+    wire t1_0 = (x$0 & x$1) | (x$0 & x$2) | (x$0 & x$3) | (x$0 & x$4) | (x$0 & x$5) | (x$1 & x$2) | (x$1 & x$3) | (x$1 & x$4) | (x$1 & x$5) | (x$2 & x$3) | (x$2 & x$4) | (x$2 & x$5) | (x$3 & x$4) | (x$3 & x$5) | (x$4 & x$5);
+    wire a1_1 = |{x$6, x$7, x$8, x$9, x$10, x$11};
+    wire t1_1 = (x$6 & x$7) | (x$6 & x$8) | (x$6 & x$9) | (x$6 & x$10) | (x$6 & x$11) | (x$7 & x$8) | (x$7 & x$9) | (x$7 & x$10) | (x$7 & x$11) | (x$8 & x$9) | (x$8 & x$10) | (x$8 & x$11) | (x$9 & x$10) | (x$9 & x$11) | (x$10 & x$11);
+    wire a1_2 = |{x$12, x$13, x$14, x$15, x$16, x$17};
+    wire t1_2 = (x$12 & x$13) | (x$12 & x$14) | (x$12 & x$15) | (x$12 & x$16) | (x$12 & x$17) | (x$13 & x$14) | (x$13 & x$15) | (x$13 & x$16) | (x$13 & x$17) | (x$14 & x$15) | (x$14 & x$16) | (x$14 & x$17) | (x$15 & x$16) | (x$15 & x$17) | (x$16 & x$17);
+    wire a1_3 = |{x$18, x$19, x$20};
+    wire t1_3 = (x$18 & x$19) | (x$18 & x$20) | (x$19 & x$20);
+    wire u2_0 = (a1_0 & a1_1) | (a1_0 & a1_2) | (a1_0 & a1_3) | (a1_1 & a1_2) | (a1_1 & a1_3) | (a1_2 & a1_3);
+    wire o2_0 = |{t1_0, t1_1, t1_2, t1_3};
     always @(*) begin
-        two = t_0_21;
+        two = |{u2_0, o2_0};
     end
 endmodule // fcc_sort_net__serializer__head_two_k7_668cf05b
 
@@ -44392,50 +47867,18 @@ module fcc_sort_net__serializer__pending_two_or_k7_668cf05b(x$0,x$1,x$2,x$3,x$4,
     output reg  two;
 
     // Update code (custom)
-    wire a_0_2 = x$0 | x$1;
-    wire t_0_2 = (x$0 & x$1);
-    wire a_3_5 = x$3 | x$4;
-    wire t_3_5 = (x$3 & x$4);
-    wire a_2_5 = x$2 | a_3_5;
-    wire t_2_5 = (x$2 & a_3_5) | t_3_5;
-    wire a_0_5 = a_0_2 | a_2_5;
-    wire t_0_5 = (a_0_2 & a_2_5) | t_0_2 | t_2_5;
-    wire a_5_7 = x$5 | x$6;
-    wire t_5_7 = (x$5 & x$6);
-    wire a_8_10 = x$8 | x$9;
-    wire t_8_10 = (x$8 & x$9);
-    wire a_7_10 = x$7 | a_8_10;
-    wire t_7_10 = (x$7 & a_8_10) | t_8_10;
-    wire a_5_10 = a_5_7 | a_7_10;
-    wire t_5_10 = (a_5_7 & a_7_10) | t_5_7 | t_7_10;
-    wire a_0_10 = a_0_5 | a_5_10;
-    wire t_0_10 = (a_0_5 & a_5_10) | t_0_5 | t_5_10;
-    wire a_10_12 = x$10 | x$11;
-    wire t_10_12 = (x$10 & x$11);
-    wire a_13_15 = x$13 | x$14;
-    wire t_13_15 = (x$13 & x$14);
-    wire a_12_15 = x$12 | a_13_15;
-    wire t_12_15 = (x$12 & a_13_15) | t_13_15;
-    wire a_10_15 = a_10_12 | a_12_15;
-    wire t_10_15 = (a_10_12 & a_12_15) | t_10_12 | t_12_15;
-    wire a_16_18 = x$16 | x$17;
-    wire t_16_18 = (x$16 & x$17);
-    wire a_15_18 = x$15 | a_16_18;
-    wire t_15_18 = (x$15 & a_16_18) | t_16_18;
-    wire a_19_21 = x$19 | x$20;
-    wire t_19_21 = (x$19 & x$20);
-    wire a_18_21 = x$18 | a_19_21;
-    wire t_18_21 = (x$18 & a_19_21) | t_19_21;
-    wire a_15_21 = a_15_18 | a_18_21;
-    wire t_15_21 = (a_15_18 & a_18_21) | t_15_18 | t_18_21;
-    wire a_10_21 = a_10_15 | a_15_21;
-    wire t_10_21 = (a_10_15 & a_15_21) | t_10_15 | t_15_21;
-    /* verilator lint_off UNUSEDSIGNAL */
-    wire a_0_21 = a_0_10 | a_10_21;
-    /* verilator lint_on UNUSEDSIGNAL */
-    wire t_0_21 = (a_0_10 & a_10_21) | t_0_10 | t_10_21;
+    wire a1_0 = |{x$0, x$1, x$2, x$3, x$4, x$5};
+    wire t1_0 = (x$0 & x$1) | (x$0 & x$2) | (x$0 & x$3) | (x$0 & x$4) | (x$0 & x$5) | (x$1 & x$2) | (x$1 & x$3) | (x$1 & x$4) | (x$1 & x$5) | (x$2 & x$3) | (x$2 & x$4) | (x$2 & x$5) | (x$3 & x$4) | (x$3 & x$5) | (x$4 & x$5);
+    wire a1_1 = |{x$6, x$7, x$8, x$9, x$10, x$11};
+    wire t1_1 = (x$6 & x$7) | (x$6 & x$8) | (x$6 & x$9) | (x$6 & x$10) | (x$6 & x$11) | (x$7 & x$8) | (x$7 & x$9) | (x$7 & x$10) | (x$7 & x$11) | (x$8 & x$9) | (x$8 & x$10) | (x$8 & x$11) | (x$9 & x$10) | (x$9 & x$11) | (x$10 & x$11);
+    wire a1_2 = |{x$12, x$13, x$14, x$15, x$16, x$17};
+    wire t1_2 = (x$12 & x$13) | (x$12 & x$14) | (x$12 & x$15) | (x$12 & x$16) | (x$12 & x$17) | (x$13 & x$14) | (x$13 & x$15) | (x$13 & x$16) | (x$13 & x$17) | (x$14 & x$15) | (x$14 & x$16) | (x$14 & x$17) | (x$15 & x$16) | (x$15 & x$17) | (x$16 & x$17);
+    wire a1_3 = |{x$18, x$19, x$20};
+    wire t1_3 = (x$18 & x$19) | (x$18 & x$20) | (x$19 & x$20);
+    wire u2_0 = (a1_0 & a1_1) | (a1_0 & a1_2) | (a1_0 & a1_3) | (a1_1 & a1_2) | (a1_1 & a1_3) | (a1_2 & a1_3);
+    wire o2_0 = |{t1_0, t1_1, t1_2, t1_3};
     always @(*) begin
-        two = t_0_21;
+        two = |{u2_0, o2_0};
     end
 endmodule // fcc_sort_net__serializer__pending_two_or_k7_668cf05b
 

@@ -6,14 +6,24 @@
 //! `adj` (computed in S0): the position to the left in the same window row
 //! matched too and has the same representative, so a join of this position
 //! would repeat that one's.
+//!
+//! The representatives compared in SM are reset, so that this stage stays a
+//! flip-flop (a shift-register LUT's output is slow). `rst` is that reset one
+//! cycle ahead: each group of `RESET_FANOUT / 16` positions registers its own
+//! copy (`rep_rst`), so no copy drives more than `RESET_FANOUT` loads.
 
 use rust_hdl::prelude::*;
 
+use crate::fcc_keep_reg::{FccKeepReg, RESET_FANOUT};
 use crate::types::{kb, vec_of};
+
+/// Positions per reset copy: each resets one 16-bit representative.
+const POSITIONS_PER_RESET: usize = RESET_FANOUT / 16;
 
 #[derive(LogicBlock)]
 pub struct FccMatchDelay {
     pub clk: Signal<In, Clock>,
+    /// Reset, one cycle ahead (see the module doc).
     pub rst: Signal<In, Bit>,
     // S0, from the distance tree and the window.
     pub hit: Vec<Signal<In, Bit>>,
@@ -30,6 +40,8 @@ pub struct FccMatchDelay {
     hit_line: Vec<DFF<Bit>>,
     adj_line: Vec<DFF<Bit>>,
     rep_line: Vec<DFF<Bits<16>>>,
+    /// Position e's SM representative is reset by `rep_rst[e / _group]`.
+    rep_rst: Vec<FccKeepReg<Bit>>,
     zero16: Constant<Bits<16>>,
     _k: usize,
     _h: usize,
@@ -41,6 +53,9 @@ pub struct FccMatchDelay {
     /// K times `_dp` and `_dh`: the stride of a window row in the lines.
     _kd: usize,
     _kh: usize,
+    /// Positions per reset copy, and the copies.
+    _group: usize,
+    _copies: usize,
 }
 
 impl FccMatchDelay {
@@ -64,6 +79,7 @@ impl FccMatchDelay {
             hit_line: vec_of(n * dh),
             adj_line: vec_of(n * dh),
             rep_line: vec_of(n * dp),
+            rep_rst: vec_of(n.div_ceil(POSITIONS_PER_RESET)),
             zero16: kb(0),
             _k: k,
             _h: h,
@@ -73,6 +89,8 @@ impl FccMatchDelay {
             _dh: dh,
             _kd: k * dp,
             _kh: k * dh,
+            _group: POSITIONS_PER_RESET,
+            _copies: n.div_ceil(POSITIONS_PER_RESET),
         }
     }
 }
@@ -86,6 +104,10 @@ impl Logic for FccMatchDelay {
         for i in 0..(self._n * self._dh) {
             self.hit_line[i].clock.next = self.clk.val();
             self.adj_line[i].clock.next = self.clk.val();
+        }
+        for g in 0..self._copies {
+            self.rep_rst[g].clock.next = self.clk.val();
+            self.rep_rst[g].d.next = self.rst.val();
         }
         for kk in self._k..(self._k + 1) {
             for kd in self._kd..(self._kd + 1) {
@@ -131,10 +153,17 @@ impl Logic for FccMatchDelay {
                         self.hit_sm1[e].next = self.hit_line[e * dh + l + 1].q.val();
                         self.adj_sm1[e].next = self.adj_line[e * dh + l + 1].q.val();
                         self.rep_sm3[e].next = self.rep_line[e * dd + dd - 1].q.val();
-                        // The representatives compared in SM are reset, so
-                        // that this stage stays a flip-flop (a shift-register
-                        // LUT's output is slow).
-                        if self.rst.val() {
+                    }
+                }
+            }
+        }
+        // The SM representatives' reset, each from its group's copy (last:
+        // it overrides the shift).
+        for l in self._l..(self._l + 1) {
+            for dd in self._dp..(self._dp + 1) {
+                for gg in self._group..(self._group + 1) {
+                    for e in 0..self._n {
+                        if self.rep_rst[e / gg].q.val() {
                             self.rep_line[e * dd + l].d.next = self.zero16.val();
                         }
                     }

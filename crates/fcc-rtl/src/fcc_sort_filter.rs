@@ -10,27 +10,37 @@
 //!   (`adj`) and representatives enter the delay lines (`FccMatchDelay`).
 //! * S1: the sliding mask of positions already matched by this run
 //!   (`FccKnownMask`).
-//! * SM = S(L+1): the smallest representative among the matches, `min`. The
-//!   run's representative becomes min(run_rep, min) (min(c, min) for a new
-//!   run) and is written back to the window as the centre's representative.
+//! * SM = S(L+1): the smallest representative among the matches, `min`, and
+//!   the first position that has it (the tree's winner: ties go to the lower
+//!   position). The run's representative becomes min(run_rep, min) (min(c,
+//!   min) for a new run) and is written back to the window as the centre's
+//!   representative. A later match with representative `min` is marked
+//!   (`later_min`).
 //! * SM+1: a match is kept unless it is known, `adj`, has the run's
-//!   representative (before this centre), or has representative `min` while
-//!   an earlier position also has `min`.
+//!   representative (before this centre), or is a later match with `min`.
 //! * SM+2: a centre with kept matches, a ring join or the frame's end asks
 //!   for a centre-buffer record (`rec_push` in SM+3); any other valid centre
 //!   returns its input credit (`credit_drop`).
 //!
 //! The record's row values (`rec_rep`) and kept flags (`rec_keep`) show
 //! beside `rec` in SM+3.
+//!
+//! Reset: `rst` is the reset one cycle ahead. Every group of reset loads
+//! has its own registered copy (`FccKeepReg`), at most `RESET_FANOUT` loads
+//! each: `valid_rst` for the centre's valid flags and the record handshake;
+//! for minimum-tree stage i, `tree_rst[2i]` for the centre (33 flip-flops,
+//! reset whole so that the stage stays a flip-flop rather than a shift
+//! register) and `tree_rst[2i + 1]` for its ring join (32); and the match
+//! delay lines' own copies (`FccMatchDelay`).
 
 use fcc_params::FccParams;
 use rust_hdl::prelude::*;
 
 use crate::fcc_any_or::FccAnyOr;
+use crate::fcc_keep_reg::FccKeepReg;
 use crate::fcc_known_mask::FccKnownMask;
 use crate::fcc_match_delay::FccMatchDelay;
 use crate::fcc_min_tree::FccMinTree;
-use crate::fcc_prefix_or::FccPrefixOr;
 use crate::types::{clog2, kb, vec_of, Ctr, CtrRec};
 
 /// What the filter carries about a centre from stage to stage.
@@ -45,13 +55,19 @@ pub struct FiltCtr {
     pub col: Bits<12>,
     pub last: Bit,
     pub ring: Bit,
-    pub ring_a: Bits<16>,
-    pub ring_b: Bits<16>,
+}
+
+/// The centre's ring join (valid with `FiltCtr::ring`), carried beside it.
+#[derive(Clone, Copy, Debug, PartialEq, Default, LogicStruct)]
+pub struct RingJoin {
+    pub a: Bits<16>,
+    pub b: Bits<16>,
 }
 
 #[derive(LogicBlock)]
 pub struct FccSortFilter {
     pub clk: Signal<In, Clock>,
+    /// Reset, one cycle ahead (see the module doc).
     pub rst: Signal<In, Bit>,
     // From the distance tree and the window (S0).
     pub centre: Signal<In, Ctr>,
@@ -72,12 +88,18 @@ pub struct FccSortFilter {
     last_label: DFF<Bits<16>>,
     last_label_valid: DFF<Bit>,
     ctr_s0: Signal<Local, FiltCtr>,
+    ring_s0: Signal<Local, RingJoin>,
     // ---- The centre from stage to stage: S1, S2 .. SL, SM, SM+1, SM+2.
     ctr_s1: DFF<FiltCtr>,
     ctr_tree: Vec<DFF<FiltCtr>>,
     ctr_sm: DFF<FiltCtr>,
     ctr_sm1: DFF<FiltCtr>,
     ctr_sm2: DFF<FiltCtr>,
+    ring_s1: DFF<RingJoin>,
+    ring_tree: Vec<DFF<RingJoin>>,
+    ring_sm: DFF<RingJoin>,
+    ring_sm1: DFF<RingJoin>,
+    ring_sm2: DFF<RingJoin>,
     match_delay: FccMatchDelay,
     min_tree: FccMinTree,
     known_mask: FccKnownMask,
@@ -91,12 +113,11 @@ pub struct FccSortFilter {
     rep_write_en: DFF<Bit>,
     rep_write_col: DFF<Bits<12>>,
     rep_write_value: DFF<Bits<16>>,
-    /// A match with the smallest representative; a position whose
-    /// representative is the run's.
-    is_min: Vec<DFF<Bit>>,
+    /// A match with the smallest representative that is not the first
+    /// position with it; a position whose representative is the run's.
+    later_min: Vec<DFF<Bit>>,
     is_run_rep: Vec<DFF<Bit>>,
     // ---- SM+1.
-    min_earlier: FccPrefixOr,
     keep: Vec<DFF<Bit>>,
     // ---- SM+2.
     keep_any: FccAnyOr,
@@ -105,7 +126,11 @@ pub struct FccSortFilter {
     rec_push_q: DFF<Bit>,
     credit_drop_q: DFF<Bit>,
     rec_q: DFF<CtrRec>,
+    // ---- Reset copies (see the module doc).
+    valid_rst: FccKeepReg<Bit>,
+    tree_rst: Vec<FccKeepReg<Bit>>,
     ctr_zero: Constant<FiltCtr>,
+    ring_zero: Constant<RingJoin>,
     zero16: Constant<Bits<16>>,
     _n: usize,
     /// Levels of the minimum tree.
@@ -136,11 +161,17 @@ impl FccSortFilter {
             last_label: Default::default(),
             last_label_valid: Default::default(),
             ctr_s0: Default::default(),
+            ring_s0: Default::default(),
             ctr_s1: Default::default(),
             ctr_tree: vec_of(l - 1),
             ctr_sm: Default::default(),
             ctr_sm1: Default::default(),
             ctr_sm2: Default::default(),
+            ring_s1: Default::default(),
+            ring_tree: vec_of(l - 1),
+            ring_sm: Default::default(),
+            ring_sm1: Default::default(),
+            ring_sm2: Default::default(),
             match_delay: FccMatchDelay::new(k, h, l),
             min_tree: FccMinTree::new(n),
             // S1 .. SM+1.
@@ -153,9 +184,8 @@ impl FccSortFilter {
             rep_write_en: Default::default(),
             rep_write_col: Default::default(),
             rep_write_value: Default::default(),
-            is_min: vec_of(n),
+            later_min: vec_of(n),
             is_run_rep: vec_of(n),
-            min_earlier: FccPrefixOr::new(n),
             keep: vec_of(n),
             keep_any: FccAnyOr::new(n),
             need_rec: Default::default(),
@@ -163,7 +193,10 @@ impl FccSortFilter {
             rec_push_q: Default::default(),
             credit_drop_q: Default::default(),
             rec_q: Default::default(),
+            valid_rst: Default::default(),
+            tree_rst: vec_of(2 * (l - 1)),
             ctr_zero: Constant::new(FiltCtr::default()),
+            ring_zero: Constant::new(RingJoin::default()),
             zero16: kb(0),
             _n: n,
             _l: l,
@@ -183,6 +216,10 @@ impl Logic for FccSortFilter {
             ctr_sm,
             ctr_sm1,
             ctr_sm2,
+            ring_s1,
+            ring_sm,
+            ring_sm1,
+            ring_sm2,
             run_rep,
             run_rep_sm1,
             run_rep_sm2,
@@ -195,9 +232,16 @@ impl Logic for FccSortFilter {
         );
         for i in 0..(self._l - 1) {
             self.ctr_tree[i].clock.next = self.clk.val();
+            self.ring_tree[i].clock.next = self.clk.val();
+        }
+        self.valid_rst.clock.next = self.clk.val();
+        self.valid_rst.d.next = self.rst.val();
+        for i in 0..(2 * (self._l - 1)) {
+            self.tree_rst[i].clock.next = self.clk.val();
+            self.tree_rst[i].d.next = self.rst.val();
         }
         for e in 0..self._n {
-            self.is_min[e].clock.next = self.clk.val();
+            self.later_min[e].clock.next = self.clk.val();
             self.is_run_rep[e].clock.next = self.clk.val();
             self.keep[e].clock.next = self.clk.val();
             self.keep_sm3[e].clock.next = self.clk.val();
@@ -215,8 +259,8 @@ impl Logic for FccSortFilter {
         self.ctr_s0.next.col = self.centre.val().col;
         self.ctr_s0.next.last = self.centre.val().last;
         self.ctr_s0.next.ring = self.centre.val().ring;
-        self.ctr_s0.next.ring_a = self.centre.val().ring_a;
-        self.ctr_s0.next.ring_b = self.centre.val().ring_b;
+        self.ring_s0.next.a = self.centre.val().ring_a;
+        self.ring_s0.next.b = self.centre.val().ring_b;
         if self.centre.val().valid & self.centre.val().lok {
             self.last_label.d.next = self.centre.val().label;
             self.last_label_valid.d.next = true;
@@ -234,6 +278,16 @@ impl Logic for FccSortFilter {
         }
         self.ctr_sm1.d.next = self.ctr_sm.q.val();
         self.ctr_sm2.d.next = self.ctr_sm1.q.val();
+        self.ring_s1.d.next = self.ring_s0.val();
+        self.ring_tree[0].d.next = self.ring_s1.q.val();
+        for i in 1..(self._l - 1) {
+            self.ring_tree[i].d.next = self.ring_tree[i - 1].q.val();
+        }
+        for l in self._l..(self._l + 1) {
+            self.ring_sm.d.next = self.ring_tree[l - 2].q.val();
+        }
+        self.ring_sm1.d.next = self.ring_sm.q.val();
+        self.ring_sm2.d.next = self.ring_sm1.q.val();
         for e in 0..self._n {
             self.min_tree.hit[e].next = self.hit[e].val();
             self.min_tree.value[e].next = self.rep[e].val();
@@ -267,23 +321,23 @@ impl Logic for FccSortFilter {
             self.rep_write_value.d.next = self.run_rep_after.val();
         }
         for e in 0..self._n {
-            self.is_min[e].d.next = self.match_delay.hit_sm[e].val()
-                & (self.match_delay.rep_sm[e].val() == self.min_tree.min.val());
+            self.later_min[e].d.next = self.match_delay.hit_sm[e].val()
+                & (self.match_delay.rep_sm[e].val() == self.min_tree.min.val())
+                & !self.min_tree.first[e].val();
             self.is_run_rep[e].d.next =
                 self.match_delay.rep_sm[e].val() == self.run_rep_before.val();
         }
         self.rep_we.next = self.rep_write_en.q.val();
         self.rep_waddr.next = self.rep_write_col.q.val();
         self.rep_wdata.next = self.rep_write_value.q.val();
-        // ---- SM+1: keep a match unless known, adjacent or a second minimum.
+        // ---- SM+1: keep a match unless known, adjacent or a later minimum.
         for e in 0..self._n {
-            self.min_earlier.x[e].next = self.is_min[e].q.val();
             self.keep[e].d.next = self.ctr_sm1.q.val().elig
                 & self.match_delay.hit_sm1[e].val()
                 & !self.match_delay.adj_sm1[e].val()
                 & !self.known_mask.known_late[e].val()
                 & !self.is_run_rep[e].q.val()
-                & !(self.is_min[e].q.val() & self.min_earlier.pre[e].val());
+                & !self.later_min[e].q.val();
         }
         self.run_rep_sm2.d.next = self.run_rep_sm1.q.val();
         // ---- SM+2: does the centre need a record?
@@ -296,8 +350,8 @@ impl Logic for FccSortFilter {
         self.rec_push_q.d.next = self.ctr_sm2.q.val().valid & self.need_rec.val();
         self.credit_drop_q.d.next = self.ctr_sm2.q.val().valid & !self.need_rec.val();
         self.rec_q.d.next.c = self.run_rep_sm2.q.val();
-        self.rec_q.d.next.ring_a = self.ctr_sm2.q.val().ring_a;
-        self.rec_q.d.next.ring_b = self.ctr_sm2.q.val().ring_b;
+        self.rec_q.d.next.ring_a = self.ring_sm2.q.val().a;
+        self.rec_q.d.next.ring_b = self.ring_sm2.q.val().b;
         self.rec_q.d.next.ring = self.ctr_sm2.q.val().ring;
         self.rec_q.d.next.last = self.ctr_sm2.q.val().last;
         // ---- SM+3: the record.
@@ -308,18 +362,23 @@ impl Logic for FccSortFilter {
             self.rec_rep[e].next = self.match_delay.rep_sm3[e].val();
             self.rec_keep[e].next = self.keep_sm3[e].q.val();
         }
-        if self.rst.val() {
+        if self.valid_rst.q.val() {
             self.last_label_valid.d.next = false;
             self.ctr_s1.d.next.valid = false;
-            for i in 0..(self._l - 1) {
-                self.ctr_tree[i].d.next = self.ctr_zero.val();
-            }
             self.ctr_sm.d.next.valid = false;
             self.ctr_sm1.d.next.valid = false;
             self.ctr_sm2.d.next.valid = false;
             self.rec_push_q.d.next = false;
             self.credit_drop_q.d.next = false;
             self.rep_write_en.d.next = false;
+        }
+        for i in 0..(self._l - 1) {
+            if self.tree_rst[2 * i].q.val() {
+                self.ctr_tree[i].d.next = self.ctr_zero.val();
+            }
+            if self.tree_rst[2 * i + 1].q.val() {
+                self.ring_tree[i].d.next = self.ring_zero.val();
+            }
         }
     }
 }

@@ -24,9 +24,11 @@
 //! centre (c for a new run): both ends are in the components of c and n,
 //! which is what a join of c and n needs.
 //!
-//! Reset: `rst` is the reset one cycle ahead. Each sub-block has its own
-//! registered copy of it (`FccKeepReg`), so the block's reset net is split
-//! four ways and the sub-blocks are in reset in the cycle after `rst`.
+//! Reset: `rst` is the reset one cycle ahead. The centre buffer, the
+//! serializer and the join queue each have their own registered copy of it
+//! (`FccKeepReg`); the filter, whose reset has the most loads, takes `rst`
+//! itself and registers one copy per group of at most `RESET_FANOUT` loads.
+//! Every sub-block is in reset in the cycle after `rst`.
 //!
 //! A record taken and a centre that needed no record return their input
 //! credit (`take`, `drop`), which `fcc_top` counts to drive `s_axis_tready`.
@@ -78,7 +80,6 @@ pub struct FccSortNet {
     centre_buf: FccCentreBuf,
     serializer: FccSerializer,
     join_queue: FccJoinQueue,
-    filter_rst: FccKeepReg<Bit>,
     centre_buf_rst: FccKeepReg<Bit>,
     serializer_rst: FccKeepReg<Bit>,
     join_queue_rst: FccKeepReg<Bit>,
@@ -112,7 +113,6 @@ impl FccSortNet {
             centre_buf: FccCentreBuf::new(p),
             serializer: FccSerializer::new(p),
             join_queue: FccJoinQueue::default(),
-            filter_rst: FccKeepReg::with_max_fanout(RESET_FANOUT),
             centre_buf_rst: FccKeepReg::with_max_fanout(RESET_FANOUT),
             serializer_rst: FccKeepReg::with_max_fanout(RESET_FANOUT),
             join_queue_rst: FccKeepReg::with_max_fanout(RESET_FANOUT),
@@ -124,17 +124,15 @@ impl FccSortNet {
 impl Logic for FccSortNet {
     #[hdl_gen]
     fn update(&mut self) {
-        // Reset: one registered copy per sub-block.
-        self.filter_rst.clock.next = self.clk.val();
+        // Reset: one registered copy per sub-block (the filter makes its own).
         self.centre_buf_rst.clock.next = self.clk.val();
         self.serializer_rst.clock.next = self.clk.val();
         self.join_queue_rst.clock.next = self.clk.val();
-        self.filter_rst.d.next = self.rst.val();
         self.centre_buf_rst.d.next = self.rst.val();
         self.serializer_rst.d.next = self.rst.val();
         self.join_queue_rst.d.next = self.rst.val();
         self.filter.clk.next = self.clk.val();
-        self.filter.rst.next = self.filter_rst.q.val();
+        self.filter.rst.next = self.rst.val();
         self.centre_buf.clk.next = self.clk.val();
         self.centre_buf.rst.next = self.centre_buf_rst.q.val();
         self.serializer.clk.next = self.clk.val();
