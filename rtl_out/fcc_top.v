@@ -416,8 +416,9 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
     wire  [1:0] regs$s_axil_rresp;
     wire  regs$s_axil_rvalid;
     reg  regs$s_axil_rready;
-    reg  regs$frame_end;
-    reg  regs$idle;
+    reg  regs$frame_sent;
+    reg  regs$out_next;
+    reg  regs$idle_next;
     reg  [15:0] regs$clusters;
     reg  [15:0] regs$provisional;
     reg  regs$overflow;
@@ -889,8 +890,9 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
         .s_axil_rresp(regs$s_axil_rresp),
         .s_axil_rvalid(regs$s_axil_rvalid),
         .s_axil_rready(regs$s_axil_rready),
-        .frame_end(regs$frame_end),
-        .idle(regs$idle),
+        .frame_sent(regs$frame_sent),
+        .out_next(regs$out_next),
+        .idle_next(regs$idle_next),
         .clusters(regs$clusters),
         .provisional(regs$provisional),
         .overflow(regs$overflow),
@@ -1219,14 +1221,12 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
             phase$d = Phase$Out;
         end
         nxt_run = phase$q == Phase$Run;
-        regs$frame_end = 1'b0;
         if ((phase$q == Phase$Out) & label_update$rb_done) begin
             phase$d = Phase$Run;
             nxt_run = 1'b1;
             nxt_in_done = 1'b0;
             last_seen$d = 1'b0;
             err$d = 1'b0;
-            regs$frame_end = 1'b1;
         end
         pad$d = nxt_pad;
         discard$d = nxt_discard;
@@ -1450,7 +1450,9 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
         status_gear_stalls = regs$st_gear_stalls;
         status_frame_done = regs$frame_done;
         status_idle = (phase$q == Phase$Run) & ~in_done$q & first$q;
-        regs$idle = (phase$q == Phase$Run) & ~in_done$q & first$q;
+        regs$frame_sent = label_update$rb_done;
+        regs$out_next = phase$d == Phase$Out;
+        regs$idle_next = (phase$d == Phase$Run) & ~in_done$d & first$d;
     end
 
 endmodule // fcc_top_k7_668cf05b
@@ -10264,6 +10266,9 @@ module fcc_merge_table__flatten_k7_668cf05b(clk,rst,active,start,done,provisiona
     reg  out_valid_s4$clock;
     reg  out_valid_s4$d;
     wire  out_valid_s4$q;
+    reg  prev_valid_s4$clock;
+    reg  prev_valid_s4$d;
+    wire  prev_valid_s4$q;
     reg  [15:0] label_s4$d;
     wire  [15:0] label_s4$q;
     reg  label_s4$clock;
@@ -10393,6 +10398,11 @@ module fcc_merge_table__flatten_k7_668cf05b(clk,rst,active,start,done,provisiona
         .d(out_valid_s4$d),
         .q(out_valid_s4$q)
     );
+    fcc_merge_table__flatten__prev_valid_s4_k7_668cf05b prev_valid_s4(
+        .clock(prev_valid_s4$clock),
+        .d(prev_valid_s4$d),
+        .q(prev_valid_s4$q)
+    );
     fcc_merge_table__flatten__label_s4_k7_668cf05b label_s4(
         .d(label_s4$d),
         .q(label_s4$q),
@@ -10518,6 +10528,8 @@ module fcc_merge_table__flatten_k7_668cf05b(clk,rst,active,start,done,provisiona
         label_valid_s4$d = label_valid_s3$q;
         out_valid_s4$clock = clk;
         out_valid_s4$d = label_valid_s3$q & ~rst;
+        prev_valid_s4$clock = clk;
+        prev_valid_s4$d = label_valid_s3$q & ~rst;
         label_s4$d = label_s3$q;
         is_root_s4$d = is_root_s3$q;
         new_number_s4$d = new_number_s3$q;
@@ -10538,14 +10550,14 @@ module fcc_merge_table__flatten_k7_668cf05b(clk,rst,active,start,done,provisiona
         compact_ram$write_data = value;
         out_valid = out_valid_s4$q;
         out_label = value;
-        if (label_valid_s4$q) begin
+        if (prev_valid_s4$q) begin
             value_prev$d = value;
             value_prev2$d = value_prev$q;
         end
-        if (issue & ~label_valid_s4$q) begin
+        if (issue & ~prev_valid_s4$q) begin
             in_flight$d = in_flight$q + one4;
         end
-        if (~issue & label_valid_s4$q) begin
+        if (~issue & prev_valid_s4$q) begin
             in_flight$d = in_flight$q - one4;
         end
         done = active & ~more_labels$q & (in_flight$q == zero4);
@@ -11059,6 +11071,27 @@ module fcc_merge_table__flatten__parent_is_prev_s4_k7_668cf05b(d,q,clock);
 endmodule // fcc_merge_table__flatten__parent_is_prev_s4_k7_668cf05b
 
 
+module fcc_merge_table__flatten__prev_valid_s4_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_merge_table__flatten__prev_valid_s4_k7_668cf05b
+
+
 module fcc_merge_table__flatten__value_prev_k7_668cf05b(d,q,clock);
 
     // Module arguments
@@ -11274,16 +11307,16 @@ module fcc_merge_table__ports_k7_668cf05b(clk,rst,init_active,flatten_active,ini
         end
         parent_ram$read_en = read_en;
         parent_ram$read_addr = read_addr;
-        parent_ram$write_en = write_en;
-        parent_ram$write_addr = write_addr;
+        parent_ram$write_en = link_en;
+        parent_ram$write_addr = link_addr;
         parent_ram$write_data = link_data;
         root_ram$read_en = read_en;
         root_ram$read_addr = read_addr;
         root_ram$write_en = write_en;
         root_ram$write_addr = write_addr;
         root_ram$write_data = write_root;
-        fwd_write_en$d = write_en;
-        fwd_write_addr$d = write_addr;
+        fwd_write_en$d = link_en;
+        fwd_write_addr$d = link_addr;
         fwd_write_data$d = link_data;
         fwd_write_data_s2$d = fwd_write_data$q;
         fwd_read_en$d = read_en;
@@ -12328,7 +12361,7 @@ module fcc_top__phase_k7_668cf05b(d,q,clock);
 endmodule // fcc_top__phase_k7_668cf05b
 
 
-module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata,s_axil_wstrb,s_axil_wvalid,s_axil_wready,s_axil_bresp,s_axil_bvalid,s_axil_bready,s_axil_araddr,s_axil_arvalid,s_axil_arready,s_axil_rdata,s_axil_rresp,s_axil_rvalid,s_axil_rready,frame_end,idle,clusters,provisional,overflow,unlabelled,frame_error,joins,gear_stalls,core_rst,core_rst_next,irq,frame_done,st_clusters,st_provisional,st_overflow,st_unlabelled,st_frame_error,st_joins,st_gear_stalls,run_k,run_th_h_c,run_th_v_c,run_rows,run_cols);
+module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata,s_axil_wstrb,s_axil_wvalid,s_axil_wready,s_axil_bresp,s_axil_bvalid,s_axil_bready,s_axil_araddr,s_axil_arvalid,s_axil_arready,s_axil_rdata,s_axil_rresp,s_axil_rvalid,s_axil_rready,frame_sent,out_next,idle_next,clusters,provisional,overflow,unlabelled,frame_error,joins,gear_stalls,core_rst,core_rst_next,irq,frame_done,st_clusters,st_provisional,st_overflow,st_unlabelled,st_frame_error,st_joins,st_gear_stalls,run_k,run_th_h_c,run_th_v_c,run_rows,run_cols);
 
     // Module arguments
     input wire  clk;
@@ -12350,8 +12383,9 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
     output reg  [1:0] s_axil_rresp;
     output reg  s_axil_rvalid;
     input wire  s_axil_rready;
-    input wire  frame_end;
-    input wire  idle;
+    input wire  frame_sent;
+    input wire  out_next;
+    input wire  idle_next;
     input wire  [15:0] clusters;
     input wire  [15:0] provisional;
     input wire  overflow;
@@ -12446,9 +12480,30 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
     reg  aw_v$d;
     wire  aw_v$q;
     reg  aw_v$clock;
-    reg  [9:0] aw_a$d;
-    wire  [9:0] aw_a$q;
-    reg  aw_a$clock;
+    reg  aw_control$d;
+    wire  aw_control$q;
+    reg  aw_control$clock;
+    reg  aw_status$d;
+    wire  aw_status$q;
+    reg  aw_status$clock;
+    reg  aw_error$d;
+    wire  aw_error$q;
+    reg  aw_error$clock;
+    reg  aw_run_k$d;
+    wire  aw_run_k$q;
+    reg  aw_run_k$clock;
+    reg  aw_run_thh$d;
+    wire  aw_run_thh$q;
+    reg  aw_run_thh$clock;
+    reg  aw_run_thv$d;
+    wire  aw_run_thv$q;
+    reg  aw_run_thv$clock;
+    reg  aw_run_rows$d;
+    wire  aw_run_rows$q;
+    reg  aw_run_rows$clock;
+    reg  aw_run_cols$d;
+    wire  aw_run_cols$q;
+    reg  aw_run_cols$clock;
     reg  w_v$d;
     wire  w_v$q;
     reg  w_v$clock;
@@ -12458,18 +12513,39 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
     reg  w_hi_zero$d;
     wire  w_hi_zero$q;
     reg  w_hi_zero$clock;
-    reg  w_lo_ok_k$d;
-    wire  w_lo_ok_k$q;
-    reg  w_lo_ok_k$clock;
-    reg  w_lo_ok_th$d;
-    wire  w_lo_ok_th$q;
-    reg  w_lo_ok_th$clock;
-    reg  w_lo_ok_rows$d;
-    wire  w_lo_ok_rows$q;
-    reg  w_lo_ok_rows$clock;
-    reg  w_lo_ok_cols$d;
-    wire  w_lo_ok_cols$q;
-    reg  w_lo_ok_cols$clock;
+    reg  w_ge_k$d;
+    wire  w_ge_k$q;
+    reg  w_ge_k$clock;
+    reg  w_le_k$d;
+    wire  w_le_k$q;
+    reg  w_le_k$clock;
+    reg  w_ge_th$d;
+    wire  w_ge_th$q;
+    reg  w_ge_th$clock;
+    reg  w_le_th$d;
+    wire  w_le_th$q;
+    reg  w_le_th$clock;
+    reg  w_ge_rows$d;
+    wire  w_ge_rows$q;
+    reg  w_ge_rows$clock;
+    reg  w_le_rows$d;
+    wire  w_le_rows$q;
+    reg  w_le_rows$clock;
+    reg  w_ge_cols$d;
+    wire  w_ge_cols$q;
+    reg  w_ge_cols$clock;
+    reg  w_le_cols$d;
+    wire  w_le_cols$q;
+    reg  w_le_cols$clock;
+    reg  w_clear_count$clock;
+    reg  w_clear_count$d;
+    wire  w_clear_count$q;
+    reg  w_clear_frame$clock;
+    reg  w_clear_frame$d;
+    wire  w_clear_frame$q;
+    reg  w_clear_stalls$clock;
+    reg  w_clear_stalls$d;
+    wire  w_clear_stalls$q;
     reg  b_v$d;
     wire  b_v$q;
     reg  b_v$clock;
@@ -12569,9 +12645,25 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
     reg  err_cols$d;
     wire  err_cols$q;
     reg  err_cols$clock;
+    reg  run_rst_dims$clock;
+    reg  run_rst_dims$d;
+    wire  run_rst_dims$q;
+    reg  run_rst_th_h$clock;
+    reg  run_rst_th_h$d;
+    wire  run_rst_th_h$q;
+    reg  run_rst_th_v$clock;
+    reg  run_rst_th_v$d;
+    wire  run_rst_th_v$q;
+    reg  run_rst_act_h$clock;
+    reg  run_rst_act_h$d;
+    wire  run_rst_act_h$q;
+    reg  run_rst_act_v$clock;
+    reg  run_rst_act_v$d;
+    wire  run_rst_act_v$q;
     reg  sq$clk;
     reg  sq$rst;
     reg  sq$start;
+    reg  sq$start_acc;
     reg  [15:0] sq$a;
     wire  sq$busy;
     wire  [35:0] sq$c_lt;
@@ -12582,16 +12674,44 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
     reg  [15:0] sq_a$d;
     wire  [15:0] sq_a$q;
     reg  sq_a$clock;
+    reg  sq_start$clock;
     reg  sq_start$d;
     wire  sq_start$q;
-    reg  sq_start$clock;
+    reg  sq_start_acc$clock;
+    reg  sq_start_acc$d;
+    wire  sq_start_acc$q;
     reg  sq_busy_q$d;
     wire  sq_busy_q$q;
     reg  sq_busy_q$clock;
+    reg  out_status$clock;
+    reg  out_status$d;
+    wire  out_status$q;
+    reg  out_perf$clock;
+    reg  out_perf$d;
+    wire  out_perf$q;
+    reg  idle_dims$clock;
+    reg  idle_dims$d;
+    wire  idle_dims$q;
+    reg  idle_th_v$clock;
+    reg  idle_th_v$d;
+    wire  idle_th_v$q;
 
     // Local signals
+    reg  sq_start_next;
+    reg  [9:0] aw_word;
+    reg  ok_k;
+    reg  ok_th;
+    reg  ok_rows;
+    reg  ok_cols;
     reg  wr;
-    reg  clear;
+    reg  wr_control;
+    reg  clear_count;
+    reg  clear_frame;
+    reg  clear_stalls;
+    reg  frame_end;
+    reg  frame_end_perf;
+    reg  [31:0] count_inc;
+    reg  ar_take;
 
     // Sub module instances
     fcc_regs__mux_k7_668cf05b mux(
@@ -12624,10 +12744,45 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
         .q(aw_v$q),
         .clock(aw_v$clock)
     );
-    fcc_regs__aw_a_k7_668cf05b aw_a(
-        .d(aw_a$d),
-        .q(aw_a$q),
-        .clock(aw_a$clock)
+    fcc_regs__aw_control_k7_668cf05b aw_control(
+        .d(aw_control$d),
+        .q(aw_control$q),
+        .clock(aw_control$clock)
+    );
+    fcc_regs__aw_status_k7_668cf05b aw_status(
+        .d(aw_status$d),
+        .q(aw_status$q),
+        .clock(aw_status$clock)
+    );
+    fcc_regs__aw_error_k7_668cf05b aw_error(
+        .d(aw_error$d),
+        .q(aw_error$q),
+        .clock(aw_error$clock)
+    );
+    fcc_regs__aw_run_k_k7_668cf05b aw_run_k(
+        .d(aw_run_k$d),
+        .q(aw_run_k$q),
+        .clock(aw_run_k$clock)
+    );
+    fcc_regs__aw_run_thh_k7_668cf05b aw_run_thh(
+        .d(aw_run_thh$d),
+        .q(aw_run_thh$q),
+        .clock(aw_run_thh$clock)
+    );
+    fcc_regs__aw_run_thv_k7_668cf05b aw_run_thv(
+        .d(aw_run_thv$d),
+        .q(aw_run_thv$q),
+        .clock(aw_run_thv$clock)
+    );
+    fcc_regs__aw_run_rows_k7_668cf05b aw_run_rows(
+        .d(aw_run_rows$d),
+        .q(aw_run_rows$q),
+        .clock(aw_run_rows$clock)
+    );
+    fcc_regs__aw_run_cols_k7_668cf05b aw_run_cols(
+        .d(aw_run_cols$d),
+        .q(aw_run_cols$q),
+        .clock(aw_run_cols$clock)
     );
     fcc_regs__w_v_k7_668cf05b w_v(
         .d(w_v$d),
@@ -12644,25 +12799,60 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
         .q(w_hi_zero$q),
         .clock(w_hi_zero$clock)
     );
-    fcc_regs__w_lo_ok_k_k7_668cf05b w_lo_ok_k(
-        .d(w_lo_ok_k$d),
-        .q(w_lo_ok_k$q),
-        .clock(w_lo_ok_k$clock)
+    fcc_regs__w_ge_k_k7_668cf05b w_ge_k(
+        .d(w_ge_k$d),
+        .q(w_ge_k$q),
+        .clock(w_ge_k$clock)
     );
-    fcc_regs__w_lo_ok_th_k7_668cf05b w_lo_ok_th(
-        .d(w_lo_ok_th$d),
-        .q(w_lo_ok_th$q),
-        .clock(w_lo_ok_th$clock)
+    fcc_regs__w_le_k_k7_668cf05b w_le_k(
+        .d(w_le_k$d),
+        .q(w_le_k$q),
+        .clock(w_le_k$clock)
     );
-    fcc_regs__w_lo_ok_rows_k7_668cf05b w_lo_ok_rows(
-        .d(w_lo_ok_rows$d),
-        .q(w_lo_ok_rows$q),
-        .clock(w_lo_ok_rows$clock)
+    fcc_regs__w_ge_th_k7_668cf05b w_ge_th(
+        .d(w_ge_th$d),
+        .q(w_ge_th$q),
+        .clock(w_ge_th$clock)
     );
-    fcc_regs__w_lo_ok_cols_k7_668cf05b w_lo_ok_cols(
-        .d(w_lo_ok_cols$d),
-        .q(w_lo_ok_cols$q),
-        .clock(w_lo_ok_cols$clock)
+    fcc_regs__w_le_th_k7_668cf05b w_le_th(
+        .d(w_le_th$d),
+        .q(w_le_th$q),
+        .clock(w_le_th$clock)
+    );
+    fcc_regs__w_ge_rows_k7_668cf05b w_ge_rows(
+        .d(w_ge_rows$d),
+        .q(w_ge_rows$q),
+        .clock(w_ge_rows$clock)
+    );
+    fcc_regs__w_le_rows_k7_668cf05b w_le_rows(
+        .d(w_le_rows$d),
+        .q(w_le_rows$q),
+        .clock(w_le_rows$clock)
+    );
+    fcc_regs__w_ge_cols_k7_668cf05b w_ge_cols(
+        .d(w_ge_cols$d),
+        .q(w_ge_cols$q),
+        .clock(w_ge_cols$clock)
+    );
+    fcc_regs__w_le_cols_k7_668cf05b w_le_cols(
+        .d(w_le_cols$d),
+        .q(w_le_cols$q),
+        .clock(w_le_cols$clock)
+    );
+    fcc_regs__w_clear_count_k7_668cf05b w_clear_count(
+        .clock(w_clear_count$clock),
+        .d(w_clear_count$d),
+        .q(w_clear_count$q)
+    );
+    fcc_regs__w_clear_frame_k7_668cf05b w_clear_frame(
+        .clock(w_clear_frame$clock),
+        .d(w_clear_frame$d),
+        .q(w_clear_frame$q)
+    );
+    fcc_regs__w_clear_stalls_k7_668cf05b w_clear_stalls(
+        .clock(w_clear_stalls$clock),
+        .d(w_clear_stalls$d),
+        .q(w_clear_stalls$q)
     );
     fcc_regs__b_v_k7_668cf05b b_v(
         .d(b_v$d),
@@ -12829,10 +13019,36 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
         .q(err_cols$q),
         .clock(err_cols$clock)
     );
+    fcc_regs__run_rst_dims_k7_668cf05b run_rst_dims(
+        .clock(run_rst_dims$clock),
+        .d(run_rst_dims$d),
+        .q(run_rst_dims$q)
+    );
+    fcc_regs__run_rst_th_h_k7_668cf05b run_rst_th_h(
+        .clock(run_rst_th_h$clock),
+        .d(run_rst_th_h$d),
+        .q(run_rst_th_h$q)
+    );
+    fcc_regs__run_rst_th_v_k7_668cf05b run_rst_th_v(
+        .clock(run_rst_th_v$clock),
+        .d(run_rst_th_v$d),
+        .q(run_rst_th_v$q)
+    );
+    fcc_regs__run_rst_act_h_k7_668cf05b run_rst_act_h(
+        .clock(run_rst_act_h$clock),
+        .d(run_rst_act_h$d),
+        .q(run_rst_act_h$q)
+    );
+    fcc_regs__run_rst_act_v_k7_668cf05b run_rst_act_v(
+        .clock(run_rst_act_v$clock),
+        .d(run_rst_act_v$d),
+        .q(run_rst_act_v$q)
+    );
     fcc_regs__sq_k7_668cf05b sq(
         .clk(sq$clk),
         .rst(sq$rst),
         .start(sq$start),
+        .start_acc(sq$start_acc),
         .a(sq$a),
         .busy(sq$busy),
         .c_lt(sq$c_lt),
@@ -12849,27 +13065,63 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
         .clock(sq_a$clock)
     );
     fcc_regs__sq_start_k7_668cf05b sq_start(
+        .clock(sq_start$clock),
         .d(sq_start$d),
-        .q(sq_start$q),
-        .clock(sq_start$clock)
+        .q(sq_start$q)
+    );
+    fcc_regs__sq_start_acc_k7_668cf05b sq_start_acc(
+        .clock(sq_start_acc$clock),
+        .d(sq_start_acc$d),
+        .q(sq_start_acc$q)
     );
     fcc_regs__sq_busy_q_k7_668cf05b sq_busy_q(
         .d(sq_busy_q$d),
         .q(sq_busy_q$q),
         .clock(sq_busy_q$clock)
     );
+    fcc_regs__out_status_k7_668cf05b out_status(
+        .clock(out_status$clock),
+        .d(out_status$d),
+        .q(out_status$q)
+    );
+    fcc_regs__out_perf_k7_668cf05b out_perf(
+        .clock(out_perf$clock),
+        .d(out_perf$d),
+        .q(out_perf$q)
+    );
+    fcc_regs__idle_dims_k7_668cf05b idle_dims(
+        .clock(idle_dims$clock),
+        .d(idle_dims$d),
+        .q(idle_dims$q)
+    );
+    fcc_regs__idle_th_v_k7_668cf05b idle_th_v(
+        .clock(idle_th_v$clock),
+        .d(idle_th_v$d),
+        .q(idle_th_v$q)
+    );
 
     // Update code
     always @(*) begin
         aw_v$clock = clk;
-        aw_a$clock = clk;
+        aw_control$clock = clk;
+        aw_status$clock = clk;
+        aw_error$clock = clk;
+        aw_run_k$clock = clk;
+        aw_run_thh$clock = clk;
+        aw_run_thv$clock = clk;
+        aw_run_rows$clock = clk;
+        aw_run_cols$clock = clk;
         w_v$clock = clk;
         w_d$clock = clk;
         w_hi_zero$clock = clk;
-        w_lo_ok_k$clock = clk;
-        w_lo_ok_th$clock = clk;
-        w_lo_ok_rows$clock = clk;
-        w_lo_ok_cols$clock = clk;
+        w_ge_k$clock = clk;
+        w_le_k$clock = clk;
+        w_ge_th$clock = clk;
+        w_le_th$clock = clk;
+        w_ge_rows$clock = clk;
+        w_le_rows$clock = clk;
+        w_ge_cols$clock = clk;
+        w_le_cols$clock = clk;
         b_v$clock = clk;
         r_v$clock = clk;
         r_d$clock = clk;
@@ -12905,17 +13157,27 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
         err_cols$clock = clk;
         sq_v$clock = clk;
         sq_a$clock = clk;
-        sq_start$clock = clk;
         sq_busy_q$clock = clk;
         aw_v$d = aw_v$q;
-        aw_a$d = aw_a$q;
+        aw_control$d = aw_control$q;
+        aw_status$d = aw_status$q;
+        aw_error$d = aw_error$q;
+        aw_run_k$d = aw_run_k$q;
+        aw_run_thh$d = aw_run_thh$q;
+        aw_run_thv$d = aw_run_thv$q;
+        aw_run_rows$d = aw_run_rows$q;
+        aw_run_cols$d = aw_run_cols$q;
         w_v$d = w_v$q;
         w_d$d = w_d$q;
         w_hi_zero$d = w_hi_zero$q;
-        w_lo_ok_k$d = w_lo_ok_k$q;
-        w_lo_ok_th$d = w_lo_ok_th$q;
-        w_lo_ok_rows$d = w_lo_ok_rows$q;
-        w_lo_ok_cols$d = w_lo_ok_cols$q;
+        w_ge_k$d = w_ge_k$q;
+        w_le_k$d = w_le_k$q;
+        w_ge_th$d = w_ge_th$q;
+        w_le_th$d = w_le_th$q;
+        w_ge_rows$d = w_ge_rows$q;
+        w_le_rows$d = w_le_rows$q;
+        w_ge_cols$d = w_ge_cols$q;
+        w_le_cols$d = w_le_cols$q;
         b_v$d = b_v$q;
         r_v$d = r_v$q;
         r_d$d = r_d$q;
@@ -12951,45 +13213,83 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
         err_cols$d = err_cols$q;
         sq_v$d = sq_v$q;
         sq_a$d = sq_a$q;
-        sq_start$d = sq_start$q;
         sq_busy_q$d = sq_busy_q$q;
+        w_clear_count$clock = clk;
+        w_clear_frame$clock = clk;
+        w_clear_stalls$clock = clk;
+        run_rst_dims$clock = clk;
+        run_rst_th_h$clock = clk;
+        run_rst_th_v$clock = clk;
+        run_rst_act_h$clock = clk;
+        run_rst_act_v$clock = clk;
+        out_status$clock = clk;
+        out_perf$clock = clk;
+        idle_dims$clock = clk;
+        idle_th_v$clock = clk;
+        out_status$d = out_next;
+        out_perf$d = out_next;
+        idle_dims$d = idle_next;
+        idle_th_v$d = idle_next;
         sq$clk = clk;
         sq$rst = rst;
         sq$a = sq_a$q;
         sq$start = sq_start$q;
-        sq_start$d = 1'b0;
+        sq$start_acc = sq_start_acc$q;
+        sq_start$clock = clk;
+        sq_start_acc$clock = clk;
+        sq_start_next = 1'b0;
         wr = aw_v$q & w_v$q & ~b_v$q & ~sq_start$q & ~sq$busy & ~sq_busy_q$q;
+        aw_word = s_axil_awaddr[11:2];
         if (s_axil_awvalid & ~aw_v$q) begin
             aw_v$d = 1'b1;
-            aw_a$d = s_axil_awaddr[11:2];
+            aw_control$d = aw_word == a_control;
+            aw_status$d = aw_word == a_status;
+            aw_error$d = aw_word == a_error;
+            aw_run_k$d = aw_word == a_run_k;
+            aw_run_thh$d = aw_word == a_run_thh;
+            aw_run_thv$d = aw_word == a_run_thv;
+            aw_run_rows$d = aw_word == a_run_rows;
+            aw_run_cols$d = aw_word == a_run_cols;
         end
+        w_clear_count$d = w_clear_count$q;
+        w_clear_frame$d = w_clear_frame$q;
+        w_clear_stalls$d = w_clear_stalls$q;
         if (s_axil_wvalid & ~w_v$q) begin
             w_v$d = 1'b1;
             w_d$d = s_axil_wdata;
+            w_clear_count$d = (s_axil_wdata & bit_clear) != zero32;
+            w_clear_frame$d = (s_axil_wdata & bit_clear) != zero32;
+            w_clear_stalls$d = (s_axil_wdata & bit_clear) != zero32;
             w_hi_zero$d = s_axil_wdata[31:16] == zero16;
-            w_lo_ok_k$d = (s_axil_wdata[15:0] >= k_min) & (s_axil_wdata[15:0] <= k_max) & s_axil_wdata[0];
-            w_lo_ok_th$d = (s_axil_wdata[15:0] >= th_min) & (s_axil_wdata[15:0] <= th_max);
-            w_lo_ok_rows$d = (s_axil_wdata[15:0] >= rows_min) & (s_axil_wdata[15:0] <= rows_max);
-            w_lo_ok_cols$d = (s_axil_wdata[15:0] >= cols_min) & (s_axil_wdata[15:0] <= cols_max);
+            w_ge_k$d = s_axil_wdata[15:0] >= k_min;
+            w_le_k$d = s_axil_wdata[15:0] <= k_max;
+            w_ge_th$d = s_axil_wdata[15:0] >= th_min;
+            w_le_th$d = s_axil_wdata[15:0] <= th_max;
+            w_ge_rows$d = s_axil_wdata[15:0] >= rows_min;
+            w_le_rows$d = s_axil_wdata[15:0] <= rows_max;
+            w_ge_cols$d = s_axil_wdata[15:0] >= cols_min;
+            w_le_cols$d = s_axil_wdata[15:0] <= cols_max;
         end
         if (b_v$q & s_axil_bready) begin
             b_v$d = 1'b0;
         end
         soft_q$d = 1'b0;
-        clear = 1'b0;
+        ok_k = w_hi_zero$q & w_ge_k$q & w_le_k$q & w_d$q[0];
+        ok_th = w_hi_zero$q & w_ge_th$q & w_le_th$q;
+        ok_rows = w_hi_zero$q & w_ge_rows$q & w_le_rows$q;
+        ok_cols = w_hi_zero$q & w_ge_cols$q & w_le_cols$q;
         if (wr) begin
             aw_v$d = 1'b0;
             w_v$d = 1'b0;
             b_v$d = 1'b1;
-            if (aw_a$q == a_control) begin
+            if (aw_control$q) begin
                 irq_en$d = (w_d$q & bit_irq) != zero32;
                 soft_q$d = (w_d$q & bit_soft) != zero32;
-                clear = (w_d$q & bit_clear) != zero32;
             end
-            if ((aw_a$q == a_status) & ((w_d$q & bit_done) != zero32)) begin
+            if (aw_status$q & ((w_d$q & bit_done) != zero32)) begin
                 done_sticky$d = 1'b0;
             end
-            if (aw_a$q == a_error) begin
+            if (aw_error$q) begin
                 if ((w_d$q & bit_err_k) != zero32) begin
                     err_k$d = 1'b0;
                 end
@@ -13006,44 +13306,44 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
                     err_cols$d = 1'b0;
                 end
             end
-            if (aw_a$q == a_run_k) begin
-                if (w_hi_zero$q & w_lo_ok_k$q) begin
+            if (aw_run_k$q) begin
+                if (ok_k) begin
                     sh_k$d = w_d$q[15:0];
                 end
                 else begin
                     err_k$d = 1'b1;
                 end
             end
-            if (aw_a$q == a_run_rows) begin
-                if (w_hi_zero$q & w_lo_ok_rows$q) begin
+            if (aw_run_rows$q) begin
+                if (ok_rows) begin
                     sh_rows$d = w_d$q[15:0];
                 end
                 else begin
                     err_rows$d = 1'b1;
                 end
             end
-            if (aw_a$q == a_run_cols) begin
-                if (w_hi_zero$q & w_lo_ok_cols$q) begin
+            if (aw_run_cols$q) begin
+                if (ok_cols) begin
                     sh_cols$d = w_d$q[15:0];
                 end
                 else begin
                     err_cols$d = 1'b1;
                 end
             end
-            if (aw_a$q == a_run_thh) begin
-                if (w_hi_zero$q & w_lo_ok_th$q) begin
+            if (aw_run_thh$q) begin
+                if (ok_th) begin
                     b_v$d = 1'b0;
-                    sq_start$d = 1'b1;
+                    sq_start_next = 1'b1;
                     sq_v$d = 1'b0;
                 end
                 else begin
                     err_thh$d = 1'b1;
                 end
             end
-            if (aw_a$q == a_run_thv) begin
-                if (w_hi_zero$q & w_lo_ok_th$q) begin
+            if (aw_run_thv$q) begin
+                if (ok_th) begin
                     b_v$d = 1'b0;
-                    sq_start$d = 1'b1;
+                    sq_start_next = 1'b1;
                     sq_v$d = 1'b1;
                 end
                 else begin
@@ -13064,34 +13364,52 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
                 sh_thh_c$d = sq$c_le;
             end
         end
-        if (idle) begin
+        if (idle_dims$q) begin
             act_k$d = sh_k$q[3:0];
             act_thh_c$d = sh_thh_c$q;
-            act_thv_c$d = sh_thv_c$q;
             act_rows$d = sh_rows$q[7:0];
             act_cols$d = sh_cols$q[12:0];
         end
+        if (idle_th_v$q) begin
+            act_thv_c$d = sh_thv_c$q;
+        end
+        frame_end = out_status$q & frame_sent;
+        frame_end_perf = out_perf$q & frame_sent;
         done_q$d = frame_end;
+        count_inc = zero32;
+        if (frame_end) begin
+            count_inc = one32;
+        end
+        count$d = count$q + count_inc;
         if (frame_end) begin
             done_sticky$d = 1'b1;
-            count$d = count$q + one32;
             s_clusters$d = clusters;
             s_prov$d = provisional;
             s_ovf$d = overflow;
             s_unl$d = unlabelled;
             s_err$d = frame_error;
+        end
+        if (frame_end_perf) begin
             s_joins$d = joins;
             s_gstall$d = gear_stalls;
         end
-        if (clear) begin
+        wr_control = wr & aw_control$q;
+        clear_count = wr_control & w_clear_count$q;
+        clear_frame = wr_control & w_clear_frame$q;
+        clear_stalls = wr_control & w_clear_stalls$q;
+        if (clear_count) begin
             done_sticky$d = 1'b0;
             count$d = zero32;
             s_clusters$d = zero16;
-            s_prov$d = zero16;
             s_ovf$d = 1'b0;
-            s_unl$d = zero20;
             s_err$d = 1'b0;
+        end
+        if (clear_frame) begin
+            s_prov$d = zero16;
+            s_unl$d = zero20;
             s_joins$d = zero24;
+        end
+        if (clear_stalls) begin
             s_gstall$d = zero24;
         end
         mux$addr = s_axil_araddr[11:2];
@@ -13103,7 +13421,7 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
         mux$w24$1 = s_gstall$q;
         mux$flags$0 = irq_en$q;
         mux$flags$1 = done_sticky$q;
-        mux$flags$2 = idle;
+        mux$flags$2 = idle_th_v$q;
         mux$flags$3 = s_ovf$q;
         mux$flags$4 = s_err$q;
         mux$flags$5 = err_k$q;
@@ -13116,7 +13434,8 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
         mux$w16$4 = sh_thv$q;
         mux$w16$5 = sh_rows$q;
         mux$w16$6 = sh_cols$q;
-        if (s_axil_arvalid & ~r_v$q) begin
+        ar_take = s_axil_arvalid & ~r_v$q & ~run_rst_dims$q;
+        if (ar_take) begin
             r_v$d = 1'b1;
             r_d$d = mux$data;
         end
@@ -13126,7 +13445,7 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
         core_rst_q$d = rst | soft_q$q;
         core_rst_next = rst | soft_q$q;
         if (rst) begin
-            sq_start$d = 1'b0;
+            sq_start_next = 1'b0;
             aw_v$d = 1'b0;
             w_v$d = 1'b0;
             b_v$d = 1'b0;
@@ -13143,18 +13462,6 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
             s_err$d = 1'b0;
             s_joins$d = zero24;
             s_gstall$d = zero24;
-            sh_k$d = def_k16;
-            sh_thh$d = def_thh;
-            sh_thv$d = def_thv;
-            sh_thh_c$d = def_thh_c;
-            sh_thv_c$d = def_thv_c;
-            sh_rows$d = def_rows16;
-            sh_cols$d = def_cols16;
-            act_k$d = def_k;
-            act_thh_c$d = def_thh_c;
-            act_thv_c$d = def_thv_c;
-            act_rows$d = def_rows;
-            act_cols$d = def_cols;
             err_k$d = 1'b0;
             err_thh$d = 1'b0;
             err_thv$d = 1'b0;
@@ -13162,11 +13469,40 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
             err_cols$d = 1'b0;
             sq_busy_q$d = 1'b0;
         end
+        sq_start$d = sq_start_next;
+        sq_start_acc$d = sq_start_next;
+        run_rst_dims$d = rst;
+        run_rst_th_h$d = rst;
+        run_rst_th_v$d = rst;
+        run_rst_act_h$d = rst;
+        run_rst_act_v$d = rst;
+        if (run_rst_dims$q) begin
+            sh_k$d = def_k16;
+            sh_rows$d = def_rows16;
+            sh_cols$d = def_cols16;
+            act_k$d = def_k;
+            act_rows$d = def_rows;
+            act_cols$d = def_cols;
+        end
+        if (run_rst_th_h$q) begin
+            sh_thh$d = def_thh;
+            sh_thh_c$d = def_thh_c;
+        end
+        if (run_rst_th_v$q) begin
+            sh_thv$d = def_thv;
+            sh_thv_c$d = def_thv_c;
+        end
+        if (run_rst_act_h$q) begin
+            act_thh_c$d = def_thh_c;
+        end
+        if (run_rst_act_v$q) begin
+            act_thv_c$d = def_thv_c;
+        end
         s_axil_awready = ~aw_v$q;
         s_axil_wready = ~w_v$q;
         s_axil_bvalid = b_v$q;
         s_axil_bresp = okay;
-        s_axil_arready = ~r_v$q;
+        s_axil_arready = ~r_v$q & ~run_rst_dims$q;
         s_axil_rvalid = r_v$q;
         s_axil_rdata = r_d$q;
         s_axil_rresp = okay;
@@ -13285,23 +13621,156 @@ module fcc_regs__act_thv_c_k7_668cf05b(d,q,clock);
 endmodule // fcc_regs__act_thv_c_k7_668cf05b
 
 
-module fcc_regs__aw_a_k7_668cf05b(d,q,clock);
+module fcc_regs__aw_control_k7_668cf05b(d,q,clock);
 
     // Module arguments
-    input wire  [9:0] d;
-    output reg  [9:0] q;
+    input wire  d;
+    output reg  q;
     input wire  clock;
 
     // Update code (custom)
     initial begin
-       q = 10'h0;
+       q = 1'h0;
     end
 
     always @(posedge clock) begin
        q <= d;
     end
 
-endmodule // fcc_regs__aw_a_k7_668cf05b
+endmodule // fcc_regs__aw_control_k7_668cf05b
+
+
+module fcc_regs__aw_error_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__aw_error_k7_668cf05b
+
+
+module fcc_regs__aw_run_cols_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__aw_run_cols_k7_668cf05b
+
+
+module fcc_regs__aw_run_k_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__aw_run_k_k7_668cf05b
+
+
+module fcc_regs__aw_run_rows_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__aw_run_rows_k7_668cf05b
+
+
+module fcc_regs__aw_run_thh_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__aw_run_thh_k7_668cf05b
+
+
+module fcc_regs__aw_run_thv_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__aw_run_thv_k7_668cf05b
+
+
+module fcc_regs__aw_status_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__aw_status_k7_668cf05b
 
 
 module fcc_regs__aw_v_k7_668cf05b(d,q,clock);
@@ -13513,6 +13982,48 @@ module fcc_regs__err_thv_k7_668cf05b(d,q,clock);
 endmodule // fcc_regs__err_thv_k7_668cf05b
 
 
+module fcc_regs__idle_dims_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_regs__idle_dims_k7_668cf05b
+
+
+module fcc_regs__idle_th_v_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_regs__idle_th_v_k7_668cf05b
+
+
 module fcc_regs__irq_en_k7_668cf05b(d,q,clock);
 
     // Module arguments
@@ -13593,6 +14104,48 @@ module fcc_regs__mux_k7_668cf05b(addr,w16$0,w16$1,w16$2,w16$3,w16$4,w16$5,w16$6,
 endmodule // fcc_regs__mux_k7_668cf05b
 
 
+module fcc_regs__out_perf_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_regs__out_perf_k7_668cf05b
+
+
+module fcc_regs__out_status_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_regs__out_status_k7_668cf05b
+
+
 module fcc_regs__r_d_k7_668cf05b(d,q,clock);
 
     // Module arguments
@@ -13629,6 +14182,111 @@ module fcc_regs__r_v_k7_668cf05b(d,q,clock);
     end
 
 endmodule // fcc_regs__r_v_k7_668cf05b
+
+
+module fcc_regs__run_rst_act_h_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_regs__run_rst_act_h_k7_668cf05b
+
+
+module fcc_regs__run_rst_act_v_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_regs__run_rst_act_v_k7_668cf05b
+
+
+module fcc_regs__run_rst_dims_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_regs__run_rst_dims_k7_668cf05b
+
+
+module fcc_regs__run_rst_th_h_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_regs__run_rst_th_h_k7_668cf05b
+
+
+module fcc_regs__run_rst_th_v_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_regs__run_rst_th_v_k7_668cf05b
 
 
 module fcc_regs__s_clusters_k7_668cf05b(d,q,clock);
@@ -13916,12 +14574,13 @@ module fcc_regs__soft_q_k7_668cf05b(d,q,clock);
 endmodule // fcc_regs__soft_q_k7_668cf05b
 
 
-module fcc_regs__sq_k7_668cf05b(clk,rst,start,a,busy,c_lt,c_le);
+module fcc_regs__sq_k7_668cf05b(clk,rst,start,start_acc,a,busy,c_lt,c_le);
 
     // Module arguments
     input wire  clk;
     input wire  rst;
     input wire  start;
+    input wire  start_acc;
     input wire  [15:0] a;
     output reg  busy;
     output reg  [35:0] c_lt;
@@ -13939,15 +14598,22 @@ module fcc_regs__sq_k7_668cf05b(clk,rst,start,a,busy,c_lt,c_le);
         end else if (start) begin
             m <= a;
             c <= {16'd0, a};
-            acc <= 32'd0;
             run <= 1'b1;
         end else if (run) begin
             if (m == 16'd0) begin
                 run <= 1'b0;
             end else begin
-                if (m[0]) acc <= acc + c;
                 c <= {c[30:0], 1'b0};
                 m <= {1'b0, m[15:1]};
+            end
+        end
+    end
+    always @(posedge clk) begin
+        if (!rst) begin
+            if (start_acc) begin
+                acc <= 32'd0;
+            end else if (run && (m != 16'd0) && m[0]) begin
+                acc <= acc + c;
             end
         end
     end
@@ -13997,23 +14663,46 @@ module fcc_regs__sq_busy_q_k7_668cf05b(d,q,clock);
 endmodule // fcc_regs__sq_busy_q_k7_668cf05b
 
 
-module fcc_regs__sq_start_k7_668cf05b(d,q,clock);
+module fcc_regs__sq_start_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  d;
     output reg  q;
-    input wire  clock;
 
     // Update code (custom)
+    (* keep = "true" *) reg held;
     initial begin
-       q = 1'h0;
+        held = 1'h0;
     end
-
-    always @(posedge clock) begin
-       q <= d;
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_regs__sq_start_k7_668cf05b
+
+
+module fcc_regs__sq_start_acc_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_regs__sq_start_acc_k7_668cf05b
 
 
 module fcc_regs__sq_v_k7_668cf05b(d,q,clock);
@@ -14035,6 +14724,69 @@ module fcc_regs__sq_v_k7_668cf05b(d,q,clock);
 endmodule // fcc_regs__sq_v_k7_668cf05b
 
 
+module fcc_regs__w_clear_count_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_regs__w_clear_count_k7_668cf05b
+
+
+module fcc_regs__w_clear_frame_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_regs__w_clear_frame_k7_668cf05b
+
+
+module fcc_regs__w_clear_stalls_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_regs__w_clear_stalls_k7_668cf05b
+
+
 module fcc_regs__w_d_k7_668cf05b(d,q,clock);
 
     // Module arguments
@@ -14052,6 +14804,82 @@ module fcc_regs__w_d_k7_668cf05b(d,q,clock);
     end
 
 endmodule // fcc_regs__w_d_k7_668cf05b
+
+
+module fcc_regs__w_ge_cols_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__w_ge_cols_k7_668cf05b
+
+
+module fcc_regs__w_ge_k_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__w_ge_k_k7_668cf05b
+
+
+module fcc_regs__w_ge_rows_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__w_ge_rows_k7_668cf05b
+
+
+module fcc_regs__w_ge_th_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__w_ge_th_k7_668cf05b
 
 
 module fcc_regs__w_hi_zero_k7_668cf05b(d,q,clock);
@@ -14073,7 +14901,7 @@ module fcc_regs__w_hi_zero_k7_668cf05b(d,q,clock);
 endmodule // fcc_regs__w_hi_zero_k7_668cf05b
 
 
-module fcc_regs__w_lo_ok_cols_k7_668cf05b(d,q,clock);
+module fcc_regs__w_le_cols_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -14089,29 +14917,10 @@ module fcc_regs__w_lo_ok_cols_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__w_lo_ok_cols_k7_668cf05b
+endmodule // fcc_regs__w_le_cols_k7_668cf05b
 
 
-module fcc_regs__w_lo_ok_k_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__w_lo_ok_k_k7_668cf05b
-
-
-module fcc_regs__w_lo_ok_rows_k7_668cf05b(d,q,clock);
+module fcc_regs__w_le_k_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -14127,10 +14936,10 @@ module fcc_regs__w_lo_ok_rows_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__w_lo_ok_rows_k7_668cf05b
+endmodule // fcc_regs__w_le_k_k7_668cf05b
 
 
-module fcc_regs__w_lo_ok_th_k7_668cf05b(d,q,clock);
+module fcc_regs__w_le_rows_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -14146,7 +14955,26 @@ module fcc_regs__w_lo_ok_th_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__w_lo_ok_th_k7_668cf05b
+endmodule // fcc_regs__w_le_rows_k7_668cf05b
+
+
+module fcc_regs__w_le_th_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__w_le_th_k7_668cf05b
 
 
 module fcc_regs__w_v_k7_668cf05b(d,q,clock);

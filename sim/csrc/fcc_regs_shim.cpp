@@ -16,8 +16,9 @@ void fcc_regs_step(void* p, const RegsIn* in, RegsOut* out) {
         [in](Vfcc_regs* t) {
             t->rst = in->rst;
             vl_drive_axil(t, in);
-            t->frame_end = in->frame_end;
-            t->idle = in->idle;
+            t->frame_sent = in->frame_sent;
+            t->out_next = in->out_next;
+            t->idle_next = in->idle_next;
             t->clusters = in->clusters;
             t->provisional = in->provisional;
             t->overflow = in->overflow;

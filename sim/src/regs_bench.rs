@@ -33,8 +33,12 @@ c_struct! {
         pub arvalid: u8,
         pub rready: u8,
         pub rst: u8,
-        pub frame_end: u8,
-        pub idle: u8,
+        /// The frame's last label beat is accepted.
+        pub frame_sent: u8,
+        /// The core is in phase Out in the next cycle.
+        pub out_next: u8,
+        /// The core waits for a frame's first pixel in the next cycle.
+        pub idle_next: u8,
         pub overflow: u8,
         pub frame_error: u8,
     }

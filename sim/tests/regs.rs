@@ -124,10 +124,18 @@ fn writes_with_aw_and_w_in_either_order_and_ready_stalls() {
     }
 }
 
-/// One cycle with `frame_end` high and the given counters.
+/// A frame end as the core gives it: one cycle announcing phase Out
+/// (`out_next`), then one with the last beat sent and the given counters.
 fn end_frame(d: &mut RegsDut, counters: RegsIn) {
+    let out = RegsIn {
+        out_next: 1,
+        bready: 1,
+        rready: 1,
+        ..d.live
+    };
+    d.step(&out);
     let inp = RegsIn {
-        frame_end: 1,
+        frame_sent: 1,
         bready: 1,
         rready: 1,
         ..counters
@@ -203,8 +211,9 @@ fn frame_end_latches_status_sets_frame_done_and_irq() {
         .unwrap();
     assert_eq!(d.idle().irq, 0, "W1C cleared FRAME_DONE");
     assert_eq!(m.read(&mut d, offset::STATUS).unwrap(), 0);
-    // The idle input shows live in STATUS.
-    d.live.idle = 1;
+    // The core's idle flag shows in STATUS (registered from `idle_next`).
+    d.live.idle_next = 1;
+    d.idle();
     assert_eq!(
         m.read(&mut d, offset::STATUS).unwrap(),
         bits::STATUS_IDLE,
@@ -385,12 +394,13 @@ fn seeded_random_accesses_match_the_reference_map() {
                 1 => WriteOrder::AwFirst(rng.gen_range(1..4)),
                 _ => WriteOrder::WFirst(rng.gen_range(1..4)),
             };
-            d.live.idle = rng.gen::<u8>() & 1;
+            d.live.idle_next = rng.gen::<u8>() & 1;
+            d.idle();
             let off = offsets[rng.gen_range(0..offsets.len())];
             match rng.gen_range(0..10) {
                 0..=3 => {
                     let got = m.read(&mut d, off).unwrap();
-                    let want = r.read(&p, off, d.live.idle != 0);
+                    let want = r.read(&p, off, d.live.idle_next != 0);
                     assert_eq!(
                         got, want,
                         "step {step}: read {off:#05x}: expected {want:#x} != got {got:#x} (seed {seed})"
@@ -443,7 +453,7 @@ fn run_registers_power_on_to_the_build_and_reach_the_core_only_while_idle() {
         let build = (p.fsize as u8, h, v, p.rows as u8, p.cols as u16);
         assert_eq!(active(&d.idle()), build, "power-on active values");
         // While a frame runs (idle low) a write changes the read-back value only.
-        d.live.idle = 0;
+        d.live.idle_next = 0;
         let k = if p.fsize == 3 { 3 } else { p.fsize as u32 - 2 };
         m.write_ok(&mut d, offset::RUN_K, k).unwrap();
         m.write_ok(&mut d, offset::RUN_TH_H, 1).unwrap();
@@ -454,8 +464,9 @@ fn run_registers_power_on_to_the_build_and_reach_the_core_only_while_idle() {
         assert_eq!(m.read(&mut d, offset::RUN_K).unwrap(), k);
         assert_eq!(m.read(&mut d, offset::RUN_TH_H).unwrap(), 1);
         assert_eq!(m.read(&mut d, offset::RUN_TH_V).unwrap(), 0x8000);
-        // Idle again: taken within a cycle.
-        d.live.idle = 1;
+        // Idle again (registered from `idle_next`): taken within a cycle.
+        d.live.idle_next = 1;
+        d.idle();
         d.idle();
         let (h, v) = addends(1, 0x8000);
         assert_eq!(
@@ -488,7 +499,7 @@ fn refused_run_writes_keep_the_old_value_and_set_their_error_bit() {
     for p in builds() {
         let mut d = dut(&p);
         let mut m = AxilMaster::new(7);
-        d.live.idle = 1;
+        d.live.idle_next = 1;
         let kmax = p.fsize as u32;
         let bad: Vec<(u32, Vec<u32>)> = vec![
             (

@@ -13,9 +13,10 @@
 //! Pipeline: `_s1` the read of `T[l]` is issued; `_s2` it is in the RAM;
 //! `_s3` `T[l]` has arrived, `C[T[l]]` is read; `_s4` `C[T[l]]` has arrived,
 //! `C[l]` is written and emitted. `label_valid_s4` drives the compact
-//! table's write enable and this block's counters; `out_valid_s4`, a kept
-//! copy of it (same input, same cycle), drives `out_valid` (the label
-//! updater's gearbox), so neither net carries both groups of loads.
+//! table's write enable only; two kept copies of it (same input, same
+//! cycle) drive the rest: `out_valid_s4` `out_valid` (the label updater's
+//! gearbox), `prev_valid_s4` the forwarding registers and the in-flight
+//! count, so no net carries two groups of loads.
 
 use fcc_params::FccParams;
 use rust_hdl::prelude::*;
@@ -78,6 +79,7 @@ pub struct FccFlatten {
     parent_is_prev2_s3: DFF<Bit>,
     label_valid_s4: DFF<Bit>,
     out_valid_s4: FccKeepReg<Bit>,
+    prev_valid_s4: FccKeepReg<Bit>,
     label_s4: DFF<Bits<16>>,
     is_root_s4: DFF<Bit>,
     new_number_s4: DFF<Bits<16>>,
@@ -139,6 +141,7 @@ impl FccFlatten {
             parent_is_prev2_s3: Default::default(),
             label_valid_s4: Default::default(),
             out_valid_s4: Default::default(),
+            prev_valid_s4: Default::default(),
             label_s4: Default::default(),
             is_root_s4: Default::default(),
             new_number_s4: Default::default(),
@@ -230,6 +233,8 @@ impl Logic for FccFlatten {
         self.label_valid_s4.d.next = self.label_valid_s3.q.val();
         self.out_valid_s4.clock.next = self.clk.val();
         self.out_valid_s4.d.next = self.label_valid_s3.q.val() & !self.rst.val();
+        self.prev_valid_s4.clock.next = self.clk.val();
+        self.prev_valid_s4.d.next = self.label_valid_s3.q.val() & !self.rst.val();
         self.label_s4.d.next = self.label_s3.q.val();
         self.is_root_s4.d.next = self.is_root_s3.q.val();
         self.new_number_s4.d.next = self.new_number_s3.q.val();
@@ -251,14 +256,14 @@ impl Logic for FccFlatten {
         self.compact_ram.write_data.next = self.value.val();
         self.out_valid.next = self.out_valid_s4.q.val();
         self.out_label.next = self.value.val();
-        if self.label_valid_s4.q.val() {
+        if self.prev_valid_s4.q.val() {
             self.value_prev.d.next = self.value.val();
             self.value_prev2.d.next = self.value_prev.q.val();
         }
-        if self.issue.val() & !self.label_valid_s4.q.val() {
+        if self.issue.val() & !self.prev_valid_s4.q.val() {
             self.in_flight.d.next = self.in_flight.q.val() + self.one4.val();
         }
-        if !self.issue.val() & self.label_valid_s4.q.val() {
+        if !self.issue.val() & self.prev_valid_s4.q.val() {
             self.in_flight.d.next = self.in_flight.q.val() - self.one4.val();
         }
         self.done.next = self.active.val()

@@ -9,18 +9,32 @@
 //! output comes from a flip-flop or one gate after flip-flops.
 //!
 //! Frame status: in the cycle `frame_end` is high (the last label beat
-//! leaves) the live counters of the blocks are latched, the frame counter
+//! leaves in phase Out: `frame_sent` with `out_next` one cycle earlier) the
+//! live counters of the blocks are latched, the frame counter
 //! counts, the sticky FRAME_DONE bit is set and, one cycle later,
 //! `frame_done` pulses with the latched values already on `st_*`. `irq` is
 //! FRAME_DONE and IRQ_ENABLE. `core_rst` (registered) resets the pixel
 //! pipeline on `rst` and for one cycle after a write of CONTROL.SOFT_RESET;
 //! `core_rst_next` is the same one cycle earlier. The register file itself
-//! is reset by `rst` only.
+//! is reset by `rst` only; its run registers (shadow and active) one cycle
+//! later, from kept copies of `rst` (one per group of at most 64 flip-flops,
+//! so that `rst` drives few loads), and `arready` is low in that cycle, so no
+//! read is taken before they are reset. A read offered in the first cycle
+//! after `rst` falls is taken one cycle later.
+//!
+//! Fanout: CONTROL.CLEAR is held as W is taken in one kept copy per group of
+//! status registers, so no clear enable drives more than 64 flip-flops;
+//! `frame_end` is the frame counter's addend, not its enable. The core's
+//! phase flags come one cycle early (`out_next`, `idle_next`) and are
+//! registered here in kept copies, one per group of at most 64 loads, so
+//! that neither the frame end nor idle is one net of a hundred enables.
 //!
 //! Run parameters: a write to RUN_K .. RUN_COLS is checked against
 //! `regmap::run_range` (every range ends below 2^16; the checks are
-//! registered with the write data as W is taken, in two halves, `w_hi_zero`
-//! for bits 31:16 and `w_lo_ok_*` for bits 15:0, so no range comparator lies
+//! registered with the write data as W is taken, one comparator per flag,
+//! `w_hi_zero` for bits 31:16 and `w_ge_*` / `w_le_*` for bits 15:0 against
+//! each end of each range, and combined in the write's cycle (`ok_*`), so no
+//! chain of range comparators follows the write data and none lies
 //! between the held data and the registers the write sets); a value outside
 //! it is refused (the register keeps its
 //! value, the register's ERROR bit is set). An accepted value goes into the
@@ -37,6 +51,7 @@
 use fcc_params::FccParams;
 use rust_hdl::prelude::*;
 
+use crate::fcc_keep_reg::FccKeepReg;
 use crate::fcc_reg_mux::{FccRegMux, MuxSrc, WORD_BITS};
 use crate::fcc_th_square::FccThSquare;
 use crate::regmap::{self, bits, offset, ADDR_BITS};
@@ -86,8 +101,12 @@ pub struct FccRegs {
     pub s_axil_rvalid: Signal<Out, Bit>,
     pub s_axil_rready: Signal<In, Bit>,
     // From the core: the frame's end and its live counters.
-    pub frame_end: Signal<In, Bit>,
-    pub idle: Signal<In, Bit>,
+    /// The frame's last label beat is accepted (a frame end in phase Out).
+    pub frame_sent: Signal<In, Bit>,
+    /// The core is in phase Out in the next cycle.
+    pub out_next: Signal<In, Bit>,
+    /// The core waits for a frame's first pixel in the next cycle.
+    pub idle_next: Signal<In, Bit>,
     pub clusters: Signal<In, Bits<16>>,
     pub provisional: Signal<In, Bits<16>>,
     pub overflow: Signal<In, Bit>,
@@ -121,16 +140,37 @@ pub struct FccRegs {
     mux: FccRegMux,
     // Write channel.
     aw_v: DFF<Bit>,
-    aw_a: DFF<Bits<WORD_BITS>>,
+    // The held address, decoded as AW is taken: one flag per register a
+    // write acts on (no address comparator in the write's cycle).
+    aw_control: DFF<Bit>,
+    aw_status: DFF<Bit>,
+    aw_error: DFF<Bit>,
+    aw_run_k: DFF<Bit>,
+    aw_run_thh: DFF<Bit>,
+    aw_run_thv: DFF<Bit>,
+    aw_run_rows: DFF<Bit>,
+    aw_run_cols: DFF<Bit>,
     w_v: DFF<Bit>,
     w_d: DFF<Bits<32>>,
-    // `w_d` checked as W is taken: bits 31:16 zero, and bits 15:0 in the
-    // run ranges of RUN_K, RUN_TH_H / RUN_TH_V, RUN_ROWS, RUN_COLS.
+    // `w_d` checked as W is taken: bits 31:16 zero, and bits 15:0 against
+    // the lower (`w_ge_*`) and upper (`w_le_*`) end of the run ranges of
+    // RUN_K, RUN_TH_H / RUN_TH_V, RUN_ROWS, RUN_COLS.
     w_hi_zero: DFF<Bit>,
-    w_lo_ok_k: DFF<Bit>,
-    w_lo_ok_th: DFF<Bit>,
-    w_lo_ok_rows: DFF<Bit>,
-    w_lo_ok_cols: DFF<Bit>,
+    w_ge_k: DFF<Bit>,
+    w_le_k: DFF<Bit>,
+    w_ge_th: DFF<Bit>,
+    w_le_th: DFF<Bit>,
+    w_ge_rows: DFF<Bit>,
+    w_le_rows: DFF<Bit>,
+    w_ge_cols: DFF<Bit>,
+    w_le_cols: DFF<Bit>,
+    // CONTROL.CLEAR of the held write data, one kept copy per group of
+    // status registers it clears (at most 64 flip-flops each): `count`,
+    // `done_sticky`, `s_clusters`, `s_ovf`, `s_err`; `s_prov`, `s_unl`,
+    // `s_joins`; `s_gstall`.
+    w_clear_count: FccKeepReg<Bit>,
+    w_clear_frame: FccKeepReg<Bit>,
+    w_clear_stalls: FccKeepReg<Bit>,
     b_v: DFF<Bit>,
     // Read channel.
     r_v: DFF<Bit>,
@@ -167,6 +207,15 @@ pub struct FccRegs {
     err_thv: DFF<Bit>,
     err_rows: DFF<Bit>,
     err_cols: DFF<Bit>,
+    // The run registers' reset: `rst` one cycle late, one kept copy per group
+    // of at most 64 flip-flops: `sh_k`, `sh_rows`, `sh_cols` and their active
+    // copies; `sh_thh`, `sh_thh_c`; `sh_thv`, `sh_thv_c`; `act_thh_c`;
+    // `act_thv_c`.
+    run_rst_dims: FccKeepReg<Bit>,
+    run_rst_th_h: FccKeepReg<Bit>,
+    run_rst_th_v: FccKeepReg<Bit>,
+    run_rst_act_h: FccKeepReg<Bit>,
+    run_rst_act_v: FccKeepReg<Bit>,
     // Squarer of a threshold write; `sq_v`: TH_V (else TH_H); `sq_a`: the
     // value; `sq_start`: the write, one cycle late, starts the squarer on
     // `sq_a` (so the write data's range check does not reach the squarer's
@@ -174,10 +223,38 @@ pub struct FccRegs {
     sq: FccThSquare,
     sq_v: DFF<Bit>,
     sq_a: DFF<Bits<16>>,
-    sq_start: DFF<Bit>,
+    sq_start: FccKeepReg<Bit>,
+    /// `sq_start` again (kept apart): clears the squarer's sum, so that no
+    /// start net drives all of its registers.
+    sq_start_acc: FccKeepReg<Bit>,
+    sq_start_next: Signal<Local, Bit>,
     sq_busy_q: DFF<Bit>,
+    aw_word: Signal<Local, Bits<WORD_BITS>>,
+    ok_k: Signal<Local, Bit>,
+    ok_th: Signal<Local, Bit>,
+    ok_rows: Signal<Local, Bit>,
+    ok_cols: Signal<Local, Bit>,
     wr: Signal<Local, Bit>,
-    clear: Signal<Local, Bit>,
+    wr_control: Signal<Local, Bit>,
+    clear_count: Signal<Local, Bit>,
+    clear_frame: Signal<Local, Bit>,
+    clear_stalls: Signal<Local, Bit>,
+    // The core's phase flags, each registered from its next-cycle value in
+    // one kept copy per group of at most 64 loads: phase Out for the frame
+    // end of `count`, `done_sticky`, `done_q`, `s_clusters`, `s_prov`,
+    // `s_ovf`, `s_unl`, `s_err` (`out_status`) and of `s_joins`, `s_gstall`
+    // (`out_perf`); idle for the loads of `act_k`, `act_rows`, `act_cols`,
+    // `act_thh_c` (`idle_dims`) and of `act_thv_c` and STATUS.IDLE
+    // (`idle_th_v`).
+    out_status: FccKeepReg<Bit>,
+    out_perf: FccKeepReg<Bit>,
+    idle_dims: FccKeepReg<Bit>,
+    idle_th_v: FccKeepReg<Bit>,
+    frame_end: Signal<Local, Bit>,
+    frame_end_perf: Signal<Local, Bit>,
+    /// `frame_end` as the frame counter's addend (no enable on `count`).
+    count_inc: Signal<Local, Bits<32>>,
+    ar_take: Signal<Local, Bit>,
     a_control: Constant<Bits<WORD_BITS>>,
     a_status: Constant<Bits<WORD_BITS>>,
     a_error: Constant<Bits<WORD_BITS>>,
@@ -301,8 +378,9 @@ impl FccRegs {
             s_axil_rresp: Default::default(),
             s_axil_rvalid: Default::default(),
             s_axil_rready: Default::default(),
-            frame_end: Default::default(),
-            idle: Default::default(),
+            frame_sent: Default::default(),
+            out_next: Default::default(),
+            idle_next: Default::default(),
             clusters: Default::default(),
             provisional: Default::default(),
             overflow: Default::default(),
@@ -328,14 +406,28 @@ impl FccRegs {
             run_cols: Default::default(),
             mux: FccRegMux::new(entries),
             aw_v: Default::default(),
-            aw_a: Default::default(),
+            aw_control: Default::default(),
+            aw_status: Default::default(),
+            aw_error: Default::default(),
+            aw_run_k: Default::default(),
+            aw_run_thh: Default::default(),
+            aw_run_thv: Default::default(),
+            aw_run_rows: Default::default(),
+            aw_run_cols: Default::default(),
             w_v: Default::default(),
             w_d: Default::default(),
             w_hi_zero: Default::default(),
-            w_lo_ok_k: Default::default(),
-            w_lo_ok_th: Default::default(),
-            w_lo_ok_rows: Default::default(),
-            w_lo_ok_cols: Default::default(),
+            w_ge_k: Default::default(),
+            w_le_k: Default::default(),
+            w_ge_th: Default::default(),
+            w_le_th: Default::default(),
+            w_ge_rows: Default::default(),
+            w_le_rows: Default::default(),
+            w_ge_cols: Default::default(),
+            w_le_cols: Default::default(),
+            w_clear_count: Default::default(),
+            w_clear_frame: Default::default(),
+            w_clear_stalls: Default::default(),
             b_v: Default::default(),
             r_v: Default::default(),
             r_d: Default::default(),
@@ -369,13 +461,36 @@ impl FccRegs {
             err_thv: Default::default(),
             err_rows: Default::default(),
             err_cols: Default::default(),
+            run_rst_dims: Default::default(),
+            run_rst_th_h: Default::default(),
+            run_rst_th_v: Default::default(),
+            run_rst_act_h: Default::default(),
+            run_rst_act_v: Default::default(),
             sq: FccThSquare::new(),
             sq_v: Default::default(),
             sq_a: Default::default(),
             sq_start: Default::default(),
+            sq_start_acc: Default::default(),
+            sq_start_next: Default::default(),
             sq_busy_q: Default::default(),
+            aw_word: Default::default(),
+            ok_k: Default::default(),
+            ok_th: Default::default(),
+            ok_rows: Default::default(),
+            ok_cols: Default::default(),
             wr: Default::default(),
-            clear: Default::default(),
+            wr_control: Default::default(),
+            clear_count: Default::default(),
+            clear_frame: Default::default(),
+            clear_stalls: Default::default(),
+            out_status: Default::default(),
+            out_perf: Default::default(),
+            idle_dims: Default::default(),
+            idle_th_v: Default::default(),
+            frame_end: Default::default(),
+            frame_end_perf: Default::default(),
+            count_inc: Default::default(),
+            ar_take: Default::default(),
             a_control: word(offset::CONTROL),
             a_status: word(offset::STATUS),
             a_error: word(offset::ERROR),
@@ -428,14 +543,25 @@ impl Logic for FccRegs {
             self,
             clk,
             aw_v,
-            aw_a,
+            aw_control,
+            aw_status,
+            aw_error,
+            aw_run_k,
+            aw_run_thh,
+            aw_run_thv,
+            aw_run_rows,
+            aw_run_cols,
             w_v,
             w_d,
             w_hi_zero,
-            w_lo_ok_k,
-            w_lo_ok_th,
-            w_lo_ok_rows,
-            w_lo_ok_cols,
+            w_ge_k,
+            w_le_k,
+            w_ge_th,
+            w_le_th,
+            w_ge_rows,
+            w_le_rows,
+            w_ge_cols,
+            w_le_cols,
             b_v,
             r_v,
             r_d,
@@ -471,14 +597,32 @@ impl Logic for FccRegs {
             err_cols,
             sq_v,
             sq_a,
-            sq_start,
             sq_busy_q
         );
+        self.w_clear_count.clock.next = self.clk.val();
+        self.w_clear_frame.clock.next = self.clk.val();
+        self.w_clear_stalls.clock.next = self.clk.val();
+        self.run_rst_dims.clock.next = self.clk.val();
+        self.run_rst_th_h.clock.next = self.clk.val();
+        self.run_rst_th_v.clock.next = self.clk.val();
+        self.run_rst_act_h.clock.next = self.clk.val();
+        self.run_rst_act_v.clock.next = self.clk.val();
+        self.out_status.clock.next = self.clk.val();
+        self.out_perf.clock.next = self.clk.val();
+        self.idle_dims.clock.next = self.clk.val();
+        self.idle_th_v.clock.next = self.clk.val();
+        self.out_status.d.next = self.out_next.val();
+        self.out_perf.d.next = self.out_next.val();
+        self.idle_dims.d.next = self.idle_next.val();
+        self.idle_th_v.d.next = self.idle_next.val();
         self.sq.clk.next = self.clk.val();
         self.sq.rst.next = self.rst.val();
         self.sq.a.next = self.sq_a.q.val();
         self.sq.start.next = self.sq_start.q.val();
-        self.sq_start.d.next = false;
+        self.sq.start_acc.next = self.sq_start_acc.q.val();
+        self.sq_start.clock.next = self.clk.val();
+        self.sq_start_acc.clock.next = self.clk.val();
+        self.sq_start_next.next = false;
         // ---- Write channel: AW and W held in either order, then one write.
         // (A threshold write is answered when its square is ready: no write
         // is performed while the squarer starts or runs.)
@@ -488,48 +632,73 @@ impl Logic for FccRegs {
             & !self.sq_start.q.val()
             & !self.sq.busy.val()
             & !self.sq_busy_q.q.val();
+        self.aw_word.next = self.s_axil_awaddr.val().get_bits::<WORD_BITS>(2);
         if self.s_axil_awvalid.val() & !self.aw_v.q.val() {
             self.aw_v.d.next = true;
-            self.aw_a.d.next = self.s_axil_awaddr.val().get_bits::<WORD_BITS>(2);
+            self.aw_control.d.next = self.aw_word.val() == self.a_control.val();
+            self.aw_status.d.next = self.aw_word.val() == self.a_status.val();
+            self.aw_error.d.next = self.aw_word.val() == self.a_error.val();
+            self.aw_run_k.d.next = self.aw_word.val() == self.a_run_k.val();
+            self.aw_run_thh.d.next = self.aw_word.val() == self.a_run_thh.val();
+            self.aw_run_thv.d.next = self.aw_word.val() == self.a_run_thv.val();
+            self.aw_run_rows.d.next = self.aw_word.val() == self.a_run_rows.val();
+            self.aw_run_cols.d.next = self.aw_word.val() == self.a_run_cols.val();
         }
+        self.w_clear_count.d.next = self.w_clear_count.q.val();
+        self.w_clear_frame.d.next = self.w_clear_frame.q.val();
+        self.w_clear_stalls.d.next = self.w_clear_stalls.q.val();
         if self.s_axil_wvalid.val() & !self.w_v.q.val() {
             self.w_v.d.next = true;
             self.w_d.d.next = self.s_axil_wdata.val();
+            self.w_clear_count.d.next =
+                (self.s_axil_wdata.val() & self.bit_clear.val()) != self.zero32.val();
+            self.w_clear_frame.d.next =
+                (self.s_axil_wdata.val() & self.bit_clear.val()) != self.zero32.val();
+            self.w_clear_stalls.d.next =
+                (self.s_axil_wdata.val() & self.bit_clear.val()) != self.zero32.val();
             self.w_hi_zero.d.next = self.s_axil_wdata.val().get_bits::<16>(16) == self.zero16.val();
-            self.w_lo_ok_k.d.next = (self.s_axil_wdata.val().get_bits::<16>(0) >= self.k_min.val())
-                & (self.s_axil_wdata.val().get_bits::<16>(0) <= self.k_max.val())
-                & self.s_axil_wdata.val().get_bit(0);
-            self.w_lo_ok_th.d.next = (self.s_axil_wdata.val().get_bits::<16>(0)
-                >= self.th_min.val())
-                & (self.s_axil_wdata.val().get_bits::<16>(0) <= self.th_max.val());
-            self.w_lo_ok_rows.d.next = (self.s_axil_wdata.val().get_bits::<16>(0)
-                >= self.rows_min.val())
-                & (self.s_axil_wdata.val().get_bits::<16>(0) <= self.rows_max.val());
-            self.w_lo_ok_cols.d.next = (self.s_axil_wdata.val().get_bits::<16>(0)
-                >= self.cols_min.val())
-                & (self.s_axil_wdata.val().get_bits::<16>(0) <= self.cols_max.val());
+            self.w_ge_k.d.next = self.s_axil_wdata.val().get_bits::<16>(0) >= self.k_min.val();
+            self.w_le_k.d.next = self.s_axil_wdata.val().get_bits::<16>(0) <= self.k_max.val();
+            self.w_ge_th.d.next = self.s_axil_wdata.val().get_bits::<16>(0) >= self.th_min.val();
+            self.w_le_th.d.next = self.s_axil_wdata.val().get_bits::<16>(0) <= self.th_max.val();
+            self.w_ge_rows.d.next =
+                self.s_axil_wdata.val().get_bits::<16>(0) >= self.rows_min.val();
+            self.w_le_rows.d.next =
+                self.s_axil_wdata.val().get_bits::<16>(0) <= self.rows_max.val();
+            self.w_ge_cols.d.next =
+                self.s_axil_wdata.val().get_bits::<16>(0) >= self.cols_min.val();
+            self.w_le_cols.d.next =
+                self.s_axil_wdata.val().get_bits::<16>(0) <= self.cols_max.val();
         }
         if self.b_v.q.val() & self.s_axil_bready.val() {
             self.b_v.d.next = false;
         }
         self.soft_q.d.next = false;
-        self.clear.next = false;
+        // The held value in range (RUN_K also odd).
+        self.ok_k.next = self.w_hi_zero.q.val()
+            & self.w_ge_k.q.val()
+            & self.w_le_k.q.val()
+            & self.w_d.q.val().get_bit(0);
+        self.ok_th.next = self.w_hi_zero.q.val() & self.w_ge_th.q.val() & self.w_le_th.q.val();
+        self.ok_rows.next =
+            self.w_hi_zero.q.val() & self.w_ge_rows.q.val() & self.w_le_rows.q.val();
+        self.ok_cols.next =
+            self.w_hi_zero.q.val() & self.w_ge_cols.q.val() & self.w_le_cols.q.val();
         if self.wr.val() {
             self.aw_v.d.next = false;
             self.w_v.d.next = false;
             self.b_v.d.next = true;
-            if self.aw_a.q.val() == self.a_control.val() {
+            if self.aw_control.q.val() {
                 self.irq_en.d.next = (self.w_d.q.val() & self.bit_irq.val()) != self.zero32.val();
                 self.soft_q.d.next = (self.w_d.q.val() & self.bit_soft.val()) != self.zero32.val();
-                self.clear.next = (self.w_d.q.val() & self.bit_clear.val()) != self.zero32.val();
             }
-            if (self.aw_a.q.val() == self.a_status.val())
+            if self.aw_status.q.val()
                 & ((self.w_d.q.val() & self.bit_done.val()) != self.zero32.val())
             {
                 self.done_sticky.d.next = false;
             }
             // ERROR: write 1 to clear.
-            if self.aw_a.q.val() == self.a_error.val() {
+            if self.aw_error.q.val() {
                 if (self.w_d.q.val() & self.bit_err_k.val()) != self.zero32.val() {
                     self.err_k.d.next = false;
                 }
@@ -547,41 +716,41 @@ impl Logic for FccRegs {
                 }
             }
             // Run parameters: taken if in range, else refused with an error bit.
-            if self.aw_a.q.val() == self.a_run_k.val() {
-                if self.w_hi_zero.q.val() & self.w_lo_ok_k.q.val() {
+            if self.aw_run_k.q.val() {
+                if self.ok_k.val() {
                     self.sh_k.d.next = self.w_d.q.val().get_bits::<16>(0);
                 } else {
                     self.err_k.d.next = true;
                 }
             }
-            if self.aw_a.q.val() == self.a_run_rows.val() {
-                if self.w_hi_zero.q.val() & self.w_lo_ok_rows.q.val() {
+            if self.aw_run_rows.q.val() {
+                if self.ok_rows.val() {
                     self.sh_rows.d.next = self.w_d.q.val().get_bits::<16>(0);
                 } else {
                     self.err_rows.d.next = true;
                 }
             }
-            if self.aw_a.q.val() == self.a_run_cols.val() {
-                if self.w_hi_zero.q.val() & self.w_lo_ok_cols.q.val() {
+            if self.aw_run_cols.q.val() {
+                if self.ok_cols.val() {
                     self.sh_cols.d.next = self.w_d.q.val().get_bits::<16>(0);
                 } else {
                     self.err_cols.d.next = true;
                 }
             }
             // A threshold starts the squarer; the response waits for it.
-            if self.aw_a.q.val() == self.a_run_thh.val() {
-                if self.w_hi_zero.q.val() & self.w_lo_ok_th.q.val() {
+            if self.aw_run_thh.q.val() {
+                if self.ok_th.val() {
                     self.b_v.d.next = false;
-                    self.sq_start.d.next = true;
+                    self.sq_start_next.next = true;
                     self.sq_v.d.next = false;
                 } else {
                     self.err_thh.d.next = true;
                 }
             }
-            if self.aw_a.q.val() == self.a_run_thv.val() {
-                if self.w_hi_zero.q.val() & self.w_lo_ok_th.q.val() {
+            if self.aw_run_thv.q.val() {
+                if self.ok_th.val() {
                     self.b_v.d.next = false;
-                    self.sq_start.d.next = true;
+                    self.sq_start_next.next = true;
                     self.sq_v.d.next = true;
                 } else {
                     self.err_thv.d.next = true;
@@ -602,35 +771,54 @@ impl Logic for FccRegs {
             }
         }
         // ---- Active run parameters: loaded while the core waits for a frame.
-        if self.idle.val() {
+        if self.idle_dims.q.val() {
             self.act_k.d.next = self.sh_k.q.val().get_bits::<4>(0);
             self.act_thh_c.d.next = self.sh_thh_c.q.val();
-            self.act_thv_c.d.next = self.sh_thv_c.q.val();
             self.act_rows.d.next = self.sh_rows.q.val().get_bits::<8>(0);
             self.act_cols.d.next = self.sh_cols.q.val().get_bits::<13>(0);
         }
+        if self.idle_th_v.q.val() {
+            self.act_thv_c.d.next = self.sh_thv_c.q.val();
+        }
         // ---- Frame end: latch the status, count, set FRAME_DONE.
+        self.frame_end.next = self.out_status.q.val() & self.frame_sent.val();
+        self.frame_end_perf.next = self.out_perf.q.val() & self.frame_sent.val();
         self.done_q.d.next = self.frame_end.val();
+        self.count_inc.next = self.zero32.val();
+        if self.frame_end.val() {
+            self.count_inc.next = self.one32.val();
+        }
+        self.count.d.next = self.count.q.val() + self.count_inc.val();
         if self.frame_end.val() {
             self.done_sticky.d.next = true;
-            self.count.d.next = self.count.q.val() + self.one32.val();
             self.s_clusters.d.next = self.clusters.val();
             self.s_prov.d.next = self.provisional.val();
             self.s_ovf.d.next = self.overflow.val();
             self.s_unl.d.next = self.unlabelled.val();
             self.s_err.d.next = self.frame_error.val();
+        }
+        if self.frame_end_perf.val() {
             self.s_joins.d.next = self.joins.val();
             self.s_gstall.d.next = self.gear_stalls.val();
         }
-        if self.clear.val() {
+        // CONTROL.CLEAR, in its groups.
+        self.wr_control.next = self.wr.val() & self.aw_control.q.val();
+        self.clear_count.next = self.wr_control.val() & self.w_clear_count.q.val();
+        self.clear_frame.next = self.wr_control.val() & self.w_clear_frame.q.val();
+        self.clear_stalls.next = self.wr_control.val() & self.w_clear_stalls.q.val();
+        if self.clear_count.val() {
             self.done_sticky.d.next = false;
             self.count.d.next = self.zero32.val();
             self.s_clusters.d.next = self.zero16.val();
-            self.s_prov.d.next = self.zero16.val();
             self.s_ovf.d.next = false;
-            self.s_unl.d.next = self.zero20.val();
             self.s_err.d.next = false;
+        }
+        if self.clear_frame.val() {
+            self.s_prov.d.next = self.zero16.val();
+            self.s_unl.d.next = self.zero20.val();
             self.s_joins.d.next = self.zero24.val();
+        }
+        if self.clear_stalls.val() {
             self.s_gstall.d.next = self.zero24.val();
         }
         // ---- Read channel.
@@ -643,7 +831,7 @@ impl Logic for FccRegs {
         self.mux.w24[1].next = self.s_gstall.q.val();
         self.mux.flags[0].next = self.irq_en.q.val();
         self.mux.flags[1].next = self.done_sticky.q.val();
-        self.mux.flags[2].next = self.idle.val();
+        self.mux.flags[2].next = self.idle_th_v.q.val();
         self.mux.flags[3].next = self.s_ovf.q.val();
         self.mux.flags[4].next = self.s_err.q.val();
         self.mux.flags[5].next = self.err_k.q.val();
@@ -656,7 +844,10 @@ impl Logic for FccRegs {
         self.mux.w16[4].next = self.sh_thv.q.val();
         self.mux.w16[5].next = self.sh_rows.q.val();
         self.mux.w16[6].next = self.sh_cols.q.val();
-        if self.s_axil_arvalid.val() & !self.r_v.q.val() {
+        // No read is taken while the run registers are still in reset.
+        self.ar_take.next =
+            self.s_axil_arvalid.val() & !self.r_v.q.val() & !self.run_rst_dims.q.val();
+        if self.ar_take.val() {
             self.r_v.d.next = true;
             self.r_d.d.next = self.mux.data.val();
         }
@@ -667,7 +858,7 @@ impl Logic for FccRegs {
         self.core_rst_q.d.next = self.rst.val() | self.soft_q.q.val();
         self.core_rst_next.next = self.rst.val() | self.soft_q.q.val();
         if self.rst.val() {
-            self.sq_start.d.next = false;
+            self.sq_start_next.next = false;
             self.aw_v.d.next = false;
             self.w_v.d.next = false;
             self.b_v.d.next = false;
@@ -684,18 +875,6 @@ impl Logic for FccRegs {
             self.s_err.d.next = false;
             self.s_joins.d.next = self.zero24.val();
             self.s_gstall.d.next = self.zero24.val();
-            self.sh_k.d.next = self.def_k16.val();
-            self.sh_thh.d.next = self.def_thh.val();
-            self.sh_thv.d.next = self.def_thv.val();
-            self.sh_thh_c.d.next = self.def_thh_c.val();
-            self.sh_thv_c.d.next = self.def_thv_c.val();
-            self.sh_rows.d.next = self.def_rows16.val();
-            self.sh_cols.d.next = self.def_cols16.val();
-            self.act_k.d.next = self.def_k.val();
-            self.act_thh_c.d.next = self.def_thh_c.val();
-            self.act_thv_c.d.next = self.def_thv_c.val();
-            self.act_rows.d.next = self.def_rows.val();
-            self.act_cols.d.next = self.def_cols.val();
             self.err_k.d.next = false;
             self.err_thh.d.next = false;
             self.err_thv.d.next = false;
@@ -703,12 +882,45 @@ impl Logic for FccRegs {
             self.err_cols.d.next = false;
             self.sq_busy_q.d.next = false;
         }
+        self.sq_start.d.next = self.sq_start_next.val();
+        self.sq_start_acc.d.next = self.sq_start_next.val();
+        // The run registers, one cycle after `rst`: nothing can change them
+        // in that cycle (no write is held, the squarer is in reset, the
+        // pipeline reads them only after its merge table is initialised) and
+        // no read is taken in it.
+        self.run_rst_dims.d.next = self.rst.val();
+        self.run_rst_th_h.d.next = self.rst.val();
+        self.run_rst_th_v.d.next = self.rst.val();
+        self.run_rst_act_h.d.next = self.rst.val();
+        self.run_rst_act_v.d.next = self.rst.val();
+        if self.run_rst_dims.q.val() {
+            self.sh_k.d.next = self.def_k16.val();
+            self.sh_rows.d.next = self.def_rows16.val();
+            self.sh_cols.d.next = self.def_cols16.val();
+            self.act_k.d.next = self.def_k.val();
+            self.act_rows.d.next = self.def_rows.val();
+            self.act_cols.d.next = self.def_cols.val();
+        }
+        if self.run_rst_th_h.q.val() {
+            self.sh_thh.d.next = self.def_thh.val();
+            self.sh_thh_c.d.next = self.def_thh_c.val();
+        }
+        if self.run_rst_th_v.q.val() {
+            self.sh_thv.d.next = self.def_thv.val();
+            self.sh_thv_c.d.next = self.def_thv_c.val();
+        }
+        if self.run_rst_act_h.q.val() {
+            self.act_thh_c.d.next = self.def_thh_c.val();
+        }
+        if self.run_rst_act_v.q.val() {
+            self.act_thv_c.d.next = self.def_thv_c.val();
+        }
         // ---- Outputs.
         self.s_axil_awready.next = !self.aw_v.q.val();
         self.s_axil_wready.next = !self.w_v.q.val();
         self.s_axil_bvalid.next = self.b_v.q.val();
         self.s_axil_bresp.next = self.okay.val();
-        self.s_axil_arready.next = !self.r_v.q.val();
+        self.s_axil_arready.next = !self.r_v.q.val() & !self.run_rst_dims.q.val();
         self.s_axil_rvalid.next = self.r_v.q.val();
         self.s_axil_rdata.next = self.r_d.q.val();
         self.s_axil_rresp.next = self.okay.val();

@@ -3,10 +3,16 @@
 //! Owns the parent table `T` and the root table `R` (one read port, one
 //! write port each, two-cycle reads, `FccRam`) and gives their ports to the
 //! table's three users by mode: Init writes, Union reads and writes links,
-//! Flatten reads and writes. A read issued in the cycle of a write to the same
+//! Flatten reads and writes. `T` is written by links only: a root's word in
+//! `T` is never used (a walk ends at a root, and Flatten numbers a root
+//! without its parent), so making a word a root (Init, Flatten) writes `R`
+//! alone, and each table's write enable drives its own RAMs' pins only.
+//! A read issued in the cycle of a write to the same
 //! word gets the written word forwarded (`forward_hit`): only a link write can
-//! meet a read that way, so a forwarded word is always a link (a parent,
-//! never a root).
+//! meet a read that way (Init reads nothing; Flatten writes a word two cycles
+//! after reading it and reads in ascending order), so a forwarded word is
+//! always a link (a parent, never a root), and only link writes are
+//! registered for the comparison.
 
 use fcc_params::FccParams;
 use rust_hdl::prelude::*;
@@ -115,7 +121,8 @@ impl Logic for FccTablePorts {
         if self.flatten_active.val() {
             self.read_addr.next = self.flatten_read_addr.val();
         }
-        // Write port: a link (no longer a root), or a word made a root.
+        // Write ports: `R` takes a link (no longer a root) or a word made a
+        // root; `T` takes links only.
         self.write_en.next =
             self.link_en.val() | self.init_active.val() | self.flatten_write_en.val();
         self.write_root.next = self.init_active.val() | self.flatten_write_en.val();
@@ -128,17 +135,17 @@ impl Logic for FccTablePorts {
         }
         self.parent_ram.read_en.next = self.read_en.val();
         self.parent_ram.read_addr.next = self.read_addr.val();
-        self.parent_ram.write_en.next = self.write_en.val();
-        self.parent_ram.write_addr.next = self.write_addr.val();
+        self.parent_ram.write_en.next = self.link_en.val();
+        self.parent_ram.write_addr.next = self.link_addr.val();
         self.parent_ram.write_data.next = self.link_data.val();
         self.root_ram.read_en.next = self.read_en.val();
         self.root_ram.read_addr.next = self.read_addr.val();
         self.root_ram.write_en.next = self.write_en.val();
         self.root_ram.write_addr.next = self.write_addr.val();
         self.root_ram.write_data.next = self.write_root.val();
-        // Forwarding.
-        self.fwd_write_en.d.next = self.write_en.val();
-        self.fwd_write_addr.d.next = self.write_addr.val();
+        // Forwarding: link writes only (see above).
+        self.fwd_write_en.d.next = self.link_en.val();
+        self.fwd_write_addr.d.next = self.link_addr.val();
         self.fwd_write_data.d.next = self.link_data.val();
         self.fwd_write_data_s2.d.next = self.fwd_write_data.q.val();
         self.fwd_read_en.d.next = self.read_en.val();

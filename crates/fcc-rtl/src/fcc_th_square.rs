@@ -1,12 +1,15 @@
 //! `FccThSquare`: squares a threshold for the distance units, serially (shift
-//! and add, one multiplier bit per cycle, no DSP): `start` with `a` loads it;
+//! and add, one multiplier bit per cycle, no DSP): `start` with `a` loads it
+//! (`start_acc`, a copy of `start` in the same cycle, clears the sum, so
+//! that neither start net drives every register);
 //! `busy` stays high until the result is ready (at most 17 cycles), then
 //! `c_lt = -a^2` and `c_le = -(a^2 + 1)` (36-bit two's complement, the
 //! `FccSqDist` addends of `d2 < a^2` and `d2 <= a^2`) hold until the next
 //! `start`. `a` <= 0x8000, so `a^2` <= 2^30.
 //!
 //! The Verilog is written by hand (`Verilog::Custom`) for the widening of the
-//! 32-bit square to 36 bits; `update` models it cycle for cycle.
+//! 32-bit square to 36 bits; `update` models it cycle for cycle (with
+//! `start_acc` equal to `start`).
 
 use rust_hdl::prelude::*;
 
@@ -15,6 +18,7 @@ pub struct FccThSquare {
     pub clk: Signal<In, Clock>,
     pub rst: Signal<In, Bit>,
     pub start: Signal<In, Bit>,
+    pub start_acc: Signal<In, Bit>,
     pub a: Signal<In, Bits<16>>,
     pub busy: Signal<Out, Bit>,
     pub c_lt: Signal<Out, Bits<36>>,
@@ -32,6 +36,7 @@ impl FccThSquare {
             clk: Default::default(),
             rst: Default::default(),
             start: Default::default(),
+            start_acc: Default::default(),
             a: Default::default(),
             busy: Default::default(),
             c_lt: Default::default(),
@@ -99,15 +104,22 @@ impl Logic for FccThSquare {
              \x20   end else if (start) begin\n\
              \x20       m <= a;\n\
              \x20       c <= {16'd0, a};\n\
-             \x20       acc <= 32'd0;\n\
              \x20       run <= 1'b1;\n\
              \x20   end else if (run) begin\n\
              \x20       if (m == 16'd0) begin\n\
              \x20           run <= 1'b0;\n\
              \x20       end else begin\n\
-             \x20           if (m[0]) acc <= acc + c;\n\
              \x20           c <= {c[30:0], 1'b0};\n\
              \x20           m <= {1'b0, m[15:1]};\n\
+             \x20       end\n\
+             \x20   end\n\
+             end\n\
+             always @(posedge clk) begin\n\
+             \x20   if (!rst) begin\n\
+             \x20       if (start_acc) begin\n\
+             \x20           acc <= 32'd0;\n\
+             \x20       end else if (run && (m != 16'd0) && m[0]) begin\n\
+             \x20           acc <= acc + c;\n\
              \x20       end\n\
              \x20   end\n\
              end\n\

@@ -418,14 +418,12 @@ impl Logic for FccTop {
             self.phase.d.next = Phase::Out;
         }
         self.nxt_run.next = self.phase.q.val() == Phase::Run;
-        self.regs.frame_end.next = false;
         if (self.phase.q.val() == Phase::Out) & self.label_update.rb_done.val() {
             self.phase.d.next = Phase::Run;
             self.nxt_run.next = true;
             self.nxt_in_done.next = false;
             self.last_seen.d.next = false;
             self.err.d.next = false;
-            self.regs.frame_end.next = true;
         }
         self.pad.d.next = self.nxt_pad.val();
         self.discard.d.next = self.nxt_discard.val();
@@ -545,7 +543,11 @@ impl Logic for FccTop {
         self.status_frame_done.next = self.regs.frame_done.val();
         self.status_idle.next =
             (self.phase.q.val() == Phase::Run) & !self.in_done.q.val() & self.first.q.val();
-        self.regs.idle.next =
-            (self.phase.q.val() == Phase::Run) & !self.in_done.q.val() & self.first.q.val();
+        // The register file registers the phase flags it needs from their
+        // next-cycle values (the flip-flops' inputs, final here).
+        self.regs.frame_sent.next = self.label_update.rb_done.val();
+        self.regs.out_next.next = self.phase.d.val() == Phase::Out;
+        self.regs.idle_next.next =
+            (self.phase.d.val() == Phase::Run) & !self.in_done.d.val() & self.first.d.val();
     }
 }
