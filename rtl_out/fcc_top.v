@@ -454,9 +454,6 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
     reg  merge_table_rst$clock;
     reg  merge_table_rst$d;
     wire  merge_table_rst$q;
-    reg  label_update_rst$clock;
-    reg  label_update_rst$d;
-    wire  label_update_rst$q;
     reg  [1:0] phase$d;
     wire  [1:0] phase$q;
     reg  phase$clock;
@@ -937,11 +934,6 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
         .d(merge_table_rst$d),
         .q(merge_table_rst$q)
     );
-    fcc_top__label_update_rst_k7_668cf05b label_update_rst(
-        .clock(label_update_rst$clock),
-        .d(label_update_rst$d),
-        .q(label_update_rst$q)
-    );
     fcc_top__phase_k7_668cf05b phase(
         .d(phase$d),
         .q(phase$q),
@@ -1260,12 +1252,10 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
         window_rst$clock = clk;
         dist_tree_rst$clock = clk;
         merge_table_rst$clock = clk;
-        label_update_rst$clock = clk;
         intra_rst$d = regs$core_rst_next;
         window_rst$d = regs$core_rst_next;
         dist_tree_rst$d = regs$core_rst_next;
         merge_table_rst$d = regs$core_rst_next;
-        label_update_rst$d = regs$core_rst_next;
         intra$rst = intra_rst$q;
         intra$pix = slot_q$q;
         intra$last_col = last_col$q;
@@ -1429,7 +1419,7 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
         merge_table$jsame = sort_net$jsame;
         merge_table$provisional = intra$provisional;
         merge_table$gear_used = label_update$gear_used;
-        label_update$rst = label_update_rst$q;
+        label_update$rst = regs$core_rst_next;
         label_update$wr_valid = intra$out[0:0];
         label_update$wr_state = intra$out[67:66];
         label_update$wr_last = intra$out[100:100];
@@ -6695,6 +6685,27 @@ module fcc_label_update_k7_668cf05b(clk,rst,wr_valid,wr_state,wr_last,rb_start,f
     output reg  [23:0] gear_stalls;
 
     // Stub signals
+    reg  rst_copy$0$clock;
+    reg  rst_copy$0$d;
+    wire  rst_copy$0$q;
+    reg  rst_copy$1$clock;
+    reg  rst_copy$1$d;
+    wire  rst_copy$1$q;
+    reg  rst_copy$2$clock;
+    reg  rst_copy$2$d;
+    wire  rst_copy$2$q;
+    reg  rst_copy$3$clock;
+    reg  rst_copy$3$d;
+    wire  rst_copy$3$q;
+    reg  rst_copy$4$clock;
+    reg  rst_copy$4$d;
+    wire  rst_copy$4$q;
+    reg  rst_copy$5$clock;
+    reg  rst_copy$5$d;
+    wire  rst_copy$5$q;
+    reg  rst_copy$6$clock;
+    reg  rst_copy$6$d;
+    wire  rst_copy$6$q;
     reg  writer$clk;
     reg  writer$rst;
     reg  writer$pixel_valid;
@@ -6733,6 +6744,8 @@ module fcc_label_update_k7_668cf05b(clk,rst,wr_valid,wr_state,wr_last,rb_start,f
     wire  [26:0] queue$head;
     reg  gearbox$clk;
     reg  gearbox$rst;
+    reg  gearbox$rst_low_slots;
+    reg  gearbox$rst_high_slots;
     reg  gearbox$clear;
     reg  gearbox$push_valid;
     reg  [15:0] gearbox$push_label;
@@ -6745,6 +6758,7 @@ module fcc_label_update_k7_668cf05b(clk,rst,wr_valid,wr_state,wr_last,rb_start,f
     wire  gearbox$has_two;
     reg  assembly$clk;
     reg  assembly$rst;
+    reg  assembly$rst_collected;
     reg  assembly$clear;
     reg  assembly$head_valid;
     reg  [26:0] assembly$head;
@@ -6764,6 +6778,41 @@ module fcc_label_update_k7_668cf05b(clk,rst,wr_valid,wr_state,wr_last,rb_start,f
     wire  [23:0] assembly$gear_stalls;
 
     // Sub module instances
+    fcc_label_update__rst_copy__0_k7_668cf05b rst_copy$0(
+        .clock(rst_copy$0$clock),
+        .d(rst_copy$0$d),
+        .q(rst_copy$0$q)
+    );
+    fcc_label_update__rst_copy__1_k7_668cf05b rst_copy$1(
+        .clock(rst_copy$1$clock),
+        .d(rst_copy$1$d),
+        .q(rst_copy$1$q)
+    );
+    fcc_label_update__rst_copy__2_k7_668cf05b rst_copy$2(
+        .clock(rst_copy$2$clock),
+        .d(rst_copy$2$d),
+        .q(rst_copy$2$q)
+    );
+    fcc_label_update__rst_copy__3_k7_668cf05b rst_copy$3(
+        .clock(rst_copy$3$clock),
+        .d(rst_copy$3$d),
+        .q(rst_copy$3$q)
+    );
+    fcc_label_update__rst_copy__4_k7_668cf05b rst_copy$4(
+        .clock(rst_copy$4$clock),
+        .d(rst_copy$4$d),
+        .q(rst_copy$4$q)
+    );
+    fcc_label_update__rst_copy__5_k7_668cf05b rst_copy$5(
+        .clock(rst_copy$5$clock),
+        .d(rst_copy$5$d),
+        .q(rst_copy$5$q)
+    );
+    fcc_label_update__rst_copy__6_k7_668cf05b rst_copy$6(
+        .clock(rst_copy$6$clock),
+        .d(rst_copy$6$d),
+        .q(rst_copy$6$q)
+    );
     fcc_label_update__writer_k7_668cf05b writer(
         .clk(writer$clk),
         .rst(writer$rst),
@@ -6811,6 +6860,8 @@ module fcc_label_update_k7_668cf05b(clk,rst,wr_valid,wr_state,wr_last,rb_start,f
     fcc_label_update__gearbox_k7_668cf05b gearbox(
         .clk(gearbox$clk),
         .rst(gearbox$rst),
+        .rst_low_slots(gearbox$rst_low_slots),
+        .rst_high_slots(gearbox$rst_high_slots),
         .clear(gearbox$clear),
         .push_valid(gearbox$push_valid),
         .push_label(gearbox$push_label),
@@ -6825,6 +6876,7 @@ module fcc_label_update_k7_668cf05b(clk,rst,wr_valid,wr_state,wr_last,rb_start,f
     fcc_label_update__assembly_k7_668cf05b assembly(
         .clk(assembly$clk),
         .rst(assembly$rst),
+        .rst_collected(assembly$rst_collected),
         .clear(assembly$clear),
         .head_valid(assembly$head_valid),
         .head(assembly$head),
@@ -6852,11 +6904,28 @@ module fcc_label_update_k7_668cf05b(clk,rst,wr_valid,wr_state,wr_last,rb_start,f
         queue$clk = clk;
         gearbox$clk = clk;
         assembly$clk = clk;
-        writer$rst = rst;
-        pipeline$rst = rst;
-        queue$rst = rst;
-        gearbox$rst = rst;
-        assembly$rst = rst;
+        rst_copy$0$clock = clk;
+        rst_copy$0$d = rst;
+        rst_copy$1$clock = clk;
+        rst_copy$1$d = rst;
+        rst_copy$2$clock = clk;
+        rst_copy$2$d = rst;
+        rst_copy$3$clock = clk;
+        rst_copy$3$d = rst;
+        rst_copy$4$clock = clk;
+        rst_copy$4$d = rst;
+        rst_copy$5$clock = clk;
+        rst_copy$5$d = rst;
+        rst_copy$6$clock = clk;
+        rst_copy$6$d = rst;
+        writer$rst = rst_copy$0$q;
+        pipeline$rst = rst_copy$1$q;
+        queue$rst = rst_copy$1$q;
+        gearbox$rst = rst_copy$2$q;
+        gearbox$rst_low_slots = rst_copy$3$q;
+        gearbox$rst_high_slots = rst_copy$4$q;
+        assembly$rst = rst_copy$5$q;
+        assembly$rst_collected = rst_copy$6$q;
         writer$pixel_valid = wr_valid;
         writer$pixel_code = wr_state;
         writer$pixel_last = wr_last;
@@ -6899,11 +6968,12 @@ module fcc_label_update_k7_668cf05b(clk,rst,wr_valid,wr_state,wr_last,rb_start,f
 endmodule // fcc_label_update_k7_668cf05b
 
 
-module fcc_label_update__assembly_k7_668cf05b(clk,rst,clear,head_valid,head,head_done,gear_front,gear_second,gear_has_one,gear_has_two,gear_pop,gear_pop_two,m_axis_tdata,m_axis_tkeep,m_axis_tvalid,m_axis_tlast,m_axis_tready,frame_sent,gear_stalls);
+module fcc_label_update__assembly_k7_668cf05b(clk,rst,rst_collected,clear,head_valid,head,head_done,gear_front,gear_second,gear_has_one,gear_has_two,gear_pop,gear_pop_two,m_axis_tdata,m_axis_tkeep,m_axis_tvalid,m_axis_tlast,m_axis_tready,frame_sent,gear_stalls);
 
     // Module arguments
     input wire  clk;
     input wire  rst;
+    input wire  rst_collected;
     input wire  clear;
     input wire  head_valid;
     input wire  [26:0] head;
@@ -7283,6 +7353,8 @@ module fcc_label_update__assembly_k7_668cf05b(clk,rst,clear,head_valid,head,head
             taken$d = zero3;
             out_valid$d = 1'b0;
             carried_run$d = zero16;
+        end
+        if (rst_collected) begin
             collected$0$d = zero16;
             collected$1$d = zero16;
             collected$2$d = zero16;
@@ -7944,11 +8016,13 @@ module fcc_label_update__fb_k7_668cf05b(clk,read_en,read_addr,read_data,write_en
 endmodule // fcc_label_update__fb_k7_668cf05b
 
 
-module fcc_label_update__gearbox_k7_668cf05b(clk,rst,clear,push_valid,push_label,pop,pop_two,front,second,used,has_one,has_two);
+module fcc_label_update__gearbox_k7_668cf05b(clk,rst,rst_low_slots,rst_high_slots,clear,push_valid,push_label,pop,pop_two,front,second,used,has_one,has_two);
 
     // Module arguments
     input wire  clk;
     input wire  rst;
+    input wire  rst_low_slots;
+    input wire  rst_high_slots;
     input wire  clear;
     input wire  push_valid;
     input wire  [15:0] push_label;
@@ -8011,11 +8085,29 @@ module fcc_label_update__gearbox_k7_668cf05b(clk,rst,clear,push_valid,push_label
     reg  [2:0] second_slot$d;
     wire  [2:0] second_slot$q;
     reg  second_slot$clock;
+    reg  [2:0] third_slot$d;
+    wire  [2:0] third_slot$q;
+    reg  third_slot$clock;
+    reg  [2:0] fourth_slot$d;
+    wire  [2:0] fourth_slot$q;
+    reg  fourth_slot$clock;
     reg  [2:0] write_slot$d;
     wire  [2:0] write_slot$q;
     reg  write_slot$clock;
+    reg  [15:0] front_label$d;
+    wire  [15:0] front_label$q;
+    reg  front_label$clock;
+    reg  [15:0] second_label$d;
+    wire  [15:0] second_label$q;
+    reg  second_label$clock;
 
     // Local signals
+    reg  [15:0] third_ring;
+    reg  [15:0] fourth_ring;
+    reg  [15:0] ahead$0;
+    reg  [15:0] ahead$1;
+    reg  [15:0] ahead$2;
+    reg  [15:0] ahead$3;
     reg  pop_one;
     reg  [3:0] count_inc;
     reg  [3:0] count_dec;
@@ -8077,10 +8169,30 @@ module fcc_label_update__gearbox_k7_668cf05b(clk,rst,clear,push_valid,push_label
         .q(second_slot$q),
         .clock(second_slot$clock)
     );
+    fcc_label_update__gearbox__third_slot_k7_668cf05b third_slot(
+        .d(third_slot$d),
+        .q(third_slot$q),
+        .clock(third_slot$clock)
+    );
+    fcc_label_update__gearbox__fourth_slot_k7_668cf05b fourth_slot(
+        .d(fourth_slot$d),
+        .q(fourth_slot$q),
+        .clock(fourth_slot$clock)
+    );
     fcc_label_update__gearbox__write_slot_k7_668cf05b write_slot(
         .d(write_slot$d),
         .q(write_slot$q),
         .clock(write_slot$clock)
+    );
+    fcc_label_update__gearbox__front_label_k7_668cf05b front_label(
+        .d(front_label$d),
+        .q(front_label$q),
+        .clock(front_label$clock)
+    );
+    fcc_label_update__gearbox__second_label_k7_668cf05b second_label(
+        .d(second_label$d),
+        .q(second_label$q),
+        .clock(second_label$clock)
     );
 
     // Update code
@@ -8088,11 +8200,19 @@ module fcc_label_update__gearbox_k7_668cf05b(clk,rst,clear,push_valid,push_label
         count$clock = clk;
         read_slot$clock = clk;
         second_slot$clock = clk;
+        third_slot$clock = clk;
+        fourth_slot$clock = clk;
         write_slot$clock = clk;
+        front_label$clock = clk;
+        second_label$clock = clk;
         count$d = count$q;
         read_slot$d = read_slot$q;
         second_slot$d = second_slot$q;
+        third_slot$d = third_slot$q;
+        fourth_slot$d = fourth_slot$q;
         write_slot$d = write_slot$q;
+        front_label$d = front_label$q;
+        second_label$d = second_label$q;
         slots$0$clock = clk;
         slots$0$d = slots$0$q;
         slots$1$clock = clk;
@@ -8112,55 +8232,75 @@ module fcc_label_update__gearbox_k7_668cf05b(clk,rst,clear,push_valid,push_label
         used = count$q;
         has_one = count$q != count_is$0;
         has_two = (count$q != count_is$0) & (count$q != count_is$1);
-        front = slots$0$q;
-        second = slots$0$q;
-        if (read_slot$q == slot_is$0) begin
-            front = slots$0$q;
+        front = front_label$q;
+        second = second_label$q;
+        third_ring = slots$0$q;
+        fourth_ring = slots$0$q;
+        if (third_slot$q == slot_is$0) begin
+            third_ring = slots$0$q;
         end
-        if (second_slot$q == slot_is$0) begin
-            second = slots$0$q;
+        if (fourth_slot$q == slot_is$0) begin
+            fourth_ring = slots$0$q;
         end
-        if (read_slot$q == slot_is$1) begin
-            front = slots$1$q;
+        if (third_slot$q == slot_is$1) begin
+            third_ring = slots$1$q;
         end
-        if (second_slot$q == slot_is$1) begin
-            second = slots$1$q;
+        if (fourth_slot$q == slot_is$1) begin
+            fourth_ring = slots$1$q;
         end
-        if (read_slot$q == slot_is$2) begin
-            front = slots$2$q;
+        if (third_slot$q == slot_is$2) begin
+            third_ring = slots$2$q;
         end
-        if (second_slot$q == slot_is$2) begin
-            second = slots$2$q;
+        if (fourth_slot$q == slot_is$2) begin
+            fourth_ring = slots$2$q;
         end
-        if (read_slot$q == slot_is$3) begin
-            front = slots$3$q;
+        if (third_slot$q == slot_is$3) begin
+            third_ring = slots$3$q;
         end
-        if (second_slot$q == slot_is$3) begin
-            second = slots$3$q;
+        if (fourth_slot$q == slot_is$3) begin
+            fourth_ring = slots$3$q;
         end
-        if (read_slot$q == slot_is$4) begin
-            front = slots$4$q;
+        if (third_slot$q == slot_is$4) begin
+            third_ring = slots$4$q;
         end
-        if (second_slot$q == slot_is$4) begin
-            second = slots$4$q;
+        if (fourth_slot$q == slot_is$4) begin
+            fourth_ring = slots$4$q;
         end
-        if (read_slot$q == slot_is$5) begin
-            front = slots$5$q;
+        if (third_slot$q == slot_is$5) begin
+            third_ring = slots$5$q;
         end
-        if (second_slot$q == slot_is$5) begin
-            second = slots$5$q;
+        if (fourth_slot$q == slot_is$5) begin
+            fourth_ring = slots$5$q;
         end
-        if (read_slot$q == slot_is$6) begin
-            front = slots$6$q;
+        if (third_slot$q == slot_is$6) begin
+            third_ring = slots$6$q;
         end
-        if (second_slot$q == slot_is$6) begin
-            second = slots$6$q;
+        if (fourth_slot$q == slot_is$6) begin
+            fourth_ring = slots$6$q;
         end
-        if (read_slot$q == slot_is$7) begin
-            front = slots$7$q;
+        if (third_slot$q == slot_is$7) begin
+            third_ring = slots$7$q;
         end
-        if (second_slot$q == slot_is$7) begin
-            second = slots$7$q;
+        if (fourth_slot$q == slot_is$7) begin
+            fourth_ring = slots$7$q;
+        end
+        ahead$0 = front_label$q;
+        ahead$1 = second_label$q;
+        ahead$2 = third_ring;
+        ahead$3 = fourth_ring;
+        if (push_valid) begin
+            if (write_slot$q == read_slot$q) begin
+                ahead$0 = push_label;
+            end
+            if (write_slot$q == second_slot$q) begin
+                ahead$1 = push_label;
+            end
+            if (write_slot$q == third_slot$q) begin
+                ahead$2 = push_label;
+            end
+            if (write_slot$q == fourth_slot$q) begin
+                ahead$3 = push_label;
+            end
         end
         if (push_valid) begin
             if (write_slot$q == slot_is$0) begin
@@ -8189,13 +8329,23 @@ module fcc_label_update__gearbox_k7_668cf05b(clk,rst,clear,push_valid,push_label
             end
             write_slot$d = write_slot$q + one3;
         end
+        front_label$d = ahead$0;
+        second_label$d = ahead$1;
         if (pop) begin
             read_slot$d = read_slot$q + one3;
             second_slot$d = second_slot$q + one3;
+            third_slot$d = third_slot$q + one3;
+            fourth_slot$d = fourth_slot$q + one3;
+            front_label$d = ahead$1;
+            second_label$d = ahead$2;
         end
         if (pop_two) begin
             read_slot$d = read_slot$q + two3;
             second_slot$d = second_slot$q + two3;
+            third_slot$d = third_slot$q + two3;
+            fourth_slot$d = fourth_slot$q + two3;
+            front_label$d = ahead$2;
+            second_label$d = ahead$3;
         end
         pop_one = pop & ~pop_two;
         count_inc = count$q + one;
@@ -8224,17 +8374,25 @@ module fcc_label_update__gearbox_k7_668cf05b(clk,rst,clear,push_valid,push_label
             count$d = count_is$0;
             read_slot$d = slot_is$0;
             second_slot$d = slot_is$1;
+            third_slot$d = slot_is$2;
+            fourth_slot$d = slot_is$3;
             write_slot$d = slot_is$0;
         end
-        if (rst) begin
+        if (rst_low_slots) begin
             slots$0$d = empty_slot;
             slots$1$d = empty_slot;
             slots$2$d = empty_slot;
             slots$3$d = empty_slot;
+        end
+        if (rst_high_slots) begin
             slots$4$d = empty_slot;
             slots$5$d = empty_slot;
             slots$6$d = empty_slot;
             slots$7$d = empty_slot;
+        end
+        if (rst) begin
+            front_label$d = empty_slot;
+            second_label$d = empty_slot;
         end
     end
 
@@ -8260,6 +8418,44 @@ module fcc_label_update__gearbox__count_k7_668cf05b(d,q,clock);
 endmodule // fcc_label_update__gearbox__count_k7_668cf05b
 
 
+module fcc_label_update__gearbox__fourth_slot_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__gearbox__fourth_slot_k7_668cf05b
+
+
+module fcc_label_update__gearbox__front_label_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__gearbox__front_label_k7_668cf05b
+
+
 module fcc_label_update__gearbox__read_slot_k7_668cf05b(d,q,clock);
 
     // Module arguments
@@ -8277,6 +8473,25 @@ module fcc_label_update__gearbox__read_slot_k7_668cf05b(d,q,clock);
     end
 
 endmodule // fcc_label_update__gearbox__read_slot_k7_668cf05b
+
+
+module fcc_label_update__gearbox__second_label_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__gearbox__second_label_k7_668cf05b
 
 
 module fcc_label_update__gearbox__second_slot_k7_668cf05b(d,q,clock);
@@ -8450,6 +8665,25 @@ module fcc_label_update__gearbox__slots__7_k7_668cf05b(d,q,clock);
 endmodule // fcc_label_update__gearbox__slots__7_k7_668cf05b
 
 
+module fcc_label_update__gearbox__third_slot_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__gearbox__third_slot_k7_668cf05b
+
+
 module fcc_label_update__gearbox__write_slot_k7_668cf05b(d,q,clock);
 
     // Module arguments
@@ -8485,6 +8719,7 @@ module fcc_label_update__pipeline_k7_668cf05b(clk,rst,start,beats_m1,last_beat_l
     output reg  [26:0] beat;
 
     // Constant declarations
+    localparam  word_pos_bits = 2'b0;
     localparam  pos$0 = 2'b0;
     localparam  pos$1 = 2'b1;
     localparam  pos$2 = 2'b10;
@@ -8493,10 +8728,10 @@ module fcc_label_update__pipeline_k7_668cf05b(clk,rst,start,beats_m1,last_beat_l
     localparam  slot_off$1 = 2'b1;
     localparam  slot_off$2 = 2'b10;
     localparam  slot_off$3 = 2'b11;
-    localparam  slot_idx$0 = 3'b0;
-    localparam  slot_idx$1 = 3'b1;
-    localparam  slot_idx$2 = 3'b10;
-    localparam  slot_idx$3 = 3'b11;
+    localparam  slot_used$0 = 8'h1;
+    localparam  slot_used$1 = 8'h4;
+    localparam  slot_used$2 = 8'h10;
+    localparam  slot_used$3 = 8'h40;
     localparam  keep_n$0 = 8'h0;
     localparam  keep_n$1 = 8'h3;
     localparam  keep_n$2 = 8'hf;
@@ -8512,12 +8747,12 @@ module fcc_label_update__pipeline_k7_668cf05b(clk,rst,start,beats_m1,last_beat_l
     localparam  code_unlabelled = 2'b11;
     localparam  src_zero = 3'b0;
     localparam  src_carried = 3'b1;
-    localparam  src_new = 3'b10;
-    localparam  max_in_flight = 3'b100;
+    localparam  max_in_flight = 3'b101;
     localparam  lpb3 = 3'b100;
     localparam  lpb20 = 20'h4;
     localparam  one3 = 3'b1;
     localparam  zero3 = 3'b0;
+    localparam  zero8 = 8'h0;
     localparam  one20 = 20'h1;
     localparam  zero20 = 20'h0;
 
@@ -8540,6 +8775,9 @@ module fcc_label_update__pipeline_k7_668cf05b(clk,rst,start,beats_m1,last_beat_l
     reg  [2:0] in_flight$d;
     wire  [2:0] in_flight$q;
     reg  in_flight$clock;
+    reg  beat_done_q$d;
+    wire  beat_done_q$q;
+    reg  beat_done_q$clock;
     reg  valid_s1$d;
     wire  valid_s1$q;
     reg  valid_s1$clock;
@@ -8561,9 +8799,9 @@ module fcc_label_update__pipeline_k7_668cf05b(clk,rst,start,beats_m1,last_beat_l
     reg  [1:0] word_pos_s2$d;
     wire  [1:0] word_pos_s2$q;
     reg  word_pos_s2$clock;
-    reg  [2:0] labels_s2$d;
-    wire  [2:0] labels_s2$q;
-    reg  labels_s2$clock;
+    reg  [7:0] keep_s2$d;
+    wire  [7:0] keep_s2$q;
+    reg  keep_s2$clock;
     reg  last_s2$d;
     wire  last_s2$q;
     reg  last_s2$clock;
@@ -8583,20 +8821,26 @@ module fcc_label_update__pipeline_k7_668cf05b(clk,rst,start,beats_m1,last_beat_l
     reg  [1:0] code$1;
     reg  [1:0] code$2;
     reg  [1:0] code$3;
-    reg  [2:0] run_src$0;
-    reg  [2:0] run_src$1;
-    reg  [2:0] run_src$2;
-    reg  [2:0] run_src$3;
-    reg  [2:0] run_src$4;
-    reg  [2:0] new_count$0;
-    reg  [2:0] new_count$1;
-    reg  [2:0] new_count$2;
-    reg  [2:0] new_count$3;
-    reg  [2:0] new_count$4;
+    reg  [2:0] labelled$0;
+    reg  [2:0] labelled$1;
+    reg  [2:0] labelled$2;
+    reg  [2:0] labelled$3;
+    reg  [2:0] labelled_01;
+    reg  [2:0] labelled_23;
+    reg  [2:0] started$0;
+    reg  [2:0] started$1;
+    reg  [2:0] started$2;
+    reg  [2:0] started$3;
     reg  [2:0] slot_src$0;
     reg  [2:0] slot_src$1;
     reg  [2:0] slot_src$2;
     reg  [2:0] slot_src$3;
+    reg  zero_run$0;
+    reg  zero_run$1;
+    reg  zero_run$2;
+    reg  zero_run$3;
+    reg  zero_run$4;
+    reg  [2:0] run_src;
     reg  [1:0] pos_in_word;
 
     // Sub module instances
@@ -8629,6 +8873,11 @@ module fcc_label_update__pipeline_k7_668cf05b(clk,rst,start,beats_m1,last_beat_l
         .d(in_flight$d),
         .q(in_flight$q),
         .clock(in_flight$clock)
+    );
+    fcc_label_update__pipeline__beat_done_q_k7_668cf05b beat_done_q(
+        .d(beat_done_q$d),
+        .q(beat_done_q$q),
+        .clock(beat_done_q$clock)
     );
     fcc_label_update__pipeline__valid_s1_k7_668cf05b valid_s1(
         .d(valid_s1$d),
@@ -8665,10 +8914,10 @@ module fcc_label_update__pipeline_k7_668cf05b(clk,rst,start,beats_m1,last_beat_l
         .q(word_pos_s2$q),
         .clock(word_pos_s2$clock)
     );
-    fcc_label_update__pipeline__labels_s2_k7_668cf05b labels_s2(
-        .d(labels_s2$d),
-        .q(labels_s2$q),
-        .clock(labels_s2$clock)
+    fcc_label_update__pipeline__keep_s2_k7_668cf05b keep_s2(
+        .d(keep_s2$d),
+        .q(keep_s2$q),
+        .clock(keep_s2$clock)
     );
     fcc_label_update__pipeline__last_s2_k7_668cf05b last_s2(
         .d(last_s2$d),
@@ -8699,6 +8948,7 @@ module fcc_label_update__pipeline_k7_668cf05b(clk,rst,start,beats_m1,last_beat_l
         last_next$clock = clk;
         first_next$clock = clk;
         in_flight$clock = clk;
+        beat_done_q$clock = clk;
         valid_s1$clock = clk;
         word_pos_s1$clock = clk;
         labels_s1$clock = clk;
@@ -8706,7 +8956,7 @@ module fcc_label_update__pipeline_k7_668cf05b(clk,rst,start,beats_m1,last_beat_l
         first_s1$clock = clk;
         valid_s2$clock = clk;
         word_pos_s2$clock = clk;
-        labels_s2$clock = clk;
+        keep_s2$clock = clk;
         last_s2$clock = clk;
         first_s2$clock = clk;
         valid_s3$clock = clk;
@@ -8717,6 +8967,7 @@ module fcc_label_update__pipeline_k7_668cf05b(clk,rst,start,beats_m1,last_beat_l
         last_next$d = last_next$q;
         first_next$d = first_next$q;
         in_flight$d = in_flight$q;
+        beat_done_q$d = beat_done_q$q;
         valid_s1$d = valid_s1$q;
         word_pos_s1$d = word_pos_s1$q;
         labels_s1$d = labels_s1$q;
@@ -8724,17 +8975,18 @@ module fcc_label_update__pipeline_k7_668cf05b(clk,rst,start,beats_m1,last_beat_l
         first_s1$d = first_s1$q;
         valid_s2$d = valid_s2$q;
         word_pos_s2$d = word_pos_s2$q;
-        labels_s2$d = labels_s2$q;
+        keep_s2$d = keep_s2$q;
         last_s2$d = last_s2$q;
         first_s2$d = first_s2$q;
         valid_s3$d = valid_s3$q;
         beat_s3$d = beat_s3$q;
-        issue = active$q & ((in_flight$q < max_in_flight) | beat_done);
+        beat_done_q$d = beat_done;
+        issue = active$q & ((in_flight$q < max_in_flight) | beat_done_q$q);
         read_en = issue;
         read_addr = pixel$q[18:2];
         valid_s1$d = issue;
         if (issue) begin
-            word_pos_s1$d = pixel$q[1:0];
+            word_pos_s1$d = pixel$q[1:0] & word_pos_bits;
             labels_s1$d = lpb3;
             last_s1$d = 1'b0;
             first_s1$d = first_next$q;
@@ -8748,15 +9000,30 @@ module fcc_label_update__pipeline_k7_668cf05b(clk,rst,start,beats_m1,last_beat_l
             beats_left$d = beats_left$q - one20;
             last_next$d = beats_left$q == one20;
         end
-        if (issue & ~beat_done) begin
+        if (issue & ~beat_done_q$q) begin
             in_flight$d = in_flight$q + one3;
         end
-        if (~issue & beat_done) begin
+        if (~issue & beat_done_q$q) begin
             in_flight$d = in_flight$q - one3;
         end
         valid_s2$d = valid_s1$q;
         word_pos_s2$d = word_pos_s1$q;
-        labels_s2$d = labels_s1$q;
+        keep_s2$d = keep_n$0;
+        if (labels_s1$q == labels$0) begin
+            keep_s2$d = keep_n$0;
+        end
+        if (labels_s1$q == labels$1) begin
+            keep_s2$d = keep_n$1;
+        end
+        if (labels_s1$q == labels$2) begin
+            keep_s2$d = keep_n$2;
+        end
+        if (labels_s1$q == labels$3) begin
+            keep_s2$d = keep_n$3;
+        end
+        if (labels_s1$q == labels$4) begin
+            keep_s2$d = keep_n$4;
+        end
         last_s2$d = last_s1$q;
         first_s2$d = first_s1$q;
         code$0 = code_empty;
@@ -8776,7 +9043,7 @@ module fcc_label_update__pipeline_k7_668cf05b(clk,rst,start,beats_m1,last_beat_l
         if (pos_in_word == pos$3) begin
             code$0 = read_data[7:6];
         end
-        if (slot_idx$0 >= labels_s2$q) begin
+        if ((keep_s2$q & slot_used$0) == zero8) begin
             code$0 = code_empty;
         end
         pos_in_word = word_pos_s2$q + slot_off$1;
@@ -8792,7 +9059,7 @@ module fcc_label_update__pipeline_k7_668cf05b(clk,rst,start,beats_m1,last_beat_l
         if (pos_in_word == pos$3) begin
             code$1 = read_data[7:6];
         end
-        if (slot_idx$1 >= labels_s2$q) begin
+        if ((keep_s2$q & slot_used$1) == zero8) begin
             code$1 = code_empty;
         end
         pos_in_word = word_pos_s2$q + slot_off$2;
@@ -8808,7 +9075,7 @@ module fcc_label_update__pipeline_k7_668cf05b(clk,rst,start,beats_m1,last_beat_l
         if (pos_in_word == pos$3) begin
             code$2 = read_data[7:6];
         end
-        if (slot_idx$2 >= labels_s2$q) begin
+        if ((keep_s2$q & slot_used$2) == zero8) begin
             code$2 = code_empty;
         end
         pos_in_word = word_pos_s2$q + slot_off$3;
@@ -8824,89 +9091,80 @@ module fcc_label_update__pipeline_k7_668cf05b(clk,rst,start,beats_m1,last_beat_l
         if (pos_in_word == pos$3) begin
             code$3 = read_data[7:6];
         end
-        if (slot_idx$3 >= labels_s2$q) begin
+        if ((keep_s2$q & slot_used$3) == zero8) begin
             code$3 = code_empty;
         end
-        run_src$0 = src_carried;
-        if (first_s2$q) begin
-            run_src$0 = src_zero;
-        end
-        new_count$0 = zero3;
-        run_src$1 = run_src$0;
-        new_count$1 = new_count$0;
+        zero_run$0 = first_s2$q;
+        labelled$0 = zero3;
+        zero_run$1 = zero_run$0;
         if (code$0 == code_labelled) begin
-            run_src$1 = new_count$0 + src_new;
-            new_count$1 = new_count$0 + one3;
+            labelled$0 = one3;
+            zero_run$1 = 1'b0;
         end
         if (code$0 == code_unlabelled) begin
-            run_src$1 = src_zero;
+            zero_run$1 = 1'b1;
         end
-        slot_src$0 = run_src$1;
-        if (code$0 == code_empty) begin
-            slot_src$0 = src_zero;
-        end
-        run_src$2 = run_src$1;
-        new_count$2 = new_count$1;
+        labelled$1 = zero3;
+        zero_run$2 = zero_run$1;
         if (code$1 == code_labelled) begin
-            run_src$2 = new_count$1 + src_new;
-            new_count$2 = new_count$1 + one3;
+            labelled$1 = one3;
+            zero_run$2 = 1'b0;
         end
         if (code$1 == code_unlabelled) begin
-            run_src$2 = src_zero;
+            zero_run$2 = 1'b1;
         end
-        slot_src$1 = run_src$2;
-        if (code$1 == code_empty) begin
-            slot_src$1 = src_zero;
-        end
-        run_src$3 = run_src$2;
-        new_count$3 = new_count$2;
+        labelled$2 = zero3;
+        zero_run$3 = zero_run$2;
         if (code$2 == code_labelled) begin
-            run_src$3 = new_count$2 + src_new;
-            new_count$3 = new_count$2 + one3;
+            labelled$2 = one3;
+            zero_run$3 = 1'b0;
         end
         if (code$2 == code_unlabelled) begin
-            run_src$3 = src_zero;
+            zero_run$3 = 1'b1;
         end
-        slot_src$2 = run_src$3;
-        if (code$2 == code_empty) begin
-            slot_src$2 = src_zero;
-        end
-        run_src$4 = run_src$3;
-        new_count$4 = new_count$3;
+        labelled$3 = zero3;
+        zero_run$4 = zero_run$3;
         if (code$3 == code_labelled) begin
-            run_src$4 = new_count$3 + src_new;
-            new_count$4 = new_count$3 + one3;
+            labelled$3 = one3;
+            zero_run$4 = 1'b0;
         end
         if (code$3 == code_unlabelled) begin
-            run_src$4 = src_zero;
+            zero_run$4 = 1'b1;
         end
-        slot_src$3 = run_src$4;
-        if (code$3 == code_empty) begin
+        labelled_01 = labelled$0 + labelled$1;
+        labelled_23 = labelled$2 + labelled$3;
+        started$0 = labelled$0;
+        started$1 = labelled_01;
+        started$2 = labelled_01 + labelled$2;
+        started$3 = labelled_01 + labelled_23;
+        slot_src$0 = started$0 + src_carried;
+        if (zero_run$1 | (code$0 == code_empty)) begin
+            slot_src$0 = src_zero;
+        end
+        slot_src$1 = started$1 + src_carried;
+        if (zero_run$2 | (code$1 == code_empty)) begin
+            slot_src$1 = src_zero;
+        end
+        slot_src$2 = started$2 + src_carried;
+        if (zero_run$3 | (code$2 == code_empty)) begin
+            slot_src$2 = src_zero;
+        end
+        slot_src$3 = started$3 + src_carried;
+        if (zero_run$4 | (code$3 == code_empty)) begin
             slot_src$3 = src_zero;
+        end
+        run_src = started$3 + src_carried;
+        if (zero_run$4) begin
+            run_src = src_zero;
         end
         valid_s3$d = valid_s2$q;
         beat_s3$d[2:0] = slot_src$0;
         beat_s3$d[5:3] = slot_src$1;
         beat_s3$d[8:6] = slot_src$2;
         beat_s3$d[11:9] = slot_src$3;
-        beat_s3$d[14:12] = run_src$4;
-        beat_s3$d[17:15] = new_count$4;
-        beat_s3$d[25:18] = keep_n$0;
-        if (labels_s2$q == labels$0) begin
-            beat_s3$d[25:18] = keep_n$0;
-        end
-        if (labels_s2$q == labels$1) begin
-            beat_s3$d[25:18] = keep_n$1;
-        end
-        if (labels_s2$q == labels$2) begin
-            beat_s3$d[25:18] = keep_n$2;
-        end
-        if (labels_s2$q == labels$3) begin
-            beat_s3$d[25:18] = keep_n$3;
-        end
-        if (labels_s2$q == labels$4) begin
-            beat_s3$d[25:18] = keep_n$4;
-        end
+        beat_s3$d[14:12] = run_src;
+        beat_s3$d[17:15] = started$3;
+        beat_s3$d[25:18] = keep_s2$q;
         beat_s3$d[26:26] = last_s2$q;
         beat_valid = valid_s3$q;
         beat = beat_s3$q;
@@ -8917,6 +9175,7 @@ module fcc_label_update__pipeline_k7_668cf05b(clk,rst,start,beats_m1,last_beat_l
             last_next$d = beats_m1 == zero20;
             first_next$d = 1'b1;
             in_flight$d = zero3;
+            beat_done_q$d = 1'b0;
             valid_s1$d = 1'b0;
             valid_s2$d = 1'b0;
             valid_s3$d = 1'b0;
@@ -8924,6 +9183,7 @@ module fcc_label_update__pipeline_k7_668cf05b(clk,rst,start,beats_m1,last_beat_l
         if (rst) begin
             active$d = 1'b0;
             in_flight$d = zero3;
+            beat_done_q$d = 1'b0;
             valid_s1$d = 1'b0;
             valid_s2$d = 1'b0;
             valid_s3$d = 1'b0;
@@ -8950,6 +9210,25 @@ module fcc_label_update__pipeline__active_k7_668cf05b(d,q,clock);
     end
 
 endmodule // fcc_label_update__pipeline__active_k7_668cf05b
+
+
+module fcc_label_update__pipeline__beat_done_q_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__pipeline__beat_done_q_k7_668cf05b
 
 
 module fcc_label_update__pipeline__beat_s3_k7_668cf05b(d,q,clock);
@@ -9066,6 +9345,25 @@ module fcc_label_update__pipeline__in_flight_k7_668cf05b(d,q,clock);
 endmodule // fcc_label_update__pipeline__in_flight_k7_668cf05b
 
 
+module fcc_label_update__pipeline__keep_s2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__pipeline__keep_s2_k7_668cf05b
+
+
 module fcc_label_update__pipeline__labels_s1_k7_668cf05b(d,q,clock);
 
     // Module arguments
@@ -9083,25 +9381,6 @@ module fcc_label_update__pipeline__labels_s1_k7_668cf05b(d,q,clock);
     end
 
 endmodule // fcc_label_update__pipeline__labels_s1_k7_668cf05b
-
-
-module fcc_label_update__pipeline__labels_s2_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [2:0] d;
-    output reg  [2:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 3'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__pipeline__labels_s2_k7_668cf05b
 
 
 module fcc_label_update__pipeline__last_next_k7_668cf05b(d,q,clock);
@@ -9288,15 +9567,21 @@ module fcc_label_update__queue_k7_668cf05b(clk,rst,clear,in_valid,in_beat,pop,he
     output reg  [26:0] head;
 
     // Constant declarations
-    localparam  count_is$0 = 3'b0;
     localparam  entry_is$0 = 2'b0;
     localparam  entry_is$1 = 2'b1;
     localparam  entry_is$2 = 2'b10;
     localparam  entry_is$3 = 2'b11;
-    localparam  one = 3'b1;
+    localparam  zero3 = 3'b0;
+    localparam  one3 = 3'b1;
     localparam  one2 = 2'b1;
 
     // Stub signals
+    reg  head_valid_q$d;
+    wire  head_valid_q$q;
+    reg  head_valid_q$clock;
+    reg  [26:0] head_q$d;
+    wire  [26:0] head_q$q;
+    reg  head_q$clock;
     reg  [26:0] entries$0$d;
     wire  [26:0] entries$0$q;
     reg  entries$0$clock;
@@ -9309,9 +9594,12 @@ module fcc_label_update__queue_k7_668cf05b(clk,rst,clear,in_valid,in_beat,pop,he
     reg  [26:0] entries$3$d;
     wire  [26:0] entries$3$q;
     reg  entries$3$clock;
-    reg  [2:0] count$d;
-    wire  [2:0] count$q;
-    reg  count$clock;
+    reg  [2:0] ring_count$d;
+    wire  [2:0] ring_count$q;
+    reg  ring_count$clock;
+    reg  ring_any_q$d;
+    wire  ring_any_q$q;
+    reg  ring_any_q$clock;
     reg  [1:0] read_entry$d;
     wire  [1:0] read_entry$q;
     reg  read_entry$clock;
@@ -9319,7 +9607,23 @@ module fcc_label_update__queue_k7_668cf05b(clk,rst,clear,in_valid,in_beat,pop,he
     wire  [1:0] write_entry$q;
     reg  write_entry$clock;
 
+    // Local signals
+    reg  [26:0] ring_front;
+    reg  to_head;
+    reg  to_ring;
+    reg  from_ring;
+
     // Sub module instances
+    fcc_label_update__queue__head_valid_q_k7_668cf05b head_valid_q(
+        .d(head_valid_q$d),
+        .q(head_valid_q$q),
+        .clock(head_valid_q$clock)
+    );
+    fcc_label_update__queue__head_q_k7_668cf05b head_q(
+        .d(head_q$d),
+        .q(head_q$q),
+        .clock(head_q$clock)
+    );
     fcc_label_update__queue__entries__0_k7_668cf05b entries$0(
         .d(entries$0$d),
         .q(entries$0$q),
@@ -9340,10 +9644,15 @@ module fcc_label_update__queue_k7_668cf05b(clk,rst,clear,in_valid,in_beat,pop,he
         .q(entries$3$q),
         .clock(entries$3$clock)
     );
-    fcc_label_update__queue__count_k7_668cf05b count(
-        .d(count$d),
-        .q(count$q),
-        .clock(count$clock)
+    fcc_label_update__queue__ring_count_k7_668cf05b ring_count(
+        .d(ring_count$d),
+        .q(ring_count$q),
+        .clock(ring_count$clock)
+    );
+    fcc_label_update__queue__ring_any_q_k7_668cf05b ring_any_q(
+        .d(ring_any_q$d),
+        .q(ring_any_q$q),
+        .clock(ring_any_q$clock)
     );
     fcc_label_update__queue__read_entry_k7_668cf05b read_entry(
         .d(read_entry$d),
@@ -9358,10 +9667,16 @@ module fcc_label_update__queue_k7_668cf05b(clk,rst,clear,in_valid,in_beat,pop,he
 
     // Update code
     always @(*) begin
-        count$clock = clk;
+        head_valid_q$clock = clk;
+        head_q$clock = clk;
+        ring_count$clock = clk;
+        ring_any_q$clock = clk;
         read_entry$clock = clk;
         write_entry$clock = clk;
-        count$d = count$q;
+        head_valid_q$d = head_valid_q$q;
+        head_q$d = head_q$q;
+        ring_count$d = ring_count$q;
+        ring_any_q$d = ring_any_q$q;
         read_entry$d = read_entry$q;
         write_entry$d = write_entry$q;
         entries$0$clock = clk;
@@ -9372,19 +9687,35 @@ module fcc_label_update__queue_k7_668cf05b(clk,rst,clear,in_valid,in_beat,pop,he
         entries$2$d = entries$2$q;
         entries$3$clock = clk;
         entries$3$d = entries$3$q;
-        head_valid = count$q != count_is$0;
-        head = entries$0$q;
+        head_valid = head_valid_q$q;
+        head = head_q$q;
+        ring_front = entries$0$q;
         if (read_entry$q == entry_is$0) begin
-            head = entries$0$q;
+            ring_front = entries$0$q;
         end
         if (read_entry$q == entry_is$1) begin
-            head = entries$1$q;
+            ring_front = entries$1$q;
         end
         if (read_entry$q == entry_is$2) begin
-            head = entries$2$q;
+            ring_front = entries$2$q;
         end
         if (read_entry$q == entry_is$3) begin
-            head = entries$3$q;
+            ring_front = entries$3$q;
+        end
+        to_head = in_valid & ~ring_any_q$q & (~head_valid_q$q | pop);
+        to_ring = in_valid & ~to_head;
+        from_ring = pop & ring_any_q$q;
+        if (pop) begin
+            head_valid_q$d = 1'b0;
+        end
+        if (to_head) begin
+            head_valid_q$d = 1'b1;
+            head_q$d = in_beat;
+        end
+        if (from_ring) begin
+            head_valid_q$d = 1'b1;
+            head_q$d = ring_front;
+            read_entry$d = read_entry$q + one2;
         end
         if (in_valid) begin
             if (write_entry$q == entry_is$0) begin
@@ -9399,44 +9730,28 @@ module fcc_label_update__queue_k7_668cf05b(clk,rst,clear,in_valid,in_beat,pop,he
             if (write_entry$q == entry_is$3) begin
                 entries$3$d = in_beat;
             end
+        end
+        if (to_ring) begin
             write_entry$d = write_entry$q + one2;
         end
-        if (pop) begin
-            read_entry$d = read_entry$q + one2;
+        if (to_ring & ~from_ring) begin
+            ring_count$d = ring_count$q + one3;
+            ring_any_q$d = 1'b1;
         end
-        if (in_valid & ~pop) begin
-            count$d = count$q + one;
-        end
-        if (~in_valid & pop) begin
-            count$d = count$q - one;
+        if (~to_ring & from_ring) begin
+            ring_count$d = ring_count$q - one3;
+            ring_any_q$d = ring_count$q != one3;
         end
         if (clear | rst) begin
-            count$d = count_is$0;
+            head_valid_q$d = 1'b0;
+            ring_count$d = zero3;
+            ring_any_q$d = 1'b0;
             read_entry$d = entry_is$0;
             write_entry$d = entry_is$0;
         end
     end
 
 endmodule // fcc_label_update__queue_k7_668cf05b
-
-
-module fcc_label_update__queue__count_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [2:0] d;
-    output reg  [2:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 3'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_label_update__queue__count_k7_668cf05b
 
 
 module fcc_label_update__queue__entries__0_k7_668cf05b(d,q,clock);
@@ -9515,6 +9830,44 @@ module fcc_label_update__queue__entries__3_k7_668cf05b(d,q,clock);
 endmodule // fcc_label_update__queue__entries__3_k7_668cf05b
 
 
+module fcc_label_update__queue__head_q_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [26:0] d;
+    output reg  [26:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 27'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__queue__head_q_k7_668cf05b
+
+
+module fcc_label_update__queue__head_valid_q_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__queue__head_valid_q_k7_668cf05b
+
+
 module fcc_label_update__queue__read_entry_k7_668cf05b(d,q,clock);
 
     // Module arguments
@@ -9534,6 +9887,44 @@ module fcc_label_update__queue__read_entry_k7_668cf05b(d,q,clock);
 endmodule // fcc_label_update__queue__read_entry_k7_668cf05b
 
 
+module fcc_label_update__queue__ring_any_q_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__queue__ring_any_q_k7_668cf05b
+
+
+module fcc_label_update__queue__ring_count_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 3'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_label_update__queue__ring_count_k7_668cf05b
+
+
 module fcc_label_update__queue__write_entry_k7_668cf05b(d,q,clock);
 
     // Module arguments
@@ -9551,6 +9942,153 @@ module fcc_label_update__queue__write_entry_k7_668cf05b(d,q,clock);
     end
 
 endmodule // fcc_label_update__queue__write_entry_k7_668cf05b
+
+
+module fcc_label_update__rst_copy__0_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_label_update__rst_copy__0_k7_668cf05b
+
+
+module fcc_label_update__rst_copy__1_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_label_update__rst_copy__1_k7_668cf05b
+
+
+module fcc_label_update__rst_copy__2_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_label_update__rst_copy__2_k7_668cf05b
+
+
+module fcc_label_update__rst_copy__3_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_label_update__rst_copy__3_k7_668cf05b
+
+
+module fcc_label_update__rst_copy__4_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_label_update__rst_copy__4_k7_668cf05b
+
+
+module fcc_label_update__rst_copy__5_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_label_update__rst_copy__5_k7_668cf05b
+
+
+module fcc_label_update__rst_copy__6_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_label_update__rst_copy__6_k7_668cf05b
 
 
 module fcc_label_update__writer_k7_668cf05b(clk,rst,pixel_valid,pixel_code,pixel_last,write_en,write_addr,write_data,beats_m1,last_beat_labels);
@@ -9883,27 +10421,6 @@ module fcc_label_update__writer__word_pos_k7_668cf05b(d,q,clock);
     end
 
 endmodule // fcc_label_update__writer__word_pos_k7_668cf05b
-
-
-module fcc_top__label_update_rst_k7_668cf05b(clock,d,q);
-
-    // Module arguments
-    input wire  clock;
-    input wire  d;
-    output reg  q;
-
-    // Update code (custom)
-    (* max_fanout = 64 *) reg held;
-    initial begin
-        held = 1'h0;
-    end
-    (* keep = "true" *) always @(posedge clock) begin
-        held <= d;
-    end
-    always @(*) begin
-        q = held;
-    end
-endmodule // fcc_top__label_update_rst_k7_668cf05b
 
 
 module fcc_top__last_col_k7_668cf05b(d,q,clock);

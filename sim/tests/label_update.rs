@@ -119,6 +119,9 @@ fn dut(p: &FccParams) -> LuDut {
             ..Default::default()
         });
     }
+    // The sub-blocks' resets are registered copies of `rst`: they leave
+    // reset one cycle after it.
+    d.step(&LuIn::default());
     d
 }
 

@@ -17,6 +17,8 @@ use crate::types::{kb, vec_of};
 pub struct FccBeatAssembly {
     pub clk: Signal<In, Clock>,
     pub rst: Signal<In, Bit>,
+    /// A copy of `rst` for the collected labels (64 loads).
+    pub rst_collected: Signal<In, Bit>,
     /// Start of a read-back: no labels collected, no stalls counted.
     pub clear: Signal<In, Bit>,
     // The head of the decoded-beat queue.
@@ -79,6 +81,7 @@ impl FccBeatAssembly {
         Self {
             clk: Default::default(),
             rst: Default::default(),
+            rst_collected: Default::default(),
             clear: Default::default(),
             head_valid: Default::default(),
             head: Default::default(),
@@ -271,6 +274,8 @@ impl Logic for FccBeatAssembly {
             self.taken.d.next = self.zero3.val();
             self.out_valid.d.next = false;
             self.carried_run.d.next = self.zero16.val();
+        }
+        if self.rst_collected.val() {
             for k in 0..4 {
                 self.collected[k].d.next = self.zero16.val();
             }

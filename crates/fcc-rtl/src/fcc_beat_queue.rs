@@ -1,9 +1,13 @@
 //! `fcc_beat_queue`: the decoded beats between the read-back pipeline and the
-//! output, a ring of four entries. A beat enters behind the others
-//! (`in_valid`, no back-pressure: the read-back pipeline issues no more beats
-//! than fit) into the entry `write_entry` points at; the head, the entry at
-//! `read_entry`, leaves on `pop`, which only moves `read_entry` (so the pop
-//! decision drives a few pointer bits, not every entry).
+//! output: a head register and a ring of four entries behind it, five beats
+//! in all. A beat enters (`in_valid`, no back-pressure: the read-back
+//! pipeline issues no more beats than fit) into the head register when the
+//! queue is empty, or when the head leaves in the same cycle and the ring is
+//! empty, and into the ring entry `write_entry` points at otherwise. On `pop`
+//! the head register loads the ring's front (the entry at `read_entry`, read
+//! from registers in parallel with the pop decision), or the entering beat.
+//! The head is a register, so the decision that pops it (which reads it)
+//! starts from flip-flops and not from a 4:1 multiplexer.
 
 use rust_hdl::prelude::*;
 
@@ -26,9 +30,12 @@ pub struct Beat {
     pub last: Bit,
 }
 
-/// Entries of the queue: the beats that can be between the frame-buffer
-/// read and the output.
-pub const QUEUE_BEATS: usize = 4;
+/// Entries of the ring behind the head register.
+const RING_BEATS: usize = 4;
+
+/// Beats the queue holds (the head and the ring): the beats that can be
+/// between the frame-buffer read and the registered pop (`fcc_rb_pipeline`).
+pub const QUEUE_BEATS: usize = RING_BEATS + 1;
 
 #[derive(LogicBlock)]
 pub struct FccBeatQueue {
@@ -41,13 +48,24 @@ pub struct FccBeatQueue {
     pub pop: Signal<In, Bit>,
     pub head_valid: Signal<Out, Bit>,
     pub head: Signal<Out, Beat>,
+    head_valid_q: DFF<Bit>,
+    head_q: DFF<Beat>,
     entries: Vec<DFF<Beat>>,
-    count: DFF<Bits<3>>,
+    /// Beats in the ring (0 .. 4); `ring_any_q`: it is not 0.
+    ring_count: DFF<Bits<3>>,
+    ring_any_q: DFF<Bit>,
     read_entry: DFF<Bits<2>>,
     write_entry: DFF<Bits<2>>,
-    count_is: Vec<Constant<Bits<3>>>,
+    /// The ring's front, the entry at `read_entry`.
+    ring_front: Signal<Local, Beat>,
+    /// The entering beat goes to the head register, or into the ring.
+    to_head: Signal<Local, Bit>,
+    to_ring: Signal<Local, Bit>,
+    /// The ring's front moves to the head register.
+    from_ring: Signal<Local, Bit>,
     entry_is: Vec<Constant<Bits<2>>>,
-    one: Constant<Bits<3>>,
+    zero3: Constant<Bits<3>>,
+    one3: Constant<Bits<3>>,
     one2: Constant<Bits<2>>,
 }
 
@@ -62,13 +80,20 @@ impl FccBeatQueue {
             pop: Default::default(),
             head_valid: Default::default(),
             head: Default::default(),
-            entries: vec_of(QUEUE_BEATS),
-            count: Default::default(),
+            head_valid_q: Default::default(),
+            head_q: Default::default(),
+            entries: vec_of(RING_BEATS),
+            ring_count: Default::default(),
+            ring_any_q: Default::default(),
             read_entry: Default::default(),
             write_entry: Default::default(),
-            count_is: (0..1).map(|n| kb(n as u64)).collect(),
-            entry_is: (0..QUEUE_BEATS).map(|n| kb(n as u64)).collect(),
-            one: kb(1),
+            ring_front: Default::default(),
+            to_head: Default::default(),
+            to_ring: Default::default(),
+            from_ring: Default::default(),
+            entry_is: (0..RING_BEATS).map(|n| kb(n as u64)).collect(),
+            zero3: kb(0),
+            one3: kb(1),
             one2: kb(1),
         }
     }
@@ -83,37 +108,72 @@ impl Default for FccBeatQueue {
 impl Logic for FccBeatQueue {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clk, count, read_entry, write_entry);
+        dff_setup!(
+            self,
+            clk,
+            head_valid_q,
+            head_q,
+            ring_count,
+            ring_any_q,
+            read_entry,
+            write_entry
+        );
         for i in 0..4 {
             self.entries[i].clock.next = self.clk.val();
             self.entries[i].d.next = self.entries[i].q.val();
         }
-        self.head_valid.next = self.count.q.val() != self.count_is[0].val();
-        self.head.next = self.entries[0].q.val();
+        self.head_valid.next = self.head_valid_q.q.val();
+        self.head.next = self.head_q.q.val();
+        self.ring_front.next = self.entries[0].q.val();
         for i in 0..4 {
             if self.read_entry.q.val() == self.entry_is[i].val() {
-                self.head.next = self.entries[i].q.val();
+                self.ring_front.next = self.entries[i].q.val();
             }
         }
+        // Where the entering beat goes, and whether the ring's front moves up.
+        self.to_head.next = self.in_valid.val()
+            & !self.ring_any_q.q.val()
+            & (!self.head_valid_q.q.val() | self.pop.val());
+        self.to_ring.next = self.in_valid.val() & !self.to_head.val();
+        self.from_ring.next = self.pop.val() & self.ring_any_q.q.val();
+        // The head register.
+        if self.pop.val() {
+            self.head_valid_q.d.next = false;
+        }
+        if self.to_head.val() {
+            self.head_valid_q.d.next = true;
+            self.head_q.d.next = self.in_beat.val();
+        }
+        if self.from_ring.val() {
+            self.head_valid_q.d.next = true;
+            self.head_q.d.next = self.ring_front.val();
+            self.read_entry.d.next = self.read_entry.q.val() + self.one2.val();
+        }
+        // The ring. An entering beat is written at `write_entry` whether or
+        // not it goes to the head (the entry is free either way), so the
+        // entries' enables do not wait for the pop decision.
         if self.in_valid.val() {
             for i in 0..4 {
                 if self.write_entry.q.val() == self.entry_is[i].val() {
                     self.entries[i].d.next = self.in_beat.val();
                 }
             }
+        }
+        if self.to_ring.val() {
             self.write_entry.d.next = self.write_entry.q.val() + self.one2.val();
         }
-        if self.pop.val() {
-            self.read_entry.d.next = self.read_entry.q.val() + self.one2.val();
+        if self.to_ring.val() & !self.from_ring.val() {
+            self.ring_count.d.next = self.ring_count.q.val() + self.one3.val();
+            self.ring_any_q.d.next = true;
         }
-        if self.in_valid.val() & !self.pop.val() {
-            self.count.d.next = self.count.q.val() + self.one.val();
-        }
-        if !self.in_valid.val() & self.pop.val() {
-            self.count.d.next = self.count.q.val() - self.one.val();
+        if !self.to_ring.val() & self.from_ring.val() {
+            self.ring_count.d.next = self.ring_count.q.val() - self.one3.val();
+            self.ring_any_q.d.next = self.ring_count.q.val() != self.one3.val();
         }
         if self.clear.val() | self.rst.val() {
-            self.count.d.next = self.count_is[0].val();
+            self.head_valid_q.d.next = false;
+            self.ring_count.d.next = self.zero3.val();
+            self.ring_any_q.d.next = false;
             self.read_entry.d.next = self.entry_is[0].val();
             self.write_entry.d.next = self.entry_is[0].val();
         }

@@ -12,13 +12,18 @@
 //! Sub-blocks, in pipeline order:
 //! - `fcc_fb_writer` packs the codes into frame-buffer words (`fcc_ram`);
 //! - `fcc_rb_pipeline` reads a beat's word and decodes it (stages 0 .. 3);
-//! - `fcc_beat_queue` holds up to four decoded beats;
+//! - `fcc_beat_queue` holds up to five decoded beats (a head register and a
+//!   ring of four);
 //! - `fcc_gearbox` holds the compact labels flatten emits;
 //! - `fcc_beat_assembly` gives the head beat its labels (`fcc_slot_mux` per
 //!   slot) and holds the output register.
 //!
 //! Output: `L` labels per beat in 16-bit slots from bit 0, `tkeep` marking
 //! the bytes of the slots that hold labels, `tlast` on the frame's last beat.
+//!
+//! Reset: `rst` is the reset one cycle ahead. The sub-blocks take registered
+//! copies of it (`FccKeepReg`), one per group of at most 64 reset loads (see
+//! `RESET_COPIES`), and are in reset in the cycle after `rst`.
 
 use fcc_params::FccParams;
 use rust_hdl::prelude::*;
@@ -27,13 +32,21 @@ use crate::fcc_beat_assembly::FccBeatAssembly;
 use crate::fcc_beat_queue::FccBeatQueue;
 use crate::fcc_fb_writer::FccFbWriter;
 use crate::fcc_gearbox::FccGearbox;
+use crate::fcc_keep_reg::FccKeepReg;
 use crate::fcc_ram::FccRam;
 use crate::fcc_rb_pipeline::FccRbPipeline;
 use crate::types::FbWord;
 
+/// Registered copies of the reset: the writer; the read-back pipeline and
+/// the beat queue; the gearbox's control and front labels; its slots 0 .. 3;
+/// its slots 4 .. 7; the beat assembly's control and carried run; its
+/// collected labels.
+const RESET_COPIES: usize = 7;
+
 #[derive(LogicBlock)]
 pub struct FccLabelUpdate {
     pub clk: Signal<In, Clock>,
+    /// Reset, one cycle ahead of the sub-blocks' (see the module doc).
     pub rst: Signal<In, Bit>,
     // Frame-buffer writes from the labelled pixel stream.
     pub wr_valid: Signal<In, Bit>,
@@ -53,6 +66,7 @@ pub struct FccLabelUpdate {
     pub rb_done: Signal<Out, Bit>,
     /// Cycles in which the head beat waited for compact labels.
     pub gear_stalls: Signal<Out, Bits<24>>,
+    rst_copy: Vec<FccKeepReg<Bit>>,
     writer: FccFbWriter,
     fb: FccRam<FbWord, 17>,
     pipeline: FccRbPipeline,
@@ -82,6 +96,7 @@ impl FccLabelUpdate {
             m_axis_tready: Default::default(),
             rb_done: Default::default(),
             gear_stalls: Default::default(),
+            rst_copy: (0..RESET_COPIES).map(|_| FccKeepReg::default()).collect(),
             writer: FccFbWriter::new(l),
             fb: FccRam::new(words.max(2)),
             pipeline: FccRbPipeline::new(l),
@@ -101,11 +116,18 @@ impl Logic for FccLabelUpdate {
         self.queue.clk.next = self.clk.val();
         self.gearbox.clk.next = self.clk.val();
         self.assembly.clk.next = self.clk.val();
-        self.writer.rst.next = self.rst.val();
-        self.pipeline.rst.next = self.rst.val();
-        self.queue.rst.next = self.rst.val();
-        self.gearbox.rst.next = self.rst.val();
-        self.assembly.rst.next = self.rst.val();
+        for i in 0..7 {
+            self.rst_copy[i].clock.next = self.clk.val();
+            self.rst_copy[i].d.next = self.rst.val();
+        }
+        self.writer.rst.next = self.rst_copy[0].q.val();
+        self.pipeline.rst.next = self.rst_copy[1].q.val();
+        self.queue.rst.next = self.rst_copy[1].q.val();
+        self.gearbox.rst.next = self.rst_copy[2].q.val();
+        self.gearbox.rst_low_slots.next = self.rst_copy[3].q.val();
+        self.gearbox.rst_high_slots.next = self.rst_copy[4].q.val();
+        self.assembly.rst.next = self.rst_copy[5].q.val();
+        self.assembly.rst_collected.next = self.rst_copy[6].q.val();
         // ---- Frame-buffer writes.
         self.writer.pixel_valid.next = self.wr_valid.val();
         self.writer.pixel_code.next = self.wr_state.val();

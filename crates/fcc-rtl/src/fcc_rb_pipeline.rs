@@ -1,6 +1,8 @@
 //! `fcc_rb_pipeline`: the read-back pipeline from the frame buffer to decoded
-//! beats. Stage 0 issues the frame-buffer read of a beat (at most four beats
-//! between stage 0 and the output, counted by `in_flight`), stage 2 has the
+//! beats. Stage 0 issues the frame-buffer read of a beat (at most
+//! `QUEUE_BEATS` beats between stage 0 and the output, counted by
+//! `in_flight`, which sees a beat leave one cycle late, `beat_done_q`, so the
+//! output handshake never reaches the issue decision), stage 2 has the
 //! word, stage 3 has it decoded: per slot its source (zero, the run carried
 //! from the previous beat (none into the frame's first beat), or the k-th new
 //! label of this beat, as
@@ -13,6 +15,10 @@ use rust_hdl::prelude::*;
 use crate::fcc_beat_queue::{Beat, QUEUE_BEATS};
 use crate::fcc_slot_mux::{SRC_CARRIED, SRC_NEW, SRC_ZERO};
 use crate::types::{kb, vec_of, FbWord};
+
+// A slot's source is 1 + the labelled runs started up to it: the carried
+// run with none, `SRC_NEW + k` for the k-th.
+const _: () = assert!(SRC_NEW == SRC_CARRIED + 1);
 
 /// Frame-buffer codes (`Lab::state`).
 const CODE_EMPTY: u64 = 0;
@@ -46,6 +52,8 @@ pub struct FccRbPipeline {
     /// The next beat is the frame's first (no run is carried into it).
     first_next: DFF<Bit>,
     in_flight: DFF<Bits<3>>,
+    /// `beat_done`, registered.
+    beat_done_q: DFF<Bit>,
     // Stages 1 and 2: the beat's position in its word, its labels, last beat.
     valid_s1: DFF<Bit>,
     word_pos_s1: DFF<Bits<2>>,
@@ -54,22 +62,36 @@ pub struct FccRbPipeline {
     first_s1: DFF<Bit>,
     valid_s2: DFF<Bit>,
     word_pos_s2: DFF<Bits<2>>,
-    labels_s2: DFF<Bits<3>>,
+    /// The beat's `keep` mask, two bits per slot: slot i is used when bit
+    /// 2i is set.
+    keep_s2: DFF<Bits<8>>,
     last_s2: DFF<Bit>,
     first_s2: DFF<Bit>,
     // Stage 3.
     valid_s3: DFF<Bit>,
     beat_s3: DFF<Beat>,
     issue: Signal<Local, Bit>,
-    /// Code of each slot; source after each slot; new labels before each slot.
+    /// Code of each slot; 1 where it starts a labelled run; the labelled
+    /// runs started up to it (`labelled_01`: in slots 0 and 1); its source.
     code: Vec<Signal<Local, Bits<2>>>,
-    run_src: Vec<Signal<Local, Bits<3>>>,
-    new_count: Vec<Signal<Local, Bits<3>>>,
+    labelled: Vec<Signal<Local, Bits<3>>>,
+    labelled_01: Signal<Local, Bits<3>>,
+    labelled_23: Signal<Local, Bits<3>>,
+    started: Vec<Signal<Local, Bits<3>>>,
     slot_src: Vec<Signal<Local, Bits<3>>>,
+    /// The run before slot i (after the beat, at 4) has label 0.
+    zero_run: Vec<Signal<Local, Bit>>,
+    /// Source of the run carried into the next beat.
+    run_src: Signal<Local, Bits<3>>,
     pos_in_word: Signal<Local, Bits<2>>,
+    /// The bits of a beat's position in its word that can be set (the
+    /// pixel counter steps by the labels per beat): none for 4 labels per
+    /// beat, so synthesis drops the code multiplexers.
+    word_pos_bits: Constant<Bits<2>>,
     pos: Vec<Constant<Bits<2>>>,
     slot_off: Vec<Constant<Bits<2>>>,
-    slot_idx: Vec<Constant<Bits<3>>>,
+    /// Bit 2i: slot i's used flag in `keep_s2`.
+    slot_used: Vec<Constant<Bits<8>>>,
     keep_n: Vec<Constant<Bits<8>>>,
     labels: Vec<Constant<Bits<3>>>,
     code_empty: Constant<Bits<2>>,
@@ -77,12 +99,12 @@ pub struct FccRbPipeline {
     code_unlabelled: Constant<Bits<2>>,
     src_zero: Constant<Bits<3>>,
     src_carried: Constant<Bits<3>>,
-    src_new: Constant<Bits<3>>,
     max_in_flight: Constant<Bits<3>>,
     lpb3: Constant<Bits<3>>,
     lpb20: Constant<Bits<20>>,
     one3: Constant<Bits<3>>,
     zero3: Constant<Bits<3>>,
+    zero8: Constant<Bits<8>>,
     one20: Constant<Bits<20>>,
     zero20: Constant<Bits<20>>,
     _l: usize,
@@ -111,6 +133,7 @@ impl FccRbPipeline {
             last_next: Default::default(),
             first_next: Default::default(),
             in_flight: Default::default(),
+            beat_done_q: Default::default(),
             valid_s1: Default::default(),
             word_pos_s1: Default::default(),
             labels_s1: Default::default(),
@@ -118,20 +141,25 @@ impl FccRbPipeline {
             first_s1: Default::default(),
             valid_s2: Default::default(),
             word_pos_s2: Default::default(),
-            labels_s2: Default::default(),
+            keep_s2: Default::default(),
             last_s2: Default::default(),
             first_s2: Default::default(),
             valid_s3: Default::default(),
             beat_s3: Default::default(),
             issue: Default::default(),
             code: vec_of(4),
-            run_src: vec_of(5),
-            new_count: vec_of(5),
+            labelled: vec_of(4),
+            labelled_01: Default::default(),
+            labelled_23: Default::default(),
+            started: vec_of(4),
             slot_src: vec_of(4),
+            zero_run: vec_of(5),
+            run_src: Default::default(),
             pos_in_word: Default::default(),
+            word_pos_bits: kb((4 - l as u64) & 3),
             pos: (0..4).map(|i| kb(i as u64)).collect(),
             slot_off: (0..l).map(|i| kb(i as u64)).collect(),
-            slot_idx: (0..l).map(|i| kb(i as u64)).collect(),
+            slot_used: (0..l).map(|i| kb(1u64 << (2 * i))).collect(),
             keep_n: (0..=4).map(|n| kb((1u64 << (2 * n)) - 1)).collect(),
             labels: (0..=4).map(|n| kb(n as u64)).collect(),
             code_empty: kb(CODE_EMPTY),
@@ -139,12 +167,12 @@ impl FccRbPipeline {
             code_unlabelled: kb(CODE_UNLABELLED),
             src_zero: kb(SRC_ZERO),
             src_carried: kb(SRC_CARRIED),
-            src_new: kb(SRC_NEW),
             max_in_flight: kb(QUEUE_BEATS as u64),
             lpb3: kb(l as u64),
             lpb20: kb(l as u64),
             one3: kb(1),
             zero3: kb(0),
+            zero8: kb(0),
             one20: kb(1),
             zero20: kb(0),
             _l: l,
@@ -164,6 +192,7 @@ impl Logic for FccRbPipeline {
             last_next,
             first_next,
             in_flight,
+            beat_done_q,
             valid_s1,
             word_pos_s1,
             labels_s1,
@@ -171,20 +200,29 @@ impl Logic for FccRbPipeline {
             first_s1,
             valid_s2,
             word_pos_s2,
-            labels_s2,
+            keep_s2,
             last_s2,
             first_s2,
             valid_s3,
             beat_s3
         );
-        // ---- Stage 0: issue the frame-buffer read of the next beat.
+        // ---- Stage 0: issue the frame-buffer read of the next beat. A beat
+        // that has left frees its place a cycle late (`beat_done_q`), so the
+        // output handshake does not reach this decision. Cycles are those of
+        // four places freed at once: the n-th beat is issued at the latest
+        // in the cycle after the (n-5)-th leaves, and reaches the queue's
+        // head 4 cycles after its issue, which is no later than the cycle
+        // after the (n-1)-th leaves (at least 4 cycles after the (n-5)-th),
+        // the first cycle the n-th could leave anyway.
+        self.beat_done_q.d.next = self.beat_done.val();
         self.issue.next = self.active.q.val()
-            & ((self.in_flight.q.val() < self.max_in_flight.val()) | self.beat_done.val());
+            & ((self.in_flight.q.val() < self.max_in_flight.val()) | self.beat_done_q.q.val());
         self.read_en.next = self.issue.val();
         self.read_addr.next = self.pixel.q.val().get_bits::<17>(2);
         self.valid_s1.d.next = self.issue.val();
         if self.issue.val() {
-            self.word_pos_s1.d.next = self.pixel.q.val().get_bits::<2>(0);
+            self.word_pos_s1.d.next =
+                self.pixel.q.val().get_bits::<2>(0) & self.word_pos_bits.val();
             self.labels_s1.d.next = self.lpb3.val();
             self.last_s1.d.next = false;
             self.first_s1.d.next = self.first_next.q.val();
@@ -198,20 +236,30 @@ impl Logic for FccRbPipeline {
             self.beats_left.d.next = self.beats_left.q.val() - self.one20.val();
             self.last_next.d.next = self.beats_left.q.val() == self.one20.val();
         }
-        if self.issue.val() & !self.beat_done.val() {
+        if self.issue.val() & !self.beat_done_q.q.val() {
             self.in_flight.d.next = self.in_flight.q.val() + self.one3.val();
         }
-        if !self.issue.val() & self.beat_done.val() {
+        if !self.issue.val() & self.beat_done_q.q.val() {
             self.in_flight.d.next = self.in_flight.q.val() - self.one3.val();
         }
-        // ---- Stage 1: the read is under way.
+        // ---- Stage 1: the read is under way; the beat's `keep` mask (which
+        // also flags the slots it uses) is decoded from its label count.
         self.valid_s2.d.next = self.valid_s1.q.val();
         self.word_pos_s2.d.next = self.word_pos_s1.q.val();
-        self.labels_s2.d.next = self.labels_s1.q.val();
+        self.keep_s2.d.next = self.keep_n[0].val();
+        for n in 0..5 {
+            if self.labels_s1.q.val() == self.labels[n].val() {
+                self.keep_s2.d.next = self.keep_n[n].val();
+            }
+        }
         self.last_s2.d.next = self.last_s1.q.val();
         self.first_s2.d.next = self.first_s1.q.val();
         // ---- Stage 2: pick the beat's codes from the word, then number the
-        // labelled runs that start in it.
+        // labelled runs that start in it. A used slot's source is 0 when it
+        // is empty or its run is unlabelled (`zero_run`: an unlabelled run
+        // started last, or none started and the beat is the frame's first),
+        // else 1 + the labelled runs started up to it (with none started,
+        // 1: the carried run; with the k-th started last, SRC_NEW + k).
         for i in 0..4 {
             self.code[i].next = self.code_empty.val();
         }
@@ -229,43 +277,47 @@ impl Logic for FccRbPipeline {
             if self.pos_in_word.val() == self.pos[3].val() {
                 self.code[i].next = self.read_data.val().s3;
             }
-            if self.slot_idx[i].val() >= self.labels_s2.q.val() {
+            if (self.keep_s2.q.val() & self.slot_used[i].val()) == self.zero8.val() {
                 self.code[i].next = self.code_empty.val();
             }
         }
-        self.run_src[0].next = self.src_carried.val();
-        if self.first_s2.q.val() {
-            self.run_src[0].next = self.src_zero.val();
-        }
-        self.new_count[0].next = self.zero3.val();
+        self.zero_run[0].next = self.first_s2.q.val();
         for i in 0..4 {
-            self.run_src[i + 1].next = self.run_src[i].val();
-            self.new_count[i + 1].next = self.new_count[i].val();
+            self.labelled[i].next = self.zero3.val();
+            self.zero_run[i + 1].next = self.zero_run[i].val();
             if self.code[i].val() == self.code_labelled.val() {
-                self.run_src[i + 1].next = self.new_count[i].val() + self.src_new.val();
-                self.new_count[i + 1].next = self.new_count[i].val() + self.one3.val();
+                self.labelled[i].next = self.one3.val();
+                self.zero_run[i + 1].next = false;
             }
             if self.code[i].val() == self.code_unlabelled.val() {
-                self.run_src[i + 1].next = self.src_zero.val();
+                self.zero_run[i + 1].next = true;
             }
-            self.slot_src[i].next = self.run_src[i + 1].val();
-            if self.code[i].val() == self.code_empty.val() {
+        }
+        // Labelled runs started up to each slot, added as a tree.
+        self.labelled_01.next = self.labelled[0].val() + self.labelled[1].val();
+        self.labelled_23.next = self.labelled[2].val() + self.labelled[3].val();
+        self.started[0].next = self.labelled[0].val();
+        self.started[1].next = self.labelled_01.val();
+        self.started[2].next = self.labelled_01.val() + self.labelled[2].val();
+        self.started[3].next = self.labelled_01.val() + self.labelled_23.val();
+        for i in 0..4 {
+            self.slot_src[i].next = self.started[i].val() + self.src_carried.val();
+            if self.zero_run[i + 1].val() | (self.code[i].val() == self.code_empty.val()) {
                 self.slot_src[i].next = self.src_zero.val();
             }
+        }
+        self.run_src.next = self.started[3].val() + self.src_carried.val();
+        if self.zero_run[4].val() {
+            self.run_src.next = self.src_zero.val();
         }
         self.valid_s3.d.next = self.valid_s2.q.val();
         self.beat_s3.d.next.s0 = self.slot_src[0].val();
         self.beat_s3.d.next.s1 = self.slot_src[1].val();
         self.beat_s3.d.next.s2 = self.slot_src[2].val();
         self.beat_s3.d.next.s3 = self.slot_src[3].val();
-        self.beat_s3.d.next.run = self.run_src[4].val();
-        self.beat_s3.d.next.need = self.new_count[4].val();
-        self.beat_s3.d.next.keep = self.keep_n[0].val();
-        for n in 0..5 {
-            if self.labels_s2.q.val() == self.labels[n].val() {
-                self.beat_s3.d.next.keep = self.keep_n[n].val();
-            }
-        }
+        self.beat_s3.d.next.run = self.run_src.val();
+        self.beat_s3.d.next.need = self.started[3].val();
+        self.beat_s3.d.next.keep = self.keep_s2.q.val();
         self.beat_s3.d.next.last = self.last_s2.q.val();
         self.beat_valid.next = self.valid_s3.q.val();
         self.beat.next = self.beat_s3.q.val();
@@ -277,6 +329,7 @@ impl Logic for FccRbPipeline {
             self.last_next.d.next = self.beats_m1.val() == self.zero20.val();
             self.first_next.d.next = true;
             self.in_flight.d.next = self.zero3.val();
+            self.beat_done_q.d.next = false;
             self.valid_s1.d.next = false;
             self.valid_s2.d.next = false;
             self.valid_s3.d.next = false;
@@ -284,6 +337,7 @@ impl Logic for FccRbPipeline {
         if self.rst.val() {
             self.active.d.next = false;
             self.in_flight.d.next = self.zero3.val();
+            self.beat_done_q.d.next = false;
             self.valid_s1.d.next = false;
             self.valid_s2.d.next = false;
             self.valid_s3.d.next = false;

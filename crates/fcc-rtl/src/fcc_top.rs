@@ -112,12 +112,11 @@ pub struct FccTop {
     regs: FccRegs,
     // The pipeline's reset tree: one copy of the register file's `core_rst`
     // per block (the top's own registers use `core_rst` itself; `sort_net`
-    // makes one per sub-block from `core_rst_next`).
+    // and `label_update` make their own copies from `core_rst_next`).
     intra_rst: FccKeepReg<Bit>,
     window_rst: FccKeepReg<Bit>,
     dist_tree_rst: FccKeepReg<Bit>,
     merge_table_rst: FccKeepReg<Bit>,
-    label_update_rst: FccKeepReg<Bit>,
     phase: DFF<Phase>,
     tready_q: DFF<Bit>,
     pad_go: DFF<Bit>,
@@ -222,7 +221,6 @@ impl FccTop {
             window_rst: FccKeepReg::with_max_fanout(RESET_FANOUT),
             dist_tree_rst: FccKeepReg::with_max_fanout(RESET_FANOUT),
             merge_table_rst: FccKeepReg::with_max_fanout(RESET_FANOUT),
-            label_update_rst: FccKeepReg::with_max_fanout(RESET_FANOUT),
             phase: Default::default(),
             tready_q: Default::default(),
             pad_go: Default::default(),
@@ -468,12 +466,10 @@ impl Logic for FccTop {
         self.window_rst.clock.next = self.clk.val();
         self.dist_tree_rst.clock.next = self.clk.val();
         self.merge_table_rst.clock.next = self.clk.val();
-        self.label_update_rst.clock.next = self.clk.val();
         self.intra_rst.d.next = self.regs.core_rst_next.val();
         self.window_rst.d.next = self.regs.core_rst_next.val();
         self.dist_tree_rst.d.next = self.regs.core_rst_next.val();
         self.merge_table_rst.d.next = self.regs.core_rst_next.val();
-        self.label_update_rst.d.next = self.regs.core_rst_next.val();
         // ---- Blocks.
         self.intra.rst.next = self.intra_rst.q.val();
         self.intra.pix.next = self.slot_q.q.val();
@@ -521,7 +517,7 @@ impl Logic for FccTop {
         self.merge_table.jsame.next = self.sort_net.jsame.val();
         self.merge_table.provisional.next = self.intra.provisional.val();
         self.merge_table.gear_used.next = self.label_update.gear_used.val();
-        self.label_update.rst.next = self.label_update_rst.q.val();
+        self.label_update.rst.next = self.regs.core_rst_next.val();
         self.label_update.wr_valid.next = self.intra.out.val().valid;
         self.label_update.wr_state.next = self.intra.out.val().state;
         self.label_update.wr_last.next = self.intra.out.val().last;
