@@ -32,7 +32,8 @@ pub mod reference;
 pub use frame::{dist2, quantize, quantize_point, Frame, Point};
 pub use merge::{renumber, ExactMerge, PaperMerge};
 pub use pass1::{pass1, pass1_released, runs_needed, Pass1, Run};
-pub use pass2::{pass2, pass2_with, JoinSink, Pass2Buffers};
+pub use pass2::{pass2, JoinSink};
+use pass2::{pass2_with, Pass2Buffers};
 
 use fcc_params::{FccParams, ParamError};
 use serde::{Deserialize, Serialize};

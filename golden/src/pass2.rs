@@ -34,7 +34,7 @@ pub fn pass2<S: JoinSink>(params: &FccParams, frame: &Frame, p1: &Pass1, sink: &
 
 /// The buffers of [`pass2_with`], kept from one frame to the next.
 #[derive(Debug, Clone, Default)]
-pub struct Pass2Buffers {
+pub(crate) struct Pass2Buffers {
     packed: Vec<[i32; 4]>,
     counted_by: Vec<u32>,
     first_run_pairs: Vec<u32>,
@@ -42,7 +42,7 @@ pub struct Pass2Buffers {
 
 /// As [`pass2`], reusing the buffers of `buf` (no allocation once they have
 /// grown to the frame size).
-pub fn pass2_with<S: JoinSink>(
+pub(crate) fn pass2_with<S: JoinSink>(
     buf: &mut Pass2Buffers,
     params: &FccParams,
     frame: &Frame,
