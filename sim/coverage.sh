@@ -1,13 +1,16 @@
 #!/usr/bin/env bash
 # Verilator line and toggle coverage of fcc_top over the Verilator regression
-# (sim/tests/regression.rs and the directed corners of sim/tests/corners.rs),
+# (sim/tests/regression.rs, the directed corners of sim/tests/corners.rs, the
+# run registers of sim/tests/run_params.rs and the driver on the virtual
+# board of sim/tests/board.rs),
 # summarised per block into docs/coverage.md (what is never reached) and
 # docs/coverage.json, then rendered into the coverage table of docs/results.md
 # (`fcc synth --all --from-json docs/results.json --coverage-json docs/coverage.json`:
 # nothing else in the results changes).
 #
 #   bash sim/coverage.sh                          # the whole regression
-#   bash sim/coverage.sh --skip scenes_64x2048    # without the 64 x 2048 scenes
+#   bash sim/coverage.sh --skip scenes_64x2048 --skip real_ouster
+#                                                 # without the full-size frames (docs/coverage.md)
 #   bash sim/coverage.sh fsize3                   # only the tests whose name contains fsize3
 #
 # Arguments go to the test binaries (name filters, --skip). The coverage
@@ -18,7 +21,8 @@ cd "$(dirname "$0")/.."
 out="$PWD/target/fcc-coverage"
 rm -rf "$out"
 mkdir -p "$out"
-FCC_SIM_COVERAGE="$out" cargo test -p fcc-sim --test regression --test corners -- "$@"
+FCC_SIM_COVERAGE="$out" cargo test -p fcc-sim --test regression --test corners \
+    --test run_params --test board -- "$@"
 python3 sim/coverage_summary.py "$out" --command "bash sim/coverage.sh${*:+ $*}" \
     --json docs/coverage.json > docs/coverage.md.tmp
 mv docs/coverage.md.tmp docs/coverage.md

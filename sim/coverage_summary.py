@@ -5,8 +5,8 @@ Reads the `.dat` files that the coverage build of the Verilator regression
 writes (`FCC_SIM_COVERAGE=<dir>`, see sim/coverage.sh) and prints Markdown:
 one row per block (the generator's top-level blocks: `fcc_top`'s own logic,
 `fcc_intra`, `fcc_window`, `fcc_dist_tree`, `fcc_sort_net`, `fcc_merge_table`,
-`fcc_label_update`), then, per block, the lines and the signals that no test
-reached.
+`fcc_label_update`, `fcc_regs`), then, per block, the lines and the signals
+(named with their sub-block: `filter.later_min`) that no test reached.
 
 A coverage point is counted once per block, over every instance and every
 configuration the regression simulates: a line of a module (or a bit of a
@@ -29,6 +29,7 @@ import glob
 import json
 import os
 import re
+import subprocess
 import sys
 
 BLOCK_ORDER = [
@@ -39,6 +40,7 @@ BLOCK_ORDER = [
     "fcc_sort_net",
     "fcc_merge_table",
     "fcc_label_update",
+    "fcc_regs",
 ]
 
 
@@ -62,10 +64,11 @@ def parse_dat(path):
 class Sources:
     """The generated Verilog each point's file name refers to (models are built
     in `<key>.tmp-<pid>` and renamed to `<key>`), for module-relative line
-    numbers (equal across configurations) and the source text."""
+    numbers and the source text, and the variant of each module's text."""
 
     def __init__(self):
         self.files = {}
+        self.variants = {}
 
     def get(self, fpath):
         if fpath not in self.files:
@@ -91,11 +94,54 @@ class Sources:
         text = lines[line - 1].strip() if 0 < line <= len(lines) else ""
         return line - starts[module], text
 
+    def variant(self, fpath, module):
+        """The shape of one module's body: its text with the configuration
+        suffixes removed and every number replaced, so two configurations
+        that differ only in constants and widths share it (their line numbers
+        mean the same lines) and a loop the generator unrolls per K gives
+        another variant. None when the source is not found."""
+        key = (fpath, module)
+        if key not in self.variants:
+            lines, starts = self.get(fpath)
+            body = None
+            if lines is not None and module in starts:
+                end = starts[module]
+                while end < len(lines) and not lines[end].startswith("endmodule"):
+                    end += 1
+                body = "\n".join(
+                    re.sub(r"\d+", "N", VERILOG_LITERAL.sub("L", CONFIG_SUFFIX_ANY.sub("", ln)))
+                    for ln in lines[starts[module] : end]
+                )
+            self.variants[key] = body
+        return self.variants[key]
+
 
 # Generated module names end in the configuration's suffix, `_k<K>_<8 hex
 # digits of the parameter hash>` (FccParams::module_suffix); points of one
 # module in several configurations are merged under the name without it.
 CONFIG_SUFFIX = re.compile(r"_k\d+_[0-9a-f]{8}$")
+CONFIG_SUFFIX_ANY = re.compile(r"_k\d+_[0-9a-f]{8}\b")
+VERILOG_LITERAL = re.compile(r"\d*'[sS]?[bBoOdDhH][0-9a-fA-FxXzZ_]+")
+
+
+def k_of(module):
+    m = re.search(r"_k(\d+)_[0-9a-f]{8}$", module)
+    return int(m.group(1)) if m else None
+
+
+def rtl_revision():
+    """The commit whose generator built the models (HEAD, and whether the
+    generator's sources differ from it), or None outside a git checkout."""
+    try:
+        rev = subprocess.run(
+            ["git", "rev-parse", "--short", "HEAD"], capture_output=True, text=True, check=True
+        ).stdout.strip()
+        dirty = subprocess.run(
+            ["git", "status", "--porcelain", "--", "crates/fcc-rtl"], capture_output=True, text=True, check=True
+        ).stdout.strip()
+    except (OSError, subprocess.CalledProcessError):
+        return None
+    return rev + (" with local changes to crates/fcc-rtl" if dirty else "")
 
 
 def base_name(module):
@@ -120,6 +166,17 @@ def main():
     points = {}
     source = {}  # (module, relative line) -> source text, for the unreached-lines list
     srcs = Sources()
+    # A module whose text differs between configurations has its lines
+    # counted per text variant (named by the K of the builds that have it);
+    # one whose text is the same everywhere is counted once.
+    variant_ks = collections.defaultdict(lambda: collections.defaultdict(set))
+    for path in files:
+        for f, _count in parse_dat(path):
+            page = f.get("page", "")
+            if page.startswith("v_line/") or page.startswith("v_branch/"):
+                full = page.split("/", 1)[1]
+                body = srcs.variant(f.get("f", ""), full)
+                variant_ks[base_name(full)][body].add(k_of(full))
     for path in files:
         for f, count in parse_dat(path):
             page = f.get("page", "")
@@ -133,8 +190,12 @@ def main():
             blk = block_of(module)
             if kind == "line":
                 rel, text = srcs.locate(f.get("f", ""), full, int(f.get("l", "0")))
-                key = (module, rel, f.get("n", ""), f.get("o", ""))
-                source.setdefault((module, rel), text)
+                ks = ""
+                if len(variant_ks[module]) > 1:
+                    found = sorted(k for k in variant_ks[module][srcs.variant(f.get("f", ""), full)] if k)
+                    ks = "K = " + ", ".join(map(str, found))
+                key = (module, ks, rel, f.get("n", ""), f.get("o", ""))
+                source.setdefault((module, ks, rel), text)
             else:
                 key = (module, f.get("o", ""))
             k = (kind, blk, key)
@@ -152,10 +213,12 @@ def main():
         if not hit:
             missed[(kind, blk)].append(key)
     blocks = [b for b in BLOCK_ORDER if b in stats] + sorted(b for b in stats if b not in BLOCK_ORDER)
+    rev = rtl_revision()
 
     if a.json:
         summary = {
             "command": a.command,
+            "rtl": rev,
             "instances": len(files),
             "blocks": [
                 {
@@ -180,7 +243,9 @@ def main():
     out.append("# Coverage of the Verilator regression\n")
     out.append(
         f"Verilator line and toggle coverage of the generated `fcc_top` over the tests `{a.command}` ran "
-        f"({len(files)} simulated instances, every configuration those tests build). A point counts "
+        f"({len(files)} simulated instances, every configuration those tests build"
+        + (f"; the RTL of commit {rev}" if rev else "")
+        + "). A point counts "
         "once per block: reached when any instance of any configuration reached it. A toggle point is one "
         "bit of one signal in one direction (0->1 or 1->0).\n"
     )
@@ -196,10 +261,13 @@ def main():
     out.append("## Not reached, per block\n")
     out.append(
         "Lines are given as `module +N`: N lines below the `module` line of that module in the generated "
-        "`fcc_top.v` (the same for every configuration), with the Verilator point type and the source line.\n"
+        "`fcc_top.v`, with the Verilator point type and the source line. A module whose text differs "
+        "between the configurations simulated by more than constants and widths (loops unrolled per K) "
+        "is counted per text variant, "
+        "named by the K of the builds that have it (`(K = 11)`); a module with one text is counted once.\n"
     )
     for b in blocks:
-        lines = sorted(missed.get(("line", b), []), key=lambda k: (k[0], k[1]))
+        lines = sorted(missed.get(("line", b), []), key=lambda k: (k[0], k[1], k[2]))
         toggles = missed.get(("toggle", b), [])
         out.append(f"### `{b}`\n")
         if not lines and not toggles:
@@ -207,10 +275,11 @@ def main():
             continue
         if lines:
             out.append(f"{len(lines)} line points never reached:\n")
-            for m, ln, _n, o in lines[: a.max_list]:
-                text = source.get((m, ln), "").strip()
+            for m, ks, ln, _n, o in lines[: a.max_list]:
+                text = source.get((m, ks, ln), "").strip()
                 what = f" {o}" if o else ""
-                out.append(f"- `{m}` +{ln}{what}" + (f": `{text}`" if text else ""))
+                build = f" ({ks})" if ks else ""
+                out.append(f"- `{m}`{build} +{ln}{what}" + (f": `{text}`" if text else ""))
             if len(lines) > a.max_list:
                 out.append(f"- ... and {len(lines) - a.max_list} more")
             out.append("")
@@ -218,8 +287,12 @@ def main():
             # Group bits of one signal: name[3]:0->1 -> name
             sig = collections.Counter()
             for m, o in toggles:
-                name = re.sub(r"\[\d+\]", "", o.split(":")[0])
-                sig[name] += 1
+                # Verilator spells `$` as `__024` in signal names.
+                name = re.sub(r"\[\d+\]", "", o.split(":")[0]).replace("__024", "$")
+                # The signal with its sub-block (`filter.later_min`), since
+                # the ports of small sub-blocks (`d`, `q`) recur in many.
+                sub = m[len(b) + 2 :].replace("__", ".") if m.startswith(b + "__") else ""
+                sig[f"{sub}.{name}" if sub else name] += 1
             out.append(f"{len(toggles)} toggle points never reached, in {len(sig)} signals; the most:\n")
             for name, n in sig.most_common(a.max_list):
                 out.append(f"- `{name}`: {n}")

@@ -400,7 +400,19 @@ pub(crate) fn build(files: &[(&str, &str)], dir: &Path, shim: &Shim) -> Result<(
             } else {
                 &[][..]
             })
-            .args(["-CFLAGS", "-fPIC -O1", "--top-module", shim.top])
+            // A coverage model is compiled without optimisation: with its
+            // counters the generated C++ takes the compiler several times as
+            // long at -O1, and the small coverage runs do not need the speed.
+            .args([
+                "-CFLAGS",
+                if shim.coverage {
+                    "-fPIC -O0"
+                } else {
+                    "-fPIC -O1"
+                },
+                "--top-module",
+                shim.top,
+            ])
             .args(["--prefix", shim.prefix])
             .args(["-Mdir", "obj"])
             // Coverage points name their file: an absolute path lets the

@@ -183,6 +183,66 @@ fn registers_of_the_core_read_back_and_irq_follows_frame_done() {
     });
     assert_eq!(o.irq, 0, "irq low once FRAME_DONE is cleared");
     assert_eq!(m.read(&mut d, offset::FRAME_COUNT).unwrap(), 1);
+    // Offsets that name no register read 0.
+    for unmapped in [0x028, 0x04C, 0x06C, 0x094, 0xFFC] {
+        let got = m.read(&mut d, unmapped).unwrap();
+        assert_eq!(
+            got, 0,
+            "unmapped offset {unmapped:#x}: expected 0 != got {got:#x}"
+        );
+    }
+    // CONTROL.CLEAR: the frame counter, the frame status registers and
+    // STATUS.FRAME_DONE go to 0; IRQ_ENABLE stays; CLEAR reads 0.
+    let frame_regs = [
+        ("FRAME_COUNT", offset::FRAME_COUNT),
+        ("CLUSTERS", offset::CLUSTERS),
+        ("PROVISIONAL", offset::PROVISIONAL),
+        ("JOINS", offset::JOINS),
+    ];
+    for (name, off) in frame_regs {
+        let got = m.read(&mut d, off).unwrap();
+        assert_ne!(
+            got, 0,
+            "{name} is 0 before CONTROL.CLEAR: the clear would prove nothing"
+        );
+    }
+    m.write_ok(
+        &mut d,
+        offset::CONTROL,
+        bits::CONTROL_IRQ_ENABLE | bits::CONTROL_CLEAR,
+    )
+    .unwrap();
+    for (name, off) in frame_regs.into_iter().chain([
+        ("UNLABELLED", offset::UNLABELLED),
+        ("FRAME_FLAGS", offset::FRAME_FLAGS),
+        ("GEAR_STALLS", offset::GEAR_STALLS),
+    ]) {
+        let got = m.read(&mut d, off).unwrap();
+        assert_eq!(
+            got, 0,
+            "{name} after CONTROL.CLEAR: expected 0 != got {got:#x}"
+        );
+    }
+    let status = m.read(&mut d, offset::STATUS).unwrap();
+    assert_eq!(
+        status & bits::STATUS_FRAME_DONE,
+        0,
+        "FRAME_DONE after CONTROL.CLEAR"
+    );
+    let control = m.read(&mut d, offset::CONTROL).unwrap();
+    assert_eq!(
+        control,
+        bits::CONTROL_IRQ_ENABLE,
+        "CONTROL after CLEAR: expected IRQ_ENABLE only != got {control:#x}"
+    );
+    // The next frame counts from 0 again.
+    let run = d.run_frame(&f, &Drive::default()).unwrap();
+    compare(&p, &gold, &run, "frame after CONTROL.CLEAR").unwrap();
+    d.step(&fcc_sim::model::FccIn {
+        m_tready: 1,
+        ..Default::default()
+    });
+    assert_eq!(m.read(&mut d, offset::FRAME_COUNT).unwrap(), 1);
 }
 
 fn scenes(fsize: usize) {

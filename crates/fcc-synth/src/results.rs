@@ -301,6 +301,9 @@ pub struct BlockCoverage {
 pub struct Coverage {
     /// The command that measured it.
     pub command: String,
+    /// The commit whose generator built the models (absent in older files).
+    #[serde(default)]
+    pub rtl: Option<String>,
     /// Simulated model instances the counts come from.
     pub instances: u64,
     pub blocks: Vec<BlockCoverage>,
@@ -892,9 +895,14 @@ fn render_coverage(s: &mut String, report: &Report) {
     };
     s.push_str(&format!(
         "Verilator line and toggle coverage of `fcc_top` per block, from `{}` ({} simulated \
-         instances); a point counts when any instance of any configuration reached it. What is \
+         instances{}); a point counts when any instance of any configuration reached it. What is \
          never reached, per block: [coverage.md](coverage.md).\n\n",
-        c.command, c.instances
+        c.command,
+        c.instances,
+        c.rtl
+            .as_deref()
+            .map(|r| format!("; the RTL of commit {r}"))
+            .unwrap_or_default()
     ));
     s.push_str(
         "| block | lines reached | line coverage | toggles reached | toggle coverage |\n\
