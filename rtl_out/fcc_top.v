@@ -8742,11 +8742,67 @@ module fcc_label_update__pipeline_k7_668cf05b(clk,rst,start,beats_m1,last_beat_l
     localparam  labels$2 = 3'b10;
     localparam  labels$3 = 3'b11;
     localparam  labels$4 = 3'b100;
+    localparam  slot_bit$0 = 4'h1;
+    localparam  slot_bit$1 = 4'h2;
+    localparam  slot_bit$2 = 4'h4;
+    localparam  slot_bit$3 = 4'h8;
+    localparam  upto_mask$0 = 4'h1;
+    localparam  upto_mask$1 = 4'h3;
+    localparam  upto_mask$2 = 4'h7;
+    localparam  upto_mask$3 = 4'hf;
+    localparam  set$0 = 4'h0;
+    localparam  set$1 = 4'h1;
+    localparam  set$2 = 4'h2;
+    localparam  set$3 = 4'h3;
+    localparam  set$4 = 4'h4;
+    localparam  set$5 = 4'h5;
+    localparam  set$6 = 4'h6;
+    localparam  set$7 = 4'h7;
+    localparam  set$8 = 4'h8;
+    localparam  set$9 = 4'h9;
+    localparam  set$10 = 4'ha;
+    localparam  set$11 = 4'hb;
+    localparam  set$12 = 4'hc;
+    localparam  set$13 = 4'hd;
+    localparam  set$14 = 4'he;
+    localparam  set$15 = 4'hf;
+    localparam  count_of$0 = 3'b0;
+    localparam  count_of$1 = 3'b1;
+    localparam  count_of$2 = 3'b1;
+    localparam  count_of$3 = 3'b10;
+    localparam  count_of$4 = 3'b1;
+    localparam  count_of$5 = 3'b10;
+    localparam  count_of$6 = 3'b10;
+    localparam  count_of$7 = 3'b11;
+    localparam  count_of$8 = 3'b1;
+    localparam  count_of$9 = 3'b10;
+    localparam  count_of$10 = 3'b10;
+    localparam  count_of$11 = 3'b11;
+    localparam  count_of$12 = 3'b10;
+    localparam  count_of$13 = 3'b11;
+    localparam  count_of$14 = 3'b11;
+    localparam  count_of$15 = 3'b100;
+    localparam  src_of$0 = 3'b1;
+    localparam  src_of$1 = 3'b10;
+    localparam  src_of$2 = 3'b10;
+    localparam  src_of$3 = 3'b11;
+    localparam  src_of$4 = 3'b10;
+    localparam  src_of$5 = 3'b11;
+    localparam  src_of$6 = 3'b11;
+    localparam  src_of$7 = 3'b100;
+    localparam  src_of$8 = 3'b10;
+    localparam  src_of$9 = 3'b11;
+    localparam  src_of$10 = 3'b11;
+    localparam  src_of$11 = 3'b100;
+    localparam  src_of$12 = 3'b11;
+    localparam  src_of$13 = 3'b100;
+    localparam  src_of$14 = 3'b100;
+    localparam  src_of$15 = 3'b101;
+    localparam  zero4 = 4'h0;
     localparam  code_empty = 2'b0;
     localparam  code_labelled = 2'b10;
     localparam  code_unlabelled = 2'b11;
     localparam  src_zero = 3'b0;
-    localparam  src_carried = 3'b1;
     localparam  max_in_flight = 3'b101;
     localparam  lpb3 = 3'b100;
     localparam  lpb20 = 20'h4;
@@ -8821,16 +8877,12 @@ module fcc_label_update__pipeline_k7_668cf05b(clk,rst,start,beats_m1,last_beat_l
     reg  [1:0] code$1;
     reg  [1:0] code$2;
     reg  [1:0] code$3;
-    reg  [2:0] labelled$0;
-    reg  [2:0] labelled$1;
-    reg  [2:0] labelled$2;
-    reg  [2:0] labelled$3;
-    reg  [2:0] labelled_01;
-    reg  [2:0] labelled_23;
-    reg  [2:0] started$0;
-    reg  [2:0] started$1;
-    reg  [2:0] started$2;
-    reg  [2:0] started$3;
+    reg  [3:0] labelled;
+    reg  [3:0] labelled_upto$0;
+    reg  [3:0] labelled_upto$1;
+    reg  [3:0] labelled_upto$2;
+    reg  [3:0] labelled_upto$3;
+    reg  [2:0] need;
     reg  [2:0] slot_src$0;
     reg  [2:0] slot_src$1;
     reg  [2:0] slot_src$2;
@@ -9095,65 +9147,317 @@ module fcc_label_update__pipeline_k7_668cf05b(clk,rst,start,beats_m1,last_beat_l
             code$3 = code_empty;
         end
         zero_run$0 = first_s2$q;
-        labelled$0 = zero3;
+        labelled = zero4;
         zero_run$1 = zero_run$0;
         if (code$0 == code_labelled) begin
-            labelled$0 = one3;
+            labelled = labelled | slot_bit$0;
             zero_run$1 = 1'b0;
         end
         if (code$0 == code_unlabelled) begin
             zero_run$1 = 1'b1;
         end
-        labelled$1 = zero3;
         zero_run$2 = zero_run$1;
         if (code$1 == code_labelled) begin
-            labelled$1 = one3;
+            labelled = labelled | slot_bit$1;
             zero_run$2 = 1'b0;
         end
         if (code$1 == code_unlabelled) begin
             zero_run$2 = 1'b1;
         end
-        labelled$2 = zero3;
         zero_run$3 = zero_run$2;
         if (code$2 == code_labelled) begin
-            labelled$2 = one3;
+            labelled = labelled | slot_bit$2;
             zero_run$3 = 1'b0;
         end
         if (code$2 == code_unlabelled) begin
             zero_run$3 = 1'b1;
         end
-        labelled$3 = zero3;
         zero_run$4 = zero_run$3;
         if (code$3 == code_labelled) begin
-            labelled$3 = one3;
+            labelled = labelled | slot_bit$3;
             zero_run$4 = 1'b0;
         end
         if (code$3 == code_unlabelled) begin
             zero_run$4 = 1'b1;
         end
-        labelled_01 = labelled$0 + labelled$1;
-        labelled_23 = labelled$2 + labelled$3;
-        started$0 = labelled$0;
-        started$1 = labelled_01;
-        started$2 = labelled_01 + labelled$2;
-        started$3 = labelled_01 + labelled_23;
-        slot_src$0 = started$0 + src_carried;
+        labelled_upto$0 = labelled & upto_mask$0;
+        slot_src$0 = src_zero;
+        if (labelled_upto$0 == set$0) begin
+            slot_src$0 = src_of$0;
+        end
+        if (labelled_upto$0 == set$1) begin
+            slot_src$0 = src_of$1;
+        end
+        if (labelled_upto$0 == set$2) begin
+            slot_src$0 = src_of$2;
+        end
+        if (labelled_upto$0 == set$3) begin
+            slot_src$0 = src_of$3;
+        end
+        if (labelled_upto$0 == set$4) begin
+            slot_src$0 = src_of$4;
+        end
+        if (labelled_upto$0 == set$5) begin
+            slot_src$0 = src_of$5;
+        end
+        if (labelled_upto$0 == set$6) begin
+            slot_src$0 = src_of$6;
+        end
+        if (labelled_upto$0 == set$7) begin
+            slot_src$0 = src_of$7;
+        end
+        if (labelled_upto$0 == set$8) begin
+            slot_src$0 = src_of$8;
+        end
+        if (labelled_upto$0 == set$9) begin
+            slot_src$0 = src_of$9;
+        end
+        if (labelled_upto$0 == set$10) begin
+            slot_src$0 = src_of$10;
+        end
+        if (labelled_upto$0 == set$11) begin
+            slot_src$0 = src_of$11;
+        end
+        if (labelled_upto$0 == set$12) begin
+            slot_src$0 = src_of$12;
+        end
+        if (labelled_upto$0 == set$13) begin
+            slot_src$0 = src_of$13;
+        end
+        if (labelled_upto$0 == set$14) begin
+            slot_src$0 = src_of$14;
+        end
+        if (labelled_upto$0 == set$15) begin
+            slot_src$0 = src_of$15;
+        end
         if (zero_run$1 | (code$0 == code_empty)) begin
             slot_src$0 = src_zero;
         end
-        slot_src$1 = started$1 + src_carried;
+        labelled_upto$1 = labelled & upto_mask$1;
+        slot_src$1 = src_zero;
+        if (labelled_upto$1 == set$0) begin
+            slot_src$1 = src_of$0;
+        end
+        if (labelled_upto$1 == set$1) begin
+            slot_src$1 = src_of$1;
+        end
+        if (labelled_upto$1 == set$2) begin
+            slot_src$1 = src_of$2;
+        end
+        if (labelled_upto$1 == set$3) begin
+            slot_src$1 = src_of$3;
+        end
+        if (labelled_upto$1 == set$4) begin
+            slot_src$1 = src_of$4;
+        end
+        if (labelled_upto$1 == set$5) begin
+            slot_src$1 = src_of$5;
+        end
+        if (labelled_upto$1 == set$6) begin
+            slot_src$1 = src_of$6;
+        end
+        if (labelled_upto$1 == set$7) begin
+            slot_src$1 = src_of$7;
+        end
+        if (labelled_upto$1 == set$8) begin
+            slot_src$1 = src_of$8;
+        end
+        if (labelled_upto$1 == set$9) begin
+            slot_src$1 = src_of$9;
+        end
+        if (labelled_upto$1 == set$10) begin
+            slot_src$1 = src_of$10;
+        end
+        if (labelled_upto$1 == set$11) begin
+            slot_src$1 = src_of$11;
+        end
+        if (labelled_upto$1 == set$12) begin
+            slot_src$1 = src_of$12;
+        end
+        if (labelled_upto$1 == set$13) begin
+            slot_src$1 = src_of$13;
+        end
+        if (labelled_upto$1 == set$14) begin
+            slot_src$1 = src_of$14;
+        end
+        if (labelled_upto$1 == set$15) begin
+            slot_src$1 = src_of$15;
+        end
         if (zero_run$2 | (code$1 == code_empty)) begin
             slot_src$1 = src_zero;
         end
-        slot_src$2 = started$2 + src_carried;
+        labelled_upto$2 = labelled & upto_mask$2;
+        slot_src$2 = src_zero;
+        if (labelled_upto$2 == set$0) begin
+            slot_src$2 = src_of$0;
+        end
+        if (labelled_upto$2 == set$1) begin
+            slot_src$2 = src_of$1;
+        end
+        if (labelled_upto$2 == set$2) begin
+            slot_src$2 = src_of$2;
+        end
+        if (labelled_upto$2 == set$3) begin
+            slot_src$2 = src_of$3;
+        end
+        if (labelled_upto$2 == set$4) begin
+            slot_src$2 = src_of$4;
+        end
+        if (labelled_upto$2 == set$5) begin
+            slot_src$2 = src_of$5;
+        end
+        if (labelled_upto$2 == set$6) begin
+            slot_src$2 = src_of$6;
+        end
+        if (labelled_upto$2 == set$7) begin
+            slot_src$2 = src_of$7;
+        end
+        if (labelled_upto$2 == set$8) begin
+            slot_src$2 = src_of$8;
+        end
+        if (labelled_upto$2 == set$9) begin
+            slot_src$2 = src_of$9;
+        end
+        if (labelled_upto$2 == set$10) begin
+            slot_src$2 = src_of$10;
+        end
+        if (labelled_upto$2 == set$11) begin
+            slot_src$2 = src_of$11;
+        end
+        if (labelled_upto$2 == set$12) begin
+            slot_src$2 = src_of$12;
+        end
+        if (labelled_upto$2 == set$13) begin
+            slot_src$2 = src_of$13;
+        end
+        if (labelled_upto$2 == set$14) begin
+            slot_src$2 = src_of$14;
+        end
+        if (labelled_upto$2 == set$15) begin
+            slot_src$2 = src_of$15;
+        end
         if (zero_run$3 | (code$2 == code_empty)) begin
             slot_src$2 = src_zero;
         end
-        slot_src$3 = started$3 + src_carried;
+        labelled_upto$3 = labelled & upto_mask$3;
+        slot_src$3 = src_zero;
+        if (labelled_upto$3 == set$0) begin
+            slot_src$3 = src_of$0;
+        end
+        if (labelled_upto$3 == set$1) begin
+            slot_src$3 = src_of$1;
+        end
+        if (labelled_upto$3 == set$2) begin
+            slot_src$3 = src_of$2;
+        end
+        if (labelled_upto$3 == set$3) begin
+            slot_src$3 = src_of$3;
+        end
+        if (labelled_upto$3 == set$4) begin
+            slot_src$3 = src_of$4;
+        end
+        if (labelled_upto$3 == set$5) begin
+            slot_src$3 = src_of$5;
+        end
+        if (labelled_upto$3 == set$6) begin
+            slot_src$3 = src_of$6;
+        end
+        if (labelled_upto$3 == set$7) begin
+            slot_src$3 = src_of$7;
+        end
+        if (labelled_upto$3 == set$8) begin
+            slot_src$3 = src_of$8;
+        end
+        if (labelled_upto$3 == set$9) begin
+            slot_src$3 = src_of$9;
+        end
+        if (labelled_upto$3 == set$10) begin
+            slot_src$3 = src_of$10;
+        end
+        if (labelled_upto$3 == set$11) begin
+            slot_src$3 = src_of$11;
+        end
+        if (labelled_upto$3 == set$12) begin
+            slot_src$3 = src_of$12;
+        end
+        if (labelled_upto$3 == set$13) begin
+            slot_src$3 = src_of$13;
+        end
+        if (labelled_upto$3 == set$14) begin
+            slot_src$3 = src_of$14;
+        end
+        if (labelled_upto$3 == set$15) begin
+            slot_src$3 = src_of$15;
+        end
         if (zero_run$4 | (code$3 == code_empty)) begin
             slot_src$3 = src_zero;
         end
-        run_src = started$3 + src_carried;
+        need = zero3;
+        run_src = src_zero;
+        if (labelled == set$0) begin
+            need = count_of$0;
+            run_src = src_of$0;
+        end
+        if (labelled == set$1) begin
+            need = count_of$1;
+            run_src = src_of$1;
+        end
+        if (labelled == set$2) begin
+            need = count_of$2;
+            run_src = src_of$2;
+        end
+        if (labelled == set$3) begin
+            need = count_of$3;
+            run_src = src_of$3;
+        end
+        if (labelled == set$4) begin
+            need = count_of$4;
+            run_src = src_of$4;
+        end
+        if (labelled == set$5) begin
+            need = count_of$5;
+            run_src = src_of$5;
+        end
+        if (labelled == set$6) begin
+            need = count_of$6;
+            run_src = src_of$6;
+        end
+        if (labelled == set$7) begin
+            need = count_of$7;
+            run_src = src_of$7;
+        end
+        if (labelled == set$8) begin
+            need = count_of$8;
+            run_src = src_of$8;
+        end
+        if (labelled == set$9) begin
+            need = count_of$9;
+            run_src = src_of$9;
+        end
+        if (labelled == set$10) begin
+            need = count_of$10;
+            run_src = src_of$10;
+        end
+        if (labelled == set$11) begin
+            need = count_of$11;
+            run_src = src_of$11;
+        end
+        if (labelled == set$12) begin
+            need = count_of$12;
+            run_src = src_of$12;
+        end
+        if (labelled == set$13) begin
+            need = count_of$13;
+            run_src = src_of$13;
+        end
+        if (labelled == set$14) begin
+            need = count_of$14;
+            run_src = src_of$14;
+        end
+        if (labelled == set$15) begin
+            need = count_of$15;
+            run_src = src_of$15;
+        end
         if (zero_run$4) begin
             run_src = src_zero;
         end
@@ -9163,7 +9467,7 @@ module fcc_label_update__pipeline_k7_668cf05b(clk,rst,start,beats_m1,last_beat_l
         beat_s3$d[8:6] = slot_src$2;
         beat_s3$d[11:9] = slot_src$3;
         beat_s3$d[14:12] = run_src;
-        beat_s3$d[17:15] = started$3;
+        beat_s3$d[17:15] = need;
         beat_s3$d[25:18] = keep_s2$q;
         beat_s3$d[26:26] = last_s2$q;
         beat_valid = valid_s3$q;
