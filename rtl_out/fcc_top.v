@@ -8742,11 +8742,67 @@ module fcc_label_update__pipeline_k7_668cf05b(clk,rst,start,beats_m1,last_beat_l
     localparam  labels$2 = 3'b10;
     localparam  labels$3 = 3'b11;
     localparam  labels$4 = 3'b100;
+    localparam  slot_bit$0 = 4'h1;
+    localparam  slot_bit$1 = 4'h2;
+    localparam  slot_bit$2 = 4'h4;
+    localparam  slot_bit$3 = 4'h8;
+    localparam  upto_mask$0 = 4'h1;
+    localparam  upto_mask$1 = 4'h3;
+    localparam  upto_mask$2 = 4'h7;
+    localparam  upto_mask$3 = 4'hf;
+    localparam  set$0 = 4'h0;
+    localparam  set$1 = 4'h1;
+    localparam  set$2 = 4'h2;
+    localparam  set$3 = 4'h3;
+    localparam  set$4 = 4'h4;
+    localparam  set$5 = 4'h5;
+    localparam  set$6 = 4'h6;
+    localparam  set$7 = 4'h7;
+    localparam  set$8 = 4'h8;
+    localparam  set$9 = 4'h9;
+    localparam  set$10 = 4'ha;
+    localparam  set$11 = 4'hb;
+    localparam  set$12 = 4'hc;
+    localparam  set$13 = 4'hd;
+    localparam  set$14 = 4'he;
+    localparam  set$15 = 4'hf;
+    localparam  count_of$0 = 3'b0;
+    localparam  count_of$1 = 3'b1;
+    localparam  count_of$2 = 3'b1;
+    localparam  count_of$3 = 3'b10;
+    localparam  count_of$4 = 3'b1;
+    localparam  count_of$5 = 3'b10;
+    localparam  count_of$6 = 3'b10;
+    localparam  count_of$7 = 3'b11;
+    localparam  count_of$8 = 3'b1;
+    localparam  count_of$9 = 3'b10;
+    localparam  count_of$10 = 3'b10;
+    localparam  count_of$11 = 3'b11;
+    localparam  count_of$12 = 3'b10;
+    localparam  count_of$13 = 3'b11;
+    localparam  count_of$14 = 3'b11;
+    localparam  count_of$15 = 3'b100;
+    localparam  src_of$0 = 3'b1;
+    localparam  src_of$1 = 3'b10;
+    localparam  src_of$2 = 3'b10;
+    localparam  src_of$3 = 3'b11;
+    localparam  src_of$4 = 3'b10;
+    localparam  src_of$5 = 3'b11;
+    localparam  src_of$6 = 3'b11;
+    localparam  src_of$7 = 3'b100;
+    localparam  src_of$8 = 3'b10;
+    localparam  src_of$9 = 3'b11;
+    localparam  src_of$10 = 3'b11;
+    localparam  src_of$11 = 3'b100;
+    localparam  src_of$12 = 3'b11;
+    localparam  src_of$13 = 3'b100;
+    localparam  src_of$14 = 3'b100;
+    localparam  src_of$15 = 3'b101;
+    localparam  zero4 = 4'h0;
     localparam  code_empty = 2'b0;
     localparam  code_labelled = 2'b10;
     localparam  code_unlabelled = 2'b11;
     localparam  src_zero = 3'b0;
-    localparam  src_carried = 3'b1;
     localparam  max_in_flight = 3'b101;
     localparam  lpb3 = 3'b100;
     localparam  lpb20 = 20'h4;
@@ -8821,16 +8877,12 @@ module fcc_label_update__pipeline_k7_668cf05b(clk,rst,start,beats_m1,last_beat_l
     reg  [1:0] code$1;
     reg  [1:0] code$2;
     reg  [1:0] code$3;
-    reg  [2:0] labelled$0;
-    reg  [2:0] labelled$1;
-    reg  [2:0] labelled$2;
-    reg  [2:0] labelled$3;
-    reg  [2:0] labelled_01;
-    reg  [2:0] labelled_23;
-    reg  [2:0] started$0;
-    reg  [2:0] started$1;
-    reg  [2:0] started$2;
-    reg  [2:0] started$3;
+    reg  [3:0] labelled;
+    reg  [3:0] labelled_upto$0;
+    reg  [3:0] labelled_upto$1;
+    reg  [3:0] labelled_upto$2;
+    reg  [3:0] labelled_upto$3;
+    reg  [2:0] need;
     reg  [2:0] slot_src$0;
     reg  [2:0] slot_src$1;
     reg  [2:0] slot_src$2;
@@ -9095,65 +9147,317 @@ module fcc_label_update__pipeline_k7_668cf05b(clk,rst,start,beats_m1,last_beat_l
             code$3 = code_empty;
         end
         zero_run$0 = first_s2$q;
-        labelled$0 = zero3;
+        labelled = zero4;
         zero_run$1 = zero_run$0;
         if (code$0 == code_labelled) begin
-            labelled$0 = one3;
+            labelled = labelled | slot_bit$0;
             zero_run$1 = 1'b0;
         end
         if (code$0 == code_unlabelled) begin
             zero_run$1 = 1'b1;
         end
-        labelled$1 = zero3;
         zero_run$2 = zero_run$1;
         if (code$1 == code_labelled) begin
-            labelled$1 = one3;
+            labelled = labelled | slot_bit$1;
             zero_run$2 = 1'b0;
         end
         if (code$1 == code_unlabelled) begin
             zero_run$2 = 1'b1;
         end
-        labelled$2 = zero3;
         zero_run$3 = zero_run$2;
         if (code$2 == code_labelled) begin
-            labelled$2 = one3;
+            labelled = labelled | slot_bit$2;
             zero_run$3 = 1'b0;
         end
         if (code$2 == code_unlabelled) begin
             zero_run$3 = 1'b1;
         end
-        labelled$3 = zero3;
         zero_run$4 = zero_run$3;
         if (code$3 == code_labelled) begin
-            labelled$3 = one3;
+            labelled = labelled | slot_bit$3;
             zero_run$4 = 1'b0;
         end
         if (code$3 == code_unlabelled) begin
             zero_run$4 = 1'b1;
         end
-        labelled_01 = labelled$0 + labelled$1;
-        labelled_23 = labelled$2 + labelled$3;
-        started$0 = labelled$0;
-        started$1 = labelled_01;
-        started$2 = labelled_01 + labelled$2;
-        started$3 = labelled_01 + labelled_23;
-        slot_src$0 = started$0 + src_carried;
+        labelled_upto$0 = labelled & upto_mask$0;
+        slot_src$0 = src_zero;
+        if (labelled_upto$0 == set$0) begin
+            slot_src$0 = src_of$0;
+        end
+        if (labelled_upto$0 == set$1) begin
+            slot_src$0 = src_of$1;
+        end
+        if (labelled_upto$0 == set$2) begin
+            slot_src$0 = src_of$2;
+        end
+        if (labelled_upto$0 == set$3) begin
+            slot_src$0 = src_of$3;
+        end
+        if (labelled_upto$0 == set$4) begin
+            slot_src$0 = src_of$4;
+        end
+        if (labelled_upto$0 == set$5) begin
+            slot_src$0 = src_of$5;
+        end
+        if (labelled_upto$0 == set$6) begin
+            slot_src$0 = src_of$6;
+        end
+        if (labelled_upto$0 == set$7) begin
+            slot_src$0 = src_of$7;
+        end
+        if (labelled_upto$0 == set$8) begin
+            slot_src$0 = src_of$8;
+        end
+        if (labelled_upto$0 == set$9) begin
+            slot_src$0 = src_of$9;
+        end
+        if (labelled_upto$0 == set$10) begin
+            slot_src$0 = src_of$10;
+        end
+        if (labelled_upto$0 == set$11) begin
+            slot_src$0 = src_of$11;
+        end
+        if (labelled_upto$0 == set$12) begin
+            slot_src$0 = src_of$12;
+        end
+        if (labelled_upto$0 == set$13) begin
+            slot_src$0 = src_of$13;
+        end
+        if (labelled_upto$0 == set$14) begin
+            slot_src$0 = src_of$14;
+        end
+        if (labelled_upto$0 == set$15) begin
+            slot_src$0 = src_of$15;
+        end
         if (zero_run$1 | (code$0 == code_empty)) begin
             slot_src$0 = src_zero;
         end
-        slot_src$1 = started$1 + src_carried;
+        labelled_upto$1 = labelled & upto_mask$1;
+        slot_src$1 = src_zero;
+        if (labelled_upto$1 == set$0) begin
+            slot_src$1 = src_of$0;
+        end
+        if (labelled_upto$1 == set$1) begin
+            slot_src$1 = src_of$1;
+        end
+        if (labelled_upto$1 == set$2) begin
+            slot_src$1 = src_of$2;
+        end
+        if (labelled_upto$1 == set$3) begin
+            slot_src$1 = src_of$3;
+        end
+        if (labelled_upto$1 == set$4) begin
+            slot_src$1 = src_of$4;
+        end
+        if (labelled_upto$1 == set$5) begin
+            slot_src$1 = src_of$5;
+        end
+        if (labelled_upto$1 == set$6) begin
+            slot_src$1 = src_of$6;
+        end
+        if (labelled_upto$1 == set$7) begin
+            slot_src$1 = src_of$7;
+        end
+        if (labelled_upto$1 == set$8) begin
+            slot_src$1 = src_of$8;
+        end
+        if (labelled_upto$1 == set$9) begin
+            slot_src$1 = src_of$9;
+        end
+        if (labelled_upto$1 == set$10) begin
+            slot_src$1 = src_of$10;
+        end
+        if (labelled_upto$1 == set$11) begin
+            slot_src$1 = src_of$11;
+        end
+        if (labelled_upto$1 == set$12) begin
+            slot_src$1 = src_of$12;
+        end
+        if (labelled_upto$1 == set$13) begin
+            slot_src$1 = src_of$13;
+        end
+        if (labelled_upto$1 == set$14) begin
+            slot_src$1 = src_of$14;
+        end
+        if (labelled_upto$1 == set$15) begin
+            slot_src$1 = src_of$15;
+        end
         if (zero_run$2 | (code$1 == code_empty)) begin
             slot_src$1 = src_zero;
         end
-        slot_src$2 = started$2 + src_carried;
+        labelled_upto$2 = labelled & upto_mask$2;
+        slot_src$2 = src_zero;
+        if (labelled_upto$2 == set$0) begin
+            slot_src$2 = src_of$0;
+        end
+        if (labelled_upto$2 == set$1) begin
+            slot_src$2 = src_of$1;
+        end
+        if (labelled_upto$2 == set$2) begin
+            slot_src$2 = src_of$2;
+        end
+        if (labelled_upto$2 == set$3) begin
+            slot_src$2 = src_of$3;
+        end
+        if (labelled_upto$2 == set$4) begin
+            slot_src$2 = src_of$4;
+        end
+        if (labelled_upto$2 == set$5) begin
+            slot_src$2 = src_of$5;
+        end
+        if (labelled_upto$2 == set$6) begin
+            slot_src$2 = src_of$6;
+        end
+        if (labelled_upto$2 == set$7) begin
+            slot_src$2 = src_of$7;
+        end
+        if (labelled_upto$2 == set$8) begin
+            slot_src$2 = src_of$8;
+        end
+        if (labelled_upto$2 == set$9) begin
+            slot_src$2 = src_of$9;
+        end
+        if (labelled_upto$2 == set$10) begin
+            slot_src$2 = src_of$10;
+        end
+        if (labelled_upto$2 == set$11) begin
+            slot_src$2 = src_of$11;
+        end
+        if (labelled_upto$2 == set$12) begin
+            slot_src$2 = src_of$12;
+        end
+        if (labelled_upto$2 == set$13) begin
+            slot_src$2 = src_of$13;
+        end
+        if (labelled_upto$2 == set$14) begin
+            slot_src$2 = src_of$14;
+        end
+        if (labelled_upto$2 == set$15) begin
+            slot_src$2 = src_of$15;
+        end
         if (zero_run$3 | (code$2 == code_empty)) begin
             slot_src$2 = src_zero;
         end
-        slot_src$3 = started$3 + src_carried;
+        labelled_upto$3 = labelled & upto_mask$3;
+        slot_src$3 = src_zero;
+        if (labelled_upto$3 == set$0) begin
+            slot_src$3 = src_of$0;
+        end
+        if (labelled_upto$3 == set$1) begin
+            slot_src$3 = src_of$1;
+        end
+        if (labelled_upto$3 == set$2) begin
+            slot_src$3 = src_of$2;
+        end
+        if (labelled_upto$3 == set$3) begin
+            slot_src$3 = src_of$3;
+        end
+        if (labelled_upto$3 == set$4) begin
+            slot_src$3 = src_of$4;
+        end
+        if (labelled_upto$3 == set$5) begin
+            slot_src$3 = src_of$5;
+        end
+        if (labelled_upto$3 == set$6) begin
+            slot_src$3 = src_of$6;
+        end
+        if (labelled_upto$3 == set$7) begin
+            slot_src$3 = src_of$7;
+        end
+        if (labelled_upto$3 == set$8) begin
+            slot_src$3 = src_of$8;
+        end
+        if (labelled_upto$3 == set$9) begin
+            slot_src$3 = src_of$9;
+        end
+        if (labelled_upto$3 == set$10) begin
+            slot_src$3 = src_of$10;
+        end
+        if (labelled_upto$3 == set$11) begin
+            slot_src$3 = src_of$11;
+        end
+        if (labelled_upto$3 == set$12) begin
+            slot_src$3 = src_of$12;
+        end
+        if (labelled_upto$3 == set$13) begin
+            slot_src$3 = src_of$13;
+        end
+        if (labelled_upto$3 == set$14) begin
+            slot_src$3 = src_of$14;
+        end
+        if (labelled_upto$3 == set$15) begin
+            slot_src$3 = src_of$15;
+        end
         if (zero_run$4 | (code$3 == code_empty)) begin
             slot_src$3 = src_zero;
         end
-        run_src = started$3 + src_carried;
+        need = zero3;
+        run_src = src_zero;
+        if (labelled == set$0) begin
+            need = count_of$0;
+            run_src = src_of$0;
+        end
+        if (labelled == set$1) begin
+            need = count_of$1;
+            run_src = src_of$1;
+        end
+        if (labelled == set$2) begin
+            need = count_of$2;
+            run_src = src_of$2;
+        end
+        if (labelled == set$3) begin
+            need = count_of$3;
+            run_src = src_of$3;
+        end
+        if (labelled == set$4) begin
+            need = count_of$4;
+            run_src = src_of$4;
+        end
+        if (labelled == set$5) begin
+            need = count_of$5;
+            run_src = src_of$5;
+        end
+        if (labelled == set$6) begin
+            need = count_of$6;
+            run_src = src_of$6;
+        end
+        if (labelled == set$7) begin
+            need = count_of$7;
+            run_src = src_of$7;
+        end
+        if (labelled == set$8) begin
+            need = count_of$8;
+            run_src = src_of$8;
+        end
+        if (labelled == set$9) begin
+            need = count_of$9;
+            run_src = src_of$9;
+        end
+        if (labelled == set$10) begin
+            need = count_of$10;
+            run_src = src_of$10;
+        end
+        if (labelled == set$11) begin
+            need = count_of$11;
+            run_src = src_of$11;
+        end
+        if (labelled == set$12) begin
+            need = count_of$12;
+            run_src = src_of$12;
+        end
+        if (labelled == set$13) begin
+            need = count_of$13;
+            run_src = src_of$13;
+        end
+        if (labelled == set$14) begin
+            need = count_of$14;
+            run_src = src_of$14;
+        end
+        if (labelled == set$15) begin
+            need = count_of$15;
+            run_src = src_of$15;
+        end
         if (zero_run$4) begin
             run_src = src_zero;
         end
@@ -9163,7 +9467,7 @@ module fcc_label_update__pipeline_k7_668cf05b(clk,rst,start,beats_m1,last_beat_l
         beat_s3$d[8:6] = slot_src$2;
         beat_s3$d[11:9] = slot_src$3;
         beat_s3$d[14:12] = run_src;
-        beat_s3$d[17:15] = started$3;
+        beat_s3$d[17:15] = need;
         beat_s3$d[25:18] = keep_s2$q;
         beat_s3$d[26:26] = last_s2$q;
         beat_valid = valid_s3$q;
@@ -15745,6 +16049,27 @@ module fcc_sort_net_k7_668cf05b(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit
     wire  filter$rec_keep$18;
     wire  filter$rec_keep$19;
     wire  filter$rec_keep$20;
+    wire  filter$rec_first$0;
+    wire  filter$rec_first$1;
+    wire  filter$rec_first$2;
+    wire  filter$rec_first$3;
+    wire  filter$rec_first$4;
+    wire  filter$rec_first$5;
+    wire  filter$rec_first$6;
+    wire  filter$rec_first$7;
+    wire  filter$rec_first$8;
+    wire  filter$rec_first$9;
+    wire  filter$rec_first$10;
+    wire  filter$rec_first$11;
+    wire  filter$rec_first$12;
+    wire  filter$rec_first$13;
+    wire  filter$rec_first$14;
+    wire  filter$rec_first$15;
+    wire  filter$rec_first$16;
+    wire  filter$rec_first$17;
+    wire  filter$rec_first$18;
+    wire  filter$rec_first$19;
+    wire  filter$rec_first$20;
     wire  filter$credit_drop;
     reg  centre_buf$clk;
     reg  centre_buf$rst;
@@ -15792,6 +16117,27 @@ module fcc_sort_net_k7_668cf05b(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit
     reg  centre_buf$keep$18;
     reg  centre_buf$keep$19;
     reg  centre_buf$keep$20;
+    reg  centre_buf$first$0;
+    reg  centre_buf$first$1;
+    reg  centre_buf$first$2;
+    reg  centre_buf$first$3;
+    reg  centre_buf$first$4;
+    reg  centre_buf$first$5;
+    reg  centre_buf$first$6;
+    reg  centre_buf$first$7;
+    reg  centre_buf$first$8;
+    reg  centre_buf$first$9;
+    reg  centre_buf$first$10;
+    reg  centre_buf$first$11;
+    reg  centre_buf$first$12;
+    reg  centre_buf$first$13;
+    reg  centre_buf$first$14;
+    reg  centre_buf$first$15;
+    reg  centre_buf$first$16;
+    reg  centre_buf$first$17;
+    reg  centre_buf$first$18;
+    reg  centre_buf$first$19;
+    reg  centre_buf$first$20;
     wire  centre_buf$head_valid;
     wire  [49:0] centre_buf$head;
     wire  [15:0] centre_buf$head_rep$0;
@@ -15836,6 +16182,27 @@ module fcc_sort_net_k7_668cf05b(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit
     wire  centre_buf$head_keep$18;
     wire  centre_buf$head_keep$19;
     wire  centre_buf$head_keep$20;
+    wire  centre_buf$head_first$0;
+    wire  centre_buf$head_first$1;
+    wire  centre_buf$head_first$2;
+    wire  centre_buf$head_first$3;
+    wire  centre_buf$head_first$4;
+    wire  centre_buf$head_first$5;
+    wire  centre_buf$head_first$6;
+    wire  centre_buf$head_first$7;
+    wire  centre_buf$head_first$8;
+    wire  centre_buf$head_first$9;
+    wire  centre_buf$head_first$10;
+    wire  centre_buf$head_first$11;
+    wire  centre_buf$head_first$12;
+    wire  centre_buf$head_first$13;
+    wire  centre_buf$head_first$14;
+    wire  centre_buf$head_first$15;
+    wire  centre_buf$head_first$16;
+    wire  centre_buf$head_first$17;
+    wire  centre_buf$head_first$18;
+    wire  centre_buf$head_first$19;
+    wire  centre_buf$head_first$20;
     reg  centre_buf$take;
     reg  serializer$clk;
     reg  serializer$rst;
@@ -15883,6 +16250,27 @@ module fcc_sort_net_k7_668cf05b(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit
     reg  serializer$head_keep$18;
     reg  serializer$head_keep$19;
     reg  serializer$head_keep$20;
+    reg  serializer$head_first$0;
+    reg  serializer$head_first$1;
+    reg  serializer$head_first$2;
+    reg  serializer$head_first$3;
+    reg  serializer$head_first$4;
+    reg  serializer$head_first$5;
+    reg  serializer$head_first$6;
+    reg  serializer$head_first$7;
+    reg  serializer$head_first$8;
+    reg  serializer$head_first$9;
+    reg  serializer$head_first$10;
+    reg  serializer$head_first$11;
+    reg  serializer$head_first$12;
+    reg  serializer$head_first$13;
+    reg  serializer$head_first$14;
+    reg  serializer$head_first$15;
+    reg  serializer$head_first$16;
+    reg  serializer$head_first$17;
+    reg  serializer$head_first$18;
+    reg  serializer$head_first$19;
+    reg  serializer$head_first$20;
     wire  serializer$take;
     reg  serializer$join_room;
     wire  serializer$join_push;
@@ -16005,6 +16393,27 @@ module fcc_sort_net_k7_668cf05b(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit
         .rec_keep$18(filter$rec_keep$18),
         .rec_keep$19(filter$rec_keep$19),
         .rec_keep$20(filter$rec_keep$20),
+        .rec_first$0(filter$rec_first$0),
+        .rec_first$1(filter$rec_first$1),
+        .rec_first$2(filter$rec_first$2),
+        .rec_first$3(filter$rec_first$3),
+        .rec_first$4(filter$rec_first$4),
+        .rec_first$5(filter$rec_first$5),
+        .rec_first$6(filter$rec_first$6),
+        .rec_first$7(filter$rec_first$7),
+        .rec_first$8(filter$rec_first$8),
+        .rec_first$9(filter$rec_first$9),
+        .rec_first$10(filter$rec_first$10),
+        .rec_first$11(filter$rec_first$11),
+        .rec_first$12(filter$rec_first$12),
+        .rec_first$13(filter$rec_first$13),
+        .rec_first$14(filter$rec_first$14),
+        .rec_first$15(filter$rec_first$15),
+        .rec_first$16(filter$rec_first$16),
+        .rec_first$17(filter$rec_first$17),
+        .rec_first$18(filter$rec_first$18),
+        .rec_first$19(filter$rec_first$19),
+        .rec_first$20(filter$rec_first$20),
         .credit_drop(filter$credit_drop)
     );
     fcc_sort_net__centre_buf_k7_668cf05b centre_buf(
@@ -16054,6 +16463,27 @@ module fcc_sort_net_k7_668cf05b(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit
         .keep$18(centre_buf$keep$18),
         .keep$19(centre_buf$keep$19),
         .keep$20(centre_buf$keep$20),
+        .first$0(centre_buf$first$0),
+        .first$1(centre_buf$first$1),
+        .first$2(centre_buf$first$2),
+        .first$3(centre_buf$first$3),
+        .first$4(centre_buf$first$4),
+        .first$5(centre_buf$first$5),
+        .first$6(centre_buf$first$6),
+        .first$7(centre_buf$first$7),
+        .first$8(centre_buf$first$8),
+        .first$9(centre_buf$first$9),
+        .first$10(centre_buf$first$10),
+        .first$11(centre_buf$first$11),
+        .first$12(centre_buf$first$12),
+        .first$13(centre_buf$first$13),
+        .first$14(centre_buf$first$14),
+        .first$15(centre_buf$first$15),
+        .first$16(centre_buf$first$16),
+        .first$17(centre_buf$first$17),
+        .first$18(centre_buf$first$18),
+        .first$19(centre_buf$first$19),
+        .first$20(centre_buf$first$20),
         .head_valid(centre_buf$head_valid),
         .head(centre_buf$head),
         .head_rep$0(centre_buf$head_rep$0),
@@ -16098,6 +16528,27 @@ module fcc_sort_net_k7_668cf05b(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit
         .head_keep$18(centre_buf$head_keep$18),
         .head_keep$19(centre_buf$head_keep$19),
         .head_keep$20(centre_buf$head_keep$20),
+        .head_first$0(centre_buf$head_first$0),
+        .head_first$1(centre_buf$head_first$1),
+        .head_first$2(centre_buf$head_first$2),
+        .head_first$3(centre_buf$head_first$3),
+        .head_first$4(centre_buf$head_first$4),
+        .head_first$5(centre_buf$head_first$5),
+        .head_first$6(centre_buf$head_first$6),
+        .head_first$7(centre_buf$head_first$7),
+        .head_first$8(centre_buf$head_first$8),
+        .head_first$9(centre_buf$head_first$9),
+        .head_first$10(centre_buf$head_first$10),
+        .head_first$11(centre_buf$head_first$11),
+        .head_first$12(centre_buf$head_first$12),
+        .head_first$13(centre_buf$head_first$13),
+        .head_first$14(centre_buf$head_first$14),
+        .head_first$15(centre_buf$head_first$15),
+        .head_first$16(centre_buf$head_first$16),
+        .head_first$17(centre_buf$head_first$17),
+        .head_first$18(centre_buf$head_first$18),
+        .head_first$19(centre_buf$head_first$19),
+        .head_first$20(centre_buf$head_first$20),
         .take(centre_buf$take)
     );
     fcc_sort_net__serializer_k7_668cf05b serializer(
@@ -16147,6 +16598,27 @@ module fcc_sort_net_k7_668cf05b(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit
         .head_keep$18(serializer$head_keep$18),
         .head_keep$19(serializer$head_keep$19),
         .head_keep$20(serializer$head_keep$20),
+        .head_first$0(serializer$head_first$0),
+        .head_first$1(serializer$head_first$1),
+        .head_first$2(serializer$head_first$2),
+        .head_first$3(serializer$head_first$3),
+        .head_first$4(serializer$head_first$4),
+        .head_first$5(serializer$head_first$5),
+        .head_first$6(serializer$head_first$6),
+        .head_first$7(serializer$head_first$7),
+        .head_first$8(serializer$head_first$8),
+        .head_first$9(serializer$head_first$9),
+        .head_first$10(serializer$head_first$10),
+        .head_first$11(serializer$head_first$11),
+        .head_first$12(serializer$head_first$12),
+        .head_first$13(serializer$head_first$13),
+        .head_first$14(serializer$head_first$14),
+        .head_first$15(serializer$head_first$15),
+        .head_first$16(serializer$head_first$16),
+        .head_first$17(serializer$head_first$17),
+        .head_first$18(serializer$head_first$18),
+        .head_first$19(serializer$head_first$19),
+        .head_first$20(serializer$head_first$20),
         .take(serializer$take),
         .join_room(serializer$join_room),
         .join_push(serializer$join_push),
@@ -16253,88 +16725,130 @@ module fcc_sort_net_k7_668cf05b(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit
         serializer$head = centre_buf$head;
         centre_buf$rep$0 = filter$rec_rep$0;
         centre_buf$keep$0 = filter$rec_keep$0;
+        centre_buf$first$0 = filter$rec_first$0;
         serializer$head_rep$0 = centre_buf$head_rep$0;
         serializer$head_keep$0 = centre_buf$head_keep$0;
+        serializer$head_first$0 = centre_buf$head_first$0;
         centre_buf$rep$1 = filter$rec_rep$1;
         centre_buf$keep$1 = filter$rec_keep$1;
+        centre_buf$first$1 = filter$rec_first$1;
         serializer$head_rep$1 = centre_buf$head_rep$1;
         serializer$head_keep$1 = centre_buf$head_keep$1;
+        serializer$head_first$1 = centre_buf$head_first$1;
         centre_buf$rep$2 = filter$rec_rep$2;
         centre_buf$keep$2 = filter$rec_keep$2;
+        centre_buf$first$2 = filter$rec_first$2;
         serializer$head_rep$2 = centre_buf$head_rep$2;
         serializer$head_keep$2 = centre_buf$head_keep$2;
+        serializer$head_first$2 = centre_buf$head_first$2;
         centre_buf$rep$3 = filter$rec_rep$3;
         centre_buf$keep$3 = filter$rec_keep$3;
+        centre_buf$first$3 = filter$rec_first$3;
         serializer$head_rep$3 = centre_buf$head_rep$3;
         serializer$head_keep$3 = centre_buf$head_keep$3;
+        serializer$head_first$3 = centre_buf$head_first$3;
         centre_buf$rep$4 = filter$rec_rep$4;
         centre_buf$keep$4 = filter$rec_keep$4;
+        centre_buf$first$4 = filter$rec_first$4;
         serializer$head_rep$4 = centre_buf$head_rep$4;
         serializer$head_keep$4 = centre_buf$head_keep$4;
+        serializer$head_first$4 = centre_buf$head_first$4;
         centre_buf$rep$5 = filter$rec_rep$5;
         centre_buf$keep$5 = filter$rec_keep$5;
+        centre_buf$first$5 = filter$rec_first$5;
         serializer$head_rep$5 = centre_buf$head_rep$5;
         serializer$head_keep$5 = centre_buf$head_keep$5;
+        serializer$head_first$5 = centre_buf$head_first$5;
         centre_buf$rep$6 = filter$rec_rep$6;
         centre_buf$keep$6 = filter$rec_keep$6;
+        centre_buf$first$6 = filter$rec_first$6;
         serializer$head_rep$6 = centre_buf$head_rep$6;
         serializer$head_keep$6 = centre_buf$head_keep$6;
+        serializer$head_first$6 = centre_buf$head_first$6;
         centre_buf$rep$7 = filter$rec_rep$7;
         centre_buf$keep$7 = filter$rec_keep$7;
+        centre_buf$first$7 = filter$rec_first$7;
         serializer$head_rep$7 = centre_buf$head_rep$7;
         serializer$head_keep$7 = centre_buf$head_keep$7;
+        serializer$head_first$7 = centre_buf$head_first$7;
         centre_buf$rep$8 = filter$rec_rep$8;
         centre_buf$keep$8 = filter$rec_keep$8;
+        centre_buf$first$8 = filter$rec_first$8;
         serializer$head_rep$8 = centre_buf$head_rep$8;
         serializer$head_keep$8 = centre_buf$head_keep$8;
+        serializer$head_first$8 = centre_buf$head_first$8;
         centre_buf$rep$9 = filter$rec_rep$9;
         centre_buf$keep$9 = filter$rec_keep$9;
+        centre_buf$first$9 = filter$rec_first$9;
         serializer$head_rep$9 = centre_buf$head_rep$9;
         serializer$head_keep$9 = centre_buf$head_keep$9;
+        serializer$head_first$9 = centre_buf$head_first$9;
         centre_buf$rep$10 = filter$rec_rep$10;
         centre_buf$keep$10 = filter$rec_keep$10;
+        centre_buf$first$10 = filter$rec_first$10;
         serializer$head_rep$10 = centre_buf$head_rep$10;
         serializer$head_keep$10 = centre_buf$head_keep$10;
+        serializer$head_first$10 = centre_buf$head_first$10;
         centre_buf$rep$11 = filter$rec_rep$11;
         centre_buf$keep$11 = filter$rec_keep$11;
+        centre_buf$first$11 = filter$rec_first$11;
         serializer$head_rep$11 = centre_buf$head_rep$11;
         serializer$head_keep$11 = centre_buf$head_keep$11;
+        serializer$head_first$11 = centre_buf$head_first$11;
         centre_buf$rep$12 = filter$rec_rep$12;
         centre_buf$keep$12 = filter$rec_keep$12;
+        centre_buf$first$12 = filter$rec_first$12;
         serializer$head_rep$12 = centre_buf$head_rep$12;
         serializer$head_keep$12 = centre_buf$head_keep$12;
+        serializer$head_first$12 = centre_buf$head_first$12;
         centre_buf$rep$13 = filter$rec_rep$13;
         centre_buf$keep$13 = filter$rec_keep$13;
+        centre_buf$first$13 = filter$rec_first$13;
         serializer$head_rep$13 = centre_buf$head_rep$13;
         serializer$head_keep$13 = centre_buf$head_keep$13;
+        serializer$head_first$13 = centre_buf$head_first$13;
         centre_buf$rep$14 = filter$rec_rep$14;
         centre_buf$keep$14 = filter$rec_keep$14;
+        centre_buf$first$14 = filter$rec_first$14;
         serializer$head_rep$14 = centre_buf$head_rep$14;
         serializer$head_keep$14 = centre_buf$head_keep$14;
+        serializer$head_first$14 = centre_buf$head_first$14;
         centre_buf$rep$15 = filter$rec_rep$15;
         centre_buf$keep$15 = filter$rec_keep$15;
+        centre_buf$first$15 = filter$rec_first$15;
         serializer$head_rep$15 = centre_buf$head_rep$15;
         serializer$head_keep$15 = centre_buf$head_keep$15;
+        serializer$head_first$15 = centre_buf$head_first$15;
         centre_buf$rep$16 = filter$rec_rep$16;
         centre_buf$keep$16 = filter$rec_keep$16;
+        centre_buf$first$16 = filter$rec_first$16;
         serializer$head_rep$16 = centre_buf$head_rep$16;
         serializer$head_keep$16 = centre_buf$head_keep$16;
+        serializer$head_first$16 = centre_buf$head_first$16;
         centre_buf$rep$17 = filter$rec_rep$17;
         centre_buf$keep$17 = filter$rec_keep$17;
+        centre_buf$first$17 = filter$rec_first$17;
         serializer$head_rep$17 = centre_buf$head_rep$17;
         serializer$head_keep$17 = centre_buf$head_keep$17;
+        serializer$head_first$17 = centre_buf$head_first$17;
         centre_buf$rep$18 = filter$rec_rep$18;
         centre_buf$keep$18 = filter$rec_keep$18;
+        centre_buf$first$18 = filter$rec_first$18;
         serializer$head_rep$18 = centre_buf$head_rep$18;
         serializer$head_keep$18 = centre_buf$head_keep$18;
+        serializer$head_first$18 = centre_buf$head_first$18;
         centre_buf$rep$19 = filter$rec_rep$19;
         centre_buf$keep$19 = filter$rec_keep$19;
+        centre_buf$first$19 = filter$rec_first$19;
         serializer$head_rep$19 = centre_buf$head_rep$19;
         serializer$head_keep$19 = centre_buf$head_keep$19;
+        serializer$head_first$19 = centre_buf$head_first$19;
         centre_buf$rep$20 = filter$rec_rep$20;
         centre_buf$keep$20 = filter$rec_keep$20;
+        centre_buf$first$20 = filter$rec_first$20;
         serializer$head_rep$20 = centre_buf$head_rep$20;
         serializer$head_keep$20 = centre_buf$head_keep$20;
+        serializer$head_first$20 = centre_buf$head_first$20;
         centre_buf$take = serializer$take;
         take = serializer$take;
         last_done = serializer$last_done;
@@ -16354,7 +16868,7 @@ module fcc_sort_net_k7_668cf05b(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit
 endmodule // fcc_sort_net_k7_668cf05b
 
 
-module fcc_sort_net__centre_buf_k7_668cf05b(clk,rst,push,rec,rep$0,rep$1,rep$2,rep$3,rep$4,rep$5,rep$6,rep$7,rep$8,rep$9,rep$10,rep$11,rep$12,rep$13,rep$14,rep$15,rep$16,rep$17,rep$18,rep$19,rep$20,keep$0,keep$1,keep$2,keep$3,keep$4,keep$5,keep$6,keep$7,keep$8,keep$9,keep$10,keep$11,keep$12,keep$13,keep$14,keep$15,keep$16,keep$17,keep$18,keep$19,keep$20,head_valid,head,head_rep$0,head_rep$1,head_rep$2,head_rep$3,head_rep$4,head_rep$5,head_rep$6,head_rep$7,head_rep$8,head_rep$9,head_rep$10,head_rep$11,head_rep$12,head_rep$13,head_rep$14,head_rep$15,head_rep$16,head_rep$17,head_rep$18,head_rep$19,head_rep$20,head_keep$0,head_keep$1,head_keep$2,head_keep$3,head_keep$4,head_keep$5,head_keep$6,head_keep$7,head_keep$8,head_keep$9,head_keep$10,head_keep$11,head_keep$12,head_keep$13,head_keep$14,head_keep$15,head_keep$16,head_keep$17,head_keep$18,head_keep$19,head_keep$20,take);
+module fcc_sort_net__centre_buf_k7_668cf05b(clk,rst,push,rec,rep$0,rep$1,rep$2,rep$3,rep$4,rep$5,rep$6,rep$7,rep$8,rep$9,rep$10,rep$11,rep$12,rep$13,rep$14,rep$15,rep$16,rep$17,rep$18,rep$19,rep$20,keep$0,keep$1,keep$2,keep$3,keep$4,keep$5,keep$6,keep$7,keep$8,keep$9,keep$10,keep$11,keep$12,keep$13,keep$14,keep$15,keep$16,keep$17,keep$18,keep$19,keep$20,first$0,first$1,first$2,first$3,first$4,first$5,first$6,first$7,first$8,first$9,first$10,first$11,first$12,first$13,first$14,first$15,first$16,first$17,first$18,first$19,first$20,head_valid,head,head_rep$0,head_rep$1,head_rep$2,head_rep$3,head_rep$4,head_rep$5,head_rep$6,head_rep$7,head_rep$8,head_rep$9,head_rep$10,head_rep$11,head_rep$12,head_rep$13,head_rep$14,head_rep$15,head_rep$16,head_rep$17,head_rep$18,head_rep$19,head_rep$20,head_keep$0,head_keep$1,head_keep$2,head_keep$3,head_keep$4,head_keep$5,head_keep$6,head_keep$7,head_keep$8,head_keep$9,head_keep$10,head_keep$11,head_keep$12,head_keep$13,head_keep$14,head_keep$15,head_keep$16,head_keep$17,head_keep$18,head_keep$19,head_keep$20,head_first$0,head_first$1,head_first$2,head_first$3,head_first$4,head_first$5,head_first$6,head_first$7,head_first$8,head_first$9,head_first$10,head_first$11,head_first$12,head_first$13,head_first$14,head_first$15,head_first$16,head_first$17,head_first$18,head_first$19,head_first$20,take);
 
     // Module arguments
     input wire  clk;
@@ -16403,6 +16917,27 @@ module fcc_sort_net__centre_buf_k7_668cf05b(clk,rst,push,rec,rep$0,rep$1,rep$2,r
     input wire  keep$18;
     input wire  keep$19;
     input wire  keep$20;
+    input wire  first$0;
+    input wire  first$1;
+    input wire  first$2;
+    input wire  first$3;
+    input wire  first$4;
+    input wire  first$5;
+    input wire  first$6;
+    input wire  first$7;
+    input wire  first$8;
+    input wire  first$9;
+    input wire  first$10;
+    input wire  first$11;
+    input wire  first$12;
+    input wire  first$13;
+    input wire  first$14;
+    input wire  first$15;
+    input wire  first$16;
+    input wire  first$17;
+    input wire  first$18;
+    input wire  first$19;
+    input wire  first$20;
     output reg  head_valid;
     output reg  [49:0] head;
     output reg  [15:0] head_rep$0;
@@ -16447,6 +16982,27 @@ module fcc_sort_net__centre_buf_k7_668cf05b(clk,rst,push,rec,rep$0,rep$1,rep$2,r
     output reg  head_keep$18;
     output reg  head_keep$19;
     output reg  head_keep$20;
+    output reg  head_first$0;
+    output reg  head_first$1;
+    output reg  head_first$2;
+    output reg  head_first$3;
+    output reg  head_first$4;
+    output reg  head_first$5;
+    output reg  head_first$6;
+    output reg  head_first$7;
+    output reg  head_first$8;
+    output reg  head_first$9;
+    output reg  head_first$10;
+    output reg  head_first$11;
+    output reg  head_first$12;
+    output reg  head_first$13;
+    output reg  head_first$14;
+    output reg  head_first$15;
+    output reg  head_first$16;
+    output reg  head_first$17;
+    output reg  head_first$18;
+    output reg  head_first$19;
+    output reg  head_first$20;
     input wire  take;
 
     // Stub signals
@@ -16465,24 +17021,24 @@ module fcc_sort_net__centre_buf_k7_668cf05b(clk,rst,push,rec,rep$0,rep$1,rep$2,r
     reg  rows$0$clk;
     reg  rows$0$read_en;
     reg  [8:0] rows$0$read_addr;
-    wire  [186:0] rows$0$read_data;
+    wire  [197:0] rows$0$read_data;
     reg  rows$0$write_en;
     reg  [8:0] rows$0$write_addr;
-    reg  [186:0] rows$0$write_data;
+    reg  [197:0] rows$0$write_data;
     reg  rows$1$clk;
     reg  rows$1$read_en;
     reg  [8:0] rows$1$read_addr;
-    wire  [186:0] rows$1$read_data;
+    wire  [197:0] rows$1$read_data;
     reg  rows$1$write_en;
     reg  [8:0] rows$1$write_addr;
-    reg  [186:0] rows$1$write_data;
+    reg  [197:0] rows$1$write_data;
     reg  rows$2$clk;
     reg  rows$2$read_en;
     reg  [8:0] rows$2$read_addr;
-    wire  [186:0] rows$2$read_data;
+    wire  [197:0] rows$2$read_data;
     reg  rows$2$write_en;
     reg  [8:0] rows$2$write_addr;
-    reg  [186:0] rows$2$write_data;
+    reg  [197:0] rows$2$write_data;
     reg  [15:0] pack$v$0;
     reg  [15:0] pack$v$1;
     reg  [15:0] pack$v$2;
@@ -16525,12 +17081,33 @@ module fcc_sort_net__centre_buf_k7_668cf05b(clk,rst,push,rec,rep$0,rep$1,rep$2,r
     reg  pack$f$18;
     reg  pack$f$19;
     reg  pack$f$20;
-    wire  [186:0] pack$word$0;
-    wire  [186:0] pack$word$1;
-    wire  [186:0] pack$word$2;
-    reg  [186:0] unpack$word$0;
-    reg  [186:0] unpack$word$1;
-    reg  [186:0] unpack$word$2;
+    reg  pack$g$0;
+    reg  pack$g$1;
+    reg  pack$g$2;
+    reg  pack$g$3;
+    reg  pack$g$4;
+    reg  pack$g$5;
+    reg  pack$g$6;
+    reg  pack$g$7;
+    reg  pack$g$8;
+    reg  pack$g$9;
+    reg  pack$g$10;
+    reg  pack$g$11;
+    reg  pack$g$12;
+    reg  pack$g$13;
+    reg  pack$g$14;
+    reg  pack$g$15;
+    reg  pack$g$16;
+    reg  pack$g$17;
+    reg  pack$g$18;
+    reg  pack$g$19;
+    reg  pack$g$20;
+    wire  [197:0] pack$word$0;
+    wire  [197:0] pack$word$1;
+    wire  [197:0] pack$word$2;
+    reg  [197:0] unpack$word$0;
+    reg  [197:0] unpack$word$1;
+    reg  [197:0] unpack$word$2;
     wire  [15:0] unpack$v$0;
     wire  [15:0] unpack$v$1;
     wire  [15:0] unpack$v$2;
@@ -16573,6 +17150,27 @@ module fcc_sort_net__centre_buf_k7_668cf05b(clk,rst,push,rec,rep$0,rep$1,rep$2,r
     wire  unpack$f$18;
     wire  unpack$f$19;
     wire  unpack$f$20;
+    wire  unpack$g$0;
+    wire  unpack$g$1;
+    wire  unpack$g$2;
+    wire  unpack$g$3;
+    wire  unpack$g$4;
+    wire  unpack$g$5;
+    wire  unpack$g$6;
+    wire  unpack$g$7;
+    wire  unpack$g$8;
+    wire  unpack$g$9;
+    wire  unpack$g$10;
+    wire  unpack$g$11;
+    wire  unpack$g$12;
+    wire  unpack$g$13;
+    wire  unpack$g$14;
+    wire  unpack$g$15;
+    wire  unpack$g$16;
+    wire  unpack$g$17;
+    wire  unpack$g$18;
+    wire  unpack$g$19;
+    wire  unpack$g$20;
 
     // Sub module instances
     fcc_sort_net__centre_buf__records_k7_668cf05b records(
@@ -16659,6 +17257,27 @@ module fcc_sort_net__centre_buf_k7_668cf05b(clk,rst,push,rec,rep$0,rep$1,rep$2,r
         .f$18(pack$f$18),
         .f$19(pack$f$19),
         .f$20(pack$f$20),
+        .g$0(pack$g$0),
+        .g$1(pack$g$1),
+        .g$2(pack$g$2),
+        .g$3(pack$g$3),
+        .g$4(pack$g$4),
+        .g$5(pack$g$5),
+        .g$6(pack$g$6),
+        .g$7(pack$g$7),
+        .g$8(pack$g$8),
+        .g$9(pack$g$9),
+        .g$10(pack$g$10),
+        .g$11(pack$g$11),
+        .g$12(pack$g$12),
+        .g$13(pack$g$13),
+        .g$14(pack$g$14),
+        .g$15(pack$g$15),
+        .g$16(pack$g$16),
+        .g$17(pack$g$17),
+        .g$18(pack$g$18),
+        .g$19(pack$g$19),
+        .g$20(pack$g$20),
         .word$0(pack$word$0),
         .word$1(pack$word$1),
         .word$2(pack$word$2)
@@ -16708,7 +17327,28 @@ module fcc_sort_net__centre_buf_k7_668cf05b(clk,rst,push,rec,rep$0,rep$1,rep$2,r
         .f$17(unpack$f$17),
         .f$18(unpack$f$18),
         .f$19(unpack$f$19),
-        .f$20(unpack$f$20)
+        .f$20(unpack$f$20),
+        .g$0(unpack$g$0),
+        .g$1(unpack$g$1),
+        .g$2(unpack$g$2),
+        .g$3(unpack$g$3),
+        .g$4(unpack$g$4),
+        .g$5(unpack$g$5),
+        .g$6(unpack$g$6),
+        .g$7(unpack$g$7),
+        .g$8(unpack$g$8),
+        .g$9(unpack$g$9),
+        .g$10(unpack$g$10),
+        .g$11(unpack$g$11),
+        .g$12(unpack$g$12),
+        .g$13(unpack$g$13),
+        .g$14(unpack$g$14),
+        .g$15(unpack$g$15),
+        .g$16(unpack$g$16),
+        .g$17(unpack$g$17),
+        .g$18(unpack$g$18),
+        .g$19(unpack$g$19),
+        .g$20(unpack$g$20)
     );
 
     // Update code
@@ -16722,88 +17362,130 @@ module fcc_sort_net__centre_buf_k7_668cf05b(clk,rst,push,rec,rep$0,rep$1,rep$2,r
         head = records$dout;
         pack$v$0 = rep$0;
         pack$f$0 = keep$0;
+        pack$g$0 = first$0;
         head_rep$0 = unpack$v$0;
         head_keep$0 = unpack$f$0;
+        head_first$0 = unpack$g$0;
         pack$v$1 = rep$1;
         pack$f$1 = keep$1;
+        pack$g$1 = first$1;
         head_rep$1 = unpack$v$1;
         head_keep$1 = unpack$f$1;
+        head_first$1 = unpack$g$1;
         pack$v$2 = rep$2;
         pack$f$2 = keep$2;
+        pack$g$2 = first$2;
         head_rep$2 = unpack$v$2;
         head_keep$2 = unpack$f$2;
+        head_first$2 = unpack$g$2;
         pack$v$3 = rep$3;
         pack$f$3 = keep$3;
+        pack$g$3 = first$3;
         head_rep$3 = unpack$v$3;
         head_keep$3 = unpack$f$3;
+        head_first$3 = unpack$g$3;
         pack$v$4 = rep$4;
         pack$f$4 = keep$4;
+        pack$g$4 = first$4;
         head_rep$4 = unpack$v$4;
         head_keep$4 = unpack$f$4;
+        head_first$4 = unpack$g$4;
         pack$v$5 = rep$5;
         pack$f$5 = keep$5;
+        pack$g$5 = first$5;
         head_rep$5 = unpack$v$5;
         head_keep$5 = unpack$f$5;
+        head_first$5 = unpack$g$5;
         pack$v$6 = rep$6;
         pack$f$6 = keep$6;
+        pack$g$6 = first$6;
         head_rep$6 = unpack$v$6;
         head_keep$6 = unpack$f$6;
+        head_first$6 = unpack$g$6;
         pack$v$7 = rep$7;
         pack$f$7 = keep$7;
+        pack$g$7 = first$7;
         head_rep$7 = unpack$v$7;
         head_keep$7 = unpack$f$7;
+        head_first$7 = unpack$g$7;
         pack$v$8 = rep$8;
         pack$f$8 = keep$8;
+        pack$g$8 = first$8;
         head_rep$8 = unpack$v$8;
         head_keep$8 = unpack$f$8;
+        head_first$8 = unpack$g$8;
         pack$v$9 = rep$9;
         pack$f$9 = keep$9;
+        pack$g$9 = first$9;
         head_rep$9 = unpack$v$9;
         head_keep$9 = unpack$f$9;
+        head_first$9 = unpack$g$9;
         pack$v$10 = rep$10;
         pack$f$10 = keep$10;
+        pack$g$10 = first$10;
         head_rep$10 = unpack$v$10;
         head_keep$10 = unpack$f$10;
+        head_first$10 = unpack$g$10;
         pack$v$11 = rep$11;
         pack$f$11 = keep$11;
+        pack$g$11 = first$11;
         head_rep$11 = unpack$v$11;
         head_keep$11 = unpack$f$11;
+        head_first$11 = unpack$g$11;
         pack$v$12 = rep$12;
         pack$f$12 = keep$12;
+        pack$g$12 = first$12;
         head_rep$12 = unpack$v$12;
         head_keep$12 = unpack$f$12;
+        head_first$12 = unpack$g$12;
         pack$v$13 = rep$13;
         pack$f$13 = keep$13;
+        pack$g$13 = first$13;
         head_rep$13 = unpack$v$13;
         head_keep$13 = unpack$f$13;
+        head_first$13 = unpack$g$13;
         pack$v$14 = rep$14;
         pack$f$14 = keep$14;
+        pack$g$14 = first$14;
         head_rep$14 = unpack$v$14;
         head_keep$14 = unpack$f$14;
+        head_first$14 = unpack$g$14;
         pack$v$15 = rep$15;
         pack$f$15 = keep$15;
+        pack$g$15 = first$15;
         head_rep$15 = unpack$v$15;
         head_keep$15 = unpack$f$15;
+        head_first$15 = unpack$g$15;
         pack$v$16 = rep$16;
         pack$f$16 = keep$16;
+        pack$g$16 = first$16;
         head_rep$16 = unpack$v$16;
         head_keep$16 = unpack$f$16;
+        head_first$16 = unpack$g$16;
         pack$v$17 = rep$17;
         pack$f$17 = keep$17;
+        pack$g$17 = first$17;
         head_rep$17 = unpack$v$17;
         head_keep$17 = unpack$f$17;
+        head_first$17 = unpack$g$17;
         pack$v$18 = rep$18;
         pack$f$18 = keep$18;
+        pack$g$18 = first$18;
         head_rep$18 = unpack$v$18;
         head_keep$18 = unpack$f$18;
+        head_first$18 = unpack$g$18;
         pack$v$19 = rep$19;
         pack$f$19 = keep$19;
+        pack$g$19 = first$19;
         head_rep$19 = unpack$v$19;
         head_keep$19 = unpack$f$19;
+        head_first$19 = unpack$g$19;
         pack$v$20 = rep$20;
         pack$f$20 = keep$20;
+        pack$g$20 = first$20;
         head_rep$20 = unpack$v$20;
         head_keep$20 = unpack$f$20;
+        head_first$20 = unpack$g$20;
         rows$0$clk = clk;
         rows$0$write_en = records$ram_we;
         rows$0$write_addr = records$ram_waddr;
@@ -16830,7 +17512,7 @@ module fcc_sort_net__centre_buf_k7_668cf05b(clk,rst,push,rec,rep$0,rep$1,rep$2,r
 endmodule // fcc_sort_net__centre_buf_k7_668cf05b
 
 
-module fcc_sort_net__centre_buf__pack_k7_668cf05b(v$0,v$1,v$2,v$3,v$4,v$5,v$6,v$7,v$8,v$9,v$10,v$11,v$12,v$13,v$14,v$15,v$16,v$17,v$18,v$19,v$20,f$0,f$1,f$2,f$3,f$4,f$5,f$6,f$7,f$8,f$9,f$10,f$11,f$12,f$13,f$14,f$15,f$16,f$17,f$18,f$19,f$20,word$0,word$1,word$2);
+module fcc_sort_net__centre_buf__pack_k7_668cf05b(v$0,v$1,v$2,v$3,v$4,v$5,v$6,v$7,v$8,v$9,v$10,v$11,v$12,v$13,v$14,v$15,v$16,v$17,v$18,v$19,v$20,f$0,f$1,f$2,f$3,f$4,f$5,f$6,f$7,f$8,f$9,f$10,f$11,f$12,f$13,f$14,f$15,f$16,f$17,f$18,f$19,f$20,g$0,g$1,g$2,g$3,g$4,g$5,g$6,g$7,g$8,g$9,g$10,g$11,g$12,g$13,g$14,g$15,g$16,g$17,g$18,g$19,g$20,word$0,word$1,word$2);
 
     // Module arguments
     input wire  [15:0] v$0;
@@ -16875,15 +17557,36 @@ module fcc_sort_net__centre_buf__pack_k7_668cf05b(v$0,v$1,v$2,v$3,v$4,v$5,v$6,v$
     input wire  f$18;
     input wire  f$19;
     input wire  f$20;
-    output reg  [186:0] word$0;
-    output reg  [186:0] word$1;
-    output reg  [186:0] word$2;
+    input wire  g$0;
+    input wire  g$1;
+    input wire  g$2;
+    input wire  g$3;
+    input wire  g$4;
+    input wire  g$5;
+    input wire  g$6;
+    input wire  g$7;
+    input wire  g$8;
+    input wire  g$9;
+    input wire  g$10;
+    input wire  g$11;
+    input wire  g$12;
+    input wire  g$13;
+    input wire  g$14;
+    input wire  g$15;
+    input wire  g$16;
+    input wire  g$17;
+    input wire  g$18;
+    input wire  g$19;
+    input wire  g$20;
+    output reg  [197:0] word$0;
+    output reg  [197:0] word$1;
+    output reg  [197:0] word$2;
 
     // Update code (custom)
     always @(*) begin
-        word$0 = {68'd0, f$6, f$5, f$4, f$3, f$2, f$1, f$0, v$6, v$5, v$4, v$3, v$2, v$1, v$0};
-        word$1 = {68'd0, f$13, f$12, f$11, f$10, f$9, f$8, f$7, v$13, v$12, v$11, v$10, v$9, v$8, v$7};
-        word$2 = {68'd0, f$20, f$19, f$18, f$17, f$16, f$15, f$14, v$20, v$19, v$18, v$17, v$16, v$15, v$14};
+        word$0 = {72'd0, g$6, g$5, g$4, g$3, g$2, g$1, g$0, f$6, f$5, f$4, f$3, f$2, f$1, f$0, v$6, v$5, v$4, v$3, v$2, v$1, v$0};
+        word$1 = {72'd0, g$13, g$12, g$11, g$10, g$9, g$8, g$7, f$13, f$12, f$11, f$10, f$9, f$8, f$7, v$13, v$12, v$11, v$10, v$9, v$8, v$7};
+        word$2 = {72'd0, g$20, g$19, g$18, g$17, g$16, g$15, g$14, f$20, f$19, f$18, f$17, f$16, f$15, f$14, v$20, v$19, v$18, v$17, v$16, v$15, v$14};
     end
 endmodule // fcc_sort_net__centre_buf__pack_k7_668cf05b
 
@@ -17181,28 +17884,28 @@ module fcc_sort_net__centre_buf__rows__0_k7_668cf05b(clk,read_en,read_addr,read_
     input wire  clk;
     input wire  read_en;
     input wire  [8:0] read_addr;
-    output reg  [186:0] read_data;
+    output reg  [197:0] read_data;
     input wire  write_en;
     input wire  [8:0] write_addr;
-    input wire  [186:0] write_data;
+    input wire  [197:0] write_data;
 
     // Update code (custom)
     // Address bits above the depth and data bits above the stored width are
     // not used by this instance.
     /* verilator lint_off UNUSEDSIGNAL */
-    wire unused_ok = &{1'b0, write_data[186:119]};
+    wire unused_ok = &{1'b0, write_data[197:126]};
     /* verilator lint_on UNUSEDSIGNAL */
-    reg [118:0] mem [0:511];
+    reg [125:0] mem [0:511];
     // The block RAM's output register, then a fabric register.
-    reg [118:0] rd1;
+    reg [125:0] rd1;
     always @(posedge clk) begin
         if (read_en) begin
             rd1 <= mem[read_addr];
         end
         if (write_en) begin
-            mem[write_addr] <= write_data[118:0];
+            mem[write_addr] <= write_data[125:0];
         end
-        read_data <= {68'd0, rd1};
+        read_data <= {72'd0, rd1};
     end
 endmodule // fcc_sort_net__centre_buf__rows__0_k7_668cf05b
 
@@ -17213,28 +17916,28 @@ module fcc_sort_net__centre_buf__rows__1_k7_668cf05b(clk,read_en,read_addr,read_
     input wire  clk;
     input wire  read_en;
     input wire  [8:0] read_addr;
-    output reg  [186:0] read_data;
+    output reg  [197:0] read_data;
     input wire  write_en;
     input wire  [8:0] write_addr;
-    input wire  [186:0] write_data;
+    input wire  [197:0] write_data;
 
     // Update code (custom)
     // Address bits above the depth and data bits above the stored width are
     // not used by this instance.
     /* verilator lint_off UNUSEDSIGNAL */
-    wire unused_ok = &{1'b0, write_data[186:119]};
+    wire unused_ok = &{1'b0, write_data[197:126]};
     /* verilator lint_on UNUSEDSIGNAL */
-    reg [118:0] mem [0:511];
+    reg [125:0] mem [0:511];
     // The block RAM's output register, then a fabric register.
-    reg [118:0] rd1;
+    reg [125:0] rd1;
     always @(posedge clk) begin
         if (read_en) begin
             rd1 <= mem[read_addr];
         end
         if (write_en) begin
-            mem[write_addr] <= write_data[118:0];
+            mem[write_addr] <= write_data[125:0];
         end
-        read_data <= {68'd0, rd1};
+        read_data <= {72'd0, rd1};
     end
 endmodule // fcc_sort_net__centre_buf__rows__1_k7_668cf05b
 
@@ -17245,38 +17948,38 @@ module fcc_sort_net__centre_buf__rows__2_k7_668cf05b(clk,read_en,read_addr,read_
     input wire  clk;
     input wire  read_en;
     input wire  [8:0] read_addr;
-    output reg  [186:0] read_data;
+    output reg  [197:0] read_data;
     input wire  write_en;
     input wire  [8:0] write_addr;
-    input wire  [186:0] write_data;
+    input wire  [197:0] write_data;
 
     // Update code (custom)
     // Address bits above the depth and data bits above the stored width are
     // not used by this instance.
     /* verilator lint_off UNUSEDSIGNAL */
-    wire unused_ok = &{1'b0, write_data[186:119]};
+    wire unused_ok = &{1'b0, write_data[197:126]};
     /* verilator lint_on UNUSEDSIGNAL */
-    reg [118:0] mem [0:511];
+    reg [125:0] mem [0:511];
     // The block RAM's output register, then a fabric register.
-    reg [118:0] rd1;
+    reg [125:0] rd1;
     always @(posedge clk) begin
         if (read_en) begin
             rd1 <= mem[read_addr];
         end
         if (write_en) begin
-            mem[write_addr] <= write_data[118:0];
+            mem[write_addr] <= write_data[125:0];
         end
-        read_data <= {68'd0, rd1};
+        read_data <= {72'd0, rd1};
     end
 endmodule // fcc_sort_net__centre_buf__rows__2_k7_668cf05b
 
 
-module fcc_sort_net__centre_buf__unpack_k7_668cf05b(word$0,word$1,word$2,v$0,v$1,v$2,v$3,v$4,v$5,v$6,v$7,v$8,v$9,v$10,v$11,v$12,v$13,v$14,v$15,v$16,v$17,v$18,v$19,v$20,f$0,f$1,f$2,f$3,f$4,f$5,f$6,f$7,f$8,f$9,f$10,f$11,f$12,f$13,f$14,f$15,f$16,f$17,f$18,f$19,f$20);
+module fcc_sort_net__centre_buf__unpack_k7_668cf05b(word$0,word$1,word$2,v$0,v$1,v$2,v$3,v$4,v$5,v$6,v$7,v$8,v$9,v$10,v$11,v$12,v$13,v$14,v$15,v$16,v$17,v$18,v$19,v$20,f$0,f$1,f$2,f$3,f$4,f$5,f$6,f$7,f$8,f$9,f$10,f$11,f$12,f$13,f$14,f$15,f$16,f$17,f$18,f$19,f$20,g$0,g$1,g$2,g$3,g$4,g$5,g$6,g$7,g$8,g$9,g$10,g$11,g$12,g$13,g$14,g$15,g$16,g$17,g$18,g$19,g$20);
 
     // Module arguments
-    input wire  [186:0] word$0;
-    input wire  [186:0] word$1;
-    input wire  [186:0] word$2;
+    input wire  [197:0] word$0;
+    input wire  [197:0] word$1;
+    input wire  [197:0] word$2;
     output reg  [15:0] v$0;
     output reg  [15:0] v$1;
     output reg  [15:0] v$2;
@@ -17319,55 +18022,97 @@ module fcc_sort_net__centre_buf__unpack_k7_668cf05b(word$0,word$1,word$2,v$0,v$1
     output reg  f$18;
     output reg  f$19;
     output reg  f$20;
+    output reg  g$0;
+    output reg  g$1;
+    output reg  g$2;
+    output reg  g$3;
+    output reg  g$4;
+    output reg  g$5;
+    output reg  g$6;
+    output reg  g$7;
+    output reg  g$8;
+    output reg  g$9;
+    output reg  g$10;
+    output reg  g$11;
+    output reg  g$12;
+    output reg  g$13;
+    output reg  g$14;
+    output reg  g$15;
+    output reg  g$16;
+    output reg  g$17;
+    output reg  g$18;
+    output reg  g$19;
+    output reg  g$20;
 
     // Update code (custom)
-    // Bits above 17K are unused for this K.
+    // Bits above 18K are unused for this K.
     /* verilator lint_off UNUSEDSIGNAL */
-    wire unused_ok = &{1'b0, word$0[186:119], word$1[186:119], word$2[186:119]};
+    wire unused_ok = &{1'b0, word$0[197:126], word$1[197:126], word$2[197:126]};
     /* verilator lint_on UNUSEDSIGNAL */
     always @(*) begin
         v$0 = word$0[15:0];
         f$0 = word$0[112];
+        g$0 = word$0[119];
         v$1 = word$0[31:16];
         f$1 = word$0[113];
+        g$1 = word$0[120];
         v$2 = word$0[47:32];
         f$2 = word$0[114];
+        g$2 = word$0[121];
         v$3 = word$0[63:48];
         f$3 = word$0[115];
+        g$3 = word$0[122];
         v$4 = word$0[79:64];
         f$4 = word$0[116];
+        g$4 = word$0[123];
         v$5 = word$0[95:80];
         f$5 = word$0[117];
+        g$5 = word$0[124];
         v$6 = word$0[111:96];
         f$6 = word$0[118];
+        g$6 = word$0[125];
         v$7 = word$1[15:0];
         f$7 = word$1[112];
+        g$7 = word$1[119];
         v$8 = word$1[31:16];
         f$8 = word$1[113];
+        g$8 = word$1[120];
         v$9 = word$1[47:32];
         f$9 = word$1[114];
+        g$9 = word$1[121];
         v$10 = word$1[63:48];
         f$10 = word$1[115];
+        g$10 = word$1[122];
         v$11 = word$1[79:64];
         f$11 = word$1[116];
+        g$11 = word$1[123];
         v$12 = word$1[95:80];
         f$12 = word$1[117];
+        g$12 = word$1[124];
         v$13 = word$1[111:96];
         f$13 = word$1[118];
+        g$13 = word$1[125];
         v$14 = word$2[15:0];
         f$14 = word$2[112];
+        g$14 = word$2[119];
         v$15 = word$2[31:16];
         f$15 = word$2[113];
+        g$15 = word$2[120];
         v$16 = word$2[47:32];
         f$16 = word$2[114];
+        g$16 = word$2[121];
         v$17 = word$2[63:48];
         f$17 = word$2[115];
+        g$17 = word$2[122];
         v$18 = word$2[79:64];
         f$18 = word$2[116];
+        g$18 = word$2[123];
         v$19 = word$2[95:80];
         f$19 = word$2[117];
+        g$19 = word$2[124];
         v$20 = word$2[111:96];
         f$20 = word$2[118];
+        g$20 = word$2[125];
     end
 endmodule // fcc_sort_net__centre_buf__unpack_k7_668cf05b
 
@@ -17393,7 +18138,7 @@ module fcc_sort_net__centre_buf_rst_k7_668cf05b(clock,d,q);
 endmodule // fcc_sort_net__centre_buf_rst_k7_668cf05b
 
 
-module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit$6,hit$7,hit$8,hit$9,hit$10,hit$11,hit$12,hit$13,hit$14,hit$15,hit$16,hit$17,hit$18,hit$19,hit$20,rep$0,rep$1,rep$2,rep$3,rep$4,rep$5,rep$6,rep$7,rep$8,rep$9,rep$10,rep$11,rep$12,rep$13,rep$14,rep$15,rep$16,rep$17,rep$18,rep$19,rep$20,rep_we,rep_waddr,rep_wdata,rec_push,rec,rec_rep$0,rec_rep$1,rec_rep$2,rec_rep$3,rec_rep$4,rec_rep$5,rec_rep$6,rec_rep$7,rec_rep$8,rec_rep$9,rec_rep$10,rec_rep$11,rec_rep$12,rec_rep$13,rec_rep$14,rec_rep$15,rec_rep$16,rec_rep$17,rec_rep$18,rec_rep$19,rec_rep$20,rec_keep$0,rec_keep$1,rec_keep$2,rec_keep$3,rec_keep$4,rec_keep$5,rec_keep$6,rec_keep$7,rec_keep$8,rec_keep$9,rec_keep$10,rec_keep$11,rec_keep$12,rec_keep$13,rec_keep$14,rec_keep$15,rec_keep$16,rec_keep$17,rec_keep$18,rec_keep$19,rec_keep$20,credit_drop);
+module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit$6,hit$7,hit$8,hit$9,hit$10,hit$11,hit$12,hit$13,hit$14,hit$15,hit$16,hit$17,hit$18,hit$19,hit$20,rep$0,rep$1,rep$2,rep$3,rep$4,rep$5,rep$6,rep$7,rep$8,rep$9,rep$10,rep$11,rep$12,rep$13,rep$14,rep$15,rep$16,rep$17,rep$18,rep$19,rep$20,rep_we,rep_waddr,rep_wdata,rec_push,rec,rec_rep$0,rec_rep$1,rec_rep$2,rec_rep$3,rec_rep$4,rec_rep$5,rec_rep$6,rec_rep$7,rec_rep$8,rec_rep$9,rec_rep$10,rec_rep$11,rec_rep$12,rec_rep$13,rec_rep$14,rec_rep$15,rec_rep$16,rec_rep$17,rec_rep$18,rec_rep$19,rec_rep$20,rec_keep$0,rec_keep$1,rec_keep$2,rec_keep$3,rec_keep$4,rec_keep$5,rec_keep$6,rec_keep$7,rec_keep$8,rec_keep$9,rec_keep$10,rec_keep$11,rec_keep$12,rec_keep$13,rec_keep$14,rec_keep$15,rec_keep$16,rec_keep$17,rec_keep$18,rec_keep$19,rec_keep$20,rec_first$0,rec_first$1,rec_first$2,rec_first$3,rec_first$4,rec_first$5,rec_first$6,rec_first$7,rec_first$8,rec_first$9,rec_first$10,rec_first$11,rec_first$12,rec_first$13,rec_first$14,rec_first$15,rec_first$16,rec_first$17,rec_first$18,rec_first$19,rec_first$20,credit_drop);
 
     // Module arguments
     input wire  clk;
@@ -17488,6 +18233,27 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
     output reg  rec_keep$18;
     output reg  rec_keep$19;
     output reg  rec_keep$20;
+    output reg  rec_first$0;
+    output reg  rec_first$1;
+    output reg  rec_first$2;
+    output reg  rec_first$3;
+    output reg  rec_first$4;
+    output reg  rec_first$5;
+    output reg  rec_first$6;
+    output reg  rec_first$7;
+    output reg  rec_first$8;
+    output reg  rec_first$9;
+    output reg  rec_first$10;
+    output reg  rec_first$11;
+    output reg  rec_first$12;
+    output reg  rec_first$13;
+    output reg  rec_first$14;
+    output reg  rec_first$15;
+    output reg  rec_first$16;
+    output reg  rec_first$17;
+    output reg  rec_first$18;
+    output reg  rec_first$19;
+    output reg  rec_first$20;
     output reg  credit_drop;
 
     // Constant declarations
@@ -18038,28 +18804,88 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
     reg  keep$20$d;
     wire  keep$20$q;
     reg  keep$20$clock;
+    reg  keep_group_or$x$0;
+    reg  keep_group_or$x$1;
+    reg  keep_group_or$x$2;
+    reg  keep_group_or$x$3;
+    reg  keep_group_or$x$4;
+    reg  keep_group_or$x$5;
+    reg  keep_group_or$x$6;
+    reg  keep_group_or$x$7;
+    reg  keep_group_or$x$8;
+    reg  keep_group_or$x$9;
+    reg  keep_group_or$x$10;
+    reg  keep_group_or$x$11;
+    reg  keep_group_or$x$12;
+    reg  keep_group_or$x$13;
+    reg  keep_group_or$x$14;
+    reg  keep_group_or$x$15;
+    reg  keep_group_or$x$16;
+    reg  keep_group_or$x$17;
+    reg  keep_group_or$x$18;
+    reg  keep_group_or$x$19;
+    reg  keep_group_or$x$20;
+    wire  keep_group_or$any$0;
+    wire  keep_group_or$any$1;
+    wire  keep_group_or$any$2;
+    reg  keep_group$0$d;
+    wire  keep_group$0$q;
+    reg  keep_group$0$clock;
+    reg  keep_group$1$d;
+    wire  keep_group$1$q;
+    reg  keep_group$1$clock;
+    reg  keep_group$2$d;
+    wire  keep_group$2$q;
+    reg  keep_group$2$clock;
     reg  keep_any$x$0;
     reg  keep_any$x$1;
     reg  keep_any$x$2;
-    reg  keep_any$x$3;
-    reg  keep_any$x$4;
-    reg  keep_any$x$5;
-    reg  keep_any$x$6;
-    reg  keep_any$x$7;
-    reg  keep_any$x$8;
-    reg  keep_any$x$9;
-    reg  keep_any$x$10;
-    reg  keep_any$x$11;
-    reg  keep_any$x$12;
-    reg  keep_any$x$13;
-    reg  keep_any$x$14;
-    reg  keep_any$x$15;
-    reg  keep_any$x$16;
-    reg  keep_any$x$17;
-    reg  keep_any$x$18;
-    reg  keep_any$x$19;
-    reg  keep_any$x$20;
     wire  keep_any$any;
+    reg  keep_first$x$0;
+    reg  keep_first$x$1;
+    reg  keep_first$x$2;
+    reg  keep_first$x$3;
+    reg  keep_first$x$4;
+    reg  keep_first$x$5;
+    reg  keep_first$x$6;
+    reg  keep_first$x$7;
+    reg  keep_first$x$8;
+    reg  keep_first$x$9;
+    reg  keep_first$x$10;
+    reg  keep_first$x$11;
+    reg  keep_first$x$12;
+    reg  keep_first$x$13;
+    reg  keep_first$x$14;
+    reg  keep_first$x$15;
+    reg  keep_first$x$16;
+    reg  keep_first$x$17;
+    reg  keep_first$x$18;
+    reg  keep_first$x$19;
+    reg  keep_first$x$20;
+    reg  keep_first$gany$0;
+    reg  keep_first$gany$1;
+    reg  keep_first$gany$2;
+    wire  keep_first$first$0;
+    wire  keep_first$first$1;
+    wire  keep_first$first$2;
+    wire  keep_first$first$3;
+    wire  keep_first$first$4;
+    wire  keep_first$first$5;
+    wire  keep_first$first$6;
+    wire  keep_first$first$7;
+    wire  keep_first$first$8;
+    wire  keep_first$first$9;
+    wire  keep_first$first$10;
+    wire  keep_first$first$11;
+    wire  keep_first$first$12;
+    wire  keep_first$first$13;
+    wire  keep_first$first$14;
+    wire  keep_first$first$15;
+    wire  keep_first$first$16;
+    wire  keep_first$first$17;
+    wire  keep_first$first$18;
+    wire  keep_first$first$19;
+    wire  keep_first$first$20;
     reg  keep_sm3$0$d;
     wire  keep_sm3$0$q;
     reg  keep_sm3$0$clock;
@@ -18123,6 +18949,69 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
     reg  keep_sm3$20$d;
     wire  keep_sm3$20$q;
     reg  keep_sm3$20$clock;
+    reg  first_sm3$0$d;
+    wire  first_sm3$0$q;
+    reg  first_sm3$0$clock;
+    reg  first_sm3$1$d;
+    wire  first_sm3$1$q;
+    reg  first_sm3$1$clock;
+    reg  first_sm3$2$d;
+    wire  first_sm3$2$q;
+    reg  first_sm3$2$clock;
+    reg  first_sm3$3$d;
+    wire  first_sm3$3$q;
+    reg  first_sm3$3$clock;
+    reg  first_sm3$4$d;
+    wire  first_sm3$4$q;
+    reg  first_sm3$4$clock;
+    reg  first_sm3$5$d;
+    wire  first_sm3$5$q;
+    reg  first_sm3$5$clock;
+    reg  first_sm3$6$d;
+    wire  first_sm3$6$q;
+    reg  first_sm3$6$clock;
+    reg  first_sm3$7$d;
+    wire  first_sm3$7$q;
+    reg  first_sm3$7$clock;
+    reg  first_sm3$8$d;
+    wire  first_sm3$8$q;
+    reg  first_sm3$8$clock;
+    reg  first_sm3$9$d;
+    wire  first_sm3$9$q;
+    reg  first_sm3$9$clock;
+    reg  first_sm3$10$d;
+    wire  first_sm3$10$q;
+    reg  first_sm3$10$clock;
+    reg  first_sm3$11$d;
+    wire  first_sm3$11$q;
+    reg  first_sm3$11$clock;
+    reg  first_sm3$12$d;
+    wire  first_sm3$12$q;
+    reg  first_sm3$12$clock;
+    reg  first_sm3$13$d;
+    wire  first_sm3$13$q;
+    reg  first_sm3$13$clock;
+    reg  first_sm3$14$d;
+    wire  first_sm3$14$q;
+    reg  first_sm3$14$clock;
+    reg  first_sm3$15$d;
+    wire  first_sm3$15$q;
+    reg  first_sm3$15$clock;
+    reg  first_sm3$16$d;
+    wire  first_sm3$16$q;
+    reg  first_sm3$16$clock;
+    reg  first_sm3$17$d;
+    wire  first_sm3$17$q;
+    reg  first_sm3$17$clock;
+    reg  first_sm3$18$d;
+    wire  first_sm3$18$q;
+    reg  first_sm3$18$clock;
+    reg  first_sm3$19$d;
+    wire  first_sm3$19$q;
+    reg  first_sm3$19$clock;
+    reg  first_sm3$20$d;
+    wire  first_sm3$20$q;
+    reg  first_sm3$20$clock;
     reg  rec_push_q$d;
     wire  rec_push_q$q;
     reg  rec_push_q$clock;
@@ -18165,6 +19054,27 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
     reg  [31:0] ring_s0;
     reg  [15:0] run_rep_before;
     reg  [15:0] run_rep_after;
+    reg  keep_next$0;
+    reg  keep_next$1;
+    reg  keep_next$2;
+    reg  keep_next$3;
+    reg  keep_next$4;
+    reg  keep_next$5;
+    reg  keep_next$6;
+    reg  keep_next$7;
+    reg  keep_next$8;
+    reg  keep_next$9;
+    reg  keep_next$10;
+    reg  keep_next$11;
+    reg  keep_next$12;
+    reg  keep_next$13;
+    reg  keep_next$14;
+    reg  keep_next$15;
+    reg  keep_next$16;
+    reg  keep_next$17;
+    reg  keep_next$18;
+    reg  keep_next$19;
+    reg  keep_next$20;
     reg  need_rec;
 
     // Sub module instances
@@ -18890,29 +19800,99 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
         .q(keep$20$q),
         .clock(keep$20$clock)
     );
+    fcc_sort_net__filter__keep_group_or_k7_668cf05b keep_group_or(
+        .x$0(keep_group_or$x$0),
+        .x$1(keep_group_or$x$1),
+        .x$2(keep_group_or$x$2),
+        .x$3(keep_group_or$x$3),
+        .x$4(keep_group_or$x$4),
+        .x$5(keep_group_or$x$5),
+        .x$6(keep_group_or$x$6),
+        .x$7(keep_group_or$x$7),
+        .x$8(keep_group_or$x$8),
+        .x$9(keep_group_or$x$9),
+        .x$10(keep_group_or$x$10),
+        .x$11(keep_group_or$x$11),
+        .x$12(keep_group_or$x$12),
+        .x$13(keep_group_or$x$13),
+        .x$14(keep_group_or$x$14),
+        .x$15(keep_group_or$x$15),
+        .x$16(keep_group_or$x$16),
+        .x$17(keep_group_or$x$17),
+        .x$18(keep_group_or$x$18),
+        .x$19(keep_group_or$x$19),
+        .x$20(keep_group_or$x$20),
+        .any$0(keep_group_or$any$0),
+        .any$1(keep_group_or$any$1),
+        .any$2(keep_group_or$any$2)
+    );
+    fcc_sort_net__filter__keep_group__0_k7_668cf05b keep_group$0(
+        .d(keep_group$0$d),
+        .q(keep_group$0$q),
+        .clock(keep_group$0$clock)
+    );
+    fcc_sort_net__filter__keep_group__1_k7_668cf05b keep_group$1(
+        .d(keep_group$1$d),
+        .q(keep_group$1$q),
+        .clock(keep_group$1$clock)
+    );
+    fcc_sort_net__filter__keep_group__2_k7_668cf05b keep_group$2(
+        .d(keep_group$2$d),
+        .q(keep_group$2$q),
+        .clock(keep_group$2$clock)
+    );
     fcc_sort_net__filter__keep_any_k7_668cf05b keep_any(
         .x$0(keep_any$x$0),
         .x$1(keep_any$x$1),
         .x$2(keep_any$x$2),
-        .x$3(keep_any$x$3),
-        .x$4(keep_any$x$4),
-        .x$5(keep_any$x$5),
-        .x$6(keep_any$x$6),
-        .x$7(keep_any$x$7),
-        .x$8(keep_any$x$8),
-        .x$9(keep_any$x$9),
-        .x$10(keep_any$x$10),
-        .x$11(keep_any$x$11),
-        .x$12(keep_any$x$12),
-        .x$13(keep_any$x$13),
-        .x$14(keep_any$x$14),
-        .x$15(keep_any$x$15),
-        .x$16(keep_any$x$16),
-        .x$17(keep_any$x$17),
-        .x$18(keep_any$x$18),
-        .x$19(keep_any$x$19),
-        .x$20(keep_any$x$20),
         .any(keep_any$any)
+    );
+    fcc_sort_net__filter__keep_first_k7_668cf05b keep_first(
+        .x$0(keep_first$x$0),
+        .x$1(keep_first$x$1),
+        .x$2(keep_first$x$2),
+        .x$3(keep_first$x$3),
+        .x$4(keep_first$x$4),
+        .x$5(keep_first$x$5),
+        .x$6(keep_first$x$6),
+        .x$7(keep_first$x$7),
+        .x$8(keep_first$x$8),
+        .x$9(keep_first$x$9),
+        .x$10(keep_first$x$10),
+        .x$11(keep_first$x$11),
+        .x$12(keep_first$x$12),
+        .x$13(keep_first$x$13),
+        .x$14(keep_first$x$14),
+        .x$15(keep_first$x$15),
+        .x$16(keep_first$x$16),
+        .x$17(keep_first$x$17),
+        .x$18(keep_first$x$18),
+        .x$19(keep_first$x$19),
+        .x$20(keep_first$x$20),
+        .gany$0(keep_first$gany$0),
+        .gany$1(keep_first$gany$1),
+        .gany$2(keep_first$gany$2),
+        .first$0(keep_first$first$0),
+        .first$1(keep_first$first$1),
+        .first$2(keep_first$first$2),
+        .first$3(keep_first$first$3),
+        .first$4(keep_first$first$4),
+        .first$5(keep_first$first$5),
+        .first$6(keep_first$first$6),
+        .first$7(keep_first$first$7),
+        .first$8(keep_first$first$8),
+        .first$9(keep_first$first$9),
+        .first$10(keep_first$first$10),
+        .first$11(keep_first$first$11),
+        .first$12(keep_first$first$12),
+        .first$13(keep_first$first$13),
+        .first$14(keep_first$first$14),
+        .first$15(keep_first$first$15),
+        .first$16(keep_first$first$16),
+        .first$17(keep_first$first$17),
+        .first$18(keep_first$first$18),
+        .first$19(keep_first$first$19),
+        .first$20(keep_first$first$20)
     );
     fcc_sort_net__filter__keep_sm3__0_k7_668cf05b keep_sm3$0(
         .d(keep_sm3$0$d),
@@ -19018,6 +19998,111 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
         .d(keep_sm3$20$d),
         .q(keep_sm3$20$q),
         .clock(keep_sm3$20$clock)
+    );
+    fcc_sort_net__filter__first_sm3__0_k7_668cf05b first_sm3$0(
+        .d(first_sm3$0$d),
+        .q(first_sm3$0$q),
+        .clock(first_sm3$0$clock)
+    );
+    fcc_sort_net__filter__first_sm3__1_k7_668cf05b first_sm3$1(
+        .d(first_sm3$1$d),
+        .q(first_sm3$1$q),
+        .clock(first_sm3$1$clock)
+    );
+    fcc_sort_net__filter__first_sm3__2_k7_668cf05b first_sm3$2(
+        .d(first_sm3$2$d),
+        .q(first_sm3$2$q),
+        .clock(first_sm3$2$clock)
+    );
+    fcc_sort_net__filter__first_sm3__3_k7_668cf05b first_sm3$3(
+        .d(first_sm3$3$d),
+        .q(first_sm3$3$q),
+        .clock(first_sm3$3$clock)
+    );
+    fcc_sort_net__filter__first_sm3__4_k7_668cf05b first_sm3$4(
+        .d(first_sm3$4$d),
+        .q(first_sm3$4$q),
+        .clock(first_sm3$4$clock)
+    );
+    fcc_sort_net__filter__first_sm3__5_k7_668cf05b first_sm3$5(
+        .d(first_sm3$5$d),
+        .q(first_sm3$5$q),
+        .clock(first_sm3$5$clock)
+    );
+    fcc_sort_net__filter__first_sm3__6_k7_668cf05b first_sm3$6(
+        .d(first_sm3$6$d),
+        .q(first_sm3$6$q),
+        .clock(first_sm3$6$clock)
+    );
+    fcc_sort_net__filter__first_sm3__7_k7_668cf05b first_sm3$7(
+        .d(first_sm3$7$d),
+        .q(first_sm3$7$q),
+        .clock(first_sm3$7$clock)
+    );
+    fcc_sort_net__filter__first_sm3__8_k7_668cf05b first_sm3$8(
+        .d(first_sm3$8$d),
+        .q(first_sm3$8$q),
+        .clock(first_sm3$8$clock)
+    );
+    fcc_sort_net__filter__first_sm3__9_k7_668cf05b first_sm3$9(
+        .d(first_sm3$9$d),
+        .q(first_sm3$9$q),
+        .clock(first_sm3$9$clock)
+    );
+    fcc_sort_net__filter__first_sm3__10_k7_668cf05b first_sm3$10(
+        .d(first_sm3$10$d),
+        .q(first_sm3$10$q),
+        .clock(first_sm3$10$clock)
+    );
+    fcc_sort_net__filter__first_sm3__11_k7_668cf05b first_sm3$11(
+        .d(first_sm3$11$d),
+        .q(first_sm3$11$q),
+        .clock(first_sm3$11$clock)
+    );
+    fcc_sort_net__filter__first_sm3__12_k7_668cf05b first_sm3$12(
+        .d(first_sm3$12$d),
+        .q(first_sm3$12$q),
+        .clock(first_sm3$12$clock)
+    );
+    fcc_sort_net__filter__first_sm3__13_k7_668cf05b first_sm3$13(
+        .d(first_sm3$13$d),
+        .q(first_sm3$13$q),
+        .clock(first_sm3$13$clock)
+    );
+    fcc_sort_net__filter__first_sm3__14_k7_668cf05b first_sm3$14(
+        .d(first_sm3$14$d),
+        .q(first_sm3$14$q),
+        .clock(first_sm3$14$clock)
+    );
+    fcc_sort_net__filter__first_sm3__15_k7_668cf05b first_sm3$15(
+        .d(first_sm3$15$d),
+        .q(first_sm3$15$q),
+        .clock(first_sm3$15$clock)
+    );
+    fcc_sort_net__filter__first_sm3__16_k7_668cf05b first_sm3$16(
+        .d(first_sm3$16$d),
+        .q(first_sm3$16$q),
+        .clock(first_sm3$16$clock)
+    );
+    fcc_sort_net__filter__first_sm3__17_k7_668cf05b first_sm3$17(
+        .d(first_sm3$17$d),
+        .q(first_sm3$17$q),
+        .clock(first_sm3$17$clock)
+    );
+    fcc_sort_net__filter__first_sm3__18_k7_668cf05b first_sm3$18(
+        .d(first_sm3$18$d),
+        .q(first_sm3$18$q),
+        .clock(first_sm3$18$clock)
+    );
+    fcc_sort_net__filter__first_sm3__19_k7_668cf05b first_sm3$19(
+        .d(first_sm3$19$d),
+        .q(first_sm3$19$q),
+        .clock(first_sm3$19$clock)
+    );
+    fcc_sort_net__filter__first_sm3__20_k7_668cf05b first_sm3$20(
+        .d(first_sm3$20$d),
+        .q(first_sm3$20$q),
+        .clock(first_sm3$20$clock)
     );
     fcc_sort_net__filter__rec_push_q_k7_668cf05b rec_push_q(
         .d(rec_push_q$d),
@@ -19150,86 +20235,107 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
         is_run_rep$0$clock = clk;
         keep$0$clock = clk;
         keep_sm3$0$clock = clk;
+        first_sm3$0$clock = clk;
         later_min$1$clock = clk;
         is_run_rep$1$clock = clk;
         keep$1$clock = clk;
         keep_sm3$1$clock = clk;
+        first_sm3$1$clock = clk;
         later_min$2$clock = clk;
         is_run_rep$2$clock = clk;
         keep$2$clock = clk;
         keep_sm3$2$clock = clk;
+        first_sm3$2$clock = clk;
         later_min$3$clock = clk;
         is_run_rep$3$clock = clk;
         keep$3$clock = clk;
         keep_sm3$3$clock = clk;
+        first_sm3$3$clock = clk;
         later_min$4$clock = clk;
         is_run_rep$4$clock = clk;
         keep$4$clock = clk;
         keep_sm3$4$clock = clk;
+        first_sm3$4$clock = clk;
         later_min$5$clock = clk;
         is_run_rep$5$clock = clk;
         keep$5$clock = clk;
         keep_sm3$5$clock = clk;
+        first_sm3$5$clock = clk;
         later_min$6$clock = clk;
         is_run_rep$6$clock = clk;
         keep$6$clock = clk;
         keep_sm3$6$clock = clk;
+        first_sm3$6$clock = clk;
         later_min$7$clock = clk;
         is_run_rep$7$clock = clk;
         keep$7$clock = clk;
         keep_sm3$7$clock = clk;
+        first_sm3$7$clock = clk;
         later_min$8$clock = clk;
         is_run_rep$8$clock = clk;
         keep$8$clock = clk;
         keep_sm3$8$clock = clk;
+        first_sm3$8$clock = clk;
         later_min$9$clock = clk;
         is_run_rep$9$clock = clk;
         keep$9$clock = clk;
         keep_sm3$9$clock = clk;
+        first_sm3$9$clock = clk;
         later_min$10$clock = clk;
         is_run_rep$10$clock = clk;
         keep$10$clock = clk;
         keep_sm3$10$clock = clk;
+        first_sm3$10$clock = clk;
         later_min$11$clock = clk;
         is_run_rep$11$clock = clk;
         keep$11$clock = clk;
         keep_sm3$11$clock = clk;
+        first_sm3$11$clock = clk;
         later_min$12$clock = clk;
         is_run_rep$12$clock = clk;
         keep$12$clock = clk;
         keep_sm3$12$clock = clk;
+        first_sm3$12$clock = clk;
         later_min$13$clock = clk;
         is_run_rep$13$clock = clk;
         keep$13$clock = clk;
         keep_sm3$13$clock = clk;
+        first_sm3$13$clock = clk;
         later_min$14$clock = clk;
         is_run_rep$14$clock = clk;
         keep$14$clock = clk;
         keep_sm3$14$clock = clk;
+        first_sm3$14$clock = clk;
         later_min$15$clock = clk;
         is_run_rep$15$clock = clk;
         keep$15$clock = clk;
         keep_sm3$15$clock = clk;
+        first_sm3$15$clock = clk;
         later_min$16$clock = clk;
         is_run_rep$16$clock = clk;
         keep$16$clock = clk;
         keep_sm3$16$clock = clk;
+        first_sm3$16$clock = clk;
         later_min$17$clock = clk;
         is_run_rep$17$clock = clk;
         keep$17$clock = clk;
         keep_sm3$17$clock = clk;
+        first_sm3$17$clock = clk;
         later_min$18$clock = clk;
         is_run_rep$18$clock = clk;
         keep$18$clock = clk;
         keep_sm3$18$clock = clk;
+        first_sm3$18$clock = clk;
         later_min$19$clock = clk;
         is_run_rep$19$clock = clk;
         keep$19$clock = clk;
         keep_sm3$19$clock = clk;
+        first_sm3$19$clock = clk;
         later_min$20$clock = clk;
         is_run_rep$20$clock = clk;
         keep$20$clock = clk;
         keep_sm3$20$clock = clk;
+        first_sm3$20$clock = clk;
         min_tree$clk = clk;
         known_mask$clk = clk;
         match_delay$clk = clk;
@@ -19437,70 +20543,145 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
         rep_we = rep_write_en$q;
         rep_waddr = rep_write_col$q;
         rep_wdata = rep_write_value$q;
-        keep$0$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$0 & ~match_delay$adj_sm1$0 & ~known_mask$known_late$0 & ~is_run_rep$0$q & ~later_min$0$q;
-        keep$1$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$1 & ~match_delay$adj_sm1$1 & ~known_mask$known_late$1 & ~is_run_rep$1$q & ~later_min$1$q;
-        keep$2$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$2 & ~match_delay$adj_sm1$2 & ~known_mask$known_late$2 & ~is_run_rep$2$q & ~later_min$2$q;
-        keep$3$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$3 & ~match_delay$adj_sm1$3 & ~known_mask$known_late$3 & ~is_run_rep$3$q & ~later_min$3$q;
-        keep$4$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$4 & ~match_delay$adj_sm1$4 & ~known_mask$known_late$4 & ~is_run_rep$4$q & ~later_min$4$q;
-        keep$5$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$5 & ~match_delay$adj_sm1$5 & ~known_mask$known_late$5 & ~is_run_rep$5$q & ~later_min$5$q;
-        keep$6$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$6 & ~match_delay$adj_sm1$6 & ~known_mask$known_late$6 & ~is_run_rep$6$q & ~later_min$6$q;
-        keep$7$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$7 & ~match_delay$adj_sm1$7 & ~known_mask$known_late$7 & ~is_run_rep$7$q & ~later_min$7$q;
-        keep$8$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$8 & ~match_delay$adj_sm1$8 & ~known_mask$known_late$8 & ~is_run_rep$8$q & ~later_min$8$q;
-        keep$9$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$9 & ~match_delay$adj_sm1$9 & ~known_mask$known_late$9 & ~is_run_rep$9$q & ~later_min$9$q;
-        keep$10$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$10 & ~match_delay$adj_sm1$10 & ~known_mask$known_late$10 & ~is_run_rep$10$q & ~later_min$10$q;
-        keep$11$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$11 & ~match_delay$adj_sm1$11 & ~known_mask$known_late$11 & ~is_run_rep$11$q & ~later_min$11$q;
-        keep$12$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$12 & ~match_delay$adj_sm1$12 & ~known_mask$known_late$12 & ~is_run_rep$12$q & ~later_min$12$q;
-        keep$13$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$13 & ~match_delay$adj_sm1$13 & ~known_mask$known_late$13 & ~is_run_rep$13$q & ~later_min$13$q;
-        keep$14$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$14 & ~match_delay$adj_sm1$14 & ~known_mask$known_late$14 & ~is_run_rep$14$q & ~later_min$14$q;
-        keep$15$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$15 & ~match_delay$adj_sm1$15 & ~known_mask$known_late$15 & ~is_run_rep$15$q & ~later_min$15$q;
-        keep$16$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$16 & ~match_delay$adj_sm1$16 & ~known_mask$known_late$16 & ~is_run_rep$16$q & ~later_min$16$q;
-        keep$17$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$17 & ~match_delay$adj_sm1$17 & ~known_mask$known_late$17 & ~is_run_rep$17$q & ~later_min$17$q;
-        keep$18$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$18 & ~match_delay$adj_sm1$18 & ~known_mask$known_late$18 & ~is_run_rep$18$q & ~later_min$18$q;
-        keep$19$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$19 & ~match_delay$adj_sm1$19 & ~known_mask$known_late$19 & ~is_run_rep$19$q & ~later_min$19$q;
-        keep$20$d = ctr_sm1$q[1:1] & match_delay$hit_sm1$20 & ~match_delay$adj_sm1$20 & ~known_mask$known_late$20 & ~is_run_rep$20$q & ~later_min$20$q;
+        keep_next$0 = ctr_sm1$q[1:1] & match_delay$hit_sm1$0 & ~match_delay$adj_sm1$0 & ~known_mask$known_late$0 & ~is_run_rep$0$q & ~later_min$0$q;
+        keep$0$d = keep_next$0;
+        keep_group_or$x$0 = keep_next$0;
+        keep_next$1 = ctr_sm1$q[1:1] & match_delay$hit_sm1$1 & ~match_delay$adj_sm1$1 & ~known_mask$known_late$1 & ~is_run_rep$1$q & ~later_min$1$q;
+        keep$1$d = keep_next$1;
+        keep_group_or$x$1 = keep_next$1;
+        keep_next$2 = ctr_sm1$q[1:1] & match_delay$hit_sm1$2 & ~match_delay$adj_sm1$2 & ~known_mask$known_late$2 & ~is_run_rep$2$q & ~later_min$2$q;
+        keep$2$d = keep_next$2;
+        keep_group_or$x$2 = keep_next$2;
+        keep_next$3 = ctr_sm1$q[1:1] & match_delay$hit_sm1$3 & ~match_delay$adj_sm1$3 & ~known_mask$known_late$3 & ~is_run_rep$3$q & ~later_min$3$q;
+        keep$3$d = keep_next$3;
+        keep_group_or$x$3 = keep_next$3;
+        keep_next$4 = ctr_sm1$q[1:1] & match_delay$hit_sm1$4 & ~match_delay$adj_sm1$4 & ~known_mask$known_late$4 & ~is_run_rep$4$q & ~later_min$4$q;
+        keep$4$d = keep_next$4;
+        keep_group_or$x$4 = keep_next$4;
+        keep_next$5 = ctr_sm1$q[1:1] & match_delay$hit_sm1$5 & ~match_delay$adj_sm1$5 & ~known_mask$known_late$5 & ~is_run_rep$5$q & ~later_min$5$q;
+        keep$5$d = keep_next$5;
+        keep_group_or$x$5 = keep_next$5;
+        keep_next$6 = ctr_sm1$q[1:1] & match_delay$hit_sm1$6 & ~match_delay$adj_sm1$6 & ~known_mask$known_late$6 & ~is_run_rep$6$q & ~later_min$6$q;
+        keep$6$d = keep_next$6;
+        keep_group_or$x$6 = keep_next$6;
+        keep_next$7 = ctr_sm1$q[1:1] & match_delay$hit_sm1$7 & ~match_delay$adj_sm1$7 & ~known_mask$known_late$7 & ~is_run_rep$7$q & ~later_min$7$q;
+        keep$7$d = keep_next$7;
+        keep_group_or$x$7 = keep_next$7;
+        keep_next$8 = ctr_sm1$q[1:1] & match_delay$hit_sm1$8 & ~match_delay$adj_sm1$8 & ~known_mask$known_late$8 & ~is_run_rep$8$q & ~later_min$8$q;
+        keep$8$d = keep_next$8;
+        keep_group_or$x$8 = keep_next$8;
+        keep_next$9 = ctr_sm1$q[1:1] & match_delay$hit_sm1$9 & ~match_delay$adj_sm1$9 & ~known_mask$known_late$9 & ~is_run_rep$9$q & ~later_min$9$q;
+        keep$9$d = keep_next$9;
+        keep_group_or$x$9 = keep_next$9;
+        keep_next$10 = ctr_sm1$q[1:1] & match_delay$hit_sm1$10 & ~match_delay$adj_sm1$10 & ~known_mask$known_late$10 & ~is_run_rep$10$q & ~later_min$10$q;
+        keep$10$d = keep_next$10;
+        keep_group_or$x$10 = keep_next$10;
+        keep_next$11 = ctr_sm1$q[1:1] & match_delay$hit_sm1$11 & ~match_delay$adj_sm1$11 & ~known_mask$known_late$11 & ~is_run_rep$11$q & ~later_min$11$q;
+        keep$11$d = keep_next$11;
+        keep_group_or$x$11 = keep_next$11;
+        keep_next$12 = ctr_sm1$q[1:1] & match_delay$hit_sm1$12 & ~match_delay$adj_sm1$12 & ~known_mask$known_late$12 & ~is_run_rep$12$q & ~later_min$12$q;
+        keep$12$d = keep_next$12;
+        keep_group_or$x$12 = keep_next$12;
+        keep_next$13 = ctr_sm1$q[1:1] & match_delay$hit_sm1$13 & ~match_delay$adj_sm1$13 & ~known_mask$known_late$13 & ~is_run_rep$13$q & ~later_min$13$q;
+        keep$13$d = keep_next$13;
+        keep_group_or$x$13 = keep_next$13;
+        keep_next$14 = ctr_sm1$q[1:1] & match_delay$hit_sm1$14 & ~match_delay$adj_sm1$14 & ~known_mask$known_late$14 & ~is_run_rep$14$q & ~later_min$14$q;
+        keep$14$d = keep_next$14;
+        keep_group_or$x$14 = keep_next$14;
+        keep_next$15 = ctr_sm1$q[1:1] & match_delay$hit_sm1$15 & ~match_delay$adj_sm1$15 & ~known_mask$known_late$15 & ~is_run_rep$15$q & ~later_min$15$q;
+        keep$15$d = keep_next$15;
+        keep_group_or$x$15 = keep_next$15;
+        keep_next$16 = ctr_sm1$q[1:1] & match_delay$hit_sm1$16 & ~match_delay$adj_sm1$16 & ~known_mask$known_late$16 & ~is_run_rep$16$q & ~later_min$16$q;
+        keep$16$d = keep_next$16;
+        keep_group_or$x$16 = keep_next$16;
+        keep_next$17 = ctr_sm1$q[1:1] & match_delay$hit_sm1$17 & ~match_delay$adj_sm1$17 & ~known_mask$known_late$17 & ~is_run_rep$17$q & ~later_min$17$q;
+        keep$17$d = keep_next$17;
+        keep_group_or$x$17 = keep_next$17;
+        keep_next$18 = ctr_sm1$q[1:1] & match_delay$hit_sm1$18 & ~match_delay$adj_sm1$18 & ~known_mask$known_late$18 & ~is_run_rep$18$q & ~later_min$18$q;
+        keep$18$d = keep_next$18;
+        keep_group_or$x$18 = keep_next$18;
+        keep_next$19 = ctr_sm1$q[1:1] & match_delay$hit_sm1$19 & ~match_delay$adj_sm1$19 & ~known_mask$known_late$19 & ~is_run_rep$19$q & ~later_min$19$q;
+        keep$19$d = keep_next$19;
+        keep_group_or$x$19 = keep_next$19;
+        keep_next$20 = ctr_sm1$q[1:1] & match_delay$hit_sm1$20 & ~match_delay$adj_sm1$20 & ~known_mask$known_late$20 & ~is_run_rep$20$q & ~later_min$20$q;
+        keep$20$d = keep_next$20;
+        keep_group_or$x$20 = keep_next$20;
+        keep_group$0$clock = clk;
+        keep_group$0$d = keep_group_or$any$0;
+        keep_any$x$0 = keep_group$0$q;
+        keep_first$gany$0 = keep_group$0$q;
+        keep_group$1$clock = clk;
+        keep_group$1$d = keep_group_or$any$1;
+        keep_any$x$1 = keep_group$1$q;
+        keep_first$gany$1 = keep_group$1$q;
+        keep_group$2$clock = clk;
+        keep_group$2$d = keep_group_or$any$2;
+        keep_any$x$2 = keep_group$2$q;
+        keep_first$gany$2 = keep_group$2$q;
         run_rep_sm2$d = run_rep_sm1$q;
-        keep_any$x$0 = keep$0$q;
+        keep_first$x$0 = keep$0$q;
         keep_sm3$0$d = keep$0$q;
-        keep_any$x$1 = keep$1$q;
+        first_sm3$0$d = keep_first$first$0;
+        keep_first$x$1 = keep$1$q;
         keep_sm3$1$d = keep$1$q;
-        keep_any$x$2 = keep$2$q;
+        first_sm3$1$d = keep_first$first$1;
+        keep_first$x$2 = keep$2$q;
         keep_sm3$2$d = keep$2$q;
-        keep_any$x$3 = keep$3$q;
+        first_sm3$2$d = keep_first$first$2;
+        keep_first$x$3 = keep$3$q;
         keep_sm3$3$d = keep$3$q;
-        keep_any$x$4 = keep$4$q;
+        first_sm3$3$d = keep_first$first$3;
+        keep_first$x$4 = keep$4$q;
         keep_sm3$4$d = keep$4$q;
-        keep_any$x$5 = keep$5$q;
+        first_sm3$4$d = keep_first$first$4;
+        keep_first$x$5 = keep$5$q;
         keep_sm3$5$d = keep$5$q;
-        keep_any$x$6 = keep$6$q;
+        first_sm3$5$d = keep_first$first$5;
+        keep_first$x$6 = keep$6$q;
         keep_sm3$6$d = keep$6$q;
-        keep_any$x$7 = keep$7$q;
+        first_sm3$6$d = keep_first$first$6;
+        keep_first$x$7 = keep$7$q;
         keep_sm3$7$d = keep$7$q;
-        keep_any$x$8 = keep$8$q;
+        first_sm3$7$d = keep_first$first$7;
+        keep_first$x$8 = keep$8$q;
         keep_sm3$8$d = keep$8$q;
-        keep_any$x$9 = keep$9$q;
+        first_sm3$8$d = keep_first$first$8;
+        keep_first$x$9 = keep$9$q;
         keep_sm3$9$d = keep$9$q;
-        keep_any$x$10 = keep$10$q;
+        first_sm3$9$d = keep_first$first$9;
+        keep_first$x$10 = keep$10$q;
         keep_sm3$10$d = keep$10$q;
-        keep_any$x$11 = keep$11$q;
+        first_sm3$10$d = keep_first$first$10;
+        keep_first$x$11 = keep$11$q;
         keep_sm3$11$d = keep$11$q;
-        keep_any$x$12 = keep$12$q;
+        first_sm3$11$d = keep_first$first$11;
+        keep_first$x$12 = keep$12$q;
         keep_sm3$12$d = keep$12$q;
-        keep_any$x$13 = keep$13$q;
+        first_sm3$12$d = keep_first$first$12;
+        keep_first$x$13 = keep$13$q;
         keep_sm3$13$d = keep$13$q;
-        keep_any$x$14 = keep$14$q;
+        first_sm3$13$d = keep_first$first$13;
+        keep_first$x$14 = keep$14$q;
         keep_sm3$14$d = keep$14$q;
-        keep_any$x$15 = keep$15$q;
+        first_sm3$14$d = keep_first$first$14;
+        keep_first$x$15 = keep$15$q;
         keep_sm3$15$d = keep$15$q;
-        keep_any$x$16 = keep$16$q;
+        first_sm3$15$d = keep_first$first$15;
+        keep_first$x$16 = keep$16$q;
         keep_sm3$16$d = keep$16$q;
-        keep_any$x$17 = keep$17$q;
+        first_sm3$16$d = keep_first$first$16;
+        keep_first$x$17 = keep$17$q;
         keep_sm3$17$d = keep$17$q;
-        keep_any$x$18 = keep$18$q;
+        first_sm3$17$d = keep_first$first$17;
+        keep_first$x$18 = keep$18$q;
         keep_sm3$18$d = keep$18$q;
-        keep_any$x$19 = keep$19$q;
+        first_sm3$18$d = keep_first$first$18;
+        keep_first$x$19 = keep$19$q;
         keep_sm3$19$d = keep$19$q;
-        keep_any$x$20 = keep$20$q;
+        first_sm3$19$d = keep_first$first$19;
+        keep_first$x$20 = keep$20$q;
         keep_sm3$20$d = keep$20$q;
+        first_sm3$20$d = keep_first$first$20;
         need_rec = keep_any$any | ctr_sm2$q[32:32] | ctr_sm2$q[31:31];
         rec_push_q$d = ctr_sm2$q[0:0] & need_rec;
         credit_drop_q$d = ctr_sm2$q[0:0] & ~need_rec;
@@ -19514,46 +20695,67 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
         rec = rec_q$q;
         rec_rep$0 = match_delay$rep_sm3$0;
         rec_keep$0 = keep_sm3$0$q;
+        rec_first$0 = first_sm3$0$q;
         rec_rep$1 = match_delay$rep_sm3$1;
         rec_keep$1 = keep_sm3$1$q;
+        rec_first$1 = first_sm3$1$q;
         rec_rep$2 = match_delay$rep_sm3$2;
         rec_keep$2 = keep_sm3$2$q;
+        rec_first$2 = first_sm3$2$q;
         rec_rep$3 = match_delay$rep_sm3$3;
         rec_keep$3 = keep_sm3$3$q;
+        rec_first$3 = first_sm3$3$q;
         rec_rep$4 = match_delay$rep_sm3$4;
         rec_keep$4 = keep_sm3$4$q;
+        rec_first$4 = first_sm3$4$q;
         rec_rep$5 = match_delay$rep_sm3$5;
         rec_keep$5 = keep_sm3$5$q;
+        rec_first$5 = first_sm3$5$q;
         rec_rep$6 = match_delay$rep_sm3$6;
         rec_keep$6 = keep_sm3$6$q;
+        rec_first$6 = first_sm3$6$q;
         rec_rep$7 = match_delay$rep_sm3$7;
         rec_keep$7 = keep_sm3$7$q;
+        rec_first$7 = first_sm3$7$q;
         rec_rep$8 = match_delay$rep_sm3$8;
         rec_keep$8 = keep_sm3$8$q;
+        rec_first$8 = first_sm3$8$q;
         rec_rep$9 = match_delay$rep_sm3$9;
         rec_keep$9 = keep_sm3$9$q;
+        rec_first$9 = first_sm3$9$q;
         rec_rep$10 = match_delay$rep_sm3$10;
         rec_keep$10 = keep_sm3$10$q;
+        rec_first$10 = first_sm3$10$q;
         rec_rep$11 = match_delay$rep_sm3$11;
         rec_keep$11 = keep_sm3$11$q;
+        rec_first$11 = first_sm3$11$q;
         rec_rep$12 = match_delay$rep_sm3$12;
         rec_keep$12 = keep_sm3$12$q;
+        rec_first$12 = first_sm3$12$q;
         rec_rep$13 = match_delay$rep_sm3$13;
         rec_keep$13 = keep_sm3$13$q;
+        rec_first$13 = first_sm3$13$q;
         rec_rep$14 = match_delay$rep_sm3$14;
         rec_keep$14 = keep_sm3$14$q;
+        rec_first$14 = first_sm3$14$q;
         rec_rep$15 = match_delay$rep_sm3$15;
         rec_keep$15 = keep_sm3$15$q;
+        rec_first$15 = first_sm3$15$q;
         rec_rep$16 = match_delay$rep_sm3$16;
         rec_keep$16 = keep_sm3$16$q;
+        rec_first$16 = first_sm3$16$q;
         rec_rep$17 = match_delay$rep_sm3$17;
         rec_keep$17 = keep_sm3$17$q;
+        rec_first$17 = first_sm3$17$q;
         rec_rep$18 = match_delay$rep_sm3$18;
         rec_keep$18 = keep_sm3$18$q;
+        rec_first$18 = first_sm3$18$q;
         rec_rep$19 = match_delay$rep_sm3$19;
         rec_keep$19 = keep_sm3$19$q;
+        rec_first$19 = first_sm3$19$q;
         rec_rep$20 = match_delay$rep_sm3$20;
         rec_keep$20 = keep_sm3$20$q;
+        rec_first$20 = first_sm3$20$q;
         if (valid_rst$q) begin
             last_label_valid$d = 1'b0;
             ctr_s1$d[0:0] = 1'b0;
@@ -19762,6 +20964,405 @@ module fcc_sort_net__filter__ctr_tree__3_k7_668cf05b(d,q,clock);
     end
 
 endmodule // fcc_sort_net__filter__ctr_tree__3_k7_668cf05b
+
+
+module fcc_sort_net__filter__first_sm3__0_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__first_sm3__0_k7_668cf05b
+
+
+module fcc_sort_net__filter__first_sm3__1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__first_sm3__1_k7_668cf05b
+
+
+module fcc_sort_net__filter__first_sm3__10_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__first_sm3__10_k7_668cf05b
+
+
+module fcc_sort_net__filter__first_sm3__11_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__first_sm3__11_k7_668cf05b
+
+
+module fcc_sort_net__filter__first_sm3__12_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__first_sm3__12_k7_668cf05b
+
+
+module fcc_sort_net__filter__first_sm3__13_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__first_sm3__13_k7_668cf05b
+
+
+module fcc_sort_net__filter__first_sm3__14_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__first_sm3__14_k7_668cf05b
+
+
+module fcc_sort_net__filter__first_sm3__15_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__first_sm3__15_k7_668cf05b
+
+
+module fcc_sort_net__filter__first_sm3__16_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__first_sm3__16_k7_668cf05b
+
+
+module fcc_sort_net__filter__first_sm3__17_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__first_sm3__17_k7_668cf05b
+
+
+module fcc_sort_net__filter__first_sm3__18_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__first_sm3__18_k7_668cf05b
+
+
+module fcc_sort_net__filter__first_sm3__19_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__first_sm3__19_k7_668cf05b
+
+
+module fcc_sort_net__filter__first_sm3__2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__first_sm3__2_k7_668cf05b
+
+
+module fcc_sort_net__filter__first_sm3__20_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__first_sm3__20_k7_668cf05b
+
+
+module fcc_sort_net__filter__first_sm3__3_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__first_sm3__3_k7_668cf05b
+
+
+module fcc_sort_net__filter__first_sm3__4_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__first_sm3__4_k7_668cf05b
+
+
+module fcc_sort_net__filter__first_sm3__5_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__first_sm3__5_k7_668cf05b
+
+
+module fcc_sort_net__filter__first_sm3__6_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__first_sm3__6_k7_668cf05b
+
+
+module fcc_sort_net__filter__first_sm3__7_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__first_sm3__7_k7_668cf05b
+
+
+module fcc_sort_net__filter__first_sm3__8_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__first_sm3__8_k7_668cf05b
+
+
+module fcc_sort_net__filter__first_sm3__9_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__first_sm3__9_k7_668cf05b
 
 
 module fcc_sort_net__filter__is_run_rep__0_k7_668cf05b(d,q,clock);
@@ -20562,7 +22163,22 @@ module fcc_sort_net__filter__keep__9_k7_668cf05b(d,q,clock);
 endmodule // fcc_sort_net__filter__keep__9_k7_668cf05b
 
 
-module fcc_sort_net__filter__keep_any_k7_668cf05b(x$0,x$1,x$2,x$3,x$4,x$5,x$6,x$7,x$8,x$9,x$10,x$11,x$12,x$13,x$14,x$15,x$16,x$17,x$18,x$19,x$20,any);
+module fcc_sort_net__filter__keep_any_k7_668cf05b(x$0,x$1,x$2,any);
+
+    // Module arguments
+    input wire  x$0;
+    input wire  x$1;
+    input wire  x$2;
+    output reg  any;
+
+    // Update code (custom)
+    always @(*) begin
+        any = |{x$2, x$1, x$0};
+    end
+endmodule // fcc_sort_net__filter__keep_any_k7_668cf05b
+
+
+module fcc_sort_net__filter__keep_first_k7_668cf05b(x$0,x$1,x$2,x$3,x$4,x$5,x$6,x$7,x$8,x$9,x$10,x$11,x$12,x$13,x$14,x$15,x$16,x$17,x$18,x$19,x$20,gany$0,gany$1,gany$2,first$0,first$1,first$2,first$3,first$4,first$5,first$6,first$7,first$8,first$9,first$10,first$11,first$12,first$13,first$14,first$15,first$16,first$17,first$18,first$19,first$20);
 
     // Module arguments
     input wire  x$0;
@@ -20586,13 +22202,154 @@ module fcc_sort_net__filter__keep_any_k7_668cf05b(x$0,x$1,x$2,x$3,x$4,x$5,x$6,x$
     input wire  x$18;
     input wire  x$19;
     input wire  x$20;
-    output reg  any;
+    input wire  gany$0;
+    input wire  gany$1;
+    input wire  gany$2;
+    output reg  first$0;
+    output reg  first$1;
+    output reg  first$2;
+    output reg  first$3;
+    output reg  first$4;
+    output reg  first$5;
+    output reg  first$6;
+    output reg  first$7;
+    output reg  first$8;
+    output reg  first$9;
+    output reg  first$10;
+    output reg  first$11;
+    output reg  first$12;
+    output reg  first$13;
+    output reg  first$14;
+    output reg  first$15;
+    output reg  first$16;
+    output reg  first$17;
+    output reg  first$18;
+    output reg  first$19;
+    output reg  first$20;
+
+    // Update code (custom)
+    // The last group comes after every other, so nothing reads its flag.
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire unused_ok = gany$2;
+    /* verilator lint_on UNUSEDSIGNAL */
+    always @(*) begin
+        first$0 = x$0;
+        first$1 = x$1 & ~(|{x$0});
+        first$2 = x$2 & ~(|{x$1, x$0});
+        first$3 = x$3 & ~(|{x$2, x$1, x$0});
+        first$4 = x$4 & ~(|{x$3, x$2, x$1, x$0});
+        first$5 = x$5 & ~(|{x$4, x$3, x$2, x$1, x$0});
+        first$6 = x$6 & ~(|{x$5, x$4, x$3, x$2, x$1, x$0});
+        first$7 = x$7 & ~(|{x$6, x$5, x$4, x$3, x$2, x$1, x$0});
+        first$8 = x$8 & ~(|{gany$0});
+        first$9 = x$9 & ~(|{gany$0, x$8});
+        first$10 = x$10 & ~(|{gany$0, x$9, x$8});
+        first$11 = x$11 & ~(|{gany$0, x$10, x$9, x$8});
+        first$12 = x$12 & ~(|{gany$0, x$11, x$10, x$9, x$8});
+        first$13 = x$13 & ~(|{gany$0, x$12, x$11, x$10, x$9, x$8});
+        first$14 = x$14 & ~(|{gany$0, x$13, x$12, x$11, x$10, x$9, x$8});
+        first$15 = x$15 & ~(|{gany$0, x$14, x$13, x$12, x$11, x$10, x$9, x$8});
+        first$16 = x$16 & ~(|{gany$1, gany$0});
+        first$17 = x$17 & ~(|{gany$1, gany$0, x$16});
+        first$18 = x$18 & ~(|{gany$1, gany$0, x$17, x$16});
+        first$19 = x$19 & ~(|{gany$1, gany$0, x$18, x$17, x$16});
+        first$20 = x$20 & ~(|{gany$1, gany$0, x$19, x$18, x$17, x$16});
+    end
+endmodule // fcc_sort_net__filter__keep_first_k7_668cf05b
+
+
+module fcc_sort_net__filter__keep_group__0_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__keep_group__0_k7_668cf05b
+
+
+module fcc_sort_net__filter__keep_group__1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__keep_group__1_k7_668cf05b
+
+
+module fcc_sort_net__filter__keep_group__2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__keep_group__2_k7_668cf05b
+
+
+module fcc_sort_net__filter__keep_group_or_k7_668cf05b(x$0,x$1,x$2,x$3,x$4,x$5,x$6,x$7,x$8,x$9,x$10,x$11,x$12,x$13,x$14,x$15,x$16,x$17,x$18,x$19,x$20,any$0,any$1,any$2);
+
+    // Module arguments
+    input wire  x$0;
+    input wire  x$1;
+    input wire  x$2;
+    input wire  x$3;
+    input wire  x$4;
+    input wire  x$5;
+    input wire  x$6;
+    input wire  x$7;
+    input wire  x$8;
+    input wire  x$9;
+    input wire  x$10;
+    input wire  x$11;
+    input wire  x$12;
+    input wire  x$13;
+    input wire  x$14;
+    input wire  x$15;
+    input wire  x$16;
+    input wire  x$17;
+    input wire  x$18;
+    input wire  x$19;
+    input wire  x$20;
+    output reg  any$0;
+    output reg  any$1;
+    output reg  any$2;
 
     // Update code (custom)
     always @(*) begin
-        any = |{x$20, x$19, x$18, x$17, x$16, x$15, x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        any$0 = |{x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        any$1 = |{x$15, x$14, x$13, x$12, x$11, x$10, x$9, x$8};
+        any$2 = |{x$20, x$19, x$18, x$17, x$16};
     end
-endmodule // fcc_sort_net__filter__keep_any_k7_668cf05b
+endmodule // fcc_sort_net__filter__keep_group_or_k7_668cf05b
 
 
 module fcc_sort_net__filter__keep_sm3__0_k7_668cf05b(d,q,clock);
@@ -46502,7 +48259,7 @@ module fcc_sort_net__join_queue_rst_k7_668cf05b(clock,d,q);
 endmodule // fcc_sort_net__join_queue_rst_k7_668cf05b
 
 
-module fcc_sort_net__serializer_k7_668cf05b(clk,rst,head_valid,head,head_rep$0,head_rep$1,head_rep$2,head_rep$3,head_rep$4,head_rep$5,head_rep$6,head_rep$7,head_rep$8,head_rep$9,head_rep$10,head_rep$11,head_rep$12,head_rep$13,head_rep$14,head_rep$15,head_rep$16,head_rep$17,head_rep$18,head_rep$19,head_rep$20,head_keep$0,head_keep$1,head_keep$2,head_keep$3,head_keep$4,head_keep$5,head_keep$6,head_keep$7,head_keep$8,head_keep$9,head_keep$10,head_keep$11,head_keep$12,head_keep$13,head_keep$14,head_keep$15,head_keep$16,head_keep$17,head_keep$18,head_keep$19,head_keep$20,take,join_room,join_push,join_rec,last_done);
+module fcc_sort_net__serializer_k7_668cf05b(clk,rst,head_valid,head,head_rep$0,head_rep$1,head_rep$2,head_rep$3,head_rep$4,head_rep$5,head_rep$6,head_rep$7,head_rep$8,head_rep$9,head_rep$10,head_rep$11,head_rep$12,head_rep$13,head_rep$14,head_rep$15,head_rep$16,head_rep$17,head_rep$18,head_rep$19,head_rep$20,head_keep$0,head_keep$1,head_keep$2,head_keep$3,head_keep$4,head_keep$5,head_keep$6,head_keep$7,head_keep$8,head_keep$9,head_keep$10,head_keep$11,head_keep$12,head_keep$13,head_keep$14,head_keep$15,head_keep$16,head_keep$17,head_keep$18,head_keep$19,head_keep$20,head_first$0,head_first$1,head_first$2,head_first$3,head_first$4,head_first$5,head_first$6,head_first$7,head_first$8,head_first$9,head_first$10,head_first$11,head_first$12,head_first$13,head_first$14,head_first$15,head_first$16,head_first$17,head_first$18,head_first$19,head_first$20,take,join_room,join_push,join_rec,last_done);
 
     // Module arguments
     input wire  clk;
@@ -46551,6 +48308,27 @@ module fcc_sort_net__serializer_k7_668cf05b(clk,rst,head_valid,head,head_rep$0,h
     input wire  head_keep$18;
     input wire  head_keep$19;
     input wire  head_keep$20;
+    input wire  head_first$0;
+    input wire  head_first$1;
+    input wire  head_first$2;
+    input wire  head_first$3;
+    input wire  head_first$4;
+    input wire  head_first$5;
+    input wire  head_first$6;
+    input wire  head_first$7;
+    input wire  head_first$8;
+    input wire  head_first$9;
+    input wire  head_first$10;
+    input wire  head_first$11;
+    input wire  head_first$12;
+    input wire  head_first$13;
+    input wire  head_first$14;
+    input wire  head_first$15;
+    input wire  head_first$16;
+    input wire  head_first$17;
+    input wire  head_first$18;
+    input wire  head_first$19;
+    input wire  head_first$20;
     output reg  take;
     input wire  join_room;
     output reg  join_push;
@@ -46632,135 +48410,75 @@ module fcc_sort_net__serializer_k7_668cf05b(clk,rst,head_valid,head,head_rep$0,h
     reg  pending$20$d;
     wire  pending$20$q;
     reg  pending$20$clock;
-    reg  selected$0$d;
-    wire  selected$0$q;
-    reg  selected$0$clock;
-    reg  selected$1$d;
-    wire  selected$1$q;
-    reg  selected$1$clock;
-    reg  selected$2$d;
-    wire  selected$2$q;
-    reg  selected$2$clock;
-    reg  selected$3$d;
-    wire  selected$3$q;
-    reg  selected$3$clock;
-    reg  selected$4$d;
-    wire  selected$4$q;
-    reg  selected$4$clock;
-    reg  selected$5$d;
-    wire  selected$5$q;
-    reg  selected$5$clock;
-    reg  selected$6$d;
-    wire  selected$6$q;
-    reg  selected$6$clock;
-    reg  selected$7$d;
-    wire  selected$7$q;
-    reg  selected$7$clock;
-    reg  selected$8$d;
-    wire  selected$8$q;
-    reg  selected$8$clock;
-    reg  selected$9$d;
-    wire  selected$9$q;
-    reg  selected$9$clock;
-    reg  selected$10$d;
-    wire  selected$10$q;
-    reg  selected$10$clock;
-    reg  selected$11$d;
-    wire  selected$11$q;
-    reg  selected$11$clock;
-    reg  selected$12$d;
-    wire  selected$12$q;
-    reg  selected$12$clock;
-    reg  selected$13$d;
-    wire  selected$13$q;
-    reg  selected$13$clock;
-    reg  selected$14$d;
-    wire  selected$14$q;
-    reg  selected$14$clock;
-    reg  selected$15$d;
-    wire  selected$15$q;
-    reg  selected$15$clock;
-    reg  selected$16$d;
-    wire  selected$16$q;
-    reg  selected$16$clock;
-    reg  selected$17$d;
-    wire  selected$17$q;
-    reg  selected$17$clock;
-    reg  selected$18$d;
-    wire  selected$18$q;
-    reg  selected$18$clock;
-    reg  selected$19$d;
-    wire  selected$19$q;
-    reg  selected$19$clock;
-    reg  selected$20$d;
-    wire  selected$20$q;
-    reg  selected$20$clock;
+    reg  [15:0] pick_q$d;
+    wire  [15:0] pick_q$q;
+    reg  pick_q$clock;
+    reg  sel_flip$0$d;
+    wire  sel_flip$0$q;
+    reg  sel_flip$0$clock;
+    reg  sel_flip$1$d;
+    wire  sel_flip$1$q;
+    reg  sel_flip$1$clock;
+    reg  sel_flip$2$d;
+    wire  sel_flip$2$q;
+    reg  sel_flip$2$clock;
+    reg  sel_flip$3$d;
+    wire  sel_flip$3$q;
+    reg  sel_flip$3$clock;
+    reg  sel_flip$4$d;
+    wire  sel_flip$4$q;
+    reg  sel_flip$4$clock;
+    reg  sel_flip$5$d;
+    wire  sel_flip$5$q;
+    reg  sel_flip$5$clock;
+    reg  sel_flip$6$d;
+    wire  sel_flip$6$q;
+    reg  sel_flip$6$clock;
+    reg  sel_flip$7$d;
+    wire  sel_flip$7$q;
+    reg  sel_flip$7$clock;
+    reg  sel_flip$8$d;
+    wire  sel_flip$8$q;
+    reg  sel_flip$8$clock;
+    reg  sel_flip$9$d;
+    wire  sel_flip$9$q;
+    reg  sel_flip$9$clock;
+    reg  sel_flip$10$d;
+    wire  sel_flip$10$q;
+    reg  sel_flip$10$clock;
+    reg  sel_flip$11$d;
+    wire  sel_flip$11$q;
+    reg  sel_flip$11$clock;
+    reg  sel_flip$12$d;
+    wire  sel_flip$12$q;
+    reg  sel_flip$12$clock;
+    reg  sel_flip$13$d;
+    wire  sel_flip$13$q;
+    reg  sel_flip$13$clock;
+    reg  sel_flip$14$d;
+    wire  sel_flip$14$q;
+    reg  sel_flip$14$clock;
+    reg  sel_flip$15$d;
+    wire  sel_flip$15$q;
+    reg  sel_flip$15$clock;
+    reg  sel_flip$16$d;
+    wire  sel_flip$16$q;
+    reg  sel_flip$16$clock;
+    reg  sel_flip$17$d;
+    wire  sel_flip$17$q;
+    reg  sel_flip$17$clock;
+    reg  sel_flip$18$d;
+    wire  sel_flip$18$q;
+    reg  sel_flip$18$clock;
+    reg  sel_flip$19$d;
+    wire  sel_flip$19$q;
+    reg  sel_flip$19$clock;
+    reg  sel_flip$20$d;
+    wire  sel_flip$20$q;
+    reg  sel_flip$20$clock;
     reg  more_pending$d;
     wire  more_pending$q;
     reg  more_pending$clock;
-    reg  pending_earlier$0$d;
-    wire  pending_earlier$0$q;
-    reg  pending_earlier$0$clock;
-    reg  pending_earlier$1$d;
-    wire  pending_earlier$1$q;
-    reg  pending_earlier$1$clock;
-    reg  pending_earlier$2$d;
-    wire  pending_earlier$2$q;
-    reg  pending_earlier$2$clock;
-    reg  pending_earlier$3$d;
-    wire  pending_earlier$3$q;
-    reg  pending_earlier$3$clock;
-    reg  pending_earlier$4$d;
-    wire  pending_earlier$4$q;
-    reg  pending_earlier$4$clock;
-    reg  pending_earlier$5$d;
-    wire  pending_earlier$5$q;
-    reg  pending_earlier$5$clock;
-    reg  pending_earlier$6$d;
-    wire  pending_earlier$6$q;
-    reg  pending_earlier$6$clock;
-    reg  pending_earlier$7$d;
-    wire  pending_earlier$7$q;
-    reg  pending_earlier$7$clock;
-    reg  pending_earlier$8$d;
-    wire  pending_earlier$8$q;
-    reg  pending_earlier$8$clock;
-    reg  pending_earlier$9$d;
-    wire  pending_earlier$9$q;
-    reg  pending_earlier$9$clock;
-    reg  pending_earlier$10$d;
-    wire  pending_earlier$10$q;
-    reg  pending_earlier$10$clock;
-    reg  pending_earlier$11$d;
-    wire  pending_earlier$11$q;
-    reg  pending_earlier$11$clock;
-    reg  pending_earlier$12$d;
-    wire  pending_earlier$12$q;
-    reg  pending_earlier$12$clock;
-    reg  pending_earlier$13$d;
-    wire  pending_earlier$13$q;
-    reg  pending_earlier$13$clock;
-    reg  pending_earlier$14$d;
-    wire  pending_earlier$14$q;
-    reg  pending_earlier$14$clock;
-    reg  pending_earlier$15$d;
-    wire  pending_earlier$15$q;
-    reg  pending_earlier$15$clock;
-    reg  pending_earlier$16$d;
-    wire  pending_earlier$16$q;
-    reg  pending_earlier$16$clock;
-    reg  pending_earlier$17$d;
-    wire  pending_earlier$17$q;
-    reg  pending_earlier$17$clock;
-    reg  pending_earlier$18$d;
-    wire  pending_earlier$18$q;
-    reg  pending_earlier$18$clock;
-    reg  pending_earlier$19$d;
-    wire  pending_earlier$19$q;
-    reg  pending_earlier$19$clock;
-    reg  pending_earlier$20$d;
-    wire  pending_earlier$20$q;
-    reg  pending_earlier$20$clock;
     reg  pending_two$d;
     wire  pending_two$q;
     reg  pending_two$clock;
@@ -46788,48 +48506,6 @@ module fcc_sort_net__serializer_k7_668cf05b(clk,rst,head_valid,head,head_rep$0,h
     reg  last_done_q$d;
     wire  last_done_q$q;
     reg  last_done_q$clock;
-    reg  head_earlier$x$0;
-    reg  head_earlier$x$1;
-    reg  head_earlier$x$2;
-    reg  head_earlier$x$3;
-    reg  head_earlier$x$4;
-    reg  head_earlier$x$5;
-    reg  head_earlier$x$6;
-    reg  head_earlier$x$7;
-    reg  head_earlier$x$8;
-    reg  head_earlier$x$9;
-    reg  head_earlier$x$10;
-    reg  head_earlier$x$11;
-    reg  head_earlier$x$12;
-    reg  head_earlier$x$13;
-    reg  head_earlier$x$14;
-    reg  head_earlier$x$15;
-    reg  head_earlier$x$16;
-    reg  head_earlier$x$17;
-    reg  head_earlier$x$18;
-    reg  head_earlier$x$19;
-    reg  head_earlier$x$20;
-    wire  head_earlier$pre$0;
-    wire  head_earlier$pre$1;
-    wire  head_earlier$pre$2;
-    wire  head_earlier$pre$3;
-    wire  head_earlier$pre$4;
-    wire  head_earlier$pre$5;
-    wire  head_earlier$pre$6;
-    wire  head_earlier$pre$7;
-    wire  head_earlier$pre$8;
-    wire  head_earlier$pre$9;
-    wire  head_earlier$pre$10;
-    wire  head_earlier$pre$11;
-    wire  head_earlier$pre$12;
-    wire  head_earlier$pre$13;
-    wire  head_earlier$pre$14;
-    wire  head_earlier$pre$15;
-    wire  head_earlier$pre$16;
-    wire  head_earlier$pre$17;
-    wire  head_earlier$pre$18;
-    wire  head_earlier$pre$19;
-    wire  head_earlier$pre$20;
     reg  head_any$x$0;
     reg  head_any$x$1;
     reg  head_any$x$2;
@@ -46852,28 +48528,28 @@ module fcc_sort_net__serializer_k7_668cf05b(clk,rst,head_valid,head,head_rep$0,h
     reg  head_any$x$19;
     reg  head_any$x$20;
     wire  head_any$any;
-    reg  head_two$x$0;
-    reg  head_two$x$1;
-    reg  head_two$x$2;
-    reg  head_two$x$3;
-    reg  head_two$x$4;
-    reg  head_two$x$5;
-    reg  head_two$x$6;
-    reg  head_two$x$7;
-    reg  head_two$x$8;
-    reg  head_two$x$9;
-    reg  head_two$x$10;
-    reg  head_two$x$11;
-    reg  head_two$x$12;
-    reg  head_two$x$13;
-    reg  head_two$x$14;
-    reg  head_two$x$15;
-    reg  head_two$x$16;
-    reg  head_two$x$17;
-    reg  head_two$x$18;
-    reg  head_two$x$19;
-    reg  head_two$x$20;
-    wire  head_two$two;
+    reg  head_rest$x$0;
+    reg  head_rest$x$1;
+    reg  head_rest$x$2;
+    reg  head_rest$x$3;
+    reg  head_rest$x$4;
+    reg  head_rest$x$5;
+    reg  head_rest$x$6;
+    reg  head_rest$x$7;
+    reg  head_rest$x$8;
+    reg  head_rest$x$9;
+    reg  head_rest$x$10;
+    reg  head_rest$x$11;
+    reg  head_rest$x$12;
+    reg  head_rest$x$13;
+    reg  head_rest$x$14;
+    reg  head_rest$x$15;
+    reg  head_rest$x$16;
+    reg  head_rest$x$17;
+    reg  head_rest$x$18;
+    reg  head_rest$x$19;
+    reg  head_rest$x$20;
+    wire  head_rest$any;
     reg  pending_prefix$x$0;
     reg  pending_prefix$x$1;
     reg  pending_prefix$x$2;
@@ -47101,220 +48777,120 @@ module fcc_sort_net__serializer_k7_668cf05b(clk,rst,head_valid,head,head_rep$0,h
         .q(pending$20$q),
         .clock(pending$20$clock)
     );
-    fcc_sort_net__serializer__selected__0_k7_668cf05b selected$0(
-        .d(selected$0$d),
-        .q(selected$0$q),
-        .clock(selected$0$clock)
+    fcc_sort_net__serializer__pick_q_k7_668cf05b pick_q(
+        .d(pick_q$d),
+        .q(pick_q$q),
+        .clock(pick_q$clock)
     );
-    fcc_sort_net__serializer__selected__1_k7_668cf05b selected$1(
-        .d(selected$1$d),
-        .q(selected$1$q),
-        .clock(selected$1$clock)
+    fcc_sort_net__serializer__sel_flip__0_k7_668cf05b sel_flip$0(
+        .d(sel_flip$0$d),
+        .q(sel_flip$0$q),
+        .clock(sel_flip$0$clock)
     );
-    fcc_sort_net__serializer__selected__2_k7_668cf05b selected$2(
-        .d(selected$2$d),
-        .q(selected$2$q),
-        .clock(selected$2$clock)
+    fcc_sort_net__serializer__sel_flip__1_k7_668cf05b sel_flip$1(
+        .d(sel_flip$1$d),
+        .q(sel_flip$1$q),
+        .clock(sel_flip$1$clock)
     );
-    fcc_sort_net__serializer__selected__3_k7_668cf05b selected$3(
-        .d(selected$3$d),
-        .q(selected$3$q),
-        .clock(selected$3$clock)
+    fcc_sort_net__serializer__sel_flip__2_k7_668cf05b sel_flip$2(
+        .d(sel_flip$2$d),
+        .q(sel_flip$2$q),
+        .clock(sel_flip$2$clock)
     );
-    fcc_sort_net__serializer__selected__4_k7_668cf05b selected$4(
-        .d(selected$4$d),
-        .q(selected$4$q),
-        .clock(selected$4$clock)
+    fcc_sort_net__serializer__sel_flip__3_k7_668cf05b sel_flip$3(
+        .d(sel_flip$3$d),
+        .q(sel_flip$3$q),
+        .clock(sel_flip$3$clock)
     );
-    fcc_sort_net__serializer__selected__5_k7_668cf05b selected$5(
-        .d(selected$5$d),
-        .q(selected$5$q),
-        .clock(selected$5$clock)
+    fcc_sort_net__serializer__sel_flip__4_k7_668cf05b sel_flip$4(
+        .d(sel_flip$4$d),
+        .q(sel_flip$4$q),
+        .clock(sel_flip$4$clock)
     );
-    fcc_sort_net__serializer__selected__6_k7_668cf05b selected$6(
-        .d(selected$6$d),
-        .q(selected$6$q),
-        .clock(selected$6$clock)
+    fcc_sort_net__serializer__sel_flip__5_k7_668cf05b sel_flip$5(
+        .d(sel_flip$5$d),
+        .q(sel_flip$5$q),
+        .clock(sel_flip$5$clock)
     );
-    fcc_sort_net__serializer__selected__7_k7_668cf05b selected$7(
-        .d(selected$7$d),
-        .q(selected$7$q),
-        .clock(selected$7$clock)
+    fcc_sort_net__serializer__sel_flip__6_k7_668cf05b sel_flip$6(
+        .d(sel_flip$6$d),
+        .q(sel_flip$6$q),
+        .clock(sel_flip$6$clock)
     );
-    fcc_sort_net__serializer__selected__8_k7_668cf05b selected$8(
-        .d(selected$8$d),
-        .q(selected$8$q),
-        .clock(selected$8$clock)
+    fcc_sort_net__serializer__sel_flip__7_k7_668cf05b sel_flip$7(
+        .d(sel_flip$7$d),
+        .q(sel_flip$7$q),
+        .clock(sel_flip$7$clock)
     );
-    fcc_sort_net__serializer__selected__9_k7_668cf05b selected$9(
-        .d(selected$9$d),
-        .q(selected$9$q),
-        .clock(selected$9$clock)
+    fcc_sort_net__serializer__sel_flip__8_k7_668cf05b sel_flip$8(
+        .d(sel_flip$8$d),
+        .q(sel_flip$8$q),
+        .clock(sel_flip$8$clock)
     );
-    fcc_sort_net__serializer__selected__10_k7_668cf05b selected$10(
-        .d(selected$10$d),
-        .q(selected$10$q),
-        .clock(selected$10$clock)
+    fcc_sort_net__serializer__sel_flip__9_k7_668cf05b sel_flip$9(
+        .d(sel_flip$9$d),
+        .q(sel_flip$9$q),
+        .clock(sel_flip$9$clock)
     );
-    fcc_sort_net__serializer__selected__11_k7_668cf05b selected$11(
-        .d(selected$11$d),
-        .q(selected$11$q),
-        .clock(selected$11$clock)
+    fcc_sort_net__serializer__sel_flip__10_k7_668cf05b sel_flip$10(
+        .d(sel_flip$10$d),
+        .q(sel_flip$10$q),
+        .clock(sel_flip$10$clock)
     );
-    fcc_sort_net__serializer__selected__12_k7_668cf05b selected$12(
-        .d(selected$12$d),
-        .q(selected$12$q),
-        .clock(selected$12$clock)
+    fcc_sort_net__serializer__sel_flip__11_k7_668cf05b sel_flip$11(
+        .d(sel_flip$11$d),
+        .q(sel_flip$11$q),
+        .clock(sel_flip$11$clock)
     );
-    fcc_sort_net__serializer__selected__13_k7_668cf05b selected$13(
-        .d(selected$13$d),
-        .q(selected$13$q),
-        .clock(selected$13$clock)
+    fcc_sort_net__serializer__sel_flip__12_k7_668cf05b sel_flip$12(
+        .d(sel_flip$12$d),
+        .q(sel_flip$12$q),
+        .clock(sel_flip$12$clock)
     );
-    fcc_sort_net__serializer__selected__14_k7_668cf05b selected$14(
-        .d(selected$14$d),
-        .q(selected$14$q),
-        .clock(selected$14$clock)
+    fcc_sort_net__serializer__sel_flip__13_k7_668cf05b sel_flip$13(
+        .d(sel_flip$13$d),
+        .q(sel_flip$13$q),
+        .clock(sel_flip$13$clock)
     );
-    fcc_sort_net__serializer__selected__15_k7_668cf05b selected$15(
-        .d(selected$15$d),
-        .q(selected$15$q),
-        .clock(selected$15$clock)
+    fcc_sort_net__serializer__sel_flip__14_k7_668cf05b sel_flip$14(
+        .d(sel_flip$14$d),
+        .q(sel_flip$14$q),
+        .clock(sel_flip$14$clock)
     );
-    fcc_sort_net__serializer__selected__16_k7_668cf05b selected$16(
-        .d(selected$16$d),
-        .q(selected$16$q),
-        .clock(selected$16$clock)
+    fcc_sort_net__serializer__sel_flip__15_k7_668cf05b sel_flip$15(
+        .d(sel_flip$15$d),
+        .q(sel_flip$15$q),
+        .clock(sel_flip$15$clock)
     );
-    fcc_sort_net__serializer__selected__17_k7_668cf05b selected$17(
-        .d(selected$17$d),
-        .q(selected$17$q),
-        .clock(selected$17$clock)
+    fcc_sort_net__serializer__sel_flip__16_k7_668cf05b sel_flip$16(
+        .d(sel_flip$16$d),
+        .q(sel_flip$16$q),
+        .clock(sel_flip$16$clock)
     );
-    fcc_sort_net__serializer__selected__18_k7_668cf05b selected$18(
-        .d(selected$18$d),
-        .q(selected$18$q),
-        .clock(selected$18$clock)
+    fcc_sort_net__serializer__sel_flip__17_k7_668cf05b sel_flip$17(
+        .d(sel_flip$17$d),
+        .q(sel_flip$17$q),
+        .clock(sel_flip$17$clock)
     );
-    fcc_sort_net__serializer__selected__19_k7_668cf05b selected$19(
-        .d(selected$19$d),
-        .q(selected$19$q),
-        .clock(selected$19$clock)
+    fcc_sort_net__serializer__sel_flip__18_k7_668cf05b sel_flip$18(
+        .d(sel_flip$18$d),
+        .q(sel_flip$18$q),
+        .clock(sel_flip$18$clock)
     );
-    fcc_sort_net__serializer__selected__20_k7_668cf05b selected$20(
-        .d(selected$20$d),
-        .q(selected$20$q),
-        .clock(selected$20$clock)
+    fcc_sort_net__serializer__sel_flip__19_k7_668cf05b sel_flip$19(
+        .d(sel_flip$19$d),
+        .q(sel_flip$19$q),
+        .clock(sel_flip$19$clock)
+    );
+    fcc_sort_net__serializer__sel_flip__20_k7_668cf05b sel_flip$20(
+        .d(sel_flip$20$d),
+        .q(sel_flip$20$q),
+        .clock(sel_flip$20$clock)
     );
     fcc_sort_net__serializer__more_pending_k7_668cf05b more_pending(
         .d(more_pending$d),
         .q(more_pending$q),
         .clock(more_pending$clock)
-    );
-    fcc_sort_net__serializer__pending_earlier__0_k7_668cf05b pending_earlier$0(
-        .d(pending_earlier$0$d),
-        .q(pending_earlier$0$q),
-        .clock(pending_earlier$0$clock)
-    );
-    fcc_sort_net__serializer__pending_earlier__1_k7_668cf05b pending_earlier$1(
-        .d(pending_earlier$1$d),
-        .q(pending_earlier$1$q),
-        .clock(pending_earlier$1$clock)
-    );
-    fcc_sort_net__serializer__pending_earlier__2_k7_668cf05b pending_earlier$2(
-        .d(pending_earlier$2$d),
-        .q(pending_earlier$2$q),
-        .clock(pending_earlier$2$clock)
-    );
-    fcc_sort_net__serializer__pending_earlier__3_k7_668cf05b pending_earlier$3(
-        .d(pending_earlier$3$d),
-        .q(pending_earlier$3$q),
-        .clock(pending_earlier$3$clock)
-    );
-    fcc_sort_net__serializer__pending_earlier__4_k7_668cf05b pending_earlier$4(
-        .d(pending_earlier$4$d),
-        .q(pending_earlier$4$q),
-        .clock(pending_earlier$4$clock)
-    );
-    fcc_sort_net__serializer__pending_earlier__5_k7_668cf05b pending_earlier$5(
-        .d(pending_earlier$5$d),
-        .q(pending_earlier$5$q),
-        .clock(pending_earlier$5$clock)
-    );
-    fcc_sort_net__serializer__pending_earlier__6_k7_668cf05b pending_earlier$6(
-        .d(pending_earlier$6$d),
-        .q(pending_earlier$6$q),
-        .clock(pending_earlier$6$clock)
-    );
-    fcc_sort_net__serializer__pending_earlier__7_k7_668cf05b pending_earlier$7(
-        .d(pending_earlier$7$d),
-        .q(pending_earlier$7$q),
-        .clock(pending_earlier$7$clock)
-    );
-    fcc_sort_net__serializer__pending_earlier__8_k7_668cf05b pending_earlier$8(
-        .d(pending_earlier$8$d),
-        .q(pending_earlier$8$q),
-        .clock(pending_earlier$8$clock)
-    );
-    fcc_sort_net__serializer__pending_earlier__9_k7_668cf05b pending_earlier$9(
-        .d(pending_earlier$9$d),
-        .q(pending_earlier$9$q),
-        .clock(pending_earlier$9$clock)
-    );
-    fcc_sort_net__serializer__pending_earlier__10_k7_668cf05b pending_earlier$10(
-        .d(pending_earlier$10$d),
-        .q(pending_earlier$10$q),
-        .clock(pending_earlier$10$clock)
-    );
-    fcc_sort_net__serializer__pending_earlier__11_k7_668cf05b pending_earlier$11(
-        .d(pending_earlier$11$d),
-        .q(pending_earlier$11$q),
-        .clock(pending_earlier$11$clock)
-    );
-    fcc_sort_net__serializer__pending_earlier__12_k7_668cf05b pending_earlier$12(
-        .d(pending_earlier$12$d),
-        .q(pending_earlier$12$q),
-        .clock(pending_earlier$12$clock)
-    );
-    fcc_sort_net__serializer__pending_earlier__13_k7_668cf05b pending_earlier$13(
-        .d(pending_earlier$13$d),
-        .q(pending_earlier$13$q),
-        .clock(pending_earlier$13$clock)
-    );
-    fcc_sort_net__serializer__pending_earlier__14_k7_668cf05b pending_earlier$14(
-        .d(pending_earlier$14$d),
-        .q(pending_earlier$14$q),
-        .clock(pending_earlier$14$clock)
-    );
-    fcc_sort_net__serializer__pending_earlier__15_k7_668cf05b pending_earlier$15(
-        .d(pending_earlier$15$d),
-        .q(pending_earlier$15$q),
-        .clock(pending_earlier$15$clock)
-    );
-    fcc_sort_net__serializer__pending_earlier__16_k7_668cf05b pending_earlier$16(
-        .d(pending_earlier$16$d),
-        .q(pending_earlier$16$q),
-        .clock(pending_earlier$16$clock)
-    );
-    fcc_sort_net__serializer__pending_earlier__17_k7_668cf05b pending_earlier$17(
-        .d(pending_earlier$17$d),
-        .q(pending_earlier$17$q),
-        .clock(pending_earlier$17$clock)
-    );
-    fcc_sort_net__serializer__pending_earlier__18_k7_668cf05b pending_earlier$18(
-        .d(pending_earlier$18$d),
-        .q(pending_earlier$18$q),
-        .clock(pending_earlier$18$clock)
-    );
-    fcc_sort_net__serializer__pending_earlier__19_k7_668cf05b pending_earlier$19(
-        .d(pending_earlier$19$d),
-        .q(pending_earlier$19$q),
-        .clock(pending_earlier$19$clock)
-    );
-    fcc_sort_net__serializer__pending_earlier__20_k7_668cf05b pending_earlier$20(
-        .d(pending_earlier$20$d),
-        .q(pending_earlier$20$q),
-        .clock(pending_earlier$20$clock)
     );
     fcc_sort_net__serializer__pending_two_k7_668cf05b pending_two(
         .d(pending_two$d),
@@ -47361,50 +48937,6 @@ module fcc_sort_net__serializer_k7_668cf05b(clk,rst,head_valid,head,head_rep$0,h
         .q(last_done_q$q),
         .clock(last_done_q$clock)
     );
-    fcc_sort_net__serializer__head_earlier_k7_668cf05b head_earlier(
-        .x$0(head_earlier$x$0),
-        .x$1(head_earlier$x$1),
-        .x$2(head_earlier$x$2),
-        .x$3(head_earlier$x$3),
-        .x$4(head_earlier$x$4),
-        .x$5(head_earlier$x$5),
-        .x$6(head_earlier$x$6),
-        .x$7(head_earlier$x$7),
-        .x$8(head_earlier$x$8),
-        .x$9(head_earlier$x$9),
-        .x$10(head_earlier$x$10),
-        .x$11(head_earlier$x$11),
-        .x$12(head_earlier$x$12),
-        .x$13(head_earlier$x$13),
-        .x$14(head_earlier$x$14),
-        .x$15(head_earlier$x$15),
-        .x$16(head_earlier$x$16),
-        .x$17(head_earlier$x$17),
-        .x$18(head_earlier$x$18),
-        .x$19(head_earlier$x$19),
-        .x$20(head_earlier$x$20),
-        .pre$0(head_earlier$pre$0),
-        .pre$1(head_earlier$pre$1),
-        .pre$2(head_earlier$pre$2),
-        .pre$3(head_earlier$pre$3),
-        .pre$4(head_earlier$pre$4),
-        .pre$5(head_earlier$pre$5),
-        .pre$6(head_earlier$pre$6),
-        .pre$7(head_earlier$pre$7),
-        .pre$8(head_earlier$pre$8),
-        .pre$9(head_earlier$pre$9),
-        .pre$10(head_earlier$pre$10),
-        .pre$11(head_earlier$pre$11),
-        .pre$12(head_earlier$pre$12),
-        .pre$13(head_earlier$pre$13),
-        .pre$14(head_earlier$pre$14),
-        .pre$15(head_earlier$pre$15),
-        .pre$16(head_earlier$pre$16),
-        .pre$17(head_earlier$pre$17),
-        .pre$18(head_earlier$pre$18),
-        .pre$19(head_earlier$pre$19),
-        .pre$20(head_earlier$pre$20)
-    );
     fcc_sort_net__serializer__head_any_k7_668cf05b head_any(
         .x$0(head_any$x$0),
         .x$1(head_any$x$1),
@@ -47429,29 +48961,29 @@ module fcc_sort_net__serializer_k7_668cf05b(clk,rst,head_valid,head,head_rep$0,h
         .x$20(head_any$x$20),
         .any(head_any$any)
     );
-    fcc_sort_net__serializer__head_two_k7_668cf05b head_two(
-        .x$0(head_two$x$0),
-        .x$1(head_two$x$1),
-        .x$2(head_two$x$2),
-        .x$3(head_two$x$3),
-        .x$4(head_two$x$4),
-        .x$5(head_two$x$5),
-        .x$6(head_two$x$6),
-        .x$7(head_two$x$7),
-        .x$8(head_two$x$8),
-        .x$9(head_two$x$9),
-        .x$10(head_two$x$10),
-        .x$11(head_two$x$11),
-        .x$12(head_two$x$12),
-        .x$13(head_two$x$13),
-        .x$14(head_two$x$14),
-        .x$15(head_two$x$15),
-        .x$16(head_two$x$16),
-        .x$17(head_two$x$17),
-        .x$18(head_two$x$18),
-        .x$19(head_two$x$19),
-        .x$20(head_two$x$20),
-        .two(head_two$two)
+    fcc_sort_net__serializer__head_rest_k7_668cf05b head_rest(
+        .x$0(head_rest$x$0),
+        .x$1(head_rest$x$1),
+        .x$2(head_rest$x$2),
+        .x$3(head_rest$x$3),
+        .x$4(head_rest$x$4),
+        .x$5(head_rest$x$5),
+        .x$6(head_rest$x$6),
+        .x$7(head_rest$x$7),
+        .x$8(head_rest$x$8),
+        .x$9(head_rest$x$9),
+        .x$10(head_rest$x$10),
+        .x$11(head_rest$x$11),
+        .x$12(head_rest$x$12),
+        .x$13(head_rest$x$13),
+        .x$14(head_rest$x$14),
+        .x$15(head_rest$x$15),
+        .x$16(head_rest$x$16),
+        .x$17(head_rest$x$17),
+        .x$18(head_rest$x$18),
+        .x$19(head_rest$x$19),
+        .x$20(head_rest$x$20),
+        .any(head_rest$any)
     );
     fcc_sort_net__serializer__pending_prefix_k7_668cf05b pending_prefix(
         .x$0(pending_prefix$x$0),
@@ -47571,6 +49103,7 @@ module fcc_sort_net__serializer_k7_668cf05b(clk,rst,head_valid,head,head_rep$0,h
     always @(*) begin
         loaded$clock = clk;
         phase$clock = clk;
+        pick_q$clock = clk;
         more_pending$clock = clk;
         pending_two$clock = clk;
         ring_pending$clock = clk;
@@ -47583,6 +49116,7 @@ module fcc_sort_net__serializer_k7_668cf05b(clk,rst,head_valid,head,head_rep$0,h
         last_done_q$clock = clk;
         loaded$d = loaded$q;
         phase$d = phase$q;
+        pick_q$d = pick_q$q;
         more_pending$d = more_pending$q;
         pending_two$d = pending_two$q;
         ring_pending$d = ring_pending$q;
@@ -47594,334 +49128,259 @@ module fcc_sort_net__serializer_k7_668cf05b(clk,rst,head_valid,head,head_rep$0,h
         ring_same_prev$d = ring_same_prev$q;
         last_done_q$d = last_done_q$q;
         pending$0$clock = clk;
-        selected$0$clock = clk;
-        pending_earlier$0$clock = clk;
         pending$0$d = pending$0$q;
-        selected$0$d = selected$0$q;
-        head_earlier$x$0 = head_keep$0;
         head_any$x$0 = head_keep$0;
-        head_two$x$0 = head_keep$0;
+        head_rest$x$0 = head_keep$0 & ~head_first$0;
         pending_prefix$x$0 = pending$0$q;
         pending_two_or$x$0 = pending$0$q;
-        pending_earlier$0$d = pending_prefix$pre$0;
-        pick$sel$0 = selected$0$q;
+        sel_flip$0$clock = clk;
+        sel_flip$0$d = loaded$q & (head_first$0 ^ (pending$0$q & ~pending_prefix$pre$0));
+        pick$sel$0 = head_first$0 ^ sel_flip$0$q;
         pick$v$0 = head_rep$0;
         pending$1$clock = clk;
-        selected$1$clock = clk;
-        pending_earlier$1$clock = clk;
         pending$1$d = pending$1$q;
-        selected$1$d = selected$1$q;
-        head_earlier$x$1 = head_keep$1;
         head_any$x$1 = head_keep$1;
-        head_two$x$1 = head_keep$1;
+        head_rest$x$1 = head_keep$1 & ~head_first$1;
         pending_prefix$x$1 = pending$1$q;
         pending_two_or$x$1 = pending$1$q;
-        pending_earlier$1$d = pending_prefix$pre$1;
-        pick$sel$1 = selected$1$q;
+        sel_flip$1$clock = clk;
+        sel_flip$1$d = loaded$q & (head_first$1 ^ (pending$1$q & ~pending_prefix$pre$1));
+        pick$sel$1 = head_first$1 ^ sel_flip$1$q;
         pick$v$1 = head_rep$1;
         pending$2$clock = clk;
-        selected$2$clock = clk;
-        pending_earlier$2$clock = clk;
         pending$2$d = pending$2$q;
-        selected$2$d = selected$2$q;
-        head_earlier$x$2 = head_keep$2;
         head_any$x$2 = head_keep$2;
-        head_two$x$2 = head_keep$2;
+        head_rest$x$2 = head_keep$2 & ~head_first$2;
         pending_prefix$x$2 = pending$2$q;
         pending_two_or$x$2 = pending$2$q;
-        pending_earlier$2$d = pending_prefix$pre$2;
-        pick$sel$2 = selected$2$q;
+        sel_flip$2$clock = clk;
+        sel_flip$2$d = loaded$q & (head_first$2 ^ (pending$2$q & ~pending_prefix$pre$2));
+        pick$sel$2 = head_first$2 ^ sel_flip$2$q;
         pick$v$2 = head_rep$2;
         pending$3$clock = clk;
-        selected$3$clock = clk;
-        pending_earlier$3$clock = clk;
         pending$3$d = pending$3$q;
-        selected$3$d = selected$3$q;
-        head_earlier$x$3 = head_keep$3;
         head_any$x$3 = head_keep$3;
-        head_two$x$3 = head_keep$3;
+        head_rest$x$3 = head_keep$3 & ~head_first$3;
         pending_prefix$x$3 = pending$3$q;
         pending_two_or$x$3 = pending$3$q;
-        pending_earlier$3$d = pending_prefix$pre$3;
-        pick$sel$3 = selected$3$q;
+        sel_flip$3$clock = clk;
+        sel_flip$3$d = loaded$q & (head_first$3 ^ (pending$3$q & ~pending_prefix$pre$3));
+        pick$sel$3 = head_first$3 ^ sel_flip$3$q;
         pick$v$3 = head_rep$3;
         pending$4$clock = clk;
-        selected$4$clock = clk;
-        pending_earlier$4$clock = clk;
         pending$4$d = pending$4$q;
-        selected$4$d = selected$4$q;
-        head_earlier$x$4 = head_keep$4;
         head_any$x$4 = head_keep$4;
-        head_two$x$4 = head_keep$4;
+        head_rest$x$4 = head_keep$4 & ~head_first$4;
         pending_prefix$x$4 = pending$4$q;
         pending_two_or$x$4 = pending$4$q;
-        pending_earlier$4$d = pending_prefix$pre$4;
-        pick$sel$4 = selected$4$q;
+        sel_flip$4$clock = clk;
+        sel_flip$4$d = loaded$q & (head_first$4 ^ (pending$4$q & ~pending_prefix$pre$4));
+        pick$sel$4 = head_first$4 ^ sel_flip$4$q;
         pick$v$4 = head_rep$4;
         pending$5$clock = clk;
-        selected$5$clock = clk;
-        pending_earlier$5$clock = clk;
         pending$5$d = pending$5$q;
-        selected$5$d = selected$5$q;
-        head_earlier$x$5 = head_keep$5;
         head_any$x$5 = head_keep$5;
-        head_two$x$5 = head_keep$5;
+        head_rest$x$5 = head_keep$5 & ~head_first$5;
         pending_prefix$x$5 = pending$5$q;
         pending_two_or$x$5 = pending$5$q;
-        pending_earlier$5$d = pending_prefix$pre$5;
-        pick$sel$5 = selected$5$q;
+        sel_flip$5$clock = clk;
+        sel_flip$5$d = loaded$q & (head_first$5 ^ (pending$5$q & ~pending_prefix$pre$5));
+        pick$sel$5 = head_first$5 ^ sel_flip$5$q;
         pick$v$5 = head_rep$5;
         pending$6$clock = clk;
-        selected$6$clock = clk;
-        pending_earlier$6$clock = clk;
         pending$6$d = pending$6$q;
-        selected$6$d = selected$6$q;
-        head_earlier$x$6 = head_keep$6;
         head_any$x$6 = head_keep$6;
-        head_two$x$6 = head_keep$6;
+        head_rest$x$6 = head_keep$6 & ~head_first$6;
         pending_prefix$x$6 = pending$6$q;
         pending_two_or$x$6 = pending$6$q;
-        pending_earlier$6$d = pending_prefix$pre$6;
-        pick$sel$6 = selected$6$q;
+        sel_flip$6$clock = clk;
+        sel_flip$6$d = loaded$q & (head_first$6 ^ (pending$6$q & ~pending_prefix$pre$6));
+        pick$sel$6 = head_first$6 ^ sel_flip$6$q;
         pick$v$6 = head_rep$6;
         pending$7$clock = clk;
-        selected$7$clock = clk;
-        pending_earlier$7$clock = clk;
         pending$7$d = pending$7$q;
-        selected$7$d = selected$7$q;
-        head_earlier$x$7 = head_keep$7;
         head_any$x$7 = head_keep$7;
-        head_two$x$7 = head_keep$7;
+        head_rest$x$7 = head_keep$7 & ~head_first$7;
         pending_prefix$x$7 = pending$7$q;
         pending_two_or$x$7 = pending$7$q;
-        pending_earlier$7$d = pending_prefix$pre$7;
-        pick$sel$7 = selected$7$q;
+        sel_flip$7$clock = clk;
+        sel_flip$7$d = loaded$q & (head_first$7 ^ (pending$7$q & ~pending_prefix$pre$7));
+        pick$sel$7 = head_first$7 ^ sel_flip$7$q;
         pick$v$7 = head_rep$7;
         pending$8$clock = clk;
-        selected$8$clock = clk;
-        pending_earlier$8$clock = clk;
         pending$8$d = pending$8$q;
-        selected$8$d = selected$8$q;
-        head_earlier$x$8 = head_keep$8;
         head_any$x$8 = head_keep$8;
-        head_two$x$8 = head_keep$8;
+        head_rest$x$8 = head_keep$8 & ~head_first$8;
         pending_prefix$x$8 = pending$8$q;
         pending_two_or$x$8 = pending$8$q;
-        pending_earlier$8$d = pending_prefix$pre$8;
-        pick$sel$8 = selected$8$q;
+        sel_flip$8$clock = clk;
+        sel_flip$8$d = loaded$q & (head_first$8 ^ (pending$8$q & ~pending_prefix$pre$8));
+        pick$sel$8 = head_first$8 ^ sel_flip$8$q;
         pick$v$8 = head_rep$8;
         pending$9$clock = clk;
-        selected$9$clock = clk;
-        pending_earlier$9$clock = clk;
         pending$9$d = pending$9$q;
-        selected$9$d = selected$9$q;
-        head_earlier$x$9 = head_keep$9;
         head_any$x$9 = head_keep$9;
-        head_two$x$9 = head_keep$9;
+        head_rest$x$9 = head_keep$9 & ~head_first$9;
         pending_prefix$x$9 = pending$9$q;
         pending_two_or$x$9 = pending$9$q;
-        pending_earlier$9$d = pending_prefix$pre$9;
-        pick$sel$9 = selected$9$q;
+        sel_flip$9$clock = clk;
+        sel_flip$9$d = loaded$q & (head_first$9 ^ (pending$9$q & ~pending_prefix$pre$9));
+        pick$sel$9 = head_first$9 ^ sel_flip$9$q;
         pick$v$9 = head_rep$9;
         pending$10$clock = clk;
-        selected$10$clock = clk;
-        pending_earlier$10$clock = clk;
         pending$10$d = pending$10$q;
-        selected$10$d = selected$10$q;
-        head_earlier$x$10 = head_keep$10;
         head_any$x$10 = head_keep$10;
-        head_two$x$10 = head_keep$10;
+        head_rest$x$10 = head_keep$10 & ~head_first$10;
         pending_prefix$x$10 = pending$10$q;
         pending_two_or$x$10 = pending$10$q;
-        pending_earlier$10$d = pending_prefix$pre$10;
-        pick$sel$10 = selected$10$q;
+        sel_flip$10$clock = clk;
+        sel_flip$10$d = loaded$q & (head_first$10 ^ (pending$10$q & ~pending_prefix$pre$10));
+        pick$sel$10 = head_first$10 ^ sel_flip$10$q;
         pick$v$10 = head_rep$10;
         pending$11$clock = clk;
-        selected$11$clock = clk;
-        pending_earlier$11$clock = clk;
         pending$11$d = pending$11$q;
-        selected$11$d = selected$11$q;
-        head_earlier$x$11 = head_keep$11;
         head_any$x$11 = head_keep$11;
-        head_two$x$11 = head_keep$11;
+        head_rest$x$11 = head_keep$11 & ~head_first$11;
         pending_prefix$x$11 = pending$11$q;
         pending_two_or$x$11 = pending$11$q;
-        pending_earlier$11$d = pending_prefix$pre$11;
-        pick$sel$11 = selected$11$q;
+        sel_flip$11$clock = clk;
+        sel_flip$11$d = loaded$q & (head_first$11 ^ (pending$11$q & ~pending_prefix$pre$11));
+        pick$sel$11 = head_first$11 ^ sel_flip$11$q;
         pick$v$11 = head_rep$11;
         pending$12$clock = clk;
-        selected$12$clock = clk;
-        pending_earlier$12$clock = clk;
         pending$12$d = pending$12$q;
-        selected$12$d = selected$12$q;
-        head_earlier$x$12 = head_keep$12;
         head_any$x$12 = head_keep$12;
-        head_two$x$12 = head_keep$12;
+        head_rest$x$12 = head_keep$12 & ~head_first$12;
         pending_prefix$x$12 = pending$12$q;
         pending_two_or$x$12 = pending$12$q;
-        pending_earlier$12$d = pending_prefix$pre$12;
-        pick$sel$12 = selected$12$q;
+        sel_flip$12$clock = clk;
+        sel_flip$12$d = loaded$q & (head_first$12 ^ (pending$12$q & ~pending_prefix$pre$12));
+        pick$sel$12 = head_first$12 ^ sel_flip$12$q;
         pick$v$12 = head_rep$12;
         pending$13$clock = clk;
-        selected$13$clock = clk;
-        pending_earlier$13$clock = clk;
         pending$13$d = pending$13$q;
-        selected$13$d = selected$13$q;
-        head_earlier$x$13 = head_keep$13;
         head_any$x$13 = head_keep$13;
-        head_two$x$13 = head_keep$13;
+        head_rest$x$13 = head_keep$13 & ~head_first$13;
         pending_prefix$x$13 = pending$13$q;
         pending_two_or$x$13 = pending$13$q;
-        pending_earlier$13$d = pending_prefix$pre$13;
-        pick$sel$13 = selected$13$q;
+        sel_flip$13$clock = clk;
+        sel_flip$13$d = loaded$q & (head_first$13 ^ (pending$13$q & ~pending_prefix$pre$13));
+        pick$sel$13 = head_first$13 ^ sel_flip$13$q;
         pick$v$13 = head_rep$13;
         pending$14$clock = clk;
-        selected$14$clock = clk;
-        pending_earlier$14$clock = clk;
         pending$14$d = pending$14$q;
-        selected$14$d = selected$14$q;
-        head_earlier$x$14 = head_keep$14;
         head_any$x$14 = head_keep$14;
-        head_two$x$14 = head_keep$14;
+        head_rest$x$14 = head_keep$14 & ~head_first$14;
         pending_prefix$x$14 = pending$14$q;
         pending_two_or$x$14 = pending$14$q;
-        pending_earlier$14$d = pending_prefix$pre$14;
-        pick$sel$14 = selected$14$q;
+        sel_flip$14$clock = clk;
+        sel_flip$14$d = loaded$q & (head_first$14 ^ (pending$14$q & ~pending_prefix$pre$14));
+        pick$sel$14 = head_first$14 ^ sel_flip$14$q;
         pick$v$14 = head_rep$14;
         pending$15$clock = clk;
-        selected$15$clock = clk;
-        pending_earlier$15$clock = clk;
         pending$15$d = pending$15$q;
-        selected$15$d = selected$15$q;
-        head_earlier$x$15 = head_keep$15;
         head_any$x$15 = head_keep$15;
-        head_two$x$15 = head_keep$15;
+        head_rest$x$15 = head_keep$15 & ~head_first$15;
         pending_prefix$x$15 = pending$15$q;
         pending_two_or$x$15 = pending$15$q;
-        pending_earlier$15$d = pending_prefix$pre$15;
-        pick$sel$15 = selected$15$q;
+        sel_flip$15$clock = clk;
+        sel_flip$15$d = loaded$q & (head_first$15 ^ (pending$15$q & ~pending_prefix$pre$15));
+        pick$sel$15 = head_first$15 ^ sel_flip$15$q;
         pick$v$15 = head_rep$15;
         pending$16$clock = clk;
-        selected$16$clock = clk;
-        pending_earlier$16$clock = clk;
         pending$16$d = pending$16$q;
-        selected$16$d = selected$16$q;
-        head_earlier$x$16 = head_keep$16;
         head_any$x$16 = head_keep$16;
-        head_two$x$16 = head_keep$16;
+        head_rest$x$16 = head_keep$16 & ~head_first$16;
         pending_prefix$x$16 = pending$16$q;
         pending_two_or$x$16 = pending$16$q;
-        pending_earlier$16$d = pending_prefix$pre$16;
-        pick$sel$16 = selected$16$q;
+        sel_flip$16$clock = clk;
+        sel_flip$16$d = loaded$q & (head_first$16 ^ (pending$16$q & ~pending_prefix$pre$16));
+        pick$sel$16 = head_first$16 ^ sel_flip$16$q;
         pick$v$16 = head_rep$16;
         pending$17$clock = clk;
-        selected$17$clock = clk;
-        pending_earlier$17$clock = clk;
         pending$17$d = pending$17$q;
-        selected$17$d = selected$17$q;
-        head_earlier$x$17 = head_keep$17;
         head_any$x$17 = head_keep$17;
-        head_two$x$17 = head_keep$17;
+        head_rest$x$17 = head_keep$17 & ~head_first$17;
         pending_prefix$x$17 = pending$17$q;
         pending_two_or$x$17 = pending$17$q;
-        pending_earlier$17$d = pending_prefix$pre$17;
-        pick$sel$17 = selected$17$q;
+        sel_flip$17$clock = clk;
+        sel_flip$17$d = loaded$q & (head_first$17 ^ (pending$17$q & ~pending_prefix$pre$17));
+        pick$sel$17 = head_first$17 ^ sel_flip$17$q;
         pick$v$17 = head_rep$17;
         pending$18$clock = clk;
-        selected$18$clock = clk;
-        pending_earlier$18$clock = clk;
         pending$18$d = pending$18$q;
-        selected$18$d = selected$18$q;
-        head_earlier$x$18 = head_keep$18;
         head_any$x$18 = head_keep$18;
-        head_two$x$18 = head_keep$18;
+        head_rest$x$18 = head_keep$18 & ~head_first$18;
         pending_prefix$x$18 = pending$18$q;
         pending_two_or$x$18 = pending$18$q;
-        pending_earlier$18$d = pending_prefix$pre$18;
-        pick$sel$18 = selected$18$q;
+        sel_flip$18$clock = clk;
+        sel_flip$18$d = loaded$q & (head_first$18 ^ (pending$18$q & ~pending_prefix$pre$18));
+        pick$sel$18 = head_first$18 ^ sel_flip$18$q;
         pick$v$18 = head_rep$18;
         pending$19$clock = clk;
-        selected$19$clock = clk;
-        pending_earlier$19$clock = clk;
         pending$19$d = pending$19$q;
-        selected$19$d = selected$19$q;
-        head_earlier$x$19 = head_keep$19;
         head_any$x$19 = head_keep$19;
-        head_two$x$19 = head_keep$19;
+        head_rest$x$19 = head_keep$19 & ~head_first$19;
         pending_prefix$x$19 = pending$19$q;
         pending_two_or$x$19 = pending$19$q;
-        pending_earlier$19$d = pending_prefix$pre$19;
-        pick$sel$19 = selected$19$q;
+        sel_flip$19$clock = clk;
+        sel_flip$19$d = loaded$q & (head_first$19 ^ (pending$19$q & ~pending_prefix$pre$19));
+        pick$sel$19 = head_first$19 ^ sel_flip$19$q;
         pick$v$19 = head_rep$19;
         pending$20$clock = clk;
-        selected$20$clock = clk;
-        pending_earlier$20$clock = clk;
         pending$20$d = pending$20$q;
-        selected$20$d = selected$20$q;
-        head_earlier$x$20 = head_keep$20;
         head_any$x$20 = head_keep$20;
-        head_two$x$20 = head_keep$20;
+        head_rest$x$20 = head_keep$20 & ~head_first$20;
         pending_prefix$x$20 = pending$20$q;
         pending_two_or$x$20 = pending$20$q;
-        pending_earlier$20$d = pending_prefix$pre$20;
-        pick$sel$20 = selected$20$q;
+        sel_flip$20$clock = clk;
+        sel_flip$20$d = loaded$q & (head_first$20 ^ (pending$20$q & ~pending_prefix$pre$20));
+        pick$sel$20 = head_first$20 ^ sel_flip$20$q;
         pick$v$20 = head_rep$20;
         pending_two$d = pending_two_or$two;
         join_push = 1'b0;
         join_rec[15:0] = head[15:0];
-        join_rec[31:16] = pick$o;
+        join_rec[31:16] = pick_q$q;
         join_rec[32:32] = centre_same$q | emitted$q;
+        if (phase$q == SerPhase$Ring) begin
+            join_rec[15:0] = head[31:16];
+            join_rec[31:16] = head[47:32];
+            join_rec[32:32] = ring_same_prev$q;
+            if (emitted$q) begin
+                join_rec[32:32] = ring_same_centre$q;
+            end
+        end
         done = 1'b0;
         if (~loaded$q & head_valid) begin
             loaded$d = 1'b1;
-            more_pending$d = head_two$two;
+            more_pending$d = head_rest$any;
             ring_pending$d = head[48:48];
             centre_same$d = prev_a_valid$q & (head[15:0] == prev_a$q);
             ring_same_centre$d = head[31:16] == head[15:0];
             ring_same_prev$d = prev_a_valid$q & (head[31:16] == prev_a$q);
             emitted$d = 1'b0;
-            selected$0$d = head_keep$0 & ~head_earlier$pre$0;
-            pending$0$d = head_keep$0 & head_earlier$pre$0;
-            selected$1$d = head_keep$1 & ~head_earlier$pre$1;
-            pending$1$d = head_keep$1 & head_earlier$pre$1;
-            selected$2$d = head_keep$2 & ~head_earlier$pre$2;
-            pending$2$d = head_keep$2 & head_earlier$pre$2;
-            selected$3$d = head_keep$3 & ~head_earlier$pre$3;
-            pending$3$d = head_keep$3 & head_earlier$pre$3;
-            selected$4$d = head_keep$4 & ~head_earlier$pre$4;
-            pending$4$d = head_keep$4 & head_earlier$pre$4;
-            selected$5$d = head_keep$5 & ~head_earlier$pre$5;
-            pending$5$d = head_keep$5 & head_earlier$pre$5;
-            selected$6$d = head_keep$6 & ~head_earlier$pre$6;
-            pending$6$d = head_keep$6 & head_earlier$pre$6;
-            selected$7$d = head_keep$7 & ~head_earlier$pre$7;
-            pending$7$d = head_keep$7 & head_earlier$pre$7;
-            selected$8$d = head_keep$8 & ~head_earlier$pre$8;
-            pending$8$d = head_keep$8 & head_earlier$pre$8;
-            selected$9$d = head_keep$9 & ~head_earlier$pre$9;
-            pending$9$d = head_keep$9 & head_earlier$pre$9;
-            selected$10$d = head_keep$10 & ~head_earlier$pre$10;
-            pending$10$d = head_keep$10 & head_earlier$pre$10;
-            selected$11$d = head_keep$11 & ~head_earlier$pre$11;
-            pending$11$d = head_keep$11 & head_earlier$pre$11;
-            selected$12$d = head_keep$12 & ~head_earlier$pre$12;
-            pending$12$d = head_keep$12 & head_earlier$pre$12;
-            selected$13$d = head_keep$13 & ~head_earlier$pre$13;
-            pending$13$d = head_keep$13 & head_earlier$pre$13;
-            selected$14$d = head_keep$14 & ~head_earlier$pre$14;
-            pending$14$d = head_keep$14 & head_earlier$pre$14;
-            selected$15$d = head_keep$15 & ~head_earlier$pre$15;
-            pending$15$d = head_keep$15 & head_earlier$pre$15;
-            selected$16$d = head_keep$16 & ~head_earlier$pre$16;
-            pending$16$d = head_keep$16 & head_earlier$pre$16;
-            selected$17$d = head_keep$17 & ~head_earlier$pre$17;
-            pending$17$d = head_keep$17 & head_earlier$pre$17;
-            selected$18$d = head_keep$18 & ~head_earlier$pre$18;
-            pending$18$d = head_keep$18 & head_earlier$pre$18;
-            selected$19$d = head_keep$19 & ~head_earlier$pre$19;
-            pending$19$d = head_keep$19 & head_earlier$pre$19;
-            selected$20$d = head_keep$20 & ~head_earlier$pre$20;
-            pending$20$d = head_keep$20 & head_earlier$pre$20;
+            pick_q$d = pick$o;
+            pending$0$d = head_keep$0 & ~head_first$0;
+            pending$1$d = head_keep$1 & ~head_first$1;
+            pending$2$d = head_keep$2 & ~head_first$2;
+            pending$3$d = head_keep$3 & ~head_first$3;
+            pending$4$d = head_keep$4 & ~head_first$4;
+            pending$5$d = head_keep$5 & ~head_first$5;
+            pending$6$d = head_keep$6 & ~head_first$6;
+            pending$7$d = head_keep$7 & ~head_first$7;
+            pending$8$d = head_keep$8 & ~head_first$8;
+            pending$9$d = head_keep$9 & ~head_first$9;
+            pending$10$d = head_keep$10 & ~head_first$10;
+            pending$11$d = head_keep$11 & ~head_first$11;
+            pending$12$d = head_keep$12 & ~head_first$12;
+            pending$13$d = head_keep$13 & ~head_first$13;
+            pending$14$d = head_keep$14 & ~head_first$14;
+            pending$15$d = head_keep$15 & ~head_first$15;
+            pending$16$d = head_keep$16 & ~head_first$16;
+            pending$17$d = head_keep$17 & ~head_first$17;
+            pending$18$d = head_keep$18 & ~head_first$18;
+            pending$19$d = head_keep$19 & ~head_first$19;
+            pending$20$d = head_keep$20 & ~head_first$20;
             phase$d = SerPhase$Select;
             if (head_any$any) begin
                 phase$d = SerPhase$Emit;
@@ -47935,48 +49394,28 @@ module fcc_sort_net__serializer_k7_668cf05b(clk,rst,head_valid,head,head_rep$0,h
                 SerPhase$Select:
                     begin
                         more_pending$d = pending_two$q;
-                        selected$0$d = pending$0$q & ~pending_earlier$0$q;
-                        pending$0$d = pending$0$q & pending_earlier$0$q;
-                        selected$1$d = pending$1$q & ~pending_earlier$1$q;
-                        pending$1$d = pending$1$q & pending_earlier$1$q;
-                        selected$2$d = pending$2$q & ~pending_earlier$2$q;
-                        pending$2$d = pending$2$q & pending_earlier$2$q;
-                        selected$3$d = pending$3$q & ~pending_earlier$3$q;
-                        pending$3$d = pending$3$q & pending_earlier$3$q;
-                        selected$4$d = pending$4$q & ~pending_earlier$4$q;
-                        pending$4$d = pending$4$q & pending_earlier$4$q;
-                        selected$5$d = pending$5$q & ~pending_earlier$5$q;
-                        pending$5$d = pending$5$q & pending_earlier$5$q;
-                        selected$6$d = pending$6$q & ~pending_earlier$6$q;
-                        pending$6$d = pending$6$q & pending_earlier$6$q;
-                        selected$7$d = pending$7$q & ~pending_earlier$7$q;
-                        pending$7$d = pending$7$q & pending_earlier$7$q;
-                        selected$8$d = pending$8$q & ~pending_earlier$8$q;
-                        pending$8$d = pending$8$q & pending_earlier$8$q;
-                        selected$9$d = pending$9$q & ~pending_earlier$9$q;
-                        pending$9$d = pending$9$q & pending_earlier$9$q;
-                        selected$10$d = pending$10$q & ~pending_earlier$10$q;
-                        pending$10$d = pending$10$q & pending_earlier$10$q;
-                        selected$11$d = pending$11$q & ~pending_earlier$11$q;
-                        pending$11$d = pending$11$q & pending_earlier$11$q;
-                        selected$12$d = pending$12$q & ~pending_earlier$12$q;
-                        pending$12$d = pending$12$q & pending_earlier$12$q;
-                        selected$13$d = pending$13$q & ~pending_earlier$13$q;
-                        pending$13$d = pending$13$q & pending_earlier$13$q;
-                        selected$14$d = pending$14$q & ~pending_earlier$14$q;
-                        pending$14$d = pending$14$q & pending_earlier$14$q;
-                        selected$15$d = pending$15$q & ~pending_earlier$15$q;
-                        pending$15$d = pending$15$q & pending_earlier$15$q;
-                        selected$16$d = pending$16$q & ~pending_earlier$16$q;
-                        pending$16$d = pending$16$q & pending_earlier$16$q;
-                        selected$17$d = pending$17$q & ~pending_earlier$17$q;
-                        pending$17$d = pending$17$q & pending_earlier$17$q;
-                        selected$18$d = pending$18$q & ~pending_earlier$18$q;
-                        pending$18$d = pending$18$q & pending_earlier$18$q;
-                        selected$19$d = pending$19$q & ~pending_earlier$19$q;
-                        pending$19$d = pending$19$q & pending_earlier$19$q;
-                        selected$20$d = pending$20$q & ~pending_earlier$20$q;
-                        pending$20$d = pending$20$q & pending_earlier$20$q;
+                        pick_q$d = pick$o;
+                        pending$0$d = pending$0$q & ~(head_first$0 ^ sel_flip$0$q);
+                        pending$1$d = pending$1$q & ~(head_first$1 ^ sel_flip$1$q);
+                        pending$2$d = pending$2$q & ~(head_first$2 ^ sel_flip$2$q);
+                        pending$3$d = pending$3$q & ~(head_first$3 ^ sel_flip$3$q);
+                        pending$4$d = pending$4$q & ~(head_first$4 ^ sel_flip$4$q);
+                        pending$5$d = pending$5$q & ~(head_first$5 ^ sel_flip$5$q);
+                        pending$6$d = pending$6$q & ~(head_first$6 ^ sel_flip$6$q);
+                        pending$7$d = pending$7$q & ~(head_first$7 ^ sel_flip$7$q);
+                        pending$8$d = pending$8$q & ~(head_first$8 ^ sel_flip$8$q);
+                        pending$9$d = pending$9$q & ~(head_first$9 ^ sel_flip$9$q);
+                        pending$10$d = pending$10$q & ~(head_first$10 ^ sel_flip$10$q);
+                        pending$11$d = pending$11$q & ~(head_first$11 ^ sel_flip$11$q);
+                        pending$12$d = pending$12$q & ~(head_first$12 ^ sel_flip$12$q);
+                        pending$13$d = pending$13$q & ~(head_first$13 ^ sel_flip$13$q);
+                        pending$14$d = pending$14$q & ~(head_first$14 ^ sel_flip$14$q);
+                        pending$15$d = pending$15$q & ~(head_first$15 ^ sel_flip$15$q);
+                        pending$16$d = pending$16$q & ~(head_first$16 ^ sel_flip$16$q);
+                        pending$17$d = pending$17$q & ~(head_first$17 ^ sel_flip$17$q);
+                        pending$18$d = pending$18$q & ~(head_first$18 ^ sel_flip$18$q);
+                        pending$19$d = pending$19$q & ~(head_first$19 ^ sel_flip$19$q);
+                        pending$20$d = pending$20$q & ~(head_first$20 ^ sel_flip$20$q);
                         if (more_pending$q) begin
                             phase$d = SerPhase$Emit;
                         end
@@ -48009,12 +49448,6 @@ module fcc_sort_net__serializer_k7_668cf05b(clk,rst,head_valid,head,head_rep$0,h
                     begin
                         if (join_room) begin
                             join_push = 1'b1;
-                            join_rec[15:0] = head[31:16];
-                            join_rec[31:16] = head[47:32];
-                            join_rec[32:32] = ring_same_prev$q;
-                            if (emitted$q) begin
-                                join_rec[32:32] = ring_same_centre$q;
-                            end
                             prev_a$d = head[31:16];
                             prev_a_valid$d = 1'b1;
                             ring_pending$d = 1'b0;
@@ -48114,7 +49547,7 @@ module fcc_sort_net__serializer__head_any_k7_668cf05b(x$0,x$1,x$2,x$3,x$4,x$5,x$
 endmodule // fcc_sort_net__serializer__head_any_k7_668cf05b
 
 
-module fcc_sort_net__serializer__head_earlier_k7_668cf05b(x$0,x$1,x$2,x$3,x$4,x$5,x$6,x$7,x$8,x$9,x$10,x$11,x$12,x$13,x$14,x$15,x$16,x$17,x$18,x$19,x$20,pre$0,pre$1,pre$2,pre$3,pre$4,pre$5,pre$6,pre$7,pre$8,pre$9,pre$10,pre$11,pre$12,pre$13,pre$14,pre$15,pre$16,pre$17,pre$18,pre$19,pre$20);
+module fcc_sort_net__serializer__head_rest_k7_668cf05b(x$0,x$1,x$2,x$3,x$4,x$5,x$6,x$7,x$8,x$9,x$10,x$11,x$12,x$13,x$14,x$15,x$16,x$17,x$18,x$19,x$20,any);
 
     // Module arguments
     input wire  x$0;
@@ -48138,132 +49571,13 @@ module fcc_sort_net__serializer__head_earlier_k7_668cf05b(x$0,x$1,x$2,x$3,x$4,x$
     input wire  x$18;
     input wire  x$19;
     input wire  x$20;
-    output reg  pre$0;
-    output reg  pre$1;
-    output reg  pre$2;
-    output reg  pre$3;
-    output reg  pre$4;
-    output reg  pre$5;
-    output reg  pre$6;
-    output reg  pre$7;
-    output reg  pre$8;
-    output reg  pre$9;
-    output reg  pre$10;
-    output reg  pre$11;
-    output reg  pre$12;
-    output reg  pre$13;
-    output reg  pre$14;
-    output reg  pre$15;
-    output reg  pre$16;
-    output reg  pre$17;
-    output reg  pre$18;
-    output reg  pre$19;
-    output reg  pre$20;
+    output reg  any;
 
     // Update code (custom)
-    // The last flag comes after every prefix, so nothing reads it.
-    /* verilator lint_off UNUSEDSIGNAL */
-    wire unused_ok = x$20;
-    /* verilator lint_on UNUSEDSIGNAL */
     always @(*) begin
-        pre$0 = 1'b0;
-        pre$1 = |{x$0};
-        pre$2 = |{x$1, x$0};
-        pre$3 = |{x$2, x$1, x$0};
-        pre$4 = |{x$3, x$2, x$1, x$0};
-        pre$5 = |{x$4, x$3, x$2, x$1, x$0};
-        pre$6 = |{x$5, x$4, x$3, x$2, x$1, x$0};
-        pre$7 = |{x$6, x$5, x$4, x$3, x$2, x$1, x$0};
-        pre$8 = |{x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
-        pre$9 = |{x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
-        pre$10 = |{x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
-        pre$11 = |{x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
-        pre$12 = |{x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
-        pre$13 = |{x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
-        pre$14 = |{x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
-        pre$15 = |{x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
-        pre$16 = |{x$15, x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
-        pre$17 = |{x$16, x$15, x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
-        pre$18 = |{x$17, x$16, x$15, x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
-        pre$19 = |{x$18, x$17, x$16, x$15, x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
-        pre$20 = |{x$19, x$18, x$17, x$16, x$15, x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
+        any = |{x$20, x$19, x$18, x$17, x$16, x$15, x$14, x$13, x$12, x$11, x$10, x$9, x$8, x$7, x$6, x$5, x$4, x$3, x$2, x$1, x$0};
     end
-endmodule // fcc_sort_net__serializer__head_earlier_k7_668cf05b
-
-
-module fcc_sort_net__serializer__head_two_k7_668cf05b(x$0,x$1,x$2,x$3,x$4,x$5,x$6,x$7,x$8,x$9,x$10,x$11,x$12,x$13,x$14,x$15,x$16,x$17,x$18,x$19,x$20,two);
-
-    // Module arguments
-    input wire  x$0;
-    input wire  x$1;
-    input wire  x$2;
-    input wire  x$3;
-    input wire  x$4;
-    input wire  x$5;
-    input wire  x$6;
-    input wire  x$7;
-    input wire  x$8;
-    input wire  x$9;
-    input wire  x$10;
-    input wire  x$11;
-    input wire  x$12;
-    input wire  x$13;
-    input wire  x$14;
-    input wire  x$15;
-    input wire  x$16;
-    input wire  x$17;
-    input wire  x$18;
-    input wire  x$19;
-    input wire  x$20;
-    output reg  two;
-
-    // Update code (custom)
-    wire a_0_2 = x$0 | x$1;
-    wire t_0_2 = (x$0 & x$1);
-    wire a_3_5 = x$3 | x$4;
-    wire t_3_5 = (x$3 & x$4);
-    wire a_2_5 = x$2 | a_3_5;
-    wire t_2_5 = (x$2 & a_3_5) | t_3_5;
-    wire a_0_5 = a_0_2 | a_2_5;
-    wire t_0_5 = (a_0_2 & a_2_5) | t_0_2 | t_2_5;
-    wire a_5_7 = x$5 | x$6;
-    wire t_5_7 = (x$5 & x$6);
-    wire a_8_10 = x$8 | x$9;
-    wire t_8_10 = (x$8 & x$9);
-    wire a_7_10 = x$7 | a_8_10;
-    wire t_7_10 = (x$7 & a_8_10) | t_8_10;
-    wire a_5_10 = a_5_7 | a_7_10;
-    wire t_5_10 = (a_5_7 & a_7_10) | t_5_7 | t_7_10;
-    wire a_0_10 = a_0_5 | a_5_10;
-    wire t_0_10 = (a_0_5 & a_5_10) | t_0_5 | t_5_10;
-    wire a_10_12 = x$10 | x$11;
-    wire t_10_12 = (x$10 & x$11);
-    wire a_13_15 = x$13 | x$14;
-    wire t_13_15 = (x$13 & x$14);
-    wire a_12_15 = x$12 | a_13_15;
-    wire t_12_15 = (x$12 & a_13_15) | t_13_15;
-    wire a_10_15 = a_10_12 | a_12_15;
-    wire t_10_15 = (a_10_12 & a_12_15) | t_10_12 | t_12_15;
-    wire a_16_18 = x$16 | x$17;
-    wire t_16_18 = (x$16 & x$17);
-    wire a_15_18 = x$15 | a_16_18;
-    wire t_15_18 = (x$15 & a_16_18) | t_16_18;
-    wire a_19_21 = x$19 | x$20;
-    wire t_19_21 = (x$19 & x$20);
-    wire a_18_21 = x$18 | a_19_21;
-    wire t_18_21 = (x$18 & a_19_21) | t_19_21;
-    wire a_15_21 = a_15_18 | a_18_21;
-    wire t_15_21 = (a_15_18 & a_18_21) | t_15_18 | t_18_21;
-    wire a_10_21 = a_10_15 | a_15_21;
-    wire t_10_21 = (a_10_15 & a_15_21) | t_10_15 | t_15_21;
-    /* verilator lint_off UNUSEDSIGNAL */
-    wire a_0_21 = a_0_10 | a_10_21;
-    /* verilator lint_on UNUSEDSIGNAL */
-    wire t_0_21 = (a_0_10 & a_10_21) | t_0_10 | t_10_21;
-    always @(*) begin
-        two = t_0_21;
-    end
-endmodule // fcc_sort_net__serializer__head_two_k7_668cf05b
+endmodule // fcc_sort_net__serializer__head_rest_k7_668cf05b
 
 
 module fcc_sort_net__serializer__last_done_q_k7_668cf05b(d,q,clock);
@@ -48722,405 +50036,6 @@ module fcc_sort_net__serializer__pending__9_k7_668cf05b(d,q,clock);
 endmodule // fcc_sort_net__serializer__pending__9_k7_668cf05b
 
 
-module fcc_sort_net__serializer__pending_earlier__0_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__serializer__pending_earlier__0_k7_668cf05b
-
-
-module fcc_sort_net__serializer__pending_earlier__1_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__serializer__pending_earlier__1_k7_668cf05b
-
-
-module fcc_sort_net__serializer__pending_earlier__10_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__serializer__pending_earlier__10_k7_668cf05b
-
-
-module fcc_sort_net__serializer__pending_earlier__11_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__serializer__pending_earlier__11_k7_668cf05b
-
-
-module fcc_sort_net__serializer__pending_earlier__12_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__serializer__pending_earlier__12_k7_668cf05b
-
-
-module fcc_sort_net__serializer__pending_earlier__13_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__serializer__pending_earlier__13_k7_668cf05b
-
-
-module fcc_sort_net__serializer__pending_earlier__14_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__serializer__pending_earlier__14_k7_668cf05b
-
-
-module fcc_sort_net__serializer__pending_earlier__15_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__serializer__pending_earlier__15_k7_668cf05b
-
-
-module fcc_sort_net__serializer__pending_earlier__16_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__serializer__pending_earlier__16_k7_668cf05b
-
-
-module fcc_sort_net__serializer__pending_earlier__17_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__serializer__pending_earlier__17_k7_668cf05b
-
-
-module fcc_sort_net__serializer__pending_earlier__18_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__serializer__pending_earlier__18_k7_668cf05b
-
-
-module fcc_sort_net__serializer__pending_earlier__19_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__serializer__pending_earlier__19_k7_668cf05b
-
-
-module fcc_sort_net__serializer__pending_earlier__2_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__serializer__pending_earlier__2_k7_668cf05b
-
-
-module fcc_sort_net__serializer__pending_earlier__20_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__serializer__pending_earlier__20_k7_668cf05b
-
-
-module fcc_sort_net__serializer__pending_earlier__3_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__serializer__pending_earlier__3_k7_668cf05b
-
-
-module fcc_sort_net__serializer__pending_earlier__4_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__serializer__pending_earlier__4_k7_668cf05b
-
-
-module fcc_sort_net__serializer__pending_earlier__5_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__serializer__pending_earlier__5_k7_668cf05b
-
-
-module fcc_sort_net__serializer__pending_earlier__6_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__serializer__pending_earlier__6_k7_668cf05b
-
-
-module fcc_sort_net__serializer__pending_earlier__7_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__serializer__pending_earlier__7_k7_668cf05b
-
-
-module fcc_sort_net__serializer__pending_earlier__8_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__serializer__pending_earlier__8_k7_668cf05b
-
-
-module fcc_sort_net__serializer__pending_earlier__9_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__serializer__pending_earlier__9_k7_668cf05b
-
-
 module fcc_sort_net__serializer__pending_prefix_k7_668cf05b(x$0,x$1,x$2,x$3,x$4,x$5,x$6,x$7,x$8,x$9,x$10,x$11,x$12,x$13,x$14,x$15,x$16,x$17,x$18,x$19,x$20,pre$0,pre$1,pre$2,pre$3,pre$4,pre$5,pre$6,pre$7,pre$8,pre$9,pre$10,pre$11,pre$12,pre$13,pre$14,pre$15,pre$16,pre$17,pre$18,pre$19,pre$20);
 
     // Module arguments
@@ -49364,27 +50279,48 @@ module fcc_sort_net__serializer__pick_k7_668cf05b(sel$0,sel$1,sel$2,sel$3,sel$4,
     output reg  [15:0] o;
 
     // Update code (custom)
-    wire [15:0] t0_0 = {16{sel$0}} & v$0;
-    wire [15:0] t0_1 = {16{sel$1}} & v$1;
-    wire [15:0] t0_2 = {16{sel$2}} & v$2;
-    wire [15:0] t0_3 = {16{sel$3}} & v$3;
-    wire [15:0] t0_4 = {16{sel$4}} & v$4;
-    wire [15:0] t0_5 = {16{sel$5}} & v$5;
-    wire [15:0] t0_6 = {16{sel$6}} & v$6;
-    wire [15:0] t0_7 = {16{sel$7}} & v$7;
-    wire [15:0] t0_8 = {16{sel$8}} & v$8;
-    wire [15:0] t0_9 = {16{sel$9}} & v$9;
-    wire [15:0] t0_10 = {16{sel$10}} & v$10;
-    wire [15:0] t0_11 = {16{sel$11}} & v$11;
-    wire [15:0] t0_12 = {16{sel$12}} & v$12;
-    wire [15:0] t0_13 = {16{sel$13}} & v$13;
-    wire [15:0] t0_14 = {16{sel$14}} & v$14;
-    wire [15:0] t0_15 = {16{sel$15}} & v$15;
-    wire [15:0] t0_16 = {16{sel$16}} & v$16;
-    wire [15:0] t0_17 = {16{sel$17}} & v$17;
-    wire [15:0] t0_18 = {16{sel$18}} & v$18;
-    wire [15:0] t0_19 = {16{sel$19}} & v$19;
-    wire [15:0] t0_20 = {16{sel$20}} & v$20;
+    (* keep *) wire s_0 = sel$0;
+    wire [15:0] t0_0 = {16{s_0}} & v$0;
+    (* keep *) wire s_1 = sel$1;
+    wire [15:0] t0_1 = {16{s_1}} & v$1;
+    (* keep *) wire s_2 = sel$2;
+    wire [15:0] t0_2 = {16{s_2}} & v$2;
+    (* keep *) wire s_3 = sel$3;
+    wire [15:0] t0_3 = {16{s_3}} & v$3;
+    (* keep *) wire s_4 = sel$4;
+    wire [15:0] t0_4 = {16{s_4}} & v$4;
+    (* keep *) wire s_5 = sel$5;
+    wire [15:0] t0_5 = {16{s_5}} & v$5;
+    (* keep *) wire s_6 = sel$6;
+    wire [15:0] t0_6 = {16{s_6}} & v$6;
+    (* keep *) wire s_7 = sel$7;
+    wire [15:0] t0_7 = {16{s_7}} & v$7;
+    (* keep *) wire s_8 = sel$8;
+    wire [15:0] t0_8 = {16{s_8}} & v$8;
+    (* keep *) wire s_9 = sel$9;
+    wire [15:0] t0_9 = {16{s_9}} & v$9;
+    (* keep *) wire s_10 = sel$10;
+    wire [15:0] t0_10 = {16{s_10}} & v$10;
+    (* keep *) wire s_11 = sel$11;
+    wire [15:0] t0_11 = {16{s_11}} & v$11;
+    (* keep *) wire s_12 = sel$12;
+    wire [15:0] t0_12 = {16{s_12}} & v$12;
+    (* keep *) wire s_13 = sel$13;
+    wire [15:0] t0_13 = {16{s_13}} & v$13;
+    (* keep *) wire s_14 = sel$14;
+    wire [15:0] t0_14 = {16{s_14}} & v$14;
+    (* keep *) wire s_15 = sel$15;
+    wire [15:0] t0_15 = {16{s_15}} & v$15;
+    (* keep *) wire s_16 = sel$16;
+    wire [15:0] t0_16 = {16{s_16}} & v$16;
+    (* keep *) wire s_17 = sel$17;
+    wire [15:0] t0_17 = {16{s_17}} & v$17;
+    (* keep *) wire s_18 = sel$18;
+    wire [15:0] t0_18 = {16{s_18}} & v$18;
+    (* keep *) wire s_19 = sel$19;
+    wire [15:0] t0_19 = {16{s_19}} & v$19;
+    (* keep *) wire s_20 = sel$20;
+    wire [15:0] t0_20 = {16{s_20}} & v$20;
     wire [15:0] t1_0 = t0_0 | t0_1;
     wire [15:0] t1_1 = t0_2 | t0_3;
     wire [15:0] t1_2 = t0_4 | t0_5;
@@ -49412,6 +50348,25 @@ module fcc_sort_net__serializer__pick_k7_668cf05b(sel$0,sel$1,sel$2,sel$3,sel$4,
         o = t5_0;
     end
 endmodule // fcc_sort_net__serializer__pick_k7_668cf05b
+
+
+module fcc_sort_net__serializer__pick_q_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__serializer__pick_q_k7_668cf05b
 
 
 module fcc_sort_net__serializer__prev_a_k7_668cf05b(d,q,clock);
@@ -49509,7 +50464,7 @@ module fcc_sort_net__serializer__ring_same_prev_k7_668cf05b(d,q,clock);
 endmodule // fcc_sort_net__serializer__ring_same_prev_k7_668cf05b
 
 
-module fcc_sort_net__serializer__selected__0_k7_668cf05b(d,q,clock);
+module fcc_sort_net__serializer__sel_flip__0_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -49525,29 +50480,10 @@ module fcc_sort_net__serializer__selected__0_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__serializer__selected__0_k7_668cf05b
+endmodule // fcc_sort_net__serializer__sel_flip__0_k7_668cf05b
 
 
-module fcc_sort_net__serializer__selected__1_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__serializer__selected__1_k7_668cf05b
-
-
-module fcc_sort_net__serializer__selected__10_k7_668cf05b(d,q,clock);
+module fcc_sort_net__serializer__sel_flip__1_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -49563,29 +50499,10 @@ module fcc_sort_net__serializer__selected__10_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__serializer__selected__10_k7_668cf05b
+endmodule // fcc_sort_net__serializer__sel_flip__1_k7_668cf05b
 
 
-module fcc_sort_net__serializer__selected__11_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__serializer__selected__11_k7_668cf05b
-
-
-module fcc_sort_net__serializer__selected__12_k7_668cf05b(d,q,clock);
+module fcc_sort_net__serializer__sel_flip__10_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -49601,29 +50518,10 @@ module fcc_sort_net__serializer__selected__12_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__serializer__selected__12_k7_668cf05b
+endmodule // fcc_sort_net__serializer__sel_flip__10_k7_668cf05b
 
 
-module fcc_sort_net__serializer__selected__13_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__serializer__selected__13_k7_668cf05b
-
-
-module fcc_sort_net__serializer__selected__14_k7_668cf05b(d,q,clock);
+module fcc_sort_net__serializer__sel_flip__11_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -49639,29 +50537,10 @@ module fcc_sort_net__serializer__selected__14_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__serializer__selected__14_k7_668cf05b
+endmodule // fcc_sort_net__serializer__sel_flip__11_k7_668cf05b
 
 
-module fcc_sort_net__serializer__selected__15_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__serializer__selected__15_k7_668cf05b
-
-
-module fcc_sort_net__serializer__selected__16_k7_668cf05b(d,q,clock);
+module fcc_sort_net__serializer__sel_flip__12_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -49677,29 +50556,10 @@ module fcc_sort_net__serializer__selected__16_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__serializer__selected__16_k7_668cf05b
+endmodule // fcc_sort_net__serializer__sel_flip__12_k7_668cf05b
 
 
-module fcc_sort_net__serializer__selected__17_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__serializer__selected__17_k7_668cf05b
-
-
-module fcc_sort_net__serializer__selected__18_k7_668cf05b(d,q,clock);
+module fcc_sort_net__serializer__sel_flip__13_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -49715,29 +50575,10 @@ module fcc_sort_net__serializer__selected__18_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__serializer__selected__18_k7_668cf05b
+endmodule // fcc_sort_net__serializer__sel_flip__13_k7_668cf05b
 
 
-module fcc_sort_net__serializer__selected__19_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__serializer__selected__19_k7_668cf05b
-
-
-module fcc_sort_net__serializer__selected__2_k7_668cf05b(d,q,clock);
+module fcc_sort_net__serializer__sel_flip__14_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -49753,29 +50594,10 @@ module fcc_sort_net__serializer__selected__2_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__serializer__selected__2_k7_668cf05b
+endmodule // fcc_sort_net__serializer__sel_flip__14_k7_668cf05b
 
 
-module fcc_sort_net__serializer__selected__20_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__serializer__selected__20_k7_668cf05b
-
-
-module fcc_sort_net__serializer__selected__3_k7_668cf05b(d,q,clock);
+module fcc_sort_net__serializer__sel_flip__15_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -49791,29 +50613,10 @@ module fcc_sort_net__serializer__selected__3_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__serializer__selected__3_k7_668cf05b
+endmodule // fcc_sort_net__serializer__sel_flip__15_k7_668cf05b
 
 
-module fcc_sort_net__serializer__selected__4_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__serializer__selected__4_k7_668cf05b
-
-
-module fcc_sort_net__serializer__selected__5_k7_668cf05b(d,q,clock);
+module fcc_sort_net__serializer__sel_flip__16_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -49829,29 +50632,10 @@ module fcc_sort_net__serializer__selected__5_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__serializer__selected__5_k7_668cf05b
+endmodule // fcc_sort_net__serializer__sel_flip__16_k7_668cf05b
 
 
-module fcc_sort_net__serializer__selected__6_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__serializer__selected__6_k7_668cf05b
-
-
-module fcc_sort_net__serializer__selected__7_k7_668cf05b(d,q,clock);
+module fcc_sort_net__serializer__sel_flip__17_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -49867,29 +50651,10 @@ module fcc_sort_net__serializer__selected__7_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__serializer__selected__7_k7_668cf05b
+endmodule // fcc_sort_net__serializer__sel_flip__17_k7_668cf05b
 
 
-module fcc_sort_net__serializer__selected__8_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__serializer__selected__8_k7_668cf05b
-
-
-module fcc_sort_net__serializer__selected__9_k7_668cf05b(d,q,clock);
+module fcc_sort_net__serializer__sel_flip__18_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -49905,7 +50670,197 @@ module fcc_sort_net__serializer__selected__9_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_sort_net__serializer__selected__9_k7_668cf05b
+endmodule // fcc_sort_net__serializer__sel_flip__18_k7_668cf05b
+
+
+module fcc_sort_net__serializer__sel_flip__19_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__serializer__sel_flip__19_k7_668cf05b
+
+
+module fcc_sort_net__serializer__sel_flip__2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__serializer__sel_flip__2_k7_668cf05b
+
+
+module fcc_sort_net__serializer__sel_flip__20_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__serializer__sel_flip__20_k7_668cf05b
+
+
+module fcc_sort_net__serializer__sel_flip__3_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__serializer__sel_flip__3_k7_668cf05b
+
+
+module fcc_sort_net__serializer__sel_flip__4_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__serializer__sel_flip__4_k7_668cf05b
+
+
+module fcc_sort_net__serializer__sel_flip__5_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__serializer__sel_flip__5_k7_668cf05b
+
+
+module fcc_sort_net__serializer__sel_flip__6_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__serializer__sel_flip__6_k7_668cf05b
+
+
+module fcc_sort_net__serializer__sel_flip__7_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__serializer__sel_flip__7_k7_668cf05b
+
+
+module fcc_sort_net__serializer__sel_flip__8_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__serializer__sel_flip__8_k7_668cf05b
+
+
+module fcc_sort_net__serializer__sel_flip__9_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__serializer__sel_flip__9_k7_668cf05b
 
 
 module fcc_sort_net__serializer_rst_k7_668cf05b(clock,d,q);

@@ -1,7 +1,8 @@
 //! `FccCentreBuf`: the centre buffer between the sort filter and the
 //! serializer, 2^CB_BITS records in block RAM. A record is the centre's
 //! `CtrRec` (in the FIFO's own RAM) and its window rows: per position the
-//! representative and the kept flag, one RAM word per window row
+//! representative, the kept flag and the first-kept flag (set at the first
+//! kept position only), one RAM word per window row
 //! (`FccRowPack`), in side RAMs addressed with the FIFO's RAM ports. The head
 //! record's fields all show together, first-word-fall-through.
 
@@ -10,7 +11,7 @@ use rust_hdl::prelude::*;
 
 use crate::fcc_fifo::FccFifo;
 use crate::fcc_ram::FccRam;
-use crate::fcc_row_word::{FccRowPack, FccRowUnpack, ROW_BITS};
+use crate::fcc_row_word::{row_bits, FccRowPack, FccRowUnpack, ROW_BITS};
 use crate::types::{vec_of, CtrRec};
 
 /// Centre buffer: 2^CB_BITS records.
@@ -25,11 +26,13 @@ pub struct FccCentreBuf {
     pub rec: Signal<In, CtrRec>,
     pub rep: Vec<Signal<In, Bits<16>>>,
     pub keep: Vec<Signal<In, Bit>>,
+    pub first: Vec<Signal<In, Bit>>,
     // Read side: the head record.
     pub head_valid: Signal<Out, Bit>,
     pub head: Signal<Out, CtrRec>,
     pub head_rep: Vec<Signal<Out, Bits<16>>>,
     pub head_keep: Vec<Signal<Out, Bit>>,
+    pub head_first: Vec<Signal<Out, Bit>>,
     pub take: Signal<In, Bit>,
     records: FccFifo<CtrRec, CB_BITS, { CB_BITS + 1 }>,
     rows: Vec<FccRam<Bits<ROW_BITS>, CB_BITS>>,
@@ -51,14 +54,16 @@ impl FccCentreBuf {
             rec: Default::default(),
             rep: vec_of(n),
             keep: vec_of(n),
+            first: vec_of(n),
             head_valid: Default::default(),
             head: Default::default(),
             head_rep: vec_of(n),
             head_keep: vec_of(n),
+            head_first: vec_of(n),
             take: Default::default(),
             records: FccFifo::default(),
             rows: (0..h)
-                .map(|_| FccRam::with_stored_bits(1 << CB_BITS, 17 * k))
+                .map(|_| FccRam::with_stored_bits(1 << CB_BITS, row_bits(k)))
                 .collect(),
             pack: FccRowPack::new(k, h),
             unpack: FccRowUnpack::new(k, h),
@@ -81,8 +86,10 @@ impl Logic for FccCentreBuf {
         for e in 0..self._n {
             self.pack.v[e].next = self.rep[e].val();
             self.pack.f[e].next = self.keep[e].val();
+            self.pack.g[e].next = self.first[e].val();
             self.head_rep[e].next = self.unpack.v[e].val();
             self.head_keep[e].next = self.unpack.f[e].val();
+            self.head_first[e].next = self.unpack.g[e].val();
         }
         for r in 0..self._h {
             self.rows[r].clk.next = self.clk.val();

@@ -71,13 +71,13 @@ pub struct FccRbPipeline {
     valid_s3: DFF<Bit>,
     beat_s3: DFF<Beat>,
     issue: Signal<Local, Bit>,
-    /// Code of each slot; 1 where it starts a labelled run; the labelled
-    /// runs started up to it (`labelled_01`: in slots 0 and 1); its source.
+    /// Code of each slot; the slots that start a labelled run (bit i:
+    /// slot i); those up to slot i; the labelled runs started in the beat;
+    /// each slot's source.
     code: Vec<Signal<Local, Bits<2>>>,
-    labelled: Vec<Signal<Local, Bits<3>>>,
-    labelled_01: Signal<Local, Bits<3>>,
-    labelled_23: Signal<Local, Bits<3>>,
-    started: Vec<Signal<Local, Bits<3>>>,
+    labelled: Signal<Local, Bits<4>>,
+    labelled_upto: Vec<Signal<Local, Bits<4>>>,
+    need: Signal<Local, Bits<3>>,
     slot_src: Vec<Signal<Local, Bits<3>>>,
     /// The run before slot i (after the beat, at 4) has label 0.
     zero_run: Vec<Signal<Local, Bit>>,
@@ -94,11 +94,19 @@ pub struct FccRbPipeline {
     slot_used: Vec<Constant<Bits<8>>>,
     keep_n: Vec<Constant<Bits<8>>>,
     labels: Vec<Constant<Bits<3>>>,
+    /// Bit i; bits 0 to i; the 16 sets of labelled slots, the labelled
+    /// runs in each (`count_of`) and 1 + that (`src_of`): looked up, not
+    /// added, so the decode is no carry chain.
+    slot_bit: Vec<Constant<Bits<4>>>,
+    upto_mask: Vec<Constant<Bits<4>>>,
+    set: Vec<Constant<Bits<4>>>,
+    count_of: Vec<Constant<Bits<3>>>,
+    src_of: Vec<Constant<Bits<3>>>,
+    zero4: Constant<Bits<4>>,
     code_empty: Constant<Bits<2>>,
     code_labelled: Constant<Bits<2>>,
     code_unlabelled: Constant<Bits<2>>,
     src_zero: Constant<Bits<3>>,
-    src_carried: Constant<Bits<3>>,
     max_in_flight: Constant<Bits<3>>,
     lpb3: Constant<Bits<3>>,
     lpb20: Constant<Bits<20>>,
@@ -148,10 +156,9 @@ impl FccRbPipeline {
             beat_s3: Default::default(),
             issue: Default::default(),
             code: vec_of(4),
-            labelled: vec_of(4),
-            labelled_01: Default::default(),
-            labelled_23: Default::default(),
-            started: vec_of(4),
+            labelled: Default::default(),
+            labelled_upto: vec_of(4),
+            need: Default::default(),
             slot_src: vec_of(4),
             zero_run: vec_of(5),
             run_src: Default::default(),
@@ -162,11 +169,18 @@ impl FccRbPipeline {
             slot_used: (0..l).map(|i| kb(1u64 << (2 * i))).collect(),
             keep_n: (0..=4).map(|n| kb((1u64 << (2 * n)) - 1)).collect(),
             labels: (0..=4).map(|n| kb(n as u64)).collect(),
+            slot_bit: (0..4).map(|i| kb(1u64 << i)).collect(),
+            upto_mask: (0..4).map(|i| kb((2u64 << i) - 1)).collect(),
+            set: (0..16).map(|m| kb(m as u64)).collect(),
+            count_of: (0..16u64).map(|m| kb(m.count_ones() as u64)).collect(),
+            src_of: (0..16u64)
+                .map(|m| kb(SRC_CARRIED + m.count_ones() as u64))
+                .collect(),
+            zero4: kb(0),
             code_empty: kb(CODE_EMPTY),
             code_labelled: kb(CODE_LABELLED),
             code_unlabelled: kb(CODE_UNLABELLED),
             src_zero: kb(SRC_ZERO),
-            src_carried: kb(SRC_CARRIED),
             max_in_flight: kb(QUEUE_BEATS as u64),
             lpb3: kb(l as u64),
             lpb20: kb(l as u64),
@@ -282,31 +296,39 @@ impl Logic for FccRbPipeline {
             }
         }
         self.zero_run[0].next = self.first_s2.q.val();
+        self.labelled.next = self.zero4.val();
         for i in 0..4 {
-            self.labelled[i].next = self.zero3.val();
             self.zero_run[i + 1].next = self.zero_run[i].val();
             if self.code[i].val() == self.code_labelled.val() {
-                self.labelled[i].next = self.one3.val();
+                self.labelled.next = self.labelled.val() | self.slot_bit[i].val();
                 self.zero_run[i + 1].next = false;
             }
             if self.code[i].val() == self.code_unlabelled.val() {
                 self.zero_run[i + 1].next = true;
             }
         }
-        // Labelled runs started up to each slot, added as a tree.
-        self.labelled_01.next = self.labelled[0].val() + self.labelled[1].val();
-        self.labelled_23.next = self.labelled[2].val() + self.labelled[3].val();
-        self.started[0].next = self.labelled[0].val();
-        self.started[1].next = self.labelled_01.val();
-        self.started[2].next = self.labelled_01.val() + self.labelled[2].val();
-        self.started[3].next = self.labelled_01.val() + self.labelled_23.val();
+        // Labelled runs started up to each slot, looked up from the set of
+        // labelled slots up to it.
         for i in 0..4 {
-            self.slot_src[i].next = self.started[i].val() + self.src_carried.val();
+            self.labelled_upto[i].next = self.labelled.val() & self.upto_mask[i].val();
+            self.slot_src[i].next = self.src_zero.val();
+            for m in 0..16 {
+                if self.labelled_upto[i].val() == self.set[m].val() {
+                    self.slot_src[i].next = self.src_of[m].val();
+                }
+            }
             if self.zero_run[i + 1].val() | (self.code[i].val() == self.code_empty.val()) {
                 self.slot_src[i].next = self.src_zero.val();
             }
         }
-        self.run_src.next = self.started[3].val() + self.src_carried.val();
+        self.need.next = self.zero3.val();
+        self.run_src.next = self.src_zero.val();
+        for m in 0..16 {
+            if self.labelled.val() == self.set[m].val() {
+                self.need.next = self.count_of[m].val();
+                self.run_src.next = self.src_of[m].val();
+            }
+        }
         if self.zero_run[4].val() {
             self.run_src.next = self.src_zero.val();
         }
@@ -316,7 +338,7 @@ impl Logic for FccRbPipeline {
         self.beat_s3.d.next.s2 = self.slot_src[2].val();
         self.beat_s3.d.next.s3 = self.slot_src[3].val();
         self.beat_s3.d.next.run = self.run_src.val();
-        self.beat_s3.d.next.need = self.started[3].val();
+        self.beat_s3.d.next.need = self.need.val();
         self.beat_s3.d.next.keep = self.keep_s2.q.val();
         self.beat_s3.d.next.last = self.last_s2.q.val();
         self.beat_valid.next = self.valid_s3.q.val();

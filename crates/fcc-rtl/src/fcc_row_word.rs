@@ -1,7 +1,8 @@
 //! `FccRowPack` and `FccRowUnpack`: the window rows of a centre-buffer record
 //! as RAM words (one per row) and back. Row r's word holds the row's K 16-bit
 //! values in bits 16K-1 .. 0 (value n in bits 16n+15 .. 16n), then its K
-//! flags (flag n in bit 16K+n), zeros above. Inputs and outputs are indexed
+//! flags `f` (flag n in bit 16K+n), then its K flags `g` (flag n in bit
+//! 17K+n), zeros above. Inputs and outputs are indexed
 //! like the window, e = r*K + n.
 //!
 //! rust-hdl cannot index a struct's fields or a vector's bit slices with a
@@ -13,12 +14,18 @@ use rust_hdl::prelude::*;
 use crate::types::MAX_K;
 
 /// Bits of a row word: room for the largest K.
-pub const ROW_BITS: usize = 17 * MAX_K;
+pub const ROW_BITS: usize = 18 * MAX_K;
+
+/// Bits of a row word used for `k` positions.
+pub fn row_bits(k: usize) -> usize {
+    18 * k
+}
 
 #[derive(LogicBlock)]
 pub struct FccRowPack {
     pub v: Vec<Signal<In, Bits<16>>>,
     pub f: Vec<Signal<In, Bit>>,
+    pub g: Vec<Signal<In, Bit>>,
     pub word: Vec<Signal<Out, Bits<ROW_BITS>>>,
     _k: usize,
 }
@@ -30,6 +37,7 @@ impl FccRowPack {
         Self {
             v: (0..k * h).map(|_| Default::default()).collect(),
             f: (0..k * h).map(|_| Default::default()).collect(),
+            g: (0..k * h).map(|_| Default::default()).collect(),
             word: (0..h).map(|_| Default::default()).collect(),
             _k: k,
         }
@@ -47,6 +55,7 @@ impl Logic for FccRowPack {
                     w = w.replace_bit(16 * n + b, v.get_bit(b));
                 }
                 w = w.replace_bit(16 * k + n, self.f[r * k + n].val());
+                w = w.replace_bit(17 * k + n, self.g[r * k + n].val());
             }
             word.next = w;
         }
@@ -64,8 +73,9 @@ impl Logic for FccRowPack {
         for r in 0..self.word.len() {
             let mut parts: Vec<String> = vec![];
             if k < MAX_K {
-                parts.push(format!("{}'d0", ROW_BITS - 17 * k));
+                parts.push(format!("{}'d0", ROW_BITS - row_bits(k)));
             }
+            parts.extend((0..k).rev().map(|n| format!("g${}", r * k + n)));
             parts.extend((0..k).rev().map(|n| format!("f${}", r * k + n)));
             parts.extend((0..k).rev().map(|n| format!("v${}", r * k + n)));
             s.push_str(&format!("    word${r} = {{{}}};\n", parts.join(", ")));
@@ -80,6 +90,7 @@ pub struct FccRowUnpack {
     pub word: Vec<Signal<In, Bits<ROW_BITS>>>,
     pub v: Vec<Signal<Out, Bits<16>>>,
     pub f: Vec<Signal<Out, Bit>>,
+    pub g: Vec<Signal<Out, Bit>>,
     _k: usize,
 }
 
@@ -91,6 +102,7 @@ impl FccRowUnpack {
             word: (0..h).map(|_| Default::default()).collect(),
             v: (0..k * h).map(|_| Default::default()).collect(),
             f: (0..k * h).map(|_| Default::default()).collect(),
+            g: (0..k * h).map(|_| Default::default()).collect(),
             _k: k,
         }
     }
@@ -104,6 +116,7 @@ impl Logic for FccRowUnpack {
             for n in 0..k {
                 self.v[r * k + n].next = w.get_bits::<16>(16 * n);
                 self.f[r * k + n].next = w.get_bit(16 * k + n);
+                self.g[r * k + n].next = w.get_bit(17 * k + n);
             }
         }
     }
@@ -115,6 +128,9 @@ impl Logic for FccRowUnpack {
         for f in self.f.iter_mut() {
             f.connect();
         }
+        for g in self.g.iter_mut() {
+            g.connect();
+        }
     }
 
     fn hdl(&self) -> Verilog {
@@ -123,10 +139,10 @@ impl Logic for FccRowUnpack {
         let mut s = String::new();
         if k < MAX_K {
             let rows: Vec<String> = (0..h)
-                .map(|r| format!("word${r}[{}:{}]", ROW_BITS - 1, 17 * k))
+                .map(|r| format!("word${r}[{}:{}]", ROW_BITS - 1, row_bits(k)))
                 .collect();
             s.push_str(&format!(
-                "// Bits above 17K are unused for this K.\n\
+                "// Bits above 18K are unused for this K.\n\
                  /* verilator lint_off UNUSEDSIGNAL */\n\
                  wire unused_ok = &{{1'b0, {}}};\n\
                  /* verilator lint_on UNUSEDSIGNAL */\n",
@@ -143,6 +159,7 @@ impl Logic for FccRowUnpack {
                     16 * n
                 ));
                 s.push_str(&format!("    f${e} = word${r}[{}];\n", 16 * k + n));
+                s.push_str(&format!("    g${e} = word${r}[{}];\n", 17 * k + n));
             }
         }
         s.push_str("end\n");

@@ -3,29 +3,34 @@
 //! takes the record with its last join.
 //!
 //! A kept position e of a record is the join (c, rep[e]): `c` is the run's
-//! representative the filter stored in the record. The record's kept flags
-//! are loaded into `pending`; each Select moves the first pending flag to
-//! `selected` (one-hot), whose value the next Emit sends (`FccPick`).
+//! representative the filter stored in the record. The record's kept flags,
+//! but its first, are loaded into `pending`; each Select moves the first
+//! pending flag out. The `b` of the join the next Emit sends is picked
+//! (`FccPick`) when its position is chosen, at Load (the record's first-kept
+//! flags, found by the filter) or at Select, and held in `pick_q`: the join
+//! queue's RAM write data come from flip-flops through one multiplexer
+//! level (Emit or Ring, chosen by `phase` alone, whether or not the queue
+//! has room).
 //!
-//! * Load (`loaded` low, a head record): select the first kept position;
+//! * Load (`loaded` low, a head record): pick the first kept position;
 //!   phase Emit, or Ring (no kept position, a ring join), or Select (neither:
 //!   the record is taken at once).
-//! * Emit (when the queue has room): send the selected join; then Select,
+//! * Emit (when the queue has room): send the picked join; then Select,
 //!   or Ring or done when nothing is pending.
-//! * Select: the next pending position; then Emit, or Ring or done.
+//! * Select: pick the next pending position; then Emit, or Ring or done.
 //! * Ring (when the queue has room): send the ring join; done.
 //!
 //! Done takes the record and returns its input credit (`take`).
 //!
 //! Timing: no decision waits on a reduction of `pending` in the cycle that
 //! uses it. `more_pending` says whether any position is left after the
-//! selected one; it is loaded with "at least two" of the flags being reduced
-//! (removing the first set flag leaves some iff at least two were set).
-//! Select reads the prefix ("an earlier pending flag") and "at least two"
-//! from registers loaded from `pending` in the cycle before: Select always
-//! follows Emit (which leaves `pending` as it is) or a Load that found no
-//! kept position (`pending` empty, so the registers' content does not
-//! matter), so they are up to date.
+//! picked one: at Load, any kept position but the first; at Select, "at
+//! least two" of the pending flags (removing the first set flag leaves some
+//! iff at least two were set), registered from `pending` in the cycle
+//! before. Select reads that register and `sel_flip`, both loaded in the
+//! cycle before it: Select always follows Emit (which leaves `pending` as it
+//! is) or a Load that found no kept position (`pending` empty, `sel_flip`
+//! and `head_first` clear, so nothing is picked), so they are up to date.
 //!
 //! `same` of each join (its `a` is the previous join's `a` in this frame) is
 //! decided once per record, at Load.
@@ -56,6 +61,7 @@ pub struct FccSerializer {
     pub head: Signal<In, CtrRec>,
     pub head_rep: Vec<Signal<In, Bits<16>>>,
     pub head_keep: Vec<Signal<In, Bit>>,
+    pub head_first: Vec<Signal<In, Bit>>,
     /// Take the head record (its joins are out); its input credit returns.
     pub take: Signal<Out, Bit>,
     // To the join queue.
@@ -66,13 +72,16 @@ pub struct FccSerializer {
     pub last_done: Signal<Out, Bit>,
     loaded: DFF<Bit>,
     phase: DFF<SerPhase>,
-    /// Kept positions not selected yet; the one to emit next (one-hot).
+    /// Kept positions not picked yet; the `b` of the join to emit next.
     pending: Vec<DFF<Bit>>,
-    selected: Vec<DFF<Bit>>,
-    /// Any position pending after the selected one.
+    pick_q: DFF<Bits<16>>,
+    /// `head_first` XOR the position the next Select picks (all clear
+    /// while no record is loaded): the pick's flags are `head_first` XOR
+    /// `sel_flip`, two flip-flops, at Load and at Select alike.
+    sel_flip: Vec<DFF<Bit>>,
+    /// Any position pending after the picked one.
     more_pending: DFF<Bit>,
-    /// Registered from `pending`: an earlier flag is pending; at least two are.
-    pending_earlier: Vec<DFF<Bit>>,
+    /// Registered from `pending`: at least two flags are pending.
     pending_two: DFF<Bit>,
     /// The record has a ring join not sent yet.
     ring_pending: DFF<Bit>,
@@ -88,9 +97,9 @@ pub struct FccSerializer {
     ring_same_prev: DFF<Bit>,
     last_done_q: DFF<Bit>,
     done: Signal<Local, Bit>,
-    head_earlier: FccPrefixOr,
     head_any: FccAnyOr,
-    head_two: FccTwoOr,
+    /// Any kept position after the first (the record has two or more).
+    head_rest: FccAnyOr,
     pending_prefix: FccPrefixOr,
     pending_two_or: FccTwoOr,
     pick: FccPick,
@@ -107,6 +116,7 @@ impl FccSerializer {
             head: Default::default(),
             head_rep: vec_of(n),
             head_keep: vec_of(n),
+            head_first: vec_of(n),
             take: Default::default(),
             join_room: Default::default(),
             join_push: Default::default(),
@@ -115,9 +125,9 @@ impl FccSerializer {
             loaded: Default::default(),
             phase: Default::default(),
             pending: vec_of(n),
-            selected: vec_of(n),
+            pick_q: Default::default(),
+            sel_flip: vec_of(n),
             more_pending: Default::default(),
-            pending_earlier: vec_of(n),
             pending_two: Default::default(),
             ring_pending: Default::default(),
             emitted: Default::default(),
@@ -128,9 +138,8 @@ impl FccSerializer {
             ring_same_prev: Default::default(),
             last_done_q: Default::default(),
             done: Default::default(),
-            head_earlier: FccPrefixOr::new(n),
             head_any: FccAnyOr::new(n),
-            head_two: FccTwoOr::new(n),
+            head_rest: FccAnyOr::new(n),
             pending_prefix: FccPrefixOr::new(n),
             pending_two_or: FccTwoOr::new(n),
             pick: FccPick::new(n),
@@ -147,6 +156,7 @@ impl Logic for FccSerializer {
             clk,
             loaded,
             phase,
+            pick_q,
             more_pending,
             pending_two,
             ring_pending,
@@ -160,28 +170,40 @@ impl Logic for FccSerializer {
         );
         for e in 0..self._n {
             self.pending[e].clock.next = self.clk.val();
-            self.selected[e].clock.next = self.clk.val();
-            self.pending_earlier[e].clock.next = self.clk.val();
             self.pending[e].d.next = self.pending[e].q.val();
-            self.selected[e].d.next = self.selected[e].q.val();
-            self.head_earlier.x[e].next = self.head_keep[e].val();
             self.head_any.x[e].next = self.head_keep[e].val();
-            self.head_two.x[e].next = self.head_keep[e].val();
+            self.head_rest.x[e].next = self.head_keep[e].val() & !self.head_first[e].val();
             self.pending_prefix.x[e].next = self.pending[e].q.val();
             self.pending_two_or.x[e].next = self.pending[e].q.val();
-            self.pending_earlier[e].d.next = self.pending_prefix.pre[e].val();
-            self.pick.sel[e].next = self.selected[e].q.val();
+            // The position the next Emit sends: the record's first kept
+            // one at Load (`sel_flip` clear), the first pending one at
+            // Select (`sel_flip` loaded in the Emit before, when `pending`
+            // is what Select sees).
+            self.sel_flip[e].clock.next = self.clk.val();
+            self.sel_flip[e].d.next = self.loaded.q.val()
+                & (self.head_first[e].val()
+                    ^ (self.pending[e].q.val() & !self.pending_prefix.pre[e].val()));
+            self.pick.sel[e].next = self.head_first[e].val() ^ self.sel_flip[e].q.val();
             self.pick.v[e].next = self.head_rep[e].val();
         }
         self.pending_two.d.next = self.pending_two_or.two.val();
         self.join_push.next = false;
+        // The join's fields depend on `phase` alone (not on the queue's room).
         self.join_rec.next.a = self.head.val().c;
-        self.join_rec.next.b = self.pick.o.val();
+        self.join_rec.next.b = self.pick_q.q.val();
         self.join_rec.next.same = self.centre_same.q.val() | self.emitted.q.val();
+        if self.phase.q.val() == SerPhase::Ring {
+            self.join_rec.next.a = self.head.val().ring_a;
+            self.join_rec.next.b = self.head.val().ring_b;
+            self.join_rec.next.same = self.ring_same_prev.q.val();
+            if self.emitted.q.val() {
+                self.join_rec.next.same = self.ring_same_centre.q.val();
+            }
+        }
         self.done.next = false;
         if !self.loaded.q.val() & self.head_valid.val() {
             self.loaded.d.next = true;
-            self.more_pending.d.next = self.head_two.two.val();
+            self.more_pending.d.next = self.head_rest.any.val();
             self.ring_pending.d.next = self.head.val().ring;
             self.centre_same.d.next =
                 self.prev_a_valid.q.val() & (self.head.val().c == self.prev_a.q.val());
@@ -189,9 +211,9 @@ impl Logic for FccSerializer {
             self.ring_same_prev.d.next =
                 self.prev_a_valid.q.val() & (self.head.val().ring_a == self.prev_a.q.val());
             self.emitted.d.next = false;
+            self.pick_q.d.next = self.pick.o.val();
             for e in 0..self._n {
-                self.selected[e].d.next = self.head_keep[e].val() & !self.head_earlier.pre[e].val();
-                self.pending[e].d.next = self.head_keep[e].val() & self.head_earlier.pre[e].val();
+                self.pending[e].d.next = self.head_keep[e].val() & !self.head_first[e].val();
             }
             self.phase.d.next = SerPhase::Select;
             if self.head_any.any.val() {
@@ -204,11 +226,10 @@ impl Logic for FccSerializer {
             match self.phase.q.val() {
                 SerPhase::Select => {
                     self.more_pending.d.next = self.pending_two.q.val();
+                    self.pick_q.d.next = self.pick.o.val();
                     for e in 0..self._n {
-                        self.selected[e].d.next =
-                            self.pending[e].q.val() & !self.pending_earlier[e].q.val();
-                        self.pending[e].d.next =
-                            self.pending[e].q.val() & self.pending_earlier[e].q.val();
+                        self.pending[e].d.next = self.pending[e].q.val()
+                            & !(self.head_first[e].val() ^ self.sel_flip[e].q.val());
                     }
                     if self.more_pending.q.val() {
                         self.phase.d.next = SerPhase::Emit;
@@ -237,12 +258,6 @@ impl Logic for FccSerializer {
                 SerPhase::Ring => {
                     if self.join_room.val() {
                         self.join_push.next = true;
-                        self.join_rec.next.a = self.head.val().ring_a;
-                        self.join_rec.next.b = self.head.val().ring_b;
-                        self.join_rec.next.same = self.ring_same_prev.q.val();
-                        if self.emitted.q.val() {
-                            self.join_rec.next.same = self.ring_same_centre.q.val();
-                        }
                         self.prev_a.d.next = self.head.val().ring_a;
                         self.prev_a_valid.d.next = true;
                         self.ring_pending.d.next = false;

@@ -17,13 +17,17 @@
 //!   representative. A later match with representative `min` is marked
 //!   (`later_min`).
 //! * SM+1: a match is kept unless it is known, `adj`, has the run's
-//!   representative (before this centre), or is a later match with `min`.
+//!   representative (before this centre), or is a later match with `min`;
+//!   whether each group of `GROUP` positions has a kept one (`keep_group`).
 //! * SM+2: a centre with kept matches, a ring join or the frame's end asks
 //!   for a centre-buffer record (`rec_push` in SM+3); any other valid centre
-//!   returns its input credit (`credit_drop`).
+//!   returns its input credit (`credit_drop`). The first kept position
+//!   (`FccFirstSet`, from `keep` and `keep_group`).
 //!
-//! The record's row values (`rec_rep`) and kept flags (`rec_keep`) show
-//! beside `rec` in SM+3.
+//! The record's row values (`rec_rep`), kept flags (`rec_keep`) and
+//! first-kept flags (`rec_first`: the first kept position, found in SM+2 so
+//! that the serializer picks its first join from flip-flops) show beside
+//! `rec` in SM+3.
 //!
 //! Reset: `rst` is the reset one cycle ahead. Every group of reset loads
 //! has its own registered copy (`FccKeepReg`), at most `RESET_FANOUT` loads
@@ -37,6 +41,8 @@ use fcc_params::FccParams;
 use rust_hdl::prelude::*;
 
 use crate::fcc_any_or::FccAnyOr;
+use crate::fcc_first_set::FccFirstSet;
+use crate::fcc_group_or::{groups, FccGroupOr};
 use crate::fcc_keep_reg::FccKeepReg;
 use crate::fcc_known_mask::FccKnownMask;
 use crate::fcc_match_delay::FccMatchDelay;
@@ -82,6 +88,7 @@ pub struct FccSortFilter {
     pub rec: Signal<Out, CtrRec>,
     pub rec_rep: Vec<Signal<Out, Bits<16>>>,
     pub rec_keep: Vec<Signal<Out, Bit>>,
+    pub rec_first: Vec<Signal<Out, Bit>>,
     /// A valid centre that needs no record (its input credit returns).
     pub credit_drop: Signal<Out, Bit>,
     // ---- S0.
@@ -118,11 +125,18 @@ pub struct FccSortFilter {
     later_min: Vec<DFF<Bit>>,
     is_run_rep: Vec<DFF<Bit>>,
     // ---- SM+1.
+    keep_next: Vec<Signal<Local, Bit>>,
     keep: Vec<DFF<Bit>>,
+    /// Any kept position in each group of `GROUP` (for `keep_any` and the
+    /// first-kept search).
+    keep_group_or: FccGroupOr,
+    keep_group: Vec<DFF<Bit>>,
     // ---- SM+2.
     keep_any: FccAnyOr,
+    keep_first: FccFirstSet,
     need_rec: Signal<Local, Bit>,
     keep_sm3: Vec<DFF<Bit>>,
+    first_sm3: Vec<DFF<Bit>>,
     rec_push_q: DFF<Bit>,
     credit_drop_q: DFF<Bit>,
     rec_q: DFF<CtrRec>,
@@ -133,6 +147,7 @@ pub struct FccSortFilter {
     ring_zero: Constant<RingJoin>,
     zero16: Constant<Bits<16>>,
     _n: usize,
+    _groups: usize,
     /// Levels of the minimum tree.
     _l: usize,
 }
@@ -157,6 +172,7 @@ impl FccSortFilter {
             rec: Default::default(),
             rec_rep: vec_of(n),
             rec_keep: vec_of(n),
+            rec_first: vec_of(n),
             credit_drop: Default::default(),
             last_label: Default::default(),
             last_label_valid: Default::default(),
@@ -186,10 +202,15 @@ impl FccSortFilter {
             rep_write_value: Default::default(),
             later_min: vec_of(n),
             is_run_rep: vec_of(n),
+            keep_next: vec_of(n),
             keep: vec_of(n),
-            keep_any: FccAnyOr::new(n),
+            keep_group_or: FccGroupOr::new(n),
+            keep_group: vec_of(groups(n)),
+            keep_any: FccAnyOr::new(groups(n)),
+            keep_first: FccFirstSet::new(n),
             need_rec: Default::default(),
             keep_sm3: vec_of(n),
+            first_sm3: vec_of(n),
             rec_push_q: Default::default(),
             credit_drop_q: Default::default(),
             rec_q: Default::default(),
@@ -199,6 +220,7 @@ impl FccSortFilter {
             ring_zero: Constant::new(RingJoin::default()),
             zero16: kb(0),
             _n: n,
+            _groups: groups(n),
             _l: l,
         }
     }
@@ -245,6 +267,7 @@ impl Logic for FccSortFilter {
             self.is_run_rep[e].clock.next = self.clk.val();
             self.keep[e].clock.next = self.clk.val();
             self.keep_sm3[e].clock.next = self.clk.val();
+            self.first_sm3[e].clock.next = self.clk.val();
         }
         self.min_tree.clk.next = self.clk.val();
         self.known_mask.clk.next = self.clk.val();
@@ -332,18 +355,27 @@ impl Logic for FccSortFilter {
         self.rep_wdata.next = self.rep_write_value.q.val();
         // ---- SM+1: keep a match unless known, adjacent or a later minimum.
         for e in 0..self._n {
-            self.keep[e].d.next = self.ctr_sm1.q.val().elig
+            self.keep_next[e].next = self.ctr_sm1.q.val().elig
                 & self.match_delay.hit_sm1[e].val()
                 & !self.match_delay.adj_sm1[e].val()
                 & !self.known_mask.known_late[e].val()
                 & !self.is_run_rep[e].q.val()
                 & !self.later_min[e].q.val();
+            self.keep[e].d.next = self.keep_next[e].val();
+            self.keep_group_or.x[e].next = self.keep_next[e].val();
+        }
+        for g in 0..self._groups {
+            self.keep_group[g].clock.next = self.clk.val();
+            self.keep_group[g].d.next = self.keep_group_or.any[g].val();
+            self.keep_any.x[g].next = self.keep_group[g].q.val();
+            self.keep_first.gany[g].next = self.keep_group[g].q.val();
         }
         self.run_rep_sm2.d.next = self.run_rep_sm1.q.val();
-        // ---- SM+2: does the centre need a record?
+        // ---- SM+2: does the centre need a record? Its first kept position.
         for e in 0..self._n {
-            self.keep_any.x[e].next = self.keep[e].q.val();
+            self.keep_first.x[e].next = self.keep[e].q.val();
             self.keep_sm3[e].d.next = self.keep[e].q.val();
+            self.first_sm3[e].d.next = self.keep_first.first[e].val();
         }
         self.need_rec.next =
             self.keep_any.any.val() | self.ctr_sm2.q.val().ring | self.ctr_sm2.q.val().last;
@@ -361,6 +393,7 @@ impl Logic for FccSortFilter {
         for e in 0..self._n {
             self.rec_rep[e].next = self.match_delay.rep_sm3[e].val();
             self.rec_keep[e].next = self.keep_sm3[e].q.val();
+            self.rec_first[e].next = self.first_sm3[e].q.val();
         }
         if self.valid_rst.q.val() {
             self.last_label_valid.d.next = false;

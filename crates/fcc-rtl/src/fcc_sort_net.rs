@@ -157,8 +157,10 @@ impl Logic for FccSortNet {
         for e in 0..self._n {
             self.centre_buf.rep[e].next = self.filter.rec_rep[e].val();
             self.centre_buf.keep[e].next = self.filter.rec_keep[e].val();
+            self.centre_buf.first[e].next = self.filter.rec_first[e].val();
             self.serializer.head_rep[e].next = self.centre_buf.head_rep[e].val();
             self.serializer.head_keep[e].next = self.centre_buf.head_keep[e].val();
+            self.serializer.head_first[e].next = self.centre_buf.head_first[e].val();
         }
         self.centre_buf.take.next = self.serializer.take.val();
         self.take.next = self.serializer.take.val();

@@ -23,12 +23,6 @@ pub fn waivers(p: &FccParams) -> String {
          // The frame's columns C (<= 4096) are used modulo 4096 (as C - 1 and\n\
          // C - 2, both below 4096), so bit 12 of the run value is not read.\n\
          lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'run_cols'[12]*\"\n\
-         // rust-hdl writes each module's logic as one combinational always block.\n\
-         // The serializer's block feeds the prefix network `head_earlier` (the\n\
-         // kept positions of the head record) and reads its outputs. The loop\n\
-         // exists only at block level, not between signals (rust-hdl's\n\
-         // check_logic_loops passes); it costs Verilator some speed, nothing else.\n\
-         lint_off -rule UNOPTFLAT -file \"*fcc_top.v\" -match \"*serializer.head_earlier.*\"\n\
          // FccFifo offers its fill level and its RAM's ports (for side RAMs) to\n\
          // every user. The centre buffer needs no level (the input credits bound\n\
          // it) and the join queue has no side RAMs.\n\
@@ -151,9 +145,6 @@ pub fn sort_net_waivers(p: &FccParams) -> String {
     s.push_str(
         "// fcc_sort_net.v holds the sort network and its sub-blocks.\n\
          lint_off -rule DECLFILENAME -file \"*fcc_sort_net.v\"\n\
-         // The serializer's combinational block feeds its prefix network and\n\
-         // reads its outputs (a block-level loop only, as in fcc_top.v).\n\
-         lint_off -rule UNOPTFLAT -file \"*fcc_sort_net.v\" -match \"*serializer.head_earlier.*\"\n\
          // FccFifo's fill level and side-RAM ports, unused here as in fcc_top.v.\n\
          lint_off -rule UNUSEDSIGNAL -file \"*fcc_sort_net.v\" -match \"*'records$level'*\"\n\
          lint_off -rule UNUSEDSIGNAL -file \"*fcc_sort_net.v\" -match \"*'queue$ram_*\"\n",
