@@ -19,12 +19,17 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out="$PWD/target/fcc-coverage"
+# The commit whose generator builds the models, read before they are built.
+rtl="$(git rev-parse --short HEAD)"
+if [ -n "$(git status --porcelain -- crates/fcc-rtl)" ]; then
+    rtl="$rtl with local changes to crates/fcc-rtl"
+fi
 rm -rf "$out"
 mkdir -p "$out"
 FCC_SIM_COVERAGE="$out" cargo test -p fcc-sim --test regression --test corners \
     --test run_params --test board -- "$@"
 python3 sim/coverage_summary.py "$out" --command "bash sim/coverage.sh${*:+ $*}" \
-    --json docs/coverage.json > docs/coverage.md.tmp
+    --rtl "$rtl" --json docs/coverage.json > docs/coverage.md.tmp
 mv docs/coverage.md.tmp docs/coverage.md
 echo "wrote docs/coverage.md and docs/coverage.json from $(ls "$out"/*.dat | wc -l) coverage files"
 cargo run --release -q -p fcc-cli -- synth --all --from-json docs/results.json \

@@ -20,7 +20,7 @@ toggle_total}]}), which `fcc synth --all --coverage-json PATH` renders into
 docs/results.md. Blocks it does not know (new sub-blocks) are listed after the
 known ones, by name.
 
-Usage: python3 sim/coverage_summary.py DIR [--command TEXT] [--max-list N] [--json PATH]
+Usage: python3 sim/coverage_summary.py DIR [--command TEXT] [--rtl COMMIT] [--max-list N] [--json PATH]
 """
 
 import argparse
@@ -29,7 +29,6 @@ import glob
 import json
 import os
 import re
-import subprocess
 import sys
 
 BLOCK_ORDER = [
@@ -119,29 +118,14 @@ class Sources:
 # Generated module names end in the configuration's suffix, `_k<K>_<8 hex
 # digits of the parameter hash>` (FccParams::module_suffix); points of one
 # module in several configurations are merged under the name without it.
-CONFIG_SUFFIX = re.compile(r"_k\d+_[0-9a-f]{8}$")
+CONFIG_SUFFIX = re.compile(r"_k(\d+)_[0-9a-f]{8}$")
 CONFIG_SUFFIX_ANY = re.compile(r"_k\d+_[0-9a-f]{8}\b")
 VERILOG_LITERAL = re.compile(r"\d*'[sS]?[bBoOdDhH][0-9a-fA-FxXzZ_]+")
 
 
 def k_of(module):
-    m = re.search(r"_k(\d+)_[0-9a-f]{8}$", module)
+    m = CONFIG_SUFFIX.search(module)
     return int(m.group(1)) if m else None
-
-
-def rtl_revision():
-    """The commit whose generator built the models (HEAD, and whether the
-    generator's sources differ from it), or None outside a git checkout."""
-    try:
-        rev = subprocess.run(
-            ["git", "rev-parse", "--short", "HEAD"], capture_output=True, text=True, check=True
-        ).stdout.strip()
-        dirty = subprocess.run(
-            ["git", "status", "--porcelain", "--", "crates/fcc-rtl"], capture_output=True, text=True, check=True
-        ).stdout.strip()
-    except (OSError, subprocess.CalledProcessError):
-        return None
-    return rev + (" with local changes to crates/fcc-rtl" if dirty else "")
 
 
 def base_name(module):
@@ -158,6 +142,7 @@ def main():
     ap.add_argument("--command", default="bash sim/coverage.sh", help="command named in the header")
     ap.add_argument("--max-list", type=int, default=12, help="unreached items listed per block and kind")
     ap.add_argument("--json", help="also write the per-block counts to this JSON file")
+    ap.add_argument("--rtl", help="the commit whose generator built the models (sim/coverage.sh gives it)")
     a = ap.parse_args()
     files = sorted(glob.glob(os.path.join(a.dir, "*.dat")))
     if not files:
@@ -213,7 +198,7 @@ def main():
         if not hit:
             missed[(kind, blk)].append(key)
     blocks = [b for b in BLOCK_ORDER if b in stats] + sorted(b for b in stats if b not in BLOCK_ORDER)
-    rev = rtl_revision()
+    rev = a.rtl
 
     if a.json:
         summary = {

@@ -235,7 +235,7 @@ fn registers_of_the_core_read_back_and_irq_follows_frame_done() {
         bits::CONTROL_IRQ_ENABLE,
         "CONTROL after CLEAR: expected IRQ_ENABLE only != got {control:#x}"
     );
-    // The next frame counts from 0 again.
+    // The frame counter starts again from 0: the next frame is frame 1.
     let run = d.run_frame(&f, &Drive::default()).unwrap();
     compare(&p, &gold, &run, "frame after CONTROL.CLEAR").unwrap();
     d.step(&fcc_sim::model::FccIn {
