@@ -73,6 +73,20 @@ pub fn checkerboard(p: &FccParams) -> Frame {
     f
 }
 
+/// Columns alternately near and far in the first `width` columns, the rest
+/// empty: every pixel there is a run of its own and matches the same-range
+/// pixels of the rows above, so from K = 5 on a centre keeps several joins.
+pub fn stripes(p: &FccParams, width: usize) -> Frame {
+    let mut f = empty(p);
+    for r in 0..p.rows {
+        for c in 0..width.min(p.cols) {
+            let range = if c % 2 == 0 { 5.0 } else { 20.0 };
+            f.set(r, c, point_at(p, r, c, range));
+        }
+    }
+    f
+}
+
 /// Vertical teeth (separate runs in every row) that only meet in the bottom
 /// row: every tooth's labels merge late, through long parent chains.
 pub fn comb(p: &FccParams) -> Frame {

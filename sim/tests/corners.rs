@@ -1,9 +1,10 @@
 //! Directed corners for what the regression alone never reached (see
 //! docs/coverage.md): the read-back waiting on a sink that stalls for long
 //! stretches (every queue of the label updater full), dense frames fed without
-//! gaps (input credits running low), and a sink that is never ready until the
-//! whole frame is in. All on the 16 x 256, K = 3, 11-bit configuration of the
-//! regression, so no model beyond the regression's is built.
+//! gaps (input credits running low), a sink that is never ready until the
+//! whole frame is in, and a join queue that fills. All on 16 x 256, 11-bit
+//! configurations of the regression (K = 3 and 9), so no model beyond the
+//! regression's is built.
 
 use fcc_params::FccParams;
 use fcc_sim::model::FccIn;
@@ -125,4 +126,33 @@ fn dense_frames_without_input_gaps_under_full_and_no_backpressure() {
         };
         check(&mut d, &f, &drive, name);
     }
+}
+
+/// More joins than the union engine can take: 120 columns of stripes (1,920
+/// runs, within the 11-bit labels) give about 17,000 joins at K = 9, more than
+/// one per cycle, while the union engine takes at most one per two cycles.
+/// The join queue (4,096 joins) fills, the serializer waits for its room and
+/// the input is held; the labels must still be exact. (The sort-network
+/// bench checks that the queue reaches its high level for this frame even
+/// with a union engine ready every other cycle; docs/coverage.md shows the
+/// serializer's wait reached here.)
+#[test]
+fn join_queue_fills_and_holds_the_input() {
+    let p = FccParams {
+        fsize: 9,
+        ..small()
+    };
+    let mut d = dut(&p);
+    let f = frames::stripes(&p, 120);
+    let run = check(&mut d, &f, &Drive::default(), "stripes, 120 columns");
+    eprintln!(
+        "stripes: joins {}, input stalls {}, cycles {}",
+        run.joins, run.input_stalls, run.cycles
+    );
+    assert!(
+        run.joins as usize > fcc_rtl::JQ_HIGH_LEVEL,
+        "only {} joins: too few to fill the join queue",
+        run.joins
+    );
+    assert!(run.input_stalls > 0, "the input was never held");
 }

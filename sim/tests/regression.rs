@@ -401,18 +401,35 @@ fn label_overflow_with_8_bit_labels() {
     }
 }
 
+/// Every output width, and frame sizes whose last beat holds each possible
+/// number of labels: 16 x 256 leaves a full beat, 19 x 259, 18 x 257 and
+/// 17 x 259 leave 1, 2 and 3 of 4 labels (17 x 257 leaves 1 of 2). Labels
+/// run out in every build (11 bits), so unlabelled pixels reach every slot.
 #[test]
 fn one_and_two_labels_per_beat_and_odd_sizes() {
-    for (lpb, rows, cols, fsize) in [(1u32, 16, 256, 3usize), (2, 17, 257, 7), (4, 19, 259, 9)] {
+    for (lpb, rows, cols, fsize) in [
+        (1u32, 16, 256, 3usize),
+        (2, 17, 257, 7),
+        (4, 19, 259, 9),
+        (4, 18, 257, 3),
+        (4, 17, 259, 5),
+    ] {
         let p = FccParams {
             rows,
             cols,
             fsize,
             labels_per_beat: lpb,
+            label_bits: 11,
             ..Default::default()
         };
         let mut d = dut(&p);
-        for (name, f) in frames::directed(&p).into_iter().take(6) {
+        let directed = frames::directed(&p);
+        let kept = directed
+            .into_iter()
+            .enumerate()
+            .filter(|(i, (name, _))| *i < 6 || *name == "label_overflow")
+            .map(|(_, nf)| nf);
+        for (name, f) in kept {
             let drive = Drive {
                 backpressure: 0.3,
                 gap: 0.1,
@@ -421,6 +438,12 @@ fn one_and_two_labels_per_beat_and_odd_sizes() {
             };
             let run = check(&mut d, &f, &drive, name);
             assert_eq!(run.beats as usize, p.pixels().div_ceil(lpb as usize));
+            if name == "label_overflow" {
+                assert!(
+                    run.overflow && run.unlabelled > 0,
+                    "K {fsize}, {rows} x {cols}: labels never ran out"
+                );
+            }
         }
         check(
             &mut d,

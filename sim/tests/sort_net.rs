@@ -15,7 +15,7 @@ use std::collections::{HashSet, VecDeque};
 
 use fcc_golden::{dist2, pass1, pass2, Frame, JoinSink, Pass1};
 use fcc_params::FccParams;
-use fcc_rtl::CREDITS;
+use fcc_rtl::{CREDITS, JQ_HIGH_LEVEL};
 use fcc_sim::{frames, load_sort_net, pack_centre, SnCentre, SnIn, SortNetDut};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -137,6 +137,8 @@ struct Count {
     emitted: usize,
     /// Cycles a centre waited for an input credit.
     credit_stalls: usize,
+    /// Most joins waiting in the join queue at once.
+    max_queued: usize,
 }
 
 /// A sort network of build `p` that runs frames back to back, as `fcc_top`
@@ -311,6 +313,9 @@ impl Bench {
                 emitted.push((a, b));
                 idle = 0;
             }
+            // `joins` counts the joins written to the queue.
+            let queued = out.joins as usize - emitted.len();
+            self.count.max_queued = self.count.max_queued.max(queued);
             last_done |= out.last_done != 0;
             quiet = if last_done && next == rows * cols && out.jv == 0 && out.jq_empty != 0 {
                 quiet + 1
@@ -383,7 +388,7 @@ impl Bench {
         let c = &self.count;
         eprintln!(
             "SORT_NET fsize {} {what}: {} frames, golden pairs {}, merges needed {}, joins emitted {}, \
-             dropped {} ({:.1} %), credit stalls {}",
+             dropped {} ({:.1} %), credit stalls {}, most joins queued {}",
             self.p.fsize,
             c.frames,
             c.golden_pairs,
@@ -391,7 +396,8 @@ impl Bench {
             c.emitted,
             c.golden_pairs as i64 - c.emitted as i64,
             100.0 * (c.golden_pairs as f64 - c.emitted as f64) / (c.golden_pairs.max(1) as f64),
-            c.credit_stalls
+            c.credit_stalls,
+            c.max_queued
         );
     }
 }
@@ -442,18 +448,17 @@ fn every_frame_kind(fsize: usize) {
 
 /// Columns alternately near and far: every pixel is its own run, and each
 /// matches the same-range pixels of the rows above, so every centre keeps
-/// joins. A union engine ready one cycle in five fills the join queue, the
+/// joins. A union engine ready one cycle in five lets the joins pile up, the
 /// serializer and the centre buffer back up, and the input credits run out
-/// (the test fails if they never do).
+/// (the test fails if they never do). From K = 5 on, a centre keeps several
+/// joins and the join queue fills: the serializer waits for its room (the
+/// test fails if the queue never reaches its high level). At K = 3 a centre
+/// has one join, 3,840 in the frame, fewer than the queue holds. At K = 9
+/// and 11 the same stripes, 120 columns wide, must fill the queue even with a
+/// union engine ready every other cycle, the core's fastest.
 fn striped_frame_backs_up_to_the_input(fsize: usize) {
     let p = build(fsize);
-    let mut f = frames::empty(&p);
-    for r in 0..p.rows {
-        for c in 0..p.cols {
-            let range = if c % 2 == 0 { 5.0 } else { 20.0 };
-            f.set(r, c, frames::point_at(&p, r, c, range));
-        }
-    }
+    let f = frames::stripes(&p, p.cols);
     let mut b = Bench::new(&p, 0xb10b + fsize as u64);
     b.frame(
         "striped",
@@ -468,6 +473,29 @@ fn striped_frame_backs_up_to_the_input(fsize: usize) {
         b.count.credit_stalls > 0,
         "K {fsize}: the input never waited for a credit"
     );
+    if fsize >= 5 {
+        assert!(
+            b.count.max_queued >= JQ_HIGH_LEVEL,
+            "K {fsize}: the join queue never filled ({} joins at most, room goes low at {})",
+            b.count.max_queued,
+            JQ_HIGH_LEVEL
+        );
+    }
+    // The frame of the top-level test `join_queue_fills_and_holds_the_input`.
+    if fsize >= 9 {
+        let mut b = Bench::new(&p, 0xba9d + fsize as u64);
+        let band = Drive {
+            gap: 0.0,
+            ready: 0.5,
+        };
+        b.frame("stripes, 120 columns", &frames::stripes(&p, 120), band);
+        b.report("stripes 120 columns, union engine ready every other cycle");
+        assert!(
+            b.count.max_queued >= JQ_HIGH_LEVEL,
+            "K {fsize}: 120 columns of stripes never filled the join queue ({} joins at most)",
+            b.count.max_queued
+        );
+    }
 }
 
 macro_rules! per_k {

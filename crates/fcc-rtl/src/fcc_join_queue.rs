@@ -12,6 +12,10 @@ use crate::types::{kb, JoinRec};
 /// Join queue between the serializer and the union engine: 2^JQ_BITS joins.
 pub const JQ_BITS: usize = 12;
 
+/// Queue level from which the serializer is told there is no room: eight
+/// places short of full, the margin for `room`'s lateness.
+pub const JQ_HIGH_LEVEL: usize = (1 << JQ_BITS) - 8;
+
 #[derive(LogicBlock)]
 pub struct FccJoinQueue {
     pub clk: Signal<In, Clock>,
@@ -61,7 +65,7 @@ impl Default for FccJoinQueue {
             queue: FccFifo::default(),
             nearly_full: Default::default(),
             join_count: Default::default(),
-            high_level: kb((1 << JQ_BITS) - 8),
+            high_level: kb(JQ_HIGH_LEVEL as u64),
             zero_level: kb(0),
             one24: kb(1),
             zero24: kb(0),

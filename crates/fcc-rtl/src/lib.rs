@@ -126,6 +126,7 @@ use fcc_params::{FccParams, ParamError};
 use rust_hdl::prelude::*;
 use thiserror::Error;
 
+pub use fcc_join_queue::JQ_HIGH_LEVEL;
 pub use fcc_regs::FccRegs;
 pub use fcc_top::{FccTop, CREDITS};
 
