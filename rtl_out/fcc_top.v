@@ -5070,6 +5070,8 @@ module fcc_intra_k7_668cf05b(clk,rst,pix,last_col,th_h_c,out,provisional,overflo
     // Local signals
     reg  hp_eff;
     reg  fv0;
+    reg  ring_first;
+    reg  prev_load;
     reg  [73:0] p7;
     reg  cont;
     reg  [19:0] nl;
@@ -5439,6 +5441,8 @@ module fcc_intra_k7_668cf05b(clk,rst,pix,last_col,th_h_c,out,provisional,overflo
         fvd$6$clock = clk;
         hp_eff = ~pix[72:72] & has_prev$q;
         fv0 = pix[0:0] & pix[1:1] & ~hp_eff;
+        ring_first = pix[1:1] & ~hp_eff;
+        prev_load = pix[0:0] & pix[1:1];
         near$clk = clk;
         near$ax = pix[17:2];
         near$ay = pix[33:18];
@@ -5454,7 +5458,7 @@ module fcc_intra_k7_668cf05b(clk,rst,pix,last_col,th_h_c,out,provisional,overflo
         ring$ax = first_x$q;
         ring$ay = first_y$q;
         ring$az = first_z$q;
-        if (fv0) begin
+        if (ring_first) begin
             ring$ax = pix[17:2];
             ring$ay = pix[33:18];
             ring$az = pix[49:34];
@@ -5469,16 +5473,16 @@ module fcc_intra_k7_668cf05b(clk,rst,pix,last_col,th_h_c,out,provisional,overflo
         end
         if (pix[0:0]) begin
             has_prev$d = pix[1:1] | hp_eff;
-            if (pix[1:1]) begin
-                prev_x$d = pix[17:2];
-                prev_y$d = pix[33:18];
-                prev_z$d = pix[49:34];
-            end
-            if (fv0) begin
-                first_x$d = pix[17:2];
-                first_y$d = pix[33:18];
-                first_z$d = pix[49:34];
-            end
+        end
+        if (prev_load) begin
+            prev_x$d = pix[17:2];
+            prev_y$d = pix[33:18];
+            prev_z$d = pix[49:34];
+        end
+        if (fv0) begin
+            first_x$d = pix[17:2];
+            first_y$d = pix[33:18];
+            first_z$d = pix[49:34];
         end
         pd$0$d = pix;
         fvd$0$d = fv0;
@@ -5580,9 +5584,6 @@ module fcc_intra_k7_668cf05b(clk,rst,pix,last_col,th_h_c,out,provisional,overflo
             end
             if (p9$q[1:1] & ~labok9$q) begin
                 unl$d = unl$q + one20;
-                if (p9$q[70:70]) begin
-                    unl$d = one20;
-                end
             end
         end
         rm1$d = raw$q - one20;
@@ -7652,13 +7653,7 @@ module fcc_label_update__assembly__slot_mux__0_k7_668cf05b(source,taken,carried,
     // Constant declarations
     localparam  src_carried = 3'b1;
     localparam  src_new$0 = 3'b10;
-    localparam  src_new$1 = 3'b11;
-    localparam  src_new$2 = 3'b100;
-    localparam  src_new$3 = 3'b101;
     localparam  count$0 = 3'b0;
-    localparam  count$1 = 3'b1;
-    localparam  count$2 = 3'b10;
-    localparam  count$3 = 3'b11;
     localparam  zero16 = 16'h0;
 
     // Local signals
@@ -7682,33 +7677,6 @@ module fcc_label_update__assembly__slot_mux__0_k7_668cf05b(source,taken,carried,
             if (taken == count$0) begin
                 label = gear_head;
             end
-        end
-        if (source == src_new$1) begin
-            label = collected_k$1;
-            if (taken == count$1) begin
-                label = gear_head;
-            end
-        end
-        if (source == src_new$2) begin
-            label = collected_k$2;
-            if (taken == count$2) begin
-                label = gear_head;
-            end
-        end
-        if (source == src_new$3) begin
-            label = collected_k$3;
-            if (taken == count$3) begin
-                label = gear_head;
-            end
-        end
-        if ((source == src_new$1) & (taken == count$0)) begin
-            label = gear_next;
-        end
-        if ((source == src_new$2) & (taken == count$1)) begin
-            label = gear_next;
-        end
-        if ((source == src_new$3) & (taken == count$2)) begin
-            label = gear_next;
         end
     end
 
@@ -7730,12 +7698,8 @@ module fcc_label_update__assembly__slot_mux__1_k7_668cf05b(source,taken,carried,
     localparam  src_carried = 3'b1;
     localparam  src_new$0 = 3'b10;
     localparam  src_new$1 = 3'b11;
-    localparam  src_new$2 = 3'b100;
-    localparam  src_new$3 = 3'b101;
     localparam  count$0 = 3'b0;
     localparam  count$1 = 3'b1;
-    localparam  count$2 = 3'b10;
-    localparam  count$3 = 3'b11;
     localparam  zero16 = 16'h0;
 
     // Local signals
@@ -7766,25 +7730,7 @@ module fcc_label_update__assembly__slot_mux__1_k7_668cf05b(source,taken,carried,
                 label = gear_head;
             end
         end
-        if (source == src_new$2) begin
-            label = collected_k$2;
-            if (taken == count$2) begin
-                label = gear_head;
-            end
-        end
-        if (source == src_new$3) begin
-            label = collected_k$3;
-            if (taken == count$3) begin
-                label = gear_head;
-            end
-        end
         if ((source == src_new$1) & (taken == count$0)) begin
-            label = gear_next;
-        end
-        if ((source == src_new$2) & (taken == count$1)) begin
-            label = gear_next;
-        end
-        if ((source == src_new$3) & (taken == count$2)) begin
             label = gear_next;
         end
     end
@@ -7808,11 +7754,9 @@ module fcc_label_update__assembly__slot_mux__2_k7_668cf05b(source,taken,carried,
     localparam  src_new$0 = 3'b10;
     localparam  src_new$1 = 3'b11;
     localparam  src_new$2 = 3'b100;
-    localparam  src_new$3 = 3'b101;
     localparam  count$0 = 3'b0;
     localparam  count$1 = 3'b1;
     localparam  count$2 = 3'b10;
-    localparam  count$3 = 3'b11;
     localparam  zero16 = 16'h0;
 
     // Local signals
@@ -7849,19 +7793,10 @@ module fcc_label_update__assembly__slot_mux__2_k7_668cf05b(source,taken,carried,
                 label = gear_head;
             end
         end
-        if (source == src_new$3) begin
-            label = collected_k$3;
-            if (taken == count$3) begin
-                label = gear_head;
-            end
-        end
         if ((source == src_new$1) & (taken == count$0)) begin
             label = gear_next;
         end
         if ((source == src_new$2) & (taken == count$1)) begin
-            label = gear_next;
-        end
-        if ((source == src_new$3) & (taken == count$2)) begin
             label = gear_next;
         end
     end
@@ -8035,6 +7970,8 @@ module fcc_label_update__gearbox_k7_668cf05b(clk,rst,rst_low_slots,rst_high_slot
     output reg  has_two;
 
     // Constant declarations
+    localparam  low_byte = 16'hff;
+    localparam  high_byte = 16'hff00;
     localparam  count_is$0 = 4'h0;
     localparam  count_is$1 = 4'h1;
     localparam  slot_is$0 = 3'b0;
@@ -8100,10 +8037,26 @@ module fcc_label_update__gearbox_k7_668cf05b(clk,rst,rst_low_slots,rst_high_slot
     reg  [15:0] second_label$d;
     wire  [15:0] second_label$q;
     reg  second_label$clock;
+    reg  third_slot_lo$clock;
+    reg  [2:0] third_slot_lo$d;
+    wire  [2:0] third_slot_lo$q;
+    reg  third_slot_hi$clock;
+    reg  [2:0] third_slot_hi$d;
+    wire  [2:0] third_slot_hi$q;
+    reg  fourth_slot_lo$clock;
+    reg  [2:0] fourth_slot_lo$d;
+    wire  [2:0] fourth_slot_lo$q;
+    reg  fourth_slot_hi$clock;
+    reg  [2:0] fourth_slot_hi$d;
+    wire  [2:0] fourth_slot_hi$q;
 
     // Local signals
     reg  [15:0] third_ring;
     reg  [15:0] fourth_ring;
+    reg  [15:0] third_ring_lo;
+    reg  [15:0] third_ring_hi;
+    reg  [15:0] fourth_ring_lo;
+    reg  [15:0] fourth_ring_hi;
     reg  [15:0] ahead$0;
     reg  [15:0] ahead$1;
     reg  [15:0] ahead$2;
@@ -8194,6 +8147,26 @@ module fcc_label_update__gearbox_k7_668cf05b(clk,rst,rst_low_slots,rst_high_slot
         .q(second_label$q),
         .clock(second_label$clock)
     );
+    fcc_label_update__gearbox__third_slot_lo_k7_668cf05b third_slot_lo(
+        .clock(third_slot_lo$clock),
+        .d(third_slot_lo$d),
+        .q(third_slot_lo$q)
+    );
+    fcc_label_update__gearbox__third_slot_hi_k7_668cf05b third_slot_hi(
+        .clock(third_slot_hi$clock),
+        .d(third_slot_hi$d),
+        .q(third_slot_hi$q)
+    );
+    fcc_label_update__gearbox__fourth_slot_lo_k7_668cf05b fourth_slot_lo(
+        .clock(fourth_slot_lo$clock),
+        .d(fourth_slot_lo$d),
+        .q(fourth_slot_lo$q)
+    );
+    fcc_label_update__gearbox__fourth_slot_hi_k7_668cf05b fourth_slot_hi(
+        .clock(fourth_slot_hi$clock),
+        .d(fourth_slot_hi$d),
+        .q(fourth_slot_hi$q)
+    );
 
     // Update code
     always @(*) begin
@@ -8234,56 +8207,108 @@ module fcc_label_update__gearbox_k7_668cf05b(clk,rst,rst_low_slots,rst_high_slot
         has_two = (count$q != count_is$0) & (count$q != count_is$1);
         front = front_label$q;
         second = second_label$q;
-        third_ring = slots$0$q;
-        fourth_ring = slots$0$q;
-        if (third_slot$q == slot_is$0) begin
-            third_ring = slots$0$q;
+        third_ring_lo = slots$0$q;
+        third_ring_hi = slots$0$q;
+        fourth_ring_lo = slots$0$q;
+        fourth_ring_hi = slots$0$q;
+        if (third_slot_lo$q == slot_is$0) begin
+            third_ring_lo = slots$0$q;
         end
-        if (fourth_slot$q == slot_is$0) begin
-            fourth_ring = slots$0$q;
+        if (third_slot_hi$q == slot_is$0) begin
+            third_ring_hi = slots$0$q;
         end
-        if (third_slot$q == slot_is$1) begin
-            third_ring = slots$1$q;
+        if (fourth_slot_lo$q == slot_is$0) begin
+            fourth_ring_lo = slots$0$q;
         end
-        if (fourth_slot$q == slot_is$1) begin
-            fourth_ring = slots$1$q;
+        if (fourth_slot_hi$q == slot_is$0) begin
+            fourth_ring_hi = slots$0$q;
         end
-        if (third_slot$q == slot_is$2) begin
-            third_ring = slots$2$q;
+        if (third_slot_lo$q == slot_is$1) begin
+            third_ring_lo = slots$1$q;
         end
-        if (fourth_slot$q == slot_is$2) begin
-            fourth_ring = slots$2$q;
+        if (third_slot_hi$q == slot_is$1) begin
+            third_ring_hi = slots$1$q;
         end
-        if (third_slot$q == slot_is$3) begin
-            third_ring = slots$3$q;
+        if (fourth_slot_lo$q == slot_is$1) begin
+            fourth_ring_lo = slots$1$q;
         end
-        if (fourth_slot$q == slot_is$3) begin
-            fourth_ring = slots$3$q;
+        if (fourth_slot_hi$q == slot_is$1) begin
+            fourth_ring_hi = slots$1$q;
         end
-        if (third_slot$q == slot_is$4) begin
-            third_ring = slots$4$q;
+        if (third_slot_lo$q == slot_is$2) begin
+            third_ring_lo = slots$2$q;
         end
-        if (fourth_slot$q == slot_is$4) begin
-            fourth_ring = slots$4$q;
+        if (third_slot_hi$q == slot_is$2) begin
+            third_ring_hi = slots$2$q;
         end
-        if (third_slot$q == slot_is$5) begin
-            third_ring = slots$5$q;
+        if (fourth_slot_lo$q == slot_is$2) begin
+            fourth_ring_lo = slots$2$q;
         end
-        if (fourth_slot$q == slot_is$5) begin
-            fourth_ring = slots$5$q;
+        if (fourth_slot_hi$q == slot_is$2) begin
+            fourth_ring_hi = slots$2$q;
         end
-        if (third_slot$q == slot_is$6) begin
-            third_ring = slots$6$q;
+        if (third_slot_lo$q == slot_is$3) begin
+            third_ring_lo = slots$3$q;
         end
-        if (fourth_slot$q == slot_is$6) begin
-            fourth_ring = slots$6$q;
+        if (third_slot_hi$q == slot_is$3) begin
+            third_ring_hi = slots$3$q;
         end
-        if (third_slot$q == slot_is$7) begin
-            third_ring = slots$7$q;
+        if (fourth_slot_lo$q == slot_is$3) begin
+            fourth_ring_lo = slots$3$q;
         end
-        if (fourth_slot$q == slot_is$7) begin
-            fourth_ring = slots$7$q;
+        if (fourth_slot_hi$q == slot_is$3) begin
+            fourth_ring_hi = slots$3$q;
         end
+        if (third_slot_lo$q == slot_is$4) begin
+            third_ring_lo = slots$4$q;
+        end
+        if (third_slot_hi$q == slot_is$4) begin
+            third_ring_hi = slots$4$q;
+        end
+        if (fourth_slot_lo$q == slot_is$4) begin
+            fourth_ring_lo = slots$4$q;
+        end
+        if (fourth_slot_hi$q == slot_is$4) begin
+            fourth_ring_hi = slots$4$q;
+        end
+        if (third_slot_lo$q == slot_is$5) begin
+            third_ring_lo = slots$5$q;
+        end
+        if (third_slot_hi$q == slot_is$5) begin
+            third_ring_hi = slots$5$q;
+        end
+        if (fourth_slot_lo$q == slot_is$5) begin
+            fourth_ring_lo = slots$5$q;
+        end
+        if (fourth_slot_hi$q == slot_is$5) begin
+            fourth_ring_hi = slots$5$q;
+        end
+        if (third_slot_lo$q == slot_is$6) begin
+            third_ring_lo = slots$6$q;
+        end
+        if (third_slot_hi$q == slot_is$6) begin
+            third_ring_hi = slots$6$q;
+        end
+        if (fourth_slot_lo$q == slot_is$6) begin
+            fourth_ring_lo = slots$6$q;
+        end
+        if (fourth_slot_hi$q == slot_is$6) begin
+            fourth_ring_hi = slots$6$q;
+        end
+        if (third_slot_lo$q == slot_is$7) begin
+            third_ring_lo = slots$7$q;
+        end
+        if (third_slot_hi$q == slot_is$7) begin
+            third_ring_hi = slots$7$q;
+        end
+        if (fourth_slot_lo$q == slot_is$7) begin
+            fourth_ring_lo = slots$7$q;
+        end
+        if (fourth_slot_hi$q == slot_is$7) begin
+            fourth_ring_hi = slots$7$q;
+        end
+        third_ring = (third_ring_lo & low_byte) | (third_ring_hi & high_byte);
+        fourth_ring = (fourth_ring_lo & low_byte) | (fourth_ring_hi & high_byte);
         ahead$0 = front_label$q;
         ahead$1 = second_label$q;
         ahead$2 = third_ring;
@@ -8394,6 +8419,14 @@ module fcc_label_update__gearbox_k7_668cf05b(clk,rst,rst_low_slots,rst_high_slot
             front_label$d = empty_slot;
             second_label$d = empty_slot;
         end
+        third_slot_lo$clock = clk;
+        third_slot_lo$d = third_slot$d;
+        third_slot_hi$clock = clk;
+        third_slot_hi$d = third_slot$d;
+        fourth_slot_lo$clock = clk;
+        fourth_slot_lo$d = fourth_slot$d;
+        fourth_slot_hi$clock = clk;
+        fourth_slot_hi$d = fourth_slot$d;
     end
 
 endmodule // fcc_label_update__gearbox_k7_668cf05b
@@ -8435,6 +8468,48 @@ module fcc_label_update__gearbox__fourth_slot_k7_668cf05b(d,q,clock);
     end
 
 endmodule // fcc_label_update__gearbox__fourth_slot_k7_668cf05b
+
+
+module fcc_label_update__gearbox__fourth_slot_hi_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg [2:0] held;
+    initial begin
+        held = 3'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_label_update__gearbox__fourth_slot_hi_k7_668cf05b
+
+
+module fcc_label_update__gearbox__fourth_slot_lo_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg [2:0] held;
+    initial begin
+        held = 3'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_label_update__gearbox__fourth_slot_lo_k7_668cf05b
 
 
 module fcc_label_update__gearbox__front_label_k7_668cf05b(d,q,clock);
@@ -8682,6 +8757,48 @@ module fcc_label_update__gearbox__third_slot_k7_668cf05b(d,q,clock);
     end
 
 endmodule // fcc_label_update__gearbox__third_slot_k7_668cf05b
+
+
+module fcc_label_update__gearbox__third_slot_hi_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg [2:0] held;
+    initial begin
+        held = 3'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_label_update__gearbox__third_slot_hi_k7_668cf05b
+
+
+module fcc_label_update__gearbox__third_slot_lo_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg [2:0] held;
+    initial begin
+        held = 3'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_label_update__gearbox__third_slot_lo_k7_668cf05b
 
 
 module fcc_label_update__gearbox__write_slot_k7_668cf05b(d,q,clock);
@@ -13276,6 +13393,7 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
 
     // Stub signals
     reg  [9:0] mux$addr;
+    reg  [9:0] mux$addr_hi;
     reg  [15:0] mux$w16$0;
     reg  [15:0] mux$w16$1;
     reg  [15:0] mux$w16$2;
@@ -13370,6 +13488,15 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
     reg  b_v$d;
     wire  b_v$q;
     reg  b_v$clock;
+    reg  ar_word_q$clock;
+    reg  [9:0] ar_word_q$d;
+    wire  [9:0] ar_word_q$q;
+    reg  ar_word_hi_q$clock;
+    reg  [9:0] ar_word_hi_q$d;
+    wire  [9:0] ar_word_hi_q$q;
+    reg  ar_pend_q$d;
+    wire  ar_pend_q$q;
+    reg  ar_pend_q$clock;
     reg  r_v$d;
     wire  r_v$q;
     reg  r_v$clock;
@@ -13537,6 +13664,7 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
     // Sub module instances
     fcc_regs__mux_k7_668cf05b mux(
         .addr(mux$addr),
+        .addr_hi(mux$addr_hi),
         .w16$0(mux$w16$0),
         .w16$1(mux$w16$1),
         .w16$2(mux$w16$2),
@@ -13679,6 +13807,21 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
         .d(b_v$d),
         .q(b_v$q),
         .clock(b_v$clock)
+    );
+    fcc_regs__ar_word_q_k7_668cf05b ar_word_q(
+        .clock(ar_word_q$clock),
+        .d(ar_word_q$d),
+        .q(ar_word_q$q)
+    );
+    fcc_regs__ar_word_hi_q_k7_668cf05b ar_word_hi_q(
+        .clock(ar_word_hi_q$clock),
+        .d(ar_word_hi_q$d),
+        .q(ar_word_hi_q$q)
+    );
+    fcc_regs__ar_pend_q_k7_668cf05b ar_pend_q(
+        .d(ar_pend_q$d),
+        .q(ar_pend_q$q),
+        .clock(ar_pend_q$clock)
     );
     fcc_regs__r_v_k7_668cf05b r_v(
         .d(r_v$d),
@@ -13944,6 +14087,7 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
         w_ge_cols$clock = clk;
         w_le_cols$clock = clk;
         b_v$clock = clk;
+        ar_pend_q$clock = clk;
         r_v$clock = clk;
         r_d$clock = clk;
         irq_en$clock = clk;
@@ -14000,6 +14144,7 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
         w_ge_cols$d = w_ge_cols$q;
         w_le_cols$d = w_le_cols$q;
         b_v$d = b_v$q;
+        ar_pend_q$d = ar_pend_q$q;
         r_v$d = r_v$q;
         r_d$d = r_d$q;
         irq_en$d = irq_en$q;
@@ -14233,7 +14378,8 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
         if (clear_stalls) begin
             s_gstall$d = zero24;
         end
-        mux$addr = s_axil_araddr[11:2];
+        mux$addr = ar_word_q$q;
+        mux$addr_hi = ar_word_hi_q$q;
         mux$w32$0 = count$q;
         mux$w16$0 = s_clusters$q;
         mux$w16$1 = s_prov$q;
@@ -14255,8 +14401,17 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
         mux$w16$4 = sh_thv$q;
         mux$w16$5 = sh_rows$q;
         mux$w16$6 = sh_cols$q;
-        ar_take = s_axil_arvalid & ~r_v$q & ~run_rst_dims$q;
+        ar_take = s_axil_arvalid & ~ar_pend_q$q & ~r_v$q & ~run_rst_dims$q;
+        ar_pend_q$d = ar_take;
+        ar_word_q$clock = clk;
+        ar_word_q$d = ar_word_q$q;
+        ar_word_hi_q$clock = clk;
+        ar_word_hi_q$d = ar_word_hi_q$q;
         if (ar_take) begin
+            ar_word_q$d = s_axil_araddr[11:2];
+            ar_word_hi_q$d = s_axil_araddr[11:2];
+        end
+        if (ar_pend_q$q) begin
             r_v$d = 1'b1;
             r_d$d = mux$data;
         end
@@ -14270,6 +14425,7 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
             aw_v$d = 1'b0;
             w_v$d = 1'b0;
             b_v$d = 1'b0;
+            ar_pend_q$d = 1'b0;
             r_v$d = 1'b0;
             irq_en$d = 1'b0;
             done_sticky$d = 1'b0;
@@ -14323,7 +14479,7 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
         s_axil_wready = ~w_v$q;
         s_axil_bvalid = b_v$q;
         s_axil_bresp = okay;
-        s_axil_arready = ~r_v$q & ~run_rst_dims$q;
+        s_axil_arready = ~ar_pend_q$q & ~r_v$q & ~run_rst_dims$q;
         s_axil_rvalid = r_v$q;
         s_axil_rdata = r_d$q;
         s_axil_rresp = okay;
@@ -14440,6 +14596,67 @@ module fcc_regs__act_thv_c_k7_668cf05b(d,q,clock);
     end
 
 endmodule // fcc_regs__act_thv_c_k7_668cf05b
+
+
+module fcc_regs__ar_pend_q_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__ar_pend_q_k7_668cf05b
+
+
+module fcc_regs__ar_word_hi_q_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg [9:0] held;
+    initial begin
+        held = 10'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_regs__ar_word_hi_q_k7_668cf05b
+
+
+module fcc_regs__ar_word_q_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg [9:0] held;
+    initial begin
+        held = 10'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_regs__ar_word_q_k7_668cf05b
 
 
 module fcc_regs__aw_control_k7_668cf05b(d,q,clock);
@@ -14864,10 +15081,11 @@ module fcc_regs__irq_en_k7_668cf05b(d,q,clock);
 endmodule // fcc_regs__irq_en_k7_668cf05b
 
 
-module fcc_regs__mux_k7_668cf05b(addr,w16$0,w16$1,w16$2,w16$3,w16$4,w16$5,w16$6,w20$0,w24$0,w24$1,w32$0,flags$0,flags$1,flags$2,flags$3,flags$4,flags$5,flags$6,flags$7,flags$8,flags$9,data);
+module fcc_regs__mux_k7_668cf05b(addr,addr_hi,w16$0,w16$1,w16$2,w16$3,w16$4,w16$5,w16$6,w20$0,w24$0,w24$1,w32$0,flags$0,flags$1,flags$2,flags$3,flags$4,flags$5,flags$6,flags$7,flags$8,flags$9,data);
 
     // Module arguments
     input wire  [9:0] addr;
+    input wire  [9:0] addr_hi;
     input wire  [15:0] w16$0;
     input wire  [15:0] w16$1;
     input wire  [15:0] w16$2;
@@ -14892,35 +15110,73 @@ module fcc_regs__mux_k7_668cf05b(addr,w16$0,w16$1,w16$2,w16$3,w16$4,w16$5,w16$6,
     output reg  [31:0] data;
 
     // Update code (custom)
+    // Each case keeps the half of the word its address selects.
+    /* verilator lint_off UNUSEDSIGNAL */
+    reg [31:0] by_lo;
+    reg [31:0] by_hi;
+    /* verilator lint_on UNUSEDSIGNAL */
     always @(*) begin
         case (addr)
-            10'd0: data = 32'h46434331;
-            10'd1: data = 32'h00000100;
-            10'd2: data = 32'hf2a51f2e;
-            10'd3: data = 32'h668cf05b;
-            10'd4: data = 32'h00000007;
-            10'd5: data = 32'h00000040;
-            10'd6: data = 32'h00000800;
-            10'd7: data = 32'h0000000f;
-            10'd8: data = 32'h00000004;
-            10'd9: data = 32'h00030d40;
-            10'd16: data = {30'd0, flags$0, 1'b0};
-            10'd17: data = {30'd0, flags$2, flags$1};
-            10'd18: data = {27'd0, flags$9, flags$8, flags$7, flags$6, flags$5};
-            10'd20: data = w32$0;
-            10'd21: data = {16'd0, w16$0};
-            10'd22: data = {16'd0, w16$1};
-            10'd23: data = {12'd0, w20$0};
-            10'd24: data = {30'd0, flags$4, flags$3};
-            10'd25: data = {8'd0, w24$0};
-            10'd26: data = {8'd0, w24$1};
-            10'd32: data = {16'd0, w16$2};
-            10'd33: data = {16'd0, w16$3};
-            10'd34: data = {16'd0, w16$4};
-            10'd35: data = {16'd0, w16$5};
-            10'd36: data = {16'd0, w16$6};
-            default: data = 32'h00000000;
+            10'd0: by_lo = 32'h46434331;
+            10'd1: by_lo = 32'h00000100;
+            10'd2: by_lo = 32'hf2a51f2e;
+            10'd3: by_lo = 32'h668cf05b;
+            10'd4: by_lo = 32'h00000007;
+            10'd5: by_lo = 32'h00000040;
+            10'd6: by_lo = 32'h00000800;
+            10'd7: by_lo = 32'h0000000f;
+            10'd8: by_lo = 32'h00000004;
+            10'd9: by_lo = 32'h00030d40;
+            10'd16: by_lo = {30'd0, flags$0, 1'b0};
+            10'd17: by_lo = {30'd0, flags$2, flags$1};
+            10'd18: by_lo = {27'd0, flags$9, flags$8, flags$7, flags$6, flags$5};
+            10'd20: by_lo = w32$0;
+            10'd21: by_lo = {16'd0, w16$0};
+            10'd22: by_lo = {16'd0, w16$1};
+            10'd23: by_lo = {12'd0, w20$0};
+            10'd24: by_lo = {30'd0, flags$4, flags$3};
+            10'd25: by_lo = {8'd0, w24$0};
+            10'd26: by_lo = {8'd0, w24$1};
+            10'd32: by_lo = {16'd0, w16$2};
+            10'd33: by_lo = {16'd0, w16$3};
+            10'd34: by_lo = {16'd0, w16$4};
+            10'd35: by_lo = {16'd0, w16$5};
+            10'd36: by_lo = {16'd0, w16$6};
+            default: by_lo = 32'h00000000;
         endcase
+    end
+    always @(*) begin
+        case (addr_hi)
+            10'd0: by_hi = 32'h46434331;
+            10'd1: by_hi = 32'h00000100;
+            10'd2: by_hi = 32'hf2a51f2e;
+            10'd3: by_hi = 32'h668cf05b;
+            10'd4: by_hi = 32'h00000007;
+            10'd5: by_hi = 32'h00000040;
+            10'd6: by_hi = 32'h00000800;
+            10'd7: by_hi = 32'h0000000f;
+            10'd8: by_hi = 32'h00000004;
+            10'd9: by_hi = 32'h00030d40;
+            10'd16: by_hi = {30'd0, flags$0, 1'b0};
+            10'd17: by_hi = {30'd0, flags$2, flags$1};
+            10'd18: by_hi = {27'd0, flags$9, flags$8, flags$7, flags$6, flags$5};
+            10'd20: by_hi = w32$0;
+            10'd21: by_hi = {16'd0, w16$0};
+            10'd22: by_hi = {16'd0, w16$1};
+            10'd23: by_hi = {12'd0, w20$0};
+            10'd24: by_hi = {30'd0, flags$4, flags$3};
+            10'd25: by_hi = {8'd0, w24$0};
+            10'd26: by_hi = {8'd0, w24$1};
+            10'd32: by_hi = {16'd0, w16$2};
+            10'd33: by_hi = {16'd0, w16$3};
+            10'd34: by_hi = {16'd0, w16$4};
+            10'd35: by_hi = {16'd0, w16$5};
+            10'd36: by_hi = {16'd0, w16$6};
+            default: by_hi = 32'h00000000;
+        endcase
+    end
+    always @(*) begin
+        data = {by_hi[31:16], by_lo[15:0]};
     end
 endmodule // fcc_regs__mux_k7_668cf05b
 
@@ -18606,6 +18862,24 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
     reg  [15:0] run_rep_sm2$d;
     wire  [15:0] run_rep_sm2$q;
     reg  run_rep_sm2$clock;
+    reg  same_run_sm$0$clock;
+    reg  same_run_sm$0$d;
+    wire  same_run_sm$0$q;
+    reg  same_run_sm$1$clock;
+    reg  same_run_sm$1$d;
+    wire  same_run_sm$1$q;
+    reg  same_run_sm$2$clock;
+    reg  same_run_sm$2$d;
+    wire  same_run_sm$2$q;
+    reg  same_run_sm$3$clock;
+    reg  same_run_sm$3$d;
+    wire  same_run_sm$3$q;
+    reg  same_run_sm$4$clock;
+    reg  same_run_sm$4$d;
+    wire  same_run_sm$4$q;
+    reg  same_run_sm$5$clock;
+    reg  same_run_sm$5$d;
+    wire  same_run_sm$5$q;
     reg  rep_write_en$d;
     wire  rep_write_en$q;
     reg  rep_write_en$clock;
@@ -19054,6 +19328,12 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
     reg  [31:0] ring_s0;
     reg  [15:0] run_rep_before;
     reg  [15:0] run_rep_after;
+    reg  [15:0] run_rep_group$0;
+    reg  [15:0] run_rep_group$1;
+    reg  [15:0] run_rep_group$2;
+    reg  [15:0] run_rep_group$3;
+    reg  [15:0] run_rep_group$4;
+    reg  [15:0] run_rep_group$5;
     reg  keep_next$0;
     reg  keep_next$1;
     reg  keep_next$2;
@@ -19469,6 +19749,36 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
         .d(run_rep_sm2$d),
         .q(run_rep_sm2$q),
         .clock(run_rep_sm2$clock)
+    );
+    fcc_sort_net__filter__same_run_sm__0_k7_668cf05b same_run_sm$0(
+        .clock(same_run_sm$0$clock),
+        .d(same_run_sm$0$d),
+        .q(same_run_sm$0$q)
+    );
+    fcc_sort_net__filter__same_run_sm__1_k7_668cf05b same_run_sm$1(
+        .clock(same_run_sm$1$clock),
+        .d(same_run_sm$1$d),
+        .q(same_run_sm$1$q)
+    );
+    fcc_sort_net__filter__same_run_sm__2_k7_668cf05b same_run_sm$2(
+        .clock(same_run_sm$2$clock),
+        .d(same_run_sm$2$d),
+        .q(same_run_sm$2$q)
+    );
+    fcc_sort_net__filter__same_run_sm__3_k7_668cf05b same_run_sm$3(
+        .clock(same_run_sm$3$clock),
+        .d(same_run_sm$3$d),
+        .q(same_run_sm$3$q)
+    );
+    fcc_sort_net__filter__same_run_sm__4_k7_668cf05b same_run_sm$4(
+        .clock(same_run_sm$4$clock),
+        .d(same_run_sm$4$d),
+        .q(same_run_sm$4$q)
+    );
+    fcc_sort_net__filter__same_run_sm__5_k7_668cf05b same_run_sm$5(
+        .clock(same_run_sm$5$clock),
+        .d(same_run_sm$5$d),
+        .q(same_run_sm$5$q)
     );
     fcc_sort_net__filter__rep_write_en_k7_668cf05b rep_write_en(
         .d(rep_write_en$d),
@@ -20362,6 +20672,18 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
         ctr_tree$2$d = ctr_tree$1$q;
         ctr_tree$3$d = ctr_tree$2$q;
         ctr_sm$d = ctr_tree$3$q;
+        same_run_sm$0$clock = clk;
+        same_run_sm$0$d = ctr_sm$d[2:2];
+        same_run_sm$1$clock = clk;
+        same_run_sm$1$d = ctr_sm$d[2:2];
+        same_run_sm$2$clock = clk;
+        same_run_sm$2$d = ctr_sm$d[2:2];
+        same_run_sm$3$clock = clk;
+        same_run_sm$3$d = ctr_sm$d[2:2];
+        same_run_sm$4$clock = clk;
+        same_run_sm$4$d = ctr_sm$d[2:2];
+        same_run_sm$5$clock = clk;
+        same_run_sm$5$d = ctr_sm$d[2:2];
         ctr_sm1$d = ctr_sm$q;
         ctr_sm2$d = ctr_sm1$q;
         ring_s1$d = ring_s0;
@@ -20484,6 +20806,30 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
         if (ctr_sm$q[2:2]) begin
             run_rep_before = run_rep$q;
         end
+        run_rep_group$0 = ctr_sm$q[18:3];
+        if (same_run_sm$0$q) begin
+            run_rep_group$0 = run_rep$q;
+        end
+        run_rep_group$1 = ctr_sm$q[18:3];
+        if (same_run_sm$1$q) begin
+            run_rep_group$1 = run_rep$q;
+        end
+        run_rep_group$2 = ctr_sm$q[18:3];
+        if (same_run_sm$2$q) begin
+            run_rep_group$2 = run_rep$q;
+        end
+        run_rep_group$3 = ctr_sm$q[18:3];
+        if (same_run_sm$3$q) begin
+            run_rep_group$3 = run_rep$q;
+        end
+        run_rep_group$4 = ctr_sm$q[18:3];
+        if (same_run_sm$4$q) begin
+            run_rep_group$4 = run_rep$q;
+        end
+        run_rep_group$5 = ctr_sm$q[18:3];
+        if (same_run_sm$5$q) begin
+            run_rep_group$5 = run_rep$q;
+        end
         run_rep_after = run_rep_before;
         if (min_tree$min < run_rep_before) begin
             run_rep_after = min_tree$min;
@@ -20499,47 +20845,47 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
             rep_write_value$d = run_rep_after;
         end
         later_min$0$d = match_delay$hit_sm$0 & (match_delay$rep_sm$0 == min_tree$min) & ~min_tree$first$0;
-        is_run_rep$0$d = match_delay$rep_sm$0 == run_rep_before;
+        is_run_rep$0$d = match_delay$rep_sm$0 == run_rep_group$0;
         later_min$1$d = match_delay$hit_sm$1 & (match_delay$rep_sm$1 == min_tree$min) & ~min_tree$first$1;
-        is_run_rep$1$d = match_delay$rep_sm$1 == run_rep_before;
+        is_run_rep$1$d = match_delay$rep_sm$1 == run_rep_group$0;
         later_min$2$d = match_delay$hit_sm$2 & (match_delay$rep_sm$2 == min_tree$min) & ~min_tree$first$2;
-        is_run_rep$2$d = match_delay$rep_sm$2 == run_rep_before;
+        is_run_rep$2$d = match_delay$rep_sm$2 == run_rep_group$0;
         later_min$3$d = match_delay$hit_sm$3 & (match_delay$rep_sm$3 == min_tree$min) & ~min_tree$first$3;
-        is_run_rep$3$d = match_delay$rep_sm$3 == run_rep_before;
+        is_run_rep$3$d = match_delay$rep_sm$3 == run_rep_group$0;
         later_min$4$d = match_delay$hit_sm$4 & (match_delay$rep_sm$4 == min_tree$min) & ~min_tree$first$4;
-        is_run_rep$4$d = match_delay$rep_sm$4 == run_rep_before;
+        is_run_rep$4$d = match_delay$rep_sm$4 == run_rep_group$1;
         later_min$5$d = match_delay$hit_sm$5 & (match_delay$rep_sm$5 == min_tree$min) & ~min_tree$first$5;
-        is_run_rep$5$d = match_delay$rep_sm$5 == run_rep_before;
+        is_run_rep$5$d = match_delay$rep_sm$5 == run_rep_group$1;
         later_min$6$d = match_delay$hit_sm$6 & (match_delay$rep_sm$6 == min_tree$min) & ~min_tree$first$6;
-        is_run_rep$6$d = match_delay$rep_sm$6 == run_rep_before;
+        is_run_rep$6$d = match_delay$rep_sm$6 == run_rep_group$1;
         later_min$7$d = match_delay$hit_sm$7 & (match_delay$rep_sm$7 == min_tree$min) & ~min_tree$first$7;
-        is_run_rep$7$d = match_delay$rep_sm$7 == run_rep_before;
+        is_run_rep$7$d = match_delay$rep_sm$7 == run_rep_group$1;
         later_min$8$d = match_delay$hit_sm$8 & (match_delay$rep_sm$8 == min_tree$min) & ~min_tree$first$8;
-        is_run_rep$8$d = match_delay$rep_sm$8 == run_rep_before;
+        is_run_rep$8$d = match_delay$rep_sm$8 == run_rep_group$2;
         later_min$9$d = match_delay$hit_sm$9 & (match_delay$rep_sm$9 == min_tree$min) & ~min_tree$first$9;
-        is_run_rep$9$d = match_delay$rep_sm$9 == run_rep_before;
+        is_run_rep$9$d = match_delay$rep_sm$9 == run_rep_group$2;
         later_min$10$d = match_delay$hit_sm$10 & (match_delay$rep_sm$10 == min_tree$min) & ~min_tree$first$10;
-        is_run_rep$10$d = match_delay$rep_sm$10 == run_rep_before;
+        is_run_rep$10$d = match_delay$rep_sm$10 == run_rep_group$2;
         later_min$11$d = match_delay$hit_sm$11 & (match_delay$rep_sm$11 == min_tree$min) & ~min_tree$first$11;
-        is_run_rep$11$d = match_delay$rep_sm$11 == run_rep_before;
+        is_run_rep$11$d = match_delay$rep_sm$11 == run_rep_group$2;
         later_min$12$d = match_delay$hit_sm$12 & (match_delay$rep_sm$12 == min_tree$min) & ~min_tree$first$12;
-        is_run_rep$12$d = match_delay$rep_sm$12 == run_rep_before;
+        is_run_rep$12$d = match_delay$rep_sm$12 == run_rep_group$3;
         later_min$13$d = match_delay$hit_sm$13 & (match_delay$rep_sm$13 == min_tree$min) & ~min_tree$first$13;
-        is_run_rep$13$d = match_delay$rep_sm$13 == run_rep_before;
+        is_run_rep$13$d = match_delay$rep_sm$13 == run_rep_group$3;
         later_min$14$d = match_delay$hit_sm$14 & (match_delay$rep_sm$14 == min_tree$min) & ~min_tree$first$14;
-        is_run_rep$14$d = match_delay$rep_sm$14 == run_rep_before;
+        is_run_rep$14$d = match_delay$rep_sm$14 == run_rep_group$3;
         later_min$15$d = match_delay$hit_sm$15 & (match_delay$rep_sm$15 == min_tree$min) & ~min_tree$first$15;
-        is_run_rep$15$d = match_delay$rep_sm$15 == run_rep_before;
+        is_run_rep$15$d = match_delay$rep_sm$15 == run_rep_group$3;
         later_min$16$d = match_delay$hit_sm$16 & (match_delay$rep_sm$16 == min_tree$min) & ~min_tree$first$16;
-        is_run_rep$16$d = match_delay$rep_sm$16 == run_rep_before;
+        is_run_rep$16$d = match_delay$rep_sm$16 == run_rep_group$4;
         later_min$17$d = match_delay$hit_sm$17 & (match_delay$rep_sm$17 == min_tree$min) & ~min_tree$first$17;
-        is_run_rep$17$d = match_delay$rep_sm$17 == run_rep_before;
+        is_run_rep$17$d = match_delay$rep_sm$17 == run_rep_group$4;
         later_min$18$d = match_delay$hit_sm$18 & (match_delay$rep_sm$18 == min_tree$min) & ~min_tree$first$18;
-        is_run_rep$18$d = match_delay$rep_sm$18 == run_rep_before;
+        is_run_rep$18$d = match_delay$rep_sm$18 == run_rep_group$4;
         later_min$19$d = match_delay$hit_sm$19 & (match_delay$rep_sm$19 == min_tree$min) & ~min_tree$first$19;
-        is_run_rep$19$d = match_delay$rep_sm$19 == run_rep_before;
+        is_run_rep$19$d = match_delay$rep_sm$19 == run_rep_group$4;
         later_min$20$d = match_delay$hit_sm$20 & (match_delay$rep_sm$20 == min_tree$min) & ~min_tree$first$20;
-        is_run_rep$20$d = match_delay$rep_sm$20 == run_rep_before;
+        is_run_rep$20$d = match_delay$rep_sm$20 == run_rep_group$5;
         rep_we = rep_write_en$q;
         rep_waddr = rep_write_col$q;
         rep_wdata = rep_write_value$q;
@@ -47620,6 +47966,132 @@ module fcc_sort_net__filter__run_rep_sm2_k7_668cf05b(d,q,clock);
     end
 
 endmodule // fcc_sort_net__filter__run_rep_sm2_k7_668cf05b
+
+
+module fcc_sort_net__filter__same_run_sm__0_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_sort_net__filter__same_run_sm__0_k7_668cf05b
+
+
+module fcc_sort_net__filter__same_run_sm__1_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_sort_net__filter__same_run_sm__1_k7_668cf05b
+
+
+module fcc_sort_net__filter__same_run_sm__2_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_sort_net__filter__same_run_sm__2_k7_668cf05b
+
+
+module fcc_sort_net__filter__same_run_sm__3_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_sort_net__filter__same_run_sm__3_k7_668cf05b
+
+
+module fcc_sort_net__filter__same_run_sm__4_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_sort_net__filter__same_run_sm__4_k7_668cf05b
+
+
+module fcc_sort_net__filter__same_run_sm__5_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_sort_net__filter__same_run_sm__5_k7_668cf05b
 
 
 module fcc_sort_net__filter__tree_rst__0_k7_668cf05b(clock,d,q);
