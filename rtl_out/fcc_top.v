@@ -7970,8 +7970,6 @@ module fcc_label_update__gearbox_k7_668cf05b(clk,rst,rst_low_slots,rst_high_slot
     output reg  has_two;
 
     // Constant declarations
-    localparam  low_byte = 16'hff;
-    localparam  high_byte = 16'hff00;
     localparam  count_is$0 = 4'h0;
     localparam  count_is$1 = 4'h1;
     localparam  slot_is$0 = 3'b0;
@@ -8037,26 +8035,10 @@ module fcc_label_update__gearbox_k7_668cf05b(clk,rst,rst_low_slots,rst_high_slot
     reg  [15:0] second_label$d;
     wire  [15:0] second_label$q;
     reg  second_label$clock;
-    reg  third_slot_lo$clock;
-    reg  [2:0] third_slot_lo$d;
-    wire  [2:0] third_slot_lo$q;
-    reg  third_slot_hi$clock;
-    reg  [2:0] third_slot_hi$d;
-    wire  [2:0] third_slot_hi$q;
-    reg  fourth_slot_lo$clock;
-    reg  [2:0] fourth_slot_lo$d;
-    wire  [2:0] fourth_slot_lo$q;
-    reg  fourth_slot_hi$clock;
-    reg  [2:0] fourth_slot_hi$d;
-    wire  [2:0] fourth_slot_hi$q;
 
     // Local signals
     reg  [15:0] third_ring;
     reg  [15:0] fourth_ring;
-    reg  [15:0] third_ring_lo;
-    reg  [15:0] third_ring_hi;
-    reg  [15:0] fourth_ring_lo;
-    reg  [15:0] fourth_ring_hi;
     reg  [15:0] ahead$0;
     reg  [15:0] ahead$1;
     reg  [15:0] ahead$2;
@@ -8147,26 +8129,6 @@ module fcc_label_update__gearbox_k7_668cf05b(clk,rst,rst_low_slots,rst_high_slot
         .q(second_label$q),
         .clock(second_label$clock)
     );
-    fcc_label_update__gearbox__third_slot_lo_k7_668cf05b third_slot_lo(
-        .clock(third_slot_lo$clock),
-        .d(third_slot_lo$d),
-        .q(third_slot_lo$q)
-    );
-    fcc_label_update__gearbox__third_slot_hi_k7_668cf05b third_slot_hi(
-        .clock(third_slot_hi$clock),
-        .d(third_slot_hi$d),
-        .q(third_slot_hi$q)
-    );
-    fcc_label_update__gearbox__fourth_slot_lo_k7_668cf05b fourth_slot_lo(
-        .clock(fourth_slot_lo$clock),
-        .d(fourth_slot_lo$d),
-        .q(fourth_slot_lo$q)
-    );
-    fcc_label_update__gearbox__fourth_slot_hi_k7_668cf05b fourth_slot_hi(
-        .clock(fourth_slot_hi$clock),
-        .d(fourth_slot_hi$d),
-        .q(fourth_slot_hi$q)
-    );
 
     // Update code
     always @(*) begin
@@ -8207,108 +8169,56 @@ module fcc_label_update__gearbox_k7_668cf05b(clk,rst,rst_low_slots,rst_high_slot
         has_two = (count$q != count_is$0) & (count$q != count_is$1);
         front = front_label$q;
         second = second_label$q;
-        third_ring_lo = slots$0$q;
-        third_ring_hi = slots$0$q;
-        fourth_ring_lo = slots$0$q;
-        fourth_ring_hi = slots$0$q;
-        if (third_slot_lo$q == slot_is$0) begin
-            third_ring_lo = slots$0$q;
+        third_ring = slots$0$q;
+        fourth_ring = slots$0$q;
+        if (third_slot$q == slot_is$0) begin
+            third_ring = slots$0$q;
         end
-        if (third_slot_hi$q == slot_is$0) begin
-            third_ring_hi = slots$0$q;
+        if (fourth_slot$q == slot_is$0) begin
+            fourth_ring = slots$0$q;
         end
-        if (fourth_slot_lo$q == slot_is$0) begin
-            fourth_ring_lo = slots$0$q;
+        if (third_slot$q == slot_is$1) begin
+            third_ring = slots$1$q;
         end
-        if (fourth_slot_hi$q == slot_is$0) begin
-            fourth_ring_hi = slots$0$q;
+        if (fourth_slot$q == slot_is$1) begin
+            fourth_ring = slots$1$q;
         end
-        if (third_slot_lo$q == slot_is$1) begin
-            third_ring_lo = slots$1$q;
+        if (third_slot$q == slot_is$2) begin
+            third_ring = slots$2$q;
         end
-        if (third_slot_hi$q == slot_is$1) begin
-            third_ring_hi = slots$1$q;
+        if (fourth_slot$q == slot_is$2) begin
+            fourth_ring = slots$2$q;
         end
-        if (fourth_slot_lo$q == slot_is$1) begin
-            fourth_ring_lo = slots$1$q;
+        if (third_slot$q == slot_is$3) begin
+            third_ring = slots$3$q;
         end
-        if (fourth_slot_hi$q == slot_is$1) begin
-            fourth_ring_hi = slots$1$q;
+        if (fourth_slot$q == slot_is$3) begin
+            fourth_ring = slots$3$q;
         end
-        if (third_slot_lo$q == slot_is$2) begin
-            third_ring_lo = slots$2$q;
+        if (third_slot$q == slot_is$4) begin
+            third_ring = slots$4$q;
         end
-        if (third_slot_hi$q == slot_is$2) begin
-            third_ring_hi = slots$2$q;
+        if (fourth_slot$q == slot_is$4) begin
+            fourth_ring = slots$4$q;
         end
-        if (fourth_slot_lo$q == slot_is$2) begin
-            fourth_ring_lo = slots$2$q;
+        if (third_slot$q == slot_is$5) begin
+            third_ring = slots$5$q;
         end
-        if (fourth_slot_hi$q == slot_is$2) begin
-            fourth_ring_hi = slots$2$q;
+        if (fourth_slot$q == slot_is$5) begin
+            fourth_ring = slots$5$q;
         end
-        if (third_slot_lo$q == slot_is$3) begin
-            third_ring_lo = slots$3$q;
+        if (third_slot$q == slot_is$6) begin
+            third_ring = slots$6$q;
         end
-        if (third_slot_hi$q == slot_is$3) begin
-            third_ring_hi = slots$3$q;
+        if (fourth_slot$q == slot_is$6) begin
+            fourth_ring = slots$6$q;
         end
-        if (fourth_slot_lo$q == slot_is$3) begin
-            fourth_ring_lo = slots$3$q;
+        if (third_slot$q == slot_is$7) begin
+            third_ring = slots$7$q;
         end
-        if (fourth_slot_hi$q == slot_is$3) begin
-            fourth_ring_hi = slots$3$q;
+        if (fourth_slot$q == slot_is$7) begin
+            fourth_ring = slots$7$q;
         end
-        if (third_slot_lo$q == slot_is$4) begin
-            third_ring_lo = slots$4$q;
-        end
-        if (third_slot_hi$q == slot_is$4) begin
-            third_ring_hi = slots$4$q;
-        end
-        if (fourth_slot_lo$q == slot_is$4) begin
-            fourth_ring_lo = slots$4$q;
-        end
-        if (fourth_slot_hi$q == slot_is$4) begin
-            fourth_ring_hi = slots$4$q;
-        end
-        if (third_slot_lo$q == slot_is$5) begin
-            third_ring_lo = slots$5$q;
-        end
-        if (third_slot_hi$q == slot_is$5) begin
-            third_ring_hi = slots$5$q;
-        end
-        if (fourth_slot_lo$q == slot_is$5) begin
-            fourth_ring_lo = slots$5$q;
-        end
-        if (fourth_slot_hi$q == slot_is$5) begin
-            fourth_ring_hi = slots$5$q;
-        end
-        if (third_slot_lo$q == slot_is$6) begin
-            third_ring_lo = slots$6$q;
-        end
-        if (third_slot_hi$q == slot_is$6) begin
-            third_ring_hi = slots$6$q;
-        end
-        if (fourth_slot_lo$q == slot_is$6) begin
-            fourth_ring_lo = slots$6$q;
-        end
-        if (fourth_slot_hi$q == slot_is$6) begin
-            fourth_ring_hi = slots$6$q;
-        end
-        if (third_slot_lo$q == slot_is$7) begin
-            third_ring_lo = slots$7$q;
-        end
-        if (third_slot_hi$q == slot_is$7) begin
-            third_ring_hi = slots$7$q;
-        end
-        if (fourth_slot_lo$q == slot_is$7) begin
-            fourth_ring_lo = slots$7$q;
-        end
-        if (fourth_slot_hi$q == slot_is$7) begin
-            fourth_ring_hi = slots$7$q;
-        end
-        third_ring = (third_ring_lo & low_byte) | (third_ring_hi & high_byte);
-        fourth_ring = (fourth_ring_lo & low_byte) | (fourth_ring_hi & high_byte);
         ahead$0 = front_label$q;
         ahead$1 = second_label$q;
         ahead$2 = third_ring;
@@ -8419,14 +8329,6 @@ module fcc_label_update__gearbox_k7_668cf05b(clk,rst,rst_low_slots,rst_high_slot
             front_label$d = empty_slot;
             second_label$d = empty_slot;
         end
-        third_slot_lo$clock = clk;
-        third_slot_lo$d = third_slot$d;
-        third_slot_hi$clock = clk;
-        third_slot_hi$d = third_slot$d;
-        fourth_slot_lo$clock = clk;
-        fourth_slot_lo$d = fourth_slot$d;
-        fourth_slot_hi$clock = clk;
-        fourth_slot_hi$d = fourth_slot$d;
     end
 
 endmodule // fcc_label_update__gearbox_k7_668cf05b
@@ -8468,48 +8370,6 @@ module fcc_label_update__gearbox__fourth_slot_k7_668cf05b(d,q,clock);
     end
 
 endmodule // fcc_label_update__gearbox__fourth_slot_k7_668cf05b
-
-
-module fcc_label_update__gearbox__fourth_slot_hi_k7_668cf05b(clock,d,q);
-
-    // Module arguments
-    input wire  clock;
-    input wire  [2:0] d;
-    output reg  [2:0] q;
-
-    // Update code (custom)
-    (* keep = "true" *) reg [2:0] held;
-    initial begin
-        held = 3'h0;
-    end
-    (* keep = "true" *) always @(posedge clock) begin
-        held <= d;
-    end
-    always @(*) begin
-        q = held;
-    end
-endmodule // fcc_label_update__gearbox__fourth_slot_hi_k7_668cf05b
-
-
-module fcc_label_update__gearbox__fourth_slot_lo_k7_668cf05b(clock,d,q);
-
-    // Module arguments
-    input wire  clock;
-    input wire  [2:0] d;
-    output reg  [2:0] q;
-
-    // Update code (custom)
-    (* keep = "true" *) reg [2:0] held;
-    initial begin
-        held = 3'h0;
-    end
-    (* keep = "true" *) always @(posedge clock) begin
-        held <= d;
-    end
-    always @(*) begin
-        q = held;
-    end
-endmodule // fcc_label_update__gearbox__fourth_slot_lo_k7_668cf05b
 
 
 module fcc_label_update__gearbox__front_label_k7_668cf05b(d,q,clock);
@@ -8757,48 +8617,6 @@ module fcc_label_update__gearbox__third_slot_k7_668cf05b(d,q,clock);
     end
 
 endmodule // fcc_label_update__gearbox__third_slot_k7_668cf05b
-
-
-module fcc_label_update__gearbox__third_slot_hi_k7_668cf05b(clock,d,q);
-
-    // Module arguments
-    input wire  clock;
-    input wire  [2:0] d;
-    output reg  [2:0] q;
-
-    // Update code (custom)
-    (* keep = "true" *) reg [2:0] held;
-    initial begin
-        held = 3'h0;
-    end
-    (* keep = "true" *) always @(posedge clock) begin
-        held <= d;
-    end
-    always @(*) begin
-        q = held;
-    end
-endmodule // fcc_label_update__gearbox__third_slot_hi_k7_668cf05b
-
-
-module fcc_label_update__gearbox__third_slot_lo_k7_668cf05b(clock,d,q);
-
-    // Module arguments
-    input wire  clock;
-    input wire  [2:0] d;
-    output reg  [2:0] q;
-
-    // Update code (custom)
-    (* keep = "true" *) reg [2:0] held;
-    initial begin
-        held = 3'h0;
-    end
-    (* keep = "true" *) always @(posedge clock) begin
-        held <= d;
-    end
-    always @(*) begin
-        q = held;
-    end
-endmodule // fcc_label_update__gearbox__third_slot_lo_k7_668cf05b
 
 
 module fcc_label_update__gearbox__write_slot_k7_668cf05b(d,q,clock);

@@ -16,17 +16,9 @@
 //! are: what they hold is only read while labels wait, and the first label
 //! pushed after a clear is forwarded into `front_label`). The new count is chosen among
 //! values computed from `count` alone, so no adder follows the pop decision.
-//!
-//! Fanout: the ring's two read multiplexers take the low byte of the label
-//! from one kept copy of `third_slot` / `fourth_slot` (`third_slot_lo`,
-//! `fourth_slot_lo`) and the high byte from another (`third_slot_hi`,
-//! `fourth_slot_hi`), so that no pointer bit selects all 16 bits (80
-//! loads). Both copies are kept registers: a plain one would be merged into
-//! its kept twin.
 
 use rust_hdl::prelude::*;
 
-use crate::fcc_keep_reg::FccKeepReg;
 use crate::types::{kb, vec_of};
 
 /// Entries of the gearbox.
@@ -67,21 +59,9 @@ pub struct FccGearbox {
     /// The slots at `read_slot` and `second_slot`, kept in step with the ring.
     front_label: DFF<Bits<16>>,
     second_label: DFF<Bits<16>>,
-    /// Copies of `third_slot` and `fourth_slot` for the low and high bytes.
-    third_slot_lo: FccKeepReg<Bits<3>>,
-    third_slot_hi: FccKeepReg<Bits<3>>,
-    fourth_slot_lo: FccKeepReg<Bits<3>>,
-    fourth_slot_hi: FccKeepReg<Bits<3>>,
-    /// The ring read at `third_slot` and `fourth_slot`: low byte from the
-    /// pointer, high byte from its copy.
+    /// The ring read at `third_slot` and `fourth_slot`.
     third_ring: Signal<Local, Bits<16>>,
     fourth_ring: Signal<Local, Bits<16>>,
-    third_ring_lo: Signal<Local, Bits<16>>,
-    third_ring_hi: Signal<Local, Bits<16>>,
-    fourth_ring_lo: Signal<Local, Bits<16>>,
-    fourth_ring_hi: Signal<Local, Bits<16>>,
-    low_byte: Constant<Bits<16>>,
-    high_byte: Constant<Bits<16>>,
     /// The slots at `read_slot + k` (k = 0..3) after this cycle's push.
     ahead: Vec<Signal<Local, Bits<16>>>,
     pop_one: Signal<Local, Bit>,
@@ -125,18 +105,8 @@ impl FccGearbox {
             fourth_slot: Default::default(),
             front_label: Default::default(),
             second_label: Default::default(),
-            third_slot_lo: Default::default(),
-            third_slot_hi: Default::default(),
-            fourth_slot_lo: Default::default(),
-            fourth_slot_hi: Default::default(),
             third_ring: Default::default(),
             fourth_ring: Default::default(),
-            third_ring_lo: Default::default(),
-            third_ring_hi: Default::default(),
-            fourth_ring_lo: Default::default(),
-            fourth_ring_hi: Default::default(),
-            low_byte: kb(0x00ff),
-            high_byte: kb(0xff00),
             ahead: vec_of(4),
             pop_one: Default::default(),
             count_inc: Default::default(),
@@ -186,28 +156,16 @@ impl Logic for FccGearbox {
         self.front.next = self.front_label.q.val();
         self.second.next = self.second_label.q.val();
         // The ring two and three slots behind the front.
-        self.third_ring_lo.next = self.slots[0].q.val();
-        self.third_ring_hi.next = self.slots[0].q.val();
-        self.fourth_ring_lo.next = self.slots[0].q.val();
-        self.fourth_ring_hi.next = self.slots[0].q.val();
+        self.third_ring.next = self.slots[0].q.val();
+        self.fourth_ring.next = self.slots[0].q.val();
         for i in 0..8 {
-            if self.third_slot_lo.q.val() == self.slot_is[i].val() {
-                self.third_ring_lo.next = self.slots[i].q.val();
+            if self.third_slot.q.val() == self.slot_is[i].val() {
+                self.third_ring.next = self.slots[i].q.val();
             }
-            if self.third_slot_hi.q.val() == self.slot_is[i].val() {
-                self.third_ring_hi.next = self.slots[i].q.val();
-            }
-            if self.fourth_slot_lo.q.val() == self.slot_is[i].val() {
-                self.fourth_ring_lo.next = self.slots[i].q.val();
-            }
-            if self.fourth_slot_hi.q.val() == self.slot_is[i].val() {
-                self.fourth_ring_hi.next = self.slots[i].q.val();
+            if self.fourth_slot.q.val() == self.slot_is[i].val() {
+                self.fourth_ring.next = self.slots[i].q.val();
             }
         }
-        self.third_ring.next = (self.third_ring_lo.val() & self.low_byte.val())
-            | (self.third_ring_hi.val() & self.high_byte.val());
-        self.fourth_ring.next = (self.fourth_ring_lo.val() & self.low_byte.val())
-            | (self.fourth_ring_hi.val() & self.high_byte.val());
         // The four front slots as they will be after the push.
         self.ahead[0].next = self.front_label.q.val();
         self.ahead[1].next = self.second_label.q.val();
@@ -297,15 +255,5 @@ impl Logic for FccGearbox {
             self.front_label.d.next = self.empty_slot.val();
             self.second_label.d.next = self.empty_slot.val();
         }
-        // The copies load what the pointers load (last: after every
-        // assignment to the pointers).
-        self.third_slot_lo.clock.next = self.clk.val();
-        self.third_slot_lo.d.next = self.third_slot.d.val();
-        self.third_slot_hi.clock.next = self.clk.val();
-        self.third_slot_hi.d.next = self.third_slot.d.val();
-        self.fourth_slot_lo.clock.next = self.clk.val();
-        self.fourth_slot_lo.d.next = self.fourth_slot.d.val();
-        self.fourth_slot_hi.clock.next = self.clk.val();
-        self.fourth_slot_hi.d.next = self.fourth_slot.d.val();
     }
 }
