@@ -18680,24 +18680,6 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
     reg  [15:0] run_rep_sm2$d;
     wire  [15:0] run_rep_sm2$q;
     reg  run_rep_sm2$clock;
-    reg  same_run_sm$0$clock;
-    reg  same_run_sm$0$d;
-    wire  same_run_sm$0$q;
-    reg  same_run_sm$1$clock;
-    reg  same_run_sm$1$d;
-    wire  same_run_sm$1$q;
-    reg  same_run_sm$2$clock;
-    reg  same_run_sm$2$d;
-    wire  same_run_sm$2$q;
-    reg  same_run_sm$3$clock;
-    reg  same_run_sm$3$d;
-    wire  same_run_sm$3$q;
-    reg  same_run_sm$4$clock;
-    reg  same_run_sm$4$d;
-    wire  same_run_sm$4$q;
-    reg  same_run_sm$5$clock;
-    reg  same_run_sm$5$d;
-    wire  same_run_sm$5$q;
     reg  rep_write_en$d;
     wire  rep_write_en$q;
     reg  rep_write_en$clock;
@@ -19146,12 +19128,6 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
     reg  [31:0] ring_s0;
     reg  [15:0] run_rep_before;
     reg  [15:0] run_rep_after;
-    reg  [15:0] run_rep_group$0;
-    reg  [15:0] run_rep_group$1;
-    reg  [15:0] run_rep_group$2;
-    reg  [15:0] run_rep_group$3;
-    reg  [15:0] run_rep_group$4;
-    reg  [15:0] run_rep_group$5;
     reg  keep_next$0;
     reg  keep_next$1;
     reg  keep_next$2;
@@ -19567,36 +19543,6 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
         .d(run_rep_sm2$d),
         .q(run_rep_sm2$q),
         .clock(run_rep_sm2$clock)
-    );
-    fcc_sort_net__filter__same_run_sm__0_k7_668cf05b same_run_sm$0(
-        .clock(same_run_sm$0$clock),
-        .d(same_run_sm$0$d),
-        .q(same_run_sm$0$q)
-    );
-    fcc_sort_net__filter__same_run_sm__1_k7_668cf05b same_run_sm$1(
-        .clock(same_run_sm$1$clock),
-        .d(same_run_sm$1$d),
-        .q(same_run_sm$1$q)
-    );
-    fcc_sort_net__filter__same_run_sm__2_k7_668cf05b same_run_sm$2(
-        .clock(same_run_sm$2$clock),
-        .d(same_run_sm$2$d),
-        .q(same_run_sm$2$q)
-    );
-    fcc_sort_net__filter__same_run_sm__3_k7_668cf05b same_run_sm$3(
-        .clock(same_run_sm$3$clock),
-        .d(same_run_sm$3$d),
-        .q(same_run_sm$3$q)
-    );
-    fcc_sort_net__filter__same_run_sm__4_k7_668cf05b same_run_sm$4(
-        .clock(same_run_sm$4$clock),
-        .d(same_run_sm$4$d),
-        .q(same_run_sm$4$q)
-    );
-    fcc_sort_net__filter__same_run_sm__5_k7_668cf05b same_run_sm$5(
-        .clock(same_run_sm$5$clock),
-        .d(same_run_sm$5$d),
-        .q(same_run_sm$5$q)
     );
     fcc_sort_net__filter__rep_write_en_k7_668cf05b rep_write_en(
         .d(rep_write_en$d),
@@ -20490,18 +20436,6 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
         ctr_tree$2$d = ctr_tree$1$q;
         ctr_tree$3$d = ctr_tree$2$q;
         ctr_sm$d = ctr_tree$3$q;
-        same_run_sm$0$clock = clk;
-        same_run_sm$0$d = ctr_sm$d[2:2];
-        same_run_sm$1$clock = clk;
-        same_run_sm$1$d = ctr_sm$d[2:2];
-        same_run_sm$2$clock = clk;
-        same_run_sm$2$d = ctr_sm$d[2:2];
-        same_run_sm$3$clock = clk;
-        same_run_sm$3$d = ctr_sm$d[2:2];
-        same_run_sm$4$clock = clk;
-        same_run_sm$4$d = ctr_sm$d[2:2];
-        same_run_sm$5$clock = clk;
-        same_run_sm$5$d = ctr_sm$d[2:2];
         ctr_sm1$d = ctr_sm$q;
         ctr_sm2$d = ctr_sm1$q;
         ring_s1$d = ring_s0;
@@ -20624,30 +20558,6 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
         if (ctr_sm$q[2:2]) begin
             run_rep_before = run_rep$q;
         end
-        run_rep_group$0 = ctr_sm$q[18:3];
-        if (same_run_sm$0$q) begin
-            run_rep_group$0 = run_rep$q;
-        end
-        run_rep_group$1 = ctr_sm$q[18:3];
-        if (same_run_sm$1$q) begin
-            run_rep_group$1 = run_rep$q;
-        end
-        run_rep_group$2 = ctr_sm$q[18:3];
-        if (same_run_sm$2$q) begin
-            run_rep_group$2 = run_rep$q;
-        end
-        run_rep_group$3 = ctr_sm$q[18:3];
-        if (same_run_sm$3$q) begin
-            run_rep_group$3 = run_rep$q;
-        end
-        run_rep_group$4 = ctr_sm$q[18:3];
-        if (same_run_sm$4$q) begin
-            run_rep_group$4 = run_rep$q;
-        end
-        run_rep_group$5 = ctr_sm$q[18:3];
-        if (same_run_sm$5$q) begin
-            run_rep_group$5 = run_rep$q;
-        end
         run_rep_after = run_rep_before;
         if (min_tree$min < run_rep_before) begin
             run_rep_after = min_tree$min;
@@ -20663,47 +20573,47 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
             rep_write_value$d = run_rep_after;
         end
         later_min$0$d = match_delay$hit_sm$0 & (match_delay$rep_sm$0 == min_tree$min) & ~min_tree$first$0;
-        is_run_rep$0$d = match_delay$rep_sm$0 == run_rep_group$0;
+        is_run_rep$0$d = match_delay$rep_sm$0 == run_rep_before;
         later_min$1$d = match_delay$hit_sm$1 & (match_delay$rep_sm$1 == min_tree$min) & ~min_tree$first$1;
-        is_run_rep$1$d = match_delay$rep_sm$1 == run_rep_group$0;
+        is_run_rep$1$d = match_delay$rep_sm$1 == run_rep_before;
         later_min$2$d = match_delay$hit_sm$2 & (match_delay$rep_sm$2 == min_tree$min) & ~min_tree$first$2;
-        is_run_rep$2$d = match_delay$rep_sm$2 == run_rep_group$0;
+        is_run_rep$2$d = match_delay$rep_sm$2 == run_rep_before;
         later_min$3$d = match_delay$hit_sm$3 & (match_delay$rep_sm$3 == min_tree$min) & ~min_tree$first$3;
-        is_run_rep$3$d = match_delay$rep_sm$3 == run_rep_group$0;
+        is_run_rep$3$d = match_delay$rep_sm$3 == run_rep_before;
         later_min$4$d = match_delay$hit_sm$4 & (match_delay$rep_sm$4 == min_tree$min) & ~min_tree$first$4;
-        is_run_rep$4$d = match_delay$rep_sm$4 == run_rep_group$1;
+        is_run_rep$4$d = match_delay$rep_sm$4 == run_rep_before;
         later_min$5$d = match_delay$hit_sm$5 & (match_delay$rep_sm$5 == min_tree$min) & ~min_tree$first$5;
-        is_run_rep$5$d = match_delay$rep_sm$5 == run_rep_group$1;
+        is_run_rep$5$d = match_delay$rep_sm$5 == run_rep_before;
         later_min$6$d = match_delay$hit_sm$6 & (match_delay$rep_sm$6 == min_tree$min) & ~min_tree$first$6;
-        is_run_rep$6$d = match_delay$rep_sm$6 == run_rep_group$1;
+        is_run_rep$6$d = match_delay$rep_sm$6 == run_rep_before;
         later_min$7$d = match_delay$hit_sm$7 & (match_delay$rep_sm$7 == min_tree$min) & ~min_tree$first$7;
-        is_run_rep$7$d = match_delay$rep_sm$7 == run_rep_group$1;
+        is_run_rep$7$d = match_delay$rep_sm$7 == run_rep_before;
         later_min$8$d = match_delay$hit_sm$8 & (match_delay$rep_sm$8 == min_tree$min) & ~min_tree$first$8;
-        is_run_rep$8$d = match_delay$rep_sm$8 == run_rep_group$2;
+        is_run_rep$8$d = match_delay$rep_sm$8 == run_rep_before;
         later_min$9$d = match_delay$hit_sm$9 & (match_delay$rep_sm$9 == min_tree$min) & ~min_tree$first$9;
-        is_run_rep$9$d = match_delay$rep_sm$9 == run_rep_group$2;
+        is_run_rep$9$d = match_delay$rep_sm$9 == run_rep_before;
         later_min$10$d = match_delay$hit_sm$10 & (match_delay$rep_sm$10 == min_tree$min) & ~min_tree$first$10;
-        is_run_rep$10$d = match_delay$rep_sm$10 == run_rep_group$2;
+        is_run_rep$10$d = match_delay$rep_sm$10 == run_rep_before;
         later_min$11$d = match_delay$hit_sm$11 & (match_delay$rep_sm$11 == min_tree$min) & ~min_tree$first$11;
-        is_run_rep$11$d = match_delay$rep_sm$11 == run_rep_group$2;
+        is_run_rep$11$d = match_delay$rep_sm$11 == run_rep_before;
         later_min$12$d = match_delay$hit_sm$12 & (match_delay$rep_sm$12 == min_tree$min) & ~min_tree$first$12;
-        is_run_rep$12$d = match_delay$rep_sm$12 == run_rep_group$3;
+        is_run_rep$12$d = match_delay$rep_sm$12 == run_rep_before;
         later_min$13$d = match_delay$hit_sm$13 & (match_delay$rep_sm$13 == min_tree$min) & ~min_tree$first$13;
-        is_run_rep$13$d = match_delay$rep_sm$13 == run_rep_group$3;
+        is_run_rep$13$d = match_delay$rep_sm$13 == run_rep_before;
         later_min$14$d = match_delay$hit_sm$14 & (match_delay$rep_sm$14 == min_tree$min) & ~min_tree$first$14;
-        is_run_rep$14$d = match_delay$rep_sm$14 == run_rep_group$3;
+        is_run_rep$14$d = match_delay$rep_sm$14 == run_rep_before;
         later_min$15$d = match_delay$hit_sm$15 & (match_delay$rep_sm$15 == min_tree$min) & ~min_tree$first$15;
-        is_run_rep$15$d = match_delay$rep_sm$15 == run_rep_group$3;
+        is_run_rep$15$d = match_delay$rep_sm$15 == run_rep_before;
         later_min$16$d = match_delay$hit_sm$16 & (match_delay$rep_sm$16 == min_tree$min) & ~min_tree$first$16;
-        is_run_rep$16$d = match_delay$rep_sm$16 == run_rep_group$4;
+        is_run_rep$16$d = match_delay$rep_sm$16 == run_rep_before;
         later_min$17$d = match_delay$hit_sm$17 & (match_delay$rep_sm$17 == min_tree$min) & ~min_tree$first$17;
-        is_run_rep$17$d = match_delay$rep_sm$17 == run_rep_group$4;
+        is_run_rep$17$d = match_delay$rep_sm$17 == run_rep_before;
         later_min$18$d = match_delay$hit_sm$18 & (match_delay$rep_sm$18 == min_tree$min) & ~min_tree$first$18;
-        is_run_rep$18$d = match_delay$rep_sm$18 == run_rep_group$4;
+        is_run_rep$18$d = match_delay$rep_sm$18 == run_rep_before;
         later_min$19$d = match_delay$hit_sm$19 & (match_delay$rep_sm$19 == min_tree$min) & ~min_tree$first$19;
-        is_run_rep$19$d = match_delay$rep_sm$19 == run_rep_group$4;
+        is_run_rep$19$d = match_delay$rep_sm$19 == run_rep_before;
         later_min$20$d = match_delay$hit_sm$20 & (match_delay$rep_sm$20 == min_tree$min) & ~min_tree$first$20;
-        is_run_rep$20$d = match_delay$rep_sm$20 == run_rep_group$5;
+        is_run_rep$20$d = match_delay$rep_sm$20 == run_rep_before;
         rep_we = rep_write_en$q;
         rep_waddr = rep_write_col$q;
         rep_wdata = rep_write_value$q;
@@ -47784,132 +47694,6 @@ module fcc_sort_net__filter__run_rep_sm2_k7_668cf05b(d,q,clock);
     end
 
 endmodule // fcc_sort_net__filter__run_rep_sm2_k7_668cf05b
-
-
-module fcc_sort_net__filter__same_run_sm__0_k7_668cf05b(clock,d,q);
-
-    // Module arguments
-    input wire  clock;
-    input wire  d;
-    output reg  q;
-
-    // Update code (custom)
-    (* keep = "true" *) reg held;
-    initial begin
-        held = 1'h0;
-    end
-    (* keep = "true" *) always @(posedge clock) begin
-        held <= d;
-    end
-    always @(*) begin
-        q = held;
-    end
-endmodule // fcc_sort_net__filter__same_run_sm__0_k7_668cf05b
-
-
-module fcc_sort_net__filter__same_run_sm__1_k7_668cf05b(clock,d,q);
-
-    // Module arguments
-    input wire  clock;
-    input wire  d;
-    output reg  q;
-
-    // Update code (custom)
-    (* keep = "true" *) reg held;
-    initial begin
-        held = 1'h0;
-    end
-    (* keep = "true" *) always @(posedge clock) begin
-        held <= d;
-    end
-    always @(*) begin
-        q = held;
-    end
-endmodule // fcc_sort_net__filter__same_run_sm__1_k7_668cf05b
-
-
-module fcc_sort_net__filter__same_run_sm__2_k7_668cf05b(clock,d,q);
-
-    // Module arguments
-    input wire  clock;
-    input wire  d;
-    output reg  q;
-
-    // Update code (custom)
-    (* keep = "true" *) reg held;
-    initial begin
-        held = 1'h0;
-    end
-    (* keep = "true" *) always @(posedge clock) begin
-        held <= d;
-    end
-    always @(*) begin
-        q = held;
-    end
-endmodule // fcc_sort_net__filter__same_run_sm__2_k7_668cf05b
-
-
-module fcc_sort_net__filter__same_run_sm__3_k7_668cf05b(clock,d,q);
-
-    // Module arguments
-    input wire  clock;
-    input wire  d;
-    output reg  q;
-
-    // Update code (custom)
-    (* keep = "true" *) reg held;
-    initial begin
-        held = 1'h0;
-    end
-    (* keep = "true" *) always @(posedge clock) begin
-        held <= d;
-    end
-    always @(*) begin
-        q = held;
-    end
-endmodule // fcc_sort_net__filter__same_run_sm__3_k7_668cf05b
-
-
-module fcc_sort_net__filter__same_run_sm__4_k7_668cf05b(clock,d,q);
-
-    // Module arguments
-    input wire  clock;
-    input wire  d;
-    output reg  q;
-
-    // Update code (custom)
-    (* keep = "true" *) reg held;
-    initial begin
-        held = 1'h0;
-    end
-    (* keep = "true" *) always @(posedge clock) begin
-        held <= d;
-    end
-    always @(*) begin
-        q = held;
-    end
-endmodule // fcc_sort_net__filter__same_run_sm__4_k7_668cf05b
-
-
-module fcc_sort_net__filter__same_run_sm__5_k7_668cf05b(clock,d,q);
-
-    // Module arguments
-    input wire  clock;
-    input wire  d;
-    output reg  q;
-
-    // Update code (custom)
-    (* keep = "true" *) reg held;
-    initial begin
-        held = 1'h0;
-    end
-    (* keep = "true" *) always @(posedge clock) begin
-        held <= d;
-    end
-    always @(*) begin
-        q = held;
-    end
-endmodule // fcc_sort_net__filter__same_run_sm__5_k7_668cf05b
 
 
 module fcc_sort_net__filter__tree_rst__0_k7_668cf05b(clock,d,q);

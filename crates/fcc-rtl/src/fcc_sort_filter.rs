@@ -36,12 +36,6 @@
 //! reset whole so that the stage stays a flip-flop rather than a shift
 //! register) and `tree_rst[2i + 1]` for its ring join (32); and the match
 //! delay lines' own copies (`FccMatchDelay`).
-//!
-//! Fanout: the SM centre's `same_run` flag chooses the run's representative
-//! (the run's or the centre's own) that every position's representative is
-//! compared with; each group of `RUN_COPY_POSITIONS` positions has its own
-//! copy of the flag (`same_run_sm`, loaded with `ctr_sm`) and its own choice
-//! (`run_rep_group`), so no copy drives more than a few dozen loads.
 
 use fcc_params::FccParams;
 use rust_hdl::prelude::*;
@@ -54,10 +48,6 @@ use crate::fcc_known_mask::FccKnownMask;
 use crate::fcc_match_delay::FccMatchDelay;
 use crate::fcc_min_tree::FccMinTree;
 use crate::types::{clog2, kb, vec_of, Ctr, CtrRec};
-
-/// Positions per copy of the SM centre's `same_run` flag (each position's
-/// 16-bit compare with the run's representative reads it about ten times).
-const RUN_COPY_POSITIONS: usize = 4;
 
 /// What the filter carries about a centre from stage to stage.
 #[derive(Clone, Copy, Debug, PartialEq, Default, LogicStruct)]
@@ -127,10 +117,6 @@ pub struct FccSortFilter {
     run_rep_after: Signal<Local, Bits<16>>,
     run_rep_sm1: DFF<Bits<16>>,
     run_rep_sm2: DFF<Bits<16>>,
-    /// Copies of `ctr_sm.same_run`, and `run_rep_before` from each, per
-    /// group of `RUN_COPY_POSITIONS` positions (see the module doc).
-    same_run_sm: Vec<FccKeepReg<Bit>>,
-    run_rep_group: Vec<Signal<Local, Bits<16>>>,
     rep_write_en: DFF<Bit>,
     rep_write_col: DFF<Bits<12>>,
     rep_write_value: DFF<Bits<16>>,
@@ -164,9 +150,6 @@ pub struct FccSortFilter {
     _groups: usize,
     /// Levels of the minimum tree.
     _l: usize,
-    /// Positions per `same_run_sm` copy, and the copies.
-    _run_group: usize,
-    _run_copies: usize,
 }
 
 impl FccSortFilter {
@@ -214,8 +197,6 @@ impl FccSortFilter {
             run_rep_after: Default::default(),
             run_rep_sm1: Default::default(),
             run_rep_sm2: Default::default(),
-            same_run_sm: vec_of(n.div_ceil(RUN_COPY_POSITIONS)),
-            run_rep_group: vec_of(n.div_ceil(RUN_COPY_POSITIONS)),
             rep_write_en: Default::default(),
             rep_write_col: Default::default(),
             rep_write_value: Default::default(),
@@ -241,8 +222,6 @@ impl FccSortFilter {
             _n: n,
             _groups: groups(n),
             _l: l,
-            _run_group: RUN_COPY_POSITIONS,
-            _run_copies: n.div_ceil(RUN_COPY_POSITIONS),
         }
     }
 }
@@ -320,10 +299,6 @@ impl Logic for FccSortFilter {
         for l in self._l..(self._l + 1) {
             self.ctr_sm.d.next = self.ctr_tree[l - 2].q.val();
         }
-        for g in 0..self._run_copies {
-            self.same_run_sm[g].clock.next = self.clk.val();
-            self.same_run_sm[g].d.next = self.ctr_sm.d.val().same_run;
-        }
         self.ctr_sm1.d.next = self.ctr_sm.q.val();
         self.ctr_sm2.d.next = self.ctr_sm1.q.val();
         self.ring_s1.d.next = self.ring_s0.val();
@@ -354,12 +329,6 @@ impl Logic for FccSortFilter {
         if self.ctr_sm.q.val().same_run {
             self.run_rep_before.next = self.run_rep.q.val();
         }
-        for g in 0..self._run_copies {
-            self.run_rep_group[g].next = self.ctr_sm.q.val().c;
-            if self.same_run_sm[g].q.val() {
-                self.run_rep_group[g].next = self.run_rep.q.val();
-            }
-        }
         self.run_rep_after.next = self.run_rep_before.val();
         if self.min_tree.min.val() < self.run_rep_before.val() {
             self.run_rep_after.next = self.min_tree.min.val();
@@ -374,14 +343,12 @@ impl Logic for FccSortFilter {
         if self.ctr_sm.q.val().elig {
             self.rep_write_value.d.next = self.run_rep_after.val();
         }
-        for gg in self._run_group..(self._run_group + 1) {
-            for e in 0..self._n {
-                self.later_min[e].d.next = self.match_delay.hit_sm[e].val()
-                    & (self.match_delay.rep_sm[e].val() == self.min_tree.min.val())
-                    & !self.min_tree.first[e].val();
-                self.is_run_rep[e].d.next =
-                    self.match_delay.rep_sm[e].val() == self.run_rep_group[e / gg].val();
-            }
+        for e in 0..self._n {
+            self.later_min[e].d.next = self.match_delay.hit_sm[e].val()
+                & (self.match_delay.rep_sm[e].val() == self.min_tree.min.val())
+                & !self.min_tree.first[e].val();
+            self.is_run_rep[e].d.next =
+                self.match_delay.rep_sm[e].val() == self.run_rep_before.val();
         }
         self.rep_we.next = self.rep_write_en.q.val();
         self.rep_waddr.next = self.rep_write_col.q.val();
