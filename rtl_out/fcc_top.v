@@ -5070,6 +5070,8 @@ module fcc_intra_k7_668cf05b(clk,rst,pix,last_col,th_h_c,out,provisional,overflo
     // Local signals
     reg  hp_eff;
     reg  fv0;
+    reg  ring_first;
+    reg  prev_load;
     reg  [73:0] p7;
     reg  cont;
     reg  [19:0] nl;
@@ -5439,6 +5441,8 @@ module fcc_intra_k7_668cf05b(clk,rst,pix,last_col,th_h_c,out,provisional,overflo
         fvd$6$clock = clk;
         hp_eff = ~pix[72:72] & has_prev$q;
         fv0 = pix[0:0] & pix[1:1] & ~hp_eff;
+        ring_first = pix[1:1] & ~hp_eff;
+        prev_load = pix[0:0] & pix[1:1];
         near$clk = clk;
         near$ax = pix[17:2];
         near$ay = pix[33:18];
@@ -5454,7 +5458,7 @@ module fcc_intra_k7_668cf05b(clk,rst,pix,last_col,th_h_c,out,provisional,overflo
         ring$ax = first_x$q;
         ring$ay = first_y$q;
         ring$az = first_z$q;
-        if (fv0) begin
+        if (ring_first) begin
             ring$ax = pix[17:2];
             ring$ay = pix[33:18];
             ring$az = pix[49:34];
@@ -5469,16 +5473,16 @@ module fcc_intra_k7_668cf05b(clk,rst,pix,last_col,th_h_c,out,provisional,overflo
         end
         if (pix[0:0]) begin
             has_prev$d = pix[1:1] | hp_eff;
-            if (pix[1:1]) begin
-                prev_x$d = pix[17:2];
-                prev_y$d = pix[33:18];
-                prev_z$d = pix[49:34];
-            end
-            if (fv0) begin
-                first_x$d = pix[17:2];
-                first_y$d = pix[33:18];
-                first_z$d = pix[49:34];
-            end
+        end
+        if (prev_load) begin
+            prev_x$d = pix[17:2];
+            prev_y$d = pix[33:18];
+            prev_z$d = pix[49:34];
+        end
+        if (fv0) begin
+            first_x$d = pix[17:2];
+            first_y$d = pix[33:18];
+            first_z$d = pix[49:34];
         end
         pd$0$d = pix;
         fvd$0$d = fv0;
@@ -5580,9 +5584,6 @@ module fcc_intra_k7_668cf05b(clk,rst,pix,last_col,th_h_c,out,provisional,overflo
             end
             if (p9$q[1:1] & ~labok9$q) begin
                 unl$d = unl$q + one20;
-                if (p9$q[70:70]) begin
-                    unl$d = one20;
-                end
             end
         end
         rm1$d = raw$q - one20;
@@ -7652,13 +7653,7 @@ module fcc_label_update__assembly__slot_mux__0_k7_668cf05b(source,taken,carried,
     // Constant declarations
     localparam  src_carried = 3'b1;
     localparam  src_new$0 = 3'b10;
-    localparam  src_new$1 = 3'b11;
-    localparam  src_new$2 = 3'b100;
-    localparam  src_new$3 = 3'b101;
     localparam  count$0 = 3'b0;
-    localparam  count$1 = 3'b1;
-    localparam  count$2 = 3'b10;
-    localparam  count$3 = 3'b11;
     localparam  zero16 = 16'h0;
 
     // Local signals
@@ -7682,33 +7677,6 @@ module fcc_label_update__assembly__slot_mux__0_k7_668cf05b(source,taken,carried,
             if (taken == count$0) begin
                 label = gear_head;
             end
-        end
-        if (source == src_new$1) begin
-            label = collected_k$1;
-            if (taken == count$1) begin
-                label = gear_head;
-            end
-        end
-        if (source == src_new$2) begin
-            label = collected_k$2;
-            if (taken == count$2) begin
-                label = gear_head;
-            end
-        end
-        if (source == src_new$3) begin
-            label = collected_k$3;
-            if (taken == count$3) begin
-                label = gear_head;
-            end
-        end
-        if ((source == src_new$1) & (taken == count$0)) begin
-            label = gear_next;
-        end
-        if ((source == src_new$2) & (taken == count$1)) begin
-            label = gear_next;
-        end
-        if ((source == src_new$3) & (taken == count$2)) begin
-            label = gear_next;
         end
     end
 
@@ -7730,12 +7698,8 @@ module fcc_label_update__assembly__slot_mux__1_k7_668cf05b(source,taken,carried,
     localparam  src_carried = 3'b1;
     localparam  src_new$0 = 3'b10;
     localparam  src_new$1 = 3'b11;
-    localparam  src_new$2 = 3'b100;
-    localparam  src_new$3 = 3'b101;
     localparam  count$0 = 3'b0;
     localparam  count$1 = 3'b1;
-    localparam  count$2 = 3'b10;
-    localparam  count$3 = 3'b11;
     localparam  zero16 = 16'h0;
 
     // Local signals
@@ -7766,25 +7730,7 @@ module fcc_label_update__assembly__slot_mux__1_k7_668cf05b(source,taken,carried,
                 label = gear_head;
             end
         end
-        if (source == src_new$2) begin
-            label = collected_k$2;
-            if (taken == count$2) begin
-                label = gear_head;
-            end
-        end
-        if (source == src_new$3) begin
-            label = collected_k$3;
-            if (taken == count$3) begin
-                label = gear_head;
-            end
-        end
         if ((source == src_new$1) & (taken == count$0)) begin
-            label = gear_next;
-        end
-        if ((source == src_new$2) & (taken == count$1)) begin
-            label = gear_next;
-        end
-        if ((source == src_new$3) & (taken == count$2)) begin
             label = gear_next;
         end
     end
@@ -7808,11 +7754,9 @@ module fcc_label_update__assembly__slot_mux__2_k7_668cf05b(source,taken,carried,
     localparam  src_new$0 = 3'b10;
     localparam  src_new$1 = 3'b11;
     localparam  src_new$2 = 3'b100;
-    localparam  src_new$3 = 3'b101;
     localparam  count$0 = 3'b0;
     localparam  count$1 = 3'b1;
     localparam  count$2 = 3'b10;
-    localparam  count$3 = 3'b11;
     localparam  zero16 = 16'h0;
 
     // Local signals
@@ -7849,19 +7793,10 @@ module fcc_label_update__assembly__slot_mux__2_k7_668cf05b(source,taken,carried,
                 label = gear_head;
             end
         end
-        if (source == src_new$3) begin
-            label = collected_k$3;
-            if (taken == count$3) begin
-                label = gear_head;
-            end
-        end
         if ((source == src_new$1) & (taken == count$0)) begin
             label = gear_next;
         end
         if ((source == src_new$2) & (taken == count$1)) begin
-            label = gear_next;
-        end
-        if ((source == src_new$3) & (taken == count$2)) begin
             label = gear_next;
         end
     end
@@ -13276,6 +13211,7 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
 
     // Stub signals
     reg  [9:0] mux$addr;
+    reg  [9:0] mux$addr_hi;
     reg  [15:0] mux$w16$0;
     reg  [15:0] mux$w16$1;
     reg  [15:0] mux$w16$2;
@@ -13370,6 +13306,15 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
     reg  b_v$d;
     wire  b_v$q;
     reg  b_v$clock;
+    reg  ar_word_q$clock;
+    reg  [9:0] ar_word_q$d;
+    wire  [9:0] ar_word_q$q;
+    reg  ar_word_hi_q$clock;
+    reg  [9:0] ar_word_hi_q$d;
+    wire  [9:0] ar_word_hi_q$q;
+    reg  ar_pend_q$d;
+    wire  ar_pend_q$q;
+    reg  ar_pend_q$clock;
     reg  r_v$d;
     wire  r_v$q;
     reg  r_v$clock;
@@ -13537,6 +13482,7 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
     // Sub module instances
     fcc_regs__mux_k7_668cf05b mux(
         .addr(mux$addr),
+        .addr_hi(mux$addr_hi),
         .w16$0(mux$w16$0),
         .w16$1(mux$w16$1),
         .w16$2(mux$w16$2),
@@ -13679,6 +13625,21 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
         .d(b_v$d),
         .q(b_v$q),
         .clock(b_v$clock)
+    );
+    fcc_regs__ar_word_q_k7_668cf05b ar_word_q(
+        .clock(ar_word_q$clock),
+        .d(ar_word_q$d),
+        .q(ar_word_q$q)
+    );
+    fcc_regs__ar_word_hi_q_k7_668cf05b ar_word_hi_q(
+        .clock(ar_word_hi_q$clock),
+        .d(ar_word_hi_q$d),
+        .q(ar_word_hi_q$q)
+    );
+    fcc_regs__ar_pend_q_k7_668cf05b ar_pend_q(
+        .d(ar_pend_q$d),
+        .q(ar_pend_q$q),
+        .clock(ar_pend_q$clock)
     );
     fcc_regs__r_v_k7_668cf05b r_v(
         .d(r_v$d),
@@ -13944,6 +13905,7 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
         w_ge_cols$clock = clk;
         w_le_cols$clock = clk;
         b_v$clock = clk;
+        ar_pend_q$clock = clk;
         r_v$clock = clk;
         r_d$clock = clk;
         irq_en$clock = clk;
@@ -14000,6 +13962,7 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
         w_ge_cols$d = w_ge_cols$q;
         w_le_cols$d = w_le_cols$q;
         b_v$d = b_v$q;
+        ar_pend_q$d = ar_pend_q$q;
         r_v$d = r_v$q;
         r_d$d = r_d$q;
         irq_en$d = irq_en$q;
@@ -14233,7 +14196,8 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
         if (clear_stalls) begin
             s_gstall$d = zero24;
         end
-        mux$addr = s_axil_araddr[11:2];
+        mux$addr = ar_word_q$q;
+        mux$addr_hi = ar_word_hi_q$q;
         mux$w32$0 = count$q;
         mux$w16$0 = s_clusters$q;
         mux$w16$1 = s_prov$q;
@@ -14255,8 +14219,17 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
         mux$w16$4 = sh_thv$q;
         mux$w16$5 = sh_rows$q;
         mux$w16$6 = sh_cols$q;
-        ar_take = s_axil_arvalid & ~r_v$q & ~run_rst_dims$q;
+        ar_take = s_axil_arvalid & ~ar_pend_q$q & ~r_v$q & ~run_rst_dims$q;
+        ar_pend_q$d = ar_take;
+        ar_word_q$clock = clk;
+        ar_word_q$d = ar_word_q$q;
+        ar_word_hi_q$clock = clk;
+        ar_word_hi_q$d = ar_word_hi_q$q;
         if (ar_take) begin
+            ar_word_q$d = s_axil_araddr[11:2];
+            ar_word_hi_q$d = s_axil_araddr[11:2];
+        end
+        if (ar_pend_q$q) begin
             r_v$d = 1'b1;
             r_d$d = mux$data;
         end
@@ -14270,6 +14243,7 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
             aw_v$d = 1'b0;
             w_v$d = 1'b0;
             b_v$d = 1'b0;
+            ar_pend_q$d = 1'b0;
             r_v$d = 1'b0;
             irq_en$d = 1'b0;
             done_sticky$d = 1'b0;
@@ -14323,7 +14297,7 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
         s_axil_wready = ~w_v$q;
         s_axil_bvalid = b_v$q;
         s_axil_bresp = okay;
-        s_axil_arready = ~r_v$q & ~run_rst_dims$q;
+        s_axil_arready = ~ar_pend_q$q & ~r_v$q & ~run_rst_dims$q;
         s_axil_rvalid = r_v$q;
         s_axil_rdata = r_d$q;
         s_axil_rresp = okay;
@@ -14440,6 +14414,67 @@ module fcc_regs__act_thv_c_k7_668cf05b(d,q,clock);
     end
 
 endmodule // fcc_regs__act_thv_c_k7_668cf05b
+
+
+module fcc_regs__ar_pend_q_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__ar_pend_q_k7_668cf05b
+
+
+module fcc_regs__ar_word_hi_q_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg [9:0] held;
+    initial begin
+        held = 10'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_regs__ar_word_hi_q_k7_668cf05b
+
+
+module fcc_regs__ar_word_q_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg [9:0] held;
+    initial begin
+        held = 10'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_regs__ar_word_q_k7_668cf05b
 
 
 module fcc_regs__aw_control_k7_668cf05b(d,q,clock);
@@ -14864,10 +14899,11 @@ module fcc_regs__irq_en_k7_668cf05b(d,q,clock);
 endmodule // fcc_regs__irq_en_k7_668cf05b
 
 
-module fcc_regs__mux_k7_668cf05b(addr,w16$0,w16$1,w16$2,w16$3,w16$4,w16$5,w16$6,w20$0,w24$0,w24$1,w32$0,flags$0,flags$1,flags$2,flags$3,flags$4,flags$5,flags$6,flags$7,flags$8,flags$9,data);
+module fcc_regs__mux_k7_668cf05b(addr,addr_hi,w16$0,w16$1,w16$2,w16$3,w16$4,w16$5,w16$6,w20$0,w24$0,w24$1,w32$0,flags$0,flags$1,flags$2,flags$3,flags$4,flags$5,flags$6,flags$7,flags$8,flags$9,data);
 
     // Module arguments
     input wire  [9:0] addr;
+    input wire  [9:0] addr_hi;
     input wire  [15:0] w16$0;
     input wire  [15:0] w16$1;
     input wire  [15:0] w16$2;
@@ -14892,35 +14928,73 @@ module fcc_regs__mux_k7_668cf05b(addr,w16$0,w16$1,w16$2,w16$3,w16$4,w16$5,w16$6,
     output reg  [31:0] data;
 
     // Update code (custom)
+    // Each case keeps the half of the word its address selects.
+    /* verilator lint_off UNUSEDSIGNAL */
+    reg [31:0] by_lo;
+    reg [31:0] by_hi;
+    /* verilator lint_on UNUSEDSIGNAL */
     always @(*) begin
         case (addr)
-            10'd0: data = 32'h46434331;
-            10'd1: data = 32'h00000100;
-            10'd2: data = 32'hf2a51f2e;
-            10'd3: data = 32'h668cf05b;
-            10'd4: data = 32'h00000007;
-            10'd5: data = 32'h00000040;
-            10'd6: data = 32'h00000800;
-            10'd7: data = 32'h0000000f;
-            10'd8: data = 32'h00000004;
-            10'd9: data = 32'h00030d40;
-            10'd16: data = {30'd0, flags$0, 1'b0};
-            10'd17: data = {30'd0, flags$2, flags$1};
-            10'd18: data = {27'd0, flags$9, flags$8, flags$7, flags$6, flags$5};
-            10'd20: data = w32$0;
-            10'd21: data = {16'd0, w16$0};
-            10'd22: data = {16'd0, w16$1};
-            10'd23: data = {12'd0, w20$0};
-            10'd24: data = {30'd0, flags$4, flags$3};
-            10'd25: data = {8'd0, w24$0};
-            10'd26: data = {8'd0, w24$1};
-            10'd32: data = {16'd0, w16$2};
-            10'd33: data = {16'd0, w16$3};
-            10'd34: data = {16'd0, w16$4};
-            10'd35: data = {16'd0, w16$5};
-            10'd36: data = {16'd0, w16$6};
-            default: data = 32'h00000000;
+            10'd0: by_lo = 32'h46434331;
+            10'd1: by_lo = 32'h00000100;
+            10'd2: by_lo = 32'hf2a51f2e;
+            10'd3: by_lo = 32'h668cf05b;
+            10'd4: by_lo = 32'h00000007;
+            10'd5: by_lo = 32'h00000040;
+            10'd6: by_lo = 32'h00000800;
+            10'd7: by_lo = 32'h0000000f;
+            10'd8: by_lo = 32'h00000004;
+            10'd9: by_lo = 32'h00030d40;
+            10'd16: by_lo = {30'd0, flags$0, 1'b0};
+            10'd17: by_lo = {30'd0, flags$2, flags$1};
+            10'd18: by_lo = {27'd0, flags$9, flags$8, flags$7, flags$6, flags$5};
+            10'd20: by_lo = w32$0;
+            10'd21: by_lo = {16'd0, w16$0};
+            10'd22: by_lo = {16'd0, w16$1};
+            10'd23: by_lo = {12'd0, w20$0};
+            10'd24: by_lo = {30'd0, flags$4, flags$3};
+            10'd25: by_lo = {8'd0, w24$0};
+            10'd26: by_lo = {8'd0, w24$1};
+            10'd32: by_lo = {16'd0, w16$2};
+            10'd33: by_lo = {16'd0, w16$3};
+            10'd34: by_lo = {16'd0, w16$4};
+            10'd35: by_lo = {16'd0, w16$5};
+            10'd36: by_lo = {16'd0, w16$6};
+            default: by_lo = 32'h00000000;
         endcase
+    end
+    always @(*) begin
+        case (addr_hi)
+            10'd0: by_hi = 32'h46434331;
+            10'd1: by_hi = 32'h00000100;
+            10'd2: by_hi = 32'hf2a51f2e;
+            10'd3: by_hi = 32'h668cf05b;
+            10'd4: by_hi = 32'h00000007;
+            10'd5: by_hi = 32'h00000040;
+            10'd6: by_hi = 32'h00000800;
+            10'd7: by_hi = 32'h0000000f;
+            10'd8: by_hi = 32'h00000004;
+            10'd9: by_hi = 32'h00030d40;
+            10'd16: by_hi = {30'd0, flags$0, 1'b0};
+            10'd17: by_hi = {30'd0, flags$2, flags$1};
+            10'd18: by_hi = {27'd0, flags$9, flags$8, flags$7, flags$6, flags$5};
+            10'd20: by_hi = w32$0;
+            10'd21: by_hi = {16'd0, w16$0};
+            10'd22: by_hi = {16'd0, w16$1};
+            10'd23: by_hi = {12'd0, w20$0};
+            10'd24: by_hi = {30'd0, flags$4, flags$3};
+            10'd25: by_hi = {8'd0, w24$0};
+            10'd26: by_hi = {8'd0, w24$1};
+            10'd32: by_hi = {16'd0, w16$2};
+            10'd33: by_hi = {16'd0, w16$3};
+            10'd34: by_hi = {16'd0, w16$4};
+            10'd35: by_hi = {16'd0, w16$5};
+            10'd36: by_hi = {16'd0, w16$6};
+            default: by_hi = 32'h00000000;
+        endcase
+    end
+    always @(*) begin
+        data = {by_hi[31:16], by_lo[15:0]};
     end
 endmodule // fcc_regs__mux_k7_668cf05b
 

@@ -2,7 +2,8 @@
 //! from the gearbox, up to two per cycle, and leaves for the output register
 //! when it has them all (the last ones may arrive in the same cycle) and the
 //! output register is free. Each slot's label, and the run carried into the
-//! next beat, is chosen by one `fcc_slot_mux`.
+//! next beat, is chosen by one `fcc_slot_mux` (slot j's with the arms of the
+//! first j + 1 new labels only, the carried run's with all of them).
 //!
 //! Output: four 16-bit slots from bit 0, `tkeep` marking the bytes of the
 //! slots that hold labels, `tlast` on the frame's last beat.
@@ -99,8 +100,8 @@ impl FccBeatAssembly {
             m_axis_tready: Default::default(),
             frame_sent: Default::default(),
             gear_stalls: Default::default(),
-            slot_mux: vec_of(NEW_LABELS),
-            run_mux: Default::default(),
+            slot_mux: (0..NEW_LABELS).map(|j| FccSlotMux::new(j + 1)).collect(),
+            run_mux: FccSlotMux::new(NEW_LABELS),
             taken: Default::default(),
             collected: vec_of(NEW_LABELS),
             carried_run: Default::default(),

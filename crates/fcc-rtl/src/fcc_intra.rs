@@ -90,7 +90,16 @@ pub struct FccIntra {
     ovf: DFF<Bit>,
     // Combinational helpers.
     hp_eff: Signal<Local, Bit>,
+    /// The row's first valid point: loads `first_*` (and `fvd`).
     fv0: Signal<Local, Bit>,
+    /// The ring's first operand is the incoming point: `fv0` without
+    /// `valid` (the ring's result only counts for a valid point), so that
+    /// the operand select and the `first_*` enables are two nets of 48
+    /// loads, not one of 96.
+    ring_first: Signal<Local, Bit>,
+    /// A valid point with coordinates: loads `prev_*` (an enable of its own,
+    /// so that the pixel's `valid` is not the enable of every point register).
+    prev_load: Signal<Local, Bit>,
     p7: Signal<Local, Pix>,
     cont: Signal<Local, Bit>,
     nl: Signal<Local, Bits<20>>,
@@ -168,6 +177,8 @@ impl FccIntra {
             ovf: Default::default(),
             hp_eff: Default::default(),
             fv0: Default::default(),
+            ring_first: Default::default(),
+            prev_load: Default::default(),
             p7: Default::default(),
             cont: Default::default(),
             nl: Default::default(),
@@ -208,6 +219,8 @@ impl Logic for FccIntra {
         // ---- N0: the incoming pixel against the row's previous valid pixel.
         self.hp_eff.next = !self.pix.val().col0 & self.has_prev.q.val();
         self.fv0.next = self.pix.val().valid & self.pix.val().ok & !self.hp_eff.val();
+        self.ring_first.next = self.pix.val().ok & !self.hp_eff.val();
+        self.prev_load.next = self.pix.val().valid & self.pix.val().ok;
         self.near.clk.next = self.clk.val();
         self.near.ax.next = self.pix.val().x;
         self.near.ay.next = self.pix.val().y;
@@ -224,7 +237,7 @@ impl Logic for FccIntra {
         self.ring.ax.next = self.first_x.q.val();
         self.ring.ay.next = self.first_y.q.val();
         self.ring.az.next = self.first_z.q.val();
-        if self.fv0.val() {
+        if self.ring_first.val() {
             self.ring.ax.next = self.pix.val().x;
             self.ring.ay.next = self.pix.val().y;
             self.ring.az.next = self.pix.val().z;
@@ -239,16 +252,16 @@ impl Logic for FccIntra {
         }
         if self.pix.val().valid {
             self.has_prev.d.next = self.pix.val().ok | self.hp_eff.val();
-            if self.pix.val().ok {
-                self.prev_x.d.next = self.pix.val().x;
-                self.prev_y.d.next = self.pix.val().y;
-                self.prev_z.d.next = self.pix.val().z;
-            }
-            if self.fv0.val() {
-                self.first_x.d.next = self.pix.val().x;
-                self.first_y.d.next = self.pix.val().y;
-                self.first_z.d.next = self.pix.val().z;
-            }
+        }
+        if self.prev_load.val() {
+            self.prev_x.d.next = self.pix.val().x;
+            self.prev_y.d.next = self.pix.val().y;
+            self.prev_z.d.next = self.pix.val().z;
+        }
+        if self.fv0.val() {
+            self.first_x.d.next = self.pix.val().x;
+            self.first_y.d.next = self.pix.val().y;
+            self.first_z.d.next = self.pix.val().z;
         }
         // ---- N1 .. N7: delay line.
         self.pd[0].d.next = self.pix.val();
@@ -341,15 +354,15 @@ impl Logic for FccIntra {
             self.ring9.q.val() & self.flok9.q.val() & self.curok9.q.val() & self.ne9.q.val();
         self.out_q.d.next.ring_a = self.fl9.q.val();
         self.out_q.d.next.ring_b = self.cur9.q.val();
+        // The frame's first point (column 0: no previous point, no
+        // continuation) always gets label 1, so it is never unlabelled: the
+        // count restarts there and counts from the next point on.
         if self.p9.q.val().valid {
             if self.p9.q.val().first {
                 self.unl.d.next = self.zero20.val();
             }
             if self.p9.q.val().ok & !self.labok9.q.val() {
                 self.unl.d.next = self.unl.q.val() + self.one20.val();
-                if self.p9.q.val().first {
-                    self.unl.d.next = self.one20.val();
-                }
             }
         }
         // ---- Status: labels used = min(raw - 1, 2^B - 1).

@@ -4,6 +4,10 @@
 //! are literals, counters are inputs of their own width (`w16`, `w20`,
 //! `w24`, `w32`, zero-extended here), registers of single-bit fields are
 //! concatenated from inputs `flags`; unmapped addresses read 0.
+//!
+//! Fanout: the low half of the word (bits 15:0) is selected by `addr`, the
+//! high half by `addr_hi`, a copy of the same address register, so that no
+//! address bit selects all 32 bits of every register (80 loads).
 
 use rust_hdl::prelude::*;
 
@@ -31,7 +35,9 @@ pub enum MuxSrc {
 
 #[derive(LogicBlock)]
 pub struct FccRegMux {
+    /// The word address, for bits 15:0 and (a copy) for bits 31:16.
     pub addr: Signal<In, Bits<WORD_BITS>>,
+    pub addr_hi: Signal<In, Bits<WORD_BITS>>,
     pub w16: Vec<Signal<In, Bits<16>>>,
     pub w20: Vec<Signal<In, Bits<20>>>,
     pub w24: Vec<Signal<In, Bits<24>>>,
@@ -97,6 +103,7 @@ impl FccRegMux {
         }
         Self {
             addr: Default::default(),
+            addr_hi: Default::default(),
             w16: (0..n16).map(|_| Default::default()).collect(),
             w20: (0..n20).map(|_| Default::default()).collect(),
             w24: (0..n24).map(|_| Default::default()).collect(),
@@ -110,7 +117,44 @@ impl FccRegMux {
 
 impl Logic for FccRegMux {
     fn update(&mut self) {
-        let word = self.addr.val().index() as u32 * 4;
+        let lo = self.word(self.addr.val().index() as u32 * 4) & 0xffff;
+        let hi = self.word(self.addr_hi.val().index() as u32 * 4) & 0xffff_0000;
+        self.data.next = (lo | hi).to_bits();
+    }
+
+    fn connect(&mut self) {
+        self.data.connect();
+    }
+
+    fn hdl(&self) -> Verilog {
+        let mut s = String::from(
+            "// Each case keeps the half of the word its address selects.\n\
+             /* verilator lint_off UNUSEDSIGNAL */\n\
+             reg [31:0] by_lo;\n\
+             reg [31:0] by_hi;\n\
+             /* verilator lint_on UNUSEDSIGNAL */\n",
+        );
+        for (var, sel) in [("by_lo", "addr"), ("by_hi", "addr_hi")] {
+            s.push_str(&format!("always @(*) begin\n    case ({sel})\n"));
+            for (off, src) in &self._entries {
+                s.push_str(&format!(
+                    "        {WORD_BITS}'d{}: {var} = {};\n",
+                    off / 4,
+                    Self::value(src)
+                ));
+            }
+            s.push_str(&format!(
+                "        default: {var} = 32'h00000000;\n    endcase\nend\n"
+            ));
+        }
+        s.push_str("always @(*) begin\n    data = {by_hi[31:16], by_lo[15:0]};\nend\n");
+        Verilog::Custom(s)
+    }
+}
+
+impl FccRegMux {
+    /// The word at byte offset `word` (0 when unmapped).
+    fn word(&self, word: u32) -> u64 {
         let mut v = 0u64;
         for (off, src) in &self._entries {
             if *off == word {
@@ -129,39 +173,27 @@ impl Logic for FccRegMux {
                 };
             }
         }
-        self.data.next = v.to_bits();
+        v
     }
 
-    fn connect(&mut self) {
-        self.data.connect();
-    }
-
-    fn hdl(&self) -> Verilog {
-        let mut s = String::from("always @(*) begin\n    case (addr)\n");
-        for (off, src) in &self._entries {
-            let value = match src {
-                MuxSrc::Const(c) => format!("32'h{c:08x}"),
-                MuxSrc::W16(i) => format!("{{16'd0, w16${i}}}"),
-                MuxSrc::W20(i) => format!("{{12'd0, w20${i}}}"),
-                MuxSrc::W24(i) => format!("{{8'd0, w24${i}}}"),
-                MuxSrc::W32(i) => format!("w32${i}"),
-                MuxSrc::Flags(f) => {
-                    let mut parts = vec![format!("{}'d0", 32 - f.len())];
-                    for i in f.iter().rev() {
-                        parts.push(match i {
-                            Some(i) => format!("flags${i}"),
-                            None => "1'b0".to_string(),
-                        });
-                    }
-                    format!("{{{}}}", parts.join(", "))
+    /// The Verilog expression of a source, 32 bits wide.
+    fn value(src: &MuxSrc) -> String {
+        match src {
+            MuxSrc::Const(c) => format!("32'h{c:08x}"),
+            MuxSrc::W16(i) => format!("{{16'd0, w16${i}}}"),
+            MuxSrc::W20(i) => format!("{{12'd0, w20${i}}}"),
+            MuxSrc::W24(i) => format!("{{8'd0, w24${i}}}"),
+            MuxSrc::W32(i) => format!("w32${i}"),
+            MuxSrc::Flags(f) => {
+                let mut parts = vec![format!("{}'d0", 32 - f.len())];
+                for i in f.iter().rev() {
+                    parts.push(match i {
+                        Some(i) => format!("flags${i}"),
+                        None => "1'b0".to_string(),
+                    });
                 }
-            };
-            s.push_str(&format!(
-                "        {WORD_BITS}'d{}: data = {value};\n",
-                off / 4
-            ));
+                format!("{{{}}}", parts.join(", "))
+            }
         }
-        s.push_str("        default: data = 32'h00000000;\n    endcase\nend\n");
-        Verilog::Custom(s)
     }
 }

@@ -4,9 +4,14 @@
 //! holding register whenever it is empty (`awready = !aw_v`, `wready =
 //! !w_v`), in either order; the write is performed in the cycle after both
 //! are held and no response is pending, and its response (always OKAY) is held
-//! on B until `bready`. Read channel: `arready = !rvalid`; the addressed word
-//! is registered into `rdata` with `rvalid` and held until `rready`. Every
-//! output comes from a flip-flop or one gate after flip-flops.
+//! on B until `bready`. Read channel (one read outstanding): `arready` is
+//! high while no read is held (`ar_pend_q` clear, `rvalid` low); the word
+//! address is registered at the AR handshake (`ar_word_q` and its copy
+//! `ar_word_hi_q`, so that the `araddr` port drives two flip-flops per bit
+//! rather than the read multiplexer), the addressed word is registered into `rdata` with `rvalid`
+//! in the next cycle (two cycles from the handshake to `rvalid`) and held
+//! until `rready`. Every output comes from a flip-flop or one gate after
+//! flip-flops.
 //!
 //! Frame status: in the cycle `frame_end` is high (the last label beat
 //! leaves in phase Out: `frame_sent` with `out_next` one cycle earlier) the
@@ -173,6 +178,14 @@ pub struct FccRegs {
     w_clear_stalls: FccKeepReg<Bit>,
     b_v: DFF<Bit>,
     // Read channel.
+    /// The word address of the read taken at the AR handshake, and the
+    /// read waiting for its data (set in the cycle after the handshake).
+    /// `ar_word_q` selects the read word's bits 15:0, its copy
+    /// `ar_word_hi_q` bits 31:16 (under 64 loads a bit each; both kept, or
+    /// synthesis would merge them).
+    ar_word_q: FccKeepReg<Bits<WORD_BITS>>,
+    ar_word_hi_q: FccKeepReg<Bits<WORD_BITS>>,
+    ar_pend_q: DFF<Bit>,
     r_v: DFF<Bit>,
     r_d: DFF<Bits<32>>,
     // Registers.
@@ -429,6 +442,9 @@ impl FccRegs {
             w_clear_frame: Default::default(),
             w_clear_stalls: Default::default(),
             b_v: Default::default(),
+            ar_word_q: Default::default(),
+            ar_word_hi_q: Default::default(),
+            ar_pend_q: Default::default(),
             r_v: Default::default(),
             r_d: Default::default(),
             irq_en: Default::default(),
@@ -563,6 +579,7 @@ impl Logic for FccRegs {
             w_ge_cols,
             w_le_cols,
             b_v,
+            ar_pend_q,
             r_v,
             r_d,
             irq_en,
@@ -822,7 +839,8 @@ impl Logic for FccRegs {
             self.s_gstall.d.next = self.zero24.val();
         }
         // ---- Read channel.
-        self.mux.addr.next = self.s_axil_araddr.val().get_bits::<WORD_BITS>(2);
+        self.mux.addr.next = self.ar_word_q.q.val();
+        self.mux.addr_hi.next = self.ar_word_hi_q.q.val();
         self.mux.w32[0].next = self.count.q.val();
         self.mux.w16[0].next = self.s_clusters.q.val();
         self.mux.w16[1].next = self.s_prov.q.val();
@@ -845,9 +863,20 @@ impl Logic for FccRegs {
         self.mux.w16[5].next = self.sh_rows.q.val();
         self.mux.w16[6].next = self.sh_cols.q.val();
         // No read is taken while the run registers are still in reset.
-        self.ar_take.next =
-            self.s_axil_arvalid.val() & !self.r_v.q.val() & !self.run_rst_dims.q.val();
+        self.ar_take.next = self.s_axil_arvalid.val()
+            & !self.ar_pend_q.q.val()
+            & !self.r_v.q.val()
+            & !self.run_rst_dims.q.val();
+        self.ar_pend_q.d.next = self.ar_take.val();
+        self.ar_word_q.clock.next = self.clk.val();
+        self.ar_word_q.d.next = self.ar_word_q.q.val();
+        self.ar_word_hi_q.clock.next = self.clk.val();
+        self.ar_word_hi_q.d.next = self.ar_word_hi_q.q.val();
         if self.ar_take.val() {
+            self.ar_word_q.d.next = self.s_axil_araddr.val().get_bits::<WORD_BITS>(2);
+            self.ar_word_hi_q.d.next = self.s_axil_araddr.val().get_bits::<WORD_BITS>(2);
+        }
+        if self.ar_pend_q.q.val() {
             self.r_v.d.next = true;
             self.r_d.d.next = self.mux.data.val();
         }
@@ -862,6 +891,7 @@ impl Logic for FccRegs {
             self.aw_v.d.next = false;
             self.w_v.d.next = false;
             self.b_v.d.next = false;
+            self.ar_pend_q.d.next = false;
             self.r_v.d.next = false;
             self.irq_en.d.next = false;
             self.done_sticky.d.next = false;
@@ -920,7 +950,8 @@ impl Logic for FccRegs {
         self.s_axil_wready.next = !self.w_v.q.val();
         self.s_axil_bvalid.next = self.b_v.q.val();
         self.s_axil_bresp.next = self.okay.val();
-        self.s_axil_arready.next = !self.r_v.q.val() & !self.run_rst_dims.q.val();
+        self.s_axil_arready.next =
+            !self.ar_pend_q.q.val() & !self.r_v.q.val() & !self.run_rst_dims.q.val();
         self.s_axil_rvalid.next = self.r_v.q.val();
         self.s_axil_rdata.next = self.r_d.q.val();
         self.s_axil_rresp.next = self.okay.val();

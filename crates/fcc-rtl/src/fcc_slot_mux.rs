@@ -6,6 +6,12 @@
 //! `taken` of its new labels (in `collected`, slots `0 .. taken`); new labels `taken`
 //! and `taken + 1` may arrive from the gearbox in this very cycle, as
 //! `gear_head` and `gear_next`, and are forwarded.
+//!
+//! Slot j of a beat can only hold one of the beat's first j + 1 new labels
+//! (the slots before it hold at least as many labels as there are new ones
+//! before it), so slot j's multiplexer is built with j + 1 new-label arms;
+//! the run carried into the next beat may be any of the beat's new labels
+//! (all [`NEW_LABELS`] arms).
 
 use rust_hdl::prelude::*;
 
@@ -47,10 +53,15 @@ pub struct FccSlotMux {
     src_new: Vec<Constant<Bits<3>>>,
     count: Vec<Constant<Bits<3>>>,
     zero16: Constant<Bits<16>>,
+    /// New labels this slot can hold (its arms `SRC_NEW + k`, `k < _arms`).
+    _arms: usize,
 }
 
 impl FccSlotMux {
-    pub fn new() -> Self {
+    /// The multiplexer of a slot that can hold one of the beat's first
+    /// `arms` new labels (1 ..= [`NEW_LABELS`]).
+    pub fn new(arms: usize) -> Self {
+        assert!((1..=NEW_LABELS).contains(&arms), "{arms} new-label arms");
         Self {
             source: Default::default(),
             taken: Default::default(),
@@ -61,16 +72,11 @@ impl FccSlotMux {
             label: Default::default(),
             collected_k: vec_of(NEW_LABELS),
             src_carried: kb(SRC_CARRIED),
-            src_new: (0..NEW_LABELS).map(|k| kb(SRC_NEW + k as u64)).collect(),
-            count: (0..NEW_LABELS).map(|k| kb(k as u64)).collect(),
+            src_new: (0..arms).map(|k| kb(SRC_NEW + k as u64)).collect(),
+            count: (0..arms).map(|k| kb(k as u64)).collect(),
             zero16: kb(0),
+            _arms: arms,
         }
-    }
-}
-
-impl Default for FccSlotMux {
-    fn default() -> Self {
-        Self::new()
     }
 }
 
@@ -85,7 +91,7 @@ impl Logic for FccSlotMux {
         if self.source.val() == self.src_carried.val() {
             self.label.next = self.carried.val();
         }
-        for k in 0..4 {
+        for k in 0..self._arms {
             if self.source.val() == self.src_new[k].val() {
                 self.label.next = self.collected_k[k].val();
                 if self.taken.val() == self.count[k].val() {
@@ -93,7 +99,7 @@ impl Logic for FccSlotMux {
                 }
             }
         }
-        for k in 1..4 {
+        for k in 1..self._arms {
             if (self.source.val() == self.src_new[k].val())
                 & (self.taken.val() == self.count[k - 1].val())
             {

@@ -37,7 +37,19 @@ pub fn waivers(p: &FccParams) -> String {
     );
     s.push_str(&axil_waivers("fcc_top.v"));
     s.push_str(&enum_register_waivers("fcc_top.v"));
+    s.push_str(&slot_mux_waivers("fcc_top.v"));
     s
+}
+
+/// The waivers of the label updater's slot multiplexers, in `file`.
+fn slot_mux_waivers(file: &str) -> String {
+    format!(
+        "// Slot j of a beat holds one of the beat's first j + 1 new labels, so\n\
+         // slot j's FccSlotMux reads only those of the collected labels and\n\
+         // slot 0's never the gearbox's second label.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{file}\" -match \"*'collected_k$*\"\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{file}\" -match \"*'gear_next'*\"\n"
+    )
 }
 
 /// The waivers of a register that holds a `LogicState` enum, in `file`:
@@ -85,6 +97,7 @@ pub fn label_update_waivers(p: &FccParams) -> String {
         "// fcc_label_update.v holds the label updater and its sub-blocks.\n\
          lint_off -rule DECLFILENAME -file \"*fcc_label_update.v\"\n",
     );
+    s.push_str(&slot_mux_waivers("fcc_label_update.v"));
     s
 }
 
