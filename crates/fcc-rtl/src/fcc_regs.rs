@@ -8,9 +8,9 @@
 //! high while no read is held (`ar_pend_q` clear, `rvalid` low); the word
 //! address is registered at the AR handshake (`ar_word_q` and its copy
 //! `ar_word_hi_q`, so that the `araddr` port drives two flip-flops per bit
-//! rather than the read multiplexer), the addressed word is registered into `rdata` with `rvalid`
-//! in the next cycle (two cycles from the handshake to `rvalid`) and held
-//! until `rready`. Every output comes from a flip-flop or one gate after
+//! rather than the read multiplexer), the addressed word is registered into
+//! `rdata` with `rvalid` in the next cycle (two cycles from the handshake to
+//! `rvalid`) and held until `rready`. Every output comes from a flip-flop or one gate after
 //! flip-flops.
 //!
 //! Frame status: in the cycle `frame_end` is high (the last label beat
