@@ -7042,9 +7042,9 @@ module fcc_label_update__assembly_k7_668cf05b(clk,rst,rst_collected,clear,head_v
     reg  [15:0] run_mux$gear_head;
     reg  [15:0] run_mux$gear_next;
     wire  [15:0] run_mux$label;
+    reg  taken$clock;
     reg  [2:0] taken$d;
     wire  [2:0] taken$q;
-    reg  taken$clock;
     reg  [15:0] collected$0$d;
     wire  [15:0] collected$0$q;
     reg  collected$0$clock;
@@ -7135,9 +7135,9 @@ module fcc_label_update__assembly_k7_668cf05b(clk,rst,rst_collected,clear,head_v
         .label(run_mux$label)
     );
     fcc_label_update__assembly__taken_k7_668cf05b taken(
+        .clock(taken$clock),
         .d(taken$d),
-        .q(taken$q),
-        .clock(taken$clock)
+        .q(taken$q)
     );
     fcc_label_update__assembly__collected__0_k7_668cf05b collected$0(
         .d(collected$0$d),
@@ -7900,22 +7900,24 @@ module fcc_label_update__assembly__stall_count_k7_668cf05b(d,q,clock);
 endmodule // fcc_label_update__assembly__stall_count_k7_668cf05b
 
 
-module fcc_label_update__assembly__taken_k7_668cf05b(d,q,clock);
+module fcc_label_update__assembly__taken_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [2:0] d;
     output reg  [2:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [2:0] held;
     initial begin
-       q = 3'h0;
+        held = 3'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_label_update__assembly__taken_k7_668cf05b
 
 
@@ -8020,12 +8022,12 @@ module fcc_label_update__gearbox_k7_668cf05b(clk,rst,rst_low_slots,rst_high_slot
     reg  [2:0] second_slot$d;
     wire  [2:0] second_slot$q;
     reg  second_slot$clock;
+    reg  third_slot$clock;
     reg  [2:0] third_slot$d;
     wire  [2:0] third_slot$q;
-    reg  third_slot$clock;
+    reg  fourth_slot$clock;
     reg  [2:0] fourth_slot$d;
     wire  [2:0] fourth_slot$q;
-    reg  fourth_slot$clock;
     reg  [2:0] write_slot$d;
     wire  [2:0] write_slot$q;
     reg  write_slot$clock;
@@ -8105,14 +8107,14 @@ module fcc_label_update__gearbox_k7_668cf05b(clk,rst,rst_low_slots,rst_high_slot
         .clock(second_slot$clock)
     );
     fcc_label_update__gearbox__third_slot_k7_668cf05b third_slot(
+        .clock(third_slot$clock),
         .d(third_slot$d),
-        .q(third_slot$q),
-        .clock(third_slot$clock)
+        .q(third_slot$q)
     );
     fcc_label_update__gearbox__fourth_slot_k7_668cf05b fourth_slot(
+        .clock(fourth_slot$clock),
         .d(fourth_slot$d),
-        .q(fourth_slot$q),
-        .clock(fourth_slot$clock)
+        .q(fourth_slot$q)
     );
     fcc_label_update__gearbox__write_slot_k7_668cf05b write_slot(
         .d(write_slot$d),
@@ -8353,22 +8355,24 @@ module fcc_label_update__gearbox__count_k7_668cf05b(d,q,clock);
 endmodule // fcc_label_update__gearbox__count_k7_668cf05b
 
 
-module fcc_label_update__gearbox__fourth_slot_k7_668cf05b(d,q,clock);
+module fcc_label_update__gearbox__fourth_slot_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [2:0] d;
     output reg  [2:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [2:0] held;
     initial begin
-       q = 3'h0;
+        held = 3'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_label_update__gearbox__fourth_slot_k7_668cf05b
 
 
@@ -8600,22 +8604,24 @@ module fcc_label_update__gearbox__slots__7_k7_668cf05b(d,q,clock);
 endmodule // fcc_label_update__gearbox__slots__7_k7_668cf05b
 
 
-module fcc_label_update__gearbox__third_slot_k7_668cf05b(d,q,clock);
+module fcc_label_update__gearbox__third_slot_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [2:0] d;
     output reg  [2:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [2:0] held;
     initial begin
-       q = 3'h0;
+        held = 3'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_label_update__gearbox__third_slot_k7_668cf05b
 
 
@@ -9815,9 +9821,9 @@ module fcc_label_update__queue_k7_668cf05b(clk,rst,clear,in_valid,in_beat,pop,he
     localparam  one2 = 2'b1;
 
     // Stub signals
+    reg  head_valid_q$clock;
     reg  head_valid_q$d;
     wire  head_valid_q$q;
-    reg  head_valid_q$clock;
     reg  [26:0] head_q$d;
     wire  [26:0] head_q$q;
     reg  head_q$clock;
@@ -9854,9 +9860,9 @@ module fcc_label_update__queue_k7_668cf05b(clk,rst,clear,in_valid,in_beat,pop,he
 
     // Sub module instances
     fcc_label_update__queue__head_valid_q_k7_668cf05b head_valid_q(
+        .clock(head_valid_q$clock),
         .d(head_valid_q$d),
-        .q(head_valid_q$q),
-        .clock(head_valid_q$clock)
+        .q(head_valid_q$q)
     );
     fcc_label_update__queue__head_q_k7_668cf05b head_q(
         .d(head_q$d),
@@ -10088,22 +10094,24 @@ module fcc_label_update__queue__head_q_k7_668cf05b(d,q,clock);
 endmodule // fcc_label_update__queue__head_q_k7_668cf05b
 
 
-module fcc_label_update__queue__head_valid_q_k7_668cf05b(d,q,clock);
+module fcc_label_update__queue__head_valid_q_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  d;
     output reg  q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg held;
     initial begin
-       q = 1'h0;
+        held = 1'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_label_update__queue__head_valid_q_k7_668cf05b
 
 
@@ -12390,9 +12398,9 @@ module fcc_merge_table__union_engine_k7_668cf05b(clk,rst,active,join_valid,join_
     reg  join_busy$d;
     wire  join_busy$q;
     reg  join_busy$clock;
+    reg  odd_turn$clock;
     reg  odd_turn$d;
     wire  odd_turn$q;
-    reg  odd_turn$clock;
     reg  [15:0] walk_even$d;
     wire  [15:0] walk_even$q;
     reg  walk_even$clock;
@@ -12461,9 +12469,9 @@ module fcc_merge_table__union_engine_k7_668cf05b(clk,rst,active,join_valid,join_
         .clock(join_busy$clock)
     );
     fcc_merge_table__union_engine__odd_turn_k7_668cf05b odd_turn(
+        .clock(odd_turn$clock),
         .d(odd_turn$d),
-        .q(odd_turn$q),
-        .clock(odd_turn$clock)
+        .q(odd_turn$q)
     );
     fcc_merge_table__union_engine__walk_even_k7_668cf05b walk_even(
         .d(walk_even$d),
@@ -12843,22 +12851,24 @@ module fcc_merge_table__union_engine__next_valid_k7_668cf05b(d,q,clock);
 endmodule // fcc_merge_table__union_engine__next_valid_k7_668cf05b
 
 
-module fcc_merge_table__union_engine__odd_turn_k7_668cf05b(d,q,clock);
+module fcc_merge_table__union_engine__odd_turn_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  d;
     output reg  q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg held;
     initial begin
-       q = 1'h0;
+        held = 1'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_merge_table__union_engine__odd_turn_k7_668cf05b
 
 
@@ -13312,9 +13322,9 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
     reg  ar_word_hi_q$clock;
     reg  [9:0] ar_word_hi_q$d;
     wire  [9:0] ar_word_hi_q$q;
+    reg  ar_pend_q$clock;
     reg  ar_pend_q$d;
     wire  ar_pend_q$q;
-    reg  ar_pend_q$clock;
     reg  r_v$d;
     wire  r_v$q;
     reg  r_v$clock;
@@ -13637,9 +13647,9 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
         .q(ar_word_hi_q$q)
     );
     fcc_regs__ar_pend_q_k7_668cf05b ar_pend_q(
+        .clock(ar_pend_q$clock),
         .d(ar_pend_q$d),
-        .q(ar_pend_q$q),
-        .clock(ar_pend_q$clock)
+        .q(ar_pend_q$q)
     );
     fcc_regs__r_v_k7_668cf05b r_v(
         .d(r_v$d),
@@ -14416,22 +14426,24 @@ module fcc_regs__act_thv_c_k7_668cf05b(d,q,clock);
 endmodule // fcc_regs__act_thv_c_k7_668cf05b
 
 
-module fcc_regs__ar_pend_q_k7_668cf05b(d,q,clock);
+module fcc_regs__ar_pend_q_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  d;
     output reg  q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg held;
     initial begin
-       q = 1'h0;
+        held = 1'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_regs__ar_pend_q_k7_668cf05b
 
 
@@ -14443,7 +14455,7 @@ module fcc_regs__ar_word_hi_q_k7_668cf05b(clock,d,q);
     output reg  [9:0] q;
 
     // Update code (custom)
-    (* keep = "true" *) reg [9:0] held;
+    (* max_fanout = 64 *) reg [9:0] held;
     initial begin
         held = 10'h0;
     end
@@ -14464,7 +14476,7 @@ module fcc_regs__ar_word_q_k7_668cf05b(clock,d,q);
     output reg  [9:0] q;
 
     // Update code (custom)
-    (* keep = "true" *) reg [9:0] held;
+    (* max_fanout = 64 *) reg [9:0] held;
     initial begin
         held = 10'h0;
     end
@@ -15087,7 +15099,7 @@ module fcc_regs__run_rst_act_h_k7_668cf05b(clock,d,q);
     output reg  q;
 
     // Update code (custom)
-    (* keep = "true" *) reg held;
+    (* max_fanout = 64 *) reg held;
     initial begin
         held = 1'h0;
     end
@@ -15108,7 +15120,7 @@ module fcc_regs__run_rst_act_v_k7_668cf05b(clock,d,q);
     output reg  q;
 
     // Update code (custom)
-    (* keep = "true" *) reg held;
+    (* max_fanout = 64 *) reg held;
     initial begin
         held = 1'h0;
     end
@@ -15129,7 +15141,7 @@ module fcc_regs__run_rst_dims_k7_668cf05b(clock,d,q);
     output reg  q;
 
     // Update code (custom)
-    (* keep = "true" *) reg held;
+    (* max_fanout = 64 *) reg held;
     initial begin
         held = 1'h0;
     end
@@ -15150,7 +15162,7 @@ module fcc_regs__run_rst_th_h_k7_668cf05b(clock,d,q);
     output reg  q;
 
     // Update code (custom)
-    (* keep = "true" *) reg held;
+    (* max_fanout = 64 *) reg held;
     initial begin
         held = 1'h0;
     end
@@ -15171,7 +15183,7 @@ module fcc_regs__run_rst_th_v_k7_668cf05b(clock,d,q);
     output reg  q;
 
     // Update code (custom)
-    (* keep = "true" *) reg held;
+    (* max_fanout = 64 *) reg held;
     initial begin
         held = 1'h0;
     end
@@ -15483,6 +15495,8 @@ module fcc_regs__sq_k7_668cf05b(clk,rst,start,start_acc,a,busy,c_lt,c_le);
 
     // Update code (custom)
     // Shift and add: acc += c for every set bit of m, c doubles, m halves.
+    // Only `run` is reset: a start reloads the operands and clears the
+    // sum, so `rst` does not reach their enables.
     reg [15:0] m;
     reg [31:0] c;
     reg [31:0] acc;
@@ -15491,25 +15505,25 @@ module fcc_regs__sq_k7_668cf05b(clk,rst,start,start_acc,a,busy,c_lt,c_le);
         if (rst) begin
             run <= 1'b0;
         end else if (start) begin
-            m <= a;
-            c <= {16'd0, a};
             run <= 1'b1;
-        end else if (run) begin
-            if (m == 16'd0) begin
-                run <= 1'b0;
-            end else begin
-                c <= {c[30:0], 1'b0};
-                m <= {1'b0, m[15:1]};
-            end
+        end else if (run && (m == 16'd0)) begin
+            run <= 1'b0;
         end
     end
     always @(posedge clk) begin
-        if (!rst) begin
-            if (start_acc) begin
-                acc <= 32'd0;
-            end else if (run && (m != 16'd0) && m[0]) begin
-                acc <= acc + c;
-            end
+        if (start) begin
+            m <= a;
+            c <= {16'd0, a};
+        end else if (run && (m != 16'd0)) begin
+            c <= {c[30:0], 1'b0};
+            m <= {1'b0, m[15:1]};
+        end
+    end
+    always @(posedge clk) begin
+        if (start_acc) begin
+            acc <= 32'd0;
+        end else if (run && (m != 16'd0) && m[0]) begin
+            acc <= acc + c;
         end
     end
     always @(*) begin
@@ -18342,9 +18356,9 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
     reg  last_label_valid$d;
     wire  last_label_valid$q;
     reg  last_label_valid$clock;
+    reg  ctr_s1$clock;
     reg  [32:0] ctr_s1$d;
     wire  [32:0] ctr_s1$q;
-    reg  ctr_s1$clock;
     reg  [32:0] ctr_tree$0$d;
     wire  [32:0] ctr_tree$0$q;
     reg  ctr_tree$0$clock;
@@ -18357,9 +18371,9 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
     reg  [32:0] ctr_tree$3$d;
     wire  [32:0] ctr_tree$3$q;
     reg  ctr_tree$3$clock;
+    reg  ctr_sm$clock;
     reg  [32:0] ctr_sm$d;
     wire  [32:0] ctr_sm$q;
-    reg  ctr_sm$clock;
     reg  [32:0] ctr_sm1$d;
     wire  [32:0] ctr_sm1$q;
     reg  ctr_sm1$clock;
@@ -19086,9 +19100,9 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
     reg  first_sm3$20$d;
     wire  first_sm3$20$q;
     reg  first_sm3$20$clock;
+    reg  rec_push_q$clock;
     reg  rec_push_q$d;
     wire  rec_push_q$q;
-    reg  rec_push_q$clock;
     reg  credit_drop_q$d;
     wire  credit_drop_q$q;
     reg  credit_drop_q$clock;
@@ -19163,9 +19177,9 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
         .clock(last_label_valid$clock)
     );
     fcc_sort_net__filter__ctr_s1_k7_668cf05b ctr_s1(
+        .clock(ctr_s1$clock),
         .d(ctr_s1$d),
-        .q(ctr_s1$q),
-        .clock(ctr_s1$clock)
+        .q(ctr_s1$q)
     );
     fcc_sort_net__filter__ctr_tree__0_k7_668cf05b ctr_tree$0(
         .d(ctr_tree$0$d),
@@ -19188,9 +19202,9 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
         .clock(ctr_tree$3$clock)
     );
     fcc_sort_net__filter__ctr_sm_k7_668cf05b ctr_sm(
+        .clock(ctr_sm$clock),
         .d(ctr_sm$d),
-        .q(ctr_sm$q),
-        .clock(ctr_sm$clock)
+        .q(ctr_sm$q)
     );
     fcc_sort_net__filter__ctr_sm1_k7_668cf05b ctr_sm1(
         .d(ctr_sm1$d),
@@ -20179,9 +20193,9 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
         .clock(first_sm3$20$clock)
     );
     fcc_sort_net__filter__rec_push_q_k7_668cf05b rec_push_q(
+        .clock(rec_push_q$clock),
         .d(rec_push_q$d),
-        .q(rec_push_q$q),
-        .clock(rec_push_q$clock)
+        .q(rec_push_q$q)
     );
     fcc_sort_net__filter__credit_drop_q_k7_668cf05b credit_drop_q(
         .d(credit_drop_q$d),
@@ -20888,41 +20902,45 @@ module fcc_sort_net__filter__credit_drop_q_k7_668cf05b(d,q,clock);
 endmodule // fcc_sort_net__filter__credit_drop_q_k7_668cf05b
 
 
-module fcc_sort_net__filter__ctr_s1_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__ctr_s1_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [32:0] d;
     output reg  [32:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [32:0] held;
     initial begin
-       q = 33'h0;
+        held = 33'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__ctr_s1_k7_668cf05b
 
 
-module fcc_sort_net__filter__ctr_sm_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__ctr_sm_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [32:0] d;
     output reg  [32:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [32:0] held;
     initial begin
-       q = 33'h0;
+        held = 33'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__ctr_sm_k7_668cf05b
 
 
@@ -42494,195 +42512,195 @@ module fcc_sort_net__filter__min_tree_k7_668cf05b(clk,hit$0,hit$1,hit$2,hit$3,hi
     localparam  all_ones = 16'hffff;
 
     // Stub signals
+    reg  node$0$clock;
     reg  [15:0] node$0$d;
     wire  [15:0] node$0$q;
-    reg  node$0$clock;
+    reg  node$1$clock;
     reg  [15:0] node$1$d;
     wire  [15:0] node$1$q;
-    reg  node$1$clock;
+    reg  node$2$clock;
     reg  [15:0] node$2$d;
     wire  [15:0] node$2$q;
-    reg  node$2$clock;
+    reg  node$3$clock;
     reg  [15:0] node$3$d;
     wire  [15:0] node$3$q;
-    reg  node$3$clock;
+    reg  node$4$clock;
     reg  [15:0] node$4$d;
     wire  [15:0] node$4$q;
-    reg  node$4$clock;
+    reg  node$5$clock;
     reg  [15:0] node$5$d;
     wire  [15:0] node$5$q;
-    reg  node$5$clock;
+    reg  node$6$clock;
     reg  [15:0] node$6$d;
     wire  [15:0] node$6$q;
-    reg  node$6$clock;
+    reg  node$7$clock;
     reg  [15:0] node$7$d;
     wire  [15:0] node$7$q;
-    reg  node$7$clock;
+    reg  node$8$clock;
     reg  [15:0] node$8$d;
     wire  [15:0] node$8$q;
-    reg  node$8$clock;
+    reg  node$9$clock;
     reg  [15:0] node$9$d;
     wire  [15:0] node$9$q;
-    reg  node$9$clock;
+    reg  node$10$clock;
     reg  [15:0] node$10$d;
     wire  [15:0] node$10$q;
-    reg  node$10$clock;
+    reg  node$11$clock;
     reg  [15:0] node$11$d;
     wire  [15:0] node$11$q;
-    reg  node$11$clock;
+    reg  node$12$clock;
     reg  [15:0] node$12$d;
     wire  [15:0] node$12$q;
-    reg  node$12$clock;
+    reg  node$13$clock;
     reg  [15:0] node$13$d;
     wire  [15:0] node$13$q;
-    reg  node$13$clock;
+    reg  node$14$clock;
     reg  [15:0] node$14$d;
     wire  [15:0] node$14$q;
-    reg  node$14$clock;
+    reg  node$15$clock;
     reg  [15:0] node$15$d;
     wire  [15:0] node$15$q;
-    reg  node$15$clock;
+    reg  node$16$clock;
     reg  [15:0] node$16$d;
     wire  [15:0] node$16$q;
-    reg  node$16$clock;
+    reg  node$17$clock;
     reg  [15:0] node$17$d;
     wire  [15:0] node$17$q;
-    reg  node$17$clock;
+    reg  node$18$clock;
     reg  [15:0] node$18$d;
     wire  [15:0] node$18$q;
-    reg  node$18$clock;
+    reg  node$19$clock;
     reg  [15:0] node$19$d;
     wire  [15:0] node$19$q;
-    reg  node$19$clock;
+    reg  node$20$clock;
     reg  [15:0] node$20$d;
     wire  [15:0] node$20$q;
-    reg  node$20$clock;
+    reg  node$21$clock;
     reg  [15:0] node$21$d;
     wire  [15:0] node$21$q;
-    reg  node$21$clock;
+    reg  node$22$clock;
     reg  [15:0] node$22$d;
     wire  [15:0] node$22$q;
-    reg  node$22$clock;
+    reg  node$23$clock;
     reg  [15:0] node$23$d;
     wire  [15:0] node$23$q;
-    reg  node$23$clock;
+    reg  node$24$clock;
     reg  [15:0] node$24$d;
     wire  [15:0] node$24$q;
-    reg  node$24$clock;
+    reg  node$25$clock;
     reg  [15:0] node$25$d;
     wire  [15:0] node$25$q;
-    reg  node$25$clock;
+    reg  node$26$clock;
     reg  [15:0] node$26$d;
     wire  [15:0] node$26$q;
-    reg  node$26$clock;
+    reg  node$27$clock;
     reg  [15:0] node$27$d;
     wire  [15:0] node$27$q;
-    reg  node$27$clock;
+    reg  node$28$clock;
     reg  [15:0] node$28$d;
     wire  [15:0] node$28$q;
-    reg  node$28$clock;
+    reg  node$29$clock;
     reg  [15:0] node$29$d;
     wire  [15:0] node$29$q;
-    reg  node$29$clock;
+    reg  node$30$clock;
     reg  [15:0] node$30$d;
     wire  [15:0] node$30$q;
-    reg  node$30$clock;
+    reg  node$31$clock;
     reg  [15:0] node$31$d;
     wire  [15:0] node$31$q;
-    reg  node$31$clock;
+    reg  node$32$clock;
     reg  [15:0] node$32$d;
     wire  [15:0] node$32$q;
-    reg  node$32$clock;
+    reg  node$33$clock;
     reg  [15:0] node$33$d;
     wire  [15:0] node$33$q;
-    reg  node$33$clock;
+    reg  node$34$clock;
     reg  [15:0] node$34$d;
     wire  [15:0] node$34$q;
-    reg  node$34$clock;
+    reg  node$35$clock;
     reg  [15:0] node$35$d;
     wire  [15:0] node$35$q;
-    reg  node$35$clock;
+    reg  node$36$clock;
     reg  [15:0] node$36$d;
     wire  [15:0] node$36$q;
-    reg  node$36$clock;
+    reg  node$37$clock;
     reg  [15:0] node$37$d;
     wire  [15:0] node$37$q;
-    reg  node$37$clock;
+    reg  node$38$clock;
     reg  [15:0] node$38$d;
     wire  [15:0] node$38$q;
-    reg  node$38$clock;
+    reg  node$39$clock;
     reg  [15:0] node$39$d;
     wire  [15:0] node$39$q;
-    reg  node$39$clock;
+    reg  node$40$clock;
     reg  [15:0] node$40$d;
     wire  [15:0] node$40$q;
-    reg  node$40$clock;
+    reg  node$41$clock;
     reg  [15:0] node$41$d;
     wire  [15:0] node$41$q;
-    reg  node$41$clock;
+    reg  node$42$clock;
     reg  [15:0] node$42$d;
     wire  [15:0] node$42$q;
-    reg  node$42$clock;
+    reg  node$43$clock;
     reg  [15:0] node$43$d;
     wire  [15:0] node$43$q;
-    reg  node$43$clock;
+    reg  node$44$clock;
     reg  [15:0] node$44$d;
     wire  [15:0] node$44$q;
-    reg  node$44$clock;
+    reg  node$45$clock;
     reg  [15:0] node$45$d;
     wire  [15:0] node$45$q;
-    reg  node$45$clock;
+    reg  node$46$clock;
     reg  [15:0] node$46$d;
     wire  [15:0] node$46$q;
-    reg  node$46$clock;
+    reg  node$47$clock;
     reg  [15:0] node$47$d;
     wire  [15:0] node$47$q;
-    reg  node$47$clock;
+    reg  node$48$clock;
     reg  [15:0] node$48$d;
     wire  [15:0] node$48$q;
-    reg  node$48$clock;
+    reg  node$49$clock;
     reg  [15:0] node$49$d;
     wire  [15:0] node$49$q;
-    reg  node$49$clock;
+    reg  node$50$clock;
     reg  [15:0] node$50$d;
     wire  [15:0] node$50$q;
-    reg  node$50$clock;
+    reg  node$51$clock;
     reg  [15:0] node$51$d;
     wire  [15:0] node$51$q;
-    reg  node$51$clock;
+    reg  node$52$clock;
     reg  [15:0] node$52$d;
     wire  [15:0] node$52$q;
-    reg  node$52$clock;
+    reg  node$53$clock;
     reg  [15:0] node$53$d;
     wire  [15:0] node$53$q;
-    reg  node$53$clock;
+    reg  node$54$clock;
     reg  [15:0] node$54$d;
     wire  [15:0] node$54$q;
-    reg  node$54$clock;
+    reg  node$55$clock;
     reg  [15:0] node$55$d;
     wire  [15:0] node$55$q;
-    reg  node$55$clock;
+    reg  node$56$clock;
     reg  [15:0] node$56$d;
     wire  [15:0] node$56$q;
-    reg  node$56$clock;
+    reg  node$57$clock;
     reg  [15:0] node$57$d;
     wire  [15:0] node$57$q;
-    reg  node$57$clock;
+    reg  node$58$clock;
     reg  [15:0] node$58$d;
     wire  [15:0] node$58$q;
-    reg  node$58$clock;
+    reg  node$59$clock;
     reg  [15:0] node$59$d;
     wire  [15:0] node$59$q;
-    reg  node$59$clock;
+    reg  node$60$clock;
     reg  [15:0] node$60$d;
     wire  [15:0] node$60$q;
-    reg  node$60$clock;
+    reg  node$61$clock;
     reg  [15:0] node$61$d;
     wire  [15:0] node$61$q;
-    reg  node$61$clock;
+    reg  node$62$clock;
     reg  [15:0] node$62$d;
     wire  [15:0] node$62$q;
-    reg  node$62$clock;
     reg  flagged$0$d;
     wire  flagged$0$q;
     reg  flagged$0$clock;
@@ -43001,319 +43019,319 @@ module fcc_sort_net__filter__min_tree_k7_668cf05b(clk,hit$0,hit$1,hit$2,hit$3,hi
 
     // Sub module instances
     fcc_sort_net__filter__min_tree__node__0_k7_668cf05b node$0(
+        .clock(node$0$clock),
         .d(node$0$d),
-        .q(node$0$q),
-        .clock(node$0$clock)
+        .q(node$0$q)
     );
     fcc_sort_net__filter__min_tree__node__1_k7_668cf05b node$1(
+        .clock(node$1$clock),
         .d(node$1$d),
-        .q(node$1$q),
-        .clock(node$1$clock)
+        .q(node$1$q)
     );
     fcc_sort_net__filter__min_tree__node__2_k7_668cf05b node$2(
+        .clock(node$2$clock),
         .d(node$2$d),
-        .q(node$2$q),
-        .clock(node$2$clock)
+        .q(node$2$q)
     );
     fcc_sort_net__filter__min_tree__node__3_k7_668cf05b node$3(
+        .clock(node$3$clock),
         .d(node$3$d),
-        .q(node$3$q),
-        .clock(node$3$clock)
+        .q(node$3$q)
     );
     fcc_sort_net__filter__min_tree__node__4_k7_668cf05b node$4(
+        .clock(node$4$clock),
         .d(node$4$d),
-        .q(node$4$q),
-        .clock(node$4$clock)
+        .q(node$4$q)
     );
     fcc_sort_net__filter__min_tree__node__5_k7_668cf05b node$5(
+        .clock(node$5$clock),
         .d(node$5$d),
-        .q(node$5$q),
-        .clock(node$5$clock)
+        .q(node$5$q)
     );
     fcc_sort_net__filter__min_tree__node__6_k7_668cf05b node$6(
+        .clock(node$6$clock),
         .d(node$6$d),
-        .q(node$6$q),
-        .clock(node$6$clock)
+        .q(node$6$q)
     );
     fcc_sort_net__filter__min_tree__node__7_k7_668cf05b node$7(
+        .clock(node$7$clock),
         .d(node$7$d),
-        .q(node$7$q),
-        .clock(node$7$clock)
+        .q(node$7$q)
     );
     fcc_sort_net__filter__min_tree__node__8_k7_668cf05b node$8(
+        .clock(node$8$clock),
         .d(node$8$d),
-        .q(node$8$q),
-        .clock(node$8$clock)
+        .q(node$8$q)
     );
     fcc_sort_net__filter__min_tree__node__9_k7_668cf05b node$9(
+        .clock(node$9$clock),
         .d(node$9$d),
-        .q(node$9$q),
-        .clock(node$9$clock)
+        .q(node$9$q)
     );
     fcc_sort_net__filter__min_tree__node__10_k7_668cf05b node$10(
+        .clock(node$10$clock),
         .d(node$10$d),
-        .q(node$10$q),
-        .clock(node$10$clock)
+        .q(node$10$q)
     );
     fcc_sort_net__filter__min_tree__node__11_k7_668cf05b node$11(
+        .clock(node$11$clock),
         .d(node$11$d),
-        .q(node$11$q),
-        .clock(node$11$clock)
+        .q(node$11$q)
     );
     fcc_sort_net__filter__min_tree__node__12_k7_668cf05b node$12(
+        .clock(node$12$clock),
         .d(node$12$d),
-        .q(node$12$q),
-        .clock(node$12$clock)
+        .q(node$12$q)
     );
     fcc_sort_net__filter__min_tree__node__13_k7_668cf05b node$13(
+        .clock(node$13$clock),
         .d(node$13$d),
-        .q(node$13$q),
-        .clock(node$13$clock)
+        .q(node$13$q)
     );
     fcc_sort_net__filter__min_tree__node__14_k7_668cf05b node$14(
+        .clock(node$14$clock),
         .d(node$14$d),
-        .q(node$14$q),
-        .clock(node$14$clock)
+        .q(node$14$q)
     );
     fcc_sort_net__filter__min_tree__node__15_k7_668cf05b node$15(
+        .clock(node$15$clock),
         .d(node$15$d),
-        .q(node$15$q),
-        .clock(node$15$clock)
+        .q(node$15$q)
     );
     fcc_sort_net__filter__min_tree__node__16_k7_668cf05b node$16(
+        .clock(node$16$clock),
         .d(node$16$d),
-        .q(node$16$q),
-        .clock(node$16$clock)
+        .q(node$16$q)
     );
     fcc_sort_net__filter__min_tree__node__17_k7_668cf05b node$17(
+        .clock(node$17$clock),
         .d(node$17$d),
-        .q(node$17$q),
-        .clock(node$17$clock)
+        .q(node$17$q)
     );
     fcc_sort_net__filter__min_tree__node__18_k7_668cf05b node$18(
+        .clock(node$18$clock),
         .d(node$18$d),
-        .q(node$18$q),
-        .clock(node$18$clock)
+        .q(node$18$q)
     );
     fcc_sort_net__filter__min_tree__node__19_k7_668cf05b node$19(
+        .clock(node$19$clock),
         .d(node$19$d),
-        .q(node$19$q),
-        .clock(node$19$clock)
+        .q(node$19$q)
     );
     fcc_sort_net__filter__min_tree__node__20_k7_668cf05b node$20(
+        .clock(node$20$clock),
         .d(node$20$d),
-        .q(node$20$q),
-        .clock(node$20$clock)
+        .q(node$20$q)
     );
     fcc_sort_net__filter__min_tree__node__21_k7_668cf05b node$21(
+        .clock(node$21$clock),
         .d(node$21$d),
-        .q(node$21$q),
-        .clock(node$21$clock)
+        .q(node$21$q)
     );
     fcc_sort_net__filter__min_tree__node__22_k7_668cf05b node$22(
+        .clock(node$22$clock),
         .d(node$22$d),
-        .q(node$22$q),
-        .clock(node$22$clock)
+        .q(node$22$q)
     );
     fcc_sort_net__filter__min_tree__node__23_k7_668cf05b node$23(
+        .clock(node$23$clock),
         .d(node$23$d),
-        .q(node$23$q),
-        .clock(node$23$clock)
+        .q(node$23$q)
     );
     fcc_sort_net__filter__min_tree__node__24_k7_668cf05b node$24(
+        .clock(node$24$clock),
         .d(node$24$d),
-        .q(node$24$q),
-        .clock(node$24$clock)
+        .q(node$24$q)
     );
     fcc_sort_net__filter__min_tree__node__25_k7_668cf05b node$25(
+        .clock(node$25$clock),
         .d(node$25$d),
-        .q(node$25$q),
-        .clock(node$25$clock)
+        .q(node$25$q)
     );
     fcc_sort_net__filter__min_tree__node__26_k7_668cf05b node$26(
+        .clock(node$26$clock),
         .d(node$26$d),
-        .q(node$26$q),
-        .clock(node$26$clock)
+        .q(node$26$q)
     );
     fcc_sort_net__filter__min_tree__node__27_k7_668cf05b node$27(
+        .clock(node$27$clock),
         .d(node$27$d),
-        .q(node$27$q),
-        .clock(node$27$clock)
+        .q(node$27$q)
     );
     fcc_sort_net__filter__min_tree__node__28_k7_668cf05b node$28(
+        .clock(node$28$clock),
         .d(node$28$d),
-        .q(node$28$q),
-        .clock(node$28$clock)
+        .q(node$28$q)
     );
     fcc_sort_net__filter__min_tree__node__29_k7_668cf05b node$29(
+        .clock(node$29$clock),
         .d(node$29$d),
-        .q(node$29$q),
-        .clock(node$29$clock)
+        .q(node$29$q)
     );
     fcc_sort_net__filter__min_tree__node__30_k7_668cf05b node$30(
+        .clock(node$30$clock),
         .d(node$30$d),
-        .q(node$30$q),
-        .clock(node$30$clock)
+        .q(node$30$q)
     );
     fcc_sort_net__filter__min_tree__node__31_k7_668cf05b node$31(
+        .clock(node$31$clock),
         .d(node$31$d),
-        .q(node$31$q),
-        .clock(node$31$clock)
+        .q(node$31$q)
     );
     fcc_sort_net__filter__min_tree__node__32_k7_668cf05b node$32(
+        .clock(node$32$clock),
         .d(node$32$d),
-        .q(node$32$q),
-        .clock(node$32$clock)
+        .q(node$32$q)
     );
     fcc_sort_net__filter__min_tree__node__33_k7_668cf05b node$33(
+        .clock(node$33$clock),
         .d(node$33$d),
-        .q(node$33$q),
-        .clock(node$33$clock)
+        .q(node$33$q)
     );
     fcc_sort_net__filter__min_tree__node__34_k7_668cf05b node$34(
+        .clock(node$34$clock),
         .d(node$34$d),
-        .q(node$34$q),
-        .clock(node$34$clock)
+        .q(node$34$q)
     );
     fcc_sort_net__filter__min_tree__node__35_k7_668cf05b node$35(
+        .clock(node$35$clock),
         .d(node$35$d),
-        .q(node$35$q),
-        .clock(node$35$clock)
+        .q(node$35$q)
     );
     fcc_sort_net__filter__min_tree__node__36_k7_668cf05b node$36(
+        .clock(node$36$clock),
         .d(node$36$d),
-        .q(node$36$q),
-        .clock(node$36$clock)
+        .q(node$36$q)
     );
     fcc_sort_net__filter__min_tree__node__37_k7_668cf05b node$37(
+        .clock(node$37$clock),
         .d(node$37$d),
-        .q(node$37$q),
-        .clock(node$37$clock)
+        .q(node$37$q)
     );
     fcc_sort_net__filter__min_tree__node__38_k7_668cf05b node$38(
+        .clock(node$38$clock),
         .d(node$38$d),
-        .q(node$38$q),
-        .clock(node$38$clock)
+        .q(node$38$q)
     );
     fcc_sort_net__filter__min_tree__node__39_k7_668cf05b node$39(
+        .clock(node$39$clock),
         .d(node$39$d),
-        .q(node$39$q),
-        .clock(node$39$clock)
+        .q(node$39$q)
     );
     fcc_sort_net__filter__min_tree__node__40_k7_668cf05b node$40(
+        .clock(node$40$clock),
         .d(node$40$d),
-        .q(node$40$q),
-        .clock(node$40$clock)
+        .q(node$40$q)
     );
     fcc_sort_net__filter__min_tree__node__41_k7_668cf05b node$41(
+        .clock(node$41$clock),
         .d(node$41$d),
-        .q(node$41$q),
-        .clock(node$41$clock)
+        .q(node$41$q)
     );
     fcc_sort_net__filter__min_tree__node__42_k7_668cf05b node$42(
+        .clock(node$42$clock),
         .d(node$42$d),
-        .q(node$42$q),
-        .clock(node$42$clock)
+        .q(node$42$q)
     );
     fcc_sort_net__filter__min_tree__node__43_k7_668cf05b node$43(
+        .clock(node$43$clock),
         .d(node$43$d),
-        .q(node$43$q),
-        .clock(node$43$clock)
+        .q(node$43$q)
     );
     fcc_sort_net__filter__min_tree__node__44_k7_668cf05b node$44(
+        .clock(node$44$clock),
         .d(node$44$d),
-        .q(node$44$q),
-        .clock(node$44$clock)
+        .q(node$44$q)
     );
     fcc_sort_net__filter__min_tree__node__45_k7_668cf05b node$45(
+        .clock(node$45$clock),
         .d(node$45$d),
-        .q(node$45$q),
-        .clock(node$45$clock)
+        .q(node$45$q)
     );
     fcc_sort_net__filter__min_tree__node__46_k7_668cf05b node$46(
+        .clock(node$46$clock),
         .d(node$46$d),
-        .q(node$46$q),
-        .clock(node$46$clock)
+        .q(node$46$q)
     );
     fcc_sort_net__filter__min_tree__node__47_k7_668cf05b node$47(
+        .clock(node$47$clock),
         .d(node$47$d),
-        .q(node$47$q),
-        .clock(node$47$clock)
+        .q(node$47$q)
     );
     fcc_sort_net__filter__min_tree__node__48_k7_668cf05b node$48(
+        .clock(node$48$clock),
         .d(node$48$d),
-        .q(node$48$q),
-        .clock(node$48$clock)
+        .q(node$48$q)
     );
     fcc_sort_net__filter__min_tree__node__49_k7_668cf05b node$49(
+        .clock(node$49$clock),
         .d(node$49$d),
-        .q(node$49$q),
-        .clock(node$49$clock)
+        .q(node$49$q)
     );
     fcc_sort_net__filter__min_tree__node__50_k7_668cf05b node$50(
+        .clock(node$50$clock),
         .d(node$50$d),
-        .q(node$50$q),
-        .clock(node$50$clock)
+        .q(node$50$q)
     );
     fcc_sort_net__filter__min_tree__node__51_k7_668cf05b node$51(
+        .clock(node$51$clock),
         .d(node$51$d),
-        .q(node$51$q),
-        .clock(node$51$clock)
+        .q(node$51$q)
     );
     fcc_sort_net__filter__min_tree__node__52_k7_668cf05b node$52(
+        .clock(node$52$clock),
         .d(node$52$d),
-        .q(node$52$q),
-        .clock(node$52$clock)
+        .q(node$52$q)
     );
     fcc_sort_net__filter__min_tree__node__53_k7_668cf05b node$53(
+        .clock(node$53$clock),
         .d(node$53$d),
-        .q(node$53$q),
-        .clock(node$53$clock)
+        .q(node$53$q)
     );
     fcc_sort_net__filter__min_tree__node__54_k7_668cf05b node$54(
+        .clock(node$54$clock),
         .d(node$54$d),
-        .q(node$54$q),
-        .clock(node$54$clock)
+        .q(node$54$q)
     );
     fcc_sort_net__filter__min_tree__node__55_k7_668cf05b node$55(
+        .clock(node$55$clock),
         .d(node$55$d),
-        .q(node$55$q),
-        .clock(node$55$clock)
+        .q(node$55$q)
     );
     fcc_sort_net__filter__min_tree__node__56_k7_668cf05b node$56(
+        .clock(node$56$clock),
         .d(node$56$d),
-        .q(node$56$q),
-        .clock(node$56$clock)
+        .q(node$56$q)
     );
     fcc_sort_net__filter__min_tree__node__57_k7_668cf05b node$57(
+        .clock(node$57$clock),
         .d(node$57$d),
-        .q(node$57$q),
-        .clock(node$57$clock)
+        .q(node$57$q)
     );
     fcc_sort_net__filter__min_tree__node__58_k7_668cf05b node$58(
+        .clock(node$58$clock),
         .d(node$58$d),
-        .q(node$58$q),
-        .clock(node$58$clock)
+        .q(node$58$q)
     );
     fcc_sort_net__filter__min_tree__node__59_k7_668cf05b node$59(
+        .clock(node$59$clock),
         .d(node$59$d),
-        .q(node$59$q),
-        .clock(node$59$clock)
+        .q(node$59$q)
     );
     fcc_sort_net__filter__min_tree__node__60_k7_668cf05b node$60(
+        .clock(node$60$clock),
         .d(node$60$d),
-        .q(node$60$q),
-        .clock(node$60$clock)
+        .q(node$60$q)
     );
     fcc_sort_net__filter__min_tree__node__61_k7_668cf05b node$61(
+        .clock(node$61$clock),
         .d(node$61$d),
-        .q(node$61$q),
-        .clock(node$61$clock)
+        .q(node$61$q)
     );
     fcc_sort_net__filter__min_tree__node__62_k7_668cf05b node$62(
+        .clock(node$62$clock),
         .d(node$62$d),
-        .q(node$62$q),
-        .clock(node$62$clock)
+        .q(node$62$q)
     );
     fcc_sort_net__filter__min_tree__flagged__0_k7_668cf05b flagged$0(
         .d(flagged$0$d),
@@ -45606,1200 +45624,1326 @@ module fcc_sort_net__filter__min_tree__flagged__9_k7_668cf05b(d,q,clock);
 endmodule // fcc_sort_net__filter__min_tree__flagged__9_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__0_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__0_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__0_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__1_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__1_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__1_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__10_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__10_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__10_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__11_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__11_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__11_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__12_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__12_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__12_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__13_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__13_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__13_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__14_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__14_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__14_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__15_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__15_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__15_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__16_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__16_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__16_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__17_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__17_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__17_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__18_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__18_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__18_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__19_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__19_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__19_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__2_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__2_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__2_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__20_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__20_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__20_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__21_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__21_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__21_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__22_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__22_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__22_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__23_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__23_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__23_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__24_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__24_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__24_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__25_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__25_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__25_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__26_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__26_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__26_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__27_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__27_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__27_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__28_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__28_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__28_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__29_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__29_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__29_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__3_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__3_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__3_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__30_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__30_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__30_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__31_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__31_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__31_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__32_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__32_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__32_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__33_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__33_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__33_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__34_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__34_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__34_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__35_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__35_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__35_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__36_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__36_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__36_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__37_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__37_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__37_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__38_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__38_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__38_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__39_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__39_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__39_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__4_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__4_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__4_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__40_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__40_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__40_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__41_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__41_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__41_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__42_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__42_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__42_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__43_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__43_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__43_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__44_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__44_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__44_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__45_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__45_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__45_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__46_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__46_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__46_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__47_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__47_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__47_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__48_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__48_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__48_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__49_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__49_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__49_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__5_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__5_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__5_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__50_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__50_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__50_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__51_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__51_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__51_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__52_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__52_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__52_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__53_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__53_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__53_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__54_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__54_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__54_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__55_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__55_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__55_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__56_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__56_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__56_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__57_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__57_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__57_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__58_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__58_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__58_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__59_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__59_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__59_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__6_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__6_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__6_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__60_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__60_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__60_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__61_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__61_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__61_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__62_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__62_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__62_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__7_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__7_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__7_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__8_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__8_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__8_k7_668cf05b
 
 
-module fcc_sort_net__filter__min_tree__node__9_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__min_tree__node__9_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [15:0] d;
     output reg  [15:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [15:0] held;
     initial begin
-       q = 16'h0;
+        held = 16'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__min_tree__node__9_k7_668cf05b
 
 
@@ -47392,22 +47536,24 @@ module fcc_sort_net__filter__min_tree__winner__9_k7_668cf05b(d,q,clock);
 endmodule // fcc_sort_net__filter__min_tree__winner__9_k7_668cf05b
 
 
-module fcc_sort_net__filter__rec_push_q_k7_668cf05b(d,q,clock);
+module fcc_sort_net__filter__rec_push_q_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  d;
     output reg  q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg held;
     initial begin
-       q = 1'h0;
+        held = 1'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__filter__rec_push_q_k7_668cf05b
 
 
@@ -47909,6 +48055,10 @@ module fcc_sort_net__join_queue_k7_668cf05b(clk,rst,clear,push,din,room,jv,ja,jb
     localparam  zero24 = 24'h0;
 
     // Stub signals
+    reg  push_net$x;
+    wire  push_net$y;
+    reg  take_net$x;
+    wire  take_net$y;
     reg  queue$clk;
     reg  queue$rst;
     reg  queue$push;
@@ -47929,6 +48079,14 @@ module fcc_sort_net__join_queue_k7_668cf05b(clk,rst,clear,push,din,room,jv,ja,jb
     reg  join_count$clock;
 
     // Sub module instances
+    fcc_sort_net__join_queue__push_net_k7_668cf05b push_net(
+        .x(push_net$x),
+        .y(push_net$y)
+    );
+    fcc_sort_net__join_queue__take_net_k7_668cf05b take_net(
+        .x(take_net$x),
+        .y(take_net$y)
+    );
     fcc_sort_net__join_queue__queue_k7_668cf05b queue(
         .clk(queue$clk),
         .rst(queue$rst),
@@ -47962,12 +48120,14 @@ module fcc_sort_net__join_queue_k7_668cf05b(clk,rst,clear,push,din,room,jv,ja,jb
         join_count$d = join_count$q;
         queue$clk = clk;
         queue$rst = rst;
-        queue$push = push;
+        push_net$x = push;
+        take_net$x = jtake;
+        queue$push = push_net$y;
         queue$din = din;
-        queue$take = jtake;
+        queue$take = take_net$y;
         nearly_full$d = queue$level >= high_level;
         room = ~nearly_full$q;
-        if (push) begin
+        if (push_net$y) begin
             join_count$d = join_count$q + one24;
         end
         if (clear | rst) begin
@@ -48023,6 +48183,21 @@ module fcc_sort_net__join_queue__nearly_full_k7_668cf05b(d,q,clock);
     end
 
 endmodule // fcc_sort_net__join_queue__nearly_full_k7_668cf05b
+
+
+module fcc_sort_net__join_queue__push_net_k7_668cf05b(x,y);
+
+    // Module arguments
+    input wire  x;
+    output reg  y;
+
+    // Update code (custom)
+    (* max_fanout = 64 *) wire net;
+    assign net = x;
+    always @(*) begin
+        y = net;
+    end
+endmodule // fcc_sort_net__join_queue__push_net_k7_668cf05b
 
 
 module fcc_sort_net__join_queue__queue_k7_668cf05b(clk,rst,push,din,valid,dout,take,level,ram_re,ram_raddr,ram_we,ram_waddr);
@@ -48312,6 +48487,21 @@ module fcc_sort_net__join_queue__queue__wp_k7_668cf05b(d,q,clock);
 endmodule // fcc_sort_net__join_queue__queue__wp_k7_668cf05b
 
 
+module fcc_sort_net__join_queue__take_net_k7_668cf05b(x,y);
+
+    // Module arguments
+    input wire  x;
+    output reg  y;
+
+    // Update code (custom)
+    (* max_fanout = 64 *) wire net;
+    assign net = x;
+    always @(*) begin
+        y = net;
+    end
+endmodule // fcc_sort_net__join_queue__take_net_k7_668cf05b
+
+
 module fcc_sort_net__join_queue_rst_k7_668cf05b(clock,d,q);
 
     // Module arguments
@@ -48415,9 +48605,9 @@ module fcc_sort_net__serializer_k7_668cf05b(clk,rst,head_valid,head,head_rep$0,h
     localparam SerPhase$Ring = 2;
 
     // Stub signals
+    reg  loaded$clock;
     reg  loaded$d;
     wire  loaded$q;
-    reg  loaded$clock;
     reg  [1:0] phase$d;
     wire  [1:0] phase$q;
     reg  phase$clock;
@@ -48737,9 +48927,9 @@ module fcc_sort_net__serializer_k7_668cf05b(clk,rst,head_valid,head,head_rep$0,h
 
     // Sub module instances
     fcc_sort_net__serializer__loaded_k7_668cf05b loaded(
+        .clock(loaded$clock),
         .d(loaded$d),
-        .q(loaded$q),
-        .clock(loaded$clock)
+        .q(loaded$q)
     );
     fcc_sort_net__serializer__phase_k7_668cf05b phase(
         .d(phase$d),
@@ -49673,22 +49863,24 @@ module fcc_sort_net__serializer__last_done_q_k7_668cf05b(d,q,clock);
 endmodule // fcc_sort_net__serializer__last_done_q_k7_668cf05b
 
 
-module fcc_sort_net__serializer__loaded_k7_668cf05b(d,q,clock);
+module fcc_sort_net__serializer__loaded_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  d;
     output reg  q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg held;
     initial begin
-       q = 1'h0;
+        held = 1'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__serializer__loaded_k7_668cf05b
 
 
@@ -51416,9 +51608,9 @@ module fcc_window_k7_668cf05b(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$
     reg  [131:0] w2$d;
     wire  [131:0] w2$q;
     reg  w2$clock;
+    reg  w3$clock;
     reg  [131:0] w3$d;
     wire  [131:0] w3$q;
-    reg  w3$clock;
     reg  shift_en$0$clock;
     reg  shift_en$0$d;
     wire  shift_en$0$q;
@@ -52319,9 +52511,9 @@ module fcc_window_k7_668cf05b(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$
         .clock(w2$clock)
     );
     fcc_window__w3_k7_668cf05b w3(
+        .clock(w3$clock),
         .d(w3$d),
-        .q(w3$q),
-        .clock(w3$clock)
+        .q(w3$q)
     );
     fcc_window__shift_en__0_k7_668cf05b shift_en$0(
         .clock(shift_en$0$clock),
@@ -56067,22 +56259,24 @@ module fcc_window__w2_k7_668cf05b(d,q,clock);
 endmodule // fcc_window__w2_k7_668cf05b
 
 
-module fcc_window__w3_k7_668cf05b(d,q,clock);
+module fcc_window__w3_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [131:0] d;
     output reg  [131:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [131:0] held;
     initial begin
-       q = 132'h0;
+        held = 132'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_window__w3_k7_668cf05b
 
 

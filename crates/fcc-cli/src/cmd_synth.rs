@@ -190,16 +190,22 @@ pub fn run(args: &SynthArgs) -> anyhow::Result<()> {
         use fcc_synth::routing::{FANOUT_LIMIT, HOP_LIMIT};
         eprintln!(
             "routing hops (netlist, before placement): at most {} ({} endpoints over {HOP_LIMIT}); \
-             {} nets over {FANOUT_LIMIT} loads",
-            r.worst_hops, r.endpoints_over_limit, r.nets_over_limit
+             {} nets over {FANOUT_LIMIT} loads, {} of them without `max_fanout` (nothing replicates them)",
+            r.worst_hops,
+            r.endpoints_over_limit,
+            r.nets_over_limit,
+            r.unreplicated_over_limit.unwrap_or(r.nets_over_limit)
         );
         for p in &r.worst_paths {
             eprintln!("  {} hops: {} -> {}", p.hops, p.start, p.end);
         }
         eprintln!("highest fanout (clock aside):");
         for n in &r.top_fanout {
+            let mark = n
+                .max_fanout
+                .map_or(String::new(), |m| format!(", max_fanout {m}"));
             eprintln!(
-                "  {:>6} loads  {}  (driven by {})",
+                "  {:>6} loads  {}  (driven by {}{mark})",
                 n.loads, n.net, n.driver
             );
         }

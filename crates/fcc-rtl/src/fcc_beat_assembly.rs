@@ -11,6 +11,7 @@
 use rust_hdl::prelude::*;
 
 use crate::fcc_beat_queue::Beat;
+use crate::fcc_fanout_reg::FccFanoutReg;
 use crate::fcc_slot_mux::{FccSlotMux, OutWord, NEW_LABELS};
 use crate::types::{kb, vec_of};
 
@@ -47,7 +48,7 @@ pub struct FccBeatAssembly {
     slot_mux: Vec<FccSlotMux>,
     run_mux: FccSlotMux,
     /// New labels the head beat has collected, and their values.
-    taken: DFF<Bits<3>>,
+    taken: FccFanoutReg<Bits<3>>,
     collected: Vec<DFF<Bits<16>>>,
     /// The label of the run carried into the head beat.
     carried_run: DFF<Bits<16>>,

@@ -11,6 +11,7 @@
 
 use rust_hdl::prelude::*;
 
+use crate::fcc_fanout_reg::FccFanoutReg;
 use crate::types::{kb, vec_of};
 
 /// A decoded beat. A slot source is 0 (label 0), 1 (the run carried in from
@@ -48,7 +49,7 @@ pub struct FccBeatQueue {
     pub pop: Signal<In, Bit>,
     pub head_valid: Signal<Out, Bit>,
     pub head: Signal<Out, Beat>,
-    head_valid_q: DFF<Bit>,
+    head_valid_q: FccFanoutReg<Bit>,
     head_q: DFF<Beat>,
     entries: Vec<DFF<Beat>>,
     /// Beats in the ring (0 .. 4); `ring_any_q`: it is not 0.

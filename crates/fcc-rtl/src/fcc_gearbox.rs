@@ -19,6 +19,7 @@
 
 use rust_hdl::prelude::*;
 
+use crate::fcc_fanout_reg::FccFanoutReg;
 use crate::types::{kb, vec_of};
 
 /// Entries of the gearbox.
@@ -53,8 +54,8 @@ pub struct FccGearbox {
     second_slot: DFF<Bits<3>>,
     /// `read_slot + 2` and `read_slot + 3`: the slots that refill the front
     /// registers on a pop.
-    third_slot: DFF<Bits<3>>,
-    fourth_slot: DFF<Bits<3>>,
+    third_slot: FccFanoutReg<Bits<3>>,
+    fourth_slot: FccFanoutReg<Bits<3>>,
     write_slot: DFF<Bits<3>>,
     /// The slots at `read_slot` and `second_slot`, kept in step with the ring.
     front_label: DFF<Bits<16>>,

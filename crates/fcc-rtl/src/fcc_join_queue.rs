@@ -6,6 +6,7 @@
 
 use rust_hdl::prelude::*;
 
+use crate::fcc_fanout_net::FccFanoutNet;
 use crate::fcc_fifo::FccFifo;
 use crate::types::{kb, JoinRec};
 
@@ -37,6 +38,10 @@ pub struct FccJoinQueue {
     pub empty: Signal<Out, Bit>,
     /// Joins pushed in this frame.
     pub joins: Signal<Out, Bits<24>>,
+    /// `push` and `jtake` reach every block RAM's write enable and the
+    /// counters' enables: their drivers are replicated by Vivado.
+    push_net: FccFanoutNet<Bit>,
+    take_net: FccFanoutNet<Bit>,
     queue: FccFifo<JoinRec, JQ_BITS, { JQ_BITS + 1 }>,
     nearly_full: DFF<Bit>,
     join_count: DFF<Bits<24>>,
@@ -62,6 +67,8 @@ impl Default for FccJoinQueue {
             jtake: Default::default(),
             empty: Default::default(),
             joins: Default::default(),
+            push_net: Default::default(),
+            take_net: Default::default(),
             queue: FccFifo::default(),
             nearly_full: Default::default(),
             join_count: Default::default(),
@@ -79,12 +86,14 @@ impl Logic for FccJoinQueue {
         dff_setup!(self, clk, nearly_full, join_count);
         self.queue.clk.next = self.clk.val();
         self.queue.rst.next = self.rst.val();
-        self.queue.push.next = self.push.val();
+        self.push_net.x.next = self.push.val();
+        self.take_net.x.next = self.jtake.val();
+        self.queue.push.next = self.push_net.y.val();
         self.queue.din.next = self.din.val();
-        self.queue.take.next = self.jtake.val();
+        self.queue.take.next = self.take_net.y.val();
         self.nearly_full.d.next = self.queue.level.val() >= self.high_level.val();
         self.room.next = !self.nearly_full.q.val();
-        if self.push.val() {
+        if self.push_net.y.val() {
             self.join_count.d.next = self.join_count.q.val() + self.one24.val();
         }
         // Cleared at the end of a read-back and by reset, so that a frame

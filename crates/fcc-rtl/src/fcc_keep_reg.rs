@@ -19,9 +19,6 @@
 
 use rust_hdl::prelude::*;
 
-/// Loads per copy of a reset that Vivado replicates down to.
-pub const RESET_FANOUT: usize = 64;
-
 #[derive(LogicBlock)]
 pub struct FccKeepReg<T: Synth> {
     pub clock: Signal<In, Clock>,

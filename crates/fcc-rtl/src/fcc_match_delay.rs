@@ -9,16 +9,17 @@
 //!
 //! The representatives compared in SM are reset, so that this stage stays a
 //! flip-flop (a shift-register LUT's output is slow). `rst` is that reset one
-//! cycle ahead: each group of `RESET_FANOUT / 16` positions registers its own
-//! copy (`rep_rst`), so no copy drives more than `RESET_FANOUT` loads.
+//! cycle ahead: each group of `MAX_FANOUT / 16` positions registers its own
+//! copy (`rep_rst`), so no copy drives more than `MAX_FANOUT` loads.
 
 use rust_hdl::prelude::*;
 
-use crate::fcc_keep_reg::{FccKeepReg, RESET_FANOUT};
+use crate::fcc_fanout_reg::MAX_FANOUT;
+use crate::fcc_keep_reg::FccKeepReg;
 use crate::types::{kb, vec_of};
 
 /// Positions per reset copy: each resets one 16-bit representative.
-const POSITIONS_PER_RESET: usize = RESET_FANOUT / 16;
+const POSITIONS_PER_RESET: usize = MAX_FANOUT / 16;
 
 #[derive(LogicBlock)]
 pub struct FccMatchDelay {

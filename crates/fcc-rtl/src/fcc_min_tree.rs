@@ -17,6 +17,7 @@
 
 use rust_hdl::prelude::*;
 
+use crate::fcc_fanout_reg::FccFanoutReg;
 use crate::types::{clog2, kb, vec_of};
 
 /// Width of a position: the tree takes at most 64 values.
@@ -32,7 +33,7 @@ pub struct FccMinTree {
     /// Position e is the first flagged one whose value is `min` (beside
     /// `min`; none is when no flag was set).
     pub first: Vec<Signal<Out, Bit>>,
-    node: Vec<DFF<Bits<16>>>,
+    node: Vec<FccFanoutReg<Bits<16>>>,
     flagged: Vec<DFF<Bit>>,
     /// Internal node i takes its left child's value (`left_wins[i - 1]`).
     left_wins: Vec<Signal<Local, Bit>>,

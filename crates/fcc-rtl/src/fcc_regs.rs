@@ -56,6 +56,7 @@
 use fcc_params::FccParams;
 use rust_hdl::prelude::*;
 
+use crate::fcc_fanout_reg::{FccFanoutReg, MAX_FANOUT};
 use crate::fcc_keep_reg::FccKeepReg;
 use crate::fcc_reg_mux::{FccRegMux, MuxSrc, WORD_BITS};
 use crate::fcc_th_square::FccThSquare;
@@ -185,7 +186,7 @@ pub struct FccRegs {
     /// synthesis would merge them).
     ar_word_q: FccKeepReg<Bits<WORD_BITS>>,
     ar_word_hi_q: FccKeepReg<Bits<WORD_BITS>>,
-    ar_pend_q: DFF<Bit>,
+    ar_pend_q: FccFanoutReg<Bit>,
     r_v: DFF<Bit>,
     r_d: DFF<Bits<32>>,
     // Registers.
@@ -442,8 +443,8 @@ impl FccRegs {
             w_clear_frame: Default::default(),
             w_clear_stalls: Default::default(),
             b_v: Default::default(),
-            ar_word_q: Default::default(),
-            ar_word_hi_q: Default::default(),
+            ar_word_q: FccKeepReg::with_max_fanout(MAX_FANOUT),
+            ar_word_hi_q: FccKeepReg::with_max_fanout(MAX_FANOUT),
             ar_pend_q: Default::default(),
             r_v: Default::default(),
             r_d: Default::default(),
@@ -477,11 +478,11 @@ impl FccRegs {
             err_thv: Default::default(),
             err_rows: Default::default(),
             err_cols: Default::default(),
-            run_rst_dims: Default::default(),
-            run_rst_th_h: Default::default(),
-            run_rst_th_v: Default::default(),
-            run_rst_act_h: Default::default(),
-            run_rst_act_v: Default::default(),
+            run_rst_dims: FccKeepReg::with_max_fanout(MAX_FANOUT),
+            run_rst_th_h: FccKeepReg::with_max_fanout(MAX_FANOUT),
+            run_rst_th_v: FccKeepReg::with_max_fanout(MAX_FANOUT),
+            run_rst_act_h: FccKeepReg::with_max_fanout(MAX_FANOUT),
+            run_rst_act_v: FccKeepReg::with_max_fanout(MAX_FANOUT),
             sq: FccThSquare::new(),
             sq_v: Default::default(),
             sq_a: Default::default(),

@@ -39,6 +39,7 @@ use fcc_params::FccParams;
 use rust_hdl::prelude::*;
 
 use crate::fcc_any_or::FccAnyOr;
+use crate::fcc_fanout_reg::FccFanoutReg;
 use crate::fcc_pick::FccPick;
 use crate::fcc_prefix_or::FccPrefixOr;
 use crate::fcc_two_or::FccTwoOr;
@@ -70,7 +71,7 @@ pub struct FccSerializer {
     pub join_rec: Signal<Out, JoinRec>,
     /// The frame's last record has been taken (registered).
     pub last_done: Signal<Out, Bit>,
-    loaded: DFF<Bit>,
+    loaded: FccFanoutReg<Bit>,
     phase: DFF<SerPhase>,
     /// Kept positions not picked yet; the `b` of the join to emit next.
     pending: Vec<DFF<Bit>>,

@@ -30,7 +30,7 @@
 //! `rec` in SM+3.
 //!
 //! Reset: `rst` is the reset one cycle ahead. Every group of reset loads
-//! has its own registered copy (`FccKeepReg`), at most `RESET_FANOUT` loads
+//! has its own registered copy (`FccKeepReg`), at most `MAX_FANOUT` loads
 //! each: `valid_rst` for the centre's valid flags and the record handshake;
 //! for minimum-tree stage i, `tree_rst[2i]` for the centre (33 flip-flops,
 //! reset whole so that the stage stays a flip-flop rather than a shift
@@ -41,6 +41,7 @@ use fcc_params::FccParams;
 use rust_hdl::prelude::*;
 
 use crate::fcc_any_or::FccAnyOr;
+use crate::fcc_fanout_reg::FccFanoutReg;
 use crate::fcc_first_set::FccFirstSet;
 use crate::fcc_group_or::{groups, FccGroupOr};
 use crate::fcc_keep_reg::FccKeepReg;
@@ -97,9 +98,9 @@ pub struct FccSortFilter {
     ctr_s0: Signal<Local, FiltCtr>,
     ring_s0: Signal<Local, RingJoin>,
     // ---- The centre from stage to stage: S1, S2 .. SL, SM, SM+1, SM+2.
-    ctr_s1: DFF<FiltCtr>,
+    ctr_s1: FccFanoutReg<FiltCtr>,
     ctr_tree: Vec<DFF<FiltCtr>>,
-    ctr_sm: DFF<FiltCtr>,
+    ctr_sm: FccFanoutReg<FiltCtr>,
     ctr_sm1: DFF<FiltCtr>,
     ctr_sm2: DFF<FiltCtr>,
     ring_s1: DFF<RingJoin>,
@@ -137,7 +138,7 @@ pub struct FccSortFilter {
     need_rec: Signal<Local, Bit>,
     keep_sm3: Vec<DFF<Bit>>,
     first_sm3: Vec<DFF<Bit>>,
-    rec_push_q: DFF<Bit>,
+    rec_push_q: FccFanoutReg<Bit>,
     credit_drop_q: DFF<Bit>,
     rec_q: DFF<CtrRec>,
     // ---- Reset copies (see the module doc).

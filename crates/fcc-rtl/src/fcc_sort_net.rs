@@ -27,7 +27,7 @@
 //! Reset: `rst` is the reset one cycle ahead. The centre buffer, the
 //! serializer and the join queue each have their own registered copy of it
 //! (`FccKeepReg`); the filter, whose reset has the most loads, takes `rst`
-//! itself and registers one copy per group of at most `RESET_FANOUT` loads.
+//! itself and registers one copy per group of at most `MAX_FANOUT` loads.
 //! Every sub-block is in reset in the cycle after `rst`.
 //!
 //! A record taken and a centre that needed no record return their input
@@ -37,8 +37,9 @@ use fcc_params::FccParams;
 use rust_hdl::prelude::*;
 
 use crate::fcc_centre_buf::FccCentreBuf;
+use crate::fcc_fanout_reg::MAX_FANOUT;
 use crate::fcc_join_queue::FccJoinQueue;
-use crate::fcc_keep_reg::{FccKeepReg, RESET_FANOUT};
+use crate::fcc_keep_reg::FccKeepReg;
 use crate::fcc_serializer::FccSerializer;
 use crate::fcc_sort_filter::FccSortFilter;
 use crate::types::{vec_of, Ctr};
@@ -113,9 +114,9 @@ impl FccSortNet {
             centre_buf: FccCentreBuf::new(p),
             serializer: FccSerializer::new(p),
             join_queue: FccJoinQueue::default(),
-            centre_buf_rst: FccKeepReg::with_max_fanout(RESET_FANOUT),
-            serializer_rst: FccKeepReg::with_max_fanout(RESET_FANOUT),
-            join_queue_rst: FccKeepReg::with_max_fanout(RESET_FANOUT),
+            centre_buf_rst: FccKeepReg::with_max_fanout(MAX_FANOUT),
+            serializer_rst: FccKeepReg::with_max_fanout(MAX_FANOUT),
+            join_queue_rst: FccKeepReg::with_max_fanout(MAX_FANOUT),
             _n: n,
         }
     }

@@ -60,25 +60,22 @@ const MASK36: u64 = (1 << 36) - 1;
 impl Logic for FccThSquare {
     fn update(&mut self) {
         if self.clk.pos_edge() {
-            if self.rst.val() {
-                self._busy = false;
-            } else if self.start.val() {
+            // `rst` clears `run` only: the operands and the sum follow
+            // `start` and the shifts whatever `rst` is (see `hdl`).
+            let step = self._busy && self._m != 0;
+            if self.start.val() {
                 let a = self.a.val().index() as u64;
                 self._m = a;
                 self._c = a;
                 self._acc = 0;
-                self._busy = true;
-            } else if self._busy {
-                if self._m == 0 {
-                    self._busy = false;
-                } else {
-                    if self._m & 1 == 1 {
-                        self._acc = (self._acc + self._c) & 0xffff_ffff;
-                    }
-                    self._c = (self._c << 1) & 0xffff_ffff;
-                    self._m >>= 1;
+            } else if step {
+                if self._m & 1 == 1 {
+                    self._acc = (self._acc + self._c) & 0xffff_ffff;
                 }
+                self._c = (self._c << 1) & 0xffff_ffff;
+                self._m >>= 1;
             }
+            self._busy = !self.rst.val() && (self.start.val() || step);
         }
         self.busy.next = self._busy;
         self.c_lt.next = ((1u64 << 36).wrapping_sub(self._acc) & MASK36).to_bits::<36>();
@@ -94,6 +91,8 @@ impl Logic for FccThSquare {
     fn hdl(&self) -> Verilog {
         Verilog::Custom(
             "// Shift and add: acc += c for every set bit of m, c doubles, m halves.\n\
+             // Only `run` is reset: a start reloads the operands and clears the\n\
+             // sum, so `rst` does not reach their enables.\n\
              reg [15:0] m;\n\
              reg [31:0] c;\n\
              reg [31:0] acc;\n\
@@ -102,25 +101,25 @@ impl Logic for FccThSquare {
              \x20   if (rst) begin\n\
              \x20       run <= 1'b0;\n\
              \x20   end else if (start) begin\n\
-             \x20       m <= a;\n\
-             \x20       c <= {16'd0, a};\n\
              \x20       run <= 1'b1;\n\
-             \x20   end else if (run) begin\n\
-             \x20       if (m == 16'd0) begin\n\
-             \x20           run <= 1'b0;\n\
-             \x20       end else begin\n\
-             \x20           c <= {c[30:0], 1'b0};\n\
-             \x20           m <= {1'b0, m[15:1]};\n\
-             \x20       end\n\
+             \x20   end else if (run && (m == 16'd0)) begin\n\
+             \x20       run <= 1'b0;\n\
              \x20   end\n\
              end\n\
              always @(posedge clk) begin\n\
-             \x20   if (!rst) begin\n\
-             \x20       if (start_acc) begin\n\
-             \x20           acc <= 32'd0;\n\
-             \x20       end else if (run && (m != 16'd0) && m[0]) begin\n\
-             \x20           acc <= acc + c;\n\
-             \x20       end\n\
+             \x20   if (start) begin\n\
+             \x20       m <= a;\n\
+             \x20       c <= {16'd0, a};\n\
+             \x20   end else if (run && (m != 16'd0)) begin\n\
+             \x20       c <= {c[30:0], 1'b0};\n\
+             \x20       m <= {1'b0, m[15:1]};\n\
+             \x20   end\n\
+             end\n\
+             always @(posedge clk) begin\n\
+             \x20   if (start_acc) begin\n\
+             \x20       acc <= 32'd0;\n\
+             \x20   end else if (run && (m != 16'd0) && m[0]) begin\n\
+             \x20       acc <= acc + c;\n\
              \x20   end\n\
              end\n\
              always @(*) begin\n\

@@ -26,8 +26,9 @@ use fcc_params::FccParams;
 use rust_hdl::prelude::*;
 
 use crate::fcc_dist_tree::FccDistTree;
+use crate::fcc_fanout_reg::MAX_FANOUT;
 use crate::fcc_intra::FccIntra;
-use crate::fcc_keep_reg::{FccKeepReg, RESET_FANOUT};
+use crate::fcc_keep_reg::FccKeepReg;
 use crate::fcc_label_update::FccLabelUpdate;
 use crate::fcc_merge_table::FccMergeTable;
 use crate::fcc_regs::FccRegs;
@@ -217,10 +218,10 @@ impl FccTop {
             merge_table: FccMergeTable::new(p),
             label_update: FccLabelUpdate::new(p),
             regs: FccRegs::new(p),
-            intra_rst: FccKeepReg::with_max_fanout(RESET_FANOUT),
-            window_rst: FccKeepReg::with_max_fanout(RESET_FANOUT),
-            dist_tree_rst: FccKeepReg::with_max_fanout(RESET_FANOUT),
-            merge_table_rst: FccKeepReg::with_max_fanout(RESET_FANOUT),
+            intra_rst: FccKeepReg::with_max_fanout(MAX_FANOUT),
+            window_rst: FccKeepReg::with_max_fanout(MAX_FANOUT),
+            dist_tree_rst: FccKeepReg::with_max_fanout(MAX_FANOUT),
+            merge_table_rst: FccKeepReg::with_max_fanout(MAX_FANOUT),
             phase: Default::default(),
             tready_q: Default::default(),
             pad_go: Default::default(),

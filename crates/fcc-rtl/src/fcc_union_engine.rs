@@ -15,6 +15,7 @@
 //! The engine works only while `active` (the table's Union mode); the join
 //! in waiting (`next_*`) is taken from the sort network in any mode.
 
+use crate::fcc_fanout_reg::FccFanoutReg;
 use rust_hdl::prelude::*;
 
 #[derive(LogicBlock, Default)]
@@ -48,7 +49,7 @@ pub struct FccUnionEngine {
     next_same: DFF<Bit>,
     // The join in progress: the two slots.
     join_busy: DFF<Bit>,
-    odd_turn: DFF<Bit>,
+    odd_turn: FccFanoutReg<Bit>,
     walk_even: DFF<Bits<16>>,
     walk_odd: DFF<Bits<16>>,
     done_even: DFF<Bit>,

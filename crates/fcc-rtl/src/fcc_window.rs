@@ -38,6 +38,7 @@
 use fcc_params::FccParams;
 use rust_hdl::prelude::*;
 
+use crate::fcc_fanout_reg::FccFanoutReg;
 use crate::fcc_keep_reg::FccKeepReg;
 use crate::fcc_line_buf::FccLineBuf;
 use crate::fcc_ram::FccRam;
@@ -85,7 +86,7 @@ pub struct FccWindow {
     view_z: Vec<Signal<Local, Bits<16>>>,
     w1: DFF<WinPix>,
     w2: DFF<WinPix>,
-    w3: DFF<WinPix>,
+    w3: FccFanoutReg<WinPix>,
     /// Copies of W2's `valid`, one per window entry: the entry's shift enable.
     shift_en: Vec<FccKeepReg<Bit>>,
     /// Copies of W2's `valid` and `col`, one per line buffer: its write port.

@@ -79,6 +79,8 @@ mod fcc_beat_queue;
 mod fcc_centre_buf;
 mod fcc_dist_tree;
 mod fcc_dist_unit;
+mod fcc_fanout_net;
+mod fcc_fanout_reg;
 mod fcc_fb_writer;
 mod fcc_fifo;
 mod fcc_first_set;
@@ -126,6 +128,7 @@ use fcc_params::{FccParams, ParamError};
 use rust_hdl::prelude::*;
 use thiserror::Error;
 
+pub use fcc_fanout_reg::MAX_FANOUT;
 pub use fcc_join_queue::JQ_HIGH_LEVEL;
 pub use fcc_regs::FccRegs;
 pub use fcc_top::{FccTop, CREDITS};

@@ -9,7 +9,10 @@
 //!
 //! - **Fanout** of a net: the cell input pins and top-level outputs it drives.
 //!   The clock (any net that reaches a clock pin) is left out: it has its own
-//!   dedicated network.
+//!   dedicated network. A net that carries a `max_fanout` attribute at or
+//!   below [`FANOUT_LIMIT`] (the generator sets it where Vivado is to
+//!   replicate the driver) is reported with it; Yosys does not replicate, so
+//!   such a net may still show more loads here than it will have in Vivado.
 //! - **Hops** of a path: the general-routing links it crosses, from the
 //!   launching element (a flip-flop, block RAM, registered DSP output,
 //!   distributed RAM or shift register clocked output, or a top-level input)
@@ -29,8 +32,9 @@ use serde::{Deserialize, Serialize};
 
 use crate::sta::CLOCK_PINS;
 
-/// Loads above which a net is reported as high fanout.
-pub const FANOUT_LIMIT: usize = 64;
+/// Loads above which a net is reported as high fanout: the generator's
+/// fanout target.
+pub const FANOUT_LIMIT: usize = fcc_rtl::MAX_FANOUT;
 /// Hops above which a path is reported as too long to route at 200 MHz.
 pub const HOP_LIMIT: u32 = 5;
 /// Nets listed in [`Routing::top_fanout`].
@@ -47,6 +51,10 @@ pub struct NetFanout {
     pub loads: usize,
     /// The cell (and its type) or top-level input that drives it.
     pub driver: String,
+    /// The net's `max_fanout` attribute: Vivado replicates its driver until
+    /// no copy drives more loads than this.
+    #[serde(default)]
+    pub max_fanout: Option<usize>,
 }
 
 /// One path in routing hops.
@@ -69,6 +77,15 @@ pub struct Routing {
     pub top_fanout: Vec<NetFanout>,
     /// Nets with more than [`FANOUT_LIMIT`] loads (clock excluded).
     pub nets_over_limit: usize,
+    /// Of those, the nets without a `max_fanout` at or below the limit:
+    /// nothing replicates their drivers (`None` in reports written before
+    /// the attribute was read).
+    #[serde(default)]
+    pub unreplicated_over_limit: Option<usize>,
+    /// The highest-fanout nets without such a `max_fanout`, highest first
+    /// (at most [`TOP_NETS`]).
+    #[serde(default)]
+    pub top_unreplicated: Vec<NetFanout>,
     /// The most hops on any path.
     pub worst_hops: u32,
     /// The longest paths in hops, one per capturing register (the bits of a
@@ -136,6 +153,18 @@ struct JsonNet {
     #[serde(default)]
     hide_name: u8,
     bits: Vec<serde_json::Value>,
+    #[serde(default)]
+    attributes: BTreeMap<String, serde_json::Value>,
+}
+
+/// A net's `max_fanout` attribute (Yosys writes attribute integers as
+/// binary strings).
+fn max_fanout_attr(net: &JsonNet) -> Option<usize> {
+    match net.attributes.get("max_fanout")? {
+        serde_json::Value::Number(n) => n.as_u64().map(|v| v as usize),
+        serde_json::Value::String(s) => usize::from_str_radix(s, 2).ok(),
+        _ => None,
+    }
 }
 
 /// A net bit: Yosys numbers signals from 2; constants are strings.
@@ -277,10 +306,17 @@ pub fn analyse(json: &str, top: &str) -> Result<Routing, String> {
 
     // A readable name per bit: the shortest public name, then any name.
     let mut bit_name: HashMap<u64, (bool, String)> = HashMap::new();
+    // The smallest `max_fanout` of any name a bit has.
+    let mut bit_max_fanout: HashMap<u64, usize> = HashMap::new();
     for (name, net) in &module.netnames {
         let public = net.hide_name == 0;
+        let attr = max_fanout_attr(net);
         for (k, b) in net.bits.iter().enumerate() {
             let Some(b) = bit(b) else { continue };
+            if let Some(m) = attr {
+                let e = bit_max_fanout.entry(b).or_insert(m);
+                *e = (*e).min(m);
+            }
             let label = if net.bits.len() > 1 {
                 format!("{}[{k}]", clean(name))
             } else {
@@ -322,14 +358,25 @@ pub fn analyse(json: &str, top: &str) -> Result<Routing, String> {
         .collect();
     fanout.sort_unstable_by(|a, b| b.0.cmp(&a.0).then(a.1.cmp(&b.1)));
     let nets_over_limit = fanout.iter().filter(|(n, _)| *n > FANOUT_LIMIT).count();
-    let top_fanout = fanout
-        .iter()
+    let net_fanout = |&(n, b): &(usize, u64)| NetFanout {
+        net: name_of(b),
+        loads: n,
+        driver: describe_driver(b),
+        max_fanout: bit_max_fanout.get(&b).copied(),
+    };
+    let replicated = |b: u64| bit_max_fanout.get(&b).is_some_and(|&m| m <= FANOUT_LIMIT);
+    let top_fanout = fanout.iter().take(TOP_NETS).map(net_fanout).collect();
+    let unreplicated: Vec<&(usize, u64)> = fanout.iter().filter(|(_, b)| !replicated(*b)).collect();
+    let unreplicated_over_limit = Some(
+        unreplicated
+            .iter()
+            .filter(|(n, _)| *n > FANOUT_LIMIT)
+            .count(),
+    );
+    let top_unreplicated = unreplicated
+        .into_iter()
         .take(TOP_NETS)
-        .map(|&(n, b)| NetFanout {
-            net: name_of(b),
-            loads: n,
-            driver: describe_driver(b),
-        })
+        .map(net_fanout)
         .collect();
 
     // Hops: longest path through the combinational cells, in topological order.
@@ -532,6 +579,8 @@ pub fn analyse(json: &str, top: &str) -> Result<Routing, String> {
     Ok(Routing {
         top_fanout,
         nets_over_limit,
+        unreplicated_over_limit,
+        top_unreplicated,
         worst_hops,
         worst_paths,
         endpoints_over_limit,
@@ -678,6 +727,42 @@ mod tests {
         assert_eq!(r.top_fanout[0].driver, "src (FDRE.Q)");
         assert_eq!(r.nets_over_limit, 1);
         assert!(r.top_fanout.iter().all(|f| f.net != "clk"));
+    }
+
+    #[test]
+    fn nets_marked_for_replication_are_told_apart() {
+        // Three flip-flops, 70 loads each: `q` unmarked, `held` marked at
+        // the limit (Yosys's binary form), `wide` marked above it.
+        let mut cells = vec![
+            ff("src", &[10], &[10]),
+            ff("src2", &[11], &[11]),
+            ff("src3", &[12], &[12]),
+        ];
+        let names: Vec<&'static str> = (0..69)
+            .map(|i| &*Box::leak(format!("d{i}").into_boxed_str()))
+            .collect();
+        for n in &names {
+            cells.push(ff(n, &[10, 11, 12], &[]));
+        }
+        let c: Vec<CellSpec> = cells
+            .iter()
+            .map(|(n, t, p)| (*n, *t, p.as_slice()))
+            .collect();
+        let mut json: serde_json::Value =
+            serde_json::from_str(&netlist(&[("clk", "input", &[2])], &c)).unwrap();
+        let nets = &mut json["modules"]["top"]["netnames"];
+        nets["held"] = serde_json::json!({"hide_name": 0, "bits": [11],
+            "attributes": {"max_fanout": format!("{:032b}", FANOUT_LIMIT)}});
+        nets["wide"] = serde_json::json!({"hide_name": 0, "bits": [12],
+            "attributes": {"max_fanout": 2 * FANOUT_LIMIT}});
+        let r = analyse(&json.to_string(), "top").unwrap();
+        assert_eq!(r.nets_over_limit, 3);
+        assert_eq!(r.unreplicated_over_limit, Some(2));
+        let held = r.top_fanout.iter().find(|n| n.net == "held").unwrap();
+        assert_eq!(held.max_fanout, Some(FANOUT_LIMIT));
+        let unmarked: Vec<&str> = r.top_unreplicated.iter().map(|n| n.net.as_str()).collect();
+        assert!(unmarked.contains(&"q") && unmarked.contains(&"wide"));
+        assert!(!unmarked.contains(&"held"));
     }
 
     #[test]
