@@ -6743,6 +6743,8 @@ module fcc_label_update_k7_668cf05b(clk,rst,wr_valid,wr_state,wr_last,rb_start,f
     reg  queue$pop;
     wire  queue$head_valid;
     wire  [26:0] queue$head;
+    wire  queue$head_valid_copy;
+    wire  [2:0] queue$head_need_copy;
     reg  gearbox$clk;
     reg  gearbox$rst;
     reg  gearbox$rst_low_slots;
@@ -6757,6 +6759,16 @@ module fcc_label_update_k7_668cf05b(clk,rst,wr_valid,wr_state,wr_last,rb_start,f
     wire  [3:0] gearbox$used;
     wire  gearbox$has_one;
     wire  gearbox$has_two;
+    wire  gearbox$has_one_copy;
+    wire  gearbox$has_two_copy;
+    reg  gear_decision$head_valid;
+    reg  [2:0] gear_decision$need;
+    reg  [2:0] gear_decision$taken;
+    reg  gear_decision$has_one;
+    reg  gear_decision$has_two;
+    wire  gear_decision$pop;
+    wire  gear_decision$pop_two;
+    wire  gear_decision$complete;
     reg  assembly$clk;
     reg  assembly$rst;
     reg  assembly$rst_collected;
@@ -6768,8 +6780,7 @@ module fcc_label_update_k7_668cf05b(clk,rst,wr_valid,wr_state,wr_last,rb_start,f
     reg  [15:0] assembly$gear_second;
     reg  assembly$gear_has_one;
     reg  assembly$gear_has_two;
-    wire  assembly$gear_pop;
-    wire  assembly$gear_pop_two;
+    wire  [2:0] assembly$taken_copy;
     wire  [63:0] assembly$m_axis_tdata;
     wire  [7:0] assembly$m_axis_tkeep;
     wire  assembly$m_axis_tvalid;
@@ -6856,7 +6867,9 @@ module fcc_label_update_k7_668cf05b(clk,rst,wr_valid,wr_state,wr_last,rb_start,f
         .in_beat(queue$in_beat),
         .pop(queue$pop),
         .head_valid(queue$head_valid),
-        .head(queue$head)
+        .head(queue$head),
+        .head_valid_copy(queue$head_valid_copy),
+        .head_need_copy(queue$head_need_copy)
     );
     fcc_label_update__gearbox_k7_668cf05b gearbox(
         .clk(gearbox$clk),
@@ -6872,7 +6885,19 @@ module fcc_label_update_k7_668cf05b(clk,rst,wr_valid,wr_state,wr_last,rb_start,f
         .second(gearbox$second),
         .used(gearbox$used),
         .has_one(gearbox$has_one),
-        .has_two(gearbox$has_two)
+        .has_two(gearbox$has_two),
+        .has_one_copy(gearbox$has_one_copy),
+        .has_two_copy(gearbox$has_two_copy)
+    );
+    fcc_label_update__gear_decision_k7_668cf05b gear_decision(
+        .head_valid(gear_decision$head_valid),
+        .need(gear_decision$need),
+        .taken(gear_decision$taken),
+        .has_one(gear_decision$has_one),
+        .has_two(gear_decision$has_two),
+        .pop(gear_decision$pop),
+        .pop_two(gear_decision$pop_two),
+        .complete(gear_decision$complete)
     );
     fcc_label_update__assembly_k7_668cf05b assembly(
         .clk(assembly$clk),
@@ -6886,8 +6911,7 @@ module fcc_label_update_k7_668cf05b(clk,rst,wr_valid,wr_state,wr_last,rb_start,f
         .gear_second(assembly$gear_second),
         .gear_has_one(assembly$gear_has_one),
         .gear_has_two(assembly$gear_has_two),
-        .gear_pop(assembly$gear_pop),
-        .gear_pop_two(assembly$gear_pop_two),
+        .taken_copy(assembly$taken_copy),
         .m_axis_tdata(assembly$m_axis_tdata),
         .m_axis_tkeep(assembly$m_axis_tkeep),
         .m_axis_tvalid(assembly$m_axis_tvalid),
@@ -6947,16 +6971,21 @@ module fcc_label_update_k7_668cf05b(clk,rst,wr_valid,wr_state,wr_last,rb_start,f
         gearbox$clear = rb_start;
         gearbox$push_valid = fv;
         gearbox$push_label = fval;
-        gearbox$pop = assembly$gear_pop;
-        gearbox$pop_two = assembly$gear_pop_two;
+        gear_decision$head_valid = queue$head_valid_copy;
+        gear_decision$need = queue$head_need_copy;
+        gear_decision$taken = assembly$taken_copy;
+        gear_decision$has_one = gearbox$has_one;
+        gear_decision$has_two = gearbox$has_two;
+        gearbox$pop = gear_decision$pop;
+        gearbox$pop_two = gear_decision$pop_two;
         gear_used = gearbox$used;
         assembly$clear = rb_start;
         assembly$head_valid = queue$head_valid;
         assembly$head = queue$head;
         assembly$gear_front = gearbox$front;
         assembly$gear_second = gearbox$second;
-        assembly$gear_has_one = gearbox$has_one;
-        assembly$gear_has_two = gearbox$has_two;
+        assembly$gear_has_one = gearbox$has_one_copy;
+        assembly$gear_has_two = gearbox$has_two_copy;
         assembly$m_axis_tready = m_axis_tready;
         m_axis_tdata = assembly$m_axis_tdata;
         m_axis_tkeep = assembly$m_axis_tkeep;
@@ -6969,7 +6998,7 @@ module fcc_label_update_k7_668cf05b(clk,rst,wr_valid,wr_state,wr_last,rb_start,f
 endmodule // fcc_label_update_k7_668cf05b
 
 
-module fcc_label_update__assembly_k7_668cf05b(clk,rst,rst_collected,clear,head_valid,head,head_done,gear_front,gear_second,gear_has_one,gear_has_two,gear_pop,gear_pop_two,m_axis_tdata,m_axis_tkeep,m_axis_tvalid,m_axis_tlast,m_axis_tready,frame_sent,gear_stalls);
+module fcc_label_update__assembly_k7_668cf05b(clk,rst,rst_collected,clear,head_valid,head,head_done,gear_front,gear_second,gear_has_one,gear_has_two,taken_copy,m_axis_tdata,m_axis_tkeep,m_axis_tvalid,m_axis_tlast,m_axis_tready,frame_sent,gear_stalls);
 
     // Module arguments
     input wire  clk;
@@ -6983,8 +7012,7 @@ module fcc_label_update__assembly_k7_668cf05b(clk,rst,rst_collected,clear,head_v
     input wire  [15:0] gear_second;
     input wire  gear_has_one;
     input wire  gear_has_two;
-    output reg  gear_pop;
-    output reg  gear_pop_two;
+    output reg  [2:0] taken_copy;
     output reg  [63:0] m_axis_tdata;
     output reg  [7:0] m_axis_tkeep;
     output reg  m_axis_tvalid;
@@ -6998,7 +7026,6 @@ module fcc_label_update__assembly_k7_668cf05b(clk,rst,rst_collected,clear,head_v
     localparam  count$1 = 3'b1;
     localparam  count$2 = 3'b10;
     localparam  count$3 = 3'b11;
-    localparam  count$4 = 3'b100;
     localparam  one3 = 3'b1;
     localparam  two3 = 3'b10;
     localparam  zero3 = 3'b0;
@@ -7007,6 +7034,17 @@ module fcc_label_update__assembly_k7_668cf05b(clk,rst,rst_collected,clear,head_v
     localparam  zero16 = 16'h0;
 
     // Stub signals
+    reg  decision$head_valid;
+    reg  [2:0] decision$need;
+    reg  [2:0] decision$taken;
+    reg  decision$has_one;
+    reg  decision$has_two;
+    wire  decision$pop;
+    wire  decision$pop_two;
+    wire  decision$complete;
+    reg  taken_copy_q$clock;
+    reg  [2:0] taken_copy_q$d;
+    wire  [2:0] taken_copy_q$q;
     reg  [2:0] slot_mux$0$source;
     reg  [2:0] slot_mux$0$taken;
     reg  [15:0] slot_mux$0$carried;
@@ -7082,13 +7120,24 @@ module fcc_label_update__assembly_k7_668cf05b(clk,rst,rst_collected,clear,head_v
     // Local signals
     reg  [63:0] collected_word;
     reg  out_free;
-    reg  needs_none;
-    reg  needs_one;
-    reg  needs_two;
-    reg  needs_two_plus;
     reg  done;
 
     // Sub module instances
+    fcc_label_update__assembly__decision_k7_668cf05b decision(
+        .head_valid(decision$head_valid),
+        .need(decision$need),
+        .taken(decision$taken),
+        .has_one(decision$has_one),
+        .has_two(decision$has_two),
+        .pop(decision$pop),
+        .pop_two(decision$pop_two),
+        .complete(decision$complete)
+    );
+    fcc_label_update__assembly__taken_copy_q_k7_668cf05b taken_copy_q(
+        .clock(taken_copy_q$clock),
+        .d(taken_copy_q$d),
+        .q(taken_copy_q$q)
+    );
     fcc_label_update__assembly__slot_mux__0_k7_668cf05b slot_mux$0(
         .source(slot_mux$0$source),
         .taken(slot_mux$0$taken),
@@ -7222,46 +7271,12 @@ module fcc_label_update__assembly_k7_668cf05b(clk,rst,rst_collected,clear,head_v
         collected$3$clock = clk;
         collected$3$d = collected$3$q;
         out_free = ~out_valid$q | m_axis_tready;
-        needs_none = head[17:15] == taken$q;
-        needs_one = 1'b0;
-        needs_two = 1'b0;
-        needs_two_plus = 1'b0;
-        if ((taken$q == count$0) & (head[17:15] == count$1)) begin
-            needs_one = 1'b1;
-        end
-        if ((taken$q == count$1) & (head[17:15] == count$2)) begin
-            needs_one = 1'b1;
-        end
-        if ((taken$q == count$2) & (head[17:15] == count$3)) begin
-            needs_one = 1'b1;
-        end
-        if ((taken$q == count$3) & (head[17:15] == count$4)) begin
-            needs_one = 1'b1;
-        end
-        if ((taken$q == count$0) & (head[17:15] == count$2)) begin
-            needs_two = 1'b1;
-            needs_two_plus = 1'b1;
-        end
-        if ((taken$q == count$1) & (head[17:15] == count$3)) begin
-            needs_two = 1'b1;
-            needs_two_plus = 1'b1;
-        end
-        if ((taken$q == count$2) & (head[17:15] == count$4)) begin
-            needs_two = 1'b1;
-            needs_two_plus = 1'b1;
-        end
-        if ((taken$q == count$0) & (head[17:15] == count$3)) begin
-            needs_two_plus = 1'b1;
-        end
-        if ((taken$q == count$1) & (head[17:15] == count$4)) begin
-            needs_two_plus = 1'b1;
-        end
-        if ((taken$q == count$0) & (head[17:15] == count$4)) begin
-            needs_two_plus = 1'b1;
-        end
-        gear_pop_two = head_valid & needs_two_plus & gear_has_two;
-        gear_pop = head_valid & ~needs_none & gear_has_one;
-        done = head_valid & out_free & (needs_none | (needs_one & gear_has_one) | (needs_two & gear_has_two));
+        decision$head_valid = head_valid;
+        decision$need = head[17:15];
+        decision$taken = taken$q;
+        decision$has_one = gear_has_one;
+        decision$has_two = gear_has_two;
+        done = head_valid & out_free & decision$complete;
         head_done = done;
         collected_word[15:0] = collected$0$q;
         collected_word[31:16] = collected$1$q;
@@ -7297,7 +7312,7 @@ module fcc_label_update__assembly_k7_668cf05b(clk,rst,rst_collected,clear,head_v
         run_mux$collected = collected_word;
         run_mux$gear_head = gear_front;
         run_mux$gear_next = gear_second;
-        if (gear_pop) begin
+        if (decision$pop) begin
             if (taken$q == count$0) begin
                 collected$0$d = gear_front;
             end
@@ -7312,7 +7327,7 @@ module fcc_label_update__assembly_k7_668cf05b(clk,rst,rst_collected,clear,head_v
             end
             taken$d = taken$q + one3;
         end
-        if (gear_pop_two) begin
+        if (decision$pop_two) begin
             if (taken$q == count$0) begin
                 collected$1$d = gear_second;
             end
@@ -7367,6 +7382,9 @@ module fcc_label_update__assembly_k7_668cf05b(clk,rst,rst_collected,clear,head_v
         m_axis_tlast = out_last$q;
         frame_sent = out_valid$q & m_axis_tready & out_last$q;
         gear_stalls = stall_count$q;
+        taken_copy_q$clock = clk;
+        taken_copy_q$d = taken$d;
+        taken_copy = taken_copy_q$q;
     end
 
 endmodule // fcc_label_update__assembly_k7_668cf05b
@@ -7484,6 +7502,78 @@ module fcc_label_update__assembly__collected__3_k7_668cf05b(d,q,clock);
     end
 
 endmodule // fcc_label_update__assembly__collected__3_k7_668cf05b
+
+
+module fcc_label_update__assembly__decision_k7_668cf05b(head_valid,need,taken,has_one,has_two,pop,pop_two,complete);
+
+    // Module arguments
+    input wire  head_valid;
+    input wire  [2:0] need;
+    input wire  [2:0] taken;
+    input wire  has_one;
+    input wire  has_two;
+    output reg  pop;
+    output reg  pop_two;
+    output reg  complete;
+
+    // Constant declarations
+    localparam  count$0 = 3'b0;
+    localparam  count$1 = 3'b1;
+    localparam  count$2 = 3'b10;
+    localparam  count$3 = 3'b11;
+    localparam  count$4 = 3'b100;
+
+    // Local signals
+    reg  needs_none;
+    reg  needs_one;
+    reg  needs_two;
+    reg  needs_two_plus;
+
+    // Update code
+    always @(*) begin
+        needs_none = need == taken;
+        needs_one = 1'b0;
+        needs_two = 1'b0;
+        needs_two_plus = 1'b0;
+        if ((taken == count$0) & (need == count$1)) begin
+            needs_one = 1'b1;
+        end
+        if ((taken == count$1) & (need == count$2)) begin
+            needs_one = 1'b1;
+        end
+        if ((taken == count$2) & (need == count$3)) begin
+            needs_one = 1'b1;
+        end
+        if ((taken == count$3) & (need == count$4)) begin
+            needs_one = 1'b1;
+        end
+        if ((taken == count$0) & (need == count$2)) begin
+            needs_two = 1'b1;
+            needs_two_plus = 1'b1;
+        end
+        if ((taken == count$1) & (need == count$3)) begin
+            needs_two = 1'b1;
+            needs_two_plus = 1'b1;
+        end
+        if ((taken == count$2) & (need == count$4)) begin
+            needs_two = 1'b1;
+            needs_two_plus = 1'b1;
+        end
+        if ((taken == count$0) & (need == count$3)) begin
+            needs_two_plus = 1'b1;
+        end
+        if ((taken == count$1) & (need == count$4)) begin
+            needs_two_plus = 1'b1;
+        end
+        if ((taken == count$0) & (need == count$4)) begin
+            needs_two_plus = 1'b1;
+        end
+        pop_two = head_valid & needs_two_plus & has_two;
+        pop = head_valid & ~needs_none & has_one;
+        complete = needs_none | (needs_one & has_one) | (needs_two & has_two);
+    end
+
+endmodule // fcc_label_update__assembly__decision_k7_668cf05b
 
 
 module fcc_label_update__assembly__out_data_k7_668cf05b(d,q,clock);
@@ -7921,6 +8011,27 @@ module fcc_label_update__assembly__taken_k7_668cf05b(clock,d,q);
 endmodule // fcc_label_update__assembly__taken_k7_668cf05b
 
 
+module fcc_label_update__assembly__taken_copy_q_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg [2:0] held;
+    initial begin
+        held = 3'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_label_update__assembly__taken_copy_q_k7_668cf05b
+
+
 module fcc_label_update__fb_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
 
     // Module arguments
@@ -7953,7 +8064,79 @@ module fcc_label_update__fb_k7_668cf05b(clk,read_en,read_addr,read_data,write_en
 endmodule // fcc_label_update__fb_k7_668cf05b
 
 
-module fcc_label_update__gearbox_k7_668cf05b(clk,rst,rst_low_slots,rst_high_slots,clear,push_valid,push_label,pop,pop_two,front,second,used,has_one,has_two);
+module fcc_label_update__gear_decision_k7_668cf05b(head_valid,need,taken,has_one,has_two,pop,pop_two,complete);
+
+    // Module arguments
+    input wire  head_valid;
+    input wire  [2:0] need;
+    input wire  [2:0] taken;
+    input wire  has_one;
+    input wire  has_two;
+    output reg  pop;
+    output reg  pop_two;
+    output reg  complete;
+
+    // Constant declarations
+    localparam  count$0 = 3'b0;
+    localparam  count$1 = 3'b1;
+    localparam  count$2 = 3'b10;
+    localparam  count$3 = 3'b11;
+    localparam  count$4 = 3'b100;
+
+    // Local signals
+    reg  needs_none;
+    reg  needs_one;
+    reg  needs_two;
+    reg  needs_two_plus;
+
+    // Update code
+    always @(*) begin
+        needs_none = need == taken;
+        needs_one = 1'b0;
+        needs_two = 1'b0;
+        needs_two_plus = 1'b0;
+        if ((taken == count$0) & (need == count$1)) begin
+            needs_one = 1'b1;
+        end
+        if ((taken == count$1) & (need == count$2)) begin
+            needs_one = 1'b1;
+        end
+        if ((taken == count$2) & (need == count$3)) begin
+            needs_one = 1'b1;
+        end
+        if ((taken == count$3) & (need == count$4)) begin
+            needs_one = 1'b1;
+        end
+        if ((taken == count$0) & (need == count$2)) begin
+            needs_two = 1'b1;
+            needs_two_plus = 1'b1;
+        end
+        if ((taken == count$1) & (need == count$3)) begin
+            needs_two = 1'b1;
+            needs_two_plus = 1'b1;
+        end
+        if ((taken == count$2) & (need == count$4)) begin
+            needs_two = 1'b1;
+            needs_two_plus = 1'b1;
+        end
+        if ((taken == count$0) & (need == count$3)) begin
+            needs_two_plus = 1'b1;
+        end
+        if ((taken == count$1) & (need == count$4)) begin
+            needs_two_plus = 1'b1;
+        end
+        if ((taken == count$0) & (need == count$4)) begin
+            needs_two_plus = 1'b1;
+        end
+        pop_two = head_valid & needs_two_plus & has_two;
+        pop = head_valid & ~needs_none & has_one;
+        complete = needs_none | (needs_one & has_one) | (needs_two & has_two);
+    end
+
+endmodule // fcc_label_update__gear_decision_k7_668cf05b
+
+
+module fcc_label_update__gearbox_k7_668cf05b(clk,rst,rst_low_slots,rst_high_slots,clear,push_valid,push_label,pop,pop_two,front,second,used,has_one,has_two,has_one_copy,has_two_copy);
 
     // Module arguments
     input wire  clk;
@@ -7970,6 +8153,8 @@ module fcc_label_update__gearbox_k7_668cf05b(clk,rst,rst_low_slots,rst_high_slot
     output reg  [3:0] used;
     output reg  has_one;
     output reg  has_two;
+    output reg  has_one_copy;
+    output reg  has_two_copy;
 
     // Constant declarations
     localparam  count_is$0 = 4'h0;
@@ -8016,6 +8201,9 @@ module fcc_label_update__gearbox_k7_668cf05b(clk,rst,rst_low_slots,rst_high_slot
     reg  [3:0] count$d;
     wire  [3:0] count$q;
     reg  count$clock;
+    reg  count_copy$clock;
+    reg  [3:0] count_copy$d;
+    wire  [3:0] count_copy$q;
     reg  [2:0] read_slot$d;
     wire  [2:0] read_slot$q;
     reg  read_slot$clock;
@@ -8095,6 +8283,11 @@ module fcc_label_update__gearbox_k7_668cf05b(clk,rst,rst_low_slots,rst_high_slot
         .d(count$d),
         .q(count$q),
         .clock(count$clock)
+    );
+    fcc_label_update__gearbox__count_copy_k7_668cf05b count_copy(
+        .clock(count_copy$clock),
+        .d(count_copy$d),
+        .q(count_copy$q)
     );
     fcc_label_update__gearbox__read_slot_k7_668cf05b read_slot(
         .d(read_slot$d),
@@ -8331,6 +8524,10 @@ module fcc_label_update__gearbox_k7_668cf05b(clk,rst,rst_low_slots,rst_high_slot
             front_label$d = empty_slot;
             second_label$d = empty_slot;
         end
+        count_copy$clock = clk;
+        count_copy$d = count$d;
+        has_one_copy = count_copy$q != count_is$0;
+        has_two_copy = (count_copy$q != count_is$0) & (count_copy$q != count_is$1);
     end
 
 endmodule // fcc_label_update__gearbox_k7_668cf05b
@@ -8353,6 +8550,27 @@ module fcc_label_update__gearbox__count_k7_668cf05b(d,q,clock);
     end
 
 endmodule // fcc_label_update__gearbox__count_k7_668cf05b
+
+
+module fcc_label_update__gearbox__count_copy_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg [3:0] held;
+    initial begin
+        held = 4'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_label_update__gearbox__count_copy_k7_668cf05b
 
 
 module fcc_label_update__gearbox__fourth_slot_k7_668cf05b(clock,d,q);
@@ -9799,7 +10017,7 @@ module fcc_label_update__pipeline__word_pos_s2_k7_668cf05b(d,q,clock);
 endmodule // fcc_label_update__pipeline__word_pos_s2_k7_668cf05b
 
 
-module fcc_label_update__queue_k7_668cf05b(clk,rst,clear,in_valid,in_beat,pop,head_valid,head);
+module fcc_label_update__queue_k7_668cf05b(clk,rst,clear,in_valid,in_beat,pop,head_valid,head,head_valid_copy,head_need_copy);
 
     // Module arguments
     input wire  clk;
@@ -9810,6 +10028,8 @@ module fcc_label_update__queue_k7_668cf05b(clk,rst,clear,in_valid,in_beat,pop,he
     input wire  pop;
     output reg  head_valid;
     output reg  [26:0] head;
+    output reg  head_valid_copy;
+    output reg  [2:0] head_need_copy;
 
     // Constant declarations
     localparam  entry_is$0 = 2'b0;
@@ -9827,6 +10047,12 @@ module fcc_label_update__queue_k7_668cf05b(clk,rst,clear,in_valid,in_beat,pop,he
     reg  [26:0] head_q$d;
     wire  [26:0] head_q$q;
     reg  head_q$clock;
+    reg  head_valid_copy_q$clock;
+    reg  head_valid_copy_q$d;
+    wire  head_valid_copy_q$q;
+    reg  head_need_copy_q$clock;
+    reg  [2:0] head_need_copy_q$d;
+    wire  [2:0] head_need_copy_q$q;
     reg  [26:0] entries$0$d;
     wire  [26:0] entries$0$q;
     reg  entries$0$clock;
@@ -9868,6 +10094,16 @@ module fcc_label_update__queue_k7_668cf05b(clk,rst,clear,in_valid,in_beat,pop,he
         .d(head_q$d),
         .q(head_q$q),
         .clock(head_q$clock)
+    );
+    fcc_label_update__queue__head_valid_copy_q_k7_668cf05b head_valid_copy_q(
+        .clock(head_valid_copy_q$clock),
+        .d(head_valid_copy_q$d),
+        .q(head_valid_copy_q$q)
+    );
+    fcc_label_update__queue__head_need_copy_q_k7_668cf05b head_need_copy_q(
+        .clock(head_need_copy_q$clock),
+        .d(head_need_copy_q$d),
+        .q(head_need_copy_q$q)
     );
     fcc_label_update__queue__entries__0_k7_668cf05b entries$0(
         .d(entries$0$d),
@@ -9994,6 +10230,12 @@ module fcc_label_update__queue_k7_668cf05b(clk,rst,clear,in_valid,in_beat,pop,he
             read_entry$d = entry_is$0;
             write_entry$d = entry_is$0;
         end
+        head_valid_copy_q$clock = clk;
+        head_need_copy_q$clock = clk;
+        head_valid_copy_q$d = head_valid_q$d;
+        head_need_copy_q$d = head_q$d[17:15];
+        head_valid_copy = head_valid_copy_q$q;
+        head_need_copy = head_need_copy_q$q;
     end
 
 endmodule // fcc_label_update__queue_k7_668cf05b
@@ -10075,6 +10317,27 @@ module fcc_label_update__queue__entries__3_k7_668cf05b(d,q,clock);
 endmodule // fcc_label_update__queue__entries__3_k7_668cf05b
 
 
+module fcc_label_update__queue__head_need_copy_q_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg [2:0] held;
+    initial begin
+        held = 3'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_label_update__queue__head_need_copy_q_k7_668cf05b
+
+
 module fcc_label_update__queue__head_q_k7_668cf05b(d,q,clock);
 
     // Module arguments
@@ -10092,6 +10355,27 @@ module fcc_label_update__queue__head_q_k7_668cf05b(d,q,clock);
     end
 
 endmodule // fcc_label_update__queue__head_q_k7_668cf05b
+
+
+module fcc_label_update__queue__head_valid_copy_q_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_label_update__queue__head_valid_copy_q_k7_668cf05b
 
 
 module fcc_label_update__queue__head_valid_q_k7_668cf05b(clock,d,q);

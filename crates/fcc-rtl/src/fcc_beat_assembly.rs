@@ -12,6 +12,8 @@ use rust_hdl::prelude::*;
 
 use crate::fcc_beat_queue::Beat;
 use crate::fcc_fanout_reg::FccFanoutReg;
+use crate::fcc_keep_reg::FccKeepReg;
+use crate::fcc_pop_decision::FccPopDecision;
 use crate::fcc_slot_mux::{FccSlotMux, OutWord, NEW_LABELS};
 use crate::types::{kb, vec_of};
 
@@ -28,13 +30,14 @@ pub struct FccBeatAssembly {
     pub head: Signal<In, Beat>,
     /// The head beat leaves (the queue pops it).
     pub head_done: Signal<Out, Bit>,
-    // The gearbox's front: its labels, how many wait, pop one or two.
+    // The gearbox's front: its labels and how many wait (a kept copy).
     pub gear_front: Signal<In, Bits<16>>,
     pub gear_second: Signal<In, Bits<16>>,
     pub gear_has_one: Signal<In, Bit>,
     pub gear_has_two: Signal<In, Bit>,
-    pub gear_pop: Signal<Out, Bit>,
-    pub gear_pop_two: Signal<Out, Bit>,
+    /// A kept copy of `taken`, for the gearbox's copy of the pop decision
+    /// (this block's copy, `decision`, steers the collected labels).
+    pub taken_copy: Signal<Out, Bits<3>>,
     // Output stream.
     pub m_axis_tdata: Signal<Out, Bits<64>>,
     pub m_axis_tkeep: Signal<Out, Bits<8>>,
@@ -45,6 +48,8 @@ pub struct FccBeatAssembly {
     pub frame_sent: Signal<Out, Bit>,
     /// Cycles in which the head beat waited for compact labels.
     pub gear_stalls: Signal<Out, Bits<24>>,
+    decision: FccPopDecision,
+    taken_copy_q: FccKeepReg<Bits<3>>,
     slot_mux: Vec<FccSlotMux>,
     run_mux: FccSlotMux,
     /// New labels the head beat has collected, and their values.
@@ -63,11 +68,6 @@ pub struct FccBeatAssembly {
     clear_s1: DFF<Bit>,
     collected_word: Signal<Local, OutWord>,
     out_free: Signal<Local, Bit>,
-    /// The head beat needs 0, 1, 2, at least 2 more labels.
-    needs_none: Signal<Local, Bit>,
-    needs_one: Signal<Local, Bit>,
-    needs_two: Signal<Local, Bit>,
-    needs_two_plus: Signal<Local, Bit>,
     done: Signal<Local, Bit>,
     count: Vec<Constant<Bits<3>>>,
     one3: Constant<Bits<3>>,
@@ -92,8 +92,7 @@ impl FccBeatAssembly {
             gear_second: Default::default(),
             gear_has_one: Default::default(),
             gear_has_two: Default::default(),
-            gear_pop: Default::default(),
-            gear_pop_two: Default::default(),
+            taken_copy: Default::default(),
             m_axis_tdata: Default::default(),
             m_axis_tkeep: Default::default(),
             m_axis_tvalid: Default::default(),
@@ -101,6 +100,8 @@ impl FccBeatAssembly {
             m_axis_tready: Default::default(),
             frame_sent: Default::default(),
             gear_stalls: Default::default(),
+            decision: Default::default(),
+            taken_copy_q: Default::default(),
             slot_mux: (0..NEW_LABELS).map(|j| FccSlotMux::new(j + 1)).collect(),
             run_mux: FccSlotMux::new(NEW_LABELS),
             taken: Default::default(),
@@ -114,12 +115,8 @@ impl FccBeatAssembly {
             clear_s1: Default::default(),
             collected_word: Default::default(),
             out_free: Default::default(),
-            needs_none: Default::default(),
-            needs_one: Default::default(),
-            needs_two: Default::default(),
-            needs_two_plus: Default::default(),
             done: Default::default(),
-            count: (0..=NEW_LABELS).map(|n| kb(n as u64)).collect(),
+            count: (0..NEW_LABELS).map(|n| kb(n as u64)).collect(),
             one3: kb(1),
             two3: kb(2),
             zero3: kb(0),
@@ -155,50 +152,13 @@ impl Logic for FccBeatAssembly {
             self.collected[k].clock.next = self.clk.val();
             self.collected[k].d.next = self.collected[k].q.val();
         }
-        // How many new labels the head beat still needs (`need - taken`),
-        // decoded by equalities on the two 3-bit registers (one LUT level)
-        // rather than by a subtraction.
         self.out_free.next = !self.out_valid.q.val() | self.m_axis_tready.val();
-        self.needs_none.next = self.head.val().need == self.taken.q.val();
-        self.needs_one.next = false;
-        self.needs_two.next = false;
-        self.needs_two_plus.next = false;
-        for k in 0..4 {
-            if (self.taken.q.val() == self.count[k].val())
-                & (self.head.val().need == self.count[k + 1].val())
-            {
-                self.needs_one.next = true;
-            }
-        }
-        for k in 0..3 {
-            if (self.taken.q.val() == self.count[k].val())
-                & (self.head.val().need == self.count[k + 2].val())
-            {
-                self.needs_two.next = true;
-                self.needs_two_plus.next = true;
-            }
-        }
-        for k in 0..2 {
-            if (self.taken.q.val() == self.count[k].val())
-                & (self.head.val().need == self.count[k + 3].val())
-            {
-                self.needs_two_plus.next = true;
-            }
-        }
-        if (self.taken.q.val() == self.count[0].val())
-            & (self.head.val().need == self.count[4].val())
-        {
-            self.needs_two_plus.next = true;
-        }
-        self.gear_pop_two.next =
-            self.head_valid.val() & self.needs_two_plus.val() & self.gear_has_two.val();
-        self.gear_pop.next =
-            self.head_valid.val() & !self.needs_none.val() & self.gear_has_one.val();
-        self.done.next = self.head_valid.val()
-            & self.out_free.val()
-            & (self.needs_none.val()
-                | (self.needs_one.val() & self.gear_has_one.val())
-                | (self.needs_two.val() & self.gear_has_two.val()));
+        self.decision.head_valid.next = self.head_valid.val();
+        self.decision.need.next = self.head.val().need;
+        self.decision.taken.next = self.taken.q.val();
+        self.decision.has_one.next = self.gear_has_one.val();
+        self.decision.has_two.next = self.gear_has_two.val();
+        self.done.next = self.head_valid.val() & self.out_free.val() & self.decision.complete.val();
         self.head_done.next = self.done.val();
         // The slots' labels and the carried run (new labels `taken` and
         // `taken + 1` forwarded from the gearbox).
@@ -224,7 +184,7 @@ impl Logic for FccBeatAssembly {
         self.run_mux.gear_head.next = self.gear_front.val();
         self.run_mux.gear_next.next = self.gear_second.val();
         // Collect the popped labels.
-        if self.gear_pop.val() {
+        if self.decision.pop.val() {
             for k in 0..4 {
                 if self.taken.q.val() == self.count[k].val() {
                     self.collected[k].d.next = self.gear_front.val();
@@ -232,7 +192,7 @@ impl Logic for FccBeatAssembly {
             }
             self.taken.d.next = self.taken.q.val() + self.one3.val();
         }
-        if self.gear_pop_two.val() {
+        if self.decision.pop_two.val() {
             for k in 1..4 {
                 if self.taken.q.val() == self.count[k - 1].val() {
                     self.collected[k].d.next = self.gear_second.val();
@@ -289,5 +249,10 @@ impl Logic for FccBeatAssembly {
         self.frame_sent.next =
             self.out_valid.q.val() & self.m_axis_tready.val() & self.out_last.q.val();
         self.gear_stalls.next = self.stall_count.q.val();
+        // The copy of `taken` follows its input, read after every
+        // assignment above (reset included).
+        self.taken_copy_q.clock.next = self.clk.val();
+        self.taken_copy_q.d.next = self.taken.d.val();
+        self.taken_copy.next = self.taken_copy_q.q.val();
     }
 }

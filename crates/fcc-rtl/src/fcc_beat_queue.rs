@@ -12,6 +12,7 @@
 use rust_hdl::prelude::*;
 
 use crate::fcc_fanout_reg::FccFanoutReg;
+use crate::fcc_keep_reg::FccKeepReg;
 use crate::types::{kb, vec_of};
 
 /// A decoded beat. A slot source is 0 (label 0), 1 (the run carried in from
@@ -49,8 +50,14 @@ pub struct FccBeatQueue {
     pub pop: Signal<In, Bit>,
     pub head_valid: Signal<Out, Bit>,
     pub head: Signal<Out, Beat>,
+    /// Kept copies of `head_valid` and the head's `need`, for the label
+    /// updater's gearbox-side copy of the pop decision (`fcc_pop_decision`).
+    pub head_valid_copy: Signal<Out, Bit>,
+    pub head_need_copy: Signal<Out, Bits<3>>,
     head_valid_q: FccFanoutReg<Bit>,
     head_q: DFF<Beat>,
+    head_valid_copy_q: FccKeepReg<Bit>,
+    head_need_copy_q: FccKeepReg<Bits<3>>,
     entries: Vec<DFF<Beat>>,
     /// Beats in the ring (0 .. 4); `ring_any_q`: it is not 0.
     ring_count: DFF<Bits<3>>,
@@ -81,8 +88,12 @@ impl FccBeatQueue {
             pop: Default::default(),
             head_valid: Default::default(),
             head: Default::default(),
+            head_valid_copy: Default::default(),
+            head_need_copy: Default::default(),
             head_valid_q: Default::default(),
             head_q: Default::default(),
+            head_valid_copy_q: Default::default(),
+            head_need_copy_q: Default::default(),
             entries: vec_of(RING_BEATS),
             ring_count: Default::default(),
             ring_any_q: Default::default(),
@@ -178,5 +189,13 @@ impl Logic for FccBeatQueue {
             self.read_entry.d.next = self.entry_is[0].val();
             self.write_entry.d.next = self.entry_is[0].val();
         }
+        // The copies follow the head's inputs, read after every assignment
+        // above (clear and reset included).
+        self.head_valid_copy_q.clock.next = self.clk.val();
+        self.head_need_copy_q.clock.next = self.clk.val();
+        self.head_valid_copy_q.d.next = self.head_valid_q.d.val();
+        self.head_need_copy_q.d.next = self.head_q.d.val().need;
+        self.head_valid_copy.next = self.head_valid_copy_q.q.val();
+        self.head_need_copy.next = self.head_need_copy_q.q.val();
     }
 }

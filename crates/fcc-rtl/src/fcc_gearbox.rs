@@ -20,6 +20,7 @@
 use rust_hdl::prelude::*;
 
 use crate::fcc_fanout_reg::FccFanoutReg;
+use crate::fcc_keep_reg::FccKeepReg;
 use crate::types::{kb, vec_of};
 
 /// Entries of the gearbox.
@@ -46,8 +47,14 @@ pub struct FccGearbox {
     /// At least one, at least two labels wait.
     pub has_one: Signal<Out, Bit>,
     pub has_two: Signal<Out, Bit>,
+    /// `has_one` and `has_two` again, from a kept copy of the count: the
+    /// beat assembly's copy of the pop decision reads these, the label
+    /// updater's gearbox-side copy the ones above (`fcc_pop_decision`).
+    pub has_one_copy: Signal<Out, Bit>,
+    pub has_two_copy: Signal<Out, Bit>,
     slots: Vec<DFF<Bits<16>>>,
     count: DFF<Bits<4>>,
+    count_copy: FccKeepReg<Bits<4>>,
     read_slot: DFF<Bits<3>>,
     /// Always `read_slot + 1`: a register of its own, so that each pointer
     /// selects one 16-bit multiplexer (under 64 loads a bit).
@@ -97,8 +104,11 @@ impl FccGearbox {
             used: Default::default(),
             has_one: Default::default(),
             has_two: Default::default(),
+            has_one_copy: Default::default(),
+            has_two_copy: Default::default(),
             slots: vec_of(GEAR_SLOTS),
             count: Default::default(),
+            count_copy: Default::default(),
             read_slot: Default::default(),
             write_slot: Default::default(),
             second_slot: Default::default(),
@@ -256,5 +266,12 @@ impl Logic for FccGearbox {
             self.front_label.d.next = self.empty_slot.val();
             self.second_label.d.next = self.empty_slot.val();
         }
+        // The count's copy follows its input, read after every assignment
+        // above (clear and reset included).
+        self.count_copy.clock.next = self.clk.val();
+        self.count_copy.d.next = self.count.d.val();
+        self.has_one_copy.next = self.count_copy.q.val() != self.count_is[0].val();
+        self.has_two_copy.next = (self.count_copy.q.val() != self.count_is[0].val())
+            & (self.count_copy.q.val() != self.count_is[1].val());
     }
 }

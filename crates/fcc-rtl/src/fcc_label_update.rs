@@ -33,6 +33,7 @@ use crate::fcc_beat_queue::FccBeatQueue;
 use crate::fcc_fb_writer::FccFbWriter;
 use crate::fcc_gearbox::FccGearbox;
 use crate::fcc_keep_reg::FccKeepReg;
+use crate::fcc_pop_decision::FccPopDecision;
 use crate::fcc_ram::FccRam;
 use crate::fcc_rb_pipeline::FccRbPipeline;
 use crate::types::FbWord;
@@ -72,6 +73,9 @@ pub struct FccLabelUpdate {
     pipeline: FccRbPipeline,
     queue: FccBeatQueue,
     gearbox: FccGearbox,
+    /// The gearbox's copy of the pop decision, from kept copies of the head
+    /// beat's state and of `taken` (the assembly has its own copy).
+    gear_decision: FccPopDecision,
     assembly: FccBeatAssembly,
 }
 
@@ -102,6 +106,7 @@ impl FccLabelUpdate {
             pipeline: FccRbPipeline::new(l),
             queue: FccBeatQueue::new(),
             gearbox: FccGearbox::new(),
+            gear_decision: Default::default(),
             assembly: FccBeatAssembly::new(),
         }
     }
@@ -152,8 +157,13 @@ impl Logic for FccLabelUpdate {
         self.gearbox.clear.next = self.rb_start.val();
         self.gearbox.push_valid.next = self.fv.val();
         self.gearbox.push_label.next = self.fval.val();
-        self.gearbox.pop.next = self.assembly.gear_pop.val();
-        self.gearbox.pop_two.next = self.assembly.gear_pop_two.val();
+        self.gear_decision.head_valid.next = self.queue.head_valid_copy.val();
+        self.gear_decision.need.next = self.queue.head_need_copy.val();
+        self.gear_decision.taken.next = self.assembly.taken_copy.val();
+        self.gear_decision.has_one.next = self.gearbox.has_one.val();
+        self.gear_decision.has_two.next = self.gearbox.has_two.val();
+        self.gearbox.pop.next = self.gear_decision.pop.val();
+        self.gearbox.pop_two.next = self.gear_decision.pop_two.val();
         self.gear_used.next = self.gearbox.used.val();
         // ---- The head beat's labels and the output register.
         self.assembly.clear.next = self.rb_start.val();
@@ -161,8 +171,8 @@ impl Logic for FccLabelUpdate {
         self.assembly.head.next = self.queue.head.val();
         self.assembly.gear_front.next = self.gearbox.front.val();
         self.assembly.gear_second.next = self.gearbox.second.val();
-        self.assembly.gear_has_one.next = self.gearbox.has_one.val();
-        self.assembly.gear_has_two.next = self.gearbox.has_two.val();
+        self.assembly.gear_has_one.next = self.gearbox.has_one_copy.val();
+        self.assembly.gear_has_two.next = self.gearbox.has_two_copy.val();
         self.assembly.m_axis_tready.next = self.m_axis_tready.val();
         self.m_axis_tdata.next = self.assembly.m_axis_tdata.val();
         self.m_axis_tkeep.next = self.assembly.m_axis_tkeep.val();

@@ -4,13 +4,13 @@
 //! (`fcc_intra`, `fcc_window`, `fcc_dist_tree`, `fcc_sort_net`,
 //! `fcc_merge_table`, `fcc_label_update`, `fcc_top`, plus the helpers
 //! `fcc_sq_dist`, `fcc_dist_unit`, `fcc_line_buf`, `fcc_fifo`, `fcc_ram`,
-//! `fcc_row_word`, `fcc_keep_reg`, `fcc_prefix_or`, `fcc_any_or`, `fcc_two_or`,
-//! `fcc_pick`; inside `fcc_sort_net`: `fcc_sort_filter` (with `fcc_min_tree`,
+//! `fcc_row_word`, `fcc_keep_reg`, `fcc_fanout_reg`, `fcc_fanout_net`,
+//! `fcc_prefix_or`, `fcc_any_or`, `fcc_two_or`, `fcc_pick`; inside `fcc_sort_net`: `fcc_sort_filter` (with `fcc_min_tree`,
 //! `fcc_known_mask`, `fcc_match_delay`), `fcc_centre_buf`, `fcc_serializer`,
 //! `fcc_join_queue`; inside `fcc_merge_table`: `fcc_table_init`,
 //! `fcc_union_engine`, `fcc_flatten`, `fcc_table_ports`; inside
 //! `fcc_label_update`: `fcc_fb_writer`, `fcc_rb_pipeline`, `fcc_beat_queue`,
-//! `fcc_gearbox`, `fcc_beat_assembly`, `fcc_slot_mux`).
+//! `fcc_gearbox`, `fcc_beat_assembly`, `fcc_pop_decision`, `fcc_slot_mux`).
 //! Sizes that vary with the configuration (K, rows, columns, label bits,
 //! thresholds, labels per beat) are read from [`FccParams`] when the blocks
 //! are built, so one binary generates every configuration.
@@ -97,6 +97,7 @@ mod fcc_match_delay;
 mod fcc_merge_table;
 mod fcc_min_tree;
 mod fcc_pick;
+mod fcc_pop_decision;
 mod fcc_prefix_or;
 mod fcc_ram;
 mod fcc_rb_pipeline;

@@ -41,14 +41,18 @@ pub fn waivers(p: &FccParams) -> String {
     s
 }
 
-/// The waivers of the label updater's slot multiplexers, in `file`.
+/// The waivers of the label updater's slot multiplexers and pop decisions,
+/// in `file`.
 fn slot_mux_waivers(file: &str) -> String {
     format!(
         "// Slot j of a beat holds one of the beat's first j + 1 new labels, so\n\
          // slot j's FccSlotMux reads only those of the collected labels and\n\
          // slot 0's never the gearbox's second label.\n\
          lint_off -rule UNUSEDSIGNAL -file \"*{file}\" -match \"*'collected_k$*\"\n\
-         lint_off -rule UNUSEDSIGNAL -file \"*{file}\" -match \"*'gear_next'*\"\n"
+         lint_off -rule UNUSEDSIGNAL -file \"*{file}\" -match \"*'gear_next'*\"\n\
+         // The gearbox's copy of the pop decision steers the gearbox only;\n\
+         // whether the head beat is complete is the beat assembly's copy's.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{file}\" -match \"*'gear_decision$complete'*\"\n"
     )
 }
 
