@@ -18972,6 +18972,8 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
     reg  [15:0] run_rep$d;
     wire  [15:0] run_rep$q;
     reg  run_rep$clock;
+    reg  [15:0] run_rep_before_net$x;
+    wire  [15:0] run_rep_before_net$y;
     reg  [15:0] run_rep_sm1$d;
     wire  [15:0] run_rep_sm1$q;
     reg  run_rep_sm1$clock;
@@ -19425,6 +19427,7 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
     reg  [32:0] ctr_s0;
     reg  [31:0] ring_s0;
     reg  [15:0] run_rep_before;
+    reg  [15:0] run_rep_choice;
     reg  [15:0] run_rep_after;
     reg  keep_next$0;
     reg  keep_next$1;
@@ -19831,6 +19834,10 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
         .d(run_rep$d),
         .q(run_rep$q),
         .clock(run_rep$clock)
+    );
+    fcc_sort_net__filter__run_rep_before_net_k7_668cf05b run_rep_before_net(
+        .x(run_rep_before_net$x),
+        .y(run_rep_before_net$y)
     );
     fcc_sort_net__filter__run_rep_sm1_k7_668cf05b run_rep_sm1(
         .d(run_rep_sm1$d),
@@ -20852,10 +20859,12 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
         known_mask$hit$18 = match_delay$hit_s1$18;
         known_mask$hit$19 = match_delay$hit_s1$19;
         known_mask$hit$20 = match_delay$hit_s1$20;
-        run_rep_before = ctr_sm$q[18:3];
+        run_rep_choice = ctr_sm$q[18:3];
         if (ctr_sm$q[2:2]) begin
-            run_rep_before = run_rep$q;
+            run_rep_choice = run_rep$q;
         end
+        run_rep_before_net$x = run_rep_choice;
+        run_rep_before = run_rep_before_net$y;
         run_rep_after = run_rep_before;
         if (min_tree$min < run_rep_before) begin
             run_rep_after = min_tree$min;
@@ -48086,6 +48095,21 @@ module fcc_sort_net__filter__run_rep_k7_668cf05b(d,q,clock);
     end
 
 endmodule // fcc_sort_net__filter__run_rep_k7_668cf05b
+
+
+module fcc_sort_net__filter__run_rep_before_net_k7_668cf05b(x,y);
+
+    // Module arguments
+    input wire  [15:0] x;
+    output reg  [15:0] y;
+
+    // Update code (custom)
+    (* max_fanout = 64 *) wire [15:0] net;
+    assign net = x;
+    always @(*) begin
+        y = net;
+    end
+endmodule // fcc_sort_net__filter__run_rep_before_net_k7_668cf05b
 
 
 module fcc_sort_net__filter__run_rep_sm1_k7_668cf05b(d,q,clock);

@@ -41,6 +41,7 @@ use fcc_params::FccParams;
 use rust_hdl::prelude::*;
 
 use crate::fcc_any_or::FccAnyOr;
+use crate::fcc_fanout_net::FccFanoutNet;
 use crate::fcc_fanout_reg::FccFanoutReg;
 use crate::fcc_first_set::FccFirstSet;
 use crate::fcc_group_or::{groups, FccGroupOr};
@@ -115,6 +116,10 @@ pub struct FccSortFilter {
     run_rep: DFF<Bits<16>>,
     /// The run's representative before this centre, and after it.
     run_rep_before: Signal<Local, Bits<16>>,
+    /// `run_rep_before` reaches every position's compare: Vivado replicates
+    /// the multiplexer that chooses it.
+    run_rep_choice: Signal<Local, Bits<16>>,
+    run_rep_before_net: FccFanoutNet<Bits<16>>,
     run_rep_after: Signal<Local, Bits<16>>,
     run_rep_sm1: DFF<Bits<16>>,
     run_rep_sm2: DFF<Bits<16>>,
@@ -195,6 +200,8 @@ impl FccSortFilter {
             known_mask: FccKnownMask::new(k, h, l + 1),
             run_rep: Default::default(),
             run_rep_before: Default::default(),
+            run_rep_choice: Default::default(),
+            run_rep_before_net: Default::default(),
             run_rep_after: Default::default(),
             run_rep_sm1: Default::default(),
             run_rep_sm2: Default::default(),
@@ -326,10 +333,12 @@ impl Logic for FccSortFilter {
             self.known_mask.hit[e].next = self.match_delay.hit_s1[e].val();
         }
         // ---- SM: the run's representative; matches with the smallest one.
-        self.run_rep_before.next = self.ctr_sm.q.val().c;
+        self.run_rep_choice.next = self.ctr_sm.q.val().c;
         if self.ctr_sm.q.val().same_run {
-            self.run_rep_before.next = self.run_rep.q.val();
+            self.run_rep_choice.next = self.run_rep.q.val();
         }
+        self.run_rep_before_net.x.next = self.run_rep_choice.val();
+        self.run_rep_before.next = self.run_rep_before_net.y.val();
         self.run_rep_after.next = self.run_rep_before.val();
         if self.min_tree.min.val() < self.run_rep_before.val() {
             self.run_rep_after.next = self.min_tree.min.val();
