@@ -7998,11 +7998,11 @@ module fcc_label_update__assembly__taken_k7_668cf05b(clock,d,q);
     output reg  [2:0] q;
 
     // Update code (custom)
-    (* max_fanout = 64 *) reg [2:0] held;
+    (* keep = "true" *) reg [2:0] held;
     initial begin
         held = 3'h0;
     end
-    always @(posedge clock) begin
+    (* keep = "true" *) always @(posedge clock) begin
         held <= d;
     end
     always @(*) begin
@@ -8198,9 +8198,9 @@ module fcc_label_update__gearbox_k7_668cf05b(clk,rst,rst_low_slots,rst_high_slot
     reg  [15:0] slots$7$d;
     wire  [15:0] slots$7$q;
     reg  slots$7$clock;
+    reg  count$clock;
     reg  [3:0] count$d;
     wire  [3:0] count$q;
-    reg  count$clock;
     reg  count_copy$clock;
     reg  [3:0] count_copy$d;
     wire  [3:0] count_copy$q;
@@ -8280,9 +8280,9 @@ module fcc_label_update__gearbox_k7_668cf05b(clk,rst,rst_low_slots,rst_high_slot
         .clock(slots$7$clock)
     );
     fcc_label_update__gearbox__count_k7_668cf05b count(
+        .clock(count$clock),
         .d(count$d),
-        .q(count$q),
-        .clock(count$clock)
+        .q(count$q)
     );
     fcc_label_update__gearbox__count_copy_k7_668cf05b count_copy(
         .clock(count_copy$clock),
@@ -8533,22 +8533,24 @@ module fcc_label_update__gearbox_k7_668cf05b(clk,rst,rst_low_slots,rst_high_slot
 endmodule // fcc_label_update__gearbox_k7_668cf05b
 
 
-module fcc_label_update__gearbox__count_k7_668cf05b(d,q,clock);
+module fcc_label_update__gearbox__count_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [3:0] d;
     output reg  [3:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* keep = "true" *) reg [3:0] held;
     initial begin
-       q = 4'h0;
+        held = 4'h0;
     end
-
-    always @(posedge clock) begin
-       q <= d;
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_label_update__gearbox__count_k7_668cf05b
 
 
@@ -10047,6 +10049,9 @@ module fcc_label_update__queue_k7_668cf05b(clk,rst,clear,in_valid,in_beat,pop,he
     reg  [26:0] head_q$d;
     wire  [26:0] head_q$q;
     reg  head_q$clock;
+    reg  head_need_q$clock;
+    reg  [2:0] head_need_q$d;
+    wire  [2:0] head_need_q$q;
     reg  head_valid_copy_q$clock;
     reg  head_valid_copy_q$d;
     wire  head_valid_copy_q$q;
@@ -10094,6 +10099,11 @@ module fcc_label_update__queue_k7_668cf05b(clk,rst,clear,in_valid,in_beat,pop,he
         .d(head_q$d),
         .q(head_q$q),
         .clock(head_q$clock)
+    );
+    fcc_label_update__queue__head_need_q_k7_668cf05b head_need_q(
+        .clock(head_need_q$clock),
+        .d(head_need_q$d),
+        .q(head_need_q$q)
     );
     fcc_label_update__queue__head_valid_copy_q_k7_668cf05b head_valid_copy_q(
         .clock(head_valid_copy_q$clock),
@@ -10231,9 +10241,12 @@ module fcc_label_update__queue_k7_668cf05b(clk,rst,clear,in_valid,in_beat,pop,he
             write_entry$d = entry_is$0;
         end
         head_valid_copy_q$clock = clk;
+        head_need_q$clock = clk;
         head_need_copy_q$clock = clk;
         head_valid_copy_q$d = head_valid_q$d;
+        head_need_q$d = head_q$d[17:15];
         head_need_copy_q$d = head_q$d[17:15];
+        head[17:15] = head_need_q$q;
         head_valid_copy = head_valid_copy_q$q;
         head_need_copy = head_need_copy_q$q;
     end
@@ -10338,6 +10351,27 @@ module fcc_label_update__queue__head_need_copy_q_k7_668cf05b(clock,d,q);
 endmodule // fcc_label_update__queue__head_need_copy_q_k7_668cf05b
 
 
+module fcc_label_update__queue__head_need_q_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  [2:0] d;
+    output reg  [2:0] q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg [2:0] held;
+    initial begin
+        held = 3'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_label_update__queue__head_need_q_k7_668cf05b
+
+
 module fcc_label_update__queue__head_q_k7_668cf05b(d,q,clock);
 
     // Module arguments
@@ -10386,11 +10420,11 @@ module fcc_label_update__queue__head_valid_q_k7_668cf05b(clock,d,q);
     output reg  q;
 
     // Update code (custom)
-    (* max_fanout = 64 *) reg held;
+    (* keep = "true" *) reg held;
     initial begin
         held = 1'h0;
     end
-    always @(posedge clock) begin
+    (* keep = "true" *) always @(posedge clock) begin
         held <= d;
     end
     always @(*) begin

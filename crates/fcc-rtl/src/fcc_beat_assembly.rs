@@ -11,7 +11,6 @@
 use rust_hdl::prelude::*;
 
 use crate::fcc_beat_queue::Beat;
-use crate::fcc_fanout_reg::FccFanoutReg;
 use crate::fcc_keep_reg::FccKeepReg;
 use crate::fcc_pop_decision::FccPopDecision;
 use crate::fcc_slot_mux::{FccSlotMux, OutWord, NEW_LABELS};
@@ -53,7 +52,8 @@ pub struct FccBeatAssembly {
     slot_mux: Vec<FccSlotMux>,
     run_mux: FccSlotMux,
     /// New labels the head beat has collected, and their values.
-    taken: FccFanoutReg<Bits<3>>,
+    /// Kept, as its copy `taken_copy_q` is: neither is merged into the other.
+    taken: FccKeepReg<Bits<3>>,
     collected: Vec<DFF<Bits<16>>>,
     /// The label of the run carried into the head beat.
     carried_run: DFF<Bits<16>>,

@@ -11,7 +11,6 @@
 
 use rust_hdl::prelude::*;
 
-use crate::fcc_fanout_reg::FccFanoutReg;
 use crate::fcc_keep_reg::FccKeepReg;
 use crate::types::{kb, vec_of};
 
@@ -54,8 +53,15 @@ pub struct FccBeatQueue {
     /// updater's gearbox-side copy of the pop decision (`fcc_pop_decision`).
     pub head_valid_copy: Signal<Out, Bit>,
     pub head_need_copy: Signal<Out, Bits<3>>,
-    head_valid_q: FccFanoutReg<Bit>,
+    /// Kept (as its copy below is), so that synthesis merges neither into
+    /// the other.
+    head_valid_q: FccKeepReg<Bit>,
+    /// The head beat; its `need` is read from `head_need_q` (the beat
+    /// assembly's) and `head_need_copy_q` (the gearbox's), two kept
+    /// registers on the same input, so that `head_q`'s own `need` bits are
+    /// left unread (and removed by synthesis).
     head_q: DFF<Beat>,
+    head_need_q: FccKeepReg<Bits<3>>,
     head_valid_copy_q: FccKeepReg<Bit>,
     head_need_copy_q: FccKeepReg<Bits<3>>,
     entries: Vec<DFF<Beat>>,
@@ -92,6 +98,7 @@ impl FccBeatQueue {
             head_need_copy: Default::default(),
             head_valid_q: Default::default(),
             head_q: Default::default(),
+            head_need_q: Default::default(),
             head_valid_copy_q: Default::default(),
             head_need_copy_q: Default::default(),
             entries: vec_of(RING_BEATS),
@@ -192,9 +199,12 @@ impl Logic for FccBeatQueue {
         // The copies follow the head's inputs, read after every assignment
         // above (clear and reset included).
         self.head_valid_copy_q.clock.next = self.clk.val();
+        self.head_need_q.clock.next = self.clk.val();
         self.head_need_copy_q.clock.next = self.clk.val();
         self.head_valid_copy_q.d.next = self.head_valid_q.d.val();
+        self.head_need_q.d.next = self.head_q.d.val().need;
         self.head_need_copy_q.d.next = self.head_q.d.val().need;
+        self.head.next.need = self.head_need_q.q.val();
         self.head_valid_copy.next = self.head_valid_copy_q.q.val();
         self.head_need_copy.next = self.head_need_copy_q.q.val();
     }

@@ -53,7 +53,8 @@ pub struct FccGearbox {
     pub has_one_copy: Signal<Out, Bit>,
     pub has_two_copy: Signal<Out, Bit>,
     slots: Vec<DFF<Bits<16>>>,
-    count: DFF<Bits<4>>,
+    /// Kept, as its copy is: neither is merged into the other.
+    count: FccKeepReg<Bits<4>>,
     count_copy: FccKeepReg<Bits<4>>,
     read_slot: DFF<Bits<3>>,
     /// Always `read_slot + 1`: a register of its own, so that each pointer
