@@ -517,6 +517,8 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
     reg  one_row$d;
     wire  one_row$q;
     reg  one_row$clock;
+    reg  out_start_net$x;
+    wire  out_start_net$y;
 
     // Local signals
     reg  [7:0] run_rows;
@@ -530,6 +532,7 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
     reg  nxt_in_done;
     reg  nxt_run;
     reg  drained;
+    reg  out_start;
 
     // Sub module instances
     fcc_intra_k7_668cf05b intra(
@@ -1039,6 +1042,10 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
         .q(one_row$q),
         .clock(one_row$clock)
     );
+    fcc_top__out_start_net_k7_668cf05b out_start_net(
+        .x(out_start_net$x),
+        .y(out_start_net$y)
+    );
 
     // Update code
     always @(*) begin
@@ -1199,8 +1206,7 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
             last_seen$d = 1'b1;
         end
         drained = last_seen$q & merge_table$union_idle & sort_net$jq_empty;
-        merge_table$flat_start = 1'b0;
-        label_update$rb_start = 1'b0;
+        out_start = 1'b0;
         if ((phase$q == Phase$Init) & ~merge_table$init_busy) begin
             phase$d = Phase$Run;
         end
@@ -1208,10 +1214,12 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
             phase$d = Phase$Drain;
         end
         if ((phase$q == Phase$Drain) & drained) begin
-            merge_table$flat_start = 1'b1;
-            label_update$rb_start = 1'b1;
+            out_start = 1'b1;
             phase$d = Phase$Out;
         end
+        out_start_net$x = out_start;
+        merge_table$flat_start = out_start_net$y;
+        label_update$rb_start = out_start_net$y;
         nxt_run = phase$q == Phase$Run;
         if ((phase$q == Phase$Out) & label_update$rb_done) begin
             phase$d = Phase$Run;
@@ -7523,11 +7531,27 @@ module fcc_label_update__assembly__decision_k7_668cf05b(head_valid,need,taken,ha
     localparam  count$3 = 3'b11;
     localparam  count$4 = 3'b100;
 
+    // Stub signals
+    reg  pop_net$x;
+    wire  pop_net$y;
+    reg  pop_two_net$x;
+    wire  pop_two_net$y;
+
     // Local signals
     reg  needs_none;
     reg  needs_one;
     reg  needs_two;
     reg  needs_two_plus;
+
+    // Sub module instances
+    fcc_label_update__assembly__decision__pop_net_k7_668cf05b pop_net(
+        .x(pop_net$x),
+        .y(pop_net$y)
+    );
+    fcc_label_update__assembly__decision__pop_two_net_k7_668cf05b pop_two_net(
+        .x(pop_two_net$x),
+        .y(pop_two_net$y)
+    );
 
     // Update code
     always @(*) begin
@@ -7568,12 +7592,44 @@ module fcc_label_update__assembly__decision_k7_668cf05b(head_valid,need,taken,ha
         if ((taken == count$0) & (need == count$4)) begin
             needs_two_plus = 1'b1;
         end
-        pop_two = head_valid & needs_two_plus & has_two;
-        pop = head_valid & ~needs_none & has_one;
+        pop_two_net$x = head_valid & needs_two_plus & has_two;
+        pop_net$x = head_valid & ~needs_none & has_one;
+        pop_two = pop_two_net$y;
+        pop = pop_net$y;
         complete = needs_none | (needs_one & has_one) | (needs_two & has_two);
     end
 
 endmodule // fcc_label_update__assembly__decision_k7_668cf05b
+
+
+module fcc_label_update__assembly__decision__pop_net_k7_668cf05b(x,y);
+
+    // Module arguments
+    input wire  x;
+    output reg  y;
+
+    // Update code (custom)
+    (* max_fanout = 64 *) wire net;
+    assign net = x;
+    always @(*) begin
+        y = net;
+    end
+endmodule // fcc_label_update__assembly__decision__pop_net_k7_668cf05b
+
+
+module fcc_label_update__assembly__decision__pop_two_net_k7_668cf05b(x,y);
+
+    // Module arguments
+    input wire  x;
+    output reg  y;
+
+    // Update code (custom)
+    (* max_fanout = 64 *) wire net;
+    assign net = x;
+    always @(*) begin
+        y = net;
+    end
+endmodule // fcc_label_update__assembly__decision__pop_two_net_k7_668cf05b
 
 
 module fcc_label_update__assembly__out_data_k7_668cf05b(d,q,clock);
@@ -8083,11 +8139,27 @@ module fcc_label_update__gear_decision_k7_668cf05b(head_valid,need,taken,has_one
     localparam  count$3 = 3'b11;
     localparam  count$4 = 3'b100;
 
+    // Stub signals
+    reg  pop_net$x;
+    wire  pop_net$y;
+    reg  pop_two_net$x;
+    wire  pop_two_net$y;
+
     // Local signals
     reg  needs_none;
     reg  needs_one;
     reg  needs_two;
     reg  needs_two_plus;
+
+    // Sub module instances
+    fcc_label_update__gear_decision__pop_net_k7_668cf05b pop_net(
+        .x(pop_net$x),
+        .y(pop_net$y)
+    );
+    fcc_label_update__gear_decision__pop_two_net_k7_668cf05b pop_two_net(
+        .x(pop_two_net$x),
+        .y(pop_two_net$y)
+    );
 
     // Update code
     always @(*) begin
@@ -8128,12 +8200,44 @@ module fcc_label_update__gear_decision_k7_668cf05b(head_valid,need,taken,has_one
         if ((taken == count$0) & (need == count$4)) begin
             needs_two_plus = 1'b1;
         end
-        pop_two = head_valid & needs_two_plus & has_two;
-        pop = head_valid & ~needs_none & has_one;
+        pop_two_net$x = head_valid & needs_two_plus & has_two;
+        pop_net$x = head_valid & ~needs_none & has_one;
+        pop_two = pop_two_net$y;
+        pop = pop_net$y;
         complete = needs_none | (needs_one & has_one) | (needs_two & has_two);
     end
 
 endmodule // fcc_label_update__gear_decision_k7_668cf05b
+
+
+module fcc_label_update__gear_decision__pop_net_k7_668cf05b(x,y);
+
+    // Module arguments
+    input wire  x;
+    output reg  y;
+
+    // Update code (custom)
+    (* max_fanout = 64 *) wire net;
+    assign net = x;
+    always @(*) begin
+        y = net;
+    end
+endmodule // fcc_label_update__gear_decision__pop_net_k7_668cf05b
+
+
+module fcc_label_update__gear_decision__pop_two_net_k7_668cf05b(x,y);
+
+    // Module arguments
+    input wire  x;
+    output reg  y;
+
+    // Update code (custom)
+    (* max_fanout = 64 *) wire net;
+    assign net = x;
+    always @(*) begin
+        y = net;
+    end
+endmodule // fcc_label_update__gear_decision__pop_two_net_k7_668cf05b
 
 
 module fcc_label_update__gearbox_k7_668cf05b(clk,rst,rst_low_slots,rst_high_slots,clear,push_valid,push_label,pop,pop_two,front,second,used,has_one,has_two,has_one_copy,has_two_copy);
@@ -13342,6 +13446,21 @@ module fcc_top__one_row_k7_668cf05b(d,q,clock);
     end
 
 endmodule // fcc_top__one_row_k7_668cf05b
+
+
+module fcc_top__out_start_net_k7_668cf05b(x,y);
+
+    // Module arguments
+    input wire  x;
+    output reg  y;
+
+    // Update code (custom)
+    (* max_fanout = 64 *) wire net;
+    assign net = x;
+    always @(*) begin
+        y = net;
+    end
+endmodule // fcc_top__out_start_net_k7_668cf05b
 
 
 module fcc_top__pad_k7_668cf05b(d,q,clock);

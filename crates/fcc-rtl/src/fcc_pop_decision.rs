@@ -17,6 +17,7 @@
 
 use rust_hdl::prelude::*;
 
+use crate::fcc_fanout_net::FccFanoutNet;
 use crate::fcc_slot_mux::NEW_LABELS;
 use crate::types::kb;
 
@@ -36,6 +37,10 @@ pub struct FccPopDecision {
     needs_one: Signal<Local, Bit>,
     needs_two: Signal<Local, Bit>,
     needs_two_plus: Signal<Local, Bit>,
+    /// `pop` and `pop_two` still select a side's 16-bit multiplexers (up
+    /// to 67 loads at K = 11): Vivado replicates their logic.
+    pop_net: FccFanoutNet<Bit>,
+    pop_two_net: FccFanoutNet<Bit>,
     count: Vec<Constant<Bits<3>>>,
 }
 
@@ -54,6 +59,8 @@ impl Default for FccPopDecision {
             needs_one: Default::default(),
             needs_two: Default::default(),
             needs_two_plus: Default::default(),
+            pop_net: Default::default(),
+            pop_two_net: Default::default(),
             count: (0..=NEW_LABELS).map(|n| kb(n as u64)).collect(),
         }
     }
@@ -91,8 +98,11 @@ impl Logic for FccPopDecision {
         if (self.taken.val() == self.count[0].val()) & (self.need.val() == self.count[4].val()) {
             self.needs_two_plus.next = true;
         }
-        self.pop_two.next = self.head_valid.val() & self.needs_two_plus.val() & self.has_two.val();
-        self.pop.next = self.head_valid.val() & !self.needs_none.val() & self.has_one.val();
+        self.pop_two_net.x.next =
+            self.head_valid.val() & self.needs_two_plus.val() & self.has_two.val();
+        self.pop_net.x.next = self.head_valid.val() & !self.needs_none.val() & self.has_one.val();
+        self.pop_two.next = self.pop_two_net.y.val();
+        self.pop.next = self.pop_net.y.val();
         self.complete.next = self.needs_none.val()
             | (self.needs_one.val() & self.has_one.val())
             | (self.needs_two.val() & self.has_two.val());

@@ -26,6 +26,7 @@ use fcc_params::FccParams;
 use rust_hdl::prelude::*;
 
 use crate::fcc_dist_tree::FccDistTree;
+use crate::fcc_fanout_net::FccFanoutNet;
 use crate::fcc_fanout_reg::MAX_FANOUT;
 use crate::fcc_intra::FccIntra;
 use crate::fcc_keep_reg::FccKeepReg;
@@ -154,6 +155,10 @@ pub struct FccTop {
     nxt_in_done: Signal<Local, Bit>,
     nxt_run: Signal<Local, Bit>,
     drained: Signal<Local, Bit>,
+    /// The output phase starts: flatten and the read-back start (one net
+    /// that reaches some 90 registers at K = 11; Vivado replicates it).
+    out_start: Signal<Local, Bit>,
+    out_start_net: FccFanoutNet<Bit>,
     // Constants.
     sign16: Constant<Bits<16>>,
     zero8: Constant<Bits<8>>,
@@ -254,6 +259,8 @@ impl FccTop {
             nxt_in_done: Default::default(),
             nxt_run: Default::default(),
             drained: Default::default(),
+            out_start: Default::default(),
+            out_start_net: Default::default(),
             sign16: kb(0x8000),
             zero8: kb(0),
             one8: kb(1),
@@ -403,8 +410,7 @@ impl Logic for FccTop {
         self.drained.next = self.last_seen.q.val()
             & self.merge_table.union_idle.val()
             & self.sort_net.jq_empty.val();
-        self.merge_table.flat_start.next = false;
-        self.label_update.rb_start.next = false;
+        self.out_start.next = false;
         if (self.phase.q.val() == Phase::Init) & !self.merge_table.init_busy.val() {
             self.phase.d.next = Phase::Run;
         }
@@ -412,10 +418,12 @@ impl Logic for FccTop {
             self.phase.d.next = Phase::Drain;
         }
         if (self.phase.q.val() == Phase::Drain) & self.drained.val() {
-            self.merge_table.flat_start.next = true;
-            self.label_update.rb_start.next = true;
+            self.out_start.next = true;
             self.phase.d.next = Phase::Out;
         }
+        self.out_start_net.x.next = self.out_start.val();
+        self.merge_table.flat_start.next = self.out_start_net.y.val();
+        self.label_update.rb_start.next = self.out_start_net.y.val();
         self.nxt_run.next = self.phase.q.val() == Phase::Run;
         if (self.phase.q.val() == Phase::Out) & self.label_update.rb_done.val() {
             self.phase.d.next = Phase::Run;
