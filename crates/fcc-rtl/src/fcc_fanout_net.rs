@@ -10,6 +10,7 @@
 use rust_hdl::prelude::*;
 
 use crate::fcc_fanout_reg::MAX_FANOUT;
+use crate::fcc_keep_reg::verilog_range;
 
 #[derive(LogicBlock, Default)]
 pub struct FccFanoutNet<T: Synth> {
@@ -27,18 +28,13 @@ impl<T: Synth> Logic for FccFanoutNet<T> {
     }
 
     fn hdl(&self) -> Verilog {
-        let w = T::BITS;
-        let range = if w == 1 {
-            String::new()
-        } else {
-            format!("[{}:0] ", w - 1)
-        };
         Verilog::Custom(format!(
             "(* max_fanout = {MAX_FANOUT} *) wire {range}net;\n\
              assign net = x;\n\
              always @(*) begin\n\
              \x20   y = net;\n\
-             end\n"
+             end\n",
+            range = verilog_range(T::BITS)
         ))
     }
 }

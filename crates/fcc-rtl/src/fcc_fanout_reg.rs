@@ -16,6 +16,8 @@
 
 use rust_hdl::prelude::*;
 
+use crate::fcc_keep_reg::register_verilog;
+
 /// The fanout target: loads per copy that Vivado replicates a marked driver
 /// down to, and above which `fcc synth` reports a net.
 pub const MAX_FANOUT: usize = 64;
@@ -39,25 +41,7 @@ impl<T: Synth> Logic for FccFanoutReg<T> {
     }
 
     fn hdl(&self) -> Verilog {
-        let w = T::BITS;
-        let range = if w == 1 {
-            String::new()
-        } else {
-            format!("[{}:0] ", w - 1)
-        };
-        Verilog::Custom(format!(
-            "(* max_fanout = {MAX_FANOUT} *) reg {range}held;\n\
-             initial begin\n\
-             \x20   held = {init:x};\n\
-             end\n\
-             always @(posedge clock) begin\n\
-             \x20   held <= d;\n\
-             end\n\
-             always @(*) begin\n\
-             \x20   q = held;\n\
-             end\n",
-            init = T::default().verilog()
-        ))
+        register_verilog::<T>(&format!("max_fanout = {MAX_FANOUT}"), "")
     }
 
     fn timing(&self) -> Vec<TimingInfo> {

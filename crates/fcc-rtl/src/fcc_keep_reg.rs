@@ -62,29 +62,12 @@ impl<T: Synth> Logic for FccKeepReg<T> {
     }
 
     fn hdl(&self) -> Verilog {
-        let w = T::BITS;
-        let range = if w == 1 {
-            String::new()
-        } else {
-            format!("[{}:0] ", w - 1)
-        };
-        let attrs = match self._max_fanout {
-            Some(n) => format!("max_fanout = {n}"),
-            None => "keep = \"true\"".to_string(),
-        };
-        Verilog::Custom(format!(
-            "(* {attrs} *) reg {range}held;\n\
-             initial begin\n\
-             \x20   held = {init:x};\n\
-             end\n\
-             (* keep = \"true\" *) always @(posedge clock) begin\n\
-             \x20   held <= d;\n\
-             end\n\
-             always @(*) begin\n\
-             \x20   q = held;\n\
-             end\n",
-            init = T::default().verilog()
-        ))
+        match self._max_fanout {
+            Some(n) => {
+                register_verilog::<T>(&format!("max_fanout = {n}"), "(* keep = \"true\" *) ")
+            }
+            None => register_verilog::<T>("keep = \"true\"", "(* keep = \"true\" *) "),
+        }
     }
 
     fn timing(&self) -> Vec<TimingInfo> {
@@ -94,5 +77,34 @@ impl<T: Synth> Logic for FccKeepReg<T> {
             inputs: vec!["d".into()],
             outputs: vec!["q".into()],
         }]
+    }
+}
+
+/// The Verilog of a rust-hdl `DFF` of `T` written by hand: the register
+/// `held` carries `reg_attrs`, its clocked process starts with
+/// `process_prefix` (an attribute or nothing), `q` follows `held`.
+pub(crate) fn register_verilog<T: Synth>(reg_attrs: &str, process_prefix: &str) -> Verilog {
+    Verilog::Custom(format!(
+        "(* {reg_attrs} *) reg {range}held;\n\
+         initial begin\n\
+         \x20   held = {init:x};\n\
+         end\n\
+         {process_prefix}always @(posedge clock) begin\n\
+         \x20   held <= d;\n\
+         end\n\
+         always @(*) begin\n\
+         \x20   q = held;\n\
+         end\n",
+        range = verilog_range(T::BITS),
+        init = T::default().verilog()
+    ))
+}
+
+/// A declaration's range for `bits` bits (`[bits-1:0] `, nothing for one).
+pub(crate) fn verilog_range(bits: usize) -> String {
+    if bits == 1 {
+        String::new()
+    } else {
+        format!("[{}:0] ", bits - 1)
     }
 }
