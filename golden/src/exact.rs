@@ -131,13 +131,16 @@ impl Exact {
             let base = px.len();
             starts.clear();
             let mut prev = [i16::MIN; 3];
+            // One past the previous valid pixel's column.
+            let mut after_prev = 0usize;
             for (c, q) in row.iter().enumerate() {
                 if let Some(p) = *q {
-                    if dist2(p, prev) > th_sq {
+                    if !params.bridges(c - after_prev) || dist2(p, prev) > th_sq {
                         starts.push((px.len() - base) as u32);
                     }
                     px.push([p[0], p[1], p[2], c as u16 as i16]);
                     prev = p;
+                    after_prev = c + 1;
                 }
             }
             let row_px = &px[base..];
@@ -179,6 +182,7 @@ impl Exact {
             // different, are joined when their end points are within tH.
             if runs.len() >= first_run + 2
                 && runs[runs.len() - 1].end as usize == n
+                && params.ring_reaches(col(first_px), col(last_px))
                 && dist2(point(first_px), point(last_px)) <= th_sq
             {
                 ring_joins.push((first_run as u32 + 1, runs.len() as u32));

@@ -26,14 +26,18 @@ mod frame;
 mod merge;
 mod pass1;
 mod pass2;
+mod records;
 /// The pixel-level reference used by tests; not for production use.
 pub mod reference;
+mod stream;
 
 pub use frame::{dist2, quantize, quantize_point, Frame, Point};
 pub use merge::{renumber, ExactMerge, PaperMerge};
 pub use pass1::{pass1, pass1_released, runs_needed, Pass1, Run};
 pub use pass2::{pass2, JoinSink};
 use pass2::{pass2_with, Pass2Buffers};
+pub use records::{frame_records, oriented_box, OrientedBox, Record};
+pub use stream::{Stream, StreamStats};
 
 use fcc_params::{FccParams, ParamError};
 use serde::{Deserialize, Serialize};
@@ -75,6 +79,12 @@ pub enum GoldenError {
         got_rows: usize,
         got_cols: usize,
     },
+    #[error("a column holds {got} pixels, the frame has {rows} rows")]
+    ColumnLength { rows: usize, got: usize },
+    #[error("the frame already has its {cols} columns: finish it before the next")]
+    TooManyColumns { cols: usize },
+    #[error("the frame has {got} of its {cols} columns")]
+    Unfinished { cols: usize, got: usize },
     #[error("frame holds {got} pixels, {rows} x {cols} needs {expected}")]
     Length {
         rows: usize,

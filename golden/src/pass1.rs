@@ -1,7 +1,7 @@
 //! Pass 1: intra-channel grouping with the ring check (spec §3, and §6 for
 //! the released code's ring handling).
 
-use crate::frame::{dist2, Frame};
+use crate::frame::{dist2, Frame, Point};
 use fcc_params::FccParams;
 
 /// One labelled run: a label and the columns of its first and last valid
@@ -49,11 +49,12 @@ impl Pass1 {
 /// Label the runs of every row.
 ///
 /// Each valid pixel is compared with the previous valid pixel of its row
-/// (empty pixels are skipped, they do not break a run): `d2 <= tH^2`
-/// continues the run, otherwise a new run starts with the next provisional
-/// label. Labels are allocated in raster order over the whole frame. When a
-/// row has at least two valid pixels and its first and last valid pixels are
-/// within `tH`, their runs are joined (the ring closes at azimuth 0).
+/// (empty pixels are skipped; they break a run only beyond the bridge limit):
+/// `d2 <= tH^2` continues the run, otherwise a new run starts with the next
+/// provisional label. Labels are allocated in raster order over the whole
+/// frame. When a row has at least two valid pixels, its first and last valid
+/// pixels are within `tH` and within the ring reach, their runs are joined
+/// (the ring closes at azimuth 0).
 pub fn pass1(params: &FccParams, frame: &Frame) -> Pass1 {
     let mut out = Pass1::default();
     label_runs(params, frame, RingHandling::Join, &mut out);
@@ -141,7 +142,7 @@ pub(crate) fn label_runs(params: &FccParams, frame: &Frame, ring: RingHandling, 
         for (c, p) in row_pts.iter().enumerate().skip(f + 1) {
             let Some(p) = *p else { continue };
             points += 1;
-            if dist2(p, prev) > th_sq {
+            if !params.bridges(c - last - 1) || dist2(p, prev) > th_sq {
                 close(current, start, last, &mut unlabelled);
                 current = new_label(&mut overflow);
                 start = c;
@@ -158,6 +159,7 @@ pub(crate) fn label_runs(params: &FccParams, frame: &Frame, ring: RingHandling, 
         if first_label != 0
             && current != 0
             && first_label != current
+            && params.ring_reaches(f, last)
             && dist2(first_point, prev) <= th_sq
         {
             match ring {
@@ -190,13 +192,15 @@ pub fn runs_needed(params: &FccParams, frame: &Frame) -> u64 {
     let th_sq = params.th_h_sq();
     let mut runs = 0u64;
     for row in frame.points.chunks_exact(frame.cols) {
-        let mut prev = None;
-        for p in row.iter().flatten() {
-            let continues = prev.is_some_and(|q| dist2(*p, q) <= th_sq);
+        let mut prev: Option<(usize, Point)> = None;
+        for (c, p) in row.iter().enumerate() {
+            let Some(p) = *p else { continue };
+            let continues =
+                prev.is_some_and(|(b, q)| params.bridges(c - b - 1) && dist2(p, q) <= th_sq);
             if !continues {
                 runs += 1;
             }
-            prev = Some(*p);
+            prev = Some((c, p));
         }
     }
     runs

@@ -42,13 +42,14 @@ pub fn reference_labels(params: &FccParams, frame: &Frame) -> Vec<u32> {
         let mut on = false;
         for c in 0..cols {
             if let Some(p) = frame.get(r, c) {
-                let cont = matches!(prev, Some(q) if dist2(p, q) <= params.th_h_sq());
+                let cont = matches!(prev, Some((b, q)) if params.bridges(c - b - 1)
+                    && dist2(p, q) <= params.th_h_sq());
                 if !cont {
                     runs += 1;
                     on = runs <= u64::from(params.max_label());
                 }
                 labelled[idx(r, c)] = on;
-                prev = Some(p);
+                prev = Some((c, p));
             }
         }
     }
@@ -59,6 +60,7 @@ pub fn reference_labels(params: &FccParams, frame: &Frame) -> Vec<u32> {
             let (a, b) = (idx(r, w[0]), idx(r, w[1]));
             if labelled[a]
                 && labelled[b]
+                && params.bridges(w[1] - w[0] - 1)
                 && dist2(frame.get(r, w[0]).unwrap(), frame.get(r, w[1]).unwrap())
                     <= params.th_h_sq()
             {
@@ -70,6 +72,7 @@ pub fn reference_labels(params: &FccParams, frame: &Frame) -> Vec<u32> {
             let (a, b) = (idx(r, f), idx(r, l));
             if labelled[a]
                 && labelled[b]
+                && params.ring_reaches(f, l)
                 && dist2(frame.get(r, f).unwrap(), frame.get(r, l).unwrap()) <= params.th_h_sq()
             {
                 dsu.union(a, b);

@@ -27,6 +27,21 @@ pub struct ModelArgs {
     /// Merge: `exact` connected components, or the published `paper` table.
     #[arg(long, default_value = "exact")]
     pub merge: MergeMode,
+    #[command(flatten)]
+    pub limits: LimitArgs,
+}
+
+/// The reach limits of pass 1 (spec §3), unlimited unless given.
+#[derive(Args, Debug, Clone, Default)]
+pub struct LimitArgs {
+    /// Pass 1 bridge limit: consecutive valid pixels of a row with more than
+    /// N empty pixels between them start a new run (default: unlimited).
+    #[arg(long, value_name = "N")]
+    pub bridge: Option<u32>,
+    /// Ring reach: the ring check applies only when the row's first valid
+    /// pixel is in columns 0..N-1 and its last in C-N..C-1 (default: unlimited).
+    #[arg(long, value_name = "N")]
+    pub ring_reach: Option<u32>,
 }
 
 impl ModelArgs {
@@ -39,6 +54,8 @@ impl ModelArgs {
             th_h: self.th_h,
             th_v: self.th_v,
             label_bits: self.label_bits,
+            bridge: self.limits.bridge,
+            ring_reach: self.limits.ring_reach,
             ..defaults()
         };
         p.validate()?;
@@ -73,6 +90,9 @@ pub struct HwArgs {
     /// Labels per output beat: 1, 2 or 4.
     #[arg(long, default_value_t = defaults().labels_per_beat)]
     pub labels_per_beat: u32,
+    /// Refused by the row-major core (it keeps the unlimited contract).
+    #[command(flatten)]
+    pub limits: LimitArgs,
 }
 
 impl HwArgs {
@@ -87,6 +107,8 @@ impl HwArgs {
             label_bits: self.label_bits,
             clock_mhz: self.clock_mhz,
             labels_per_beat: self.labels_per_beat,
+            bridge: self.limits.bridge,
+            ring_reach: self.limits.ring_reach,
         }
     }
 

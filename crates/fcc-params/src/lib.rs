@@ -78,6 +78,16 @@ pub struct FccParams {
     pub clock_mhz: f64,
     /// Output labels packed per AXI4-Stream beat (hardware only).
     pub labels_per_beat: u32,
+    /// Pass 1 bridge limit (spec §3): two consecutive valid pixels of a row
+    /// with more than this many empty pixels between them are not compared
+    /// (the later one starts a new run). `None`: unlimited.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub bridge: Option<u32>,
+    /// Ring-check reach (spec §3): the ring check applies only when the
+    /// row's first valid pixel lies in columns `0 .. N-1` and its last in
+    /// `C-N .. C-1`. `None`: unlimited.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ring_reach: Option<u32>,
 }
 
 impl Default for FccParams {
@@ -92,6 +102,8 @@ impl Default for FccParams {
             label_bits: 15,
             clock_mhz: 200.0,
             labels_per_beat: 4,
+            bridge: None,
+            ring_reach: None,
         }
     }
 }
@@ -131,11 +143,36 @@ impl FccParams {
     /// [`validate`](Self::validate), plus the tighter ranges of the RTL generator.
     pub fn validate_for_hardware(&self) -> Result<(), ParamError> {
         self.validate()?;
+        // The row-major core follows the unlimited contract.
+        for (field, v) in [("bridge", self.bridge), ("ring_reach", self.ring_reach)] {
+            if let Some(v) = v {
+                return Err(range_err(
+                    field,
+                    v,
+                    "unlimited only: the row-major core has no limit (the stream and the golden model do)",
+                ));
+            }
+        }
         check_range("rows", self.rows, &limits::HW_ROWS)?;
         check_range("cols", self.cols, &limits::HW_COLS)?;
         check_fsize("fsize", self.fsize, &limits::HW_FSIZE)?;
         check_range("label_bits", self.label_bits, &limits::HW_LABEL_BITS)?;
         Ok(())
+    }
+
+    /// Whether pass 1 compares two consecutive valid pixels of a row with
+    /// `gap` empty pixels between them (spec §3, the bridge limit).
+    #[inline]
+    pub fn bridges(&self, gap: usize) -> bool {
+        self.bridge.is_none_or(|n| gap <= n as usize)
+    }
+
+    /// Whether the ring check applies to a row whose first and last valid
+    /// pixels lie in columns `first` and `last` (spec §3, the ring reach).
+    #[inline]
+    pub fn ring_reaches(&self, first: usize, last: usize) -> bool {
+        self.ring_reach
+            .is_none_or(|n| first < n as usize && last + n as usize >= self.cols)
     }
 
     /// Window half-size h = (K - 1) / 2: rows above the centre, columns either side.
@@ -185,8 +222,9 @@ impl FccParams {
     }
 
     /// Every field as `(name, value)`, in declaration order: the one list that
-    /// summaries and command lines are made from.
-    pub fn fields(&self) -> [(&'static str, String); 8] {
+    /// summaries and command lines are made from. The limits appear only
+    /// when set, as in the JSON.
+    pub fn fields(&self) -> Vec<(&'static str, String)> {
         // No `..`: a new field must be added here to compile.
         let FccParams {
             rows,
@@ -197,8 +235,11 @@ impl FccParams {
             label_bits,
             clock_mhz,
             labels_per_beat,
+            bridge,
+            ring_reach,
         } = self;
-        [
+        let limits = [("bridge", bridge), ("ring_reach", ring_reach)];
+        let mut fields = vec![
             ("rows", rows.to_string()),
             ("cols", cols.to_string()),
             ("fsize", fsize.to_string()),
@@ -207,7 +248,13 @@ impl FccParams {
             ("label_bits", label_bits.to_string()),
             ("clock_mhz", clock_mhz.to_string()),
             ("labels_per_beat", labels_per_beat.to_string()),
-        ]
+        ];
+        fields.extend(
+            limits
+                .into_iter()
+                .filter_map(|(name, v)| Some((name, v.as_ref()?.to_string()))),
+        );
+        fields
     }
 
     /// The parameters as canonical JSON (stable field order), as written beside generated files.
@@ -305,6 +352,54 @@ mod tests {
             .collect();
         let names: Vec<&str> = FccParams::default().fields().iter().map(|f| f.0).collect();
         assert_eq!(names, keys);
+    }
+
+    #[test]
+    fn limits_are_in_the_json_and_fields_only_when_set() {
+        let p = FccParams {
+            bridge: Some(16),
+            ring_reach: Some(0),
+            ..Default::default()
+        };
+        let json = p.to_json();
+        let keys: Vec<&str> = json
+            .lines()
+            .filter_map(|l| l.trim().strip_prefix('"')?.split('"').next())
+            .collect();
+        let names: Vec<&str> = p.fields().iter().map(|f| f.0).collect();
+        assert_eq!(names, keys);
+        assert!(keys.ends_with(&["bridge", "ring_reach"]));
+        let q: FccParams = serde_json::from_str(&json).unwrap();
+        assert_eq!(p, q);
+        assert_ne!(p.hash(), FccParams::default().hash());
+        assert!(!FccParams::default().to_json().contains("bridge"));
+    }
+
+    #[test]
+    fn bridge_and_ring_reach_rules() {
+        let mut p = FccParams {
+            cols: 100,
+            ..Default::default()
+        };
+        assert!(p.bridges(5000) && p.ring_reaches(99, 0));
+        p.bridge = Some(2);
+        assert!(p.bridges(0) && p.bridges(2) && !p.bridges(3));
+        p.ring_reach = Some(3);
+        assert!(p.ring_reaches(2, 97) && !p.ring_reaches(3, 97) && !p.ring_reaches(2, 96));
+        p.ring_reach = Some(0);
+        assert!(!p.ring_reaches(0, 99));
+    }
+
+    #[test]
+    fn limits_are_refused_by_the_row_major_core() {
+        let p = FccParams {
+            bridge: Some(16),
+            ..Default::default()
+        };
+        p.validate().unwrap();
+        let e = p.validate_for_hardware().unwrap_err();
+        assert_eq!(e.field, "bridge");
+        assert!(e.to_string().contains("row-major core"), "{e}");
     }
 
     #[test]

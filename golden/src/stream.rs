@@ -1,0 +1,444 @@
+//! The stream (spec §9): columns in scan order in, one [`Record`] per
+//! cluster out as soon as no later pixel can join it.
+//!
+//! Runs get an index in the order they start (column order); a union-find
+//! over run indices holds the clusters, each root with its record being
+//! accumulated ([`Acc`]) and a list of its pixels. After each column the
+//! holds of spec §9.2 are marked on the roots that have them; every open
+//! root without one closes. All buffers are kept from one frame to the next.
+
+use crate::frame::{dist2, Point};
+use crate::records::{Acc, Record};
+use crate::GoldenError;
+use fcc_params::FccParams;
+use serde::Serialize;
+
+/// No run: an empty or unlabelled pixel; the end of a pixel list.
+const NONE: u32 = u32::MAX;
+
+/// A row's first or latest valid pixel: column, point, run (or [`NONE`]).
+#[derive(Debug, Clone, Copy)]
+struct Seen {
+    col: u32,
+    p: Point,
+    run: u32,
+}
+
+/// What the stream reports per frame besides the records.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize)]
+pub struct StreamStats {
+    /// Valid pixels.
+    pub points: usize,
+    /// Runs that received a provisional label.
+    pub runs: u32,
+    /// Clusters (records) of the frame.
+    pub clusters: u32,
+    /// Some run started while every provisional label was in use.
+    pub overflow: bool,
+    /// Valid pixels left unlabelled by overflow.
+    pub unlabelled: usize,
+    /// Most provisional labels in use at once.
+    pub peak_labels: u32,
+}
+
+/// The golden stream. Make one with [`Stream::new`], then per frame call
+/// [`push_column`](Self::push_column) for columns `0 .. C-1` and
+/// [`finish`](Self::finish); the next push starts the next frame.
+#[derive(Debug, Clone)]
+pub struct Stream {
+    params: FccParams,
+    /// Frames finished so far: the `frame` of the current frame's records.
+    frame: u64,
+    /// Columns taken in the current frame.
+    col: usize,
+    /// The current frame has been finished (its labels can be read).
+    finished: bool,
+    first: Vec<Option<Seen>>,
+    latest: Vec<Option<Seen>>,
+    /// The last h + 1 columns: point and run of each labelled pixel, `R`
+    /// entries per column, column `c` in slot `c % (h + 1)`.
+    window: Vec<(Point, u32)>,
+    /// Per run: union-find parent, record (at roots), labels held (at
+    /// roots), pixel list head and tail (at roots), the column-order index
+    /// of its first pixel (at roots), hold stamp, record id once closed.
+    parent: Vec<u32>,
+    acc: Vec<Acc>,
+    labels_held: Vec<u32>,
+    head: Vec<u32>,
+    tail: Vec<u32>,
+    first_px: Vec<u32>,
+    held: Vec<u32>,
+    id: Vec<u32>,
+    /// Per pixel (raster order): its run, its point (when labelled) and the
+    /// next pixel of its cluster's list.
+    pixel_run: Vec<u32>,
+    pixel_point: Vec<Point>,
+    next_px: Vec<u32>,
+    /// Roots of the open clusters (and roots merged away, dropped lazily).
+    open: Vec<u32>,
+    closing: Vec<(u32, u32)>,
+    in_use: u32,
+    stats: StreamStats,
+    out: Vec<Record>,
+    out_points: Vec<Point>,
+    out_ranges: Vec<(usize, usize)>,
+}
+
+impl Stream {
+    /// A stream for frames of `params.rows` x `params.cols`.
+    pub fn new(params: &FccParams) -> Result<Stream, GoldenError> {
+        params.validate()?;
+        let (r, n) = (params.rows, params.pixels());
+        Ok(Stream {
+            params: params.clone(),
+            frame: 0,
+            col: 0,
+            finished: false,
+            first: vec![None; r],
+            latest: vec![None; r],
+            window: vec![([0; 3], NONE); r * (params.half() + 1)],
+            parent: Vec::new(),
+            acc: Vec::new(),
+            labels_held: Vec::new(),
+            head: Vec::new(),
+            tail: Vec::new(),
+            first_px: Vec::new(),
+            held: Vec::new(),
+            id: Vec::new(),
+            pixel_run: vec![NONE; n],
+            pixel_point: vec![[0; 3]; n],
+            next_px: vec![NONE; n],
+            open: Vec::new(),
+            closing: Vec::new(),
+            in_use: 0,
+            stats: StreamStats::default(),
+            out: Vec::new(),
+            out_points: Vec::new(),
+            out_ranges: Vec::new(),
+        })
+    }
+
+    /// The parameters of this stream.
+    pub fn params(&self) -> &FccParams {
+        &self.params
+    }
+
+    /// Columns taken in the current frame.
+    pub fn columns_taken(&self) -> usize {
+        if self.finished {
+            0
+        } else {
+            self.col
+        }
+    }
+
+    /// Take the next column (`R` pixels, row 0 first) and return the records
+    /// of the clusters that closed at it, in id order.
+    pub fn push_column(&mut self, column: &[Option<Point>]) -> Result<&[Record], GoldenError> {
+        let (rows, cols) = (self.params.rows, self.params.cols);
+        if column.len() != rows {
+            return Err(GoldenError::ColumnLength {
+                rows,
+                got: column.len(),
+            });
+        }
+        if self.finished {
+            self.start_frame();
+        }
+        if self.col == cols {
+            return Err(GoldenError::TooManyColumns { cols });
+        }
+        let c = self.col;
+        self.out.clear();
+        self.out_points.clear();
+        self.out_ranges.clear();
+        self.take_column(c, column);
+        self.col = c + 1;
+        self.close_unheld(c);
+        Ok(&self.out)
+    }
+
+    /// End the frame after its `C` columns: apply the ring checks and return
+    /// the records of every cluster still open (`closed_col = C`).
+    pub fn finish(&mut self) -> Result<&[Record], GoldenError> {
+        let (rows, cols) = (self.params.rows, self.params.cols);
+        let taken = self.columns_taken();
+        if taken != cols {
+            return Err(GoldenError::Unfinished { cols, got: taken });
+        }
+        self.out.clear();
+        self.out_points.clear();
+        self.out_ranges.clear();
+        for i in 0..rows {
+            let (Some(f), Some(l)) = (self.first[i], self.latest[i]) else {
+                continue;
+            };
+            if f.run == NONE
+                || l.run == NONE
+                || f.run == l.run
+                || !self.params.ring_reaches(f.col as usize, l.col as usize)
+                || dist2(f.p, l.p) > self.params.th_h_sq()
+            {
+                continue;
+            }
+            let root = self.union(f.run, l.run);
+            self.acc[root as usize].seam = true;
+        }
+        self.closing.clear();
+        for k in 0..self.open.len() {
+            let x = self.open[k];
+            if self.parent[x as usize] == x {
+                self.closing.push((self.first_px[x as usize], x));
+            }
+        }
+        self.open.clear();
+        self.emit(cols as u32);
+        self.finished = true;
+        self.frame += 1;
+        Ok(&self.out)
+    }
+
+    /// The points of the `k`-th record of the last call's result.
+    pub fn points_of(&self, k: usize) -> &[Point] {
+        let (a, b) = self.out_ranges[k];
+        &self.out_points[a..b]
+    }
+
+    /// What the finished frame (or the frame so far) reported.
+    pub fn stats(&self) -> StreamStats {
+        self.stats
+    }
+
+    /// The label image of the finished frame, raster order, numbered by
+    /// record id (0 for empty and unlabelled pixels). Valid until the next
+    /// push.
+    pub fn labels_into(&mut self, out: &mut Vec<u32>) -> Result<(), GoldenError> {
+        if !self.finished {
+            return Err(GoldenError::Unfinished {
+                cols: self.params.cols,
+                got: self.col,
+            });
+        }
+        out.clear();
+        out.reserve(self.pixel_run.len());
+        for k in 0..self.pixel_run.len() {
+            let r = self.pixel_run[k];
+            out.push(if r == NONE {
+                0
+            } else {
+                let root = self.find(r);
+                self.id[root as usize]
+            });
+        }
+        Ok(())
+    }
+
+    fn start_frame(&mut self) {
+        self.finished = false;
+        self.col = 0;
+        self.first.fill(None);
+        self.latest.fill(None);
+        for v in [
+            &mut self.parent,
+            &mut self.labels_held,
+            &mut self.head,
+            &mut self.tail,
+            &mut self.first_px,
+            &mut self.held,
+            &mut self.id,
+        ] {
+            v.clear();
+        }
+        self.acc.clear();
+        self.pixel_run.fill(NONE);
+        self.open.clear();
+        self.in_use = 0;
+        self.stats = StreamStats::default();
+    }
+
+    #[inline]
+    fn find(&mut self, mut x: u32) -> u32 {
+        while self.parent[x as usize] != x {
+            let g = self.parent[self.parent[x as usize] as usize];
+            self.parent[x as usize] = g;
+            x = g;
+        }
+        x
+    }
+
+    /// Unite the clusters of runs `a` and `b`; returns the root.
+    fn union(&mut self, a: u32, b: u32) -> u32 {
+        let (ra, rb) = (self.find(a), self.find(b));
+        if ra == rb {
+            return ra;
+        }
+        let (root, other) = (ra.min(rb), ra.max(rb));
+        debug_assert!(self.id[root as usize] == 0 && self.id[other as usize] == 0);
+        let (r, o) = (root as usize, other as usize);
+        self.parent[o] = root;
+        let moved = self.acc[o];
+        self.acc[r].merge(&moved);
+        self.labels_held[r] += self.labels_held[o];
+        self.first_px[r] = self.first_px[r].min(self.first_px[o]);
+        self.next_px[self.tail[r] as usize] = self.head[o];
+        self.tail[r] = self.tail[o];
+        root
+    }
+
+    /// A new run starting at column-order pixel `key`, if a label is free.
+    fn new_run(&mut self, key: u32) -> u32 {
+        if self.in_use >= self.params.max_label() {
+            self.stats.overflow = true;
+            return NONE;
+        }
+        self.in_use += 1;
+        self.stats.peak_labels = self.stats.peak_labels.max(self.in_use);
+        self.stats.runs += 1;
+        let run = self.parent.len() as u32;
+        self.parent.push(run);
+        self.acc.push(Acc::default());
+        self.labels_held.push(1);
+        self.head.push(NONE);
+        self.tail.push(NONE);
+        self.first_px.push(key);
+        self.held.push(0);
+        self.id.push(0);
+        self.open.push(run);
+        run
+    }
+
+    /// Pass 1 and pass 2 for the pixels of column `c`.
+    fn take_column(&mut self, c: usize, column: &[Option<Point>]) {
+        let (rows, cols) = (self.params.rows, self.params.cols);
+        let h = self.params.half();
+        let (th_h, th_v) = (self.params.th_h_sq(), self.params.th_v_sq());
+        let half = (cols / 2) as u32;
+        let slot = c % (h + 1);
+        self.window[slot * rows..(slot + 1) * rows].fill(([0; 3], NONE));
+        for (i, p) in column.iter().enumerate() {
+            let Some(p) = *p else { continue };
+            self.stats.points += 1;
+            let run = match self.latest[i] {
+                Some(q) if self.params.bridges(c - q.col as usize - 1) && dist2(p, q.p) <= th_h => {
+                    q.run
+                }
+                _ => self.new_run((c * rows + i) as u32),
+            };
+            let seen = Seen {
+                col: c as u32,
+                p,
+                run,
+            };
+            self.latest[i] = Some(seen);
+            if self.first[i].is_none() {
+                self.first[i] = Some(seen);
+            }
+            let k = i * cols + c;
+            self.pixel_run[k] = run;
+            if run == NONE {
+                self.stats.unlabelled += 1;
+                continue;
+            }
+            let mut root = self.find(run);
+            let r = root as usize;
+            self.acc[r].add(i as u32, c as u32, p, half);
+            self.pixel_point[k] = p;
+            self.next_px[k] = NONE;
+            if self.head[r] == NONE {
+                self.head[r] = k as u32;
+            } else {
+                self.next_px[self.tail[r] as usize] = k as u32;
+            }
+            self.tail[r] = k as u32;
+            self.window[slot * rows + i] = (p, run);
+            // The window pairs whose later pixel this is: columns c - h ..= c,
+            // rows within h (in column c only the rows above are filled).
+            let (lo, hi) = (i.saturating_sub(h), (i + h).min(rows - 1));
+            for dc in 0..=h.min(c) {
+                let base = ((c - dc) % (h + 1)) * rows;
+                for rr in lo..=hi {
+                    let (q, qrun) = self.window[base + rr];
+                    if qrun == NONE || rr == i {
+                        continue;
+                    }
+                    if dist2(p, q) < th_v {
+                        let qroot = self.find(qrun);
+                        if qroot != root {
+                            root = self.union(root, qroot);
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    /// Close every open cluster that no hold of spec §9.2 keeps after
+    /// column `c`.
+    fn close_unheld(&mut self, c: usize) {
+        let cols = self.params.cols;
+        let h = self.params.half();
+        let last = c + 1 == cols;
+        let stamp = c as u32 + 1;
+        for i in 0..self.params.rows {
+            let first = self.first[i].filter(|f| f.run != NONE);
+            if let Some(f) = first {
+                // Hold 3: the row's last pixel may still join its first run.
+                if self.params.ring_reaches(f.col as usize, cols - 1) {
+                    let r = self.find(f.run);
+                    self.held[r as usize] = stamp;
+                }
+            }
+            let Some(l) = self.latest[i].filter(|l| l.run != NONE) else {
+                continue;
+            };
+            // Hold 2: the next pixel of the row may continue the run.
+            let bridge = !last && self.params.bridges(c - l.col as usize);
+            // Hold 4: this pixel may turn out to be the row's last.
+            let ring =
+                first.is_some_and(|f| self.params.ring_reaches(f.col as usize, l.col as usize));
+            if bridge || ring {
+                let r = self.find(l.run);
+                self.held[r as usize] = stamp;
+            }
+        }
+        self.closing.clear();
+        let mut k = 0;
+        while k < self.open.len() {
+            let x = self.open[k] as usize;
+            if self.parent[x] != x as u32 {
+                self.open.swap_remove(k);
+                continue;
+            }
+            // Hold 1: a pixel within h columns of the next column.
+            let window = !last && self.acc[x].max_col as usize + h > c;
+            if window || self.held[x] == stamp {
+                k += 1;
+                continue;
+            }
+            self.closing.push((self.first_px[x], x as u32));
+            self.open.swap_remove(k);
+        }
+        self.emit(c as u32);
+    }
+
+    /// Emit the records of `self.closing`, by first pixel in column order.
+    fn emit(&mut self, closed_col: u32) {
+        self.closing.sort_unstable();
+        for k in 0..self.closing.len() {
+            let root = self.closing[k].1 as usize;
+            self.stats.clusters += 1;
+            let id = self.stats.clusters;
+            self.id[root] = id;
+            self.in_use -= self.labels_held[root];
+            self.out
+                .push(self.acc[root].record(self.frame, id, closed_col));
+            let start = self.out_points.len();
+            let mut px = self.head[root];
+            while px != NONE {
+                self.out_points.push(self.pixel_point[px as usize]);
+                px = self.next_px[px as usize];
+            }
+            self.out_ranges.push((start, self.out_points.len()));
+        }
+    }
+}

@@ -1,0 +1,470 @@
+//! The stream (spec §9) against frame mode: the same partition, records equal
+//! to a direct computation, none closed before its last join, in closing
+//! order; the bridge and ring-reach limits against the pixel-level reference.
+
+use fcc_golden::{
+    cluster, frame_records, reference::reference_labels, Frame, GoldenError, MergeMode, Point,
+    Record, Stream,
+};
+use fcc_params::FccParams;
+use fcc_scene::{generate, SceneConfig};
+use proptest::prelude::*;
+
+/// One frame through `s`, column by column: the records in emission order
+/// and the stream's label image.
+fn stream_frame(s: &mut Stream, f: &Frame) -> (Vec<Record>, Vec<u32>) {
+    let mut records = Vec::new();
+    let mut column: Vec<Option<Point>> = vec![None; f.rows];
+    for c in 0..f.cols {
+        for (i, v) in column.iter_mut().enumerate() {
+            *v = f.get(i, c);
+        }
+        let got = s.push_column(&column).unwrap();
+        assert!(got.iter().all(|r| r.closed_col == c as u32));
+        records.extend_from_slice(got);
+    }
+    records.extend_from_slice(s.finish().unwrap());
+    let mut labels = Vec::new();
+    s.labels_into(&mut labels).unwrap();
+    (records, labels)
+}
+
+/// The first pixel (raster order) where two label images are not the same
+/// partition, as a message; `None` when they are.
+fn partition_mismatch(want: &[u32], got: &[u32], cols: usize) -> Option<String> {
+    use std::collections::HashMap;
+    let (mut fwd, mut back) = (HashMap::new(), HashMap::new());
+    for (k, (&a, &b)) in want.iter().zip(got).enumerate() {
+        let bad = (a == 0) != (b == 0)
+            || (a != 0 && *fwd.entry(a).or_insert(b) != b)
+            || (b != 0 && *back.entry(b).or_insert(a) != a);
+        if bad {
+            return Some(format!(
+                "row {}, col {}: frame label {a}, stream label {b} (frame label {a} was stream {:?}, stream {b} was frame {:?})",
+                k / cols,
+                k % cols,
+                fwd.get(&a),
+                back.get(&b)
+            ));
+        }
+    }
+    None
+}
+
+/// Every check of the stream on one frame; `what` names the frame (and its
+/// seed) in a failure.
+fn check_stream(p: &FccParams, f: &Frame, what: &str) {
+    let mut s = Stream::new(p).unwrap();
+    let (records, labels) = stream_frame(&mut s, f);
+    let stats = s.stats();
+    let framed = cluster(p, f, MergeMode::Exact).unwrap();
+    // Ids 1..=n in emission order, closing columns non-decreasing, and ties
+    // in column order of the first pixel.
+    let n = records.len() as u32;
+    assert_eq!(stats.clusters, n, "{what}");
+    for (k, r) in records.iter().enumerate() {
+        assert_eq!(r.id, k as u32 + 1, "{what}: record {k}");
+        assert_eq!(r.frame, 0);
+    }
+    let first_px = |id: u32| {
+        (0..f.cols)
+            .flat_map(|c| (0..f.rows).map(move |i| (c, i)))
+            .find(|&(c, i)| labels[i * f.cols + c] == id)
+            .unwrap()
+    };
+    for w in records.windows(2) {
+        assert!(w[0].closed_col <= w[1].closed_col, "{what}: order");
+        if w[0].closed_col == w[1].closed_col {
+            assert!(first_px(w[0].id) < first_px(w[1].id), "{what}: tie order");
+        }
+    }
+    // Each record, frozen when it closed, equals the direct computation over
+    // its pixels in the finished frame: no later pixel joined it. And no
+    // pixel of it lies after its closing column.
+    let direct = frame_records(p, f, &labels, n, 0);
+    for (r, d) in records.iter().zip(&direct) {
+        let d = Record {
+            closed_col: r.closed_col,
+            ..*d
+        };
+        assert_eq!(*r, d, "{what}: record {} against its pixels", r.id);
+        if r.closed_col < f.cols as u32 {
+            // Seam clusters wait for the frame end; before the last column
+            // the window holds a cluster h columns past its last one.
+            assert!(!r.seam, "{what}: record {}", r.id);
+            if (r.closed_col as usize) + 1 < f.cols {
+                assert!(
+                    r.closed_col >= r.last_col + p.half() as u32,
+                    "{what}: record {}",
+                    r.id
+                );
+            }
+            let late = (0..f.rows).any(|i| {
+                (r.closed_col as usize + 1..f.cols).any(|c| labels[i * f.cols + c] == r.id)
+            });
+            assert!(!late, "{what}: record {} has a pixel after its close", r.id);
+        }
+    }
+    if stats.overflow || framed.overflow {
+        return;
+    }
+    // The same partition as frame mode, and the same records up to id and
+    // closing column.
+    assert_eq!(stats.points, framed.points, "{what}");
+    if let Some(m) = partition_mismatch(&framed.labels, &labels, f.cols) {
+        panic!("{what}: {m}");
+    }
+    assert_eq!(framed.clusters, n, "{what}");
+    let mut by_frame = frame_records(p, f, &framed.labels, framed.clusters, 0);
+    for r in &records {
+        let k = (0..f.rows * f.cols).find(|&k| labels[k] == r.id).unwrap();
+        let fr = &mut by_frame[framed.labels[k] as usize - 1];
+        fr.id = r.id;
+        fr.closed_col = r.closed_col;
+        assert_eq!(*fr, *r, "{what}: record {} against frame mode", r.id);
+    }
+    // A second frame through the same stream gives the same records.
+    let (again, labels_again) = stream_frame(&mut s, f);
+    assert_eq!(labels_again, labels, "{what}: second frame");
+    assert_eq!(again.len(), records.len());
+    assert!(again
+        .iter()
+        .zip(&records)
+        .all(|(a, b)| a.frame == 1 && Record { frame: 0, ..*a } == *b));
+}
+
+/// A random frame: points on a grid at 10 m with jitter, dense patches and
+/// dropouts, so there are runs, gaps and seams.
+fn random_frame(rows: usize, cols: usize, density: u32, spacing: f64, seed: u64) -> Frame {
+    let mut rng = seed | 1;
+    let mut next = move || {
+        rng ^= rng << 13;
+        rng ^= rng >> 7;
+        rng ^= rng << 17;
+        rng
+    };
+    let mut f = Frame::empty(rows, cols);
+    for i in 0..rows {
+        for c in 0..cols {
+            if next() % 100 < u64::from(density) {
+                let j = |v: u64| (v % 2001) as f64 / 1000.0 - 1.0;
+                let (a, b, d) = (j(next()), j(next()), j(next()));
+                let x = 10.0 + d * spacing * 3.0;
+                let y = c as f64 * spacing + a * spacing * 0.4;
+                let z = -(i as f64) * spacing + b * spacing * 0.4;
+                f.set(i, c, fcc_golden::quantize_point(x, y, z));
+            }
+        }
+    }
+    f
+}
+
+fn params(rows: usize, cols: usize, fsize: usize) -> FccParams {
+    FccParams {
+        rows,
+        cols,
+        fsize,
+        ..FccParams::default()
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 160, ..ProptestConfig::default() })]
+
+    #[test]
+    fn stream_equals_frame_on_random_frames(
+        rows in 1usize..14,
+        cols in 1usize..48,
+        k in prop::sample::select(vec![3usize, 5, 7, 9, 11, 13, 15]),
+        density in 5u32..100,
+        th_h in 0.1f64..1.5,
+        th_v in 0.1f64..1.5,
+        bits in prop::sample::select(vec![8u32, 12, 20]),
+        bridge in prop::option::of(0u32..6),
+        ring_reach in prop::option::of(0u32..24),
+        seed in any::<u64>(),
+    ) {
+        let p = FccParams {
+            th_h,
+            th_v,
+            label_bits: bits,
+            bridge,
+            ring_reach,
+            ..params(rows, cols, k)
+        };
+        let f = random_frame(rows, cols, density, 0.3, seed);
+        let what = format!("seed {seed}, {p:?}");
+        // Frame mode with the limits is the reference's reading of §3.
+        let framed = cluster(&p, &f, MergeMode::Exact).unwrap();
+        let want = reference_labels(&p, &f);
+        if let Some(k) = want.iter().zip(&framed.labels).position(|(a, b)| a != b) {
+            panic!("{what}: frame mode differs from the reference at row {}, col {}: expected {}, got {}",
+                k / cols, k % cols, want[k], framed.labels[k]);
+        }
+        check_stream(&p, &f, &what);
+    }
+}
+
+fn scene(rows: usize, cols: usize, seed: u64) -> Frame {
+    let cfg = SceneConfig {
+        rows,
+        cols,
+        seed,
+        dropout: 0.05,
+        ..SceneConfig::default()
+    };
+    let s = generate(&cfg).unwrap();
+    Frame::from_xyz_f32(rows, cols, &s.xyz)
+}
+
+#[test]
+fn stream_equals_frame_on_scenes_for_every_fsize() {
+    for (seed, k) in [
+        (1u64, 3usize),
+        (2, 5),
+        (3, 7),
+        (4, 9),
+        (5, 11),
+        (6, 13),
+        (7, 15),
+    ] {
+        let f = scene(64, 1024, seed);
+        for (bridge, ring_reach) in [(None, None), (Some(16), Some(16)), (Some(2), None)] {
+            let p = FccParams {
+                bridge,
+                ring_reach,
+                ..params(64, 1024, k)
+            };
+            check_stream(
+                &p,
+                &f,
+                &format!("scene seed {seed}, K = {k}, {bridge:?} {ring_reach:?}"),
+            );
+        }
+    }
+}
+
+/// A frame from rows of text: `#` a point at (10, j * s, -i * s), `.` empty.
+fn grid(rows: &[&str], s: f64) -> Frame {
+    let (r, c) = (rows.len(), rows[0].len());
+    let mut f = Frame::empty(r, c);
+    for (i, row) in rows.iter().enumerate() {
+        for (j, ch) in row.chars().enumerate() {
+            if ch == '#' {
+                f.set(
+                    i,
+                    j,
+                    fcc_golden::quantize_point(10.0, j as f64 * s, -(i as f64) * s),
+                );
+            }
+        }
+    }
+    f
+}
+
+fn records_of(p: &FccParams, f: &Frame) -> Vec<Record> {
+    stream_frame(&mut Stream::new(p).unwrap(), f).0
+}
+
+#[test]
+fn an_object_closes_h_columns_after_its_last_column() {
+    // Two blobs far apart; K = 5 (h = 2), th_V 1.5 m on a 1 m grid.
+    let f = grid(
+        &[
+            "...##.........##....",
+            "...##.........##....",
+            "....................",
+        ],
+        1.0,
+    );
+    let p = FccParams {
+        fsize: 5,
+        th_h: 1.0,
+        th_v: 1.5,
+        bridge: Some(0),
+        ring_reach: Some(0),
+        ..params(3, 20, 5)
+    };
+    let r = records_of(&p, &f);
+    assert_eq!(r.len(), 2);
+    assert_eq!((r[0].first_col, r[0].last_col, r[0].closed_col), (3, 4, 6));
+    assert_eq!(
+        (r[1].first_col, r[1].last_col, r[1].closed_col),
+        (14, 15, 17)
+    );
+    // Without a bridge limit the rows' latest points hold the first blob
+    // until the next point of its rows: column 14.
+    let q = FccParams {
+        bridge: None,
+        ..p.clone()
+    };
+    let r = records_of(&q, &f);
+    assert_eq!((r[0].last_col, r[0].closed_col), (4, 14));
+    // With a bridge of 3, until column 4 + 3 + 1.
+    let q = FccParams {
+        bridge: Some(3),
+        ..p
+    };
+    let r = records_of(&q, &f);
+    assert_eq!((r[0].last_col, r[0].closed_col), (4, 8));
+}
+
+#[test]
+fn the_seam_holds_first_runs_until_the_frame_end() {
+    // Row 0's first point (column 1) and last point (column 18) are 1 m
+    // apart across the seam only in the y-wrap sense: here they are made
+    // equal so the ring check passes.
+    let mut f = grid(&[".#####............#.", "...................."], 1.0);
+    f.set(0, 18, f.get(0, 1));
+    let p = FccParams {
+        th_h: 1.0,
+        th_v: 1.5,
+        bridge: Some(0),
+        ..params(2, 20, 3)
+    };
+    let r = records_of(&p, &f);
+    assert_eq!(r.len(), 1, "{r:?}");
+    assert!(r[0].seam);
+    assert_eq!(r[0].closed_col, 20);
+    // The wrapped span: from column 18 (the part before the seam) round to
+    // column 5.
+    assert_eq!((r[0].first_col, r[0].last_col), (18, 5));
+    // A ring reach of 1 keeps column 1 out of the ring check: two records,
+    // the first closed after the window (column 5 + h = 6).
+    let q = FccParams {
+        ring_reach: Some(1),
+        ..p.clone()
+    };
+    let r = records_of(&q, &f);
+    assert_eq!(r.len(), 2);
+    assert!(!r[0].seam && r[0].closed_col == 6 && r[1].closed_col == 19);
+    // A ring reach of 2 holds the first run to the end: the ring joins it.
+    let q = FccParams {
+        ring_reach: Some(2),
+        ..p
+    };
+    let r = records_of(&q, &f);
+    assert_eq!(r.len(), 1);
+    assert!(r[0].seam && r[0].closed_col == 20);
+}
+
+#[test]
+fn labels_are_reused_once_a_cluster_closes() {
+    // B = 8: 300 isolated points in one row would overflow frame mode (§8 G),
+    // but with a bridge of 0 each closes h columns later and gives its label
+    // back.
+    let cols = 600;
+    let row: String = (0..cols)
+        .map(|c| if c % 2 == 0 { '#' } else { '.' })
+        .collect();
+    // Points 0.4 m apart (0.2 m grid), all within the Q7.8 range.
+    let f = grid(&[row.as_str()], 0.2);
+    let p = FccParams {
+        label_bits: 8,
+        th_h: 0.3,
+        th_v: 0.1,
+        bridge: Some(0),
+        ring_reach: Some(0),
+        ..params(1, cols, 3)
+    };
+    let framed = cluster(&p, &f, MergeMode::Exact).unwrap();
+    assert!(framed.overflow && framed.unlabelled == 45);
+    let mut s = Stream::new(&p).unwrap();
+    let (r, _) = stream_frame(&mut s, &f);
+    assert_eq!(r.len(), 300);
+    assert!(
+        !s.stats().overflow && s.stats().peak_labels <= 2,
+        "{:?}",
+        s.stats()
+    );
+    check_stream(&p, &f, "alternating row, bridge 0");
+    // Unlimited bridge: every point's label is held until the next point of
+    // its row arrives, still few at once.
+    let q = FccParams { bridge: None, ..p };
+    let mut s = Stream::new(&q).unwrap();
+    let (r, _) = stream_frame(&mut s, &f);
+    assert_eq!(r.len(), 300);
+    assert!(
+        !s.stats().overflow && s.stats().peak_labels <= 3,
+        "{:?}",
+        s.stats()
+    );
+    check_stream(&q, &f, "alternating row, no bridge limit");
+}
+
+#[test]
+fn overflow_leaves_the_runs_that_start_while_every_label_is_in_use() {
+    // Unlimited bridge and ring: nothing closes before the frame end, so the
+    // stream overflows like frame mode here, on the same pixels.
+    let cols = 600;
+    let row: String = (0..cols)
+        .map(|c| if c % 2 == 0 { '#' } else { '.' })
+        .collect();
+    let f = grid(&[row.as_str(), row.as_str()], 0.2);
+    let p = FccParams {
+        label_bits: 8,
+        th_h: 0.3,
+        th_v: 0.1,
+        ..params(2, cols, 3)
+    };
+    let mut s = Stream::new(&p).unwrap();
+    let (r, labels) = stream_frame(&mut s, &f);
+    let st = s.stats();
+    // Row 0's first run is held by the seam; every other run is held by its
+    // row's next point until it arrives, so at most a few labels are in use.
+    assert!(!st.overflow, "{st:?}");
+    assert_eq!(r.len(), 600);
+    assert_eq!(labels.iter().filter(|&&l| l != 0).count(), 600);
+    // Columns of 255 points each (B = 8) on one column: overflow inside a
+    // column, where nothing can close.
+    let rows = 300;
+    let f = grid(&vec!["#."; rows], 0.2);
+    let p = FccParams {
+        label_bits: 8,
+        th_h: 0.1,
+        th_v: 0.1,
+        ..params(rows, 2, 3)
+    };
+    let mut s = Stream::new(&p).unwrap();
+    let (r, labels) = stream_frame(&mut s, &f);
+    let st = s.stats();
+    assert!(
+        st.overflow && st.unlabelled == 45 && st.peak_labels == 255,
+        "{st:?}"
+    );
+    assert_eq!(r.len(), 255);
+    // The unlabelled pixels are the last 45 rows of column 0.
+    assert!((0..rows).all(|i| (labels[i * 2] == 0) == (i >= 255)));
+}
+
+#[test]
+fn stream_errors_are_clear() {
+    let p = params(2, 3, 3);
+    let mut s = Stream::new(&p).unwrap();
+    let e = s.push_column(&[None]).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "a column holds 1 pixels, the frame has 2 rows"
+    );
+    assert_eq!(
+        s.finish().unwrap_err().to_string(),
+        "the frame has 0 of its 3 columns"
+    );
+    for _ in 0..3 {
+        s.push_column(&[None, None]).unwrap();
+    }
+    assert!(matches!(
+        s.push_column(&[None, None]),
+        Err(GoldenError::TooManyColumns { cols: 3 })
+    ));
+    let mut labels = Vec::new();
+    assert!(s.labels_into(&mut labels).is_err());
+    assert!(s.finish().unwrap().is_empty());
+    s.labels_into(&mut labels).unwrap();
+    assert_eq!(labels, vec![0; 6]);
+    // The next push starts the next frame.
+    s.push_column(&[None, None]).unwrap();
+    assert_eq!(s.columns_taken(), 1);
+    let bad = FccParams { fsize: 4, ..p };
+    assert!(Stream::new(&bad).is_err());
+}
