@@ -198,6 +198,12 @@ impl Stream {
         Ok(&self.out)
     }
 
+    /// The records of the last [`push_column`](Self::push_column) or
+    /// [`finish`](Self::finish) (what it returned).
+    pub fn closed(&self) -> &[Record] {
+        &self.out
+    }
+
     /// The points of the `k`-th record of the last call's result.
     pub fn points_of(&self, k: usize) -> &[Point] {
         let (a, b) = self.out_ranges[k];

@@ -111,6 +111,13 @@ fn run_board(args: &BoardRunArgs, given: &dyn Fn(&str) -> bool) -> anyhow::Resul
     if args.cluster.model.merge != MergeMode::Exact {
         bail!("the core computes exact connected components: drop --merge paper");
     }
+    let m = &args.cluster.model.limits;
+    if m.bridge.is_some() || m.ring_reach.is_some() {
+        bail!("the row-major core keeps the unlimited contract: drop --bridge and --ring-reach (the golden stream takes them: fcc cluster --stream)");
+    }
+    if args.cluster.stream {
+        bail!("the row-major core returns labels of whole frames: drop --stream (fcc cluster --stream runs the golden stream)");
+    }
     let t = Instant::now();
     let report = if args.virtual_board {
         let (build, model, where_) = match &args.rtl {

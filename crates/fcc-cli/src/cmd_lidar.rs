@@ -12,7 +12,7 @@ use anyhow::{bail, Context};
 use clap::Args;
 use fcc_golden::MergeMode;
 use fcc_lidar::cloud::{read_point_cloud, write_ply_with_intensity, CloudFormat, PlyFormat};
-use fcc_lidar::clusters::{cluster_rows, write_cluster_table, ClusterRow};
+use fcc_lidar::clusters::{cluster_rows, frame_cluster_records, write_cluster_table, ClusterRow};
 use fcc_lidar::eval::{evaluate, score_frame, synthetic_frames, EvalConfig, EvalFrame};
 use fcc_lidar::ground::{GroundMethod, GroundParams};
 use fcc_lidar::labels::{
@@ -23,7 +23,9 @@ use fcc_lidar::ouster::{
     OusterReader,
 };
 use fcc_lidar::picture::{cluster_colour, cluster_colours, render_overview, Overview};
-use fcc_lidar::pipeline::{cluster_image, PipelineConfig, PipelineResult};
+use fcc_lidar::pipeline::{
+    cluster_image, stream_image, ClosedRecord, PipelineConfig, PipelineResult,
+};
 use fcc_lidar::projection::{
     project, BackProjection, Projection, ProjectionConfig, VerticalLayout,
 };
@@ -229,6 +231,12 @@ pub struct ClusterLidarArgs {
     /// Print a JSON summary per frame (one line each) on stdout.
     #[arg(long)]
     pub stats: bool,
+    /// Cluster column by column with the golden stream (spec §9): one JSON
+    /// line per cluster on stdout as it closes (or the table in --clusters),
+    /// the label image numbered by closing order; --stats adds the latency
+    /// in columns from each cluster's last column to its record.
+    #[arg(long)]
+    pub stream: bool,
     /// Frames clustered in parallel (default: all cores).
     #[arg(long)]
     pub jobs: Option<usize>,
@@ -598,10 +606,12 @@ struct FrameStats {
     merge: MergeMode,
     /// Provisional labels allocated by pass 1.
     provisional: u32,
-    /// Pass-2 pairs that passed the threshold.
-    joins: u64,
-    /// Joins that united two different components.
-    merges: u64,
+    /// Pass-2 pairs that passed the threshold (frame mode).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    joins: Option<u64>,
+    /// Joins that united two different components (frame mode).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    merges: Option<u64>,
     overflow: bool,
     /// Valid pixels left unlabelled by label overflow.
     unlabelled: usize,
@@ -620,6 +630,9 @@ struct FrameStats {
     #[serde(skip_serializing_if = "Option::is_none")]
     unprojected: Option<usize>,
     time_ms: f64,
+    /// `--stream`: when the records closed.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    stream: Option<StreamLatency>,
     /// PQ, SQ, RQ per pixel of the range image (as `fcc eval` scores).
     #[serde(skip_serializing_if = "Option::is_none")]
     quality: Option<fcc_lidar::eval::Scores>,
@@ -627,6 +640,52 @@ struct FrameStats {
     /// take their label from the back-projection).
     #[serde(skip_serializing_if = "Option::is_none")]
     quality_per_point: Option<fcc_lidar::eval::Scores>,
+}
+
+/// Latency of one streamed frame's records, in columns from a cluster's
+/// last column to the column at which it closed (`closed_col - last_col`),
+/// over the records that closed before the frame end; the seam-held ones
+/// (closed at the frame end, spec §9.2) are counted apart.
+#[derive(Serialize, Debug, Clone, Default, PartialEq)]
+pub struct StreamLatency {
+    pub records: usize,
+    pub seam_held: usize,
+    pub p50: Option<u32>,
+    pub p90: Option<u32>,
+    pub p99: Option<u32>,
+    pub max: Option<u32>,
+    /// Most provisional labels in use at once.
+    pub peak_labels: u32,
+}
+
+impl StreamLatency {
+    /// The figures of `records` of a frame of `cols` columns.
+    pub fn of(records: &[fcc_golden::Record], cols: usize, peak_labels: u32) -> StreamLatency {
+        let mut lat: Vec<u32> = records
+            .iter()
+            .filter(|r| (r.closed_col as usize) < cols)
+            .map(|r| r.closed_col - r.last_col)
+            .collect();
+        lat.sort_unstable();
+        StreamLatency {
+            records: records.len(),
+            seam_held: records.len() - lat.len(),
+            p50: percentile(&lat, 50),
+            p90: percentile(&lat, 90),
+            p99: percentile(&lat, 99),
+            max: lat.last().copied(),
+            peak_labels,
+        }
+    }
+}
+
+/// The `q`-th percentile of sorted values (nearest rank), `None` for none.
+pub fn percentile(sorted: &[u32], q: usize) -> Option<u32> {
+    if sorted.is_empty() {
+        return None;
+    }
+    let rank = (q * sorted.len()).div_ceil(100).max(1);
+    Some(sorted[rank - 1])
 }
 
 /// Half-width of the bird's-eye view: the 95th percentile of horizontal
@@ -718,8 +777,15 @@ fn process(
 ) -> anyhow::Result<(String, Vec<ClusterRow>)> {
     args.check_outputs(&item.name, single)?;
     let t = Instant::now();
-    let mut out: PipelineResult =
-        cluster_image(&item.image, cfg).with_context(|| item.name.clone())?;
+    let (mut out, streamed): (PipelineResult, Option<(Vec<ClosedRecord>, u32)>) = if args.stream {
+        let s = stream_image(&item.image, cfg, |_| {}).with_context(|| item.name.clone())?;
+        (s.result, Some((s.records, s.stats.peak_labels)))
+    } else {
+        (
+            cluster_image(&item.image, cfg).with_context(|| item.name.clone())?,
+            None,
+        )
+    };
     let time_ms = t.elapsed().as_secs_f64() * 1e3;
     if let Some(hw) = hw {
         // The outputs carry the hardware's labels (equal to the golden
@@ -880,8 +946,8 @@ fn process(
         fsize: out.params.fsize,
         merge: args.model.merge,
         provisional: out.clustering.provisional,
-        joins: out.clustering.joins,
-        merges: out.clustering.merges,
+        joins: streamed.is_none().then_some(out.clustering.joins),
+        merges: streamed.is_none().then_some(out.clustering.merges),
         overflow: out.clustering.overflow,
         unlabelled: out.clustering.unlabelled,
         labels_needed: out.labels_needed,
@@ -891,11 +957,40 @@ fn process(
         pixel_shared: cloud.then_some(item.losses.pixel_shared),
         unprojected: cloud.then_some(item.losses.unprojected),
         time_ms,
+        stream: streamed.as_ref().map(|(records, peak)| {
+            let r: Vec<fcc_golden::Record> = records.iter().map(|c| c.record).collect();
+            StreamLatency::of(&r, item.image.cols, *peak)
+        }),
         quality,
         quality_per_point,
     };
-    let rows = if args.clusters.is_some() {
-        cluster_rows(&item.name, &points, &labels, &out.labels, item.image.cols)?
+    let rows = if args.clusters.is_some() || args.stream {
+        let mut rows = cluster_rows(&item.name, &points, &labels, &out.labels, item.image.cols)?;
+        // The record of each cluster: the stream's, in closing order, or
+        // computed from the frame's pixels.
+        let records: Vec<(fcc_golden::Record, Option<fcc_golden::OrientedBox>)> = match streamed {
+            Some((records, _)) => records
+                .into_iter()
+                .map(|c| (c.record, c.oriented_box))
+                .collect(),
+            None => {
+                let kept = item.image.without(&out.ground.mask).to_frame();
+                frame_cluster_records(&out.params, &kept, &out.labels, out.clusters)
+            }
+        };
+        let mut by_id: Vec<Option<ClusterRow>> = vec![None; records.len() + 1];
+        for row in rows.drain(..) {
+            if let Some(slot) = by_id.get_mut(row.cluster as usize) {
+                *slot = Some(row);
+            }
+        }
+        for (r, obb) in &records {
+            if let Some(mut row) = by_id[r.id as usize].take() {
+                row.set_record(r, obb.as_ref());
+                rows.push(row);
+            }
+        }
+        rows
     } else {
         Vec::new()
     };
@@ -934,6 +1029,9 @@ pub fn run_cluster_on(args: &ClusterLidarArgs, hw: Option<&dyn Hardware>) -> any
         );
     }
     check_png_path(args.png.as_deref())?;
+    if args.stream && args.model.merge != MergeMode::Exact {
+        bail!("--stream clusters exactly (spec §9): drop --merge paper");
+    }
     let proj = args.projection.config()?;
     // The outputs as given; the names of several results are checked per frame.
     args.check_outputs("", true)?;
@@ -1108,6 +1206,10 @@ pub fn run_cluster_on(args: &ClusterLidarArgs, hw: Option<&dyn Hardware>) -> any
     }
     if let Some(p) = &args.clusters {
         write_cluster_table(p, &table)?;
+    } else if args.stream {
+        for row in &table {
+            println!("{}", serde_json::to_string(row)?);
+        }
     }
     if args.stats {
         for l in &lines {

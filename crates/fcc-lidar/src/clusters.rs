@@ -2,13 +2,15 @@
 //! per frame, what a tracker takes as its detections.
 
 use crate::error::{LidarError, Result};
+use fcc_golden::{frame_records, oriented_box, Frame, OrientedBox, Point, Record};
+use fcc_params::FccParams;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 use std::path::Path;
 
 /// One cluster of one frame. Coordinates in metres, in the frame of the
 /// input (x forward, y left, z up for sensors).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 pub struct ClusterRow {
     /// Input stem, with `_f<frame>` for capture frames.
     pub frame: String,
@@ -30,6 +32,102 @@ pub struct ClusterRow {
     /// The cluster's first pixel in raster order (row 0 the top beam).
     pub first_row: usize,
     pub first_col: usize,
+    /// The record of spec §9.3, from the Q7.8 pixels of the cluster:
+    /// column span (wrapped for a seam cluster), the column at which it
+    /// closed (`C` at the frame end), whether a ring check joined it, its
+    /// last row, the principal-axis heading of its bird's-eye covariance
+    /// and the minimum-area oriented box of its bird's-eye points (centre,
+    /// length >= width, yaw of the length, radians).
+    pub span_first_col: u32,
+    pub span_last_col: u32,
+    pub closed_col: u32,
+    pub seam: bool,
+    pub last_row: u32,
+    pub heading: f64,
+    pub box_cx: f64,
+    pub box_cy: f64,
+    pub box_length: f64,
+    pub box_width: f64,
+    pub box_yaw: f64,
+}
+
+impl ClusterRow {
+    /// Fill the record fields from the cluster's record and oriented box.
+    pub fn set_record(&mut self, r: &Record, obb: Option<&OrientedBox>) {
+        self.span_first_col = r.first_col;
+        self.span_last_col = r.last_col;
+        self.closed_col = r.closed_col;
+        self.seam = r.seam;
+        self.last_row = r.last_row;
+        self.heading = r.heading();
+        let b = obb.copied().unwrap_or(OrientedBox {
+            center: [0.0; 2],
+            size: [0.0; 2],
+            yaw: 0.0,
+            z: [0.0; 2],
+        });
+        (self.box_cx, self.box_cy) = (b.center[0], b.center[1]);
+        (self.box_length, self.box_width, self.box_yaw) = (b.size[0], b.size[1], b.yaw);
+    }
+
+    /// The row of a record alone (the stream's: no input points, only the
+    /// Q7.8 pixels the record sums). `first_row`, `first_col` are the first
+    /// pixel of its first row.
+    pub fn from_record(
+        frame: &str,
+        r: &Record,
+        obb: Option<&OrientedBox>,
+        first_col: usize,
+    ) -> ClusterRow {
+        let c = r.centroid();
+        let [lo, hi] = r.bounds();
+        let range = r.range();
+        let mut row = ClusterRow {
+            frame: frame.to_string(),
+            cluster: r.id,
+            points: r.points as usize,
+            centroid_x: c[0],
+            centroid_y: c[1],
+            centroid_z: c[2],
+            min_x: lo[0] as f32,
+            min_y: lo[1] as f32,
+            min_z: lo[2] as f32,
+            max_x: hi[0] as f32,
+            max_y: hi[1] as f32,
+            max_z: hi[2] as f32,
+            range_min: range[0] as f32,
+            range_max: range[1] as f32,
+            first_row: r.first_row as usize,
+            first_col,
+            ..ClusterRow::default()
+        };
+        row.set_record(r, obb);
+        row
+    }
+}
+
+/// The record and oriented box of every cluster of a frame (frame mode):
+/// `labels` numbers the clusters `1 ..= clusters` over `frame`'s pixels.
+pub fn frame_cluster_records(
+    params: &FccParams,
+    frame: &Frame,
+    labels: &[u32],
+    clusters: u32,
+) -> Vec<(Record, Option<OrientedBox>)> {
+    let records = frame_records(params, frame, labels, clusters, 0);
+    let mut points: Vec<Vec<Point>> = vec![Vec::new(); clusters as usize + 1];
+    for (p, &l) in frame.points.iter().zip(labels) {
+        if let (Some(p), true) = (p, l != 0) {
+            points[l as usize].push(*p);
+        }
+    }
+    records
+        .into_iter()
+        .map(|r| {
+            let b = oriented_box(&points[r.id as usize]);
+            (r, b)
+        })
+        .collect()
 }
 
 /// The clusters of one frame: `points` with their `labels` (0 = none; the
@@ -81,6 +179,7 @@ pub fn cluster_rows(
                     range_max: 0.0,
                     first_row: px / cols.max(1),
                     first_col: px % cols.max(1),
+                    ..ClusterRow::default()
                 },
                 [0.0; 3],
             )
@@ -111,7 +210,7 @@ pub fn cluster_rows(
 }
 
 /// The CSV header, in [`ClusterRow`] field order.
-pub const CSV_HEADER: &str = "frame,cluster,points,centroid_x,centroid_y,centroid_z,min_x,min_y,min_z,max_x,max_y,max_z,range_min,range_max,first_row,first_col";
+pub const CSV_HEADER: &str = "frame,cluster,points,centroid_x,centroid_y,centroid_z,min_x,min_y,min_z,max_x,max_y,max_z,range_min,range_max,first_row,first_col,span_first_col,span_last_col,closed_col,seam,last_row,heading,box_cx,box_cy,box_length,box_width,box_yaw";
 
 /// Write the table: CSV for a `.csv` name, JSON (an array of objects) for
 /// `.json`; anything else is an error.
@@ -132,7 +231,7 @@ pub fn write_cluster_table(path: &Path, rows: &[ClusterRow]) -> Result<()> {
                     r.frame.clone()
                 };
                 s.push_str(&format!(
-                    "{frame},{},{},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{},{}\n",
+                    "{frame},{},{},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4},{},{},{},{},{},{},{},{:.4},{:.4},{:.4},{:.4},{:.4},{:.4}\n",
                     r.cluster,
                     r.points,
                     r.centroid_x,
@@ -147,7 +246,18 @@ pub fn write_cluster_table(path: &Path, rows: &[ClusterRow]) -> Result<()> {
                     r.range_min,
                     r.range_max,
                     r.first_row,
-                    r.first_col
+                    r.first_col,
+                    r.span_first_col,
+                    r.span_last_col,
+                    r.closed_col,
+                    r.seam,
+                    r.last_row,
+                    r.heading,
+                    r.box_cx,
+                    r.box_cy,
+                    r.box_length,
+                    r.box_width,
+                    r.box_yaw
                 ));
             }
             s

@@ -7,7 +7,10 @@ use crate::ground::{detect_ground, Ground, GroundParams};
 use crate::image::RangeImage;
 use crate::labels::filter_min_points;
 use crate::picture::cluster_colour;
-use fcc_golden::{cluster_with, runs_needed, Clustering, MergeMode, Workspace};
+use fcc_golden::{
+    cluster_with, runs_needed, Clustering, MergeMode, OrientedBox, Point, Record, Stream,
+    StreamStats, Workspace,
+};
 use fcc_params::FccParams;
 use std::path::Path;
 
@@ -97,6 +100,120 @@ pub fn cluster_image(image: &RangeImage, cfg: &PipelineConfig) -> Result<Pipelin
         params,
         out_of_range,
         labels_needed,
+    })
+}
+
+/// A record of the stream as it closed, with the oriented box of its points.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ClosedRecord {
+    pub record: Record,
+    pub oriented_box: Option<OrientedBox>,
+}
+
+/// The outcome of one frame through the stream.
+#[derive(Debug, Clone)]
+pub struct StreamResult {
+    /// As in frame mode; `labels` numbered by record id, `clustering` with
+    /// the stream's counts (no joins or merges: the stream does not count
+    /// them).
+    pub result: PipelineResult,
+    /// The records in closing order, after the min-points filter (ids
+    /// renumbered 1.. in closing order, as the label image).
+    pub records: Vec<ClosedRecord>,
+    pub stats: StreamStats,
+}
+
+thread_local! {
+    /// The stream of each thread, kept from one image to the next while the
+    /// image size and parameters stay.
+    static STREAM: std::cell::RefCell<Option<Stream>> = const { std::cell::RefCell::new(None) };
+}
+
+/// Remove the ground and cluster column by column with the golden stream
+/// (spec §9): the frame's columns in scan order, records as they close.
+/// `on_record` sees each record (after the min-points filter) as it closes.
+pub fn stream_image(
+    image: &RangeImage,
+    cfg: &PipelineConfig,
+    mut on_record: impl FnMut(&ClosedRecord),
+) -> Result<StreamResult> {
+    let params = params_for(image, &cfg.params);
+    params.validate()?;
+    let ground = detect_ground(image, &cfg.ground)?;
+    let kept = image.without(&ground.mask);
+    let frame = kept.to_frame();
+    let out_of_range = kept.valid_count() - frame.valid_count();
+    STREAM.with(|cell| {
+        let mut cell = cell.borrow_mut();
+        if cell.as_ref().is_none_or(|s| *s.params() != params) {
+            *cell = Some(Stream::new(&params)?);
+        }
+        let stream = cell.as_mut().expect("made above");
+        let mut records = Vec::new();
+        // The stream's id of each record kept, 0 for one dropped.
+        let mut new_id = vec![0u32];
+        let mut column: Vec<Option<Point>> = vec![None; frame.rows];
+        for c in 0..=frame.cols {
+            if c < frame.cols {
+                for (i, v) in column.iter_mut().enumerate() {
+                    *v = frame.get(i, c);
+                }
+                stream.push_column(&column)?;
+            } else {
+                stream.finish()?;
+            }
+            for (k, r) in stream.closed().iter().enumerate() {
+                if (r.points as usize) <= cfg.min_points {
+                    new_id.push(0);
+                    continue;
+                }
+                let id = records.len() as u32 + 1;
+                new_id.push(id);
+                let rec = ClosedRecord {
+                    record: Record { id, ..*r },
+                    oriented_box: fcc_golden::oriented_box(stream.points_of(k)),
+                };
+                on_record(&rec);
+                records.push(rec);
+            }
+        }
+        let stats = stream.stats();
+        let mut labels = Vec::new();
+        stream.labels_into(&mut labels)?;
+        for l in &mut labels {
+            *l = new_id[*l as usize];
+        }
+        let clusters = records.len() as u32;
+        let clustering = Clustering {
+            rows: frame.rows,
+            cols: frame.cols,
+            labels: labels.clone(),
+            points: stats.points,
+            clusters: stats.clusters,
+            provisional: stats.runs,
+            joins: 0,
+            merges: 0,
+            overflow: stats.overflow,
+            unlabelled: stats.unlabelled,
+        };
+        let labels_needed = if stats.overflow {
+            runs_needed(&params, &frame)
+        } else {
+            u64::from(stats.runs)
+        };
+        Ok(StreamResult {
+            result: PipelineResult {
+                labels,
+                clusters,
+                ground,
+                clustering,
+                params,
+                out_of_range,
+                labels_needed,
+            },
+            records,
+            stats,
+        })
     })
 }
 

@@ -1,0 +1,159 @@
+//! `fcc cluster --stream` (spec §9): on the Ouster captures the label image
+//! is the frame's partition, with and without the reach limits; one JSON
+//! record per cluster in closing order; the latency in `--stats`; the
+//! row-major core refuses the limits and the stream.
+
+use fcc_testkit::{lidar_data, s, same_partition, stderr, tmpdir};
+use std::path::PathBuf;
+use std::process::Output;
+
+fn fcc(args: &[&str]) -> Output {
+    fcc_testkit::run_in(env!("CARGO_BIN_EXE_fcc"), None, args)
+}
+
+const CAPTURES: [(&str, &str); 4] = [
+    (
+        "OS-0-128-U1_v2.3.0_1024x10.pcap",
+        "OS-0-128-U1_v2.3.0_1024x10.json",
+    ),
+    ("OS-1-32-G_v2.1.1_1024x10.pcap", "OS-1-32-G_v2.1.1_1024x10.json"),
+    ("OS-1-64_1024x10_fw20.pcap", "OS-1-64_sensor_config_reduced.json"),
+    (
+        "OS-2-128-U1_v2.3.0_1024x10.pcap",
+        "OS-2-128-U1_v2.3.0_1024x10.json",
+    ),
+];
+
+fn labels(p: &PathBuf) -> Vec<u32> {
+    fcc_npy::read_labels(p).unwrap().labels
+}
+
+#[test]
+fn streamed_captures_have_the_frames_partition_and_records_in_closing_order() {
+    let d = tmpdir("stream-captures");
+    for (pcap, meta) in CAPTURES {
+        let (pcap, meta) = (lidar_data().join(pcap), lidar_data().join(meta));
+        for limits in [&[][..], &["--bridge", "16", "--ring-reach", "16"][..]] {
+            let (framed, streamed) = (d.join("frame.npy"), d.join("stream.npy"));
+            let mut args = vec![
+                "cluster",
+                "--input",
+                s(&pcap),
+                "--meta",
+                s(&meta),
+                "--max-frames",
+                "1",
+            ];
+            args.extend_from_slice(limits);
+            let mut a = args.clone();
+            a.extend(["--output", s(&framed)]);
+            let o = fcc(&a);
+            assert!(o.status.success(), "{}", stderr(&o));
+            let mut a = args.clone();
+            a.extend(["--stream", "--stats", "--output", s(&streamed)]);
+            let o = fcc(&a);
+            assert!(o.status.success(), "{}", stderr(&o));
+            let what = format!("{} {limits:?}", pcap.display());
+            let (f, st) = (labels(&framed), labels(&streamed));
+            assert!(same_partition(&f, &st), "{what}: partitions differ");
+            let out = String::from_utf8(o.stdout).unwrap();
+            let lines: Vec<serde_json::Value> = out
+                .lines()
+                .map(|l| serde_json::from_str(l).unwrap())
+                .collect();
+            let (records, stats) = lines.split_at(lines.len() - 1);
+            let stats = &stats[0];
+            let n = stats["clusters"].as_u64().unwrap();
+            assert_eq!(records.len() as u64, n, "{what}");
+            assert_eq!(u64::from(*st.iter().max().unwrap()), n, "{what}");
+            let mut last_closed = 0;
+            for (k, r) in records.iter().enumerate() {
+                assert_eq!(r["cluster"].as_u64(), Some(k as u64 + 1), "{what}");
+                let closed = r["closed_col"].as_u64().unwrap();
+                assert!(closed >= last_closed, "{what}: closing order");
+                last_closed = closed;
+                // The record's points are the label image's pixels of its id.
+                let px = st.iter().filter(|&&l| u64::from(l) == k as u64 + 1).count();
+                assert_eq!(r["points"].as_u64(), Some(px as u64), "{what}");
+            }
+            let lat = &stats["stream"];
+            assert_eq!(lat["records"].as_u64(), Some(n));
+            if !limits.is_empty() {
+                // With a bridge of 16, nothing but the seam holds a cluster
+                // more than 17 columns past its last column.
+                assert!(lat["max"].as_u64().unwrap() <= 17, "{what}: {lat}");
+            }
+        }
+    }
+}
+
+#[test]
+fn frame_mode_cluster_table_has_the_record_fields() {
+    let d = tmpdir("stream-table");
+    let (pcap, meta) = (
+        lidar_data().join(CAPTURES[2].0),
+        lidar_data().join(CAPTURES[2].1),
+    );
+    let csv = d.join("c.csv");
+    let o = fcc(&[
+        "cluster",
+        "--input",
+        s(&pcap),
+        "--meta",
+        s(&meta),
+        "--max-frames",
+        "1",
+        "--clusters",
+        s(&csv),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let header: Vec<&str> = text.lines().next().unwrap().split(',').collect();
+    let col = |name: &str| header.iter().position(|h| *h == name).unwrap();
+    let (closed, span_last, length, width) = (
+        col("closed_col"),
+        col("span_last_col"),
+        col("box_length"),
+        col("box_width"),
+    );
+    let rows: Vec<Vec<&str>> = text.lines().skip(1).map(|l| l.split(',').collect()).collect();
+    assert!(rows.len() > 10);
+    for r in &rows {
+        // Frame mode: every record closes at the frame end.
+        assert_eq!(r[closed], "1024", "{r:?}");
+        assert!(r[span_last].parse::<u32>().unwrap() < 1024);
+        let (l, w): (f64, f64) = (r[length].parse().unwrap(), r[width].parse().unwrap());
+        assert!(l >= w && w >= 0.0, "{r:?}");
+    }
+}
+
+#[test]
+fn the_row_major_core_refuses_limits_and_the_stream() {
+    let d = tmpdir("stream-refusals");
+    let npy = d.join("f.npy");
+    let o = fcc(&["scene", "--seed", "1", "--rows", "16", "--cols", "256", "--output", s(&npy)]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    for (args, why) in [
+        (
+            vec!["board", "run", "--virtual", "--input", s(&npy), "--bridge", "4"],
+            "unlimited contract",
+        ),
+        (
+            vec!["board", "run", "--virtual", "--input", s(&npy), "--stream"],
+            "drop --stream",
+        ),
+        (
+            vec!["sim", "--input", s(&npy), "--ring-reach", "16"],
+            "row-major core",
+        ),
+        (
+            vec!["cluster", "--input", s(&npy), "--stream", "--merge", "paper"],
+            "drop --merge paper",
+        ),
+    ] {
+        let o = fcc(&args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+        let e = stderr(&o);
+        assert!(e.lines().count() == 1 && e.contains(why), "{args:?}: {e}");
+    }
+}
