@@ -217,6 +217,17 @@ pub fn cluster_with(
     }
 }
 
+/// Whether two label images are the same partition: a bijection between
+/// their non-zero labels, zeros in the same places.
+pub fn same_partition(a: &[u32], b: &[u32]) -> bool {
+    use std::collections::HashMap;
+    let (mut ab, mut ba) = (HashMap::new(), HashMap::new());
+    a.len() == b.len()
+        && a.iter().zip(b).all(|(&x, &y)| {
+            (x == 0) == (y == 0) && *ab.entry(x).or_insert(y) == y && *ba.entry(y).or_insert(x) == x
+        })
+}
+
 /// Components of `reference` that `got` splits into more than one label:
 /// the measure of what the published merge table loses. Both are label
 /// images of the same frame; 0 is ignored.

@@ -1258,7 +1258,7 @@ fn capture_has_one_frame(path: &Path, args: &ClusterLidarArgs) -> bool {
 /// frames as asked, and hand each frame to `f`. Returns the frames used and
 /// the decoder's statistics; a capture without a single frame is an error
 /// that says what it held instead.
-fn for_each_frame(
+pub(crate) fn for_each_frame(
     input: &Path,
     o: &OusterArgs,
     mut f: impl FnMut(OusterFrame) -> anyhow::Result<()>,

@@ -14,6 +14,7 @@ mod cmd_lidar;
 mod cmd_results;
 mod cmd_scene;
 mod cmd_sim;
+mod cmd_stream;
 mod cmd_synth;
 mod model_args;
 mod progress;
@@ -53,6 +54,9 @@ enum Command {
     Cycles(cmd_cycles::CyclesArgs),
     /// Regenerate docs/results.md and its JSON: bench, cycles and synth for every K.
     Results(cmd_results::ResultsArgs),
+    /// How soon the golden stream closes its records, per K and reach
+    /// setting, on the synthetic corpus and Ouster captures (docs/streaming.md).
+    StreamReport(cmd_stream::StreamReportArgs),
     /// Time the golden model per K on synthetic scenes; compare exact and paper merging.
     Bench(cmd_bench::BenchArgs),
     /// Drive the core on a board (Linux UIO) or on the virtual board (Verilator
@@ -77,6 +81,7 @@ fn main() {
         Command::Eval(a) => cmd_lidar::run_eval(a),
         Command::Scene(a) => cmd_scene::run(a),
         Command::Bench(a) => cmd_bench::run(a),
+        Command::StreamReport(a) => cmd_stream::run(a),
         Command::Cycles(a) => cmd_cycles::run(a),
         Command::Results(a) => cmd_results::run(a),
         Command::Gen(a) => cmd_gen::run(a),

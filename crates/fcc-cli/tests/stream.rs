@@ -4,7 +4,7 @@
 //! row-major core refuses the limits and the stream.
 
 use fcc_testkit::{lidar_data, s, same_partition, stderr, tmpdir};
-use std::path::PathBuf;
+use std::path::Path;
 use std::process::Output;
 
 fn fcc(args: &[&str]) -> Output {
@@ -16,15 +16,21 @@ const CAPTURES: [(&str, &str); 4] = [
         "OS-0-128-U1_v2.3.0_1024x10.pcap",
         "OS-0-128-U1_v2.3.0_1024x10.json",
     ),
-    ("OS-1-32-G_v2.1.1_1024x10.pcap", "OS-1-32-G_v2.1.1_1024x10.json"),
-    ("OS-1-64_1024x10_fw20.pcap", "OS-1-64_sensor_config_reduced.json"),
+    (
+        "OS-1-32-G_v2.1.1_1024x10.pcap",
+        "OS-1-32-G_v2.1.1_1024x10.json",
+    ),
+    (
+        "OS-1-64_1024x10_fw20.pcap",
+        "OS-1-64_sensor_config_reduced.json",
+    ),
     (
         "OS-2-128-U1_v2.3.0_1024x10.pcap",
         "OS-2-128-U1_v2.3.0_1024x10.json",
     ),
 ];
 
-fn labels(p: &PathBuf) -> Vec<u32> {
+fn labels(p: &Path) -> Vec<u32> {
     fcc_npy::read_labels(p).unwrap().labels
 }
 
@@ -116,7 +122,11 @@ fn frame_mode_cluster_table_has_the_record_fields() {
         col("box_length"),
         col("box_width"),
     );
-    let rows: Vec<Vec<&str>> = text.lines().skip(1).map(|l| l.split(',').collect()).collect();
+    let rows: Vec<Vec<&str>> = text
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').collect())
+        .collect();
     assert!(rows.len() > 10);
     for r in &rows {
         // Frame mode: every record closes at the frame end.
@@ -131,11 +141,29 @@ fn frame_mode_cluster_table_has_the_record_fields() {
 fn the_row_major_core_refuses_limits_and_the_stream() {
     let d = tmpdir("stream-refusals");
     let npy = d.join("f.npy");
-    let o = fcc(&["scene", "--seed", "1", "--rows", "16", "--cols", "256", "--output", s(&npy)]);
+    let o = fcc(&[
+        "scene",
+        "--seed",
+        "1",
+        "--rows",
+        "16",
+        "--cols",
+        "256",
+        "--output",
+        s(&npy),
+    ]);
     assert!(o.status.success(), "{}", stderr(&o));
     for (args, why) in [
         (
-            vec!["board", "run", "--virtual", "--input", s(&npy), "--bridge", "4"],
+            vec![
+                "board",
+                "run",
+                "--virtual",
+                "--input",
+                s(&npy),
+                "--bridge",
+                "4",
+            ],
             "unlimited contract",
         ),
         (
@@ -147,7 +175,14 @@ fn the_row_major_core_refuses_limits_and_the_stream() {
             "row-major core",
         ),
         (
-            vec!["cluster", "--input", s(&npy), "--stream", "--merge", "paper"],
+            vec![
+                "cluster",
+                "--input",
+                s(&npy),
+                "--stream",
+                "--merge",
+                "paper",
+            ],
             "drop --merge paper",
         ),
     ] {

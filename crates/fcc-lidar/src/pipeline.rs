@@ -145,7 +145,7 @@ pub fn stream_image(
     let out_of_range = kept.valid_count() - frame.valid_count();
     STREAM.with(|cell| {
         let mut cell = cell.borrow_mut();
-        if cell.as_ref().is_none_or(|s| *s.params() != params) {
+        if !cell.as_ref().is_some_and(|s| *s.params() == params) {
             *cell = Some(Stream::new(&params)?);
         }
         let stream = cell.as_mut().expect("made above");

@@ -1,0 +1,171 @@
+//! `fcc stream-report`: how soon the golden stream (spec §9) closes its
+//! records, and what the reach limits of spec §3 change, on the synthetic
+//! corpus and on Ouster captures; writes the tables of docs/streaming.md.
+
+use crate::cmd_lidar::{for_each_frame, percentile, OusterArgs};
+use anyhow::{bail, Context};
+use clap::Args;
+use fcc_golden::{same_partition, MergeMode};
+use fcc_lidar::eval::synthetic_frames;
+use fcc_lidar::ground::{GroundMethod, GroundParams};
+use fcc_lidar::pipeline::{cluster_image, stream_image, PipelineConfig};
+use fcc_lidar::RangeImage;
+use fcc_params::FccParams;
+use std::fmt::Write as _;
+use std::path::PathBuf;
+
+#[derive(Args, Debug)]
+pub struct StreamReportArgs {
+    /// Synthetic scenes (seeds 1..=N, 64 x 2048, ground removed by the generator).
+    #[arg(long, default_value_t = 20)]
+    pub scenes: u64,
+    /// Ouster captures as CAPTURE.pcap:META.json (ground removed by `slope`).
+    #[arg(long, num_args = 1..)]
+    pub capture: Vec<String>,
+    /// Frames used per capture.
+    #[arg(long, default_value_t = 3)]
+    pub capture_frames: usize,
+    /// Filter sizes.
+    #[arg(long, num_args = 1.., value_delimiter = ',', default_values_t = [3usize, 7, 11])]
+    pub fsize: Vec<usize>,
+    /// Write the Markdown here (default: standard output).
+    #[arg(long)]
+    pub output: Option<PathBuf>,
+}
+
+/// The reach settings compared: (name, bridge, ring reach).
+const SETTINGS: [(&str, Option<u32>, Option<u32>); 4] = [
+    ("unlimited", None, None),
+    ("bridge 16, ring 16", Some(16), Some(16)),
+    ("bridge 4, ring 16", Some(4), Some(16)),
+    ("bridge 2, ring 16", Some(2), Some(16)),
+];
+
+#[derive(Default)]
+struct Tally {
+    frames: usize,
+    records: usize,
+    seam_held: usize,
+    latency: Vec<u32>,
+    /// Frames whose partition differs from the unlimited contract's.
+    changed_frames: usize,
+    clusters: usize,
+}
+
+pub fn run(args: &StreamReportArgs) -> anyhow::Result<()> {
+    let mut sources: Vec<(String, Vec<RangeImage>, GroundMethod)> = Vec::new();
+    if args.scenes > 0 {
+        eprintln!("making {} synthetic scenes", args.scenes);
+        let frames = synthetic_frames(1..args.scenes + 1, 64, 2048, false)?;
+        sources.push((
+            format!("synthetic corpus ({} scenes, 64 x 2048)", args.scenes),
+            frames.into_iter().map(|f| f.image).collect(),
+            GroundMethod::None,
+        ));
+    }
+    for spec in &args.capture {
+        let Some((pcap, meta)) = spec.rsplit_once(':') else {
+            bail!("--capture {spec}: give CAPTURE.pcap:META.json");
+        };
+        let o = OusterArgs {
+            meta: Some(PathBuf::from(meta)),
+            keep_incomplete: false,
+            lidar_frame: false,
+            skip_frames: 0,
+            max_frames: Some(args.capture_frames),
+        };
+        let mut images = Vec::new();
+        for_each_frame(std::path::Path::new(pcap), &o, |f| {
+            images.push(f.image);
+            Ok(())
+        })?;
+        if images.is_empty() {
+            bail!("{pcap}: no complete frame");
+        }
+        let name = std::path::Path::new(pcap)
+            .file_stem()
+            .map(|s| s.to_string_lossy().into_owned())
+            .unwrap_or_default();
+        let (r, c) = (images[0].rows, images[0].cols);
+        sources.push((
+            format!("{name} ({} frames, {r} x {c})", images.len()),
+            images,
+            GroundMethod::Slope,
+        ));
+    }
+    let mut md = String::new();
+    writeln!(
+        md,
+        "| source | K | setting | frames | records | seam-held | p50 | p90 | p99 | max | frames changed | clusters |"
+    )?;
+    writeln!(md, "|---|---|---|---|---|---|---|---|---|---|---|---|")?;
+    for (name, images, ground) in &sources {
+        for &k in &args.fsize {
+            eprintln!("{name}: K = {k}");
+            let cfg_for = |bridge, ring_reach| PipelineConfig {
+                params: FccParams {
+                    fsize: k,
+                    bridge,
+                    ring_reach,
+                    ..FccParams::default()
+                },
+                mode: MergeMode::Exact,
+                ground: GroundParams {
+                    method: *ground,
+                    ..GroundParams::default()
+                },
+                min_points: 0,
+            };
+            let unlimited: Vec<Vec<u32>> = images
+                .iter()
+                .map(|im| Ok(cluster_image(im, &cfg_for(None, None))?.labels))
+                .collect::<anyhow::Result<_>>()?;
+            for (setting, bridge, ring) in SETTINGS {
+                let cfg = cfg_for(bridge, ring);
+                let mut t = Tally::default();
+                for (im, want) in images.iter().zip(&unlimited) {
+                    let framed = cluster_image(im, &cfg)?;
+                    let streamed = stream_image(im, &cfg, |_| {})?;
+                    if !same_partition(&framed.labels, &streamed.result.labels) {
+                        bail!("{name}, K = {k}, {setting}: the stream's partition differs from frame mode's (a bug: spec §9.1)");
+                    }
+                    t.frames += 1;
+                    t.clusters += framed.clusters as usize;
+                    t.changed_frames += usize::from(!same_partition(want, &framed.labels));
+                    for r in &streamed.records {
+                        t.records += 1;
+                        if (r.record.closed_col as usize) < im.cols {
+                            t.latency.push(r.record.closed_col - r.record.last_col);
+                        } else {
+                            t.seam_held += 1;
+                        }
+                    }
+                }
+                t.latency.sort_unstable();
+                let q = |p| percentile(&t.latency, p).map_or("-".into(), |v| v.to_string());
+                writeln!(
+                    md,
+                    "| {name} | {k} | {setting} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
+                    t.frames,
+                    t.records,
+                    t.seam_held,
+                    q(50),
+                    q(90),
+                    q(99),
+                    t.latency.last().map_or("-".into(), |v| v.to_string()),
+                    t.changed_frames,
+                    t.clusters,
+                )?;
+            }
+        }
+    }
+    match &args.output {
+        Some(p) => {
+            fcc_io::write_atomic(p, md.as_bytes())
+                .with_context(|| format!("{}: cannot write", p.display()))?;
+            eprintln!("wrote {}", p.display());
+        }
+        None => print!("{md}"),
+    }
+    Ok(())
+}
