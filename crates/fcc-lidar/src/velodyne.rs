@@ -9,10 +9,12 @@
 //! status type and value). `docs/lidar.md` gives the layout of each model,
 //! the geometry and the sources.
 //!
-//! Rows are the lasers ordered by elevation (row 0 the top beam); columns
-//! are azimuth bins with the projection's convention (column 0 looks
-//! backwards, `cols / 2` forwards, clockwise seen from above), so a
-//! Velodyne range image lines up with a projected point cloud.
+//! Rows are the lasers ordered by elevation (row 0 the top beam); each
+//! firing sequence owns a column, placed from its position in the rotation
+//! with the projection's convention (column 0 looks backwards, `cols / 2`
+//! forwards, clockwise seen from above), so a Velodyne range image lines
+//! up with a projected point cloud and no two firing sequences of a
+//! rotation share a column however the block azimuths were rounded.
 
 use crate::error::{LidarError, Result};
 use crate::pcap::{PcapReader, PcapStats};
@@ -654,6 +656,10 @@ pub struct VelodyneStats {
 struct Firing {
     /// Block azimuth at the time of the firing, hundredths of a degree.
     azimuth: f64,
+    /// Position of its firing sequence in the rotation (0 for the first):
+    /// the sequence's column comes from it, never from the azimuth of a
+    /// single firing.
+    sequence: u64,
     laser: u16,
     distance: u16,
     intensity: u8,
@@ -669,6 +675,44 @@ struct Rotation {
     sequences: usize,
     first_azimuth: Option<f64>,
     last_azimuth: Option<f64>,
+    /// Azimuth of the first block used.
+    first_block: Option<u16>,
+    /// Azimuth and position of the latest block used.
+    last_block: Option<(u16, u64)>,
+    /// Position of the latest block of each bank (upper, lower).
+    bank_last: [Option<u64>; 2],
+}
+
+impl Rotation {
+    /// The position of a block in the rotation, counted in block steps
+    /// from its first block: the steps of `step` hundredths of a degree
+    /// since the latest block (rounded to the nearest, so a skipped packet
+    /// leaves its positions empty), and at least one past the latest block
+    /// of the same bank, so two blocks of one bank never share a position
+    /// however their azimuths were rounded. The HDL-64E's lower block
+    /// takes the position of the upper block it fired with.
+    fn place_block(&mut self, lower: bool, azimuth: u16, step: f64) -> u64 {
+        let mut pos = match self.last_block {
+            None => 0,
+            Some((prev, p)) => {
+                let steps = if step > 0.0 {
+                    ((f64::from(azimuth) - f64::from(prev)) / step + 0.5).floor()
+                } else {
+                    0.0
+                };
+                // Saturating: corrupt azimuths give nonsense, never a panic.
+                (p as f64 + steps).max(0.0) as u64
+            }
+        };
+        let bank = usize::from(lower);
+        if let Some(b) = self.bank_last[bank] {
+            pos = pos.max(b.saturating_add(1));
+        }
+        self.bank_last[bank] = Some(pos);
+        self.first_block.get_or_insert(azimuth);
+        self.last_block = Some((azimuth, pos));
+        pos
+    }
 }
 
 /// Decodes the data packets of a capture into rotations, one at a time.
@@ -896,9 +940,11 @@ impl<R: Read> VelodyneReader<R> {
                 }
             }
             self.last_block_azimuth = Some(azimuth);
+            let pos = self.current.place_block(lower, azimuth, block_step);
             let per_seq = 32 / seqs;
             for s in 0..seqs {
                 let seq_az = f64::from(azimuth) + seq_step * s as f64;
+                let sequence = pos.saturating_mul(seqs as u64).saturating_add(s as u64);
                 let r = &mut self.current;
                 if !lower {
                     r.sequences += 1;
@@ -917,6 +963,7 @@ impl<R: Read> VelodyneReader<R> {
                     let (t, period) = model.firing_time_us(k);
                     r.firings.push(Firing {
                         azimuth: seq_az + seq_step * t / period,
+                        sequence,
                         laser: (k + if lower { 32 } else { 0 }) as u16,
                         distance,
                         intensity: blk[o + 2],
@@ -963,6 +1010,7 @@ impl<R: Read> VelodyneReader<R> {
         }
         let cols = self.columns?;
         let rows = cal.lasers.len();
+        let columns = SequenceColumns::new(&r, cal, cols, complete);
         let mut image = RangeImage::empty(rows, cols);
         let mut intensity = vec![f32::NAN; rows * cols];
         let mut best = vec![f32::INFINITY; rows * cols];
@@ -971,10 +1019,8 @@ impl<R: Read> VelodyneReader<R> {
             let Some(l) = cal.lasers.get(laser) else {
                 continue;
             };
-            let (p, az_deg) = point(l, self.trig[laser], cal.distance_resolution_m, f);
-            let az = az_deg.rem_euclid(360.0);
-            let col = (((az / 360.0 + 0.5) * cols as f64).floor() as usize) % cols;
-            let i = self.rows[laser] * cols + col;
+            let p = point(l, self.trig[laser], cal.distance_resolution_m, f);
+            let i = self.rows[laser] * cols + columns.column(f.sequence, laser);
             let range = (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]).sqrt() as f32;
             if range.is_nan() {
                 continue;
@@ -1001,9 +1047,84 @@ impl<R: Read> VelodyneReader<R> {
     }
 }
 
-/// A return in metres (x forward, y left, z up) and the azimuth it points
-/// at (degrees clockwise from forward).
-fn point(l: &LaserCorrection, [sin_v, cos_v]: [f64; 2], res: f64, f: &Firing) -> ([f64; 3], f64) {
+/// Columns of one rotation's firing sequences. A firing sequence owns one
+/// column, taken from its position in the rotation, never from the rounded
+/// azimuth of a single firing: the first sequence's column is the bin of
+/// its azimuth, and sequence `j` lies `round(j · ratio)` columns after it,
+/// `ratio` being the columns per sequence: `cols` over the sequences of
+/// the turn in a complete rotation (exactly one column per sequence when
+/// the image has as many columns as the turn has sequences), otherwise
+/// from the azimuth its blocks span. Each laser's return goes to its
+/// sequence's column shifted by the laser's `rot_correction` in whole
+/// columns, so that a column looks in one direction. Positions and
+/// columns are integers: no floating-point rounding of an azimuth near a
+/// column edge decides a column.
+struct SequenceColumns {
+    cols: u64,
+    /// Column of the first sequence.
+    first: u64,
+    /// Columns per sequence position, as a fraction `num / den`.
+    num: u128,
+    den: u128,
+    /// Whole columns each laser's `rot_correction` turns it by, in 0..cols.
+    shift: Vec<u64>,
+}
+
+impl SequenceColumns {
+    fn new(
+        r: &Rotation,
+        cal: &VelodyneCalibration,
+        cols: usize,
+        complete: bool,
+    ) -> SequenceColumns {
+        let seqs = cal.model.sequences_per_block() as u128;
+        let first_az = r.first_block.unwrap_or(0);
+        let (last_az, last_pos) = r.last_block.unwrap_or((first_az, 0));
+        let cols_u = cols as u128;
+        let (num, den) = if complete {
+            // The turn's firing sequences: every position its blocks take.
+            (cols_u, seqs * (u128::from(last_pos) + 1))
+        } else if last_pos > 0 && last_az > first_az {
+            // The step its blocks' azimuths give.
+            (
+                cols_u * u128::from(last_az - first_az),
+                36000 * seqs * u128::from(last_pos),
+            )
+        } else {
+            (1, 1)
+        };
+        let cols = cols as u64;
+        let first = (u64::from(first_az) + 18000) * cols / 36000;
+        let shift = cal
+            .lasers
+            .iter()
+            .map(|l| {
+                let s = (-l.rot_correction.to_degrees() * cols as f64 / 360.0 + 0.5).floor();
+                (s as i64).rem_euclid(cols as i64) as u64
+            })
+            .collect();
+        SequenceColumns {
+            cols,
+            first,
+            num,
+            den,
+            shift,
+        }
+    }
+
+    /// The column of laser `laser`'s return in the firing sequence at
+    /// position `sequence`: `first + floor(sequence · num / den + 1/2)`
+    /// plus the laser's shift, modulo `cols`.
+    fn column(&self, sequence: u64, laser: usize) -> usize {
+        let steps = (2 * u128::from(sequence) * self.num + self.den) / (2 * self.den);
+        let steps = (steps % u128::from(self.cols)) as u64;
+        let shift = self.shift.get(laser).copied().unwrap_or(0);
+        ((self.first + steps + shift) % self.cols) as usize
+    }
+}
+
+/// A return in metres (x forward, y left, z up).
+fn point(l: &LaserCorrection, [sin_v, cos_v]: [f64; 2], res: f64, f: &Firing) -> [f64; 3] {
     let az = f.azimuth / 100.0 - l.rot_correction.to_degrees();
     let (sin_a, cos_a) = az.to_radians().sin_cos();
     let r = f64::from(f.distance) * res + l.dist_correction;
@@ -1025,7 +1146,7 @@ fn point(l: &LaserCorrection, [sin_v, cos_v]: [f64; 2], res: f64, f: &Firing) ->
     let xv = horizontal(rx) * sin_a - ho * cos_a;
     let yv = horizontal(ry) * cos_a + ho * sin_a;
     let z = ry * sin_v + vo * cos_v;
-    ([yv, -xv, z], az)
+    [yv, -xv, z]
 }
 
 impl<R: Read> Iterator for VelodyneReader<R> {
@@ -1144,18 +1265,69 @@ mod tests {
         let l = LaserCorrection::default();
         let f = |az: f64| Firing {
             azimuth: az,
+            sequence: 0,
             laser: 0,
             distance: 5000,
             intensity: 0,
         };
         // Azimuth 0 looks forward (+x), 90 degrees to the right (-y).
-        let (p, _) = point(&l, [0.0, 1.0], 0.002, &f(0.0));
+        let p = point(&l, [0.0, 1.0], 0.002, &f(0.0));
         assert!((p[0] - 10.0).abs() < 1e-9 && p[1].abs() < 1e-9, "{p:?}");
-        let (p, _) = point(&l, [0.0, 1.0], 0.002, &f(9000.0));
+        let p = point(&l, [0.0, 1.0], 0.002, &f(9000.0));
         assert!(p[0].abs() < 1e-9 && (p[1] + 10.0).abs() < 1e-9, "{p:?}");
         let up = 10f64.to_radians();
-        let (p, _) = point(&l, [up.sin(), up.cos()], 0.002, &f(0.0));
+        let p = point(&l, [up.sin(), up.cos()], 0.002, &f(0.0));
         assert!((p[2] - 10.0 * up.sin()).abs() < 1e-9, "{p:?}");
+    }
+
+    #[test]
+    fn block_positions_count_steps_and_never_repeat_in_a_bank() {
+        let mut r = Rotation::default();
+        // Jittered azimuths around a 40-step, then a lost packet of 12 blocks.
+        let pos: Vec<u64> = [0u16, 41, 79, 122, 158, 160 + 13 * 40]
+            .iter()
+            .map(|&a| r.place_block(false, a, 40.0))
+            .collect();
+        assert_eq!(pos, [0, 1, 2, 3, 4, 17]);
+        // A repeated or backward azimuth still advances by one.
+        assert_eq!(r.place_block(false, 680, 40.0), 18);
+        assert_eq!(r.place_block(false, 670, 40.0), 19);
+        // HDL-64E: the lower block shares its upper block's position.
+        let mut r = Rotation::default();
+        let pos: Vec<u64> = [
+            (false, 0u16),
+            (true, 0),
+            (false, 18),
+            (true, 18),
+            (false, 35),
+        ]
+        .iter()
+        .map(|&(lower, a)| r.place_block(lower, a, 18.0))
+        .collect();
+        assert_eq!(pos, [0, 0, 1, 1, 2]);
+    }
+
+    #[test]
+    fn sequence_columns_are_one_apart_in_a_complete_turn_and_shift_per_laser() {
+        let mut cal = VelodyneCalibration::nominal(VelodyneModel::Vlp32c).unwrap();
+        cal.lasers.truncate(2);
+        let mut r = Rotation::default();
+        for b in 0..1800u16 {
+            r.place_block(false, b * 20, 20.0);
+        }
+        let c = SequenceColumns::new(&r, &cal, 1800, true);
+        // Block azimuth 0 (forward) is column 900; laser 0 turns 1.4 degrees
+        // clockwise (7 columns), laser 1 4.2 degrees back (21 columns).
+        let cols: Vec<usize> = (0..1800).map(|j| c.column(j, 0)).collect();
+        assert_eq!(cols[0], 907);
+        assert!(cols.windows(2).all(|w| w[1] == (w[0] + 1) % 1800));
+        assert_eq!(c.column(0, 1), 879);
+        // Twice the columns: every other column.
+        let c = SequenceColumns::new(&r, &cal, 3600, true);
+        assert_eq!(
+            (0..4).map(|j| c.column(j, 0)).collect::<Vec<_>>(),
+            [1814, 1816, 1818, 1820]
+        );
     }
 
     #[test]
