@@ -321,6 +321,11 @@ impl Stream {
         let half = (cols / 2) as u32;
         let slot = c % (h + 1);
         self.window[slot * rows..(slot + 1) * rows].fill(([0; 3], NONE));
+        // Where columns c, c - 1, ..., c - h start in the window.
+        let mut bases = [0usize; 8];
+        for (dc, b) in bases.iter_mut().enumerate().take(h.min(c) + 1) {
+            *b = ((c - dc) % (h + 1)) * rows;
+        }
         for (i, p) in column.iter().enumerate() {
             let Some(p) = *p else { continue };
             self.stats.points += 1;
@@ -359,19 +364,26 @@ impl Stream {
             self.window[slot * rows + i] = (p, run);
             // The window pairs whose later pixel this is: columns c - h ..= c,
             // rows within h (in column c only the rows above are filled).
+            // Row by row, a window row's pixels mostly belong to one run:
+            // once a run is known to be in this pixel's cluster, its other
+            // pixels are skipped.
             let (lo, hi) = (i.saturating_sub(h), (i + h).min(rows - 1));
-            for dc in 0..=h.min(c) {
-                let base = ((c - dc) % (h + 1)) * rows;
-                for rr in lo..=hi {
+            for rr in lo..=hi {
+                if rr == i {
+                    continue;
+                }
+                let mut known = NONE;
+                for &base in &bases[..=h.min(c)] {
                     let (q, qrun) = self.window[base + rr];
-                    if qrun == NONE || rr == i {
+                    if qrun == NONE || qrun == known {
                         continue;
                     }
-                    if dist2(p, q) < th_v {
-                        let qroot = self.find(qrun);
-                        if qroot != root {
-                            root = self.union(root, qroot);
-                        }
+                    let qroot = self.find(qrun);
+                    if qroot == root {
+                        known = qrun;
+                    } else if dist2(p, q) < th_v {
+                        root = self.union(root, qroot);
+                        known = qrun;
                     }
                 }
             }
