@@ -10,8 +10,9 @@
 //! and is skipped without a distance; the others are compared pixel pair by
 //! pixel pair, over the compact points only, until the first join.
 
-use crate::frame::{dist2, Frame, Point};
+use crate::frame::{Frame, Point};
 use crate::merge::ExactMerge;
+use crate::threshold::Thresholds;
 use fcc_params::FccParams;
 
 /// A valid point and its column: x, y, z and the column's bits as `i16`
@@ -43,6 +44,9 @@ struct RunBox {
     /// lanes, so the gap between two boxes is computed lane-wise).
     lo: [i32; 4],
     hi: [i32; 4],
+    /// The largest inter-channel threshold of its points (`tV^2` with fixed
+    /// thresholds): no pair with a point of this run joins beyond it.
+    tv_max: i64,
 }
 
 /// Buffers of the exact path.
@@ -106,7 +110,7 @@ impl Exact {
     /// unlabelled).
     #[inline(never)]
     fn pass1(&mut self, params: &FccParams, frame: &Frame) -> (usize, bool, usize) {
-        let th_sq = params.th_h_sq();
+        let th = Thresholds::new(params);
         let max_runs = params.max_label() as usize;
         let Exact {
             px,
@@ -135,7 +139,7 @@ impl Exact {
             let mut after_prev = 0usize;
             for (c, q) in row.iter().enumerate() {
                 if let Some(p) = *q {
-                    if !params.bridges(c - after_prev) || dist2(p, prev) > th_sq {
+                    if !params.bridges(c - after_prev) || !th.continues(p, prev) {
                         starts.push((px.len() - base) as u32);
                     }
                     px.push([p[0], p[1], p[2], c as u16 as i16]);
@@ -165,6 +169,15 @@ impl Exact {
                         end: (base + end) as u32,
                         lo: [lo[0], lo[1], lo[2], 0].map(i32::from),
                         hi: [hi[0], hi[1], hi[2], 0].map(i32::from),
+                        tv_max: if th.v_adaptive() {
+                            row_px[start..end]
+                                .iter()
+                                .map(|q| th.v_of(point(q)))
+                                .max()
+                                .unwrap_or(th.v_sq())
+                        } else {
+                            th.v_sq()
+                        },
                     });
                 } else {
                     overflow = true;
@@ -183,7 +196,7 @@ impl Exact {
             if runs.len() >= first_run + 2
                 && runs[runs.len() - 1].end as usize == n
                 && params.ring_reaches(col(first_px), col(last_px))
-                && dist2(point(first_px), point(last_px)) <= th_sq
+                && th.continues(point(first_px), point(last_px))
             {
                 ring_joins.push((first_run as u32 + 1, runs.len() as u32));
             }
@@ -196,7 +209,7 @@ impl Exact {
     /// pair and returns how many pairs of runs (labels) joined.
     #[inline(never)]
     fn pass2(&mut self, params: &FccParams, rows: usize) -> u64 {
-        let th_sq = params.th_v_sq();
+        let th = Thresholds::new(params);
         let h = params.half();
         let Exact {
             px,
@@ -231,7 +244,8 @@ impl Exact {
                         if other.first as usize > hi {
                             break;
                         }
-                        if box_gap_sq(run, other) >= th_sq || !runs_touch(px, run, other, h, th_sq)
+                        if box_gap_sq(run, other) >= run.tv_max.min(other.tv_max)
+                            || !runs_touch(px, run, other, h, &th)
                         {
                             continue;
                         }
@@ -299,9 +313,9 @@ fn box_gap_sq(a: &RunBox, b: &RunBox) -> i64 {
 }
 
 /// Whether a point of run `a` and a point of run `b` at most `h` columns
-/// apart are closer than `tV` (`d2 < th_sq`).
+/// apart join (spec §4, with the range-adaptive threshold of §2).
 #[inline]
-fn runs_touch(px: &[Px], a: &RunBox, b: &RunBox, h: usize, th_sq: i64) -> bool {
+fn runs_touch(px: &[Px], a: &RunBox, b: &RunBox, h: usize, th: &Thresholds) -> bool {
     let centre = &px[a.start as usize..a.end as usize];
     let other = &px[b.start as usize..b.end as usize];
     let (first, last) = (b.first as usize, b.last as usize);
@@ -332,10 +346,7 @@ fn runs_touch(px: &[Px], a: &RunBox, b: &RunBox, h: usize, th_sq: i64) -> bool {
         while hi < other.len() && col(&other[hi]) <= c + h {
             hi += 1;
         }
-        if other[lo..hi]
-            .iter()
-            .any(|q| dist2(point(p), point(q)) < th_sq)
-        {
+        if other[lo..hi].iter().any(|q| th.joins(point(p), point(q))) {
             return true;
         }
     }

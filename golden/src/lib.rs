@@ -30,6 +30,7 @@ mod records;
 /// The pixel-level reference used by tests; not for production use.
 pub mod reference;
 mod stream;
+mod threshold;
 
 pub use frame::{dist2, quantize, quantize_point, Frame, Point};
 pub use merge::{renumber, ExactMerge, PaperMerge};
@@ -38,6 +39,7 @@ pub use pass2::{pass2, JoinSink};
 use pass2::{pass2_with, Pass2Buffers};
 pub use records::{frame_records, oriented_box, OrientedBox, Record};
 pub use stream::{Stream, StreamStats};
+pub use threshold::{point_threshold, range2, Thresholds};
 
 use fcc_params::{FccParams, ParamError};
 use serde::{Deserialize, Serialize};

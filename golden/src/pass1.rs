@@ -1,7 +1,8 @@
 //! Pass 1: intra-channel grouping with the ring check (spec §3, and §6 for
 //! the released code's ring handling).
 
-use crate::frame::{dist2, Frame, Point};
+use crate::frame::{Frame, Point};
+use crate::threshold::Thresholds;
 use fcc_params::FccParams;
 
 /// One labelled run: a label and the columns of its first and last valid
@@ -82,7 +83,7 @@ pub(crate) enum RingHandling {
 
 /// Pass 1 into the buffers of `out`, which keep their allocations.
 pub(crate) fn label_runs(params: &FccParams, frame: &Frame, ring: RingHandling, out: &mut Pass1) {
-    let th_sq = params.th_h_sq();
+    let th = Thresholds::new(params);
     let max_label = params.max_label();
     let cols = frame.cols;
     let Pass1 {
@@ -142,7 +143,7 @@ pub(crate) fn label_runs(params: &FccParams, frame: &Frame, ring: RingHandling, 
         for (c, p) in row_pts.iter().enumerate().skip(f + 1) {
             let Some(p) = *p else { continue };
             points += 1;
-            if !params.bridges(c - last - 1) || dist2(p, prev) > th_sq {
+            if !params.bridges(c - last - 1) || !th.continues(p, prev) {
                 close(current, start, last, &mut unlabelled);
                 current = new_label(&mut overflow);
                 start = c;
@@ -160,7 +161,7 @@ pub(crate) fn label_runs(params: &FccParams, frame: &Frame, ring: RingHandling, 
             && current != 0
             && first_label != current
             && params.ring_reaches(f, last)
-            && dist2(first_point, prev) <= th_sq
+            && th.continues(first_point, prev)
         {
             match ring {
                 RingHandling::Join => ring_joins.push((first_label, current)),
@@ -189,14 +190,14 @@ pub(crate) fn label_runs(params: &FccParams, frame: &Frame, ring: RingHandling, 
 /// of every row, as [`pass1`] splits them. More than
 /// [`FccParams::max_label`] means label overflow.
 pub fn runs_needed(params: &FccParams, frame: &Frame) -> u64 {
-    let th_sq = params.th_h_sq();
+    let th = Thresholds::new(params);
     let mut runs = 0u64;
     for row in frame.points.chunks_exact(frame.cols) {
         let mut prev: Option<(usize, Point)> = None;
         for (c, p) in row.iter().enumerate() {
             let Some(p) = *p else { continue };
             let continues =
-                prev.is_some_and(|(b, q)| params.bridges(c - b - 1) && dist2(p, q) <= th_sq);
+                prev.is_some_and(|(b, q)| params.bridges(c - b - 1) && th.continues(p, q));
             if !continues {
                 runs += 1;
             }

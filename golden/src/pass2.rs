@@ -2,6 +2,7 @@
 
 use crate::frame::Frame;
 use crate::pass1::Pass1;
+use crate::threshold::Thresholds;
 use fcc_params::FccParams;
 
 /// Receives the events of pass 2 in scan order. The exact merge only needs
@@ -49,7 +50,7 @@ pub(crate) fn pass2_with<S: JoinSink>(
     p1: &Pass1,
     sink: &mut S,
 ) -> u64 {
-    let th_sq = params.th_v_sq();
+    let th = Thresholds::new(params);
     let h = params.half();
     let cols = frame.cols;
     // x, y, z and label side by side; label 0 marks a pixel that never joins.
@@ -94,12 +95,8 @@ pub(crate) fn pass2_with<S: JoinSink>(
                     if q[3] == 0 {
                         continue;
                     }
-                    let (dx, dy, dz) = (
-                        i64::from(pc[0] - q[0]),
-                        i64::from(pc[1] - q[1]),
-                        i64::from(pc[2] - q[2]),
-                    );
-                    if dx * dx + dy * dy + dz * dz < th_sq {
+                    let point = |v: &[i32; 4]| [v[0] as i16, v[1] as i16, v[2] as i16];
+                    if th.joins(point(&pc), point(q)) {
                         let ln = q[3] as u32;
                         if ln != last {
                             last = ln;

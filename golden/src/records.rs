@@ -4,6 +4,7 @@
 //! cluster's points (the oriented box).
 
 use crate::frame::{dist2, Frame, Point};
+use crate::threshold::Thresholds;
 use fcc_params::FccParams;
 use fcc_pixel::Q_ONE;
 use serde::Serialize;
@@ -224,14 +225,14 @@ pub(crate) fn ring_join(
         || !labelled(f)
         || !labelled(l)
         || !params.ring_reaches(f, l)
-        || dist2(pf, pl) > params.th_h_sq()
+        || !Thresholds::new(params).continues(pf, pl)
     {
         return None;
     }
     let mut prev = (f, pf);
     for (c, p) in row.iter().enumerate().take(l + 1).skip(f + 1) {
         let Some(p) = *p else { continue };
-        if !params.bridges(c - prev.0 - 1) || dist2(p, prev.1) > params.th_h_sq() {
+        if !params.bridges(c - prev.0 - 1) || !Thresholds::new(params).continues(p, prev.1) {
             return Some((f, l));
         }
         prev = (c, p);

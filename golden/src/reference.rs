@@ -1,7 +1,7 @@
 //! A plain, slow, pixel-level union-find reading of the contract, written
 //! independently of the passes. Tests (and only tests) compare against it.
 
-use crate::frame::{dist2, Frame};
+use crate::frame::{dist2, Frame, Point};
 use fcc_params::FccParams;
 
 struct Dsu(Vec<usize>);
@@ -28,12 +28,25 @@ impl Dsu {
     }
 }
 
+/// A pair's squared threshold by spec §2: `max(t^2, (A^2 * min r2) >> 32)`.
+fn pair_threshold(t_sq: i64, slope_sq: u64, p: Point, q: Point) -> i64 {
+    let r2 = |v: Point| v.iter().map(|&c| i64::from(c) * i64::from(c)).sum::<i64>() as u128;
+    let own = (u128::from(slope_sq) * r2(p).min(r2(q))) >> 32;
+    t_sq.max(own as i64)
+}
+
 /// Final labels by the contract, straight from the definitions: pixels are
 /// the nodes, each rule adds edges, components are numbered by first pixel.
 pub fn reference_labels(params: &FccParams, frame: &Frame) -> Vec<u32> {
     let (rows, cols) = (frame.rows, frame.cols);
     let n = rows * cols;
     let idx = |r: usize, c: usize| r * cols + c;
+    let h_ok = |p: Point, q: Point| {
+        dist2(p, q) <= pair_threshold(params.th_h_sq(), params.th_h_slope_sq(), p, q)
+    };
+    let v_ok = |p: Point, q: Point| {
+        dist2(p, q) < pair_threshold(params.th_v_sq(), params.th_v_slope_sq(), p, q)
+    };
     // Which pixels are labelled: count run starts in raster order.
     let mut labelled = vec![false; n];
     let mut runs = 0u64;
@@ -42,8 +55,7 @@ pub fn reference_labels(params: &FccParams, frame: &Frame) -> Vec<u32> {
         let mut on = false;
         for c in 0..cols {
             if let Some(p) = frame.get(r, c) {
-                let cont = matches!(prev, Some((b, q)) if params.bridges(c - b - 1)
-                    && dist2(p, q) <= params.th_h_sq());
+                let cont = matches!(prev, Some((b, q)) if params.bridges(c - b - 1) && h_ok(p, q));
                 if !cont {
                     runs += 1;
                     on = runs <= u64::from(params.max_label());
@@ -61,8 +73,7 @@ pub fn reference_labels(params: &FccParams, frame: &Frame) -> Vec<u32> {
             if labelled[a]
                 && labelled[b]
                 && params.bridges(w[1] - w[0] - 1)
-                && dist2(frame.get(r, w[0]).unwrap(), frame.get(r, w[1]).unwrap())
-                    <= params.th_h_sq()
+                && h_ok(frame.get(r, w[0]).unwrap(), frame.get(r, w[1]).unwrap())
             {
                 dsu.union(a, b);
             }
@@ -73,7 +84,7 @@ pub fn reference_labels(params: &FccParams, frame: &Frame) -> Vec<u32> {
             if labelled[a]
                 && labelled[b]
                 && params.ring_reaches(f, l)
-                && dist2(frame.get(r, f).unwrap(), frame.get(r, l).unwrap()) <= params.th_h_sq()
+                && h_ok(frame.get(r, f).unwrap(), frame.get(r, l).unwrap())
             {
                 dsu.union(a, b);
             }
@@ -93,10 +104,7 @@ pub fn reference_labels(params: &FccParams, frame: &Frame) -> Vec<u32> {
                         continue;
                     }
                     let b = idx(rr as usize, cc as usize);
-                    if labelled[b]
-                        && dist2(frame.points[a].unwrap(), frame.points[b].unwrap())
-                            < params.th_v_sq()
-                    {
+                    if labelled[b] && v_ok(frame.points[a].unwrap(), frame.points[b].unwrap()) {
                         dsu.union(a, b);
                     }
                 }

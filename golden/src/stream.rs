@@ -7,8 +7,9 @@
 //! holds of spec §9.2 are marked on the roots that have them; every open
 //! root without one closes. All buffers are kept from one frame to the next.
 
-use crate::frame::{dist2, Point};
+use crate::frame::Point;
 use crate::records::{Acc, Record};
+use crate::threshold::Thresholds;
 use crate::GoldenError;
 use fcc_params::FccParams;
 use serde::Serialize;
@@ -177,7 +178,7 @@ impl Stream {
                 || l.run == NONE
                 || f.run == l.run
                 || !self.params.ring_reaches(f.col as usize, l.col as usize)
-                || dist2(f.p, l.p) > self.params.th_h_sq()
+                || !Thresholds::new(&self.params).continues(f.p, l.p)
             {
                 continue;
             }
@@ -317,7 +318,7 @@ impl Stream {
     fn take_column(&mut self, c: usize, column: &[Option<Point>]) {
         let (rows, cols) = (self.params.rows, self.params.cols);
         let h = self.params.half();
-        let (th_h, th_v) = (self.params.th_h_sq(), self.params.th_v_sq());
+        let th = Thresholds::new(&self.params);
         let half = (cols / 2) as u32;
         let slot = c % (h + 1);
         self.window[slot * rows..(slot + 1) * rows].fill(([0; 3], NONE));
@@ -330,7 +331,7 @@ impl Stream {
             let Some(p) = *p else { continue };
             self.stats.points += 1;
             let run = match self.latest[i] {
-                Some(q) if self.params.bridges(c - q.col as usize - 1) && dist2(p, q.p) <= th_h => {
+                Some(q) if self.params.bridges(c - q.col as usize - 1) && th.continues(p, q.p) => {
                     q.run
                 }
                 _ => self.new_run((c * rows + i) as u32),
@@ -381,7 +382,7 @@ impl Stream {
                     let qroot = self.find(qrun);
                     if qroot == root {
                         known = qrun;
-                    } else if dist2(p, q) < th_v {
+                    } else if th.joins(p, q) {
                         root = self.union(root, qroot);
                         known = qrun;
                     }

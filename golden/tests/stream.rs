@@ -182,11 +182,15 @@ proptest! {
         bits in prop::sample::select(vec![8u32, 12, 20]),
         bridge in prop::option::of(0u32..6),
         ring_reach in prop::option::of(0u32..24),
+        slopes in prop::option::of((0.0f64..0.08, 0.0f64..0.12)),
         seed in any::<u64>(),
     ) {
+        let (th_h_slope, th_v_slope) = slopes.unwrap_or((0.0, 0.0));
         let p = FccParams {
             th_h,
             th_v,
+            th_h_slope,
+            th_v_slope,
             label_bits: bits,
             bridge,
             ring_reach,
@@ -229,12 +233,32 @@ fn stream_equals_frame_on_scenes_for_every_fsize() {
         (7, 15),
     ] {
         let f = scene(64, 1024, seed);
-        for (bridge, ring_reach) in [(None, None), (Some(16), Some(16)), (Some(2), None)] {
+        for (bridge, ring_reach, slope) in [
+            (None, None, 0.0),
+            (Some(16), Some(16), 0.0),
+            (Some(2), None, 0.0),
+            (None, None, 0.03),
+        ] {
             let p = FccParams {
                 bridge,
                 ring_reach,
+                th_v_slope: slope,
+                th_h_slope: slope / 2.0,
                 ..params(64, 1024, k)
             };
+            if slope != 0.0 {
+                let got = cluster(&p, &f, MergeMode::Exact).unwrap();
+                assert_eq!(
+                    got.labels,
+                    reference_labels(&p, &f),
+                    "scene {seed}, K = {k}, slopes"
+                );
+                let fixed = cluster(&params(64, 1024, k), &f, MergeMode::Exact).unwrap();
+                assert!(
+                    got.clusters < fixed.clusters,
+                    "scene {seed}: slopes join nothing"
+                );
+            }
             check_stream(
                 &p,
                 &f,
@@ -435,6 +459,37 @@ fn overflow_leaves_the_runs_that_start_while_every_label_is_in_use() {
     assert_eq!(r.len(), 255);
     // The unlabelled pixels are the last 45 rows of column 0.
     assert!((0..rows).all(|i| (labels[i * 2] == 0) == (i >= 255)));
+}
+
+#[test]
+fn adaptive_thresholds_round_down_and_take_the_nearer_point() {
+    use fcc_golden::{point_threshold, Thresholds};
+    // A = round(0.1 * 2^16) = 6554; a point at 20 m (5120 units): r2 =
+    // 5120^2, own threshold (6554^2 * 5120^2) >> 32 = 262,176 units
+    // ((2 m)^2 is 262,144: the slope's rounding adds 0.1 mm).
+    let p = FccParams {
+        th_v_slope: 0.1,
+        ..FccParams::default()
+    };
+    let a2 = p.th_v_slope_sq();
+    assert_eq!(a2, 6554 * 6554);
+    assert_eq!(
+        point_threshold(a2, [5120, 0, 0]),
+        ((a2 * 5120 * 5120) >> 32) as i64
+    );
+    assert_eq!(point_threshold(a2, [5120, 0, 0]), 262_176);
+    let th = Thresholds::new(&p);
+    // At 20 m the pair threshold is about 2 m: points 1.9 m apart join,
+    // 2.1 m apart do not; at 5 m (0.5 m own) tV = 1 m wins.
+    let q = |y: f64, x: f64| fcc_golden::quantize_point(x, y, 0.0).unwrap();
+    assert!(th.joins(q(0.0, 20.0), q(1.9, 20.0)));
+    assert!(!th.joins(q(0.0, 20.0), q(2.1, 20.0)));
+    assert!(th.joins(q(0.0, 5.0), q(0.99, 5.0)) && !th.joins(q(0.0, 5.0), q(1.0, 5.0)));
+    // The nearer point sets it: 10 m and 30 m, 1.5 m apart: own 1 m at 10 m.
+    assert!(!th.joins(q(0.0, 10.0), [7680, 384, 0]));
+    // Slopes 0: the fixed contract.
+    let fixed = Thresholds::new(&FccParams::default());
+    assert!(!fixed.joins(q(0.0, 20.0), q(1.9, 20.0)));
 }
 
 #[test]

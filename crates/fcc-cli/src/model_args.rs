@@ -3,7 +3,7 @@
 use anyhow::Context;
 use clap::Args;
 use fcc_golden::MergeMode;
-use fcc_params::FccParams;
+use fcc_params::{FccParams, Preset};
 
 fn defaults() -> FccParams {
     FccParams::default()
@@ -28,7 +28,47 @@ pub struct ModelArgs {
     #[arg(long, default_value = "exact")]
     pub merge: MergeMode,
     #[command(flatten)]
+    pub slopes: SlopeArgs,
+    #[command(flatten)]
     pub limits: LimitArgs,
+}
+
+/// Range-adaptive thresholds (spec §2) and the named presets.
+#[derive(Args, Debug, Clone, Default)]
+pub struct SlopeArgs {
+    /// Slope of th_H with range, metres per metre (0 <= a < 1; 0: fixed).
+    #[arg(long, allow_negative_numbers = true, default_value_t = defaults().th_h_slope)]
+    pub th_h_slope: f64,
+    /// Slope of th_V with range, metres per metre (0 <= a < 1; 0: fixed).
+    #[arg(long, allow_negative_numbers = true, default_value_t = defaults().th_v_slope)]
+    pub th_v_slope: f64,
+    /// Thresholds and slopes by name: `paper` (0.5 m / 1.0 m, fixed, the
+    /// default) or `adaptive` (range-adaptive, tuned on the synthetic scenes).
+    #[arg(long, conflicts_with_all = ["th_h", "th_v", "th_h_slope", "th_v_slope"])]
+    pub preset: Option<Preset>,
+}
+
+impl SlopeArgs {
+    /// `p` with the preset's thresholds and slopes, or the slopes given.
+    pub fn apply(&self, p: FccParams) -> FccParams {
+        match self.preset {
+            Some(preset) => {
+                let (th_h, th_v, th_h_slope, th_v_slope) = preset.thresholds();
+                FccParams {
+                    th_h,
+                    th_v,
+                    th_h_slope,
+                    th_v_slope,
+                    ..p
+                }
+            }
+            None => FccParams {
+                th_h_slope: self.th_h_slope,
+                th_v_slope: self.th_v_slope,
+                ..p
+            },
+        }
+    }
 }
 
 /// The reach limits of pass 1 (spec §3), unlimited unless given.
@@ -47,7 +87,7 @@ pub struct LimitArgs {
 impl ModelArgs {
     /// Validated parameters for a `rows` x `cols` image.
     pub fn params(&self, rows: usize, cols: usize) -> anyhow::Result<FccParams> {
-        let p = FccParams {
+        let p = self.slopes.apply(FccParams {
             rows,
             cols,
             fsize: self.fsize,
@@ -57,7 +97,7 @@ impl ModelArgs {
             bridge: self.limits.bridge,
             ring_reach: self.limits.ring_reach,
             ..defaults()
-        };
+        });
         p.validate()?;
         Ok(p)
     }
@@ -93,12 +133,15 @@ pub struct HwArgs {
     /// Refused by the row-major core (it keeps the unlimited contract).
     #[command(flatten)]
     pub limits: LimitArgs,
+    /// Refused by the RTL while it has fixed thresholds.
+    #[command(flatten)]
+    pub slopes: SlopeArgs,
 }
 
 impl HwArgs {
     /// The parameters as given, not yet validated.
     pub fn unchecked(&self) -> FccParams {
-        FccParams {
+        self.slopes.apply(FccParams {
             rows: self.rows,
             cols: self.cols,
             fsize: self.fsize,
@@ -109,7 +152,8 @@ impl HwArgs {
             labels_per_beat: self.labels_per_beat,
             bridge: self.limits.bridge,
             ring_reach: self.limits.ring_reach,
-        }
+            ..defaults()
+        })
     }
 
     /// The parameters, validated for the RTL generator.

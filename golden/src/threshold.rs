@@ -1,0 +1,79 @@
+//! The join tests of pass 1 and pass 2 with range-adaptive thresholds
+//! (spec §2): a pair joins within `max(t^2, (A^2 * min(r2(p), r2(q))) >> 32)`.
+
+use crate::frame::{dist2, Point};
+use fcc_params::FccParams;
+
+/// The squared range `x^2 + y^2 + z^2` of a quantised point.
+#[inline]
+pub fn range2(p: Point) -> u64 {
+    dist2(p, [0; 3]) as u64
+}
+
+/// A point's own squared threshold for a squared slope `A^2` (UQ0.32):
+/// `(A^2 * r2(p)) >> 32`, rounded down. (`A^2 < 2^32`, `r2 < 3 * 2^30`: the
+/// product fits 64 bits.)
+#[inline]
+pub fn point_threshold(slope_sq: u64, p: Point) -> i64 {
+    ((slope_sq * range2(p)) >> 32) as i64
+}
+
+/// Both join tests of one parameter set.
+#[derive(Debug, Clone, Copy)]
+pub struct Thresholds {
+    h_sq: i64,
+    v_sq: i64,
+    h_slope_sq: u64,
+    v_slope_sq: u64,
+}
+
+impl Thresholds {
+    pub fn new(p: &FccParams) -> Thresholds {
+        Thresholds {
+            h_sq: p.th_h_sq(),
+            v_sq: p.th_v_sq(),
+            h_slope_sq: p.th_h_slope_sq(),
+            v_slope_sq: p.th_v_slope_sq(),
+        }
+    }
+
+    /// The inter-channel threshold of one point, `max(tV^2, its own)`: the
+    /// squared threshold of a pair is the smaller of its two points'.
+    #[inline]
+    pub fn v_of(&self, p: Point) -> i64 {
+        self.v_sq.max(point_threshold(self.v_slope_sq, p))
+    }
+
+    /// Whether the inter-channel threshold grows with range.
+    #[inline]
+    pub fn v_adaptive(&self) -> bool {
+        self.v_slope_sq != 0
+    }
+
+    /// The fixed inter-channel squared threshold `tV^2`.
+    #[inline]
+    pub fn v_sq(&self) -> i64 {
+        self.v_sq
+    }
+
+    /// Pass 1 and the ring check: `d2 <= max(tH^2, (A_H^2 min r2) >> 32)`.
+    #[inline]
+    pub fn continues(&self, p: Point, q: Point) -> bool {
+        let d = dist2(p, q);
+        if self.h_slope_sq == 0 {
+            return d <= self.h_sq;
+        }
+        let t = point_threshold(self.h_slope_sq, p).min(point_threshold(self.h_slope_sq, q));
+        d <= self.h_sq.max(t)
+    }
+
+    /// Pass 2: `d2 < max(tV^2, (A_V^2 min r2) >> 32)`.
+    #[inline]
+    pub fn joins(&self, p: Point, q: Point) -> bool {
+        let d = dist2(p, q);
+        if self.v_slope_sq == 0 {
+            return d < self.v_sq;
+        }
+        d < self.v_of(p).min(self.v_of(q))
+    }
+}
