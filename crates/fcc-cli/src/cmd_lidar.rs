@@ -7,28 +7,22 @@
 //! [`ConvertArgs`] / [`run_convert`], [`EvalArgs`] / [`run_eval`].
 
 use crate::model_args::ModelArgs;
-use crate::sensor_args::{for_each_velodyne_frame, velodyne_summary, VelodyneArgs};
+use crate::sensor_args::VelodyneArgs;
 use anyhow::{bail, Context};
 use clap::Args;
 use fcc_golden::MergeMode;
-use fcc_lidar::cloud::{read_point_cloud, write_ply_with_intensity, CloudFormat, PlyFormat};
+use fcc_lidar::cloud::{read_point_cloud, write_ply_with_intensity, PlyFormat};
 use fcc_lidar::clusters::{cluster_rows, frame_cluster_records, write_cluster_table, ClusterRow};
 use fcc_lidar::eval::{evaluate, score_frame, synthetic_frames, EvalConfig, EvalFrame};
 use fcc_lidar::ground::{GroundMethod, GroundParams};
-use fcc_lidar::labels::{
-    read_label_file, semantickitti_instances, write_label_file, DEFAULT_LABEL_CLASS,
-};
-use fcc_lidar::ouster::{
-    explain_no_frames, CaptureStats, CoordFrame, DecodeOptions, OusterFrame, OusterMetadata,
-    OusterReader,
-};
+use fcc_lidar::labels::{read_label_file, write_label_file, DEFAULT_LABEL_CLASS};
+use fcc_lidar::ouster::{CaptureStats, OusterFrame};
 use fcc_lidar::picture::{cluster_colour, cluster_colours, render_overview, Overview};
 use fcc_lidar::pipeline::{
     cluster_image, stream_image, ClosedRecord, PipelineConfig, PipelineResult,
 };
-use fcc_lidar::projection::{
-    project, BackProjection, Projection, ProjectionConfig, VerticalLayout,
-};
+use fcc_lidar::projection::{project, BackProjection, ProjectionConfig, VerticalLayout};
+use fcc_lidar::source::{for_each_ouster_frame, Frame as Item, InputKind, Source, SourceOptions};
 use fcc_lidar::RangeImage;
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
@@ -173,6 +167,49 @@ pub struct OusterArgs {
     pub max_frames: Option<usize>,
 }
 
+impl OusterArgs {
+    /// The input source's options for these capture options, the Velodyne
+    /// ones and the rest.
+    fn source(
+        &self,
+        velodyne: Option<&VelodyneArgs>,
+        topic: Option<&str>,
+        projection: ProjectionConfig,
+    ) -> SourceOptions {
+        SourceOptions {
+            meta: self.meta.clone(),
+            keep_incomplete: self.keep_incomplete,
+            lidar_frame: self.lidar_frame,
+            skip_frames: self.skip_frames,
+            max_frames: self.max_frames,
+            sensor: velodyne.map(VelodyneArgs::sensor).unwrap_or_default(),
+            velodyne: velodyne.map(VelodyneArgs::options).unwrap_or_default(),
+            topic: topic.map(str::to_string),
+            projection,
+            range_images: true,
+            strict: false,
+        }
+    }
+}
+
+/// Every frame of one input, in order, to `f`: the source's notes and, at
+/// the end, its warnings and summary line on stderr.
+fn for_each_input_frame(
+    input: &Path,
+    truth: Option<&Path>,
+    opts: &SourceOptions,
+    f: impl FnMut(Item) -> anyhow::Result<()>,
+) -> anyhow::Result<()> {
+    let summary = Source::open(input, truth, opts)?.for_each(|n| eprintln!("{n}"), f)?;
+    for w in &summary.warnings {
+        eprintln!("warning: {w}");
+    }
+    if let Some(line) = &summary.line {
+        eprintln!("{line}");
+    }
+    Ok(())
+}
+
 #[derive(Args, Debug, Clone)]
 pub struct ClusterLidarArgs {
     /// Inputs: Ouster captures (.pcap, .pcapng) with their JSON metadata,
@@ -299,64 +336,6 @@ pub fn check_png_path(png: Option<&Path>) -> anyhow::Result<()> {
     Ok(())
 }
 
-/// Points a frame lost on its way into the model.
-#[derive(Debug, Clone, Copy, Default)]
-struct Losses {
-    /// Point clouds: points above or below the vertical field of view.
-    outside_fov: usize,
-    /// Point clouds: points that lost their pixel to a nearer point (they
-    /// take a neighbour's label in per-point outputs).
-    pixel_shared: usize,
-    /// Point clouds: points with no pixel (zero or non-finite coordinates).
-    unprojected: usize,
-    /// Points in the input.
-    input_points: usize,
-}
-
-/// A range image ready for clustering, with what came with it.
-struct Item {
-    /// Input file stem, plus the frame id for captures.
-    name: String,
-    image: RangeImage,
-    /// Read from a .npy range image (no ground removal by default).
-    range_image: bool,
-    /// For point clouds: the projection, to map labels back to the points.
-    projection: Option<(Projection, Vec<[f32; 3]>)>,
-    /// Ground truth per pixel.
-    truth: Option<Vec<u32>>,
-    /// Ground truth per input point (point clouds).
-    truth_points: Option<Vec<u32>>,
-    /// Intensity per input point (point clouds) or per pixel (range images).
-    intensity: Option<Vec<f32>>,
-    /// Points lost before the image was made.
-    losses: Losses,
-}
-
-impl Item {
-    /// One frame of a sensor capture (Ouster or Velodyne): named after the
-    /// file and the frame, with the sensor's intensity per pixel.
-    fn capture_frame(
-        input: &Path,
-        frame: impl Into<u64>,
-        image: RangeImage,
-        intensity: Vec<f32>,
-    ) -> Item {
-        Item {
-            name: format!("{}_f{:05}", stem(input), frame.into()),
-            range_image: false,
-            losses: Losses {
-                input_points: image.valid_count(),
-                ..Losses::default()
-            },
-            image,
-            projection: None,
-            truth: None,
-            truth_points: None,
-            intensity: Some(intensity),
-        }
-    }
-}
-
 fn stem(path: &Path) -> String {
     path.file_stem()
         .unwrap_or_default()
@@ -374,219 +353,6 @@ fn output_path(out: &Path, name: &str, single: bool) -> PathBuf {
         .map(|e| format!(".{}", e.to_string_lossy()))
         .unwrap_or_default();
     out.with_file_name(format!("{}_{name}{ext}", stem(out)))
-}
-
-fn is_capture(path: &Path) -> bool {
-    matches!(
-        path.extension()
-            .and_then(|e| e.to_str())
-            .map(str::to_ascii_lowercase)
-            .as_deref(),
-        Some("pcap" | "pcapng")
-    )
-}
-
-fn is_mcap(path: &Path) -> bool {
-    path.extension()
-        .and_then(|e| e.to_str())
-        .is_some_and(|e| e.eq_ignore_ascii_case("mcap"))
-}
-
-/// The range image of one PointCloud2 message: organised clouds as they
-/// stand, unorganised ones projected (with the projection kept to map
-/// labels back to the points).
-fn cloud2_item(
-    name: String,
-    c: fcc_lidar::rosbag::Cloud2,
-    proj: &ProjectionConfig,
-) -> anyhow::Result<Item> {
-    if let Some((image, intensity)) = c.range_image()? {
-        return Ok(Item {
-            name,
-            range_image: false,
-            losses: Losses {
-                input_points: image.valid_count(),
-                ..Losses::default()
-            },
-            image,
-            projection: None,
-            truth: None,
-            truth_points: None,
-            intensity,
-        });
-    }
-    let (points, intensity) = c.finite_points();
-    let projection = project(&points, proj)?;
-    let unprojected = projection.unprojected_points();
-    let losses = Losses {
-        outside_fov: projection.outside_fov,
-        pixel_shared: points.len() - projection.kept_points() - unprojected,
-        unprojected,
-        input_points: points.len(),
-    };
-    Ok(Item {
-        name,
-        range_image: false,
-        losses,
-        image: projection.image.clone(),
-        projection: Some((projection, points)),
-        truth: None,
-        truth_points: None,
-        intensity,
-    })
-}
-
-/// Every cloud of a recording as an item, handed to `f`; the summary line
-/// goes to stderr.
-fn for_each_mcap_item(
-    input: &Path,
-    topic: Option<&str>,
-    proj: &ProjectionConfig,
-    mut f: impl FnMut(Item) -> anyhow::Result<()>,
-) -> anyhow::Result<()> {
-    let mut err = None;
-    let s = fcc_lidar::rosbag::read_pointclouds(input, topic, |k, c| {
-        let item = match cloud2_item(format!("{}_m{k:05}", stem(input)), c, proj) {
-            Ok(i) => i,
-            Err(e) => {
-                err = Some(e);
-                return Err(fcc_lidar::LidarError::Config("stopped".into()));
-            }
-        };
-        f(item).map_err(|e| {
-            err = Some(e);
-            fcc_lidar::LidarError::Config("stopped".into())
-        })
-    });
-    if let Some(e) = err {
-        return Err(e);
-    }
-    let s = s?;
-    eprintln!(
-        "{}: {} PointCloud2 messages used, {} malformed{}{}",
-        input.display(),
-        s.clouds,
-        s.malformed,
-        s.first_problem
-            .as_ref()
-            .map(|p| format!(" (first: {p})"))
-            .unwrap_or_default(),
-        s.cut_short
-            .as_ref()
-            .map(|c| format!("; the file breaks off: {c}"))
-            .unwrap_or_default()
-    );
-    Ok(())
-}
-
-fn is_npy(path: &Path) -> bool {
-    path.extension()
-        .and_then(|e| e.to_str())
-        .is_some_and(|e| e.eq_ignore_ascii_case("npy"))
-}
-
-fn metadata_for(capture: &Path, meta: Option<&Path>) -> anyhow::Result<OusterMetadata> {
-    let path = match meta {
-        Some(m) => m.to_path_buf(),
-        None if !capture.exists() => {
-            bail!("{}: no such capture file", capture.display())
-        }
-        None => {
-            let guess = capture.with_extension("json");
-            if !guess.exists() {
-                bail!(
-                    "{}: an Ouster capture needs its metadata JSON: pass --meta FILE (looked for {})",
-                    capture.display(),
-                    guess.display()
-                );
-            }
-            guess
-        }
-    };
-    Ok(OusterMetadata::from_file(&path)?)
-}
-
-fn decode_options(o: &OusterArgs) -> DecodeOptions {
-    DecodeOptions {
-        frame: if o.lidar_frame {
-            CoordFrame::Lidar
-        } else {
-            CoordFrame::Sensor
-        },
-        keep_incomplete: o.keep_incomplete,
-        min_range_m: 0.0,
-    }
-}
-
-fn npy_image(path: &Path) -> anyhow::Result<RangeImage> {
-    let img = fcc_npy::read_xyz(path)?;
-    let xyz = img.xyz.iter().map(|&v| v as f32).collect();
-    Ok(RangeImage::from_xyz(img.rows, img.cols, xyz)?)
-}
-
-fn cloud_item(path: &Path, truth: Option<&Path>, proj: &ProjectionConfig) -> anyhow::Result<Item> {
-    let cloud = read_point_cloud(path)?;
-    let projection = project(&cloud.points, proj)?;
-    let unprojected = projection.unprojected_points();
-    let losses = Losses {
-        outside_fov: projection.outside_fov,
-        pixel_shared: cloud.points.len() - projection.kept_points() - unprojected,
-        unprojected,
-        input_points: cloud.points.len(),
-    };
-    let (truth, truth_points) = match truth {
-        Some(t) => {
-            let raw = read_label_file(t, Some(cloud.len()))?;
-            let inst = semantickitti_instances(&raw);
-            (Some(projection.to_pixels(&inst, 0)?), Some(inst))
-        }
-        None => (None, None),
-    };
-    Ok(Item {
-        name: stem(path),
-        range_image: false,
-        image: projection.image.clone(),
-        projection: Some((projection, cloud.points)),
-        truth,
-        truth_points,
-        intensity: cloud.intensity,
-        losses,
-    })
-}
-
-fn npy_item(path: &Path, truth: Option<&Path>) -> anyhow::Result<Item> {
-    let image = npy_image(path)?;
-    let truth = match truth {
-        Some(t) => {
-            let l = fcc_npy::read_labels(t)?;
-            if (l.rows, l.cols) != (image.rows, image.cols) {
-                bail!(
-                    "{}: ground truth is {} x {} but {} is {} x {}",
-                    t.display(),
-                    l.rows,
-                    l.cols,
-                    path.display(),
-                    image.rows,
-                    image.cols
-                );
-            }
-            Some(l.labels)
-        }
-        None => None,
-    };
-    Ok(Item {
-        name: stem(path),
-        range_image: true,
-        losses: Losses {
-            input_points: image.valid_count(),
-            ..Losses::default()
-        },
-        image,
-        projection: None,
-        truth,
-        truth_points: None,
-        intensity: None,
-    })
 }
 
 /// Per point of the outputs: coordinates, cluster, ground, intensity.
@@ -1032,7 +798,14 @@ pub fn run_cluster_on(args: &ClusterLidarArgs, hw: Option<&dyn Hardware>) -> any
     if args.stream && args.model.merge != MergeMode::Exact {
         bail!("--stream clusters exactly (spec §9): drop --merge paper");
     }
-    let proj = args.projection.config()?;
+    let sources = SourceOptions {
+        strict: args.strict,
+        ..args.ouster.source(
+            Some(&args.velodyne),
+            args.topic.as_deref(),
+            args.projection.config()?,
+        )
+    };
     // The outputs as given; the names of several results are checked per frame.
     args.check_outputs("", true)?;
     let cfg_for = |range_image: bool| -> anyhow::Result<PipelineConfig> {
@@ -1053,11 +826,7 @@ pub fn run_cluster_on(args: &ClusterLidarArgs, hw: Option<&dyn Hardware>) -> any
         pool.current_num_threads().max(1) * 2
     };
     // One result overall keeps output names as given.
-    let single = args.input.len() == 1
-        && !is_mcap(&args.input[0])
-        && (!is_capture(&args.input[0])
-            || args.ouster.max_frames == Some(1)
-            || capture_has_one_frame(&args.input[0], args));
+    let single = args.input.len() == 1 && fcc_lidar::source::single_frame(&args.input[0], &sources);
     let pb = progress_bar(None, "frames");
     let mut lines = Vec::new();
     let mut table = Vec::new();
@@ -1094,110 +863,13 @@ pub fn run_cluster_on(args: &ClusterLidarArgs, hw: Option<&dyn Hardware>) -> any
     let mut items = Vec::new();
     for (k, input) in args.input.iter().enumerate() {
         let truth = args.truth.get(k).map(PathBuf::as_path);
-        if is_capture(input)
-            && args
-                .velodyne
-                .is_velodyne(input, args.ouster.meta.as_deref())
-        {
-            if truth.is_some() {
-                bail!(
-                    "{}: ground truth for Velodyne captures is not supported",
-                    input.display()
-                );
+        for_each_input_frame(input, truth, &sources, |item| {
+            items.push(item);
+            if items.len() >= batch {
+                flush(&mut items)?;
             }
-            let o = &args.ouster;
-            let (used, s, model) = for_each_velodyne_frame(
-                input,
-                &args.velodyne,
-                o.keep_incomplete,
-                o.skip_frames,
-                o.max_frames,
-                |frame| {
-                    items.push(Item::capture_frame(
-                        input,
-                        frame.index as u64,
-                        frame.image,
-                        frame.intensity,
-                    ));
-                    if items.len() >= batch {
-                        flush(&mut items)?;
-                    }
-                    Ok(())
-                },
-            )?;
-            eprintln!("{}", velodyne_summary(input, used, &s, model));
-        } else if is_capture(input) {
-            if truth.is_some() {
-                bail!(
-                    "{}: ground truth for Ouster captures is not supported",
-                    input.display()
-                );
-            }
-            let (used, s) = for_each_frame(input, &args.ouster, |frame| {
-                items.push(Item::capture_frame(
-                    input,
-                    frame.frame_id,
-                    frame.image,
-                    frame.reflectivity,
-                ));
-                if items.len() >= batch {
-                    flush(&mut items)?;
-                }
-                Ok(())
-            })?;
-            if used == 0 {
-                let why = format!(
-                    "{}: no frame used of {} (--skip-frames {}{})",
-                    input.display(),
-                    s.frames,
-                    args.ouster.skip_frames,
-                    args.ouster
-                        .max_frames
-                        .map(|m| format!(", --max-frames {m}"))
-                        .unwrap_or_default()
-                );
-                if args.strict {
-                    bail!("{why} (--strict)");
-                }
-                eprintln!("warning: {why}");
-            }
-            eprintln!(
-                "{}: {} frames used of {} ({} lidar packets, {} malformed, {} incomplete frames dropped, {} unreassembled fragments)",
-                input.display(),
-                used,
-                s.frames,
-                s.lidar_packets,
-                s.malformed_packets,
-                s.incomplete_frames,
-                s.pcap.unreassembled_fragments
-            );
-        } else if is_mcap(input) {
-            if truth.is_some() {
-                bail!(
-                    "{}: ground truth for MCAP recordings is not supported",
-                    input.display()
-                );
-            }
-            for_each_mcap_item(input, args.topic.as_deref(), &proj, |item| {
-                items.push(item);
-                if items.len() >= batch {
-                    flush(&mut items)?;
-                }
-                Ok(())
-            })?;
-        } else if is_npy(input) {
-            items.push(npy_item(input, truth)?);
-        } else if CloudFormat::from_path(input).is_some() {
-            items.push(cloud_item(input, truth, &proj)?);
-        } else {
-            bail!(
-                "{}: unknown input type (expected .pcap, .pcapng, .mcap, .bin, .pcd, .ply or .npy)",
-                input.display()
-            );
-        }
-        if items.len() >= batch {
-            flush(&mut items)?;
-        }
+            Ok(())
+        })?;
     }
     flush(&mut items)?;
     pb.finish_and_clear();
@@ -1219,41 +891,6 @@ pub fn run_cluster_on(args: &ClusterLidarArgs, hw: Option<&dyn Hardware>) -> any
     Ok(())
 }
 
-/// Whether a capture holds exactly one usable frame (decoding it twice is
-/// cheap next to clustering and keeps output names simple).
-fn capture_has_one_frame(path: &Path, args: &ClusterLidarArgs) -> bool {
-    if args.velodyne.is_velodyne(path, args.ouster.meta.as_deref()) {
-        let o = &args.ouster;
-        let mut n = 0;
-        let _ = for_each_velodyne_frame(
-            path,
-            &args.velodyne,
-            o.keep_incomplete,
-            o.skip_frames,
-            Some(2),
-            |_| {
-                n += 1;
-                Ok(())
-            },
-        );
-        return n == 1;
-    }
-    let Ok(meta) = metadata_for(path, args.ouster.meta.as_deref()) else {
-        return false;
-    };
-    let Ok(mut r) = OusterReader::open(path, &meta, decode_options(&args.ouster)) else {
-        return false;
-    };
-    let mut n = 0;
-    while let Ok(Some(_)) = r.next_frame() {
-        n += 1;
-        if n > args.ouster.skip_frames + 1 {
-            return false;
-        }
-    }
-    n == args.ouster.skip_frames + 1
-}
-
 /// Decode a capture (metadata from `--meta` or beside it), skip and cap
 /// frames as asked, and hand each frame to `f`. Returns the frames used and
 /// the decoder's statistics; a capture without a single frame is an error
@@ -1261,35 +898,10 @@ fn capture_has_one_frame(path: &Path, args: &ClusterLidarArgs) -> bool {
 pub(crate) fn for_each_frame(
     input: &Path,
     o: &OusterArgs,
-    mut f: impl FnMut(OusterFrame) -> anyhow::Result<()>,
+    f: impl FnMut(OusterFrame) -> anyhow::Result<()>,
 ) -> anyhow::Result<(usize, CaptureStats)> {
-    let meta = metadata_for(input, o.meta.as_deref())?;
-    if meta.transform_default && !o.lidar_frame {
-        eprintln!(
-            "{}: the metadata has no lidar_to_sensor_transform: using the {} default (x, y negated, z + {} mm)",
-            input.display(),
-            meta.prod_line.as_deref().unwrap_or("Ouster SDK"),
-            meta.lidar_to_sensor[11]
-        );
-    }
-    let mut reader = OusterReader::open(input, &meta, decode_options(o))?;
-    let (mut n, mut used) = (0, 0);
-    while let Some(frame) = reader.next_frame()? {
-        n += 1;
-        if n <= o.skip_frames {
-            continue;
-        }
-        if o.max_frames.is_some_and(|m| used >= m) {
-            break;
-        }
-        used += 1;
-        f(frame)?;
-    }
-    let stats = reader.stats();
-    if stats.frames == 0 {
-        bail!("{}: {}", input.display(), explain_no_frames(&meta, &stats));
-    }
-    Ok((used, stats))
+    let opts = o.source(None, None, ProjectionConfig::default());
+    for_each_ouster_frame(input, &opts, |n| eprintln!("{n}"), f)
 }
 
 #[derive(Args, Debug)]
@@ -1311,6 +923,10 @@ pub struct ConvertArgs {
     /// Topic of .mcap inputs (default: the only sensor_msgs/msg/PointCloud2 topic).
     #[arg(long)]
     pub topic: Option<String>,
+    /// Make lost points an error: points outside the field of view, a
+    /// capture with no frame (as `cluster --strict`).
+    #[arg(long)]
+    pub strict: bool,
 }
 
 /// `fcc convert`: range images as .npy, for `cluster`, `sim` and other tools.
@@ -1320,62 +936,32 @@ pub fn run_convert(args: &ConvertArgs) -> anyhow::Result<()> {
     inputs.extend(args.ouster.meta.as_deref());
     inputs.extend(args.projection.beams.as_deref());
     fcc_io::check_outputs(inputs.iter().copied(), &[("--output", &args.output)])?;
+    let sources = SourceOptions {
+        range_images: false,
+        strict: args.strict,
+        ..args
+            .ouster
+            .source(Some(&args.velodyne), args.topic.as_deref(), proj)
+    };
     let mut images: Vec<(String, RangeImage)> = Vec::new();
     for input in &args.input {
-        if is_capture(input)
-            && args
-                .velodyne
-                .is_velodyne(input, args.ouster.meta.as_deref())
-        {
-            let o = &args.ouster;
-            let (used, s, model) = for_each_velodyne_frame(
-                input,
-                &args.velodyne,
-                o.keep_incomplete,
-                o.skip_frames,
-                o.max_frames,
-                |f| {
-                    images.push((format!("{}_f{:05}", stem(input), f.index), f.image));
-                    Ok(())
-                },
-            )?;
-            eprintln!("{}", velodyne_summary(input, used, &s, model));
-        } else if is_capture(input) {
-            let (used, s) = for_each_frame(input, &args.ouster, |f| {
-                images.push((format!("{}_f{:05}", stem(input), f.frame_id), f.image));
-                Ok(())
-            })?;
-            if used == 0 {
-                eprintln!(
-                    "warning: {}: no frame used of {} (--skip-frames {})",
+        let cloud = InputKind::of(input, &sources) == Some(InputKind::Cloud);
+        for_each_input_frame(input, None, &sources, |frame| {
+            if cloud && frame.losses.outside_fov > 0 {
+                let w = format!(
+                    "{}: {} of {} points lie outside the vertical field of view and were squeezed into the top or bottom row; fit --fov-up/--fov-down or give --beams",
                     input.display(),
-                    s.frames,
-                    args.ouster.skip_frames
+                    frame.losses.outside_fov,
+                    frame.losses.input_points
                 );
+                if args.strict {
+                    bail!("{w} (--strict)");
+                }
+                eprintln!("warning: {w}");
             }
-        } else if is_mcap(input) {
-            for_each_mcap_item(input, args.topic.as_deref(), &proj, |item| {
-                images.push((item.name, item.image));
-                Ok(())
-            })?;
-        } else if CloudFormat::from_path(input).is_some() {
-            let cloud = read_point_cloud(input)?;
-            let projection = project(&cloud.points, &proj)?;
-            if projection.outside_fov > 0 {
-                eprintln!(
-                    "warning: {}: {} of {} points lie outside the vertical field of view and were squeezed into the top or bottom row; fit --fov-up/--fov-down or give --beams",
-                    input.display(),
-                    projection.outside_fov,
-                    cloud.points.len()
-                );
-            }
-            images.push((stem(input), projection.image));
-        } else {
-            bail!(
-                "{}: unknown input type (expected .pcap, .pcapng, .mcap, .bin, .pcd or .ply)",
-                input.display()
-            );
-        }
+            images.push((frame.name, frame.image));
+            Ok(())
+        })?;
     }
     if images.is_empty() {
         bail!("no frame to convert: nothing written");
@@ -1488,7 +1074,11 @@ pub fn run_eval(args: &EvalArgs) -> anyhow::Result<()> {
     fcc_io::check_outputs(inputs, &outputs)?;
     // .npy range images are taken as prepared (no ground removal by
     // default), as in `fcc cluster`.
-    let all_npy = !args.input.is_empty() && args.input.iter().all(|i| is_npy(i));
+    let all_npy = !args.input.is_empty()
+        && args
+            .input
+            .iter()
+            .all(|i| InputKind::of(i, &SourceOptions::default()) == Some(InputKind::RangeImage));
     let base = eval_base(args, all_npy)?;
     base.params.validate()?;
     for &k in &args.fsize {
@@ -1528,24 +1118,24 @@ pub fn run_eval(args: &EvalArgs) -> anyhow::Result<()> {
                 args.input.len()
             );
         }
-        let proj = args.projection.config()?;
-        args.input
-            .iter()
-            .zip(&args.truth)
-            .map(|(i, t)| -> anyhow::Result<EvalFrame> {
-                let item = if is_npy(i) {
-                    npy_item(i, Some(t))?
-                } else {
-                    cloud_item(i, Some(t), &proj)?
-                };
-                Ok(EvalFrame {
+        let sources = SourceOptions {
+            projection: args.projection.config()?,
+            range_images: true,
+            ..SourceOptions::default()
+        };
+        let mut frames = Vec::new();
+        for (i, t) in args.input.iter().zip(&args.truth) {
+            for_each_input_frame(i, Some(t), &sources, |item| {
+                frames.push(EvalFrame {
                     name: item.name,
                     image: item.image,
                     truth: item.truth.unwrap_or_default(),
                     ground: None,
-                })
-            })
-            .collect::<anyhow::Result<_>>()?
+                });
+                Ok(())
+            })?;
+        }
+        frames
     };
     let pb = progress_bar(Some(frames.len() as u64), "frames");
     let table = pool.install(|| {
@@ -1609,7 +1199,7 @@ fn run_eval_semantickitti(args: &EvalArgs, pool: &rayon::ThreadPool) -> anyhow::
         .iter()
         .zip(&args.truth)
         .map(|(i, t)| -> anyhow::Result<ScanTruth> {
-            if CloudFormat::from_path(i).is_none() {
+            if InputKind::of(i, &SourceOptions::default()) != Some(InputKind::Cloud) {
                 bail!(
                     "{}: --rules semantickitti scores point clouds (.bin, .pcd, .ply) with .label ground truth",
                     i.display()

@@ -1,12 +1,9 @@
-//! Which sensor a packet capture comes from, and the Velodyne options.
+//! Which sensor a packet capture comes from, and the Velodyne options, as
+//! the input source takes them.
 
-use anyhow::bail;
 use clap::{Args, ValueEnum};
-use fcc_lidar::velodyne::{
-    explain_no_frames, DualReturn, VelodyneFrame, VelodyneModel, VelodyneOptions, VelodyneReader,
-    VelodyneStats,
-};
-use std::path::{Path, PathBuf};
+use fcc_lidar::velodyne::{DualReturn, VelodyneModel, VelodyneOptions};
+use std::path::PathBuf;
 
 /// The sensor family of a packet capture.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -43,86 +40,23 @@ pub struct VelodyneArgs {
 }
 
 impl VelodyneArgs {
-    /// Whether a capture is to be read as Velodyne.
-    pub fn is_velodyne(&self, capture: &Path, meta: Option<&Path>) -> bool {
+    /// The sensor family, for the input source.
+    pub fn sensor(&self) -> fcc_lidar::source::Sensor {
         match self.sensor {
-            Sensor::Velodyne => true,
-            Sensor::Ouster => false,
-            Sensor::Auto => {
-                self.velodyne_model.is_some()
-                    || self.velodyne_calibration.is_some()
-                    || (meta.is_none() && !capture.with_extension("json").exists())
-            }
+            Sensor::Auto => fcc_lidar::source::Sensor::Auto,
+            Sensor::Ouster => fcc_lidar::source::Sensor::Ouster,
+            Sensor::Velodyne => fcc_lidar::source::Sensor::Velodyne,
         }
     }
 
-    fn options(&self, keep_incomplete: bool) -> VelodyneOptions {
+    /// The decoder options (`keep_incomplete` comes from the source's options).
+    pub fn options(&self) -> VelodyneOptions {
         VelodyneOptions {
             model: self.velodyne_model,
             calibration: self.velodyne_calibration.clone(),
             columns: self.velodyne_cols,
             dual: self.velodyne_return,
-            keep_incomplete,
+            keep_incomplete: false,
         }
     }
-}
-
-/// Decode a Velodyne capture, skip and cap rotations as asked, and hand
-/// each to `f`. Returns the rotations used and the decoder's statistics; a
-/// capture without a single rotation is an error that says what it held.
-pub fn for_each_velodyne_frame(
-    input: &Path,
-    v: &VelodyneArgs,
-    keep_incomplete: bool,
-    skip: usize,
-    max: Option<usize>,
-    mut f: impl FnMut(VelodyneFrame) -> anyhow::Result<()>,
-) -> anyhow::Result<(usize, VelodyneStats, Option<VelodyneModel>)> {
-    let mut reader = VelodyneReader::open(input, v.options(keep_incomplete))?;
-    let (mut n, mut used) = (0, 0);
-    while let Some(frame) = reader.next_frame()? {
-        n += 1;
-        if n <= skip {
-            continue;
-        }
-        if max.is_some_and(|m| used >= m) {
-            break;
-        }
-        used += 1;
-        f(frame)?;
-    }
-    let stats = reader.stats();
-    if stats.frames == 0 {
-        bail!("{}: {}", input.display(), explain_no_frames(&stats));
-    }
-    Ok((used, stats, reader.model()))
-}
-
-/// The summary line of a decoded capture, for stderr.
-pub fn velodyne_summary(
-    input: &Path,
-    used: usize,
-    s: &VelodyneStats,
-    model: Option<VelodyneModel>,
-) -> String {
-    let mut modes: Vec<String> = s
-        .return_modes
-        .iter()
-        .map(|(k, v)| format!("{k} {v}"))
-        .collect();
-    if modes.is_empty() {
-        modes.push("not in the packets".into());
-    }
-    format!(
-        "{}: Velodyne {}, {} rotations used of {} ({} data packets, return modes [{}], {} malformed, {} of another model, {} partial rotations dropped)",
-        input.display(),
-        model.map(VelodyneModel::name).unwrap_or("?"),
-        used,
-        s.frames,
-        s.data_packets,
-        modes.join(", "),
-        s.malformed_packets,
-        s.foreign_packets,
-        s.incomplete_frames
-    )
 }

@@ -12,6 +12,9 @@
 //!   [`projection`] turns into range images and whose labels it maps back to
 //!   every input point.
 //!
+//! [`source`] is the one way from a path to frames: it tells the file type
+//! and hands every input's range images on in order.
+//!
 //! [`ground`] removes the ground before clustering, [`pipeline`] runs ground
 //! removal, the golden model and the `--min-points` filter, [`labels`] and
 //! [`picture`] write `.label` files and PNG pictures, [`clusters`] the
@@ -54,6 +57,7 @@ pub mod pipeline;
 pub mod projection;
 pub mod rosbag;
 pub mod semantickitti;
+pub mod source;
 pub mod velodyne;
 
 pub use error::{LidarError, Result};
