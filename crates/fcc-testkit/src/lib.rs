@@ -94,4 +94,47 @@ mod tests {
         assert_eq!(std::fs::read_dir(&d2).unwrap().count(), 0);
         let _ = std::fs::remove_dir_all(&d2);
     }
+
+    /// The full regression's switch (this crate's `full-regression`
+    /// feature) is turned on by fcc-synth, a workspace member outside
+    /// `default-members`: were fcc-synth a default member, `cargo test`
+    /// would run the full regression; without the switch, `cargo test
+    /// --workspace` would leave out the targets that require it.
+    #[test]
+    fn full_regression_is_switched_on_by_a_member_the_quick_tests_leave_out() {
+        let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+        let read =
+            |f: &str| std::fs::read_to_string(root.join(f)).unwrap_or_else(|e| panic!("{f}: {e}"));
+        let list = |toml: &str, key: &str| -> Vec<String> {
+            let start = toml
+                .find(&format!("\n{key} = ["))
+                .unwrap_or_else(|| panic!("Cargo.toml lacks {key}"));
+            let rest = &toml[start..];
+            rest[rest.find('[').unwrap() + 1..rest.find(']').unwrap()]
+                .split(',')
+                .map(|m| m.trim().trim_matches('"').to_string())
+                .filter(|m| !m.is_empty())
+                .collect()
+        };
+        let workspace = read("Cargo.toml");
+        let (members, defaults) = (
+            list(&workspace, "members"),
+            list(&workspace, "default-members"),
+        );
+        assert!(members.contains(&"crates/fcc-synth".to_string()));
+        assert!(
+            !defaults.contains(&"crates/fcc-synth".to_string()),
+            "fcc-synth switches on the full regression: keep it out of default-members"
+        );
+        let synth = read("crates/fcc-synth/Cargo.toml");
+        let dev = &synth[synth
+            .find("[dev-dependencies]")
+            .expect("fcc-synth has dev-dependencies")..];
+        assert!(
+            dev.lines()
+                .any(|l| l.starts_with("fcc-testkit")
+                    && l.contains("features = [\"full-regression\"]")),
+            "fcc-synth's dev-dependencies switch on fcc-testkit/full-regression"
+        );
+    }
 }
