@@ -413,37 +413,44 @@ fn png_output_with_another_extension_is_refused() {
 }
 
 #[test]
-fn readme_apt_line_installs_what_ci_installs_and_puts_fcc_on_path() {
+fn readme_set_up_is_the_script_ci_runs_and_puts_fcc_on_path() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
-    let readme = std::fs::read_to_string(root.join("README.md")).unwrap();
-    let ci = std::fs::read_to_string(root.join(".ci/run")).unwrap();
-    let packages = |text: &str| -> Vec<String> {
-        let line = text
-            .lines()
-            .find(|l| l.contains("apt-get install"))
-            .expect("an apt-get install line");
-        let mut p: Vec<String> = line
-            .split("apt-get install")
-            .nth(1)
-            .unwrap()
-            .split("&&")
-            .next()
-            .unwrap()
-            .split_whitespace()
-            .filter(|w| !w.starts_with('-') && !w.starts_with('>'))
-            .map(str::to_string)
-            .collect();
-        p.sort();
-        p
-    };
-    let (r, c) = (packages(&readme), packages(&ci));
-    for pkg in &c {
+    let read =
+        |f: &str| std::fs::read_to_string(root.join(f)).unwrap_or_else(|e| panic!("{f}: {e}"));
+    let (readme, ci, setup) = (read("README.md"), read(".ci/run"), read("setup.sh"));
+    // One set-up command for a user and for CI: the same script.
+    assert!(
+        readme.lines().any(|l| l.trim() == "./setup.sh"),
+        "README's set-up command is `./setup.sh`"
+    );
+    assert!(
+        ci.lines().any(|l| l.trim_start().starts_with("./setup.sh")),
+        ".ci/run sets up with ./setup.sh"
+    );
+    let packages: Vec<&str> = setup
+        .lines()
+        .find_map(|l| l.trim().strip_prefix("APT_PACKAGES=("))
+        .and_then(|l| l.strip_suffix(')'))
+        .expect("setup.sh lists its APT_PACKAGES=(...) on one line")
+        .split_whitespace()
+        .collect();
+    for pkg in [
+        "verilator",
+        "yosys",
+        "z3",
+        "iverilog",
+        "g++",
+        "tcl",
+        "python3-venv",
+    ] {
         assert!(
-            r.contains(pkg),
-            "README's apt line lacks {pkg} (CI installs {c:?}, README {r:?})"
+            packages.contains(&pkg),
+            "setup.sh does not install {pkg} (it installs {packages:?})"
         );
     }
-    assert!(readme.contains("cargo install --path crates/fcc-cli"));
+    assert!(setup.contains("-r sim/cocotb/requirements.txt"));
+    // Without --no-install (CI's flag) it puts fcc on PATH.
+    assert!(setup.contains("cargo install --locked --path crates/fcc-cli"));
     for doc in [
         "README.md",
         "docs/rtl.md",
