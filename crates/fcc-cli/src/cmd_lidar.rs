@@ -1032,6 +1032,8 @@ pub struct EvalArgs {
     #[arg(long, default_value_t = fcc_params::FccParams::default().label_bits)]
     pub label_bits: u32,
     #[command(flatten)]
+    pub slopes: crate::model_args::SlopeArgs,
+    #[command(flatten)]
     pub ground: GroundArgs,
     /// Drop clusters of N points or fewer before scoring.
     #[arg(long, default_value_t = 0)]
@@ -1167,12 +1169,12 @@ pub fn run_eval(args: &EvalArgs) -> anyhow::Result<()> {
 /// The pipeline settings of `fcc eval`.
 fn eval_base(args: &EvalArgs, range_images: bool) -> anyhow::Result<PipelineConfig> {
     Ok(PipelineConfig {
-        params: fcc_params::FccParams {
+        params: args.slopes.apply(fcc_params::FccParams {
             th_h: args.th_h,
             th_v: args.th_v,
             label_bits: args.label_bits,
             ..fcc_params::FccParams::default()
-        },
+        }),
         mode: MergeMode::Exact,
         ground: args.ground.params(range_images)?,
         min_points: args.min_points,

@@ -106,9 +106,52 @@ fn slopes_are_checked_and_refused_by_the_rtl() {
             vec!["sim", "--input", s(&npy), "--th-h-slope", "0.01"],
             "the RTL has fixed thresholds",
         ),
+        (
+            vec![
+                "board",
+                "run",
+                "--virtual",
+                "--input",
+                s(&npy),
+                "--preset",
+                "adaptive",
+            ],
+            "the RTL has fixed thresholds",
+        ),
     ] {
         let o = fcc(&args);
         assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
         assert!(stderr(&o).contains(why), "{args:?}: {}", stderr(&o));
     }
+}
+
+#[test]
+fn eval_reports_pq_by_range_band_and_takes_the_preset() {
+    let o = fcc(&[
+        "eval",
+        "--synthetic",
+        "2",
+        "--scene-rows",
+        "32",
+        "--scene-cols",
+        "512",
+        "--fsize",
+        "7",
+        "--merge",
+        "exact",
+        "--preset",
+        "adaptive",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = String::from_utf8(o.stdout).unwrap();
+    assert!(out.contains("slopes 0.02 / 0.05 m per m"), "{out}");
+    assert!(
+        out.contains("| K | merge | 0-20 m | 20-40 m | 40-80 m |"),
+        "{out}"
+    );
+    assert!(
+        out.lines()
+            .any(|l| l.starts_with("| 7 | exact | 0.") && l.matches('(').count() == 3),
+        "{out}"
+    );
 }

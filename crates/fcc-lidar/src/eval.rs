@@ -273,6 +273,18 @@ pub struct EvalRow {
     #[serde(flatten)]
     pub scores: Scores,
     pub counts: Counts,
+    /// The scores per range band ([`RANGE_BANDS`]).
+    pub bands: Vec<BandScores>,
+}
+
+/// The scores of one range band, metres `[lo, hi)`.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct BandScores {
+    pub lo: f64,
+    pub hi: f64,
+    #[serde(flatten)]
+    pub scores: Scores,
+    pub counts: Counts,
 }
 
 /// Quality per filter size and merge mode over a set of frames.
@@ -281,6 +293,9 @@ pub struct EvalTable {
     pub frames: usize,
     pub th_h: f64,
     pub th_v: f64,
+    /// Range-adaptive slopes (spec §2), metres per metre.
+    pub th_h_slope: f64,
+    pub th_v_slope: f64,
     pub min_points: usize,
     pub ground_method: GroundMethod,
     /// Ground removal against the true ground, when every frame has it.
@@ -343,7 +358,7 @@ pub fn evaluate(
             });
         }
     }
-    type PerFrame = (Vec<Counts>, Option<GroundScore>);
+    type PerFrame = (Vec<(Counts, Vec<Counts>)>, Option<GroundScore>);
     let per_frame: Vec<PerFrame> = frames
         .par_iter()
         .map(|f| -> Result<PerFrame> {
@@ -353,6 +368,13 @@ pub fn evaluate(
                 None => None,
             };
             let frame = f.image.without(&ground.mask).to_frame();
+            let range: Vec<f32> = (0..f.image.pixels())
+                .map(|i| {
+                    f.image.point(i).map_or(f32::NAN, |p| {
+                        (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]).sqrt()
+                    })
+                })
+                .collect();
             let mut out = Vec::with_capacity(fsizes.len() * modes.len());
             for &k in fsizes {
                 for &mode in modes {
@@ -369,7 +391,10 @@ pub fn evaluate(
                     } else {
                         c.labels
                     };
-                    out.push(score_frame(&labels, &f.truth, cfg)?);
+                    out.push((
+                        score_frame(&labels, &f.truth, cfg)?,
+                        score_frame_by_range(&labels, &f.truth, &range, &RANGE_BANDS, cfg)?,
+                    ));
                 }
             }
             progress();
@@ -380,14 +405,29 @@ pub fn evaluate(
     for (ki, &k) in fsizes.iter().enumerate() {
         for (mi, &mode) in modes.iter().enumerate() {
             let mut counts = Counts::default();
+            let mut bands = vec![Counts::default(); RANGE_BANDS.len()];
             for (c, _) in &per_frame {
-                counts.add(&c[ki * modes.len() + mi]);
+                let (all, by_band) = &c[ki * modes.len() + mi];
+                counts.add(all);
+                for (b, x) in bands.iter_mut().zip(by_band) {
+                    b.add(x);
+                }
             }
             rows.push(EvalRow {
                 fsize: k,
                 mode,
                 scores: counts.scores(),
                 counts,
+                bands: RANGE_BANDS
+                    .iter()
+                    .zip(bands)
+                    .map(|(&(lo, hi), counts)| BandScores {
+                        lo,
+                        hi,
+                        scores: counts.scores(),
+                        counts,
+                    })
+                    .collect(),
             });
         }
     }
@@ -406,6 +446,8 @@ pub fn evaluate(
         frames: frames.len(),
         th_h: base.params.th_h,
         th_v: base.params.th_v,
+        th_h_slope: base.params.th_h_slope,
+        th_v_slope: base.params.th_v_slope,
         min_points: base.min_points,
         ground_method: base.ground.method,
         ground,
@@ -424,6 +466,12 @@ impl EvalTable {
             "{} frames, th_H = {} m, th_V = {} m, min points {}, ground removal `{}`",
             self.frames, self.th_h, self.th_v, self.min_points, self.ground_method
         );
+        if self.th_h_slope != 0.0 || self.th_v_slope != 0.0 {
+            s.push_str(&format!(
+                ", slopes {} / {} m per m",
+                self.th_h_slope, self.th_v_slope
+            ));
+        }
         if let Some(g) = &self.ground {
             s.push_str(&format!(
                 " (ground precision {:.4}, recall {:.4})",
@@ -449,6 +497,21 @@ impl EvalTable {
                 sc.clusters_per_frame,
                 sc.instances_per_frame
             ));
+        }
+        s.push_str("\nPQ by range band (instances and clusters by their mean range; instances per band in brackets):\n\n| K | merge |");
+        for (lo, hi) in RANGE_BANDS {
+            s.push_str(&format!(" {lo}-{hi} m |"));
+        }
+        s.push_str(&format!(
+            "\n|---|---|{}\n",
+            "---|".repeat(RANGE_BANDS.len())
+        ));
+        for r in &self.rows {
+            s.push_str(&format!("| {} | {} |", r.fsize, mode(r.mode)));
+            for b in &r.bands {
+                s.push_str(&format!(" {:.3} ({}) |", b.scores.pq, b.counts.instances));
+            }
+            s.push('\n');
         }
         s
     }
