@@ -13,7 +13,9 @@ use clap::Args;
 use fcc_golden::MergeMode;
 use fcc_lidar::cloud::{read_point_cloud, write_ply_with_intensity, PlyFormat};
 use fcc_lidar::clusters::{cluster_rows, frame_cluster_records, write_cluster_table, ClusterRow};
-use fcc_lidar::eval::{evaluate, score_frame, synthetic_frames, EvalConfig, EvalFrame};
+use fcc_lidar::eval::{
+    evaluate, evaluate_given, score_frame, synthetic_frames, EvalConfig, EvalFrame,
+};
 use fcc_lidar::ground::{GroundMethod, GroundParams};
 use fcc_lidar::labels::{read_label_file, write_label_file, DEFAULT_LABEL_CLASS};
 use fcc_lidar::ouster::{CaptureStats, OusterFrame};
@@ -1005,6 +1007,15 @@ pub struct EvalArgs {
     /// Ground truth for --input: SemanticKITTI .label, or .npy label images.
     #[arg(long, num_args = 1..)]
     pub truth: Vec<PathBuf>,
+    /// Score these label images instead of clustering: another clusterer's
+    /// labels for the .npy range images of --input, one (R, C) .npy per
+    /// input, in order (0 = unclustered), scored by the same rules, range
+    /// bands and --min-points filter as FCC's.
+    #[arg(long, num_args = 1.., requires = "input", conflicts_with_all = [
+        "fsize", "merge", "th_h", "th_v", "label_bits", "th_h_slope", "th_v_slope",
+        "preset", "ground", "rules",
+    ])]
+    pub predicted: Vec<PathBuf>,
     /// Scoring rules: `fcc` (class-agnostic, void-aware; see docs/lidar.md)
     /// or `semantickitti` (evaluate_panoptic.py's PanopticEval: 19 classes,
     /// stuff counted; needs point clouds with .label ground truth).
@@ -1067,6 +1078,7 @@ pub fn run_eval(args: &EvalArgs) -> anyhow::Result<()> {
         .input
         .iter()
         .chain(&args.truth)
+        .chain(&args.predicted)
         .map(PathBuf::as_path)
         .collect();
     let outputs: Vec<(&str, &Path)> = [("--json", &args.json), ("--markdown", &args.markdown)]
@@ -1139,20 +1151,22 @@ pub fn run_eval(args: &EvalArgs) -> anyhow::Result<()> {
         }
         frames
     };
-    let pb = progress_bar(Some(frames.len() as u64), "frames");
-    let table = pool.install(|| {
-        evaluate(
-            &frames,
-            &base,
-            &args.fsize,
-            &args.merge,
-            &EvalConfig {
-                min_instance_points: args.min_instance_points.unwrap_or(1),
-            },
-            &|| pb.inc(1),
-        )
-    })?;
-    pb.finish_and_clear();
+    let eval_cfg = EvalConfig {
+        min_instance_points: args.min_instance_points.unwrap_or(1),
+    };
+    let table = if args.predicted.is_empty() {
+        let pb = progress_bar(Some(frames.len() as u64), "frames");
+        let table = pool.install(|| {
+            evaluate(&frames, &base, &args.fsize, &args.merge, &eval_cfg, &|| {
+                pb.inc(1)
+            })
+        })?;
+        pb.finish_and_clear();
+        table
+    } else {
+        let predicted = read_predicted(args, &frames)?;
+        pool.install(|| evaluate_given(&frames, &predicted, &base, &eval_cfg))?
+    };
     let md = table.to_markdown();
     println!("{md}");
     if let Some(p) = &args.markdown {
@@ -1164,6 +1178,48 @@ pub fn run_eval(args: &EvalArgs) -> anyhow::Result<()> {
             .with_context(|| format!("{}: cannot write", p.display()))?;
     }
     Ok(())
+}
+
+/// The label images of `fcc eval --predicted`, one per frame of the
+/// .npy range images of --input.
+fn read_predicted(args: &EvalArgs, frames: &[EvalFrame]) -> anyhow::Result<Vec<Vec<u32>>> {
+    if args.predicted.len() != args.input.len() {
+        bail!(
+            "--predicted names {} files for {} inputs: give one per input, in order",
+            args.predicted.len(),
+            args.input.len()
+        );
+    }
+    if let Some(i) = args
+        .input
+        .iter()
+        .find(|i| InputKind::of(i, &SourceOptions::default()) != Some(InputKind::RangeImage))
+    {
+        bail!(
+            "{}: --predicted scores labels of .npy range images (R, C, 3); this input is not one",
+            i.display()
+        );
+    }
+    frames
+        .iter()
+        .zip(&args.predicted)
+        .map(|(f, p)| {
+            let l =
+                fcc_npy::read_labels(p).with_context(|| format!("{}: cannot read", p.display()))?;
+            if (l.rows, l.cols) != (f.image.rows, f.image.cols) {
+                bail!(
+                    "{}: labels are {} x {} but {} is {} x {}",
+                    p.display(),
+                    l.rows,
+                    l.cols,
+                    f.name,
+                    f.image.rows,
+                    f.image.cols
+                );
+            }
+            Ok(l.labels)
+        })
+        .collect()
 }
 
 /// The pipeline settings of `fcc eval`.

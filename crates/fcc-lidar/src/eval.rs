@@ -268,8 +268,12 @@ pub struct EvalFrame {
 /// One line of the quality table.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct EvalRow {
-    pub fsize: usize,
-    pub mode: MergeMode,
+    /// The filter size and merge mode of FCC's row; `None` for a row of
+    /// given labels ([`evaluate_given`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub fsize: Option<usize>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub mode: Option<MergeMode>,
     #[serde(flatten)]
     pub scores: Scores,
     pub counts: Counts,
@@ -300,6 +304,9 @@ pub struct EvalTable {
     pub ground_method: GroundMethod,
     /// Ground removal against the true ground, when every frame has it.
     pub ground: Option<GroundScore>,
+    /// The rows score given labels ([`evaluate_given`]): the thresholds
+    /// in the header are not what made them.
+    pub given: bool,
     pub rows: Vec<EvalRow>,
 }
 
@@ -349,16 +356,8 @@ pub fn evaluate(
             "evaluation needs at least one filter size and one merge mode".into(),
         ));
     }
-    for f in frames {
-        if f.truth.len() != f.image.pixels() {
-            return Err(LidarError::Mismatch {
-                what: format!("ground-truth labels of {}", f.name),
-                expected: f.image.pixels(),
-                got: f.truth.len(),
-            });
-        }
-    }
-    type PerFrame = (Vec<(Counts, Vec<Counts>)>, Option<GroundScore>);
+    check_truth(frames)?;
+    type PerFrame = (Vec<FrameCounts>, Option<GroundScore>);
     let per_frame: Vec<PerFrame> = frames
         .par_iter()
         .map(|f| -> Result<PerFrame> {
@@ -368,13 +367,7 @@ pub fn evaluate(
                 None => None,
             };
             let frame = f.image.without(&ground.mask).to_frame();
-            let range: Vec<f32> = (0..f.image.pixels())
-                .map(|i| {
-                    f.image.point(i).map_or(f32::NAN, |p| {
-                        (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]).sqrt()
-                    })
-                })
-                .collect();
+            let range = pixel_ranges(&f.image);
             let mut out = Vec::with_capacity(fsizes.len() * modes.len());
             for &k in fsizes {
                 for &mode in modes {
@@ -386,15 +379,7 @@ pub fn evaluate(
                         },
                     );
                     let c = cluster(&params, &frame, mode)?;
-                    let labels = if base.min_points > 0 {
-                        filter_min_points(&c.labels, base.min_points).0
-                    } else {
-                        c.labels
-                    };
-                    out.push((
-                        score_frame(&labels, &f.truth, cfg)?,
-                        score_frame_by_range(&labels, &f.truth, &range, &RANGE_BANDS, cfg)?,
-                    ));
+                    out.push(score_labels(c.labels, f, &range, base.min_points, cfg)?);
                 }
             }
             progress();
@@ -404,31 +389,12 @@ pub fn evaluate(
     let mut rows = Vec::new();
     for (ki, &k) in fsizes.iter().enumerate() {
         for (mi, &mode) in modes.iter().enumerate() {
-            let mut counts = Counts::default();
-            let mut bands = vec![Counts::default(); RANGE_BANDS.len()];
-            for (c, _) in &per_frame {
-                let (all, by_band) = &c[ki * modes.len() + mi];
-                counts.add(all);
-                for (b, x) in bands.iter_mut().zip(by_band) {
-                    b.add(x);
-                }
-            }
-            rows.push(EvalRow {
-                fsize: k,
-                mode,
-                scores: counts.scores(),
-                counts,
-                bands: RANGE_BANDS
-                    .iter()
-                    .zip(bands)
-                    .map(|(&(lo, hi), counts)| BandScores {
-                        lo,
-                        hi,
-                        scores: counts.scores(),
-                        counts,
-                    })
-                    .collect(),
-            });
+            let i = ki * modes.len() + mi;
+            rows.push(sum_row(
+                Some(k),
+                Some(mode),
+                per_frame.iter().map(|(c, _)| &c[i]),
+            ));
         }
     }
     let ground = if !frames.is_empty() && per_frame.iter().all(|(_, g)| g.is_some()) {
@@ -451,22 +417,158 @@ pub fn evaluate(
         min_points: base.min_points,
         ground_method: base.ground.method,
         ground,
+        given: false,
         rows,
+    })
+}
+
+/// Scores of one frame: the whole frame and per range band.
+type FrameCounts = (Counts, Vec<Counts>);
+
+/// Every frame's ground truth must cover its image.
+fn check_truth(frames: &[EvalFrame]) -> Result<()> {
+    for f in frames {
+        if f.truth.len() != f.image.pixels() {
+            return Err(LidarError::Mismatch {
+                what: format!("ground-truth labels of {}", f.name),
+                expected: f.image.pixels(),
+                got: f.truth.len(),
+            });
+        }
+    }
+    Ok(())
+}
+
+/// Each pixel's distance from the sensor, NaN where empty.
+fn pixel_ranges(image: &RangeImage) -> Vec<f32> {
+    (0..image.pixels())
+        .map(|i| {
+            image.point(i).map_or(f32::NAN, |p| {
+                (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]).sqrt()
+            })
+        })
+        .collect()
+}
+
+/// One frame's labels scored, after the min-points filter.
+fn score_labels(
+    labels: Vec<u32>,
+    f: &EvalFrame,
+    range: &[f32],
+    min_points: usize,
+    cfg: &EvalConfig,
+) -> Result<FrameCounts> {
+    let labels = if min_points > 0 {
+        filter_min_points(&labels, min_points).0
+    } else {
+        labels
+    };
+    Ok((
+        score_frame(&labels, &f.truth, cfg)?,
+        score_frame_by_range(&labels, &f.truth, range, &RANGE_BANDS, cfg)?,
+    ))
+}
+
+/// A table row: the counts of every frame summed, then the ratios.
+fn sum_row<'a>(
+    fsize: Option<usize>,
+    mode: Option<MergeMode>,
+    frames: impl Iterator<Item = &'a FrameCounts>,
+) -> EvalRow {
+    let mut counts = Counts::default();
+    let mut bands = vec![Counts::default(); RANGE_BANDS.len()];
+    for (all, by_band) in frames {
+        counts.add(all);
+        for (b, x) in bands.iter_mut().zip(by_band) {
+            b.add(x);
+        }
+    }
+    EvalRow {
+        fsize,
+        mode,
+        scores: counts.scores(),
+        counts,
+        bands: RANGE_BANDS
+            .iter()
+            .zip(bands)
+            .map(|(&(lo, hi), counts)| BandScores {
+                lo,
+                hi,
+                scores: counts.scores(),
+                counts,
+            })
+            .collect(),
+    }
+}
+
+/// Score labels made elsewhere (another clusterer's, one per frame, in
+/// order) with the same rules, bands and min-points filter: a table of one
+/// row without a filter size or merge mode. Nothing is clustered and no
+/// ground is removed; `base` gives the min-points filter and the table's
+/// header.
+pub fn evaluate_given(
+    frames: &[EvalFrame],
+    predicted: &[Vec<u32>],
+    base: &PipelineConfig,
+    cfg: &EvalConfig,
+) -> Result<EvalTable> {
+    check_truth(frames)?;
+    if predicted.len() != frames.len() {
+        return Err(LidarError::Mismatch {
+            what: "label images for the frames".into(),
+            expected: frames.len(),
+            got: predicted.len(),
+        });
+    }
+    for (f, p) in frames.iter().zip(predicted) {
+        if p.len() != f.image.pixels() {
+            return Err(LidarError::Mismatch {
+                what: format!("given labels of {}", f.name),
+                expected: f.image.pixels(),
+                got: p.len(),
+            });
+        }
+    }
+    let per_frame: Vec<FrameCounts> = frames
+        .par_iter()
+        .zip(predicted)
+        .map(|(f, p)| score_labels(p.clone(), f, &pixel_ranges(&f.image), base.min_points, cfg))
+        .collect::<Result<_>>()?;
+    Ok(EvalTable {
+        frames: frames.len(),
+        th_h: base.params.th_h,
+        th_v: base.params.th_v,
+        th_h_slope: base.params.th_h_slope,
+        th_v_slope: base.params.th_v_slope,
+        min_points: base.min_points,
+        ground_method: base.ground.method,
+        ground: None,
+        given: true,
+        rows: vec![sum_row(None, None, per_frame.iter())],
     })
 }
 
 impl EvalTable {
     /// The table in Markdown.
     pub fn to_markdown(&self) -> String {
-        let mode = |m: MergeMode| match m {
-            MergeMode::Exact => "exact",
-            MergeMode::Paper => "paper",
+        let k = |r: &EvalRow| r.fsize.map_or("–".to_string(), |k| k.to_string());
+        let mode = |r: &EvalRow| match r.mode {
+            Some(MergeMode::Exact) => "exact",
+            Some(MergeMode::Paper) => "paper",
+            None => "given labels",
         };
-        let mut s = format!(
-            "{} frames, th_H = {} m, th_V = {} m, min points {}, ground removal `{}`",
-            self.frames, self.th_h, self.th_v, self.min_points, self.ground_method
-        );
-        if self.th_h_slope != 0.0 || self.th_v_slope != 0.0 {
+        let mut s = if self.given {
+            format!(
+                "{} frames, given labels, min points {}",
+                self.frames, self.min_points
+            )
+        } else {
+            format!(
+                "{} frames, th_H = {} m, th_V = {} m, min points {}, ground removal `{}`",
+                self.frames, self.th_h, self.th_v, self.min_points, self.ground_method
+            )
+        };
+        if !self.given && (self.th_h_slope != 0.0 || self.th_v_slope != 0.0) {
             s.push_str(&format!(
                 ", slopes {} / {} m per m",
                 self.th_h_slope, self.th_v_slope
@@ -484,8 +586,8 @@ impl EvalTable {
             let (sc, c) = (&r.scores, &r.counts);
             s.push_str(&format!(
                 "| {} | {} | {:.3} | {:.3} | {:.3} | {} | {} | {} | {:.4} | {:.4} | {:.1} | {:.1} |\n",
-                r.fsize,
-                mode(r.mode),
+                k(r),
+                mode(r),
                 sc.pq,
                 sc.sq,
                 sc.rq,
@@ -507,7 +609,7 @@ impl EvalTable {
             "---|".repeat(RANGE_BANDS.len())
         ));
         for r in &self.rows {
-            s.push_str(&format!("| {} | {} |", r.fsize, mode(r.mode)));
+            s.push_str(&format!("| {} | {} |", k(r), mode(r)));
             for b in &r.bands {
                 s.push_str(&format!(" {:.3} ({}) |", b.scores.pq, b.counts.instances));
             }
