@@ -43,6 +43,14 @@ pub struct BenchArgs {
     /// Missing-return probability of the synthetic scenes.
     #[arg(long, allow_negative_numbers = true, default_value_t = SceneConfig::default().missing)]
     pub missing: f64,
+    /// Intra-channel threshold th_H, metres.
+    #[arg(long, allow_negative_numbers = true, default_value_t = FccParams::default().th_h)]
+    pub th_h: f64,
+    /// Inter-channel threshold th_V, metres.
+    #[arg(long, allow_negative_numbers = true, default_value_t = FccParams::default().th_v)]
+    pub th_v: f64,
+    #[command(flatten)]
+    pub slopes: crate::model_args::SlopeArgs,
     /// Threads of the batch run (default: one per core).
     #[arg(long)]
     pub jobs: Option<usize>,
@@ -209,12 +217,14 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
     let threads = pool.current_num_threads();
     let mut rows = Vec::new();
     for &k in &args.fsize {
-        let p = FccParams {
+        let p = args.slopes.apply(FccParams {
             rows: args.rows,
             cols: args.cols,
             fsize: k,
+            th_h: args.th_h,
+            th_v: args.th_v,
             ..FccParams::default()
-        };
+        });
         p.validate()?;
         eprintln!("K = {k} ...");
         let exact_ms = time_ms(&p, &frames, MergeMode::Exact, args.repeat)?;
@@ -258,9 +268,14 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<()> {
             split_by_paper: split,
         });
     }
+    let p = args.slopes.apply(FccParams {
+        th_h: args.th_h,
+        th_v: args.th_v,
+        ..FccParams::default()
+    });
     println!(
-        "golden model, {} x {}, {} synthetic scenes (dropout {}, missing {}), median of {} runs",
-        args.rows, args.cols, args.frames, args.dropout, args.missing, args.repeat
+        "golden model, {} x {}, {} synthetic scenes (dropout {}, missing {}), th_H = {} m, th_V = {} m, slopes {} / {} m per m, median of {} runs",
+        args.rows, args.cols, args.frames, args.dropout, args.missing, p.th_h, p.th_v, p.th_h_slope, p.th_v_slope, args.repeat
     );
     println!(
         "| K | merge | ms/frame (1 thread) | batch frames/s (1 thread) | batch frames/s ({threads} threads) | speed-up | points | provisional | joins | clusters | exact clusters split |"

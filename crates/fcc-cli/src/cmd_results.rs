@@ -27,6 +27,9 @@ pub struct ResultsArgs {
     /// The coverage summary of `sim/coverage.sh`, attached when the file exists.
     #[arg(long, default_value = "docs/coverage.json")]
     pub coverage_json: PathBuf,
+    /// The clustering-quality summary of `bench/quality.py`, attached when the file exists.
+    #[arg(long, default_value = "docs/quality.json")]
+    pub quality_json: PathBuf,
     /// Intermediate files (bench and cycle JSON, Yosys work).
     #[arg(long, default_value = "target/fcc-results")]
     pub work_dir: PathBuf,
@@ -55,6 +58,9 @@ pub fn run(args: &ResultsArgs) -> anyhow::Result<()> {
         cols: base.cols,
         dropout: SceneConfig::default().dropout,
         missing: SceneConfig::default().missing,
+        th_h: base.th_h,
+        th_v: base.th_v,
+        slopes: Default::default(),
         jobs: None,
         json: Some(bench_json.clone()),
     })?;
@@ -87,6 +93,14 @@ pub fn run(args: &ResultsArgs) -> anyhow::Result<()> {
         eprintln!(
             "{}: not found, the coverage table stays empty (bash sim/coverage.sh writes it)",
             args.coverage_json.display()
+        );
+    }
+    if args.quality_json.is_file() {
+        synth_args.extend(["--quality-json".into(), path(&args.quality_json)]);
+    } else {
+        eprintln!(
+            "{}: not found, the quality table stays empty (bench/quality.py writes it)",
+            args.quality_json.display()
         );
     }
     let cli = SynthCli::try_parse_from(synth_args)?;

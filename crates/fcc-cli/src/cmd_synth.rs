@@ -72,6 +72,10 @@ pub struct SynthArgs {
     /// (the JSON of `sim/coverage_summary.py --json`, committed as docs/coverage.json).
     #[arg(long)]
     pub coverage_json: Option<PathBuf>,
+    /// With --all: attach the clustering-quality summary of
+    /// `bench/quality.py` (committed as docs/quality.json).
+    #[arg(long)]
+    pub quality_json: Option<PathBuf>,
     /// With --all: do not synthesise; read this results JSON, attach
     /// --bench-json / --cycles-json / --coverage-json and write the document
     /// again (what the JSON already holds is kept).
@@ -109,6 +113,9 @@ impl SynthArgs {
         }
         if self.coverage_json.is_some() {
             c.push_str(" --coverage-json docs/coverage.json");
+        }
+        if self.quality_json.is_some() {
+            c.push_str(" --quality-json docs/quality.json");
         }
         c
     }
@@ -303,6 +310,13 @@ fn run_all(args: &SynthArgs) -> anyhow::Result<()> {
             .map_err(anyhow::Error::msg)
             .with_context(|| format!("{}", path.display()))?;
         eprintln!("coverage of {n} blocks from {}", path.display());
+    }
+    if let Some(path) = &args.quality_json {
+        let n = report
+            .attach_quality_json(&read(path)?)
+            .map_err(anyhow::Error::msg)
+            .with_context(|| format!("{}", path.display()))?;
+        eprintln!("clustering quality, {n} rows, from {}", path.display());
     }
     if let Some(path) = &args.bench_json {
         let n = report

@@ -155,3 +155,20 @@ fn eval_reports_pq_by_range_band_and_takes_the_preset() {
         "{out}"
     );
 }
+
+#[test]
+fn bench_takes_the_preset_and_says_what_it_timed() {
+    let o = fcc(&[
+        "bench", "--fsize", "3", "--frames", "1", "--repeat", "1", "--rows", "16", "--cols", "128",
+        "--preset", "adaptive",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = String::from_utf8(o.stdout).unwrap();
+    assert!(
+        out.contains("th_H = 0.5 m, th_V = 1 m, slopes 0.02 / 0.05 m per m"),
+        "{out}"
+    );
+    let o = fcc(&["bench", "--preset", "adaptive", "--th-v", "2"]);
+    assert!(!o.status.success());
+    assert!(stderr(&o).contains("cannot be used with"), "{}", stderr(&o));
+}

@@ -408,18 +408,7 @@ pub fn evaluate(
     } else {
         None
     };
-    Ok(EvalTable {
-        frames: frames.len(),
-        th_h: base.params.th_h,
-        th_v: base.params.th_v,
-        th_h_slope: base.params.th_h_slope,
-        th_v_slope: base.params.th_v_slope,
-        min_points: base.min_points,
-        ground_method: base.ground.method,
-        ground,
-        given: false,
-        rows,
-    })
+    Ok(EvalTable::new(frames.len(), base, ground, false, rows))
 }
 
 /// Scores of one frame: the whole frame and per range band.
@@ -534,21 +523,33 @@ pub fn evaluate_given(
         .zip(predicted)
         .map(|(f, p)| score_labels(p.clone(), f, &pixel_ranges(&f.image), base.min_points, cfg))
         .collect::<Result<_>>()?;
-    Ok(EvalTable {
-        frames: frames.len(),
-        th_h: base.params.th_h,
-        th_v: base.params.th_v,
-        th_h_slope: base.params.th_h_slope,
-        th_v_slope: base.params.th_v_slope,
-        min_points: base.min_points,
-        ground_method: base.ground.method,
-        ground: None,
-        given: true,
-        rows: vec![sum_row(None, None, per_frame.iter())],
-    })
+    let rows = vec![sum_row(None, None, per_frame.iter())];
+    Ok(EvalTable::new(frames.len(), base, None, true, rows))
 }
 
 impl EvalTable {
+    /// The table of `frames` frames under `base`'s settings.
+    fn new(
+        frames: usize,
+        base: &PipelineConfig,
+        ground: Option<GroundScore>,
+        given: bool,
+        rows: Vec<EvalRow>,
+    ) -> EvalTable {
+        EvalTable {
+            frames,
+            th_h: base.params.th_h,
+            th_v: base.params.th_v,
+            th_h_slope: base.params.th_h_slope,
+            th_v_slope: base.params.th_v_slope,
+            min_points: base.min_points,
+            ground_method: base.ground.method,
+            ground,
+            given,
+            rows,
+        }
+    }
+
     /// The table in Markdown.
     pub fn to_markdown(&self) -> String {
         let k = |r: &EvalRow| r.fsize.map_or("–".to_string(), |k| k.to_string());

@@ -30,13 +30,13 @@ fn quality_table_on_synthetic_scenes() {
         let s = &r.scores;
         assert!(
             s.pq > 0.4 && s.pq <= 1.0,
-            "K={} {:?}: {s:?}",
+            "K={:?} {:?}: {s:?}",
             r.fsize,
             r.mode
         );
         assert!(
             s.under_segmentation < 0.2 && s.over_segmentation < 0.3,
-            "K={} {:?}: {s:?}",
+            "K={:?} {:?}: {s:?}",
             r.fsize,
             r.mode
         );
@@ -47,7 +47,7 @@ fn quality_table_on_synthetic_scenes() {
             table
                 .rows
                 .iter()
-                .find(|r| r.fsize == k && r.mode == m)
+                .find(|r| r.fsize == Some(k) && r.mode == Some(m))
                 .unwrap()
         };
         let (e, p) = (row(MergeMode::Exact), row(MergeMode::Paper));

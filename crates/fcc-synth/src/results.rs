@@ -20,7 +20,8 @@ pub use paper::{
 };
 pub use render::{render_markdown, summary_header, summary_row, thousands};
 pub use report::{
-    write_report, BlockCoverage, Coverage, CycleInput, CycleMeasure, GoldenTiming, Report,
+    write_report, BlockCoverage, Coverage, CycleInput, CycleMeasure, GoldenTiming, Quality,
+    QualityBand, QualityDbscan, QualityGridPoint, QualityRow, QualityScenes, QualityTiming, Report,
     ResultRow, Throughput,
 };
 pub use targets::{check_targets, TargetCheck, Targets, SYNTHETIC_CORPUS, TARGETS};

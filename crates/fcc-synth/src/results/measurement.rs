@@ -42,6 +42,7 @@ pub fn measure(
         command: opts.command.clone(),
         rows: vec![],
         coverage: None,
+        quality: None,
     };
     if opts.fsizes.contains(&TARGETS.fsize) {
         report.base.fsize = TARGETS.fsize;

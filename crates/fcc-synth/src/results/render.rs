@@ -3,7 +3,7 @@
 use crate::Resources;
 
 use super::{
-    check_targets, paper_row, CycleMeasure, Report, ResultRow, PAPER_CLOCK_MHZ,
+    check_targets, paper_row, CycleMeasure, QualityRow, Report, ResultRow, PAPER_CLOCK_MHZ,
     PAPER_CPU_S_PER_FRAME, PAPER_FRAME_MS, TARGETS,
 };
 
@@ -233,6 +233,88 @@ fn render_coverage(s: &mut String, report: &Report) {
     ));
 }
 
+fn render_quality(s: &mut String, report: &Report) {
+    s.push_str("\n## Clustering quality (golden model)\n\n");
+    let Some(q) = &report.quality else {
+        s.push_str("Not measured yet (`bench/quality.py`).\n");
+        return;
+    };
+    let sc = &q.scenes;
+    let t = &q.timing_ms_per_frame;
+    s.push_str(&format!(
+        "Panoptic quality by `fcc eval`'s rules on the synthetic scenes of `fcc scene` \
+         ({} x {}, ground `{}`: both clusterers see the same points), seeds {}-{} held out; \
+         the adaptive preset was tuned, and DBSCAN's setting chosen, on seeds {}-{}. \
+         DBSCAN is {} on the points' x, y, z (noise unclustered), its labels scored by \
+         `fcc eval --predicted`; its best tuning-scene setting is eps = {} m, \
+         min_samples = {} (grid: {}). Time per frame: the golden model at K = 7 on one \
+         thread {:.2} ms (paper) and {:.2} ms (adaptive), DBSCAN {:.0} ms. Made by \
+         `bench/quality.py` ([lidar.md](lidar.md) has the rules).\n\n",
+        sc.rows,
+        sc.cols,
+        sc.ground,
+        sc.held_out_seeds[0],
+        sc.held_out_seeds[1],
+        sc.tune_seeds[0],
+        sc.tune_seeds[1],
+        q.dbscan.library,
+        q.dbscan.eps,
+        q.dbscan.min_samples,
+        q.dbscan
+            .grid
+            .iter()
+            .map(|g| format!("{} / {}: {:.3}", g.eps, g.min_samples, g.pq))
+            .collect::<Vec<_>>()
+            .join(", "),
+        t.fcc_paper_k7_ms,
+        t.fcc_adaptive_k7_ms,
+        t.dbscan_ms
+    ));
+    let bands = q
+        .rows
+        .first()
+        .map(|r| r.bands.as_slice())
+        .unwrap_or_default();
+    s.push_str("| clusterer | PQ (held out) | SQ | RQ | over-seg | under-seg | PQ (all) |");
+    for b in bands {
+        s.push_str(&format!(" {}-{} m |", b.lo, b.hi));
+    }
+    s.push_str(&format!(
+        "\n|---|--:|--:|--:|--:|--:|--:|{}\n",
+        "--:|".repeat(bands.len())
+    ));
+    let name = |r: &QualityRow| match (r.clusterer.as_str(), r.fsize) {
+        ("fcc", Some(k)) => format!("FCC K = {k}, {}", r.preset.as_deref().unwrap_or("paper")),
+        ("dbscan", _) => "DBSCAN".to_string(),
+        (c, _) => c.to_string(),
+    };
+    for r in q.rows.iter().filter(|r| r.split == "held_out") {
+        let all = q
+            .rows
+            .iter()
+            .find(|x| x.split == "all" && name(x) == name(r))
+            .map_or("–".to_string(), |x| format!("{:.3}", x.pq));
+        s.push_str(&format!(
+            "| {} | {:.3} | {:.3} | {:.3} | {:.4} | {:.4} | {} |",
+            name(r),
+            r.pq,
+            r.sq,
+            r.rq,
+            r.over_segmentation,
+            r.under_segmentation,
+            all
+        ));
+        for b in &r.bands {
+            s.push_str(&format!(" {:.3} ({}) |", b.pq, b.instances));
+        }
+        s.push('\n');
+    }
+    s.push_str(
+        "\nRange bands: PQ of the held-out scenes over the instances and clusters whose mean \
+         range falls in the band (instances in brackets).\n",
+    );
+}
+
 /// The results document.
 pub fn render_markdown(report: &Report) -> String {
     let b = &report.base;
@@ -422,6 +504,7 @@ pub fn render_markdown(report: &Report) -> String {
     }
 
     render_coverage(&mut s, report);
+    render_quality(&mut s, report);
 
     // Targets.
     let t = TARGETS;

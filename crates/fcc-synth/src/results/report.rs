@@ -183,6 +183,81 @@ pub struct Report {
     /// `None` until attached.
     #[serde(default)]
     pub coverage: Option<Coverage>,
+    /// Clustering quality of the golden model beside DBSCAN
+    /// (`bench/quality.py`); `None` until attached.
+    #[serde(default)]
+    pub quality: Option<Quality>,
+}
+
+/// The summary `bench/quality.py --json` writes (docs/quality.json).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Quality {
+    pub scenes: QualityScenes,
+    pub dbscan: QualityDbscan,
+    pub timing_ms_per_frame: QualityTiming,
+    pub rows: Vec<QualityRow>,
+}
+
+/// The scenes of the quality table: seeds `[first, last]` of `fcc scene`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct QualityScenes {
+    pub rows: usize,
+    pub cols: usize,
+    pub tune_seeds: [u64; 2],
+    pub held_out_seeds: [u64; 2],
+    pub ground: String,
+}
+
+/// DBSCAN's library and the setting chosen on the tuning scenes.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct QualityDbscan {
+    pub library: String,
+    pub eps: f64,
+    pub min_samples: u32,
+    pub grid: Vec<QualityGridPoint>,
+}
+
+/// One DBSCAN setting tried on the tuning scenes.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct QualityGridPoint {
+    pub eps: f64,
+    pub min_samples: u32,
+    pub pq: f64,
+}
+
+/// Time per frame, milliseconds (golden model on one thread at K = 7).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct QualityTiming {
+    pub fcc_paper_k7_ms: f64,
+    pub fcc_adaptive_k7_ms: f64,
+    pub dbscan_ms: f64,
+}
+
+/// One clusterer on one split (`held_out` or `all`).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct QualityRow {
+    /// `fcc` or `dbscan`.
+    pub clusterer: String,
+    #[serde(default)]
+    pub preset: Option<String>,
+    #[serde(default)]
+    pub fsize: Option<usize>,
+    pub split: String,
+    pub pq: f64,
+    pub sq: f64,
+    pub rq: f64,
+    pub over_segmentation: f64,
+    pub under_segmentation: f64,
+    pub bands: Vec<QualityBand>,
+}
+
+/// PQ of one range band, metres `[lo, hi)`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct QualityBand {
+    pub lo: f64,
+    pub hi: f64,
+    pub pq: f64,
+    pub instances: u64,
 }
 
 /// Line and toggle coverage of one block of `fcc_top`.
@@ -248,6 +323,29 @@ impl Report {
         }
         let n = c.blocks.len();
         self.coverage = Some(c);
+        Ok(n)
+    }
+
+    /// Attach the quality summary of `bench/quality.py` (replacing any
+    /// earlier one). Returns how many rows it has.
+    pub fn attach_quality_json(&mut self, text: &str) -> Result<usize, String> {
+        let q: Quality = serde_json::from_str(text)
+            .map_err(|e| format!("not the JSON of `bench/quality.py --json`: {e}"))?;
+        if !q.rows.iter().any(|r| r.split == "held_out") {
+            return Err("the quality summary has no held-out row".into());
+        }
+        if let Some(r) = q
+            .rows
+            .iter()
+            .find(|r| r.clusterer == "fcc" && r.fsize.is_none())
+        {
+            return Err(format!(
+                "an FCC row ({:?}) without its filter size",
+                r.preset
+            ));
+        }
+        let n = q.rows.len();
+        self.quality = Some(q);
         Ok(n)
     }
 

@@ -55,6 +55,7 @@ fn report(rows: Vec<ResultRow>) -> Report {
         command: "fcc synth --all".into(),
         rows,
         coverage: None,
+        quality: None,
     }
 }
 
@@ -390,4 +391,59 @@ fn summary_row_has_the_nine_columns() {
             .count(),
         10
     );
+}
+
+const QUALITY: &str = r#"{"generated_by": "bench/quality.py",
+    "scenes": {"rows": 64, "cols": 2048, "tune_seeds": [1, 12], "held_out_seeds": [13, 24],
+               "ground": "none"},
+    "dbscan": {"library": "scikit-learn 1.5.2", "eps": 0.7, "min_samples": 5,
+               "grid": [{"eps": 0.7, "min_samples": 5, "pq": 0.61}]},
+    "timing_ms_per_frame": {"fcc_paper_k7_ms": 0.41, "fcc_adaptive_k7_ms": 0.52,
+                            "dbscan_ms": 2100.0},
+    "rows": [
+      {"clusterer": "fcc", "preset": "adaptive", "fsize": 7, "split": "held_out", "pq": 0.84,
+       "sq": 0.95, "rq": 0.88, "over_segmentation": 0.01, "under_segmentation": 0.002,
+       "bands": [{"lo": 0.0, "hi": 20.0, "pq": 0.9, "instances": 30}]},
+      {"clusterer": "fcc", "preset": "adaptive", "fsize": 7, "split": "all", "pq": 0.86,
+       "sq": 0.95, "rq": 0.9, "over_segmentation": 0.01, "under_segmentation": 0.002,
+       "bands": [{"lo": 0.0, "hi": 20.0, "pq": 0.91, "instances": 60}]},
+      {"clusterer": "dbscan", "split": "held_out", "pq": 0.6, "sq": 0.9, "rq": 0.67,
+       "over_segmentation": 0.1, "under_segmentation": 0.01,
+       "bands": [{"lo": 0.0, "hi": 20.0, "pq": 0.7, "instances": 30}]}]}"#;
+
+#[test]
+fn quality_table_rendered_and_kept_through_json() {
+    let mut rep = report(vec![row(3, resources(1, 2, 3, 4, 5), 1.5)]);
+    assert!(render_markdown(&rep).contains(
+        "## Clustering quality (golden model)\n\nNot measured yet (`bench/quality.py`)."
+    ));
+    assert_eq!(rep.attach_quality_json(QUALITY).unwrap(), 3);
+    let md = render_markdown(&rep);
+    assert!(md.contains("eps = 0.7 m, min_samples = 5"), "{md}");
+    assert!(
+        md.contains(
+            "| clusterer | PQ (held out) | SQ | RQ | over-seg | under-seg | PQ (all) | 0-20 m |"
+        ),
+        "{md}"
+    );
+    assert!(
+        md.contains("| FCC K = 7, adaptive | 0.840 | 0.950 | 0.880 | 0.0100 | 0.0020 | 0.860 | 0.900 (30) |"),
+        "{md}"
+    );
+    assert!(
+        md.contains("| DBSCAN | 0.600 | 0.900 | 0.670 | 0.1000 | 0.0100 | – | 0.700 (30) |"),
+        "{md}"
+    );
+    assert!(
+        md.contains("0.41 ms (paper) and 0.52 ms (adaptive), DBSCAN 2100 ms"),
+        "{md}"
+    );
+    let text = serde_json::to_string_pretty(&rep).unwrap();
+    assert_eq!(render_markdown(&Report::from_json(&text).unwrap()), md);
+    let e = rep.attach_quality_json("{}").unwrap_err();
+    assert!(e.contains("bench/quality.py --json"), "{e}");
+    let e = rep
+        .attach_quality_json(&QUALITY.replace("\"held_out\"", "\"x\""))
+        .unwrap_err();
+    assert!(e.contains("no held-out row"), "{e}");
 }
