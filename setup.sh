@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Set-up in one command: the system tools the tests need (Verilator, Yosys,
 # z3, Icarus Verilog, a C++ compiler, tclsh, python3-venv), the cocotb
-# bench's pinned Python tools in .venv, and `fcc` on PATH (~/.cargo/bin).
+# bench's pinned Python tools in .venv, the Python package (python/) with
+# its test tools in .venv, and `fcc` on PATH (~/.cargo/bin).
 #
 #   ./setup.sh               everything
 #   ./setup.sh --no-install  without `cargo install` (CI: the tests run the
@@ -23,7 +24,7 @@ for arg in "$@"; do
     case "$arg" in
         --no-install) install=0 ;;
         -h | --help)
-            sed -n '2,12p' "$0" | sed 's/^# \{0,1\}//'
+            sed -n '2,13p' "$0" | sed 's/^# \{0,1\}//'
             exit 0
             ;;
         *)
@@ -87,7 +88,15 @@ else
 fi
 run "python packages" .venv/bin/pip install -q --disable-pip-version-check -r sim/cocotb/requirements.txt
 
-# 3. `fcc` on PATH.
+# 3. The Python package `fcc` (python/, built by maturin from the Rust
+# crates; cargo reuses python/target, so a second run takes seconds) and its
+# pinned test tools, in .venv (crates/fcc-cli/tests/python_package.rs runs
+# its tests).
+command -v cargo >/dev/null 2>&1 || fail "cargo not found: install Rust (https://rustup.rs), then run ./setup.sh again"
+run "python package" .venv/bin/pip install -q --disable-pip-version-check -r python/requirements-dev.txt
+run "python package" env PATH="$PWD/.venv/bin:$PATH" .venv/bin/pip install -q --disable-pip-version-check --no-build-isolation ./python
+
+# 4. `fcc` on PATH.
 if [ "$install" = "1" ]; then
     command -v cargo >/dev/null 2>&1 || fail "cargo not found: install Rust (https://rustup.rs), then run ./setup.sh again"
     run "fcc" cargo install --locked --path crates/fcc-cli
