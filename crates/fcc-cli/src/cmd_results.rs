@@ -7,7 +7,7 @@ use crate::cmd_bench::{self, BenchArgs};
 use crate::cmd_cycles::{self, CyclesArgs};
 use crate::cmd_synth::{self, SynthArgs};
 use anyhow::Context;
-use clap::{Args, Parser};
+use clap::Args;
 use fcc_params::FccParams;
 use fcc_scene::SceneConfig;
 use fcc_synth::results::{self, Report};
@@ -19,10 +19,10 @@ pub struct ResultsArgs {
     #[arg(long, default_value_t = 4)]
     pub frames: u64,
     /// The Markdown document.
-    #[arg(long, default_value = "docs/results.md")]
+    #[arg(long, default_value = cmd_synth::RESULTS_MD)]
     pub out: PathBuf,
     /// The JSON beside it.
-    #[arg(long, default_value = "docs/results.json")]
+    #[arg(long, default_value = cmd_synth::RESULTS_JSON)]
     pub json: PathBuf,
     /// The coverage summary of `sim/coverage.sh`, attached when the file exists.
     #[arg(long, default_value = "docs/coverage.json")]
@@ -33,13 +33,6 @@ pub struct ResultsArgs {
     /// Intermediate files (bench and cycle JSON, Yosys work).
     #[arg(long, default_value = "target/fcc-results")]
     pub work_dir: PathBuf,
-}
-
-/// `fcc synth` arguments as the command line would give them.
-#[derive(Parser)]
-struct SynthCli {
-    #[command(flatten)]
-    synth: SynthArgs,
 }
 
 pub fn run(args: &ResultsArgs) -> anyhow::Result<()> {
@@ -72,39 +65,28 @@ pub fn run(args: &ResultsArgs) -> anyhow::Result<()> {
         json: Some(cycles_json.clone()),
     })?;
     eprintln!("3/3 Yosys resources and timing (fcc synth --all)");
-    let path = |p: &PathBuf| p.display().to_string();
-    let mut synth_args = vec![
-        "synth".to_string(),
-        "--all".into(),
-        "--bench-json".into(),
-        path(&bench_json),
-        "--cycles-json".into(),
-        path(&cycles_json),
-        "--out".into(),
-        path(&args.out),
-        "--json".into(),
-        path(&args.json),
-        "--work-dir".into(),
-        path(&args.work_dir.join("synth")),
-    ];
-    if args.coverage_json.is_file() {
-        synth_args.extend(["--coverage-json".into(), path(&args.coverage_json)]);
-    } else {
-        eprintln!(
-            "{}: not found, the coverage table stays empty (bash sim/coverage.sh writes it)",
-            args.coverage_json.display()
-        );
-    }
-    if args.quality_json.is_file() {
-        synth_args.extend(["--quality-json".into(), path(&args.quality_json)]);
-    } else {
-        eprintln!(
-            "{}: not found, the quality table stays empty (bench/quality.py writes it)",
-            args.quality_json.display()
-        );
-    }
-    let cli = SynthCli::try_parse_from(synth_args)?;
-    cmd_synth::run(&cli.synth)?;
+    let attach = |file: &PathBuf, table: &str, how: &str| {
+        if file.is_file() {
+            Some(file.clone())
+        } else {
+            eprintln!(
+                "{}: not found, the {table} table stays empty ({how} writes it)",
+                file.display()
+            );
+            None
+        }
+    };
+    cmd_synth::run(&SynthArgs {
+        all: true,
+        bench_json: Some(bench_json),
+        cycles_json: Some(cycles_json),
+        coverage_json: attach(&args.coverage_json, "coverage", "bash sim/coverage.sh"),
+        quality_json: attach(&args.quality_json, "quality", "bench/quality.py"),
+        out: args.out.clone(),
+        json: args.json.clone(),
+        work_dir: args.work_dir.join("synth"),
+        ..SynthArgs::default()
+    })?;
     // Name the command that regenerates the whole document.
     let text = std::fs::read_to_string(&args.json)
         .with_context(|| format!("{}: cannot read", args.json.display()))?;

@@ -26,6 +26,12 @@ fn defaults() -> FccParams {
     FccParams::default()
 }
 
+/// The defaults of `fcc synth`'s paths.
+const WORK_DIR: &str = "target/fcc-synth";
+const YOSYS: &str = "yosys";
+pub const RESULTS_MD: &str = "docs/results.md";
+pub const RESULTS_JSON: &str = "docs/results.json";
+
 #[derive(Args, Debug)]
 pub struct SynthArgs {
     #[command(flatten)]
@@ -40,13 +46,13 @@ pub struct SynthArgs {
     #[arg(long)]
     pub rtl_dir: Option<PathBuf>,
     /// Where the generated RTL, the Yosys script, its log and reports go.
-    #[arg(long, default_value = "target/fcc-synth")]
+    #[arg(long, default_value = WORK_DIR)]
     pub work_dir: PathBuf,
     /// Use Yosys even when Vivado is on PATH.
     #[arg(long)]
     pub yosys: bool,
     /// The Yosys executable.
-    #[arg(long, default_value = "yosys")]
+    #[arg(long, default_value = YOSYS)]
     pub yosys_bin: PathBuf,
     /// Skip the timing estimate (faster).
     #[arg(long)]
@@ -56,10 +62,10 @@ pub struct SynthArgs {
     #[arg(long)]
     pub by_block: bool,
     /// With --all: the Markdown document.
-    #[arg(long, default_value = "docs/results.md")]
+    #[arg(long, default_value = RESULTS_MD)]
     pub out: PathBuf,
     /// With --all: the JSON beside it.
-    #[arg(long, default_value = "docs/results.json")]
+    #[arg(long, default_value = RESULTS_JSON)]
     pub json: PathBuf,
     /// With --all: attach golden-model times from `fcc bench --json FILE` (same rows and columns).
     #[arg(long)]
@@ -81,6 +87,29 @@ pub struct SynthArgs {
     /// again (what the JSON already holds is kept).
     #[arg(long, requires = "all")]
     pub from_json: Option<PathBuf>,
+}
+
+impl Default for SynthArgs {
+    /// The flags' defaults, as `fcc synth` alone.
+    fn default() -> SynthArgs {
+        SynthArgs {
+            hw: HwArgs::default(),
+            all: false,
+            rtl_dir: None,
+            work_dir: WORK_DIR.into(),
+            yosys: false,
+            yosys_bin: YOSYS.into(),
+            no_timing: false,
+            by_block: false,
+            out: RESULTS_MD.into(),
+            json: RESULTS_JSON.into(),
+            bench_json: None,
+            cycles_json: None,
+            coverage_json: None,
+            quality_json: None,
+            from_json: None,
+        }
+    }
 }
 
 impl SynthArgs {
@@ -356,6 +385,8 @@ mod tests {
     fn defaults_are_the_default_parameters() {
         let a = parse(&[]).unwrap();
         assert_eq!(a.params(a.hw.fsize).unwrap(), FccParams::default());
+        // What `fcc results` builds in code is what the bare command parses.
+        assert_eq!(format!("{a:?}"), format!("{:?}", SynthArgs::default()));
     }
 
     #[test]

@@ -138,6 +138,25 @@ pub struct HwArgs {
     pub slopes: SlopeArgs,
 }
 
+impl Default for HwArgs {
+    /// The flags' defaults: the default configuration.
+    fn default() -> HwArgs {
+        let d = defaults();
+        HwArgs {
+            fsize: d.fsize,
+            rows: d.rows,
+            cols: d.cols,
+            th_h: d.th_h,
+            th_v: d.th_v,
+            label_bits: d.label_bits,
+            clock_mhz: d.clock_mhz,
+            labels_per_beat: d.labels_per_beat,
+            limits: LimitArgs::default(),
+            slopes: SlopeArgs::default(),
+        }
+    }
+}
+
 impl HwArgs {
     /// The parameters as given, not yet validated.
     pub fn unchecked(&self) -> FccParams {
