@@ -94,7 +94,9 @@ run "python packages" .venv/bin/pip install -q --disable-pip-version-check -r si
 # its tests).
 command -v cargo >/dev/null 2>&1 || fail "cargo not found: install Rust (https://rustup.rs), then run ./setup.sh again"
 run "python package" .venv/bin/pip install -q --disable-pip-version-check -r python/requirements-dev.txt
-run "python package" env PATH="$PWD/.venv/bin:$PATH" .venv/bin/pip install -q --disable-pip-version-check --no-build-isolation ./python
+# Without build isolation pip runs the pinned maturin of .venv, found on PATH.
+venv_pip() { PATH="$PWD/.venv/bin:$PATH" .venv/bin/pip "$@"; }
+run "python package" venv_pip install -q --disable-pip-version-check --no-build-isolation ./python
 
 # 4. `fcc` on PATH.
 if [ "$install" = "1" ]; then
