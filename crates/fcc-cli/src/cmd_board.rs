@@ -64,11 +64,9 @@ pub struct BoardRunArgs {
     pub cluster: ClusterLidarArgs,
 }
 
-/// `given(id)`: the option `id` (clap id) of `board run` was on the command
-/// line.
-pub fn run(cmd: &BoardCommand, given: &dyn Fn(&str) -> bool) -> anyhow::Result<()> {
+pub fn run(cmd: &BoardCommand) -> anyhow::Result<()> {
     match cmd {
-        BoardCommand::Run(a) => run_board(a, given),
+        BoardCommand::Run(a) => run_board(a),
     }
 }
 
@@ -90,24 +88,22 @@ pub fn virtual_build() -> FccParams {
 /// when given; when not, it is B.
 fn label_bits_of(
     args: &BoardRunArgs,
-    given: &dyn Fn(&str) -> bool,
     build: &FccParams,
     where_: &str,
 ) -> anyhow::Result<ClusterLidarArgs> {
     let mut cluster = args.cluster.clone();
-    if given("label_bits") && cluster.model.label_bits != build.label_bits {
+    if let Some(b) = cluster.model.label_bits.filter(|&b| b != build.label_bits) {
         bail!(
-            "--label-bits {} differs from the core's B = {} ({where_}): drop it or give --label-bits {}",
-            cluster.model.label_bits,
+            "--label-bits {b} differs from the core's B = {} ({where_}): drop it or give --label-bits {}",
             build.label_bits,
             build.label_bits
         );
     }
-    cluster.model.label_bits = build.label_bits;
+    cluster.model.label_bits = Some(build.label_bits);
     Ok(cluster)
 }
 
-fn run_board(args: &BoardRunArgs, given: &dyn Fn(&str) -> bool) -> anyhow::Result<()> {
+fn run_board(args: &BoardRunArgs) -> anyhow::Result<()> {
     if args.cluster.model.merge != MergeMode::Exact {
         bail!("the core computes exact connected components: drop --merge paper");
     }
@@ -136,7 +132,7 @@ fn run_board(args: &BoardRunArgs, given: &dyn Fn(&str) -> bool) -> anyhow::Resul
                 (b, model, "the virtual board's build".to_string())
             }
         };
-        let cluster = label_bits_of(args, given, &build, &where_)?;
+        let cluster = label_bits_of(args, &build, &where_)?;
         println!(
             "virtual board: one core for K_max {}, up to {} x {}, B = {} ({where_}); each frame runs at its own size, K and thresholds, set through the run registers",
             build.fsize, build.rows, build.cols, build.label_bits
@@ -149,7 +145,7 @@ fn run_board(args: &BoardRunArgs, given: &dyn Fn(&str) -> bool) -> anyhow::Resul
         hw.summary()
     } else if let Some(core) = &args.uio {
         let params = args.params.as_ref().context("--uio needs --params")?;
-        let (target, cluster) = open_linux(args, given, core, params)?;
+        let (target, cluster) = open_linux(args, core, params)?;
         let hw = Runner::new(target);
         run_cluster_on(&cluster, Some(&hw))?;
         hw.summary()
@@ -186,12 +182,11 @@ fn read_build(path: &std::path::Path) -> anyhow::Result<FccParams> {
 #[cfg(target_os = "linux")]
 fn open_linux(
     args: &BoardRunArgs,
-    given: &dyn Fn(&str) -> bool,
     core: &str,
     params: &std::path::Path,
 ) -> anyhow::Result<(Target, ClusterLidarArgs)> {
     let p = read_build(params)?;
-    let cluster = label_bits_of(args, given, &p, &params.display().to_string())?;
+    let cluster = label_bits_of(args, &p, &params.display().to_string())?;
     let expect = fcc_sim::build_expect_for(&p, args.board)?;
     let hal = fcc_driver::linux::LinuxHal::open(core, &args.uio_dma, &args.udmabuf)?;
     let mut d = Driver::open(hal, &expect).map_err(|e| anyhow::anyhow!("{e}"))?;

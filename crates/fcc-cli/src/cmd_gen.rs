@@ -71,10 +71,10 @@ pub fn run(args: &GenArgs) -> anyhow::Result<()> {
     let p = if args.smallest {
         use fcc_params::limits;
         let mut hw = args.hw.clone();
-        hw.fsize = *limits::HW_FSIZE.start();
-        hw.rows = *limits::HW_ROWS.start();
-        hw.cols = *limits::HW_COLS.start();
-        hw.label_bits = *limits::HW_LABEL_BITS.start();
+        hw.fsize = Some(*limits::HW_FSIZE.start());
+        hw.rows = Some(*limits::HW_ROWS.start());
+        hw.cols = Some(*limits::HW_COLS.start());
+        hw.label_bits = Some(*limits::HW_LABEL_BITS.start());
         hw.params()?
     } else {
         args.hw.params()?

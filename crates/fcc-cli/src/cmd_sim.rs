@@ -58,11 +58,11 @@ fn probability(name: &str, v: f64) -> anyhow::Result<f64> {
     }
 }
 
-/// `given(name)`: the option `name` (clap id) was on the command line.
 /// `--rows` and `--cols` size a synthetic scene only, so an `--input` frame
 /// refuses them.
-pub fn run(args: &SimArgs, given: &dyn Fn(&str) -> bool) -> anyhow::Result<()> {
-    let size_given = given("rows") || given("cols");
+pub fn run(args: &SimArgs) -> anyhow::Result<()> {
+    let hw = &args.hw;
+    let size_given = hw.rows.is_some() || hw.cols.is_some();
     if let (Some(path), true) = (&args.input, size_given) {
         bail!(
             "{}: --rows and --cols size a --scene-seed scene only; an --input frame brings its own size (drop them, or resample the frame)",
@@ -72,12 +72,12 @@ pub fn run(args: &SimArgs, given: &dyn Fn(&str) -> bool) -> anyhow::Result<()> {
     let build = match &args.rtl {
         Some(dir) => {
             let g = fcc_sim::read_generated(dir)?;
-            for (id, flag) in [
-                ("label_bits", "--label-bits"),
-                ("labels_per_beat", "--labels-per-beat"),
-                ("clock_mhz", "--clock-mhz"),
+            for (given, flag) in [
+                (hw.label_bits.is_some(), "--label-bits"),
+                (hw.labels_per_beat.is_some(), "--labels-per-beat"),
+                (hw.clock_mhz.is_some(), "--clock-mhz"),
             ] {
-                if given(id) {
+                if given {
                     bail!(
                         "{flag} is fixed by the build in {} ({}); drop it, or generate another configuration",
                         dir.display(),
@@ -92,11 +92,8 @@ pub fn run(args: &SimArgs, given: &dyn Fn(&str) -> bool) -> anyhow::Result<()> {
     let frame_of = |rows: usize, cols: usize, xyz: &[f64]| Frame::from_xyz_f64(rows, cols, xyz);
     // A synthetic scene on a generated configuration defaults to its limits.
     let (scene_rows, scene_cols) = match &build {
-        Some(b) => (
-            if given("rows") { args.hw.rows } else { b.rows },
-            if given("cols") { args.hw.cols } else { b.cols },
-        ),
-        None => (args.hw.rows, args.hw.cols),
+        Some(b) => (hw.rows.unwrap_or(b.rows), hw.cols.unwrap_or(b.cols)),
+        None => (hw.unchecked().rows, hw.unchecked().cols),
     };
     let (frame, source) = match (&args.input, args.scene_seed) {
         (Some(path), _) => {
@@ -131,18 +128,14 @@ pub fn run(args: &SimArgs, given: &dyn Fn(&str) -> bool) -> anyhow::Result<()> {
     // `p`: what the frame runs with (the golden model's parameters).
     let (p, mut dut) = match (&args.rtl, &build) {
         (Some(dir), Some(b)) => {
+            // The run parameters given, over the build's power-on values.
             let p = FccParams {
                 rows: frame.rows,
                 cols: frame.cols,
-                fsize: if given("fsize") {
-                    args.hw.fsize
-                } else {
-                    b.fsize
-                },
-                th_h: if given("th_h") { args.hw.th_h } else { b.th_h },
-                th_v: if given("th_v") { args.hw.th_v } else { b.th_v },
-                ..b.clone()
+                ..hw.over(b)
             };
+            p.validate_rtl_contract()
+                .context("these run parameters cannot run on the RTL")?;
             fcc_sim::check_run(b, &p).with_context(|| {
                 format!(
                     "this frame and these parameters cannot run on the build in {}",

@@ -176,7 +176,7 @@ pub fn run(args: &SynthArgs) -> anyhow::Result<()> {
     if args.all {
         return run_all(args);
     }
-    let mut p = args.params(args.hw.fsize)?;
+    let mut p = args.params(args.hw.unchecked().fsize)?;
     if let Some(dir) = &args.rtl_dir {
         let json = dir.join("fcc_params.json");
         if json.is_file() {
@@ -384,7 +384,10 @@ mod tests {
     #[test]
     fn defaults_are_the_default_parameters() {
         let a = parse(&[]).unwrap();
-        assert_eq!(a.params(a.hw.fsize).unwrap(), FccParams::default());
+        assert_eq!(
+            a.params(a.hw.unchecked().fsize).unwrap(),
+            FccParams::default()
+        );
         // What `fcc results` builds in code is what the bare command parses.
         assert_eq!(format!("{a:?}"), format!("{:?}", SynthArgs::default()));
     }
@@ -418,7 +421,7 @@ mod tests {
     #[test]
     fn hardware_ranges_are_checked() {
         let a = parse(&["--fsize", "13"]).unwrap();
-        let e = a.params(a.hw.fsize).unwrap_err().to_string();
+        let e = a.params(a.hw.unchecked().fsize).unwrap_err().to_string();
         assert!(e.contains("fsize = 13"), "{e}");
     }
 

@@ -4,7 +4,7 @@
 //! arguments and hands it to the library crates. Errors end the program with
 //! one line on stderr and exit code 2.
 
-use clap::{parser::ValueSource, CommandFactory, FromArgMatches, Parser, Subcommand};
+use clap::{Parser, Subcommand};
 
 mod cmd_bench;
 mod cmd_board;
@@ -66,15 +66,7 @@ enum Command {
 }
 
 fn main() {
-    let matches = Cli::command().get_matches();
-    let cli = Cli::from_arg_matches(&matches).unwrap_or_else(|e| e.exit());
-    // Options given on the command line (not defaults), for commands that
-    // must refuse an option that would be ignored.
-    let given = |sub: &str, id: &str| {
-        matches
-            .subcommand_matches(sub)
-            .is_some_and(|m| m.value_source(id) == Some(ValueSource::CommandLine))
-    };
+    let cli = Cli::parse();
     let result = match &cli.command {
         Command::Cluster(a) => cmd_lidar::run_cluster(a),
         Command::Convert(a) => cmd_lidar::run_convert(a),
@@ -85,14 +77,9 @@ fn main() {
         Command::Cycles(a) => cmd_cycles::run(a),
         Command::Results(a) => cmd_results::run(a),
         Command::Gen(a) => cmd_gen::run(a),
-        Command::Sim(a) => cmd_sim::run(a, &|id| given("sim", id)),
+        Command::Sim(a) => cmd_sim::run(a),
         Command::Synth(a) => cmd_synth::run(a),
-        Command::Board(a) => cmd_board::run(a, &|id| {
-            matches
-                .subcommand_matches("board")
-                .and_then(|m| m.subcommand_matches("run"))
-                .is_some_and(|m| m.value_source(id) == Some(ValueSource::CommandLine))
-        }),
+        Command::Board(a) => cmd_board::run(a),
     };
     if let Err(e) = result {
         eprintln!("error: {}", error_line(&e));

@@ -21,9 +21,8 @@ pub struct ModelArgs {
     /// Inter-channel threshold th_V, metres.
     #[arg(long, allow_negative_numbers = true, default_value_t = defaults().th_v)]
     pub th_v: f64,
-    /// Provisional label width B (8..=20).
-    #[arg(long, default_value_t = defaults().label_bits)]
-    pub label_bits: u32,
+    #[arg(long, value_name = "B", help = with_default("Provisional label width B (8..=20)", defaults().label_bits))]
+    pub label_bits: Option<u32>,
     /// Merge: `exact` connected components, or the published `paper` table.
     #[arg(long, default_value = "exact")]
     pub merge: MergeMode,
@@ -49,6 +48,11 @@ pub struct SlopeArgs {
 }
 
 impl SlopeArgs {
+    /// A preset or a non-zero slope is on the command line.
+    pub fn given(&self) -> bool {
+        self.preset.is_some() || self.th_h_slope != 0.0 || self.th_v_slope != 0.0
+    }
+
     /// `p` with the preset's thresholds and slopes, or the slopes given.
     pub fn apply(&self, p: FccParams) -> FccParams {
         match self.preset {
@@ -93,7 +97,7 @@ impl ModelArgs {
             fsize: self.fsize,
             th_h: self.th_h,
             th_v: self.th_v,
-            label_bits: self.label_bits,
+            label_bits: self.label_bits.unwrap_or(defaults().label_bits),
             bridge: self.limits.bridge,
             ring_reach: self.limits.ring_reach,
             ..defaults()
@@ -103,33 +107,35 @@ impl ModelArgs {
     }
 }
 
-/// Every parameter of a hardware configuration (`gen`, `sim`, `synth`).
-#[derive(Args, Debug, Clone)]
+/// `text` and its default, for the help of an option whose absence is
+/// resolved later (the default is the configuration's, said once).
+fn with_default(text: &str, v: impl std::fmt::Display) -> String {
+    format!("{text} [default: {v}]")
+}
+
+/// Every parameter of a hardware configuration (`gen`, `sim`, `synth`), as
+/// given: `None` is an option not on the command line. [`HwArgs::over`]
+/// resolves them once against a base configuration (the defaults, or a
+/// build's parameters for `sim --rtl`), so no command asks clap which
+/// options were given.
+#[derive(Args, Debug, Clone, Default)]
 pub struct HwArgs {
-    /// Connection-filter size K (odd, 3..=11 in hardware).
-    #[arg(long, default_value_t = defaults().fsize)]
-    pub fsize: usize,
-    /// Laser channels (image rows), 16..=128.
-    #[arg(long, default_value_t = defaults().rows)]
-    pub rows: usize,
-    /// Azimuth columns, 256..=4096.
-    #[arg(long, default_value_t = defaults().cols)]
-    pub cols: usize,
-    /// Intra-channel threshold th_H, metres.
-    #[arg(long, allow_negative_numbers = true, default_value_t = defaults().th_h)]
-    pub th_h: f64,
-    /// Inter-channel threshold th_V, metres.
-    #[arg(long, allow_negative_numbers = true, default_value_t = defaults().th_v)]
-    pub th_v: f64,
-    /// Provisional label width B (8..=16 in hardware).
-    #[arg(long, default_value_t = defaults().label_bits)]
-    pub label_bits: u32,
-    /// Clock the constraints ask for, MHz.
-    #[arg(long, allow_negative_numbers = true, default_value_t = defaults().clock_mhz)]
-    pub clock_mhz: f64,
-    /// Labels per output beat: 1, 2 or 4.
-    #[arg(long, default_value_t = defaults().labels_per_beat)]
-    pub labels_per_beat: u32,
+    #[arg(long, value_name = "K", help = with_default("Connection-filter size K (odd, 3..=11 in hardware)", defaults().fsize))]
+    pub fsize: Option<usize>,
+    #[arg(long, value_name = "R", help = with_default("Laser channels (image rows), 16..=128", defaults().rows))]
+    pub rows: Option<usize>,
+    #[arg(long, value_name = "C", help = with_default("Azimuth columns, 256..=4096", defaults().cols))]
+    pub cols: Option<usize>,
+    #[arg(long, value_name = "M", allow_negative_numbers = true, help = with_default("Intra-channel threshold th_H, metres", defaults().th_h))]
+    pub th_h: Option<f64>,
+    #[arg(long, value_name = "M", allow_negative_numbers = true, help = with_default("Inter-channel threshold th_V, metres", defaults().th_v))]
+    pub th_v: Option<f64>,
+    #[arg(long, value_name = "B", help = with_default("Provisional label width B (8..=16 in hardware)", defaults().label_bits))]
+    pub label_bits: Option<u32>,
+    #[arg(long, value_name = "MHZ", allow_negative_numbers = true, help = with_default("Clock the constraints ask for, MHz", defaults().clock_mhz))]
+    pub clock_mhz: Option<f64>,
+    #[arg(long, value_name = "N", help = with_default("Labels per output beat: 1, 2 or 4", defaults().labels_per_beat))]
+    pub labels_per_beat: Option<u32>,
     /// Refused by the row-major core (it keeps the unlimited contract).
     #[command(flatten)]
     pub limits: LimitArgs,
@@ -138,41 +144,33 @@ pub struct HwArgs {
     pub slopes: SlopeArgs,
 }
 
-impl Default for HwArgs {
-    /// The flags' defaults: the default configuration.
-    fn default() -> HwArgs {
-        let d = defaults();
-        HwArgs {
-            fsize: d.fsize,
-            rows: d.rows,
-            cols: d.cols,
-            th_h: d.th_h,
-            th_v: d.th_v,
-            label_bits: d.label_bits,
-            clock_mhz: d.clock_mhz,
-            labels_per_beat: d.labels_per_beat,
-            limits: LimitArgs::default(),
-            slopes: SlopeArgs::default(),
+impl HwArgs {
+    /// `base` with every option given on the command line in its place.
+    pub fn over(&self, base: &FccParams) -> FccParams {
+        let b = base.clone();
+        let p = FccParams {
+            rows: self.rows.unwrap_or(b.rows),
+            cols: self.cols.unwrap_or(b.cols),
+            fsize: self.fsize.unwrap_or(b.fsize),
+            th_h: self.th_h.unwrap_or(b.th_h),
+            th_v: self.th_v.unwrap_or(b.th_v),
+            label_bits: self.label_bits.unwrap_or(b.label_bits),
+            clock_mhz: self.clock_mhz.unwrap_or(b.clock_mhz),
+            labels_per_beat: self.labels_per_beat.unwrap_or(b.labels_per_beat),
+            bridge: self.limits.bridge.or(b.bridge),
+            ring_reach: self.limits.ring_reach.or(b.ring_reach),
+            ..b
+        };
+        if self.slopes.given() {
+            self.slopes.apply(p)
+        } else {
+            p
         }
     }
-}
 
-impl HwArgs {
-    /// The parameters as given, not yet validated.
+    /// The parameters as given over the defaults, not yet validated.
     pub fn unchecked(&self) -> FccParams {
-        self.slopes.apply(FccParams {
-            rows: self.rows,
-            cols: self.cols,
-            fsize: self.fsize,
-            th_h: self.th_h,
-            th_v: self.th_v,
-            label_bits: self.label_bits,
-            clock_mhz: self.clock_mhz,
-            labels_per_beat: self.labels_per_beat,
-            bridge: self.limits.bridge,
-            ring_reach: self.limits.ring_reach,
-            ..defaults()
-        })
+        self.over(&defaults())
     }
 
     /// The parameters, validated for the RTL generator.

@@ -119,7 +119,12 @@ fn sim_rtl_refuses_what_the_build_cannot_run() {
         a.extend(extra);
         fcc(&a)
     };
-    let cases: [(&[&str], &str); 5] = [
+    let cases: [(&[&str], &str); 7] = [
+        (
+            &["--th-v-slope", "0.05"],
+            "th_v_slope = 0.05 is out of range",
+        ),
+        (&["--bridge", "4"], "bridge = 4 is out of range"),
         (
             &["--fsize", "7"],
             "RUN_K = 7 is out of range for this build: odd, 3 ..= 5",

@@ -206,6 +206,19 @@ impl FccParams {
     /// [`validate`](Self::validate), plus the tighter ranges of the RTL generator.
     pub fn validate_for_hardware(&self) -> Result<(), ParamError> {
         self.validate()?;
+        self.validate_rtl_contract()?;
+        check_range("rows", self.rows, &limits::HW_ROWS)?;
+        check_range("cols", self.cols, &limits::HW_COLS)?;
+        check_fsize("fsize", self.fsize, &limits::HW_FSIZE)?;
+        check_range("label_bits", self.label_bits, &limits::HW_LABEL_BITS)?;
+        Ok(())
+    }
+
+    /// The part of the contract the row-major RTL follows, whatever the
+    /// sizes: fixed thresholds (no slopes) and unlimited reach. Run
+    /// parameters of a build (smaller than what can be generated) are
+    /// checked with this and the build's own ranges.
+    pub fn validate_rtl_contract(&self) -> Result<(), ParamError> {
         // The RTL has fixed thresholds so far.
         for (field, v) in [
             ("th_h_slope", self.th_h_slope),
@@ -229,10 +242,6 @@ impl FccParams {
                 ));
             }
         }
-        check_range("rows", self.rows, &limits::HW_ROWS)?;
-        check_range("cols", self.cols, &limits::HW_COLS)?;
-        check_fsize("fsize", self.fsize, &limits::HW_FSIZE)?;
-        check_range("label_bits", self.label_bits, &limits::HW_LABEL_BITS)?;
         Ok(())
     }
 
