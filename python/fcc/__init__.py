@@ -123,9 +123,11 @@ class Pipeline:
         """The (R, C) uint32 label image of an (R, C, 3) range image."""
         return self._inner.labels(xyz)
 
-    def run(self, xyz: np.ndarray, records: bool = False, stream: bool = False) -> ClusterResult:
+    def run(
+        self, xyz: np.ndarray, records: bool = False, stream: bool = False, *, _stacklevel: int = 2
+    ) -> ClusterResult:
         """Labels, statistics, and with ``records=True`` the per-cluster records."""
-        labels, stats, recs, ground = self._inner.run(xyz, records, stream)
+        labels, stats, recs, ground = self._inner.run(xyz, records, stream, _stacklevel)
         return ClusterResult(labels, json.loads(stats), recs, ground)
 
     def time_core(self, xyz: np.ndarray, repeats: int = 20) -> Tuple[float, float]:
@@ -225,7 +227,7 @@ def cluster_result(
     their closing column.
     """
     img, g = _image(xyz, ground)
-    return Pipeline(ground=g, **params).run(img, records=records, stream=stream)
+    return Pipeline(ground=g, **params).run(img, records=records, stream=stream, _stacklevel=3)
 
 
 def open(path: Any, **options: Any) -> Frames:

@@ -131,9 +131,14 @@ impl Losses {
         }
     }
 
-    /// The CLI's warnings on lost points, as `RuntimeWarning`s pointing at
-    /// the caller of the package function.
-    pub fn warn(&self, py: Python<'_>, params: &fcc_params::FccParams) -> PyResult<()> {
+    /// The CLI's warnings on lost points, as `RuntimeWarning`s pointing
+    /// `stacklevel` Python frames up (2: the caller of the package function).
+    pub fn warn(
+        &self,
+        py: Python<'_>,
+        params: &fcc_params::FccParams,
+        stacklevel: i32,
+    ) -> PyResult<()> {
         let warning = py.get_type::<pyo3::exceptions::PyRuntimeWarning>();
         if self.overflow {
             let msg = format!(
@@ -145,14 +150,14 @@ impl Losses {
                 params.max_label(),
                 fcc_params::FccParams::label_bits_for(self.labels_needed)
             );
-            PyErr::warn(py, &warning, &std::ffi::CString::new(msg)?, 2)?;
+            PyErr::warn(py, &warning, &std::ffi::CString::new(msg)?, stacklevel)?;
         }
         if self.out_of_range > 0 {
             let msg = format!(
                 "{} points beyond the Q7.8 coordinate range (about \u{b1}128 m) were not clustered",
                 self.out_of_range
             );
-            PyErr::warn(py, &warning, &std::ffi::CString::new(msg)?, 2)?;
+            PyErr::warn(py, &warning, &std::ffi::CString::new(msg)?, stacklevel)?;
         }
         Ok(())
     }

@@ -267,26 +267,28 @@ impl Pipeline {
     fn labels<'py>(&self, py: Python<'py>, xyz: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
         if self.cfg.ground.method == GroundMethod::None {
             let (labels, losses) = crate::fast::labels(py, xyz, &self.cfg)?;
-            losses.warn(py, &self.cfg.params)?;
+            losses.warn(py, &self.cfg.params, 2)?;
             return Ok(labels);
         }
         let image = image_of(xyz)?;
         let out = py
             .allow_threads(|| cluster_image(&image, &self.cfg))
             .map_err(lidar_err)?;
-        Losses::of(&out).warn(py, &out.params)?;
+        Losses::of(&out).warn(py, &out.params, 2)?;
         Ok(array(py, out.labels, &[image.rows, image.cols])?.into_any())
     }
 
     /// Labels (R, C), the statistics as JSON, the records (a dict of
     /// arrays, or None) and the ground mask (R, C) bool.
-    #[pyo3(signature = (xyz, records=false, stream=false))]
+    /// Warnings point `stacklevel` Python frames up (2: the caller's caller).
+    #[pyo3(signature = (xyz, records=false, stream=false, stacklevel=2))]
     fn run<'py>(
         &self,
         py: Python<'py>,
         xyz: &Bound<'py, PyAny>,
         records: bool,
         stream: bool,
+        stacklevel: i32,
     ) -> PyResult<RunOutput<'py>> {
         if stream && self.cfg.mode != MergeMode::Exact {
             return Err(value_err(
@@ -321,7 +323,7 @@ impl Pipeline {
                 },
             )
             .map_err(lidar_err)?;
-        Losses::of(&out).warn(py, &out.params)?;
+        Losses::of(&out).warn(py, &out.params, stacklevel)?;
         let stats = stats_json(&image, &out, stream, peak, time_ms);
         let recs = match recs.filter(|_| records) {
             Some(r) => Some(records_dict(py, &r)?),

@@ -130,17 +130,24 @@ def test_records_describe_the_clusters():
     assert res.stats["joins"] is not None and res.ground.shape == (ROWS, COLS)
 
 
-def test_frame_mode_records_equal_the_cli_table(cli):
+@pytest.mark.parametrize("stream", [False, True])
+def test_records_equal_the_cli_cluster_table(cli, stream):
     import json
 
     xyz, _ = fcc.scene(6, rows=ROWS, cols=COLS)
     out = cli.tmp / "clusters.json"
-    cli.run("cluster", "-i", str(cli.npy("c.npy", xyz)), "--clusters", str(out))
-    table = json.loads(out.read_text())
-    rows = table if isinstance(table, list) else table.get("clusters", table)
-    rec = fcc.cluster_result(xyz).records
-    assert len(rows) == len(rec["id"])
-    assert [r["points"] for r in rows] == rec["points"].tolist()
+    cli.run("cluster", "-i", str(cli.npy("c.npy", xyz)), "--clusters", str(out), *(["--stream"] if stream else []))
+    rows = json.loads(out.read_text())
+    rec = fcc.cluster_result(xyz, stream=stream).records
+    assert [r["cluster"] for r in rows] == rec["id"].tolist()
+    for k, col in [("points", "points"), ("first_row", "first_row"), ("last_row", "last_row"),
+                   ("span_first_col", "first_col"), ("span_last_col", "last_col"),
+                   ("closed_col", "closed_col"), ("seam", "seam")]:
+        assert [r[k] for r in rows] == rec[col].tolist(), k
+    for k, col, i in [("box_cx", "box_center", 0), ("box_cy", "box_center", 1), ("box_length", "box_size", 0),
+                      ("box_width", "box_size", 1), ("centroid_x", "centroid", 0), ("centroid_z", "centroid", 2)]:
+        np.testing.assert_allclose([r[k] for r in rows], rec[col][:, i], atol=1 / 256, err_msg=k)
+    np.testing.assert_allclose([r["heading"] for r in rows], rec["heading"], atol=1e-9)
 
 
 @pytest.mark.parametrize(
