@@ -1167,17 +1167,7 @@ pub fn run_eval(args: &EvalArgs) -> anyhow::Result<()> {
         let predicted = read_predicted(args, &frames)?;
         pool.install(|| evaluate_given(&frames, &predicted, &base, &eval_cfg))?
     };
-    let md = table.to_markdown();
-    println!("{md}");
-    if let Some(p) = &args.markdown {
-        fcc_io::write_atomic(p, md.as_bytes())
-            .with_context(|| format!("{}: cannot write", p.display()))?;
-    }
-    if let Some(p) = &args.json {
-        fcc_io::write_atomic(p, serde_json::to_string_pretty(&table)?.as_bytes())
-            .with_context(|| format!("{}: cannot write", p.display()))?;
-    }
-    Ok(())
+    write_table(args, &table.to_markdown(), &table)
 }
 
 /// The label images of `fcc eval --predicted`, one per frame of the
@@ -1220,6 +1210,20 @@ fn read_predicted(args: &EvalArgs, frames: &[EvalFrame]) -> anyhow::Result<Vec<V
             Ok(l.labels)
         })
         .collect()
+}
+
+/// Print `fcc eval`'s table and write it to --markdown and --json.
+fn write_table(args: &EvalArgs, md: &str, table: &impl Serialize) -> anyhow::Result<()> {
+    println!("{md}");
+    if let Some(p) = &args.markdown {
+        fcc_io::write_atomic(p, md.as_bytes())
+            .with_context(|| format!("{}: cannot write", p.display()))?;
+    }
+    if let Some(p) = &args.json {
+        fcc_io::write_atomic(p, serde_json::to_string_pretty(table)?.as_bytes())
+            .with_context(|| format!("{}: cannot write", p.display()))?;
+    }
+    Ok(())
 }
 
 /// The pipeline settings of `fcc eval`.
@@ -1285,17 +1289,7 @@ fn run_eval_semantickitti(args: &EvalArgs, pool: &rayon::ThreadPool) -> anyhow::
         )
     })?;
     pb.finish_and_clear();
-    let md = table.to_markdown();
-    println!("{md}");
-    if let Some(p) = &args.markdown {
-        fcc_io::write_atomic(p, md.as_bytes())
-            .with_context(|| format!("{}: cannot write", p.display()))?;
-    }
-    if let Some(p) = &args.json {
-        fcc_io::write_atomic(p, serde_json::to_string_pretty(&table)?.as_bytes())
-            .with_context(|| format!("{}: cannot write", p.display()))?;
-    }
-    Ok(())
+    write_table(args, &table.to_markdown(), &table)
 }
 
 #[cfg(test)]
