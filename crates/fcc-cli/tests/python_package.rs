@@ -58,6 +58,7 @@ fn python_package_pytest_suite() {
         .expect("start pytest");
     assert!(
         status.success(),
-        "the Python package's tests failed ({status}); pytest's report is above"
+        "the Python package's tests failed ({status}); pytest's report is above \
+         (after changing the Rust crates, reinstall the package: ./setup.sh)"
     );
 }
