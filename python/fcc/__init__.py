@@ -251,6 +251,7 @@ def open(path: Any, **options: Any) -> Frames:
     ``ValueError``, both with the CLI's message. After the last frame the
     iterator's ``summary`` holds the capture's summary line and
     ``warnings`` its warnings, and ``notes`` the notes on how it was read.
+    ``close()`` (or a ``with`` block) stops the reading early.
     """
     frames = _fcc.open(str(path), **{k: _path(v) for k, v in options.items()})
     return frames

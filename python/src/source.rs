@@ -224,6 +224,27 @@ impl Frames {
         slf
     }
 
+    /// Stop reading: the reading thread ends at its next frame and the
+    /// iterator is exhausted.
+    fn close(&mut self) {
+        let (_, rx) = sync_channel::<Msg>(0);
+        if let Ok(mut r) = self.rx.lock() {
+            *r = rx;
+        }
+        self.first = None;
+        self.done = true;
+    }
+
+    fn __enter__(slf: PyRef<'_, Self>) -> PyRef<'_, Self> {
+        slf
+    }
+
+    #[pyo3(signature = (*_args))]
+    fn __exit__(&mut self, _args: &Bound<'_, pyo3::types::PyTuple>) -> bool {
+        self.close();
+        false
+    }
+
     fn __next__(&mut self, py: Python<'_>) -> PyResult<Frame> {
         loop {
             if self.done {

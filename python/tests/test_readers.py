@@ -224,8 +224,14 @@ def test_skip_and_max_frames_and_an_abandoned_iterator():
     all_frames = [f.name for f in fcc.open(path)]
     assert [f.name for f in fcc.open(path, max_frames=1)] == all_frames[:1]
     assert [f.name for f in fcc.open(path, skip_frames=1)] == all_frames[1:]
-    # Dropping an iterator half way stops its reading thread.
+    # Dropping or closing an iterator half way stops its reading thread.
     for _ in range(20):
         it = fcc.open(path)
         next(it)
         del it
+    with fcc.open(path) as it:
+        first = next(it)
+    assert first.name == all_frames[0] and list(it) == []
+    it = fcc.open(path)
+    it.close()
+    assert list(it) == []
