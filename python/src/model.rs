@@ -424,15 +424,14 @@ pub fn score(
     let range = match xyz {
         Some(x) => {
             let shape3 = format!("({}, {}, 3) like labels", shape[0], shape[1]);
-            let img = {
-                let (v, _) = floats(
-                    x,
-                    "xyz",
-                    &[Some(shape[0]), Some(shape[1]), Some(3)],
-                    &shape3,
-                )?;
-                RangeImage::from_xyz(shape[0], shape[1], v).map_err(lidar_err)?
-            };
+            let (v, _) = floats(
+                x,
+                "xyz",
+                &[Some(shape[0]), Some(shape[1]), Some(3)],
+                &shape3,
+            )?;
+            let img = RangeImage::from_xyz(shape[0], shape[1], v).map_err(lidar_err)?;
+            // Each pixel's distance from the sensor, as `fcc eval` bands it.
             Some(
                 (0..img.pixels())
                     .map(|i| img.range(i).unwrap_or(f32::NAN))

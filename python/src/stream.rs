@@ -8,6 +8,10 @@ use fcc_golden::{oriented_box, Frame, Record};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
+/// The golden stream (spec §9): push the C columns of a frame, (R, 3) each,
+/// and get the records of the clusters as they close; `finish()` ends the
+/// frame, `labels()` gives its label image. No ground removal: the columns
+/// are clustered as given.
 #[pyclass(module = "fcc._fcc")]
 pub struct Stream {
     inner: fcc_golden::Stream,
