@@ -296,9 +296,9 @@ def remove_ground(
     return _fcc.remove_ground(xyz, method, max_slope, distance)
 
 
-def _labels(a: Any, what: str) -> np.ndarray:
+def _labels(given: Any, what: str) -> np.ndarray:
     """An integer label array as uint32, refusing values that do not fit."""
-    a = np.asarray(a)
+    a: np.ndarray = np.asarray(given)
     if a.dtype == np.uint32:
         return a
     if a.dtype.kind not in "iu":
