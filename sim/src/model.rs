@@ -166,12 +166,7 @@ pub fn cache_root() -> PathBuf {
 }
 
 pub(crate) fn fnv(text: &str) -> u64 {
-    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
-    for b in text.bytes() {
-        h ^= u64::from(b);
-        h = h.wrapping_mul(0x0000_0100_0000_01b3);
-    }
-    h
+    fcc_params::fnv1a64(text.as_bytes())
 }
 
 /// The text of the shim `shim` and of the files it includes, for cache keys.

@@ -369,12 +369,7 @@ impl FccParams {
 
     /// A short, stable hash of the canonical JSON (FNV-1a 64), for generated-file headers.
     pub fn hash(&self) -> String {
-        let mut h: u64 = 0xcbf2_9ce4_8422_2325;
-        for b in self.to_json().bytes() {
-            h ^= u64::from(b);
-            h = h.wrapping_mul(0x0000_0100_0000_01b3);
-        }
-        format!("{h:016x}")
+        format!("{:016x}", fnv1a64(self.to_json().as_bytes()))
     }
 
     /// A short name of the configuration, `k<K>_<first 8 hex digits of the
@@ -455,6 +450,17 @@ fn check_threshold(field: &'static str, th: f64) -> Result<(), ParamError> {
             ),
         ))
     }
+}
+
+/// FNV-1a, 64 bits: the project's one short stable hash (parameter hashes in
+/// generated-file headers, the simulator's model cache keys).
+pub fn fnv1a64(bytes: &[u8]) -> u64 {
+    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
+    for &b in bytes {
+        h ^= u64::from(b);
+        h = h.wrapping_mul(0x0000_0100_0000_01b3);
+    }
+    h
 }
 
 #[cfg(test)]
