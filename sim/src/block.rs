@@ -65,7 +65,7 @@ pub(crate) fn load_block<S: Copy>(
     Ok(model)
 }
 
-fn open<S: Copy>(path: &Path, symbol: &str) -> Result<BlockModel<S>, SimError> {
+pub(crate) fn open<S: Copy>(path: &Path, symbol: &str) -> Result<BlockModel<S>, SimError> {
     let err = |source| SimError::Load {
         path: path.to_path_buf(),
         source,

@@ -23,6 +23,7 @@ use std::sync::{Arc, Mutex, OnceLock};
 
 use fcc_params::FccParams;
 
+use crate::block::{open as open_block, BlockInstance, BlockModel};
 use crate::ffi::{self, c_struct};
 use crate::SimError;
 
@@ -77,20 +78,16 @@ c_struct! {
     }
 }
 
-type NewFn = unsafe extern "C" fn() -> *mut c_void;
-type FreeFn = unsafe extern "C" fn(*mut c_void);
 type StepFn = unsafe extern "C" fn(*mut c_void, *const FccIn, *mut FccOut);
 
-/// A loaded Verilator model (shared library) for one parameter set.
+/// A loaded Verilator model (shared library) for one parameter set: the
+/// whole core, loaded as every block bench's model is (its shim's
+/// functions are `fcc_new`, `fcc_free` and `fcc_step`).
 pub struct Model {
     pub params: FccParams,
     /// Directory holding the generated RTL and the library.
     pub dir: PathBuf,
-    new_fn: NewFn,
-    free_fn: FreeFn,
-    step_fn: StepFn,
-    // Keeps the function pointers above valid; dropped last.
-    _lib: libloading::Library,
+    block: Arc<BlockModel<StepFn>>,
 }
 
 impl std::fmt::Debug for Model {
@@ -102,7 +99,7 @@ impl std::fmt::Debug for Model {
 /// One simulated instance of the core.
 pub struct Dut {
     model: Arc<Model>,
-    handle: *mut c_void,
+    instance: BlockInstance<StepFn>,
     /// Rising edges simulated so far.
     pub cycle: u64,
     /// FRAME_COUNT as last read by the bench (0 after a reset).
@@ -111,12 +108,10 @@ pub struct Dut {
 
 impl Dut {
     pub fn new(model: Arc<Model>) -> Self {
-        // SAFETY: `fcc_new` allocates a fresh model; the library stays loaded
-        // for as long as `model` (held by this struct) lives.
-        let handle = unsafe { (model.new_fn)() };
+        let instance = BlockInstance::new(model.block.clone());
         Dut {
             model,
-            handle,
+            instance,
             cycle: 0,
             frames_seen: 0,
         }
@@ -129,18 +124,13 @@ impl Dut {
     /// Advance one clock cycle with `inp`; returns the outputs seen before the edge.
     pub fn step(&mut self, inp: &FccIn) -> FccOut {
         let mut out = FccOut::default();
+        let (step, handle) = self.instance.step_fn();
         // SAFETY: `handle` came from `fcc_new` of the same library and is
-        // freed only in `drop`; both pointers refer to live `repr(C)` values.
-        unsafe { (self.model.step_fn)(self.handle, inp, &mut out) };
+        // freed only when `instance` drops; both pointers refer to live
+        // `repr(C)` values.
+        unsafe { step(handle, inp, &mut out) };
         self.cycle += 1;
         out
-    }
-}
-
-impl Drop for Dut {
-    fn drop(&mut self) {
-        // SAFETY: `handle` is freed exactly once, with the library still loaded.
-        unsafe { (self.model.free_fn)(self.handle) };
     }
 }
 
@@ -281,42 +271,10 @@ fn load_verilog(p: &FccParams, verilog: &str, waivers: &str) -> Result<Arc<Model
 }
 
 fn open(p: &FccParams, dir: &Path) -> Result<Model, SimError> {
-    let path = dir.join(LIB_NAME);
-    // SAFETY: the library is one we built from our own shim; loading it runs
-    // no initialisers beyond the C++ runtime's.
-    let lib = unsafe { libloading::Library::new(&path) }.map_err(|source| SimError::Load {
-        path: path.clone(),
-        source,
-    })?;
-    // SAFETY: the symbol types match the `extern "C"` declarations in the shim.
-    let (new_fn, free_fn, step_fn) = unsafe {
-        let n: NewFn = *lib
-            .get::<NewFn>(b"fcc_new\0")
-            .map_err(|source| SimError::Load {
-                path: path.clone(),
-                source,
-            })?;
-        let f: FreeFn = *lib
-            .get::<FreeFn>(b"fcc_free\0")
-            .map_err(|source| SimError::Load {
-                path: path.clone(),
-                source,
-            })?;
-        let s: StepFn = *lib
-            .get::<StepFn>(b"fcc_step\0")
-            .map_err(|source| SimError::Load {
-                path: path.clone(),
-                source,
-            })?;
-        (n, f, s)
-    };
     Ok(Model {
         params: p.clone(),
         dir: dir.to_path_buf(),
-        new_fn,
-        free_fn,
-        step_fn,
-        _lib: lib,
+        block: Arc::new(open_block(&dir.join(LIB_NAME), "fcc")?),
     })
 }
 
