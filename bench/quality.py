@@ -35,8 +35,8 @@ import time
 
 TUNE = list(range(1, 13))
 HELD_OUT = list(range(13, 25))
-EPS_GRID = "0.5,0.7,1.0,1.4,2.0,2.8"
-MIN_SAMPLES_GRID = "5,10"
+EPS_GRID = "0.7,1.0,1.4,2.0"
+MIN_SAMPLES_GRID = "5,10,20"
 
 
 def run(cmd):
