@@ -13,24 +13,8 @@ void fcc_merge_free(void* p) { vl_model_free<Vfcc_merge_table>(p); }
 void fcc_merge_step(void* p, const MergeIn* in, MergeOut* out) {
     vl_model_step<Vfcc_merge_table>(
         p,
-        [in](Vfcc_merge_table* t) {
-            t->rst = in->rst;
-            t->jv = in->jv;
-            t->ja = in->ja;
-            t->jb = in->jb;
-            t->jsame = in->jsame;
-            t->flat_start = in->flat_start;
-            t->provisional = in->provisional;
-            t->gear_used = in->gear_used;
-        },
-        [out](Vfcc_merge_table* t) {
-            out->jtake = t->jtake;
-            out->init_busy = t->init_busy;
-            out->union_idle = t->union_idle;
-            out->fv = t->fv;
-            out->fval = t->fval;
-            out->clusters = t->clusters;
-        });
+        [in](Vfcc_merge_table* t) { FCC_DRIVE_MergeIn(t, in); },
+        [out](Vfcc_merge_table* t) { FCC_SAMPLE_MergeOut(t, out); });
 }
 
 }  // extern "C"

@@ -28,20 +28,7 @@ void fcc_sort_net_step(void* p, const SnIn* in, const uint8_t* hit, const uint16
             t->eval();
             t->jtake = t->jv & in->jready;
         },
-        [out](Vfcc_sort_net* t) {
-            out->rep_we = t->rep_we;
-            out->rep_waddr = t->rep_waddr;
-            out->rep_wdata = t->rep_wdata;
-            out->jv = t->jv;
-            out->ja = t->ja;
-            out->jb = t->jb;
-            out->jsame = t->jsame;
-            out->jq_empty = t->jq_empty;
-            out->last_done = t->last_done;
-            out->drop = t->drop;
-            out->take = t->take;
-            out->joins = t->joins;
-        });
+        [out](Vfcc_sort_net* t) { FCC_SAMPLE_SnOut(t, out); });
 }
 
 }  // extern "C"

@@ -17,23 +17,9 @@ void fcc_window_free(void* p) { vl_model_free<Vfcc_window_probe>(p); }
 void fcc_window_step(void* p, const WinIn* in, WinOut* out, uint64_t* entries, uint32_t n) {
     vl_model_step<Vfcc_window_probe>(
         p,
-        [in](Vfcc_window_probe* t) {
-            t->rst = in->rst;
-            t->in_valid = in->valid;
-            t->in_lok = in->lok;
-            t->in_x = in->x;
-            t->in_y = in->y;
-            t->in_z = in->z;
-            t->in_row = in->row;
-            t->in_col = in->col;
-            t->in_rdcol = in->rdcol;
-            t->last_col = in->last_col;
-            t->run_k = in->run_k;
-        },
+        [in](Vfcc_window_probe* t) { FCC_DRIVE_WinIn(t, in); },
         [out, entries, n](Vfcc_window_probe* t) {
-            out->centre_valid = t->centre_valid;
-            out->centre_x = t->centre_x;
-            out->centre_col = t->centre_col;
+            FCC_SAMPLE_WinOut(t, out);
             for (uint32_t e = 0; e < n; e++) {
                 t->ent_sel = e;
                 t->eval();

@@ -28,18 +28,18 @@ c_struct! {
         /// Start of the read-back of the frame written.
         pub rb_start: u8,
         pub fv: u8,
-        pub tready: u8,
+        pub m_axis_tready: u8,
     }
 }
 
 c_struct! {
     /// Outputs during one cycle.
     pub struct LuOut {
-        pub tdata: u64,
+        pub m_axis_tdata: u64,
         pub gear_stalls: u32,
-        pub tkeep: u8,
-        pub tvalid: u8,
-        pub tlast: u8,
+        pub m_axis_tkeep: u8,
+        pub m_axis_tvalid: u8,
+        pub m_axis_tlast: u8,
         pub rb_done: u8,
         /// Compact labels waiting in the gearbox.
         pub gear_used: u8,

@@ -19,15 +19,15 @@ const LIB_NAME: &str = "libfcc_window_sim.so";
 c_struct! {
     /// Inputs of one cycle: the W0 pixel and the run size.
     pub struct WinIn {
-        pub x: u16,
-        pub y: u16,
-        pub z: u16,
-        pub col: u16,
-        pub rdcol: u16,
+        pub in_x: u16,
+        pub in_y: u16,
+        pub in_z: u16,
+        pub in_col: u16,
+        pub in_rdcol: u16,
         pub last_col: u16,
-        pub row: u8,
-        pub valid: u8,
-        pub lok: u8,
+        pub in_row: u8,
+        pub in_valid: u8,
+        pub in_lok: u8,
         pub run_k: u8,
         pub rst: u8,
     }

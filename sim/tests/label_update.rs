@@ -161,7 +161,7 @@ fn run_frame(d: &mut LuDut, f: &Frame, pace: Pace, rng: &mut ChaCha8Rng, what: &
         let o: LuOut = d.step(&LuIn {
             fv: u8::from(push),
             fval: if push { f.compact[pushed] } else { 0 },
-            tready: u8::from(tready),
+            m_axis_tready: u8::from(tready),
             ..Default::default()
         });
         assert!(
@@ -174,14 +174,14 @@ fn run_frame(d: &mut LuDut, f: &Frame, pace: Pace, rng: &mut ChaCha8Rng, what: &
         if push {
             pushed += 1;
         }
-        if o.tvalid != 0 && tready {
+        if o.m_axis_tvalid != 0 && tready {
             got.push(Beat {
-                tdata: o.tdata,
-                tkeep: o.tkeep,
-                tlast: o.tlast != 0,
+                tdata: o.m_axis_tdata,
+                tkeep: o.m_axis_tkeep,
+                tlast: o.m_axis_tlast != 0,
             });
         }
-        let sent_last = o.tvalid != 0 && tready && o.tlast != 0;
+        let sent_last = o.m_axis_tvalid != 0 && tready && o.m_axis_tlast != 0;
         assert_eq!(
             o.rb_done != 0,
             sent_last,

@@ -144,14 +144,14 @@ fn run(p: &FccParams, frames: &[Frame], gap: f64, seed: u64) {
                 }
                 let pt = f.points[i * f.cols + j];
                 let inp = WinIn {
-                    valid: 1,
-                    lok: u8::from(pt.lok),
-                    x: pt.xyz[0],
-                    y: pt.xyz[1],
-                    z: pt.xyz[2],
-                    row: i as u8,
-                    col: j as u16,
-                    rdcol: ((j + h) % f.cols) as u16,
+                    in_valid: 1,
+                    in_lok: u8::from(pt.lok),
+                    in_x: pt.xyz[0],
+                    in_y: pt.xyz[1],
+                    in_z: pt.xyz[2],
+                    in_row: i as u8,
+                    in_col: j as u16,
+                    in_rdcol: ((j + h) % f.cols) as u16,
                     ..idle(f)
                 };
                 sent.push_back((fi, i, j));
