@@ -62,32 +62,3 @@ void vl_model_step(void* p, Drive drive, Sample sample) {
     t->eval();
     m->ctx.timeInc(1);
 }
-
-// The AXI4-Lite slave port (`s_axil_*`) from the master side of `in`, all
-// byte lanes written.
-template <class Top, class In>
-void vl_drive_axil(Top* t, const In* in) {
-    t->s_axil_awaddr = in->awaddr;
-    t->s_axil_awvalid = in->awvalid;
-    t->s_axil_wdata = in->wdata;
-    t->s_axil_wstrb = 0xf;
-    t->s_axil_wvalid = in->wvalid;
-    t->s_axil_bready = in->bready;
-    t->s_axil_araddr = in->araddr;
-    t->s_axil_arvalid = in->arvalid;
-    t->s_axil_rready = in->rready;
-}
-
-// The slave side of the AXI4-Lite port and the interrupt into `out`.
-template <class Top, class Out>
-void vl_sample_axil(Top* t, Out* out) {
-    out->rdata = t->s_axil_rdata;
-    out->awready = t->s_axil_awready;
-    out->wready = t->s_axil_wready;
-    out->bvalid = t->s_axil_bvalid;
-    out->bresp = t->s_axil_bresp;
-    out->arready = t->s_axil_arready;
-    out->rvalid = t->s_axil_rvalid;
-    out->rresp = t->s_axil_rresp;
-    out->irq = t->irq;
-}

@@ -275,28 +275,28 @@ impl System {
         let s2mm_ready = self.dma.s2mm.active && !busy && !self.dma.stuck_s2mm;
         let (tdata, tlast) = beat.unwrap_or((0, false));
         let out = self.dut.step(&FccIn {
-            s_tdata: tdata,
-            s_tvalid: u8::from(beat.is_some()),
-            s_tlast: u8::from(tlast),
-            m_tready: u8::from(s2mm_ready),
-            awaddr: axil.awaddr,
-            awvalid: u8::from(axil.awvalid),
-            wdata: axil.wdata,
-            wvalid: u8::from(axil.wvalid),
-            bready: u8::from(axil.bready),
-            araddr: axil.araddr,
-            arvalid: u8::from(axil.arvalid),
-            rready: u8::from(axil.rready),
+            s_axis_tdata: tdata,
+            s_axis_tvalid: u8::from(beat.is_some()),
+            s_axis_tlast: u8::from(tlast),
+            m_axis_tready: u8::from(s2mm_ready),
+            s_axil_awaddr: axil.awaddr,
+            s_axil_awvalid: u8::from(axil.awvalid),
+            s_axil_wdata: axil.wdata,
+            s_axil_wvalid: u8::from(axil.wvalid),
+            s_axil_bready: u8::from(axil.bready),
+            s_axil_araddr: axil.araddr,
+            s_axil_arvalid: u8::from(axil.arvalid),
+            s_axil_rready: u8::from(axil.rready),
             ..Default::default()
         });
-        if beat.is_some() && out.s_tready != 0 {
+        if beat.is_some() && out.s_axis_tready != 0 {
             let ch = &mut self.dma.mm2s;
             ch.beats += 1;
             if ch.beats == ch.total {
                 ch.complete();
             }
         }
-        if s2mm_ready && out.m_tvalid != 0 {
+        if s2mm_ready && out.m_axis_tvalid != 0 {
             self.s2mm_take(&out);
         }
         if self.dma.resetting > 0 {
@@ -313,9 +313,9 @@ impl System {
             ch.fail(bit);
             return;
         }
-        let bytes = out.m_tdata.to_le_bytes();
+        let bytes = out.m_axis_tdata.to_le_bytes();
         let kept: Vec<u8> = (0..8)
-            .filter(|b| out.m_tkeep >> b & 1 != 0)
+            .filter(|b| out.m_axis_tkeep >> b & 1 != 0)
             .map(|b| bytes[b])
             .collect();
         if ch.bytes as usize + kept.len() > ch.length as usize {
@@ -330,7 +330,7 @@ impl System {
                 self.mem.data[r].copy_from_slice(&kept);
                 ch.bytes += kept.len() as u32;
                 ch.beats += 1;
-                if out.m_tlast != 0 {
+                if out.m_axis_tlast != 0 {
                     ch.length = ch.bytes;
                     ch.complete();
                 }
@@ -343,14 +343,14 @@ impl AxilPort for System {
     fn axil_cycle(&mut self, m: &AxilM) -> AxilS {
         let o = self.cycle(m);
         AxilS {
-            awready: o.awready != 0,
-            wready: o.wready != 0,
-            bvalid: o.bvalid != 0,
-            bresp: o.bresp,
-            arready: o.arready != 0,
-            rvalid: o.rvalid != 0,
-            rdata: o.rdata,
-            rresp: o.rresp,
+            awready: o.s_axil_awready != 0,
+            wready: o.s_axil_wready != 0,
+            bvalid: o.s_axil_bvalid != 0,
+            bresp: o.s_axil_bresp,
+            arready: o.s_axil_arready != 0,
+            rvalid: o.s_axil_rvalid != 0,
+            rdata: o.s_axil_rdata,
+            rresp: o.s_axil_rresp,
         }
     }
 }

@@ -109,7 +109,7 @@ impl Dut {
     pub fn reset(&mut self, cycles: u64) {
         let inp = FccIn {
             rst: 1,
-            m_tready: 1,
+            m_axis_tready: 1,
             ..Default::default()
         };
         for _ in 0..cycles {
@@ -131,14 +131,14 @@ impl Dut {
         let start = self.cycle;
         while i < n.min(beats.len()) {
             let inp = FccIn {
-                s_tdata: beats[i].0,
-                s_tvalid: 1,
-                s_tlast: u8::from(beats[i].1),
-                m_tready: 1,
+                s_axis_tdata: beats[i].0,
+                s_axis_tvalid: 1,
+                s_axis_tlast: u8::from(beats[i].1),
+                m_axis_tready: 1,
                 ..Default::default()
             };
             let out = self.step(&inp);
-            if out.s_tready != 0 {
+            if out.s_axis_tready != 0 {
                 i += 1;
             }
             if self.cycle - start > max_cycles {
@@ -192,16 +192,16 @@ impl Dut {
             let ready = drive.backpressure <= 0.0 || rng.gen::<f64>() >= drive.backpressure;
             let (tdata, tlast) = if offering { beats[idx] } else { (0, false) };
             let inp = FccIn {
-                s_tdata: tdata,
-                s_tvalid: u8::from(offering),
-                s_tlast: u8::from(tlast),
-                m_tready: u8::from(ready),
+                s_axis_tdata: tdata,
+                s_axis_tvalid: u8::from(offering),
+                s_axis_tlast: u8::from(tlast),
+                m_axis_tready: u8::from(ready),
                 ..Default::default()
             };
             let now = self.cycle;
             let out: FccOut = self.step(&inp);
             if offering {
-                if out.s_tready != 0 {
+                if out.s_axis_tready != 0 {
                     first_in.get_or_insert(now);
                     last_in = now;
                     idx += 1;
@@ -210,7 +210,7 @@ impl Dut {
                     run.input_stalls += 1;
                 }
             }
-            if out.m_tvalid != 0 && ready {
+            if out.m_axis_tvalid != 0 && ready {
                 if done || last_out.is_some() {
                     return Err(SimError::Protocol(format!(
                         "output beat after the frame's last beat (cycle {now})"
@@ -218,36 +218,36 @@ impl Dut {
                 }
                 run.beats += 1;
                 for s in 0..lpb {
-                    let keep = (out.m_tkeep >> (LABEL_SLOT_BYTES * s)) & SLOT_KEEP;
+                    let keep = (out.m_axis_tkeep >> (LABEL_SLOT_BYTES * s)) & SLOT_KEEP;
                     match keep {
-                        SLOT_KEEP => run.labels.push(label_of_beat(out.m_tdata, s)),
+                        SLOT_KEEP => run.labels.push(label_of_beat(out.m_axis_tdata, s)),
                         0 => {}
                         _ => {
                             return Err(SimError::Protocol(format!(
                                 "tkeep {:#04x} splits a {LABEL_SLOT_BITS}-bit slot (cycle {now})",
-                                out.m_tkeep
+                                out.m_axis_tkeep
                             )))
                         }
                     }
                 }
-                if out.m_tlast != 0 {
+                if out.m_axis_tlast != 0 {
                     last_out = Some(now);
                 }
             }
-            if out.frame_done != 0 {
+            if out.status_frame_done != 0 {
                 if last_out.is_none() {
                     return Err(SimError::Protocol(format!(
                         "frame_done before the last label beat (cycle {now})"
                     )));
                 }
                 done = true;
-                run.clusters = out.clusters;
-                run.provisional = out.provisional;
-                run.overflow = out.overflow != 0;
-                run.unlabelled = out.unlabelled;
-                run.frame_error = out.frame_error != 0;
-                run.joins = out.joins;
-                run.gear_stalls = out.gear_stalls;
+                run.clusters = out.status_clusters;
+                run.provisional = out.status_provisional;
+                run.overflow = out.status_overflow != 0;
+                run.unlabelled = out.status_unlabelled;
+                run.frame_error = out.status_frame_error != 0;
+                run.joins = out.status_joins;
+                run.gear_stalls = out.status_gear_stalls;
             }
         }
         let first = first_in.unwrap_or(start);
@@ -270,27 +270,27 @@ impl AxilPort for Dut {
     /// label stream ready.
     fn axil_cycle(&mut self, m: &AxilM) -> AxilS {
         let inp = FccIn {
-            m_tready: 1,
-            awaddr: m.awaddr,
-            awvalid: u8::from(m.awvalid),
-            wdata: m.wdata,
-            wvalid: u8::from(m.wvalid),
-            bready: u8::from(m.bready),
-            araddr: m.araddr,
-            arvalid: u8::from(m.arvalid),
-            rready: u8::from(m.rready),
+            m_axis_tready: 1,
+            s_axil_awaddr: m.awaddr,
+            s_axil_awvalid: u8::from(m.awvalid),
+            s_axil_wdata: m.wdata,
+            s_axil_wvalid: u8::from(m.wvalid),
+            s_axil_bready: u8::from(m.bready),
+            s_axil_araddr: m.araddr,
+            s_axil_arvalid: u8::from(m.arvalid),
+            s_axil_rready: u8::from(m.rready),
             ..Default::default()
         };
         let o = self.step(&inp);
         AxilS {
-            awready: o.awready != 0,
-            wready: o.wready != 0,
-            bvalid: o.bvalid != 0,
-            bresp: o.bresp,
-            arready: o.arready != 0,
-            rvalid: o.rvalid != 0,
-            rdata: o.rdata,
-            rresp: o.rresp,
+            awready: o.s_axil_awready != 0,
+            wready: o.s_axil_wready != 0,
+            bvalid: o.s_axil_bvalid != 0,
+            bresp: o.s_axil_bresp,
+            arready: o.s_axil_arready != 0,
+            rvalid: o.s_axil_rvalid != 0,
+            rdata: o.s_axil_rdata,
+            rresp: o.s_axil_rresp,
         }
     }
 }

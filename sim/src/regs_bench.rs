@@ -19,19 +19,19 @@ const LIB_NAME: &str = "libfcc_regs_sim.so";
 c_struct! {
     /// Inputs of one cycle (declared to the shim by the generated `fcc_ffi.h`).
     pub struct RegsIn {
-        pub awaddr: u32,
-        pub wdata: u32,
-        pub araddr: u32,
+        pub s_axil_awaddr: u32,
+        pub s_axil_wdata: u32,
+        pub s_axil_araddr: u32,
         pub unlabelled: u32,
         pub joins: u32,
         pub gear_stalls: u32,
         pub clusters: u16,
         pub provisional: u16,
-        pub awvalid: u8,
-        pub wvalid: u8,
-        pub bready: u8,
-        pub arvalid: u8,
-        pub rready: u8,
+        pub s_axil_awvalid: u8,
+        pub s_axil_wvalid: u8,
+        pub s_axil_bready: u8,
+        pub s_axil_arvalid: u8,
+        pub s_axil_rready: u8,
         pub rst: u8,
         /// The frame's last label beat is accepted.
         pub frame_sent: u8,
@@ -51,19 +51,19 @@ c_struct! {
         pub run_th_h_c: u64,
         /// Active -tV^2, 36-bit two's complement.
         pub run_th_v_c: u64,
-        pub rdata: u32,
+        pub s_axil_rdata: u32,
         pub st_unlabelled: u32,
         pub st_joins: u32,
         pub st_gear_stalls: u32,
         pub st_clusters: u16,
         pub st_provisional: u16,
-        pub awready: u8,
-        pub wready: u8,
-        pub bvalid: u8,
-        pub bresp: u8,
-        pub arready: u8,
-        pub rvalid: u8,
-        pub rresp: u8,
+        pub s_axil_awready: u8,
+        pub s_axil_wready: u8,
+        pub s_axil_bvalid: u8,
+        pub s_axil_bresp: u8,
+        pub s_axil_arready: u8,
+        pub s_axil_rvalid: u8,
+        pub s_axil_rresp: u8,
         pub irq: u8,
         pub core_rst: u8,
         pub frame_done: u8,
@@ -137,8 +137,8 @@ impl RegsDut {
     /// One cycle with the live inputs and the AXI4-Lite master idle.
     pub fn idle(&mut self) -> RegsOut {
         let inp = RegsIn {
-            bready: 1,
-            rready: 1,
+            s_axil_bready: 1,
+            s_axil_rready: 1,
             ..self.live
         };
         self.step(&inp)
@@ -159,26 +159,26 @@ impl RegsDut {
 impl AxilPort for RegsDut {
     fn axil_cycle(&mut self, m: &AxilM) -> AxilS {
         let inp = RegsIn {
-            awaddr: m.awaddr,
-            awvalid: u8::from(m.awvalid),
-            wdata: m.wdata,
-            wvalid: u8::from(m.wvalid),
-            bready: u8::from(m.bready),
-            araddr: m.araddr,
-            arvalid: u8::from(m.arvalid),
-            rready: u8::from(m.rready),
+            s_axil_awaddr: m.awaddr,
+            s_axil_awvalid: u8::from(m.awvalid),
+            s_axil_wdata: m.wdata,
+            s_axil_wvalid: u8::from(m.wvalid),
+            s_axil_bready: u8::from(m.bready),
+            s_axil_araddr: m.araddr,
+            s_axil_arvalid: u8::from(m.arvalid),
+            s_axil_rready: u8::from(m.rready),
             ..self.live
         };
         let o = self.step(&inp);
         AxilS {
-            awready: o.awready != 0,
-            wready: o.wready != 0,
-            bvalid: o.bvalid != 0,
-            bresp: o.bresp,
-            arready: o.arready != 0,
-            rvalid: o.rvalid != 0,
-            rdata: o.rdata,
-            rresp: o.rresp,
+            awready: o.s_axil_awready != 0,
+            wready: o.s_axil_wready != 0,
+            bvalid: o.s_axil_bvalid != 0,
+            bresp: o.s_axil_bresp,
+            arready: o.s_axil_arready != 0,
+            rvalid: o.s_axil_rvalid != 0,
+            rdata: o.s_axil_rdata,
+            rresp: o.s_axil_rresp,
         }
     }
 }

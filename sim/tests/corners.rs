@@ -73,14 +73,14 @@ fn readback_starts_against_a_sink_stalled_for_the_whole_frame() {
     let mut guard = 0u64;
     while i < beats.len() {
         let out = d.step(&FccIn {
-            s_tdata: beats[i].0,
-            s_tvalid: 1,
-            s_tlast: u8::from(beats[i].1),
-            m_tready: 0,
+            s_axis_tdata: beats[i].0,
+            s_axis_tvalid: 1,
+            s_axis_tlast: u8::from(beats[i].1),
+            m_axis_tready: 0,
             ..Default::default()
         });
-        assert_eq!(out.frame_done, 0, "frame_done with the sink stalled");
-        if out.s_tready != 0 {
+        assert_eq!(out.status_frame_done, 0, "frame_done with the sink stalled");
+        if out.s_axis_tready != 0 {
             i += 1;
         }
         guard += 1;
@@ -88,7 +88,7 @@ fn readback_starts_against_a_sink_stalled_for_the_whole_frame() {
     }
     for _ in 0..3000 {
         let out = d.step(&FccIn::default());
-        assert_eq!(out.frame_done, 0, "frame_done with the sink stalled");
+        assert_eq!(out.status_frame_done, 0, "frame_done with the sink stalled");
     }
     // The whole frame was accepted: the labels come out once the sink runs.
     let run = match d.run_frame_from(&f, &Drive::default(), beats.len()) {

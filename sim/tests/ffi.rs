@@ -40,14 +40,18 @@ fn generated_header_compiles_and_its_layout_asserts_hold() {
 #[test]
 fn field_whose_c_offset_differs_from_rust_fails_the_build() {
     // A C field widened behind the Rust struct's back shifts every later field.
-    let h = fcc_sim::ffi::header().replacen("    uint8_t s_tvalid;", "    uint16_t s_tvalid;", 1);
+    let h = fcc_sim::ffi::header().replacen(
+        "    uint8_t s_axis_tvalid;",
+        "    uint16_t s_axis_tvalid;",
+        1,
+    );
     assert!(
-        h.contains("uint16_t s_tvalid;"),
-        "FccIn.s_tvalid not found in the header"
+        h.contains("uint16_t s_axis_tvalid;"),
+        "FccIn.s_axis_tvalid not found in the header"
     );
     let log = compile(&h).expect_err("a drifted layout must not compile");
     assert!(
-        log.contains("FccIn.s_tlast: offset differs"),
+        log.contains("FccIn.s_axis_tlast: offset differs"),
         "unexpected message:\n{log}"
     );
 }

@@ -172,13 +172,13 @@ fn registers_of_the_core_read_back_and_irq_follows_frame_done() {
     let run = d.run_frame(&f, &Drive::default()).unwrap();
     compare(&p, &gold, &run, "irq frame").unwrap();
     let o = d.step(&fcc_sim::model::FccIn {
-        m_tready: 1,
+        m_axis_tready: 1,
         ..Default::default()
     });
     assert_eq!(o.irq, 1, "irq high after the frame while enabled");
     fcc_sim::check_status_registers(&mut d, &run, "irq frame").unwrap();
     let o = d.step(&fcc_sim::model::FccIn {
-        m_tready: 1,
+        m_axis_tready: 1,
         ..Default::default()
     });
     assert_eq!(o.irq, 0, "irq low once FRAME_DONE is cleared");
@@ -239,7 +239,7 @@ fn registers_of_the_core_read_back_and_irq_follows_frame_done() {
     let run = d.run_frame(&f, &Drive::default()).unwrap();
     compare(&p, &gold, &run, "frame after CONTROL.CLEAR").unwrap();
     d.step(&fcc_sim::model::FccIn {
-        m_tready: 1,
+        m_axis_tready: 1,
         ..Default::default()
     });
     assert_eq!(m.read(&mut d, offset::FRAME_COUNT).unwrap(), 1);
@@ -353,7 +353,7 @@ fn reset_in_every_state_of_the_top_state_machine() {
         }
         for _ in 0..ready {
             d.step(&FccIn {
-                m_tready: 1,
+                m_axis_tready: 1,
                 ..Default::default()
             });
         }

@@ -129,15 +129,15 @@ fn writes_with_aw_and_w_in_either_order_and_ready_stalls() {
 fn end_frame(d: &mut RegsDut, counters: RegsIn) {
     let out = RegsIn {
         out_next: 1,
-        bready: 1,
-        rready: 1,
+        s_axil_bready: 1,
+        s_axil_rready: 1,
         ..d.live
     };
     d.step(&out);
     let inp = RegsIn {
         frame_sent: 1,
-        bready: 1,
-        rready: 1,
+        s_axil_bready: 1,
+        s_axil_rready: 1,
         ..counters
     };
     d.step(&inp);
