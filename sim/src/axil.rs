@@ -32,6 +32,42 @@ pub struct AxilS {
     pub rresp: u8,
 }
 
+/// The FFI input struct `$ty` of a model with an `s_axil_*` slave port,
+/// driven by the master's `$m`, its other fields from `$rest`.
+macro_rules! axil_inputs {
+    ($ty:ident, $m:expr, $rest:expr) => {
+        $ty {
+            s_axil_awaddr: $m.awaddr,
+            s_axil_awvalid: u8::from($m.awvalid),
+            s_axil_wdata: $m.wdata,
+            s_axil_wvalid: u8::from($m.wvalid),
+            s_axil_bready: u8::from($m.bready),
+            s_axil_araddr: $m.araddr,
+            s_axil_arvalid: u8::from($m.arvalid),
+            s_axil_rready: u8::from($m.rready),
+            ..$rest
+        }
+    };
+}
+pub(crate) use axil_inputs;
+
+/// The slave's side of the `s_axil_*` port in the FFI output struct `$o`.
+macro_rules! axil_outputs {
+    ($o:expr) => {
+        $crate::axil::AxilS {
+            awready: $o.s_axil_awready != 0,
+            wready: $o.s_axil_wready != 0,
+            bvalid: $o.s_axil_bvalid != 0,
+            bresp: $o.s_axil_bresp,
+            arready: $o.s_axil_arready != 0,
+            rvalid: $o.s_axil_rvalid != 0,
+            rdata: $o.s_axil_rdata,
+            rresp: $o.s_axil_rresp,
+        }
+    };
+}
+pub(crate) use axil_outputs;
+
 /// A design with an AXI4-Lite slave port: one call is one clock cycle.
 pub trait AxilPort {
     fn axil_cycle(&mut self, m: &AxilM) -> AxilS;

@@ -274,21 +274,16 @@ impl System {
         }
         let s2mm_ready = self.dma.s2mm.active && !busy && !self.dma.stuck_s2mm;
         let (tdata, tlast) = beat.unwrap_or((0, false));
-        let out = self.dut.step(&FccIn {
+        let streams = FccIn {
             s_axis_tdata: tdata,
             s_axis_tvalid: u8::from(beat.is_some()),
             s_axis_tlast: u8::from(tlast),
             m_axis_tready: u8::from(s2mm_ready),
-            s_axil_awaddr: axil.awaddr,
-            s_axil_awvalid: u8::from(axil.awvalid),
-            s_axil_wdata: axil.wdata,
-            s_axil_wvalid: u8::from(axil.wvalid),
-            s_axil_bready: u8::from(axil.bready),
-            s_axil_araddr: axil.araddr,
-            s_axil_arvalid: u8::from(axil.arvalid),
-            s_axil_rready: u8::from(axil.rready),
             ..Default::default()
-        });
+        };
+        let out = self
+            .dut
+            .step(&crate::axil::axil_inputs!(FccIn, axil, streams));
         if beat.is_some() && out.s_axis_tready != 0 {
             let ch = &mut self.dma.mm2s;
             ch.beats += 1;
@@ -342,16 +337,7 @@ impl System {
 impl AxilPort for System {
     fn axil_cycle(&mut self, m: &AxilM) -> AxilS {
         let o = self.cycle(m);
-        AxilS {
-            awready: o.s_axil_awready != 0,
-            wready: o.s_axil_wready != 0,
-            bvalid: o.s_axil_bvalid != 0,
-            bresp: o.s_axil_bresp,
-            arready: o.s_axil_arready != 0,
-            rvalid: o.s_axil_rvalid != 0,
-            rdata: o.s_axil_rdata,
-            rresp: o.s_axil_rresp,
-        }
+        crate::axil::axil_outputs!(o)
     }
 }
 

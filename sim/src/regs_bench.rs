@@ -158,27 +158,7 @@ impl RegsDut {
 
 impl AxilPort for RegsDut {
     fn axil_cycle(&mut self, m: &AxilM) -> AxilS {
-        let inp = RegsIn {
-            s_axil_awaddr: m.awaddr,
-            s_axil_awvalid: u8::from(m.awvalid),
-            s_axil_wdata: m.wdata,
-            s_axil_wvalid: u8::from(m.wvalid),
-            s_axil_bready: u8::from(m.bready),
-            s_axil_araddr: m.araddr,
-            s_axil_arvalid: u8::from(m.arvalid),
-            s_axil_rready: u8::from(m.rready),
-            ..self.live
-        };
-        let o = self.step(&inp);
-        AxilS {
-            awready: o.s_axil_awready != 0,
-            wready: o.s_axil_wready != 0,
-            bvalid: o.s_axil_bvalid != 0,
-            bresp: o.s_axil_bresp,
-            arready: o.s_axil_arready != 0,
-            rvalid: o.s_axil_rvalid != 0,
-            rdata: o.s_axil_rdata,
-            rresp: o.s_axil_rresp,
-        }
+        let o = self.step(&crate::axil::axil_inputs!(RegsIn, m, self.live));
+        crate::axil::axil_outputs!(o)
     }
 }
