@@ -39,6 +39,52 @@ pub(crate) struct BlockBuild<'a> {
     pub symbol: &'a str,
 }
 
+/// A block bench's C++ shim: its file name, its text and the prefix of its
+/// three C functions.
+pub(crate) struct BenchShim {
+    pub file: &'static str,
+    pub text: &'static str,
+    pub symbol: &'static str,
+}
+
+/// Load the model of the bench block `block` (its Verilog and waivers from
+/// `fcc_rtl`'s table) for the build `p` behind `shim`, with `extra` files
+/// the shim includes; built once and cached on disk.
+pub(crate) fn load_bench<S: Copy>(
+    cache: &'static BlockCache<S>,
+    block: fcc_rtl::BenchBlock,
+    p: &fcc_params::FccParams,
+    shim: &BenchShim,
+    extra: &[(&str, &str)],
+) -> Result<Arc<BlockModel<S>>, SimError> {
+    let name = block.name();
+    let (v, vlt) = (format!("{name}.v"), format!("{name}.vlt"));
+    let (verilog, waivers) = (block.generate(p)?, block.waivers(p));
+    let mut files = vec![
+        (v.as_str(), verilog.as_str()),
+        (vlt.as_str(), waivers.as_str()),
+    ];
+    files.extend_from_slice(extra);
+    let lib = format!("lib{}_sim.so", shim.symbol);
+    load_block(
+        cache,
+        &BlockBuild {
+            key: name,
+            files: &files,
+            shim: Shim {
+                name: shim.file,
+                text: shim.text,
+                top: &block.module(p),
+                prefix: &format!("V{name}"),
+                sources: &[vlt.as_str(), v.as_str()],
+                lib: &lib,
+                coverage: false,
+            },
+            symbol: shim.symbol,
+        },
+    )
+}
+
 /// Load the model `b` describes, building it (once, cached on disk) if
 /// needed.
 pub(crate) fn load_block<S: Copy>(

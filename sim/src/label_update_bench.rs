@@ -7,13 +7,15 @@ use std::sync::{Arc, OnceLock};
 
 use fcc_params::FccParams;
 
-use crate::block::{load_block, BlockBuild, BlockCache, BlockInstance, BlockModel};
+use crate::block::{load_bench, BenchShim, BlockCache, BlockInstance, BlockModel};
 use crate::ffi::c_struct;
-use crate::model::Shim;
 use crate::SimError;
 
-const SHIM: &str = include_str!("../csrc/fcc_label_update_shim.cpp");
-const LIB_NAME: &str = "libfcc_label_update_sim.so";
+const SHIM: BenchShim = BenchShim {
+    file: "fcc_label_update_shim.cpp",
+    text: include_str!("../csrc/fcc_label_update_shim.cpp"),
+    symbol: "fcc_label_update",
+};
 
 c_struct! {
     /// Inputs of one cycle (declared to the shim by the generated `fcc_ffi.h`).
@@ -54,28 +56,7 @@ pub type LuModel = BlockModel<StepFn>;
 /// Load the label-updater model of the build `p`, building it if needed.
 pub fn load_label_update(p: &FccParams) -> Result<Arc<LuModel>, SimError> {
     static MODELS: BlockCache<StepFn> = OnceLock::new();
-    let verilog = fcc_rtl::generate_label_update(p)?;
-    let vlt = fcc_rtl::lint::label_update_waivers(p);
-    load_block(
-        &MODELS,
-        &BlockBuild {
-            key: "label-update",
-            files: &[
-                ("fcc_label_update.v", &verilog),
-                ("fcc_label_update.vlt", &vlt),
-            ],
-            shim: Shim {
-                name: "fcc_label_update_shim.cpp",
-                text: SHIM,
-                top: &fcc_rtl::label_update_module(p),
-                prefix: "Vfcc_label_update",
-                sources: &["fcc_label_update.vlt", "fcc_label_update.v"],
-                lib: LIB_NAME,
-                coverage: false,
-            },
-            symbol: "fcc_label_update",
-        },
-    )
+    load_bench(&MODELS, fcc_rtl::BenchBlock::LabelUpdate, p, &SHIM, &[])
 }
 
 /// One simulated label updater.

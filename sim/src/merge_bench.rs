@@ -11,13 +11,15 @@ use fcc_params::FccParams;
 use rand::rngs::StdRng;
 use rand::Rng;
 
-use crate::block::{load_block, BlockBuild, BlockCache, BlockInstance, BlockModel};
+use crate::block::{load_bench, BenchShim, BlockCache, BlockInstance, BlockModel};
 use crate::ffi::c_struct;
-use crate::model::Shim;
 use crate::SimError;
 
-const SHIM: &str = include_str!("../csrc/fcc_merge_shim.cpp");
-const LIB_NAME: &str = "libfcc_merge_sim.so";
+const SHIM: BenchShim = BenchShim {
+    file: "fcc_merge_shim.cpp",
+    text: include_str!("../csrc/fcc_merge_shim.cpp"),
+    symbol: "fcc_merge",
+};
 
 c_struct! {
     /// Inputs of one cycle (declared to the shim by the generated `fcc_ffi.h`).
@@ -53,28 +55,7 @@ pub type MergeModel = BlockModel<StepFn>;
 /// Load the merge-table model of the build `p`, building it if needed.
 pub fn load_merge_table(p: &FccParams) -> Result<Arc<MergeModel>, SimError> {
     static MODELS: BlockCache<StepFn> = OnceLock::new();
-    let verilog = fcc_rtl::generate_merge_table(p)?;
-    let vlt = fcc_rtl::lint::merge_table_waivers(p);
-    load_block(
-        &MODELS,
-        &BlockBuild {
-            key: "merge",
-            files: &[
-                ("fcc_merge_table.v", &verilog),
-                ("fcc_merge_table.vlt", &vlt),
-            ],
-            shim: Shim {
-                name: "fcc_merge_shim.cpp",
-                text: SHIM,
-                top: &fcc_rtl::merge_table_module(p),
-                prefix: "Vfcc_merge_table",
-                sources: &["fcc_merge_table.vlt", "fcc_merge_table.v"],
-                lib: LIB_NAME,
-                coverage: false,
-            },
-            symbol: "fcc_merge",
-        },
-    )
+    load_bench(&MODELS, fcc_rtl::BenchBlock::MergeTable, p, &SHIM, &[])
 }
 
 /// One frame for the merge table: labels `1 ..= provisional` and the joins

@@ -8,13 +8,15 @@ use std::sync::{Arc, OnceLock};
 use fcc_params::FccParams;
 
 use crate::axil::{AxilM, AxilPort, AxilS};
-use crate::block::{load_block, BlockBuild, BlockCache, BlockInstance, BlockModel};
+use crate::block::{load_bench, BenchShim, BlockCache, BlockInstance, BlockModel};
 use crate::ffi::c_struct;
-use crate::model::Shim;
 use crate::SimError;
 
-const SHIM: &str = include_str!("../csrc/fcc_regs_shim.cpp");
-const LIB_NAME: &str = "libfcc_regs_sim.so";
+const SHIM: BenchShim = BenchShim {
+    file: "fcc_regs_shim.cpp",
+    text: include_str!("../csrc/fcc_regs_shim.cpp"),
+    symbol: "fcc_regs",
+};
 
 c_struct! {
     /// Inputs of one cycle (declared to the shim by the generated `fcc_ffi.h`).
@@ -84,25 +86,7 @@ pub type RegsModel = BlockModel<StepFn>;
 /// Load the register-file model of the build `p`, building it if needed.
 pub fn load_regs(p: &FccParams) -> Result<Arc<RegsModel>, SimError> {
     static MODELS: BlockCache<StepFn> = OnceLock::new();
-    let verilog = fcc_rtl::generate_regs(p)?;
-    let vlt = fcc_rtl::lint::regs_waivers(p);
-    load_block(
-        &MODELS,
-        &BlockBuild {
-            key: "regs",
-            files: &[("fcc_regs.v", &verilog), ("fcc_regs.vlt", &vlt)],
-            shim: Shim {
-                name: "fcc_regs_shim.cpp",
-                text: SHIM,
-                top: &fcc_rtl::regs_module(p),
-                prefix: "Vfcc_regs",
-                sources: &["fcc_regs.vlt", "fcc_regs.v"],
-                lib: LIB_NAME,
-                coverage: false,
-            },
-            symbol: "fcc_regs",
-        },
-    )
+    load_bench(&MODELS, fcc_rtl::BenchBlock::Regs, p, &SHIM, &[])
 }
 
 /// One simulated register file.

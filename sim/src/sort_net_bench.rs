@@ -13,13 +13,15 @@ use std::sync::{Arc, OnceLock};
 
 use fcc_params::FccParams;
 
-use crate::block::{load_block, BlockBuild, BlockCache, BlockInstance, BlockModel};
+use crate::block::{load_bench, BenchShim, BlockCache, BlockInstance, BlockModel};
 use crate::ffi::c_struct;
-use crate::model::Shim;
 use crate::SimError;
 
-const SHIM: &str = include_str!("../csrc/fcc_sort_net_shim.cpp");
-const LIB_NAME: &str = "libfcc_sort_net_sim.so";
+const SHIM: BenchShim = BenchShim {
+    file: "fcc_sort_net_shim.cpp",
+    text: include_str!("../csrc/fcc_sort_net_shim.cpp"),
+    symbol: "fcc_sort_net",
+};
 
 c_struct! {
     /// Inputs of one cycle besides the per-position hits and representatives.
@@ -106,29 +108,13 @@ fn ports_header(n: usize) -> String {
 /// Load the sort-network model of the build `p`, building it if needed.
 pub fn load_sort_net(p: &FccParams) -> Result<Arc<SortNetModel>, SimError> {
     static MODELS: BlockCache<StepFn> = OnceLock::new();
-    let verilog = fcc_rtl::generate_sort_net(p)?;
-    let vlt = fcc_rtl::lint::sort_net_waivers(p);
     let ports = ports_header(p.window_positions());
-    load_block(
+    load_bench(
         &MODELS,
-        &BlockBuild {
-            key: "sort_net",
-            files: &[
-                ("fcc_sort_net.v", &verilog),
-                ("fcc_sort_net.vlt", &vlt),
-                ("fcc_sort_net_ports.h", &ports),
-            ],
-            shim: Shim {
-                name: "fcc_sort_net_shim.cpp",
-                text: SHIM,
-                top: &fcc_rtl::sort_net_module(p),
-                prefix: "Vfcc_sort_net",
-                sources: &["fcc_sort_net.vlt", "fcc_sort_net.v"],
-                lib: LIB_NAME,
-                coverage: false,
-            },
-            symbol: "fcc_sort_net",
-        },
+        fcc_rtl::BenchBlock::SortNet,
+        p,
+        &SHIM,
+        &[("fcc_sort_net_ports.h", &ports)],
     )
 }
 

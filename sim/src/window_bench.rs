@@ -8,13 +8,15 @@ use std::sync::{Arc, OnceLock};
 
 use fcc_params::FccParams;
 
-use crate::block::{load_block, BlockBuild, BlockCache, BlockInstance, BlockModel};
+use crate::block::{load_bench, BenchShim, BlockCache, BlockInstance, BlockModel};
 use crate::ffi::c_struct;
-use crate::model::Shim;
 use crate::SimError;
 
-const SHIM: &str = include_str!("../csrc/fcc_window_shim.cpp");
-const LIB_NAME: &str = "libfcc_window_sim.so";
+const SHIM: BenchShim = BenchShim {
+    file: "fcc_window_shim.cpp",
+    text: include_str!("../csrc/fcc_window_shim.cpp"),
+    symbol: "fcc_window",
+};
 
 c_struct! {
     /// Inputs of one cycle: the W0 pixel and the run size.
@@ -50,24 +52,7 @@ pub type WindowModel = BlockModel<StepFn>;
 /// Load the window model of the build `p`, building it if needed.
 pub fn load_window(p: &FccParams) -> Result<Arc<WindowModel>, SimError> {
     static MODELS: BlockCache<StepFn> = OnceLock::new();
-    let verilog = fcc_rtl::generate_window(p)?;
-    load_block(
-        &MODELS,
-        &BlockBuild {
-            key: "window",
-            files: &[("fcc_window_probe.v", &verilog)],
-            shim: Shim {
-                name: "fcc_window_shim.cpp",
-                text: SHIM,
-                top: &fcc_rtl::window_module(p),
-                prefix: "Vfcc_window_probe",
-                sources: &["fcc_window_probe.v"],
-                lib: LIB_NAME,
-                coverage: false,
-            },
-            symbol: "fcc_window",
-        },
-    )
+    load_bench(&MODELS, fcc_rtl::BenchBlock::Window, p, &SHIM, &[])
 }
 
 /// One window entry as the probe reads it.

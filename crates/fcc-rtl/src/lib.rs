@@ -72,6 +72,7 @@
 //! once. Blocks name these loop variables after the field they bind (`kk`
 //! for `_k`, `dd` for `_dp`, `l` for `_l`).
 
+pub mod bench_blocks;
 pub mod example;
 mod fcc_any_or;
 mod fcc_beat_assembly;
@@ -129,6 +130,7 @@ use fcc_params::{FccParams, ParamError};
 use rust_hdl::prelude::*;
 use thiserror::Error;
 
+pub use bench_blocks::BenchBlock;
 pub use fcc_fanout_reg::MAX_FANOUT;
 pub use fcc_join_queue::JQ_HIGH_LEVEL;
 pub use fcc_regs::FccRegs;

@@ -154,6 +154,23 @@ pub fn merge_table_waivers(p: &FccParams) -> String {
     s
 }
 
+/// The waivers of `fcc_window_probe.v`, the window and its line buffers
+/// generated alone for their bench.
+pub fn window_waivers(p: &FccParams) -> String {
+    let mut s = file_header(p, "//");
+    s.push_str("`verilator_config\n");
+    s.push_str(
+        "// fcc_window_probe.v holds the window, its line buffers and the probe.\n\
+         lint_off -rule DECLFILENAME -file \"*fcc_window_probe.v\"\n\
+         // The probe brings out the centre's x, column and valid bit, and each\n\
+         // entry's point and ok bit (what the bench compares); the rest of the\n\
+         // centre and the entries' representatives feed the core's later stages.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*fcc_window_probe.v\" -match \"*'window$centre'*\"\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*fcc_window_probe.v\" -match \"*'window$ent_rep$*\"\n",
+    );
+    s
+}
+
 /// The waivers of `fcc_sort_net.v`, the sort network generated alone for
 /// its bench: the core's waivers of the same sub-blocks (see [`waivers`]).
 pub fn sort_net_waivers(p: &FccParams) -> String {

@@ -121,23 +121,32 @@ fn bad_parameters_are_errors_not_panics() {
     assert!(generate(&p).unwrap_err().to_string().contains("cols"));
 }
 
+/// Every block of the bench table, generated alone, at the smallest and
+/// largest K, lints clean with its own waivers.
 #[test]
-fn register_file_alone_lints_clean() {
+fn every_bench_block_alone_lints_clean() {
     if !verilator_present() {
         eprintln!("verilator not installed: lint skipped");
         return;
     }
-    let p = FccParams::default();
-    let dir = scratch("regs");
-    std::fs::create_dir_all(&dir).unwrap();
-    let v = dir.join("fcc_regs.v");
-    let vlt = dir.join("fcc_regs.vlt");
-    std::fs::write(&v, fcc_rtl::generate_regs(&p).unwrap()).unwrap();
-    std::fs::write(&vlt, lint::regs_waivers(&p)).unwrap();
-    if let Err(e) = lint::lint_module(&v, &vlt, &fcc_rtl::regs_module(&p)) {
-        panic!("{e}");
+    for block in fcc_rtl::BenchBlock::ALL {
+        for fsize in [3, 11] {
+            let p = FccParams {
+                fsize,
+                ..Default::default()
+            };
+            let dir = scratch(&format!("{}{fsize}", block.name()));
+            std::fs::create_dir_all(&dir).unwrap();
+            let v = dir.join(format!("{}.v", block.name()));
+            let vlt = dir.join(format!("{}.vlt", block.name()));
+            std::fs::write(&v, block.generate(&p).unwrap()).unwrap();
+            std::fs::write(&vlt, block.waivers(&p)).unwrap();
+            if let Err(e) = lint::lint_module(&v, &vlt, &block.module(&p)) {
+                panic!("{block:?} at K = {fsize}: {e}");
+            }
+            let _ = std::fs::remove_dir_all(&dir);
+        }
     }
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
@@ -159,30 +168,6 @@ fn label_updater_alone_lints_clean_for_every_labels_per_beat() {
         std::fs::write(&vlt, lint::label_update_waivers(&p)).unwrap();
         if let Err(e) = lint::lint_module(&v, &vlt, &fcc_rtl::label_update_module(&p)) {
             panic!("labels per beat {lpb}: {e}");
-        }
-        let _ = std::fs::remove_dir_all(&dir);
-    }
-}
-
-#[test]
-fn sort_network_alone_lints_clean_for_every_k() {
-    if !verilator_present() {
-        eprintln!("verilator not installed: lint skipped");
-        return;
-    }
-    for fsize in [3, 11] {
-        let p = FccParams {
-            fsize,
-            ..Default::default()
-        };
-        let dir = scratch(&format!("sort_net{fsize}"));
-        std::fs::create_dir_all(&dir).unwrap();
-        let v = dir.join("fcc_sort_net.v");
-        let vlt = dir.join("fcc_sort_net.vlt");
-        std::fs::write(&v, fcc_rtl::generate_sort_net(&p).unwrap()).unwrap();
-        std::fs::write(&vlt, lint::sort_net_waivers(&p)).unwrap();
-        if let Err(e) = lint::lint_module(&v, &vlt, &fcc_rtl::sort_net_module(&p)) {
-            panic!("K = {fsize}: {e}");
         }
         let _ = std::fs::remove_dir_all(&dir);
     }
