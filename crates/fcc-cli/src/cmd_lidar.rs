@@ -134,7 +134,7 @@ impl GroundArgs {
         })
     }
 
-    fn params(&self, range_image: bool) -> anyhow::Result<GroundParams> {
+    pub(crate) fn params(&self, range_image: bool) -> anyhow::Result<GroundParams> {
         let p = GroundParams {
             method: self.method(range_image),
             max_slope_deg: self.ground_max_slope,
@@ -628,33 +628,7 @@ fn process(
         fcc_npy::write_labels(&path, item.image.rows, item.image.cols, &out.labels)?;
         wrote.push(path);
     }
-    // Per-point labels: every input point of a cloud, valid pixels otherwise.
-    let (points, labels, ground, intensity): PerPoint = match &item.projection {
-        Some((proj, pts)) => {
-            let labels = proj.labels_to_points(&out.labels, BackProjection::default())?;
-            let g: Vec<u32> = out.ground.mask.iter().map(|&g| u32::from(g)).collect();
-            let ground = proj.labels_to_points(&g, BackProjection::default())?;
-            (
-                pts.clone(),
-                labels,
-                ground.iter().map(|&g| g == 1).collect(),
-                item.intensity.clone(),
-            )
-        }
-        None => {
-            let idx: Vec<usize> = (0..item.image.pixels())
-                .filter(|&i| item.image.point(i).is_some())
-                .collect();
-            (
-                idx.iter().filter_map(|&i| item.image.point(i)).collect(),
-                idx.iter().map(|&i| out.labels[i]).collect(),
-                idx.iter().map(|&i| out.ground.mask[i]).collect(),
-                item.intensity
-                    .as_ref()
-                    .map(|v| idx.iter().map(|&i| v[i]).collect()),
-            )
-        }
-    };
+    let (points, labels, ground, intensity) = per_point(item, &out)?;
     // For point clouds, also score every input point, not only the pixel
     // winners (`fcc eval` scores pixels, as `quality` does).
     let quality_per_point = match &item.truth_points {
@@ -731,36 +705,105 @@ fn process(
         quality_per_point,
     };
     let rows = if args.clusters.is_some() || args.stream {
-        let mut rows = cluster_rows(&item.name, &points, &labels, &out.labels, item.image.cols)?;
-        // The record of each cluster: the stream's, in closing order, or
-        // computed from the frame's pixels.
-        let records: Vec<(fcc_golden::Record, Option<fcc_golden::OrientedBox>)> = match streamed {
-            Some((records, _)) => records
-                .into_iter()
-                .map(|c| (c.record, c.oriented_box))
-                .collect(),
-            None => {
-                let kept = item.image.without(&out.ground.mask).to_frame();
-                frame_cluster_records(&out.params, &kept, &out.labels, out.clusters)
-            }
-        };
-        let mut by_id: Vec<Option<ClusterRow>> = vec![None; records.len() + 1];
-        for row in rows.drain(..) {
-            if let Some(slot) = by_id.get_mut(row.cluster as usize) {
-                *slot = Some(row);
-            }
-        }
-        for (r, obb) in &records {
-            if let Some(mut row) = by_id[r.id as usize].take() {
-                row.set_record(r, obb.as_ref());
-                rows.push(row);
-            }
-        }
-        rows
+        table_rows(item, &out, &points, &labels, streamed.map(|(r, _)| r))?
     } else {
         Vec::new()
     };
     Ok((serde_json::to_string(&stats)?, rows))
+}
+
+/// Per point of the outputs: every input point of a cloud, valid pixels
+/// otherwise.
+fn per_point(item: &Item, out: &PipelineResult) -> anyhow::Result<PerPoint> {
+    Ok(match &item.projection {
+        Some((proj, pts)) => {
+            let labels = proj.labels_to_points(&out.labels, BackProjection::default())?;
+            let g: Vec<u32> = out.ground.mask.iter().map(|&g| u32::from(g)).collect();
+            let ground = proj.labels_to_points(&g, BackProjection::default())?;
+            (
+                pts.clone(),
+                labels,
+                ground.iter().map(|&g| g == 1).collect(),
+                item.intensity.clone(),
+            )
+        }
+        None => {
+            let idx: Vec<usize> = (0..item.image.pixels())
+                .filter(|&i| item.image.point(i).is_some())
+                .collect();
+            (
+                idx.iter().filter_map(|&i| item.image.point(i)).collect(),
+                idx.iter().map(|&i| out.labels[i]).collect(),
+                idx.iter().map(|&i| out.ground.mask[i]).collect(),
+                item.intensity
+                    .as_ref()
+                    .map(|v| idx.iter().map(|&i| v[i]).collect()),
+            )
+        }
+    })
+}
+
+/// The rows of the cluster table and of `--stream`'s JSON lines for one
+/// result: the stream's records in closing order (`streamed`), or frame
+/// mode's computed from the frame's pixels.
+fn table_rows(
+    item: &Item,
+    out: &PipelineResult,
+    points: &[[f32; 3]],
+    labels: &[u32],
+    streamed: Option<Vec<ClosedRecord>>,
+) -> anyhow::Result<Vec<ClusterRow>> {
+    let mut rows = cluster_rows(&item.name, points, labels, &out.labels, item.image.cols)?;
+    // The record of each cluster: the stream's, in closing order, or
+    // computed from the frame's pixels.
+    let records: Vec<(fcc_golden::Record, Option<fcc_golden::OrientedBox>)> = match streamed {
+        Some(records) => records
+            .into_iter()
+            .map(|c| (c.record, c.oriented_box))
+            .collect(),
+        None => {
+            let kept = item.image.without(&out.ground.mask).to_frame();
+            frame_cluster_records(&out.params, &kept, &out.labels, out.clusters)
+        }
+    };
+    let mut by_id: Vec<Option<ClusterRow>> = vec![None; records.len() + 1];
+    for row in rows.drain(..) {
+        if let Some(slot) = by_id.get_mut(row.cluster as usize) {
+            *slot = Some(row);
+        }
+    }
+    for (r, obb) in &records {
+        if let Some(mut row) = by_id[r.id as usize].take() {
+            row.set_record(r, obb.as_ref());
+            rows.push(row);
+        }
+    }
+    Ok(rows)
+}
+
+/// One frame through the golden stream exactly as `fcc cluster --stream`
+/// takes it: the result and the rows it prints, in closing order.
+pub(crate) fn stream_rows(
+    item: &Item,
+    cfg: &PipelineConfig,
+) -> anyhow::Result<(PipelineResult, Vec<ClusterRow>)> {
+    let s = stream_image(&item.image, cfg, |_| {}).with_context(|| item.name.clone())?;
+    let (points, labels, _, _) = per_point(item, &s.result)?;
+    let rows = table_rows(item, &s.result, &points, &labels, Some(s.records))?;
+    Ok((s.result, rows))
+}
+
+/// `--stream`'s output: one JSON line per record, flushed.
+pub(crate) fn write_json_lines(
+    out: &mut impl std::io::Write,
+    rows: &[ClusterRow],
+) -> anyhow::Result<()> {
+    for row in rows {
+        serde_json::to_writer(&mut *out, row)?;
+        out.write_all(b"\n")?;
+    }
+    out.flush()?;
+    Ok(())
 }
 
 fn progress_bar(len: Option<u64>, what: &str) -> ProgressBar {
@@ -879,9 +922,7 @@ pub fn run_cluster_on(args: &ClusterLidarArgs, hw: Option<&dyn Hardware>) -> any
     if let Some(p) = &args.clusters {
         write_cluster_table(p, &table)?;
     } else if args.stream {
-        for row in &table {
-            println!("{}", serde_json::to_string(row)?);
-        }
+        write_json_lines(&mut std::io::stdout().lock(), &table)?;
     }
     if args.stats {
         for l in &lines {

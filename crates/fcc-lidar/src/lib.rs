@@ -50,6 +50,7 @@ pub mod eval;
 pub mod ground;
 pub mod image;
 pub mod labels;
+pub mod live;
 pub mod ouster;
 pub mod pcap;
 pub mod picture;

@@ -622,49 +622,33 @@ struct Assembly {
     stats: FrameStats,
 }
 
-/// Decodes the lidar packets of a capture into frames, one at a time.
-pub struct OusterReader<R: Read> {
+/// The packet-level decoder: lidar packets in, whatever their transport (a
+/// capture file or a socket), frames out. It holds one frame being received
+/// and nothing else, so its memory stays bounded however long it runs.
+pub struct OusterDecoder {
     meta: OusterMetadata,
     opts: DecodeOptions,
     lut: Lut,
-    pcap: PcapReader<R>,
     current: Option<Assembly>,
     stats: CaptureStats,
-    finished: bool,
 }
 
-impl OusterReader<BufReader<File>> {
-    /// Open a capture with its metadata.
-    pub fn open(pcap: &Path, meta: &OusterMetadata, opts: DecodeOptions) -> Result<Self> {
-        OusterReader::new(PcapReader::open(pcap)?, meta, opts)
-    }
-}
-
-impl<R: Read> OusterReader<R> {
-    /// Decode the datagrams of an open capture.
-    pub fn new(pcap: PcapReader<R>, meta: &OusterMetadata, opts: DecodeOptions) -> Result<Self> {
+impl OusterDecoder {
+    /// A decoder for the packets of the sensor `meta` describes.
+    pub fn new(meta: &OusterMetadata, opts: DecodeOptions) -> Result<Self> {
         if !(opts.min_range_m.is_finite() && opts.min_range_m >= 0.0) {
             return Err(LidarError::Config(format!(
                 "minimum range {} m must be a non-negative number",
                 opts.min_range_m
             )));
         }
-        Ok(OusterReader {
+        Ok(OusterDecoder {
             lut: Lut::new(meta, opts.frame),
             meta: meta.clone(),
             opts,
-            pcap,
             current: None,
             stats: CaptureStats::default(),
-            finished: false,
         })
-    }
-
-    /// What was met so far.
-    pub fn stats(&self) -> CaptureStats {
-        let mut s = self.stats.clone();
-        s.pcap = self.pcap.stats().clone();
-        s
     }
 
     /// The metadata in use.
@@ -672,44 +656,45 @@ impl<R: Read> OusterReader<R> {
         &self.meta
     }
 
-    /// The next frame, `Ok(None)` at the end of the capture.
-    pub fn next_frame(&mut self) -> Result<Option<OusterFrame>> {
-        while !self.finished {
-            let Some(d) = self.pcap.next_datagram()? else {
-                self.finished = true;
-                if let Some(a) = self.current.take() {
-                    if let Some(f) = self.finish(a) {
-                        return Ok(Some(f));
-                    }
-                }
-                break;
-            };
-            let size = self.meta.packet_size();
-            let on_lidar_port = self.meta.udp_port_lidar == Some(d.dst_port);
-            let on_imu_port = self.meta.udp_port_imu == Some(d.dst_port);
-            if d.payload.len() != size {
-                if on_lidar_port {
-                    self.stats.malformed_packets += 1;
-                } else if on_imu_port || d.payload.len() == LEGACY_IMU_PACKET {
-                    self.stats.imu_packets += 1;
-                } else {
-                    *self
-                        .stats
-                        .other_datagrams
-                        .entry(d.payload.len())
-                        .or_insert(0) += 1;
-                }
-                continue;
-            }
-            if on_imu_port {
+    /// What was met so far (`pcap` is left to the transport).
+    pub fn stats(&self) -> &CaptureStats {
+        &self.stats
+    }
+
+    /// The columns received so far of the frame being assembled.
+    pub fn pending_columns(&self) -> usize {
+        self.current.as_ref().map_or(0, |a| a.stats.columns)
+    }
+
+    /// One UDP payload sent to `dst_port`: returns a frame it completed, if
+    /// any. Datagrams that are not lidar packets (IMU packets, other sizes)
+    /// are counted and skipped; a bad lidar packet is counted and skipped
+    /// whole.
+    pub fn push(&mut self, dst_port: u16, payload: &[u8]) -> Option<OusterFrame> {
+        let size = self.meta.packet_size();
+        let on_lidar_port = self.meta.udp_port_lidar == Some(dst_port);
+        let on_imu_port = self.meta.udp_port_imu == Some(dst_port);
+        if payload.len() != size {
+            if on_lidar_port {
+                self.stats.malformed_packets += 1;
+            } else if on_imu_port || payload.len() == LEGACY_IMU_PACKET {
                 self.stats.imu_packets += 1;
-                continue;
+            } else {
+                *self.stats.other_datagrams.entry(payload.len()).or_insert(0) += 1;
             }
-            if let Some(f) = self.packet(&d.payload) {
-                return Ok(Some(f));
-            }
+            return None;
         }
-        Ok(None)
+        if on_imu_port {
+            self.stats.imu_packets += 1;
+            return None;
+        }
+        self.packet(payload)
+    }
+
+    /// The end of the input: the frame being received, if it makes one.
+    pub fn flush(&mut self) -> Option<OusterFrame> {
+        let a = self.current.take()?;
+        self.close(a)
     }
 
     /// Decode one lidar packet; returns a frame it completed, if any.
@@ -765,7 +750,7 @@ impl<R: Read> OusterReader<R> {
             if self.current.as_ref().is_some_and(|a| a.frame_id != fid) {
                 if let Some(a) = self.current.take() {
                     // At most one frame ends per packet in practice; keep the first.
-                    let f = self.finish(a);
+                    let f = self.close(a);
                     if done.is_none() {
                         done = f;
                     }
@@ -804,7 +789,7 @@ impl<R: Read> OusterReader<R> {
     }
 
     /// Turn a finished assembly into a frame, or count it as incomplete.
-    fn finish(&mut self, a: Assembly) -> Option<OusterFrame> {
+    fn close(&mut self, a: Assembly) -> Option<OusterFrame> {
         let m = &self.meta;
         let (h, w) = (m.pixels_per_column, m.columns_per_frame);
         let complete = (0..w).filter(|&v| m.in_window(v)).all(|v| a.received[v]);
@@ -839,6 +824,58 @@ impl<R: Read> OusterReader<R> {
             reflectivity,
             stats,
         })
+    }
+}
+
+/// Decodes the lidar packets of a capture into frames, one at a time: the
+/// capture's datagrams through an [`OusterDecoder`].
+pub struct OusterReader<R: Read> {
+    decoder: OusterDecoder,
+    pcap: PcapReader<R>,
+    finished: bool,
+}
+
+impl OusterReader<BufReader<File>> {
+    /// Open a capture with its metadata.
+    pub fn open(pcap: &Path, meta: &OusterMetadata, opts: DecodeOptions) -> Result<Self> {
+        OusterReader::new(PcapReader::open(pcap)?, meta, opts)
+    }
+}
+
+impl<R: Read> OusterReader<R> {
+    /// Decode the datagrams of an open capture.
+    pub fn new(pcap: PcapReader<R>, meta: &OusterMetadata, opts: DecodeOptions) -> Result<Self> {
+        Ok(OusterReader {
+            decoder: OusterDecoder::new(meta, opts)?,
+            pcap,
+            finished: false,
+        })
+    }
+
+    /// What was met so far.
+    pub fn stats(&self) -> CaptureStats {
+        let mut s = self.decoder.stats().clone();
+        s.pcap = self.pcap.stats().clone();
+        s
+    }
+
+    /// The metadata in use.
+    pub fn metadata(&self) -> &OusterMetadata {
+        self.decoder.metadata()
+    }
+
+    /// The next frame, `Ok(None)` at the end of the capture.
+    pub fn next_frame(&mut self) -> Result<Option<OusterFrame>> {
+        while !self.finished {
+            let Some(d) = self.pcap.next_datagram()? else {
+                self.finished = true;
+                return Ok(self.decoder.flush());
+            };
+            if let Some(f) = self.decoder.push(d.dst_port, &d.payload) {
+                return Ok(Some(f));
+            }
+        }
+        Ok(None)
     }
 }
 
