@@ -22,6 +22,7 @@ use fcc_lidar::pipeline::{
     cluster_image, stream_image, ClosedRecord, PipelineConfig, PipelineResult,
 };
 use fcc_lidar::projection::{project, BackProjection, ProjectionConfig, VerticalLayout};
+use fcc_lidar::sinks::mcap::{McapFrame, McapSink};
 use fcc_lidar::source::{for_each_ouster_frame, Frame as Item, InputKind, Source, SourceOptions};
 use fcc_lidar::RangeImage;
 use indicatif::{ProgressBar, ProgressStyle};
@@ -274,6 +275,11 @@ pub struct ClusterLidarArgs {
     /// in columns from each cluster's last column to its record.
     #[arg(long)]
     pub stream: bool,
+    /// Write a ROS 2 recording (MCAP): per frame a sensor_msgs/msg/PointCloud2
+    /// with the cluster `label` and a visualization_msgs/msg/MarkerArray of
+    /// the clusters' boxes (frames stamped 0.1 s apart from 0).
+    #[arg(long)]
+    pub mcap: Option<PathBuf>,
     /// Frames clustered in parallel (default: all cores).
     #[arg(long)]
     pub jobs: Option<usize>,
@@ -314,8 +320,9 @@ impl ClusterLidarArgs {
     /// Refuse outputs that would overwrite an input or each other.
     fn check_outputs(&self, name: &str, single: bool) -> anyhow::Result<()> {
         let mut outs = self.outputs(name, single);
-        // One table for the whole run, named as given.
+        // One table and one recording for the whole run, named as given.
         outs.extend(self.clusters.as_ref().map(|p| ("--clusters", p.clone())));
+        outs.extend(self.mcap.as_ref().map(|p| ("--mcap", p.clone())));
         let outs: Vec<(&str, &Path)> = outs.iter().map(|(f, p)| (*f, p.as_path())).collect();
         fcc_io::check_outputs(self.inputs(), &outs)?;
         Ok(())
@@ -354,6 +361,13 @@ fn output_path(out: &Path, name: &str, single: bool) -> PathBuf {
         .unwrap_or_default();
     out.with_file_name(format!("{}_{name}{ext}", stem(out)))
 }
+
+/// What `process` gives for one result: its `--stats` line, its rows of the
+/// cluster table, and with `--mcap` its points, their labels and its rows.
+type Processed = (String, Vec<ClusterRow>, Option<McapParts>);
+
+/// Points, their labels and the clusters of one frame, for the MCAP sink.
+pub(crate) type McapParts = (Vec<[f32; 3]>, Vec<u32>, Vec<ClusterRow>);
 
 /// Per point of the outputs: coordinates, cluster, ground, intensity.
 type PerPoint = (Vec<[f32; 3]>, Vec<u32>, Vec<bool>, Option<Vec<f32>>);
@@ -540,7 +554,7 @@ fn process(
     item: &Item,
     single: bool,
     hw: Option<&dyn Hardware>,
-) -> anyhow::Result<(String, Vec<ClusterRow>)> {
+) -> anyhow::Result<Processed> {
     args.check_outputs(&item.name, single)?;
     let t = Instant::now();
     let (mut out, streamed): (PipelineResult, Option<(Vec<ClosedRecord>, u32)>) = if args.stream {
@@ -704,17 +718,21 @@ fn process(
         quality,
         quality_per_point,
     };
-    let rows = if args.clusters.is_some() || args.stream {
+    let rows = if args.clusters.is_some() || args.stream || args.mcap.is_some() {
         table_rows(item, &out, &points, &labels, streamed.map(|(r, _)| r))?
     } else {
         Vec::new()
     };
-    Ok((serde_json::to_string(&stats)?, rows))
+    let mcap = args
+        .mcap
+        .is_some()
+        .then(|| (points.clone(), labels.clone(), rows.clone()));
+    Ok((serde_json::to_string(&stats)?, rows, mcap))
 }
 
 /// Per point of the outputs: every input point of a cloud, valid pixels
 /// otherwise.
-fn per_point(item: &Item, out: &PipelineResult) -> anyhow::Result<PerPoint> {
+pub(crate) fn per_point(item: &Item, out: &PipelineResult) -> anyhow::Result<PerPoint> {
     Ok(match &item.projection {
         Some((proj, pts)) => {
             let labels = proj.labels_to_points(&out.labels, BackProjection::default())?;
@@ -873,8 +891,10 @@ pub fn run_cluster_on(args: &ClusterLidarArgs, hw: Option<&dyn Hardware>) -> any
     let pb = progress_bar(None, "frames");
     let mut lines = Vec::new();
     let mut table = Vec::new();
+    let mut mcap = args.mcap.as_deref().map(McapSink::create).transpose()?;
+    let mut mcap_frames = 0u64;
     let mut flush = |items: &mut Vec<Item>| -> anyhow::Result<()> {
-        let res: Vec<anyhow::Result<(String, Vec<ClusterRow>)>> = match hw {
+        let res: Vec<anyhow::Result<Processed>> = match hw {
             None => pool.install(|| {
                 items
                     .par_iter()
@@ -897,7 +917,17 @@ pub fn run_cluster_on(args: &ClusterLidarArgs, hw: Option<&dyn Hardware>) -> any
         pb.inc(items.len() as u64);
         items.clear();
         for r in res {
-            let (line, rows) = r?;
+            let (line, rows, parts) = r?;
+            if let (Some(sink), Some((points, labels, clusters))) = (&mut mcap, parts) {
+                sink.write(&McapFrame {
+                    stamp_ns: mcap_frames * 100_000_000,
+                    frame_id: "lidar",
+                    points: &points,
+                    labels: &labels,
+                    clusters: &clusters,
+                })?;
+                mcap_frames += 1;
+            }
             lines.push(line);
             table.extend(rows);
         }
@@ -916,6 +946,10 @@ pub fn run_cluster_on(args: &ClusterLidarArgs, hw: Option<&dyn Hardware>) -> any
     }
     flush(&mut items)?;
     pb.finish_and_clear();
+    if let (Some(sink), Some(p)) = (mcap, &args.mcap) {
+        sink.finish()?;
+        eprintln!("wrote {} ({mcap_frames} frames)", p.display());
+    }
     if lines.is_empty() {
         bail!("no frame was clustered: nothing written");
     }

@@ -3,7 +3,7 @@
 //! arrives; `fcc replay`: a capture's packets sent to a socket at their
 //! recorded timing, to feed `fcc live` without a sensor.
 
-use crate::cmd_lidar::{stream_rows, write_json_lines, GroundArgs};
+use crate::cmd_lidar::{per_point, stream_rows, write_json_lines, GroundArgs};
 use crate::model_args::ModelArgs;
 use crate::sensor_args::VelodyneArgs;
 use anyhow::{bail, Context};
@@ -12,6 +12,7 @@ use fcc_golden::MergeMode;
 use fcc_lidar::live::{Decoder, End, LiveOptions, LiveSource};
 use fcc_lidar::pcap::PcapReader;
 use fcc_lidar::pipeline::PipelineConfig;
+use fcc_lidar::sinks::mcap::{McapFrame, McapSink};
 use fcc_lidar::source::{Frame as Item, SourceOptions};
 use std::net::{SocketAddr, ToSocketAddrs, UdpSocket};
 use std::path::PathBuf;
@@ -59,6 +60,12 @@ pub struct LiveArgs {
     /// to writing its records (p50, p99, max, ms) on stderr.
     #[arg(long)]
     pub latency: bool,
+    /// Also write a ROS 2 recording (MCAP): per frame a
+    /// sensor_msgs/msg/PointCloud2 with the cluster `label` and a
+    /// visualization_msgs/msg/MarkerArray of the clusters' boxes, stamped
+    /// with the time the frame's last packet was received.
+    #[arg(long)]
+    pub mcap: Option<PathBuf>,
 }
 
 /// The address to listen on: `spec` with the decoder's default port when
@@ -115,6 +122,7 @@ pub fn run_live(args: &LiveArgs) -> anyhow::Result<()> {
     let live = LiveOptions {
         idle_timeout: Duration::from_secs_f64(args.idle_timeout),
     };
+    let mut mcap = args.mcap.as_deref().map(McapSink::create).transpose()?;
     let mut src = LiveSource::bind(addr, decoder, live)?;
     // The port bound (the system's choice for port 0).
     let addr = SocketAddr::new(addr.ip(), src.local_port());
@@ -150,9 +158,19 @@ pub fn run_live(args: &LiveArgs) -> anyhow::Result<()> {
                 );
             }
             let item = Item::image(name, f.image, Some(f.intensity));
-            let (_, rows) = stream_rows(&item, &cfg)?;
+            let (out, rows) = stream_rows(&item, &cfg)?;
             write_json_lines(&mut stdout.lock(), &rows)?;
             latency_ms.push(f.received_at.elapsed().as_secs_f64() * 1e3);
+            if let Some(sink) = &mut mcap {
+                let (points, labels, _, _) = per_point(&item, &out)?;
+                sink.write(&McapFrame {
+                    stamp_ns: f.received_unix_ns,
+                    frame_id: "lidar",
+                    points: &points,
+                    labels: &labels,
+                    clusters: &rows,
+                })?;
+            }
             frames += 1;
             clusters += rows.len();
         }
@@ -179,6 +197,10 @@ pub fn run_live(args: &LiveArgs) -> anyhow::Result<()> {
             latency_ms[latency_ms.len() - 1],
             latency_ms.len()
         );
+    }
+    if let (Some(sink), Some(p)) = (mcap, &args.mcap) {
+        sink.finish()?;
+        eprintln!("wrote {} ({frames} frames)", p.display());
     }
     result
 }

@@ -247,3 +247,135 @@ fn bad_options_are_refused_with_a_reason() {
         assert!(err.contains(want), "{args:?}: {err}");
     }
 }
+
+#[test]
+fn ctrl_c_ends_cleanly_with_a_summary() {
+    let d = lidar_data();
+    let meta = d.join(fcc_lidar::ouster::SAMPLE_CAPTURES[1].1);
+    let (live, _, _) = start_live(&["--meta", s(&meta), "--idle-timeout", "60"]);
+    let pid = live.0.as_ref().map(Child::id).expect("a child");
+    std::thread::sleep(Duration::from_millis(300));
+    let k = Command::new("kill")
+        .args(["-INT", &pid.to_string()])
+        .status()
+        .expect("run kill");
+    assert!(k.success());
+    let t = Instant::now();
+    let out = live.wait();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{err}");
+    assert!(t.elapsed() < Duration::from_secs(30), "{err}");
+    let summary: Vec<&str> = err.lines().filter(|l| l.starts_with("live: ")).collect();
+    assert_eq!(summary.len(), 1, "{err}");
+    for word in ["frames", "packets", "lost", "malformed", "clusters"] {
+        assert!(summary[0].contains(word), "{err}");
+    }
+}
+
+/// The third-party MCAP decoder's Python, or why it cannot run.
+fn mcap_python() -> Result<std::path::PathBuf, String> {
+    let py = std::env::var_os("FCC_MCAP_PYTHON")
+        .map(std::path::PathBuf::from)
+        .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../../.venv/bin/python"));
+    let ok = Command::new(&py)
+        .args(["-c", "import mcap_ros2.decoder"])
+        .output()
+        .is_ok_and(|o| o.status.success());
+    if ok {
+        Ok(py)
+    } else {
+        Err(format!(
+            "{} cannot import mcap_ros2: run ./setup.sh (or pip install -r crates/fcc-lidar/tests/requirements.txt), or set FCC_MCAP_PYTHON",
+            py.display()
+        ))
+    }
+}
+
+/// The messages of an MCAP file as the third-party decoder reads them.
+fn read_mcap(py: &Path, file: &Path) -> Vec<serde_json::Value> {
+    let script = lidar_data().join("mcap/read_with_mcap_ros2.py");
+    let out = Command::new(py)
+        .arg(&script)
+        .arg(file)
+        .output()
+        .expect("run python");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8_lossy(&out.stdout)
+        .lines()
+        .map(|l| serde_json::from_str(l).expect("json"))
+        .collect()
+}
+
+#[test]
+fn mcap_of_live_and_of_cluster_hold_the_same_points_labels_and_boxes() {
+    let py = match mcap_python() {
+        Ok(py) => py,
+        Err(why) if std::env::var("CI").is_ok_and(|v| v == "true") => {
+            panic!("the MCAP decoder cannot run under CI: {why}")
+        }
+        Err(why) => {
+            eprintln!("NOT RUN: {why}");
+            return;
+        }
+    };
+    let d = lidar_data();
+    let (pcap, meta) = fcc_lidar::ouster::SAMPLE_CAPTURES[1];
+    let (capture, meta) = (d.join(pcap), d.join(meta));
+    let dir = fcc_testkit::tmpdir("live_mcap");
+    let (off_mcap, live_mcap) = (dir.join("cluster.mcap"), dir.join("live.mcap"));
+    let off = fcc(&[
+        "cluster",
+        "-i",
+        s(&capture),
+        "--meta",
+        s(&meta),
+        "--stream",
+        "--mcap",
+        s(&off_mcap),
+    ]);
+    assert!(
+        off.status.success(),
+        "{}",
+        String::from_utf8_lossy(&off.stderr)
+    );
+    let (live, err) = live_on_replay(
+        &capture,
+        &[
+            "--meta",
+            s(&meta),
+            "--idle-timeout",
+            "1.5",
+            "--mcap",
+            s(&live_mcap),
+        ],
+    );
+    assert!(live.status.success(), "{err}");
+    let (a, b) = (read_mcap(&py, &off_mcap), read_mcap(&py, &live_mcap));
+    assert_eq!(a.len(), 2);
+    assert_eq!(b.len(), 2);
+    let records = String::from_utf8_lossy(&off.stdout).lines().count();
+    for (x, y) in a.iter().zip(&b) {
+        assert_eq!(x["topic"], y["topic"]);
+        for key in ["points", "labels", "fields", "width"] {
+            assert_eq!(x[key], y[key], "{key}");
+        }
+        if let Some(m) = x["markers"].as_array() {
+            assert_eq!(m.len(), records + 1);
+            let ids = |v: &serde_json::Value| -> Vec<serde_json::Value> {
+                v["markers"]
+                    .as_array()
+                    .unwrap()
+                    .iter()
+                    .map(|m| m["position"].clone())
+                    .collect()
+            };
+            assert_eq!(ids(x), ids(y));
+        }
+    }
+    // Live stamps are the receive time: after 2020.
+    assert!(b[0]["log_time"].as_u64().unwrap() > 1_600_000_000_000_000_000);
+}

@@ -58,6 +58,7 @@ pub mod pipeline;
 pub mod projection;
 pub mod rosbag;
 pub mod semantickitti;
+pub mod sinks;
 pub mod source;
 pub mod velodyne;
 

@@ -123,6 +123,8 @@ pub struct LiveFrame {
     pub lost_columns: usize,
     /// When the packet that completed the frame was received.
     pub received_at: Instant,
+    /// The same, nanoseconds since the Unix epoch (the system clock).
+    pub received_unix_ns: u64,
 }
 
 /// What the live source met so far.
@@ -163,6 +165,14 @@ pub enum End {
 struct Datagram {
     payload: Vec<u8>,
     at: Instant,
+    unix_ns: u64,
+}
+
+/// The system clock, nanoseconds since the Unix epoch (0 before it).
+fn unix_ns() -> u64 {
+    std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| d.as_nanos() as u64)
 }
 
 /// A bound socket and its decoder.
@@ -176,7 +186,7 @@ pub struct LiveSource {
     quit: Arc<AtomicBool>,
     thread: Option<JoinHandle<()>>,
     stats: LiveStats,
-    last_packet: Option<Instant>,
+    last_packet: Option<(Instant, u64)>,
     started: Instant,
     undecodable_run: u64,
     /// Sizes of the datagrams of the current undecodable run.
@@ -208,6 +218,7 @@ impl LiveSource {
                     let dg = Datagram {
                         payload: buf[..n].to_vec(),
                         at: Instant::now(),
+                        unix_ns: unix_ns(),
                     };
                     match tx.try_send(dg) {
                         Ok(()) => {}
@@ -267,7 +278,7 @@ impl LiveSource {
             if stop.load(Ordering::Relaxed) {
                 return Ok(Err(End::Stopped));
             }
-            let since = self.last_packet.unwrap_or(self.started).elapsed();
+            let since = self.last_packet.map_or(self.started, |p| p.0).elapsed();
             if since >= self.opts.idle_timeout {
                 if self.last_packet.is_none() {
                     return Err(LidarError::Config(format!(
@@ -277,7 +288,7 @@ impl LiveSource {
                     )));
                 }
                 self.ended = true;
-                let at = self.last_packet.unwrap_or(self.started);
+                let at = self.last_packet.unwrap_or((self.started, unix_ns()));
                 return Ok(match self.flush(at) {
                     Some(f) => Ok(f),
                     None => Err(End::Idle),
@@ -294,16 +305,16 @@ impl LiveSource {
                     )))
                 }
             };
-            self.last_packet = Some(dg.at);
+            self.last_packet = Some((dg.at, dg.unix_ns));
             self.stats.packets += 1;
-            if let Some(f) = self.push(&dg.payload, dg.at)? {
+            if let Some(f) = self.push(&dg.payload, (dg.at, dg.unix_ns))? {
                 return Ok(Ok(f));
             }
         }
     }
 
     /// One datagram through the decoder.
-    fn push(&mut self, payload: &[u8], at: Instant) -> Result<Option<LiveFrame>> {
+    fn push(&mut self, payload: &[u8], at: (Instant, u64)) -> Result<Option<LiveFrame>> {
         let port = self.port;
         let (before, frame) = match &mut self.decoder {
             Decoder::Ouster(d) => {
@@ -337,7 +348,7 @@ impl LiveSource {
     }
 
     /// The end of the stream: the frame being received, if it makes one.
-    fn flush(&mut self, at: Instant) -> Option<LiveFrame> {
+    fn flush(&mut self, at: (Instant, u64)) -> Option<LiveFrame> {
         let frame = match &mut self.decoder {
             Decoder::Ouster(d) => {
                 let f = d.flush();
@@ -419,7 +430,7 @@ impl Drop for LiveSource {
     }
 }
 
-fn ouster_frame(d: &OusterDecoder, f: OusterFrame, at: Instant) -> LiveFrame {
+fn ouster_frame(d: &OusterDecoder, f: OusterFrame, at: (Instant, u64)) -> LiveFrame {
     let lost = d
         .metadata()
         .window_columns()
@@ -430,17 +441,19 @@ fn ouster_frame(d: &OusterDecoder, f: OusterFrame, at: Instant) -> LiveFrame {
         lost_columns: lost,
         image: f.image,
         intensity: f.reflectivity,
-        received_at: at,
+        received_at: at.0,
+        received_unix_ns: at.1,
     }
 }
 
-fn velodyne_frame(f: VelodyneFrame, at: Instant) -> LiveFrame {
+fn velodyne_frame(f: VelodyneFrame, at: (Instant, u64)) -> LiveFrame {
     LiveFrame {
         frame: f.index as u64,
         complete: f.complete,
         lost_columns: 0,
         image: f.image,
         intensity: f.intensity,
-        received_at: at,
+        received_at: at.0,
+        received_unix_ns: at.1,
     }
 }
