@@ -10,6 +10,7 @@ use anyhow::{bail, Context};
 use clap::Args;
 use fcc_golden::MergeMode;
 use fcc_lidar::live::{Decoder, End, LiveOptions, LiveSource};
+use fcc_lidar::ouster::{bump_frame_id, OusterMetadata};
 use fcc_lidar::pcap::PcapReader;
 use fcc_lidar::pipeline::PipelineConfig;
 use fcc_lidar::sinks::mcap::{McapFrame, McapSink};
@@ -56,8 +57,9 @@ pub struct LiveArgs {
     /// cluster` names a capture's frames after its file).
     #[arg(long, default_value = "live")]
     pub name: String,
-    /// Print, at the end, the time from receiving each frame's last packet
-    /// to writing its records (p50, p99, max, ms) on stderr.
+    /// Print, at the end, the time from receiving the packet that completed
+    /// each frame to writing its records (p50, p99, max, ms) on stderr
+    /// (frames delivered by the idle timeout left out).
     #[arg(long)]
     pub latency: bool,
     /// Also write a ROS 2 recording (MCAP): per frame a
@@ -160,7 +162,9 @@ pub fn run_live(args: &LiveArgs) -> anyhow::Result<()> {
             let item = Item::image(name, f.image, Some(f.intensity));
             let (out, rows) = stream_rows(&item, &cfg)?;
             write_json_lines(&mut stdout.lock(), &rows)?;
-            latency_ms.push(f.received_at.elapsed().as_secs_f64() * 1e3);
+            if !f.at_end {
+                latency_ms.push(f.received_at.elapsed().as_secs_f64() * 1e3);
+            }
             if let Some(sink) = &mut mcap {
                 let (points, labels, _, _) = per_point(&item, &out)?;
                 sink.write(&McapFrame {
@@ -191,7 +195,7 @@ pub fn run_live(args: &LiveArgs) -> anyhow::Result<()> {
         latency_ms.sort_by(f64::total_cmp);
         let q = |p: usize| latency_ms[((p * latency_ms.len()).div_ceil(100)).max(1) - 1];
         eprintln!(
-            "latency from a frame's last packet to its records written: p50 {:.2} ms, p99 {:.2} ms, max {:.2} ms over {} frames",
+            "latency from the packet that completed a frame to its records written: p50 {:.2} ms, p99 {:.2} ms, max {:.2} ms over {} frames",
             q(50),
             q(99),
             latency_ms[latency_ms.len() - 1],
@@ -220,6 +224,14 @@ pub struct ReplayArgs {
     /// lidar port, leaving out IMU or position packets).
     #[arg(long)]
     pub only_port: Option<u16>,
+    /// Send the capture this many times, back to back at its own period
+    /// (for long runs and measurements).
+    #[arg(long, default_value_t = 1)]
+    pub repeat: u32,
+    /// Ouster metadata of the capture: each repeat then renumbers the frame
+    /// ids so that it arrives as new frames (Velodyne rotations need nothing).
+    #[arg(long)]
+    pub meta: Option<PathBuf>,
 }
 
 pub fn run_replay(args: &ReplayArgs) -> anyhow::Result<()> {
@@ -237,26 +249,48 @@ pub fn run_replay(args: &ReplayArgs) -> anyhow::Result<()> {
         .with_context(|| format!("--udp {}: names no address", args.udp))?;
     let bind = if to.is_ipv4() { "0.0.0.0:0" } else { "[::]:0" };
     let socket = UdpSocket::bind(bind).context("cannot open a UDP socket")?;
-    let mut pcap = PcapReader::open(&args.capture)?;
+    let meta = args
+        .meta
+        .as_deref()
+        .map(OusterMetadata::from_file)
+        .transpose()?;
     let start = Instant::now();
-    let mut first: Option<u64> = None;
     let mut sent = 0u64;
-    while let Some(d) = pcap.next_datagram()? {
-        if args.only_port.is_some_and(|p| p != d.dst_port) {
-            continue;
+    // Capture times of the first pass: first, last, datagrams.
+    let (mut first, mut last, mut count) = (None::<u64>, 0u64, 0u64);
+    let mut offset_us = 0.0f64;
+    for pass in 0..args.repeat {
+        if pass > 0 {
+            // One period of the capture: its span and one mean gap more.
+            let span = last.saturating_sub(first.unwrap_or(last)) as f64;
+            offset_us += span * count as f64 / (count.max(2) - 1) as f64;
         }
-        if args.rate > 0.0 {
-            let t0 = *first.get_or_insert(d.time_us);
-            let due =
-                Duration::from_secs_f64(d.time_us.saturating_sub(t0) as f64 / 1e6 / args.rate);
-            if let Some(wait) = due.checked_sub(start.elapsed()) {
-                std::thread::sleep(wait);
+        let mut pcap = PcapReader::open(&args.capture)?;
+        while let Some(mut d) = pcap.next_datagram()? {
+            if args.only_port.is_some_and(|p| p != d.dst_port) {
+                continue;
             }
+            if pass == 0 {
+                first.get_or_insert(d.time_us);
+                last = d.time_us;
+                count += 1;
+            }
+            if let Some(m) = &meta {
+                // Frame ids wrap at 2^16, as the sensor's do.
+                bump_frame_id(m, &mut d.payload, (pass % 65_536) as u16);
+            }
+            if args.rate > 0.0 {
+                let t = d.time_us.saturating_sub(first.unwrap_or(d.time_us)) as f64 + offset_us;
+                let due = Duration::from_secs_f64(t / 1e6 / args.rate);
+                if let Some(wait) = due.checked_sub(start.elapsed()) {
+                    std::thread::sleep(wait);
+                }
+            }
+            socket
+                .send_to(&d.payload, to)
+                .with_context(|| format!("udp {to}: cannot send"))?;
+            sent += 1;
         }
-        socket
-            .send_to(&d.payload, to)
-            .with_context(|| format!("udp {to}: cannot send"))?;
-        sent += 1;
     }
     eprintln!(
         "{}: sent {sent} datagrams to udp {to} in {:.2} s",

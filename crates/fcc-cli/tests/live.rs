@@ -379,3 +379,41 @@ fn mcap_of_live_and_of_cluster_hold_the_same_points_labels_and_boxes() {
     // Live stamps are the receive time: after 2020.
     assert!(b[0]["log_time"].as_u64().unwrap() > 1_600_000_000_000_000_000);
 }
+
+#[test]
+fn replay_repeat_sends_the_rotation_again_as_new_frames() {
+    let d = lidar_data();
+    let (pcap, meta) = fcc_lidar::ouster::SAMPLE_CAPTURES[2];
+    let (capture, meta) = (d.join(pcap), d.join(meta));
+    let (live, port, first) =
+        start_live(&["--meta", s(&meta), "--idle-timeout", "1.5", "--latency"]);
+    let to = format!("127.0.0.1:{port}");
+    let r = fcc(&[
+        "replay",
+        s(&capture),
+        "--udp",
+        &to,
+        "--rate",
+        "2",
+        "--repeat",
+        "3",
+        "--meta",
+        s(&meta),
+    ]);
+    assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stderr));
+    let out = live.wait();
+    let err = String::from_utf8_lossy(&first).into_owned() + &String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{err}");
+    assert!(
+        err.contains("live: 3 frames") && err.contains(" 0 lost"),
+        "{err}"
+    );
+    // Two frames were completed by a packet (the third by the end of the stream).
+    assert!(err.contains("over 2 frames"), "{err}");
+    let off = fcc(&["cluster", "-i", s(&capture), "--meta", s(&meta), "--stream"]);
+    let per_frame = String::from_utf8_lossy(&off.stdout).lines().count();
+    assert_eq!(
+        String::from_utf8_lossy(&out.stdout).lines().count(),
+        3 * per_frame
+    );
+}

@@ -125,6 +125,8 @@ pub struct LiveFrame {
     pub received_at: Instant,
     /// The same, nanoseconds since the Unix epoch (the system clock).
     pub received_unix_ns: u64,
+    /// Delivered at the end of the stream (the idle timeout), not by a packet.
+    pub at_end: bool,
 }
 
 /// What the live source met so far.
@@ -361,7 +363,7 @@ impl LiveSource {
             self.stats.frames += 1;
             self.stats.lost_columns += f.lost_columns as u64;
         }
-        frame
+        frame.map(|f| LiveFrame { at_end: true, ..f })
     }
 
     /// Copy the decoder's counts into the stats.
@@ -443,6 +445,7 @@ fn ouster_frame(d: &OusterDecoder, f: OusterFrame, at: (Instant, u64)) -> LiveFr
         intensity: f.reflectivity,
         received_at: at.0,
         received_unix_ns: at.1,
+        at_end: false,
     }
 }
 
@@ -455,5 +458,6 @@ fn velodyne_frame(f: VelodyneFrame, at: (Instant, u64)) -> LiveFrame {
         intensity: f.intensity,
         received_at: at.0,
         received_unix_ns: at.1,
+        at_end: false,
     }
 }

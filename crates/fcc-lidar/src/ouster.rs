@@ -501,6 +501,30 @@ pub fn shifts_from_azimuth(azimuth_deg: &[f64], columns: usize) -> Vec<i64> {
     raw.iter().map(|s| s - min).collect()
 }
 
+/// Add `add` to the frame id of a lidar packet of `meta`'s layout (in the
+/// packet header, or in every column header of LEGACY packets), as a
+/// replay does to send a capture's rotation again as a new frame. False,
+/// and the packet untouched, when it is not a lidar packet of that size.
+pub fn bump_frame_id(meta: &OusterMetadata, packet: &mut [u8], add: u16) -> bool {
+    if packet.len() != meta.packet_size() {
+        return false;
+    }
+    let bump = |b: &mut [u8]| {
+        let id = u16::from_le_bytes([b[0], b[1]]).wrapping_add(add);
+        b.copy_from_slice(&id.to_le_bytes());
+    };
+    let p = meta.profile;
+    if p == Profile::Legacy {
+        let col = p.column_header() + meta.pixels_per_column * p.pixel_bytes() + p.column_footer();
+        for c in 0..meta.columns_per_packet {
+            bump(&mut packet[c * col + 10..c * col + 12]);
+        }
+    } else {
+        bump(&mut packet[2..4]);
+    }
+    true
+}
+
 /// Options of the decoder.
 #[derive(Debug, Clone, Default)]
 pub struct DecodeOptions {
