@@ -170,6 +170,33 @@ struct Datagram {
     unix_ns: u64,
 }
 
+/// Bytes of socket receive buffer asked for (the kernel caps it, on Linux
+/// at `net.core.rmem_max`): a few frames of the largest sensors, so that a
+/// busy moment of the receiving thread loses nothing.
+const RECEIVE_BUFFER: i32 = 8 << 20;
+
+/// Ask for a receive buffer of [`RECEIVE_BUFFER`] bytes; the default stays
+/// where the system refuses.
+#[cfg(unix)]
+fn grow_receive_buffer(socket: &UdpSocket) {
+    use std::os::unix::io::AsRawFd;
+    let size: libc::c_int = RECEIVE_BUFFER;
+    // SAFETY: a valid socket descriptor and a pointer to a c_int of the
+    // length given, as setsockopt(2) requires.
+    unsafe {
+        libc::setsockopt(
+            socket.as_raw_fd(),
+            libc::SOL_SOCKET,
+            libc::SO_RCVBUF,
+            (&size as *const libc::c_int).cast(),
+            std::mem::size_of::<libc::c_int>() as libc::socklen_t,
+        );
+    }
+}
+
+#[cfg(not(unix))]
+fn grow_receive_buffer(_: &UdpSocket) {}
+
 /// The system clock, nanoseconds since the Unix epoch (0 before it).
 fn unix_ns() -> u64 {
     std::time::SystemTime::now()
@@ -202,6 +229,7 @@ impl LiveSource {
         let io = |e: std::io::Error| LidarError::Config(format!("udp {addr}: cannot bind: {e}"));
         let socket = UdpSocket::bind(addr).map_err(io)?;
         socket.set_read_timeout(Some(POLL)).map_err(io)?;
+        grow_receive_buffer(&socket);
         let local = socket.local_addr().map_err(io)?;
         let (tx, queue) = sync_channel::<Datagram>(QUEUE_PACKETS);
         let dropped = Arc::new(AtomicU64::new(0));

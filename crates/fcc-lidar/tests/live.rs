@@ -297,8 +297,8 @@ fn the_stop_flag_ends_the_wait() {
 #[test]
 fn no_packet_at_all_is_an_error_after_the_idle_timeout() {
     let (m, _) = profile_capture();
-    let (mut src, _, _) = bind(ouster(&m), 0.3);
     let t = Instant::now();
+    let (mut src, _, _) = bind(ouster(&m), 0.3);
     let err = src
         .next_frame(&AtomicBool::new(false))
         .unwrap_err()
