@@ -68,6 +68,12 @@ pub struct LiveArgs {
     /// with the time the frame's last packet was received.
     #[arg(long)]
     pub mcap: Option<PathBuf>,
+    /// Serve the frames live to Foxglove over WebSocket (the Foxglove SDK)
+    /// on ADDR (default 127.0.0.1:8765): the points coloured by cluster on
+    /// /fcc/points and the boxes with their ids on /fcc/clusters.
+    #[cfg(feature = "foxglove")]
+    #[arg(long, value_name = "ADDR", num_args = 0..=1, default_missing_value = fcc_viz::DEFAULT_ADDR)]
+    pub foxglove: Option<String>,
 }
 
 /// The address to listen on: `spec` with the decoder's default port when
@@ -133,6 +139,19 @@ pub fn run_live(args: &LiveArgs) -> anyhow::Result<()> {
         Decoder::Velodyne(_) => "Velodyne",
     };
     eprintln!("listening on udp {addr} ({sensor} packets)");
+    #[cfg(feature = "foxglove")]
+    let mut viz = match &args.foxglove {
+        Some(a) => {
+            let v = fcc_viz::FoxgloveServer::start(a)?;
+            eprintln!(
+                "foxglove: ws://{}:{}",
+                a.rsplit_once(':').map_or("127.0.0.1", |(h, _)| h),
+                v.port()
+            );
+            Some(v)
+        }
+        None => None,
+    };
     let (mut frames, mut clusters) = (0u64, 0usize);
     let mut latency_ms: Vec<f64> = Vec::new();
     let stdout = std::io::stdout();
@@ -165,15 +184,31 @@ pub fn run_live(args: &LiveArgs) -> anyhow::Result<()> {
             if !f.at_end {
                 latency_ms.push(f.received_at.elapsed().as_secs_f64() * 1e3);
             }
-            if let Some(sink) = &mut mcap {
+            #[cfg(feature = "foxglove")]
+            let want_points = mcap.is_some() || viz.is_some();
+            #[cfg(not(feature = "foxglove"))]
+            let want_points = mcap.is_some();
+            if want_points {
                 let (points, labels, _, _) = per_point(&item, &out)?;
-                sink.write(&McapFrame {
-                    stamp_ns: f.received_unix_ns,
-                    frame_id: "lidar",
-                    points: &points,
-                    labels: &labels,
-                    clusters: &rows,
-                })?;
+                if let Some(sink) = &mut mcap {
+                    sink.write(&McapFrame {
+                        stamp_ns: f.received_unix_ns,
+                        frame_id: "lidar",
+                        points: &points,
+                        labels: &labels,
+                        clusters: &rows,
+                    })?;
+                }
+                #[cfg(feature = "foxglove")]
+                if let Some(v) = &mut viz {
+                    v.publish(&fcc_viz::VizFrame {
+                        stamp_ns: f.received_unix_ns,
+                        frame_id: "lidar",
+                        points: &points,
+                        labels: &labels,
+                        clusters: &rows,
+                    });
+                }
             }
             frames += 1;
             clusters += rows.len();

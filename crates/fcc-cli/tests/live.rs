@@ -418,3 +418,26 @@ fn replay_repeat_sends_the_rotation_again_as_new_frames() {
         3 * per_frame
     );
 }
+
+#[test]
+fn foxglove_serves_on_the_address_given() {
+    let d = lidar_data();
+    let meta = d.join(fcc_lidar::ouster::SAMPLE_CAPTURES[1].1);
+    let (live, _, first) = start_live(&[
+        "--meta",
+        s(&meta),
+        "--idle-timeout",
+        "0.5",
+        "--foxglove",
+        "127.0.0.1:0",
+    ]);
+    let out = live.wait();
+    let err = String::from_utf8_lossy(&first).into_owned() + &String::from_utf8_lossy(&out.stderr);
+    // No packet came: the run ends with its error, after the server started.
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    let port = err
+        .lines()
+        .find_map(|l| l.strip_prefix("foxglove: ws://127.0.0.1:"))
+        .and_then(|p| p.trim().parse::<u16>().ok());
+    assert!(port.is_some_and(|p| p != 0), "{err}");
+}
