@@ -65,7 +65,8 @@ pub struct LiveArgs {
     /// Also write a ROS 2 recording (MCAP): per frame a
     /// sensor_msgs/msg/PointCloud2 with the cluster `label` and a
     /// visualization_msgs/msg/MarkerArray of the clusters' boxes, stamped
-    /// with the time the frame's last packet was received.
+    /// with the sensor's timestamp (Ouster) or the time the frame's last
+    /// packet was received (Velodyne).
     #[arg(long)]
     pub mcap: Option<PathBuf>,
     /// Serve the frames live to Foxglove over WebSocket (the Foxglove SDK)
@@ -189,10 +190,12 @@ pub fn run_live(args: &LiveArgs) -> anyhow::Result<()> {
             #[cfg(not(feature = "foxglove"))]
             let want_points = mcap.is_some();
             if want_points {
+                // The sensor's stamp where its packets carry one, else the receive time.
+                let stamp_ns = f.sensor_ns.unwrap_or(f.received_unix_ns);
                 let (points, labels, _, _) = per_point(&item, &out)?;
                 if let Some(sink) = &mut mcap {
                     sink.write(&McapFrame {
-                        stamp_ns: f.received_unix_ns,
+                        stamp_ns,
                         frame_id: "lidar",
                         points: &points,
                         labels: &labels,
@@ -202,7 +205,7 @@ pub fn run_live(args: &LiveArgs) -> anyhow::Result<()> {
                 #[cfg(feature = "foxglove")]
                 if let Some(v) = &mut viz {
                     v.publish(&fcc_viz::VizFrame {
-                        stamp_ns: f.received_unix_ns,
+                        stamp_ns,
                         frame_id: "lidar",
                         points: &points,
                         labels: &labels,

@@ -127,6 +127,9 @@ pub struct LiveFrame {
     pub received_unix_ns: u64,
     /// Delivered at the end of the stream (the idle timeout), not by a packet.
     pub at_end: bool,
+    /// The sensor's own timestamp of the frame, nanoseconds (Ouster: its
+    /// first column's; `None` for Velodyne, whose packets count from the hour).
+    pub sensor_ns: Option<u64>,
 }
 
 /// What the live source met so far.
@@ -474,6 +477,7 @@ fn ouster_frame(d: &OusterDecoder, f: OusterFrame, at: (Instant, u64)) -> LiveFr
         received_at: at.0,
         received_unix_ns: at.1,
         at_end: false,
+        sensor_ns: Some(f.timestamp_ns).filter(|&t| t != 0),
     }
 }
 
@@ -487,5 +491,6 @@ fn velodyne_frame(f: VelodyneFrame, at: (Instant, u64)) -> LiveFrame {
         received_at: at.0,
         received_unix_ns: at.1,
         at_end: false,
+        sensor_ns: None,
     }
 }

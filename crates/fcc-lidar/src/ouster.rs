@@ -539,6 +539,10 @@ pub struct DecodeOptions {
 #[derive(Debug, Clone)]
 pub struct OusterFrame {
     pub frame_id: u16,
+    /// The timestamp of the frame's first column received, nanoseconds, as
+    /// the sensor stamps its columns (its own clock: PTP or GPS time when
+    /// synchronised, else time since power-on).
+    pub timestamp_ns: u64,
     /// Destaggered: rows = beams (row 0 the top beam), cols = columns per frame.
     pub image: RangeImage,
     /// Reflectivity per pixel of `image` (NaN where it has no return).
@@ -640,6 +644,8 @@ impl Lut {
 /// Collects the columns of the frame being received.
 struct Assembly {
     frame_id: u16,
+    /// The sensor's timestamp of the first column received.
+    timestamp_ns: u64,
     range_mm: Vec<u32>,
     reflectivity: Vec<u16>,
     received: Vec<bool>,
@@ -783,6 +789,7 @@ impl OusterDecoder {
             }
             let a = self.current.get_or_insert_with(|| Assembly {
                 frame_id: fid,
+                timestamp_ns: u64::from_le_bytes([c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7]]),
                 range_mm: vec![0; h * w],
                 reflectivity: vec![0; h * w],
                 received: vec![false; w],
@@ -844,6 +851,7 @@ impl OusterDecoder {
         stats.complete = complete;
         Some(OusterFrame {
             frame_id: a.frame_id,
+            timestamp_ns: a.timestamp_ns,
             image,
             reflectivity,
             stats,

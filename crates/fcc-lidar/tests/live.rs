@@ -275,6 +275,8 @@ fn the_socket_gives_the_frames_of_the_capture_and_ends_when_idle() {
     assert_eq!(u64::from(want[0].frame_id), f.frame);
     assert!(same_image(&f.image, &want[0].image));
     assert!(f.complete && f.lost_columns == 0);
+    assert!(want[0].timestamp_ns > 0);
+    assert_eq!(f.sensor_ns, Some(want[0].timestamp_ns));
     assert_eq!(src.next_frame(&stop).unwrap().err(), Some(End::Idle));
     assert!(t.elapsed() < Duration::from_secs(10));
     let s = src.stats();
