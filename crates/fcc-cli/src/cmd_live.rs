@@ -57,9 +57,11 @@ pub struct LiveArgs {
     /// cluster` names a capture's frames after its file).
     #[arg(long, default_value = "live")]
     pub name: String,
-    /// Print, at the end, the time from receiving the packet that completed
-    /// each frame to writing its records (p50, p99, max, ms) on stderr
-    /// (frames delivered by the idle timeout left out).
+    /// Print, at the end, on stderr: the time from receiving the packet that
+    /// completed each frame to writing its records, and from receiving the
+    /// packet of each cluster's last column (Ouster; the frame's completing
+    /// packet for Velodyne) to writing its record (p50, p99, max, ms;
+    /// frames delivered by the idle timeout left out).
     #[arg(long)]
     pub latency: bool,
     /// Also write a ROS 2 recording (MCAP): per frame a
@@ -155,13 +157,16 @@ pub fn run_live(args: &LiveArgs) -> anyhow::Result<()> {
     };
     let (mut frames, mut clusters) = (0u64, 0usize);
     let mut latency_ms: Vec<f64> = Vec::new();
+    // Per record: from the packet of its last column (Ouster) or of the
+    // frame's end (Velodyne) to its line written.
+    let mut record_ms: Vec<f64> = Vec::new();
     let stdout = std::io::stdout();
     let result = (|| -> anyhow::Result<()> {
         loop {
             if args.frames.is_some_and(|n| frames >= n) {
                 return Ok(());
             }
-            let f = match src.next_frame(&stop)? {
+            let mut f = match src.next_frame(&stop)? {
                 Ok(f) => f,
                 Err(End::Stopped) => return Ok(()),
                 Err(End::Idle) => {
@@ -179,11 +184,20 @@ pub fn run_live(args: &LiveArgs) -> anyhow::Result<()> {
                     f.lost_columns
                 );
             }
-            let item = Item::image(name, f.image, Some(f.intensity));
+            // The image moves into the item; the column times stay with `f`.
+            let image = std::mem::replace(&mut f.image, fcc_lidar::RangeImage::empty(0, 0));
+            let item = Item::image(name, image, Some(std::mem::take(&mut f.intensity)));
             let (out, rows) = stream_rows(&item, &cfg)?;
             write_json_lines(&mut stdout.lock(), &rows)?;
             if !f.at_end {
-                latency_ms.push(f.received_at.elapsed().as_secs_f64() * 1e3);
+                let now = Instant::now();
+                latency_ms.push((now - f.received_at).as_secs_f64() * 1e3);
+                for r in &rows {
+                    let t = f
+                        .column_time(r.span_last_col as usize)
+                        .unwrap_or(f.received_at);
+                    record_ms.push(now.saturating_duration_since(t).as_secs_f64() * 1e3);
+                }
             }
             #[cfg(feature = "foxglove")]
             let want_points = mcap.is_some() || viz.is_some();
@@ -229,16 +243,32 @@ pub fn run_live(args: &LiveArgs) -> anyhow::Result<()> {
         s.duplicate_columns,
         s.foreign
     );
-    if args.latency && !latency_ms.is_empty() {
-        latency_ms.sort_by(f64::total_cmp);
-        let q = |p: usize| latency_ms[((p * latency_ms.len()).div_ceil(100)).max(1) - 1];
-        eprintln!(
-            "latency from the packet that completed a frame to its records written: p50 {:.2} ms, p99 {:.2} ms, max {:.2} ms over {} frames",
-            q(50),
-            q(99),
-            latency_ms[latency_ms.len() - 1],
-            latency_ms.len()
-        );
+    if args.latency {
+        let summary = |v: &mut Vec<f64>| -> Option<String> {
+            if v.is_empty() {
+                return None;
+            }
+            v.sort_by(f64::total_cmp);
+            let q = |p: usize| v[((p * v.len()).div_ceil(100)).max(1) - 1];
+            Some(format!(
+                "p50 {:.2} ms, p99 {:.2} ms, max {:.2} ms",
+                q(50),
+                q(99),
+                v[v.len() - 1]
+            ))
+        };
+        if let Some(l) = summary(&mut latency_ms) {
+            eprintln!(
+                "latency from the packet that completed a frame to its records written: {l} over {} frames",
+                latency_ms.len()
+            );
+        }
+        if let Some(l) = summary(&mut record_ms) {
+            eprintln!(
+                "latency from the packet of a cluster's last column to its record written: {l} over {} records",
+                record_ms.len()
+            );
+        }
     }
     if let (Some(sink), Some(p)) = (mcap, &args.mcap) {
         sink.finish()?;

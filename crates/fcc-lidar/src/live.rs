@@ -130,6 +130,27 @@ pub struct LiveFrame {
     /// The sensor's own timestamp of the frame, nanoseconds (Ouster: its
     /// first column's; `None` for Velodyne, whose packets count from the hour).
     pub sensor_ns: Option<u64>,
+    /// Ouster: when each measurement column's packet was received (`None`
+    /// for a column that did not arrive, or for Velodyne).
+    pub column_received: Vec<Option<Instant>>,
+    /// Ouster: the distinct destaggering shifts (image column = measurement
+    /// column + shift, modulo the columns).
+    pub shifts: Vec<usize>,
+}
+
+impl LiveFrame {
+    /// When the last pixel of image column `col` arrived: the latest packet
+    /// among the measurement columns that land in it (Ouster), else `None`.
+    pub fn column_time(&self, col: usize) -> Option<Instant> {
+        let w = self.column_received.len();
+        if w == 0 {
+            return None;
+        }
+        self.shifts
+            .iter()
+            .filter_map(|&s| self.column_received[(col % w + w - s % w) % w])
+            .max()
+    }
 }
 
 /// What the live source met so far.
@@ -221,6 +242,8 @@ pub struct LiveSource {
     last_packet: Option<(Instant, u64)>,
     started: Instant,
     undecodable_run: u64,
+    /// Receive times of the latest decoded packets, by their number.
+    recent: std::collections::VecDeque<(u64, Instant)>,
     /// Sizes of the datagrams of the current undecodable run.
     run_sizes: std::collections::BTreeMap<usize, u64>,
     ended: bool,
@@ -276,6 +299,7 @@ impl LiveSource {
             last_packet: None,
             started: Instant::now(),
             undecodable_run: 0,
+            recent: Default::default(),
             run_sizes: Default::default(),
             ended: false,
         })
@@ -353,7 +377,7 @@ impl LiveSource {
             Decoder::Ouster(d) => {
                 let before = d.stats().lidar_packets;
                 let f = d.push(port, payload);
-                (before, f.map(|f| ouster_frame(d, f, at)))
+                (before, f.map(|f| ouster_frame(d, f, at, &self.recent)))
             }
             Decoder::Velodyne(d) => {
                 let before = d.stats().data_packets;
@@ -364,6 +388,10 @@ impl LiveSource {
         self.count();
         let decoded = self.stats.decoded > before;
         if decoded {
+            if self.recent.len() >= QUEUE_PACKETS {
+                self.recent.pop_front();
+            }
+            self.recent.push_back((self.stats.decoded, at.0));
             self.undecodable_run = 0;
             self.run_sizes.clear();
         } else {
@@ -385,7 +413,7 @@ impl LiveSource {
         let frame = match &mut self.decoder {
             Decoder::Ouster(d) => {
                 let f = d.flush();
-                f.map(|f| ouster_frame(d, f, at))
+                f.map(|f| ouster_frame(d, f, at, &self.recent))
             }
             Decoder::Velodyne(d) => d.flush().map(|f| velodyne_frame(f, at)),
         };
@@ -463,7 +491,30 @@ impl Drop for LiveSource {
     }
 }
 
-fn ouster_frame(d: &OusterDecoder, f: OusterFrame, at: (Instant, u64)) -> LiveFrame {
+fn ouster_frame(
+    d: &OusterDecoder,
+    f: OusterFrame,
+    at: (Instant, u64),
+    recent: &std::collections::VecDeque<(u64, Instant)>,
+) -> LiveFrame {
+    let m = d.metadata();
+    let w = m.columns_per_frame;
+    let time_of = |seq: u64| {
+        let k = recent.partition_point(|&(s, _)| s < seq);
+        recent.get(k).filter(|&&(s, _)| s == seq).map(|&(_, t)| t)
+    };
+    let column_received = f
+        .column_packet
+        .iter()
+        .map(|&seq| if seq == 0 { None } else { time_of(seq) })
+        .collect();
+    let mut shifts: Vec<usize> = m
+        .pixel_shift_by_row
+        .iter()
+        .map(|s| s.rem_euclid(w as i64) as usize)
+        .collect();
+    shifts.sort_unstable();
+    shifts.dedup();
     let lost = d
         .metadata()
         .window_columns()
@@ -478,6 +529,8 @@ fn ouster_frame(d: &OusterDecoder, f: OusterFrame, at: (Instant, u64)) -> LiveFr
         received_unix_ns: at.1,
         at_end: false,
         sensor_ns: Some(f.timestamp_ns).filter(|&t| t != 0),
+        column_received,
+        shifts,
     }
 }
 
@@ -492,5 +545,7 @@ fn velodyne_frame(f: VelodyneFrame, at: (Instant, u64)) -> LiveFrame {
         received_unix_ns: at.1,
         at_end: false,
         sensor_ns: None,
+        column_received: Vec::new(),
+        shifts: Vec::new(),
     }
 }

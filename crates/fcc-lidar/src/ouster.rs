@@ -543,6 +543,9 @@ pub struct OusterFrame {
     /// the sensor stamps its columns (its own clock: PTP or GPS time when
     /// synchronised, else time since power-on).
     pub timestamp_ns: u64,
+    /// Per measurement column, the decoded packet that brought it (its
+    /// number in `CaptureStats::lidar_packets`, from 1; 0 for none).
+    pub column_packet: Vec<u64>,
     /// Destaggered: rows = beams (row 0 the top beam), cols = columns per frame.
     pub image: RangeImage,
     /// Reflectivity per pixel of `image` (NaN where it has no return).
@@ -649,6 +652,9 @@ struct Assembly {
     range_mm: Vec<u32>,
     reflectivity: Vec<u16>,
     received: Vec<bool>,
+    /// The decoded packet (the count of `lidar_packets` after it) that
+    /// brought each measurement column, 0 for none.
+    column_packet: Vec<u64>,
     stats: FrameStats,
 }
 
@@ -793,12 +799,14 @@ impl OusterDecoder {
                 range_mm: vec![0; h * w],
                 reflectivity: vec![0; h * w],
                 received: vec![false; w],
+                column_packet: vec![0; w],
                 stats: FrameStats::default(),
             });
             if !counted {
                 a.stats.packets += 1;
                 counted = true;
             }
+            a.column_packet[mid] = self.stats.lidar_packets;
             if a.received[mid] {
                 self.stats.duplicate_columns += 1;
             } else {
@@ -852,6 +860,7 @@ impl OusterDecoder {
         Some(OusterFrame {
             frame_id: a.frame_id,
             timestamp_ns: a.timestamp_ns,
+            column_packet: a.column_packet,
             image,
             reflectivity,
             stats,

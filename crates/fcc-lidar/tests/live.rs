@@ -277,6 +277,12 @@ fn the_socket_gives_the_frames_of_the_capture_and_ends_when_idle() {
     assert!(f.complete && f.lost_columns == 0);
     assert!(want[0].timestamp_ns > 0);
     assert_eq!(f.sensor_ns, Some(want[0].timestamp_ns));
+    // Every column's packet time is known, none later than the frame's end.
+    assert!(f
+        .column_received
+        .iter()
+        .all(|t| t.is_some_and(|t| t <= f.received_at)));
+    assert!((0..f.image.cols).all(|c| f.column_time(c).is_some()));
     assert_eq!(src.next_frame(&stop).unwrap().err(), Some(End::Idle));
     assert!(t.elapsed() < Duration::from_secs(10));
     let s = src.stats();
