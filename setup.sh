@@ -87,6 +87,8 @@ else
     run "python venv" python3 -m venv .venv
 fi
 run "python packages" .venv/bin/pip install -q --disable-pip-version-check -r sim/cocotb/requirements.txt
+# The third-party MCAP decoder the MCAP sink is tested with (crates/fcc-lidar/tests/mcap_sink.rs).
+run "python packages" .venv/bin/pip install -q --disable-pip-version-check -r crates/fcc-lidar/tests/requirements.txt
 
 # 3. The Python package `fcc` (python/, built by maturin from the Rust
 # crates; cargo reuses python/target, so a second run takes seconds) and its

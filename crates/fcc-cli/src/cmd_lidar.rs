@@ -24,6 +24,7 @@ use fcc_lidar::pipeline::{
     cluster_image, stream_image, ClosedRecord, PipelineConfig, PipelineResult,
 };
 use fcc_lidar::projection::{project, BackProjection, ProjectionConfig, VerticalLayout};
+use fcc_lidar::sinks::mcap::{McapFrame, McapSink};
 use fcc_lidar::source::{for_each_ouster_frame, Frame as Item, InputKind, Source, SourceOptions};
 use fcc_lidar::RangeImage;
 use indicatif::{ProgressBar, ProgressStyle};
@@ -136,7 +137,7 @@ impl GroundArgs {
         })
     }
 
-    fn params(&self, range_image: bool) -> anyhow::Result<GroundParams> {
+    pub(crate) fn params(&self, range_image: bool) -> anyhow::Result<GroundParams> {
         let p = GroundParams {
             method: self.method(range_image),
             max_slope_deg: self.ground_max_slope,
@@ -276,6 +277,11 @@ pub struct ClusterLidarArgs {
     /// in columns from each cluster's last column to its record.
     #[arg(long)]
     pub stream: bool,
+    /// Write a ROS 2 recording (MCAP): per frame a sensor_msgs/msg/PointCloud2
+    /// with the cluster `label` and a visualization_msgs/msg/MarkerArray of
+    /// the clusters' boxes (frames stamped 0.1 s apart from 0).
+    #[arg(long)]
+    pub mcap: Option<PathBuf>,
     /// Frames clustered in parallel (default: all cores).
     #[arg(long)]
     pub jobs: Option<usize>,
@@ -316,8 +322,9 @@ impl ClusterLidarArgs {
     /// Refuse outputs that would overwrite an input or each other.
     fn check_outputs(&self, name: &str, single: bool) -> anyhow::Result<()> {
         let mut outs = self.outputs(name, single);
-        // One table for the whole run, named as given.
+        // One table and one recording for the whole run, named as given.
         outs.extend(self.clusters.as_ref().map(|p| ("--clusters", p.clone())));
+        outs.extend(self.mcap.as_ref().map(|p| ("--mcap", p.clone())));
         let outs: Vec<(&str, &Path)> = outs.iter().map(|(f, p)| (*f, p.as_path())).collect();
         fcc_io::check_outputs(self.inputs(), &outs)?;
         Ok(())
@@ -356,6 +363,13 @@ fn output_path(out: &Path, name: &str, single: bool) -> PathBuf {
         .unwrap_or_default();
     out.with_file_name(format!("{}_{name}{ext}", stem(out)))
 }
+
+/// What `process` gives for one result: its `--stats` line, its rows of the
+/// cluster table, and with `--mcap` its points, their labels and its rows.
+type Processed = (String, Vec<ClusterRow>, Option<McapParts>);
+
+/// Points, their labels and the clusters of one frame, for the MCAP sink.
+pub(crate) type McapParts = (Vec<[f32; 3]>, Vec<u32>, Vec<ClusterRow>);
 
 /// Per point of the outputs: coordinates, cluster, ground, intensity.
 type PerPoint = (Vec<[f32; 3]>, Vec<u32>, Vec<bool>, Option<Vec<f32>>);
@@ -542,7 +556,7 @@ fn process(
     item: &Item,
     single: bool,
     hw: Option<&dyn Hardware>,
-) -> anyhow::Result<(String, Vec<ClusterRow>)> {
+) -> anyhow::Result<Processed> {
     args.check_outputs(&item.name, single)?;
     let t = Instant::now();
     let (mut out, streamed): (PipelineResult, Option<(Vec<ClosedRecord>, u32)>) = if args.stream {
@@ -630,33 +644,7 @@ fn process(
         fcc_npy::write_labels(&path, item.image.rows, item.image.cols, &out.labels)?;
         wrote.push(path);
     }
-    // Per-point labels: every input point of a cloud, valid pixels otherwise.
-    let (points, labels, ground, intensity): PerPoint = match &item.projection {
-        Some((proj, pts)) => {
-            let labels = proj.labels_to_points(&out.labels, BackProjection::default())?;
-            let g: Vec<u32> = out.ground.mask.iter().map(|&g| u32::from(g)).collect();
-            let ground = proj.labels_to_points(&g, BackProjection::default())?;
-            (
-                pts.clone(),
-                labels,
-                ground.iter().map(|&g| g == 1).collect(),
-                item.intensity.clone(),
-            )
-        }
-        None => {
-            let idx: Vec<usize> = (0..item.image.pixels())
-                .filter(|&i| item.image.point(i).is_some())
-                .collect();
-            (
-                idx.iter().filter_map(|&i| item.image.point(i)).collect(),
-                idx.iter().map(|&i| out.labels[i]).collect(),
-                idx.iter().map(|&i| out.ground.mask[i]).collect(),
-                item.intensity
-                    .as_ref()
-                    .map(|v| idx.iter().map(|&i| v[i]).collect()),
-            )
-        }
-    };
+    let (points, labels, ground, intensity) = per_point(item, &out)?;
     // For point clouds, also score every input point, not only the pixel
     // winners (`fcc eval` scores pixels, as `quality` does).
     let quality_per_point = match &item.truth_points {
@@ -732,37 +720,110 @@ fn process(
         quality,
         quality_per_point,
     };
-    let rows = if args.clusters.is_some() || args.stream {
-        let mut rows = cluster_rows(&item.name, &points, &labels, &out.labels, item.image.cols)?;
-        // The record of each cluster: the stream's, in closing order, or
-        // computed from the frame's pixels.
-        let records: Vec<(fcc_golden::Record, Option<fcc_golden::OrientedBox>)> = match streamed {
-            Some((records, _)) => records
-                .into_iter()
-                .map(|c| (c.record, c.oriented_box))
-                .collect(),
-            None => {
-                let kept = item.image.without(&out.ground.mask).to_frame();
-                frame_cluster_records(&out.params, &kept, &out.labels, out.clusters)
-            }
-        };
-        let mut by_id: Vec<Option<ClusterRow>> = vec![None; records.len() + 1];
-        for row in rows.drain(..) {
-            if let Some(slot) = by_id.get_mut(row.cluster as usize) {
-                *slot = Some(row);
-            }
-        }
-        for (r, obb) in &records {
-            if let Some(mut row) = by_id[r.id as usize].take() {
-                row.set_record(r, obb.as_ref());
-                rows.push(row);
-            }
-        }
-        rows
+    let rows = if args.clusters.is_some() || args.stream || args.mcap.is_some() {
+        table_rows(item, &out, &points, &labels, streamed.map(|(r, _)| r))?
     } else {
         Vec::new()
     };
-    Ok((serde_json::to_string(&stats)?, rows))
+    let mcap = args
+        .mcap
+        .is_some()
+        .then(|| (points.clone(), labels.clone(), rows.clone()));
+    Ok((serde_json::to_string(&stats)?, rows, mcap))
+}
+
+/// Per point of the outputs: every input point of a cloud, valid pixels
+/// otherwise.
+pub(crate) fn per_point(item: &Item, out: &PipelineResult) -> anyhow::Result<PerPoint> {
+    Ok(match &item.projection {
+        Some((proj, pts)) => {
+            let labels = proj.labels_to_points(&out.labels, BackProjection::default())?;
+            let g: Vec<u32> = out.ground.mask.iter().map(|&g| u32::from(g)).collect();
+            let ground = proj.labels_to_points(&g, BackProjection::default())?;
+            (
+                pts.clone(),
+                labels,
+                ground.iter().map(|&g| g == 1).collect(),
+                item.intensity.clone(),
+            )
+        }
+        None => {
+            let idx: Vec<usize> = (0..item.image.pixels())
+                .filter(|&i| item.image.point(i).is_some())
+                .collect();
+            (
+                idx.iter().filter_map(|&i| item.image.point(i)).collect(),
+                idx.iter().map(|&i| out.labels[i]).collect(),
+                idx.iter().map(|&i| out.ground.mask[i]).collect(),
+                item.intensity
+                    .as_ref()
+                    .map(|v| idx.iter().map(|&i| v[i]).collect()),
+            )
+        }
+    })
+}
+
+/// The rows of the cluster table and of `--stream`'s JSON lines for one
+/// result: the stream's records in closing order (`streamed`), or frame
+/// mode's computed from the frame's pixels.
+fn table_rows(
+    item: &Item,
+    out: &PipelineResult,
+    points: &[[f32; 3]],
+    labels: &[u32],
+    streamed: Option<Vec<ClosedRecord>>,
+) -> anyhow::Result<Vec<ClusterRow>> {
+    let mut rows = cluster_rows(&item.name, points, labels, &out.labels, item.image.cols)?;
+    // The record of each cluster: the stream's, in closing order, or
+    // computed from the frame's pixels.
+    let records: Vec<(fcc_golden::Record, Option<fcc_golden::OrientedBox>)> = match streamed {
+        Some(records) => records
+            .into_iter()
+            .map(|c| (c.record, c.oriented_box))
+            .collect(),
+        None => {
+            let kept = item.image.without(&out.ground.mask).to_frame();
+            frame_cluster_records(&out.params, &kept, &out.labels, out.clusters)
+        }
+    };
+    let mut by_id: Vec<Option<ClusterRow>> = vec![None; records.len() + 1];
+    for row in rows.drain(..) {
+        if let Some(slot) = by_id.get_mut(row.cluster as usize) {
+            *slot = Some(row);
+        }
+    }
+    for (r, obb) in &records {
+        if let Some(mut row) = by_id[r.id as usize].take() {
+            row.set_record(r, obb.as_ref());
+            rows.push(row);
+        }
+    }
+    Ok(rows)
+}
+
+/// One frame through the golden stream exactly as `fcc cluster --stream`
+/// takes it: the result and the rows it prints, in closing order.
+pub(crate) fn stream_rows(
+    item: &Item,
+    cfg: &PipelineConfig,
+) -> anyhow::Result<(PipelineResult, Vec<ClusterRow>)> {
+    let s = stream_image(&item.image, cfg, |_| {}).with_context(|| item.name.clone())?;
+    let (points, labels, _, _) = per_point(item, &s.result)?;
+    let rows = table_rows(item, &s.result, &points, &labels, Some(s.records))?;
+    Ok((s.result, rows))
+}
+
+/// `--stream`'s output: one JSON line per record, flushed.
+pub(crate) fn write_json_lines(
+    out: &mut impl std::io::Write,
+    rows: &[ClusterRow],
+) -> anyhow::Result<()> {
+    for row in rows {
+        serde_json::to_writer(&mut *out, row)?;
+        out.write_all(b"\n")?;
+    }
+    out.flush()?;
+    Ok(())
 }
 
 fn progress_bar(len: Option<u64>, what: &str) -> ProgressBar {
@@ -832,8 +893,10 @@ pub fn run_cluster_on(args: &ClusterLidarArgs, hw: Option<&dyn Hardware>) -> any
     let pb = progress_bar(None, "frames");
     let mut lines = Vec::new();
     let mut table = Vec::new();
+    let mut mcap = args.mcap.as_deref().map(McapSink::create).transpose()?;
+    let mut mcap_frames = 0u64;
     let mut flush = |items: &mut Vec<Item>| -> anyhow::Result<()> {
-        let res: Vec<anyhow::Result<(String, Vec<ClusterRow>)>> = match hw {
+        let res: Vec<anyhow::Result<Processed>> = match hw {
             None => pool.install(|| {
                 items
                     .par_iter()
@@ -856,7 +919,17 @@ pub fn run_cluster_on(args: &ClusterLidarArgs, hw: Option<&dyn Hardware>) -> any
         pb.inc(items.len() as u64);
         items.clear();
         for r in res {
-            let (line, rows) = r?;
+            let (line, rows, parts) = r?;
+            if let (Some(sink), Some((points, labels, clusters))) = (&mut mcap, parts) {
+                sink.write(&McapFrame {
+                    stamp_ns: mcap_frames * 100_000_000,
+                    frame_id: "lidar",
+                    points: &points,
+                    labels: &labels,
+                    clusters: &clusters,
+                })?;
+                mcap_frames += 1;
+            }
             lines.push(line);
             table.extend(rows);
         }
@@ -875,15 +948,17 @@ pub fn run_cluster_on(args: &ClusterLidarArgs, hw: Option<&dyn Hardware>) -> any
     }
     flush(&mut items)?;
     pb.finish_and_clear();
+    if let (Some(sink), Some(p)) = (mcap, &args.mcap) {
+        sink.finish()?;
+        eprintln!("wrote {} ({mcap_frames} frames)", p.display());
+    }
     if lines.is_empty() {
         bail!("no frame was clustered: nothing written");
     }
     if let Some(p) = &args.clusters {
         write_cluster_table(p, &table)?;
     } else if args.stream {
-        for row in &table {
-            println!("{}", serde_json::to_string(row)?);
-        }
+        write_json_lines(&mut std::io::stdout().lock(), &table)?;
     }
     if args.stats {
         for l in &lines {

@@ -11,6 +11,7 @@ mod cmd_board;
 mod cmd_cycles;
 mod cmd_gen;
 mod cmd_lidar;
+mod cmd_live;
 mod cmd_results;
 mod cmd_scene;
 mod cmd_sim;
@@ -37,6 +38,11 @@ enum Command {
     /// ROS 2 recordings (.mcap), KITTI .bin, PCD, PLY or .npy range images in;
     /// labels, cluster tables, pictures and statistics out.
     Cluster(cmd_lidar::ClusterLidarArgs),
+    /// Cluster a live sensor: Ouster or Velodyne UDP packets in, one JSON
+    /// line per record out (as `cluster --stream`), frame by frame.
+    Live(cmd_live::LiveArgs),
+    /// Send a capture's UDP packets to a socket at their recorded timing.
+    Replay(cmd_live::ReplayArgs),
     /// Convert captures and point clouds to .npy range images (R, C, 3).
     Convert(cmd_lidar::ConvertArgs),
     /// Clustering quality (PQ, SQ, RQ, over/under-segmentation) per K and merge mode.
@@ -69,6 +75,8 @@ fn main() {
     let cli = Cli::parse();
     let result = match &cli.command {
         Command::Cluster(a) => cmd_lidar::run_cluster(a),
+        Command::Live(a) => cmd_live::run_live(a),
+        Command::Replay(a) => cmd_live::run_replay(a),
         Command::Convert(a) => cmd_lidar::run_convert(a),
         Command::Eval(a) => cmd_lidar::run_eval(a),
         Command::Scene(a) => cmd_scene::run(a),

@@ -13,13 +13,18 @@
 //!   every input point.
 //!
 //! [`source`] is the one way from a path to frames: it tells the file type
-//! and hands every input's range images on in order.
+//! and hands every input's range images on in order. [`live`] is the way
+//! from a socket: a sensor's UDP packets through the same packet decoders
+//! ([`ouster::OusterDecoder`], [`velodyne::VelodyneDecoder`]) that the
+//! capture readers use.
 //!
 //! [`ground`] removes the ground before clustering, [`pipeline`] runs ground
 //! removal, the golden model and the `--min-points` filter, [`labels`] and
 //! [`picture`] write `.label` files and PNG pictures, [`clusters`] the
 //! per-cluster table, and [`eval`] (fcc's rules) and [`semantickitti`]
 //! (SemanticKITTI's own) measure clusterings against ground truth.
+//! [`sinks`] write clustered frames in the formats viewers open (MCAP
+//! with ROS 2 messages).
 //! `docs/lidar.md` describes the formats, conventions and metric
 //! definitions.
 //!
@@ -50,6 +55,7 @@ pub mod eval;
 pub mod ground;
 pub mod image;
 pub mod labels;
+pub mod live;
 pub mod ouster;
 pub mod pcap;
 pub mod picture;
@@ -57,6 +63,7 @@ pub mod pipeline;
 pub mod projection;
 pub mod rosbag;
 pub mod semantickitti;
+pub mod sinks;
 pub mod source;
 pub mod velodyne;
 

@@ -501,6 +501,30 @@ pub fn shifts_from_azimuth(azimuth_deg: &[f64], columns: usize) -> Vec<i64> {
     raw.iter().map(|s| s - min).collect()
 }
 
+/// Add `add` to the frame id of a lidar packet of `meta`'s layout (in the
+/// packet header, or in every column header of LEGACY packets), as a
+/// replay does to send a capture's rotation again as a new frame. False,
+/// and the packet untouched, when it is not a lidar packet of that size.
+pub fn bump_frame_id(meta: &OusterMetadata, packet: &mut [u8], add: u16) -> bool {
+    if packet.len() != meta.packet_size() {
+        return false;
+    }
+    let bump = |b: &mut [u8]| {
+        let id = u16::from_le_bytes([b[0], b[1]]).wrapping_add(add);
+        b.copy_from_slice(&id.to_le_bytes());
+    };
+    let p = meta.profile;
+    if p == Profile::Legacy {
+        let col = p.column_header() + meta.pixels_per_column * p.pixel_bytes() + p.column_footer();
+        for c in 0..meta.columns_per_packet {
+            bump(&mut packet[c * col + 10..c * col + 12]);
+        }
+    } else {
+        bump(&mut packet[2..4]);
+    }
+    true
+}
+
 /// Options of the decoder.
 #[derive(Debug, Clone, Default)]
 pub struct DecodeOptions {
@@ -515,6 +539,13 @@ pub struct DecodeOptions {
 #[derive(Debug, Clone)]
 pub struct OusterFrame {
     pub frame_id: u16,
+    /// The timestamp of the frame's first column received, nanoseconds, as
+    /// the sensor stamps its columns (its own clock: PTP or GPS time when
+    /// synchronised, else time since power-on).
+    pub timestamp_ns: u64,
+    /// Per measurement column, the decoded packet that brought it (its
+    /// number in `CaptureStats::lidar_packets`, from 1; 0 for none).
+    pub column_packet: Vec<u64>,
     /// Destaggered: rows = beams (row 0 the top beam), cols = columns per frame.
     pub image: RangeImage,
     /// Reflectivity per pixel of `image` (NaN where it has no return).
@@ -616,55 +647,44 @@ impl Lut {
 /// Collects the columns of the frame being received.
 struct Assembly {
     frame_id: u16,
+    /// The sensor's timestamp of the first column received.
+    timestamp_ns: u64,
     range_mm: Vec<u32>,
     reflectivity: Vec<u16>,
     received: Vec<bool>,
+    /// The decoded packet (the count of `lidar_packets` after it) that
+    /// brought each measurement column, 0 for none.
+    column_packet: Vec<u64>,
     stats: FrameStats,
 }
 
-/// Decodes the lidar packets of a capture into frames, one at a time.
-pub struct OusterReader<R: Read> {
+/// The packet-level decoder: lidar packets in, whatever their transport (a
+/// capture file or a socket), frames out. It holds one frame being received
+/// and nothing else, so its memory stays bounded however long it runs.
+pub struct OusterDecoder {
     meta: OusterMetadata,
     opts: DecodeOptions,
     lut: Lut,
-    pcap: PcapReader<R>,
     current: Option<Assembly>,
     stats: CaptureStats,
-    finished: bool,
 }
 
-impl OusterReader<BufReader<File>> {
-    /// Open a capture with its metadata.
-    pub fn open(pcap: &Path, meta: &OusterMetadata, opts: DecodeOptions) -> Result<Self> {
-        OusterReader::new(PcapReader::open(pcap)?, meta, opts)
-    }
-}
-
-impl<R: Read> OusterReader<R> {
-    /// Decode the datagrams of an open capture.
-    pub fn new(pcap: PcapReader<R>, meta: &OusterMetadata, opts: DecodeOptions) -> Result<Self> {
+impl OusterDecoder {
+    /// A decoder for the packets of the sensor `meta` describes.
+    pub fn new(meta: &OusterMetadata, opts: DecodeOptions) -> Result<Self> {
         if !(opts.min_range_m.is_finite() && opts.min_range_m >= 0.0) {
             return Err(LidarError::Config(format!(
                 "minimum range {} m must be a non-negative number",
                 opts.min_range_m
             )));
         }
-        Ok(OusterReader {
+        Ok(OusterDecoder {
             lut: Lut::new(meta, opts.frame),
             meta: meta.clone(),
             opts,
-            pcap,
             current: None,
             stats: CaptureStats::default(),
-            finished: false,
         })
-    }
-
-    /// What was met so far.
-    pub fn stats(&self) -> CaptureStats {
-        let mut s = self.stats.clone();
-        s.pcap = self.pcap.stats().clone();
-        s
     }
 
     /// The metadata in use.
@@ -672,44 +692,45 @@ impl<R: Read> OusterReader<R> {
         &self.meta
     }
 
-    /// The next frame, `Ok(None)` at the end of the capture.
-    pub fn next_frame(&mut self) -> Result<Option<OusterFrame>> {
-        while !self.finished {
-            let Some(d) = self.pcap.next_datagram()? else {
-                self.finished = true;
-                if let Some(a) = self.current.take() {
-                    if let Some(f) = self.finish(a) {
-                        return Ok(Some(f));
-                    }
-                }
-                break;
-            };
-            let size = self.meta.packet_size();
-            let on_lidar_port = self.meta.udp_port_lidar == Some(d.dst_port);
-            let on_imu_port = self.meta.udp_port_imu == Some(d.dst_port);
-            if d.payload.len() != size {
-                if on_lidar_port {
-                    self.stats.malformed_packets += 1;
-                } else if on_imu_port || d.payload.len() == LEGACY_IMU_PACKET {
-                    self.stats.imu_packets += 1;
-                } else {
-                    *self
-                        .stats
-                        .other_datagrams
-                        .entry(d.payload.len())
-                        .or_insert(0) += 1;
-                }
-                continue;
-            }
-            if on_imu_port {
+    /// What was met so far (`pcap` is left to the transport).
+    pub fn stats(&self) -> &CaptureStats {
+        &self.stats
+    }
+
+    /// The columns received so far of the frame being assembled.
+    pub fn pending_columns(&self) -> usize {
+        self.current.as_ref().map_or(0, |a| a.stats.columns)
+    }
+
+    /// One UDP payload sent to `dst_port`: returns a frame it completed, if
+    /// any. Datagrams that are not lidar packets (IMU packets, other sizes)
+    /// are counted and skipped; a bad lidar packet is counted and skipped
+    /// whole.
+    pub fn push(&mut self, dst_port: u16, payload: &[u8]) -> Option<OusterFrame> {
+        let size = self.meta.packet_size();
+        let on_lidar_port = self.meta.udp_port_lidar == Some(dst_port);
+        let on_imu_port = self.meta.udp_port_imu == Some(dst_port);
+        if payload.len() != size {
+            if on_lidar_port {
+                self.stats.malformed_packets += 1;
+            } else if on_imu_port || payload.len() == LEGACY_IMU_PACKET {
                 self.stats.imu_packets += 1;
-                continue;
+            } else {
+                *self.stats.other_datagrams.entry(payload.len()).or_insert(0) += 1;
             }
-            if let Some(f) = self.packet(&d.payload) {
-                return Ok(Some(f));
-            }
+            return None;
         }
-        Ok(None)
+        if on_imu_port {
+            self.stats.imu_packets += 1;
+            return None;
+        }
+        self.packet(payload)
+    }
+
+    /// The end of the input: the frame being received, if it makes one.
+    pub fn flush(&mut self) -> Option<OusterFrame> {
+        let a = self.current.take()?;
+        self.close(a)
     }
 
     /// Decode one lidar packet; returns a frame it completed, if any.
@@ -765,7 +786,7 @@ impl<R: Read> OusterReader<R> {
             if self.current.as_ref().is_some_and(|a| a.frame_id != fid) {
                 if let Some(a) = self.current.take() {
                     // At most one frame ends per packet in practice; keep the first.
-                    let f = self.finish(a);
+                    let f = self.close(a);
                     if done.is_none() {
                         done = f;
                     }
@@ -774,15 +795,18 @@ impl<R: Read> OusterReader<R> {
             }
             let a = self.current.get_or_insert_with(|| Assembly {
                 frame_id: fid,
+                timestamp_ns: u64::from_le_bytes([c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7]]),
                 range_mm: vec![0; h * w],
                 reflectivity: vec![0; h * w],
                 received: vec![false; w],
+                column_packet: vec![0; w],
                 stats: FrameStats::default(),
             });
             if !counted {
                 a.stats.packets += 1;
                 counted = true;
             }
+            a.column_packet[mid] = self.stats.lidar_packets;
             if a.received[mid] {
                 self.stats.duplicate_columns += 1;
             } else {
@@ -804,7 +828,7 @@ impl<R: Read> OusterReader<R> {
     }
 
     /// Turn a finished assembly into a frame, or count it as incomplete.
-    fn finish(&mut self, a: Assembly) -> Option<OusterFrame> {
+    fn close(&mut self, a: Assembly) -> Option<OusterFrame> {
         let m = &self.meta;
         let (h, w) = (m.pixels_per_column, m.columns_per_frame);
         let complete = (0..w).filter(|&v| m.in_window(v)).all(|v| a.received[v]);
@@ -835,10 +859,64 @@ impl<R: Read> OusterReader<R> {
         stats.complete = complete;
         Some(OusterFrame {
             frame_id: a.frame_id,
+            timestamp_ns: a.timestamp_ns,
+            column_packet: a.column_packet,
             image,
             reflectivity,
             stats,
         })
+    }
+}
+
+/// Decodes the lidar packets of a capture into frames, one at a time: the
+/// capture's datagrams through an [`OusterDecoder`].
+pub struct OusterReader<R: Read> {
+    decoder: OusterDecoder,
+    pcap: PcapReader<R>,
+    finished: bool,
+}
+
+impl OusterReader<BufReader<File>> {
+    /// Open a capture with its metadata.
+    pub fn open(pcap: &Path, meta: &OusterMetadata, opts: DecodeOptions) -> Result<Self> {
+        OusterReader::new(PcapReader::open(pcap)?, meta, opts)
+    }
+}
+
+impl<R: Read> OusterReader<R> {
+    /// Decode the datagrams of an open capture.
+    pub fn new(pcap: PcapReader<R>, meta: &OusterMetadata, opts: DecodeOptions) -> Result<Self> {
+        Ok(OusterReader {
+            decoder: OusterDecoder::new(meta, opts)?,
+            pcap,
+            finished: false,
+        })
+    }
+
+    /// What was met so far.
+    pub fn stats(&self) -> CaptureStats {
+        let mut s = self.decoder.stats().clone();
+        s.pcap = self.pcap.stats().clone();
+        s
+    }
+
+    /// The metadata in use.
+    pub fn metadata(&self) -> &OusterMetadata {
+        self.decoder.metadata()
+    }
+
+    /// The next frame, `Ok(None)` at the end of the capture.
+    pub fn next_frame(&mut self) -> Result<Option<OusterFrame>> {
+        while !self.finished {
+            let Some(d) = self.pcap.next_datagram()? else {
+                self.finished = true;
+                return Ok(self.decoder.flush());
+            };
+            if let Some(f) = self.decoder.push(d.dst_port, &d.payload) {
+                return Ok(Some(f));
+            }
+        }
+        Ok(None)
     }
 }
 

@@ -26,6 +26,9 @@ pub struct UdpDatagram {
     pub src_port: u16,
     pub dst_port: u16,
     pub payload: Vec<u8>,
+    /// Capture time of the record that completed it, microseconds since the
+    /// epoch (pcapng: taken in the default microsecond resolution).
+    pub time_us: u64,
 }
 
 /// What the reader met on its way through a capture.
@@ -56,8 +59,15 @@ pub struct PcapStats {
 
 #[derive(Debug, Clone, Copy)]
 enum Format {
-    Classic { swapped: bool, linktype: u32 },
-    Ng { swapped: bool },
+    /// `nanos`: record times in nanoseconds (magic a1b23c4d).
+    Classic {
+        swapped: bool,
+        linktype: u32,
+        nanos: bool,
+    },
+    Ng {
+        swapped: bool,
+    },
 }
 
 /// Reads UDP datagrams out of a classic pcap or pcapng stream.
@@ -72,6 +82,8 @@ pub struct PcapReader<R: Read> {
     ready: VecDeque<UdpDatagram>,
     stats: PcapStats,
     done: bool,
+    /// Capture time of the latest record, microseconds.
+    record_time_us: u64,
 }
 
 impl PcapReader<BufReader<File>> {
@@ -129,10 +141,12 @@ impl<R: Read> PcapReader<R> {
             0xa1b2_c3d4 | 0xa1b2_3c4d => Format::Classic {
                 swapped: false,
                 linktype: 0,
+                nanos: magic == 0xa1b2_3c4d,
             },
             0xd4c3_b2a1 | 0x4d3c_b2a1 => Format::Classic {
                 swapped: true,
                 linktype: 0,
+                nanos: magic == 0x4d3c_b2a1,
             },
             0x0a0d_0d0a => Format::Ng { swapped: false },
             _ => {
@@ -151,9 +165,10 @@ impl<R: Read> PcapReader<R> {
             ready: VecDeque::new(),
             stats: PcapStats::default(),
             done: false,
+            record_time_us: 0,
         };
         match format {
-            Format::Classic { swapped, .. } => {
+            Format::Classic { swapped, nanos, .. } => {
                 if got < 24 {
                     return Err(not(format!(
                         "the 24-byte file header is cut at {got} bytes"
@@ -165,6 +180,7 @@ impl<R: Read> PcapReader<R> {
                 }
                 me.format = Format::Classic {
                     swapped,
+                    nanos,
                     linktype: u32_at(&head[20..24], swapped) & 0x0fff_ffff,
                 };
                 me.offset = 24;
@@ -268,11 +284,20 @@ impl<R: Read> PcapReader<R> {
     /// The next packet record: (link type, captured bytes, length on the wire).
     fn next_record(&mut self) -> Result<Option<(u32, Vec<u8>, usize)>> {
         match self.format {
-            Format::Classic { swapped, linktype } => {
+            Format::Classic {
+                swapped,
+                linktype,
+                nanos,
+            } => {
                 let Some(h) = self.read_head(16)? else {
                     // A clean end of file reads zero bytes of the header.
                     return Ok(None);
                 };
+                let (sec, frac) = (
+                    u64::from(u32_at(&h[0..4], swapped)),
+                    u64::from(u32_at(&h[4..8], swapped)),
+                );
+                self.record_time_us = sec * 1_000_000 + if nanos { frac / 1000 } else { frac };
                 let incl = u32_at(&h[8..12], swapped) as usize;
                 let orig = u32_at(&h[12..16], swapped) as usize;
                 if incl > MAX_RECORD {
@@ -317,6 +342,13 @@ impl<R: Read> PcapReader<R> {
                         };
                         let cap = u32_at(&body[12..16], swapped) as usize;
                         let orig = u32_at(&body[16..20], swapped) as usize;
+                        if btype == 6 {
+                            let (hi, lo) = (
+                                u64::from(u32_at(&body[4..8], swapped)),
+                                u64::from(u32_at(&body[8..12], swapped)),
+                            );
+                            self.record_time_us = (hi << 32) | lo;
+                        }
                         let Some(&linktype) = self.interfaces.get(iface) else {
                             return Err(self.corrupt(format!(
                                 "packet names interface {iface}, which was never described"
@@ -487,6 +519,7 @@ impl<R: Read> PcapReader<R> {
             src_port: u16::from_be_bytes([udp[0], udp[1]]),
             dst_port: u16::from_be_bytes([udp[2], udp[3]]),
             payload: udp[8..end].to_vec(),
+            time_us: self.record_time_us,
         });
     }
 }

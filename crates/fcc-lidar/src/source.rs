@@ -178,8 +178,8 @@ pub struct Frame {
 }
 
 impl Frame {
-    /// A range image as it stands: every point is a pixel.
-    fn image(name: String, image: RangeImage, intensity: Option<Vec<f32>>) -> Frame {
+    /// A range image as it stands (a sensor's): every point is a pixel.
+    pub fn image(name: String, image: RangeImage, intensity: Option<Vec<f32>>) -> Frame {
         Frame {
             name,
             range_image: false,
@@ -510,7 +510,7 @@ pub fn metadata_for(capture: &Path, meta: Option<&Path>) -> Result<OusterMetadat
     OusterMetadata::from_file(&path)
 }
 
-fn decode_options(o: &SourceOptions) -> DecodeOptions {
+pub(crate) fn decode_options(o: &SourceOptions) -> DecodeOptions {
     DecodeOptions {
         frame: if o.lidar_frame {
             CoordFrame::Lidar

@@ -715,10 +715,13 @@ impl Rotation {
     }
 }
 
-/// Decodes the data packets of a capture into rotations, one at a time.
-pub struct VelodyneReader<R: Read> {
+/// The packet-level decoder: data packets in, whatever their transport (a
+/// capture file or a socket), rotations out. It holds one rotation being
+/// received and nothing else, so its memory stays bounded however long it
+/// runs.
+pub struct VelodyneDecoder {
+    /// Names the input in messages.
     path: PathBuf,
-    pcap: PcapReader<R>,
     opts: VelodyneOptions,
     calibration: Option<VelodyneCalibration>,
     /// Row of each laser.
@@ -730,19 +733,11 @@ pub struct VelodyneReader<R: Read> {
     last_block_azimuth: Option<u16>,
     index: usize,
     stats: VelodyneStats,
-    finished: bool,
 }
 
-impl VelodyneReader<BufReader<File>> {
-    /// Open a capture.
-    pub fn open(path: &Path, opts: VelodyneOptions) -> Result<Self> {
-        VelodyneReader::new(path, PcapReader::open(path)?, opts)
-    }
-}
-
-impl<R: Read> VelodyneReader<R> {
-    /// Decode the datagrams of an open capture; `path` is used in messages.
-    pub fn new(path: &Path, pcap: PcapReader<R>, opts: VelodyneOptions) -> Result<Self> {
+impl VelodyneDecoder {
+    /// A decoder; `path` names the input in messages.
+    pub fn new(path: &Path, opts: VelodyneOptions) -> Result<Self> {
         if let Some(c) = opts.columns {
             if !(2..=MAX_COLUMNS).contains(&c) {
                 return Err(LidarError::Config(format!(
@@ -750,9 +745,8 @@ impl<R: Read> VelodyneReader<R> {
                 )));
             }
         }
-        let mut me = VelodyneReader {
+        let mut me = VelodyneDecoder {
             path: path.to_path_buf(),
-            pcap,
             columns: opts.columns,
             opts,
             calibration: None,
@@ -762,7 +756,6 @@ impl<R: Read> VelodyneReader<R> {
             last_block_azimuth: None,
             index: 0,
             stats: VelodyneStats::default(),
-            finished: false,
         };
         if let Some(m) = me.opts.model {
             me.set_model(m)?;
@@ -806,32 +799,33 @@ impl<R: Read> VelodyneReader<R> {
         self.calibration.as_ref()
     }
 
-    /// What was met so far.
-    pub fn stats(&self) -> VelodyneStats {
-        let mut s = self.stats.clone();
-        s.pcap = self.pcap.stats().clone();
-        s
+    /// What was met so far (`pcap` is left to the transport).
+    pub fn stats(&self) -> &VelodyneStats {
+        &self.stats
     }
 
-    /// The next rotation, `Ok(None)` at the end of the capture.
-    pub fn next_frame(&mut self) -> Result<Option<VelodyneFrame>> {
-        while !self.finished {
-            let Some(d) = self.pcap.next_datagram()? else {
-                self.finished = true;
-                let last = std::mem::take(&mut self.current);
-                return Ok(self.finish(last, false));
-            };
-            match d.payload.len() {
-                DATA_PACKET => {
-                    if let Some(f) = self.packet(&d.payload)? {
-                        return Ok(Some(f));
-                    }
-                }
-                POSITION_PACKET => self.stats.position_packets += 1,
-                n => *self.stats.other_datagrams.entry(n).or_insert(0) += 1,
-            }
+    /// Firing sequences received so far of the rotation being assembled.
+    pub fn pending_sequences(&self) -> usize {
+        self.current.sequences
+    }
+
+    /// One UDP payload: returns a rotation it completed, if any. Position
+    /// packets and datagrams of other sizes are counted and skipped; a bad
+    /// data packet is counted and skipped whole. An error only when the
+    /// model is to be told from the packets and a packet names none.
+    pub fn push(&mut self, payload: &[u8]) -> Result<Option<VelodyneFrame>> {
+        match payload.len() {
+            DATA_PACKET => return self.packet(payload),
+            POSITION_PACKET => self.stats.position_packets += 1,
+            n => *self.stats.other_datagrams.entry(n).or_insert(0) += 1,
         }
         Ok(None)
+    }
+
+    /// The end of the input: the rotation being received, if it makes one.
+    pub fn flush(&mut self) -> Option<VelodyneFrame> {
+        let last = std::mem::take(&mut self.current);
+        self.finish(last, false)
     }
 
     /// Decode one data packet; returns a rotation it completed, if any.
@@ -1044,6 +1038,63 @@ impl<R: Read> VelodyneReader<R> {
             complete,
             returns,
         })
+    }
+}
+
+/// Decodes the data packets of a capture into rotations, one at a time:
+/// the capture's datagrams through a [`VelodyneDecoder`].
+pub struct VelodyneReader<R: Read> {
+    decoder: VelodyneDecoder,
+    pcap: PcapReader<R>,
+    finished: bool,
+}
+
+impl VelodyneReader<BufReader<File>> {
+    /// Open a capture.
+    pub fn open(path: &Path, opts: VelodyneOptions) -> Result<Self> {
+        VelodyneReader::new(path, PcapReader::open(path)?, opts)
+    }
+}
+
+impl<R: Read> VelodyneReader<R> {
+    /// Decode the datagrams of an open capture; `path` is used in messages.
+    pub fn new(path: &Path, pcap: PcapReader<R>, opts: VelodyneOptions) -> Result<Self> {
+        Ok(VelodyneReader {
+            decoder: VelodyneDecoder::new(path, opts)?,
+            pcap,
+            finished: false,
+        })
+    }
+
+    /// The model in use (known after the first data packet when not given).
+    pub fn model(&self) -> Option<VelodyneModel> {
+        self.decoder.model()
+    }
+
+    /// The calibration in use.
+    pub fn calibration(&self) -> Option<&VelodyneCalibration> {
+        self.decoder.calibration()
+    }
+
+    /// What was met so far.
+    pub fn stats(&self) -> VelodyneStats {
+        let mut s = self.decoder.stats().clone();
+        s.pcap = self.pcap.stats().clone();
+        s
+    }
+
+    /// The next rotation, `Ok(None)` at the end of the capture.
+    pub fn next_frame(&mut self) -> Result<Option<VelodyneFrame>> {
+        while !self.finished {
+            let Some(d) = self.pcap.next_datagram()? else {
+                self.finished = true;
+                return Ok(self.decoder.flush());
+            };
+            if let Some(f) = self.decoder.push(&d.payload)? {
+                return Ok(Some(f));
+            }
+        }
+        Ok(None)
     }
 }
 

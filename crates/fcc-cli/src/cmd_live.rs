@@ -1,0 +1,369 @@
+//! `fcc live`: a sensor's UDP packets in, the records of `fcc cluster
+//! --stream` out as JSON lines, frame by frame as each frame's last packet
+//! arrives; `fcc replay`: a capture's packets sent to a socket at their
+//! recorded timing, to feed `fcc live` without a sensor.
+
+use crate::cmd_lidar::{per_point, stream_rows, write_json_lines, GroundArgs};
+use crate::model_args::ModelArgs;
+use crate::sensor_args::VelodyneArgs;
+use anyhow::{bail, Context};
+use clap::Args;
+use fcc_golden::MergeMode;
+use fcc_lidar::live::{Decoder, End, LiveOptions, LiveSource};
+use fcc_lidar::ouster::{bump_frame_id, OusterMetadata};
+use fcc_lidar::pcap::PcapReader;
+use fcc_lidar::pipeline::PipelineConfig;
+use fcc_lidar::sinks::mcap::{McapFrame, McapSink};
+use fcc_lidar::source::{Frame as Item, SourceOptions};
+use std::net::{SocketAddr, ToSocketAddrs, UdpSocket};
+use std::path::PathBuf;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
+use std::time::{Duration, Instant};
+
+#[derive(Args, Debug)]
+pub struct LiveArgs {
+    /// Where to listen: ADDR:PORT, or ADDR for the sensor's default port
+    /// (Ouster: the metadata's udp_port_lidar, else 7502; Velodyne: 2368).
+    #[arg(long, default_value = "0.0.0.0")]
+    pub udp: String,
+    /// Ouster metadata JSON of the sensor (makes the input Ouster).
+    #[arg(long)]
+    pub meta: Option<PathBuf>,
+    /// Also cluster frames that miss columns or packets (missing columns
+    /// are empty; each such frame is reported on stderr).
+    #[arg(long)]
+    pub keep_incomplete: bool,
+    /// Ouster: points in the lidar frame instead of the sensor frame.
+    #[arg(long)]
+    pub lidar_frame: bool,
+    #[command(flatten)]
+    pub velodyne: VelodyneArgs,
+    #[command(flatten)]
+    pub model: ModelArgs,
+    #[command(flatten)]
+    pub ground: GroundArgs,
+    /// Drop clusters of N points or fewer (the authors' pipeline used 40).
+    #[arg(long, default_value_t = 0)]
+    pub min_points: usize,
+    /// Stop after N frames.
+    #[arg(long)]
+    pub frames: Option<u64>,
+    /// Seconds without a packet after which the stream has ended (before
+    /// the first packet: an error).
+    #[arg(long, allow_negative_numbers = true, default_value_t = 5.0)]
+    pub idle_timeout: f64,
+    /// Name of the frames in the records (`<NAME>_f<frame>`, as `fcc
+    /// cluster` names a capture's frames after its file).
+    #[arg(long, default_value = "live")]
+    pub name: String,
+    /// Print, at the end, on stderr: the time from receiving the packet that
+    /// completed each frame to writing its records, and from receiving the
+    /// packet of each cluster's last column (Ouster; the frame's completing
+    /// packet for Velodyne) to writing its record (p50, p99, max, ms;
+    /// frames delivered by the idle timeout left out).
+    #[arg(long)]
+    pub latency: bool,
+    /// Also write a ROS 2 recording (MCAP): per frame a
+    /// sensor_msgs/msg/PointCloud2 with the cluster `label` and a
+    /// visualization_msgs/msg/MarkerArray of the clusters' boxes, stamped
+    /// with the sensor's timestamp (Ouster) or the time the frame's last
+    /// packet was received (Velodyne).
+    #[arg(long)]
+    pub mcap: Option<PathBuf>,
+    /// Serve the frames live to Foxglove over WebSocket (the Foxglove SDK)
+    /// on ADDR (default 127.0.0.1:8765): the points coloured by cluster on
+    /// /fcc/points and the boxes with their ids on /fcc/clusters.
+    #[cfg(feature = "foxglove")]
+    #[arg(long, value_name = "ADDR", num_args = 0..=1, default_missing_value = fcc_viz::DEFAULT_ADDR)]
+    pub foxglove: Option<String>,
+}
+
+/// The address to listen on: `spec` with the decoder's default port when
+/// it names none.
+fn listen_addr(spec: &str, default_port: u16) -> anyhow::Result<SocketAddr> {
+    let with_port = if spec.parse::<SocketAddr>().is_ok()
+        || spec
+            .rsplit_once(':')
+            .is_some_and(|(h, p)| !h.contains(':') && p.parse::<u16>().is_ok())
+    {
+        spec.to_string()
+    } else {
+        format!("{spec}:{default_port}")
+    };
+    with_port
+        .to_socket_addrs()
+        .with_context(|| format!("--udp {spec}: not an address (give ADDR:PORT or ADDR)"))?
+        .next()
+        .with_context(|| format!("--udp {spec}: names no address"))
+}
+
+pub fn run_live(args: &LiveArgs) -> anyhow::Result<()> {
+    if args.model.merge != MergeMode::Exact {
+        bail!("fcc live clusters with the stream, exactly (spec §9): drop --merge paper");
+    }
+    if !(args.idle_timeout.is_finite() && args.idle_timeout > 0.0) {
+        bail!(
+            "--idle-timeout {}: give a positive number of seconds",
+            args.idle_timeout
+        );
+    }
+    let opts = SourceOptions {
+        meta: args.meta.clone(),
+        keep_incomplete: args.keep_incomplete,
+        lidar_frame: args.lidar_frame,
+        sensor: args.velodyne.sensor(),
+        velodyne: args.velodyne.options(),
+        ..SourceOptions::default()
+    };
+    let cfg = PipelineConfig {
+        params: args.model.params(1, 1)?,
+        mode: args.model.merge,
+        ground: args.ground.params(false)?,
+        min_points: args.min_points,
+    };
+    let decoder = Decoder::for_source(&opts)?;
+    let addr = listen_addr(&args.udp, decoder.default_port())?;
+    let stop = Arc::new(AtomicBool::new(false));
+    {
+        let stop = stop.clone();
+        ctrlc::set_handler(move || stop.store(true, Ordering::Relaxed))
+            .context("cannot catch Ctrl-C")?;
+    }
+    let live = LiveOptions {
+        idle_timeout: Duration::from_secs_f64(args.idle_timeout),
+    };
+    let mut mcap = args.mcap.as_deref().map(McapSink::create).transpose()?;
+    let mut src = LiveSource::bind(addr, decoder, live)?;
+    // The port bound (the system's choice for port 0).
+    let addr = SocketAddr::new(addr.ip(), src.local_port());
+    let sensor = match src.decoder() {
+        Decoder::Ouster(_) => "Ouster",
+        Decoder::Velodyne(_) => "Velodyne",
+    };
+    eprintln!("listening on udp {addr} ({sensor} packets)");
+    #[cfg(feature = "foxglove")]
+    let mut viz = match &args.foxglove {
+        Some(a) => {
+            let v = fcc_viz::FoxgloveServer::start(a)?;
+            eprintln!(
+                "foxglove: ws://{}:{}",
+                a.rsplit_once(':').map_or("127.0.0.1", |(h, _)| h),
+                v.port()
+            );
+            Some(v)
+        }
+        None => None,
+    };
+    let (mut frames, mut clusters) = (0u64, 0usize);
+    let mut latency_ms: Vec<f64> = Vec::new();
+    // Per record: from the packet of its last column (Ouster) or of the
+    // frame's end (Velodyne) to its line written.
+    let mut record_ms: Vec<f64> = Vec::new();
+    let stdout = std::io::stdout();
+    let result = (|| -> anyhow::Result<()> {
+        loop {
+            if args.frames.is_some_and(|n| frames >= n) {
+                return Ok(());
+            }
+            let mut f = match src.next_frame(&stop)? {
+                Ok(f) => f,
+                Err(End::Stopped) => return Ok(()),
+                Err(End::Idle) => {
+                    eprintln!(
+                        "udp {addr}: no packet for {} s: the stream ended",
+                        args.idle_timeout
+                    );
+                    return Ok(());
+                }
+            };
+            let name = format!("{}_f{:05}", args.name, f.frame);
+            if !f.complete {
+                eprintln!(
+                    "warning: {name}: incomplete, {} columns lost (empty)",
+                    f.lost_columns
+                );
+            }
+            // The image moves into the item; the column times stay with `f`.
+            let image = std::mem::replace(&mut f.image, fcc_lidar::RangeImage::empty(0, 0));
+            let item = Item::image(name, image, Some(std::mem::take(&mut f.intensity)));
+            let (out, rows) = stream_rows(&item, &cfg)?;
+            write_json_lines(&mut stdout.lock(), &rows)?;
+            if !f.at_end {
+                let now = Instant::now();
+                latency_ms.push((now - f.received_at).as_secs_f64() * 1e3);
+                for r in &rows {
+                    let t = f
+                        .column_time(r.span_last_col as usize)
+                        .unwrap_or(f.received_at);
+                    record_ms.push(now.saturating_duration_since(t).as_secs_f64() * 1e3);
+                }
+            }
+            #[cfg(feature = "foxglove")]
+            let want_points = mcap.is_some() || viz.is_some();
+            #[cfg(not(feature = "foxglove"))]
+            let want_points = mcap.is_some();
+            if want_points {
+                // The sensor's stamp where its packets carry one, else the receive time.
+                let stamp_ns = f.sensor_ns.unwrap_or(f.received_unix_ns);
+                let (points, labels, _, _) = per_point(&item, &out)?;
+                if let Some(sink) = &mut mcap {
+                    sink.write(&McapFrame {
+                        stamp_ns,
+                        frame_id: "lidar",
+                        points: &points,
+                        labels: &labels,
+                        clusters: &rows,
+                    })?;
+                }
+                #[cfg(feature = "foxglove")]
+                if let Some(v) = &mut viz {
+                    v.publish(&fcc_viz::VizFrame {
+                        stamp_ns,
+                        frame_id: "lidar",
+                        points: &points,
+                        labels: &labels,
+                        clusters: &rows,
+                    });
+                }
+            }
+            frames += 1;
+            clusters += rows.len();
+        }
+    })();
+    let s = src.stats();
+    eprintln!(
+        "live: {frames} frames, {} packets, {} lost ({} columns, {} packets dropped, {} incomplete frames dropped), {} malformed, {} duplicate columns, {} from another sensor, {clusters} clusters",
+        s.packets,
+        s.lost_columns + s.dropped,
+        s.lost_columns,
+        s.dropped,
+        s.incomplete_frames,
+        s.malformed,
+        s.duplicate_columns,
+        s.foreign
+    );
+    if args.latency {
+        let summary = |v: &mut Vec<f64>| -> Option<String> {
+            if v.is_empty() {
+                return None;
+            }
+            v.sort_by(f64::total_cmp);
+            let q = |p: usize| v[((p * v.len()).div_ceil(100)).max(1) - 1];
+            Some(format!(
+                "p50 {:.2} ms, p99 {:.2} ms, max {:.2} ms",
+                q(50),
+                q(99),
+                v[v.len() - 1]
+            ))
+        };
+        if let Some(l) = summary(&mut latency_ms) {
+            eprintln!(
+                "latency from the packet that completed a frame to its records written: {l} over {} frames",
+                latency_ms.len()
+            );
+        }
+        if let Some(l) = summary(&mut record_ms) {
+            eprintln!(
+                "latency from the packet of a cluster's last column to its record written: {l} over {} records",
+                record_ms.len()
+            );
+        }
+    }
+    if let (Some(sink), Some(p)) = (mcap, &args.mcap) {
+        sink.finish()?;
+        eprintln!("wrote {} ({frames} frames)", p.display());
+    }
+    result
+}
+
+#[derive(Args, Debug)]
+pub struct ReplayArgs {
+    /// The capture (.pcap, .pcapng) whose UDP datagrams are sent.
+    pub capture: PathBuf,
+    /// Where to send them: ADDR:PORT.
+    #[arg(long)]
+    pub udp: String,
+    /// Speed relative to the recorded timing (2 = twice as fast; 0 = as
+    /// fast as possible).
+    #[arg(long, allow_negative_numbers = true, default_value_t = 1.0)]
+    pub rate: f64,
+    /// Send only the datagrams sent to this port in the capture (e.g. the
+    /// lidar port, leaving out IMU or position packets).
+    #[arg(long)]
+    pub only_port: Option<u16>,
+    /// Send the capture this many times, back to back at its own period
+    /// (for long runs and measurements).
+    #[arg(long, default_value_t = 1)]
+    pub repeat: u32,
+    /// Ouster metadata of the capture: each repeat then renumbers the frame
+    /// ids so that it arrives as new frames (Velodyne rotations need nothing).
+    #[arg(long)]
+    pub meta: Option<PathBuf>,
+}
+
+pub fn run_replay(args: &ReplayArgs) -> anyhow::Result<()> {
+    if !(args.rate.is_finite() && args.rate >= 0.0) {
+        bail!(
+            "--rate {}: give a non-negative number (0: as fast as possible)",
+            args.rate
+        );
+    }
+    let to: SocketAddr = args
+        .udp
+        .to_socket_addrs()
+        .with_context(|| format!("--udp {}: not an address (give ADDR:PORT)", args.udp))?
+        .next()
+        .with_context(|| format!("--udp {}: names no address", args.udp))?;
+    let bind = if to.is_ipv4() { "0.0.0.0:0" } else { "[::]:0" };
+    let socket = UdpSocket::bind(bind).context("cannot open a UDP socket")?;
+    let meta = args
+        .meta
+        .as_deref()
+        .map(OusterMetadata::from_file)
+        .transpose()?;
+    let start = Instant::now();
+    let mut sent = 0u64;
+    // Capture times of the first pass: first, last, datagrams.
+    let (mut first, mut last, mut count) = (None::<u64>, 0u64, 0u64);
+    let mut offset_us = 0.0f64;
+    for pass in 0..args.repeat {
+        if pass > 0 {
+            // One period of the capture: its span and one mean gap more.
+            let span = last.saturating_sub(first.unwrap_or(last)) as f64;
+            offset_us += span * count as f64 / (count.max(2) - 1) as f64;
+        }
+        let mut pcap = PcapReader::open(&args.capture)?;
+        while let Some(mut d) = pcap.next_datagram()? {
+            if args.only_port.is_some_and(|p| p != d.dst_port) {
+                continue;
+            }
+            if pass == 0 {
+                first.get_or_insert(d.time_us);
+                last = d.time_us;
+                count += 1;
+            }
+            if let Some(m) = &meta {
+                // Frame ids wrap at 2^16, as the sensor's do.
+                bump_frame_id(m, &mut d.payload, (pass % 65_536) as u16);
+            }
+            if args.rate > 0.0 {
+                let t = d.time_us.saturating_sub(first.unwrap_or(d.time_us)) as f64 + offset_us;
+                let due = Duration::from_secs_f64(t / 1e6 / args.rate);
+                if let Some(wait) = due.checked_sub(start.elapsed()) {
+                    std::thread::sleep(wait);
+                }
+            }
+            socket
+                .send_to(&d.payload, to)
+                .with_context(|| format!("udp {to}: cannot send"))?;
+            sent += 1;
+        }
+    }
+    eprintln!(
+        "{}: sent {sent} datagrams to udp {to} in {:.2} s",
+        args.capture.display(),
+        start.elapsed().as_secs_f64()
+    );
+    Ok(())
+}

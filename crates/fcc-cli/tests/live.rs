@@ -1,0 +1,448 @@
+//! `fcc live` and `fcc replay` on the loopback: live = offline, record for
+//! record (each Ouster capture and a Velodyne fixture replayed to `fcc live`
+//! gives the JSON lines `fcc cluster --stream` prints for the file); no
+//! packet at all is an error after the idle timeout; `--frames` stops.
+//! Every child is bounded in time and killed on failure.
+
+use fcc_testkit::{lidar_data, s};
+use std::io::{BufRead, BufReader, Read};
+use std::path::Path;
+use std::process::{Child, Command, Output, Stdio};
+use std::time::{Duration, Instant};
+
+const FCC: &str = env!("CARGO_BIN_EXE_fcc");
+/// No child runs longer than this.
+const LIMIT: Duration = Duration::from_secs(120);
+
+fn fcc(args: &[&str]) -> Output {
+    fcc_testkit::run_in(FCC, None, args)
+}
+
+/// A child that is killed when dropped (a failed assertion included).
+struct Guard(Option<Child>);
+
+impl Drop for Guard {
+    fn drop(&mut self) {
+        if let Some(c) = &mut self.0 {
+            let _ = c.kill();
+            let _ = c.wait();
+        }
+    }
+}
+
+impl Guard {
+    /// Wait for the child to end within `LIMIT`, then kill it; its output.
+    fn wait(mut self) -> Output {
+        let mut c = self.0.take().expect("a child");
+        let start = Instant::now();
+        // Read both pipes on threads so a full pipe never blocks the child.
+        let mut out = c.stdout.take().expect("piped");
+        let mut err = c.stderr.take().expect("piped");
+        let o = std::thread::spawn(move || {
+            let mut v = Vec::new();
+            let _ = out.read_to_end(&mut v);
+            v
+        });
+        let e = std::thread::spawn(move || {
+            let mut v = Vec::new();
+            let _ = err.read_to_end(&mut v);
+            v
+        });
+        let status = loop {
+            if let Some(st) = c.try_wait().expect("wait") {
+                break st;
+            }
+            if start.elapsed() > LIMIT {
+                let _ = c.kill();
+                break c.wait().expect("wait");
+            }
+            std::thread::sleep(Duration::from_millis(20));
+        };
+        Output {
+            status,
+            stdout: o.join().unwrap_or_default(),
+            stderr: e.join().unwrap_or_default(),
+        }
+    }
+}
+
+/// Start `fcc live` on a port of the system's choice; the child and the
+/// port, read from its first line on stderr.
+fn start_live(args: &[&str]) -> (Guard, u16, Vec<u8>) {
+    let mut c = Command::new(FCC)
+        .arg("live")
+        .args(["--udp", "127.0.0.1:0"])
+        .args(args)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("start fcc live");
+    let mut err = BufReader::new(c.stderr.take().expect("piped"));
+    let mut line = String::new();
+    err.read_line(&mut line).expect("read stderr");
+    let mut rest = Vec::new();
+    let port = line
+        .split_whitespace()
+        .find_map(|w| w.rsplit_once(':').and_then(|(_, p)| p.parse::<u16>().ok()))
+        .unwrap_or_else(|| {
+            let _ = c.kill();
+            let _ = err.read_to_end(&mut rest);
+            panic!("no port in `{line}` {}", String::from_utf8_lossy(&rest))
+        });
+    // Give stderr back to the guard, with what was read past the line.
+    let mut first = line.into_bytes();
+    first.extend_from_slice(err.buffer());
+    c.stderr = Some(err.into_inner());
+    (Guard(Some(c)), port, first)
+}
+
+/// Replay `capture` to `fcc live ARGS` and return live's output.
+fn live_on_replay(capture: &Path, args: &[&str]) -> (Output, String) {
+    let (live, port, first) = start_live(args);
+    let to = format!("127.0.0.1:{port}");
+    // Half the recorded rate: no loss however busy the machine.
+    let r = fcc(&["replay", s(capture), "--udp", &to, "--rate", "0.5"]);
+    assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stderr));
+    let out = live.wait();
+    let err = String::from_utf8_lossy(&first).into_owned() + &String::from_utf8_lossy(&out.stderr);
+    (out, err)
+}
+
+fn stem(p: &str) -> &str {
+    p.rsplit_once('.').map_or(p, |(a, _)| a)
+}
+
+#[test]
+fn live_on_a_replay_gives_the_records_of_cluster_stream() {
+    let d = lidar_data();
+    let mut cases: Vec<(String, Vec<String>)> = fcc_lidar::ouster::SAMPLE_CAPTURES
+        .iter()
+        .map(|(pcap, meta)| {
+            (
+                s(&d.join(pcap)).to_string(),
+                vec!["--meta".into(), s(&d.join(meta)).to_string()],
+            )
+        })
+        .collect();
+    cases.push((
+        s(&d.join("velodyne/vlp16.pcap")).to_string(),
+        vec!["--sensor".into(), "velodyne".into()],
+    ));
+    for (capture, opts) in &cases {
+        let name = stem(
+            Path::new(capture)
+                .file_name()
+                .and_then(|n| n.to_str())
+                .unwrap_or(""),
+        );
+        let extra = [
+            "--fsize",
+            "7",
+            "--preset",
+            "adaptive",
+            "--bridge",
+            "4",
+            "--min-points",
+            "3",
+        ];
+        let mut off_args = vec!["cluster", "-i", capture.as_str(), "--stream"];
+        off_args.extend(opts.iter().map(String::as_str));
+        off_args.extend(extra);
+        let off = fcc(&off_args);
+        assert!(
+            off.status.success(),
+            "{}",
+            String::from_utf8_lossy(&off.stderr)
+        );
+        assert!(!off.stdout.is_empty(), "{capture}: no record offline");
+        let mut live_args: Vec<&str> = opts.iter().map(String::as_str).collect();
+        live_args.extend(["--name", name, "--idle-timeout", "1.5"]);
+        live_args.extend(extra);
+        let (live, err) = live_on_replay(Path::new(capture), &live_args);
+        assert!(live.status.success(), "{capture}: {err}");
+        let (a, b) = (
+            String::from_utf8_lossy(&off.stdout),
+            String::from_utf8_lossy(&live.stdout),
+        );
+        let (a, b): (Vec<&str>, Vec<&str>) = (a.lines().collect(), b.lines().collect());
+        assert_eq!(
+            a.len(),
+            b.len(),
+            "{capture}: records offline vs live\n{err}"
+        );
+        for (k, (x, y)) in a.iter().zip(&b).enumerate() {
+            assert_eq!(x, y, "{capture}: record {k}");
+        }
+        assert!(
+            err.contains("live: 1 frames")
+                && err.contains(" 0 lost")
+                && err.contains("0 malformed"),
+            "{capture}: {err}"
+        );
+    }
+}
+
+#[test]
+fn no_packet_is_an_error_after_the_idle_timeout() {
+    let d = lidar_data();
+    let meta = d.join(fcc_lidar::ouster::SAMPLE_CAPTURES[1].1);
+    let (live, _, _) = start_live(&["--meta", s(&meta), "--idle-timeout", "0.5"]);
+    let t = Instant::now();
+    let out = live.wait();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("no packet in 0.5 s (--idle-timeout)") && err.contains("live: 0 frames"),
+        "{err}"
+    );
+    assert!(t.elapsed() < Duration::from_secs(20));
+}
+
+#[test]
+fn frames_stops_after_n_frames() {
+    // Two rotations of the 600 rpm VLP-16 fixture; --frames 1 stops at the first.
+    let d = lidar_data();
+    let capture = d.join("velodyne/vlp16_600rpm.pcap");
+    let (live, err) = live_on_replay(
+        &capture,
+        &[
+            "--sensor",
+            "velodyne",
+            "--frames",
+            "1",
+            "--idle-timeout",
+            "5",
+        ],
+    );
+    assert!(live.status.success(), "{err}");
+    // It stopped at the frame, not at the end of the stream.
+    assert!(
+        err.contains("live: 1 frames") && !err.contains("the stream ended"),
+        "{err}"
+    );
+}
+
+#[test]
+fn bad_options_are_refused_with_a_reason() {
+    let d = lidar_data();
+    let meta = d.join(fcc_lidar::ouster::SAMPLE_CAPTURES[1].1);
+    let cases: [(&[&str], &str); 4] = [
+        (
+            &["live", "--meta", s(&meta), "--merge", "paper"],
+            "drop --merge paper",
+        ),
+        (
+            &["live", "--meta", s(&meta), "--idle-timeout", "0"],
+            "--idle-timeout 0",
+        ),
+        (&["live", "--sensor", "ouster"], "needs its metadata JSON"),
+        (
+            &["replay", s(&meta), "--udp", "127.0.0.1:9", "--rate", "-1"],
+            "--rate -1",
+        ),
+    ];
+    for (args, want) in cases {
+        let o = fcc(args);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+        assert!(err.contains(want), "{args:?}: {err}");
+    }
+}
+
+#[test]
+fn ctrl_c_ends_cleanly_with_a_summary() {
+    let d = lidar_data();
+    let meta = d.join(fcc_lidar::ouster::SAMPLE_CAPTURES[1].1);
+    let (live, _, _) = start_live(&["--meta", s(&meta), "--idle-timeout", "60"]);
+    let pid = live.0.as_ref().map(Child::id).expect("a child");
+    std::thread::sleep(Duration::from_millis(300));
+    let k = Command::new("kill")
+        .args(["-INT", &pid.to_string()])
+        .status()
+        .expect("run kill");
+    assert!(k.success());
+    let t = Instant::now();
+    let out = live.wait();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{err}");
+    assert!(t.elapsed() < Duration::from_secs(30), "{err}");
+    let summary: Vec<&str> = err.lines().filter(|l| l.starts_with("live: ")).collect();
+    assert_eq!(summary.len(), 1, "{err}");
+    for word in ["frames", "packets", "lost", "malformed", "clusters"] {
+        assert!(summary[0].contains(word), "{err}");
+    }
+}
+
+/// The third-party MCAP decoder's Python, or why it cannot run.
+fn mcap_python() -> Result<std::path::PathBuf, String> {
+    let py = std::env::var_os("FCC_MCAP_PYTHON")
+        .map(std::path::PathBuf::from)
+        .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../../.venv/bin/python"));
+    let ok = Command::new(&py)
+        .args(["-c", "import mcap_ros2.decoder"])
+        .output()
+        .is_ok_and(|o| o.status.success());
+    if ok {
+        Ok(py)
+    } else {
+        Err(format!(
+            "{} cannot import mcap_ros2: run ./setup.sh (or pip install -r crates/fcc-lidar/tests/requirements.txt), or set FCC_MCAP_PYTHON",
+            py.display()
+        ))
+    }
+}
+
+/// The messages of an MCAP file as the third-party decoder reads them.
+fn read_mcap(py: &Path, file: &Path) -> Vec<serde_json::Value> {
+    let script = lidar_data().join("mcap/read_with_mcap_ros2.py");
+    let out = Command::new(py)
+        .arg(&script)
+        .arg(file)
+        .output()
+        .expect("run python");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8_lossy(&out.stdout)
+        .lines()
+        .map(|l| serde_json::from_str(l).expect("json"))
+        .collect()
+}
+
+#[test]
+fn mcap_of_live_and_of_cluster_hold_the_same_points_labels_and_boxes() {
+    let py = match mcap_python() {
+        Ok(py) => py,
+        Err(why) if std::env::var("CI").is_ok_and(|v| v == "true") => {
+            panic!("the MCAP decoder cannot run under CI: {why}")
+        }
+        Err(why) => {
+            eprintln!("NOT RUN: {why}");
+            return;
+        }
+    };
+    let d = lidar_data();
+    let (pcap, meta) = fcc_lidar::ouster::SAMPLE_CAPTURES[1];
+    let (capture, meta) = (d.join(pcap), d.join(meta));
+    let dir = fcc_testkit::tmpdir("live_mcap");
+    let (off_mcap, live_mcap) = (dir.join("cluster.mcap"), dir.join("live.mcap"));
+    let off = fcc(&[
+        "cluster",
+        "-i",
+        s(&capture),
+        "--meta",
+        s(&meta),
+        "--stream",
+        "--mcap",
+        s(&off_mcap),
+    ]);
+    assert!(
+        off.status.success(),
+        "{}",
+        String::from_utf8_lossy(&off.stderr)
+    );
+    let (live, err) = live_on_replay(
+        &capture,
+        &[
+            "--meta",
+            s(&meta),
+            "--idle-timeout",
+            "1.5",
+            "--mcap",
+            s(&live_mcap),
+        ],
+    );
+    assert!(live.status.success(), "{err}");
+    let (a, b) = (read_mcap(&py, &off_mcap), read_mcap(&py, &live_mcap));
+    assert_eq!(a.len(), 2);
+    assert_eq!(b.len(), 2);
+    let records = String::from_utf8_lossy(&off.stdout).lines().count();
+    for (x, y) in a.iter().zip(&b) {
+        assert_eq!(x["topic"], y["topic"]);
+        for key in ["points", "labels", "fields", "width"] {
+            assert_eq!(x[key], y[key], "{key}");
+        }
+        if let Some(m) = x["markers"].as_array() {
+            assert_eq!(m.len(), records + 1);
+            let ids = |v: &serde_json::Value| -> Vec<serde_json::Value> {
+                v["markers"]
+                    .as_array()
+                    .unwrap()
+                    .iter()
+                    .map(|m| m["position"].clone())
+                    .collect()
+            };
+            assert_eq!(ids(x), ids(y));
+        }
+    }
+    // Live Ouster frames carry the sensor's timestamp, in the header too.
+    let t = b[0]["log_time"].as_u64().unwrap();
+    assert!(t > 0);
+    assert_eq!(
+        b[0]["stamp"],
+        serde_json::json!([t / 1_000_000_000, t % 1_000_000_000])
+    );
+}
+
+#[test]
+fn replay_repeat_sends_the_rotation_again_as_new_frames() {
+    let d = lidar_data();
+    let (pcap, meta) = fcc_lidar::ouster::SAMPLE_CAPTURES[2];
+    let (capture, meta) = (d.join(pcap), d.join(meta));
+    let (live, port, first) =
+        start_live(&["--meta", s(&meta), "--idle-timeout", "1.5", "--latency"]);
+    let to = format!("127.0.0.1:{port}");
+    let r = fcc(&[
+        "replay",
+        s(&capture),
+        "--udp",
+        &to,
+        "--rate",
+        "2",
+        "--repeat",
+        "3",
+        "--meta",
+        s(&meta),
+    ]);
+    assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stderr));
+    let out = live.wait();
+    let err = String::from_utf8_lossy(&first).into_owned() + &String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{err}");
+    assert!(
+        err.contains("live: 3 frames") && err.contains(" 0 lost"),
+        "{err}"
+    );
+    // Two frames were completed by a packet (the third by the end of the stream).
+    assert!(err.contains("over 2 frames"), "{err}");
+    let off = fcc(&["cluster", "-i", s(&capture), "--meta", s(&meta), "--stream"]);
+    let per_frame = String::from_utf8_lossy(&off.stdout).lines().count();
+    assert_eq!(
+        String::from_utf8_lossy(&out.stdout).lines().count(),
+        3 * per_frame
+    );
+}
+
+#[test]
+fn foxglove_serves_on_the_address_given() {
+    let d = lidar_data();
+    let meta = d.join(fcc_lidar::ouster::SAMPLE_CAPTURES[1].1);
+    let (live, _, first) = start_live(&[
+        "--meta",
+        s(&meta),
+        "--idle-timeout",
+        "0.5",
+        "--foxglove",
+        "127.0.0.1:0",
+    ]);
+    let out = live.wait();
+    let err = String::from_utf8_lossy(&first).into_owned() + &String::from_utf8_lossy(&out.stderr);
+    // No packet came: the run ends with its error, after the server started.
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    let port = err
+        .lines()
+        .find_map(|l| l.strip_prefix("foxglove: ws://127.0.0.1:"))
+        .and_then(|p| p.trim().parse::<u16>().ok());
+    assert!(port.is_some_and(|p| p != 0), "{err}");
+}
