@@ -74,6 +74,7 @@ class Frame:
     truth_points: Optional[np.ndarray]
     points: Optional[np.ndarray]
     point_pixel: Optional[np.ndarray]
+    timestamp_ns: Optional[int]
     input_points: int
     outside_fov: int
     pixel_shared: int

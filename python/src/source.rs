@@ -306,6 +306,11 @@ pub struct Frame {
     /// (0xFFFFFFFF for none).
     #[pyo3(get)]
     point_pixel: Option<PyObject>,
+    /// When the frame was taken, nanoseconds: an Ouster capture's first
+    /// column as the sensor stamped it, a PointCloud2 message's header
+    /// stamp; None for Velodyne captures and files.
+    #[pyo3(get)]
+    timestamp_ns: Option<u64>,
     /// Points in the input.
     #[pyo3(get)]
     input_points: usize,
@@ -377,6 +382,7 @@ impl Frame {
             truth_points,
             points,
             point_pixel,
+            timestamp_ns: f.timestamp_ns,
             input_points: f.losses.input_points,
             outside_fov: f.losses.outside_fov,
             pixel_shared: f.losses.pixel_shared,

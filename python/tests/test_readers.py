@@ -38,6 +38,8 @@ def test_ouster_captures_cluster_as_fcc_cluster_does(cli, capture, meta):
     r, c, _ = f.xyz.shape
     assert f.xyz.dtype == np.float32 and f.intensity.shape == (r, c)
     assert not f.range_image and f.default_ground == "slope" and not f.projected
+    # The sensor's stamp of the frame's first column.
+    assert isinstance(f.timestamp_ns, int) and f.timestamp_ns > 0
     flags = ["--meta", str(DATA / meta)] if meta else []
     want = cli.cluster(DATA / capture, *flags)
     np.testing.assert_array_equal(fcc.cluster(f), want)
@@ -81,6 +83,7 @@ def test_velodyne_captures_cluster_as_fcc_cluster_does(cli, capture, kw):
         want = [np.load(cli.tmp / f"v_{f.name}.npy") for f in got]
     for f, w in zip(got, want):
         assert f.intensity is not None and f.intensity.shape == f.xyz.shape[:2]
+        assert f.timestamp_ns is None
         np.testing.assert_array_equal(fcc.cluster(f), w)
 
 
@@ -106,6 +109,8 @@ def test_mcap_recordings_cluster_as_fcc_cluster_does(cli, name, topic):
         want_path = cli.tmp / f"m_{f.name}.npy"
         want = np.load(want_path if want_path.exists() else cli.tmp / "m.npy")
         np.testing.assert_array_equal(fcc.cluster(f), want)
+        # The message's header stamp (the fixtures stamp k s + 500 ns).
+        assert f.timestamp_ns % 10**9 == 500 and 100 <= f.timestamp_ns // 10**9 <= 201
         if f.projected:
             assert f.points.shape[1] == 3 and f.point_pixel.shape == (f.points.shape[0],)
 

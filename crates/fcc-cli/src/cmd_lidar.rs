@@ -279,7 +279,8 @@ pub struct ClusterLidarArgs {
     pub stream: bool,
     /// Write a ROS 2 recording (MCAP): per frame a sensor_msgs/msg/PointCloud2
     /// with the cluster `label` and a visualization_msgs/msg/MarkerArray of
-    /// the clusters' boxes (frames stamped 0.1 s apart from 0).
+    /// the clusters' boxes, stamped with the frame's time where the input
+    /// has one (Ouster captures, ROS 2 recordings), else 0.1 s apart from 0.
     #[arg(long)]
     pub mcap: Option<PathBuf>,
     /// Frames clustered in parallel (default: all cores).
@@ -917,12 +918,13 @@ pub fn run_cluster_on(args: &ClusterLidarArgs, hw: Option<&dyn Hardware>) -> any
                 .collect(),
         };
         pb.inc(items.len() as u64);
+        let stamps: Vec<Option<u64>> = items.iter().map(|it| it.timestamp_ns).collect();
         items.clear();
-        for r in res {
+        for (r, stamp) in res.into_iter().zip(stamps) {
             let (line, rows, parts) = r?;
             if let (Some(sink), Some((points, labels, clusters))) = (&mut mcap, parts) {
                 sink.write(&McapFrame {
-                    stamp_ns: mcap_frames * 100_000_000,
+                    stamp_ns: stamp.unwrap_or(mcap_frames * 100_000_000),
                     frame_id: "lidar",
                     points: &points,
                     labels: &labels,

@@ -377,9 +377,12 @@ fn mcap_of_live_and_of_cluster_hold_the_same_points_labels_and_boxes() {
             assert_eq!(ids(x), ids(y));
         }
     }
-    // Live Ouster frames carry the sensor's timestamp, in the header too.
+    // Live Ouster frames carry the sensor's timestamp, in the header too,
+    // and `cluster --mcap` stamps the capture's frames the same way.
     let t = b[0]["log_time"].as_u64().unwrap();
     assert!(t > 0);
+    assert_eq!(a[0]["log_time"], b[0]["log_time"]);
+    assert_eq!(a[0]["stamp"], b[0]["stamp"]);
     assert_eq!(
         b[0]["stamp"],
         serde_json::json!([t / 1_000_000_000, t % 1_000_000_000])

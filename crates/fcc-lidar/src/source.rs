@@ -175,6 +175,11 @@ pub struct Frame {
     pub intensity: Option<Vec<f32>>,
     /// Points lost before the image was made.
     pub losses: Losses,
+    /// When the frame was taken, nanoseconds, where the input says: an
+    /// Ouster capture's first column as the sensor stamped it (its own
+    /// clock), a PointCloud2 message's header stamp. `None` for Velodyne
+    /// captures (their packets are not stamped per frame here) and files.
+    pub timestamp_ns: Option<u64>,
 }
 
 impl Frame {
@@ -192,6 +197,7 @@ impl Frame {
             truth: None,
             truth_points: None,
             intensity,
+            timestamp_ns: None,
         }
     }
 
@@ -219,6 +225,7 @@ impl Frame {
             truth: None,
             truth_points: None,
             intensity,
+            timestamp_ns: None,
         })
     }
 }
@@ -311,11 +318,14 @@ impl<'a> Source<'a> {
         match self.kind {
             InputKind::Ouster => {
                 let (used, s) = for_each_ouster_frame(path, opts, note, |frame| {
-                    f(Frame::image(
-                        frame_name(path, frame.frame_id.into()),
-                        frame.image,
-                        Some(frame.reflectivity),
-                    ))
+                    f(Frame {
+                        timestamp_ns: Some(frame.timestamp_ns),
+                        ..Frame::image(
+                            frame_name(path, frame.frame_id.into()),
+                            frame.image,
+                            Some(frame.reflectivity),
+                        )
+                    })
                 })?;
                 let mut warnings = Vec::new();
                 if used == 0 {
@@ -639,11 +649,21 @@ pub fn velodyne_summary(
 /// stand, unorganised ones projected (with the projection kept to map
 /// labels back to the points).
 fn cloud2_frame(name: String, c: Cloud2, proj: &ProjectionConfig) -> Result<Frame> {
-    if let Some((image, intensity)) = c.range_image()? {
-        return Ok(Frame::image(name, image, intensity));
-    }
-    let (points, intensity) = c.finite_points();
-    Frame::projected(name, points, intensity, proj)
+    // A stamp before 1970 (negative seconds) is no time to pass on.
+    let timestamp_ns = u64::try_from(c.stamp_sec)
+        .ok()
+        .map(|s| s * 1_000_000_000 + u64::from(c.stamp_nanosec));
+    let frame = match c.range_image()? {
+        Some((image, intensity)) => Frame::image(name, image, intensity),
+        None => {
+            let (points, intensity) = c.finite_points();
+            Frame::projected(name, points, intensity, proj)?
+        }
+    };
+    Ok(Frame {
+        timestamp_ns,
+        ..frame
+    })
 }
 
 fn npy_error(e: fcc_npy::NpyError) -> LidarError {
