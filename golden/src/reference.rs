@@ -28,10 +28,13 @@ impl Dsu {
     }
 }
 
-/// A pair's squared threshold by spec §2: `max(t^2, (A^2 * min r2) >> 32)`.
+/// A pair's squared threshold by spec §2, `max(t^2, (S * min rc2) >> 8)`,
+/// written from the definitions (whole metres per coordinate, rounded half
+/// up and capped at 127).
 fn pair_threshold(t_sq: i64, slope_sq: u64, p: Point, q: Point) -> i64 {
-    let r2 = |v: Point| v.iter().map(|&c| i64::from(c) * i64::from(c)).sum::<i64>() as u128;
-    let own = (u128::from(slope_sq) * r2(p).min(r2(q))) >> 32;
+    let metres = |c: i16| ((i64::from(c).abs() + 128) / 256).min(127);
+    let rc2 = |v: Point| v.iter().map(|&c| metres(c).pow(2)).sum::<i64>() as u128;
+    let own = (u128::from(slope_sq) * rc2(p).min(rc2(q))) >> 8;
     t_sq.max(own as i64)
 }
 

@@ -1,5 +1,7 @@
 //! The join tests of pass 1 and pass 2 with range-adaptive thresholds
-//! (spec §2): a pair joins within `max(t^2, (A^2 * min(r2(p), r2(q))) >> 32)`.
+//! (spec §2): a pair joins within `max(t^2, min(T(p), T(q)))`, each point's
+//! `T(p) = (S * rc2(p)) >> 8` from its coarse squared range `rc2` and the
+//! squared slope `S = A^2 >> 8`.
 
 use crate::frame::{dist2, Point};
 use fcc_params::FccParams;
@@ -10,12 +12,29 @@ pub fn range2(p: Point) -> u64 {
     dist2(p, [0; 3]) as u64
 }
 
-/// A point's own squared threshold for a squared slope `A^2` (UQ0.32):
-/// `(A^2 * r2(p)) >> 32`, rounded down. (`A^2 < 2^32`, `r2 < 3 * 2^30`: the
-/// product fits 64 bits.)
+/// A coordinate's coarse magnitude in whole metres (spec §2):
+/// `min((|c| + 128) >> 8, 127)`, rounded half up, at most 127.
+#[inline]
+pub fn coarse_metres(c: i16) -> u32 {
+    ((u32::from(c.unsigned_abs()) + 128) >> 8).min(COARSE_MAX)
+}
+
+/// The largest coarse magnitude (metres).
+pub const COARSE_MAX: u32 = 127;
+
+/// A point's coarse squared range in square metres (spec §2): the sum of its
+/// coordinates' squared coarse magnitudes, at most `3 * 127^2 = 48,387`.
+#[inline]
+pub fn coarse_range2(p: Point) -> u32 {
+    p.iter().map(|&c| coarse_metres(c).pow(2)).sum()
+}
+
+/// A point's own squared threshold for a squared slope `S = A^2 >> 8`
+/// (UQ0.24): `(S * rc2(p)) >> 8`, rounded down, in units of 1/65536 m^2
+/// (`S < 2^24`, `rc2 < 2^16`: below 2^32).
 #[inline]
 pub fn point_threshold(slope_sq: u64, p: Point) -> i64 {
-    ((slope_sq * range2(p)) >> 32) as i64
+    ((slope_sq * u64::from(coarse_range2(p))) >> 8) as i64
 }
 
 /// Both join tests of one parameter set.
@@ -56,7 +75,7 @@ impl Thresholds {
         self.v_sq
     }
 
-    /// Pass 1 and the ring check: `d2 <= max(tH^2, (A_H^2 min r2) >> 32)`.
+    /// Pass 1 and the ring check: `d2 <= max(tH^2, min(T_H(p), T_H(q)))`.
     #[inline]
     pub fn continues(&self, p: Point, q: Point) -> bool {
         let d = dist2(p, q);
@@ -67,7 +86,7 @@ impl Thresholds {
         d <= self.h_sq.max(t)
     }
 
-    /// Pass 2: `d2 < max(tV^2, (A_V^2 min r2) >> 32)`.
+    /// Pass 2: `d2 < max(tV^2, min(T_V(p), T_V(q)))`.
     #[inline]
     pub fn joins(&self, p: Point, q: Point) -> bool {
         let d = dist2(p, q);

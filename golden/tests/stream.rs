@@ -464,20 +464,27 @@ fn overflow_leaves_the_runs_that_start_while_every_label_is_in_use() {
 #[test]
 fn adaptive_thresholds_round_down_and_take_the_nearer_point() {
     use fcc_golden::{point_threshold, Thresholds};
-    // A = round(0.1 * 2^16) = 6554; a point at 20 m (5120 units): r2 =
-    // 5120^2, own threshold (6554^2 * 5120^2) >> 32 = 262,176 units
-    // ((2 m)^2 is 262,144: the slope's rounding adds 0.1 mm).
+    // A = round(0.1 * 2^16) = 6554, S = A^2 >> 8 = 167,792; a point at
+    // 20 m (5120 units) is 20 whole metres, rc2 = 400, own threshold
+    // (167,792 * 400) >> 8 = 262,175 units ((2 m)^2 is 262,144: the slope's
+    // rounding adds 0.1 mm).
     let p = FccParams {
         th_v_slope: 0.1,
         ..FccParams::default()
     };
-    let a2 = p.th_v_slope_sq();
-    assert_eq!(a2, 6554 * 6554);
+    let s = p.th_v_slope_sq();
+    assert_eq!(s, (6554 * 6554) >> 8);
+    assert_eq!(point_threshold(s, [5120, 0, 0]), ((s * 400) >> 8) as i64);
+    assert_eq!(point_threshold(s, [5120, 0, 0]), 262_175);
+    // Whole metres round half up and stop at 127: 20.5 m is 21, -127.6 m
+    // is 127 (not 128).
+    assert_eq!(fcc_golden::coarse_metres(5248), 21);
+    assert_eq!(fcc_golden::coarse_metres(5247), 20);
+    assert_eq!(fcc_golden::coarse_metres(-32668), 127);
     assert_eq!(
-        point_threshold(a2, [5120, 0, 0]),
-        ((a2 * 5120 * 5120) >> 32) as i64
+        fcc_golden::coarse_range2([i16::MIN, i16::MAX, -32767]),
+        3 * 127 * 127
     );
-    assert_eq!(point_threshold(a2, [5120, 0, 0]), 262_176);
     let th = Thresholds::new(&p);
     // At 20 m the pair threshold is about 2 m: points 1.9 m apart join,
     // 2.1 m apart do not; at 5 m (0.5 m own) tV = 1 m wins.

@@ -18,13 +18,22 @@ struct VlModel {
     Top* top;
 };
 
+// Hold a model's reset, if it has one (a pipeline without state to reset,
+// such as fcc_point_thr, has none).
+template <class Top>
+auto vl_hold_reset(Top* t, int) -> decltype(t->rst = 1, void()) {
+    t->rst = 1;
+}
+template <class Top>
+void vl_hold_reset(Top*, long) {}
+
 // A fresh model named `name`, clock low and reset held.
 template <class Top>
 void* vl_model_new(const char* name) {
     auto* m = new VlModel<Top>;
     m->top = new Top(&m->ctx, name);
     m->top->clk = 0;
-    m->top->rst = 1;
+    vl_hold_reset(m->top, 0);
     m->top->eval();
     return m;
 }

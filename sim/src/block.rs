@@ -1,6 +1,6 @@
 //! One block alone under Verilator, for its own bench: the cache, build and
 //! load shared by the block benches (`regs_bench`, `merge_bench`,
-//! `label_update_bench`, `window_bench`, `sort_net_bench`).
+//! `label_update_bench`, `window_bench`, `sort_net_bench`, `point_thr_bench`).
 //!
 //! A block's shim exports three C functions, `<symbol>_new`, `<symbol>_free`
 //! and `<symbol>_step`; `S` is the type of the step function, which differs

@@ -135,6 +135,7 @@ pub fn structs() -> Vec<(&'static str, String)> {
     use crate::label_update_bench::{LuIn, LuOut};
     use crate::merge_bench::{MergeIn, MergeOut};
     use crate::model::{FccIn, FccOut};
+    use crate::point_thr_bench::{PtIn, PtOut};
     use crate::regs_bench::{RegsIn, RegsOut};
     use crate::sort_net_bench::{SnIn, SnOut};
     use crate::window_bench::{WinIn, WinOut};
@@ -155,6 +156,8 @@ pub fn structs() -> Vec<(&'static str, String)> {
         // `jtake` port from it within the cycle.
         entry::<SnIn>(None),
         entry::<SnOut>(SAMPLE),
+        entry::<PtIn>(DRIVE),
+        entry::<PtOut>(SAMPLE),
     ]
 }
 
@@ -209,7 +212,7 @@ mod tests {
     fn header_declares_every_shim_struct_once() {
         let h = header();
         let names: Vec<_> = structs().into_iter().map(|(n, _)| n).collect();
-        assert_eq!(names.len(), 12);
+        assert_eq!(names.len(), 14);
         for name in names {
             assert_eq!(h.matches(&format!("struct {name} {{")).count(), 1, "{name}");
             let macros = usize::from(name != "SnIn");

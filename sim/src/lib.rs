@@ -16,6 +16,7 @@ pub mod frames;
 pub mod label_update_bench;
 pub mod merge_bench;
 pub mod model;
+pub mod point_thr_bench;
 pub mod regs_bench;
 pub mod run;
 pub mod sort_net_bench;
@@ -35,6 +36,7 @@ pub use merge_bench::{load_merge_table, MergeDut, MergeIn, MergeOut};
 pub use model::{
     cache_root, is_cached, is_cached_dir, load, load_dir, read_generated, Dut, GeneratedDir, Model,
 };
+pub use point_thr_bench::{load_point_thr, PointThrDut, PtIn, PtOut};
 pub use regs_bench::{load_regs, RegsDut, RegsIn, RegsOut};
 pub use run::{check_run, run_and_check_with, run_values};
 pub use sort_net_bench::{load_sort_net, pack_centre, SnCentre, SnIn, SnOut, SortNetDut};

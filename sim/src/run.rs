@@ -35,6 +35,13 @@ pub fn check_run(build: &FccParams, run: &FccParams) -> Result<(), SimError> {
             run.label_bits, run.labels_per_beat, build.label_bits, build.labels_per_beat
         )));
     }
+    if (run.th_h_slope_sq(), run.th_v_slope_sq()) != (build.th_h_slope_sq(), build.th_v_slope_sq())
+    {
+        return Err(SimError::BadRun(format!(
+            "th_h_slope {} and th_v_slope {} are the build's ({} and {})",
+            run.th_h_slope, run.th_v_slope, build.th_h_slope, build.th_v_slope
+        )));
+    }
     for (name, off, v) in run_values(run) {
         if !regmap::run_value_ok(build, off, v) {
             let r = regmap::run_range(build, off).expect("a run register");

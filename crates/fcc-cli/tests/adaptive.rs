@@ -99,14 +99,6 @@ fn slopes_are_checked_and_refused_by_the_rtl() {
             "cannot be used with",
         ),
         (
-            vec!["gen", "--preset", "adaptive", "--out", s(&d.join("gen"))],
-            "the RTL has fixed thresholds",
-        ),
-        (
-            vec!["sim", "--input", s(&npy), "--th-h-slope", "0.01"],
-            "the RTL has fixed thresholds",
-        ),
-        (
             vec![
                 "board",
                 "run",

@@ -104,6 +104,12 @@ fn is_zero(v: &f64) -> bool {
 /// Fractional bits of a threshold slope (UQ0.16, metres per metre).
 pub const SLOPE_FRAC_BITS: u32 = 16;
 
+/// The squared slope of spec §2, `A^2 >> 8` (UQ0.24), from a slope in
+/// metres per metre.
+pub fn slope_sq(a: f64) -> u64 {
+    (quantize_slope(a) as u64).pow(2) >> 8
+}
+
 /// Quantise a slope in metres per metre: `floor(a * 2^16 + 0.5)`.
 pub fn quantize_slope(a: f64) -> i64 {
     (a * f64::from(1u32 << SLOPE_FRAC_BITS) + 0.5).floor() as i64
@@ -215,23 +221,10 @@ impl FccParams {
     }
 
     /// The part of the contract the row-major RTL follows, whatever the
-    /// sizes: fixed thresholds (no slopes) and unlimited reach. Run
+    /// sizes: unlimited reach. Run
     /// parameters of a build (smaller than what can be generated) are
     /// checked with this and the build's own ranges.
     pub fn validate_rtl_contract(&self) -> Result<(), ParamError> {
-        // The RTL has fixed thresholds so far.
-        for (field, v) in [
-            ("th_h_slope", self.th_h_slope),
-            ("th_v_slope", self.th_v_slope),
-        ] {
-            if v != 0.0 {
-                return Err(range_err(
-                    field,
-                    v,
-                    "0 only: the RTL has fixed thresholds (the golden model takes slopes)",
-                ));
-            }
-        }
         // The row-major core follows the unlimited contract.
         for (field, v) in [("bridge", self.bridge), ("ring_reach", self.ring_reach)] {
             if let Some(v) = v {
@@ -290,15 +283,15 @@ impl FccParams {
         self.th_v_q() * self.th_v_q()
     }
 
-    /// Squared quantised slopes `A^2` (UQ0.32): a point's squared threshold
-    /// is `(A^2 * r2) >> 32` (spec §2).
+    /// Squared quantised slope `S = A^2 >> 8` (UQ0.24, below 2^24): a
+    /// point's squared threshold is `(S * rc2) >> 8` (spec §2).
     pub fn th_h_slope_sq(&self) -> u64 {
-        (quantize_slope(self.th_h_slope) as u64).pow(2)
+        slope_sq(self.th_h_slope)
     }
 
     /// As [`th_h_slope_sq`](Self::th_h_slope_sq), inter-channel.
     pub fn th_v_slope_sq(&self) -> u64 {
-        (quantize_slope(self.th_v_slope) as u64).pow(2)
+        slope_sq(self.th_v_slope)
     }
 
     /// Largest provisional label, 2^B - 1.
@@ -507,7 +500,7 @@ mod tests {
         };
         p.validate().unwrap();
         assert_eq!(quantize_slope(0.02), 1311);
-        assert_eq!(p.th_v_slope_sq(), 1311 * 1311);
+        assert_eq!(p.th_v_slope_sq(), (1311 * 1311) >> 8);
         assert!(p.to_json().contains("th_v_slope") && !p.to_json().contains("th_h_slope"));
         assert_eq!(p.fields().last().unwrap().0, "th_v_slope");
         assert_eq!(p.validate_for_hardware().unwrap_err().field, "th_v_slope");

@@ -21,16 +21,19 @@ pub enum BenchBlock {
     /// The sort network `FccSortNet` (sort filter, centre buffer, serializer,
     /// join queue); its per-position ports keep rust-hdl's names `hit$e` and `rep$e`.
     SortNet,
+    /// The per-point threshold unit `FccPointThr` (range-adaptive thresholds).
+    PointThr,
 }
 
 impl BenchBlock {
     /// Every block with a bench.
-    pub const ALL: [BenchBlock; 5] = [
+    pub const ALL: [BenchBlock; 6] = [
         BenchBlock::Regs,
         BenchBlock::MergeTable,
         BenchBlock::LabelUpdate,
         BenchBlock::Window,
         BenchBlock::SortNet,
+        BenchBlock::PointThr,
     ];
 
     /// The module's name before the configuration suffix, and the stem of
@@ -42,6 +45,7 @@ impl BenchBlock {
             BenchBlock::LabelUpdate => crate::LABEL_UPDATE_NAME,
             BenchBlock::Window => crate::WINDOW_NAME,
             BenchBlock::SortNet => crate::SORT_NET_NAME,
+            BenchBlock::PointThr => crate::POINT_THR_NAME,
         }
     }
 
@@ -58,6 +62,7 @@ impl BenchBlock {
             BenchBlock::LabelUpdate => crate::generate_label_update(p),
             BenchBlock::Window => crate::generate_window(p),
             BenchBlock::SortNet => crate::generate_sort_net(p),
+            BenchBlock::PointThr => crate::generate_point_thr(p),
         }
     }
 
@@ -70,6 +75,7 @@ impl BenchBlock {
             BenchBlock::LabelUpdate => lint::label_update_waivers(p),
             BenchBlock::Window => lint::window_waivers(p),
             BenchBlock::SortNet => lint::sort_net_waivers(p),
+            BenchBlock::PointThr => lint::point_thr_waivers(p),
         }
     }
 }

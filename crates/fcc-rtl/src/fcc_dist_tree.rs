@@ -24,8 +24,12 @@ pub struct FccDistTree {
     pub ent_x: Vec<Signal<In, Bits<16>>>,
     pub ent_y: Vec<Signal<In, Bits<16>>>,
     pub ent_z: Vec<Signal<In, Bits<16>>>,
-    /// -tV^2 (36-bit two's complement), from the run parameters.
-    pub th_v_c: Signal<In, Bits<36>>,
+    /// From the threshold window, `THR_WIN_LAG` cycles after the points:
+    /// the keys and addends `-T'_V` of the centre and the positions.
+    pub centre_key: Signal<In, Bits<16>>,
+    pub centre_cv: Signal<In, Bits<36>>,
+    pub ent_key: Vec<Signal<In, Bits<16>>>,
+    pub ent_cv: Vec<Signal<In, Bits<36>>>,
     // To the sort network.
     pub centre: Signal<Out, Ctr>,
     pub hit: Vec<Signal<Out, Bit>>,
@@ -47,7 +51,10 @@ impl FccDistTree {
             ent_x: vec_of(n),
             ent_y: vec_of(n),
             ent_z: vec_of(n),
-            th_v_c: Default::default(),
+            centre_key: Default::default(),
+            centre_cv: Default::default(),
+            ent_key: vec_of(n),
+            ent_cv: vec_of(n),
             centre: Default::default(),
             hit: vec_of(n),
             units: (0..n).map(|_| FccDistUnit::new()).collect(),
@@ -71,7 +78,10 @@ impl Logic for FccDistTree {
             self.units[e].nx.next = self.ent_x[e].val();
             self.units[e].ny.next = self.ent_y[e].val();
             self.units[e].nz.next = self.ent_z[e].val();
-            self.units[e].th_c.next = self.th_v_c.val();
+            self.units[e].ckey.next = self.centre_key.val();
+            self.units[e].ccv.next = self.centre_cv.val();
+            self.units[e].nkey.next = self.ent_key[e].val();
+            self.units[e].ncv.next = self.ent_cv[e].val();
             self.hit[e].next = self.units[e].hit.val();
         }
         self.c0.next.valid = self.centre_in.val().valid;

@@ -1,7 +1,9 @@
 //! `FccDistUnit`: one distance processor of `fcc_dist_tree`: is the centre
-//! closer than `tV` (strictly) to one window position? An `FccSqDist` (seven
-//! registered stages) with the position's `ok` as its enable and `-tV^2` as
-//! its addend.
+//! closer than the pair's threshold (strictly) to one window position? An
+//! `FccSqDist` (seven registered stages) with the position's `ok` as its
+//! enable and the pair's addend `-T'_V` (spec §2): the addend of the point
+//! with the smaller key, picked in the cycle before the `FccSqDist` adds it
+//! (the keys and addends arrive `THR_WIN_LAG` = 2 cycles after the points).
 
 use rust_hdl::prelude::*;
 
@@ -19,11 +21,16 @@ pub struct FccDistUnit {
     pub nx: Signal<In, Bits<16>>,
     pub ny: Signal<In, Bits<16>>,
     pub nz: Signal<In, Bits<16>>,
-    /// -tV^2 (36-bit two's complement), from the run parameters.
-    pub th_c: Signal<In, Bits<36>>,
+    /// Two cycles after the points: their keys and addends `-T'_V`.
+    pub ckey: Signal<In, Bits<16>>,
+    pub ccv: Signal<In, Bits<36>>,
+    pub nkey: Signal<In, Bits<16>>,
+    pub ncv: Signal<In, Bits<36>>,
     /// `SQ_LATENCY` cycles later (registered).
     pub hit: Signal<Out, Bit>,
     sq: FccSqDist,
+    /// The pair's addend (in the cycle `FccSqDist` adds it).
+    pair_c: DFF<Bits<36>>,
 }
 
 impl FccDistUnit {
@@ -37,9 +44,13 @@ impl FccDistUnit {
             nx: Default::default(),
             ny: Default::default(),
             nz: Default::default(),
-            th_c: Default::default(),
+            ckey: Default::default(),
+            ccv: Default::default(),
+            nkey: Default::default(),
+            ncv: Default::default(),
             hit: Default::default(),
             sq: FccSqDist::new(),
+            pair_c: Default::default(),
         }
     }
 }
@@ -61,7 +72,12 @@ impl Logic for FccDistUnit {
         self.sq.by.next = self.ny.val();
         self.sq.bz.next = self.nz.val();
         self.sq.en_in.next = self.nok.val();
-        self.sq.c.next = self.th_c.val();
+        dff_setup!(self, clk, pair_c);
+        self.pair_c.d.next = self.ccv.val();
+        if self.nkey.val() < self.ckey.val() {
+            self.pair_c.d.next = self.ncv.val();
+        }
+        self.sq.c.next = self.pair_c.q.val();
         self.hit.next = self.sq.hit.val();
     }
 }

@@ -10,7 +10,10 @@
 //!
 //! Pipeline (no enable: bubbles travel as slots with `valid` low):
 //! * N0: the pixel against the row's previous valid point (`near`) and the
-//!   row's first valid point against its last (`ring`), both `FccSqDist`.
+//!   row's first valid point against its last (`ring`), both `FccSqDist`,
+//!   each with its pair's threshold (spec §2: the pixel's own, `key` and
+//!   `ch`, arrive in N2; `FccIntraThr` picks each pair's for N3, when the
+//!   distance units add it).
 //! * N7: the label decision. The next label is a 20-bit counter that keeps
 //!   counting past the last provisional label, so the decision is one add and
 //!   two multiplexers; whether a label fits is checked one stage later (labels
@@ -22,6 +25,7 @@
 use fcc_params::FccParams;
 use rust_hdl::prelude::*;
 
+use crate::fcc_intra_thr::FccIntraThr;
 use crate::fcc_sq_dist::{FccSqDist, SQ_LATENCY};
 use crate::types::{kb, Lab, Pix};
 
@@ -35,8 +39,10 @@ pub struct FccIntra {
     pub pix: Signal<In, Pix>,
     /// The frame's last column, C - 1 (stable while a frame runs).
     pub last_col: Signal<In, Bits<12>>,
-    /// -(tH^2 + 1) (36-bit two's complement), from the run parameters.
-    pub th_h_c: Signal<In, Bits<36>>,
+    /// Two cycles after `pix` (N2): its key and `-(T'_H + 1)` (36-bit two's
+    /// complement, from `fcc_pix_thr`).
+    pub key: Signal<In, Bits<16>>,
+    pub ch: Signal<In, Bits<36>>,
     pub out: Signal<Out, Lab>,
     // Status of the frame in progress (stable after its last pixel).
     pub provisional: Signal<Out, Bits<17>>,
@@ -52,6 +58,7 @@ pub struct FccIntra {
     first_z: DFF<Bits<16>>,
     near: FccSqDist,
     ring: FccSqDist,
+    thr: FccIntraThr,
     // Delay line N1 .. N7, aligned with the distance units.
     pd: Vec<DFF<Pix>>,
     fvd: Vec<DFF<Bit>>,
@@ -131,7 +138,8 @@ impl FccIntra {
             rst: Default::default(),
             pix: Default::default(),
             last_col: Default::default(),
-            th_h_c: Default::default(),
+            key: Default::default(),
+            ch: Default::default(),
             out: Default::default(),
             provisional: Default::default(),
             overflow: Default::default(),
@@ -145,6 +153,7 @@ impl FccIntra {
             first_z: Default::default(),
             near: FccSqDist::new(),
             ring: FccSqDist::new(),
+            thr: FccIntraThr::new(),
             pd: (0..SQ_LATENCY).map(|_| Default::default()).collect(),
             fvd: (0..SQ_LATENCY).map(|_| Default::default()).collect(),
             raw: Default::default(),
@@ -229,8 +238,15 @@ impl Logic for FccIntra {
         self.near.by.next = self.prev_y.q.val();
         self.near.bz.next = self.prev_z.q.val();
         self.near.en_in.next = self.pix.val().valid & self.pix.val().ok & self.hp_eff.val();
-        self.near.c.next = self.th_h_c.val();
-        self.ring.c.next = self.th_h_c.val();
+        self.thr.clk.next = self.clk.val();
+        self.thr.prev_load.next = self.prev_load.val();
+        self.thr.first_load.next = self.fv0.val();
+        self.thr.ring_first.next = self.ring_first.val();
+        self.thr.ok.next = self.pix.val().ok;
+        self.thr.key.next = self.key.val();
+        self.thr.ch.next = self.ch.val();
+        self.near.c.next = self.thr.near_c.val();
+        self.ring.c.next = self.thr.ring_c.val();
         // Ring: the row's first valid point against its last valid point.
         self.ring.clk.next = self.clk.val();
         self.ring.en_in.next = true;

@@ -32,8 +32,10 @@ use crate::fcc_intra::FccIntra;
 use crate::fcc_keep_reg::FccKeepReg;
 use crate::fcc_label_update::FccLabelUpdate;
 use crate::fcc_merge_table::FccMergeTable;
+use crate::fcc_pix_thr::FccPixThr;
 use crate::fcc_regs::FccRegs;
 use crate::fcc_sort_net::{FccSortNet, CB_BITS};
+use crate::fcc_thr_window::FccThrWindow;
 use crate::fcc_window::FccWindow;
 use crate::regmap::ADDR_BITS;
 use crate::types::{kb, Pix};
@@ -105,8 +107,10 @@ pub struct FccTop {
     pub status_frame_done: Signal<Out, Bit>,
     /// The core is waiting for the first pixel of a frame.
     pub status_idle: Signal<Out, Bit>,
+    pix_thr: FccPixThr,
     intra: FccIntra,
     window: FccWindow,
+    thr_window: FccThrWindow,
     dist_tree: FccDistTree,
     sort_net: FccSortNet,
     merge_table: FccMergeTable,
@@ -161,6 +165,9 @@ pub struct FccTop {
     out_start_net: FccFanoutNet<Bit>,
     // Constants.
     sign16: Constant<Bits<16>>,
+    /// Squared threshold slopes `S = A^2 >> 8` of the build (spec §2).
+    slope_h: Constant<Bits<24>>,
+    slope_v: Constant<Bits<24>>,
     zero8: Constant<Bits<8>>,
     one8: Constant<Bits<8>>,
     zero12: Constant<Bits<12>>,
@@ -216,8 +223,10 @@ impl FccTop {
             status_gear_stalls: Default::default(),
             status_frame_done: Default::default(),
             status_idle: Default::default(),
+            pix_thr: FccPixThr::new(),
             intra: FccIntra::new(p),
             window: FccWindow::new(p),
+            thr_window: FccThrWindow::new(p),
             dist_tree: FccDistTree::new(p),
             sort_net: FccSortNet::new(p),
             merge_table: FccMergeTable::new(p),
@@ -262,6 +271,8 @@ impl FccTop {
             out_start: Default::default(),
             out_start_net: Default::default(),
             sign16: kb(0x8000),
+            slope_h: kb(p.th_h_slope_sq()),
+            slope_v: kb(p.th_v_slope_sq()),
             zero8: kb(0),
             one8: kb(1),
             zero12: kb(0),
@@ -284,8 +295,10 @@ impl Logic for FccTop {
             pad, discard, in_done, err, credits, room, last_seen, last_col, pen_col, pen_row,
             one_row
         );
+        self.pix_thr.clk.next = self.clk.val();
         self.intra.clk.next = self.clk.val();
         self.window.clk.next = self.clk.val();
+        self.thr_window.clk.next = self.clk.val();
         self.dist_tree.clk.next = self.clk.val();
         self.sort_net.clk.next = self.clk.val();
         self.merge_table.clk.next = self.clk.val();
@@ -480,11 +493,18 @@ impl Logic for FccTop {
         self.dist_tree_rst.d.next = self.regs.core_rst_next.val();
         self.merge_table_rst.d.next = self.regs.core_rst_next.val();
         // ---- Blocks.
+        self.pix_thr.rst.next = self.intra_rst.q.val();
+        self.pix_thr.pix.next = self.slot_q.q.val();
+        self.pix_thr.sh.next = self.slope_h.val();
+        self.pix_thr.sv.next = self.slope_v.val();
+        self.pix_thr.ch_t.next = self.regs.run_th_h_c.val();
+        self.pix_thr.cv_t.next = self.regs.run_th_v_c.val();
         self.intra.rst.next = self.intra_rst.q.val();
-        self.intra.pix.next = self.slot_q.q.val();
+        self.intra.pix.next = self.pix_thr.out.val();
+        self.intra.key.next = self.pix_thr.key.val();
+        self.intra.ch.next = self.pix_thr.ch.val();
         self.intra.last_col.next = self.last_col.q.val();
         self.window.last_col.next = self.last_col.q.val();
-        self.intra.th_h_c.next = self.regs.run_th_h_c.val();
         self.window.rst.next = self.window_rst.q.val();
         self.window.run_k.next = self.regs.run_k.val();
         self.window.inp.next.valid = self.intra.out.val().valid;
@@ -504,13 +524,22 @@ impl Logic for FccTop {
         self.window.rep_waddr.next = self.sort_net.rep_waddr.val();
         self.window.rep_wdata.next = self.sort_net.rep_wdata.val();
         self.dist_tree.rst.next = self.dist_tree_rst.q.val();
-        self.dist_tree.th_v_c.next = self.regs.run_th_v_c.val();
+        self.thr_window.rst.next = self.window_rst.q.val();
+        self.thr_window.valid.next = self.intra.out.val().valid;
+        self.thr_window.col.next = self.intra.out.val().col;
+        self.thr_window.rdcol.next = self.intra.out.val().rdcol;
+        self.thr_window.key.next = self.pix_thr.key.val();
+        self.thr_window.cv.next = self.pix_thr.cv.val();
+        self.dist_tree.centre_key.next = self.thr_window.centre_key.val();
+        self.dist_tree.centre_cv.next = self.thr_window.centre_cv.val();
         self.dist_tree.centre_in.next = self.window.centre.val();
         for e in 0..self.window.ent_ok.len() {
             self.dist_tree.ent_ok[e].next = self.window.ent_ok[e].val();
             self.dist_tree.ent_x[e].next = self.window.ent_x[e].val();
             self.dist_tree.ent_y[e].next = self.window.ent_y[e].val();
             self.dist_tree.ent_z[e].next = self.window.ent_z[e].val();
+            self.dist_tree.ent_key[e].next = self.thr_window.ent_key[e].val();
+            self.dist_tree.ent_cv[e].next = self.thr_window.ent_cv[e].val();
             self.sort_net.hit[e].next = self.dist_tree.hit[e].val();
             self.sort_net.rep[e].next = self.window.ent_rep[e].val();
         }

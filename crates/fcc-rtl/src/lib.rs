@@ -89,6 +89,7 @@ mod fcc_flatten;
 mod fcc_gearbox;
 mod fcc_group_or;
 mod fcc_intra;
+mod fcc_intra_thr;
 mod fcc_join_queue;
 mod fcc_keep_reg;
 mod fcc_known_mask;
@@ -98,6 +99,8 @@ mod fcc_match_delay;
 mod fcc_merge_table;
 mod fcc_min_tree;
 mod fcc_pick;
+mod fcc_pix_thr;
+mod fcc_point_thr;
 mod fcc_pop_decision;
 mod fcc_prefix_or;
 mod fcc_ram;
@@ -113,6 +116,7 @@ mod fcc_sq_dist;
 mod fcc_table_init;
 mod fcc_table_ports;
 mod fcc_th_square;
+mod fcc_thr_window;
 mod fcc_top;
 mod fcc_two_or;
 mod fcc_union_engine;
@@ -359,6 +363,17 @@ pub fn window_module(p: &FccParams) -> String {
 pub fn generate_window(p: &FccParams) -> Result<String, RtlError> {
     p.validate_for_hardware()?;
     generate_block(p, fcc_window_probe::FccWindowProbe::new(p), WINDOW_NAME)
+}
+
+/// Name of the per-point threshold unit's module when generated alone (its
+/// bench), before the configuration suffix.
+pub const POINT_THR_NAME: &str = "fcc_point_thr";
+
+/// The per-point threshold unit `fcc_point_thr` alone, for its bench (the
+/// same for every build; the configuration suffix names it).
+pub fn generate_point_thr(p: &FccParams) -> Result<String, RtlError> {
+    p.validate_for_hardware()?;
+    generate_block(p, fcc_point_thr::FccPointThr::new(), POINT_THR_NAME)
 }
 
 /// Name of the sort network's module when generated alone (its bench),

@@ -105,6 +105,18 @@ pub fn label_update_waivers(p: &FccParams) -> String {
     s
 }
 
+/// The waivers of `fcc_point_thr.v`, the per-point threshold unit
+/// generated alone for its bench.
+pub fn point_thr_waivers(p: &FccParams) -> String {
+    let mut s = file_header(p, "//");
+    s.push_str("`verilator_config\n");
+    s.push_str(
+        "// The module carries the configuration suffix; the file does not.\n\
+         lint_off -rule DECLFILENAME -file \"*fcc_point_thr.v\"\n",
+    );
+    s
+}
+
 /// Lint `verilog`, generated for `p` (top module [`top_module`]), with the
 /// waivers in `vlt`. Returns the log on success.
 pub fn lint_files(p: &FccParams, verilog: &Path, vlt: &Path) -> Result<String, RtlError> {
