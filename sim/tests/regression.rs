@@ -3,7 +3,8 @@
 //! Per K in {3, 5, 7, 9, 11}: every directed frame, seeded random frames with
 //! random input gaps and output back-pressure, early and late `tlast` with
 //! recovery, a reset in the middle of a frame (16 x 256), and two synthetic
-//! 64 x 2048 scenes whose cycle counts are printed. Models are built once per
+//! 64 x 2048 scenes whose cycle counts are printed. Range-adaptive
+//! thresholds at K = 3, 7 and 11. Models are built once per
 //! configuration and cached (see `fcc_sim::model`).
 
 use fcc_golden::Frame;
@@ -320,6 +321,62 @@ per_fsize! {
     7 => fsize7_directed_random_protocol, fsize7_scenes_64x2048;
     9 => fsize9_directed_random_protocol, fsize9_scenes_64x2048;
     11 => fsize11_directed_random_protocol, fsize11_scenes_64x2048;
+}
+
+/// Range-adaptive thresholds (spec §2) at the `adaptive` preset's slopes and
+/// at steeper ones: the synthetic scenes (objects out to 80 m) at 64 x 2048
+/// and K = 7, seeded random frames (ranges to 80 m) with gaps and
+/// back-pressure at 16 x 256 and K = 3 and 11. The slopes are the build's.
+fn adaptive(fsize: usize, rows: usize, cols: usize, slopes: (f64, f64)) {
+    let (th_h, th_v, _, _) = fcc_params::ADAPTIVE;
+    let p = FccParams {
+        rows,
+        cols,
+        fsize,
+        th_h,
+        th_v,
+        th_h_slope: slopes.0,
+        th_v_slope: slopes.1,
+        label_bits: if rows * cols > 4096 { 15 } else { 11 },
+        ..Default::default()
+    };
+    let mut d = dut(&p);
+    if rows == 64 {
+        for seed in [1u64, 4] {
+            let cfg = fcc_scene::SceneConfig {
+                rows,
+                cols,
+                seed,
+                ..Default::default()
+            };
+            let scene = fcc_scene::generate(&cfg).unwrap();
+            let f = Frame::from_xyz_f32(rows, cols, &scene.xyz);
+            check(&mut d, &f, &Drive::default(), &format!("adaptive scene {seed}"));
+        }
+    }
+    for seed in 1..=8u64 {
+        let f = frames::random(&p, seed);
+        let drive = Drive {
+            gap: 0.1,
+            backpressure: 0.2,
+            seed,
+            ..Default::default()
+        };
+        check(&mut d, &f, &drive, &format!("adaptive random {seed}"));
+    }
+    check(&mut d, &frames::thresholds(&p), &Drive::default(), "adaptive thresholds");
+}
+
+#[test]
+fn adaptive_thresholds_fsize7_scenes_64x2048() {
+    let (_, _, a_h, a_v) = fcc_params::ADAPTIVE;
+    adaptive(7, 64, 2048, (a_h, a_v));
+}
+
+#[test]
+fn adaptive_thresholds_fsize3_and_fsize11_random() {
+    adaptive(3, 16, 256, (0.08, 0.2));
+    adaptive(11, 16, 256, (0.05, 0.5));
 }
 
 /// A reset in every state of the top-level state machine and of the merge

@@ -139,7 +139,7 @@ pub struct HwArgs {
     /// Refused by the row-major core (it keeps the unlimited contract).
     #[command(flatten)]
     pub limits: LimitArgs,
-    /// Refused by the RTL while it has fixed thresholds.
+    /// The build's slopes (power-on and fixed: not run registers yet).
     #[command(flatten)]
     pub slopes: SlopeArgs,
 }

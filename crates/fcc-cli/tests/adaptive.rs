@@ -66,7 +66,7 @@ fn preset_adaptive_is_its_slopes_and_joins_far_objects() {
 }
 
 #[test]
-fn slopes_are_checked_and_refused_by_the_rtl() {
+fn slopes_are_checked_and_refused_by_the_board() {
     let d = tmpdir("adaptive-refusals");
     let npy = d.join("f.npy");
     let o = fcc(&[
@@ -108,7 +108,7 @@ fn slopes_are_checked_and_refused_by_the_rtl() {
                 "--preset",
                 "adaptive",
             ],
-            "the RTL has fixed thresholds",
+            "the slopes of its build",
         ),
     ] {
         let o = fcc(&args);
