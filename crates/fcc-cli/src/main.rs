@@ -46,10 +46,11 @@ enum Command {
     /// removal `slope` (the default) and `plane` fit a plane to the whole
     /// frame, so they run the frame path: a frame's records are written
     /// after its ground removal. Stderr names the path. On both, clustering
-    /// starts when a frame's last packet has arrived: the destaggered
-    /// image's first columns (Ouster) and the rotation's column grid
-    /// (Velodyne) need the whole frame, and live gives the records of
-    /// `cluster --stream`, exactly.
+    /// starts when the frame is complete (as offline: the next frame's
+    /// first packet, the rotation's wrap): the destaggered image's first
+    /// columns (Ouster) and the rotation's column grid (Velodyne) need the
+    /// whole frame, and live gives the records of `cluster --stream`,
+    /// exactly.
     Live(cmd_live::LiveArgs),
     /// Send a capture's UDP packets to a socket at their recorded timing.
     Replay(cmd_live::ReplayArgs),
