@@ -400,6 +400,56 @@ mod tests {
     }
 
     #[test]
+    fn column_stream_rows_are_the_rows_of_the_whole_frame() {
+        // Ground left in (one big cluster) and small ones dropped: the rows
+        // built per record as it closes equal those of the whole frame's
+        // points and labels, in closing order.
+        let img = image();
+        let cfg = PipelineConfig {
+            ground: GroundParams {
+                method: GroundMethod::None,
+                ..GroundParams::default()
+            },
+            min_points: 2,
+            ..PipelineConfig::default()
+        };
+        let whole = stream_image(&img, &cfg, |_| {}).unwrap();
+        let idx: Vec<usize> = (0..img.pixels())
+            .filter(|&i| img.point(i).is_some())
+            .collect();
+        let points: Vec<[f32; 3]> = idx.iter().filter_map(|&i| img.point(i)).collect();
+        let labels: Vec<u32> = idx.iter().map(|&i| whole.result.labels[i]).collect();
+        let mut want =
+            crate::clusters::cluster_rows("f", &points, &labels, &whole.result.labels, img.cols)
+                .unwrap();
+        for row in &mut want {
+            let c = &whole.records[row.cluster as usize - 1];
+            row.set_record(&c.record, c.oriented_box.as_ref());
+        }
+        assert!(want.len() >= 2, "{} clusters", want.len());
+        let params = params_for(&img, &cfg.params);
+        let mut cs = ColumnStream::new(&params, cfg.min_points).unwrap();
+        let frame = img.to_frame();
+        let mut got = Vec::new();
+        let mut column = vec![None; frame.rows];
+        for c in 0..=frame.cols {
+            let n = if c < frame.cols {
+                for (i, v) in column.iter_mut().enumerate() {
+                    *v = frame.get(i, c);
+                }
+                cs.push_column(&column).unwrap().len()
+            } else {
+                cs.finish().unwrap().len()
+            };
+            for k in 0..n {
+                got.push(cs.row(k, "f", &img));
+            }
+        }
+        got.sort_by_key(|r| r.cluster);
+        assert_eq!(got, want);
+    }
+
+    #[test]
     fn points_beyond_the_q7_8_range_are_counted_as_out_of_range() {
         let mut img = RangeImage::empty(16, 256);
         img.set(0, Some([10.0, 0.0, 0.0]));
