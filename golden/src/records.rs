@@ -357,10 +357,48 @@ pub fn oriented_box(points: &[Point]) -> Option<OrientedBox> {
 
 /// Convex hull, counter-clockwise, without collinear points (Andrew's
 /// monotone chain; integer cross products are exact).
+/// Sort `p` and drop duplicates, keeping at least every point that can be a
+/// vertex of its convex hull: where the x span is small against the count
+/// (a cluster's Q7.8 points), only the lowest and highest y of each x, in
+/// order, without a sort; otherwise all, sorted. Either way the hull below
+/// is the same: a point between two others of its x is never a vertex.
+fn sorted_extremes(p: &mut Vec<[i64; 2]>) {
+    let (lo, hi) = p.iter().fold((i64::MAX, i64::MIN), |(lo, hi), q| {
+        (lo.min(q[0]), hi.max(q[0]))
+    });
+    let span = hi.saturating_sub(lo).saturating_add(1);
+    if p.len() < 16 || span > 2 * p.len() as i64 {
+        p.sort_unstable();
+        p.dedup();
+        return;
+    }
+    let mut ys = vec![(i64::MAX, i64::MIN); span as usize];
+    for q in p.iter() {
+        let y = &mut ys[(q[0] - lo) as usize];
+        *y = (y.0.min(q[1]), y.1.max(q[1]));
+    }
+    p.clear();
+    for (k, &(ymin, ymax)) in ys.iter().enumerate() {
+        if ymin > ymax {
+            continue;
+        }
+        let x = lo + k as i64;
+        p.push([x, ymin]);
+        if ymax != ymin {
+            p.push([x, ymax]);
+        }
+    }
+}
+
 fn convex_hull(points: impl Iterator<Item = [i64; 2]>) -> Vec<[i64; 2]> {
     let mut p: Vec<[i64; 2]> = points.collect();
-    p.sort_unstable();
-    p.dedup();
+    sorted_extremes(&mut p);
+    monotone_chain(p)
+}
+
+/// The convex hull of sorted, distinct points: its vertices counter-clockwise
+/// from the smallest, collinear points dropped.
+fn monotone_chain(p: Vec<[i64; 2]>) -> Vec<[i64; 2]> {
     if p.len() <= 2 {
         return p;
     }
@@ -391,6 +429,39 @@ fn convex_hull(points: impl Iterator<Item = [i64; 2]>) -> Vec<[i64; 2]> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn hull_of_the_extremes_is_the_hull_of_all_points() {
+        // Dense and sparse x spans, vertical runs, duplicates, lines.
+        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = |m: i64| {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed % m as u64) as i64
+        };
+        for case in 0..400 {
+            let n = 1 + next(300) as usize;
+            let (wx, wy) = (1 + next([4, 40, 400, 4000][case % 4]), 1 + next(500));
+            let pts: Vec<[i64; 2]> = (0..n)
+                .map(|_| [next(wx) - wx / 2, if case % 7 == 0 { 3 } else { next(wy) }])
+                .collect();
+            let mut all = pts.clone();
+            all.sort_unstable();
+            all.dedup();
+            let mut ext = pts.clone();
+            sorted_extremes(&mut ext);
+            assert!(
+                ext.windows(2).all(|w| w[0] < w[1]),
+                "case {case}: not sorted"
+            );
+            assert_eq!(
+                monotone_chain(ext),
+                monotone_chain(all),
+                "case {case}: {n} points"
+            );
+        }
+    }
 
     #[test]
     fn oriented_box_of_a_rotated_rectangle() {

@@ -25,6 +25,20 @@ struct Seen {
     run: u32,
 }
 
+/// The root of `x`'s set, halving the path on the way.
+#[inline]
+fn find(parent: &mut [u32], mut x: u32) -> u32 {
+    loop {
+        let p = parent[x as usize];
+        if p == x {
+            return x;
+        }
+        let g = parent[p as usize];
+        parent[x as usize] = g;
+        x = g;
+    }
+}
+
 /// What the stream reports per frame besides the records.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize)]
 pub struct StreamStats {
@@ -56,9 +70,11 @@ pub struct Stream {
     finished: bool,
     first: Vec<Option<Seen>>,
     latest: Vec<Option<Seen>>,
-    /// The last h + 1 columns: point and run of each labelled pixel, `R`
-    /// entries per column, column `c` in slot `c % (h + 1)`.
-    window: Vec<(Point, u32)>,
+    /// The last h + 1 columns: run and point of each labelled pixel, `h + 1`
+    /// entries per row (row `i`, column `c` at `i * (h + 1) + c % (h + 1)`),
+    /// so that the window columns of one row are adjacent.
+    win_run: Vec<u32>,
+    win_point: Vec<Point>,
     /// Per run: union-find parent, record (at roots), labels held (at
     /// roots), pixel list head and tail (at roots), the column-order index
     /// of its first pixel (at roots), hold stamp, record id once closed.
@@ -82,6 +98,8 @@ pub struct Stream {
     stats: StreamStats,
     out: Vec<Record>,
     out_points: Vec<Point>,
+    /// The pixels (raster index) of `out_points`, in the same order.
+    out_pixels: Vec<u32>,
     out_ranges: Vec<(usize, usize)>,
 }
 
@@ -97,7 +115,8 @@ impl Stream {
             finished: false,
             first: vec![None; r],
             latest: vec![None; r],
-            window: vec![([0; 3], NONE); r * (params.half() + 1)],
+            win_run: vec![NONE; r * (params.half() + 1)],
+            win_point: vec![[0; 3]; r * (params.half() + 1)],
             parent: Vec::new(),
             acc: Vec::new(),
             labels_held: Vec::new(),
@@ -115,6 +134,7 @@ impl Stream {
             stats: StreamStats::default(),
             out: Vec::new(),
             out_points: Vec::new(),
+            out_pixels: Vec::new(),
             out_ranges: Vec::new(),
         })
     }
@@ -152,6 +172,7 @@ impl Stream {
         let c = self.col;
         self.out.clear();
         self.out_points.clear();
+        self.out_pixels.clear();
         self.out_ranges.clear();
         self.take_column(c, column);
         self.col = c + 1;
@@ -169,6 +190,7 @@ impl Stream {
         }
         self.out.clear();
         self.out_points.clear();
+        self.out_pixels.clear();
         self.out_ranges.clear();
         for i in 0..rows {
             let (Some(f), Some(l)) = (self.first[i], self.latest[i]) else {
@@ -209,6 +231,13 @@ impl Stream {
     pub fn points_of(&self, k: usize) -> &[Point] {
         let (a, b) = self.out_ranges[k];
         &self.out_points[a..b]
+    }
+
+    /// The pixels (raster index `row * C + col`) of the `k`-th record of
+    /// the last call's result, in the order of [`points_of`](Self::points_of).
+    pub fn pixels_of(&self, k: usize) -> &[u32] {
+        let (a, b) = self.out_ranges[k];
+        &self.out_pixels[a..b]
     }
 
     /// What the finished frame (or the frame so far) reported.
@@ -264,13 +293,8 @@ impl Stream {
     }
 
     #[inline]
-    fn find(&mut self, mut x: u32) -> u32 {
-        while self.parent[x as usize] != x {
-            let g = self.parent[self.parent[x as usize] as usize];
-            self.parent[x as usize] = g;
-            x = g;
-        }
-        x
+    fn find(&mut self, x: u32) -> u32 {
+        find(&mut self.parent, x)
     }
 
     /// Unite the clusters of runs `a` and `b`; returns the root.
@@ -318,15 +342,20 @@ impl Stream {
     fn take_column(&mut self, c: usize, column: &[Option<Point>]) {
         let (rows, cols) = (self.params.rows, self.params.cols);
         let h = self.params.half();
+        let w = h + 1;
         let th = Thresholds::new(&self.params);
         let half = (cols / 2) as u32;
-        let slot = c % (h + 1);
-        self.window[slot * rows..(slot + 1) * rows].fill(([0; 3], NONE));
-        // Where columns c, c - 1, ..., c - h start in the window.
-        let mut bases = [0usize; 8];
-        for (dc, b) in bases.iter_mut().enumerate().take(h.min(c) + 1) {
-            *b = ((c - dc) % (h + 1)) * rows;
+        let slot = c % w;
+        for rr in 0..rows {
+            self.win_run[rr * w + slot] = NONE;
         }
+        // The slots of columns c, c - 1, ..., c - h (those there are).
+        let n = h.min(c) + 1;
+        let mut slots = [0usize; 8];
+        for (dc, s) in slots.iter_mut().enumerate().take(n) {
+            *s = (c - dc) % w;
+        }
+        let slots = &slots[..n];
         for (i, p) in column.iter().enumerate() {
             let Some(p) = *p else { continue };
             self.stats.points += 1;
@@ -362,7 +391,8 @@ impl Stream {
                 self.next_px[self.tail[r] as usize] = k as u32;
             }
             self.tail[r] = k as u32;
-            self.window[slot * rows + i] = (p, run);
+            self.win_run[i * w + slot] = run;
+            self.win_point[i * w + slot] = p;
             // The window pairs whose later pixel this is: columns c - h ..= c,
             // rows within h (in column c only the rows above are filled).
             // Row by row, a window row's pixels mostly belong to one run:
@@ -373,16 +403,17 @@ impl Stream {
                 if rr == i {
                     continue;
                 }
+                let row = rr * w;
                 let mut known = NONE;
-                for &base in &bases[..=h.min(c)] {
-                    let (q, qrun) = self.window[base + rr];
-                    if qrun == NONE || qrun == known {
+                for &s in slots {
+                    let qrun = self.win_run[row + s];
+                    if qrun == known || qrun == NONE {
                         continue;
                     }
-                    let qroot = self.find(qrun);
+                    let qroot = find(&mut self.parent, qrun);
                     if qroot == root {
                         known = qrun;
-                    } else if th.joins(p, q) {
+                    } else if th.joins(p, self.win_point[row + s]) {
                         root = self.union(root, qroot);
                         known = qrun;
                     }
@@ -455,6 +486,7 @@ impl Stream {
             let mut px = self.head[root];
             while px != NONE {
                 self.out_points.push(self.pixel_point[px as usize]);
+                self.out_pixels.push(px);
                 px = self.next_px[px as usize];
             }
             self.out_ranges.push((start, self.out_points.len()));

@@ -749,9 +749,7 @@ pub(crate) fn per_point(item: &Item, out: &PipelineResult) -> anyhow::Result<Per
             )
         }
         None => {
-            let idx: Vec<usize> = (0..item.image.pixels())
-                .filter(|&i| item.image.point(i).is_some())
-                .collect();
+            let idx = valid_pixels(&item.image);
             (
                 idx.iter().filter_map(|&i| item.image.point(i)).collect(),
                 idx.iter().map(|&i| out.labels[i]).collect(),
@@ -762,6 +760,14 @@ pub(crate) fn per_point(item: &Item, out: &PipelineResult) -> anyhow::Result<Per
             )
         }
     })
+}
+
+/// The pixels of `image` that hold a point, in raster order: the points of
+/// the per-point outputs of an image without a projection.
+pub(crate) fn valid_pixels(image: &RangeImage) -> Vec<usize> {
+    (0..image.pixels())
+        .filter(|&i| image.point(i).is_some())
+        .collect()
 }
 
 /// The rows of the cluster table and of `--stream`'s JSON lines for one

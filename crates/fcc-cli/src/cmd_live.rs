@@ -1,18 +1,23 @@
 //! `fcc live`: a sensor's UDP packets in, the records of `fcc cluster
-//! --stream` out as JSON lines, frame by frame as each frame's last packet
-//! arrives; `fcc replay`: a capture's packets sent to a socket at their
+//! --stream` out as JSON lines: on the column path (`--ground none`) each
+//! record as the stream closes it, on the frame path (a ground removal that
+//! fits the whole frame) the frame's records after its ground removal;
+//! `fcc replay`: a capture's packets sent to a socket at their
 //! recorded timing, to feed `fcc live` without a sensor.
 
-use crate::cmd_lidar::{per_point, stream_rows, write_json_lines, GroundArgs};
+use crate::cmd_lidar::{per_point, stream_rows, valid_pixels, write_json_lines, GroundArgs};
 use crate::model_args::ModelArgs;
 use crate::sensor_args::VelodyneArgs;
 use anyhow::{bail, Context};
 use clap::Args;
 use fcc_golden::MergeMode;
+use fcc_lidar::clusters::ClusterRow;
+use fcc_lidar::ground::GroundMethod;
+use fcc_lidar::live::LiveFrame;
 use fcc_lidar::live::{Decoder, End, LiveOptions, LiveSource};
 use fcc_lidar::ouster::{bump_frame_id, OusterMetadata};
 use fcc_lidar::pcap::PcapReader;
-use fcc_lidar::pipeline::PipelineConfig;
+use fcc_lidar::pipeline::{params_for, ColumnStream, PipelineConfig};
 use fcc_lidar::sinks::mcap::{McapFrame, McapSink};
 use fcc_lidar::source::{Frame as Item, SourceOptions};
 use std::net::{SocketAddr, ToSocketAddrs, UdpSocket};
@@ -155,6 +160,22 @@ pub fn run_live(args: &LiveArgs) -> anyhow::Result<()> {
         }
         None => None,
     };
+    // The ground removals that fit a plane to the whole frame need the frame
+    // before any column can be cleared of its ground.
+    let column_path = cfg.ground.method == GroundMethod::None;
+    if column_path {
+        eprintln!("column path: each record written as the stream closes it (--ground none)");
+    } else {
+        eprintln!(
+            "frame path: ground removal `{}` fits a plane to the whole frame, so each frame's records are written after its last packet and its ground removal (--ground none takes the column path)",
+            cfg.ground.method
+        );
+    }
+    #[cfg(feature = "foxglove")]
+    let want_points = mcap.is_some() || viz.is_some();
+    #[cfg(not(feature = "foxglove"))]
+    let want_points = mcap.is_some();
+    let mut columns: Option<ColumnStream> = None;
     let (mut frames, mut clusters) = (0u64, 0usize);
     let mut latency_ms: Vec<f64> = Vec::new();
     // Per record: from the packet of its last column (Ouster) or of the
@@ -184,48 +205,67 @@ pub fn run_live(args: &LiveArgs) -> anyhow::Result<()> {
                     f.lost_columns
                 );
             }
-            // The image moves into the item; the column times stay with `f`.
-            let image = std::mem::replace(&mut f.image, fcc_lidar::RangeImage::empty(0, 0));
-            let item = Item::image(name, image, Some(std::mem::take(&mut f.intensity)));
-            let (out, rows) = stream_rows(&item, &cfg)?;
-            write_json_lines(&mut stdout.lock(), &rows)?;
-            if !f.at_end {
-                let now = Instant::now();
-                latency_ms.push((now - f.received_at).as_secs_f64() * 1e3);
-                for r in &rows {
-                    let t = f
-                        .column_time(r.span_last_col as usize)
-                        .unwrap_or(f.received_at);
-                    record_ms.push(now.saturating_duration_since(t).as_secs_f64() * 1e3);
+            let stamp_ns = f.sensor_ns.unwrap_or(f.received_unix_ns);
+            let (rows, points, labels) = if column_path {
+                let (rows, labels) = column_frame(
+                    &mut columns,
+                    &cfg,
+                    &f,
+                    &name,
+                    &mut stdout.lock(),
+                    &mut record_ms,
+                )?;
+                if !f.at_end {
+                    latency_ms.push(f.received_at.elapsed().as_secs_f64() * 1e3);
                 }
+                if !want_points {
+                    (rows, Vec::new(), Vec::new())
+                } else {
+                    let idx = valid_pixels(&f.image);
+                    let points = idx.iter().filter_map(|&i| f.image.point(i)).collect();
+                    (rows, points, idx.iter().map(|&i| labels[i]).collect())
+                }
+            } else {
+                // The image moves into the item; the column times stay with `f`.
+                let image = std::mem::replace(&mut f.image, fcc_lidar::RangeImage::empty(0, 0));
+                let item = Item::image(name, image, Some(std::mem::take(&mut f.intensity)));
+                let (out, rows) = stream_rows(&item, &cfg)?;
+                write_json_lines(&mut stdout.lock(), &rows)?;
+                if !f.at_end {
+                    let now = Instant::now();
+                    latency_ms.push((now - f.received_at).as_secs_f64() * 1e3);
+                    for r in &rows {
+                        let t = f
+                            .column_time(r.span_last_col as usize)
+                            .unwrap_or(f.received_at);
+                        record_ms.push(now.saturating_duration_since(t).as_secs_f64() * 1e3);
+                    }
+                }
+                if !want_points {
+                    (rows, Vec::new(), Vec::new())
+                } else {
+                    let (points, labels, _, _) = per_point(&item, &out)?;
+                    (rows, points, labels)
+                }
+            };
+            if let Some(sink) = &mut mcap {
+                sink.write(&McapFrame {
+                    stamp_ns,
+                    frame_id: "lidar",
+                    points: &points,
+                    labels: &labels,
+                    clusters: &rows,
+                })?;
             }
             #[cfg(feature = "foxglove")]
-            let want_points = mcap.is_some() || viz.is_some();
-            #[cfg(not(feature = "foxglove"))]
-            let want_points = mcap.is_some();
-            if want_points {
-                // The sensor's stamp where its packets carry one, else the receive time.
-                let stamp_ns = f.sensor_ns.unwrap_or(f.received_unix_ns);
-                let (points, labels, _, _) = per_point(&item, &out)?;
-                if let Some(sink) = &mut mcap {
-                    sink.write(&McapFrame {
-                        stamp_ns,
-                        frame_id: "lidar",
-                        points: &points,
-                        labels: &labels,
-                        clusters: &rows,
-                    })?;
-                }
-                #[cfg(feature = "foxglove")]
-                if let Some(v) = &mut viz {
-                    v.publish(&fcc_viz::VizFrame {
-                        stamp_ns,
-                        frame_id: "lidar",
-                        points: &points,
-                        labels: &labels,
-                        clusters: &rows,
-                    });
-                }
+            if let Some(v) = &mut viz {
+                v.publish(&fcc_viz::VizFrame {
+                    stamp_ns,
+                    frame_id: "lidar",
+                    points: &points,
+                    labels: &labels,
+                    clusters: &rows,
+                });
             }
             frames += 1;
             clusters += rows.len();
@@ -275,6 +315,63 @@ pub fn run_live(args: &LiveArgs) -> anyhow::Result<()> {
         eprintln!("wrote {} ({frames} frames)", p.display());
     }
     result
+}
+
+/// The column path for one frame: its columns through the stream (`stream`,
+/// made or remade for the frame's size), each record's JSON line written and
+/// flushed as it closes, its latency from its last column's packet pushed to
+/// `record_ms` (frames delivered by the idle timeout left out). Returns the
+/// rows and the label image.
+fn column_frame(
+    stream: &mut Option<ColumnStream>,
+    cfg: &PipelineConfig,
+    f: &LiveFrame,
+    name: &str,
+    out: &mut impl std::io::Write,
+    record_ms: &mut Vec<f64>,
+) -> anyhow::Result<(Vec<ClusterRow>, Vec<u32>)> {
+    let params = params_for(&f.image, &cfg.params);
+    if !stream
+        .as_ref()
+        .is_some_and(|s| *s.params() == params && s.min_points() == cfg.min_points)
+    {
+        *stream =
+            Some(ColumnStream::new(&params, cfg.min_points).with_context(|| name.to_string())?);
+    }
+    let s = stream.as_mut().expect("made above");
+    let frame = f.image.to_frame();
+    let mut column = vec![None; frame.rows];
+    let mut rows = Vec::new();
+    for c in 0..=frame.cols {
+        let n = if c < frame.cols {
+            for (i, v) in column.iter_mut().enumerate() {
+                *v = frame.get(i, c);
+            }
+            s.push_column(&column)?.len()
+        } else {
+            s.finish()?.len()
+        };
+        if n == 0 {
+            continue;
+        }
+        let start = rows.len();
+        for k in 0..n {
+            rows.push(s.row(k, name, &f.image));
+        }
+        write_json_lines(out, &rows[start..])?;
+        if !f.at_end {
+            let now = Instant::now();
+            for r in &rows[start..] {
+                let t = f
+                    .column_time(r.span_last_col as usize)
+                    .unwrap_or(f.received_at);
+                record_ms.push(now.saturating_duration_since(t).as_secs_f64() * 1e3);
+            }
+        }
+    }
+    let mut labels = Vec::new();
+    s.labels_into(&mut labels)?;
+    Ok((rows, labels))
 }
 
 #[derive(Args, Debug)]

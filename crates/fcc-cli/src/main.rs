@@ -39,7 +39,18 @@ enum Command {
     /// labels, cluster tables, pictures and statistics out.
     Cluster(cmd_lidar::ClusterLidarArgs),
     /// Cluster a live sensor: Ouster or Velodyne UDP packets in, one JSON
-    /// line per record out (as `cluster --stream`), frame by frame.
+    /// line per record out (as `cluster --stream`).
+    ///
+    /// With `--ground none` the column path runs: the frame's columns go
+    /// through the stream and each record is written as it closes. Ground
+    /// removal `slope` (the default) and `plane` fit a plane to the whole
+    /// frame, so they run the frame path: a frame's records are written
+    /// after its ground removal. Stderr names the path. On both, clustering
+    /// starts when the frame is complete (as offline: the next frame's
+    /// first packet, the rotation's wrap): the destaggered image's first
+    /// columns (Ouster) and the rotation's column grid (Velodyne) need the
+    /// whole frame, and live gives the records of `cluster --stream`,
+    /// exactly.
     Live(cmd_live::LiveArgs),
     /// Send a capture's UDP packets to a socket at their recorded timing.
     Replay(cmd_live::ReplayArgs),

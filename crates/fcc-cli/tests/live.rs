@@ -112,8 +112,10 @@ fn stem(p: &str) -> &str {
     p.rsplit_once('.').map_or(p, |(a, _)| a)
 }
 
-#[test]
-fn live_on_a_replay_gives_the_records_of_cluster_stream() {
+/// Each Ouster sample capture and the VLP-16 fixture replayed to `fcc live
+/// GROUND` give the JSON lines of `fcc cluster --stream GROUND` on the file,
+/// and live's stderr names the path it ran (`path`).
+fn live_equals_offline(ground: &[&str], path: &str) {
     let d = lidar_data();
     let mut cases: Vec<(String, Vec<String>)> = fcc_lidar::ouster::SAMPLE_CAPTURES
         .iter()
@@ -148,6 +150,7 @@ fn live_on_a_replay_gives_the_records_of_cluster_stream() {
         let mut off_args = vec!["cluster", "-i", capture.as_str(), "--stream"];
         off_args.extend(opts.iter().map(String::as_str));
         off_args.extend(extra);
+        off_args.extend(ground);
         let off = fcc(&off_args);
         assert!(
             off.status.success(),
@@ -158,6 +161,7 @@ fn live_on_a_replay_gives_the_records_of_cluster_stream() {
         let mut live_args: Vec<&str> = opts.iter().map(String::as_str).collect();
         live_args.extend(["--name", name, "--idle-timeout", "1.5"]);
         live_args.extend(extra);
+        live_args.extend(ground);
         let (live, err) = live_on_replay(Path::new(capture), &live_args);
         assert!(live.status.success(), "{capture}: {err}");
         let (a, b) = (
@@ -179,7 +183,20 @@ fn live_on_a_replay_gives_the_records_of_cluster_stream() {
                 && err.contains("0 malformed"),
             "{capture}: {err}"
         );
+        assert!(err.contains(path), "{capture}: no `{path}` in {err}");
     }
+}
+
+#[test]
+fn live_on_a_replay_gives_the_records_of_cluster_stream() {
+    // The default ground removal (slope) fits the whole frame.
+    live_equals_offline(&[], "frame path: ground removal `slope`");
+}
+
+#[test]
+fn column_path_gives_the_records_of_cluster_stream_record_for_record() {
+    // Records written as they close, from the columns of each frame.
+    live_equals_offline(&["--ground", "none"], "column path:");
 }
 
 #[test]

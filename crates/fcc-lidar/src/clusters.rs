@@ -153,37 +153,61 @@ pub fn cluster_rows(
             first.entry(l).or_insert(i);
         }
     }
-    let mut rows: BTreeMap<u32, (ClusterRow, [f64; 3])> = BTreeMap::new();
+    let mut rows: BTreeMap<u32, RowAcc> = BTreeMap::new();
     for (p, &l) in points.iter().zip(labels) {
         if l == 0 || !p.iter().all(|v| v.is_finite()) {
             continue;
         }
+        rows.entry(l)
+            .or_insert_with(|| {
+                let px = first.get(&l).copied().unwrap_or(0);
+                RowAcc::new(frame, l, px, cols)
+            })
+            .add(*p);
+    }
+    Ok(rows.into_values().map(RowAcc::finish).collect())
+}
+
+/// One cluster's row being summed from its points (in raster order: the
+/// order fixes the bits of the centroid), before its record is set.
+#[derive(Debug, Clone)]
+pub struct RowAcc {
+    row: ClusterRow,
+    sum: [f64; 3],
+}
+
+impl RowAcc {
+    /// Cluster `cluster` of `frame`, whose first pixel in raster order is
+    /// `first_px` of an image `cols` wide.
+    pub fn new(frame: &str, cluster: u32, first_px: usize, cols: usize) -> RowAcc {
+        RowAcc {
+            row: ClusterRow {
+                frame: frame.to_string(),
+                cluster,
+                points: 0,
+                centroid_x: 0.0,
+                centroid_y: 0.0,
+                centroid_z: 0.0,
+                min_x: f32::INFINITY,
+                min_y: f32::INFINITY,
+                min_z: f32::INFINITY,
+                max_x: f32::NEG_INFINITY,
+                max_y: f32::NEG_INFINITY,
+                max_z: f32::NEG_INFINITY,
+                range_min: f32::INFINITY,
+                range_max: 0.0,
+                first_row: first_px / cols.max(1),
+                first_col: first_px % cols.max(1),
+                ..ClusterRow::default()
+            },
+            sum: [0.0; 3],
+        }
+    }
+
+    /// Take in one (finite) point of the cluster.
+    pub fn add(&mut self, p: [f32; 3]) {
+        let (row, sum) = (&mut self.row, &mut self.sum);
         let r = (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]).sqrt();
-        let (row, sum) = rows.entry(l).or_insert_with(|| {
-            let px = first.get(&l).copied().unwrap_or(0);
-            (
-                ClusterRow {
-                    frame: frame.to_string(),
-                    cluster: l,
-                    points: 0,
-                    centroid_x: 0.0,
-                    centroid_y: 0.0,
-                    centroid_z: 0.0,
-                    min_x: f32::INFINITY,
-                    min_y: f32::INFINITY,
-                    min_z: f32::INFINITY,
-                    max_x: f32::NEG_INFINITY,
-                    max_y: f32::NEG_INFINITY,
-                    max_z: f32::NEG_INFINITY,
-                    range_min: f32::INFINITY,
-                    range_max: 0.0,
-                    first_row: px / cols.max(1),
-                    first_col: px % cols.max(1),
-                    ..ClusterRow::default()
-                },
-                [0.0; 3],
-            )
-        });
         row.points += 1;
         for k in 0..3 {
             sum[k] += f64::from(p[k]);
@@ -197,16 +221,16 @@ pub fn cluster_rows(
         row.range_min = row.range_min.min(r);
         row.range_max = row.range_max.max(r);
     }
-    Ok(rows
-        .into_values()
-        .map(|(mut row, sum)| {
-            let n = row.points as f64;
-            row.centroid_x = sum[0] / n;
-            row.centroid_y = sum[1] / n;
-            row.centroid_z = sum[2] / n;
-            row
-        })
-        .collect())
+
+    /// The row, with its centroid.
+    pub fn finish(self) -> ClusterRow {
+        let (mut row, sum) = (self.row, self.sum);
+        let n = row.points as f64;
+        row.centroid_x = sum[0] / n;
+        row.centroid_y = sum[1] / n;
+        row.centroid_z = sum[2] / n;
+        row
+    }
 }
 
 /// The CSV header, in [`ClusterRow`] field order.

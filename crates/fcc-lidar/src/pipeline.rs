@@ -2,6 +2,7 @@
 //! model, the `--min-points` filter.
 
 use crate::cloud::{write_ply, PlyFormat};
+use crate::clusters::{ClusterRow, RowAcc};
 use crate::error::Result;
 use crate::ground::{detect_ground, Ground, GroundParams};
 use crate::image::RangeImage;
@@ -123,10 +124,138 @@ pub struct StreamResult {
     pub stats: StreamStats,
 }
 
+/// The golden stream with the `--min-points` filter: columns in, records out
+/// as they close, with their oriented boxes and, on request, the row of the
+/// cluster table. The one loop behind `fcc cluster --stream` and the column
+/// path of `fcc live`; its buffers are kept from one frame to the next.
+#[derive(Debug, Clone)]
+pub struct ColumnStream {
+    stream: Stream,
+    min_points: usize,
+    /// Per stream record id of the frame: the id kept, 0 for one dropped.
+    new_id: Vec<u32>,
+    /// Records kept so far in the frame.
+    kept: u32,
+    /// The records of the last call, and the stream's index of each.
+    closed: Vec<ClosedRecord>,
+    closed_at: Vec<usize>,
+    pixels: Vec<u32>,
+}
+
+impl ColumnStream {
+    /// A stream for frames of `params.rows` x `params.cols` that drops
+    /// clusters of `min_points` points or fewer.
+    pub fn new(params: &FccParams, min_points: usize) -> Result<ColumnStream> {
+        Ok(ColumnStream {
+            stream: Stream::new(params)?,
+            min_points,
+            new_id: vec![0],
+            kept: 0,
+            closed: Vec::new(),
+            closed_at: Vec::new(),
+            pixels: Vec::new(),
+        })
+    }
+
+    /// The parameters of the stream.
+    pub fn params(&self) -> &FccParams {
+        self.stream.params()
+    }
+
+    /// The `--min-points` of the stream.
+    pub fn min_points(&self) -> usize {
+        self.min_points
+    }
+
+    /// Take the next column (`R` pixels, row 0 first); the records that
+    /// closed at it, ids renumbered `1..` in closing order over the frame.
+    pub fn push_column(&mut self, column: &[Option<Point>]) -> Result<&[ClosedRecord]> {
+        if self.stream.columns_taken() == 0 {
+            self.new_id.truncate(1);
+            self.kept = 0;
+        }
+        self.stream.push_column(column)?;
+        self.keep();
+        Ok(&self.closed)
+    }
+
+    /// End the frame after its `C` columns: the records still open.
+    pub fn finish(&mut self) -> Result<&[ClosedRecord]> {
+        self.stream.finish()?;
+        self.keep();
+        Ok(&self.closed)
+    }
+
+    /// The records the stream just closed, through the min-points filter.
+    fn keep(&mut self) {
+        self.closed.clear();
+        self.closed_at.clear();
+        for (k, r) in self.stream.closed().iter().enumerate() {
+            if (r.points as usize) <= self.min_points {
+                self.new_id.push(0);
+                continue;
+            }
+            self.kept += 1;
+            self.new_id.push(self.kept);
+            self.closed.push(ClosedRecord {
+                record: Record {
+                    id: self.kept,
+                    ..*r
+                },
+                oriented_box: fcc_golden::oriented_box(self.stream.points_of(k)),
+            });
+            self.closed_at.push(k);
+        }
+    }
+
+    /// The records of the last [`push_column`](Self::push_column) or
+    /// [`finish`](Self::finish).
+    pub fn closed(&self) -> &[ClosedRecord] {
+        &self.closed
+    }
+
+    /// The row of the cluster table (and of `--stream`'s JSON lines) of the
+    /// `k`-th record of the last call, from its pixels of `image` (the
+    /// image the columns came from), frame name `frame`.
+    pub fn row(&mut self, k: usize, frame: &str, image: &RangeImage) -> ClusterRow {
+        self.pixels.clear();
+        self.pixels
+            .extend_from_slice(self.stream.pixels_of(self.closed_at[k]));
+        // Raster order, as the table of a whole frame sums them.
+        self.pixels.sort_unstable();
+        let first = self.pixels.first().map_or(0, |&p| p as usize);
+        let c = &self.closed[k];
+        let mut acc = RowAcc::new(frame, c.record.id, first, image.cols);
+        for &px in &self.pixels {
+            if let Some(p) = image.point(px as usize) {
+                acc.add(p);
+            }
+        }
+        let mut row = acc.finish();
+        row.set_record(&c.record, c.oriented_box.as_ref());
+        row
+    }
+
+    /// What the finished frame (or the frame so far) reported.
+    pub fn stats(&self) -> StreamStats {
+        self.stream.stats()
+    }
+
+    /// The label image of the finished frame, raster order, numbered by the
+    /// ids kept (0 for empty, unlabelled and dropped pixels).
+    pub fn labels_into(&mut self, out: &mut Vec<u32>) -> Result<()> {
+        self.stream.labels_into(out)?;
+        for l in out.iter_mut() {
+            *l = self.new_id[*l as usize];
+        }
+        Ok(())
+    }
+}
+
 thread_local! {
     /// The stream of each thread, kept from one image to the next while the
     /// image size and parameters stay.
-    static STREAM: std::cell::RefCell<Option<Stream>> = const { std::cell::RefCell::new(None) };
+    static STREAM: std::cell::RefCell<Option<ColumnStream>> = const { std::cell::RefCell::new(None) };
 }
 
 /// Remove the ground and cluster column by column with the golden stream
@@ -145,44 +274,32 @@ pub fn stream_image(
     let out_of_range = kept.valid_count() - frame.valid_count();
     STREAM.with(|cell| {
         let mut cell = cell.borrow_mut();
-        if !cell.as_ref().is_some_and(|s| *s.params() == params) {
-            *cell = Some(Stream::new(&params)?);
+        if !cell
+            .as_ref()
+            .is_some_and(|s| *s.params() == params && s.min_points() == cfg.min_points)
+        {
+            *cell = Some(ColumnStream::new(&params, cfg.min_points)?);
         }
         let stream = cell.as_mut().expect("made above");
         let mut records = Vec::new();
-        // The stream's id of each record kept, 0 for one dropped.
-        let mut new_id = vec![0u32];
         let mut column: Vec<Option<Point>> = vec![None; frame.rows];
         for c in 0..=frame.cols {
-            if c < frame.cols {
+            let closed = if c < frame.cols {
                 for (i, v) in column.iter_mut().enumerate() {
                     *v = frame.get(i, c);
                 }
-                stream.push_column(&column)?;
+                stream.push_column(&column)?
             } else {
-                stream.finish()?;
-            }
-            for (k, r) in stream.closed().iter().enumerate() {
-                if (r.points as usize) <= cfg.min_points {
-                    new_id.push(0);
-                    continue;
-                }
-                let id = records.len() as u32 + 1;
-                new_id.push(id);
-                let rec = ClosedRecord {
-                    record: Record { id, ..*r },
-                    oriented_box: fcc_golden::oriented_box(stream.points_of(k)),
-                };
-                on_record(&rec);
-                records.push(rec);
+                stream.finish()?
+            };
+            for rec in closed {
+                on_record(rec);
+                records.push(*rec);
             }
         }
         let stats = stream.stats();
         let mut labels = Vec::new();
         stream.labels_into(&mut labels)?;
-        for l in &mut labels {
-            *l = new_id[*l as usize];
-        }
         let clusters = records.len() as u32;
         let clustering = Clustering {
             rows: frame.rows,
@@ -280,6 +397,56 @@ mod tests {
             }
         }
         img
+    }
+
+    #[test]
+    fn column_stream_rows_are_the_rows_of_the_whole_frame() {
+        // Ground left in (one big cluster) and small ones dropped: the rows
+        // built per record as it closes equal those of the whole frame's
+        // points and labels, in closing order.
+        let img = image();
+        let cfg = PipelineConfig {
+            ground: GroundParams {
+                method: GroundMethod::None,
+                ..GroundParams::default()
+            },
+            min_points: 2,
+            ..PipelineConfig::default()
+        };
+        let whole = stream_image(&img, &cfg, |_| {}).unwrap();
+        let idx: Vec<usize> = (0..img.pixels())
+            .filter(|&i| img.point(i).is_some())
+            .collect();
+        let points: Vec<[f32; 3]> = idx.iter().filter_map(|&i| img.point(i)).collect();
+        let labels: Vec<u32> = idx.iter().map(|&i| whole.result.labels[i]).collect();
+        let mut want =
+            crate::clusters::cluster_rows("f", &points, &labels, &whole.result.labels, img.cols)
+                .unwrap();
+        for row in &mut want {
+            let c = &whole.records[row.cluster as usize - 1];
+            row.set_record(&c.record, c.oriented_box.as_ref());
+        }
+        assert!(want.len() >= 2, "{} clusters", want.len());
+        let params = params_for(&img, &cfg.params);
+        let mut cs = ColumnStream::new(&params, cfg.min_points).unwrap();
+        let frame = img.to_frame();
+        let mut got = Vec::new();
+        let mut column = vec![None; frame.rows];
+        for c in 0..=frame.cols {
+            let n = if c < frame.cols {
+                for (i, v) in column.iter_mut().enumerate() {
+                    *v = frame.get(i, c);
+                }
+                cs.push_column(&column).unwrap().len()
+            } else {
+                cs.finish().unwrap().len()
+            };
+            for k in 0..n {
+                got.push(cs.row(k, "f", &img));
+            }
+        }
+        got.sort_by_key(|r| r.cluster);
+        assert_eq!(got, want);
     }
 
     #[test]
