@@ -32,6 +32,8 @@ c_struct! {
         pub x: u16,
         pub y: u16,
         pub z: u16,
+        /// Clears the key register.
+        pub rst: u8,
     }
 }
 

@@ -42,6 +42,7 @@ fn input(c: &Case) -> PtIn {
         x: ob(c.p[0]),
         y: ob(c.p[1]),
         z: ob(c.p[2]),
+        rst: 0,
     }
 }
 

@@ -73,6 +73,7 @@ impl Logic for FccPixThr {
     #[hdl_gen]
     fn update(&mut self) {
         self.thr.clk.next = self.clk.val();
+        self.thr.rst.next = self.rst.val();
         self.thr.x.next = self.pix.val().x;
         self.thr.y.next = self.pix.val().y;
         self.thr.z.next = self.pix.val().z;

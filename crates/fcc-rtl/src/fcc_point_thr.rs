@@ -34,6 +34,9 @@ const MASK36: u64 = (1 << 36) - 1;
 #[derive(LogicBlock)]
 pub struct FccPointThr {
     pub clk: Signal<In, Clock>,
+    /// Clears `key` only, so that it stays a flip-flop behind the key's
+    /// delay line (a shift-register LUT's output is slow).
+    pub rst: Signal<In, Bit>,
     /// The point (offset binary).
     pub x: Signal<In, Bits<16>>,
     pub y: Signal<In, Bits<16>>,
@@ -64,6 +67,7 @@ impl FccPointThr {
     pub fn new() -> Self {
         Self {
             clk: Default::default(),
+            rst: Default::default(),
             x: Default::default(),
             y: Default::default(),
             z: Default::default(),
@@ -124,7 +128,7 @@ impl Logic for FccPointThr {
             let nh = !(self._p[0] >> 8);
             let nv = !(self._p[1] >> 8);
             self._out = [
-                self._rc2[3],
+                if self.rst.val() { 0 } else { self._rc2[3] },
                 (ch_t.min(nh) as u64) & MASK36,
                 (cv_t.min(nv) as u64) & MASK36,
             ];
@@ -217,7 +221,7 @@ impl Logic for FccPointThr {
              \x20   mv <= {{16'd0, av}} * {{24'd0, b}};\n\
              \x20   ph <= $signed({{8'd0, mh}});\n\
              \x20   pv <= $signed({{8'd0, mv}}) - 48'sd256;\n\
-             \x20   key <= k3;\n\
+             \x20   key <= rst ? 16'd0 : k3;\n\
              \x20   ch <= ($signed(ch_t) < nh) ? ch_t : nh;\n\
              \x20   cv <= ($signed(cv_t) < nv) ? cv_t : nv;\n\
              end\n"

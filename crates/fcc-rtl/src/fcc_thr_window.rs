@@ -80,6 +80,8 @@ pub struct FccThrWindow {
     cv_high: Constant<Bits<36>>,
     cv_low: Constant<Bits<36>>,
     zero12: Constant<Bits<12>>,
+    zero16: Constant<Bits<16>>,
+    zero36: Constant<Bits<36>>,
     _k: usize,
     _h: usize,
 }
@@ -128,6 +130,8 @@ impl FccThrWindow {
             cv_high: kb(0xf_0000_0000),
             cv_low: kb(0xffff_ffff),
             zero12: kb(0),
+            zero16: kb(0),
+            zero36: kb(0),
             _k: k,
             _h: h,
         }
@@ -227,6 +231,10 @@ impl Logic for FccThrWindow {
             self.cv_valid[0].d.next = false;
             self.cv_valid[1].d.next = false;
             self.t1_valid.d.next = false;
+            // The centre's word feeds every distance unit: a reset keeps it a
+            // flip-flop, not the end of a shift register (slow clock-to-out).
+            self.t3_key.d.next = self.zero16.val();
+            self.t3_cv.d.next = self.zero36.val();
         }
         self.centre_key.next = self.t3_key.q.val();
         self.centre_cv.next = self.cv_high.val() | self.t3_cv.q.val();
