@@ -52,7 +52,7 @@ fn each_writable_register_gets_one_enable_with_the_held_data() {
         m.stall = 0.5;
         for (i, off) in offs.iter().enumerate() {
             d.trace.clear();
-            let data = 0x5a00_0000 | (i as u32) << 8 | seed as u32;
+            let data = 0x5a00_0000 | ((i as u32) << 8) | seed as u32;
             m.write_ok(&mut d, *off, data)
                 .unwrap_or_else(|e| panic!("{order:?}: {e}"));
             let w = writes(&d);

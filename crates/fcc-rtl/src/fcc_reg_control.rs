@@ -76,6 +76,12 @@ impl FccRegControl {
     }
 }
 
+impl Default for FccRegControl {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
 impl Logic for FccRegControl {
     #[hdl_gen]
     fn update(&mut self) {

@@ -35,6 +35,12 @@ impl FccRegCounter {
     }
 }
 
+impl Default for FccRegCounter {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
 impl Logic for FccRegCounter {
     #[hdl_gen]
     fn update(&mut self) {
