@@ -15786,50 +15786,43 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
     output reg  [7:0] run_rows;
     output reg  [12:0] run_cols;
 
-    // Constant declarations
-    localparam  a_control = 10'b10000;
-    localparam  a_status = 10'b10001;
-    localparam  a_error = 10'b10010;
-    localparam  a_run_k = 10'b100000;
-    localparam  a_run_thh = 10'b100001;
-    localparam  a_run_thv = 10'b100010;
-    localparam  a_run_rows = 10'b100011;
-    localparam  a_run_cols = 10'b100100;
-    localparam  bit_err_k = 32'h1;
-    localparam  bit_err_thh = 32'h2;
-    localparam  bit_err_thv = 32'h4;
-    localparam  bit_err_rows = 32'h8;
-    localparam  bit_err_cols = 32'h10;
-    localparam  k_min = 16'h3;
-    localparam  k_max = 16'h7;
-    localparam  th_min = 16'h1;
-    localparam  th_max = 16'h8000;
-    localparam  rows_min = 16'h1;
-    localparam  rows_max = 16'h40;
-    localparam  cols_min = 16'h20;
-    localparam  cols_max = 16'h800;
-    localparam  def_k = 4'h7;
-    localparam  def_thh = 16'h80;
-    localparam  def_thv = 16'h100;
-    localparam  def_thh_c = 36'hfffffbfff;
-    localparam  def_thv_c = 36'hfffff0000;
-    localparam  def_rows = 8'h40;
-    localparam  def_cols = 13'b100000000000;
-    localparam  def_k16 = 16'h7;
-    localparam  def_rows16 = 16'h40;
-    localparam  def_cols16 = 16'h800;
-    localparam  bit_soft = 32'h1;
-    localparam  bit_irq = 32'h2;
-    localparam  bit_clear = 32'h4;
-    localparam  bit_done = 32'h1;
-    localparam  one32 = 32'h1;
-    localparam  zero32 = 32'h0;
-    localparam  zero16 = 16'h0;
-    localparam  zero20 = 20'h0;
-    localparam  zero24 = 24'h0;
-    localparam  okay = 2'b0;
-
     // Stub signals
+    reg  bus$clk;
+    reg  bus$rst;
+    reg  [11:0] bus$s_axil_awaddr;
+    reg  bus$s_axil_awvalid;
+    wire  bus$s_axil_awready;
+    reg  [31:0] bus$s_axil_wdata;
+    reg  bus$s_axil_wvalid;
+    wire  bus$s_axil_wready;
+    wire  [1:0] bus$s_axil_bresp;
+    wire  bus$s_axil_bvalid;
+    reg  bus$s_axil_bready;
+    reg  [11:0] bus$s_axil_araddr;
+    reg  bus$s_axil_arvalid;
+    wire  bus$s_axil_arready;
+    wire  [31:0] bus$s_axil_rdata;
+    wire  [1:0] bus$s_axil_rresp;
+    wire  bus$s_axil_rvalid;
+    reg  bus$s_axil_rready;
+    reg  bus$hold;
+    reg  bus$defer;
+    reg  bus$done;
+    wire  bus$w_take;
+    wire  bus$wr;
+    wire  bus$we$0;
+    wire  bus$we$1;
+    wire  bus$we$2;
+    wire  bus$we$3;
+    wire  bus$we$4;
+    wire  bus$we$5;
+    wire  bus$we$6;
+    wire  bus$we$7;
+    wire  [31:0] bus$wdata;
+    reg  bus$read_block;
+    reg  [31:0] bus$read_data;
+    wire  [9:0] bus$raddr;
+    wire  [9:0] bus$raddr_hi;
     reg  [9:0] mux$addr;
     reg  [9:0] mux$addr_hi;
     reg  [15:0] mux$w16$0;
@@ -15854,252 +15847,117 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
     reg  mux$flags$8;
     reg  mux$flags$9;
     wire  [31:0] mux$data;
-    reg  aw_v$d;
-    wire  aw_v$q;
-    reg  aw_v$clock;
-    reg  aw_control$d;
-    wire  aw_control$q;
-    reg  aw_control$clock;
-    reg  aw_status$d;
-    wire  aw_status$q;
-    reg  aw_status$clock;
-    reg  aw_error$d;
-    wire  aw_error$q;
-    reg  aw_error$clock;
-    reg  aw_run_k$d;
-    wire  aw_run_k$q;
-    reg  aw_run_k$clock;
-    reg  aw_run_thh$d;
-    wire  aw_run_thh$q;
-    reg  aw_run_thh$clock;
-    reg  aw_run_thv$d;
-    wire  aw_run_thv$q;
-    reg  aw_run_thv$clock;
-    reg  aw_run_rows$d;
-    wire  aw_run_rows$q;
-    reg  aw_run_rows$clock;
-    reg  aw_run_cols$d;
-    wire  aw_run_cols$q;
-    reg  aw_run_cols$clock;
-    reg  w_v$d;
-    wire  w_v$q;
-    reg  w_v$clock;
-    reg  [31:0] w_d$d;
-    wire  [31:0] w_d$q;
-    reg  w_d$clock;
-    reg  w_hi_zero$d;
-    wire  w_hi_zero$q;
-    reg  w_hi_zero$clock;
-    reg  w_ge_k$d;
-    wire  w_ge_k$q;
-    reg  w_ge_k$clock;
-    reg  w_le_k$d;
-    wire  w_le_k$q;
-    reg  w_le_k$clock;
-    reg  w_ge_th$d;
-    wire  w_ge_th$q;
-    reg  w_ge_th$clock;
-    reg  w_le_th$d;
-    wire  w_le_th$q;
-    reg  w_le_th$clock;
-    reg  w_ge_rows$d;
-    wire  w_ge_rows$q;
-    reg  w_ge_rows$clock;
-    reg  w_le_rows$d;
-    wire  w_le_rows$q;
-    reg  w_le_rows$clock;
-    reg  w_ge_cols$d;
-    wire  w_ge_cols$q;
-    reg  w_ge_cols$clock;
-    reg  w_le_cols$d;
-    wire  w_le_cols$q;
-    reg  w_le_cols$clock;
-    reg  w_clear_count$clock;
-    reg  w_clear_count$d;
-    wire  w_clear_count$q;
-    reg  w_clear_frame$clock;
-    reg  w_clear_frame$d;
-    wire  w_clear_frame$q;
-    reg  w_clear_stalls$clock;
-    reg  w_clear_stalls$d;
-    wire  w_clear_stalls$q;
-    reg  b_v$d;
-    wire  b_v$q;
-    reg  b_v$clock;
-    reg  ar_word_q$clock;
-    reg  [9:0] ar_word_q$d;
-    wire  [9:0] ar_word_q$q;
-    reg  ar_word_hi_q$clock;
-    reg  [9:0] ar_word_hi_q$d;
-    wire  [9:0] ar_word_hi_q$q;
-    reg  ar_pend_q$clock;
-    reg  ar_pend_q$d;
-    wire  ar_pend_q$q;
-    reg  r_v$d;
-    wire  r_v$q;
-    reg  r_v$clock;
-    reg  [31:0] r_d$d;
-    wire  [31:0] r_d$q;
-    reg  r_d$clock;
-    reg  irq_en$d;
-    wire  irq_en$q;
-    reg  irq_en$clock;
-    reg  done_sticky$d;
-    wire  done_sticky$q;
-    reg  done_sticky$clock;
-    reg  soft_q$d;
-    wire  soft_q$q;
-    reg  soft_q$clock;
-    reg  core_rst_q$d;
-    wire  core_rst_q$q;
-    reg  core_rst_q$clock;
-    reg  [31:0] count$d;
-    wire  [31:0] count$q;
-    reg  count$clock;
-    reg  done_q$d;
-    wire  done_q$q;
-    reg  done_q$clock;
-    reg  [15:0] s_clusters$d;
-    wire  [15:0] s_clusters$q;
-    reg  s_clusters$clock;
-    reg  [15:0] s_prov$d;
-    wire  [15:0] s_prov$q;
-    reg  s_prov$clock;
-    reg  s_ovf$d;
-    wire  s_ovf$q;
-    reg  s_ovf$clock;
-    reg  [19:0] s_unl$d;
-    wire  [19:0] s_unl$q;
-    reg  s_unl$clock;
-    reg  s_err$d;
-    wire  s_err$q;
-    reg  s_err$clock;
-    reg  [23:0] s_joins$d;
-    wire  [23:0] s_joins$q;
-    reg  s_joins$clock;
-    reg  [23:0] s_gstall$d;
-    wire  [23:0] s_gstall$q;
-    reg  s_gstall$clock;
-    reg  [15:0] sh_k$d;
-    wire  [15:0] sh_k$q;
-    reg  sh_k$clock;
-    reg  [15:0] sh_thh$d;
-    wire  [15:0] sh_thh$q;
-    reg  sh_thh$clock;
-    reg  [15:0] sh_thv$d;
-    wire  [15:0] sh_thv$q;
-    reg  sh_thv$clock;
-    reg  [35:0] sh_thh_c$d;
-    wire  [35:0] sh_thh_c$q;
-    reg  sh_thh_c$clock;
-    reg  [35:0] sh_thv_c$d;
-    wire  [35:0] sh_thv_c$q;
-    reg  sh_thv_c$clock;
-    reg  [15:0] sh_rows$d;
-    wire  [15:0] sh_rows$q;
-    reg  sh_rows$clock;
-    reg  [15:0] sh_cols$d;
-    wire  [15:0] sh_cols$q;
-    reg  sh_cols$clock;
-    reg  [3:0] act_k$d;
-    wire  [3:0] act_k$q;
-    reg  act_k$clock;
-    reg  [35:0] act_thh_c$d;
-    wire  [35:0] act_thh_c$q;
-    reg  act_thh_c$clock;
-    reg  [35:0] act_thv_c$d;
-    wire  [35:0] act_thv_c$q;
-    reg  act_thv_c$clock;
-    reg  [7:0] act_rows$d;
-    wire  [7:0] act_rows$q;
-    reg  act_rows$clock;
-    reg  [12:0] act_cols$d;
-    wire  [12:0] act_cols$q;
-    reg  act_cols$clock;
-    reg  err_k$d;
-    wire  err_k$q;
-    reg  err_k$clock;
-    reg  err_thh$d;
-    wire  err_thh$q;
-    reg  err_thh$clock;
-    reg  err_thv$d;
-    wire  err_thv$q;
-    reg  err_thv$clock;
-    reg  err_rows$d;
-    wire  err_rows$q;
-    reg  err_rows$clock;
-    reg  err_cols$d;
-    wire  err_cols$q;
-    reg  err_cols$clock;
-    reg  run_rst_dims$clock;
-    reg  run_rst_dims$d;
-    wire  run_rst_dims$q;
-    reg  run_rst_th_h$clock;
-    reg  run_rst_th_h$d;
-    wire  run_rst_th_h$q;
-    reg  run_rst_th_v$clock;
-    reg  run_rst_th_v$d;
-    wire  run_rst_th_v$q;
-    reg  run_rst_act_h$clock;
-    reg  run_rst_act_h$d;
-    wire  run_rst_act_h$q;
-    reg  run_rst_act_v$clock;
-    reg  run_rst_act_v$d;
-    wire  run_rst_act_v$q;
-    reg  sq$clk;
-    reg  sq$rst;
-    reg  sq$start;
-    reg  sq$start_acc;
-    reg  [15:0] sq$a;
-    wire  sq$busy;
-    wire  [35:0] sq$c_lt;
-    wire  [35:0] sq$c_le;
-    reg  sq_v$d;
-    wire  sq_v$q;
-    reg  sq_v$clock;
-    reg  [15:0] sq_a$d;
-    wire  [15:0] sq_a$q;
-    reg  sq_a$clock;
-    reg  sq_start$clock;
-    reg  sq_start$d;
-    wire  sq_start$q;
-    reg  sq_start_acc$clock;
-    reg  sq_start_acc$d;
-    wire  sq_start_acc$q;
-    reg  sq_busy_q$d;
-    wire  sq_busy_q$q;
-    reg  sq_busy_q$clock;
-    reg  out_status$clock;
-    reg  out_status$d;
-    wire  out_status$q;
-    reg  out_perf$clock;
-    reg  out_perf$d;
-    wire  out_perf$q;
-    reg  idle_dims$clock;
-    reg  idle_dims$d;
-    wire  idle_dims$q;
-    reg  idle_th_v$clock;
-    reg  idle_th_v$d;
-    wire  idle_th_v$q;
-
-    // Local signals
-    reg  sq_start_next;
-    reg  [9:0] aw_word;
-    reg  ok_k;
-    reg  ok_th;
-    reg  ok_rows;
-    reg  ok_cols;
-    reg  wr;
-    reg  wr_control;
-    reg  clear_count;
-    reg  clear_frame;
-    reg  clear_stalls;
-    reg  frame_end;
-    reg  frame_end_perf;
-    reg  [31:0] count_inc;
-    reg  ar_take;
+    reg  control$clk;
+    reg  control$rst;
+    reg  control$w_take;
+    reg  [31:0] control$bus_wdata;
+    reg  control$we;
+    reg  [31:0] control$wdata;
+    wire  control$irq_enable;
+    wire  control$clear_count;
+    wire  control$clear_frame;
+    wire  control$clear_stalls;
+    wire  control$core_rst;
+    wire  control$core_rst_next;
+    reg  frame_status$clk;
+    reg  frame_status$rst;
+    reg  frame_status$frame_sent;
+    reg  frame_status$out_next;
+    reg  [15:0] frame_status$clusters;
+    reg  [15:0] frame_status$provisional;
+    reg  frame_status$overflow;
+    reg  [19:0] frame_status$unlabelled;
+    reg  frame_status$frame_error;
+    reg  [23:0] frame_status$joins;
+    reg  [23:0] frame_status$gear_stalls;
+    reg  frame_status$we_status;
+    reg  [31:0] frame_status$wdata;
+    reg  frame_status$clear_count;
+    reg  frame_status$clear_frame;
+    reg  frame_status$clear_stalls;
+    wire  frame_status$frame_done;
+    wire  frame_status$done;
+    wire  [31:0] frame_status$count;
+    wire  [15:0] frame_status$st_clusters;
+    wire  [15:0] frame_status$st_provisional;
+    wire  frame_status$st_overflow;
+    wire  [19:0] frame_status$st_unlabelled;
+    wire  frame_status$st_frame_error;
+    wire  [23:0] frame_status$st_joins;
+    wire  [23:0] frame_status$st_gear_stalls;
+    reg  run$clk;
+    reg  run$rst;
+    reg  run$w_take;
+    reg  [31:0] run$bus_wdata;
+    reg  run$wr;
+    reg  run$we_error;
+    reg  run$we_k;
+    reg  run$we_th_h;
+    reg  run$we_th_v;
+    reg  run$we_rows;
+    reg  run$we_cols;
+    reg  [31:0] run$wdata;
+    wire  run$hold;
+    wire  run$defer;
+    wire  run$done;
+    wire  run$read_block;
+    reg  run$idle_next;
+    wire  run$idle;
+    wire  run$err_k;
+    wire  run$err_th_h;
+    wire  run$err_th_v;
+    wire  run$err_rows;
+    wire  run$err_cols;
+    wire  [15:0] run$shadow_k;
+    wire  [15:0] run$shadow_th_h;
+    wire  [15:0] run$shadow_th_v;
+    wire  [15:0] run$shadow_rows;
+    wire  [15:0] run$shadow_cols;
+    wire  [3:0] run$run_k;
+    wire  [35:0] run$run_th_h_c;
+    wire  [35:0] run$run_th_v_c;
+    wire  [7:0] run$run_rows;
+    wire  [12:0] run$run_cols;
 
     // Sub module instances
+    fcc_regs__bus_k7_668cf05b bus(
+        .clk(bus$clk),
+        .rst(bus$rst),
+        .s_axil_awaddr(bus$s_axil_awaddr),
+        .s_axil_awvalid(bus$s_axil_awvalid),
+        .s_axil_awready(bus$s_axil_awready),
+        .s_axil_wdata(bus$s_axil_wdata),
+        .s_axil_wvalid(bus$s_axil_wvalid),
+        .s_axil_wready(bus$s_axil_wready),
+        .s_axil_bresp(bus$s_axil_bresp),
+        .s_axil_bvalid(bus$s_axil_bvalid),
+        .s_axil_bready(bus$s_axil_bready),
+        .s_axil_araddr(bus$s_axil_araddr),
+        .s_axil_arvalid(bus$s_axil_arvalid),
+        .s_axil_arready(bus$s_axil_arready),
+        .s_axil_rdata(bus$s_axil_rdata),
+        .s_axil_rresp(bus$s_axil_rresp),
+        .s_axil_rvalid(bus$s_axil_rvalid),
+        .s_axil_rready(bus$s_axil_rready),
+        .hold(bus$hold),
+        .defer(bus$defer),
+        .done(bus$done),
+        .w_take(bus$w_take),
+        .wr(bus$wr),
+        .we$0(bus$we$0),
+        .we$1(bus$we$1),
+        .we$2(bus$we$2),
+        .we$3(bus$we$3),
+        .we$4(bus$we$4),
+        .we$5(bus$we$5),
+        .we$6(bus$we$6),
+        .we$7(bus$we$7),
+        .wdata(bus$wdata),
+        .read_block(bus$read_block),
+        .read_data(bus$read_data),
+        .raddr(bus$raddr),
+        .raddr_hi(bus$raddr_hi)
+    );
     fcc_regs__mux_k7_668cf05b mux(
         .addr(mux$addr),
         .addr_hi(mux$addr_hi),
@@ -16126,724 +15984,458 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
         .flags$9(mux$flags$9),
         .data(mux$data)
     );
-    fcc_regs__aw_v_k7_668cf05b aw_v(
+    fcc_regs__control_k7_668cf05b control(
+        .clk(control$clk),
+        .rst(control$rst),
+        .w_take(control$w_take),
+        .bus_wdata(control$bus_wdata),
+        .we(control$we),
+        .wdata(control$wdata),
+        .irq_enable(control$irq_enable),
+        .clear_count(control$clear_count),
+        .clear_frame(control$clear_frame),
+        .clear_stalls(control$clear_stalls),
+        .core_rst(control$core_rst),
+        .core_rst_next(control$core_rst_next)
+    );
+    fcc_regs__frame_status_k7_668cf05b frame_status(
+        .clk(frame_status$clk),
+        .rst(frame_status$rst),
+        .frame_sent(frame_status$frame_sent),
+        .out_next(frame_status$out_next),
+        .clusters(frame_status$clusters),
+        .provisional(frame_status$provisional),
+        .overflow(frame_status$overflow),
+        .unlabelled(frame_status$unlabelled),
+        .frame_error(frame_status$frame_error),
+        .joins(frame_status$joins),
+        .gear_stalls(frame_status$gear_stalls),
+        .we_status(frame_status$we_status),
+        .wdata(frame_status$wdata),
+        .clear_count(frame_status$clear_count),
+        .clear_frame(frame_status$clear_frame),
+        .clear_stalls(frame_status$clear_stalls),
+        .frame_done(frame_status$frame_done),
+        .done(frame_status$done),
+        .count(frame_status$count),
+        .st_clusters(frame_status$st_clusters),
+        .st_provisional(frame_status$st_provisional),
+        .st_overflow(frame_status$st_overflow),
+        .st_unlabelled(frame_status$st_unlabelled),
+        .st_frame_error(frame_status$st_frame_error),
+        .st_joins(frame_status$st_joins),
+        .st_gear_stalls(frame_status$st_gear_stalls)
+    );
+    fcc_regs__run_k7_668cf05b run(
+        .clk(run$clk),
+        .rst(run$rst),
+        .w_take(run$w_take),
+        .bus_wdata(run$bus_wdata),
+        .wr(run$wr),
+        .we_error(run$we_error),
+        .we_k(run$we_k),
+        .we_th_h(run$we_th_h),
+        .we_th_v(run$we_th_v),
+        .we_rows(run$we_rows),
+        .we_cols(run$we_cols),
+        .wdata(run$wdata),
+        .hold(run$hold),
+        .defer(run$defer),
+        .done(run$done),
+        .read_block(run$read_block),
+        .idle_next(run$idle_next),
+        .idle(run$idle),
+        .err_k(run$err_k),
+        .err_th_h(run$err_th_h),
+        .err_th_v(run$err_th_v),
+        .err_rows(run$err_rows),
+        .err_cols(run$err_cols),
+        .shadow_k(run$shadow_k),
+        .shadow_th_h(run$shadow_th_h),
+        .shadow_th_v(run$shadow_th_v),
+        .shadow_rows(run$shadow_rows),
+        .shadow_cols(run$shadow_cols),
+        .run_k(run$run_k),
+        .run_th_h_c(run$run_th_h_c),
+        .run_th_v_c(run$run_th_v_c),
+        .run_rows(run$run_rows),
+        .run_cols(run$run_cols)
+    );
+
+    // Update code
+    always @(*) begin
+        bus$clk = clk;
+        bus$rst = rst;
+        bus$s_axil_awaddr = s_axil_awaddr;
+        bus$s_axil_awvalid = s_axil_awvalid;
+        bus$s_axil_wdata = s_axil_wdata;
+        bus$s_axil_wvalid = s_axil_wvalid;
+        bus$s_axil_bready = s_axil_bready;
+        bus$s_axil_araddr = s_axil_araddr;
+        bus$s_axil_arvalid = s_axil_arvalid;
+        bus$s_axil_rready = s_axil_rready;
+        s_axil_awready = bus$s_axil_awready;
+        s_axil_wready = bus$s_axil_wready;
+        s_axil_bresp = bus$s_axil_bresp;
+        s_axil_bvalid = bus$s_axil_bvalid;
+        s_axil_arready = bus$s_axil_arready;
+        s_axil_rdata = bus$s_axil_rdata;
+        s_axil_rresp = bus$s_axil_rresp;
+        s_axil_rvalid = bus$s_axil_rvalid;
+        bus$hold = run$hold;
+        bus$defer = run$defer;
+        bus$done = run$done;
+        bus$read_block = run$read_block;
+        bus$read_data = mux$data;
+        control$clk = clk;
+        control$rst = rst;
+        control$w_take = bus$w_take;
+        control$bus_wdata = s_axil_wdata;
+        control$wdata = bus$wdata;
+        control$we = bus$we$0;
+        core_rst = control$core_rst;
+        core_rst_next = control$core_rst_next;
+        frame_status$clk = clk;
+        frame_status$rst = rst;
+        frame_status$frame_sent = frame_sent;
+        frame_status$out_next = out_next;
+        frame_status$clusters = clusters;
+        frame_status$provisional = provisional;
+        frame_status$overflow = overflow;
+        frame_status$unlabelled = unlabelled;
+        frame_status$frame_error = frame_error;
+        frame_status$joins = joins;
+        frame_status$gear_stalls = gear_stalls;
+        frame_status$wdata = bus$wdata;
+        frame_status$we_status = bus$we$1;
+        frame_status$clear_count = control$clear_count;
+        frame_status$clear_frame = control$clear_frame;
+        frame_status$clear_stalls = control$clear_stalls;
+        run$clk = clk;
+        run$rst = rst;
+        run$w_take = bus$w_take;
+        run$bus_wdata = s_axil_wdata;
+        run$wr = bus$wr;
+        run$wdata = bus$wdata;
+        run$idle_next = idle_next;
+        run$we_error = bus$we$2;
+        run$we_k = bus$we$3;
+        run$we_th_h = bus$we$4;
+        run$we_th_v = bus$we$5;
+        run$we_rows = bus$we$6;
+        run$we_cols = bus$we$7;
+        mux$flags$5 = run$err_k;
+        mux$flags$6 = run$err_th_h;
+        mux$flags$7 = run$err_th_v;
+        mux$flags$8 = run$err_rows;
+        mux$flags$9 = run$err_cols;
+        mux$addr = bus$raddr;
+        mux$addr_hi = bus$raddr_hi;
+        mux$w32$0 = frame_status$count;
+        mux$w16$0 = frame_status$st_clusters;
+        mux$w16$1 = frame_status$st_provisional;
+        mux$w20$0 = frame_status$st_unlabelled;
+        mux$w24$0 = frame_status$st_joins;
+        mux$w24$1 = frame_status$st_gear_stalls;
+        mux$flags$0 = control$irq_enable;
+        mux$flags$1 = frame_status$done;
+        mux$flags$2 = run$idle;
+        mux$flags$3 = frame_status$st_overflow;
+        mux$flags$4 = frame_status$st_frame_error;
+        mux$w16$2 = run$shadow_k;
+        mux$w16$3 = run$shadow_th_h;
+        mux$w16$4 = run$shadow_th_v;
+        mux$w16$5 = run$shadow_rows;
+        mux$w16$6 = run$shadow_cols;
+        irq = frame_status$done & control$irq_enable;
+        frame_done = frame_status$frame_done;
+        st_clusters = frame_status$st_clusters;
+        st_provisional = frame_status$st_provisional;
+        st_overflow = frame_status$st_overflow;
+        st_unlabelled = frame_status$st_unlabelled;
+        st_frame_error = frame_status$st_frame_error;
+        st_joins = frame_status$st_joins;
+        st_gear_stalls = frame_status$st_gear_stalls;
+        run_k = run$run_k;
+        run_th_h_c = run$run_th_h_c;
+        run_th_v_c = run$run_th_v_c;
+        run_rows = run$run_rows;
+        run_cols = run$run_cols;
+    end
+
+endmodule // fcc_regs_k7_668cf05b
+
+
+module fcc_regs__bus_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata,s_axil_wvalid,s_axil_wready,s_axil_bresp,s_axil_bvalid,s_axil_bready,s_axil_araddr,s_axil_arvalid,s_axil_arready,s_axil_rdata,s_axil_rresp,s_axil_rvalid,s_axil_rready,hold,defer,done,w_take,wr,we$0,we$1,we$2,we$3,we$4,we$5,we$6,we$7,wdata,read_block,read_data,raddr,raddr_hi);
+
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  [11:0] s_axil_awaddr;
+    input wire  s_axil_awvalid;
+    output reg  s_axil_awready;
+    input wire  [31:0] s_axil_wdata;
+    input wire  s_axil_wvalid;
+    output reg  s_axil_wready;
+    output reg  [1:0] s_axil_bresp;
+    output reg  s_axil_bvalid;
+    input wire  s_axil_bready;
+    input wire  [11:0] s_axil_araddr;
+    input wire  s_axil_arvalid;
+    output reg  s_axil_arready;
+    output reg  [31:0] s_axil_rdata;
+    output reg  [1:0] s_axil_rresp;
+    output reg  s_axil_rvalid;
+    input wire  s_axil_rready;
+    input wire  hold;
+    input wire  defer;
+    input wire  done;
+    output reg  w_take;
+    output reg  wr;
+    output reg  we$0;
+    output reg  we$1;
+    output reg  we$2;
+    output reg  we$3;
+    output reg  we$4;
+    output reg  we$5;
+    output reg  we$6;
+    output reg  we$7;
+    output reg  [31:0] wdata;
+    input wire  read_block;
+    input wire  [31:0] read_data;
+    output reg  [9:0] raddr;
+    output reg  [9:0] raddr_hi;
+
+    // Constant declarations
+    localparam  words$0 = 10'b10000;
+    localparam  words$1 = 10'b10001;
+    localparam  words$2 = 10'b10010;
+    localparam  words$3 = 10'b100000;
+    localparam  words$4 = 10'b100001;
+    localparam  words$5 = 10'b100010;
+    localparam  words$6 = 10'b100011;
+    localparam  words$7 = 10'b100100;
+    localparam  okay = 2'b0;
+
+    // Stub signals
+    reg  aw_v$d;
+    wire  aw_v$q;
+    reg  aw_v$clock;
+    reg  aw_sel$0$d;
+    wire  aw_sel$0$q;
+    reg  aw_sel$0$clock;
+    reg  aw_sel$1$d;
+    wire  aw_sel$1$q;
+    reg  aw_sel$1$clock;
+    reg  aw_sel$2$d;
+    wire  aw_sel$2$q;
+    reg  aw_sel$2$clock;
+    reg  aw_sel$3$d;
+    wire  aw_sel$3$q;
+    reg  aw_sel$3$clock;
+    reg  aw_sel$4$d;
+    wire  aw_sel$4$q;
+    reg  aw_sel$4$clock;
+    reg  aw_sel$5$d;
+    wire  aw_sel$5$q;
+    reg  aw_sel$5$clock;
+    reg  aw_sel$6$d;
+    wire  aw_sel$6$q;
+    reg  aw_sel$6$clock;
+    reg  aw_sel$7$d;
+    wire  aw_sel$7$q;
+    reg  aw_sel$7$clock;
+    reg  w_v$d;
+    wire  w_v$q;
+    reg  w_v$clock;
+    reg  [31:0] w_d$d;
+    wire  [31:0] w_d$q;
+    reg  w_d$clock;
+    reg  b_v$d;
+    wire  b_v$q;
+    reg  b_v$clock;
+    reg  ar_word_q$clock;
+    reg  [9:0] ar_word_q$d;
+    wire  [9:0] ar_word_q$q;
+    reg  ar_word_hi_q$clock;
+    reg  [9:0] ar_word_hi_q$d;
+    wire  [9:0] ar_word_hi_q$q;
+    reg  ar_pend_q$clock;
+    reg  ar_pend_q$d;
+    wire  ar_pend_q$q;
+    reg  r_v$d;
+    wire  r_v$q;
+    reg  r_v$clock;
+    reg  [31:0] r_d$d;
+    wire  [31:0] r_d$q;
+    reg  r_d$clock;
+
+    // Local signals
+    reg  [9:0] aw_word;
+    reg  w_taken;
+    reg  perform;
+    reg  ar_take;
+
+    // Sub module instances
+    fcc_regs__bus__aw_v_k7_668cf05b aw_v(
         .d(aw_v$d),
         .q(aw_v$q),
         .clock(aw_v$clock)
     );
-    fcc_regs__aw_control_k7_668cf05b aw_control(
-        .d(aw_control$d),
-        .q(aw_control$q),
-        .clock(aw_control$clock)
+    fcc_regs__bus__aw_sel__0_k7_668cf05b aw_sel$0(
+        .d(aw_sel$0$d),
+        .q(aw_sel$0$q),
+        .clock(aw_sel$0$clock)
     );
-    fcc_regs__aw_status_k7_668cf05b aw_status(
-        .d(aw_status$d),
-        .q(aw_status$q),
-        .clock(aw_status$clock)
+    fcc_regs__bus__aw_sel__1_k7_668cf05b aw_sel$1(
+        .d(aw_sel$1$d),
+        .q(aw_sel$1$q),
+        .clock(aw_sel$1$clock)
     );
-    fcc_regs__aw_error_k7_668cf05b aw_error(
-        .d(aw_error$d),
-        .q(aw_error$q),
-        .clock(aw_error$clock)
+    fcc_regs__bus__aw_sel__2_k7_668cf05b aw_sel$2(
+        .d(aw_sel$2$d),
+        .q(aw_sel$2$q),
+        .clock(aw_sel$2$clock)
     );
-    fcc_regs__aw_run_k_k7_668cf05b aw_run_k(
-        .d(aw_run_k$d),
-        .q(aw_run_k$q),
-        .clock(aw_run_k$clock)
+    fcc_regs__bus__aw_sel__3_k7_668cf05b aw_sel$3(
+        .d(aw_sel$3$d),
+        .q(aw_sel$3$q),
+        .clock(aw_sel$3$clock)
     );
-    fcc_regs__aw_run_thh_k7_668cf05b aw_run_thh(
-        .d(aw_run_thh$d),
-        .q(aw_run_thh$q),
-        .clock(aw_run_thh$clock)
+    fcc_regs__bus__aw_sel__4_k7_668cf05b aw_sel$4(
+        .d(aw_sel$4$d),
+        .q(aw_sel$4$q),
+        .clock(aw_sel$4$clock)
     );
-    fcc_regs__aw_run_thv_k7_668cf05b aw_run_thv(
-        .d(aw_run_thv$d),
-        .q(aw_run_thv$q),
-        .clock(aw_run_thv$clock)
+    fcc_regs__bus__aw_sel__5_k7_668cf05b aw_sel$5(
+        .d(aw_sel$5$d),
+        .q(aw_sel$5$q),
+        .clock(aw_sel$5$clock)
     );
-    fcc_regs__aw_run_rows_k7_668cf05b aw_run_rows(
-        .d(aw_run_rows$d),
-        .q(aw_run_rows$q),
-        .clock(aw_run_rows$clock)
+    fcc_regs__bus__aw_sel__6_k7_668cf05b aw_sel$6(
+        .d(aw_sel$6$d),
+        .q(aw_sel$6$q),
+        .clock(aw_sel$6$clock)
     );
-    fcc_regs__aw_run_cols_k7_668cf05b aw_run_cols(
-        .d(aw_run_cols$d),
-        .q(aw_run_cols$q),
-        .clock(aw_run_cols$clock)
+    fcc_regs__bus__aw_sel__7_k7_668cf05b aw_sel$7(
+        .d(aw_sel$7$d),
+        .q(aw_sel$7$q),
+        .clock(aw_sel$7$clock)
     );
-    fcc_regs__w_v_k7_668cf05b w_v(
+    fcc_regs__bus__w_v_k7_668cf05b w_v(
         .d(w_v$d),
         .q(w_v$q),
         .clock(w_v$clock)
     );
-    fcc_regs__w_d_k7_668cf05b w_d(
+    fcc_regs__bus__w_d_k7_668cf05b w_d(
         .d(w_d$d),
         .q(w_d$q),
         .clock(w_d$clock)
     );
-    fcc_regs__w_hi_zero_k7_668cf05b w_hi_zero(
-        .d(w_hi_zero$d),
-        .q(w_hi_zero$q),
-        .clock(w_hi_zero$clock)
-    );
-    fcc_regs__w_ge_k_k7_668cf05b w_ge_k(
-        .d(w_ge_k$d),
-        .q(w_ge_k$q),
-        .clock(w_ge_k$clock)
-    );
-    fcc_regs__w_le_k_k7_668cf05b w_le_k(
-        .d(w_le_k$d),
-        .q(w_le_k$q),
-        .clock(w_le_k$clock)
-    );
-    fcc_regs__w_ge_th_k7_668cf05b w_ge_th(
-        .d(w_ge_th$d),
-        .q(w_ge_th$q),
-        .clock(w_ge_th$clock)
-    );
-    fcc_regs__w_le_th_k7_668cf05b w_le_th(
-        .d(w_le_th$d),
-        .q(w_le_th$q),
-        .clock(w_le_th$clock)
-    );
-    fcc_regs__w_ge_rows_k7_668cf05b w_ge_rows(
-        .d(w_ge_rows$d),
-        .q(w_ge_rows$q),
-        .clock(w_ge_rows$clock)
-    );
-    fcc_regs__w_le_rows_k7_668cf05b w_le_rows(
-        .d(w_le_rows$d),
-        .q(w_le_rows$q),
-        .clock(w_le_rows$clock)
-    );
-    fcc_regs__w_ge_cols_k7_668cf05b w_ge_cols(
-        .d(w_ge_cols$d),
-        .q(w_ge_cols$q),
-        .clock(w_ge_cols$clock)
-    );
-    fcc_regs__w_le_cols_k7_668cf05b w_le_cols(
-        .d(w_le_cols$d),
-        .q(w_le_cols$q),
-        .clock(w_le_cols$clock)
-    );
-    fcc_regs__w_clear_count_k7_668cf05b w_clear_count(
-        .clock(w_clear_count$clock),
-        .d(w_clear_count$d),
-        .q(w_clear_count$q)
-    );
-    fcc_regs__w_clear_frame_k7_668cf05b w_clear_frame(
-        .clock(w_clear_frame$clock),
-        .d(w_clear_frame$d),
-        .q(w_clear_frame$q)
-    );
-    fcc_regs__w_clear_stalls_k7_668cf05b w_clear_stalls(
-        .clock(w_clear_stalls$clock),
-        .d(w_clear_stalls$d),
-        .q(w_clear_stalls$q)
-    );
-    fcc_regs__b_v_k7_668cf05b b_v(
+    fcc_regs__bus__b_v_k7_668cf05b b_v(
         .d(b_v$d),
         .q(b_v$q),
         .clock(b_v$clock)
     );
-    fcc_regs__ar_word_q_k7_668cf05b ar_word_q(
+    fcc_regs__bus__ar_word_q_k7_668cf05b ar_word_q(
         .clock(ar_word_q$clock),
         .d(ar_word_q$d),
         .q(ar_word_q$q)
     );
-    fcc_regs__ar_word_hi_q_k7_668cf05b ar_word_hi_q(
+    fcc_regs__bus__ar_word_hi_q_k7_668cf05b ar_word_hi_q(
         .clock(ar_word_hi_q$clock),
         .d(ar_word_hi_q$d),
         .q(ar_word_hi_q$q)
     );
-    fcc_regs__ar_pend_q_k7_668cf05b ar_pend_q(
+    fcc_regs__bus__ar_pend_q_k7_668cf05b ar_pend_q(
         .clock(ar_pend_q$clock),
         .d(ar_pend_q$d),
         .q(ar_pend_q$q)
     );
-    fcc_regs__r_v_k7_668cf05b r_v(
+    fcc_regs__bus__r_v_k7_668cf05b r_v(
         .d(r_v$d),
         .q(r_v$q),
         .clock(r_v$clock)
     );
-    fcc_regs__r_d_k7_668cf05b r_d(
+    fcc_regs__bus__r_d_k7_668cf05b r_d(
         .d(r_d$d),
         .q(r_d$q),
         .clock(r_d$clock)
-    );
-    fcc_regs__irq_en_k7_668cf05b irq_en(
-        .d(irq_en$d),
-        .q(irq_en$q),
-        .clock(irq_en$clock)
-    );
-    fcc_regs__done_sticky_k7_668cf05b done_sticky(
-        .d(done_sticky$d),
-        .q(done_sticky$q),
-        .clock(done_sticky$clock)
-    );
-    fcc_regs__soft_q_k7_668cf05b soft_q(
-        .d(soft_q$d),
-        .q(soft_q$q),
-        .clock(soft_q$clock)
-    );
-    fcc_regs__core_rst_q_k7_668cf05b core_rst_q(
-        .d(core_rst_q$d),
-        .q(core_rst_q$q),
-        .clock(core_rst_q$clock)
-    );
-    fcc_regs__count_k7_668cf05b count(
-        .d(count$d),
-        .q(count$q),
-        .clock(count$clock)
-    );
-    fcc_regs__done_q_k7_668cf05b done_q(
-        .d(done_q$d),
-        .q(done_q$q),
-        .clock(done_q$clock)
-    );
-    fcc_regs__s_clusters_k7_668cf05b s_clusters(
-        .d(s_clusters$d),
-        .q(s_clusters$q),
-        .clock(s_clusters$clock)
-    );
-    fcc_regs__s_prov_k7_668cf05b s_prov(
-        .d(s_prov$d),
-        .q(s_prov$q),
-        .clock(s_prov$clock)
-    );
-    fcc_regs__s_ovf_k7_668cf05b s_ovf(
-        .d(s_ovf$d),
-        .q(s_ovf$q),
-        .clock(s_ovf$clock)
-    );
-    fcc_regs__s_unl_k7_668cf05b s_unl(
-        .d(s_unl$d),
-        .q(s_unl$q),
-        .clock(s_unl$clock)
-    );
-    fcc_regs__s_err_k7_668cf05b s_err(
-        .d(s_err$d),
-        .q(s_err$q),
-        .clock(s_err$clock)
-    );
-    fcc_regs__s_joins_k7_668cf05b s_joins(
-        .d(s_joins$d),
-        .q(s_joins$q),
-        .clock(s_joins$clock)
-    );
-    fcc_regs__s_gstall_k7_668cf05b s_gstall(
-        .d(s_gstall$d),
-        .q(s_gstall$q),
-        .clock(s_gstall$clock)
-    );
-    fcc_regs__sh_k_k7_668cf05b sh_k(
-        .d(sh_k$d),
-        .q(sh_k$q),
-        .clock(sh_k$clock)
-    );
-    fcc_regs__sh_thh_k7_668cf05b sh_thh(
-        .d(sh_thh$d),
-        .q(sh_thh$q),
-        .clock(sh_thh$clock)
-    );
-    fcc_regs__sh_thv_k7_668cf05b sh_thv(
-        .d(sh_thv$d),
-        .q(sh_thv$q),
-        .clock(sh_thv$clock)
-    );
-    fcc_regs__sh_thh_c_k7_668cf05b sh_thh_c(
-        .d(sh_thh_c$d),
-        .q(sh_thh_c$q),
-        .clock(sh_thh_c$clock)
-    );
-    fcc_regs__sh_thv_c_k7_668cf05b sh_thv_c(
-        .d(sh_thv_c$d),
-        .q(sh_thv_c$q),
-        .clock(sh_thv_c$clock)
-    );
-    fcc_regs__sh_rows_k7_668cf05b sh_rows(
-        .d(sh_rows$d),
-        .q(sh_rows$q),
-        .clock(sh_rows$clock)
-    );
-    fcc_regs__sh_cols_k7_668cf05b sh_cols(
-        .d(sh_cols$d),
-        .q(sh_cols$q),
-        .clock(sh_cols$clock)
-    );
-    fcc_regs__act_k_k7_668cf05b act_k(
-        .d(act_k$d),
-        .q(act_k$q),
-        .clock(act_k$clock)
-    );
-    fcc_regs__act_thh_c_k7_668cf05b act_thh_c(
-        .d(act_thh_c$d),
-        .q(act_thh_c$q),
-        .clock(act_thh_c$clock)
-    );
-    fcc_regs__act_thv_c_k7_668cf05b act_thv_c(
-        .d(act_thv_c$d),
-        .q(act_thv_c$q),
-        .clock(act_thv_c$clock)
-    );
-    fcc_regs__act_rows_k7_668cf05b act_rows(
-        .d(act_rows$d),
-        .q(act_rows$q),
-        .clock(act_rows$clock)
-    );
-    fcc_regs__act_cols_k7_668cf05b act_cols(
-        .d(act_cols$d),
-        .q(act_cols$q),
-        .clock(act_cols$clock)
-    );
-    fcc_regs__err_k_k7_668cf05b err_k(
-        .d(err_k$d),
-        .q(err_k$q),
-        .clock(err_k$clock)
-    );
-    fcc_regs__err_thh_k7_668cf05b err_thh(
-        .d(err_thh$d),
-        .q(err_thh$q),
-        .clock(err_thh$clock)
-    );
-    fcc_regs__err_thv_k7_668cf05b err_thv(
-        .d(err_thv$d),
-        .q(err_thv$q),
-        .clock(err_thv$clock)
-    );
-    fcc_regs__err_rows_k7_668cf05b err_rows(
-        .d(err_rows$d),
-        .q(err_rows$q),
-        .clock(err_rows$clock)
-    );
-    fcc_regs__err_cols_k7_668cf05b err_cols(
-        .d(err_cols$d),
-        .q(err_cols$q),
-        .clock(err_cols$clock)
-    );
-    fcc_regs__run_rst_dims_k7_668cf05b run_rst_dims(
-        .clock(run_rst_dims$clock),
-        .d(run_rst_dims$d),
-        .q(run_rst_dims$q)
-    );
-    fcc_regs__run_rst_th_h_k7_668cf05b run_rst_th_h(
-        .clock(run_rst_th_h$clock),
-        .d(run_rst_th_h$d),
-        .q(run_rst_th_h$q)
-    );
-    fcc_regs__run_rst_th_v_k7_668cf05b run_rst_th_v(
-        .clock(run_rst_th_v$clock),
-        .d(run_rst_th_v$d),
-        .q(run_rst_th_v$q)
-    );
-    fcc_regs__run_rst_act_h_k7_668cf05b run_rst_act_h(
-        .clock(run_rst_act_h$clock),
-        .d(run_rst_act_h$d),
-        .q(run_rst_act_h$q)
-    );
-    fcc_regs__run_rst_act_v_k7_668cf05b run_rst_act_v(
-        .clock(run_rst_act_v$clock),
-        .d(run_rst_act_v$d),
-        .q(run_rst_act_v$q)
-    );
-    fcc_regs__sq_k7_668cf05b sq(
-        .clk(sq$clk),
-        .rst(sq$rst),
-        .start(sq$start),
-        .start_acc(sq$start_acc),
-        .a(sq$a),
-        .busy(sq$busy),
-        .c_lt(sq$c_lt),
-        .c_le(sq$c_le)
-    );
-    fcc_regs__sq_v_k7_668cf05b sq_v(
-        .d(sq_v$d),
-        .q(sq_v$q),
-        .clock(sq_v$clock)
-    );
-    fcc_regs__sq_a_k7_668cf05b sq_a(
-        .d(sq_a$d),
-        .q(sq_a$q),
-        .clock(sq_a$clock)
-    );
-    fcc_regs__sq_start_k7_668cf05b sq_start(
-        .clock(sq_start$clock),
-        .d(sq_start$d),
-        .q(sq_start$q)
-    );
-    fcc_regs__sq_start_acc_k7_668cf05b sq_start_acc(
-        .clock(sq_start_acc$clock),
-        .d(sq_start_acc$d),
-        .q(sq_start_acc$q)
-    );
-    fcc_regs__sq_busy_q_k7_668cf05b sq_busy_q(
-        .d(sq_busy_q$d),
-        .q(sq_busy_q$q),
-        .clock(sq_busy_q$clock)
-    );
-    fcc_regs__out_status_k7_668cf05b out_status(
-        .clock(out_status$clock),
-        .d(out_status$d),
-        .q(out_status$q)
-    );
-    fcc_regs__out_perf_k7_668cf05b out_perf(
-        .clock(out_perf$clock),
-        .d(out_perf$d),
-        .q(out_perf$q)
-    );
-    fcc_regs__idle_dims_k7_668cf05b idle_dims(
-        .clock(idle_dims$clock),
-        .d(idle_dims$d),
-        .q(idle_dims$q)
-    );
-    fcc_regs__idle_th_v_k7_668cf05b idle_th_v(
-        .clock(idle_th_v$clock),
-        .d(idle_th_v$d),
-        .q(idle_th_v$q)
     );
 
     // Update code
     always @(*) begin
         aw_v$clock = clk;
-        aw_control$clock = clk;
-        aw_status$clock = clk;
-        aw_error$clock = clk;
-        aw_run_k$clock = clk;
-        aw_run_thh$clock = clk;
-        aw_run_thv$clock = clk;
-        aw_run_rows$clock = clk;
-        aw_run_cols$clock = clk;
         w_v$clock = clk;
         w_d$clock = clk;
-        w_hi_zero$clock = clk;
-        w_ge_k$clock = clk;
-        w_le_k$clock = clk;
-        w_ge_th$clock = clk;
-        w_le_th$clock = clk;
-        w_ge_rows$clock = clk;
-        w_le_rows$clock = clk;
-        w_ge_cols$clock = clk;
-        w_le_cols$clock = clk;
         b_v$clock = clk;
-        ar_pend_q$clock = clk;
         r_v$clock = clk;
         r_d$clock = clk;
-        irq_en$clock = clk;
-        done_sticky$clock = clk;
-        soft_q$clock = clk;
-        core_rst_q$clock = clk;
-        count$clock = clk;
-        done_q$clock = clk;
-        s_clusters$clock = clk;
-        s_prov$clock = clk;
-        s_ovf$clock = clk;
-        s_unl$clock = clk;
-        s_err$clock = clk;
-        s_joins$clock = clk;
-        s_gstall$clock = clk;
-        sh_k$clock = clk;
-        sh_thh$clock = clk;
-        sh_thv$clock = clk;
-        sh_thh_c$clock = clk;
-        sh_thv_c$clock = clk;
-        sh_rows$clock = clk;
-        sh_cols$clock = clk;
-        act_k$clock = clk;
-        act_thh_c$clock = clk;
-        act_thv_c$clock = clk;
-        act_rows$clock = clk;
-        act_cols$clock = clk;
-        err_k$clock = clk;
-        err_thh$clock = clk;
-        err_thv$clock = clk;
-        err_rows$clock = clk;
-        err_cols$clock = clk;
-        sq_v$clock = clk;
-        sq_a$clock = clk;
-        sq_busy_q$clock = clk;
         aw_v$d = aw_v$q;
-        aw_control$d = aw_control$q;
-        aw_status$d = aw_status$q;
-        aw_error$d = aw_error$q;
-        aw_run_k$d = aw_run_k$q;
-        aw_run_thh$d = aw_run_thh$q;
-        aw_run_thv$d = aw_run_thv$q;
-        aw_run_rows$d = aw_run_rows$q;
-        aw_run_cols$d = aw_run_cols$q;
         w_v$d = w_v$q;
         w_d$d = w_d$q;
-        w_hi_zero$d = w_hi_zero$q;
-        w_ge_k$d = w_ge_k$q;
-        w_le_k$d = w_le_k$q;
-        w_ge_th$d = w_ge_th$q;
-        w_le_th$d = w_le_th$q;
-        w_ge_rows$d = w_ge_rows$q;
-        w_le_rows$d = w_le_rows$q;
-        w_ge_cols$d = w_ge_cols$q;
-        w_le_cols$d = w_le_cols$q;
         b_v$d = b_v$q;
-        ar_pend_q$d = ar_pend_q$q;
         r_v$d = r_v$q;
         r_d$d = r_d$q;
-        irq_en$d = irq_en$q;
-        done_sticky$d = done_sticky$q;
-        soft_q$d = soft_q$q;
-        core_rst_q$d = core_rst_q$q;
-        count$d = count$q;
-        done_q$d = done_q$q;
-        s_clusters$d = s_clusters$q;
-        s_prov$d = s_prov$q;
-        s_ovf$d = s_ovf$q;
-        s_unl$d = s_unl$q;
-        s_err$d = s_err$q;
-        s_joins$d = s_joins$q;
-        s_gstall$d = s_gstall$q;
-        sh_k$d = sh_k$q;
-        sh_thh$d = sh_thh$q;
-        sh_thv$d = sh_thv$q;
-        sh_thh_c$d = sh_thh_c$q;
-        sh_thv_c$d = sh_thv_c$q;
-        sh_rows$d = sh_rows$q;
-        sh_cols$d = sh_cols$q;
-        act_k$d = act_k$q;
-        act_thh_c$d = act_thh_c$q;
-        act_thv_c$d = act_thv_c$q;
-        act_rows$d = act_rows$q;
-        act_cols$d = act_cols$q;
-        err_k$d = err_k$q;
-        err_thh$d = err_thh$q;
-        err_thv$d = err_thv$q;
-        err_rows$d = err_rows$q;
-        err_cols$d = err_cols$q;
-        sq_v$d = sq_v$q;
-        sq_a$d = sq_a$q;
-        sq_busy_q$d = sq_busy_q$q;
-        w_clear_count$clock = clk;
-        w_clear_frame$clock = clk;
-        w_clear_stalls$clock = clk;
-        run_rst_dims$clock = clk;
-        run_rst_th_h$clock = clk;
-        run_rst_th_v$clock = clk;
-        run_rst_act_h$clock = clk;
-        run_rst_act_v$clock = clk;
-        out_status$clock = clk;
-        out_perf$clock = clk;
-        idle_dims$clock = clk;
-        idle_th_v$clock = clk;
-        out_status$d = out_next;
-        out_perf$d = out_next;
-        idle_dims$d = idle_next;
-        idle_th_v$d = idle_next;
-        sq$clk = clk;
-        sq$rst = rst;
-        sq$a = sq_a$q;
-        sq$start = sq_start$q;
-        sq$start_acc = sq_start_acc$q;
-        sq_start$clock = clk;
-        sq_start_acc$clock = clk;
-        sq_start_next = 1'b0;
-        wr = aw_v$q & w_v$q & ~b_v$q & ~sq_start$q & ~sq$busy & ~sq_busy_q$q;
+        aw_sel$0$clock = clk;
+        aw_sel$0$d = aw_sel$0$q;
+        aw_sel$1$clock = clk;
+        aw_sel$1$d = aw_sel$1$q;
+        aw_sel$2$clock = clk;
+        aw_sel$2$d = aw_sel$2$q;
+        aw_sel$3$clock = clk;
+        aw_sel$3$d = aw_sel$3$q;
+        aw_sel$4$clock = clk;
+        aw_sel$4$d = aw_sel$4$q;
+        aw_sel$5$clock = clk;
+        aw_sel$5$d = aw_sel$5$q;
+        aw_sel$6$clock = clk;
+        aw_sel$6$d = aw_sel$6$q;
+        aw_sel$7$clock = clk;
+        aw_sel$7$d = aw_sel$7$q;
+        ar_word_q$clock = clk;
+        ar_word_hi_q$clock = clk;
+        ar_pend_q$clock = clk;
+        perform = aw_v$q & w_v$q & ~b_v$q & ~hold;
         aw_word = s_axil_awaddr[11:2];
         if (s_axil_awvalid & ~aw_v$q) begin
             aw_v$d = 1'b1;
-            aw_control$d = aw_word == a_control;
-            aw_status$d = aw_word == a_status;
-            aw_error$d = aw_word == a_error;
-            aw_run_k$d = aw_word == a_run_k;
-            aw_run_thh$d = aw_word == a_run_thh;
-            aw_run_thv$d = aw_word == a_run_thv;
-            aw_run_rows$d = aw_word == a_run_rows;
-            aw_run_cols$d = aw_word == a_run_cols;
+            aw_sel$0$d = aw_word == words$0;
+            aw_sel$1$d = aw_word == words$1;
+            aw_sel$2$d = aw_word == words$2;
+            aw_sel$3$d = aw_word == words$3;
+            aw_sel$4$d = aw_word == words$4;
+            aw_sel$5$d = aw_word == words$5;
+            aw_sel$6$d = aw_word == words$6;
+            aw_sel$7$d = aw_word == words$7;
         end
-        w_clear_count$d = w_clear_count$q;
-        w_clear_frame$d = w_clear_frame$q;
-        w_clear_stalls$d = w_clear_stalls$q;
-        if (s_axil_wvalid & ~w_v$q) begin
+        w_taken = s_axil_wvalid & ~w_v$q;
+        if (w_taken) begin
             w_v$d = 1'b1;
             w_d$d = s_axil_wdata;
-            w_clear_count$d = (s_axil_wdata & bit_clear) != zero32;
-            w_clear_frame$d = (s_axil_wdata & bit_clear) != zero32;
-            w_clear_stalls$d = (s_axil_wdata & bit_clear) != zero32;
-            w_hi_zero$d = s_axil_wdata[31:16] == zero16;
-            w_ge_k$d = s_axil_wdata[15:0] >= k_min;
-            w_le_k$d = s_axil_wdata[15:0] <= k_max;
-            w_ge_th$d = s_axil_wdata[15:0] >= th_min;
-            w_le_th$d = s_axil_wdata[15:0] <= th_max;
-            w_ge_rows$d = s_axil_wdata[15:0] >= rows_min;
-            w_le_rows$d = s_axil_wdata[15:0] <= rows_max;
-            w_ge_cols$d = s_axil_wdata[15:0] >= cols_min;
-            w_le_cols$d = s_axil_wdata[15:0] <= cols_max;
         end
         if (b_v$q & s_axil_bready) begin
             b_v$d = 1'b0;
         end
-        soft_q$d = 1'b0;
-        ok_k = w_hi_zero$q & w_ge_k$q & w_le_k$q & w_d$q[0];
-        ok_th = w_hi_zero$q & w_ge_th$q & w_le_th$q;
-        ok_rows = w_hi_zero$q & w_ge_rows$q & w_le_rows$q;
-        ok_cols = w_hi_zero$q & w_ge_cols$q & w_le_cols$q;
-        if (wr) begin
+        we$0 = aw_v$q & w_v$q & ~b_v$q & ~hold & aw_sel$0$q;
+        we$1 = aw_v$q & w_v$q & ~b_v$q & ~hold & aw_sel$1$q;
+        we$2 = aw_v$q & w_v$q & ~b_v$q & ~hold & aw_sel$2$q;
+        we$3 = aw_v$q & w_v$q & ~b_v$q & ~hold & aw_sel$3$q;
+        we$4 = aw_v$q & w_v$q & ~b_v$q & ~hold & aw_sel$4$q;
+        we$5 = aw_v$q & w_v$q & ~b_v$q & ~hold & aw_sel$5$q;
+        we$6 = aw_v$q & w_v$q & ~b_v$q & ~hold & aw_sel$6$q;
+        we$7 = aw_v$q & w_v$q & ~b_v$q & ~hold & aw_sel$7$q;
+        if (perform) begin
             aw_v$d = 1'b0;
             w_v$d = 1'b0;
+            b_v$d = ~defer;
+        end
+        if (done) begin
             b_v$d = 1'b1;
-            if (aw_control$q) begin
-                irq_en$d = (w_d$q & bit_irq) != zero32;
-                soft_q$d = (w_d$q & bit_soft) != zero32;
-            end
-            if (aw_status$q & ((w_d$q & bit_done) != zero32)) begin
-                done_sticky$d = 1'b0;
-            end
-            if (aw_error$q) begin
-                if ((w_d$q & bit_err_k) != zero32) begin
-                    err_k$d = 1'b0;
-                end
-                if ((w_d$q & bit_err_thh) != zero32) begin
-                    err_thh$d = 1'b0;
-                end
-                if ((w_d$q & bit_err_thv) != zero32) begin
-                    err_thv$d = 1'b0;
-                end
-                if ((w_d$q & bit_err_rows) != zero32) begin
-                    err_rows$d = 1'b0;
-                end
-                if ((w_d$q & bit_err_cols) != zero32) begin
-                    err_cols$d = 1'b0;
-                end
-            end
-            if (aw_run_k$q) begin
-                if (ok_k) begin
-                    sh_k$d = w_d$q[15:0];
-                end
-                else begin
-                    err_k$d = 1'b1;
-                end
-            end
-            if (aw_run_rows$q) begin
-                if (ok_rows) begin
-                    sh_rows$d = w_d$q[15:0];
-                end
-                else begin
-                    err_rows$d = 1'b1;
-                end
-            end
-            if (aw_run_cols$q) begin
-                if (ok_cols) begin
-                    sh_cols$d = w_d$q[15:0];
-                end
-                else begin
-                    err_cols$d = 1'b1;
-                end
-            end
-            if (aw_run_thh$q) begin
-                if (ok_th) begin
-                    b_v$d = 1'b0;
-                    sq_start_next = 1'b1;
-                    sq_v$d = 1'b0;
-                end
-                else begin
-                    err_thh$d = 1'b1;
-                end
-            end
-            if (aw_run_thv$q) begin
-                if (ok_th) begin
-                    b_v$d = 1'b0;
-                    sq_start_next = 1'b1;
-                    sq_v$d = 1'b1;
-                end
-                else begin
-                    err_thv$d = 1'b1;
-                end
-            end
-            sq_a$d = w_d$q[15:0];
         end
-        sq_busy_q$d = sq$busy;
-        if (sq_busy_q$q & ~sq$busy) begin
-            b_v$d = 1'b1;
-            if (sq_v$q) begin
-                sh_thv$d = sq_a$q;
-                sh_thv_c$d = sq$c_lt;
-            end
-            else begin
-                sh_thh$d = sq_a$q;
-                sh_thh_c$d = sq$c_le;
-            end
-        end
-        if (idle_dims$q) begin
-            act_k$d = sh_k$q[3:0];
-            act_thh_c$d = sh_thh_c$q;
-            act_rows$d = sh_rows$q[7:0];
-            act_cols$d = sh_cols$q[12:0];
-        end
-        if (idle_th_v$q) begin
-            act_thv_c$d = sh_thv_c$q;
-        end
-        frame_end = out_status$q & frame_sent;
-        frame_end_perf = out_perf$q & frame_sent;
-        done_q$d = frame_end;
-        count_inc = zero32;
-        if (frame_end) begin
-            count_inc = one32;
-        end
-        count$d = count$q + count_inc;
-        if (frame_end) begin
-            done_sticky$d = 1'b1;
-            s_clusters$d = clusters;
-            s_prov$d = provisional;
-            s_ovf$d = overflow;
-            s_unl$d = unlabelled;
-            s_err$d = frame_error;
-        end
-        if (frame_end_perf) begin
-            s_joins$d = joins;
-            s_gstall$d = gear_stalls;
-        end
-        wr_control = wr & aw_control$q;
-        clear_count = wr_control & w_clear_count$q;
-        clear_frame = wr_control & w_clear_frame$q;
-        clear_stalls = wr_control & w_clear_stalls$q;
-        if (clear_count) begin
-            done_sticky$d = 1'b0;
-            count$d = zero32;
-            s_clusters$d = zero16;
-            s_ovf$d = 1'b0;
-            s_err$d = 1'b0;
-        end
-        if (clear_frame) begin
-            s_prov$d = zero16;
-            s_unl$d = zero20;
-            s_joins$d = zero24;
-        end
-        if (clear_stalls) begin
-            s_gstall$d = zero24;
-        end
-        mux$addr = ar_word_q$q;
-        mux$addr_hi = ar_word_hi_q$q;
-        mux$w32$0 = count$q;
-        mux$w16$0 = s_clusters$q;
-        mux$w16$1 = s_prov$q;
-        mux$w20$0 = s_unl$q;
-        mux$w24$0 = s_joins$q;
-        mux$w24$1 = s_gstall$q;
-        mux$flags$0 = irq_en$q;
-        mux$flags$1 = done_sticky$q;
-        mux$flags$2 = idle_th_v$q;
-        mux$flags$3 = s_ovf$q;
-        mux$flags$4 = s_err$q;
-        mux$flags$5 = err_k$q;
-        mux$flags$6 = err_thh$q;
-        mux$flags$7 = err_thv$q;
-        mux$flags$8 = err_rows$q;
-        mux$flags$9 = err_cols$q;
-        mux$w16$2 = sh_k$q;
-        mux$w16$3 = sh_thh$q;
-        mux$w16$4 = sh_thv$q;
-        mux$w16$5 = sh_rows$q;
-        mux$w16$6 = sh_cols$q;
-        ar_take = s_axil_arvalid & ~ar_pend_q$q & ~r_v$q & ~run_rst_dims$q;
+        ar_take = s_axil_arvalid & ~ar_pend_q$q & ~r_v$q & ~read_block;
         ar_pend_q$d = ar_take;
-        ar_word_q$clock = clk;
         ar_word_q$d = ar_word_q$q;
-        ar_word_hi_q$clock = clk;
         ar_word_hi_q$d = ar_word_hi_q$q;
         if (ar_take) begin
             ar_word_q$d = s_axil_araddr[11:2];
@@ -16851,192 +16443,37 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
         end
         if (ar_pend_q$q) begin
             r_v$d = 1'b1;
-            r_d$d = mux$data;
+            r_d$d = read_data;
         end
         if (r_v$q & s_axil_rready) begin
             r_v$d = 1'b0;
         end
-        core_rst_q$d = rst | soft_q$q;
-        core_rst_next = rst | soft_q$q;
         if (rst) begin
-            sq_start_next = 1'b0;
             aw_v$d = 1'b0;
             w_v$d = 1'b0;
             b_v$d = 1'b0;
             ar_pend_q$d = 1'b0;
             r_v$d = 1'b0;
-            irq_en$d = 1'b0;
-            done_sticky$d = 1'b0;
-            soft_q$d = 1'b0;
-            count$d = zero32;
-            done_q$d = 1'b0;
-            s_clusters$d = zero16;
-            s_prov$d = zero16;
-            s_ovf$d = 1'b0;
-            s_unl$d = zero20;
-            s_err$d = 1'b0;
-            s_joins$d = zero24;
-            s_gstall$d = zero24;
-            err_k$d = 1'b0;
-            err_thh$d = 1'b0;
-            err_thv$d = 1'b0;
-            err_rows$d = 1'b0;
-            err_cols$d = 1'b0;
-            sq_busy_q$d = 1'b0;
         end
-        sq_start$d = sq_start_next;
-        sq_start_acc$d = sq_start_next;
-        run_rst_dims$d = rst;
-        run_rst_th_h$d = rst;
-        run_rst_th_v$d = rst;
-        run_rst_act_h$d = rst;
-        run_rst_act_v$d = rst;
-        if (run_rst_dims$q) begin
-            sh_k$d = def_k16;
-            sh_rows$d = def_rows16;
-            sh_cols$d = def_cols16;
-            act_k$d = def_k;
-            act_rows$d = def_rows;
-            act_cols$d = def_cols;
-        end
-        if (run_rst_th_h$q) begin
-            sh_thh$d = def_thh;
-            sh_thh_c$d = def_thh_c;
-        end
-        if (run_rst_th_v$q) begin
-            sh_thv$d = def_thv;
-            sh_thv_c$d = def_thv_c;
-        end
-        if (run_rst_act_h$q) begin
-            act_thh_c$d = def_thh_c;
-        end
-        if (run_rst_act_v$q) begin
-            act_thv_c$d = def_thv_c;
-        end
+        w_take = s_axil_wvalid & ~w_v$q;
+        wr = aw_v$q & w_v$q & ~b_v$q & ~hold;
+        wdata = w_d$q;
+        raddr = ar_word_q$q;
+        raddr_hi = ar_word_hi_q$q;
         s_axil_awready = ~aw_v$q;
         s_axil_wready = ~w_v$q;
         s_axil_bvalid = b_v$q;
         s_axil_bresp = okay;
-        s_axil_arready = ~ar_pend_q$q & ~r_v$q & ~run_rst_dims$q;
+        s_axil_arready = ~ar_pend_q$q & ~r_v$q & ~read_block;
         s_axil_rvalid = r_v$q;
         s_axil_rdata = r_d$q;
         s_axil_rresp = okay;
-        core_rst = core_rst_q$q;
-        irq = done_sticky$q & irq_en$q;
-        frame_done = done_q$q;
-        st_clusters = s_clusters$q;
-        st_provisional = s_prov$q;
-        st_overflow = s_ovf$q;
-        st_unlabelled = s_unl$q;
-        st_frame_error = s_err$q;
-        st_joins = s_joins$q;
-        st_gear_stalls = s_gstall$q;
-        run_k = act_k$q;
-        run_th_h_c = act_thh_c$q;
-        run_th_v_c = act_thv_c$q;
-        run_rows = act_rows$q;
-        run_cols = act_cols$q;
     end
 
-endmodule // fcc_regs_k7_668cf05b
+endmodule // fcc_regs__bus_k7_668cf05b
 
 
-module fcc_regs__act_cols_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [12:0] d;
-    output reg  [12:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 13'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__act_cols_k7_668cf05b
-
-
-module fcc_regs__act_k_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [3:0] d;
-    output reg  [3:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 4'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__act_k_k7_668cf05b
-
-
-module fcc_regs__act_rows_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__act_rows_k7_668cf05b
-
-
-module fcc_regs__act_thh_c_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [35:0] d;
-    output reg  [35:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 36'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__act_thh_c_k7_668cf05b
-
-
-module fcc_regs__act_thv_c_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [35:0] d;
-    output reg  [35:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 36'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__act_thv_c_k7_668cf05b
-
-
-module fcc_regs__ar_pend_q_k7_668cf05b(clock,d,q);
+module fcc_regs__bus__ar_pend_q_k7_668cf05b(clock,d,q);
 
     // Module arguments
     input wire  clock;
@@ -17054,31 +16491,10 @@ module fcc_regs__ar_pend_q_k7_668cf05b(clock,d,q);
     always @(*) begin
         q = held;
     end
-endmodule // fcc_regs__ar_pend_q_k7_668cf05b
+endmodule // fcc_regs__bus__ar_pend_q_k7_668cf05b
 
 
-module fcc_regs__ar_word_hi_q_k7_668cf05b(clock,d,q);
-
-    // Module arguments
-    input wire  clock;
-    input wire  [9:0] d;
-    output reg  [9:0] q;
-
-    // Update code (custom)
-    (* max_fanout = 64 *) reg [9:0] held;
-    initial begin
-        held = 10'h0;
-    end
-    (* keep = "true" *) always @(posedge clock) begin
-        held <= d;
-    end
-    always @(*) begin
-        q = held;
-    end
-endmodule // fcc_regs__ar_word_hi_q_k7_668cf05b
-
-
-module fcc_regs__ar_word_q_k7_668cf05b(clock,d,q);
+module fcc_regs__bus__ar_word_hi_q_k7_668cf05b(clock,d,q);
 
     // Module arguments
     input wire  clock;
@@ -17096,10 +16512,31 @@ module fcc_regs__ar_word_q_k7_668cf05b(clock,d,q);
     always @(*) begin
         q = held;
     end
-endmodule // fcc_regs__ar_word_q_k7_668cf05b
+endmodule // fcc_regs__bus__ar_word_hi_q_k7_668cf05b
 
 
-module fcc_regs__aw_control_k7_668cf05b(d,q,clock);
+module fcc_regs__bus__ar_word_q_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  [9:0] d;
+    output reg  [9:0] q;
+
+    // Update code (custom)
+    (* max_fanout = 64 *) reg [9:0] held;
+    initial begin
+        held = 10'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_regs__bus__ar_word_q_k7_668cf05b
+
+
+module fcc_regs__bus__aw_sel__0_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -17115,29 +16552,10 @@ module fcc_regs__aw_control_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__aw_control_k7_668cf05b
+endmodule // fcc_regs__bus__aw_sel__0_k7_668cf05b
 
 
-module fcc_regs__aw_error_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__aw_error_k7_668cf05b
-
-
-module fcc_regs__aw_run_cols_k7_668cf05b(d,q,clock);
+module fcc_regs__bus__aw_sel__1_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -17153,29 +16571,10 @@ module fcc_regs__aw_run_cols_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__aw_run_cols_k7_668cf05b
+endmodule // fcc_regs__bus__aw_sel__1_k7_668cf05b
 
 
-module fcc_regs__aw_run_k_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__aw_run_k_k7_668cf05b
-
-
-module fcc_regs__aw_run_rows_k7_668cf05b(d,q,clock);
+module fcc_regs__bus__aw_sel__2_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -17191,29 +16590,10 @@ module fcc_regs__aw_run_rows_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__aw_run_rows_k7_668cf05b
+endmodule // fcc_regs__bus__aw_sel__2_k7_668cf05b
 
 
-module fcc_regs__aw_run_thh_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__aw_run_thh_k7_668cf05b
-
-
-module fcc_regs__aw_run_thv_k7_668cf05b(d,q,clock);
+module fcc_regs__bus__aw_sel__3_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -17229,29 +16609,10 @@ module fcc_regs__aw_run_thv_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__aw_run_thv_k7_668cf05b
+endmodule // fcc_regs__bus__aw_sel__3_k7_668cf05b
 
 
-module fcc_regs__aw_status_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__aw_status_k7_668cf05b
-
-
-module fcc_regs__aw_v_k7_668cf05b(d,q,clock);
+module fcc_regs__bus__aw_sel__4_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -17267,29 +16628,10 @@ module fcc_regs__aw_v_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__aw_v_k7_668cf05b
+endmodule // fcc_regs__bus__aw_sel__4_k7_668cf05b
 
 
-module fcc_regs__b_v_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__b_v_k7_668cf05b
-
-
-module fcc_regs__core_rst_q_k7_668cf05b(d,q,clock);
+module fcc_regs__bus__aw_sel__5_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -17305,10 +16647,86 @@ module fcc_regs__core_rst_q_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__core_rst_q_k7_668cf05b
+endmodule // fcc_regs__bus__aw_sel__5_k7_668cf05b
 
 
-module fcc_regs__count_k7_668cf05b(d,q,clock);
+module fcc_regs__bus__aw_sel__6_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__bus__aw_sel__6_k7_668cf05b
+
+
+module fcc_regs__bus__aw_sel__7_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__bus__aw_sel__7_k7_668cf05b
+
+
+module fcc_regs__bus__aw_v_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__bus__aw_v_k7_668cf05b
+
+
+module fcc_regs__bus__b_v_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__bus__b_v_k7_668cf05b
+
+
+module fcc_regs__bus__r_d_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [31:0] d;
@@ -17324,29 +16742,10 @@ module fcc_regs__count_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__count_k7_668cf05b
+endmodule // fcc_regs__bus__r_d_k7_668cf05b
 
 
-module fcc_regs__done_q_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__done_q_k7_668cf05b
-
-
-module fcc_regs__done_sticky_k7_668cf05b(d,q,clock);
+module fcc_regs__bus__r_v_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -17362,10 +16761,29 @@ module fcc_regs__done_sticky_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__done_sticky_k7_668cf05b
+endmodule // fcc_regs__bus__r_v_k7_668cf05b
 
 
-module fcc_regs__err_cols_k7_668cf05b(d,q,clock);
+module fcc_regs__bus__w_d_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__bus__w_d_k7_668cf05b
+
+
+module fcc_regs__bus__w_v_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -17381,10 +16799,124 @@ module fcc_regs__err_cols_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__err_cols_k7_668cf05b
+endmodule // fcc_regs__bus__w_v_k7_668cf05b
 
 
-module fcc_regs__err_k_k7_668cf05b(d,q,clock);
+module fcc_regs__control_k7_668cf05b(clk,rst,w_take,bus_wdata,we,wdata,irq_enable,clear_count,clear_frame,clear_stalls,core_rst,core_rst_next);
+
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  w_take;
+    input wire  [31:0] bus_wdata;
+    input wire  we;
+    input wire  [31:0] wdata;
+    output reg  irq_enable;
+    output reg  clear_count;
+    output reg  clear_frame;
+    output reg  clear_stalls;
+    output reg  core_rst;
+    output reg  core_rst_next;
+
+    // Constant declarations
+    localparam  bit_soft = 32'h1;
+    localparam  bit_irq = 32'h2;
+    localparam  bit_clear = 32'h4;
+    localparam  zero32 = 32'h0;
+
+    // Stub signals
+    reg  irq_en$d;
+    wire  irq_en$q;
+    reg  irq_en$clock;
+    reg  soft_q$d;
+    wire  soft_q$q;
+    reg  soft_q$clock;
+    reg  core_rst_q$d;
+    wire  core_rst_q$q;
+    reg  core_rst_q$clock;
+    reg  w_clear_count$clock;
+    reg  w_clear_count$d;
+    wire  w_clear_count$q;
+    reg  w_clear_frame$clock;
+    reg  w_clear_frame$d;
+    wire  w_clear_frame$q;
+    reg  w_clear_stalls$clock;
+    reg  w_clear_stalls$d;
+    wire  w_clear_stalls$q;
+
+    // Sub module instances
+    fcc_regs__control__irq_en_k7_668cf05b irq_en(
+        .d(irq_en$d),
+        .q(irq_en$q),
+        .clock(irq_en$clock)
+    );
+    fcc_regs__control__soft_q_k7_668cf05b soft_q(
+        .d(soft_q$d),
+        .q(soft_q$q),
+        .clock(soft_q$clock)
+    );
+    fcc_regs__control__core_rst_q_k7_668cf05b core_rst_q(
+        .d(core_rst_q$d),
+        .q(core_rst_q$q),
+        .clock(core_rst_q$clock)
+    );
+    fcc_regs__control__w_clear_count_k7_668cf05b w_clear_count(
+        .clock(w_clear_count$clock),
+        .d(w_clear_count$d),
+        .q(w_clear_count$q)
+    );
+    fcc_regs__control__w_clear_frame_k7_668cf05b w_clear_frame(
+        .clock(w_clear_frame$clock),
+        .d(w_clear_frame$d),
+        .q(w_clear_frame$q)
+    );
+    fcc_regs__control__w_clear_stalls_k7_668cf05b w_clear_stalls(
+        .clock(w_clear_stalls$clock),
+        .d(w_clear_stalls$d),
+        .q(w_clear_stalls$q)
+    );
+
+    // Update code
+    always @(*) begin
+        irq_en$clock = clk;
+        soft_q$clock = clk;
+        core_rst_q$clock = clk;
+        irq_en$d = irq_en$q;
+        soft_q$d = soft_q$q;
+        core_rst_q$d = core_rst_q$q;
+        w_clear_count$clock = clk;
+        w_clear_frame$clock = clk;
+        w_clear_stalls$clock = clk;
+        w_clear_count$d = w_clear_count$q;
+        w_clear_frame$d = w_clear_frame$q;
+        w_clear_stalls$d = w_clear_stalls$q;
+        if (w_take) begin
+            w_clear_count$d = (bus_wdata & bit_clear) != zero32;
+            w_clear_frame$d = (bus_wdata & bit_clear) != zero32;
+            w_clear_stalls$d = (bus_wdata & bit_clear) != zero32;
+        end
+        soft_q$d = 1'b0;
+        if (we) begin
+            irq_en$d = (wdata & bit_irq) != zero32;
+            soft_q$d = (wdata & bit_soft) != zero32;
+        end
+        clear_count = we & w_clear_count$q;
+        clear_frame = we & w_clear_frame$q;
+        clear_stalls = we & w_clear_stalls$q;
+        core_rst_q$d = rst | soft_q$q;
+        core_rst_next = rst | soft_q$q;
+        if (rst) begin
+            irq_en$d = 1'b0;
+            soft_q$d = 1'b0;
+        end
+        irq_enable = irq_en$q;
+        core_rst = core_rst_q$q;
+    end
+
+endmodule // fcc_regs__control_k7_668cf05b
+
+
+module fcc_regs__control__core_rst_q_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -17400,29 +16932,10 @@ module fcc_regs__err_k_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__err_k_k7_668cf05b
+endmodule // fcc_regs__control__core_rst_q_k7_668cf05b
 
 
-module fcc_regs__err_rows_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__err_rows_k7_668cf05b
-
-
-module fcc_regs__err_thh_k7_668cf05b(d,q,clock);
+module fcc_regs__control__irq_en_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -17438,10 +16951,10 @@ module fcc_regs__err_thh_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__err_thh_k7_668cf05b
+endmodule // fcc_regs__control__irq_en_k7_668cf05b
 
 
-module fcc_regs__err_thv_k7_668cf05b(d,q,clock);
+module fcc_regs__control__soft_q_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -17457,10 +16970,10 @@ module fcc_regs__err_thv_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__err_thv_k7_668cf05b
+endmodule // fcc_regs__control__soft_q_k7_668cf05b
 
 
-module fcc_regs__idle_dims_k7_668cf05b(clock,d,q);
+module fcc_regs__control__w_clear_count_k7_668cf05b(clock,d,q);
 
     // Module arguments
     input wire  clock;
@@ -17478,10 +16991,10 @@ module fcc_regs__idle_dims_k7_668cf05b(clock,d,q);
     always @(*) begin
         q = held;
     end
-endmodule // fcc_regs__idle_dims_k7_668cf05b
+endmodule // fcc_regs__control__w_clear_count_k7_668cf05b
 
 
-module fcc_regs__idle_th_v_k7_668cf05b(clock,d,q);
+module fcc_regs__control__w_clear_frame_k7_668cf05b(clock,d,q);
 
     // Module arguments
     input wire  clock;
@@ -17499,10 +17012,293 @@ module fcc_regs__idle_th_v_k7_668cf05b(clock,d,q);
     always @(*) begin
         q = held;
     end
-endmodule // fcc_regs__idle_th_v_k7_668cf05b
+endmodule // fcc_regs__control__w_clear_frame_k7_668cf05b
 
 
-module fcc_regs__irq_en_k7_668cf05b(d,q,clock);
+module fcc_regs__control__w_clear_stalls_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_regs__control__w_clear_stalls_k7_668cf05b
+
+
+module fcc_regs__frame_status_k7_668cf05b(clk,rst,frame_sent,out_next,clusters,provisional,overflow,unlabelled,frame_error,joins,gear_stalls,we_status,wdata,clear_count,clear_frame,clear_stalls,frame_done,done,count,st_clusters,st_provisional,st_overflow,st_unlabelled,st_frame_error,st_joins,st_gear_stalls);
+
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  frame_sent;
+    input wire  out_next;
+    input wire  [15:0] clusters;
+    input wire  [15:0] provisional;
+    input wire  overflow;
+    input wire  [19:0] unlabelled;
+    input wire  frame_error;
+    input wire  [23:0] joins;
+    input wire  [23:0] gear_stalls;
+    input wire  we_status;
+    input wire  [31:0] wdata;
+    input wire  clear_count;
+    input wire  clear_frame;
+    input wire  clear_stalls;
+    output reg  frame_done;
+    output reg  done;
+    output reg  [31:0] count;
+    output reg  [15:0] st_clusters;
+    output reg  [15:0] st_provisional;
+    output reg  st_overflow;
+    output reg  [19:0] st_unlabelled;
+    output reg  st_frame_error;
+    output reg  [23:0] st_joins;
+    output reg  [23:0] st_gear_stalls;
+
+    // Stub signals
+    reg  status$clk;
+    reg  status$rst;
+    reg  status$we;
+    reg  [31:0] status$wdata;
+    reg  status$set$0;
+    reg  status$clear;
+    wire  status$q$0;
+    reg  frame_count$clk;
+    reg  frame_count$rst;
+    reg  frame_count$inc;
+    reg  frame_count$clear;
+    wire  [31:0] frame_count$q;
+    reg  snap_clusters$clk;
+    reg  snap_clusters$rst;
+    reg  snap_clusters$latch;
+    reg  [15:0] snap_clusters$value;
+    reg  snap_clusters$clear;
+    wire  [15:0] snap_clusters$q;
+    reg  snap_provisional$clk;
+    reg  snap_provisional$rst;
+    reg  snap_provisional$latch;
+    reg  [15:0] snap_provisional$value;
+    reg  snap_provisional$clear;
+    wire  [15:0] snap_provisional$q;
+    reg  snap_unlabelled$clk;
+    reg  snap_unlabelled$rst;
+    reg  snap_unlabelled$latch;
+    reg  [19:0] snap_unlabelled$value;
+    reg  snap_unlabelled$clear;
+    wire  [19:0] snap_unlabelled$q;
+    reg  snap_overflow$clk;
+    reg  snap_overflow$rst;
+    reg  snap_overflow$latch;
+    reg  snap_overflow$value;
+    reg  snap_overflow$clear;
+    wire  snap_overflow$q;
+    reg  snap_frame_error$clk;
+    reg  snap_frame_error$rst;
+    reg  snap_frame_error$latch;
+    reg  snap_frame_error$value;
+    reg  snap_frame_error$clear;
+    wire  snap_frame_error$q;
+    reg  snap_joins$clk;
+    reg  snap_joins$rst;
+    reg  snap_joins$latch;
+    reg  [23:0] snap_joins$value;
+    reg  snap_joins$clear;
+    wire  [23:0] snap_joins$q;
+    reg  snap_gear_stalls$clk;
+    reg  snap_gear_stalls$rst;
+    reg  snap_gear_stalls$latch;
+    reg  [23:0] snap_gear_stalls$value;
+    reg  snap_gear_stalls$clear;
+    wire  [23:0] snap_gear_stalls$q;
+    reg  done_q$d;
+    wire  done_q$q;
+    reg  done_q$clock;
+    reg  out_status$clock;
+    reg  out_status$d;
+    wire  out_status$q;
+    reg  out_perf$clock;
+    reg  out_perf$d;
+    wire  out_perf$q;
+
+    // Local signals
+    reg  frame_end;
+    reg  frame_end_perf;
+
+    // Sub module instances
+    fcc_regs__frame_status__status_k7_668cf05b status(
+        .clk(status$clk),
+        .rst(status$rst),
+        .we(status$we),
+        .wdata(status$wdata),
+        .set$0(status$set$0),
+        .clear(status$clear),
+        .q$0(status$q$0)
+    );
+    fcc_regs__frame_status__frame_count_k7_668cf05b frame_count(
+        .clk(frame_count$clk),
+        .rst(frame_count$rst),
+        .inc(frame_count$inc),
+        .clear(frame_count$clear),
+        .q(frame_count$q)
+    );
+    fcc_regs__frame_status__snap_clusters_k7_668cf05b snap_clusters(
+        .clk(snap_clusters$clk),
+        .rst(snap_clusters$rst),
+        .latch(snap_clusters$latch),
+        .value(snap_clusters$value),
+        .clear(snap_clusters$clear),
+        .q(snap_clusters$q)
+    );
+    fcc_regs__frame_status__snap_provisional_k7_668cf05b snap_provisional(
+        .clk(snap_provisional$clk),
+        .rst(snap_provisional$rst),
+        .latch(snap_provisional$latch),
+        .value(snap_provisional$value),
+        .clear(snap_provisional$clear),
+        .q(snap_provisional$q)
+    );
+    fcc_regs__frame_status__snap_unlabelled_k7_668cf05b snap_unlabelled(
+        .clk(snap_unlabelled$clk),
+        .rst(snap_unlabelled$rst),
+        .latch(snap_unlabelled$latch),
+        .value(snap_unlabelled$value),
+        .clear(snap_unlabelled$clear),
+        .q(snap_unlabelled$q)
+    );
+    fcc_regs__frame_status__snap_overflow_k7_668cf05b snap_overflow(
+        .clk(snap_overflow$clk),
+        .rst(snap_overflow$rst),
+        .latch(snap_overflow$latch),
+        .value(snap_overflow$value),
+        .clear(snap_overflow$clear),
+        .q(snap_overflow$q)
+    );
+    fcc_regs__frame_status__snap_frame_error_k7_668cf05b snap_frame_error(
+        .clk(snap_frame_error$clk),
+        .rst(snap_frame_error$rst),
+        .latch(snap_frame_error$latch),
+        .value(snap_frame_error$value),
+        .clear(snap_frame_error$clear),
+        .q(snap_frame_error$q)
+    );
+    fcc_regs__frame_status__snap_joins_k7_668cf05b snap_joins(
+        .clk(snap_joins$clk),
+        .rst(snap_joins$rst),
+        .latch(snap_joins$latch),
+        .value(snap_joins$value),
+        .clear(snap_joins$clear),
+        .q(snap_joins$q)
+    );
+    fcc_regs__frame_status__snap_gear_stalls_k7_668cf05b snap_gear_stalls(
+        .clk(snap_gear_stalls$clk),
+        .rst(snap_gear_stalls$rst),
+        .latch(snap_gear_stalls$latch),
+        .value(snap_gear_stalls$value),
+        .clear(snap_gear_stalls$clear),
+        .q(snap_gear_stalls$q)
+    );
+    fcc_regs__frame_status__done_q_k7_668cf05b done_q(
+        .d(done_q$d),
+        .q(done_q$q),
+        .clock(done_q$clock)
+    );
+    fcc_regs__frame_status__out_status_k7_668cf05b out_status(
+        .clock(out_status$clock),
+        .d(out_status$d),
+        .q(out_status$q)
+    );
+    fcc_regs__frame_status__out_perf_k7_668cf05b out_perf(
+        .clock(out_perf$clock),
+        .d(out_perf$d),
+        .q(out_perf$q)
+    );
+
+    // Update code
+    always @(*) begin
+        done_q$clock = clk;
+        done_q$d = done_q$q;
+        out_status$clock = clk;
+        out_perf$clock = clk;
+        out_status$d = out_next;
+        out_perf$d = out_next;
+        frame_end = out_status$q & frame_sent;
+        frame_end_perf = out_perf$q & frame_sent;
+        done_q$d = frame_end;
+        if (rst) begin
+            done_q$d = 1'b0;
+        end
+        status$clk = clk;
+        status$rst = rst;
+        status$we = we_status;
+        status$wdata = wdata;
+        status$set$0 = frame_end;
+        status$clear = clear_count;
+        frame_count$clk = clk;
+        frame_count$rst = rst;
+        frame_count$inc = frame_end;
+        frame_count$clear = clear_count;
+        snap_clusters$clk = clk;
+        snap_clusters$rst = rst;
+        snap_clusters$latch = frame_end;
+        snap_clusters$value = clusters;
+        snap_clusters$clear = clear_count;
+        snap_provisional$clk = clk;
+        snap_provisional$rst = rst;
+        snap_provisional$latch = frame_end;
+        snap_provisional$value = provisional;
+        snap_provisional$clear = clear_frame;
+        snap_unlabelled$clk = clk;
+        snap_unlabelled$rst = rst;
+        snap_unlabelled$latch = frame_end;
+        snap_unlabelled$value = unlabelled;
+        snap_unlabelled$clear = clear_frame;
+        snap_overflow$clk = clk;
+        snap_overflow$rst = rst;
+        snap_overflow$latch = frame_end;
+        snap_overflow$value = overflow;
+        snap_overflow$clear = clear_count;
+        snap_frame_error$clk = clk;
+        snap_frame_error$rst = rst;
+        snap_frame_error$latch = frame_end;
+        snap_frame_error$value = frame_error;
+        snap_frame_error$clear = clear_count;
+        snap_joins$clk = clk;
+        snap_joins$rst = rst;
+        snap_joins$latch = frame_end_perf;
+        snap_joins$value = joins;
+        snap_joins$clear = clear_frame;
+        snap_gear_stalls$clk = clk;
+        snap_gear_stalls$rst = rst;
+        snap_gear_stalls$latch = frame_end_perf;
+        snap_gear_stalls$value = gear_stalls;
+        snap_gear_stalls$clear = clear_stalls;
+        frame_done = done_q$q;
+        done = status$q$0;
+        count = frame_count$q;
+        st_clusters = snap_clusters$q;
+        st_provisional = snap_provisional$q;
+        st_overflow = snap_overflow$q;
+        st_unlabelled = snap_unlabelled$q;
+        st_frame_error = snap_frame_error$q;
+        st_joins = snap_joins$q;
+        st_gear_stalls = snap_gear_stalls$q;
+    end
+
+endmodule // fcc_regs__frame_status_k7_668cf05b
+
+
+module fcc_regs__frame_status__done_q_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -17518,7 +17314,599 @@ module fcc_regs__irq_en_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__irq_en_k7_668cf05b
+endmodule // fcc_regs__frame_status__done_q_k7_668cf05b
+
+
+module fcc_regs__frame_status__frame_count_k7_668cf05b(clk,rst,inc,clear,q);
+
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  inc;
+    input wire  clear;
+    output reg  [31:0] q;
+
+    // Constant declarations
+    localparam  one32 = 32'h1;
+    localparam  zero32 = 32'h0;
+
+    // Stub signals
+    reg  [31:0] count$d;
+    wire  [31:0] count$q;
+    reg  count$clock;
+
+    // Local signals
+    reg  [31:0] addend;
+
+    // Sub module instances
+    fcc_regs__frame_status__frame_count__count_k7_668cf05b count(
+        .d(count$d),
+        .q(count$q),
+        .clock(count$clock)
+    );
+
+    // Update code
+    always @(*) begin
+        count$clock = clk;
+        count$d = count$q;
+        addend = zero32;
+        if (inc) begin
+            addend = one32;
+        end
+        count$d = count$q + addend;
+        if (clear | rst) begin
+            count$d = zero32;
+        end
+        q = count$q;
+    end
+
+endmodule // fcc_regs__frame_status__frame_count_k7_668cf05b
+
+
+module fcc_regs__frame_status__frame_count__count_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__frame_status__frame_count__count_k7_668cf05b
+
+
+module fcc_regs__frame_status__out_perf_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_regs__frame_status__out_perf_k7_668cf05b
+
+
+module fcc_regs__frame_status__out_status_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_regs__frame_status__out_status_k7_668cf05b
+
+
+module fcc_regs__frame_status__snap_clusters_k7_668cf05b(clk,rst,latch,value,clear,q);
+
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  latch;
+    input wire  [15:0] value;
+    input wire  clear;
+    output reg  [15:0] q;
+
+    // Constant declarations
+    localparam  zero = 16'h0;
+
+    // Stub signals
+    reg  [15:0] held$d;
+    wire  [15:0] held$q;
+    reg  held$clock;
+
+    // Sub module instances
+    fcc_regs__frame_status__snap_clusters__held_k7_668cf05b held(
+        .d(held$d),
+        .q(held$q),
+        .clock(held$clock)
+    );
+
+    // Update code
+    always @(*) begin
+        held$clock = clk;
+        held$d = held$q;
+        if (latch) begin
+            held$d = value;
+        end
+        if (clear | rst) begin
+            held$d = zero;
+        end
+        q = held$q;
+    end
+
+endmodule // fcc_regs__frame_status__snap_clusters_k7_668cf05b
+
+
+module fcc_regs__frame_status__snap_clusters__held_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__frame_status__snap_clusters__held_k7_668cf05b
+
+
+module fcc_regs__frame_status__snap_frame_error_k7_668cf05b(clk,rst,latch,value,clear,q);
+
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  latch;
+    input wire  value;
+    input wire  clear;
+    output reg  q;
+
+    // Constant declarations
+    localparam  zero = 1'b0;
+
+    // Stub signals
+    reg  held$d;
+    wire  held$q;
+    reg  held$clock;
+
+    // Sub module instances
+    fcc_regs__frame_status__snap_frame_error__held_k7_668cf05b held(
+        .d(held$d),
+        .q(held$q),
+        .clock(held$clock)
+    );
+
+    // Update code
+    always @(*) begin
+        held$clock = clk;
+        held$d = held$q;
+        if (latch) begin
+            held$d = value;
+        end
+        if (clear | rst) begin
+            held$d = zero;
+        end
+        q = held$q;
+    end
+
+endmodule // fcc_regs__frame_status__snap_frame_error_k7_668cf05b
+
+
+module fcc_regs__frame_status__snap_frame_error__held_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__frame_status__snap_frame_error__held_k7_668cf05b
+
+
+module fcc_regs__frame_status__snap_gear_stalls_k7_668cf05b(clk,rst,latch,value,clear,q);
+
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  latch;
+    input wire  [23:0] value;
+    input wire  clear;
+    output reg  [23:0] q;
+
+    // Constant declarations
+    localparam  zero = 24'h0;
+
+    // Stub signals
+    reg  [23:0] held$d;
+    wire  [23:0] held$q;
+    reg  held$clock;
+
+    // Sub module instances
+    fcc_regs__frame_status__snap_gear_stalls__held_k7_668cf05b held(
+        .d(held$d),
+        .q(held$q),
+        .clock(held$clock)
+    );
+
+    // Update code
+    always @(*) begin
+        held$clock = clk;
+        held$d = held$q;
+        if (latch) begin
+            held$d = value;
+        end
+        if (clear | rst) begin
+            held$d = zero;
+        end
+        q = held$q;
+    end
+
+endmodule // fcc_regs__frame_status__snap_gear_stalls_k7_668cf05b
+
+
+module fcc_regs__frame_status__snap_gear_stalls__held_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__frame_status__snap_gear_stalls__held_k7_668cf05b
+
+
+module fcc_regs__frame_status__snap_joins_k7_668cf05b(clk,rst,latch,value,clear,q);
+
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  latch;
+    input wire  [23:0] value;
+    input wire  clear;
+    output reg  [23:0] q;
+
+    // Constant declarations
+    localparam  zero = 24'h0;
+
+    // Stub signals
+    reg  [23:0] held$d;
+    wire  [23:0] held$q;
+    reg  held$clock;
+
+    // Sub module instances
+    fcc_regs__frame_status__snap_joins__held_k7_668cf05b held(
+        .d(held$d),
+        .q(held$q),
+        .clock(held$clock)
+    );
+
+    // Update code
+    always @(*) begin
+        held$clock = clk;
+        held$d = held$q;
+        if (latch) begin
+            held$d = value;
+        end
+        if (clear | rst) begin
+            held$d = zero;
+        end
+        q = held$q;
+    end
+
+endmodule // fcc_regs__frame_status__snap_joins_k7_668cf05b
+
+
+module fcc_regs__frame_status__snap_joins__held_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__frame_status__snap_joins__held_k7_668cf05b
+
+
+module fcc_regs__frame_status__snap_overflow_k7_668cf05b(clk,rst,latch,value,clear,q);
+
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  latch;
+    input wire  value;
+    input wire  clear;
+    output reg  q;
+
+    // Constant declarations
+    localparam  zero = 1'b0;
+
+    // Stub signals
+    reg  held$d;
+    wire  held$q;
+    reg  held$clock;
+
+    // Sub module instances
+    fcc_regs__frame_status__snap_overflow__held_k7_668cf05b held(
+        .d(held$d),
+        .q(held$q),
+        .clock(held$clock)
+    );
+
+    // Update code
+    always @(*) begin
+        held$clock = clk;
+        held$d = held$q;
+        if (latch) begin
+            held$d = value;
+        end
+        if (clear | rst) begin
+            held$d = zero;
+        end
+        q = held$q;
+    end
+
+endmodule // fcc_regs__frame_status__snap_overflow_k7_668cf05b
+
+
+module fcc_regs__frame_status__snap_overflow__held_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__frame_status__snap_overflow__held_k7_668cf05b
+
+
+module fcc_regs__frame_status__snap_provisional_k7_668cf05b(clk,rst,latch,value,clear,q);
+
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  latch;
+    input wire  [15:0] value;
+    input wire  clear;
+    output reg  [15:0] q;
+
+    // Constant declarations
+    localparam  zero = 16'h0;
+
+    // Stub signals
+    reg  [15:0] held$d;
+    wire  [15:0] held$q;
+    reg  held$clock;
+
+    // Sub module instances
+    fcc_regs__frame_status__snap_provisional__held_k7_668cf05b held(
+        .d(held$d),
+        .q(held$q),
+        .clock(held$clock)
+    );
+
+    // Update code
+    always @(*) begin
+        held$clock = clk;
+        held$d = held$q;
+        if (latch) begin
+            held$d = value;
+        end
+        if (clear | rst) begin
+            held$d = zero;
+        end
+        q = held$q;
+    end
+
+endmodule // fcc_regs__frame_status__snap_provisional_k7_668cf05b
+
+
+module fcc_regs__frame_status__snap_provisional__held_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__frame_status__snap_provisional__held_k7_668cf05b
+
+
+module fcc_regs__frame_status__snap_unlabelled_k7_668cf05b(clk,rst,latch,value,clear,q);
+
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  latch;
+    input wire  [19:0] value;
+    input wire  clear;
+    output reg  [19:0] q;
+
+    // Constant declarations
+    localparam  zero = 20'h0;
+
+    // Stub signals
+    reg  [19:0] held$d;
+    wire  [19:0] held$q;
+    reg  held$clock;
+
+    // Sub module instances
+    fcc_regs__frame_status__snap_unlabelled__held_k7_668cf05b held(
+        .d(held$d),
+        .q(held$q),
+        .clock(held$clock)
+    );
+
+    // Update code
+    always @(*) begin
+        held$clock = clk;
+        held$d = held$q;
+        if (latch) begin
+            held$d = value;
+        end
+        if (clear | rst) begin
+            held$d = zero;
+        end
+        q = held$q;
+    end
+
+endmodule // fcc_regs__frame_status__snap_unlabelled_k7_668cf05b
+
+
+module fcc_regs__frame_status__snap_unlabelled__held_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [19:0] d;
+    output reg  [19:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 20'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__frame_status__snap_unlabelled__held_k7_668cf05b
+
+
+module fcc_regs__frame_status__status_k7_668cf05b(clk,rst,we,wdata,set$0,clear,q$0);
+
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  we;
+    input wire  [31:0] wdata;
+    input wire  set$0;
+    input wire  clear;
+    output reg  q$0;
+
+    // Constant declarations
+    localparam  mask$0 = 32'h1;
+    localparam  zero32 = 32'h0;
+
+    // Stub signals
+    reg  sticky$0$d;
+    wire  sticky$0$q;
+    reg  sticky$0$clock;
+
+    // Sub module instances
+    fcc_regs__frame_status__status__sticky__0_k7_668cf05b sticky$0(
+        .d(sticky$0$d),
+        .q(sticky$0$q),
+        .clock(sticky$0$clock)
+    );
+
+    // Update code
+    always @(*) begin
+        sticky$0$clock = clk;
+        sticky$0$d = sticky$0$q;
+        if (we & ((wdata & mask$0) != zero32)) begin
+            sticky$0$d = 1'b0;
+        end
+        if (set$0) begin
+            sticky$0$d = 1'b1;
+        end
+        if (clear | rst) begin
+            sticky$0$d = 1'b0;
+        end
+        q$0 = sticky$0$q;
+    end
+
+endmodule // fcc_regs__frame_status__status_k7_668cf05b
+
+
+module fcc_regs__frame_status__status__sticky__0_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__frame_status__status__sticky__0_k7_668cf05b
 
 
 module fcc_regs__mux_k7_668cf05b(addr,addr_hi,w16$0,w16$1,w16$2,w16$3,w16$4,w16$5,w16$6,w20$0,w24$0,w24$1,w32$0,flags$0,flags$1,flags$2,flags$3,flags$4,flags$5,flags$6,flags$7,flags$8,flags$9,data);
@@ -17621,7 +18009,569 @@ module fcc_regs__mux_k7_668cf05b(addr,addr_hi,w16$0,w16$1,w16$2,w16$3,w16$4,w16$
 endmodule // fcc_regs__mux_k7_668cf05b
 
 
-module fcc_regs__out_perf_k7_668cf05b(clock,d,q);
+module fcc_regs__run_k7_668cf05b(clk,rst,w_take,bus_wdata,wr,we_error,we_k,we_th_h,we_th_v,we_rows,we_cols,wdata,hold,defer,done,read_block,idle_next,idle,err_k,err_th_h,err_th_v,err_rows,err_cols,shadow_k,shadow_th_h,shadow_th_v,shadow_rows,shadow_cols,run_k,run_th_h_c,run_th_v_c,run_rows,run_cols);
+
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  w_take;
+    input wire  [31:0] bus_wdata;
+    input wire  wr;
+    input wire  we_error;
+    input wire  we_k;
+    input wire  we_th_h;
+    input wire  we_th_v;
+    input wire  we_rows;
+    input wire  we_cols;
+    input wire  [31:0] wdata;
+    output reg  hold;
+    output reg  defer;
+    output reg  done;
+    output reg  read_block;
+    input wire  idle_next;
+    output reg  idle;
+    output reg  err_k;
+    output reg  err_th_h;
+    output reg  err_th_v;
+    output reg  err_rows;
+    output reg  err_cols;
+    output reg  [15:0] shadow_k;
+    output reg  [15:0] shadow_th_h;
+    output reg  [15:0] shadow_th_v;
+    output reg  [15:0] shadow_rows;
+    output reg  [15:0] shadow_cols;
+    output reg  [3:0] run_k;
+    output reg  [35:0] run_th_h_c;
+    output reg  [35:0] run_th_v_c;
+    output reg  [7:0] run_rows;
+    output reg  [12:0] run_cols;
+
+    // Stub signals
+    reg  reg_k$clk;
+    reg  reg_k$run_rst;
+    reg  reg_k$w_take;
+    reg  [31:0] reg_k$bus_wdata;
+    reg  reg_k$we;
+    reg  [15:0] reg_k$wdata;
+    reg  reg_k$load;
+    wire  [15:0] reg_k$shadow;
+    wire  [3:0] reg_k$active;
+    wire  reg_k$refused;
+    reg  reg_rows$clk;
+    reg  reg_rows$run_rst;
+    reg  reg_rows$w_take;
+    reg  [31:0] reg_rows$bus_wdata;
+    reg  reg_rows$we;
+    reg  [15:0] reg_rows$wdata;
+    reg  reg_rows$load;
+    wire  [15:0] reg_rows$shadow;
+    wire  [7:0] reg_rows$active;
+    wire  reg_rows$refused;
+    reg  reg_cols$clk;
+    reg  reg_cols$run_rst;
+    reg  reg_cols$w_take;
+    reg  [31:0] reg_cols$bus_wdata;
+    reg  reg_cols$we;
+    reg  [15:0] reg_cols$wdata;
+    reg  reg_cols$load;
+    wire  [15:0] reg_cols$shadow;
+    wire  [12:0] reg_cols$active;
+    wire  reg_cols$refused;
+    reg  thresholds$clk;
+    reg  thresholds$rst;
+    reg  thresholds$rst_h;
+    reg  thresholds$rst_v;
+    reg  thresholds$rst_act_h;
+    reg  thresholds$rst_act_v;
+    reg  thresholds$w_take;
+    reg  [31:0] thresholds$bus_wdata;
+    reg  thresholds$wr;
+    reg  thresholds$we_h;
+    reg  thresholds$we_v;
+    reg  [15:0] thresholds$wdata;
+    wire  thresholds$hold;
+    wire  thresholds$defer;
+    wire  thresholds$done;
+    reg  thresholds$load_h;
+    reg  thresholds$load_v;
+    wire  thresholds$refused_h;
+    wire  thresholds$refused_v;
+    wire  [15:0] thresholds$shadow_h;
+    wire  [15:0] thresholds$shadow_v;
+    wire  [35:0] thresholds$run_th_h_c;
+    wire  [35:0] thresholds$run_th_v_c;
+    reg  error$clk;
+    reg  error$rst;
+    reg  error$we;
+    reg  [31:0] error$wdata;
+    reg  error$set$0;
+    reg  error$set$1;
+    reg  error$set$2;
+    reg  error$set$3;
+    reg  error$set$4;
+    reg  error$clear;
+    wire  error$q$0;
+    wire  error$q$1;
+    wire  error$q$2;
+    wire  error$q$3;
+    wire  error$q$4;
+    reg  run_rst_dims$clock;
+    reg  run_rst_dims$d;
+    wire  run_rst_dims$q;
+    reg  run_rst_th_h$clock;
+    reg  run_rst_th_h$d;
+    wire  run_rst_th_h$q;
+    reg  run_rst_th_v$clock;
+    reg  run_rst_th_v$d;
+    wire  run_rst_th_v$q;
+    reg  run_rst_act_h$clock;
+    reg  run_rst_act_h$d;
+    wire  run_rst_act_h$q;
+    reg  run_rst_act_v$clock;
+    reg  run_rst_act_v$d;
+    wire  run_rst_act_v$q;
+    reg  idle_dims$clock;
+    reg  idle_dims$d;
+    wire  idle_dims$q;
+    reg  idle_th_v$clock;
+    reg  idle_th_v$d;
+    wire  idle_th_v$q;
+
+    // Sub module instances
+    fcc_regs__run__reg_k_k7_668cf05b reg_k(
+        .clk(reg_k$clk),
+        .run_rst(reg_k$run_rst),
+        .w_take(reg_k$w_take),
+        .bus_wdata(reg_k$bus_wdata),
+        .we(reg_k$we),
+        .wdata(reg_k$wdata),
+        .load(reg_k$load),
+        .shadow(reg_k$shadow),
+        .active(reg_k$active),
+        .refused(reg_k$refused)
+    );
+    fcc_regs__run__reg_rows_k7_668cf05b reg_rows(
+        .clk(reg_rows$clk),
+        .run_rst(reg_rows$run_rst),
+        .w_take(reg_rows$w_take),
+        .bus_wdata(reg_rows$bus_wdata),
+        .we(reg_rows$we),
+        .wdata(reg_rows$wdata),
+        .load(reg_rows$load),
+        .shadow(reg_rows$shadow),
+        .active(reg_rows$active),
+        .refused(reg_rows$refused)
+    );
+    fcc_regs__run__reg_cols_k7_668cf05b reg_cols(
+        .clk(reg_cols$clk),
+        .run_rst(reg_cols$run_rst),
+        .w_take(reg_cols$w_take),
+        .bus_wdata(reg_cols$bus_wdata),
+        .we(reg_cols$we),
+        .wdata(reg_cols$wdata),
+        .load(reg_cols$load),
+        .shadow(reg_cols$shadow),
+        .active(reg_cols$active),
+        .refused(reg_cols$refused)
+    );
+    fcc_regs__run__thresholds_k7_668cf05b thresholds(
+        .clk(thresholds$clk),
+        .rst(thresholds$rst),
+        .rst_h(thresholds$rst_h),
+        .rst_v(thresholds$rst_v),
+        .rst_act_h(thresholds$rst_act_h),
+        .rst_act_v(thresholds$rst_act_v),
+        .w_take(thresholds$w_take),
+        .bus_wdata(thresholds$bus_wdata),
+        .wr(thresholds$wr),
+        .we_h(thresholds$we_h),
+        .we_v(thresholds$we_v),
+        .wdata(thresholds$wdata),
+        .hold(thresholds$hold),
+        .defer(thresholds$defer),
+        .done(thresholds$done),
+        .load_h(thresholds$load_h),
+        .load_v(thresholds$load_v),
+        .refused_h(thresholds$refused_h),
+        .refused_v(thresholds$refused_v),
+        .shadow_h(thresholds$shadow_h),
+        .shadow_v(thresholds$shadow_v),
+        .run_th_h_c(thresholds$run_th_h_c),
+        .run_th_v_c(thresholds$run_th_v_c)
+    );
+    fcc_regs__run__error_k7_668cf05b error(
+        .clk(error$clk),
+        .rst(error$rst),
+        .we(error$we),
+        .wdata(error$wdata),
+        .set$0(error$set$0),
+        .set$1(error$set$1),
+        .set$2(error$set$2),
+        .set$3(error$set$3),
+        .set$4(error$set$4),
+        .clear(error$clear),
+        .q$0(error$q$0),
+        .q$1(error$q$1),
+        .q$2(error$q$2),
+        .q$3(error$q$3),
+        .q$4(error$q$4)
+    );
+    fcc_regs__run__run_rst_dims_k7_668cf05b run_rst_dims(
+        .clock(run_rst_dims$clock),
+        .d(run_rst_dims$d),
+        .q(run_rst_dims$q)
+    );
+    fcc_regs__run__run_rst_th_h_k7_668cf05b run_rst_th_h(
+        .clock(run_rst_th_h$clock),
+        .d(run_rst_th_h$d),
+        .q(run_rst_th_h$q)
+    );
+    fcc_regs__run__run_rst_th_v_k7_668cf05b run_rst_th_v(
+        .clock(run_rst_th_v$clock),
+        .d(run_rst_th_v$d),
+        .q(run_rst_th_v$q)
+    );
+    fcc_regs__run__run_rst_act_h_k7_668cf05b run_rst_act_h(
+        .clock(run_rst_act_h$clock),
+        .d(run_rst_act_h$d),
+        .q(run_rst_act_h$q)
+    );
+    fcc_regs__run__run_rst_act_v_k7_668cf05b run_rst_act_v(
+        .clock(run_rst_act_v$clock),
+        .d(run_rst_act_v$d),
+        .q(run_rst_act_v$q)
+    );
+    fcc_regs__run__idle_dims_k7_668cf05b idle_dims(
+        .clock(idle_dims$clock),
+        .d(idle_dims$d),
+        .q(idle_dims$q)
+    );
+    fcc_regs__run__idle_th_v_k7_668cf05b idle_th_v(
+        .clock(idle_th_v$clock),
+        .d(idle_th_v$d),
+        .q(idle_th_v$q)
+    );
+
+    // Update code
+    always @(*) begin
+        run_rst_dims$clock = clk;
+        run_rst_th_h$clock = clk;
+        run_rst_th_v$clock = clk;
+        run_rst_act_h$clock = clk;
+        run_rst_act_v$clock = clk;
+        idle_dims$clock = clk;
+        idle_th_v$clock = clk;
+        run_rst_dims$d = rst;
+        run_rst_th_h$d = rst;
+        run_rst_th_v$d = rst;
+        run_rst_act_h$d = rst;
+        run_rst_act_v$d = rst;
+        idle_dims$d = idle_next;
+        idle_th_v$d = idle_next;
+        read_block = run_rst_dims$q;
+        idle = idle_th_v$q;
+        reg_k$clk = clk;
+        reg_k$run_rst = run_rst_dims$q;
+        reg_k$w_take = w_take;
+        reg_k$bus_wdata = bus_wdata;
+        reg_k$we = we_k;
+        reg_k$wdata = wdata[15:0];
+        reg_k$load = idle_dims$q;
+        reg_rows$clk = clk;
+        reg_rows$run_rst = run_rst_dims$q;
+        reg_rows$w_take = w_take;
+        reg_rows$bus_wdata = bus_wdata;
+        reg_rows$we = we_rows;
+        reg_rows$wdata = wdata[15:0];
+        reg_rows$load = idle_dims$q;
+        reg_cols$clk = clk;
+        reg_cols$run_rst = run_rst_dims$q;
+        reg_cols$w_take = w_take;
+        reg_cols$bus_wdata = bus_wdata;
+        reg_cols$we = we_cols;
+        reg_cols$wdata = wdata[15:0];
+        reg_cols$load = idle_dims$q;
+        thresholds$clk = clk;
+        thresholds$rst = rst;
+        thresholds$rst_h = run_rst_th_h$q;
+        thresholds$rst_v = run_rst_th_v$q;
+        thresholds$rst_act_h = run_rst_act_h$q;
+        thresholds$rst_act_v = run_rst_act_v$q;
+        thresholds$w_take = w_take;
+        thresholds$bus_wdata = bus_wdata;
+        thresholds$wr = wr;
+        thresholds$we_h = we_th_h;
+        thresholds$we_v = we_th_v;
+        thresholds$wdata = wdata[15:0];
+        thresholds$load_h = idle_dims$q;
+        thresholds$load_v = idle_th_v$q;
+        hold = thresholds$hold;
+        defer = thresholds$defer;
+        done = thresholds$done;
+        error$clk = clk;
+        error$rst = rst;
+        error$we = we_error;
+        error$wdata = wdata;
+        error$clear = 1'b0;
+        error$set$0 = reg_k$refused;
+        err_k = error$q$0;
+        error$set$1 = thresholds$refused_h;
+        err_th_h = error$q$1;
+        error$set$2 = thresholds$refused_v;
+        err_th_v = error$q$2;
+        error$set$3 = reg_rows$refused;
+        err_rows = error$q$3;
+        error$set$4 = reg_cols$refused;
+        err_cols = error$q$4;
+        shadow_k = reg_k$shadow;
+        shadow_th_h = thresholds$shadow_h;
+        shadow_th_v = thresholds$shadow_v;
+        shadow_rows = reg_rows$shadow;
+        shadow_cols = reg_cols$shadow;
+        run_k = reg_k$active;
+        run_th_h_c = thresholds$run_th_h_c;
+        run_th_v_c = thresholds$run_th_v_c;
+        run_rows = reg_rows$active;
+        run_cols = reg_cols$active;
+    end
+
+endmodule // fcc_regs__run_k7_668cf05b
+
+
+module fcc_regs__run__error_k7_668cf05b(clk,rst,we,wdata,set$0,set$1,set$2,set$3,set$4,clear,q$0,q$1,q$2,q$3,q$4);
+
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  we;
+    input wire  [31:0] wdata;
+    input wire  set$0;
+    input wire  set$1;
+    input wire  set$2;
+    input wire  set$3;
+    input wire  set$4;
+    input wire  clear;
+    output reg  q$0;
+    output reg  q$1;
+    output reg  q$2;
+    output reg  q$3;
+    output reg  q$4;
+
+    // Constant declarations
+    localparam  mask$0 = 32'h1;
+    localparam  mask$1 = 32'h2;
+    localparam  mask$2 = 32'h4;
+    localparam  mask$3 = 32'h8;
+    localparam  mask$4 = 32'h10;
+    localparam  zero32 = 32'h0;
+
+    // Stub signals
+    reg  sticky$0$d;
+    wire  sticky$0$q;
+    reg  sticky$0$clock;
+    reg  sticky$1$d;
+    wire  sticky$1$q;
+    reg  sticky$1$clock;
+    reg  sticky$2$d;
+    wire  sticky$2$q;
+    reg  sticky$2$clock;
+    reg  sticky$3$d;
+    wire  sticky$3$q;
+    reg  sticky$3$clock;
+    reg  sticky$4$d;
+    wire  sticky$4$q;
+    reg  sticky$4$clock;
+
+    // Sub module instances
+    fcc_regs__run__error__sticky__0_k7_668cf05b sticky$0(
+        .d(sticky$0$d),
+        .q(sticky$0$q),
+        .clock(sticky$0$clock)
+    );
+    fcc_regs__run__error__sticky__1_k7_668cf05b sticky$1(
+        .d(sticky$1$d),
+        .q(sticky$1$q),
+        .clock(sticky$1$clock)
+    );
+    fcc_regs__run__error__sticky__2_k7_668cf05b sticky$2(
+        .d(sticky$2$d),
+        .q(sticky$2$q),
+        .clock(sticky$2$clock)
+    );
+    fcc_regs__run__error__sticky__3_k7_668cf05b sticky$3(
+        .d(sticky$3$d),
+        .q(sticky$3$q),
+        .clock(sticky$3$clock)
+    );
+    fcc_regs__run__error__sticky__4_k7_668cf05b sticky$4(
+        .d(sticky$4$d),
+        .q(sticky$4$q),
+        .clock(sticky$4$clock)
+    );
+
+    // Update code
+    always @(*) begin
+        sticky$0$clock = clk;
+        sticky$0$d = sticky$0$q;
+        if (we & ((wdata & mask$0) != zero32)) begin
+            sticky$0$d = 1'b0;
+        end
+        if (set$0) begin
+            sticky$0$d = 1'b1;
+        end
+        if (clear | rst) begin
+            sticky$0$d = 1'b0;
+        end
+        q$0 = sticky$0$q;
+        sticky$1$clock = clk;
+        sticky$1$d = sticky$1$q;
+        if (we & ((wdata & mask$1) != zero32)) begin
+            sticky$1$d = 1'b0;
+        end
+        if (set$1) begin
+            sticky$1$d = 1'b1;
+        end
+        if (clear | rst) begin
+            sticky$1$d = 1'b0;
+        end
+        q$1 = sticky$1$q;
+        sticky$2$clock = clk;
+        sticky$2$d = sticky$2$q;
+        if (we & ((wdata & mask$2) != zero32)) begin
+            sticky$2$d = 1'b0;
+        end
+        if (set$2) begin
+            sticky$2$d = 1'b1;
+        end
+        if (clear | rst) begin
+            sticky$2$d = 1'b0;
+        end
+        q$2 = sticky$2$q;
+        sticky$3$clock = clk;
+        sticky$3$d = sticky$3$q;
+        if (we & ((wdata & mask$3) != zero32)) begin
+            sticky$3$d = 1'b0;
+        end
+        if (set$3) begin
+            sticky$3$d = 1'b1;
+        end
+        if (clear | rst) begin
+            sticky$3$d = 1'b0;
+        end
+        q$3 = sticky$3$q;
+        sticky$4$clock = clk;
+        sticky$4$d = sticky$4$q;
+        if (we & ((wdata & mask$4) != zero32)) begin
+            sticky$4$d = 1'b0;
+        end
+        if (set$4) begin
+            sticky$4$d = 1'b1;
+        end
+        if (clear | rst) begin
+            sticky$4$d = 1'b0;
+        end
+        q$4 = sticky$4$q;
+    end
+
+endmodule // fcc_regs__run__error_k7_668cf05b
+
+
+module fcc_regs__run__error__sticky__0_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__run__error__sticky__0_k7_668cf05b
+
+
+module fcc_regs__run__error__sticky__1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__run__error__sticky__1_k7_668cf05b
+
+
+module fcc_regs__run__error__sticky__2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__run__error__sticky__2_k7_668cf05b
+
+
+module fcc_regs__run__error__sticky__3_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__run__error__sticky__3_k7_668cf05b
+
+
+module fcc_regs__run__error__sticky__4_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__run__error__sticky__4_k7_668cf05b
+
+
+module fcc_regs__run__idle_dims_k7_668cf05b(clock,d,q);
 
     // Module arguments
     input wire  clock;
@@ -17639,10 +18589,10 @@ module fcc_regs__out_perf_k7_668cf05b(clock,d,q);
     always @(*) begin
         q = held;
     end
-endmodule // fcc_regs__out_perf_k7_668cf05b
+endmodule // fcc_regs__run__idle_dims_k7_668cf05b
 
 
-module fcc_regs__out_status_k7_668cf05b(clock,d,q);
+module fcc_regs__run__idle_th_v_k7_668cf05b(clock,d,q);
 
     // Module arguments
     input wire  clock;
@@ -17660,29 +18610,169 @@ module fcc_regs__out_status_k7_668cf05b(clock,d,q);
     always @(*) begin
         q = held;
     end
-endmodule // fcc_regs__out_status_k7_668cf05b
+endmodule // fcc_regs__run__idle_th_v_k7_668cf05b
 
 
-module fcc_regs__r_d_k7_668cf05b(d,q,clock);
+module fcc_regs__run__reg_cols_k7_668cf05b(clk,run_rst,w_take,bus_wdata,we,wdata,load,shadow,active,refused);
 
     // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
+    input wire  clk;
+    input wire  run_rst;
+    input wire  w_take;
+    input wire  [31:0] bus_wdata;
+    input wire  we;
+    input wire  [15:0] wdata;
+    input wire  load;
+    output reg  [15:0] shadow;
+    output reg  [12:0] active;
+    output reg  refused;
+
+    // Constant declarations
+    localparam  reset16 = 16'h800;
+    localparam  reset = 13'b100000000000;
+
+    // Stub signals
+    reg  check$clk;
+    reg  check$w_take;
+    reg  [31:0] check$bus_wdata;
+    reg  check$lsb;
+    wire  check$ok;
+    reg  [15:0] sh$d;
+    wire  [15:0] sh$q;
+    reg  sh$clock;
+    reg  [12:0] act$d;
+    wire  [12:0] act$q;
+    reg  act$clock;
+
+    // Sub module instances
+    fcc_regs__run__reg_cols__check_k7_668cf05b check(
+        .clk(check$clk),
+        .w_take(check$w_take),
+        .bus_wdata(check$bus_wdata),
+        .lsb(check$lsb),
+        .ok(check$ok)
+    );
+    fcc_regs__run__reg_cols__sh_k7_668cf05b sh(
+        .d(sh$d),
+        .q(sh$q),
+        .clock(sh$clock)
+    );
+    fcc_regs__run__reg_cols__act_k7_668cf05b act(
+        .d(act$d),
+        .q(act$q),
+        .clock(act$clock)
+    );
+
+    // Update code
+    always @(*) begin
+        sh$clock = clk;
+        act$clock = clk;
+        sh$d = sh$q;
+        act$d = act$q;
+        check$clk = clk;
+        check$w_take = w_take;
+        check$bus_wdata = bus_wdata;
+        check$lsb = wdata[0];
+        refused = we & ~check$ok;
+        if (we & check$ok) begin
+            sh$d = wdata;
+        end
+        if (load) begin
+            act$d = sh$q[12:0];
+        end
+        if (run_rst) begin
+            sh$d = reset16;
+            act$d = reset;
+        end
+        shadow = sh$q;
+        active = act$q;
+    end
+
+endmodule // fcc_regs__run__reg_cols_k7_668cf05b
+
+
+module fcc_regs__run__reg_cols__act_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [12:0] d;
+    output reg  [12:0] q;
     input wire  clock;
 
     // Update code (custom)
     initial begin
-       q = 32'h0;
+       q = 13'h0;
     end
 
     always @(posedge clock) begin
        q <= d;
     end
 
-endmodule // fcc_regs__r_d_k7_668cf05b
+endmodule // fcc_regs__run__reg_cols__act_k7_668cf05b
 
 
-module fcc_regs__r_v_k7_668cf05b(d,q,clock);
+module fcc_regs__run__reg_cols__check_k7_668cf05b(clk,w_take,bus_wdata,lsb,ok);
+
+    // Module arguments
+    input wire  clk;
+    input wire  w_take;
+    input wire  [31:0] bus_wdata;
+    input wire  lsb;
+    output reg  ok;
+
+    // Constant declarations
+    localparam  min = 16'h20;
+    localparam  max = 16'h800;
+    localparam  zero16 = 16'h0;
+    localparam  any_lsb = 1'b1;
+
+    // Stub signals
+    reg  hi_zero$d;
+    wire  hi_zero$q;
+    reg  hi_zero$clock;
+    reg  ge$d;
+    wire  ge$q;
+    reg  ge$clock;
+    reg  le$d;
+    wire  le$q;
+    reg  le$clock;
+
+    // Sub module instances
+    fcc_regs__run__reg_cols__check__hi_zero_k7_668cf05b hi_zero(
+        .d(hi_zero$d),
+        .q(hi_zero$q),
+        .clock(hi_zero$clock)
+    );
+    fcc_regs__run__reg_cols__check__ge_k7_668cf05b ge(
+        .d(ge$d),
+        .q(ge$q),
+        .clock(ge$clock)
+    );
+    fcc_regs__run__reg_cols__check__le_k7_668cf05b le(
+        .d(le$d),
+        .q(le$q),
+        .clock(le$clock)
+    );
+
+    // Update code
+    always @(*) begin
+        hi_zero$clock = clk;
+        ge$clock = clk;
+        le$clock = clk;
+        hi_zero$d = hi_zero$q;
+        ge$d = ge$q;
+        le$d = le$q;
+        if (w_take) begin
+            hi_zero$d = bus_wdata[31:16] == zero16;
+            ge$d = bus_wdata[15:0] >= min;
+            le$d = bus_wdata[15:0] <= max;
+        end
+        ok = hi_zero$q & ge$q & le$q & (lsb | any_lsb);
+    end
+
+endmodule // fcc_regs__run__reg_cols__check_k7_668cf05b
+
+
+module fcc_regs__run__reg_cols__check__ge_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -17698,134 +18788,10 @@ module fcc_regs__r_v_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__r_v_k7_668cf05b
+endmodule // fcc_regs__run__reg_cols__check__ge_k7_668cf05b
 
 
-module fcc_regs__run_rst_act_h_k7_668cf05b(clock,d,q);
-
-    // Module arguments
-    input wire  clock;
-    input wire  d;
-    output reg  q;
-
-    // Update code (custom)
-    (* max_fanout = 64 *) reg held;
-    initial begin
-        held = 1'h0;
-    end
-    (* keep = "true" *) always @(posedge clock) begin
-        held <= d;
-    end
-    always @(*) begin
-        q = held;
-    end
-endmodule // fcc_regs__run_rst_act_h_k7_668cf05b
-
-
-module fcc_regs__run_rst_act_v_k7_668cf05b(clock,d,q);
-
-    // Module arguments
-    input wire  clock;
-    input wire  d;
-    output reg  q;
-
-    // Update code (custom)
-    (* max_fanout = 64 *) reg held;
-    initial begin
-        held = 1'h0;
-    end
-    (* keep = "true" *) always @(posedge clock) begin
-        held <= d;
-    end
-    always @(*) begin
-        q = held;
-    end
-endmodule // fcc_regs__run_rst_act_v_k7_668cf05b
-
-
-module fcc_regs__run_rst_dims_k7_668cf05b(clock,d,q);
-
-    // Module arguments
-    input wire  clock;
-    input wire  d;
-    output reg  q;
-
-    // Update code (custom)
-    (* max_fanout = 64 *) reg held;
-    initial begin
-        held = 1'h0;
-    end
-    (* keep = "true" *) always @(posedge clock) begin
-        held <= d;
-    end
-    always @(*) begin
-        q = held;
-    end
-endmodule // fcc_regs__run_rst_dims_k7_668cf05b
-
-
-module fcc_regs__run_rst_th_h_k7_668cf05b(clock,d,q);
-
-    // Module arguments
-    input wire  clock;
-    input wire  d;
-    output reg  q;
-
-    // Update code (custom)
-    (* max_fanout = 64 *) reg held;
-    initial begin
-        held = 1'h0;
-    end
-    (* keep = "true" *) always @(posedge clock) begin
-        held <= d;
-    end
-    always @(*) begin
-        q = held;
-    end
-endmodule // fcc_regs__run_rst_th_h_k7_668cf05b
-
-
-module fcc_regs__run_rst_th_v_k7_668cf05b(clock,d,q);
-
-    // Module arguments
-    input wire  clock;
-    input wire  d;
-    output reg  q;
-
-    // Update code (custom)
-    (* max_fanout = 64 *) reg held;
-    initial begin
-        held = 1'h0;
-    end
-    (* keep = "true" *) always @(posedge clock) begin
-        held <= d;
-    end
-    always @(*) begin
-        q = held;
-    end
-endmodule // fcc_regs__run_rst_th_v_k7_668cf05b
-
-
-module fcc_regs__s_clusters_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__s_clusters_k7_668cf05b
-
-
-module fcc_regs__s_err_k7_668cf05b(d,q,clock);
+module fcc_regs__run__reg_cols__check__hi_zero_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -17841,48 +18807,10 @@ module fcc_regs__s_err_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__s_err_k7_668cf05b
+endmodule // fcc_regs__run__reg_cols__check__hi_zero_k7_668cf05b
 
 
-module fcc_regs__s_gstall_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [23:0] d;
-    output reg  [23:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 24'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__s_gstall_k7_668cf05b
-
-
-module fcc_regs__s_joins_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [23:0] d;
-    output reg  [23:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 24'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__s_joins_k7_668cf05b
-
-
-module fcc_regs__s_ovf_k7_668cf05b(d,q,clock);
+module fcc_regs__run__reg_cols__check__le_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -17898,48 +18826,10 @@ module fcc_regs__s_ovf_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__s_ovf_k7_668cf05b
+endmodule // fcc_regs__run__reg_cols__check__le_k7_668cf05b
 
 
-module fcc_regs__s_prov_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__s_prov_k7_668cf05b
-
-
-module fcc_regs__s_unl_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [19:0] d;
-    output reg  [19:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 20'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__s_unl_k7_668cf05b
-
-
-module fcc_regs__sh_cols_k7_668cf05b(d,q,clock);
+module fcc_regs__run__reg_cols__sh_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -17955,10 +18845,226 @@ module fcc_regs__sh_cols_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__sh_cols_k7_668cf05b
+endmodule // fcc_regs__run__reg_cols__sh_k7_668cf05b
 
 
-module fcc_regs__sh_k_k7_668cf05b(d,q,clock);
+module fcc_regs__run__reg_k_k7_668cf05b(clk,run_rst,w_take,bus_wdata,we,wdata,load,shadow,active,refused);
+
+    // Module arguments
+    input wire  clk;
+    input wire  run_rst;
+    input wire  w_take;
+    input wire  [31:0] bus_wdata;
+    input wire  we;
+    input wire  [15:0] wdata;
+    input wire  load;
+    output reg  [15:0] shadow;
+    output reg  [3:0] active;
+    output reg  refused;
+
+    // Constant declarations
+    localparam  reset16 = 16'h7;
+    localparam  reset = 4'h7;
+
+    // Stub signals
+    reg  check$clk;
+    reg  check$w_take;
+    reg  [31:0] check$bus_wdata;
+    reg  check$lsb;
+    wire  check$ok;
+    reg  [15:0] sh$d;
+    wire  [15:0] sh$q;
+    reg  sh$clock;
+    reg  [3:0] act$d;
+    wire  [3:0] act$q;
+    reg  act$clock;
+
+    // Sub module instances
+    fcc_regs__run__reg_k__check_k7_668cf05b check(
+        .clk(check$clk),
+        .w_take(check$w_take),
+        .bus_wdata(check$bus_wdata),
+        .lsb(check$lsb),
+        .ok(check$ok)
+    );
+    fcc_regs__run__reg_k__sh_k7_668cf05b sh(
+        .d(sh$d),
+        .q(sh$q),
+        .clock(sh$clock)
+    );
+    fcc_regs__run__reg_k__act_k7_668cf05b act(
+        .d(act$d),
+        .q(act$q),
+        .clock(act$clock)
+    );
+
+    // Update code
+    always @(*) begin
+        sh$clock = clk;
+        act$clock = clk;
+        sh$d = sh$q;
+        act$d = act$q;
+        check$clk = clk;
+        check$w_take = w_take;
+        check$bus_wdata = bus_wdata;
+        check$lsb = wdata[0];
+        refused = we & ~check$ok;
+        if (we & check$ok) begin
+            sh$d = wdata;
+        end
+        if (load) begin
+            act$d = sh$q[3:0];
+        end
+        if (run_rst) begin
+            sh$d = reset16;
+            act$d = reset;
+        end
+        shadow = sh$q;
+        active = act$q;
+    end
+
+endmodule // fcc_regs__run__reg_k_k7_668cf05b
+
+
+module fcc_regs__run__reg_k__act_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [3:0] d;
+    output reg  [3:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 4'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__run__reg_k__act_k7_668cf05b
+
+
+module fcc_regs__run__reg_k__check_k7_668cf05b(clk,w_take,bus_wdata,lsb,ok);
+
+    // Module arguments
+    input wire  clk;
+    input wire  w_take;
+    input wire  [31:0] bus_wdata;
+    input wire  lsb;
+    output reg  ok;
+
+    // Constant declarations
+    localparam  min = 16'h3;
+    localparam  max = 16'h7;
+    localparam  zero16 = 16'h0;
+    localparam  any_lsb = 1'b0;
+
+    // Stub signals
+    reg  hi_zero$d;
+    wire  hi_zero$q;
+    reg  hi_zero$clock;
+    reg  ge$d;
+    wire  ge$q;
+    reg  ge$clock;
+    reg  le$d;
+    wire  le$q;
+    reg  le$clock;
+
+    // Sub module instances
+    fcc_regs__run__reg_k__check__hi_zero_k7_668cf05b hi_zero(
+        .d(hi_zero$d),
+        .q(hi_zero$q),
+        .clock(hi_zero$clock)
+    );
+    fcc_regs__run__reg_k__check__ge_k7_668cf05b ge(
+        .d(ge$d),
+        .q(ge$q),
+        .clock(ge$clock)
+    );
+    fcc_regs__run__reg_k__check__le_k7_668cf05b le(
+        .d(le$d),
+        .q(le$q),
+        .clock(le$clock)
+    );
+
+    // Update code
+    always @(*) begin
+        hi_zero$clock = clk;
+        ge$clock = clk;
+        le$clock = clk;
+        hi_zero$d = hi_zero$q;
+        ge$d = ge$q;
+        le$d = le$q;
+        if (w_take) begin
+            hi_zero$d = bus_wdata[31:16] == zero16;
+            ge$d = bus_wdata[15:0] >= min;
+            le$d = bus_wdata[15:0] <= max;
+        end
+        ok = hi_zero$q & ge$q & le$q & (lsb | any_lsb);
+    end
+
+endmodule // fcc_regs__run__reg_k__check_k7_668cf05b
+
+
+module fcc_regs__run__reg_k__check__ge_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__run__reg_k__check__ge_k7_668cf05b
+
+
+module fcc_regs__run__reg_k__check__hi_zero_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__run__reg_k__check__hi_zero_k7_668cf05b
+
+
+module fcc_regs__run__reg_k__check__le_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__run__reg_k__check__le_k7_668cf05b
+
+
+module fcc_regs__run__reg_k__sh_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -17974,10 +19080,226 @@ module fcc_regs__sh_k_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__sh_k_k7_668cf05b
+endmodule // fcc_regs__run__reg_k__sh_k7_668cf05b
 
 
-module fcc_regs__sh_rows_k7_668cf05b(d,q,clock);
+module fcc_regs__run__reg_rows_k7_668cf05b(clk,run_rst,w_take,bus_wdata,we,wdata,load,shadow,active,refused);
+
+    // Module arguments
+    input wire  clk;
+    input wire  run_rst;
+    input wire  w_take;
+    input wire  [31:0] bus_wdata;
+    input wire  we;
+    input wire  [15:0] wdata;
+    input wire  load;
+    output reg  [15:0] shadow;
+    output reg  [7:0] active;
+    output reg  refused;
+
+    // Constant declarations
+    localparam  reset16 = 16'h40;
+    localparam  reset = 8'h40;
+
+    // Stub signals
+    reg  check$clk;
+    reg  check$w_take;
+    reg  [31:0] check$bus_wdata;
+    reg  check$lsb;
+    wire  check$ok;
+    reg  [15:0] sh$d;
+    wire  [15:0] sh$q;
+    reg  sh$clock;
+    reg  [7:0] act$d;
+    wire  [7:0] act$q;
+    reg  act$clock;
+
+    // Sub module instances
+    fcc_regs__run__reg_rows__check_k7_668cf05b check(
+        .clk(check$clk),
+        .w_take(check$w_take),
+        .bus_wdata(check$bus_wdata),
+        .lsb(check$lsb),
+        .ok(check$ok)
+    );
+    fcc_regs__run__reg_rows__sh_k7_668cf05b sh(
+        .d(sh$d),
+        .q(sh$q),
+        .clock(sh$clock)
+    );
+    fcc_regs__run__reg_rows__act_k7_668cf05b act(
+        .d(act$d),
+        .q(act$q),
+        .clock(act$clock)
+    );
+
+    // Update code
+    always @(*) begin
+        sh$clock = clk;
+        act$clock = clk;
+        sh$d = sh$q;
+        act$d = act$q;
+        check$clk = clk;
+        check$w_take = w_take;
+        check$bus_wdata = bus_wdata;
+        check$lsb = wdata[0];
+        refused = we & ~check$ok;
+        if (we & check$ok) begin
+            sh$d = wdata;
+        end
+        if (load) begin
+            act$d = sh$q[7:0];
+        end
+        if (run_rst) begin
+            sh$d = reset16;
+            act$d = reset;
+        end
+        shadow = sh$q;
+        active = act$q;
+    end
+
+endmodule // fcc_regs__run__reg_rows_k7_668cf05b
+
+
+module fcc_regs__run__reg_rows__act_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__run__reg_rows__act_k7_668cf05b
+
+
+module fcc_regs__run__reg_rows__check_k7_668cf05b(clk,w_take,bus_wdata,lsb,ok);
+
+    // Module arguments
+    input wire  clk;
+    input wire  w_take;
+    input wire  [31:0] bus_wdata;
+    input wire  lsb;
+    output reg  ok;
+
+    // Constant declarations
+    localparam  min = 16'h1;
+    localparam  max = 16'h40;
+    localparam  zero16 = 16'h0;
+    localparam  any_lsb = 1'b1;
+
+    // Stub signals
+    reg  hi_zero$d;
+    wire  hi_zero$q;
+    reg  hi_zero$clock;
+    reg  ge$d;
+    wire  ge$q;
+    reg  ge$clock;
+    reg  le$d;
+    wire  le$q;
+    reg  le$clock;
+
+    // Sub module instances
+    fcc_regs__run__reg_rows__check__hi_zero_k7_668cf05b hi_zero(
+        .d(hi_zero$d),
+        .q(hi_zero$q),
+        .clock(hi_zero$clock)
+    );
+    fcc_regs__run__reg_rows__check__ge_k7_668cf05b ge(
+        .d(ge$d),
+        .q(ge$q),
+        .clock(ge$clock)
+    );
+    fcc_regs__run__reg_rows__check__le_k7_668cf05b le(
+        .d(le$d),
+        .q(le$q),
+        .clock(le$clock)
+    );
+
+    // Update code
+    always @(*) begin
+        hi_zero$clock = clk;
+        ge$clock = clk;
+        le$clock = clk;
+        hi_zero$d = hi_zero$q;
+        ge$d = ge$q;
+        le$d = le$q;
+        if (w_take) begin
+            hi_zero$d = bus_wdata[31:16] == zero16;
+            ge$d = bus_wdata[15:0] >= min;
+            le$d = bus_wdata[15:0] <= max;
+        end
+        ok = hi_zero$q & ge$q & le$q & (lsb | any_lsb);
+    end
+
+endmodule // fcc_regs__run__reg_rows__check_k7_668cf05b
+
+
+module fcc_regs__run__reg_rows__check__ge_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__run__reg_rows__check__ge_k7_668cf05b
+
+
+module fcc_regs__run__reg_rows__check__hi_zero_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__run__reg_rows__check__hi_zero_k7_668cf05b
+
+
+module fcc_regs__run__reg_rows__check__le_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__run__reg_rows__check__le_k7_668cf05b
+
+
+module fcc_regs__run__reg_rows__sh_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -17993,29 +19315,367 @@ module fcc_regs__sh_rows_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__sh_rows_k7_668cf05b
+endmodule // fcc_regs__run__reg_rows__sh_k7_668cf05b
 
 
-module fcc_regs__sh_thh_k7_668cf05b(d,q,clock);
+module fcc_regs__run__run_rst_act_h_k7_668cf05b(clock,d,q);
 
     // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
     input wire  clock;
+    input wire  d;
+    output reg  q;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg held;
     initial begin
-       q = 16'h0;
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_regs__run__run_rst_act_h_k7_668cf05b
+
+
+module fcc_regs__run__run_rst_act_v_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* max_fanout = 64 *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_regs__run__run_rst_act_v_k7_668cf05b
+
+
+module fcc_regs__run__run_rst_dims_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* max_fanout = 64 *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_regs__run__run_rst_dims_k7_668cf05b
+
+
+module fcc_regs__run__run_rst_th_h_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* max_fanout = 64 *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_regs__run__run_rst_th_h_k7_668cf05b
+
+
+module fcc_regs__run__run_rst_th_v_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* max_fanout = 64 *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_regs__run__run_rst_th_v_k7_668cf05b
+
+
+module fcc_regs__run__thresholds_k7_668cf05b(clk,rst,rst_h,rst_v,rst_act_h,rst_act_v,w_take,bus_wdata,wr,we_h,we_v,wdata,hold,defer,done,load_h,load_v,refused_h,refused_v,shadow_h,shadow_v,run_th_h_c,run_th_v_c);
+
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  rst_h;
+    input wire  rst_v;
+    input wire  rst_act_h;
+    input wire  rst_act_v;
+    input wire  w_take;
+    input wire  [31:0] bus_wdata;
+    input wire  wr;
+    input wire  we_h;
+    input wire  we_v;
+    input wire  [15:0] wdata;
+    output reg  hold;
+    output reg  defer;
+    output reg  done;
+    input wire  load_h;
+    input wire  load_v;
+    output reg  refused_h;
+    output reg  refused_v;
+    output reg  [15:0] shadow_h;
+    output reg  [15:0] shadow_v;
+    output reg  [35:0] run_th_h_c;
+    output reg  [35:0] run_th_v_c;
+
+    // Constant declarations
+    localparam  def_thh = 16'h80;
+    localparam  def_thv = 16'h100;
+    localparam  def_thh_c = 36'hfffffbfff;
+    localparam  def_thv_c = 36'hfffff0000;
+
+    // Stub signals
+    reg  check$clk;
+    reg  check$w_take;
+    reg  [31:0] check$bus_wdata;
+    reg  check$lsb;
+    wire  check$ok;
+    reg  sq$clk;
+    reg  sq$rst;
+    reg  sq$start;
+    reg  sq$start_acc;
+    reg  [15:0] sq$a;
+    wire  sq$busy;
+    wire  [35:0] sq$c_lt;
+    wire  [35:0] sq$c_le;
+    reg  sq_v$d;
+    wire  sq_v$q;
+    reg  sq_v$clock;
+    reg  [15:0] sq_a$d;
+    wire  [15:0] sq_a$q;
+    reg  sq_a$clock;
+    reg  sq_start$clock;
+    reg  sq_start$d;
+    wire  sq_start$q;
+    reg  sq_start_acc$clock;
+    reg  sq_start_acc$d;
+    wire  sq_start_acc$q;
+    reg  sq_busy_q$d;
+    wire  sq_busy_q$q;
+    reg  sq_busy_q$clock;
+    reg  [15:0] sh_thh$d;
+    wire  [15:0] sh_thh$q;
+    reg  sh_thh$clock;
+    reg  [15:0] sh_thv$d;
+    wire  [15:0] sh_thv$q;
+    reg  sh_thv$clock;
+    reg  [35:0] sh_thh_c$d;
+    wire  [35:0] sh_thh_c$q;
+    reg  sh_thh_c$clock;
+    reg  [35:0] sh_thv_c$d;
+    wire  [35:0] sh_thv_c$q;
+    reg  sh_thv_c$clock;
+    reg  [35:0] act_thh_c$d;
+    wire  [35:0] act_thh_c$q;
+    reg  act_thh_c$clock;
+    reg  [35:0] act_thv_c$d;
+    wire  [35:0] act_thv_c$q;
+    reg  act_thv_c$clock;
+
+    // Local signals
+    reg  sq_start_next;
+
+    // Sub module instances
+    fcc_regs__run__thresholds__check_k7_668cf05b check(
+        .clk(check$clk),
+        .w_take(check$w_take),
+        .bus_wdata(check$bus_wdata),
+        .lsb(check$lsb),
+        .ok(check$ok)
+    );
+    fcc_regs__run__thresholds__sq_k7_668cf05b sq(
+        .clk(sq$clk),
+        .rst(sq$rst),
+        .start(sq$start),
+        .start_acc(sq$start_acc),
+        .a(sq$a),
+        .busy(sq$busy),
+        .c_lt(sq$c_lt),
+        .c_le(sq$c_le)
+    );
+    fcc_regs__run__thresholds__sq_v_k7_668cf05b sq_v(
+        .d(sq_v$d),
+        .q(sq_v$q),
+        .clock(sq_v$clock)
+    );
+    fcc_regs__run__thresholds__sq_a_k7_668cf05b sq_a(
+        .d(sq_a$d),
+        .q(sq_a$q),
+        .clock(sq_a$clock)
+    );
+    fcc_regs__run__thresholds__sq_start_k7_668cf05b sq_start(
+        .clock(sq_start$clock),
+        .d(sq_start$d),
+        .q(sq_start$q)
+    );
+    fcc_regs__run__thresholds__sq_start_acc_k7_668cf05b sq_start_acc(
+        .clock(sq_start_acc$clock),
+        .d(sq_start_acc$d),
+        .q(sq_start_acc$q)
+    );
+    fcc_regs__run__thresholds__sq_busy_q_k7_668cf05b sq_busy_q(
+        .d(sq_busy_q$d),
+        .q(sq_busy_q$q),
+        .clock(sq_busy_q$clock)
+    );
+    fcc_regs__run__thresholds__sh_thh_k7_668cf05b sh_thh(
+        .d(sh_thh$d),
+        .q(sh_thh$q),
+        .clock(sh_thh$clock)
+    );
+    fcc_regs__run__thresholds__sh_thv_k7_668cf05b sh_thv(
+        .d(sh_thv$d),
+        .q(sh_thv$q),
+        .clock(sh_thv$clock)
+    );
+    fcc_regs__run__thresholds__sh_thh_c_k7_668cf05b sh_thh_c(
+        .d(sh_thh_c$d),
+        .q(sh_thh_c$q),
+        .clock(sh_thh_c$clock)
+    );
+    fcc_regs__run__thresholds__sh_thv_c_k7_668cf05b sh_thv_c(
+        .d(sh_thv_c$d),
+        .q(sh_thv_c$q),
+        .clock(sh_thv_c$clock)
+    );
+    fcc_regs__run__thresholds__act_thh_c_k7_668cf05b act_thh_c(
+        .d(act_thh_c$d),
+        .q(act_thh_c$q),
+        .clock(act_thh_c$clock)
+    );
+    fcc_regs__run__thresholds__act_thv_c_k7_668cf05b act_thv_c(
+        .d(act_thv_c$d),
+        .q(act_thv_c$q),
+        .clock(act_thv_c$clock)
+    );
+
+    // Update code
+    always @(*) begin
+        sq_v$clock = clk;
+        sq_a$clock = clk;
+        sq_busy_q$clock = clk;
+        sh_thh$clock = clk;
+        sh_thv$clock = clk;
+        sh_thh_c$clock = clk;
+        sh_thv_c$clock = clk;
+        act_thh_c$clock = clk;
+        act_thv_c$clock = clk;
+        sq_v$d = sq_v$q;
+        sq_a$d = sq_a$q;
+        sq_busy_q$d = sq_busy_q$q;
+        sh_thh$d = sh_thh$q;
+        sh_thv$d = sh_thv$q;
+        sh_thh_c$d = sh_thh_c$q;
+        sh_thv_c$d = sh_thv_c$q;
+        act_thh_c$d = act_thh_c$q;
+        act_thv_c$d = act_thv_c$q;
+        check$clk = clk;
+        check$w_take = w_take;
+        check$bus_wdata = bus_wdata;
+        check$lsb = wdata[0];
+        sq$clk = clk;
+        sq$rst = rst;
+        sq$a = sq_a$q;
+        sq$start = sq_start$q;
+        sq$start_acc = sq_start_acc$q;
+        sq_start$clock = clk;
+        sq_start_acc$clock = clk;
+        hold = sq_start$q | sq$busy | sq_busy_q$q;
+        sq_start_next = 1'b0;
+        defer = (we_h | we_v) & check$ok;
+        refused_h = we_h & ~check$ok;
+        refused_v = we_v & ~check$ok;
+        if (we_h & check$ok) begin
+            sq_start_next = 1'b1;
+            sq_v$d = 1'b0;
+        end
+        if (we_v & check$ok) begin
+            sq_start_next = 1'b1;
+            sq_v$d = 1'b1;
+        end
+        if (wr) begin
+            sq_a$d = wdata;
+        end
+        sq_busy_q$d = sq$busy;
+        done = sq_busy_q$q & ~sq$busy;
+        if (sq_busy_q$q & ~sq$busy) begin
+            if (sq_v$q) begin
+                sh_thv$d = sq_a$q;
+                sh_thv_c$d = sq$c_lt;
+            end
+            else begin
+                sh_thh$d = sq_a$q;
+                sh_thh_c$d = sq$c_le;
+            end
+        end
+        if (load_h) begin
+            act_thh_c$d = sh_thh_c$q;
+        end
+        if (load_v) begin
+            act_thv_c$d = sh_thv_c$q;
+        end
+        if (rst) begin
+            sq_start_next = 1'b0;
+            sq_busy_q$d = 1'b0;
+        end
+        sq_start$d = sq_start_next;
+        sq_start_acc$d = sq_start_next;
+        if (rst_h) begin
+            sh_thh$d = def_thh;
+            sh_thh_c$d = def_thh_c;
+        end
+        if (rst_v) begin
+            sh_thv$d = def_thv;
+            sh_thv_c$d = def_thv_c;
+        end
+        if (rst_act_h) begin
+            act_thh_c$d = def_thh_c;
+        end
+        if (rst_act_v) begin
+            act_thv_c$d = def_thv_c;
+        end
+        shadow_h = sh_thh$q;
+        shadow_v = sh_thv$q;
+        run_th_h_c = act_thh_c$q;
+        run_th_v_c = act_thv_c$q;
     end
 
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__sh_thh_k7_668cf05b
+endmodule // fcc_regs__run__thresholds_k7_668cf05b
 
 
-module fcc_regs__sh_thh_c_k7_668cf05b(d,q,clock);
+module fcc_regs__run__thresholds__act_thh_c_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [35:0] d;
@@ -18031,29 +19691,10 @@ module fcc_regs__sh_thh_c_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__sh_thh_c_k7_668cf05b
+endmodule // fcc_regs__run__thresholds__act_thh_c_k7_668cf05b
 
 
-module fcc_regs__sh_thv_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__sh_thv_k7_668cf05b
-
-
-module fcc_regs__sh_thv_c_k7_668cf05b(d,q,clock);
+module fcc_regs__run__thresholds__act_thv_c_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [35:0] d;
@@ -18069,10 +19710,72 @@ module fcc_regs__sh_thv_c_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__sh_thv_c_k7_668cf05b
+endmodule // fcc_regs__run__thresholds__act_thv_c_k7_668cf05b
 
 
-module fcc_regs__soft_q_k7_668cf05b(d,q,clock);
+module fcc_regs__run__thresholds__check_k7_668cf05b(clk,w_take,bus_wdata,lsb,ok);
+
+    // Module arguments
+    input wire  clk;
+    input wire  w_take;
+    input wire  [31:0] bus_wdata;
+    input wire  lsb;
+    output reg  ok;
+
+    // Constant declarations
+    localparam  min = 16'h1;
+    localparam  max = 16'h8000;
+    localparam  zero16 = 16'h0;
+    localparam  any_lsb = 1'b1;
+
+    // Stub signals
+    reg  hi_zero$d;
+    wire  hi_zero$q;
+    reg  hi_zero$clock;
+    reg  ge$d;
+    wire  ge$q;
+    reg  ge$clock;
+    reg  le$d;
+    wire  le$q;
+    reg  le$clock;
+
+    // Sub module instances
+    fcc_regs__run__thresholds__check__hi_zero_k7_668cf05b hi_zero(
+        .d(hi_zero$d),
+        .q(hi_zero$q),
+        .clock(hi_zero$clock)
+    );
+    fcc_regs__run__thresholds__check__ge_k7_668cf05b ge(
+        .d(ge$d),
+        .q(ge$q),
+        .clock(ge$clock)
+    );
+    fcc_regs__run__thresholds__check__le_k7_668cf05b le(
+        .d(le$d),
+        .q(le$q),
+        .clock(le$clock)
+    );
+
+    // Update code
+    always @(*) begin
+        hi_zero$clock = clk;
+        ge$clock = clk;
+        le$clock = clk;
+        hi_zero$d = hi_zero$q;
+        ge$d = ge$q;
+        le$d = le$q;
+        if (w_take) begin
+            hi_zero$d = bus_wdata[31:16] == zero16;
+            ge$d = bus_wdata[15:0] >= min;
+            le$d = bus_wdata[15:0] <= max;
+        end
+        ok = hi_zero$q & ge$q & le$q & (lsb | any_lsb);
+    end
+
+endmodule // fcc_regs__run__thresholds__check_k7_668cf05b
+
+
+module fcc_regs__run__thresholds__check__ge_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -18088,10 +19791,124 @@ module fcc_regs__soft_q_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__soft_q_k7_668cf05b
+endmodule // fcc_regs__run__thresholds__check__ge_k7_668cf05b
 
 
-module fcc_regs__sq_k7_668cf05b(clk,rst,start,start_acc,a,busy,c_lt,c_le);
+module fcc_regs__run__thresholds__check__hi_zero_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__run__thresholds__check__hi_zero_k7_668cf05b
+
+
+module fcc_regs__run__thresholds__check__le_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__run__thresholds__check__le_k7_668cf05b
+
+
+module fcc_regs__run__thresholds__sh_thh_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__run__thresholds__sh_thh_k7_668cf05b
+
+
+module fcc_regs__run__thresholds__sh_thh_c_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__run__thresholds__sh_thh_c_k7_668cf05b
+
+
+module fcc_regs__run__thresholds__sh_thv_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__run__thresholds__sh_thv_k7_668cf05b
+
+
+module fcc_regs__run__thresholds__sh_thv_c_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__run__thresholds__sh_thv_c_k7_668cf05b
+
+
+module fcc_regs__run__thresholds__sq_k7_668cf05b(clk,rst,start,start_acc,a,busy,c_lt,c_le);
 
     // Module arguments
     input wire  clk;
@@ -18141,10 +19958,10 @@ module fcc_regs__sq_k7_668cf05b(clk,rst,start,start_acc,a,busy,c_lt,c_le);
         c_lt = 36'd0 - {4'd0, acc};
         c_le = ~{4'd0, acc};
     end
-endmodule // fcc_regs__sq_k7_668cf05b
+endmodule // fcc_regs__run__thresholds__sq_k7_668cf05b
 
 
-module fcc_regs__sq_a_k7_668cf05b(d,q,clock);
+module fcc_regs__run__thresholds__sq_a_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -18160,10 +19977,10 @@ module fcc_regs__sq_a_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__sq_a_k7_668cf05b
+endmodule // fcc_regs__run__thresholds__sq_a_k7_668cf05b
 
 
-module fcc_regs__sq_busy_q_k7_668cf05b(d,q,clock);
+module fcc_regs__run__thresholds__sq_busy_q_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -18179,10 +19996,10 @@ module fcc_regs__sq_busy_q_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__sq_busy_q_k7_668cf05b
+endmodule // fcc_regs__run__thresholds__sq_busy_q_k7_668cf05b
 
 
-module fcc_regs__sq_start_k7_668cf05b(clock,d,q);
+module fcc_regs__run__thresholds__sq_start_k7_668cf05b(clock,d,q);
 
     // Module arguments
     input wire  clock;
@@ -18200,50 +20017,10 @@ module fcc_regs__sq_start_k7_668cf05b(clock,d,q);
     always @(*) begin
         q = held;
     end
-endmodule // fcc_regs__sq_start_k7_668cf05b
+endmodule // fcc_regs__run__thresholds__sq_start_k7_668cf05b
 
 
-module fcc_regs__sq_start_acc_k7_668cf05b(clock,d,q);
-
-    // Module arguments
-    input wire  clock;
-    input wire  d;
-    output reg  q;
-
-    // Update code (custom)
-    (* keep = "true" *) reg held;
-    initial begin
-        held = 1'h0;
-    end
-    (* keep = "true" *) always @(posedge clock) begin
-        held <= d;
-    end
-    always @(*) begin
-        q = held;
-    end
-endmodule // fcc_regs__sq_start_acc_k7_668cf05b
-
-
-module fcc_regs__sq_v_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__sq_v_k7_668cf05b
-
-
-module fcc_regs__w_clear_count_k7_668cf05b(clock,d,q);
+module fcc_regs__run__thresholds__sq_start_acc_k7_668cf05b(clock,d,q);
 
     // Module arguments
     input wire  clock;
@@ -18261,71 +20038,10 @@ module fcc_regs__w_clear_count_k7_668cf05b(clock,d,q);
     always @(*) begin
         q = held;
     end
-endmodule // fcc_regs__w_clear_count_k7_668cf05b
+endmodule // fcc_regs__run__thresholds__sq_start_acc_k7_668cf05b
 
 
-module fcc_regs__w_clear_frame_k7_668cf05b(clock,d,q);
-
-    // Module arguments
-    input wire  clock;
-    input wire  d;
-    output reg  q;
-
-    // Update code (custom)
-    (* keep = "true" *) reg held;
-    initial begin
-        held = 1'h0;
-    end
-    (* keep = "true" *) always @(posedge clock) begin
-        held <= d;
-    end
-    always @(*) begin
-        q = held;
-    end
-endmodule // fcc_regs__w_clear_frame_k7_668cf05b
-
-
-module fcc_regs__w_clear_stalls_k7_668cf05b(clock,d,q);
-
-    // Module arguments
-    input wire  clock;
-    input wire  d;
-    output reg  q;
-
-    // Update code (custom)
-    (* keep = "true" *) reg held;
-    initial begin
-        held = 1'h0;
-    end
-    (* keep = "true" *) always @(posedge clock) begin
-        held <= d;
-    end
-    always @(*) begin
-        q = held;
-    end
-endmodule // fcc_regs__w_clear_stalls_k7_668cf05b
-
-
-module fcc_regs__w_d_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__w_d_k7_668cf05b
-
-
-module fcc_regs__w_ge_cols_k7_668cf05b(d,q,clock);
+module fcc_regs__run__thresholds__sq_v_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -18341,178 +20057,7 @@ module fcc_regs__w_ge_cols_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__w_ge_cols_k7_668cf05b
-
-
-module fcc_regs__w_ge_k_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__w_ge_k_k7_668cf05b
-
-
-module fcc_regs__w_ge_rows_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__w_ge_rows_k7_668cf05b
-
-
-module fcc_regs__w_ge_th_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__w_ge_th_k7_668cf05b
-
-
-module fcc_regs__w_hi_zero_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__w_hi_zero_k7_668cf05b
-
-
-module fcc_regs__w_le_cols_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__w_le_cols_k7_668cf05b
-
-
-module fcc_regs__w_le_k_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__w_le_k_k7_668cf05b
-
-
-module fcc_regs__w_le_rows_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__w_le_rows_k7_668cf05b
-
-
-module fcc_regs__w_le_th_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__w_le_th_k7_668cf05b
-
-
-module fcc_regs__w_v_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__w_v_k7_668cf05b
+endmodule // fcc_regs__run__thresholds__sq_v_k7_668cf05b
 
 
 module fcc_top__room_k7_668cf05b(d,q,clock);

@@ -132,6 +132,7 @@ fn entry<S: CStruct>(ports: Option<Ports>) -> (&'static str, String) {
 /// The table of the shims' structs: every bench block's inputs and
 /// outputs, each with its port macro. Adding a bench adds its two rows.
 pub fn structs() -> Vec<(&'static str, String)> {
+    use crate::axil_adapter_bench::{AdIn, AdOut};
     use crate::label_update_bench::{LuIn, LuOut};
     use crate::merge_bench::{MergeIn, MergeOut};
     use crate::model::{FccIn, FccOut};
@@ -146,6 +147,8 @@ pub fn structs() -> Vec<(&'static str, String)> {
         entry::<FccOut>(SAMPLE),
         entry::<RegsIn>(DRIVE),
         entry::<RegsOut>(SAMPLE),
+        entry::<AdIn>(DRIVE),
+        entry::<AdOut>(SAMPLE),
         entry::<MergeIn>(DRIVE),
         entry::<MergeOut>(SAMPLE),
         entry::<LuIn>(DRIVE),

@@ -7,6 +7,7 @@
 //! model and reports the first differing pixel.
 
 pub mod axil;
+pub mod axil_adapter_bench;
 pub mod block;
 pub mod board;
 pub mod check;
@@ -25,6 +26,7 @@ pub mod window_bench;
 use std::path::PathBuf;
 
 pub use axil::{AxilM, AxilMaster, AxilPort, AxilS, WriteOrder};
+pub use axil_adapter_bench::{load_axil_adapter, AdIn, AdOut, AxilAdapterDut};
 pub use board::{
     build_expect, build_expect_for, build_run, virtual_board, virtual_board_with, AxiDmaModel,
     Fault, VBuffer, VirtualBoard,

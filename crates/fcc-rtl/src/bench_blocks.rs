@@ -12,6 +12,9 @@ use crate::{lint, RtlError};
 pub enum BenchBlock {
     /// The register file `FccRegs`.
     Regs,
+    /// The register file's AXI4-Lite adapter `FccAxilAdapter`; its
+    /// write-enables keep rust-hdl's names `we$i`.
+    AxilAdapter,
     /// The merge table `FccMergeTable` and its sub-blocks.
     MergeTable,
     /// The label updater `FccLabelUpdate`.
@@ -29,6 +32,7 @@ impl BenchBlock {
     /// Every block with a bench.
     pub const ALL: [BenchBlock; 6] = [
         BenchBlock::Regs,
+        BenchBlock::AxilAdapter,
         BenchBlock::MergeTable,
         BenchBlock::LabelUpdate,
         BenchBlock::Window,
@@ -41,6 +45,7 @@ impl BenchBlock {
     pub fn name(self) -> &'static str {
         match self {
             BenchBlock::Regs => crate::REGS_NAME,
+            BenchBlock::AxilAdapter => crate::AXIL_ADAPTER_NAME,
             BenchBlock::MergeTable => crate::MERGE_TABLE_NAME,
             BenchBlock::LabelUpdate => crate::LABEL_UPDATE_NAME,
             BenchBlock::Window => crate::WINDOW_NAME,
@@ -58,6 +63,7 @@ impl BenchBlock {
     pub fn generate(self, p: &FccParams) -> Result<String, RtlError> {
         match self {
             BenchBlock::Regs => crate::generate_regs(p),
+            BenchBlock::AxilAdapter => crate::generate_axil_adapter(p),
             BenchBlock::MergeTable => crate::generate_merge_table(p),
             BenchBlock::LabelUpdate => crate::generate_label_update(p),
             BenchBlock::Window => crate::generate_window(p),
@@ -71,6 +77,7 @@ impl BenchBlock {
     pub fn waivers(self, p: &FccParams) -> String {
         match self {
             BenchBlock::Regs => lint::regs_waivers(p),
+            BenchBlock::AxilAdapter => lint::axil_adapter_waivers(p),
             BenchBlock::MergeTable => lint::merge_table_waivers(p),
             BenchBlock::LabelUpdate => lint::label_update_waivers(p),
             BenchBlock::Window => lint::window_waivers(p),

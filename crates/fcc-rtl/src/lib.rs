@@ -10,7 +10,11 @@
 //! `fcc_join_queue`; inside `fcc_merge_table`: `fcc_table_init`,
 //! `fcc_union_engine`, `fcc_flatten`, `fcc_table_ports`; inside
 //! `fcc_label_update`: `fcc_fb_writer`, `fcc_rb_pipeline`, `fcc_beat_queue`,
-//! `fcc_gearbox`, `fcc_beat_assembly`, `fcc_pop_decision`, `fcc_slot_mux`).
+//! `fcc_gearbox`, `fcc_beat_assembly`, `fcc_pop_decision`, `fcc_slot_mux`;
+//! inside `fcc_regs`: `fcc_axil_adapter`, `fcc_reg_mux` and the field blocks
+//! `fcc_reg_control`, `fcc_reg_w1c`, `fcc_reg_frame_status` (with
+//! `fcc_reg_counter`, `fcc_reg_snapshot`), `fcc_reg_run_params` (with
+//! `fcc_reg_run`, `fcc_range_check`, `fcc_reg_thresholds`, `fcc_reg_w1c`)).
 //! Sizes that vary with the configuration (K, rows, columns, label bits,
 //! thresholds, labels per beat) are read from [`FccParams`] when the blocks
 //! are built, so one binary generates every configuration.
@@ -75,6 +79,7 @@
 pub mod bench_blocks;
 pub mod example;
 mod fcc_any_or;
+mod fcc_axil_adapter;
 mod fcc_beat_assembly;
 mod fcc_beat_queue;
 mod fcc_centre_buf;
@@ -104,8 +109,17 @@ mod fcc_point_thr;
 mod fcc_pop_decision;
 mod fcc_prefix_or;
 mod fcc_ram;
+mod fcc_range_check;
 mod fcc_rb_pipeline;
+mod fcc_reg_control;
+mod fcc_reg_counter;
+mod fcc_reg_frame_status;
 mod fcc_reg_mux;
+mod fcc_reg_run;
+mod fcc_reg_run_params;
+mod fcc_reg_snapshot;
+mod fcc_reg_thresholds;
+mod fcc_reg_w1c;
 mod fcc_regs;
 mod fcc_row_word;
 mod fcc_serializer;
@@ -307,6 +321,22 @@ pub fn regs_module(p: &FccParams) -> String {
 pub fn generate_regs(p: &FccParams) -> Result<String, RtlError> {
     p.validate_for_hardware()?;
     generate_block(p, FccRegs::new(p), REGS_NAME)
+}
+
+/// Name of the register file's bus adapter when generated alone (its
+/// bench), before the configuration suffix.
+pub const AXIL_ADAPTER_NAME: &str = "fcc_axil_adapter";
+
+/// The register file's AXI4-Lite adapter `FccAxilAdapter` alone, for its
+/// bench: one write-enable per writable register of the map of `p`
+/// ([`regmap::writable_offsets`], in that order).
+pub fn generate_axil_adapter(p: &FccParams) -> Result<String, RtlError> {
+    p.validate_for_hardware()?;
+    generate_block(
+        p,
+        fcc_axil_adapter::FccAxilAdapter::new(&regmap::writable_offsets(p)),
+        AXIL_ADAPTER_NAME,
+    )
 }
 
 /// Name of the merge table's module when generated alone (its bench),

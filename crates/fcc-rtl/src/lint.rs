@@ -92,6 +92,20 @@ pub fn regs_waivers(p: &FccParams) -> String {
     s
 }
 
+/// The waivers of `fcc_axil_adapter.v`, the register file's bus adapter
+/// generated alone for its bench.
+pub fn axil_adapter_waivers(p: &FccParams) -> String {
+    let mut s = file_header(p, "//");
+    s.push_str("`verilator_config\n");
+    s.push_str(
+        "// fcc_axil_adapter.v holds the adapter and its registers; the module\n\
+         // name carries the configuration suffix.\n\
+         lint_off -rule DECLFILENAME -file \"*fcc_axil_adapter.v\"\n",
+    );
+    s.push_str(&axil_waivers("fcc_axil_adapter.v"));
+    s
+}
+
 /// The waivers of `fcc_label_update.v`, the label updater generated alone
 /// for its bench.
 pub fn label_update_waivers(p: &FccParams) -> String {

@@ -415,6 +415,16 @@ pub fn registers(p: &FccParams) -> Vec<Register> {
     ]
 }
 
+/// The byte offsets of the registers of `p` that software may write, in
+/// map order: the bus adapter's write-enables (`FccAxilAdapter`).
+pub fn writable_offsets(p: &FccParams) -> Vec<u32> {
+    registers(p)
+        .iter()
+        .filter(|r| r.access != Access::ReadOnly)
+        .map(|r| r.offset)
+        .collect()
+}
+
 fn field_mask(f: &Field) -> u32 {
     if f.width >= 32 {
         u32::MAX
