@@ -15342,6 +15342,7 @@ module fcc_top__pix_thr_k7_668cf05b(clk,rst,pix,sh,sv,ch_t,cv_t,out,key,ch,cv);
 
     // Stub signals
     reg  thr$clk;
+    reg  thr$rst;
     reg  [15:0] thr$x;
     reg  [15:0] thr$y;
     reg  [15:0] thr$z;
@@ -15371,6 +15372,7 @@ module fcc_top__pix_thr_k7_668cf05b(clk,rst,pix,sh,sv,ch_t,cv_t,out,key,ch,cv);
     // Sub module instances
     fcc_top__pix_thr__thr_k7_668cf05b thr(
         .clk(thr$clk),
+        .rst(thr$rst),
         .x(thr$x),
         .y(thr$y),
         .z(thr$z),
@@ -15411,6 +15413,7 @@ module fcc_top__pix_thr_k7_668cf05b(clk,rst,pix,sh,sv,ch_t,cv_t,out,key,ch,cv);
     // Update code
     always @(*) begin
         thr$clk = clk;
+        thr$rst = rst;
         thr$x = pix[17:2];
         thr$y = pix[33:18];
         thr$z = pix[49:34];
@@ -15539,10 +15542,11 @@ module fcc_top__pix_thr__pd__4_k7_668cf05b(d,q,clock);
 endmodule // fcc_top__pix_thr__pd__4_k7_668cf05b
 
 
-module fcc_top__pix_thr__thr_k7_668cf05b(clk,x,y,z,sh,sv,ch_t,cv_t,key,ch,cv);
+module fcc_top__pix_thr__thr_k7_668cf05b(clk,rst,x,y,z,sh,sv,ch_t,cv_t,key,ch,cv);
 
     // Module arguments
     input wire  clk;
+    input wire  rst;
     input wire  [15:0] x;
     input wire  [15:0] y;
     input wire  [15:0] z;
@@ -15730,7 +15734,7 @@ module fcc_top__pix_thr__thr_k7_668cf05b(clk,x,y,z,sh,sv,ch_t,cv_t,key,ch,cv);
         mv <= {16'd0, av} * {24'd0, b};
         ph <= $signed({8'd0, mh});
         pv <= $signed({8'd0, mv}) - 48'sd256;
-        key <= k3;
+        key <= rst ? 16'd0 : k3;
         ch <= ($signed(ch_t) < nh) ? ch_t : nh;
         cv <= ($signed(cv_t) < nv) ? cv_t : nv;
     end
@@ -55388,6 +55392,8 @@ module fcc_top__thr_window_k7_668cf05b(clk,rst,valid,col,rdcol,key,cv,centre_key
     localparam  cv_high = 36'hf00000000;
     localparam  cv_low = 36'hffffffff;
     localparam  zero12 = 12'h0;
+    localparam  zero16 = 16'h0;
+    localparam  zero36 = 36'h0;
 
     // Stub signals
     reg  [15:0] wait_key$0$d;
@@ -56790,6 +56796,8 @@ module fcc_top__thr_window_k7_668cf05b(clk,rst,valid,col,rdcol,key,cv,centre_key
             cv_valid$0$d = 1'b0;
             cv_valid$1$d = 1'b0;
             t1_valid$d = 1'b0;
+            t3_key$d = zero16;
+            t3_cv$d = zero36;
         end
         centre_key = t3_key$q;
         centre_cv = cv_high | t3_cv$q;

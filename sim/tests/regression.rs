@@ -351,7 +351,12 @@ fn adaptive(fsize: usize, rows: usize, cols: usize, slopes: (f64, f64)) {
             };
             let scene = fcc_scene::generate(&cfg).unwrap();
             let f = Frame::from_xyz_f32(rows, cols, &scene.xyz);
-            check(&mut d, &f, &Drive::default(), &format!("adaptive scene {seed}"));
+            check(
+                &mut d,
+                &f,
+                &Drive::default(),
+                &format!("adaptive scene {seed}"),
+            );
         }
     }
     for seed in 1..=8u64 {
@@ -364,7 +369,12 @@ fn adaptive(fsize: usize, rows: usize, cols: usize, slopes: (f64, f64)) {
         };
         check(&mut d, &f, &drive, &format!("adaptive random {seed}"));
     }
-    check(&mut d, &frames::thresholds(&p), &Drive::default(), "adaptive thresholds");
+    check(
+        &mut d,
+        &frames::thresholds(&p),
+        &Drive::default(),
+        "adaptive thresholds",
+    );
 }
 
 #[test]

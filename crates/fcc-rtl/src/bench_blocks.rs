@@ -30,7 +30,7 @@ pub enum BenchBlock {
 
 impl BenchBlock {
     /// Every block with a bench.
-    pub const ALL: [BenchBlock; 6] = [
+    pub const ALL: [BenchBlock; 7] = [
         BenchBlock::Regs,
         BenchBlock::AxilAdapter,
         BenchBlock::MergeTable,
