@@ -15368,6 +15368,9 @@ module fcc_top__pix_thr_k7_668cf05b(clk,rst,pix,sh,sv,ch_t,cv_t,out,key,ch,cv);
     reg  [73:0] pd$4$d;
     wire  [73:0] pd$4$q;
     reg  pd$4$clock;
+    reg  [73:0] pd$5$d;
+    wire  [73:0] pd$5$q;
+    reg  pd$5$clock;
 
     // Sub module instances
     fcc_top__pix_thr__thr_k7_668cf05b thr(
@@ -15409,6 +15412,11 @@ module fcc_top__pix_thr_k7_668cf05b(clk,rst,pix,sh,sv,ch_t,cv_t,out,key,ch,cv);
         .q(pd$4$q),
         .clock(pd$4$clock)
     );
+    fcc_top__pix_thr__pd__5_k7_668cf05b pd$5(
+        .d(pd$5$d),
+        .q(pd$5$q),
+        .clock(pd$5$clock)
+    );
 
     // Update code
     always @(*) begin
@@ -15429,19 +15437,22 @@ module fcc_top__pix_thr_k7_668cf05b(clk,rst,pix,sh,sv,ch_t,cv_t,out,key,ch,cv);
         pd$2$clock = clk;
         pd$3$clock = clk;
         pd$4$clock = clk;
+        pd$5$clock = clk;
         pd$0$d = pix;
         pd$1$d = pd$0$q;
         pd$2$d = pd$1$q;
         pd$3$d = pd$2$q;
         pd$4$d = pd$3$q;
+        pd$5$d = pd$4$q;
         if (rst) begin
             pd$0$d[0:0] = 1'b0;
             pd$1$d[0:0] = 1'b0;
             pd$2$d[0:0] = 1'b0;
             pd$3$d[0:0] = 1'b0;
-            pd$4$d = pix_zero;
+            pd$4$d[0:0] = 1'b0;
+            pd$5$d = pix_zero;
         end
-        out = pd$4$q;
+        out = pd$5$q;
     end
 
 endmodule // fcc_top__pix_thr_k7_668cf05b
@@ -15542,6 +15553,25 @@ module fcc_top__pix_thr__pd__4_k7_668cf05b(d,q,clock);
 endmodule // fcc_top__pix_thr__pd__4_k7_668cf05b
 
 
+module fcc_top__pix_thr__pd__5_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [73:0] d;
+    output reg  [73:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 74'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__pix_thr__pd__5_k7_668cf05b
+
+
 module fcc_top__pix_thr__thr_k7_668cf05b(clk,rst,x,y,z,sh,sv,ch_t,cv_t,key,ch,cv);
 
     // Module arguments
@@ -15560,7 +15590,7 @@ module fcc_top__pix_thr__thr_k7_668cf05b(clk,rst,x,y,z,sh,sv,ch_t,cv_t,key,ch,cv
 
     // Update code (custom)
     // P1: coarse magnitudes; P2: squares (lookup tables); P3: the key;
-    // P4 .. P6: two DSP48E1; P7: the addends.
+    // P4 .. P6: two DSP48E1; P7: their products in fabric; P8: the addends.
     function [13:0] square;
         input [6:0] m;
         case (m)
@@ -15706,16 +15736,16 @@ module fcc_top__pix_thr__thr_k7_668cf05b(clk,rst,x,y,z,sh,sv,ch_t,cv_t,key,ch,cv
     /* verilator lint_on UNUSEDSIGNAL */
     reg [6:0] mx, my, mz;
     reg [13:0] sx, sy, sz;
-    reg [15:0] rc2, k1, k2, k3;
+    reg [15:0] rc2, k1, k2, k3, k4;
     reg [23:0] ah, av;
     reg [15:0] b;
     reg [39:0] mh, mv;
     // The low 8 bits of each product are shifted out.
     /* verilator lint_off UNUSEDSIGNAL */
-    reg signed [47:0] ph, pv;
+    reg signed [47:0] ph, pv, phq, pvq;
     /* verilator lint_on UNUSEDSIGNAL */
-    wire signed [35:0] nh = ~ph[43:8];
-    wire signed [35:0] nv = ~pv[43:8];
+    wire signed [35:0] nh = ~phq[43:8];
+    wire signed [35:0] nv = ~pvq[43:8];
     always @(posedge clk) begin
         mx <= rx[15] ? 7'd127 : rx[14:8];
         my <= ry[15] ? 7'd127 : ry[14:8];
@@ -15727,6 +15757,7 @@ module fcc_top__pix_thr__thr_k7_668cf05b(clk,rst,x,y,z,sh,sv,ch_t,cv_t,key,ch,cv
         k1 <= rc2;
         k2 <= k1;
         k3 <= k2;
+        k4 <= k3;
         ah <= sh;
         av <= sv;
         b <= rc2;
@@ -15734,7 +15765,9 @@ module fcc_top__pix_thr__thr_k7_668cf05b(clk,rst,x,y,z,sh,sv,ch_t,cv_t,key,ch,cv
         mv <= {16'd0, av} * {24'd0, b};
         ph <= $signed({8'd0, mh});
         pv <= $signed({8'd0, mv}) - 48'sd256;
-        key <= rst ? 16'd0 : k3;
+        phq <= ph;
+        pvq <= pv;
+        key <= rst ? 16'd0 : k4;
         ch <= ($signed(ch_t) < nh) ? ch_t : nh;
         cv <= ($signed(cv_t) < nv) ? cv_t : nv;
     end

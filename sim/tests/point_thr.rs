@@ -15,7 +15,7 @@ use fcc_sim::{load_point_thr, PointThrDut, PtIn, PtOut};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
-const LATENCY: usize = 7;
+const LATENCY: usize = 8;
 const MASK36: u64 = (1 << 36) - 1;
 
 /// One input: a point (signed Q7.8), squared slopes, fixed thresholds (Q7.8).

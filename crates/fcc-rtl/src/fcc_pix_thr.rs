@@ -11,13 +11,13 @@ use crate::fcc_point_thr::{FccPointThr, PT_LATENCY};
 use crate::types::Pix;
 
 /// Cycles a pixel slot waits here.
-pub const PIX_DELAY: usize = 5;
+pub const PIX_DELAY: usize = 6;
 
 /// Cycles from a slot leaving here (`out`) to its thresholds (`key`, `ch`, `cv`).
 pub const THR_LAG: usize = PT_LATENCY - PIX_DELAY;
 
-// The delay line below is written out for five stages.
-const _: () = assert!(PIX_DELAY == 5);
+// The delay line below is written out for six stages.
+const _: () = assert!(PIX_DELAY == 6);
 
 #[derive(LogicBlock)]
 pub struct FccPixThr {
@@ -84,11 +84,11 @@ impl Logic for FccPixThr {
         self.key.next = self.thr.key.val();
         self.ch.next = self.thr.ch.val();
         self.cv.next = self.thr.cv.val();
-        for i in 0..5 {
+        for i in 0..6 {
             self.pd[i].clock.next = self.clk.val();
         }
         self.pd[0].d.next = self.pix.val();
-        for i in 1..5 {
+        for i in 1..6 {
             self.pd[i].d.next = self.pd[i - 1].q.val();
         }
         if self.rst.val() {
@@ -96,10 +96,11 @@ impl Logic for FccPixThr {
             self.pd[1].d.next.valid = false;
             self.pd[2].d.next.valid = false;
             self.pd[3].d.next.valid = false;
+            self.pd[4].d.next.valid = false;
             // The whole last stage is reset, so that it stays a flip-flop
             // (a shift-register LUT's output is slow).
-            self.pd[4].d.next = self.pix_zero.val();
+            self.pd[5].d.next = self.pix_zero.val();
         }
-        self.out.next = self.pd[4].q.val();
+        self.out.next = self.pd[5].q.val();
     }
 }

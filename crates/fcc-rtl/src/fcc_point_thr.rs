@@ -1,5 +1,5 @@
 //! `FccPointThr`: a point's own thresholds for the range-adaptive join tests
-//! (spec §2), computed once as the point enters. Seven registered stages, no
+//! (spec §2), computed once as the point enters. Eight registered stages, no
 //! enable (the front end never stalls).
 //!
 //! * P1: each coordinate's coarse magnitude in whole metres,
@@ -11,7 +11,9 @@
 //! * P4 .. P6: two DSP48E1 (A/B, M and P registers): `S_H * rc2` and
 //!   `S_V * rc2 - 256` (`S < 2^24` on the A port, `rc2 < 2^16` on the B
 //!   port; the -256 is the P adder's constant).
-//! * P7: the `FccSqDist` addends `ch = min(ch_t, ~T_H) = -(max(tH^2, T_H) + 1)`
+//! * P7: the products again, in fabric flip-flops (a DSP48E1's P output
+//!   is too slow to feed a 36-bit compare in the same cycle).
+//! * P8: the `FccSqDist` addends `ch = min(ch_t, ~T_H) = -(max(tH^2, T_H) + 1)`
 //!   and `cv = min(cv_t, ~((S_V rc2 - 256) >>> 8)) = -max(tV^2, T_V)` with
 //!   `T = (S * rc2) >> 8`, as 36-bit two's complement: `ch_t = -(tH^2 + 1)`
 //!   and `cv_t = -tV^2` are the fixed thresholds' addends (`FccThSquare`),
@@ -27,7 +29,7 @@
 use rust_hdl::prelude::*;
 
 /// Cycles from the coordinates to `key`, `ch` and `cv`.
-pub const PT_LATENCY: usize = 7;
+pub const PT_LATENCY: usize = 8;
 
 const MASK36: u64 = (1 << 36) - 1;
 
@@ -56,10 +58,11 @@ pub struct FccPointThr {
     // Model state, one entry per stage.
     _m: [u64; 3],
     _sq: [u64; 3],
-    _rc2: [u64; 4],
+    _rc2: [u64; 5],
     _ab: [u64; 3],
     _mul: [u64; 2],
     _p: [i64; 2],
+    _pq: [i64; 2],
     _out: [u64; 3],
 }
 
@@ -80,10 +83,11 @@ impl FccPointThr {
             cv: Default::default(),
             _m: [0; 3],
             _sq: [0; 3],
-            _rc2: [0; 4],
+            _rc2: [0; 5],
             _ab: [0; 3],
             _mul: [0; 2],
             _p: [0; 2],
+            _pq: [0; 2],
             _out: [0; 3],
         }
     }
@@ -124,15 +128,16 @@ impl Logic for FccPointThr {
         if self.clk.pos_edge() {
             let ch_t = signed36(self.ch_t.val().index() as u64);
             let cv_t = signed36(self.cv_t.val().index() as u64);
-            // P7: the addends (T_H = mul_h >> 8; p_v = S_V rc2 - 256).
-            let nh = !(self._p[0] >> 8);
-            let nv = !(self._p[1] >> 8);
+            // P8: the addends (T_H = mul_h >> 8; p_v = S_V rc2 - 256).
+            let nh = !(self._pq[0] >> 8);
+            let nv = !(self._pq[1] >> 8);
             self._out = [
-                if self.rst.val() { 0 } else { self._rc2[3] },
+                if self.rst.val() { 0 } else { self._rc2[4] },
                 (ch_t.min(nh) as u64) & MASK36,
                 (cv_t.min(nv) as u64) & MASK36,
             ];
-            // P6: the P registers.
+            // P7: the products in fabric registers; P6: the P registers.
+            self._pq = self._p;
             self._p = [self._mul[0] as i64, self._mul[1] as i64 - 256];
             // P5: the M registers.
             self._mul = [self._ab[0] * self._ab[2], self._ab[1] * self._ab[2]];
@@ -147,6 +152,7 @@ impl Logic for FccPointThr {
                 self._rc2[0],
                 self._rc2[1],
                 self._rc2[2],
+                self._rc2[3],
             ];
             // P2, P1.
             self._sq = self._m.map(|m| m * m);
@@ -174,7 +180,7 @@ impl Logic for FccPointThr {
         }
         Verilog::Custom(format!(
             "// P1: coarse magnitudes; P2: squares (lookup tables); P3: the key;\n\
-             // P4 .. P6: two DSP48E1; P7: the addends.\n\
+             // P4 .. P6: two DSP48E1; P7: their products in fabric; P8: the addends.\n\
              function [13:0] square;\n\
              \x20   input [6:0] m;\n\
              \x20   case (m)\n\
@@ -193,16 +199,16 @@ impl Logic for FccPointThr {
              /* verilator lint_on UNUSEDSIGNAL */\n\
              reg [6:0] mx, my, mz;\n\
              reg [13:0] sx, sy, sz;\n\
-             reg [15:0] rc2, k1, k2, k3;\n\
+             reg [15:0] rc2, k1, k2, k3, k4;\n\
              reg [23:0] ah, av;\n\
              reg [15:0] b;\n\
              reg [39:0] mh, mv;\n\
              // The low 8 bits of each product are shifted out.\n\
              /* verilator lint_off UNUSEDSIGNAL */\n\
-             reg signed [47:0] ph, pv;\n\
+             reg signed [47:0] ph, pv, phq, pvq;\n\
              /* verilator lint_on UNUSEDSIGNAL */\n\
-             wire signed [35:0] nh = ~ph[43:8];\n\
-             wire signed [35:0] nv = ~pv[43:8];\n\
+             wire signed [35:0] nh = ~phq[43:8];\n\
+             wire signed [35:0] nv = ~pvq[43:8];\n\
              always @(posedge clk) begin\n\
              \x20   mx <= rx[15] ? 7'd127 : rx[14:8];\n\
              \x20   my <= ry[15] ? 7'd127 : ry[14:8];\n\
@@ -214,6 +220,7 @@ impl Logic for FccPointThr {
              \x20   k1 <= rc2;\n\
              \x20   k2 <= k1;\n\
              \x20   k3 <= k2;\n\
+             \x20   k4 <= k3;\n\
              \x20   ah <= sh;\n\
              \x20   av <= sv;\n\
              \x20   b <= rc2;\n\
@@ -221,7 +228,9 @@ impl Logic for FccPointThr {
              \x20   mv <= {{16'd0, av}} * {{24'd0, b}};\n\
              \x20   ph <= $signed({{8'd0, mh}});\n\
              \x20   pv <= $signed({{8'd0, mv}}) - 48'sd256;\n\
-             \x20   key <= rst ? 16'd0 : k3;\n\
+             \x20   phq <= ph;\n\
+             \x20   pvq <= pv;\n\
+             \x20   key <= rst ? 16'd0 : k4;\n\
              \x20   ch <= ($signed(ch_t) < nh) ? ch_t : nh;\n\
              \x20   cv <= ($signed(cv_t) < nv) ? cv_t : nv;\n\
              end\n"
