@@ -38,7 +38,7 @@ pub fn check_run(build: &FccParams, run: &FccParams) -> Result<(), SimError> {
     if (run.th_h_slope_sq(), run.th_v_slope_sq()) != (build.th_h_slope_sq(), build.th_v_slope_sq())
     {
         return Err(SimError::BadRun(format!(
-            "th_h_slope {} and th_v_slope {} are the build's ({} and {})",
+            "th_h_slope = {} and th_v_slope = {} must be the build's ({} and {}): the slopes are not run registers yet",
             run.th_h_slope, run.th_v_slope, build.th_h_slope, build.th_v_slope
         )));
     }

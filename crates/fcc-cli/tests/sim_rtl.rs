@@ -122,7 +122,7 @@ fn sim_rtl_refuses_what_the_build_cannot_run() {
     let cases: [(&[&str], &str); 7] = [
         (
             &["--th-v-slope", "0.05"],
-            "th_v_slope = 0.05 is out of range",
+            "th_v_slope = 0.05 must be the build's (0 and 0)",
         ),
         (&["--bridge", "4"], "bridge = 4 is out of range"),
         (
