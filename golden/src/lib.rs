@@ -39,9 +39,7 @@ pub use pass2::{pass2, JoinSink};
 use pass2::{pass2_with, Pass2Buffers};
 pub use records::{frame_records, oriented_box, OrientedBox, Record};
 pub use stream::{Stream, StreamStats};
-pub use threshold::{
-    coarse_metres, coarse_range2, point_threshold, range2, Thresholds, COARSE_MAX,
-};
+pub use threshold::{coarse_metres, coarse_range2, point_threshold, Thresholds, COARSE_MAX};
 
 use fcc_params::{FccParams, ParamError};
 use serde::{Deserialize, Serialize};

@@ -6,12 +6,6 @@
 use crate::frame::{dist2, Point};
 use fcc_params::FccParams;
 
-/// The squared range `x^2 + y^2 + z^2` of a quantised point.
-#[inline]
-pub fn range2(p: Point) -> u64 {
-    dist2(p, [0; 3]) as u64
-}
-
 /// A coordinate's coarse magnitude in whole metres (spec §2):
 /// `min((|c| + 128) >> 8, 127)`, rounded half up, at most 127.
 #[inline]
