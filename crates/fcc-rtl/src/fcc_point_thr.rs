@@ -9,10 +9,11 @@
 //! * P2: the three squares `m^2` (7-bit inputs: lookup tables, no DSP).
 //! * P3: `rc2 = mx^2 + my^2 + mz^2` (at most 48,387), the pair key.
 //! * P4 .. P6: two DSP48E1 (A/B, M and P registers): `S_H * rc2` and
-//!   `S_V * rc2 - 256` (`S < 2^24` on the A port, `rc2 < 2^16` on the B
-//!   port; the -256 is the P adder's constant).
+//!   `S_V * rc2` (`S < 2^24` on the A port, `rc2 < 2^16` on the B port).
 //! * P7: the products again, in fabric flip-flops (a DSP48E1's P output
-//!   is too slow to feed a 36-bit compare in the same cycle).
+//!   is too slow to feed a 36-bit compare in the same cycle), the V one
+//!   less 256 (the subtraction between flip-flops, not after the DSP's
+//!   M register, where its carry chain made the core's longest path).
 //! * P8: the `FccSqDist` addends `ch = min(ch_t, ~T_H) = -(max(tH^2, T_H) + 1)`
 //!   and `cv = min(cv_t, ~((S_V rc2 - 256) >>> 8)) = -max(tV^2, T_V)` with
 //!   `T = (S * rc2) >> 8`, as 36-bit two's complement: `ch_t = -(tH^2 + 1)`
@@ -136,9 +137,10 @@ impl Logic for FccPointThr {
                 (ch_t.min(nh) as u64) & MASK36,
                 (cv_t.min(nv) as u64) & MASK36,
             ];
-            // P7: the products in fabric registers; P6: the P registers.
-            self._pq = self._p;
-            self._p = [self._mul[0] as i64, self._mul[1] as i64 - 256];
+            // P7: the products in fabric registers, the V one less 256;
+            // P6: the P registers.
+            self._pq = [self._p[0], self._p[1] - 256];
+            self._p = [self._mul[0] as i64, self._mul[1] as i64];
             // P5: the M registers.
             self._mul = [self._ab[0] * self._ab[2], self._ab[1] * self._ab[2]];
             // P4: the A/B registers; the key waits alongside.
@@ -180,7 +182,7 @@ impl Logic for FccPointThr {
         }
         Verilog::Custom(format!(
             "// P1: coarse magnitudes; P2: squares (lookup tables); P3: the key;\n\
-             // P4 .. P6: two DSP48E1; P7: their products in fabric; P8: the addends.\n\
+             // P4 .. P6: two DSP48E1; P7: their products in fabric (V less 256); P8: the addends.\n\
              function [13:0] square;\n\
              \x20   input [6:0] m;\n\
              \x20   case (m)\n\
@@ -227,9 +229,9 @@ impl Logic for FccPointThr {
              \x20   mh <= {{16'd0, ah}} * {{24'd0, b}};\n\
              \x20   mv <= {{16'd0, av}} * {{24'd0, b}};\n\
              \x20   ph <= $signed({{8'd0, mh}});\n\
-             \x20   pv <= $signed({{8'd0, mv}}) - 48'sd256;\n\
+             \x20   pv <= $signed({{8'd0, mv}});\n\
              \x20   phq <= ph;\n\
-             \x20   pvq <= pv;\n\
+             \x20   pvq <= pv - 48'sd256;\n\
              \x20   key <= rst ? 16'd0 : k4;\n\
              \x20   ch <= ($signed(ch_t) < nh) ? ch_t : nh;\n\
              \x20   cv <= ($signed(cv_t) < nv) ? cv_t : nv;\n\
