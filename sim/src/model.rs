@@ -304,6 +304,43 @@ fn io(path: &Path) -> impl FnOnce(std::io::Error) -> SimError + '_ {
     }
 }
 
+/// Verilator's run-time library (`verilated.cpp`, `verilated_threads.cpp`)
+/// compiled once under the cache `root`, for the compiler `cxx` and the
+/// sources in `inc` (their text is in the directory's name), and shared by
+/// every model linked after: it is the same for every model without
+/// coverage. Written to a private name and renamed, so that builds running
+/// at once never link a half-written object.
+fn runtime_objects(root: &Path, cxx: &str, inc: &Path) -> Result<Vec<PathBuf>, SimError> {
+    let sources = ["verilated.cpp", "verilated_threads.cpp"];
+    let mut key = format!("{cxx}\0{}\0", inc.display());
+    for src in sources {
+        let path = inc.join(src);
+        key.push_str(&std::fs::read_to_string(&path).map_err(io(&path))?);
+    }
+    let dir = root.join(format!("verilated-{:016x}", fnv(&key)));
+    std::fs::create_dir_all(&dir).map_err(io(&dir))?;
+    let mut objects = vec![];
+    for src in sources {
+        let obj = dir.join(src.replace(".cpp", ".o"));
+        if !obj.exists() {
+            let tmp = dir.join(format!("{src}.tmp-{}.o", std::process::id()));
+            run(
+                Command::new(cxx)
+                    .args(["-c", "-fPIC", "-O1", "-std=c++17"])
+                    .arg(format!("-I{}", inc.display()))
+                    .arg(format!("-I{}", inc.join("vltstd").display()))
+                    .arg(inc.join(src))
+                    .arg("-o")
+                    .arg(&tmp),
+                "c++ (Verilator's run-time library)",
+            )?;
+            std::fs::rename(&tmp, &obj).map_err(io(&obj))?;
+        }
+        objects.push(obj);
+    }
+    Ok(objects)
+}
+
 /// What to verilate and link: the C shim, the top module, the files handed
 /// to Verilator and the library's name.
 pub(crate) struct Shim<'a> {
@@ -392,8 +429,14 @@ pub(crate) fn build(files: &[(&str, &str)], dir: &Path, shim: &Shim) -> Result<(
     let cxx = std::env::var("CXX").unwrap_or_else(|_| "c++".to_string());
     let mut link = Command::new(&cxx);
     if shim.coverage {
+        // Verilator's run-time library, compiled here with coverage.
         link.arg("-DVM_COVERAGE=1")
-            .arg(inc.join("verilated_cov.cpp"));
+            .arg(inc.join("verilated_cov.cpp"))
+            .arg(inc.join("verilated.cpp"))
+            .arg(inc.join("verilated_threads.cpp"));
+    } else {
+        // Verilator's run-time library, compiled once for every model.
+        link.args(runtime_objects(root, &cxx, &inc)?);
     }
     run(
         link.current_dir(&tmp)
@@ -401,8 +444,6 @@ pub(crate) fn build(files: &[(&str, &str)], dir: &Path, shim: &Shim) -> Result<(
             .arg(format!("-I{}", inc.display()))
             .arg(format!("-I{}", inc.join("vltstd").display()))
             .arg(shim.name)
-            .arg(inc.join("verilated.cpp"))
-            .arg(inc.join("verilated_threads.cpp"))
             .arg(format!("obj/{}__ALL.a", shim.prefix))
             .args(["-pthread", "-latomic", "-o", shim.lib]),
         "c++ (link the Verilator model)",
