@@ -102,6 +102,10 @@
 #define FCC_ERROR_ROWS_MASK 0x00000008u
 #define FCC_ERROR_COLS_SHIFT 4u
 #define FCC_ERROR_COLS_MASK 0x00000010u
+#define FCC_ERROR_SLOPE_H_SHIFT 5u
+#define FCC_ERROR_SLOPE_H_MASK 0x00000020u
+#define FCC_ERROR_SLOPE_V_SHIFT 6u
+#define FCC_ERROR_SLOPE_V_MASK 0x00000040u
 
 // FRAME_COUNT (RO): Frames completed since reset or CLEAR (wraps)
 #define FCC_REG_FRAME_COUNT 0x050u
@@ -184,5 +188,21 @@
 #define FCC_RUN_COLS_COLS_MASK 0x00001FFFu
 #define FCC_RUN_COLS_MIN 32u
 #define FCC_RUN_COLS_MAX 2048u
+
+// RUN_SLOPE_H (RW): Run: intra-channel threshold slope aH = floor(a * 65536 + 0.5), 0 ..= 0xFFFF (0: fixed)
+#define FCC_REG_RUN_SLOPE_H 0x094u
+#define FCC_REG_RUN_SLOPE_H_RESET 0x00000000u
+#define FCC_RUN_SLOPE_H_SLOPE_SHIFT 0u
+#define FCC_RUN_SLOPE_H_SLOPE_MASK 0x0000FFFFu
+#define FCC_RUN_SLOPE_H_MIN 0u
+#define FCC_RUN_SLOPE_H_MAX 65535u
+
+// RUN_SLOPE_V (RW): Run: inter-channel threshold slope aV = floor(a * 65536 + 0.5), 0 ..= 0xFFFF (0: fixed)
+#define FCC_REG_RUN_SLOPE_V 0x098u
+#define FCC_REG_RUN_SLOPE_V_RESET 0x00000000u
+#define FCC_RUN_SLOPE_V_SLOPE_SHIFT 0u
+#define FCC_RUN_SLOPE_V_SLOPE_MASK 0x0000FFFFu
+#define FCC_RUN_SLOPE_V_MIN 0u
+#define FCC_RUN_SLOPE_V_MAX 65535u
 
 #endif  // FCC_REGS_H

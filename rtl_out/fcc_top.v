@@ -56,8 +56,6 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
 
     // Constant declarations
     localparam  sign16 = 16'h8000;
-    localparam  slope_h = 24'h0;
-    localparam  slope_v = 24'h0;
     localparam  zero8 = 8'h0;
     localparam  one8 = 8'h1;
     localparam  zero12 = 12'h0;
@@ -550,6 +548,8 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
     wire  [35:0] regs$run_th_v_c;
     wire  [7:0] regs$run_rows;
     wire  [12:0] regs$run_cols;
+    wire  [23:0] regs$run_sl_h;
+    wire  [23:0] regs$run_sl_v;
     reg  intra_rst$clock;
     reg  intra_rst$d;
     wire  intra_rst$q;
@@ -1133,7 +1133,9 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
         .run_th_h_c(regs$run_th_h_c),
         .run_th_v_c(regs$run_th_v_c),
         .run_rows(regs$run_rows),
-        .run_cols(regs$run_cols)
+        .run_cols(regs$run_cols),
+        .run_sl_h(regs$run_sl_h),
+        .run_sl_v(regs$run_sl_v)
     );
     fcc_top__intra_rst_k7_668cf05b intra_rst(
         .clock(intra_rst$clock),
@@ -1486,8 +1488,8 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
         merge_table_rst$d = regs$core_rst_next;
         pix_thr$rst = intra_rst$q;
         pix_thr$pix = slot_q$q;
-        pix_thr$sh = slope_h;
-        pix_thr$sv = slope_v;
+        pix_thr$sh = regs$run_sl_h;
+        pix_thr$sv = regs$run_sl_v;
         pix_thr$ch_t = regs$run_th_h_c;
         pix_thr$cv_t = regs$run_th_v_c;
         intra$rst = intra_rst$q;
@@ -15590,7 +15592,7 @@ module fcc_top__pix_thr__thr_k7_668cf05b(clk,rst,x,y,z,sh,sv,ch_t,cv_t,key,ch,cv
 
     // Update code (custom)
     // P1: coarse magnitudes; P2: squares (lookup tables); P3: the key;
-    // P4 .. P6: two DSP48E1; P7: their products in fabric; P8: the addends.
+    // P4 .. P6: two DSP48E1; P7: their products in fabric (V less 256); P8: the addends.
     function [13:0] square;
         input [6:0] m;
         case (m)
@@ -15764,9 +15766,9 @@ module fcc_top__pix_thr__thr_k7_668cf05b(clk,rst,x,y,z,sh,sv,ch_t,cv_t,key,ch,cv
         mh <= {16'd0, ah} * {24'd0, b};
         mv <= {16'd0, av} * {24'd0, b};
         ph <= $signed({8'd0, mh});
-        pv <= $signed({8'd0, mv}) - 48'sd256;
+        pv <= $signed({8'd0, mv});
         phq <= ph;
-        pvq <= pv;
+        pvq <= pv - 48'sd256;
         key <= rst ? 16'd0 : k4;
         ch <= ($signed(ch_t) < nh) ? ch_t : nh;
         cv <= ($signed(cv_t) < nv) ? cv_t : nv;
@@ -15774,7 +15776,7 @@ module fcc_top__pix_thr__thr_k7_668cf05b(clk,rst,x,y,z,sh,sv,ch_t,cv_t,key,ch,cv
 endmodule // fcc_top__pix_thr__thr_k7_668cf05b
 
 
-module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata,s_axil_wstrb,s_axil_wvalid,s_axil_wready,s_axil_bresp,s_axil_bvalid,s_axil_bready,s_axil_araddr,s_axil_arvalid,s_axil_arready,s_axil_rdata,s_axil_rresp,s_axil_rvalid,s_axil_rready,frame_sent,out_next,idle_next,clusters,provisional,overflow,unlabelled,frame_error,joins,gear_stalls,core_rst,core_rst_next,irq,frame_done,st_clusters,st_provisional,st_overflow,st_unlabelled,st_frame_error,st_joins,st_gear_stalls,run_k,run_th_h_c,run_th_v_c,run_rows,run_cols);
+module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata,s_axil_wstrb,s_axil_wvalid,s_axil_wready,s_axil_bresp,s_axil_bvalid,s_axil_bready,s_axil_araddr,s_axil_arvalid,s_axil_arready,s_axil_rdata,s_axil_rresp,s_axil_rvalid,s_axil_rready,frame_sent,out_next,idle_next,clusters,provisional,overflow,unlabelled,frame_error,joins,gear_stalls,core_rst,core_rst_next,irq,frame_done,st_clusters,st_provisional,st_overflow,st_unlabelled,st_frame_error,st_joins,st_gear_stalls,run_k,run_th_h_c,run_th_v_c,run_rows,run_cols,run_sl_h,run_sl_v);
 
     // Module arguments
     input wire  clk;
@@ -15822,6 +15824,8 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
     output reg  [35:0] run_th_v_c;
     output reg  [7:0] run_rows;
     output reg  [12:0] run_cols;
+    output reg  [23:0] run_sl_h;
+    output reg  [23:0] run_sl_v;
 
     // Stub signals
     reg  bus$clk;
@@ -15855,6 +15859,8 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
     wire  bus$we$5;
     wire  bus$we$6;
     wire  bus$we$7;
+    wire  bus$we$8;
+    wire  bus$we$9;
     wire  [31:0] bus$wdata;
     reg  bus$read_block;
     reg  [31:0] bus$read_data;
@@ -15869,6 +15875,8 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
     reg  [15:0] mux$w16$4;
     reg  [15:0] mux$w16$5;
     reg  [15:0] mux$w16$6;
+    reg  [15:0] mux$w16$7;
+    reg  [15:0] mux$w16$8;
     reg  [19:0] mux$w20$0;
     reg  [23:0] mux$w24$0;
     reg  [23:0] mux$w24$1;
@@ -15883,6 +15891,8 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
     reg  mux$flags$7;
     reg  mux$flags$8;
     reg  mux$flags$9;
+    reg  mux$flags$10;
+    reg  mux$flags$11;
     wire  [31:0] mux$data;
     reg  control$clk;
     reg  control$rst;
@@ -15933,6 +15943,8 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
     reg  run$we_th_v;
     reg  run$we_rows;
     reg  run$we_cols;
+    reg  run$we_sl_h;
+    reg  run$we_sl_v;
     reg  [31:0] run$wdata;
     wire  run$hold;
     wire  run$defer;
@@ -15945,16 +15957,22 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
     wire  run$err_th_v;
     wire  run$err_rows;
     wire  run$err_cols;
+    wire  run$err_sl_h;
+    wire  run$err_sl_v;
     wire  [15:0] run$shadow_k;
     wire  [15:0] run$shadow_th_h;
     wire  [15:0] run$shadow_th_v;
     wire  [15:0] run$shadow_rows;
     wire  [15:0] run$shadow_cols;
+    wire  [15:0] run$shadow_sl_h;
+    wire  [15:0] run$shadow_sl_v;
     wire  [3:0] run$run_k;
     wire  [35:0] run$run_th_h_c;
     wire  [35:0] run$run_th_v_c;
     wire  [7:0] run$run_rows;
     wire  [12:0] run$run_cols;
+    wire  [23:0] run$run_sl_h;
+    wire  [23:0] run$run_sl_v;
 
     // Sub module instances
     fcc_regs__bus_k7_668cf05b bus(
@@ -15989,6 +16007,8 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
         .we$5(bus$we$5),
         .we$6(bus$we$6),
         .we$7(bus$we$7),
+        .we$8(bus$we$8),
+        .we$9(bus$we$9),
         .wdata(bus$wdata),
         .read_block(bus$read_block),
         .read_data(bus$read_data),
@@ -16005,6 +16025,8 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
         .w16$4(mux$w16$4),
         .w16$5(mux$w16$5),
         .w16$6(mux$w16$6),
+        .w16$7(mux$w16$7),
+        .w16$8(mux$w16$8),
         .w20$0(mux$w20$0),
         .w24$0(mux$w24$0),
         .w24$1(mux$w24$1),
@@ -16019,6 +16041,8 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
         .flags$7(mux$flags$7),
         .flags$8(mux$flags$8),
         .flags$9(mux$flags$9),
+        .flags$10(mux$flags$10),
+        .flags$11(mux$flags$11),
         .data(mux$data)
     );
     fcc_regs__control_k7_668cf05b control(
@@ -16075,6 +16099,8 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
         .we_th_v(run$we_th_v),
         .we_rows(run$we_rows),
         .we_cols(run$we_cols),
+        .we_sl_h(run$we_sl_h),
+        .we_sl_v(run$we_sl_v),
         .wdata(run$wdata),
         .hold(run$hold),
         .defer(run$defer),
@@ -16087,16 +16113,22 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
         .err_th_v(run$err_th_v),
         .err_rows(run$err_rows),
         .err_cols(run$err_cols),
+        .err_sl_h(run$err_sl_h),
+        .err_sl_v(run$err_sl_v),
         .shadow_k(run$shadow_k),
         .shadow_th_h(run$shadow_th_h),
         .shadow_th_v(run$shadow_th_v),
         .shadow_rows(run$shadow_rows),
         .shadow_cols(run$shadow_cols),
+        .shadow_sl_h(run$shadow_sl_h),
+        .shadow_sl_v(run$shadow_sl_v),
         .run_k(run$run_k),
         .run_th_h_c(run$run_th_h_c),
         .run_th_v_c(run$run_th_v_c),
         .run_rows(run$run_rows),
-        .run_cols(run$run_cols)
+        .run_cols(run$run_cols),
+        .run_sl_h(run$run_sl_h),
+        .run_sl_v(run$run_sl_v)
     );
 
     // Update code
@@ -16161,11 +16193,15 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
         run$we_th_v = bus$we$5;
         run$we_rows = bus$we$6;
         run$we_cols = bus$we$7;
+        run$we_sl_h = bus$we$8;
+        run$we_sl_v = bus$we$9;
         mux$flags$5 = run$err_k;
         mux$flags$6 = run$err_th_h;
         mux$flags$7 = run$err_th_v;
         mux$flags$8 = run$err_rows;
         mux$flags$9 = run$err_cols;
+        mux$flags$10 = run$err_sl_h;
+        mux$flags$11 = run$err_sl_v;
         mux$addr = bus$raddr;
         mux$addr_hi = bus$raddr_hi;
         mux$w32$0 = frame_status$count;
@@ -16184,6 +16220,8 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
         mux$w16$4 = run$shadow_th_v;
         mux$w16$5 = run$shadow_rows;
         mux$w16$6 = run$shadow_cols;
+        mux$w16$7 = run$shadow_sl_h;
+        mux$w16$8 = run$shadow_sl_v;
         irq = frame_status$done & control$irq_enable;
         frame_done = frame_status$frame_done;
         st_clusters = frame_status$st_clusters;
@@ -16198,12 +16236,14 @@ module fcc_regs_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,
         run_th_v_c = run$run_th_v_c;
         run_rows = run$run_rows;
         run_cols = run$run_cols;
+        run_sl_h = run$run_sl_h;
+        run_sl_v = run$run_sl_v;
     end
 
 endmodule // fcc_regs_k7_668cf05b
 
 
-module fcc_regs__bus_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata,s_axil_wvalid,s_axil_wready,s_axil_bresp,s_axil_bvalid,s_axil_bready,s_axil_araddr,s_axil_arvalid,s_axil_arready,s_axil_rdata,s_axil_rresp,s_axil_rvalid,s_axil_rready,hold,defer,done,w_take,wr,we$0,we$1,we$2,we$3,we$4,we$5,we$6,we$7,wdata,read_block,read_data,raddr,raddr_hi);
+module fcc_regs__bus_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awready,s_axil_wdata,s_axil_wvalid,s_axil_wready,s_axil_bresp,s_axil_bvalid,s_axil_bready,s_axil_araddr,s_axil_arvalid,s_axil_arready,s_axil_rdata,s_axil_rresp,s_axil_rvalid,s_axil_rready,hold,defer,done,w_take,wr,we$0,we$1,we$2,we$3,we$4,we$5,we$6,we$7,we$8,we$9,wdata,read_block,read_data,raddr,raddr_hi);
 
     // Module arguments
     input wire  clk;
@@ -16237,6 +16277,8 @@ module fcc_regs__bus_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awr
     output reg  we$5;
     output reg  we$6;
     output reg  we$7;
+    output reg  we$8;
+    output reg  we$9;
     output reg  [31:0] wdata;
     input wire  read_block;
     input wire  [31:0] read_data;
@@ -16252,6 +16294,8 @@ module fcc_regs__bus_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awr
     localparam  words$5 = 10'b100010;
     localparam  words$6 = 10'b100011;
     localparam  words$7 = 10'b100100;
+    localparam  words$8 = 10'b100101;
+    localparam  words$9 = 10'b100110;
     localparam  okay = 2'b0;
 
     // Stub signals
@@ -16282,6 +16326,12 @@ module fcc_regs__bus_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awr
     reg  aw_sel$7$d;
     wire  aw_sel$7$q;
     reg  aw_sel$7$clock;
+    reg  aw_sel$8$d;
+    wire  aw_sel$8$q;
+    reg  aw_sel$8$clock;
+    reg  aw_sel$9$d;
+    wire  aw_sel$9$q;
+    reg  aw_sel$9$clock;
     reg  w_v$d;
     wire  w_v$q;
     reg  w_v$clock;
@@ -16359,6 +16409,16 @@ module fcc_regs__bus_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awr
         .q(aw_sel$7$q),
         .clock(aw_sel$7$clock)
     );
+    fcc_regs__bus__aw_sel__8_k7_668cf05b aw_sel$8(
+        .d(aw_sel$8$d),
+        .q(aw_sel$8$q),
+        .clock(aw_sel$8$clock)
+    );
+    fcc_regs__bus__aw_sel__9_k7_668cf05b aw_sel$9(
+        .d(aw_sel$9$d),
+        .q(aw_sel$9$q),
+        .clock(aw_sel$9$clock)
+    );
     fcc_regs__bus__w_v_k7_668cf05b w_v(
         .d(w_v$d),
         .q(w_v$q),
@@ -16430,6 +16490,10 @@ module fcc_regs__bus_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awr
         aw_sel$6$d = aw_sel$6$q;
         aw_sel$7$clock = clk;
         aw_sel$7$d = aw_sel$7$q;
+        aw_sel$8$clock = clk;
+        aw_sel$8$d = aw_sel$8$q;
+        aw_sel$9$clock = clk;
+        aw_sel$9$d = aw_sel$9$q;
         ar_word_q$clock = clk;
         ar_word_hi_q$clock = clk;
         ar_pend_q$clock = clk;
@@ -16445,6 +16509,8 @@ module fcc_regs__bus_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awr
             aw_sel$5$d = aw_word == words$5;
             aw_sel$6$d = aw_word == words$6;
             aw_sel$7$d = aw_word == words$7;
+            aw_sel$8$d = aw_word == words$8;
+            aw_sel$9$d = aw_word == words$9;
         end
         w_taken = s_axil_wvalid & ~w_v$q;
         if (w_taken) begin
@@ -16462,6 +16528,8 @@ module fcc_regs__bus_k7_668cf05b(clk,rst,s_axil_awaddr,s_axil_awvalid,s_axil_awr
         we$5 = aw_v$q & w_v$q & ~b_v$q & ~hold & aw_sel$5$q;
         we$6 = aw_v$q & w_v$q & ~b_v$q & ~hold & aw_sel$6$q;
         we$7 = aw_v$q & w_v$q & ~b_v$q & ~hold & aw_sel$7$q;
+        we$8 = aw_v$q & w_v$q & ~b_v$q & ~hold & aw_sel$8$q;
+        we$9 = aw_v$q & w_v$q & ~b_v$q & ~hold & aw_sel$9$q;
         if (perform) begin
             aw_v$d = 1'b0;
             w_v$d = 1'b0;
@@ -16723,6 +16791,44 @@ module fcc_regs__bus__aw_sel__7_k7_668cf05b(d,q,clock);
     end
 
 endmodule // fcc_regs__bus__aw_sel__7_k7_668cf05b
+
+
+module fcc_regs__bus__aw_sel__8_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__bus__aw_sel__8_k7_668cf05b
+
+
+module fcc_regs__bus__aw_sel__9_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__bus__aw_sel__9_k7_668cf05b
 
 
 module fcc_regs__bus__aw_v_k7_668cf05b(d,q,clock);
@@ -17946,7 +18052,7 @@ module fcc_regs__frame_status__status__sticky__0_k7_668cf05b(d,q,clock);
 endmodule // fcc_regs__frame_status__status__sticky__0_k7_668cf05b
 
 
-module fcc_regs__mux_k7_668cf05b(addr,addr_hi,w16$0,w16$1,w16$2,w16$3,w16$4,w16$5,w16$6,w20$0,w24$0,w24$1,w32$0,flags$0,flags$1,flags$2,flags$3,flags$4,flags$5,flags$6,flags$7,flags$8,flags$9,data);
+module fcc_regs__mux_k7_668cf05b(addr,addr_hi,w16$0,w16$1,w16$2,w16$3,w16$4,w16$5,w16$6,w16$7,w16$8,w20$0,w24$0,w24$1,w32$0,flags$0,flags$1,flags$2,flags$3,flags$4,flags$5,flags$6,flags$7,flags$8,flags$9,flags$10,flags$11,data);
 
     // Module arguments
     input wire  [9:0] addr;
@@ -17958,6 +18064,8 @@ module fcc_regs__mux_k7_668cf05b(addr,addr_hi,w16$0,w16$1,w16$2,w16$3,w16$4,w16$
     input wire  [15:0] w16$4;
     input wire  [15:0] w16$5;
     input wire  [15:0] w16$6;
+    input wire  [15:0] w16$7;
+    input wire  [15:0] w16$8;
     input wire  [19:0] w20$0;
     input wire  [23:0] w24$0;
     input wire  [23:0] w24$1;
@@ -17972,6 +18080,8 @@ module fcc_regs__mux_k7_668cf05b(addr,addr_hi,w16$0,w16$1,w16$2,w16$3,w16$4,w16$
     input wire  flags$7;
     input wire  flags$8;
     input wire  flags$9;
+    input wire  flags$10;
+    input wire  flags$11;
     output reg  [31:0] data;
 
     // Update code (custom)
@@ -17994,7 +18104,7 @@ module fcc_regs__mux_k7_668cf05b(addr,addr_hi,w16$0,w16$1,w16$2,w16$3,w16$4,w16$
             10'd9: by_lo = 32'h00030d40;
             10'd16: by_lo = {30'd0, flags$0, 1'b0};
             10'd17: by_lo = {30'd0, flags$2, flags$1};
-            10'd18: by_lo = {27'd0, flags$9, flags$8, flags$7, flags$6, flags$5};
+            10'd18: by_lo = {25'd0, flags$11, flags$10, flags$9, flags$8, flags$7, flags$6, flags$5};
             10'd20: by_lo = w32$0;
             10'd21: by_lo = {16'd0, w16$0};
             10'd22: by_lo = {16'd0, w16$1};
@@ -18007,6 +18117,8 @@ module fcc_regs__mux_k7_668cf05b(addr,addr_hi,w16$0,w16$1,w16$2,w16$3,w16$4,w16$
             10'd34: by_lo = {16'd0, w16$4};
             10'd35: by_lo = {16'd0, w16$5};
             10'd36: by_lo = {16'd0, w16$6};
+            10'd37: by_lo = {16'd0, w16$7};
+            10'd38: by_lo = {16'd0, w16$8};
             default: by_lo = 32'h00000000;
         endcase
     end
@@ -18024,7 +18136,7 @@ module fcc_regs__mux_k7_668cf05b(addr,addr_hi,w16$0,w16$1,w16$2,w16$3,w16$4,w16$
             10'd9: by_hi = 32'h00030d40;
             10'd16: by_hi = {30'd0, flags$0, 1'b0};
             10'd17: by_hi = {30'd0, flags$2, flags$1};
-            10'd18: by_hi = {27'd0, flags$9, flags$8, flags$7, flags$6, flags$5};
+            10'd18: by_hi = {25'd0, flags$11, flags$10, flags$9, flags$8, flags$7, flags$6, flags$5};
             10'd20: by_hi = w32$0;
             10'd21: by_hi = {16'd0, w16$0};
             10'd22: by_hi = {16'd0, w16$1};
@@ -18037,6 +18149,8 @@ module fcc_regs__mux_k7_668cf05b(addr,addr_hi,w16$0,w16$1,w16$2,w16$3,w16$4,w16$
             10'd34: by_hi = {16'd0, w16$4};
             10'd35: by_hi = {16'd0, w16$5};
             10'd36: by_hi = {16'd0, w16$6};
+            10'd37: by_hi = {16'd0, w16$7};
+            10'd38: by_hi = {16'd0, w16$8};
             default: by_hi = 32'h00000000;
         endcase
     end
@@ -18046,7 +18160,7 @@ module fcc_regs__mux_k7_668cf05b(addr,addr_hi,w16$0,w16$1,w16$2,w16$3,w16$4,w16$
 endmodule // fcc_regs__mux_k7_668cf05b
 
 
-module fcc_regs__run_k7_668cf05b(clk,rst,w_take,bus_wdata,wr,we_error,we_k,we_th_h,we_th_v,we_rows,we_cols,wdata,hold,defer,done,read_block,idle_next,idle,err_k,err_th_h,err_th_v,err_rows,err_cols,shadow_k,shadow_th_h,shadow_th_v,shadow_rows,shadow_cols,run_k,run_th_h_c,run_th_v_c,run_rows,run_cols);
+module fcc_regs__run_k7_668cf05b(clk,rst,w_take,bus_wdata,wr,we_error,we_k,we_th_h,we_th_v,we_rows,we_cols,we_sl_h,we_sl_v,wdata,hold,defer,done,read_block,idle_next,idle,err_k,err_th_h,err_th_v,err_rows,err_cols,err_sl_h,err_sl_v,shadow_k,shadow_th_h,shadow_th_v,shadow_rows,shadow_cols,shadow_sl_h,shadow_sl_v,run_k,run_th_h_c,run_th_v_c,run_rows,run_cols,run_sl_h,run_sl_v);
 
     // Module arguments
     input wire  clk;
@@ -18060,6 +18174,8 @@ module fcc_regs__run_k7_668cf05b(clk,rst,w_take,bus_wdata,wr,we_error,we_k,we_th
     input wire  we_th_v;
     input wire  we_rows;
     input wire  we_cols;
+    input wire  we_sl_h;
+    input wire  we_sl_v;
     input wire  [31:0] wdata;
     output reg  hold;
     output reg  defer;
@@ -18072,16 +18188,22 @@ module fcc_regs__run_k7_668cf05b(clk,rst,w_take,bus_wdata,wr,we_error,we_k,we_th
     output reg  err_th_v;
     output reg  err_rows;
     output reg  err_cols;
+    output reg  err_sl_h;
+    output reg  err_sl_v;
     output reg  [15:0] shadow_k;
     output reg  [15:0] shadow_th_h;
     output reg  [15:0] shadow_th_v;
     output reg  [15:0] shadow_rows;
     output reg  [15:0] shadow_cols;
+    output reg  [15:0] shadow_sl_h;
+    output reg  [15:0] shadow_sl_v;
     output reg  [3:0] run_k;
     output reg  [35:0] run_th_h_c;
     output reg  [35:0] run_th_v_c;
     output reg  [7:0] run_rows;
     output reg  [12:0] run_cols;
+    output reg  [23:0] run_sl_h;
+    output reg  [23:0] run_sl_v;
 
     // Stub signals
     reg  reg_k$clk;
@@ -18118,25 +18240,37 @@ module fcc_regs__run_k7_668cf05b(clk,rst,w_take,bus_wdata,wr,we_error,we_k,we_th
     reg  thresholds$rst;
     reg  thresholds$rst_h;
     reg  thresholds$rst_v;
+    reg  thresholds$rst_sl_h;
+    reg  thresholds$rst_sl_v;
     reg  thresholds$rst_act_h;
     reg  thresholds$rst_act_v;
+    reg  thresholds$rst_act_sl;
     reg  thresholds$w_take;
     reg  [31:0] thresholds$bus_wdata;
     reg  thresholds$wr;
     reg  thresholds$we_h;
     reg  thresholds$we_v;
+    reg  thresholds$we_sl_h;
+    reg  thresholds$we_sl_v;
     reg  [15:0] thresholds$wdata;
     wire  thresholds$hold;
     wire  thresholds$defer;
     wire  thresholds$done;
     reg  thresholds$load_h;
     reg  thresholds$load_v;
+    reg  thresholds$load_sl;
     wire  thresholds$refused_h;
     wire  thresholds$refused_v;
+    wire  thresholds$refused_sl_h;
+    wire  thresholds$refused_sl_v;
     wire  [15:0] thresholds$shadow_h;
     wire  [15:0] thresholds$shadow_v;
+    wire  [15:0] thresholds$shadow_sl_h;
+    wire  [15:0] thresholds$shadow_sl_v;
     wire  [35:0] thresholds$run_th_h_c;
     wire  [35:0] thresholds$run_th_v_c;
+    wire  [23:0] thresholds$run_sl_h;
+    wire  [23:0] thresholds$run_sl_v;
     reg  error$clk;
     reg  error$rst;
     reg  error$we;
@@ -18146,12 +18280,16 @@ module fcc_regs__run_k7_668cf05b(clk,rst,w_take,bus_wdata,wr,we_error,we_k,we_th
     reg  error$set$2;
     reg  error$set$3;
     reg  error$set$4;
+    reg  error$set$5;
+    reg  error$set$6;
     reg  error$clear;
     wire  error$q$0;
     wire  error$q$1;
     wire  error$q$2;
     wire  error$q$3;
     wire  error$q$4;
+    wire  error$q$5;
+    wire  error$q$6;
     reg  run_rst_dims$clock;
     reg  run_rst_dims$d;
     wire  run_rst_dims$q;
@@ -18167,12 +18305,24 @@ module fcc_regs__run_k7_668cf05b(clk,rst,w_take,bus_wdata,wr,we_error,we_k,we_th
     reg  run_rst_act_v$clock;
     reg  run_rst_act_v$d;
     wire  run_rst_act_v$q;
+    reg  run_rst_sl_h$clock;
+    reg  run_rst_sl_h$d;
+    wire  run_rst_sl_h$q;
+    reg  run_rst_sl_v$clock;
+    reg  run_rst_sl_v$d;
+    wire  run_rst_sl_v$q;
+    reg  run_rst_act_sl$clock;
+    reg  run_rst_act_sl$d;
+    wire  run_rst_act_sl$q;
     reg  idle_dims$clock;
     reg  idle_dims$d;
     wire  idle_dims$q;
     reg  idle_th_v$clock;
     reg  idle_th_v$d;
     wire  idle_th_v$q;
+    reg  idle_sl$clock;
+    reg  idle_sl$d;
+    wire  idle_sl$q;
 
     // Sub module instances
     fcc_regs__run__reg_k_k7_668cf05b reg_k(
@@ -18216,25 +18366,37 @@ module fcc_regs__run_k7_668cf05b(clk,rst,w_take,bus_wdata,wr,we_error,we_k,we_th
         .rst(thresholds$rst),
         .rst_h(thresholds$rst_h),
         .rst_v(thresholds$rst_v),
+        .rst_sl_h(thresholds$rst_sl_h),
+        .rst_sl_v(thresholds$rst_sl_v),
         .rst_act_h(thresholds$rst_act_h),
         .rst_act_v(thresholds$rst_act_v),
+        .rst_act_sl(thresholds$rst_act_sl),
         .w_take(thresholds$w_take),
         .bus_wdata(thresholds$bus_wdata),
         .wr(thresholds$wr),
         .we_h(thresholds$we_h),
         .we_v(thresholds$we_v),
+        .we_sl_h(thresholds$we_sl_h),
+        .we_sl_v(thresholds$we_sl_v),
         .wdata(thresholds$wdata),
         .hold(thresholds$hold),
         .defer(thresholds$defer),
         .done(thresholds$done),
         .load_h(thresholds$load_h),
         .load_v(thresholds$load_v),
+        .load_sl(thresholds$load_sl),
         .refused_h(thresholds$refused_h),
         .refused_v(thresholds$refused_v),
+        .refused_sl_h(thresholds$refused_sl_h),
+        .refused_sl_v(thresholds$refused_sl_v),
         .shadow_h(thresholds$shadow_h),
         .shadow_v(thresholds$shadow_v),
+        .shadow_sl_h(thresholds$shadow_sl_h),
+        .shadow_sl_v(thresholds$shadow_sl_v),
         .run_th_h_c(thresholds$run_th_h_c),
-        .run_th_v_c(thresholds$run_th_v_c)
+        .run_th_v_c(thresholds$run_th_v_c),
+        .run_sl_h(thresholds$run_sl_h),
+        .run_sl_v(thresholds$run_sl_v)
     );
     fcc_regs__run__error_k7_668cf05b error(
         .clk(error$clk),
@@ -18246,12 +18408,16 @@ module fcc_regs__run_k7_668cf05b(clk,rst,w_take,bus_wdata,wr,we_error,we_k,we_th
         .set$2(error$set$2),
         .set$3(error$set$3),
         .set$4(error$set$4),
+        .set$5(error$set$5),
+        .set$6(error$set$6),
         .clear(error$clear),
         .q$0(error$q$0),
         .q$1(error$q$1),
         .q$2(error$q$2),
         .q$3(error$q$3),
-        .q$4(error$q$4)
+        .q$4(error$q$4),
+        .q$5(error$q$5),
+        .q$6(error$q$6)
     );
     fcc_regs__run__run_rst_dims_k7_668cf05b run_rst_dims(
         .clock(run_rst_dims$clock),
@@ -18278,6 +18444,21 @@ module fcc_regs__run_k7_668cf05b(clk,rst,w_take,bus_wdata,wr,we_error,we_k,we_th
         .d(run_rst_act_v$d),
         .q(run_rst_act_v$q)
     );
+    fcc_regs__run__run_rst_sl_h_k7_668cf05b run_rst_sl_h(
+        .clock(run_rst_sl_h$clock),
+        .d(run_rst_sl_h$d),
+        .q(run_rst_sl_h$q)
+    );
+    fcc_regs__run__run_rst_sl_v_k7_668cf05b run_rst_sl_v(
+        .clock(run_rst_sl_v$clock),
+        .d(run_rst_sl_v$d),
+        .q(run_rst_sl_v$q)
+    );
+    fcc_regs__run__run_rst_act_sl_k7_668cf05b run_rst_act_sl(
+        .clock(run_rst_act_sl$clock),
+        .d(run_rst_act_sl$d),
+        .q(run_rst_act_sl$q)
+    );
     fcc_regs__run__idle_dims_k7_668cf05b idle_dims(
         .clock(idle_dims$clock),
         .d(idle_dims$d),
@@ -18287,6 +18468,11 @@ module fcc_regs__run_k7_668cf05b(clk,rst,w_take,bus_wdata,wr,we_error,we_k,we_th
         .clock(idle_th_v$clock),
         .d(idle_th_v$d),
         .q(idle_th_v$q)
+    );
+    fcc_regs__run__idle_sl_k7_668cf05b idle_sl(
+        .clock(idle_sl$clock),
+        .d(idle_sl$d),
+        .q(idle_sl$q)
     );
 
     // Update code
@@ -18298,6 +18484,14 @@ module fcc_regs__run_k7_668cf05b(clk,rst,w_take,bus_wdata,wr,we_error,we_k,we_th
         run_rst_act_v$clock = clk;
         idle_dims$clock = clk;
         idle_th_v$clock = clk;
+        run_rst_sl_h$clock = clk;
+        run_rst_sl_v$clock = clk;
+        run_rst_act_sl$clock = clk;
+        idle_sl$clock = clk;
+        run_rst_sl_h$d = rst;
+        run_rst_sl_v$d = rst;
+        run_rst_act_sl$d = rst;
+        idle_sl$d = idle_next;
         run_rst_dims$d = rst;
         run_rst_th_h$d = rst;
         run_rst_th_v$d = rst;
@@ -18334,14 +18528,20 @@ module fcc_regs__run_k7_668cf05b(clk,rst,w_take,bus_wdata,wr,we_error,we_k,we_th
         thresholds$rst_v = run_rst_th_v$q;
         thresholds$rst_act_h = run_rst_act_h$q;
         thresholds$rst_act_v = run_rst_act_v$q;
+        thresholds$rst_sl_h = run_rst_sl_h$q;
+        thresholds$rst_sl_v = run_rst_sl_v$q;
+        thresholds$rst_act_sl = run_rst_act_sl$q;
         thresholds$w_take = w_take;
         thresholds$bus_wdata = bus_wdata;
         thresholds$wr = wr;
         thresholds$we_h = we_th_h;
         thresholds$we_v = we_th_v;
+        thresholds$we_sl_h = we_sl_h;
+        thresholds$we_sl_v = we_sl_v;
         thresholds$wdata = wdata[15:0];
         thresholds$load_h = idle_dims$q;
         thresholds$load_v = idle_th_v$q;
+        thresholds$load_sl = idle_sl$q;
         hold = thresholds$hold;
         defer = thresholds$defer;
         done = thresholds$done;
@@ -18360,22 +18560,30 @@ module fcc_regs__run_k7_668cf05b(clk,rst,w_take,bus_wdata,wr,we_error,we_k,we_th
         err_rows = error$q$3;
         error$set$4 = reg_cols$refused;
         err_cols = error$q$4;
+        error$set$5 = thresholds$refused_sl_h;
+        err_sl_h = error$q$5;
+        error$set$6 = thresholds$refused_sl_v;
+        err_sl_v = error$q$6;
         shadow_k = reg_k$shadow;
         shadow_th_h = thresholds$shadow_h;
         shadow_th_v = thresholds$shadow_v;
         shadow_rows = reg_rows$shadow;
         shadow_cols = reg_cols$shadow;
+        shadow_sl_h = thresholds$shadow_sl_h;
+        shadow_sl_v = thresholds$shadow_sl_v;
         run_k = reg_k$active;
         run_th_h_c = thresholds$run_th_h_c;
         run_th_v_c = thresholds$run_th_v_c;
         run_rows = reg_rows$active;
         run_cols = reg_cols$active;
+        run_sl_h = thresholds$run_sl_h;
+        run_sl_v = thresholds$run_sl_v;
     end
 
 endmodule // fcc_regs__run_k7_668cf05b
 
 
-module fcc_regs__run__error_k7_668cf05b(clk,rst,we,wdata,set$0,set$1,set$2,set$3,set$4,clear,q$0,q$1,q$2,q$3,q$4);
+module fcc_regs__run__error_k7_668cf05b(clk,rst,we,wdata,set$0,set$1,set$2,set$3,set$4,set$5,set$6,clear,q$0,q$1,q$2,q$3,q$4,q$5,q$6);
 
     // Module arguments
     input wire  clk;
@@ -18387,12 +18595,16 @@ module fcc_regs__run__error_k7_668cf05b(clk,rst,we,wdata,set$0,set$1,set$2,set$3
     input wire  set$2;
     input wire  set$3;
     input wire  set$4;
+    input wire  set$5;
+    input wire  set$6;
     input wire  clear;
     output reg  q$0;
     output reg  q$1;
     output reg  q$2;
     output reg  q$3;
     output reg  q$4;
+    output reg  q$5;
+    output reg  q$6;
 
     // Constant declarations
     localparam  mask$0 = 32'h1;
@@ -18400,6 +18612,8 @@ module fcc_regs__run__error_k7_668cf05b(clk,rst,we,wdata,set$0,set$1,set$2,set$3
     localparam  mask$2 = 32'h4;
     localparam  mask$3 = 32'h8;
     localparam  mask$4 = 32'h10;
+    localparam  mask$5 = 32'h20;
+    localparam  mask$6 = 32'h40;
     localparam  zero32 = 32'h0;
 
     // Stub signals
@@ -18418,6 +18632,12 @@ module fcc_regs__run__error_k7_668cf05b(clk,rst,we,wdata,set$0,set$1,set$2,set$3
     reg  sticky$4$d;
     wire  sticky$4$q;
     reg  sticky$4$clock;
+    reg  sticky$5$d;
+    wire  sticky$5$q;
+    reg  sticky$5$clock;
+    reg  sticky$6$d;
+    wire  sticky$6$q;
+    reg  sticky$6$clock;
 
     // Sub module instances
     fcc_regs__run__error__sticky__0_k7_668cf05b sticky$0(
@@ -18444,6 +18664,16 @@ module fcc_regs__run__error_k7_668cf05b(clk,rst,we,wdata,set$0,set$1,set$2,set$3
         .d(sticky$4$d),
         .q(sticky$4$q),
         .clock(sticky$4$clock)
+    );
+    fcc_regs__run__error__sticky__5_k7_668cf05b sticky$5(
+        .d(sticky$5$d),
+        .q(sticky$5$q),
+        .clock(sticky$5$clock)
+    );
+    fcc_regs__run__error__sticky__6_k7_668cf05b sticky$6(
+        .d(sticky$6$d),
+        .q(sticky$6$q),
+        .clock(sticky$6$clock)
     );
 
     // Update code
@@ -18508,6 +18738,30 @@ module fcc_regs__run__error_k7_668cf05b(clk,rst,we,wdata,set$0,set$1,set$2,set$3
             sticky$4$d = 1'b0;
         end
         q$4 = sticky$4$q;
+        sticky$5$clock = clk;
+        sticky$5$d = sticky$5$q;
+        if (we & ((wdata & mask$5) != zero32)) begin
+            sticky$5$d = 1'b0;
+        end
+        if (set$5) begin
+            sticky$5$d = 1'b1;
+        end
+        if (clear | rst) begin
+            sticky$5$d = 1'b0;
+        end
+        q$5 = sticky$5$q;
+        sticky$6$clock = clk;
+        sticky$6$d = sticky$6$q;
+        if (we & ((wdata & mask$6) != zero32)) begin
+            sticky$6$d = 1'b0;
+        end
+        if (set$6) begin
+            sticky$6$d = 1'b1;
+        end
+        if (clear | rst) begin
+            sticky$6$d = 1'b0;
+        end
+        q$6 = sticky$6$q;
     end
 
 endmodule // fcc_regs__run__error_k7_668cf05b
@@ -18608,6 +18862,44 @@ module fcc_regs__run__error__sticky__4_k7_668cf05b(d,q,clock);
 endmodule // fcc_regs__run__error__sticky__4_k7_668cf05b
 
 
+module fcc_regs__run__error__sticky__5_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__run__error__sticky__5_k7_668cf05b
+
+
+module fcc_regs__run__error__sticky__6_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__run__error__sticky__6_k7_668cf05b
+
+
 module fcc_regs__run__idle_dims_k7_668cf05b(clock,d,q);
 
     // Module arguments
@@ -18627,6 +18919,27 @@ module fcc_regs__run__idle_dims_k7_668cf05b(clock,d,q);
         q = held;
     end
 endmodule // fcc_regs__run__idle_dims_k7_668cf05b
+
+
+module fcc_regs__run__idle_sl_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_regs__run__idle_sl_k7_668cf05b
 
 
 module fcc_regs__run__idle_th_v_k7_668cf05b(clock,d,q);
@@ -19376,6 +19689,27 @@ module fcc_regs__run__run_rst_act_h_k7_668cf05b(clock,d,q);
 endmodule // fcc_regs__run__run_rst_act_h_k7_668cf05b
 
 
+module fcc_regs__run__run_rst_act_sl_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* max_fanout = 64 *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_regs__run__run_rst_act_sl_k7_668cf05b
+
+
 module fcc_regs__run__run_rst_act_v_k7_668cf05b(clock,d,q);
 
     // Module arguments
@@ -19416,6 +19750,48 @@ module fcc_regs__run__run_rst_dims_k7_668cf05b(clock,d,q);
         q = held;
     end
 endmodule // fcc_regs__run__run_rst_dims_k7_668cf05b
+
+
+module fcc_regs__run__run_rst_sl_h_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* max_fanout = 64 *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_regs__run__run_rst_sl_h_k7_668cf05b
+
+
+module fcc_regs__run__run_rst_sl_v_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* max_fanout = 64 *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_regs__run__run_rst_sl_v_k7_668cf05b
 
 
 module fcc_regs__run__run_rst_th_h_k7_668cf05b(clock,d,q);
@@ -19460,38 +19836,44 @@ module fcc_regs__run__run_rst_th_v_k7_668cf05b(clock,d,q);
 endmodule // fcc_regs__run__run_rst_th_v_k7_668cf05b
 
 
-module fcc_regs__run__thresholds_k7_668cf05b(clk,rst,rst_h,rst_v,rst_act_h,rst_act_v,w_take,bus_wdata,wr,we_h,we_v,wdata,hold,defer,done,load_h,load_v,refused_h,refused_v,shadow_h,shadow_v,run_th_h_c,run_th_v_c);
+module fcc_regs__run__thresholds_k7_668cf05b(clk,rst,rst_h,rst_v,rst_sl_h,rst_sl_v,rst_act_h,rst_act_v,rst_act_sl,w_take,bus_wdata,wr,we_h,we_v,we_sl_h,we_sl_v,wdata,hold,defer,done,load_h,load_v,load_sl,refused_h,refused_v,refused_sl_h,refused_sl_v,shadow_h,shadow_v,shadow_sl_h,shadow_sl_v,run_th_h_c,run_th_v_c,run_sl_h,run_sl_v);
 
     // Module arguments
     input wire  clk;
     input wire  rst;
     input wire  rst_h;
     input wire  rst_v;
+    input wire  rst_sl_h;
+    input wire  rst_sl_v;
     input wire  rst_act_h;
     input wire  rst_act_v;
+    input wire  rst_act_sl;
     input wire  w_take;
     input wire  [31:0] bus_wdata;
     input wire  wr;
     input wire  we_h;
     input wire  we_v;
+    input wire  we_sl_h;
+    input wire  we_sl_v;
     input wire  [15:0] wdata;
     output reg  hold;
     output reg  defer;
     output reg  done;
     input wire  load_h;
     input wire  load_v;
+    input wire  load_sl;
     output reg  refused_h;
     output reg  refused_v;
+    output reg  refused_sl_h;
+    output reg  refused_sl_v;
     output reg  [15:0] shadow_h;
     output reg  [15:0] shadow_v;
+    output reg  [15:0] shadow_sl_h;
+    output reg  [15:0] shadow_sl_v;
     output reg  [35:0] run_th_h_c;
     output reg  [35:0] run_th_v_c;
-
-    // Constant declarations
-    localparam  def_thh = 16'h80;
-    localparam  def_thv = 16'h100;
-    localparam  def_thh_c = 36'hfffffbfff;
-    localparam  def_thv_c = 36'hfffff0000;
+    output reg  [23:0] run_sl_h;
+    output reg  [23:0] run_sl_v;
 
     // Stub signals
     reg  check$clk;
@@ -19499,6 +19881,10 @@ module fcc_regs__run__thresholds_k7_668cf05b(clk,rst,rst_h,rst_v,rst_act_h,rst_a
     reg  [31:0] check$bus_wdata;
     reg  check$lsb;
     wire  check$ok;
+    reg  check_sl$clk;
+    reg  check_sl$w_take;
+    reg  [15:0] check_sl$bus_hi;
+    wire  check_sl$ok;
     reg  sq$clk;
     reg  sq$rst;
     reg  sq$start;
@@ -19507,9 +19893,13 @@ module fcc_regs__run__thresholds_k7_668cf05b(clk,rst,rst_h,rst_v,rst_act_h,rst_a
     wire  sq$busy;
     wire  [35:0] sq$c_lt;
     wire  [35:0] sq$c_le;
+    wire  [23:0] sq$s;
     reg  sq_v$d;
     wire  sq_v$q;
     reg  sq_v$clock;
+    reg  sq_sl$d;
+    wire  sq_sl$q;
+    reg  sq_sl$clock;
     reg  [15:0] sq_a$d;
     wire  [15:0] sq_a$q;
     reg  sq_a$clock;
@@ -19522,27 +19912,46 @@ module fcc_regs__run__thresholds_k7_668cf05b(clk,rst,rst_h,rst_v,rst_act_h,rst_a
     reg  sq_busy_q$d;
     wire  sq_busy_q$q;
     reg  sq_busy_q$clock;
-    reg  [15:0] sh_thh$d;
-    wire  [15:0] sh_thh$q;
-    reg  sh_thh$clock;
-    reg  [15:0] sh_thv$d;
-    wire  [15:0] sh_thv$q;
-    reg  sh_thv$clock;
-    reg  [35:0] sh_thh_c$d;
-    wire  [35:0] sh_thh_c$q;
-    reg  sh_thh_c$clock;
-    reg  [35:0] sh_thv_c$d;
-    wire  [35:0] sh_thv_c$q;
-    reg  sh_thv_c$clock;
-    reg  [35:0] act_thh_c$d;
-    wire  [35:0] act_thh_c$q;
-    reg  act_thh_c$clock;
-    reg  [35:0] act_thv_c$d;
-    wire  [35:0] act_thv_c$q;
-    reg  act_thv_c$clock;
+    reg  th_h$clk;
+    reg  th_h$rst;
+    reg  th_h$rst_act;
+    reg  th_h$take;
+    reg  [15:0] th_h$a;
+    reg  [35:0] th_h$val;
+    reg  th_h$load;
+    wire  [15:0] th_h$shadow;
+    wire  [35:0] th_h$active;
+    reg  th_v$clk;
+    reg  th_v$rst;
+    reg  th_v$rst_act;
+    reg  th_v$take;
+    reg  [15:0] th_v$a;
+    reg  [35:0] th_v$val;
+    reg  th_v$load;
+    wire  [15:0] th_v$shadow;
+    wire  [35:0] th_v$active;
+    reg  sl_h$clk;
+    reg  sl_h$rst;
+    reg  sl_h$rst_act;
+    reg  sl_h$take;
+    reg  [15:0] sl_h$a;
+    reg  [23:0] sl_h$val;
+    reg  sl_h$load;
+    wire  [15:0] sl_h$shadow;
+    wire  [23:0] sl_h$active;
+    reg  sl_v$clk;
+    reg  sl_v$rst;
+    reg  sl_v$rst_act;
+    reg  sl_v$take;
+    reg  [15:0] sl_v$a;
+    reg  [23:0] sl_v$val;
+    reg  sl_v$load;
+    wire  [15:0] sl_v$shadow;
+    wire  [23:0] sl_v$active;
 
     // Local signals
     reg  sq_start_next;
+    reg  fin;
 
     // Sub module instances
     fcc_regs__run__thresholds__check_k7_668cf05b check(
@@ -19552,6 +19961,12 @@ module fcc_regs__run__thresholds_k7_668cf05b(clk,rst,rst_h,rst_v,rst_act_h,rst_a
         .lsb(check$lsb),
         .ok(check$ok)
     );
+    fcc_regs__run__thresholds__check_sl_k7_668cf05b check_sl(
+        .clk(check_sl$clk),
+        .w_take(check_sl$w_take),
+        .bus_hi(check_sl$bus_hi),
+        .ok(check_sl$ok)
+    );
     fcc_regs__run__thresholds__sq_k7_668cf05b sq(
         .clk(sq$clk),
         .rst(sq$rst),
@@ -19560,12 +19975,18 @@ module fcc_regs__run__thresholds_k7_668cf05b(clk,rst,rst_h,rst_v,rst_act_h,rst_a
         .a(sq$a),
         .busy(sq$busy),
         .c_lt(sq$c_lt),
-        .c_le(sq$c_le)
+        .c_le(sq$c_le),
+        .s(sq$s)
     );
     fcc_regs__run__thresholds__sq_v_k7_668cf05b sq_v(
         .d(sq_v$d),
         .q(sq_v$q),
         .clock(sq_v$clock)
+    );
+    fcc_regs__run__thresholds__sq_sl_k7_668cf05b sq_sl(
+        .d(sq_sl$d),
+        .q(sq_sl$q),
+        .clock(sq_sl$clock)
     );
     fcc_regs__run__thresholds__sq_a_k7_668cf05b sq_a(
         .d(sq_a$d),
@@ -19587,61 +20008,68 @@ module fcc_regs__run__thresholds_k7_668cf05b(clk,rst,rst_h,rst_v,rst_act_h,rst_a
         .q(sq_busy_q$q),
         .clock(sq_busy_q$clock)
     );
-    fcc_regs__run__thresholds__sh_thh_k7_668cf05b sh_thh(
-        .d(sh_thh$d),
-        .q(sh_thh$q),
-        .clock(sh_thh$clock)
+    fcc_regs__run__thresholds__th_h_k7_668cf05b th_h(
+        .clk(th_h$clk),
+        .rst(th_h$rst),
+        .rst_act(th_h$rst_act),
+        .take(th_h$take),
+        .a(th_h$a),
+        .val(th_h$val),
+        .load(th_h$load),
+        .shadow(th_h$shadow),
+        .active(th_h$active)
     );
-    fcc_regs__run__thresholds__sh_thv_k7_668cf05b sh_thv(
-        .d(sh_thv$d),
-        .q(sh_thv$q),
-        .clock(sh_thv$clock)
+    fcc_regs__run__thresholds__th_v_k7_668cf05b th_v(
+        .clk(th_v$clk),
+        .rst(th_v$rst),
+        .rst_act(th_v$rst_act),
+        .take(th_v$take),
+        .a(th_v$a),
+        .val(th_v$val),
+        .load(th_v$load),
+        .shadow(th_v$shadow),
+        .active(th_v$active)
     );
-    fcc_regs__run__thresholds__sh_thh_c_k7_668cf05b sh_thh_c(
-        .d(sh_thh_c$d),
-        .q(sh_thh_c$q),
-        .clock(sh_thh_c$clock)
+    fcc_regs__run__thresholds__sl_h_k7_668cf05b sl_h(
+        .clk(sl_h$clk),
+        .rst(sl_h$rst),
+        .rst_act(sl_h$rst_act),
+        .take(sl_h$take),
+        .a(sl_h$a),
+        .val(sl_h$val),
+        .load(sl_h$load),
+        .shadow(sl_h$shadow),
+        .active(sl_h$active)
     );
-    fcc_regs__run__thresholds__sh_thv_c_k7_668cf05b sh_thv_c(
-        .d(sh_thv_c$d),
-        .q(sh_thv_c$q),
-        .clock(sh_thv_c$clock)
-    );
-    fcc_regs__run__thresholds__act_thh_c_k7_668cf05b act_thh_c(
-        .d(act_thh_c$d),
-        .q(act_thh_c$q),
-        .clock(act_thh_c$clock)
-    );
-    fcc_regs__run__thresholds__act_thv_c_k7_668cf05b act_thv_c(
-        .d(act_thv_c$d),
-        .q(act_thv_c$q),
-        .clock(act_thv_c$clock)
+    fcc_regs__run__thresholds__sl_v_k7_668cf05b sl_v(
+        .clk(sl_v$clk),
+        .rst(sl_v$rst),
+        .rst_act(sl_v$rst_act),
+        .take(sl_v$take),
+        .a(sl_v$a),
+        .val(sl_v$val),
+        .load(sl_v$load),
+        .shadow(sl_v$shadow),
+        .active(sl_v$active)
     );
 
     // Update code
     always @(*) begin
         sq_v$clock = clk;
+        sq_sl$clock = clk;
         sq_a$clock = clk;
         sq_busy_q$clock = clk;
-        sh_thh$clock = clk;
-        sh_thv$clock = clk;
-        sh_thh_c$clock = clk;
-        sh_thv_c$clock = clk;
-        act_thh_c$clock = clk;
-        act_thv_c$clock = clk;
         sq_v$d = sq_v$q;
+        sq_sl$d = sq_sl$q;
         sq_a$d = sq_a$q;
         sq_busy_q$d = sq_busy_q$q;
-        sh_thh$d = sh_thh$q;
-        sh_thv$d = sh_thv$q;
-        sh_thh_c$d = sh_thh_c$q;
-        sh_thv_c$d = sh_thv_c$q;
-        act_thh_c$d = act_thh_c$q;
-        act_thv_c$d = act_thv_c$q;
         check$clk = clk;
         check$w_take = w_take;
         check$bus_wdata = bus_wdata;
         check$lsb = wdata[0];
+        check_sl$clk = clk;
+        check_sl$w_take = w_take;
+        check_sl$bus_hi = bus_wdata[31:16];
         sq$clk = clk;
         sq$rst = rst;
         sq$a = sq_a$q;
@@ -19651,103 +20079,82 @@ module fcc_regs__run__thresholds_k7_668cf05b(clk,rst,rst_h,rst_v,rst_act_h,rst_a
         sq_start_acc$clock = clk;
         hold = sq_start$q | sq$busy | sq_busy_q$q;
         sq_start_next = 1'b0;
-        defer = (we_h | we_v) & check$ok;
+        defer = ((we_h | we_v) & check$ok) | ((we_sl_h | we_sl_v) & check_sl$ok);
         refused_h = we_h & ~check$ok;
         refused_v = we_v & ~check$ok;
+        refused_sl_h = we_sl_h & ~check_sl$ok;
+        refused_sl_v = we_sl_v & ~check_sl$ok;
         if (we_h & check$ok) begin
             sq_start_next = 1'b1;
             sq_v$d = 1'b0;
+            sq_sl$d = 1'b0;
         end
         if (we_v & check$ok) begin
             sq_start_next = 1'b1;
             sq_v$d = 1'b1;
+            sq_sl$d = 1'b0;
+        end
+        if (we_sl_h & check_sl$ok) begin
+            sq_start_next = 1'b1;
+            sq_v$d = 1'b0;
+            sq_sl$d = 1'b1;
+        end
+        if (we_sl_v & check_sl$ok) begin
+            sq_start_next = 1'b1;
+            sq_v$d = 1'b1;
+            sq_sl$d = 1'b1;
         end
         if (wr) begin
             sq_a$d = wdata;
         end
         sq_busy_q$d = sq$busy;
-        done = sq_busy_q$q & ~sq$busy;
-        if (sq_busy_q$q & ~sq$busy) begin
-            if (sq_v$q) begin
-                sh_thv$d = sq_a$q;
-                sh_thv_c$d = sq$c_lt;
-            end
-            else begin
-                sh_thh$d = sq_a$q;
-                sh_thh_c$d = sq$c_le;
-            end
-        end
-        if (load_h) begin
-            act_thh_c$d = sh_thh_c$q;
-        end
-        if (load_v) begin
-            act_thv_c$d = sh_thv_c$q;
-        end
+        fin = sq_busy_q$q & ~sq$busy;
+        done = fin;
+        th_h$take = fin & ~sq_sl$q & ~sq_v$q;
+        th_v$take = fin & ~sq_sl$q & sq_v$q;
+        sl_h$take = fin & sq_sl$q & ~sq_v$q;
+        sl_v$take = fin & sq_sl$q & sq_v$q;
+        th_h$val = sq$c_le;
+        th_v$val = sq$c_lt;
+        sl_h$val = sq$s;
+        sl_v$val = sq$s;
+        th_h$a = sq_a$q;
+        th_v$a = sq_a$q;
+        sl_h$a = sq_a$q;
+        sl_v$a = sq_a$q;
+        th_h$clk = clk;
+        th_v$clk = clk;
+        sl_h$clk = clk;
+        sl_v$clk = clk;
+        th_h$rst = rst_h;
+        th_v$rst = rst_v;
+        sl_h$rst = rst_sl_h;
+        sl_v$rst = rst_sl_v;
+        th_h$rst_act = rst_act_h;
+        th_v$rst_act = rst_act_v;
+        sl_h$rst_act = rst_act_sl;
+        sl_v$rst_act = rst_act_sl;
+        th_h$load = load_h;
+        th_v$load = load_v;
+        sl_h$load = load_sl;
+        sl_v$load = load_sl;
         if (rst) begin
             sq_start_next = 1'b0;
             sq_busy_q$d = 1'b0;
         end
         sq_start$d = sq_start_next;
         sq_start_acc$d = sq_start_next;
-        if (rst_h) begin
-            sh_thh$d = def_thh;
-            sh_thh_c$d = def_thh_c;
-        end
-        if (rst_v) begin
-            sh_thv$d = def_thv;
-            sh_thv_c$d = def_thv_c;
-        end
-        if (rst_act_h) begin
-            act_thh_c$d = def_thh_c;
-        end
-        if (rst_act_v) begin
-            act_thv_c$d = def_thv_c;
-        end
-        shadow_h = sh_thh$q;
-        shadow_v = sh_thv$q;
-        run_th_h_c = act_thh_c$q;
-        run_th_v_c = act_thv_c$q;
+        shadow_h = th_h$shadow;
+        shadow_v = th_v$shadow;
+        shadow_sl_h = sl_h$shadow;
+        shadow_sl_v = sl_v$shadow;
+        run_th_h_c = th_h$active;
+        run_th_v_c = th_v$active;
+        run_sl_h = sl_h$active;
+        run_sl_v = sl_v$active;
     end
 
 endmodule // fcc_regs__run__thresholds_k7_668cf05b
-
-
-module fcc_regs__run__thresholds__act_thh_c_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [35:0] d;
-    output reg  [35:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 36'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__run__thresholds__act_thh_c_k7_668cf05b
-
-
-module fcc_regs__run__thresholds__act_thv_c_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [35:0] d;
-    output reg  [35:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 36'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_regs__run__thresholds__act_thv_c_k7_668cf05b
 
 
 module fcc_regs__run__thresholds__check_k7_668cf05b(clk,w_take,bus_wdata,lsb,ok);
@@ -19869,7 +20276,155 @@ module fcc_regs__run__thresholds__check__le_k7_668cf05b(d,q,clock);
 endmodule // fcc_regs__run__thresholds__check__le_k7_668cf05b
 
 
-module fcc_regs__run__thresholds__sh_thh_k7_668cf05b(d,q,clock);
+module fcc_regs__run__thresholds__check_sl_k7_668cf05b(clk,w_take,bus_hi,ok);
+
+    // Module arguments
+    input wire  clk;
+    input wire  w_take;
+    input wire  [15:0] bus_hi;
+    output reg  ok;
+
+    // Constant declarations
+    localparam  zero16 = 16'h0;
+
+    // Stub signals
+    reg  hi_zero$d;
+    wire  hi_zero$q;
+    reg  hi_zero$clock;
+
+    // Sub module instances
+    fcc_regs__run__thresholds__check_sl__hi_zero_k7_668cf05b hi_zero(
+        .d(hi_zero$d),
+        .q(hi_zero$q),
+        .clock(hi_zero$clock)
+    );
+
+    // Update code
+    always @(*) begin
+        hi_zero$clock = clk;
+        hi_zero$d = hi_zero$q;
+        if (w_take) begin
+            hi_zero$d = bus_hi == zero16;
+        end
+        ok = hi_zero$q;
+    end
+
+endmodule // fcc_regs__run__thresholds__check_sl_k7_668cf05b
+
+
+module fcc_regs__run__thresholds__check_sl__hi_zero_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__run__thresholds__check_sl__hi_zero_k7_668cf05b
+
+
+module fcc_regs__run__thresholds__sl_h_k7_668cf05b(clk,rst,rst_act,take,a,val,load,shadow,active);
+
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  rst_act;
+    input wire  take;
+    input wire  [15:0] a;
+    input wire  [23:0] val;
+    input wire  load;
+    output reg  [15:0] shadow;
+    output reg  [23:0] active;
+
+    // Constant declarations
+    localparam  def_a = 16'h0;
+    localparam  def_v = 24'h0;
+
+    // Stub signals
+    reg  [15:0] sh_a$d;
+    wire  [15:0] sh_a$q;
+    reg  sh_a$clock;
+    reg  [23:0] sh_v$d;
+    wire  [23:0] sh_v$q;
+    reg  sh_v$clock;
+    reg  [23:0] act$d;
+    wire  [23:0] act$q;
+    reg  act$clock;
+
+    // Sub module instances
+    fcc_regs__run__thresholds__sl_h__sh_a_k7_668cf05b sh_a(
+        .d(sh_a$d),
+        .q(sh_a$q),
+        .clock(sh_a$clock)
+    );
+    fcc_regs__run__thresholds__sl_h__sh_v_k7_668cf05b sh_v(
+        .d(sh_v$d),
+        .q(sh_v$q),
+        .clock(sh_v$clock)
+    );
+    fcc_regs__run__thresholds__sl_h__act_k7_668cf05b act(
+        .d(act$d),
+        .q(act$q),
+        .clock(act$clock)
+    );
+
+    // Update code
+    always @(*) begin
+        sh_a$clock = clk;
+        sh_v$clock = clk;
+        act$clock = clk;
+        sh_a$d = sh_a$q;
+        sh_v$d = sh_v$q;
+        act$d = act$q;
+        if (take) begin
+            sh_a$d = a;
+            sh_v$d = val;
+        end
+        if (load) begin
+            act$d = sh_v$q;
+        end
+        if (rst) begin
+            sh_a$d = def_a;
+            sh_v$d = def_v;
+        end
+        if (rst_act) begin
+            act$d = def_v;
+        end
+        shadow = sh_a$q;
+        active = act$q;
+    end
+
+endmodule // fcc_regs__run__thresholds__sl_h_k7_668cf05b
+
+
+module fcc_regs__run__thresholds__sl_h__act_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__run__thresholds__sl_h__act_k7_668cf05b
+
+
+module fcc_regs__run__thresholds__sl_h__sh_a_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -19885,29 +20440,122 @@ module fcc_regs__run__thresholds__sh_thh_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__run__thresholds__sh_thh_k7_668cf05b
+endmodule // fcc_regs__run__thresholds__sl_h__sh_a_k7_668cf05b
 
 
-module fcc_regs__run__thresholds__sh_thh_c_k7_668cf05b(d,q,clock);
+module fcc_regs__run__thresholds__sl_h__sh_v_k7_668cf05b(d,q,clock);
 
     // Module arguments
-    input wire  [35:0] d;
-    output reg  [35:0] q;
+    input wire  [23:0] d;
+    output reg  [23:0] q;
     input wire  clock;
 
     // Update code (custom)
     initial begin
-       q = 36'h0;
+       q = 24'h0;
     end
 
     always @(posedge clock) begin
        q <= d;
     end
 
-endmodule // fcc_regs__run__thresholds__sh_thh_c_k7_668cf05b
+endmodule // fcc_regs__run__thresholds__sl_h__sh_v_k7_668cf05b
 
 
-module fcc_regs__run__thresholds__sh_thv_k7_668cf05b(d,q,clock);
+module fcc_regs__run__thresholds__sl_v_k7_668cf05b(clk,rst,rst_act,take,a,val,load,shadow,active);
+
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  rst_act;
+    input wire  take;
+    input wire  [15:0] a;
+    input wire  [23:0] val;
+    input wire  load;
+    output reg  [15:0] shadow;
+    output reg  [23:0] active;
+
+    // Constant declarations
+    localparam  def_a = 16'h0;
+    localparam  def_v = 24'h0;
+
+    // Stub signals
+    reg  [15:0] sh_a$d;
+    wire  [15:0] sh_a$q;
+    reg  sh_a$clock;
+    reg  [23:0] sh_v$d;
+    wire  [23:0] sh_v$q;
+    reg  sh_v$clock;
+    reg  [23:0] act$d;
+    wire  [23:0] act$q;
+    reg  act$clock;
+
+    // Sub module instances
+    fcc_regs__run__thresholds__sl_v__sh_a_k7_668cf05b sh_a(
+        .d(sh_a$d),
+        .q(sh_a$q),
+        .clock(sh_a$clock)
+    );
+    fcc_regs__run__thresholds__sl_v__sh_v_k7_668cf05b sh_v(
+        .d(sh_v$d),
+        .q(sh_v$q),
+        .clock(sh_v$clock)
+    );
+    fcc_regs__run__thresholds__sl_v__act_k7_668cf05b act(
+        .d(act$d),
+        .q(act$q),
+        .clock(act$clock)
+    );
+
+    // Update code
+    always @(*) begin
+        sh_a$clock = clk;
+        sh_v$clock = clk;
+        act$clock = clk;
+        sh_a$d = sh_a$q;
+        sh_v$d = sh_v$q;
+        act$d = act$q;
+        if (take) begin
+            sh_a$d = a;
+            sh_v$d = val;
+        end
+        if (load) begin
+            act$d = sh_v$q;
+        end
+        if (rst) begin
+            sh_a$d = def_a;
+            sh_v$d = def_v;
+        end
+        if (rst_act) begin
+            act$d = def_v;
+        end
+        shadow = sh_a$q;
+        active = act$q;
+    end
+
+endmodule // fcc_regs__run__thresholds__sl_v_k7_668cf05b
+
+
+module fcc_regs__run__thresholds__sl_v__act_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [23:0] d;
+    output reg  [23:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 24'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__run__thresholds__sl_v__act_k7_668cf05b
+
+
+module fcc_regs__run__thresholds__sl_v__sh_a_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -19923,29 +20571,29 @@ module fcc_regs__run__thresholds__sh_thv_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_regs__run__thresholds__sh_thv_k7_668cf05b
+endmodule // fcc_regs__run__thresholds__sl_v__sh_a_k7_668cf05b
 
 
-module fcc_regs__run__thresholds__sh_thv_c_k7_668cf05b(d,q,clock);
+module fcc_regs__run__thresholds__sl_v__sh_v_k7_668cf05b(d,q,clock);
 
     // Module arguments
-    input wire  [35:0] d;
-    output reg  [35:0] q;
+    input wire  [23:0] d;
+    output reg  [23:0] q;
     input wire  clock;
 
     // Update code (custom)
     initial begin
-       q = 36'h0;
+       q = 24'h0;
     end
 
     always @(posedge clock) begin
        q <= d;
     end
 
-endmodule // fcc_regs__run__thresholds__sh_thv_c_k7_668cf05b
+endmodule // fcc_regs__run__thresholds__sl_v__sh_v_k7_668cf05b
 
 
-module fcc_regs__run__thresholds__sq_k7_668cf05b(clk,rst,start,start_acc,a,busy,c_lt,c_le);
+module fcc_regs__run__thresholds__sq_k7_668cf05b(clk,rst,start,start_acc,a,busy,c_lt,c_le,s);
 
     // Module arguments
     input wire  clk;
@@ -19956,6 +20604,7 @@ module fcc_regs__run__thresholds__sq_k7_668cf05b(clk,rst,start,start_acc,a,busy,
     output reg  busy;
     output reg  [35:0] c_lt;
     output reg  [35:0] c_le;
+    output reg  [23:0] s;
 
     // Update code (custom)
     // Shift and add: acc += c for every set bit of m, c doubles, m halves.
@@ -19994,6 +20643,7 @@ module fcc_regs__run__thresholds__sq_k7_668cf05b(clk,rst,start,start_acc,a,busy,
         busy = run;
         c_lt = 36'd0 - {4'd0, acc};
         c_le = ~{4'd0, acc};
+        s = acc[31:8];
     end
 endmodule // fcc_regs__run__thresholds__sq_k7_668cf05b
 
@@ -20034,6 +20684,25 @@ module fcc_regs__run__thresholds__sq_busy_q_k7_668cf05b(d,q,clock);
     end
 
 endmodule // fcc_regs__run__thresholds__sq_busy_q_k7_668cf05b
+
+
+module fcc_regs__run__thresholds__sq_sl_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__run__thresholds__sq_sl_k7_668cf05b
 
 
 module fcc_regs__run__thresholds__sq_start_k7_668cf05b(clock,d,q);
@@ -20095,6 +20764,268 @@ module fcc_regs__run__thresholds__sq_v_k7_668cf05b(d,q,clock);
     end
 
 endmodule // fcc_regs__run__thresholds__sq_v_k7_668cf05b
+
+
+module fcc_regs__run__thresholds__th_h_k7_668cf05b(clk,rst,rst_act,take,a,val,load,shadow,active);
+
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  rst_act;
+    input wire  take;
+    input wire  [15:0] a;
+    input wire  [35:0] val;
+    input wire  load;
+    output reg  [15:0] shadow;
+    output reg  [35:0] active;
+
+    // Constant declarations
+    localparam  def_a = 16'h80;
+    localparam  def_v = 36'hfffffbfff;
+
+    // Stub signals
+    reg  [15:0] sh_a$d;
+    wire  [15:0] sh_a$q;
+    reg  sh_a$clock;
+    reg  [35:0] sh_v$d;
+    wire  [35:0] sh_v$q;
+    reg  sh_v$clock;
+    reg  [35:0] act$d;
+    wire  [35:0] act$q;
+    reg  act$clock;
+
+    // Sub module instances
+    fcc_regs__run__thresholds__th_h__sh_a_k7_668cf05b sh_a(
+        .d(sh_a$d),
+        .q(sh_a$q),
+        .clock(sh_a$clock)
+    );
+    fcc_regs__run__thresholds__th_h__sh_v_k7_668cf05b sh_v(
+        .d(sh_v$d),
+        .q(sh_v$q),
+        .clock(sh_v$clock)
+    );
+    fcc_regs__run__thresholds__th_h__act_k7_668cf05b act(
+        .d(act$d),
+        .q(act$q),
+        .clock(act$clock)
+    );
+
+    // Update code
+    always @(*) begin
+        sh_a$clock = clk;
+        sh_v$clock = clk;
+        act$clock = clk;
+        sh_a$d = sh_a$q;
+        sh_v$d = sh_v$q;
+        act$d = act$q;
+        if (take) begin
+            sh_a$d = a;
+            sh_v$d = val;
+        end
+        if (load) begin
+            act$d = sh_v$q;
+        end
+        if (rst) begin
+            sh_a$d = def_a;
+            sh_v$d = def_v;
+        end
+        if (rst_act) begin
+            act$d = def_v;
+        end
+        shadow = sh_a$q;
+        active = act$q;
+    end
+
+endmodule // fcc_regs__run__thresholds__th_h_k7_668cf05b
+
+
+module fcc_regs__run__thresholds__th_h__act_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__run__thresholds__th_h__act_k7_668cf05b
+
+
+module fcc_regs__run__thresholds__th_h__sh_a_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__run__thresholds__th_h__sh_a_k7_668cf05b
+
+
+module fcc_regs__run__thresholds__th_h__sh_v_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__run__thresholds__th_h__sh_v_k7_668cf05b
+
+
+module fcc_regs__run__thresholds__th_v_k7_668cf05b(clk,rst,rst_act,take,a,val,load,shadow,active);
+
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  rst_act;
+    input wire  take;
+    input wire  [15:0] a;
+    input wire  [35:0] val;
+    input wire  load;
+    output reg  [15:0] shadow;
+    output reg  [35:0] active;
+
+    // Constant declarations
+    localparam  def_a = 16'h100;
+    localparam  def_v = 36'hfffff0000;
+
+    // Stub signals
+    reg  [15:0] sh_a$d;
+    wire  [15:0] sh_a$q;
+    reg  sh_a$clock;
+    reg  [35:0] sh_v$d;
+    wire  [35:0] sh_v$q;
+    reg  sh_v$clock;
+    reg  [35:0] act$d;
+    wire  [35:0] act$q;
+    reg  act$clock;
+
+    // Sub module instances
+    fcc_regs__run__thresholds__th_v__sh_a_k7_668cf05b sh_a(
+        .d(sh_a$d),
+        .q(sh_a$q),
+        .clock(sh_a$clock)
+    );
+    fcc_regs__run__thresholds__th_v__sh_v_k7_668cf05b sh_v(
+        .d(sh_v$d),
+        .q(sh_v$q),
+        .clock(sh_v$clock)
+    );
+    fcc_regs__run__thresholds__th_v__act_k7_668cf05b act(
+        .d(act$d),
+        .q(act$q),
+        .clock(act$clock)
+    );
+
+    // Update code
+    always @(*) begin
+        sh_a$clock = clk;
+        sh_v$clock = clk;
+        act$clock = clk;
+        sh_a$d = sh_a$q;
+        sh_v$d = sh_v$q;
+        act$d = act$q;
+        if (take) begin
+            sh_a$d = a;
+            sh_v$d = val;
+        end
+        if (load) begin
+            act$d = sh_v$q;
+        end
+        if (rst) begin
+            sh_a$d = def_a;
+            sh_v$d = def_v;
+        end
+        if (rst_act) begin
+            act$d = def_v;
+        end
+        shadow = sh_a$q;
+        active = act$q;
+    end
+
+endmodule // fcc_regs__run__thresholds__th_v_k7_668cf05b
+
+
+module fcc_regs__run__thresholds__th_v__act_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__run__thresholds__th_v__act_k7_668cf05b
+
+
+module fcc_regs__run__thresholds__th_v__sh_a_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__run__thresholds__th_v__sh_a_k7_668cf05b
+
+
+module fcc_regs__run__thresholds__th_v__sh_v_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_regs__run__thresholds__th_v__sh_v_k7_668cf05b
 
 
 module fcc_top__room_k7_668cf05b(d,q,clock);

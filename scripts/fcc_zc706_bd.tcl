@@ -58,6 +58,8 @@
 #     0x088 RUN_TH_V RW
 #     0x08C RUN_ROWS RW
 #     0x090 RUN_COLS RW
+#     0x094 RUN_SLOPE_H RW
+#     0x098 RUN_SLOPE_V RW
 
 set usage {usage: vivado -mode batch -source fcc_zc706_bd.tcl -tclargs ?-out DIR? ?-bitstream? ?-jobs N?}
 set part xc7z045ffg900-2
@@ -202,6 +204,8 @@ puts $map {register 0x084 RUN_TH_H RW}
 puts $map {register 0x088 RUN_TH_V RW}
 puts $map {register 0x08C RUN_ROWS RW}
 puts $map {register 0x090 RUN_COLS RW}
+puts $map {register 0x094 RUN_SLOPE_H RW}
+puts $map {register 0x098 RUN_SLOPE_V RW}
 close $map
 
 make_wrapper -files [get_files $design.bd] -top -import

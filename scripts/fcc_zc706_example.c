@@ -159,18 +159,22 @@ int main(void)
     fcc_wr(FCC_REG_CONTROL, FCC_CONTROL_IRQ_ENABLE_MASK);
 
     /* 4. Run parameters. */
-    /*    The frame's rows and columns, K and thresholds (Q7.8,
-     *    floor(th * 256 + 0.5)); here the build's power-on values. A core built
-     *    for larger frames or a larger K takes each frame's own values. The
-     *    core takes them at the start of the next frame; a refused value keeps
-     *    the old one and sets its ERROR bit. */
+    /*    The frame's rows and columns, K, thresholds (Q7.8,
+     *    floor(th * 256 + 0.5)) and threshold slopes (UQ0.16,
+     *    floor(a * 65536 + 0.5), 0 for fixed thresholds); here the build's
+     *    power-on values. A core built for larger frames or a larger K takes
+     *    each frame's own values. The core takes them at the start of the next
+     *    frame; a refused value keeps the old one and sets its ERROR bit. */
     fcc_wr(FCC_REG_ERROR, FCC_ERROR_K_MASK | FCC_ERROR_TH_H_MASK | FCC_ERROR_TH_V_MASK |
-                              FCC_ERROR_ROWS_MASK | FCC_ERROR_COLS_MASK);
+                              FCC_ERROR_ROWS_MASK | FCC_ERROR_COLS_MASK |
+                              FCC_ERROR_SLOPE_H_MASK | FCC_ERROR_SLOPE_V_MASK);
     fcc_wr(FCC_REG_RUN_ROWS, FCC_ROWS);
     fcc_wr(FCC_REG_RUN_COLS, FCC_COLS);
     fcc_wr(FCC_REG_RUN_K, FCC_REG_RUN_K_RESET);
     fcc_wr(FCC_REG_RUN_TH_H, FCC_REG_RUN_TH_H_RESET);
     fcc_wr(FCC_REG_RUN_TH_V, FCC_REG_RUN_TH_V_RESET);
+    fcc_wr(FCC_REG_RUN_SLOPE_H, FCC_REG_RUN_SLOPE_H_RESET);
+    fcc_wr(FCC_REG_RUN_SLOPE_V, FCC_REG_RUN_SLOPE_V_RESET);
     if (fcc_rd(FCC_REG_ERROR) != 0u) {
         xil_printf("fcc: run parameters refused (ERROR 0x%02x)\r\n", (unsigned)fcc_rd(FCC_REG_ERROR));
         return 1;

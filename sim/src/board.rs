@@ -585,5 +585,7 @@ pub fn build_run(p: &fcc_params::FccParams) -> fcc_driver::RunConfig {
         k: p.fsize as u32,
         th_h_q: q(p.th_h_q()),
         th_v_q: q(p.th_v_q()),
+        th_h_slope_q: q(p.th_h_slope_q()),
+        th_v_slope_q: q(p.th_v_slope_q()),
     }
 }

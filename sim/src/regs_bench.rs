@@ -54,6 +54,9 @@ c_struct! {
         /// Active -tV^2, 36-bit two's complement.
         pub run_th_v_c: u64,
         pub s_axil_rdata: u32,
+        /// Active squared slopes `A^2 >> 8` (UQ0.24).
+        pub run_sl_h: u32,
+        pub run_sl_v: u32,
         pub st_unlabelled: u32,
         pub st_joins: u32,
         pub st_gear_stalls: u32,

@@ -1,5 +1,6 @@
 //! Run parameters: one core, built for its limits, programmed per frame
-//! through the run registers (RUN_K, RUN_TH_H, RUN_TH_V, RUN_ROWS, RUN_COLS).
+//! through the run registers (RUN_K, RUN_TH_H, RUN_TH_V, RUN_ROWS, RUN_COLS,
+//! RUN_SLOPE_H, RUN_SLOPE_V).
 
 use fcc_golden::Frame;
 use fcc_params::FccParams;
@@ -12,14 +13,24 @@ use crate::model::Dut;
 use crate::SimError;
 
 /// The run registers and the values that program `run` (thresholds as
-/// Q7.8 integers, the golden model's quantisation).
-pub fn run_values(run: &FccParams) -> [(&'static str, u32, u32); 5] {
+/// Q7.8 integers and slopes as UQ0.16, the golden model's quantisation).
+pub fn run_values(run: &FccParams) -> [(&'static str, u32, u32); 7] {
     [
         ("RUN_K", offset::RUN_K, run.fsize as u32),
         ("RUN_TH_H", offset::RUN_TH_H, run.th_h_q() as u32),
         ("RUN_TH_V", offset::RUN_TH_V, run.th_v_q() as u32),
         ("RUN_ROWS", offset::RUN_ROWS, run.rows as u32),
         ("RUN_COLS", offset::RUN_COLS, run.cols as u32),
+        (
+            "RUN_SLOPE_H",
+            offset::RUN_SLOPE_H,
+            run.th_h_slope_q() as u32,
+        ),
+        (
+            "RUN_SLOPE_V",
+            offset::RUN_SLOPE_V,
+            run.th_v_slope_q() as u32,
+        ),
     ]
 }
 
@@ -33,13 +44,6 @@ pub fn check_run(build: &FccParams, run: &FccParams) -> Result<(), SimError> {
         return Err(SimError::BadRun(format!(
             "label_bits {} and labels_per_beat {} are the build's ({} and {})",
             run.label_bits, run.labels_per_beat, build.label_bits, build.labels_per_beat
-        )));
-    }
-    if (run.th_h_slope_sq(), run.th_v_slope_sq()) != (build.th_h_slope_sq(), build.th_v_slope_sq())
-    {
-        return Err(SimError::BadRun(format!(
-            "th_h_slope = {} and th_v_slope = {} must be the build's ({} and {}): the slopes are not run registers yet",
-            run.th_h_slope, run.th_v_slope, build.th_h_slope, build.th_v_slope
         )));
     }
     for (name, off, v) in run_values(run) {
@@ -66,8 +70,8 @@ impl Dut {
         let err = m.read(self, offset::ERROR)?;
         if err != 0 {
             return Err(SimError::Mismatch(format!(
-                "ERROR = {err:#x} after programming rows {} cols {} fsize {} th_h {} th_v {}",
-                run.rows, run.cols, run.fsize, run.th_h, run.th_v
+                "ERROR = {err:#x} after programming rows {} cols {} fsize {} th_h {} th_v {} th_h_slope {} th_v_slope {}",
+                run.rows, run.cols, run.fsize, run.th_h, run.th_v, run.th_h_slope, run.th_v_slope
             )));
         }
         for (name, off, v) in run_values(run) {

@@ -238,6 +238,13 @@ fn wrong_build_and_wrong_run_parameters_are_refused() {
             },
             "RUN_TH_V = 32769",
         ),
+        (
+            RunConfig {
+                th_h_slope_q: 0x1_0000,
+                ..base
+            },
+            "RUN_SLOPE_H = 65536",
+        ),
     ];
     for (run, name) in bad {
         let e = d

@@ -31,6 +31,8 @@ fn builds() -> Vec<FccParams> {
             label_bits: 16,
             labels_per_beat: 2,
             clock_mhz: 150.0,
+            th_h_slope: 0.01,
+            th_v_slope: 0.035,
             ..Default::default()
         },
     ]
@@ -292,12 +294,14 @@ fn clear_zeroes_count_status_and_frame_done() {
     assert_eq!(d.idle().irq, 0);
 }
 
-const RUN_REGS: [u32; 5] = [
+const RUN_REGS: [u32; 7] = [
     offset::RUN_K,
     offset::RUN_TH_H,
     offset::RUN_TH_V,
     offset::RUN_ROWS,
     offset::RUN_COLS,
+    offset::RUN_SLOPE_H,
+    offset::RUN_SLOPE_V,
 ];
 
 /// What software should read back, kept beside the model.
@@ -440,8 +444,23 @@ fn addends(th_h: u32, th_v: u32) -> (u64, u64) {
     ((!h) & m, (1u64 << 36).wrapping_sub(v) & m)
 }
 
-fn active(o: &fcc_sim::RegsOut) -> (u8, u64, u64, u8, u16) {
-    (o.run_k, o.run_th_h_c, o.run_th_v_c, o.run_rows, o.run_cols)
+/// The squared slope the core sees: `A^2 >> 8` (spec §2).
+fn slope_sq(a: u32) -> u32 {
+    ((u64::from(a) * u64::from(a)) >> 8) as u32
+}
+
+type Active = (u8, u64, u64, u8, u16, u32, u32);
+
+fn active(o: &fcc_sim::RegsOut) -> Active {
+    (
+        o.run_k,
+        o.run_th_h_c,
+        o.run_th_v_c,
+        o.run_rows,
+        o.run_cols,
+        o.run_sl_h,
+        o.run_sl_v,
+    )
 }
 
 #[test]
@@ -450,20 +469,29 @@ fn run_registers_power_on_to_the_build_and_reach_the_core_only_while_idle() {
         let mut d = dut(&p);
         let mut m = AxilMaster::new(6);
         let (h, v) = addends(p.th_h_q() as u32, p.th_v_q() as u32);
-        let build = (p.fsize as u8, h, v, p.rows as u8, p.cols as u16);
+        let (sh, sv) = (p.th_h_slope_sq() as u32, p.th_v_slope_sq() as u32);
+        let build = (p.fsize as u8, h, v, p.rows as u8, p.cols as u16, sh, sv);
         assert_eq!(active(&d.idle()), build, "power-on active values");
+        assert_eq!(
+            m.read(&mut d, offset::RUN_SLOPE_V).unwrap(),
+            p.th_v_slope_q() as u32
+        );
         // While a frame runs (idle low) a write changes the read-back value only.
         d.live.idle_next = 0;
         let k = if p.fsize == 3 { 3 } else { p.fsize as u32 - 2 };
         m.write_ok(&mut d, offset::RUN_K, k).unwrap();
         m.write_ok(&mut d, offset::RUN_TH_H, 1).unwrap();
         m.write_ok(&mut d, offset::RUN_TH_V, 0x8000).unwrap();
+        m.write_ok(&mut d, offset::RUN_SLOPE_H, 0xffff).unwrap();
+        m.write_ok(&mut d, offset::RUN_SLOPE_V, 1).unwrap();
         for _ in 0..40 {
             assert_eq!(active(&d.idle()), build, "changed during a frame");
         }
         assert_eq!(m.read(&mut d, offset::RUN_K).unwrap(), k);
         assert_eq!(m.read(&mut d, offset::RUN_TH_H).unwrap(), 1);
         assert_eq!(m.read(&mut d, offset::RUN_TH_V).unwrap(), 0x8000);
+        assert_eq!(m.read(&mut d, offset::RUN_SLOPE_H).unwrap(), 0xffff);
+        assert_eq!(m.read(&mut d, offset::RUN_SLOPE_V).unwrap(), 1);
         // Idle again (registered from `idle_next`): taken within a cycle.
         d.live.idle_next = 1;
         d.idle();
@@ -471,7 +499,15 @@ fn run_registers_power_on_to_the_build_and_reach_the_core_only_while_idle() {
         let (h, v) = addends(1, 0x8000);
         assert_eq!(
             active(&d.idle()),
-            (k as u8, h, v, p.rows as u8, p.cols as u16),
+            (
+                k as u8,
+                h,
+                v,
+                p.rows as u8,
+                p.cols as u16,
+                slope_sq(0xffff),
+                slope_sq(1)
+            ),
             "taken when idle"
         );
         // Squares of every bit pattern's extremes, each written while idle.
@@ -484,6 +520,17 @@ fn run_registers_power_on_to_the_build_and_reach_the_core_only_while_idle() {
                 (o.run_th_h_c, o.run_th_v_c),
                 addends(th_h, th_v),
                 "squares of {th_h:#x}, {th_v:#x}"
+            );
+        }
+        for (a_h, a_v) in [(0x8000, 0x00ff), (0x0010, 0x0f0f), (0, 0x7ffe)] {
+            m.write_ok(&mut d, offset::RUN_SLOPE_H, a_h).unwrap();
+            m.write_ok(&mut d, offset::RUN_SLOPE_V, a_v).unwrap();
+            d.idle();
+            let o = d.idle();
+            assert_eq!(
+                (o.run_sl_h, o.run_sl_v),
+                (slope_sq(a_h), slope_sq(a_v)),
+                "squared slopes of {a_h:#x}, {a_v:#x}"
             );
         }
         // A power-on reset restores the build's values.
@@ -522,6 +569,8 @@ fn refused_run_writes_keep_the_old_value_and_set_their_error_bit() {
                     0x1_0000 + p.cols as u32,
                 ],
             ),
+            (offset::RUN_SLOPE_H, vec![0x1_0000, 0x1_ffff, u32::MAX]),
+            (offset::RUN_SLOPE_V, vec![0x1_0000, 0x8000_0000]),
         ];
         for (off, values) in bad {
             let bit = regmap::run_error_bit(off).unwrap();

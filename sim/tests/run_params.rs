@@ -1,12 +1,13 @@
-//! Run-time K and thresholds: one core built for K_max = 11 (16 x 256) runs
-//! frames at K = 3, 5, 7, 9, 11 and several threshold pairs, back to back,
+//! Run-time K, thresholds and slopes: one core built for K_max = 11
+//! (16 x 256, slopes 0) runs frames at K = 3, 5, 7, 9, 11 and several
+//! threshold pairs, fixed and range-adaptive, back to back,
 //! programmed through the registers between frames; every frame is compared
 //! with the golden model called with that frame's parameters. Refused writes
 //! leave the frame's parameters alone; a write during a frame applies from
 //! the next frame on.
 
 use fcc_golden::Frame;
-use fcc_params::{quantize_threshold, FccParams};
+use fcc_params::{quantize_slope, quantize_threshold, FccParams};
 use fcc_rtl::regmap::{bits, offset};
 use fcc_sim::{
     check_status_registers, compare, expected, frames, load, AxilMaster, Drive, Dut, FrameRun,
@@ -25,12 +26,19 @@ fn build() -> FccParams {
 }
 
 /// The parameters of one frame: the build's size and label bits, the run's
-/// K and thresholds.
+/// K and thresholds (slopes 0).
 fn run_params(b: &FccParams, k: usize, th_h: f64, th_v: f64) -> FccParams {
+    run_adaptive(b, k, (th_h, th_v, 0.0, 0.0))
+}
+
+/// As [`run_params`] with slopes: (th_h, th_v, th_h_slope, th_v_slope).
+fn run_adaptive(b: &FccParams, k: usize, t: (f64, f64, f64, f64)) -> FccParams {
     FccParams {
         fsize: k,
-        th_h,
-        th_v,
+        th_h: t.0,
+        th_v: t.1,
+        th_h_slope: t.2,
+        th_v_slope: t.3,
         ..b.clone()
     }
 }
@@ -56,6 +64,8 @@ fn program(d: &mut Dut, r: &FccParams, seed: u64) {
         (offset::RUN_K, r.fsize as u32),
         (offset::RUN_TH_H, quantize_threshold(r.th_h) as u32),
         (offset::RUN_TH_V, quantize_threshold(r.th_v) as u32),
+        (offset::RUN_SLOPE_H, quantize_slope(r.th_h_slope) as u32),
+        (offset::RUN_SLOPE_V, quantize_slope(r.th_v_slope) as u32),
     ];
     for (off, v) in writes {
         m.write_ok(d, off, v).unwrap();
@@ -75,17 +85,25 @@ fn check(d: &mut Dut, r: &FccParams, f: &Frame, drive: &Drive, what: &str) -> Fr
         .run_frame(f, drive)
         .unwrap_or_else(|e| panic!("{what}: {e}"));
     let what = format!(
-        "{what} (run K {} th_h {} th_v {}) seed {}",
-        r.fsize, r.th_h, r.th_v, drive.seed
+        "{what} (run K {} th_h {} th_v {} slopes {} {}) seed {}",
+        r.fsize, r.th_h, r.th_v, r.th_h_slope, r.th_v_slope, drive.seed
     );
     compare(r, &gold, &run, &what).unwrap_or_else(|e| panic!("{e}"));
     check_status_registers(d, &run, &what).unwrap_or_else(|e| panic!("{e}"));
     run
 }
 
-/// Threshold pairs: the build's, tighter, wider with th_V < th_H, and the
-/// ends of the register range (tH = 0x8000, tV = 1).
-const THRESHOLDS: [(f64, f64); 4] = [(0.5, 1.0), (0.3, 0.6), (0.9, 0.4), (127.999, 1.0 / 256.0)];
+/// Thresholds and slopes (th_h, th_v, th_h_slope, th_v_slope): the build's,
+/// the `adaptive` preset, tighter and range-adaptive, wider with th_V < th_H
+/// and a steep V slope, and the ends of the register ranges (tH = 0x8000,
+/// tV = 1, slopes 0xFFFF and 1).
+const THRESHOLDS: [(f64, f64, f64, f64); 5] = [
+    (0.5, 1.0, 0.0, 0.0),
+    fcc_params::ADAPTIVE,
+    (0.3, 0.6, 0.01, 0.035),
+    (0.9, 0.4, 0.0, 0.25),
+    (127.999, 1.0 / 256.0, 0.99998, 1.0 / 65536.0),
+];
 
 fn frames_for(b: &FccParams) -> Vec<(String, Frame)> {
     let mut v: Vec<(String, Frame)> = [11u64, 12, 13]
@@ -104,9 +122,9 @@ fn one_core_runs_every_k_and_threshold_pair_back_to_back() {
     let mut d = dut(&b);
     let frames = frames_for(&b);
     let mut configs = vec![];
-    for (th_h, th_v) in THRESHOLDS {
+    for t in THRESHOLDS {
         for k in [3, 5, 7, 9, 11] {
-            configs.push(run_params(&b, k, th_h, th_v));
+            configs.push(run_adaptive(&b, k, t));
         }
     }
     // Every frame under every configuration, the configuration changing

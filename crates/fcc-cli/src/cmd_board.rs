@@ -108,10 +108,8 @@ fn run_board(args: &BoardRunArgs) -> anyhow::Result<()> {
         bail!("the core computes exact connected components: drop --merge paper");
     }
     let m = &args.cluster.model.limits;
-    let golden = args.cluster.model.params(1, 1)?;
-    if golden.th_h_slope != 0.0 || golden.th_v_slope != 0.0 {
-        bail!("the board's core has the slopes of its build (fcc gen --preset adaptive; they are not run registers yet): drop --preset, --th-h-slope and --th-v-slope (the golden model takes them: fcc cluster)");
-    }
+    // The model options are checked before any board is opened.
+    args.cluster.model.params(1, 1)?;
     if m.bridge.is_some() || m.ring_reach.is_some() {
         bail!("the row-major core keeps the unlimited contract: drop --bridge and --ring-reach (the golden stream takes them: fcc cluster --stream)");
     }

@@ -189,8 +189,8 @@ pub fn run(args: &SimArgs) -> anyhow::Result<()> {
                 dir.display()
             );
             println!(
-                "run registers: rows={} cols={} fsize={} th_h={} th_v={}",
-                p.rows, p.cols, p.fsize, p.th_h, p.th_v
+                "run registers: rows={} cols={} fsize={} th_h={} th_v={} th_h_slope={} th_v_slope={}",
+                p.rows, p.cols, p.fsize, p.th_h, p.th_v, p.th_h_slope, p.th_v_slope
             );
         }
         _ => println!(

@@ -139,7 +139,7 @@ pub struct HwArgs {
     /// Refused by the row-major core (it keeps the unlimited contract).
     #[command(flatten)]
     pub limits: LimitArgs,
-    /// The build's slopes (power-on and fixed: not run registers yet).
+    /// The build's slopes (power-on values of RUN_SLOPE_H and RUN_SLOPE_V).
     #[command(flatten)]
     pub slopes: SlopeArgs,
 }

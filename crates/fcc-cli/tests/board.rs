@@ -1,6 +1,7 @@
 //! `fcc board run --virtual` end to end: the four Ouster captures at their
-//! own size on one K_max = 11, 128 x 2048 core (programmed through its run
-//! registers, never rebuilt) through the driver, the AXI DMA model and the
+//! own size, with the `paper` thresholds (two with `adaptive` too), on one
+//! K_max = 11, 128 x 2048 core (programmed through its run registers, never
+//! rebuilt) through the driver, the AXI DMA model and the
 //! Verilator model of the core, every label checked against the golden
 //! model by the command itself; its outputs equal those of `fcc cluster`;
 //! and its refusals.
@@ -15,15 +16,27 @@ fn fcc(args: &[&str]) -> Output {
     fcc_testkit::run_in(env!("CARGO_BIN_EXE_fcc"), None, args)
 }
 
-/// Each capture at its own size (32, 64 and 128 beams x 1024), K = 7, on
-/// the K_max = 11, 128 x 2048, B = 16 core: the same Verilator model as
-/// fcc-sim's `run_size` test (shared through the cache).
+/// Each capture at its own size (32, 64 and 128 beams x 1024), K = 7, with
+/// fixed and with range-adaptive thresholds (the slopes are run registers),
+/// on the K_max = 11, 128 x 2048, B = 16 core of slopes 0: the same
+/// Verilator model as fcc-sim's `run_size` test (shared through the cache).
 #[test]
 fn ouster_captures_on_the_virtual_board_equal_the_golden_model() {
     let data = lidar_data();
     let d = tmpdir("ouster");
-    for (pcap, json) in SAMPLE_CAPTURES {
-        let stem = pcap.trim_end_matches(".pcap");
+    // Every capture with `paper`; the 32-beam and the long-range 128-beam
+    // sensor (where far objects gain most) with `adaptive` too.
+    let runs = SAMPLE_CAPTURES.iter().flat_map(|c| {
+        let adaptive = c.0.starts_with("OS-1-32") || c.0.starts_with("OS-2-128");
+        let presets: &[&str] = if adaptive {
+            &["paper", "adaptive"]
+        } else {
+            &["paper"]
+        };
+        presets.iter().map(move |preset| (c, *preset))
+    });
+    for ((pcap, json), preset) in runs {
+        let stem = format!("{}_{preset}", pcap.trim_end_matches(".pcap"));
         let (hw, sw) = (
             d.join(format!("{stem}_hw.npy")),
             d.join(format!("{stem}_sw.npy")),
@@ -34,6 +47,8 @@ fn ouster_captures_on_the_virtual_board_equal_the_golden_model() {
             "board",
             "run",
             "--virtual",
+            "--preset",
+            preset,
             "--input",
             s(&input),
             "--meta",
@@ -42,13 +57,15 @@ fn ouster_captures_on_the_virtual_board_equal_the_golden_model() {
             s(&hw),
         ]);
         let out = text(&o);
-        assert!(o.status.success(), "{pcap}: {out}");
+        assert!(o.status.success(), "{pcap} {preset}: {out}");
         assert!(out.contains("labels equal to the golden model's"), "{out}");
         assert!(out.contains("K_max 11"), "one K_max = 11 core: {out}");
         assert!(out.contains("PASS: 1 frame through the core"), "{out}");
         eprintln!("{out}");
         let o = fcc(&[
             "cluster",
+            "--preset",
+            preset,
             "--label-bits",
             "16",
             "--input",
@@ -58,15 +75,15 @@ fn ouster_captures_on_the_virtual_board_equal_the_golden_model() {
             "--output",
             s(&sw),
         ]);
-        assert!(o.status.success(), "{pcap}: {}", text(&o));
+        assert!(o.status.success(), "{pcap} {preset}: {}", text(&o));
         let (a, b) = (
             fcc_npy::read_labels(&hw).unwrap(),
             fcc_npy::read_labels(&sw).unwrap(),
         );
-        assert_eq!((a.rows, a.cols), (b.rows, b.cols), "{pcap}");
+        assert_eq!((a.rows, a.cols), (b.rows, b.cols), "{pcap} {preset}");
         if let Some(i) = (0..a.labels.len()).find(|&i| a.labels[i] != b.labels[i]) {
             panic!(
-                "{pcap}: board output differs from fcc cluster at row {} col {}: expected {} != got {}",
+                "{pcap} {preset}: board output differs from fcc cluster at row {} col {}: expected {} != got {}",
                 i / a.cols,
                 i % a.cols,
                 b.labels[i],

@@ -98,10 +98,34 @@ fn sim_rtl_runs_a_64x1024_frame_at_k7_on_the_k11_128x2048_core() {
     assert!(o.status.success(), "{t}");
     assert!(t.contains("PASS: 65536 labels match"), "{t}");
     assert!(
-        t.contains("run registers: rows=64 cols=1024 fsize=7 th_h=0.4 th_v=0.8"),
+        t.contains(
+            "run registers: rows=64 cols=1024 fsize=7 th_h=0.4 th_v=0.8 th_h_slope=0 th_v_slope=0"
+        ),
         "{t}"
     );
     assert!(t.contains("rows=128 cols=2048 fsize=11"), "{t}");
+    // The slopes are run registers too: range-adaptive thresholds on the
+    // core built with slopes 0.
+    let o = fcc(&[
+        "sim",
+        "--rtl",
+        s(&k11),
+        "--input",
+        s(&npy),
+        "--fsize",
+        "5",
+        "--th-h-slope",
+        "0.01",
+        "--th-v-slope",
+        "0.035",
+    ]);
+    let t = text(&o);
+    assert!(o.status.success(), "{t}");
+    assert!(t.contains("PASS: 65536 labels match"), "{t}");
+    assert!(
+        t.contains("fsize=5 th_h=0.5 th_v=1 th_h_slope=0.01 th_v_slope=0.035"),
+        "{t}"
+    );
 }
 
 /// Nothing is built or simulated for a frame the build cannot take: each
@@ -121,8 +145,8 @@ fn sim_rtl_refuses_what_the_build_cannot_run() {
     };
     let cases: [(&[&str], &str); 7] = [
         (
-            &["--th-v-slope", "0.05"],
-            "th_v_slope = 0.05 must be the build's (0 and 0)",
+            &["--th-v-slope", "1"],
+            "th_v_slope = 1 is out of range: 0 <= th_v_slope < 1 metre per metre",
         ),
         (&["--bridge", "4"], "bridge = 4 is out of range"),
         (

@@ -12,8 +12,13 @@ use crate::hal::{DmaBuffer, Hal, Window, DMA_ALIGN};
 /// must hold a label.
 pub const LABELS_PER_BEAT: u32 = 4;
 /// Every bit of the ERROR register (one per run register).
-const ERROR_ALL: u32 =
-    bits::ERROR_K | bits::ERROR_TH_H | bits::ERROR_TH_V | bits::ERROR_ROWS | bits::ERROR_COLS;
+const ERROR_ALL: u32 = bits::ERROR_K
+    | bits::ERROR_TH_H
+    | bits::ERROR_TH_V
+    | bits::ERROR_ROWS
+    | bits::ERROR_COLS
+    | bits::ERROR_SLOPE_H
+    | bits::ERROR_SLOPE_V;
 /// Bytes of one label in the S2MM buffer.
 const LABEL_BYTES: usize = 2;
 
@@ -27,6 +32,10 @@ pub struct RunConfig {
     /// Thresholds in Q7.8 (`fcc_params::quantize_threshold`).
     pub th_h_q: u32,
     pub th_v_q: u32,
+    /// Threshold slopes in UQ0.16 (`fcc_params::quantize_slope`; 0: the
+    /// threshold is fixed).
+    pub th_h_slope_q: u32,
+    pub th_v_slope_q: u32,
 }
 
 impl RunConfig {
@@ -278,6 +287,8 @@ impl<H: Hal> Driver<H> {
             k: rd(offset::RUN_K)?,
             th_h_q: rd(offset::RUN_TH_H)?,
             th_v_q: rd(offset::RUN_TH_V)?,
+            th_h_slope_q: rd(offset::RUN_SLOPE_H)?,
+            th_v_slope_q: rd(offset::RUN_SLOPE_V)?,
         };
         let mut d = Driver {
             defaults,
@@ -401,6 +412,8 @@ impl<H: Hal> Driver<H> {
         self.core_w(offset::RUN_TH_V, run.th_v_q)?;
         self.core_w(offset::RUN_ROWS, run.rows)?;
         self.core_w(offset::RUN_COLS, run.cols)?;
+        self.core_w(offset::RUN_SLOPE_H, run.th_h_slope_q)?;
+        self.core_w(offset::RUN_SLOPE_V, run.th_v_slope_q)?;
         let refused = self.core_r(offset::ERROR)? & ERROR_ALL;
         if refused != 0 {
             self.core_w(offset::ERROR, refused)?;

@@ -40,6 +40,18 @@ impl RefusedBits {
                 run.cols,
                 "RUN_COLS_MIN (32) ..= COLS_MAX",
             ),
+            (
+                bits::ERROR_SLOPE_H,
+                "RUN_SLOPE_H",
+                run.th_h_slope_q,
+                "0 ..= 0xFFFF (UQ0.16)",
+            ),
+            (
+                bits::ERROR_SLOPE_V,
+                "RUN_SLOPE_V",
+                run.th_v_slope_q,
+                "0 ..= 0xFFFF (UQ0.16)",
+            ),
         ]
         .into_iter()
         .filter(move |(b, ..)| self.0 & b != 0)

@@ -57,6 +57,8 @@ fn run_rule(o: u32) -> Option<(u32, Accepts)> {
         offset::RUN_TH_V => (bits::ERROR_TH_V, |v| (1..=0x8000).contains(&v)),
         offset::RUN_ROWS => (bits::ERROR_ROWS, |v| (1..=16).contains(&v)),
         offset::RUN_COLS => (bits::ERROR_COLS, |v| (32..=256).contains(&v)),
+        offset::RUN_SLOPE_H => (bits::ERROR_SLOPE_H, |v| v <= 0xffff),
+        offset::RUN_SLOPE_V => (bits::ERROR_SLOPE_V, |v| v <= 0xffff),
         _ => return None,
     })
 }
@@ -80,6 +82,8 @@ fn fake(lpb: u32) -> Fake {
         (offset::RUN_TH_V, 256),
         (offset::RUN_ROWS, 16),
         (offset::RUN_COLS, 256),
+        (offset::RUN_SLOPE_H, 0),
+        (offset::RUN_SLOPE_V, 3277),
     ]);
     Fake {
         core,
@@ -265,7 +269,9 @@ fn defaults_are_read_from_the_run_registers() {
             cols: 64,
             k: 5,
             th_h_q: 128,
-            th_v_q: 256
+            th_v_q: 256,
+            th_h_slope_q: 0,
+            th_v_slope_q: 3277,
         }
     );
 }
@@ -279,6 +285,8 @@ fn run_values_are_written_to_the_run_registers() {
         k: 3,
         th_h_q: 1,
         th_v_q: 0x8000,
+        th_h_slope_q: 0xffff,
+        th_v_slope_q: 1,
     };
     d.program_run(&run).unwrap();
     let c = &d.hal().core;
@@ -288,9 +296,11 @@ fn run_values_are_written_to_the_run_registers() {
         offset::RUN_K,
         offset::RUN_TH_H,
         offset::RUN_TH_V,
+        offset::RUN_SLOPE_H,
+        offset::RUN_SLOPE_V,
     ]
     .map(|o| c[&o]);
-    assert_eq!(got, [3, 32, 3, 1, 0x8000]);
+    assert_eq!(got, [3, 32, 3, 1, 0x8000, 0xffff, 1]);
     assert_eq!(c.get(&offset::ERROR).copied().unwrap_or(0), 0);
 }
 
@@ -341,6 +351,14 @@ fn refused_run_values_name_their_registers_and_clear_error() {
         ),
         (
             RunConfig {
+                th_v_slope_q: 0x1_0000,
+                ..base
+            },
+            bits::ERROR_SLOPE_V,
+            &["RUN_SLOPE_V = 65536"],
+        ),
+        (
+            RunConfig {
                 k: 13,
                 cols: 300,
                 ..base
@@ -371,7 +389,7 @@ fn refused_run_values_name_their_registers_and_clear_error() {
         assert!(msg.contains("K_MAX 7, ROWS_MAX 16, COLS_MAX 256"), "{msg}");
         // ERROR cleared first (all bits), and the refused bits written back.
         let w = &d.hal().writes;
-        assert_eq!(w.first(), Some(&(offset::ERROR, 0x1f)), "{w:?}");
+        assert_eq!(w.first(), Some(&(offset::ERROR, 0x7f)), "{w:?}");
         assert_eq!(w.last(), Some(&(offset::ERROR, want)), "{w:?}");
         assert_eq!(d.hal().core[&offset::ERROR], 0, "{run:?}");
         // The core kept its values; a good run goes through.

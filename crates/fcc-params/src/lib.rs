@@ -283,6 +283,17 @@ impl FccParams {
         self.th_v_q() * self.th_v_q()
     }
 
+    /// Quantised intra-channel slope `A` (UQ0.16, [`quantize_slope`]): the
+    /// RUN_SLOPE_H register's value.
+    pub fn th_h_slope_q(&self) -> i64 {
+        quantize_slope(self.th_h_slope)
+    }
+
+    /// As [`th_h_slope_q`](Self::th_h_slope_q), inter-channel (RUN_SLOPE_V).
+    pub fn th_v_slope_q(&self) -> i64 {
+        quantize_slope(self.th_v_slope)
+    }
+
     /// Squared quantised slope `S = A^2 >> 8` (UQ0.24, below 2^24): a
     /// point's squared threshold is `(S * rc2) >> 8` (spec §2).
     pub fn th_h_slope_sq(&self) -> u64 {

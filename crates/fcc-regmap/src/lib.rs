@@ -41,6 +41,8 @@ pub mod offset {
     pub const RUN_TH_V: u32 = 0x088;
     pub const RUN_ROWS: u32 = 0x08C;
     pub const RUN_COLS: u32 = 0x090;
+    pub const RUN_SLOPE_H: u32 = 0x094;
+    pub const RUN_SLOPE_V: u32 = 0x098;
 }
 
 /// Bit masks of the fields.
@@ -70,11 +72,19 @@ pub mod bits {
     pub const ERROR_ROWS: u32 = 1 << 3;
     /// ERROR: a write to RUN_COLS was refused.
     pub const ERROR_COLS: u32 = 1 << 4;
+    /// ERROR: a write to RUN_SLOPE_H was refused.
+    pub const ERROR_SLOPE_H: u32 = 1 << 5;
+    /// ERROR: a write to RUN_SLOPE_V was refused.
+    pub const ERROR_SLOPE_V: u32 = 1 << 6;
 }
 
 /// Largest threshold register value: `floor(th * 256 + 0.5)` of a threshold
 /// below 128 m (the Q7.8 rule of the golden model).
 pub const TH_Q_MAX: u32 = 0x8000;
+
+/// Largest threshold slope register value: a slope below 1 metre per metre
+/// in UQ0.16, `floor(a * 65536 + 0.5)` (spec §2; 0: a fixed threshold).
+pub const SLOPE_Q_MAX: u32 = 0xFFFF;
 
 /// Fewest columns a frame may have (RUN_COLS), in every build. The
 /// representative of a row's first columns is written back a few tens of

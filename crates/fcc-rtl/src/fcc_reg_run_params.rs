@@ -1,7 +1,7 @@
 //! `FccRegRunParams`: the run-parameter registers of the register file and
 //! their ERROR register, each a field block of its access type: RUN_K,
-//! RUN_ROWS, RUN_COLS (`FccRegRun`), RUN_TH_H and RUN_TH_V
-//! (`FccRegThresholds`), ERROR (`FccRegW1c`, set by a refused write). The
+//! RUN_ROWS, RUN_COLS (`FccRegRun`), RUN_TH_H, RUN_TH_V, RUN_SLOPE_H and
+//! RUN_SLOPE_V (`FccRegThresholds`), ERROR (`FccRegW1c`, set by a refused write). The
 //! ranges, reset values and ERROR bits are those of the map.
 //!
 //! Each register has a shadow (written, read back) and an active copy (the
@@ -10,13 +10,15 @@
 //! core's idle flag comes one cycle early (`idle_next`) and is registered
 //! here in kept copies, one per group of at most 64 loads: `idle_dims` for
 //! the active RUN_K, RUN_ROWS, RUN_COLS and -(tH^2 + 1), `idle_th_v` for the
-//! active -tV^2 and STATUS.IDLE (`idle`).
+//! active -tV^2 and STATUS.IDLE (`idle`), `idle_sl` for the active squared
+//! slopes.
 //!
 //! The registers are reset by `rst` one cycle late, from kept copies of
 //! `rst`, one per group of at most 64 flip-flops (`run_rst_dims`: RUN_K,
-//! RUN_ROWS, RUN_COLS, shadow and active; `run_rst_th_h`, `run_rst_th_v`: a
-//! shadow threshold and its square; `run_rst_act_h`, `run_rst_act_v`: the
-//! active addends). Nothing can change them in that cycle (no write is held,
+//! RUN_ROWS, RUN_COLS, shadow and active; `run_rst_th_h`, `run_rst_th_v`,
+//! `run_rst_sl_h`, `run_rst_sl_v`: a shadow threshold or slope and its
+//! square; `run_rst_act_h`, `run_rst_act_v`: the active addends;
+//! `run_rst_act_sl`: the active squared slopes). Nothing can change them in that cycle (no write is held,
 //! the squarer is in reset, the pipeline reads them only after its merge
 //! table is initialised), and no read is taken in it (`read_block`).
 
@@ -25,7 +27,7 @@ use rust_hdl::prelude::*;
 use crate::fcc_fanout_reg::MAX_FANOUT;
 use crate::fcc_keep_reg::FccKeepReg;
 use crate::fcc_reg_run::FccRegRun;
-use crate::fcc_reg_thresholds::FccRegThresholds;
+use crate::fcc_reg_thresholds::{FccRegThresholds, SquaredResets};
 use crate::fcc_reg_w1c::FccRegW1c;
 use crate::regmap::{self, offset, Access, Register, RunRange};
 
@@ -44,6 +46,8 @@ pub struct FccRegRunParams {
     pub we_th_v: Signal<In, Bit>,
     pub we_rows: Signal<In, Bit>,
     pub we_cols: Signal<In, Bit>,
+    pub we_sl_h: Signal<In, Bit>,
+    pub we_sl_v: Signal<In, Bit>,
     /// The held write data.
     pub wdata: Signal<In, Bits<32>>,
     /// No write is performed (the squarer runs).
@@ -63,11 +67,15 @@ pub struct FccRegRunParams {
     pub err_th_v: Signal<Out, Bit>,
     pub err_rows: Signal<Out, Bit>,
     pub err_cols: Signal<Out, Bit>,
+    pub err_sl_h: Signal<Out, Bit>,
+    pub err_sl_v: Signal<Out, Bit>,
     pub shadow_k: Signal<Out, Bits<16>>,
     pub shadow_th_h: Signal<Out, Bits<16>>,
     pub shadow_th_v: Signal<Out, Bits<16>>,
     pub shadow_rows: Signal<Out, Bits<16>>,
     pub shadow_cols: Signal<Out, Bits<16>>,
+    pub shadow_sl_h: Signal<Out, Bits<16>>,
+    pub shadow_sl_v: Signal<Out, Bits<16>>,
     // Active run parameters (constant during a frame).
     pub run_k: Signal<Out, Bits<4>>,
     /// -(tH^2 + 1), 36-bit two's complement.
@@ -76,6 +84,9 @@ pub struct FccRegRunParams {
     pub run_th_v_c: Signal<Out, Bits<36>>,
     pub run_rows: Signal<Out, Bits<8>>,
     pub run_cols: Signal<Out, Bits<13>>,
+    /// Squared slopes `A^2 >> 8` (UQ0.24).
+    pub run_sl_h: Signal<Out, Bits<24>>,
+    pub run_sl_v: Signal<Out, Bits<24>>,
     reg_k: FccRegRun<4>,
     reg_rows: FccRegRun<8>,
     reg_cols: FccRegRun<13>,
@@ -86,8 +97,12 @@ pub struct FccRegRunParams {
     run_rst_th_v: FccKeepReg<Bit>,
     run_rst_act_h: FccKeepReg<Bit>,
     run_rst_act_v: FccKeepReg<Bit>,
+    run_rst_sl_h: FccKeepReg<Bit>,
+    run_rst_sl_v: FccKeepReg<Bit>,
+    run_rst_act_sl: FccKeepReg<Bit>,
     idle_dims: FccKeepReg<Bit>,
     idle_th_v: FccKeepReg<Bit>,
+    idle_sl: FccKeepReg<Bit>,
     // The position of each register's ERROR field among the ERROR block's
     // bits, in the map.
     _err_k: usize,
@@ -95,6 +110,8 @@ pub struct FccRegRunParams {
     _err_th_v: usize,
     _err_rows: usize,
     _err_cols: usize,
+    _err_sl_h: usize,
+    _err_sl_v: usize,
 }
 
 /// The register at `off` in `regs`, checked to have the access `access`.
@@ -130,6 +147,9 @@ impl FccRegRunParams {
         let (th_range, th_h_reset) = run(regs, offset::RUN_TH_H);
         let (th_v_range, th_v_reset) = run(regs, offset::RUN_TH_V);
         assert_eq!(th_range, th_v_range, "the thresholds share one range check");
+        let (sl_range, sl_h_reset) = run(regs, offset::RUN_SLOPE_H);
+        let (sl_v_range, sl_v_reset) = run(regs, offset::RUN_SLOPE_V);
+        assert_eq!(sl_range, sl_v_range, "the slopes share one range check");
         let (rows_range, rows_reset) = run(regs, offset::RUN_ROWS);
         let (cols_range, cols_reset) = run(regs, offset::RUN_COLS);
         Self {
@@ -144,6 +164,8 @@ impl FccRegRunParams {
             we_th_v: Default::default(),
             we_rows: Default::default(),
             we_cols: Default::default(),
+            we_sl_h: Default::default(),
+            we_sl_v: Default::default(),
             wdata: Default::default(),
             hold: Default::default(),
             defer: Default::default(),
@@ -156,34 +178,55 @@ impl FccRegRunParams {
             err_th_v: Default::default(),
             err_rows: Default::default(),
             err_cols: Default::default(),
+            err_sl_h: Default::default(),
+            err_sl_v: Default::default(),
             shadow_k: Default::default(),
             shadow_th_h: Default::default(),
             shadow_th_v: Default::default(),
             shadow_rows: Default::default(),
             shadow_cols: Default::default(),
+            shadow_sl_h: Default::default(),
+            shadow_sl_v: Default::default(),
             run_k: Default::default(),
             run_th_h_c: Default::default(),
             run_th_v_c: Default::default(),
             run_rows: Default::default(),
             run_cols: Default::default(),
+            run_sl_h: Default::default(),
+            run_sl_v: Default::default(),
             // RUN_K takes odd values only.
             reg_k: FccRegRun::new(k_range, true, k_reset),
             reg_rows: FccRegRun::new(rows_range, false, rows_reset),
             reg_cols: FccRegRun::new(cols_range, false, cols_reset),
-            thresholds: FccRegThresholds::new(th_range, th_h_reset, th_v_reset),
+            thresholds: FccRegThresholds::new(
+                th_range,
+                sl_range,
+                SquaredResets {
+                    th_h: th_h_reset,
+                    th_v: th_v_reset,
+                    slope_h: sl_h_reset,
+                    slope_v: sl_v_reset,
+                },
+            ),
             error: FccRegW1c::new(&err_lsbs),
             run_rst_dims: FccKeepReg::with_max_fanout(MAX_FANOUT),
             run_rst_th_h: FccKeepReg::with_max_fanout(MAX_FANOUT),
             run_rst_th_v: FccKeepReg::with_max_fanout(MAX_FANOUT),
             run_rst_act_h: FccKeepReg::with_max_fanout(MAX_FANOUT),
             run_rst_act_v: FccKeepReg::with_max_fanout(MAX_FANOUT),
+            run_rst_sl_h: FccKeepReg::with_max_fanout(MAX_FANOUT),
+            run_rst_sl_v: FccKeepReg::with_max_fanout(MAX_FANOUT),
+            run_rst_act_sl: FccKeepReg::with_max_fanout(MAX_FANOUT),
             idle_dims: Default::default(),
             idle_th_v: Default::default(),
+            idle_sl: Default::default(),
             _err_k: err(offset::RUN_K),
             _err_th_h: err(offset::RUN_TH_H),
             _err_th_v: err(offset::RUN_TH_V),
             _err_rows: err(offset::RUN_ROWS),
             _err_cols: err(offset::RUN_COLS),
+            _err_sl_h: err(offset::RUN_SLOPE_H),
+            _err_sl_v: err(offset::RUN_SLOPE_V),
         }
     }
 }
@@ -198,6 +241,14 @@ impl Logic for FccRegRunParams {
         self.run_rst_act_v.clock.next = self.clk.val();
         self.idle_dims.clock.next = self.clk.val();
         self.idle_th_v.clock.next = self.clk.val();
+        self.run_rst_sl_h.clock.next = self.clk.val();
+        self.run_rst_sl_v.clock.next = self.clk.val();
+        self.run_rst_act_sl.clock.next = self.clk.val();
+        self.idle_sl.clock.next = self.clk.val();
+        self.run_rst_sl_h.d.next = self.rst.val();
+        self.run_rst_sl_v.d.next = self.rst.val();
+        self.run_rst_act_sl.d.next = self.rst.val();
+        self.idle_sl.d.next = self.idle_next.val();
         self.run_rst_dims.d.next = self.rst.val();
         self.run_rst_th_h.d.next = self.rst.val();
         self.run_rst_th_v.d.next = self.rst.val();
@@ -236,14 +287,20 @@ impl Logic for FccRegRunParams {
         self.thresholds.rst_v.next = self.run_rst_th_v.q.val();
         self.thresholds.rst_act_h.next = self.run_rst_act_h.q.val();
         self.thresholds.rst_act_v.next = self.run_rst_act_v.q.val();
+        self.thresholds.rst_sl_h.next = self.run_rst_sl_h.q.val();
+        self.thresholds.rst_sl_v.next = self.run_rst_sl_v.q.val();
+        self.thresholds.rst_act_sl.next = self.run_rst_act_sl.q.val();
         self.thresholds.w_take.next = self.w_take.val();
         self.thresholds.bus_wdata.next = self.bus_wdata.val();
         self.thresholds.wr.next = self.wr.val();
         self.thresholds.we_h.next = self.we_th_h.val();
         self.thresholds.we_v.next = self.we_th_v.val();
+        self.thresholds.we_sl_h.next = self.we_sl_h.val();
+        self.thresholds.we_sl_v.next = self.we_sl_v.val();
         self.thresholds.wdata.next = self.wdata.val().get_bits::<16>(0);
         self.thresholds.load_h.next = self.idle_dims.q.val();
         self.thresholds.load_v.next = self.idle_th_v.q.val();
+        self.thresholds.load_sl.next = self.idle_sl.q.val();
         self.hold.next = self.thresholds.hold.val();
         self.defer.next = self.thresholds.defer.val();
         self.done.next = self.thresholds.done.val();
@@ -273,16 +330,28 @@ impl Logic for FccRegRunParams {
             self.error.set[e].next = self.reg_cols.refused.val();
             self.err_cols.next = self.error.q[e].val();
         }
+        for e in self._err_sl_h..(self._err_sl_h + 1) {
+            self.error.set[e].next = self.thresholds.refused_sl_h.val();
+            self.err_sl_h.next = self.error.q[e].val();
+        }
+        for e in self._err_sl_v..(self._err_sl_v + 1) {
+            self.error.set[e].next = self.thresholds.refused_sl_v.val();
+            self.err_sl_v.next = self.error.q[e].val();
+        }
         // ---- Outputs.
         self.shadow_k.next = self.reg_k.shadow.val();
         self.shadow_th_h.next = self.thresholds.shadow_h.val();
         self.shadow_th_v.next = self.thresholds.shadow_v.val();
         self.shadow_rows.next = self.reg_rows.shadow.val();
         self.shadow_cols.next = self.reg_cols.shadow.val();
+        self.shadow_sl_h.next = self.thresholds.shadow_sl_h.val();
+        self.shadow_sl_v.next = self.thresholds.shadow_sl_v.val();
         self.run_k.next = self.reg_k.active.val();
         self.run_th_h_c.next = self.thresholds.run_th_h_c.val();
         self.run_th_v_c.next = self.thresholds.run_th_v_c.val();
         self.run_rows.next = self.reg_rows.active.val();
         self.run_cols.next = self.reg_cols.active.val();
+        self.run_sl_h.next = self.thresholds.run_sl_h.val();
+        self.run_sl_v.next = self.thresholds.run_sl_v.val();
     }
 }

@@ -12,7 +12,7 @@
 //! | FRAME_COUNT | RO counter | `FccRegCounter` in `FccRegFrameStatus` |
 //! | CLUSTERS .. GEAR_STALLS | RO, latched at the frame's end | `FccRegSnapshot` in `FccRegFrameStatus` |
 //! | RUN_K, RUN_ROWS, RUN_COLS | RW, range-checked, shadow and active copy | `FccRegRun` in `FccRegRunParams` |
-//! | RUN_TH_H, RUN_TH_V | the same, squared by a shared squarer | `FccRegThresholds` in `FccRegRunParams` |
+//! | RUN_TH_H, RUN_TH_V, RUN_SLOPE_H, RUN_SLOPE_V | the same, squared by a shared squarer | `FccRegSquared` in `FccRegThresholds` in `FccRegRunParams` |
 //! | ERROR | W1C, sticky, set by a refused write | `FccRegW1c` in `FccRegRunParams` |
 //! | STATUS.IDLE | RO | the core's idle flag, registered in `FccRegRunParams` |
 //! | build constants | RO | literals of the multiplexer |
@@ -114,6 +114,9 @@ pub struct FccRegs {
     pub run_th_v_c: Signal<Out, Bits<36>>,
     pub run_rows: Signal<Out, Bits<8>>,
     pub run_cols: Signal<Out, Bits<13>>,
+    /// Squared threshold slopes `A^2 >> 8` (UQ0.24, spec §2).
+    pub run_sl_h: Signal<Out, Bits<24>>,
+    pub run_sl_v: Signal<Out, Bits<24>>,
     bus: FccAxilAdapter,
     mux: FccRegMux,
     // Field blocks.
@@ -130,6 +133,8 @@ pub struct FccRegs {
     _we_th_v: usize,
     _we_rows: usize,
     _we_cols: usize,
+    _we_sl_h: usize,
+    _we_sl_v: usize,
 }
 
 impl FccRegs {
@@ -151,14 +156,18 @@ impl FccRegs {
                 offset::RUN_TH_V => MuxSrc::W16(4),
                 offset::RUN_ROWS => MuxSrc::W16(5),
                 offset::RUN_COLS => MuxSrc::W16(6),
+                offset::RUN_SLOPE_H => MuxSrc::W16(7),
+                offset::RUN_SLOPE_V => MuxSrc::W16(8),
                 // Flags: 0 irq_en, 1 done_sticky, 2 idle, 3 overflow,
-                // 4 frame_error, 5 .. 9 the ERROR bits.
+                // 4 frame_error, 5 .. 11 the ERROR bits.
                 offset::ERROR => MuxSrc::Flags(flags(&[
                     (bits::ERROR_K, 5),
                     (bits::ERROR_TH_H, 6),
                     (bits::ERROR_TH_V, 7),
                     (bits::ERROR_ROWS, 8),
                     (bits::ERROR_COLS, 9),
+                    (bits::ERROR_SLOPE_H, 10),
+                    (bits::ERROR_SLOPE_V, 11),
                 ])),
                 offset::CONTROL => MuxSrc::Flags(flags(&[(bits::CONTROL_IRQ_ENABLE, 0)])),
                 offset::STATUS => MuxSrc::Flags(flags(&[
@@ -188,6 +197,8 @@ impl FccRegs {
             offset::RUN_TH_V,
             offset::RUN_ROWS,
             offset::RUN_COLS,
+            offset::RUN_SLOPE_H,
+            offset::RUN_SLOPE_V,
         ];
         for off in &writable {
             assert!(served.contains(off), "no field block serves {off:#x}");
@@ -255,6 +266,8 @@ impl FccRegs {
             run_th_v_c: Default::default(),
             run_rows: Default::default(),
             run_cols: Default::default(),
+            run_sl_h: Default::default(),
+            run_sl_v: Default::default(),
             bus: FccAxilAdapter::new(&writable),
             mux: FccRegMux::new(entries),
             control: FccRegControl::new(),
@@ -268,6 +281,8 @@ impl FccRegs {
             _we_th_v: we(offset::RUN_TH_V),
             _we_rows: we(offset::RUN_ROWS),
             _we_cols: we(offset::RUN_COLS),
+            _we_sl_h: we(offset::RUN_SLOPE_H),
+            _we_sl_v: we(offset::RUN_SLOPE_V),
         }
     }
 }
@@ -358,12 +373,20 @@ impl Logic for FccRegs {
         for w in self._we_cols..(self._we_cols + 1) {
             self.run.we_cols.next = self.bus.we[w].val();
         }
+        for w in self._we_sl_h..(self._we_sl_h + 1) {
+            self.run.we_sl_h.next = self.bus.we[w].val();
+        }
+        for w in self._we_sl_v..(self._we_sl_v + 1) {
+            self.run.we_sl_v.next = self.bus.we[w].val();
+        }
         // ---- Read multiplexer (inputs numbered as in `new`).
         self.mux.flags[5].next = self.run.err_k.val();
         self.mux.flags[6].next = self.run.err_th_h.val();
         self.mux.flags[7].next = self.run.err_th_v.val();
         self.mux.flags[8].next = self.run.err_rows.val();
         self.mux.flags[9].next = self.run.err_cols.val();
+        self.mux.flags[10].next = self.run.err_sl_h.val();
+        self.mux.flags[11].next = self.run.err_sl_v.val();
         self.mux.addr.next = self.bus.raddr.val();
         self.mux.addr_hi.next = self.bus.raddr_hi.val();
         self.mux.w32[0].next = self.frame_status.count.val();
@@ -382,6 +405,8 @@ impl Logic for FccRegs {
         self.mux.w16[4].next = self.run.shadow_th_v.val();
         self.mux.w16[5].next = self.run.shadow_rows.val();
         self.mux.w16[6].next = self.run.shadow_cols.val();
+        self.mux.w16[7].next = self.run.shadow_sl_h.val();
+        self.mux.w16[8].next = self.run.shadow_sl_v.val();
         // ---- Outputs.
         self.irq.next = self.frame_status.done.val() & self.control.irq_enable.val();
         self.frame_done.next = self.frame_status.frame_done.val();
@@ -397,5 +422,7 @@ impl Logic for FccRegs {
         self.run_th_v_c.next = self.run.run_th_v_c.val();
         self.run_rows.next = self.run.run_rows.val();
         self.run_cols.next = self.run.run_cols.val();
+        self.run_sl_h.next = self.run.run_sl_h.val();
+        self.run_sl_v.next = self.run.run_sl_v.val();
     }
 }

@@ -5,7 +5,9 @@
 //! `busy` stays high until the result is ready (at most 17 cycles), then
 //! `c_lt = -a^2` and `c_le = -(a^2 + 1)` (36-bit two's complement, the
 //! `FccSqDist` addends of `d2 < a^2` and `d2 <= a^2`) hold until the next
-//! `start`. `a` <= 0x8000, so `a^2` <= 2^30.
+//! `start`, with `s = a^2 >> 8` (24 bits, the squared slope of a slope
+//! register, spec §2). For a threshold `a` <= 0x8000, so `a^2` <= 2^30;
+//! a slope takes any 16-bit `a`.
 //!
 //! The Verilog is written by hand (`Verilog::Custom`) for the widening of the
 //! 32-bit square to 36 bits; `update` models it cycle for cycle (with
@@ -23,6 +25,7 @@ pub struct FccThSquare {
     pub busy: Signal<Out, Bit>,
     pub c_lt: Signal<Out, Bits<36>>,
     pub c_le: Signal<Out, Bits<36>>,
+    pub s: Signal<Out, Bits<24>>,
     // Model state: multiplier, multiplicand, sum, busy.
     _m: u64,
     _c: u64,
@@ -41,6 +44,7 @@ impl FccThSquare {
             busy: Default::default(),
             c_lt: Default::default(),
             c_le: Default::default(),
+            s: Default::default(),
             _m: 0,
             _c: 0,
             _acc: 0,
@@ -80,12 +84,14 @@ impl Logic for FccThSquare {
         self.busy.next = self._busy;
         self.c_lt.next = ((1u64 << 36).wrapping_sub(self._acc) & MASK36).to_bits::<36>();
         self.c_le.next = (!self._acc & MASK36).to_bits::<36>();
+        self.s.next = (self._acc >> 8).to_bits::<24>();
     }
 
     fn connect(&mut self) {
         self.busy.connect();
         self.c_lt.connect();
         self.c_le.connect();
+        self.s.connect();
     }
 
     fn hdl(&self) -> Verilog {
@@ -126,6 +132,7 @@ impl Logic for FccThSquare {
              \x20   busy = run;\n\
              \x20   c_lt = 36'd0 - {4'd0, acc};\n\
              \x20   c_le = ~{4'd0, acc};\n\
+             \x20   s = acc[31:8];\n\
              end\n"
                 .to_string(),
         )

@@ -165,9 +165,6 @@ pub struct FccTop {
     out_start_net: FccFanoutNet<Bit>,
     // Constants.
     sign16: Constant<Bits<16>>,
-    /// Squared threshold slopes `S = A^2 >> 8` of the build (spec §2).
-    slope_h: Constant<Bits<24>>,
-    slope_v: Constant<Bits<24>>,
     zero8: Constant<Bits<8>>,
     one8: Constant<Bits<8>>,
     zero12: Constant<Bits<12>>,
@@ -271,8 +268,6 @@ impl FccTop {
             out_start: Default::default(),
             out_start_net: Default::default(),
             sign16: kb(0x8000),
-            slope_h: kb(p.th_h_slope_sq()),
-            slope_v: kb(p.th_v_slope_sq()),
             zero8: kb(0),
             one8: kb(1),
             zero12: kb(0),
@@ -495,8 +490,8 @@ impl Logic for FccTop {
         // ---- Blocks.
         self.pix_thr.rst.next = self.intra_rst.q.val();
         self.pix_thr.pix.next = self.slot_q.q.val();
-        self.pix_thr.sh.next = self.slope_h.val();
-        self.pix_thr.sv.next = self.slope_v.val();
+        self.pix_thr.sh.next = self.regs.run_sl_h.val();
+        self.pix_thr.sv.next = self.regs.run_sl_v.val();
         self.pix_thr.ch_t.next = self.regs.run_th_h_c.val();
         self.pix_thr.cv_t.next = self.regs.run_th_v_c.val();
         self.intra.rst.next = self.intra_rst.q.val();

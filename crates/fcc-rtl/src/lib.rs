@@ -14,7 +14,8 @@
 //! inside `fcc_regs`: `fcc_axil_adapter`, `fcc_reg_mux` and the field blocks
 //! `fcc_reg_control`, `fcc_reg_w1c`, `fcc_reg_frame_status` (with
 //! `fcc_reg_counter`, `fcc_reg_snapshot`), `fcc_reg_run_params` (with
-//! `fcc_reg_run`, `fcc_range_check`, `fcc_reg_thresholds`, `fcc_reg_w1c`)).
+//! `fcc_reg_run`, `fcc_range_check`, `fcc_reg_thresholds` (with
+//! `fcc_reg_squared`, `fcc_hi_zero_check`), `fcc_reg_w1c`)).
 //! Sizes that vary with the configuration (K, rows, columns, label bits,
 //! thresholds, labels per beat) are read from [`FccParams`] when the blocks
 //! are built, so one binary generates every configuration.
@@ -93,6 +94,7 @@ mod fcc_first_set;
 mod fcc_flatten;
 mod fcc_gearbox;
 mod fcc_group_or;
+mod fcc_hi_zero_check;
 mod fcc_intra;
 mod fcc_intra_thr;
 mod fcc_join_queue;
@@ -118,6 +120,7 @@ mod fcc_reg_mux;
 mod fcc_reg_run;
 mod fcc_reg_run_params;
 mod fcc_reg_snapshot;
+mod fcc_reg_squared;
 mod fcc_reg_thresholds;
 mod fcc_reg_w1c;
 mod fcc_regs;

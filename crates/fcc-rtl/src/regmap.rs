@@ -18,7 +18,7 @@ use serde::Serialize;
 
 use crate::GENERATOR_VERSION;
 
-pub use fcc_regmap::{bits, offset, ADDR_BITS, ID_MAGIC, RUN_COLS_MIN, TH_Q_MAX};
+pub use fcc_regmap::{bits, offset, ADDR_BITS, ID_MAGIC, RUN_COLS_MIN, SLOPE_Q_MAX, TH_Q_MAX};
 
 /// How software may access a register.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -96,6 +96,7 @@ pub fn run_range(p: &FccParams, off: u32) -> Option<RunRange> {
     let (min, max) = match off {
         offset::RUN_K => (3, p.fsize as u32),
         offset::RUN_TH_H | offset::RUN_TH_V => (1, TH_Q_MAX),
+        offset::RUN_SLOPE_H | offset::RUN_SLOPE_V => (0, SLOPE_Q_MAX),
         offset::RUN_ROWS => (run_rows_min(p), p.rows as u32),
         offset::RUN_COLS => (run_cols_min(p), p.cols as u32),
         _ => return None,
@@ -117,6 +118,8 @@ pub fn run_error_bit(off: u32) -> Option<u32> {
         offset::RUN_TH_V => Some(bits::ERROR_TH_V),
         offset::RUN_ROWS => Some(bits::ERROR_ROWS),
         offset::RUN_COLS => Some(bits::ERROR_COLS),
+        offset::RUN_SLOPE_H => Some(bits::ERROR_SLOPE_H),
+        offset::RUN_SLOPE_V => Some(bits::ERROR_SLOPE_V),
         _ => None,
     }
 }
@@ -330,6 +333,8 @@ pub fn registers(p: &FccParams) -> Vec<Register> {
                 field("TH_V", 2, 1, "a RUN_TH_V write was refused"),
                 field("ROWS", 3, 1, "a RUN_ROWS write was refused"),
                 field("COLS", 4, 1, "a RUN_COLS write was refused"),
+                field("SLOPE_H", 5, 1, "a RUN_SLOPE_H write was refused"),
+                field("SLOPE_V", 6, 1, "a RUN_SLOPE_V write was refused"),
             ],
         },
         status(
@@ -411,6 +416,20 @@ pub fn registers(p: &FccParams) -> Vec<Register> {
             p.cols,
             "Run: columns per frame, RUN_COLS_MIN ..= COLS_MAX",
             whole("COLS", 13, "columns"),
+        ),
+        run(
+            "RUN_SLOPE_H",
+            offset::RUN_SLOPE_H,
+            p.th_h_slope_q() as usize,
+            "Run: intra-channel threshold slope aH = floor(a * 65536 + 0.5), 0 ..= 0xFFFF (0: fixed)",
+            whole("SLOPE", 16, "UQ0.16 metres per metre"),
+        ),
+        run(
+            "RUN_SLOPE_V",
+            offset::RUN_SLOPE_V,
+            p.th_v_slope_q() as usize,
+            "Run: inter-channel threshold slope aV = floor(a * 65536 + 0.5), 0 ..= 0xFFFF (0: fixed)",
+            whole("SLOPE", 16, "UQ0.16 metres per metre"),
         ),
     ]
 }
@@ -576,6 +595,18 @@ mod tests {
             assert!(!run_value_ok(&p, off, 0));
         }
         assert!(!run_value_ok(&p, offset::CONTROL, 1));
+        // Slopes: 0 (fixed) up to the largest the parameters accept.
+        for off in [offset::RUN_SLOPE_H, offset::RUN_SLOPE_V] {
+            assert!(run_value_ok(&p, off, 0));
+            assert!(run_value_ok(&p, off, SLOPE_Q_MAX));
+            assert!(!run_value_ok(&p, off, SLOPE_Q_MAX + 1));
+        }
+        assert_eq!(
+            SLOPE_Q_MAX,
+            (1 << fcc_params::SLOPE_FRAC_BITS) - 1,
+            "a register's slope is UQ0.16"
+        );
+        assert_eq!(fcc_params::quantize_slope(0.99998) as u32, SLOPE_Q_MAX);
     }
 
     #[test]
