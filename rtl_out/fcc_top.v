@@ -54,25 +54,6 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
     output reg  status_frame_done;
     output reg  status_idle;
 
-    // Constant declarations
-    localparam  sign16 = 16'h8000;
-    localparam  zero8 = 8'h0;
-    localparam  one8 = 8'h1;
-    localparam  zero12 = 12'h0;
-    localparam  one12 = 12'h1;
-    localparam  two8 = 8'h2;
-    localparam  two12 = 12'h2;
-    localparam  one10 = 10'b1;
-    localparam  two10 = 10'b10;
-    localparam  zero10 = 10'b0;
-    localparam  limit = 10'b111110000;
-
-    // Enums
-    localparam Phase$Init = 0;
-    localparam Phase$Run = 1;
-    localparam Phase$Drain = 2;
-    localparam Phase$Out = 3;
-
     // Stub signals
     reg  pix_thr$clk;
     reg  pix_thr$rst;
@@ -91,7 +72,8 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
     reg  [11:0] intra$last_col;
     reg  [15:0] intra$key;
     reg  [35:0] intra$ch;
-    wire  [133:0] intra$out;
+    wire  [131:0] intra$out;
+    wire  [1:0] intra$state;
     wire  [16:0] intra$provisional;
     wire  intra$overflow;
     wire  [19:0] intra$unlabelled;
@@ -562,85 +544,45 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
     reg  merge_table_rst$clock;
     reg  merge_table_rst$d;
     wire  merge_table_rst$q;
-    reg  [1:0] phase$d;
-    wire  [1:0] phase$q;
-    reg  phase$clock;
-    reg  tready_q$d;
-    wire  tready_q$q;
-    reg  tready_q$clock;
-    reg  pad_go$d;
-    wire  pad_go$q;
-    reg  pad_go$clock;
-    reg  [73:0] slot_q$d;
-    wire  [73:0] slot_q$q;
-    reg  slot_q$clock;
-    reg  [7:0] row$d;
-    wire  [7:0] row$q;
-    reg  row$clock;
-    reg  [11:0] col$d;
-    wire  [11:0] col$q;
-    reg  col$clock;
-    reg  col0$d;
-    wire  col0$q;
-    reg  col0$clock;
-    reg  col_last$d;
-    wire  col_last$q;
-    reg  col_last$clock;
-    reg  row_last$d;
-    wire  row_last$q;
-    reg  row_last$clock;
-    reg  first$d;
-    wire  first$q;
-    reg  first$clock;
-    reg  pad$d;
-    wire  pad$q;
-    reg  pad$clock;
-    reg  discard$d;
-    wire  discard$q;
-    reg  discard$clock;
-    reg  in_done$d;
-    wire  in_done$q;
-    reg  in_done$clock;
-    reg  err$d;
-    wire  err$q;
-    reg  err$clock;
-    reg  [9:0] credits$d;
-    wire  [9:0] credits$q;
-    reg  credits$clock;
-    reg  room$d;
-    wire  room$q;
-    reg  room$clock;
-    reg  last_seen$d;
-    wire  last_seen$q;
-    reg  last_seen$clock;
-    reg  [11:0] last_col$d;
-    wire  [11:0] last_col$q;
-    reg  last_col$clock;
-    reg  [11:0] pen_col$d;
-    wire  [11:0] pen_col$q;
-    reg  pen_col$clock;
-    reg  [7:0] pen_row$d;
-    wire  [7:0] pen_row$q;
-    reg  pen_row$clock;
-    reg  one_row$d;
-    wire  one_row$q;
-    reg  one_row$clock;
-    reg  out_start_net$x;
-    wire  out_start_net$y;
-
-    // Local signals
-    reg  [7:0] run_rows;
-    reg  [12:0] run_cols;
-    reg  accept;
-    reg  beat;
-    reg  slot;
-    reg  is_last;
-    reg  nxt_pad;
-    reg  nxt_discard;
-    reg  nxt_in_done;
-    reg  nxt_run;
-    reg  drained;
-    reg  out_start;
+    reg  in_stage$clk;
+    reg  in_stage$rst;
+    reg  in_stage$rst_next;
+    reg  [48:0] in_stage$s_axis_tdata;
+    reg  in_stage$s_axis_tvalid;
+    reg  in_stage$s_axis_tlast;
+    wire  in_stage$s_axis_tready;
+    reg  [7:0] in_stage$run_rows;
+    reg  [11:0] in_stage$run_cols;
+    reg  in_stage$run;
+    reg  in_stage$restart;
+    reg  in_stage$run_next;
+    reg  in_stage$room;
+    wire  in_stage$slot_now;
+    wire  [73:0] in_stage$slot;
+    wire  in_stage$in_done;
+    wire  in_stage$err;
+    wire  [11:0] in_stage$last_col;
+    wire  in_stage$idle;
+    wire  in_stage$idle_next;
+    reg  credits$clk;
+    reg  credits$rst;
+    reg  credits$slot;
+    reg  credits$drop;
+    reg  credits$take;
+    wire  credits$room;
+    reg  phase$clk;
+    reg  phase$rst;
+    reg  phase$in_done;
+    reg  phase$init_busy;
+    reg  phase$last_done;
+    reg  phase$union_idle;
+    reg  phase$jq_empty;
+    reg  phase$rb_done;
+    wire  phase$run;
+    wire  phase$restart;
+    wire  phase$out_start;
+    wire  phase$run_next;
+    wire  phase$out_next;
 
     // Sub module instances
     fcc_top__pix_thr_k7_668cf05b pix_thr(
@@ -664,6 +606,7 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
         .key(intra$key),
         .ch(intra$ch),
         .out(intra$out),
+        .state(intra$state),
         .provisional(intra$provisional),
         .overflow(intra$overflow),
         .unlabelled(intra$unlabelled)
@@ -1157,160 +1100,57 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
         .d(merge_table_rst$d),
         .q(merge_table_rst$q)
     );
-    fcc_top__phase_k7_668cf05b phase(
-        .d(phase$d),
-        .q(phase$q),
-        .clock(phase$clock)
-    );
-    fcc_top__tready_q_k7_668cf05b tready_q(
-        .d(tready_q$d),
-        .q(tready_q$q),
-        .clock(tready_q$clock)
-    );
-    fcc_top__pad_go_k7_668cf05b pad_go(
-        .d(pad_go$d),
-        .q(pad_go$q),
-        .clock(pad_go$clock)
-    );
-    fcc_top__slot_q_k7_668cf05b slot_q(
-        .d(slot_q$d),
-        .q(slot_q$q),
-        .clock(slot_q$clock)
-    );
-    fcc_top__row_k7_668cf05b row(
-        .d(row$d),
-        .q(row$q),
-        .clock(row$clock)
-    );
-    fcc_top__col_k7_668cf05b col(
-        .d(col$d),
-        .q(col$q),
-        .clock(col$clock)
-    );
-    fcc_top__col0_k7_668cf05b col0(
-        .d(col0$d),
-        .q(col0$q),
-        .clock(col0$clock)
-    );
-    fcc_top__col_last_k7_668cf05b col_last(
-        .d(col_last$d),
-        .q(col_last$q),
-        .clock(col_last$clock)
-    );
-    fcc_top__row_last_k7_668cf05b row_last(
-        .d(row_last$d),
-        .q(row_last$q),
-        .clock(row_last$clock)
-    );
-    fcc_top__first_k7_668cf05b first(
-        .d(first$d),
-        .q(first$q),
-        .clock(first$clock)
-    );
-    fcc_top__pad_k7_668cf05b pad(
-        .d(pad$d),
-        .q(pad$q),
-        .clock(pad$clock)
-    );
-    fcc_top__discard_k7_668cf05b discard(
-        .d(discard$d),
-        .q(discard$q),
-        .clock(discard$clock)
-    );
-    fcc_top__in_done_k7_668cf05b in_done(
-        .d(in_done$d),
-        .q(in_done$q),
-        .clock(in_done$clock)
-    );
-    fcc_top__err_k7_668cf05b err(
-        .d(err$d),
-        .q(err$q),
-        .clock(err$clock)
+    fcc_top__in_stage_k7_668cf05b in_stage(
+        .clk(in_stage$clk),
+        .rst(in_stage$rst),
+        .rst_next(in_stage$rst_next),
+        .s_axis_tdata(in_stage$s_axis_tdata),
+        .s_axis_tvalid(in_stage$s_axis_tvalid),
+        .s_axis_tlast(in_stage$s_axis_tlast),
+        .s_axis_tready(in_stage$s_axis_tready),
+        .run_rows(in_stage$run_rows),
+        .run_cols(in_stage$run_cols),
+        .run(in_stage$run),
+        .restart(in_stage$restart),
+        .run_next(in_stage$run_next),
+        .room(in_stage$room),
+        .slot_now(in_stage$slot_now),
+        .slot(in_stage$slot),
+        .in_done(in_stage$in_done),
+        .err(in_stage$err),
+        .last_col(in_stage$last_col),
+        .idle(in_stage$idle),
+        .idle_next(in_stage$idle_next)
     );
     fcc_top__credits_k7_668cf05b credits(
-        .d(credits$d),
-        .q(credits$q),
-        .clock(credits$clock)
+        .clk(credits$clk),
+        .rst(credits$rst),
+        .slot(credits$slot),
+        .drop(credits$drop),
+        .take(credits$take),
+        .room(credits$room)
     );
-    fcc_top__room_k7_668cf05b room(
-        .d(room$d),
-        .q(room$q),
-        .clock(room$clock)
-    );
-    fcc_top__last_seen_k7_668cf05b last_seen(
-        .d(last_seen$d),
-        .q(last_seen$q),
-        .clock(last_seen$clock)
-    );
-    fcc_top__last_col_k7_668cf05b last_col(
-        .d(last_col$d),
-        .q(last_col$q),
-        .clock(last_col$clock)
-    );
-    fcc_top__pen_col_k7_668cf05b pen_col(
-        .d(pen_col$d),
-        .q(pen_col$q),
-        .clock(pen_col$clock)
-    );
-    fcc_top__pen_row_k7_668cf05b pen_row(
-        .d(pen_row$d),
-        .q(pen_row$q),
-        .clock(pen_row$clock)
-    );
-    fcc_top__one_row_k7_668cf05b one_row(
-        .d(one_row$d),
-        .q(one_row$q),
-        .clock(one_row$clock)
-    );
-    fcc_top__out_start_net_k7_668cf05b out_start_net(
-        .x(out_start_net$x),
-        .y(out_start_net$y)
+    fcc_top__phase_k7_668cf05b phase(
+        .clk(phase$clk),
+        .rst(phase$rst),
+        .in_done(phase$in_done),
+        .init_busy(phase$init_busy),
+        .last_done(phase$last_done),
+        .union_idle(phase$union_idle),
+        .jq_empty(phase$jq_empty),
+        .rb_done(phase$rb_done),
+        .run(phase$run),
+        .restart(phase$restart),
+        .out_start(phase$out_start),
+        .run_next(phase$run_next),
+        .out_next(phase$out_next)
     );
 
     // Update code
     always @(*) begin
-        phase$clock = clk;
-        tready_q$clock = clk;
-        pad_go$clock = clk;
-        slot_q$clock = clk;
-        row$clock = clk;
-        col$clock = clk;
-        col0$clock = clk;
-        col_last$clock = clk;
-        row_last$clock = clk;
-        first$clock = clk;
-        pad$clock = clk;
-        discard$clock = clk;
-        in_done$clock = clk;
-        err$clock = clk;
-        credits$clock = clk;
-        room$clock = clk;
-        last_seen$clock = clk;
-        last_col$clock = clk;
-        pen_col$clock = clk;
-        pen_row$clock = clk;
-        one_row$clock = clk;
-        phase$d = phase$q;
-        tready_q$d = tready_q$q;
-        pad_go$d = pad_go$q;
-        slot_q$d = slot_q$q;
-        row$d = row$q;
-        col$d = col$q;
-        col0$d = col0$q;
-        col_last$d = col_last$q;
-        row_last$d = row_last$q;
-        first$d = first$q;
-        pad$d = pad$q;
-        discard$d = discard$q;
-        in_done$d = in_done$q;
-        err$d = err$q;
-        credits$d = credits$q;
-        room$d = room$q;
-        last_seen$d = last_seen$q;
-        last_col$d = last_col$q;
-        pen_col$d = pen_col$q;
-        pen_row$d = pen_row$q;
-        one_row$d = one_row$q;
+        in_stage$clk = clk;
+        credits$clk = clk;
+        phase$clk = clk;
         pix_thr$clk = clk;
         intra$clk = clk;
         window$clk = clk;
@@ -1343,141 +1183,37 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
         regs$provisional = intra$provisional[15:0];
         regs$overflow = intra$overflow;
         regs$unlabelled = intra$unlabelled;
-        regs$frame_error = err$q;
+        regs$frame_error = in_stage$err;
         regs$joins = sort_net$joins;
         regs$gear_stalls = label_update$gear_stalls;
-        run_rows = regs$run_rows;
-        run_cols = regs$run_cols;
-        last_col$d = run_cols[11:0] - one12;
-        pen_col$d = run_cols[11:0] - two12;
-        pen_row$d = run_rows - two8;
-        one_row$d = run_rows == one8;
-        accept = s_axis_tvalid & tready_q$q;
-        beat = accept & ~discard$q;
-        slot = beat | pad_go$q;
-        is_last = col_last$q & row_last$q;
-        slot_q$d[0:0] = slot;
-        slot_q$d[1:1] = beat & s_axis_tdata[48];
-        slot_q$d[17:2] = s_axis_tdata[15:0] ^ sign16;
-        slot_q$d[33:18] = s_axis_tdata[31:16] ^ sign16;
-        slot_q$d[49:34] = s_axis_tdata[47:32] ^ sign16;
-        slot_q$d[57:50] = row$q;
-        slot_q$d[69:58] = col$q;
-        slot_q$d[70:70] = first$q;
-        slot_q$d[71:71] = is_last;
-        slot_q$d[72:72] = col0$q;
-        slot_q$d[73:73] = col_last$q;
-        nxt_pad = pad$q;
-        nxt_discard = discard$q;
-        nxt_in_done = in_done$q;
-        if (row$q == zero8) begin
-            row_last$d = one_row$q;
-        end
-        if (slot) begin
-            first$d = 1'b0;
-            col0$d = col_last$q;
-            col$d = col$q + one12;
-            col_last$d = col$q == pen_col$q;
-            if (col_last$q) begin
-                col$d = zero12;
-                col_last$d = 1'b0;
-                row$d = row$q + one8;
-                row_last$d = row$q == pen_row$q;
-            end
-            if (is_last) begin
-                row$d = zero8;
-                row_last$d = one_row$q;
-                first$d = 1'b1;
-                nxt_in_done = 1'b1;
-                nxt_pad = 1'b0;
-            end
-        end
-        if (beat) begin
-            if (s_axis_tlast & ~is_last) begin
-                err$d = 1'b1;
-                nxt_pad = 1'b1;
-            end
-            if (is_last & ~s_axis_tlast) begin
-                err$d = 1'b1;
-                nxt_discard = 1'b1;
-            end
-        end
-        if (discard$q & accept & s_axis_tlast) begin
-            nxt_discard = 1'b0;
-        end
-        credits$d = credits$q;
-        if (slot) begin
-            credits$d = credits$q + one10;
-            if (sort_net$drop ^ sort_net$take) begin
-                credits$d = credits$q;
-            end
-            if (sort_net$drop & sort_net$take) begin
-                credits$d = credits$q - one10;
-            end
-        end
-        else begin
-            if (sort_net$drop ^ sort_net$take) begin
-                credits$d = credits$q - one10;
-            end
-            if (sort_net$drop & sort_net$take) begin
-                credits$d = credits$q - two10;
-            end
-        end
-        room$d = credits$q < limit;
-        if (sort_net$last_done) begin
-            last_seen$d = 1'b1;
-        end
-        drained = last_seen$q & merge_table$union_idle & sort_net$jq_empty;
-        out_start = 1'b0;
-        if ((phase$q == Phase$Init) & ~merge_table$init_busy) begin
-            phase$d = Phase$Run;
-        end
-        if ((phase$q == Phase$Run) & in_done$q) begin
-            phase$d = Phase$Drain;
-        end
-        if ((phase$q == Phase$Drain) & drained) begin
-            out_start = 1'b1;
-            phase$d = Phase$Out;
-        end
-        out_start_net$x = out_start;
-        merge_table$flat_start = out_start_net$y;
-        label_update$rb_start = out_start_net$y;
-        nxt_run = phase$q == Phase$Run;
-        if ((phase$q == Phase$Out) & label_update$rb_done) begin
-            phase$d = Phase$Run;
-            nxt_run = 1'b1;
-            nxt_in_done = 1'b0;
-            last_seen$d = 1'b0;
-            err$d = 1'b0;
-        end
-        pad$d = nxt_pad;
-        discard$d = nxt_discard;
-        in_done$d = nxt_in_done;
-        tready_q$d = nxt_discard | (nxt_run & ~nxt_in_done & ~nxt_pad & room$q);
-        pad_go$d = nxt_pad & nxt_run & ~nxt_in_done & room$q;
-        if (regs$core_rst_next) begin
-            tready_q$d = 1'b0;
-            pad_go$d = 1'b0;
-        end
-        if (regs$core_rst) begin
-            phase$d = Phase$Init;
-            tready_q$d = 1'b0;
-            pad_go$d = 1'b0;
-            slot_q$d[0:0] = 1'b0;
-            row$d = zero8;
-            col$d = zero12;
-            col0$d = 1'b1;
-            col_last$d = 1'b0;
-            row_last$d = 1'b0;
-            first$d = 1'b1;
-            pad$d = 1'b0;
-            discard$d = 1'b0;
-            in_done$d = 1'b0;
-            err$d = 1'b0;
-            credits$d = zero10;
-            room$d = 1'b1;
-            last_seen$d = 1'b0;
-        end
+        regs$frame_sent = label_update$rb_done;
+        regs$out_next = phase$out_next;
+        regs$idle_next = in_stage$idle_next;
+        in_stage$rst = regs$core_rst;
+        in_stage$rst_next = regs$core_rst_next;
+        in_stage$s_axis_tdata = s_axis_tdata[48:0];
+        in_stage$s_axis_tvalid = s_axis_tvalid;
+        in_stage$s_axis_tlast = s_axis_tlast;
+        s_axis_tready = in_stage$s_axis_tready;
+        in_stage$run_rows = regs$run_rows;
+        in_stage$run_cols = regs$run_cols[11:0];
+        in_stage$run = phase$run;
+        in_stage$restart = phase$restart;
+        in_stage$run_next = phase$run_next;
+        in_stage$room = credits$room;
+        credits$rst = regs$core_rst;
+        credits$slot = in_stage$slot_now;
+        credits$drop = sort_net$drop;
+        credits$take = sort_net$take;
+        phase$rst = regs$core_rst;
+        phase$in_done = in_stage$in_done;
+        phase$init_busy = merge_table$init_busy;
+        phase$last_done = sort_net$last_done;
+        phase$union_idle = merge_table$union_idle;
+        phase$jq_empty = sort_net$jq_empty;
+        phase$rb_done = label_update$rb_done;
+        merge_table$flat_start = phase$out_start;
+        label_update$rb_start = phase$out_start;
         intra_rst$clock = clk;
         window_rst$clock = clk;
         dist_tree_rst$clock = clk;
@@ -1487,7 +1223,7 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
         dist_tree_rst$d = regs$core_rst_next;
         merge_table_rst$d = regs$core_rst_next;
         pix_thr$rst = intra_rst$q;
-        pix_thr$pix = slot_q$q;
+        pix_thr$pix = in_stage$slot;
         pix_thr$sh = regs$run_sl_h;
         pix_thr$sv = regs$run_sl_v;
         pix_thr$ch_t = regs$run_th_h_c;
@@ -1496,31 +1232,19 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
         intra$pix = pix_thr$out;
         intra$key = pix_thr$key;
         intra$ch = pix_thr$ch;
-        intra$last_col = last_col$q;
-        window$last_col = last_col$q;
+        intra$last_col = in_stage$last_col;
+        window$last_col = in_stage$last_col;
         window$rst = window_rst$q;
         window$run_k = regs$run_k;
-        window$inp[0:0] = intra$out[0:0];
-        window$inp[1:1] = intra$out[1:1];
-        window$inp[17:2] = intra$out[17:2];
-        window$inp[33:18] = intra$out[33:18];
-        window$inp[49:34] = intra$out[49:34];
-        window$inp[65:50] = intra$out[65:50];
-        window$inp[73:66] = intra$out[75:68];
-        window$inp[85:74] = intra$out[87:76];
-        window$inp[97:86] = intra$out[99:88];
-        window$inp[98:98] = intra$out[100:100];
-        window$inp[99:99] = intra$out[101:101];
-        window$inp[115:100] = intra$out[117:102];
-        window$inp[131:116] = intra$out[133:118];
+        window$inp = intra$out;
         window$rep_we = sort_net$rep_we;
         window$rep_waddr = sort_net$rep_waddr;
         window$rep_wdata = sort_net$rep_wdata;
         dist_tree$rst = dist_tree_rst$q;
         thr_window$rst = window_rst$q;
         thr_window$valid = intra$out[0:0];
-        thr_window$col = intra$out[87:76];
-        thr_window$rdcol = intra$out[99:88];
+        thr_window$col = intra$out[85:74];
+        thr_window$rdcol = intra$out[97:86];
         thr_window$key = pix_thr$key;
         thr_window$cv = pix_thr$cv;
         dist_tree$centre_key = thr_window$centre_key;
@@ -1707,8 +1431,8 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
         merge_table$gear_used = label_update$gear_used;
         label_update$rst = regs$core_rst_next;
         label_update$wr_valid = intra$out[0:0];
-        label_update$wr_state = intra$out[67:66];
-        label_update$wr_last = intra$out[100:100];
+        label_update$wr_state = intra$state;
+        label_update$wr_last = intra$out[98:98];
         label_update$fv = merge_table$fv;
         label_update$fval = merge_table$fval;
         label_update$m_axis_tready = m_axis_tready;
@@ -1716,7 +1440,6 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
         m_axis_tkeep = label_update$m_axis_tkeep;
         m_axis_tvalid = label_update$m_axis_tvalid;
         m_axis_tlast = label_update$m_axis_tlast;
-        s_axis_tready = tready_q$q;
         status_clusters = regs$st_clusters;
         status_provisional = regs$st_provisional;
         status_overflow = regs$st_overflow;
@@ -1725,73 +1448,84 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
         status_joins = regs$st_joins;
         status_gear_stalls = regs$st_gear_stalls;
         status_frame_done = regs$frame_done;
-        status_idle = (phase$q == Phase$Run) & ~in_done$q & first$q;
-        regs$frame_sent = label_update$rb_done;
-        regs$out_next = phase$d == Phase$Out;
-        regs$idle_next = (phase$d == Phase$Run) & ~in_done$d & first$d;
+        status_idle = in_stage$idle;
     end
 
 endmodule // fcc_top_k7_668cf05b
 
 
-module fcc_top__col_k7_668cf05b(d,q,clock);
+module fcc_top__credits_k7_668cf05b(clk,rst,slot,drop,take,room);
 
     // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
-    input wire  clock;
+    input wire  clk;
+    input wire  rst;
+    input wire  slot;
+    input wire  drop;
+    input wire  take;
+    output reg  room;
 
-    // Update code (custom)
-    initial begin
-       q = 12'h0;
+    // Constant declarations
+    localparam  one10 = 10'b1;
+    localparam  two10 = 10'b10;
+    localparam  zero10 = 10'b0;
+    localparam  limit = 10'b111110000;
+
+    // Stub signals
+    reg  [9:0] credits$d;
+    wire  [9:0] credits$q;
+    reg  credits$clock;
+    reg  room_q$d;
+    wire  room_q$q;
+    reg  room_q$clock;
+
+    // Sub module instances
+    fcc_top__credits__credits_k7_668cf05b credits(
+        .d(credits$d),
+        .q(credits$q),
+        .clock(credits$clock)
+    );
+    fcc_top__credits__room_q_k7_668cf05b room_q(
+        .d(room_q$d),
+        .q(room_q$q),
+        .clock(room_q$clock)
+    );
+
+    // Update code
+    always @(*) begin
+        credits$clock = clk;
+        room_q$clock = clk;
+        credits$d = credits$q;
+        room_q$d = room_q$q;
+        credits$d = credits$q;
+        if (slot) begin
+            credits$d = credits$q + one10;
+            if (drop ^ take) begin
+                credits$d = credits$q;
+            end
+            if (drop & take) begin
+                credits$d = credits$q - one10;
+            end
+        end
+        else begin
+            if (drop ^ take) begin
+                credits$d = credits$q - one10;
+            end
+            if (drop & take) begin
+                credits$d = credits$q - two10;
+            end
+        end
+        room_q$d = credits$q < limit;
+        if (rst) begin
+            credits$d = zero10;
+            room_q$d = 1'b1;
+        end
+        room = room_q$q;
     end
 
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__col_k7_668cf05b
+endmodule // fcc_top__credits_k7_668cf05b
 
 
-module fcc_top__col0_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__col0_k7_668cf05b
-
-
-module fcc_top__col_last_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__col_last_k7_668cf05b
-
-
-module fcc_top__credits_k7_668cf05b(d,q,clock);
+module fcc_top__credits__credits_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [9:0] d;
@@ -1807,10 +1541,10 @@ module fcc_top__credits_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_top__credits_k7_668cf05b
+endmodule // fcc_top__credits__credits_k7_668cf05b
 
 
-module fcc_top__discard_k7_668cf05b(d,q,clock);
+module fcc_top__credits__room_q_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -1826,7 +1560,7 @@ module fcc_top__discard_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_top__discard_k7_668cf05b
+endmodule // fcc_top__credits__room_q_k7_668cf05b
 
 
 module fcc_dist_tree_k7_668cf05b(clk,rst,centre_in,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_ok$4,ent_ok$5,ent_ok$6,ent_ok$7,ent_ok$8,ent_ok$9,ent_ok$10,ent_ok$11,ent_ok$12,ent_ok$13,ent_ok$14,ent_ok$15,ent_ok$16,ent_ok$17,ent_ok$18,ent_ok$19,ent_ok$20,ent_x$0,ent_x$1,ent_x$2,ent_x$3,ent_x$4,ent_x$5,ent_x$6,ent_x$7,ent_x$8,ent_x$9,ent_x$10,ent_x$11,ent_x$12,ent_x$13,ent_x$14,ent_x$15,ent_x$16,ent_x$17,ent_x$18,ent_x$19,ent_x$20,ent_y$0,ent_y$1,ent_y$2,ent_y$3,ent_y$4,ent_y$5,ent_y$6,ent_y$7,ent_y$8,ent_y$9,ent_y$10,ent_y$11,ent_y$12,ent_y$13,ent_y$14,ent_y$15,ent_y$16,ent_y$17,ent_y$18,ent_y$19,ent_y$20,ent_z$0,ent_z$1,ent_z$2,ent_z$3,ent_z$4,ent_z$5,ent_z$6,ent_z$7,ent_z$8,ent_z$9,ent_z$10,ent_z$11,ent_z$12,ent_z$13,ent_z$14,ent_z$15,ent_z$16,ent_z$17,ent_z$18,ent_z$19,ent_z$20,centre_key,centre_cv,ent_key$0,ent_key$1,ent_key$2,ent_key$3,ent_key$4,ent_key$5,ent_key$6,ent_key$7,ent_key$8,ent_key$9,ent_key$10,ent_key$11,ent_key$12,ent_key$13,ent_key$14,ent_key$15,ent_key$16,ent_key$17,ent_key$18,ent_key$19,ent_key$20,ent_cv$0,ent_cv$1,ent_cv$2,ent_cv$3,ent_cv$4,ent_cv$5,ent_cv$6,ent_cv$7,ent_cv$8,ent_cv$9,ent_cv$10,ent_cv$11,ent_cv$12,ent_cv$13,ent_cv$14,ent_cv$15,ent_cv$16,ent_cv$17,ent_cv$18,ent_cv$19,ent_cv$20,centre,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit$6,hit$7,hit$8,hit$9,hit$10,hit$11,hit$12,hit$13,hit$14,hit$15,hit$16,hit$17,hit$18,hit$19,hit$20);
@@ -6088,7 +5822,343 @@ module fcc_top__dist_tree_rst_k7_668cf05b(clock,d,q);
 endmodule // fcc_top__dist_tree_rst_k7_668cf05b
 
 
-module fcc_top__err_k7_668cf05b(d,q,clock);
+module fcc_top__in_stage_k7_668cf05b(clk,rst,rst_next,s_axis_tdata,s_axis_tvalid,s_axis_tlast,s_axis_tready,run_rows,run_cols,run,restart,run_next,room,slot_now,slot,in_done,err,last_col,idle,idle_next);
+
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  rst_next;
+    input wire  [48:0] s_axis_tdata;
+    input wire  s_axis_tvalid;
+    input wire  s_axis_tlast;
+    output reg  s_axis_tready;
+    input wire  [7:0] run_rows;
+    input wire  [11:0] run_cols;
+    input wire  run;
+    input wire  restart;
+    input wire  run_next;
+    input wire  room;
+    output reg  slot_now;
+    output reg  [73:0] slot;
+    output reg  in_done;
+    output reg  err;
+    output reg  [11:0] last_col;
+    output reg  idle;
+    output reg  idle_next;
+
+    // Constant declarations
+    localparam  sign16 = 16'h8000;
+    localparam  zero8 = 8'h0;
+    localparam  one8 = 8'h1;
+    localparam  two8 = 8'h2;
+    localparam  zero12 = 12'h0;
+    localparam  one12 = 12'h1;
+    localparam  two12 = 12'h2;
+
+    // Stub signals
+    reg  tready_q$d;
+    wire  tready_q$q;
+    reg  tready_q$clock;
+    reg  pad_go$d;
+    wire  pad_go$q;
+    reg  pad_go$clock;
+    reg  [73:0] slot_q$d;
+    wire  [73:0] slot_q$q;
+    reg  slot_q$clock;
+    reg  [7:0] row$d;
+    wire  [7:0] row$q;
+    reg  row$clock;
+    reg  [11:0] col$d;
+    wire  [11:0] col$q;
+    reg  col$clock;
+    reg  col0$d;
+    wire  col0$q;
+    reg  col0$clock;
+    reg  col_last$d;
+    wire  col_last$q;
+    reg  col_last$clock;
+    reg  row_last$d;
+    wire  row_last$q;
+    reg  row_last$clock;
+    reg  first$d;
+    wire  first$q;
+    reg  first$clock;
+    reg  pad$d;
+    wire  pad$q;
+    reg  pad$clock;
+    reg  discard$d;
+    wire  discard$q;
+    reg  discard$clock;
+    reg  done$d;
+    wire  done$q;
+    reg  done$clock;
+    reg  err_q$d;
+    wire  err_q$q;
+    reg  err_q$clock;
+    reg  [11:0] last_col_q$d;
+    wire  [11:0] last_col_q$q;
+    reg  last_col_q$clock;
+    reg  [11:0] pen_col$d;
+    wire  [11:0] pen_col$q;
+    reg  pen_col$clock;
+    reg  [7:0] pen_row$d;
+    wire  [7:0] pen_row$q;
+    reg  pen_row$clock;
+    reg  one_row$d;
+    wire  one_row$q;
+    reg  one_row$clock;
+
+    // Local signals
+    reg  accept;
+    reg  beat;
+    reg  is_last;
+    reg  nxt_pad;
+    reg  nxt_discard;
+    reg  nxt_done;
+    reg  nxt_run;
+
+    // Sub module instances
+    fcc_top__in_stage__tready_q_k7_668cf05b tready_q(
+        .d(tready_q$d),
+        .q(tready_q$q),
+        .clock(tready_q$clock)
+    );
+    fcc_top__in_stage__pad_go_k7_668cf05b pad_go(
+        .d(pad_go$d),
+        .q(pad_go$q),
+        .clock(pad_go$clock)
+    );
+    fcc_top__in_stage__slot_q_k7_668cf05b slot_q(
+        .d(slot_q$d),
+        .q(slot_q$q),
+        .clock(slot_q$clock)
+    );
+    fcc_top__in_stage__row_k7_668cf05b row(
+        .d(row$d),
+        .q(row$q),
+        .clock(row$clock)
+    );
+    fcc_top__in_stage__col_k7_668cf05b col(
+        .d(col$d),
+        .q(col$q),
+        .clock(col$clock)
+    );
+    fcc_top__in_stage__col0_k7_668cf05b col0(
+        .d(col0$d),
+        .q(col0$q),
+        .clock(col0$clock)
+    );
+    fcc_top__in_stage__col_last_k7_668cf05b col_last(
+        .d(col_last$d),
+        .q(col_last$q),
+        .clock(col_last$clock)
+    );
+    fcc_top__in_stage__row_last_k7_668cf05b row_last(
+        .d(row_last$d),
+        .q(row_last$q),
+        .clock(row_last$clock)
+    );
+    fcc_top__in_stage__first_k7_668cf05b first(
+        .d(first$d),
+        .q(first$q),
+        .clock(first$clock)
+    );
+    fcc_top__in_stage__pad_k7_668cf05b pad(
+        .d(pad$d),
+        .q(pad$q),
+        .clock(pad$clock)
+    );
+    fcc_top__in_stage__discard_k7_668cf05b discard(
+        .d(discard$d),
+        .q(discard$q),
+        .clock(discard$clock)
+    );
+    fcc_top__in_stage__done_k7_668cf05b done(
+        .d(done$d),
+        .q(done$q),
+        .clock(done$clock)
+    );
+    fcc_top__in_stage__err_q_k7_668cf05b err_q(
+        .d(err_q$d),
+        .q(err_q$q),
+        .clock(err_q$clock)
+    );
+    fcc_top__in_stage__last_col_q_k7_668cf05b last_col_q(
+        .d(last_col_q$d),
+        .q(last_col_q$q),
+        .clock(last_col_q$clock)
+    );
+    fcc_top__in_stage__pen_col_k7_668cf05b pen_col(
+        .d(pen_col$d),
+        .q(pen_col$q),
+        .clock(pen_col$clock)
+    );
+    fcc_top__in_stage__pen_row_k7_668cf05b pen_row(
+        .d(pen_row$d),
+        .q(pen_row$q),
+        .clock(pen_row$clock)
+    );
+    fcc_top__in_stage__one_row_k7_668cf05b one_row(
+        .d(one_row$d),
+        .q(one_row$q),
+        .clock(one_row$clock)
+    );
+
+    // Update code
+    always @(*) begin
+        tready_q$clock = clk;
+        pad_go$clock = clk;
+        slot_q$clock = clk;
+        row$clock = clk;
+        col$clock = clk;
+        col0$clock = clk;
+        col_last$clock = clk;
+        row_last$clock = clk;
+        first$clock = clk;
+        pad$clock = clk;
+        discard$clock = clk;
+        done$clock = clk;
+        err_q$clock = clk;
+        last_col_q$clock = clk;
+        pen_col$clock = clk;
+        pen_row$clock = clk;
+        one_row$clock = clk;
+        tready_q$d = tready_q$q;
+        pad_go$d = pad_go$q;
+        slot_q$d = slot_q$q;
+        row$d = row$q;
+        col$d = col$q;
+        col0$d = col0$q;
+        col_last$d = col_last$q;
+        row_last$d = row_last$q;
+        first$d = first$q;
+        pad$d = pad$q;
+        discard$d = discard$q;
+        done$d = done$q;
+        err_q$d = err_q$q;
+        last_col_q$d = last_col_q$q;
+        pen_col$d = pen_col$q;
+        pen_row$d = pen_row$q;
+        one_row$d = one_row$q;
+        last_col_q$d = run_cols - one12;
+        pen_col$d = run_cols - two12;
+        pen_row$d = run_rows - two8;
+        one_row$d = run_rows == one8;
+        accept = s_axis_tvalid & tready_q$q;
+        beat = accept & ~discard$q;
+        slot_now = beat | pad_go$q;
+        is_last = col_last$q & row_last$q;
+        slot_q$d[0:0] = slot_now;
+        slot_q$d[1:1] = beat & s_axis_tdata[48];
+        slot_q$d[17:2] = s_axis_tdata[15:0] ^ sign16;
+        slot_q$d[33:18] = s_axis_tdata[31:16] ^ sign16;
+        slot_q$d[49:34] = s_axis_tdata[47:32] ^ sign16;
+        slot_q$d[57:50] = row$q;
+        slot_q$d[69:58] = col$q;
+        slot_q$d[70:70] = first$q;
+        slot_q$d[71:71] = is_last;
+        slot_q$d[72:72] = col0$q;
+        slot_q$d[73:73] = col_last$q;
+        nxt_pad = pad$q;
+        nxt_discard = discard$q;
+        nxt_done = done$q;
+        if (row$q == zero8) begin
+            row_last$d = one_row$q;
+        end
+        if (slot_now) begin
+            first$d = 1'b0;
+            col0$d = col_last$q;
+            col$d = col$q + one12;
+            col_last$d = col$q == pen_col$q;
+            if (col_last$q) begin
+                col$d = zero12;
+                col_last$d = 1'b0;
+                row$d = row$q + one8;
+                row_last$d = row$q == pen_row$q;
+            end
+            if (is_last) begin
+                row$d = zero8;
+                row_last$d = one_row$q;
+                first$d = 1'b1;
+                nxt_done = 1'b1;
+                nxt_pad = 1'b0;
+            end
+        end
+        if (beat) begin
+            if (s_axis_tlast & ~is_last) begin
+                err_q$d = 1'b1;
+                nxt_pad = 1'b1;
+            end
+            if (is_last & ~s_axis_tlast) begin
+                err_q$d = 1'b1;
+                nxt_discard = 1'b1;
+            end
+        end
+        if (discard$q & accept & s_axis_tlast) begin
+            nxt_discard = 1'b0;
+        end
+        nxt_run = run;
+        if (restart) begin
+            nxt_run = 1'b1;
+            nxt_done = 1'b0;
+            err_q$d = 1'b0;
+        end
+        pad$d = nxt_pad;
+        discard$d = nxt_discard;
+        done$d = nxt_done;
+        tready_q$d = nxt_discard | (nxt_run & ~nxt_done & ~nxt_pad & room);
+        pad_go$d = nxt_pad & nxt_run & ~nxt_done & room;
+        if (rst_next) begin
+            tready_q$d = 1'b0;
+            pad_go$d = 1'b0;
+        end
+        if (rst) begin
+            tready_q$d = 1'b0;
+            pad_go$d = 1'b0;
+            slot_q$d[0:0] = 1'b0;
+            row$d = zero8;
+            col$d = zero12;
+            col0$d = 1'b1;
+            col_last$d = 1'b0;
+            row_last$d = 1'b0;
+            first$d = 1'b1;
+            pad$d = 1'b0;
+            discard$d = 1'b0;
+            done$d = 1'b0;
+            err_q$d = 1'b0;
+        end
+        s_axis_tready = tready_q$q;
+        slot = slot_q$q;
+        in_done = done$q;
+        err = err_q$q;
+        last_col = last_col_q$q;
+        idle = run & ~done$q & first$q;
+        idle_next = run_next & ~done$d & first$d;
+    end
+
+endmodule // fcc_top__in_stage_k7_668cf05b
+
+
+module fcc_top__in_stage__col_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__in_stage__col_k7_668cf05b
+
+
+module fcc_top__in_stage__col0_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -6104,29 +6174,10 @@ module fcc_top__err_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_top__err_k7_668cf05b
+endmodule // fcc_top__in_stage__col0_k7_668cf05b
 
 
-module fcc_top__first_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__first_k7_668cf05b
-
-
-module fcc_top__in_done_k7_668cf05b(d,q,clock);
+module fcc_top__in_stage__col_last_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -6142,10 +6193,276 @@ module fcc_top__in_done_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_top__in_done_k7_668cf05b
+endmodule // fcc_top__in_stage__col_last_k7_668cf05b
 
 
-module fcc_intra_k7_668cf05b(clk,rst,pix,last_col,key,ch,out,provisional,overflow,unlabelled);
+module fcc_top__in_stage__discard_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__in_stage__discard_k7_668cf05b
+
+
+module fcc_top__in_stage__done_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__in_stage__done_k7_668cf05b
+
+
+module fcc_top__in_stage__err_q_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__in_stage__err_q_k7_668cf05b
+
+
+module fcc_top__in_stage__first_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__in_stage__first_k7_668cf05b
+
+
+module fcc_top__in_stage__last_col_q_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__in_stage__last_col_q_k7_668cf05b
+
+
+module fcc_top__in_stage__one_row_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__in_stage__one_row_k7_668cf05b
+
+
+module fcc_top__in_stage__pad_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__in_stage__pad_k7_668cf05b
+
+
+module fcc_top__in_stage__pad_go_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__in_stage__pad_go_k7_668cf05b
+
+
+module fcc_top__in_stage__pen_col_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__in_stage__pen_col_k7_668cf05b
+
+
+module fcc_top__in_stage__pen_row_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__in_stage__pen_row_k7_668cf05b
+
+
+module fcc_top__in_stage__row_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [7:0] d;
+    output reg  [7:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 8'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__in_stage__row_k7_668cf05b
+
+
+module fcc_top__in_stage__row_last_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__in_stage__row_last_k7_668cf05b
+
+
+module fcc_top__in_stage__slot_q_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [73:0] d;
+    output reg  [73:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 74'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__in_stage__slot_q_k7_668cf05b
+
+
+module fcc_top__in_stage__tready_q_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__in_stage__tready_q_k7_668cf05b
+
+
+module fcc_intra_k7_668cf05b(clk,rst,pix,last_col,key,ch,out,state,provisional,overflow,unlabelled);
 
     // Module arguments
     input wire  clk;
@@ -6154,24 +6471,17 @@ module fcc_intra_k7_668cf05b(clk,rst,pix,last_col,key,ch,out,provisional,overflo
     input wire  [11:0] last_col;
     input wire  [15:0] key;
     input wire  [35:0] ch;
-    output reg  [133:0] out;
+    output reg  [131:0] out;
+    output reg  [1:0] state;
     output reg  [16:0] provisional;
     output reg  overflow;
     output reg  [19:0] unlabelled;
 
     // Constant declarations
     localparam  pix_zero = 74'h0;
-    localparam  zero16 = 16'h0;
-    localparam  zero20 = 20'h0;
     localparam  one20 = 20'h1;
     localparam  max20 = 20'h7fff;
     localparam  max17 = 17'b111111111111111;
-    localparam  half = 12'h3;
-    localparam  half_m1 = 12'h2;
-    localparam  st_empty = 2'b0;
-    localparam  st_cont = 2'b1;
-    localparam  st_new = 2'b10;
-    localparam  st_unl = 2'b11;
 
     // Stub signals
     reg  [15:0] prev_x$d;
@@ -6278,69 +6588,19 @@ module fcc_intra_k7_668cf05b(clk,rst,pix,last_col,key,ch,out,provisional,overflo
     reg  any$d;
     wire  any$q;
     reg  any$clock;
-    reg  [73:0] p8$d;
-    wire  [73:0] p8$q;
-    reg  p8$clock;
-    reg  cont8$d;
-    wire  cont8$q;
-    reg  cont8$clock;
-    reg  [19:0] lab8$d;
-    wire  [19:0] lab8$q;
-    reg  lab8$clock;
-    reg  [19:0] fl8$d;
-    wire  [19:0] fl8$q;
-    reg  fl8$clock;
-    reg  [19:0] cur8$d;
-    wire  [19:0] cur8$q;
-    reg  cur8$clock;
-    reg  any8$d;
-    wire  any8$q;
-    reg  any8$clock;
-    reg  ringle8$d;
-    wire  ringle8$q;
-    reg  ringle8$clock;
-    reg  [73:0] p9$d;
-    wire  [73:0] p9$q;
-    reg  p9$clock;
-    reg  cont9$d;
-    wire  cont9$q;
-    reg  cont9$clock;
-    reg  [15:0] lab9$d;
-    wire  [15:0] lab9$q;
-    reg  lab9$clock;
-    reg  labok9$d;
-    wire  labok9$q;
-    reg  labok9$clock;
-    reg  ring9$d;
-    wire  ring9$q;
-    reg  ring9$clock;
-    reg  flok9$d;
-    wire  flok9$q;
-    reg  flok9$clock;
-    reg  curok9$d;
-    wire  curok9$q;
-    reg  curok9$clock;
-    reg  ne9$d;
-    wire  ne9$q;
-    reg  ne9$clock;
-    reg  [15:0] fl9$d;
-    wire  [15:0] fl9$q;
-    reg  fl9$clock;
-    reg  [15:0] cur9$d;
-    wire  [15:0] cur9$q;
-    reg  cur9$clock;
-    reg  [11:0] rdcol9$d;
-    wire  [11:0] rdcol9$q;
-    reg  rdcol9$clock;
-    reg  [11:0] wrap_col$d;
-    wire  [11:0] wrap_col$q;
-    reg  wrap_col$clock;
-    reg  [133:0] out_q$d;
-    wire  [133:0] out_q$q;
-    reg  out_q$clock;
-    reg  [19:0] unl$d;
-    wire  [19:0] unl$q;
-    reg  unl$clock;
+    reg  codes$clk;
+    reg  codes$rst;
+    reg  [11:0] codes$last_col;
+    reg  [73:0] codes$pix;
+    reg  codes$cont;
+    reg  [19:0] codes$lab;
+    reg  [19:0] codes$fl;
+    reg  [19:0] codes$cur;
+    reg  codes$any;
+    reg  codes$ring_hit;
+    wire  [131:0] codes$out;
+    wire  [1:0] codes$state;
+    wire  [19:0] codes$unlabelled;
     reg  [19:0] rm1$d;
     wire  [19:0] rm1$q;
     reg  rm1$clock;
@@ -6364,7 +6624,6 @@ module fcc_intra_k7_668cf05b(clk,rst,pix,last_col,key,ch,out,provisional,overflo
     reg  [19:0] fl_eff;
     reg  [19:0] cur_next;
     reg  any_eff;
-    reg  lok;
 
     // Sub module instances
     fcc_intra__prev_x_k7_668cf05b prev_x(
@@ -6527,110 +6786,20 @@ module fcc_intra_k7_668cf05b(clk,rst,pix,last_col,key,ch,out,provisional,overflo
         .q(any$q),
         .clock(any$clock)
     );
-    fcc_intra__p8_k7_668cf05b p8(
-        .d(p8$d),
-        .q(p8$q),
-        .clock(p8$clock)
-    );
-    fcc_intra__cont8_k7_668cf05b cont8(
-        .d(cont8$d),
-        .q(cont8$q),
-        .clock(cont8$clock)
-    );
-    fcc_intra__lab8_k7_668cf05b lab8(
-        .d(lab8$d),
-        .q(lab8$q),
-        .clock(lab8$clock)
-    );
-    fcc_intra__fl8_k7_668cf05b fl8(
-        .d(fl8$d),
-        .q(fl8$q),
-        .clock(fl8$clock)
-    );
-    fcc_intra__cur8_k7_668cf05b cur8(
-        .d(cur8$d),
-        .q(cur8$q),
-        .clock(cur8$clock)
-    );
-    fcc_intra__any8_k7_668cf05b any8(
-        .d(any8$d),
-        .q(any8$q),
-        .clock(any8$clock)
-    );
-    fcc_intra__ringle8_k7_668cf05b ringle8(
-        .d(ringle8$d),
-        .q(ringle8$q),
-        .clock(ringle8$clock)
-    );
-    fcc_intra__p9_k7_668cf05b p9(
-        .d(p9$d),
-        .q(p9$q),
-        .clock(p9$clock)
-    );
-    fcc_intra__cont9_k7_668cf05b cont9(
-        .d(cont9$d),
-        .q(cont9$q),
-        .clock(cont9$clock)
-    );
-    fcc_intra__lab9_k7_668cf05b lab9(
-        .d(lab9$d),
-        .q(lab9$q),
-        .clock(lab9$clock)
-    );
-    fcc_intra__labok9_k7_668cf05b labok9(
-        .d(labok9$d),
-        .q(labok9$q),
-        .clock(labok9$clock)
-    );
-    fcc_intra__ring9_k7_668cf05b ring9(
-        .d(ring9$d),
-        .q(ring9$q),
-        .clock(ring9$clock)
-    );
-    fcc_intra__flok9_k7_668cf05b flok9(
-        .d(flok9$d),
-        .q(flok9$q),
-        .clock(flok9$clock)
-    );
-    fcc_intra__curok9_k7_668cf05b curok9(
-        .d(curok9$d),
-        .q(curok9$q),
-        .clock(curok9$clock)
-    );
-    fcc_intra__ne9_k7_668cf05b ne9(
-        .d(ne9$d),
-        .q(ne9$q),
-        .clock(ne9$clock)
-    );
-    fcc_intra__fl9_k7_668cf05b fl9(
-        .d(fl9$d),
-        .q(fl9$q),
-        .clock(fl9$clock)
-    );
-    fcc_intra__cur9_k7_668cf05b cur9(
-        .d(cur9$d),
-        .q(cur9$q),
-        .clock(cur9$clock)
-    );
-    fcc_intra__rdcol9_k7_668cf05b rdcol9(
-        .d(rdcol9$d),
-        .q(rdcol9$q),
-        .clock(rdcol9$clock)
-    );
-    fcc_intra__wrap_col_k7_668cf05b wrap_col(
-        .d(wrap_col$d),
-        .q(wrap_col$q),
-        .clock(wrap_col$clock)
-    );
-    fcc_intra__out_q_k7_668cf05b out_q(
-        .d(out_q$d),
-        .q(out_q$q),
-        .clock(out_q$clock)
-    );
-    fcc_intra__unl_k7_668cf05b unl(
-        .d(unl$d),
-        .q(unl$q),
-        .clock(unl$clock)
+    fcc_intra__codes_k7_668cf05b codes(
+        .clk(codes$clk),
+        .rst(codes$rst),
+        .last_col(codes$last_col),
+        .pix(codes$pix),
+        .cont(codes$cont),
+        .lab(codes$lab),
+        .fl(codes$fl),
+        .cur(codes$cur),
+        .any(codes$any),
+        .ring_hit(codes$ring_hit),
+        .out(codes$out),
+        .state(codes$state),
+        .unlabelled(codes$unlabelled)
     );
     fcc_intra__rm1_k7_668cf05b rm1(
         .d(rm1$d),
@@ -6661,27 +6830,6 @@ module fcc_intra_k7_668cf05b(clk,rst,pix,last_col,key,ch,out,provisional,overflo
         cur$clock = clk;
         fl$clock = clk;
         any$clock = clk;
-        p8$clock = clk;
-        cont8$clock = clk;
-        lab8$clock = clk;
-        fl8$clock = clk;
-        cur8$clock = clk;
-        any8$clock = clk;
-        ringle8$clock = clk;
-        p9$clock = clk;
-        cont9$clock = clk;
-        lab9$clock = clk;
-        labok9$clock = clk;
-        ring9$clock = clk;
-        flok9$clock = clk;
-        curok9$clock = clk;
-        ne9$clock = clk;
-        fl9$clock = clk;
-        cur9$clock = clk;
-        rdcol9$clock = clk;
-        wrap_col$clock = clk;
-        out_q$clock = clk;
-        unl$clock = clk;
         rm1$clock = clk;
         prov$clock = clk;
         ovf$clock = clk;
@@ -6696,27 +6844,6 @@ module fcc_intra_k7_668cf05b(clk,rst,pix,last_col,key,ch,out,provisional,overflo
         cur$d = cur$q;
         fl$d = fl$q;
         any$d = any$q;
-        p8$d = p8$q;
-        cont8$d = cont8$q;
-        lab8$d = lab8$q;
-        fl8$d = fl8$q;
-        cur8$d = cur8$q;
-        any8$d = any8$q;
-        ringle8$d = ringle8$q;
-        p9$d = p9$q;
-        cont9$d = cont9$q;
-        lab9$d = lab9$q;
-        labok9$d = labok9$q;
-        ring9$d = ring9$q;
-        flok9$d = flok9$q;
-        curok9$d = curok9$q;
-        ne9$d = ne9$q;
-        fl9$d = fl9$q;
-        cur9$d = cur9$q;
-        rdcol9$d = rdcol9$q;
-        wrap_col$d = wrap_col$q;
-        out_q$d = out_q$q;
-        unl$d = unl$q;
         rm1$d = rm1$q;
         prov$d = prov$q;
         ovf$d = ovf$q;
@@ -6829,13 +6956,327 @@ module fcc_intra_k7_668cf05b(clk,rst,pix,last_col,key,ch,out,provisional,overflo
             fl$d = fl_eff;
             any$d = any_eff;
         end
-        p8$d = p7;
+        codes$clk = clk;
+        codes$rst = rst;
+        codes$last_col = last_col;
+        codes$pix = p7;
+        codes$cont = cont;
+        codes$lab = lab;
+        codes$fl = fl_eff;
+        codes$cur = cur_next;
+        codes$any = any_eff;
+        codes$ring_hit = ring$hit;
+        rm1$d = raw$q - one20;
+        prov$d = rm1$q[16:0];
+        ovf$d = 1'b0;
+        if (rm1$q > max20) begin
+            prov$d = max17;
+            ovf$d = 1'b1;
+        end
+        if (rst) begin
+            has_prev$d = 1'b0;
+            pd$0$d[0:0] = 1'b0;
+            pd$1$d[0:0] = 1'b0;
+            pd$2$d[0:0] = 1'b0;
+            pd$3$d[0:0] = 1'b0;
+            pd$4$d[0:0] = 1'b0;
+            pd$5$d[0:0] = 1'b0;
+            pd$6$d = pix_zero;
+        end
+        out = codes$out;
+        state = codes$state;
+        provisional = prov$q;
+        overflow = ovf$q;
+        unlabelled = codes$unlabelled;
+    end
+
+endmodule // fcc_intra_k7_668cf05b
+
+
+module fcc_intra__any_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__any_k7_668cf05b
+
+
+module fcc_intra__codes_k7_668cf05b(clk,rst,last_col,pix,cont,lab,fl,cur,any,ring_hit,out,state,unlabelled);
+
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  [11:0] last_col;
+    input wire  [73:0] pix;
+    input wire  cont;
+    input wire  [19:0] lab;
+    input wire  [19:0] fl;
+    input wire  [19:0] cur;
+    input wire  any;
+    input wire  ring_hit;
+    output reg  [131:0] out;
+    output reg  [1:0] state;
+    output reg  [19:0] unlabelled;
+
+    // Constant declarations
+    localparam  zero16 = 16'h0;
+    localparam  zero20 = 20'h0;
+    localparam  one20 = 20'h1;
+    localparam  max20 = 20'h7fff;
+    localparam  half = 12'h3;
+    localparam  half_m1 = 12'h2;
+    localparam  st_empty = 2'b0;
+    localparam  st_cont = 2'b1;
+    localparam  st_new = 2'b10;
+    localparam  st_unl = 2'b11;
+
+    // Stub signals
+    reg  [73:0] p8$d;
+    wire  [73:0] p8$q;
+    reg  p8$clock;
+    reg  cont8$d;
+    wire  cont8$q;
+    reg  cont8$clock;
+    reg  [19:0] lab8$d;
+    wire  [19:0] lab8$q;
+    reg  lab8$clock;
+    reg  [19:0] fl8$d;
+    wire  [19:0] fl8$q;
+    reg  fl8$clock;
+    reg  [19:0] cur8$d;
+    wire  [19:0] cur8$q;
+    reg  cur8$clock;
+    reg  any8$d;
+    wire  any8$q;
+    reg  any8$clock;
+    reg  ringle8$d;
+    wire  ringle8$q;
+    reg  ringle8$clock;
+    reg  [73:0] p9$d;
+    wire  [73:0] p9$q;
+    reg  p9$clock;
+    reg  cont9$d;
+    wire  cont9$q;
+    reg  cont9$clock;
+    reg  [15:0] lab9$d;
+    wire  [15:0] lab9$q;
+    reg  lab9$clock;
+    reg  labok9$d;
+    wire  labok9$q;
+    reg  labok9$clock;
+    reg  ring9$d;
+    wire  ring9$q;
+    reg  ring9$clock;
+    reg  flok9$d;
+    wire  flok9$q;
+    reg  flok9$clock;
+    reg  curok9$d;
+    wire  curok9$q;
+    reg  curok9$clock;
+    reg  ne9$d;
+    wire  ne9$q;
+    reg  ne9$clock;
+    reg  [15:0] fl9$d;
+    wire  [15:0] fl9$q;
+    reg  fl9$clock;
+    reg  [15:0] cur9$d;
+    wire  [15:0] cur9$q;
+    reg  cur9$clock;
+    reg  [11:0] rdcol9$d;
+    wire  [11:0] rdcol9$q;
+    reg  rdcol9$clock;
+    reg  [11:0] wrap_col$d;
+    wire  [11:0] wrap_col$q;
+    reg  wrap_col$clock;
+    reg  [131:0] out_q$d;
+    wire  [131:0] out_q$q;
+    reg  out_q$clock;
+    reg  [1:0] state_q$d;
+    wire  [1:0] state_q$q;
+    reg  state_q$clock;
+    reg  [19:0] unl$d;
+    wire  [19:0] unl$q;
+    reg  unl$clock;
+
+    // Local signals
+    reg  lok;
+
+    // Sub module instances
+    fcc_intra__codes__p8_k7_668cf05b p8(
+        .d(p8$d),
+        .q(p8$q),
+        .clock(p8$clock)
+    );
+    fcc_intra__codes__cont8_k7_668cf05b cont8(
+        .d(cont8$d),
+        .q(cont8$q),
+        .clock(cont8$clock)
+    );
+    fcc_intra__codes__lab8_k7_668cf05b lab8(
+        .d(lab8$d),
+        .q(lab8$q),
+        .clock(lab8$clock)
+    );
+    fcc_intra__codes__fl8_k7_668cf05b fl8(
+        .d(fl8$d),
+        .q(fl8$q),
+        .clock(fl8$clock)
+    );
+    fcc_intra__codes__cur8_k7_668cf05b cur8(
+        .d(cur8$d),
+        .q(cur8$q),
+        .clock(cur8$clock)
+    );
+    fcc_intra__codes__any8_k7_668cf05b any8(
+        .d(any8$d),
+        .q(any8$q),
+        .clock(any8$clock)
+    );
+    fcc_intra__codes__ringle8_k7_668cf05b ringle8(
+        .d(ringle8$d),
+        .q(ringle8$q),
+        .clock(ringle8$clock)
+    );
+    fcc_intra__codes__p9_k7_668cf05b p9(
+        .d(p9$d),
+        .q(p9$q),
+        .clock(p9$clock)
+    );
+    fcc_intra__codes__cont9_k7_668cf05b cont9(
+        .d(cont9$d),
+        .q(cont9$q),
+        .clock(cont9$clock)
+    );
+    fcc_intra__codes__lab9_k7_668cf05b lab9(
+        .d(lab9$d),
+        .q(lab9$q),
+        .clock(lab9$clock)
+    );
+    fcc_intra__codes__labok9_k7_668cf05b labok9(
+        .d(labok9$d),
+        .q(labok9$q),
+        .clock(labok9$clock)
+    );
+    fcc_intra__codes__ring9_k7_668cf05b ring9(
+        .d(ring9$d),
+        .q(ring9$q),
+        .clock(ring9$clock)
+    );
+    fcc_intra__codes__flok9_k7_668cf05b flok9(
+        .d(flok9$d),
+        .q(flok9$q),
+        .clock(flok9$clock)
+    );
+    fcc_intra__codes__curok9_k7_668cf05b curok9(
+        .d(curok9$d),
+        .q(curok9$q),
+        .clock(curok9$clock)
+    );
+    fcc_intra__codes__ne9_k7_668cf05b ne9(
+        .d(ne9$d),
+        .q(ne9$q),
+        .clock(ne9$clock)
+    );
+    fcc_intra__codes__fl9_k7_668cf05b fl9(
+        .d(fl9$d),
+        .q(fl9$q),
+        .clock(fl9$clock)
+    );
+    fcc_intra__codes__cur9_k7_668cf05b cur9(
+        .d(cur9$d),
+        .q(cur9$q),
+        .clock(cur9$clock)
+    );
+    fcc_intra__codes__rdcol9_k7_668cf05b rdcol9(
+        .d(rdcol9$d),
+        .q(rdcol9$q),
+        .clock(rdcol9$clock)
+    );
+    fcc_intra__codes__wrap_col_k7_668cf05b wrap_col(
+        .d(wrap_col$d),
+        .q(wrap_col$q),
+        .clock(wrap_col$clock)
+    );
+    fcc_intra__codes__out_q_k7_668cf05b out_q(
+        .d(out_q$d),
+        .q(out_q$q),
+        .clock(out_q$clock)
+    );
+    fcc_intra__codes__state_q_k7_668cf05b state_q(
+        .d(state_q$d),
+        .q(state_q$q),
+        .clock(state_q$clock)
+    );
+    fcc_intra__codes__unl_k7_668cf05b unl(
+        .d(unl$d),
+        .q(unl$q),
+        .clock(unl$clock)
+    );
+
+    // Update code
+    always @(*) begin
+        p8$clock = clk;
+        cont8$clock = clk;
+        lab8$clock = clk;
+        fl8$clock = clk;
+        cur8$clock = clk;
+        any8$clock = clk;
+        ringle8$clock = clk;
+        p9$clock = clk;
+        cont9$clock = clk;
+        lab9$clock = clk;
+        labok9$clock = clk;
+        ring9$clock = clk;
+        flok9$clock = clk;
+        curok9$clock = clk;
+        ne9$clock = clk;
+        fl9$clock = clk;
+        cur9$clock = clk;
+        rdcol9$clock = clk;
+        wrap_col$clock = clk;
+        out_q$clock = clk;
+        state_q$clock = clk;
+        unl$clock = clk;
+        p8$d = p8$q;
+        cont8$d = cont8$q;
+        lab8$d = lab8$q;
+        fl8$d = fl8$q;
+        cur8$d = cur8$q;
+        any8$d = any8$q;
+        ringle8$d = ringle8$q;
+        p9$d = p9$q;
+        cont9$d = cont9$q;
+        lab9$d = lab9$q;
+        labok9$d = labok9$q;
+        ring9$d = ring9$q;
+        flok9$d = flok9$q;
+        curok9$d = curok9$q;
+        ne9$d = ne9$q;
+        fl9$d = fl9$q;
+        cur9$d = cur9$q;
+        rdcol9$d = rdcol9$q;
+        wrap_col$d = wrap_col$q;
+        out_q$d = out_q$q;
+        state_q$d = state_q$q;
+        unl$d = unl$q;
+        p8$d = pix;
         cont8$d = cont;
         lab8$d = lab;
-        fl8$d = fl_eff;
-        cur8$d = cur_next;
-        any8$d = any_eff;
-        ringle8$d = ring$hit;
+        fl8$d = fl;
+        cur8$d = cur;
+        any8$d = any;
+        ringle8$d = ring_hit;
         p9$d = p8$q;
         cont9$d = cont8$q;
         lab9$d = lab8$q[15:0];
@@ -6861,25 +7302,25 @@ module fcc_intra_k7_668cf05b(clk,rst,pix,last_col,key,ch,out,provisional,overflo
         if (lok) begin
             out_q$d[65:50] = lab9$q;
         end
-        out_q$d[67:66] = st_empty;
+        state_q$d = st_empty;
         if (p9$q[0:0] & p9$q[1:1]) begin
             if (cont9$q) begin
-                out_q$d[67:66] = st_cont;
+                state_q$d = st_cont;
             end
             else if (labok9$q) begin
-                out_q$d[67:66] = st_new;
+                state_q$d = st_new;
             end
             else begin
-                out_q$d[67:66] = st_unl;
+                state_q$d = st_unl;
             end
         end
-        out_q$d[75:68] = p9$q[57:50];
-        out_q$d[87:76] = p9$q[69:58];
-        out_q$d[99:88] = rdcol9$q;
-        out_q$d[100:100] = p9$q[71:71];
-        out_q$d[101:101] = ring9$q & flok9$q & curok9$q & ne9$q;
-        out_q$d[117:102] = fl9$q;
-        out_q$d[133:118] = cur9$q;
+        out_q$d[73:66] = p9$q[57:50];
+        out_q$d[85:74] = p9$q[69:58];
+        out_q$d[97:86] = rdcol9$q;
+        out_q$d[98:98] = p9$q[71:71];
+        out_q$d[99:99] = ring9$q & flok9$q & curok9$q & ne9$q;
+        out_q$d[115:100] = fl9$q;
+        out_q$d[131:116] = cur9$q;
         if (p9$q[0:0]) begin
             if (p9$q[70:70]) begin
                 unl$d = zero20;
@@ -6888,55 +7329,20 @@ module fcc_intra_k7_668cf05b(clk,rst,pix,last_col,key,ch,out,provisional,overflo
                 unl$d = unl$q + one20;
             end
         end
-        rm1$d = raw$q - one20;
-        prov$d = rm1$q[16:0];
-        ovf$d = 1'b0;
-        if (rm1$q > max20) begin
-            prov$d = max17;
-            ovf$d = 1'b1;
-        end
         if (rst) begin
-            has_prev$d = 1'b0;
-            pd$0$d[0:0] = 1'b0;
-            pd$1$d[0:0] = 1'b0;
-            pd$2$d[0:0] = 1'b0;
-            pd$3$d[0:0] = 1'b0;
-            pd$4$d[0:0] = 1'b0;
-            pd$5$d[0:0] = 1'b0;
-            pd$6$d = pix_zero;
             p8$d[0:0] = 1'b0;
             p9$d[0:0] = 1'b0;
             out_q$d[0:0] = 1'b0;
         end
         out = out_q$q;
-        provisional = prov$q;
-        overflow = ovf$q;
+        state = state_q$q;
         unlabelled = unl$q;
     end
 
-endmodule // fcc_intra_k7_668cf05b
+endmodule // fcc_intra__codes_k7_668cf05b
 
 
-module fcc_intra__any_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__any_k7_668cf05b
-
-
-module fcc_intra__any8_k7_668cf05b(d,q,clock);
+module fcc_intra__codes__any8_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -6952,29 +7358,10 @@ module fcc_intra__any8_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_intra__any8_k7_668cf05b
+endmodule // fcc_intra__codes__any8_k7_668cf05b
 
 
-module fcc_intra__cont8_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__cont8_k7_668cf05b
-
-
-module fcc_intra__cont9_k7_668cf05b(d,q,clock);
+module fcc_intra__codes__cont8_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -6990,7 +7377,387 @@ module fcc_intra__cont9_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_intra__cont9_k7_668cf05b
+endmodule // fcc_intra__codes__cont8_k7_668cf05b
+
+
+module fcc_intra__codes__cont9_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__codes__cont9_k7_668cf05b
+
+
+module fcc_intra__codes__cur8_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [19:0] d;
+    output reg  [19:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 20'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__codes__cur8_k7_668cf05b
+
+
+module fcc_intra__codes__cur9_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__codes__cur9_k7_668cf05b
+
+
+module fcc_intra__codes__curok9_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__codes__curok9_k7_668cf05b
+
+
+module fcc_intra__codes__fl8_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [19:0] d;
+    output reg  [19:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 20'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__codes__fl8_k7_668cf05b
+
+
+module fcc_intra__codes__fl9_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__codes__fl9_k7_668cf05b
+
+
+module fcc_intra__codes__flok9_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__codes__flok9_k7_668cf05b
+
+
+module fcc_intra__codes__lab8_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [19:0] d;
+    output reg  [19:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 20'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__codes__lab8_k7_668cf05b
+
+
+module fcc_intra__codes__lab9_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__codes__lab9_k7_668cf05b
+
+
+module fcc_intra__codes__labok9_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__codes__labok9_k7_668cf05b
+
+
+module fcc_intra__codes__ne9_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__codes__ne9_k7_668cf05b
+
+
+module fcc_intra__codes__out_q_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [131:0] d;
+    output reg  [131:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 132'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__codes__out_q_k7_668cf05b
+
+
+module fcc_intra__codes__p8_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [73:0] d;
+    output reg  [73:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 74'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__codes__p8_k7_668cf05b
+
+
+module fcc_intra__codes__p9_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [73:0] d;
+    output reg  [73:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 74'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__codes__p9_k7_668cf05b
+
+
+module fcc_intra__codes__rdcol9_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__codes__rdcol9_k7_668cf05b
+
+
+module fcc_intra__codes__ring9_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__codes__ring9_k7_668cf05b
+
+
+module fcc_intra__codes__ringle8_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__codes__ringle8_k7_668cf05b
+
+
+module fcc_intra__codes__state_q_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [1:0] d;
+    output reg  [1:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 2'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__codes__state_q_k7_668cf05b
+
+
+module fcc_intra__codes__unl_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [19:0] d;
+    output reg  [19:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 20'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__codes__unl_k7_668cf05b
+
+
+module fcc_intra__codes__wrap_col_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_intra__codes__wrap_col_k7_668cf05b
 
 
 module fcc_intra__cur_k7_668cf05b(d,q,clock);
@@ -7010,63 +7777,6 @@ module fcc_intra__cur_k7_668cf05b(d,q,clock);
     end
 
 endmodule // fcc_intra__cur_k7_668cf05b
-
-
-module fcc_intra__cur8_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [19:0] d;
-    output reg  [19:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 20'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__cur8_k7_668cf05b
-
-
-module fcc_intra__cur9_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__cur9_k7_668cf05b
-
-
-module fcc_intra__curok9_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__curok9_k7_668cf05b
 
 
 module fcc_intra__first_x_k7_668cf05b(d,q,clock);
@@ -7143,63 +7853,6 @@ module fcc_intra__fl_k7_668cf05b(d,q,clock);
     end
 
 endmodule // fcc_intra__fl_k7_668cf05b
-
-
-module fcc_intra__fl8_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [19:0] d;
-    output reg  [19:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 20'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__fl8_k7_668cf05b
-
-
-module fcc_intra__fl9_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__fl9_k7_668cf05b
-
-
-module fcc_intra__flok9_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__flok9_k7_668cf05b
 
 
 module fcc_intra__fvd__0_k7_668cf05b(d,q,clock);
@@ -7354,82 +8007,6 @@ module fcc_intra__has_prev_k7_668cf05b(d,q,clock);
 endmodule // fcc_intra__has_prev_k7_668cf05b
 
 
-module fcc_intra__lab8_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [19:0] d;
-    output reg  [19:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 20'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__lab8_k7_668cf05b
-
-
-module fcc_intra__lab9_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__lab9_k7_668cf05b
-
-
-module fcc_intra__labok9_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__labok9_k7_668cf05b
-
-
-module fcc_intra__ne9_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__ne9_k7_668cf05b
-
-
 module fcc_intra__near_k7_668cf05b(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
@@ -7479,25 +8056,6 @@ module fcc_intra__near_k7_668cf05b(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 endmodule // fcc_intra__near_k7_668cf05b
 
 
-module fcc_intra__out_q_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [133:0] d;
-    output reg  [133:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 134'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__out_q_k7_668cf05b
-
-
 module fcc_intra__ovf_k7_668cf05b(d,q,clock);
 
     // Module arguments
@@ -7515,44 +8073,6 @@ module fcc_intra__ovf_k7_668cf05b(d,q,clock);
     end
 
 endmodule // fcc_intra__ovf_k7_668cf05b
-
-
-module fcc_intra__p8_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [73:0] d;
-    output reg  [73:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 74'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__p8_k7_668cf05b
-
-
-module fcc_intra__p9_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [73:0] d;
-    output reg  [73:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 74'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__p9_k7_668cf05b
 
 
 module fcc_intra__pd__0_k7_668cf05b(d,q,clock);
@@ -7783,25 +8303,6 @@ module fcc_intra__raw_k7_668cf05b(d,q,clock);
 endmodule // fcc_intra__raw_k7_668cf05b
 
 
-module fcc_intra__rdcol9_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 12'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__rdcol9_k7_668cf05b
-
-
 module fcc_intra__ring_k7_668cf05b(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
 
     // Module arguments
@@ -7849,44 +8350,6 @@ module fcc_intra__ring_k7_668cf05b(clk,ax,ay,az,bx,by,bz,en_in,c,hit);
         hit <= en_d[5] & pz[35];
     end
 endmodule // fcc_intra__ring_k7_668cf05b
-
-
-module fcc_intra__ring9_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__ring9_k7_668cf05b
-
-
-module fcc_intra__ringle8_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__ringle8_k7_668cf05b
 
 
 module fcc_intra__rm1_k7_668cf05b(d,q,clock);
@@ -8372,44 +8835,6 @@ module fcc_intra__thr__ring_q_k7_668cf05b(d,q,clock);
     end
 
 endmodule // fcc_intra__thr__ring_q_k7_668cf05b
-
-
-module fcc_intra__unl_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [19:0] d;
-    output reg  [19:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 20'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__unl_k7_668cf05b
-
-
-module fcc_intra__wrap_col_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 12'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_intra__wrap_col_k7_668cf05b
 
 
 module fcc_top__intra_rst_k7_668cf05b(clock,d,q);
@@ -12852,44 +13277,6 @@ module fcc_label_update__writer__word_pos_k7_668cf05b(d,q,clock);
 endmodule // fcc_label_update__writer__word_pos_k7_668cf05b
 
 
-module fcc_top__last_col_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 12'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__last_col_k7_668cf05b
-
-
-module fcc_top__last_seen_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__last_seen_k7_668cf05b
-
-
 module fcc_merge_table_k7_668cf05b(clk,rst,jv,ja,jb,jsame,jtake,init_busy,union_idle,flat_start,provisional,fv,fval,gear_used,clusters);
 
     // Module arguments
@@ -15189,41 +15576,101 @@ module fcc_top__merge_table_rst_k7_668cf05b(clock,d,q);
 endmodule // fcc_top__merge_table_rst_k7_668cf05b
 
 
-module fcc_top__one_row_k7_668cf05b(d,q,clock);
+module fcc_top__phase_k7_668cf05b(clk,rst,in_done,init_busy,last_done,union_idle,jq_empty,rb_done,run,restart,out_start,run_next,out_next);
 
     // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
+    input wire  clk;
+    input wire  rst;
+    input wire  in_done;
+    input wire  init_busy;
+    input wire  last_done;
+    input wire  union_idle;
+    input wire  jq_empty;
+    input wire  rb_done;
+    output reg  run;
+    output reg  restart;
+    output reg  out_start;
+    output reg  run_next;
+    output reg  out_next;
 
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
+    // Enums
+    localparam Phase$Init = 0;
+    localparam Phase$Run = 1;
+    localparam Phase$Drain = 2;
+    localparam Phase$Out = 3;
 
-    always @(posedge clock) begin
-       q <= d;
-    end
+    // Stub signals
+    reg  [1:0] phase$d;
+    wire  [1:0] phase$q;
+    reg  phase$clock;
+    reg  last_seen$d;
+    wire  last_seen$q;
+    reg  last_seen$clock;
+    reg  start_net$x;
+    wire  start_net$y;
 
-endmodule // fcc_top__one_row_k7_668cf05b
+    // Local signals
+    reg  drained;
+    reg  start;
 
+    // Sub module instances
+    fcc_top__phase__phase_k7_668cf05b phase(
+        .d(phase$d),
+        .q(phase$q),
+        .clock(phase$clock)
+    );
+    fcc_top__phase__last_seen_k7_668cf05b last_seen(
+        .d(last_seen$d),
+        .q(last_seen$q),
+        .clock(last_seen$clock)
+    );
+    fcc_top__phase__start_net_k7_668cf05b start_net(
+        .x(start_net$x),
+        .y(start_net$y)
+    );
 
-module fcc_top__out_start_net_k7_668cf05b(x,y);
-
-    // Module arguments
-    input wire  x;
-    output reg  y;
-
-    // Update code (custom)
-    (* max_fanout = 64 *) wire net;
-    assign net = x;
+    // Update code
     always @(*) begin
-        y = net;
+        phase$clock = clk;
+        last_seen$clock = clk;
+        phase$d = phase$q;
+        last_seen$d = last_seen$q;
+        if (last_done) begin
+            last_seen$d = 1'b1;
+        end
+        drained = last_seen$q & union_idle & jq_empty;
+        start = 1'b0;
+        restart = 1'b0;
+        if ((phase$q == Phase$Init) & ~init_busy) begin
+            phase$d = Phase$Run;
+        end
+        if ((phase$q == Phase$Run) & in_done) begin
+            phase$d = Phase$Drain;
+        end
+        if ((phase$q == Phase$Drain) & drained) begin
+            start = 1'b1;
+            phase$d = Phase$Out;
+        end
+        if ((phase$q == Phase$Out) & rb_done) begin
+            phase$d = Phase$Run;
+            restart = 1'b1;
+            last_seen$d = 1'b0;
+        end
+        if (rst) begin
+            phase$d = Phase$Init;
+            last_seen$d = 1'b0;
+        end
+        start_net$x = start;
+        out_start = start_net$y;
+        run = phase$q == Phase$Run;
+        run_next = phase$d == Phase$Run;
+        out_next = phase$d == Phase$Out;
     end
-endmodule // fcc_top__out_start_net_k7_668cf05b
+
+endmodule // fcc_top__phase_k7_668cf05b
 
 
-module fcc_top__pad_k7_668cf05b(d,q,clock);
+module fcc_top__phase__last_seen_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -15239,67 +15686,10 @@ module fcc_top__pad_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_top__pad_k7_668cf05b
+endmodule // fcc_top__phase__last_seen_k7_668cf05b
 
 
-module fcc_top__pad_go_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__pad_go_k7_668cf05b
-
-
-module fcc_top__pen_col_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 12'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__pen_col_k7_668cf05b
-
-
-module fcc_top__pen_row_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__pen_row_k7_668cf05b
-
-
-module fcc_top__phase_k7_668cf05b(d,q,clock);
+module fcc_top__phase__phase_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [1:0] d;
@@ -15321,7 +15711,22 @@ module fcc_top__phase_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_top__phase_k7_668cf05b
+endmodule // fcc_top__phase__phase_k7_668cf05b
+
+
+module fcc_top__phase__start_net_k7_668cf05b(x,y);
+
+    // Module arguments
+    input wire  x;
+    output reg  y;
+
+    // Update code (custom)
+    (* max_fanout = 64 *) wire net;
+    assign net = x;
+    always @(*) begin
+        y = net;
+    end
+endmodule // fcc_top__phase__start_net_k7_668cf05b
 
 
 module fcc_top__pix_thr_k7_668cf05b(clk,rst,pix,sh,sv,ch_t,cv_t,out,key,ch,cv);
@@ -21026,82 +21431,6 @@ module fcc_regs__run__thresholds__th_v__sh_v_k7_668cf05b(d,q,clock);
     end
 
 endmodule // fcc_regs__run__thresholds__th_v__sh_v_k7_668cf05b
-
-
-module fcc_top__room_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__room_k7_668cf05b
-
-
-module fcc_top__row_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [7:0] d;
-    output reg  [7:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 8'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__row_k7_668cf05b
-
-
-module fcc_top__row_last_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__row_last_k7_668cf05b
-
-
-module fcc_top__slot_q_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [73:0] d;
-    output reg  [73:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 74'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__slot_q_k7_668cf05b
 
 
 module fcc_sort_net_k7_668cf05b(clk,rst,clear,centre,hit$0,hit$1,hit$2,hit$3,hit$4,hit$5,hit$6,hit$7,hit$8,hit$9,hit$10,hit$11,hit$12,hit$13,hit$14,hit$15,hit$16,hit$17,hit$18,hit$19,hit$20,rep$0,rep$1,rep$2,rep$3,rep$4,rep$5,rep$6,rep$7,rep$8,rep$9,rep$10,rep$11,rep$12,rep$13,rep$14,rep$15,rep$16,rep$17,rep$18,rep$19,rep$20,rep_we,rep_waddr,rep_wdata,jv,ja,jb,jsame,jtake,jq_empty,last_done,drop,take,joins);
@@ -59971,25 +60300,6 @@ module fcc_top__thr_window__win_key__9_k7_668cf05b(d,q,clock);
     end
 
 endmodule // fcc_top__thr_window__win_key__9_k7_668cf05b
-
-
-module fcc_top__tready_q_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__tready_q_k7_668cf05b
 
 
 module fcc_window_k7_668cf05b(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_ok$4,ent_ok$5,ent_ok$6,ent_ok$7,ent_ok$8,ent_ok$9,ent_ok$10,ent_ok$11,ent_ok$12,ent_ok$13,ent_ok$14,ent_ok$15,ent_ok$16,ent_ok$17,ent_ok$18,ent_ok$19,ent_ok$20,ent_x$0,ent_x$1,ent_x$2,ent_x$3,ent_x$4,ent_x$5,ent_x$6,ent_x$7,ent_x$8,ent_x$9,ent_x$10,ent_x$11,ent_x$12,ent_x$13,ent_x$14,ent_x$15,ent_x$16,ent_x$17,ent_x$18,ent_x$19,ent_x$20,ent_y$0,ent_y$1,ent_y$2,ent_y$3,ent_y$4,ent_y$5,ent_y$6,ent_y$7,ent_y$8,ent_y$9,ent_y$10,ent_y$11,ent_y$12,ent_y$13,ent_y$14,ent_y$15,ent_y$16,ent_y$17,ent_y$18,ent_y$19,ent_y$20,ent_z$0,ent_z$1,ent_z$2,ent_z$3,ent_z$4,ent_z$5,ent_z$6,ent_z$7,ent_z$8,ent_z$9,ent_z$10,ent_z$11,ent_z$12,ent_z$13,ent_z$14,ent_z$15,ent_z$16,ent_z$17,ent_z$18,ent_z$19,ent_z$20,ent_rep$0,ent_rep$1,ent_rep$2,ent_rep$3,ent_rep$4,ent_rep$5,ent_rep$6,ent_rep$7,ent_rep$8,ent_rep$9,ent_rep$10,ent_rep$11,ent_rep$12,ent_rep$13,ent_rep$14,ent_rep$15,ent_rep$16,ent_rep$17,ent_rep$18,ent_rep$19,ent_rep$20,rep_we,rep_waddr,rep_wdata);

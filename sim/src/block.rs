@@ -1,6 +1,7 @@
 //! One block alone under Verilator, for its own bench: the cache, build and
-//! load shared by the block benches (`regs_bench`, `merge_bench`,
-//! `label_update_bench`, `window_bench`, `sort_net_bench`, `point_thr_bench`).
+//! load shared by the block benches (the hand-written shims of `regs_bench`,
+//! `axil_adapter_bench`, `window_bench`, `sort_net_bench`, and the generated
+//! ones of `plain`).
 //!
 //! A block's shim exports three C functions, `<symbol>_new`, `<symbol>_free`
 //! and `<symbol>_step`; `S` is the type of the step function, which differs
@@ -41,10 +42,10 @@ pub(crate) struct BlockBuild<'a> {
 
 /// A block bench's C++ shim: its file name, its text and the prefix of its
 /// three C functions.
-pub(crate) struct BenchShim {
-    pub file: &'static str,
-    pub text: &'static str,
-    pub symbol: &'static str,
+pub(crate) struct BenchShim<'a> {
+    pub file: &'a str,
+    pub text: &'a str,
+    pub symbol: &'a str,
 }
 
 /// Load the model of the bench block `block` (its Verilog and waivers from
@@ -54,7 +55,7 @@ pub(crate) fn load_bench<S: Copy>(
     cache: &'static BlockCache<S>,
     block: fcc_rtl::BenchBlock,
     p: &fcc_params::FccParams,
-    shim: &BenchShim,
+    shim: &BenchShim<'_>,
     extra: &[(&str, &str)],
 ) -> Result<Arc<BlockModel<S>>, SimError> {
     let name = block.name();

@@ -2,20 +2,11 @@
 //! cached) from `fcc_rtl::generate_label_update`, fed frame-buffer codes and
 //! compact labels, its output stream read with back-pressure.
 
-use std::ffi::c_void;
-use std::sync::{Arc, OnceLock};
-
 use fcc_params::FccParams;
 
-use crate::block::{load_bench, BenchShim, BlockCache, BlockInstance, BlockModel};
 use crate::ffi::c_struct;
+use crate::plain::{load_plain, PlainDut, PlainModel};
 use crate::SimError;
-
-const SHIM: BenchShim = BenchShim {
-    file: "fcc_label_update_shim.cpp",
-    text: include_str!("../csrc/fcc_label_update_shim.cpp"),
-    symbol: "fcc_label_update",
-};
 
 c_struct! {
     /// Inputs of one cycle (declared to the shim by the generated `fcc_ffi.h`).
@@ -48,34 +39,13 @@ c_struct! {
     }
 }
 
-type StepFn = unsafe extern "C" fn(*mut c_void, *const LuIn, *mut LuOut);
-
 /// A loaded Verilator model of `fcc_label_update`.
-pub type LuModel = BlockModel<StepFn>;
-
-/// Load the label-updater model of the build `p`, building it if needed.
-pub fn load_label_update(p: &FccParams) -> Result<Arc<LuModel>, SimError> {
-    static MODELS: BlockCache<StepFn> = OnceLock::new();
-    load_bench(&MODELS, fcc_rtl::BenchBlock::LabelUpdate, p, &SHIM, &[])
-}
+pub type LuModel = PlainModel<LuIn, LuOut>;
 
 /// One simulated label updater.
-pub struct LuDut {
-    dut: BlockInstance<StepFn>,
-}
+pub type LuDut = PlainDut<LuIn, LuOut>;
 
-impl LuDut {
-    pub fn new(model: Arc<LuModel>) -> Self {
-        let dut = BlockInstance::new(model);
-        LuDut { dut }
-    }
-
-    /// One cycle with `inp`; the outputs seen before the clock edge.
-    pub fn step(&mut self, inp: &LuIn) -> LuOut {
-        let mut out = LuOut::default();
-        let (step, handle) = self.dut.step_fn();
-        // SAFETY: `handle` is live; both pointers refer to `repr(C)` values.
-        unsafe { step(handle, inp, &mut out) };
-        out
-    }
+/// Load the label-updater model of the build `p`, building it if needed.
+pub fn load_label_update(p: &FccParams) -> Result<LuModel, SimError> {
+    load_plain(fcc_rtl::BenchBlock::LabelUpdate, p)
 }

@@ -17,6 +17,7 @@ pub mod frames;
 pub mod label_update_bench;
 pub mod merge_bench;
 pub mod model;
+pub mod plain;
 pub mod point_thr_bench;
 pub mod regs_bench;
 pub mod run;
@@ -38,6 +39,7 @@ pub use merge_bench::{load_merge_table, MergeDut, MergeIn, MergeOut};
 pub use model::{
     cache_root, is_cached, is_cached_dir, load, load_dir, read_generated, Dut, GeneratedDir, Model,
 };
+pub use plain::{load_plain, PlainDut, PlainModel};
 pub use point_thr_bench::{load_point_thr, PointThrDut, PtIn, PtOut};
 pub use regs_bench::{load_regs, RegsDut, RegsIn, RegsOut};
 pub use run::{check_run, run_and_check_with, run_values};

@@ -3,23 +3,14 @@
 //! flattened against random gearbox back-pressure, and compared with the
 //! golden model's `ExactMerge`.
 
-use std::ffi::c_void;
-use std::sync::{Arc, OnceLock};
-
 use fcc_golden::{renumber, ExactMerge};
 use fcc_params::FccParams;
 use rand::rngs::StdRng;
 use rand::Rng;
 
-use crate::block::{load_bench, BenchShim, BlockCache, BlockInstance, BlockModel};
 use crate::ffi::c_struct;
+use crate::plain::{load_plain, PlainDut, PlainModel};
 use crate::SimError;
-
-const SHIM: BenchShim = BenchShim {
-    file: "fcc_merge_shim.cpp",
-    text: include_str!("../csrc/fcc_merge_shim.cpp"),
-    symbol: "fcc_merge",
-};
 
 c_struct! {
     /// Inputs of one cycle (declared to the shim by the generated `fcc_ffi.h`).
@@ -47,15 +38,12 @@ c_struct! {
     }
 }
 
-type StepFn = unsafe extern "C" fn(*mut c_void, *const MergeIn, *mut MergeOut);
-
 /// A loaded Verilator model of `fcc_merge_table`.
-pub type MergeModel = BlockModel<StepFn>;
+pub type MergeModel = PlainModel<MergeIn, MergeOut>;
 
 /// Load the merge-table model of the build `p`, building it if needed.
-pub fn load_merge_table(p: &FccParams) -> Result<Arc<MergeModel>, SimError> {
-    static MODELS: BlockCache<StepFn> = OnceLock::new();
-    load_bench(&MODELS, fcc_rtl::BenchBlock::MergeTable, p, &SHIM, &[])
+pub fn load_merge_table(p: &FccParams) -> Result<MergeModel, SimError> {
+    load_plain(fcc_rtl::BenchBlock::MergeTable, p)
 }
 
 /// One frame for the merge table: labels `1 ..= provisional` and the joins
@@ -120,14 +108,14 @@ pub struct MergeResult {
 
 /// One simulated merge table.
 pub struct MergeDut {
-    dut: BlockInstance<StepFn>,
+    dut: PlainDut<MergeIn, MergeOut>,
     label_bits: u32,
     cycles: u64,
 }
 
 impl MergeDut {
-    pub fn new(model: Arc<MergeModel>, p: &FccParams) -> Self {
-        let dut = BlockInstance::new(model);
+    pub fn new(model: MergeModel, p: &FccParams) -> Self {
+        let dut = PlainDut::new(model);
         MergeDut {
             dut,
             label_bits: p.label_bits,
@@ -137,12 +125,8 @@ impl MergeDut {
 
     /// One cycle with `inp`.
     pub fn step(&mut self, inp: &MergeIn) -> MergeOut {
-        let mut out = MergeOut::default();
-        let (step, handle) = self.dut.step_fn();
-        // SAFETY: `handle` is live; both pointers refer to `repr(C)` values.
-        unsafe { step(handle, inp, &mut out) };
         self.cycles += 1;
-        out
+        self.dut.step(inp)
     }
 
     /// Cycles simulated so far.

@@ -3,20 +3,11 @@
 //! parameters in per cycle, its key and addends out `PT_LATENCY` cycles
 //! later.
 
-use std::ffi::c_void;
-use std::sync::{Arc, OnceLock};
-
 use fcc_params::FccParams;
 
-use crate::block::{load_bench, BenchShim, BlockCache, BlockInstance, BlockModel};
 use crate::ffi::c_struct;
+use crate::plain::{load_plain, PlainDut, PlainModel};
 use crate::SimError;
-
-const SHIM: BenchShim = BenchShim {
-    file: "fcc_point_thr_shim.cpp",
-    text: include_str!("../csrc/fcc_point_thr_shim.cpp"),
-    symbol: "fcc_point_thr",
-};
 
 c_struct! {
     /// Inputs of one cycle (declared to the shim by the generated `fcc_ffi.h`).
@@ -48,35 +39,14 @@ c_struct! {
     }
 }
 
-type StepFn = unsafe extern "C" fn(*mut c_void, *const PtIn, *mut PtOut);
-
 /// A loaded Verilator model of `fcc_point_thr`.
-pub type PtModel = BlockModel<StepFn>;
+pub type PtModel = PlainModel<PtIn, PtOut>;
+
+/// One simulated threshold unit.
+pub type PointThrDut = PlainDut<PtIn, PtOut>;
 
 /// Load the threshold unit's model (named for the build `p`), building it
 /// if needed.
-pub fn load_point_thr(p: &FccParams) -> Result<Arc<PtModel>, SimError> {
-    static MODELS: BlockCache<StepFn> = OnceLock::new();
-    load_bench(&MODELS, fcc_rtl::BenchBlock::PointThr, p, &SHIM, &[])
-}
-
-/// One simulated threshold unit.
-pub struct PointThrDut {
-    dut: BlockInstance<StepFn>,
-}
-
-impl PointThrDut {
-    pub fn new(model: Arc<PtModel>) -> Self {
-        let dut = BlockInstance::new(model);
-        PointThrDut { dut }
-    }
-
-    /// One cycle with `inp`; the outputs seen before the clock edge.
-    pub fn step(&mut self, inp: &PtIn) -> PtOut {
-        let mut out = PtOut::default();
-        let (step, handle) = self.dut.step_fn();
-        // SAFETY: `handle` is live; both pointers refer to `repr(C)` values.
-        unsafe { step(handle, inp, &mut out) };
-        out
-    }
+pub fn load_point_thr(p: &FccParams) -> Result<PtModel, SimError> {
+    load_plain(fcc_rtl::BenchBlock::PointThr, p)
 }

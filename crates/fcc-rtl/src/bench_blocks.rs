@@ -1,7 +1,7 @@
 //! The blocks generated alone for their own Verilator benches, in one
 //! table: each block's module name, Verilog and lint waivers. The benches
 //! (`fcc-sim`) and the lint test read it, so a new block bench is a row
-//! here, its shim and its test.
+//! here, its test and (for a block with a non-plain port) its shim.
 
 use fcc_params::FccParams;
 
@@ -26,11 +26,40 @@ pub enum BenchBlock {
     SortNet,
     /// The per-point threshold unit `FccPointThr` (range-adaptive thresholds).
     PointThr,
+    /// The core's AXI4-Stream input stage `FccInputStage`.
+    InputStage,
+    /// The front end's credit counter `FccCredits`.
+    Credits,
+    /// The frame-phase machine `FccFramePhase`.
+    FramePhase,
+}
+
+/// One row of the table: the module's name before the configuration
+/// suffix (the stem of its files), its generator and its waivers.
+struct Row {
+    name: &'static str,
+    generate: fn(&FccParams) -> Result<String, RtlError>,
+    waivers: fn(&FccParams, &str) -> String,
+}
+
+impl Row {
+    /// A block whose Verilog is the same for every build (the suffix names
+    /// it) and needs no waiver beyond its file's name.
+    const fn plain(
+        name: &'static str,
+        generate: fn(&FccParams) -> Result<String, RtlError>,
+    ) -> Row {
+        Row {
+            name,
+            generate,
+            waivers: lint::block_waivers,
+        }
+    }
 }
 
 impl BenchBlock {
     /// Every block with a bench.
-    pub const ALL: [BenchBlock; 7] = [
+    pub const ALL: [BenchBlock; 10] = [
         BenchBlock::Regs,
         BenchBlock::AxilAdapter,
         BenchBlock::MergeTable,
@@ -38,20 +67,73 @@ impl BenchBlock {
         BenchBlock::Window,
         BenchBlock::SortNet,
         BenchBlock::PointThr,
+        BenchBlock::InputStage,
+        BenchBlock::Credits,
+        BenchBlock::FramePhase,
     ];
+
+    fn row(self) -> Row {
+        use crate::generate_block as gen;
+        match self {
+            BenchBlock::Regs => Row {
+                name: crate::REGS_NAME,
+                generate: crate::generate_regs,
+                waivers: |p, _| lint::regs_waivers(p),
+            },
+            BenchBlock::AxilAdapter => Row {
+                name: crate::AXIL_ADAPTER_NAME,
+                generate: crate::generate_axil_adapter,
+                waivers: |p, _| lint::axil_adapter_waivers(p),
+            },
+            BenchBlock::MergeTable => Row {
+                name: crate::MERGE_TABLE_NAME,
+                generate: crate::generate_merge_table,
+                waivers: |p, _| lint::merge_table_waivers(p),
+            },
+            BenchBlock::LabelUpdate => Row {
+                name: crate::LABEL_UPDATE_NAME,
+                generate: crate::generate_label_update,
+                waivers: |p, _| lint::label_update_waivers(p),
+            },
+            BenchBlock::Window => Row {
+                name: crate::WINDOW_NAME,
+                generate: crate::generate_window,
+                waivers: |p, _| lint::window_waivers(p),
+            },
+            BenchBlock::SortNet => Row {
+                name: crate::SORT_NET_NAME,
+                generate: crate::generate_sort_net,
+                waivers: |p, _| lint::sort_net_waivers(p),
+            },
+            BenchBlock::PointThr => Row::plain(crate::POINT_THR_NAME, crate::generate_point_thr),
+            BenchBlock::InputStage => Row::plain("fcc_input_stage", |p| {
+                gen(
+                    p,
+                    crate::fcc_input_stage::FccInputStage::default(),
+                    "fcc_input_stage",
+                )
+            }),
+            BenchBlock::Credits => Row::plain("fcc_credits", |p| {
+                gen(p, crate::fcc_credits::FccCredits::default(), "fcc_credits")
+            }),
+            BenchBlock::FramePhase => Row {
+                name: "fcc_frame_phase",
+                generate: |p| {
+                    gen(
+                        p,
+                        crate::fcc_frame_phase::FccFramePhase::default(),
+                        "fcc_frame_phase",
+                    )
+                },
+                waivers: lint::enum_block_waivers,
+            },
+        }
+    }
 
     /// The module's name before the configuration suffix, and the stem of
     /// its files (`<name>.v`, `<name>.vlt`).
     pub fn name(self) -> &'static str {
-        match self {
-            BenchBlock::Regs => crate::REGS_NAME,
-            BenchBlock::AxilAdapter => crate::AXIL_ADAPTER_NAME,
-            BenchBlock::MergeTable => crate::MERGE_TABLE_NAME,
-            BenchBlock::LabelUpdate => crate::LABEL_UPDATE_NAME,
-            BenchBlock::Window => crate::WINDOW_NAME,
-            BenchBlock::SortNet => crate::SORT_NET_NAME,
-            BenchBlock::PointThr => crate::POINT_THR_NAME,
-        }
+        self.row().name
     }
 
     /// The module when generated alone for `p`: `fcc_regs_k7_1b2c3d4e`.
@@ -61,28 +143,14 @@ impl BenchBlock {
 
     /// The block's Verilog for the build `p`, as the module [`Self::module`].
     pub fn generate(self, p: &FccParams) -> Result<String, RtlError> {
-        match self {
-            BenchBlock::Regs => crate::generate_regs(p),
-            BenchBlock::AxilAdapter => crate::generate_axil_adapter(p),
-            BenchBlock::MergeTable => crate::generate_merge_table(p),
-            BenchBlock::LabelUpdate => crate::generate_label_update(p),
-            BenchBlock::Window => crate::generate_window(p),
-            BenchBlock::SortNet => crate::generate_sort_net(p),
-            BenchBlock::PointThr => crate::generate_point_thr(p),
-        }
+        p.validate_for_hardware()?;
+        (self.row().generate)(p)
     }
 
     /// The Verilator waivers of the block's file (`verilator --lint-only
     /// -Wall` passes with them).
     pub fn waivers(self, p: &FccParams) -> String {
-        match self {
-            BenchBlock::Regs => lint::regs_waivers(p),
-            BenchBlock::AxilAdapter => lint::axil_adapter_waivers(p),
-            BenchBlock::MergeTable => lint::merge_table_waivers(p),
-            BenchBlock::LabelUpdate => lint::label_update_waivers(p),
-            BenchBlock::Window => lint::window_waivers(p),
-            BenchBlock::SortNet => lint::sort_net_waivers(p),
-            BenchBlock::PointThr => lint::point_thr_waivers(p),
-        }
+        let row = self.row();
+        (row.waivers)(p, row.name)
     }
 }

@@ -18,16 +18,18 @@
 //!   counting past the last provisional label, so the decision is one add and
 //!   two multiplexers; whether a label fits is checked one stage later (labels
 //!   are allocated in order, so "raw label > 2^B - 1" is exactly "labels ran out").
-//! * N8: the range and ring comparisons; N9: the output codes; `out` is
+//! * N8: the range and ring comparisons; N9: the output codes (both in
+//!   `FccIntraCodes`); `out` and its frame-buffer code `state` are
 //!   registered, ten cycles after `pix`. The window's read column
 //!   `(j + h) mod C` (`rdcol`) follows the frame's columns (`last_col`).
 
 use fcc_params::FccParams;
 use rust_hdl::prelude::*;
 
+use crate::fcc_intra_codes::FccIntraCodes;
 use crate::fcc_intra_thr::FccIntraThr;
 use crate::fcc_sq_dist::{FccSqDist, SQ_LATENCY};
-use crate::types::{kb, Lab, Pix};
+use crate::types::{kb, Pix, WinPix};
 
 // The delay line below is written out for seven stages.
 const _: () = assert!(SQ_LATENCY == 7);
@@ -43,7 +45,9 @@ pub struct FccIntra {
     /// complement, from `fcc_pix_thr`).
     pub key: Signal<In, Bits<16>>,
     pub ch: Signal<In, Bits<36>>,
-    pub out: Signal<Out, Lab>,
+    pub out: Signal<Out, WinPix>,
+    /// The pixel's frame-buffer code (with `out`).
+    pub state: Signal<Out, Bits<2>>,
     // Status of the frame in progress (stable after its last pixel).
     pub provisional: Signal<Out, Bits<17>>,
     pub overflow: Signal<Out, Bit>,
@@ -67,31 +71,9 @@ pub struct FccIntra {
     cur: DFF<Bits<20>>,
     fl: DFF<Bits<20>>,
     any: DFF<Bit>,
-    // N8 registers.
-    p8: DFF<Pix>,
-    cont8: DFF<Bit>,
-    lab8: DFF<Bits<20>>,
-    fl8: DFF<Bits<20>>,
-    cur8: DFF<Bits<20>>,
-    any8: DFF<Bit>,
-    ringle8: DFF<Bit>,
-    // N9 registers.
-    p9: DFF<Pix>,
-    cont9: DFF<Bit>,
-    lab9: DFF<Bits<16>>,
-    labok9: DFF<Bit>,
-    ring9: DFF<Bit>,
-    flok9: DFF<Bit>,
-    curok9: DFF<Bit>,
-    ne9: DFF<Bit>,
-    fl9: DFF<Bits<16>>,
-    cur9: DFF<Bits<16>>,
-    rdcol9: DFF<Bits<12>>,
-    /// `C - h`: the first column whose read address wraps.
-    wrap_col: DFF<Bits<12>>,
-    out_q: DFF<Lab>,
+    // N8, N9: the output codes.
+    codes: FccIntraCodes,
     // Status.
-    unl: DFF<Bits<20>>,
     rm1: DFF<Bits<20>>,
     prov: DFF<Bits<17>>,
     ovf: DFF<Bit>,
@@ -115,20 +97,11 @@ pub struct FccIntra {
     fl_eff: Signal<Local, Bits<20>>,
     cur_next: Signal<Local, Bits<20>>,
     any_eff: Signal<Local, Bit>,
-    lok: Signal<Local, Bit>,
     // Constants.
     pix_zero: Constant<Pix>,
-    zero16: Constant<Bits<16>>,
-    zero20: Constant<Bits<20>>,
     one20: Constant<Bits<20>>,
     max20: Constant<Bits<20>>,
     max17: Constant<Bits<17>>,
-    half: Constant<Bits<12>>,
-    half_m1: Constant<Bits<12>>,
-    st_empty: Constant<Bits<2>>,
-    st_cont: Constant<Bits<2>>,
-    st_new: Constant<Bits<2>>,
-    st_unl: Constant<Bits<2>>,
 }
 
 impl FccIntra {
@@ -141,6 +114,7 @@ impl FccIntra {
             key: Default::default(),
             ch: Default::default(),
             out: Default::default(),
+            state: Default::default(),
             provisional: Default::default(),
             overflow: Default::default(),
             unlabelled: Default::default(),
@@ -160,27 +134,7 @@ impl FccIntra {
             cur: Default::default(),
             fl: Default::default(),
             any: Default::default(),
-            p8: Default::default(),
-            cont8: Default::default(),
-            lab8: Default::default(),
-            fl8: Default::default(),
-            cur8: Default::default(),
-            any8: Default::default(),
-            ringle8: Default::default(),
-            p9: Default::default(),
-            cont9: Default::default(),
-            lab9: Default::default(),
-            labok9: Default::default(),
-            ring9: Default::default(),
-            flok9: Default::default(),
-            curok9: Default::default(),
-            ne9: Default::default(),
-            fl9: Default::default(),
-            cur9: Default::default(),
-            rdcol9: Default::default(),
-            wrap_col: Default::default(),
-            out_q: Default::default(),
-            unl: Default::default(),
+            codes: FccIntraCodes::new(p),
             rm1: Default::default(),
             prov: Default::default(),
             ovf: Default::default(),
@@ -196,19 +150,10 @@ impl FccIntra {
             fl_eff: Default::default(),
             cur_next: Default::default(),
             any_eff: Default::default(),
-            lok: Default::default(),
             pix_zero: Constant::new(Pix::default()),
-            zero16: kb(0),
-            zero20: kb(0),
             one20: kb(1),
             max20: kb(u64::from(p.max_label())),
             max17: kb(u64::from(p.max_label())),
-            half: kb(p.half() as u64),
-            half_m1: kb(p.half() as u64 - 1),
-            st_empty: kb(0),
-            st_cont: kb(1),
-            st_new: kb(2),
-            st_unl: kb(3),
         }
     }
 }
@@ -218,8 +163,7 @@ impl Logic for FccIntra {
     fn update(&mut self) {
         dff_setup!(
             self, clk, prev_x, prev_y, prev_z, has_prev, first_x, first_y, first_z, raw, cur, fl,
-            any, p8, cont8, lab8, fl8, cur8, any8, ringle8, p9, cont9, lab9, labok9, ring9, flok9,
-            curok9, ne9, fl9, cur9, rdcol9, wrap_col, out_q, unl, rm1, prov, ovf
+            any, rm1, prov, ovf
         );
         for i in 0..7 {
             self.pd[i].clock.next = self.clk.val();
@@ -317,70 +261,16 @@ impl Logic for FccIntra {
             self.fl.d.next = self.fl_eff.val();
             self.any.d.next = self.any_eff.val();
         }
-        self.p8.d.next = self.p7.val();
-        self.cont8.d.next = self.cont.val();
-        self.lab8.d.next = self.lab.val();
-        self.fl8.d.next = self.fl_eff.val();
-        self.cur8.d.next = self.cur_next.val();
-        self.any8.d.next = self.any_eff.val();
-        self.ringle8.d.next = self.ring.hit.val();
-        // ---- N8: does each label fit, and the ring's comparisons.
-        self.p9.d.next = self.p8.q.val();
-        self.cont9.d.next = self.cont8.q.val();
-        self.lab9.d.next = self.lab8.q.val().get_bits::<16>(0);
-        self.labok9.d.next = self.lab8.q.val() <= self.max20.val();
-        self.ring9.d.next =
-            self.p8.q.val().valid & self.p8.q.val().coln & self.any8.q.val() & self.ringle8.q.val();
-        self.flok9.d.next = self.fl8.q.val() <= self.max20.val();
-        self.curok9.d.next = self.cur8.q.val() <= self.max20.val();
-        self.ne9.d.next = self.fl8.q.val() != self.cur8.q.val();
-        self.fl9.d.next = self.fl8.q.val().get_bits::<16>(0);
-        self.cur9.d.next = self.cur8.q.val().get_bits::<16>(0);
-        self.rdcol9.d.next = self.p8.q.val().col + self.half.val();
-        if self.p8.q.val().col >= self.wrap_col.q.val() {
-            self.rdcol9.d.next = self.p8.q.val().col - self.wrap_col.q.val();
-        }
-        self.wrap_col.d.next = self.last_col.val() - self.half_m1.val();
-        // ---- N9: output codes.
-        self.lok.next = self.p9.q.val().valid & self.p9.q.val().ok & self.labok9.q.val();
-        self.out_q.d.next.valid = self.p9.q.val().valid;
-        self.out_q.d.next.lok = self.lok.val();
-        self.out_q.d.next.x = self.p9.q.val().x;
-        self.out_q.d.next.y = self.p9.q.val().y;
-        self.out_q.d.next.z = self.p9.q.val().z;
-        self.out_q.d.next.label = self.zero16.val();
-        if self.lok.val() {
-            self.out_q.d.next.label = self.lab9.q.val();
-        }
-        self.out_q.d.next.state = self.st_empty.val();
-        if self.p9.q.val().valid & self.p9.q.val().ok {
-            if self.cont9.q.val() {
-                self.out_q.d.next.state = self.st_cont.val();
-            } else if self.labok9.q.val() {
-                self.out_q.d.next.state = self.st_new.val();
-            } else {
-                self.out_q.d.next.state = self.st_unl.val();
-            }
-        }
-        self.out_q.d.next.row = self.p9.q.val().row;
-        self.out_q.d.next.col = self.p9.q.val().col;
-        self.out_q.d.next.rdcol = self.rdcol9.q.val();
-        self.out_q.d.next.last = self.p9.q.val().last;
-        self.out_q.d.next.ring =
-            self.ring9.q.val() & self.flok9.q.val() & self.curok9.q.val() & self.ne9.q.val();
-        self.out_q.d.next.ring_a = self.fl9.q.val();
-        self.out_q.d.next.ring_b = self.cur9.q.val();
-        // The frame's first point (column 0: no previous point, no
-        // continuation) always gets label 1, so it is never unlabelled: the
-        // count restarts there and counts from the next point on.
-        if self.p9.q.val().valid {
-            if self.p9.q.val().first {
-                self.unl.d.next = self.zero20.val();
-            }
-            if self.p9.q.val().ok & !self.labok9.q.val() {
-                self.unl.d.next = self.unl.q.val() + self.one20.val();
-            }
-        }
+        self.codes.clk.next = self.clk.val();
+        self.codes.rst.next = self.rst.val();
+        self.codes.last_col.next = self.last_col.val();
+        self.codes.pix.next = self.p7.val();
+        self.codes.cont.next = self.cont.val();
+        self.codes.lab.next = self.lab.val();
+        self.codes.fl.next = self.fl_eff.val();
+        self.codes.cur.next = self.cur_next.val();
+        self.codes.any.next = self.any_eff.val();
+        self.codes.ring_hit.next = self.ring.hit.val();
         // ---- Status: labels used = min(raw - 1, 2^B - 1).
         self.rm1.d.next = self.raw.q.val() - self.one20.val();
         self.prov.d.next = self.rm1.q.val().get_bits::<17>(0);
@@ -400,13 +290,11 @@ impl Logic for FccIntra {
             // The whole last stage is reset, so that it stays a flip-flop
             // (a shift-register LUT's output is slow).
             self.pd[6].d.next = self.pix_zero.val();
-            self.p8.d.next.valid = false;
-            self.p9.d.next.valid = false;
-            self.out_q.d.next.valid = false;
         }
-        self.out.next = self.out_q.q.val();
+        self.out.next = self.codes.out.val();
+        self.state.next = self.codes.state.val();
         self.provisional.next = self.prov.q.val();
         self.overflow.next = self.ovf.q.val();
-        self.unlabelled.next = self.unl.q.val();
+        self.unlabelled.next = self.codes.unlabelled.val();
     }
 }

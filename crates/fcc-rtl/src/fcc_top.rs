@@ -25,37 +25,23 @@
 use fcc_params::FccParams;
 use rust_hdl::prelude::*;
 
+use crate::fcc_credits::FccCredits;
 use crate::fcc_dist_tree::FccDistTree;
-use crate::fcc_fanout_net::FccFanoutNet;
 use crate::fcc_fanout_reg::MAX_FANOUT;
+use crate::fcc_frame_phase::FccFramePhase;
+use crate::fcc_input_stage::FccInputStage;
 use crate::fcc_intra::FccIntra;
 use crate::fcc_keep_reg::FccKeepReg;
 use crate::fcc_label_update::FccLabelUpdate;
 use crate::fcc_merge_table::FccMergeTable;
 use crate::fcc_pix_thr::FccPixThr;
 use crate::fcc_regs::FccRegs;
-use crate::fcc_sort_net::{FccSortNet, CB_BITS};
+use crate::fcc_sort_net::FccSortNet;
 use crate::fcc_thr_window::FccThrWindow;
 use crate::fcc_window::FccWindow;
 use crate::regmap::ADDR_BITS;
-use crate::types::{kb, Pix};
 
-/// Pixel slots that may be between the input and the centre buffer's output:
-/// the buffer's size less a margin for the registered `s_axis_tready`.
-pub const CREDITS: usize = (1 << CB_BITS) - 16;
-
-/// Phase of a frame (see the module doc).
-#[derive(Copy, Clone, Debug, PartialEq, LogicState)]
-pub enum Phase {
-    /// After reset, until the merge table is initialised.
-    Init,
-    /// Pixels are taken.
-    Run,
-    /// The frame's pixels are in; the last joins are merged.
-    Drain,
-    /// Flatten and read-back: the frame's labels leave.
-    Out,
-}
+pub use crate::fcc_credits::CREDITS;
 
 #[derive(LogicBlock)]
 pub struct FccTop {
@@ -123,58 +109,9 @@ pub struct FccTop {
     window_rst: FccKeepReg<Bit>,
     dist_tree_rst: FccKeepReg<Bit>,
     merge_table_rst: FccKeepReg<Bit>,
-    phase: DFF<Phase>,
-    tready_q: DFF<Bit>,
-    pad_go: DFF<Bit>,
-    slot_q: DFF<Pix>,
-    row: DFF<Bits<8>>,
-    col: DFF<Bits<12>>,
-    col0: DFF<Bit>,
-    col_last: DFF<Bit>,
-    row_last: DFF<Bit>,
-    first: DFF<Bit>,
-    pad: DFF<Bit>,
-    discard: DFF<Bit>,
-    in_done: DFF<Bit>,
-    err: DFF<Bit>,
-    credits: DFF<Bits<10>>,
-    room: DFF<Bit>,
-    last_seen: DFF<Bit>,
-    /// Run size of the frame: `run_cols - 1`, `run_cols - 2`, `run_rows - 2`,
-    /// `run_rows == 1`.
-    last_col: DFF<Bits<12>>,
-    pen_col: DFF<Bits<12>>,
-    pen_row: DFF<Bits<8>>,
-    one_row: DFF<Bit>,
-    // Combinational.
-    /// Rows and columns of the frame (the run registers).
-    run_rows: Signal<Local, Bits<8>>,
-    run_cols: Signal<Local, Bits<13>>,
-    accept: Signal<Local, Bit>,
-    beat: Signal<Local, Bit>,
-    slot: Signal<Local, Bit>,
-    is_last: Signal<Local, Bit>,
-    nxt_pad: Signal<Local, Bit>,
-    nxt_discard: Signal<Local, Bit>,
-    nxt_in_done: Signal<Local, Bit>,
-    nxt_run: Signal<Local, Bit>,
-    drained: Signal<Local, Bit>,
-    /// The output phase starts: flatten and the read-back start (one net
-    /// that reaches some 90 registers at K = 11; Vivado replicates it).
-    out_start: Signal<Local, Bit>,
-    out_start_net: FccFanoutNet<Bit>,
-    // Constants.
-    sign16: Constant<Bits<16>>,
-    zero8: Constant<Bits<8>>,
-    one8: Constant<Bits<8>>,
-    zero12: Constant<Bits<12>>,
-    one12: Constant<Bits<12>>,
-    two8: Constant<Bits<8>>,
-    two12: Constant<Bits<12>>,
-    one10: Constant<Bits<10>>,
-    two10: Constant<Bits<10>>,
-    zero10: Constant<Bits<10>>,
-    limit: Constant<Bits<10>>,
+    in_stage: FccInputStage,
+    credits: FccCredits,
+    phase: FccFramePhase,
 }
 
 impl FccTop {
@@ -233,51 +170,9 @@ impl FccTop {
             window_rst: FccKeepReg::with_max_fanout(MAX_FANOUT),
             dist_tree_rst: FccKeepReg::with_max_fanout(MAX_FANOUT),
             merge_table_rst: FccKeepReg::with_max_fanout(MAX_FANOUT),
-            phase: Default::default(),
-            tready_q: Default::default(),
-            pad_go: Default::default(),
-            slot_q: Default::default(),
-            row: Default::default(),
-            col: Default::default(),
-            col0: Default::default(),
-            col_last: Default::default(),
-            row_last: Default::default(),
-            first: Default::default(),
-            pad: Default::default(),
-            discard: Default::default(),
-            in_done: Default::default(),
-            err: Default::default(),
+            in_stage: Default::default(),
             credits: Default::default(),
-            room: Default::default(),
-            last_seen: Default::default(),
-            last_col: Default::default(),
-            pen_col: Default::default(),
-            pen_row: Default::default(),
-            one_row: Default::default(),
-            run_rows: Default::default(),
-            run_cols: Default::default(),
-            accept: Default::default(),
-            beat: Default::default(),
-            slot: Default::default(),
-            is_last: Default::default(),
-            nxt_pad: Default::default(),
-            nxt_discard: Default::default(),
-            nxt_in_done: Default::default(),
-            nxt_run: Default::default(),
-            drained: Default::default(),
-            out_start: Default::default(),
-            out_start_net: Default::default(),
-            sign16: kb(0x8000),
-            zero8: kb(0),
-            one8: kb(1),
-            zero12: kb(0),
-            one12: kb(1),
-            two8: kb(2),
-            two12: kb(2),
-            one10: kb(1),
-            two10: kb(2),
-            zero10: kb(0),
-            limit: kb(CREDITS as u64),
+            phase: Default::default(),
         }
     }
 }
@@ -285,11 +180,9 @@ impl FccTop {
 impl Logic for FccTop {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(
-            self, clk, phase, tready_q, pad_go, slot_q, row, col, col0, col_last, row_last, first,
-            pad, discard, in_done, err, credits, room, last_seen, last_col, pen_col, pen_row,
-            one_row
-        );
+        self.in_stage.clk.next = self.clk.val();
+        self.credits.clk.next = self.clk.val();
+        self.phase.clk.next = self.clk.val();
         self.pix_thr.clk.next = self.clk.val();
         self.intra.clk.next = self.clk.val();
         self.window.clk.next = self.clk.val();
@@ -323,160 +216,41 @@ impl Logic for FccTop {
         self.regs.provisional.next = self.intra.provisional.val().get_bits::<16>(0);
         self.regs.overflow.next = self.intra.overflow.val();
         self.regs.unlabelled.next = self.intra.unlabelled.val();
-        self.regs.frame_error.next = self.err.q.val();
+        self.regs.frame_error.next = self.in_stage.err.val();
         self.regs.joins.next = self.sort_net.joins.val();
         self.regs.gear_stalls.next = self.label_update.gear_stalls.val();
-        // ---- Run size of the frame (stable while a frame runs); derived
-        // values registered, so the counters compare with flip-flops.
-        self.run_rows.next = self.regs.run_rows.val();
-        self.run_cols.next = self.regs.run_cols.val();
-        // Modulo 4096: C = 4096 has C - 1 = 4095 in 12 bits.
-        self.last_col.d.next = self.run_cols.val().get_bits::<12>(0) - self.one12.val();
-        self.pen_col.d.next = self.run_cols.val().get_bits::<12>(0) - self.two12.val();
-        self.pen_row.d.next = self.run_rows.val() - self.two8.val();
-        self.one_row.d.next = self.run_rows.val() == self.one8.val();
-        // ---- Input stage: pixel slots, padding of a short frame, dropping of a long one.
-        self.accept.next = self.s_axis_tvalid.val() & self.tready_q.q.val();
-        self.beat.next = self.accept.val() & !self.discard.q.val();
-        self.slot.next = self.beat.val() | self.pad_go.q.val();
-        self.is_last.next = self.col_last.q.val() & self.row_last.q.val();
-        self.slot_q.d.next.valid = self.slot.val();
-        self.slot_q.d.next.ok = self.beat.val() & self.s_axis_tdata.val().get_bit(48);
-        self.slot_q.d.next.x = self.s_axis_tdata.val().get_bits::<16>(0) ^ self.sign16.val();
-        self.slot_q.d.next.y = self.s_axis_tdata.val().get_bits::<16>(16) ^ self.sign16.val();
-        self.slot_q.d.next.z = self.s_axis_tdata.val().get_bits::<16>(32) ^ self.sign16.val();
-        self.slot_q.d.next.row = self.row.q.val();
-        self.slot_q.d.next.col = self.col.q.val();
-        self.slot_q.d.next.first = self.first.q.val();
-        self.slot_q.d.next.last = self.is_last.val();
-        self.slot_q.d.next.col0 = self.col0.q.val();
-        self.slot_q.d.next.coln = self.col_last.q.val();
-        self.nxt_pad.next = self.pad.q.val();
-        self.nxt_discard.next = self.discard.q.val();
-        self.nxt_in_done.next = self.in_done.q.val();
-        // Row 0 is the last row of a one-row frame. The run registers may
-        // change up to the frame's first pixel; `one_row` follows them two
-        // cycles later, long before row 0's last pixel (C >= 3).
-        if self.row.q.val() == self.zero8.val() {
-            self.row_last.d.next = self.one_row.q.val();
-        }
-        if self.slot.val() {
-            self.first.d.next = false;
-            self.col0.d.next = self.col_last.q.val();
-            self.col.d.next = self.col.q.val() + self.one12.val();
-            self.col_last.d.next = self.col.q.val() == self.pen_col.q.val();
-            if self.col_last.q.val() {
-                self.col.d.next = self.zero12.val();
-                self.col_last.d.next = false;
-                self.row.d.next = self.row.q.val() + self.one8.val();
-                self.row_last.d.next = self.row.q.val() == self.pen_row.q.val();
-            }
-            if self.is_last.val() {
-                self.row.d.next = self.zero8.val();
-                self.row_last.d.next = self.one_row.q.val();
-                self.first.d.next = true;
-                self.nxt_in_done.next = true;
-                self.nxt_pad.next = false;
-            }
-        }
-        if self.beat.val() {
-            if self.s_axis_tlast.val() & !self.is_last.val() {
-                self.err.d.next = true;
-                self.nxt_pad.next = true;
-            }
-            if self.is_last.val() & !self.s_axis_tlast.val() {
-                self.err.d.next = true;
-                self.nxt_discard.next = true;
-            }
-        }
-        if self.discard.q.val() & self.accept.val() & self.s_axis_tlast.val() {
-            self.nxt_discard.next = false;
-        }
-        // ---- Credits: one per slot, returned by the sort network.
-        self.credits.d.next = self.credits.q.val();
-        if self.slot.val() {
-            self.credits.d.next = self.credits.q.val() + self.one10.val();
-            if self.sort_net.drop.val() ^ self.sort_net.take.val() {
-                self.credits.d.next = self.credits.q.val();
-            }
-            if self.sort_net.drop.val() & self.sort_net.take.val() {
-                self.credits.d.next = self.credits.q.val() - self.one10.val();
-            }
-        } else {
-            if self.sort_net.drop.val() ^ self.sort_net.take.val() {
-                self.credits.d.next = self.credits.q.val() - self.one10.val();
-            }
-            if self.sort_net.drop.val() & self.sort_net.take.val() {
-                self.credits.d.next = self.credits.q.val() - self.two10.val();
-            }
-        }
-        self.room.d.next = self.credits.q.val() < self.limit.val();
-        // ---- Frame phases.
-        if self.sort_net.last_done.val() {
-            self.last_seen.d.next = true;
-        }
-        self.drained.next = self.last_seen.q.val()
-            & self.merge_table.union_idle.val()
-            & self.sort_net.jq_empty.val();
-        self.out_start.next = false;
-        if (self.phase.q.val() == Phase::Init) & !self.merge_table.init_busy.val() {
-            self.phase.d.next = Phase::Run;
-        }
-        if (self.phase.q.val() == Phase::Run) & self.in_done.q.val() {
-            self.phase.d.next = Phase::Drain;
-        }
-        if (self.phase.q.val() == Phase::Drain) & self.drained.val() {
-            self.out_start.next = true;
-            self.phase.d.next = Phase::Out;
-        }
-        self.out_start_net.x.next = self.out_start.val();
-        self.merge_table.flat_start.next = self.out_start_net.y.val();
-        self.label_update.rb_start.next = self.out_start_net.y.val();
-        self.nxt_run.next = self.phase.q.val() == Phase::Run;
-        if (self.phase.q.val() == Phase::Out) & self.label_update.rb_done.val() {
-            self.phase.d.next = Phase::Run;
-            self.nxt_run.next = true;
-            self.nxt_in_done.next = false;
-            self.last_seen.d.next = false;
-            self.err.d.next = false;
-        }
-        self.pad.d.next = self.nxt_pad.val();
-        self.discard.d.next = self.nxt_discard.val();
-        self.in_done.d.next = self.nxt_in_done.val();
-        // Next cycle's ready and padding slot, from registers and this cycle's events.
-        self.tready_q.d.next = self.nxt_discard.val()
-            | (self.nxt_run.val()
-                & !self.nxt_in_done.val()
-                & !self.nxt_pad.val()
-                & self.room.q.val());
-        self.pad_go.d.next =
-            self.nxt_pad.val() & self.nxt_run.val() & !self.nxt_in_done.val() & self.room.q.val();
-        // The pipeline's reset is one cycle behind `rst` and the soft reset:
-        // `s_axis_tready` goes low in the cycle before it, so a beat offered
-        // right after a short reset waits instead of being taken and lost.
-        if self.regs.core_rst_next.val() {
-            self.tready_q.d.next = false;
-            self.pad_go.d.next = false;
-        }
-        if self.regs.core_rst.val() {
-            self.phase.d.next = Phase::Init;
-            self.tready_q.d.next = false;
-            self.pad_go.d.next = false;
-            self.slot_q.d.next.valid = false;
-            self.row.d.next = self.zero8.val();
-            self.col.d.next = self.zero12.val();
-            self.col0.d.next = true;
-            self.col_last.d.next = false;
-            self.row_last.d.next = false;
-            self.first.d.next = true;
-            self.pad.d.next = false;
-            self.discard.d.next = false;
-            self.in_done.d.next = false;
-            self.err.d.next = false;
-            self.credits.d.next = self.zero10.val();
-            self.room.d.next = true;
-            self.last_seen.d.next = false;
-        }
+        // The register file registers the phase flags it needs from their
+        // next-cycle values.
+        self.regs.frame_sent.next = self.label_update.rb_done.val();
+        self.regs.out_next.next = self.phase.out_next.val();
+        self.regs.idle_next.next = self.in_stage.idle_next.val();
+        // ---- Input stage, credits and frame phase (the top's own
+        // registers, reset by `core_rst` itself).
+        self.in_stage.rst.next = self.regs.core_rst.val();
+        self.in_stage.rst_next.next = self.regs.core_rst_next.val();
+        self.in_stage.s_axis_tdata.next = self.s_axis_tdata.val().get_bits::<49>(0);
+        self.in_stage.s_axis_tvalid.next = self.s_axis_tvalid.val();
+        self.in_stage.s_axis_tlast.next = self.s_axis_tlast.val();
+        self.s_axis_tready.next = self.in_stage.s_axis_tready.val();
+        self.in_stage.run_rows.next = self.regs.run_rows.val();
+        self.in_stage.run_cols.next = self.regs.run_cols.val().get_bits::<12>(0);
+        self.in_stage.run.next = self.phase.run.val();
+        self.in_stage.restart.next = self.phase.restart.val();
+        self.in_stage.run_next.next = self.phase.run_next.val();
+        self.in_stage.room.next = self.credits.room.val();
+        self.credits.rst.next = self.regs.core_rst.val();
+        self.credits.slot.next = self.in_stage.slot_now.val();
+        self.credits.drop.next = self.sort_net.drop.val();
+        self.credits.take.next = self.sort_net.take.val();
+        self.phase.rst.next = self.regs.core_rst.val();
+        self.phase.in_done.next = self.in_stage.in_done.val();
+        self.phase.init_busy.next = self.merge_table.init_busy.val();
+        self.phase.last_done.next = self.sort_net.last_done.val();
+        self.phase.union_idle.next = self.merge_table.union_idle.val();
+        self.phase.jq_empty.next = self.sort_net.jq_empty.val();
+        self.phase.rb_done.next = self.label_update.rb_done.val();
+        self.merge_table.flat_start.next = self.phase.out_start.val();
+        self.label_update.rb_start.next = self.phase.out_start.val();
         // ---- Reset tree: each copy is `core_rst`'s flip-flop again (same
         // input, same cycle), so every block leaves reset in the same cycle.
         self.intra_rst.clock.next = self.clk.val();
@@ -489,7 +263,7 @@ impl Logic for FccTop {
         self.merge_table_rst.d.next = self.regs.core_rst_next.val();
         // ---- Blocks.
         self.pix_thr.rst.next = self.intra_rst.q.val();
-        self.pix_thr.pix.next = self.slot_q.q.val();
+        self.pix_thr.pix.next = self.in_stage.slot.val();
         self.pix_thr.sh.next = self.regs.run_sl_h.val();
         self.pix_thr.sv.next = self.regs.run_sl_v.val();
         self.pix_thr.ch_t.next = self.regs.run_th_h_c.val();
@@ -498,23 +272,11 @@ impl Logic for FccTop {
         self.intra.pix.next = self.pix_thr.out.val();
         self.intra.key.next = self.pix_thr.key.val();
         self.intra.ch.next = self.pix_thr.ch.val();
-        self.intra.last_col.next = self.last_col.q.val();
-        self.window.last_col.next = self.last_col.q.val();
+        self.intra.last_col.next = self.in_stage.last_col.val();
+        self.window.last_col.next = self.in_stage.last_col.val();
         self.window.rst.next = self.window_rst.q.val();
         self.window.run_k.next = self.regs.run_k.val();
-        self.window.inp.next.valid = self.intra.out.val().valid;
-        self.window.inp.next.lok = self.intra.out.val().lok;
-        self.window.inp.next.x = self.intra.out.val().x;
-        self.window.inp.next.y = self.intra.out.val().y;
-        self.window.inp.next.z = self.intra.out.val().z;
-        self.window.inp.next.label = self.intra.out.val().label;
-        self.window.inp.next.row = self.intra.out.val().row;
-        self.window.inp.next.col = self.intra.out.val().col;
-        self.window.inp.next.rdcol = self.intra.out.val().rdcol;
-        self.window.inp.next.last = self.intra.out.val().last;
-        self.window.inp.next.ring = self.intra.out.val().ring;
-        self.window.inp.next.ring_a = self.intra.out.val().ring_a;
-        self.window.inp.next.ring_b = self.intra.out.val().ring_b;
+        self.window.inp.next = self.intra.out.val();
         self.window.rep_we.next = self.sort_net.rep_we.val();
         self.window.rep_waddr.next = self.sort_net.rep_waddr.val();
         self.window.rep_wdata.next = self.sort_net.rep_wdata.val();
@@ -552,7 +314,7 @@ impl Logic for FccTop {
         self.merge_table.gear_used.next = self.label_update.gear_used.val();
         self.label_update.rst.next = self.regs.core_rst_next.val();
         self.label_update.wr_valid.next = self.intra.out.val().valid;
-        self.label_update.wr_state.next = self.intra.out.val().state;
+        self.label_update.wr_state.next = self.intra.state.val();
         self.label_update.wr_last.next = self.intra.out.val().last;
         self.label_update.fv.next = self.merge_table.fv.val();
         self.label_update.fval.next = self.merge_table.fval.val();
@@ -561,7 +323,6 @@ impl Logic for FccTop {
         self.m_axis_tkeep.next = self.label_update.m_axis_tkeep.val();
         self.m_axis_tvalid.next = self.label_update.m_axis_tvalid.val();
         self.m_axis_tlast.next = self.label_update.m_axis_tlast.val();
-        self.s_axis_tready.next = self.tready_q.q.val();
         self.status_clusters.next = self.regs.st_clusters.val();
         self.status_provisional.next = self.regs.st_provisional.val();
         self.status_overflow.next = self.regs.st_overflow.val();
@@ -570,13 +331,6 @@ impl Logic for FccTop {
         self.status_joins.next = self.regs.st_joins.val();
         self.status_gear_stalls.next = self.regs.st_gear_stalls.val();
         self.status_frame_done.next = self.regs.frame_done.val();
-        self.status_idle.next =
-            (self.phase.q.val() == Phase::Run) & !self.in_done.q.val() & self.first.q.val();
-        // The register file registers the phase flags it needs from their
-        // next-cycle values (the flip-flops' inputs, final here).
-        self.regs.frame_sent.next = self.label_update.rb_done.val();
-        self.regs.out_next.next = self.phase.d.val() == Phase::Out;
-        self.regs.idle_next.next =
-            (self.phase.d.val() == Phase::Run) & !self.in_done.d.val() & self.first.d.val();
+        self.status_idle.next = self.in_stage.idle.val();
     }
 }

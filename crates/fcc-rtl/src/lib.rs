@@ -84,6 +84,7 @@ mod fcc_axil_adapter;
 mod fcc_beat_assembly;
 mod fcc_beat_queue;
 mod fcc_centre_buf;
+mod fcc_credits;
 mod fcc_dist_tree;
 mod fcc_dist_unit;
 mod fcc_fanout_net;
@@ -92,10 +93,13 @@ mod fcc_fb_writer;
 mod fcc_fifo;
 mod fcc_first_set;
 mod fcc_flatten;
+mod fcc_frame_phase;
 mod fcc_gearbox;
 mod fcc_group_or;
 mod fcc_hi_zero_check;
+mod fcc_input_stage;
 mod fcc_intra;
+mod fcc_intra_codes;
 mod fcc_intra_thr;
 mod fcc_join_queue;
 mod fcc_keep_reg;
@@ -294,7 +298,11 @@ pub fn generate(p: &FccParams) -> Result<Generated, RtlError> {
 /// Check `block` and emit it alone as the module `name` with the
 /// configuration suffix of `p`, for its own bench (the core's copy is inside
 /// `fcc_top.v`). `p` has been validated for hardware.
-fn generate_block<B: Block>(p: &FccParams, mut block: B, name: &str) -> Result<String, RtlError> {
+pub(crate) fn generate_block<B: Block>(
+    p: &FccParams,
+    mut block: B,
+    name: &str,
+) -> Result<String, RtlError> {
     block.connect_all();
     check_all(&block).map_err(|e| RtlError::Check(format!("{e:?}")))?;
     let raw = generate_verilog_unchecked(&block);

@@ -22,7 +22,7 @@ pub fn waivers(p: &FccParams) -> String {
          lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'s_axis_tkeep'*\"\n\
          // The frame's columns C (<= 4096) are used modulo 4096 (as C - 1 and\n\
          // C - 2, both below 4096), so bit 12 of the run value is not read.\n\
-         lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'run_cols'[12]*\"\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'regs$run_cols'[12]*\"\n\
          // FccFifo offers its fill level and its RAM's ports (for side RAMs) to\n\
          // every user. The centre buffer needs no level (the input credits bound\n\
          // it) and the join queue has no side RAMs.\n\
@@ -54,6 +54,14 @@ fn slot_mux_waivers(file: &str) -> String {
          // whether the head beat is complete is the beat assembly's copy's.\n\
          lint_off -rule UNUSEDSIGNAL -file \"*{file}\" -match \"*'gear_decision$complete'*\"\n"
     )
+}
+
+/// The waivers of a bench block `name` that holds a `LogicState` enum
+/// register and needs nothing else.
+pub fn enum_block_waivers(p: &FccParams, name: &str) -> String {
+    let mut s = block_waivers(p, name);
+    s.push_str(&enum_register_waivers(&format!("{name}.v")));
+    s
 }
 
 /// The waivers of a register that holds a `LogicState` enum, in `file`:
@@ -119,15 +127,15 @@ pub fn label_update_waivers(p: &FccParams) -> String {
     s
 }
 
-/// The waivers of `fcc_point_thr.v`, the per-point threshold unit
-/// generated alone for its bench.
-pub fn point_thr_waivers(p: &FccParams) -> String {
+/// The waivers of a bench block `name` that needs none beyond its file's
+/// name.
+pub fn block_waivers(p: &FccParams, name: &str) -> String {
     let mut s = file_header(p, "//");
     s.push_str("`verilator_config\n");
-    s.push_str(
+    s.push_str(&format!(
         "// The module carries the configuration suffix; the file does not.\n\
-         lint_off -rule DECLFILENAME -file \"*fcc_point_thr.v\"\n",
-    );
+         lint_off -rule DECLFILENAME -file \"*{name}.v\"\n"
+    ));
     s
 }
 

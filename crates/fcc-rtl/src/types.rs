@@ -30,9 +30,10 @@ pub struct Pix {
     pub coln: Bit,
 }
 
-/// A labelled pixel: the output of `fcc_intra`.
+/// A labelled pixel: the output of `fcc_intra` (its frame-buffer code
+/// travels beside it, to the label updater) and the input of `fcc_window`.
 #[derive(Clone, Copy, Debug, PartialEq, Default, LogicStruct)]
-pub struct Lab {
+pub struct WinPix {
     pub valid: Bit,
     /// The pixel holds a point with a provisional label (it can join).
     pub lok: Bit,
@@ -41,33 +42,12 @@ pub struct Lab {
     pub z: Bits<16>,
     /// Provisional label, 0 for an empty or unlabelled pixel.
     pub label: Bits<16>,
-    /// Frame-buffer code: 0 empty, 1 continues a run, 2 starts a labelled run,
-    /// 3 starts an unlabelled run (labels exhausted).
-    pub state: Bits<2>,
     pub row: Bits<8>,
     pub col: Bits<12>,
     /// Column `(col + h) mod C` that the window reads for this pixel.
     pub rdcol: Bits<12>,
     pub last: Bit,
     /// Ring join of this row (set on the row's last pixel only).
-    pub ring: Bit,
-    pub ring_a: Bits<16>,
-    pub ring_b: Bits<16>,
-}
-
-/// The labelled pixel as `fcc_window` takes it (no frame-buffer code).
-#[derive(Clone, Copy, Debug, PartialEq, Default, LogicStruct)]
-pub struct WinPix {
-    pub valid: Bit,
-    pub lok: Bit,
-    pub x: Bits<16>,
-    pub y: Bits<16>,
-    pub z: Bits<16>,
-    pub label: Bits<16>,
-    pub row: Bits<8>,
-    pub col: Bits<12>,
-    pub rdcol: Bits<12>,
-    pub last: Bit,
     pub ring: Bit,
     pub ring_a: Bits<16>,
     pub ring_b: Bits<16>,
