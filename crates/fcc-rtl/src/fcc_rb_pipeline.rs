@@ -20,7 +20,7 @@ use crate::types::{kb, vec_of, FbWord};
 // run with none, `SRC_NEW + k` for the k-th.
 const _: () = assert!(SRC_NEW == SRC_CARRIED + 1);
 
-/// Frame-buffer codes (`Lab::state`).
+/// Frame-buffer codes (`FccIntra::state`).
 const CODE_EMPTY: u64 = 0;
 const CODE_LABELLED: u64 = 2;
 const CODE_UNLABELLED: u64 = 3;
