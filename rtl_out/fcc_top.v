@@ -11192,67 +11192,7 @@ module fcc_label_update__pipeline_k7_668cf05b(clk,rst,start,beats_m1,last_beat_l
     localparam  labels$2 = 3'b10;
     localparam  labels$3 = 3'b11;
     localparam  labels$4 = 3'b100;
-    localparam  slot_bit$0 = 4'h1;
-    localparam  slot_bit$1 = 4'h2;
-    localparam  slot_bit$2 = 4'h4;
-    localparam  slot_bit$3 = 4'h8;
-    localparam  upto_mask$0 = 4'h1;
-    localparam  upto_mask$1 = 4'h3;
-    localparam  upto_mask$2 = 4'h7;
-    localparam  upto_mask$3 = 4'hf;
-    localparam  set$0 = 4'h0;
-    localparam  set$1 = 4'h1;
-    localparam  set$2 = 4'h2;
-    localparam  set$3 = 4'h3;
-    localparam  set$4 = 4'h4;
-    localparam  set$5 = 4'h5;
-    localparam  set$6 = 4'h6;
-    localparam  set$7 = 4'h7;
-    localparam  set$8 = 4'h8;
-    localparam  set$9 = 4'h9;
-    localparam  set$10 = 4'ha;
-    localparam  set$11 = 4'hb;
-    localparam  set$12 = 4'hc;
-    localparam  set$13 = 4'hd;
-    localparam  set$14 = 4'he;
-    localparam  set$15 = 4'hf;
-    localparam  count_of$0 = 3'b0;
-    localparam  count_of$1 = 3'b1;
-    localparam  count_of$2 = 3'b1;
-    localparam  count_of$3 = 3'b10;
-    localparam  count_of$4 = 3'b1;
-    localparam  count_of$5 = 3'b10;
-    localparam  count_of$6 = 3'b10;
-    localparam  count_of$7 = 3'b11;
-    localparam  count_of$8 = 3'b1;
-    localparam  count_of$9 = 3'b10;
-    localparam  count_of$10 = 3'b10;
-    localparam  count_of$11 = 3'b11;
-    localparam  count_of$12 = 3'b10;
-    localparam  count_of$13 = 3'b11;
-    localparam  count_of$14 = 3'b11;
-    localparam  count_of$15 = 3'b100;
-    localparam  src_of$0 = 3'b1;
-    localparam  src_of$1 = 3'b10;
-    localparam  src_of$2 = 3'b10;
-    localparam  src_of$3 = 3'b11;
-    localparam  src_of$4 = 3'b10;
-    localparam  src_of$5 = 3'b11;
-    localparam  src_of$6 = 3'b11;
-    localparam  src_of$7 = 3'b100;
-    localparam  src_of$8 = 3'b10;
-    localparam  src_of$9 = 3'b11;
-    localparam  src_of$10 = 3'b11;
-    localparam  src_of$11 = 3'b100;
-    localparam  src_of$12 = 3'b11;
-    localparam  src_of$13 = 3'b100;
-    localparam  src_of$14 = 3'b100;
-    localparam  src_of$15 = 3'b101;
-    localparam  zero4 = 4'h0;
     localparam  code_empty = 2'b0;
-    localparam  code_labelled = 2'b10;
-    localparam  code_unlabelled = 2'b11;
-    localparam  src_zero = 3'b0;
     localparam  max_in_flight = 3'b101;
     localparam  lpb3 = 3'b100;
     localparam  lpb20 = 20'h4;
@@ -11320,6 +11260,17 @@ module fcc_label_update__pipeline_k7_668cf05b(clk,rst,start,beats_m1,last_beat_l
     reg  [26:0] beat_s3$d;
     wire  [26:0] beat_s3$q;
     reg  beat_s3$clock;
+    reg  [1:0] run_number$code$0;
+    reg  [1:0] run_number$code$1;
+    reg  [1:0] run_number$code$2;
+    reg  [1:0] run_number$code$3;
+    reg  run_number$first;
+    wire  [2:0] run_number$src$0;
+    wire  [2:0] run_number$src$1;
+    wire  [2:0] run_number$src$2;
+    wire  [2:0] run_number$src$3;
+    wire  [2:0] run_number$run;
+    wire  [2:0] run_number$need;
 
     // Local signals
     reg  issue;
@@ -11327,22 +11278,6 @@ module fcc_label_update__pipeline_k7_668cf05b(clk,rst,start,beats_m1,last_beat_l
     reg  [1:0] code$1;
     reg  [1:0] code$2;
     reg  [1:0] code$3;
-    reg  [3:0] labelled;
-    reg  [3:0] labelled_upto$0;
-    reg  [3:0] labelled_upto$1;
-    reg  [3:0] labelled_upto$2;
-    reg  [3:0] labelled_upto$3;
-    reg  [2:0] need;
-    reg  [2:0] slot_src$0;
-    reg  [2:0] slot_src$1;
-    reg  [2:0] slot_src$2;
-    reg  [2:0] slot_src$3;
-    reg  zero_run$0;
-    reg  zero_run$1;
-    reg  zero_run$2;
-    reg  zero_run$3;
-    reg  zero_run$4;
-    reg  [2:0] run_src;
     reg  [1:0] pos_in_word;
 
     // Sub module instances
@@ -11440,6 +11375,19 @@ module fcc_label_update__pipeline_k7_668cf05b(clk,rst,start,beats_m1,last_beat_l
         .d(beat_s3$d),
         .q(beat_s3$q),
         .clock(beat_s3$clock)
+    );
+    fcc_label_update__pipeline__run_number_k7_668cf05b run_number(
+        .code$0(run_number$code$0),
+        .code$1(run_number$code$1),
+        .code$2(run_number$code$2),
+        .code$3(run_number$code$3),
+        .first(run_number$first),
+        .src$0(run_number$src$0),
+        .src$1(run_number$src$1),
+        .src$2(run_number$src$2),
+        .src$3(run_number$src$3),
+        .run(run_number$run),
+        .need(run_number$need)
     );
 
     // Update code
@@ -11596,328 +11544,18 @@ module fcc_label_update__pipeline_k7_668cf05b(clk,rst,start,beats_m1,last_beat_l
         if ((keep_s2$q & slot_used$3) == zero8) begin
             code$3 = code_empty;
         end
-        zero_run$0 = first_s2$q;
-        labelled = zero4;
-        zero_run$1 = zero_run$0;
-        if (code$0 == code_labelled) begin
-            labelled = labelled | slot_bit$0;
-            zero_run$1 = 1'b0;
-        end
-        if (code$0 == code_unlabelled) begin
-            zero_run$1 = 1'b1;
-        end
-        zero_run$2 = zero_run$1;
-        if (code$1 == code_labelled) begin
-            labelled = labelled | slot_bit$1;
-            zero_run$2 = 1'b0;
-        end
-        if (code$1 == code_unlabelled) begin
-            zero_run$2 = 1'b1;
-        end
-        zero_run$3 = zero_run$2;
-        if (code$2 == code_labelled) begin
-            labelled = labelled | slot_bit$2;
-            zero_run$3 = 1'b0;
-        end
-        if (code$2 == code_unlabelled) begin
-            zero_run$3 = 1'b1;
-        end
-        zero_run$4 = zero_run$3;
-        if (code$3 == code_labelled) begin
-            labelled = labelled | slot_bit$3;
-            zero_run$4 = 1'b0;
-        end
-        if (code$3 == code_unlabelled) begin
-            zero_run$4 = 1'b1;
-        end
-        labelled_upto$0 = labelled & upto_mask$0;
-        slot_src$0 = src_zero;
-        if (labelled_upto$0 == set$0) begin
-            slot_src$0 = src_of$0;
-        end
-        if (labelled_upto$0 == set$1) begin
-            slot_src$0 = src_of$1;
-        end
-        if (labelled_upto$0 == set$2) begin
-            slot_src$0 = src_of$2;
-        end
-        if (labelled_upto$0 == set$3) begin
-            slot_src$0 = src_of$3;
-        end
-        if (labelled_upto$0 == set$4) begin
-            slot_src$0 = src_of$4;
-        end
-        if (labelled_upto$0 == set$5) begin
-            slot_src$0 = src_of$5;
-        end
-        if (labelled_upto$0 == set$6) begin
-            slot_src$0 = src_of$6;
-        end
-        if (labelled_upto$0 == set$7) begin
-            slot_src$0 = src_of$7;
-        end
-        if (labelled_upto$0 == set$8) begin
-            slot_src$0 = src_of$8;
-        end
-        if (labelled_upto$0 == set$9) begin
-            slot_src$0 = src_of$9;
-        end
-        if (labelled_upto$0 == set$10) begin
-            slot_src$0 = src_of$10;
-        end
-        if (labelled_upto$0 == set$11) begin
-            slot_src$0 = src_of$11;
-        end
-        if (labelled_upto$0 == set$12) begin
-            slot_src$0 = src_of$12;
-        end
-        if (labelled_upto$0 == set$13) begin
-            slot_src$0 = src_of$13;
-        end
-        if (labelled_upto$0 == set$14) begin
-            slot_src$0 = src_of$14;
-        end
-        if (labelled_upto$0 == set$15) begin
-            slot_src$0 = src_of$15;
-        end
-        if (zero_run$1 | (code$0 == code_empty)) begin
-            slot_src$0 = src_zero;
-        end
-        labelled_upto$1 = labelled & upto_mask$1;
-        slot_src$1 = src_zero;
-        if (labelled_upto$1 == set$0) begin
-            slot_src$1 = src_of$0;
-        end
-        if (labelled_upto$1 == set$1) begin
-            slot_src$1 = src_of$1;
-        end
-        if (labelled_upto$1 == set$2) begin
-            slot_src$1 = src_of$2;
-        end
-        if (labelled_upto$1 == set$3) begin
-            slot_src$1 = src_of$3;
-        end
-        if (labelled_upto$1 == set$4) begin
-            slot_src$1 = src_of$4;
-        end
-        if (labelled_upto$1 == set$5) begin
-            slot_src$1 = src_of$5;
-        end
-        if (labelled_upto$1 == set$6) begin
-            slot_src$1 = src_of$6;
-        end
-        if (labelled_upto$1 == set$7) begin
-            slot_src$1 = src_of$7;
-        end
-        if (labelled_upto$1 == set$8) begin
-            slot_src$1 = src_of$8;
-        end
-        if (labelled_upto$1 == set$9) begin
-            slot_src$1 = src_of$9;
-        end
-        if (labelled_upto$1 == set$10) begin
-            slot_src$1 = src_of$10;
-        end
-        if (labelled_upto$1 == set$11) begin
-            slot_src$1 = src_of$11;
-        end
-        if (labelled_upto$1 == set$12) begin
-            slot_src$1 = src_of$12;
-        end
-        if (labelled_upto$1 == set$13) begin
-            slot_src$1 = src_of$13;
-        end
-        if (labelled_upto$1 == set$14) begin
-            slot_src$1 = src_of$14;
-        end
-        if (labelled_upto$1 == set$15) begin
-            slot_src$1 = src_of$15;
-        end
-        if (zero_run$2 | (code$1 == code_empty)) begin
-            slot_src$1 = src_zero;
-        end
-        labelled_upto$2 = labelled & upto_mask$2;
-        slot_src$2 = src_zero;
-        if (labelled_upto$2 == set$0) begin
-            slot_src$2 = src_of$0;
-        end
-        if (labelled_upto$2 == set$1) begin
-            slot_src$2 = src_of$1;
-        end
-        if (labelled_upto$2 == set$2) begin
-            slot_src$2 = src_of$2;
-        end
-        if (labelled_upto$2 == set$3) begin
-            slot_src$2 = src_of$3;
-        end
-        if (labelled_upto$2 == set$4) begin
-            slot_src$2 = src_of$4;
-        end
-        if (labelled_upto$2 == set$5) begin
-            slot_src$2 = src_of$5;
-        end
-        if (labelled_upto$2 == set$6) begin
-            slot_src$2 = src_of$6;
-        end
-        if (labelled_upto$2 == set$7) begin
-            slot_src$2 = src_of$7;
-        end
-        if (labelled_upto$2 == set$8) begin
-            slot_src$2 = src_of$8;
-        end
-        if (labelled_upto$2 == set$9) begin
-            slot_src$2 = src_of$9;
-        end
-        if (labelled_upto$2 == set$10) begin
-            slot_src$2 = src_of$10;
-        end
-        if (labelled_upto$2 == set$11) begin
-            slot_src$2 = src_of$11;
-        end
-        if (labelled_upto$2 == set$12) begin
-            slot_src$2 = src_of$12;
-        end
-        if (labelled_upto$2 == set$13) begin
-            slot_src$2 = src_of$13;
-        end
-        if (labelled_upto$2 == set$14) begin
-            slot_src$2 = src_of$14;
-        end
-        if (labelled_upto$2 == set$15) begin
-            slot_src$2 = src_of$15;
-        end
-        if (zero_run$3 | (code$2 == code_empty)) begin
-            slot_src$2 = src_zero;
-        end
-        labelled_upto$3 = labelled & upto_mask$3;
-        slot_src$3 = src_zero;
-        if (labelled_upto$3 == set$0) begin
-            slot_src$3 = src_of$0;
-        end
-        if (labelled_upto$3 == set$1) begin
-            slot_src$3 = src_of$1;
-        end
-        if (labelled_upto$3 == set$2) begin
-            slot_src$3 = src_of$2;
-        end
-        if (labelled_upto$3 == set$3) begin
-            slot_src$3 = src_of$3;
-        end
-        if (labelled_upto$3 == set$4) begin
-            slot_src$3 = src_of$4;
-        end
-        if (labelled_upto$3 == set$5) begin
-            slot_src$3 = src_of$5;
-        end
-        if (labelled_upto$3 == set$6) begin
-            slot_src$3 = src_of$6;
-        end
-        if (labelled_upto$3 == set$7) begin
-            slot_src$3 = src_of$7;
-        end
-        if (labelled_upto$3 == set$8) begin
-            slot_src$3 = src_of$8;
-        end
-        if (labelled_upto$3 == set$9) begin
-            slot_src$3 = src_of$9;
-        end
-        if (labelled_upto$3 == set$10) begin
-            slot_src$3 = src_of$10;
-        end
-        if (labelled_upto$3 == set$11) begin
-            slot_src$3 = src_of$11;
-        end
-        if (labelled_upto$3 == set$12) begin
-            slot_src$3 = src_of$12;
-        end
-        if (labelled_upto$3 == set$13) begin
-            slot_src$3 = src_of$13;
-        end
-        if (labelled_upto$3 == set$14) begin
-            slot_src$3 = src_of$14;
-        end
-        if (labelled_upto$3 == set$15) begin
-            slot_src$3 = src_of$15;
-        end
-        if (zero_run$4 | (code$3 == code_empty)) begin
-            slot_src$3 = src_zero;
-        end
-        need = zero3;
-        run_src = src_zero;
-        if (labelled == set$0) begin
-            need = count_of$0;
-            run_src = src_of$0;
-        end
-        if (labelled == set$1) begin
-            need = count_of$1;
-            run_src = src_of$1;
-        end
-        if (labelled == set$2) begin
-            need = count_of$2;
-            run_src = src_of$2;
-        end
-        if (labelled == set$3) begin
-            need = count_of$3;
-            run_src = src_of$3;
-        end
-        if (labelled == set$4) begin
-            need = count_of$4;
-            run_src = src_of$4;
-        end
-        if (labelled == set$5) begin
-            need = count_of$5;
-            run_src = src_of$5;
-        end
-        if (labelled == set$6) begin
-            need = count_of$6;
-            run_src = src_of$6;
-        end
-        if (labelled == set$7) begin
-            need = count_of$7;
-            run_src = src_of$7;
-        end
-        if (labelled == set$8) begin
-            need = count_of$8;
-            run_src = src_of$8;
-        end
-        if (labelled == set$9) begin
-            need = count_of$9;
-            run_src = src_of$9;
-        end
-        if (labelled == set$10) begin
-            need = count_of$10;
-            run_src = src_of$10;
-        end
-        if (labelled == set$11) begin
-            need = count_of$11;
-            run_src = src_of$11;
-        end
-        if (labelled == set$12) begin
-            need = count_of$12;
-            run_src = src_of$12;
-        end
-        if (labelled == set$13) begin
-            need = count_of$13;
-            run_src = src_of$13;
-        end
-        if (labelled == set$14) begin
-            need = count_of$14;
-            run_src = src_of$14;
-        end
-        if (labelled == set$15) begin
-            need = count_of$15;
-            run_src = src_of$15;
-        end
-        if (zero_run$4) begin
-            run_src = src_zero;
-        end
+        run_number$code$0 = code$0;
+        run_number$code$1 = code$1;
+        run_number$code$2 = code$2;
+        run_number$code$3 = code$3;
+        run_number$first = first_s2$q;
         valid_s3$d = valid_s2$q;
-        beat_s3$d[2:0] = slot_src$0;
-        beat_s3$d[5:3] = slot_src$1;
-        beat_s3$d[8:6] = slot_src$2;
-        beat_s3$d[11:9] = slot_src$3;
-        beat_s3$d[14:12] = run_src;
-        beat_s3$d[17:15] = need;
+        beat_s3$d[2:0] = run_number$src$0;
+        beat_s3$d[5:3] = run_number$src$1;
+        beat_s3$d[8:6] = run_number$src$2;
+        beat_s3$d[11:9] = run_number$src$3;
+        beat_s3$d[14:12] = run_number$run;
+        beat_s3$d[17:15] = run_number$need;
         beat_s3$d[25:18] = keep_s2$q;
         beat_s3$d[26:26] = last_s2$q;
         beat_valid = valid_s3$q;
@@ -12211,6 +11849,419 @@ module fcc_label_update__pipeline__pixel_k7_668cf05b(d,q,clock);
     end
 
 endmodule // fcc_label_update__pipeline__pixel_k7_668cf05b
+
+
+module fcc_label_update__pipeline__run_number_k7_668cf05b(code$0,code$1,code$2,code$3,first,src$0,src$1,src$2,src$3,run,need);
+
+    // Module arguments
+    input wire  [1:0] code$0;
+    input wire  [1:0] code$1;
+    input wire  [1:0] code$2;
+    input wire  [1:0] code$3;
+    input wire  first;
+    output reg  [2:0] src$0;
+    output reg  [2:0] src$1;
+    output reg  [2:0] src$2;
+    output reg  [2:0] src$3;
+    output reg  [2:0] run;
+    output reg  [2:0] need;
+
+    // Constant declarations
+    localparam  slot_bit$0 = 4'h1;
+    localparam  slot_bit$1 = 4'h2;
+    localparam  slot_bit$2 = 4'h4;
+    localparam  slot_bit$3 = 4'h8;
+    localparam  upto_mask$0 = 4'h1;
+    localparam  upto_mask$1 = 4'h3;
+    localparam  upto_mask$2 = 4'h7;
+    localparam  upto_mask$3 = 4'hf;
+    localparam  set$0 = 4'h0;
+    localparam  set$1 = 4'h1;
+    localparam  set$2 = 4'h2;
+    localparam  set$3 = 4'h3;
+    localparam  set$4 = 4'h4;
+    localparam  set$5 = 4'h5;
+    localparam  set$6 = 4'h6;
+    localparam  set$7 = 4'h7;
+    localparam  set$8 = 4'h8;
+    localparam  set$9 = 4'h9;
+    localparam  set$10 = 4'ha;
+    localparam  set$11 = 4'hb;
+    localparam  set$12 = 4'hc;
+    localparam  set$13 = 4'hd;
+    localparam  set$14 = 4'he;
+    localparam  set$15 = 4'hf;
+    localparam  count_of$0 = 3'b0;
+    localparam  count_of$1 = 3'b1;
+    localparam  count_of$2 = 3'b1;
+    localparam  count_of$3 = 3'b10;
+    localparam  count_of$4 = 3'b1;
+    localparam  count_of$5 = 3'b10;
+    localparam  count_of$6 = 3'b10;
+    localparam  count_of$7 = 3'b11;
+    localparam  count_of$8 = 3'b1;
+    localparam  count_of$9 = 3'b10;
+    localparam  count_of$10 = 3'b10;
+    localparam  count_of$11 = 3'b11;
+    localparam  count_of$12 = 3'b10;
+    localparam  count_of$13 = 3'b11;
+    localparam  count_of$14 = 3'b11;
+    localparam  count_of$15 = 3'b100;
+    localparam  src_of$0 = 3'b1;
+    localparam  src_of$1 = 3'b10;
+    localparam  src_of$2 = 3'b10;
+    localparam  src_of$3 = 3'b11;
+    localparam  src_of$4 = 3'b10;
+    localparam  src_of$5 = 3'b11;
+    localparam  src_of$6 = 3'b11;
+    localparam  src_of$7 = 3'b100;
+    localparam  src_of$8 = 3'b10;
+    localparam  src_of$9 = 3'b11;
+    localparam  src_of$10 = 3'b11;
+    localparam  src_of$11 = 3'b100;
+    localparam  src_of$12 = 3'b11;
+    localparam  src_of$13 = 3'b100;
+    localparam  src_of$14 = 3'b100;
+    localparam  src_of$15 = 3'b101;
+    localparam  zero4 = 4'h0;
+    localparam  code_empty = 2'b0;
+    localparam  code_labelled = 2'b10;
+    localparam  code_unlabelled = 2'b11;
+    localparam  src_zero = 3'b0;
+    localparam  zero3 = 3'b0;
+
+    // Local signals
+    reg  [3:0] labelled;
+    reg  [3:0] labelled_upto$0;
+    reg  [3:0] labelled_upto$1;
+    reg  [3:0] labelled_upto$2;
+    reg  [3:0] labelled_upto$3;
+    reg  zero_run$0;
+    reg  zero_run$1;
+    reg  zero_run$2;
+    reg  zero_run$3;
+    reg  zero_run$4;
+
+    // Update code
+    always @(*) begin
+        zero_run$0 = first;
+        labelled = zero4;
+        zero_run$1 = zero_run$0;
+        if (code$0 == code_labelled) begin
+            labelled = labelled | slot_bit$0;
+            zero_run$1 = 1'b0;
+        end
+        if (code$0 == code_unlabelled) begin
+            zero_run$1 = 1'b1;
+        end
+        zero_run$2 = zero_run$1;
+        if (code$1 == code_labelled) begin
+            labelled = labelled | slot_bit$1;
+            zero_run$2 = 1'b0;
+        end
+        if (code$1 == code_unlabelled) begin
+            zero_run$2 = 1'b1;
+        end
+        zero_run$3 = zero_run$2;
+        if (code$2 == code_labelled) begin
+            labelled = labelled | slot_bit$2;
+            zero_run$3 = 1'b0;
+        end
+        if (code$2 == code_unlabelled) begin
+            zero_run$3 = 1'b1;
+        end
+        zero_run$4 = zero_run$3;
+        if (code$3 == code_labelled) begin
+            labelled = labelled | slot_bit$3;
+            zero_run$4 = 1'b0;
+        end
+        if (code$3 == code_unlabelled) begin
+            zero_run$4 = 1'b1;
+        end
+        labelled_upto$0 = labelled & upto_mask$0;
+        src$0 = src_zero;
+        if (labelled_upto$0 == set$0) begin
+            src$0 = src_of$0;
+        end
+        if (labelled_upto$0 == set$1) begin
+            src$0 = src_of$1;
+        end
+        if (labelled_upto$0 == set$2) begin
+            src$0 = src_of$2;
+        end
+        if (labelled_upto$0 == set$3) begin
+            src$0 = src_of$3;
+        end
+        if (labelled_upto$0 == set$4) begin
+            src$0 = src_of$4;
+        end
+        if (labelled_upto$0 == set$5) begin
+            src$0 = src_of$5;
+        end
+        if (labelled_upto$0 == set$6) begin
+            src$0 = src_of$6;
+        end
+        if (labelled_upto$0 == set$7) begin
+            src$0 = src_of$7;
+        end
+        if (labelled_upto$0 == set$8) begin
+            src$0 = src_of$8;
+        end
+        if (labelled_upto$0 == set$9) begin
+            src$0 = src_of$9;
+        end
+        if (labelled_upto$0 == set$10) begin
+            src$0 = src_of$10;
+        end
+        if (labelled_upto$0 == set$11) begin
+            src$0 = src_of$11;
+        end
+        if (labelled_upto$0 == set$12) begin
+            src$0 = src_of$12;
+        end
+        if (labelled_upto$0 == set$13) begin
+            src$0 = src_of$13;
+        end
+        if (labelled_upto$0 == set$14) begin
+            src$0 = src_of$14;
+        end
+        if (labelled_upto$0 == set$15) begin
+            src$0 = src_of$15;
+        end
+        if (zero_run$1 | (code$0 == code_empty)) begin
+            src$0 = src_zero;
+        end
+        labelled_upto$1 = labelled & upto_mask$1;
+        src$1 = src_zero;
+        if (labelled_upto$1 == set$0) begin
+            src$1 = src_of$0;
+        end
+        if (labelled_upto$1 == set$1) begin
+            src$1 = src_of$1;
+        end
+        if (labelled_upto$1 == set$2) begin
+            src$1 = src_of$2;
+        end
+        if (labelled_upto$1 == set$3) begin
+            src$1 = src_of$3;
+        end
+        if (labelled_upto$1 == set$4) begin
+            src$1 = src_of$4;
+        end
+        if (labelled_upto$1 == set$5) begin
+            src$1 = src_of$5;
+        end
+        if (labelled_upto$1 == set$6) begin
+            src$1 = src_of$6;
+        end
+        if (labelled_upto$1 == set$7) begin
+            src$1 = src_of$7;
+        end
+        if (labelled_upto$1 == set$8) begin
+            src$1 = src_of$8;
+        end
+        if (labelled_upto$1 == set$9) begin
+            src$1 = src_of$9;
+        end
+        if (labelled_upto$1 == set$10) begin
+            src$1 = src_of$10;
+        end
+        if (labelled_upto$1 == set$11) begin
+            src$1 = src_of$11;
+        end
+        if (labelled_upto$1 == set$12) begin
+            src$1 = src_of$12;
+        end
+        if (labelled_upto$1 == set$13) begin
+            src$1 = src_of$13;
+        end
+        if (labelled_upto$1 == set$14) begin
+            src$1 = src_of$14;
+        end
+        if (labelled_upto$1 == set$15) begin
+            src$1 = src_of$15;
+        end
+        if (zero_run$2 | (code$1 == code_empty)) begin
+            src$1 = src_zero;
+        end
+        labelled_upto$2 = labelled & upto_mask$2;
+        src$2 = src_zero;
+        if (labelled_upto$2 == set$0) begin
+            src$2 = src_of$0;
+        end
+        if (labelled_upto$2 == set$1) begin
+            src$2 = src_of$1;
+        end
+        if (labelled_upto$2 == set$2) begin
+            src$2 = src_of$2;
+        end
+        if (labelled_upto$2 == set$3) begin
+            src$2 = src_of$3;
+        end
+        if (labelled_upto$2 == set$4) begin
+            src$2 = src_of$4;
+        end
+        if (labelled_upto$2 == set$5) begin
+            src$2 = src_of$5;
+        end
+        if (labelled_upto$2 == set$6) begin
+            src$2 = src_of$6;
+        end
+        if (labelled_upto$2 == set$7) begin
+            src$2 = src_of$7;
+        end
+        if (labelled_upto$2 == set$8) begin
+            src$2 = src_of$8;
+        end
+        if (labelled_upto$2 == set$9) begin
+            src$2 = src_of$9;
+        end
+        if (labelled_upto$2 == set$10) begin
+            src$2 = src_of$10;
+        end
+        if (labelled_upto$2 == set$11) begin
+            src$2 = src_of$11;
+        end
+        if (labelled_upto$2 == set$12) begin
+            src$2 = src_of$12;
+        end
+        if (labelled_upto$2 == set$13) begin
+            src$2 = src_of$13;
+        end
+        if (labelled_upto$2 == set$14) begin
+            src$2 = src_of$14;
+        end
+        if (labelled_upto$2 == set$15) begin
+            src$2 = src_of$15;
+        end
+        if (zero_run$3 | (code$2 == code_empty)) begin
+            src$2 = src_zero;
+        end
+        labelled_upto$3 = labelled & upto_mask$3;
+        src$3 = src_zero;
+        if (labelled_upto$3 == set$0) begin
+            src$3 = src_of$0;
+        end
+        if (labelled_upto$3 == set$1) begin
+            src$3 = src_of$1;
+        end
+        if (labelled_upto$3 == set$2) begin
+            src$3 = src_of$2;
+        end
+        if (labelled_upto$3 == set$3) begin
+            src$3 = src_of$3;
+        end
+        if (labelled_upto$3 == set$4) begin
+            src$3 = src_of$4;
+        end
+        if (labelled_upto$3 == set$5) begin
+            src$3 = src_of$5;
+        end
+        if (labelled_upto$3 == set$6) begin
+            src$3 = src_of$6;
+        end
+        if (labelled_upto$3 == set$7) begin
+            src$3 = src_of$7;
+        end
+        if (labelled_upto$3 == set$8) begin
+            src$3 = src_of$8;
+        end
+        if (labelled_upto$3 == set$9) begin
+            src$3 = src_of$9;
+        end
+        if (labelled_upto$3 == set$10) begin
+            src$3 = src_of$10;
+        end
+        if (labelled_upto$3 == set$11) begin
+            src$3 = src_of$11;
+        end
+        if (labelled_upto$3 == set$12) begin
+            src$3 = src_of$12;
+        end
+        if (labelled_upto$3 == set$13) begin
+            src$3 = src_of$13;
+        end
+        if (labelled_upto$3 == set$14) begin
+            src$3 = src_of$14;
+        end
+        if (labelled_upto$3 == set$15) begin
+            src$3 = src_of$15;
+        end
+        if (zero_run$4 | (code$3 == code_empty)) begin
+            src$3 = src_zero;
+        end
+        need = zero3;
+        run = src_zero;
+        if (labelled == set$0) begin
+            need = count_of$0;
+            run = src_of$0;
+        end
+        if (labelled == set$1) begin
+            need = count_of$1;
+            run = src_of$1;
+        end
+        if (labelled == set$2) begin
+            need = count_of$2;
+            run = src_of$2;
+        end
+        if (labelled == set$3) begin
+            need = count_of$3;
+            run = src_of$3;
+        end
+        if (labelled == set$4) begin
+            need = count_of$4;
+            run = src_of$4;
+        end
+        if (labelled == set$5) begin
+            need = count_of$5;
+            run = src_of$5;
+        end
+        if (labelled == set$6) begin
+            need = count_of$6;
+            run = src_of$6;
+        end
+        if (labelled == set$7) begin
+            need = count_of$7;
+            run = src_of$7;
+        end
+        if (labelled == set$8) begin
+            need = count_of$8;
+            run = src_of$8;
+        end
+        if (labelled == set$9) begin
+            need = count_of$9;
+            run = src_of$9;
+        end
+        if (labelled == set$10) begin
+            need = count_of$10;
+            run = src_of$10;
+        end
+        if (labelled == set$11) begin
+            need = count_of$11;
+            run = src_of$11;
+        end
+        if (labelled == set$12) begin
+            need = count_of$12;
+            run = src_of$12;
+        end
+        if (labelled == set$13) begin
+            need = count_of$13;
+            run = src_of$13;
+        end
+        if (labelled == set$14) begin
+            need = count_of$14;
+            run = src_of$14;
+        end
+        if (labelled == set$15) begin
+            need = count_of$15;
+            run = src_of$15;
+        end
+        if (zero_run$4) begin
+            run = src_zero;
+        end
+    end
+
+endmodule // fcc_label_update__pipeline__run_number_k7_668cf05b
 
 
 module fcc_label_update__pipeline__valid_s1_k7_668cf05b(d,q,clock);
@@ -23797,65 +23848,33 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
     output reg  credit_drop;
 
     // Constant declarations
-    localparam  ctr_zero = 33'h0;
-    localparam  ring_zero = 32'h0;
     localparam  zero16 = 16'h0;
 
     // Stub signals
-    reg  [15:0] last_label$d;
-    wire  [15:0] last_label$q;
-    reg  last_label$clock;
-    reg  last_label_valid$d;
-    wire  last_label_valid$q;
-    reg  last_label_valid$clock;
-    reg  ctr_s1$clock;
-    reg  [32:0] ctr_s1$d;
-    wire  [32:0] ctr_s1$q;
-    reg  [32:0] ctr_tree$0$d;
-    wire  [32:0] ctr_tree$0$q;
-    reg  ctr_tree$0$clock;
-    reg  [32:0] ctr_tree$1$d;
-    wire  [32:0] ctr_tree$1$q;
-    reg  ctr_tree$1$clock;
-    reg  [32:0] ctr_tree$2$d;
-    wire  [32:0] ctr_tree$2$q;
-    reg  ctr_tree$2$clock;
-    reg  [32:0] ctr_tree$3$d;
-    wire  [32:0] ctr_tree$3$q;
-    reg  ctr_tree$3$clock;
-    reg  ctr_sm$clock;
-    reg  [32:0] ctr_sm$d;
-    wire  [32:0] ctr_sm$q;
-    reg  [32:0] ctr_sm1$d;
-    wire  [32:0] ctr_sm1$q;
-    reg  ctr_sm1$clock;
-    reg  [32:0] ctr_sm2$d;
-    wire  [32:0] ctr_sm2$q;
-    reg  ctr_sm2$clock;
-    reg  [31:0] ring_s1$d;
-    wire  [31:0] ring_s1$q;
-    reg  ring_s1$clock;
-    reg  [31:0] ring_tree$0$d;
-    wire  [31:0] ring_tree$0$q;
-    reg  ring_tree$0$clock;
-    reg  [31:0] ring_tree$1$d;
-    wire  [31:0] ring_tree$1$q;
-    reg  ring_tree$1$clock;
-    reg  [31:0] ring_tree$2$d;
-    wire  [31:0] ring_tree$2$q;
-    reg  ring_tree$2$clock;
-    reg  [31:0] ring_tree$3$d;
-    wire  [31:0] ring_tree$3$q;
-    reg  ring_tree$3$clock;
-    reg  [31:0] ring_sm$d;
-    wire  [31:0] ring_sm$q;
-    reg  ring_sm$clock;
-    reg  [31:0] ring_sm1$d;
-    wire  [31:0] ring_sm1$q;
-    reg  ring_sm1$clock;
-    reg  [31:0] ring_sm2$d;
-    wire  [31:0] ring_sm2$q;
-    reg  ring_sm2$clock;
+    reg  centre_pipe$clk;
+    reg  centre_pipe$rst;
+    reg  centre_pipe$valid;
+    reg  centre_pipe$lok;
+    reg  [15:0] centre_pipe$label;
+    reg  [11:0] centre_pipe$col;
+    reg  centre_pipe$last;
+    reg  centre_pipe$ring;
+    reg  [15:0] centre_pipe$ring_a;
+    reg  [15:0] centre_pipe$ring_b;
+    wire  centre_pipe$s1_valid;
+    wire  centre_pipe$s1_elig;
+    wire  centre_pipe$s1_same_run;
+    wire  centre_pipe$sm_valid;
+    wire  centre_pipe$sm_elig;
+    wire  centre_pipe$sm_same_run;
+    wire  [15:0] centre_pipe$sm_c;
+    wire  [11:0] centre_pipe$sm_col;
+    wire  centre_pipe$sm1_elig;
+    wire  centre_pipe$sm2_valid;
+    wire  centre_pipe$sm2_ring;
+    wire  centre_pipe$sm2_last;
+    wire  [15:0] centre_pipe$sm2_ring_a;
+    wire  [15:0] centre_pipe$sm2_ring_b;
     reg  match_delay$clk;
     reg  match_delay$rst;
     reg  match_delay$hit$0;
@@ -24566,34 +24585,8 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
     reg  valid_rst$clock;
     reg  valid_rst$d;
     wire  valid_rst$q;
-    reg  tree_rst$0$clock;
-    reg  tree_rst$0$d;
-    wire  tree_rst$0$q;
-    reg  tree_rst$1$clock;
-    reg  tree_rst$1$d;
-    wire  tree_rst$1$q;
-    reg  tree_rst$2$clock;
-    reg  tree_rst$2$d;
-    wire  tree_rst$2$q;
-    reg  tree_rst$3$clock;
-    reg  tree_rst$3$d;
-    wire  tree_rst$3$q;
-    reg  tree_rst$4$clock;
-    reg  tree_rst$4$d;
-    wire  tree_rst$4$q;
-    reg  tree_rst$5$clock;
-    reg  tree_rst$5$d;
-    wire  tree_rst$5$q;
-    reg  tree_rst$6$clock;
-    reg  tree_rst$6$d;
-    wire  tree_rst$6$q;
-    reg  tree_rst$7$clock;
-    reg  tree_rst$7$d;
-    wire  tree_rst$7$q;
 
     // Local signals
-    reg  [32:0] ctr_s0;
-    reg  [31:0] ring_s0;
     reg  [15:0] run_rep_before;
     reg  [15:0] run_rep_choice;
     reg  [15:0] run_rep_after;
@@ -24621,95 +24614,31 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
     reg  need_rec;
 
     // Sub module instances
-    fcc_sort_net__filter__last_label_k7_668cf05b last_label(
-        .d(last_label$d),
-        .q(last_label$q),
-        .clock(last_label$clock)
-    );
-    fcc_sort_net__filter__last_label_valid_k7_668cf05b last_label_valid(
-        .d(last_label_valid$d),
-        .q(last_label_valid$q),
-        .clock(last_label_valid$clock)
-    );
-    fcc_sort_net__filter__ctr_s1_k7_668cf05b ctr_s1(
-        .clock(ctr_s1$clock),
-        .d(ctr_s1$d),
-        .q(ctr_s1$q)
-    );
-    fcc_sort_net__filter__ctr_tree__0_k7_668cf05b ctr_tree$0(
-        .d(ctr_tree$0$d),
-        .q(ctr_tree$0$q),
-        .clock(ctr_tree$0$clock)
-    );
-    fcc_sort_net__filter__ctr_tree__1_k7_668cf05b ctr_tree$1(
-        .d(ctr_tree$1$d),
-        .q(ctr_tree$1$q),
-        .clock(ctr_tree$1$clock)
-    );
-    fcc_sort_net__filter__ctr_tree__2_k7_668cf05b ctr_tree$2(
-        .d(ctr_tree$2$d),
-        .q(ctr_tree$2$q),
-        .clock(ctr_tree$2$clock)
-    );
-    fcc_sort_net__filter__ctr_tree__3_k7_668cf05b ctr_tree$3(
-        .d(ctr_tree$3$d),
-        .q(ctr_tree$3$q),
-        .clock(ctr_tree$3$clock)
-    );
-    fcc_sort_net__filter__ctr_sm_k7_668cf05b ctr_sm(
-        .clock(ctr_sm$clock),
-        .d(ctr_sm$d),
-        .q(ctr_sm$q)
-    );
-    fcc_sort_net__filter__ctr_sm1_k7_668cf05b ctr_sm1(
-        .d(ctr_sm1$d),
-        .q(ctr_sm1$q),
-        .clock(ctr_sm1$clock)
-    );
-    fcc_sort_net__filter__ctr_sm2_k7_668cf05b ctr_sm2(
-        .d(ctr_sm2$d),
-        .q(ctr_sm2$q),
-        .clock(ctr_sm2$clock)
-    );
-    fcc_sort_net__filter__ring_s1_k7_668cf05b ring_s1(
-        .d(ring_s1$d),
-        .q(ring_s1$q),
-        .clock(ring_s1$clock)
-    );
-    fcc_sort_net__filter__ring_tree__0_k7_668cf05b ring_tree$0(
-        .d(ring_tree$0$d),
-        .q(ring_tree$0$q),
-        .clock(ring_tree$0$clock)
-    );
-    fcc_sort_net__filter__ring_tree__1_k7_668cf05b ring_tree$1(
-        .d(ring_tree$1$d),
-        .q(ring_tree$1$q),
-        .clock(ring_tree$1$clock)
-    );
-    fcc_sort_net__filter__ring_tree__2_k7_668cf05b ring_tree$2(
-        .d(ring_tree$2$d),
-        .q(ring_tree$2$q),
-        .clock(ring_tree$2$clock)
-    );
-    fcc_sort_net__filter__ring_tree__3_k7_668cf05b ring_tree$3(
-        .d(ring_tree$3$d),
-        .q(ring_tree$3$q),
-        .clock(ring_tree$3$clock)
-    );
-    fcc_sort_net__filter__ring_sm_k7_668cf05b ring_sm(
-        .d(ring_sm$d),
-        .q(ring_sm$q),
-        .clock(ring_sm$clock)
-    );
-    fcc_sort_net__filter__ring_sm1_k7_668cf05b ring_sm1(
-        .d(ring_sm1$d),
-        .q(ring_sm1$q),
-        .clock(ring_sm1$clock)
-    );
-    fcc_sort_net__filter__ring_sm2_k7_668cf05b ring_sm2(
-        .d(ring_sm2$d),
-        .q(ring_sm2$q),
-        .clock(ring_sm2$clock)
+    fcc_sort_net__filter__centre_pipe_k7_668cf05b centre_pipe(
+        .clk(centre_pipe$clk),
+        .rst(centre_pipe$rst),
+        .valid(centre_pipe$valid),
+        .lok(centre_pipe$lok),
+        .label(centre_pipe$label),
+        .col(centre_pipe$col),
+        .last(centre_pipe$last),
+        .ring(centre_pipe$ring),
+        .ring_a(centre_pipe$ring_a),
+        .ring_b(centre_pipe$ring_b),
+        .s1_valid(centre_pipe$s1_valid),
+        .s1_elig(centre_pipe$s1_elig),
+        .s1_same_run(centre_pipe$s1_same_run),
+        .sm_valid(centre_pipe$sm_valid),
+        .sm_elig(centre_pipe$sm_elig),
+        .sm_same_run(centre_pipe$sm_same_run),
+        .sm_c(centre_pipe$sm_c),
+        .sm_col(centre_pipe$sm_col),
+        .sm1_elig(centre_pipe$sm1_elig),
+        .sm2_valid(centre_pipe$sm2_valid),
+        .sm2_ring(centre_pipe$sm2_ring),
+        .sm2_last(centre_pipe$sm2_last),
+        .sm2_ring_a(centre_pipe$sm2_ring_a),
+        .sm2_ring_b(centre_pipe$sm2_ring_b)
     );
     fcc_sort_net__filter__match_delay_k7_668cf05b match_delay(
         .clk(match_delay$clk),
@@ -25671,59 +25600,9 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
         .d(valid_rst$d),
         .q(valid_rst$q)
     );
-    fcc_sort_net__filter__tree_rst__0_k7_668cf05b tree_rst$0(
-        .clock(tree_rst$0$clock),
-        .d(tree_rst$0$d),
-        .q(tree_rst$0$q)
-    );
-    fcc_sort_net__filter__tree_rst__1_k7_668cf05b tree_rst$1(
-        .clock(tree_rst$1$clock),
-        .d(tree_rst$1$d),
-        .q(tree_rst$1$q)
-    );
-    fcc_sort_net__filter__tree_rst__2_k7_668cf05b tree_rst$2(
-        .clock(tree_rst$2$clock),
-        .d(tree_rst$2$d),
-        .q(tree_rst$2$q)
-    );
-    fcc_sort_net__filter__tree_rst__3_k7_668cf05b tree_rst$3(
-        .clock(tree_rst$3$clock),
-        .d(tree_rst$3$d),
-        .q(tree_rst$3$q)
-    );
-    fcc_sort_net__filter__tree_rst__4_k7_668cf05b tree_rst$4(
-        .clock(tree_rst$4$clock),
-        .d(tree_rst$4$d),
-        .q(tree_rst$4$q)
-    );
-    fcc_sort_net__filter__tree_rst__5_k7_668cf05b tree_rst$5(
-        .clock(tree_rst$5$clock),
-        .d(tree_rst$5$d),
-        .q(tree_rst$5$q)
-    );
-    fcc_sort_net__filter__tree_rst__6_k7_668cf05b tree_rst$6(
-        .clock(tree_rst$6$clock),
-        .d(tree_rst$6$d),
-        .q(tree_rst$6$q)
-    );
-    fcc_sort_net__filter__tree_rst__7_k7_668cf05b tree_rst$7(
-        .clock(tree_rst$7$clock),
-        .d(tree_rst$7$d),
-        .q(tree_rst$7$q)
-    );
 
     // Update code
     always @(*) begin
-        last_label$clock = clk;
-        last_label_valid$clock = clk;
-        ctr_s1$clock = clk;
-        ctr_sm$clock = clk;
-        ctr_sm1$clock = clk;
-        ctr_sm2$clock = clk;
-        ring_s1$clock = clk;
-        ring_sm$clock = clk;
-        ring_sm1$clock = clk;
-        ring_sm2$clock = clk;
         run_rep$clock = clk;
         run_rep_sm1$clock = clk;
         run_rep_sm2$clock = clk;
@@ -25733,16 +25612,6 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
         rec_push_q$clock = clk;
         credit_drop_q$clock = clk;
         rec_q$clock = clk;
-        last_label$d = last_label$q;
-        last_label_valid$d = last_label_valid$q;
-        ctr_s1$d = ctr_s1$q;
-        ctr_sm$d = ctr_sm$q;
-        ctr_sm1$d = ctr_sm1$q;
-        ctr_sm2$d = ctr_sm2$q;
-        ring_s1$d = ring_s1$q;
-        ring_sm$d = ring_sm$q;
-        ring_sm1$d = ring_sm1$q;
-        ring_sm2$d = ring_sm2$q;
         run_rep$d = run_rep$q;
         run_rep_sm1$d = run_rep_sm1$q;
         run_rep_sm2$d = run_rep_sm2$q;
@@ -25752,32 +25621,8 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
         rec_push_q$d = rec_push_q$q;
         credit_drop_q$d = credit_drop_q$q;
         rec_q$d = rec_q$q;
-        ctr_tree$0$clock = clk;
-        ring_tree$0$clock = clk;
-        ctr_tree$1$clock = clk;
-        ring_tree$1$clock = clk;
-        ctr_tree$2$clock = clk;
-        ring_tree$2$clock = clk;
-        ctr_tree$3$clock = clk;
-        ring_tree$3$clock = clk;
         valid_rst$clock = clk;
         valid_rst$d = rst;
-        tree_rst$0$clock = clk;
-        tree_rst$0$d = rst;
-        tree_rst$1$clock = clk;
-        tree_rst$1$d = rst;
-        tree_rst$2$clock = clk;
-        tree_rst$2$d = rst;
-        tree_rst$3$clock = clk;
-        tree_rst$3$d = rst;
-        tree_rst$4$clock = clk;
-        tree_rst$4$d = rst;
-        tree_rst$5$clock = clk;
-        tree_rst$5$d = rst;
-        tree_rst$6$clock = clk;
-        tree_rst$6$d = rst;
-        tree_rst$7$clock = clk;
-        tree_rst$7$d = rst;
         later_min$0$clock = clk;
         is_run_rep$0$clock = clk;
         keep$0$clock = clk;
@@ -25887,38 +25732,16 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
         known_mask$clk = clk;
         match_delay$clk = clk;
         match_delay$rst = rst;
-        ctr_s0[0:0] = centre[0:0];
-        ctr_s0[1:1] = centre[0:0] & centre[1:1];
-        ctr_s0[2:2] = last_label_valid$q & (centre[17:2] == last_label$q);
-        ctr_s0[18:3] = centre[17:2];
-        ctr_s0[30:19] = centre[29:18];
-        ctr_s0[31:31] = centre[30:30];
-        ctr_s0[32:32] = centre[31:31];
-        ring_s0[15:0] = centre[47:32];
-        ring_s0[31:16] = centre[63:48];
-        if (centre[0:0] & centre[1:1]) begin
-            last_label$d = centre[17:2];
-            last_label_valid$d = 1'b1;
-        end
-        if (centre[0:0] & centre[30:30]) begin
-            last_label_valid$d = 1'b0;
-        end
-        ctr_s1$d = ctr_s0;
-        ctr_tree$0$d = ctr_s1$q;
-        ctr_tree$1$d = ctr_tree$0$q;
-        ctr_tree$2$d = ctr_tree$1$q;
-        ctr_tree$3$d = ctr_tree$2$q;
-        ctr_sm$d = ctr_tree$3$q;
-        ctr_sm1$d = ctr_sm$q;
-        ctr_sm2$d = ctr_sm1$q;
-        ring_s1$d = ring_s0;
-        ring_tree$0$d = ring_s1$q;
-        ring_tree$1$d = ring_tree$0$q;
-        ring_tree$2$d = ring_tree$1$q;
-        ring_tree$3$d = ring_tree$2$q;
-        ring_sm$d = ring_tree$3$q;
-        ring_sm1$d = ring_sm$q;
-        ring_sm2$d = ring_sm1$q;
+        centre_pipe$clk = clk;
+        centre_pipe$rst = rst;
+        centre_pipe$valid = centre[0:0];
+        centre_pipe$lok = centre[1:1];
+        centre_pipe$label = centre[17:2];
+        centre_pipe$col = centre[29:18];
+        centre_pipe$last = centre[30:30];
+        centre_pipe$ring = centre[31:31];
+        centre_pipe$ring_a = centre[47:32];
+        centre_pipe$ring_b = centre[63:48];
         min_tree$hit$0 = hit$0;
         min_tree$value$0 = rep$0;
         match_delay$hit$0 = hit$0;
@@ -26003,9 +25826,9 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
         min_tree$value$20 = rep$20;
         match_delay$hit$20 = hit$20;
         match_delay$rep$20 = rep$20;
-        known_mask$valid = ctr_s1$q[0:0];
-        known_mask$elig = ctr_s1$q[1:1];
-        known_mask$same_run = ctr_s1$q[2:2];
+        known_mask$valid = centre_pipe$s1_valid;
+        known_mask$elig = centre_pipe$s1_elig;
+        known_mask$same_run = centre_pipe$s1_same_run;
         known_mask$hit$0 = match_delay$hit_s1$0;
         known_mask$hit$1 = match_delay$hit_s1$1;
         known_mask$hit$2 = match_delay$hit_s1$2;
@@ -26027,8 +25850,8 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
         known_mask$hit$18 = match_delay$hit_s1$18;
         known_mask$hit$19 = match_delay$hit_s1$19;
         known_mask$hit$20 = match_delay$hit_s1$20;
-        run_rep_choice = ctr_sm$q[18:3];
-        if (ctr_sm$q[2:2]) begin
+        run_rep_choice = centre_pipe$sm_c;
+        if (centre_pipe$sm_same_run) begin
             run_rep_choice = run_rep$q;
         end
         run_rep_before_net$x = run_rep_choice;
@@ -26037,14 +25860,14 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
         if (min_tree$min < run_rep_before) begin
             run_rep_after = min_tree$min;
         end
-        if (ctr_sm$q[1:1]) begin
+        if (centre_pipe$sm_elig) begin
             run_rep$d = run_rep_after;
         end
         run_rep_sm1$d = run_rep_before;
-        rep_write_en$d = ctr_sm$q[0:0];
-        rep_write_col$d = ctr_sm$q[30:19];
+        rep_write_en$d = centre_pipe$sm_valid;
+        rep_write_col$d = centre_pipe$sm_col;
         rep_write_value$d = zero16;
-        if (ctr_sm$q[1:1]) begin
+        if (centre_pipe$sm_elig) begin
             rep_write_value$d = run_rep_after;
         end
         later_min$0$d = match_delay$hit_sm$0 & (match_delay$rep_sm$0 == min_tree$min) & ~min_tree$first$0;
@@ -26092,67 +25915,67 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
         rep_we = rep_write_en$q;
         rep_waddr = rep_write_col$q;
         rep_wdata = rep_write_value$q;
-        keep_next$0 = ctr_sm1$q[1:1] & match_delay$hit_sm1$0 & ~match_delay$adj_sm1$0 & ~known_mask$known_late$0 & ~is_run_rep$0$q & ~later_min$0$q;
+        keep_next$0 = centre_pipe$sm1_elig & match_delay$hit_sm1$0 & ~match_delay$adj_sm1$0 & ~known_mask$known_late$0 & ~is_run_rep$0$q & ~later_min$0$q;
         keep$0$d = keep_next$0;
         keep_group_or$x$0 = keep_next$0;
-        keep_next$1 = ctr_sm1$q[1:1] & match_delay$hit_sm1$1 & ~match_delay$adj_sm1$1 & ~known_mask$known_late$1 & ~is_run_rep$1$q & ~later_min$1$q;
+        keep_next$1 = centre_pipe$sm1_elig & match_delay$hit_sm1$1 & ~match_delay$adj_sm1$1 & ~known_mask$known_late$1 & ~is_run_rep$1$q & ~later_min$1$q;
         keep$1$d = keep_next$1;
         keep_group_or$x$1 = keep_next$1;
-        keep_next$2 = ctr_sm1$q[1:1] & match_delay$hit_sm1$2 & ~match_delay$adj_sm1$2 & ~known_mask$known_late$2 & ~is_run_rep$2$q & ~later_min$2$q;
+        keep_next$2 = centre_pipe$sm1_elig & match_delay$hit_sm1$2 & ~match_delay$adj_sm1$2 & ~known_mask$known_late$2 & ~is_run_rep$2$q & ~later_min$2$q;
         keep$2$d = keep_next$2;
         keep_group_or$x$2 = keep_next$2;
-        keep_next$3 = ctr_sm1$q[1:1] & match_delay$hit_sm1$3 & ~match_delay$adj_sm1$3 & ~known_mask$known_late$3 & ~is_run_rep$3$q & ~later_min$3$q;
+        keep_next$3 = centre_pipe$sm1_elig & match_delay$hit_sm1$3 & ~match_delay$adj_sm1$3 & ~known_mask$known_late$3 & ~is_run_rep$3$q & ~later_min$3$q;
         keep$3$d = keep_next$3;
         keep_group_or$x$3 = keep_next$3;
-        keep_next$4 = ctr_sm1$q[1:1] & match_delay$hit_sm1$4 & ~match_delay$adj_sm1$4 & ~known_mask$known_late$4 & ~is_run_rep$4$q & ~later_min$4$q;
+        keep_next$4 = centre_pipe$sm1_elig & match_delay$hit_sm1$4 & ~match_delay$adj_sm1$4 & ~known_mask$known_late$4 & ~is_run_rep$4$q & ~later_min$4$q;
         keep$4$d = keep_next$4;
         keep_group_or$x$4 = keep_next$4;
-        keep_next$5 = ctr_sm1$q[1:1] & match_delay$hit_sm1$5 & ~match_delay$adj_sm1$5 & ~known_mask$known_late$5 & ~is_run_rep$5$q & ~later_min$5$q;
+        keep_next$5 = centre_pipe$sm1_elig & match_delay$hit_sm1$5 & ~match_delay$adj_sm1$5 & ~known_mask$known_late$5 & ~is_run_rep$5$q & ~later_min$5$q;
         keep$5$d = keep_next$5;
         keep_group_or$x$5 = keep_next$5;
-        keep_next$6 = ctr_sm1$q[1:1] & match_delay$hit_sm1$6 & ~match_delay$adj_sm1$6 & ~known_mask$known_late$6 & ~is_run_rep$6$q & ~later_min$6$q;
+        keep_next$6 = centre_pipe$sm1_elig & match_delay$hit_sm1$6 & ~match_delay$adj_sm1$6 & ~known_mask$known_late$6 & ~is_run_rep$6$q & ~later_min$6$q;
         keep$6$d = keep_next$6;
         keep_group_or$x$6 = keep_next$6;
-        keep_next$7 = ctr_sm1$q[1:1] & match_delay$hit_sm1$7 & ~match_delay$adj_sm1$7 & ~known_mask$known_late$7 & ~is_run_rep$7$q & ~later_min$7$q;
+        keep_next$7 = centre_pipe$sm1_elig & match_delay$hit_sm1$7 & ~match_delay$adj_sm1$7 & ~known_mask$known_late$7 & ~is_run_rep$7$q & ~later_min$7$q;
         keep$7$d = keep_next$7;
         keep_group_or$x$7 = keep_next$7;
-        keep_next$8 = ctr_sm1$q[1:1] & match_delay$hit_sm1$8 & ~match_delay$adj_sm1$8 & ~known_mask$known_late$8 & ~is_run_rep$8$q & ~later_min$8$q;
+        keep_next$8 = centre_pipe$sm1_elig & match_delay$hit_sm1$8 & ~match_delay$adj_sm1$8 & ~known_mask$known_late$8 & ~is_run_rep$8$q & ~later_min$8$q;
         keep$8$d = keep_next$8;
         keep_group_or$x$8 = keep_next$8;
-        keep_next$9 = ctr_sm1$q[1:1] & match_delay$hit_sm1$9 & ~match_delay$adj_sm1$9 & ~known_mask$known_late$9 & ~is_run_rep$9$q & ~later_min$9$q;
+        keep_next$9 = centre_pipe$sm1_elig & match_delay$hit_sm1$9 & ~match_delay$adj_sm1$9 & ~known_mask$known_late$9 & ~is_run_rep$9$q & ~later_min$9$q;
         keep$9$d = keep_next$9;
         keep_group_or$x$9 = keep_next$9;
-        keep_next$10 = ctr_sm1$q[1:1] & match_delay$hit_sm1$10 & ~match_delay$adj_sm1$10 & ~known_mask$known_late$10 & ~is_run_rep$10$q & ~later_min$10$q;
+        keep_next$10 = centre_pipe$sm1_elig & match_delay$hit_sm1$10 & ~match_delay$adj_sm1$10 & ~known_mask$known_late$10 & ~is_run_rep$10$q & ~later_min$10$q;
         keep$10$d = keep_next$10;
         keep_group_or$x$10 = keep_next$10;
-        keep_next$11 = ctr_sm1$q[1:1] & match_delay$hit_sm1$11 & ~match_delay$adj_sm1$11 & ~known_mask$known_late$11 & ~is_run_rep$11$q & ~later_min$11$q;
+        keep_next$11 = centre_pipe$sm1_elig & match_delay$hit_sm1$11 & ~match_delay$adj_sm1$11 & ~known_mask$known_late$11 & ~is_run_rep$11$q & ~later_min$11$q;
         keep$11$d = keep_next$11;
         keep_group_or$x$11 = keep_next$11;
-        keep_next$12 = ctr_sm1$q[1:1] & match_delay$hit_sm1$12 & ~match_delay$adj_sm1$12 & ~known_mask$known_late$12 & ~is_run_rep$12$q & ~later_min$12$q;
+        keep_next$12 = centre_pipe$sm1_elig & match_delay$hit_sm1$12 & ~match_delay$adj_sm1$12 & ~known_mask$known_late$12 & ~is_run_rep$12$q & ~later_min$12$q;
         keep$12$d = keep_next$12;
         keep_group_or$x$12 = keep_next$12;
-        keep_next$13 = ctr_sm1$q[1:1] & match_delay$hit_sm1$13 & ~match_delay$adj_sm1$13 & ~known_mask$known_late$13 & ~is_run_rep$13$q & ~later_min$13$q;
+        keep_next$13 = centre_pipe$sm1_elig & match_delay$hit_sm1$13 & ~match_delay$adj_sm1$13 & ~known_mask$known_late$13 & ~is_run_rep$13$q & ~later_min$13$q;
         keep$13$d = keep_next$13;
         keep_group_or$x$13 = keep_next$13;
-        keep_next$14 = ctr_sm1$q[1:1] & match_delay$hit_sm1$14 & ~match_delay$adj_sm1$14 & ~known_mask$known_late$14 & ~is_run_rep$14$q & ~later_min$14$q;
+        keep_next$14 = centre_pipe$sm1_elig & match_delay$hit_sm1$14 & ~match_delay$adj_sm1$14 & ~known_mask$known_late$14 & ~is_run_rep$14$q & ~later_min$14$q;
         keep$14$d = keep_next$14;
         keep_group_or$x$14 = keep_next$14;
-        keep_next$15 = ctr_sm1$q[1:1] & match_delay$hit_sm1$15 & ~match_delay$adj_sm1$15 & ~known_mask$known_late$15 & ~is_run_rep$15$q & ~later_min$15$q;
+        keep_next$15 = centre_pipe$sm1_elig & match_delay$hit_sm1$15 & ~match_delay$adj_sm1$15 & ~known_mask$known_late$15 & ~is_run_rep$15$q & ~later_min$15$q;
         keep$15$d = keep_next$15;
         keep_group_or$x$15 = keep_next$15;
-        keep_next$16 = ctr_sm1$q[1:1] & match_delay$hit_sm1$16 & ~match_delay$adj_sm1$16 & ~known_mask$known_late$16 & ~is_run_rep$16$q & ~later_min$16$q;
+        keep_next$16 = centre_pipe$sm1_elig & match_delay$hit_sm1$16 & ~match_delay$adj_sm1$16 & ~known_mask$known_late$16 & ~is_run_rep$16$q & ~later_min$16$q;
         keep$16$d = keep_next$16;
         keep_group_or$x$16 = keep_next$16;
-        keep_next$17 = ctr_sm1$q[1:1] & match_delay$hit_sm1$17 & ~match_delay$adj_sm1$17 & ~known_mask$known_late$17 & ~is_run_rep$17$q & ~later_min$17$q;
+        keep_next$17 = centre_pipe$sm1_elig & match_delay$hit_sm1$17 & ~match_delay$adj_sm1$17 & ~known_mask$known_late$17 & ~is_run_rep$17$q & ~later_min$17$q;
         keep$17$d = keep_next$17;
         keep_group_or$x$17 = keep_next$17;
-        keep_next$18 = ctr_sm1$q[1:1] & match_delay$hit_sm1$18 & ~match_delay$adj_sm1$18 & ~known_mask$known_late$18 & ~is_run_rep$18$q & ~later_min$18$q;
+        keep_next$18 = centre_pipe$sm1_elig & match_delay$hit_sm1$18 & ~match_delay$adj_sm1$18 & ~known_mask$known_late$18 & ~is_run_rep$18$q & ~later_min$18$q;
         keep$18$d = keep_next$18;
         keep_group_or$x$18 = keep_next$18;
-        keep_next$19 = ctr_sm1$q[1:1] & match_delay$hit_sm1$19 & ~match_delay$adj_sm1$19 & ~known_mask$known_late$19 & ~is_run_rep$19$q & ~later_min$19$q;
+        keep_next$19 = centre_pipe$sm1_elig & match_delay$hit_sm1$19 & ~match_delay$adj_sm1$19 & ~known_mask$known_late$19 & ~is_run_rep$19$q & ~later_min$19$q;
         keep$19$d = keep_next$19;
         keep_group_or$x$19 = keep_next$19;
-        keep_next$20 = ctr_sm1$q[1:1] & match_delay$hit_sm1$20 & ~match_delay$adj_sm1$20 & ~known_mask$known_late$20 & ~is_run_rep$20$q & ~later_min$20$q;
+        keep_next$20 = centre_pipe$sm1_elig & match_delay$hit_sm1$20 & ~match_delay$adj_sm1$20 & ~known_mask$known_late$20 & ~is_run_rep$20$q & ~later_min$20$q;
         keep$20$d = keep_next$20;
         keep_group_or$x$20 = keep_next$20;
         keep_group$0$clock = clk;
@@ -26231,14 +26054,14 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
         keep_first$x$20 = keep$20$q;
         keep_sm3$20$d = keep$20$q;
         first_sm3$20$d = keep_first$first$20;
-        need_rec = keep_any$any | ctr_sm2$q[32:32] | ctr_sm2$q[31:31];
-        rec_push_q$d = ctr_sm2$q[0:0] & need_rec;
-        credit_drop_q$d = ctr_sm2$q[0:0] & ~need_rec;
+        need_rec = keep_any$any | centre_pipe$sm2_ring | centre_pipe$sm2_last;
+        rec_push_q$d = centre_pipe$sm2_valid & need_rec;
+        credit_drop_q$d = centre_pipe$sm2_valid & ~need_rec;
         rec_q$d[15:0] = run_rep_sm2$q;
-        rec_q$d[31:16] = ring_sm2$q[15:0];
-        rec_q$d[47:32] = ring_sm2$q[31:16];
-        rec_q$d[48:48] = ctr_sm2$q[32:32];
-        rec_q$d[49:49] = ctr_sm2$q[31:31];
+        rec_q$d[31:16] = centre_pipe$sm2_ring_a;
+        rec_q$d[47:32] = centre_pipe$sm2_ring_b;
+        rec_q$d[48:48] = centre_pipe$sm2_ring;
+        rec_q$d[49:49] = centre_pipe$sm2_last;
         rec_push = rec_push_q$q;
         credit_drop = credit_drop_q$q;
         rec = rec_q$q;
@@ -26306,14 +26129,371 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
         rec_keep$20 = keep_sm3$20$q;
         rec_first$20 = first_sm3$20$q;
         if (valid_rst$q) begin
+            rec_push_q$d = 1'b0;
+            credit_drop_q$d = 1'b0;
+            rep_write_en$d = 1'b0;
+        end
+    end
+
+endmodule // fcc_sort_net__filter_k7_668cf05b
+
+
+module fcc_sort_net__filter__centre_pipe_k7_668cf05b(clk,rst,valid,lok,label,col,last,ring,ring_a,ring_b,s1_valid,s1_elig,s1_same_run,sm_valid,sm_elig,sm_same_run,sm_c,sm_col,sm1_elig,sm2_valid,sm2_ring,sm2_last,sm2_ring_a,sm2_ring_b);
+
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  valid;
+    input wire  lok;
+    input wire  [15:0] label;
+    input wire  [11:0] col;
+    input wire  last;
+    input wire  ring;
+    input wire  [15:0] ring_a;
+    input wire  [15:0] ring_b;
+    output reg  s1_valid;
+    output reg  s1_elig;
+    output reg  s1_same_run;
+    output reg  sm_valid;
+    output reg  sm_elig;
+    output reg  sm_same_run;
+    output reg  [15:0] sm_c;
+    output reg  [11:0] sm_col;
+    output reg  sm1_elig;
+    output reg  sm2_valid;
+    output reg  sm2_ring;
+    output reg  sm2_last;
+    output reg  [15:0] sm2_ring_a;
+    output reg  [15:0] sm2_ring_b;
+
+    // Constant declarations
+    localparam  ctr_zero = 33'h0;
+    localparam  ring_zero = 32'h0;
+
+    // Stub signals
+    reg  [15:0] last_label$d;
+    wire  [15:0] last_label$q;
+    reg  last_label$clock;
+    reg  last_label_valid$d;
+    wire  last_label_valid$q;
+    reg  last_label_valid$clock;
+    reg  ctr_s1$clock;
+    reg  [32:0] ctr_s1$d;
+    wire  [32:0] ctr_s1$q;
+    reg  [32:0] ctr_tree$0$d;
+    wire  [32:0] ctr_tree$0$q;
+    reg  ctr_tree$0$clock;
+    reg  [32:0] ctr_tree$1$d;
+    wire  [32:0] ctr_tree$1$q;
+    reg  ctr_tree$1$clock;
+    reg  [32:0] ctr_tree$2$d;
+    wire  [32:0] ctr_tree$2$q;
+    reg  ctr_tree$2$clock;
+    reg  [32:0] ctr_tree$3$d;
+    wire  [32:0] ctr_tree$3$q;
+    reg  ctr_tree$3$clock;
+    reg  ctr_sm$clock;
+    reg  [32:0] ctr_sm$d;
+    wire  [32:0] ctr_sm$q;
+    reg  [32:0] ctr_sm1$d;
+    wire  [32:0] ctr_sm1$q;
+    reg  ctr_sm1$clock;
+    reg  [32:0] ctr_sm2$d;
+    wire  [32:0] ctr_sm2$q;
+    reg  ctr_sm2$clock;
+    reg  [31:0] ring_s1$d;
+    wire  [31:0] ring_s1$q;
+    reg  ring_s1$clock;
+    reg  [31:0] ring_tree$0$d;
+    wire  [31:0] ring_tree$0$q;
+    reg  ring_tree$0$clock;
+    reg  [31:0] ring_tree$1$d;
+    wire  [31:0] ring_tree$1$q;
+    reg  ring_tree$1$clock;
+    reg  [31:0] ring_tree$2$d;
+    wire  [31:0] ring_tree$2$q;
+    reg  ring_tree$2$clock;
+    reg  [31:0] ring_tree$3$d;
+    wire  [31:0] ring_tree$3$q;
+    reg  ring_tree$3$clock;
+    reg  [31:0] ring_sm$d;
+    wire  [31:0] ring_sm$q;
+    reg  ring_sm$clock;
+    reg  [31:0] ring_sm1$d;
+    wire  [31:0] ring_sm1$q;
+    reg  ring_sm1$clock;
+    reg  [31:0] ring_sm2$d;
+    wire  [31:0] ring_sm2$q;
+    reg  ring_sm2$clock;
+    reg  valid_rst$clock;
+    reg  valid_rst$d;
+    wire  valid_rst$q;
+    reg  tree_rst$0$clock;
+    reg  tree_rst$0$d;
+    wire  tree_rst$0$q;
+    reg  tree_rst$1$clock;
+    reg  tree_rst$1$d;
+    wire  tree_rst$1$q;
+    reg  tree_rst$2$clock;
+    reg  tree_rst$2$d;
+    wire  tree_rst$2$q;
+    reg  tree_rst$3$clock;
+    reg  tree_rst$3$d;
+    wire  tree_rst$3$q;
+    reg  tree_rst$4$clock;
+    reg  tree_rst$4$d;
+    wire  tree_rst$4$q;
+    reg  tree_rst$5$clock;
+    reg  tree_rst$5$d;
+    wire  tree_rst$5$q;
+    reg  tree_rst$6$clock;
+    reg  tree_rst$6$d;
+    wire  tree_rst$6$q;
+    reg  tree_rst$7$clock;
+    reg  tree_rst$7$d;
+    wire  tree_rst$7$q;
+
+    // Local signals
+    reg  [32:0] ctr_s0;
+    reg  [31:0] ring_s0;
+
+    // Sub module instances
+    fcc_sort_net__filter__centre_pipe__last_label_k7_668cf05b last_label(
+        .d(last_label$d),
+        .q(last_label$q),
+        .clock(last_label$clock)
+    );
+    fcc_sort_net__filter__centre_pipe__last_label_valid_k7_668cf05b last_label_valid(
+        .d(last_label_valid$d),
+        .q(last_label_valid$q),
+        .clock(last_label_valid$clock)
+    );
+    fcc_sort_net__filter__centre_pipe__ctr_s1_k7_668cf05b ctr_s1(
+        .clock(ctr_s1$clock),
+        .d(ctr_s1$d),
+        .q(ctr_s1$q)
+    );
+    fcc_sort_net__filter__centre_pipe__ctr_tree__0_k7_668cf05b ctr_tree$0(
+        .d(ctr_tree$0$d),
+        .q(ctr_tree$0$q),
+        .clock(ctr_tree$0$clock)
+    );
+    fcc_sort_net__filter__centre_pipe__ctr_tree__1_k7_668cf05b ctr_tree$1(
+        .d(ctr_tree$1$d),
+        .q(ctr_tree$1$q),
+        .clock(ctr_tree$1$clock)
+    );
+    fcc_sort_net__filter__centre_pipe__ctr_tree__2_k7_668cf05b ctr_tree$2(
+        .d(ctr_tree$2$d),
+        .q(ctr_tree$2$q),
+        .clock(ctr_tree$2$clock)
+    );
+    fcc_sort_net__filter__centre_pipe__ctr_tree__3_k7_668cf05b ctr_tree$3(
+        .d(ctr_tree$3$d),
+        .q(ctr_tree$3$q),
+        .clock(ctr_tree$3$clock)
+    );
+    fcc_sort_net__filter__centre_pipe__ctr_sm_k7_668cf05b ctr_sm(
+        .clock(ctr_sm$clock),
+        .d(ctr_sm$d),
+        .q(ctr_sm$q)
+    );
+    fcc_sort_net__filter__centre_pipe__ctr_sm1_k7_668cf05b ctr_sm1(
+        .d(ctr_sm1$d),
+        .q(ctr_sm1$q),
+        .clock(ctr_sm1$clock)
+    );
+    fcc_sort_net__filter__centre_pipe__ctr_sm2_k7_668cf05b ctr_sm2(
+        .d(ctr_sm2$d),
+        .q(ctr_sm2$q),
+        .clock(ctr_sm2$clock)
+    );
+    fcc_sort_net__filter__centre_pipe__ring_s1_k7_668cf05b ring_s1(
+        .d(ring_s1$d),
+        .q(ring_s1$q),
+        .clock(ring_s1$clock)
+    );
+    fcc_sort_net__filter__centre_pipe__ring_tree__0_k7_668cf05b ring_tree$0(
+        .d(ring_tree$0$d),
+        .q(ring_tree$0$q),
+        .clock(ring_tree$0$clock)
+    );
+    fcc_sort_net__filter__centre_pipe__ring_tree__1_k7_668cf05b ring_tree$1(
+        .d(ring_tree$1$d),
+        .q(ring_tree$1$q),
+        .clock(ring_tree$1$clock)
+    );
+    fcc_sort_net__filter__centre_pipe__ring_tree__2_k7_668cf05b ring_tree$2(
+        .d(ring_tree$2$d),
+        .q(ring_tree$2$q),
+        .clock(ring_tree$2$clock)
+    );
+    fcc_sort_net__filter__centre_pipe__ring_tree__3_k7_668cf05b ring_tree$3(
+        .d(ring_tree$3$d),
+        .q(ring_tree$3$q),
+        .clock(ring_tree$3$clock)
+    );
+    fcc_sort_net__filter__centre_pipe__ring_sm_k7_668cf05b ring_sm(
+        .d(ring_sm$d),
+        .q(ring_sm$q),
+        .clock(ring_sm$clock)
+    );
+    fcc_sort_net__filter__centre_pipe__ring_sm1_k7_668cf05b ring_sm1(
+        .d(ring_sm1$d),
+        .q(ring_sm1$q),
+        .clock(ring_sm1$clock)
+    );
+    fcc_sort_net__filter__centre_pipe__ring_sm2_k7_668cf05b ring_sm2(
+        .d(ring_sm2$d),
+        .q(ring_sm2$q),
+        .clock(ring_sm2$clock)
+    );
+    fcc_sort_net__filter__centre_pipe__valid_rst_k7_668cf05b valid_rst(
+        .clock(valid_rst$clock),
+        .d(valid_rst$d),
+        .q(valid_rst$q)
+    );
+    fcc_sort_net__filter__centre_pipe__tree_rst__0_k7_668cf05b tree_rst$0(
+        .clock(tree_rst$0$clock),
+        .d(tree_rst$0$d),
+        .q(tree_rst$0$q)
+    );
+    fcc_sort_net__filter__centre_pipe__tree_rst__1_k7_668cf05b tree_rst$1(
+        .clock(tree_rst$1$clock),
+        .d(tree_rst$1$d),
+        .q(tree_rst$1$q)
+    );
+    fcc_sort_net__filter__centre_pipe__tree_rst__2_k7_668cf05b tree_rst$2(
+        .clock(tree_rst$2$clock),
+        .d(tree_rst$2$d),
+        .q(tree_rst$2$q)
+    );
+    fcc_sort_net__filter__centre_pipe__tree_rst__3_k7_668cf05b tree_rst$3(
+        .clock(tree_rst$3$clock),
+        .d(tree_rst$3$d),
+        .q(tree_rst$3$q)
+    );
+    fcc_sort_net__filter__centre_pipe__tree_rst__4_k7_668cf05b tree_rst$4(
+        .clock(tree_rst$4$clock),
+        .d(tree_rst$4$d),
+        .q(tree_rst$4$q)
+    );
+    fcc_sort_net__filter__centre_pipe__tree_rst__5_k7_668cf05b tree_rst$5(
+        .clock(tree_rst$5$clock),
+        .d(tree_rst$5$d),
+        .q(tree_rst$5$q)
+    );
+    fcc_sort_net__filter__centre_pipe__tree_rst__6_k7_668cf05b tree_rst$6(
+        .clock(tree_rst$6$clock),
+        .d(tree_rst$6$d),
+        .q(tree_rst$6$q)
+    );
+    fcc_sort_net__filter__centre_pipe__tree_rst__7_k7_668cf05b tree_rst$7(
+        .clock(tree_rst$7$clock),
+        .d(tree_rst$7$d),
+        .q(tree_rst$7$q)
+    );
+
+    // Update code
+    always @(*) begin
+        last_label$clock = clk;
+        last_label_valid$clock = clk;
+        ctr_s1$clock = clk;
+        ctr_sm$clock = clk;
+        ctr_sm1$clock = clk;
+        ctr_sm2$clock = clk;
+        ring_s1$clock = clk;
+        ring_sm$clock = clk;
+        ring_sm1$clock = clk;
+        ring_sm2$clock = clk;
+        last_label$d = last_label$q;
+        last_label_valid$d = last_label_valid$q;
+        ctr_s1$d = ctr_s1$q;
+        ctr_sm$d = ctr_sm$q;
+        ctr_sm1$d = ctr_sm1$q;
+        ctr_sm2$d = ctr_sm2$q;
+        ring_s1$d = ring_s1$q;
+        ring_sm$d = ring_sm$q;
+        ring_sm1$d = ring_sm1$q;
+        ring_sm2$d = ring_sm2$q;
+        ctr_tree$0$clock = clk;
+        ring_tree$0$clock = clk;
+        ctr_tree$1$clock = clk;
+        ring_tree$1$clock = clk;
+        ctr_tree$2$clock = clk;
+        ring_tree$2$clock = clk;
+        ctr_tree$3$clock = clk;
+        ring_tree$3$clock = clk;
+        valid_rst$clock = clk;
+        valid_rst$d = rst;
+        tree_rst$0$clock = clk;
+        tree_rst$0$d = rst;
+        tree_rst$1$clock = clk;
+        tree_rst$1$d = rst;
+        tree_rst$2$clock = clk;
+        tree_rst$2$d = rst;
+        tree_rst$3$clock = clk;
+        tree_rst$3$d = rst;
+        tree_rst$4$clock = clk;
+        tree_rst$4$d = rst;
+        tree_rst$5$clock = clk;
+        tree_rst$5$d = rst;
+        tree_rst$6$clock = clk;
+        tree_rst$6$d = rst;
+        tree_rst$7$clock = clk;
+        tree_rst$7$d = rst;
+        ctr_s0[0:0] = valid;
+        ctr_s0[1:1] = valid & lok;
+        ctr_s0[2:2] = last_label_valid$q & (label == last_label$q);
+        ctr_s0[18:3] = label;
+        ctr_s0[30:19] = col;
+        ctr_s0[31:31] = last;
+        ctr_s0[32:32] = ring;
+        ring_s0[15:0] = ring_a;
+        ring_s0[31:16] = ring_b;
+        if (valid & lok) begin
+            last_label$d = label;
+            last_label_valid$d = 1'b1;
+        end
+        if (valid & last) begin
+            last_label_valid$d = 1'b0;
+        end
+        ctr_s1$d = ctr_s0;
+        ctr_tree$0$d = ctr_s1$q;
+        ctr_tree$1$d = ctr_tree$0$q;
+        ctr_tree$2$d = ctr_tree$1$q;
+        ctr_tree$3$d = ctr_tree$2$q;
+        ctr_sm$d = ctr_tree$3$q;
+        ctr_sm1$d = ctr_sm$q;
+        ctr_sm2$d = ctr_sm1$q;
+        ring_s1$d = ring_s0;
+        ring_tree$0$d = ring_s1$q;
+        ring_tree$1$d = ring_tree$0$q;
+        ring_tree$2$d = ring_tree$1$q;
+        ring_tree$3$d = ring_tree$2$q;
+        ring_sm$d = ring_tree$3$q;
+        ring_sm1$d = ring_sm$q;
+        ring_sm2$d = ring_sm1$q;
+        s1_valid = ctr_s1$q[0:0];
+        s1_elig = ctr_s1$q[1:1];
+        s1_same_run = ctr_s1$q[2:2];
+        sm_valid = ctr_sm$q[0:0];
+        sm_elig = ctr_sm$q[1:1];
+        sm_same_run = ctr_sm$q[2:2];
+        sm_c = ctr_sm$q[18:3];
+        sm_col = ctr_sm$q[30:19];
+        sm1_elig = ctr_sm1$q[1:1];
+        sm2_valid = ctr_sm2$q[0:0];
+        sm2_ring = ctr_sm2$q[32:32];
+        sm2_last = ctr_sm2$q[31:31];
+        sm2_ring_a = ring_sm2$q[15:0];
+        sm2_ring_b = ring_sm2$q[31:16];
+        if (valid_rst$q) begin
             last_label_valid$d = 1'b0;
             ctr_s1$d[0:0] = 1'b0;
             ctr_sm$d[0:0] = 1'b0;
             ctr_sm1$d[0:0] = 1'b0;
             ctr_sm2$d[0:0] = 1'b0;
-            rec_push_q$d = 1'b0;
-            credit_drop_q$d = 1'b0;
-            rep_write_en$d = 1'b0;
         end
         if (tree_rst$0$q) begin
             ctr_tree$0$d = ctr_zero;
@@ -26341,7 +26521,542 @@ module fcc_sort_net__filter_k7_668cf05b(clk,rst,centre,hit$0,hit$1,hit$2,hit$3,h
         end
     end
 
-endmodule // fcc_sort_net__filter_k7_668cf05b
+endmodule // fcc_sort_net__filter__centre_pipe_k7_668cf05b
+
+
+module fcc_sort_net__filter__centre_pipe__ctr_s1_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+
+    // Update code (custom)
+    (* max_fanout = 64 *) reg [32:0] held;
+    initial begin
+        held = 33'h0;
+    end
+    always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_sort_net__filter__centre_pipe__ctr_s1_k7_668cf05b
+
+
+module fcc_sort_net__filter__centre_pipe__ctr_sm_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+
+    // Update code (custom)
+    (* max_fanout = 64 *) reg [32:0] held;
+    initial begin
+        held = 33'h0;
+    end
+    always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_sort_net__filter__centre_pipe__ctr_sm_k7_668cf05b
+
+
+module fcc_sort_net__filter__centre_pipe__ctr_sm1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__centre_pipe__ctr_sm1_k7_668cf05b
+
+
+module fcc_sort_net__filter__centre_pipe__ctr_sm2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__centre_pipe__ctr_sm2_k7_668cf05b
+
+
+module fcc_sort_net__filter__centre_pipe__ctr_tree__0_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__centre_pipe__ctr_tree__0_k7_668cf05b
+
+
+module fcc_sort_net__filter__centre_pipe__ctr_tree__1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__centre_pipe__ctr_tree__1_k7_668cf05b
+
+
+module fcc_sort_net__filter__centre_pipe__ctr_tree__2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__centre_pipe__ctr_tree__2_k7_668cf05b
+
+
+module fcc_sort_net__filter__centre_pipe__ctr_tree__3_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [32:0] d;
+    output reg  [32:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 33'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__centre_pipe__ctr_tree__3_k7_668cf05b
+
+
+module fcc_sort_net__filter__centre_pipe__last_label_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__centre_pipe__last_label_k7_668cf05b
+
+
+module fcc_sort_net__filter__centre_pipe__last_label_valid_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__centre_pipe__last_label_valid_k7_668cf05b
+
+
+module fcc_sort_net__filter__centre_pipe__ring_s1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__centre_pipe__ring_s1_k7_668cf05b
+
+
+module fcc_sort_net__filter__centre_pipe__ring_sm_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__centre_pipe__ring_sm_k7_668cf05b
+
+
+module fcc_sort_net__filter__centre_pipe__ring_sm1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__centre_pipe__ring_sm1_k7_668cf05b
+
+
+module fcc_sort_net__filter__centre_pipe__ring_sm2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__centre_pipe__ring_sm2_k7_668cf05b
+
+
+module fcc_sort_net__filter__centre_pipe__ring_tree__0_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__centre_pipe__ring_tree__0_k7_668cf05b
+
+
+module fcc_sort_net__filter__centre_pipe__ring_tree__1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__centre_pipe__ring_tree__1_k7_668cf05b
+
+
+module fcc_sort_net__filter__centre_pipe__ring_tree__2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__centre_pipe__ring_tree__2_k7_668cf05b
+
+
+module fcc_sort_net__filter__centre_pipe__ring_tree__3_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [31:0] d;
+    output reg  [31:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 32'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_sort_net__filter__centre_pipe__ring_tree__3_k7_668cf05b
+
+
+module fcc_sort_net__filter__centre_pipe__tree_rst__0_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_sort_net__filter__centre_pipe__tree_rst__0_k7_668cf05b
+
+
+module fcc_sort_net__filter__centre_pipe__tree_rst__1_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_sort_net__filter__centre_pipe__tree_rst__1_k7_668cf05b
+
+
+module fcc_sort_net__filter__centre_pipe__tree_rst__2_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_sort_net__filter__centre_pipe__tree_rst__2_k7_668cf05b
+
+
+module fcc_sort_net__filter__centre_pipe__tree_rst__3_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_sort_net__filter__centre_pipe__tree_rst__3_k7_668cf05b
+
+
+module fcc_sort_net__filter__centre_pipe__tree_rst__4_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_sort_net__filter__centre_pipe__tree_rst__4_k7_668cf05b
+
+
+module fcc_sort_net__filter__centre_pipe__tree_rst__5_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_sort_net__filter__centre_pipe__tree_rst__5_k7_668cf05b
+
+
+module fcc_sort_net__filter__centre_pipe__tree_rst__6_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_sort_net__filter__centre_pipe__tree_rst__6_k7_668cf05b
+
+
+module fcc_sort_net__filter__centre_pipe__tree_rst__7_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_sort_net__filter__centre_pipe__tree_rst__7_k7_668cf05b
+
+
+module fcc_sort_net__filter__centre_pipe__valid_rst_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_sort_net__filter__centre_pipe__valid_rst_k7_668cf05b
 
 
 module fcc_sort_net__filter__credit_drop_q_k7_668cf05b(d,q,clock);
@@ -26361,162 +27076,6 @@ module fcc_sort_net__filter__credit_drop_q_k7_668cf05b(d,q,clock);
     end
 
 endmodule // fcc_sort_net__filter__credit_drop_q_k7_668cf05b
-
-
-module fcc_sort_net__filter__ctr_s1_k7_668cf05b(clock,d,q);
-
-    // Module arguments
-    input wire  clock;
-    input wire  [32:0] d;
-    output reg  [32:0] q;
-
-    // Update code (custom)
-    (* max_fanout = 64 *) reg [32:0] held;
-    initial begin
-        held = 33'h0;
-    end
-    always @(posedge clock) begin
-        held <= d;
-    end
-    always @(*) begin
-        q = held;
-    end
-endmodule // fcc_sort_net__filter__ctr_s1_k7_668cf05b
-
-
-module fcc_sort_net__filter__ctr_sm_k7_668cf05b(clock,d,q);
-
-    // Module arguments
-    input wire  clock;
-    input wire  [32:0] d;
-    output reg  [32:0] q;
-
-    // Update code (custom)
-    (* max_fanout = 64 *) reg [32:0] held;
-    initial begin
-        held = 33'h0;
-    end
-    always @(posedge clock) begin
-        held <= d;
-    end
-    always @(*) begin
-        q = held;
-    end
-endmodule // fcc_sort_net__filter__ctr_sm_k7_668cf05b
-
-
-module fcc_sort_net__filter__ctr_sm1_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [32:0] d;
-    output reg  [32:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 33'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__filter__ctr_sm1_k7_668cf05b
-
-
-module fcc_sort_net__filter__ctr_sm2_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [32:0] d;
-    output reg  [32:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 33'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__filter__ctr_sm2_k7_668cf05b
-
-
-module fcc_sort_net__filter__ctr_tree__0_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [32:0] d;
-    output reg  [32:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 33'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__filter__ctr_tree__0_k7_668cf05b
-
-
-module fcc_sort_net__filter__ctr_tree__1_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [32:0] d;
-    output reg  [32:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 33'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__filter__ctr_tree__1_k7_668cf05b
-
-
-module fcc_sort_net__filter__ctr_tree__2_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [32:0] d;
-    output reg  [32:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 33'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__filter__ctr_tree__2_k7_668cf05b
-
-
-module fcc_sort_net__filter__ctr_tree__3_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [32:0] d;
-    output reg  [32:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 33'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__filter__ctr_tree__3_k7_668cf05b
 
 
 module fcc_sort_net__filter__first_sm3__0_k7_668cf05b(d,q,clock);
@@ -32859,44 +33418,6 @@ module fcc_sort_net__filter__known_mask__known_line__99_k7_668cf05b(d,q,clock);
     end
 
 endmodule // fcc_sort_net__filter__known_mask__known_line__99_k7_668cf05b
-
-
-module fcc_sort_net__filter__last_label_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__filter__last_label_k7_668cf05b
-
-
-module fcc_sort_net__filter__last_label_valid_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__filter__last_label_valid_k7_668cf05b
 
 
 module fcc_sort_net__filter__later_min__0_k7_668cf05b(d,q,clock);
@@ -53094,158 +53615,6 @@ module fcc_sort_net__filter__rep_write_value_k7_668cf05b(d,q,clock);
 endmodule // fcc_sort_net__filter__rep_write_value_k7_668cf05b
 
 
-module fcc_sort_net__filter__ring_s1_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__filter__ring_s1_k7_668cf05b
-
-
-module fcc_sort_net__filter__ring_sm_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__filter__ring_sm_k7_668cf05b
-
-
-module fcc_sort_net__filter__ring_sm1_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__filter__ring_sm1_k7_668cf05b
-
-
-module fcc_sort_net__filter__ring_sm2_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__filter__ring_sm2_k7_668cf05b
-
-
-module fcc_sort_net__filter__ring_tree__0_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__filter__ring_tree__0_k7_668cf05b
-
-
-module fcc_sort_net__filter__ring_tree__1_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__filter__ring_tree__1_k7_668cf05b
-
-
-module fcc_sort_net__filter__ring_tree__2_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__filter__ring_tree__2_k7_668cf05b
-
-
-module fcc_sort_net__filter__ring_tree__3_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [31:0] d;
-    output reg  [31:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 32'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_sort_net__filter__ring_tree__3_k7_668cf05b
-
-
 module fcc_sort_net__filter__run_rep_k7_668cf05b(d,q,clock);
 
     // Module arguments
@@ -53316,174 +53685,6 @@ module fcc_sort_net__filter__run_rep_sm2_k7_668cf05b(d,q,clock);
     end
 
 endmodule // fcc_sort_net__filter__run_rep_sm2_k7_668cf05b
-
-
-module fcc_sort_net__filter__tree_rst__0_k7_668cf05b(clock,d,q);
-
-    // Module arguments
-    input wire  clock;
-    input wire  d;
-    output reg  q;
-
-    // Update code (custom)
-    (* keep = "true" *) reg held;
-    initial begin
-        held = 1'h0;
-    end
-    (* keep = "true" *) always @(posedge clock) begin
-        held <= d;
-    end
-    always @(*) begin
-        q = held;
-    end
-endmodule // fcc_sort_net__filter__tree_rst__0_k7_668cf05b
-
-
-module fcc_sort_net__filter__tree_rst__1_k7_668cf05b(clock,d,q);
-
-    // Module arguments
-    input wire  clock;
-    input wire  d;
-    output reg  q;
-
-    // Update code (custom)
-    (* keep = "true" *) reg held;
-    initial begin
-        held = 1'h0;
-    end
-    (* keep = "true" *) always @(posedge clock) begin
-        held <= d;
-    end
-    always @(*) begin
-        q = held;
-    end
-endmodule // fcc_sort_net__filter__tree_rst__1_k7_668cf05b
-
-
-module fcc_sort_net__filter__tree_rst__2_k7_668cf05b(clock,d,q);
-
-    // Module arguments
-    input wire  clock;
-    input wire  d;
-    output reg  q;
-
-    // Update code (custom)
-    (* keep = "true" *) reg held;
-    initial begin
-        held = 1'h0;
-    end
-    (* keep = "true" *) always @(posedge clock) begin
-        held <= d;
-    end
-    always @(*) begin
-        q = held;
-    end
-endmodule // fcc_sort_net__filter__tree_rst__2_k7_668cf05b
-
-
-module fcc_sort_net__filter__tree_rst__3_k7_668cf05b(clock,d,q);
-
-    // Module arguments
-    input wire  clock;
-    input wire  d;
-    output reg  q;
-
-    // Update code (custom)
-    (* keep = "true" *) reg held;
-    initial begin
-        held = 1'h0;
-    end
-    (* keep = "true" *) always @(posedge clock) begin
-        held <= d;
-    end
-    always @(*) begin
-        q = held;
-    end
-endmodule // fcc_sort_net__filter__tree_rst__3_k7_668cf05b
-
-
-module fcc_sort_net__filter__tree_rst__4_k7_668cf05b(clock,d,q);
-
-    // Module arguments
-    input wire  clock;
-    input wire  d;
-    output reg  q;
-
-    // Update code (custom)
-    (* keep = "true" *) reg held;
-    initial begin
-        held = 1'h0;
-    end
-    (* keep = "true" *) always @(posedge clock) begin
-        held <= d;
-    end
-    always @(*) begin
-        q = held;
-    end
-endmodule // fcc_sort_net__filter__tree_rst__4_k7_668cf05b
-
-
-module fcc_sort_net__filter__tree_rst__5_k7_668cf05b(clock,d,q);
-
-    // Module arguments
-    input wire  clock;
-    input wire  d;
-    output reg  q;
-
-    // Update code (custom)
-    (* keep = "true" *) reg held;
-    initial begin
-        held = 1'h0;
-    end
-    (* keep = "true" *) always @(posedge clock) begin
-        held <= d;
-    end
-    always @(*) begin
-        q = held;
-    end
-endmodule // fcc_sort_net__filter__tree_rst__5_k7_668cf05b
-
-
-module fcc_sort_net__filter__tree_rst__6_k7_668cf05b(clock,d,q);
-
-    // Module arguments
-    input wire  clock;
-    input wire  d;
-    output reg  q;
-
-    // Update code (custom)
-    (* keep = "true" *) reg held;
-    initial begin
-        held = 1'h0;
-    end
-    (* keep = "true" *) always @(posedge clock) begin
-        held <= d;
-    end
-    always @(*) begin
-        q = held;
-    end
-endmodule // fcc_sort_net__filter__tree_rst__6_k7_668cf05b
-
-
-module fcc_sort_net__filter__tree_rst__7_k7_668cf05b(clock,d,q);
-
-    // Module arguments
-    input wire  clock;
-    input wire  d;
-    output reg  q;
-
-    // Update code (custom)
-    (* keep = "true" *) reg held;
-    initial begin
-        held = 1'h0;
-    end
-    (* keep = "true" *) always @(posedge clock) begin
-        held <= d;
-    end
-    always @(*) begin
-        q = held;
-    end
-endmodule // fcc_sort_net__filter__tree_rst__7_k7_668cf05b
 
 
 module fcc_sort_net__filter__valid_rst_k7_668cf05b(clock,d,q);
@@ -60421,25 +60622,6 @@ module fcc_window_k7_668cf05b(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$
     input wire  [15:0] rep_wdata;
 
     // Constant declarations
-    localparam  col_lo$0 = 12'h3;
-    localparam  col_lo$1 = 12'h2;
-    localparam  col_lo$2 = 12'h1;
-    localparam  hi_off$0 = 12'h1;
-    localparam  hi_off$1 = 12'h2;
-    localparam  hi_off$2 = 12'h3;
-    localparam  row_lo$0 = 8'h3;
-    localparam  row_lo$1 = 8'h2;
-    localparam  row_lo$2 = 8'h1;
-    localparam  row_k$0 = 4'h7;
-    localparam  row_k$1 = 4'h5;
-    localparam  row_k$2 = 4'h3;
-    localparam  col_k$0 = 4'h7;
-    localparam  col_k$1 = 4'h5;
-    localparam  col_k$2 = 4'h3;
-    localparam  col_k$3 = 4'h1;
-    localparam  col_k$4 = 4'h3;
-    localparam  col_k$5 = 4'h5;
-    localparam  col_k$6 = 4'h7;
     localparam  zero8 = 8'h0;
     localparam  zero12 = 12'h0;
 
@@ -60825,240 +61007,50 @@ module fcc_window_k7_668cf05b(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$
     reg  lb_write_addr$2$clock;
     reg  [11:0] lb_write_addr$2$d;
     wire  [11:0] lb_write_addr$2$q;
-    reg  rv_valid$0$d;
-    wire  rv_valid$0$q;
-    reg  rv_valid$0$clock;
-    reg  rv_valid$1$d;
-    wire  rv_valid$1$q;
-    reg  rv_valid$1$clock;
-    reg  rv_valid$2$d;
-    wire  rv_valid$2$q;
-    reg  rv_valid$2$clock;
-    reg  rv_valid$3$d;
-    wire  rv_valid$3$q;
-    reg  rv_valid$3$clock;
-    reg  rv_valid$4$d;
-    wire  rv_valid$4$q;
-    reg  rv_valid$4$clock;
-    reg  rv_valid$5$d;
-    wire  rv_valid$5$q;
-    reg  rv_valid$5$clock;
-    reg  [11:0] rv_col$0$d;
-    wire  [11:0] rv_col$0$q;
-    reg  rv_col$0$clock;
-    reg  [11:0] rv_col$1$d;
-    wire  [11:0] rv_col$1$q;
-    reg  rv_col$1$clock;
-    reg  [11:0] rv_col$2$d;
-    wire  [11:0] rv_col$2$q;
-    reg  rv_col$2$clock;
-    reg  [11:0] rv_col$3$d;
-    wire  [11:0] rv_col$3$q;
-    reg  rv_col$3$clock;
-    reg  [11:0] rv_col$4$d;
-    wire  [11:0] rv_col$4$q;
-    reg  rv_col$4$clock;
-    reg  [11:0] rv_col$5$d;
-    wire  [11:0] rv_col$5$q;
-    reg  rv_col$5$clock;
-    reg  [11:0] rv_rdcol$0$d;
-    wire  [11:0] rv_rdcol$0$q;
-    reg  rv_rdcol$0$clock;
-    reg  [11:0] rv_rdcol$1$d;
-    wire  [11:0] rv_rdcol$1$q;
-    reg  rv_rdcol$1$clock;
-    reg  [11:0] rv_rdcol$2$d;
-    wire  [11:0] rv_rdcol$2$q;
-    reg  rv_rdcol$2$clock;
-    reg  [11:0] rv_rdcol$3$d;
-    wire  [11:0] rv_rdcol$3$q;
-    reg  rv_rdcol$3$clock;
-    reg  rlb$0$clk;
-    reg  rlb$0$read_en;
-    reg  [11:0] rlb$0$read_addr;
-    wire  [15:0] rlb$0$read_data;
-    reg  rlb$0$write_en;
-    reg  [11:0] rlb$0$write_addr;
-    reg  [15:0] rlb$0$write_data;
-    reg  rlb$1$clk;
-    reg  rlb$1$read_en;
-    reg  [11:0] rlb$1$read_addr;
-    wire  [15:0] rlb$1$read_data;
-    reg  rlb$1$write_en;
-    reg  [11:0] rlb$1$write_addr;
-    reg  [15:0] rlb$1$write_data;
-    reg  rlb$2$clk;
-    reg  rlb$2$read_en;
-    reg  [11:0] rlb$2$read_addr;
-    wire  [15:0] rlb$2$read_data;
-    reg  rlb$2$write_en;
-    reg  [11:0] rlb$2$write_addr;
-    reg  [15:0] rlb$2$write_data;
-    reg  [15:0] rwin$0$d;
-    wire  [15:0] rwin$0$q;
-    reg  rwin$0$clock;
-    reg  [15:0] rwin$1$d;
-    wire  [15:0] rwin$1$q;
-    reg  rwin$1$clock;
-    reg  [15:0] rwin$2$d;
-    wire  [15:0] rwin$2$q;
-    reg  rwin$2$clock;
-    reg  [15:0] rwin$3$d;
-    wire  [15:0] rwin$3$q;
-    reg  rwin$3$clock;
-    reg  [15:0] rwin$4$d;
-    wire  [15:0] rwin$4$q;
-    reg  rwin$4$clock;
-    reg  [15:0] rwin$5$d;
-    wire  [15:0] rwin$5$q;
-    reg  rwin$5$clock;
-    reg  [15:0] rwin$6$d;
-    wire  [15:0] rwin$6$q;
-    reg  rwin$6$clock;
-    reg  [15:0] rwin$7$d;
-    wire  [15:0] rwin$7$q;
-    reg  rwin$7$clock;
-    reg  [15:0] rwin$8$d;
-    wire  [15:0] rwin$8$q;
-    reg  rwin$8$clock;
-    reg  [15:0] rwin$9$d;
-    wire  [15:0] rwin$9$q;
-    reg  rwin$9$clock;
-    reg  [15:0] rwin$10$d;
-    wire  [15:0] rwin$10$q;
-    reg  rwin$10$clock;
-    reg  [15:0] rwin$11$d;
-    wire  [15:0] rwin$11$q;
-    reg  rwin$11$clock;
-    reg  [15:0] rwin$12$d;
-    wire  [15:0] rwin$12$q;
-    reg  rwin$12$clock;
-    reg  [15:0] rwin$13$d;
-    wire  [15:0] rwin$13$q;
-    reg  rwin$13$clock;
-    reg  [15:0] rwin$14$d;
-    wire  [15:0] rwin$14$q;
-    reg  rwin$14$clock;
-    reg  [15:0] rwin$15$d;
-    wire  [15:0] rwin$15$q;
-    reg  rwin$15$clock;
-    reg  [15:0] rwin$16$d;
-    wire  [15:0] rwin$16$q;
-    reg  rwin$16$clock;
-    reg  [15:0] rwin$17$d;
-    wire  [15:0] rwin$17$q;
-    reg  rwin$17$clock;
-    reg  [15:0] rwin$18$d;
-    wire  [15:0] rwin$18$q;
-    reg  rwin$18$clock;
-    reg  [15:0] rwin$19$d;
-    wire  [15:0] rwin$19$q;
-    reg  rwin$19$clock;
-    reg  [15:0] rwin$20$d;
-    wire  [15:0] rwin$20$q;
-    reg  rwin$20$clock;
-    reg  rep_shift_en$0$clock;
-    reg  rep_shift_en$0$d;
-    wire  rep_shift_en$0$q;
-    reg  rep_shift_en$1$clock;
-    reg  rep_shift_en$1$d;
-    wire  rep_shift_en$1$q;
-    reg  rep_shift_en$2$clock;
-    reg  rep_shift_en$2$d;
-    wire  rep_shift_en$2$q;
-    reg  rep_shift_en$3$clock;
-    reg  rep_shift_en$3$d;
-    wire  rep_shift_en$3$q;
-    reg  rep_shift_en$4$clock;
-    reg  rep_shift_en$4$d;
-    wire  rep_shift_en$4$q;
-    reg  rep_shift_en$5$clock;
-    reg  rep_shift_en$5$d;
-    wire  rep_shift_en$5$q;
-    reg  rep_shift_en$6$clock;
-    reg  rep_shift_en$6$d;
-    wire  rep_shift_en$6$q;
-    reg  rep_shift_en$7$clock;
-    reg  rep_shift_en$7$d;
-    wire  rep_shift_en$7$q;
-    reg  rep_shift_en$8$clock;
-    reg  rep_shift_en$8$d;
-    wire  rep_shift_en$8$q;
-    reg  rep_shift_en$9$clock;
-    reg  rep_shift_en$9$d;
-    wire  rep_shift_en$9$q;
-    reg  rep_shift_en$10$clock;
-    reg  rep_shift_en$10$d;
-    wire  rep_shift_en$10$q;
-    reg  rep_shift_en$11$clock;
-    reg  rep_shift_en$11$d;
-    wire  rep_shift_en$11$q;
-    reg  rep_shift_en$12$clock;
-    reg  rep_shift_en$12$d;
-    wire  rep_shift_en$12$q;
-    reg  rep_shift_en$13$clock;
-    reg  rep_shift_en$13$d;
-    wire  rep_shift_en$13$q;
-    reg  rep_shift_en$14$clock;
-    reg  rep_shift_en$14$d;
-    wire  rep_shift_en$14$q;
-    reg  rep_shift_en$15$clock;
-    reg  rep_shift_en$15$d;
-    wire  rep_shift_en$15$q;
-    reg  rep_shift_en$16$clock;
-    reg  rep_shift_en$16$d;
-    wire  rep_shift_en$16$q;
-    reg  rep_shift_en$17$clock;
-    reg  rep_shift_en$17$d;
-    wire  rep_shift_en$17$q;
-    reg  rep_shift_en$18$clock;
-    reg  rep_shift_en$18$d;
-    wire  rep_shift_en$18$q;
-    reg  rep_shift_en$19$clock;
-    reg  rep_shift_en$19$d;
-    wire  rep_shift_en$19$q;
-    reg  rep_shift_en$20$clock;
-    reg  rep_shift_en$20$d;
-    wire  rep_shift_en$20$q;
-    reg  row_in$0$d;
-    wire  row_in$0$q;
-    reg  row_in$0$clock;
-    reg  row_in$1$d;
-    wire  row_in$1$q;
-    reg  row_in$1$clock;
-    reg  row_in$2$d;
-    wire  row_in$2$q;
-    reg  row_in$2$clock;
-    reg  col_in$0$d;
-    wire  col_in$0$q;
-    reg  col_in$0$clock;
-    reg  col_in$1$d;
-    wire  col_in$1$q;
-    reg  col_in$1$clock;
-    reg  col_in$2$d;
-    wire  col_in$2$q;
-    reg  col_in$2$clock;
-    reg  col_in$3$d;
-    wire  col_in$3$q;
-    reg  col_in$3$clock;
-    reg  col_in$4$d;
-    wire  col_in$4$q;
-    reg  col_in$4$clock;
-    reg  col_in$5$d;
-    wire  col_in$5$q;
-    reg  col_in$5$clock;
-    reg  col_in$6$d;
-    wire  col_in$6$q;
-    reg  col_in$6$clock;
-    reg  [11:0] col_hi$0$d;
-    wire  [11:0] col_hi$0$q;
-    reg  col_hi$0$clock;
-    reg  [11:0] col_hi$1$d;
-    wire  [11:0] col_hi$1$q;
-    reg  col_hi$1$clock;
-    reg  [11:0] col_hi$2$d;
-    wire  [11:0] col_hi$2$q;
-    reg  col_hi$2$clock;
+    reg  rep_win$clk;
+    reg  rep_win$rst;
+    reg  rep_win$valid;
+    reg  [11:0] rep_win$col;
+    reg  [11:0] rep_win$rdcol;
+    reg  rep_win$rep_we;
+    reg  [11:0] rep_win$rep_waddr;
+    reg  [15:0] rep_win$rep_wdata;
+    wire  [15:0] rep_win$ent_rep$0;
+    wire  [15:0] rep_win$ent_rep$1;
+    wire  [15:0] rep_win$ent_rep$2;
+    wire  [15:0] rep_win$ent_rep$3;
+    wire  [15:0] rep_win$ent_rep$4;
+    wire  [15:0] rep_win$ent_rep$5;
+    wire  [15:0] rep_win$ent_rep$6;
+    wire  [15:0] rep_win$ent_rep$7;
+    wire  [15:0] rep_win$ent_rep$8;
+    wire  [15:0] rep_win$ent_rep$9;
+    wire  [15:0] rep_win$ent_rep$10;
+    wire  [15:0] rep_win$ent_rep$11;
+    wire  [15:0] rep_win$ent_rep$12;
+    wire  [15:0] rep_win$ent_rep$13;
+    wire  [15:0] rep_win$ent_rep$14;
+    wire  [15:0] rep_win$ent_rep$15;
+    wire  [15:0] rep_win$ent_rep$16;
+    wire  [15:0] rep_win$ent_rep$17;
+    wire  [15:0] rep_win$ent_rep$18;
+    wire  [15:0] rep_win$ent_rep$19;
+    wire  [15:0] rep_win$ent_rep$20;
+    reg  edge_mask$clk;
+    reg  [7:0] edge_mask$row;
+    reg  [11:0] edge_mask$col;
+    reg  [11:0] edge_mask$last_col;
+    reg  [3:0] edge_mask$run_k;
+    wire  edge_mask$row_in$0;
+    wire  edge_mask$row_in$1;
+    wire  edge_mask$row_in$2;
+    wire  edge_mask$col_in$0;
+    wire  edge_mask$col_in$1;
+    wire  edge_mask$col_in$2;
+    wire  edge_mask$col_in$3;
+    wire  edge_mask$col_in$4;
+    wire  edge_mask$col_in$5;
+    wire  edge_mask$col_in$6;
 
     // Local signals
     reg  view_lok$0;
@@ -61145,27 +61137,6 @@ module fcc_window_k7_668cf05b(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$
     reg  [15:0] view_z$18;
     reg  [15:0] view_z$19;
     reg  [15:0] view_z$20;
-    reg  [15:0] rview$0;
-    reg  [15:0] rview$1;
-    reg  [15:0] rview$2;
-    reg  [15:0] rview$3;
-    reg  [15:0] rview$4;
-    reg  [15:0] rview$5;
-    reg  [15:0] rview$6;
-    reg  [15:0] rview$7;
-    reg  [15:0] rview$8;
-    reg  [15:0] rview$9;
-    reg  [15:0] rview$10;
-    reg  [15:0] rview$11;
-    reg  [15:0] rview$12;
-    reg  [15:0] rview$13;
-    reg  [15:0] rview$14;
-    reg  [15:0] rview$15;
-    reg  [15:0] rview$16;
-    reg  [15:0] rview$17;
-    reg  [15:0] rview$18;
-    reg  [15:0] rview$19;
-    reg  [15:0] rview$20;
 
     // Sub module instances
     fcc_window__lbs__0_k7_668cf05b lbs$0(
@@ -61783,387 +61754,53 @@ module fcc_window_k7_668cf05b(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$
         .d(lb_write_addr$2$d),
         .q(lb_write_addr$2$q)
     );
-    fcc_window__rv_valid__0_k7_668cf05b rv_valid$0(
-        .d(rv_valid$0$d),
-        .q(rv_valid$0$q),
-        .clock(rv_valid$0$clock)
-    );
-    fcc_window__rv_valid__1_k7_668cf05b rv_valid$1(
-        .d(rv_valid$1$d),
-        .q(rv_valid$1$q),
-        .clock(rv_valid$1$clock)
-    );
-    fcc_window__rv_valid__2_k7_668cf05b rv_valid$2(
-        .d(rv_valid$2$d),
-        .q(rv_valid$2$q),
-        .clock(rv_valid$2$clock)
-    );
-    fcc_window__rv_valid__3_k7_668cf05b rv_valid$3(
-        .d(rv_valid$3$d),
-        .q(rv_valid$3$q),
-        .clock(rv_valid$3$clock)
-    );
-    fcc_window__rv_valid__4_k7_668cf05b rv_valid$4(
-        .d(rv_valid$4$d),
-        .q(rv_valid$4$q),
-        .clock(rv_valid$4$clock)
-    );
-    fcc_window__rv_valid__5_k7_668cf05b rv_valid$5(
-        .d(rv_valid$5$d),
-        .q(rv_valid$5$q),
-        .clock(rv_valid$5$clock)
-    );
-    fcc_window__rv_col__0_k7_668cf05b rv_col$0(
-        .d(rv_col$0$d),
-        .q(rv_col$0$q),
-        .clock(rv_col$0$clock)
-    );
-    fcc_window__rv_col__1_k7_668cf05b rv_col$1(
-        .d(rv_col$1$d),
-        .q(rv_col$1$q),
-        .clock(rv_col$1$clock)
-    );
-    fcc_window__rv_col__2_k7_668cf05b rv_col$2(
-        .d(rv_col$2$d),
-        .q(rv_col$2$q),
-        .clock(rv_col$2$clock)
-    );
-    fcc_window__rv_col__3_k7_668cf05b rv_col$3(
-        .d(rv_col$3$d),
-        .q(rv_col$3$q),
-        .clock(rv_col$3$clock)
-    );
-    fcc_window__rv_col__4_k7_668cf05b rv_col$4(
-        .d(rv_col$4$d),
-        .q(rv_col$4$q),
-        .clock(rv_col$4$clock)
-    );
-    fcc_window__rv_col__5_k7_668cf05b rv_col$5(
-        .d(rv_col$5$d),
-        .q(rv_col$5$q),
-        .clock(rv_col$5$clock)
-    );
-    fcc_window__rv_rdcol__0_k7_668cf05b rv_rdcol$0(
-        .d(rv_rdcol$0$d),
-        .q(rv_rdcol$0$q),
-        .clock(rv_rdcol$0$clock)
-    );
-    fcc_window__rv_rdcol__1_k7_668cf05b rv_rdcol$1(
-        .d(rv_rdcol$1$d),
-        .q(rv_rdcol$1$q),
-        .clock(rv_rdcol$1$clock)
-    );
-    fcc_window__rv_rdcol__2_k7_668cf05b rv_rdcol$2(
-        .d(rv_rdcol$2$d),
-        .q(rv_rdcol$2$q),
-        .clock(rv_rdcol$2$clock)
-    );
-    fcc_window__rv_rdcol__3_k7_668cf05b rv_rdcol$3(
-        .d(rv_rdcol$3$d),
-        .q(rv_rdcol$3$q),
-        .clock(rv_rdcol$3$clock)
-    );
-    fcc_window__rlb__0_k7_668cf05b rlb$0(
-        .clk(rlb$0$clk),
-        .read_en(rlb$0$read_en),
-        .read_addr(rlb$0$read_addr),
-        .read_data(rlb$0$read_data),
-        .write_en(rlb$0$write_en),
-        .write_addr(rlb$0$write_addr),
-        .write_data(rlb$0$write_data)
-    );
-    fcc_window__rlb__1_k7_668cf05b rlb$1(
-        .clk(rlb$1$clk),
-        .read_en(rlb$1$read_en),
-        .read_addr(rlb$1$read_addr),
-        .read_data(rlb$1$read_data),
-        .write_en(rlb$1$write_en),
-        .write_addr(rlb$1$write_addr),
-        .write_data(rlb$1$write_data)
-    );
-    fcc_window__rlb__2_k7_668cf05b rlb$2(
-        .clk(rlb$2$clk),
-        .read_en(rlb$2$read_en),
-        .read_addr(rlb$2$read_addr),
-        .read_data(rlb$2$read_data),
-        .write_en(rlb$2$write_en),
-        .write_addr(rlb$2$write_addr),
-        .write_data(rlb$2$write_data)
-    );
-    fcc_window__rwin__0_k7_668cf05b rwin$0(
-        .d(rwin$0$d),
-        .q(rwin$0$q),
-        .clock(rwin$0$clock)
-    );
-    fcc_window__rwin__1_k7_668cf05b rwin$1(
-        .d(rwin$1$d),
-        .q(rwin$1$q),
-        .clock(rwin$1$clock)
-    );
-    fcc_window__rwin__2_k7_668cf05b rwin$2(
-        .d(rwin$2$d),
-        .q(rwin$2$q),
-        .clock(rwin$2$clock)
-    );
-    fcc_window__rwin__3_k7_668cf05b rwin$3(
-        .d(rwin$3$d),
-        .q(rwin$3$q),
-        .clock(rwin$3$clock)
-    );
-    fcc_window__rwin__4_k7_668cf05b rwin$4(
-        .d(rwin$4$d),
-        .q(rwin$4$q),
-        .clock(rwin$4$clock)
-    );
-    fcc_window__rwin__5_k7_668cf05b rwin$5(
-        .d(rwin$5$d),
-        .q(rwin$5$q),
-        .clock(rwin$5$clock)
-    );
-    fcc_window__rwin__6_k7_668cf05b rwin$6(
-        .d(rwin$6$d),
-        .q(rwin$6$q),
-        .clock(rwin$6$clock)
-    );
-    fcc_window__rwin__7_k7_668cf05b rwin$7(
-        .d(rwin$7$d),
-        .q(rwin$7$q),
-        .clock(rwin$7$clock)
-    );
-    fcc_window__rwin__8_k7_668cf05b rwin$8(
-        .d(rwin$8$d),
-        .q(rwin$8$q),
-        .clock(rwin$8$clock)
-    );
-    fcc_window__rwin__9_k7_668cf05b rwin$9(
-        .d(rwin$9$d),
-        .q(rwin$9$q),
-        .clock(rwin$9$clock)
-    );
-    fcc_window__rwin__10_k7_668cf05b rwin$10(
-        .d(rwin$10$d),
-        .q(rwin$10$q),
-        .clock(rwin$10$clock)
-    );
-    fcc_window__rwin__11_k7_668cf05b rwin$11(
-        .d(rwin$11$d),
-        .q(rwin$11$q),
-        .clock(rwin$11$clock)
-    );
-    fcc_window__rwin__12_k7_668cf05b rwin$12(
-        .d(rwin$12$d),
-        .q(rwin$12$q),
-        .clock(rwin$12$clock)
-    );
-    fcc_window__rwin__13_k7_668cf05b rwin$13(
-        .d(rwin$13$d),
-        .q(rwin$13$q),
-        .clock(rwin$13$clock)
-    );
-    fcc_window__rwin__14_k7_668cf05b rwin$14(
-        .d(rwin$14$d),
-        .q(rwin$14$q),
-        .clock(rwin$14$clock)
-    );
-    fcc_window__rwin__15_k7_668cf05b rwin$15(
-        .d(rwin$15$d),
-        .q(rwin$15$q),
-        .clock(rwin$15$clock)
-    );
-    fcc_window__rwin__16_k7_668cf05b rwin$16(
-        .d(rwin$16$d),
-        .q(rwin$16$q),
-        .clock(rwin$16$clock)
-    );
-    fcc_window__rwin__17_k7_668cf05b rwin$17(
-        .d(rwin$17$d),
-        .q(rwin$17$q),
-        .clock(rwin$17$clock)
-    );
-    fcc_window__rwin__18_k7_668cf05b rwin$18(
-        .d(rwin$18$d),
-        .q(rwin$18$q),
-        .clock(rwin$18$clock)
-    );
-    fcc_window__rwin__19_k7_668cf05b rwin$19(
-        .d(rwin$19$d),
-        .q(rwin$19$q),
-        .clock(rwin$19$clock)
-    );
-    fcc_window__rwin__20_k7_668cf05b rwin$20(
-        .d(rwin$20$d),
-        .q(rwin$20$q),
-        .clock(rwin$20$clock)
-    );
-    fcc_window__rep_shift_en__0_k7_668cf05b rep_shift_en$0(
-        .clock(rep_shift_en$0$clock),
-        .d(rep_shift_en$0$d),
-        .q(rep_shift_en$0$q)
-    );
-    fcc_window__rep_shift_en__1_k7_668cf05b rep_shift_en$1(
-        .clock(rep_shift_en$1$clock),
-        .d(rep_shift_en$1$d),
-        .q(rep_shift_en$1$q)
-    );
-    fcc_window__rep_shift_en__2_k7_668cf05b rep_shift_en$2(
-        .clock(rep_shift_en$2$clock),
-        .d(rep_shift_en$2$d),
-        .q(rep_shift_en$2$q)
-    );
-    fcc_window__rep_shift_en__3_k7_668cf05b rep_shift_en$3(
-        .clock(rep_shift_en$3$clock),
-        .d(rep_shift_en$3$d),
-        .q(rep_shift_en$3$q)
-    );
-    fcc_window__rep_shift_en__4_k7_668cf05b rep_shift_en$4(
-        .clock(rep_shift_en$4$clock),
-        .d(rep_shift_en$4$d),
-        .q(rep_shift_en$4$q)
-    );
-    fcc_window__rep_shift_en__5_k7_668cf05b rep_shift_en$5(
-        .clock(rep_shift_en$5$clock),
-        .d(rep_shift_en$5$d),
-        .q(rep_shift_en$5$q)
-    );
-    fcc_window__rep_shift_en__6_k7_668cf05b rep_shift_en$6(
-        .clock(rep_shift_en$6$clock),
-        .d(rep_shift_en$6$d),
-        .q(rep_shift_en$6$q)
-    );
-    fcc_window__rep_shift_en__7_k7_668cf05b rep_shift_en$7(
-        .clock(rep_shift_en$7$clock),
-        .d(rep_shift_en$7$d),
-        .q(rep_shift_en$7$q)
-    );
-    fcc_window__rep_shift_en__8_k7_668cf05b rep_shift_en$8(
-        .clock(rep_shift_en$8$clock),
-        .d(rep_shift_en$8$d),
-        .q(rep_shift_en$8$q)
-    );
-    fcc_window__rep_shift_en__9_k7_668cf05b rep_shift_en$9(
-        .clock(rep_shift_en$9$clock),
-        .d(rep_shift_en$9$d),
-        .q(rep_shift_en$9$q)
-    );
-    fcc_window__rep_shift_en__10_k7_668cf05b rep_shift_en$10(
-        .clock(rep_shift_en$10$clock),
-        .d(rep_shift_en$10$d),
-        .q(rep_shift_en$10$q)
-    );
-    fcc_window__rep_shift_en__11_k7_668cf05b rep_shift_en$11(
-        .clock(rep_shift_en$11$clock),
-        .d(rep_shift_en$11$d),
-        .q(rep_shift_en$11$q)
-    );
-    fcc_window__rep_shift_en__12_k7_668cf05b rep_shift_en$12(
-        .clock(rep_shift_en$12$clock),
-        .d(rep_shift_en$12$d),
-        .q(rep_shift_en$12$q)
-    );
-    fcc_window__rep_shift_en__13_k7_668cf05b rep_shift_en$13(
-        .clock(rep_shift_en$13$clock),
-        .d(rep_shift_en$13$d),
-        .q(rep_shift_en$13$q)
-    );
-    fcc_window__rep_shift_en__14_k7_668cf05b rep_shift_en$14(
-        .clock(rep_shift_en$14$clock),
-        .d(rep_shift_en$14$d),
-        .q(rep_shift_en$14$q)
-    );
-    fcc_window__rep_shift_en__15_k7_668cf05b rep_shift_en$15(
-        .clock(rep_shift_en$15$clock),
-        .d(rep_shift_en$15$d),
-        .q(rep_shift_en$15$q)
-    );
-    fcc_window__rep_shift_en__16_k7_668cf05b rep_shift_en$16(
-        .clock(rep_shift_en$16$clock),
-        .d(rep_shift_en$16$d),
-        .q(rep_shift_en$16$q)
-    );
-    fcc_window__rep_shift_en__17_k7_668cf05b rep_shift_en$17(
-        .clock(rep_shift_en$17$clock),
-        .d(rep_shift_en$17$d),
-        .q(rep_shift_en$17$q)
-    );
-    fcc_window__rep_shift_en__18_k7_668cf05b rep_shift_en$18(
-        .clock(rep_shift_en$18$clock),
-        .d(rep_shift_en$18$d),
-        .q(rep_shift_en$18$q)
-    );
-    fcc_window__rep_shift_en__19_k7_668cf05b rep_shift_en$19(
-        .clock(rep_shift_en$19$clock),
-        .d(rep_shift_en$19$d),
-        .q(rep_shift_en$19$q)
-    );
-    fcc_window__rep_shift_en__20_k7_668cf05b rep_shift_en$20(
-        .clock(rep_shift_en$20$clock),
-        .d(rep_shift_en$20$d),
-        .q(rep_shift_en$20$q)
-    );
-    fcc_window__row_in__0_k7_668cf05b row_in$0(
-        .d(row_in$0$d),
-        .q(row_in$0$q),
-        .clock(row_in$0$clock)
-    );
-    fcc_window__row_in__1_k7_668cf05b row_in$1(
-        .d(row_in$1$d),
-        .q(row_in$1$q),
-        .clock(row_in$1$clock)
-    );
-    fcc_window__row_in__2_k7_668cf05b row_in$2(
-        .d(row_in$2$d),
-        .q(row_in$2$q),
-        .clock(row_in$2$clock)
-    );
-    fcc_window__col_in__0_k7_668cf05b col_in$0(
-        .d(col_in$0$d),
-        .q(col_in$0$q),
-        .clock(col_in$0$clock)
-    );
-    fcc_window__col_in__1_k7_668cf05b col_in$1(
-        .d(col_in$1$d),
-        .q(col_in$1$q),
-        .clock(col_in$1$clock)
-    );
-    fcc_window__col_in__2_k7_668cf05b col_in$2(
-        .d(col_in$2$d),
-        .q(col_in$2$q),
-        .clock(col_in$2$clock)
-    );
-    fcc_window__col_in__3_k7_668cf05b col_in$3(
-        .d(col_in$3$d),
-        .q(col_in$3$q),
-        .clock(col_in$3$clock)
-    );
-    fcc_window__col_in__4_k7_668cf05b col_in$4(
-        .d(col_in$4$d),
-        .q(col_in$4$q),
-        .clock(col_in$4$clock)
-    );
-    fcc_window__col_in__5_k7_668cf05b col_in$5(
-        .d(col_in$5$d),
-        .q(col_in$5$q),
-        .clock(col_in$5$clock)
-    );
-    fcc_window__col_in__6_k7_668cf05b col_in$6(
-        .d(col_in$6$d),
-        .q(col_in$6$q),
-        .clock(col_in$6$clock)
-    );
-    fcc_window__col_hi__0_k7_668cf05b col_hi$0(
-        .d(col_hi$0$d),
-        .q(col_hi$0$q),
-        .clock(col_hi$0$clock)
-    );
-    fcc_window__col_hi__1_k7_668cf05b col_hi$1(
-        .d(col_hi$1$d),
-        .q(col_hi$1$q),
-        .clock(col_hi$1$clock)
-    );
-    fcc_window__col_hi__2_k7_668cf05b col_hi$2(
-        .d(col_hi$2$d),
-        .q(col_hi$2$q),
-        .clock(col_hi$2$clock)
+    fcc_window__rep_win_k7_668cf05b rep_win(
+        .clk(rep_win$clk),
+        .rst(rep_win$rst),
+        .valid(rep_win$valid),
+        .col(rep_win$col),
+        .rdcol(rep_win$rdcol),
+        .rep_we(rep_win$rep_we),
+        .rep_waddr(rep_win$rep_waddr),
+        .rep_wdata(rep_win$rep_wdata),
+        .ent_rep$0(rep_win$ent_rep$0),
+        .ent_rep$1(rep_win$ent_rep$1),
+        .ent_rep$2(rep_win$ent_rep$2),
+        .ent_rep$3(rep_win$ent_rep$3),
+        .ent_rep$4(rep_win$ent_rep$4),
+        .ent_rep$5(rep_win$ent_rep$5),
+        .ent_rep$6(rep_win$ent_rep$6),
+        .ent_rep$7(rep_win$ent_rep$7),
+        .ent_rep$8(rep_win$ent_rep$8),
+        .ent_rep$9(rep_win$ent_rep$9),
+        .ent_rep$10(rep_win$ent_rep$10),
+        .ent_rep$11(rep_win$ent_rep$11),
+        .ent_rep$12(rep_win$ent_rep$12),
+        .ent_rep$13(rep_win$ent_rep$13),
+        .ent_rep$14(rep_win$ent_rep$14),
+        .ent_rep$15(rep_win$ent_rep$15),
+        .ent_rep$16(rep_win$ent_rep$16),
+        .ent_rep$17(rep_win$ent_rep$17),
+        .ent_rep$18(rep_win$ent_rep$18),
+        .ent_rep$19(rep_win$ent_rep$19),
+        .ent_rep$20(rep_win$ent_rep$20)
+    );
+    fcc_window__edge_mask_k7_668cf05b edge_mask(
+        .clk(edge_mask$clk),
+        .row(edge_mask$row),
+        .col(edge_mask$col),
+        .last_col(edge_mask$last_col),
+        .run_k(edge_mask$run_k),
+        .row_in$0(edge_mask$row_in$0),
+        .row_in$1(edge_mask$row_in$1),
+        .row_in$2(edge_mask$row_in$2),
+        .col_in$0(edge_mask$col_in$0),
+        .col_in$1(edge_mask$col_in$1),
+        .col_in$2(edge_mask$col_in$2),
+        .col_in$3(edge_mask$col_in$3),
+        .col_in$4(edge_mask$col_in$4),
+        .col_in$5(edge_mask$col_in$5),
+        .col_in$6(edge_mask$col_in$6)
     );
 
     // Update code
@@ -62645,38 +62282,11 @@ module fcc_window_k7_668cf05b(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$
             win_y$20$d = view_y$20;
             win_z$20$d = view_z$20;
         end
-        row_in$0$clock = clk;
-        row_in$0$d = (w2$q[73:66] >= row_lo$0) & (run_k >= row_k$0);
-        row_in$1$clock = clk;
-        row_in$1$d = (w2$q[73:66] >= row_lo$1) & (run_k >= row_k$1);
-        row_in$2$clock = clk;
-        row_in$2$d = (w2$q[73:66] >= row_lo$2) & (run_k >= row_k$2);
-        col_in$0$clock = clk;
-        col_in$0$d = run_k >= col_k$0;
-        col_in$1$clock = clk;
-        col_in$1$d = run_k >= col_k$1;
-        col_in$2$clock = clk;
-        col_in$2$d = run_k >= col_k$2;
-        col_in$3$clock = clk;
-        col_in$3$d = run_k >= col_k$3;
-        col_in$4$clock = clk;
-        col_in$4$d = run_k >= col_k$4;
-        col_in$5$clock = clk;
-        col_in$5$d = run_k >= col_k$5;
-        col_in$6$clock = clk;
-        col_in$6$d = run_k >= col_k$6;
-        col_hi$0$clock = clk;
-        col_hi$0$d = last_col - hi_off$0;
-        col_hi$1$clock = clk;
-        col_hi$1$d = last_col - hi_off$1;
-        col_hi$2$clock = clk;
-        col_hi$2$d = last_col - hi_off$2;
-        col_in$0$d = (w2$q[85:74] >= col_lo$0) & (run_k >= col_k$0);
-        col_in$1$d = (w2$q[85:74] >= col_lo$1) & (run_k >= col_k$1);
-        col_in$2$d = (w2$q[85:74] >= col_lo$2) & (run_k >= col_k$2);
-        col_in$4$d = (w2$q[85:74] <= col_hi$0$q) & (run_k >= col_k$4);
-        col_in$5$d = (w2$q[85:74] <= col_hi$1$q) & (run_k >= col_k$5);
-        col_in$6$d = (w2$q[85:74] <= col_hi$2$q) & (run_k >= col_k$6);
+        edge_mask$clk = clk;
+        edge_mask$row = w2$q[73:66];
+        edge_mask$col = w2$q[85:74];
+        edge_mask$last_col = last_col;
+        edge_mask$run_k = run_k;
         if (rst) begin
             w1$d[0:0] = 1'b0;
             w2$d[0:0] = 1'b0;
@@ -62684,255 +62294,35 @@ module fcc_window_k7_668cf05b(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$
             w2$d[73:66] = zero8;
             w2$d[85:74] = zero12;
         end
-        rv_valid$0$clock = clk;
-        rv_col$0$clock = clk;
-        rv_valid$1$clock = clk;
-        rv_col$1$clock = clk;
-        rv_valid$2$clock = clk;
-        rv_col$2$clock = clk;
-        rv_valid$3$clock = clk;
-        rv_col$3$clock = clk;
-        rv_valid$4$clock = clk;
-        rv_col$4$clock = clk;
-        rv_valid$5$clock = clk;
-        rv_col$5$clock = clk;
-        rv_rdcol$0$clock = clk;
-        rv_rdcol$1$clock = clk;
-        rv_rdcol$2$clock = clk;
-        rv_rdcol$3$clock = clk;
-        rv_valid$0$d = w3$q[0:0];
-        rv_col$0$d = w3$q[85:74];
-        rv_rdcol$0$d = w3$q[97:86];
-        rv_valid$1$d = rv_valid$0$q;
-        rv_col$1$d = rv_col$0$q;
-        rv_valid$2$d = rv_valid$1$q;
-        rv_col$2$d = rv_col$1$q;
-        rv_valid$3$d = rv_valid$2$q;
-        rv_col$3$d = rv_col$2$q;
-        rv_valid$4$d = rv_valid$3$q;
-        rv_col$4$d = rv_col$3$q;
-        rv_valid$5$d = rv_valid$4$q;
-        rv_col$5$d = rv_col$4$q;
-        rv_rdcol$1$d = rv_rdcol$0$q;
-        rv_rdcol$2$d = rv_rdcol$1$q;
-        rv_rdcol$3$d = rv_rdcol$2$q;
-        rlb$0$clk = clk;
-        rlb$0$read_en = rv_valid$3$q;
-        rlb$0$read_addr = rv_rdcol$3$q;
-        rlb$0$write_en = rv_valid$5$q;
-        rlb$0$write_addr = rv_col$5$q;
-        rlb$1$clk = clk;
-        rlb$1$read_en = rv_valid$3$q;
-        rlb$1$read_addr = rv_rdcol$3$q;
-        rlb$1$write_en = rv_valid$5$q;
-        rlb$1$write_addr = rv_col$5$q;
-        rlb$2$clk = clk;
-        rlb$2$read_en = rv_valid$3$q;
-        rlb$2$read_addr = rv_rdcol$3$q;
-        rlb$2$write_en = rv_valid$5$q;
-        rlb$2$write_addr = rv_col$5$q;
-        rlb$0$write_en = rep_we;
-        rlb$0$write_addr = rep_waddr;
-        rlb$0$write_data = rep_wdata;
-        rview$0 = rwin$1$q;
-        rview$1 = rwin$2$q;
-        rview$2 = rwin$3$q;
-        rview$3 = rwin$4$q;
-        rview$4 = rwin$5$q;
-        rview$5 = rwin$6$q;
-        rview$6 = rlb$2$read_data;
-        rview$7 = rwin$8$q;
-        rview$8 = rwin$9$q;
-        rview$9 = rwin$10$q;
-        rview$10 = rwin$11$q;
-        rview$11 = rwin$12$q;
-        rview$12 = rwin$13$q;
-        rview$13 = rlb$1$read_data;
-        rview$14 = rwin$15$q;
-        rview$15 = rwin$16$q;
-        rview$16 = rwin$17$q;
-        rview$17 = rwin$18$q;
-        rview$18 = rwin$19$q;
-        rview$19 = rwin$20$q;
-        rview$20 = rlb$0$read_data;
-        rlb$1$write_data = rview$17;
-        rlb$2$write_data = rview$10;
-        rwin$0$clock = clk;
-        rwin$0$d = rwin$0$q;
-        rep_shift_en$0$clock = clk;
-        rep_shift_en$0$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$0$q) begin
-            rwin$0$d = rview$0;
-        end
-        ent_rep$0 = rwin$0$q;
-        rwin$1$clock = clk;
-        rwin$1$d = rwin$1$q;
-        rep_shift_en$1$clock = clk;
-        rep_shift_en$1$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$1$q) begin
-            rwin$1$d = rview$1;
-        end
-        ent_rep$1 = rwin$1$q;
-        rwin$2$clock = clk;
-        rwin$2$d = rwin$2$q;
-        rep_shift_en$2$clock = clk;
-        rep_shift_en$2$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$2$q) begin
-            rwin$2$d = rview$2;
-        end
-        ent_rep$2 = rwin$2$q;
-        rwin$3$clock = clk;
-        rwin$3$d = rwin$3$q;
-        rep_shift_en$3$clock = clk;
-        rep_shift_en$3$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$3$q) begin
-            rwin$3$d = rview$3;
-        end
-        ent_rep$3 = rwin$3$q;
-        rwin$4$clock = clk;
-        rwin$4$d = rwin$4$q;
-        rep_shift_en$4$clock = clk;
-        rep_shift_en$4$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$4$q) begin
-            rwin$4$d = rview$4;
-        end
-        ent_rep$4 = rwin$4$q;
-        rwin$5$clock = clk;
-        rwin$5$d = rwin$5$q;
-        rep_shift_en$5$clock = clk;
-        rep_shift_en$5$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$5$q) begin
-            rwin$5$d = rview$5;
-        end
-        ent_rep$5 = rwin$5$q;
-        rwin$6$clock = clk;
-        rwin$6$d = rwin$6$q;
-        rep_shift_en$6$clock = clk;
-        rep_shift_en$6$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$6$q) begin
-            rwin$6$d = rview$6;
-        end
-        ent_rep$6 = rwin$6$q;
-        rwin$7$clock = clk;
-        rwin$7$d = rwin$7$q;
-        rep_shift_en$7$clock = clk;
-        rep_shift_en$7$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$7$q) begin
-            rwin$7$d = rview$7;
-        end
-        ent_rep$7 = rwin$7$q;
-        rwin$8$clock = clk;
-        rwin$8$d = rwin$8$q;
-        rep_shift_en$8$clock = clk;
-        rep_shift_en$8$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$8$q) begin
-            rwin$8$d = rview$8;
-        end
-        ent_rep$8 = rwin$8$q;
-        rwin$9$clock = clk;
-        rwin$9$d = rwin$9$q;
-        rep_shift_en$9$clock = clk;
-        rep_shift_en$9$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$9$q) begin
-            rwin$9$d = rview$9;
-        end
-        ent_rep$9 = rwin$9$q;
-        rwin$10$clock = clk;
-        rwin$10$d = rwin$10$q;
-        rep_shift_en$10$clock = clk;
-        rep_shift_en$10$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$10$q) begin
-            rwin$10$d = rview$10;
-        end
-        ent_rep$10 = rwin$10$q;
-        rwin$11$clock = clk;
-        rwin$11$d = rwin$11$q;
-        rep_shift_en$11$clock = clk;
-        rep_shift_en$11$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$11$q) begin
-            rwin$11$d = rview$11;
-        end
-        ent_rep$11 = rwin$11$q;
-        rwin$12$clock = clk;
-        rwin$12$d = rwin$12$q;
-        rep_shift_en$12$clock = clk;
-        rep_shift_en$12$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$12$q) begin
-            rwin$12$d = rview$12;
-        end
-        ent_rep$12 = rwin$12$q;
-        rwin$13$clock = clk;
-        rwin$13$d = rwin$13$q;
-        rep_shift_en$13$clock = clk;
-        rep_shift_en$13$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$13$q) begin
-            rwin$13$d = rview$13;
-        end
-        ent_rep$13 = rwin$13$q;
-        rwin$14$clock = clk;
-        rwin$14$d = rwin$14$q;
-        rep_shift_en$14$clock = clk;
-        rep_shift_en$14$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$14$q) begin
-            rwin$14$d = rview$14;
-        end
-        ent_rep$14 = rwin$14$q;
-        rwin$15$clock = clk;
-        rwin$15$d = rwin$15$q;
-        rep_shift_en$15$clock = clk;
-        rep_shift_en$15$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$15$q) begin
-            rwin$15$d = rview$15;
-        end
-        ent_rep$15 = rwin$15$q;
-        rwin$16$clock = clk;
-        rwin$16$d = rwin$16$q;
-        rep_shift_en$16$clock = clk;
-        rep_shift_en$16$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$16$q) begin
-            rwin$16$d = rview$16;
-        end
-        ent_rep$16 = rwin$16$q;
-        rwin$17$clock = clk;
-        rwin$17$d = rwin$17$q;
-        rep_shift_en$17$clock = clk;
-        rep_shift_en$17$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$17$q) begin
-            rwin$17$d = rview$17;
-        end
-        ent_rep$17 = rwin$17$q;
-        rwin$18$clock = clk;
-        rwin$18$d = rwin$18$q;
-        rep_shift_en$18$clock = clk;
-        rep_shift_en$18$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$18$q) begin
-            rwin$18$d = rview$18;
-        end
-        ent_rep$18 = rwin$18$q;
-        rwin$19$clock = clk;
-        rwin$19$d = rwin$19$q;
-        rep_shift_en$19$clock = clk;
-        rep_shift_en$19$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$19$q) begin
-            rwin$19$d = rview$19;
-        end
-        ent_rep$19 = rwin$19$q;
-        rwin$20$clock = clk;
-        rwin$20$d = rwin$20$q;
-        rep_shift_en$20$clock = clk;
-        rep_shift_en$20$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$20$q) begin
-            rwin$20$d = rview$20;
-        end
-        ent_rep$20 = rwin$20$q;
-        if (rst) begin
-            rv_valid$0$d = 1'b0;
-            rv_valid$1$d = 1'b0;
-            rv_valid$2$d = 1'b0;
-            rv_valid$3$d = 1'b0;
-            rv_valid$4$d = 1'b0;
-            rv_valid$5$d = 1'b0;
-        end
+        rep_win$clk = clk;
+        rep_win$rst = rst;
+        rep_win$valid = w3$q[0:0];
+        rep_win$col = w3$q[85:74];
+        rep_win$rdcol = w3$q[97:86];
+        rep_win$rep_we = rep_we;
+        rep_win$rep_waddr = rep_waddr;
+        rep_win$rep_wdata = rep_wdata;
+        ent_rep$0 = rep_win$ent_rep$0;
+        ent_rep$1 = rep_win$ent_rep$1;
+        ent_rep$2 = rep_win$ent_rep$2;
+        ent_rep$3 = rep_win$ent_rep$3;
+        ent_rep$4 = rep_win$ent_rep$4;
+        ent_rep$5 = rep_win$ent_rep$5;
+        ent_rep$6 = rep_win$ent_rep$6;
+        ent_rep$7 = rep_win$ent_rep$7;
+        ent_rep$8 = rep_win$ent_rep$8;
+        ent_rep$9 = rep_win$ent_rep$9;
+        ent_rep$10 = rep_win$ent_rep$10;
+        ent_rep$11 = rep_win$ent_rep$11;
+        ent_rep$12 = rep_win$ent_rep$12;
+        ent_rep$13 = rep_win$ent_rep$13;
+        ent_rep$14 = rep_win$ent_rep$14;
+        ent_rep$15 = rep_win$ent_rep$15;
+        ent_rep$16 = rep_win$ent_rep$16;
+        ent_rep$17 = rep_win$ent_rep$17;
+        ent_rep$18 = rep_win$ent_rep$18;
+        ent_rep$19 = rep_win$ent_rep$19;
+        ent_rep$20 = rep_win$ent_rep$20;
         centre[15:0] = w3$q[17:2];
         centre[31:16] = w3$q[33:18];
         centre[47:32] = w3$q[49:34];
@@ -62944,87 +62334,87 @@ module fcc_window_k7_668cf05b(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$
         centre[79:79] = w3$q[99:99];
         centre[95:80] = w3$q[115:100];
         centre[111:96] = w3$q[131:116];
-        ent_ok$0 = win_lok$0$q & row_in$0$q & col_in$0$q;
+        ent_ok$0 = win_lok$0$q & edge_mask$row_in$0 & edge_mask$col_in$0;
         ent_x$0 = win_x$0$q;
         ent_y$0 = win_y$0$q;
         ent_z$0 = win_z$0$q;
-        ent_ok$1 = win_lok$1$q & row_in$0$q & col_in$1$q;
+        ent_ok$1 = win_lok$1$q & edge_mask$row_in$0 & edge_mask$col_in$1;
         ent_x$1 = win_x$1$q;
         ent_y$1 = win_y$1$q;
         ent_z$1 = win_z$1$q;
-        ent_ok$2 = win_lok$2$q & row_in$0$q & col_in$2$q;
+        ent_ok$2 = win_lok$2$q & edge_mask$row_in$0 & edge_mask$col_in$2;
         ent_x$2 = win_x$2$q;
         ent_y$2 = win_y$2$q;
         ent_z$2 = win_z$2$q;
-        ent_ok$3 = win_lok$3$q & row_in$0$q & col_in$3$q;
+        ent_ok$3 = win_lok$3$q & edge_mask$row_in$0 & edge_mask$col_in$3;
         ent_x$3 = win_x$3$q;
         ent_y$3 = win_y$3$q;
         ent_z$3 = win_z$3$q;
-        ent_ok$4 = win_lok$4$q & row_in$0$q & col_in$4$q;
+        ent_ok$4 = win_lok$4$q & edge_mask$row_in$0 & edge_mask$col_in$4;
         ent_x$4 = win_x$4$q;
         ent_y$4 = win_y$4$q;
         ent_z$4 = win_z$4$q;
-        ent_ok$5 = win_lok$5$q & row_in$0$q & col_in$5$q;
+        ent_ok$5 = win_lok$5$q & edge_mask$row_in$0 & edge_mask$col_in$5;
         ent_x$5 = win_x$5$q;
         ent_y$5 = win_y$5$q;
         ent_z$5 = win_z$5$q;
-        ent_ok$6 = win_lok$6$q & row_in$0$q & col_in$6$q;
+        ent_ok$6 = win_lok$6$q & edge_mask$row_in$0 & edge_mask$col_in$6;
         ent_x$6 = win_x$6$q;
         ent_y$6 = win_y$6$q;
         ent_z$6 = win_z$6$q;
-        ent_ok$7 = win_lok$7$q & row_in$1$q & col_in$0$q;
+        ent_ok$7 = win_lok$7$q & edge_mask$row_in$1 & edge_mask$col_in$0;
         ent_x$7 = win_x$7$q;
         ent_y$7 = win_y$7$q;
         ent_z$7 = win_z$7$q;
-        ent_ok$8 = win_lok$8$q & row_in$1$q & col_in$1$q;
+        ent_ok$8 = win_lok$8$q & edge_mask$row_in$1 & edge_mask$col_in$1;
         ent_x$8 = win_x$8$q;
         ent_y$8 = win_y$8$q;
         ent_z$8 = win_z$8$q;
-        ent_ok$9 = win_lok$9$q & row_in$1$q & col_in$2$q;
+        ent_ok$9 = win_lok$9$q & edge_mask$row_in$1 & edge_mask$col_in$2;
         ent_x$9 = win_x$9$q;
         ent_y$9 = win_y$9$q;
         ent_z$9 = win_z$9$q;
-        ent_ok$10 = win_lok$10$q & row_in$1$q & col_in$3$q;
+        ent_ok$10 = win_lok$10$q & edge_mask$row_in$1 & edge_mask$col_in$3;
         ent_x$10 = win_x$10$q;
         ent_y$10 = win_y$10$q;
         ent_z$10 = win_z$10$q;
-        ent_ok$11 = win_lok$11$q & row_in$1$q & col_in$4$q;
+        ent_ok$11 = win_lok$11$q & edge_mask$row_in$1 & edge_mask$col_in$4;
         ent_x$11 = win_x$11$q;
         ent_y$11 = win_y$11$q;
         ent_z$11 = win_z$11$q;
-        ent_ok$12 = win_lok$12$q & row_in$1$q & col_in$5$q;
+        ent_ok$12 = win_lok$12$q & edge_mask$row_in$1 & edge_mask$col_in$5;
         ent_x$12 = win_x$12$q;
         ent_y$12 = win_y$12$q;
         ent_z$12 = win_z$12$q;
-        ent_ok$13 = win_lok$13$q & row_in$1$q & col_in$6$q;
+        ent_ok$13 = win_lok$13$q & edge_mask$row_in$1 & edge_mask$col_in$6;
         ent_x$13 = win_x$13$q;
         ent_y$13 = win_y$13$q;
         ent_z$13 = win_z$13$q;
-        ent_ok$14 = win_lok$14$q & row_in$2$q & col_in$0$q;
+        ent_ok$14 = win_lok$14$q & edge_mask$row_in$2 & edge_mask$col_in$0;
         ent_x$14 = win_x$14$q;
         ent_y$14 = win_y$14$q;
         ent_z$14 = win_z$14$q;
-        ent_ok$15 = win_lok$15$q & row_in$2$q & col_in$1$q;
+        ent_ok$15 = win_lok$15$q & edge_mask$row_in$2 & edge_mask$col_in$1;
         ent_x$15 = win_x$15$q;
         ent_y$15 = win_y$15$q;
         ent_z$15 = win_z$15$q;
-        ent_ok$16 = win_lok$16$q & row_in$2$q & col_in$2$q;
+        ent_ok$16 = win_lok$16$q & edge_mask$row_in$2 & edge_mask$col_in$2;
         ent_x$16 = win_x$16$q;
         ent_y$16 = win_y$16$q;
         ent_z$16 = win_z$16$q;
-        ent_ok$17 = win_lok$17$q & row_in$2$q & col_in$3$q;
+        ent_ok$17 = win_lok$17$q & edge_mask$row_in$2 & edge_mask$col_in$3;
         ent_x$17 = win_x$17$q;
         ent_y$17 = win_y$17$q;
         ent_z$17 = win_z$17$q;
-        ent_ok$18 = win_lok$18$q & row_in$2$q & col_in$4$q;
+        ent_ok$18 = win_lok$18$q & edge_mask$row_in$2 & edge_mask$col_in$4;
         ent_x$18 = win_x$18$q;
         ent_y$18 = win_y$18$q;
         ent_z$18 = win_z$18$q;
-        ent_ok$19 = win_lok$19$q & row_in$2$q & col_in$5$q;
+        ent_ok$19 = win_lok$19$q & edge_mask$row_in$2 & edge_mask$col_in$5;
         ent_x$19 = win_x$19$q;
         ent_y$19 = win_y$19$q;
         ent_z$19 = win_z$19$q;
-        ent_ok$20 = win_lok$20$q & row_in$2$q & col_in$6$q;
+        ent_ok$20 = win_lok$20$q & edge_mask$row_in$2 & edge_mask$col_in$6;
         ent_x$20 = win_x$20$q;
         ent_y$20 = win_y$20$q;
         ent_z$20 = win_z$20$q;
@@ -63033,7 +62423,204 @@ module fcc_window_k7_668cf05b(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$
 endmodule // fcc_window_k7_668cf05b
 
 
-module fcc_window__col_hi__0_k7_668cf05b(d,q,clock);
+module fcc_window__edge_mask_k7_668cf05b(clk,row,col,last_col,run_k,row_in$0,row_in$1,row_in$2,col_in$0,col_in$1,col_in$2,col_in$3,col_in$4,col_in$5,col_in$6);
+
+    // Module arguments
+    input wire  clk;
+    input wire  [7:0] row;
+    input wire  [11:0] col;
+    input wire  [11:0] last_col;
+    input wire  [3:0] run_k;
+    output reg  row_in$0;
+    output reg  row_in$1;
+    output reg  row_in$2;
+    output reg  col_in$0;
+    output reg  col_in$1;
+    output reg  col_in$2;
+    output reg  col_in$3;
+    output reg  col_in$4;
+    output reg  col_in$5;
+    output reg  col_in$6;
+
+    // Constant declarations
+    localparam  col_lo$0 = 12'h3;
+    localparam  col_lo$1 = 12'h2;
+    localparam  col_lo$2 = 12'h1;
+    localparam  hi_off$0 = 12'h1;
+    localparam  hi_off$1 = 12'h2;
+    localparam  hi_off$2 = 12'h3;
+    localparam  row_lo$0 = 8'h3;
+    localparam  row_lo$1 = 8'h2;
+    localparam  row_lo$2 = 8'h1;
+    localparam  row_k$0 = 4'h7;
+    localparam  row_k$1 = 4'h5;
+    localparam  row_k$2 = 4'h3;
+    localparam  col_k$0 = 4'h7;
+    localparam  col_k$1 = 4'h5;
+    localparam  col_k$2 = 4'h3;
+    localparam  col_k$3 = 4'h1;
+    localparam  col_k$4 = 4'h3;
+    localparam  col_k$5 = 4'h5;
+    localparam  col_k$6 = 4'h7;
+
+    // Stub signals
+    reg  row_q$0$d;
+    wire  row_q$0$q;
+    reg  row_q$0$clock;
+    reg  row_q$1$d;
+    wire  row_q$1$q;
+    reg  row_q$1$clock;
+    reg  row_q$2$d;
+    wire  row_q$2$q;
+    reg  row_q$2$clock;
+    reg  col_q$0$d;
+    wire  col_q$0$q;
+    reg  col_q$0$clock;
+    reg  col_q$1$d;
+    wire  col_q$1$q;
+    reg  col_q$1$clock;
+    reg  col_q$2$d;
+    wire  col_q$2$q;
+    reg  col_q$2$clock;
+    reg  col_q$3$d;
+    wire  col_q$3$q;
+    reg  col_q$3$clock;
+    reg  col_q$4$d;
+    wire  col_q$4$q;
+    reg  col_q$4$clock;
+    reg  col_q$5$d;
+    wire  col_q$5$q;
+    reg  col_q$5$clock;
+    reg  col_q$6$d;
+    wire  col_q$6$q;
+    reg  col_q$6$clock;
+    reg  [11:0] col_hi$0$d;
+    wire  [11:0] col_hi$0$q;
+    reg  col_hi$0$clock;
+    reg  [11:0] col_hi$1$d;
+    wire  [11:0] col_hi$1$q;
+    reg  col_hi$1$clock;
+    reg  [11:0] col_hi$2$d;
+    wire  [11:0] col_hi$2$q;
+    reg  col_hi$2$clock;
+
+    // Sub module instances
+    fcc_window__edge_mask__row_q__0_k7_668cf05b row_q$0(
+        .d(row_q$0$d),
+        .q(row_q$0$q),
+        .clock(row_q$0$clock)
+    );
+    fcc_window__edge_mask__row_q__1_k7_668cf05b row_q$1(
+        .d(row_q$1$d),
+        .q(row_q$1$q),
+        .clock(row_q$1$clock)
+    );
+    fcc_window__edge_mask__row_q__2_k7_668cf05b row_q$2(
+        .d(row_q$2$d),
+        .q(row_q$2$q),
+        .clock(row_q$2$clock)
+    );
+    fcc_window__edge_mask__col_q__0_k7_668cf05b col_q$0(
+        .d(col_q$0$d),
+        .q(col_q$0$q),
+        .clock(col_q$0$clock)
+    );
+    fcc_window__edge_mask__col_q__1_k7_668cf05b col_q$1(
+        .d(col_q$1$d),
+        .q(col_q$1$q),
+        .clock(col_q$1$clock)
+    );
+    fcc_window__edge_mask__col_q__2_k7_668cf05b col_q$2(
+        .d(col_q$2$d),
+        .q(col_q$2$q),
+        .clock(col_q$2$clock)
+    );
+    fcc_window__edge_mask__col_q__3_k7_668cf05b col_q$3(
+        .d(col_q$3$d),
+        .q(col_q$3$q),
+        .clock(col_q$3$clock)
+    );
+    fcc_window__edge_mask__col_q__4_k7_668cf05b col_q$4(
+        .d(col_q$4$d),
+        .q(col_q$4$q),
+        .clock(col_q$4$clock)
+    );
+    fcc_window__edge_mask__col_q__5_k7_668cf05b col_q$5(
+        .d(col_q$5$d),
+        .q(col_q$5$q),
+        .clock(col_q$5$clock)
+    );
+    fcc_window__edge_mask__col_q__6_k7_668cf05b col_q$6(
+        .d(col_q$6$d),
+        .q(col_q$6$q),
+        .clock(col_q$6$clock)
+    );
+    fcc_window__edge_mask__col_hi__0_k7_668cf05b col_hi$0(
+        .d(col_hi$0$d),
+        .q(col_hi$0$q),
+        .clock(col_hi$0$clock)
+    );
+    fcc_window__edge_mask__col_hi__1_k7_668cf05b col_hi$1(
+        .d(col_hi$1$d),
+        .q(col_hi$1$q),
+        .clock(col_hi$1$clock)
+    );
+    fcc_window__edge_mask__col_hi__2_k7_668cf05b col_hi$2(
+        .d(col_hi$2$d),
+        .q(col_hi$2$q),
+        .clock(col_hi$2$clock)
+    );
+
+    // Update code
+    always @(*) begin
+        row_q$0$clock = clk;
+        row_q$0$d = (row >= row_lo$0) & (run_k >= row_k$0);
+        row_in$0 = row_q$0$q;
+        row_q$1$clock = clk;
+        row_q$1$d = (row >= row_lo$1) & (run_k >= row_k$1);
+        row_in$1 = row_q$1$q;
+        row_q$2$clock = clk;
+        row_q$2$d = (row >= row_lo$2) & (run_k >= row_k$2);
+        row_in$2 = row_q$2$q;
+        col_q$0$clock = clk;
+        col_q$0$d = run_k >= col_k$0;
+        col_in$0 = col_q$0$q;
+        col_q$1$clock = clk;
+        col_q$1$d = run_k >= col_k$1;
+        col_in$1 = col_q$1$q;
+        col_q$2$clock = clk;
+        col_q$2$d = run_k >= col_k$2;
+        col_in$2 = col_q$2$q;
+        col_q$3$clock = clk;
+        col_q$3$d = run_k >= col_k$3;
+        col_in$3 = col_q$3$q;
+        col_q$4$clock = clk;
+        col_q$4$d = run_k >= col_k$4;
+        col_in$4 = col_q$4$q;
+        col_q$5$clock = clk;
+        col_q$5$d = run_k >= col_k$5;
+        col_in$5 = col_q$5$q;
+        col_q$6$clock = clk;
+        col_q$6$d = run_k >= col_k$6;
+        col_in$6 = col_q$6$q;
+        col_hi$0$clock = clk;
+        col_hi$0$d = last_col - hi_off$0;
+        col_hi$1$clock = clk;
+        col_hi$1$d = last_col - hi_off$1;
+        col_hi$2$clock = clk;
+        col_hi$2$d = last_col - hi_off$2;
+        col_q$0$d = (col >= col_lo$0) & (run_k >= col_k$0);
+        col_q$1$d = (col >= col_lo$1) & (run_k >= col_k$1);
+        col_q$2$d = (col >= col_lo$2) & (run_k >= col_k$2);
+        col_q$4$d = (col <= col_hi$0$q) & (run_k >= col_k$4);
+        col_q$5$d = (col <= col_hi$1$q) & (run_k >= col_k$5);
+        col_q$6$d = (col <= col_hi$2$q) & (run_k >= col_k$6);
+    end
+
+endmodule // fcc_window__edge_mask_k7_668cf05b
+
+
+module fcc_window__edge_mask__col_hi__0_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [11:0] d;
@@ -63049,29 +62636,10 @@ module fcc_window__col_hi__0_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__col_hi__0_k7_668cf05b
+endmodule // fcc_window__edge_mask__col_hi__0_k7_668cf05b
 
 
-module fcc_window__col_hi__1_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 12'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__col_hi__1_k7_668cf05b
-
-
-module fcc_window__col_hi__2_k7_668cf05b(d,q,clock);
+module fcc_window__edge_mask__col_hi__1_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [11:0] d;
@@ -63087,10 +62655,29 @@ module fcc_window__col_hi__2_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__col_hi__2_k7_668cf05b
+endmodule // fcc_window__edge_mask__col_hi__1_k7_668cf05b
 
 
-module fcc_window__col_in__0_k7_668cf05b(d,q,clock);
+module fcc_window__edge_mask__col_hi__2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__edge_mask__col_hi__2_k7_668cf05b
+
+
+module fcc_window__edge_mask__col_q__0_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -63106,29 +62693,10 @@ module fcc_window__col_in__0_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__col_in__0_k7_668cf05b
+endmodule // fcc_window__edge_mask__col_q__0_k7_668cf05b
 
 
-module fcc_window__col_in__1_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__col_in__1_k7_668cf05b
-
-
-module fcc_window__col_in__2_k7_668cf05b(d,q,clock);
+module fcc_window__edge_mask__col_q__1_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -63144,29 +62712,10 @@ module fcc_window__col_in__2_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__col_in__2_k7_668cf05b
+endmodule // fcc_window__edge_mask__col_q__1_k7_668cf05b
 
 
-module fcc_window__col_in__3_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__col_in__3_k7_668cf05b
-
-
-module fcc_window__col_in__4_k7_668cf05b(d,q,clock);
+module fcc_window__edge_mask__col_q__2_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -63182,29 +62731,10 @@ module fcc_window__col_in__4_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__col_in__4_k7_668cf05b
+endmodule // fcc_window__edge_mask__col_q__2_k7_668cf05b
 
 
-module fcc_window__col_in__5_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__col_in__5_k7_668cf05b
-
-
-module fcc_window__col_in__6_k7_668cf05b(d,q,clock);
+module fcc_window__edge_mask__col_q__3_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -63220,7 +62750,121 @@ module fcc_window__col_in__6_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__col_in__6_k7_668cf05b
+endmodule // fcc_window__edge_mask__col_q__3_k7_668cf05b
+
+
+module fcc_window__edge_mask__col_q__4_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__edge_mask__col_q__4_k7_668cf05b
+
+
+module fcc_window__edge_mask__col_q__5_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__edge_mask__col_q__5_k7_668cf05b
+
+
+module fcc_window__edge_mask__col_q__6_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__edge_mask__col_q__6_k7_668cf05b
+
+
+module fcc_window__edge_mask__row_q__0_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__edge_mask__row_q__0_k7_668cf05b
+
+
+module fcc_window__edge_mask__row_q__1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__edge_mask__row_q__1_k7_668cf05b
+
+
+module fcc_window__edge_mask__row_q__2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  d;
+    output reg  q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 1'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__edge_mask__row_q__2_k7_668cf05b
 
 
 module fcc_window__lb_write_addr__0_k7_668cf05b(clock,d,q);
@@ -63616,7 +63260,835 @@ module fcc_window__lbs__2__ram_k7_668cf05b(clk,read_en,read_addr,read_data,write
 endmodule // fcc_window__lbs__2__ram_k7_668cf05b
 
 
-module fcc_window__rep_shift_en__0_k7_668cf05b(clock,d,q);
+module fcc_window__rep_win_k7_668cf05b(clk,rst,valid,col,rdcol,rep_we,rep_waddr,rep_wdata,ent_rep$0,ent_rep$1,ent_rep$2,ent_rep$3,ent_rep$4,ent_rep$5,ent_rep$6,ent_rep$7,ent_rep$8,ent_rep$9,ent_rep$10,ent_rep$11,ent_rep$12,ent_rep$13,ent_rep$14,ent_rep$15,ent_rep$16,ent_rep$17,ent_rep$18,ent_rep$19,ent_rep$20);
+
+    // Module arguments
+    input wire  clk;
+    input wire  rst;
+    input wire  valid;
+    input wire  [11:0] col;
+    input wire  [11:0] rdcol;
+    input wire  rep_we;
+    input wire  [11:0] rep_waddr;
+    input wire  [15:0] rep_wdata;
+    output reg  [15:0] ent_rep$0;
+    output reg  [15:0] ent_rep$1;
+    output reg  [15:0] ent_rep$2;
+    output reg  [15:0] ent_rep$3;
+    output reg  [15:0] ent_rep$4;
+    output reg  [15:0] ent_rep$5;
+    output reg  [15:0] ent_rep$6;
+    output reg  [15:0] ent_rep$7;
+    output reg  [15:0] ent_rep$8;
+    output reg  [15:0] ent_rep$9;
+    output reg  [15:0] ent_rep$10;
+    output reg  [15:0] ent_rep$11;
+    output reg  [15:0] ent_rep$12;
+    output reg  [15:0] ent_rep$13;
+    output reg  [15:0] ent_rep$14;
+    output reg  [15:0] ent_rep$15;
+    output reg  [15:0] ent_rep$16;
+    output reg  [15:0] ent_rep$17;
+    output reg  [15:0] ent_rep$18;
+    output reg  [15:0] ent_rep$19;
+    output reg  [15:0] ent_rep$20;
+
+    // Stub signals
+    reg  rv_valid$0$d;
+    wire  rv_valid$0$q;
+    reg  rv_valid$0$clock;
+    reg  rv_valid$1$d;
+    wire  rv_valid$1$q;
+    reg  rv_valid$1$clock;
+    reg  rv_valid$2$d;
+    wire  rv_valid$2$q;
+    reg  rv_valid$2$clock;
+    reg  rv_valid$3$d;
+    wire  rv_valid$3$q;
+    reg  rv_valid$3$clock;
+    reg  rv_valid$4$d;
+    wire  rv_valid$4$q;
+    reg  rv_valid$4$clock;
+    reg  rv_valid$5$d;
+    wire  rv_valid$5$q;
+    reg  rv_valid$5$clock;
+    reg  [11:0] rv_col$0$d;
+    wire  [11:0] rv_col$0$q;
+    reg  rv_col$0$clock;
+    reg  [11:0] rv_col$1$d;
+    wire  [11:0] rv_col$1$q;
+    reg  rv_col$1$clock;
+    reg  [11:0] rv_col$2$d;
+    wire  [11:0] rv_col$2$q;
+    reg  rv_col$2$clock;
+    reg  [11:0] rv_col$3$d;
+    wire  [11:0] rv_col$3$q;
+    reg  rv_col$3$clock;
+    reg  [11:0] rv_col$4$d;
+    wire  [11:0] rv_col$4$q;
+    reg  rv_col$4$clock;
+    reg  [11:0] rv_col$5$d;
+    wire  [11:0] rv_col$5$q;
+    reg  rv_col$5$clock;
+    reg  [11:0] rv_rdcol$0$d;
+    wire  [11:0] rv_rdcol$0$q;
+    reg  rv_rdcol$0$clock;
+    reg  [11:0] rv_rdcol$1$d;
+    wire  [11:0] rv_rdcol$1$q;
+    reg  rv_rdcol$1$clock;
+    reg  [11:0] rv_rdcol$2$d;
+    wire  [11:0] rv_rdcol$2$q;
+    reg  rv_rdcol$2$clock;
+    reg  [11:0] rv_rdcol$3$d;
+    wire  [11:0] rv_rdcol$3$q;
+    reg  rv_rdcol$3$clock;
+    reg  rlb$0$clk;
+    reg  rlb$0$read_en;
+    reg  [11:0] rlb$0$read_addr;
+    wire  [15:0] rlb$0$read_data;
+    reg  rlb$0$write_en;
+    reg  [11:0] rlb$0$write_addr;
+    reg  [15:0] rlb$0$write_data;
+    reg  rlb$1$clk;
+    reg  rlb$1$read_en;
+    reg  [11:0] rlb$1$read_addr;
+    wire  [15:0] rlb$1$read_data;
+    reg  rlb$1$write_en;
+    reg  [11:0] rlb$1$write_addr;
+    reg  [15:0] rlb$1$write_data;
+    reg  rlb$2$clk;
+    reg  rlb$2$read_en;
+    reg  [11:0] rlb$2$read_addr;
+    wire  [15:0] rlb$2$read_data;
+    reg  rlb$2$write_en;
+    reg  [11:0] rlb$2$write_addr;
+    reg  [15:0] rlb$2$write_data;
+    reg  [15:0] rwin$0$d;
+    wire  [15:0] rwin$0$q;
+    reg  rwin$0$clock;
+    reg  [15:0] rwin$1$d;
+    wire  [15:0] rwin$1$q;
+    reg  rwin$1$clock;
+    reg  [15:0] rwin$2$d;
+    wire  [15:0] rwin$2$q;
+    reg  rwin$2$clock;
+    reg  [15:0] rwin$3$d;
+    wire  [15:0] rwin$3$q;
+    reg  rwin$3$clock;
+    reg  [15:0] rwin$4$d;
+    wire  [15:0] rwin$4$q;
+    reg  rwin$4$clock;
+    reg  [15:0] rwin$5$d;
+    wire  [15:0] rwin$5$q;
+    reg  rwin$5$clock;
+    reg  [15:0] rwin$6$d;
+    wire  [15:0] rwin$6$q;
+    reg  rwin$6$clock;
+    reg  [15:0] rwin$7$d;
+    wire  [15:0] rwin$7$q;
+    reg  rwin$7$clock;
+    reg  [15:0] rwin$8$d;
+    wire  [15:0] rwin$8$q;
+    reg  rwin$8$clock;
+    reg  [15:0] rwin$9$d;
+    wire  [15:0] rwin$9$q;
+    reg  rwin$9$clock;
+    reg  [15:0] rwin$10$d;
+    wire  [15:0] rwin$10$q;
+    reg  rwin$10$clock;
+    reg  [15:0] rwin$11$d;
+    wire  [15:0] rwin$11$q;
+    reg  rwin$11$clock;
+    reg  [15:0] rwin$12$d;
+    wire  [15:0] rwin$12$q;
+    reg  rwin$12$clock;
+    reg  [15:0] rwin$13$d;
+    wire  [15:0] rwin$13$q;
+    reg  rwin$13$clock;
+    reg  [15:0] rwin$14$d;
+    wire  [15:0] rwin$14$q;
+    reg  rwin$14$clock;
+    reg  [15:0] rwin$15$d;
+    wire  [15:0] rwin$15$q;
+    reg  rwin$15$clock;
+    reg  [15:0] rwin$16$d;
+    wire  [15:0] rwin$16$q;
+    reg  rwin$16$clock;
+    reg  [15:0] rwin$17$d;
+    wire  [15:0] rwin$17$q;
+    reg  rwin$17$clock;
+    reg  [15:0] rwin$18$d;
+    wire  [15:0] rwin$18$q;
+    reg  rwin$18$clock;
+    reg  [15:0] rwin$19$d;
+    wire  [15:0] rwin$19$q;
+    reg  rwin$19$clock;
+    reg  [15:0] rwin$20$d;
+    wire  [15:0] rwin$20$q;
+    reg  rwin$20$clock;
+    reg  rep_shift_en$0$clock;
+    reg  rep_shift_en$0$d;
+    wire  rep_shift_en$0$q;
+    reg  rep_shift_en$1$clock;
+    reg  rep_shift_en$1$d;
+    wire  rep_shift_en$1$q;
+    reg  rep_shift_en$2$clock;
+    reg  rep_shift_en$2$d;
+    wire  rep_shift_en$2$q;
+    reg  rep_shift_en$3$clock;
+    reg  rep_shift_en$3$d;
+    wire  rep_shift_en$3$q;
+    reg  rep_shift_en$4$clock;
+    reg  rep_shift_en$4$d;
+    wire  rep_shift_en$4$q;
+    reg  rep_shift_en$5$clock;
+    reg  rep_shift_en$5$d;
+    wire  rep_shift_en$5$q;
+    reg  rep_shift_en$6$clock;
+    reg  rep_shift_en$6$d;
+    wire  rep_shift_en$6$q;
+    reg  rep_shift_en$7$clock;
+    reg  rep_shift_en$7$d;
+    wire  rep_shift_en$7$q;
+    reg  rep_shift_en$8$clock;
+    reg  rep_shift_en$8$d;
+    wire  rep_shift_en$8$q;
+    reg  rep_shift_en$9$clock;
+    reg  rep_shift_en$9$d;
+    wire  rep_shift_en$9$q;
+    reg  rep_shift_en$10$clock;
+    reg  rep_shift_en$10$d;
+    wire  rep_shift_en$10$q;
+    reg  rep_shift_en$11$clock;
+    reg  rep_shift_en$11$d;
+    wire  rep_shift_en$11$q;
+    reg  rep_shift_en$12$clock;
+    reg  rep_shift_en$12$d;
+    wire  rep_shift_en$12$q;
+    reg  rep_shift_en$13$clock;
+    reg  rep_shift_en$13$d;
+    wire  rep_shift_en$13$q;
+    reg  rep_shift_en$14$clock;
+    reg  rep_shift_en$14$d;
+    wire  rep_shift_en$14$q;
+    reg  rep_shift_en$15$clock;
+    reg  rep_shift_en$15$d;
+    wire  rep_shift_en$15$q;
+    reg  rep_shift_en$16$clock;
+    reg  rep_shift_en$16$d;
+    wire  rep_shift_en$16$q;
+    reg  rep_shift_en$17$clock;
+    reg  rep_shift_en$17$d;
+    wire  rep_shift_en$17$q;
+    reg  rep_shift_en$18$clock;
+    reg  rep_shift_en$18$d;
+    wire  rep_shift_en$18$q;
+    reg  rep_shift_en$19$clock;
+    reg  rep_shift_en$19$d;
+    wire  rep_shift_en$19$q;
+    reg  rep_shift_en$20$clock;
+    reg  rep_shift_en$20$d;
+    wire  rep_shift_en$20$q;
+
+    // Local signals
+    reg  [15:0] rview$0;
+    reg  [15:0] rview$1;
+    reg  [15:0] rview$2;
+    reg  [15:0] rview$3;
+    reg  [15:0] rview$4;
+    reg  [15:0] rview$5;
+    reg  [15:0] rview$6;
+    reg  [15:0] rview$7;
+    reg  [15:0] rview$8;
+    reg  [15:0] rview$9;
+    reg  [15:0] rview$10;
+    reg  [15:0] rview$11;
+    reg  [15:0] rview$12;
+    reg  [15:0] rview$13;
+    reg  [15:0] rview$14;
+    reg  [15:0] rview$15;
+    reg  [15:0] rview$16;
+    reg  [15:0] rview$17;
+    reg  [15:0] rview$18;
+    reg  [15:0] rview$19;
+    reg  [15:0] rview$20;
+
+    // Sub module instances
+    fcc_window__rep_win__rv_valid__0_k7_668cf05b rv_valid$0(
+        .d(rv_valid$0$d),
+        .q(rv_valid$0$q),
+        .clock(rv_valid$0$clock)
+    );
+    fcc_window__rep_win__rv_valid__1_k7_668cf05b rv_valid$1(
+        .d(rv_valid$1$d),
+        .q(rv_valid$1$q),
+        .clock(rv_valid$1$clock)
+    );
+    fcc_window__rep_win__rv_valid__2_k7_668cf05b rv_valid$2(
+        .d(rv_valid$2$d),
+        .q(rv_valid$2$q),
+        .clock(rv_valid$2$clock)
+    );
+    fcc_window__rep_win__rv_valid__3_k7_668cf05b rv_valid$3(
+        .d(rv_valid$3$d),
+        .q(rv_valid$3$q),
+        .clock(rv_valid$3$clock)
+    );
+    fcc_window__rep_win__rv_valid__4_k7_668cf05b rv_valid$4(
+        .d(rv_valid$4$d),
+        .q(rv_valid$4$q),
+        .clock(rv_valid$4$clock)
+    );
+    fcc_window__rep_win__rv_valid__5_k7_668cf05b rv_valid$5(
+        .d(rv_valid$5$d),
+        .q(rv_valid$5$q),
+        .clock(rv_valid$5$clock)
+    );
+    fcc_window__rep_win__rv_col__0_k7_668cf05b rv_col$0(
+        .d(rv_col$0$d),
+        .q(rv_col$0$q),
+        .clock(rv_col$0$clock)
+    );
+    fcc_window__rep_win__rv_col__1_k7_668cf05b rv_col$1(
+        .d(rv_col$1$d),
+        .q(rv_col$1$q),
+        .clock(rv_col$1$clock)
+    );
+    fcc_window__rep_win__rv_col__2_k7_668cf05b rv_col$2(
+        .d(rv_col$2$d),
+        .q(rv_col$2$q),
+        .clock(rv_col$2$clock)
+    );
+    fcc_window__rep_win__rv_col__3_k7_668cf05b rv_col$3(
+        .d(rv_col$3$d),
+        .q(rv_col$3$q),
+        .clock(rv_col$3$clock)
+    );
+    fcc_window__rep_win__rv_col__4_k7_668cf05b rv_col$4(
+        .d(rv_col$4$d),
+        .q(rv_col$4$q),
+        .clock(rv_col$4$clock)
+    );
+    fcc_window__rep_win__rv_col__5_k7_668cf05b rv_col$5(
+        .d(rv_col$5$d),
+        .q(rv_col$5$q),
+        .clock(rv_col$5$clock)
+    );
+    fcc_window__rep_win__rv_rdcol__0_k7_668cf05b rv_rdcol$0(
+        .d(rv_rdcol$0$d),
+        .q(rv_rdcol$0$q),
+        .clock(rv_rdcol$0$clock)
+    );
+    fcc_window__rep_win__rv_rdcol__1_k7_668cf05b rv_rdcol$1(
+        .d(rv_rdcol$1$d),
+        .q(rv_rdcol$1$q),
+        .clock(rv_rdcol$1$clock)
+    );
+    fcc_window__rep_win__rv_rdcol__2_k7_668cf05b rv_rdcol$2(
+        .d(rv_rdcol$2$d),
+        .q(rv_rdcol$2$q),
+        .clock(rv_rdcol$2$clock)
+    );
+    fcc_window__rep_win__rv_rdcol__3_k7_668cf05b rv_rdcol$3(
+        .d(rv_rdcol$3$d),
+        .q(rv_rdcol$3$q),
+        .clock(rv_rdcol$3$clock)
+    );
+    fcc_window__rep_win__rlb__0_k7_668cf05b rlb$0(
+        .clk(rlb$0$clk),
+        .read_en(rlb$0$read_en),
+        .read_addr(rlb$0$read_addr),
+        .read_data(rlb$0$read_data),
+        .write_en(rlb$0$write_en),
+        .write_addr(rlb$0$write_addr),
+        .write_data(rlb$0$write_data)
+    );
+    fcc_window__rep_win__rlb__1_k7_668cf05b rlb$1(
+        .clk(rlb$1$clk),
+        .read_en(rlb$1$read_en),
+        .read_addr(rlb$1$read_addr),
+        .read_data(rlb$1$read_data),
+        .write_en(rlb$1$write_en),
+        .write_addr(rlb$1$write_addr),
+        .write_data(rlb$1$write_data)
+    );
+    fcc_window__rep_win__rlb__2_k7_668cf05b rlb$2(
+        .clk(rlb$2$clk),
+        .read_en(rlb$2$read_en),
+        .read_addr(rlb$2$read_addr),
+        .read_data(rlb$2$read_data),
+        .write_en(rlb$2$write_en),
+        .write_addr(rlb$2$write_addr),
+        .write_data(rlb$2$write_data)
+    );
+    fcc_window__rep_win__rwin__0_k7_668cf05b rwin$0(
+        .d(rwin$0$d),
+        .q(rwin$0$q),
+        .clock(rwin$0$clock)
+    );
+    fcc_window__rep_win__rwin__1_k7_668cf05b rwin$1(
+        .d(rwin$1$d),
+        .q(rwin$1$q),
+        .clock(rwin$1$clock)
+    );
+    fcc_window__rep_win__rwin__2_k7_668cf05b rwin$2(
+        .d(rwin$2$d),
+        .q(rwin$2$q),
+        .clock(rwin$2$clock)
+    );
+    fcc_window__rep_win__rwin__3_k7_668cf05b rwin$3(
+        .d(rwin$3$d),
+        .q(rwin$3$q),
+        .clock(rwin$3$clock)
+    );
+    fcc_window__rep_win__rwin__4_k7_668cf05b rwin$4(
+        .d(rwin$4$d),
+        .q(rwin$4$q),
+        .clock(rwin$4$clock)
+    );
+    fcc_window__rep_win__rwin__5_k7_668cf05b rwin$5(
+        .d(rwin$5$d),
+        .q(rwin$5$q),
+        .clock(rwin$5$clock)
+    );
+    fcc_window__rep_win__rwin__6_k7_668cf05b rwin$6(
+        .d(rwin$6$d),
+        .q(rwin$6$q),
+        .clock(rwin$6$clock)
+    );
+    fcc_window__rep_win__rwin__7_k7_668cf05b rwin$7(
+        .d(rwin$7$d),
+        .q(rwin$7$q),
+        .clock(rwin$7$clock)
+    );
+    fcc_window__rep_win__rwin__8_k7_668cf05b rwin$8(
+        .d(rwin$8$d),
+        .q(rwin$8$q),
+        .clock(rwin$8$clock)
+    );
+    fcc_window__rep_win__rwin__9_k7_668cf05b rwin$9(
+        .d(rwin$9$d),
+        .q(rwin$9$q),
+        .clock(rwin$9$clock)
+    );
+    fcc_window__rep_win__rwin__10_k7_668cf05b rwin$10(
+        .d(rwin$10$d),
+        .q(rwin$10$q),
+        .clock(rwin$10$clock)
+    );
+    fcc_window__rep_win__rwin__11_k7_668cf05b rwin$11(
+        .d(rwin$11$d),
+        .q(rwin$11$q),
+        .clock(rwin$11$clock)
+    );
+    fcc_window__rep_win__rwin__12_k7_668cf05b rwin$12(
+        .d(rwin$12$d),
+        .q(rwin$12$q),
+        .clock(rwin$12$clock)
+    );
+    fcc_window__rep_win__rwin__13_k7_668cf05b rwin$13(
+        .d(rwin$13$d),
+        .q(rwin$13$q),
+        .clock(rwin$13$clock)
+    );
+    fcc_window__rep_win__rwin__14_k7_668cf05b rwin$14(
+        .d(rwin$14$d),
+        .q(rwin$14$q),
+        .clock(rwin$14$clock)
+    );
+    fcc_window__rep_win__rwin__15_k7_668cf05b rwin$15(
+        .d(rwin$15$d),
+        .q(rwin$15$q),
+        .clock(rwin$15$clock)
+    );
+    fcc_window__rep_win__rwin__16_k7_668cf05b rwin$16(
+        .d(rwin$16$d),
+        .q(rwin$16$q),
+        .clock(rwin$16$clock)
+    );
+    fcc_window__rep_win__rwin__17_k7_668cf05b rwin$17(
+        .d(rwin$17$d),
+        .q(rwin$17$q),
+        .clock(rwin$17$clock)
+    );
+    fcc_window__rep_win__rwin__18_k7_668cf05b rwin$18(
+        .d(rwin$18$d),
+        .q(rwin$18$q),
+        .clock(rwin$18$clock)
+    );
+    fcc_window__rep_win__rwin__19_k7_668cf05b rwin$19(
+        .d(rwin$19$d),
+        .q(rwin$19$q),
+        .clock(rwin$19$clock)
+    );
+    fcc_window__rep_win__rwin__20_k7_668cf05b rwin$20(
+        .d(rwin$20$d),
+        .q(rwin$20$q),
+        .clock(rwin$20$clock)
+    );
+    fcc_window__rep_win__rep_shift_en__0_k7_668cf05b rep_shift_en$0(
+        .clock(rep_shift_en$0$clock),
+        .d(rep_shift_en$0$d),
+        .q(rep_shift_en$0$q)
+    );
+    fcc_window__rep_win__rep_shift_en__1_k7_668cf05b rep_shift_en$1(
+        .clock(rep_shift_en$1$clock),
+        .d(rep_shift_en$1$d),
+        .q(rep_shift_en$1$q)
+    );
+    fcc_window__rep_win__rep_shift_en__2_k7_668cf05b rep_shift_en$2(
+        .clock(rep_shift_en$2$clock),
+        .d(rep_shift_en$2$d),
+        .q(rep_shift_en$2$q)
+    );
+    fcc_window__rep_win__rep_shift_en__3_k7_668cf05b rep_shift_en$3(
+        .clock(rep_shift_en$3$clock),
+        .d(rep_shift_en$3$d),
+        .q(rep_shift_en$3$q)
+    );
+    fcc_window__rep_win__rep_shift_en__4_k7_668cf05b rep_shift_en$4(
+        .clock(rep_shift_en$4$clock),
+        .d(rep_shift_en$4$d),
+        .q(rep_shift_en$4$q)
+    );
+    fcc_window__rep_win__rep_shift_en__5_k7_668cf05b rep_shift_en$5(
+        .clock(rep_shift_en$5$clock),
+        .d(rep_shift_en$5$d),
+        .q(rep_shift_en$5$q)
+    );
+    fcc_window__rep_win__rep_shift_en__6_k7_668cf05b rep_shift_en$6(
+        .clock(rep_shift_en$6$clock),
+        .d(rep_shift_en$6$d),
+        .q(rep_shift_en$6$q)
+    );
+    fcc_window__rep_win__rep_shift_en__7_k7_668cf05b rep_shift_en$7(
+        .clock(rep_shift_en$7$clock),
+        .d(rep_shift_en$7$d),
+        .q(rep_shift_en$7$q)
+    );
+    fcc_window__rep_win__rep_shift_en__8_k7_668cf05b rep_shift_en$8(
+        .clock(rep_shift_en$8$clock),
+        .d(rep_shift_en$8$d),
+        .q(rep_shift_en$8$q)
+    );
+    fcc_window__rep_win__rep_shift_en__9_k7_668cf05b rep_shift_en$9(
+        .clock(rep_shift_en$9$clock),
+        .d(rep_shift_en$9$d),
+        .q(rep_shift_en$9$q)
+    );
+    fcc_window__rep_win__rep_shift_en__10_k7_668cf05b rep_shift_en$10(
+        .clock(rep_shift_en$10$clock),
+        .d(rep_shift_en$10$d),
+        .q(rep_shift_en$10$q)
+    );
+    fcc_window__rep_win__rep_shift_en__11_k7_668cf05b rep_shift_en$11(
+        .clock(rep_shift_en$11$clock),
+        .d(rep_shift_en$11$d),
+        .q(rep_shift_en$11$q)
+    );
+    fcc_window__rep_win__rep_shift_en__12_k7_668cf05b rep_shift_en$12(
+        .clock(rep_shift_en$12$clock),
+        .d(rep_shift_en$12$d),
+        .q(rep_shift_en$12$q)
+    );
+    fcc_window__rep_win__rep_shift_en__13_k7_668cf05b rep_shift_en$13(
+        .clock(rep_shift_en$13$clock),
+        .d(rep_shift_en$13$d),
+        .q(rep_shift_en$13$q)
+    );
+    fcc_window__rep_win__rep_shift_en__14_k7_668cf05b rep_shift_en$14(
+        .clock(rep_shift_en$14$clock),
+        .d(rep_shift_en$14$d),
+        .q(rep_shift_en$14$q)
+    );
+    fcc_window__rep_win__rep_shift_en__15_k7_668cf05b rep_shift_en$15(
+        .clock(rep_shift_en$15$clock),
+        .d(rep_shift_en$15$d),
+        .q(rep_shift_en$15$q)
+    );
+    fcc_window__rep_win__rep_shift_en__16_k7_668cf05b rep_shift_en$16(
+        .clock(rep_shift_en$16$clock),
+        .d(rep_shift_en$16$d),
+        .q(rep_shift_en$16$q)
+    );
+    fcc_window__rep_win__rep_shift_en__17_k7_668cf05b rep_shift_en$17(
+        .clock(rep_shift_en$17$clock),
+        .d(rep_shift_en$17$d),
+        .q(rep_shift_en$17$q)
+    );
+    fcc_window__rep_win__rep_shift_en__18_k7_668cf05b rep_shift_en$18(
+        .clock(rep_shift_en$18$clock),
+        .d(rep_shift_en$18$d),
+        .q(rep_shift_en$18$q)
+    );
+    fcc_window__rep_win__rep_shift_en__19_k7_668cf05b rep_shift_en$19(
+        .clock(rep_shift_en$19$clock),
+        .d(rep_shift_en$19$d),
+        .q(rep_shift_en$19$q)
+    );
+    fcc_window__rep_win__rep_shift_en__20_k7_668cf05b rep_shift_en$20(
+        .clock(rep_shift_en$20$clock),
+        .d(rep_shift_en$20$d),
+        .q(rep_shift_en$20$q)
+    );
+
+    // Update code
+    always @(*) begin
+        rv_valid$0$clock = clk;
+        rv_col$0$clock = clk;
+        rv_valid$1$clock = clk;
+        rv_col$1$clock = clk;
+        rv_valid$2$clock = clk;
+        rv_col$2$clock = clk;
+        rv_valid$3$clock = clk;
+        rv_col$3$clock = clk;
+        rv_valid$4$clock = clk;
+        rv_col$4$clock = clk;
+        rv_valid$5$clock = clk;
+        rv_col$5$clock = clk;
+        rv_rdcol$0$clock = clk;
+        rv_rdcol$1$clock = clk;
+        rv_rdcol$2$clock = clk;
+        rv_rdcol$3$clock = clk;
+        rv_valid$0$d = valid;
+        rv_col$0$d = col;
+        rv_rdcol$0$d = rdcol;
+        rv_valid$1$d = rv_valid$0$q;
+        rv_col$1$d = rv_col$0$q;
+        rv_valid$2$d = rv_valid$1$q;
+        rv_col$2$d = rv_col$1$q;
+        rv_valid$3$d = rv_valid$2$q;
+        rv_col$3$d = rv_col$2$q;
+        rv_valid$4$d = rv_valid$3$q;
+        rv_col$4$d = rv_col$3$q;
+        rv_valid$5$d = rv_valid$4$q;
+        rv_col$5$d = rv_col$4$q;
+        rv_rdcol$1$d = rv_rdcol$0$q;
+        rv_rdcol$2$d = rv_rdcol$1$q;
+        rv_rdcol$3$d = rv_rdcol$2$q;
+        rlb$0$clk = clk;
+        rlb$0$read_en = rv_valid$3$q;
+        rlb$0$read_addr = rv_rdcol$3$q;
+        rlb$0$write_en = rv_valid$5$q;
+        rlb$0$write_addr = rv_col$5$q;
+        rlb$1$clk = clk;
+        rlb$1$read_en = rv_valid$3$q;
+        rlb$1$read_addr = rv_rdcol$3$q;
+        rlb$1$write_en = rv_valid$5$q;
+        rlb$1$write_addr = rv_col$5$q;
+        rlb$2$clk = clk;
+        rlb$2$read_en = rv_valid$3$q;
+        rlb$2$read_addr = rv_rdcol$3$q;
+        rlb$2$write_en = rv_valid$5$q;
+        rlb$2$write_addr = rv_col$5$q;
+        rlb$0$write_en = rep_we;
+        rlb$0$write_addr = rep_waddr;
+        rlb$0$write_data = rep_wdata;
+        rview$0 = rwin$1$q;
+        rview$1 = rwin$2$q;
+        rview$2 = rwin$3$q;
+        rview$3 = rwin$4$q;
+        rview$4 = rwin$5$q;
+        rview$5 = rwin$6$q;
+        rview$6 = rlb$2$read_data;
+        rview$7 = rwin$8$q;
+        rview$8 = rwin$9$q;
+        rview$9 = rwin$10$q;
+        rview$10 = rwin$11$q;
+        rview$11 = rwin$12$q;
+        rview$12 = rwin$13$q;
+        rview$13 = rlb$1$read_data;
+        rview$14 = rwin$15$q;
+        rview$15 = rwin$16$q;
+        rview$16 = rwin$17$q;
+        rview$17 = rwin$18$q;
+        rview$18 = rwin$19$q;
+        rview$19 = rwin$20$q;
+        rview$20 = rlb$0$read_data;
+        rlb$1$write_data = rview$17;
+        rlb$2$write_data = rview$10;
+        rwin$0$clock = clk;
+        rwin$0$d = rwin$0$q;
+        rep_shift_en$0$clock = clk;
+        rep_shift_en$0$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$0$q) begin
+            rwin$0$d = rview$0;
+        end
+        ent_rep$0 = rwin$0$q;
+        rwin$1$clock = clk;
+        rwin$1$d = rwin$1$q;
+        rep_shift_en$1$clock = clk;
+        rep_shift_en$1$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$1$q) begin
+            rwin$1$d = rview$1;
+        end
+        ent_rep$1 = rwin$1$q;
+        rwin$2$clock = clk;
+        rwin$2$d = rwin$2$q;
+        rep_shift_en$2$clock = clk;
+        rep_shift_en$2$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$2$q) begin
+            rwin$2$d = rview$2;
+        end
+        ent_rep$2 = rwin$2$q;
+        rwin$3$clock = clk;
+        rwin$3$d = rwin$3$q;
+        rep_shift_en$3$clock = clk;
+        rep_shift_en$3$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$3$q) begin
+            rwin$3$d = rview$3;
+        end
+        ent_rep$3 = rwin$3$q;
+        rwin$4$clock = clk;
+        rwin$4$d = rwin$4$q;
+        rep_shift_en$4$clock = clk;
+        rep_shift_en$4$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$4$q) begin
+            rwin$4$d = rview$4;
+        end
+        ent_rep$4 = rwin$4$q;
+        rwin$5$clock = clk;
+        rwin$5$d = rwin$5$q;
+        rep_shift_en$5$clock = clk;
+        rep_shift_en$5$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$5$q) begin
+            rwin$5$d = rview$5;
+        end
+        ent_rep$5 = rwin$5$q;
+        rwin$6$clock = clk;
+        rwin$6$d = rwin$6$q;
+        rep_shift_en$6$clock = clk;
+        rep_shift_en$6$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$6$q) begin
+            rwin$6$d = rview$6;
+        end
+        ent_rep$6 = rwin$6$q;
+        rwin$7$clock = clk;
+        rwin$7$d = rwin$7$q;
+        rep_shift_en$7$clock = clk;
+        rep_shift_en$7$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$7$q) begin
+            rwin$7$d = rview$7;
+        end
+        ent_rep$7 = rwin$7$q;
+        rwin$8$clock = clk;
+        rwin$8$d = rwin$8$q;
+        rep_shift_en$8$clock = clk;
+        rep_shift_en$8$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$8$q) begin
+            rwin$8$d = rview$8;
+        end
+        ent_rep$8 = rwin$8$q;
+        rwin$9$clock = clk;
+        rwin$9$d = rwin$9$q;
+        rep_shift_en$9$clock = clk;
+        rep_shift_en$9$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$9$q) begin
+            rwin$9$d = rview$9;
+        end
+        ent_rep$9 = rwin$9$q;
+        rwin$10$clock = clk;
+        rwin$10$d = rwin$10$q;
+        rep_shift_en$10$clock = clk;
+        rep_shift_en$10$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$10$q) begin
+            rwin$10$d = rview$10;
+        end
+        ent_rep$10 = rwin$10$q;
+        rwin$11$clock = clk;
+        rwin$11$d = rwin$11$q;
+        rep_shift_en$11$clock = clk;
+        rep_shift_en$11$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$11$q) begin
+            rwin$11$d = rview$11;
+        end
+        ent_rep$11 = rwin$11$q;
+        rwin$12$clock = clk;
+        rwin$12$d = rwin$12$q;
+        rep_shift_en$12$clock = clk;
+        rep_shift_en$12$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$12$q) begin
+            rwin$12$d = rview$12;
+        end
+        ent_rep$12 = rwin$12$q;
+        rwin$13$clock = clk;
+        rwin$13$d = rwin$13$q;
+        rep_shift_en$13$clock = clk;
+        rep_shift_en$13$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$13$q) begin
+            rwin$13$d = rview$13;
+        end
+        ent_rep$13 = rwin$13$q;
+        rwin$14$clock = clk;
+        rwin$14$d = rwin$14$q;
+        rep_shift_en$14$clock = clk;
+        rep_shift_en$14$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$14$q) begin
+            rwin$14$d = rview$14;
+        end
+        ent_rep$14 = rwin$14$q;
+        rwin$15$clock = clk;
+        rwin$15$d = rwin$15$q;
+        rep_shift_en$15$clock = clk;
+        rep_shift_en$15$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$15$q) begin
+            rwin$15$d = rview$15;
+        end
+        ent_rep$15 = rwin$15$q;
+        rwin$16$clock = clk;
+        rwin$16$d = rwin$16$q;
+        rep_shift_en$16$clock = clk;
+        rep_shift_en$16$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$16$q) begin
+            rwin$16$d = rview$16;
+        end
+        ent_rep$16 = rwin$16$q;
+        rwin$17$clock = clk;
+        rwin$17$d = rwin$17$q;
+        rep_shift_en$17$clock = clk;
+        rep_shift_en$17$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$17$q) begin
+            rwin$17$d = rview$17;
+        end
+        ent_rep$17 = rwin$17$q;
+        rwin$18$clock = clk;
+        rwin$18$d = rwin$18$q;
+        rep_shift_en$18$clock = clk;
+        rep_shift_en$18$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$18$q) begin
+            rwin$18$d = rview$18;
+        end
+        ent_rep$18 = rwin$18$q;
+        rwin$19$clock = clk;
+        rwin$19$d = rwin$19$q;
+        rep_shift_en$19$clock = clk;
+        rep_shift_en$19$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$19$q) begin
+            rwin$19$d = rview$19;
+        end
+        ent_rep$19 = rwin$19$q;
+        rwin$20$clock = clk;
+        rwin$20$d = rwin$20$q;
+        rep_shift_en$20$clock = clk;
+        rep_shift_en$20$d = rv_valid$4$q & ~rst;
+        if (rep_shift_en$20$q) begin
+            rwin$20$d = rview$20;
+        end
+        ent_rep$20 = rwin$20$q;
+        if (rst) begin
+            rv_valid$0$d = 1'b0;
+            rv_valid$1$d = 1'b0;
+            rv_valid$2$d = 1'b0;
+            rv_valid$3$d = 1'b0;
+            rv_valid$4$d = 1'b0;
+            rv_valid$5$d = 1'b0;
+        end
+    end
+
+endmodule // fcc_window__rep_win_k7_668cf05b
+
+
+module fcc_window__rep_win__rep_shift_en__0_k7_668cf05b(clock,d,q);
 
     // Module arguments
     input wire  clock;
@@ -63634,31 +64106,10 @@ module fcc_window__rep_shift_en__0_k7_668cf05b(clock,d,q);
     always @(*) begin
         q = held;
     end
-endmodule // fcc_window__rep_shift_en__0_k7_668cf05b
+endmodule // fcc_window__rep_win__rep_shift_en__0_k7_668cf05b
 
 
-module fcc_window__rep_shift_en__1_k7_668cf05b(clock,d,q);
-
-    // Module arguments
-    input wire  clock;
-    input wire  d;
-    output reg  q;
-
-    // Update code (custom)
-    (* keep = "true" *) reg held;
-    initial begin
-        held = 1'h0;
-    end
-    (* keep = "true" *) always @(posedge clock) begin
-        held <= d;
-    end
-    always @(*) begin
-        q = held;
-    end
-endmodule // fcc_window__rep_shift_en__1_k7_668cf05b
-
-
-module fcc_window__rep_shift_en__10_k7_668cf05b(clock,d,q);
+module fcc_window__rep_win__rep_shift_en__1_k7_668cf05b(clock,d,q);
 
     // Module arguments
     input wire  clock;
@@ -63676,31 +64127,10 @@ module fcc_window__rep_shift_en__10_k7_668cf05b(clock,d,q);
     always @(*) begin
         q = held;
     end
-endmodule // fcc_window__rep_shift_en__10_k7_668cf05b
+endmodule // fcc_window__rep_win__rep_shift_en__1_k7_668cf05b
 
 
-module fcc_window__rep_shift_en__11_k7_668cf05b(clock,d,q);
-
-    // Module arguments
-    input wire  clock;
-    input wire  d;
-    output reg  q;
-
-    // Update code (custom)
-    (* keep = "true" *) reg held;
-    initial begin
-        held = 1'h0;
-    end
-    (* keep = "true" *) always @(posedge clock) begin
-        held <= d;
-    end
-    always @(*) begin
-        q = held;
-    end
-endmodule // fcc_window__rep_shift_en__11_k7_668cf05b
-
-
-module fcc_window__rep_shift_en__12_k7_668cf05b(clock,d,q);
+module fcc_window__rep_win__rep_shift_en__10_k7_668cf05b(clock,d,q);
 
     // Module arguments
     input wire  clock;
@@ -63718,31 +64148,10 @@ module fcc_window__rep_shift_en__12_k7_668cf05b(clock,d,q);
     always @(*) begin
         q = held;
     end
-endmodule // fcc_window__rep_shift_en__12_k7_668cf05b
+endmodule // fcc_window__rep_win__rep_shift_en__10_k7_668cf05b
 
 
-module fcc_window__rep_shift_en__13_k7_668cf05b(clock,d,q);
-
-    // Module arguments
-    input wire  clock;
-    input wire  d;
-    output reg  q;
-
-    // Update code (custom)
-    (* keep = "true" *) reg held;
-    initial begin
-        held = 1'h0;
-    end
-    (* keep = "true" *) always @(posedge clock) begin
-        held <= d;
-    end
-    always @(*) begin
-        q = held;
-    end
-endmodule // fcc_window__rep_shift_en__13_k7_668cf05b
-
-
-module fcc_window__rep_shift_en__14_k7_668cf05b(clock,d,q);
+module fcc_window__rep_win__rep_shift_en__11_k7_668cf05b(clock,d,q);
 
     // Module arguments
     input wire  clock;
@@ -63760,31 +64169,10 @@ module fcc_window__rep_shift_en__14_k7_668cf05b(clock,d,q);
     always @(*) begin
         q = held;
     end
-endmodule // fcc_window__rep_shift_en__14_k7_668cf05b
+endmodule // fcc_window__rep_win__rep_shift_en__11_k7_668cf05b
 
 
-module fcc_window__rep_shift_en__15_k7_668cf05b(clock,d,q);
-
-    // Module arguments
-    input wire  clock;
-    input wire  d;
-    output reg  q;
-
-    // Update code (custom)
-    (* keep = "true" *) reg held;
-    initial begin
-        held = 1'h0;
-    end
-    (* keep = "true" *) always @(posedge clock) begin
-        held <= d;
-    end
-    always @(*) begin
-        q = held;
-    end
-endmodule // fcc_window__rep_shift_en__15_k7_668cf05b
-
-
-module fcc_window__rep_shift_en__16_k7_668cf05b(clock,d,q);
+module fcc_window__rep_win__rep_shift_en__12_k7_668cf05b(clock,d,q);
 
     // Module arguments
     input wire  clock;
@@ -63802,31 +64190,10 @@ module fcc_window__rep_shift_en__16_k7_668cf05b(clock,d,q);
     always @(*) begin
         q = held;
     end
-endmodule // fcc_window__rep_shift_en__16_k7_668cf05b
+endmodule // fcc_window__rep_win__rep_shift_en__12_k7_668cf05b
 
 
-module fcc_window__rep_shift_en__17_k7_668cf05b(clock,d,q);
-
-    // Module arguments
-    input wire  clock;
-    input wire  d;
-    output reg  q;
-
-    // Update code (custom)
-    (* keep = "true" *) reg held;
-    initial begin
-        held = 1'h0;
-    end
-    (* keep = "true" *) always @(posedge clock) begin
-        held <= d;
-    end
-    always @(*) begin
-        q = held;
-    end
-endmodule // fcc_window__rep_shift_en__17_k7_668cf05b
-
-
-module fcc_window__rep_shift_en__18_k7_668cf05b(clock,d,q);
+module fcc_window__rep_win__rep_shift_en__13_k7_668cf05b(clock,d,q);
 
     // Module arguments
     input wire  clock;
@@ -63844,31 +64211,10 @@ module fcc_window__rep_shift_en__18_k7_668cf05b(clock,d,q);
     always @(*) begin
         q = held;
     end
-endmodule // fcc_window__rep_shift_en__18_k7_668cf05b
+endmodule // fcc_window__rep_win__rep_shift_en__13_k7_668cf05b
 
 
-module fcc_window__rep_shift_en__19_k7_668cf05b(clock,d,q);
-
-    // Module arguments
-    input wire  clock;
-    input wire  d;
-    output reg  q;
-
-    // Update code (custom)
-    (* keep = "true" *) reg held;
-    initial begin
-        held = 1'h0;
-    end
-    (* keep = "true" *) always @(posedge clock) begin
-        held <= d;
-    end
-    always @(*) begin
-        q = held;
-    end
-endmodule // fcc_window__rep_shift_en__19_k7_668cf05b
-
-
-module fcc_window__rep_shift_en__2_k7_668cf05b(clock,d,q);
+module fcc_window__rep_win__rep_shift_en__14_k7_668cf05b(clock,d,q);
 
     // Module arguments
     input wire  clock;
@@ -63886,31 +64232,10 @@ module fcc_window__rep_shift_en__2_k7_668cf05b(clock,d,q);
     always @(*) begin
         q = held;
     end
-endmodule // fcc_window__rep_shift_en__2_k7_668cf05b
+endmodule // fcc_window__rep_win__rep_shift_en__14_k7_668cf05b
 
 
-module fcc_window__rep_shift_en__20_k7_668cf05b(clock,d,q);
-
-    // Module arguments
-    input wire  clock;
-    input wire  d;
-    output reg  q;
-
-    // Update code (custom)
-    (* keep = "true" *) reg held;
-    initial begin
-        held = 1'h0;
-    end
-    (* keep = "true" *) always @(posedge clock) begin
-        held <= d;
-    end
-    always @(*) begin
-        q = held;
-    end
-endmodule // fcc_window__rep_shift_en__20_k7_668cf05b
-
-
-module fcc_window__rep_shift_en__3_k7_668cf05b(clock,d,q);
+module fcc_window__rep_win__rep_shift_en__15_k7_668cf05b(clock,d,q);
 
     // Module arguments
     input wire  clock;
@@ -63928,31 +64253,10 @@ module fcc_window__rep_shift_en__3_k7_668cf05b(clock,d,q);
     always @(*) begin
         q = held;
     end
-endmodule // fcc_window__rep_shift_en__3_k7_668cf05b
+endmodule // fcc_window__rep_win__rep_shift_en__15_k7_668cf05b
 
 
-module fcc_window__rep_shift_en__4_k7_668cf05b(clock,d,q);
-
-    // Module arguments
-    input wire  clock;
-    input wire  d;
-    output reg  q;
-
-    // Update code (custom)
-    (* keep = "true" *) reg held;
-    initial begin
-        held = 1'h0;
-    end
-    (* keep = "true" *) always @(posedge clock) begin
-        held <= d;
-    end
-    always @(*) begin
-        q = held;
-    end
-endmodule // fcc_window__rep_shift_en__4_k7_668cf05b
-
-
-module fcc_window__rep_shift_en__5_k7_668cf05b(clock,d,q);
+module fcc_window__rep_win__rep_shift_en__16_k7_668cf05b(clock,d,q);
 
     // Module arguments
     input wire  clock;
@@ -63970,31 +64274,10 @@ module fcc_window__rep_shift_en__5_k7_668cf05b(clock,d,q);
     always @(*) begin
         q = held;
     end
-endmodule // fcc_window__rep_shift_en__5_k7_668cf05b
+endmodule // fcc_window__rep_win__rep_shift_en__16_k7_668cf05b
 
 
-module fcc_window__rep_shift_en__6_k7_668cf05b(clock,d,q);
-
-    // Module arguments
-    input wire  clock;
-    input wire  d;
-    output reg  q;
-
-    // Update code (custom)
-    (* keep = "true" *) reg held;
-    initial begin
-        held = 1'h0;
-    end
-    (* keep = "true" *) always @(posedge clock) begin
-        held <= d;
-    end
-    always @(*) begin
-        q = held;
-    end
-endmodule // fcc_window__rep_shift_en__6_k7_668cf05b
-
-
-module fcc_window__rep_shift_en__7_k7_668cf05b(clock,d,q);
+module fcc_window__rep_win__rep_shift_en__17_k7_668cf05b(clock,d,q);
 
     // Module arguments
     input wire  clock;
@@ -64012,31 +64295,10 @@ module fcc_window__rep_shift_en__7_k7_668cf05b(clock,d,q);
     always @(*) begin
         q = held;
     end
-endmodule // fcc_window__rep_shift_en__7_k7_668cf05b
+endmodule // fcc_window__rep_win__rep_shift_en__17_k7_668cf05b
 
 
-module fcc_window__rep_shift_en__8_k7_668cf05b(clock,d,q);
-
-    // Module arguments
-    input wire  clock;
-    input wire  d;
-    output reg  q;
-
-    // Update code (custom)
-    (* keep = "true" *) reg held;
-    initial begin
-        held = 1'h0;
-    end
-    (* keep = "true" *) always @(posedge clock) begin
-        held <= d;
-    end
-    always @(*) begin
-        q = held;
-    end
-endmodule // fcc_window__rep_shift_en__8_k7_668cf05b
-
-
-module fcc_window__rep_shift_en__9_k7_668cf05b(clock,d,q);
+module fcc_window__rep_win__rep_shift_en__18_k7_668cf05b(clock,d,q);
 
     // Module arguments
     input wire  clock;
@@ -64054,10 +64316,220 @@ module fcc_window__rep_shift_en__9_k7_668cf05b(clock,d,q);
     always @(*) begin
         q = held;
     end
-endmodule // fcc_window__rep_shift_en__9_k7_668cf05b
+endmodule // fcc_window__rep_win__rep_shift_en__18_k7_668cf05b
 
 
-module fcc_window__rlb__0_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
+module fcc_window__rep_win__rep_shift_en__19_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__rep_win__rep_shift_en__19_k7_668cf05b
+
+
+module fcc_window__rep_win__rep_shift_en__2_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__rep_win__rep_shift_en__2_k7_668cf05b
+
+
+module fcc_window__rep_win__rep_shift_en__20_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__rep_win__rep_shift_en__20_k7_668cf05b
+
+
+module fcc_window__rep_win__rep_shift_en__3_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__rep_win__rep_shift_en__3_k7_668cf05b
+
+
+module fcc_window__rep_win__rep_shift_en__4_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__rep_win__rep_shift_en__4_k7_668cf05b
+
+
+module fcc_window__rep_win__rep_shift_en__5_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__rep_win__rep_shift_en__5_k7_668cf05b
+
+
+module fcc_window__rep_win__rep_shift_en__6_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__rep_win__rep_shift_en__6_k7_668cf05b
+
+
+module fcc_window__rep_win__rep_shift_en__7_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__rep_win__rep_shift_en__7_k7_668cf05b
+
+
+module fcc_window__rep_win__rep_shift_en__8_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__rep_win__rep_shift_en__8_k7_668cf05b
+
+
+module fcc_window__rep_win__rep_shift_en__9_k7_668cf05b(clock,d,q);
+
+    // Module arguments
+    input wire  clock;
+    input wire  d;
+    output reg  q;
+
+    // Update code (custom)
+    (* keep = "true" *) reg held;
+    initial begin
+        held = 1'h0;
+    end
+    (* keep = "true" *) always @(posedge clock) begin
+        held <= d;
+    end
+    always @(*) begin
+        q = held;
+    end
+endmodule // fcc_window__rep_win__rep_shift_en__9_k7_668cf05b
+
+
+module fcc_window__rep_win__rlb__0_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
 
     // Module arguments
     input wire  clk;
@@ -64086,42 +64558,10 @@ module fcc_window__rlb__0_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,w
         end
         read_data <= rd1;
     end
-endmodule // fcc_window__rlb__0_k7_668cf05b
+endmodule // fcc_window__rep_win__rlb__0_k7_668cf05b
 
 
-module fcc_window__rlb__1_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
-
-    // Module arguments
-    input wire  clk;
-    input wire  read_en;
-    input wire  [11:0] read_addr;
-    output reg  [15:0] read_data;
-    input wire  write_en;
-    input wire  [11:0] write_addr;
-    input wire  [15:0] write_data;
-
-    // Update code (custom)
-    // Address bits above the depth and data bits above the stored width are
-    // not used by this instance.
-    /* verilator lint_off UNUSEDSIGNAL */
-    wire unused_ok = &{1'b0, read_addr[11:11], write_addr[11:11]};
-    /* verilator lint_on UNUSEDSIGNAL */
-    reg [15:0] mem [0:2047];
-    // The block RAM's output register, then a fabric register.
-    reg [15:0] rd1;
-    always @(posedge clk) begin
-        if (read_en) begin
-            rd1 <= mem[read_addr[10:0]];
-        end
-        if (write_en) begin
-            mem[write_addr[10:0]] <= write_data;
-        end
-        read_data <= rd1;
-    end
-endmodule // fcc_window__rlb__1_k7_668cf05b
-
-
-module fcc_window__rlb__2_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
+module fcc_window__rep_win__rlb__1_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
 
     // Module arguments
     input wire  clk;
@@ -64150,10 +64590,232 @@ module fcc_window__rlb__2_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,w
         end
         read_data <= rd1;
     end
-endmodule // fcc_window__rlb__2_k7_668cf05b
+endmodule // fcc_window__rep_win__rlb__1_k7_668cf05b
 
 
-module fcc_window__row_in__0_k7_668cf05b(d,q,clock);
+module fcc_window__rep_win__rlb__2_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
+
+    // Module arguments
+    input wire  clk;
+    input wire  read_en;
+    input wire  [11:0] read_addr;
+    output reg  [15:0] read_data;
+    input wire  write_en;
+    input wire  [11:0] write_addr;
+    input wire  [15:0] write_data;
+
+    // Update code (custom)
+    // Address bits above the depth and data bits above the stored width are
+    // not used by this instance.
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire unused_ok = &{1'b0, read_addr[11:11], write_addr[11:11]};
+    /* verilator lint_on UNUSEDSIGNAL */
+    reg [15:0] mem [0:2047];
+    // The block RAM's output register, then a fabric register.
+    reg [15:0] rd1;
+    always @(posedge clk) begin
+        if (read_en) begin
+            rd1 <= mem[read_addr[10:0]];
+        end
+        if (write_en) begin
+            mem[write_addr[10:0]] <= write_data;
+        end
+        read_data <= rd1;
+    end
+endmodule // fcc_window__rep_win__rlb__2_k7_668cf05b
+
+
+module fcc_window__rep_win__rv_col__0_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rep_win__rv_col__0_k7_668cf05b
+
+
+module fcc_window__rep_win__rv_col__1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rep_win__rv_col__1_k7_668cf05b
+
+
+module fcc_window__rep_win__rv_col__2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rep_win__rv_col__2_k7_668cf05b
+
+
+module fcc_window__rep_win__rv_col__3_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rep_win__rv_col__3_k7_668cf05b
+
+
+module fcc_window__rep_win__rv_col__4_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rep_win__rv_col__4_k7_668cf05b
+
+
+module fcc_window__rep_win__rv_col__5_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rep_win__rv_col__5_k7_668cf05b
+
+
+module fcc_window__rep_win__rv_rdcol__0_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rep_win__rv_rdcol__0_k7_668cf05b
+
+
+module fcc_window__rep_win__rv_rdcol__1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rep_win__rv_rdcol__1_k7_668cf05b
+
+
+module fcc_window__rep_win__rv_rdcol__2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rep_win__rv_rdcol__2_k7_668cf05b
+
+
+module fcc_window__rep_win__rv_rdcol__3_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [11:0] d;
+    output reg  [11:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 12'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rep_win__rv_rdcol__3_k7_668cf05b
+
+
+module fcc_window__rep_win__rv_valid__0_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -64169,29 +64831,10 @@ module fcc_window__row_in__0_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__row_in__0_k7_668cf05b
+endmodule // fcc_window__rep_win__rv_valid__0_k7_668cf05b
 
 
-module fcc_window__row_in__1_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__row_in__1_k7_668cf05b
-
-
-module fcc_window__row_in__2_k7_668cf05b(d,q,clock);
+module fcc_window__rep_win__rv_valid__1_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -64207,200 +64850,10 @@ module fcc_window__row_in__2_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__row_in__2_k7_668cf05b
+endmodule // fcc_window__rep_win__rv_valid__1_k7_668cf05b
 
 
-module fcc_window__rv_col__0_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 12'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rv_col__0_k7_668cf05b
-
-
-module fcc_window__rv_col__1_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 12'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rv_col__1_k7_668cf05b
-
-
-module fcc_window__rv_col__2_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 12'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rv_col__2_k7_668cf05b
-
-
-module fcc_window__rv_col__3_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 12'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rv_col__3_k7_668cf05b
-
-
-module fcc_window__rv_col__4_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 12'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rv_col__4_k7_668cf05b
-
-
-module fcc_window__rv_col__5_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 12'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rv_col__5_k7_668cf05b
-
-
-module fcc_window__rv_rdcol__0_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 12'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rv_rdcol__0_k7_668cf05b
-
-
-module fcc_window__rv_rdcol__1_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 12'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rv_rdcol__1_k7_668cf05b
-
-
-module fcc_window__rv_rdcol__2_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 12'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rv_rdcol__2_k7_668cf05b
-
-
-module fcc_window__rv_rdcol__3_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [11:0] d;
-    output reg  [11:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 12'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rv_rdcol__3_k7_668cf05b
-
-
-module fcc_window__rv_valid__0_k7_668cf05b(d,q,clock);
+module fcc_window__rep_win__rv_valid__2_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -64416,29 +64869,10 @@ module fcc_window__rv_valid__0_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__rv_valid__0_k7_668cf05b
+endmodule // fcc_window__rep_win__rv_valid__2_k7_668cf05b
 
 
-module fcc_window__rv_valid__1_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rv_valid__1_k7_668cf05b
-
-
-module fcc_window__rv_valid__2_k7_668cf05b(d,q,clock);
+module fcc_window__rep_win__rv_valid__3_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -64454,29 +64888,10 @@ module fcc_window__rv_valid__2_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__rv_valid__2_k7_668cf05b
+endmodule // fcc_window__rep_win__rv_valid__3_k7_668cf05b
 
 
-module fcc_window__rv_valid__3_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  d;
-    output reg  q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 1'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rv_valid__3_k7_668cf05b
-
-
-module fcc_window__rv_valid__4_k7_668cf05b(d,q,clock);
+module fcc_window__rep_win__rv_valid__4_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -64492,10 +64907,10 @@ module fcc_window__rv_valid__4_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__rv_valid__4_k7_668cf05b
+endmodule // fcc_window__rep_win__rv_valid__4_k7_668cf05b
 
 
-module fcc_window__rv_valid__5_k7_668cf05b(d,q,clock);
+module fcc_window__rep_win__rv_valid__5_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  d;
@@ -64511,29 +64926,10 @@ module fcc_window__rv_valid__5_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__rv_valid__5_k7_668cf05b
+endmodule // fcc_window__rep_win__rv_valid__5_k7_668cf05b
 
 
-module fcc_window__rwin__0_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rwin__0_k7_668cf05b
-
-
-module fcc_window__rwin__1_k7_668cf05b(d,q,clock);
+module fcc_window__rep_win__rwin__0_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -64549,29 +64945,10 @@ module fcc_window__rwin__1_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__rwin__1_k7_668cf05b
+endmodule // fcc_window__rep_win__rwin__0_k7_668cf05b
 
 
-module fcc_window__rwin__10_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rwin__10_k7_668cf05b
-
-
-module fcc_window__rwin__11_k7_668cf05b(d,q,clock);
+module fcc_window__rep_win__rwin__1_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -64587,29 +64964,10 @@ module fcc_window__rwin__11_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__rwin__11_k7_668cf05b
+endmodule // fcc_window__rep_win__rwin__1_k7_668cf05b
 
 
-module fcc_window__rwin__12_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rwin__12_k7_668cf05b
-
-
-module fcc_window__rwin__13_k7_668cf05b(d,q,clock);
+module fcc_window__rep_win__rwin__10_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -64625,29 +64983,10 @@ module fcc_window__rwin__13_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__rwin__13_k7_668cf05b
+endmodule // fcc_window__rep_win__rwin__10_k7_668cf05b
 
 
-module fcc_window__rwin__14_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rwin__14_k7_668cf05b
-
-
-module fcc_window__rwin__15_k7_668cf05b(d,q,clock);
+module fcc_window__rep_win__rwin__11_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -64663,29 +65002,10 @@ module fcc_window__rwin__15_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__rwin__15_k7_668cf05b
+endmodule // fcc_window__rep_win__rwin__11_k7_668cf05b
 
 
-module fcc_window__rwin__16_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rwin__16_k7_668cf05b
-
-
-module fcc_window__rwin__17_k7_668cf05b(d,q,clock);
+module fcc_window__rep_win__rwin__12_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -64701,29 +65021,10 @@ module fcc_window__rwin__17_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__rwin__17_k7_668cf05b
+endmodule // fcc_window__rep_win__rwin__12_k7_668cf05b
 
 
-module fcc_window__rwin__18_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rwin__18_k7_668cf05b
-
-
-module fcc_window__rwin__19_k7_668cf05b(d,q,clock);
+module fcc_window__rep_win__rwin__13_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -64739,29 +65040,10 @@ module fcc_window__rwin__19_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__rwin__19_k7_668cf05b
+endmodule // fcc_window__rep_win__rwin__13_k7_668cf05b
 
 
-module fcc_window__rwin__2_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rwin__2_k7_668cf05b
-
-
-module fcc_window__rwin__20_k7_668cf05b(d,q,clock);
+module fcc_window__rep_win__rwin__14_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -64777,29 +65059,10 @@ module fcc_window__rwin__20_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__rwin__20_k7_668cf05b
+endmodule // fcc_window__rep_win__rwin__14_k7_668cf05b
 
 
-module fcc_window__rwin__3_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rwin__3_k7_668cf05b
-
-
-module fcc_window__rwin__4_k7_668cf05b(d,q,clock);
+module fcc_window__rep_win__rwin__15_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -64815,29 +65078,10 @@ module fcc_window__rwin__4_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__rwin__4_k7_668cf05b
+endmodule // fcc_window__rep_win__rwin__15_k7_668cf05b
 
 
-module fcc_window__rwin__5_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rwin__5_k7_668cf05b
-
-
-module fcc_window__rwin__6_k7_668cf05b(d,q,clock);
+module fcc_window__rep_win__rwin__16_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -64853,29 +65097,10 @@ module fcc_window__rwin__6_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__rwin__6_k7_668cf05b
+endmodule // fcc_window__rep_win__rwin__16_k7_668cf05b
 
 
-module fcc_window__rwin__7_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rwin__7_k7_668cf05b
-
-
-module fcc_window__rwin__8_k7_668cf05b(d,q,clock);
+module fcc_window__rep_win__rwin__17_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -64891,10 +65116,10 @@ module fcc_window__rwin__8_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__rwin__8_k7_668cf05b
+endmodule // fcc_window__rep_win__rwin__17_k7_668cf05b
 
 
-module fcc_window__rwin__9_k7_668cf05b(d,q,clock);
+module fcc_window__rep_win__rwin__18_k7_668cf05b(d,q,clock);
 
     // Module arguments
     input wire  [15:0] d;
@@ -64910,7 +65135,197 @@ module fcc_window__rwin__9_k7_668cf05b(d,q,clock);
        q <= d;
     end
 
-endmodule // fcc_window__rwin__9_k7_668cf05b
+endmodule // fcc_window__rep_win__rwin__18_k7_668cf05b
+
+
+module fcc_window__rep_win__rwin__19_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rep_win__rwin__19_k7_668cf05b
+
+
+module fcc_window__rep_win__rwin__2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rep_win__rwin__2_k7_668cf05b
+
+
+module fcc_window__rep_win__rwin__20_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rep_win__rwin__20_k7_668cf05b
+
+
+module fcc_window__rep_win__rwin__3_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rep_win__rwin__3_k7_668cf05b
+
+
+module fcc_window__rep_win__rwin__4_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rep_win__rwin__4_k7_668cf05b
+
+
+module fcc_window__rep_win__rwin__5_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rep_win__rwin__5_k7_668cf05b
+
+
+module fcc_window__rep_win__rwin__6_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rep_win__rwin__6_k7_668cf05b
+
+
+module fcc_window__rep_win__rwin__7_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rep_win__rwin__7_k7_668cf05b
+
+
+module fcc_window__rep_win__rwin__8_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rep_win__rwin__8_k7_668cf05b
+
+
+module fcc_window__rep_win__rwin__9_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rep_win__rwin__9_k7_668cf05b
 
 
 module fcc_window__shift_en__0_k7_668cf05b(clock,d,q);

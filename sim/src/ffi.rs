@@ -38,7 +38,9 @@ pub trait CStruct {
 }
 
 /// Declare a `#[repr(C)]` struct of fixed-width integers and implement
-/// [`CStruct`] for it from the same field list.
+/// [`CStruct`] for it from the same field list. Exported, so that a plain
+/// block's bench declares its ports' structs in its own test file.
+#[macro_export]
 macro_rules! c_struct {
     (
         $(#[$meta:meta])*
@@ -71,7 +73,7 @@ macro_rules! c_struct {
         }
     };
 }
-pub(crate) use c_struct;
+pub use crate::c_struct;
 
 /// The C text of one struct: `(C type, field, Rust offset)` in order.
 pub fn decl(name: &str, size: usize, fields: &[(&str, &str, usize)]) -> String {

@@ -32,6 +32,8 @@ pub enum BenchBlock {
     Credits,
     /// The frame-phase machine `FccFramePhase`.
     FramePhase,
+    /// The sort filter's centre pipeline `FccFiltCentre`.
+    FiltCentre,
 }
 
 /// One row of the table: the module's name before the configuration
@@ -59,7 +61,7 @@ impl Row {
 
 impl BenchBlock {
     /// Every block with a bench.
-    pub const ALL: [BenchBlock; 10] = [
+    pub const ALL: [BenchBlock; 11] = [
         BenchBlock::Regs,
         BenchBlock::AxilAdapter,
         BenchBlock::MergeTable,
@@ -70,6 +72,7 @@ impl BenchBlock {
         BenchBlock::InputStage,
         BenchBlock::Credits,
         BenchBlock::FramePhase,
+        BenchBlock::FiltCentre,
     ];
 
     fn row(self) -> Row {
@@ -127,6 +130,14 @@ impl BenchBlock {
                 },
                 waivers: lint::enum_block_waivers,
             },
+            BenchBlock::FiltCentre => Row::plain("fcc_filt_centre", |p| {
+                let levels = crate::types::clog2(p.window_positions());
+                gen(
+                    p,
+                    crate::fcc_filt_centre::FccFiltCentre::new(levels),
+                    "fcc_filt_centre",
+                )
+            }),
         }
     }
 

@@ -13,17 +13,8 @@
 use rust_hdl::prelude::*;
 
 use crate::fcc_beat_queue::{Beat, QUEUE_BEATS};
-use crate::fcc_slot_mux::{SRC_CARRIED, SRC_NEW, SRC_ZERO};
+use crate::fcc_run_number::{FccRunNumber, CODE_EMPTY};
 use crate::types::{kb, vec_of, FbWord};
-
-// A slot's source is 1 + the labelled runs started up to it: the carried
-// run with none, `SRC_NEW + k` for the k-th.
-const _: () = assert!(SRC_NEW == SRC_CARRIED + 1);
-
-/// Frame-buffer codes (`FccIntra::state`).
-const CODE_EMPTY: u64 = 0;
-const CODE_LABELLED: u64 = 2;
-const CODE_UNLABELLED: u64 = 3;
 
 #[derive(LogicBlock)]
 pub struct FccRbPipeline {
@@ -71,18 +62,9 @@ pub struct FccRbPipeline {
     valid_s3: DFF<Bit>,
     beat_s3: DFF<Beat>,
     issue: Signal<Local, Bit>,
-    /// Code of each slot; the slots that start a labelled run (bit i:
-    /// slot i); those up to slot i; the labelled runs started in the beat;
-    /// each slot's source.
+    /// Code of each slot, and the labelled runs it starts numbered.
     code: Vec<Signal<Local, Bits<2>>>,
-    labelled: Signal<Local, Bits<4>>,
-    labelled_upto: Vec<Signal<Local, Bits<4>>>,
-    need: Signal<Local, Bits<3>>,
-    slot_src: Vec<Signal<Local, Bits<3>>>,
-    /// The run before slot i (after the beat, at 4) has label 0.
-    zero_run: Vec<Signal<Local, Bit>>,
-    /// Source of the run carried into the next beat.
-    run_src: Signal<Local, Bits<3>>,
+    run_number: FccRunNumber,
     pos_in_word: Signal<Local, Bits<2>>,
     /// The bits of a beat's position in its word that can be set (the
     /// pixel counter steps by the labels per beat): none for 4 labels per
@@ -94,19 +76,7 @@ pub struct FccRbPipeline {
     slot_used: Vec<Constant<Bits<8>>>,
     keep_n: Vec<Constant<Bits<8>>>,
     labels: Vec<Constant<Bits<3>>>,
-    /// Bit i; bits 0 to i; the 16 sets of labelled slots, the labelled
-    /// runs in each (`count_of`) and 1 + that (`src_of`): looked up, not
-    /// added, so the decode is no carry chain.
-    slot_bit: Vec<Constant<Bits<4>>>,
-    upto_mask: Vec<Constant<Bits<4>>>,
-    set: Vec<Constant<Bits<4>>>,
-    count_of: Vec<Constant<Bits<3>>>,
-    src_of: Vec<Constant<Bits<3>>>,
-    zero4: Constant<Bits<4>>,
     code_empty: Constant<Bits<2>>,
-    code_labelled: Constant<Bits<2>>,
-    code_unlabelled: Constant<Bits<2>>,
-    src_zero: Constant<Bits<3>>,
     max_in_flight: Constant<Bits<3>>,
     lpb3: Constant<Bits<3>>,
     lpb20: Constant<Bits<20>>,
@@ -156,12 +126,7 @@ impl FccRbPipeline {
             beat_s3: Default::default(),
             issue: Default::default(),
             code: vec_of(4),
-            labelled: Default::default(),
-            labelled_upto: vec_of(4),
-            need: Default::default(),
-            slot_src: vec_of(4),
-            zero_run: vec_of(5),
-            run_src: Default::default(),
+            run_number: Default::default(),
             pos_in_word: Default::default(),
             word_pos_bits: kb((4 - l as u64) & 3),
             pos: (0..4).map(|i| kb(i as u64)).collect(),
@@ -169,18 +134,7 @@ impl FccRbPipeline {
             slot_used: (0..l).map(|i| kb(1u64 << (2 * i))).collect(),
             keep_n: (0..=4).map(|n| kb((1u64 << (2 * n)) - 1)).collect(),
             labels: (0..=4).map(|n| kb(n as u64)).collect(),
-            slot_bit: (0..4).map(|i| kb(1u64 << i)).collect(),
-            upto_mask: (0..4).map(|i| kb((2u64 << i) - 1)).collect(),
-            set: (0..16).map(|m| kb(m as u64)).collect(),
-            count_of: (0..16u64).map(|m| kb(m.count_ones() as u64)).collect(),
-            src_of: (0..16u64)
-                .map(|m| kb(SRC_CARRIED + m.count_ones() as u64))
-                .collect(),
-            zero4: kb(0),
             code_empty: kb(CODE_EMPTY),
-            code_labelled: kb(CODE_LABELLED),
-            code_unlabelled: kb(CODE_UNLABELLED),
-            src_zero: kb(SRC_ZERO),
             max_in_flight: kb(QUEUE_BEATS as u64),
             lpb3: kb(l as u64),
             lpb20: kb(l as u64),
@@ -269,11 +223,7 @@ impl Logic for FccRbPipeline {
         self.last_s2.d.next = self.last_s1.q.val();
         self.first_s2.d.next = self.first_s1.q.val();
         // ---- Stage 2: pick the beat's codes from the word, then number the
-        // labelled runs that start in it. A used slot's source is 0 when it
-        // is empty or its run is unlabelled (`zero_run`: an unlabelled run
-        // started last, or none started and the beat is the frame's first),
-        // else 1 + the labelled runs started up to it (with none started,
-        // 1: the carried run; with the k-th started last, SRC_NEW + k).
+        // labelled runs that start in it (`FccRunNumber`).
         for i in 0..4 {
             self.code[i].next = self.code_empty.val();
         }
@@ -295,50 +245,17 @@ impl Logic for FccRbPipeline {
                 self.code[i].next = self.code_empty.val();
             }
         }
-        self.zero_run[0].next = self.first_s2.q.val();
-        self.labelled.next = self.zero4.val();
         for i in 0..4 {
-            self.zero_run[i + 1].next = self.zero_run[i].val();
-            if self.code[i].val() == self.code_labelled.val() {
-                self.labelled.next = self.labelled.val() | self.slot_bit[i].val();
-                self.zero_run[i + 1].next = false;
-            }
-            if self.code[i].val() == self.code_unlabelled.val() {
-                self.zero_run[i + 1].next = true;
-            }
+            self.run_number.code[i].next = self.code[i].val();
         }
-        // Labelled runs started up to each slot, looked up from the set of
-        // labelled slots up to it.
-        for i in 0..4 {
-            self.labelled_upto[i].next = self.labelled.val() & self.upto_mask[i].val();
-            self.slot_src[i].next = self.src_zero.val();
-            for m in 0..16 {
-                if self.labelled_upto[i].val() == self.set[m].val() {
-                    self.slot_src[i].next = self.src_of[m].val();
-                }
-            }
-            if self.zero_run[i + 1].val() | (self.code[i].val() == self.code_empty.val()) {
-                self.slot_src[i].next = self.src_zero.val();
-            }
-        }
-        self.need.next = self.zero3.val();
-        self.run_src.next = self.src_zero.val();
-        for m in 0..16 {
-            if self.labelled.val() == self.set[m].val() {
-                self.need.next = self.count_of[m].val();
-                self.run_src.next = self.src_of[m].val();
-            }
-        }
-        if self.zero_run[4].val() {
-            self.run_src.next = self.src_zero.val();
-        }
+        self.run_number.first.next = self.first_s2.q.val();
         self.valid_s3.d.next = self.valid_s2.q.val();
-        self.beat_s3.d.next.s0 = self.slot_src[0].val();
-        self.beat_s3.d.next.s1 = self.slot_src[1].val();
-        self.beat_s3.d.next.s2 = self.slot_src[2].val();
-        self.beat_s3.d.next.s3 = self.slot_src[3].val();
-        self.beat_s3.d.next.run = self.run_src.val();
-        self.beat_s3.d.next.need = self.need.val();
+        self.beat_s3.d.next.s0 = self.run_number.src[0].val();
+        self.beat_s3.d.next.s1 = self.run_number.src[1].val();
+        self.beat_s3.d.next.s2 = self.run_number.src[2].val();
+        self.beat_s3.d.next.s3 = self.run_number.src[3].val();
+        self.beat_s3.d.next.run = self.run_number.run.val();
+        self.beat_s3.d.next.need = self.run_number.need.val();
         self.beat_s3.d.next.keep = self.keep_s2.q.val();
         self.beat_s3.d.next.last = self.last_s2.q.val();
         self.beat_valid.next = self.valid_s3.q.val();

@@ -29,13 +29,14 @@
 //! that the serializer picks its first join from flip-flops) show beside
 //! `rec` in SM+3.
 //!
+//! The centre itself (its run in S0, its fields and ring join from stage to
+//! stage) travels in `FccFiltCentre`.
+//!
 //! Reset: `rst` is the reset one cycle ahead. Every group of reset loads
 //! has its own registered copy (`FccKeepReg`), at most `MAX_FANOUT` loads
-//! each: `valid_rst` for the centre's valid flags and the record handshake;
-//! for minimum-tree stage i, `tree_rst[2i]` for the centre (33 flip-flops,
-//! reset whole so that the stage stays a flip-flop rather than a shift
-//! register) and `tree_rst[2i + 1]` for its ring join (32); and the match
-//! delay lines' own copies (`FccMatchDelay`).
+//! each: `valid_rst` for the record handshake and the write-back; the
+//! centre pipeline's copies (`FccFiltCentre`); and the match delay lines'
+//! own copies (`FccMatchDelay`).
 
 use fcc_params::FccParams;
 use rust_hdl::prelude::*;
@@ -43,6 +44,7 @@ use rust_hdl::prelude::*;
 use crate::fcc_any_or::FccAnyOr;
 use crate::fcc_fanout_net::FccFanoutNet;
 use crate::fcc_fanout_reg::FccFanoutReg;
+use crate::fcc_filt_centre::FccFiltCentre;
 use crate::fcc_first_set::FccFirstSet;
 use crate::fcc_group_or::{groups, FccGroupOr};
 use crate::fcc_keep_reg::FccKeepReg;
@@ -50,27 +52,6 @@ use crate::fcc_known_mask::FccKnownMask;
 use crate::fcc_match_delay::FccMatchDelay;
 use crate::fcc_min_tree::FccMinTree;
 use crate::types::{clog2, kb, vec_of, Ctr, CtrRec};
-
-/// What the filter carries about a centre from stage to stage.
-#[derive(Clone, Copy, Debug, PartialEq, Default, LogicStruct)]
-pub struct FiltCtr {
-    pub valid: Bit,
-    /// A labelled point: it can join.
-    pub elig: Bit,
-    /// Same label as the last labelled centre of the frame.
-    pub same_run: Bit,
-    pub c: Bits<16>,
-    pub col: Bits<12>,
-    pub last: Bit,
-    pub ring: Bit,
-}
-
-/// The centre's ring join (valid with `FiltCtr::ring`), carried beside it.
-#[derive(Clone, Copy, Debug, PartialEq, Default, LogicStruct)]
-pub struct RingJoin {
-    pub a: Bits<16>,
-    pub b: Bits<16>,
-}
 
 #[derive(LogicBlock)]
 pub struct FccSortFilter {
@@ -93,22 +74,8 @@ pub struct FccSortFilter {
     pub rec_first: Vec<Signal<Out, Bit>>,
     /// A valid centre that needs no record (its input credit returns).
     pub credit_drop: Signal<Out, Bit>,
-    // ---- S0.
-    last_label: DFF<Bits<16>>,
-    last_label_valid: DFF<Bit>,
-    ctr_s0: Signal<Local, FiltCtr>,
-    ring_s0: Signal<Local, RingJoin>,
-    // ---- The centre from stage to stage: S1, S2 .. SL, SM, SM+1, SM+2.
-    ctr_s1: FccFanoutReg<FiltCtr>,
-    ctr_tree: Vec<DFF<FiltCtr>>,
-    ctr_sm: FccFanoutReg<FiltCtr>,
-    ctr_sm1: DFF<FiltCtr>,
-    ctr_sm2: DFF<FiltCtr>,
-    ring_s1: DFF<RingJoin>,
-    ring_tree: Vec<DFF<RingJoin>>,
-    ring_sm: DFF<RingJoin>,
-    ring_sm1: DFF<RingJoin>,
-    ring_sm2: DFF<RingJoin>,
+    /// The centre from S0 to SM+2.
+    centre_pipe: FccFiltCentre,
     match_delay: FccMatchDelay,
     min_tree: FccMinTree,
     known_mask: FccKnownMask,
@@ -146,16 +113,11 @@ pub struct FccSortFilter {
     rec_push_q: FccFanoutReg<Bit>,
     credit_drop_q: DFF<Bit>,
     rec_q: DFF<CtrRec>,
-    // ---- Reset copies (see the module doc).
+    // ---- Reset copy (see the module doc).
     valid_rst: FccKeepReg<Bit>,
-    tree_rst: Vec<FccKeepReg<Bit>>,
-    ctr_zero: Constant<FiltCtr>,
-    ring_zero: Constant<RingJoin>,
     zero16: Constant<Bits<16>>,
     _n: usize,
     _groups: usize,
-    /// Levels of the minimum tree.
-    _l: usize,
 }
 
 impl FccSortFilter {
@@ -180,20 +142,7 @@ impl FccSortFilter {
             rec_keep: vec_of(n),
             rec_first: vec_of(n),
             credit_drop: Default::default(),
-            last_label: Default::default(),
-            last_label_valid: Default::default(),
-            ctr_s0: Default::default(),
-            ring_s0: Default::default(),
-            ctr_s1: Default::default(),
-            ctr_tree: vec_of(l - 1),
-            ctr_sm: Default::default(),
-            ctr_sm1: Default::default(),
-            ctr_sm2: Default::default(),
-            ring_s1: Default::default(),
-            ring_tree: vec_of(l - 1),
-            ring_sm: Default::default(),
-            ring_sm1: Default::default(),
-            ring_sm2: Default::default(),
+            centre_pipe: FccFiltCentre::new(l),
             match_delay: FccMatchDelay::new(k, h, l),
             min_tree: FccMinTree::new(n),
             // S1 .. SM+1.
@@ -223,13 +172,9 @@ impl FccSortFilter {
             credit_drop_q: Default::default(),
             rec_q: Default::default(),
             valid_rst: Default::default(),
-            tree_rst: vec_of(2 * (l - 1)),
-            ctr_zero: Constant::new(FiltCtr::default()),
-            ring_zero: Constant::new(RingJoin::default()),
             zero16: kb(0),
             _n: n,
             _groups: groups(n),
-            _l: l,
         }
     }
 }
@@ -240,16 +185,6 @@ impl Logic for FccSortFilter {
         dff_setup!(
             self,
             clk,
-            last_label,
-            last_label_valid,
-            ctr_s1,
-            ctr_sm,
-            ctr_sm1,
-            ctr_sm2,
-            ring_s1,
-            ring_sm,
-            ring_sm1,
-            ring_sm2,
             run_rep,
             run_rep_sm1,
             run_rep_sm2,
@@ -260,16 +195,8 @@ impl Logic for FccSortFilter {
             credit_drop_q,
             rec_q
         );
-        for i in 0..(self._l - 1) {
-            self.ctr_tree[i].clock.next = self.clk.val();
-            self.ring_tree[i].clock.next = self.clk.val();
-        }
         self.valid_rst.clock.next = self.clk.val();
         self.valid_rst.d.next = self.rst.val();
-        for i in 0..(2 * (self._l - 1)) {
-            self.tree_rst[i].clock.next = self.clk.val();
-            self.tree_rst[i].d.next = self.rst.val();
-        }
         for e in 0..self._n {
             self.later_min[e].clock.next = self.clk.val();
             self.is_run_rep[e].clock.next = self.clk.val();
@@ -281,44 +208,17 @@ impl Logic for FccSortFilter {
         self.known_mask.clk.next = self.clk.val();
         self.match_delay.clk.next = self.clk.val();
         self.match_delay.rst.next = self.rst.val();
-        // ---- S0: the centre's run and the adjacent duplicates.
-        self.ctr_s0.next.valid = self.centre.val().valid;
-        self.ctr_s0.next.elig = self.centre.val().valid & self.centre.val().lok;
-        self.ctr_s0.next.same_run =
-            self.last_label_valid.q.val() & (self.centre.val().label == self.last_label.q.val());
-        self.ctr_s0.next.c = self.centre.val().label;
-        self.ctr_s0.next.col = self.centre.val().col;
-        self.ctr_s0.next.last = self.centre.val().last;
-        self.ctr_s0.next.ring = self.centre.val().ring;
-        self.ring_s0.next.a = self.centre.val().ring_a;
-        self.ring_s0.next.b = self.centre.val().ring_b;
-        if self.centre.val().valid & self.centre.val().lok {
-            self.last_label.d.next = self.centre.val().label;
-            self.last_label_valid.d.next = true;
-        }
-        if self.centre.val().valid & self.centre.val().last {
-            self.last_label_valid.d.next = false;
-        }
-        self.ctr_s1.d.next = self.ctr_s0.val();
-        self.ctr_tree[0].d.next = self.ctr_s1.q.val();
-        for i in 1..(self._l - 1) {
-            self.ctr_tree[i].d.next = self.ctr_tree[i - 1].q.val();
-        }
-        for l in self._l..(self._l + 1) {
-            self.ctr_sm.d.next = self.ctr_tree[l - 2].q.val();
-        }
-        self.ctr_sm1.d.next = self.ctr_sm.q.val();
-        self.ctr_sm2.d.next = self.ctr_sm1.q.val();
-        self.ring_s1.d.next = self.ring_s0.val();
-        self.ring_tree[0].d.next = self.ring_s1.q.val();
-        for i in 1..(self._l - 1) {
-            self.ring_tree[i].d.next = self.ring_tree[i - 1].q.val();
-        }
-        for l in self._l..(self._l + 1) {
-            self.ring_sm.d.next = self.ring_tree[l - 2].q.val();
-        }
-        self.ring_sm1.d.next = self.ring_sm.q.val();
-        self.ring_sm2.d.next = self.ring_sm1.q.val();
+        // ---- S0: the centre's run; the matches into the tree and the delay lines.
+        self.centre_pipe.clk.next = self.clk.val();
+        self.centre_pipe.rst.next = self.rst.val();
+        self.centre_pipe.valid.next = self.centre.val().valid;
+        self.centre_pipe.lok.next = self.centre.val().lok;
+        self.centre_pipe.label.next = self.centre.val().label;
+        self.centre_pipe.col.next = self.centre.val().col;
+        self.centre_pipe.last.next = self.centre.val().last;
+        self.centre_pipe.ring.next = self.centre.val().ring;
+        self.centre_pipe.ring_a.next = self.centre.val().ring_a;
+        self.centre_pipe.ring_b.next = self.centre.val().ring_b;
         for e in 0..self._n {
             self.min_tree.hit[e].next = self.hit[e].val();
             self.min_tree.value[e].next = self.rep[e].val();
@@ -326,15 +226,15 @@ impl Logic for FccSortFilter {
             self.match_delay.rep[e].next = self.rep[e].val();
         }
         // ---- S1: the sliding mask of positions already matched by this run.
-        self.known_mask.valid.next = self.ctr_s1.q.val().valid;
-        self.known_mask.elig.next = self.ctr_s1.q.val().elig;
-        self.known_mask.same_run.next = self.ctr_s1.q.val().same_run;
+        self.known_mask.valid.next = self.centre_pipe.s1_valid.val();
+        self.known_mask.elig.next = self.centre_pipe.s1_elig.val();
+        self.known_mask.same_run.next = self.centre_pipe.s1_same_run.val();
         for e in 0..self._n {
             self.known_mask.hit[e].next = self.match_delay.hit_s1[e].val();
         }
         // ---- SM: the run's representative; matches with the smallest one.
-        self.run_rep_choice.next = self.ctr_sm.q.val().c;
-        if self.ctr_sm.q.val().same_run {
+        self.run_rep_choice.next = self.centre_pipe.sm_c.val();
+        if self.centre_pipe.sm_same_run.val() {
             self.run_rep_choice.next = self.run_rep.q.val();
         }
         self.run_rep_before_net.x.next = self.run_rep_choice.val();
@@ -343,14 +243,14 @@ impl Logic for FccSortFilter {
         if self.min_tree.min.val() < self.run_rep_before.val() {
             self.run_rep_after.next = self.min_tree.min.val();
         }
-        if self.ctr_sm.q.val().elig {
+        if self.centre_pipe.sm_elig.val() {
             self.run_rep.d.next = self.run_rep_after.val();
         }
         self.run_rep_sm1.d.next = self.run_rep_before.val();
-        self.rep_write_en.d.next = self.ctr_sm.q.val().valid;
-        self.rep_write_col.d.next = self.ctr_sm.q.val().col;
+        self.rep_write_en.d.next = self.centre_pipe.sm_valid.val();
+        self.rep_write_col.d.next = self.centre_pipe.sm_col.val();
         self.rep_write_value.d.next = self.zero16.val();
-        if self.ctr_sm.q.val().elig {
+        if self.centre_pipe.sm_elig.val() {
             self.rep_write_value.d.next = self.run_rep_after.val();
         }
         for e in 0..self._n {
@@ -365,7 +265,7 @@ impl Logic for FccSortFilter {
         self.rep_wdata.next = self.rep_write_value.q.val();
         // ---- SM+1: keep a match unless known, adjacent or a later minimum.
         for e in 0..self._n {
-            self.keep_next[e].next = self.ctr_sm1.q.val().elig
+            self.keep_next[e].next = self.centre_pipe.sm1_elig.val()
                 & self.match_delay.hit_sm1[e].val()
                 & !self.match_delay.adj_sm1[e].val()
                 & !self.known_mask.known_late[e].val()
@@ -387,15 +287,16 @@ impl Logic for FccSortFilter {
             self.keep_sm3[e].d.next = self.keep[e].q.val();
             self.first_sm3[e].d.next = self.keep_first.first[e].val();
         }
-        self.need_rec.next =
-            self.keep_any.any.val() | self.ctr_sm2.q.val().ring | self.ctr_sm2.q.val().last;
-        self.rec_push_q.d.next = self.ctr_sm2.q.val().valid & self.need_rec.val();
-        self.credit_drop_q.d.next = self.ctr_sm2.q.val().valid & !self.need_rec.val();
+        self.need_rec.next = self.keep_any.any.val()
+            | self.centre_pipe.sm2_ring.val()
+            | self.centre_pipe.sm2_last.val();
+        self.rec_push_q.d.next = self.centre_pipe.sm2_valid.val() & self.need_rec.val();
+        self.credit_drop_q.d.next = self.centre_pipe.sm2_valid.val() & !self.need_rec.val();
         self.rec_q.d.next.c = self.run_rep_sm2.q.val();
-        self.rec_q.d.next.ring_a = self.ring_sm2.q.val().a;
-        self.rec_q.d.next.ring_b = self.ring_sm2.q.val().b;
-        self.rec_q.d.next.ring = self.ctr_sm2.q.val().ring;
-        self.rec_q.d.next.last = self.ctr_sm2.q.val().last;
+        self.rec_q.d.next.ring_a = self.centre_pipe.sm2_ring_a.val();
+        self.rec_q.d.next.ring_b = self.centre_pipe.sm2_ring_b.val();
+        self.rec_q.d.next.ring = self.centre_pipe.sm2_ring.val();
+        self.rec_q.d.next.last = self.centre_pipe.sm2_last.val();
         // ---- SM+3: the record.
         self.rec_push.next = self.rec_push_q.q.val();
         self.credit_drop.next = self.credit_drop_q.q.val();
@@ -406,22 +307,9 @@ impl Logic for FccSortFilter {
             self.rec_first[e].next = self.first_sm3[e].q.val();
         }
         if self.valid_rst.q.val() {
-            self.last_label_valid.d.next = false;
-            self.ctr_s1.d.next.valid = false;
-            self.ctr_sm.d.next.valid = false;
-            self.ctr_sm1.d.next.valid = false;
-            self.ctr_sm2.d.next.valid = false;
             self.rec_push_q.d.next = false;
             self.credit_drop_q.d.next = false;
             self.rep_write_en.d.next = false;
-        }
-        for i in 0..(self._l - 1) {
-            if self.tree_rst[2 * i].q.val() {
-                self.ctr_tree[i].d.next = self.ctr_zero.val();
-            }
-            if self.tree_rst[2 * i + 1].q.val() {
-                self.ring_tree[i].d.next = self.ring_zero.val();
-            }
         }
     }
 }

@@ -34,6 +34,9 @@
 //! in R3 = W10), so its entries line up with the distance tree's results; its
 //! buffers cascade like the others. The sort network writes buffer 0 a few
 //! cycles after R3, long before the next row reads that column.
+//!
+//! The edge masks are registered in `FccWinEdge`; the representative window
+//! is `FccRepWindow`.
 
 use fcc_params::FccParams;
 use rust_hdl::prelude::*;
@@ -41,8 +44,9 @@ use rust_hdl::prelude::*;
 use crate::fcc_fanout_reg::FccFanoutReg;
 use crate::fcc_keep_reg::FccKeepReg;
 use crate::fcc_line_buf::FccLineBuf;
-use crate::fcc_ram::FccRam;
+use crate::fcc_rep_window::FccRepWindow;
 use crate::fcc_sq_dist::SQ_LATENCY;
+use crate::fcc_win_edge::FccWinEdge;
 use crate::types::{kb, vec_of, Centre, WinPix};
 
 /// Cycles between the window and the representative window.
@@ -92,31 +96,10 @@ pub struct FccWindow {
     /// Copies of W2's `valid` and `col`, one per line buffer: its write port.
     lb_write_en: Vec<FccKeepReg<Bit>>,
     lb_write_addr: Vec<FccKeepReg<Bits<12>>>,
-    // The representative window: pixel delay W4 .. W9, buffers, registers.
-    rv_valid: Vec<DFF<Bit>>,
-    rv_col: Vec<DFF<Bits<12>>>,
-    rv_rdcol: Vec<DFF<Bits<12>>>,
-    rlb: Vec<FccRam<Bits<16>, 12>>,
-    rwin: Vec<DFF<Bits<16>>>,
-    /// Copies of R2's `valid` (`rv_valid[5]`), one per representative entry.
-    rep_shift_en: Vec<FccKeepReg<Bit>>,
-    rview: Vec<Signal<Local, Bits<16>>>,
-    /// Window row r lies inside the image (for the W3 centre).
-    row_in: Vec<DFF<Bit>>,
-    /// Window column n lies inside the image (for the W3 centre).
-    col_in: Vec<DFF<Bit>>,
-    /// Column offset n < h: the lowest centre column with j+n-h >= 0.
-    col_lo: Vec<Constant<Bits<12>>>,
-    /// Column offset n = h+1+t: the highest centre column with j+n-h <= C-1
-    /// (C - 1 = `last_col`), i.e. C - 2 - t.
-    col_hi: Vec<DFF<Bits<12>>>,
-    hi_off: Vec<Constant<Bits<12>>>,
-    /// Per window row r: lowest centre row with a row h-r above it.
-    row_lo: Vec<Constant<Bits<8>>>,
-    /// Per window row r: the smallest K whose window reaches it, 2(h-r)+1.
-    row_k: Vec<Constant<Bits<4>>>,
-    /// Per window column n: the smallest K whose window reaches it, 2|n-h|+1.
-    col_k: Vec<Constant<Bits<4>>>,
+    /// The representative window, `REP_LAG` cycles behind.
+    rep_win: FccRepWindow,
+    /// The edge masks of the W3 centre (`edge` is a Verilog keyword).
+    edge_mask: FccWinEdge,
     zero8: Constant<Bits<8>>,
     zero12: Constant<Bits<12>>,
     _k: usize,
@@ -159,21 +142,8 @@ impl FccWindow {
             shift_en: vec_of(n),
             lb_write_en: vec_of(h),
             lb_write_addr: vec_of(h),
-            rv_valid: vec_of(6),
-            rv_col: vec_of(6),
-            rv_rdcol: vec_of(4),
-            rlb: (0..h).map(|_| FccRam::new(c)).collect(),
-            rwin: vec_of(n),
-            rep_shift_en: vec_of(n),
-            rview: vec_of(n),
-            row_in: vec_of(h),
-            col_in: vec_of(k),
-            col_lo: (0..h).map(|n| kb((h - n) as u64)).collect(),
-            col_hi: vec_of(h),
-            hi_off: (0..h).map(|t| kb(1 + t as u64)).collect(),
-            row_lo: (0..h).map(|r| kb((h - r) as u64)).collect(),
-            row_k: (0..h).map(|r| kb((2 * (h - r) + 1) as u64)).collect(),
-            col_k: (0..k).map(|n| kb((2 * n.abs_diff(h) + 1) as u64)).collect(),
+            rep_win: FccRepWindow::new(k, h, c),
+            edge_mask: FccWinEdge::new(k, h),
             zero8: kb(0),
             zero12: kb(0),
             _k: k,
@@ -252,29 +222,11 @@ impl Logic for FccWindow {
             }
         }
         // Edge masks of the pixel that becomes the centre in W3.
-        for r in 0..self._h {
-            self.row_in[r].clock.next = self.clk.val();
-            self.row_in[r].d.next = (self.w2.q.val().row >= self.row_lo[r].val())
-                & (self.run_k.val() >= self.row_k[r].val());
-        }
-        for n in 0..self._k {
-            self.col_in[n].clock.next = self.clk.val();
-            self.col_in[n].d.next = self.run_k.val() >= self.col_k[n].val();
-        }
-        for t in 0..self._h {
-            self.col_hi[t].clock.next = self.clk.val();
-            self.col_hi[t].d.next = self.last_col.val() - self.hi_off[t].val();
-        }
-        for hh in self._h..(self._h + 1) {
-            for n in 0..self._h {
-                self.col_in[n].d.next = (self.w2.q.val().col >= self.col_lo[n].val())
-                    & (self.run_k.val() >= self.col_k[n].val());
-            }
-            for n in (self._h + 1)..self._k {
-                self.col_in[n].d.next = (self.w2.q.val().col <= self.col_hi[n - hh - 1].q.val())
-                    & (self.run_k.val() >= self.col_k[n].val());
-            }
-        }
+        self.edge_mask.clk.next = self.clk.val();
+        self.edge_mask.row.next = self.w2.q.val().row;
+        self.edge_mask.col.next = self.w2.q.val().col;
+        self.edge_mask.last_col.next = self.last_col.val();
+        self.edge_mask.run_k.next = self.run_k.val();
         if self.rst.val() {
             self.w1.d.next.valid = false;
             self.w2.d.next.valid = false;
@@ -286,62 +238,16 @@ impl Logic for FccWindow {
             self.w2.d.next.col = self.zero12.val();
         }
         // ---- The representative window, REP_LAG cycles behind.
-        for i in 0..6 {
-            self.rv_valid[i].clock.next = self.clk.val();
-            self.rv_col[i].clock.next = self.clk.val();
-        }
-        for i in 0..4 {
-            self.rv_rdcol[i].clock.next = self.clk.val();
-        }
-        self.rv_valid[0].d.next = self.w3.q.val().valid;
-        self.rv_col[0].d.next = self.w3.q.val().col;
-        self.rv_rdcol[0].d.next = self.w3.q.val().rdcol;
-        for i in 1..6 {
-            self.rv_valid[i].d.next = self.rv_valid[i - 1].q.val();
-            self.rv_col[i].d.next = self.rv_col[i - 1].q.val();
-        }
-        for i in 1..4 {
-            self.rv_rdcol[i].d.next = self.rv_rdcol[i - 1].q.val();
-        }
-        // R0 = W7 (stage 3 of the delay) reads, R2 = W9 (stage 5) shifts and
-        // writes the cascade.
-        for j in 0..self._h {
-            self.rlb[j].clk.next = self.clk.val();
-            self.rlb[j].read_en.next = self.rv_valid[3].q.val();
-            self.rlb[j].read_addr.next = self.rv_rdcol[3].q.val();
-            self.rlb[j].write_en.next = self.rv_valid[5].q.val();
-            self.rlb[j].write_addr.next = self.rv_col[5].q.val();
-        }
-        self.rlb[0].write_en.next = self.rep_we.val();
-        self.rlb[0].write_addr.next = self.rep_waddr.val();
-        self.rlb[0].write_data.next = self.rep_wdata.val();
-        for kk in self._k..(self._k + 1) {
-            for hh in self._h..(self._h + 1) {
-                for r in 0..self._h {
-                    for n in 0..(self._k - 1) {
-                        self.rview[r * kk + n].next = self.rwin[r * kk + n + 1].q.val();
-                    }
-                    self.rview[r * kk + kk - 1].next = self.rlb[hh - 1 - r].read_data.val();
-                }
-                for j in 1..self._h {
-                    self.rlb[j].write_data.next = self.rview[(hh - j) * kk + hh].val();
-                }
-            }
-        }
+        self.rep_win.clk.next = self.clk.val();
+        self.rep_win.rst.next = self.rst.val();
+        self.rep_win.valid.next = self.w3.q.val().valid;
+        self.rep_win.col.next = self.w3.q.val().col;
+        self.rep_win.rdcol.next = self.w3.q.val().rdcol;
+        self.rep_win.rep_we.next = self.rep_we.val();
+        self.rep_win.rep_waddr.next = self.rep_waddr.val();
+        self.rep_win.rep_wdata.next = self.rep_wdata.val();
         for e in 0..(self._k * self._h) {
-            self.rwin[e].clock.next = self.clk.val();
-            self.rwin[e].d.next = self.rwin[e].q.val();
-            self.rep_shift_en[e].clock.next = self.clk.val();
-            self.rep_shift_en[e].d.next = self.rv_valid[4].q.val() & !self.rst.val();
-            if self.rep_shift_en[e].q.val() {
-                self.rwin[e].d.next = self.rview[e].val();
-            }
-            self.ent_rep[e].next = self.rwin[e].q.val();
-        }
-        if self.rst.val() {
-            for i in 0..6 {
-                self.rv_valid[i].d.next = false;
-            }
+            self.ent_rep[e].next = self.rep_win.ent_rep[e].val();
         }
         // ---- W3: the centre and its window, masked.
         self.centre.next.x = self.w3.q.val().x;
@@ -359,8 +265,8 @@ impl Logic for FccWindow {
             for r in 0..self._h {
                 for n in 0..self._k {
                     self.ent_ok[r * kk + n].next = self.win_lok[r * kk + n].q.val()
-                        & self.row_in[r].q.val()
-                        & self.col_in[n].q.val();
+                        & self.edge_mask.row_in[r].val()
+                        & self.edge_mask.col_in[n].val();
                     self.ent_x[r * kk + n].next = self.win_x[r * kk + n].q.val();
                     self.ent_y[r * kk + n].next = self.win_y[r * kk + n].q.val();
                     self.ent_z[r * kk + n].next = self.win_z[r * kk + n].q.val();

@@ -5,11 +5,12 @@
 //! `fcc_merge_table`, `fcc_label_update`, `fcc_top`, plus the helpers
 //! `fcc_sq_dist`, `fcc_dist_unit`, `fcc_line_buf`, `fcc_fifo`, `fcc_ram`,
 //! `fcc_row_word`, `fcc_keep_reg`, `fcc_fanout_reg`, `fcc_fanout_net`,
-//! `fcc_prefix_or`, `fcc_any_or`, `fcc_two_or`, `fcc_pick`; inside `fcc_sort_net`: `fcc_sort_filter` (with `fcc_min_tree`,
+//! `fcc_prefix_or`, `fcc_any_or`, `fcc_two_or`, `fcc_pick`; inside `fcc_window`:
+//! `fcc_win_edge`, `fcc_rep_window`; inside `fcc_sort_net`: `fcc_sort_filter` (with `fcc_filt_centre`, `fcc_min_tree`,
 //! `fcc_known_mask`, `fcc_match_delay`), `fcc_centre_buf`, `fcc_serializer`,
 //! `fcc_join_queue`; inside `fcc_merge_table`: `fcc_table_init`,
 //! `fcc_union_engine`, `fcc_flatten`, `fcc_table_ports`; inside
-//! `fcc_label_update`: `fcc_fb_writer`, `fcc_rb_pipeline`, `fcc_beat_queue`,
+//! `fcc_label_update`: `fcc_fb_writer`, `fcc_rb_pipeline` (with `fcc_run_number`), `fcc_beat_queue`,
 //! `fcc_gearbox`, `fcc_beat_assembly`, `fcc_pop_decision`, `fcc_slot_mux`;
 //! inside `fcc_regs`: `fcc_axil_adapter`, `fcc_reg_mux` and the field blocks
 //! `fcc_reg_control`, `fcc_reg_w1c`, `fcc_reg_frame_status` (with
@@ -91,6 +92,7 @@ mod fcc_fanout_net;
 mod fcc_fanout_reg;
 mod fcc_fb_writer;
 mod fcc_fifo;
+mod fcc_filt_centre;
 mod fcc_first_set;
 mod fcc_flatten;
 mod fcc_frame_phase;
@@ -128,7 +130,9 @@ mod fcc_reg_squared;
 mod fcc_reg_thresholds;
 mod fcc_reg_w1c;
 mod fcc_regs;
+mod fcc_rep_window;
 mod fcc_row_word;
+mod fcc_run_number;
 mod fcc_serializer;
 mod fcc_slot_mux;
 mod fcc_sort_filter;
@@ -141,6 +145,7 @@ mod fcc_thr_window;
 mod fcc_top;
 mod fcc_two_or;
 mod fcc_union_engine;
+mod fcc_win_edge;
 mod fcc_window;
 mod fcc_window_probe;
 pub mod lint;
