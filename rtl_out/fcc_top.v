@@ -56992,174 +56992,110 @@ module fcc_top__thr_window_k7_668cf05b(clk,rst,valid,col,rdcol,key,cv,centre_key
     reg  [35:0] t3_cv$d;
     wire  [35:0] t3_cv$q;
     reg  t3_cv$clock;
-    reg  lb_key$0$clk;
-    reg  lb_key$0$read_en;
-    reg  [11:0] lb_key$0$read_addr;
-    wire  [15:0] lb_key$0$read_data;
-    reg  lb_key$0$write_en;
-    reg  [11:0] lb_key$0$write_addr;
-    reg  [15:0] lb_key$0$write_data;
-    reg  lb_key$1$clk;
-    reg  lb_key$1$read_en;
-    reg  [11:0] lb_key$1$read_addr;
-    wire  [15:0] lb_key$1$read_data;
-    reg  lb_key$1$write_en;
-    reg  [11:0] lb_key$1$write_addr;
-    reg  [15:0] lb_key$1$write_data;
-    reg  lb_key$2$clk;
-    reg  lb_key$2$read_en;
-    reg  [11:0] lb_key$2$read_addr;
-    wire  [15:0] lb_key$2$read_data;
-    reg  lb_key$2$write_en;
-    reg  [11:0] lb_key$2$write_addr;
-    reg  [15:0] lb_key$2$write_data;
-    reg  lb_cv$0$clk;
-    reg  lb_cv$0$read_en;
-    reg  [11:0] lb_cv$0$read_addr;
-    wire  [35:0] lb_cv$0$read_data;
-    reg  lb_cv$0$write_en;
-    reg  [11:0] lb_cv$0$write_addr;
-    reg  [35:0] lb_cv$0$write_data;
-    reg  lb_cv$1$clk;
-    reg  lb_cv$1$read_en;
-    reg  [11:0] lb_cv$1$read_addr;
-    wire  [35:0] lb_cv$1$read_data;
-    reg  lb_cv$1$write_en;
-    reg  [11:0] lb_cv$1$write_addr;
-    reg  [35:0] lb_cv$1$write_data;
-    reg  lb_cv$2$clk;
-    reg  lb_cv$2$read_en;
-    reg  [11:0] lb_cv$2$read_addr;
-    wire  [35:0] lb_cv$2$read_data;
-    reg  lb_cv$2$write_en;
-    reg  [11:0] lb_cv$2$write_addr;
-    reg  [35:0] lb_cv$2$write_data;
-    reg  [15:0] win_key$0$d;
-    wire  [15:0] win_key$0$q;
-    reg  win_key$0$clock;
-    reg  [15:0] win_key$1$d;
-    wire  [15:0] win_key$1$q;
-    reg  win_key$1$clock;
-    reg  [15:0] win_key$2$d;
-    wire  [15:0] win_key$2$q;
-    reg  win_key$2$clock;
-    reg  [15:0] win_key$3$d;
-    wire  [15:0] win_key$3$q;
-    reg  win_key$3$clock;
-    reg  [15:0] win_key$4$d;
-    wire  [15:0] win_key$4$q;
-    reg  win_key$4$clock;
-    reg  [15:0] win_key$5$d;
-    wire  [15:0] win_key$5$q;
-    reg  win_key$5$clock;
-    reg  [15:0] win_key$6$d;
-    wire  [15:0] win_key$6$q;
-    reg  win_key$6$clock;
-    reg  [15:0] win_key$7$d;
-    wire  [15:0] win_key$7$q;
-    reg  win_key$7$clock;
-    reg  [15:0] win_key$8$d;
-    wire  [15:0] win_key$8$q;
-    reg  win_key$8$clock;
-    reg  [15:0] win_key$9$d;
-    wire  [15:0] win_key$9$q;
-    reg  win_key$9$clock;
-    reg  [15:0] win_key$10$d;
-    wire  [15:0] win_key$10$q;
-    reg  win_key$10$clock;
-    reg  [15:0] win_key$11$d;
-    wire  [15:0] win_key$11$q;
-    reg  win_key$11$clock;
-    reg  [15:0] win_key$12$d;
-    wire  [15:0] win_key$12$q;
-    reg  win_key$12$clock;
-    reg  [15:0] win_key$13$d;
-    wire  [15:0] win_key$13$q;
-    reg  win_key$13$clock;
-    reg  [15:0] win_key$14$d;
-    wire  [15:0] win_key$14$q;
-    reg  win_key$14$clock;
-    reg  [15:0] win_key$15$d;
-    wire  [15:0] win_key$15$q;
-    reg  win_key$15$clock;
-    reg  [15:0] win_key$16$d;
-    wire  [15:0] win_key$16$q;
-    reg  win_key$16$clock;
-    reg  [15:0] win_key$17$d;
-    wire  [15:0] win_key$17$q;
-    reg  win_key$17$clock;
-    reg  [15:0] win_key$18$d;
-    wire  [15:0] win_key$18$q;
-    reg  win_key$18$clock;
-    reg  [15:0] win_key$19$d;
-    wire  [15:0] win_key$19$q;
-    reg  win_key$19$clock;
-    reg  [15:0] win_key$20$d;
-    wire  [15:0] win_key$20$q;
-    reg  win_key$20$clock;
-    reg  [35:0] win_cv$0$d;
-    wire  [35:0] win_cv$0$q;
-    reg  win_cv$0$clock;
-    reg  [35:0] win_cv$1$d;
-    wire  [35:0] win_cv$1$q;
-    reg  win_cv$1$clock;
-    reg  [35:0] win_cv$2$d;
-    wire  [35:0] win_cv$2$q;
-    reg  win_cv$2$clock;
-    reg  [35:0] win_cv$3$d;
-    wire  [35:0] win_cv$3$q;
-    reg  win_cv$3$clock;
-    reg  [35:0] win_cv$4$d;
-    wire  [35:0] win_cv$4$q;
-    reg  win_cv$4$clock;
-    reg  [35:0] win_cv$5$d;
-    wire  [35:0] win_cv$5$q;
-    reg  win_cv$5$clock;
-    reg  [35:0] win_cv$6$d;
-    wire  [35:0] win_cv$6$q;
-    reg  win_cv$6$clock;
-    reg  [35:0] win_cv$7$d;
-    wire  [35:0] win_cv$7$q;
-    reg  win_cv$7$clock;
-    reg  [35:0] win_cv$8$d;
-    wire  [35:0] win_cv$8$q;
-    reg  win_cv$8$clock;
-    reg  [35:0] win_cv$9$d;
-    wire  [35:0] win_cv$9$q;
-    reg  win_cv$9$clock;
-    reg  [35:0] win_cv$10$d;
-    wire  [35:0] win_cv$10$q;
-    reg  win_cv$10$clock;
-    reg  [35:0] win_cv$11$d;
-    wire  [35:0] win_cv$11$q;
-    reg  win_cv$11$clock;
-    reg  [35:0] win_cv$12$d;
-    wire  [35:0] win_cv$12$q;
-    reg  win_cv$12$clock;
-    reg  [35:0] win_cv$13$d;
-    wire  [35:0] win_cv$13$q;
-    reg  win_cv$13$clock;
-    reg  [35:0] win_cv$14$d;
-    wire  [35:0] win_cv$14$q;
-    reg  win_cv$14$clock;
-    reg  [35:0] win_cv$15$d;
-    wire  [35:0] win_cv$15$q;
-    reg  win_cv$15$clock;
-    reg  [35:0] win_cv$16$d;
-    wire  [35:0] win_cv$16$q;
-    reg  win_cv$16$clock;
-    reg  [35:0] win_cv$17$d;
-    wire  [35:0] win_cv$17$q;
-    reg  win_cv$17$clock;
-    reg  [35:0] win_cv$18$d;
-    wire  [35:0] win_cv$18$q;
-    reg  win_cv$18$clock;
-    reg  [35:0] win_cv$19$d;
-    wire  [35:0] win_cv$19$q;
-    reg  win_cv$19$clock;
-    reg  [35:0] win_cv$20$d;
-    wire  [35:0] win_cv$20$q;
-    reg  win_cv$20$clock;
+    reg  lane_key$clk;
+    reg  lane_key$read_en;
+    reg  [11:0] lane_key$read_addr;
+    reg  [15:0] lane_key$in_data;
+    reg  lane_key$cas_en$0;
+    reg  lane_key$cas_en$1;
+    reg  lane_key$cas_en$2;
+    reg  [11:0] lane_key$cas_addr$0;
+    reg  [11:0] lane_key$cas_addr$1;
+    reg  [11:0] lane_key$cas_addr$2;
+    reg  lane_key$shift_en$0;
+    reg  lane_key$shift_en$1;
+    reg  lane_key$shift_en$2;
+    reg  lane_key$shift_en$3;
+    reg  lane_key$shift_en$4;
+    reg  lane_key$shift_en$5;
+    reg  lane_key$shift_en$6;
+    reg  lane_key$shift_en$7;
+    reg  lane_key$shift_en$8;
+    reg  lane_key$shift_en$9;
+    reg  lane_key$shift_en$10;
+    reg  lane_key$shift_en$11;
+    reg  lane_key$shift_en$12;
+    reg  lane_key$shift_en$13;
+    reg  lane_key$shift_en$14;
+    reg  lane_key$shift_en$15;
+    reg  lane_key$shift_en$16;
+    reg  lane_key$shift_en$17;
+    reg  lane_key$shift_en$18;
+    reg  lane_key$shift_en$19;
+    reg  lane_key$shift_en$20;
+    wire  [15:0] lane_key$ent$0;
+    wire  [15:0] lane_key$ent$1;
+    wire  [15:0] lane_key$ent$2;
+    wire  [15:0] lane_key$ent$3;
+    wire  [15:0] lane_key$ent$4;
+    wire  [15:0] lane_key$ent$5;
+    wire  [15:0] lane_key$ent$6;
+    wire  [15:0] lane_key$ent$7;
+    wire  [15:0] lane_key$ent$8;
+    wire  [15:0] lane_key$ent$9;
+    wire  [15:0] lane_key$ent$10;
+    wire  [15:0] lane_key$ent$11;
+    wire  [15:0] lane_key$ent$12;
+    wire  [15:0] lane_key$ent$13;
+    wire  [15:0] lane_key$ent$14;
+    wire  [15:0] lane_key$ent$15;
+    wire  [15:0] lane_key$ent$16;
+    wire  [15:0] lane_key$ent$17;
+    wire  [15:0] lane_key$ent$18;
+    wire  [15:0] lane_key$ent$19;
+    wire  [15:0] lane_key$ent$20;
+    reg  lane_cv$clk;
+    reg  lane_cv$read_en;
+    reg  [11:0] lane_cv$read_addr;
+    reg  [35:0] lane_cv$in_data;
+    reg  lane_cv$cas_en$0;
+    reg  lane_cv$cas_en$1;
+    reg  lane_cv$cas_en$2;
+    reg  [11:0] lane_cv$cas_addr$0;
+    reg  [11:0] lane_cv$cas_addr$1;
+    reg  [11:0] lane_cv$cas_addr$2;
+    reg  lane_cv$shift_en$0;
+    reg  lane_cv$shift_en$1;
+    reg  lane_cv$shift_en$2;
+    reg  lane_cv$shift_en$3;
+    reg  lane_cv$shift_en$4;
+    reg  lane_cv$shift_en$5;
+    reg  lane_cv$shift_en$6;
+    reg  lane_cv$shift_en$7;
+    reg  lane_cv$shift_en$8;
+    reg  lane_cv$shift_en$9;
+    reg  lane_cv$shift_en$10;
+    reg  lane_cv$shift_en$11;
+    reg  lane_cv$shift_en$12;
+    reg  lane_cv$shift_en$13;
+    reg  lane_cv$shift_en$14;
+    reg  lane_cv$shift_en$15;
+    reg  lane_cv$shift_en$16;
+    reg  lane_cv$shift_en$17;
+    reg  lane_cv$shift_en$18;
+    reg  lane_cv$shift_en$19;
+    reg  lane_cv$shift_en$20;
+    wire  [35:0] lane_cv$ent$0;
+    wire  [35:0] lane_cv$ent$1;
+    wire  [35:0] lane_cv$ent$2;
+    wire  [35:0] lane_cv$ent$3;
+    wire  [35:0] lane_cv$ent$4;
+    wire  [35:0] lane_cv$ent$5;
+    wire  [35:0] lane_cv$ent$6;
+    wire  [35:0] lane_cv$ent$7;
+    wire  [35:0] lane_cv$ent$8;
+    wire  [35:0] lane_cv$ent$9;
+    wire  [35:0] lane_cv$ent$10;
+    wire  [35:0] lane_cv$ent$11;
+    wire  [35:0] lane_cv$ent$12;
+    wire  [35:0] lane_cv$ent$13;
+    wire  [35:0] lane_cv$ent$14;
+    wire  [35:0] lane_cv$ent$15;
+    wire  [35:0] lane_cv$ent$16;
+    wire  [35:0] lane_cv$ent$17;
+    wire  [35:0] lane_cv$ent$18;
+    wire  [35:0] lane_cv$ent$19;
+    wire  [35:0] lane_cv$ent$20;
     reg  shift_en$0$clock;
     reg  shift_en$0$d;
     wire  shift_en$0$q;
@@ -57241,50 +57177,6 @@ module fcc_top__thr_window_k7_668cf05b(clk,rst,valid,col,rdcol,key,cv,centre_key
     reg  lb_write_addr$2$clock;
     reg  [11:0] lb_write_addr$2$d;
     wire  [11:0] lb_write_addr$2$q;
-
-    // Local signals
-    reg  [15:0] view_key$0;
-    reg  [15:0] view_key$1;
-    reg  [15:0] view_key$2;
-    reg  [15:0] view_key$3;
-    reg  [15:0] view_key$4;
-    reg  [15:0] view_key$5;
-    reg  [15:0] view_key$6;
-    reg  [15:0] view_key$7;
-    reg  [15:0] view_key$8;
-    reg  [15:0] view_key$9;
-    reg  [15:0] view_key$10;
-    reg  [15:0] view_key$11;
-    reg  [15:0] view_key$12;
-    reg  [15:0] view_key$13;
-    reg  [15:0] view_key$14;
-    reg  [15:0] view_key$15;
-    reg  [15:0] view_key$16;
-    reg  [15:0] view_key$17;
-    reg  [15:0] view_key$18;
-    reg  [15:0] view_key$19;
-    reg  [15:0] view_key$20;
-    reg  [35:0] view_cv$0;
-    reg  [35:0] view_cv$1;
-    reg  [35:0] view_cv$2;
-    reg  [35:0] view_cv$3;
-    reg  [35:0] view_cv$4;
-    reg  [35:0] view_cv$5;
-    reg  [35:0] view_cv$6;
-    reg  [35:0] view_cv$7;
-    reg  [35:0] view_cv$8;
-    reg  [35:0] view_cv$9;
-    reg  [35:0] view_cv$10;
-    reg  [35:0] view_cv$11;
-    reg  [35:0] view_cv$12;
-    reg  [35:0] view_cv$13;
-    reg  [35:0] view_cv$14;
-    reg  [35:0] view_cv$15;
-    reg  [35:0] view_cv$16;
-    reg  [35:0] view_cv$17;
-    reg  [35:0] view_cv$18;
-    reg  [35:0] view_cv$19;
-    reg  [35:0] view_cv$20;
 
     // Sub module instances
     fcc_top__thr_window__wait_key__0_k7_668cf05b wait_key$0(
@@ -57457,269 +57349,113 @@ module fcc_top__thr_window_k7_668cf05b(clk,rst,valid,col,rdcol,key,cv,centre_key
         .q(t3_cv$q),
         .clock(t3_cv$clock)
     );
-    fcc_top__thr_window__lb_key__0_k7_668cf05b lb_key$0(
-        .clk(lb_key$0$clk),
-        .read_en(lb_key$0$read_en),
-        .read_addr(lb_key$0$read_addr),
-        .read_data(lb_key$0$read_data),
-        .write_en(lb_key$0$write_en),
-        .write_addr(lb_key$0$write_addr),
-        .write_data(lb_key$0$write_data)
+    fcc_top__thr_window__lane_key_k7_668cf05b lane_key(
+        .clk(lane_key$clk),
+        .read_en(lane_key$read_en),
+        .read_addr(lane_key$read_addr),
+        .in_data(lane_key$in_data),
+        .cas_en$0(lane_key$cas_en$0),
+        .cas_en$1(lane_key$cas_en$1),
+        .cas_en$2(lane_key$cas_en$2),
+        .cas_addr$0(lane_key$cas_addr$0),
+        .cas_addr$1(lane_key$cas_addr$1),
+        .cas_addr$2(lane_key$cas_addr$2),
+        .shift_en$0(lane_key$shift_en$0),
+        .shift_en$1(lane_key$shift_en$1),
+        .shift_en$2(lane_key$shift_en$2),
+        .shift_en$3(lane_key$shift_en$3),
+        .shift_en$4(lane_key$shift_en$4),
+        .shift_en$5(lane_key$shift_en$5),
+        .shift_en$6(lane_key$shift_en$6),
+        .shift_en$7(lane_key$shift_en$7),
+        .shift_en$8(lane_key$shift_en$8),
+        .shift_en$9(lane_key$shift_en$9),
+        .shift_en$10(lane_key$shift_en$10),
+        .shift_en$11(lane_key$shift_en$11),
+        .shift_en$12(lane_key$shift_en$12),
+        .shift_en$13(lane_key$shift_en$13),
+        .shift_en$14(lane_key$shift_en$14),
+        .shift_en$15(lane_key$shift_en$15),
+        .shift_en$16(lane_key$shift_en$16),
+        .shift_en$17(lane_key$shift_en$17),
+        .shift_en$18(lane_key$shift_en$18),
+        .shift_en$19(lane_key$shift_en$19),
+        .shift_en$20(lane_key$shift_en$20),
+        .ent$0(lane_key$ent$0),
+        .ent$1(lane_key$ent$1),
+        .ent$2(lane_key$ent$2),
+        .ent$3(lane_key$ent$3),
+        .ent$4(lane_key$ent$4),
+        .ent$5(lane_key$ent$5),
+        .ent$6(lane_key$ent$6),
+        .ent$7(lane_key$ent$7),
+        .ent$8(lane_key$ent$8),
+        .ent$9(lane_key$ent$9),
+        .ent$10(lane_key$ent$10),
+        .ent$11(lane_key$ent$11),
+        .ent$12(lane_key$ent$12),
+        .ent$13(lane_key$ent$13),
+        .ent$14(lane_key$ent$14),
+        .ent$15(lane_key$ent$15),
+        .ent$16(lane_key$ent$16),
+        .ent$17(lane_key$ent$17),
+        .ent$18(lane_key$ent$18),
+        .ent$19(lane_key$ent$19),
+        .ent$20(lane_key$ent$20)
     );
-    fcc_top__thr_window__lb_key__1_k7_668cf05b lb_key$1(
-        .clk(lb_key$1$clk),
-        .read_en(lb_key$1$read_en),
-        .read_addr(lb_key$1$read_addr),
-        .read_data(lb_key$1$read_data),
-        .write_en(lb_key$1$write_en),
-        .write_addr(lb_key$1$write_addr),
-        .write_data(lb_key$1$write_data)
-    );
-    fcc_top__thr_window__lb_key__2_k7_668cf05b lb_key$2(
-        .clk(lb_key$2$clk),
-        .read_en(lb_key$2$read_en),
-        .read_addr(lb_key$2$read_addr),
-        .read_data(lb_key$2$read_data),
-        .write_en(lb_key$2$write_en),
-        .write_addr(lb_key$2$write_addr),
-        .write_data(lb_key$2$write_data)
-    );
-    fcc_top__thr_window__lb_cv__0_k7_668cf05b lb_cv$0(
-        .clk(lb_cv$0$clk),
-        .read_en(lb_cv$0$read_en),
-        .read_addr(lb_cv$0$read_addr),
-        .read_data(lb_cv$0$read_data),
-        .write_en(lb_cv$0$write_en),
-        .write_addr(lb_cv$0$write_addr),
-        .write_data(lb_cv$0$write_data)
-    );
-    fcc_top__thr_window__lb_cv__1_k7_668cf05b lb_cv$1(
-        .clk(lb_cv$1$clk),
-        .read_en(lb_cv$1$read_en),
-        .read_addr(lb_cv$1$read_addr),
-        .read_data(lb_cv$1$read_data),
-        .write_en(lb_cv$1$write_en),
-        .write_addr(lb_cv$1$write_addr),
-        .write_data(lb_cv$1$write_data)
-    );
-    fcc_top__thr_window__lb_cv__2_k7_668cf05b lb_cv$2(
-        .clk(lb_cv$2$clk),
-        .read_en(lb_cv$2$read_en),
-        .read_addr(lb_cv$2$read_addr),
-        .read_data(lb_cv$2$read_data),
-        .write_en(lb_cv$2$write_en),
-        .write_addr(lb_cv$2$write_addr),
-        .write_data(lb_cv$2$write_data)
-    );
-    fcc_top__thr_window__win_key__0_k7_668cf05b win_key$0(
-        .d(win_key$0$d),
-        .q(win_key$0$q),
-        .clock(win_key$0$clock)
-    );
-    fcc_top__thr_window__win_key__1_k7_668cf05b win_key$1(
-        .d(win_key$1$d),
-        .q(win_key$1$q),
-        .clock(win_key$1$clock)
-    );
-    fcc_top__thr_window__win_key__2_k7_668cf05b win_key$2(
-        .d(win_key$2$d),
-        .q(win_key$2$q),
-        .clock(win_key$2$clock)
-    );
-    fcc_top__thr_window__win_key__3_k7_668cf05b win_key$3(
-        .d(win_key$3$d),
-        .q(win_key$3$q),
-        .clock(win_key$3$clock)
-    );
-    fcc_top__thr_window__win_key__4_k7_668cf05b win_key$4(
-        .d(win_key$4$d),
-        .q(win_key$4$q),
-        .clock(win_key$4$clock)
-    );
-    fcc_top__thr_window__win_key__5_k7_668cf05b win_key$5(
-        .d(win_key$5$d),
-        .q(win_key$5$q),
-        .clock(win_key$5$clock)
-    );
-    fcc_top__thr_window__win_key__6_k7_668cf05b win_key$6(
-        .d(win_key$6$d),
-        .q(win_key$6$q),
-        .clock(win_key$6$clock)
-    );
-    fcc_top__thr_window__win_key__7_k7_668cf05b win_key$7(
-        .d(win_key$7$d),
-        .q(win_key$7$q),
-        .clock(win_key$7$clock)
-    );
-    fcc_top__thr_window__win_key__8_k7_668cf05b win_key$8(
-        .d(win_key$8$d),
-        .q(win_key$8$q),
-        .clock(win_key$8$clock)
-    );
-    fcc_top__thr_window__win_key__9_k7_668cf05b win_key$9(
-        .d(win_key$9$d),
-        .q(win_key$9$q),
-        .clock(win_key$9$clock)
-    );
-    fcc_top__thr_window__win_key__10_k7_668cf05b win_key$10(
-        .d(win_key$10$d),
-        .q(win_key$10$q),
-        .clock(win_key$10$clock)
-    );
-    fcc_top__thr_window__win_key__11_k7_668cf05b win_key$11(
-        .d(win_key$11$d),
-        .q(win_key$11$q),
-        .clock(win_key$11$clock)
-    );
-    fcc_top__thr_window__win_key__12_k7_668cf05b win_key$12(
-        .d(win_key$12$d),
-        .q(win_key$12$q),
-        .clock(win_key$12$clock)
-    );
-    fcc_top__thr_window__win_key__13_k7_668cf05b win_key$13(
-        .d(win_key$13$d),
-        .q(win_key$13$q),
-        .clock(win_key$13$clock)
-    );
-    fcc_top__thr_window__win_key__14_k7_668cf05b win_key$14(
-        .d(win_key$14$d),
-        .q(win_key$14$q),
-        .clock(win_key$14$clock)
-    );
-    fcc_top__thr_window__win_key__15_k7_668cf05b win_key$15(
-        .d(win_key$15$d),
-        .q(win_key$15$q),
-        .clock(win_key$15$clock)
-    );
-    fcc_top__thr_window__win_key__16_k7_668cf05b win_key$16(
-        .d(win_key$16$d),
-        .q(win_key$16$q),
-        .clock(win_key$16$clock)
-    );
-    fcc_top__thr_window__win_key__17_k7_668cf05b win_key$17(
-        .d(win_key$17$d),
-        .q(win_key$17$q),
-        .clock(win_key$17$clock)
-    );
-    fcc_top__thr_window__win_key__18_k7_668cf05b win_key$18(
-        .d(win_key$18$d),
-        .q(win_key$18$q),
-        .clock(win_key$18$clock)
-    );
-    fcc_top__thr_window__win_key__19_k7_668cf05b win_key$19(
-        .d(win_key$19$d),
-        .q(win_key$19$q),
-        .clock(win_key$19$clock)
-    );
-    fcc_top__thr_window__win_key__20_k7_668cf05b win_key$20(
-        .d(win_key$20$d),
-        .q(win_key$20$q),
-        .clock(win_key$20$clock)
-    );
-    fcc_top__thr_window__win_cv__0_k7_668cf05b win_cv$0(
-        .d(win_cv$0$d),
-        .q(win_cv$0$q),
-        .clock(win_cv$0$clock)
-    );
-    fcc_top__thr_window__win_cv__1_k7_668cf05b win_cv$1(
-        .d(win_cv$1$d),
-        .q(win_cv$1$q),
-        .clock(win_cv$1$clock)
-    );
-    fcc_top__thr_window__win_cv__2_k7_668cf05b win_cv$2(
-        .d(win_cv$2$d),
-        .q(win_cv$2$q),
-        .clock(win_cv$2$clock)
-    );
-    fcc_top__thr_window__win_cv__3_k7_668cf05b win_cv$3(
-        .d(win_cv$3$d),
-        .q(win_cv$3$q),
-        .clock(win_cv$3$clock)
-    );
-    fcc_top__thr_window__win_cv__4_k7_668cf05b win_cv$4(
-        .d(win_cv$4$d),
-        .q(win_cv$4$q),
-        .clock(win_cv$4$clock)
-    );
-    fcc_top__thr_window__win_cv__5_k7_668cf05b win_cv$5(
-        .d(win_cv$5$d),
-        .q(win_cv$5$q),
-        .clock(win_cv$5$clock)
-    );
-    fcc_top__thr_window__win_cv__6_k7_668cf05b win_cv$6(
-        .d(win_cv$6$d),
-        .q(win_cv$6$q),
-        .clock(win_cv$6$clock)
-    );
-    fcc_top__thr_window__win_cv__7_k7_668cf05b win_cv$7(
-        .d(win_cv$7$d),
-        .q(win_cv$7$q),
-        .clock(win_cv$7$clock)
-    );
-    fcc_top__thr_window__win_cv__8_k7_668cf05b win_cv$8(
-        .d(win_cv$8$d),
-        .q(win_cv$8$q),
-        .clock(win_cv$8$clock)
-    );
-    fcc_top__thr_window__win_cv__9_k7_668cf05b win_cv$9(
-        .d(win_cv$9$d),
-        .q(win_cv$9$q),
-        .clock(win_cv$9$clock)
-    );
-    fcc_top__thr_window__win_cv__10_k7_668cf05b win_cv$10(
-        .d(win_cv$10$d),
-        .q(win_cv$10$q),
-        .clock(win_cv$10$clock)
-    );
-    fcc_top__thr_window__win_cv__11_k7_668cf05b win_cv$11(
-        .d(win_cv$11$d),
-        .q(win_cv$11$q),
-        .clock(win_cv$11$clock)
-    );
-    fcc_top__thr_window__win_cv__12_k7_668cf05b win_cv$12(
-        .d(win_cv$12$d),
-        .q(win_cv$12$q),
-        .clock(win_cv$12$clock)
-    );
-    fcc_top__thr_window__win_cv__13_k7_668cf05b win_cv$13(
-        .d(win_cv$13$d),
-        .q(win_cv$13$q),
-        .clock(win_cv$13$clock)
-    );
-    fcc_top__thr_window__win_cv__14_k7_668cf05b win_cv$14(
-        .d(win_cv$14$d),
-        .q(win_cv$14$q),
-        .clock(win_cv$14$clock)
-    );
-    fcc_top__thr_window__win_cv__15_k7_668cf05b win_cv$15(
-        .d(win_cv$15$d),
-        .q(win_cv$15$q),
-        .clock(win_cv$15$clock)
-    );
-    fcc_top__thr_window__win_cv__16_k7_668cf05b win_cv$16(
-        .d(win_cv$16$d),
-        .q(win_cv$16$q),
-        .clock(win_cv$16$clock)
-    );
-    fcc_top__thr_window__win_cv__17_k7_668cf05b win_cv$17(
-        .d(win_cv$17$d),
-        .q(win_cv$17$q),
-        .clock(win_cv$17$clock)
-    );
-    fcc_top__thr_window__win_cv__18_k7_668cf05b win_cv$18(
-        .d(win_cv$18$d),
-        .q(win_cv$18$q),
-        .clock(win_cv$18$clock)
-    );
-    fcc_top__thr_window__win_cv__19_k7_668cf05b win_cv$19(
-        .d(win_cv$19$d),
-        .q(win_cv$19$q),
-        .clock(win_cv$19$clock)
-    );
-    fcc_top__thr_window__win_cv__20_k7_668cf05b win_cv$20(
-        .d(win_cv$20$d),
-        .q(win_cv$20$q),
-        .clock(win_cv$20$clock)
+    fcc_top__thr_window__lane_cv_k7_668cf05b lane_cv(
+        .clk(lane_cv$clk),
+        .read_en(lane_cv$read_en),
+        .read_addr(lane_cv$read_addr),
+        .in_data(lane_cv$in_data),
+        .cas_en$0(lane_cv$cas_en$0),
+        .cas_en$1(lane_cv$cas_en$1),
+        .cas_en$2(lane_cv$cas_en$2),
+        .cas_addr$0(lane_cv$cas_addr$0),
+        .cas_addr$1(lane_cv$cas_addr$1),
+        .cas_addr$2(lane_cv$cas_addr$2),
+        .shift_en$0(lane_cv$shift_en$0),
+        .shift_en$1(lane_cv$shift_en$1),
+        .shift_en$2(lane_cv$shift_en$2),
+        .shift_en$3(lane_cv$shift_en$3),
+        .shift_en$4(lane_cv$shift_en$4),
+        .shift_en$5(lane_cv$shift_en$5),
+        .shift_en$6(lane_cv$shift_en$6),
+        .shift_en$7(lane_cv$shift_en$7),
+        .shift_en$8(lane_cv$shift_en$8),
+        .shift_en$9(lane_cv$shift_en$9),
+        .shift_en$10(lane_cv$shift_en$10),
+        .shift_en$11(lane_cv$shift_en$11),
+        .shift_en$12(lane_cv$shift_en$12),
+        .shift_en$13(lane_cv$shift_en$13),
+        .shift_en$14(lane_cv$shift_en$14),
+        .shift_en$15(lane_cv$shift_en$15),
+        .shift_en$16(lane_cv$shift_en$16),
+        .shift_en$17(lane_cv$shift_en$17),
+        .shift_en$18(lane_cv$shift_en$18),
+        .shift_en$19(lane_cv$shift_en$19),
+        .shift_en$20(lane_cv$shift_en$20),
+        .ent$0(lane_cv$ent$0),
+        .ent$1(lane_cv$ent$1),
+        .ent$2(lane_cv$ent$2),
+        .ent$3(lane_cv$ent$3),
+        .ent$4(lane_cv$ent$4),
+        .ent$5(lane_cv$ent$5),
+        .ent$6(lane_cv$ent$6),
+        .ent$7(lane_cv$ent$7),
+        .ent$8(lane_cv$ent$8),
+        .ent$9(lane_cv$ent$9),
+        .ent$10(lane_cv$ent$10),
+        .ent$11(lane_cv$ent$11),
+        .ent$12(lane_cv$ent$12),
+        .ent$13(lane_cv$ent$13),
+        .ent$14(lane_cv$ent$14),
+        .ent$15(lane_cv$ent$15),
+        .ent$16(lane_cv$ent$16),
+        .ent$17(lane_cv$ent$17),
+        .ent$18(lane_cv$ent$18),
+        .ent$19(lane_cv$ent$19),
+        .ent$20(lane_cv$ent$20)
     );
     fcc_top__thr_window__shift_en__0_k7_668cf05b shift_en$0(
         .clock(shift_en$0$clock),
@@ -57927,16 +57663,16 @@ module fcc_top__thr_window_k7_668cf05b(clk,rst,valid,col,rdcol,key,cv,centre_key
         cv_valid$1$d = cv_valid$0$q;
         cv_col$1$d = cv_col$0$q;
         cv_rdcol$1$d = cv_rdcol$0$q;
-        lb_key$0$clk = clk;
-        lb_cv$0$clk = clk;
-        lb_key$0$read_en = cv_valid$1$q;
-        lb_cv$0$read_en = cv_valid$1$q;
-        lb_key$0$read_addr = cv_rdcol$1$q;
-        lb_cv$0$read_addr = cv_rdcol$1$q;
-        lb_key$0$write_en = lb_write_en$0$q;
-        lb_cv$0$write_en = lb_write_en$0$q;
-        lb_key$0$write_addr = lb_write_addr$0$q;
-        lb_cv$0$write_addr = lb_write_addr$0$q;
+        lane_key$clk = clk;
+        lane_cv$clk = clk;
+        lane_key$read_en = cv_valid$1$q;
+        lane_cv$read_en = cv_valid$1$q;
+        lane_key$read_addr = cv_rdcol$1$q;
+        lane_cv$read_addr = cv_rdcol$1$q;
+        lane_key$cas_en$0 = lb_write_en$0$q;
+        lane_cv$cas_en$0 = lb_write_en$0$q;
+        lane_key$cas_addr$0 = lb_write_addr$0$q;
+        lane_cv$cas_addr$0 = lb_write_addr$0$q;
         lb_write_en$0$clock = clk;
         lb_write_en$0$d = t1_valid$q & ~rst;
         lb_write_addr$0$clock = clk;
@@ -57944,16 +57680,10 @@ module fcc_top__thr_window_k7_668cf05b(clk,rst,valid,col,rdcol,key,cv,centre_key
         if (rst) begin
             lb_write_addr$0$d = zero12;
         end
-        lb_key$1$clk = clk;
-        lb_cv$1$clk = clk;
-        lb_key$1$read_en = cv_valid$1$q;
-        lb_cv$1$read_en = cv_valid$1$q;
-        lb_key$1$read_addr = cv_rdcol$1$q;
-        lb_cv$1$read_addr = cv_rdcol$1$q;
-        lb_key$1$write_en = lb_write_en$1$q;
-        lb_cv$1$write_en = lb_write_en$1$q;
-        lb_key$1$write_addr = lb_write_addr$1$q;
-        lb_cv$1$write_addr = lb_write_addr$1$q;
+        lane_key$cas_en$1 = lb_write_en$1$q;
+        lane_cv$cas_en$1 = lb_write_en$1$q;
+        lane_key$cas_addr$1 = lb_write_addr$1$q;
+        lane_cv$cas_addr$1 = lb_write_addr$1$q;
         lb_write_en$1$clock = clk;
         lb_write_en$1$d = t1_valid$q & ~rst;
         lb_write_addr$1$clock = clk;
@@ -57961,16 +57691,10 @@ module fcc_top__thr_window_k7_668cf05b(clk,rst,valid,col,rdcol,key,cv,centre_key
         if (rst) begin
             lb_write_addr$1$d = zero12;
         end
-        lb_key$2$clk = clk;
-        lb_cv$2$clk = clk;
-        lb_key$2$read_en = cv_valid$1$q;
-        lb_cv$2$read_en = cv_valid$1$q;
-        lb_key$2$read_addr = cv_rdcol$1$q;
-        lb_cv$2$read_addr = cv_rdcol$1$q;
-        lb_key$2$write_en = lb_write_en$2$q;
-        lb_cv$2$write_en = lb_write_en$2$q;
-        lb_key$2$write_addr = lb_write_addr$2$q;
-        lb_cv$2$write_addr = lb_write_addr$2$q;
+        lane_key$cas_en$2 = lb_write_en$2$q;
+        lane_cv$cas_en$2 = lb_write_en$2$q;
+        lane_key$cas_addr$2 = lb_write_addr$2$q;
+        lane_cv$cas_addr$2 = lb_write_addr$2$q;
         lb_write_en$2$clock = clk;
         lb_write_en$2$d = t1_valid$q & ~rst;
         lb_write_addr$2$clock = clk;
@@ -57986,306 +57710,134 @@ module fcc_top__thr_window_k7_668cf05b(clk,rst,valid,col,rdcol,key,cv,centre_key
         t2_cv$d = t1_cv$q;
         t3_key$d = t2_key$q;
         t3_cv$d = t2_cv$q;
-        view_key$0 = win_key$1$q;
-        view_cv$0 = win_cv$1$q;
-        view_key$1 = win_key$2$q;
-        view_cv$1 = win_cv$2$q;
-        view_key$2 = win_key$3$q;
-        view_cv$2 = win_cv$3$q;
-        view_key$3 = win_key$4$q;
-        view_cv$3 = win_cv$4$q;
-        view_key$4 = win_key$5$q;
-        view_cv$4 = win_cv$5$q;
-        view_key$5 = win_key$6$q;
-        view_cv$5 = win_cv$6$q;
-        view_key$6 = lb_key$2$read_data;
-        view_cv$6 = lb_cv$2$read_data;
-        view_key$7 = win_key$8$q;
-        view_cv$7 = win_cv$8$q;
-        view_key$8 = win_key$9$q;
-        view_cv$8 = win_cv$9$q;
-        view_key$9 = win_key$10$q;
-        view_cv$9 = win_cv$10$q;
-        view_key$10 = win_key$11$q;
-        view_cv$10 = win_cv$11$q;
-        view_key$11 = win_key$12$q;
-        view_cv$11 = win_cv$12$q;
-        view_key$12 = win_key$13$q;
-        view_cv$12 = win_cv$13$q;
-        view_key$13 = lb_key$1$read_data;
-        view_cv$13 = lb_cv$1$read_data;
-        view_key$14 = win_key$15$q;
-        view_cv$14 = win_cv$15$q;
-        view_key$15 = win_key$16$q;
-        view_cv$15 = win_cv$16$q;
-        view_key$16 = win_key$17$q;
-        view_cv$16 = win_cv$17$q;
-        view_key$17 = win_key$18$q;
-        view_cv$17 = win_cv$18$q;
-        view_key$18 = win_key$19$q;
-        view_cv$18 = win_cv$19$q;
-        view_key$19 = win_key$20$q;
-        view_cv$19 = win_cv$20$q;
-        view_key$20 = lb_key$0$read_data;
-        view_cv$20 = lb_cv$0$read_data;
-        lb_key$1$write_data = view_key$17;
-        lb_cv$1$write_data = view_cv$17;
-        lb_key$2$write_data = view_key$10;
-        lb_cv$2$write_data = view_cv$10;
-        lb_key$0$write_data = t2_key$q;
-        lb_cv$0$write_data = t2_cv$q;
-        win_key$0$clock = clk;
-        win_cv$0$clock = clk;
-        win_key$0$d = win_key$0$q;
-        win_cv$0$d = win_cv$0$q;
+        lane_key$in_data = t2_key$q;
+        lane_cv$in_data = t2_cv$q;
         shift_en$0$clock = clk;
         shift_en$0$d = t1_valid$q & ~rst;
-        if (shift_en$0$q) begin
-            win_key$0$d = view_key$0;
-            win_cv$0$d = view_cv$0;
-        end
-        ent_key$0 = win_key$0$q;
-        ent_cv$0 = cv_high | win_cv$0$q;
-        win_key$1$clock = clk;
-        win_cv$1$clock = clk;
-        win_key$1$d = win_key$1$q;
-        win_cv$1$d = win_cv$1$q;
+        lane_key$shift_en$0 = shift_en$0$q;
+        lane_cv$shift_en$0 = shift_en$0$q;
+        ent_key$0 = lane_key$ent$0;
+        ent_cv$0 = cv_high | lane_cv$ent$0;
         shift_en$1$clock = clk;
         shift_en$1$d = t1_valid$q & ~rst;
-        if (shift_en$1$q) begin
-            win_key$1$d = view_key$1;
-            win_cv$1$d = view_cv$1;
-        end
-        ent_key$1 = win_key$1$q;
-        ent_cv$1 = cv_high | win_cv$1$q;
-        win_key$2$clock = clk;
-        win_cv$2$clock = clk;
-        win_key$2$d = win_key$2$q;
-        win_cv$2$d = win_cv$2$q;
+        lane_key$shift_en$1 = shift_en$1$q;
+        lane_cv$shift_en$1 = shift_en$1$q;
+        ent_key$1 = lane_key$ent$1;
+        ent_cv$1 = cv_high | lane_cv$ent$1;
         shift_en$2$clock = clk;
         shift_en$2$d = t1_valid$q & ~rst;
-        if (shift_en$2$q) begin
-            win_key$2$d = view_key$2;
-            win_cv$2$d = view_cv$2;
-        end
-        ent_key$2 = win_key$2$q;
-        ent_cv$2 = cv_high | win_cv$2$q;
-        win_key$3$clock = clk;
-        win_cv$3$clock = clk;
-        win_key$3$d = win_key$3$q;
-        win_cv$3$d = win_cv$3$q;
+        lane_key$shift_en$2 = shift_en$2$q;
+        lane_cv$shift_en$2 = shift_en$2$q;
+        ent_key$2 = lane_key$ent$2;
+        ent_cv$2 = cv_high | lane_cv$ent$2;
         shift_en$3$clock = clk;
         shift_en$3$d = t1_valid$q & ~rst;
-        if (shift_en$3$q) begin
-            win_key$3$d = view_key$3;
-            win_cv$3$d = view_cv$3;
-        end
-        ent_key$3 = win_key$3$q;
-        ent_cv$3 = cv_high | win_cv$3$q;
-        win_key$4$clock = clk;
-        win_cv$4$clock = clk;
-        win_key$4$d = win_key$4$q;
-        win_cv$4$d = win_cv$4$q;
+        lane_key$shift_en$3 = shift_en$3$q;
+        lane_cv$shift_en$3 = shift_en$3$q;
+        ent_key$3 = lane_key$ent$3;
+        ent_cv$3 = cv_high | lane_cv$ent$3;
         shift_en$4$clock = clk;
         shift_en$4$d = t1_valid$q & ~rst;
-        if (shift_en$4$q) begin
-            win_key$4$d = view_key$4;
-            win_cv$4$d = view_cv$4;
-        end
-        ent_key$4 = win_key$4$q;
-        ent_cv$4 = cv_high | win_cv$4$q;
-        win_key$5$clock = clk;
-        win_cv$5$clock = clk;
-        win_key$5$d = win_key$5$q;
-        win_cv$5$d = win_cv$5$q;
+        lane_key$shift_en$4 = shift_en$4$q;
+        lane_cv$shift_en$4 = shift_en$4$q;
+        ent_key$4 = lane_key$ent$4;
+        ent_cv$4 = cv_high | lane_cv$ent$4;
         shift_en$5$clock = clk;
         shift_en$5$d = t1_valid$q & ~rst;
-        if (shift_en$5$q) begin
-            win_key$5$d = view_key$5;
-            win_cv$5$d = view_cv$5;
-        end
-        ent_key$5 = win_key$5$q;
-        ent_cv$5 = cv_high | win_cv$5$q;
-        win_key$6$clock = clk;
-        win_cv$6$clock = clk;
-        win_key$6$d = win_key$6$q;
-        win_cv$6$d = win_cv$6$q;
+        lane_key$shift_en$5 = shift_en$5$q;
+        lane_cv$shift_en$5 = shift_en$5$q;
+        ent_key$5 = lane_key$ent$5;
+        ent_cv$5 = cv_high | lane_cv$ent$5;
         shift_en$6$clock = clk;
         shift_en$6$d = t1_valid$q & ~rst;
-        if (shift_en$6$q) begin
-            win_key$6$d = view_key$6;
-            win_cv$6$d = view_cv$6;
-        end
-        ent_key$6 = win_key$6$q;
-        ent_cv$6 = cv_high | win_cv$6$q;
-        win_key$7$clock = clk;
-        win_cv$7$clock = clk;
-        win_key$7$d = win_key$7$q;
-        win_cv$7$d = win_cv$7$q;
+        lane_key$shift_en$6 = shift_en$6$q;
+        lane_cv$shift_en$6 = shift_en$6$q;
+        ent_key$6 = lane_key$ent$6;
+        ent_cv$6 = cv_high | lane_cv$ent$6;
         shift_en$7$clock = clk;
         shift_en$7$d = t1_valid$q & ~rst;
-        if (shift_en$7$q) begin
-            win_key$7$d = view_key$7;
-            win_cv$7$d = view_cv$7;
-        end
-        ent_key$7 = win_key$7$q;
-        ent_cv$7 = cv_high | win_cv$7$q;
-        win_key$8$clock = clk;
-        win_cv$8$clock = clk;
-        win_key$8$d = win_key$8$q;
-        win_cv$8$d = win_cv$8$q;
+        lane_key$shift_en$7 = shift_en$7$q;
+        lane_cv$shift_en$7 = shift_en$7$q;
+        ent_key$7 = lane_key$ent$7;
+        ent_cv$7 = cv_high | lane_cv$ent$7;
         shift_en$8$clock = clk;
         shift_en$8$d = t1_valid$q & ~rst;
-        if (shift_en$8$q) begin
-            win_key$8$d = view_key$8;
-            win_cv$8$d = view_cv$8;
-        end
-        ent_key$8 = win_key$8$q;
-        ent_cv$8 = cv_high | win_cv$8$q;
-        win_key$9$clock = clk;
-        win_cv$9$clock = clk;
-        win_key$9$d = win_key$9$q;
-        win_cv$9$d = win_cv$9$q;
+        lane_key$shift_en$8 = shift_en$8$q;
+        lane_cv$shift_en$8 = shift_en$8$q;
+        ent_key$8 = lane_key$ent$8;
+        ent_cv$8 = cv_high | lane_cv$ent$8;
         shift_en$9$clock = clk;
         shift_en$9$d = t1_valid$q & ~rst;
-        if (shift_en$9$q) begin
-            win_key$9$d = view_key$9;
-            win_cv$9$d = view_cv$9;
-        end
-        ent_key$9 = win_key$9$q;
-        ent_cv$9 = cv_high | win_cv$9$q;
-        win_key$10$clock = clk;
-        win_cv$10$clock = clk;
-        win_key$10$d = win_key$10$q;
-        win_cv$10$d = win_cv$10$q;
+        lane_key$shift_en$9 = shift_en$9$q;
+        lane_cv$shift_en$9 = shift_en$9$q;
+        ent_key$9 = lane_key$ent$9;
+        ent_cv$9 = cv_high | lane_cv$ent$9;
         shift_en$10$clock = clk;
         shift_en$10$d = t1_valid$q & ~rst;
-        if (shift_en$10$q) begin
-            win_key$10$d = view_key$10;
-            win_cv$10$d = view_cv$10;
-        end
-        ent_key$10 = win_key$10$q;
-        ent_cv$10 = cv_high | win_cv$10$q;
-        win_key$11$clock = clk;
-        win_cv$11$clock = clk;
-        win_key$11$d = win_key$11$q;
-        win_cv$11$d = win_cv$11$q;
+        lane_key$shift_en$10 = shift_en$10$q;
+        lane_cv$shift_en$10 = shift_en$10$q;
+        ent_key$10 = lane_key$ent$10;
+        ent_cv$10 = cv_high | lane_cv$ent$10;
         shift_en$11$clock = clk;
         shift_en$11$d = t1_valid$q & ~rst;
-        if (shift_en$11$q) begin
-            win_key$11$d = view_key$11;
-            win_cv$11$d = view_cv$11;
-        end
-        ent_key$11 = win_key$11$q;
-        ent_cv$11 = cv_high | win_cv$11$q;
-        win_key$12$clock = clk;
-        win_cv$12$clock = clk;
-        win_key$12$d = win_key$12$q;
-        win_cv$12$d = win_cv$12$q;
+        lane_key$shift_en$11 = shift_en$11$q;
+        lane_cv$shift_en$11 = shift_en$11$q;
+        ent_key$11 = lane_key$ent$11;
+        ent_cv$11 = cv_high | lane_cv$ent$11;
         shift_en$12$clock = clk;
         shift_en$12$d = t1_valid$q & ~rst;
-        if (shift_en$12$q) begin
-            win_key$12$d = view_key$12;
-            win_cv$12$d = view_cv$12;
-        end
-        ent_key$12 = win_key$12$q;
-        ent_cv$12 = cv_high | win_cv$12$q;
-        win_key$13$clock = clk;
-        win_cv$13$clock = clk;
-        win_key$13$d = win_key$13$q;
-        win_cv$13$d = win_cv$13$q;
+        lane_key$shift_en$12 = shift_en$12$q;
+        lane_cv$shift_en$12 = shift_en$12$q;
+        ent_key$12 = lane_key$ent$12;
+        ent_cv$12 = cv_high | lane_cv$ent$12;
         shift_en$13$clock = clk;
         shift_en$13$d = t1_valid$q & ~rst;
-        if (shift_en$13$q) begin
-            win_key$13$d = view_key$13;
-            win_cv$13$d = view_cv$13;
-        end
-        ent_key$13 = win_key$13$q;
-        ent_cv$13 = cv_high | win_cv$13$q;
-        win_key$14$clock = clk;
-        win_cv$14$clock = clk;
-        win_key$14$d = win_key$14$q;
-        win_cv$14$d = win_cv$14$q;
+        lane_key$shift_en$13 = shift_en$13$q;
+        lane_cv$shift_en$13 = shift_en$13$q;
+        ent_key$13 = lane_key$ent$13;
+        ent_cv$13 = cv_high | lane_cv$ent$13;
         shift_en$14$clock = clk;
         shift_en$14$d = t1_valid$q & ~rst;
-        if (shift_en$14$q) begin
-            win_key$14$d = view_key$14;
-            win_cv$14$d = view_cv$14;
-        end
-        ent_key$14 = win_key$14$q;
-        ent_cv$14 = cv_high | win_cv$14$q;
-        win_key$15$clock = clk;
-        win_cv$15$clock = clk;
-        win_key$15$d = win_key$15$q;
-        win_cv$15$d = win_cv$15$q;
+        lane_key$shift_en$14 = shift_en$14$q;
+        lane_cv$shift_en$14 = shift_en$14$q;
+        ent_key$14 = lane_key$ent$14;
+        ent_cv$14 = cv_high | lane_cv$ent$14;
         shift_en$15$clock = clk;
         shift_en$15$d = t1_valid$q & ~rst;
-        if (shift_en$15$q) begin
-            win_key$15$d = view_key$15;
-            win_cv$15$d = view_cv$15;
-        end
-        ent_key$15 = win_key$15$q;
-        ent_cv$15 = cv_high | win_cv$15$q;
-        win_key$16$clock = clk;
-        win_cv$16$clock = clk;
-        win_key$16$d = win_key$16$q;
-        win_cv$16$d = win_cv$16$q;
+        lane_key$shift_en$15 = shift_en$15$q;
+        lane_cv$shift_en$15 = shift_en$15$q;
+        ent_key$15 = lane_key$ent$15;
+        ent_cv$15 = cv_high | lane_cv$ent$15;
         shift_en$16$clock = clk;
         shift_en$16$d = t1_valid$q & ~rst;
-        if (shift_en$16$q) begin
-            win_key$16$d = view_key$16;
-            win_cv$16$d = view_cv$16;
-        end
-        ent_key$16 = win_key$16$q;
-        ent_cv$16 = cv_high | win_cv$16$q;
-        win_key$17$clock = clk;
-        win_cv$17$clock = clk;
-        win_key$17$d = win_key$17$q;
-        win_cv$17$d = win_cv$17$q;
+        lane_key$shift_en$16 = shift_en$16$q;
+        lane_cv$shift_en$16 = shift_en$16$q;
+        ent_key$16 = lane_key$ent$16;
+        ent_cv$16 = cv_high | lane_cv$ent$16;
         shift_en$17$clock = clk;
         shift_en$17$d = t1_valid$q & ~rst;
-        if (shift_en$17$q) begin
-            win_key$17$d = view_key$17;
-            win_cv$17$d = view_cv$17;
-        end
-        ent_key$17 = win_key$17$q;
-        ent_cv$17 = cv_high | win_cv$17$q;
-        win_key$18$clock = clk;
-        win_cv$18$clock = clk;
-        win_key$18$d = win_key$18$q;
-        win_cv$18$d = win_cv$18$q;
+        lane_key$shift_en$17 = shift_en$17$q;
+        lane_cv$shift_en$17 = shift_en$17$q;
+        ent_key$17 = lane_key$ent$17;
+        ent_cv$17 = cv_high | lane_cv$ent$17;
         shift_en$18$clock = clk;
         shift_en$18$d = t1_valid$q & ~rst;
-        if (shift_en$18$q) begin
-            win_key$18$d = view_key$18;
-            win_cv$18$d = view_cv$18;
-        end
-        ent_key$18 = win_key$18$q;
-        ent_cv$18 = cv_high | win_cv$18$q;
-        win_key$19$clock = clk;
-        win_cv$19$clock = clk;
-        win_key$19$d = win_key$19$q;
-        win_cv$19$d = win_cv$19$q;
+        lane_key$shift_en$18 = shift_en$18$q;
+        lane_cv$shift_en$18 = shift_en$18$q;
+        ent_key$18 = lane_key$ent$18;
+        ent_cv$18 = cv_high | lane_cv$ent$18;
         shift_en$19$clock = clk;
         shift_en$19$d = t1_valid$q & ~rst;
-        if (shift_en$19$q) begin
-            win_key$19$d = view_key$19;
-            win_cv$19$d = view_cv$19;
-        end
-        ent_key$19 = win_key$19$q;
-        ent_cv$19 = cv_high | win_cv$19$q;
-        win_key$20$clock = clk;
-        win_cv$20$clock = clk;
-        win_key$20$d = win_key$20$q;
-        win_cv$20$d = win_cv$20$q;
+        lane_key$shift_en$19 = shift_en$19$q;
+        lane_cv$shift_en$19 = shift_en$19$q;
+        ent_key$19 = lane_key$ent$19;
+        ent_cv$19 = cv_high | lane_cv$ent$19;
         shift_en$20$clock = clk;
         shift_en$20$d = t1_valid$q & ~rst;
-        if (shift_en$20$q) begin
-            win_key$20$d = view_key$20;
-            win_cv$20$d = view_cv$20;
-        end
-        ent_key$20 = win_key$20$q;
-        ent_cv$20 = cv_high | win_cv$20$q;
+        lane_key$shift_en$20 = shift_en$20$q;
+        lane_cv$shift_en$20 = shift_en$20$q;
+        ent_key$20 = lane_key$ent$20;
+        ent_cv$20 = cv_high | lane_cv$ent$20;
         if (rst) begin
             cv_valid$0$d = 1'b0;
             cv_valid$1$d = 1'b0;
@@ -58414,7 +57966,478 @@ module fcc_top__thr_window__cv_valid__1_k7_668cf05b(d,q,clock);
 endmodule // fcc_top__thr_window__cv_valid__1_k7_668cf05b
 
 
-module fcc_top__thr_window__lb_cv__0_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
+module fcc_top__thr_window__lane_cv_k7_668cf05b(clk,read_en,read_addr,in_data,cas_en$0,cas_en$1,cas_en$2,cas_addr$0,cas_addr$1,cas_addr$2,shift_en$0,shift_en$1,shift_en$2,shift_en$3,shift_en$4,shift_en$5,shift_en$6,shift_en$7,shift_en$8,shift_en$9,shift_en$10,shift_en$11,shift_en$12,shift_en$13,shift_en$14,shift_en$15,shift_en$16,shift_en$17,shift_en$18,shift_en$19,shift_en$20,ent$0,ent$1,ent$2,ent$3,ent$4,ent$5,ent$6,ent$7,ent$8,ent$9,ent$10,ent$11,ent$12,ent$13,ent$14,ent$15,ent$16,ent$17,ent$18,ent$19,ent$20);
+
+    // Module arguments
+    input wire  clk;
+    input wire  read_en;
+    input wire  [11:0] read_addr;
+    input wire  [35:0] in_data;
+    input wire  cas_en$0;
+    input wire  cas_en$1;
+    input wire  cas_en$2;
+    input wire  [11:0] cas_addr$0;
+    input wire  [11:0] cas_addr$1;
+    input wire  [11:0] cas_addr$2;
+    input wire  shift_en$0;
+    input wire  shift_en$1;
+    input wire  shift_en$2;
+    input wire  shift_en$3;
+    input wire  shift_en$4;
+    input wire  shift_en$5;
+    input wire  shift_en$6;
+    input wire  shift_en$7;
+    input wire  shift_en$8;
+    input wire  shift_en$9;
+    input wire  shift_en$10;
+    input wire  shift_en$11;
+    input wire  shift_en$12;
+    input wire  shift_en$13;
+    input wire  shift_en$14;
+    input wire  shift_en$15;
+    input wire  shift_en$16;
+    input wire  shift_en$17;
+    input wire  shift_en$18;
+    input wire  shift_en$19;
+    input wire  shift_en$20;
+    output reg  [35:0] ent$0;
+    output reg  [35:0] ent$1;
+    output reg  [35:0] ent$2;
+    output reg  [35:0] ent$3;
+    output reg  [35:0] ent$4;
+    output reg  [35:0] ent$5;
+    output reg  [35:0] ent$6;
+    output reg  [35:0] ent$7;
+    output reg  [35:0] ent$8;
+    output reg  [35:0] ent$9;
+    output reg  [35:0] ent$10;
+    output reg  [35:0] ent$11;
+    output reg  [35:0] ent$12;
+    output reg  [35:0] ent$13;
+    output reg  [35:0] ent$14;
+    output reg  [35:0] ent$15;
+    output reg  [35:0] ent$16;
+    output reg  [35:0] ent$17;
+    output reg  [35:0] ent$18;
+    output reg  [35:0] ent$19;
+    output reg  [35:0] ent$20;
+
+    // Stub signals
+    reg  lb$0$clk;
+    reg  lb$0$read_en;
+    reg  [11:0] lb$0$read_addr;
+    wire  [35:0] lb$0$read_data;
+    reg  lb$0$write_en;
+    reg  [11:0] lb$0$write_addr;
+    reg  [35:0] lb$0$write_data;
+    reg  lb$1$clk;
+    reg  lb$1$read_en;
+    reg  [11:0] lb$1$read_addr;
+    wire  [35:0] lb$1$read_data;
+    reg  lb$1$write_en;
+    reg  [11:0] lb$1$write_addr;
+    reg  [35:0] lb$1$write_data;
+    reg  lb$2$clk;
+    reg  lb$2$read_en;
+    reg  [11:0] lb$2$read_addr;
+    wire  [35:0] lb$2$read_data;
+    reg  lb$2$write_en;
+    reg  [11:0] lb$2$write_addr;
+    reg  [35:0] lb$2$write_data;
+    reg  [35:0] win$0$d;
+    wire  [35:0] win$0$q;
+    reg  win$0$clock;
+    reg  [35:0] win$1$d;
+    wire  [35:0] win$1$q;
+    reg  win$1$clock;
+    reg  [35:0] win$2$d;
+    wire  [35:0] win$2$q;
+    reg  win$2$clock;
+    reg  [35:0] win$3$d;
+    wire  [35:0] win$3$q;
+    reg  win$3$clock;
+    reg  [35:0] win$4$d;
+    wire  [35:0] win$4$q;
+    reg  win$4$clock;
+    reg  [35:0] win$5$d;
+    wire  [35:0] win$5$q;
+    reg  win$5$clock;
+    reg  [35:0] win$6$d;
+    wire  [35:0] win$6$q;
+    reg  win$6$clock;
+    reg  [35:0] win$7$d;
+    wire  [35:0] win$7$q;
+    reg  win$7$clock;
+    reg  [35:0] win$8$d;
+    wire  [35:0] win$8$q;
+    reg  win$8$clock;
+    reg  [35:0] win$9$d;
+    wire  [35:0] win$9$q;
+    reg  win$9$clock;
+    reg  [35:0] win$10$d;
+    wire  [35:0] win$10$q;
+    reg  win$10$clock;
+    reg  [35:0] win$11$d;
+    wire  [35:0] win$11$q;
+    reg  win$11$clock;
+    reg  [35:0] win$12$d;
+    wire  [35:0] win$12$q;
+    reg  win$12$clock;
+    reg  [35:0] win$13$d;
+    wire  [35:0] win$13$q;
+    reg  win$13$clock;
+    reg  [35:0] win$14$d;
+    wire  [35:0] win$14$q;
+    reg  win$14$clock;
+    reg  [35:0] win$15$d;
+    wire  [35:0] win$15$q;
+    reg  win$15$clock;
+    reg  [35:0] win$16$d;
+    wire  [35:0] win$16$q;
+    reg  win$16$clock;
+    reg  [35:0] win$17$d;
+    wire  [35:0] win$17$q;
+    reg  win$17$clock;
+    reg  [35:0] win$18$d;
+    wire  [35:0] win$18$q;
+    reg  win$18$clock;
+    reg  [35:0] win$19$d;
+    wire  [35:0] win$19$q;
+    reg  win$19$clock;
+    reg  [35:0] win$20$d;
+    wire  [35:0] win$20$q;
+    reg  win$20$clock;
+
+    // Local signals
+    reg  [35:0] view$0;
+    reg  [35:0] view$1;
+    reg  [35:0] view$2;
+    reg  [35:0] view$3;
+    reg  [35:0] view$4;
+    reg  [35:0] view$5;
+    reg  [35:0] view$6;
+    reg  [35:0] view$7;
+    reg  [35:0] view$8;
+    reg  [35:0] view$9;
+    reg  [35:0] view$10;
+    reg  [35:0] view$11;
+    reg  [35:0] view$12;
+    reg  [35:0] view$13;
+    reg  [35:0] view$14;
+    reg  [35:0] view$15;
+    reg  [35:0] view$16;
+    reg  [35:0] view$17;
+    reg  [35:0] view$18;
+    reg  [35:0] view$19;
+    reg  [35:0] view$20;
+
+    // Sub module instances
+    fcc_top__thr_window__lane_cv__lb__0_k7_668cf05b lb$0(
+        .clk(lb$0$clk),
+        .read_en(lb$0$read_en),
+        .read_addr(lb$0$read_addr),
+        .read_data(lb$0$read_data),
+        .write_en(lb$0$write_en),
+        .write_addr(lb$0$write_addr),
+        .write_data(lb$0$write_data)
+    );
+    fcc_top__thr_window__lane_cv__lb__1_k7_668cf05b lb$1(
+        .clk(lb$1$clk),
+        .read_en(lb$1$read_en),
+        .read_addr(lb$1$read_addr),
+        .read_data(lb$1$read_data),
+        .write_en(lb$1$write_en),
+        .write_addr(lb$1$write_addr),
+        .write_data(lb$1$write_data)
+    );
+    fcc_top__thr_window__lane_cv__lb__2_k7_668cf05b lb$2(
+        .clk(lb$2$clk),
+        .read_en(lb$2$read_en),
+        .read_addr(lb$2$read_addr),
+        .read_data(lb$2$read_data),
+        .write_en(lb$2$write_en),
+        .write_addr(lb$2$write_addr),
+        .write_data(lb$2$write_data)
+    );
+    fcc_top__thr_window__lane_cv__win__0_k7_668cf05b win$0(
+        .d(win$0$d),
+        .q(win$0$q),
+        .clock(win$0$clock)
+    );
+    fcc_top__thr_window__lane_cv__win__1_k7_668cf05b win$1(
+        .d(win$1$d),
+        .q(win$1$q),
+        .clock(win$1$clock)
+    );
+    fcc_top__thr_window__lane_cv__win__2_k7_668cf05b win$2(
+        .d(win$2$d),
+        .q(win$2$q),
+        .clock(win$2$clock)
+    );
+    fcc_top__thr_window__lane_cv__win__3_k7_668cf05b win$3(
+        .d(win$3$d),
+        .q(win$3$q),
+        .clock(win$3$clock)
+    );
+    fcc_top__thr_window__lane_cv__win__4_k7_668cf05b win$4(
+        .d(win$4$d),
+        .q(win$4$q),
+        .clock(win$4$clock)
+    );
+    fcc_top__thr_window__lane_cv__win__5_k7_668cf05b win$5(
+        .d(win$5$d),
+        .q(win$5$q),
+        .clock(win$5$clock)
+    );
+    fcc_top__thr_window__lane_cv__win__6_k7_668cf05b win$6(
+        .d(win$6$d),
+        .q(win$6$q),
+        .clock(win$6$clock)
+    );
+    fcc_top__thr_window__lane_cv__win__7_k7_668cf05b win$7(
+        .d(win$7$d),
+        .q(win$7$q),
+        .clock(win$7$clock)
+    );
+    fcc_top__thr_window__lane_cv__win__8_k7_668cf05b win$8(
+        .d(win$8$d),
+        .q(win$8$q),
+        .clock(win$8$clock)
+    );
+    fcc_top__thr_window__lane_cv__win__9_k7_668cf05b win$9(
+        .d(win$9$d),
+        .q(win$9$q),
+        .clock(win$9$clock)
+    );
+    fcc_top__thr_window__lane_cv__win__10_k7_668cf05b win$10(
+        .d(win$10$d),
+        .q(win$10$q),
+        .clock(win$10$clock)
+    );
+    fcc_top__thr_window__lane_cv__win__11_k7_668cf05b win$11(
+        .d(win$11$d),
+        .q(win$11$q),
+        .clock(win$11$clock)
+    );
+    fcc_top__thr_window__lane_cv__win__12_k7_668cf05b win$12(
+        .d(win$12$d),
+        .q(win$12$q),
+        .clock(win$12$clock)
+    );
+    fcc_top__thr_window__lane_cv__win__13_k7_668cf05b win$13(
+        .d(win$13$d),
+        .q(win$13$q),
+        .clock(win$13$clock)
+    );
+    fcc_top__thr_window__lane_cv__win__14_k7_668cf05b win$14(
+        .d(win$14$d),
+        .q(win$14$q),
+        .clock(win$14$clock)
+    );
+    fcc_top__thr_window__lane_cv__win__15_k7_668cf05b win$15(
+        .d(win$15$d),
+        .q(win$15$q),
+        .clock(win$15$clock)
+    );
+    fcc_top__thr_window__lane_cv__win__16_k7_668cf05b win$16(
+        .d(win$16$d),
+        .q(win$16$q),
+        .clock(win$16$clock)
+    );
+    fcc_top__thr_window__lane_cv__win__17_k7_668cf05b win$17(
+        .d(win$17$d),
+        .q(win$17$q),
+        .clock(win$17$clock)
+    );
+    fcc_top__thr_window__lane_cv__win__18_k7_668cf05b win$18(
+        .d(win$18$d),
+        .q(win$18$q),
+        .clock(win$18$clock)
+    );
+    fcc_top__thr_window__lane_cv__win__19_k7_668cf05b win$19(
+        .d(win$19$d),
+        .q(win$19$q),
+        .clock(win$19$clock)
+    );
+    fcc_top__thr_window__lane_cv__win__20_k7_668cf05b win$20(
+        .d(win$20$d),
+        .q(win$20$q),
+        .clock(win$20$clock)
+    );
+
+    // Update code
+    always @(*) begin
+        lb$0$clk = clk;
+        lb$0$read_en = read_en;
+        lb$0$read_addr = read_addr;
+        lb$0$write_en = cas_en$0;
+        lb$0$write_addr = cas_addr$0;
+        lb$1$clk = clk;
+        lb$1$read_en = read_en;
+        lb$1$read_addr = read_addr;
+        lb$1$write_en = cas_en$1;
+        lb$1$write_addr = cas_addr$1;
+        lb$2$clk = clk;
+        lb$2$read_en = read_en;
+        lb$2$read_addr = read_addr;
+        lb$2$write_en = cas_en$2;
+        lb$2$write_addr = cas_addr$2;
+        lb$0$write_data = in_data;
+        view$0 = win$1$q;
+        view$1 = win$2$q;
+        view$2 = win$3$q;
+        view$3 = win$4$q;
+        view$4 = win$5$q;
+        view$5 = win$6$q;
+        view$6 = lb$2$read_data;
+        view$7 = win$8$q;
+        view$8 = win$9$q;
+        view$9 = win$10$q;
+        view$10 = win$11$q;
+        view$11 = win$12$q;
+        view$12 = win$13$q;
+        view$13 = lb$1$read_data;
+        view$14 = win$15$q;
+        view$15 = win$16$q;
+        view$16 = win$17$q;
+        view$17 = win$18$q;
+        view$18 = win$19$q;
+        view$19 = win$20$q;
+        view$20 = lb$0$read_data;
+        lb$1$write_data = view$17;
+        lb$2$write_data = view$10;
+        win$0$clock = clk;
+        win$0$d = win$0$q;
+        if (shift_en$0) begin
+            win$0$d = view$0;
+        end
+        ent$0 = win$0$q;
+        win$1$clock = clk;
+        win$1$d = win$1$q;
+        if (shift_en$1) begin
+            win$1$d = view$1;
+        end
+        ent$1 = win$1$q;
+        win$2$clock = clk;
+        win$2$d = win$2$q;
+        if (shift_en$2) begin
+            win$2$d = view$2;
+        end
+        ent$2 = win$2$q;
+        win$3$clock = clk;
+        win$3$d = win$3$q;
+        if (shift_en$3) begin
+            win$3$d = view$3;
+        end
+        ent$3 = win$3$q;
+        win$4$clock = clk;
+        win$4$d = win$4$q;
+        if (shift_en$4) begin
+            win$4$d = view$4;
+        end
+        ent$4 = win$4$q;
+        win$5$clock = clk;
+        win$5$d = win$5$q;
+        if (shift_en$5) begin
+            win$5$d = view$5;
+        end
+        ent$5 = win$5$q;
+        win$6$clock = clk;
+        win$6$d = win$6$q;
+        if (shift_en$6) begin
+            win$6$d = view$6;
+        end
+        ent$6 = win$6$q;
+        win$7$clock = clk;
+        win$7$d = win$7$q;
+        if (shift_en$7) begin
+            win$7$d = view$7;
+        end
+        ent$7 = win$7$q;
+        win$8$clock = clk;
+        win$8$d = win$8$q;
+        if (shift_en$8) begin
+            win$8$d = view$8;
+        end
+        ent$8 = win$8$q;
+        win$9$clock = clk;
+        win$9$d = win$9$q;
+        if (shift_en$9) begin
+            win$9$d = view$9;
+        end
+        ent$9 = win$9$q;
+        win$10$clock = clk;
+        win$10$d = win$10$q;
+        if (shift_en$10) begin
+            win$10$d = view$10;
+        end
+        ent$10 = win$10$q;
+        win$11$clock = clk;
+        win$11$d = win$11$q;
+        if (shift_en$11) begin
+            win$11$d = view$11;
+        end
+        ent$11 = win$11$q;
+        win$12$clock = clk;
+        win$12$d = win$12$q;
+        if (shift_en$12) begin
+            win$12$d = view$12;
+        end
+        ent$12 = win$12$q;
+        win$13$clock = clk;
+        win$13$d = win$13$q;
+        if (shift_en$13) begin
+            win$13$d = view$13;
+        end
+        ent$13 = win$13$q;
+        win$14$clock = clk;
+        win$14$d = win$14$q;
+        if (shift_en$14) begin
+            win$14$d = view$14;
+        end
+        ent$14 = win$14$q;
+        win$15$clock = clk;
+        win$15$d = win$15$q;
+        if (shift_en$15) begin
+            win$15$d = view$15;
+        end
+        ent$15 = win$15$q;
+        win$16$clock = clk;
+        win$16$d = win$16$q;
+        if (shift_en$16) begin
+            win$16$d = view$16;
+        end
+        ent$16 = win$16$q;
+        win$17$clock = clk;
+        win$17$d = win$17$q;
+        if (shift_en$17) begin
+            win$17$d = view$17;
+        end
+        ent$17 = win$17$q;
+        win$18$clock = clk;
+        win$18$d = win$18$q;
+        if (shift_en$18) begin
+            win$18$d = view$18;
+        end
+        ent$18 = win$18$q;
+        win$19$clock = clk;
+        win$19$d = win$19$q;
+        if (shift_en$19) begin
+            win$19$d = view$19;
+        end
+        ent$19 = win$19$q;
+        win$20$clock = clk;
+        win$20$d = win$20$q;
+        if (shift_en$20) begin
+            win$20$d = view$20;
+        end
+        ent$20 = win$20$q;
+    end
+
+endmodule // fcc_top__thr_window__lane_cv_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_cv__lb__0_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
 
     // Module arguments
     input wire  clk;
@@ -58443,42 +58466,10 @@ module fcc_top__thr_window__lb_cv__0_k7_668cf05b(clk,read_en,read_addr,read_data
         end
         read_data <= {4'd0, rd1};
     end
-endmodule // fcc_top__thr_window__lb_cv__0_k7_668cf05b
+endmodule // fcc_top__thr_window__lane_cv__lb__0_k7_668cf05b
 
 
-module fcc_top__thr_window__lb_cv__1_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
-
-    // Module arguments
-    input wire  clk;
-    input wire  read_en;
-    input wire  [11:0] read_addr;
-    output reg  [35:0] read_data;
-    input wire  write_en;
-    input wire  [11:0] write_addr;
-    input wire  [35:0] write_data;
-
-    // Update code (custom)
-    // Address bits above the depth and data bits above the stored width are
-    // not used by this instance.
-    /* verilator lint_off UNUSEDSIGNAL */
-    wire unused_ok = &{1'b0, read_addr[11:11], write_addr[11:11], write_data[35:32]};
-    /* verilator lint_on UNUSEDSIGNAL */
-    reg [31:0] mem [0:2047];
-    // The block RAM's output register, then a fabric register.
-    reg [31:0] rd1;
-    always @(posedge clk) begin
-        if (read_en) begin
-            rd1 <= mem[read_addr[10:0]];
-        end
-        if (write_en) begin
-            mem[write_addr[10:0]] <= write_data[31:0];
-        end
-        read_data <= {4'd0, rd1};
-    end
-endmodule // fcc_top__thr_window__lb_cv__1_k7_668cf05b
-
-
-module fcc_top__thr_window__lb_cv__2_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
+module fcc_top__thr_window__lane_cv__lb__1_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
 
     // Module arguments
     input wire  clk;
@@ -58507,10 +58498,912 @@ module fcc_top__thr_window__lb_cv__2_k7_668cf05b(clk,read_en,read_addr,read_data
         end
         read_data <= {4'd0, rd1};
     end
-endmodule // fcc_top__thr_window__lb_cv__2_k7_668cf05b
+endmodule // fcc_top__thr_window__lane_cv__lb__1_k7_668cf05b
 
 
-module fcc_top__thr_window__lb_key__0_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
+module fcc_top__thr_window__lane_cv__lb__2_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
+
+    // Module arguments
+    input wire  clk;
+    input wire  read_en;
+    input wire  [11:0] read_addr;
+    output reg  [35:0] read_data;
+    input wire  write_en;
+    input wire  [11:0] write_addr;
+    input wire  [35:0] write_data;
+
+    // Update code (custom)
+    // Address bits above the depth and data bits above the stored width are
+    // not used by this instance.
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire unused_ok = &{1'b0, read_addr[11:11], write_addr[11:11], write_data[35:32]};
+    /* verilator lint_on UNUSEDSIGNAL */
+    reg [31:0] mem [0:2047];
+    // The block RAM's output register, then a fabric register.
+    reg [31:0] rd1;
+    always @(posedge clk) begin
+        if (read_en) begin
+            rd1 <= mem[read_addr[10:0]];
+        end
+        if (write_en) begin
+            mem[write_addr[10:0]] <= write_data[31:0];
+        end
+        read_data <= {4'd0, rd1};
+    end
+endmodule // fcc_top__thr_window__lane_cv__lb__2_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_cv__win__0_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_cv__win__0_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_cv__win__1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_cv__win__1_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_cv__win__10_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_cv__win__10_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_cv__win__11_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_cv__win__11_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_cv__win__12_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_cv__win__12_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_cv__win__13_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_cv__win__13_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_cv__win__14_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_cv__win__14_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_cv__win__15_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_cv__win__15_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_cv__win__16_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_cv__win__16_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_cv__win__17_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_cv__win__17_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_cv__win__18_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_cv__win__18_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_cv__win__19_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_cv__win__19_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_cv__win__2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_cv__win__2_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_cv__win__20_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_cv__win__20_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_cv__win__3_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_cv__win__3_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_cv__win__4_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_cv__win__4_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_cv__win__5_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_cv__win__5_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_cv__win__6_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_cv__win__6_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_cv__win__7_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_cv__win__7_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_cv__win__8_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_cv__win__8_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_cv__win__9_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [35:0] d;
+    output reg  [35:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 36'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_cv__win__9_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_key_k7_668cf05b(clk,read_en,read_addr,in_data,cas_en$0,cas_en$1,cas_en$2,cas_addr$0,cas_addr$1,cas_addr$2,shift_en$0,shift_en$1,shift_en$2,shift_en$3,shift_en$4,shift_en$5,shift_en$6,shift_en$7,shift_en$8,shift_en$9,shift_en$10,shift_en$11,shift_en$12,shift_en$13,shift_en$14,shift_en$15,shift_en$16,shift_en$17,shift_en$18,shift_en$19,shift_en$20,ent$0,ent$1,ent$2,ent$3,ent$4,ent$5,ent$6,ent$7,ent$8,ent$9,ent$10,ent$11,ent$12,ent$13,ent$14,ent$15,ent$16,ent$17,ent$18,ent$19,ent$20);
+
+    // Module arguments
+    input wire  clk;
+    input wire  read_en;
+    input wire  [11:0] read_addr;
+    input wire  [15:0] in_data;
+    input wire  cas_en$0;
+    input wire  cas_en$1;
+    input wire  cas_en$2;
+    input wire  [11:0] cas_addr$0;
+    input wire  [11:0] cas_addr$1;
+    input wire  [11:0] cas_addr$2;
+    input wire  shift_en$0;
+    input wire  shift_en$1;
+    input wire  shift_en$2;
+    input wire  shift_en$3;
+    input wire  shift_en$4;
+    input wire  shift_en$5;
+    input wire  shift_en$6;
+    input wire  shift_en$7;
+    input wire  shift_en$8;
+    input wire  shift_en$9;
+    input wire  shift_en$10;
+    input wire  shift_en$11;
+    input wire  shift_en$12;
+    input wire  shift_en$13;
+    input wire  shift_en$14;
+    input wire  shift_en$15;
+    input wire  shift_en$16;
+    input wire  shift_en$17;
+    input wire  shift_en$18;
+    input wire  shift_en$19;
+    input wire  shift_en$20;
+    output reg  [15:0] ent$0;
+    output reg  [15:0] ent$1;
+    output reg  [15:0] ent$2;
+    output reg  [15:0] ent$3;
+    output reg  [15:0] ent$4;
+    output reg  [15:0] ent$5;
+    output reg  [15:0] ent$6;
+    output reg  [15:0] ent$7;
+    output reg  [15:0] ent$8;
+    output reg  [15:0] ent$9;
+    output reg  [15:0] ent$10;
+    output reg  [15:0] ent$11;
+    output reg  [15:0] ent$12;
+    output reg  [15:0] ent$13;
+    output reg  [15:0] ent$14;
+    output reg  [15:0] ent$15;
+    output reg  [15:0] ent$16;
+    output reg  [15:0] ent$17;
+    output reg  [15:0] ent$18;
+    output reg  [15:0] ent$19;
+    output reg  [15:0] ent$20;
+
+    // Stub signals
+    reg  lb$0$clk;
+    reg  lb$0$read_en;
+    reg  [11:0] lb$0$read_addr;
+    wire  [15:0] lb$0$read_data;
+    reg  lb$0$write_en;
+    reg  [11:0] lb$0$write_addr;
+    reg  [15:0] lb$0$write_data;
+    reg  lb$1$clk;
+    reg  lb$1$read_en;
+    reg  [11:0] lb$1$read_addr;
+    wire  [15:0] lb$1$read_data;
+    reg  lb$1$write_en;
+    reg  [11:0] lb$1$write_addr;
+    reg  [15:0] lb$1$write_data;
+    reg  lb$2$clk;
+    reg  lb$2$read_en;
+    reg  [11:0] lb$2$read_addr;
+    wire  [15:0] lb$2$read_data;
+    reg  lb$2$write_en;
+    reg  [11:0] lb$2$write_addr;
+    reg  [15:0] lb$2$write_data;
+    reg  [15:0] win$0$d;
+    wire  [15:0] win$0$q;
+    reg  win$0$clock;
+    reg  [15:0] win$1$d;
+    wire  [15:0] win$1$q;
+    reg  win$1$clock;
+    reg  [15:0] win$2$d;
+    wire  [15:0] win$2$q;
+    reg  win$2$clock;
+    reg  [15:0] win$3$d;
+    wire  [15:0] win$3$q;
+    reg  win$3$clock;
+    reg  [15:0] win$4$d;
+    wire  [15:0] win$4$q;
+    reg  win$4$clock;
+    reg  [15:0] win$5$d;
+    wire  [15:0] win$5$q;
+    reg  win$5$clock;
+    reg  [15:0] win$6$d;
+    wire  [15:0] win$6$q;
+    reg  win$6$clock;
+    reg  [15:0] win$7$d;
+    wire  [15:0] win$7$q;
+    reg  win$7$clock;
+    reg  [15:0] win$8$d;
+    wire  [15:0] win$8$q;
+    reg  win$8$clock;
+    reg  [15:0] win$9$d;
+    wire  [15:0] win$9$q;
+    reg  win$9$clock;
+    reg  [15:0] win$10$d;
+    wire  [15:0] win$10$q;
+    reg  win$10$clock;
+    reg  [15:0] win$11$d;
+    wire  [15:0] win$11$q;
+    reg  win$11$clock;
+    reg  [15:0] win$12$d;
+    wire  [15:0] win$12$q;
+    reg  win$12$clock;
+    reg  [15:0] win$13$d;
+    wire  [15:0] win$13$q;
+    reg  win$13$clock;
+    reg  [15:0] win$14$d;
+    wire  [15:0] win$14$q;
+    reg  win$14$clock;
+    reg  [15:0] win$15$d;
+    wire  [15:0] win$15$q;
+    reg  win$15$clock;
+    reg  [15:0] win$16$d;
+    wire  [15:0] win$16$q;
+    reg  win$16$clock;
+    reg  [15:0] win$17$d;
+    wire  [15:0] win$17$q;
+    reg  win$17$clock;
+    reg  [15:0] win$18$d;
+    wire  [15:0] win$18$q;
+    reg  win$18$clock;
+    reg  [15:0] win$19$d;
+    wire  [15:0] win$19$q;
+    reg  win$19$clock;
+    reg  [15:0] win$20$d;
+    wire  [15:0] win$20$q;
+    reg  win$20$clock;
+
+    // Local signals
+    reg  [15:0] view$0;
+    reg  [15:0] view$1;
+    reg  [15:0] view$2;
+    reg  [15:0] view$3;
+    reg  [15:0] view$4;
+    reg  [15:0] view$5;
+    reg  [15:0] view$6;
+    reg  [15:0] view$7;
+    reg  [15:0] view$8;
+    reg  [15:0] view$9;
+    reg  [15:0] view$10;
+    reg  [15:0] view$11;
+    reg  [15:0] view$12;
+    reg  [15:0] view$13;
+    reg  [15:0] view$14;
+    reg  [15:0] view$15;
+    reg  [15:0] view$16;
+    reg  [15:0] view$17;
+    reg  [15:0] view$18;
+    reg  [15:0] view$19;
+    reg  [15:0] view$20;
+
+    // Sub module instances
+    fcc_top__thr_window__lane_key__lb__0_k7_668cf05b lb$0(
+        .clk(lb$0$clk),
+        .read_en(lb$0$read_en),
+        .read_addr(lb$0$read_addr),
+        .read_data(lb$0$read_data),
+        .write_en(lb$0$write_en),
+        .write_addr(lb$0$write_addr),
+        .write_data(lb$0$write_data)
+    );
+    fcc_top__thr_window__lane_key__lb__1_k7_668cf05b lb$1(
+        .clk(lb$1$clk),
+        .read_en(lb$1$read_en),
+        .read_addr(lb$1$read_addr),
+        .read_data(lb$1$read_data),
+        .write_en(lb$1$write_en),
+        .write_addr(lb$1$write_addr),
+        .write_data(lb$1$write_data)
+    );
+    fcc_top__thr_window__lane_key__lb__2_k7_668cf05b lb$2(
+        .clk(lb$2$clk),
+        .read_en(lb$2$read_en),
+        .read_addr(lb$2$read_addr),
+        .read_data(lb$2$read_data),
+        .write_en(lb$2$write_en),
+        .write_addr(lb$2$write_addr),
+        .write_data(lb$2$write_data)
+    );
+    fcc_top__thr_window__lane_key__win__0_k7_668cf05b win$0(
+        .d(win$0$d),
+        .q(win$0$q),
+        .clock(win$0$clock)
+    );
+    fcc_top__thr_window__lane_key__win__1_k7_668cf05b win$1(
+        .d(win$1$d),
+        .q(win$1$q),
+        .clock(win$1$clock)
+    );
+    fcc_top__thr_window__lane_key__win__2_k7_668cf05b win$2(
+        .d(win$2$d),
+        .q(win$2$q),
+        .clock(win$2$clock)
+    );
+    fcc_top__thr_window__lane_key__win__3_k7_668cf05b win$3(
+        .d(win$3$d),
+        .q(win$3$q),
+        .clock(win$3$clock)
+    );
+    fcc_top__thr_window__lane_key__win__4_k7_668cf05b win$4(
+        .d(win$4$d),
+        .q(win$4$q),
+        .clock(win$4$clock)
+    );
+    fcc_top__thr_window__lane_key__win__5_k7_668cf05b win$5(
+        .d(win$5$d),
+        .q(win$5$q),
+        .clock(win$5$clock)
+    );
+    fcc_top__thr_window__lane_key__win__6_k7_668cf05b win$6(
+        .d(win$6$d),
+        .q(win$6$q),
+        .clock(win$6$clock)
+    );
+    fcc_top__thr_window__lane_key__win__7_k7_668cf05b win$7(
+        .d(win$7$d),
+        .q(win$7$q),
+        .clock(win$7$clock)
+    );
+    fcc_top__thr_window__lane_key__win__8_k7_668cf05b win$8(
+        .d(win$8$d),
+        .q(win$8$q),
+        .clock(win$8$clock)
+    );
+    fcc_top__thr_window__lane_key__win__9_k7_668cf05b win$9(
+        .d(win$9$d),
+        .q(win$9$q),
+        .clock(win$9$clock)
+    );
+    fcc_top__thr_window__lane_key__win__10_k7_668cf05b win$10(
+        .d(win$10$d),
+        .q(win$10$q),
+        .clock(win$10$clock)
+    );
+    fcc_top__thr_window__lane_key__win__11_k7_668cf05b win$11(
+        .d(win$11$d),
+        .q(win$11$q),
+        .clock(win$11$clock)
+    );
+    fcc_top__thr_window__lane_key__win__12_k7_668cf05b win$12(
+        .d(win$12$d),
+        .q(win$12$q),
+        .clock(win$12$clock)
+    );
+    fcc_top__thr_window__lane_key__win__13_k7_668cf05b win$13(
+        .d(win$13$d),
+        .q(win$13$q),
+        .clock(win$13$clock)
+    );
+    fcc_top__thr_window__lane_key__win__14_k7_668cf05b win$14(
+        .d(win$14$d),
+        .q(win$14$q),
+        .clock(win$14$clock)
+    );
+    fcc_top__thr_window__lane_key__win__15_k7_668cf05b win$15(
+        .d(win$15$d),
+        .q(win$15$q),
+        .clock(win$15$clock)
+    );
+    fcc_top__thr_window__lane_key__win__16_k7_668cf05b win$16(
+        .d(win$16$d),
+        .q(win$16$q),
+        .clock(win$16$clock)
+    );
+    fcc_top__thr_window__lane_key__win__17_k7_668cf05b win$17(
+        .d(win$17$d),
+        .q(win$17$q),
+        .clock(win$17$clock)
+    );
+    fcc_top__thr_window__lane_key__win__18_k7_668cf05b win$18(
+        .d(win$18$d),
+        .q(win$18$q),
+        .clock(win$18$clock)
+    );
+    fcc_top__thr_window__lane_key__win__19_k7_668cf05b win$19(
+        .d(win$19$d),
+        .q(win$19$q),
+        .clock(win$19$clock)
+    );
+    fcc_top__thr_window__lane_key__win__20_k7_668cf05b win$20(
+        .d(win$20$d),
+        .q(win$20$q),
+        .clock(win$20$clock)
+    );
+
+    // Update code
+    always @(*) begin
+        lb$0$clk = clk;
+        lb$0$read_en = read_en;
+        lb$0$read_addr = read_addr;
+        lb$0$write_en = cas_en$0;
+        lb$0$write_addr = cas_addr$0;
+        lb$1$clk = clk;
+        lb$1$read_en = read_en;
+        lb$1$read_addr = read_addr;
+        lb$1$write_en = cas_en$1;
+        lb$1$write_addr = cas_addr$1;
+        lb$2$clk = clk;
+        lb$2$read_en = read_en;
+        lb$2$read_addr = read_addr;
+        lb$2$write_en = cas_en$2;
+        lb$2$write_addr = cas_addr$2;
+        lb$0$write_data = in_data;
+        view$0 = win$1$q;
+        view$1 = win$2$q;
+        view$2 = win$3$q;
+        view$3 = win$4$q;
+        view$4 = win$5$q;
+        view$5 = win$6$q;
+        view$6 = lb$2$read_data;
+        view$7 = win$8$q;
+        view$8 = win$9$q;
+        view$9 = win$10$q;
+        view$10 = win$11$q;
+        view$11 = win$12$q;
+        view$12 = win$13$q;
+        view$13 = lb$1$read_data;
+        view$14 = win$15$q;
+        view$15 = win$16$q;
+        view$16 = win$17$q;
+        view$17 = win$18$q;
+        view$18 = win$19$q;
+        view$19 = win$20$q;
+        view$20 = lb$0$read_data;
+        lb$1$write_data = view$17;
+        lb$2$write_data = view$10;
+        win$0$clock = clk;
+        win$0$d = win$0$q;
+        if (shift_en$0) begin
+            win$0$d = view$0;
+        end
+        ent$0 = win$0$q;
+        win$1$clock = clk;
+        win$1$d = win$1$q;
+        if (shift_en$1) begin
+            win$1$d = view$1;
+        end
+        ent$1 = win$1$q;
+        win$2$clock = clk;
+        win$2$d = win$2$q;
+        if (shift_en$2) begin
+            win$2$d = view$2;
+        end
+        ent$2 = win$2$q;
+        win$3$clock = clk;
+        win$3$d = win$3$q;
+        if (shift_en$3) begin
+            win$3$d = view$3;
+        end
+        ent$3 = win$3$q;
+        win$4$clock = clk;
+        win$4$d = win$4$q;
+        if (shift_en$4) begin
+            win$4$d = view$4;
+        end
+        ent$4 = win$4$q;
+        win$5$clock = clk;
+        win$5$d = win$5$q;
+        if (shift_en$5) begin
+            win$5$d = view$5;
+        end
+        ent$5 = win$5$q;
+        win$6$clock = clk;
+        win$6$d = win$6$q;
+        if (shift_en$6) begin
+            win$6$d = view$6;
+        end
+        ent$6 = win$6$q;
+        win$7$clock = clk;
+        win$7$d = win$7$q;
+        if (shift_en$7) begin
+            win$7$d = view$7;
+        end
+        ent$7 = win$7$q;
+        win$8$clock = clk;
+        win$8$d = win$8$q;
+        if (shift_en$8) begin
+            win$8$d = view$8;
+        end
+        ent$8 = win$8$q;
+        win$9$clock = clk;
+        win$9$d = win$9$q;
+        if (shift_en$9) begin
+            win$9$d = view$9;
+        end
+        ent$9 = win$9$q;
+        win$10$clock = clk;
+        win$10$d = win$10$q;
+        if (shift_en$10) begin
+            win$10$d = view$10;
+        end
+        ent$10 = win$10$q;
+        win$11$clock = clk;
+        win$11$d = win$11$q;
+        if (shift_en$11) begin
+            win$11$d = view$11;
+        end
+        ent$11 = win$11$q;
+        win$12$clock = clk;
+        win$12$d = win$12$q;
+        if (shift_en$12) begin
+            win$12$d = view$12;
+        end
+        ent$12 = win$12$q;
+        win$13$clock = clk;
+        win$13$d = win$13$q;
+        if (shift_en$13) begin
+            win$13$d = view$13;
+        end
+        ent$13 = win$13$q;
+        win$14$clock = clk;
+        win$14$d = win$14$q;
+        if (shift_en$14) begin
+            win$14$d = view$14;
+        end
+        ent$14 = win$14$q;
+        win$15$clock = clk;
+        win$15$d = win$15$q;
+        if (shift_en$15) begin
+            win$15$d = view$15;
+        end
+        ent$15 = win$15$q;
+        win$16$clock = clk;
+        win$16$d = win$16$q;
+        if (shift_en$16) begin
+            win$16$d = view$16;
+        end
+        ent$16 = win$16$q;
+        win$17$clock = clk;
+        win$17$d = win$17$q;
+        if (shift_en$17) begin
+            win$17$d = view$17;
+        end
+        ent$17 = win$17$q;
+        win$18$clock = clk;
+        win$18$d = win$18$q;
+        if (shift_en$18) begin
+            win$18$d = view$18;
+        end
+        ent$18 = win$18$q;
+        win$19$clock = clk;
+        win$19$d = win$19$q;
+        if (shift_en$19) begin
+            win$19$d = view$19;
+        end
+        ent$19 = win$19$q;
+        win$20$clock = clk;
+        win$20$d = win$20$q;
+        if (shift_en$20) begin
+            win$20$d = view$20;
+        end
+        ent$20 = win$20$q;
+    end
+
+endmodule // fcc_top__thr_window__lane_key_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_key__lb__0_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
 
     // Module arguments
     input wire  clk;
@@ -58539,42 +59432,10 @@ module fcc_top__thr_window__lb_key__0_k7_668cf05b(clk,read_en,read_addr,read_dat
         end
         read_data <= rd1;
     end
-endmodule // fcc_top__thr_window__lb_key__0_k7_668cf05b
+endmodule // fcc_top__thr_window__lane_key__lb__0_k7_668cf05b
 
 
-module fcc_top__thr_window__lb_key__1_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
-
-    // Module arguments
-    input wire  clk;
-    input wire  read_en;
-    input wire  [11:0] read_addr;
-    output reg  [15:0] read_data;
-    input wire  write_en;
-    input wire  [11:0] write_addr;
-    input wire  [15:0] write_data;
-
-    // Update code (custom)
-    // Address bits above the depth and data bits above the stored width are
-    // not used by this instance.
-    /* verilator lint_off UNUSEDSIGNAL */
-    wire unused_ok = &{1'b0, read_addr[11:11], write_addr[11:11]};
-    /* verilator lint_on UNUSEDSIGNAL */
-    reg [15:0] mem [0:2047];
-    // The block RAM's output register, then a fabric register.
-    reg [15:0] rd1;
-    always @(posedge clk) begin
-        if (read_en) begin
-            rd1 <= mem[read_addr[10:0]];
-        end
-        if (write_en) begin
-            mem[write_addr[10:0]] <= write_data;
-        end
-        read_data <= rd1;
-    end
-endmodule // fcc_top__thr_window__lb_key__1_k7_668cf05b
-
-
-module fcc_top__thr_window__lb_key__2_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
+module fcc_top__thr_window__lane_key__lb__1_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
 
     // Module arguments
     input wire  clk;
@@ -58603,7 +59464,438 @@ module fcc_top__thr_window__lb_key__2_k7_668cf05b(clk,read_en,read_addr,read_dat
         end
         read_data <= rd1;
     end
-endmodule // fcc_top__thr_window__lb_key__2_k7_668cf05b
+endmodule // fcc_top__thr_window__lane_key__lb__1_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_key__lb__2_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
+
+    // Module arguments
+    input wire  clk;
+    input wire  read_en;
+    input wire  [11:0] read_addr;
+    output reg  [15:0] read_data;
+    input wire  write_en;
+    input wire  [11:0] write_addr;
+    input wire  [15:0] write_data;
+
+    // Update code (custom)
+    // Address bits above the depth and data bits above the stored width are
+    // not used by this instance.
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire unused_ok = &{1'b0, read_addr[11:11], write_addr[11:11]};
+    /* verilator lint_on UNUSEDSIGNAL */
+    reg [15:0] mem [0:2047];
+    // The block RAM's output register, then a fabric register.
+    reg [15:0] rd1;
+    always @(posedge clk) begin
+        if (read_en) begin
+            rd1 <= mem[read_addr[10:0]];
+        end
+        if (write_en) begin
+            mem[write_addr[10:0]] <= write_data;
+        end
+        read_data <= rd1;
+    end
+endmodule // fcc_top__thr_window__lane_key__lb__2_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_key__win__0_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_key__win__0_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_key__win__1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_key__win__1_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_key__win__10_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_key__win__10_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_key__win__11_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_key__win__11_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_key__win__12_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_key__win__12_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_key__win__13_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_key__win__13_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_key__win__14_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_key__win__14_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_key__win__15_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_key__win__15_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_key__win__16_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_key__win__16_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_key__win__17_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_key__win__17_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_key__win__18_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_key__win__18_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_key__win__19_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_key__win__19_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_key__win__2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_key__win__2_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_key__win__20_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_key__win__20_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_key__win__3_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_key__win__3_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_key__win__4_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_key__win__4_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_key__win__5_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_key__win__5_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_key__win__6_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_key__win__6_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_key__win__7_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_key__win__7_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_key__win__8_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_key__win__8_k7_668cf05b
+
+
+module fcc_top__thr_window__lane_key__win__9_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_top__thr_window__lane_key__win__9_k7_668cf05b
 
 
 module fcc_top__thr_window__lb_write_addr__0_k7_668cf05b(clock,d,q);
@@ -59705,804 +60997,6 @@ module fcc_top__thr_window__wait_key__9_k7_668cf05b(d,q,clock);
 endmodule // fcc_top__thr_window__wait_key__9_k7_668cf05b
 
 
-module fcc_top__thr_window__win_cv__0_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [35:0] d;
-    output reg  [35:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 36'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_cv__0_k7_668cf05b
-
-
-module fcc_top__thr_window__win_cv__1_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [35:0] d;
-    output reg  [35:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 36'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_cv__1_k7_668cf05b
-
-
-module fcc_top__thr_window__win_cv__10_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [35:0] d;
-    output reg  [35:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 36'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_cv__10_k7_668cf05b
-
-
-module fcc_top__thr_window__win_cv__11_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [35:0] d;
-    output reg  [35:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 36'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_cv__11_k7_668cf05b
-
-
-module fcc_top__thr_window__win_cv__12_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [35:0] d;
-    output reg  [35:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 36'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_cv__12_k7_668cf05b
-
-
-module fcc_top__thr_window__win_cv__13_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [35:0] d;
-    output reg  [35:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 36'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_cv__13_k7_668cf05b
-
-
-module fcc_top__thr_window__win_cv__14_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [35:0] d;
-    output reg  [35:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 36'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_cv__14_k7_668cf05b
-
-
-module fcc_top__thr_window__win_cv__15_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [35:0] d;
-    output reg  [35:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 36'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_cv__15_k7_668cf05b
-
-
-module fcc_top__thr_window__win_cv__16_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [35:0] d;
-    output reg  [35:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 36'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_cv__16_k7_668cf05b
-
-
-module fcc_top__thr_window__win_cv__17_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [35:0] d;
-    output reg  [35:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 36'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_cv__17_k7_668cf05b
-
-
-module fcc_top__thr_window__win_cv__18_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [35:0] d;
-    output reg  [35:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 36'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_cv__18_k7_668cf05b
-
-
-module fcc_top__thr_window__win_cv__19_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [35:0] d;
-    output reg  [35:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 36'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_cv__19_k7_668cf05b
-
-
-module fcc_top__thr_window__win_cv__2_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [35:0] d;
-    output reg  [35:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 36'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_cv__2_k7_668cf05b
-
-
-module fcc_top__thr_window__win_cv__20_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [35:0] d;
-    output reg  [35:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 36'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_cv__20_k7_668cf05b
-
-
-module fcc_top__thr_window__win_cv__3_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [35:0] d;
-    output reg  [35:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 36'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_cv__3_k7_668cf05b
-
-
-module fcc_top__thr_window__win_cv__4_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [35:0] d;
-    output reg  [35:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 36'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_cv__4_k7_668cf05b
-
-
-module fcc_top__thr_window__win_cv__5_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [35:0] d;
-    output reg  [35:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 36'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_cv__5_k7_668cf05b
-
-
-module fcc_top__thr_window__win_cv__6_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [35:0] d;
-    output reg  [35:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 36'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_cv__6_k7_668cf05b
-
-
-module fcc_top__thr_window__win_cv__7_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [35:0] d;
-    output reg  [35:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 36'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_cv__7_k7_668cf05b
-
-
-module fcc_top__thr_window__win_cv__8_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [35:0] d;
-    output reg  [35:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 36'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_cv__8_k7_668cf05b
-
-
-module fcc_top__thr_window__win_cv__9_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [35:0] d;
-    output reg  [35:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 36'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_cv__9_k7_668cf05b
-
-
-module fcc_top__thr_window__win_key__0_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_key__0_k7_668cf05b
-
-
-module fcc_top__thr_window__win_key__1_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_key__1_k7_668cf05b
-
-
-module fcc_top__thr_window__win_key__10_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_key__10_k7_668cf05b
-
-
-module fcc_top__thr_window__win_key__11_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_key__11_k7_668cf05b
-
-
-module fcc_top__thr_window__win_key__12_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_key__12_k7_668cf05b
-
-
-module fcc_top__thr_window__win_key__13_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_key__13_k7_668cf05b
-
-
-module fcc_top__thr_window__win_key__14_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_key__14_k7_668cf05b
-
-
-module fcc_top__thr_window__win_key__15_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_key__15_k7_668cf05b
-
-
-module fcc_top__thr_window__win_key__16_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_key__16_k7_668cf05b
-
-
-module fcc_top__thr_window__win_key__17_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_key__17_k7_668cf05b
-
-
-module fcc_top__thr_window__win_key__18_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_key__18_k7_668cf05b
-
-
-module fcc_top__thr_window__win_key__19_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_key__19_k7_668cf05b
-
-
-module fcc_top__thr_window__win_key__2_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_key__2_k7_668cf05b
-
-
-module fcc_top__thr_window__win_key__20_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_key__20_k7_668cf05b
-
-
-module fcc_top__thr_window__win_key__3_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_key__3_k7_668cf05b
-
-
-module fcc_top__thr_window__win_key__4_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_key__4_k7_668cf05b
-
-
-module fcc_top__thr_window__win_key__5_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_key__5_k7_668cf05b
-
-
-module fcc_top__thr_window__win_key__6_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_key__6_k7_668cf05b
-
-
-module fcc_top__thr_window__win_key__7_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_key__7_k7_668cf05b
-
-
-module fcc_top__thr_window__win_key__8_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_key__8_k7_668cf05b
-
-
-module fcc_top__thr_window__win_key__9_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_top__thr_window__win_key__9_k7_668cf05b
-
-
 module fcc_window_k7_668cf05b(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$1,ent_ok$2,ent_ok$3,ent_ok$4,ent_ok$5,ent_ok$6,ent_ok$7,ent_ok$8,ent_ok$9,ent_ok$10,ent_ok$11,ent_ok$12,ent_ok$13,ent_ok$14,ent_ok$15,ent_ok$16,ent_ok$17,ent_ok$18,ent_ok$19,ent_ok$20,ent_x$0,ent_x$1,ent_x$2,ent_x$3,ent_x$4,ent_x$5,ent_x$6,ent_x$7,ent_x$8,ent_x$9,ent_x$10,ent_x$11,ent_x$12,ent_x$13,ent_x$14,ent_x$15,ent_x$16,ent_x$17,ent_x$18,ent_x$19,ent_x$20,ent_y$0,ent_y$1,ent_y$2,ent_y$3,ent_y$4,ent_y$5,ent_y$6,ent_y$7,ent_y$8,ent_y$9,ent_y$10,ent_y$11,ent_y$12,ent_y$13,ent_y$14,ent_y$15,ent_y$16,ent_y$17,ent_y$18,ent_y$19,ent_y$20,ent_z$0,ent_z$1,ent_z$2,ent_z$3,ent_z$4,ent_z$5,ent_z$6,ent_z$7,ent_z$8,ent_z$9,ent_z$10,ent_z$11,ent_z$12,ent_z$13,ent_z$14,ent_z$15,ent_z$16,ent_z$17,ent_z$18,ent_z$19,ent_z$20,ent_rep$0,ent_rep$1,ent_rep$2,ent_rep$3,ent_rep$4,ent_rep$5,ent_rep$6,ent_rep$7,ent_rep$8,ent_rep$9,ent_rep$10,ent_rep$11,ent_rep$12,ent_rep$13,ent_rep$14,ent_rep$15,ent_rep$16,ent_rep$17,ent_rep$18,ent_rep$19,ent_rep$20,rep_we,rep_waddr,rep_wdata);
 
     // Module arguments
@@ -61010,8 +61504,8 @@ module fcc_window_k7_668cf05b(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$
     reg  rep_win$clk;
     reg  rep_win$rst;
     reg  rep_win$valid;
-    reg  [11:0] rep_win$col;
     reg  [11:0] rep_win$rdcol;
+    reg  [11:0] rep_win$cascade_col;
     reg  rep_win$rep_we;
     reg  [11:0] rep_win$rep_waddr;
     reg  [15:0] rep_win$rep_wdata;
@@ -61758,8 +62252,8 @@ module fcc_window_k7_668cf05b(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$
         .clk(rep_win$clk),
         .rst(rep_win$rst),
         .valid(rep_win$valid),
-        .col(rep_win$col),
         .rdcol(rep_win$rdcol),
+        .cascade_col(rep_win$cascade_col),
         .rep_we(rep_win$rep_we),
         .rep_waddr(rep_win$rep_waddr),
         .rep_wdata(rep_win$rep_wdata),
@@ -62297,7 +62791,7 @@ module fcc_window_k7_668cf05b(clk,rst,inp,last_col,run_k,centre,ent_ok$0,ent_ok$
         rep_win$clk = clk;
         rep_win$rst = rst;
         rep_win$valid = w3$q[0:0];
-        rep_win$col = w3$q[85:74];
+        rep_win$cascade_col = w3$q[85:74];
         rep_win$rdcol = w3$q[97:86];
         rep_win$rep_we = rep_we;
         rep_win$rep_waddr = rep_waddr;
@@ -63260,14 +63754,14 @@ module fcc_window__lbs__2__ram_k7_668cf05b(clk,read_en,read_addr,read_data,write
 endmodule // fcc_window__lbs__2__ram_k7_668cf05b
 
 
-module fcc_window__rep_win_k7_668cf05b(clk,rst,valid,col,rdcol,rep_we,rep_waddr,rep_wdata,ent_rep$0,ent_rep$1,ent_rep$2,ent_rep$3,ent_rep$4,ent_rep$5,ent_rep$6,ent_rep$7,ent_rep$8,ent_rep$9,ent_rep$10,ent_rep$11,ent_rep$12,ent_rep$13,ent_rep$14,ent_rep$15,ent_rep$16,ent_rep$17,ent_rep$18,ent_rep$19,ent_rep$20);
+module fcc_window__rep_win_k7_668cf05b(clk,rst,valid,rdcol,cascade_col,rep_we,rep_waddr,rep_wdata,ent_rep$0,ent_rep$1,ent_rep$2,ent_rep$3,ent_rep$4,ent_rep$5,ent_rep$6,ent_rep$7,ent_rep$8,ent_rep$9,ent_rep$10,ent_rep$11,ent_rep$12,ent_rep$13,ent_rep$14,ent_rep$15,ent_rep$16,ent_rep$17,ent_rep$18,ent_rep$19,ent_rep$20);
 
     // Module arguments
     input wire  clk;
     input wire  rst;
     input wire  valid;
-    input wire  [11:0] col;
     input wire  [11:0] rdcol;
+    input wire  [11:0] cascade_col;
     input wire  rep_we;
     input wire  [11:0] rep_waddr;
     input wire  [15:0] rep_wdata;
@@ -63342,90 +63836,58 @@ module fcc_window__rep_win_k7_668cf05b(clk,rst,valid,col,rdcol,rep_we,rep_waddr,
     reg  [11:0] rv_rdcol$3$d;
     wire  [11:0] rv_rdcol$3$q;
     reg  rv_rdcol$3$clock;
-    reg  rlb$0$clk;
-    reg  rlb$0$read_en;
-    reg  [11:0] rlb$0$read_addr;
-    wire  [15:0] rlb$0$read_data;
-    reg  rlb$0$write_en;
-    reg  [11:0] rlb$0$write_addr;
-    reg  [15:0] rlb$0$write_data;
-    reg  rlb$1$clk;
-    reg  rlb$1$read_en;
-    reg  [11:0] rlb$1$read_addr;
-    wire  [15:0] rlb$1$read_data;
-    reg  rlb$1$write_en;
-    reg  [11:0] rlb$1$write_addr;
-    reg  [15:0] rlb$1$write_data;
-    reg  rlb$2$clk;
-    reg  rlb$2$read_en;
-    reg  [11:0] rlb$2$read_addr;
-    wire  [15:0] rlb$2$read_data;
-    reg  rlb$2$write_en;
-    reg  [11:0] rlb$2$write_addr;
-    reg  [15:0] rlb$2$write_data;
-    reg  [15:0] rwin$0$d;
-    wire  [15:0] rwin$0$q;
-    reg  rwin$0$clock;
-    reg  [15:0] rwin$1$d;
-    wire  [15:0] rwin$1$q;
-    reg  rwin$1$clock;
-    reg  [15:0] rwin$2$d;
-    wire  [15:0] rwin$2$q;
-    reg  rwin$2$clock;
-    reg  [15:0] rwin$3$d;
-    wire  [15:0] rwin$3$q;
-    reg  rwin$3$clock;
-    reg  [15:0] rwin$4$d;
-    wire  [15:0] rwin$4$q;
-    reg  rwin$4$clock;
-    reg  [15:0] rwin$5$d;
-    wire  [15:0] rwin$5$q;
-    reg  rwin$5$clock;
-    reg  [15:0] rwin$6$d;
-    wire  [15:0] rwin$6$q;
-    reg  rwin$6$clock;
-    reg  [15:0] rwin$7$d;
-    wire  [15:0] rwin$7$q;
-    reg  rwin$7$clock;
-    reg  [15:0] rwin$8$d;
-    wire  [15:0] rwin$8$q;
-    reg  rwin$8$clock;
-    reg  [15:0] rwin$9$d;
-    wire  [15:0] rwin$9$q;
-    reg  rwin$9$clock;
-    reg  [15:0] rwin$10$d;
-    wire  [15:0] rwin$10$q;
-    reg  rwin$10$clock;
-    reg  [15:0] rwin$11$d;
-    wire  [15:0] rwin$11$q;
-    reg  rwin$11$clock;
-    reg  [15:0] rwin$12$d;
-    wire  [15:0] rwin$12$q;
-    reg  rwin$12$clock;
-    reg  [15:0] rwin$13$d;
-    wire  [15:0] rwin$13$q;
-    reg  rwin$13$clock;
-    reg  [15:0] rwin$14$d;
-    wire  [15:0] rwin$14$q;
-    reg  rwin$14$clock;
-    reg  [15:0] rwin$15$d;
-    wire  [15:0] rwin$15$q;
-    reg  rwin$15$clock;
-    reg  [15:0] rwin$16$d;
-    wire  [15:0] rwin$16$q;
-    reg  rwin$16$clock;
-    reg  [15:0] rwin$17$d;
-    wire  [15:0] rwin$17$q;
-    reg  rwin$17$clock;
-    reg  [15:0] rwin$18$d;
-    wire  [15:0] rwin$18$q;
-    reg  rwin$18$clock;
-    reg  [15:0] rwin$19$d;
-    wire  [15:0] rwin$19$q;
-    reg  rwin$19$clock;
-    reg  [15:0] rwin$20$d;
-    wire  [15:0] rwin$20$q;
-    reg  rwin$20$clock;
+    reg  lane$clk;
+    reg  lane$read_en;
+    reg  [11:0] lane$read_addr;
+    reg  [15:0] lane$in_data;
+    reg  lane$cas_en$0;
+    reg  lane$cas_en$1;
+    reg  lane$cas_en$2;
+    reg  [11:0] lane$cas_addr$0;
+    reg  [11:0] lane$cas_addr$1;
+    reg  [11:0] lane$cas_addr$2;
+    reg  lane$shift_en$0;
+    reg  lane$shift_en$1;
+    reg  lane$shift_en$2;
+    reg  lane$shift_en$3;
+    reg  lane$shift_en$4;
+    reg  lane$shift_en$5;
+    reg  lane$shift_en$6;
+    reg  lane$shift_en$7;
+    reg  lane$shift_en$8;
+    reg  lane$shift_en$9;
+    reg  lane$shift_en$10;
+    reg  lane$shift_en$11;
+    reg  lane$shift_en$12;
+    reg  lane$shift_en$13;
+    reg  lane$shift_en$14;
+    reg  lane$shift_en$15;
+    reg  lane$shift_en$16;
+    reg  lane$shift_en$17;
+    reg  lane$shift_en$18;
+    reg  lane$shift_en$19;
+    reg  lane$shift_en$20;
+    wire  [15:0] lane$ent$0;
+    wire  [15:0] lane$ent$1;
+    wire  [15:0] lane$ent$2;
+    wire  [15:0] lane$ent$3;
+    wire  [15:0] lane$ent$4;
+    wire  [15:0] lane$ent$5;
+    wire  [15:0] lane$ent$6;
+    wire  [15:0] lane$ent$7;
+    wire  [15:0] lane$ent$8;
+    wire  [15:0] lane$ent$9;
+    wire  [15:0] lane$ent$10;
+    wire  [15:0] lane$ent$11;
+    wire  [15:0] lane$ent$12;
+    wire  [15:0] lane$ent$13;
+    wire  [15:0] lane$ent$14;
+    wire  [15:0] lane$ent$15;
+    wire  [15:0] lane$ent$16;
+    wire  [15:0] lane$ent$17;
+    wire  [15:0] lane$ent$18;
+    wire  [15:0] lane$ent$19;
+    wire  [15:0] lane$ent$20;
     reg  rep_shift_en$0$clock;
     reg  rep_shift_en$0$d;
     wire  rep_shift_en$0$q;
@@ -63489,29 +63951,6 @@ module fcc_window__rep_win_k7_668cf05b(clk,rst,valid,col,rdcol,rep_we,rep_waddr,
     reg  rep_shift_en$20$clock;
     reg  rep_shift_en$20$d;
     wire  rep_shift_en$20$q;
-
-    // Local signals
-    reg  [15:0] rview$0;
-    reg  [15:0] rview$1;
-    reg  [15:0] rview$2;
-    reg  [15:0] rview$3;
-    reg  [15:0] rview$4;
-    reg  [15:0] rview$5;
-    reg  [15:0] rview$6;
-    reg  [15:0] rview$7;
-    reg  [15:0] rview$8;
-    reg  [15:0] rview$9;
-    reg  [15:0] rview$10;
-    reg  [15:0] rview$11;
-    reg  [15:0] rview$12;
-    reg  [15:0] rview$13;
-    reg  [15:0] rview$14;
-    reg  [15:0] rview$15;
-    reg  [15:0] rview$16;
-    reg  [15:0] rview$17;
-    reg  [15:0] rview$18;
-    reg  [15:0] rview$19;
-    reg  [15:0] rview$20;
 
     // Sub module instances
     fcc_window__rep_win__rv_valid__0_k7_668cf05b rv_valid$0(
@@ -63594,137 +64033,59 @@ module fcc_window__rep_win_k7_668cf05b(clk,rst,valid,col,rdcol,rep_we,rep_waddr,
         .q(rv_rdcol$3$q),
         .clock(rv_rdcol$3$clock)
     );
-    fcc_window__rep_win__rlb__0_k7_668cf05b rlb$0(
-        .clk(rlb$0$clk),
-        .read_en(rlb$0$read_en),
-        .read_addr(rlb$0$read_addr),
-        .read_data(rlb$0$read_data),
-        .write_en(rlb$0$write_en),
-        .write_addr(rlb$0$write_addr),
-        .write_data(rlb$0$write_data)
-    );
-    fcc_window__rep_win__rlb__1_k7_668cf05b rlb$1(
-        .clk(rlb$1$clk),
-        .read_en(rlb$1$read_en),
-        .read_addr(rlb$1$read_addr),
-        .read_data(rlb$1$read_data),
-        .write_en(rlb$1$write_en),
-        .write_addr(rlb$1$write_addr),
-        .write_data(rlb$1$write_data)
-    );
-    fcc_window__rep_win__rlb__2_k7_668cf05b rlb$2(
-        .clk(rlb$2$clk),
-        .read_en(rlb$2$read_en),
-        .read_addr(rlb$2$read_addr),
-        .read_data(rlb$2$read_data),
-        .write_en(rlb$2$write_en),
-        .write_addr(rlb$2$write_addr),
-        .write_data(rlb$2$write_data)
-    );
-    fcc_window__rep_win__rwin__0_k7_668cf05b rwin$0(
-        .d(rwin$0$d),
-        .q(rwin$0$q),
-        .clock(rwin$0$clock)
-    );
-    fcc_window__rep_win__rwin__1_k7_668cf05b rwin$1(
-        .d(rwin$1$d),
-        .q(rwin$1$q),
-        .clock(rwin$1$clock)
-    );
-    fcc_window__rep_win__rwin__2_k7_668cf05b rwin$2(
-        .d(rwin$2$d),
-        .q(rwin$2$q),
-        .clock(rwin$2$clock)
-    );
-    fcc_window__rep_win__rwin__3_k7_668cf05b rwin$3(
-        .d(rwin$3$d),
-        .q(rwin$3$q),
-        .clock(rwin$3$clock)
-    );
-    fcc_window__rep_win__rwin__4_k7_668cf05b rwin$4(
-        .d(rwin$4$d),
-        .q(rwin$4$q),
-        .clock(rwin$4$clock)
-    );
-    fcc_window__rep_win__rwin__5_k7_668cf05b rwin$5(
-        .d(rwin$5$d),
-        .q(rwin$5$q),
-        .clock(rwin$5$clock)
-    );
-    fcc_window__rep_win__rwin__6_k7_668cf05b rwin$6(
-        .d(rwin$6$d),
-        .q(rwin$6$q),
-        .clock(rwin$6$clock)
-    );
-    fcc_window__rep_win__rwin__7_k7_668cf05b rwin$7(
-        .d(rwin$7$d),
-        .q(rwin$7$q),
-        .clock(rwin$7$clock)
-    );
-    fcc_window__rep_win__rwin__8_k7_668cf05b rwin$8(
-        .d(rwin$8$d),
-        .q(rwin$8$q),
-        .clock(rwin$8$clock)
-    );
-    fcc_window__rep_win__rwin__9_k7_668cf05b rwin$9(
-        .d(rwin$9$d),
-        .q(rwin$9$q),
-        .clock(rwin$9$clock)
-    );
-    fcc_window__rep_win__rwin__10_k7_668cf05b rwin$10(
-        .d(rwin$10$d),
-        .q(rwin$10$q),
-        .clock(rwin$10$clock)
-    );
-    fcc_window__rep_win__rwin__11_k7_668cf05b rwin$11(
-        .d(rwin$11$d),
-        .q(rwin$11$q),
-        .clock(rwin$11$clock)
-    );
-    fcc_window__rep_win__rwin__12_k7_668cf05b rwin$12(
-        .d(rwin$12$d),
-        .q(rwin$12$q),
-        .clock(rwin$12$clock)
-    );
-    fcc_window__rep_win__rwin__13_k7_668cf05b rwin$13(
-        .d(rwin$13$d),
-        .q(rwin$13$q),
-        .clock(rwin$13$clock)
-    );
-    fcc_window__rep_win__rwin__14_k7_668cf05b rwin$14(
-        .d(rwin$14$d),
-        .q(rwin$14$q),
-        .clock(rwin$14$clock)
-    );
-    fcc_window__rep_win__rwin__15_k7_668cf05b rwin$15(
-        .d(rwin$15$d),
-        .q(rwin$15$q),
-        .clock(rwin$15$clock)
-    );
-    fcc_window__rep_win__rwin__16_k7_668cf05b rwin$16(
-        .d(rwin$16$d),
-        .q(rwin$16$q),
-        .clock(rwin$16$clock)
-    );
-    fcc_window__rep_win__rwin__17_k7_668cf05b rwin$17(
-        .d(rwin$17$d),
-        .q(rwin$17$q),
-        .clock(rwin$17$clock)
-    );
-    fcc_window__rep_win__rwin__18_k7_668cf05b rwin$18(
-        .d(rwin$18$d),
-        .q(rwin$18$q),
-        .clock(rwin$18$clock)
-    );
-    fcc_window__rep_win__rwin__19_k7_668cf05b rwin$19(
-        .d(rwin$19$d),
-        .q(rwin$19$q),
-        .clock(rwin$19$clock)
-    );
-    fcc_window__rep_win__rwin__20_k7_668cf05b rwin$20(
-        .d(rwin$20$d),
-        .q(rwin$20$q),
-        .clock(rwin$20$clock)
+    fcc_window__rep_win__lane_k7_668cf05b lane(
+        .clk(lane$clk),
+        .read_en(lane$read_en),
+        .read_addr(lane$read_addr),
+        .in_data(lane$in_data),
+        .cas_en$0(lane$cas_en$0),
+        .cas_en$1(lane$cas_en$1),
+        .cas_en$2(lane$cas_en$2),
+        .cas_addr$0(lane$cas_addr$0),
+        .cas_addr$1(lane$cas_addr$1),
+        .cas_addr$2(lane$cas_addr$2),
+        .shift_en$0(lane$shift_en$0),
+        .shift_en$1(lane$shift_en$1),
+        .shift_en$2(lane$shift_en$2),
+        .shift_en$3(lane$shift_en$3),
+        .shift_en$4(lane$shift_en$4),
+        .shift_en$5(lane$shift_en$5),
+        .shift_en$6(lane$shift_en$6),
+        .shift_en$7(lane$shift_en$7),
+        .shift_en$8(lane$shift_en$8),
+        .shift_en$9(lane$shift_en$9),
+        .shift_en$10(lane$shift_en$10),
+        .shift_en$11(lane$shift_en$11),
+        .shift_en$12(lane$shift_en$12),
+        .shift_en$13(lane$shift_en$13),
+        .shift_en$14(lane$shift_en$14),
+        .shift_en$15(lane$shift_en$15),
+        .shift_en$16(lane$shift_en$16),
+        .shift_en$17(lane$shift_en$17),
+        .shift_en$18(lane$shift_en$18),
+        .shift_en$19(lane$shift_en$19),
+        .shift_en$20(lane$shift_en$20),
+        .ent$0(lane$ent$0),
+        .ent$1(lane$ent$1),
+        .ent$2(lane$ent$2),
+        .ent$3(lane$ent$3),
+        .ent$4(lane$ent$4),
+        .ent$5(lane$ent$5),
+        .ent$6(lane$ent$6),
+        .ent$7(lane$ent$7),
+        .ent$8(lane$ent$8),
+        .ent$9(lane$ent$9),
+        .ent$10(lane$ent$10),
+        .ent$11(lane$ent$11),
+        .ent$12(lane$ent$12),
+        .ent$13(lane$ent$13),
+        .ent$14(lane$ent$14),
+        .ent$15(lane$ent$15),
+        .ent$16(lane$ent$16),
+        .ent$17(lane$ent$17),
+        .ent$18(lane$ent$18),
+        .ent$19(lane$ent$19),
+        .ent$20(lane$ent$20)
     );
     fcc_window__rep_win__rep_shift_en__0_k7_668cf05b rep_shift_en$0(
         .clock(rep_shift_en$0$clock),
@@ -63835,246 +64196,131 @@ module fcc_window__rep_win_k7_668cf05b(clk,rst,valid,col,rdcol,rep_we,rep_waddr,
     // Update code
     always @(*) begin
         rv_valid$0$clock = clk;
-        rv_col$0$clock = clk;
         rv_valid$1$clock = clk;
-        rv_col$1$clock = clk;
         rv_valid$2$clock = clk;
-        rv_col$2$clock = clk;
         rv_valid$3$clock = clk;
-        rv_col$3$clock = clk;
         rv_valid$4$clock = clk;
-        rv_col$4$clock = clk;
         rv_valid$5$clock = clk;
+        rv_col$0$clock = clk;
+        rv_col$1$clock = clk;
+        rv_col$2$clock = clk;
+        rv_col$3$clock = clk;
+        rv_col$4$clock = clk;
         rv_col$5$clock = clk;
         rv_rdcol$0$clock = clk;
         rv_rdcol$1$clock = clk;
         rv_rdcol$2$clock = clk;
         rv_rdcol$3$clock = clk;
         rv_valid$0$d = valid;
-        rv_col$0$d = col;
+        rv_col$0$d = cascade_col;
         rv_rdcol$0$d = rdcol;
         rv_valid$1$d = rv_valid$0$q;
-        rv_col$1$d = rv_col$0$q;
         rv_valid$2$d = rv_valid$1$q;
-        rv_col$2$d = rv_col$1$q;
         rv_valid$3$d = rv_valid$2$q;
-        rv_col$3$d = rv_col$2$q;
         rv_valid$4$d = rv_valid$3$q;
-        rv_col$4$d = rv_col$3$q;
         rv_valid$5$d = rv_valid$4$q;
+        rv_col$1$d = rv_col$0$q;
+        rv_col$2$d = rv_col$1$q;
+        rv_col$3$d = rv_col$2$q;
+        rv_col$4$d = rv_col$3$q;
         rv_col$5$d = rv_col$4$q;
         rv_rdcol$1$d = rv_rdcol$0$q;
         rv_rdcol$2$d = rv_rdcol$1$q;
         rv_rdcol$3$d = rv_rdcol$2$q;
-        rlb$0$clk = clk;
-        rlb$0$read_en = rv_valid$3$q;
-        rlb$0$read_addr = rv_rdcol$3$q;
-        rlb$0$write_en = rv_valid$5$q;
-        rlb$0$write_addr = rv_col$5$q;
-        rlb$1$clk = clk;
-        rlb$1$read_en = rv_valid$3$q;
-        rlb$1$read_addr = rv_rdcol$3$q;
-        rlb$1$write_en = rv_valid$5$q;
-        rlb$1$write_addr = rv_col$5$q;
-        rlb$2$clk = clk;
-        rlb$2$read_en = rv_valid$3$q;
-        rlb$2$read_addr = rv_rdcol$3$q;
-        rlb$2$write_en = rv_valid$5$q;
-        rlb$2$write_addr = rv_col$5$q;
-        rlb$0$write_en = rep_we;
-        rlb$0$write_addr = rep_waddr;
-        rlb$0$write_data = rep_wdata;
-        rview$0 = rwin$1$q;
-        rview$1 = rwin$2$q;
-        rview$2 = rwin$3$q;
-        rview$3 = rwin$4$q;
-        rview$4 = rwin$5$q;
-        rview$5 = rwin$6$q;
-        rview$6 = rlb$2$read_data;
-        rview$7 = rwin$8$q;
-        rview$8 = rwin$9$q;
-        rview$9 = rwin$10$q;
-        rview$10 = rwin$11$q;
-        rview$11 = rwin$12$q;
-        rview$12 = rwin$13$q;
-        rview$13 = rlb$1$read_data;
-        rview$14 = rwin$15$q;
-        rview$15 = rwin$16$q;
-        rview$16 = rwin$17$q;
-        rview$17 = rwin$18$q;
-        rview$18 = rwin$19$q;
-        rview$19 = rwin$20$q;
-        rview$20 = rlb$0$read_data;
-        rlb$1$write_data = rview$17;
-        rlb$2$write_data = rview$10;
-        rwin$0$clock = clk;
-        rwin$0$d = rwin$0$q;
+        lane$clk = clk;
+        lane$read_en = rv_valid$3$q;
+        lane$read_addr = rv_rdcol$3$q;
+        lane$cas_en$1 = rv_valid$5$q;
+        lane$cas_addr$1 = rv_col$5$q;
+        lane$cas_en$2 = rv_valid$5$q;
+        lane$cas_addr$2 = rv_col$5$q;
+        lane$cas_en$0 = rep_we;
+        lane$cas_addr$0 = rep_waddr;
+        lane$in_data = rep_wdata;
         rep_shift_en$0$clock = clk;
         rep_shift_en$0$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$0$q) begin
-            rwin$0$d = rview$0;
-        end
-        ent_rep$0 = rwin$0$q;
-        rwin$1$clock = clk;
-        rwin$1$d = rwin$1$q;
+        lane$shift_en$0 = rep_shift_en$0$q;
+        ent_rep$0 = lane$ent$0;
         rep_shift_en$1$clock = clk;
         rep_shift_en$1$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$1$q) begin
-            rwin$1$d = rview$1;
-        end
-        ent_rep$1 = rwin$1$q;
-        rwin$2$clock = clk;
-        rwin$2$d = rwin$2$q;
+        lane$shift_en$1 = rep_shift_en$1$q;
+        ent_rep$1 = lane$ent$1;
         rep_shift_en$2$clock = clk;
         rep_shift_en$2$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$2$q) begin
-            rwin$2$d = rview$2;
-        end
-        ent_rep$2 = rwin$2$q;
-        rwin$3$clock = clk;
-        rwin$3$d = rwin$3$q;
+        lane$shift_en$2 = rep_shift_en$2$q;
+        ent_rep$2 = lane$ent$2;
         rep_shift_en$3$clock = clk;
         rep_shift_en$3$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$3$q) begin
-            rwin$3$d = rview$3;
-        end
-        ent_rep$3 = rwin$3$q;
-        rwin$4$clock = clk;
-        rwin$4$d = rwin$4$q;
+        lane$shift_en$3 = rep_shift_en$3$q;
+        ent_rep$3 = lane$ent$3;
         rep_shift_en$4$clock = clk;
         rep_shift_en$4$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$4$q) begin
-            rwin$4$d = rview$4;
-        end
-        ent_rep$4 = rwin$4$q;
-        rwin$5$clock = clk;
-        rwin$5$d = rwin$5$q;
+        lane$shift_en$4 = rep_shift_en$4$q;
+        ent_rep$4 = lane$ent$4;
         rep_shift_en$5$clock = clk;
         rep_shift_en$5$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$5$q) begin
-            rwin$5$d = rview$5;
-        end
-        ent_rep$5 = rwin$5$q;
-        rwin$6$clock = clk;
-        rwin$6$d = rwin$6$q;
+        lane$shift_en$5 = rep_shift_en$5$q;
+        ent_rep$5 = lane$ent$5;
         rep_shift_en$6$clock = clk;
         rep_shift_en$6$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$6$q) begin
-            rwin$6$d = rview$6;
-        end
-        ent_rep$6 = rwin$6$q;
-        rwin$7$clock = clk;
-        rwin$7$d = rwin$7$q;
+        lane$shift_en$6 = rep_shift_en$6$q;
+        ent_rep$6 = lane$ent$6;
         rep_shift_en$7$clock = clk;
         rep_shift_en$7$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$7$q) begin
-            rwin$7$d = rview$7;
-        end
-        ent_rep$7 = rwin$7$q;
-        rwin$8$clock = clk;
-        rwin$8$d = rwin$8$q;
+        lane$shift_en$7 = rep_shift_en$7$q;
+        ent_rep$7 = lane$ent$7;
         rep_shift_en$8$clock = clk;
         rep_shift_en$8$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$8$q) begin
-            rwin$8$d = rview$8;
-        end
-        ent_rep$8 = rwin$8$q;
-        rwin$9$clock = clk;
-        rwin$9$d = rwin$9$q;
+        lane$shift_en$8 = rep_shift_en$8$q;
+        ent_rep$8 = lane$ent$8;
         rep_shift_en$9$clock = clk;
         rep_shift_en$9$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$9$q) begin
-            rwin$9$d = rview$9;
-        end
-        ent_rep$9 = rwin$9$q;
-        rwin$10$clock = clk;
-        rwin$10$d = rwin$10$q;
+        lane$shift_en$9 = rep_shift_en$9$q;
+        ent_rep$9 = lane$ent$9;
         rep_shift_en$10$clock = clk;
         rep_shift_en$10$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$10$q) begin
-            rwin$10$d = rview$10;
-        end
-        ent_rep$10 = rwin$10$q;
-        rwin$11$clock = clk;
-        rwin$11$d = rwin$11$q;
+        lane$shift_en$10 = rep_shift_en$10$q;
+        ent_rep$10 = lane$ent$10;
         rep_shift_en$11$clock = clk;
         rep_shift_en$11$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$11$q) begin
-            rwin$11$d = rview$11;
-        end
-        ent_rep$11 = rwin$11$q;
-        rwin$12$clock = clk;
-        rwin$12$d = rwin$12$q;
+        lane$shift_en$11 = rep_shift_en$11$q;
+        ent_rep$11 = lane$ent$11;
         rep_shift_en$12$clock = clk;
         rep_shift_en$12$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$12$q) begin
-            rwin$12$d = rview$12;
-        end
-        ent_rep$12 = rwin$12$q;
-        rwin$13$clock = clk;
-        rwin$13$d = rwin$13$q;
+        lane$shift_en$12 = rep_shift_en$12$q;
+        ent_rep$12 = lane$ent$12;
         rep_shift_en$13$clock = clk;
         rep_shift_en$13$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$13$q) begin
-            rwin$13$d = rview$13;
-        end
-        ent_rep$13 = rwin$13$q;
-        rwin$14$clock = clk;
-        rwin$14$d = rwin$14$q;
+        lane$shift_en$13 = rep_shift_en$13$q;
+        ent_rep$13 = lane$ent$13;
         rep_shift_en$14$clock = clk;
         rep_shift_en$14$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$14$q) begin
-            rwin$14$d = rview$14;
-        end
-        ent_rep$14 = rwin$14$q;
-        rwin$15$clock = clk;
-        rwin$15$d = rwin$15$q;
+        lane$shift_en$14 = rep_shift_en$14$q;
+        ent_rep$14 = lane$ent$14;
         rep_shift_en$15$clock = clk;
         rep_shift_en$15$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$15$q) begin
-            rwin$15$d = rview$15;
-        end
-        ent_rep$15 = rwin$15$q;
-        rwin$16$clock = clk;
-        rwin$16$d = rwin$16$q;
+        lane$shift_en$15 = rep_shift_en$15$q;
+        ent_rep$15 = lane$ent$15;
         rep_shift_en$16$clock = clk;
         rep_shift_en$16$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$16$q) begin
-            rwin$16$d = rview$16;
-        end
-        ent_rep$16 = rwin$16$q;
-        rwin$17$clock = clk;
-        rwin$17$d = rwin$17$q;
+        lane$shift_en$16 = rep_shift_en$16$q;
+        ent_rep$16 = lane$ent$16;
         rep_shift_en$17$clock = clk;
         rep_shift_en$17$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$17$q) begin
-            rwin$17$d = rview$17;
-        end
-        ent_rep$17 = rwin$17$q;
-        rwin$18$clock = clk;
-        rwin$18$d = rwin$18$q;
+        lane$shift_en$17 = rep_shift_en$17$q;
+        ent_rep$17 = lane$ent$17;
         rep_shift_en$18$clock = clk;
         rep_shift_en$18$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$18$q) begin
-            rwin$18$d = rview$18;
-        end
-        ent_rep$18 = rwin$18$q;
-        rwin$19$clock = clk;
-        rwin$19$d = rwin$19$q;
+        lane$shift_en$18 = rep_shift_en$18$q;
+        ent_rep$18 = lane$ent$18;
         rep_shift_en$19$clock = clk;
         rep_shift_en$19$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$19$q) begin
-            rwin$19$d = rview$19;
-        end
-        ent_rep$19 = rwin$19$q;
-        rwin$20$clock = clk;
-        rwin$20$d = rwin$20$q;
+        lane$shift_en$19 = rep_shift_en$19$q;
+        ent_rep$19 = lane$ent$19;
         rep_shift_en$20$clock = clk;
         rep_shift_en$20$d = rv_valid$4$q & ~rst;
-        if (rep_shift_en$20$q) begin
-            rwin$20$d = rview$20;
-        end
-        ent_rep$20 = rwin$20$q;
+        lane$shift_en$20 = rep_shift_en$20$q;
+        ent_rep$20 = lane$ent$20;
         if (rst) begin
             rv_valid$0$d = 1'b0;
             rv_valid$1$d = 1'b0;
@@ -64086,6 +64332,972 @@ module fcc_window__rep_win_k7_668cf05b(clk,rst,valid,col,rdcol,rep_we,rep_waddr,
     end
 
 endmodule // fcc_window__rep_win_k7_668cf05b
+
+
+module fcc_window__rep_win__lane_k7_668cf05b(clk,read_en,read_addr,in_data,cas_en$0,cas_en$1,cas_en$2,cas_addr$0,cas_addr$1,cas_addr$2,shift_en$0,shift_en$1,shift_en$2,shift_en$3,shift_en$4,shift_en$5,shift_en$6,shift_en$7,shift_en$8,shift_en$9,shift_en$10,shift_en$11,shift_en$12,shift_en$13,shift_en$14,shift_en$15,shift_en$16,shift_en$17,shift_en$18,shift_en$19,shift_en$20,ent$0,ent$1,ent$2,ent$3,ent$4,ent$5,ent$6,ent$7,ent$8,ent$9,ent$10,ent$11,ent$12,ent$13,ent$14,ent$15,ent$16,ent$17,ent$18,ent$19,ent$20);
+
+    // Module arguments
+    input wire  clk;
+    input wire  read_en;
+    input wire  [11:0] read_addr;
+    input wire  [15:0] in_data;
+    input wire  cas_en$0;
+    input wire  cas_en$1;
+    input wire  cas_en$2;
+    input wire  [11:0] cas_addr$0;
+    input wire  [11:0] cas_addr$1;
+    input wire  [11:0] cas_addr$2;
+    input wire  shift_en$0;
+    input wire  shift_en$1;
+    input wire  shift_en$2;
+    input wire  shift_en$3;
+    input wire  shift_en$4;
+    input wire  shift_en$5;
+    input wire  shift_en$6;
+    input wire  shift_en$7;
+    input wire  shift_en$8;
+    input wire  shift_en$9;
+    input wire  shift_en$10;
+    input wire  shift_en$11;
+    input wire  shift_en$12;
+    input wire  shift_en$13;
+    input wire  shift_en$14;
+    input wire  shift_en$15;
+    input wire  shift_en$16;
+    input wire  shift_en$17;
+    input wire  shift_en$18;
+    input wire  shift_en$19;
+    input wire  shift_en$20;
+    output reg  [15:0] ent$0;
+    output reg  [15:0] ent$1;
+    output reg  [15:0] ent$2;
+    output reg  [15:0] ent$3;
+    output reg  [15:0] ent$4;
+    output reg  [15:0] ent$5;
+    output reg  [15:0] ent$6;
+    output reg  [15:0] ent$7;
+    output reg  [15:0] ent$8;
+    output reg  [15:0] ent$9;
+    output reg  [15:0] ent$10;
+    output reg  [15:0] ent$11;
+    output reg  [15:0] ent$12;
+    output reg  [15:0] ent$13;
+    output reg  [15:0] ent$14;
+    output reg  [15:0] ent$15;
+    output reg  [15:0] ent$16;
+    output reg  [15:0] ent$17;
+    output reg  [15:0] ent$18;
+    output reg  [15:0] ent$19;
+    output reg  [15:0] ent$20;
+
+    // Stub signals
+    reg  lb$0$clk;
+    reg  lb$0$read_en;
+    reg  [11:0] lb$0$read_addr;
+    wire  [15:0] lb$0$read_data;
+    reg  lb$0$write_en;
+    reg  [11:0] lb$0$write_addr;
+    reg  [15:0] lb$0$write_data;
+    reg  lb$1$clk;
+    reg  lb$1$read_en;
+    reg  [11:0] lb$1$read_addr;
+    wire  [15:0] lb$1$read_data;
+    reg  lb$1$write_en;
+    reg  [11:0] lb$1$write_addr;
+    reg  [15:0] lb$1$write_data;
+    reg  lb$2$clk;
+    reg  lb$2$read_en;
+    reg  [11:0] lb$2$read_addr;
+    wire  [15:0] lb$2$read_data;
+    reg  lb$2$write_en;
+    reg  [11:0] lb$2$write_addr;
+    reg  [15:0] lb$2$write_data;
+    reg  [15:0] win$0$d;
+    wire  [15:0] win$0$q;
+    reg  win$0$clock;
+    reg  [15:0] win$1$d;
+    wire  [15:0] win$1$q;
+    reg  win$1$clock;
+    reg  [15:0] win$2$d;
+    wire  [15:0] win$2$q;
+    reg  win$2$clock;
+    reg  [15:0] win$3$d;
+    wire  [15:0] win$3$q;
+    reg  win$3$clock;
+    reg  [15:0] win$4$d;
+    wire  [15:0] win$4$q;
+    reg  win$4$clock;
+    reg  [15:0] win$5$d;
+    wire  [15:0] win$5$q;
+    reg  win$5$clock;
+    reg  [15:0] win$6$d;
+    wire  [15:0] win$6$q;
+    reg  win$6$clock;
+    reg  [15:0] win$7$d;
+    wire  [15:0] win$7$q;
+    reg  win$7$clock;
+    reg  [15:0] win$8$d;
+    wire  [15:0] win$8$q;
+    reg  win$8$clock;
+    reg  [15:0] win$9$d;
+    wire  [15:0] win$9$q;
+    reg  win$9$clock;
+    reg  [15:0] win$10$d;
+    wire  [15:0] win$10$q;
+    reg  win$10$clock;
+    reg  [15:0] win$11$d;
+    wire  [15:0] win$11$q;
+    reg  win$11$clock;
+    reg  [15:0] win$12$d;
+    wire  [15:0] win$12$q;
+    reg  win$12$clock;
+    reg  [15:0] win$13$d;
+    wire  [15:0] win$13$q;
+    reg  win$13$clock;
+    reg  [15:0] win$14$d;
+    wire  [15:0] win$14$q;
+    reg  win$14$clock;
+    reg  [15:0] win$15$d;
+    wire  [15:0] win$15$q;
+    reg  win$15$clock;
+    reg  [15:0] win$16$d;
+    wire  [15:0] win$16$q;
+    reg  win$16$clock;
+    reg  [15:0] win$17$d;
+    wire  [15:0] win$17$q;
+    reg  win$17$clock;
+    reg  [15:0] win$18$d;
+    wire  [15:0] win$18$q;
+    reg  win$18$clock;
+    reg  [15:0] win$19$d;
+    wire  [15:0] win$19$q;
+    reg  win$19$clock;
+    reg  [15:0] win$20$d;
+    wire  [15:0] win$20$q;
+    reg  win$20$clock;
+
+    // Local signals
+    reg  [15:0] view$0;
+    reg  [15:0] view$1;
+    reg  [15:0] view$2;
+    reg  [15:0] view$3;
+    reg  [15:0] view$4;
+    reg  [15:0] view$5;
+    reg  [15:0] view$6;
+    reg  [15:0] view$7;
+    reg  [15:0] view$8;
+    reg  [15:0] view$9;
+    reg  [15:0] view$10;
+    reg  [15:0] view$11;
+    reg  [15:0] view$12;
+    reg  [15:0] view$13;
+    reg  [15:0] view$14;
+    reg  [15:0] view$15;
+    reg  [15:0] view$16;
+    reg  [15:0] view$17;
+    reg  [15:0] view$18;
+    reg  [15:0] view$19;
+    reg  [15:0] view$20;
+
+    // Sub module instances
+    fcc_window__rep_win__lane__lb__0_k7_668cf05b lb$0(
+        .clk(lb$0$clk),
+        .read_en(lb$0$read_en),
+        .read_addr(lb$0$read_addr),
+        .read_data(lb$0$read_data),
+        .write_en(lb$0$write_en),
+        .write_addr(lb$0$write_addr),
+        .write_data(lb$0$write_data)
+    );
+    fcc_window__rep_win__lane__lb__1_k7_668cf05b lb$1(
+        .clk(lb$1$clk),
+        .read_en(lb$1$read_en),
+        .read_addr(lb$1$read_addr),
+        .read_data(lb$1$read_data),
+        .write_en(lb$1$write_en),
+        .write_addr(lb$1$write_addr),
+        .write_data(lb$1$write_data)
+    );
+    fcc_window__rep_win__lane__lb__2_k7_668cf05b lb$2(
+        .clk(lb$2$clk),
+        .read_en(lb$2$read_en),
+        .read_addr(lb$2$read_addr),
+        .read_data(lb$2$read_data),
+        .write_en(lb$2$write_en),
+        .write_addr(lb$2$write_addr),
+        .write_data(lb$2$write_data)
+    );
+    fcc_window__rep_win__lane__win__0_k7_668cf05b win$0(
+        .d(win$0$d),
+        .q(win$0$q),
+        .clock(win$0$clock)
+    );
+    fcc_window__rep_win__lane__win__1_k7_668cf05b win$1(
+        .d(win$1$d),
+        .q(win$1$q),
+        .clock(win$1$clock)
+    );
+    fcc_window__rep_win__lane__win__2_k7_668cf05b win$2(
+        .d(win$2$d),
+        .q(win$2$q),
+        .clock(win$2$clock)
+    );
+    fcc_window__rep_win__lane__win__3_k7_668cf05b win$3(
+        .d(win$3$d),
+        .q(win$3$q),
+        .clock(win$3$clock)
+    );
+    fcc_window__rep_win__lane__win__4_k7_668cf05b win$4(
+        .d(win$4$d),
+        .q(win$4$q),
+        .clock(win$4$clock)
+    );
+    fcc_window__rep_win__lane__win__5_k7_668cf05b win$5(
+        .d(win$5$d),
+        .q(win$5$q),
+        .clock(win$5$clock)
+    );
+    fcc_window__rep_win__lane__win__6_k7_668cf05b win$6(
+        .d(win$6$d),
+        .q(win$6$q),
+        .clock(win$6$clock)
+    );
+    fcc_window__rep_win__lane__win__7_k7_668cf05b win$7(
+        .d(win$7$d),
+        .q(win$7$q),
+        .clock(win$7$clock)
+    );
+    fcc_window__rep_win__lane__win__8_k7_668cf05b win$8(
+        .d(win$8$d),
+        .q(win$8$q),
+        .clock(win$8$clock)
+    );
+    fcc_window__rep_win__lane__win__9_k7_668cf05b win$9(
+        .d(win$9$d),
+        .q(win$9$q),
+        .clock(win$9$clock)
+    );
+    fcc_window__rep_win__lane__win__10_k7_668cf05b win$10(
+        .d(win$10$d),
+        .q(win$10$q),
+        .clock(win$10$clock)
+    );
+    fcc_window__rep_win__lane__win__11_k7_668cf05b win$11(
+        .d(win$11$d),
+        .q(win$11$q),
+        .clock(win$11$clock)
+    );
+    fcc_window__rep_win__lane__win__12_k7_668cf05b win$12(
+        .d(win$12$d),
+        .q(win$12$q),
+        .clock(win$12$clock)
+    );
+    fcc_window__rep_win__lane__win__13_k7_668cf05b win$13(
+        .d(win$13$d),
+        .q(win$13$q),
+        .clock(win$13$clock)
+    );
+    fcc_window__rep_win__lane__win__14_k7_668cf05b win$14(
+        .d(win$14$d),
+        .q(win$14$q),
+        .clock(win$14$clock)
+    );
+    fcc_window__rep_win__lane__win__15_k7_668cf05b win$15(
+        .d(win$15$d),
+        .q(win$15$q),
+        .clock(win$15$clock)
+    );
+    fcc_window__rep_win__lane__win__16_k7_668cf05b win$16(
+        .d(win$16$d),
+        .q(win$16$q),
+        .clock(win$16$clock)
+    );
+    fcc_window__rep_win__lane__win__17_k7_668cf05b win$17(
+        .d(win$17$d),
+        .q(win$17$q),
+        .clock(win$17$clock)
+    );
+    fcc_window__rep_win__lane__win__18_k7_668cf05b win$18(
+        .d(win$18$d),
+        .q(win$18$q),
+        .clock(win$18$clock)
+    );
+    fcc_window__rep_win__lane__win__19_k7_668cf05b win$19(
+        .d(win$19$d),
+        .q(win$19$q),
+        .clock(win$19$clock)
+    );
+    fcc_window__rep_win__lane__win__20_k7_668cf05b win$20(
+        .d(win$20$d),
+        .q(win$20$q),
+        .clock(win$20$clock)
+    );
+
+    // Update code
+    always @(*) begin
+        lb$0$clk = clk;
+        lb$0$read_en = read_en;
+        lb$0$read_addr = read_addr;
+        lb$0$write_en = cas_en$0;
+        lb$0$write_addr = cas_addr$0;
+        lb$1$clk = clk;
+        lb$1$read_en = read_en;
+        lb$1$read_addr = read_addr;
+        lb$1$write_en = cas_en$1;
+        lb$1$write_addr = cas_addr$1;
+        lb$2$clk = clk;
+        lb$2$read_en = read_en;
+        lb$2$read_addr = read_addr;
+        lb$2$write_en = cas_en$2;
+        lb$2$write_addr = cas_addr$2;
+        lb$0$write_data = in_data;
+        view$0 = win$1$q;
+        view$1 = win$2$q;
+        view$2 = win$3$q;
+        view$3 = win$4$q;
+        view$4 = win$5$q;
+        view$5 = win$6$q;
+        view$6 = lb$2$read_data;
+        view$7 = win$8$q;
+        view$8 = win$9$q;
+        view$9 = win$10$q;
+        view$10 = win$11$q;
+        view$11 = win$12$q;
+        view$12 = win$13$q;
+        view$13 = lb$1$read_data;
+        view$14 = win$15$q;
+        view$15 = win$16$q;
+        view$16 = win$17$q;
+        view$17 = win$18$q;
+        view$18 = win$19$q;
+        view$19 = win$20$q;
+        view$20 = lb$0$read_data;
+        lb$1$write_data = view$17;
+        lb$2$write_data = view$10;
+        win$0$clock = clk;
+        win$0$d = win$0$q;
+        if (shift_en$0) begin
+            win$0$d = view$0;
+        end
+        ent$0 = win$0$q;
+        win$1$clock = clk;
+        win$1$d = win$1$q;
+        if (shift_en$1) begin
+            win$1$d = view$1;
+        end
+        ent$1 = win$1$q;
+        win$2$clock = clk;
+        win$2$d = win$2$q;
+        if (shift_en$2) begin
+            win$2$d = view$2;
+        end
+        ent$2 = win$2$q;
+        win$3$clock = clk;
+        win$3$d = win$3$q;
+        if (shift_en$3) begin
+            win$3$d = view$3;
+        end
+        ent$3 = win$3$q;
+        win$4$clock = clk;
+        win$4$d = win$4$q;
+        if (shift_en$4) begin
+            win$4$d = view$4;
+        end
+        ent$4 = win$4$q;
+        win$5$clock = clk;
+        win$5$d = win$5$q;
+        if (shift_en$5) begin
+            win$5$d = view$5;
+        end
+        ent$5 = win$5$q;
+        win$6$clock = clk;
+        win$6$d = win$6$q;
+        if (shift_en$6) begin
+            win$6$d = view$6;
+        end
+        ent$6 = win$6$q;
+        win$7$clock = clk;
+        win$7$d = win$7$q;
+        if (shift_en$7) begin
+            win$7$d = view$7;
+        end
+        ent$7 = win$7$q;
+        win$8$clock = clk;
+        win$8$d = win$8$q;
+        if (shift_en$8) begin
+            win$8$d = view$8;
+        end
+        ent$8 = win$8$q;
+        win$9$clock = clk;
+        win$9$d = win$9$q;
+        if (shift_en$9) begin
+            win$9$d = view$9;
+        end
+        ent$9 = win$9$q;
+        win$10$clock = clk;
+        win$10$d = win$10$q;
+        if (shift_en$10) begin
+            win$10$d = view$10;
+        end
+        ent$10 = win$10$q;
+        win$11$clock = clk;
+        win$11$d = win$11$q;
+        if (shift_en$11) begin
+            win$11$d = view$11;
+        end
+        ent$11 = win$11$q;
+        win$12$clock = clk;
+        win$12$d = win$12$q;
+        if (shift_en$12) begin
+            win$12$d = view$12;
+        end
+        ent$12 = win$12$q;
+        win$13$clock = clk;
+        win$13$d = win$13$q;
+        if (shift_en$13) begin
+            win$13$d = view$13;
+        end
+        ent$13 = win$13$q;
+        win$14$clock = clk;
+        win$14$d = win$14$q;
+        if (shift_en$14) begin
+            win$14$d = view$14;
+        end
+        ent$14 = win$14$q;
+        win$15$clock = clk;
+        win$15$d = win$15$q;
+        if (shift_en$15) begin
+            win$15$d = view$15;
+        end
+        ent$15 = win$15$q;
+        win$16$clock = clk;
+        win$16$d = win$16$q;
+        if (shift_en$16) begin
+            win$16$d = view$16;
+        end
+        ent$16 = win$16$q;
+        win$17$clock = clk;
+        win$17$d = win$17$q;
+        if (shift_en$17) begin
+            win$17$d = view$17;
+        end
+        ent$17 = win$17$q;
+        win$18$clock = clk;
+        win$18$d = win$18$q;
+        if (shift_en$18) begin
+            win$18$d = view$18;
+        end
+        ent$18 = win$18$q;
+        win$19$clock = clk;
+        win$19$d = win$19$q;
+        if (shift_en$19) begin
+            win$19$d = view$19;
+        end
+        ent$19 = win$19$q;
+        win$20$clock = clk;
+        win$20$d = win$20$q;
+        if (shift_en$20) begin
+            win$20$d = view$20;
+        end
+        ent$20 = win$20$q;
+    end
+
+endmodule // fcc_window__rep_win__lane_k7_668cf05b
+
+
+module fcc_window__rep_win__lane__lb__0_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
+
+    // Module arguments
+    input wire  clk;
+    input wire  read_en;
+    input wire  [11:0] read_addr;
+    output reg  [15:0] read_data;
+    input wire  write_en;
+    input wire  [11:0] write_addr;
+    input wire  [15:0] write_data;
+
+    // Update code (custom)
+    // Address bits above the depth and data bits above the stored width are
+    // not used by this instance.
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire unused_ok = &{1'b0, read_addr[11:11], write_addr[11:11]};
+    /* verilator lint_on UNUSEDSIGNAL */
+    reg [15:0] mem [0:2047];
+    // The block RAM's output register, then a fabric register.
+    reg [15:0] rd1;
+    always @(posedge clk) begin
+        if (read_en) begin
+            rd1 <= mem[read_addr[10:0]];
+        end
+        if (write_en) begin
+            mem[write_addr[10:0]] <= write_data;
+        end
+        read_data <= rd1;
+    end
+endmodule // fcc_window__rep_win__lane__lb__0_k7_668cf05b
+
+
+module fcc_window__rep_win__lane__lb__1_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
+
+    // Module arguments
+    input wire  clk;
+    input wire  read_en;
+    input wire  [11:0] read_addr;
+    output reg  [15:0] read_data;
+    input wire  write_en;
+    input wire  [11:0] write_addr;
+    input wire  [15:0] write_data;
+
+    // Update code (custom)
+    // Address bits above the depth and data bits above the stored width are
+    // not used by this instance.
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire unused_ok = &{1'b0, read_addr[11:11], write_addr[11:11]};
+    /* verilator lint_on UNUSEDSIGNAL */
+    reg [15:0] mem [0:2047];
+    // The block RAM's output register, then a fabric register.
+    reg [15:0] rd1;
+    always @(posedge clk) begin
+        if (read_en) begin
+            rd1 <= mem[read_addr[10:0]];
+        end
+        if (write_en) begin
+            mem[write_addr[10:0]] <= write_data;
+        end
+        read_data <= rd1;
+    end
+endmodule // fcc_window__rep_win__lane__lb__1_k7_668cf05b
+
+
+module fcc_window__rep_win__lane__lb__2_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
+
+    // Module arguments
+    input wire  clk;
+    input wire  read_en;
+    input wire  [11:0] read_addr;
+    output reg  [15:0] read_data;
+    input wire  write_en;
+    input wire  [11:0] write_addr;
+    input wire  [15:0] write_data;
+
+    // Update code (custom)
+    // Address bits above the depth and data bits above the stored width are
+    // not used by this instance.
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire unused_ok = &{1'b0, read_addr[11:11], write_addr[11:11]};
+    /* verilator lint_on UNUSEDSIGNAL */
+    reg [15:0] mem [0:2047];
+    // The block RAM's output register, then a fabric register.
+    reg [15:0] rd1;
+    always @(posedge clk) begin
+        if (read_en) begin
+            rd1 <= mem[read_addr[10:0]];
+        end
+        if (write_en) begin
+            mem[write_addr[10:0]] <= write_data;
+        end
+        read_data <= rd1;
+    end
+endmodule // fcc_window__rep_win__lane__lb__2_k7_668cf05b
+
+
+module fcc_window__rep_win__lane__win__0_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rep_win__lane__win__0_k7_668cf05b
+
+
+module fcc_window__rep_win__lane__win__1_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rep_win__lane__win__1_k7_668cf05b
+
+
+module fcc_window__rep_win__lane__win__10_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rep_win__lane__win__10_k7_668cf05b
+
+
+module fcc_window__rep_win__lane__win__11_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rep_win__lane__win__11_k7_668cf05b
+
+
+module fcc_window__rep_win__lane__win__12_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rep_win__lane__win__12_k7_668cf05b
+
+
+module fcc_window__rep_win__lane__win__13_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rep_win__lane__win__13_k7_668cf05b
+
+
+module fcc_window__rep_win__lane__win__14_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rep_win__lane__win__14_k7_668cf05b
+
+
+module fcc_window__rep_win__lane__win__15_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rep_win__lane__win__15_k7_668cf05b
+
+
+module fcc_window__rep_win__lane__win__16_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rep_win__lane__win__16_k7_668cf05b
+
+
+module fcc_window__rep_win__lane__win__17_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rep_win__lane__win__17_k7_668cf05b
+
+
+module fcc_window__rep_win__lane__win__18_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rep_win__lane__win__18_k7_668cf05b
+
+
+module fcc_window__rep_win__lane__win__19_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rep_win__lane__win__19_k7_668cf05b
+
+
+module fcc_window__rep_win__lane__win__2_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rep_win__lane__win__2_k7_668cf05b
+
+
+module fcc_window__rep_win__lane__win__20_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rep_win__lane__win__20_k7_668cf05b
+
+
+module fcc_window__rep_win__lane__win__3_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rep_win__lane__win__3_k7_668cf05b
+
+
+module fcc_window__rep_win__lane__win__4_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rep_win__lane__win__4_k7_668cf05b
+
+
+module fcc_window__rep_win__lane__win__5_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rep_win__lane__win__5_k7_668cf05b
+
+
+module fcc_window__rep_win__lane__win__6_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rep_win__lane__win__6_k7_668cf05b
+
+
+module fcc_window__rep_win__lane__win__7_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rep_win__lane__win__7_k7_668cf05b
+
+
+module fcc_window__rep_win__lane__win__8_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rep_win__lane__win__8_k7_668cf05b
+
+
+module fcc_window__rep_win__lane__win__9_k7_668cf05b(d,q,clock);
+
+    // Module arguments
+    input wire  [15:0] d;
+    output reg  [15:0] q;
+    input wire  clock;
+
+    // Update code (custom)
+    initial begin
+       q = 16'h0;
+    end
+
+    always @(posedge clock) begin
+       q <= d;
+    end
+
+endmodule // fcc_window__rep_win__lane__win__9_k7_668cf05b
 
 
 module fcc_window__rep_win__rep_shift_en__0_k7_668cf05b(clock,d,q);
@@ -64529,102 +65741,6 @@ module fcc_window__rep_win__rep_shift_en__9_k7_668cf05b(clock,d,q);
 endmodule // fcc_window__rep_win__rep_shift_en__9_k7_668cf05b
 
 
-module fcc_window__rep_win__rlb__0_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
-
-    // Module arguments
-    input wire  clk;
-    input wire  read_en;
-    input wire  [11:0] read_addr;
-    output reg  [15:0] read_data;
-    input wire  write_en;
-    input wire  [11:0] write_addr;
-    input wire  [15:0] write_data;
-
-    // Update code (custom)
-    // Address bits above the depth and data bits above the stored width are
-    // not used by this instance.
-    /* verilator lint_off UNUSEDSIGNAL */
-    wire unused_ok = &{1'b0, read_addr[11:11], write_addr[11:11]};
-    /* verilator lint_on UNUSEDSIGNAL */
-    reg [15:0] mem [0:2047];
-    // The block RAM's output register, then a fabric register.
-    reg [15:0] rd1;
-    always @(posedge clk) begin
-        if (read_en) begin
-            rd1 <= mem[read_addr[10:0]];
-        end
-        if (write_en) begin
-            mem[write_addr[10:0]] <= write_data;
-        end
-        read_data <= rd1;
-    end
-endmodule // fcc_window__rep_win__rlb__0_k7_668cf05b
-
-
-module fcc_window__rep_win__rlb__1_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
-
-    // Module arguments
-    input wire  clk;
-    input wire  read_en;
-    input wire  [11:0] read_addr;
-    output reg  [15:0] read_data;
-    input wire  write_en;
-    input wire  [11:0] write_addr;
-    input wire  [15:0] write_data;
-
-    // Update code (custom)
-    // Address bits above the depth and data bits above the stored width are
-    // not used by this instance.
-    /* verilator lint_off UNUSEDSIGNAL */
-    wire unused_ok = &{1'b0, read_addr[11:11], write_addr[11:11]};
-    /* verilator lint_on UNUSEDSIGNAL */
-    reg [15:0] mem [0:2047];
-    // The block RAM's output register, then a fabric register.
-    reg [15:0] rd1;
-    always @(posedge clk) begin
-        if (read_en) begin
-            rd1 <= mem[read_addr[10:0]];
-        end
-        if (write_en) begin
-            mem[write_addr[10:0]] <= write_data;
-        end
-        read_data <= rd1;
-    end
-endmodule // fcc_window__rep_win__rlb__1_k7_668cf05b
-
-
-module fcc_window__rep_win__rlb__2_k7_668cf05b(clk,read_en,read_addr,read_data,write_en,write_addr,write_data);
-
-    // Module arguments
-    input wire  clk;
-    input wire  read_en;
-    input wire  [11:0] read_addr;
-    output reg  [15:0] read_data;
-    input wire  write_en;
-    input wire  [11:0] write_addr;
-    input wire  [15:0] write_data;
-
-    // Update code (custom)
-    // Address bits above the depth and data bits above the stored width are
-    // not used by this instance.
-    /* verilator lint_off UNUSEDSIGNAL */
-    wire unused_ok = &{1'b0, read_addr[11:11], write_addr[11:11]};
-    /* verilator lint_on UNUSEDSIGNAL */
-    reg [15:0] mem [0:2047];
-    // The block RAM's output register, then a fabric register.
-    reg [15:0] rd1;
-    always @(posedge clk) begin
-        if (read_en) begin
-            rd1 <= mem[read_addr[10:0]];
-        end
-        if (write_en) begin
-            mem[write_addr[10:0]] <= write_data;
-        end
-        read_data <= rd1;
-    end
-endmodule // fcc_window__rep_win__rlb__2_k7_668cf05b
-
-
 module fcc_window__rep_win__rv_col__0_k7_668cf05b(d,q,clock);
 
     // Module arguments
@@ -64927,405 +66043,6 @@ module fcc_window__rep_win__rv_valid__5_k7_668cf05b(d,q,clock);
     end
 
 endmodule // fcc_window__rep_win__rv_valid__5_k7_668cf05b
-
-
-module fcc_window__rep_win__rwin__0_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rep_win__rwin__0_k7_668cf05b
-
-
-module fcc_window__rep_win__rwin__1_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rep_win__rwin__1_k7_668cf05b
-
-
-module fcc_window__rep_win__rwin__10_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rep_win__rwin__10_k7_668cf05b
-
-
-module fcc_window__rep_win__rwin__11_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rep_win__rwin__11_k7_668cf05b
-
-
-module fcc_window__rep_win__rwin__12_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rep_win__rwin__12_k7_668cf05b
-
-
-module fcc_window__rep_win__rwin__13_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rep_win__rwin__13_k7_668cf05b
-
-
-module fcc_window__rep_win__rwin__14_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rep_win__rwin__14_k7_668cf05b
-
-
-module fcc_window__rep_win__rwin__15_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rep_win__rwin__15_k7_668cf05b
-
-
-module fcc_window__rep_win__rwin__16_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rep_win__rwin__16_k7_668cf05b
-
-
-module fcc_window__rep_win__rwin__17_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rep_win__rwin__17_k7_668cf05b
-
-
-module fcc_window__rep_win__rwin__18_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rep_win__rwin__18_k7_668cf05b
-
-
-module fcc_window__rep_win__rwin__19_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rep_win__rwin__19_k7_668cf05b
-
-
-module fcc_window__rep_win__rwin__2_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rep_win__rwin__2_k7_668cf05b
-
-
-module fcc_window__rep_win__rwin__20_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rep_win__rwin__20_k7_668cf05b
-
-
-module fcc_window__rep_win__rwin__3_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rep_win__rwin__3_k7_668cf05b
-
-
-module fcc_window__rep_win__rwin__4_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rep_win__rwin__4_k7_668cf05b
-
-
-module fcc_window__rep_win__rwin__5_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rep_win__rwin__5_k7_668cf05b
-
-
-module fcc_window__rep_win__rwin__6_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rep_win__rwin__6_k7_668cf05b
-
-
-module fcc_window__rep_win__rwin__7_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rep_win__rwin__7_k7_668cf05b
-
-
-module fcc_window__rep_win__rwin__8_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rep_win__rwin__8_k7_668cf05b
-
-
-module fcc_window__rep_win__rwin__9_k7_668cf05b(d,q,clock);
-
-    // Module arguments
-    input wire  [15:0] d;
-    output reg  [15:0] q;
-    input wire  clock;
-
-    // Update code (custom)
-    initial begin
-       q = 16'h0;
-    end
-
-    always @(posedge clock) begin
-       q <= d;
-    end
-
-endmodule // fcc_window__rep_win__rwin__9_k7_668cf05b
 
 
 module fcc_window__shift_en__0_k7_668cf05b(clock,d,q);

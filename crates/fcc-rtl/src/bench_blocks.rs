@@ -26,7 +26,8 @@ pub enum BenchBlock {
     SortNet,
     /// The per-point threshold unit `FccPointThr` (range-adaptive thresholds).
     PointThr,
-    /// The core's AXI4-Stream input stage `FccInputStage`.
+    /// The core's AXI4-Stream input stage `FccInputStage`, its slot field by
+    /// field behind `FccInputStageProbe`.
     InputStage,
     /// The front end's credit counter `FccCredits`.
     Credits,
@@ -34,6 +35,9 @@ pub enum BenchBlock {
     FramePhase,
     /// The sort filter's centre pipeline `FccFiltCentre`.
     FiltCentre,
+    /// A 16-bit lane of `FccWordWindow` (the representative and threshold
+    /// windows' shape) behind the scalar ports of `FccWordWindowProbe`.
+    WordWindow,
 }
 
 /// One row of the table: the module's name before the configuration
@@ -61,7 +65,7 @@ impl Row {
 
 impl BenchBlock {
     /// Every block with a bench.
-    pub const ALL: [BenchBlock; 11] = [
+    pub const ALL: [BenchBlock; 12] = [
         BenchBlock::Regs,
         BenchBlock::AxilAdapter,
         BenchBlock::MergeTable,
@@ -73,6 +77,7 @@ impl BenchBlock {
         BenchBlock::Credits,
         BenchBlock::FramePhase,
         BenchBlock::FiltCentre,
+        BenchBlock::WordWindow,
     ];
 
     fn row(self) -> Row {
@@ -112,7 +117,7 @@ impl BenchBlock {
             BenchBlock::InputStage => Row::plain("fcc_input_stage", |p| {
                 gen(
                     p,
-                    crate::fcc_input_stage::FccInputStage::default(),
+                    crate::fcc_input_stage_probe::FccInputStageProbe::default(),
                     "fcc_input_stage",
                 )
             }),
@@ -138,6 +143,17 @@ impl BenchBlock {
                     "fcc_filt_centre",
                 )
             }),
+            BenchBlock::WordWindow => Row {
+                name: "fcc_word_window",
+                generate: |p| {
+                    gen(
+                        p,
+                        crate::fcc_word_window_probe::FccWordWindowProbe::new(p),
+                        "fcc_word_window",
+                    )
+                },
+                waivers: lint::word_window_waivers,
+            },
         }
     }
 

@@ -13,14 +13,16 @@
 //! every line buffer, T2 shifts the window and writes the cascade (buffer 0
 //! takes the pixel, buffer j the centre column of row j), T3 = W5 presents
 //! `ent_*` (entry e = r*K + n as in `fcc_window`) and the centre's own word.
-//! No masks: `fcc_window`'s `ent_ok` masks the distance units.
+//! No masks: `fcc_window`'s `ent_ok` masks the distance units. The keys and
+//! the addends are two `FccWordWindow` lanes that share this block's write
+//! and shift enables.
 
 use fcc_params::FccParams;
 use rust_hdl::prelude::*;
 
 use crate::fcc_keep_reg::FccKeepReg;
 use crate::fcc_pix_thr::THR_LAG;
-use crate::fcc_ram::FccRam;
+use crate::fcc_word_window::FccWordWindow;
 use crate::types::{kb, vec_of};
 
 /// Cycles between `fcc_window`'s entries and this window's.
@@ -67,12 +69,8 @@ pub struct FccThrWindow {
     t3_cv: DFF<Bits<36>>,
     /// The line buffers: keys and addends (their low 32 bits; the upper
     /// bits of the addends are cleared on entry and set on the way out).
-    lb_key: Vec<FccRam<Bits<16>, 12>>,
-    lb_cv: Vec<FccRam<Bits<36>, 12>>,
-    win_key: Vec<DFF<Bits<16>>>,
-    win_cv: Vec<DFF<Bits<36>>>,
-    view_key: Vec<Signal<Local, Bits<16>>>,
-    view_cv: Vec<Signal<Local, Bits<36>>>,
+    lane_key: FccWordWindow<Bits<16>>,
+    lane_cv: FccWordWindow<Bits<36>>,
     shift_en: Vec<FccKeepReg<Bit>>,
     lb_write_en: Vec<FccKeepReg<Bit>>,
     lb_write_addr: Vec<FccKeepReg<Bits<12>>>,
@@ -116,14 +114,8 @@ impl FccThrWindow {
             t1_cv: Default::default(),
             t2_cv: Default::default(),
             t3_cv: Default::default(),
-            lb_key: (0..h).map(|_| FccRam::new(p.cols)).collect(),
-            lb_cv: (0..h)
-                .map(|_| FccRam::with_stored_bits(p.cols, 32))
-                .collect(),
-            win_key: vec_of(n),
-            win_cv: vec_of(n),
-            view_key: vec_of(n),
-            view_cv: vec_of(n),
+            lane_key: FccWordWindow::new(k, h, p.cols, 16),
+            lane_cv: FccWordWindow::new(k, h, p.cols, 32),
             shift_en: vec_of(n),
             lb_write_en: vec_of(h),
             lb_write_addr: vec_of(h),
@@ -164,18 +156,19 @@ impl Logic for FccThrWindow {
         self.cv_valid[1].d.next = self.cv_valid[0].q.val();
         self.cv_col[1].d.next = self.cv_col[0].q.val();
         self.cv_rdcol[1].d.next = self.cv_rdcol[0].q.val();
-        // ---- T0 (= W2): read column rdcol of every line buffer.
+        // ---- T0 (= W2): read column rdcol of every line buffer; T2 writes
+        // buffer 0 and the cascade, and shifts.
+        self.lane_key.clk.next = self.clk.val();
+        self.lane_cv.clk.next = self.clk.val();
+        self.lane_key.read_en.next = self.cv_valid[1].q.val();
+        self.lane_cv.read_en.next = self.cv_valid[1].q.val();
+        self.lane_key.read_addr.next = self.cv_rdcol[1].q.val();
+        self.lane_cv.read_addr.next = self.cv_rdcol[1].q.val();
         for j in 0..self._h {
-            self.lb_key[j].clk.next = self.clk.val();
-            self.lb_cv[j].clk.next = self.clk.val();
-            self.lb_key[j].read_en.next = self.cv_valid[1].q.val();
-            self.lb_cv[j].read_en.next = self.cv_valid[1].q.val();
-            self.lb_key[j].read_addr.next = self.cv_rdcol[1].q.val();
-            self.lb_cv[j].read_addr.next = self.cv_rdcol[1].q.val();
-            self.lb_key[j].write_en.next = self.lb_write_en[j].q.val();
-            self.lb_cv[j].write_en.next = self.lb_write_en[j].q.val();
-            self.lb_key[j].write_addr.next = self.lb_write_addr[j].q.val();
-            self.lb_cv[j].write_addr.next = self.lb_write_addr[j].q.val();
+            self.lane_key.cas_en[j].next = self.lb_write_en[j].q.val();
+            self.lane_cv.cas_en[j].next = self.lb_write_en[j].q.val();
+            self.lane_key.cas_addr[j].next = self.lb_write_addr[j].q.val();
+            self.lane_cv.cas_addr[j].next = self.lb_write_addr[j].q.val();
             self.lb_write_en[j].clock.next = self.clk.val();
             self.lb_write_en[j].d.next = self.t1_valid.q.val() & !self.rst.val();
             self.lb_write_addr[j].clock.next = self.clk.val();
@@ -192,40 +185,16 @@ impl Logic for FccThrWindow {
         self.t2_cv.d.next = self.t1_cv.q.val();
         self.t3_key.d.next = self.t2_key.q.val();
         self.t3_cv.d.next = self.t2_cv.q.val();
-        // ---- T2: the window shifted by one column, the new column from the
-        // buffers; the cascade as in `fcc_window`.
-        for kk in self._k..(self._k + 1) {
-            for hh in self._h..(self._h + 1) {
-                for r in 0..self._h {
-                    for n in 0..(self._k - 1) {
-                        self.view_key[r * kk + n].next = self.win_key[r * kk + n + 1].q.val();
-                        self.view_cv[r * kk + n].next = self.win_cv[r * kk + n + 1].q.val();
-                    }
-                    self.view_key[r * kk + kk - 1].next = self.lb_key[hh - 1 - r].read_data.val();
-                    self.view_cv[r * kk + kk - 1].next = self.lb_cv[hh - 1 - r].read_data.val();
-                }
-                for j in 1..self._h {
-                    self.lb_key[j].write_data.next = self.view_key[(hh - j) * kk + hh].val();
-                    self.lb_cv[j].write_data.next = self.view_cv[(hh - j) * kk + hh].val();
-                }
-            }
-        }
-        self.lb_key[0].write_data.next = self.t2_key.q.val();
-        self.lb_cv[0].write_data.next = self.t2_cv.q.val();
+        self.lane_key.in_data.next = self.t2_key.q.val();
+        self.lane_cv.in_data.next = self.t2_cv.q.val();
         for e in 0..(self._k * self._h) {
-            self.win_key[e].clock.next = self.clk.val();
-            self.win_cv[e].clock.next = self.clk.val();
-            self.win_key[e].d.next = self.win_key[e].q.val();
-            self.win_cv[e].d.next = self.win_cv[e].q.val();
             self.shift_en[e].clock.next = self.clk.val();
             self.shift_en[e].d.next = self.t1_valid.q.val() & !self.rst.val();
-            if self.shift_en[e].q.val() {
-                self.win_key[e].d.next = self.view_key[e].val();
-                self.win_cv[e].d.next = self.view_cv[e].val();
-            }
+            self.lane_key.shift_en[e].next = self.shift_en[e].q.val();
+            self.lane_cv.shift_en[e].next = self.shift_en[e].q.val();
             // ---- T3: the entries.
-            self.ent_key[e].next = self.win_key[e].q.val();
-            self.ent_cv[e].next = self.cv_high.val() | self.win_cv[e].q.val();
+            self.ent_key[e].next = self.lane_key.ent[e].val();
+            self.ent_cv[e].next = self.cv_high.val() | self.lane_cv.ent[e].val();
         }
         if self.rst.val() {
             self.cv_valid[0].d.next = false;

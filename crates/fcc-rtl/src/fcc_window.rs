@@ -241,7 +241,7 @@ impl Logic for FccWindow {
         self.rep_win.clk.next = self.clk.val();
         self.rep_win.rst.next = self.rst.val();
         self.rep_win.valid.next = self.w3.q.val().valid;
-        self.rep_win.col.next = self.w3.q.val().col;
+        self.rep_win.cascade_col.next = self.w3.q.val().col;
         self.rep_win.rdcol.next = self.w3.q.val().rdcol;
         self.rep_win.rep_we.next = self.rep_we.val();
         self.rep_win.rep_waddr.next = self.rep_waddr.val();

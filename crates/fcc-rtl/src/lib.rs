@@ -6,7 +6,8 @@
 //! `fcc_sq_dist`, `fcc_dist_unit`, `fcc_line_buf`, `fcc_fifo`, `fcc_ram`,
 //! `fcc_row_word`, `fcc_keep_reg`, `fcc_fanout_reg`, `fcc_fanout_net`,
 //! `fcc_prefix_or`, `fcc_any_or`, `fcc_two_or`, `fcc_pick`; inside `fcc_window`:
-//! `fcc_win_edge`, `fcc_rep_window`; inside `fcc_sort_net`: `fcc_sort_filter` (with `fcc_filt_centre`, `fcc_min_tree`,
+//! `fcc_win_edge`, `fcc_rep_window` (a lane of `fcc_word_window`, as
+//! `fcc_thr_window`'s two lanes are); inside `fcc_sort_net`: `fcc_sort_filter` (with `fcc_filt_centre`, `fcc_min_tree`,
 //! `fcc_known_mask`, `fcc_match_delay`), `fcc_centre_buf`, `fcc_serializer`,
 //! `fcc_join_queue`; inside `fcc_merge_table`: `fcc_table_init`,
 //! `fcc_union_engine`, `fcc_flatten`, `fcc_table_ports`; inside
@@ -100,6 +101,7 @@ mod fcc_gearbox;
 mod fcc_group_or;
 mod fcc_hi_zero_check;
 mod fcc_input_stage;
+mod fcc_input_stage_probe;
 mod fcc_intra;
 mod fcc_intra_codes;
 mod fcc_intra_thr;
@@ -148,6 +150,8 @@ mod fcc_union_engine;
 mod fcc_win_edge;
 mod fcc_window;
 mod fcc_window_probe;
+mod fcc_word_window;
+mod fcc_word_window_probe;
 pub mod lint;
 pub mod regmap;
 pub mod types;

@@ -38,7 +38,21 @@ pub fn waivers(p: &FccParams) -> String {
     s.push_str(&axil_waivers("fcc_top.v"));
     s.push_str(&enum_register_waivers("fcc_top.v"));
     s.push_str(&slot_mux_waivers("fcc_top.v"));
+    s.push_str(&rep_window_waivers(p, "fcc_top.v"));
     s
+}
+
+/// The waiver of the representative window in `file`: at K = 3 it has one
+/// buffer, written by the sort network, and no cascade.
+fn rep_window_waivers(p: &FccParams, file: &str) -> String {
+    if p.half() > 1 {
+        return String::new();
+    }
+    format!(
+        "// At K = 3 the representative window has one buffer (written by the sort\n\
+         // network) and no cascade, whose writes the pixel's column addresses.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{file}\" -match \"*'cascade_col'*\"\n"
+    )
 }
 
 /// The waivers of the label updater's slot multiplexers and pop decisions,
@@ -139,6 +153,21 @@ pub fn block_waivers(p: &FccParams, name: &str) -> String {
     s
 }
 
+/// The waivers of the word window's probe `name`: at K = 3 the window has
+/// one buffer and no cascade, so the cascade's enable and address are not
+/// read.
+pub fn word_window_waivers(p: &FccParams, name: &str) -> String {
+    let mut s = block_waivers(p, name);
+    if p.half() == 1 {
+        s.push_str(&format!(
+            "// At K = 3 the window has one buffer (buffer 0) and no cascade.\n\
+             lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'cas_en'*\"\n\
+             lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'cas_addr'*\"\n"
+        ));
+    }
+    s
+}
+
 /// Lint `verilog`, generated for `p` (top module [`top_module`]), with the
 /// waivers in `vlt`. Returns the log on success.
 pub fn lint_files(p: &FccParams, verilog: &Path, vlt: &Path) -> Result<String, RtlError> {
@@ -202,6 +231,7 @@ pub fn window_waivers(p: &FccParams) -> String {
          lint_off -rule UNUSEDSIGNAL -file \"*fcc_window_probe.v\" -match \"*'window$centre'*\"\n\
          lint_off -rule UNUSEDSIGNAL -file \"*fcc_window_probe.v\" -match \"*'window$ent_rep$*\"\n",
     );
+    s.push_str(&rep_window_waivers(p, "fcc_window_probe.v"));
     s
 }
 
