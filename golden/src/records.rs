@@ -6,6 +6,7 @@
 use crate::frame::{dist2, Frame, Point};
 use crate::threshold::Thresholds;
 use fcc_params::FccParams;
+use fcc_pixel::record::HwRecord;
 use fcc_pixel::Q_ONE;
 use serde::Serialize;
 
@@ -46,6 +47,29 @@ pub struct Record {
 }
 
 impl Record {
+    /// The part the column-streaming core sends (spec §9.4): every field but
+    /// the frame number.
+    pub fn hw(&self) -> HwRecord {
+        HwRecord {
+            id: self.id,
+            points: self.points,
+            first_col: self.first_col,
+            last_col: self.last_col,
+            closed_col: self.closed_col,
+            seam: self.seam,
+            first_row: self.first_row,
+            last_row: self.last_row,
+            min: self.min,
+            max: self.max,
+            range2_min: self.range2_min,
+            range2_max: self.range2_max,
+            sum: self.sum,
+            sum_xx: self.sum_xx,
+            sum_xy: self.sum_xy,
+            sum_yy: self.sum_yy,
+        }
+    }
+
     /// Mean point, metres.
     pub fn centroid(&self) -> [f64; 3] {
         let n = f64::from(self.points) * Q_ONE;

@@ -7,6 +7,7 @@ use fcc_golden::{
     Record, Stream,
 };
 use fcc_params::FccParams;
+use fcc_pixel::record::HwRecord;
 use fcc_scene::{generate, SceneConfig};
 use proptest::prelude::*;
 
@@ -56,6 +57,18 @@ fn partition_mismatch(want: &[u32], got: &[u32], cols: usize) -> Option<String> 
 fn check_stream(p: &FccParams, f: &Frame, what: &str) {
     let mut s = Stream::new(p).unwrap();
     let (records, labels) = stream_frame(&mut s, f);
+    // Every record has its beats (spec §9.4), which give it back.
+    for r in &records {
+        let words = r
+            .hw()
+            .pack()
+            .unwrap_or_else(|e| panic!("{what}: {e} in {r:?}"));
+        assert_eq!(
+            HwRecord::unpack(&words),
+            Ok(r.hw()),
+            "{what}: beats of {r:?}"
+        );
+    }
     let stats = s.stats();
     let framed = cluster(p, f, MergeMode::Exact).unwrap();
     // Ids 1..=n in emission order, closing columns non-decreasing, and ties

@@ -9,7 +9,10 @@
 //! Input beat (64 bits, one pixel): bits 15:0 x, 31:16 y, 47:32 z (Q7.8 two's
 //! complement), bit 48 = 1 when the pixel holds a point; bits 63:49 zero.
 //! Output beat (64 bits): label of slot `s` in bits `16*s+15 : 16*s`.
+//! Record beats of the column-streaming core: [`record`].
 #![no_std]
+
+pub mod record;
 
 /// Fractional bits of the Q7.8 coordinate format.
 pub const FRAC_BITS: u32 = 8;
