@@ -54,6 +54,9 @@ pub struct StreamStats {
     pub unlabelled: usize,
     /// Most provisional labels in use at once.
     pub peak_labels: u32,
+    /// Most clusters open at once (each holds one or more of the labels in
+    /// use): what a record accumulator per open cluster must hold.
+    pub peak_open: u32,
 }
 
 /// The golden stream. Make one with [`Stream::new`], then per frame call
@@ -95,6 +98,9 @@ pub struct Stream {
     open: Vec<u32>,
     closing: Vec<(u32, u32)>,
     in_use: u32,
+    /// Clusters open: runs labelled less unions of two clusters less
+    /// records emitted.
+    open_clusters: u32,
     stats: StreamStats,
     out: Vec<Record>,
     out_points: Vec<Point>,
@@ -131,6 +137,7 @@ impl Stream {
             open: Vec::new(),
             closing: Vec::new(),
             in_use: 0,
+            open_clusters: 0,
             stats: StreamStats::default(),
             out: Vec::new(),
             out_points: Vec::new(),
@@ -216,6 +223,10 @@ impl Stream {
         }
         self.open.clear();
         self.emit(cols as u32);
+        debug_assert_eq!(
+            self.open_clusters, 0,
+            "every open cluster closes at the frame end"
+        );
         self.finished = true;
         self.frame += 1;
         Ok(&self.out)
@@ -289,6 +300,7 @@ impl Stream {
         self.pixel_run.fill(NONE);
         self.open.clear();
         self.in_use = 0;
+        self.open_clusters = 0;
         self.stats = StreamStats::default();
     }
 
@@ -305,6 +317,7 @@ impl Stream {
         }
         let (root, other) = (ra.min(rb), ra.max(rb));
         debug_assert!(self.id[root as usize] == 0 && self.id[other as usize] == 0);
+        self.open_clusters -= 1;
         let (r, o) = (root as usize, other as usize);
         self.parent[o] = root;
         let moved = self.acc[o];
@@ -324,6 +337,8 @@ impl Stream {
         }
         self.in_use += 1;
         self.stats.peak_labels = self.stats.peak_labels.max(self.in_use);
+        self.open_clusters += 1;
+        self.stats.peak_open = self.stats.peak_open.max(self.open_clusters);
         self.stats.runs += 1;
         let run = self.parent.len() as u32;
         self.parent.push(run);
@@ -480,6 +495,7 @@ impl Stream {
             let id = self.stats.clusters;
             self.id[root] = id;
             self.in_use -= self.labels_held[root];
+            self.open_clusters -= 1;
             self.out
                 .push(self.acc[root].record(self.frame, id, closed_col));
             let start = self.out_points.len();

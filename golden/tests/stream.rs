@@ -70,6 +70,11 @@ fn check_stream(p: &FccParams, f: &Frame, what: &str) {
         );
     }
     let stats = s.stats();
+    // Open clusters each hold a label in use; one is open while any is.
+    assert!(
+        stats.peak_open <= stats.peak_labels && (stats.peak_open > 0) == (stats.runs > 0),
+        "{what}: {stats:?}"
+    );
     let framed = cluster(p, f, MergeMode::Exact).unwrap();
     // Ids 1..=n in emission order, closing columns non-decreasing, and ties
     // in column order of the first pixel.
@@ -410,7 +415,7 @@ fn labels_are_reused_once_a_cluster_closes() {
     let (r, _) = stream_frame(&mut s, &f);
     assert_eq!(r.len(), 300);
     assert!(
-        !s.stats().overflow && s.stats().peak_labels <= 2,
+        !s.stats().overflow && s.stats().peak_labels <= 2 && s.stats().peak_open <= 2,
         "{:?}",
         s.stats()
     );

@@ -16,9 +16,12 @@ use std::path::PathBuf;
 
 #[derive(Args, Debug)]
 pub struct StreamReportArgs {
-    /// Synthetic scenes (seeds 1..=N, 64 x 2048, ground removed by the generator).
+    /// Synthetic scenes (seeds 1..=N, ROWS x 2048, ground removed by the generator).
     #[arg(long, default_value_t = 20)]
     pub scenes: u64,
+    /// Rows of the synthetic scenes.
+    #[arg(long, default_value_t = 64, value_parser = clap::value_parser!(u32).range(1..=4096))]
+    pub rows: u32,
     /// Ouster captures as CAPTURE.pcap:META.json (ground removed by `slope`).
     #[arg(long, num_args = 1..)]
     pub capture: Vec<String>,
@@ -41,6 +44,25 @@ const SETTINGS: [(&str, Option<u32>, Option<u32>); 4] = [
     ("bridge 2, ring 16", Some(2), Some(16)),
 ];
 
+/// The table's columns.
+const COLUMNS: [&str; 15] = [
+    "source",
+    "K",
+    "setting",
+    "frames",
+    "records",
+    "seam-held",
+    "p50",
+    "p90",
+    "p99",
+    "max",
+    "frames changed",
+    "clusters",
+    "runs",
+    "peak labels",
+    "peak open",
+];
+
 #[derive(Default)]
 struct Tally {
     frames: usize,
@@ -50,15 +72,21 @@ struct Tally {
     /// Frames whose partition differs from the unlimited contract's.
     changed_frames: usize,
     clusters: usize,
+    /// Most runs (provisional labels) of one frame, most labels in use at
+    /// once in the stream, and most clusters open at once.
+    runs: u32,
+    peak_labels: u32,
+    peak_open: u32,
 }
 
 pub fn run(args: &StreamReportArgs) -> anyhow::Result<()> {
     let mut sources: Vec<(String, Vec<RangeImage>, GroundMethod)> = Vec::new();
     if args.scenes > 0 {
         eprintln!("making {} synthetic scenes", args.scenes);
-        let frames = synthetic_frames(1..args.scenes + 1, 64, 2048, false)?;
+        let rows = args.rows as usize;
+        let frames = synthetic_frames(1..args.scenes + 1, rows, 2048, false)?;
         sources.push((
-            format!("synthetic corpus ({} scenes, 64 x 2048)", args.scenes),
+            format!("synthetic corpus ({} scenes, {rows} x 2048)", args.scenes),
             frames.into_iter().map(|f| f.image).collect(),
             GroundMethod::None,
         ));
@@ -94,11 +122,8 @@ pub fn run(args: &StreamReportArgs) -> anyhow::Result<()> {
         ));
     }
     let mut md = String::new();
-    writeln!(
-        md,
-        "| source | K | setting | frames | records | seam-held | p50 | p90 | p99 | max | frames changed | clusters |"
-    )?;
-    writeln!(md, "|---|---|---|---|---|---|---|---|---|---|---|---|")?;
+    writeln!(md, "| {} |", COLUMNS.join(" | "))?;
+    writeln!(md, "|{}", "---|".repeat(COLUMNS.len()))?;
     for (name, images, ground) in &sources {
         for &k in &args.fsize {
             eprintln!("{name}: K = {k}");
@@ -132,6 +157,9 @@ pub fn run(args: &StreamReportArgs) -> anyhow::Result<()> {
                     t.frames += 1;
                     t.clusters += framed.clusters as usize;
                     t.changed_frames += usize::from(!same_partition(want, &framed.labels));
+                    t.runs = t.runs.max(streamed.stats.runs);
+                    t.peak_labels = t.peak_labels.max(streamed.stats.peak_labels);
+                    t.peak_open = t.peak_open.max(streamed.stats.peak_open);
                     for r in &streamed.records {
                         t.records += 1;
                         if (r.record.closed_col as usize) < im.cols {
@@ -145,7 +173,7 @@ pub fn run(args: &StreamReportArgs) -> anyhow::Result<()> {
                 let q = |p| percentile(&t.latency, p).map_or("-".into(), |v| v.to_string());
                 writeln!(
                     md,
-                    "| {name} | {k} | {setting} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
+                    "| {name} | {k} | {setting} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
                     t.frames,
                     t.records,
                     t.seam_held,
@@ -155,6 +183,9 @@ pub fn run(args: &StreamReportArgs) -> anyhow::Result<()> {
                     t.latency.last().map_or("-".into(), |v| v.to_string()),
                     t.changed_frames,
                     t.clusters,
+                    t.runs,
+                    t.peak_labels,
+                    t.peak_open,
                 )?;
             }
         }

@@ -192,3 +192,58 @@ fn the_row_major_core_refuses_limits_and_the_stream() {
         assert!(e.lines().count() == 1 && e.contains(why), "{args:?}: {e}");
     }
 }
+
+/// `fcc stream-report` on two small synthetic scenes: one row per K and
+/// setting, and per row the labels the stream holds at once (what a
+/// column-streaming core must store) within the frame's runs, which frame
+/// mode labels all at once, and the clusters open at once within those.
+#[test]
+fn stream_report_counts_the_labels_in_use() {
+    let out = fcc(&[
+        "stream-report",
+        "--scenes",
+        "2",
+        "--rows",
+        "16",
+        "--fsize",
+        "3,7",
+    ]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let md = String::from_utf8_lossy(&out.stdout).into_owned();
+    let header: Vec<&str> = md
+        .lines()
+        .next()
+        .unwrap()
+        .split('|')
+        .map(str::trim)
+        .collect();
+    let col = |name: &str| {
+        header
+            .iter()
+            .position(|h| *h == name)
+            .unwrap_or_else(|| panic!("no column {name}: {md}"))
+    };
+    let (runs, peak, open) = (col("runs"), col("peak labels"), col("peak open"));
+    let source = col("source");
+    let separator = md.lines().nth(1).unwrap();
+    assert_eq!(separator.matches("---|").count() + 2, header.len(), "{md}");
+    let rows: Vec<Vec<&str>> = md
+        .lines()
+        .skip(2)
+        .map(|l| l.split('|').map(str::trim).collect())
+        .collect();
+    assert_eq!(rows.len(), 2 * 4, "{md}");
+    for r in rows {
+        assert!(r[source].contains("2 scenes, 16 x 2048"), "{md}");
+        let n = |c: usize| -> u32 { r[c].parse().unwrap() };
+        let (runs, peak, open) = (n(runs), n(peak), n(open));
+        assert!(
+            peak > 0 && peak < runs,
+            "peak labels {peak} of {runs} runs: {md}"
+        );
+        assert!(
+            open > 0 && open <= peak,
+            "peak open {open}, peak labels {peak}: {md}"
+        );
+    }
+}
