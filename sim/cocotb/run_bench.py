@@ -63,21 +63,25 @@ ALL_CASES = (
 # design and slower the larger K (measured CPU per cycle: K = 3 about 1.5 ms,
 # K = 11 about 12 ms), so every case runs as generated on one of K = 3 and 5
 # (the directed frames on K = 3, the union engine, reset and register cases on
-# K = 5), the larger K a share of them, and the reset-only copies the cases
-# that need the union engine and a reset in the middle of a frame (the seeded
-# random frame first: its clean `status_joins` is the reference after the
-# reset). The register file through the AXI4-Lite master ("registers": a
-# short frame with run parameters other than the build's) runs on K = 5 as
-# generated and on K = 3 reset-only.
+# K = 5) and the larger K a share of them. The reset-only copies (no power-up
+# values) run a reset in the middle of a frame at every K: its partial frame
+# starts from the power-on reset alone, and its whole frame after the reset
+# must give the golden labels and status. On K = 3, 5 and 7 the seeded random
+# frame runs first, so its clean `status_joins` is also the reference after
+# the reset (the union engine's work, which the golden model does not count);
+# K = 9 and 11 leave that check to the smaller K and keep their CPU for the
+# window. The register file through the AXI4-Lite master ("registers": a short
+# frame with run parameters other than the build's) runs on K = 5 as generated
+# and on K = 3 reset-only.
 CASES = {
     3: {"generated": ("empty", "one point", "label overflow", "early tlast", "back to back"),
-        "reset_only": ("all one cluster", "random", "back to back", "reset in the middle of a frame", "registers")},
+        "reset_only": ("random", "reset in the middle of a frame", "registers")},
     5: {"generated": ("all one cluster", "random", "late tlast", "reset in the middle of a frame", "registers"),
         "reset_only": ("random", "reset in the middle of a frame")},
     7: {"generated": ("all one cluster", "random", "early tlast"),
         "reset_only": ("random", "reset in the middle of a frame")},
-    9: {"generated": ("label overflow", "random", "late tlast"), "reset_only": ("random", "reset in the middle of a frame")},
-    11: {"generated": ("label overflow", "random"), "reset_only": ("random", "reset in the middle of a frame")},
+    9: {"generated": ("label overflow", "random", "late tlast"), "reset_only": ("reset in the middle of a frame",)},
+    11: {"generated": ("label overflow", "random"), "reset_only": ("reset in the middle of a frame",)},
 }
 
 
