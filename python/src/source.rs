@@ -111,7 +111,7 @@ pub struct Frames {
 #[pyo3(signature = (path, *, truth=None, meta=None, sensor="auto", keep_incomplete=false,
     lidar_frame=false, skip_frames=0, max_frames=None, topic=None, rows=64, cols=2048,
     fov_up=3.0, fov_down=-25.0, beams=None, velodyne_model=None, velodyne_calibration=None,
-    velodyne_return="first", velodyne_cols=None, strict=false))]
+    velodyne_return="first", velodyne_cols=None, image_origin="sensor", strict=false))]
 #[allow(clippy::too_many_arguments)]
 pub fn open(
     py: Python<'_>,
@@ -133,6 +133,7 @@ pub fn open(
     velodyne_calibration: Option<PathBuf>,
     velodyne_return: &str,
     velodyne_cols: Option<usize>,
+    image_origin: &str,
     strict: bool,
 ) -> PyResult<Frames> {
     let sensor = match sensor {
@@ -149,6 +150,7 @@ pub fn open(
         meta,
         keep_incomplete,
         lidar_frame,
+        origin: image_origin.parse().map_err(value_err)?,
         skip_frames,
         max_frames,
         sensor,

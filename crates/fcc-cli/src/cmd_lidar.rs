@@ -18,7 +18,7 @@ use fcc_lidar::eval::{
 };
 use fcc_lidar::ground::{GroundMethod, GroundParams};
 use fcc_lidar::labels::{read_label_file, write_label_file, DEFAULT_LABEL_CLASS};
-use fcc_lidar::ouster::{CaptureStats, OusterFrame};
+use fcc_lidar::ouster::{CaptureStats, ImageOrigin, OusterFrame};
 use fcc_lidar::picture::{cluster_colour, cluster_colours, render_overview, Overview};
 use fcc_lidar::pipeline::{
     cluster_image, stream_image, ClosedRecord, PipelineConfig, PipelineResult,
@@ -162,6 +162,13 @@ pub struct OusterArgs {
     /// Points in the lidar frame instead of the sensor frame.
     #[arg(long)]
     pub lidar_frame: bool,
+    /// Where Ouster images start: sensor (the sensor's destaggered image,
+    /// as Ouster's SDK makes it) or sweep (rotated by the largest
+    /// destaggering shift, so that each column is complete a few columns
+    /// after the sweep passes it; what `fcc live --image-origin sweep`
+    /// streams).
+    #[arg(long, default_value = "sensor")]
+    pub image_origin: ImageOrigin,
     /// Skip this many frames of each capture.
     #[arg(long, default_value_t = 0)]
     pub skip_frames: usize,
@@ -183,6 +190,7 @@ impl OusterArgs {
             meta: self.meta.clone(),
             keep_incomplete: self.keep_incomplete,
             lidar_frame: self.lidar_frame,
+            origin: self.image_origin,
             skip_frames: self.skip_frames,
             max_frames: self.max_frames,
             sensor: velodyne.map(VelodyneArgs::sensor).unwrap_or_default(),

@@ -14,12 +14,13 @@ use fcc_golden::MergeMode;
 use fcc_lidar::clusters::ClusterRow;
 use fcc_lidar::ground::GroundMethod;
 use fcc_lidar::live::LiveFrame;
-use fcc_lidar::live::{Decoder, End, LiveOptions, LiveSource};
-use fcc_lidar::ouster::{bump_frame_id, OusterMetadata};
+use fcc_lidar::live::{Decoder, End, Event, LiveOptions, LiveSource};
+use fcc_lidar::ouster::{bump_frame_id, ImageOrigin, OusterMetadata};
 use fcc_lidar::pcap::PcapReader;
 use fcc_lidar::pipeline::{params_for, ColumnStream, PipelineConfig};
 use fcc_lidar::sinks::mcap::{McapFrame, McapSink};
 use fcc_lidar::source::{Frame as Item, SourceOptions};
+use fcc_lidar::RangeImage;
 use std::net::{SocketAddr, ToSocketAddrs, UdpSocket};
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -42,6 +43,13 @@ pub struct LiveArgs {
     /// Ouster: points in the lidar frame instead of the sensor frame.
     #[arg(long)]
     pub lidar_frame: bool,
+    /// Ouster: where the image starts, as `fcc cluster --image-origin`:
+    /// sensor (the sensor's image: its column 0 holds beams of the frame's
+    /// last packets, so no column is complete before the frame ends) or
+    /// sweep (each column complete a few columns after the sweep passes it:
+    /// on the column path, records are written as the sweep passes them).
+    #[arg(long, default_value = "sensor")]
+    pub image_origin: ImageOrigin,
     #[command(flatten)]
     pub velodyne: VelodyneArgs,
     #[command(flatten)]
@@ -113,10 +121,17 @@ pub fn run_live(args: &LiveArgs) -> anyhow::Result<()> {
             args.idle_timeout
         );
     }
+    // The ground removals that fit a plane to the whole frame need the frame
+    // before any column can be cleared of its ground.
+    let column_path = args.ground.params(false)?.method == GroundMethod::None;
+    // Streamed as the sweep passes, a frame has records out before it is
+    // known complete, so it cannot be dropped for missing columns.
+    let streamed = column_path && args.image_origin == ImageOrigin::Sweep;
     let opts = SourceOptions {
         meta: args.meta.clone(),
-        keep_incomplete: args.keep_incomplete,
+        keep_incomplete: args.keep_incomplete || streamed,
         lidar_frame: args.lidar_frame,
+        origin: args.image_origin,
         sensor: args.velodyne.sensor(),
         velodyne: args.velodyne.options(),
         ..SourceOptions::default()
@@ -160,11 +175,19 @@ pub fn run_live(args: &LiveArgs) -> anyhow::Result<()> {
         }
         None => None,
     };
-    // The ground removals that fit a plane to the whole frame need the frame
-    // before any column can be cleared of its ground.
-    let column_path = cfg.ground.method == GroundMethod::None;
     if column_path {
-        eprintln!("column path: each record written as the stream closes it (--ground none)");
+        let wait = match src.decoder() {
+            Decoder::Ouster(_) if streamed => {
+                "columns streamed as their packets arrive (--image-origin sweep; frames that miss columns are kept, the missing columns empty, as --keep-incomplete)"
+            }
+            Decoder::Ouster(_) => {
+                "columns streamed once the frame's last packet has arrived (image column 0 holds the frame's last measurement columns; --image-origin sweep streams them as they arrive)"
+            }
+            Decoder::Velodyne(_) => "columns streamed once the rotation has ended",
+        };
+        eprintln!(
+            "column path: each record written as the stream closes it (--ground none), {wait}"
+        );
     } else {
         eprintln!(
             "frame path: ground removal `{}` fits a plane to the whole frame, so each frame's records are written after its last packet and its ground removal (--ground none takes the column path)",
@@ -175,7 +198,7 @@ pub fn run_live(args: &LiveArgs) -> anyhow::Result<()> {
     let want_points = mcap.is_some() || viz.is_some();
     #[cfg(not(feature = "foxglove"))]
     let want_points = mcap.is_some();
-    let mut columns: Option<ColumnStream> = None;
+    let mut columns = ColumnPath::default();
     let (mut frames, mut clusters) = (0u64, 0usize);
     let mut latency_ms: Vec<f64> = Vec::new();
     // Per record: from the packet of its last column (Ouster) or of the
@@ -187,8 +210,8 @@ pub fn run_live(args: &LiveArgs) -> anyhow::Result<()> {
             if args.frames.is_some_and(|n| frames >= n) {
                 return Ok(());
             }
-            let mut f = match src.next_frame(&stop)? {
-                Ok(f) => f,
+            let event = match src.next_event(&stop)? {
+                Ok(e) => e,
                 Err(End::Stopped) => return Ok(()),
                 Err(End::Idle) => {
                     eprintln!(
@@ -196,6 +219,24 @@ pub fn run_live(args: &LiveArgs) -> anyhow::Result<()> {
                         args.idle_timeout
                     );
                     return Ok(());
+                }
+            };
+            let mut f = match event {
+                Event::Frame(f) => *f,
+                Event::Columns { frame, ready, at } => {
+                    if column_path {
+                        let name = format!("{}_f{:05}", args.name, frame);
+                        columns.columns(
+                            &src,
+                            frame,
+                            (ready, at),
+                            &cfg,
+                            &name,
+                            &mut stdout.lock(),
+                            (&mut record_ms, &mut latency_ms),
+                        )?;
+                    }
+                    continue;
                 }
             };
             let name = format!("{}_f{:05}", args.name, f.frame);
@@ -207,22 +248,18 @@ pub fn run_live(args: &LiveArgs) -> anyhow::Result<()> {
             }
             let stamp_ns = f.sensor_ns.unwrap_or(f.received_unix_ns);
             let (rows, points, labels) = if column_path {
-                let (rows, labels) = column_frame(
-                    &mut columns,
-                    &cfg,
+                let (rows, labels, image) = columns.frame(
                     &f,
+                    &cfg,
                     &name,
                     &mut stdout.lock(),
-                    &mut record_ms,
+                    (&mut record_ms, &mut latency_ms),
                 )?;
-                if !f.at_end {
-                    latency_ms.push(f.received_at.elapsed().as_secs_f64() * 1e3);
-                }
                 if !want_points {
                     (rows, Vec::new(), Vec::new())
                 } else {
-                    let idx = valid_pixels(&f.image);
-                    let points = idx.iter().filter_map(|&i| f.image.point(i)).collect();
+                    let idx = valid_pixels(image);
+                    let points = idx.iter().filter_map(|&i| image.point(i)).collect();
                     (rows, points, idx.iter().map(|&i| labels[i]).collect())
                 }
             } else {
@@ -317,61 +354,211 @@ pub fn run_live(args: &LiveArgs) -> anyhow::Result<()> {
     result
 }
 
-/// The column path for one frame: its columns through the stream (`stream`,
-/// made or remade for the frame's size), each record's JSON line written and
-/// flushed as it closes, its latency from its last column's packet pushed to
-/// `record_ms` (frames delivered by the idle timeout left out). Returns the
-/// rows and the label image.
-fn column_frame(
-    stream: &mut Option<ColumnStream>,
-    cfg: &PipelineConfig,
-    f: &LiveFrame,
-    name: &str,
-    out: &mut impl std::io::Write,
-    record_ms: &mut Vec<f64>,
-) -> anyhow::Result<(Vec<ClusterRow>, Vec<u32>)> {
-    let params = params_for(&f.image, &cfg.params);
-    if !stream
-        .as_ref()
-        .is_some_and(|s| *s.params() == params && s.min_points() == cfg.min_points)
-    {
-        *stream =
-            Some(ColumnStream::new(&params, cfg.min_points).with_context(|| name.to_string())?);
+/// The column path: the frame's columns through the stream, each record's
+/// JSON line written and flushed as it closes. An Ouster frame's columns go
+/// in as they become complete ([`Event::Columns`]), the rest when the frame
+/// ends; a Velodyne rotation's all at its end. Latencies: per record from
+/// the packet that completed its last column, per frame from the packet
+/// that completed the frame to its last record (frames delivered by the
+/// idle timeout left out).
+struct ColumnPath {
+    stream: Option<ColumnStream>,
+    /// The frame being streamed (until it is delivered), and whether the
+    /// stream has finished it.
+    frame: Option<u64>,
+    finished: bool,
+    /// Columns of the frame pushed so far.
+    pushed: usize,
+    /// The frame as streamed (its pushed columns).
+    image: RangeImage,
+    /// Per pushed column, when the packet that completed it was received.
+    ready_at: Vec<Instant>,
+    rows: Vec<ClusterRow>,
+    column: Vec<Option<fcc_golden::Point>>,
+    pixels: Vec<Option<[f32; 3]>>,
+}
+
+impl Default for ColumnPath {
+    fn default() -> Self {
+        ColumnPath {
+            stream: None,
+            frame: None,
+            finished: false,
+            pushed: 0,
+            image: RangeImage::empty(0, 0),
+            ready_at: Vec::new(),
+            rows: Vec::new(),
+            column: Vec::new(),
+            pixels: Vec::new(),
+        }
     }
-    let s = stream.as_mut().expect("made above");
-    let frame = f.image.to_frame();
-    let mut column = vec![None; frame.rows];
-    let mut rows = Vec::new();
-    for c in 0..=frame.cols {
-        let n = if c < frame.cols {
-            for (i, v) in column.iter_mut().enumerate() {
-                *v = frame.get(i, c);
-            }
-            s.push_column(&column)?.len()
-        } else {
-            s.finish()?.len()
-        };
+}
+
+impl ColumnPath {
+    /// Start streaming frame `frame` of `rows` x `cols`: a frame left
+    /// unfinished (the decoder dropped it as incomplete after some of its
+    /// columns were streamed) is warned about, and the stream remade.
+    fn begin(
+        &mut self,
+        frame: u64,
+        (rows, cols): (usize, usize),
+        cfg: &PipelineConfig,
+        name: &str,
+    ) -> anyhow::Result<()> {
+        if self.frame.is_some() && !self.finished {
+            eprintln!(
+                "warning: frame {}: dropped as incomplete after the records of its first {} columns were written (--keep-incomplete keeps such frames)",
+                self.frame.unwrap_or(0),
+                self.pushed
+            );
+            self.stream = None;
+        }
+        self.image = RangeImage::empty(rows, cols);
+        let params = params_for(&self.image, &cfg.params);
+        if !self
+            .stream
+            .as_ref()
+            .is_some_and(|s| *s.params() == params && s.min_points() == cfg.min_points)
+        {
+            self.stream =
+                Some(ColumnStream::new(&params, cfg.min_points).with_context(|| name.to_string())?);
+        }
+        self.frame = Some(frame);
+        self.finished = false;
+        self.pushed = 0;
+        self.ready_at.clear();
+        self.rows.clear();
+        Ok(())
+    }
+
+    /// Push the image's column `self.pushed`, completed at `at`, and write
+    /// the records it closed.
+    fn push(
+        &mut self,
+        at: Instant,
+        name: &str,
+        out: &mut impl std::io::Write,
+        record_ms: &mut Vec<f64>,
+    ) -> anyhow::Result<()> {
+        let (rows, cols, c) = (self.image.rows, self.image.cols, self.pushed);
+        self.column.clear();
+        self.column.extend((0..rows).map(|r| {
+            self.image.at(r, c).and_then(|p| {
+                fcc_golden::quantize_point(f64::from(p[0]), f64::from(p[1]), f64::from(p[2]))
+            })
+        }));
+        let s = self.stream.as_mut().expect("made by begin");
+        let n = s.push_column(&self.column)?.len();
+        self.pushed += 1;
+        self.ready_at.push(at);
+        self.write(n, name, out, record_ms)?;
+        if self.pushed == cols {
+            let n = self.stream.as_mut().expect("made by begin").finish()?.len();
+            self.finished = true;
+            self.write(n, name, out, record_ms)?;
+        }
+        Ok(())
+    }
+
+    /// Write the `n` records of the stream's last call.
+    fn write(
+        &mut self,
+        n: usize,
+        name: &str,
+        out: &mut impl std::io::Write,
+        record_ms: &mut Vec<f64>,
+    ) -> anyhow::Result<()> {
         if n == 0 {
-            continue;
+            return Ok(());
         }
-        let start = rows.len();
+        let s = self.stream.as_mut().expect("made by begin");
+        let start = self.rows.len();
         for k in 0..n {
-            rows.push(s.row(k, name, &f.image));
+            self.rows.push(s.row(k, name, &self.image));
         }
-        write_json_lines(out, &rows[start..])?;
-        if !f.at_end {
-            let now = Instant::now();
-            for r in &rows[start..] {
-                let t = f
-                    .column_time(r.span_last_col as usize)
-                    .unwrap_or(f.received_at);
-                record_ms.push(now.saturating_duration_since(t).as_secs_f64() * 1e3);
+        write_json_lines(out, &self.rows[start..])?;
+        let now = Instant::now();
+        for r in &self.rows[start..] {
+            let t = self.ready_at[r.span_last_col as usize];
+            record_ms.push(now.saturating_duration_since(t).as_secs_f64() * 1e3);
+        }
+        Ok(())
+    }
+
+    /// Columns `0 .. ready` of the Ouster frame `frame` being received are
+    /// complete, the last of them at `at`: stream those not yet streamed.
+    #[allow(clippy::too_many_arguments)]
+    fn columns(
+        &mut self,
+        src: &LiveSource,
+        frame: u64,
+        (ready, at): (usize, Instant),
+        cfg: &PipelineConfig,
+        name: &str,
+        out: &mut impl std::io::Write,
+        (record_ms, frame_ms): (&mut Vec<f64>, &mut Vec<f64>),
+    ) -> anyhow::Result<()> {
+        if self.frame != Some(frame) {
+            let Decoder::Ouster(d) = src.decoder() else {
+                return Ok(());
+            };
+            let m = d.metadata();
+            self.begin(frame, (m.pixels_per_column, m.columns_per_frame), cfg, name)?;
+        }
+        while self.pushed < ready.min(self.image.cols) {
+            let (rows, cols) = (self.image.rows, self.image.cols);
+            self.pixels.resize(rows, None);
+            src.column_into(self.pushed, &mut self.pixels);
+            for (r, p) in self.pixels.iter().enumerate() {
+                self.image.set(r * cols + self.pushed, *p);
+            }
+            self.push(at, name, out, record_ms)?;
+            if self.finished {
+                frame_ms.push(at.elapsed().as_secs_f64() * 1e3);
             }
         }
+        Ok(())
     }
-    let mut labels = Vec::new();
-    s.labels_into(&mut labels)?;
-    Ok((rows, labels))
+
+    /// Frame `f` has ended: stream the columns not yet streamed (from its
+    /// image), finish the frame if that is not done, and return its rows,
+    /// its label image and the image as streamed.
+    fn frame(
+        &mut self,
+        f: &LiveFrame,
+        cfg: &PipelineConfig,
+        name: &str,
+        out: &mut impl std::io::Write,
+        (record_ms, frame_ms): (&mut Vec<f64>, &mut Vec<f64>),
+    ) -> anyhow::Result<(Vec<ClusterRow>, Vec<u32>, &RangeImage)> {
+        if self.frame != Some(f.frame)
+            || f.image.rows != self.image.rows
+            || f.image.cols != self.image.cols
+        {
+            self.begin(f.frame, (f.image.rows, f.image.cols), cfg, name)?;
+        }
+        let was_finished = self.finished;
+        let cols = f.image.cols;
+        while self.pushed < cols {
+            let c = self.pushed;
+            for r in 0..f.image.rows {
+                self.image.set(r * cols + c, f.image.at(r, c));
+            }
+            let at = f.column_time(c).unwrap_or(f.received_at);
+            self.push(at, name, out, record_ms)?;
+        }
+        if !was_finished && !f.at_end {
+            frame_ms.push(f.received_at.elapsed().as_secs_f64() * 1e3);
+        }
+        let mut labels = Vec::new();
+        self.stream
+            .as_mut()
+            .expect("made by begin")
+            .labels_into(&mut labels)?;
+        // Delivered: the next frame starts afresh, even with the same id.
+        self.frame = None;
+        Ok((std::mem::take(&mut self.rows), labels, &self.image))
+    }
 }
 
 #[derive(Args, Debug)]

@@ -99,6 +99,7 @@ pub fn run(args: &StreamReportArgs) -> anyhow::Result<()> {
             meta: Some(PathBuf::from(meta)),
             keep_incomplete: false,
             lidar_frame: false,
+            image_origin: fcc_lidar::ouster::ImageOrigin::Sensor,
             skip_frames: 0,
             max_frames: Some(args.capture_frames),
         };

@@ -14,7 +14,7 @@
 
 use crate::error::{LidarError, Result};
 use crate::image::RangeImage;
-use crate::ouster::{OusterDecoder, OusterFrame, OusterMetadata};
+use crate::ouster::{ImageOrigin, OusterDecoder, OusterFrame, OusterMetadata};
 use crate::source::{decode_options, Sensor, SourceOptions};
 use crate::velodyne::{VelodyneDecoder, VelodyneFrame, VelodyneOptions};
 use std::net::{SocketAddr, UdpSocket};
@@ -69,6 +69,12 @@ impl Decoder {
                 decode_options(opts),
             )?)))
         } else {
+            if opts.origin != ImageOrigin::Sensor {
+                return Err(LidarError::Config(format!(
+                    "image origin `{}` is for Ouster sensors only: a Velodyne rotation's column grid is fixed when the rotation ends",
+                    opts.origin.name()
+                )));
+            }
             let v = VelodyneOptions {
                 keep_incomplete: opts.keep_incomplete,
                 ..opts.velodyne.clone()
@@ -133,8 +139,9 @@ pub struct LiveFrame {
     /// Ouster: when each measurement column's packet was received (`None`
     /// for a column that did not arrive, or for Velodyne).
     pub column_received: Vec<Option<Instant>>,
-    /// Ouster: the distinct destaggering shifts (image column = measurement
-    /// column + shift, modulo the columns).
+    /// Ouster: the distinct destaggering offsets (image column = measurement
+    /// column + offset, modulo the columns: the beam's shift less the image
+    /// origin).
     pub shifts: Vec<usize>,
 }
 
@@ -176,6 +183,23 @@ pub struct LiveStats {
     pub incomplete_frames: u64,
     /// Ouster columns missing in the frames delivered.
     pub lost_columns: u64,
+}
+
+/// What the datagrams brought, in order.
+#[derive(Debug, Clone)]
+pub enum Event {
+    /// Image columns `0 .. ready` of the Ouster frame `frame` being received
+    /// are complete ([`OusterDecoder::ready_columns`]); `at` is when the
+    /// packet that completed the last of them was received. Read them with
+    /// [`LiveSource::column_into`] before the next event.
+    Columns {
+        frame: u64,
+        ready: usize,
+        at: Instant,
+    },
+    /// A frame has ended (the first packet of the next one, or the end of
+    /// the stream, closed it).
+    Frame(Box<LiveFrame>),
 }
 
 /// Why [`LiveSource::next_frame`] returned no frame.
@@ -246,6 +270,10 @@ pub struct LiveSource {
     recent: std::collections::VecDeque<(u64, Instant)>,
     /// Sizes of the datagrams of the current undecodable run.
     run_sizes: std::collections::BTreeMap<usize, u64>,
+    /// Events of the last datagram not yet handed out.
+    pending: std::collections::VecDeque<Event>,
+    /// The frame id and complete columns last reported as [`Event::Columns`].
+    reported: Option<(u16, usize)>,
     ended: bool,
 }
 
@@ -301,6 +329,8 @@ impl LiveSource {
             undecodable_run: 0,
             recent: Default::default(),
             run_sizes: Default::default(),
+            pending: Default::default(),
+            reported: None,
             ended: false,
         })
     }
@@ -328,6 +358,32 @@ impl LiveSource {
     /// No packet at all within the idle timeout is an error, as is a long
     /// run of packets that the decoder cannot use.
     pub fn next_frame(&mut self, stop: &AtomicBool) -> Result<std::result::Result<LiveFrame, End>> {
+        loop {
+            match self.next_event(stop)? {
+                Ok(Event::Frame(f)) => return Ok(Ok(*f)),
+                Ok(Event::Columns { .. }) => {}
+                Err(e) => return Ok(Err(e)),
+            }
+        }
+    }
+
+    /// Image column `col` of the Ouster frame being received (see
+    /// [`Event::Columns`]), one entry per beam; empty for Velodyne.
+    pub fn column_into(&self, col: usize, out: &mut [Option<[f32; 3]>]) {
+        match &self.decoder {
+            Decoder::Ouster(d) => d.column_into(col, out),
+            Decoder::Velodyne(_) => out.fill(None),
+        }
+    }
+
+    /// As [`next_frame`](Self::next_frame), with the columns of the Ouster
+    /// frame being received as they become complete: an [`Event::Columns`]
+    /// after each packet that completes some, an [`Event::Frame`] when the
+    /// frame ends (after its last columns' event).
+    pub fn next_event(&mut self, stop: &AtomicBool) -> Result<std::result::Result<Event, End>> {
+        if let Some(e) = self.pending.pop_front() {
+            return Ok(Ok(e));
+        }
         if self.ended {
             return Ok(Err(End::Idle));
         }
@@ -347,7 +403,7 @@ impl LiveSource {
                 self.ended = true;
                 let at = self.last_packet.unwrap_or((self.started, unix_ns()));
                 return Ok(match self.flush(at) {
-                    Some(f) => Ok(f),
+                    Some(f) => Ok(Event::Frame(Box::new(f))),
                     None => Err(End::Idle),
                 });
             }
@@ -365,7 +421,23 @@ impl LiveSource {
             self.last_packet = Some((dg.at, dg.unix_ns));
             self.stats.packets += 1;
             if let Some(f) = self.push(&dg.payload, (dg.at, dg.unix_ns))? {
-                return Ok(Ok(f));
+                self.pending.push_back(Event::Frame(Box::new(f)));
+            }
+            if let Decoder::Ouster(d) = &self.decoder {
+                let now = d.ready_columns();
+                if let Some((frame, ready)) = now.filter(|&(_, r)| r > 0) {
+                    if self.reported != now {
+                        self.reported = now;
+                        self.pending.push_back(Event::Columns {
+                            frame: u64::from(frame),
+                            ready,
+                            at: dg.at,
+                        });
+                    }
+                }
+            }
+            if let Some(e) = self.pending.pop_front() {
+                return Ok(Ok(e));
             }
         }
     }
@@ -497,8 +569,6 @@ fn ouster_frame(
     at: (Instant, u64),
     recent: &std::collections::VecDeque<(u64, Instant)>,
 ) -> LiveFrame {
-    let m = d.metadata();
-    let w = m.columns_per_frame;
     let time_of = |seq: u64| {
         let k = recent.partition_point(|&(s, _)| s < seq);
         recent.get(k).filter(|&&(s, _)| s == seq).map(|&(_, t)| t)
@@ -508,11 +578,7 @@ fn ouster_frame(
         .iter()
         .map(|&seq| if seq == 0 { None } else { time_of(seq) })
         .collect();
-    let mut shifts: Vec<usize> = m
-        .pixel_shift_by_row
-        .iter()
-        .map(|s| s.rem_euclid(w as i64) as usize)
-        .collect();
+    let mut shifts = d.column_offsets().to_vec();
     shifts.sort_unstable();
     shifts.dedup();
     let lost = d

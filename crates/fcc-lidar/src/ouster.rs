@@ -19,8 +19,13 @@
 //! default, [`default_lidar_to_sensor`]) maps the lidar
 //! frame to the sensor frame, and millimetres become metres. Columns are
 //! destaggered: the pixel of beam `u` from column `v` lands in image column
-//! `(v + shift[u]) mod w`, with `pixel_shift_by_row` when the metadata has
-//! it, else `shift[u] = round(azimuth[u] w / 360) - min over beams`.
+//! `(v + shift[u] - o) mod w`, with `pixel_shift_by_row` when the metadata
+//! has it, else `shift[u] = round(azimuth[u] w / 360) - min over beams`. The
+//! image origin `o` is 0 for the sensor's own image ([`ImageOrigin::Sensor`],
+//! the Ouster SDK's destaggered image) and the largest shift for
+//! [`ImageOrigin::Sweep`], whose column `j` is complete as soon as
+//! measurement column `j + o` has arrived, so a frame can be clustered while
+//! the sensor sweeps it.
 
 use crate::error::{LidarError, Result};
 use crate::image::RangeImage;
@@ -441,6 +446,33 @@ impl OusterMetadata {
         }
     }
 
+    /// Image columns the origin moves the sensor's image by (0 for
+    /// [`ImageOrigin::Sensor`], the largest shift for [`ImageOrigin::Sweep`]).
+    pub fn origin_columns(&self, origin: ImageOrigin) -> usize {
+        let w = self.columns_per_frame as i64;
+        match origin {
+            ImageOrigin::Sensor => 0,
+            ImageOrigin::Sweep => self
+                .pixel_shift_by_row
+                .iter()
+                .map(|s| s.rem_euclid(w))
+                .max()
+                .unwrap_or(0) as usize,
+        }
+    }
+
+    /// Per beam, the image column of measurement column 0 with `origin`:
+    /// beam `u` of measurement column `v` lands in image column
+    /// `(v + offsets[u]) mod w`.
+    pub fn column_offsets(&self, origin: ImageOrigin) -> Vec<usize> {
+        let w = self.columns_per_frame;
+        let o = self.origin_columns(origin);
+        self.pixel_shift_by_row
+            .iter()
+            .map(|s| (s.rem_euclid(w as i64) as usize + w - o) % w)
+            .collect()
+    }
+
     fn in_window(&self, v: usize) -> bool {
         let (a, b) = self.column_window;
         if a <= b {
@@ -525,10 +557,57 @@ pub fn bump_frame_id(meta: &OusterMetadata, packet: &mut [u8], add: u16) -> bool
     true
 }
 
+/// Which destaggered column an Ouster image starts at.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, serde::Serialize)]
+pub enum ImageOrigin {
+    /// The sensor's image (Ouster's SDK): beam `u` of measurement column `v`
+    /// in image column `(v + shift[u]) mod w`. Image columns `0 .. max
+    /// shift - 1` hold beams of the frame's last measurement columns, so
+    /// column 0 is complete only when the frame has ended.
+    #[default]
+    Sensor,
+    /// The same image rotated by the largest shift `o`: image column `j`
+    /// holds beams of measurement columns `j .. j + o` only, and is complete
+    /// once those have arrived (the sweep order).
+    Sweep,
+}
+
+impl ImageOrigin {
+    /// Every origin, in the order the options list them.
+    pub const ALL: [ImageOrigin; 2] = [ImageOrigin::Sensor, ImageOrigin::Sweep];
+
+    /// The option's name (`sensor`, `sweep`).
+    pub fn name(self) -> &'static str {
+        match self {
+            ImageOrigin::Sensor => "sensor",
+            ImageOrigin::Sweep => "sweep",
+        }
+    }
+}
+
+impl std::str::FromStr for ImageOrigin {
+    type Err = String;
+
+    fn from_str(s: &str) -> std::result::Result<Self, String> {
+        ImageOrigin::ALL
+            .into_iter()
+            .find(|o| o.name() == s)
+            .ok_or_else(|| {
+                let names: Vec<&str> = ImageOrigin::ALL.iter().map(|o| o.name()).collect();
+                format!(
+                    "unknown image origin `{s}`: expected {}",
+                    names.join(" or ")
+                )
+            })
+    }
+}
+
 /// Options of the decoder.
 #[derive(Debug, Clone, Default)]
 pub struct DecodeOptions {
     pub frame: CoordFrame,
+    /// Where the destaggered image starts.
+    pub origin: ImageOrigin,
     /// Also deliver frames that miss columns (missing columns are empty).
     pub keep_incomplete: bool,
     /// Returns closer than this many metres are dropped (0 keeps all).
@@ -655,6 +734,9 @@ struct Assembly {
     /// The decoded packet (the count of `lidar_packets` after it) that
     /// brought each measurement column, 0 for none.
     column_packet: Vec<u64>,
+    /// Image columns `0 .. ready` are complete: every measurement column
+    /// that lands in them (inside the column window) has arrived.
+    ready: usize,
     stats: FrameStats,
 }
 
@@ -665,6 +747,11 @@ pub struct OusterDecoder {
     meta: OusterMetadata,
     opts: DecodeOptions,
     lut: Lut,
+    /// Per beam, the image column of measurement column 0 (see
+    /// [`OusterMetadata::column_offsets`]).
+    offsets: Vec<usize>,
+    /// The distinct values of `offsets`.
+    distinct_offsets: Vec<usize>,
     current: Option<Assembly>,
     stats: CaptureStats,
 }
@@ -678,8 +765,14 @@ impl OusterDecoder {
                 opts.min_range_m
             )));
         }
+        let offsets = meta.column_offsets(opts.origin);
+        let mut distinct_offsets = offsets.clone();
+        distinct_offsets.sort_unstable();
+        distinct_offsets.dedup();
         Ok(OusterDecoder {
             lut: Lut::new(meta, opts.frame),
+            offsets,
+            distinct_offsets,
             meta: meta.clone(),
             opts,
             current: None,
@@ -700,6 +793,65 @@ impl OusterDecoder {
     /// The columns received so far of the frame being assembled.
     pub fn pending_columns(&self) -> usize {
         self.current.as_ref().map_or(0, |a| a.stats.columns)
+    }
+
+    /// Per beam, the image column of measurement column 0 (the shift and
+    /// the image origin, see [`OusterMetadata::column_offsets`]).
+    pub fn column_offsets(&self) -> &[usize] {
+        &self.offsets
+    }
+
+    /// The frame being assembled: its frame id and how many of its leading
+    /// image columns are complete (every measurement column that lands in
+    /// them has arrived). With [`ImageOrigin::Sweep`] they follow the sweep
+    /// a few columns behind; with [`ImageOrigin::Sensor`] column 0 waits for
+    /// the frame's last measurement columns, so none is complete before the
+    /// frame ends. A frame whose first columns never came (one that started
+    /// before the input did, or lost a packet) has none complete until it
+    /// ends.
+    pub fn ready_columns(&self) -> Option<(u16, usize)> {
+        self.current.as_ref().map(|a| (a.frame_id, a.ready))
+    }
+
+    /// Image column `col` of the frame being assembled, row 0 first, as the
+    /// frame will hold it (`out` has one entry per beam). Meaningful for the
+    /// columns [`ready_columns`](Self::ready_columns) counts: the pixels of
+    /// measurement columns still to come are empty.
+    pub fn column_into(&self, col: usize, out: &mut [Option<[f32; 3]>]) {
+        let w = self.meta.columns_per_frame;
+        let Some(a) = &self.current else {
+            out.fill(None);
+            return;
+        };
+        for (u, p) in out.iter_mut().enumerate().take(self.meta.pixels_per_column) {
+            let v = (col + w - self.offsets[u]) % w;
+            *p = self.pixel(u, v, a.range_mm[u * w + v]);
+        }
+    }
+
+    /// The point of beam `u`, measurement column `v` at range `r` mm, or
+    /// `None` for no return or one nearer than the minimum range.
+    fn pixel(&self, u: usize, v: usize, r: u32) -> Option<[f32; 3]> {
+        if r == 0 || f64::from(r) < self.opts.min_range_m * 1000.0 {
+            None
+        } else {
+            Some(self.lut.xyz_m(u, v, r))
+        }
+    }
+
+    /// Move the frame's count of complete image columns on.
+    fn advance(&mut self) {
+        let m = &self.meta;
+        let w = m.columns_per_frame;
+        let Some(a) = &mut self.current else { return };
+        while a.ready < w
+            && self.distinct_offsets.iter().all(|&o| {
+                let v = (a.ready + w - o) % w;
+                a.received[v] || !m.in_window(v)
+            })
+        {
+            a.ready += 1;
+        }
     }
 
     /// One UDP payload sent to `dst_port`: returns a frame it completed, if
@@ -800,6 +952,7 @@ impl OusterDecoder {
                 reflectivity: vec![0; h * w],
                 received: vec![false; w],
                 column_packet: vec![0; w],
+                ready: 0,
                 stats: FrameStats::default(),
             });
             if !counted {
@@ -824,6 +977,7 @@ impl OusterDecoder {
                 a.reflectivity[u * w + mid] = prof.reflectivity(px);
             }
         }
+        self.advance();
         done
     }
 
@@ -836,19 +990,16 @@ impl OusterDecoder {
             self.stats.incomplete_frames += 1;
             return None;
         }
-        let min_mm = self.opts.min_range_m * 1000.0;
         let mut image = RangeImage::empty(h, w);
         let mut reflectivity = vec![f32::NAN; h * w];
         let mut returns = 0;
         for u in 0..h {
-            let shift = m.pixel_shift_by_row[u].rem_euclid(w as i64) as usize;
             for v in 0..w {
-                let r = a.range_mm[u * w + v];
-                if r == 0 || f64::from(r) < min_mm {
+                let Some(p) = self.pixel(u, v, a.range_mm[u * w + v]) else {
                     continue;
-                }
-                let col = (v + shift) % w;
-                image.set(u * w + col, Some(self.lut.xyz_m(u, v, r)));
+                };
+                let col = (v + self.offsets[u]) % w;
+                image.set(u * w + col, Some(p));
                 reflectivity[u * w + col] = f32::from(a.reflectivity[u * w + v]);
                 returns += 1;
             }

@@ -28,7 +28,9 @@
 use crate::cloud::{read_point_cloud, CloudFormat};
 use crate::labels::{read_label_file, semantickitti_instances};
 use crate::ouster::OusterReader;
-use crate::ouster::{CaptureStats, CoordFrame, DecodeOptions, OusterFrame, OusterMetadata};
+use crate::ouster::{
+    CaptureStats, CoordFrame, DecodeOptions, ImageOrigin, OusterFrame, OusterMetadata,
+};
 use crate::projection::{project, Projection, ProjectionConfig};
 use crate::rosbag::{read_pointclouds, Cloud2};
 use crate::velodyne::{
@@ -59,6 +61,9 @@ pub struct SourceOptions {
     pub keep_incomplete: bool,
     /// Ouster: points in the lidar frame instead of the sensor frame.
     pub lidar_frame: bool,
+    /// Ouster: where the destaggered image starts (other inputs take only
+    /// the default).
+    pub origin: ImageOrigin,
     /// Captures: skip this many frames.
     pub skip_frames: usize,
     /// Captures: use at most this many frames.
@@ -287,6 +292,13 @@ impl<'a> Source<'a> {
                     path.display()
                 )));
             }
+        }
+        if opts.origin != ImageOrigin::Sensor && kind != InputKind::Ouster {
+            return Err(LidarError::Config(format!(
+                "{}: image origin `{}` is for Ouster captures only (this input's image has one origin)",
+                path.display(),
+                opts.origin.name()
+            )));
         }
         Ok(Source {
             path,
@@ -528,6 +540,7 @@ pub(crate) fn decode_options(o: &SourceOptions) -> DecodeOptions {
             CoordFrame::Sensor
         },
         keep_incomplete: o.keep_incomplete,
+        origin: o.origin,
         min_range_m: 0.0,
     }
 }

@@ -2,8 +2,8 @@
 //! captures made broken on purpose.
 
 use fcc_lidar::ouster::{
-    read_capture, shifts_from_azimuth, CoordFrame, DecodeOptions, OusterMetadata, OusterReader,
-    Profile, SAMPLE_CAPTURES,
+    read_capture, shifts_from_azimuth, CoordFrame, DecodeOptions, ImageOrigin, OusterMetadata,
+    OusterReader, Profile, SAMPLE_CAPTURES,
 };
 use fcc_lidar::pcap::{PcapReader, PcapWriter};
 use std::path::{Path, PathBuf};
@@ -617,4 +617,172 @@ fn metadata_without_transform_takes_the_product_line_default() {
         }
     }
     assert!(n > 10_000, "{n}");
+}
+
+/// The first pixel that differs between two images, as "row r col c:
+/// expected .., got ..".
+fn first_difference(exp: &fcc_lidar::RangeImage, got: &fcc_lidar::RangeImage) -> Option<String> {
+    let bits = |p: Option<[f32; 3]>| p.map(|p| p.map(f32::to_bits));
+    (0..exp.pixels())
+        .find(|&i| bits(exp.point(i)) != bits(got.point(i)))
+        .map(|i| {
+            format!(
+                "row {} col {}: expected {:?}, got {:?}",
+                i / exp.cols,
+                i % exp.cols,
+                exp.point(i),
+                got.point(i)
+            )
+        })
+}
+
+#[test]
+fn sweep_origin_is_the_sensor_image_rotated_by_the_largest_shift() {
+    for (pcap, json, _, _) in CAPTURES {
+        let m = meta(json);
+        let w = m.columns_per_frame;
+        let o = m.origin_columns(ImageOrigin::Sweep);
+        let max = m
+            .pixel_shift_by_row
+            .iter()
+            .map(|s| s.rem_euclid(w as i64))
+            .max();
+        assert_eq!(Some(o as i64), max, "{pcap}");
+        assert!(o > 0, "{pcap}: the sample sensors have staggered beams");
+        assert_eq!(m.origin_columns(ImageOrigin::Sensor), 0);
+        let read = |origin| {
+            let opts = DecodeOptions {
+                origin,
+                ..DecodeOptions::default()
+            };
+            read_capture(&data(pcap), &m, opts).unwrap().frames
+        };
+        let (sensor, sweep) = (read(ImageOrigin::Sensor), read(ImageOrigin::Sweep));
+        assert_eq!(sensor.len(), sweep.len(), "{pcap}");
+        for (a, b) in sensor.iter().zip(&sweep) {
+            let mut rotated = fcc_lidar::RangeImage::empty(a.image.rows, w);
+            let mut refl = vec![f32::NAN; a.image.rows * w];
+            for r in 0..a.image.rows {
+                for j in 0..w {
+                    rotated.set(r * w + j, a.image.at(r, (j + o) % w));
+                    refl[r * w + j] = a.reflectivity[r * w + (j + o) % w];
+                }
+            }
+            if let Some(d) = first_difference(&rotated, &b.image) {
+                panic!(
+                    "{pcap} frame {}: sweep image against the sensor image rotated by {o}: {d}",
+                    a.frame_id
+                );
+            }
+            let same = refl
+                .iter()
+                .zip(&b.reflectivity)
+                .all(|(x, y)| x.to_bits() == y.to_bits());
+            assert!(same, "{pcap}: reflectivity not rotated with the points");
+            assert_eq!(a.stats, b.stats, "{pcap}");
+        }
+    }
+}
+
+/// The frame being received: its id, its image columns as read when they
+/// became complete, and per column the measurement columns received then.
+type Seen = (u16, Vec<Vec<Option<[f32; 3]>>>, Vec<Option<usize>>);
+
+/// Decode `packets` one by one; after each, every image column the decoder
+/// counts as complete must already be the delivered frame's column, bit for
+/// bit. Returns, per delivered frame, the measurement columns received when
+/// each image column became complete (`None`: only at the frame's end).
+fn ready_columns_hold_the_final_pixels(
+    m: &OusterMetadata,
+    origin: ImageOrigin,
+    packets: &[(u16, Vec<u8>)],
+    what: &str,
+) -> Vec<Vec<Option<usize>>> {
+    let opts = DecodeOptions {
+        origin,
+        ..DecodeOptions::default()
+    };
+    let mut d = fcc_lidar::ouster::OusterDecoder::new(m, opts).unwrap();
+    let (h, w) = (m.pixels_per_column, m.columns_per_frame);
+    // The frame being received: its id, its columns as read when they
+    // became complete, and the columns received at that moment.
+    let mut seen: Option<Seen> = None;
+    let mut out = Vec::new();
+    let mut check = |f: fcc_lidar::ouster::OusterFrame, seen: &mut Option<Seen>| {
+        let Some((id, cols, when)) = seen.take() else {
+            return;
+        };
+        assert_eq!(id, f.frame_id, "{what}: frame delivered out of turn");
+        for (j, col) in cols.iter().enumerate() {
+            for (r, p) in col.iter().enumerate() {
+                let bits = |p: Option<[f32; 3]>| p.map(|p| p.map(f32::to_bits));
+                assert_eq!(
+                    bits(*p),
+                    bits(f.image.at(r, j)),
+                    "{what} frame {id}: image column {j} row {r} read when complete differs from the frame's"
+                );
+            }
+        }
+        out.push(when);
+    };
+    for (port, p) in packets {
+        if let Some(f) = d.push(*port, p) {
+            check(f, &mut seen);
+        }
+        let Some((id, ready)) = d.ready_columns() else {
+            continue;
+        };
+        if seen.as_ref().map_or(true, |s| s.0 != id) {
+            seen = Some((id, Vec::new(), vec![None; w]));
+        }
+        let pending = d.pending_columns();
+        let (_, cols, when) = seen.as_mut().expect("set above");
+        while cols.len() < ready {
+            let mut col = vec![None; h];
+            d.column_into(cols.len(), &mut col);
+            when[cols.len()] = Some(pending);
+            cols.push(col);
+        }
+    }
+    if let Some(f) = d.flush() {
+        check(f, &mut seen);
+    }
+    out
+}
+
+#[test]
+fn sweep_columns_are_complete_as_the_sweep_passes_them_and_hold_their_final_pixels() {
+    for (pcap, json, _, _) in CAPTURES {
+        let m = meta(json);
+        let w = m.columns_per_frame;
+        let o = m.origin_columns(ImageOrigin::Sweep);
+        let packets = datagrams(&data(pcap));
+        let sweep = ready_columns_hold_the_final_pixels(&m, ImageOrigin::Sweep, &packets, pcap);
+        let sensor = ready_columns_hold_the_final_pixels(&m, ImageOrigin::Sensor, &packets, pcap);
+        assert!(!sweep.is_empty(), "{pcap}: no frame");
+        for when in &sweep {
+            // Column j needs measurement columns up to j + o: with the
+            // packets in order, j is complete once j + o + 1 columns have
+            // come (a packet's worth later at most).
+            for (j, got) in when.iter().enumerate().take(w - o) {
+                let got = got.unwrap_or_else(|| {
+                    panic!("{pcap}: sweep column {j} complete only at the frame's end")
+                });
+                let need = j + o + 1;
+                assert!(
+                    got >= need && got < need + m.columns_per_packet,
+                    "{pcap}: sweep column {j} complete with {got} columns received, expected {need} .. {}",
+                    need + m.columns_per_packet - 1
+                );
+            }
+        }
+        // The sensor's image: column 0 waits for the frame's last columns.
+        for when in &sensor {
+            assert!(
+                when.iter()
+                    .all(|c| c.is_none_or(|n| n >= w - m.columns_per_packet)),
+                "{pcap}: a sensor-origin column was complete before the frame's last packet"
+            );
+        }
+    }
 }
