@@ -243,7 +243,8 @@ def open(path: Any, **options: Any) -> Frames:
     ``keep_incomplete``, ``lidar_frame``, ``skip_frames``, ``max_frames``,
     ``topic``, ``rows``, ``cols``, ``fov_up``, ``fov_down``, ``beams``,
     ``velodyne_model``, ``velodyne_calibration``, ``velodyne_return``,
-    ``velodyne_cols``, ``strict``.
+    ``velodyne_cols``, ``image_origin`` (``"sensor"`` or ``"sweep"``, as
+    ``--image-origin``), ``strict``.
 
     Frames are decoded on a background thread at most two ahead of the
     caller, so a long capture is never held in memory. A missing file

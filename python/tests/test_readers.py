@@ -51,6 +51,20 @@ def test_ouster_captures_cluster_as_fcc_cluster_does(cli, capture, meta):
     )
 
 
+def test_sweep_origin_is_the_sensor_image_rotated_as_fcc_cluster_makes_it(cli):
+    capture = DATA / OUSTER[1][0]
+    _, sensor = only_frame(capture)
+    _, sweep = only_frame(capture, image_origin="sweep")
+    # Rotated by the largest destaggering shift: find it, then check it whole.
+    shift = next(s for s in range(1, sensor.xyz.shape[1]) if np.array_equal(
+        np.roll(sensor.xyz, -s, axis=1), sweep.xyz, equal_nan=True))
+    assert shift > 0
+    np.testing.assert_array_equal(np.roll(sensor.intensity, -shift, axis=1), sweep.intensity)
+    np.testing.assert_array_equal(fcc.cluster(sweep), cli.cluster(capture, "--image-origin", "sweep"))
+    with pytest.raises(ValueError, match="unknown image origin `north`"):
+        fcc.open(capture, image_origin="north")
+
+
 def test_ouster_frames_round_trip_through_fcc_convert(cli):
     _, f = only_frame(DATA / OUSTER[1][0])
     out = cli.tmp / "img.npy"
