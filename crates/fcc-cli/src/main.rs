@@ -45,12 +45,13 @@ enum Command {
     /// through the stream and each record is written as it closes. Ground
     /// removal `slope` (the default) and `plane` fit a plane to the whole
     /// frame, so they run the frame path: a frame's records are written
-    /// after its ground removal. Stderr names the path. On both, clustering
-    /// starts when the frame is complete (as offline: the next frame's
-    /// first packet, the rotation's wrap): the destaggered image's first
-    /// columns (Ouster) and the rotation's column grid (Velodyne) need the
-    /// whole frame, and live gives the records of `cluster --stream`,
-    /// exactly.
+    /// after its ground removal. Stderr names the path. Live gives the
+    /// records of `cluster --stream` exactly. With the sensor's image (the
+    /// default `--image-origin sensor`) and for Velodyne, clustering starts
+    /// on the frame's last packet: the image's first columns need the whole
+    /// frame. With `--ground none --image-origin sweep` (Ouster) each column
+    /// goes into the stream with the packet that completes it, and frames
+    /// that miss columns are kept, as `--keep-incomplete`.
     Live(cmd_live::LiveArgs),
     /// Send a capture's UDP packets to a socket at their recorded timing.
     Replay(cmd_live::ReplayArgs),
