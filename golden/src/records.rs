@@ -169,10 +169,14 @@ impl Acc {
         }
         self.first_row = self.first_row.min(row);
         self.last_row = self.last_row.max(row);
-        for (d, &v) in p.iter().enumerate() {
-            self.min[d] = self.min[d].min(v);
-            self.max[d] = self.max[d].max(v);
-            self.sum[d] += i64::from(v);
+        // Whole arrays at once: element-wise stores of the adjacent `min`
+        // and `max` were compiled into overlapping partial writes that the
+        // next read of the record had to wait for.
+        let (mn, mx) = (self.min, self.max);
+        self.min = [mn[0].min(p[0]), mn[1].min(p[1]), mn[2].min(p[2])];
+        self.max = [mx[0].max(p[0]), mx[1].max(p[1]), mx[2].max(p[2])];
+        for (s, &v) in self.sum.iter_mut().zip(&p) {
+            *s += i64::from(v);
         }
         let r2 = dist2(p, [0; 3]) as u64;
         self.range2_min = self.range2_min.min(r2);

@@ -17,6 +17,9 @@ use serde::Serialize;
 /// No run: an empty or unlabelled pixel; the end of a pixel list.
 const NONE: u32 = u32::MAX;
 
+/// More than one run (a row's older window columns).
+const MIXED: u32 = u32::MAX - 1;
+
 /// A row's first or latest valid pixel: column, point, run (or [`NONE`]).
 #[derive(Debug, Clone, Copy)]
 struct Seen {
@@ -36,6 +39,88 @@ fn find(parent: &mut [u32], mut x: u32) -> u32 {
         let g = parent[p as usize];
         parent[x as usize] = g;
         x = g;
+    }
+}
+
+/// One entry of the window: a labelled pixel's run, a node of its set
+/// that was its root when last looked at (still the root while it has no
+/// parent: most lookups end there, among the few open roots, without
+/// walking from the run), and its point.
+#[derive(Debug, Clone, Copy)]
+struct Win {
+    run: u32,
+    root: u32,
+    p: Point,
+}
+
+impl Win {
+    /// No labelled pixel.
+    const EMPTY: Win = Win {
+        run: NONE,
+        root: NONE,
+        p: [0; 3],
+    };
+}
+
+/// The runs' sets: per run a union-find parent and, at roots, the record
+/// being accumulated, the labels held, the pixel list (head and tail, the
+/// next pixel per pixel), the column-order index of the first pixel and
+/// the record id once closed.
+#[derive(Debug, Clone)]
+struct Sets {
+    parent: Vec<u32>,
+    acc: Vec<Acc>,
+    labels_held: Vec<u32>,
+    head: Vec<u32>,
+    tail: Vec<u32>,
+    first_px: Vec<u32>,
+    id: Vec<u32>,
+    /// Per pixel (raster order): the next pixel of its cluster's list.
+    next_px: Vec<u32>,
+    /// Clusters open: runs labelled less unions of two clusters less
+    /// records emitted.
+    open_clusters: u32,
+}
+
+impl Sets {
+    /// Pass 2 for one window entry `q` of a pixel at `p` in the cluster of
+    /// `root`: unite the two when they join (spec §4); `known` is a run of
+    /// the entry's row already in the pixel's cluster (its entries skipped).
+    #[inline(always)]
+    fn visit(&mut self, q: &mut Win, p: Point, th: &Thresholds, root: &mut u32, known: &mut u32) {
+        if q.run == *known || q.run == NONE {
+            return;
+        }
+        if q.root != *root && self.parent[q.root as usize] != q.root {
+            q.root = find(&mut self.parent, q.root);
+        }
+        if q.root == *root {
+            *known = q.run;
+        } else if th.joins(p, q.p) {
+            *root = self.union(*root, q.root);
+            *known = q.run;
+        }
+    }
+
+    /// Unite the clusters of runs `a` and `b`; returns the root (the
+    /// smaller run index).
+    fn union(&mut self, a: u32, b: u32) -> u32 {
+        let (ra, rb) = (find(&mut self.parent, a), find(&mut self.parent, b));
+        if ra == rb {
+            return ra;
+        }
+        let (root, other) = (ra.min(rb), ra.max(rb));
+        debug_assert!(self.id[root as usize] == 0 && self.id[other as usize] == 0);
+        self.open_clusters -= 1;
+        let (r, o) = (root as usize, other as usize);
+        self.parent[o] = root;
+        let moved = self.acc[o];
+        self.acc[r].merge(&moved);
+        self.labels_held[r] += self.labels_held[o];
+        self.first_px[r] = self.first_px[r].min(self.first_px[o]);
+        self.next_px[self.tail[r] as usize] = self.head[o];
+        self.tail[r] = self.tail[o];
+        root
     }
 }
 
@@ -73,34 +158,25 @@ pub struct Stream {
     finished: bool,
     first: Vec<Option<Seen>>,
     latest: Vec<Option<Seen>>,
-    /// The last h + 1 columns: run and point of each labelled pixel, `h + 1`
-    /// entries per row (row `i`, column `c` at `i * (h + 1) + c % (h + 1)`),
-    /// so that the window columns of one row are adjacent.
-    win_run: Vec<u32>,
-    win_point: Vec<Point>,
-    /// Per run: union-find parent, record (at roots), labels held (at
-    /// roots), pixel list head and tail (at roots), the column-order index
-    /// of its first pixel (at roots), hold stamp, record id once closed.
-    parent: Vec<u32>,
-    acc: Vec<Acc>,
-    labels_held: Vec<u32>,
-    head: Vec<u32>,
-    tail: Vec<u32>,
-    first_px: Vec<u32>,
+    /// The last h + 1 columns, `h + 1` entries per row (row `i`, column `c`
+    /// at `i * (h + 1) + c % (h + 1)`), so that the window columns of one
+    /// row are adjacent.
+    win: Vec<Win>,
+    /// Per row, the run of its window columns before the current one when
+    /// they hold one run ([`MIXED`] for more, [`NONE`] for none), with a
+    /// node of its set.
+    older: Vec<Win>,
+    /// The runs' sets: union-find, records, pixel lists.
+    sets: Sets,
+    /// Per run: hold stamp.
     held: Vec<u32>,
-    id: Vec<u32>,
-    /// Per pixel (raster order): its run, its point (when labelled) and the
-    /// next pixel of its cluster's list.
+    /// Per pixel (raster order): its run, its point (when labelled).
     pixel_run: Vec<u32>,
     pixel_point: Vec<Point>,
-    next_px: Vec<u32>,
     /// Roots of the open clusters (and roots merged away, dropped lazily).
     open: Vec<u32>,
     closing: Vec<(u32, u32)>,
     in_use: u32,
-    /// Clusters open: runs labelled less unions of two clusters less
-    /// records emitted.
-    open_clusters: u32,
     stats: StreamStats,
     out: Vec<Record>,
     out_points: Vec<Point>,
@@ -121,23 +197,25 @@ impl Stream {
             finished: false,
             first: vec![None; r],
             latest: vec![None; r],
-            win_run: vec![NONE; r * (params.half() + 1)],
-            win_point: vec![[0; 3]; r * (params.half() + 1)],
-            parent: Vec::new(),
-            acc: Vec::new(),
-            labels_held: Vec::new(),
-            head: Vec::new(),
-            tail: Vec::new(),
-            first_px: Vec::new(),
+            win: vec![Win::EMPTY; r * (params.half() + 1)],
+            older: vec![Win::EMPTY; r],
+            sets: Sets {
+                parent: Vec::new(),
+                acc: Vec::new(),
+                labels_held: Vec::new(),
+                head: Vec::new(),
+                tail: Vec::new(),
+                first_px: Vec::new(),
+                id: Vec::new(),
+                next_px: vec![NONE; n],
+                open_clusters: 0,
+            },
             held: Vec::new(),
-            id: Vec::new(),
             pixel_run: vec![NONE; n],
             pixel_point: vec![[0; 3]; n],
-            next_px: vec![NONE; n],
             open: Vec::new(),
             closing: Vec::new(),
             in_use: 0,
-            open_clusters: 0,
             stats: StreamStats::default(),
             out: Vec::new(),
             out_points: Vec::new(),
@@ -212,19 +290,19 @@ impl Stream {
                 continue;
             }
             let root = self.union(f.run, l.run);
-            self.acc[root as usize].seam = true;
+            self.sets.acc[root as usize].seam = true;
         }
         self.closing.clear();
         for k in 0..self.open.len() {
             let x = self.open[k];
-            if self.parent[x as usize] == x {
-                self.closing.push((self.first_px[x as usize], x));
+            if self.sets.parent[x as usize] == x {
+                self.closing.push((self.sets.first_px[x as usize], x));
             }
         }
         self.open.clear();
         self.emit(cols as u32);
         debug_assert_eq!(
-            self.open_clusters, 0,
+            self.sets.open_clusters, 0,
             "every open cluster closes at the frame end"
         );
         self.finished = true;
@@ -274,7 +352,7 @@ impl Stream {
                 0
             } else {
                 let root = self.find(r);
-                self.id[root as usize]
+                self.sets.id[root as usize]
             });
         }
         Ok(())
@@ -286,47 +364,34 @@ impl Stream {
         self.first.fill(None);
         self.latest.fill(None);
         for v in [
-            &mut self.parent,
-            &mut self.labels_held,
-            &mut self.head,
-            &mut self.tail,
-            &mut self.first_px,
+            &mut self.sets.parent,
+            &mut self.sets.labels_held,
+            &mut self.sets.head,
+            &mut self.sets.tail,
+            &mut self.sets.first_px,
+            &mut self.sets.id,
             &mut self.held,
-            &mut self.id,
         ] {
             v.clear();
         }
-        self.acc.clear();
+        self.sets.acc.clear();
+        self.sets.open_clusters = 0;
+        // The window's columns before column 0 are empty.
+        self.win.fill(Win::EMPTY);
         self.pixel_run.fill(NONE);
         self.open.clear();
         self.in_use = 0;
-        self.open_clusters = 0;
         self.stats = StreamStats::default();
     }
 
     #[inline]
     fn find(&mut self, x: u32) -> u32 {
-        find(&mut self.parent, x)
+        find(&mut self.sets.parent, x)
     }
 
     /// Unite the clusters of runs `a` and `b`; returns the root.
     fn union(&mut self, a: u32, b: u32) -> u32 {
-        let (ra, rb) = (self.find(a), self.find(b));
-        if ra == rb {
-            return ra;
-        }
-        let (root, other) = (ra.min(rb), ra.max(rb));
-        debug_assert!(self.id[root as usize] == 0 && self.id[other as usize] == 0);
-        self.open_clusters -= 1;
-        let (r, o) = (root as usize, other as usize);
-        self.parent[o] = root;
-        let moved = self.acc[o];
-        self.acc[r].merge(&moved);
-        self.labels_held[r] += self.labels_held[o];
-        self.first_px[r] = self.first_px[r].min(self.first_px[o]);
-        self.next_px[self.tail[r] as usize] = self.head[o];
-        self.tail[r] = self.tail[o];
-        root
+        self.sets.union(a, b)
     }
 
     /// A new run starting at column-order pixel `key`, if a label is free.
@@ -337,18 +402,18 @@ impl Stream {
         }
         self.in_use += 1;
         self.stats.peak_labels = self.stats.peak_labels.max(self.in_use);
-        self.open_clusters += 1;
-        self.stats.peak_open = self.stats.peak_open.max(self.open_clusters);
+        self.sets.open_clusters += 1;
+        self.stats.peak_open = self.stats.peak_open.max(self.sets.open_clusters);
         self.stats.runs += 1;
-        let run = self.parent.len() as u32;
-        self.parent.push(run);
-        self.acc.push(Acc::default());
-        self.labels_held.push(1);
-        self.head.push(NONE);
-        self.tail.push(NONE);
-        self.first_px.push(key);
+        let run = self.sets.parent.len() as u32;
+        self.sets.parent.push(run);
+        self.sets.acc.push(Acc::default());
+        self.sets.labels_held.push(1);
+        self.sets.head.push(NONE);
+        self.sets.tail.push(NONE);
+        self.sets.first_px.push(key);
         self.held.push(0);
-        self.id.push(0);
+        self.sets.id.push(0);
         self.open.push(run);
         run
     }
@@ -362,15 +427,25 @@ impl Stream {
         let half = (cols / 2) as u32;
         let slot = c % w;
         for rr in 0..rows {
-            self.win_run[rr * w + slot] = NONE;
+            self.win[rr * w + slot].run = NONE;
+            // The one run of the row's columns c - h .. c - 1, if they hold
+            // one: from the newest entry back.
+            let mut o = Win::EMPTY;
+            for dc in 1..w {
+                // Column c - dc's slot, (c - dc) mod w.
+                let s = if dc <= slot { slot - dc } else { slot + w - dc };
+                let q = self.win[rr * w + s];
+                if q.run == NONE || q.run == o.run {
+                    continue;
+                }
+                if o.run != NONE {
+                    o.run = MIXED;
+                    break;
+                }
+                o = q;
+            }
+            self.older[rr] = o;
         }
-        // The slots of columns c, c - 1, ..., c - h (those there are).
-        let n = h.min(c) + 1;
-        let mut slots = [0usize; 8];
-        for (dc, s) in slots.iter_mut().enumerate().take(n) {
-            *s = (c - dc) % w;
-        }
-        let slots = &slots[..n];
         for (i, p) in column.iter().enumerate() {
             let Some(p) = *p else { continue };
             self.stats.points += 1;
@@ -397,43 +472,53 @@ impl Stream {
             }
             let mut root = self.find(run);
             let r = root as usize;
-            self.acc[r].add(i as u32, c as u32, p, half);
+            self.sets.acc[r].add(i as u32, c as u32, p, half);
             self.pixel_point[k] = p;
-            self.next_px[k] = NONE;
-            if self.head[r] == NONE {
-                self.head[r] = k as u32;
+            self.sets.next_px[k] = NONE;
+            if self.sets.head[r] == NONE {
+                self.sets.head[r] = k as u32;
             } else {
-                self.next_px[self.tail[r] as usize] = k as u32;
+                self.sets.next_px[self.sets.tail[r] as usize] = k as u32;
             }
-            self.tail[r] = k as u32;
-            self.win_run[i * w + slot] = run;
-            self.win_point[i * w + slot] = p;
+            self.sets.tail[r] = k as u32;
             // The window pairs whose later pixel this is: columns c - h ..= c,
-            // rows within h (in column c only the rows above are filled).
-            // Row by row, a window row's pixels mostly belong to one run:
-            // once a run is known to be in this pixel's cluster, its other
-            // pixels are skipped.
+            // rows within h (in column c only the rows above are filled;
+            // before column 0 the window is empty), each row's entries from
+            // column c back to c - h. A row's entries mostly belong to one
+            // run: once a run is known to be in this pixel's cluster, its
+            // other pixels are skipped, and when the row's older columns
+            // hold one run already in it, all of them are.
             let (lo, hi) = (i.saturating_sub(h), (i + h).min(rows - 1));
-            for rr in lo..=hi {
-                if rr == i {
+            for rr in (lo..i).chain(i + 1..=hi) {
+                let base = rr * w;
+                let mut known = NONE;
+                if rr < i {
+                    let q = &mut self.win[base + slot];
+                    self.sets.visit(q, p, &th, &mut root, &mut known);
+                }
+                let o = &mut self.older[rr];
+                if o.run == NONE || o.run == known {
                     continue;
                 }
-                let row = rr * w;
-                let mut known = NONE;
-                for &s in slots {
-                    let qrun = self.win_run[row + s];
-                    if qrun == known || qrun == NONE {
+                if o.run != MIXED {
+                    if o.root != root && self.sets.parent[o.root as usize] != o.root {
+                        o.root = find(&mut self.sets.parent, o.root);
+                    }
+                    if o.root == root {
                         continue;
                     }
-                    let qroot = find(&mut self.parent, qrun);
-                    if qroot == root {
-                        known = qrun;
-                    } else if th.joins(p, self.win_point[row + s]) {
-                        root = self.union(root, qroot);
-                        known = qrun;
-                    }
+                }
+                // Columns c - 1 down to c - h: slots `slot - 1` down to 0,
+                // then w - 1 down to `slot + 1`.
+                let (newer, older) = self.win[base..base + w].split_at_mut(slot);
+                for q in newer.iter_mut().rev() {
+                    self.sets.visit(q, p, &th, &mut root, &mut known);
+                }
+                for q in older[1..].iter_mut().rev() {
+                    self.sets.visit(q, p, &th, &mut root, &mut known);
                 }
             }
+            self.win[i * w + slot] = Win { run, root, p };
         }
     }
 
@@ -470,17 +555,17 @@ impl Stream {
         let mut k = 0;
         while k < self.open.len() {
             let x = self.open[k] as usize;
-            if self.parent[x] != x as u32 {
+            if self.sets.parent[x] != x as u32 {
                 self.open.swap_remove(k);
                 continue;
             }
             // Hold 1: a pixel within h columns of the next column.
-            let window = !last && self.acc[x].max_col as usize + h > c;
+            let window = !last && self.sets.acc[x].max_col as usize + h > c;
             if window || self.held[x] == stamp {
                 k += 1;
                 continue;
             }
-            self.closing.push((self.first_px[x], x as u32));
+            self.closing.push((self.sets.first_px[x], x as u32));
             self.open.swap_remove(k);
         }
         self.emit(c as u32);
@@ -493,17 +578,17 @@ impl Stream {
             let root = self.closing[k].1 as usize;
             self.stats.clusters += 1;
             let id = self.stats.clusters;
-            self.id[root] = id;
-            self.in_use -= self.labels_held[root];
-            self.open_clusters -= 1;
+            self.sets.id[root] = id;
+            self.in_use -= self.sets.labels_held[root];
+            self.sets.open_clusters -= 1;
             self.out
-                .push(self.acc[root].record(self.frame, id, closed_col));
+                .push(self.sets.acc[root].record(self.frame, id, closed_col));
             let start = self.out_points.len();
-            let mut px = self.head[root];
+            let mut px = self.sets.head[root];
             while px != NONE {
                 self.out_points.push(self.pixel_point[px as usize]);
                 self.out_pixels.push(px);
-                px = self.next_px[px as usize];
+                px = self.sets.next_px[px as usize];
             }
             self.out_ranges.push((start, self.out_points.len()));
         }

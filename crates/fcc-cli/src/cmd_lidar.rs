@@ -833,10 +833,14 @@ pub(crate) fn write_json_lines(
     out: &mut impl std::io::Write,
     rows: &[ClusterRow],
 ) -> anyhow::Result<()> {
+    // One write for the batch: a line-buffered stdout would otherwise look
+    // for line ends in every piece the serializer hands it.
+    let mut buf = Vec::with_capacity(rows.len() * 640);
     for row in rows {
-        serde_json::to_writer(&mut *out, row)?;
-        out.write_all(b"\n")?;
+        serde_json::to_writer(&mut buf, row)?;
+        buf.push(b'\n');
     }
+    out.write_all(&buf)?;
     out.flush()?;
     Ok(())
 }

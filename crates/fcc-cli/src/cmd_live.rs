@@ -224,7 +224,10 @@ pub fn run_live(args: &LiveArgs) -> anyhow::Result<()> {
             let mut f = match event {
                 Event::Frame(f) => *f,
                 Event::Columns { frame, ready, at } => {
-                    if column_path {
+                    // Only the sweep origin keeps a frame that misses columns:
+                    // the sensor origin waits for the frame, which the decoder
+                    // drops when incomplete (as offline), before any record.
+                    if streamed {
                         let name = format!("{}_f{:05}", args.name, frame);
                         columns.columns(
                             &src,
@@ -250,6 +253,7 @@ pub fn run_live(args: &LiveArgs) -> anyhow::Result<()> {
             let (rows, points, labels) = if column_path {
                 let (rows, labels, image) = columns.frame(
                     &f,
+                    want_points,
                     &cfg,
                     &name,
                     &mut stdout.lock(),
@@ -355,9 +359,11 @@ pub fn run_live(args: &LiveArgs) -> anyhow::Result<()> {
 }
 
 /// The column path: the frame's columns through the stream, each record's
-/// JSON line written and flushed as it closes. An Ouster frame's columns go
-/// in as they become complete ([`Event::Columns`]), the rest when the frame
-/// ends; a Velodyne rotation's all at its end. Latencies: per record from
+/// JSON line written and flushed as it closes. With the sweep origin an
+/// Ouster frame's columns go in as they become complete ([`Event::Columns`]),
+/// the rest when the frame ends; with the sensor origin (whose frames that
+/// miss packets are dropped whole, as offline) and for a Velodyne rotation,
+/// all of them when the frame ends. Latencies: per record from
 /// the packet that completed its last column, per frame from the packet
 /// that completed the frame to its last record (frames delivered by the
 /// idle timeout left out).
@@ -431,8 +437,8 @@ impl ColumnPath {
         Ok(())
     }
 
-    /// Push the image's column `self.pushed`, completed at `at`, and write
-    /// the records it closed.
+    /// Push column `self.pushed`, whose pixels are `self.pixels`, completed
+    /// at `at`, and write the records it closed.
     fn push(
         &mut self,
         at: Instant,
@@ -440,13 +446,15 @@ impl ColumnPath {
         out: &mut impl std::io::Write,
         record_ms: &mut Vec<f64>,
     ) -> anyhow::Result<()> {
-        let (rows, cols, c) = (self.image.rows, self.image.cols, self.pushed);
+        let (cols, c) = (self.image.cols, self.pushed);
         self.column.clear();
-        self.column.extend((0..rows).map(|r| {
-            self.image.at(r, c).and_then(|p| {
+        for (r, p) in self.pixels.iter().enumerate() {
+            // The image keeps the points for the records' rows.
+            self.image.set(r * cols + c, *p);
+            self.column.push(p.and_then(|p| {
                 fcc_golden::quantize_point(f64::from(p[0]), f64::from(p[1]), f64::from(p[2]))
-            })
-        }));
+            }));
+        }
         let s = self.stream.as_mut().expect("made by begin");
         let n = s.push_column(&self.column)?.len();
         self.pushed += 1;
@@ -506,12 +514,8 @@ impl ColumnPath {
             self.begin(frame, (m.pixels_per_column, m.columns_per_frame), cfg, name)?;
         }
         while self.pushed < ready.min(self.image.cols) {
-            let (rows, cols) = (self.image.rows, self.image.cols);
-            self.pixels.resize(rows, None);
+            self.pixels.resize(self.image.rows, None);
             src.column_into(self.pushed, &mut self.pixels);
-            for (r, p) in self.pixels.iter().enumerate() {
-                self.image.set(r * cols + self.pushed, *p);
-            }
             self.push(at, name, out, record_ms)?;
             if self.finished {
                 frame_ms.push(at.elapsed().as_secs_f64() * 1e3);
@@ -522,10 +526,12 @@ impl ColumnPath {
 
     /// Frame `f` has ended: stream the columns not yet streamed (from its
     /// image), finish the frame if that is not done, and return its rows,
-    /// its label image and the image as streamed.
+    /// its label image (empty unless `labels`) and the image as streamed.
+    #[allow(clippy::too_many_arguments)]
     fn frame(
         &mut self,
         f: &LiveFrame,
+        labels: bool,
         cfg: &PipelineConfig,
         name: &str,
         out: &mut impl std::io::Write,
@@ -541,23 +547,25 @@ impl ColumnPath {
         let cols = f.image.cols;
         while self.pushed < cols {
             let c = self.pushed;
-            for r in 0..f.image.rows {
-                self.image.set(r * cols + c, f.image.at(r, c));
-            }
+            self.pixels.clear();
+            self.pixels
+                .extend((0..f.image.rows).map(|r| f.image.at(r, c)));
             let at = f.column_time(c).unwrap_or(f.received_at);
             self.push(at, name, out, record_ms)?;
         }
         if !was_finished && !f.at_end {
             frame_ms.push(f.received_at.elapsed().as_secs_f64() * 1e3);
         }
-        let mut labels = Vec::new();
-        self.stream
-            .as_mut()
-            .expect("made by begin")
-            .labels_into(&mut labels)?;
+        let mut image_labels = Vec::new();
+        if labels {
+            self.stream
+                .as_mut()
+                .expect("made by begin")
+                .labels_into(&mut image_labels)?;
+        }
         // Delivered: the next frame starts afresh, even with the same id.
         self.frame = None;
-        Ok((std::mem::take(&mut self.rows), labels, &self.image))
+        Ok((std::mem::take(&mut self.rows), image_labels, &self.image))
     }
 }
 

@@ -521,3 +521,81 @@ fn foxglove_serves_on_the_address_given() {
         .and_then(|p| p.trim().parse::<u16>().ok());
     assert!(port.is_some_and(|p| p != 0), "{err}");
 }
+
+#[test]
+fn a_lost_packet_on_the_column_path_drops_its_frame_before_any_record_as_offline() {
+    // The sensor origin's column path without --keep-incomplete: a frame
+    // that misses a packet writes no record at all (offline drops it whole),
+    // even though the columns before the loss became complete with the
+    // frame's last packet. Three rotations of a sample capture, the second
+    // missing one packet in its middle.
+    let d = lidar_data();
+    let (pcap, meta) = fcc_lidar::ouster::SAMPLE_CAPTURES[2];
+    let (capture, meta_path) = (d.join(pcap), d.join(meta));
+    let m = fcc_lidar::ouster::OusterMetadata::from_file(&meta_path).unwrap();
+    let mut packets = Vec::new();
+    let mut r = fcc_lidar::pcap::PcapReader::open(&capture).unwrap();
+    while let Some(d) = r.next_datagram().unwrap() {
+        if d.payload.len() == m.packet_size() {
+            packets.push(d);
+        }
+    }
+    let lost = packets.len() * 3 / 4;
+    let dir = fcc_testkit::tmpdir("live_lost_packet");
+    let damaged = dir.join("three_rotations.pcap");
+    let mut w = fcc_lidar::pcap::PcapWriter::create(&damaged).unwrap();
+    for pass in 0..3u16 {
+        for (k, d) in packets.iter().enumerate() {
+            if pass == 1 && k == lost {
+                continue;
+            }
+            let mut p = d.payload.clone();
+            assert!(fcc_lidar::ouster::bump_frame_id(&m, &mut p, pass));
+            w.write_udp(d.src_port, d.dst_port, &p, None).unwrap();
+        }
+    }
+    w.finish().unwrap();
+    let common = ["--meta", s(&meta_path), "--ground", "none", "--fsize", "7"];
+    let mut off_args = vec!["cluster", "-i", s(&damaged), "--stream"];
+    off_args.extend(common);
+    let off = fcc(&off_args);
+    assert!(off.status.success(), "{}", fcc_testkit::stderr(&off));
+    let whole = fcc(&[
+        "cluster",
+        "-i",
+        s(&capture),
+        "--meta",
+        s(&meta_path),
+        "--ground",
+        "none",
+        "--fsize",
+        "7",
+        "--stream",
+    ]);
+    let per_frame = String::from_utf8_lossy(&whole.stdout).lines().count();
+    assert!(per_frame > 0);
+    let mut live_args = vec!["--name", "three_rotations", "--idle-timeout", "1.5"];
+    live_args.extend(common);
+    let (live, err) = live_on_replay(&damaged, &live_args);
+    assert!(live.status.success(), "{err}");
+    let (a, b) = (
+        String::from_utf8_lossy(&off.stdout),
+        String::from_utf8_lossy(&live.stdout),
+    );
+    let (a, b): (Vec<&str>, Vec<&str>) = (a.lines().collect(), b.lines().collect());
+    // The whole rotations before and after the damaged one, nothing of it.
+    assert_eq!(
+        a.len(),
+        2 * per_frame,
+        "offline: {}",
+        fcc_testkit::stderr(&off)
+    );
+    assert_eq!(a.len(), b.len(), "records offline vs live\n{err}");
+    for (k, (x, y)) in a.iter().zip(&b).enumerate() {
+        assert_eq!(x, y, "record {k}");
+    }
+    assert!(
+        err.contains("1 incomplete frames dropped") && !err.contains("warning: frame"),
+        "{err}"
+    );
+}

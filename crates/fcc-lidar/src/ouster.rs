@@ -824,7 +824,9 @@ impl OusterDecoder {
             return;
         };
         for (u, p) in out.iter_mut().enumerate().take(self.meta.pixels_per_column) {
-            let v = (col + w - self.offsets[u]) % w;
+            // (col - offset) mod w, offset < w, without a division per pixel.
+            let v = col + w - self.offsets[u];
+            let v = if v >= w { v - w } else { v };
             *p = self.pixel(u, v, a.range_mm[u * w + v]);
         }
     }
