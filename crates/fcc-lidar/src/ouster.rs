@@ -996,11 +996,13 @@ impl OusterDecoder {
         let mut reflectivity = vec![f32::NAN; h * w];
         let mut returns = 0;
         for u in 0..h {
+            let off = self.offsets[u];
             for v in 0..w {
                 let Some(p) = self.pixel(u, v, a.range_mm[u * w + v]) else {
                     continue;
                 };
-                let col = (v + self.offsets[u]) % w;
+                // (v + offset) mod w, both below w, without a division.
+                let col = if v + off >= w { v + off - w } else { v + off };
                 image.set(u * w + col, Some(p));
                 reflectivity[u * w + col] = f32::from(a.reflectivity[u * w + v]);
                 returns += 1;
