@@ -108,6 +108,21 @@ fn live_on_replay(capture: &Path, args: &[&str]) -> (Output, String) {
     (out, err)
 }
 
+/// Live's stdout holds offline's JSON lines, line for line (the first
+/// difference names its record); the number of records.
+fn assert_same_records(what: &str, off: &Output, live: &Output, err: &str) -> usize {
+    let (a, b) = (
+        String::from_utf8_lossy(&off.stdout),
+        String::from_utf8_lossy(&live.stdout),
+    );
+    let (a, b): (Vec<&str>, Vec<&str>) = (a.lines().collect(), b.lines().collect());
+    assert_eq!(a.len(), b.len(), "{what}: records offline vs live\n{err}");
+    for (k, (x, y)) in a.iter().zip(&b).enumerate() {
+        assert_eq!(x, y, "{what}: record {k}");
+    }
+    a.len()
+}
+
 fn stem(p: &str) -> &str {
     p.rsplit_once('.').map_or(p, |(a, _)| a)
 }
@@ -182,19 +197,7 @@ fn live_equals_offline_with(
         live_args.extend(live_more);
         let (live, err) = live_on_replay(Path::new(capture), &live_args);
         assert!(live.status.success(), "{capture}: {err}");
-        let (a, b) = (
-            String::from_utf8_lossy(&off.stdout),
-            String::from_utf8_lossy(&live.stdout),
-        );
-        let (a, b): (Vec<&str>, Vec<&str>) = (a.lines().collect(), b.lines().collect());
-        assert_eq!(
-            a.len(),
-            b.len(),
-            "{capture}: records offline vs live\n{err}"
-        );
-        for (k, (x, y)) in a.iter().zip(&b).enumerate() {
-            assert_eq!(x, y, "{capture}: record {k}");
-        }
+        assert_same_records(capture, &off, &live, &err);
         if live_more.is_empty() && off_more.is_empty() {
             assert!(
                 err.contains("live: 1 frames")
@@ -578,22 +581,9 @@ fn a_lost_packet_on_the_column_path_drops_its_frame_before_any_record_as_offline
     live_args.extend(common);
     let (live, err) = live_on_replay(&damaged, &live_args);
     assert!(live.status.success(), "{err}");
-    let (a, b) = (
-        String::from_utf8_lossy(&off.stdout),
-        String::from_utf8_lossy(&live.stdout),
-    );
-    let (a, b): (Vec<&str>, Vec<&str>) = (a.lines().collect(), b.lines().collect());
+    let n = assert_same_records("three rotations", &off, &live, &err);
     // The whole rotations before and after the damaged one, nothing of it.
-    assert_eq!(
-        a.len(),
-        2 * per_frame,
-        "offline: {}",
-        fcc_testkit::stderr(&off)
-    );
-    assert_eq!(a.len(), b.len(), "records offline vs live\n{err}");
-    for (k, (x, y)) in a.iter().zip(&b).enumerate() {
-        assert_eq!(x, y, "record {k}");
-    }
+    assert_eq!(n, 2 * per_frame, "offline: {}", fcc_testkit::stderr(&off));
     assert!(
         err.contains("1 incomplete frames dropped") && !err.contains("warning: frame"),
         "{err}"
