@@ -120,8 +120,9 @@ def latency(err, what):
 def measure(fcc, capture, sensor, repeat, port, extra):
     live = [fcc, "live", "--udp", f"127.0.0.1:{port}", "--latency", "--idle-timeout", "1"]
     live += sensor + extra
-    err_path = tempfile.mktemp(suffix=".err")
-    with open(err_path, "w") as err, open(os.devnull, "w") as out:
+    with tempfile.NamedTemporaryFile("w", suffix=".err", delete=False) as err, \
+            open(os.devnull, "w") as out:
+        err_path = err.name
         p = subprocess.Popen(live, stdout=out, stderr=err)
     deadline = time.time() + 30
     while "listening" not in open(err_path).read():
@@ -164,7 +165,11 @@ def main():
     ap.add_argument("--repeat", type=int, default=20, help="passes of each capture (10 Hz)")
     ap.add_argument("--json", help="write the rows here as well")
     a = ap.parse_args()
-    tmp = tempfile.mkdtemp(prefix="fcc-live-bench-")
+    with tempfile.TemporaryDirectory(prefix="fcc-live-bench-") as tmp:
+        run_cases(a, tmp)
+
+
+def run_cases(a, tmp):
     cases = []
     for name, pcap, meta in OUSTER:
         frame = {"OS-1-32": "32 x 1024", "OS-1-64": "64 x 1024"}.get(name, "128 x 1024")

@@ -289,7 +289,7 @@ impl Stream {
             {
                 continue;
             }
-            let root = self.union(f.run, l.run);
+            let root = self.sets.union(f.run, l.run);
             self.sets.acc[root as usize].seam = true;
         }
         self.closing.clear();
@@ -387,11 +387,6 @@ impl Stream {
     #[inline]
     fn find(&mut self, x: u32) -> u32 {
         find(&mut self.sets.parent, x)
-    }
-
-    /// Unite the clusters of runs `a` and `b`; returns the root.
-    fn union(&mut self, a: u32, b: u32) -> u32 {
-        self.sets.union(a, b)
     }
 
     /// A new run starting at column-order pixel `key`, if a label is free.

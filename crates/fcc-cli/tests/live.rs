@@ -560,23 +560,14 @@ fn a_lost_packet_on_the_column_path_drops_its_frame_before_any_record_as_offline
         }
     }
     w.finish().unwrap();
-    let common = ["--meta", s(&meta_path), "--ground", "none", "--fsize", "7"];
+    let common = ["--meta", s(&meta_path), "--ground", "none"];
     let mut off_args = vec!["cluster", "-i", s(&damaged), "--stream"];
     off_args.extend(common);
     let off = fcc(&off_args);
     assert!(off.status.success(), "{}", fcc_testkit::stderr(&off));
-    let whole = fcc(&[
-        "cluster",
-        "-i",
-        s(&capture),
-        "--meta",
-        s(&meta_path),
-        "--ground",
-        "none",
-        "--fsize",
-        "7",
-        "--stream",
-    ]);
+    let mut whole_args = vec!["cluster", "-i", s(&capture), "--stream"];
+    whole_args.extend(common);
+    let whole = fcc(&whole_args);
     let per_frame = String::from_utf8_lossy(&whole.stdout).lines().count();
     assert!(per_frame > 0);
     let mut live_args = vec!["--name", "three_rotations", "--idle-timeout", "1.5"];
