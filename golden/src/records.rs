@@ -321,7 +321,7 @@ pub fn oriented_box(points: &[Point]) -> Option<OrientedBox> {
     let (zmin, zmax) = points.iter().fold((i16::MAX, i16::MIN), |(lo, hi), p| {
         (lo.min(p[2]), hi.max(p[2]))
     });
-    let hull = convex_hull(points.iter().map(|p| [i64::from(p[0]), i64::from(p[1])]));
+    let hull = monotone_chain(sorted_extremes(points));
     let first = *hull.first()?;
     let m = |v: f64| v / Q_ONE;
     let z = [m(f64::from(zmin)), m(f64::from(zmax))];
@@ -385,43 +385,43 @@ pub fn oriented_box(points: &[Point]) -> Option<OrientedBox> {
 
 /// Convex hull, counter-clockwise, without collinear points (Andrew's
 /// monotone chain; integer cross products are exact).
-/// Sort `p` and drop duplicates, keeping at least every point that can be a
-/// vertex of its convex hull: where the x span is small against the count
-/// (a cluster's Q7.8 points), only the lowest and highest y of each x, in
-/// order, without a sort; otherwise all, sorted. Either way the hull below
-/// is the same: a point between two others of its x is never a vertex.
-fn sorted_extremes(p: &mut Vec<[i64; 2]>) {
-    let (lo, hi) = p.iter().fold((i64::MAX, i64::MIN), |(lo, hi), q| {
+/// The bird's-eye points sorted and without duplicates, keeping at least
+/// every point that can be a vertex of their convex hull: where the x span
+/// is small against the count (a cluster's Q7.8 points), only the lowest and
+/// highest y of each x, in order, without a sort; otherwise all, sorted.
+/// Either way the hull below is the same: a point between two others of its
+/// x is never a vertex.
+fn sorted_extremes(points: &[Point]) -> Vec<[i64; 2]> {
+    let (lo, hi) = points.iter().fold((i16::MAX, i16::MIN), |(lo, hi), q| {
         (lo.min(q[0]), hi.max(q[0]))
     });
-    let span = hi.saturating_sub(lo).saturating_add(1);
-    if p.len() < 16 || span > 2 * p.len() as i64 {
+    let span = i64::from(hi) - i64::from(lo) + 1;
+    if points.len() < 16 || span > 2 * points.len() as i64 {
+        let mut p: Vec<[i64; 2]> = points
+            .iter()
+            .map(|q| [i64::from(q[0]), i64::from(q[1])])
+            .collect();
         p.sort_unstable();
         p.dedup();
-        return;
+        return p;
     }
-    let mut ys = vec![(i64::MAX, i64::MIN); span as usize];
-    for q in p.iter() {
-        let y = &mut ys[(q[0] - lo) as usize];
+    let mut ys = vec![(i16::MAX, i16::MIN); span as usize];
+    for q in points {
+        let y = &mut ys[(q[0] as i32 - lo as i32) as usize];
         *y = (y.0.min(q[1]), y.1.max(q[1]));
     }
-    p.clear();
+    let mut p = Vec::with_capacity(2 * ys.len());
     for (k, &(ymin, ymax)) in ys.iter().enumerate() {
         if ymin > ymax {
             continue;
         }
-        let x = lo + k as i64;
-        p.push([x, ymin]);
+        let x = i64::from(lo) + k as i64;
+        p.push([x, i64::from(ymin)]);
         if ymax != ymin {
-            p.push([x, ymax]);
+            p.push([x, i64::from(ymax)]);
         }
     }
-}
-
-fn convex_hull(points: impl Iterator<Item = [i64; 2]>) -> Vec<[i64; 2]> {
-    let mut p: Vec<[i64; 2]> = points.collect();
-    sorted_extremes(&mut p);
-    monotone_chain(p)
+    p
 }
 
 /// The convex hull of sorted, distinct points: its vertices counter-clockwise
@@ -471,14 +471,19 @@ mod tests {
         for case in 0..400 {
             let n = 1 + next(300) as usize;
             let (wx, wy) = (1 + next([4, 40, 400, 4000][case % 4]), 1 + next(500));
-            let pts: Vec<[i64; 2]> = (0..n)
-                .map(|_| [next(wx) - wx / 2, if case % 7 == 0 { 3 } else { next(wy) }])
+            let pts: Vec<Point> = (0..n)
+                .map(|_| {
+                    let y = if case % 7 == 0 { 3 } else { next(wy) };
+                    [(next(wx) - wx / 2) as i16, y as i16, 0]
+                })
                 .collect();
-            let mut all = pts.clone();
+            let mut all: Vec<[i64; 2]> = pts
+                .iter()
+                .map(|q| [i64::from(q[0]), i64::from(q[1])])
+                .collect();
             all.sort_unstable();
             all.dedup();
-            let mut ext = pts.clone();
-            sorted_extremes(&mut ext);
+            let ext = sorted_extremes(&pts);
             assert!(
                 ext.windows(2).all(|w| w[0] < w[1]),
                 "case {case}: not sorted"

@@ -174,6 +174,10 @@ pub fn cluster_rows(
 pub struct RowAcc {
     row: ClusterRow,
     sum: [f64; 3],
+    /// Lowest and highest squared distance from the sensor (the square
+    /// root is monotonic and correctly rounded, so the root of the extreme
+    /// is the extreme of the roots).
+    range_sq: [f32; 2],
 }
 
 impl RowAcc {
@@ -201,25 +205,38 @@ impl RowAcc {
                 ..ClusterRow::default()
             },
             sum: [0.0; 3],
+            range_sq: [f32::INFINITY, 0.0],
         }
     }
 
     /// Take in one (finite) point of the cluster.
+    #[inline]
     pub fn add(&mut self, p: [f32; 3]) {
+        // Plain comparisons: the points are finite, so no NaN rule is needed.
+        fn lower(m: &mut f32, v: f32) {
+            if v < *m {
+                *m = v;
+            }
+        }
+        fn raise(m: &mut f32, v: f32) {
+            if v > *m {
+                *m = v;
+            }
+        }
         let (row, sum) = (&mut self.row, &mut self.sum);
-        let r = (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]).sqrt();
+        let r2 = p[0] * p[0] + p[1] * p[1] + p[2] * p[2];
         row.points += 1;
         for k in 0..3 {
             sum[k] += f64::from(p[k]);
         }
-        row.min_x = row.min_x.min(p[0]);
-        row.min_y = row.min_y.min(p[1]);
-        row.min_z = row.min_z.min(p[2]);
-        row.max_x = row.max_x.max(p[0]);
-        row.max_y = row.max_y.max(p[1]);
-        row.max_z = row.max_z.max(p[2]);
-        row.range_min = row.range_min.min(r);
-        row.range_max = row.range_max.max(r);
+        lower(&mut row.min_x, p[0]);
+        lower(&mut row.min_y, p[1]);
+        lower(&mut row.min_z, p[2]);
+        raise(&mut row.max_x, p[0]);
+        raise(&mut row.max_y, p[1]);
+        raise(&mut row.max_z, p[2]);
+        lower(&mut self.range_sq[0], r2);
+        raise(&mut self.range_sq[1], r2);
     }
 
     /// The row, with its centroid.
@@ -229,6 +246,10 @@ impl RowAcc {
         row.centroid_x = sum[0] / n;
         row.centroid_y = sum[1] / n;
         row.centroid_z = sum[2] / n;
+        if row.points > 0 {
+            row.range_min = self.range_sq[0].sqrt();
+            row.range_max = self.range_sq[1].sqrt();
+        }
         row
     }
 }

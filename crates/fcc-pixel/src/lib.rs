@@ -37,15 +37,17 @@ pub const LABEL_SLOT_BYTES: usize = LABEL_SLOT_BITS as usize / 8;
 /// `sign(x) * floor(|x| * 256 + 0.5)`, or `None` when `x` is not finite or
 /// the result falls outside `[-32768, 32767]`.
 pub fn quantize(x: f64) -> Option<i16> {
-    if !x.is_finite() {
+    let abs = if x < 0.0 { -x } else { x };
+    // |x| * 256 + 0.5 is non-negative, so truncation is the floor. Below
+    // 32769 it fits an i32 exactly; at or above it (and for an infinite or
+    // NaN x, which fail the comparison) the point is out of range.
+    let t = abs * Q_ONE + 0.5;
+    if t.is_nan() || t >= 32769.0 {
         return None;
     }
-    let abs = if x < 0.0 { -x } else { x };
-    // |x| * 256 + 0.5 is non-negative, so truncation is the floor; the cast
-    // saturates, so huge values stay out of range.
-    let mag = (abs * Q_ONE + 0.5) as u64;
+    let mag = t as i32;
     if x < 0.0 {
-        (mag <= 32768).then(|| (-(mag as i32)) as i16)
+        (mag <= 32768).then(|| (-mag) as i16)
     } else {
         (mag <= 32767).then_some(mag as i16)
     }
@@ -83,6 +85,67 @@ mod tests {
     fn pixel_beat_layout_and_empty_pixel() {
         assert_eq!(pixel_beat(None), 0);
         assert_eq!(pixel_beat(Some([1, -1, -32768])), 0x0001_8000_ffff_0001);
+    }
+
+    #[test]
+    fn quantize_is_the_formula_at_every_edge() {
+        // sign(x) * floor(|x| * 256 + 0.5), in range or None, in f64 alone.
+        fn formula(x: f64) -> Option<i16> {
+            let abs = if x < 0.0 { -x } else { x };
+            let m = libm_floor(abs * Q_ONE + 0.5);
+            let v = if x < 0.0 { -m } else { m };
+            (x.is_finite() && (-32768.0..=32767.0).contains(&v)).then_some(v as i16)
+        }
+        // floor without std: values here are below 2^53 or not finite.
+        fn libm_floor(t: f64) -> f64 {
+            if t.is_finite() && t < 9.0e15 {
+                (t as u64) as f64
+            } else {
+                t
+            }
+        }
+        let xs = [
+            0.0,
+            -0.0,
+            1e-300,
+            -1e-300,
+            127.996,
+            127.998,
+            127.999,
+            128.0,
+            -128.0,
+            -128.001,
+            -128.002,
+            -128.0019,
+            1e19,
+            -1e19,
+            1e300,
+            -1e300,
+            f64::MAX,
+            f64::MIN,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NAN,
+        ];
+        for x in xs {
+            assert_eq!(quantize(x), formula(x), "x = {x:e}");
+        }
+        // Every half step near the ends and zero, and the values next to them.
+        for k in [
+            -65538i64, -65537, -65536, -65535, -3, -1, 1, 3, 65533, 65535, 65537,
+        ] {
+            let x = k as f64 / 512.0;
+            for (d, v) in [
+                x,
+                f64::from_bits(x.to_bits() + 1),
+                f64::from_bits(x.to_bits() - 1),
+            ]
+            .into_iter()
+            .enumerate()
+            {
+                assert_eq!(quantize(v), formula(v), "x = {v:e} (half step {k}, {d})");
+            }
+        }
     }
 
     #[test]
