@@ -75,6 +75,9 @@ struct Sets {
     tail: Vec<u32>,
     first_px: Vec<u32>,
     id: Vec<u32>,
+    /// Holds the first run of a row whose last pixel may join it at the
+    /// frame end (hold 3 of spec §9.2: fixed once the row's first pixel is).
+    ring_held: Vec<bool>,
     /// Per pixel (raster order): the next pixel of its cluster's list.
     next_px: Vec<u32>,
     /// Clusters open: runs labelled less unions of two clusters less
@@ -117,6 +120,7 @@ impl Sets {
         let moved = self.acc[o];
         self.acc[r].merge(&moved);
         self.labels_held[r] += self.labels_held[o];
+        self.ring_held[r] |= self.ring_held[o];
         self.first_px[r] = self.first_px[r].min(self.first_px[o]);
         self.next_px[self.tail[r] as usize] = self.head[o];
         self.tail[r] = self.tail[o];
@@ -207,6 +211,7 @@ impl Stream {
                 tail: Vec::new(),
                 first_px: Vec::new(),
                 id: Vec::new(),
+                ring_held: Vec::new(),
                 next_px: vec![NONE; n],
                 open_clusters: 0,
             },
@@ -375,6 +380,7 @@ impl Stream {
             v.clear();
         }
         self.sets.acc.clear();
+        self.sets.ring_held.clear();
         self.sets.open_clusters = 0;
         // The window's columns before column 0 are empty.
         self.win.fill(Win::EMPTY);
@@ -409,6 +415,7 @@ impl Stream {
         self.sets.first_px.push(key);
         self.held.push(0);
         self.sets.id.push(0);
+        self.sets.ring_held.push(false);
         self.open.push(run);
         run
     }
@@ -456,7 +463,8 @@ impl Stream {
                 run,
             };
             self.latest[i] = Some(seen);
-            if self.first[i].is_none() {
+            let row_first = self.first[i].is_none();
+            if row_first {
                 self.first[i] = Some(seen);
             }
             let k = i * cols + c;
@@ -467,6 +475,9 @@ impl Stream {
             }
             let mut root = self.find(run);
             let r = root as usize;
+            if row_first && self.params.ring_reaches(c, cols - 1) {
+                self.sets.ring_held[r] = true;
+            }
             self.sets.acc[r].add(i as u32, c as u32, p, half);
             self.pixel_point[k] = p;
             self.sets.next_px[k] = NONE;
@@ -484,36 +495,57 @@ impl Stream {
             // other pixels are skipped, and when the row's older columns
             // hold one run already in it, all of them are.
             let (lo, hi) = (i.saturating_sub(h), (i + h).min(rows - 1));
-            for rr in (lo..i).chain(i + 1..=hi) {
-                let base = rr * w;
-                let mut known = NONE;
-                if rr < i {
-                    let q = &mut self.win[base + slot];
-                    self.sets.visit(q, p, &th, &mut root, &mut known);
-                }
-                let o = &mut self.older[rr];
-                if o.run == NONE || o.run == known {
-                    continue;
-                }
-                if o.run != MIXED {
-                    if o.root != root && self.sets.parent[o.root as usize] != o.root {
-                        o.root = find(&mut self.sets.parent, o.root);
-                    }
-                    if o.root == root {
-                        continue;
-                    }
-                }
-                // Columns c - 1 down to c - h: slots `slot - 1` down to 0,
-                // then w - 1 down to `slot + 1`.
-                let (newer, older) = self.win[base..base + w].split_at_mut(slot);
-                for q in newer.iter_mut().rev() {
-                    self.sets.visit(q, p, &th, &mut root, &mut known);
-                }
-                for q in older[1..].iter_mut().rev() {
-                    self.sets.visit(q, p, &th, &mut root, &mut known);
-                }
+            for rr in lo..i {
+                self.window_row(rr, true, slot, p, &th, &mut root);
+            }
+            for rr in i + 1..=hi {
+                self.window_row(rr, false, slot, p, &th, &mut root);
             }
             self.win[i * w + slot] = Win { run, root, p };
+        }
+    }
+
+    /// The window pairs of a pixel at `p` (cluster `root`) with row `rr`'s
+    /// entries: its current column's (slot `slot`) when the row is `above`
+    /// the pixel, then its older columns' unless they hold no run or one
+    /// run already in the pixel's cluster.
+    #[inline(always)]
+    fn window_row(
+        &mut self,
+        rr: usize,
+        above: bool,
+        slot: usize,
+        p: Point,
+        th: &Thresholds,
+        root: &mut u32,
+    ) {
+        let w = self.params.half() + 1;
+        let base = rr * w;
+        let mut known = NONE;
+        if above {
+            let q = &mut self.win[base + slot];
+            self.sets.visit(q, p, th, root, &mut known);
+        }
+        let o = &mut self.older[rr];
+        if o.run == NONE || o.run == known {
+            return;
+        }
+        if o.run != MIXED {
+            if o.root != *root && self.sets.parent[o.root as usize] != o.root {
+                o.root = find(&mut self.sets.parent, o.root);
+            }
+            if o.root == *root {
+                return;
+            }
+        }
+        // Columns c - 1 down to c - h: slots `slot - 1` down to 0, then
+        // w - 1 down to `slot + 1`.
+        let (newer, older) = self.win[base..base + w].split_at_mut(slot);
+        for q in newer.iter_mut().rev() {
+            self.sets.visit(q, p, th, root, &mut known);
+        }
+        for q in older[1..].iter_mut().rev() {
+            self.sets.visit(q, p, th, root, &mut known);
         }
     }
 
@@ -525,14 +557,8 @@ impl Stream {
         let last = c + 1 == cols;
         let stamp = c as u32 + 1;
         for i in 0..self.params.rows {
+            // Hold 3 is the sets' `ring_held`.
             let first = self.first[i].filter(|f| f.run != NONE);
-            if let Some(f) = first {
-                // Hold 3: the row's last pixel may still join its first run.
-                if self.params.ring_reaches(f.col as usize, cols - 1) {
-                    let r = self.find(f.run);
-                    self.held[r as usize] = stamp;
-                }
-            }
             let Some(l) = self.latest[i].filter(|l| l.run != NONE) else {
                 continue;
             };
@@ -556,7 +582,7 @@ impl Stream {
             }
             // Hold 1: a pixel within h columns of the next column.
             let window = !last && self.sets.acc[x].max_col as usize + h > c;
-            if window || self.held[x] == stamp {
+            if window || self.held[x] == stamp || self.sets.ring_held[x] {
                 k += 1;
                 continue;
             }
