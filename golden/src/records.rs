@@ -159,7 +159,6 @@ impl Acc {
     /// Add the pixel at (`row`, `col`) with point `p`; `half` is `C/2`.
     #[inline]
     pub fn add(&mut self, row: u32, col: u32, p: Point, half: u32) {
-        self.points += 1;
         self.min_col = self.min_col.min(col);
         self.max_col = self.max_col.max(col);
         if col < half {
@@ -167,6 +166,32 @@ impl Acc {
         } else {
             self.hi_min = min_some(self.hi_min, Some(col));
         }
+        self.add_row_point(row, p);
+    }
+
+    /// [`add`](Self::add) for a pixel whose column is no earlier than any
+    /// the record holds (the stream's column order): its column is the
+    /// largest, so only a first one sets the smallest.
+    #[inline]
+    pub fn add_in_scan(&mut self, row: u32, col: u32, p: Point, half: u32) {
+        debug_assert!(self.points == 0 || col >= self.max_col);
+        if self.points == 0 {
+            self.min_col = col;
+        }
+        self.max_col = col;
+        if col < half {
+            self.lo_max = Some(col);
+        } else if self.hi_min.is_none() {
+            self.hi_min = Some(col);
+        }
+        self.add_row_point(row, p);
+    }
+
+    /// The row and point of a pixel: everything of [`add`](Self::add) but
+    /// the columns.
+    #[inline]
+    fn add_row_point(&mut self, row: u32, p: Point) {
+        self.points += 1;
         self.first_row = self.first_row.min(row);
         self.last_row = self.last_row.max(row);
         // Whole arrays at once: element-wise stores of the adjacent `min`

@@ -478,7 +478,7 @@ impl Stream {
             if row_first && self.params.ring_reaches(c, cols - 1) {
                 self.sets.ring_held[r] = true;
             }
-            self.sets.acc[r].add(i as u32, c as u32, p, half);
+            self.sets.acc[r].add_in_scan(i as u32, c as u32, p, half);
             self.pixel_point[k] = p;
             self.sets.next_px[k] = NONE;
             if self.sets.head[r] == NONE {
