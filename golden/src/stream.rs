@@ -428,15 +428,13 @@ impl Stream {
         let th = Thresholds::new(&self.params);
         let half = (cols / 2) as u32;
         let slot = c % w;
-        for rr in 0..rows {
-            self.win[rr * w + slot].run = NONE;
-            // The one run of the row's columns c - h .. c - 1, if they hold
-            // one: from the newest entry back.
-            let mut o = Win::EMPTY;
-            for dc in 1..w {
-                // Column c - dc's slot, (c - dc) mod w.
-                let s = if dc <= slot { slot - dc } else { slot + w - dc };
-                let q = self.win[rr * w + s];
+        for (row, o) in self.win.chunks_exact_mut(w).zip(&mut self.older) {
+            // Column c's slot is emptied for the column's pixels; the rest
+            // are the row's columns c - h .. c - 1. Their one run, if they
+            // hold one (any of its entries: each keeps a node of its set).
+            row[slot].run = NONE;
+            *o = Win::EMPTY;
+            for q in row.iter() {
                 if q.run == NONE || q.run == o.run {
                     continue;
                 }
@@ -444,9 +442,8 @@ impl Stream {
                     o.run = MIXED;
                     break;
                 }
-                o = q;
+                *o = *q;
             }
-            self.older[rr] = o;
         }
         for (i, p) in column.iter().enumerate() {
             let Some(p) = *p else { continue };
@@ -494,35 +491,34 @@ impl Stream {
             // run: once a run is known to be in this pixel's cluster, its
             // other pixels are skipped, and when the row's older columns
             // hold one run already in it, all of them are.
-            let (lo, hi) = (i.saturating_sub(h), (i + h).min(rows - 1));
+            let (lo, end) = (i.saturating_sub(h), (i + h + 1).min(rows));
             for rr in lo..i {
-                self.window_row(rr, true, slot, p, &th, &mut root);
+                self.window_row::<true>(rr, w, slot, p, &th, &mut root);
             }
-            for rr in i + 1..=hi {
-                self.window_row(rr, false, slot, p, &th, &mut root);
+            for rr in i + 1..end {
+                self.window_row::<false>(rr, w, slot, p, &th, &mut root);
             }
             self.win[i * w + slot] = Win { run, root, p };
         }
     }
 
     /// The window pairs of a pixel at `p` (cluster `root`) with row `rr`'s
-    /// entries: its current column's (slot `slot`) when the row is `above`
-    /// the pixel, then its older columns' unless they hold no run or one
+    /// `w` entries: its current column's (slot `slot`) when the row is
+    /// `ABOVE` the pixel, then its older columns' unless they hold no run or one
     /// run already in the pixel's cluster.
     #[inline(always)]
-    fn window_row(
+    fn window_row<const ABOVE: bool>(
         &mut self,
         rr: usize,
-        above: bool,
+        w: usize,
         slot: usize,
         p: Point,
         th: &Thresholds,
         root: &mut u32,
     ) {
-        let w = self.params.half() + 1;
         let base = rr * w;
         let mut known = NONE;
-        if above {
+        if ABOVE {
             let q = &mut self.win[base + slot];
             self.sets.visit(q, p, th, root, &mut known);
         }
