@@ -9,7 +9,7 @@
 
 use crate::frame::Point;
 use crate::records::{Acc, Record};
-use crate::threshold::Thresholds;
+use crate::threshold::{JoinsWith, Thresholds};
 use crate::GoldenError;
 use fcc_params::FccParams;
 use serde::Serialize;
@@ -86,11 +86,11 @@ struct Sets {
 }
 
 impl Sets {
-    /// Pass 2 for one window entry `q` of a pixel at `p` in the cluster of
-    /// `root`: unite the two when they join (spec §4); `known` is a run of
+    /// Pass 2 for one window entry `q` of a pixel (`p`, its pairs' test)
+    /// in the cluster of `root`: unite the two when they join (spec §4); `known` is a run of
     /// the entry's row already in the pixel's cluster (its entries skipped).
     #[inline(always)]
-    fn visit(&mut self, q: &mut Win, p: Point, th: &Thresholds, root: &mut u32, known: &mut u32) {
+    fn visit(&mut self, q: &mut Win, p: &JoinsWith, root: &mut u32, known: &mut u32) {
         if q.run == *known || q.run == NONE {
             return;
         }
@@ -99,7 +99,7 @@ impl Sets {
         }
         if q.root == *root {
             *known = q.run;
-        } else if th.joins(p, q.p) {
+        } else if p.joins(q.p) {
             *root = self.union(*root, q.root);
             *known = q.run;
         }
@@ -492,11 +492,12 @@ impl Stream {
             // other pixels are skipped, and when the row's older columns
             // hold one run already in it, all of them are.
             let (lo, end) = (i.saturating_sub(h), (i + h + 1).min(rows));
+            let pj = th.joins_with(p);
             for rr in lo..i {
-                self.window_row::<true>(rr, w, slot, p, &th, &mut root);
+                self.window_row::<true>(rr, w, slot, &pj, &mut root);
             }
             for rr in i + 1..end {
-                self.window_row::<false>(rr, w, slot, p, &th, &mut root);
+                self.window_row::<false>(rr, w, slot, &pj, &mut root);
             }
             self.win[i * w + slot] = Win { run, root, p };
         }
@@ -512,15 +513,14 @@ impl Stream {
         rr: usize,
         w: usize,
         slot: usize,
-        p: Point,
-        th: &Thresholds,
+        p: &JoinsWith,
         root: &mut u32,
     ) {
         let base = rr * w;
         let mut known = NONE;
         if ABOVE {
             let q = &mut self.win[base + slot];
-            self.sets.visit(q, p, th, root, &mut known);
+            self.sets.visit(q, p, root, &mut known);
         }
         let o = &mut self.older[rr];
         if o.run == NONE || o.run == known {
@@ -538,10 +538,10 @@ impl Stream {
         // w - 1 down to `slot + 1`.
         let (newer, older) = self.win[base..base + w].split_at_mut(slot);
         for q in newer.iter_mut().rev() {
-            self.sets.visit(q, p, th, root, &mut known);
+            self.sets.visit(q, p, root, &mut known);
         }
         for q in older[1..].iter_mut().rev() {
-            self.sets.visit(q, p, th, root, &mut known);
+            self.sets.visit(q, p, root, &mut known);
         }
     }
 

@@ -90,3 +90,83 @@ impl Thresholds {
         d < self.v_of(p).min(self.v_of(q))
     }
 }
+
+/// Pass 2's test for the pairs of one point `p` (the later pixel of a
+/// stream's window pairs), its own threshold worked out once.
+#[derive(Debug, Clone, Copy)]
+pub struct JoinsWith {
+    p: Point,
+    th: Thresholds,
+    /// `T_V(p)` floored at `tV^2` (`tV^2` alone for fixed thresholds).
+    p_v: i64,
+}
+
+impl JoinsWith {
+    /// The point the pairs share.
+    #[inline]
+    pub fn point(&self) -> Point {
+        self.p
+    }
+
+    /// Whether `p` and `q` join: [`Thresholds::joins`].
+    #[inline]
+    pub fn joins(&self, q: Point) -> bool {
+        let d = dist2(self.p, q);
+        if self.th.v_slope_sq == 0 {
+            return d < self.p_v;
+        }
+        d < self.p_v.min(self.th.v_of(q))
+    }
+}
+
+impl Thresholds {
+    /// Pass 2's test for the pairs of `p`.
+    #[inline]
+    pub fn joins_with(&self, p: Point) -> JoinsWith {
+        let p_v = if self.v_slope_sq == 0 {
+            self.v_sq
+        } else {
+            self.v_of(p)
+        };
+        JoinsWith { p, th: *self, p_v }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn joins_with_is_joins_for_fixed_and_adaptive_thresholds() {
+        let mut seed = 0x853c_49e6_748f_ea9bu64;
+        let mut next = |m: u64| {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            seed % m
+        };
+        for (slope, th_v) in [(0.0, 0.5), (0.02, 0.3), (0.2, 0.1), (0.9, 0.0)] {
+            let params = FccParams {
+                th_v_slope: slope,
+                th_v,
+                ..FccParams::default()
+            };
+            let th = Thresholds::new(&params);
+            for case in 0..20_000 {
+                // Near pairs (within a few thresholds) and far ones, anywhere
+                // in the Q7.8 range.
+                let p = [0; 3].map(|_: i16| (next(65_536) as i64 - 32_768) as i16);
+                let spread = [64, 512, 65_536][case % 3];
+                let q = p.map(|v| {
+                    (i64::from(v) + next(2 * spread) as i64 - spread as i64).clamp(-32_768, 32_767)
+                        as i16
+                });
+                assert_eq!(
+                    th.joins_with(p).joins(q),
+                    th.joins(p, q),
+                    "slope {slope}, tV {th_v}: {p:?} {q:?}"
+                );
+            }
+        }
+    }
+}
