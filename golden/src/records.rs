@@ -449,33 +449,32 @@ fn sorted_extremes(points: &[Point]) -> Vec<[i64; 2]> {
     p
 }
 
+/// One chain of the monotone chain: the turns of `points` that stay strictly
+/// counter-clockwise, appended to `hull`, without its last point (the next
+/// chain's first).
+fn chain<'a>(hull: &mut Vec<[i64; 2]>, points: impl Iterator<Item = &'a [i64; 2]>) {
+    let cross = |o: [i64; 2], a: [i64; 2], b: [i64; 2]| {
+        (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+    };
+    let start = hull.len();
+    for &q in points {
+        while hull.len() >= start + 2 && cross(hull[hull.len() - 2], hull[hull.len() - 1], q) <= 0 {
+            hull.pop();
+        }
+        hull.push(q);
+    }
+    hull.pop();
+}
+
 /// The convex hull of sorted, distinct points: its vertices counter-clockwise
 /// from the smallest, collinear points dropped.
 fn monotone_chain(p: Vec<[i64; 2]>) -> Vec<[i64; 2]> {
     if p.len() <= 2 {
         return p;
     }
-    let cross = |o: [i64; 2], a: [i64; 2], b: [i64; 2]| {
-        (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
-    };
     let mut hull: Vec<[i64; 2]> = Vec::with_capacity(2 * p.len());
-    for pass in 0..2 {
-        let start = hull.len();
-        let iter: Box<dyn Iterator<Item = &[i64; 2]>> = if pass == 0 {
-            Box::new(p.iter())
-        } else {
-            Box::new(p.iter().rev())
-        };
-        for &q in iter {
-            while hull.len() >= start + 2
-                && cross(hull[hull.len() - 2], hull[hull.len() - 1], q) <= 0
-            {
-                hull.pop();
-            }
-            hull.push(q);
-        }
-        hull.pop();
-    }
+    chain(&mut hull, p.iter());
+    chain(&mut hull, p.iter().rev());
     hull
 }
 
