@@ -1,6 +1,7 @@
 //! The stream (spec §9) against frame mode: the same partition, records equal
-//! to a direct computation, none closed before its last join, in closing
-//! order; the bridge and ring-reach limits against the pixel-level reference.
+//! to a direct computation, each closed at the column the closing rule of
+//! spec §9.2 gives on the finished partition, in closing order; the bridge
+//! and ring-reach limits against the pixel-level reference.
 
 use fcc_golden::{
     cluster, frame_records, reference::reference_labels, Frame, GoldenError, MergeMode, Point,
@@ -32,6 +33,68 @@ fn stream_frame(s: &mut Stream, f: &Frame) -> (Vec<Record>, Vec<u32>) {
 
 /// The first pixel (raster order) where two label images are not the same
 /// partition, as a message; `None` when they are.
+/// The closing column of every cluster (index: id - 1) by spec §9.2 read
+/// directly, from the finished frame's label image (0: empty or
+/// unlabelled) rather than the stream's state: after column `c` a cluster
+/// that has pixels so far is held by (1) a pixel in columns `c + 1 - h ..=
+/// c`, (2) a row's latest valid pixel at a column `j` the bridge reaches
+/// from `c`, (3) a row's first valid pixel within the ring reach of the
+/// last column, (4) a row's latest valid pixel at `j` with the row's first,
+/// labelled, within the ring reach of `j`; holds 1 and 2 end with the last
+/// column. An unheld cluster closes at `c`; the rest at the frame end, `C`.
+/// (A cluster is one component whenever nothing holds it: the stream's
+/// partition equals frame mode's, checked apart.)
+fn closing_columns(p: &FccParams, f: &Frame, labels: &[u32], n: usize) -> Vec<u32> {
+    let (rows, cols, h) = (f.rows, f.cols, p.half());
+    let mut closed = vec![None; n];
+    let mut last_col = vec![None; n];
+    // Per row: the first and latest valid pixel so far (column, label).
+    let mut first: Vec<Option<(usize, u32)>> = vec![None; rows];
+    let mut latest: Vec<Option<(usize, u32)>> = vec![None; rows];
+    let mut held = vec![false; n];
+    for c in 0..cols {
+        for i in 0..rows {
+            if f.get(i, c).is_some() {
+                let l = labels[i * cols + c];
+                latest[i] = Some((c, l));
+                first[i].get_or_insert((c, l));
+                if l != 0 {
+                    last_col[l as usize - 1] = Some(c);
+                }
+            }
+        }
+        let more = c + 1 < cols;
+        held.fill(false);
+        for x in 0..n {
+            held[x] = more && last_col[x].is_some_and(|j| j + h > c);
+        }
+        for i in 0..rows {
+            let labelled_first = first[i].filter(|&(_, l)| l != 0);
+            if let Some((fc, l)) = labelled_first {
+                if p.ring_reaches(fc, cols - 1) {
+                    held[l as usize - 1] = true;
+                }
+            }
+            if let Some((j, l)) = latest[i].filter(|&(_, l)| l != 0) {
+                let bridge = more && p.bridges(c - j);
+                let ring = labelled_first.is_some_and(|(fc, _)| p.ring_reaches(fc, j));
+                if bridge || ring {
+                    held[l as usize - 1] = true;
+                }
+            }
+        }
+        for x in 0..n {
+            if closed[x].is_none() && last_col[x].is_some() && !held[x] {
+                closed[x] = Some(c as u32);
+            }
+        }
+    }
+    closed
+        .into_iter()
+        .map(|c| c.unwrap_or(cols as u32))
+        .collect()
+}
+
 fn partition_mismatch(want: &[u32], got: &[u32], cols: usize) -> Option<String> {
     use std::collections::HashMap;
     let (mut fwd, mut back) = (HashMap::new(), HashMap::new());
@@ -114,6 +177,22 @@ fn check_stream(p: &FccParams, f: &Frame, what: &str) {
             .find(|&(c, i)| labels[i * f.cols + c] == id)
             .unwrap()
     };
+    // Each closes where spec §9.2 says, read on the finished partition.
+    let closing = closing_columns(p, f, &labels, records.len());
+    for r in &records {
+        let want = closing[r.id as usize - 1];
+        assert_eq!(
+            r.closed_col,
+            want,
+            "{what}: record {} (columns {} ..= {}, rows {} ..= {}) closed at column {}, the closing rule gives {want}",
+            r.id,
+            r.first_col,
+            r.last_col,
+            r.first_row,
+            r.last_row,
+            r.closed_col
+        );
+    }
     for w in records.windows(2) {
         assert!(w[0].closed_col <= w[1].closed_col, "{what}: order");
         if w[0].closed_col == w[1].closed_col {
