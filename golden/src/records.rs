@@ -481,17 +481,15 @@ fn monotone_chain(p: Vec<[i64; 2]>) -> Vec<[i64; 2]> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use rand::{Rng, SeedableRng};
+    use rand_chacha::ChaCha8Rng;
 
     #[test]
     fn hull_of_the_extremes_is_the_hull_of_all_points() {
         // Dense and sparse x spans, vertical runs, duplicates, lines.
-        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
-        let mut next = |m: i64| {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed % m as u64) as i64
-        };
+        let seed = 0x9e37_79b9_7f4a_7c15;
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        let mut next = |m: i64| rng.gen_range(0..m);
         for case in 0..400 {
             let n = 1 + next(300) as usize;
             let (wx, wy) = (1 + next([4, 40, 400, 4000][case % 4]), 1 + next(500));
@@ -510,12 +508,12 @@ mod tests {
             let ext = sorted_extremes(&pts);
             assert!(
                 ext.windows(2).all(|w| w[0] < w[1]),
-                "case {case}: not sorted"
+                "case {case}: not sorted, seed {seed:#x}"
             );
             assert_eq!(
                 monotone_chain(ext),
                 monotone_chain(all),
-                "case {case}: {n} points"
+                "case {case}: {n} points, seed {seed:#x}"
             );
         }
     }

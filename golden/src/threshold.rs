@@ -135,16 +135,13 @@ impl Thresholds {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use rand::{Rng, SeedableRng};
+    use rand_chacha::ChaCha8Rng;
 
     #[test]
     fn joins_with_is_joins_for_fixed_and_adaptive_thresholds() {
-        let mut seed = 0x853c_49e6_748f_ea9bu64;
-        let mut next = |m: u64| {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            seed % m
-        };
+        let seed = 0x853c_49e6_748f_ea9b;
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
         for (slope, th_v) in [(0.0, 0.5), (0.02, 0.3), (0.2, 0.1), (0.9, 0.0)] {
             let params = FccParams {
                 th_v_slope: slope,
@@ -155,16 +152,15 @@ mod tests {
             for case in 0..20_000 {
                 // Near pairs (within a few thresholds) and far ones, anywhere
                 // in the Q7.8 range.
-                let p = [0; 3].map(|_: i16| (next(65_536) as i64 - 32_768) as i16);
+                let p: Point = [0; 3].map(|_: i16| rng.gen());
                 let spread = [64, 512, 65_536][case % 3];
                 let q = p.map(|v| {
-                    (i64::from(v) + next(2 * spread) as i64 - spread as i64).clamp(-32_768, 32_767)
-                        as i16
+                    (i64::from(v) + rng.gen_range(-spread..spread)).clamp(-32_768, 32_767) as i16
                 });
                 assert_eq!(
                     th.joins_with(p).joins(q),
                     th.joins(p, q),
-                    "slope {slope}, tV {th_v}: {p:?} {q:?}"
+                    "slope {slope}, tV {th_v}: {p:?} {q:?}, seed {seed:#x}"
                 );
             }
         }
