@@ -408,8 +408,6 @@ pub fn oriented_box(points: &[Point]) -> Option<OrientedBox> {
     })
 }
 
-/// Convex hull, counter-clockwise, without collinear points (Andrew's
-/// monotone chain; integer cross products are exact).
 /// The bird's-eye points sorted and without duplicates, keeping at least
 /// every point that can be a vertex of their convex hull: where the x span
 /// is small against the count (a cluster's Q7.8 points), only the lowest and
@@ -466,8 +464,9 @@ fn chain<'a>(hull: &mut Vec<[i64; 2]>, points: impl Iterator<Item = &'a [i64; 2]
     hull.pop();
 }
 
-/// The convex hull of sorted, distinct points: its vertices counter-clockwise
-/// from the smallest, collinear points dropped.
+/// The convex hull of sorted, distinct points (Andrew's monotone chain;
+/// integer cross products are exact): its vertices counter-clockwise from
+/// the smallest, collinear points dropped.
 fn monotone_chain(p: Vec<[i64; 2]>) -> Vec<[i64; 2]> {
     if p.len() <= 2 {
         return p;

@@ -83,11 +83,7 @@ impl Thresholds {
     /// Pass 2: `d2 < max(tV^2, min(T_V(p), T_V(q)))`.
     #[inline]
     pub fn joins(&self, p: Point, q: Point) -> bool {
-        let d = dist2(p, q);
-        if self.v_slope_sq == 0 {
-            return d < self.v_sq;
-        }
-        d < self.v_of(p).min(self.v_of(q))
+        self.joins_with(p).joins(q)
     }
 }
 
@@ -102,12 +98,6 @@ pub struct JoinsWith {
 }
 
 impl JoinsWith {
-    /// The point the pairs share.
-    #[inline]
-    pub fn point(&self) -> Point {
-        self.p
-    }
-
     /// Whether `p` and `q` join: [`Thresholds::joins`].
     #[inline]
     pub fn joins(&self, q: Point) -> bool {
@@ -139,7 +129,7 @@ mod tests {
     use rand_chacha::ChaCha8Rng;
 
     #[test]
-    fn joins_with_is_joins_for_fixed_and_adaptive_thresholds() {
+    fn joins_with_is_spec_pass_2_for_fixed_and_adaptive_thresholds() {
         let seed = 0x853c_49e6_748f_ea9b;
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
         for (slope, th_v) in [(0.0, 0.5), (0.02, 0.3), (0.2, 0.1), (0.9, 0.0)] {
@@ -157,9 +147,12 @@ mod tests {
                 let q = p.map(|v| {
                     (i64::from(v) + rng.gen_range(-spread..spread)).clamp(-32_768, 32_767) as i16
                 });
+                // Spec §2 and §4: d2 < max(tV^2, min(T_V(p), T_V(q))).
+                let t = |x: Point| point_threshold(params.th_v_slope_sq(), x);
+                let spec = dist2(p, q) < params.th_v_sq().max(t(p).min(t(q)));
                 assert_eq!(
                     th.joins_with(p).joins(q),
-                    th.joins(p, q),
+                    spec,
                     "slope {slope}, tV {th_v}: {p:?} {q:?}, seed {seed:#x}"
                 );
             }

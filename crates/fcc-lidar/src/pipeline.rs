@@ -155,9 +155,11 @@ fn raster_order(pixels: &[u32], cols: u32, out: &mut Vec<u32>, ends: &mut Vec<u3
         out.sort_unstable();
         return;
     }
-    let (lo, hi) = pixels.iter().fold((u32::MAX, 0), |(lo, hi), &p| {
-        (lo.min(p / cols), hi.max(p / cols))
-    });
+    // A pixel's row grows with its index.
+    let (lo, hi) = pixels
+        .iter()
+        .fold((u32::MAX, 0), |(lo, hi), &p| (lo.min(p), hi.max(p)));
+    let (lo, hi) = (lo / cols, hi / cols);
     ends.clear();
     ends.resize((hi - lo + 2) as usize, 0);
     for &p in pixels {
