@@ -363,6 +363,26 @@ impl Stream {
         Ok(())
     }
 
+    /// The runs of pass 1 (spec §3) in the finished frame, raster order:
+    /// each labelled pixel's run numbered 1, 2, ... in the order the runs
+    /// started (column order, the order their labels were taken), 0 for
+    /// empty and unlabelled pixels. Valid until the next push.
+    pub fn runs_into(&self, out: &mut Vec<u32>) -> Result<(), GoldenError> {
+        if !self.finished {
+            return Err(GoldenError::Unfinished {
+                cols: self.params.cols,
+                got: self.col,
+            });
+        }
+        out.clear();
+        out.extend(
+            self.pixel_run
+                .iter()
+                .map(|&r| if r == NONE { 0 } else { r + 1 }),
+        );
+        Ok(())
+    }
+
     fn start_frame(&mut self) {
         self.finished = false;
         self.col = 0;

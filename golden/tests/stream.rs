@@ -162,6 +162,28 @@ fn check_stream(p: &FccParams, f: &Frame, what: &str) {
         stats.peak_open <= stats.peak_labels && (stats.peak_open > 0) == (stats.runs > 0),
         "{what}: {stats:?}"
     );
+    // The stream's runs are pass 1's (spec §3) whenever labels run out in
+    // neither, numbered 1, 2, ... in the order their first pixels arrive.
+    let mut runs = Vec::new();
+    s.runs_into(&mut runs).unwrap();
+    let framed_runs = fcc_golden::pass1(p, f);
+    if !stats.overflow && !framed_runs.overflow {
+        if let Some(m) = partition_mismatch(&framed_runs.labels, &runs, f.cols) {
+            panic!("{what}: runs differ from pass 1's: {m}");
+        }
+    }
+    let mut next = 1;
+    for c in 0..f.cols {
+        for i in 0..f.rows {
+            let r = runs[i * f.cols + c];
+            assert!(
+                r <= next,
+                "{what}: run {r} at row {i}, col {c} starts before run {next}"
+            );
+            next += (r == next) as u32;
+        }
+    }
+    assert_eq!(next - 1, stats.runs, "{what}: runs numbered");
     let framed = cluster(p, f, MergeMode::Exact).unwrap();
     // Ids 1..=n in emission order, closing columns non-decreasing, and ties
     // in column order of the first pixel.
