@@ -38,6 +38,9 @@ pub enum BenchBlock {
     /// A 16-bit lane of `FccWordWindow` (the representative and threshold
     /// windows' shape) behind the scalar ports of `FccWordWindowProbe`.
     WordWindow,
+    /// The column core's per-row run state `FccRowRuns` behind the scalar
+    /// ports of `FccRowRunsProbe`.
+    RowRuns,
 }
 
 /// One row of the table: the module's name before the configuration
@@ -65,7 +68,7 @@ impl Row {
 
 impl BenchBlock {
     /// Every block with a bench.
-    pub const ALL: [BenchBlock; 12] = [
+    pub const ALL: [BenchBlock; 13] = [
         BenchBlock::Regs,
         BenchBlock::AxilAdapter,
         BenchBlock::MergeTable,
@@ -78,6 +81,7 @@ impl BenchBlock {
         BenchBlock::FramePhase,
         BenchBlock::FiltCentre,
         BenchBlock::WordWindow,
+        BenchBlock::RowRuns,
     ];
 
     fn row(self) -> Row {
@@ -154,6 +158,13 @@ impl BenchBlock {
                 },
                 waivers: lint::word_window_waivers,
             },
+            BenchBlock::RowRuns => Row::plain("fcc_row_runs", |p| {
+                gen(
+                    p,
+                    crate::column::fcc_row_runs_probe::FccRowRunsProbe::new(p),
+                    "fcc_row_runs",
+                )
+            }),
         }
     }
 

@@ -80,6 +80,7 @@
 //! for `_k`, `dd` for `_dp`, `l` for `_l`).
 
 pub mod bench_blocks;
+mod column;
 pub mod example;
 mod fcc_any_or;
 mod fcc_axil_adapter;
@@ -165,6 +166,7 @@ use rust_hdl::prelude::*;
 use thiserror::Error;
 
 pub use bench_blocks::BenchBlock;
+pub use column::RunLimits;
 pub use fcc_fanout_reg::MAX_FANOUT;
 pub use fcc_join_queue::JQ_HIGH_LEVEL;
 pub use fcc_regs::FccRegs;

@@ -1,0 +1,204 @@
+//! `FccRowRuns`: pass 1 of the column core (spec §3 in column order), with
+//! the per-row state the closing rule needs (spec §9.2).
+//!
+//! In column order the consecutive valid pixels of a row arrive `R` pixel
+//! slots apart, so each row keeps its latest and first valid pixel in a
+//! table of `R` entries: points and thresholds in one RAM, written as soon
+//! as the entry is read; labels in another, written when the label is
+//! decided. Every slot of the frame visits its row (empty pixels too), so
+//! a row's next read comes `R` slots (at least `HW_ROWS` minimum) after its
+//! last write: no forwarding.
+//!
+//! Pipeline (no enable: bubbles travel as slots with `valid` low):
+//! * N0: the pixel reads its row's entry (`FccRam`, two cycles).
+//! * N2: its key and addend arrive (`FccPixThr`, `THR_LAG` behind the
+//!   slot); `FccRowEntry` writes the new points back and starts the pass-1
+//!   test and the ring check (`FccSqDist`, seven cycles).
+//! * N9: `FccRunDecide` decides the label, pops the free list (`take`,
+//!   combinational from `free_ok` and `free_label`) and writes the labels
+//!   back; `out` is registered, ten cycles after `pix`.
+
+use fcc_params::limits;
+use rust_hdl::prelude::*;
+
+use super::fcc_row_entry::FccRowEntry;
+use super::fcc_run_decide::FccRunDecide;
+use super::{ColPix, RowLabs, RowPts, RunCtl, RunPix};
+use crate::fcc_pix_thr::THR_LAG;
+use crate::fcc_ram::FccRam;
+use crate::fcc_sq_dist::{FccSqDist, SQ_LATENCY};
+use crate::types::vec_of;
+
+/// Cycles from `pix` to `out`.
+pub const RUNS_LATENCY: usize = 3 + SQ_LATENCY;
+
+// The stages below are written out for these latencies (the table's read,
+// the thresholds' lag, the distance units'), and a row's next read must
+// come after its labels are written (N9).
+const _: () = assert!(THR_LAG == 2 && SQ_LATENCY == 7);
+const _: () = assert!(*limits::HW_ROWS.start() > RUNS_LATENCY);
+
+/// Address bits of the per-row table (`HW_ROWS` at most 128).
+const ROW_BITS: usize = 7;
+const _: () = assert!(*limits::HW_ROWS.end() <= 1 << ROW_BITS);
+
+#[derive(LogicBlock)]
+pub struct FccRowRuns {
+    pub clk: Signal<In, Clock>,
+    pub rst: Signal<In, Bit>,
+    /// Pixel slots in column order.
+    pub pix: Signal<In, ColPix>,
+    /// `THR_LAG` cycles after `pix`: its key and `-(T'_H + 1)`.
+    pub key: Signal<In, Bits<16>>,
+    pub ch: Signal<In, Bits<36>>,
+    /// Run parameters (see `FccRowEntry`): the last column `C - 1`, the
+    /// bridge limit, the ring reach.
+    pub last_col: Signal<In, Bits<12>>,
+    pub nb: Signal<In, Bits<12>>,
+    pub ring_on: Signal<In, Bit>,
+    pub ring_f_max: Signal<In, Bits<12>>,
+    pub ring_l_min: Signal<In, Bits<12>>,
+    /// The free list of labels: its head, and `take` pops it.
+    pub free_ok: Signal<In, Bit>,
+    pub free_label: Signal<In, Bits<16>>,
+    pub take: Signal<Out, Bit>,
+    pub out: Signal<Out, RunPix>,
+    pts: FccRam<RowPts, ROW_BITS>,
+    labs: FccRam<RowLabs, ROW_BITS>,
+    pd: Vec<DFF<ColPix>>,
+    entry: FccRowEntry,
+    cd: Vec<DFF<RunCtl>>,
+    near: FccSqDist,
+    ring: FccSqDist,
+    near_cd: Vec<DFF<Bits<36>>>,
+    ring_cd: Vec<DFF<Bits<36>>>,
+    decide: FccRunDecide,
+    out_q: DFF<RunPix>,
+}
+
+impl FccRowRuns {
+    /// The block for frames of at most `rows` rows.
+    pub fn new(rows: usize) -> Self {
+        Self {
+            clk: Default::default(),
+            rst: Default::default(),
+            pix: Default::default(),
+            key: Default::default(),
+            ch: Default::default(),
+            last_col: Default::default(),
+            nb: Default::default(),
+            ring_on: Default::default(),
+            ring_f_max: Default::default(),
+            ring_l_min: Default::default(),
+            free_ok: Default::default(),
+            free_label: Default::default(),
+            take: Default::default(),
+            out: Default::default(),
+            pts: FccRam::new(rows),
+            labs: FccRam::new(rows),
+            pd: vec_of(2),
+            entry: Default::default(),
+            cd: vec_of(SQ_LATENCY),
+            near: FccSqDist::new(),
+            ring: FccSqDist::new(),
+            near_cd: vec_of(3),
+            ring_cd: vec_of(3),
+            decide: Default::default(),
+            out_q: Default::default(),
+        }
+    }
+}
+
+impl Logic for FccRowRuns {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clk, out_q);
+        for i in 0..2 {
+            self.pd[i].clock.next = self.clk.val();
+        }
+        for i in 0..7 {
+            self.cd[i].clock.next = self.clk.val();
+        }
+        for i in 0..3 {
+            self.near_cd[i].clock.next = self.clk.val();
+            self.ring_cd[i].clock.next = self.clk.val();
+        }
+        // ---- N0: read the row's entry.
+        self.pts.clk.next = self.clk.val();
+        self.labs.clk.next = self.clk.val();
+        self.pts.read_en.next = self.pix.val().valid;
+        self.pts.read_addr.next = self.pix.val().row.get_bits::<7>(0);
+        self.labs.read_en.next = self.pix.val().valid;
+        self.labs.read_addr.next = self.pix.val().row.get_bits::<7>(0);
+        self.pd[0].d.next = self.pix.val();
+        self.pd[1].d.next = self.pd[0].q.val();
+        // ---- N2: the entry against the pixel; its points written back.
+        self.entry.pix.next = self.pd[1].q.val();
+        self.entry.key.next = self.key.val();
+        self.entry.ch.next = self.ch.val();
+        self.entry.pts.next = self.pts.read_data.val();
+        self.entry.labs.next = self.labs.read_data.val();
+        self.entry.last_col.next = self.last_col.val();
+        self.entry.nb.next = self.nb.val();
+        self.entry.ring_on.next = self.ring_on.val();
+        self.entry.ring_f_max.next = self.ring_f_max.val();
+        self.entry.ring_l_min.next = self.ring_l_min.val();
+        self.pts.write_en.next = self.pd[1].q.val().valid;
+        self.pts.write_addr.next = self.pd[1].q.val().row.get_bits::<7>(0);
+        self.pts.write_data.next = self.entry.wr.val();
+        self.near.clk.next = self.clk.val();
+        self.near.ax.next = self.pd[1].q.val().x;
+        self.near.ay.next = self.pd[1].q.val().y;
+        self.near.az.next = self.pd[1].q.val().z;
+        self.near.bx.next = self.pts.read_data.val().l_x;
+        self.near.by.next = self.pts.read_data.val().l_y;
+        self.near.bz.next = self.pts.read_data.val().l_z;
+        self.near.en_in.next = self.entry.near_en.val();
+        self.ring.clk.next = self.clk.val();
+        self.ring.ax.next = self.entry.wr.val().f_x;
+        self.ring.ay.next = self.entry.wr.val().f_y;
+        self.ring.az.next = self.entry.wr.val().f_z;
+        self.ring.bx.next = self.entry.wr.val().l_x;
+        self.ring.by.next = self.entry.wr.val().l_y;
+        self.ring.bz.next = self.entry.wr.val().l_z;
+        self.ring.en_in.next = self.entry.ctl.val().ring_geom & self.entry.ctl.val().last_col;
+        // ---- N3 .. N9: the pixel waits for the distance units; their
+        // addends are added in N5.
+        self.cd[0].d.next = self.entry.ctl.val();
+        for i in 1..7 {
+            self.cd[i].d.next = self.cd[i - 1].q.val();
+        }
+        self.near_cd[0].d.next = self.entry.near_c.val();
+        self.ring_cd[0].d.next = self.entry.ring_c.val();
+        for i in 1..3 {
+            self.near_cd[i].d.next = self.near_cd[i - 1].q.val();
+            self.ring_cd[i].d.next = self.ring_cd[i - 1].q.val();
+        }
+        self.near.c.next = self.near_cd[2].q.val();
+        self.ring.c.next = self.ring_cd[2].q.val();
+        // ---- N9: the label; the row's labels written back.
+        self.decide.ctl.next = self.cd[6].q.val();
+        self.decide.near_hit.next = self.near.hit.val();
+        self.decide.ring_hit.next = self.ring.hit.val();
+        self.decide.free_ok.next = self.free_ok.val();
+        self.decide.free_label.next = self.free_label.val();
+        self.take.next = self.decide.take.val();
+        self.labs.write_en.next = self.cd[6].q.val().valid;
+        self.labs.write_addr.next = self.cd[6].q.val().row.get_bits::<7>(0);
+        self.labs.write_data.next = self.decide.labs.val();
+        self.out_q.d.next = self.decide.out.val();
+        if self.rst.val() {
+            self.pd[0].d.next.valid = false;
+            self.pd[1].d.next.valid = false;
+            self.cd[0].d.next.valid = false;
+            self.cd[1].d.next.valid = false;
+            self.cd[2].d.next.valid = false;
+            self.cd[3].d.next.valid = false;
+            self.cd[4].d.next.valid = false;
+            self.cd[5].d.next.valid = false;
+            self.cd[6].d.next.valid = false;
+            self.out_q.d.next.valid = false;
+        }
+        self.out.next = self.out_q.q.val();
+    }
+}

@@ -1,0 +1,202 @@
+//! The column-streaming core's blocks (docs/column-core.md): the frame's
+//! pixels in column order in, one record per cluster out as it closes.
+//! Built so far: the per-row run state of pass 1 (`FccRowRuns`).
+
+pub mod fcc_row_entry;
+pub mod fcc_row_runs;
+pub mod fcc_row_runs_probe;
+pub mod fcc_run_decide;
+
+use rust_hdl::prelude::*;
+
+/// One pixel slot of the frame in column order.
+#[derive(Clone, Copy, Debug, PartialEq, Default, LogicStruct)]
+pub struct ColPix {
+    /// A pixel position is present in this slot (not a bubble).
+    pub valid: Bit,
+    /// The pixel holds a point.
+    pub ok: Bit,
+    pub x: Bits<16>,
+    pub y: Bits<16>,
+    pub z: Bits<16>,
+    pub row: Bits<8>,
+    pub col: Bits<12>,
+    /// The frame's first and last pixel.
+    pub first: Bit,
+    pub last: Bit,
+}
+
+/// One row's entry in the per-row table: its latest valid pixel (`l_*`)
+/// and its first (`f_*`) of the frame so far, each with its column, point
+/// (offset binary) and pass-1 thresholds (`key` and the `FccSqDist` addend
+/// `ch`, from `FccPointThr`).
+#[derive(Clone, Copy, Debug, PartialEq, Default, LogicStruct)]
+pub struct RowPts {
+    pub l_has: Bit,
+    pub l_col: Bits<12>,
+    pub l_x: Bits<16>,
+    pub l_y: Bits<16>,
+    pub l_z: Bits<16>,
+    pub l_key: Bits<16>,
+    pub l_ch: Bits<36>,
+    pub f_has: Bit,
+    pub f_col: Bits<12>,
+    pub f_x: Bits<16>,
+    pub f_y: Bits<16>,
+    pub f_z: Bits<16>,
+    pub f_key: Bits<16>,
+    pub f_ch: Bits<36>,
+}
+
+/// One row's labels in the per-row table: its latest and first valid
+/// pixels' (0: unlabelled), and the label the row holds open (spec §9.2,
+/// holds 2 and 4; 0: none).
+#[derive(Clone, Copy, Debug, PartialEq, Default, LogicStruct)]
+pub struct RowLabs {
+    pub l_lab: Bits<16>,
+    pub f_lab: Bits<16>,
+    pub h_lab: Bits<16>,
+}
+
+/// A pixel on its way from the table read to the label decision, with
+/// what the decision needs of its row (worked out when the entry is read).
+#[derive(Clone, Copy, Debug, PartialEq, Default, LogicStruct)]
+pub struct RunCtl {
+    pub valid: Bit,
+    pub ok: Bit,
+    pub x: Bits<16>,
+    pub y: Bits<16>,
+    pub z: Bits<16>,
+    pub row: Bits<8>,
+    pub col: Bits<12>,
+    pub first: Bit,
+    pub last: Bit,
+    /// The row's first valid pixel is this one.
+    pub first_here: Bit,
+    /// The row's labels before this pixel, 0 where it had none.
+    pub l_lab: Bits<16>,
+    pub f_lab: Bits<16>,
+    pub h_lab: Bits<16>,
+    /// Hold 2 after this column: the row's latest valid pixel may be
+    /// continued at the next column (not after the last column).
+    pub bridge_h: Bit,
+    /// The row's first and latest valid pixels after this one are both
+    /// within the ring reach (hold 4; at the last column, the ring check).
+    pub ring_geom: Bit,
+    /// This column is within the ring reach of the last (hold 3 for the
+    /// row's first pixel).
+    pub first_reach: Bit,
+    /// The frame's last column.
+    pub last_col: Bit,
+}
+
+/// A pixel out of `FccRowRuns`: its point, its run's label and what its
+/// row's state changed.
+#[derive(Clone, Copy, Debug, PartialEq, Default, LogicStruct)]
+pub struct RunPix {
+    pub valid: Bit,
+    pub ok: Bit,
+    /// A point with a label (it can join).
+    pub lok: Bit,
+    pub x: Bits<16>,
+    pub y: Bits<16>,
+    pub z: Bits<16>,
+    pub row: Bits<8>,
+    pub col: Bits<12>,
+    pub first: Bit,
+    pub last: Bit,
+    pub last_col: Bit,
+    /// The run's label, 0 for an empty or unlabelled pixel.
+    pub label: Bits<16>,
+    /// The pixel starts a run and took `label` from the free list.
+    pub start: Bit,
+    /// The pixel starts a run but no label was free (spec §7).
+    pub refused: Bit,
+    /// Hold 3: the row's first valid pixel, labelled, within the ring
+    /// reach of the last column.
+    pub ring_first: Bit,
+    /// The ring check joins `ring_a` (the row's first run) and `ring_b`
+    /// (its last), at the last column.
+    pub ring: Bit,
+    pub ring_a: Bits<16>,
+    pub ring_b: Bits<16>,
+    /// The row stops holding `hold_drop` and holds `hold_add` (0: none).
+    /// At column 0 no row holds a label of the frame before (every cluster
+    /// closes at the frame end).
+    pub hold_drop: Bits<16>,
+    pub hold_add: Bits<16>,
+}
+
+/// The run parameters of `FccRowRuns` that encode the bridge limit and the
+/// ring reach (spec §3) for a frame of `p.cols` columns, so that the
+/// block's tests are plain comparisons:
+/// * `nb`: `min(N_b, 4095)`, 4095 when unlimited (more than any gap);
+/// * `ring_on`: `N_r >= 1` (or unlimited); with `m = min(N_r, C)`, a first
+///   pixel reaches in columns `0 ..= ring_f_max = m - 1` and a last one in
+///   `ring_l_min = C - m ..= C - 1` (unlimited: `C - 1` and 0).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct RunLimits {
+    pub nb: u16,
+    pub ring_on: bool,
+    pub ring_f_max: u16,
+    pub ring_l_min: u16,
+}
+
+impl RunLimits {
+    /// The limits of `p` (its columns at most 4096, as the hardware's).
+    pub fn new(p: &fcc_params::FccParams) -> RunLimits {
+        const MAX12: u32 = (1 << 12) - 1;
+        let cols = p.cols as u32;
+        let nb = p.bridge.map_or(MAX12, |n| n.min(MAX12)) as u16;
+        match p.ring_reach.map_or(cols, |n| n.min(cols)) {
+            0 => RunLimits {
+                nb,
+                ring_on: false,
+                ring_f_max: 0,
+                ring_l_min: 0,
+            },
+            m => RunLimits {
+                nb,
+                ring_on: true,
+                ring_f_max: (m - 1) as u16,
+                ring_l_min: (cols - m) as u16,
+            },
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::RunLimits;
+    use fcc_params::FccParams;
+
+    /// The encoded limits give spec §3's rules (`FccParams::bridges`,
+    /// `ring_reaches`) at every gap and column pair of small frames.
+    #[test]
+    fn run_limits_are_the_spec_rules() {
+        for cols in [1usize, 2, 5, 9] {
+            for bridge in [None, Some(0), Some(1), Some(3), Some(5000)] {
+                for ring_reach in [None, Some(0), Some(1), Some(2), Some(4), Some(9), Some(70)] {
+                    let p = FccParams {
+                        cols,
+                        bridge,
+                        ring_reach,
+                        ..FccParams::default()
+                    };
+                    let l = RunLimits::new(&p);
+                    for gap in 0..cols + 2 {
+                        assert_eq!(gap <= l.nb as usize, p.bridges(gap), "{p:?} gap {gap}");
+                    }
+                    for f in 0..cols {
+                        for last in f..cols {
+                            let got = l.ring_on
+                                && f <= l.ring_f_max as usize
+                                && last >= l.ring_l_min as usize;
+                            assert_eq!(got, p.ring_reaches(f, last), "{p:?} {f} {last}");
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
