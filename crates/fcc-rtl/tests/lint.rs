@@ -121,14 +121,28 @@ fn bad_parameters_are_errors_not_panics() {
     assert!(generate(&p).unwrap_err().to_string().contains("cols"));
 }
 
+/// Whether Yosys runs; as [`verilator_present`].
+fn yosys_present() -> bool {
+    let ok = std::process::Command::new("yosys")
+        .arg("-V")
+        .output()
+        .is_ok();
+    if !ok && std::env::var("CI").is_ok_and(|v| v == "true") {
+        panic!("yosys is not installed and CI=true: install it (Debian: apt-get install yosys)");
+    }
+    ok
+}
+
 /// Every block of the bench table, generated alone, at the smallest and
-/// largest K, lints clean with its own waivers.
+/// largest K, lints clean with its own waivers, and Yosys (the synthesis
+/// flow's reader, stricter than Verilator on some selects) reads it.
 #[test]
 fn every_bench_block_alone_lints_clean() {
     if !verilator_present() {
         eprintln!("verilator not installed: lint skipped");
         return;
     }
+    let yosys = yosys_present();
     for block in fcc_rtl::BenchBlock::ALL {
         for fsize in [3, 11] {
             let p = FccParams {
@@ -143,6 +157,23 @@ fn every_bench_block_alone_lints_clean() {
             std::fs::write(&vlt, block.waivers(&p)).unwrap();
             if let Err(e) = lint::lint_module(&v, &vlt, &block.module(&p)) {
                 panic!("{block:?} at K = {fsize}: {e}");
+            }
+            if yosys {
+                let script = format!(
+                    "read_verilog {}; hierarchy -top {}",
+                    v.display(),
+                    block.module(&p)
+                );
+                let out = std::process::Command::new("yosys")
+                    .args(["-q", "-p", &script])
+                    .output()
+                    .unwrap();
+                assert!(
+                    out.status.success(),
+                    "{block:?} at K = {fsize}: Yosys cannot read it:\n{}{}",
+                    String::from_utf8_lossy(&out.stdout),
+                    String::from_utf8_lossy(&out.stderr)
+                );
             }
             let _ = std::fs::remove_dir_all(&dir);
         }

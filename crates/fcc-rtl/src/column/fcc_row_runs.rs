@@ -38,7 +38,8 @@ pub const RUNS_LATENCY: usize = 3 + SQ_LATENCY;
 const _: () = assert!(THR_LAG == 2 && SQ_LATENCY == 7);
 const _: () = assert!(*limits::HW_ROWS.start() > RUNS_LATENCY);
 
-/// Address bits of the per-row table (`HW_ROWS` at most 128).
+/// Address bits of the per-row table (`HW_ROWS` at most 128): the width of
+/// a slot's row.
 const ROW_BITS: usize = 7;
 const _: () = assert!(*limits::HW_ROWS.end() <= 1 << ROW_BITS);
 
@@ -127,9 +128,9 @@ impl Logic for FccRowRuns {
         self.pts.clk.next = self.clk.val();
         self.labs.clk.next = self.clk.val();
         self.pts.read_en.next = self.pix.val().valid;
-        self.pts.read_addr.next = self.pix.val().row.get_bits::<7>(0);
+        self.pts.read_addr.next = self.pix.val().row;
         self.labs.read_en.next = self.pix.val().valid;
-        self.labs.read_addr.next = self.pix.val().row.get_bits::<7>(0);
+        self.labs.read_addr.next = self.pix.val().row;
         self.pd[0].d.next = self.pix.val();
         self.pd[1].d.next = self.pd[0].q.val();
         // ---- N2: the entry against the pixel; its points written back.
@@ -144,7 +145,7 @@ impl Logic for FccRowRuns {
         self.entry.ring_f_max.next = self.ring_f_max.val();
         self.entry.ring_l_min.next = self.ring_l_min.val();
         self.pts.write_en.next = self.pd[1].q.val().valid;
-        self.pts.write_addr.next = self.pd[1].q.val().row.get_bits::<7>(0);
+        self.pts.write_addr.next = self.pd[1].q.val().row;
         self.pts.write_data.next = self.entry.wr.val();
         self.near.clk.next = self.clk.val();
         self.near.ax.next = self.pd[1].q.val().x;
@@ -184,7 +185,7 @@ impl Logic for FccRowRuns {
         self.decide.free_label.next = self.free_label.val();
         self.take.next = self.decide.take.val();
         self.labs.write_en.next = self.cd[6].q.val().valid;
-        self.labs.write_addr.next = self.cd[6].q.val().row.get_bits::<7>(0);
+        self.labs.write_addr.next = self.cd[6].q.val().row;
         self.labs.write_data.next = self.decide.labs.val();
         self.out_q.d.next = self.decide.out.val();
         if self.rst.val() {
