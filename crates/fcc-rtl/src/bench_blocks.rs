@@ -41,6 +41,9 @@ pub enum BenchBlock {
     /// The column core's per-row run state `FccRowRuns` behind the scalar
     /// ports of `FccRowRunsProbe`.
     RowRuns,
+    /// The column core's pass-2 window `FccColWindow` behind the scalar
+    /// ports of `FccColWindowProbe`.
+    ColWindow,
 }
 
 /// One row of the table: the module's name before the configuration
@@ -68,7 +71,7 @@ impl Row {
 
 impl BenchBlock {
     /// Every block with a bench.
-    pub const ALL: [BenchBlock; 13] = [
+    pub const ALL: [BenchBlock; 14] = [
         BenchBlock::Regs,
         BenchBlock::AxilAdapter,
         BenchBlock::MergeTable,
@@ -82,6 +85,7 @@ impl BenchBlock {
         BenchBlock::FiltCentre,
         BenchBlock::WordWindow,
         BenchBlock::RowRuns,
+        BenchBlock::ColWindow,
     ];
 
     fn row(self) -> Row {
@@ -165,6 +169,17 @@ impl BenchBlock {
                     "fcc_row_runs",
                 )
             }),
+            BenchBlock::ColWindow => Row {
+                name: "fcc_col_window",
+                generate: |p| {
+                    gen(
+                        p,
+                        crate::column::fcc_col_window_probe::FccColWindowProbe::new(p),
+                        "fcc_col_window",
+                    )
+                },
+                waivers: lint::col_window_waivers,
+            },
         }
     }
 

@@ -35,7 +35,7 @@ pub struct FccRepWindow {
     rv_valid: Vec<DFF<Bit>>,
     rv_col: Vec<DFF<Bits<12>>>,
     rv_rdcol: Vec<DFF<Bits<12>>>,
-    lane: FccWordWindow<Bits<16>>,
+    lane: FccWordWindow<Bits<16>, 12>,
     /// Copies of R2's `valid` (`rv_valid[5]`), one per entry.
     rep_shift_en: Vec<FccKeepReg<Bit>>,
     _k: usize,

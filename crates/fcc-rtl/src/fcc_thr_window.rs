@@ -69,8 +69,8 @@ pub struct FccThrWindow {
     t3_cv: DFF<Bits<36>>,
     /// The line buffers: keys and addends (their low 32 bits; the upper
     /// bits of the addends are cleared on entry and set on the way out).
-    lane_key: FccWordWindow<Bits<16>>,
-    lane_cv: FccWordWindow<Bits<36>>,
+    lane_key: FccWordWindow<Bits<16>, 12>,
+    lane_cv: FccWordWindow<Bits<36>, 12>,
     shift_en: Vec<FccKeepReg<Bit>>,
     lb_write_en: Vec<FccKeepReg<Bit>>,
     lb_write_addr: Vec<FccKeepReg<Bits<12>>>,

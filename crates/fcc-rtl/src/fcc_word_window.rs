@@ -23,28 +23,28 @@ use crate::fcc_ram::FccRam;
 use crate::types::vec_of;
 
 #[derive(LogicBlock)]
-pub struct FccWordWindow<T: Synth> {
+pub struct FccWordWindow<T: Synth, const A: usize> {
     pub clk: Signal<In, Clock>,
     /// T0: read this column of every buffer.
     pub read_en: Signal<In, Bit>,
-    pub read_addr: Signal<In, Bits<12>>,
+    pub read_addr: Signal<In, Bits<A>>,
     /// T2: buffer 0's word, and each buffer's write (buffer 0: `in_data`;
     /// buffer j: the cascade).
     pub in_data: Signal<In, T>,
     pub cas_en: Vec<Signal<In, Bit>>,
-    pub cas_addr: Vec<Signal<In, Bits<12>>>,
+    pub cas_addr: Vec<Signal<In, Bits<A>>>,
     /// T2: entry e shifts.
     pub shift_en: Vec<Signal<In, Bit>>,
     /// T3: the window, row-major from the top row.
     pub ent: Vec<Signal<Out, T>>,
-    lb: Vec<FccRam<T, 12>>,
+    lb: Vec<FccRam<T, A>>,
     win: Vec<DFF<T>>,
     view: Vec<Signal<Local, T>>,
     _k: usize,
     _h: usize,
 }
 
-impl<T: Synth> FccWordWindow<T> {
+impl<T: Synth, const A: usize> FccWordWindow<T, A> {
     /// The window of a K x h block of words over rows of `cols` pixels, its
     /// buffers storing the low `stored_bits` bits of each word
     /// (`FccRam::with_stored_bits`; the upper bits read back as zero).
@@ -70,7 +70,7 @@ impl<T: Synth> FccWordWindow<T> {
     }
 }
 
-impl<T: Synth> Logic for FccWordWindow<T> {
+impl<T: Synth, const A: usize> Logic for FccWordWindow<T, A> {
     #[hdl_gen]
     fn update(&mut self) {
         for j in 0..self._h {

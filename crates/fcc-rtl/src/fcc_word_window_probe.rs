@@ -23,7 +23,7 @@ pub struct FccWordWindowProbe {
     pub shift: Signal<In, Bit>,
     pub ent_sel: Signal<In, Bits<8>>,
     pub ent: Signal<Out, Bits<16>>,
-    window: FccWordWindow<Bits<16>>,
+    window: FccWordWindow<Bits<16>, 12>,
     entry_index: Vec<Constant<Bits<8>>>,
     zero16: Constant<Bits<16>>,
     _h: usize,

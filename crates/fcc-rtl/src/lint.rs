@@ -153,6 +153,30 @@ pub fn block_waivers(p: &FccParams, name: &str) -> String {
     s
 }
 
+/// The waivers of the column window's probe `name`: it brings out the
+/// centre's position and label only; the window passes the rest of the
+/// slot through unchanged (a delay line the probe feeds with zeros).
+pub fn col_window_waivers(p: &FccParams, name: &str) -> String {
+    let mut s = block_waivers(p, name);
+    s.push_str(&format!(
+        "// The probe reads the centre's position and label; the rest of the\n\
+         // slot is a delay line fed with zeros.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'window$centre'*\"\n\
+         // The word window's centre positions (the pixel's own row, never a\n\
+         // pair) only feed its cascade.\n"
+    ));
+    let (k, h) = (p.fsize, p.half());
+    for r in 0..h {
+        for lane in ["lane", "lok_lane"] {
+            s.push_str(&format!(
+                "lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'{lane}$ent${}'*\"\n",
+                r * k + h
+            ));
+        }
+    }
+    s
+}
+
 /// The waivers of the word window's probe `name`: at K = 3 the window has
 /// one buffer and no cascade, so the cascade's enable and address are not
 /// read.

@@ -1,7 +1,11 @@
 //! The column-streaming core's blocks (docs/column-core.md): the frame's
 //! pixels in column order in, one record per cluster out as it closes.
-//! Built so far: the per-row run state of pass 1 (`FccRowRuns`).
+//! Built so far: the per-row run state of pass 1 (`FccRowRuns`) and the
+//! pass-2 window (`FccColWindow`).
 
+pub mod fcc_col_edge;
+pub mod fcc_col_window;
+pub mod fcc_col_window_probe;
 pub mod fcc_row_entry;
 pub mod fcc_row_runs;
 pub mod fcc_row_runs_probe;
@@ -125,6 +129,16 @@ pub struct RunPix {
     /// closes at the frame end).
     pub hold_drop: Bits<16>,
     pub hold_add: Bits<16>,
+}
+
+/// A pixel's word in the column window: its point and run's label
+/// (whether it can join travels in a lane of its own).
+#[derive(Clone, Copy, Debug, PartialEq, Default, LogicStruct)]
+pub struct ColWord {
+    pub x: Bits<16>,
+    pub y: Bits<16>,
+    pub z: Bits<16>,
+    pub label: Bits<16>,
 }
 
 /// The run parameters of `FccRowRuns` that encode the bridge limit and the

@@ -1,0 +1,118 @@
+//! `FccColWindowProbe`: `FccColWindow` of the build's K and rows behind
+//! scalar ports, for its own bench: a labelled pixel in field by field
+//! (the fields the window reads; the rest of the slot is zero), the
+//! centre's position and label out, and the entry chosen by `ent_sel`
+//! (`e_ok` and the word) combinationally (zero past the last entry).
+
+use fcc_params::FccParams;
+use rust_hdl::prelude::*;
+
+use super::fcc_col_window::FccColWindow;
+use super::{ColWord, RunPix};
+use crate::types::kb;
+
+#[derive(LogicBlock)]
+pub struct FccColWindowProbe {
+    pub clk: Signal<In, Clock>,
+    pub rst: Signal<In, Bit>,
+    pub valid: Signal<In, Bit>,
+    pub lok: Signal<In, Bit>,
+    pub x: Signal<In, Bits<16>>,
+    pub y: Signal<In, Bits<16>>,
+    pub z: Signal<In, Bits<16>>,
+    pub label: Signal<In, Bits<16>>,
+    pub row: Signal<In, Bits<7>>,
+    pub col: Signal<In, Bits<12>>,
+    pub last_row: Signal<In, Bits<7>>,
+    pub run_k: Signal<In, Bits<4>>,
+    pub ent_sel: Signal<In, Bits<8>>,
+    pub c_valid: Signal<Out, Bit>,
+    pub c_row: Signal<Out, Bits<7>>,
+    pub c_col: Signal<Out, Bits<12>>,
+    pub c_label: Signal<Out, Bits<16>>,
+    pub e_ok: Signal<Out, Bit>,
+    pub e_x: Signal<Out, Bits<16>>,
+    pub e_y: Signal<Out, Bits<16>>,
+    pub e_z: Signal<Out, Bits<16>>,
+    pub e_label: Signal<Out, Bits<16>>,
+    window: FccColWindow,
+    slot: Signal<Local, RunPix>,
+    pick: Signal<Local, ColWord>,
+    slot_zero: Constant<RunPix>,
+    word_zero: Constant<ColWord>,
+    entry_index: Vec<Constant<Bits<8>>>,
+}
+
+impl FccColWindowProbe {
+    pub fn new(p: &FccParams) -> Self {
+        let n = p.window_positions();
+        assert!(n <= 256, "{n} window entries do not fit ent_sel");
+        Self {
+            clk: Default::default(),
+            rst: Default::default(),
+            valid: Default::default(),
+            lok: Default::default(),
+            x: Default::default(),
+            y: Default::default(),
+            z: Default::default(),
+            label: Default::default(),
+            row: Default::default(),
+            col: Default::default(),
+            last_row: Default::default(),
+            run_k: Default::default(),
+            ent_sel: Default::default(),
+            c_valid: Default::default(),
+            c_row: Default::default(),
+            c_col: Default::default(),
+            c_label: Default::default(),
+            e_ok: Default::default(),
+            e_x: Default::default(),
+            e_y: Default::default(),
+            e_z: Default::default(),
+            e_label: Default::default(),
+            window: FccColWindow::new(p),
+            slot: Default::default(),
+            pick: Default::default(),
+            slot_zero: Constant::new(RunPix::default()),
+            word_zero: Constant::new(ColWord::default()),
+            entry_index: (0..n).map(|e| kb(e as u64)).collect(),
+        }
+    }
+}
+
+impl Logic for FccColWindowProbe {
+    #[hdl_gen]
+    fn update(&mut self) {
+        self.slot.next = self.slot_zero.val();
+        self.slot.next.valid = self.valid.val();
+        self.slot.next.ok = self.lok.val();
+        self.slot.next.lok = self.lok.val();
+        self.slot.next.x = self.x.val();
+        self.slot.next.y = self.y.val();
+        self.slot.next.z = self.z.val();
+        self.slot.next.label = self.label.val();
+        self.slot.next.row = self.row.val();
+        self.slot.next.col = self.col.val();
+        self.window.clk.next = self.clk.val();
+        self.window.rst.next = self.rst.val();
+        self.window.inp.next = self.slot.val();
+        self.window.last_row.next = self.last_row.val();
+        self.window.run_k.next = self.run_k.val();
+        self.c_valid.next = self.window.centre.val().valid;
+        self.c_row.next = self.window.centre.val().row;
+        self.c_col.next = self.window.centre.val().col;
+        self.c_label.next = self.window.centre.val().label;
+        self.pick.next = self.word_zero.val();
+        self.e_ok.next = false;
+        for e in 0..self.entry_index.len() {
+            if self.ent_sel.val() == self.entry_index[e].val() {
+                self.pick.next = self.window.ent[e].val();
+                self.e_ok.next = self.window.ent_ok[e].val();
+            }
+        }
+        self.e_x.next = self.pick.val().x;
+        self.e_y.next = self.pick.val().y;
+        self.e_z.next = self.pick.val().z;
+        self.e_label.next = self.pick.val().label;
+    }
+}
