@@ -161,7 +161,7 @@ pub fn col_window_waivers(p: &FccParams, name: &str) -> String {
     s.push_str(&format!(
         "// The probe reads the centre's position and label; the rest of the\n\
          // slot is a delay line fed with zeros.\n\
-         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'window$centre'*\"\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'col_window$centre'*\"\n\
          // The word window's centre positions (the pixel's own row, never a\n\
          // pair) only feed its cascade.\n"
     ));

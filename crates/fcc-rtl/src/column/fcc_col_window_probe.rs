@@ -35,7 +35,7 @@ pub struct FccColWindowProbe {
     pub e_y: Signal<Out, Bits<16>>,
     pub e_z: Signal<Out, Bits<16>>,
     pub e_label: Signal<Out, Bits<16>>,
-    window: FccColWindow,
+    col_window: FccColWindow,
     slot: Signal<Local, RunPix>,
     pick: Signal<Local, ColWord>,
     slot_zero: Constant<RunPix>,
@@ -70,7 +70,7 @@ impl FccColWindowProbe {
             e_y: Default::default(),
             e_z: Default::default(),
             e_label: Default::default(),
-            window: FccColWindow::new(p),
+            col_window: FccColWindow::new(p),
             slot: Default::default(),
             pick: Default::default(),
             slot_zero: Constant::new(RunPix::default()),
@@ -93,21 +93,21 @@ impl Logic for FccColWindowProbe {
         self.slot.next.label = self.label.val();
         self.slot.next.row = self.row.val();
         self.slot.next.col = self.col.val();
-        self.window.clk.next = self.clk.val();
-        self.window.rst.next = self.rst.val();
-        self.window.inp.next = self.slot.val();
-        self.window.last_row.next = self.last_row.val();
-        self.window.run_k.next = self.run_k.val();
-        self.c_valid.next = self.window.centre.val().valid;
-        self.c_row.next = self.window.centre.val().row;
-        self.c_col.next = self.window.centre.val().col;
-        self.c_label.next = self.window.centre.val().label;
+        self.col_window.clk.next = self.clk.val();
+        self.col_window.rst.next = self.rst.val();
+        self.col_window.inp.next = self.slot.val();
+        self.col_window.last_row.next = self.last_row.val();
+        self.col_window.run_k.next = self.run_k.val();
+        self.c_valid.next = self.col_window.centre.val().valid;
+        self.c_row.next = self.col_window.centre.val().row;
+        self.c_col.next = self.col_window.centre.val().col;
+        self.c_label.next = self.col_window.centre.val().label;
         self.pick.next = self.word_zero.val();
         self.e_ok.next = false;
         for e in 0..self.entry_index.len() {
             if self.ent_sel.val() == self.entry_index[e].val() {
-                self.pick.next = self.window.ent[e].val();
-                self.e_ok.next = self.window.ent_ok[e].val();
+                self.pick.next = self.col_window.ent[e].val();
+                self.e_ok.next = self.col_window.ent_ok[e].val();
             }
         }
         self.e_x.next = self.pick.val().x;
