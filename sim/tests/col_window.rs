@@ -25,6 +25,8 @@ c_struct! {
         pub x: u16,
         pub y: u16,
         pub z: u16,
+        pub key: u16,
+        pub cv: u64,
         pub label: u16,
         pub row: u8,
         pub col: u16,
@@ -45,6 +47,8 @@ c_struct! {
         pub e_x: u16,
         pub e_y: u16,
         pub e_z: u16,
+        pub e_key: u16,
+        pub e_cv: u64,
         pub e_label: u16,
     }
 }
@@ -52,9 +56,12 @@ c_struct! {
 /// Cycles from a pixel to its window.
 const LATENCY: usize = 3;
 
-/// A pixel: its word (x, y, z, label) and whether it is a labelled point;
-/// `None` for an empty pixel.
-type Px = Option<([u16; 4], bool)>;
+/// A pixel's word: x, y, z, key, label, and the pass-2 addend.
+type Word = ([u16; 5], u64);
+
+/// A pixel: its word and whether it is a labelled point; `None` for an
+/// empty pixel.
+type Px = Option<(Word, bool)>;
 
 /// A frame in column order: `px[c][i]`.
 struct Frame {
@@ -70,7 +77,11 @@ fn random_frame(rows: usize, cols: usize, rng: &mut ChaCha8Rng) -> Frame {
                     rng.gen_bool(0.7).then(|| {
                         let lok = rng.gen_bool(0.8);
                         let label = if lok { rng.gen_range(1..=u16::MAX) } else { 0 };
-                        ([rng.gen(), rng.gen(), rng.gen(), label], lok)
+                        let cv = rng.gen::<u64>() & ((1 << 36) - 1);
+                        (
+                            ([rng.gen(), rng.gen(), rng.gen(), rng.gen(), label], cv),
+                            lok,
+                        )
                     })
                 })
                 .collect()
@@ -81,7 +92,7 @@ fn random_frame(rows: usize, cols: usize, rng: &mut ChaCha8Rng) -> Frame {
 
 /// Entry `e` of the window of the pixel at (`i`, `c`) by spec §4 in
 /// column order: the pixel's word when the position is a pair.
-fn expected(f: &Frame, k: usize, run_k: usize, i: usize, c: usize, e: usize) -> Option<[u16; 4]> {
+fn expected(f: &Frame, k: usize, run_k: usize, i: usize, c: usize, e: usize) -> Option<Word> {
     let (h, hr) = ((k - 1) / 2, (run_k - 1) / 2);
     let (row, col, reach) = if e < 2 * h * h {
         // Line r (column c - h + r), position p (rows i - h ..= i + h
@@ -115,14 +126,16 @@ struct Bench {
 
 impl Bench {
     fn slot(f: &Frame, run_k: usize, i: usize, c: usize) -> CwIn {
-        let (w, lok) = f.px[c][i].map_or(([0; 4], false), |(w, l)| (w, l));
+        let ((w, cv), lok) = f.px[c][i].unwrap_or((([0; 5], 0), false));
         CwIn {
             valid: 1,
             lok: lok as u8,
             x: w[0],
             y: w[1],
             z: w[2],
-            label: w[3],
+            key: w[3],
+            cv,
+            label: w[4],
             row: i as u8,
             col: c as u16,
             last_row: (f.rows - 1) as u8,
@@ -157,7 +170,11 @@ impl Bench {
         let want = expected(f, self.k, run_k, i, c, e);
         assert_eq!(o.e_ok != 0, want.is_some(), "{at}: is a pair");
         if let Some(w) = want {
-            assert_eq!([o.e_x, o.e_y, o.e_z, o.e_label], w, "{at}: word");
+            assert_eq!(
+                ([o.e_x, o.e_y, o.e_z, o.e_key, o.e_label], o.e_cv),
+                w,
+                "{at}: word"
+            );
         }
     }
 
@@ -244,7 +261,7 @@ impl Bench {
                 let (i, c) = order[seen];
                 assert_eq!(
                     (o.c_row as usize, o.c_col as usize, o.c_label),
-                    (i, c, f.px[c][i].map_or(0, |p| p.0[3])),
+                    (i, c, f.px[c][i].map_or(0, |((w, _), _)| w[4])),
                     "K = {}: {what}: centre {seen}",
                     self.k
                 );

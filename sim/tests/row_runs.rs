@@ -35,6 +35,7 @@ c_struct! {
         pub last: u8,
         pub key: u16,
         pub ch: u64,
+        pub cv: u64,
         pub last_col: u16,
         pub nb: u16,
         pub ring_on: u8,
@@ -60,6 +61,8 @@ c_struct! {
         pub o_first: u8,
         pub o_last: u8,
         pub o_last_col: u8,
+        pub o_key: u16,
+        pub o_cv: u64,
         pub o_label: u16,
         pub o_start: u8,
         pub o_refused: u8,
@@ -72,7 +75,19 @@ c_struct! {
     }
 }
 
-/// Cycles from a slot to its key and addend (`FccPixThr`'s lag).
+/// A point's key and `FccSqDist` addends (spec §2): `rc2`,
+/// `-(max(tH^2, T_H) + 1)` and `-max(tV^2, T_V)`.
+fn thresholds(p: &FccParams, q: Point) -> (u16, u64, u64) {
+    let th = p.th_h_sq().max(point_threshold(p.th_h_slope_sq(), q));
+    let tv = p.th_v_sq().max(point_threshold(p.th_v_slope_sq(), q));
+    (
+        coarse_range2(q) as u16,
+        (-(th + 1)) as u64 & MASK36,
+        (-tv) as u64 & MASK36,
+    )
+}
+
+/// Cycles from a slot to its key and addends (`FccPixThr`'s lag).
 const THR_LAG: usize = 2;
 const MASK36: u64 = (1 << 36) - 1;
 
@@ -94,7 +109,7 @@ struct Feed {
 /// label as the block's hold outputs left it.
 struct Bench {
     dut: PlainDut<RrIn, RrOut>,
-    lag: VecDeque<(u16, u64)>,
+    lag: VecDeque<(u16, u64, u64)>,
     /// Labels `1 ..= labels` in all.
     labels: u16,
     free: VecDeque<u16>,
@@ -114,7 +129,7 @@ impl Bench {
         let model = load_plain::<RrIn, RrOut>(BenchBlock::RowRuns, build).expect("row runs model");
         Bench {
             dut: PlainDut::new(model),
-            lag: VecDeque::from(vec![(0, 0); THR_LAG]),
+            lag: VecDeque::from(vec![(0, 0, 0); THR_LAG]),
             labels: labels as u16,
             free: (1..=labels as u16).collect(),
             taken: VecDeque::new(),
@@ -139,10 +154,11 @@ impl Bench {
             free_label: self.free.front().copied().unwrap_or(0),
             ..RrIn::default()
         };
-        let (key, ch) = self.lag.pop_front().unwrap();
+        let (key, ch, cv) = self.lag.pop_front().unwrap();
         i.key = key;
         i.ch = ch;
-        let mut thr = (0, 0);
+        i.cv = cv;
+        let mut thr = (0, 0, 0);
         if let Some((row, col, pt)) = slot {
             i.valid = 1;
             i.row = row as u8;
@@ -154,9 +170,7 @@ impl Bench {
                 i.x = ob(q[0]);
                 i.y = ob(q[1]);
                 i.z = ob(q[2]);
-                // Spec §2: the key rc2 and -(max(tH^2, T_H) + 1).
-                let t = p.th_h_sq().max(point_threshold(p.th_h_slope_sq(), q));
-                thr = (coarse_range2(q) as u16, (-(t + 1)) as u64 & MASK36);
+                thr = thresholds(p, q);
             }
         }
         self.lag.push_back(thr);
@@ -342,6 +356,8 @@ fn check_frame(
                     (ob(q[0]), ob(q[1]), ob(q[2])),
                     "{at}: point"
                 );
+                let (key, _, cv) = thresholds(p, q);
+                assert_eq!((o.o_key, o.o_cv), (key, cv), "{at}: key and pass-2 addend");
                 // Spec §3: does this point start a run?
                 let starts = match latest[r] {
                     Some((lc, lp, _)) => !(p.bridges(c - lc - 1) && th.continues(q, lp)),
@@ -522,6 +538,7 @@ fn runs_holds_and_ring_checks_equal_the_golden_stream() {
             FccParams {
                 th_h: 0.1,
                 th_h_slope: 0.05,
+                th_v_slope: 0.03,
                 ..run_params(24, 40)
             },
             true,

@@ -7,7 +7,8 @@
 //!
 //! The earlier columns are the row-major word window transposed: an
 //! `FccWordWindow` of `h` lines of `K` positions (two lanes: the words,
-//! and whether each is a labelled point) whose line buffers are `R`
+//! each a point with its pass-2 key and addend and its run's label, and
+//! whether each is a labelled point) whose line buffers are `R`
 //! words deep, addressed by row, the window's lines being columns. Line
 //! buffer 0 takes the pixel's word at its row; the cascade moves each word
 //! one column back, and the window reads row `(i + h) mod R` of every
@@ -118,6 +119,8 @@ impl Logic for FccColWindow {
         self.word.next.x = self.pd[1].q.val().x;
         self.word.next.y = self.pd[1].q.val().y;
         self.word.next.z = self.pd[1].q.val().z;
+        self.word.next.key = self.pd[1].q.val().key;
+        self.word.next.cv = self.pd[1].q.val().cv;
         self.word.next.label = self.pd[1].q.val().label;
         self.lane.in_data.next = self.word.val();
         self.lok_lane.in_data.next = self.pd[1].q.val().lok;

@@ -1,6 +1,7 @@
 //! `FccColWindowProbe`: `FccColWindow` of the build's K and rows behind
 //! scalar ports, for its own bench: a labelled pixel in field by field
-//! (the fields the window reads; the rest of the slot is zero), the
+//! (the fields the window reads, its key and pass-2 addend among them; the
+//! rest of the slot is zero), the
 //! centre's position and label out, and the entry chosen by `ent_sel`
 //! (`e_ok` and the word) combinationally (zero past the last entry).
 
@@ -20,6 +21,8 @@ pub struct FccColWindowProbe {
     pub x: Signal<In, Bits<16>>,
     pub y: Signal<In, Bits<16>>,
     pub z: Signal<In, Bits<16>>,
+    pub key: Signal<In, Bits<16>>,
+    pub cv: Signal<In, Bits<36>>,
     pub label: Signal<In, Bits<16>>,
     pub row: Signal<In, Bits<7>>,
     pub col: Signal<In, Bits<12>>,
@@ -34,6 +37,8 @@ pub struct FccColWindowProbe {
     pub e_x: Signal<Out, Bits<16>>,
     pub e_y: Signal<Out, Bits<16>>,
     pub e_z: Signal<Out, Bits<16>>,
+    pub e_key: Signal<Out, Bits<16>>,
+    pub e_cv: Signal<Out, Bits<36>>,
     pub e_label: Signal<Out, Bits<16>>,
     col_window: FccColWindow,
     slot: Signal<Local, RunPix>,
@@ -55,6 +60,8 @@ impl FccColWindowProbe {
             x: Default::default(),
             y: Default::default(),
             z: Default::default(),
+            key: Default::default(),
+            cv: Default::default(),
             label: Default::default(),
             row: Default::default(),
             col: Default::default(),
@@ -69,6 +76,8 @@ impl FccColWindowProbe {
             e_x: Default::default(),
             e_y: Default::default(),
             e_z: Default::default(),
+            e_key: Default::default(),
+            e_cv: Default::default(),
             e_label: Default::default(),
             col_window: FccColWindow::new(p),
             slot: Default::default(),
@@ -90,6 +99,8 @@ impl Logic for FccColWindowProbe {
         self.slot.next.x = self.x.val();
         self.slot.next.y = self.y.val();
         self.slot.next.z = self.z.val();
+        self.slot.next.key = self.key.val();
+        self.slot.next.cv = self.cv.val();
         self.slot.next.label = self.label.val();
         self.slot.next.row = self.row.val();
         self.slot.next.col = self.col.val();
@@ -113,6 +124,8 @@ impl Logic for FccColWindowProbe {
         self.e_x.next = self.pick.val().x;
         self.e_y.next = self.pick.val().y;
         self.e_z.next = self.pick.val().z;
+        self.e_key.next = self.pick.val().key;
+        self.e_cv.next = self.pick.val().cv;
         self.e_label.next = self.pick.val().label;
     }
 }

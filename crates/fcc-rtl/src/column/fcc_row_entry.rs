@@ -29,6 +29,8 @@ pub struct FccRowEntry {
     pub pix: Signal<In, ColPix>,
     pub key: Signal<In, Bits<16>>,
     pub ch: Signal<In, Bits<36>>,
+    /// Its pass-2 addend, carried on.
+    pub cv: Signal<In, Bits<36>>,
     /// Its row's entry as read.
     pub pts: Signal<In, RowPts>,
     pub labs: Signal<In, RowLabs>,
@@ -63,6 +65,7 @@ impl Default for FccRowEntry {
             pix: Default::default(),
             key: Default::default(),
             ch: Default::default(),
+            cv: Default::default(),
             pts: Default::default(),
             labs: Default::default(),
             last_col: Default::default(),
@@ -143,6 +146,8 @@ impl Logic for FccRowEntry {
         self.ctl.next.col = self.pix.val().col;
         self.ctl.next.first = self.pix.val().first;
         self.ctl.next.last = self.pix.val().last;
+        self.ctl.next.key = self.key.val();
+        self.ctl.next.cv = self.cv.val();
         self.ctl.next.first_here = self.point.val() & !self.f_has.val();
         self.ctl.next.l_lab = self.zero16.val();
         if self.l_has.val() {

@@ -49,9 +49,11 @@ pub struct FccRowRuns {
     pub rst: Signal<In, Bit>,
     /// Pixel slots in column order.
     pub pix: Signal<In, ColPix>,
-    /// `THR_LAG` cycles after `pix`: its key and `-(T'_H + 1)`.
+    /// `THR_LAG` cycles after `pix`: its key, `-(T'_H + 1)` and `-T'_V`
+    /// (carried on to `out` for pass 2).
     pub key: Signal<In, Bits<16>>,
     pub ch: Signal<In, Bits<36>>,
+    pub cv: Signal<In, Bits<36>>,
     /// Run parameters (see `FccRowEntry`): the last column `C - 1`, the
     /// bridge limit, the ring reach.
     pub last_col: Signal<In, Bits<12>>,
@@ -86,6 +88,7 @@ impl FccRowRuns {
             pix: Default::default(),
             key: Default::default(),
             ch: Default::default(),
+            cv: Default::default(),
             last_col: Default::default(),
             nb: Default::default(),
             ring_on: Default::default(),
@@ -137,6 +140,7 @@ impl Logic for FccRowRuns {
         self.entry.pix.next = self.pd[1].q.val();
         self.entry.key.next = self.key.val();
         self.entry.ch.next = self.ch.val();
+        self.entry.cv.next = self.cv.val();
         self.entry.pts.next = self.pts.read_data.val();
         self.entry.labs.next = self.labs.read_data.val();
         self.entry.last_col.next = self.last_col.val();

@@ -25,6 +25,7 @@ pub struct FccRowRunsProbe {
     pub last: Signal<In, Bit>,
     pub key: Signal<In, Bits<16>>,
     pub ch: Signal<In, Bits<36>>,
+    pub cv: Signal<In, Bits<36>>,
     pub last_col: Signal<In, Bits<12>>,
     pub nb: Signal<In, Bits<12>>,
     pub ring_on: Signal<In, Bit>,
@@ -44,6 +45,8 @@ pub struct FccRowRunsProbe {
     pub o_first: Signal<Out, Bit>,
     pub o_last: Signal<Out, Bit>,
     pub o_last_col: Signal<Out, Bit>,
+    pub o_key: Signal<Out, Bits<16>>,
+    pub o_cv: Signal<Out, Bits<36>>,
     pub o_label: Signal<Out, Bits<16>>,
     pub o_start: Signal<Out, Bit>,
     pub o_refused: Signal<Out, Bit>,
@@ -73,6 +76,7 @@ impl FccRowRunsProbe {
             last: Default::default(),
             key: Default::default(),
             ch: Default::default(),
+            cv: Default::default(),
             last_col: Default::default(),
             nb: Default::default(),
             ring_on: Default::default(),
@@ -92,6 +96,8 @@ impl FccRowRunsProbe {
             o_first: Default::default(),
             o_last: Default::default(),
             o_last_col: Default::default(),
+            o_key: Default::default(),
+            o_cv: Default::default(),
             o_label: Default::default(),
             o_start: Default::default(),
             o_refused: Default::default(),
@@ -124,6 +130,7 @@ impl Logic for FccRowRunsProbe {
         self.runs.pix.next = self.slot.val();
         self.runs.key.next = self.key.val();
         self.runs.ch.next = self.ch.val();
+        self.runs.cv.next = self.cv.val();
         self.runs.last_col.next = self.last_col.val();
         self.runs.nb.next = self.nb.val();
         self.runs.ring_on.next = self.ring_on.val();
@@ -143,6 +150,8 @@ impl Logic for FccRowRunsProbe {
         self.o_first.next = self.runs.out.val().first;
         self.o_last.next = self.runs.out.val().last;
         self.o_last_col.next = self.runs.out.val().last_col;
+        self.o_key.next = self.runs.out.val().key;
+        self.o_cv.next = self.runs.out.val().cv;
         self.o_label.next = self.runs.out.val().label;
         self.o_start.next = self.runs.out.val().start;
         self.o_refused.next = self.runs.out.val().refused;

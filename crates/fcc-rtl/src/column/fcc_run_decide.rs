@@ -111,6 +111,8 @@ impl Logic for FccRunDecide {
         self.out.next.first = self.ctl.val().first;
         self.out.next.last = self.ctl.val().last;
         self.out.next.last_col = self.ctl.val().last_col;
+        self.out.next.key = self.ctl.val().key;
+        self.out.next.cv = self.ctl.val().cv;
         self.out.next.label = self.lab.val();
         self.out.next.start = self.newrun.val() & self.free_ok.val();
         self.out.next.refused = self.newrun.val() & !self.free_ok.val();

@@ -75,6 +75,9 @@ pub struct RunCtl {
     pub col: Bits<12>,
     pub first: Bit,
     pub last: Bit,
+    /// The point's key and pass-2 addend `-T'_V` (`FccPointThr`).
+    pub key: Bits<16>,
+    pub cv: Bits<36>,
     /// The row's first valid pixel is this one.
     pub first_here: Bit,
     /// The row's labels before this pixel, 0 where it had none.
@@ -110,6 +113,9 @@ pub struct RunPix {
     pub first: Bit,
     pub last: Bit,
     pub last_col: Bit,
+    /// The point's key and pass-2 addend `-T'_V` (`FccPointThr`).
+    pub key: Bits<16>,
+    pub cv: Bits<36>,
     /// The run's label, 0 for an empty or unlabelled pixel.
     pub label: Bits<16>,
     /// The pixel starts a run and took `label` from the free list.
@@ -131,13 +137,16 @@ pub struct RunPix {
     pub hold_add: Bits<16>,
 }
 
-/// A pixel's word in the column window: its point and run's label
-/// (whether it can join travels in a lane of its own).
+/// A pixel's word in the column window: its point, its pass-2 key and
+/// addend, and its run's label (whether it can join travels in a lane of
+/// its own).
 #[derive(Clone, Copy, Debug, PartialEq, Default, LogicStruct)]
 pub struct ColWord {
     pub x: Bits<16>,
     pub y: Bits<16>,
     pub z: Bits<16>,
+    pub key: Bits<16>,
+    pub cv: Bits<36>,
     pub label: Bits<16>,
 }
 
