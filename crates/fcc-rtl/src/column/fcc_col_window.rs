@@ -22,7 +22,8 @@
 //! Timing (no enable; the window moves on valid slots only, so between
 //! them its entries hold): T0 = `inp` (reads issued), T2 (the words arrive,
 //! the window shifts, the cascade and the column's register are written,
-//! the masks registered), T3 = `centre` with `ent` and `ent_ok`. Entry order: line `r`
+//! the masks registered), T3 = `centre` with the entries' fields (`ent_*`)
+//! and `ent_ok`. Entry order: line `r`
 //! (column `c - h + r`) position `p` at `r * (K - 1) + p` (`p`: rows `i - h`
 //! .. `i + h` without `i`), then row `i - m` of column `c` at
 //! `2h^2 + m - 1`.
@@ -31,6 +32,7 @@ use fcc_params::FccParams;
 use rust_hdl::prelude::*;
 
 use super::fcc_col_edge::FccColEdge;
+use super::fcc_col_word_split::FccColWordSplit;
 use super::{ColWord, RunPix};
 use crate::fcc_word_window::FccWordWindow;
 use crate::types::{kb, vec_of};
@@ -45,13 +47,19 @@ pub struct FccColWindow {
     /// frame runs).
     pub last_row: Signal<In, Bits<7>>,
     pub run_k: Signal<In, Bits<4>>,
-    /// T3: the pixel and its window.
+    /// T3: the pixel and its window, field by field.
     pub centre: Signal<Out, RunPix>,
-    pub ent: Vec<Signal<Out, ColWord>>,
+    pub ent_x: Vec<Signal<Out, Bits<16>>>,
+    pub ent_y: Vec<Signal<Out, Bits<16>>>,
+    pub ent_z: Vec<Signal<Out, Bits<16>>>,
+    pub ent_key: Vec<Signal<Out, Bits<16>>>,
+    pub ent_cv: Vec<Signal<Out, Bits<36>>>,
+    pub ent_label: Vec<Signal<Out, Bits<16>>>,
     /// T3: the entry is a labelled point inside the window (a pair).
     pub ent_ok: Vec<Signal<Out, Bit>>,
     lane: FccWordWindow<ColWord, 7>,
     lok_lane: FccWordWindow<Bit, 7>,
+    split: Vec<FccColWordSplit>,
     masks: FccColEdge,
     pd: Vec<DFF<RunPix>>,
     up: Vec<DFF<ColWord>>,
@@ -76,10 +84,16 @@ impl FccColWindow {
             last_row: Default::default(),
             run_k: Default::default(),
             centre: Default::default(),
-            ent: vec_of(k * h),
+            ent_x: vec_of(k * h),
+            ent_y: vec_of(k * h),
+            ent_z: vec_of(k * h),
+            ent_key: vec_of(k * h),
+            ent_cv: vec_of(k * h),
+            ent_label: vec_of(k * h),
             ent_ok: vec_of(k * h),
             lane: FccWordWindow::new(k, h, p.rows, ColWord::BITS),
             lok_lane: FccWordWindow::new(k, h, p.rows, 1),
+            split: (0..k * h).map(|_| FccColWordSplit::default()).collect(),
             masks: FccColEdge::new(k, h),
             pd: vec_of(3),
             up: vec_of(h + 1),
@@ -160,13 +174,14 @@ impl Logic for FccColWindow {
             for hh in self._h..(self._h + 1) {
                 for r in 0..self._h {
                     for n in 0..self._h {
-                        self.ent[r * (kk - 1) + n].next = self.lane.ent[r * kk + n].val();
+                        self.split[r * (kk - 1) + n].word.next = self.lane.ent[r * kk + n].val();
                         self.ent_ok[r * (kk - 1) + n].next = self.lok_lane.ent[r * kk + n].val()
                             & self.masks.line_in[r].val()
                             & self.masks.pos_in[n].val();
                     }
                     for n in (self._h + 1)..self._k {
-                        self.ent[r * (kk - 1) + n - 1].next = self.lane.ent[r * kk + n].val();
+                        self.split[r * (kk - 1) + n - 1].word.next =
+                            self.lane.ent[r * kk + n].val();
                         self.ent_ok[r * (kk - 1) + n - 1].next = self.lok_lane.ent[r * kk + n]
                             .val()
                             & self.masks.line_in[r].val()
@@ -174,11 +189,19 @@ impl Logic for FccColWindow {
                     }
                 }
                 for m in 1..(self._h + 1) {
-                    self.ent[2 * hh * hh + m - 1].next = self.up[m].q.val();
+                    self.split[2 * hh * hh + m - 1].word.next = self.up[m].q.val();
                     self.ent_ok[2 * hh * hh + m - 1].next =
                         self.up_lok[m].q.val() & self.masks.pos_in[hh - m].val();
                 }
             }
+        }
+        for e in 0..(self._k * self._h) {
+            self.ent_x[e].next = self.split[e].x.val();
+            self.ent_y[e].next = self.split[e].y.val();
+            self.ent_z[e].next = self.split[e].z.val();
+            self.ent_key[e].next = self.split[e].key.val();
+            self.ent_cv[e].next = self.split[e].cv.val();
+            self.ent_label[e].next = self.split[e].label.val();
         }
         if self.rst.val() {
             self.pd[0].d.next.valid = false;

@@ -9,7 +9,7 @@ use fcc_params::FccParams;
 use rust_hdl::prelude::*;
 
 use super::fcc_col_window::FccColWindow;
-use super::{ColWord, RunPix};
+use super::RunPix;
 use crate::types::kb;
 
 #[derive(LogicBlock)]
@@ -42,9 +42,9 @@ pub struct FccColWindowProbe {
     pub e_label: Signal<Out, Bits<16>>,
     col_window: FccColWindow,
     slot: Signal<Local, RunPix>,
-    pick: Signal<Local, ColWord>,
     slot_zero: Constant<RunPix>,
-    word_zero: Constant<ColWord>,
+    zero16: Constant<Bits<16>>,
+    zero36: Constant<Bits<36>>,
     entry_index: Vec<Constant<Bits<8>>>,
 }
 
@@ -81,9 +81,9 @@ impl FccColWindowProbe {
             e_label: Default::default(),
             col_window: FccColWindow::new(p),
             slot: Default::default(),
-            pick: Default::default(),
             slot_zero: Constant::new(RunPix::default()),
-            word_zero: Constant::new(ColWord::default()),
+            zero16: kb(0),
+            zero36: kb(0),
             entry_index: (0..n).map(|e| kb(e as u64)).collect(),
         }
     }
@@ -113,19 +113,23 @@ impl Logic for FccColWindowProbe {
         self.c_row.next = self.col_window.centre.val().row;
         self.c_col.next = self.col_window.centre.val().col;
         self.c_label.next = self.col_window.centre.val().label;
-        self.pick.next = self.word_zero.val();
         self.e_ok.next = false;
+        self.e_x.next = self.zero16.val();
+        self.e_y.next = self.zero16.val();
+        self.e_z.next = self.zero16.val();
+        self.e_key.next = self.zero16.val();
+        self.e_cv.next = self.zero36.val();
+        self.e_label.next = self.zero16.val();
         for e in 0..self.entry_index.len() {
             if self.ent_sel.val() == self.entry_index[e].val() {
-                self.pick.next = self.col_window.ent[e].val();
                 self.e_ok.next = self.col_window.ent_ok[e].val();
+                self.e_x.next = self.col_window.ent_x[e].val();
+                self.e_y.next = self.col_window.ent_y[e].val();
+                self.e_z.next = self.col_window.ent_z[e].val();
+                self.e_key.next = self.col_window.ent_key[e].val();
+                self.e_cv.next = self.col_window.ent_cv[e].val();
+                self.e_label.next = self.col_window.ent_label[e].val();
             }
         }
-        self.e_x.next = self.pick.val().x;
-        self.e_y.next = self.pick.val().y;
-        self.e_z.next = self.pick.val().z;
-        self.e_key.next = self.pick.val().key;
-        self.e_cv.next = self.pick.val().cv;
-        self.e_label.next = self.pick.val().label;
     }
 }

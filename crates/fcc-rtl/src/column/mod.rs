@@ -6,6 +6,7 @@
 pub mod fcc_col_edge;
 pub mod fcc_col_window;
 pub mod fcc_col_window_probe;
+pub mod fcc_col_word_split;
 pub mod fcc_row_entry;
 pub mod fcc_row_runs;
 pub mod fcc_row_runs_probe;
