@@ -44,6 +44,9 @@ pub enum BenchBlock {
     /// The column core's pass-2 window `FccColWindow` behind the scalar
     /// ports of `FccColWindowProbe`.
     ColWindow,
+    /// The column core's pass-2 distance tests `FccColDist` behind the
+    /// scalar ports of `FccColDistProbe`.
+    ColDist,
 }
 
 /// One row of the table: the module's name before the configuration
@@ -71,7 +74,7 @@ impl Row {
 
 impl BenchBlock {
     /// Every block with a bench.
-    pub const ALL: [BenchBlock; 14] = [
+    pub const ALL: [BenchBlock; 15] = [
         BenchBlock::Regs,
         BenchBlock::AxilAdapter,
         BenchBlock::MergeTable,
@@ -86,6 +89,7 @@ impl BenchBlock {
         BenchBlock::WordWindow,
         BenchBlock::RowRuns,
         BenchBlock::ColWindow,
+        BenchBlock::ColDist,
     ];
 
     fn row(self) -> Row {
@@ -179,6 +183,17 @@ impl BenchBlock {
                     )
                 },
                 waivers: lint::col_window_waivers,
+            },
+            BenchBlock::ColDist => Row {
+                name: "fcc_col_dist",
+                generate: |p| {
+                    gen(
+                        p,
+                        crate::column::fcc_col_dist_probe::FccColDistProbe::new(p),
+                        "fcc_col_dist",
+                    )
+                },
+                waivers: lint::col_dist_waivers,
             },
         }
     }

@@ -177,6 +177,19 @@ pub fn col_window_waivers(p: &FccParams, name: &str) -> String {
     s
 }
 
+/// The waivers of the column distance tests' probe `name`: it keeps the
+/// centre's label only; the rest of the slot is a delay line it feeds with
+/// zeros.
+pub fn col_dist_waivers(p: &FccParams, name: &str) -> String {
+    let mut s = block_waivers(p, name);
+    s.push_str(&format!(
+        "// The probe keeps the centre's label and valid bit; the rest of the\n\
+         // slot is a delay line fed with zeros.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'col_dist$centre'*\"\n"
+    ));
+    s
+}
+
 /// The waivers of the word window's probe `name`: at K = 3 the window has
 /// one buffer and no cascade, so the cascade's enable and address are not
 /// read.

@@ -3,6 +3,8 @@
 //! Built so far: the per-row run state of pass 1 (`FccRowRuns`) and the
 //! pass-2 window (`FccColWindow`).
 
+pub mod fcc_col_dist;
+pub mod fcc_col_dist_probe;
 pub mod fcc_col_edge;
 pub mod fcc_col_window;
 pub mod fcc_col_window_probe;
