@@ -102,9 +102,11 @@ impl Record {
     }
 }
 
-/// A record being accumulated, pixel by pixel and by merging.
+/// A record being accumulated, pixel by pixel and by merging (spec §9.3):
+/// what the stream keeps per open cluster, and the reference of the column
+/// core's record accumulators. Start from `Acc::default()` (no pixel).
 #[derive(Debug, Clone, Copy)]
-pub(crate) struct Acc {
+pub struct Acc {
     pub points: u32,
     pub min_col: u32,
     pub max_col: u32,
@@ -122,6 +124,7 @@ pub(crate) struct Acc {
     pub sum_xx: i64,
     pub sum_xy: i64,
     pub sum_yy: i64,
+    /// A ring check joined two different runs of the cluster.
     pub seam: bool,
 }
 

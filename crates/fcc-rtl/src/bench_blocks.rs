@@ -47,6 +47,9 @@ pub enum BenchBlock {
     /// The column core's pass-2 distance tests `FccColDist` behind the
     /// scalar ports of `FccColDistProbe`.
     ColDist,
+    /// The column core's record accumulator (`FccAccPixel`, `FccAccMerge`)
+    /// over the four registers of `FccAccProbe`.
+    Acc,
 }
 
 /// One row of the table: the module's name before the configuration
@@ -74,7 +77,7 @@ impl Row {
 
 impl BenchBlock {
     /// Every block with a bench.
-    pub const ALL: [BenchBlock; 15] = [
+    pub const ALL: [BenchBlock; 16] = [
         BenchBlock::Regs,
         BenchBlock::AxilAdapter,
         BenchBlock::MergeTable,
@@ -90,6 +93,7 @@ impl BenchBlock {
         BenchBlock::RowRuns,
         BenchBlock::ColWindow,
         BenchBlock::ColDist,
+        BenchBlock::Acc,
     ];
 
     fn row(self) -> Row {
@@ -194,6 +198,17 @@ impl BenchBlock {
                     )
                 },
                 waivers: lint::col_dist_waivers,
+            },
+            BenchBlock::Acc => Row {
+                name: "fcc_acc",
+                generate: |p| {
+                    gen(
+                        p,
+                        crate::column::fcc_acc_probe::FccAccProbe::default(),
+                        "fcc_acc",
+                    )
+                },
+                waivers: lint::acc_waivers,
             },
         }
     }

@@ -190,6 +190,19 @@ pub fn col_dist_waivers(p: &FccParams, name: &str) -> String {
     s
 }
 
+/// The waivers of the record accumulator's probe `name`: rust-hdl emits a
+/// widening `bit_cast` as an AND with the wider mask, which zero-extends
+/// the narrower operand as intended.
+pub fn acc_waivers(p: &FccParams, name: &str) -> String {
+    let mut s = block_waivers(p, name);
+    s.push_str(&format!(
+        "// rust-hdl's widening bit_cast: an AND with the wider mask (the\n\
+         // narrower operand is zero-extended, which is the cast).\n\
+         lint_off -rule WIDTH -file \"*{name}.v\" -match \"*Operator AND expects*\"\n"
+    ));
+    s
+}
+
 /// The waivers of the word window's probe `name`: at K = 3 the window has
 /// one buffer and no cascade, so the cascade's enable and address are not
 /// read.

@@ -3,6 +3,9 @@
 //! Built so far: the per-row run state of pass 1 (`FccRowRuns`) and the
 //! pass-2 window (`FccColWindow`).
 
+pub mod fcc_acc_merge;
+pub mod fcc_acc_pixel;
+pub mod fcc_acc_probe;
 pub mod fcc_col_dist;
 pub mod fcc_col_dist_probe;
 pub mod fcc_col_edge;
@@ -151,6 +154,58 @@ pub struct ColWord {
     pub key: Bits<16>,
     pub cv: Bits<36>,
     pub label: Bits<16>,
+}
+
+/// A cluster's record being accumulated (spec §9.3), all unsigned: the
+/// core's coordinates are offset binary (`a = x + 2^15`), so the sums are
+/// of `a`, `|x|^2`, `|y|^2` and `a * b` (x, y offset binary), and the
+/// record's signed sums follow when it is written (`sum_x = sa - n 2^15`,
+/// `sum_xy = sab - 2^15 (sa + sb) + n 2^30`). Widths hold the largest
+/// hardware frame (2^19 points). No pixel: [`AccWord::empty`]'s values
+/// (every `min` at its largest, every `max` at 0).
+#[derive(Clone, Copy, Debug, PartialEq, Default, LogicStruct)]
+pub struct AccWord {
+    pub points: Bits<20>,
+    pub min_col: Bits<12>,
+    pub max_col: Bits<12>,
+    /// The largest column below `C/2` and the smallest at or above it (a
+    /// seam cluster's wrapped span), when it has one.
+    pub lo_has: Bit,
+    pub lo_max: Bits<12>,
+    pub hi_has: Bit,
+    pub hi_min: Bits<12>,
+    pub first_row: Bits<7>,
+    pub last_row: Bits<7>,
+    pub min_x: Bits<16>,
+    pub min_y: Bits<16>,
+    pub min_z: Bits<16>,
+    pub max_x: Bits<16>,
+    pub max_y: Bits<16>,
+    pub max_z: Bits<16>,
+    pub r2_min: Bits<32>,
+    pub r2_max: Bits<32>,
+    pub sa: Bits<35>,
+    pub sb: Bits<35>,
+    pub sc: Bits<35>,
+    pub sxx: Bits<50>,
+    pub syy: Bits<50>,
+    pub sab: Bits<51>,
+    pub seam: Bit,
+}
+
+impl AccWord {
+    /// The accumulator of no pixel: the identity of `FccAccMerge`.
+    pub fn empty() -> AccWord {
+        AccWord {
+            min_col: 0xfff_u64.to_bits(),
+            first_row: 0x7f_u64.to_bits(),
+            min_x: 0xffff_u64.to_bits(),
+            min_y: 0xffff_u64.to_bits(),
+            min_z: 0xffff_u64.to_bits(),
+            r2_min: 0xffff_ffff_u64.to_bits(),
+            ..AccWord::default()
+        }
+    }
 }
 
 /// The run parameters of `FccRowRuns` that encode the bridge limit and the

@@ -1,0 +1,283 @@
+//! The column core's record accumulator (`FccAccPixel` and `FccAccMerge`
+//! over the four registers of `FccAccProbe`) under Verilator, against the
+//! golden record accumulator (`fcc_golden::Acc`, spec §9.3): seeded random
+//! pixels added to slots, slots merged into others and emptied, resets;
+//! each cycle one slot is read and must hold the golden accumulator's
+//! values in the core's unsigned form (offset-binary sums, `sum(a b)` for
+//! `sum_xy`; see `AccWord`). Coordinates at the ends of the Q7.8 range and
+//! columns on both sides of `C/2` are among the pixels. A mismatch prints
+//! the cycle, the slot, expected, got and the seed.
+
+use fcc_golden::{Acc, Point};
+use fcc_params::FccParams;
+use fcc_rtl::BenchBlock;
+use fcc_sim::{c_struct, load_plain, PlainDut};
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+
+c_struct! {
+    /// Inputs of one cycle, named as the ports.
+    pub struct AcIn {
+        pub rst: u8,
+        pub add: u8,
+        pub merge: u8,
+        pub clear: u8,
+        pub s: u8,
+        pub t: u8,
+        pub x: u16,
+        pub y: u16,
+        pub z: u16,
+        pub row: u8,
+        pub col: u16,
+        pub half: u16,
+        pub rsel: u8,
+    }
+}
+
+c_struct! {
+    /// Outputs during one cycle: slot `rsel`.
+    pub struct AcOut {
+        pub o_points: u32,
+        pub o_min_col: u16,
+        pub o_max_col: u16,
+        pub o_lo_has: u8,
+        pub o_lo_max: u16,
+        pub o_hi_has: u8,
+        pub o_hi_min: u16,
+        pub o_first_row: u8,
+        pub o_last_row: u8,
+        pub o_min_x: u16,
+        pub o_min_y: u16,
+        pub o_min_z: u16,
+        pub o_max_x: u16,
+        pub o_max_y: u16,
+        pub o_max_z: u16,
+        pub o_r2_min: u32,
+        pub o_r2_max: u32,
+        pub o_sa: u64,
+        pub o_sb: u64,
+        pub o_sc: u64,
+        pub o_sxx: u64,
+        pub o_syy: u64,
+        pub o_sab: u64,
+        pub o_seam: u8,
+    }
+}
+
+const SLOTS: usize = 4;
+const K: i128 = 1 << 15;
+
+fn ob(v: i16) -> u16 {
+    (v as u16) ^ 0x8000
+}
+
+/// The fields of an accumulator in the core's form, as a comparable list.
+fn core_form(a: &Acc) -> Vec<(&'static str, u64)> {
+    if a.points == 0 {
+        // AccWord::empty.
+        return vec![
+            ("points", 0),
+            ("min_col", 0xfff),
+            ("max_col", 0),
+            ("lo_has", 0),
+            ("hi_has", 0),
+            ("first_row", 0x7f),
+            ("last_row", 0),
+            ("min_x", 0xffff),
+            ("min_y", 0xffff),
+            ("min_z", 0xffff),
+            ("max_x", 0),
+            ("max_y", 0),
+            ("max_z", 0),
+            ("r2_min", 0xffff_ffff),
+            ("r2_max", 0),
+            ("sa", 0),
+            ("sb", 0),
+            ("sc", 0),
+            ("sxx", 0),
+            ("syy", 0),
+            ("sab", 0),
+            ("seam", 0),
+        ];
+    }
+    let n = i128::from(a.points);
+    let off = |s: i64| (i128::from(s) + n * K) as u64;
+    let sab =
+        i128::from(a.sum_xy) + K * i128::from(a.sum[0]) + K * i128::from(a.sum[1]) + n * K * K;
+    let mut v = vec![
+        ("points", u64::from(a.points)),
+        ("min_col", u64::from(a.min_col)),
+        ("max_col", u64::from(a.max_col)),
+        ("lo_has", a.lo_max.is_some() as u64),
+        ("hi_has", a.hi_min.is_some() as u64),
+        ("first_row", u64::from(a.first_row)),
+        ("last_row", u64::from(a.last_row)),
+        ("min_x", u64::from(ob(a.min[0]))),
+        ("min_y", u64::from(ob(a.min[1]))),
+        ("min_z", u64::from(ob(a.min[2]))),
+        ("max_x", u64::from(ob(a.max[0]))),
+        ("max_y", u64::from(ob(a.max[1]))),
+        ("max_z", u64::from(ob(a.max[2]))),
+        ("r2_min", a.range2_min),
+        ("r2_max", a.range2_max),
+        ("sa", off(a.sum[0])),
+        ("sb", off(a.sum[1])),
+        ("sc", off(a.sum[2])),
+        ("sxx", a.sum_xx as u64),
+        ("syy", a.sum_yy as u64),
+        ("sab", sab as u64),
+        ("seam", a.seam as u64),
+    ];
+    if let Some(l) = a.lo_max {
+        v.push(("lo_max", u64::from(l)));
+    }
+    if let Some(h) = a.hi_min {
+        v.push(("hi_min", u64::from(h)));
+    }
+    v
+}
+
+fn got_form(o: &AcOut, name: &str) -> u64 {
+    match name {
+        "points" => u64::from(o.o_points),
+        "min_col" => u64::from(o.o_min_col),
+        "max_col" => u64::from(o.o_max_col),
+        "lo_has" => u64::from(o.o_lo_has),
+        "lo_max" => u64::from(o.o_lo_max),
+        "hi_has" => u64::from(o.o_hi_has),
+        "hi_min" => u64::from(o.o_hi_min),
+        "first_row" => u64::from(o.o_first_row),
+        "last_row" => u64::from(o.o_last_row),
+        "min_x" => u64::from(o.o_min_x),
+        "min_y" => u64::from(o.o_min_y),
+        "min_z" => u64::from(o.o_min_z),
+        "max_x" => u64::from(o.o_max_x),
+        "max_y" => u64::from(o.o_max_y),
+        "max_z" => u64::from(o.o_max_z),
+        "r2_min" => u64::from(o.o_r2_min),
+        "r2_max" => u64::from(o.o_r2_max),
+        "sa" => o.o_sa,
+        "sb" => o.o_sb,
+        "sc" => o.o_sc,
+        "sxx" => o.o_sxx,
+        "syy" => o.o_syy,
+        "sab" => o.o_sab,
+        "seam" => u64::from(o.o_seam),
+        _ => unreachable!("{name}"),
+    }
+}
+
+fn coord(rng: &mut ChaCha8Rng) -> i16 {
+    match rng.gen_range(0..8) {
+        0 => i16::MIN,
+        1 => i16::MAX,
+        2 => 0,
+        3 => rng.gen_range(-3..=3),
+        _ => rng.gen(),
+    }
+}
+
+#[test]
+fn accumulators_equal_the_golden_records_accumulators() {
+    let model = load_plain::<AcIn, AcOut>(BenchBlock::Acc, &FccParams::default())
+        .expect("record accumulator model");
+    let mut d = PlainDut::new(model);
+    for seed in 0..4u64 {
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        let cols: u32 = [256, 1024, 2048, 4096][seed as usize];
+        let half = cols / 2;
+        let mut slots = [Acc::default(); SLOTS];
+        d.step(&AcIn {
+            rst: 1,
+            ..AcIn::default()
+        });
+        for cycle in 0..20_000 {
+            let rsel = rng.gen_range(0..SLOTS);
+            // Two different slots (a merge takes one into the other).
+            let s = rng.gen_range(0..SLOTS);
+            let t = (s + rng.gen_range(1..SLOTS)) % SLOTS;
+            let mut i = AcIn {
+                s: s as u8,
+                t: t as u8,
+                half: half as u16,
+                rsel: rsel as u8,
+                ..AcIn::default()
+            };
+            // Mostly pixels (clusters grow), some merges, few clears.
+            match rng.gen_range(0..100) {
+                0..=79 => {
+                    let p: Point = [coord(&mut rng), coord(&mut rng), coord(&mut rng)];
+                    let (row, col) = (rng.gen_range(0..128u32), rng.gen_range(0..cols));
+                    (i.add, i.x, i.y, i.z, i.row, i.col) =
+                        (1, ob(p[0]), ob(p[1]), ob(p[2]), row as u8, col as u16);
+                }
+                80..=95 => i.merge = 1,
+                96..=98 => i.clear = 1,
+                _ => i.rst = 1,
+            }
+            let o = d.step(&i);
+            for (name, want) in core_form(&slots[rsel]) {
+                let got = got_form(&o, name);
+                assert_eq!(
+                    got, want,
+                    "cycle {cycle}, slot {rsel} ({} points), field {name}: expected {want:#x}, got {got:#x}, seed {seed}",
+                    slots[rsel].points
+                );
+            }
+            // The model, after the cycle.
+            if i.rst != 0 {
+                slots = [Acc::default(); SLOTS];
+            } else if i.add != 0 {
+                let p = [i.x, i.y, i.z].map(|v| (v ^ 0x8000) as i16);
+                slots[s].add(u32::from(i.row), u32::from(i.col), p, half);
+            } else if i.merge != 0 {
+                let other = slots[t];
+                slots[s].merge(&other);
+                slots[t] = Acc::default();
+            } else if i.clear != 0 {
+                slots[s] = Acc::default();
+            }
+        }
+    }
+}
+
+#[test]
+fn the_largest_frame_of_extreme_points_fits() {
+    // 2^19 pixels (128 x 4096) at either end of the Q7.8 range, in one
+    // slot each: every sum at its largest magnitude.
+    let model = load_plain::<AcIn, AcOut>(BenchBlock::Acc, &FccParams::default())
+        .expect("record accumulator model");
+    let mut d = PlainDut::new(model);
+    d.step(&AcIn {
+        rst: 1,
+        ..AcIn::default()
+    });
+    let ends: [Point; 2] = [[i16::MIN; 3], [i16::MAX, i16::MIN, i16::MAX]];
+    let mut slots = [Acc::default(); 2];
+    for (s, p) in ends.iter().enumerate() {
+        for k in 0..1u32 << 19 {
+            let (row, col) = (k % 128, k / 128);
+            d.step(&AcIn {
+                add: 1,
+                s: s as u8,
+                x: ob(p[0]),
+                y: ob(p[1]),
+                z: ob(p[2]),
+                row: row as u8,
+                col: col as u16,
+                half: 2048,
+                ..AcIn::default()
+            });
+            slots[s].add(row, col, *p, 2048);
+        }
+    }
+    for (s, acc) in slots.iter().enumerate() {
+        let o = d.step(&AcIn {
+            rsel: s as u8,
+            ..AcIn::default()
+        });
+        for (name, want) in core_form(acc) {
+            assert_eq!(got_form(&o, name), want, "slot {s}, field {name}");
+        }
+    }
+}
