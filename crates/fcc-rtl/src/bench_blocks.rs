@@ -50,6 +50,9 @@ pub enum BenchBlock {
     /// The column core's record accumulator (`FccAccPixel`, `FccAccMerge`)
     /// over the four registers of `FccAccProbe`.
     Acc,
+    /// The column core's record output `FccRecordOut` (with `FccRecBeats`)
+    /// behind the scalar ports of `FccRecordOutProbe`.
+    RecordOut,
 }
 
 /// One row of the table: the module's name before the configuration
@@ -77,7 +80,7 @@ impl Row {
 
 impl BenchBlock {
     /// Every block with a bench.
-    pub const ALL: [BenchBlock; 16] = [
+    pub const ALL: [BenchBlock; 17] = [
         BenchBlock::Regs,
         BenchBlock::AxilAdapter,
         BenchBlock::MergeTable,
@@ -94,6 +97,7 @@ impl BenchBlock {
         BenchBlock::ColWindow,
         BenchBlock::ColDist,
         BenchBlock::Acc,
+        BenchBlock::RecordOut,
     ];
 
     fn row(self) -> Row {
@@ -210,6 +214,13 @@ impl BenchBlock {
                 },
                 waivers: lint::acc_waivers,
             },
+            BenchBlock::RecordOut => Row::plain("fcc_record_out", |p| {
+                gen(
+                    p,
+                    crate::column::fcc_record_out_probe::FccRecordOutProbe::default(),
+                    "fcc_record_out",
+                )
+            }),
         }
     }
 

@@ -1,0 +1,117 @@
+//! `FccRecordOut`: a closed cluster's record out as its 11 beats (spec
+//! §9.4), AXI4-Stream style. `load` (taken while `idle`) keeps the
+//! accumulator, id and closing column; the beats follow, beat 0 first,
+//! each held while `valid` and not `ready`, `last` with beat 10; `idle`
+//! rises after the last is taken. `FccRecBeats` makes each beat.
+
+use rust_hdl::prelude::*;
+
+use super::fcc_rec_beats::FccRecBeats;
+use super::AccWord;
+use crate::types::kb;
+use fcc_pixel::record::RECORD_WORDS;
+
+#[derive(LogicBlock)]
+pub struct FccRecordOut {
+    pub clk: Signal<In, Clock>,
+    pub rst: Signal<In, Bit>,
+    pub load: Signal<In, Bit>,
+    pub acc: Signal<In, AccWord>,
+    pub id: Signal<In, Bits<20>>,
+    pub closed_col: Signal<In, Bits<13>>,
+    pub idle: Signal<Out, Bit>,
+    pub ready: Signal<In, Bit>,
+    pub valid: Signal<Out, Bit>,
+    pub beat: Signal<Out, Bits<64>>,
+    pub last: Signal<Out, Bit>,
+    rec: DFF<AccWord>,
+    rid: DFF<Bits<20>>,
+    rclosed: DFF<Bits<13>>,
+    count: DFF<Bits<4>>,
+    sending: DFF<Bit>,
+    beats: FccRecBeats,
+    last_beat: Constant<Bits<4>>,
+    one4: Constant<Bits<4>>,
+    zero4: Constant<Bits<4>>,
+}
+
+impl Default for FccRecordOut {
+    fn default() -> Self {
+        Self {
+            clk: Default::default(),
+            rst: Default::default(),
+            load: Default::default(),
+            acc: Default::default(),
+            id: Default::default(),
+            closed_col: Default::default(),
+            idle: Default::default(),
+            ready: Default::default(),
+            valid: Default::default(),
+            beat: Default::default(),
+            last: Default::default(),
+            rec: Default::default(),
+            rid: Default::default(),
+            rclosed: Default::default(),
+            count: Default::default(),
+            sending: Default::default(),
+            beats: Default::default(),
+            last_beat: kb(RECORD_WORDS as u64 - 1),
+            one4: kb(1),
+            zero4: kb(0),
+        }
+    }
+}
+
+impl Logic for FccRecordOut {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clk, rec, rid, rclosed, count, sending);
+        if self.load.val() & !self.sending.q.val() {
+            self.rec.d.next = self.acc.val();
+            self.rid.d.next = self.id.val();
+            self.rclosed.d.next = self.closed_col.val();
+            self.count.d.next = self.zero4.val();
+            self.sending.d.next = true;
+        }
+        self.beats.sel.next = self.count.q.val();
+        self.beats.id.next = self.rid.q.val();
+        self.beats.closed_col.next = self.rclosed.q.val();
+        self.beats.points.next = self.rec.q.val().points;
+        self.beats.min_col.next = self.rec.q.val().min_col;
+        self.beats.max_col.next = self.rec.q.val().max_col;
+        self.beats.lo_has.next = self.rec.q.val().lo_has;
+        self.beats.lo_max.next = self.rec.q.val().lo_max;
+        self.beats.hi_has.next = self.rec.q.val().hi_has;
+        self.beats.hi_min.next = self.rec.q.val().hi_min;
+        self.beats.first_row.next = self.rec.q.val().first_row;
+        self.beats.last_row.next = self.rec.q.val().last_row;
+        self.beats.min_x.next = self.rec.q.val().min_x;
+        self.beats.min_y.next = self.rec.q.val().min_y;
+        self.beats.min_z.next = self.rec.q.val().min_z;
+        self.beats.max_x.next = self.rec.q.val().max_x;
+        self.beats.max_y.next = self.rec.q.val().max_y;
+        self.beats.max_z.next = self.rec.q.val().max_z;
+        self.beats.r2_min.next = self.rec.q.val().r2_min;
+        self.beats.r2_max.next = self.rec.q.val().r2_max;
+        self.beats.sa.next = self.rec.q.val().sa;
+        self.beats.sb.next = self.rec.q.val().sb;
+        self.beats.sc.next = self.rec.q.val().sc;
+        self.beats.sxx.next = self.rec.q.val().sxx;
+        self.beats.syy.next = self.rec.q.val().syy;
+        self.beats.sab.next = self.rec.q.val().sab;
+        self.beats.seam.next = self.rec.q.val().seam;
+        self.valid.next = self.sending.q.val();
+        self.beat.next = self.beats.beat.val();
+        self.last.next = self.sending.q.val() & (self.count.q.val() == self.last_beat.val());
+        if self.sending.q.val() & self.ready.val() {
+            self.count.d.next = self.count.q.val() + self.one4.val();
+            if self.count.q.val() == self.last_beat.val() {
+                self.sending.d.next = false;
+            }
+        }
+        self.idle.next = !self.sending.q.val();
+        if self.rst.val() {
+            self.sending.d.next = false;
+        }
+    }
+}

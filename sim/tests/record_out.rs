@@ -1,0 +1,214 @@
+//! The column core's record output `fcc_record_out` (its beats from
+//! `FccRecBeats`) alone under Verilator, against the golden records' beats
+//! (`fcc_golden::Acc::record(..).hw().pack()`, spec §9.3 and §9.4): seeded
+//! random accumulators (a few pixels to many, at the ends of the Q7.8
+//! range, seam clusters with columns in both halves or one), ids and
+//! closing columns up to their widths, sent with random back-pressure; a
+//! beat must hold while `valid` and not `ready`, `last` mark beat 10,
+//! `idle` the end. A mismatch prints the record, the beat, expected, got
+//! and the seed.
+
+use fcc_golden::{Acc, Point};
+use fcc_params::FccParams;
+use fcc_pixel::record::RECORD_WORDS;
+use fcc_rtl::BenchBlock;
+use fcc_sim::{c_struct, load_plain, PlainDut};
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+
+c_struct! {
+    /// Inputs of one cycle, named as the ports.
+    pub struct RoIn {
+        pub rst: u8,
+        pub load: u8,
+        pub id: u32,
+        pub closed_col: u16,
+        pub points: u32,
+        pub min_col: u16,
+        pub max_col: u16,
+        pub lo_has: u8,
+        pub lo_max: u16,
+        pub hi_has: u8,
+        pub hi_min: u16,
+        pub first_row: u8,
+        pub last_row: u8,
+        pub min_x: u16,
+        pub min_y: u16,
+        pub min_z: u16,
+        pub max_x: u16,
+        pub max_y: u16,
+        pub max_z: u16,
+        pub r2_min: u32,
+        pub r2_max: u32,
+        pub sa: u64,
+        pub sb: u64,
+        pub sc: u64,
+        pub sxx: u64,
+        pub syy: u64,
+        pub sab: u64,
+        pub seam: u8,
+        pub ready: u8,
+    }
+}
+
+c_struct! {
+    /// Outputs during one cycle.
+    pub struct RoOut {
+        pub idle: u8,
+        pub valid: u8,
+        pub beat: u64,
+        pub last: u8,
+    }
+}
+
+const K: i128 = 1 << 15;
+
+fn ob(v: i16) -> u16 {
+    (v as u16) ^ 0x8000
+}
+
+/// The load of a record: the accumulator in the core's form (`AccWord`).
+fn load(a: &Acc, id: u32, closed_col: u16) -> RoIn {
+    let n = i128::from(a.points);
+    let off = |s: i64| (i128::from(s) + n * K) as u64;
+    let sab =
+        i128::from(a.sum_xy) + K * i128::from(a.sum[0]) + K * i128::from(a.sum[1]) + n * K * K;
+    RoIn {
+        load: 1,
+        id,
+        closed_col,
+        points: a.points,
+        min_col: a.min_col as u16,
+        max_col: a.max_col as u16,
+        lo_has: a.lo_max.is_some() as u8,
+        lo_max: a.lo_max.unwrap_or(0) as u16,
+        hi_has: a.hi_min.is_some() as u8,
+        hi_min: a.hi_min.unwrap_or(0) as u16,
+        first_row: a.first_row as u8,
+        last_row: a.last_row as u8,
+        min_x: ob(a.min[0]),
+        min_y: ob(a.min[1]),
+        min_z: ob(a.min[2]),
+        max_x: ob(a.max[0]),
+        max_y: ob(a.max[1]),
+        max_z: ob(a.max[2]),
+        r2_min: a.range2_min as u32,
+        r2_max: a.range2_max as u32,
+        sa: off(a.sum[0]),
+        sb: off(a.sum[1]),
+        sc: off(a.sum[2]),
+        sxx: a.sum_xx as u64,
+        syy: a.sum_yy as u64,
+        sab: sab as u64,
+        seam: a.seam as u8,
+        ..RoIn::default()
+    }
+}
+
+fn coord(rng: &mut ChaCha8Rng) -> i16 {
+    match rng.gen_range(0..6) {
+        0 => i16::MIN,
+        1 => i16::MAX,
+        _ => rng.gen(),
+    }
+}
+
+/// A random accumulator of up to `n` pixels of a `cols`-column frame.
+fn random_acc(rng: &mut ChaCha8Rng, cols: u32, n: u32) -> Acc {
+    let mut a = Acc::default();
+    let half = cols / 2;
+    let (c0, spread) = (rng.gen_range(0..cols), rng.gen_range(1..=cols));
+    for _ in 0..rng.gen_range(1..=n) {
+        let p: Point = [coord(rng), coord(rng), coord(rng)];
+        let col = (c0 + rng.gen_range(0..spread)) % cols;
+        a.add(rng.gen_range(0..128), col, p, half);
+    }
+    a.seam = rng.gen_bool(0.3);
+    a
+}
+
+#[test]
+fn records_leave_as_the_golden_records_beats() {
+    let model = load_plain::<RoIn, RoOut>(BenchBlock::RecordOut, &FccParams::default())
+        .expect("record output model");
+    let mut d = PlainDut::new(model);
+    let seed = 0x4ec0_0001;
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    d.step(&RoIn {
+        rst: 1,
+        ..RoIn::default()
+    });
+    let mut many = Acc::default();
+    // One record of the largest frame: 2^19 points at one end of the range.
+    for k in 0..1u32 << 19 {
+        many.add(k % 128, k / 128, [i16::MIN, i16::MAX, i16::MIN], 2048);
+    }
+    for case in 0..400 {
+        let cols = [256u32, 1024, 2048, 4096][case % 4];
+        let a = if case == 0 {
+            many
+        } else {
+            random_acc(&mut rng, cols, [1, 3, 40, 2000][case % 4])
+        };
+        let id = if case % 7 == 0 {
+            (1 << 20) - 1
+        } else {
+            rng.gen_range(1..1 << 20)
+        };
+        let closed = rng.gen_range(0..=cols) as u16;
+        let want = a.record(0, id, u32::from(closed)).hw().pack().unwrap();
+        let at = format!(
+            "case {case} ({} points, seam {}), seed {seed:#x}",
+            a.points, a.seam
+        );
+        let o = d.step(&RoIn {
+            ready: 0,
+            ..RoIn::default()
+        });
+        assert_eq!(o.idle, 1, "{at}: not idle before the load");
+        d.step(&load(&a, id, closed));
+        let mut got = Vec::new();
+        let mut held: Option<u64> = None;
+        for cycle in 0..200 {
+            let ready = rng.gen_bool(0.6);
+            let o = d.step(&RoIn {
+                ready: ready as u8,
+                // A load while sending is ignored.
+                load: (cycle == 3) as u8,
+                ..RoIn::default()
+            });
+            if o.valid == 0 {
+                assert_eq!(
+                    got.len(),
+                    RECORD_WORDS,
+                    "{at}: idle after {} beats",
+                    got.len()
+                );
+                assert_eq!(o.idle, 1, "{at}: not idle after the last beat");
+                break;
+            }
+            if let Some(h) = held {
+                assert_eq!(o.beat, h, "{at}: beat {} changed while held", got.len());
+            }
+            assert_eq!(
+                o.last != 0,
+                got.len() == RECORD_WORDS - 1,
+                "{at}: last at beat {}",
+                got.len()
+            );
+            if ready {
+                let k = got.len();
+                assert_eq!(
+                    o.beat, want[k],
+                    "{at}: beat {k}: expected {:#x}, got {:#x}",
+                    want[k], o.beat
+                );
+                got.push(o.beat);
+                held = None;
+            } else {
+                held = Some(o.beat);
+            }
+        }
+        assert_eq!(got.len(), RECORD_WORDS, "{at}: beats sent");
+    }
+}
