@@ -1,7 +1,8 @@
 //! The column core's record accumulator (`FccAccPixel` and `FccAccMerge`
 //! over the four registers of `FccAccProbe`) under Verilator, against the
 //! golden record accumulator (`fcc_golden::Acc`, spec §9.3): seeded random
-//! pixels added to slots, slots merged into others and emptied, resets;
+//! pixels (each given `ACC_PIXEL_LATENCY` cycles before its add) added to
+//! slots, slots merged into others and emptied, resets;
 //! each cycle one slot is read and must hold the golden accumulator's
 //! values in the core's unsigned form (offset-binary sums, `sum(a b)` for
 //! `sum_xy`; see `AccWord`). Coordinates at the ends of the Q7.8 range and
@@ -10,7 +11,7 @@
 
 use fcc_golden::{Acc, Point};
 use fcc_params::FccParams;
-use fcc_rtl::BenchBlock;
+use fcc_rtl::{BenchBlock, ACC_PIXEL_LATENCY};
 use fcc_sim::{c_struct, load_plain, PlainDut};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -191,31 +192,65 @@ fn accumulators_equal_the_golden_records_accumulators() {
             rst: 1,
             ..AcIn::default()
         });
-        for cycle in 0..20_000 {
-            let rsel = rng.gen_range(0..SLOTS);
-            // Two different slots (a merge takes one into the other).
-            let s = rng.gen_range(0..SLOTS);
-            let t = (s + rng.gen_range(1..SLOTS)) % SLOTS;
-            let mut i = AcIn {
-                s: s as u8,
-                t: t as u8,
-                half: half as u16,
-                rsel: rsel as u8,
-                ..AcIn::default()
-            };
-            // Mostly pixels (clusters grow), some merges, few clears.
-            match rng.gen_range(0..100) {
-                0..=79 => {
-                    let p: Point = [coord(&mut rng), coord(&mut rng), coord(&mut rng)];
-                    let (row, col) = (rng.gen_range(0..128u32), rng.gen_range(0..cols));
-                    (i.add, i.x, i.y, i.z, i.row, i.col) =
-                        (1, ob(p[0]), ob(p[1]), ob(p[2]), row as u8, col as u16);
+        // The cycles' operations, then each pixel moved to the cycle its
+        // accumulator needs it in.
+        let mut ops: Vec<AcIn> = (0..20_000)
+            .map(|_| {
+                // Two different slots (a merge takes one into the other).
+                let s = rng.gen_range(0..SLOTS);
+                let t = (s + rng.gen_range(1..SLOTS)) % SLOTS;
+                let mut i = AcIn {
+                    s: s as u8,
+                    t: t as u8,
+                    half: half as u16,
+                    rsel: rng.gen_range(0..SLOTS) as u8,
+                    ..AcIn::default()
+                };
+                // Mostly pixels (clusters grow), some merges, few clears.
+                match rng.gen_range(0..100) {
+                    0..=79 => {
+                        let p: Point = [coord(&mut rng), coord(&mut rng), coord(&mut rng)];
+                        let (row, col) = (rng.gen_range(0..128u32), rng.gen_range(0..cols));
+                        (i.add, i.x, i.y, i.z, i.row, i.col) =
+                            (1, ob(p[0]), ob(p[1]), ob(p[2]), row as u8, col as u16);
+                    }
+                    80..=95 => i.merge = 1,
+                    96..=98 => i.clear = 1,
+                    _ => i.rst = 1,
                 }
-                80..=95 => i.merge = 1,
-                96..=98 => i.clear = 1,
-                _ => i.rst = 1,
+                i
+            })
+            .collect();
+        // A reset clears the pixel's output stage: no add right after one.
+        for k in 1..ops.len() {
+            if ops[k - 1].rst != 0 {
+                ops[k].add = 0;
             }
-            let o = d.step(&i);
+        }
+        let pixels: Vec<(u16, u16, u16, u8, u16)> =
+            ops.iter().map(|i| (i.x, i.y, i.z, i.row, i.col)).collect();
+        for (k, i) in ops.iter_mut().enumerate() {
+            (i.x, i.y, i.z, i.row, i.col) = pixels
+                .get(k + ACC_PIXEL_LATENCY)
+                .copied()
+                .unwrap_or_default();
+        }
+        // The first pixels, ahead of the first operations.
+        for &(x, y, z, row, col) in &pixels[..ACC_PIXEL_LATENCY] {
+            d.step(&AcIn {
+                x,
+                y,
+                z,
+                row,
+                col,
+                half: half as u16,
+                ..AcIn::default()
+            });
+        }
+        for (cycle, i) in ops.iter().enumerate() {
+            let (s, t, rsel) = (i.s as usize, i.t as usize, i.rsel as usize);
+            let pixel = pixels[cycle];
+            let o = d.step(i);
             for (name, want) in core_form(&slots[rsel]) {
                 let got = got_form(&o, name);
                 assert_eq!(
@@ -228,8 +263,8 @@ fn accumulators_equal_the_golden_records_accumulators() {
             if i.rst != 0 {
                 slots = [Acc::default(); SLOTS];
             } else if i.add != 0 {
-                let p = [i.x, i.y, i.z].map(|v| (v ^ 0x8000) as i16);
-                slots[s].add(u32::from(i.row), u32::from(i.col), p, half);
+                let p = [pixel.0, pixel.1, pixel.2].map(|v| (v ^ 0x8000) as i16);
+                slots[s].add(u32::from(pixel.3), u32::from(pixel.4), p, half);
             } else if i.merge != 0 {
                 let other = slots[t];
                 slots[s].merge(&other);
@@ -254,11 +289,16 @@ fn the_largest_frame_of_extreme_points_fits() {
     });
     let ends: [Point; 2] = [[i16::MIN; 3], [i16::MAX, i16::MIN, i16::MAX]];
     let mut slots = [Acc::default(); 2];
+    let n = 1u32 << 19;
+    let at = |k: u32| (k % 128, k / 128);
     for (s, p) in ends.iter().enumerate() {
-        for k in 0..1u32 << 19 {
-            let (row, col) = (k % 128, k / 128);
+        // Pixel k is given ACC_PIXEL_LATENCY cycles before its add.
+        let lat = ACC_PIXEL_LATENCY as u32;
+        for k in 0..n + lat {
+            let (row, col) = at(k);
+            let add = k >= lat;
             d.step(&AcIn {
-                add: 1,
+                add: add as u8,
                 s: s as u8,
                 x: ob(p[0]),
                 y: ob(p[1]),
@@ -268,7 +308,10 @@ fn the_largest_frame_of_extreme_points_fits() {
                 half: 2048,
                 ..AcIn::default()
             });
-            slots[s].add(row, col, *p, 2048);
+            if add {
+                let (row, col) = at(k - lat);
+                slots[s].add(row, col, *p, 2048);
+            }
         }
     }
     for (s, acc) in slots.iter().enumerate() {

@@ -3,9 +3,9 @@
 //! (`fcc_golden::Acc::record(..).hw().pack()`, spec §9.3 and §9.4): seeded
 //! random accumulators (a few pixels to many, at the ends of the Q7.8
 //! range, seam clusters with columns in both halves or one), ids and
-//! closing columns up to their widths, sent with random back-pressure; a
-//! beat must hold while `valid` and not `ready`, `last` mark beat 10,
-//! `idle` the end. A mismatch prints the record, the beat, expected, got
+//! closing columns up to their widths, sent with random back-pressure; the
+//! beats start the second cycle after the load, a beat must hold while
+//! `valid` and not `ready`, `last` mark beat 10, `idle` the end. A mismatch prints the record, the beat, expected, got
 //! and the seed.
 
 use fcc_golden::{Acc, Point};
@@ -167,6 +167,9 @@ fn records_leave_as_the_golden_records_beats() {
         });
         assert_eq!(o.idle, 1, "{at}: not idle before the load");
         d.step(&load(&a, id, closed));
+        // One cycle to register the record's fields.
+        let o = d.step(&RoIn::default());
+        assert_eq!((o.valid, o.idle), (0, 0), "{at}: preparing");
         let mut got = Vec::new();
         let mut held: Option<u64> = None;
         for cycle in 0..200 {

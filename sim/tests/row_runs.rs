@@ -37,7 +37,7 @@ c_struct! {
         pub ch: u64,
         pub cv: u64,
         pub last_col: u16,
-        pub nb: u16,
+        pub reach: u16,
         pub ring_on: u8,
         pub ring_f_max: u16,
         pub ring_l_min: u16,
@@ -146,7 +146,7 @@ impl Bench {
         let mut i = RrIn {
             rst: rst as u8,
             last_col: (p.cols - 1) as u16,
-            nb: lim.nb,
+            reach: lim.reach,
             ring_on: lim.ring_on as u8,
             ring_f_max: lim.ring_f_max,
             ring_l_min: lim.ring_l_min,

@@ -214,13 +214,17 @@ impl BenchBlock {
                 },
                 waivers: lint::acc_waivers,
             },
-            BenchBlock::RecordOut => Row::plain("fcc_record_out", |p| {
-                gen(
-                    p,
-                    crate::column::fcc_record_out_probe::FccRecordOutProbe::default(),
-                    "fcc_record_out",
-                )
-            }),
+            BenchBlock::RecordOut => Row {
+                name: "fcc_record_out",
+                generate: |p| {
+                    gen(
+                        p,
+                        crate::column::fcc_record_out_probe::FccRecordOutProbe::default(),
+                        "fcc_record_out",
+                    )
+                },
+                waivers: lint::enum_block_waivers,
+            },
         }
     }
 

@@ -166,6 +166,7 @@ use rust_hdl::prelude::*;
 use thiserror::Error;
 
 pub use bench_blocks::BenchBlock;
+pub use column::fcc_acc_pixel::ACC_PIXEL_LATENCY;
 pub use column::RunLimits;
 pub use fcc_fanout_reg::MAX_FANOUT;
 pub use fcc_join_queue::JQ_HIGH_LEVEL;

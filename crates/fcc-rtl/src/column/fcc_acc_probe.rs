@@ -1,6 +1,7 @@
 //! `FccAccProbe`: `FccAccPixel` and `FccAccMerge` over four accumulator
 //! registers behind scalar ports, for their bench. Per cycle one of: `add`
-//! (slot `s` takes in the pixel), `merge` (slot `s` takes in slot `t`,
+//! (slot `s` takes in the pixel given `ACC_PIXEL_LATENCY` cycles before),
+//! `merge` (slot `s` takes in slot `t`,
 //! which is emptied), `clear` (slot `s` is emptied); `rst` empties all.
 //! Slot `rsel` comes out field by field (`o_*`), combinationally.
 
@@ -120,6 +121,8 @@ impl Default for FccAccProbe {
 impl Logic for FccAccProbe {
     #[hdl_gen]
     fn update(&mut self) {
+        self.pixel.clk.next = self.clk.val();
+        self.pixel.rst.next = self.rst.val();
         self.pixel.x.next = self.x.val();
         self.pixel.y.next = self.y.val();
         self.pixel.z.next = self.z.val();

@@ -65,7 +65,9 @@ pub struct FccColWindow {
     up: Vec<DFF<ColWord>>,
     up_lok: Vec<DFF<Bit>>,
     word: Signal<Local, ColWord>,
-    wrap_at: Signal<Local, Bits<7>>,
+    /// `R - h`: rows from here read the next column's first rows
+    /// (registered: `last_row` is constant while a frame runs).
+    wrap_at: DFF<Bits<7>>,
     rd_row: Signal<Local, Bits<7>>,
     h7: Constant<Bits<7>>,
     hm1: Constant<Bits<7>>,
@@ -116,10 +118,11 @@ impl Logic for FccColWindow {
             self.pd[i].clock.next = self.clk.val();
         }
         // ---- T0: read row (i + h) mod R of every line buffer.
-        self.wrap_at.next = self.last_row.val() - self.hm1.val();
+        dff_setup!(self, clk, wrap_at);
+        self.wrap_at.d.next = self.last_row.val() - self.hm1.val();
         self.rd_row.next = self.inp.val().row + self.h7.val();
-        if self.inp.val().row >= self.wrap_at.val() {
-            self.rd_row.next = self.inp.val().row - self.wrap_at.val();
+        if self.inp.val().row >= self.wrap_at.q.val() {
+            self.rd_row.next = self.inp.val().row - self.wrap_at.q.val();
         }
         self.lane.clk.next = self.clk.val();
         self.lane.read_en.next = self.inp.val().valid;

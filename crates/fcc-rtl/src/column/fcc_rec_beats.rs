@@ -1,6 +1,10 @@
-//! `FccRecBeats`: beat `sel` of a record (spec §9.4), combinationally, from
-//! its accumulator (`AccWord`, field by field), id and closing column. The
-//! record's fields follow from the accumulator here: the signed sums from
+//! `FccRecBeats`: beat `sel` of a record (spec §9.4) from its accumulator
+//! (`AccWord`, field by field), id and closing column given the cycle
+//! before: the record's fields are registered (every cycle), the beat is
+//! chosen from them combinationally. `sum_xy` takes one cycle more (two
+//! carry chains); its beat, 9, is read nine cycles after the first, so the
+//! model registers every field once. The record's fields follow from the
+//! accumulator here: the signed sums from
 //! the offset-binary ones (`sum_x = sa - n 2^15`, `sum_xy = sab - 2^15 (sa
 //! + sb) + n 2^30`, exact modulo their widths, which hold them), the box
 //! from offset binary, and a seam cluster's wrapped column span. The
@@ -12,6 +16,7 @@ use rust_hdl::prelude::*;
 
 #[derive(LogicBlock, Default)]
 pub struct FccRecBeats {
+    pub clk: Signal<In, Clock>,
     pub sel: Signal<In, Bits<4>>,
     pub id: Signal<In, Bits<20>>,
     pub closed_col: Signal<In, Bits<13>>,
@@ -40,33 +45,35 @@ pub struct FccRecBeats {
     pub sab: Signal<In, Bits<51>>,
     pub seam: Signal<In, Bit>,
     pub beat: Signal<Out, Bits<64>>,
+    /// Model state: the registered record's beats.
+    _words: [u64; RECORD_WORDS],
 }
 
 /// The Verilog wire holding a field's value, and its width.
 fn wire(field: RecordField) -> (&'static str, u32) {
     match field {
-        RecordField::Id => ("id", 20),
-        RecordField::Points => ("points", 20),
-        RecordField::FirstRow => ("first_row", 7),
-        RecordField::LastRow => ("last_row", 7),
-        RecordField::Seam => ("seam", 1),
+        RecordField::Id => ("f_id", 20),
+        RecordField::Points => ("f_points", 20),
+        RecordField::FirstRow => ("f_first_row", 7),
+        RecordField::LastRow => ("f_last_row", 7),
+        RecordField::Seam => ("f_seam", 1),
         RecordField::FirstCol => ("f_first_col", 13),
         RecordField::LastCol => ("f_last_col", 13),
-        RecordField::ClosedCol => ("closed_col", 13),
+        RecordField::ClosedCol => ("f_closed_col", 13),
         RecordField::Min(0) => ("f_min_x", 16),
         RecordField::Min(1) => ("f_min_y", 16),
         RecordField::Min(_) => ("f_min_z", 16),
         RecordField::Max(0) => ("f_max_x", 16),
         RecordField::Max(1) => ("f_max_y", 16),
         RecordField::Max(_) => ("f_max_z", 16),
-        RecordField::Range2Min => ("r2_min", 32),
-        RecordField::Range2Max => ("r2_max", 32),
+        RecordField::Range2Min => ("f_r2_min", 32),
+        RecordField::Range2Max => ("f_r2_max", 32),
         RecordField::Sum(0) => ("f_sum_x", 35),
         RecordField::Sum(1) => ("f_sum_y", 35),
         RecordField::Sum(_) => ("f_sum_z", 35),
-        RecordField::SumXx => ("sxx", 50),
+        RecordField::SumXx => ("f_sxx", 50),
         RecordField::SumXy => ("f_sum_xy", 51),
-        RecordField::SumYy => ("syy", 50),
+        RecordField::SumYy => ("f_syy", 50),
     }
 }
 
@@ -104,6 +111,78 @@ fn beat_cases() -> String {
 
 impl Logic for FccRecBeats {
     fn update(&mut self) {
+        if self.clk.pos_edge() {
+            self._words = self.words();
+        }
+        let sel = self.sel.val().index();
+        self.beat.next = self._words.get(sel).copied().unwrap_or(0).to_bits();
+    }
+
+    fn connect(&mut self) {
+        self.beat.connect();
+    }
+
+    fn hdl(&self) -> Verilog {
+        Verilog::Custom(format!(
+            "// The record's fields, registered.\n\
+             reg [12:0] f_first_col, f_last_col;\n\
+             reg [15:0] f_min_x, f_min_y, f_min_z, f_max_x, f_max_y, f_max_z;\n\
+             reg [34:0] f_sum_x, f_sum_y, f_sum_z;\n\
+             reg [50:0] f_sum_xy;\n\
+             reg [19:0] f_id, f_points;\n\
+             reg [6:0] f_first_row, f_last_row;\n\
+             reg f_seam;\n\
+             reg [12:0] f_closed_col;\n\
+             reg [31:0] f_r2_min, f_r2_max;\n\
+             reg [49:0] f_sxx, f_syy;\n\
+             // A seam cluster's span wraps (spec §9.3).\n\
+             wire wrap = seam & lo_has & hi_has;\n\
+             // sum_xy in two steps (its beat, 9, is read nine cycles after\n\
+             // the first): sa + sb and sab + n 2^30, then the difference.\n\
+             reg [35:0] sum_ab;\n\
+             reg [50:0] sab_n;\n\
+             always @(posedge clk) begin\n\
+             \x20   f_first_col <= {{1'b0, wrap ? hi_min : min_col}};\n\
+             \x20   f_last_col <= {{1'b0, wrap ? lo_max : max_col}};\n\
+             \x20   // The box in two's complement.\n\
+             \x20   f_min_x <= min_x ^ 16'h8000;\n\
+             \x20   f_min_y <= min_y ^ 16'h8000;\n\
+             \x20   f_min_z <= min_z ^ 16'h8000;\n\
+             \x20   f_max_x <= max_x ^ 16'h8000;\n\
+             \x20   f_max_y <= max_y ^ 16'h8000;\n\
+             \x20   f_max_z <= max_z ^ 16'h8000;\n\
+             \x20   // The signed sums from the offset-binary ones.\n\
+             \x20   f_sum_x <= sa - {{points, 15'd0}};\n\
+             \x20   f_sum_y <= sb - {{points, 15'd0}};\n\
+             \x20   f_sum_z <= sc - {{points, 15'd0}};\n\
+             \x20   sum_ab <= {{1'b0, sa}} + {{1'b0, sb}};\n\
+             \x20   sab_n <= sab + {{1'b0, points, 30'd0}};\n\
+             \x20   f_sum_xy <= sab_n - {{sum_ab, 15'd0}};\n\
+             \x20   f_id <= id;\n\
+             \x20   f_points <= points;\n\
+             \x20   f_first_row <= first_row;\n\
+             \x20   f_last_row <= last_row;\n\
+             \x20   f_seam <= seam;\n\
+             \x20   f_closed_col <= closed_col;\n\
+             \x20   f_r2_min <= r2_min;\n\
+             \x20   f_r2_max <= r2_max;\n\
+             \x20   f_sxx <= sxx;\n\
+             \x20   f_syy <= syy;\n\
+             end\n\
+             always @(*) begin\n\
+             \x20   case (sel)\n\
+             {cases}\
+             \x20   default: beat = 64'd0;\n\
+             \x20   endcase\n\
+             end\n",
+            cases = beat_cases()
+        ))
+    }
+}
+
+impl FccRecBeats {
+    /// The beats of the record at the inputs.
+    fn words(&self) -> [u64; RECORD_WORDS] {
         let u = |v: u64| v as i64;
         let n = self.points.val().index() as i64;
         let (sa, sb, sc) = (
@@ -144,41 +223,6 @@ impl Logic for FccRecBeats {
             sum_xy: u(self.sab.val().index() as u64) - ((sa + sb) << 15) + (n << 30),
             sum_yy: u(self.syy.val().index() as u64),
         };
-        let words = r.pack().unwrap_or([0; RECORD_WORDS]);
-        let sel = self.sel.val().index();
-        self.beat.next = words.get(sel).copied().unwrap_or(0).to_bits();
-    }
-
-    fn connect(&mut self) {
-        self.beat.connect();
-    }
-
-    fn hdl(&self) -> Verilog {
-        Verilog::Custom(format!(
-            "// A seam cluster's span wraps (spec §9.3).\n\
-             wire wrap = seam & lo_has & hi_has;\n\
-             wire [12:0] f_first_col = {{1'b0, wrap ? hi_min : min_col}};\n\
-             wire [12:0] f_last_col = {{1'b0, wrap ? lo_max : max_col}};\n\
-             // The box in two's complement.\n\
-             wire [15:0] f_min_x = min_x ^ 16'h8000;\n\
-             wire [15:0] f_min_y = min_y ^ 16'h8000;\n\
-             wire [15:0] f_min_z = min_z ^ 16'h8000;\n\
-             wire [15:0] f_max_x = max_x ^ 16'h8000;\n\
-             wire [15:0] f_max_y = max_y ^ 16'h8000;\n\
-             wire [15:0] f_max_z = max_z ^ 16'h8000;\n\
-             // The signed sums from the offset-binary ones.\n\
-             wire [34:0] f_sum_x = sa - {{points, 15'd0}};\n\
-             wire [34:0] f_sum_y = sb - {{points, 15'd0}};\n\
-             wire [34:0] f_sum_z = sc - {{points, 15'd0}};\n\
-             wire [35:0] sum_ab = {{1'b0, sa}} + {{1'b0, sb}};\n\
-             wire [50:0] f_sum_xy = sab - {{sum_ab, 15'd0}} + {{1'b0, points, 30'd0}};\n\
-             always @(*) begin\n\
-             \x20   case (sel)\n\
-             {cases}\
-             \x20   default: beat = 64'd0;\n\
-             \x20   endcase\n\
-             end\n",
-            cases = beat_cases()
-        ))
+        r.pack().unwrap_or([0; RECORD_WORDS])
     }
 }

@@ -1,8 +1,9 @@
 //! `FccRecordOut`: a closed cluster's record out as its 11 beats (spec
 //! §9.4), AXI4-Stream style. `load` (taken while `idle`) keeps the
-//! accumulator, id and closing column; the beats follow, beat 0 first,
-//! each held while `valid` and not `ready`, `last` with beat 10; `idle`
-//! rises after the last is taken. `FccRecBeats` makes each beat.
+//! accumulator, id and closing column; `FccRecBeats` registers the
+//! record's fields from them (`Prep`, one cycle), then the beats follow
+//! (`Send`), beat 0 first, each held while `valid` and not `ready`, `last`
+//! with beat 10; `idle` rises after the last is taken.
 
 use rust_hdl::prelude::*;
 
@@ -10,6 +11,14 @@ use super::fcc_rec_beats::FccRecBeats;
 use super::AccWord;
 use crate::types::kb;
 use fcc_pixel::record::RECORD_WORDS;
+
+/// Where the output is (see the module doc).
+#[derive(Copy, Clone, Debug, PartialEq, LogicState)]
+pub enum OutState {
+    Idle,
+    Prep,
+    Send,
+}
 
 #[derive(LogicBlock)]
 pub struct FccRecordOut {
@@ -28,7 +37,7 @@ pub struct FccRecordOut {
     rid: DFF<Bits<20>>,
     rclosed: DFF<Bits<13>>,
     count: DFF<Bits<4>>,
-    sending: DFF<Bit>,
+    state: DFF<OutState>,
     beats: FccRecBeats,
     last_beat: Constant<Bits<4>>,
     one4: Constant<Bits<4>>,
@@ -53,7 +62,7 @@ impl Default for FccRecordOut {
             rid: Default::default(),
             rclosed: Default::default(),
             count: Default::default(),
-            sending: Default::default(),
+            state: Default::default(),
             beats: Default::default(),
             last_beat: kb(RECORD_WORDS as u64 - 1),
             one4: kb(1),
@@ -65,14 +74,18 @@ impl Default for FccRecordOut {
 impl Logic for FccRecordOut {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clk, rec, rid, rclosed, count, sending);
-        if self.load.val() & !self.sending.q.val() {
+        dff_setup!(self, clk, rec, rid, rclosed, count, state);
+        if self.load.val() & (self.state.q.val() == OutState::Idle) {
             self.rec.d.next = self.acc.val();
             self.rid.d.next = self.id.val();
             self.rclosed.d.next = self.closed_col.val();
             self.count.d.next = self.zero4.val();
-            self.sending.d.next = true;
+            self.state.d.next = OutState::Prep;
         }
+        if self.state.q.val() == OutState::Prep {
+            self.state.d.next = OutState::Send;
+        }
+        self.beats.clk.next = self.clk.val();
         self.beats.sel.next = self.count.q.val();
         self.beats.id.next = self.rid.q.val();
         self.beats.closed_col.next = self.rclosed.q.val();
@@ -100,18 +113,19 @@ impl Logic for FccRecordOut {
         self.beats.syy.next = self.rec.q.val().syy;
         self.beats.sab.next = self.rec.q.val().sab;
         self.beats.seam.next = self.rec.q.val().seam;
-        self.valid.next = self.sending.q.val();
+        self.valid.next = self.state.q.val() == OutState::Send;
         self.beat.next = self.beats.beat.val();
-        self.last.next = self.sending.q.val() & (self.count.q.val() == self.last_beat.val());
-        if self.sending.q.val() & self.ready.val() {
+        self.last.next =
+            (self.state.q.val() == OutState::Send) & (self.count.q.val() == self.last_beat.val());
+        if (self.state.q.val() == OutState::Send) & self.ready.val() {
             self.count.d.next = self.count.q.val() + self.one4.val();
             if self.count.q.val() == self.last_beat.val() {
-                self.sending.d.next = false;
+                self.state.d.next = OutState::Idle;
             }
         }
-        self.idle.next = !self.sending.q.val();
+        self.idle.next = self.state.q.val() == OutState::Idle;
         if self.rst.val() {
-            self.sending.d.next = false;
+            self.state.d.next = OutState::Idle;
         }
     }
 }

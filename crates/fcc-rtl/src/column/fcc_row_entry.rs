@@ -6,12 +6,11 @@
 //!   frame's column 0 the entry read is ignored (every row is visited
 //!   there, so every entry is written before it is read again).
 //! * Pass 1 (spec §3): the pixel is tested against the row's latest valid
-//!   pixel (`near_en`) when at most `nb` empty pixels lie between them (the
-//!   bridge limit: `nb` is `min(N_b, 4095)`, 4095 when unlimited, more than
-//!   any gap); the pair's addend is the one of its point with the smaller
-//!   key, as `FccIntraThr` picks it (spec §2).
+//!   pixel (`near_en`) when the bridge reaches it (the bridge limit: the
+//!   entry keeps the last column the latest pixel reaches, `l_col + reach`,
+//!   `reach` as `RunLimits` gives it, so the test is one comparison).
 //! * The ring check (at the last column) tests the row's first valid pixel
-//!   against its last, with the new entry's two points (`ring_c`).
+//!   against its last: the new entry's two points.
 //! * What the label decision needs (`ctl`): the row's labels (0 where it
 //!   has none), hold 2 (the bridge reaches the next column), the ring reach
 //!   of the first and latest pixels after this one (`ring_on`: `N_r >= 1`;
@@ -36,26 +35,30 @@ pub struct FccRowEntry {
     pub labs: Signal<In, RowLabs>,
     // Run parameters.
     pub last_col: Signal<In, Bits<12>>,
-    pub nb: Signal<In, Bits<12>>,
+    /// The last column the bridge reaches from this pixel, `col + reach`
+    /// saturated at 4095 (worked out a stage earlier).
+    pub dead: Signal<In, Bits<12>>,
     pub ring_on: Signal<In, Bit>,
     pub ring_f_max: Signal<In, Bits<12>>,
     pub ring_l_min: Signal<In, Bits<12>>,
     /// The row's new entry.
     pub wr: Signal<Out, RowPts>,
     pub ctl: Signal<Out, RunCtl>,
-    /// The pass-1 test applies, and the addends of the two tests.
+    /// The pass-1 test applies.
     pub near_en: Signal<Out, Bit>,
-    pub near_c: Signal<Out, Bits<36>>,
-    pub ring_c: Signal<Out, Bits<36>>,
     fresh: Signal<Local, Bit>,
     l_has: Signal<Local, Bit>,
     f_has: Signal<Local, Bit>,
     point: Signal<Local, Bit>,
-    gap: Signal<Local, Bits<12>>,
     nw: Signal<Local, RowPts>,
     is_last: Signal<Local, Bit>,
+    f_in: Signal<Local, Bit>,
+    l_in: Signal<Local, Bit>,
+    /// The row's labels, 0 where it has none.
+    lm: Signal<Local, Bits<16>>,
+    fm: Signal<Local, Bits<16>>,
+    hm: Signal<Local, Bits<16>>,
     zero12: Constant<Bits<12>>,
-    one12: Constant<Bits<12>>,
     zero16: Constant<Bits<16>>,
 }
 
@@ -69,24 +72,25 @@ impl Default for FccRowEntry {
             pts: Default::default(),
             labs: Default::default(),
             last_col: Default::default(),
-            nb: Default::default(),
+            dead: Default::default(),
             ring_on: Default::default(),
             ring_f_max: Default::default(),
             ring_l_min: Default::default(),
             wr: Default::default(),
             ctl: Default::default(),
             near_en: Default::default(),
-            near_c: Default::default(),
-            ring_c: Default::default(),
             fresh: Default::default(),
             l_has: Default::default(),
             f_has: Default::default(),
             point: Default::default(),
-            gap: Default::default(),
             nw: Default::default(),
             is_last: Default::default(),
+            f_in: Default::default(),
+            l_in: Default::default(),
+            lm: Default::default(),
+            fm: Default::default(),
+            hm: Default::default(),
             zero12: kb(0),
-            one12: kb(1),
             zero16: kb(0),
         }
     }
@@ -99,16 +103,10 @@ impl Logic for FccRowEntry {
         self.l_has.next = !self.fresh.val() & self.pts.val().l_has;
         self.f_has.next = !self.fresh.val() & self.pts.val().f_has;
         self.point.next = self.pix.val().valid & self.pix.val().ok;
-        self.gap.next = self.pix.val().col - self.pts.val().l_col;
         self.is_last.next = self.pix.val().col == self.last_col.val();
         // ---- Pass 1 against the row's latest valid pixel.
-        self.near_en.next = self.point.val()
-            & self.l_has.val()
-            & ((self.gap.val() - self.one12.val()) <= self.nb.val());
-        self.near_c.next = self.pts.val().l_ch;
-        if self.key.val() <= self.pts.val().l_key {
-            self.near_c.next = self.ch.val();
-        }
+        self.near_en.next =
+            self.point.val() & self.l_has.val() & (self.pix.val().col <= self.pts.val().l_dead);
         // ---- The new entry.
         self.nw.next = self.pts.val();
         self.nw.next.l_has = self.l_has.val();
@@ -116,6 +114,7 @@ impl Logic for FccRowEntry {
         if self.point.val() {
             self.nw.next.l_has = true;
             self.nw.next.l_col = self.pix.val().col;
+            self.nw.next.l_dead = self.dead.val();
             self.nw.next.l_x = self.pix.val().x;
             self.nw.next.l_y = self.pix.val().y;
             self.nw.next.l_z = self.pix.val().z;
@@ -132,10 +131,6 @@ impl Logic for FccRowEntry {
             }
         }
         self.wr.next = self.nw.val();
-        self.ring_c.next = self.nw.val().l_ch;
-        if self.nw.val().f_key <= self.nw.val().l_key {
-            self.ring_c.next = self.nw.val().f_ch;
-        }
         // ---- What the label decision needs.
         self.ctl.next.valid = self.pix.val().valid;
         self.ctl.next.ok = self.pix.val().ok;
@@ -149,25 +144,49 @@ impl Logic for FccRowEntry {
         self.ctl.next.key = self.key.val();
         self.ctl.next.cv = self.cv.val();
         self.ctl.next.first_here = self.point.val() & !self.f_has.val();
-        self.ctl.next.l_lab = self.zero16.val();
+        self.lm.next = self.zero16.val();
         if self.l_has.val() {
-            self.ctl.next.l_lab = self.labs.val().l_lab;
+            self.lm.next = self.labs.val().l_lab;
         }
-        self.ctl.next.f_lab = self.zero16.val();
+        self.fm.next = self.zero16.val();
         if self.f_has.val() {
-            self.ctl.next.f_lab = self.labs.val().f_lab;
+            self.fm.next = self.labs.val().f_lab;
         }
-        self.ctl.next.h_lab = self.zero16.val();
+        self.hm.next = self.zero16.val();
         if !self.fresh.val() {
-            self.ctl.next.h_lab = self.labs.val().h_lab;
+            self.hm.next = self.labs.val().h_lab;
         }
+        self.ctl.next.l_lab = self.lm.val();
+        self.ctl.next.f_lab = self.fm.val();
+        self.ctl.next.h_lab = self.hm.val();
+        // The comparisons on the labels as read, masked after (in parallel
+        // with the masks): a row has a first valid pixel exactly when it has
+        // a latest one.
+        self.ctl.next.l_nz = self.l_has.val() & (self.labs.val().l_lab != self.zero16.val());
+        self.ctl.next.f_nz = self.f_has.val() & (self.labs.val().f_lab != self.zero16.val());
+        self.ctl.next.h_nz = !self.fresh.val() & (self.labs.val().h_lab != self.zero16.val());
+        self.ctl.next.l_ne_h = !self.fresh.val() & (self.labs.val().h_lab != self.zero16.val());
+        if self.l_has.val() {
+            self.ctl.next.l_ne_h = self.labs.val().l_lab != self.labs.val().h_lab;
+        }
+        self.ctl.next.f_ne_l = self.f_has.val() & (self.labs.val().f_lab != self.labs.val().l_lab);
         self.ctl.next.bridge_h = !self.is_last.val()
-            & (self.point.val() | (self.l_has.val() & (self.gap.val() <= self.nb.val())));
+            & (self.point.val()
+                | (self.l_has.val() & (self.pix.val().col < self.pts.val().l_dead)));
+        // The reach of the first and latest pixels after this one, compared
+        // on both candidates (the entry's, the pixel's) and then chosen.
+        self.f_in.next = self.pix.val().col <= self.ring_f_max.val();
+        if self.f_has.val() {
+            self.f_in.next = self.pts.val().f_col <= self.ring_f_max.val();
+        }
+        self.l_in.next = self.pts.val().l_col >= self.ring_l_min.val();
+        if self.point.val() {
+            self.l_in.next = self.pix.val().col >= self.ring_l_min.val();
+        }
         self.ctl.next.ring_geom = self.ring_on.val()
-            & self.nw.val().f_has
-            & self.nw.val().l_has
-            & (self.nw.val().f_col <= self.ring_f_max.val())
-            & (self.nw.val().l_col >= self.ring_l_min.val());
+            & (self.f_has.val() | self.point.val())
+            & self.f_in.val()
+            & self.l_in.val();
         self.ctl.next.first_reach =
             self.ring_on.val() & (self.pix.val().col <= self.ring_f_max.val());
         self.ctl.next.last_col = self.is_last.val();

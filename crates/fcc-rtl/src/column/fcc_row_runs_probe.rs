@@ -27,7 +27,7 @@ pub struct FccRowRunsProbe {
     pub ch: Signal<In, Bits<36>>,
     pub cv: Signal<In, Bits<36>>,
     pub last_col: Signal<In, Bits<12>>,
-    pub nb: Signal<In, Bits<12>>,
+    pub reach: Signal<In, Bits<12>>,
     pub ring_on: Signal<In, Bit>,
     pub ring_f_max: Signal<In, Bits<12>>,
     pub ring_l_min: Signal<In, Bits<12>>,
@@ -78,7 +78,7 @@ impl FccRowRunsProbe {
             ch: Default::default(),
             cv: Default::default(),
             last_col: Default::default(),
-            nb: Default::default(),
+            reach: Default::default(),
             ring_on: Default::default(),
             ring_f_max: Default::default(),
             ring_l_min: Default::default(),
@@ -132,7 +132,7 @@ impl Logic for FccRowRunsProbe {
         self.runs.ch.next = self.ch.val();
         self.runs.cv.next = self.cv.val();
         self.runs.last_col.next = self.last_col.val();
-        self.runs.nb.next = self.nb.val();
+        self.runs.reach.next = self.reach.val();
         self.runs.ring_on.next = self.ring_on.val();
         self.runs.ring_f_max.next = self.ring_f_max.val();
         self.runs.ring_l_min.next = self.ring_l_min.val();

@@ -1,5 +1,5 @@
 //! `FccRunDecide`: a pixel's label and its row's new labels
-//! (combinational; `FccRowRuns` stage N9, when the distance units answer).
+//! (combinational; `FccRowRuns` stage N10, when the distance units answer).
 //!
 //! * A point within `tH` of its row's latest valid pixel (`near_hit`)
 //!   continues that pixel's run and takes its label (0 when that run is
@@ -36,6 +36,11 @@ pub struct FccRunDecide {
     point: Signal<Local, Bit>,
     newrun: Signal<Local, Bit>,
     lab: Signal<Local, Bits<16>>,
+    taken: Signal<Local, Bit>,
+    lab_nz: Signal<Local, Bit>,
+    l_nz: Signal<Local, Bit>,
+    f_nz: Signal<Local, Bit>,
+    held: Signal<Local, Bit>,
     l_lab: Signal<Local, Bits<16>>,
     f_lab: Signal<Local, Bits<16>>,
     h_lab: Signal<Local, Bits<16>>,
@@ -57,6 +62,11 @@ impl Default for FccRunDecide {
             point: Default::default(),
             newrun: Default::default(),
             lab: Default::default(),
+            taken: Default::default(),
+            lab_nz: Default::default(),
+            l_nz: Default::default(),
+            f_nz: Default::default(),
+            held: Default::default(),
             l_lab: Default::default(),
             f_lab: Default::default(),
             h_lab: Default::default(),
@@ -72,37 +82,48 @@ impl Logic for FccRunDecide {
         self.point.next = self.ctl.val().valid & self.ctl.val().ok;
         self.newrun.next = self.point.val() & !self.near_hit.val();
         self.take.next = self.newrun.val() & self.free_ok.val();
+        self.taken.next = self.newrun.val() & self.free_ok.val();
         self.lab.next = self.zero16.val();
         if self.near_hit.val() {
             self.lab.next = self.ctl.val().l_lab;
         }
-        if self.newrun.val() & self.free_ok.val() {
+        if self.taken.val() {
             self.lab.next = self.free_label.val();
         }
+        // Free labels are never 0.
+        self.lab_nz.next = (self.near_hit.val() & self.ctl.val().l_nz) | self.taken.val();
         // ---- The row's labels after this pixel.
         self.l_lab.next = self.ctl.val().l_lab;
+        self.l_nz.next = self.ctl.val().l_nz;
         if self.point.val() {
             self.l_lab.next = self.lab.val();
+            self.l_nz.next = self.lab_nz.val();
         }
         self.f_lab.next = self.ctl.val().f_lab;
+        self.f_nz.next = self.ctl.val().f_nz;
         if self.ctl.val().first_here {
             self.f_lab.next = self.lab.val();
+            self.f_nz.next = self.lab_nz.val();
         }
+        self.held.next = (self.ctl.val().bridge_h | (self.ctl.val().ring_geom & self.f_nz.val()))
+            & self.l_nz.val();
         self.h_lab.next = self.zero16.val();
-        if (self.ctl.val().bridge_h
-            | (self.ctl.val().ring_geom & (self.f_lab.val() != self.zero16.val())))
-            & (self.l_lab.val() != self.zero16.val())
-        {
+        if self.held.val() {
             self.h_lab.next = self.l_lab.val();
         }
-        self.changed.next = self.ctl.val().valid & (self.h_lab.val() != self.ctl.val().h_lab);
+        // The held label changes: to a label just taken (never one in use),
+        // or from the row's latest label to another, or to none.
+        self.changed.next = self.ctl.val().h_nz;
+        if self.held.val() {
+            self.changed.next = self.taken.val() | self.ctl.val().l_ne_h;
+        }
         self.labs.next.l_lab = self.l_lab.val();
         self.labs.next.f_lab = self.f_lab.val();
         self.labs.next.h_lab = self.h_lab.val();
         // ---- The pixel out.
         self.out.next.valid = self.ctl.val().valid;
         self.out.next.ok = self.ctl.val().ok;
-        self.out.next.lok = self.point.val() & (self.lab.val() != self.zero16.val());
+        self.out.next.lok = self.point.val() & self.lab_nz.val();
         self.out.next.x = self.ctl.val().x;
         self.out.next.y = self.ctl.val().y;
         self.out.next.z = self.ctl.val().z;
@@ -114,23 +135,25 @@ impl Logic for FccRunDecide {
         self.out.next.key = self.ctl.val().key;
         self.out.next.cv = self.ctl.val().cv;
         self.out.next.label = self.lab.val();
-        self.out.next.start = self.newrun.val() & self.free_ok.val();
+        self.out.next.start = self.taken.val();
         self.out.next.refused = self.newrun.val() & !self.free_ok.val();
-        self.out.next.ring_first = self.ctl.val().first_here
-            & self.ctl.val().first_reach
-            & (self.lab.val() != self.zero16.val());
+        self.out.next.ring_first =
+            self.ctl.val().first_here & self.ctl.val().first_reach & self.lab_nz.val();
+        // The ring pair differs unless the first pixel is this one; a label
+        // just taken differs from the first run's (held open by hold 3).
         self.out.next.ring = self.ctl.val().valid
             & self.ctl.val().last_col
             & self.ctl.val().ring_geom
             & self.ring_hit.val()
-            & (self.f_lab.val() != self.zero16.val())
-            & (self.l_lab.val() != self.zero16.val())
-            & (self.f_lab.val() != self.l_lab.val());
+            & self.f_nz.val()
+            & self.l_nz.val()
+            & !self.ctl.val().first_here
+            & (self.taken.val() | self.ctl.val().f_ne_l);
         self.out.next.ring_a = self.f_lab.val();
         self.out.next.ring_b = self.l_lab.val();
         self.out.next.hold_drop = self.zero16.val();
         self.out.next.hold_add = self.zero16.val();
-        if self.changed.val() {
+        if self.ctl.val().valid & self.changed.val() {
             self.out.next.hold_drop = self.ctl.val().h_lab;
             self.out.next.hold_add = self.h_lab.val();
         }

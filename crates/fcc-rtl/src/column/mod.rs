@@ -47,6 +47,9 @@ pub struct ColPix {
 pub struct RowPts {
     pub l_has: Bit,
     pub l_col: Bits<12>,
+    /// The last column the bridge reaches from the latest valid pixel,
+    /// `l_col + reach` (at most 4095).
+    pub l_dead: Bits<12>,
     pub l_x: Bits<16>,
     pub l_y: Bits<16>,
     pub l_z: Bits<16>,
@@ -93,6 +96,13 @@ pub struct RunCtl {
     pub l_lab: Bits<16>,
     pub f_lab: Bits<16>,
     pub h_lab: Bits<16>,
+    /// Their comparisons, made here so that the decision compares nothing:
+    /// `l_lab`, `f_lab`, `h_lab` not 0; `l_lab != h_lab`; `f_lab != l_lab`.
+    pub l_nz: Bit,
+    pub f_nz: Bit,
+    pub h_nz: Bit,
+    pub l_ne_h: Bit,
+    pub f_ne_l: Bit,
     /// Hold 2 after this column: the row's latest valid pixel may be
     /// continued at the next column (not after the last column).
     pub bridge_h: Bit,
@@ -214,13 +224,15 @@ impl AccWord {
 /// The run parameters of `FccRowRuns` that encode the bridge limit and the
 /// ring reach (spec §3) for a frame of `p.cols` columns, so that the
 /// block's tests are plain comparisons:
-/// * `nb`: `min(N_b, 4095)`, 4095 when unlimited (more than any gap);
+/// * `reach`: `min(N_b + 1, 4095)`, 4095 when unlimited: a row's latest
+///   valid pixel at column `l` continues to a pixel at `c` (at most `N_b`
+///   empty pixels between) when `c <= min(l + reach, 4095)`;
 /// * `ring_on`: `N_r >= 1` (or unlimited); with `m = min(N_r, C)`, a first
 ///   pixel reaches in columns `0 ..= ring_f_max = m - 1` and a last one in
 ///   `ring_l_min = C - m ..= C - 1` (unlimited: `C - 1` and 0).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct RunLimits {
-    pub nb: u16,
+    pub reach: u16,
     pub ring_on: bool,
     pub ring_f_max: u16,
     pub ring_l_min: u16,
@@ -231,16 +243,16 @@ impl RunLimits {
     pub fn new(p: &fcc_params::FccParams) -> RunLimits {
         const MAX12: u32 = (1 << 12) - 1;
         let cols = p.cols as u32;
-        let nb = p.bridge.map_or(MAX12, |n| n.min(MAX12)) as u16;
+        let reach = p.bridge.map_or(MAX12, |n| n.saturating_add(1).min(MAX12)) as u16;
         match p.ring_reach.map_or(cols, |n| n.min(cols)) {
             0 => RunLimits {
-                nb,
+                reach,
                 ring_on: false,
                 ring_f_max: 0,
                 ring_l_min: 0,
             },
             m => RunLimits {
-                nb,
+                reach,
                 ring_on: true,
                 ring_f_max: (m - 1) as u16,
                 ring_l_min: (cols - m) as u16,
@@ -268,8 +280,11 @@ mod tests {
                         ..FccParams::default()
                     };
                     let l = RunLimits::new(&p);
-                    for gap in 0..cols + 2 {
-                        assert_eq!(gap <= l.nb as usize, p.bridges(gap), "{p:?} gap {gap}");
+                    for last in 0..cols {
+                        for c in last + 1..cols {
+                            let dead = (last + l.reach as usize).min(4095);
+                            assert_eq!(c <= dead, p.bridges(c - last - 1), "{p:?} {last} {c}");
+                        }
                     }
                     for f in 0..cols {
                         for last in f..cols {
@@ -280,6 +295,33 @@ mod tests {
                         }
                     }
                 }
+            }
+        }
+        // The widest frame: reaches that saturate at the last column.
+        for bridge in [
+            None,
+            Some(0),
+            Some(4093),
+            Some(4094),
+            Some(4095),
+            Some(9000),
+        ] {
+            let p = FccParams {
+                cols: 4096,
+                bridge,
+                ..FccParams::default()
+            };
+            let l = RunLimits::new(&p);
+            for (last, c) in [
+                (0, 4095),
+                (0, 4094),
+                (1, 4095),
+                (4094, 4095),
+                (2000, 4095),
+                (0, 1),
+            ] {
+                let dead = (last + l.reach as usize).min(4095);
+                assert_eq!(c <= dead, p.bridges(c - last - 1), "{bridge:?} {last} {c}");
             }
         }
     }
