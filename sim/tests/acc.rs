@@ -12,6 +12,7 @@
 use fcc_golden::{Acc, Point};
 use fcc_params::FccParams;
 use fcc_rtl::{BenchBlock, ACC_PIXEL_LATENCY};
+use fcc_sim::core_form::{offset_binary as ob, CoreAcc};
 use fcc_sim::{c_struct, load_plain, PlainDut};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -66,74 +67,39 @@ c_struct! {
 }
 
 const SLOTS: usize = 4;
-const K: i128 = 1 << 15;
-
-fn ob(v: i16) -> u16 {
-    (v as u16) ^ 0x8000
-}
-
-/// The fields of an accumulator in the core's form, as a comparable list.
+/// The fields of an accumulator in the core's form, as a comparable list
+/// (a seam span's half compared only where the accumulator has it).
 fn core_form(a: &Acc) -> Vec<(&'static str, u64)> {
-    if a.points == 0 {
-        // AccWord::empty.
-        return vec![
-            ("points", 0),
-            ("min_col", 0xfff),
-            ("max_col", 0),
-            ("lo_has", 0),
-            ("hi_has", 0),
-            ("first_row", 0x7f),
-            ("last_row", 0),
-            ("min_x", 0xffff),
-            ("min_y", 0xffff),
-            ("min_z", 0xffff),
-            ("max_x", 0),
-            ("max_y", 0),
-            ("max_z", 0),
-            ("r2_min", 0xffff_ffff),
-            ("r2_max", 0),
-            ("sa", 0),
-            ("sb", 0),
-            ("sc", 0),
-            ("sxx", 0),
-            ("syy", 0),
-            ("sab", 0),
-            ("seam", 0),
-        ];
-    }
-    let n = i128::from(a.points);
-    let off = |s: i64| (i128::from(s) + n * K) as u64;
-    let sab =
-        i128::from(a.sum_xy) + K * i128::from(a.sum[0]) + K * i128::from(a.sum[1]) + n * K * K;
+    let c = CoreAcc::of(a);
     let mut v = vec![
-        ("points", u64::from(a.points)),
-        ("min_col", u64::from(a.min_col)),
-        ("max_col", u64::from(a.max_col)),
-        ("lo_has", a.lo_max.is_some() as u64),
-        ("hi_has", a.hi_min.is_some() as u64),
-        ("first_row", u64::from(a.first_row)),
-        ("last_row", u64::from(a.last_row)),
-        ("min_x", u64::from(ob(a.min[0]))),
-        ("min_y", u64::from(ob(a.min[1]))),
-        ("min_z", u64::from(ob(a.min[2]))),
-        ("max_x", u64::from(ob(a.max[0]))),
-        ("max_y", u64::from(ob(a.max[1]))),
-        ("max_z", u64::from(ob(a.max[2]))),
-        ("r2_min", a.range2_min),
-        ("r2_max", a.range2_max),
-        ("sa", off(a.sum[0])),
-        ("sb", off(a.sum[1])),
-        ("sc", off(a.sum[2])),
-        ("sxx", a.sum_xx as u64),
-        ("syy", a.sum_yy as u64),
-        ("sab", sab as u64),
-        ("seam", a.seam as u64),
+        ("points", c.points),
+        ("min_col", c.min_col),
+        ("max_col", c.max_col),
+        ("lo_has", c.lo_has),
+        ("hi_has", c.hi_has),
+        ("first_row", c.first_row),
+        ("last_row", c.last_row),
+        ("min_x", c.min[0]),
+        ("min_y", c.min[1]),
+        ("min_z", c.min[2]),
+        ("max_x", c.max[0]),
+        ("max_y", c.max[1]),
+        ("max_z", c.max[2]),
+        ("r2_min", c.r2_min),
+        ("r2_max", c.r2_max),
+        ("sa", c.sa),
+        ("sb", c.sb),
+        ("sc", c.sc),
+        ("sxx", c.sxx),
+        ("syy", c.syy),
+        ("sab", c.sab),
+        ("seam", c.seam),
     ];
-    if let Some(l) = a.lo_max {
-        v.push(("lo_max", u64::from(l)));
+    if c.lo_has != 0 {
+        v.push(("lo_max", c.lo_max));
     }
-    if let Some(h) = a.hi_min {
-        v.push(("hi_min", u64::from(h)));
+    if c.hi_has != 0 {
+        v.push(("hi_min", c.hi_min));
     }
     v
 }

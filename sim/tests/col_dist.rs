@@ -8,9 +8,10 @@
 //! a cycle early or late shows. A mismatch prints K, the case, the entry,
 //! the points, expected, got and the seed.
 
-use fcc_golden::{coarse_range2, point_threshold, Point, Thresholds};
+use fcc_golden::{Point, Thresholds};
 use fcc_params::FccParams;
-use fcc_rtl::BenchBlock;
+use fcc_rtl::{BenchBlock, COL_DIST_LATENCY};
+use fcc_sim::core_form::{offset_binary as ob, point_addends};
 use fcc_sim::{c_struct, load_plain, PlainDut};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -49,18 +50,13 @@ c_struct! {
     }
 }
 
-/// Cycles from `go` to the centre out (`SQ_LATENCY`).
-const LATENCY: usize = 7;
-const MASK36: u64 = (1 << 36) - 1;
+/// Cycles from `go` to the centre out.
+const LATENCY: usize = COL_DIST_LATENCY;
 
-fn ob(v: i16) -> u16 {
-    (v as u16) ^ 0x8000
-}
-
-/// A point's key and pass-2 addend `-max(tV^2, T_V)` (spec §2).
+/// A point's key and pass-2 addend (spec §2).
 fn key_cv(p: &FccParams, q: Point) -> (u16, u64) {
-    let tv = p.th_v_sq().max(point_threshold(p.th_v_slope_sq(), q));
-    (coarse_range2(q) as u16, (-tv) as u64 & MASK36)
+    let a = point_addends(p, q);
+    (a.key, a.cv)
 }
 
 /// An entry: labelled or not, its point and label.

@@ -11,7 +11,7 @@
 //! entry, expected, got and the seed.
 
 use fcc_params::FccParams;
-use fcc_rtl::BenchBlock;
+use fcc_rtl::{BenchBlock, COL_WINDOW_LATENCY};
 use fcc_sim::{c_struct, load_plain, PlainDut};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -54,7 +54,7 @@ c_struct! {
 }
 
 /// Cycles from a pixel to its window.
-const LATENCY: usize = 3;
+const LATENCY: usize = COL_WINDOW_LATENCY;
 
 /// A pixel's word: x, y, z, key, label, and the pass-2 addend.
 type Word = ([u16; 5], u64);

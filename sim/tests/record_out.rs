@@ -12,6 +12,7 @@ use fcc_golden::{Acc, Point};
 use fcc_params::FccParams;
 use fcc_pixel::record::RECORD_WORDS;
 use fcc_rtl::BenchBlock;
+use fcc_sim::core_form::CoreAcc;
 use fcc_sim::{c_struct, load_plain, PlainDut};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -61,46 +62,37 @@ c_struct! {
     }
 }
 
-const K: i128 = 1 << 15;
-
-fn ob(v: i16) -> u16 {
-    (v as u16) ^ 0x8000
-}
-
 /// The load of a record: the accumulator in the core's form (`AccWord`).
 fn load(a: &Acc, id: u32, closed_col: u16) -> RoIn {
-    let n = i128::from(a.points);
-    let off = |s: i64| (i128::from(s) + n * K) as u64;
-    let sab =
-        i128::from(a.sum_xy) + K * i128::from(a.sum[0]) + K * i128::from(a.sum[1]) + n * K * K;
+    let c = CoreAcc::of(a);
     RoIn {
         load: 1,
         id,
         closed_col,
-        points: a.points,
-        min_col: a.min_col as u16,
-        max_col: a.max_col as u16,
-        lo_has: a.lo_max.is_some() as u8,
-        lo_max: a.lo_max.unwrap_or(0) as u16,
-        hi_has: a.hi_min.is_some() as u8,
-        hi_min: a.hi_min.unwrap_or(0) as u16,
-        first_row: a.first_row as u8,
-        last_row: a.last_row as u8,
-        min_x: ob(a.min[0]),
-        min_y: ob(a.min[1]),
-        min_z: ob(a.min[2]),
-        max_x: ob(a.max[0]),
-        max_y: ob(a.max[1]),
-        max_z: ob(a.max[2]),
-        r2_min: a.range2_min as u32,
-        r2_max: a.range2_max as u32,
-        sa: off(a.sum[0]),
-        sb: off(a.sum[1]),
-        sc: off(a.sum[2]),
-        sxx: a.sum_xx as u64,
-        syy: a.sum_yy as u64,
-        sab: sab as u64,
-        seam: a.seam as u8,
+        points: c.points as u32,
+        min_col: c.min_col as u16,
+        max_col: c.max_col as u16,
+        lo_has: c.lo_has as u8,
+        lo_max: c.lo_max as u16,
+        hi_has: c.hi_has as u8,
+        hi_min: c.hi_min as u16,
+        first_row: c.first_row as u8,
+        last_row: c.last_row as u8,
+        min_x: c.min[0] as u16,
+        min_y: c.min[1] as u16,
+        min_z: c.min[2] as u16,
+        max_x: c.max[0] as u16,
+        max_y: c.max[1] as u16,
+        max_z: c.max[2] as u16,
+        r2_min: c.r2_min as u32,
+        r2_max: c.r2_max as u32,
+        sa: c.sa,
+        sb: c.sb,
+        sc: c.sc,
+        sxx: c.sxx,
+        syy: c.syy,
+        sab: c.sab,
+        seam: c.seam as u8,
         ..RoIn::default()
     }
 }

@@ -13,9 +13,10 @@
 
 use std::collections::{HashMap, VecDeque};
 
-use fcc_golden::{coarse_range2, point_threshold, Frame, Point, Stream, Thresholds};
+use fcc_golden::{Frame, Point, Stream, Thresholds};
 use fcc_params::FccParams;
-use fcc_rtl::{BenchBlock, RunLimits};
+use fcc_rtl::{BenchBlock, RunLimits, THR_LAG};
+use fcc_sim::core_form::{offset_binary as ob, point_addends};
 use fcc_sim::{c_struct, load_plain, PlainDut};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -75,22 +76,6 @@ c_struct! {
     }
 }
 
-/// A point's key and `FccSqDist` addends (spec §2): `rc2`,
-/// `-(max(tH^2, T_H) + 1)` and `-max(tV^2, T_V)`.
-fn thresholds(p: &FccParams, q: Point) -> (u16, u64, u64) {
-    let th = p.th_h_sq().max(point_threshold(p.th_h_slope_sq(), q));
-    let tv = p.th_v_sq().max(point_threshold(p.th_v_slope_sq(), q));
-    (
-        coarse_range2(q) as u16,
-        (-(th + 1)) as u64 & MASK36,
-        (-tv) as u64 & MASK36,
-    )
-}
-
-/// Cycles from a slot to its key and addends (`FccPixThr`'s lag).
-const THR_LAG: usize = 2;
-const MASK36: u64 = (1 << 36) - 1;
-
 /// How a frame is fed.
 #[derive(Debug, Clone, Copy)]
 struct Feed {
@@ -118,10 +103,6 @@ struct Bench {
     outs: HashMap<(usize, usize), RrOut>,
     seed: u64,
     what: String,
-}
-
-fn ob(v: i16) -> u16 {
-    (v as u16) ^ 0x8000
 }
 
 impl Bench {
@@ -170,7 +151,8 @@ impl Bench {
                 i.x = ob(q[0]);
                 i.y = ob(q[1]);
                 i.z = ob(q[2]);
-                thr = thresholds(p, q);
+                let a = point_addends(p, q);
+                thr = (a.key, a.ch, a.cv);
             }
         }
         self.lag.push_back(thr);
@@ -356,8 +338,12 @@ fn check_frame(
                     (ob(q[0]), ob(q[1]), ob(q[2])),
                     "{at}: point"
                 );
-                let (key, _, cv) = thresholds(p, q);
-                assert_eq!((o.o_key, o.o_cv), (key, cv), "{at}: key and pass-2 addend");
+                let a = point_addends(p, q);
+                assert_eq!(
+                    (o.o_key, o.o_cv),
+                    (a.key, a.cv),
+                    "{at}: key and pass-2 addend"
+                );
                 // Spec §3: does this point start a run?
                 let starts = match latest[r] {
                     Some((lc, lp, _)) => !(p.bridges(c - lc - 1) && th.continues(q, lp)),

@@ -167,9 +167,12 @@ use thiserror::Error;
 
 pub use bench_blocks::BenchBlock;
 pub use column::fcc_acc_pixel::ACC_PIXEL_LATENCY;
+pub use column::fcc_col_dist::COL_DIST_LATENCY;
+pub use column::fcc_col_window::COL_WINDOW_LATENCY;
 pub use column::RunLimits;
 pub use fcc_fanout_reg::MAX_FANOUT;
 pub use fcc_join_queue::JQ_HIGH_LEVEL;
+pub use fcc_pix_thr::THR_LAG;
 pub use fcc_regs::FccRegs;
 pub use fcc_top::{FccTop, CREDITS};
 

@@ -16,6 +16,9 @@ use crate::fcc_sq_dist::SQ_LATENCY;
 use crate::fcc_thr_window::THR_WIN_LAG;
 use crate::types::vec_of;
 
+/// Cycles from the window to `hit` and `centre`.
+pub const COL_DIST_LATENCY: usize = SQ_LATENCY;
+
 // The delay lines below are written out for these latencies.
 const _: () = assert!(SQ_LATENCY == 7 && THR_WIN_LAG == 2);
 
@@ -72,7 +75,7 @@ impl FccColDist {
             cv_d: vec_of(THR_WIN_LAG * n),
             ckey_d: vec_of(THR_WIN_LAG),
             ccv_d: vec_of(THR_WIN_LAG),
-            cd: vec_of(SQ_LATENCY),
+            cd: vec_of(COL_DIST_LATENCY),
             label_d: vec_of(SQ_LATENCY * n),
             _n: n,
         }

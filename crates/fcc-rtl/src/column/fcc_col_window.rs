@@ -37,6 +37,12 @@ use super::{ColWord, RunPix};
 use crate::fcc_word_window::FccWordWindow;
 use crate::types::{kb, vec_of};
 
+/// Cycles from `inp` to `centre` and its window (T0 to T3).
+pub const COL_WINDOW_LATENCY: usize = 3;
+
+// The stages below are written out for it.
+const _: () = assert!(COL_WINDOW_LATENCY == 3);
+
 #[derive(LogicBlock)]
 pub struct FccColWindow {
     pub clk: Signal<In, Clock>,
@@ -97,7 +103,7 @@ impl FccColWindow {
             lok_lane: FccWordWindow::new(k, h, p.rows, 1),
             split: (0..k * h).map(|_| FccColWordSplit::default()).collect(),
             masks: FccColEdge::new(k, h),
-            pd: vec_of(3),
+            pd: vec_of(COL_WINDOW_LATENCY),
             up: vec_of(h + 1),
             up_lok: vec_of(h + 1),
             word: Default::default(),

@@ -81,8 +81,8 @@ impl Logic for FccRunDecide {
     fn update(&mut self) {
         self.point.next = self.ctl.val().valid & self.ctl.val().ok;
         self.newrun.next = self.point.val() & !self.near_hit.val();
-        self.take.next = self.newrun.val() & self.free_ok.val();
         self.taken.next = self.newrun.val() & self.free_ok.val();
+        self.take.next = self.taken.val();
         self.lab.next = self.zero16.val();
         if self.near_hit.val() {
             self.lab.next = self.ctl.val().l_lab;
