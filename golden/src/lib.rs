@@ -81,6 +81,8 @@ pub enum GoldenError {
         got_rows: usize,
         got_cols: usize,
     },
+    #[error("open_limit = {0} applies to the stream only: frame mode holds every cluster open until the frame ends (spec §9.1)")]
+    StreamOnly(u32),
     #[error("a column holds {got} pixels, the frame has {rows} rows")]
     ColumnLength { rows: usize, got: usize },
     #[error("the frame already has its {cols} columns: finish it before the next")]
@@ -161,6 +163,9 @@ pub fn cluster_with(
     mode: MergeMode,
 ) -> Result<Clustering, GoldenError> {
     params.validate()?;
+    if let Some(s) = params.open_limit {
+        return Err(GoldenError::StreamOnly(s));
+    }
     if frame.rows != params.rows || frame.cols != params.cols {
         return Err(GoldenError::Shape {
             rows: params.rows,

@@ -139,13 +139,18 @@ pub struct StreamStats {
     pub clusters: u32,
     /// Some run started while every provisional label was in use.
     pub overflow: bool,
-    /// Valid pixels left unlabelled by overflow.
+    /// Runs left unlabelled by the open limit (spec §9.1), labels being free.
+    pub open_refused: u32,
+    /// Valid pixels left unlabelled, by label overflow or the open limit.
     pub unlabelled: usize,
     /// Most provisional labels in use at once.
     pub peak_labels: u32,
     /// Most clusters open at once (each holds one or more of the labels in
     /// use): what a record accumulator per open cluster must hold.
     pub peak_open: u32,
+    /// Most clusters counted open by the open limit's rule (spec §9.1): an
+    /// open limit above it refuses no run.
+    pub peak_counted: u32,
 }
 
 /// The golden stream. Make one with [`Stream::new`], then per frame call
@@ -181,6 +186,9 @@ pub struct Stream {
     open: Vec<u32>,
     closing: Vec<(u32, u32)>,
     in_use: u32,
+    /// Clusters open after the previous column closed, plus the runs
+    /// labelled in this column: what the open limit counts (spec §9.1).
+    counted_open: u32,
     stats: StreamStats,
     out: Vec<Record>,
     out_points: Vec<Point>,
@@ -221,6 +229,7 @@ impl Stream {
             open: Vec::new(),
             closing: Vec::new(),
             in_use: 0,
+            counted_open: 0,
             stats: StreamStats::default(),
             out: Vec::new(),
             out_points: Vec::new(),
@@ -415,12 +424,19 @@ impl Stream {
         find(&mut self.sets.parent, x)
     }
 
-    /// A new run starting at column-order pixel `key`, if a label is free.
+    /// A new run starting at column-order pixel `key`, if a label is free
+    /// and the open limit allows it.
     fn new_run(&mut self, key: u32) -> u32 {
         if self.in_use >= self.params.max_label() {
             self.stats.overflow = true;
             return NONE;
         }
+        if !self.params.opens(self.counted_open) {
+            self.stats.open_refused += 1;
+            return NONE;
+        }
+        self.counted_open += 1;
+        self.stats.peak_counted = self.stats.peak_counted.max(self.counted_open);
         self.in_use += 1;
         self.stats.peak_labels = self.stats.peak_labels.max(self.in_use);
         self.sets.open_clusters += 1;
@@ -448,6 +464,7 @@ impl Stream {
         let th = Thresholds::new(&self.params);
         let half = (cols / 2) as u32;
         let slot = c % w;
+        self.counted_open = self.sets.open_clusters;
         for (row, o) in self.win.chunks_exact_mut(w).zip(&mut self.older) {
             // Column c's slot is emptied for the column's pixels; the rest
             // are the row's columns c - h .. c - 1. Their one run, if they

@@ -156,6 +156,11 @@ fn check_stream(p: &FccParams, f: &Frame, what: &str) {
             "{what}: beats of {r:?}"
         );
     }
+    // Frame mode has no open limit (and refuses one).
+    let unlimited = FccParams {
+        open_limit: None,
+        ..p.clone()
+    };
     let stats = s.stats();
     // Open clusters each hold a label in use; one is open while any is.
     assert!(
@@ -166,8 +171,8 @@ fn check_stream(p: &FccParams, f: &Frame, what: &str) {
     // neither, numbered 1, 2, ... in the order their first pixels arrive.
     let mut runs = Vec::new();
     s.runs_into(&mut runs).unwrap();
-    let framed_runs = fcc_golden::pass1(p, f);
-    if !stats.overflow && !framed_runs.overflow {
+    let framed_runs = fcc_golden::pass1(&unlimited, f);
+    if !stats.overflow && stats.open_refused == 0 && !framed_runs.overflow {
         if let Some(m) = partition_mismatch(&framed_runs.labels, &runs, f.cols) {
             panic!("{what}: runs differ from pass 1's: {m}");
         }
@@ -184,7 +189,7 @@ fn check_stream(p: &FccParams, f: &Frame, what: &str) {
         }
     }
     assert_eq!(next - 1, stats.runs, "{what}: runs numbered");
-    let framed = cluster(p, f, MergeMode::Exact).unwrap();
+    let framed = cluster(&unlimited, f, MergeMode::Exact).unwrap();
     // Ids 1..=n in emission order, closing columns non-decreasing, and ties
     // in column order of the first pixel.
     let n = records.len() as u32;
@@ -224,7 +229,7 @@ fn check_stream(p: &FccParams, f: &Frame, what: &str) {
     // Each record, frozen when it closed, equals the direct computation over
     // its pixels in the finished frame: no later pixel joined it. And no
     // pixel of it lies after its closing column.
-    let direct = frame_records(p, f, &labels, n, 0);
+    let direct = frame_records(&unlimited, f, &labels, n, 0);
     for (r, d) in records.iter().zip(&direct) {
         let d = Record {
             closed_col: r.closed_col,
@@ -248,7 +253,7 @@ fn check_stream(p: &FccParams, f: &Frame, what: &str) {
             assert!(!late, "{what}: record {} has a pixel after its close", r.id);
         }
     }
-    if stats.overflow || framed.overflow {
+    if stats.overflow || stats.open_refused > 0 || framed.overflow {
         return;
     }
     // The same partition as frame mode, and the same records up to id and
@@ -258,7 +263,7 @@ fn check_stream(p: &FccParams, f: &Frame, what: &str) {
         panic!("{what}: {m}");
     }
     assert_eq!(framed.clusters, n, "{what}");
-    let mut by_frame = frame_records(p, f, &framed.labels, framed.clusters, 0);
+    let mut by_frame = frame_records(&unlimited, f, &framed.labels, framed.clusters, 0);
     for r in &records {
         let k = (0..f.rows * f.cols).find(|&k| labels[k] == r.id).unwrap();
         let fr = &mut by_frame[framed.labels[k] as usize - 1];
@@ -672,4 +677,236 @@ fn stream_errors_are_clear() {
     assert_eq!(s.columns_taken(), 1);
     let bad = FccParams { fsize: 4, ..p };
     assert!(Stream::new(&bad).is_err());
+}
+
+/// The open limit (spec §9.1) read directly on the finished stream. The
+/// clusters open after column `c - 1` are the components of the graph of
+/// the labelled pixels in columns `0 ..= c - 1` (run edges: the stream's
+/// runs; window pairs of spec §4 within the thresholds; no ring check before
+/// the frame end), built here column by column with a union-find over runs,
+/// less those whose record closed before `c`. A run starting at column `c`
+/// (pass 1's runs, labels plentiful, in column order) is labelled exactly
+/// when those plus the runs labelled so far in column `c` are fewer than
+/// `S`; a refused run's pixels are all unlabelled, a labelled run's none.
+/// Returns the runs refused.
+fn check_open_limit(p: &FccParams, f: &Frame, what: &str) -> u32 {
+    let s_max = p.open_limit.expect("an open limit");
+    let mut s = Stream::new(p).unwrap();
+    let (records, labels) = stream_frame(&mut s, f);
+    let mut stream_runs = Vec::new();
+    s.runs_into(&mut stream_runs).unwrap();
+    let (rows, cols, h) = (f.rows, f.cols, p.half());
+    let unlimited = FccParams {
+        open_limit: None,
+        ..p.clone()
+    };
+    let runs = fcc_golden::pass1(&unlimited, f);
+    assert!(!runs.overflow, "{what}: pass 1 needs more label bits");
+    let th = fcc_golden::Thresholds::new(p);
+    let mut parent: Vec<u32> = vec![0; stream_runs.iter().max().map_or(0, |&m| m as usize + 1)];
+    for (k, v) in parent.iter_mut().enumerate() {
+        *v = k as u32;
+    }
+    fn find(parent: &mut [u32], mut x: u32) -> u32 {
+        while parent[x as usize] != x {
+            parent[x as usize] = parent[parent[x as usize] as usize];
+            x = parent[x as usize];
+        }
+        x
+    }
+    let mut components = 0u32;
+    let mut closed = 0u32;
+    let mut seen_run = std::collections::HashMap::new();
+    let mut refused = 0;
+    for c in 0..cols {
+        if c > 0 {
+            closed += records
+                .iter()
+                .filter(|r| r.closed_col == c as u32 - 1)
+                .count() as u32;
+        }
+        let open_before = components - closed;
+        let mut started = 0;
+        for i in 0..rows {
+            let k = i * cols + c;
+            let run = runs.labels[k];
+            if run == 0 {
+                continue;
+            }
+            let want = *seen_run.entry(run).or_insert_with(|| {
+                let ok = open_before + started < s_max;
+                started += ok as u32;
+                refused += !ok as u32;
+                ok
+            });
+            assert_eq!(
+                labels[k] != 0,
+                want,
+                "{what}: row {i}, col {c}: {open_before} clusters open after column {}, {started} runs labelled in column {c}, S = {s_max}: the run should {}be labelled",
+                c as i64 - 1,
+                if want { "" } else { "not " }
+            );
+        }
+        // Column c joins the graph: its new runs, then its window pairs.
+        for i in 0..rows {
+            let k = i * cols + c;
+            let a = stream_runs[k];
+            if a == 0 {
+                continue;
+            }
+            if c == 0 || !(0..c).any(|j| stream_runs[i * cols + j] == a) {
+                components += 1;
+            }
+            let pa = f.get(i, c).unwrap();
+            for cc in c.saturating_sub(h)..=c {
+                for ii in i.saturating_sub(h)..(i + h + 1).min(rows) {
+                    if ii == i || (cc == c && ii > i) {
+                        continue;
+                    }
+                    let b = stream_runs[ii * cols + cc];
+                    if b == 0 || !th.joins(pa, f.get(ii, cc).unwrap()) {
+                        continue;
+                    }
+                    let (ra, rb) = (find(&mut parent, a), find(&mut parent, b));
+                    if ra != rb {
+                        parent[ra as usize] = rb;
+                        components -= 1;
+                    }
+                }
+            }
+        }
+    }
+    let stats = s.stats();
+    assert_eq!(stats.open_refused, refused, "{what}: {stats:?}");
+    assert!(!stats.overflow, "{what}: labels ran out: {stats:?}");
+    assert!(
+        stats.peak_counted <= s_max && stats.peak_open <= stats.peak_counted,
+        "{what}: {stats:?}"
+    );
+    check_stream(p, f, what);
+    refused
+}
+
+/// An open limit at the most clusters counted open with none changes
+/// nothing; one below refuses a run.
+fn check_open_limit_edge(p: &FccParams, f: &Frame, what: &str) {
+    let mut s = Stream::new(p).unwrap();
+    let (records, labels) = stream_frame(&mut s, f);
+    let peak = s.stats().peak_counted;
+    assert!(s.stats().peak_open <= peak, "{what}");
+    if peak == 0 {
+        return;
+    }
+    let at = FccParams {
+        open_limit: Some(peak),
+        ..p.clone()
+    };
+    let mut s = Stream::new(&at).unwrap();
+    assert_eq!(
+        stream_frame(&mut s, f),
+        (records, labels),
+        "{what}: S = {peak}"
+    );
+    assert_eq!(check_open_limit(&at, f, what), 0);
+    if peak > 1 {
+        let below = FccParams {
+            open_limit: Some(peak - 1),
+            ..p.clone()
+        };
+        assert!(
+            check_open_limit(&below, f, what) > 0,
+            "{what}: S = {}",
+            peak - 1
+        );
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 96, ..ProptestConfig::default() })]
+
+    #[test]
+    fn the_open_limit_counts_as_the_spec_says(
+        rows in 1usize..14,
+        cols in 1usize..48,
+        k in prop::sample::select(vec![3usize, 5, 7, 11, 15]),
+        density in 5u32..100,
+        th_h in 0.1f64..1.5,
+        th_v in 0.1f64..1.5,
+        bridge in prop::option::of(0u32..6),
+        ring_reach in prop::option::of(0u32..24),
+        limit in 1u32..12,
+        seed in any::<u64>(),
+    ) {
+        let p = FccParams {
+            th_h,
+            th_v,
+            label_bits: 20,
+            bridge,
+            ring_reach,
+            open_limit: Some(limit),
+            ..params(rows, cols, k)
+        };
+        let f = random_frame(rows, cols, density, 0.3, seed);
+        let what = format!("seed {seed}, {p:?}");
+        check_open_limit(&p, &f, &what);
+        check_open_limit_edge(&FccParams { open_limit: None, ..p }, &f, &what);
+    }
+}
+
+#[test]
+fn the_open_limit_on_scenes() {
+    for (seed, k) in [(11u64, 3usize), (12, 7), (13, 11)] {
+        let f = scene(64, 1024, seed);
+        for bridge in [None, Some(4)] {
+            let p = FccParams {
+                label_bits: 20,
+                bridge,
+                ..params(64, 1024, k)
+            };
+            let what = format!("scene seed {seed}, K = {k}, bridge {bridge:?}");
+            check_open_limit_edge(&p, &f, &what);
+            for limit in [1, 8] {
+                let q = FccParams {
+                    open_limit: Some(limit),
+                    ..p.clone()
+                };
+                assert!(check_open_limit(&q, &f, &what) > 0, "{what}: S = {limit}");
+            }
+        }
+    }
+}
+
+#[test]
+fn the_open_limit_refuses_the_run_past_it_and_frees_with_the_column() {
+    // Three separate objects in column 0 (rows 0, 3, 6), each closed at
+    // column 0 + h = 1 (K = 3, bridge 0); S = 2 refuses the third, then
+    // column 2's three runs count the clusters open after column 1 (none).
+    let f = grid(&["#.#", "...", "...", "#.#", "...", "...", "#.#"], 1.0);
+    let p = FccParams {
+        th_h: 0.5,
+        th_v: 0.5,
+        bridge: Some(0),
+        ring_reach: Some(0),
+        open_limit: Some(2),
+        ..params(7, 3, 3)
+    };
+    let mut s = Stream::new(&p).unwrap();
+    let (r, labels) = stream_frame(&mut s, &f);
+    assert_eq!(labels[6 * 3], 0, "row 6, column 0 refused");
+    assert!(labels[0] != 0 && labels[3 * 3] != 0);
+    assert_eq!(r.len(), 4, "{r:?}");
+    assert_eq!(
+        r.iter()
+            .map(|r| (r.first_col, r.first_row))
+            .collect::<Vec<_>>(),
+        [(0, 0), (0, 3), (2, 0), (2, 3)]
+    );
+    let st = s.stats();
+    assert_eq!((st.open_refused, st.unlabelled, st.peak_counted), (2, 2, 2));
+    assert!(!st.overflow, "labels did not run out");
+    // Frame mode refuses an open limit, naming it.
+    let e = cluster(&p, &f, MergeMode::Exact).unwrap_err();
+    assert_eq!(e, GoldenError::StreamOnly(2));
+    assert!(e.to_string().contains("open_limit"), "{e}");
+    check_open_limit(&p, &f, "three objects a column, S = 2");
 }

@@ -39,7 +39,8 @@ impl Stream {
 impl Stream {
     #[new]
     #[pyo3(signature = (rows, cols, *, fsize=None, th_h=None, th_v=None, label_bits=None,
-        th_h_slope=None, th_v_slope=None, preset=None, bridge=None, ring_reach=None))]
+        th_h_slope=None, th_v_slope=None, preset=None, bridge=None, ring_reach=None,
+        open_limit=None))]
     #[allow(clippy::too_many_arguments)]
     fn new(
         rows: usize,
@@ -53,10 +54,12 @@ impl Stream {
         preset: Option<&str>,
         bridge: Option<u32>,
         ring_reach: Option<u32>,
+        open_limit: Option<u32>,
     ) -> PyResult<Self> {
         let p = fcc_params::FccParams {
             rows,
             cols,
+            open_limit,
             ..model_params(
                 fsize, th_h, th_v, label_bits, th_h_slope, th_v_slope, preset, bridge, ring_reach,
             )?
@@ -118,17 +121,31 @@ impl Stream {
         Ok(array(py, out, &shape)?.into_any())
     }
 
-    /// The frame's counts: points, runs, clusters, overflow, unlabelled,
-    /// peak_labels.
+    /// The frame's counts (`fcc_golden::StreamStats`, every field): points,
+    /// runs, clusters, overflow, open_refused, unlabelled, peak_labels,
+    /// peak_open, peak_counted.
     fn stats<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-        let s = self.inner.stats();
+        let fcc_golden::StreamStats {
+            points,
+            runs,
+            clusters,
+            overflow,
+            open_refused,
+            unlabelled,
+            peak_labels,
+            peak_open,
+            peak_counted,
+        } = self.inner.stats();
         let d = PyDict::new(py);
-        d.set_item("points", s.points)?;
-        d.set_item("runs", s.runs)?;
-        d.set_item("clusters", s.clusters)?;
-        d.set_item("overflow", s.overflow)?;
-        d.set_item("unlabelled", s.unlabelled)?;
-        d.set_item("peak_labels", s.peak_labels)?;
+        d.set_item("points", points)?;
+        d.set_item("runs", runs)?;
+        d.set_item("clusters", clusters)?;
+        d.set_item("overflow", overflow)?;
+        d.set_item("open_refused", open_refused)?;
+        d.set_item("unlabelled", unlabelled)?;
+        d.set_item("peak_labels", peak_labels)?;
+        d.set_item("peak_open", peak_open)?;
+        d.set_item("peak_counted", peak_counted)?;
         Ok(d)
     }
 }

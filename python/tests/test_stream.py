@@ -83,3 +83,23 @@ def test_stream_errors():
         s.labels()
     with pytest.raises(ValueError, match="fsize = 4 is out of range"):
         fcc.Stream(ROWS, COLS, fsize=4)
+
+
+def test_the_open_limit_refuses_runs_past_the_count():
+    """``open_limit`` (spec §9.1): at the frame's peak count nothing changes;
+    below it runs stay unlabelled, counted in the stats; frame mode refuses it."""
+    xyz, _ = fcc.scene(2, rows=ROWS, cols=COLS)
+    free = fcc.Stream(ROWS, COLS)
+    run_stream(free, xyz)
+    st = free.stats()
+    assert st["open_refused"] == 0 and 0 < st["peak_open"] <= st["peak_counted"] <= st["peak_labels"]
+    at = fcc.Stream(ROWS, COLS, open_limit=st["peak_counted"])
+    run_stream(at, xyz)
+    np.testing.assert_array_equal(at.labels(), free.labels())
+    below = fcc.Stream(ROWS, COLS, open_limit=2)
+    run_stream(below, xyz)
+    sb = below.stats()
+    assert sb["open_refused"] > 0 and not sb["overflow"] and sb["peak_counted"] <= 2
+    assert (below.labels() != 0).sum() == sb["points"] - sb["unlabelled"] < st["points"]
+    with pytest.raises(ValueError, match="open_limit"):
+        fcc.Stream(ROWS, COLS, open_limit=0)

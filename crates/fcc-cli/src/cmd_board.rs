@@ -110,8 +110,8 @@ fn run_board(args: &BoardRunArgs) -> anyhow::Result<()> {
     let m = &args.cluster.model.limits;
     // The model options are checked before any board is opened.
     args.cluster.model.params(1, 1)?;
-    if m.bridge.is_some() || m.ring_reach.is_some() {
-        bail!("the row-major core keeps the unlimited contract: drop --bridge and --ring-reach (the golden stream takes them: fcc cluster --stream)");
+    if m.bridge.is_some() || m.ring_reach.is_some() || m.open_limit.is_some() {
+        bail!("the row-major core keeps the unlimited contract: drop --bridge, --ring-reach and --open-limit (the golden stream takes them: fcc cluster --stream)");
     }
     if args.cluster.stream {
         bail!("the row-major core returns labels of whole frames: drop --stream (fcc cluster --stream runs the golden stream)");

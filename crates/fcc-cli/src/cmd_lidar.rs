@@ -510,6 +510,13 @@ fn loss_warnings(item: &Item, out: &PipelineResult) -> Vec<String> {
             out.params.max_label(),
         ));
     }
+    if out.open_refused > 0 {
+        w.push(format!(
+            "open limit: {} runs left unlabelled, started while {} clusters counted open (spec §9.1); raise --open-limit",
+            out.open_refused,
+            out.params.open_limit.unwrap_or(0),
+        ));
+    }
     if out.out_of_range > 0 {
         w.push(format!(
             "{} points beyond the Q7.8 coordinate range (about ±128 m) were not clustered",
@@ -529,9 +536,14 @@ fn loss_warnings(item: &Item, out: &PipelineResult) -> Vec<String> {
 /// The caption's note on lost points, empty when none were lost.
 fn loss_caption(out: &PipelineResult) -> String {
     let mut s = String::new();
-    if out.clustering.overflow {
+    if out.clustering.overflow || out.open_refused > 0 {
         s.push_str(&format!(
-            ", LABEL OVERFLOW: {} POINTS UNLABELLED",
+            ", {}: {} POINTS UNLABELLED",
+            if out.clustering.overflow {
+                "LABEL OVERFLOW"
+            } else {
+                "OPEN LIMIT"
+            },
             out.clustering.unlabelled
         ));
     }

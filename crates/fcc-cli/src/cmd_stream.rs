@@ -45,7 +45,7 @@ const SETTINGS: [(&str, Option<u32>, Option<u32>); 4] = [
 ];
 
 /// The table's columns.
-const COLUMNS: [&str; 15] = [
+const COLUMNS: [&str; 16] = [
     "source",
     "K",
     "setting",
@@ -61,6 +61,7 @@ const COLUMNS: [&str; 15] = [
     "runs",
     "peak labels",
     "peak open",
+    "peak counted",
 ];
 
 #[derive(Default)]
@@ -77,6 +78,8 @@ struct Tally {
     runs: u32,
     peak_labels: u32,
     peak_open: u32,
+    /// Most clusters counted open by the open limit's rule (spec §9.1).
+    peak_counted: u32,
 }
 
 pub fn run(args: &StreamReportArgs) -> anyhow::Result<()> {
@@ -161,6 +164,7 @@ pub fn run(args: &StreamReportArgs) -> anyhow::Result<()> {
                     t.runs = t.runs.max(streamed.stats.runs);
                     t.peak_labels = t.peak_labels.max(streamed.stats.peak_labels);
                     t.peak_open = t.peak_open.max(streamed.stats.peak_open);
+                    t.peak_counted = t.peak_counted.max(streamed.stats.peak_counted);
                     for r in &streamed.records {
                         t.records += 1;
                         if (r.record.closed_col as usize) < im.cols {
@@ -174,7 +178,7 @@ pub fn run(args: &StreamReportArgs) -> anyhow::Result<()> {
                 let q = |p| percentile(&t.latency, p).map_or("-".into(), |v| v.to_string());
                 writeln!(
                     md,
-                    "| {name} | {k} | {setting} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
+                    "| {name} | {k} | {setting} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
                     t.frames,
                     t.records,
                     t.seam_held,
@@ -187,6 +191,7 @@ pub fn run(args: &StreamReportArgs) -> anyhow::Result<()> {
                     t.runs,
                     t.peak_labels,
                     t.peak_open,
+                    t.peak_counted,
                 )?;
             }
         }

@@ -86,6 +86,10 @@ pub struct LimitArgs {
     /// pixel is in columns 0..N-1 and its last in C-N..C-1 (default: unlimited).
     #[arg(long, value_name = "N")]
     pub ring_reach: Option<u32>,
+    /// The stream's open limit: a run starts unlabelled while N clusters
+    /// count as open (spec §9.1; the stream only; default: unlimited).
+    #[arg(long, value_name = "N")]
+    pub open_limit: Option<u32>,
 }
 
 impl ModelArgs {
@@ -100,6 +104,7 @@ impl ModelArgs {
             label_bits: self.label_bits.unwrap_or(defaults().label_bits),
             bridge: self.limits.bridge,
             ring_reach: self.limits.ring_reach,
+            open_limit: self.limits.open_limit,
             ..defaults()
         });
         p.validate()?;
@@ -159,6 +164,7 @@ impl HwArgs {
             labels_per_beat: self.labels_per_beat.unwrap_or(b.labels_per_beat),
             bridge: self.limits.bridge.or(b.bridge),
             ring_reach: self.limits.ring_reach.or(b.ring_reach),
+            open_limit: self.limits.open_limit.or(b.open_limit),
             ..b
         };
         if self.slopes.given() {

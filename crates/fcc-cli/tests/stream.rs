@@ -171,6 +171,22 @@ fn the_row_major_core_refuses_limits_and_the_stream() {
             "drop --stream",
         ),
         (
+            vec![
+                "board",
+                "run",
+                "--virtual",
+                "--input",
+                s(&npy),
+                "--open-limit",
+                "64",
+            ],
+            "drop --bridge, --ring-reach and --open-limit",
+        ),
+        (
+            vec!["cluster", "--input", s(&npy), "--open-limit", "64"],
+            "open_limit = 64 applies to the stream only",
+        ),
+        (
             vec!["sim", "--input", s(&npy), "--ring-reach", "16"],
             "row-major core",
         ),
@@ -191,6 +207,71 @@ fn the_row_major_core_refuses_limits_and_the_stream() {
         let e = stderr(&o);
         assert!(e.lines().count() == 1 && e.contains(why), "{args:?}: {e}");
     }
+}
+
+/// `--open-limit` (spec §9.1): a limit below what the frame counts open
+/// leaves runs unlabelled and says so (`--strict` makes it an error); one at
+/// the frame's count changes nothing.
+#[test]
+fn the_open_limit_leaves_runs_unlabelled_and_says_so() {
+    let d = tmpdir("stream-open-limit");
+    let npy = d.join("f.npy");
+    let o = fcc(&[
+        "scene",
+        "--seed",
+        "1",
+        "--rows",
+        "16",
+        "--cols",
+        "256",
+        "--output",
+        s(&npy),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let run = |limit: Option<&str>, extra: &[&str]| {
+        let out = d.join("l.npy");
+        let mut a = vec![
+            "cluster",
+            "--input",
+            s(&npy),
+            "--stream",
+            "--output",
+            s(&out),
+        ];
+        if let Some(l) = limit {
+            a.extend(["--open-limit", l]);
+        }
+        a.extend_from_slice(extra);
+        let o = fcc(&a);
+        (o, labels(&out))
+    };
+    let (o, free) = run(None, &[]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(!stderr(&o).contains("open limit"), "{}", stderr(&o));
+    let labelled = |l: &[u32]| l.iter().filter(|&&v| v != 0).count();
+    let (o, limited) = run(Some("2"), &[]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let e = stderr(&o);
+    assert!(
+        e.contains("open limit: ")
+            && e.contains("runs left unlabelled")
+            && e.contains("raise --open-limit"),
+        "{e}"
+    );
+    assert!(labelled(&limited) < labelled(&free));
+    let (o, _) = run(Some("2"), &["--strict"]);
+    assert!(
+        !o.status.success() && stderr(&o).contains("open limit"),
+        "{}",
+        stderr(&o)
+    );
+    let (o, same) = run(Some("4000"), &[]);
+    assert!(
+        o.status.success() && !stderr(&o).contains("open limit"),
+        "{}",
+        stderr(&o)
+    );
+    assert_eq!(same, free);
 }
 
 /// `fcc stream-report` on two small synthetic scenes: one row per K and
@@ -224,6 +305,7 @@ fn stream_report_counts_the_labels_in_use() {
             .unwrap_or_else(|| panic!("no column {name}: {md}"))
     };
     let (runs, peak, open) = (col("runs"), col("peak labels"), col("peak open"));
+    let counted = col("peak counted");
     let source = col("source");
     let separator = md.lines().nth(1).unwrap();
     assert_eq!(separator.matches("---|").count() + 2, header.len(), "{md}");
@@ -244,6 +326,13 @@ fn stream_report_counts_the_labels_in_use() {
         assert!(
             open > 0 && open <= peak,
             "peak open {open}, peak labels {peak}: {md}"
+        );
+        // Counted open (spec §9.1): the open clusters and the runs started
+        // in the column, each holding a label in use.
+        let counted = n(counted);
+        assert!(
+            open <= counted && counted <= peak,
+            "peak open {open}, counted {counted}, labels {peak}: {md}"
         );
     }
 }

@@ -56,6 +56,9 @@ pub struct PipelineResult {
     /// Provisional labels the frame needs: the runs of pass 1 (only counted on
     /// label overflow; otherwise equal to `clustering.provisional`).
     pub labels_needed: u64,
+    /// Runs the stream left unlabelled by its open limit (spec §9.1); 0 in
+    /// frame mode, which has none.
+    pub open_refused: u32,
 }
 
 /// The parameters of `cfg` sized for `image`.
@@ -101,6 +104,7 @@ pub fn cluster_image(image: &RangeImage, cfg: &PipelineConfig) -> Result<Pipelin
         params,
         out_of_range,
         labels_needed,
+        open_refused: 0,
     })
 }
 
@@ -373,6 +377,7 @@ pub fn stream_image(
                 params,
                 out_of_range,
                 labels_needed,
+                open_refused: stats.open_refused,
             },
             records,
             stats,

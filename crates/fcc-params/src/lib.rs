@@ -20,6 +20,8 @@ pub mod limits {
     pub const FSIZE: RangeInclusive<usize> = 3..=15;
     /// Provisional label width in bits.
     pub const LABEL_BITS: RangeInclusive<u32> = 8..=20;
+    /// The stream's open limit S, when set (spec §9.1).
+    pub const OPEN_LIMIT: RangeInclusive<u32> = 1..=u32::MAX;
     /// Thresholds in metres, exclusive on both ends.
     pub const TH_MIN_EXCL: f64 = 0.0;
     pub const TH_MAX_EXCL: f64 = 128.0;
@@ -95,6 +97,13 @@ pub struct FccParams {
     pub th_h_slope: f64,
     #[serde(default, skip_serializing_if = "is_zero")]
     pub th_v_slope: f64,
+    /// The stream's open limit S (spec §9.1): a run starting at column `c`
+    /// receives a label only while fewer than `S` clusters count as open
+    /// (those open after column `c - 1` closed, plus the runs already
+    /// labelled in column `c`). `None`: unlimited. The stream only: frame
+    /// mode refuses it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub open_limit: Option<u32>,
 }
 
 fn is_zero(v: &f64) -> bool {
@@ -171,6 +180,7 @@ impl Default for FccParams {
             ring_reach: None,
             th_h_slope: 0.0,
             th_v_slope: 0.0,
+            open_limit: None,
         }
     }
 }
@@ -191,6 +201,9 @@ impl FccParams {
         check_slope("th_h_slope", self.th_h_slope)?;
         check_slope("th_v_slope", self.th_v_slope)?;
         check_range("label_bits", self.label_bits, &limits::LABEL_BITS)?;
+        if let Some(s) = self.open_limit {
+            check_range("open_limit", s, &limits::OPEN_LIMIT)?;
+        }
         if !(self.clock_mhz > limits::CLOCK_MHZ_MIN_EXCL && self.clock_mhz <= limits::CLOCK_MHZ_MAX)
         {
             return Err(range_err(
@@ -225,8 +238,13 @@ impl FccParams {
     /// parameters of a build (smaller than what can be generated) are
     /// checked with this and the build's own ranges.
     pub fn validate_rtl_contract(&self) -> Result<(), ParamError> {
-        // The row-major core follows the unlimited contract.
-        for (field, v) in [("bridge", self.bridge), ("ring_reach", self.ring_reach)] {
+        // The row-major core follows the unlimited contract, and labels a
+        // whole frame (no open limit).
+        for (field, v) in [
+            ("bridge", self.bridge),
+            ("ring_reach", self.ring_reach),
+            ("open_limit", self.open_limit),
+        ] {
             if let Some(v) = v {
                 return Err(range_err(
                     field,
@@ -236,6 +254,13 @@ impl FccParams {
             }
         }
         Ok(())
+    }
+
+    /// Whether a run may start when `counted` clusters count as open
+    /// (spec §9.1, the stream's open limit).
+    #[inline]
+    pub fn opens(&self, counted: u32) -> bool {
+        self.open_limit.is_none_or(|s| counted < s)
     }
 
     /// Whether pass 1 compares two consecutive valid pixels of a row with
@@ -339,6 +364,7 @@ impl FccParams {
             ring_reach,
             th_h_slope,
             th_v_slope,
+            open_limit,
         } = self;
         let limits = [("bridge", bridge), ("ring_reach", ring_reach)];
         let slopes = [("th_h_slope", th_h_slope), ("th_v_slope", th_v_slope)];
@@ -363,6 +389,7 @@ impl FccParams {
                 .filter(|(_, v)| **v != 0.0)
                 .map(|(name, v)| (name, v.to_string())),
         );
+        fields.extend(open_limit.map(|s| ("open_limit", s.to_string())));
         fields
     }
 
@@ -499,6 +526,15 @@ mod tests {
         assert!(keys.ends_with(&["bridge", "ring_reach"]));
         let q: FccParams = serde_json::from_str(&json).unwrap();
         assert_eq!(p, q);
+        let s = FccParams {
+            th_h_slope: 0.01,
+            open_limit: Some(512),
+            ..p.clone()
+        };
+        let keys: Vec<String> = s.fields().iter().map(|f| f.0.to_string()).collect();
+        assert!(keys.ends_with(&["th_h_slope".into(), "open_limit".into()]));
+        assert!(s.to_json().contains("\"open_limit\": 512"));
+        assert_eq!(serde_json::from_str::<FccParams>(&s.to_json()).unwrap(), s);
         assert_ne!(p.hash(), FccParams::default().hash());
         assert!(!FccParams::default().to_json().contains("bridge"));
     }
@@ -542,6 +578,12 @@ mod tests {
         assert!(p.ring_reaches(2, 97) && !p.ring_reaches(3, 97) && !p.ring_reaches(2, 96));
         p.ring_reach = Some(0);
         assert!(!p.ring_reaches(0, 99));
+        assert!(p.opens(u32::MAX - 1));
+        p.open_limit = Some(2);
+        assert!(p.opens(1) && !p.opens(2));
+        p.validate().unwrap();
+        p.open_limit = Some(0);
+        assert_eq!(p.validate().unwrap_err().field, "open_limit");
     }
 
     #[test]
