@@ -53,6 +53,8 @@ pub enum BenchBlock {
     /// The column core's record output `FccRecordOut` (with `FccRecBeats`)
     /// behind the scalar ports of `FccRecordOutProbe`.
     RecordOut,
+    /// The column core's free labels `FccLabelPool`.
+    LabelPool,
 }
 
 /// One row of the table: the module's name before the configuration
@@ -80,7 +82,7 @@ impl Row {
 
 impl BenchBlock {
     /// Every block with a bench.
-    pub const ALL: [BenchBlock; 17] = [
+    pub const ALL: [BenchBlock; 18] = [
         BenchBlock::Regs,
         BenchBlock::AxilAdapter,
         BenchBlock::MergeTable,
@@ -98,6 +100,7 @@ impl BenchBlock {
         BenchBlock::ColDist,
         BenchBlock::Acc,
         BenchBlock::RecordOut,
+        BenchBlock::LabelPool,
     ];
 
     fn row(self) -> Row {
@@ -225,6 +228,13 @@ impl BenchBlock {
                 },
                 waivers: lint::enum_block_waivers,
             },
+            BenchBlock::LabelPool => Row::plain("fcc_label_pool", |p| {
+                gen(
+                    p,
+                    crate::column::fcc_label_pool::FccLabelPool::new(p),
+                    "fcc_label_pool",
+                )
+            }),
         }
     }
 

@@ -12,6 +12,7 @@ pub mod fcc_col_edge;
 pub mod fcc_col_window;
 pub mod fcc_col_window_probe;
 pub mod fcc_col_word_split;
+pub mod fcc_label_pool;
 pub mod fcc_rec_beats;
 pub mod fcc_record_out;
 pub mod fcc_record_out_probe;
