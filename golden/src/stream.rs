@@ -343,6 +343,17 @@ impl Stream {
         &self.out_pixels[a..b]
     }
 
+    /// The clusters open now: after the last column taken closed (spec
+    /// §9.2), before the next. Spec §9.1's open limit counts these, plus the
+    /// runs labelled in the next column.
+    pub fn open_clusters(&self) -> u32 {
+        if self.finished {
+            0
+        } else {
+            self.sets.open_clusters
+        }
+    }
+
     /// What the finished frame (or the frame so far) reported.
     pub fn stats(&self) -> StreamStats {
         self.stats

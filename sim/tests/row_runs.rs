@@ -44,6 +44,7 @@ c_struct! {
         pub ring_l_min: u16,
         pub free_ok: u8,
         pub free_label: u16,
+        pub open_room: u16,
     }
 }
 
@@ -76,6 +77,9 @@ c_struct! {
     }
 }
 
+/// `open_room` with no open limit: more runs than a column has rows.
+const NO_LIMIT: u16 = 1023;
+
 /// How a frame is fed.
 #[derive(Debug, Clone, Copy)]
 struct Feed {
@@ -100,6 +104,8 @@ struct Bench {
     free: VecDeque<u16>,
     taken: VecDeque<u16>,
     held: Vec<u16>,
+    /// The runs the open limit allows in the column being fed (spec §9.1).
+    open_room: u16,
     outs: HashMap<(usize, usize), RrOut>,
     seed: u64,
     what: String,
@@ -115,6 +121,7 @@ impl Bench {
             free: (1..=labels as u16).collect(),
             taken: VecDeque::new(),
             held: vec![0; build.rows],
+            open_room: NO_LIMIT,
             outs: HashMap::new(),
             seed,
             what: what.to_string(),
@@ -133,6 +140,7 @@ impl Bench {
             ring_l_min: lim.ring_l_min,
             free_ok: !self.free.is_empty() as u8,
             free_label: self.free.front().copied().unwrap_or(0),
+            open_room: self.open_room,
             ..RrIn::default()
         };
         let (key, ch, cv) = self.lag.pop_front().unwrap();
@@ -229,6 +237,18 @@ fn run_frame(b: &mut Bench, p: &FccParams, f: &Frame, feed: Feed, rng: &mut ChaC
     }
     b.outs.clear();
     let mut golden = Stream::new(p).unwrap();
+    // The open limit's room at each column (spec §9.1): the limit less the
+    // clusters open after the previous column, which the bench knows only
+    // between columns (drained feeds).
+    assert!(
+        p.open_limit.is_none() || feed.drain,
+        "an open limit needs a drained feed"
+    );
+    let room = |g: &Stream| {
+        p.open_limit
+            .map_or(NO_LIMIT, |s| (s - g.open_clusters()) as u16)
+    };
+    b.open_room = room(&golden);
     let mut column = vec![None; rows];
     // Drained: each row's held label as the outputs left it after each
     // column (undrained, the check replays the outputs' hold events).
@@ -252,6 +272,7 @@ fn run_frame(b: &mut Bench, p: &FccParams, f: &Frame, feed: Feed, rng: &mut ChaC
             b.drain(p);
             held_after.push(b.held.clone());
             return_labels(b, &pixels, cols);
+            b.open_room = room(&golden);
         } else {
             closed.extend(pixels);
         }
@@ -637,4 +658,46 @@ fn labels_run_out_and_are_reused_as_the_golden_stream_frees_them() {
         first_refused,
         "no row with its first pixel refused and a later run labelled (seed {seed})"
     );
+}
+
+#[test]
+fn the_open_limit_refuses_runs_as_the_golden_stream() {
+    // Spec §9.1's open limit with labels plentiful: a run starting at a
+    // column is refused once the clusters open after the previous column
+    // and the runs labelled in this one reach S. The bench gives the block
+    // S less the golden stream's open clusters between columns.
+    let build = build();
+    let seed = 0x5eed_3000;
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    for (what, limit, bridge) in [
+        ("S = 1", 1, Some(2)),
+        ("S = 3, bridge 4", 3, Some(4)),
+        ("S = 12, no bridge limit", 12, None),
+        ("S = 40", 40, Some(1)),
+    ] {
+        let p = FccParams {
+            th_v: 0.05,
+            bridge,
+            ring_reach: Some(4),
+            open_limit: Some(limit),
+            ..run_params(32, 60)
+        };
+        let mut b = Bench::new(&build, p.max_label(), seed, what);
+        let (mut refused, mut labelled) = (0, 0);
+        for density in [0.9, 0.4] {
+            let f = random_frame(p.rows, p.cols, density, 0.5, false, &mut rng);
+            let feed = Feed {
+                bubbles: 0.05,
+                drain: true,
+                reset_after: None,
+            };
+            run_frame(&mut b, &p, &f, feed, &mut rng);
+            refused += b.outs.values().filter(|o| o.o_refused != 0).count();
+            labelled += b.outs.values().filter(|o| o.o_start != 0).count();
+        }
+        assert!(
+            refused > 0 && labelled > limit as usize,
+            "{what}: {refused} runs refused, {labelled} labelled (seed {seed})"
+        );
+    }
 }

@@ -58,6 +58,7 @@ pub struct FccRowEntry {
     lm: Signal<Local, Bits<16>>,
     fm: Signal<Local, Bits<16>>,
     hm: Signal<Local, Bits<16>>,
+    zero7: Constant<Bits<7>>,
     zero12: Constant<Bits<12>>,
     zero16: Constant<Bits<16>>,
 }
@@ -90,6 +91,7 @@ impl Default for FccRowEntry {
             lm: Default::default(),
             fm: Default::default(),
             hm: Default::default(),
+            zero7: kb(0),
             zero12: kb(0),
             zero16: kb(0),
         }
@@ -139,6 +141,7 @@ impl Logic for FccRowEntry {
         self.ctl.next.z = self.pix.val().z;
         self.ctl.next.row = self.pix.val().row;
         self.ctl.next.col = self.pix.val().col;
+        self.ctl.next.col_first = self.pix.val().row == self.zero7.val();
         self.ctl.next.first = self.pix.val().first;
         self.ctl.next.last = self.pix.val().last;
         self.ctl.next.key = self.key.val();

@@ -20,12 +20,14 @@
 //!   smaller key, as `FccIntraThr` picks it (spec §2), added in N5 (pass 1)
 //!   and N6 (ring).
 //! * N10: `FccRunDecide` decides the label, pops the free list (`take`,
-//!   combinational from `free_ok` and `free_label`) and writes the labels
-//!   back; `out` is registered, eleven cycles after `pix`.
+//!   combinational from `free_ok` and `free_label`, and from `FccOpenRoom`'s
+//!   open limit) and writes the labels back; `out` is registered, eleven
+//!   cycles after `pix`.
 
 use fcc_params::limits;
 use rust_hdl::prelude::*;
 
+use super::fcc_open_room::{FccOpenRoom, OPEN_ROOM_BITS};
 use super::fcc_row_entry::FccRowEntry;
 use super::fcc_run_decide::FccRunDecide;
 use super::{ColPix, RowLabs, RowPts, RunCtl, RunPix};
@@ -70,6 +72,9 @@ pub struct FccRowRuns {
     pub free_ok: Signal<In, Bit>,
     pub free_label: Signal<In, Bits<16>>,
     pub take: Signal<Out, Bit>,
+    /// The runs spec §9.1's open limit allows in the column whose first
+    /// slot is at the decision (see `FccOpenRoom`).
+    pub open_room: Signal<In, Bits<OPEN_ROOM_BITS>>,
     pub out: Signal<Out, RunPix>,
     pts: FccRam<RowPts, ROW_BITS>,
     labs: FccRam<RowLabs, ROW_BITS>,
@@ -91,6 +96,7 @@ pub struct FccRowRuns {
     near_cd: Vec<DFF<Bits<36>>>,
     ring_cd: Vec<DFF<Bits<36>>>,
     decide: FccRunDecide,
+    room: FccOpenRoom,
     out_q: DFF<RunPix>,
     ctl_zero: Constant<RunCtl>,
     dead_sum: Signal<Local, Bits<12>>,
@@ -116,6 +122,7 @@ impl FccRowRuns {
             free_ok: Default::default(),
             free_label: Default::default(),
             take: Default::default(),
+            open_room: Default::default(),
             out: Default::default(),
             pts: FccRam::new(rows),
             labs: FccRam::new(rows),
@@ -132,6 +139,7 @@ impl FccRowRuns {
             near_cd: vec_of(2),
             ring_cd: vec_of(3),
             decide: Default::default(),
+            room: Default::default(),
             out_q: Default::default(),
             ctl_zero: Constant::new(RunCtl::default()),
             dead_sum: Default::default(),
@@ -238,6 +246,13 @@ impl Logic for FccRowRuns {
         self.decide.free_ok.next = self.free_ok.val();
         self.decide.free_label.next = self.free_label.val();
         self.take.next = self.decide.take.val();
+        self.room.clk.next = self.clk.val();
+        self.room.rst.next = self.rst.val();
+        self.room.open_room.next = self.open_room.val();
+        self.room.col_start.next = self.cd[7].q.val().valid & self.cd[7].q.val().col_first;
+        self.room.taken.next = self.decide.take.val();
+        self.decide.start_ok.next = self.room.start_ok.val();
+        self.decide.left_ok.next = self.room.left_ok.val();
         self.labs.write_en.next = self.cd[7].q.val().valid;
         self.labs.write_addr.next = self.cd[7].q.val().row;
         self.labs.write_data.next = self.decide.labs.val();

@@ -7,6 +7,7 @@
 use fcc_params::FccParams;
 use rust_hdl::prelude::*;
 
+use super::fcc_open_room::OPEN_ROOM_BITS;
 use super::fcc_row_runs::FccRowRuns;
 use super::ColPix;
 
@@ -33,6 +34,7 @@ pub struct FccRowRunsProbe {
     pub ring_l_min: Signal<In, Bits<12>>,
     pub free_ok: Signal<In, Bit>,
     pub free_label: Signal<In, Bits<16>>,
+    pub open_room: Signal<In, Bits<OPEN_ROOM_BITS>>,
     pub take: Signal<Out, Bit>,
     pub o_valid: Signal<Out, Bit>,
     pub o_ok: Signal<Out, Bit>,
@@ -84,6 +86,7 @@ impl FccRowRunsProbe {
             ring_l_min: Default::default(),
             free_ok: Default::default(),
             free_label: Default::default(),
+            open_room: Default::default(),
             take: Default::default(),
             o_valid: Default::default(),
             o_ok: Default::default(),
@@ -138,6 +141,7 @@ impl Logic for FccRowRunsProbe {
         self.runs.ring_l_min.next = self.ring_l_min.val();
         self.runs.free_ok.next = self.free_ok.val();
         self.runs.free_label.next = self.free_label.val();
+        self.runs.open_room.next = self.open_room.val();
         self.take.next = self.runs.take.val();
         self.o_valid.next = self.runs.out.val().valid;
         self.o_ok.next = self.runs.out.val().ok;

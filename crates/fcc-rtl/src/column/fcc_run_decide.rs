@@ -4,8 +4,9 @@
 //! * A point within `tH` of its row's latest valid pixel (`near_hit`)
 //!   continues that pixel's run and takes its label (0 when that run is
 //!   unlabelled: it stays so, spec §7). Any other point starts a run: it
-//!   takes the free list's head (`take`) when `free_ok`, else it is left
-//!   unlabelled (`refused`).
+//!   takes the free list's head (`take`) when `free_ok` and the open limit
+//!   allows it (spec §9.1: `start_ok` at the column's first slot, `left_ok`
+//!   after), else it is left unlabelled (`refused`).
 //! * The row holds its latest valid pixel's label open (spec §9.2) while
 //!   the bridge reaches the next column (hold 2) or, its first pixel
 //!   labelled, both lie within the ring reach (hold 4). A change of the
@@ -28,6 +29,10 @@ pub struct FccRunDecide {
     /// The free list's head, when `free_ok`.
     pub free_ok: Signal<In, Bit>,
     pub free_label: Signal<In, Bits<16>>,
+    /// The open limit allows a run to start at the column's first slot,
+    /// at a later slot (`FccOpenRoom`).
+    pub start_ok: Signal<In, Bit>,
+    pub left_ok: Signal<In, Bit>,
     /// Pop the free list's head.
     pub take: Signal<Out, Bit>,
     /// The row's new labels.
@@ -37,6 +42,7 @@ pub struct FccRunDecide {
     newrun: Signal<Local, Bit>,
     lab: Signal<Local, Bits<16>>,
     taken: Signal<Local, Bit>,
+    room_ok: Signal<Local, Bit>,
     lab_nz: Signal<Local, Bit>,
     l_nz: Signal<Local, Bit>,
     f_nz: Signal<Local, Bit>,
@@ -56,6 +62,8 @@ impl Default for FccRunDecide {
             ring_hit: Default::default(),
             free_ok: Default::default(),
             free_label: Default::default(),
+            start_ok: Default::default(),
+            left_ok: Default::default(),
             take: Default::default(),
             labs: Default::default(),
             out: Default::default(),
@@ -63,6 +71,7 @@ impl Default for FccRunDecide {
             newrun: Default::default(),
             lab: Default::default(),
             taken: Default::default(),
+            room_ok: Default::default(),
             lab_nz: Default::default(),
             l_nz: Default::default(),
             f_nz: Default::default(),
@@ -81,7 +90,11 @@ impl Logic for FccRunDecide {
     fn update(&mut self) {
         self.point.next = self.ctl.val().valid & self.ctl.val().ok;
         self.newrun.next = self.point.val() & !self.near_hit.val();
-        self.taken.next = self.newrun.val() & self.free_ok.val();
+        self.room_ok.next = self.left_ok.val();
+        if self.ctl.val().col_first {
+            self.room_ok.next = self.start_ok.val();
+        }
+        self.taken.next = self.newrun.val() & self.free_ok.val() & self.room_ok.val();
         self.take.next = self.taken.val();
         self.lab.next = self.zero16.val();
         if self.near_hit.val() {
@@ -136,7 +149,7 @@ impl Logic for FccRunDecide {
         self.out.next.cv = self.ctl.val().cv;
         self.out.next.label = self.lab.val();
         self.out.next.start = self.taken.val();
-        self.out.next.refused = self.newrun.val() & !self.free_ok.val();
+        self.out.next.refused = self.newrun.val() & !self.taken.val();
         self.out.next.ring_first =
             self.ctl.val().first_here & self.ctl.val().first_reach & self.lab_nz.val();
         // The ring pair differs unless the first pixel is this one; a label

@@ -13,6 +13,7 @@ pub mod fcc_col_window;
 pub mod fcc_col_window_probe;
 pub mod fcc_col_word_split;
 pub mod fcc_label_pool;
+pub mod fcc_open_room;
 pub mod fcc_rec_beats;
 pub mod fcc_record_out;
 pub mod fcc_record_out_probe;
@@ -86,6 +87,8 @@ pub struct RunCtl {
     pub z: Bits<16>,
     pub row: Bits<7>,
     pub col: Bits<12>,
+    /// The column's first slot (row 0): the open limit's count restarts.
+    pub col_first: Bit,
     pub first: Bit,
     pub last: Bit,
     /// The point's key and pass-2 addend `-T'_V` (`FccPointThr`).
