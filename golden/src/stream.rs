@@ -83,6 +83,8 @@ struct Sets {
     /// Clusters open: runs labelled less unions of two clusters less
     /// records emitted.
     open_clusters: u32,
+    /// Unions of two clusters in the frame so far.
+    merges: u32,
 }
 
 impl Sets {
@@ -115,6 +117,7 @@ impl Sets {
         let (root, other) = (ra.min(rb), ra.max(rb));
         debug_assert!(self.id[root as usize] == 0 && self.id[other as usize] == 0);
         self.open_clusters -= 1;
+        self.merges += 1;
         let (r, o) = (root as usize, other as usize);
         self.parent[o] = root;
         let moved = self.acc[o];
@@ -151,6 +154,18 @@ pub struct StreamStats {
     /// Most clusters counted open by the open limit's rule (spec §9.1): an
     /// open limit above it refuses no run.
     pub peak_counted: u32,
+    /// Unions of two clusters (pass-2 joins and ring checks between
+    /// clusters not yet one), and the most at one column (the frame end's
+    /// ring checks as a column of their own): what a core's merge engine
+    /// absorbs.
+    pub merges: u32,
+    pub peak_col_merges: u32,
+    /// The most records emitted at one column, and the most labels they
+    /// free, before the frame end (whose records free labels the next
+    /// frame's start frees anyway): what a core's closing and label return
+    /// absorb.
+    pub peak_col_closed: u32,
+    pub peak_col_freed: u32,
 }
 
 /// The golden stream. Make one with [`Stream::new`], then per frame call
@@ -189,6 +204,8 @@ pub struct Stream {
     /// Clusters open after the previous column closed, plus the runs
     /// labelled in this column: what the open limit counts (spec §9.1).
     counted_open: u32,
+    /// Unions of the frame before the current column.
+    merges_before: u32,
     stats: StreamStats,
     out: Vec<Record>,
     out_points: Vec<Point>,
@@ -222,6 +239,7 @@ impl Stream {
                 ring_held: Vec::new(),
                 next_px: vec![NONE; n],
                 open_clusters: 0,
+                merges: 0,
             },
             held: Vec::new(),
             pixel_run: vec![NONE; n],
@@ -230,6 +248,7 @@ impl Stream {
             closing: Vec::new(),
             in_use: 0,
             counted_open: 0,
+            merges_before: 0,
             stats: StreamStats::default(),
             out: Vec::new(),
             out_points: Vec::new(),
@@ -291,6 +310,7 @@ impl Stream {
         self.out_points.clear();
         self.out_pixels.clear();
         self.out_ranges.clear();
+        self.merges_before = self.sets.merges;
         for i in 0..rows {
             let (Some(f), Some(l)) = (self.first[i], self.latest[i]) else {
                 continue;
@@ -422,6 +442,8 @@ impl Stream {
         self.sets.acc.clear();
         self.sets.ring_held.clear();
         self.sets.open_clusters = 0;
+        self.sets.merges = 0;
+        self.merges_before = 0;
         // The window's columns before column 0 are empty.
         self.win.fill(Win::EMPTY);
         self.pixel_run.fill(NONE);
@@ -476,6 +498,7 @@ impl Stream {
         let half = (cols / 2) as u32;
         let slot = c % w;
         self.counted_open = self.sets.open_clusters;
+        self.merges_before = self.sets.merges;
         for (row, o) in self.win.chunks_exact_mut(w).zip(&mut self.older) {
             // Column c's slot is emptied for the column's pixels; the rest
             // are the row's columns c - h .. c - 1. Their one run, if they
@@ -637,7 +660,24 @@ impl Stream {
     }
 
     /// Emit the records of `self.closing`, by first pixel in column order.
+    /// Called once per column and at the frame end.
     fn emit(&mut self, closed_col: u32) {
+        let st = &mut self.stats;
+        st.merges = self.sets.merges;
+        st.peak_col_merges = st
+            .peak_col_merges
+            .max(self.sets.merges - self.merges_before);
+        // The frame end's records free labels the next frame's start frees
+        // anyway: the column peaks count the columns' closes only.
+        if (closed_col as usize) < self.params.cols {
+            st.peak_col_closed = st.peak_col_closed.max(self.closing.len() as u32);
+            let freed: u32 = self
+                .closing
+                .iter()
+                .map(|&(_, root)| self.sets.labels_held[root as usize])
+                .sum();
+            st.peak_col_freed = st.peak_col_freed.max(freed);
+        }
         self.closing.sort_unstable();
         for k in 0..self.closing.len() {
             let root = self.closing[k].1 as usize;

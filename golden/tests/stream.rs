@@ -167,6 +167,16 @@ fn check_stream(p: &FccParams, f: &Frame, what: &str) {
         stats.peak_open <= stats.peak_labels && (stats.peak_open > 0) == (stats.runs > 0),
         "{what}: {stats:?}"
     );
+    // Each union of two clusters leaves one fewer; the per-column peaks lie
+    // within the frame's counts.
+    assert!(
+        stats.merges == stats.runs - stats.clusters
+            && stats.peak_col_merges <= stats.merges
+            && stats.peak_col_closed <= stats.clusters
+            && stats.peak_col_freed <= stats.peak_labels
+            && stats.peak_col_freed >= stats.peak_col_closed,
+        "{what}: {stats:?}"
+    );
     // The stream's runs are pass 1's (spec §3) whenever labels run out in
     // neither, numbered 1, 2, ... in the order their first pixels arrive.
     let mut runs = Vec::new();
@@ -457,7 +467,20 @@ fn an_object_closes_h_columns_after_its_last_column() {
         ring_reach: Some(0),
         ..params(3, 20, 5)
     };
-    let r = records_of(&p, &f);
+    let mut s = Stream::new(&p).unwrap();
+    let r = stream_frame(&mut s, &f).0;
+    // Each blob: two rows' runs, joined when the lower one's first pixel
+    // arrives (column 3, then 14); each closes alone, freeing two labels.
+    let st = s.stats();
+    assert_eq!(
+        (
+            st.merges,
+            st.peak_col_merges,
+            st.peak_col_closed,
+            st.peak_col_freed
+        ),
+        (2, 1, 1, 2)
+    );
     assert_eq!(r.len(), 2);
     assert_eq!((r[0].first_col, r[0].last_col, r[0].closed_col), (3, 4, 6));
     assert_eq!(
@@ -903,6 +926,15 @@ fn the_open_limit_refuses_the_run_past_it_and_frees_with_the_column() {
     );
     let st = s.stats();
     assert_eq!((st.open_refused, st.unlabelled, st.peak_counted), (2, 2, 2));
+    assert_eq!(
+        (
+            st.merges,
+            st.peak_col_merges,
+            st.peak_col_closed,
+            st.peak_col_freed
+        ),
+        (0, 0, 2, 2)
+    );
     assert!(!st.overflow, "labels did not run out");
     // Frame mode refuses an open limit, naming it.
     let e = cluster(&p, &f, MergeMode::Exact).unwrap_err();

@@ -123,7 +123,8 @@ impl Stream {
 
     /// The frame's counts (`fcc_golden::StreamStats`, every field): points,
     /// runs, clusters, overflow, open_refused, unlabelled, peak_labels,
-    /// peak_open, peak_counted.
+    /// peak_open, peak_counted, merges, peak_col_merges, peak_col_closed,
+    /// peak_col_freed.
     fn stats<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let fcc_golden::StreamStats {
             points,
@@ -135,6 +136,10 @@ impl Stream {
             peak_labels,
             peak_open,
             peak_counted,
+            merges,
+            peak_col_merges,
+            peak_col_closed,
+            peak_col_freed,
         } = self.inner.stats();
         let d = PyDict::new(py);
         d.set_item("points", points)?;
@@ -146,6 +151,10 @@ impl Stream {
         d.set_item("peak_labels", peak_labels)?;
         d.set_item("peak_open", peak_open)?;
         d.set_item("peak_counted", peak_counted)?;
+        d.set_item("merges", merges)?;
+        d.set_item("peak_col_merges", peak_col_merges)?;
+        d.set_item("peak_col_closed", peak_col_closed)?;
+        d.set_item("peak_col_freed", peak_col_freed)?;
         Ok(d)
     }
 }

@@ -93,6 +93,8 @@ def test_the_open_limit_refuses_runs_past_the_count():
     run_stream(free, xyz)
     st = free.stats()
     assert st["open_refused"] == 0 and 0 < st["peak_open"] <= st["peak_counted"] <= st["peak_labels"]
+    assert st["merges"] == st["runs"] - st["clusters"] >= st["peak_col_merges"]
+    assert 0 < st["peak_col_closed"] <= st["peak_col_freed"] <= st["peak_labels"]
     at = fcc.Stream(ROWS, COLS, open_limit=st["peak_counted"])
     run_stream(at, xyz)
     np.testing.assert_array_equal(at.labels(), free.labels())

@@ -1,6 +1,8 @@
 //! `fcc stream-report`: how soon the golden stream (spec §9) closes its
 //! records, and what the reach limits of spec §3 change, on the synthetic
-//! corpus and on Ouster captures; writes the tables of docs/streaming.md.
+//! corpus and on Ouster captures; and what a column core's slot table
+//! absorbs (unions, records and labels freed per column). Writes the
+//! tables of docs/streaming.md.
 
 use crate::cmd_lidar::{for_each_frame, percentile, OusterArgs};
 use anyhow::{bail, Context};
@@ -64,6 +66,17 @@ const COLUMNS: [&str; 16] = [
     "peak counted",
 ];
 
+/// The second table's columns: what a column core's slot table absorbs.
+const LOAD_COLUMNS: [&str; 7] = [
+    "source",
+    "K",
+    "setting",
+    "merges per frame",
+    "merges in a column",
+    "records in a column",
+    "labels freed in a column",
+];
+
 #[derive(Default)]
 struct Tally {
     frames: usize,
@@ -80,6 +93,12 @@ struct Tally {
     peak_open: u32,
     /// Most clusters counted open by the open limit's rule (spec §9.1).
     peak_counted: u32,
+    /// Most unions of two clusters in a frame, and in one column; most
+    /// records closed and labels freed at one column.
+    merges: u32,
+    col_merges: u32,
+    col_closed: u32,
+    col_freed: u32,
 }
 
 pub fn run(args: &StreamReportArgs) -> anyhow::Result<()> {
@@ -128,6 +147,9 @@ pub fn run(args: &StreamReportArgs) -> anyhow::Result<()> {
     let mut md = String::new();
     writeln!(md, "| {} |", COLUMNS.join(" | "))?;
     writeln!(md, "|{}", "---|".repeat(COLUMNS.len()))?;
+    let mut load = String::new();
+    writeln!(load, "| {} |", LOAD_COLUMNS.join(" | "))?;
+    writeln!(load, "|{}", "---|".repeat(LOAD_COLUMNS.len()))?;
     for (name, images, ground) in &sources {
         for &k in &args.fsize {
             eprintln!("{name}: K = {k}");
@@ -165,6 +187,11 @@ pub fn run(args: &StreamReportArgs) -> anyhow::Result<()> {
                     t.peak_labels = t.peak_labels.max(streamed.stats.peak_labels);
                     t.peak_open = t.peak_open.max(streamed.stats.peak_open);
                     t.peak_counted = t.peak_counted.max(streamed.stats.peak_counted);
+                    let st = &streamed.stats;
+                    t.merges = t.merges.max(st.merges);
+                    t.col_merges = t.col_merges.max(st.peak_col_merges);
+                    t.col_closed = t.col_closed.max(st.peak_col_closed);
+                    t.col_freed = t.col_freed.max(st.peak_col_freed);
                     for r in &streamed.records {
                         t.records += 1;
                         if (r.record.closed_col as usize) < im.cols {
@@ -193,9 +220,16 @@ pub fn run(args: &StreamReportArgs) -> anyhow::Result<()> {
                     t.peak_open,
                     t.peak_counted,
                 )?;
+                writeln!(
+                    load,
+                    "| {name} | {k} | {setting} | {} | {} | {} | {} |",
+                    t.merges, t.col_merges, t.col_closed, t.col_freed,
+                )?;
             }
         }
     }
+    writeln!(md)?;
+    md.push_str(&load);
     match &args.output {
         Some(p) => {
             fcc_io::write_atomic(p, md.as_bytes())

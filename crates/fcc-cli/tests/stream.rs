@@ -209,6 +209,31 @@ fn the_row_major_core_refuses_limits_and_the_stream() {
     }
 }
 
+/// The second table of `fcc stream-report` (two scenes, K = 3 and 7): per
+/// row, the merges of a frame bound those of a column, and a column's
+/// records each free at least one label.
+fn check_load_table(md: &str) {
+    let lines: Vec<&str> = md.lines().collect();
+    let header: Vec<&str> = lines[0].split('|').map(str::trim).collect();
+    let col = |name: &str| {
+        header
+            .iter()
+            .position(|h| *h == name)
+            .unwrap_or_else(|| panic!("no column {name}: {md}"))
+    };
+    let (frame, column) = (col("merges per frame"), col("merges in a column"));
+    let (closed, freed) = (col("records in a column"), col("labels freed in a column"));
+    assert_eq!(lines.len(), 2 + 2 * 4, "{md}");
+    for l in &lines[2..] {
+        let r: Vec<&str> = l.split('|').map(str::trim).collect();
+        let n = |c: usize| -> u32 { r[c].parse().unwrap() };
+        assert!(
+            n(frame) >= n(column) && n(column) > 0 && n(closed) > 0 && n(freed) >= n(closed),
+            "{l}"
+        );
+    }
+}
+
 /// `--open-limit` (spec §9.1): a limit below what the frame counts open
 /// leaves runs unlabelled and says so (`--strict` makes it an error); one at
 /// the frame's count changes nothing.
@@ -290,7 +315,11 @@ fn stream_report_counts_the_labels_in_use() {
         "3,7",
     ]);
     assert!(out.status.success(), "{}", stderr(&out));
-    let md = String::from_utf8_lossy(&out.stdout).into_owned();
+    let all = String::from_utf8_lossy(&out.stdout).into_owned();
+    let (md, load) = all
+        .split_once("\n\n")
+        .unwrap_or_else(|| panic!("two tables: {all}"));
+    check_load_table(load);
     let header: Vec<&str> = md
         .lines()
         .next()
