@@ -38,7 +38,7 @@ pub use pass1::{pass1, pass1_released, runs_needed, Pass1, Run};
 pub use pass2::{pass2, JoinSink};
 use pass2::{pass2_with, Pass2Buffers};
 pub use records::{frame_records, oriented_box, Acc, OrientedBox, Record};
-pub use stream::{Stream, StreamStats};
+pub use stream::{column_window, Stream, StreamStats};
 pub use threshold::{coarse_metres, coarse_range2, point_threshold, Thresholds, COARSE_MAX};
 
 use fcc_params::{FccParams, ParamError};

@@ -131,6 +131,26 @@ impl Sets {
     }
 }
 
+/// The window positions (row, column) of spec §4 whose pairs with pixel
+/// `(i, c)` have it as the later pixel in column order: rows `i - h ..= i +
+/// h` except `i` in columns `c - h ..= c - 1`, and rows `i - h ..= i - 1` of
+/// column `c`, inside a frame of `rows` rows (no wrap), by column then row.
+/// What a column core's window presents with the pixel.
+pub fn column_window(
+    rows: usize,
+    h: usize,
+    i: usize,
+    c: usize,
+) -> impl Iterator<Item = (usize, usize)> {
+    let lo = i.saturating_sub(h);
+    let hi = (i + h + 1).min(rows);
+    (c.saturating_sub(h)..=c).flat_map(move |cc| {
+        (lo..hi)
+            .filter(move |&ii| ii != i && (cc < c || ii < i))
+            .map(move |ii| (ii, cc))
+    })
+}
+
 /// What the stream reports per frame besides the records.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize)]
 pub struct StreamStats {

@@ -702,6 +702,23 @@ fn stream_errors_are_clear() {
     assert!(Stream::new(&bad).is_err());
 }
 
+#[test]
+fn the_column_window_is_k_times_h_positions_inside_the_frame() {
+    // K = 5 (h = 2) far from the edges: 2h rows in h columns, h rows above.
+    let w: Vec<(usize, usize)> = fcc_golden::column_window(20, 2, 10, 10).collect();
+    assert_eq!(w.len(), 5 * 2);
+    assert_eq!(w[0], (8, 8));
+    assert!(w.contains(&(12, 9)) && w.contains(&(9, 10)) && w.contains(&(8, 10)));
+    assert!(!w
+        .iter()
+        .any(|&(r, c)| r == 10 || (c == 10 && r > 10) || c < 8));
+    // At the frame's top-left corner: only rows below in earlier columns,
+    // none before column 0.
+    let w: Vec<(usize, usize)> = fcc_golden::column_window(20, 2, 0, 1).collect();
+    assert_eq!(w, [(1, 0), (2, 0)]);
+    assert_eq!(fcc_golden::column_window(1, 3, 0, 5).count(), 0);
+}
+
 /// The open limit (spec §9.1) read directly on the finished stream. The
 /// clusters open after column `c - 1` are the components of the graph of
 /// the labelled pixels in columns `0 ..= c - 1` (run edges: the stream's
@@ -781,20 +798,15 @@ fn check_open_limit(p: &FccParams, f: &Frame, what: &str) -> u32 {
                 components += 1;
             }
             let pa = f.get(i, c).unwrap();
-            for cc in c.saturating_sub(h)..=c {
-                for ii in i.saturating_sub(h)..(i + h + 1).min(rows) {
-                    if ii == i || (cc == c && ii > i) {
-                        continue;
-                    }
-                    let b = stream_runs[ii * cols + cc];
-                    if b == 0 || !th.joins(pa, f.get(ii, cc).unwrap()) {
-                        continue;
-                    }
-                    let (ra, rb) = (find(&mut parent, a), find(&mut parent, b));
-                    if ra != rb {
-                        parent[ra as usize] = rb;
-                        components -= 1;
-                    }
+            for (ii, cc) in fcc_golden::column_window(rows, h, i, c) {
+                let b = stream_runs[ii * cols + cc];
+                if b == 0 || !th.joins(pa, f.get(ii, cc).unwrap()) {
+                    continue;
+                }
+                let (ra, rb) = (find(&mut parent, a), find(&mut parent, b));
+                if ra != rb {
+                    parent[ra as usize] = rb;
+                    components -= 1;
                 }
             }
         }

@@ -210,8 +210,9 @@ fn the_row_major_core_refuses_limits_and_the_stream() {
 }
 
 /// The second table of `fcc stream-report` (two scenes, K = 3 and 7): per
-/// row, the merges of a frame bound those of a column, and a column's
-/// records each free at least one label.
+/// row, the joined runs per pixel within the most at one pixel, the merges
+/// of a frame bound those of a column, and a column's records each free at
+/// least one label.
 fn check_load_table(md: &str) {
     let lines: Vec<&str> = md.lines().collect();
     let header: Vec<&str> = lines[0].split('|').map(str::trim).collect();
@@ -223,10 +224,15 @@ fn check_load_table(md: &str) {
     };
     let (frame, column) = (col("merges per frame"), col("merges in a column"));
     let (closed, freed) = (col("records in a column"), col("labels freed in a column"));
+    let (mean, most) = (col("joined runs per pixel"), col("joined runs at a pixel"));
     assert_eq!(lines.len(), 2 + 2 * 4, "{md}");
     for l in &lines[2..] {
         let r: Vec<&str> = l.split('|').map(str::trim).collect();
         let n = |c: usize| -> u32 { r[c].parse().unwrap() };
+        // A surface's pixel joins the runs of the rows around it: more
+        // joined runs than merges, which only join clusters not yet one.
+        let m: f64 = r[mean].parse().unwrap();
+        assert!(m > 0.5 && f64::from(n(most)) >= m, "{l}");
         assert!(
             n(frame) >= n(column) && n(column) > 0 && n(closed) > 0 && n(freed) >= n(closed),
             "{l}"
