@@ -5,9 +5,10 @@
 //! tables of docs/streaming.md.
 
 use crate::cmd_lidar::{for_each_frame, percentile, OusterArgs};
+use crate::slot_load::{self, SlotLoad};
 use anyhow::{bail, Context};
 use clap::Args;
-use fcc_golden::{column_window, same_partition, MergeMode, Stream, Thresholds};
+use fcc_golden::{same_partition, MergeMode};
 use fcc_lidar::eval::synthetic_frames;
 use fcc_lidar::ground::detect_ground;
 use fcc_lidar::ground::{GroundMethod, GroundParams};
@@ -68,12 +69,14 @@ const COLUMNS: [&str; 16] = [
 ];
 
 /// The second table's columns: what a column core's slot table absorbs.
-const LOAD_COLUMNS: [&str; 9] = [
+const LOAD_COLUMNS: [&str; 11] = [
     "source",
     "K",
     "setting",
     "joined runs per pixel",
     "joined runs at a pixel",
+    "row roots: offered per slot",
+    "merges per slot",
     "merges per frame",
     "merges in a column",
     "records in a column",
@@ -102,61 +105,8 @@ struct Tally {
     col_merges: u32,
     col_closed: u32,
     col_freed: u32,
-    /// Per labelled pixel, the distinct runs (labels) other than its own
-    /// among the window pixels it joins: in all, and the most at one pixel.
-    joined_runs: u64,
-    labelled: u64,
-    joined_runs_max: u32,
-}
-
-/// The distinct runs each labelled pixel of `image` joins in its column
-/// window other than its own (what a core's merge engine is offered before
-/// it knows which are one cluster already), added to `t`.
-fn count_joined_runs(
-    image: &RangeImage,
-    cfg: &PipelineConfig,
-    t: &mut Tally,
-) -> anyhow::Result<()> {
-    let params = params_for(image, &cfg.params);
-    let kept = image.without(&detect_ground(image, &cfg.ground)?.mask);
-    let frame = kept.to_frame();
-    let mut stream = Stream::new(&params)?;
-    let mut column = vec![None; frame.rows];
-    for c in 0..frame.cols {
-        for (i, v) in column.iter_mut().enumerate() {
-            *v = frame.get(i, c);
-        }
-        stream.push_column(&column)?;
-    }
-    stream.finish()?;
-    let mut runs = Vec::new();
-    stream.runs_into(&mut runs)?;
-    let (rows, cols, h) = (frame.rows, frame.cols, params.half());
-    let th = Thresholds::new(&params);
-    let mut seen: Vec<u32> = Vec::new();
-    for c in 0..cols {
-        for i in 0..rows {
-            let own = runs[i * cols + c];
-            let Some(p) = frame.get(i, c).filter(|_| own != 0) else {
-                continue;
-            };
-            seen.clear();
-            for (ii, cc) in column_window(rows, h, i, c) {
-                let r = runs[ii * cols + cc];
-                if r != 0
-                    && r != own
-                    && !seen.contains(&r)
-                    && frame.get(ii, cc).is_some_and(|q| th.joins(p, q))
-                {
-                    seen.push(r);
-                }
-            }
-            t.labelled += 1;
-            t.joined_runs += seen.len() as u64;
-            t.joined_runs_max = t.joined_runs_max.max(seen.len() as u32);
-        }
-    }
-    Ok(())
+    /// What the slot table is offered (joined runs, the row-root model).
+    load: SlotLoad,
 }
 
 pub fn run(args: &StreamReportArgs) -> anyhow::Result<()> {
@@ -250,7 +200,12 @@ pub fn run(args: &StreamReportArgs) -> anyhow::Result<()> {
                     t.col_merges = t.col_merges.max(st.peak_col_merges);
                     t.col_closed = t.col_closed.max(st.peak_col_closed);
                     t.col_freed = t.col_freed.max(st.peak_col_freed);
-                    count_joined_runs(im, &cfg, &mut t)?;
+                    let kept = im.without(&detect_ground(im, &cfg.ground)?.mask);
+                    slot_load::measure(
+                        &params_for(im, &cfg.params),
+                        &kept.to_frame(),
+                        &mut t.load,
+                    )?;
                     for r in &streamed.records {
                         t.records += 1;
                         if (r.record.closed_col as usize) < im.cols {
@@ -281,9 +236,11 @@ pub fn run(args: &StreamReportArgs) -> anyhow::Result<()> {
                 )?;
                 writeln!(
                     load,
-                    "| {name} | {k} | {setting} | {:.2} | {} | {} | {} | {} | {} |",
-                    t.joined_runs as f64 / t.labelled.max(1) as f64,
-                    t.joined_runs_max,
+                    "| {name} | {k} | {setting} | {:.2} | {} | {:.3} | {:.3} | {} | {} | {} | {} |",
+                    t.load.joined_runs as f64 / t.load.labelled.max(1) as f64,
+                    t.load.joined_runs_max,
+                    t.load.offered as f64 / t.load.slots.max(1) as f64,
+                    t.load.merges as f64 / t.load.slots.max(1) as f64,
                     t.merges,
                     t.col_merges,
                     t.col_closed,

@@ -20,6 +20,7 @@ mod cmd_synth;
 mod model_args;
 mod progress;
 mod sensor_args;
+mod slot_load;
 
 #[derive(Parser)]
 #[command(

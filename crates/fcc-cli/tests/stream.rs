@@ -225,6 +225,7 @@ fn check_load_table(md: &str) {
     let (frame, column) = (col("merges per frame"), col("merges in a column"));
     let (closed, freed) = (col("records in a column"), col("labels freed in a column"));
     let (mean, most) = (col("joined runs per pixel"), col("joined runs at a pixel"));
+    let (offered, merges) = (col("row roots: offered per slot"), col("merges per slot"));
     assert_eq!(lines.len(), 2 + 2 * 4, "{md}");
     for l in &lines[2..] {
         let r: Vec<&str> = l.split('|').map(str::trim).collect();
@@ -233,6 +234,9 @@ fn check_load_table(md: &str) {
         // joined runs than merges, which only join clusters not yet one.
         let m: f64 = r[mean].parse().unwrap();
         assert!(m > 0.5 && f64::from(n(most)) >= m, "{l}");
+        // The row-root model offers every merge, and a few it finds done.
+        let f = |c: usize| -> f64 { r[c].parse().unwrap() };
+        assert!(f(offered) >= f(merges) && f(merges) > 0.0, "{l}");
         assert!(
             n(frame) >= n(column) && n(column) > 0 && n(closed) > 0 && n(freed) >= n(closed),
             "{l}"

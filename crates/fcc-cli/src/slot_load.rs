@@ -1,0 +1,163 @@
+//! What a column core's slot table is offered (`fcc stream-report`'s second
+//! table, docs/column-core.md): per labelled pixel, the distinct runs it
+//! joins in its column window other than its own; and the joins between
+//! clusters a core would send its merge engine if it kept, per row, the
+//! clusters of the row's last `h + 1` runs ("row roots", rewritten by each
+//! merge [`ROOTS_LATE`] slots after it). A window row spans `h + 1` columns,
+//! so every joined pixel's run is among its row's last `h + 1`: the model
+//! checks it and never looks a label up.
+
+use std::collections::VecDeque;
+
+use fcc_golden::{column_window, Frame, Stream, Thresholds};
+use fcc_params::FccParams;
+
+/// Slots between a merge and the row roots' rewrite in the model: about
+/// the pipeline from a pixel's entry to its merges.
+pub const ROOTS_LATE: u64 = 24;
+
+/// Counts over frames.
+#[derive(Debug, Default, Clone, Copy)]
+pub struct SlotLoad {
+    /// Pixel slots (rows x columns).
+    pub slots: u64,
+    /// Labelled pixels, the distinct runs they join other than their own,
+    /// the most at one pixel.
+    pub labelled: u64,
+    pub joined_runs: u64,
+    pub joined_runs_max: u32,
+    /// The row-root model's joins between clusters it believes different,
+    /// and the merges they make.
+    pub offered: u64,
+    pub merges: u64,
+}
+
+fn find(parent: &mut [u32], mut x: u32) -> u32 {
+    while parent[x as usize] != x {
+        parent[x as usize] = parent[parent[x as usize] as usize];
+        x = parent[x as usize];
+    }
+    x
+}
+
+/// Add one frame's counts to `t` (the frame clustered by the golden stream
+/// with `params`).
+pub fn measure(params: &FccParams, frame: &Frame, t: &mut SlotLoad) -> anyhow::Result<()> {
+    let mut stream = Stream::new(params)?;
+    let mut column = vec![None; frame.rows];
+    for c in 0..frame.cols {
+        for (i, v) in column.iter_mut().enumerate() {
+            *v = frame.get(i, c);
+        }
+        stream.push_column(&column)?;
+    }
+    stream.finish()?;
+    let mut runs = Vec::new();
+    stream.runs_into(&mut runs)?;
+    let (rows, cols, h) = (frame.rows, frame.cols, params.half());
+    let th = Thresholds::new(params);
+    let n = runs.iter().copied().max().unwrap_or(0) as usize + 1;
+    let mut parent: Vec<u32> = (0..n as u32).collect();
+    // Per row: its latest labelled run, and the cluster the core believes
+    // it in; merges waiting to rewrite those beliefs.
+    let per_row = h + 1;
+    let mut latest = vec![vec![0u32; per_row]; rows];
+    let mut view = vec![vec![0u32; per_row]; rows];
+    let mut pending: VecDeque<(u64, u32, u32)> = VecDeque::new();
+    let mut joined: Vec<u32> = Vec::new();
+    let mut offered: Vec<u32> = Vec::new();
+    let mut slot = 0u64;
+    for c in 0..cols {
+        for i in 0..rows {
+            slot += 1;
+            while pending.front().is_some_and(|&(at, _, _)| at <= slot) {
+                let (_, from, to) = pending.pop_front().expect("checked");
+                for v in view.iter_mut().flatten().filter(|v| **v == from) {
+                    *v = to;
+                }
+            }
+            let own = runs[i * cols + c];
+            let Some(p) = frame.get(i, c).filter(|_| own != 0) else {
+                continue;
+            };
+            if latest[i][0] != own {
+                latest[i].rotate_right(1);
+                view[i].rotate_right(1);
+                latest[i][0] = own;
+                view[i][0] = own;
+            }
+            joined.clear();
+            offered.clear();
+            for (ii, cc) in column_window(rows, h, i, c) {
+                let r = runs[ii * cols + cc];
+                if r == 0
+                    || r == own
+                    || joined.contains(&r)
+                    || !frame.get(ii, cc).is_some_and(|q| th.joins(p, q))
+                {
+                    continue;
+                }
+                joined.push(r);
+                let Some(k) = latest[ii].iter().position(|&l| l == r) else {
+                    anyhow::bail!(
+                        "row {ii}, column {cc}: a joined run not among its row's last {per_row} (a bug)"
+                    );
+                };
+                let cluster = view[ii][k];
+                if cluster != view[i][0] && !offered.contains(&cluster) {
+                    offered.push(cluster);
+                }
+            }
+            for &x in &offered {
+                let (a, b) = (find(&mut parent, own), find(&mut parent, x));
+                if a != b {
+                    let (keep, gone) = (a.min(b), a.max(b));
+                    parent[gone as usize] = keep;
+                    pending.push_back((slot + ROOTS_LATE, gone, keep));
+                    t.merges += 1;
+                }
+            }
+            view[i][0] = find(&mut parent, own);
+            t.labelled += 1;
+            t.joined_runs += joined.len() as u64;
+            t.joined_runs_max = t.joined_runs_max.max(joined.len() as u32);
+            t.offered += offered.len() as u64;
+        }
+    }
+    t.slots += (rows * cols) as u64;
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A flat patch, three rows by six columns, 0.1 m apart: one cluster of
+    /// three runs (one per row), joined when the second and third rows'
+    /// first pixels arrive; every later pixel finds its neighbours' rows
+    /// in its own cluster and offers nothing.
+    #[test]
+    fn a_patch_offers_its_two_merges_and_nothing_else() {
+        let mut f = Frame::empty(3, 6);
+        for i in 0..3 {
+            for c in 0..6 {
+                f.set(i, c, Some([2560, (c * 26) as i16, -((i * 26) as i16)]));
+            }
+        }
+        let p = FccParams {
+            rows: 3,
+            cols: 6,
+            fsize: 3,
+            ..FccParams::default()
+        };
+        let mut t = SlotLoad::default();
+        measure(&p, &f, &mut t).unwrap();
+        assert_eq!((t.slots, t.labelled), (18, 18));
+        assert_eq!((t.merges, t.offered), (2, 2));
+        // K = 3: the rows above and below, one run each.
+        assert_eq!(t.joined_runs_max, 2);
+        // Column 0: (1, 0) and (2, 0) join the row above. Later columns:
+        // (1, c) rows 0 and 2, (0, c) and (2, c) row 1.
+        assert_eq!(t.joined_runs, 1 + 1 + 5 * (1 + 2 + 1));
+    }
+}
