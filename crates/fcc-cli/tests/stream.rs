@@ -30,6 +30,24 @@ const CAPTURES: [(&str, &str); 4] = [
     ),
 ];
 
+/// A 16 x 256 synthetic scene written into `dir`.
+fn small_scene(dir: &Path) -> std::path::PathBuf {
+    let npy = dir.join("f.npy");
+    let o = fcc(&[
+        "scene",
+        "--seed",
+        "1",
+        "--rows",
+        "16",
+        "--cols",
+        "256",
+        "--output",
+        s(&npy),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    npy
+}
+
 fn labels(p: &Path) -> Vec<u32> {
     fcc_npy::read_labels(p).unwrap().labels
 }
@@ -140,19 +158,7 @@ fn frame_mode_cluster_table_has_the_record_fields() {
 #[test]
 fn the_row_major_core_refuses_limits_and_the_stream() {
     let d = tmpdir("stream-refusals");
-    let npy = d.join("f.npy");
-    let o = fcc(&[
-        "scene",
-        "--seed",
-        "1",
-        "--rows",
-        "16",
-        "--cols",
-        "256",
-        "--output",
-        s(&npy),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
+    let npy = small_scene(&d);
     for (args, why) in [
         (
             vec![
@@ -250,19 +256,7 @@ fn check_load_table(md: &str) {
 #[test]
 fn the_open_limit_leaves_runs_unlabelled_and_says_so() {
     let d = tmpdir("stream-open-limit");
-    let npy = d.join("f.npy");
-    let o = fcc(&[
-        "scene",
-        "--seed",
-        "1",
-        "--rows",
-        "16",
-        "--cols",
-        "256",
-        "--output",
-        s(&npy),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
+    let npy = small_scene(&d);
     let run = |limit: Option<&str>, extra: &[&str]| {
         let out = d.join("l.npy");
         let mut a = vec![

@@ -80,6 +80,8 @@ pub struct FccLabelPool {
     reserved: DFF<Bits<3>>,
     pop: Signal<Local, Bit>,
     issue: Signal<Local, Bit>,
+    /// `reserved` with this cycle's read.
+    filled: Signal<Local, Bits<3>>,
     fresh_push: Signal<Local, Bit>,
     push: Signal<Local, Bit>,
     push_label: Signal<Local, Bits<16>>,
@@ -87,7 +89,6 @@ pub struct FccLabelPool {
     push_at: Signal<Local, Bits<3>>,
     entry_is: Vec<Constant<Bits<3>>>,
     queue_size: Constant<Bits<3>>,
-    queue_less_one: Constant<Bits<3>>,
     one3: Constant<Bits<3>>,
     one16: Constant<Bits<16>>,
     zero16: Constant<Bits<16>>,
@@ -126,13 +127,13 @@ impl FccLabelPool {
             reserved: Default::default(),
             pop: Default::default(),
             issue: Default::default(),
+            filled: Default::default(),
             fresh_push: Default::default(),
             push: Default::default(),
             push_label: Default::default(),
             push_at: Default::default(),
             entry_is: (0..QUEUE).map(|n| kb(n as u64)).collect(),
             queue_size: kb(QUEUE as u64),
-            queue_less_one: kb(QUEUE as u64 - 1),
             one3: kb(1),
             one16: kb(1),
             zero16: kb(0),
@@ -174,37 +175,27 @@ impl Logic for FccLabelPool {
         // in a cycle no read's word arrives. Every decision reads flags.
         self.issue.next =
             self.in_fifo_any.q.val() & (self.reserved.q.val() != self.queue_size.val());
+        self.filled.next = self.reserved.q.val();
+        if self.issue.val() {
+            self.filled.next = self.reserved.q.val() + self.one3.val();
+        }
         self.fresh_push.next = self.fresh_any.q.val()
             & !self.read_s2.q.val()
-            & (self.reserved.q.val() != self.queue_size.val());
-        if self.issue.val() {
-            self.fresh_push.next = self.fresh_any.q.val()
-                & !self.read_s2.q.val()
-                & (self.reserved.q.val() < self.queue_less_one.val());
-        }
+            & (self.filled.val() != self.queue_size.val());
         self.push.next = self.read_s2.q.val() | self.fresh_push.val();
         self.push_label.next = self.fifo.read_data.val();
         if self.fresh_push.val() {
             self.push_label.next = self.fresh.q.val();
         }
         // Reserved: + a read issued, + a fresh label, - a pop.
-        self.reserved.d.next = self.reserved.q.val();
-        if self.issue.val() {
-            self.reserved.d.next = self.reserved.q.val() + self.one3.val();
-        }
+        self.reserved.d.next = self.filled.val();
         if self.fresh_push.val() {
-            self.reserved.d.next = self.reserved.q.val() + self.one3.val();
-        }
-        if self.issue.val() & self.fresh_push.val() {
-            self.reserved.d.next = self.reserved.q.val() + self.one3.val() + self.one3.val();
+            self.reserved.d.next = self.filled.val() + self.one3.val();
         }
         if self.pop.val() {
-            self.reserved.d.next = self.reserved.q.val() - self.one3.val();
-            if self.issue.val() | self.fresh_push.val() {
-                self.reserved.d.next = self.reserved.q.val();
-            }
-            if self.issue.val() & self.fresh_push.val() {
-                self.reserved.d.next = self.reserved.q.val() + self.one3.val();
+            self.reserved.d.next = self.filled.val() - self.one3.val();
+            if self.fresh_push.val() {
+                self.reserved.d.next = self.filled.val();
             }
         }
         // The FIFO: returns written at `write_at`, reads issued at `read_at`.
