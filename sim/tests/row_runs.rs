@@ -45,6 +45,10 @@ c_struct! {
         pub free_ok: u8,
         pub free_label: u16,
         pub open_room: u16,
+        pub use_pool: u8,
+        pub clear: u8,
+        pub ret: u8,
+        pub ret_label: u16,
     }
 }
 
@@ -74,6 +78,9 @@ c_struct! {
         pub o_ring_b: u16,
         pub o_hold_drop: u16,
         pub o_hold_add: u16,
+        pub pool_ok: u8,
+        pub pool_label: u16,
+        pub free_count: u16,
     }
 }
 
@@ -94,14 +101,20 @@ struct Feed {
     reset_after: Option<usize>,
 }
 
-/// The bench: the block, its inputs' lag, the free list, each row's held
-/// label as the block's hold outputs left it.
+/// The bench: the block, its inputs' lag, the free list (the bench's, or
+/// the build's `FccLabelPool` fed with the returned labels), each row's
+/// held label as the block's hold outputs left it.
 struct Bench {
     dut: PlainDut<RrIn, RrOut>,
     lag: VecDeque<(u16, u64, u64)>,
     /// Labels `1 ..= labels` in all.
     labels: u16,
     free: VecDeque<u16>,
+    /// Labels come from the pool: returned ones wait here to be fed to it,
+    /// one a cycle; `clear` starts a frame.
+    pooled: bool,
+    returns: VecDeque<u16>,
+    clear: bool,
     taken: VecDeque<u16>,
     held: Vec<u16>,
     /// The runs the open limit allows in the column being fed (spec §9.1).
@@ -119,6 +132,9 @@ impl Bench {
             lag: VecDeque::from(vec![(0, 0, 0); THR_LAG]),
             labels: labels as u16,
             free: (1..=labels as u16).collect(),
+            pooled: false,
+            returns: VecDeque::new(),
+            clear: false,
             taken: VecDeque::new(),
             held: vec![0; build.rows],
             open_room: NO_LIMIT,
@@ -141,8 +157,13 @@ impl Bench {
             free_ok: !self.free.is_empty() as u8,
             free_label: self.free.front().copied().unwrap_or(0),
             open_room: self.open_room,
+            use_pool: self.pooled as u8,
+            clear: std::mem::take(&mut self.clear) as u8,
             ..RrIn::default()
         };
+        if let Some(l) = self.returns.pop_front().filter(|_| self.pooled) {
+            (i.ret, i.ret_label) = (1, l);
+        }
         let (key, ch, cv) = self.lag.pop_front().unwrap();
         i.key = key;
         i.ch = ch;
@@ -166,7 +187,12 @@ impl Bench {
         self.lag.push_back(thr);
         let o = self.dut.step(&i);
         if o.take != 0 {
-            let l = self.free.pop_front().expect("take with an empty free list");
+            let l = if self.pooled {
+                assert!(o.pool_ok != 0, "{}: take with an empty pool", self.what);
+                o.pool_label
+            } else {
+                self.free.pop_front().expect("take with an empty free list")
+            };
             self.taken.push_back(l);
         }
         if o.o_valid != 0 && !rst {
@@ -207,6 +233,28 @@ impl Bench {
             self.cycle(p, None, false);
         }
     }
+
+    /// Labels back to the free list; with the pool, fed to it one a cycle
+    /// (bubbles) until all are in.
+    fn give_back(&mut self, p: &FccParams, labels: Vec<u16>) {
+        if self.pooled {
+            self.returns.extend(labels);
+            while !self.returns.is_empty() {
+                self.cycle(p, None, false);
+            }
+        } else {
+            self.free.extend(labels);
+        }
+    }
+
+    /// A frame starts: with the pool, `clear` (every label free again).
+    fn frame_start(&mut self, p: &FccParams) {
+        if self.pooled {
+            self.returns.clear();
+            self.clear = true;
+            self.cycle(p, None, false);
+        }
+    }
 }
 
 /// Stream `f` through the bench and the golden stream and check every
@@ -215,6 +263,7 @@ fn run_frame(b: &mut Bench, p: &FccParams, f: &Frame, feed: Feed, rng: &mut ChaC
     let (rows, cols) = (p.rows, p.cols);
     // Every cluster closed at the last frame's end: no row holds a label.
     b.held.fill(0);
+    b.frame_start(p);
     if let Some(n) = feed.reset_after {
         // A frame cut short by a reset: its labels come back (the core
         // frees them on reset), the held labels are forgotten.
@@ -233,6 +282,7 @@ fn run_frame(b: &mut Bench, p: &FccParams, f: &Frame, feed: Feed, rng: &mut ChaC
         b.outs.clear();
         b.taken.clear();
         b.free = (1..=b.labels).collect();
+        b.returns.clear();
         b.held.fill(0);
     }
     b.outs.clear();
@@ -271,7 +321,7 @@ fn run_frame(b: &mut Bench, p: &FccParams, f: &Frame, feed: Feed, rng: &mut ChaC
         if feed.drain {
             b.drain(p);
             held_after.push(b.held.clone());
-            return_labels(b, &pixels, cols);
+            return_labels(b, p, &pixels);
             b.open_room = room(&golden);
         } else {
             closed.extend(pixels);
@@ -286,7 +336,7 @@ fn run_frame(b: &mut Bench, p: &FccParams, f: &Frame, feed: Feed, rng: &mut ChaC
     let mut runs = Vec::new();
     golden.runs_into(&mut runs).unwrap();
     check_frame(b, p, f, &runs, &held_after, feed.drain);
-    return_labels(b, &closed, cols);
+    return_labels(b, p, &closed);
     assert!(
         b.taken.is_empty(),
         "{}: labels taken but not seen at a start",
@@ -295,7 +345,9 @@ fn run_frame(b: &mut Bench, p: &FccParams, f: &Frame, feed: Feed, rng: &mut ChaC
 }
 
 /// Return to the free list the labels of the clusters with these pixels.
-fn return_labels(b: &mut Bench, clusters: &[Vec<u32>], cols: usize) {
+fn return_labels(b: &mut Bench, p: &FccParams, clusters: &[Vec<u32>]) {
+    let cols = p.cols;
+    let mut back = Vec::new();
     for px in clusters {
         let mut labels: Vec<u16> = px
             .iter()
@@ -308,8 +360,9 @@ fn return_labels(b: &mut Bench, clusters: &[Vec<u32>], cols: usize) {
             "{}: a cluster with an unlabelled pixel",
             b.what
         );
-        b.free.extend(labels);
+        back.extend(labels);
     }
+    b.give_back(p, back);
 }
 
 /// Every output of the frame against the golden runs and spec §3 / §9.2.
@@ -593,10 +646,29 @@ fn a_reset_mid_frame_starts_the_frame_again() {
 
 #[test]
 fn labels_run_out_and_are_reused_as_the_golden_stream_frees_them() {
-    // B = 8 (255 labels) on frames with far more runs: labels freed at a
-    // column serve runs of the next (spec §9.1), and runs that start while
-    // every label is in use stay unlabelled, as in the golden stream.
-    let build = build();
+    labels_run_out(false);
+}
+
+/// The same with the build's label pool (`FccLabelPool`, 8-bit labels) in
+/// place of the bench's free list: the labels freed at a column are fed to
+/// it one a cycle between columns, and the decision pops its head.
+#[test]
+fn labels_run_out_and_are_reused_through_the_label_pool() {
+    labels_run_out(true);
+}
+
+/// B = 8 (255 labels) on frames with far more runs: labels freed at a
+/// column serve runs of the next (spec §9.1), and runs that start while
+/// every label is in use stay unlabelled, as in the golden stream.
+fn labels_run_out(pooled: bool) {
+    let build = if pooled {
+        FccParams {
+            label_bits: 8,
+            ..build()
+        }
+    } else {
+        build()
+    };
     let seed = 0x5eed_2000;
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let mut first_refused = false;
@@ -622,6 +694,7 @@ fn labels_run_out_and_are_reused_as_the_golden_stream_frees_them() {
         ),
     ] {
         let mut b = Bench::new(&build, p.max_label(), seed, what);
+        b.pooled = pooled;
         let (mut reused, mut refused) = (false, false);
         for _ in 0..2 {
             let mut f = random_frame(p.rows, p.cols, 0.9, 0.9, false, &mut rng);

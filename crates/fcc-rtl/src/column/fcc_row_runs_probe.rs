@@ -2,11 +2,16 @@
 //! scalar ports, for its own bench: the pixel slot field by field (with
 //! its key and addend `THR_LAG` cycles later, as `FccPixThr` gives them),
 //! the run parameters and the free list in; `take` and `out` field by
-//! field (`o_*`) out.
+//! field (`o_*`) out. With `use_pool` the labels come from an
+//! `FccLabelPool` of the build's label width (as in the core: its head
+//! into the decision, `take` back), which the bench feeds with returned
+//! labels (`ret`, `ret_label`) and frame starts (`clear`); `pool_ok` and
+//! `pool_label` show its head.
 
 use fcc_params::FccParams;
 use rust_hdl::prelude::*;
 
+use super::fcc_label_pool::FccLabelPool;
 use super::fcc_open_room::OPEN_ROOM_BITS;
 use super::fcc_row_runs::FccRowRuns;
 use super::ColPix;
@@ -35,7 +40,14 @@ pub struct FccRowRunsProbe {
     pub free_ok: Signal<In, Bit>,
     pub free_label: Signal<In, Bits<16>>,
     pub open_room: Signal<In, Bits<OPEN_ROOM_BITS>>,
+    pub use_pool: Signal<In, Bit>,
+    pub clear: Signal<In, Bit>,
+    pub ret: Signal<In, Bit>,
+    pub ret_label: Signal<In, Bits<16>>,
     pub take: Signal<Out, Bit>,
+    pub pool_ok: Signal<Out, Bit>,
+    pub pool_label: Signal<Out, Bits<16>>,
+    pub free_count: Signal<Out, Bits<16>>,
     pub o_valid: Signal<Out, Bit>,
     pub o_ok: Signal<Out, Bit>,
     pub o_lok: Signal<Out, Bit>,
@@ -59,6 +71,7 @@ pub struct FccRowRunsProbe {
     pub o_hold_drop: Signal<Out, Bits<16>>,
     pub o_hold_add: Signal<Out, Bits<16>>,
     runs: FccRowRuns,
+    pool: FccLabelPool,
     slot: Signal<Local, ColPix>,
 }
 
@@ -87,7 +100,14 @@ impl FccRowRunsProbe {
             free_ok: Default::default(),
             free_label: Default::default(),
             open_room: Default::default(),
+            use_pool: Default::default(),
+            clear: Default::default(),
+            ret: Default::default(),
+            ret_label: Default::default(),
             take: Default::default(),
+            pool_ok: Default::default(),
+            pool_label: Default::default(),
+            free_count: Default::default(),
             o_valid: Default::default(),
             o_ok: Default::default(),
             o_lok: Default::default(),
@@ -111,6 +131,7 @@ impl FccRowRunsProbe {
             o_hold_drop: Default::default(),
             o_hold_add: Default::default(),
             runs: FccRowRuns::new(p.rows),
+            pool: FccLabelPool::new(p),
             slot: Default::default(),
         }
     }
@@ -141,8 +162,21 @@ impl Logic for FccRowRunsProbe {
         self.runs.ring_l_min.next = self.ring_l_min.val();
         self.runs.free_ok.next = self.free_ok.val();
         self.runs.free_label.next = self.free_label.val();
+        if self.use_pool.val() {
+            self.runs.free_ok.next = self.pool.free_ok.val();
+            self.runs.free_label.next = self.pool.free_label.val();
+        }
         self.runs.open_room.next = self.open_room.val();
         self.take.next = self.runs.take.val();
+        self.pool.clk.next = self.clk.val();
+        self.pool.rst.next = self.rst.val();
+        self.pool.clear.next = self.clear.val();
+        self.pool.take.next = self.use_pool.val() & self.runs.take.val();
+        self.pool.ret.next = self.ret.val();
+        self.pool.ret_label.next = self.ret_label.val();
+        self.pool_ok.next = self.pool.free_ok.val();
+        self.pool_label.next = self.pool.free_label.val();
+        self.free_count.next = self.pool.free_count.val();
         self.o_valid.next = self.runs.out.val().valid;
         self.o_ok.next = self.runs.out.val().ok;
         self.o_lok.next = self.runs.out.val().lok;
