@@ -1,7 +1,11 @@
 //! The column-streaming core's blocks (docs/column-core.md): the frame's
 //! pixels in column order in, one record per cluster out as it closes.
-//! Built so far: the per-row run state of pass 1 (`FccRowRuns`) and the
-//! pass-2 window (`FccColWindow`).
+//! Built so far, each with its own bench: the per-row run state of pass 1
+//! (`FccRowRuns`, with the open limit in `FccOpenRoom`), the label pool
+//! (`FccLabelPool`), the pass-2 window (`FccColWindow`) and its distance
+//! tests (`FccColDist`), the record accumulator (`FccAccPixel`,
+//! `FccAccMerge`) and the record output (`FccRecordOut`). The slot table
+//! and the top are to come.
 
 pub mod fcc_acc_merge;
 pub mod fcc_acc_pixel;
