@@ -69,13 +69,14 @@ const COLUMNS: [&str; 16] = [
 ];
 
 /// The second table's columns: what a column core's slot table absorbs.
-const LOAD_COLUMNS: [&str; 11] = [
+const LOAD_COLUMNS: [&str; 12] = [
     "source",
     "K",
     "setting",
     "joined runs per pixel",
     "joined runs at a pixel",
     "row roots: offered per slot",
+    "offered beyond one a slot",
     "merges per slot",
     "merges per frame",
     "merges in a column",
@@ -236,10 +237,11 @@ pub fn run(args: &StreamReportArgs) -> anyhow::Result<()> {
                 )?;
                 writeln!(
                     load,
-                    "| {name} | {k} | {setting} | {:.2} | {} | {:.3} | {:.3} | {} | {} | {} | {} |",
+                    "| {name} | {k} | {setting} | {:.2} | {} | {:.3} | {:.4} | {:.3} | {} | {} | {} | {} |",
                     t.load.joined_runs as f64 / t.load.labelled.max(1) as f64,
                     t.load.joined_runs_max,
                     t.load.offered as f64 / t.load.slots.max(1) as f64,
+                    t.load.offered_more as f64 / t.load.slots.max(1) as f64,
                     t.load.merges as f64 / t.load.slots.max(1) as f64,
                     t.merges,
                     t.col_merges,

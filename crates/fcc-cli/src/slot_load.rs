@@ -27,8 +27,10 @@ pub struct SlotLoad {
     pub joined_runs: u64,
     pub joined_runs_max: u32,
     /// The row-root model's joins between clusters it believes different,
-    /// and the merges they make.
+    /// the pixels that offer more than one (a core sending one a slot
+    /// waits a slot for each more), and the merges they make.
     pub offered: u64,
+    pub offered_more: u64,
     pub merges: u64,
 }
 
@@ -122,6 +124,7 @@ pub fn measure(params: &FccParams, frame: &Frame, t: &mut SlotLoad) -> anyhow::R
             t.joined_runs += joined.len() as u64;
             t.joined_runs_max = t.joined_runs_max.max(joined.len() as u32);
             t.offered += offered.len() as u64;
+            t.offered_more += offered.len().saturating_sub(1) as u64;
         }
     }
     t.slots += (rows * cols) as u64;
@@ -153,7 +156,7 @@ mod tests {
         let mut t = SlotLoad::default();
         measure(&p, &f, &mut t).unwrap();
         assert_eq!((t.slots, t.labelled), (18, 18));
-        assert_eq!((t.merges, t.offered), (2, 2));
+        assert_eq!((t.merges, t.offered, t.offered_more), (2, 2, 0));
         // K = 3: the rows above and below, one run each.
         assert_eq!(t.joined_runs_max, 2);
         // Column 0: (1, 0) and (2, 0) join the row above. Later columns:

@@ -232,6 +232,7 @@ fn check_load_table(md: &str) {
     let (closed, freed) = (col("records in a column"), col("labels freed in a column"));
     let (mean, most) = (col("joined runs per pixel"), col("joined runs at a pixel"));
     let (offered, merges) = (col("row roots: offered per slot"), col("merges per slot"));
+    let beyond = col("offered beyond one a slot");
     assert_eq!(lines.len(), 2 + 2 * 4, "{md}");
     for l in &lines[2..] {
         let r: Vec<&str> = l.split('|').map(str::trim).collect();
@@ -243,6 +244,7 @@ fn check_load_table(md: &str) {
         // The row-root model offers every merge, and a few it finds done.
         let f = |c: usize| -> f64 { r[c].parse().unwrap() };
         assert!(f(offered) >= f(merges) && f(merges) > 0.0, "{l}");
+        assert!(f(beyond) < f(offered), "{l}");
         assert!(
             n(frame) >= n(column) && n(column) > 0 && n(closed) > 0 && n(freed) >= n(closed),
             "{l}"
