@@ -727,7 +727,7 @@ fn the_column_window_is_k_times_h_positions_inside_the_frame() {
 /// less those whose record closed before `c`. A run starting at column `c`
 /// (pass 1's runs, labels plentiful, in column order) is labelled exactly
 /// when those plus the runs labelled so far in column `c` are fewer than
-/// `S`; a refused run's pixels are all unlabelled, a labelled run's none.
+/// `N_o`; a refused run's pixels are all unlabelled, a labelled run's none.
 /// Returns the runs refused.
 fn check_open_limit(p: &FccParams, f: &Frame, what: &str) -> u32 {
     let s_max = p.open_limit.expect("an open limit");
@@ -782,7 +782,7 @@ fn check_open_limit(p: &FccParams, f: &Frame, what: &str) -> u32 {
             assert_eq!(
                 labels[k] != 0,
                 want,
-                "{what}: row {i}, col {c}: {open_before} clusters open after column {}, {started} runs labelled in column {c}, S = {s_max}: the run should {}be labelled",
+                "{what}: row {i}, col {c}: {open_before} clusters open after column {}, {started} runs labelled in column {c}, N_o = {s_max}: the run should {}be labelled",
                 c as i64 - 1,
                 if want { "" } else { "not " }
             );
@@ -840,7 +840,7 @@ fn check_open_limit_edge(p: &FccParams, f: &Frame, what: &str) {
     assert_eq!(
         stream_frame(&mut s, f),
         (records, labels),
-        "{what}: S = {peak}"
+        "{what}: N_o = {peak}"
     );
     assert_eq!(check_open_limit(&at, f, what), 0);
     if peak > 1 {
@@ -850,7 +850,7 @@ fn check_open_limit_edge(p: &FccParams, f: &Frame, what: &str) {
         };
         assert!(
             check_open_limit(&below, f, what) > 0,
-            "{what}: S = {}",
+            "{what}: N_o = {}",
             peak - 1
         );
     }
@@ -905,7 +905,7 @@ fn the_open_limit_on_scenes() {
                     open_limit: Some(limit),
                     ..p.clone()
                 };
-                assert!(check_open_limit(&q, &f, &what) > 0, "{what}: S = {limit}");
+                assert!(check_open_limit(&q, &f, &what) > 0, "{what}: N_o = {limit}");
             }
         }
     }
@@ -914,7 +914,7 @@ fn the_open_limit_on_scenes() {
 #[test]
 fn the_open_limit_refuses_the_run_past_it_and_frees_with_the_column() {
     // Three separate objects in column 0 (rows 0, 3, 6), each closed at
-    // column 0 + h = 1 (K = 3, bridge 0); S = 2 refuses the third, then
+    // column 0 + h = 1 (K = 3, bridge 0); N_o = 2 refuses the third, then
     // column 2's three runs count the clusters open after column 1 (none).
     let f = grid(&["#.#", "...", "...", "#.#", "...", "...", "#.#"], 1.0);
     let p = FccParams {
@@ -952,5 +952,5 @@ fn the_open_limit_refuses_the_run_past_it_and_frees_with_the_column() {
     let e = cluster(&p, &f, MergeMode::Exact).unwrap_err();
     assert_eq!(e, GoldenError::StreamOnly(2));
     assert!(e.to_string().contains("open_limit"), "{e}");
-    check_open_limit(&p, &f, "three objects a column, S = 2");
+    check_open_limit(&p, &f, "three objects a column, N_o = 2");
 }

@@ -737,16 +737,16 @@ fn labels_run_out(pooled: bool) {
 fn the_open_limit_refuses_runs_as_the_golden_stream() {
     // Spec §9.1's open limit with labels plentiful: a run starting at a
     // column is refused once the clusters open after the previous column
-    // and the runs labelled in this one reach S. The bench gives the block
-    // S less the golden stream's open clusters between columns.
+    // and the runs labelled in this one reach N_o. The bench gives the block
+    // N_o less the golden stream's open clusters between columns.
     let build = build();
     let seed = 0x5eed_3000;
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     for (what, limit, bridge) in [
-        ("S = 1", 1, Some(2)),
-        ("S = 3, bridge 4", 3, Some(4)),
-        ("S = 12, no bridge limit", 12, None),
-        ("S = 40", 40, Some(1)),
+        ("N_o = 1", 1, Some(2)),
+        ("N_o = 3, bridge 4", 3, Some(4)),
+        ("N_o = 12, no bridge limit", 12, None),
+        ("N_o = 40", 40, Some(1)),
     ] {
         let p = FccParams {
             th_v: 0.05,

@@ -20,7 +20,7 @@ pub mod limits {
     pub const FSIZE: RangeInclusive<usize> = 3..=15;
     /// Provisional label width in bits.
     pub const LABEL_BITS: RangeInclusive<u32> = 8..=20;
-    /// The stream's open limit S, when set (spec §9.1).
+    /// The stream's open limit `N_o`, when set (spec §9.1).
     pub const OPEN_LIMIT: RangeInclusive<u32> = 1..=u32::MAX;
     /// Thresholds in metres, exclusive on both ends.
     pub const TH_MIN_EXCL: f64 = 0.0;
@@ -97,8 +97,8 @@ pub struct FccParams {
     pub th_h_slope: f64,
     #[serde(default, skip_serializing_if = "is_zero")]
     pub th_v_slope: f64,
-    /// The stream's open limit S (spec §9.1): a run starting at column `c`
-    /// receives a label only while fewer than `S` clusters count as open
+    /// The stream's open limit `N_o` (spec §9.1): a run starting at column `c`
+    /// receives a label only while fewer than `N_o` clusters count as open
     /// (those open after column `c - 1` closed, plus the runs already
     /// labelled in column `c`). `None`: unlimited. The stream only: frame
     /// mode refuses it.

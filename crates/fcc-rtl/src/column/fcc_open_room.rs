@@ -1,9 +1,9 @@
 //! `FccOpenRoom`: spec §9.1's open limit at `FccRowRuns`'s label decision.
-//! A run starting at column `c` is labelled only while fewer than `S`
+//! A run starting at column `c` is labelled only while fewer than `N_o`
 //! clusters count as open: those open after column `c - 1` closed, plus the
 //! runs labelled so far in column `c`.
 //!
-//! `open_room` is `S` less the clusters open after the previous column
+//! `open_room` is `N_o` less the clusters open after the previous column
 //! closed: the runs the limit still allows in this column (with no limit,
 //! any value of at least `R`: a column starts at most `R` runs). The core
 //! holds it steady from before the column's first slot reaches the
