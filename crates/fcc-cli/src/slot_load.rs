@@ -27,8 +27,8 @@ pub struct SlotLoad {
     pub joined_runs: u64,
     pub joined_runs_max: u32,
     /// The row-root model's joins between clusters it believes different,
-    /// the pixels that offer more than one (a core sending one a slot
-    /// waits a slot for each more), and the merges they make.
+    /// those beyond the first at each pixel (a core sending one a slot
+    /// waits a slot for each), and the merges they make.
     pub offered: u64,
     pub offered_more: u64,
     pub merges: u64,
