@@ -55,6 +55,9 @@ pub enum BenchBlock {
     RecordOut,
     /// The column core's free labels `FccLabelPool`.
     LabelPool,
+    /// The column core's row roots `FccRowRoots` (table, window, lookups,
+    /// merge pick) behind the scalar ports of `FccRowRootsProbe`.
+    RowRoots,
 }
 
 /// One row of the table: the module's name before the configuration
@@ -82,7 +85,7 @@ impl Row {
 
 impl BenchBlock {
     /// Every block with a bench.
-    pub const ALL: [BenchBlock; 18] = [
+    pub const ALL: [BenchBlock; 19] = [
         BenchBlock::Regs,
         BenchBlock::AxilAdapter,
         BenchBlock::MergeTable,
@@ -101,6 +104,7 @@ impl BenchBlock {
         BenchBlock::Acc,
         BenchBlock::RecordOut,
         BenchBlock::LabelPool,
+        BenchBlock::RowRoots,
     ];
 
     fn row(self) -> Row {
@@ -235,6 +239,17 @@ impl BenchBlock {
                     "fcc_label_pool",
                 )
             }),
+            BenchBlock::RowRoots => Row {
+                name: "fcc_row_roots_probe",
+                generate: |p| {
+                    gen(
+                        p,
+                        crate::column::fcc_row_roots_probe::FccRowRootsProbe::new(p),
+                        "fcc_row_roots_probe",
+                    )
+                },
+                waivers: lint::row_roots_waivers,
+            },
         }
     }
 

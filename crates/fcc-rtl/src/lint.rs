@@ -153,6 +153,22 @@ pub fn block_waivers(p: &FccParams, name: &str) -> String {
     s
 }
 
+/// The waivers of the row roots' probe `name`: its hit mask and label
+/// words are sized for the largest window (K = 11), so a smaller K leaves
+/// their upper bits unread, and it brings out the pixel event's position,
+/// label and flags only (the rest of the slot passes through unchanged).
+pub fn row_roots_waivers(p: &FccParams, name: &str) -> String {
+    let mut s = block_waivers(p, name);
+    s.push_str(&format!(
+        "// Sized for K = 11: a smaller window leaves upper bits and words unread.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'hits'*\"\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'words$*\"\n\
+         // The probe reads the event's position, label and flags only.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'roots$out'*\"\n"
+    ));
+    s
+}
+
 /// The waivers of the column window's probe `name`: it brings out the
 /// centre's position and label only; the window passes the rest of the
 /// slot through unchanged (a delay line the probe feeds with zeros).

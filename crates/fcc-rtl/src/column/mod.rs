@@ -16,17 +16,27 @@ pub mod fcc_col_edge;
 pub mod fcc_col_window;
 pub mod fcc_col_window_probe;
 pub mod fcc_col_word_split;
+pub mod fcc_join_pick;
 pub mod fcc_label_pool;
 pub mod fcc_open_room;
 pub mod fcc_rec_beats;
 pub mod fcc_record_out;
 pub mod fcc_record_out_probe;
+pub mod fcc_root_match;
+pub mod fcc_root_table;
+pub mod fcc_root_window;
 pub mod fcc_row_entry;
+pub mod fcc_row_roots;
+pub mod fcc_row_roots_probe;
 pub mod fcc_row_runs;
 pub mod fcc_row_runs_probe;
 pub mod fcc_run_decide;
 
 use rust_hdl::prelude::*;
+
+/// Bits of a record slot: the slot table's 512 records (docs/column-core.md;
+/// spec §9.1's open limit keeps the clusters open at most that many).
+pub const SLOT_BITS: usize = 9;
 
 /// One pixel slot of the frame in column order.
 #[derive(Clone, Copy, Debug, PartialEq, Default, LogicStruct)]
