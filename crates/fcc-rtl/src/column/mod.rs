@@ -4,8 +4,10 @@
 //! (`FccRowRuns`, with the open limit in `FccOpenRoom`), the label pool
 //! (`FccLabelPool`), the pass-2 window (`FccColWindow`) and its distance
 //! tests (`FccColDist`), the record accumulator (`FccAccPixel`,
-//! `FccAccMerge`) and the record output (`FccRecordOut`). The slot table
-//! and the top are to come.
+//! `FccAccMerge`), the record output (`FccRecordOut`) and the front of the
+//! slot table (`FccRowRoots`: each row's runs' clusters as record slots,
+//! the merges between them). The rest of the slot table and the top are
+//! to come.
 
 pub mod fcc_acc_merge;
 pub mod fcc_acc_pixel;
