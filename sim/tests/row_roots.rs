@@ -247,6 +247,8 @@ struct Bench {
     pending: VecDeque<Pix>,
     merges: u64,
     stalls: u64,
+    /// Cycles the input has been held in a row.
+    held: u32,
     rings: u64,
     seed: u64,
     what: String,
@@ -267,6 +269,7 @@ impl Bench {
             pending: VecDeque::new(),
             merges: 0,
             stalls: 0,
+            held: 0,
             rings: 0,
             seed,
             what: what.to_string(),
@@ -335,8 +338,17 @@ impl Bench {
             self.taken.push_back(s);
         }
         let taken = i.valid != 0 && o.ready != 0;
-        if i.valid != 0 && o.ready == 0 {
+        if o.ready == 0 {
             self.stalls += 1;
+            self.held += 1;
+            assert!(
+                self.held < 64,
+                "{}: the input held for 64 cycles (seed {})",
+                self.what,
+                self.seed
+            );
+        } else {
+            self.held = 0;
         }
         if taken {
             self.pending.push_back(px.expect("a pixel").clone());
@@ -409,13 +421,15 @@ impl Bench {
             self.what, self.seed
         );
         assert_ne!(from, into, "{ctx}: a slot into itself");
-        let live = |s: u16| self.slot_of.values().any(|&v| v == s);
+        let live = |s: u16| {
+            self.slot_of
+                .values()
+                .chain(self.taken.iter())
+                .any(|&v| v == s)
+        };
         assert!(live(from), "{ctx}: from a slot no open run holds");
-        assert!(
-            live(into) || self.pool.front() == Some(&into) || self.taken.contains(&into),
-            "{ctx}: into a slot neither in use nor the pool's head"
-        );
-        for v in self.slot_of.values_mut() {
+        assert!(live(into), "{ctx}: into a slot not in use");
+        for v in self.slot_of.values_mut().chain(self.taken.iter_mut()) {
             if *v == from {
                 *v = into;
             }
@@ -759,8 +773,9 @@ fn a_reset_mid_frame_starts_afresh() {
 /// At the last column one pixel both joins another cluster and closes a
 /// ring: row 5 has a run at columns 0 ..= 3 (A) and one at 36 ..= 39 (B),
 /// whose first and last points meet across the seam; a lone point at row
-/// 6, column 38 (C) is near (5, 39) only. Pixel (5, 39) merges C into B and
-/// then, a cycle later, A into B: one cluster.
+/// 6, column 38 (C) is near (5, 39) only. Pixel (5, 39) merges C into B, is
+/// still in two clusters after it, and holds the input three cycles (ask
+/// for A into B, check, find none left): one cluster.
 #[test]
 fn a_ring_check_and_a_join_at_one_pixel() {
     let build = build();
@@ -785,7 +800,31 @@ fn a_ring_check_and_a_join_at_one_pixel() {
     run_frame(&mut b, &p, &f, feed, &mut rng);
     assert_eq!(
         (b.merges, b.rings, b.stalls),
-        (2, 1, 1),
+        (2, 1, 3),
         "(merges, ring checks, stalls)"
     );
+}
+
+/// One pixel joins three clusters: three lone points around (5, 10), each
+/// 70 units (Q7.8) from it and over 120 from one another. Stage C merges
+/// the first in window order; R asks for the other two, each followed by a
+/// check, then finds none left: the input waits five cycles.
+#[test]
+fn a_pixel_joining_three_clusters() {
+    let build = build();
+    let p = run_params(16, 20);
+    let mut f = Frame::empty(p.rows, p.cols);
+    f.set(5, 10, Some([1000, 0, 0]));
+    f.set(2, 10, Some([1070, 0, 0]));
+    f.set(8, 9, Some([965, 60, 0]));
+    f.set(4, 8, Some([965, -60, 0]));
+    let seed = 0x5eed_2400;
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let mut b = Bench::new(&build, 64, seed, "three clusters");
+    let feed = Feed {
+        bubbles: 0.0,
+        drain: true,
+    };
+    run_frame(&mut b, &p, &f, feed, &mut rng);
+    assert_eq!((b.merges, b.stalls), (3, 5), "(merges, stalls)");
 }

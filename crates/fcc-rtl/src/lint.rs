@@ -164,7 +164,10 @@ pub fn row_roots_waivers(p: &FccParams, name: &str) -> String {
          lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'hits'*\"\n\
          lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'words$*\"\n\
          // The probe reads the event's position, label and flags only.\n\
-         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'roots$out'*\"\n"
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'roots$out'*\"\n\
+         // A stage's slots before the merge feed only the stages that flag\n\
+         // joins (B, D, R), and those only for the joins' slots.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'*$held$*\"\n"
     ));
     s
 }

@@ -1,62 +1,59 @@
-//! `FccJoinPick`: the merge a pixel at the slot table asks for this cycle
-//! (combinational), from the clusters `FccRootMatch` found.
-//!
-//! The pixel's joins are its hits (`ent_ok`) into clusters other than its
-//! own, and at the last column the ring check's pair (`ring`: the row's
-//! first run's cluster and its last's). The first entry, in window order,
-//! whose cluster is not the pixel's asks to merge that cluster into the
-//! pixel's (`m_from` into `m_into`); with none, the ring pair asks
-//! (`ring_a` into `ring_b`). `more` says the pixel joins yet another
-//! cluster: an entry in a third cluster, or the ring pair as well as an
-//! entry. The pixel then stays a cycle for each further merge, which finds
-//! the clusters already merged rewritten.
+//! `FccJoinPick`: the merge a pixel asks for (combinational), from its
+//! stage's join flags (`FccJoinFlags`, registered) and current slots: the
+//! first flagged entry, in window order, merges its cluster into the
+//! pixel's (`m_from` into `m_into`); with none, a flagged ring pair merges
+//! the row's first run's cluster into its last's. Flags a cycle old may
+//! name clusters merged since: the merge asked for is then of a slot into
+//! itself, which changes nothing (`FccRowRoots` drops it from its output).
 
 use rust_hdl::prelude::*;
 
-use super::SLOT_BITS;
+use super::{slot_index, SLOT_BITS};
 use crate::types::{kb, vec_of};
 
 #[derive(LogicBlock)]
 pub struct FccJoinPick {
-    pub ent_ok: Vec<Signal<In, Bit>>,
-    pub ent_slot: Vec<Signal<In, Bits<SLOT_BITS>>>,
-    pub own_slot: Signal<In, Bits<SLOT_BITS>>,
-    pub ring: Signal<In, Bit>,
-    pub ring_a_slot: Signal<In, Bits<SLOT_BITS>>,
-    pub ring_b_slot: Signal<In, Bits<SLOT_BITS>>,
+    pub flag: Vec<Signal<In, Bit>>,
+    pub ring_flag: Signal<In, Bit>,
+    pub slot: Vec<Signal<In, Bits<SLOT_BITS>>>,
     pub m_valid: Signal<Out, Bit>,
     pub m_from: Signal<Out, Bits<SLOT_BITS>>,
     pub m_into: Signal<Out, Bits<SLOT_BITS>>,
-    pub more: Signal<Out, Bit>,
-    /// The entry joins another cluster.
-    other: Vec<Signal<Local, Bit>>,
     any: Signal<Local, Bit>,
+    /// A flag before entry `e`; entry `e` is the first; its slot if so;
+    /// the OR of those up to `e` (the first's slot at the end).
+    before: Vec<Signal<Local, Bit>>,
+    masked: Vec<Signal<Local, Bits<SLOT_BITS>>>,
+    acc: Vec<Signal<Local, Bits<SLOT_BITS>>>,
     first: Signal<Local, Bits<SLOT_BITS>>,
-    ring_other: Signal<Local, Bit>,
     zero_slot: Constant<Bits<SLOT_BITS>>,
     _ne: usize,
+    _own: usize,
+    _ring_a: usize,
+    _ring_b: usize,
 }
 
 impl FccJoinPick {
     /// `ne` window entries.
     pub fn new(ne: usize) -> Self {
+        let ix = slot_index(ne);
         Self {
-            ent_ok: vec_of(ne),
-            ent_slot: vec_of(ne),
-            own_slot: Default::default(),
-            ring: Default::default(),
-            ring_a_slot: Default::default(),
-            ring_b_slot: Default::default(),
+            flag: vec_of(ne),
+            ring_flag: Default::default(),
+            slot: vec_of(ix.joins),
             m_valid: Default::default(),
             m_from: Default::default(),
             m_into: Default::default(),
-            more: Default::default(),
-            other: vec_of(ne),
             any: Default::default(),
+            before: vec_of(ne),
+            masked: vec_of(ne),
+            acc: vec_of(ne),
             first: Default::default(),
-            ring_other: Default::default(),
             zero_slot: kb(0),
             _ne: ne,
+            _own: ix.own,
+            _ring_a: ix.ring_a,
+            _ring_b: ix.ring_b,
         }
     }
 }
@@ -64,34 +61,38 @@ impl FccJoinPick {
 impl Logic for FccJoinPick {
     #[hdl_gen]
     fn update(&mut self) {
-        self.any.next = false;
-        self.first.next = self.zero_slot.val();
-        for e in 0..self._ne {
-            self.other[e].next =
-                self.ent_ok[e].val() & (self.ent_slot[e].val() != self.own_slot.val());
+        // One-hot: the first flag, then an OR of the masked slots (a tree,
+        // not a chain of multiplexers).
+        self.before[0].next = false;
+        for e in 1..self._ne {
+            self.before[e].next = self.before[e - 1].val() | self.flag[e - 1].val();
         }
-        // The last entry first, so that the first in window order wins.
+        for e in 0..self._ne {
+            self.masked[e].next = self.zero_slot.val();
+            if self.flag[e].val() & !self.before[e].val() {
+                self.masked[e].next = self.slot[e].val();
+            }
+        }
+        self.acc[0].next = self.masked[0].val();
+        for e in 1..self._ne {
+            self.acc[e].next = self.acc[e - 1].val() | self.masked[e].val();
+        }
         for ne in self._ne..(self._ne + 1) {
-            for e in 0..self._ne {
-                if self.other[ne - 1 - e].val() {
-                    self.any.next = true;
-                    self.first.next = self.ent_slot[ne - 1 - e].val();
-                }
+            self.any.next = self.before[ne - 1].val() | self.flag[ne - 1].val();
+            self.first.next = self.acc[ne - 1].val();
+        }
+        self.m_valid.next = self.any.val() | self.ring_flag.val();
+        for ra in self._ring_a..(self._ring_a + 1) {
+            for rb in self._ring_b..(self._ring_b + 1) {
+                self.m_from.next = self.slot[ra].val();
+                self.m_into.next = self.slot[rb].val();
             }
         }
-        self.ring_other.next = self.ring.val() & (self.ring_a_slot.val() != self.ring_b_slot.val());
-        self.more.next = self.any.val() & self.ring_other.val();
-        for e in 0..self._ne {
-            if self.other[e].val() & (self.ent_slot[e].val() != self.first.val()) {
-                self.more.next = true;
+        for own in self._own..(self._own + 1) {
+            if self.any.val() {
+                self.m_from.next = self.first.val();
+                self.m_into.next = self.slot[own].val();
             }
-        }
-        self.m_valid.next = self.any.val() | self.ring_other.val();
-        self.m_from.next = self.ring_a_slot.val();
-        self.m_into.next = self.ring_b_slot.val();
-        if self.any.val() {
-            self.m_from.next = self.first.val();
-            self.m_into.next = self.own_slot.val();
         }
     }
 }

@@ -43,6 +43,14 @@ pub struct FccRootTable {
     /// Each slot before the rewrite.
     slot_nx: Vec<Signal<Local, Bits<SLOT_BITS>>>,
     first_nx: Vec<Signal<Local, Bits<SLOT_BITS>>>,
+    /// The read: row selected, masked entries, their running OR.
+    sel: Vec<Signal<Local, Bit>>,
+    m_label: Vec<Signal<Local, Bits<16>>>,
+    m_slot: Vec<Signal<Local, Bits<SLOT_BITS>>>,
+    m_first: Vec<Signal<Local, Bits<SLOT_BITS>>>,
+    a_label: Vec<Signal<Local, Bits<16>>>,
+    a_slot: Vec<Signal<Local, Bits<SLOT_BITS>>>,
+    a_first: Vec<Signal<Local, Bits<SLOT_BITS>>>,
     row_id: Vec<Constant<Bits<7>>>,
     zero16: Constant<Bits<16>>,
     zero_slot: Constant<Bits<SLOT_BITS>>,
@@ -73,6 +81,13 @@ impl FccRootTable {
             first: vec_of(rows),
             slot_nx: vec_of(rows * n),
             first_nx: vec_of(rows),
+            sel: vec_of(rows),
+            m_label: vec_of(rows * n),
+            m_slot: vec_of(rows * n),
+            m_first: vec_of(rows),
+            a_label: vec_of(rows * n),
+            a_slot: vec_of(rows * n),
+            a_first: vec_of(rows),
             row_id: (0..rows).map(|r| kb(r as u64)).collect(),
             zero16: kb(0),
             zero_slot: kb(0),
@@ -84,11 +99,6 @@ impl FccRootTable {
 impl Logic for FccRootTable {
     #[hdl_gen]
     fn update(&mut self) {
-        self.rd_first.next = self.zero_slot.val();
-        for k in 0..self._n {
-            self.rd_label[k].next = self.zero16.val();
-            self.rd_slot[k].next = self.zero_slot.val();
-        }
         for nn in self._n..(self._n + 1) {
             for r in 0..self.row_id.len() {
                 self.first[r].clock.next = self.clk.val();
@@ -103,18 +113,11 @@ impl Logic for FccRootTable {
                 if self.rw_valid.val() & (self.first_nx[r].val() == self.rw_from.val()) {
                     self.first[r].d.next = self.rw_into.val();
                 }
-                if self.rd_row.val() == self.row_id[r].val() {
-                    self.rd_first.next = self.first[r].q.val();
-                }
                 for k in 0..self._n {
                     self.label[r * nn + k].clock.next = self.clk.val();
                     self.slot[r * nn + k].clock.next = self.clk.val();
                     self.label[r * nn + k].d.next = self.label[r * nn + k].q.val();
                     self.slot_nx[r * nn + k].next = self.slot[r * nn + k].q.val();
-                    if self.rd_row.val() == self.row_id[r].val() {
-                        self.rd_label[k].next = self.label[r * nn + k].q.val();
-                        self.rd_slot[k].next = self.slot[r * nn + k].q.val();
-                    }
                 }
                 if self.push.val() & (self.push_row.val() == self.row_id[r].val()) {
                     self.label[r * nn].d.next = self.push_label.val();
@@ -133,6 +136,46 @@ impl Logic for FccRootTable {
                     if self.rst.val() {
                         self.label[r * nn + k].d.next = self.zero16.val();
                     }
+                }
+            }
+        }
+        // The read: one row selected, an OR of the masked rows (a tree, not
+        // a chain of multiplexers).
+        for nn in self._n..(self._n + 1) {
+            for r in 0..self.row_id.len() {
+                self.sel[r].next = self.rd_row.val() == self.row_id[r].val();
+                self.m_first[r].next = self.zero_slot.val();
+                if self.sel[r].val() {
+                    self.m_first[r].next = self.first[r].q.val();
+                }
+                for k in 0..self._n {
+                    self.m_label[r * nn + k].next = self.zero16.val();
+                    self.m_slot[r * nn + k].next = self.zero_slot.val();
+                    if self.sel[r].val() {
+                        self.m_label[r * nn + k].next = self.label[r * nn + k].q.val();
+                        self.m_slot[r * nn + k].next = self.slot[r * nn + k].q.val();
+                    }
+                }
+            }
+            self.a_first[0].next = self.m_first[0].val();
+            for k in 0..self._n {
+                self.a_label[k].next = self.m_label[k].val();
+                self.a_slot[k].next = self.m_slot[k].val();
+            }
+            for r in 1..self.row_id.len() {
+                self.a_first[r].next = self.a_first[r - 1].val() | self.m_first[r].val();
+                for k in 0..self._n {
+                    self.a_label[r * nn + k].next =
+                        self.a_label[(r - 1) * nn + k].val() | self.m_label[r * nn + k].val();
+                    self.a_slot[r * nn + k].next =
+                        self.a_slot[(r - 1) * nn + k].val() | self.m_slot[r * nn + k].val();
+                }
+            }
+            for last in (self.row_id.len() - 1)..self.row_id.len() {
+                self.rd_first.next = self.a_first[last].val();
+                for k in 0..self._n {
+                    self.rd_label[k].next = self.a_label[last * nn + k].val();
+                    self.rd_slot[k].next = self.a_slot[last * nn + k].val();
                 }
             }
         }

@@ -7,12 +7,13 @@
 //!
 //! `shift` moves the window one row on as the next pixel arrives: position
 //! `j` takes position `j + 1`'s entries, the last position the table's row
-//! `(i + 1 + h) mod R` (`load_*`). Rows past the frame's last row are the
+//! `(i + 1 + h) mod R` (`load_*`, read a cycle before and kept current, so
+//! taken as it is). Rows past the frame's last row are the
 //! next column's first rows, so the window runs on from column to column;
 //! positions outside the frame are never read (`FccColEdge` masks them).
-//! A run that starts at the centre row is pushed in front of the centre
-//! position's entries (`push`, `push_first` as in `FccRootTable`), at the
-//! same edge as any shift. A merge being broadcast (`rw_*`) rewrites every
+//! A run that the pixel moving into the centre starts is pushed in front
+//! of its row's entries as they shift into the centre position (`push`,
+//! `push_first` as in `FccRootTable`; only with `shift`). A merge being broadcast (`rw_*`) rewrites every
 //! slot at the edge, as in the table, so positions never hold a slot that
 //! merged away.
 
@@ -122,25 +123,15 @@ impl Logic for FccRootWindow {
                     }
                 }
                 self.centre_first.next = self.first_q[hh].q.val();
-                // The centre row's new run, where the centre's entries go.
+                // A run the entering pixel starts goes in front of its row's
+                // entries, which shift into the centre.
                 if self.push.val() & self.shift.val() {
-                    self.label_q[(hh - 1) * nn].d.next = self.push_label.val();
-                    self.slot_nx[(hh - 1) * nn].next = self.push_slot.val();
-                    for k in 1..self._n {
-                        self.label_q[(hh - 1) * nn + k].d.next =
-                            self.label_q[hh * nn + k - 1].q.val();
-                        self.slot_nx[(hh - 1) * nn + k].next = self.slot_q[hh * nn + k - 1].q.val();
-                    }
-                    if self.push_first.val() {
-                        self.first_nx[hh - 1].next = self.push_slot.val();
-                    }
-                }
-                if self.push.val() & !self.shift.val() {
                     self.label_q[hh * nn].d.next = self.push_label.val();
                     self.slot_nx[hh * nn].next = self.push_slot.val();
                     for k in 1..self._n {
-                        self.label_q[hh * nn + k].d.next = self.label_q[hh * nn + k - 1].q.val();
-                        self.slot_nx[hh * nn + k].next = self.slot_q[hh * nn + k - 1].q.val();
+                        self.label_q[hh * nn + k].d.next =
+                            self.label_q[(hh + 1) * nn + k - 1].q.val();
+                        self.slot_nx[hh * nn + k].next = self.slot_q[(hh + 1) * nn + k - 1].q.val();
                     }
                     if self.push_first.val() {
                         self.first_nx[hh].next = self.push_slot.val();
@@ -161,6 +152,15 @@ impl Logic for FccRootWindow {
                         }
                         if self.rst.val() {
                             self.label_q[j * nn + k].d.next = self.zero16.val();
+                        }
+                    }
+                }
+                // The row loaded is current already (no rewrite on its way in).
+                if self.shift.val() {
+                    for j in (self._k - 1)..self._k {
+                        self.first_q[j].d.next = self.load_first.val();
+                        for k in 0..self._n {
+                            self.slot_q[j * nn + k].d.next = self.load_slot[k].val();
                         }
                     }
                 }

@@ -12,13 +12,16 @@
 pub mod fcc_acc_merge;
 pub mod fcc_acc_pixel;
 pub mod fcc_acc_probe;
+pub mod fcc_bit_bank;
 pub mod fcc_col_dist;
 pub mod fcc_col_dist_probe;
 pub mod fcc_col_edge;
 pub mod fcc_col_window;
 pub mod fcc_col_window_probe;
 pub mod fcc_col_word_split;
+pub mod fcc_join_flags;
 pub mod fcc_join_pick;
+pub mod fcc_label_bank;
 pub mod fcc_label_pool;
 pub mod fcc_open_room;
 pub mod fcc_rec_beats;
@@ -33,12 +36,41 @@ pub mod fcc_row_roots_probe;
 pub mod fcc_row_runs;
 pub mod fcc_row_runs_probe;
 pub mod fcc_run_decide;
+pub mod fcc_slot_bank;
 
 use rust_hdl::prelude::*;
 
 /// Bits of a record slot: the slot table's 512 records (docs/column-core.md;
 /// spec §9.1's open limit keeps the clusters open at most that many).
 pub const SLOT_BITS: usize = 9;
+
+/// Where each slot of a pixel sits in `FccRowRoots`' stage banks: the
+/// window entries' first, then the pixel's own run's and the ring check's
+/// pair (the `joins` slots the joins are read from), then the runs its row
+/// stops and starts holding (spec §9.2).
+#[derive(Debug, Clone, Copy)]
+pub struct SlotIndex {
+    pub own: usize,
+    pub drop: usize,
+    pub add: usize,
+    pub ring_a: usize,
+    pub ring_b: usize,
+    pub joins: usize,
+    pub count: usize,
+}
+
+/// The bank layout for `ne` window entries.
+pub fn slot_index(ne: usize) -> SlotIndex {
+    SlotIndex {
+        own: ne,
+        ring_a: ne + 1,
+        ring_b: ne + 2,
+        joins: ne + 3,
+        drop: ne + 3,
+        add: ne + 4,
+        count: ne + 5,
+    }
+}
 
 /// One pixel slot of the frame in column order.
 #[derive(Clone, Copy, Debug, PartialEq, Default, LogicStruct)]
