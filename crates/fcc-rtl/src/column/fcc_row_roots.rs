@@ -39,10 +39,9 @@
 
 use rust_hdl::prelude::*;
 
-use super::fcc_bit_bank::FccBitBank;
+use super::fcc_hold_bank::FccHoldBank;
 use super::fcc_join_flags::FccJoinFlags;
 use super::fcc_join_pick::FccJoinPick;
-use super::fcc_label_bank::FccLabelBank;
 use super::fcc_root_match::FccRootMatch;
 use super::fcc_root_table::FccRootTable;
 use super::fcc_root_window::FccRootWindow;
@@ -92,12 +91,12 @@ pub struct FccRowRoots {
     pick_r: FccJoinPick,
     /// Each stage's hits; C's and R's with the joins flagged after them
     /// (entries, then the ring pair).
-    hit_a2: FccBitBank,
-    hit_b: FccBitBank,
-    hit_c: FccBitBank,
-    hit_d: FccBitBank,
-    hit_r0: FccBitBank,
-    hit_r: FccBitBank,
+    hit_a2: FccHoldBank<Bit>,
+    hit_b: FccHoldBank<Bit>,
+    hit_c: FccHoldBank<Bit>,
+    hit_d: FccHoldBank<Bit>,
+    hit_r0: FccHoldBank<Bit>,
+    hit_r: FccHoldBank<Bit>,
     in_pix: DFF<RunPix>,
     in_hit: Vec<DFF<Bit>>,
     in_label: Vec<DFF<Bits<16>>>,
@@ -107,7 +106,7 @@ pub struct FccRowRoots {
     p0_label: Vec<DFF<Bits<16>>>,
     /// P0: the table row that enters the window with the pixel, read in
     /// the cycle before (its slots a `late` bank).
-    rd_labels: FccLabelBank,
+    rd_labels: FccHoldBank<Bits<16>>,
     rd_slots: FccSlotBank,
     a1_pix: DFF<RunPix>,
     a1_hit: Vec<DFF<Bit>>,
@@ -202,12 +201,12 @@ impl FccRowRoots {
             flags_r: FccJoinFlags::new(ne),
             pick_c: FccJoinPick::new(ne),
             pick_r: FccJoinPick::new(ne),
-            hit_a2: FccBitBank::new(ne),
-            hit_b: FccBitBank::new(ne),
-            hit_c: FccBitBank::new(2 * ne + 1),
-            hit_d: FccBitBank::new(ne),
-            hit_r0: FccBitBank::new(2 * ne + 1),
-            hit_r: FccBitBank::new(2 * ne + 1),
+            hit_a2: FccHoldBank::new(ne),
+            hit_b: FccHoldBank::new(ne),
+            hit_c: FccHoldBank::new(2 * ne + 1),
+            hit_d: FccHoldBank::new(ne),
+            hit_r0: FccHoldBank::new(2 * ne + 1),
+            hit_r: FccHoldBank::new(2 * ne + 1),
             in_pix: Default::default(),
             in_hit: vec_of(ne),
             in_label: vec_of(ne),
@@ -215,7 +214,7 @@ impl FccRowRoots {
             p0_pix: Default::default(),
             p0_hit: vec_of(ne),
             p0_label: vec_of(ne),
-            rd_labels: FccLabelBank::new(h + 1),
+            rd_labels: FccHoldBank::new(h + 1),
             rd_slots: FccSlotBank::new(h + 2, true),
             a1_pix: Default::default(),
             a1_hit: vec_of(ne),

@@ -1,5 +1,5 @@
 //! `FccSlotBank`: one pipeline stage's record slots in `FccRowRoots`, kept
-//! current under the merges (its flags are in an `FccBitBank`).
+//! current under the merges (its flags are in an `FccHoldBank`).
 //!
 //! A merge of slot `a` into `b` is broadcast for one cycle (`rw_*`); every
 //! register holding a slot rewrites `a` to `b` at the edge that ends it.

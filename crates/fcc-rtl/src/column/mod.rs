@@ -12,16 +12,15 @@
 pub mod fcc_acc_merge;
 pub mod fcc_acc_pixel;
 pub mod fcc_acc_probe;
-pub mod fcc_bit_bank;
 pub mod fcc_col_dist;
 pub mod fcc_col_dist_probe;
 pub mod fcc_col_edge;
 pub mod fcc_col_window;
 pub mod fcc_col_window_probe;
 pub mod fcc_col_word_split;
+pub mod fcc_hold_bank;
 pub mod fcc_join_flags;
 pub mod fcc_join_pick;
-pub mod fcc_label_bank;
 pub mod fcc_label_pool;
 pub mod fcc_open_room;
 pub mod fcc_rec_beats;
