@@ -35,6 +35,12 @@
 //!   applied), until none is left; then, as every pixel, it leaves as an
 //!   event, with its slots as they are after the merges before it.
 //!
+//! The replay's few registers (`r_left`, `r_check`, `r_flags_hold`) stay in
+//! this block rather than a sub-block of their own: the stages' holds must
+//! be those flip-flops' outputs as they are, since a hold computed in a
+//! sub-block that also reads the stages' flags makes Verilator see a
+//! combinational loop through every stage (`UNOPTFLAT`).
+//!
 //! `miss` (sticky until reset) says a label named was not found.
 
 use rust_hdl::prelude::*;
