@@ -69,7 +69,7 @@ const COLUMNS: [&str; 16] = [
 ];
 
 /// The second table's columns: what a column core's slot table absorbs.
-const LOAD_COLUMNS: [&str; 12] = [
+const LOAD_COLUMNS: [&str; 15] = [
     "source",
     "K",
     "setting",
@@ -77,6 +77,9 @@ const LOAD_COLUMNS: [&str; 12] = [
     "joined runs at a pixel",
     "row roots: offered per slot",
     "offered beyond one a slot",
+    "representatives: joins per slot",
+    "joins beyond one a slot",
+    "joins in a column",
     "merges per slot",
     "merges per frame",
     "merges in a column",
@@ -237,11 +240,14 @@ pub fn run(args: &StreamReportArgs) -> anyhow::Result<()> {
                 )?;
                 writeln!(
                     load,
-                    "| {name} | {k} | {setting} | {:.2} | {} | {:.3} | {:.4} | {:.3} | {} | {} | {} | {} |",
+                    "| {name} | {k} | {setting} | {:.2} | {} | {:.3} | {:.4} | {:.3} | {:.4} | {} | {:.3} | {} | {} | {} | {} |",
                     t.load.joined_runs as f64 / t.load.labelled.max(1) as f64,
                     t.load.joined_runs_max,
                     t.load.offered as f64 / t.load.slots.max(1) as f64,
                     t.load.offered_more as f64 / t.load.slots.max(1) as f64,
+                    t.load.rep_joins as f64 / t.load.slots.max(1) as f64,
+                    t.load.rep_joins_more as f64 / t.load.slots.max(1) as f64,
+                    t.load.rep_joins_col,
                     t.load.merges as f64 / t.load.slots.max(1) as f64,
                     t.merges,
                     t.col_merges,

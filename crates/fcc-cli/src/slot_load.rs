@@ -32,6 +32,13 @@ pub struct SlotLoad {
     pub offered: u64,
     pub offered_more: u64,
     pub merges: u64,
+    /// The representative model's joins (a row keeps a representative
+    /// label per run, not its cluster: a label of the same cluster, set
+    /// when a pixel names the run), those beyond the first at each pixel,
+    /// and the most sent in one column.
+    pub rep_joins: u64,
+    pub rep_joins_more: u64,
+    pub rep_joins_col: u32,
 }
 
 fn find(parent: &mut [u32], mut x: u32) -> u32 {
@@ -68,8 +75,12 @@ pub fn measure(params: &FccParams, frame: &Frame, t: &mut SlotLoad) -> anyhow::R
     let mut pending: VecDeque<(u64, u32, u32)> = VecDeque::new();
     let mut joined: Vec<u32> = Vec::new();
     let mut offered: Vec<u32> = Vec::new();
+    // The representative model: per run a label of its cluster.
+    let mut rep: Vec<u32> = (0..n as u32).collect();
+    let mut reps: Vec<u32> = Vec::new();
     let mut slot = 0u64;
     for c in 0..cols {
+        let mut col_joins = 0u32;
         for i in 0..rows {
             slot += 1;
             while pending.front().is_some_and(|&(at, _, _)| at <= slot) {
@@ -110,6 +121,25 @@ pub fn measure(params: &FccParams, frame: &Frame, t: &mut SlotLoad) -> anyhow::R
                     offered.push(cluster);
                 }
             }
+            // One join per representative other than the smallest among
+            // the pixel's run's and its joined runs'; all of them then take
+            // the smallest (the rows' entries in the window are rewritten).
+            reps.clear();
+            reps.push(rep[own as usize]);
+            for &r in &joined {
+                if !reps.contains(&rep[r as usize]) {
+                    reps.push(rep[r as usize]);
+                }
+            }
+            let sent = reps.len() as u64 - 1;
+            let least = reps.iter().copied().min().expect("one at least");
+            rep[own as usize] = least;
+            for &r in &joined {
+                rep[r as usize] = least;
+            }
+            t.rep_joins += sent;
+            t.rep_joins_more += sent.saturating_sub(1);
+            col_joins += sent as u32;
             for &x in &offered {
                 let (a, b) = (find(&mut parent, own), find(&mut parent, x));
                 if a != b {
@@ -126,6 +156,7 @@ pub fn measure(params: &FccParams, frame: &Frame, t: &mut SlotLoad) -> anyhow::R
             t.offered += offered.len() as u64;
             t.offered_more += offered.len().saturating_sub(1) as u64;
         }
+        t.rep_joins_col = t.rep_joins_col.max(col_joins);
     }
     t.slots += (rows * cols) as u64;
     Ok(())
@@ -157,6 +188,9 @@ mod tests {
         measure(&p, &f, &mut t).unwrap();
         assert_eq!((t.slots, t.labelled), (18, 18));
         assert_eq!((t.merges, t.offered, t.offered_more), (2, 2, 0));
+        // The representatives: the same two joins (rows 1 and 2 meet the
+        // row above once), then every run of the window shares one.
+        assert_eq!((t.rep_joins, t.rep_joins_more, t.rep_joins_col), (2, 0, 2));
         // K = 3: the rows above and below, one run each.
         assert_eq!(t.joined_runs_max, 2);
         // Column 0: (1, 0) and (2, 0) join the row above. Later columns:

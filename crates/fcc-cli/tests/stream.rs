@@ -217,8 +217,8 @@ fn the_row_major_core_refuses_limits_and_the_stream() {
 
 /// The second table of `fcc stream-report` (two scenes, K = 3 and 7): per
 /// row, the joined runs per pixel within the most at one pixel, the merges
-/// of a frame bound those of a column, and a column's records each free at
-/// least one label.
+/// of a frame bound those of a column, a column's records each free at
+/// least one label, and both models send every merge.
 fn check_load_table(md: &str) {
     let lines: Vec<&str> = md.lines().collect();
     let header: Vec<&str> = lines[0].split('|').map(str::trim).collect();
@@ -233,6 +233,11 @@ fn check_load_table(md: &str) {
     let (mean, most) = (col("joined runs per pixel"), col("joined runs at a pixel"));
     let (offered, merges) = (col("row roots: offered per slot"), col("merges per slot"));
     let beyond = col("offered beyond one a slot");
+    let (reps, reps_beyond) = (
+        col("representatives: joins per slot"),
+        col("joins beyond one a slot"),
+    );
+    let reps_column = col("joins in a column");
     assert_eq!(lines.len(), 2 + 2 * 4, "{md}");
     for l in &lines[2..] {
         let r: Vec<&str> = l.split('|').map(str::trim).collect();
@@ -245,6 +250,10 @@ fn check_load_table(md: &str) {
         let f = |c: usize| -> f64 { r[c].parse().unwrap() };
         assert!(f(offered) >= f(merges) && f(merges) > 0.0, "{l}");
         assert!(f(beyond) < f(offered), "{l}");
+        // Representatives differ across clusters: every merge is a join,
+        // and a pixel's joins beyond its first are fewer than all.
+        assert!(f(reps) >= f(merges), "{l}");
+        assert!(f(reps_beyond) < f(reps) && n(reps_column) > 0, "{l}");
         assert!(
             n(frame) >= n(column) && n(column) > 0 && n(closed) > 0 && n(freed) >= n(closed),
             "{l}"

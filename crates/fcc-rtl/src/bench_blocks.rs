@@ -58,6 +58,9 @@ pub enum BenchBlock {
     /// The column core's row roots `FccRowRoots` (table, window, lookups,
     /// merge pick) behind the scalar ports of `FccRowRootsProbe`.
     RowRoots,
+    /// The column core's run accumulators `FccRunAcc` behind the scalar
+    /// ports of `FccRunAccProbe`.
+    RunAcc,
 }
 
 /// One row of the table: the module's name before the configuration
@@ -85,7 +88,7 @@ impl Row {
 
 impl BenchBlock {
     /// Every block with a bench.
-    pub const ALL: [BenchBlock; 19] = [
+    pub const ALL: [BenchBlock; 20] = [
         BenchBlock::Regs,
         BenchBlock::AxilAdapter,
         BenchBlock::MergeTable,
@@ -105,6 +108,7 @@ impl BenchBlock {
         BenchBlock::RecordOut,
         BenchBlock::LabelPool,
         BenchBlock::RowRoots,
+        BenchBlock::RunAcc,
     ];
 
     fn row(self) -> Row {
@@ -249,6 +253,17 @@ impl BenchBlock {
                     )
                 },
                 waivers: lint::row_roots_waivers,
+            },
+            BenchBlock::RunAcc => Row {
+                name: "fcc_run_acc_probe",
+                generate: |p| {
+                    gen(
+                        p,
+                        crate::column::fcc_run_acc_probe::FccRunAccProbe::new(p),
+                        "fcc_run_acc_probe",
+                    )
+                },
+                waivers: lint::run_acc_waivers,
             },
         }
     }

@@ -222,6 +222,19 @@ pub fn acc_waivers(p: &FccParams, name: &str) -> String {
     s
 }
 
+/// The waivers of the run accumulators' probe `name`: the accumulator's
+/// (as [`acc_waivers`]), and the pixel's fields the block does not read
+/// (it takes the run's fields of `RunPix` and its point, not its
+/// thresholds, ring check or held label).
+pub fn run_acc_waivers(p: &FccParams, name: &str) -> String {
+    let mut s = acc_waivers(p, name);
+    s.push_str(&format!(
+        "// `FccRunAcc` reads the pixel's run, point and dropped hold only.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'inp'*\"\n"
+    ));
+    s
+}
+
 /// The waivers of the word window's probe `name`: at K = 3 the window has
 /// one buffer and no cascade, so the cascade's enable and address are not
 /// read.

@@ -7,6 +7,8 @@
 //! * P1: `|x|`, `|y|`, `|z|`, which half the column is in.
 //! * P2: the four 16 x 16 products (DSP multipliers with their output
 //!   register).
+//! * PF: the products copied into fabric flip-flops (a DSP's output is too
+//!   slow to feed a carry chain in the same cycle).
 //! * P3: `|x|^2 + |y|^2`.
 //! * P4: the squared range (`+ |z|^2`) and the accumulator word, in a
 //!   register that `rst` clears (so it stays a flip-flop: a shift-register
@@ -18,7 +20,7 @@ use super::AccWord;
 use crate::types::kb;
 
 /// Cycles from a pixel to its accumulator.
-pub const ACC_PIXEL_LATENCY: usize = 4;
+pub const ACC_PIXEL_LATENCY: usize = 5;
 
 /// What waits beside the products: the point (offset binary), its row and
 /// column, and whether the column is below `C/2`.
@@ -60,9 +62,11 @@ pub struct FccAccPixel {
     /// P1 .. P3: the point and its place.
     side1: DFF<AccSide>,
     side2: DFF<AccSide>,
+    sidef: DFF<AccSide>,
     side3: DFF<AccSide>,
-    /// P2, P3: the products; P3: `|x|^2 + |y|^2`.
+    /// P2, PF, P3: the products; P3: `|x|^2 + |y|^2`.
     prod2: DFF<AccProducts>,
+    prodf: DFF<AccProducts>,
     prod3: DFF<AccProducts>,
     xy3: DFF<Bits<32>>,
     /// P4.
@@ -90,8 +94,10 @@ impl Default for FccAccPixel {
             az: Default::default(),
             side1: Default::default(),
             side2: Default::default(),
+            sidef: Default::default(),
             side3: Default::default(),
             prod2: Default::default(),
+            prodf: Default::default(),
             prod3: Default::default(),
             xy3: Default::default(),
             out: Default::default(),
@@ -106,7 +112,9 @@ impl Default for FccAccPixel {
 impl Logic for FccAccPixel {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clk, ax, ay, az, side1, side2, side3, prod2, prod3, xy3, out);
+        dff_setup!(
+            self, clk, ax, ay, az, side1, side2, sidef, side3, prod2, prodf, prod3, xy3, out
+        );
         // ---- P1: |x|, |y|, |z| from offset binary; the column's half.
         self.ax.d.next = self.mid.val() - self.x.val();
         if self.x.val() >= self.mid.val() {
@@ -132,10 +140,13 @@ impl Logic for FccAccPixel {
         self.prod2.d.next.zz = self.az.q.val() * self.az.q.val();
         self.prod2.d.next.ab = self.side1.q.val().x * self.side1.q.val().y;
         self.side2.d.next = self.side1.q.val();
+        // ---- PF: the products in fabric flip-flops.
+        self.prodf.d.next = self.prod2.q.val();
+        self.sidef.d.next = self.side2.q.val();
         // ---- P3: the first sum of the squared range.
-        self.xy3.d.next = self.prod2.q.val().xx + self.prod2.q.val().yy;
-        self.prod3.d.next = self.prod2.q.val();
-        self.side3.d.next = self.side2.q.val();
+        self.xy3.d.next = self.prodf.q.val().xx + self.prodf.q.val().yy;
+        self.prod3.d.next = self.prodf.q.val();
+        self.side3.d.next = self.sidef.q.val();
         // ---- P4: the accumulator word.
         self.word.next = self.zero.val();
         self.word.next.points = self.one20.val();

@@ -6,8 +6,11 @@
 //! tests (`FccColDist`), the record accumulator (`FccAccPixel`,
 //! `FccAccMerge`), the record output (`FccRecordOut`) and the front of the
 //! slot table (`FccRowRoots`: each row's runs' clusters as record slots,
-//! the merges between them). The rest of the slot table and the top are
-//! to come.
+//! the merges between them; exact, but over the area budget, and to be
+//! replaced by representatives and a union-find over labels, see
+//! docs/column-core.md), and each row's current run's accumulator
+//! (`FccRunAcc`, flushed to its cluster once the run is over). The rest of
+//! the slot table and the top are to come.
 
 pub mod fcc_acc_merge;
 pub mod fcc_acc_pixel;
@@ -34,6 +37,8 @@ pub mod fcc_row_roots;
 pub mod fcc_row_roots_probe;
 pub mod fcc_row_runs;
 pub mod fcc_row_runs_probe;
+pub mod fcc_run_acc;
+pub mod fcc_run_acc_probe;
 pub mod fcc_run_decide;
 pub mod fcc_slot_bank;
 

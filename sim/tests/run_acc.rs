@@ -1,0 +1,404 @@
+//! The column core's run accumulators `fcc_run_acc` alone under Verilator:
+//! every pixel slot of seeded frames in column order, with its run's label
+//! and its row's hold changes worked out from the golden stream's runs
+//! (spec §3, §9.2), against a model of when each run is over (its row
+//! drops its hold, its row starts another run, or the frame ends) and the
+//! golden accumulator of its pixels (`fcc_golden::Acc`, in the core's
+//! form). Checked: the flushes in order, each run's label and accumulator,
+//! every run flushed once, `done` after the frame end's flushes, and the
+//! input held (`ready` low) while they run. Fixed and range-adaptive
+//! thresholds, bridge and ring-reach limits, bubbles, frames back to back
+//! on one instance, and a reset mid-frame. A mismatch prints the frame,
+//! the flush, expected, got and the seed.
+
+mod column;
+
+use column::{build, pixels, random_frame, run_params, Pix};
+use fcc_golden::{Acc, Frame, Stream};
+use fcc_params::FccParams;
+use fcc_rtl::BenchBlock;
+use fcc_sim::core_form::{offset_binary as ob, CoreAcc};
+use fcc_sim::{c_struct, load_plain, PlainDut};
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+
+c_struct! {
+    /// Inputs of one cycle, named as the ports.
+    pub struct RaIn {
+        pub rst: u8,
+        pub valid: u8,
+        pub lok: u8,
+        pub row: u8,
+        pub col: u16,
+        pub x: u16,
+        pub y: u16,
+        pub z: u16,
+        pub label: u16,
+        pub start: u8,
+        pub hold_drop: u16,
+        pub last: u8,
+        pub half: u16,
+        pub last_row: u8,
+    }
+}
+
+c_struct! {
+    /// Outputs during one cycle.
+    pub struct RaOut {
+        pub ready: u8,
+        pub f_valid: u8,
+        pub f_label: u16,
+        pub done: u8,
+        pub o_points: u32,
+        pub o_min_col: u16,
+        pub o_max_col: u16,
+        pub o_lo_has: u8,
+        pub o_lo_max: u16,
+        pub o_hi_has: u8,
+        pub o_hi_min: u16,
+        pub o_first_row: u8,
+        pub o_last_row: u8,
+        pub o_min_x: u16,
+        pub o_min_y: u16,
+        pub o_min_z: u16,
+        pub o_max_x: u16,
+        pub o_max_y: u16,
+        pub o_max_z: u16,
+        pub o_r2_min: u32,
+        pub o_r2_max: u32,
+        pub o_sa: u64,
+        pub o_sb: u64,
+        pub o_sc: u64,
+        pub o_sxx: u64,
+        pub o_syy: u64,
+        pub o_sab: u64,
+        pub o_seam: u8,
+    }
+}
+
+/// A flush: the run's label and accumulator (a seam half the accumulator
+/// does not have reads 0).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+struct Flush {
+    label: u16,
+    acc: CoreAcc,
+}
+
+impl Flush {
+    fn got(o: &RaOut) -> Flush {
+        let mut acc = CoreAcc {
+            points: o.o_points.into(),
+            min_col: o.o_min_col.into(),
+            max_col: o.o_max_col.into(),
+            lo_has: o.o_lo_has.into(),
+            lo_max: o.o_lo_max.into(),
+            hi_has: o.o_hi_has.into(),
+            hi_min: o.o_hi_min.into(),
+            first_row: o.o_first_row.into(),
+            last_row: o.o_last_row.into(),
+            min: [o.o_min_x.into(), o.o_min_y.into(), o.o_min_z.into()],
+            max: [o.o_max_x.into(), o.o_max_y.into(), o.o_max_z.into()],
+            r2_min: o.o_r2_min.into(),
+            r2_max: o.o_r2_max.into(),
+            sa: o.o_sa,
+            sb: o.o_sb,
+            sc: o.o_sc,
+            sxx: o.o_sxx,
+            syy: o.o_syy,
+            sab: o.o_sab,
+            seam: o.o_seam.into(),
+        };
+        if acc.lo_has == 0 {
+            acc.lo_max = 0;
+        }
+        if acc.hi_has == 0 {
+            acc.hi_min = 0;
+        }
+        Flush {
+            label: o.f_label,
+            acc,
+        }
+    }
+}
+
+/// Why the model flushes a run (each must occur in the random cases).
+#[derive(Debug, Default, Clone, Copy)]
+struct Why {
+    start: u64,
+    drop: u64,
+    end: u64,
+}
+
+/// The flushes a frame must give, in order: per pixel slot in column order
+/// at most one (a run starting while its row's run is open flushes that
+/// one; a row dropping its open run flushes it, the pixel included when it
+/// continued it), then at the frame end every row's open run, row by row.
+/// Labels are the golden run numbers.
+fn expected(p: &FccParams, f: &Frame, px: &[Pix], why: &mut Why) -> Vec<Flush> {
+    let half = (p.cols / 2) as u32;
+    let mut open: Vec<Option<(u32, Acc)>> = vec![None; p.rows];
+    let mut out = Vec::new();
+    let flush = |run: u32, a: &Acc| Flush {
+        label: run as u16,
+        acc: CoreAcc::of(a),
+    };
+    for x in px {
+        let r = x.row;
+        if x.run != 0 {
+            let pt = f.get(r, x.col).expect("a labelled pixel has a point");
+            if x.start {
+                if let Some((run, a)) = open[r].take() {
+                    out.push(flush(run, &a));
+                    why.start += 1;
+                }
+                open[r] = Some((x.run, Acc::default()));
+            }
+            let (run, a) = open[r].as_mut().expect("a run continues an open one");
+            assert_eq!(*run, x.run, "row {r}, column {}: the run continued", x.col);
+            a.add_in_scan(r as u32, x.col as u32, pt, half);
+        }
+        if let Some((before, _)) = x.hold {
+            if before != 0 && open[r].as_ref().is_some_and(|(run, _)| *run == before) {
+                let (run, a) = open[r].take().expect("checked");
+                out.push(flush(run, &a));
+                why.drop += 1;
+            }
+        }
+    }
+    for o in open.iter_mut() {
+        if let Some((run, a)) = o.take() {
+            out.push(flush(run, &a));
+            why.end += 1;
+        }
+    }
+    out
+}
+
+struct Bench {
+    dut: PlainDut<RaIn, RaOut>,
+    got: Vec<Flush>,
+    done: u32,
+    /// Cycles with `ready` low.
+    held: u64,
+}
+
+impl Bench {
+    fn new(build: &FccParams) -> Bench {
+        let model =
+            load_plain::<RaIn, RaOut>(BenchBlock::RunAcc, build).expect("run accumulators model");
+        let mut b = Bench {
+            dut: PlainDut::new(model),
+            got: Vec::new(),
+            done: 0,
+            held: 0,
+        };
+        b.step(&RaIn {
+            rst: 1,
+            ..RaIn::default()
+        });
+        b
+    }
+
+    /// One cycle; returns `ready` as it was during it.
+    fn step(&mut self, i: &RaIn) -> bool {
+        let o = self.dut.step(i);
+        if o.f_valid != 0 {
+            self.got.push(Flush::got(&o));
+        }
+        self.done += u32::from(o.done);
+        self.held += u64::from(o.ready == 0);
+        o.ready != 0
+    }
+
+    /// Feed the frame's pixels (a bubble before each with probability
+    /// `bubbles`), each held until taken; the last is the frame's last
+    /// when `ends`.
+    fn feed(
+        &mut self,
+        p: &FccParams,
+        f: &Frame,
+        px: &[Pix],
+        ends: bool,
+        bubbles: f64,
+        rng: &mut ChaCha8Rng,
+    ) {
+        let idle = RaIn {
+            half: (p.cols / 2) as u16,
+            last_row: (p.rows - 1) as u8,
+            ..RaIn::default()
+        };
+        for (n, x) in px.iter().enumerate() {
+            while rng.gen_bool(bubbles) {
+                self.step(&idle);
+            }
+            let [px_x, px_y, px_z] = f.get(x.row, x.col).unwrap_or([0; 3]);
+            let i = RaIn {
+                valid: 1,
+                lok: (x.run != 0) as u8,
+                row: x.row as u8,
+                col: x.col as u16,
+                x: ob(px_x),
+                y: ob(px_y),
+                z: ob(px_z),
+                label: x.run as u16,
+                start: x.start as u8,
+                hold_drop: x.hold.map_or(0, |(before, _)| before as u16),
+                last: (ends && n + 1 == px.len()) as u8,
+                ..idle
+            };
+            while !self.step(&i) {}
+        }
+    }
+
+    /// Cycles enough for the frame end's flushes.
+    fn settle(&mut self, p: &FccParams) {
+        let idle = RaIn {
+            half: (p.cols / 2) as u16,
+            last_row: (p.rows - 1) as u8,
+            ..RaIn::default()
+        };
+        for _ in 0..p.rows + 16 {
+            self.step(&idle);
+        }
+    }
+}
+
+/// The golden runs of `f` and its pixels as the block gets them.
+fn frame_pixels(p: &FccParams, f: &Frame) -> Vec<Pix> {
+    let mut s = Stream::new(p).expect("stream");
+    let mut column = vec![None; p.rows];
+    for c in 0..p.cols {
+        for (i, v) in column.iter_mut().enumerate() {
+            *v = f.get(i, c);
+        }
+        s.push_column(&column).expect("column");
+    }
+    s.finish().expect("finish");
+    let mut runs = Vec::new();
+    s.runs_into(&mut runs).expect("runs");
+    assert!(
+        runs.iter().all(|&r| r < u32::from(u16::MAX)),
+        "labels are run numbers: too many runs"
+    );
+    pixels(p, f, &runs)
+}
+
+fn check(got: &[Flush], want: &[Flush], what: &str) {
+    for (n, (g, w)) in got.iter().zip(want).enumerate() {
+        assert_eq!(
+            g,
+            w,
+            "{what}: flush {n} of {} (run {})",
+            want.len(),
+            w.label
+        );
+    }
+    assert_eq!(
+        got.len(),
+        want.len(),
+        "{what}: flushes, got {} expected {}",
+        got.len(),
+        want.len()
+    );
+}
+
+#[test]
+fn runs_flush_their_golden_accumulators() {
+    let build = build();
+    let adaptive = FccParams {
+        th_h_slope: 0.02,
+        th_v_slope: 0.03,
+        ..run_params(40, 60)
+    };
+    let cases: [(&str, FccParams, f64); 6] = [
+        ("unlimited", run_params(16, 40), 0.0),
+        (
+            "bridge 2",
+            FccParams {
+                bridge: Some(2),
+                ..run_params(23, 50)
+            },
+            0.2,
+        ),
+        (
+            "bridge 0, ring 3",
+            FccParams {
+                bridge: Some(0),
+                ring_reach: Some(3),
+                ..run_params(build.rows, 30)
+            },
+            0.1,
+        ),
+        (
+            "ring 0",
+            FccParams {
+                ring_reach: Some(0),
+                ..run_params(32, 45)
+            },
+            0.3,
+        ),
+        ("adaptive", adaptive, 0.05),
+        (
+            "bridge 5, seam",
+            FccParams {
+                bridge: Some(5),
+                ..run_params(16, 64)
+            },
+            0.0,
+        ),
+    ];
+    let mut b = Bench::new(&build);
+    let mut why = Why::default();
+    for (n, (name, p, bubbles)) in cases.iter().enumerate() {
+        for seed in 0..3u64 {
+            let seed = 100 * n as u64 + seed;
+            let mut rng = ChaCha8Rng::seed_from_u64(seed);
+            let f = random_frame(p.rows, p.cols, 0.8, 0.05, name.ends_with("seam"), &mut rng);
+            let px = frame_pixels(p, &f);
+            let want = expected(p, &f, &px, &mut why);
+            b.got.clear();
+            b.done = 0;
+            // Frames back to back: the next one waits for this one's end.
+            b.feed(p, &f, &px, true, *bubbles, &mut rng);
+            b.settle(p);
+            let what = format!("{name}, seed {seed}");
+            check(&b.got, &want, &what);
+            assert_eq!(b.done, 1, "{what}: done once after the frame end");
+        }
+    }
+    // Every reason to flush was exercised, and the frame end held the input.
+    assert!(why.start > 0 && why.drop > 0 && why.end > 0, "{why:?}");
+    assert!(b.held > 0, "the frame end never held the input");
+}
+
+#[test]
+fn a_reset_mid_frame_starts_afresh() {
+    let build = build();
+    let p = FccParams {
+        bridge: Some(3),
+        ..run_params(20, 36)
+    };
+    let mut b = Bench::new(&build);
+    for seed in 0..3u64 {
+        let mut rng = ChaCha8Rng::seed_from_u64(700 + seed);
+        let f = random_frame(p.rows, p.cols, 0.8, 0.05, false, &mut rng);
+        let px = frame_pixels(&p, &f);
+        // Half a frame, cut off by a reset (no `last`)...
+        let cut = rng.gen_range(p.rows..px.len() - p.rows);
+        b.feed(&p, &f, &px[..cut], false, 0.1, &mut rng);
+        b.step(&RaIn {
+            rst: 1,
+            ..RaIn::default()
+        });
+        // ... then the whole frame: its flushes only, nothing left of the
+        // half frame's open runs.
+        b.got.clear();
+        b.done = 0;
+        b.feed(&p, &f, &px, true, 0.1, &mut rng);
+        b.settle(&p);
+        let want = expected(&p, &f, &px, &mut Why::default());
+        let what = format!("reset mid-frame, seed {}", 700 + seed);
+        check(&b.got, &want, &what);
+        assert_eq!(b.done, 1, "{what}: done once");
+    }
+}
