@@ -35,6 +35,10 @@ pub struct StreamReportArgs {
     /// Filter sizes.
     #[arg(long, num_args = 1.., value_delimiter = ',', default_values_t = [3usize, 7, 11])]
     pub fsize: Vec<usize>,
+    /// Slots before the runs a pixel names take its representative, in the
+    /// second table's representative model (1: the next pixel sees it).
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..=1_000_000))]
+    pub reps_late: u64,
     /// Write the Markdown here (default: standard output).
     #[arg(long)]
     pub output: Option<PathBuf>,
@@ -208,6 +212,7 @@ pub fn run(args: &StreamReportArgs) -> anyhow::Result<()> {
                     slot_load::measure(
                         &params_for(im, &cfg.params),
                         &kept.to_frame(),
+                        args.reps_late,
                         &mut t.load,
                     )?;
                     for r in &streamed.records {

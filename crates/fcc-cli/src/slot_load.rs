@@ -50,8 +50,15 @@ fn find(parent: &mut [u32], mut x: u32) -> u32 {
 }
 
 /// Add one frame's counts to `t` (the frame clustered by the golden stream
-/// with `params`).
-pub fn measure(params: &FccParams, frame: &Frame, t: &mut SlotLoad) -> anyhow::Result<()> {
+/// with `params`). In the representative model the runs a pixel names take
+/// its representative `reps_late` slots after it (1: the next pixel sees
+/// it).
+pub fn measure(
+    params: &FccParams,
+    frame: &Frame,
+    reps_late: u64,
+    t: &mut SlotLoad,
+) -> anyhow::Result<()> {
     let mut stream = Stream::new(params)?;
     let mut column = vec![None; frame.rows];
     for c in 0..frame.cols {
@@ -78,11 +85,16 @@ pub fn measure(params: &FccParams, frame: &Frame, t: &mut SlotLoad) -> anyhow::R
     // The representative model: per run a label of its cluster.
     let mut rep: Vec<u32> = (0..n as u32).collect();
     let mut reps: Vec<u32> = Vec::new();
+    let mut rep_writes: VecDeque<(u64, u32, u32)> = VecDeque::new();
     let mut slot = 0u64;
     for c in 0..cols {
         let mut col_joins = 0u32;
         for i in 0..rows {
             slot += 1;
+            while rep_writes.front().is_some_and(|&(at, _, _)| at <= slot) {
+                let (_, run, least) = rep_writes.pop_front().expect("checked");
+                rep[run as usize] = least;
+            }
             while pending.front().is_some_and(|&(at, _, _)| at <= slot) {
                 let (_, from, to) = pending.pop_front().expect("checked");
                 for v in view.iter_mut().flatten().filter(|v| **v == from) {
@@ -123,7 +135,8 @@ pub fn measure(params: &FccParams, frame: &Frame, t: &mut SlotLoad) -> anyhow::R
             }
             // One join per representative other than the smallest among
             // the pixel's run's and its joined runs'; all of them then take
-            // the smallest (the rows' entries in the window are rewritten).
+            // the smallest, `reps_late` slots later (the rows' entries in
+            // the window are rewritten).
             reps.clear();
             reps.push(rep[own as usize]);
             for &r in &joined {
@@ -133,9 +146,9 @@ pub fn measure(params: &FccParams, frame: &Frame, t: &mut SlotLoad) -> anyhow::R
             }
             let sent = reps.len() as u64 - 1;
             let least = reps.iter().copied().min().expect("one at least");
-            rep[own as usize] = least;
+            rep_writes.push_back((slot + reps_late, own, least));
             for &r in &joined {
-                rep[r as usize] = least;
+                rep_writes.push_back((slot + reps_late, r, least));
             }
             t.rep_joins += sent;
             t.rep_joins_more += sent.saturating_sub(1);
@@ -185,7 +198,7 @@ mod tests {
             ..FccParams::default()
         };
         let mut t = SlotLoad::default();
-        measure(&p, &f, &mut t).unwrap();
+        measure(&p, &f, 1, &mut t).unwrap();
         assert_eq!((t.slots, t.labelled), (18, 18));
         assert_eq!((t.merges, t.offered, t.offered_more), (2, 2, 0));
         // The representatives: the same two joins (rows 1 and 2 meet the
