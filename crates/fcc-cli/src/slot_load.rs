@@ -204,6 +204,12 @@ mod tests {
         // The representatives: the same two joins (rows 1 and 2 meet the
         // row above once), then every run of the window shares one.
         assert_eq!((t.rep_joins, t.rep_joins_more, t.rep_joins_col), (2, 0, 2));
+        // Taken late, the representatives leave the pixels after those two
+        // to send the same joins again; the merges are the same.
+        let mut late = SlotLoad::default();
+        measure(&p, &f, 100, &mut late).unwrap();
+        assert_eq!(late.merges, t.merges);
+        assert!(late.rep_joins > t.rep_joins + 4, "{late:?}");
         // K = 3: the rows above and below, one run each.
         assert_eq!(t.joined_runs_max, 2);
         // Column 0: (1, 0) and (2, 0) join the row above. Later columns:
