@@ -11,6 +11,9 @@
 //! back on one instance, a reset mid-frame, and labels that run out and are
 //! reused. A mismatch prints the frame, pixel, expected, got and the seed.
 
+mod column;
+
+use column::{build, run_params};
 use std::collections::{HashMap, VecDeque};
 
 use fcc_golden::{Frame, Point, Stream, Thresholds};
@@ -542,23 +545,6 @@ fn random_frame(
         }
     }
     f
-}
-
-fn run_params(rows: usize, cols: usize) -> FccParams {
-    FccParams {
-        rows,
-        cols,
-        th_h: 0.3,
-        th_v: 0.3,
-        label_bits: 16,
-        ..FccParams::default()
-    }
-}
-
-/// The block is built once, for the default build (its rows bound the
-/// frames').
-fn build() -> FccParams {
-    FccParams::default()
 }
 
 #[test]
