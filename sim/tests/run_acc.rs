@@ -310,8 +310,11 @@ fn runs_flush_their_golden_accumulators() {
         th_v_slope: 0.03,
         ..run_params(40, 60)
     };
-    let cases: [(&str, FccParams, f64); 6] = [
+    let cases: [(&str, FccParams, f64); 7] = [
         ("unlimited", run_params(16, 40), 0.0),
+        // The fewest rows the block takes: a row's write just before its
+        // next read.
+        ("five rows", run_params(5, 80), 0.0),
         (
             "bridge 2",
             FccParams {
