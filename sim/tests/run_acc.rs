@@ -5,8 +5,9 @@
 //! drops its hold, its row starts another run, or the frame ends) and the
 //! golden accumulator of its pixels (`fcc_golden::Acc`, in the core's
 //! form). Checked: the flushes in order, each run's label and accumulator,
-//! every run flushed once, `done` after the frame end's flushes, and the
-//! input held (`ready` low) while they run. Fixed and range-adaptive
+//! every run flushed once, `done` after the frame end's flushes, the
+//! input held (`ready` low) while they run, and `bad` (a run continued
+//! that its row does not have open) set only by such input. Fixed and range-adaptive
 //! thresholds, bridge and ring-reach limits, bubbles, frames back to back
 //! on one instance, and a reset mid-frame. A mismatch prints the frame,
 //! the flush, expected, got and the seed.
@@ -49,6 +50,7 @@ c_struct! {
         pub f_valid: u8,
         pub f_label: u16,
         pub done: u8,
+        pub bad: u8,
         pub o_points: u32,
         pub o_min_col: u16,
         pub o_max_col: u16,
@@ -178,8 +180,9 @@ struct Bench {
     dut: PlainDut<RaIn, RaOut>,
     got: Vec<Flush>,
     done: u32,
-    /// Cycles with `ready` low.
+    /// Cycles with `ready` low, and with `bad` set.
     held: u64,
+    bad: u64,
 }
 
 impl Bench {
@@ -191,6 +194,7 @@ impl Bench {
             got: Vec::new(),
             done: 0,
             held: 0,
+            bad: 0,
         };
         b.step(&RaIn {
             rst: 1,
@@ -207,6 +211,7 @@ impl Bench {
         }
         self.done += u32::from(o.done);
         self.held += u64::from(o.ready == 0);
+        self.bad += u64::from(o.bad);
         o.ready != 0
     }
 
@@ -367,6 +372,7 @@ fn runs_flush_their_golden_accumulators() {
             let what = format!("{name}, seed {seed}");
             check(&b.got, &want, &what);
             assert_eq!(b.done, 1, "{what}: done once after the frame end");
+            assert_eq!(b.bad, 0, "{what}: bad set");
         }
     }
     // Every reason to flush was exercised, and the frame end held the input.
@@ -403,5 +409,35 @@ fn a_reset_mid_frame_starts_afresh() {
         let what = format!("reset mid-frame, seed {}", 700 + seed);
         check(&b.got, &want, &what);
         assert_eq!(b.done, 1, "{what}: done once");
+        assert_eq!(b.bad, 0, "{what}: bad set");
     }
+}
+
+/// A pixel that continues a run its row does not have open (here: after a
+/// reset, a frame fed from its second column) sets `bad` until a reset.
+#[test]
+fn a_run_continued_without_its_start_is_bad() {
+    let build = build();
+    let p = run_params(16, 24);
+    let mut b = Bench::new(&build);
+    let mut rng = ChaCha8Rng::seed_from_u64(800);
+    let f = random_frame(p.rows, p.cols, 0.9, 0.0, false, &mut rng);
+    let px = frame_pixels(&p, &f);
+    assert!(
+        px[p.rows..2 * p.rows]
+            .iter()
+            .any(|x| x.run != 0 && !x.start),
+        "the second column continues runs"
+    );
+    b.feed(&p, &f, &px[p.rows..2 * p.rows], false, 0.0, &mut rng);
+    b.settle(&p);
+    assert!(b.bad > 0, "bad not set");
+    b.step(&RaIn {
+        rst: 1,
+        ..RaIn::default()
+    });
+    b.bad = 0;
+    b.feed(&p, &f, &px, true, 0.0, &mut rng);
+    b.settle(&p);
+    assert_eq!(b.bad, 0, "bad not cleared by the reset");
 }

@@ -89,6 +89,10 @@ pub struct FccRunAcc {
     pub f_acc: Signal<Out, AccWord>,
     /// The frame-end flush is complete (one cycle, after its last flush).
     pub done: Signal<Out, Bit>,
+    /// Sticky until reset: a pixel continued a run its row does not have
+    /// open (the input does not follow `FccRowRuns`' runs; the pixel was
+    /// taken as a run of its own).
+    pub bad: Signal<Out, Bit>,
     pixel: FccAccPixel,
     merger: FccAccMerge,
     entries: FccRam<RunEntry, ROW_BITS>,
@@ -130,6 +134,7 @@ pub struct FccRunAcc {
     f_label_q: DFF<Bits<16>>,
     f_acc_q: DFF<AccWord>,
     done_q: DFF<Bit>,
+    bad_q: DFF<Bit>,
     row_id: Vec<Constant<Bits<7>>>,
     one7: Constant<Bits<7>>,
     zero7: Constant<Bits<7>>,
@@ -154,6 +159,7 @@ impl FccRunAcc {
             f_label: Default::default(),
             f_acc: Default::default(),
             done: Default::default(),
+            bad: Default::default(),
             pixel: Default::default(),
             merger: Default::default(),
             entries: FccRam::new(rows),
@@ -183,6 +189,7 @@ impl FccRunAcc {
             f_label_q: Default::default(),
             f_acc_q: Default::default(),
             done_q: Default::default(),
+            bad_q: Default::default(),
             row_id: (0..rows).map(|r| kb(r as u64)).collect(),
             one7: kb(1),
             zero7: kb(0),
@@ -199,7 +206,7 @@ impl Logic for FccRunAcc {
     fn update(&mut self) {
         dff_setup!(
             self, clk, busy, drain_row, old_live_q, e_wr, e_a, e_b, e_old, w_wr, w_acc, w_old,
-            f_valid_q, f_label_q, f_acc_q, done_q
+            f_valid_q, f_label_q, f_acc_q, done_q, bad_q
         );
         self.ready.next = !self.busy.q.val();
         // IN: the pixel's step, and its accumulator's inputs.
@@ -354,12 +361,23 @@ impl Logic for FccRunAcc {
         self.f_label.next = self.f_label_q.q.val();
         self.f_acc.next = self.f_acc_q.q.val();
         self.done.next = self.done_q.q.val();
+        // A pixel that continues a run must find it open in its row.
+        self.bad_q.d.next = self.bad_q.q.val();
+        if self.lokv.val()
+            & !self.dstep.val().start
+            & (!self.old_live.val()
+                | (self.entries.read_data.val().label != self.dstep.val().label))
+        {
+            self.bad_q.d.next = true;
+        }
+        self.bad.next = self.bad_q.q.val();
         if self.rst.val() {
             self.busy.d.next = false;
             self.e_wr.d.next = self.wr_zero.val();
             self.w_wr.d.next = self.wr_zero.val();
             self.f_valid_q.d.next = false;
             self.done_q.d.next = false;
+            self.bad_q.d.next = false;
             for s in 0..self.steps.len() {
                 self.steps[s].d.next = self.step_zero.val();
             }

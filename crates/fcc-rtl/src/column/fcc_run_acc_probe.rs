@@ -30,6 +30,7 @@ pub struct FccRunAccProbe {
     pub f_valid: Signal<Out, Bit>,
     pub f_label: Signal<Out, Bits<16>>,
     pub done: Signal<Out, Bit>,
+    pub bad: Signal<Out, Bit>,
     pub o_points: Signal<Out, Bits<20>>,
     pub o_min_col: Signal<Out, Bits<12>>,
     pub o_max_col: Signal<Out, Bits<12>>,
@@ -82,6 +83,7 @@ impl FccRunAccProbe {
             f_valid: Default::default(),
             f_label: Default::default(),
             done: Default::default(),
+            bad: Default::default(),
             o_points: Default::default(),
             o_min_col: Default::default(),
             o_max_col: Default::default(),
@@ -137,6 +139,7 @@ impl Logic for FccRunAccProbe {
         self.f_valid.next = self.acc.f_valid.val();
         self.f_label.next = self.acc.f_label.val();
         self.done.next = self.acc.done.val();
+        self.bad.next = self.acc.bad.val();
         self.o_points.next = self.acc.f_acc.val().points;
         self.o_min_col.next = self.acc.f_acc.val().min_col;
         self.o_max_col.next = self.acc.f_acc.val().max_col;
