@@ -105,10 +105,11 @@ pub struct FccRunAcc {
     busy: DFF<Bit>,
     drain_row: DFF<Bits<7>>,
     /// The step that issues the read, and the read issued: the pixel's
-    /// row, or the flush's; the step whose row's live flag is read.
+    /// row, or the flush's; that row, a cycle later, whose live flag is
+    /// read.
     rd_in: Signal<Local, RunStep>,
     rd_step: Signal<Local, RunStep>,
-    live_in: Signal<Local, RunStep>,
+    live_row: DFF<Bits<7>>,
     /// Step 2's row's live flag: the masked flags' running OR, then
     /// registered for D.
     live_or: Vec<Signal<Local, Bit>>,
@@ -169,7 +170,7 @@ impl FccRunAcc {
             drain_row: Default::default(),
             rd_in: Default::default(),
             rd_step: Default::default(),
-            live_in: Default::default(),
+            live_row: Default::default(),
             live_or: vec_of(rows),
             old_live_q: Default::default(),
             dstep: Default::default(),
@@ -205,8 +206,8 @@ impl Logic for FccRunAcc {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clk, busy, drain_row, old_live_q, e_wr, e_a, e_b, e_old, w_wr, w_acc, w_old,
-            f_valid_q, f_label_q, f_acc_q, done_q, bad_q
+            self, clk, busy, drain_row, live_row, old_live_q, e_wr, e_a, e_b, e_old, w_wr, w_acc,
+            w_old, f_valid_q, f_label_q, f_acc_q, done_q, bad_q
         );
         self.ready.next = !self.busy.q.val();
         // IN: the pixel's step, and its accumulator's inputs.
@@ -247,11 +248,11 @@ impl Logic for FccRunAcc {
         for ri in (self.steps.len() - 3)..(self.steps.len() - 2) {
             self.steps[ri + 1].d.next = self.rd_step.val();
             self.steps[ri + 2].d.next = self.steps[ri + 1].q.val();
-            self.live_in.next = self.steps[ri + 1].q.val();
         }
         self.entries.clk.next = self.clk.val();
         self.entries.read_en.next = true;
         self.entries.read_addr.next = self.rd_step.val().row;
+        self.live_row.d.next = self.rd_step.val().row;
         // The frame-end flush starts once the last pixel has issued its
         // read, and reads the rows 0 ..= R - 1.
         self.busy.d.next = self.busy.q.val();
@@ -270,10 +271,10 @@ impl Logic for FccRunAcc {
         // flags, not a chain of multiplexers; the row's last write was a
         // column before).
         self.live_or[0].next =
-            self.live[0].q.val() & (self.live_in.val().row == self.row_id[0].val());
+            self.live[0].q.val() & (self.live_row.q.val() == self.row_id[0].val());
         for r in 1..self.row_id.len() {
             self.live_or[r].next = self.live_or[r - 1].val()
-                | (self.live[r].q.val() & (self.live_in.val().row == self.row_id[r].val()));
+                | (self.live[r].q.val() & (self.live_row.q.val() == self.row_id[r].val()));
         }
         for last in (self.row_id.len() - 1)..self.row_id.len() {
             self.old_live_q.d.next = self.live_or[last].val();
