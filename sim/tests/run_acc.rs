@@ -176,6 +176,15 @@ fn expected(p: &FccParams, f: &Frame, px: &[Pix], why: &mut Why) -> Vec<Flush> {
     out
 }
 
+/// A cycle without a pixel, with the frame's run parameters.
+fn idle(p: &FccParams) -> RaIn {
+    RaIn {
+        half: (p.cols / 2) as u16,
+        last_row: (p.rows - 1) as u8,
+        ..RaIn::default()
+    }
+}
+
 struct Bench {
     dut: PlainDut<RaIn, RaOut>,
     got: Vec<Flush>,
@@ -227,11 +236,7 @@ impl Bench {
         bubbles: f64,
         rng: &mut ChaCha8Rng,
     ) {
-        let idle = RaIn {
-            half: (p.cols / 2) as u16,
-            last_row: (p.rows - 1) as u8,
-            ..RaIn::default()
-        };
+        let idle = idle(p);
         for (n, x) in px.iter().enumerate() {
             while rng.gen_bool(bubbles) {
                 self.step(&idle);
@@ -257,11 +262,7 @@ impl Bench {
 
     /// Cycles enough for the frame end's flushes.
     fn settle(&mut self, p: &FccParams) {
-        let idle = RaIn {
-            half: (p.cols / 2) as u16,
-            last_row: (p.rows - 1) as u8,
-            ..RaIn::default()
-        };
+        let idle = idle(p);
         for _ in 0..p.rows + 16 {
             self.step(&idle);
         }

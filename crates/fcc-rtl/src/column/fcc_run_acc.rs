@@ -1,5 +1,5 @@
 //! `FccRunAcc`: each row's current run's accumulator (docs/column-core.md,
-//! "Run accumulators"). A pixel adds itself to its row's entry, so the
+//! item 3, "Built: `FccRunAcc`"). A pixel adds itself to its row's entry, so the
 //! slot table never looks a cluster up per pixel: a run's pixels all lie in
 //! one row, and its accumulator goes to its cluster once, when the run is
 //! over (a *flush*: its label and accumulator, `f_*`).
@@ -14,9 +14,10 @@
 //! too, since a row drops its hold at any slot):
 //! * IN takes the pixel while `ready`; `FccAccPixel` makes its
 //!   accumulator ([`ACC_PIXEL_LATENCY`] cycles).
-//! * Two cycles before the accumulator is ready the row's entry is read (`FccRam`, two cycles: LUT RAM
-//!   of `R` words), and its `live` flag (flip-flops, so that a reset
-//!   empties every row; an OR of masked flags, registered).
+//! * Two cycles before the accumulator is ready the row's entry is read
+//!   (`FccRam`, two cycles: LUT RAM of `R` words), and its `live` flag
+//!   (flip-flops, so that a reset empties every row; an OR of masked
+//!   flags, registered).
 //! * D decides: the pixel starts a run (its accumulator is the entry; a
 //!   run still open in the row is flushed) or continues one (the entry and
 //!   the pixel merged); the run dropped is flushed, the pixel included
@@ -110,7 +111,7 @@ pub struct FccRunAcc {
     rd_in: Signal<Local, RunStep>,
     rd_step: Signal<Local, RunStep>,
     live_row: DFF<Bits<7>>,
-    /// Step 2's row's live flag: the masked flags' running OR, then
+    /// The live flag of `live_row`: the masked flags' running OR, then
     /// registered for D.
     live_or: Vec<Signal<Local, Bit>>,
     old_live_q: DFF<Bit>,
