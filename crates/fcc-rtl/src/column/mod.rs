@@ -29,6 +29,8 @@ pub mod fcc_open_room;
 pub mod fcc_rec_beats;
 pub mod fcc_record_out;
 pub mod fcc_record_out_probe;
+pub mod fcc_rep_match;
+pub mod fcc_rep_window;
 pub mod fcc_root_match;
 pub mod fcc_root_table;
 pub mod fcc_root_window;
@@ -47,6 +49,10 @@ use rust_hdl::prelude::*;
 /// Bits of a record slot: the slot table's 512 records (docs/column-core.md;
 /// spec §9.1's open limit keeps the clusters open at most that many).
 pub const SLOT_BITS: usize = 9;
+
+/// Bits of a run slot's number in a representative row (`h + 1` slots,
+/// at most 6 at K = 11).
+pub const REP_PTR_BITS: usize = 3;
 
 /// Where each slot of a pixel sits in `FccRowRoots`' stage banks: the
 /// window entries' first, then the pixel's own run's and the ring check's

@@ -1,0 +1,235 @@
+//! `FccRepMatch`: the run slots a pixel names in `FccRepWindow`'s `K`
+//! window rows, as a mask (combinational; docs/column-core.md, item 3,
+//! "How the next pixel sees the rewrite"). Each hit's label is looked for
+//! among its row's `h + 1` runs, the newest first (a label freed and
+//! reused names the newer run); the pixel's own run is its row's newest
+//! (a run it starts is pushed already).
+//!
+//! * In: the window rows (row `w` is `i - h + w`; run slot `k` of row `w` at
+//!   `w * (h + 1) + k`, `ptr[w]` its newest), and the entries of
+//!   `FccColWindow`'s order (line `r`, position `p`: row `p` for `p < h`,
+//!   `p + 1` after, at `r (K - 1) + p`; then row `h - m` of the pixel's
+//!   column at `2 h^2 + m - 1`).
+//! * Out: `mask`, by run slot; `miss`: a labelled pixel's hit whose label
+//!   its row does not hold (a broken invariant: the bench checks it never
+//!   is).
+
+use rust_hdl::prelude::*;
+
+use super::REP_PTR_BITS;
+use crate::types::{kb, vec_of};
+
+#[derive(LogicBlock)]
+pub struct FccRepMatch {
+    pub label: Vec<Signal<In, Bits<16>>>,
+    pub ptr: Vec<Signal<In, Bits<REP_PTR_BITS>>>,
+    pub lok: Signal<In, Bit>,
+    pub ent_hit: Vec<Signal<In, Bit>>,
+    pub ent_label: Vec<Signal<In, Bits<16>>>,
+    pub mask: Vec<Signal<Out, Bit>>,
+    pub miss: Signal<Out, Bit>,
+    /// Row `w`'s run slot `k` is newer than its slot `k2`, at
+    /// `(w * (h + 1) + k) * (h + 1) + k2`.
+    newer: Vec<Signal<Local, Bit>>,
+    /// Run slot `k`'s age in row `w` (0: the newest).
+    age: Vec<Signal<Local, Bits<REP_PTR_BITS>>>,
+    /// Entry `e`'s label equals run slot `k` of its row, at
+    /// `e * (h + 1) + k`; then the newest such.
+    eq: Vec<Signal<Local, Bit>>,
+    found: Vec<Signal<Local, Bit>>,
+    any: Vec<Signal<Local, Bit>>,
+    slot_no: Vec<Constant<Bits<REP_PTR_BITS>>>,
+    /// `h + 1 - k` for each run slot `k` (the age's wrap).
+    wrap: Vec<Constant<Bits<REP_PTR_BITS>>>,
+    _k: usize,
+    _h: usize,
+    _n: usize,
+    /// `2 h^2`: the first entry of the pixel's own column.
+    _same: usize,
+}
+
+impl FccRepMatch {
+    /// The window of filter size `k`.
+    pub fn new(k: usize) -> Self {
+        let h = (k - 1) / 2;
+        let n = h + 1;
+        let ne = k * h;
+        Self {
+            label: vec_of(k * n),
+            ptr: vec_of(k),
+            lok: Default::default(),
+            ent_hit: vec_of(ne),
+            ent_label: vec_of(ne),
+            mask: vec_of(k * n),
+            miss: Default::default(),
+            newer: vec_of(k * n * n),
+            age: vec_of(k * n),
+            eq: vec_of(ne * n),
+            found: vec_of(ne * n),
+            any: vec_of(ne),
+            slot_no: (0..n).map(|s| kb(s as u64)).collect(),
+            wrap: (0..n).map(|s| kb((n - s) as u64)).collect(),
+            _k: k,
+            _h: h,
+            _n: n,
+            _same: 2 * h * h,
+        }
+    }
+}
+
+impl Logic for FccRepMatch {
+    #[hdl_gen]
+    fn update(&mut self) {
+        for nn in self._n..(self._n + 1) {
+            // Ages, and which run slot is newer than which, per row.
+            for w in 0..self._k {
+                for k in 0..self._n {
+                    self.age[w * nn + k].next = self.ptr[w].val() - self.slot_no[k].val();
+                    if self.ptr[w].val() < self.slot_no[k].val() {
+                        self.age[w * nn + k].next = self.ptr[w].val() + self.wrap[k].val();
+                    }
+                }
+                for k in 0..self._n {
+                    for k2 in 0..self._n {
+                        self.newer[(w * nn + k) * nn + k2].next =
+                            self.age[w * nn + k].val() < self.age[w * nn + k2].val();
+                    }
+                }
+            }
+            for w in 0..self.mask.len() {
+                self.mask[w].next = false;
+            }
+            // Entries: each compared with its row's run slots.
+            for km in (self._k - 1)..self._k {
+                for r in 0..self._h {
+                    for p in 0..self._h {
+                        for k in 0..self._n {
+                            self.eq[(r * km + p) * nn + k].next =
+                                self.ent_label[r * km + p].val() == self.label[p * nn + k].val();
+                        }
+                    }
+                    for p in self._h..(self._k - 1) {
+                        for k in 0..self._n {
+                            self.eq[(r * km + p) * nn + k].next = self.ent_label[r * km + p].val()
+                                == self.label[(p + 1) * nn + k].val();
+                        }
+                    }
+                }
+            }
+            for q in self._same..(self._same + 1) {
+                for hh in self._h..(self._h + 1) {
+                    for m in 1..(self._h + 1) {
+                        for k in 0..self._n {
+                            self.eq[(q + m - 1) * nn + k].next = self.ent_label[q + m - 1].val()
+                                == self.label[(hh - m) * nn + k].val();
+                        }
+                    }
+                }
+            }
+            // The newest match of each entry (`newer` of its row).
+            for km in (self._k - 1)..self._k {
+                for r in 0..self._h {
+                    for p in 0..self._h {
+                        for k in 0..self._n {
+                            self.found[(r * km + p) * nn + k].next =
+                                self.eq[(r * km + p) * nn + k].val();
+                            for k2 in 0..self._n {
+                                if self.eq[(r * km + p) * nn + k2].val()
+                                    & self.newer[(p * nn + k2) * nn + k].val()
+                                {
+                                    self.found[(r * km + p) * nn + k].next = false;
+                                }
+                            }
+                        }
+                    }
+                    for p in self._h..(self._k - 1) {
+                        for k in 0..self._n {
+                            self.found[(r * km + p) * nn + k].next =
+                                self.eq[(r * km + p) * nn + k].val();
+                            for k2 in 0..self._n {
+                                if self.eq[(r * km + p) * nn + k2].val()
+                                    & self.newer[((p + 1) * nn + k2) * nn + k].val()
+                                {
+                                    self.found[(r * km + p) * nn + k].next = false;
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+            for q in self._same..(self._same + 1) {
+                for hh in self._h..(self._h + 1) {
+                    for m in 1..(self._h + 1) {
+                        for k in 0..self._n {
+                            self.found[(q + m - 1) * nn + k].next =
+                                self.eq[(q + m - 1) * nn + k].val();
+                            for k2 in 0..self._n {
+                                if self.eq[(q + m - 1) * nn + k2].val()
+                                    & self.newer[((hh - m) * nn + k2) * nn + k].val()
+                                {
+                                    self.found[(q + m - 1) * nn + k].next = false;
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+            // The mask: every hit's run slot, and the pixel's own.
+            self.miss.next = false;
+            for e in 0..self.ent_hit.len() {
+                self.any[e].next = false;
+                for k in 0..self._n {
+                    if self.eq[e * nn + k].val() {
+                        self.any[e].next = true;
+                    }
+                }
+                if self.lok.val() & self.ent_hit[e].val() & !self.any[e].val() {
+                    self.miss.next = true;
+                }
+            }
+            for km in (self._k - 1)..self._k {
+                for r in 0..self._h {
+                    for p in 0..self._h {
+                        for k in 0..self._n {
+                            if self.lok.val()
+                                & self.ent_hit[r * km + p].val()
+                                & self.found[(r * km + p) * nn + k].val()
+                            {
+                                self.mask[p * nn + k].next = true;
+                            }
+                        }
+                    }
+                    for p in self._h..(self._k - 1) {
+                        for k in 0..self._n {
+                            if self.lok.val()
+                                & self.ent_hit[r * km + p].val()
+                                & self.found[(r * km + p) * nn + k].val()
+                            {
+                                self.mask[(p + 1) * nn + k].next = true;
+                            }
+                        }
+                    }
+                }
+            }
+            for q in self._same..(self._same + 1) {
+                for hh in self._h..(self._h + 1) {
+                    for m in 1..(self._h + 1) {
+                        for k in 0..self._n {
+                            if self.lok.val()
+                                & self.ent_hit[q + m - 1].val()
+                                & self.found[(q + m - 1) * nn + k].val()
+                            {
+                                self.mask[(hh - m) * nn + k].next = true;
+                            }
+                        }
+                    }
+                    for k in 0..self._n {
+                        if self.lok.val() & (self.ptr[hh].val() == self.slot_no[k].val()) {
+                            self.mask[hh * nn + k].next = true;
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
