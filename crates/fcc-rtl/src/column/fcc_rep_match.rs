@@ -1,4 +1,4 @@
-//! `FccRepMatch`: the run slots a pixel names in `FccRepWindow`'s `K`
+//! `FccRepMatch`: the run slots a pixel names in `FccRowReps`'s `K`
 //! window rows, as a mask (combinational; docs/column-core.md, item 3,
 //! "How the next pixel sees the rewrite"). Each hit's label is looked for
 //! among its row's `h + 1` runs, the newest first (a label freed and

@@ -1,4 +1,4 @@
-//! `FccRepWindow`: the representative rows of the `K` rows around the
+//! `FccRowReps`: the representative rows of the `K` rows around the
 //! pixel, and the `S` rows above them not yet written back, in flip-flops
 //! (docs/column-core.md, item 3, "How the next pixel sees the rewrite").
 //! Position `j` holds row `i - h - S + j`; the centre is position
@@ -30,7 +30,7 @@ use super::REP_PTR_BITS;
 use crate::types::{kb, vec_of};
 
 #[derive(LogicBlock)]
-pub struct FccRepWindow {
+pub struct FccRowReps {
     pub clk: Signal<In, Clock>,
     pub shift: Signal<In, Bit>,
     pub load_label: Vec<Signal<In, Bits<16>>>,
@@ -69,7 +69,7 @@ pub struct FccRepWindow {
     _n: usize,
 }
 
-impl FccRepWindow {
+impl FccRowReps {
     /// Filter size `k`, `s` rows kept above the window.
     pub fn new(k: usize, s: usize) -> Self {
         let h = (k - 1) / 2;
@@ -109,7 +109,7 @@ impl FccRepWindow {
     }
 }
 
-impl Logic for FccRepWindow {
+impl Logic for FccRowReps {
     #[hdl_gen]
     fn update(&mut self) {
         for nn in self._n..(self._n + 1) {
