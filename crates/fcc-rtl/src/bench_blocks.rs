@@ -61,6 +61,9 @@ pub enum BenchBlock {
     /// The column core's run accumulators `FccRunAcc` behind the scalar
     /// ports of `FccRunAccProbe`.
     RunAcc,
+    /// The column core's representative rows and join filter `FccRepJoins`
+    /// behind the scalar ports of `FccRepJoinsProbe`.
+    RepJoins,
 }
 
 /// One row of the table: the module's name before the configuration
@@ -88,7 +91,7 @@ impl Row {
 
 impl BenchBlock {
     /// Every block with a bench.
-    pub const ALL: [BenchBlock; 20] = [
+    pub const ALL: [BenchBlock; 21] = [
         BenchBlock::Regs,
         BenchBlock::AxilAdapter,
         BenchBlock::MergeTable,
@@ -109,6 +112,7 @@ impl BenchBlock {
         BenchBlock::LabelPool,
         BenchBlock::RowRoots,
         BenchBlock::RunAcc,
+        BenchBlock::RepJoins,
     ];
 
     fn row(self) -> Row {
@@ -264,6 +268,17 @@ impl BenchBlock {
                     )
                 },
                 waivers: lint::run_acc_waivers,
+            },
+            BenchBlock::RepJoins => Row {
+                name: "fcc_rep_joins_probe",
+                generate: |p| {
+                    gen(
+                        p,
+                        crate::column::fcc_rep_joins_probe::FccRepJoinsProbe::new(p),
+                        "fcc_rep_joins_probe",
+                    )
+                },
+                waivers: lint::rep_joins_waivers,
             },
         }
     }

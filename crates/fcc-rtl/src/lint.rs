@@ -172,6 +172,28 @@ pub fn row_roots_waivers(p: &FccParams, name: &str) -> String {
     s
 }
 
+/// The waivers of the representative rows' probe `name`: its enum
+/// register's (as [`enum_block_waivers`]); its hit mask and label words are
+/// sized for K = 11 (as the row roots' probe); the probe reads the pixel's
+/// position and label only; the rows above the window are not read.
+pub fn rep_joins_waivers(p: &FccParams, name: &str) -> String {
+    let mut s = enum_block_waivers(p, name);
+    s.push_str(&format!(
+        "// Sized for K = 11: a smaller window leaves upper bits and words unread.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'hits'*\"\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'words$*\"\n\
+         // The probe reads the pixel's position, label and flags only.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'joins$out'*\"\n\
+         // The rows above the window only take rewrites on their way out\n\
+         // (`wb_*`): their labels and newest slots are not read there.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'window$label$*\"\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'window$ptr$*\"\n\
+         // R picks only while a flag is known set.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'pick_r$any'*\"\n"
+    ));
+    s
+}
+
 /// The waivers of the column window's probe `name`: it brings out the
 /// centre's position and label only; the window passes the rest of the
 /// slot through unchanged (a delay line the probe feeds with zeros).

@@ -2,7 +2,7 @@
 //! window rows, as a mask (combinational; docs/column-core.md, item 3,
 //! "How the next pixel sees the rewrite"). Each hit's label is looked for
 //! among its row's `h + 1` runs, the newest first (a label freed and
-//! reused names the newer run); the pixel's own run is its row's newest
+//! reused names the newer run), and the pixel's own among the centre row's
 //! (a run it starts is pushed already).
 //!
 //! * In: the window rows (row `w` is `i - h + w`; run slot `k` of row `w` at
@@ -10,9 +10,9 @@
 //!   `FccColWindow`'s order (line `r`, position `p`: row `p` for `p < h`,
 //!   `p + 1` after, at `r (K - 1) + p`; then row `h - m` of the pixel's
 //!   column at `2 h^2 + m - 1`).
-//! * Out: `mask`, by run slot; `miss`: a labelled pixel's hit whose label
-//!   its row does not hold (a broken invariant: the bench checks it never
-//!   is).
+//! * Out: `mask`, by run slot; `miss`: a labelled pixel whose own label or
+//!   hit's label its row does not hold (a broken invariant: the bench
+//!   checks it never is).
 
 use rust_hdl::prelude::*;
 
@@ -24,6 +24,7 @@ pub struct FccRepMatch {
     pub label: Vec<Signal<In, Bits<16>>>,
     pub ptr: Vec<Signal<In, Bits<REP_PTR_BITS>>>,
     pub lok: Signal<In, Bit>,
+    pub own_label: Signal<In, Bits<16>>,
     pub ent_hit: Vec<Signal<In, Bit>>,
     pub ent_label: Vec<Signal<In, Bits<16>>>,
     pub mask: Vec<Signal<Out, Bit>>,
@@ -38,6 +39,11 @@ pub struct FccRepMatch {
     eq: Vec<Signal<Local, Bit>>,
     found: Vec<Signal<Local, Bit>>,
     any: Vec<Signal<Local, Bit>>,
+    /// The pixel's own label against the centre row's run slots; the
+    /// newest match; any.
+    own_eq: Vec<Signal<Local, Bit>>,
+    own_found: Vec<Signal<Local, Bit>>,
+    own_any: Signal<Local, Bit>,
     slot_no: Vec<Constant<Bits<REP_PTR_BITS>>>,
     /// `h + 1 - k` for each run slot `k` (the age's wrap).
     wrap: Vec<Constant<Bits<REP_PTR_BITS>>>,
@@ -58,6 +64,7 @@ impl FccRepMatch {
             label: vec_of(k * n),
             ptr: vec_of(k),
             lok: Default::default(),
+            own_label: Default::default(),
             ent_hit: vec_of(ne),
             ent_label: vec_of(ne),
             mask: vec_of(k * n),
@@ -67,6 +74,9 @@ impl FccRepMatch {
             eq: vec_of(ne * n),
             found: vec_of(ne * n),
             any: vec_of(ne),
+            own_eq: vec_of(n),
+            own_found: vec_of(n),
+            own_any: Default::default(),
             slot_no: (0..n).map(|s| kb(s as u64)).collect(),
             wrap: (0..n).map(|s| kb((n - s) as u64)).collect(),
             _k: k,
@@ -83,7 +93,8 @@ impl Logic for FccRepMatch {
         for nn in self._n..(self._n + 1) {
             // Ages, and which run slot is newer than which, per row.
             for w in 0..self._k {
-                for k in 0..self._n {
+                self.age[w * nn].next = self.ptr[w].val();
+                for k in 1..self._n {
                     self.age[w * nn + k].next = self.ptr[w].val() - self.slot_no[k].val();
                     if self.ptr[w].val() < self.slot_no[k].val() {
                         self.age[w * nn + k].next = self.ptr[w].val() + self.wrap[k].val();
@@ -223,10 +234,28 @@ impl Logic for FccRepMatch {
                             }
                         }
                     }
+                    // The pixel's own run: its label among the centre row's,
+                    // the newest first.
                     for k in 0..self._n {
-                        if self.lok.val() & (self.ptr[hh].val() == self.slot_no[k].val()) {
+                        self.own_eq[k].next = self.own_label.val() == self.label[hh * nn + k].val();
+                    }
+                    self.own_any.next = false;
+                    for k in 0..self._n {
+                        if self.own_eq[k].val() {
+                            self.own_any.next = true;
+                        }
+                        self.own_found[k].next = self.own_eq[k].val();
+                        for k2 in 0..self._n {
+                            if self.own_eq[k2].val() & self.newer[(hh * nn + k2) * nn + k].val() {
+                                self.own_found[k].next = false;
+                            }
+                        }
+                        if self.lok.val() & self.own_found[k].val() {
                             self.mask[hh * nn + k].next = true;
                         }
+                    }
+                    if self.lok.val() & !self.own_any.val() {
+                        self.miss.next = true;
                     }
                 }
             }

@@ -19,10 +19,9 @@
 //!   (position `j`'s run slot `k` at `j * (h + 1) + k`, as the window is
 //!   this cycle) become `rw_rep`, at the edge, before the shift moves them.
 //!
-//! Nothing is reset: a row loaded from the table is masked by the table's
-//! own record of rows written (`FccRepRows`), and a hit names a run pushed
-//! during the frame, found newest first before anything left from an
-//! earlier frame.
+//! `rst` empties every row (labels 0, which no hit names). After that, a
+//! hit names a run pushed during the frame, found newest first before
+//! anything left from an earlier frame.
 
 use rust_hdl::prelude::*;
 
@@ -32,6 +31,7 @@ use crate::types::{kb, vec_of};
 #[derive(LogicBlock)]
 pub struct FccRowReps {
     pub clk: Signal<In, Clock>,
+    pub rst: Signal<In, Bit>,
     pub shift: Signal<In, Bit>,
     pub load_label: Vec<Signal<In, Bits<16>>>,
     pub load_rep: Vec<Signal<In, Bits<16>>>,
@@ -58,6 +58,7 @@ pub struct FccRowReps {
     push_ptr: Signal<Local, Bits<REP_PTR_BITS>>,
     last_ptr: Constant<Bits<REP_PTR_BITS>>,
     zero_ptr: Constant<Bits<REP_PTR_BITS>>,
+    zero16: Constant<Bits<16>>,
     one_ptr: Constant<Bits<REP_PTR_BITS>>,
     /// Run slot numbers, `0 ..= h`.
     slot_no: Vec<Constant<Bits<REP_PTR_BITS>>>,
@@ -78,6 +79,7 @@ impl FccRowReps {
         assert!(n <= 1 << REP_PTR_BITS, "K = {k}: {n} run slots a row");
         Self {
             clk: Default::default(),
+            rst: Default::default(),
             shift: Default::default(),
             load_label: vec_of(n),
             load_rep: vec_of(n),
@@ -100,6 +102,7 @@ impl FccRowReps {
             push_ptr: Default::default(),
             last_ptr: kb((n - 1) as u64),
             zero_ptr: kb(0),
+            zero16: kb(0),
             one_ptr: kb(1),
             slot_no: (0..n).map(|k| kb(k as u64)).collect(),
             _p: p,
@@ -164,6 +167,15 @@ impl Logic for FccRowReps {
                             self.label_q[c * nn + k].d.next = self.push_label.val();
                             self.rep_q[c * nn + k].d.next = self.push_label.val();
                         }
+                    }
+                }
+            }
+            if self.rst.val() {
+                for j in 0..self._p {
+                    self.ptr_q[j].d.next = self.zero_ptr.val();
+                    for k in 0..self._n {
+                        self.label_q[j * nn + k].d.next = self.zero16.val();
+                        self.rep_q[j * nn + k].d.next = self.zero16.val();
                     }
                 }
             }

@@ -1,0 +1,126 @@
+//! `FccRepFront`: the representative rows' input and A1 (docs/column-core.md,
+//! item 3). A pixel is taken while nothing holds the pipeline and the
+//! table has the row that enters the window with it (`ready`); taking it
+//! shifts the window (`shift`) and pushes the run it starts (`push`). A1
+//! holds the pixel, its hits and their labels for `FccRepMatch`, and gives
+//! the minimum tree the representatives its mask names (`0xFFFF`, above
+//! any label, elsewhere and in the padding). `miss` is sticky until reset.
+
+use rust_hdl::prelude::*;
+
+use super::RunPix;
+use crate::types::{kb, vec_of};
+
+#[derive(LogicBlock)]
+pub struct FccRepFront {
+    pub clk: Signal<In, Clock>,
+    pub rst: Signal<In, Bit>,
+    pub inp: Signal<In, RunPix>,
+    pub inp_hit: Vec<Signal<In, Bit>>,
+    pub inp_label: Vec<Signal<In, Bits<16>>>,
+    pub busy: Signal<In, Bit>,
+    pub head_ok: Signal<In, Bit>,
+    /// A1's mask (`FccRepMatch`), the window's representatives at A1's
+    /// rows, and the match's `miss`.
+    pub mask: Vec<Signal<In, Bit>>,
+    pub rep: Vec<Signal<In, Bits<16>>>,
+    pub match_miss: Signal<In, Bit>,
+    pub ready: Signal<Out, Bit>,
+    pub adv: Signal<Out, Bit>,
+    pub shift: Signal<Out, Bit>,
+    pub push: Signal<Out, Bit>,
+    pub a1_pix: Signal<Out, RunPix>,
+    pub a1_hit: Vec<Signal<Out, Bit>>,
+    pub a1_label: Vec<Signal<Out, Bits<16>>>,
+    pub v: Vec<Signal<Out, Bits<16>>>,
+    pub miss: Signal<Out, Bit>,
+    pix_q: DFF<RunPix>,
+    hit_q: Vec<DFF<Bit>>,
+    label_q: Vec<DFF<Bits<16>>>,
+    miss_q: DFF<Bit>,
+    take: Signal<Local, Bit>,
+    pix_zero: Constant<RunPix>,
+    none: Constant<Bits<16>>,
+}
+
+impl FccRepFront {
+    /// `ne` window entries, `np` run slots, `nv` values for the tree.
+    pub fn new(ne: usize, np: usize, nv: usize) -> Self {
+        assert!(nv >= np);
+        Self {
+            clk: Default::default(),
+            rst: Default::default(),
+            inp: Default::default(),
+            inp_hit: vec_of(ne),
+            inp_label: vec_of(ne),
+            busy: Default::default(),
+            head_ok: Default::default(),
+            mask: vec_of(np),
+            rep: vec_of(np),
+            match_miss: Default::default(),
+            ready: Default::default(),
+            adv: Default::default(),
+            shift: Default::default(),
+            push: Default::default(),
+            a1_pix: Default::default(),
+            a1_hit: vec_of(ne),
+            a1_label: vec_of(ne),
+            v: vec_of(nv),
+            miss: Default::default(),
+            pix_q: Default::default(),
+            hit_q: vec_of(ne),
+            label_q: vec_of(ne),
+            miss_q: Default::default(),
+            take: Default::default(),
+            pix_zero: Constant::new(RunPix::default()),
+            none: kb(0xFFFF),
+        }
+    }
+}
+
+impl Logic for FccRepFront {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clk, pix_q, miss_q);
+        self.adv.next = !self.busy.val();
+        self.ready.next = !self.busy.val() & self.head_ok.val();
+        self.take.next = self.inp.val().valid & !self.busy.val() & self.head_ok.val();
+        self.shift.next = self.take.val();
+        self.push.next = self.take.val() & self.inp.val().start;
+        if !self.busy.val() {
+            self.pix_q.d.next = self.pix_zero.val();
+            if self.take.val() {
+                self.pix_q.d.next = self.inp.val();
+            }
+        }
+        for e in 0..self.hit_q.len() {
+            self.hit_q[e].clock.next = self.clk.val();
+            self.label_q[e].clock.next = self.clk.val();
+            self.hit_q[e].d.next = self.hit_q[e].q.val();
+            self.label_q[e].d.next = self.label_q[e].q.val();
+            if !self.busy.val() {
+                self.hit_q[e].d.next = self.inp_hit[e].val();
+                self.label_q[e].d.next = self.inp_label[e].val();
+            }
+            self.a1_hit[e].next = self.hit_q[e].q.val();
+            self.a1_label[e].next = self.label_q[e].q.val();
+        }
+        self.a1_pix.next = self.pix_q.q.val();
+        for j in 0..self.v.len() {
+            self.v[j].next = self.none.val();
+        }
+        for j in 0..self.mask.len() {
+            if self.mask[j].val() {
+                self.v[j].next = self.rep[j].val();
+            }
+        }
+        if self.pix_q.q.val().valid & self.match_miss.val() {
+            self.miss_q.d.next = true;
+        }
+        if self.rst.val() {
+            self.pix_q.d.next = self.pix_zero.val();
+            self.miss_q.d.next = false;
+        }
+        self.miss.next = self.miss_q.q.val();
+    }
+}

@@ -1,0 +1,311 @@
+//! `FccRepJoins`: the column core's representative rows and join filter
+//! (docs/column-core.md, item 3, "How the next pixel sees the rewrite").
+//! Pixels arrive in column order with their run's label (`FccRowRuns`)
+//! and their pass-2 hits (`FccColDist`: per window entry, a hit and the
+//! label of the entry's run); out come the joins between labels the
+//! union-find must make, `(x, m)`, each before the pixel that sends it,
+//! and the pixels in order.
+//!
+//! Each row keeps its last `h + 1` runs' labels and representatives (a
+//! label of the run's cluster). A pixel names its own run and its hits'
+//! runs, a mask over the window's run slots; its smallest named
+//! representative `m` becomes every named run's, and each other distinct
+//! value there is a join. The next pixel sees the rewrite: the pixels in
+//! flight correct their partial minimums by it (`FccRepOverlap`), and the
+//! joins are read off the window as the rewrite is made.
+//!
+//! Stages (every one holds while `FccRepExtract` replays a pixel's second
+//! join or more, from a flip-flop):
+//! * A1 (`FccRepFront`): the pixel taken; the window shifts (`FccRowReps`,
+//!   its rows from and back to the table, `FccRepRowFeed`), the run it
+//!   starts pushed; `FccRepMatch` makes its mask; the representatives
+//!   named are read.
+//! * M1 .. M3 (`FccRepStage`, `FccRepMin`): the minimum tree, three
+//!   stages of groups of `gs` (`gs^3 >= K (h + 1)`), each group corrected
+//!   by the rewrite broadcast that cycle where it names a slot of the
+//!   group (`FccRepShift` places the broadcast in the pixel's rows).
+//! * B = M3: the pixel's `m`; the broadcast (its mask in the window's
+//!   positions, `m`) rewrites the window at the edge, and `FccRepExtract`
+//!   takes the window's values as they were.
+
+use rust_hdl::prelude::*;
+
+use super::fcc_rep_extract::FccRepExtract;
+use super::fcc_rep_front::FccRepFront;
+use super::fcc_rep_match::FccRepMatch;
+use super::fcc_rep_min::FccRepMin;
+use super::fcc_rep_overlap::FccRepOverlap;
+use super::fcc_rep_row_feed::FccRepRowFeed;
+use super::fcc_rep_shift::FccRepShift;
+use super::fcc_rep_stage::FccRepStage;
+use super::fcc_row_reps::FccRowReps;
+use super::RunPix;
+use crate::types::{kb, vec_of};
+
+/// Stages of the minimum tree, A1 to B.
+pub const REP_STAGES: usize = 3;
+
+/// The tree's group size for `np` run slots: the least `gs` with
+/// `gs^3 >= np`.
+pub fn rep_group(np: usize) -> usize {
+    (2..).find(|g| g * g * g >= np).expect("some group size")
+}
+
+#[derive(LogicBlock)]
+pub struct FccRepJoins {
+    pub clk: Signal<In, Clock>,
+    pub rst: Signal<In, Bit>,
+    pub inp: Signal<In, RunPix>,
+    pub inp_hit: Vec<Signal<In, Bit>>,
+    pub inp_label: Vec<Signal<In, Bits<16>>>,
+    pub ready: Signal<Out, Bit>,
+    /// The frame's last row, `R - 1` (constant while a frame runs).
+    pub last_row: Signal<In, Bits<7>>,
+    pub out: Signal<Out, RunPix>,
+    pub j_valid: Signal<Out, Bit>,
+    pub j_a: Signal<Out, Bits<16>>,
+    pub j_b: Signal<Out, Bits<16>>,
+    pub miss: Signal<Out, Bit>,
+    feed: FccRepRowFeed,
+    window: FccRowReps,
+    front: FccRepFront,
+    matcher: FccRepMatch,
+    st1: FccRepStage,
+    st2: FccRepStage,
+    st3: FccRepStage,
+    min1: FccRepMin,
+    min2: FccRepMin,
+    min3: FccRepMin,
+    seen1: FccRepShift,
+    seen2: FccRepShift,
+    seen3: FccRepShift,
+    ov1: FccRepOverlap,
+    ov2: FccRepOverlap,
+    ov3: FccRepOverlap,
+    wshift: FccRepShift,
+    extract: FccRepExtract,
+    bcast: Signal<Local, Bit>,
+    m: Signal<Local, Bits<16>>,
+    zero3: Constant<Bits<3>>,
+    none: Constant<Bits<16>>,
+    /// Run slots of the pixel's rows, `K (h + 1)`.
+    _np: usize,
+    /// The first run slot of the window's centre rows, `S (h + 1)`.
+    _soff: usize,
+    /// Rows above the window, `S`.
+    _s: usize,
+    _k: usize,
+    _g1: usize,
+    _g2: usize,
+}
+
+impl FccRepJoins {
+    /// For frames of at most `rows` rows and filter size `k`.
+    pub fn new(rows: usize, k: usize) -> Self {
+        let h = (k - 1) / 2;
+        let n = h + 1;
+        let ne = k * h;
+        let np = k * n;
+        let s = REP_STAGES;
+        let gs = rep_group(np);
+        let g1 = np.div_ceil(gs);
+        let g2 = g1.div_ceil(gs);
+        let g3 = g2.div_ceil(gs);
+        assert_eq!(g3, 1, "three stages of {gs} take {np} slots");
+        let wp = (k + s) * n;
+        Self {
+            clk: Default::default(),
+            rst: Default::default(),
+            inp: Default::default(),
+            inp_hit: vec_of(ne),
+            inp_label: vec_of(ne),
+            ready: Default::default(),
+            last_row: Default::default(),
+            out: Default::default(),
+            j_valid: Default::default(),
+            j_a: Default::default(),
+            j_b: Default::default(),
+            miss: Default::default(),
+            feed: FccRepRowFeed::new(rows, k, s),
+            window: FccRowReps::new(k, s),
+            front: FccRepFront::new(ne, np, g1 * gs),
+            matcher: FccRepMatch::new(k),
+            st1: FccRepStage::new(np),
+            st2: FccRepStage::new(np),
+            st3: FccRepStage::new(np),
+            min1: FccRepMin::new(g1, gs),
+            min2: FccRepMin::new(g2, gs),
+            min3: FccRepMin::new(g3, gs),
+            seen1: FccRepShift::new(n, k, k, 0, s),
+            seen2: FccRepShift::new(n, k, k, 0, s),
+            seen3: FccRepShift::new(n, k, k, 0, s),
+            ov1: FccRepOverlap::new(np, gs),
+            ov2: FccRepOverlap::new(np, gs * gs),
+            ov3: FccRepOverlap::new(np, gs * gs * gs),
+            wshift: FccRepShift::new(n, k, k + s, s, s),
+            extract: FccRepExtract::new(wp),
+            bcast: Default::default(),
+            m: Default::default(),
+            zero3: kb(0),
+            none: kb(0xFFFF),
+            _np: np,
+            _soff: s * n,
+            _s: s,
+            _k: k,
+            _g1: g1,
+            _g2: g2,
+        }
+    }
+}
+
+impl Logic for FccRepJoins {
+    #[hdl_gen]
+    fn update(&mut self) {
+        // The table feeds the window's rows and takes back the one leaving.
+        self.feed.clk.next = self.clk.val();
+        self.feed.rst.next = self.rst.val();
+        self.feed.last_row.next = self.last_row.val();
+        self.feed.pop.next = self.front.shift.val();
+        self.feed.wb_ptr.next = self.window.wb_ptr.val();
+        for k in 0..self.feed.wb_label.len() {
+            self.feed.wb_label[k].next = self.window.wb_label[k].val();
+            self.feed.wb_rep[k].next = self.window.wb_rep[k].val();
+            self.window.load_label[k].next = self.feed.head_label[k].val();
+            self.window.load_rep[k].next = self.feed.head_rep[k].val();
+        }
+        self.window.clk.next = self.clk.val();
+        self.window.rst.next = self.rst.val();
+        self.window.shift.next = self.front.shift.val();
+        self.window.load_ptr.next = self.feed.head_ptr.val();
+        self.window.push.next = self.front.push.val();
+        self.window.push_label.next = self.inp.val().label;
+        // A1: the pixel, its mask, the representatives it names.
+        self.front.clk.next = self.clk.val();
+        self.front.rst.next = self.rst.val();
+        self.front.inp.next = self.inp.val();
+        self.front.busy.next = self.extract.busy.val();
+        self.front.head_ok.next = self.feed.head_ok.val();
+        self.front.match_miss.next = self.matcher.miss.val();
+        for e in 0..self.inp_hit.len() {
+            self.front.inp_hit[e].next = self.inp_hit[e].val();
+            self.front.inp_label[e].next = self.inp_label[e].val();
+            self.matcher.ent_hit[e].next = self.front.a1_hit[e].val();
+            self.matcher.ent_label[e].next = self.front.a1_label[e].val();
+        }
+        self.matcher.lok.next = self.front.a1_pix.val().lok;
+        self.matcher.own_label.next = self.front.a1_pix.val().label;
+        for s in self._s..(self._s + 1) {
+            for w in 0..self._k {
+                self.matcher.ptr[w].next = self.window.ptr[s + w].val();
+            }
+        }
+        for soff in self._soff..(self._soff + 1) {
+            for j in 0..self._np {
+                self.matcher.label[j].next = self.window.label[soff + j].val();
+                self.front.rep[j].next = self.window.rep[soff + j].val();
+                self.front.mask[j].next = self.matcher.mask[j].val();
+            }
+        }
+        // The broadcast: B's mask and `m`, as B moves on.
+        self.m.next = self.min3.out[0].val();
+        self.bcast.next = self.front.adv.val() & self.st3.pix.val().valid & self.st3.pix.val().lok;
+        self.wshift.a.next = self.st3.sh.val();
+        self.wshift.b.next = self.zero3.val();
+        self.window.rw_valid.next = self.bcast.val();
+        self.window.rw_rep.next = self.m.val();
+        for b in 0..self.window.rw_mask.len() {
+            self.window.rw_mask[b].next = self.wshift.out[b].val();
+        }
+        // M1 .. M3: the pixels, the tree, the corrections.
+        self.st1.in_pix.next = self.front.a1_pix.val();
+        self.st1.in_sh.next = self.zero3.val();
+        self.st2.in_pix.next = self.st1.pix.val();
+        self.st2.in_sh.next = self.st1.sh.val();
+        self.st3.in_pix.next = self.st2.pix.val();
+        self.st3.in_sh.next = self.st2.sh.val();
+        self.seen1.b.next = self.zero3.val();
+        self.seen2.b.next = self.st1.sh.val();
+        self.seen3.b.next = self.st2.sh.val();
+        for j in 0..self._np {
+            self.wshift.inp[j].next = self.st3.mask[j].val();
+            self.seen1.inp[j].next = self.st3.mask[j].val();
+            self.seen2.inp[j].next = self.st3.mask[j].val();
+            self.seen3.inp[j].next = self.st3.mask[j].val();
+            self.st1.in_mask[j].next = self.matcher.mask[j].val();
+            self.st2.in_mask[j].next = self.st1.mask[j].val();
+            self.st3.in_mask[j].next = self.st2.mask[j].val();
+            self.ov1.mask[j].next = self.matcher.mask[j].val();
+            self.ov2.mask[j].next = self.st1.mask[j].val();
+            self.ov3.mask[j].next = self.st2.mask[j].val();
+            self.ov1.seen[j].next = self.seen1.out[j].val();
+            self.ov2.seen[j].next = self.seen2.out[j].val();
+            self.ov3.seen[j].next = self.seen3.out[j].val();
+        }
+        self.seen1.a.next = self.st3.sh.val();
+        self.seen2.a.next = self.st3.sh.val();
+        self.seen3.a.next = self.st3.sh.val();
+        self.ov1.valid.next = self.bcast.val();
+        self.ov2.valid.next = self.bcast.val();
+        self.ov3.valid.next = self.bcast.val();
+        self.st1.clk.next = self.clk.val();
+        self.st2.clk.next = self.clk.val();
+        self.st3.clk.next = self.clk.val();
+        self.st1.rst.next = self.rst.val();
+        self.st2.rst.next = self.rst.val();
+        self.st3.rst.next = self.rst.val();
+        self.st1.adv.next = self.front.adv.val();
+        self.st2.adv.next = self.front.adv.val();
+        self.st3.adv.next = self.front.adv.val();
+        self.st1.shift.next = self.front.shift.val();
+        self.st2.shift.next = self.front.shift.val();
+        self.st3.shift.next = self.front.shift.val();
+        self.min1.clk.next = self.clk.val();
+        self.min2.clk.next = self.clk.val();
+        self.min3.clk.next = self.clk.val();
+        self.min1.hold.next = self.extract.busy.val();
+        self.min2.hold.next = self.extract.busy.val();
+        self.min3.hold.next = self.extract.busy.val();
+        self.min1.m.next = self.m.val();
+        self.min2.m.next = self.m.val();
+        self.min3.m.next = self.m.val();
+        for g in 0..self.min1.ov.len() {
+            self.min1.ov[g].next = self.ov1.ov[g].val();
+        }
+        for g in 0..self.min2.ov.len() {
+            self.min2.ov[g].next = self.ov2.ov[g].val();
+        }
+        for g in 0..self.min3.ov.len() {
+            self.min3.ov[g].next = self.ov3.ov[g].val();
+        }
+        for i in 0..self.min1.v.len() {
+            self.min1.v[i].next = self.front.v[i].val();
+        }
+        for i in 0..self.min2.v.len() {
+            self.min2.v[i].next = self.none.val();
+        }
+        for i in 0..self._g1 {
+            self.min2.v[i].next = self.min1.out[i].val();
+        }
+        for i in 0..self.min3.v.len() {
+            self.min3.v[i].next = self.none.val();
+        }
+        for i in 0..self._g2 {
+            self.min3.v[i].next = self.min2.out[i].val();
+        }
+        // B: the joins, one a cycle, then the pixel.
+        self.extract.clk.next = self.clk.val();
+        self.extract.rst.next = self.rst.val();
+        self.extract.b_pix.next = self.st3.pix.val();
+        self.extract.b_m.next = self.m.val();
+        for b in 0..self.window.rep.len() {
+            self.extract.b_mask[b].next = self.wshift.out[b].val();
+            self.extract.b_val[b].next = self.window.rep[b].val();
+        }
+        self.ready.next = self.front.ready.val();
+        self.out.next = self.extract.out.val();
+        self.j_valid.next = self.extract.j_valid.val();
+        self.j_a.next = self.extract.j_a.val();
+        self.j_b.next = self.extract.j_b.val();
+        self.miss.next = self.front.miss.val();
+    }
+}

@@ -1,0 +1,171 @@
+//! `FccRepJoinsProbe`: `FccRepJoins` for frames of the build's rows and K
+//! behind scalar ports, for its own bench. A pixel goes in field by field
+//! with its window's hits as a mask (`hits`, entry `e` in bit `e`) and the
+//! entries' labels four to a word (`lw0` .. `lw13`, entry `4w + m` in bits
+//! `16m + 15 .. 16m` of word `w`, as `FccRepJoinsProbe` takes them); the
+//! pixel and the join come out field by field (`o_*`, `j_*`).
+
+use fcc_params::FccParams;
+use rust_hdl::prelude::*;
+
+use super::fcc_rep_joins::FccRepJoins;
+use super::fcc_row_roots_probe::LABEL_WORDS;
+use super::RunPix;
+use crate::types::vec_of;
+
+#[derive(LogicBlock)]
+pub struct FccRepJoinsProbe {
+    pub clk: Signal<In, Clock>,
+    pub rst: Signal<In, Bit>,
+    pub valid: Signal<In, Bit>,
+    pub ok: Signal<In, Bit>,
+    pub lok: Signal<In, Bit>,
+    pub row: Signal<In, Bits<7>>,
+    pub col: Signal<In, Bits<12>>,
+    pub label: Signal<In, Bits<16>>,
+    pub start: Signal<In, Bit>,
+    pub ring: Signal<In, Bit>,
+    pub ring_a: Signal<In, Bits<16>>,
+    pub ring_b: Signal<In, Bits<16>>,
+    pub hits: Signal<In, Bits<64>>,
+    pub lw0: Signal<In, Bits<64>>,
+    pub lw1: Signal<In, Bits<64>>,
+    pub lw2: Signal<In, Bits<64>>,
+    pub lw3: Signal<In, Bits<64>>,
+    pub lw4: Signal<In, Bits<64>>,
+    pub lw5: Signal<In, Bits<64>>,
+    pub lw6: Signal<In, Bits<64>>,
+    pub lw7: Signal<In, Bits<64>>,
+    pub lw8: Signal<In, Bits<64>>,
+    pub lw9: Signal<In, Bits<64>>,
+    pub lw10: Signal<In, Bits<64>>,
+    pub lw11: Signal<In, Bits<64>>,
+    pub lw12: Signal<In, Bits<64>>,
+    pub lw13: Signal<In, Bits<64>>,
+    pub last_row: Signal<In, Bits<7>>,
+    pub ready: Signal<Out, Bit>,
+    pub o_valid: Signal<Out, Bit>,
+    pub o_lok: Signal<Out, Bit>,
+    pub o_row: Signal<Out, Bits<7>>,
+    pub o_col: Signal<Out, Bits<12>>,
+    pub o_label: Signal<Out, Bits<16>>,
+    pub j_valid: Signal<Out, Bit>,
+    pub j_a: Signal<Out, Bits<16>>,
+    pub j_b: Signal<Out, Bits<16>>,
+    pub miss: Signal<Out, Bit>,
+    joins: FccRepJoins,
+    pix: Signal<Local, RunPix>,
+    pix_zero: Constant<RunPix>,
+    words: Vec<Signal<Local, Bits<64>>>,
+    _ne: usize,
+}
+
+impl FccRepJoinsProbe {
+    pub fn new(p: &FccParams) -> Self {
+        let ne = p.window_positions();
+        assert!(ne <= 4 * LABEL_WORDS, "{ne} window entries do not fit");
+        Self {
+            clk: Default::default(),
+            rst: Default::default(),
+            valid: Default::default(),
+            ok: Default::default(),
+            lok: Default::default(),
+            row: Default::default(),
+            col: Default::default(),
+            label: Default::default(),
+            start: Default::default(),
+            ring: Default::default(),
+            ring_a: Default::default(),
+            ring_b: Default::default(),
+            hits: Default::default(),
+            lw0: Default::default(),
+            lw1: Default::default(),
+            lw2: Default::default(),
+            lw3: Default::default(),
+            lw4: Default::default(),
+            lw5: Default::default(),
+            lw6: Default::default(),
+            lw7: Default::default(),
+            lw8: Default::default(),
+            lw9: Default::default(),
+            lw10: Default::default(),
+            lw11: Default::default(),
+            lw12: Default::default(),
+            lw13: Default::default(),
+            last_row: Default::default(),
+            ready: Default::default(),
+            o_valid: Default::default(),
+            o_lok: Default::default(),
+            o_row: Default::default(),
+            o_col: Default::default(),
+            o_label: Default::default(),
+            j_valid: Default::default(),
+            j_a: Default::default(),
+            j_b: Default::default(),
+            miss: Default::default(),
+            joins: FccRepJoins::new(p.rows, p.fsize),
+            pix: Default::default(),
+            pix_zero: Constant::new(RunPix::default()),
+            words: vec_of(LABEL_WORDS),
+            _ne: ne,
+        }
+    }
+}
+
+impl Logic for FccRepJoinsProbe {
+    #[hdl_gen]
+    fn update(&mut self) {
+        self.pix.next = self.pix_zero.val();
+        self.pix.next.valid = self.valid.val();
+        self.pix.next.ok = self.ok.val();
+        self.pix.next.lok = self.lok.val();
+        self.pix.next.row = self.row.val();
+        self.pix.next.col = self.col.val();
+        self.pix.next.label = self.label.val();
+        self.pix.next.start = self.start.val();
+        self.pix.next.ring = self.ring.val();
+        self.pix.next.ring_a = self.ring_a.val();
+        self.pix.next.ring_b = self.ring_b.val();
+        self.words[0].next = self.lw0.val();
+        self.words[1].next = self.lw1.val();
+        self.words[2].next = self.lw2.val();
+        self.words[3].next = self.lw3.val();
+        self.words[4].next = self.lw4.val();
+        self.words[5].next = self.lw5.val();
+        self.words[6].next = self.lw6.val();
+        self.words[7].next = self.lw7.val();
+        self.words[8].next = self.lw8.val();
+        self.words[9].next = self.lw9.val();
+        self.words[10].next = self.lw10.val();
+        self.words[11].next = self.lw11.val();
+        self.words[12].next = self.lw12.val();
+        self.words[13].next = self.lw13.val();
+        self.joins.clk.next = self.clk.val();
+        self.joins.rst.next = self.rst.val();
+        self.joins.inp.next = self.pix.val();
+        self.joins.last_row.next = self.last_row.val();
+        for e in 0..self._ne {
+            self.joins.inp_hit[e].next = self.hits.val().get_bit(e);
+        }
+        for w in 0..(self._ne / 4) {
+            for m in 0..4 {
+                self.joins.inp_label[w * 4 + m].next = self.words[w].val().get_bits::<16>(m * 16);
+            }
+        }
+        for w in (self._ne / 4)..(self._ne / 4 + 1) {
+            for m in 0..(self._ne % 4) {
+                self.joins.inp_label[w * 4 + m].next = self.words[w].val().get_bits::<16>(m * 16);
+            }
+        }
+        self.ready.next = self.joins.ready.val();
+        self.o_valid.next = self.joins.out.val().valid;
+        self.o_lok.next = self.joins.out.val().lok;
+        self.o_row.next = self.joins.out.val().row;
+        self.o_col.next = self.joins.out.val().col;
+        self.o_label.next = self.joins.out.val().label;
+        self.j_valid.next = self.joins.j_valid.val();
+        self.j_a.next = self.joins.j_a.val();
+        self.j_b.next = self.joins.j_b.val();
+        self.miss.next = self.joins.miss.val();
+    }
+}
