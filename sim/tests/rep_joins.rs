@@ -1,0 +1,538 @@
+//! The column core's representative rows `fcc_rep_joins` alone under
+//! Verilator: pixels in column order with their runs' labels, ring checks
+//! and pass-2 hits (worked out from the golden stream's runs and spec §3,
+//! §4 and §9.2, as the other column benches do), against a model of the
+//! joins it must send. The bench gives labels out as runs start and takes
+//! them back when the golden stream closes their cluster (reused last
+//! freed first). Checked:
+//!
+//! * every pixel in input order, and the joins before it, one for one,
+//!   against the model of docs/column-core.md, item 3: a run's
+//!   representative is a label of its cluster; a pixel's smallest named
+//!   representative `m` becomes every named run's, every other distinct
+//!   value is a join `(x, m)`, and the next pixel sees the rewrite; at the
+//!   last column a ring check's pair is one more join;
+//! * the clusters: a union-find over the labels, fed only by the joins,
+//!   makes each cluster the golden stream closes one set, holding no label
+//!   of another cluster;
+//! * no label named is ever missing from its row (`miss`).
+//!
+//! Seeded random frames (fixed and range-adaptive thresholds, bridge and
+//! ring-reach limits, the smallest frame the block takes at the build's K),
+//! bubbles, columns back to back, frames back to back, a reset mid-frame.
+//! A mismatch prints the frame, pixel, expected, got and the seed.
+
+use std::collections::{HashMap, VecDeque};
+
+mod column;
+
+use column::{build, pixels, random_frame, run_params, Pix};
+use fcc_golden::{Frame, Stream};
+use fcc_params::FccParams;
+use fcc_rtl::BenchBlock;
+use fcc_sim::{c_struct, load_plain, PlainDut};
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+
+c_struct! {
+    /// Inputs of one cycle, named as the ports.
+    pub struct RjIn {
+        pub rst: u8,
+        pub valid: u8,
+        pub ok: u8,
+        pub lok: u8,
+        pub row: u8,
+        pub col: u16,
+        pub label: u16,
+        pub start: u8,
+        pub ring: u8,
+        pub ring_a: u16,
+        pub ring_b: u16,
+        pub hits: u64,
+        pub lw0: u64,
+        pub lw1: u64,
+        pub lw2: u64,
+        pub lw3: u64,
+        pub lw4: u64,
+        pub lw5: u64,
+        pub lw6: u64,
+        pub lw7: u64,
+        pub lw8: u64,
+        pub lw9: u64,
+        pub lw10: u64,
+        pub lw11: u64,
+        pub lw12: u64,
+        pub lw13: u64,
+        pub last_row: u8,
+    }
+}
+
+c_struct! {
+    /// Outputs during one cycle.
+    pub struct RjOut {
+        pub ready: u8,
+        pub o_valid: u8,
+        pub o_lok: u8,
+        pub o_row: u8,
+        pub o_col: u16,
+        pub o_label: u16,
+        pub j_valid: u8,
+        pub j_a: u16,
+        pub j_b: u16,
+        pub miss: u8,
+    }
+}
+
+/// A union-find over labels, fed by the block's joins.
+#[derive(Default)]
+struct Uf(HashMap<u16, u16>);
+
+impl Uf {
+    fn find(&mut self, x: u16) -> u16 {
+        let p = *self.0.entry(x).or_insert(x);
+        if p == x {
+            return x;
+        }
+        let r = self.find(p);
+        self.0.insert(x, r);
+        r
+    }
+    fn union(&mut self, a: u16, b: u16) {
+        let (a, b) = (self.find(a), self.find(b));
+        if a != b {
+            self.0.insert(a, b);
+        }
+    }
+}
+
+/// How a frame is fed.
+#[derive(Debug, Clone, Copy)]
+struct Feed {
+    /// Probability of a bubble before each pixel.
+    bubbles: f64,
+    /// Wait for every pixel of a column, check the clusters the golden
+    /// stream closes at it and free their labels before the next column;
+    /// otherwise columns go back to back and clusters close at the end.
+    drain: bool,
+}
+
+/// A pixel fed, with the joins the model expects before it.
+struct Fed {
+    px: Pix,
+    label: u16,
+    joins: Vec<(u16, u16)>,
+}
+
+struct Bench {
+    dut: PlainDut<RjIn, RjOut>,
+    k: usize,
+    /// Labels: free (reused last freed first) and per open run.
+    free_labels: Vec<u16>,
+    label_of: HashMap<u32, u16>,
+    /// The model: each open run's representative.
+    rep: HashMap<u32, u16>,
+    /// Pixels fed, waiting to come out; the joins out since the last.
+    pending: VecDeque<Fed>,
+    got: Vec<(u16, u16)>,
+    uf: Uf,
+    joins: u64,
+    stalls: u64,
+    /// Cycles the input has been held in a row.
+    held: u32,
+    seed: u64,
+    what: String,
+}
+
+impl Bench {
+    /// The block built for `build`, reset for frames of `p`'s rows.
+    fn new(build: &FccParams, p: &FccParams, seed: u64, what: &str) -> Bench {
+        let model =
+            load_plain::<RjIn, RjOut>(BenchBlock::RepJoins, build).expect("rep joins model");
+        // The block starts from a reset, with the frame's last row (its
+        // table's counters count rows from there).
+        let mut b = Bench {
+            dut: PlainDut::new(model),
+            k: build.fsize,
+            free_labels: (1..=8191u16).rev().collect(),
+            label_of: HashMap::new(),
+            rep: HashMap::new(),
+            pending: VecDeque::new(),
+            got: Vec::new(),
+            uf: Uf::default(),
+            joins: 0,
+            stalls: 0,
+            held: 0,
+            seed,
+            what: what.to_string(),
+        };
+        b.reset(p);
+        b
+    }
+
+    /// The input of a pixel (its run's label given out at its start), and
+    /// the model's joins for it.
+    fn input(&mut self, p: &FccParams, px: &Pix) -> (RjIn, Fed) {
+        if px.start {
+            let l = self.free_labels.pop().expect("labels left");
+            self.label_of.insert(px.run, l);
+            self.rep.insert(px.run, l);
+        }
+        let lab = |b: &Bench, run: u32| if run == 0 { 0 } else { b.label_of[&run] };
+        let mut i = RjIn {
+            valid: 1,
+            ok: px.ok as u8,
+            lok: (px.run != 0) as u8,
+            row: px.row as u8,
+            col: px.col as u16,
+            label: lab(self, px.run),
+            start: px.start as u8,
+            last_row: (p.rows - 1) as u8,
+            ..RjIn::default()
+        };
+        let mut words = [0u64; 14];
+        for &(e, run) in &px.hits {
+            i.hits |= 1 << e;
+            words[e / 4] |= (lab(self, run) as u64) << (16 * (e % 4));
+        }
+        [
+            i.lw0, i.lw1, i.lw2, i.lw3, i.lw4, i.lw5, i.lw6, i.lw7, i.lw8, i.lw9, i.lw10, i.lw11,
+            i.lw12, i.lw13,
+        ] = words;
+        let mut joins = Vec::new();
+        if px.run != 0 {
+            let mut named = vec![px.run];
+            for &(_, r) in &px.hits {
+                if !named.contains(&r) {
+                    named.push(r);
+                }
+            }
+            let m = named.iter().map(|r| self.rep[r]).min().expect("own run");
+            for r in &named {
+                let x = self.rep[r];
+                if x != m && !joins.contains(&(x, m)) {
+                    joins.push((x, m));
+                }
+                self.rep.insert(*r, m);
+            }
+        }
+        if let Some((a, b)) = px.ring {
+            (i.ring, i.ring_a, i.ring_b) = (1, lab(self, a), lab(self, b));
+            joins.push((i.ring_a, i.ring_b));
+        }
+        joins.sort_unstable();
+        let fed = Fed {
+            px: px.clone(),
+            label: i.label,
+            joins,
+        };
+        (i, fed)
+    }
+
+    /// One cycle; returns whether the input was taken.
+    fn cycle(&mut self, p: &FccParams, mut i: RjIn, fed: Option<&Fed>) -> bool {
+        i.last_row = (p.rows - 1) as u8;
+        let o = self.dut.step(&i);
+        assert_eq!(
+            o.miss, 0,
+            "{}: a label named is not in its row (seed {})",
+            self.what, self.seed
+        );
+        if o.j_valid != 0 {
+            self.got.push((o.j_a, o.j_b));
+            self.uf.union(o.j_a, o.j_b);
+            self.joins += 1;
+        }
+        self.event(&o);
+        let taken = i.valid != 0 && o.ready != 0;
+        if o.ready == 0 {
+            self.stalls += 1;
+            self.held += 1;
+            assert!(
+                self.held < 64,
+                "{}: the input held for 64 cycles (seed {})",
+                self.what,
+                self.seed
+            );
+        } else {
+            self.held = 0;
+        }
+        if taken {
+            let f = fed.expect("a pixel");
+            self.pending.push_back(Fed {
+                px: f.px.clone(),
+                label: f.label,
+                joins: f.joins.clone(),
+            });
+        }
+        taken
+    }
+
+    fn event(&mut self, o: &RjOut) {
+        if o.o_valid == 0 {
+            return;
+        }
+        let f = self
+            .pending
+            .pop_front()
+            .expect("a pixel out with no pixel fed");
+        let at = format!(
+            "{}: row {}, col {}, seed {}",
+            self.what, f.px.row, f.px.col, self.seed
+        );
+        assert_eq!(
+            (o.o_row as usize, o.o_col as usize, o.o_lok != 0, o.o_label),
+            (f.px.row, f.px.col, f.px.run != 0, f.label),
+            "{at}: (row, col, labelled, label) of the next pixel out"
+        );
+        let mut got = std::mem::take(&mut self.got);
+        got.sort_unstable();
+        assert_eq!(got, f.joins, "{at}: the joins before the pixel");
+    }
+
+    /// A reset: the block and the bench forget everything in flight, every
+    /// label is free again.
+    fn reset(&mut self, p: &FccParams) {
+        let i = RjIn {
+            rst: 1,
+            ..RjIn::default()
+        };
+        self.cycle(p, i, None);
+        self.pending.clear();
+        self.got.clear();
+        self.label_of.clear();
+        self.rep.clear();
+        self.uf = Uf::default();
+        self.free_labels = (1..=8191u16).rev().collect();
+    }
+
+    /// Bubbles until every pixel fed is out.
+    fn drain(&mut self, p: &FccParams) {
+        let mut n = 0;
+        while !self.pending.is_empty() || n < 3 {
+            n = if self.pending.is_empty() { n + 1 } else { 0 };
+            self.cycle(p, RjIn::default(), None);
+        }
+        assert!(
+            self.got.is_empty(),
+            "{}: joins after the last pixel",
+            self.what
+        );
+    }
+
+    /// Close the clusters with these pixels: each one set of the joins'
+    /// union-find holding no other open run's label; their labels freed.
+    fn close(&mut self, runs: &[u32], clusters: &[Vec<u32>], at: &str) {
+        let mut closing: Vec<Vec<u32>> = Vec::new();
+        for px in clusters {
+            let mut rs: Vec<u32> = px.iter().map(|&k| runs[k as usize]).collect();
+            rs.sort_unstable();
+            rs.dedup();
+            closing.push(rs);
+        }
+        for rs in &closing {
+            let root = self.uf.find(self.label_of[&rs[0]]);
+            for r in rs {
+                let l = self.label_of[r];
+                assert_eq!(
+                    self.uf.find(l),
+                    root,
+                    "{at}: runs {} and {r} are one cluster, but no joins link labels {} and {l}",
+                    rs[0],
+                    self.label_of[&rs[0]]
+                );
+            }
+            let members: Vec<u32> = self
+                .label_of
+                .iter()
+                .filter(|(r, _)| !rs.contains(r))
+                .map(|(r, _)| *r)
+                .collect();
+            for r in members {
+                let l = self.label_of[&r];
+                assert_ne!(
+                    self.uf.find(l),
+                    root,
+                    "{at}: run {r} (label {l}) is joined to a cluster it is not in"
+                );
+            }
+        }
+        for rs in &closing {
+            for r in rs {
+                let l = self.label_of.remove(r).expect("a label");
+                self.rep.remove(r);
+                self.uf.0.remove(&l);
+                self.free_labels.push(l);
+            }
+        }
+    }
+}
+
+/// Stream `f` through the bench and check it (see the file's comment).
+fn run_frame(b: &mut Bench, p: &FccParams, f: &Frame, feed: Feed, rng: &mut ChaCha8Rng) {
+    assert_eq!(p.fsize, b.k, "the run's K is the build's");
+    let (rows, cols) = (p.rows, p.cols);
+    let mut golden = Stream::new(p).unwrap();
+    let mut column = vec![None; rows];
+    let mut closed: Vec<Vec<Vec<u32>>> = Vec::new();
+    for c in 0..cols {
+        for (r, v) in column.iter_mut().enumerate() {
+            *v = f.get(r, c);
+        }
+        let recs = golden.push_column(&column).unwrap();
+        closed.push(
+            (0..recs.len())
+                .map(|k| golden.pixels_of(k).to_vec())
+                .collect(),
+        );
+    }
+    let recs = golden.finish().unwrap();
+    let at_end: Vec<Vec<u32>> = (0..recs.len())
+        .map(|k| golden.pixels_of(k).to_vec())
+        .collect();
+    let mut runs = Vec::new();
+    golden.runs_into(&mut runs).unwrap();
+    let pix = pixels(p, f, &runs);
+    let mut deferred: Vec<Vec<u32>> = Vec::new();
+    for c in 0..cols {
+        for px in &pix[c * rows..(c + 1) * rows] {
+            while rng.gen_bool(feed.bubbles) {
+                b.cycle(p, RjIn::default(), None);
+            }
+            let (i, fed) = b.input(p, px);
+            while !b.cycle(p, i, Some(&fed)) {}
+        }
+        if feed.drain {
+            b.drain(p);
+            let at = format!("{}: after column {c}, seed {}", b.what, b.seed);
+            b.close(&runs, &closed[c], &at);
+        } else {
+            deferred.extend(closed[c].iter().cloned());
+        }
+    }
+    b.drain(p);
+    let at = format!("{}: at the frame end, seed {}", b.what, b.seed);
+    deferred.extend(at_end);
+    b.close(&runs, &deferred, &at);
+    assert!(
+        b.label_of.is_empty(),
+        "{at}: runs left open after the frame"
+    );
+}
+
+/// The smallest frame height the block takes at K: `K + 3 + 4` rows (the
+/// window, the tree's three stages, the table's read-ahead).
+fn min_rows(k: usize) -> usize {
+    k + 7
+}
+
+#[test]
+fn joins_follow_the_model_and_the_golden_clusters() {
+    let build = build();
+    let k = build.fsize;
+    let cases: [(&str, FccParams); 5] = [
+        ("unlimited", run_params(16, 40)),
+        (
+            "bridge 2, ring reach 6",
+            FccParams {
+                bridge: Some(2),
+                ring_reach: Some(6),
+                ..run_params(20, 40)
+            },
+        ),
+        (
+            "adaptive",
+            FccParams {
+                th_h: 0.1,
+                th_h_slope: 0.05,
+                th_v_slope: 0.03,
+                ..run_params(24, 36)
+            },
+        ),
+        ("fewest rows", run_params(min_rows(k), 30)),
+        ("all rows of the build", run_params(build.rows, 24)),
+    ];
+    for (n, (what, p)) in cases.into_iter().enumerate() {
+        let seed = 0x5eed_3000 + n as u64;
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        let mut b = Bench::new(&build, &p, seed, what);
+        for (density, jump, bubbles, seam) in [
+            (0.8, 0.05, 0.0, false),
+            (0.4, 0.1, 0.2, true),
+            (0.9, 0.02, 0.0, true),
+        ] {
+            let f = random_frame(p.rows, p.cols, density, jump, seam, &mut rng);
+            let feed = Feed {
+                bubbles,
+                drain: true,
+            };
+            run_frame(&mut b, &p, &f, feed, &mut rng);
+        }
+        eprintln!("{what}: {} joins, {} stalls", b.joins, b.stalls);
+        assert!(b.joins > 0, "{what}: no join at all");
+    }
+}
+
+#[test]
+fn columns_and_frames_back_to_back_with_bubbles() {
+    let build = build();
+    let p = FccParams {
+        bridge: Some(4),
+        ..run_params(32, 32)
+    };
+    let seed = 0x5eed_3100;
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let mut b = Bench::new(&build, &p, seed, "back to back");
+    for (density, jump, bubbles, seam) in [
+        (0.85, 0.03, 0.0, true),
+        (0.6, 0.08, 0.3, false),
+        (0.95, 0.01, 0.05, true),
+    ] {
+        let f = random_frame(p.rows, p.cols, density, jump, seam, &mut rng);
+        let feed = Feed {
+            bubbles,
+            drain: false,
+        };
+        run_frame(&mut b, &p, &f, feed, &mut rng);
+    }
+    eprintln!("back to back: {} joins, {} stalls", b.joins, b.stalls);
+    assert!(
+        b.stalls > 0,
+        "no pixel sent two joins: the test is too easy"
+    );
+}
+
+/// A frame cut short by a reset, then whole frames: rows from before the
+/// reset never answer for the new frame's labels.
+#[test]
+fn a_reset_mid_frame_starts_afresh() {
+    let build = build();
+    let p = run_params(16, 40);
+    let seed = 0x5eed_3200;
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let mut b = Bench::new(&build, &p, seed, "reset mid-frame");
+    for cut in [5, 16 * 17 + 3, 16 * 39 + 15] {
+        let f = random_frame(p.rows, p.cols, 0.8, 0.05, true, &mut rng);
+        let mut runs = Vec::new();
+        let mut golden = Stream::new(&p).unwrap();
+        let mut column = vec![None; p.rows];
+        for c in 0..p.cols {
+            for (r, v) in column.iter_mut().enumerate() {
+                *v = f.get(r, c);
+            }
+            golden.push_column(&column).unwrap();
+        }
+        golden.finish().unwrap();
+        golden.runs_into(&mut runs).unwrap();
+        for px in pixels(&p, &f, &runs).iter().take(cut) {
+            let (i, fed) = b.input(&p, px);
+            while !b.cycle(&p, i, Some(&fed)) {}
+        }
+        b.reset(&p);
+        let f = random_frame(p.rows, p.cols, 0.8, 0.05, true, &mut rng);
+        let feed = Feed {
+            bubbles: 0.1,
+            drain: false,
+        };
+        run_frame(&mut b, &p, &f, feed, &mut rng);
+    }
+}
