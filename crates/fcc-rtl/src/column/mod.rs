@@ -8,9 +8,11 @@
 //! slot table (`FccRowRoots`: each row's runs' clusters as record slots,
 //! the merges between them; exact, but over the area budget, and to be
 //! replaced by representatives and a union-find over labels, see
-//! docs/column-core.md), and each row's current run's accumulator
-//! (`FccRunAcc`, flushed to its cluster once the run is over). The rest of
-//! the slot table and the top are to come.
+//! docs/column-core.md), each row's current run's accumulator
+//! (`FccRunAcc`, flushed to its cluster once the run is over), and the
+//! representative rows that replace the row roots (`FccRepJoins`: a label
+//! of each run's cluster, the joins between labels a union-find must
+//! make). The rest of the slot table and the top are to come.
 
 pub mod fcc_acc_merge;
 pub mod fcc_acc_pixel;
