@@ -55,9 +55,6 @@ pub enum BenchBlock {
     RecordOut,
     /// The column core's free labels `FccLabelPool`.
     LabelPool,
-    /// The column core's row roots `FccRowRoots` (table, window, lookups,
-    /// merge pick) behind the scalar ports of `FccRowRootsProbe`.
-    RowRoots,
     /// The column core's run accumulators `FccRunAcc` behind the scalar
     /// ports of `FccRunAccProbe`.
     RunAcc,
@@ -91,7 +88,7 @@ impl Row {
 
 impl BenchBlock {
     /// Every block with a bench.
-    pub const ALL: [BenchBlock; 21] = [
+    pub const ALL: [BenchBlock; 20] = [
         BenchBlock::Regs,
         BenchBlock::AxilAdapter,
         BenchBlock::MergeTable,
@@ -110,7 +107,6 @@ impl BenchBlock {
         BenchBlock::Acc,
         BenchBlock::RecordOut,
         BenchBlock::LabelPool,
-        BenchBlock::RowRoots,
         BenchBlock::RunAcc,
         BenchBlock::RepJoins,
     ];
@@ -247,17 +243,6 @@ impl BenchBlock {
                     "fcc_label_pool",
                 )
             }),
-            BenchBlock::RowRoots => Row {
-                name: "fcc_row_roots_probe",
-                generate: |p| {
-                    gen(
-                        p,
-                        crate::column::fcc_row_roots_probe::FccRowRootsProbe::new(p),
-                        "fcc_row_roots_probe",
-                    )
-                },
-                waivers: lint::row_roots_waivers,
-            },
             BenchBlock::RunAcc => Row {
                 name: "fcc_run_acc_probe",
                 generate: |p| {

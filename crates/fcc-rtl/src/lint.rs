@@ -153,28 +153,9 @@ pub fn block_waivers(p: &FccParams, name: &str) -> String {
     s
 }
 
-/// The waivers of the row roots' probe `name`: its hit mask and label
-/// words are sized for the largest window (K = 11), so a smaller K leaves
-/// their upper bits unread, and it brings out the pixel event's position,
-/// label and flags only (the rest of the slot passes through unchanged).
-pub fn row_roots_waivers(p: &FccParams, name: &str) -> String {
-    let mut s = block_waivers(p, name);
-    s.push_str(&format!(
-        "// Sized for K = 11: a smaller window leaves upper bits and words unread.\n\
-         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'hits'*\"\n\
-         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'words$*\"\n\
-         // The probe reads the event's position, label and flags only.\n\
-         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'roots$out'*\"\n\
-         // A stage's slots before the merge feed only the stages that flag\n\
-         // joins (B, D, R), and those only for the joins' slots.\n\
-         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'*$held$*\"\n"
-    ));
-    s
-}
-
 /// The waivers of the representative rows' probe `name`: its enum
 /// register's (as [`enum_block_waivers`]); its hit mask and label words are
-/// sized for K = 11 (as the row roots' probe); the probe reads the pixel's
+/// sized for K = 11; the probe reads the pixel's
 /// position and label only; the rows above the window are not read.
 pub fn rep_joins_waivers(p: &FccParams, name: &str) -> String {
     let mut s = enum_block_waivers(p, name);

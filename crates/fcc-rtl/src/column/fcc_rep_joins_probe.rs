@@ -9,9 +9,11 @@ use fcc_params::FccParams;
 use rust_hdl::prelude::*;
 
 use super::fcc_rep_joins::FccRepJoins;
-use super::fcc_row_roots_probe::LABEL_WORDS;
 use super::RunPix;
 use crate::types::vec_of;
+
+/// Label words: four entries each, for the largest window (K = 11: 55).
+pub const LABEL_WORDS: usize = 14;
 
 #[derive(LogicBlock)]
 pub struct FccRepJoinsProbe {

@@ -4,15 +4,12 @@
 //! (`FccRowRuns`, with the open limit in `FccOpenRoom`), the label pool
 //! (`FccLabelPool`), the pass-2 window (`FccColWindow`) and its distance
 //! tests (`FccColDist`), the record accumulator (`FccAccPixel`,
-//! `FccAccMerge`), the record output (`FccRecordOut`) and the front of the
-//! slot table (`FccRowRoots`: each row's runs' clusters as record slots,
-//! the merges between them; exact, but over the area budget, and to be
-//! replaced by representatives and a union-find over labels, see
-//! docs/column-core.md), each row's current run's accumulator
-//! (`FccRunAcc`, flushed to its cluster once the run is over), and the
-//! representative rows that replace the row roots (`FccRepJoins`: a label
-//! of each run's cluster, the joins between labels a union-find must
-//! make). The rest of the slot table and the top are to come.
+//! `FccAccMerge`), the record output (`FccRecordOut`), each row's current
+//! run's accumulator (`FccRunAcc`, flushed to its cluster once the run is
+//! over), and the front of the slot table, the representative rows
+//! (`FccRepJoins`: a label of each run's cluster, the joins between labels
+//! a union-find must make; see docs/column-core.md). The rest of the slot
+//! table and the top are to come.
 
 pub mod fcc_acc_merge;
 pub mod fcc_acc_pixel;
@@ -23,9 +20,6 @@ pub mod fcc_col_edge;
 pub mod fcc_col_window;
 pub mod fcc_col_window_probe;
 pub mod fcc_col_word_split;
-pub mod fcc_hold_bank;
-pub mod fcc_join_flags;
-pub mod fcc_join_pick;
 pub mod fcc_label_pool;
 pub mod fcc_open_room;
 pub mod fcc_rec_beats;
@@ -42,57 +36,19 @@ pub mod fcc_rep_pick;
 pub mod fcc_rep_row_feed;
 pub mod fcc_rep_shift;
 pub mod fcc_rep_stage;
-pub mod fcc_root_match;
-pub mod fcc_root_table;
-pub mod fcc_root_window;
 pub mod fcc_row_entry;
 pub mod fcc_row_reps;
-pub mod fcc_row_roots;
-pub mod fcc_row_roots_probe;
 pub mod fcc_row_runs;
 pub mod fcc_row_runs_probe;
 pub mod fcc_run_acc;
 pub mod fcc_run_acc_probe;
 pub mod fcc_run_decide;
-pub mod fcc_slot_bank;
 
 use rust_hdl::prelude::*;
-
-/// Bits of a record slot: the slot table's 512 records (docs/column-core.md;
-/// spec §9.1's open limit keeps the clusters open at most that many).
-pub const SLOT_BITS: usize = 9;
 
 /// Bits of a run slot's number in a representative row (`h + 1` slots,
 /// at most 6 at K = 11).
 pub const REP_PTR_BITS: usize = 3;
-
-/// Where each slot of a pixel sits in `FccRowRoots`' stage banks: the
-/// window entries' first, then the pixel's own run's and the ring check's
-/// pair (the `joins` slots the joins are read from), then the runs its row
-/// stops and starts holding (spec §9.2).
-#[derive(Debug, Clone, Copy)]
-pub struct SlotIndex {
-    pub own: usize,
-    pub drop: usize,
-    pub add: usize,
-    pub ring_a: usize,
-    pub ring_b: usize,
-    pub joins: usize,
-    pub count: usize,
-}
-
-/// The bank layout for `ne` window entries.
-pub fn slot_index(ne: usize) -> SlotIndex {
-    SlotIndex {
-        own: ne,
-        ring_a: ne + 1,
-        ring_b: ne + 2,
-        joins: ne + 3,
-        drop: ne + 3,
-        add: ne + 4,
-        count: ne + 5,
-    }
-}
 
 /// One pixel slot of the frame in column order.
 #[derive(Clone, Copy, Debug, PartialEq, Default, LogicStruct)]
