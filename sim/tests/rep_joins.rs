@@ -419,10 +419,10 @@ fn run_frame(b: &mut Bench, p: &FccParams, f: &Frame, feed: Feed, rng: &mut ChaC
     );
 }
 
-/// The smallest frame height the block takes at K: `K + 3 + 4` rows (the
-/// window, the tree's three stages, the table's read-ahead).
+/// The smallest frame height the block takes at K: `K + 4 + 4` rows (the
+/// window, the four rows above it, the table's read-ahead).
 fn min_rows(k: usize) -> usize {
-    k + 7
+    k + 8
 }
 
 #[test]

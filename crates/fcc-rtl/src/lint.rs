@@ -166,9 +166,10 @@ pub fn rep_joins_waivers(p: &FccParams, name: &str) -> String {
          // The probe reads the pixel's position, label and flags only.\n\
          lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'joins$out'*\"\n\
          // The rows above the window only take rewrites on their way out\n\
-         // (`wb_*`): their labels and newest slots are not read there.\n\
+         // (`wb_*`): their labels, ages and rewritten values are not read.\n\
          lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'window$label$*\"\n\
-         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'window$ptr$*\"\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'window$age$*\"\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'window$rep_next$*\"\n\
          // R picks only while a flag is known set.\n\
          lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'pick_r$any'*\"\n"
     ));

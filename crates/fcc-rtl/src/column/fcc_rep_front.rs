@@ -2,9 +2,10 @@
 //! item 3). A pixel is taken while nothing holds the pipeline and the
 //! table has the row that enters the window with it (`ready`); taking it
 //! shifts the window (`shift`) and pushes the run it starts (`push`). A1
-//! holds the pixel, its hits and their labels for `FccRepMatch`, and gives
-//! the minimum tree the representatives its mask names (`0xFFFF`, above
-//! any label, elsewhere and in the padding). `miss` is sticky until reset.
+//! holds the pixel, its hits and their labels for `FccRepMatch`; A2 the
+//! representatives of A1's rows as the window has them after this cycle's
+//! rewrite (`rep_next`), for the minimum tree (`v`, padded with `0xFFFF`;
+//! A2's mask says which are present). `miss` is sticky until reset.
 
 use rust_hdl::prelude::*;
 
@@ -20,10 +21,9 @@ pub struct FccRepFront {
     pub inp_label: Vec<Signal<In, Bits<16>>>,
     pub busy: Signal<In, Bit>,
     pub head_ok: Signal<In, Bit>,
-    /// A1's mask (`FccRepMatch`), the window's representatives at A1's
-    /// rows, and the match's `miss`.
-    pub mask: Vec<Signal<In, Bit>>,
-    pub rep: Vec<Signal<In, Bits<16>>>,
+    /// The window's representatives at A1's rows with this cycle's
+    /// rewrite, and A1's match's `miss`.
+    pub rep_next: Vec<Signal<In, Bits<16>>>,
     pub match_miss: Signal<In, Bit>,
     pub ready: Signal<Out, Bit>,
     pub adv: Signal<Out, Bit>,
@@ -37,6 +37,7 @@ pub struct FccRepFront {
     pix_q: DFF<RunPix>,
     hit_q: Vec<DFF<Bit>>,
     label_q: Vec<DFF<Bits<16>>>,
+    rep_q: Vec<DFF<Bits<16>>>,
     miss_q: DFF<Bit>,
     take: Signal<Local, Bit>,
     pix_zero: Constant<RunPix>,
@@ -55,8 +56,7 @@ impl FccRepFront {
             inp_label: vec_of(ne),
             busy: Default::default(),
             head_ok: Default::default(),
-            mask: vec_of(np),
-            rep: vec_of(np),
+            rep_next: vec_of(np),
             match_miss: Default::default(),
             ready: Default::default(),
             adv: Default::default(),
@@ -70,6 +70,7 @@ impl FccRepFront {
             pix_q: Default::default(),
             hit_q: vec_of(ne),
             label_q: vec_of(ne),
+            rep_q: vec_of(np),
             miss_q: Default::default(),
             take: Default::default(),
             pix_zero: Constant::new(RunPix::default()),
@@ -109,10 +110,13 @@ impl Logic for FccRepFront {
         for j in 0..self.v.len() {
             self.v[j].next = self.none.val();
         }
-        for j in 0..self.mask.len() {
-            if self.mask[j].val() {
-                self.v[j].next = self.rep[j].val();
+        for j in 0..self.rep_q.len() {
+            self.rep_q[j].clock.next = self.clk.val();
+            self.rep_q[j].d.next = self.rep_q[j].q.val();
+            if !self.busy.val() {
+                self.rep_q[j].d.next = self.rep_next[j].val();
             }
+            self.v[j].next = self.rep_q[j].q.val();
         }
         if self.pix_q.q.val().valid & self.match_miss.val() {
             self.miss_q.d.next = true;

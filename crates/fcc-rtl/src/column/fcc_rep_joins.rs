@@ -18,32 +18,41 @@
 //! join or more, from a flip-flop):
 //! * A1 (`FccRepFront`): the pixel taken; the window shifts (`FccRowReps`,
 //!   its rows from and back to the table, `FccRepRowFeed`), the run it
-//!   starts pushed; `FccRepMatch` makes its mask; the representatives
-//!   named are read.
+//!   starts pushed; `FccRepMatch` makes its mask.
+//! * A2 (`FccRepStage`, `FccRepFront`): the mask, and the representatives
+//!   of the pixel's rows as the window rewrites them at A1's edge.
 //! * M1 .. M3 (`FccRepStage`, `FccRepMin`): the minimum tree, three
 //!   stages of groups of `gs` (`gs^3 >= K (h + 1)`), each group corrected
 //!   by the rewrite broadcast that cycle where it names a slot of the
-//!   group (`FccRepShift` places the broadcast in the pixel's rows).
+//!   group (`FccRepShift` places the broadcast in the pixel's rows; the
+//!   overlaps are worked out a cycle ahead, `FccRepAhead`,
+//!   `FccRepSeenAhead`, so the comparisons take registers only).
 //! * B = M3: the pixel's `m`; the broadcast (its mask in the window's
 //!   positions, `m`) rewrites the window at the edge, and `FccRepExtract`
 //!   takes the window's values as they were.
 
 use rust_hdl::prelude::*;
 
+use super::fcc_rep_ahead::FccRepAhead;
 use super::fcc_rep_extract::FccRepExtract;
 use super::fcc_rep_front::FccRepFront;
 use super::fcc_rep_match::FccRepMatch;
 use super::fcc_rep_min::FccRepMin;
 use super::fcc_rep_overlap::FccRepOverlap;
 use super::fcc_rep_row_feed::FccRepRowFeed;
+use super::fcc_rep_seen_ahead::FccRepSeenAhead;
 use super::fcc_rep_shift::FccRepShift;
 use super::fcc_rep_stage::FccRepStage;
 use super::fcc_row_reps::FccRowReps;
 use super::RunPix;
 use crate::types::{kb, vec_of};
 
-/// Stages of the minimum tree, A1 to B.
+/// Stages of the minimum tree, M1 to B.
 pub const REP_STAGES: usize = 3;
+
+/// The window's shifts a pixel sees between its A1 and its broadcast at B
+/// (A2 and the tree's stages): the rows kept above the window.
+pub const REP_DEPTH: usize = REP_STAGES + 1;
 
 /// The tree's group size for `np` run slots: the least `gs` with
 /// `gs^3 >= np`.
@@ -70,22 +79,24 @@ pub struct FccRepJoins {
     window: FccRowReps,
     front: FccRepFront,
     matcher: FccRepMatch,
+    st0: FccRepStage,
     st1: FccRepStage,
     st2: FccRepStage,
     st3: FccRepStage,
     min1: FccRepMin,
     min2: FccRepMin,
     min3: FccRepMin,
-    seen1: FccRepShift,
-    seen2: FccRepShift,
-    seen3: FccRepShift,
+    seen1: FccRepSeenAhead,
     ov1: FccRepOverlap,
-    ov2: FccRepOverlap,
-    ov3: FccRepOverlap,
+    ahead2: FccRepAhead,
+    ahead3: FccRepAhead,
     wshift: FccRepShift,
     extract: FccRepExtract,
     bcast: Signal<Local, Bit>,
     m: Signal<Local, Bits<16>>,
+    /// M2's pixel is labelled: the next broadcast is real.
+    next_b: Signal<Local, Bit>,
+    one: Constant<Bit>,
     zero3: Constant<Bits<3>>,
     none: Constant<Bits<16>>,
     /// Run slots of the pixel's rows, `K (h + 1)`.
@@ -106,7 +117,7 @@ impl FccRepJoins {
         let n = h + 1;
         let ne = k * h;
         let np = k * n;
-        let s = REP_STAGES;
+        let s = REP_DEPTH;
         let gs = rep_group(np);
         let g1 = np.div_ceil(gs);
         let g2 = g1.div_ceil(gs);
@@ -130,22 +141,23 @@ impl FccRepJoins {
             window: FccRowReps::new(k, s),
             front: FccRepFront::new(ne, np, g1 * gs),
             matcher: FccRepMatch::new(k),
+            st0: FccRepStage::new(np),
             st1: FccRepStage::new(np),
             st2: FccRepStage::new(np),
             st3: FccRepStage::new(np),
             min1: FccRepMin::new(g1, gs),
             min2: FccRepMin::new(g2, gs),
             min3: FccRepMin::new(g3, gs),
-            seen1: FccRepShift::new(n, k, k, 0, s),
-            seen2: FccRepShift::new(n, k, k, 0, s),
-            seen3: FccRepShift::new(n, k, k, 0, s),
+            seen1: FccRepSeenAhead::new(n, k, s),
             ov1: FccRepOverlap::new(np, gs),
-            ov2: FccRepOverlap::new(np, gs * gs),
-            ov3: FccRepOverlap::new(np, gs * gs * gs),
+            ahead2: FccRepAhead::new(n, k, s, gs * gs),
+            ahead3: FccRepAhead::new(n, k, s, gs * gs * gs),
             wshift: FccRepShift::new(n, k, k + s, s, s),
             extract: FccRepExtract::new(wp),
             bcast: Default::default(),
             m: Default::default(),
+            next_b: Default::default(),
+            one: Constant::new(true),
             zero3: kb(0),
             none: kb(0xFFFF),
             _np: np,
@@ -166,17 +178,17 @@ impl Logic for FccRepJoins {
         self.feed.rst.next = self.rst.val();
         self.feed.last_row.next = self.last_row.val();
         self.feed.pop.next = self.front.shift.val();
-        self.feed.wb_ptr.next = self.window.wb_ptr.val();
         for k in 0..self.feed.wb_label.len() {
             self.feed.wb_label[k].next = self.window.wb_label[k].val();
             self.feed.wb_rep[k].next = self.window.wb_rep[k].val();
+            self.feed.wb_age[k].next = self.window.wb_age[k].val();
             self.window.load_label[k].next = self.feed.head_label[k].val();
             self.window.load_rep[k].next = self.feed.head_rep[k].val();
+            self.window.load_age[k].next = self.feed.head_age[k].val();
         }
         self.window.clk.next = self.clk.val();
         self.window.rst.next = self.rst.val();
         self.window.shift.next = self.front.shift.val();
-        self.window.load_ptr.next = self.feed.head_ptr.val();
         self.window.push.next = self.front.push.val();
         self.window.push_label.next = self.inp.val().label;
         // A1: the pixel, its mask, the representatives it names.
@@ -194,16 +206,11 @@ impl Logic for FccRepJoins {
         }
         self.matcher.lok.next = self.front.a1_pix.val().lok;
         self.matcher.own_label.next = self.front.a1_pix.val().label;
-        for s in self._s..(self._s + 1) {
-            for w in 0..self._k {
-                self.matcher.ptr[w].next = self.window.ptr[s + w].val();
-            }
-        }
         for soff in self._soff..(self._soff + 1) {
             for j in 0..self._np {
                 self.matcher.label[j].next = self.window.label[soff + j].val();
-                self.front.rep[j].next = self.window.rep[soff + j].val();
-                self.front.mask[j].next = self.matcher.mask[j].val();
+                self.matcher.age[j].next = self.window.age[soff + j].val();
+                self.front.rep_next[j].next = self.window.rep_next[soff + j].val();
             }
         }
         // The broadcast: B's mask and `m`, as B moves on.
@@ -216,46 +223,60 @@ impl Logic for FccRepJoins {
         for b in 0..self.window.rw_mask.len() {
             self.window.rw_mask[b].next = self.wshift.out[b].val();
         }
-        // M1 .. M3: the pixels, the tree, the corrections.
-        self.st1.in_pix.next = self.front.a1_pix.val();
-        self.st1.in_sh.next = self.zero3.val();
+        // A2, M1 .. M3: the pixels, the tree, the corrections.
+        self.st0.in_pix.next = self.front.a1_pix.val();
+        self.st0.in_sh.next = self.zero3.val();
+        self.st1.in_pix.next = self.st0.pix.val();
+        self.st1.in_sh.next = self.st0.sh.val();
         self.st2.in_pix.next = self.st1.pix.val();
         self.st2.in_sh.next = self.st1.sh.val();
         self.st3.in_pix.next = self.st2.pix.val();
         self.st3.in_sh.next = self.st2.sh.val();
-        self.seen1.b.next = self.zero3.val();
-        self.seen2.b.next = self.st1.sh.val();
-        self.seen3.b.next = self.st2.sh.val();
+        // The corrections, worked out a cycle ahead from M2's pixel (the
+        // next broadcaster) and each next receiver.
+        self.next_b.next = self.st2.pix.val().valid & self.st2.pix.val().lok;
+        self.seen1.clk.next = self.clk.val();
+        self.seen1.adv.next = self.front.adv.val();
+        self.seen1.b_valid.next = self.next_b.val();
+        self.seen1.b_sh.next = self.st2.sh.val();
+        self.ahead2.clk.next = self.clk.val();
+        self.ahead2.adv.next = self.front.adv.val();
+        self.ahead2.b_valid.next = self.next_b.val();
+        self.ahead2.b_sh.next = self.st2.sh.val();
+        self.ahead2.r_sh.next = self.st0.sh.val();
+        self.ahead3.clk.next = self.clk.val();
+        self.ahead3.adv.next = self.front.adv.val();
+        self.ahead3.b_valid.next = self.next_b.val();
+        self.ahead3.b_sh.next = self.st2.sh.val();
+        self.ahead3.r_sh.next = self.st1.sh.val();
+        self.ov1.valid.next = self.one.val();
         for j in 0..self._np {
             self.wshift.inp[j].next = self.st3.mask[j].val();
-            self.seen1.inp[j].next = self.st3.mask[j].val();
-            self.seen2.inp[j].next = self.st3.mask[j].val();
-            self.seen3.inp[j].next = self.st3.mask[j].val();
-            self.st1.in_mask[j].next = self.matcher.mask[j].val();
+            self.seen1.b_mask[j].next = self.st2.mask[j].val();
+            self.ahead2.b_mask[j].next = self.st2.mask[j].val();
+            self.ahead3.b_mask[j].next = self.st2.mask[j].val();
+            self.ahead2.r_mask[j].next = self.st0.mask[j].val();
+            self.ahead3.r_mask[j].next = self.st1.mask[j].val();
+            self.ov1.mask[j].next = self.st0.mask[j].val();
+            self.ov1.seen[j].next = self.seen1.seen[j].val();
+            self.st0.in_mask[j].next = self.matcher.mask[j].val();
+            self.st1.in_mask[j].next = self.st0.mask[j].val();
             self.st2.in_mask[j].next = self.st1.mask[j].val();
             self.st3.in_mask[j].next = self.st2.mask[j].val();
-            self.ov1.mask[j].next = self.matcher.mask[j].val();
-            self.ov2.mask[j].next = self.st1.mask[j].val();
-            self.ov3.mask[j].next = self.st2.mask[j].val();
-            self.ov1.seen[j].next = self.seen1.out[j].val();
-            self.ov2.seen[j].next = self.seen2.out[j].val();
-            self.ov3.seen[j].next = self.seen3.out[j].val();
         }
-        self.seen1.a.next = self.st3.sh.val();
-        self.seen2.a.next = self.st3.sh.val();
-        self.seen3.a.next = self.st3.sh.val();
-        self.ov1.valid.next = self.bcast.val();
-        self.ov2.valid.next = self.bcast.val();
-        self.ov3.valid.next = self.bcast.val();
+        self.st0.clk.next = self.clk.val();
         self.st1.clk.next = self.clk.val();
         self.st2.clk.next = self.clk.val();
         self.st3.clk.next = self.clk.val();
+        self.st0.rst.next = self.rst.val();
         self.st1.rst.next = self.rst.val();
         self.st2.rst.next = self.rst.val();
         self.st3.rst.next = self.rst.val();
+        self.st0.adv.next = self.front.adv.val();
         self.st1.adv.next = self.front.adv.val();
         self.st2.adv.next = self.front.adv.val();
         self.st3.adv.next = self.front.adv.val();
+        self.st0.shift.next = self.front.shift.val();
         self.st1.shift.next = self.front.shift.val();
         self.st2.shift.next = self.front.shift.val();
         self.st3.shift.next = self.front.shift.val();
@@ -272,25 +293,33 @@ impl Logic for FccRepJoins {
             self.min1.ov[g].next = self.ov1.ov[g].val();
         }
         for g in 0..self.min2.ov.len() {
-            self.min2.ov[g].next = self.ov2.ov[g].val();
+            self.min2.ov[g].next = self.ahead2.ov[g].val();
         }
         for g in 0..self.min3.ov.len() {
-            self.min3.ov[g].next = self.ov3.ov[g].val();
+            self.min3.ov[g].next = self.ahead3.ov[g].val();
         }
         for i in 0..self.min1.v.len() {
             self.min1.v[i].next = self.front.v[i].val();
+            self.min1.pres[i].next = false;
+        }
+        for j in 0..self._np {
+            self.min1.pres[j].next = self.st0.mask[j].val();
         }
         for i in 0..self.min2.v.len() {
             self.min2.v[i].next = self.none.val();
+            self.min2.pres[i].next = false;
         }
         for i in 0..self._g1 {
             self.min2.v[i].next = self.min1.out[i].val();
+            self.min2.pres[i].next = true;
         }
         for i in 0..self.min3.v.len() {
             self.min3.v[i].next = self.none.val();
+            self.min3.pres[i].next = false;
         }
         for i in 0..self._g2 {
             self.min3.v[i].next = self.min2.out[i].val();
+            self.min3.pres[i].next = true;
         }
         // B: the joins, one a cycle, then the pixel.
         self.extract.clk.next = self.clk.val();

@@ -6,7 +6,7 @@
 //! (a run it starts is pushed already).
 //!
 //! * In: the window rows (row `w` is `i - h + w`; run slot `k` of row `w` at
-//!   `w * (h + 1) + k`, `ptr[w]` its newest), and the entries of
+//!   `w * (h + 1) + k`, with its label and age), and the entries of
 //!   `FccColWindow`'s order (line `r`, position `p`: row `p` for `p < h`,
 //!   `p + 1` after, at `r (K - 1) + p`; then row `h - m` of the pixel's
 //!   column at `2 h^2 + m - 1`).
@@ -16,13 +16,13 @@
 
 use rust_hdl::prelude::*;
 
-use super::REP_PTR_BITS;
-use crate::types::{kb, vec_of};
+use super::REP_AGE_BITS;
+use crate::types::vec_of;
 
 #[derive(LogicBlock)]
 pub struct FccRepMatch {
     pub label: Vec<Signal<In, Bits<16>>>,
-    pub ptr: Vec<Signal<In, Bits<REP_PTR_BITS>>>,
+    pub age: Vec<Signal<In, Bits<REP_AGE_BITS>>>,
     pub lok: Signal<In, Bit>,
     pub own_label: Signal<In, Bits<16>>,
     pub ent_hit: Vec<Signal<In, Bit>>,
@@ -32,8 +32,6 @@ pub struct FccRepMatch {
     /// Row `w`'s run slot `k` is newer than its slot `k2`, at
     /// `(w * (h + 1) + k) * (h + 1) + k2`.
     newer: Vec<Signal<Local, Bit>>,
-    /// Run slot `k`'s age in row `w` (0: the newest).
-    age: Vec<Signal<Local, Bits<REP_PTR_BITS>>>,
     /// Entry `e`'s label equals run slot `k` of its row, at
     /// `e * (h + 1) + k`; then the newest such.
     eq: Vec<Signal<Local, Bit>>,
@@ -44,9 +42,6 @@ pub struct FccRepMatch {
     own_eq: Vec<Signal<Local, Bit>>,
     own_found: Vec<Signal<Local, Bit>>,
     own_any: Signal<Local, Bit>,
-    slot_no: Vec<Constant<Bits<REP_PTR_BITS>>>,
-    /// `h + 1 - k` for each run slot `k` (the age's wrap).
-    wrap: Vec<Constant<Bits<REP_PTR_BITS>>>,
     _k: usize,
     _h: usize,
     _n: usize,
@@ -62,7 +57,7 @@ impl FccRepMatch {
         let ne = k * h;
         Self {
             label: vec_of(k * n),
-            ptr: vec_of(k),
+            age: vec_of(k * n),
             lok: Default::default(),
             own_label: Default::default(),
             ent_hit: vec_of(ne),
@@ -70,15 +65,12 @@ impl FccRepMatch {
             mask: vec_of(k * n),
             miss: Default::default(),
             newer: vec_of(k * n * n),
-            age: vec_of(k * n),
             eq: vec_of(ne * n),
             found: vec_of(ne * n),
             any: vec_of(ne),
             own_eq: vec_of(n),
             own_found: vec_of(n),
             own_any: Default::default(),
-            slot_no: (0..n).map(|s| kb(s as u64)).collect(),
-            wrap: (0..n).map(|s| kb((n - s) as u64)).collect(),
             _k: k,
             _h: h,
             _n: n,
@@ -91,15 +83,8 @@ impl Logic for FccRepMatch {
     #[hdl_gen]
     fn update(&mut self) {
         for nn in self._n..(self._n + 1) {
-            // Ages, and which run slot is newer than which, per row.
+            // Which run slot is newer than which, per row.
             for w in 0..self._k {
-                self.age[w * nn].next = self.ptr[w].val();
-                for k in 1..self._n {
-                    self.age[w * nn + k].next = self.ptr[w].val() - self.slot_no[k].val();
-                    if self.ptr[w].val() < self.slot_no[k].val() {
-                        self.age[w * nn + k].next = self.ptr[w].val() + self.wrap[k].val();
-                    }
-                }
                 for k in 0..self._n {
                     for k2 in 0..self._n {
                         self.newer[(w * nn + k) * nn + k2].next =

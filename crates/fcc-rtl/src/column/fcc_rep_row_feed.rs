@@ -1,7 +1,6 @@
 //! `FccRepRowFeed`: the representative rows' table and the rows it feeds
 //! `FccRowReps` (docs/column-core.md, item 3). The table holds each row's
-//! `h + 1` run slots (labels, representatives) and its newest slot `ptr`
-//! in LUT RAM (`FccRam`, two cycles a read). The window takes one row a
+//! `h + 1` run slots (labels, representatives, ages) in LUT RAM (`FccRam`, two cycles a read). The window takes one row a
 //! pixel slot, in order (row `(i + h) mod R` as pixel `i` enters), and
 //! gives one back as it leaves (row `i - h - S - 1`, `K + S` rows behind),
 //! so the table is read and written by two counters, never by address.
@@ -14,7 +13,8 @@
 //! * `rst`: the reader starts again at row `h`, the writer `K + S` rows
 //!   behind it, nothing ready. Until the reader has passed the frame's
 //!   last row once, the rows it reads have not been written since the
-//!   reset: they come out empty (no `X` from a RAM never written).
+//!   reset: they come out empty, ages by slot (no `X` from a RAM never
+//!   written).
 //!
 //! A row is read again `R` slots after it was read, and written back
 //! `K + S` slots after; with up to four rows read ahead and two cycles a
@@ -23,7 +23,7 @@
 
 use rust_hdl::prelude::*;
 
-use super::REP_PTR_BITS;
+use super::REP_AGE_BITS;
 use crate::fcc_ram::FccRam;
 use crate::types::{kb, vec_of};
 
@@ -40,13 +40,13 @@ pub struct FccRepRowFeed {
     pub head_ok: Signal<Out, Bit>,
     pub head_label: Vec<Signal<Out, Bits<16>>>,
     pub head_rep: Vec<Signal<Out, Bits<16>>>,
-    pub head_ptr: Signal<Out, Bits<REP_PTR_BITS>>,
+    pub head_age: Vec<Signal<Out, Bits<REP_AGE_BITS>>>,
     pub wb_label: Vec<Signal<In, Bits<16>>>,
     pub wb_rep: Vec<Signal<In, Bits<16>>>,
-    pub wb_ptr: Signal<In, Bits<REP_PTR_BITS>>,
+    pub wb_age: Vec<Signal<In, Bits<REP_AGE_BITS>>>,
     labels: Vec<FccRam<Bits<16>, 7>>,
     reps: Vec<FccRam<Bits<16>, 7>>,
-    ptrs: FccRam<Bits<REP_PTR_BITS>, 7>,
+    ages: Vec<FccRam<Bits<REP_AGE_BITS>, 7>>,
     rd_row: DFF<Bits<7>>,
     wr_row: DFF<Bits<7>>,
     fresh: DFF<Bit>,
@@ -59,7 +59,7 @@ pub struct FccRepRowFeed {
     /// The rows ready, head first: entry `j`'s slot `k` at `j * (h + 1) + k`.
     q_label: Vec<DFF<Bits<16>>>,
     q_rep: Vec<DFF<Bits<16>>>,
-    q_ptr: Vec<DFF<Bits<REP_PTR_BITS>>>,
+    q_age: Vec<DFF<Bits<REP_AGE_BITS>>>,
     issue: Signal<Local, Bit>,
     /// Rows ready and coming.
     infl: Signal<Local, Bits<3>>,
@@ -67,7 +67,7 @@ pub struct FccRepRowFeed {
     at: Signal<Local, Bits<3>>,
     in_label: Vec<Signal<Local, Bits<16>>>,
     in_rep: Vec<Signal<Local, Bits<16>>>,
-    in_ptr: Signal<Local, Bits<REP_PTR_BITS>>,
+    in_age: Vec<Signal<Local, Bits<REP_AGE_BITS>>>,
     entry_no: Vec<Constant<Bits<3>>>,
     depth: Constant<Bits<3>>,
     one3: Constant<Bits<3>>,
@@ -78,7 +78,8 @@ pub struct FccRepRowFeed {
     /// `K + S - h - 1`: the writer's first row is `R - 1` less it.
     behind: Constant<Bits<7>>,
     zero16: Constant<Bits<16>>,
-    zero_ptr: Constant<Bits<REP_PTR_BITS>>,
+    /// Run slot numbers: a fresh row's ages.
+    slot_no: Vec<Constant<Bits<REP_AGE_BITS>>>,
     _n: usize,
     _d: usize,
 }
@@ -97,13 +98,13 @@ impl FccRepRowFeed {
             head_ok: Default::default(),
             head_label: vec_of(n),
             head_rep: vec_of(n),
-            head_ptr: Default::default(),
+            head_age: vec_of(n),
             wb_label: vec_of(n),
             wb_rep: vec_of(n),
-            wb_ptr: Default::default(),
+            wb_age: vec_of(n),
             labels: (0..n).map(|_| FccRam::new(rows)).collect(),
             reps: (0..n).map(|_| FccRam::new(rows)).collect(),
-            ptrs: FccRam::new(rows),
+            ages: (0..n).map(|_| FccRam::new(rows)).collect(),
             rd_row: Default::default(),
             wr_row: Default::default(),
             fresh: Default::default(),
@@ -114,13 +115,13 @@ impl FccRepRowFeed {
             count: Default::default(),
             q_label: vec_of(FEED_DEPTH * n),
             q_rep: vec_of(FEED_DEPTH * n),
-            q_ptr: vec_of(FEED_DEPTH),
+            q_age: vec_of(FEED_DEPTH * n),
             issue: Default::default(),
             infl: Default::default(),
             at: Default::default(),
             in_label: vec_of(n),
             in_rep: vec_of(n),
-            in_ptr: Default::default(),
+            in_age: vec_of(n),
             entry_no: (0..FEED_DEPTH).map(|j| kb(j as u64)).collect(),
             depth: kb(FEED_DEPTH as u64),
             one3: kb(1),
@@ -130,7 +131,7 @@ impl FccRepRowFeed {
             h7: kb(h as u64),
             behind: kb((k + s - h - 1) as u64),
             zero16: kb(0),
-            zero_ptr: kb(0),
+            slot_no: (0..n).map(|k| kb(k as u64)).collect(),
             _n: n,
             _d: FEED_DEPTH,
         }
@@ -141,15 +142,13 @@ impl Logic for FccRepRowFeed {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clk, rd_row, wr_row, fresh, v1, v2, f1, f2, count);
-        for j in 0..self.q_ptr.len() {
-            self.q_ptr[j].clock.next = self.clk.val();
-            self.q_ptr[j].d.next = self.q_ptr[j].q.val();
-        }
         for j in 0..self.q_label.len() {
             self.q_label[j].clock.next = self.clk.val();
             self.q_rep[j].clock.next = self.clk.val();
+            self.q_age[j].clock.next = self.clk.val();
             self.q_label[j].d.next = self.q_label[j].q.val();
             self.q_rep[j].d.next = self.q_rep[j].q.val();
+            self.q_age[j].d.next = self.q_age[j].q.val();
         }
         // The reader: a read while fewer than four rows are ready or coming.
         self.infl.next = self.count.q.val();
@@ -184,22 +183,20 @@ impl Logic for FccRepRowFeed {
             self.reps[k].write_addr.next = self.wr_row.q.val();
             self.labels[k].write_data.next = self.wb_label[k].val();
             self.reps[k].write_data.next = self.wb_rep[k].val();
+            self.ages[k].clk.next = self.clk.val();
+            self.ages[k].read_en.next = self.issue.val();
+            self.ages[k].read_addr.next = self.rd_row.q.val();
+            self.ages[k].write_en.next = self.pop.val();
+            self.ages[k].write_addr.next = self.wr_row.q.val();
+            self.ages[k].write_data.next = self.wb_age[k].val();
             self.in_label[k].next = self.labels[k].read_data.val();
             self.in_rep[k].next = self.reps[k].read_data.val();
+            self.in_age[k].next = self.ages[k].read_data.val();
             if self.f2.q.val() {
                 self.in_label[k].next = self.zero16.val();
                 self.in_rep[k].next = self.zero16.val();
+                self.in_age[k].next = self.slot_no[k].val();
             }
-        }
-        self.ptrs.clk.next = self.clk.val();
-        self.ptrs.read_en.next = self.issue.val();
-        self.ptrs.read_addr.next = self.rd_row.q.val();
-        self.ptrs.write_en.next = self.pop.val();
-        self.ptrs.write_addr.next = self.wr_row.q.val();
-        self.ptrs.write_data.next = self.wb_ptr.val();
-        self.in_ptr.next = self.ptrs.read_data.val();
-        if self.f2.q.val() {
-            self.in_ptr.next = self.zero_ptr.val();
         }
         // The writer.
         if self.pop.val() {
@@ -215,10 +212,10 @@ impl Logic for FccRepRowFeed {
             self.count.d.next = self.count.q.val() - self.one3.val();
             for nn in self._n..(self._n + 1) {
                 for j in 0..(self._d - 1) {
-                    self.q_ptr[j].d.next = self.q_ptr[j + 1].q.val();
                     for k in 0..self._n {
                         self.q_label[j * nn + k].d.next = self.q_label[(j + 1) * nn + k].q.val();
                         self.q_rep[j * nn + k].d.next = self.q_rep[(j + 1) * nn + k].q.val();
+                        self.q_age[j * nn + k].d.next = self.q_age[(j + 1) * nn + k].q.val();
                     }
                 }
             }
@@ -228,20 +225,20 @@ impl Logic for FccRepRowFeed {
             for nn in self._n..(self._n + 1) {
                 for j in 0..self._d {
                     if self.at.val() == self.entry_no[j].val() {
-                        self.q_ptr[j].d.next = self.in_ptr.val();
                         for k in 0..self._n {
                             self.q_label[j * nn + k].d.next = self.in_label[k].val();
                             self.q_rep[j * nn + k].d.next = self.in_rep[k].val();
+                            self.q_age[j * nn + k].d.next = self.in_age[k].val();
                         }
                     }
                 }
             }
         }
         self.head_ok.next = self.count.q.val() != self.zero3.val();
-        self.head_ptr.next = self.q_ptr[0].q.val();
         for k in 0..self._n {
             self.head_label[k].next = self.q_label[k].q.val();
             self.head_rep[k].next = self.q_rep[k].q.val();
+            self.head_age[k].next = self.q_age[k].q.val();
         }
         if self.rst.val() {
             self.rd_row.d.next = self.h7.val();

@@ -2,30 +2,31 @@
 //! pixel, and the `S` rows above them not yet written back, in flip-flops
 //! (docs/column-core.md, item 3, "How the next pixel sees the rewrite").
 //! Position `j` holds row `i - h - S + j`; the centre is position
-//! `S + h`. Each position holds its row's last `h + 1` runs in a ring of
-//! `h + 1` run slots: each run's label and representative, and `ptr`, the
-//! slot of the newest run. A run pushed takes the slot after `ptr` (the
-//! oldest run's), so the other runs never move: a pixel in flight names
-//! run slots by position (a mask), and the positions stay true until the
+//! `S + h`. Each position holds its row's last `h + 1` runs in `h + 1` run
+//! slots: each run's label, representative and age (0 the newest, `h` the
+//! oldest, all different). A run pushed takes the oldest run's slot and
+//! the others age by one, so no run moves: a pixel in flight names run
+//! slots by position (a mask), and the positions stay true until the
 //! window shifts (the masks shift with it).
 //!
 //! * `shift` moves the window one row on: position `j` takes position
-//!   `j + 1`'s, the last position the row `load_*` (the table's, read a
-//!   cycle before), and position 0's row leaves as `wb_*` (to be written
-//!   back to the table, this cycle's rewrite applied).
+//!   `j + 1`'s, the last position the row `load_*` (the table's), and
+//!   position 0's row leaves as `wb_*` (to be written back to the table,
+//!   this cycle's rewrite applied).
 //! * `push` (with `shift` only): the pixel moving into the centre starts a
 //!   run, whose label (`push_label`) is its own representative.
 //! * `rw_valid`: the representatives at the positions of `rw_mask`
 //!   (position `j`'s run slot `k` at `j * (h + 1) + k`, as the window is
-//!   this cycle) become `rw_rep`, at the edge, before the shift moves them.
+//!   this cycle) become `rw_rep`, at the edge, before the shift moves them;
+//!   `rep_next` shows them with the rewrite.
 //!
-//! `rst` empties every row (labels 0, which no hit names). After that, a
-//! hit names a run pushed during the frame, found newest first before
-//! anything left from an earlier frame.
+//! `rst` empties every row (labels 0, which no hit names; ages by slot).
+//! After that, a hit names a run pushed during the frame, found newest
+//! first before anything left from an earlier frame.
 
 use rust_hdl::prelude::*;
 
-use super::REP_PTR_BITS;
+use super::REP_AGE_BITS;
 use crate::types::{kb, vec_of};
 
 #[derive(LogicBlock)]
@@ -35,7 +36,7 @@ pub struct FccRowReps {
     pub shift: Signal<In, Bit>,
     pub load_label: Vec<Signal<In, Bits<16>>>,
     pub load_rep: Vec<Signal<In, Bits<16>>>,
-    pub load_ptr: Signal<In, Bits<REP_PTR_BITS>>,
+    pub load_age: Vec<Signal<In, Bits<REP_AGE_BITS>>>,
     pub push: Signal<In, Bit>,
     pub push_label: Signal<In, Bits<16>>,
     pub rw_valid: Signal<In, Bit>,
@@ -44,24 +45,23 @@ pub struct FccRowReps {
     /// Position `j`'s run slot `k` at `j * (h + 1) + k`.
     pub label: Vec<Signal<Out, Bits<16>>>,
     pub rep: Vec<Signal<Out, Bits<16>>>,
-    pub ptr: Vec<Signal<Out, Bits<REP_PTR_BITS>>>,
+    pub rep_next: Vec<Signal<Out, Bits<16>>>,
+    pub age: Vec<Signal<Out, Bits<REP_AGE_BITS>>>,
     /// Position 0's row, leaving when `shift`.
     pub wb_label: Vec<Signal<Out, Bits<16>>>,
     pub wb_rep: Vec<Signal<Out, Bits<16>>>,
-    pub wb_ptr: Signal<Out, Bits<REP_PTR_BITS>>,
+    pub wb_age: Vec<Signal<Out, Bits<REP_AGE_BITS>>>,
     label_q: Vec<DFF<Bits<16>>>,
     rep_q: Vec<DFF<Bits<16>>>,
-    ptr_q: Vec<DFF<Bits<REP_PTR_BITS>>>,
+    age_q: Vec<DFF<Bits<REP_AGE_BITS>>>,
     /// The representatives with this cycle's rewrite.
     rep_rw: Vec<Signal<Local, Bits<16>>>,
-    /// The slot a push writes: the one after the entering row's `ptr`.
-    push_ptr: Signal<Local, Bits<REP_PTR_BITS>>,
-    last_ptr: Constant<Bits<REP_PTR_BITS>>,
-    zero_ptr: Constant<Bits<REP_PTR_BITS>>,
+    oldest: Constant<Bits<REP_AGE_BITS>>,
+    zero_age: Constant<Bits<REP_AGE_BITS>>,
     zero16: Constant<Bits<16>>,
-    one_ptr: Constant<Bits<REP_PTR_BITS>>,
-    /// Run slot numbers, `0 ..= h`.
-    slot_no: Vec<Constant<Bits<REP_PTR_BITS>>>,
+    one_age: Constant<Bits<REP_AGE_BITS>>,
+    /// Run slot numbers, `0 ..= h` (a row's ages after a reset).
+    slot_no: Vec<Constant<Bits<REP_AGE_BITS>>>,
     /// Positions, `K + S`.
     _p: usize,
     /// The centre position, `S + h`.
@@ -76,14 +76,14 @@ impl FccRowReps {
         let h = (k - 1) / 2;
         let n = h + 1;
         let p = k + s;
-        assert!(n <= 1 << REP_PTR_BITS, "K = {k}: {n} run slots a row");
+        assert!(n <= 1 << REP_AGE_BITS, "K = {k}: {n} run slots a row");
         Self {
             clk: Default::default(),
             rst: Default::default(),
             shift: Default::default(),
             load_label: vec_of(n),
             load_rep: vec_of(n),
-            load_ptr: Default::default(),
+            load_age: vec_of(n),
             push: Default::default(),
             push_label: Default::default(),
             rw_valid: Default::default(),
@@ -91,19 +91,19 @@ impl FccRowReps {
             rw_rep: Default::default(),
             label: vec_of(p * n),
             rep: vec_of(p * n),
-            ptr: vec_of(p),
+            rep_next: vec_of(p * n),
+            age: vec_of(p * n),
             wb_label: vec_of(n),
             wb_rep: vec_of(n),
-            wb_ptr: Default::default(),
+            wb_age: vec_of(n),
             label_q: vec_of(p * n),
             rep_q: vec_of(p * n),
-            ptr_q: vec_of(p),
+            age_q: vec_of(p * n),
             rep_rw: vec_of(p * n),
-            push_ptr: Default::default(),
-            last_ptr: kb((n - 1) as u64),
-            zero_ptr: kb(0),
+            oldest: kb((n - 1) as u64),
+            zero_age: kb(0),
             zero16: kb(0),
-            one_ptr: kb(1),
+            one_age: kb(1),
             slot_no: (0..n).map(|k| kb(k as u64)).collect(),
             _p: p,
             _c: s + h,
@@ -117,65 +117,65 @@ impl Logic for FccRowReps {
     fn update(&mut self) {
         for nn in self._n..(self._n + 1) {
             for j in 0..self._p {
-                self.ptr_q[j].clock.next = self.clk.val();
-                self.ptr_q[j].d.next = self.ptr_q[j].q.val();
-                self.ptr[j].next = self.ptr_q[j].q.val();
                 for k in 0..self._n {
                     self.label_q[j * nn + k].clock.next = self.clk.val();
                     self.rep_q[j * nn + k].clock.next = self.clk.val();
+                    self.age_q[j * nn + k].clock.next = self.clk.val();
                     self.label[j * nn + k].next = self.label_q[j * nn + k].q.val();
                     self.rep[j * nn + k].next = self.rep_q[j * nn + k].q.val();
+                    self.age[j * nn + k].next = self.age_q[j * nn + k].q.val();
                     self.rep_rw[j * nn + k].next = self.rep_q[j * nn + k].q.val();
                     if self.rw_valid.val() & self.rw_mask[j * nn + k].val() {
                         self.rep_rw[j * nn + k].next = self.rw_rep.val();
                     }
+                    self.rep_next[j * nn + k].next = self.rep_rw[j * nn + k].val();
                     self.label_q[j * nn + k].d.next = self.label_q[j * nn + k].q.val();
                     self.rep_q[j * nn + k].d.next = self.rep_rw[j * nn + k].val();
+                    self.age_q[j * nn + k].d.next = self.age_q[j * nn + k].q.val();
                 }
             }
             for k in 0..self._n {
                 self.wb_label[k].next = self.label_q[k].q.val();
                 self.wb_rep[k].next = self.rep_rw[k].val();
+                self.wb_age[k].next = self.age_q[k].q.val();
             }
-            self.wb_ptr.next = self.ptr_q[0].q.val();
             if self.shift.val() {
                 for j in 0..(self._p - 1) {
-                    self.ptr_q[j].d.next = self.ptr_q[j + 1].q.val();
                     for k in 0..self._n {
                         self.label_q[j * nn + k].d.next = self.label_q[(j + 1) * nn + k].q.val();
                         self.rep_q[j * nn + k].d.next = self.rep_rw[(j + 1) * nn + k].val();
+                        self.age_q[j * nn + k].d.next = self.age_q[(j + 1) * nn + k].q.val();
                     }
                 }
                 for j in (self._p - 1)..self._p {
-                    self.ptr_q[j].d.next = self.load_ptr.val();
                     for k in 0..self._n {
                         self.label_q[j * nn + k].d.next = self.load_label[k].val();
                         self.rep_q[j * nn + k].d.next = self.load_rep[k].val();
+                        self.age_q[j * nn + k].d.next = self.load_age[k].val();
                     }
                 }
             }
-            // A push: the run slot after the entering row's newest.
+            // A push: the entering row's oldest slot takes the run, the
+            // others age by one.
             for c in self._c..(self._c + 1) {
-                self.push_ptr.next = self.ptr_q[c + 1].q.val() + self.one_ptr.val();
-                if self.ptr_q[c + 1].q.val() == self.last_ptr.val() {
-                    self.push_ptr.next = self.zero_ptr.val();
-                }
                 if self.push.val() & self.shift.val() {
-                    self.ptr_q[c].d.next = self.push_ptr.val();
                     for k in 0..self._n {
-                        if self.push_ptr.val() == self.slot_no[k].val() {
+                        self.age_q[c * nn + k].d.next =
+                            self.age_q[(c + 1) * nn + k].q.val() + self.one_age.val();
+                        if self.age_q[(c + 1) * nn + k].q.val() == self.oldest.val() {
                             self.label_q[c * nn + k].d.next = self.push_label.val();
                             self.rep_q[c * nn + k].d.next = self.push_label.val();
+                            self.age_q[c * nn + k].d.next = self.zero_age.val();
                         }
                     }
                 }
             }
             if self.rst.val() {
                 for j in 0..self._p {
-                    self.ptr_q[j].d.next = self.zero_ptr.val();
                     for k in 0..self._n {
                         self.label_q[j * nn + k].d.next = self.zero16.val();
                         self.rep_q[j * nn + k].d.next = self.zero16.val();
+                        self.age_q[j * nn + k].d.next = self.slot_no[k].val();
                     }
                 }
             }

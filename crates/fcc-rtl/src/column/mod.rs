@@ -25,6 +25,7 @@ pub mod fcc_open_room;
 pub mod fcc_rec_beats;
 pub mod fcc_record_out;
 pub mod fcc_record_out_probe;
+pub mod fcc_rep_ahead;
 pub mod fcc_rep_extract;
 pub mod fcc_rep_front;
 pub mod fcc_rep_joins;
@@ -34,6 +35,7 @@ pub mod fcc_rep_min;
 pub mod fcc_rep_overlap;
 pub mod fcc_rep_pick;
 pub mod fcc_rep_row_feed;
+pub mod fcc_rep_seen_ahead;
 pub mod fcc_rep_shift;
 pub mod fcc_rep_stage;
 pub mod fcc_row_entry;
@@ -46,9 +48,9 @@ pub mod fcc_run_decide;
 
 use rust_hdl::prelude::*;
 
-/// Bits of a run slot's number in a representative row (`h + 1` slots,
-/// at most 6 at K = 11).
-pub const REP_PTR_BITS: usize = 3;
+/// Bits of a run slot's age (or number) in a representative row (`h + 1`
+/// slots, at most 6 at K = 11).
+pub const REP_AGE_BITS: usize = 3;
 
 /// One pixel slot of the frame in column order.
 #[derive(Clone, Copy, Debug, PartialEq, Default, LogicStruct)]
