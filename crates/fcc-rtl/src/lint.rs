@@ -169,9 +169,7 @@ pub fn rep_joins_waivers(p: &FccParams, name: &str) -> String {
          // (`wb_*`): their labels, ages and rewritten values are not read.\n\
          lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'window$label$*\"\n\
          lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'window$age$*\"\n\
-         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'window$rep_next$*\"\n\
-         // R picks only while a flag is known set.\n\
-         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'pick_r$any'*\"\n"
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'window$rep_next$*\"\n"
     ));
     s
 }

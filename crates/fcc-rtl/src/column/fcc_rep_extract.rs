@@ -12,9 +12,9 @@
 //! * R sends the join D picked with the pixel, and the pixel itself, in
 //!   one cycle when no other join is left. Otherwise `busy` (a flip-flop)
 //!   holds every stage while R picks the next value (`Pick`), sends it and
-//!   clears its equals (`Check`), until none is left, then sends the ring
-//!   pair (`Ring`): two cycles a further join, one for the ring pair, one
-//!   to leave.
+//!   clears its equals (`Check`), until `Pick` finds none left, then sends
+//!   the ring pair (`Ring`): two cycles a further join, one to find none
+//!   left, one for the ring pair, one to leave.
 //!
 //! In a cycle the join comes before the pixel, so a pixel leaves after
 //! all its joins.
@@ -77,7 +77,6 @@ pub struct FccRepExtract {
     e_more: Signal<Local, Bit>,
     /// R's flags with its value `r_x` cleared.
     rem2: Vec<Signal<Local, Bit>>,
-    rem2_any: Signal<Local, Bit>,
     pix_zero: Constant<RunPix>,
 }
 
@@ -124,7 +123,6 @@ impl FccRepExtract {
             rb: Default::default(),
             e_more: Default::default(),
             rem2: vec_of(n),
-            rem2_any: Default::default(),
             pix_zero: Constant::new(RunPix::default()),
         }
     }
@@ -161,13 +159,9 @@ impl Logic for FccRepExtract {
             self.rem2[b].next = self.r_rem[b].q.val() & (self.r_val[b].q.val() != self.r_x.q.val());
         }
         self.e_more.next = false;
-        self.rem2_any.next = false;
         for b in 0..self.b_mask.len() {
             if self.e_g[b].q.val() {
                 self.e_more.next = true;
-            }
-            if self.rem2[b].val() {
-                self.rem2_any.next = true;
             }
         }
         // C, D, E move on unless R holds a pixel.
@@ -211,25 +205,27 @@ impl Logic for FccRepExtract {
             match self.r_step.q.val() {
                 ReplayStep::Idle => {}
                 ReplayStep::Pick => {
-                    self.r_x.d.next = self.pick_r.x.val();
-                    self.r_emit.d.next = true;
-                    self.r_step.d.next = ReplayStep::Check;
-                    for b in 0..self.b_mask.len() {
-                        self.r_rem[b].d.next = self.r_rem[b].q.val() & !self.pick_r.first[b].val();
-                    }
-                }
-                ReplayStep::Check => {
                     self.r_emit.d.next = false;
-                    for b in 0..self.b_mask.len() {
-                        self.r_rem[b].d.next = self.rem2[b].val();
-                    }
-                    if self.rem2_any.val() {
-                        self.r_step.d.next = ReplayStep::Pick;
+                    if self.pick_r.any.val() {
+                        self.r_x.d.next = self.pick_r.x.val();
+                        self.r_emit.d.next = true;
+                        self.r_step.d.next = ReplayStep::Check;
+                        for b in 0..self.b_mask.len() {
+                            self.r_rem[b].d.next =
+                                self.r_rem[b].q.val() & !self.pick_r.first[b].val();
+                        }
                     } else if self.r_pix.q.val().ring {
                         self.r_step.d.next = ReplayStep::Ring;
                     } else {
                         self.r_step.d.next = ReplayStep::Idle;
                         self.rb.d.next = false;
+                    }
+                }
+                ReplayStep::Check => {
+                    self.r_emit.d.next = false;
+                    self.r_step.d.next = ReplayStep::Pick;
+                    for b in 0..self.b_mask.len() {
+                        self.r_rem[b].d.next = self.rem2[b].val();
                     }
                 }
                 ReplayStep::Ring => {
