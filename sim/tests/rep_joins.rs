@@ -117,6 +117,7 @@ struct Feed {
 }
 
 /// A pixel fed, with the joins the model expects before it.
+#[derive(Clone)]
 struct Fed {
     px: Pix,
     label: u16,
@@ -258,11 +259,7 @@ impl Bench {
         }
         if taken {
             let f = fed.expect("a pixel");
-            self.pending.push_back(Fed {
-                px: f.px.clone(),
-                label: f.label,
-                joins: f.joins.clone(),
-            });
+            self.pending.push_back(f.clone());
         }
         taken
     }

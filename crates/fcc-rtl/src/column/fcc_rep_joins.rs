@@ -103,9 +103,6 @@ pub struct FccRepJoins {
     _np: usize,
     /// The first run slot of the window's centre rows, `S (h + 1)`.
     _soff: usize,
-    /// Rows above the window, `S`.
-    _s: usize,
-    _k: usize,
     _g1: usize,
     _g2: usize,
 }
@@ -162,8 +159,6 @@ impl FccRepJoins {
             none: kb(0xFFFF),
             _np: np,
             _soff: s * n,
-            _s: s,
-            _k: k,
             _g1: g1,
             _g2: g2,
         }
