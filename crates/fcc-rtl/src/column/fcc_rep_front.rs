@@ -5,7 +5,7 @@
 //! holds the pixel, its hits and their labels for `FccRepMatch`; A2 the
 //! representatives of A1's rows as the window has them after this cycle's
 //! rewrite (`rep_next`), for the minimum tree (`v`, padded with `0xFFFF`;
-//! A2's mask says which are present). `miss` is sticky until reset.
+//! A2's mask says which are present). `miss` is sticky until reset (a cycle after the match).
 
 use rust_hdl::prelude::*;
 
@@ -38,6 +38,9 @@ pub struct FccRepFront {
     hit_q: Vec<DFF<Bit>>,
     label_q: Vec<DFF<Bits<16>>>,
     rep_q: Vec<DFF<Bits<16>>>,
+    /// A1's match missed last cycle (registered before `miss_q` takes it:
+    /// the match is a long path).
+    miss_p: DFF<Bit>,
     miss_q: DFF<Bit>,
     take: Signal<Local, Bit>,
     pix_zero: Constant<RunPix>,
@@ -71,6 +74,7 @@ impl FccRepFront {
             hit_q: vec_of(ne),
             label_q: vec_of(ne),
             rep_q: vec_of(np),
+            miss_p: Default::default(),
             miss_q: Default::default(),
             take: Default::default(),
             pix_zero: Constant::new(RunPix::default()),
@@ -82,7 +86,7 @@ impl FccRepFront {
 impl Logic for FccRepFront {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clk, pix_q, miss_q);
+        dff_setup!(self, clk, pix_q, miss_p, miss_q);
         self.adv.next = !self.busy.val();
         self.ready.next = !self.busy.val() & self.head_ok.val();
         self.take.next = self.inp.val().valid & !self.busy.val() & self.head_ok.val();
@@ -118,11 +122,13 @@ impl Logic for FccRepFront {
             }
             self.v[j].next = self.rep_q[j].q.val();
         }
-        if self.pix_q.q.val().valid & self.match_miss.val() {
+        self.miss_p.d.next = self.pix_q.q.val().valid & self.match_miss.val();
+        if self.miss_p.q.val() {
             self.miss_q.d.next = true;
         }
         if self.rst.val() {
             self.pix_q.d.next = self.pix_zero.val();
+            self.miss_p.d.next = false;
             self.miss_q.d.next = false;
         }
         self.miss.next = self.miss_q.q.val();

@@ -1,0 +1,190 @@
+//! `FccRepReplay`: stage R of the representative rows (docs/column-core.md,
+//! item 3). It sends the pixel's first join with the pixel, in one cycle
+//! when no other is left. Otherwise `busy` (a flip-flop) holds every stage
+//! before it while it finds the first flag left (`Pick`), takes its value
+//! and sends it (`Take`), then clears its equals (`Check`): three cycles a
+//! further join, and one to find none left. At the last column it then
+//! sends the ring check's pair (`Ring`), and lets the pixel go. In a cycle
+//! the join comes before the pixel, so a pixel leaves after its joins.
+
+use rust_hdl::prelude::*;
+
+use super::fcc_rep_first::FccRepFirst;
+use super::fcc_rep_take::FccRepTake;
+use super::RunPix;
+use crate::types::vec_of;
+
+/// What R does next while it holds a pixel.
+#[derive(Copy, Clone, Debug, PartialEq, LogicState)]
+pub enum ReplayStep {
+    Idle,
+    Pick,
+    Take,
+    Check,
+    Ring,
+}
+
+#[derive(LogicBlock)]
+pub struct FccRepReplay {
+    pub clk: Signal<In, Clock>,
+    pub rst: Signal<In, Bit>,
+    /// F's pixel (`FccRepSieve`), taken when not `busy`.
+    pub f_pix: Signal<In, RunPix>,
+    pub f_m: Signal<In, Bits<16>>,
+    pub f_x: Signal<In, Bits<16>>,
+    pub f_any: Signal<In, Bit>,
+    pub f_more: Signal<In, Bit>,
+    pub f_left: Vec<Signal<In, Bit>>,
+    pub f_val: Vec<Signal<In, Bits<16>>>,
+    pub busy: Signal<Out, Bit>,
+    pub out: Signal<Out, RunPix>,
+    pub j_valid: Signal<Out, Bit>,
+    pub j_a: Signal<Out, Bits<16>>,
+    pub j_b: Signal<Out, Bits<16>>,
+    first: FccRepFirst,
+    take: FccRepTake,
+    r_pix: DFF<RunPix>,
+    r_rem: Vec<DFF<Bit>>,
+    r_first: Vec<DFF<Bit>>,
+    r_val: Vec<DFF<Bits<16>>>,
+    r_m: DFF<Bits<16>>,
+    r_x: DFF<Bits<16>>,
+    r_emit: DFF<Bit>,
+    r_step: DFF<ReplayStep>,
+    rb: DFF<Bit>,
+    /// The flags left with the value just sent cleared.
+    rem2: Vec<Signal<Local, Bit>>,
+    pix_zero: Constant<RunPix>,
+}
+
+impl FccRepReplay {
+    /// `n` window positions.
+    pub fn new(n: usize) -> Self {
+        Self {
+            clk: Default::default(),
+            rst: Default::default(),
+            f_pix: Default::default(),
+            f_m: Default::default(),
+            f_x: Default::default(),
+            f_any: Default::default(),
+            f_more: Default::default(),
+            f_left: vec_of(n),
+            f_val: vec_of(n),
+            busy: Default::default(),
+            out: Default::default(),
+            j_valid: Default::default(),
+            j_a: Default::default(),
+            j_b: Default::default(),
+            first: FccRepFirst::new(n),
+            take: FccRepTake::new(n),
+            r_pix: Default::default(),
+            r_rem: vec_of(n),
+            r_first: vec_of(n),
+            r_val: vec_of(n),
+            r_m: Default::default(),
+            r_x: Default::default(),
+            r_emit: Default::default(),
+            r_step: Default::default(),
+            rb: Default::default(),
+            rem2: vec_of(n),
+            pix_zero: Constant::new(RunPix::default()),
+        }
+    }
+}
+
+impl Logic for FccRepReplay {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clk, r_pix, r_m, r_x, r_emit, r_step, rb);
+        for b in 0..self.f_left.len() {
+            self.r_rem[b].clock.next = self.clk.val();
+            self.r_first[b].clock.next = self.clk.val();
+            self.r_val[b].clock.next = self.clk.val();
+            self.r_rem[b].d.next = self.r_rem[b].q.val();
+            self.r_first[b].d.next = self.r_first[b].q.val();
+            self.r_val[b].d.next = self.r_val[b].q.val();
+            self.first.flag[b].next = self.r_rem[b].q.val();
+            self.take.first[b].next = self.r_first[b].q.val();
+            self.take.val[b].next = self.r_val[b].q.val();
+            self.rem2[b].next = self.r_rem[b].q.val() & (self.r_val[b].q.val() != self.r_x.q.val());
+        }
+        if !self.rb.q.val() {
+            // R takes F's pixel.
+            self.r_pix.d.next = self.f_pix.val();
+            self.r_m.d.next = self.f_m.val();
+            self.r_x.d.next = self.f_x.val();
+            self.r_emit.d.next = self.f_pix.val().valid & self.f_any.val();
+            for b in 0..self.f_left.len() {
+                self.r_rem[b].d.next = self.f_left[b].val();
+                self.r_val[b].d.next = self.f_val[b].val();
+            }
+            self.r_step.d.next = ReplayStep::Idle;
+            if self.f_pix.val().valid & self.f_pix.val().ring {
+                self.r_step.d.next = ReplayStep::Ring;
+                self.rb.d.next = true;
+            }
+            if self.f_pix.val().valid & self.f_more.val() {
+                self.r_step.d.next = ReplayStep::Pick;
+                self.rb.d.next = true;
+            }
+        } else {
+            self.r_emit.d.next = false;
+            match self.r_step.q.val() {
+                ReplayStep::Idle => {}
+                ReplayStep::Pick => {
+                    for b in 0..self.f_left.len() {
+                        self.r_first[b].d.next = self.first.first[b].val();
+                    }
+                    if self.first.any.val() {
+                        self.r_step.d.next = ReplayStep::Take;
+                    } else if self.r_pix.q.val().ring {
+                        self.r_step.d.next = ReplayStep::Ring;
+                    } else {
+                        self.r_step.d.next = ReplayStep::Idle;
+                        self.rb.d.next = false;
+                    }
+                }
+                ReplayStep::Take => {
+                    self.r_x.d.next = self.take.x.val();
+                    self.r_emit.d.next = true;
+                    self.r_step.d.next = ReplayStep::Check;
+                    for b in 0..self.f_left.len() {
+                        self.r_rem[b].d.next = self.r_rem[b].q.val() & !self.r_first[b].q.val();
+                    }
+                }
+                ReplayStep::Check => {
+                    self.r_step.d.next = ReplayStep::Pick;
+                    for b in 0..self.f_left.len() {
+                        self.r_rem[b].d.next = self.rem2[b].val();
+                    }
+                }
+                ReplayStep::Ring => {
+                    if !self.r_emit.q.val() {
+                        self.r_step.d.next = ReplayStep::Idle;
+                        self.rb.d.next = false;
+                    }
+                }
+            }
+        }
+        // Out: R's join, then R's pixel once nothing holds it.
+        self.busy.next = self.rb.q.val();
+        self.j_valid.next = self.r_pix.q.val().valid
+            & (self.r_emit.q.val() | ((self.r_step.q.val() == ReplayStep::Ring) & self.rb.q.val()));
+        self.j_a.next = self.r_pix.q.val().ring_a;
+        self.j_b.next = self.r_pix.q.val().ring_b;
+        if self.r_emit.q.val() {
+            self.j_a.next = self.r_x.q.val();
+            self.j_b.next = self.r_m.q.val();
+        }
+        self.out.next = self.pix_zero.val();
+        if !self.rb.q.val() {
+            self.out.next = self.r_pix.q.val();
+        }
+        if self.rst.val() {
+            self.r_pix.d.next = self.pix_zero.val();
+            self.r_emit.d.next = false;
+            self.r_step.d.next = ReplayStep::Idle;
+            self.rb.d.next = false;
+        }
+    }
+}
