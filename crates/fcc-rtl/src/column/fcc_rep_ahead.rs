@@ -6,7 +6,8 @@
 //! those two, registered when the pipeline moves (`adv`), held otherwise:
 //! `ov`, per group of `span` slots, whether the broadcaster (a labelled
 //! pixel) names one the receiver names, in the receiver's rows
-//! (`FccRepShift` by the difference of their `sh`, `FccRepOverlap`).
+//! (`FccRepShift` by the shifts between their A1s, `FccRepGaps`;
+//! `FccRepOverlap`).
 //! `FccRepSeenAhead` is the same for a receiver whose mask is not known
 //! a cycle ahead.
 
@@ -14,23 +15,24 @@ use rust_hdl::prelude::*;
 
 use super::fcc_rep_overlap::FccRepOverlap;
 use super::fcc_rep_shift::FccRepShift;
-use crate::types::vec_of;
+use crate::types::{kb, vec_of};
 
 #[derive(LogicBlock)]
 pub struct FccRepAhead {
     pub clk: Signal<In, Clock>,
     pub adv: Signal<In, Bit>,
-    /// The next broadcaster (now at M2): labelled, its mask, its `sh`.
+    /// The next broadcaster (now at M2): labelled, its mask.
     pub b_valid: Signal<In, Bit>,
     pub b_mask: Vec<Signal<In, Bit>>,
-    pub b_sh: Signal<In, Bits<3>>,
-    /// The next receiver (now a stage before it): its `sh` and mask.
-    pub r_sh: Signal<In, Bits<3>>,
+    /// The next receiver (now a stage before it): its mask, and the shifts
+    /// between the two pixels' A1s (`FccRepGaps`).
     pub r_mask: Vec<Signal<In, Bit>>,
+    pub d: Signal<In, Bits<3>>,
     pub ov: Vec<Signal<Out, Bit>>,
     shift: FccRepShift,
     overlap: FccRepOverlap,
     ov_q: Vec<DFF<Bit>>,
+    zero3: Constant<Bits<3>>,
 }
 
 impl FccRepAhead {
@@ -44,13 +46,13 @@ impl FccRepAhead {
             adv: Default::default(),
             b_valid: Default::default(),
             b_mask: vec_of(np),
-            b_sh: Default::default(),
-            r_sh: Default::default(),
             r_mask: vec_of(np),
+            d: Default::default(),
             ov: vec_of(g),
             shift: FccRepShift::new(n, k, k, 0, s),
             overlap,
             ov_q: vec_of(g),
+            zero3: kb(0),
         }
     }
 }
@@ -58,8 +60,8 @@ impl FccRepAhead {
 impl Logic for FccRepAhead {
     #[hdl_gen]
     fn update(&mut self) {
-        self.shift.a.next = self.b_sh.val();
-        self.shift.b.next = self.r_sh.val();
+        self.shift.a.next = self.d.val();
+        self.shift.b.next = self.zero3.val();
         self.overlap.valid.next = self.b_valid.val();
         for j in 0..self.b_mask.len() {
             self.shift.inp[j].next = self.b_mask[j].val();

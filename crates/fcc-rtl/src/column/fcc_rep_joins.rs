@@ -26,7 +26,8 @@
 //!   by the rewrite broadcast that cycle where it names a slot of the
 //!   group (`FccRepShift` places the broadcast in the pixel's rows; the
 //!   overlaps are worked out a cycle ahead, `FccRepAhead`,
-//!   `FccRepSeenAhead`, so the comparisons take registers only).
+//!   `FccRepSeenAhead`, from the shifts between the pixels' A1s kept as
+//!   they move, `FccRepGaps`, so the comparisons take registers only).
 //! * B = M3: the pixel's `m`; the broadcast (its mask in the window's
 //!   positions, `m`) rewrites the window at the edge, and `FccRepExtract`
 //!   takes the window's values as they were.
@@ -36,6 +37,7 @@ use rust_hdl::prelude::*;
 use super::fcc_rep_ahead::FccRepAhead;
 use super::fcc_rep_extract::FccRepExtract;
 use super::fcc_rep_front::FccRepFront;
+use super::fcc_rep_gaps::FccRepGaps;
 use super::fcc_rep_match::FccRepMatch;
 use super::fcc_rep_min::FccRepMin;
 use super::fcc_rep_overlap::FccRepOverlap;
@@ -90,6 +92,7 @@ pub struct FccRepJoins {
     ov1: FccRepOverlap,
     ahead2: FccRepAhead,
     ahead3: FccRepAhead,
+    gaps: FccRepGaps,
     wshift: FccRepShift,
     extract: FccRepExtract,
     bcast: Signal<Local, Bit>,
@@ -149,6 +152,7 @@ impl FccRepJoins {
             ov1: FccRepOverlap::new(np, gs),
             ahead2: FccRepAhead::new(n, k, s, gs * gs),
             ahead3: FccRepAhead::new(n, k, s, gs * gs * gs),
+            gaps: Default::default(),
             wshift: FccRepShift::new(n, k, k + s, s, s),
             extract: FccRepExtract::new(wp),
             bcast: Default::default(),
@@ -237,13 +241,15 @@ impl Logic for FccRepJoins {
         self.ahead2.clk.next = self.clk.val();
         self.ahead2.adv.next = self.front.adv.val();
         self.ahead2.b_valid.next = self.next_b.val();
-        self.ahead2.b_sh.next = self.st2.sh.val();
-        self.ahead2.r_sh.next = self.st0.sh.val();
+        self.ahead2.d.next = self.gaps.d2.val();
         self.ahead3.clk.next = self.clk.val();
         self.ahead3.adv.next = self.front.adv.val();
         self.ahead3.b_valid.next = self.next_b.val();
-        self.ahead3.b_sh.next = self.st2.sh.val();
-        self.ahead3.r_sh.next = self.st1.sh.val();
+        self.ahead3.d.next = self.gaps.d3.val();
+        self.gaps.clk.next = self.clk.val();
+        self.gaps.adv.next = self.front.adv.val();
+        self.gaps.st0_sh.next = self.st0.sh.val();
+        self.gaps.st1_sh.next = self.st1.sh.val();
         self.ov1.valid.next = self.one.val();
         for j in 0..self._np {
             self.wshift.inp[j].next = self.st3.mask[j].val();

@@ -29,6 +29,7 @@ pub mod fcc_rep_ahead;
 pub mod fcc_rep_extract;
 pub mod fcc_rep_first;
 pub mod fcc_rep_front;
+pub mod fcc_rep_gaps;
 pub mod fcc_rep_joins;
 pub mod fcc_rep_joins_probe;
 pub mod fcc_rep_match;
