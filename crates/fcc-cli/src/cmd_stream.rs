@@ -73,7 +73,7 @@ const COLUMNS: [&str; 16] = [
 ];
 
 /// The second table's columns: what a column core's slot table absorbs.
-const LOAD_COLUMNS: [&str; 15] = [
+const LOAD_COLUMNS: [&str; 18] = [
     "source",
     "K",
     "setting",
@@ -84,6 +84,9 @@ const LOAD_COLUMNS: [&str; 15] = [
     "representatives: joins per slot",
     "joins beyond one a slot",
     "joins in a column",
+    "union-find reads per slot",
+    "reads in a column",
+    "longest walk",
     "merges per slot",
     "merges per frame",
     "merges in a column",
@@ -245,7 +248,7 @@ pub fn run(args: &StreamReportArgs) -> anyhow::Result<()> {
                 )?;
                 writeln!(
                     load,
-                    "| {name} | {k} | {setting} | {:.2} | {} | {:.3} | {:.4} | {:.3} | {:.4} | {} | {:.3} | {} | {} | {} | {} |",
+                    "| {name} | {k} | {setting} | {:.2} | {} | {:.3} | {:.4} | {:.3} | {:.4} | {} | {:.3} | {} | {} | {:.3} | {} | {} | {} | {} |",
                     t.load.joined_runs as f64 / t.load.labelled.max(1) as f64,
                     t.load.joined_runs_max,
                     t.load.offered as f64 / t.load.slots.max(1) as f64,
@@ -253,6 +256,9 @@ pub fn run(args: &StreamReportArgs) -> anyhow::Result<()> {
                     t.load.rep_joins as f64 / t.load.slots.max(1) as f64,
                     t.load.rep_joins_more as f64 / t.load.slots.max(1) as f64,
                     t.load.rep_joins_col,
+                    t.load.uf_reads as f64 / t.load.slots.max(1) as f64,
+                    t.load.uf_reads_col,
+                    t.load.uf_walk_max,
                     t.load.merges as f64 / t.load.slots.max(1) as f64,
                     t.merges,
                     t.col_merges,

@@ -39,6 +39,33 @@ pub struct SlotLoad {
     pub rep_joins: u64,
     pub rep_joins_more: u64,
     pub rep_joins_col: u32,
+    /// The union-find behind the representatives ([`uf_walk`]): the reads
+    /// its walks make for the representative joins (two finds each) and
+    /// the runs (one find each, as the run ends), the most in one column,
+    /// and the deepest run at the frame end (no walk is longer).
+    pub uf_reads: u64,
+    pub uf_reads_col: u32,
+    pub uf_walk_max: u32,
+}
+
+/// A union-find walk as a core's engine makes it, one read a node, the
+/// parent always older than the child (the run that started first), no
+/// path compression: the root of `x` and the reads taken.
+pub fn uf_walk(parent: &[u32], mut x: u32) -> (u32, u32) {
+    let mut reads = 1;
+    while parent[x as usize] != x {
+        x = parent[x as usize];
+        reads += 1;
+    }
+    (x, reads)
+}
+
+/// Unite the sets of `a` and `b` in the walk model's forest, the older
+/// root keeping its place; the reads of the two walks.
+fn uf_join(parent: &mut [u32], a: u32, b: u32) -> u32 {
+    let ((ra, na), (rb, nb)) = (uf_walk(parent, a), uf_walk(parent, b));
+    parent[ra.max(rb) as usize] = ra.min(rb);
+    na + nb
 }
 
 fn find(parent: &mut [u32], mut x: u32) -> u32 {
@@ -86,9 +113,12 @@ pub fn measure(
     let mut rep: Vec<u32> = (0..n as u32).collect();
     let mut reps: Vec<u32> = Vec::new();
     let mut rep_writes: VecDeque<(u64, u32, u32)> = VecDeque::new();
+    // The union-find behind the representatives, over run indices.
+    let mut uf: Vec<u32> = (0..n as u32).collect();
     let mut slot = 0u64;
     for c in 0..cols {
         let mut col_joins = 0u32;
+        let mut col_reads = 0u32;
         for i in 0..rows {
             slot += 1;
             while rep_writes.front().is_some_and(|&(at, _, _)| at <= slot) {
@@ -106,6 +136,10 @@ pub fn measure(
                 continue;
             };
             if latest[i][0] != own {
+                // The row's run before is over: one find for its flush.
+                if latest[i][0] != 0 {
+                    col_reads += uf_walk(&uf, latest[i][0]).1;
+                }
                 latest[i].rotate_right(1);
                 view[i].rotate_right(1);
                 latest[i][0] = own;
@@ -146,6 +180,9 @@ pub fn measure(
             }
             let sent = reps.len() as u64 - 1;
             let least = reps.iter().copied().min().expect("one at least");
+            for &x in reps.iter().filter(|&&x| x != least) {
+                col_reads += uf_join(&mut uf, x, least);
+            }
             rep_writes.push_back((slot + reps_late, own, least));
             for &r in &joined {
                 rep_writes.push_back((slot + reps_late, r, least));
@@ -170,7 +207,18 @@ pub fn measure(
             t.offered_more += offered.len().saturating_sub(1) as u64;
         }
         t.rep_joins_col = t.rep_joins_col.max(col_joins);
+        t.uf_reads += u64::from(col_reads);
+        t.uf_reads_col = t.uf_reads_col.max(col_reads);
     }
+    // The frame end flushes every row's run still open.
+    for row in &latest {
+        if row[0] != 0 {
+            t.uf_reads += u64::from(uf_walk(&uf, row[0]).1);
+        }
+    }
+    t.uf_walk_max = t
+        .uf_walk_max
+        .max((1..n as u32).map(|x| uf_walk(&uf, x).1).max().unwrap_or(0));
     t.slots += (rows * cols) as u64;
     Ok(())
 }
@@ -204,6 +252,10 @@ mod tests {
         // The representatives: the same two joins (rows 1 and 2 meet the
         // row above once), then every run of the window shares one.
         assert_eq!((t.rep_joins, t.rep_joins_more, t.rep_joins_col), (2, 0, 2));
+        // The union-find: each join finds two roots at once (runs 2 and
+        // 1, then 3 and 1), four reads in column 0; at the frame end the
+        // three runs' flushes read 1, 2 and 2 words (2 and 3 under 1).
+        assert_eq!((t.uf_reads, t.uf_reads_col, t.uf_walk_max), (9, 4, 2));
         // Taken late, the representatives leave the pixels after those two
         // to send the same joins again; the merges are the same.
         let mut late = SlotLoad::default();

@@ -218,7 +218,8 @@ fn the_row_major_core_refuses_limits_and_the_stream() {
 /// The second table of `fcc stream-report` (two scenes, K = 3 and 7): per
 /// row, the joined runs per pixel within the most at one pixel, the merges
 /// of a frame bound those of a column, a column's records each free at
-/// least one label, and both models send every merge.
+/// least one label, both models send every merge, and the union-find
+/// reads at least two words a join.
 fn check_load_table(md: &str) {
     let lines: Vec<&str> = md.lines().collect();
     let header: Vec<&str> = lines[0].split('|').map(str::trim).collect();
@@ -238,6 +239,11 @@ fn check_load_table(md: &str) {
         col("joins beyond one a slot"),
     );
     let reps_column = col("joins in a column");
+    let (uf, uf_column, walk) = (
+        col("union-find reads per slot"),
+        col("reads in a column"),
+        col("longest walk"),
+    );
     assert_eq!(lines.len(), 2 + 2 * 4, "{md}");
     for l in &lines[2..] {
         let r: Vec<&str> = l.split('|').map(str::trim).collect();
@@ -254,6 +260,13 @@ fn check_load_table(md: &str) {
         // and a pixel's joins beyond its first are fewer than all.
         assert!(f(reps) >= f(merges), "{l}");
         assert!(f(reps_beyond) < f(reps) && n(reps_column) > 0, "{l}");
+        // Each join walks from two labels, one read a node at least, and
+        // a merge puts a run under a root.
+        assert!(
+            f(uf) >= 2.0 * f(reps) && n(uf_column) >= 2 * n(reps_column),
+            "{l}"
+        );
+        assert!(n(walk) >= 2, "{l}");
         assert!(
             n(frame) >= n(column) && n(column) > 0 && n(closed) > 0 && n(freed) >= n(closed),
             "{l}"

@@ -2,7 +2,8 @@
 //! item 3). A pixel is taken while nothing holds the pipeline and the
 //! table has the row that enters the window with it (`ready`); taking it
 //! shifts the window (`shift`) and pushes the run it starts (`push`). A1
-//! holds the pixel, its hits and their labels for `FccRepMatch`; A2 the
+//! holds the pixel, its hits and their labels' matches (`FccRepEq`) for
+//! `FccRepMatch`; A2 the
 //! representatives of A1's rows as the window has them after this cycle's
 //! rewrite (`rep_next`), for the minimum tree (`v`, padded with `0xFFFF`;
 //! A2's mask says which are present). `miss` is sticky until reset (a cycle after the match).
@@ -18,7 +19,9 @@ pub struct FccRepFront {
     pub rst: Signal<In, Bit>,
     pub inp: Signal<In, RunPix>,
     pub inp_hit: Vec<Signal<In, Bit>>,
-    pub inp_label: Vec<Signal<In, Bits<16>>>,
+    /// The entries' and the pixel's own label matches (`FccRepEq`).
+    pub inp_eq: Vec<Signal<In, Bit>>,
+    pub inp_own_eq: Vec<Signal<In, Bit>>,
     pub busy: Signal<In, Bit>,
     pub head_ok: Signal<In, Bit>,
     /// The window's representatives at A1's rows with this cycle's
@@ -31,12 +34,14 @@ pub struct FccRepFront {
     pub push: Signal<Out, Bit>,
     pub a1_pix: Signal<Out, RunPix>,
     pub a1_hit: Vec<Signal<Out, Bit>>,
-    pub a1_label: Vec<Signal<Out, Bits<16>>>,
+    pub a1_eq: Vec<Signal<Out, Bit>>,
+    pub a1_own_eq: Vec<Signal<Out, Bit>>,
     pub v: Vec<Signal<Out, Bits<16>>>,
     pub miss: Signal<Out, Bit>,
     pix_q: DFF<RunPix>,
     hit_q: Vec<DFF<Bit>>,
-    label_q: Vec<DFF<Bits<16>>>,
+    eq_q: Vec<DFF<Bit>>,
+    own_eq_q: Vec<DFF<Bit>>,
     rep_q: Vec<DFF<Bits<16>>>,
     /// A1's match missed last cycle (registered before `miss_q` takes it:
     /// the match is a long path).
@@ -48,15 +53,17 @@ pub struct FccRepFront {
 }
 
 impl FccRepFront {
-    /// `ne` window entries, `np` run slots, `nv` values for the tree.
-    pub fn new(ne: usize, np: usize, nv: usize) -> Self {
+    /// `ne` window entries, `n` run slots a row, `np` run slots, `nv`
+    /// values for the tree.
+    pub fn new(ne: usize, n: usize, np: usize, nv: usize) -> Self {
         assert!(nv >= np);
         Self {
             clk: Default::default(),
             rst: Default::default(),
             inp: Default::default(),
             inp_hit: vec_of(ne),
-            inp_label: vec_of(ne),
+            inp_eq: vec_of(ne * n),
+            inp_own_eq: vec_of(n),
             busy: Default::default(),
             head_ok: Default::default(),
             rep_next: vec_of(np),
@@ -67,12 +74,14 @@ impl FccRepFront {
             push: Default::default(),
             a1_pix: Default::default(),
             a1_hit: vec_of(ne),
-            a1_label: vec_of(ne),
+            a1_eq: vec_of(ne * n),
+            a1_own_eq: vec_of(n),
             v: vec_of(nv),
             miss: Default::default(),
             pix_q: Default::default(),
             hit_q: vec_of(ne),
-            label_q: vec_of(ne),
+            eq_q: vec_of(ne * n),
+            own_eq_q: vec_of(n),
             rep_q: vec_of(np),
             miss_p: Default::default(),
             miss_q: Default::default(),
@@ -100,15 +109,27 @@ impl Logic for FccRepFront {
         }
         for e in 0..self.hit_q.len() {
             self.hit_q[e].clock.next = self.clk.val();
-            self.label_q[e].clock.next = self.clk.val();
             self.hit_q[e].d.next = self.hit_q[e].q.val();
-            self.label_q[e].d.next = self.label_q[e].q.val();
             if !self.busy.val() {
                 self.hit_q[e].d.next = self.inp_hit[e].val();
-                self.label_q[e].d.next = self.inp_label[e].val();
             }
             self.a1_hit[e].next = self.hit_q[e].q.val();
-            self.a1_label[e].next = self.label_q[e].q.val();
+        }
+        for q in 0..self.eq_q.len() {
+            self.eq_q[q].clock.next = self.clk.val();
+            self.eq_q[q].d.next = self.eq_q[q].q.val();
+            if !self.busy.val() {
+                self.eq_q[q].d.next = self.inp_eq[q].val();
+            }
+            self.a1_eq[q].next = self.eq_q[q].q.val();
+        }
+        for k in 0..self.own_eq_q.len() {
+            self.own_eq_q[k].clock.next = self.clk.val();
+            self.own_eq_q[k].d.next = self.own_eq_q[k].q.val();
+            if !self.busy.val() {
+                self.own_eq_q[k].d.next = self.inp_own_eq[k].val();
+            }
+            self.a1_own_eq[k].next = self.own_eq_q[k].q.val();
         }
         self.a1_pix.next = self.pix_q.q.val();
         for j in 0..self.v.len() {

@@ -18,7 +18,8 @@
 //! join or more, from a flip-flop):
 //! * A1 (`FccRepFront`): the pixel taken; the window shifts (`FccRowReps`,
 //!   its rows from and back to the table, `FccRepRowFeed`), the run it
-//!   starts pushed; `FccRepMatch` makes its mask.
+//!   starts pushed; `FccRepMatch` makes its mask from its labels' matches,
+//!   found a cycle before as it came in (`FccRepEq`).
 //! * A2 (`FccRepStage`, `FccRepFront`): the mask, and the representatives
 //!   of the pixel's rows as the window rewrites them at A1's edge.
 //! * M1 .. M3 (`FccRepStage`, `FccRepMin`): the minimum tree, three
@@ -35,6 +36,7 @@
 use rust_hdl::prelude::*;
 
 use super::fcc_rep_ahead::FccRepAhead;
+use super::fcc_rep_eq::FccRepEq;
 use super::fcc_rep_extract::FccRepExtract;
 use super::fcc_rep_front::FccRepFront;
 use super::fcc_rep_gaps::FccRepGaps;
@@ -80,6 +82,7 @@ pub struct FccRepJoins {
     feed: FccRepRowFeed,
     window: FccRowReps,
     front: FccRepFront,
+    eqs: FccRepEq,
     matcher: FccRepMatch,
     st0: FccRepStage,
     st1: FccRepStage,
@@ -102,8 +105,9 @@ pub struct FccRepJoins {
     one: Constant<Bit>,
     zero3: Constant<Bits<3>>,
     none: Constant<Bits<16>>,
-    /// Run slots of the pixel's rows, `K (h + 1)`.
+    /// Run slots of the pixel's rows, `K (h + 1)`, and of a row.
     _np: usize,
+    _n: usize,
     /// The first run slot of the window's centre rows, `S (h + 1)`.
     _soff: usize,
     _g1: usize,
@@ -139,7 +143,8 @@ impl FccRepJoins {
             miss: Default::default(),
             feed: FccRepRowFeed::new(rows, k, s),
             window: FccRowReps::new(k, s),
-            front: FccRepFront::new(ne, np, g1 * gs),
+            front: FccRepFront::new(ne, n, np, g1 * gs),
+            eqs: FccRepEq::new(k),
             matcher: FccRepMatch::new(k),
             st0: FccRepStage::new(np),
             st1: FccRepStage::new(np),
@@ -162,6 +167,7 @@ impl FccRepJoins {
             zero3: kb(0),
             none: kb(0xFFFF),
             _np: np,
+            _n: n,
             _soff: s * n,
             _g1: g1,
             _g2: g2,
@@ -199,17 +205,36 @@ impl Logic for FccRepJoins {
         self.front.match_miss.next = self.matcher.miss.val();
         for e in 0..self.inp_hit.len() {
             self.front.inp_hit[e].next = self.inp_hit[e].val();
-            self.front.inp_label[e].next = self.inp_label[e].val();
+            self.eqs.ent_label[e].next = self.inp_label[e].val();
             self.matcher.ent_hit[e].next = self.front.a1_hit[e].val();
-            self.matcher.ent_label[e].next = self.front.a1_label[e].val();
         }
+        for q in 0..self.eqs.eq.len() {
+            self.front.inp_eq[q].next = self.eqs.eq[q].val();
+            self.matcher.eq[q].next = self.front.a1_eq[q].val();
+        }
+        for k in 0..self.eqs.own_eq.len() {
+            self.front.inp_own_eq[k].next = self.eqs.own_eq[k].val();
+            self.matcher.own_eq[k].next = self.front.a1_own_eq[k].val();
+        }
+        self.eqs.own_label.next = self.inp.val().label;
         self.matcher.lok.next = self.front.a1_pix.val().lok;
-        self.matcher.own_label.next = self.front.a1_pix.val().label;
+        self.matcher.start.next = self.front.a1_pix.val().start;
         for soff in self._soff..(self._soff + 1) {
             for j in 0..self._np {
-                self.matcher.label[j].next = self.window.label[soff + j].val();
                 self.matcher.age[j].next = self.window.age[soff + j].val();
                 self.front.rep_next[j].next = self.window.rep_next[soff + j].val();
+            }
+            // The input pixel's rows as they will be once it shifts the
+            // window in: one place up, the table's head row last.
+            for nn in self._n..(self._n + 1) {
+                for j in 0..(self._np - self._n) {
+                    self.eqs.label[j].next = self.window.label[soff + nn + j].val();
+                }
+                for top in (self._np - self._n)..(self._np - self._n + 1) {
+                    for k in 0..self._n {
+                        self.eqs.label[top + k].next = self.feed.head_label[k].val();
+                    }
+                }
             }
         }
         // The broadcast: B's mask and `m`, as B moves on.

@@ -1,15 +1,16 @@
 //! `FccRepMatch`: the run slots a pixel names in `FccRowReps`'s `K`
 //! window rows, as a mask (combinational; docs/column-core.md, item 3,
-//! "How the next pixel sees the rewrite"). Each hit's label is looked for
-//! among its row's `h + 1` runs, the newest first (a label freed and
-//! reused names the newer run), and the pixel's own among the centre row's
-//! (a run it starts is pushed already).
+//! "How the next pixel sees the rewrite"). Each hit's label was compared
+//! with its row's `h + 1` runs' a cycle before (`FccRepEq`, registered);
+//! the newest match wins (a label freed and reused names the newer run).
+//! The pixel's own run is the one it pushed if it starts one (its row's
+//! newest), else its label's newest match in the centre row.
 //!
-//! * In: the window rows (row `w` is `i - h + w`; run slot `k` of row `w` at
-//!   `w * (h + 1) + k`, with its label and age), and the entries of
-//!   `FccColWindow`'s order (line `r`, position `p`: row `p` for `p < h`,
-//!   `p + 1` after, at `r (K - 1) + p`; then row `h - m` of the pixel's
-//!   column at `2 h^2 + m - 1`).
+//! * In: the window rows' ages (row `w` is `i - h + w`; run slot `k` of
+//!   row `w` at `w * (h + 1) + k`), and per entry of `FccColWindow`'s order
+//!   (line `r`, position `p`: row `p` for `p < h`, `p + 1` after, at
+//!   `r (K - 1) + p`; then row `h - m` of the pixel's column at
+//!   `2 h^2 + m - 1`) its hit and its label's matches `eq`.
 //! * Out: `mask`, by run slot; `miss`: a labelled pixel whose own label or
 //!   hit's label its row does not hold (a broken invariant: the bench
 //!   checks it never is).
@@ -21,27 +22,27 @@ use crate::types::vec_of;
 
 #[derive(LogicBlock)]
 pub struct FccRepMatch {
-    pub label: Vec<Signal<In, Bits<16>>>,
     pub age: Vec<Signal<In, Bits<REP_AGE_BITS>>>,
     pub lok: Signal<In, Bit>,
-    pub own_label: Signal<In, Bits<16>>,
+    /// The pixel starts a run (pushed into the centre row).
+    pub start: Signal<In, Bit>,
     pub ent_hit: Vec<Signal<In, Bit>>,
-    pub ent_label: Vec<Signal<In, Bits<16>>>,
+    /// Entry `e`'s label equals run slot `k` of its row, at `e * (h + 1) +
+    /// k`; the pixel's own label, the centre row's slot `k`.
+    pub eq: Vec<Signal<In, Bit>>,
+    pub own_eq: Vec<Signal<In, Bit>>,
     pub mask: Vec<Signal<Out, Bit>>,
     pub miss: Signal<Out, Bit>,
     /// Row `w`'s run slot `k` is newer than its slot `k2`, at
     /// `(w * (h + 1) + k) * (h + 1) + k2`.
     newer: Vec<Signal<Local, Bit>>,
-    /// Entry `e`'s label equals run slot `k` of its row, at
-    /// `e * (h + 1) + k`; then the newest such.
-    eq: Vec<Signal<Local, Bit>>,
+    /// Entry `e`'s newest match; any.
     found: Vec<Signal<Local, Bit>>,
     any: Vec<Signal<Local, Bit>>,
-    /// The pixel's own label against the centre row's run slots; the
-    /// newest match; any.
-    own_eq: Vec<Signal<Local, Bit>>,
+    /// The pixel's own run slot; any.
     own_found: Vec<Signal<Local, Bit>>,
     own_any: Signal<Local, Bit>,
+    zero_age: Constant<Bits<REP_AGE_BITS>>,
     _k: usize,
     _h: usize,
     _n: usize,
@@ -56,21 +57,20 @@ impl FccRepMatch {
         let n = h + 1;
         let ne = k * h;
         Self {
-            label: vec_of(k * n),
             age: vec_of(k * n),
             lok: Default::default(),
-            own_label: Default::default(),
+            start: Default::default(),
             ent_hit: vec_of(ne),
-            ent_label: vec_of(ne),
+            eq: vec_of(ne * n),
+            own_eq: vec_of(n),
             mask: vec_of(k * n),
             miss: Default::default(),
             newer: vec_of(k * n * n),
-            eq: vec_of(ne * n),
             found: vec_of(ne * n),
             any: vec_of(ne),
-            own_eq: vec_of(n),
             own_found: vec_of(n),
             own_any: Default::default(),
+            zero_age: crate::types::kb(0),
             _k: k,
             _h: h,
             _n: n,
@@ -94,33 +94,6 @@ impl Logic for FccRepMatch {
             }
             for w in 0..self.mask.len() {
                 self.mask[w].next = false;
-            }
-            // Entries: each compared with its row's run slots.
-            for km in (self._k - 1)..self._k {
-                for r in 0..self._h {
-                    for p in 0..self._h {
-                        for k in 0..self._n {
-                            self.eq[(r * km + p) * nn + k].next =
-                                self.ent_label[r * km + p].val() == self.label[p * nn + k].val();
-                        }
-                    }
-                    for p in self._h..(self._k - 1) {
-                        for k in 0..self._n {
-                            self.eq[(r * km + p) * nn + k].next = self.ent_label[r * km + p].val()
-                                == self.label[(p + 1) * nn + k].val();
-                        }
-                    }
-                }
-            }
-            for q in self._same..(self._same + 1) {
-                for hh in self._h..(self._h + 1) {
-                    for m in 1..(self._h + 1) {
-                        for k in 0..self._n {
-                            self.eq[(q + m - 1) * nn + k].next = self.ent_label[q + m - 1].val()
-                                == self.label[(hh - m) * nn + k].val();
-                        }
-                    }
-                }
             }
             // The newest match of each entry (`newer` of its row).
             for km in (self._k - 1)..self._k {
@@ -219,11 +192,9 @@ impl Logic for FccRepMatch {
                             }
                         }
                     }
-                    // The pixel's own run: its label among the centre row's,
-                    // the newest first.
-                    for k in 0..self._n {
-                        self.own_eq[k].next = self.own_label.val() == self.label[hh * nn + k].val();
-                    }
+                    // The pixel's own run: the run it pushed if it starts
+                    // one (the centre row's newest), else its label among
+                    // the centre row's, the newest first.
                     self.own_any.next = false;
                     for k in 0..self._n {
                         if self.own_eq[k].val() {
@@ -234,6 +205,11 @@ impl Logic for FccRepMatch {
                             if self.own_eq[k2].val() & self.newer[(hh * nn + k2) * nn + k].val() {
                                 self.own_found[k].next = false;
                             }
+                        }
+                        if self.start.val() {
+                            self.own_found[k].next =
+                                self.age[hh * nn + k].val() == self.zero_age.val();
+                            self.own_any.next = true;
                         }
                         if self.lok.val() & self.own_found[k].val() {
                             self.mask[hh * nn + k].next = true;

@@ -26,6 +26,7 @@ pub mod fcc_rec_beats;
 pub mod fcc_record_out;
 pub mod fcc_record_out_probe;
 pub mod fcc_rep_ahead;
+pub mod fcc_rep_eq;
 pub mod fcc_rep_extract;
 pub mod fcc_rep_first;
 pub mod fcc_rep_front;
