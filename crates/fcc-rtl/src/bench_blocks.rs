@@ -55,6 +55,8 @@ pub enum BenchBlock {
     RecordOut,
     /// The column core's free labels `FccLabelPool`.
     LabelPool,
+    /// The column core's union-find over labels `FccLabelSets`.
+    LabelSets,
     /// The column core's run accumulators `FccRunAcc` behind the scalar
     /// ports of `FccRunAccProbe`.
     RunAcc,
@@ -88,7 +90,7 @@ impl Row {
 
 impl BenchBlock {
     /// Every block with a bench.
-    pub const ALL: [BenchBlock; 20] = [
+    pub const ALL: [BenchBlock; 21] = [
         BenchBlock::Regs,
         BenchBlock::AxilAdapter,
         BenchBlock::MergeTable,
@@ -107,6 +109,7 @@ impl BenchBlock {
         BenchBlock::Acc,
         BenchBlock::RecordOut,
         BenchBlock::LabelPool,
+        BenchBlock::LabelSets,
         BenchBlock::RunAcc,
         BenchBlock::RepJoins,
     ];
@@ -241,6 +244,13 @@ impl BenchBlock {
                     p,
                     crate::column::fcc_label_pool::FccLabelPool::new(p),
                     "fcc_label_pool",
+                )
+            }),
+            BenchBlock::LabelSets => Row::plain("fcc_label_sets", |p| {
+                gen(
+                    p,
+                    crate::column::fcc_label_sets::FccLabelSets::new(p),
+                    "fcc_label_sets",
                 )
             }),
             BenchBlock::RunAcc => Row {

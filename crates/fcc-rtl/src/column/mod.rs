@@ -21,6 +21,7 @@ pub mod fcc_col_window;
 pub mod fcc_col_window_probe;
 pub mod fcc_col_word_split;
 pub mod fcc_label_pool;
+pub mod fcc_label_sets;
 pub mod fcc_open_room;
 pub mod fcc_rec_beats;
 pub mod fcc_record_out;
@@ -50,6 +51,7 @@ pub mod fcc_row_runs_probe;
 pub mod fcc_run_acc;
 pub mod fcc_run_acc_probe;
 pub mod fcc_run_decide;
+pub mod fcc_set_walks;
 
 use rust_hdl::prelude::*;
 
