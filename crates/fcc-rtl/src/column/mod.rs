@@ -8,8 +8,9 @@
 //! run's accumulator (`FccRunAcc`, flushed to its cluster once the run is
 //! over), and the front of the slot table, the representative rows
 //! (`FccRepJoins`: a label of each run's cluster, the joins between labels
-//! a union-find must make; see docs/column-core.md). The rest of the slot
-//! table and the top are to come.
+//! a union-find must make; see docs/column-core.md), and the union-find
+//! over labels behind it (`FccLabelSets`: each root's record slot). The
+//! rest of the slot table and the top are to come.
 
 pub mod fcc_acc_merge;
 pub mod fcc_acc_pixel;
