@@ -5,20 +5,27 @@
 //! root reads the parent at once, in the cycle its word shows, so up to
 //! two walks share the port, one a cycle each.
 //!
-//! Ops are taken in order, at most two at once: a find (`op_join` low:
-//! the root of `op_a`) or a join (the roots of `op_a` and `op_b`, then the
-//! larger root linked under the smaller), a join alone. They retire in
-//! order, one a cycle, each with one event (`ev_*`, registered): a find's
-//! root and its slot; a join's two roots and slots, `ev_merged` when they
-//! differed and the link was written. A join's link is written on the
-//! write port when no make is (makes come first), and no op starts in that
-//! cycle, so every read after it sees it; finds write nothing, so two
-//! overlap. A new op starts only with a free read port, by reading its
-//! first word. The older op is A (a find or a join), the younger B (a
-//! find, beside a find only), each known by a sequence bit its walks
-//! carry; B becomes A when A retires.
+//! Ops are taken in order, two in flight (`FccSetOp`: A the older, B the
+//! younger, known by a sequence bit their walks carry): a find (`op_join`
+//! low: the root of `op_a`) or a join (the roots of `op_a` and `op_b`,
+//! then the larger root linked under the smaller). A new op starts with a
+//! free read port, by reading its first word; a join's second read goes
+//! at the next free cycle. Ops retire in order, one a cycle, each with one
+//! event (`ev_*`, registered): a find's root and its slot; a join's two
+//! roots and slots, `ev_merged` when they differed and the link was
+//! written (when no make takes the write port; makes come first). B
+//! becomes A when A retires.
+//!
+//! A walk that read the linked word before the link was written (B's, or
+//! one started in the link's cycle) found a root that no longer is one: for
+//! two cycles after a link its root, recorded or arriving, is chased to the
+//! root kept (`FccSetOp`), and no op retires meanwhile. Reads issued after
+//! the link's cycle see it.
 
 use rust_hdl::prelude::*;
+
+use super::fcc_label_sets::SLOT_BITS;
+use super::fcc_set_op::FccSetOp;
 
 #[derive(LogicBlock, Default)]
 pub struct FccSetWalks {
@@ -35,7 +42,7 @@ pub struct FccSetWalks {
     pub read_en: Signal<Out, Bit>,
     pub read_addr: Signal<Out, Bits<16>>,
     pub word_parent: Signal<In, Bits<16>>,
-    pub word_slot: Signal<In, Bits<9>>,
+    pub word_slot: Signal<In, Bits<SLOT_BITS>>,
     // The link write: `parent[link_gone] = link_keep`.
     pub link_en: Signal<Out, Bit>,
     pub link_gone: Signal<Out, Bits<16>>,
@@ -44,11 +51,13 @@ pub struct FccSetWalks {
     pub ev_join: Signal<Out, Bit>,
     pub ev_merged: Signal<Out, Bit>,
     pub ev_keep: Signal<Out, Bits<16>>,
-    pub ev_keep_slot: Signal<Out, Bits<9>>,
+    pub ev_keep_slot: Signal<Out, Bits<SLOT_BITS>>,
     pub ev_gone: Signal<Out, Bits<16>>,
-    pub ev_gone_slot: Signal<Out, Bits<9>>,
+    pub ev_gone_slot: Signal<Out, Bits<SLOT_BITS>>,
     /// No op in progress, no event to come.
     pub idle: Signal<Out, Bit>,
+    opa: FccSetOp,
+    opb: FccSetOp,
     // Tokens issued one (`p1`) and two (`p2`) cycles ago.
     p1_valid: DFF<Bit>,
     p1_seq: DFF<Bit>,
@@ -58,43 +67,32 @@ pub struct FccSetWalks {
     p2_seq: DFF<Bit>,
     p2_side: DFF<Bit>,
     p2_addr: DFF<Bits<16>>,
-    a_valid: DFF<Bit>,
-    a_seq: DFF<Bit>,
-    a_join: DFF<Bit>,
-    a_lb: DFF<Bits<16>>,
-    /// A join's second read is still to issue.
-    a_bpend: DFF<Bit>,
-    a_done0: DFF<Bit>,
-    a_root0: DFF<Bits<16>>,
-    a_slot0: DFF<Bits<9>>,
-    a_done1: DFF<Bit>,
-    a_root1: DFF<Bits<16>>,
-    a_slot1: DFF<Bits<9>>,
-    b_valid: DFF<Bit>,
-    b_seq: DFF<Bit>,
-    b_done: DFF<Bit>,
-    b_root: DFF<Bits<16>>,
-    b_slot: DFF<Bits<9>>,
     /// The next op's sequence bit.
     seq: DFF<Bit>,
+    /// The last link, for the two cycles after it (`l1`, `l2`).
+    l1: DFF<Bit>,
+    l2: DFF<Bit>,
+    l_gone: DFF<Bits<16>>,
+    l_keep: DFF<Bits<16>>,
+    l_keep_slot: DFF<Bits<SLOT_BITS>>,
     evv: DFF<Bit>,
     evj: DFF<Bit>,
     evm: DFF<Bit>,
     evk: DFF<Bits<16>>,
-    evks: DFF<Bits<9>>,
+    evks: DFF<Bits<SLOT_BITS>>,
     evg: DFF<Bits<16>>,
-    evgs: DFF<Bits<9>>,
+    evgs: DFF<Bits<SLOT_BITS>>,
+    l_valid: Signal<Local, Bit>,
     retire: Signal<Local, Bit>,
     linking: Signal<Local, Bit>,
     /// A join whose root 1 is the smaller; the roots kept and gone.
     swap: Signal<Local, Bit>,
     keep: Signal<Local, Bits<16>>,
-    keep_slot: Signal<Local, Bits<9>>,
+    keep_slot: Signal<Local, Bits<SLOT_BITS>>,
     gone: Signal<Local, Bits<16>>,
-    gone_slot: Signal<Local, Bits<9>>,
-    /// A and B after this cycle's retire.
+    gone_slot: Signal<Local, Bits<SLOT_BITS>>,
+    /// A and B free after this cycle's retire.
     a_free: Signal<Local, Bit>,
-    a_find: Signal<Local, Bit>,
     b_free: Signal<Local, Bit>,
     take_a: Signal<Local, Bit>,
     take_b: Signal<Local, Bit>,
@@ -114,54 +112,81 @@ impl Logic for FccSetWalks {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clk, p1_valid, p1_seq, p1_side, p1_addr, p2_valid, p2_seq, p2_side, p2_addr,
-            a_valid, a_seq, a_join, a_lb, a_bpend, a_done0, a_root0, a_slot0, a_done1, a_root1,
-            a_slot1, b_valid, b_seq, b_done, b_root, b_slot, seq, evv, evj, evm, evk, evks, evg,
+            self,
+            clk,
+            p1_valid,
+            p1_seq,
+            p1_side,
+            p1_addr,
+            p2_valid,
+            p2_seq,
+            p2_side,
+            p2_addr,
+            seq,
+            l1,
+            l2,
+            l_gone,
+            l_keep,
+            l_keep_slot,
+            evv,
+            evj,
+            evm,
+            evk,
+            evks,
+            evg,
             evgs
         );
+        self.opa.clk.next = self.clk.val();
+        self.opb.clk.next = self.clk.val();
+        self.opa.rst.next = self.rst.val();
+        self.opb.rst.next = self.rst.val();
         // The word that shows: a root ends its walk.
         self.more.next = self.p2_valid.q.val() & (self.word_parent.val() != self.p2_addr.q.val());
         self.w_done.next = self.p2_valid.q.val() & !self.more.val();
-        // Retire A once its walks are done (a join's link waits for the
-        // write port).
-        self.retire.next = self.a_valid.q.val()
-            & self.a_done0.q.val()
-            & (!self.a_join.q.val() | (self.a_done1.q.val() & !self.mk_valid.val()));
+        self.l_valid.next = self.l1.q.val() | self.l2.q.val();
+        // Retire A once its walks are done and chased (a join's link waits
+        // for the write port).
+        self.retire.next = self.opa.valid.val()
+            & self.opa.done0.val()
+            & !self.l_valid.val()
+            & (!self.opa.is_join.val() | (self.opa.done1.val() & !self.mk_valid.val()));
         self.linking.next = self.retire.val()
-            & self.a_join.q.val()
-            & (self.a_root0.q.val() != self.a_root1.q.val());
-        self.swap.next = self.a_join.q.val() & (self.a_root1.q.val() < self.a_root0.q.val());
-        self.keep.next = self.a_root0.q.val();
-        self.keep_slot.next = self.a_slot0.q.val();
-        self.gone.next = self.a_root1.q.val();
-        self.gone_slot.next = self.a_slot1.q.val();
+            & self.opa.is_join.val()
+            & (self.opa.root0.val() != self.opa.root1.val());
+        self.swap.next = self.opa.is_join.val() & (self.opa.root1.val() < self.opa.root0.val());
+        self.keep.next = self.opa.root0.val();
+        self.keep_slot.next = self.opa.slot0.val();
+        self.gone.next = self.opa.root1.val();
+        self.gone_slot.next = self.opa.slot1.val();
         if self.swap.val() {
-            self.keep.next = self.a_root1.q.val();
-            self.keep_slot.next = self.a_slot1.q.val();
-            self.gone.next = self.a_root0.q.val();
-            self.gone_slot.next = self.a_slot0.q.val();
+            self.keep.next = self.opa.root1.val();
+            self.keep_slot.next = self.opa.slot1.val();
+            self.gone.next = self.opa.root0.val();
+            self.gone_slot.next = self.opa.slot0.val();
         }
-        self.a_free.next = !self.a_valid.q.val() | (self.retire.val() & !self.b_valid.q.val());
-        self.a_find.next = (self.a_valid.q.val() & !self.retire.val() & !self.a_join.q.val())
-            | (self.retire.val() & self.b_valid.q.val());
-        self.b_free.next = !self.b_valid.q.val() | self.retire.val();
+        self.a_free.next = !self.opa.valid.val() | (self.retire.val() & !self.opb.valid.val());
+        self.b_free.next = !self.opb.valid.val() | self.retire.val();
         // The read this cycle: a join's second, else a new op's first.
         self.issue.next = false;
-        self.issue_seq.next = self.a_seq.q.val();
+        self.issue_seq.next = self.opa.seq.val();
         self.issue_side.next = true;
-        self.issue_addr.next = self.a_lb.q.val();
+        self.issue_addr.next = self.opa.lb.val();
         self.take_a.next = false;
         self.take_b.next = false;
+        self.opa.b_sent.next = false;
+        self.opb.b_sent.next = false;
         if !self.more.val() {
-            if self.a_valid.q.val() & self.a_bpend.q.val() {
+            if self.opa.valid.val() & self.opa.bpend.val() {
                 self.issue.next = true;
-                self.a_bpend.d.next = false;
-            } else if self.op_valid.val() & !self.linking.val() {
+                self.opa.b_sent.next = true;
+            } else if self.opb.valid.val() & self.opb.bpend.val() {
+                self.issue.next = true;
+                self.issue_seq.next = self.opb.seq.val();
+                self.issue_addr.next = self.opb.lb.val();
+                self.opb.b_sent.next = true;
+            } else if self.op_valid.val() {
                 self.take_a.next = self.a_free.val();
-                self.take_b.next = !self.a_free.val()
-                    & self.a_find.val()
-                    & self.b_free.val()
-                    & !self.op_join.val();
+                self.take_b.next = !self.a_free.val() & self.b_free.val();
             }
         }
         self.op_take.next = self.take_a.val() | self.take_b.val();
@@ -191,27 +216,62 @@ impl Logic for FccSetWalks {
         self.p1_addr.d.next = self.rd_addr.val();
         self.read_en.next = self.rd_valid.val();
         self.read_addr.next = self.rd_addr.val();
-        // The walks' roots.
-        if self.w_done.val() {
-            if self.a_valid.q.val() & (self.p2_seq.q.val() == self.a_seq.q.val()) {
-                if self.p2_side.q.val() {
-                    self.a_done1.d.next = true;
-                    self.a_root1.d.next = self.p2_addr.q.val();
-                    self.a_slot1.d.next = self.word_slot.val();
-                } else {
-                    self.a_done0.d.next = true;
-                    self.a_root0.d.next = self.p2_addr.q.val();
-                    self.a_slot0.d.next = self.word_slot.val();
-                }
-            } else {
-                self.b_done.d.next = true;
-                self.b_root.d.next = self.p2_addr.q.val();
-                self.b_slot.d.next = self.word_slot.val();
-            }
-        }
-        // Retire: the event; B (with a root it finds now) becomes A.
+        // The ops: a new one taken, roots found and chased, B becoming A.
+        self.opa.take.next = self.take_a.val();
+        self.opb.take.next = self.take_b.val();
+        self.opa.take_seq.next = self.seq.q.val();
+        self.opb.take_seq.next = self.seq.q.val();
+        self.opa.take_join.next = self.op_join.val();
+        self.opb.take_join.next = self.op_join.val();
+        self.opa.take_lb.next = self.op_b.val();
+        self.opb.take_lb.next = self.op_b.val();
+        self.opa.shift.next = self.retire.val() & self.opb.valid.val();
+        self.opa.clear.next = self.retire.val();
+        self.opb.shift.next = false;
+        self.opb.clear.next = self.retire.val();
+        self.opa.sh_valid.next = self.opb.valid.val();
+        self.opa.sh_seq.next = self.opb.seq.val();
+        self.opa.sh_join.next = self.opb.is_join.val();
+        self.opa.sh_lb.next = self.opb.lb.val();
+        self.opa.sh_bpend.next = self.opb.bpend.val() & !self.opb.b_sent.val();
+        self.opa.sh_done0.next = self.opb.done0.val();
+        self.opa.sh_root0.next = self.opb.root0.val();
+        self.opa.sh_slot0.next = self.opb.slot0.val();
+        self.opa.sh_done1.next = self.opb.done1.val();
+        self.opa.sh_root1.next = self.opb.root1.val();
+        self.opa.sh_slot1.next = self.opb.slot1.val();
+        self.opb.sh_valid.next = false;
+        self.opb.sh_seq.next = false;
+        self.opb.sh_join.next = false;
+        self.opb.sh_lb.next = self.opb.lb.val();
+        self.opb.sh_bpend.next = false;
+        self.opb.sh_done0.next = false;
+        self.opb.sh_root0.next = self.opb.root0.val();
+        self.opb.sh_slot0.next = self.opb.slot0.val();
+        self.opb.sh_done1.next = false;
+        self.opb.sh_root1.next = self.opb.root1.val();
+        self.opb.sh_slot1.next = self.opb.slot1.val();
+        self.opa.w_done.next = self.w_done.val();
+        self.opb.w_done.next = self.w_done.val();
+        self.opa.w_seq.next = self.p2_seq.q.val();
+        self.opb.w_seq.next = self.p2_seq.q.val();
+        self.opa.w_side.next = self.p2_side.q.val();
+        self.opb.w_side.next = self.p2_side.q.val();
+        self.opa.w_root.next = self.p2_addr.q.val();
+        self.opb.w_root.next = self.p2_addr.q.val();
+        self.opa.w_slot.next = self.word_slot.val();
+        self.opb.w_slot.next = self.word_slot.val();
+        self.opa.l_valid.next = self.l_valid.val();
+        self.opb.l_valid.next = self.l_valid.val();
+        self.opa.l_gone.next = self.l_gone.q.val();
+        self.opb.l_gone.next = self.l_gone.q.val();
+        self.opa.l_keep.next = self.l_keep.q.val();
+        self.opb.l_keep.next = self.l_keep.q.val();
+        self.opa.l_keep_slot.next = self.l_keep_slot.q.val();
+        self.opb.l_keep_slot.next = self.l_keep_slot.q.val();
+        // Retire: the event, the link, kept for the chase.
         self.evv.d.next = self.retire.val();
-        self.evj.d.next = self.a_join.q.val();
+        self.evj.d.next = self.opa.is_join.val();
         self.evm.d.next = self.linking.val();
         self.evk.d.next = self.keep.val();
         self.evks.d.next = self.keep_slot.val();
@@ -220,37 +280,12 @@ impl Logic for FccSetWalks {
         self.link_en.next = self.linking.val();
         self.link_gone.next = self.gone.val();
         self.link_keep.next = self.keep.val();
-        if self.retire.val() {
-            self.a_valid.d.next = self.b_valid.q.val();
-            self.a_seq.d.next = self.b_seq.q.val();
-            self.a_join.d.next = false;
-            self.a_bpend.d.next = false;
-            self.a_done0.d.next = self.b_done.q.val();
-            self.a_root0.d.next = self.b_root.q.val();
-            self.a_slot0.d.next = self.b_slot.q.val();
-            if self.w_done.val()
-                & self.b_valid.q.val()
-                & (self.p2_seq.q.val() == self.b_seq.q.val())
-            {
-                self.a_done0.d.next = true;
-                self.a_root0.d.next = self.p2_addr.q.val();
-                self.a_slot0.d.next = self.word_slot.val();
-            }
-            self.b_valid.d.next = false;
-        }
-        if self.take_a.val() {
-            self.a_valid.d.next = true;
-            self.a_seq.d.next = self.seq.q.val();
-            self.a_join.d.next = self.op_join.val();
-            self.a_lb.d.next = self.op_b.val();
-            self.a_bpend.d.next = self.op_join.val();
-            self.a_done0.d.next = false;
-            self.a_done1.d.next = false;
-        }
-        if self.take_b.val() {
-            self.b_valid.d.next = true;
-            self.b_seq.d.next = self.seq.q.val();
-            self.b_done.d.next = false;
+        self.l1.d.next = self.linking.val();
+        self.l2.d.next = self.l1.q.val();
+        if self.linking.val() {
+            self.l_gone.d.next = self.gone.val();
+            self.l_keep.d.next = self.keep.val();
+            self.l_keep_slot.d.next = self.keep_slot.val();
         }
         self.ev_valid.next = self.evv.q.val();
         self.ev_join.next = self.evj.q.val();
@@ -259,12 +294,12 @@ impl Logic for FccSetWalks {
         self.ev_keep_slot.next = self.evks.q.val();
         self.ev_gone.next = self.evg.q.val();
         self.ev_gone_slot.next = self.evgs.q.val();
-        self.idle.next = !self.a_valid.q.val() & !self.b_valid.q.val() & !self.evv.q.val();
+        self.idle.next = !self.opa.valid.val() & !self.opb.valid.val() & !self.evv.q.val();
         if self.rst.val() {
             self.p1_valid.d.next = false;
             self.p2_valid.d.next = false;
-            self.a_valid.d.next = false;
-            self.b_valid.d.next = false;
+            self.l1.d.next = false;
+            self.l2.d.next = false;
             self.evv.d.next = false;
             self.seq.d.next = false;
         }

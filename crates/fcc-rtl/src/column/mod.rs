@@ -52,6 +52,7 @@ pub mod fcc_row_runs_probe;
 pub mod fcc_run_acc;
 pub mod fcc_run_acc_probe;
 pub mod fcc_run_decide;
+pub mod fcc_set_op;
 pub mod fcc_set_walks;
 
 use rust_hdl::prelude::*;
