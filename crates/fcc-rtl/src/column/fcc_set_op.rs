@@ -70,7 +70,9 @@ pub struct FccSetOp {
     d1: DFF<Bit>,
     r1: DFF<Bits<16>>,
     s1: DFF<Bits<SLOT_BITS>>,
-    /// The arriving root, chased.
+    /// A root arrives for this op (or the one shifted in); the root,
+    /// chased.
+    mine: Signal<Local, Bit>,
     rt: Signal<Local, Bits<16>>,
     sl: Signal<Local, Bits<SLOT_BITS>>,
 }
@@ -98,17 +100,7 @@ impl Logic for FccSetOp {
         if self.b_sent.val() {
             self.bp.d.next = false;
         }
-        if self.w_done.val() & self.v.q.val() & (self.w_seq.val() == self.sq.q.val()) {
-            if self.w_side.val() {
-                self.d1.d.next = true;
-                self.r1.d.next = self.rt.val();
-                self.s1.d.next = self.sl.val();
-            } else {
-                self.d0.d.next = true;
-                self.r0.d.next = self.rt.val();
-                self.s0.d.next = self.sl.val();
-            }
-        }
+        self.mine.next = self.w_done.val() & self.v.q.val() & (self.w_seq.val() == self.sq.q.val());
         if self.clear.val() {
             self.v.d.next = false;
         }
@@ -124,16 +116,18 @@ impl Logic for FccSetOp {
             self.d1.d.next = self.sh_done1.val();
             self.r1.d.next = self.sh_root1.val();
             self.s1.d.next = self.sh_slot1.val();
-            if self.w_done.val() & self.sh_valid.val() & (self.w_seq.val() == self.sh_seq.val()) {
-                if self.w_side.val() {
-                    self.d1.d.next = true;
-                    self.r1.d.next = self.rt.val();
-                    self.s1.d.next = self.sl.val();
-                } else {
-                    self.d0.d.next = true;
-                    self.r0.d.next = self.rt.val();
-                    self.s0.d.next = self.sl.val();
-                }
+            self.mine.next =
+                self.w_done.val() & self.sh_valid.val() & (self.w_seq.val() == self.sh_seq.val());
+        }
+        if self.mine.val() {
+            if self.w_side.val() {
+                self.d1.d.next = true;
+                self.r1.d.next = self.rt.val();
+                self.s1.d.next = self.sl.val();
+            } else {
+                self.d0.d.next = true;
+                self.r0.d.next = self.rt.val();
+                self.s0.d.next = self.sl.val();
             }
         }
         if self.take.val() {
