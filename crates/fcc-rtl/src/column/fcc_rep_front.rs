@@ -3,10 +3,10 @@
 //! table has the row that enters the window with it (`ready`); taking it
 //! shifts the window (`shift`) and pushes the run it starts (`push`). A1
 //! holds the pixel, its hits and their labels' matches (`FccRepEq`) for
-//! `FccRepMatch`; A2 the
-//! representatives of A1's rows as the window has them after this cycle's
-//! rewrite (`rep_next`), for the minimum tree (`v`, padded with `0xFFFF`;
-//! A2's mask says which are present). `miss` is sticky until reset (a cycle after the match).
+//! `FccRepMatch`; A2 the representatives of A1's rows as the window has
+//! them after this cycle's rewrite (`rep_next`), for the minimum tree
+//! (`v`, padded with `0xFFFF`; A2's mask says which are present). `miss`
+//! is sticky until reset (a cycle after the match).
 
 use rust_hdl::prelude::*;
 

@@ -18,7 +18,7 @@
 use rust_hdl::prelude::*;
 
 use super::REP_AGE_BITS;
-use crate::types::vec_of;
+use crate::types::{kb, vec_of};
 
 #[derive(LogicBlock)]
 pub struct FccRepMatch {
@@ -70,7 +70,7 @@ impl FccRepMatch {
             any: vec_of(ne),
             own_found: vec_of(n),
             own_any: Default::default(),
-            zero_age: crate::types::kb(0),
+            zero_age: kb(0),
             _k: k,
             _h: h,
             _n: n,
