@@ -60,6 +60,9 @@ pub enum BenchBlock {
     /// The column core's run accumulators `FccRunAcc` behind the scalar
     /// ports of `FccRunAccProbe`.
     RunAcc,
+    /// The column core's record store `FccSlotRecords` behind the scalar
+    /// ports of `FccSlotRecordsProbe`.
+    SlotRecords,
     /// The column core's representative rows and join filter `FccRepJoins`
     /// behind the scalar ports of `FccRepJoinsProbe`.
     RepJoins,
@@ -90,7 +93,7 @@ impl Row {
 
 impl BenchBlock {
     /// Every block with a bench.
-    pub const ALL: [BenchBlock; 21] = [
+    pub const ALL: [BenchBlock; 22] = [
         BenchBlock::Regs,
         BenchBlock::AxilAdapter,
         BenchBlock::MergeTable,
@@ -111,6 +114,7 @@ impl BenchBlock {
         BenchBlock::LabelPool,
         BenchBlock::LabelSets,
         BenchBlock::RunAcc,
+        BenchBlock::SlotRecords,
         BenchBlock::RepJoins,
     ];
 
@@ -263,6 +267,17 @@ impl BenchBlock {
                     )
                 },
                 waivers: lint::run_acc_waivers,
+            },
+            BenchBlock::SlotRecords => Row {
+                name: "fcc_slot_records_probe",
+                generate: |p| {
+                    gen(
+                        p,
+                        crate::column::fcc_slot_records_probe::FccSlotRecordsProbe::default(),
+                        "fcc_slot_records_probe",
+                    )
+                },
+                waivers: lint::enum_block_waivers,
             },
             BenchBlock::RepJoins => Row {
                 name: "fcc_rep_joins_probe",

@@ -170,6 +170,7 @@ pub use column::fcc_acc_pixel::ACC_PIXEL_LATENCY;
 pub use column::fcc_col_dist::COL_DIST_LATENCY;
 pub use column::fcc_col_window::COL_WINDOW_LATENCY;
 pub use column::fcc_label_pool::POOL_LATENCY;
+pub use column::fcc_slot_records::SLOT_RECORDS_LATENCY;
 pub use column::RunLimits;
 pub use fcc_fanout_reg::MAX_FANOUT;
 pub use fcc_join_queue::JQ_HIGH_LEVEL;

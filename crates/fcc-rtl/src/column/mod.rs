@@ -9,8 +9,10 @@
 //! over), and the front of the slot table, the representative rows
 //! (`FccRepJoins`: a label of each run's cluster, the joins between labels
 //! a union-find must make; see docs/column-core.md), and the union-find
-//! over labels behind it (`FccLabelSets`: each root's record slot). The
-//! rest of the slot table and the top are to come.
+//! over labels behind it (`FccLabelSets`: each root's record slot), and
+//! the record store (`FccSlotRecords`: a record per slot, added to, merged
+//! and read out as clusters close). The rest of the slot table (open-run
+//! counts, closing, the labels' return) and the top are to come.
 
 pub mod fcc_acc_merge;
 pub mod fcc_acc_pixel;
@@ -54,6 +56,11 @@ pub mod fcc_run_acc_probe;
 pub mod fcc_run_decide;
 pub mod fcc_set_op;
 pub mod fcc_set_walks;
+pub mod fcc_slot_issue;
+pub mod fcc_slot_pipe;
+pub mod fcc_slot_records;
+pub mod fcc_slot_records_probe;
+pub mod fcc_slot_used;
 
 use rust_hdl::prelude::*;
 

@@ -1,0 +1,125 @@
+//! `FccSlotIssue`: the order of `FccSlotRecords`' ops and the slots in
+//! flight (docs/column-core.md, item 3). An op is taken when no op in
+//! flight touches its slots; it reads its record (a merge: the gone
+//! record, then the kept one in the next cycle, two halves), and its
+//! halves move through three stages: 1, the block RAM's read; 2, the word
+//! shows and is merged; 3, the merged word is written (or, for a close,
+//! goes out). A read in the cycle of a write to its slot would miss the
+//! write, so stage 3 counts as in flight.
+
+use rust_hdl::prelude::*;
+
+use super::fcc_label_sets::SLOT_BITS;
+
+/// An op on the record store.
+#[derive(Copy, Clone, Debug, PartialEq, LogicState)]
+pub enum SlotOp {
+    /// A run's accumulator added to its cluster's record.
+    Add,
+    /// Two clusters' records as one: `other`'s into `slot`'s.
+    Merge,
+    /// A closed cluster's record out; its slot empty after.
+    Close,
+}
+
+/// What a read is for, as it moves through the stages.
+#[derive(Copy, Clone, Debug, PartialEq, LogicState)]
+pub enum SlotHalf {
+    Add,
+    /// A merge's record that goes (read first).
+    Gone,
+    /// A merge's record that stays (read second, the gone one beside it).
+    Keep,
+    Close,
+}
+
+#[derive(LogicBlock, Default)]
+pub struct FccSlotIssue {
+    pub clk: Signal<In, Clock>,
+    pub rst: Signal<In, Bit>,
+    pub op_valid: Signal<In, Bit>,
+    pub op_kind: Signal<In, SlotOp>,
+    pub op_slot: Signal<In, Bits<SLOT_BITS>>,
+    pub op_other: Signal<In, Bits<SLOT_BITS>>,
+    pub op_take: Signal<Out, Bit>,
+    pub read_en: Signal<Out, Bit>,
+    pub read_addr: Signal<Out, Bits<SLOT_BITS>>,
+    // The stages' halves: stage 1's (its slot, what for) and stage 3's.
+    pub h1: Signal<Out, SlotHalf>,
+    pub s1: Signal<Out, Bits<SLOT_BITS>>,
+    pub v3: Signal<Out, Bit>,
+    pub h3: Signal<Out, SlotHalf>,
+    pub s3: Signal<Out, Bits<SLOT_BITS>>,
+    /// No op in flight.
+    pub idle: Signal<Out, Bit>,
+    busy: Signal<Local, Bit>,
+    take: Signal<Local, Bit>,
+    /// A merge's kept record is read this cycle.
+    second: DFF<Bit>,
+    keep: DFF<Bits<SLOT_BITS>>,
+    sv1: DFF<Bit>,
+    sh1: DFF<SlotHalf>,
+    ss1: DFF<Bits<SLOT_BITS>>,
+    sv2: DFF<Bit>,
+    sh2: DFF<SlotHalf>,
+    ss2: DFF<Bits<SLOT_BITS>>,
+    sv3: DFF<Bit>,
+    sh3: DFF<SlotHalf>,
+    ss3: DFF<Bits<SLOT_BITS>>,
+}
+
+impl Logic for FccSlotIssue {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clk, second, keep, sv1, sh1, ss1, sv2, sh2, ss2, sv3, sh3, ss3);
+        self.busy.next = (self.sv1.q.val() & (self.ss1.q.val() == self.op_slot.val()))
+            | (self.sv2.q.val() & (self.ss2.q.val() == self.op_slot.val()))
+            | (self.sv3.q.val() & (self.ss3.q.val() == self.op_slot.val()));
+        if self.op_kind.val() == SlotOp::Merge {
+            self.busy.next = self.busy.val()
+                | (self.sv1.q.val() & (self.ss1.q.val() == self.op_other.val()))
+                | (self.sv2.q.val() & (self.ss2.q.val() == self.op_other.val()))
+                | (self.sv3.q.val() & (self.ss3.q.val() == self.op_other.val()));
+        }
+        self.take.next =
+            self.op_valid.val() & !self.second.q.val() & !self.busy.val() & !self.rst.val();
+        self.op_take.next = self.take.val();
+        self.read_en.next = self.take.val() | self.second.q.val();
+        self.read_addr.next = self.op_slot.val();
+        self.sh1.d.next = SlotHalf::Add;
+        if self.op_kind.val() == SlotOp::Merge {
+            self.read_addr.next = self.op_other.val();
+            self.sh1.d.next = SlotHalf::Gone;
+        }
+        if self.op_kind.val() == SlotOp::Close {
+            self.sh1.d.next = SlotHalf::Close;
+        }
+        if self.second.q.val() {
+            self.read_addr.next = self.keep.q.val();
+            self.sh1.d.next = SlotHalf::Keep;
+        }
+        self.sv1.d.next = self.take.val() | self.second.q.val();
+        self.ss1.d.next = self.read_addr.val();
+        self.second.d.next = self.take.val() & (self.op_kind.val() == SlotOp::Merge);
+        self.keep.d.next = self.op_slot.val();
+        self.sv2.d.next = self.sv1.q.val();
+        self.sh2.d.next = self.sh1.q.val();
+        self.ss2.d.next = self.ss1.q.val();
+        self.sv3.d.next = self.sv2.q.val();
+        self.sh3.d.next = self.sh2.q.val();
+        self.ss3.d.next = self.ss2.q.val();
+        if self.rst.val() {
+            self.second.d.next = false;
+            self.sv1.d.next = false;
+            self.sv2.d.next = false;
+            self.sv3.d.next = false;
+        }
+        self.h1.next = self.sh1.q.val();
+        self.s1.next = self.ss1.q.val();
+        self.v3.next = self.sv3.q.val();
+        self.h3.next = self.sh3.q.val();
+        self.s3.next = self.ss3.q.val();
+        self.idle.next =
+            !(self.sv1.q.val() | self.sv2.q.val() | self.sv3.q.val() | self.second.q.val());
+    }
+}
