@@ -186,6 +186,9 @@ struct Bench {
     cycle: u64,
     taken: u64,
     closes: u64,
+    idle: bool,
+    /// No op may be taken before this cycle (a reset empties the slots).
+    clear_until: u64,
     what: String,
 }
 
@@ -199,10 +202,29 @@ impl Bench {
             cycle: 0,
             taken: 0,
             closes: 0,
+            idle: false,
+            clear_until: 0,
             what,
         };
-        b.step(false, true);
+        b.reset();
         b
+    }
+
+    /// A reset, then the cycles the block empties its slots in: as many
+    /// as slots, in which no op is taken.
+    fn reset(&mut self) {
+        self.step(false, true);
+        let start = self.cycle;
+        while !self.idle {
+            self.step(false, false);
+        }
+        let cycles = self.cycle - start;
+        assert_eq!(
+            cycles,
+            SLOTS as u64 + 1,
+            "{}: cycles until idle after a reset",
+            self.what
+        );
     }
 
     /// One cycle: the queue's head offered if `offer`; a reset if `rst`.
@@ -213,7 +235,10 @@ impl Bench {
         let o = self.d.step(&inp);
         let now = self.cycle;
         self.cycle += 1;
+        self.idle = o.idle != 0;
         if rst {
+            self.idle = false;
+            self.clear_until = now + 1 + SLOTS as u64;
             self.queue.clear();
             self.due.clear();
             self.slots = vec![Acc::default(); SLOTS];

@@ -6,6 +6,10 @@
 //! shows and is merged; 3, the merged word is written (or, for a close,
 //! goes out). A read in the cycle of a write to its slot would miss the
 //! write, so stage 3 counts as in flight.
+//!
+//! After a reset no op is taken for `2^SLOT_BITS` cycles (`clearing`):
+//! the write port empties every slot (`sweep`), so that the block RAM
+//! needs no initial contents and a slot never read stale.
 
 use rust_hdl::prelude::*;
 
@@ -33,7 +37,7 @@ pub enum SlotHalf {
     Close,
 }
 
-#[derive(LogicBlock, Default)]
+#[derive(LogicBlock)]
 pub struct FccSlotIssue {
     pub clk: Signal<In, Clock>,
     pub rst: Signal<In, Bit>,
@@ -44,13 +48,15 @@ pub struct FccSlotIssue {
     pub op_take: Signal<Out, Bit>,
     pub read_en: Signal<Out, Bit>,
     pub read_addr: Signal<Out, Bits<SLOT_BITS>>,
-    // The stages' halves: stage 1's (its slot, what for) and stage 3's.
+    // The stages' halves: stage 1's (what for) and stage 3's.
     pub h1: Signal<Out, SlotHalf>,
-    pub s1: Signal<Out, Bits<SLOT_BITS>>,
     pub v3: Signal<Out, Bit>,
     pub h3: Signal<Out, SlotHalf>,
     pub s3: Signal<Out, Bits<SLOT_BITS>>,
-    /// No op in flight.
+    /// The slots are being emptied, `sweep` this cycle.
+    pub clearing: Signal<Out, Bit>,
+    pub sweep: Signal<Out, Bits<SLOT_BITS>>,
+    /// No op in flight, none held back.
     pub idle: Signal<Out, Bit>,
     busy: Signal<Local, Bit>,
     take: Signal<Local, Bit>,
@@ -66,12 +72,60 @@ pub struct FccSlotIssue {
     sv3: DFF<Bit>,
     sh3: DFF<SlotHalf>,
     ss3: DFF<Bits<SLOT_BITS>>,
+    clear: DFF<Bit>,
+    next: DFF<Bits<SLOT_BITS>>,
+    zero: Constant<Bits<SLOT_BITS>>,
+    one: Constant<Bits<SLOT_BITS>>,
+    last: Constant<Bits<SLOT_BITS>>,
+}
+
+impl Default for FccSlotIssue {
+    fn default() -> Self {
+        Self {
+            clk: Default::default(),
+            rst: Default::default(),
+            op_valid: Default::default(),
+            op_kind: Default::default(),
+            op_slot: Default::default(),
+            op_other: Default::default(),
+            op_take: Default::default(),
+            read_en: Default::default(),
+            read_addr: Default::default(),
+            h1: Default::default(),
+            v3: Default::default(),
+            h3: Default::default(),
+            s3: Default::default(),
+            clearing: Default::default(),
+            sweep: Default::default(),
+            idle: Default::default(),
+            busy: Default::default(),
+            take: Default::default(),
+            second: Default::default(),
+            keep: Default::default(),
+            sv1: Default::default(),
+            sh1: Default::default(),
+            ss1: Default::default(),
+            sv2: Default::default(),
+            sh2: Default::default(),
+            ss2: Default::default(),
+            sv3: Default::default(),
+            sh3: Default::default(),
+            ss3: Default::default(),
+            clear: Default::default(),
+            next: Default::default(),
+            zero: Constant::new(0_u64.to_bits()),
+            one: Constant::new(1_u64.to_bits()),
+            last: Constant::new(((1_u64 << SLOT_BITS) - 1).to_bits()),
+        }
+    }
 }
 
 impl Logic for FccSlotIssue {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clk, second, keep, sv1, sh1, ss1, sv2, sh2, ss2, sv3, sh3, ss3);
+        dff_setup!(
+            self, clk, second, keep, sv1, sh1, ss1, sv2, sh2, ss2, sv3, sh3, ss3, clear, next
+        );
         self.busy.next = (self.sv1.q.val() & (self.ss1.q.val() == self.op_slot.val()))
             | (self.sv2.q.val() & (self.ss2.q.val() == self.op_slot.val()))
             | (self.sv3.q.val() & (self.ss3.q.val() == self.op_slot.val()));
@@ -81,8 +135,11 @@ impl Logic for FccSlotIssue {
                 | (self.sv2.q.val() & (self.ss2.q.val() == self.op_other.val()))
                 | (self.sv3.q.val() & (self.ss3.q.val() == self.op_other.val()));
         }
-        self.take.next =
-            self.op_valid.val() & !self.second.q.val() & !self.busy.val() & !self.rst.val();
+        self.take.next = self.op_valid.val()
+            & !self.second.q.val()
+            & !self.busy.val()
+            & !self.clear.q.val()
+            & !self.rst.val();
         self.op_take.next = self.take.val();
         self.read_en.next = self.take.val() | self.second.q.val();
         self.read_addr.next = self.op_slot.val();
@@ -108,18 +165,30 @@ impl Logic for FccSlotIssue {
         self.sv3.d.next = self.sv2.q.val();
         self.sh3.d.next = self.sh2.q.val();
         self.ss3.d.next = self.ss2.q.val();
+        if self.clear.q.val() {
+            self.next.d.next = self.next.q.val() + self.one.val();
+            if self.next.q.val() == self.last.val() {
+                self.clear.d.next = false;
+            }
+        }
         if self.rst.val() {
+            self.clear.d.next = true;
+            self.next.d.next = self.zero.val();
             self.second.d.next = false;
             self.sv1.d.next = false;
             self.sv2.d.next = false;
             self.sv3.d.next = false;
         }
         self.h1.next = self.sh1.q.val();
-        self.s1.next = self.ss1.q.val();
         self.v3.next = self.sv3.q.val();
         self.h3.next = self.sh3.q.val();
         self.s3.next = self.ss3.q.val();
-        self.idle.next =
-            !(self.sv1.q.val() | self.sv2.q.val() | self.sv3.q.val() | self.second.q.val());
+        self.clearing.next = self.clear.q.val();
+        self.sweep.next = self.next.q.val();
+        self.idle.next = !(self.sv1.q.val()
+            | self.sv2.q.val()
+            | self.sv3.q.val()
+            | self.second.q.val()
+            | self.clear.q.val());
     }
 }

@@ -1,10 +1,10 @@
-//! `FccSlotPipe`: the records' data path in `FccSlotRecords`: a slot not
-//! in use reads as the empty record (the merge's identity); in stage 2 the
-//! word read is merged with the stage's other record, registered for
+//! `FccSlotPipe`: the records' data path in `FccSlotRecords`: in stage 2
+//! the word read is merged with the stage's other record, registered for
 //! stage 3's write (or, for a close, as the record out). The other record
 //! is known a cycle ahead: an add's accumulator, taken with the op; a
-//! merge's gone record, in stage 2 while its kept half is in stage 1;
-//! none for a close. So the merge starts from registers but for the mask.
+//! merge's gone record, in stage 2 while its kept half is in stage 1; the
+//! empty record (the merge's identity) for a close. So the merge starts
+//! from registers.
 
 use rust_hdl::prelude::*;
 
@@ -17,12 +17,10 @@ pub struct FccSlotPipe {
     pub clk: Signal<In, Clock>,
     pub op_acc: Signal<In, AccWord>,
     pub h1: Signal<In, SlotHalf>,
-    /// Stage 2: the word read and whether its slot is in use.
+    /// Stage 2: the word read.
     pub word: Signal<In, AccWord>,
-    pub used: Signal<In, Bit>,
     /// Stage 3: the merged record.
     pub merged: Signal<Out, AccWord>,
-    masked: Signal<Local, AccWord>,
     a1: DFF<AccWord>,
     b2: DFF<AccWord>,
     m3: DFF<AccWord>,
@@ -37,9 +35,7 @@ impl Default for FccSlotPipe {
             op_acc: Default::default(),
             h1: Default::default(),
             word: Default::default(),
-            used: Default::default(),
             merged: Default::default(),
-            masked: Default::default(),
             a1: Default::default(),
             b2: Default::default(),
             m3: Default::default(),
@@ -54,18 +50,14 @@ impl Logic for FccSlotPipe {
     fn update(&mut self) {
         dff_setup!(self, clk, a1, b2, m3);
         self.a1.d.next = self.op_acc.val();
-        self.masked.next = self.empty.val();
-        if self.used.val() {
-            self.masked.next = self.word.val();
-        }
         self.b2.d.next = self.empty.val();
         if self.h1.val() == SlotHalf::Add {
             self.b2.d.next = self.a1.q.val();
         }
         if self.h1.val() == SlotHalf::Keep {
-            self.b2.d.next = self.masked.val();
+            self.b2.d.next = self.word.val();
         }
-        self.merge.a.next = self.masked.val();
+        self.merge.a.next = self.word.val();
         self.merge.b.next = self.b2.q.val();
         self.m3.d.next = self.merge.out.val();
         self.merged.next = self.m3.q.val();

@@ -12,23 +12,27 @@
 //!   taker has room for it), the slot then empty.
 //!
 //! Ops take effect in order. A slot that no add or merge wrote since it
-//! was emptied (or since reset) holds the empty record. An op waits while
-//! an op in flight touches one of its slots (`FccSlotIssue`), so an op
-//! takes a cycle (a merge two) but one on the slot of the op before it
-//! waits until that one is written: four cycles apart. This block is
-//! wiring.
+//! was emptied holds the empty record: a merge's gone slot and a closed
+//! one are written empty in the cycle a kept or added record would be,
+//! and after a reset every slot is, one a cycle, before an op is taken
+//! (`2^SLOT_BITS` cycles, `idle` low). An op waits while an op in flight
+//! touches one of its slots (`FccSlotIssue`), so an op takes a cycle (a
+//! merge two) but one on the slot of the op before it waits until that
+//! one is written: four cycles apart. This block is wiring.
 
 use rust_hdl::prelude::*;
 
 use super::fcc_label_sets::SLOT_BITS;
 use super::fcc_slot_issue::{FccSlotIssue, SlotHalf, SlotOp};
 use super::fcc_slot_pipe::FccSlotPipe;
-use super::fcc_slot_used::{FccSlotUsed, SLOTS};
 use super::AccWord;
 use crate::fcc_ram::FccRam;
 
 /// Cycles from an op's taking to its write (or its record out).
 pub const SLOT_RECORDS_LATENCY: usize = 3;
+
+/// Record slots.
+pub const SLOTS: usize = 1 << SLOT_BITS;
 
 #[derive(LogicBlock)]
 pub struct FccSlotRecords {
@@ -48,7 +52,7 @@ pub struct FccSlotRecords {
     records: FccRam<AccWord, SLOT_BITS>,
     issue: FccSlotIssue,
     pipe: FccSlotPipe,
-    flags: FccSlotUsed,
+    empty: Constant<AccWord>,
 }
 
 impl Default for FccSlotRecords {
@@ -69,7 +73,7 @@ impl Default for FccSlotRecords {
             records: FccRam::new(SLOTS),
             issue: Default::default(),
             pipe: Default::default(),
-            flags: Default::default(),
+            empty: Constant::new(AccWord::empty()),
         }
     }
 }
@@ -80,9 +84,7 @@ impl Logic for FccSlotRecords {
         self.records.clk.next = self.clk.val();
         self.issue.clk.next = self.clk.val();
         self.pipe.clk.next = self.clk.val();
-        self.flags.clk.next = self.clk.val();
         self.issue.rst.next = self.rst.val();
-        self.flags.rst.next = self.rst.val();
         self.issue.op_valid.next = self.op_valid.val();
         self.issue.op_kind.next = self.op_kind.val();
         self.issue.op_slot.next = self.op_slot.val();
@@ -90,21 +92,22 @@ impl Logic for FccSlotRecords {
         self.op_take.next = self.issue.op_take.val();
         self.records.read_en.next = self.issue.read_en.val();
         self.records.read_addr.next = self.issue.read_addr.val();
-        self.flags.rd_slot.next = self.issue.s1.val();
         self.pipe.op_acc.next = self.op_acc.val();
         self.pipe.h1.next = self.issue.h1.val();
         self.pipe.word.next = self.records.read_data.val();
-        self.pipe.used.next = self.flags.used.val();
-        // Stage 3: an add or a kept record written, a gone or closed slot
-        // emptied, a closed record out.
-        self.flags.wr_slot.next = self.issue.s3.val();
-        self.flags.set.next = self.issue.v3.val()
-            & ((self.issue.h3.val() == SlotHalf::Add) | (self.issue.h3.val() == SlotHalf::Keep));
-        self.flags.clear.next = self.issue.v3.val()
-            & ((self.issue.h3.val() == SlotHalf::Gone) | (self.issue.h3.val() == SlotHalf::Close));
-        self.records.write_en.next = self.flags.set.val();
+        // Stage 3: an add's or a kept record written, a gone or closed
+        // slot emptied, a closed record out; after a reset, every slot
+        // emptied.
+        self.records.write_en.next = self.issue.v3.val() | self.issue.clearing.val();
         self.records.write_addr.next = self.issue.s3.val();
-        self.records.write_data.next = self.pipe.merged.val();
+        self.records.write_data.next = self.empty.val();
+        if (self.issue.h3.val() == SlotHalf::Add) | (self.issue.h3.val() == SlotHalf::Keep) {
+            self.records.write_data.next = self.pipe.merged.val();
+        }
+        if self.issue.clearing.val() {
+            self.records.write_addr.next = self.issue.sweep.val();
+            self.records.write_data.next = self.empty.val();
+        }
         self.out_valid.next = self.issue.v3.val() & (self.issue.h3.val() == SlotHalf::Close);
         self.out_slot.next = self.issue.s3.val();
         self.out_acc.next = self.pipe.merged.val();

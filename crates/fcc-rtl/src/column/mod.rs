@@ -60,7 +60,6 @@ pub mod fcc_slot_issue;
 pub mod fcc_slot_pipe;
 pub mod fcc_slot_records;
 pub mod fcc_slot_records_probe;
-pub mod fcc_slot_used;
 
 use rust_hdl::prelude::*;
 
