@@ -1,13 +1,15 @@
 //! The column core's record store `FccSlotRecords` under Verilator (behind
 //! the scalar ports of `FccSlotRecordsProbe`), against a model of its
-//! contract (docs/column-core.md, item 3) over the golden record
-//! accumulator (`fcc_golden::Acc`, spec §9.3): runs' accumulators added to
-//! slots, slots merged into others, closed slots read out, in any order
-//! over few slots (an op on the slot of the op before it, often) and many;
-//! ops offered in bursts and sparse; a reset mid-run. Every closed record
-//! is checked, field by field, in the cycle it must come out, and the
-//! cycles an op takes are counted exactly. A mismatch prints the close,
-//! expected, got and the seed.
+//! contract (docs/column-core.md, items 3 and 4) over the golden record
+//! accumulator (`fcc_golden::Acc`, spec §9.3) and the holds of spec §9.2:
+//! runs started and flushed into slots, slots merged into others, closes
+//! at a column (a record leaves only if nothing holds its cluster) and at
+//! the frame end, in any order over few slots (an op on the slot of the op
+//! before it, often) and many; ops offered in bursts and sparse; resets
+//! mid-run. Every record out and every quiet report is checked, field by
+//! field, in the cycle it is due, none comes that is not, and the cycles
+//! an op takes are counted exactly. A mismatch prints what, expected, got
+//! and the seed.
 
 use std::collections::VecDeque;
 
@@ -23,11 +25,17 @@ c_struct! {
     /// Inputs of one cycle, named as the ports.
     pub struct SrIn {
         pub rst: u8,
+        pub half: u8,
         pub op_valid: u8,
         pub merge: u8,
         pub close: u8,
+        pub frame_end: u8,
         pub slot: u16,
         pub other: u16,
+        pub col: u16,
+        pub h_open: u8,
+        pub h_ring: u8,
+        pub h_first: u32,
         pub a_points: u32,
         pub a_min_col: u16,
         pub a_max_col: u16,
@@ -61,6 +69,11 @@ c_struct! {
         pub op_take: u8,
         pub out_valid: u8,
         pub out_slot: u16,
+        pub q_valid: u8,
+        pub q_slot: u16,
+        pub q_first: u32,
+        pub q_last: u16,
+        pub q_col: u16,
         pub idle: u8,
         pub o_points: u32,
         pub o_min_col: u16,
@@ -91,13 +104,26 @@ c_struct! {
 
 /// Record slots.
 const SLOTS: usize = 512;
+/// No first pixel: the empty holds'.
+const NO_FIRST: u32 = (1 << 19) - 1;
+
+/// A run's start or flush: its accumulator (none for a start), the open
+/// runs it adds (+1 or -1), its ring flag and first pixel.
+#[derive(Debug, Clone, Copy)]
+struct Word {
+    acc: Acc,
+    open: i8,
+    ring: bool,
+    first: u32,
+}
 
 #[derive(Debug, Clone, Copy)]
 enum Op {
-    Add(u16, Acc),
-    /// Keep, gone.
-    Merge(u16, u16),
-    Close(u16),
+    Add(u16, Word, u16),
+    /// Keep, gone, column.
+    Merge(u16, u16, u16),
+    Close(u16, u16),
+    End(u16),
 }
 
 impl Op {
@@ -107,9 +133,10 @@ impl Op {
             ..SrIn::default()
         };
         match *self {
-            Op::Add(s, ref a) => {
-                i.slot = s;
-                let c = CoreAcc::of(a);
+            Op::Add(s, ref w, col) => {
+                (i.slot, i.col) = (s, col);
+                (i.h_open, i.h_ring, i.h_first) = (w.open as u8, w.ring as u8, w.first);
+                let c = CoreAcc::of(&w.acc);
                 i.a_points = c.points as u32;
                 i.a_min_col = c.min_col as u16;
                 i.a_max_col = c.max_col as u16;
@@ -135,10 +162,57 @@ impl Op {
                 i.a_sab = c.sab;
                 i.a_seam = c.seam as u8;
             }
-            Op::Merge(k, g) => (i.merge, i.slot, i.other) = (1, k, g),
-            Op::Close(s) => (i.close, i.slot) = (1, s),
+            Op::Merge(k, g, col) => (i.merge, i.slot, i.other, i.col) = (1, k, g, col),
+            Op::Close(s, col) => (i.close, i.slot, i.col) = (1, s, col),
+            Op::End(s) => (i.frame_end, i.slot) = (1, s),
         }
         i
+    }
+}
+
+/// A slot in the model: the record and the holds.
+#[derive(Debug, Clone, Copy)]
+struct Slot {
+    acc: Acc,
+    open: u8,
+    ring: bool,
+    first: u32,
+    quiet: u16,
+}
+
+impl Default for Slot {
+    fn default() -> Self {
+        Slot {
+            acc: Acc::default(),
+            open: 0,
+            ring: false,
+            first: NO_FIRST,
+            quiet: 0,
+        }
+    }
+}
+
+impl Slot {
+    /// Take in `o`'s runs at column `col`; the quiet report if the slot
+    /// is left quiet: (first pixel, last column, quiet column).
+    fn merge(&mut self, o: &Slot, col: u16) -> Option<(u32, u16, u16)> {
+        self.acc.merge(&o.acc);
+        self.open = self.open.wrapping_add(o.open);
+        self.ring |= o.ring;
+        self.first = self.first.min(o.first);
+        if self.open == 0 {
+            self.quiet = col;
+        }
+        let last = CoreAcc::of(&self.acc).max_col as u16;
+        (self.open == 0 && !self.ring).then_some((self.first, last, self.quiet))
+    }
+
+    /// Whether a close at `col` takes the record (`None`: at the frame end).
+    fn leaves(&self, col: Option<u16>, half: u16) -> bool {
+        let last = CoreAcc::of(&self.acc).max_col as u16;
+        self.acc.points > 0
+            && col
+                .is_none_or(|c| self.open == 0 && !self.ring && self.quiet <= c && last + half <= c)
     }
 }
 
@@ -175,17 +249,28 @@ fn got(o: &SrOut) -> CoreAcc {
     a
 }
 
+/// What the runs saw, to show each rule was exercised.
+#[derive(Debug, Default, Clone, Copy)]
+struct Seen {
+    ops: u64,
+    out_close: u64,
+    out_end: u64,
+    closes_held: u64,
+    quiet: u64,
+}
+
 /// The block, the ops waiting for it, the model (each op applied as the
-/// block takes it, ops taking effect in order) and the closed records
-/// due, each with the cycle it must come out in.
+/// block takes it, ops taking effect in order), the records and quiet
+/// reports due, each with the cycle it must come out in.
 struct Bench {
     d: PlainDut<SrIn, SrOut>,
+    half: u16,
     queue: VecDeque<Op>,
-    slots: Vec<Acc>,
+    slots: Vec<Slot>,
     due: VecDeque<(u64, u16, CoreAcc)>,
+    quiet: VecDeque<(u64, u16, (u32, u16, u16))>,
     cycle: u64,
-    taken: u64,
-    closes: u64,
+    seen: Seen,
     idle: bool,
     /// No op may be taken before this cycle (a reset empties the slots).
     clear_until: u64,
@@ -193,15 +278,16 @@ struct Bench {
 }
 
 impl Bench {
-    fn new(model: &PlainModel<SrIn, SrOut>, what: String) -> Bench {
+    fn new(model: &PlainModel<SrIn, SrOut>, half: u16, what: String) -> Bench {
         let mut b = Bench {
             d: PlainDut::new(model.clone()),
+            half,
             queue: VecDeque::new(),
-            slots: vec![Acc::default(); SLOTS],
+            slots: vec![Slot::default(); SLOTS],
             due: VecDeque::new(),
+            quiet: VecDeque::new(),
             cycle: 0,
-            taken: 0,
-            closes: 0,
+            seen: Seen::default(),
             idle: false,
             clear_until: 0,
             what,
@@ -232,6 +318,7 @@ impl Bench {
         let head = self.queue.front().copied().filter(|_| offer && !rst);
         let mut inp = head.map_or_else(SrIn::default, |op| op.input());
         inp.rst = rst as u8;
+        inp.half = self.half as u8;
         let o = self.d.step(&inp);
         let now = self.cycle;
         self.cycle += 1;
@@ -241,31 +328,55 @@ impl Bench {
             self.clear_until = now + 1 + SLOTS as u64;
             self.queue.clear();
             self.due.clear();
-            self.slots = vec![Acc::default(); SLOTS];
+            self.quiet.clear();
+            self.slots = vec![Slot::default(); SLOTS];
             return;
         }
+        self.check_out(&o, now);
+        self.check_quiet(&o, now);
+        if o.idle != 0 {
+            assert!(
+                self.due.is_empty() && self.quiet.is_empty(),
+                "{}, cycle {now}: idle with {} records and {} quiet reports due",
+                self.what,
+                self.due.len(),
+                self.quiet.len()
+            );
+        }
+        if o.op_take != 0 {
+            let op =
+                head.unwrap_or_else(|| panic!("{}, cycle {now}: op_take with no op", self.what));
+            assert!(
+                now >= self.clear_until,
+                "{}, cycle {now}: an op taken while the slots are emptied (until cycle {})",
+                self.what,
+                self.clear_until
+            );
+            self.queue.pop_front();
+            self.apply(op, now);
+        }
+    }
+
+    fn check_out(&mut self, o: &SrOut, now: u64) {
         if o.out_valid != 0 {
             let (when, slot, want) = self.due.pop_front().unwrap_or_else(|| {
                 panic!(
-                    "{}, cycle {now}: a record out (slot {}) with no close due",
+                    "{}, cycle {now}: a record out (slot {}) with none due",
                     self.what, o.out_slot
                 )
             });
             assert_eq!(
                 (when, slot),
                 (now, o.out_slot),
-                "{}, close {}: (cycle, slot) expected (left), got (right)",
-                self.what,
-                self.closes
+                "{}: record out: (cycle, slot) expected (left), got (right)",
+                self.what
             );
             assert_eq!(
-                got(&o),
+                got(o),
                 want,
-                "{}, cycle {now}, close {} (slot {slot}): expected (left), got (right)",
-                self.what,
-                self.closes
+                "{}, cycle {now}, the record of slot {slot}: expected (left), got (right)",
+                self.what
             );
-            self.closes += 1;
         } else if let Some(&(when, slot, _)) = self.due.front() {
             assert!(
                 when > now,
@@ -273,58 +384,99 @@ impl Bench {
                 self.what
             );
         }
-        if o.idle != 0 {
-            assert!(
-                self.due.is_empty(),
-                "{}, cycle {now}: idle with {} records due",
-                self.what,
-                self.due.len()
+    }
+
+    fn check_quiet(&mut self, o: &SrOut, now: u64) {
+        if o.q_valid != 0 {
+            let (when, slot, want) = self.quiet.pop_front().unwrap_or_else(|| {
+                panic!(
+                    "{}, cycle {now}: slot {} reported quiet, none due",
+                    self.what, o.q_slot
+                )
+            });
+            assert_eq!(
+                (when, slot, want),
+                (now, o.q_slot, (o.q_first, o.q_last, o.q_col)),
+                "{}: quiet report (cycle, slot, (first pixel, last column, quiet column)): \
+                 expected (left), got (right)",
+                self.what
             );
-        }
-        if o.op_take != 0 {
-            let op =
-                head.unwrap_or_else(|| panic!("{}, cycle {now}: op_take with no op", self.what));
-            self.queue.pop_front();
-            self.apply(op, now);
+            self.seen.quiet += 1;
+        } else if let Some(&(when, slot, _)) = self.quiet.front() {
+            assert!(
+                when > now,
+                "{}: slot {slot}'s quiet report, due at cycle {when}, did not come",
+                self.what
+            );
         }
     }
 
     fn apply(&mut self, op: Op, now: u64) {
-        self.taken += 1;
-        match op {
-            Op::Add(s, a) => self.slots[s as usize].merge(&a),
-            Op::Merge(k, g) => {
+        self.seen.ops += 1;
+        let when = now + SLOT_RECORDS_LATENCY as u64;
+        let report = match op {
+            Op::Add(s, w, col) => {
+                let run = Slot {
+                    acc: w.acc,
+                    open: w.open as u8,
+                    ring: w.ring,
+                    first: w.first,
+                    quiet: 0,
+                };
+                self.slots[s as usize].merge(&run, col).map(|q| (s, q))
+            }
+            Op::Merge(k, g, col) => {
                 assert_ne!(k, g, "{}: the bench merges a slot into itself", self.what);
                 let gone = std::mem::take(&mut self.slots[g as usize]);
-                self.slots[k as usize].merge(&gone);
+                // The kept half is read, and written, a cycle after the gone.
+                let kept = self.slots[k as usize].merge(&gone, col);
+                if let Some(q) = kept {
+                    self.quiet.push_back((when + 1, k, q));
+                }
+                None
             }
-            Op::Close(s) => {
-                let r = std::mem::take(&mut self.slots[s as usize]);
-                let when = now + SLOT_RECORDS_LATENCY as u64;
-                self.due.push_back((when, s, CoreAcc::of(&r)));
-            }
+            Op::Close(s, col) => self.close(s, Some(col), when),
+            Op::End(s) => self.close(s, None, when),
+        };
+        if let Some((s, q)) = report {
+            self.quiet.push_back((when, s, q));
         }
     }
 
-    /// Offer every op queued, then close `slots` and step until every
-    /// record due is out and the block says idle (at most `limit` cycles).
+    fn close(&mut self, s: u16, col: Option<u16>, when: u64) -> Option<(u16, (u32, u16, u16))> {
+        if self.slots[s as usize].leaves(col, self.half) {
+            let r = std::mem::take(&mut self.slots[s as usize]);
+            self.due.push_back((when, s, CoreAcc::of(&r.acc)));
+            match col {
+                Some(_) => self.seen.out_close += 1,
+                None => self.seen.out_end += 1,
+            }
+        } else if col.is_some() {
+            self.seen.closes_held += 1;
+        }
+        None
+    }
+
+    /// Offer every op queued, then close `slots` at the frame end and step
+    /// until every record and report due is out and the block says idle
+    /// (at most `limit` cycles).
     fn drain(&mut self, slots: impl IntoIterator<Item = u16>, limit: u64) {
-        self.queue.extend(slots.into_iter().map(Op::Close));
+        self.queue.extend(slots.into_iter().map(Op::End));
         let start = self.cycle;
-        while !self.queue.is_empty() || !self.due.is_empty() {
+        while !self.queue.is_empty() || !self.due.is_empty() || !self.quiet.is_empty() || !self.idle
+        {
             self.step(true, false);
             assert!(
                 self.cycle - start < limit,
-                "{}: {} ops and {} records left after {limit} cycles",
+                "{}: {} ops, {} records and {} reports left after {limit} cycles",
                 self.what,
                 self.queue.len(),
-                self.due.len()
+                self.due.len(),
+                self.quiet.len()
             );
         }
         self.step(false, false);
-        let o = self.d.step(&SrIn::default());
-        self.cycle += 1;
-        assert!(o.idle != 0, "{}: not idle once every op is done", self.what);
+        assert!(self.idle, "{}: not idle once every op is done", self.what);
     }
 }
 
@@ -338,52 +490,107 @@ fn coord(rng: &mut ChaCha8Rng) -> i16 {
     }
 }
 
-/// A run's accumulator: 1 to 20 pixels of one row, columns on either side
-/// of `C/2`, coordinates at the ends of the Q7.8 range among them.
-fn run_acc(rng: &mut ChaCha8Rng, cols: u32) -> Acc {
+/// A run's accumulator: 1 to 12 pixels of one row, ending at most 12
+/// columns before `col` (a frame of `cols` columns), coordinates at the
+/// ends of the Q7.8 range among them.
+fn run_acc(rng: &mut ChaCha8Rng, col: u32, cols: u32) -> Acc {
     let mut a = Acc::default();
     let row = rng.gen_range(0..128);
-    let first = rng.gen_range(0..cols);
-    for k in 0..rng.gen_range(1..=20u32) {
+    let n = rng.gen_range(1..=12u32);
+    let last = col.saturating_sub(rng.gen_range(0..=12));
+    for c in last.saturating_sub(n - 1)..=last {
         let p: Point = [coord(rng), coord(rng), coord(rng)];
-        a.add(row, (first + k) % cols, p, cols / 2);
+        a.add(row, c, p, cols / 2);
     }
     a.seam = rng.gen_range(0..10) == 0;
     a
 }
 
-/// Seeded traffic over `pool` slots (of the 512, from a random base): adds,
-/// merges and closes offered at rates changed every 300 cycles, a reset
-/// at `reset_at`; every slot closed at the end. Returns (ops, closes).
+/// A run's start at column `col`: one run open, a first pixel of this
+/// column, the ring flag now and then.
+fn start(rng: &mut ChaCha8Rng, col: u32) -> Word {
+    Word {
+        acc: Acc::default(),
+        open: 1,
+        ring: rng.gen_range(0..40) == 0,
+        first: (col << 7) | rng.gen_range(0..128),
+    }
+}
+
+/// A run's flush: its accumulator, one run open less.
+fn flush(rng: &mut ChaCha8Rng, col: u32, cols: u32) -> Word {
+    Word {
+        acc: run_acc(rng, col, cols),
+        open: -1,
+        ring: false,
+        first: NO_FIRST,
+    }
+}
+
+/// Seeded traffic over `pool` slots (of the 512, from a random base) in
+/// frames whose columns advance every few cycles: runs started and
+/// flushed (a flush where the slot has runs open, mostly), merges, closes
+/// at the column or a few later, frame-end closes now and then, offered
+/// at rates changed every 300 cycles; a reset at `reset_at`; every slot
+/// closed at the end.
 fn random_run(
     model: &PlainModel<SrIn, SrOut>,
     seed: u64,
     pool: usize,
     cycles: u64,
     reset_at: Option<u64>,
-) -> (u64, u64) {
+) -> Seen {
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let cols = [512, 1024, 2048, 4096][(seed % 4) as usize];
+    let half = rng.gen_range(1..=5);
     let base = rng.gen_range(0..SLOTS);
     let slot_of = |k: usize| ((base + k) % SLOTS) as u16;
-    let what = format!("seed {seed:#x}, {pool} slots");
-    let mut b = Bench::new(model, what);
+    let what = format!("seed {seed:#x}, {pool} slots, h = {half}");
+    let mut b = Bench::new(model, half, what);
     // The points a slot may reach: the accumulator's widths hold 2^19.
     const FULL: u32 = 300_000;
-    let mut rate = 1.0;
+    let (mut rate, mut col) = (1.0, 0u32);
     for cycle in 0..cycles {
         if cycle % 300 == 0 {
             rate = [1.0, 0.7, 0.3, 0.05][rng.gen_range(0..4)];
         }
+        if rng.gen_range(0..6) == 0 {
+            col = (col + 1) % cols;
+        }
         if b.queue.len() < 4 && rng.gen_bool(rate) {
             let s = slot_of(rng.gen_range(0..pool));
             let g = slot_of(rng.gen_range(0..pool));
-            let points = |x: u16| b.slots[x as usize].points;
+            let slot = |x: u16| b.slots[x as usize];
+            let c16 = col as u16;
             let op = match rng.gen_range(0..100) {
-                _ if points(s) > FULL => Op::Close(s),
-                0..=59 => Op::Add(s, run_acc(&mut rng, cols)),
-                60..=84 if g != s && points(s) + points(g) <= FULL => Op::Merge(s, g),
-                _ => Op::Close(s),
+                _ if slot(s).acc.points > FULL => Op::End(s),
+                0..=24 => Op::Add(s, start(&mut rng, col), c16),
+                25..=49 if slot(s).open > 0 || rng.gen_range(0..8) == 0 => {
+                    Op::Add(s, flush(&mut rng, col, cols), c16)
+                }
+                25..=64 if g != s && slot(s).acc.points + slot(g).acc.points <= FULL => {
+                    Op::Merge(s, g, c16)
+                }
+                98..=99 => Op::End(s),
+                65..=89 => {
+                    // A quiet slot, closed at about its due column: just
+                    // before, at or just after `last + h`.
+                    let k0 = rng.gen_range(0..pool);
+                    let quiet = (0..pool).map(|k| slot_of((k0 + k) % pool)).find(|&x| {
+                        let q = slot(x);
+                        q.open == 0 && !q.ring && q.acc.points > 0
+                    });
+                    match quiet {
+                        Some(x) => {
+                            let due = (slot(x).acc.max_col + u32::from(half))
+                                .max(u32::from(slot(x).quiet));
+                            let at = (due + rng.gen_range(0..=2)).saturating_sub(1);
+                            Op::Close(x, at.min(cols - 1) as u16)
+                        }
+                        None => Op::Close(s, c16),
+                    }
+                }
+                _ => Op::Close(s, (col + rng.gen_range(0..=6)).min(cols - 1) as u16),
             };
             b.queue.push_back(op);
         }
@@ -391,7 +598,7 @@ fn random_run(
         b.step(offer, reset_at == Some(cycle));
     }
     b.drain((0..pool).map(slot_of), 20 * pool as u64 + 1_000);
-    (b.taken, b.closes)
+    b.seen
 }
 
 fn model() -> PlainModel<SrIn, SrOut> {
@@ -400,9 +607,9 @@ fn model() -> PlainModel<SrIn, SrOut> {
 }
 
 #[test]
-fn records_follow_adds_merges_and_closes_in_order() {
+fn records_and_holds_follow_the_ops_in_order() {
     let model = model();
-    let (mut ops, mut closes) = (0, 0);
+    let mut all = Seen::default();
     for (seed, pool, reset_at) in [
         (0x51, 2, None),
         (0x52, 5, Some(4_000)),
@@ -411,22 +618,29 @@ fn records_follow_adds_merges_and_closes_in_order() {
         (0x55, 3, None),
         (0x56, 64, Some(100)),
     ] {
-        let (o, c) = random_run(&model, seed, pool, 30_000, reset_at);
-        println!("seed {seed:#x}, {pool} slots: {o} ops, {c} records out");
-        ops += o;
-        closes += c;
+        let s = random_run(&model, seed, pool, 30_000, reset_at);
+        println!("seed {seed:#x}, {pool} slots: {s:?}");
+        all.ops += s.ops;
+        all.out_close += s.out_close;
+        all.out_end += s.out_end;
+        all.closes_held += s.closes_held;
+        all.quiet += s.quiet;
     }
-    println!("in all: {ops} ops, {closes} records out");
+    println!("in all: {all:?}");
     assert!(
-        ops > 50_000 && closes > 10_000,
-        "too little traffic: {ops} ops, {closes} closes"
+        all.ops > 50_000
+            && all.out_close > 2_000
+            && all.out_end > 500
+            && all.closes_held > 10_000
+            && all.quiet > 4_000,
+        "too little of some traffic: {all:?}"
     );
 }
 
 /// The cycles from offering `ops` at once to the last one taken, and the
 /// records of `touched` slots then checked.
 fn cycles_for(model: &PlainModel<SrIn, SrOut>, what: &str, ops: Vec<Op>, touched: &[u16]) -> u64 {
-    let mut b = Bench::new(model, what.to_string());
+    let mut b = Bench::new(model, 3, what.to_string());
     b.queue.extend(ops);
     let start = b.cycle;
     while !b.queue.is_empty() {
@@ -443,32 +657,39 @@ fn an_op_a_cycle_and_four_on_the_slot_just_written() {
     let model = model();
     let mut rng = ChaCha8Rng::seed_from_u64(0x57);
     let n = 400;
-    let mut acc = || run_acc(&mut rng, 2048);
+    let mut word = |k: usize| match k % 2 {
+        0 => start(&mut rng, 100),
+        _ => flush(&mut rng, 100, 2048),
+    };
     let all: Vec<u16> = (0..SLOTS as u16).collect();
     let cases: Vec<(&str, Vec<Op>, u64)> = vec![
         // Every op on a slot of its own: one a cycle.
         (
             "adds, each to another slot than the last 3",
-            (0..n).map(|k| Op::Add((k % SLOTS) as u16, acc())).collect(),
+            (0..n)
+                .map(|k| Op::Add((k % SLOTS) as u16, word(k / SLOTS), 100))
+                .collect(),
             n as u64,
         ),
         // Each op waits for the write of the one before: four cycles.
         (
             "adds to one slot",
-            (0..n).map(|_| Op::Add(7, acc())).collect(),
+            (0..n).map(|k| Op::Add(7, word(k), 100)).collect(),
             4 * (n as u64 - 1) + 1,
         ),
         // Two slots in turn: two ops every four cycles.
         (
             "adds to two slots in turn",
-            (0..n).map(|k| Op::Add((k % 2) as u16, acc())).collect(),
+            (0..n)
+                .map(|k| Op::Add((k % 2) as u16, word(k / 2), 100))
+                .collect(),
             2 * (n as u64 - 2) + 2,
         ),
         // A merge reads two records: two cycles.
         (
             "merges of different pairs",
             (0..n / 2)
-                .map(|k| Op::Merge((2 * k) as u16, (2 * k + 1) as u16))
+                .map(|k| Op::Merge((2 * k) as u16, (2 * k + 1) as u16, 100))
                 .collect(),
             n as u64 - 1,
         ),

@@ -277,7 +277,7 @@ impl BenchBlock {
                         "fcc_slot_records_probe",
                     )
                 },
-                waivers: lint::enum_block_waivers,
+                waivers: lint::slot_records_waivers,
             },
             BenchBlock::RepJoins => Row {
                 name: "fcc_rep_joins_probe",

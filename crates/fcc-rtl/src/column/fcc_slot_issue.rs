@@ -22,8 +22,11 @@ pub enum SlotOp {
     Add,
     /// Two clusters' records as one: `other`'s into `slot`'s.
     Merge,
-    /// A closed cluster's record out; its slot empty after.
+    /// A cluster's record out if nothing holds it after the op's column
+    /// (`FccSlotCheck`); its slot empty after.
     Close,
+    /// At the frame end: a cluster's record out, whatever holds it.
+    End,
 }
 
 /// What a read is for, as it moves through the stages.
@@ -35,6 +38,7 @@ pub enum SlotHalf {
     /// A merge's record that stays (read second, the gone one beside it).
     Keep,
     Close,
+    End,
 }
 
 #[derive(LogicBlock)]
@@ -150,6 +154,9 @@ impl Logic for FccSlotIssue {
         }
         if self.op_kind.val() == SlotOp::Close {
             self.sh1.d.next = SlotHalf::Close;
+        }
+        if self.op_kind.val() == SlotOp::End {
+            self.sh1.d.next = SlotHalf::End;
         }
         if self.second.q.val() {
             self.read_addr.next = self.keep.q.val();

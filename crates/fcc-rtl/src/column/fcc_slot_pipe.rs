@@ -1,46 +1,88 @@
-//! `FccSlotPipe`: the records' data path in `FccSlotRecords`: in stage 2
-//! the word read is merged with the stage's other record, registered for
-//! stage 3's write (or, for a close, as the record out). The other record
-//! is known a cycle ahead: an add's accumulator, taken with the op; a
-//! merge's gone record, in stage 2 while its kept half is in stage 1; the
-//! empty record (the merge's identity) for a close. So the merge starts
-//! from registers.
+//! `FccSlotPipe`: the records' data path in `FccSlotRecords`. In stage 2
+//! the word read is merged with the stage's other word (`FccAccMerge` for
+//! the record, `FccHoldsMerge` for the holds, at the op's column),
+//! registered for stage 3's write; a close's word is checked
+//! (`FccSlotCheck`), and stage 3 says whether it leaves (`leaves`, the
+//! record out) and whether a merged word is quiet (`quiet`). The other
+//! word is known a cycle ahead: an add's, taken with the op; a merge's
+//! gone word, in stage 2 while its kept half is in stage 1; the empty word
+//! (the merges' identity) for a close. So the merges start from registers,
+//! and so does the check: the close's column less `h` is worked out in
+//! stage 1.
 
 use rust_hdl::prelude::*;
 
 use super::fcc_acc_merge::FccAccMerge;
+use super::fcc_holds_merge::FccHoldsMerge;
+use super::fcc_slot_check::FccSlotCheck;
 use super::fcc_slot_issue::SlotHalf;
-use super::AccWord;
+use super::{AccWord, SlotHolds, SlotWord};
 
 #[derive(LogicBlock)]
 pub struct FccSlotPipe {
     pub clk: Signal<In, Clock>,
-    pub op_acc: Signal<In, AccWord>,
+    /// An op is taken this cycle, with its word and column.
+    pub take: Signal<In, Bit>,
+    pub op_word: Signal<In, SlotWord>,
+    pub op_col: Signal<In, Bits<12>>,
+    pub half: Signal<In, Bits<3>>,
     pub h1: Signal<In, SlotHalf>,
     /// Stage 2: the word read.
-    pub word: Signal<In, AccWord>,
-    /// Stage 3: the merged record.
-    pub merged: Signal<Out, AccWord>,
-    a1: DFF<AccWord>,
-    b2: DFF<AccWord>,
-    m3: DFF<AccWord>,
-    merge: FccAccMerge,
-    empty: Constant<AccWord>,
+    pub word: Signal<In, SlotWord>,
+    /// Stage 3: the merged word, whether a close's record leaves, whether
+    /// the merged word is quiet.
+    pub merged: Signal<Out, SlotWord>,
+    pub leaves: Signal<Out, Bit>,
+    pub quiet: Signal<Out, Bit>,
+    mw: Signal<Local, SlotWord>,
+    wa: Signal<Local, AccWord>,
+    wh: Signal<Local, SlotHolds>,
+    a1: DFF<SlotWord>,
+    c1: DFF<Bits<12>>,
+    b2: DFF<SlotWord>,
+    c2: DFF<Bits<12>>,
+    l2: DFF<Bits<13>>,
+    k2: DFF<Bit>,
+    e2: DFF<Bit>,
+    m3: DFF<SlotWord>,
+    l3: DFF<Bit>,
+    q3: DFF<Bit>,
+    acc: FccAccMerge,
+    holds: FccHoldsMerge,
+    check: FccSlotCheck,
+    empty: Constant<SlotWord>,
 }
 
 impl Default for FccSlotPipe {
     fn default() -> Self {
         Self {
             clk: Default::default(),
-            op_acc: Default::default(),
+            take: Default::default(),
+            op_word: Default::default(),
+            op_col: Default::default(),
+            half: Default::default(),
             h1: Default::default(),
             word: Default::default(),
             merged: Default::default(),
+            leaves: Default::default(),
+            quiet: Default::default(),
+            mw: Default::default(),
+            wa: Default::default(),
+            wh: Default::default(),
             a1: Default::default(),
+            c1: Default::default(),
             b2: Default::default(),
+            c2: Default::default(),
+            l2: Default::default(),
+            k2: Default::default(),
+            e2: Default::default(),
             m3: Default::default(),
-            merge: Default::default(),
-            empty: Constant::new(AccWord::empty()),
+            l3: Default::default(),
+            q3: Default::default(),
+            acc: Default::default(),
+            holds: Default::default(),
+            check: Default::default(),
+            empty: Constant::new(SlotWord::empty()),
         }
     }
 }
@@ -48,8 +90,16 @@ impl Default for FccSlotPipe {
 impl Logic for FccSlotPipe {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clk, a1, b2, m3);
-        self.a1.d.next = self.op_acc.val();
+        dff_setup!(self, clk, a1, c1, b2, c2, l2, k2, e2, m3, l3, q3);
+        // Stage 1: the op's word and column; the other word of stage 2.
+        self.a1.d.next = self.op_word.val();
+        if self.take.val() {
+            self.c1.d.next = self.op_col.val();
+        }
+        self.c2.d.next = self.c1.q.val();
+        self.l2.d.next = bit_cast::<13, 12>(self.c1.q.val()) - bit_cast::<13, 3>(self.half.val());
+        self.k2.d.next = (self.h1.val() == SlotHalf::Close) | (self.h1.val() == SlotHalf::End);
+        self.e2.d.next = self.h1.val() == SlotHalf::End;
         self.b2.d.next = self.empty.val();
         if self.h1.val() == SlotHalf::Add {
             self.b2.d.next = self.a1.q.val();
@@ -57,9 +107,30 @@ impl Logic for FccSlotPipe {
         if self.h1.val() == SlotHalf::Keep {
             self.b2.d.next = self.word.val();
         }
-        self.merge.a.next = self.word.val();
-        self.merge.b.next = self.b2.q.val();
-        self.m3.d.next = self.merge.out.val();
+        // Stage 2: the merges and the check.
+        self.acc.a.next = self.word.val().acc;
+        self.acc.b.next = self.b2.q.val().acc;
+        self.holds.a.next = self.word.val().holds;
+        self.holds.b.next = self.b2.q.val().holds;
+        self.holds.col.next = self.c2.q.val();
+        self.mw.next.acc = self.acc.out.val();
+        self.mw.next.holds = self.holds.out.val();
+        self.m3.d.next = self.mw.val();
+        self.q3.d.next = self.holds.quiet.val();
+        self.wa.next = self.word.val().acc;
+        self.wh.next = self.word.val().holds;
+        self.check.has.next = self.wa.val().points.any();
+        self.check.last.next = self.wa.val().max_col;
+        self.check.open.next = self.wh.val().open;
+        self.check.ring.next = self.wh.val().ring;
+        self.check.quiet.next = self.wh.val().quiet;
+        self.check.col.next = self.c2.q.val();
+        self.check.lim.next = self.l2.q.val();
+        self.check.frame_end.next = self.e2.q.val();
+        self.l3.d.next = self.k2.q.val() & self.check.leaves.val();
+        // Stage 3.
         self.merged.next = self.m3.q.val();
+        self.leaves.next = self.l3.q.val();
+        self.quiet.next = self.q3.q.val();
     }
 }

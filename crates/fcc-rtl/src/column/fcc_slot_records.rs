@@ -1,20 +1,31 @@
 //! `FccSlotRecords`: the column core's record store (docs/column-core.md,
-//! item 3): a cluster's record (its accumulator, `AccWord`) per slot, in
-//! block RAM, and the ops the slot table sends it, one taken a cycle at
-//! most (`op_take`):
+//! items 3 and 4): per slot, in block RAM, a cluster's record (its
+//! accumulator, `AccWord`) and its holds (`SlotHolds`), together a
+//! `SlotWord`; the ops the slot table sends it, one taken a cycle at most
+//! (`op_take`), each at a column (`op_col`, the column of the pixel slot
+//! that caused it):
 //!
-//! * `Add`: a run's accumulator (`op_acc`, a flush of `FccRunAcc`) added
-//!   to the record of slot `op_slot`;
-//! * `Merge`: the record of `op_other` merged into `op_slot`'s (a union's
+//! * `Add`: a word (`op_word`) merged into slot `op_slot`'s: a run's
+//!   start (no pixel, one run open, its ring flag and first pixel) or its
+//!   flush (its accumulator, one run open less);
+//! * `Merge`: the word of `op_other` merged into `op_slot`'s (a union's
 //!   gone slot into the kept one; the two differ), `op_other` then empty;
-//! * `Close`: the record of `op_slot` out (`out_valid` for a cycle, with
-//!   `out_slot` and `out_acc`, three cycles after the op is taken: the
-//!   taker has room for it), the slot then empty.
+//! * `Close`: the record of `op_slot` out if nothing holds the cluster
+//!   after `op_col` (`FccSlotCheck`, with `half` = `h`), the slot then
+//!   empty; otherwise nothing;
+//! * `End`: at the frame end, the record out if the slot has one.
+//!
+//! A record out shows for a cycle (`out_valid`, with `out_slot`, `out_acc`)
+//! three cycles after its op is taken; the taker has room for it. An add
+//! or merge that leaves its cluster quiet (no run open, no ring flag)
+//! reports it in the cycle of its write (`q_valid`: the slot, its first
+//! pixel, its last column and the quiet column), so that a closer can
+//! send its close when it is due.
 //!
 //! Ops take effect in order. A slot that no add or merge wrote since it
-//! was emptied holds the empty record: a merge's gone slot and a closed
-//! one are written empty in the cycle a kept or added record would be,
-//! and after a reset every slot is, one a cycle, before an op is taken
+//! was emptied holds the empty word: a merge's gone slot and a closed one
+//! are written empty in the cycle a kept or added word would be, and
+//! after a reset every slot is, one a cycle, before an op is taken
 //! (`2^SLOT_BITS` cycles, `idle` low). An op waits while an op in flight
 //! touches one of its slots (`FccSlotIssue`), so an op takes a cycle (a
 //! merge two) but one on the slot of the op before it waits until that
@@ -25,7 +36,7 @@ use rust_hdl::prelude::*;
 use super::fcc_label_sets::SLOT_BITS;
 use super::fcc_slot_issue::{FccSlotIssue, SlotHalf, SlotOp};
 use super::fcc_slot_pipe::FccSlotPipe;
-use super::AccWord;
+use super::{AccWord, SlotHolds, SlotWord};
 use crate::fcc_ram::FccRam;
 
 /// Cycles from an op's taking to its write (or its record out).
@@ -38,21 +49,33 @@ pub const SLOTS: usize = 1 << SLOT_BITS;
 pub struct FccSlotRecords {
     pub clk: Signal<In, Clock>,
     pub rst: Signal<In, Bit>,
+    /// `h`, the window's half-size (run parameter).
+    pub half: Signal<In, Bits<3>>,
     pub op_valid: Signal<In, Bit>,
     pub op_kind: Signal<In, SlotOp>,
     pub op_slot: Signal<In, Bits<SLOT_BITS>>,
     pub op_other: Signal<In, Bits<SLOT_BITS>>,
-    pub op_acc: Signal<In, AccWord>,
+    pub op_word: Signal<In, SlotWord>,
+    pub op_col: Signal<In, Bits<12>>,
     pub op_take: Signal<Out, Bit>,
     pub out_valid: Signal<Out, Bit>,
     pub out_slot: Signal<Out, Bits<SLOT_BITS>>,
     pub out_acc: Signal<Out, AccWord>,
+    pub q_valid: Signal<Out, Bit>,
+    pub q_slot: Signal<Out, Bits<SLOT_BITS>>,
+    pub q_first: Signal<Out, Bits<19>>,
+    pub q_last: Signal<Out, Bits<12>>,
+    pub q_col: Signal<Out, Bits<12>>,
     /// No op in flight.
     pub idle: Signal<Out, Bit>,
-    records: FccRam<AccWord, SLOT_BITS>,
+    mw: Signal<Local, SlotWord>,
+    ma: Signal<Local, AccWord>,
+    mh: Signal<Local, SlotHolds>,
+    kept: Signal<Local, Bit>,
+    records: FccRam<SlotWord, SLOT_BITS>,
     issue: FccSlotIssue,
     pipe: FccSlotPipe,
-    empty: Constant<AccWord>,
+    empty: Constant<SlotWord>,
 }
 
 impl Default for FccSlotRecords {
@@ -60,20 +83,31 @@ impl Default for FccSlotRecords {
         Self {
             clk: Default::default(),
             rst: Default::default(),
+            half: Default::default(),
             op_valid: Default::default(),
             op_kind: Default::default(),
             op_slot: Default::default(),
             op_other: Default::default(),
-            op_acc: Default::default(),
+            op_word: Default::default(),
+            op_col: Default::default(),
             op_take: Default::default(),
             out_valid: Default::default(),
             out_slot: Default::default(),
             out_acc: Default::default(),
+            q_valid: Default::default(),
+            q_slot: Default::default(),
+            q_first: Default::default(),
+            q_last: Default::default(),
+            q_col: Default::default(),
             idle: Default::default(),
+            mw: Default::default(),
+            ma: Default::default(),
+            mh: Default::default(),
+            kept: Default::default(),
             records: FccRam::new(SLOTS),
             issue: Default::default(),
             pipe: Default::default(),
-            empty: Constant::new(AccWord::empty()),
+            empty: Constant::new(SlotWord::empty()),
         }
     }
 }
@@ -92,25 +126,40 @@ impl Logic for FccSlotRecords {
         self.op_take.next = self.issue.op_take.val();
         self.records.read_en.next = self.issue.read_en.val();
         self.records.read_addr.next = self.issue.read_addr.val();
-        self.pipe.op_acc.next = self.op_acc.val();
+        self.pipe.take.next = self.issue.op_take.val();
+        self.pipe.op_word.next = self.op_word.val();
+        self.pipe.op_col.next = self.op_col.val();
+        self.pipe.half.next = self.half.val();
         self.pipe.h1.next = self.issue.h1.val();
         self.pipe.word.next = self.records.read_data.val();
-        // Stage 3: an add's or a kept record written, a gone or closed
-        // slot emptied, a closed record out; after a reset, every slot
-        // emptied.
-        self.records.write_en.next = self.issue.v3.val() | self.issue.clearing.val();
+        // Stage 3: an add's or a kept word written, a gone slot or a
+        // leaving record's emptied, a record out; after a reset, every
+        // slot emptied.
+        self.mw.next = self.pipe.merged.val();
+        self.ma.next = self.mw.val().acc;
+        self.mh.next = self.mw.val().holds;
+        self.kept.next =
+            (self.issue.h3.val() == SlotHalf::Add) | (self.issue.h3.val() == SlotHalf::Keep);
+        self.records.write_en.next = (self.issue.v3.val()
+            & (self.kept.val() | (self.issue.h3.val() == SlotHalf::Gone) | self.pipe.leaves.val()))
+            | self.issue.clearing.val();
         self.records.write_addr.next = self.issue.s3.val();
         self.records.write_data.next = self.empty.val();
-        if (self.issue.h3.val() == SlotHalf::Add) | (self.issue.h3.val() == SlotHalf::Keep) {
-            self.records.write_data.next = self.pipe.merged.val();
+        if self.kept.val() {
+            self.records.write_data.next = self.mw.val();
         }
         if self.issue.clearing.val() {
             self.records.write_addr.next = self.issue.sweep.val();
             self.records.write_data.next = self.empty.val();
         }
-        self.out_valid.next = self.issue.v3.val() & (self.issue.h3.val() == SlotHalf::Close);
+        self.out_valid.next = self.issue.v3.val() & self.pipe.leaves.val();
         self.out_slot.next = self.issue.s3.val();
-        self.out_acc.next = self.pipe.merged.val();
+        self.out_acc.next = self.ma.val();
+        self.q_valid.next = self.issue.v3.val() & self.kept.val() & self.pipe.quiet.val();
+        self.q_slot.next = self.issue.s3.val();
+        self.q_first.next = self.mh.val().first;
+        self.q_last.next = self.ma.val().max_col;
+        self.q_col.next = self.mh.val().quiet;
         self.idle.next = self.issue.idle.val();
     }
 }

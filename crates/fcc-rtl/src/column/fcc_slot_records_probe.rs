@@ -1,24 +1,30 @@
 //! `FccSlotRecordsProbe`: `FccSlotRecords` behind scalar ports, for its
-//! own bench: an op's kind as two flags (`merge`, `close`; neither: an
-//! add), its accumulator field by field (`a_*`), the record out field by
-//! field (`o_*`).
+//! own bench: an op's kind as flags (`merge`, `close`, `frame_end`; none: an
+//! add), its word field by field (the record's `a_*`, the holds' `h_*`),
+//! the record out field by field (`o_*`).
 
 use rust_hdl::prelude::*;
 
 use super::fcc_label_sets::SLOT_BITS;
 use super::fcc_slot_issue::SlotOp;
 use super::fcc_slot_records::FccSlotRecords;
-use super::AccWord;
+use super::{AccWord, SlotHolds, SlotWord};
 
 #[derive(LogicBlock, Default)]
 pub struct FccSlotRecordsProbe {
     pub clk: Signal<In, Clock>,
     pub rst: Signal<In, Bit>,
+    pub half: Signal<In, Bits<3>>,
     pub op_valid: Signal<In, Bit>,
     pub merge: Signal<In, Bit>,
     pub close: Signal<In, Bit>,
+    pub frame_end: Signal<In, Bit>,
     pub slot: Signal<In, Bits<SLOT_BITS>>,
     pub other: Signal<In, Bits<SLOT_BITS>>,
+    pub col: Signal<In, Bits<12>>,
+    pub h_open: Signal<In, Bits<8>>,
+    pub h_ring: Signal<In, Bit>,
+    pub h_first: Signal<In, Bits<19>>,
     pub a_points: Signal<In, Bits<20>>,
     pub a_min_col: Signal<In, Bits<12>>,
     pub a_max_col: Signal<In, Bits<12>>,
@@ -46,6 +52,11 @@ pub struct FccSlotRecordsProbe {
     pub op_take: Signal<Out, Bit>,
     pub out_valid: Signal<Out, Bit>,
     pub out_slot: Signal<Out, Bits<SLOT_BITS>>,
+    pub q_valid: Signal<Out, Bit>,
+    pub q_slot: Signal<Out, Bits<SLOT_BITS>>,
+    pub q_first: Signal<Out, Bits<19>>,
+    pub q_last: Signal<Out, Bits<12>>,
+    pub q_col: Signal<Out, Bits<12>>,
     pub idle: Signal<Out, Bit>,
     pub o_points: Signal<Out, Bits<20>>,
     pub o_min_col: Signal<Out, Bits<12>>,
@@ -72,6 +83,9 @@ pub struct FccSlotRecordsProbe {
     pub o_sab: Signal<Out, Bits<51>>,
     pub o_seam: Signal<Out, Bit>,
     acc: Signal<Local, AccWord>,
+    holds: Signal<Local, SlotHolds>,
+    word: Signal<Local, SlotWord>,
+    out: Signal<Local, AccWord>,
     records: FccSlotRecords,
 }
 
@@ -80,6 +94,7 @@ impl Logic for FccSlotRecordsProbe {
     fn update(&mut self) {
         self.records.clk.next = self.clk.val();
         self.records.rst.next = self.rst.val();
+        self.records.half.next = self.half.val();
         self.records.op_valid.next = self.op_valid.val();
         self.records.op_kind.next = SlotOp::Add;
         if self.merge.val() {
@@ -88,8 +103,12 @@ impl Logic for FccSlotRecordsProbe {
         if self.close.val() {
             self.records.op_kind.next = SlotOp::Close;
         }
+        if self.frame_end.val() {
+            self.records.op_kind.next = SlotOp::End;
+        }
         self.records.op_slot.next = self.slot.val();
         self.records.op_other.next = self.other.val();
+        self.records.op_col.next = self.col.val();
         self.acc.next.points = self.a_points.val();
         self.acc.next.min_col = self.a_min_col.val();
         self.acc.next.max_col = self.a_max_col.val();
@@ -114,34 +133,46 @@ impl Logic for FccSlotRecordsProbe {
         self.acc.next.syy = self.a_syy.val();
         self.acc.next.sab = self.a_sab.val();
         self.acc.next.seam = self.a_seam.val();
-        self.records.op_acc.next = self.acc.val();
+        self.holds.next.open = self.h_open.val();
+        self.holds.next.ring = self.h_ring.val();
+        self.holds.next.first = self.h_first.val();
+        self.holds.next.quiet = self.col.val();
+        self.word.next.acc = self.acc.val();
+        self.word.next.holds = self.holds.val();
+        self.records.op_word.next = self.word.val();
         self.op_take.next = self.records.op_take.val();
         self.out_valid.next = self.records.out_valid.val();
         self.out_slot.next = self.records.out_slot.val();
+        self.q_valid.next = self.records.q_valid.val();
+        self.q_slot.next = self.records.q_slot.val();
+        self.q_first.next = self.records.q_first.val();
+        self.q_last.next = self.records.q_last.val();
+        self.q_col.next = self.records.q_col.val();
         self.idle.next = self.records.idle.val();
-        self.o_points.next = self.records.out_acc.val().points;
-        self.o_min_col.next = self.records.out_acc.val().min_col;
-        self.o_max_col.next = self.records.out_acc.val().max_col;
-        self.o_lo_has.next = self.records.out_acc.val().lo_has;
-        self.o_lo_max.next = self.records.out_acc.val().lo_max;
-        self.o_hi_has.next = self.records.out_acc.val().hi_has;
-        self.o_hi_min.next = self.records.out_acc.val().hi_min;
-        self.o_first_row.next = self.records.out_acc.val().first_row;
-        self.o_last_row.next = self.records.out_acc.val().last_row;
-        self.o_min_x.next = self.records.out_acc.val().min_x;
-        self.o_min_y.next = self.records.out_acc.val().min_y;
-        self.o_min_z.next = self.records.out_acc.val().min_z;
-        self.o_max_x.next = self.records.out_acc.val().max_x;
-        self.o_max_y.next = self.records.out_acc.val().max_y;
-        self.o_max_z.next = self.records.out_acc.val().max_z;
-        self.o_r2_min.next = self.records.out_acc.val().r2_min;
-        self.o_r2_max.next = self.records.out_acc.val().r2_max;
-        self.o_sa.next = self.records.out_acc.val().sa;
-        self.o_sb.next = self.records.out_acc.val().sb;
-        self.o_sc.next = self.records.out_acc.val().sc;
-        self.o_sxx.next = self.records.out_acc.val().sxx;
-        self.o_syy.next = self.records.out_acc.val().syy;
-        self.o_sab.next = self.records.out_acc.val().sab;
-        self.o_seam.next = self.records.out_acc.val().seam;
+        self.out.next = self.records.out_acc.val();
+        self.o_points.next = self.out.val().points;
+        self.o_min_col.next = self.out.val().min_col;
+        self.o_max_col.next = self.out.val().max_col;
+        self.o_lo_has.next = self.out.val().lo_has;
+        self.o_lo_max.next = self.out.val().lo_max;
+        self.o_hi_has.next = self.out.val().hi_has;
+        self.o_hi_min.next = self.out.val().hi_min;
+        self.o_first_row.next = self.out.val().first_row;
+        self.o_last_row.next = self.out.val().last_row;
+        self.o_min_x.next = self.out.val().min_x;
+        self.o_min_y.next = self.out.val().min_y;
+        self.o_min_z.next = self.out.val().min_z;
+        self.o_max_x.next = self.out.val().max_x;
+        self.o_max_y.next = self.out.val().max_y;
+        self.o_max_z.next = self.out.val().max_z;
+        self.o_r2_min.next = self.out.val().r2_min;
+        self.o_r2_max.next = self.out.val().r2_max;
+        self.o_sa.next = self.out.val().sa;
+        self.o_sb.next = self.out.val().sb;
+        self.o_sc.next = self.out.val().sc;
+        self.o_sxx.next = self.out.val().sxx;
+        self.o_syy.next = self.out.val().syy;
+        self.o_sab.next = self.out.val().sab;
+        self.o_seam.next = self.out.val().seam;
     }
 }

@@ -23,6 +23,7 @@ pub mod fcc_col_edge;
 pub mod fcc_col_window;
 pub mod fcc_col_window_probe;
 pub mod fcc_col_word_split;
+pub mod fcc_holds_merge;
 pub mod fcc_label_pool;
 pub mod fcc_label_sets;
 pub mod fcc_open_room;
@@ -56,6 +57,7 @@ pub mod fcc_run_acc_probe;
 pub mod fcc_run_decide;
 pub mod fcc_set_op;
 pub mod fcc_set_walks;
+pub mod fcc_slot_check;
 pub mod fcc_slot_issue;
 pub mod fcc_slot_pipe;
 pub mod fcc_slot_records;
@@ -264,6 +266,50 @@ impl AccWord {
             min_z: 0xffff_u64.to_bits(),
             r2_min: 0xffff_ffff_u64.to_bits(),
             ..AccWord::default()
+        }
+    }
+}
+
+/// A cluster's holds (spec §9.2) beside its record in the record store
+/// (docs/column-core.md, item 4), merged as records are:
+/// * `open`: its runs not yet flushed, added as a two's complement
+///   number (+1 a run's start, -1 its flush; the sum on a merge);
+/// * `ring`: a row's first run is in it (hold 3), ORed;
+/// * `first`: its first pixel in column order, column in the high 12
+///   bits and row in the low 7 (the record order of a column), the
+///   smaller kept;
+/// * `quiet`: the column of the last add or merge that left `open` at 0.
+#[derive(Clone, Copy, Debug, PartialEq, Default, LogicStruct)]
+pub struct SlotHolds {
+    pub open: Bits<8>,
+    pub ring: Bit,
+    pub first: Bits<19>,
+    pub quiet: Bits<12>,
+}
+
+impl SlotHolds {
+    /// The holds of no run: the identity of their merge.
+    pub fn empty() -> SlotHolds {
+        SlotHolds {
+            first: ((1_u64 << 19) - 1).to_bits(),
+            ..SlotHolds::default()
+        }
+    }
+}
+
+/// A record slot's word: the record and the cluster's holds.
+#[derive(Clone, Copy, Debug, PartialEq, Default, LogicStruct)]
+pub struct SlotWord {
+    pub acc: AccWord,
+    pub holds: SlotHolds,
+}
+
+impl SlotWord {
+    /// An empty slot's word.
+    pub fn empty() -> SlotWord {
+        SlotWord {
+            acc: AccWord::empty(),
+            holds: SlotHolds::empty(),
         }
     }
 }
