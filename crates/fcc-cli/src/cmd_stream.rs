@@ -8,7 +8,7 @@ use crate::cmd_lidar::{for_each_frame, percentile, OusterArgs};
 use crate::slot_load::{self, SlotLoad};
 use anyhow::{bail, Context};
 use clap::Args;
-use fcc_golden::{same_partition, MergeMode};
+use fcc_golden::{same_partition, MergeMode, Record};
 use fcc_lidar::eval::synthetic_frames;
 use fcc_lidar::ground::detect_ground;
 use fcc_lidar::ground::{GroundMethod, GroundParams};
@@ -73,7 +73,7 @@ const COLUMNS: [&str; 16] = [
 ];
 
 /// The second table's columns: what a column core's slot table absorbs.
-const LOAD_COLUMNS: [&str; 18] = [
+const LOAD_COLUMNS: [&str; 19] = [
     "source",
     "K",
     "setting",
@@ -91,6 +91,7 @@ const LOAD_COLUMNS: [&str; 18] = [
     "merges per frame",
     "merges in a column",
     "records in a column",
+    "waiting to close",
     "labels freed in a column",
 ];
 
@@ -116,8 +117,33 @@ struct Tally {
     col_merges: u32,
     col_closed: u32,
     col_freed: u32,
+    /// Most clusters past their last column and not yet closed at once
+    /// (before the frame end): what a column core's closer holds.
+    waiting: u32,
     /// What the slot table is offered (joined runs, the row-root model).
     load: SlotLoad,
+}
+
+/// The most records of a frame of `cols` columns that are past their last
+/// column and not yet closed at one column `c` (`last_col < c <=
+/// closed_col`), the frame end's closes left out: the clusters a column
+/// core's closer holds, each reported once no run of it is open, until its
+/// close is sent (docs/column-core.md, item 4), stale reports aside.
+fn waiting_to_close<'a>(records: impl Iterator<Item = &'a Record>, cols: usize) -> u32 {
+    let mut delta = vec![0i64; cols + 2];
+    for r in records.filter(|r| (r.closed_col as usize) < cols) {
+        delta[r.last_col as usize + 1] += 1;
+        delta[r.closed_col as usize + 1] -= 1;
+    }
+    let mut now = 0;
+    delta
+        .iter()
+        .map(|d| {
+            now += d;
+            now
+        })
+        .max()
+        .unwrap_or(0) as u32
 }
 
 pub fn run(args: &StreamReportArgs) -> anyhow::Result<()> {
@@ -218,6 +244,10 @@ pub fn run(args: &StreamReportArgs) -> anyhow::Result<()> {
                         args.reps_late,
                         &mut t.load,
                     )?;
+                    t.waiting = t.waiting.max(waiting_to_close(
+                        streamed.records.iter().map(|r| &r.record),
+                        im.cols,
+                    ));
                     for r in &streamed.records {
                         t.records += 1;
                         if (r.record.closed_col as usize) < im.cols {
@@ -248,7 +278,7 @@ pub fn run(args: &StreamReportArgs) -> anyhow::Result<()> {
                 )?;
                 writeln!(
                     load,
-                    "| {name} | {k} | {setting} | {:.2} | {} | {:.3} | {:.4} | {:.3} | {:.4} | {} | {:.3} | {} | {} | {:.3} | {} | {} | {} | {} |",
+                    "| {name} | {k} | {setting} | {:.2} | {} | {:.3} | {:.4} | {:.3} | {:.4} | {} | {:.3} | {} | {} | {:.3} | {} | {} | {} | {} | {} |",
                     t.load.joined_runs as f64 / t.load.labelled.max(1) as f64,
                     t.load.joined_runs_max,
                     t.load.offered as f64 / t.load.slots.max(1) as f64,
@@ -263,6 +293,7 @@ pub fn run(args: &StreamReportArgs) -> anyhow::Result<()> {
                     t.merges,
                     t.col_merges,
                     t.col_closed,
+                    t.waiting,
                     t.col_freed,
                 )?;
             }
@@ -279,4 +310,42 @@ pub fn run(args: &StreamReportArgs) -> anyhow::Result<()> {
         None => print!("{md}"),
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn record(last_col: u32, closed_col: u32) -> Record {
+        Record {
+            frame: 0,
+            id: 1,
+            points: 1,
+            first_col: last_col,
+            last_col,
+            closed_col,
+            seam: false,
+            first_row: 0,
+            last_row: 0,
+            min: [0; 3],
+            max: [0; 3],
+            range2_min: 0,
+            range2_max: 0,
+            sum: [0; 3],
+            sum_xx: 0,
+            sum_xy: 0,
+            sum_yy: 0,
+        }
+    }
+
+    #[test]
+    fn waiting_counts_records_between_their_last_and_closing_columns() {
+        // Waiting over columns 3..=5, 4..=7 and 6..=6; the frame end's
+        // close (column 10 of 10) does not count.
+        let rs = [record(2, 5), record(3, 7), record(5, 6), record(1, 10)];
+        assert_eq!(waiting_to_close(rs.iter(), 10), 2);
+        let rs = [record(2, 5), record(3, 7), record(4, 6), record(1, 10)];
+        assert_eq!(waiting_to_close(rs.iter(), 10), 3);
+        assert_eq!(waiting_to_close([].iter(), 10), 0);
+    }
 }

@@ -218,8 +218,9 @@ fn the_row_major_core_refuses_limits_and_the_stream() {
 /// The second table of `fcc stream-report` (two scenes, K = 3 and 7): per
 /// row, the joined runs per pixel within the most at one pixel, the merges
 /// of a frame bound those of a column, a column's records each free at
-/// least one label, both models send every merge, and the union-find
-/// reads at least two words a join.
+/// least one label, both models send every merge, the union-find
+/// reads at least two words a join, and the records closed at a column
+/// were all waiting to close at it.
 fn check_load_table(md: &str) {
     let lines: Vec<&str> = md.lines().collect();
     let header: Vec<&str> = lines[0].split('|').map(str::trim).collect();
@@ -231,6 +232,7 @@ fn check_load_table(md: &str) {
     };
     let (frame, column) = (col("merges per frame"), col("merges in a column"));
     let (closed, freed) = (col("records in a column"), col("labels freed in a column"));
+    let waiting = col("waiting to close");
     let (mean, most) = (col("joined runs per pixel"), col("joined runs at a pixel"));
     let (offered, merges) = (col("row roots: offered per slot"), col("merges per slot"));
     let beyond = col("offered beyond one a slot");
@@ -271,6 +273,8 @@ fn check_load_table(md: &str) {
             n(frame) >= n(column) && n(column) > 0 && n(closed) > 0 && n(freed) >= n(closed),
             "{l}"
         );
+        // The records closed at a column were all waiting at it.
+        assert!(n(waiting) >= n(closed), "{l}");
     }
 }
 

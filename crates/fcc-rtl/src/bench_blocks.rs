@@ -63,6 +63,8 @@ pub enum BenchBlock {
     /// The column core's record store `FccSlotRecords` behind the scalar
     /// ports of `FccSlotRecordsProbe`.
     SlotRecords,
+    /// The column core's closer's sorted entries `FccCloseOrder`.
+    CloseOrder,
     /// The column core's representative rows and join filter `FccRepJoins`
     /// behind the scalar ports of `FccRepJoinsProbe`.
     RepJoins,
@@ -93,7 +95,7 @@ impl Row {
 
 impl BenchBlock {
     /// Every block with a bench.
-    pub const ALL: [BenchBlock; 22] = [
+    pub const ALL: [BenchBlock; 23] = [
         BenchBlock::Regs,
         BenchBlock::AxilAdapter,
         BenchBlock::MergeTable,
@@ -115,6 +117,7 @@ impl BenchBlock {
         BenchBlock::LabelSets,
         BenchBlock::RunAcc,
         BenchBlock::SlotRecords,
+        BenchBlock::CloseOrder,
         BenchBlock::RepJoins,
     ];
 
@@ -279,6 +282,13 @@ impl BenchBlock {
                 },
                 waivers: lint::slot_records_waivers,
             },
+            BenchBlock::CloseOrder => Row::plain("fcc_close_order", |p| {
+                gen(
+                    p,
+                    crate::column::fcc_close_order::FccCloseOrder::default(),
+                    "fcc_close_order",
+                )
+            }),
             BenchBlock::RepJoins => Row {
                 name: "fcc_rep_joins_probe",
                 generate: |p| {

@@ -10,13 +10,16 @@
 //! (`FccRepJoins`: a label of each run's cluster, the joins between labels
 //! a union-find must make; see docs/column-core.md), and the union-find
 //! over labels behind it (`FccLabelSets`: each root's record slot), and
-//! the record store (`FccSlotRecords`: a record per slot, added to, merged
-//! and read out as clusters close). The rest of the slot table (open-run
-//! counts, closing, the labels' return) and the top are to come.
+//! the record store (`FccSlotRecords`: a record and the holds per slot,
+//! added to, merged, and read out as clusters close), and the closer's
+//! sorted entries (`FccCloseOrder`: a column's closes in the golden
+//! order). The rest of the slot table (the closer's wait list, slot
+//! allocation, the labels' return) and the top are to come.
 
 pub mod fcc_acc_merge;
 pub mod fcc_acc_pixel;
 pub mod fcc_acc_probe;
+pub mod fcc_close_order;
 pub mod fcc_col_dist;
 pub mod fcc_col_dist_probe;
 pub mod fcc_col_edge;
