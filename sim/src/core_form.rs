@@ -119,3 +119,43 @@ impl CoreAcc {
         }
     }
 }
+
+/// The accumulator a bench block puts out as the scalar ports `o_points`,
+/// `o_min_col`, ... `o_seam` (an `AccWord` field by field, as the column
+/// core's probes name them), read from the outputs struct `$o`; a seam
+/// span's half it does not have reads 0, as [`CoreAcc::of`] gives it.
+#[macro_export]
+macro_rules! core_acc_out {
+    ($o:expr) => {{
+        let o = &$o;
+        let mut a = $crate::core_form::CoreAcc {
+            points: o.o_points.into(),
+            min_col: o.o_min_col.into(),
+            max_col: o.o_max_col.into(),
+            lo_has: o.o_lo_has.into(),
+            lo_max: o.o_lo_max.into(),
+            hi_has: o.o_hi_has.into(),
+            hi_min: o.o_hi_min.into(),
+            first_row: o.o_first_row.into(),
+            last_row: o.o_last_row.into(),
+            min: [o.o_min_x.into(), o.o_min_y.into(), o.o_min_z.into()],
+            max: [o.o_max_x.into(), o.o_max_y.into(), o.o_max_z.into()],
+            r2_min: o.o_r2_min.into(),
+            r2_max: o.o_r2_max.into(),
+            sa: o.o_sa,
+            sb: o.o_sb,
+            sc: o.o_sc,
+            sxx: o.o_sxx,
+            syy: o.o_syy,
+            sab: o.o_sab,
+            seam: o.o_seam.into(),
+        };
+        if a.lo_has == 0 {
+            a.lo_max = 0;
+        }
+        if a.hi_has == 0 {
+            a.hi_min = 0;
+        }
+        a
+    }};
+}

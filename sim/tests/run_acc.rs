@@ -19,7 +19,7 @@ use fcc_golden::{Acc, Frame, Stream};
 use fcc_params::FccParams;
 use fcc_rtl::BenchBlock;
 use fcc_sim::core_form::{offset_binary as ob, CoreAcc};
-use fcc_sim::{c_struct, load_plain, PlainDut};
+use fcc_sim::{c_struct, core_acc_out, load_plain, PlainDut};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
@@ -88,34 +88,7 @@ struct Flush {
 
 impl Flush {
     fn got(o: &RaOut) -> Flush {
-        let mut acc = CoreAcc {
-            points: o.o_points.into(),
-            min_col: o.o_min_col.into(),
-            max_col: o.o_max_col.into(),
-            lo_has: o.o_lo_has.into(),
-            lo_max: o.o_lo_max.into(),
-            hi_has: o.o_hi_has.into(),
-            hi_min: o.o_hi_min.into(),
-            first_row: o.o_first_row.into(),
-            last_row: o.o_last_row.into(),
-            min: [o.o_min_x.into(), o.o_min_y.into(), o.o_min_z.into()],
-            max: [o.o_max_x.into(), o.o_max_y.into(), o.o_max_z.into()],
-            r2_min: o.o_r2_min.into(),
-            r2_max: o.o_r2_max.into(),
-            sa: o.o_sa,
-            sb: o.o_sb,
-            sc: o.o_sc,
-            sxx: o.o_sxx,
-            syy: o.o_syy,
-            sab: o.o_sab,
-            seam: o.o_seam.into(),
-        };
-        if acc.lo_has == 0 {
-            acc.lo_max = 0;
-        }
-        if acc.hi_has == 0 {
-            acc.hi_min = 0;
-        }
+        let acc = core_acc_out!(o);
         Flush {
             label: o.f_label,
             acc,

@@ -17,7 +17,7 @@ use fcc_golden::{Acc, Point};
 use fcc_params::FccParams;
 use fcc_rtl::{BenchBlock, SLOT_RECORDS_LATENCY};
 use fcc_sim::core_form::CoreAcc;
-use fcc_sim::{c_struct, load_plain, PlainDut, PlainModel};
+use fcc_sim::{c_struct, core_acc_out, load_plain, PlainDut, PlainModel};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
@@ -216,39 +216,6 @@ impl Slot {
     }
 }
 
-/// A record as it came out (a seam span's half it does not have reads 0).
-fn got(o: &SrOut) -> CoreAcc {
-    let mut a = CoreAcc {
-        points: o.o_points.into(),
-        min_col: o.o_min_col.into(),
-        max_col: o.o_max_col.into(),
-        lo_has: o.o_lo_has.into(),
-        lo_max: o.o_lo_max.into(),
-        hi_has: o.o_hi_has.into(),
-        hi_min: o.o_hi_min.into(),
-        first_row: o.o_first_row.into(),
-        last_row: o.o_last_row.into(),
-        min: [o.o_min_x.into(), o.o_min_y.into(), o.o_min_z.into()],
-        max: [o.o_max_x.into(), o.o_max_y.into(), o.o_max_z.into()],
-        r2_min: o.o_r2_min.into(),
-        r2_max: o.o_r2_max.into(),
-        sa: o.o_sa,
-        sb: o.o_sb,
-        sc: o.o_sc,
-        sxx: o.o_sxx,
-        syy: o.o_syy,
-        sab: o.o_sab,
-        seam: o.o_seam.into(),
-    };
-    if a.lo_has == 0 {
-        a.lo_max = 0;
-    }
-    if a.hi_has == 0 {
-        a.hi_min = 0;
-    }
-    a
-}
-
 /// What the runs saw, to show each rule was exercised.
 #[derive(Debug, Default, Clone, Copy)]
 struct Seen {
@@ -372,7 +339,7 @@ impl Bench {
                 self.what
             );
             assert_eq!(
-                got(o),
+                core_acc_out!(o),
                 want,
                 "{}, cycle {now}, the record of slot {slot}: expected (left), got (right)",
                 self.what
