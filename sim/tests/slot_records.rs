@@ -15,7 +15,7 @@ use std::collections::VecDeque;
 
 use fcc_golden::{Acc, Point};
 use fcc_params::FccParams;
-use fcc_rtl::{BenchBlock, SLOT_RECORDS_LATENCY};
+use fcc_rtl::{BenchBlock, CLOSE_KEY_BITS, SLOT_RECORDS_LATENCY};
 use fcc_sim::core_form::CoreAcc;
 use fcc_sim::{c_struct, core_acc_out, load_plain, PlainDut, PlainModel};
 use rand::{Rng, SeedableRng};
@@ -105,7 +105,7 @@ c_struct! {
 /// Record slots.
 const SLOTS: usize = 512;
 /// No first pixel: the empty holds'.
-const NO_FIRST: u32 = (1 << 19) - 1;
+const NO_FIRST: u32 = (1 << CLOSE_KEY_BITS) - 1;
 
 /// A run's start or flush: its accumulator (none for a start), the open
 /// runs it adds (+1 or -1), its ring flag and first pixel.

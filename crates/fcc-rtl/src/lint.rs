@@ -227,10 +227,8 @@ pub fn acc_waivers(p: &FccParams, name: &str) -> String {
 /// The waivers of the record store's probe `name`: its enum registers'
 /// (as [`enum_block_waivers`]), the widening casts of its close check (as
 /// [`acc_waivers`]), the holds merge's second quiet column (the merge's
-/// column replaces both), the merged holds' fields a quiet report does
-/// not carry (the open runs and the ring flag: both are 0 then) and the
-/// fields of the word read that the close check does not need (`wa`,
-/// `wh`: the word's record and holds).
+/// column replaces both) and the merged holds' fields a quiet report does
+/// not carry (the open runs and the ring flag: both are 0 then).
 pub fn slot_records_waivers(p: &FccParams, name: &str) -> String {
     let mut s = acc_waivers(p, name);
     s.push_str(&enum_register_waivers(&format!("{name}.v")));
@@ -238,10 +236,7 @@ pub fn slot_records_waivers(p: &FccParams, name: &str) -> String {
         "// `FccHoldsMerge` takes the op's column as the quiet one, not `b`'s.\n\
          lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'b'[39:28]*\"\n\
          // A quiet report carries the first pixel and the quiet column only.\n\
-         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'mh'[8:0]*\"\n\
-         // The close check reads the points, last column and holds only.\n\
-         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'wa'[500:44,31:20]*\"\n\
-         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'wh'[27:9]*\"\n"
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'mh'[8:0]*\"\n"
     ));
     s
 }

@@ -16,12 +16,13 @@
 use rust_hdl::prelude::*;
 
 use super::fcc_label_sets::SLOT_BITS;
+use super::FIRST_BITS;
 use crate::types::vec_of;
 
 /// Entries the closer holds.
 pub const CLOSE_ENTRIES: usize = 32;
 /// Bits of an entry's key: a first pixel in column order.
-pub const CLOSE_KEY_BITS: usize = 19;
+pub const CLOSE_KEY_BITS: usize = FIRST_BITS;
 
 /// What an entry takes at the clock edge.
 #[derive(Copy, Clone, Debug, PartialEq, LogicState)]

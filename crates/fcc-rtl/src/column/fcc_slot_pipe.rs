@@ -108,17 +108,17 @@ impl Logic for FccSlotPipe {
             self.b2.d.next = self.word.val();
         }
         // Stage 2: the merges and the check.
-        self.acc.a.next = self.word.val().acc;
+        self.wa.next = self.word.val().acc;
+        self.wh.next = self.word.val().holds;
+        self.acc.a.next = self.wa.val();
         self.acc.b.next = self.b2.q.val().acc;
-        self.holds.a.next = self.word.val().holds;
+        self.holds.a.next = self.wh.val();
         self.holds.b.next = self.b2.q.val().holds;
         self.holds.col.next = self.c2.q.val();
         self.mw.next.acc = self.acc.out.val();
         self.mw.next.holds = self.holds.out.val();
         self.m3.d.next = self.mw.val();
         self.q3.d.next = self.holds.quiet.val();
-        self.wa.next = self.word.val().acc;
-        self.wh.next = self.word.val().holds;
         self.check.has.next = self.wa.val().points.any();
         self.check.last.next = self.wa.val().max_col;
         self.check.open.next = self.wh.val().open;

@@ -36,7 +36,7 @@ use rust_hdl::prelude::*;
 use super::fcc_label_sets::SLOT_BITS;
 use super::fcc_slot_issue::{FccSlotIssue, SlotHalf, SlotOp};
 use super::fcc_slot_pipe::FccSlotPipe;
-use super::{AccWord, SlotHolds, SlotWord};
+use super::{AccWord, SlotHolds, SlotWord, FIRST_BITS};
 use crate::fcc_ram::FccRam;
 
 /// Cycles from an op's taking to its write (or its record out).
@@ -63,7 +63,7 @@ pub struct FccSlotRecords {
     pub out_acc: Signal<Out, AccWord>,
     pub q_valid: Signal<Out, Bit>,
     pub q_slot: Signal<Out, Bits<SLOT_BITS>>,
-    pub q_first: Signal<Out, Bits<19>>,
+    pub q_first: Signal<Out, Bits<FIRST_BITS>>,
     pub q_last: Signal<Out, Bits<12>>,
     pub q_col: Signal<Out, Bits<12>>,
     /// No op in flight.

@@ -8,7 +8,7 @@ use rust_hdl::prelude::*;
 use super::fcc_label_sets::SLOT_BITS;
 use super::fcc_slot_issue::SlotOp;
 use super::fcc_slot_records::FccSlotRecords;
-use super::{AccWord, SlotHolds, SlotWord};
+use super::{AccWord, SlotHolds, SlotWord, FIRST_BITS};
 
 #[derive(LogicBlock, Default)]
 pub struct FccSlotRecordsProbe {
@@ -24,7 +24,7 @@ pub struct FccSlotRecordsProbe {
     pub col: Signal<In, Bits<12>>,
     pub h_open: Signal<In, Bits<8>>,
     pub h_ring: Signal<In, Bit>,
-    pub h_first: Signal<In, Bits<19>>,
+    pub h_first: Signal<In, Bits<FIRST_BITS>>,
     pub a_points: Signal<In, Bits<20>>,
     pub a_min_col: Signal<In, Bits<12>>,
     pub a_max_col: Signal<In, Bits<12>>,
@@ -54,7 +54,7 @@ pub struct FccSlotRecordsProbe {
     pub out_slot: Signal<Out, Bits<SLOT_BITS>>,
     pub q_valid: Signal<Out, Bit>,
     pub q_slot: Signal<Out, Bits<SLOT_BITS>>,
-    pub q_first: Signal<Out, Bits<19>>,
+    pub q_first: Signal<Out, Bits<FIRST_BITS>>,
     pub q_last: Signal<Out, Bits<12>>,
     pub q_col: Signal<Out, Bits<12>>,
     pub idle: Signal<Out, Bit>,

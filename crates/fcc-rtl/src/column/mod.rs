@@ -273,6 +273,10 @@ impl AccWord {
     }
 }
 
+/// Bits of a first pixel in column order: its column (12 bits) above
+/// its row (7), so that pixels compare in column order.
+pub const FIRST_BITS: usize = 19;
+
 /// A cluster's holds (spec §9.2) beside its record in the record store
 /// (docs/column-core.md, item 4), merged as records are:
 /// * `open`: its runs not yet flushed, added as a two's complement
@@ -286,7 +290,7 @@ impl AccWord {
 pub struct SlotHolds {
     pub open: Bits<8>,
     pub ring: Bit,
-    pub first: Bits<19>,
+    pub first: Bits<FIRST_BITS>,
     pub quiet: Bits<12>,
 }
 
@@ -294,7 +298,7 @@ impl SlotHolds {
     /// The holds of no run: the identity of their merge.
     pub fn empty() -> SlotHolds {
         SlotHolds {
-            first: ((1_u64 << 19) - 1).to_bits(),
+            first: ((1_u64 << FIRST_BITS) - 1).to_bits(),
             ..SlotHolds::default()
         }
     }
