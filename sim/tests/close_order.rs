@@ -1,11 +1,12 @@
 //! The column core's closer's sorted entries `fcc_close_order` alone under
 //! Verilator, against a model of its contract (docs/column-core.md, item
 //! 4): entries taken and the head given up, one of each a cycle at most,
-//! in phases that fill the array, drain it and keep it half full; keys
-//! over a few values (many equal, which leave in the order they came),
-//! over the whole range and at its ends; resets mid-run. Every cycle the
-//! head and `in_ready` are checked. A mismatch prints the cycle, expected,
-//! got and the seed.
+//! in phases that fill the array, drain it, keep it half full and push
+//! into it full (each push then drops the largest entry, the new one
+//! included); keys over a few values (many equal, which leave in the order
+//! they came), over the whole range and at its ends; resets mid-run. Every
+//! cycle the head, `full` and the entry dropped are checked. A mismatch
+//! prints the cycle, expected, got and the seed.
 
 use std::collections::VecDeque;
 
@@ -29,10 +30,13 @@ c_struct! {
 c_struct! {
     /// Outputs during one cycle.
     pub struct CoOut {
-        pub in_ready: u8,
+        pub full: u8,
         pub head_valid: u8,
         pub head_key: u32,
         pub head_slot: u16,
+        pub drop_valid: u8,
+        pub drop_key: u32,
+        pub drop_slot: u16,
     }
 }
 
@@ -48,14 +52,25 @@ fn key(rng: &mut ChaCha8Rng, spread: u32) -> u32 {
     }
 }
 
-/// Seeded traffic; returns (entries taken, heads given up, cycles full).
-fn run(seed: u64, cycles: u64) -> (u64, u64, u64) {
+/// What one bench run saw.
+#[derive(Default)]
+struct Seen {
+    pushes: u64,
+    pops: u64,
+    full: u64,
+    /// Old last entries dropped, and new ones.
+    dropped_old: u64,
+    dropped_new: u64,
+}
+
+/// Seeded traffic.
+fn run(seed: u64, cycles: u64) -> Seen {
     let model = load_plain::<CoIn, CoOut>(BenchBlock::CloseOrder, &FccParams::default())
         .expect("close order model");
     let mut d = PlainDut::new(model);
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let mut want: VecDeque<(u32, u16)> = VecDeque::new();
-    let (mut pushes, mut pops, mut full) = (0, 0, 0);
+    let mut seen = Seen::default();
     let (mut push_p, mut pop_p, mut spread) = (0.5, 0.5, 8);
     d.step(&CoIn {
         rst: 1,
@@ -76,49 +91,76 @@ fn run(seed: u64, cycles: u64) -> (u64, u64, u64) {
             pop: (rng.gen_bool(pop_p) && !want.is_empty()) as u8,
         };
         let o = d.step(&inp);
+        let mut next = want.clone();
+        let mut dropped = None;
+        if inp.pop != 0 {
+            next.pop_front();
+        }
+        if inp.in_valid != 0 {
+            // After the entries of an equal key.
+            let at = next.partition_point(|&(k, _)| k <= inp.in_key);
+            next.insert(at, (inp.in_key, inp.in_slot));
+            if next.len() > CLOSE_ENTRIES {
+                dropped = next.pop_back();
+            }
+        }
         let got = (
-            o.in_ready,
+            o.full,
             o.head_valid,
             (o.head_valid != 0).then_some((o.head_key, o.head_slot)),
+            (o.drop_valid != 0).then_some((o.drop_key, o.drop_slot)),
         );
         let expected = (
-            (want.len() < CLOSE_ENTRIES) as u8,
+            (want.len() == CLOSE_ENTRIES) as u8,
             !want.is_empty() as u8,
             want.front().copied(),
+            dropped,
         );
         assert_eq!(
             expected, got,
-            "seed {seed:#x}, cycle {cycle}: (in_ready, head_valid, head) expected (left), got (right)"
+            "seed {seed:#x}, cycle {cycle}: (full, head_valid, head, dropped) expected (left), got (right)"
         );
+        seen.full += u64::from(o.full != 0);
         if rst {
             want.clear();
             continue;
         }
-        if inp.pop != 0 {
-            want.pop_front();
-            pops += 1;
+        seen.pushes += u64::from(inp.in_valid);
+        seen.pops += u64::from(inp.pop);
+        if let Some(d) = dropped {
+            if d == (inp.in_key, inp.in_slot) {
+                seen.dropped_new += 1;
+            } else {
+                seen.dropped_old += 1;
+            }
         }
-        if inp.in_valid != 0 && o.in_ready != 0 {
-            // After the entries of an equal key.
-            let at = want.partition_point(|&(k, _)| k <= inp.in_key);
-            want.insert(at, (inp.in_key, inp.in_slot));
-            pushes += 1;
-        }
-        full += u64::from(o.in_ready == 0);
+        want = next;
     }
-    (pushes, pops, full)
+    seen
 }
 
 #[test]
 fn the_head_is_the_smallest_key_first_come_among_equals() {
-    let (mut pushes, mut pops, mut full) = (0, 0, 0);
+    let mut all = Seen::default();
     for seed in [0xc1, 0xc2, 0xc3] {
-        let (a, b, c) = run(seed, 60_000);
-        println!("seed {seed:#x}: {a} entries taken, {b} heads given up, {c} cycles full");
-        (pushes, pops, full) = (pushes + a, pops + b, full + c);
+        let s = run(seed, 60_000);
+        println!(
+            "seed {seed:#x}: {} entries in, {} heads given up, {} cycles full, \
+             {} old last entries and {} new ones dropped",
+            s.pushes, s.pops, s.full, s.dropped_old, s.dropped_new
+        );
+        all.pushes += s.pushes;
+        all.pops += s.pops;
+        all.full += s.full;
+        all.dropped_old += s.dropped_old;
+        all.dropped_new += s.dropped_new;
     }
     assert!(
-        pushes > 50_000 && pops > 50_000 && full > 5_000,
+        all.pushes > 50_000
+            && all.pops > 50_000
+            && all.full > 5_000
+            && all.dropped_old > 1_000
+            && all.dropped_new > 1_000,
         "too little traffic"
     );
 }

@@ -1,11 +1,17 @@
 //! `FccCloseOrder`: the closer's sorted entries (docs/column-core.md,
 //! item 4): a register array of `CLOSE_ENTRIES` entries (a key, a slot)
-//! sorted by key, smallest first, that takes one entry (`in_*`, when
-//! `in_ready`) and gives up its head (`pop`) in the same cycle if need
-//! be. The closer fills it with the clusters that close at one column,
-//! keyed by their first pixel (column in the high 12 bits, row in the low
-//! 7), so the head is the next close to send, in the golden order; it is
-//! empty before the next column's. Equal keys leave in the order they came.
+//! sorted by key, smallest first, that takes one entry (`in_*`) and gives
+//! up its head (`pop`) in the same cycle if need be. The closer fills it
+//! with the clusters that close at one column, keyed by their first pixel
+//! (column in the high 12 bits, row in the low 7), so the head is the next
+//! close to send, in the golden order; it is empty before the next
+//! column's. Equal keys leave in the order they came.
+//!
+//! An entry taken while the array is `full` (and the head stays) drops the
+//! largest of the entries and the new one (`drop_*`, in the same cycle; of
+//! equal keys the one that came last): so a column with more closes than
+//! entries is sent in passes, each the smallest ones left, and the closer
+//! puts what is dropped back in its wait list.
 //!
 //! Each entry compares the new key with its own (`lt`: the new entry goes
 //! before it, or it is empty; sorted, so `lt` is false then true along
@@ -43,9 +49,13 @@ pub struct FccCloseOrder {
     pub in_valid: Signal<In, Bit>,
     pub in_key: Signal<In, Bits<CLOSE_KEY_BITS>>,
     pub in_slot: Signal<In, Bits<SLOT_BITS>>,
-    /// Room for an entry (the last one is empty).
-    pub in_ready: Signal<Out, Bit>,
+    /// The last entry is taken: an entry in without a pop drops one.
+    pub full: Signal<Out, Bit>,
     pub pop: Signal<In, Bit>,
+    /// The entry dropped this cycle (the old last one or the new one).
+    pub drop_valid: Signal<Out, Bit>,
+    pub drop_key: Signal<Out, Bits<CLOSE_KEY_BITS>>,
+    pub drop_slot: Signal<Out, Bits<SLOT_BITS>>,
     pub head_valid: Signal<Out, Bit>,
     pub head_key: Signal<Out, Bits<CLOSE_KEY_BITS>>,
     pub head_slot: Signal<Out, Bits<SLOT_BITS>>,
@@ -68,8 +78,11 @@ impl Default for FccCloseOrder {
             in_valid: Default::default(),
             in_key: Default::default(),
             in_slot: Default::default(),
-            in_ready: Default::default(),
+            full: Default::default(),
             pop: Default::default(),
+            drop_valid: Default::default(),
+            drop_key: Default::default(),
+            drop_slot: Default::default(),
             head_valid: Default::default(),
             head_key: Default::default(),
             head_slot: Default::default(),
@@ -92,14 +105,23 @@ impl Logic for FccCloseOrder {
             self.ek[i].clock.next = self.clk.val();
             self.es[i].clock.next = self.clk.val();
         }
-        // The last entry (a loop of one).
-        for i in (self._n - 1)..self._n {
-            self.in_ready.next = !self.ev[i].q.val();
-            self.nv.next = self.in_valid.val() & !self.ev[i].q.val();
-        }
+        self.nv.next = self.in_valid.val();
         for i in 0..self._n {
             self.lt[i].next =
                 !self.ev[i].q.val() | (self.nv.val() & (self.in_key.val() < self.ek[i].q.val()));
+        }
+        // The last entry (a loop of one): full, an entry in without a pop
+        // drops the old last one if the new one goes before it, else the new
+        // one.
+        for i in (self._n - 1)..self._n {
+            self.full.next = self.ev[i].q.val();
+            self.drop_valid.next = self.nv.val() & self.ev[i].q.val() & !self.pop.val();
+            self.drop_key.next = self.in_key.val();
+            self.drop_slot.next = self.in_slot.val();
+            if self.lt[i].val() {
+                self.drop_key.next = self.ek[i].q.val();
+                self.drop_slot.next = self.es[i].q.val();
+            }
         }
         // The moves. Without a pop, each entry at or after the new one's
         // place moves up one; with a pop, each takes the one after it, or
