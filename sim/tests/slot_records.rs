@@ -4,7 +4,8 @@
 //! accumulator (`fcc_golden::Acc`, spec §9.3) and the holds of spec §9.2:
 //! runs started and flushed into slots, slots merged into others, closes
 //! at a column (a record leaves only if nothing holds its cluster) and at
-//! the frame end, in any order over few slots (an op on the slot of the op
+//! the frame end, each naming the cluster's first pixel or, now and then,
+//! another (a stale report: the record stays), in any order over few slots (an op on the slot of the op
 //! before it, often) and many; ops offered in bursts and sparse; resets
 //! mid-run. Every record out and every quiet report is checked, field by
 //! field, in the cycle it is due, none comes that is not, and the cycles
@@ -122,12 +123,19 @@ enum Op {
     Add(u16, Word, u16),
     /// Keep, gone, column.
     Merge(u16, u16, u16),
-    Close(u16, u16),
-    End(u16),
+    /// Slot, column and the first pixel it names (`None`: the slot's when
+    /// the op is offered, all ops before it taken).
+    Close(u16, u16, Option<u32>),
+    End(u16, Option<u32>),
 }
 
 impl Op {
-    fn input(&self) -> SrIn {
+    /// The first pixel a close or end names, with `slots` as the op is taken.
+    fn key(key: Option<u32>, s: u16, slots: &[Slot]) -> u32 {
+        key.unwrap_or(slots[s as usize].first)
+    }
+
+    fn input(&self, slots: &[Slot]) -> SrIn {
         let mut i = SrIn {
             op_valid: 1,
             ..SrIn::default()
@@ -163,8 +171,11 @@ impl Op {
                 i.a_seam = c.seam as u8;
             }
             Op::Merge(k, g, col) => (i.merge, i.slot, i.other, i.col) = (1, k, g, col),
-            Op::Close(s, col) => (i.close, i.slot, i.col) = (1, s, col),
-            Op::End(s) => (i.frame_end, i.slot) = (1, s),
+            Op::Close(s, col, k) => {
+                (i.close, i.slot, i.col) = (1, s, col);
+                i.h_first = Op::key(k, s, slots);
+            }
+            Op::End(s, k) => (i.frame_end, i.slot, i.h_first) = (1, s, Op::key(k, s, slots)),
         }
         i
     }
@@ -207,8 +218,14 @@ impl Slot {
         (self.open == 0 && !self.ring).then_some((self.first, last, self.quiet))
     }
 
-    /// Whether a close at `col` takes the record (`None`: at the frame end).
-    fn leaves(&self, col: Option<u16>, half: u16) -> bool {
+    /// Whether a close at `col` (`None`: at the frame end) naming first
+    /// pixel `key` takes the record, or would but for the key (`.1`).
+    fn leaves(&self, col: Option<u16>, half: u16, key: u32) -> (bool, bool) {
+        let due = self.due(col, half);
+        (due && self.first == key, due && self.first != key)
+    }
+
+    fn due(&self, col: Option<u16>, half: u16) -> bool {
         let last = CoreAcc::of(&self.acc).max_col as u16;
         self.acc.points > 0
             && col
@@ -223,6 +240,9 @@ struct Seen {
     out_close: u64,
     out_end: u64,
     closes_held: u64,
+    /// Closes and ends that named another first pixel than the slot's and
+    /// would have taken the record otherwise.
+    key_held: u64,
     quiet: u64,
 }
 
@@ -283,7 +303,7 @@ impl Bench {
     /// One cycle: the queue's head offered if `offer`; a reset if `rst`.
     fn step(&mut self, offer: bool, rst: bool) {
         let head = self.queue.front().copied().filter(|_| offer && !rst);
-        let mut inp = head.map_or_else(SrIn::default, |op| op.input());
+        let mut inp = head.map_or_else(SrIn::default, |op| op.input(&self.slots));
         inp.rst = rst as u8;
         inp.half = self.half as u8;
         let o = self.d.step(&inp);
@@ -402,16 +422,24 @@ impl Bench {
                 }
                 None
             }
-            Op::Close(s, col) => self.close(s, Some(col), when),
-            Op::End(s) => self.close(s, None, when),
+            Op::Close(s, col, k) => self.close(s, Some(col), Op::key(k, s, &self.slots), when),
+            Op::End(s, k) => self.close(s, None, Op::key(k, s, &self.slots), when),
         };
         if let Some((s, q)) = report {
             self.quiet.push_back((when, s, q));
         }
     }
 
-    fn close(&mut self, s: u16, col: Option<u16>, when: u64) -> Option<(u16, (u32, u16, u16))> {
-        if self.slots[s as usize].leaves(col, self.half) {
+    fn close(
+        &mut self,
+        s: u16,
+        col: Option<u16>,
+        key: u32,
+        when: u64,
+    ) -> Option<(u16, (u32, u16, u16))> {
+        let (leaves, key_held) = self.slots[s as usize].leaves(col, self.half, key);
+        self.seen.key_held += u64::from(key_held);
+        if leaves {
             let r = std::mem::take(&mut self.slots[s as usize]);
             self.due.push_back((when, s, CoreAcc::of(&r.acc)));
             match col {
@@ -428,7 +456,8 @@ impl Bench {
     /// until every record and report due is out and the block says idle
     /// (at most `limit` cycles).
     fn drain(&mut self, slots: impl IntoIterator<Item = u16>, limit: u64) {
-        self.queue.extend(slots.into_iter().map(Op::End));
+        self.queue
+            .extend(slots.into_iter().map(|s| Op::End(s, None)));
         let start = self.cycle;
         while !self.queue.is_empty() || !self.due.is_empty() || !self.quiet.is_empty() || !self.idle
         {
@@ -471,6 +500,12 @@ fn run_acc(rng: &mut ChaCha8Rng, col: u32, cols: u32) -> Acc {
     }
     a.seam = rng.gen_range(0..10) == 0;
     a
+}
+
+/// The first pixel a close names: the slot's as it is taken, or now and
+/// then another (a stale report: `first` with one bit changed).
+fn stale(rng: &mut ChaCha8Rng, first: u32) -> Option<u32> {
+    (rng.gen_range(0..8) == 0).then(|| first ^ (1 << rng.gen_range(0..CLOSE_KEY_BITS)))
 }
 
 /// A run's start at column `col`: one run open, a first pixel of this
@@ -530,7 +565,7 @@ fn random_run(
             let slot = |x: u16| b.slots[x as usize];
             let c16 = col as u16;
             let op = match rng.gen_range(0..100) {
-                _ if slot(s).acc.points > FULL => Op::End(s),
+                _ if slot(s).acc.points > FULL => Op::End(s, None),
                 0..=24 => Op::Add(s, start(&mut rng, col), c16),
                 25..=49 if slot(s).open > 0 || rng.gen_range(0..8) == 0 => {
                     Op::Add(s, flush(&mut rng, col, cols), c16)
@@ -538,7 +573,7 @@ fn random_run(
                 25..=64 if g != s && slot(s).acc.points + slot(g).acc.points <= FULL => {
                     Op::Merge(s, g, c16)
                 }
-                98..=99 => Op::End(s),
+                98..=99 => Op::End(s, stale(&mut rng, slot(s).first)),
                 65..=89 => {
                     // A quiet slot, closed at about its due column: just
                     // before, at or just after `last + h`.
@@ -552,12 +587,16 @@ fn random_run(
                             let due = (slot(x).acc.max_col + u32::from(half))
                                 .max(u32::from(slot(x).quiet));
                             let at = (due + rng.gen_range(0..=2)).saturating_sub(1);
-                            Op::Close(x, at.min(cols - 1) as u16)
+                            Op::Close(x, at.min(cols - 1) as u16, stale(&mut rng, slot(x).first))
                         }
-                        None => Op::Close(s, c16),
+                        None => Op::Close(s, c16, None),
                     }
                 }
-                _ => Op::Close(s, (col + rng.gen_range(0..=6)).min(cols - 1) as u16),
+                _ => Op::Close(
+                    s,
+                    (col + rng.gen_range(0..=6)).min(cols - 1) as u16,
+                    stale(&mut rng, slot(s).first),
+                ),
             };
             b.queue.push_back(op);
         }
@@ -591,6 +630,7 @@ fn records_and_holds_follow_the_ops_in_order() {
         all.out_close += s.out_close;
         all.out_end += s.out_end;
         all.closes_held += s.closes_held;
+        all.key_held += s.key_held;
         all.quiet += s.quiet;
     }
     println!("in all: {all:?}");
@@ -599,6 +639,7 @@ fn records_and_holds_follow_the_ops_in_order() {
             && all.out_close > 2_000
             && all.out_end > 500
             && all.closes_held > 10_000
+            && all.key_held > 100
             && all.quiet > 4_000,
         "too little of some traffic: {all:?}"
     );

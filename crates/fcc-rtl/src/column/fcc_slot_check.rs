@@ -4,9 +4,14 @@
 //! flag, it went quiet by `col` and its last column is at least `h`
 //! columns back (`last <= lim`, `lim = col - h` worked out a cycle
 //! ahead, its bit 12 set when negative). At the frame end (`frame_end`)
-//! every cluster with points leaves.
+//! every cluster with points leaves. Either way the op names the cluster
+//! by its first pixel (`key`, from the closer's wait list): a report gone
+//! stale (the cluster merged, or its slot freed and taken by another) does
+//! not match the slot's first pixel (`first`), so the record stays.
 
 use rust_hdl::prelude::*;
+
+use super::FIRST_BITS;
 
 #[derive(LogicBlock, Default)]
 pub struct FccSlotCheck {
@@ -20,6 +25,9 @@ pub struct FccSlotCheck {
     pub col: Signal<In, Bits<12>>,
     pub lim: Signal<In, Bits<13>>,
     pub frame_end: Signal<In, Bit>,
+    /// The slot's first pixel, and the one the op names.
+    pub first: Signal<In, Bits<FIRST_BITS>>,
+    pub key: Signal<In, Bits<FIRST_BITS>>,
     pub leaves: Signal<Out, Bit>,
 }
 
@@ -27,6 +35,7 @@ impl Logic for FccSlotCheck {
     #[hdl_gen]
     fn update(&mut self) {
         self.leaves.next = self.has.val()
+            & (self.first.val() == self.key.val())
             & (self.frame_end.val()
                 | (!self.open.val().any()
                     & !self.ring.val()

@@ -8,7 +8,7 @@
 //! gone word, in stage 2 while its kept half is in stage 1; the empty word
 //! (the merges' identity) for a close. So the merges start from registers,
 //! and so does the check: the close's column less `h` is worked out in
-//! stage 1.
+//! stage 1, and the first pixel it names (its word's) is registered.
 
 use rust_hdl::prelude::*;
 
@@ -16,7 +16,7 @@ use super::fcc_acc_merge::FccAccMerge;
 use super::fcc_holds_merge::FccHoldsMerge;
 use super::fcc_slot_check::FccSlotCheck;
 use super::fcc_slot_issue::SlotHalf;
-use super::{AccWord, SlotHolds, SlotWord};
+use super::{AccWord, SlotHolds, SlotWord, FIRST_BITS};
 
 #[derive(LogicBlock)]
 pub struct FccSlotPipe {
@@ -37,11 +37,14 @@ pub struct FccSlotPipe {
     mw: Signal<Local, SlotWord>,
     wa: Signal<Local, AccWord>,
     wh: Signal<Local, SlotHolds>,
+    /// Stage 1's word's holds (a close's key).
+    ah: Signal<Local, SlotHolds>,
     a1: DFF<SlotWord>,
     c1: DFF<Bits<12>>,
     b2: DFF<SlotWord>,
     c2: DFF<Bits<12>>,
     l2: DFF<Bits<13>>,
+    f2: DFF<Bits<FIRST_BITS>>,
     k2: DFF<Bit>,
     e2: DFF<Bit>,
     m3: DFF<SlotWord>,
@@ -69,11 +72,13 @@ impl Default for FccSlotPipe {
             mw: Default::default(),
             wa: Default::default(),
             wh: Default::default(),
+            ah: Default::default(),
             a1: Default::default(),
             c1: Default::default(),
             b2: Default::default(),
             c2: Default::default(),
             l2: Default::default(),
+            f2: Default::default(),
             k2: Default::default(),
             e2: Default::default(),
             m3: Default::default(),
@@ -90,7 +95,7 @@ impl Default for FccSlotPipe {
 impl Logic for FccSlotPipe {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clk, a1, c1, b2, c2, l2, k2, e2, m3, l3, q3);
+        dff_setup!(self, clk, a1, c1, b2, c2, l2, f2, k2, e2, m3, l3, q3);
         // Stage 1: the op's word and column; the other word of stage 2.
         self.a1.d.next = self.op_word.val();
         if self.take.val() {
@@ -98,6 +103,8 @@ impl Logic for FccSlotPipe {
         }
         self.c2.d.next = self.c1.q.val();
         self.l2.d.next = bit_cast::<13, 12>(self.c1.q.val()) - bit_cast::<13, 3>(self.half.val());
+        self.ah.next = self.a1.q.val().holds;
+        self.f2.d.next = self.ah.val().first;
         self.k2.d.next = (self.h1.val() == SlotHalf::Close) | (self.h1.val() == SlotHalf::End);
         self.e2.d.next = self.h1.val() == SlotHalf::End;
         self.b2.d.next = self.empty.val();
@@ -127,6 +134,8 @@ impl Logic for FccSlotPipe {
         self.check.col.next = self.c2.q.val();
         self.check.lim.next = self.l2.q.val();
         self.check.frame_end.next = self.e2.q.val();
+        self.check.first.next = self.wh.val().first;
+        self.check.key.next = self.f2.q.val();
         self.l3.d.next = self.k2.q.val() & self.check.leaves.val();
         // Stage 3.
         self.merged.next = self.m3.q.val();

@@ -15,6 +15,11 @@
 //!   empty; otherwise nothing;
 //! * `End`: at the frame end, the record out if the slot has one.
 //!
+//! A close or end names its cluster by its first pixel too (`op_word`'s
+//! `holds.first`, the closer's key): the record leaves only if the slot's
+//! first pixel is that one, so a stale report of the closer's finds the
+//! slot's record, if any, not its own and does nothing.
+//!
 //! A record out shows for a cycle (`out_valid`, with `out_slot`, `out_acc`)
 //! three cycles after its op is taken; the taker has room for it. An add
 //! or merge that leaves its cluster quiet (no run open, no ring flag)
