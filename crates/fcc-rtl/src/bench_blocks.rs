@@ -65,6 +65,9 @@ pub enum BenchBlock {
     SlotRecords,
     /// The column core's closer's sorted entries `FccCloseOrder`.
     CloseOrder,
+    /// The column core's closer `FccCloser` (wait list, passes, sorted
+    /// entries).
+    Closer,
     /// The column core's representative rows and join filter `FccRepJoins`
     /// behind the scalar ports of `FccRepJoinsProbe`.
     RepJoins,
@@ -95,7 +98,7 @@ impl Row {
 
 impl BenchBlock {
     /// Every block with a bench.
-    pub const ALL: [BenchBlock; 23] = [
+    pub const ALL: [BenchBlock; 24] = [
         BenchBlock::Regs,
         BenchBlock::AxilAdapter,
         BenchBlock::MergeTable,
@@ -118,6 +121,7 @@ impl BenchBlock {
         BenchBlock::RunAcc,
         BenchBlock::SlotRecords,
         BenchBlock::CloseOrder,
+        BenchBlock::Closer,
         BenchBlock::RepJoins,
     ];
 
@@ -289,6 +293,17 @@ impl BenchBlock {
                     "fcc_close_order",
                 )
             }),
+            BenchBlock::Closer => Row {
+                name: "fcc_closer",
+                generate: |p| {
+                    gen(
+                        p,
+                        crate::column::fcc_closer::FccCloser::default(),
+                        "fcc_closer",
+                    )
+                },
+                waivers: lint::closer_waivers,
+            },
             BenchBlock::RepJoins => Row {
                 name: "fcc_rep_joins_probe",
                 generate: |p| {

@@ -236,7 +236,26 @@ pub fn slot_records_waivers(p: &FccParams, name: &str) -> String {
         "// `FccHoldsMerge` takes the op's column as the quiet one, not `b`'s.\n\
          lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'b'[39:28]*\"\n\
          // A quiet report carries the first pixel and the quiet column only.\n\
-         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'mh'[8:0]*\"\n"
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'mh'[8:0]*\"\n\
+         // Of stage 1's holds only a close's key (the first pixel) is read.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'ah'[39:28,8:0]*\"\n"
+    ));
+    s
+}
+
+/// The waivers of the closer `name`: its state register's, the widening
+/// casts of its due columns (as [`acc_waivers`]), and the wait list's and
+/// the sorted entries' outputs it does not read.
+pub fn closer_waivers(p: &FccParams, name: &str) -> String {
+    let mut s = acc_waivers(p, name);
+    s.push_str(&enum_register_waivers(&format!("{name}.v")));
+    s.push_str(&format!(
+        "// FccFifo offers its fill level and its RAM's ports (for side RAMs);\n\
+         // the closer counts its entries itself and has no side RAM.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'list$level'*\"\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'list$ram_*\"\n\
+         // The sorted entries' drop says when a push finds them full.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'order$full'*\"\n"
     ));
     s
 }

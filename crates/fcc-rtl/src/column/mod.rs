@@ -13,13 +13,19 @@
 //! the record store (`FccSlotRecords`: a record and the holds per slot,
 //! added to, merged, and read out as clusters close), and the closer's
 //! sorted entries (`FccCloseOrder`: a column's closes in the golden
-//! order). The rest of the slot table (the closer's wait list, slot
-//! allocation, the labels' return) and the top are to come.
+//! order) and the closer around them (`FccCloser`: the quiet clusters'
+//! wait list, passed over once a column is done). The rest of the slot
+//! table (the frame end's reports, slot allocation, the labels' return)
+//! and the top are to come.
 
 pub mod fcc_acc_merge;
 pub mod fcc_acc_pixel;
 pub mod fcc_acc_probe;
 pub mod fcc_close_order;
+pub mod fcc_closer;
+pub mod fcc_closer_in;
+pub mod fcc_closer_list;
+pub mod fcc_closer_pass;
 pub mod fcc_col_dist;
 pub mod fcc_col_dist_probe;
 pub mod fcc_col_edge;
