@@ -44,7 +44,8 @@ pub struct FccCloserList {
     pub min_due: Signal<Out, Bits<13>>,
     pub room: Signal<Out, Bit>,
     push: Signal<Local, Bit>,
-    base: Signal<Local, Bits<13>>,
+    keep: Signal<Local, Bits<13>>,
+    fresh: Signal<Local, Bits<13>>,
     ew: Signal<Local, WaitEntry>,
     bv: DFF<Bit>,
     b: DFF<WaitEntry>,
@@ -79,7 +80,8 @@ impl Default for FccCloserList {
             min_due: Default::default(),
             room: Default::default(),
             push: Default::default(),
-            base: Default::default(),
+            keep: Default::default(),
+            fresh: Default::default(),
             ew: Default::default(),
             bv: Default::default(),
             b: Default::default(),
@@ -126,13 +128,19 @@ impl Logic for FccCloserList {
         if !self.push.val() & self.take.val() {
             self.n.d.next = self.n.q.val() - self.one.val();
         }
-        self.base.next = self.low.q.val();
-        if self.start.val() {
-            self.base.next = self.none_due.val();
+        // Both the smallest kept and the one a pass starts afresh with are
+        // worked out before `start` (two comparisons late) chooses.
+        self.keep.next = self.low.q.val();
+        if self.push.val() & (self.ew.val().due < self.low.q.val()) {
+            self.keep.next = self.ew.val().due;
         }
-        self.low.d.next = self.base.val();
-        if self.push.val() & (self.ew.val().due < self.base.val()) {
-            self.low.d.next = self.ew.val().due;
+        self.fresh.next = self.none_due.val();
+        if self.push.val() {
+            self.fresh.next = self.ew.val().due;
+        }
+        self.low.d.next = self.keep.val();
+        if self.start.val() {
+            self.low.d.next = self.fresh.val();
         }
         self.b_valid.next = self.bv.q.val();
         self.used.next = self.n.q.val();
