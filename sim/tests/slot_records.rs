@@ -5,7 +5,8 @@
 //! runs started and flushed into slots, slots merged into others, closes
 //! at a column (a record leaves only if nothing holds its cluster) and at
 //! the frame end, each naming the cluster's first pixel or, now and then,
-//! another (a stale report: the record stays), in any order over few slots (an op on the slot of the op
+//! another (a stale report: the record stays), peeks (a slot with a
+//! record reported, whatever holds it), in any order over few slots (an op on the slot of the op
 //! before it, often) and many; ops offered in bursts and sparse; resets
 //! mid-run. Every record out and every quiet report is checked, field by
 //! field, in the cycle it is due, none comes that is not, and the cycles
@@ -31,6 +32,7 @@ c_struct! {
         pub merge: u8,
         pub close: u8,
         pub frame_end: u8,
+        pub peek: u8,
         pub slot: u16,
         pub other: u16,
         pub col: u16,
@@ -127,6 +129,8 @@ enum Op {
     /// the op is offered, all ops before it taken).
     Close(u16, u16, Option<u32>),
     End(u16, Option<u32>),
+    /// Slot, column: reported if it has a record, left as it is.
+    Peek(u16, u16),
 }
 
 impl Op {
@@ -176,6 +180,7 @@ impl Op {
                 i.h_first = Op::key(k, s, slots);
             }
             Op::End(s, k) => (i.frame_end, i.slot, i.h_first) = (1, s, Op::key(k, s, slots)),
+            Op::Peek(s, col) => (i.peek, i.slot, i.col) = (1, s, col),
         }
         i
     }
@@ -244,6 +249,8 @@ struct Seen {
     /// would have taken the record otherwise.
     key_held: u64,
     quiet: u64,
+    /// Peeks that reported a slot.
+    peeks: u64,
 }
 
 /// The block, the ops waiting for it, the model (each op applied as the
@@ -424,6 +431,15 @@ impl Bench {
             }
             Op::Close(s, col, k) => self.close(s, Some(col), Op::key(k, s, &self.slots), when),
             Op::End(s, k) => self.close(s, None, Op::key(k, s, &self.slots), when),
+            Op::Peek(s, col) => {
+                // Its holds merged with none: the op's column is the quiet
+                // one if no run is open.
+                let x = &self.slots[s as usize];
+                let last = CoreAcc::of(&x.acc).max_col as u16;
+                let quiet = if x.open == 0 { col } else { x.quiet };
+                self.seen.peeks += u64::from(x.acc.points > 0);
+                (x.acc.points > 0).then_some((s, (x.first, last, quiet)))
+            }
         };
         if let Some((s, q)) = report {
             self.quiet.push_back((when, s, q));
@@ -574,6 +590,7 @@ fn random_run(
                     Op::Merge(s, g, c16)
                 }
                 98..=99 => Op::End(s, stale(&mut rng, slot(s).first)),
+                95..=97 => Op::Peek(s, c16),
                 65..=89 => {
                     // A quiet slot, closed at about its due column: just
                     // before, at or just after `last + h`.
@@ -631,6 +648,7 @@ fn records_and_holds_follow_the_ops_in_order() {
         all.out_end += s.out_end;
         all.closes_held += s.closes_held;
         all.key_held += s.key_held;
+        all.peeks += s.peeks;
         all.quiet += s.quiet;
     }
     println!("in all: {all:?}");
@@ -640,6 +658,7 @@ fn records_and_holds_follow_the_ops_in_order() {
             && all.out_end > 500
             && all.closes_held > 10_000
             && all.key_held > 100
+            && all.peeks > 500
             && all.quiet > 4_000,
         "too little of some traffic: {all:?}"
     );

@@ -27,6 +27,9 @@ pub enum SlotOp {
     Close,
     /// At the frame end: a cluster's record out, whatever holds it.
     End,
+    /// At the frame end: the slot reported (`q_*`) if it has a record,
+    /// whatever holds it; nothing written.
+    Peek,
 }
 
 /// What a read is for, as it moves through the stages.
@@ -39,6 +42,7 @@ pub enum SlotHalf {
     Keep,
     Close,
     End,
+    Peek,
 }
 
 #[derive(LogicBlock)]
@@ -157,6 +161,9 @@ impl Logic for FccSlotIssue {
         }
         if self.op_kind.val() == SlotOp::End {
             self.sh1.d.next = SlotHalf::End;
+        }
+        if self.op_kind.val() == SlotOp::Peek {
+            self.sh1.d.next = SlotHalf::Peek;
         }
         if self.second.q.val() {
             self.read_addr.next = self.keep.q.val();

@@ -13,7 +13,11 @@
 //! * `Close`: the record of `op_slot` out if nothing holds the cluster
 //!   after `op_col` (`FccSlotCheck`, with `half` = `h`), the slot then
 //!   empty; otherwise nothing;
-//! * `End`: at the frame end, the record out if the slot has one.
+//! * `End`: at the frame end, the record out if the slot has one;
+//! * `Peek`: at the frame end, the slot reported (`q_*`, as a quiet
+//!   cluster is) if it has a record, whatever holds it, and left as it
+//!   is: so the closer learns every slot in use, ring-held ones included,
+//!   and closes them in the golden order.
 //!
 //! A close or end names its cluster by its first pixel too (`op_word`'s
 //! `holds.first`, the closer's key): the record leaves only if the slot's
@@ -77,6 +81,8 @@ pub struct FccSlotRecords {
     ma: Signal<Local, AccWord>,
     mh: Signal<Local, SlotHolds>,
     kept: Signal<Local, Bit>,
+    /// Stage 3's word has points (a peek reports it).
+    has: Signal<Local, Bit>,
     records: FccRam<SlotWord, SLOT_BITS>,
     issue: FccSlotIssue,
     pipe: FccSlotPipe,
@@ -109,6 +115,7 @@ impl Default for FccSlotRecords {
             ma: Default::default(),
             mh: Default::default(),
             kept: Default::default(),
+            has: Default::default(),
             records: FccRam::new(SLOTS),
             issue: Default::default(),
             pipe: Default::default(),
@@ -160,7 +167,10 @@ impl Logic for FccSlotRecords {
         self.out_valid.next = self.issue.v3.val() & self.pipe.leaves.val();
         self.out_slot.next = self.issue.s3.val();
         self.out_acc.next = self.ma.val();
-        self.q_valid.next = self.issue.v3.val() & self.kept.val() & self.pipe.quiet.val();
+        self.has.next = self.ma.val().points.any();
+        self.q_valid.next = self.issue.v3.val()
+            & ((self.kept.val() & self.pipe.quiet.val())
+                | ((self.issue.h3.val() == SlotHalf::Peek) & self.has.val()));
         self.q_slot.next = self.issue.s3.val();
         self.q_first.next = self.mh.val().first;
         self.q_last.next = self.ma.val().max_col;

@@ -1,5 +1,5 @@
 //! `FccSlotRecordsProbe`: `FccSlotRecords` behind scalar ports, for its
-//! own bench: an op's kind as flags (`merge`, `close`, `frame_end`; none: an
+//! own bench: an op's kind as flags (`merge`, `close`, `frame_end`, `peek`; none: an
 //! add), its word field by field (the record's `a_*`, the holds' `h_*`),
 //! the record out field by field (`o_*`).
 
@@ -19,6 +19,7 @@ pub struct FccSlotRecordsProbe {
     pub merge: Signal<In, Bit>,
     pub close: Signal<In, Bit>,
     pub frame_end: Signal<In, Bit>,
+    pub peek: Signal<In, Bit>,
     pub slot: Signal<In, Bits<SLOT_BITS>>,
     pub other: Signal<In, Bits<SLOT_BITS>>,
     pub col: Signal<In, Bits<12>>,
@@ -102,6 +103,9 @@ impl Logic for FccSlotRecordsProbe {
         }
         if self.close.val() {
             self.records.op_kind.next = SlotOp::Close;
+        }
+        if self.peek.val() {
+            self.records.op_kind.next = SlotOp::Peek;
         }
         if self.frame_end.val() {
             self.records.op_kind.next = SlotOp::End;
