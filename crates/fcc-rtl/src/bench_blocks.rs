@@ -68,6 +68,8 @@ pub enum BenchBlock {
     /// The column core's closer `FccCloser` (wait list, passes, sorted
     /// entries).
     Closer,
+    /// The column core's clusters' label lists `FccLabelLists`.
+    LabelLists,
     /// The column core's representative rows and join filter `FccRepJoins`
     /// behind the scalar ports of `FccRepJoinsProbe`.
     RepJoins,
@@ -98,7 +100,7 @@ impl Row {
 
 impl BenchBlock {
     /// Every block with a bench.
-    pub const ALL: [BenchBlock; 24] = [
+    pub const ALL: [BenchBlock; 25] = [
         BenchBlock::Regs,
         BenchBlock::AxilAdapter,
         BenchBlock::MergeTable,
@@ -122,6 +124,7 @@ impl BenchBlock {
         BenchBlock::SlotRecords,
         BenchBlock::CloseOrder,
         BenchBlock::Closer,
+        BenchBlock::LabelLists,
         BenchBlock::RepJoins,
     ];
 
@@ -303,6 +306,17 @@ impl BenchBlock {
                     )
                 },
                 waivers: lint::closer_waivers,
+            },
+            BenchBlock::LabelLists => Row {
+                name: "fcc_label_lists",
+                generate: |p| {
+                    gen(
+                        p,
+                        crate::column::fcc_label_lists::FccLabelLists::new(p),
+                        "fcc_label_lists",
+                    )
+                },
+                waivers: lint::label_lists_waivers,
             },
             BenchBlock::RepJoins => Row {
                 name: "fcc_rep_joins_probe",

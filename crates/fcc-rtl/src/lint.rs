@@ -260,6 +260,17 @@ pub fn closer_waivers(p: &FccParams, name: &str) -> String {
     s
 }
 
+/// The waivers of the label lists `name`: the queue's RAM ports it does
+/// not use.
+pub fn label_lists_waivers(p: &FccParams, name: &str) -> String {
+    let mut s = block_waivers(p, name);
+    s.push_str(&format!(
+        "// FccFifo offers its RAM's ports (for side RAMs); the lists have none.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'queue$ram_*\"\n"
+    ));
+    s
+}
+
 /// The waivers of the run accumulators' probe `name`: the accumulator's
 /// (as [`acc_waivers`]), and the pixel's fields the block does not read
 /// (it takes the run's fields of `RunPix` and its point, not its

@@ -33,6 +33,7 @@ pub mod fcc_col_window;
 pub mod fcc_col_window_probe;
 pub mod fcc_col_word_split;
 pub mod fcc_holds_merge;
+pub mod fcc_label_lists;
 pub mod fcc_label_pool;
 pub mod fcc_label_sets;
 pub mod fcc_open_room;
