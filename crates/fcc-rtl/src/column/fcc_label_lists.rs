@@ -26,11 +26,13 @@ pub const WALK_BITS: usize = 9;
 /// Lists kept free in the queue for the closes already under way.
 pub const WALK_ROOM: usize = 8;
 
-/// A list's first and last labels.
+/// A list's first and last labels, and whether they are one (worked out
+/// as it is queued, so that a walk's start compares nothing).
 #[derive(Clone, Copy, Debug, PartialEq, Default, LogicStruct)]
 pub struct ListEnds {
     pub head: Bits<16>,
     pub tail: Bits<16>,
+    pub single: Bit,
 }
 
 #[derive(LogicBlock)]
@@ -55,7 +57,8 @@ pub struct FccLabelLists {
     qd: Signal<Local, ListEnds>,
     start: Signal<Local, Bit>,
     label: Signal<Local, Bits<16>>,
-    last: Signal<Local, Bits<16>>,
+    /// The label returned is not its list's tail: its next is read.
+    more: Signal<Local, Bit>,
     emit: Signal<Local, Bit>,
     /// The walk's tail; a read of `next` issued one and two cycles ago.
     tail: DFF<Bits<16>>,
@@ -85,12 +88,12 @@ impl FccLabelLists {
             ret_label: Default::default(),
             idle: Default::default(),
             next: FccRam::with_stored_bits(1 << b, b),
-            queue: FccFifo::with_stored_bits(2 * 16),
+            queue: FccFifo::with_stored_bits(2 * 16 + 1),
             ends: Default::default(),
             qd: Default::default(),
             start: Default::default(),
             label: Default::default(),
-            last: Default::default(),
+            more: Default::default(),
             emit: Default::default(),
             tail: Default::default(),
             r1: Default::default(),
@@ -114,6 +117,7 @@ impl Logic for FccLabelLists {
         self.queue.push.next = self.walk_valid.val();
         self.ends.next.head = self.walk_head.val();
         self.ends.next.tail = self.walk_tail.val();
+        self.ends.next.single = self.walk_head.val() == self.walk_tail.val();
         self.queue.din.next = self.ends.val();
         self.walk_room.next = self.queue.level.val() < self.room_max.val();
         // The label returned this cycle: the next one read, or a queued
@@ -122,20 +126,20 @@ impl Logic for FccLabelLists {
             self.queue.valid.val() & !self.r1.q.val() & !self.r2.q.val() & !self.rst.val();
         self.queue.take.next = self.start.val();
         self.label.next = self.next.read_data.val();
-        self.last.next = self.tail.q.val();
+        self.more.next = self.next.read_data.val() != self.tail.q.val();
         self.qd.next = self.queue.dout.val();
         if self.start.val() {
             self.label.next = self.qd.val().head;
-            self.last.next = self.qd.val().tail;
+            self.more.next = !self.qd.val().single;
             self.tail.d.next = self.qd.val().tail;
         }
         self.emit.next = self.r2.q.val() | self.start.val();
         self.ret_valid.next = self.emit.val();
         self.ret_label.next = self.label.val();
         // Not the tail: read its next.
-        self.next.read_en.next = self.emit.val() & (self.label.val() != self.last.val());
+        self.next.read_en.next = self.emit.val() & self.more.val();
         self.next.read_addr.next = self.label.val();
-        self.r1.d.next = self.emit.val() & (self.label.val() != self.last.val());
+        self.r1.d.next = self.emit.val() & self.more.val();
         self.r2.d.next = self.r1.q.val();
         self.pushed.d.next = self.walk_valid.val();
         self.idle.next = !self.pushed.q.val()
