@@ -39,6 +39,8 @@ c_struct! {
         pub h_open: u8,
         pub h_ring: u8,
         pub h_first: u32,
+        pub h_head: u16,
+        pub h_tail: u16,
         pub a_points: u32,
         pub a_min_col: u16,
         pub a_max_col: u16,
@@ -77,6 +79,11 @@ c_struct! {
         pub q_first: u32,
         pub q_last: u16,
         pub q_col: u16,
+        pub out_head: u16,
+        pub out_tail: u16,
+        pub link_valid: u8,
+        pub link_from: u16,
+        pub link_to: u16,
         pub idle: u8,
         pub o_points: u32,
         pub o_min_col: u16,
@@ -118,6 +125,8 @@ struct Word {
     open: i8,
     ring: bool,
     first: u32,
+    /// A start's list of one label; none for a flush.
+    ends: Option<(u16, u16)>,
 }
 
 #[derive(Debug, Clone, Copy)]
@@ -148,6 +157,7 @@ impl Op {
             Op::Add(s, ref w, col) => {
                 (i.slot, i.col) = (s, col);
                 (i.h_open, i.h_ring, i.h_first) = (w.open as u8, w.ring as u8, w.first);
+                (i.h_head, i.h_tail) = w.ends.unwrap_or((0, 0));
                 let c = CoreAcc::of(&w.acc);
                 i.a_points = c.points as u32;
                 i.a_min_col = c.min_col as u16;
@@ -194,6 +204,8 @@ struct Slot {
     ring: bool,
     first: u32,
     quiet: u16,
+    /// Its labels' list's first and last.
+    ends: Option<(u16, u16)>,
 }
 
 impl Default for Slot {
@@ -204,14 +216,27 @@ impl Default for Slot {
             ring: false,
             first: NO_FIRST,
             quiet: 0,
+            ends: None,
         }
     }
 }
 
 impl Slot {
     /// Take in `o`'s runs at column `col`; the quiet report if the slot
-    /// is left quiet: (first pixel, last column, quiet column).
-    fn merge(&mut self, o: &Slot, col: u16) -> Option<(u32, u16, u16)> {
+    /// is left quiet: (first pixel, last column, quiet column); the link
+    /// of the two lists, `o`'s after this one's.
+    fn merge(&mut self, o: &Slot, col: u16) -> (Option<(u32, u16, u16)>, Option<(u16, u16)>) {
+        let link = match (self.ends, o.ends) {
+            (Some((h, t)), Some((oh, ot))) => {
+                self.ends = Some((h, ot));
+                Some((t, oh))
+            }
+            (None, e) => {
+                self.ends = e;
+                None
+            }
+            (Some(_), None) => None,
+        };
         self.acc.merge(&o.acc);
         self.open = self.open.wrapping_add(o.open);
         self.ring |= o.ring;
@@ -220,7 +245,8 @@ impl Slot {
             self.quiet = col;
         }
         let last = CoreAcc::of(&self.acc).max_col as u16;
-        (self.open == 0 && !self.ring).then_some((self.first, last, self.quiet))
+        let quiet = (self.open == 0 && !self.ring).then_some((self.first, last, self.quiet));
+        (quiet, link)
     }
 
     /// Whether a close at `col` (`None`: at the frame end) naming first
@@ -251,6 +277,8 @@ struct Seen {
     quiet: u64,
     /// Peeks that reported a slot.
     peeks: u64,
+    /// Lists linked.
+    links: u64,
 }
 
 /// The block, the ops waiting for it, the model (each op applied as the
@@ -261,7 +289,8 @@ struct Bench {
     half: u16,
     queue: VecDeque<Op>,
     slots: Vec<Slot>,
-    due: VecDeque<(u64, u16, CoreAcc)>,
+    due: VecDeque<(u64, u16, CoreAcc, (u16, u16))>,
+    links: VecDeque<(u64, (u16, u16))>,
     quiet: VecDeque<(u64, u16, (u32, u16, u16))>,
     cycle: u64,
     seen: Seen,
@@ -279,6 +308,7 @@ impl Bench {
             queue: VecDeque::new(),
             slots: vec![Slot::default(); SLOTS],
             due: VecDeque::new(),
+            links: VecDeque::new(),
             quiet: VecDeque::new(),
             cycle: 0,
             seen: Seen::default(),
@@ -323,11 +353,13 @@ impl Bench {
             self.queue.clear();
             self.due.clear();
             self.quiet.clear();
+            self.links.clear();
             self.slots = vec![Slot::default(); SLOTS];
             return;
         }
         self.check_out(&o, now);
         self.check_quiet(&o, now);
+        self.check_link(&o, now);
         if o.idle != 0 {
             assert!(
                 self.due.is_empty() && self.quiet.is_empty(),
@@ -353,7 +385,7 @@ impl Bench {
 
     fn check_out(&mut self, o: &SrOut, now: u64) {
         if o.out_valid != 0 {
-            let (when, slot, want) = self.due.pop_front().unwrap_or_else(|| {
+            let (when, slot, want, ends) = self.due.pop_front().unwrap_or_else(|| {
                 panic!(
                     "{}, cycle {now}: a record out (slot {}) with none due",
                     self.what, o.out_slot
@@ -371,12 +403,32 @@ impl Bench {
                 "{}, cycle {now}, the record of slot {slot}: expected (left), got (right)",
                 self.what
             );
-        } else if let Some(&(when, slot, _)) = self.due.front() {
+            assert_eq!(
+                ends,
+                (o.out_head, o.out_tail),
+                "{}, cycle {now}, the labels' list of slot {slot}: expected (left), got (right)",
+                self.what
+            );
+        } else if let Some(&(when, slot, _, _)) = self.due.front() {
             assert!(
                 when > now,
                 "{}: the record of slot {slot}, due at cycle {when}, did not come out",
                 self.what
             );
+        }
+    }
+
+    fn check_link(&mut self, o: &SrOut, now: u64) {
+        let due = self.links.front().filter(|l| l.0 == now).map(|l| l.1);
+        let got = (o.link_valid != 0).then_some((o.link_from, o.link_to));
+        assert_eq!(
+            due, got,
+            "{}, cycle {now}: the lists' link (from, to): expected (left), got (right)",
+            self.what
+        );
+        if due.is_some() {
+            self.links.pop_front();
+            self.seen.links += 1;
         }
     }
 
@@ -416,14 +468,22 @@ impl Bench {
                     ring: w.ring,
                     first: w.first,
                     quiet: 0,
+                    ends: w.ends,
                 };
-                self.slots[s as usize].merge(&run, col).map(|q| (s, q))
+                let (quiet, link) = self.slots[s as usize].merge(&run, col);
+                if let Some(l) = link {
+                    self.links.push_back((when, l));
+                }
+                quiet.map(|q| (s, q))
             }
             Op::Merge(k, g, col) => {
                 assert_ne!(k, g, "{}: the bench merges a slot into itself", self.what);
                 let gone = std::mem::take(&mut self.slots[g as usize]);
                 // The kept half is read, and written, a cycle after the gone.
-                let kept = self.slots[k as usize].merge(&gone, col);
+                let (kept, link) = self.slots[k as usize].merge(&gone, col);
+                if let Some(l) = link {
+                    self.links.push_back((when + 1, l));
+                }
                 if let Some(q) = kept {
                     self.quiet.push_back((when + 1, k, q));
                 }
@@ -457,7 +517,8 @@ impl Bench {
         self.seen.key_held += u64::from(key_held);
         if leaves {
             let r = std::mem::take(&mut self.slots[s as usize]);
-            self.due.push_back((when, s, CoreAcc::of(&r.acc)));
+            self.due
+                .push_back((when, s, CoreAcc::of(&r.acc), r.ends.unwrap_or((0, 0))));
             match col {
                 Some(_) => self.seen.out_close += 1,
                 None => self.seen.out_end += 1,
@@ -475,7 +536,11 @@ impl Bench {
         self.queue
             .extend(slots.into_iter().map(|s| Op::End(s, None)));
         let start = self.cycle;
-        while !self.queue.is_empty() || !self.due.is_empty() || !self.quiet.is_empty() || !self.idle
+        while !self.queue.is_empty()
+            || !self.due.is_empty()
+            || !self.quiet.is_empty()
+            || !self.links.is_empty()
+            || !self.idle
         {
             self.step(true, false);
             assert!(
@@ -527,11 +592,13 @@ fn stale(rng: &mut ChaCha8Rng, first: u32) -> Option<u32> {
 /// A run's start at column `col`: one run open, a first pixel of this
 /// column, the ring flag now and then.
 fn start(rng: &mut ChaCha8Rng, col: u32) -> Word {
+    let label = rng.gen_range(1..=u16::MAX);
     Word {
         acc: Acc::default(),
         open: 1,
         ring: rng.gen_range(0..40) == 0,
         first: (col << 7) | rng.gen_range(0..128),
+        ends: Some((label, label)),
     }
 }
 
@@ -542,6 +609,7 @@ fn flush(rng: &mut ChaCha8Rng, col: u32, cols: u32) -> Word {
         open: -1,
         ring: false,
         first: NO_FIRST,
+        ends: None,
     }
 }
 
@@ -649,6 +717,7 @@ fn records_and_holds_follow_the_ops_in_order() {
         all.closes_held += s.closes_held;
         all.key_held += s.key_held;
         all.peeks += s.peeks;
+        all.links += s.links;
         all.quiet += s.quiet;
     }
     println!("in all: {all:?}");
@@ -659,6 +728,7 @@ fn records_and_holds_follow_the_ops_in_order() {
             && all.closes_held > 10_000
             && all.key_held > 100
             && all.peeks > 500
+            && all.links > 2_000
             && all.quiet > 4_000,
         "too little of some traffic: {all:?}"
     );

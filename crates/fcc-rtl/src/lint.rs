@@ -238,7 +238,7 @@ pub fn slot_records_waivers(p: &FccParams, name: &str) -> String {
          // A quiet report carries the first pixel and the quiet column only.\n\
          lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'mh'[8:0]*\"\n\
          // Of stage 1's holds only a close's key (the first pixel) is read.\n\
-         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'ah'[39:28,8:0]*\"\n"
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'ah'[71:28,8:0]*\"\n"
     ));
     s
 }

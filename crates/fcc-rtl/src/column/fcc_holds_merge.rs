@@ -3,6 +3,8 @@
 //! the ring flags OR, the smaller first pixel stays; when no run is left
 //! open the merge's column becomes the quiet column, and `quiet` says the
 //! cluster is held by nothing but its last column (no run open, no ring).
+//! The labels' lists join, `b`'s after `a`'s: when both have one, `link`
+//! says `a`'s tail must point to `b`'s head (`FccLabelLists`).
 
 use rust_hdl::prelude::*;
 
@@ -15,6 +17,9 @@ pub struct FccHoldsMerge {
     pub col: Signal<In, Bits<12>>,
     pub out: Signal<Out, SlotHolds>,
     pub quiet: Signal<Out, Bit>,
+    pub link: Signal<Out, Bit>,
+    pub link_from: Signal<Out, Bits<16>>,
+    pub link_to: Signal<Out, Bits<16>>,
     open: Signal<Local, Bits<8>>,
 }
 
@@ -32,5 +37,15 @@ impl Logic for FccHoldsMerge {
             self.out.next.quiet = self.col.val();
         }
         self.quiet.next = !self.open.val().any() & !(self.a.val().ring | self.b.val().ring);
+        if !self.a.val().head.any() {
+            self.out.next.head = self.b.val().head;
+            self.out.next.tail = self.b.val().tail;
+        }
+        if self.a.val().head.any() & self.b.val().head.any() {
+            self.out.next.tail = self.b.val().tail;
+        }
+        self.link.next = self.a.val().head.any() & self.b.val().head.any();
+        self.link_from.next = self.a.val().tail;
+        self.link_to.next = self.b.val().head;
     }
 }

@@ -34,6 +34,10 @@ pub struct FccSlotPipe {
     pub merged: Signal<Out, SlotWord>,
     pub leaves: Signal<Out, Bit>,
     pub quiet: Signal<Out, Bit>,
+    /// Stage 3: the merged lists' link (if the word is written).
+    pub link: Signal<Out, Bit>,
+    pub link_from: Signal<Out, Bits<16>>,
+    pub link_to: Signal<Out, Bits<16>>,
     mw: Signal<Local, SlotWord>,
     wa: Signal<Local, AccWord>,
     wh: Signal<Local, SlotHolds>,
@@ -50,6 +54,9 @@ pub struct FccSlotPipe {
     m3: DFF<SlotWord>,
     l3: DFF<Bit>,
     q3: DFF<Bit>,
+    lk3: DFF<Bit>,
+    lf3: DFF<Bits<16>>,
+    lt3: DFF<Bits<16>>,
     acc: FccAccMerge,
     holds: FccHoldsMerge,
     check: FccSlotCheck,
@@ -69,6 +76,9 @@ impl Default for FccSlotPipe {
             merged: Default::default(),
             leaves: Default::default(),
             quiet: Default::default(),
+            link: Default::default(),
+            link_from: Default::default(),
+            link_to: Default::default(),
             mw: Default::default(),
             wa: Default::default(),
             wh: Default::default(),
@@ -84,6 +94,9 @@ impl Default for FccSlotPipe {
             m3: Default::default(),
             l3: Default::default(),
             q3: Default::default(),
+            lk3: Default::default(),
+            lf3: Default::default(),
+            lt3: Default::default(),
             acc: Default::default(),
             holds: Default::default(),
             check: Default::default(),
@@ -95,7 +108,7 @@ impl Default for FccSlotPipe {
 impl Logic for FccSlotPipe {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clk, a1, c1, b2, c2, l2, f2, k2, e2, m3, l3, q3);
+        dff_setup!(self, clk, a1, c1, b2, c2, l2, f2, k2, e2, m3, l3, q3, lk3, lf3, lt3);
         // Stage 1: the op's word and column; the other word of stage 2.
         self.a1.d.next = self.op_word.val();
         if self.take.val() {
@@ -126,6 +139,9 @@ impl Logic for FccSlotPipe {
         self.mw.next.holds = self.holds.out.val();
         self.m3.d.next = self.mw.val();
         self.q3.d.next = self.holds.quiet.val();
+        self.lk3.d.next = self.holds.link.val();
+        self.lf3.d.next = self.holds.link_from.val();
+        self.lt3.d.next = self.holds.link_to.val();
         self.check.has.next = self.wa.val().points.any();
         self.check.last.next = self.wa.val().max_col;
         self.check.open.next = self.wh.val().open;
@@ -141,5 +157,8 @@ impl Logic for FccSlotPipe {
         self.merged.next = self.m3.q.val();
         self.leaves.next = self.l3.q.val();
         self.quiet.next = self.q3.q.val();
+        self.link.next = self.lk3.q.val();
+        self.link_from.next = self.lf3.q.val();
+        self.link_to.next = self.lt3.q.val();
     }
 }

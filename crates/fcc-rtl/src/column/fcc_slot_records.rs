@@ -24,8 +24,11 @@
 //! first pixel is that one, so a stale report of the closer's finds the
 //! slot's record, if any, not its own and does nothing.
 //!
-//! A record out shows for a cycle (`out_valid`, with `out_slot`, `out_acc`)
-//! three cycles after its op is taken; the taker has room for it. An add
+//! A record out shows for a cycle (`out_valid`, with `out_slot`, `out_acc`
+//! and its labels' list, `out_head` to `out_tail`) three cycles after its
+//! op is taken; the taker has room for it. A word written that joins two
+//! labels' lists says so in its cycle (`link_*`: the kept list's tail
+//! points to the other's head, for `FccLabelLists`). An add
 //! or merge that leaves its cluster quiet (no run open, no ring flag)
 //! reports it in the cycle of its write (`q_valid`: the slot, its first
 //! pixel, its last column and the quiet column), so that a closer can
@@ -70,6 +73,11 @@ pub struct FccSlotRecords {
     pub out_valid: Signal<Out, Bit>,
     pub out_slot: Signal<Out, Bits<SLOT_BITS>>,
     pub out_acc: Signal<Out, AccWord>,
+    pub out_head: Signal<Out, Bits<16>>,
+    pub out_tail: Signal<Out, Bits<16>>,
+    pub link_valid: Signal<Out, Bit>,
+    pub link_from: Signal<Out, Bits<16>>,
+    pub link_to: Signal<Out, Bits<16>>,
     pub q_valid: Signal<Out, Bit>,
     pub q_slot: Signal<Out, Bits<SLOT_BITS>>,
     pub q_first: Signal<Out, Bits<FIRST_BITS>>,
@@ -105,6 +113,11 @@ impl Default for FccSlotRecords {
             out_valid: Default::default(),
             out_slot: Default::default(),
             out_acc: Default::default(),
+            out_head: Default::default(),
+            out_tail: Default::default(),
+            link_valid: Default::default(),
+            link_from: Default::default(),
+            link_to: Default::default(),
             q_valid: Default::default(),
             q_slot: Default::default(),
             q_first: Default::default(),
@@ -167,6 +180,11 @@ impl Logic for FccSlotRecords {
         self.out_valid.next = self.issue.v3.val() & self.pipe.leaves.val();
         self.out_slot.next = self.issue.s3.val();
         self.out_acc.next = self.ma.val();
+        self.out_head.next = self.mh.val().head;
+        self.out_tail.next = self.mh.val().tail;
+        self.link_valid.next = self.issue.v3.val() & self.kept.val() & self.pipe.link.val();
+        self.link_from.next = self.pipe.link_from.val();
+        self.link_to.next = self.pipe.link_to.val();
         self.has.next = self.ma.val().points.any();
         self.q_valid.next = self.issue.v3.val()
             & ((self.kept.val() & self.pipe.quiet.val())

@@ -1,7 +1,8 @@
 //! `FccSlotRecordsProbe`: `FccSlotRecords` behind scalar ports, for its
 //! own bench: an op's kind as flags (`merge`, `close`, `frame_end`, `peek`; none: an
 //! add), its word field by field (the record's `a_*`, the holds' `h_*`),
-//! the record out field by field (`o_*`).
+//! the record out field by field (`o_*`, its labels' list `out_head` to
+//! `out_tail`).
 
 use rust_hdl::prelude::*;
 
@@ -26,6 +27,8 @@ pub struct FccSlotRecordsProbe {
     pub h_open: Signal<In, Bits<8>>,
     pub h_ring: Signal<In, Bit>,
     pub h_first: Signal<In, Bits<FIRST_BITS>>,
+    pub h_head: Signal<In, Bits<16>>,
+    pub h_tail: Signal<In, Bits<16>>,
     pub a_points: Signal<In, Bits<20>>,
     pub a_min_col: Signal<In, Bits<12>>,
     pub a_max_col: Signal<In, Bits<12>>,
@@ -58,6 +61,11 @@ pub struct FccSlotRecordsProbe {
     pub q_first: Signal<Out, Bits<FIRST_BITS>>,
     pub q_last: Signal<Out, Bits<12>>,
     pub q_col: Signal<Out, Bits<12>>,
+    pub out_head: Signal<Out, Bits<16>>,
+    pub out_tail: Signal<Out, Bits<16>>,
+    pub link_valid: Signal<Out, Bit>,
+    pub link_from: Signal<Out, Bits<16>>,
+    pub link_to: Signal<Out, Bits<16>>,
     pub idle: Signal<Out, Bit>,
     pub o_points: Signal<Out, Bits<20>>,
     pub o_min_col: Signal<Out, Bits<12>>,
@@ -141,6 +149,8 @@ impl Logic for FccSlotRecordsProbe {
         self.holds.next.ring = self.h_ring.val();
         self.holds.next.first = self.h_first.val();
         self.holds.next.quiet = self.col.val();
+        self.holds.next.head = self.h_head.val();
+        self.holds.next.tail = self.h_tail.val();
         self.word.next.acc = self.acc.val();
         self.word.next.holds = self.holds.val();
         self.records.op_word.next = self.word.val();
@@ -152,6 +162,11 @@ impl Logic for FccSlotRecordsProbe {
         self.q_first.next = self.records.q_first.val();
         self.q_last.next = self.records.q_last.val();
         self.q_col.next = self.records.q_col.val();
+        self.out_head.next = self.records.out_head.val();
+        self.out_tail.next = self.records.out_tail.val();
+        self.link_valid.next = self.records.link_valid.val();
+        self.link_from.next = self.records.link_from.val();
+        self.link_to.next = self.records.link_to.val();
         self.idle.next = self.records.idle.val();
         self.out.next = self.records.out_acc.val();
         self.o_points.next = self.out.val().points;

@@ -292,13 +292,18 @@ pub const FIRST_BITS: usize = 19;
 /// * `first`: its first pixel in column order, column in the high 12
 ///   bits and row in the low 7 (the record order of a column), the
 ///   smaller kept;
-/// * `quiet`: the column of the last add or merge that left `open` at 0.
+/// * `quiet`: the column of the last add or merge that left `open` at 0;
+/// * `head`, `tail`: the first and last of its labels' list
+///   (`FccLabelLists`; 0: none), the gone list after the kept one on a
+///   merge.
 #[derive(Clone, Copy, Debug, PartialEq, Default, LogicStruct)]
 pub struct SlotHolds {
     pub open: Bits<8>,
     pub ring: Bit,
     pub first: Bits<FIRST_BITS>,
     pub quiet: Bits<12>,
+    pub head: Bits<16>,
+    pub tail: Bits<16>,
 }
 
 impl SlotHolds {
