@@ -196,6 +196,11 @@ impl Op {
     }
 }
 
+/// A quiet report: first pixel, last column, quiet column.
+type Quiet = (u32, u16, u16);
+/// Two lists' link: the first one's tail, the second one's head.
+type Link = (u16, u16);
+
 /// A slot in the model: the record and the holds.
 #[derive(Debug, Clone, Copy)]
 struct Slot {
@@ -225,7 +230,7 @@ impl Slot {
     /// Take in `o`'s runs at column `col`; the quiet report if the slot
     /// is left quiet: (first pixel, last column, quiet column); the link
     /// of the two lists, `o`'s after this one's.
-    fn merge(&mut self, o: &Slot, col: u16) -> (Option<(u32, u16, u16)>, Option<(u16, u16)>) {
+    fn merge(&mut self, o: &Slot, col: u16) -> (Option<Quiet>, Option<Link>) {
         let link = match (self.ends, o.ends) {
             (Some((h, t)), Some((oh, ot))) => {
                 self.ends = Some((h, ot));
