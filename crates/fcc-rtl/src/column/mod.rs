@@ -14,9 +14,10 @@
 //! added to, merged, and read out as clusters close), and the closer's
 //! sorted entries (`FccCloseOrder`: a column's closes in the golden
 //! order) and the closer around them (`FccCloser`: the quiet clusters'
-//! wait list, passed over once a column is done). The rest of the slot
-//! table (the frame end's reports, slot allocation, the labels' return)
-//! and the top are to come.
+//! wait list, passed over once a column is done), and the labels' lists
+//! (`FccLabelLists`: a closed cluster's labels back to the pool). The
+//! rest of the slot table (slot allocation, the union-find's queue, the
+//! column-start check) and the top are to come.
 
 pub mod fcc_acc_merge;
 pub mod fcc_acc_pixel;
