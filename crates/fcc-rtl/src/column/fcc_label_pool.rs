@@ -98,8 +98,7 @@ pub struct FccLabelPool {
 
 impl FccLabelPool {
     pub fn new(p: &FccParams) -> Self {
-        let b = p.label_bits as usize;
-        assert!(b <= 16, "labels are 16 bits wide here");
+        let b = super::label_bits(p);
         let max = u64::from(p.max_label());
         Self {
             clk: Default::default(),

@@ -50,8 +50,7 @@ pub struct FccLabelSets {
 
 impl FccLabelSets {
     pub fn new(p: &FccParams) -> Self {
-        let b = p.label_bits as usize;
-        assert!(b <= 16, "labels are 16 bits wide here");
+        let b = super::label_bits(p);
         Self {
             clk: Default::default(),
             rst: Default::default(),

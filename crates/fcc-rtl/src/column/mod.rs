@@ -76,6 +76,15 @@ pub mod fcc_slot_records_probe;
 
 use rust_hdl::prelude::*;
 
+/// Bits of a label in the label tables (`FccLabelPool`, `FccLabelSets`,
+/// `FccLabelLists`): `FccParams::label_bits`; labels travel in 16-bit
+/// fields.
+pub fn label_bits(p: &fcc_params::FccParams) -> usize {
+    let b = p.label_bits as usize;
+    assert!(b <= 16, "labels are 16 bits wide here");
+    b
+}
+
 /// Bits of a run slot's age (or number) in a representative row (`h + 1`
 /// slots, at most 6 at K = 11).
 pub const REP_AGE_BITS: usize = 3;
