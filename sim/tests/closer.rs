@@ -74,9 +74,9 @@ enum Event {
     Report(Report),
     Mark(u16),
     /// The frame end: the top waits for `caught_up`, clears, and reports
-    /// every slot in use `ending`, due at this column.
+    /// every slot in use `ending` (the reports after it), due at this
+    /// column.
     EndStart(u16),
-    EndReport(Report),
     /// A frame starts.
     Clear,
     Reset,
@@ -231,7 +231,7 @@ impl Bench {
             let may_report = room || self.lag > 0;
             if rng.gen_bool(rate) {
                 match ev {
-                    Event::Report(r) | Event::EndReport(r) if may_report => {
+                    Event::Report(r) if may_report => {
                         (inp.q_valid, inp.q_slot, inp.q_first, inp.q_last, inp.q_col) =
                             (1, r.slot, r.key, r.last, r.col);
                         events.pop_front();
@@ -244,7 +244,7 @@ impl Bench {
                             }
                         }
                     }
-                    Event::Report(_) | Event::EndReport(_) => {}
+                    Event::Report(_) => {}
                     Event::Mark(c) => {
                         (inp.mark_valid, inp.mark_col) = (1, c);
                         events.pop_front();
@@ -375,7 +375,7 @@ fn frame(rng: &mut ChaCha8Rng, cols: u16, ends: usize, reset_at: Option<u16>) ->
     }
     events.push(Event::EndStart(cols));
     for _ in 0..ends {
-        events.push(Event::EndReport(Report {
+        events.push(Event::Report(Report {
             slot: rng.gen_range(0..512),
             key: key(rng, 0),
             last: rng.gen_range(0..cols),

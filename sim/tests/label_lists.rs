@@ -196,9 +196,10 @@ impl Bench {
 
     fn drain(&mut self, limit: u64) {
         let start = self.cycle;
-        while !self.expect.is_empty() || self.step(LlIn::default()).idle == 0 {
-            if !self.expect.is_empty() {
-                self.step(LlIn::default());
+        loop {
+            let idle = self.step(LlIn::default()).idle != 0;
+            if idle && self.expect.is_empty() {
+                break;
             }
             assert!(self.cycle - start < limit, "{}: labels left", self.what);
         }

@@ -129,7 +129,7 @@ impl Logic for FccCloser {
         self.writes.r1.next = self.pass.p_r1.val();
         self.writes.start.next = self.pass.p_start.val();
         self.writes.take.next = self.pass.w_take.val();
-        self.writes.pass_col.next = self.pass.pass_col_out.val();
+        self.writes.pass_col.next = self.pass.close_col.val();
         self.writes.drop_valid.next = self.order.drop_valid.val();
         self.writes.drop_key.next = self.order.drop_key.val();
         self.writes.drop_slot.next = self.order.drop_slot.val();

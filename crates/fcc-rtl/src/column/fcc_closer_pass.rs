@@ -50,14 +50,14 @@ pub struct FccCloserPass {
     pub p_moves: Signal<Out, Bit>,
     pub p_r1n: Signal<Out, Bit>,
     pub p_r1: Signal<Out, WaitEntry>,
-    pub pass_col_out: Signal<Out, Bits<13>>,
     /// The sorted entries: one in, the head and its pop.
     pub o_push: Signal<Out, Bit>,
     pub o_key: Signal<Out, Bits<CLOSE_KEY_BITS>>,
     pub o_slot: Signal<Out, Bits<SLOT_BITS>>,
     pub o_head_valid: Signal<In, Bit>,
     pub o_pop: Signal<Out, Bit>,
-    /// The close offered (the head's slot and key beside it), taken.
+    /// The close offered (the head's slot and key beside it), taken; its
+    /// column is the one being passed (the list's writes read it too).
     pub close_valid: Signal<Out, Bit>,
     pub close_col: Signal<Out, Bits<13>>,
     pub close_take: Signal<In, Bit>,
@@ -100,7 +100,6 @@ impl Default for FccCloserPass {
             p_moves: Default::default(),
             p_r1n: Default::default(),
             p_r1: Default::default(),
-            pass_col_out: Default::default(),
             o_push: Default::default(),
             o_key: Default::default(),
             o_slot: Default::default(),
@@ -185,7 +184,6 @@ impl Logic for FccCloserPass {
         // Send: the head, at `pass_col`, until none is left.
         self.close_valid.next = (self.state.q.val() == CloserState::Send) & self.o_head_valid.val();
         self.close_col.next = self.pass_col.q.val();
-        self.pass_col_out.next = self.pass_col.q.val();
         self.o_pop.next = self.close_valid.val() & self.close_take.val();
         if (self.state.q.val() == CloserState::Send) & !self.o_head_valid.val() {
             self.state.d.next = CloserState::Idle;
