@@ -70,6 +70,9 @@ pub enum BenchBlock {
     Closer,
     /// The column core's clusters' label lists `FccLabelLists`.
     LabelLists,
+    /// The column core's union-find queue `FccSetQueue` (with
+    /// `FccLabelSets` and `FccSetOrder`).
+    SetQueue,
     /// The column core's representative rows and join filter `FccRepJoins`
     /// behind the scalar ports of `FccRepJoinsProbe`.
     RepJoins,
@@ -100,7 +103,7 @@ impl Row {
 
 impl BenchBlock {
     /// Every block with a bench.
-    pub const ALL: [BenchBlock; 25] = [
+    pub const ALL: [BenchBlock; 26] = [
         BenchBlock::Regs,
         BenchBlock::AxilAdapter,
         BenchBlock::MergeTable,
@@ -125,6 +128,7 @@ impl BenchBlock {
         BenchBlock::CloseOrder,
         BenchBlock::Closer,
         BenchBlock::LabelLists,
+        BenchBlock::SetQueue,
         BenchBlock::RepJoins,
     ];
 
@@ -317,6 +321,17 @@ impl BenchBlock {
                     )
                 },
                 waivers: lint::label_lists_waivers,
+            },
+            BenchBlock::SetQueue => Row {
+                name: "fcc_set_queue",
+                generate: |p| {
+                    gen(
+                        p,
+                        crate::column::fcc_set_queue::FccSetQueue::new(p),
+                        "fcc_set_queue",
+                    )
+                },
+                waivers: lint::set_queue_waivers,
             },
             BenchBlock::RepJoins => Row {
                 name: "fcc_rep_joins_probe",

@@ -271,6 +271,24 @@ pub fn label_lists_waivers(p: &FccParams, name: &str) -> String {
     s
 }
 
+/// The waivers of the union-find's queue `name`: the FIFO's RAM ports (it
+/// has no side RAM) and the parts of its entries some ops leave unused.
+pub fn set_queue_waivers(p: &FccParams, name: &str) -> String {
+    let mut s = block_waivers(p, name);
+    s.push_str(&format!(
+        "// FccFifo offers its RAM's ports (for side RAMs); the queue has none.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'queue$ram_*\"\n\
+         // The queue keeps each op's kind itself, and the record store joins\n\
+         // clusters by their slots: a join's gone root is not needed.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'sets$ev_join'*\"\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'sets$ev_gone'*\"\n\
+         // The gate sees the whole head; a join's second label goes from the\n\
+         // head to the union-find, not through the gate.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'h_op'[35:20]*\"\n"
+    ));
+    s
+}
+
 /// The waivers of the run accumulators' probe `name`: the accumulator's
 /// (as [`acc_waivers`]), and the pixel's fields the block does not read
 /// (it takes the run's fields of `RunPix` and its point, not its

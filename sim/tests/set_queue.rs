@@ -1,0 +1,566 @@
+//! The column core's union-find queue `fcc_set_queue` alone under
+//! Verilator, against a model of its contract (docs/column-core.md, item
+//! 3): the slot table's ops in pixel order (makes, finds, joins, column
+//! markers) pushed while `room` says so, the slot pool's head offered or
+//! not, the ops taken out under back-pressure; every op must come out
+//! once, in the order pushed, with what it became: a make's label and the
+//! slot it took, a find's root and slot, a join's kept root and slot, the
+//! slot gone and whether it merged (the union-find over labels of
+//! `fcc_label_sets`, applied in order), a marker's column; and `idle`
+//! only with nothing to come. Clusters are closed (their labels and slot
+//! freed) and labels made again; a reset mid-run. A mismatch prints the
+//! op, expected, got and the seed.
+
+use std::collections::VecDeque;
+
+use fcc_params::FccParams;
+use fcc_rtl::BenchBlock;
+use fcc_sim::{c_struct, load_plain, PlainDut, PlainModel};
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+
+c_struct! {
+    /// Inputs of one cycle, named as the ports.
+    pub struct QIn {
+        pub rst: u8,
+        pub in_valid: u8,
+        pub in_make: u8,
+        pub in_join: u8,
+        pub in_mark: u8,
+        pub in_ring: u8,
+        pub in_a: u16,
+        pub in_b: u16,
+        pub in_col: u16,
+        pub in_row: u8,
+        pub slot_ok: u8,
+        pub slot: u16,
+        pub ev_take: u8,
+    }
+}
+
+c_struct! {
+    /// Outputs during one cycle.
+    pub struct QOut {
+        pub room: u8,
+        pub slot_take: u8,
+        pub ev_valid: u8,
+        pub ev_make: u8,
+        pub ev_join: u8,
+        pub ev_mark: u8,
+        pub ev_ring: u8,
+        pub ev_merged: u8,
+        pub ev_label: u16,
+        pub ev_slot: u16,
+        pub ev_other: u16,
+        pub ev_col: u16,
+        pub ev_row: u8,
+        pub idle: u8,
+    }
+}
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Kind {
+    Make,
+    Find,
+    Join,
+    Mark,
+}
+
+/// An op pushed.
+#[derive(Debug, Clone, Copy)]
+struct Op {
+    kind: Kind,
+    a: u16,
+    b: u16,
+    col: u16,
+    row: u8,
+    ring: bool,
+}
+
+/// What an op must come out as (the fields its kind defines).
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Out {
+    kind: Kind,
+    col: u16,
+    row: u8,
+    ring: bool,
+    merged: bool,
+    label: u16,
+    slot: u16,
+    other: u16,
+}
+
+fn got(o: &QOut) -> Out {
+    let kind = match (o.ev_make, o.ev_join, o.ev_mark) {
+        (1, 0, 0) => Kind::Make,
+        (0, 1, 0) => Kind::Join,
+        (0, 0, 1) => Kind::Mark,
+        (0, 0, 0) => Kind::Find,
+        _ => panic!("an op out of two kinds: {o:?}"),
+    };
+    Out {
+        kind,
+        col: o.ev_col,
+        row: o.ev_row,
+        ring: o.ev_ring != 0,
+        merged: o.ev_merged != 0,
+        label: o.ev_label,
+        slot: o.ev_slot,
+        other: o.ev_other,
+    }
+}
+
+/// What the fields of a kind leave undefined, as the block gives them:
+/// only the defined ones are compared.
+fn defined(mut o: Out) -> Out {
+    match o.kind {
+        Kind::Make => {
+            o.merged = false;
+            o.other = 0;
+        }
+        Kind::Find => {
+            (o.row, o.ring, o.merged, o.other) = (0, false, false, 0);
+        }
+        Kind::Join => {
+            (o.row, o.ring) = (0, false);
+            if !o.merged {
+                o.other = 0;
+            }
+        }
+        Kind::Mark => {
+            (o.row, o.ring, o.merged, o.label, o.slot, o.other) = (0, false, false, 0, 0, 0);
+        }
+    }
+    o
+}
+
+/// The contract's state: a forest over labels, each root with its slot;
+/// the open clusters' labels; the free slots (the pool's order).
+struct Model {
+    parent: Vec<u16>,
+    slot: Vec<u16>,
+    made: Vec<bool>,
+    clusters: Vec<Vec<u16>>,
+    free_slots: VecDeque<u16>,
+}
+
+impl Model {
+    fn new(labels: usize) -> Model {
+        Model {
+            parent: vec![0; labels + 1],
+            slot: vec![0; labels + 1],
+            made: vec![false; labels + 1],
+            clusters: Vec::new(),
+            free_slots: (0..512).collect(),
+        }
+    }
+
+    fn root(&self, mut x: u16) -> u16 {
+        assert!(self.made[x as usize], "the bench names label {x}, not made");
+        while self.parent[x as usize] != x {
+            x = self.parent[x as usize];
+        }
+        x
+    }
+
+    fn cluster_of(&self, l: u16) -> usize {
+        let r = self.root(l);
+        (0..self.clusters.len())
+            .find(|&c| self.root(self.clusters[c][0]) == r)
+            .expect("every made label is in a cluster")
+    }
+
+    /// Op `op` as it comes out, a make with slot `s` (the pool's head
+    /// when it was taken).
+    fn apply(&mut self, op: Op, s: Option<u16>) -> Out {
+        let mut o = Out {
+            kind: op.kind,
+            col: op.col,
+            row: op.row,
+            ring: op.ring,
+            merged: false,
+            label: 0,
+            slot: 0,
+            other: 0,
+        };
+        match op.kind {
+            Kind::Make => {
+                let s = s.expect("a make took a slot");
+                self.parent[op.a as usize] = op.a;
+                self.slot[op.a as usize] = s;
+                self.clusters.push(vec![op.a]);
+                (o.label, o.slot) = (op.a, s);
+            }
+            Kind::Find => {
+                let r = self.root(op.a);
+                (o.label, o.slot) = (r, self.slot[r as usize]);
+            }
+            Kind::Join => {
+                let (ra, rb) = (self.root(op.a), self.root(op.b));
+                let (keep, gone) = (ra.min(rb), ra.max(rb));
+                o.merged = ra != rb;
+                if o.merged {
+                    let (ck, cg) = (self.cluster_of(keep), self.cluster_of(gone));
+                    let moved = std::mem::take(&mut self.clusters[cg]);
+                    self.clusters[ck].extend(moved);
+                    self.clusters.swap_remove(cg);
+                    self.parent[gone as usize] = keep;
+                    o.other = self.slot[gone as usize];
+                }
+                (o.label, o.slot) = (keep, self.slot[keep as usize]);
+            }
+            Kind::Mark => {}
+        }
+        defined(o)
+    }
+}
+
+/// Drives the block: ops pushed (while `room`), the pool's head, the
+/// taker's back-pressure; checks every op out against the model.
+struct Bench {
+    d: PlainDut<QIn, QOut>,
+    m: Model,
+    labels: usize,
+    /// Ops pushed and not yet out; slots taken by makes not yet out.
+    pending: VecDeque<Op>,
+    taken: VecDeque<u16>,
+    room: bool,
+    idle: bool,
+    cycle: u64,
+    out: [u64; 4],
+    merged: u64,
+    slot_waits: u64,
+    room_low: u64,
+    what: String,
+}
+
+impl Bench {
+    fn new(model: &PlainModel<QIn, QOut>, labels: usize, what: String) -> Bench {
+        let mut b = Bench {
+            d: PlainDut::new(model.clone()),
+            m: Model::new(labels),
+            labels,
+            pending: VecDeque::new(),
+            taken: VecDeque::new(),
+            room: false,
+            idle: false,
+            cycle: 0,
+            out: [0; 4],
+            merged: 0,
+            slot_waits: 0,
+            room_low: 0,
+            what,
+        };
+        b.reset();
+        b
+    }
+
+    fn reset(&mut self) {
+        self.step(None, true, true, true);
+        self.m = Model::new(self.labels);
+        self.pending.clear();
+        self.taken.clear();
+    }
+
+    /// One cycle: `op` pushed (the caller saw `room`), the pool's head
+    /// offered when `slot_ok` (and one is free), ops taken when `take`.
+    fn step(&mut self, op: Option<Op>, slot_ok: bool, take: bool, rst: bool) {
+        // The pool's head: the oldest free slot not yet taken.
+        let head = self.m.free_slots.get(self.taken.len()).copied();
+        let slot_ok = slot_ok && head.is_some();
+        let inp = QIn {
+            rst: rst as u8,
+            in_valid: op.is_some() as u8,
+            in_make: op.is_some_and(|o| o.kind == Kind::Make) as u8,
+            in_join: op.is_some_and(|o| o.kind == Kind::Join) as u8,
+            in_mark: op.is_some_and(|o| o.kind == Kind::Mark) as u8,
+            in_ring: op.is_some_and(|o| o.ring) as u8,
+            in_a: op.map_or(0, |o| o.a),
+            in_b: op.map_or(0, |o| o.b),
+            in_col: op.map_or(0, |o| o.col),
+            in_row: op.map_or(0, |o| o.row),
+            slot_ok: slot_ok as u8,
+            slot: head.unwrap_or(0),
+            ev_take: take as u8,
+        };
+        let o = self.d.step(&inp);
+        self.cycle += 1;
+        self.room = o.room != 0;
+        self.idle = o.idle != 0;
+        self.room_low += u64::from(!self.room);
+        if rst {
+            return;
+        }
+        if let Some(op) = op {
+            self.pending.push_back(op);
+        }
+        if o.slot_take != 0 {
+            assert!(
+                slot_ok,
+                "{}, cycle {}: a slot taken with none offered",
+                self.what, self.cycle
+            );
+            self.taken.push_back(head.expect("offered"));
+        } else if !slot_ok && self.pending.front().is_some_and(|p| p.kind == Kind::Make) {
+            self.slot_waits += 1;
+        }
+        if o.ev_valid != 0 && take {
+            let op = self.pending.pop_front().unwrap_or_else(|| {
+                panic!(
+                    "{}, cycle {}: an op out with none pushed: {:?}",
+                    self.what,
+                    self.cycle,
+                    got(&o)
+                )
+            });
+            let s = (op.kind == Kind::Make).then(|| {
+                let s = self
+                    .taken
+                    .pop_front()
+                    .expect("a make out before its slot was taken");
+                self.m.free_slots.retain(|&x| x != s);
+                s
+            });
+            let want = self.m.apply(op, s);
+            let n = self.out.iter().sum::<u64>();
+            assert_eq!(
+                defined(got(&o)),
+                want,
+                "{}, cycle {}, op {n} out {op:?}: expected (left), got (right)",
+                self.what,
+                self.cycle
+            );
+            self.out[op.kind as usize] += 1;
+            if want.merged {
+                // The record store frees the slot gone.
+                self.merged += 1;
+                self.m.free_slots.push_back(want.other);
+            }
+        }
+        if o.idle != 0 {
+            assert!(
+                self.pending.is_empty(),
+                "{}, cycle {}: idle with {} ops to come",
+                self.what,
+                self.cycle,
+                self.pending.len()
+            );
+        }
+    }
+
+    /// Step until every op is out and the block says idle.
+    fn drain(&mut self, limit: u64) {
+        let start = self.cycle;
+        loop {
+            let idle_before = self.pending.is_empty();
+            self.step(None, true, true, false);
+            if idle_before && self.idle {
+                return;
+            }
+            assert!(
+                self.cycle - start < limit,
+                "{}: {} ops still to come after {limit} cycles",
+                self.what,
+                self.pending.len()
+            );
+        }
+    }
+}
+
+fn params(label_bits: u32) -> FccParams {
+    FccParams {
+        label_bits,
+        ..FccParams::default()
+    }
+}
+
+/// Labels made (pushed) so far and not freed, which later ops may name.
+fn random_run(bits: u32, seed: u64, cycles: u64, reset_at: u64) -> Bench {
+    let p = params(bits);
+    let model = load_plain::<QIn, QOut>(BenchBlock::SetQueue, &p).expect("set queue model");
+    let labels = p.max_label() as usize;
+    let what = format!("{bits}-bit labels, seed {seed:#x}");
+    let mut b = Bench::new(&model, labels, what);
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    let mut live: Vec<u16> = Vec::new();
+    let mut made = vec![false; labels + 1];
+    let (mut p_in, mut p_make, mut p_join, mut p_slot, mut p_take) = (0.5, 0.3, 0.5, 1.0, 1.0);
+    let (mut col, mut row) = (0u16, 0u8);
+    for t in 0..cycles {
+        if t % 500 == 0 {
+            (p_in, p_make, p_join, p_slot, p_take) = match rng.gen_range(0..5) {
+                0 => (1.0, 0.3, 0.6, 1.0, 1.0),
+                1 => (0.3, 0.2, 0.5, 0.5, 0.7),
+                2 => (0.9, 0.05, 0.9, 1.0, 0.2),
+                3 => (0.7, 0.6, 0.3, 0.1, 1.0),
+                _ => (0.1, 0.3, 0.5, 1.0, 1.0),
+            };
+        }
+        if t == reset_at {
+            b.reset();
+            live.clear();
+            made.fill(false);
+            continue;
+        }
+        // Close a cluster now and then once every op is out: its labels
+        // and its slot are free again.
+        let open = b.m.clusters.len() + b.pending.iter().filter(|o| o.kind == Kind::Make).count();
+        // Fewer open than slots (512), as the core's open limit keeps them.
+        if open > (labels / 2).min(400) || (rng.gen_bool(0.002) && !b.m.clusters.is_empty()) {
+            b.drain(20_000);
+            let c = rng.gen_range(0..b.m.clusters.len());
+            let labs = b.m.clusters.swap_remove(c);
+            let r = b.m.root(labs[0]);
+            b.m.free_slots.push_back(b.m.slot[r as usize]);
+            for &l in &labs {
+                b.m.made[l as usize] = false;
+                made[l as usize] = false;
+            }
+            live.retain(|l| made[*l as usize]);
+        }
+        let mut op = None;
+        if b.room && rng.gen_bool(p_in) {
+            row = (row + 1) % 128;
+            if row == 0 || rng.gen_bool(0.01) {
+                op = Some(Op {
+                    kind: Kind::Mark,
+                    a: 0,
+                    b: 0,
+                    col,
+                    row: 0,
+                    ring: false,
+                });
+                col = (col + 1) % 4096;
+            } else if live.is_empty() || rng.gen_bool(p_make) {
+                let free: Vec<u16> = (1..=labels as u16).filter(|&l| !made[l as usize]).collect();
+                if !free.is_empty() {
+                    let l = free[rng.gen_range(0..free.len())];
+                    made[l as usize] = true;
+                    b.m.made[l as usize] = true;
+                    live.push(l);
+                    op = Some(Op {
+                        kind: Kind::Make,
+                        a: l,
+                        b: 0,
+                        col,
+                        row,
+                        ring: rng.gen_bool(0.3),
+                    });
+                }
+            } else {
+                let a = live[rng.gen_range(0..live.len())];
+                let (kind, bb) = if rng.gen_bool(p_join) {
+                    (Kind::Join, live[rng.gen_range(0..live.len())])
+                } else {
+                    (Kind::Find, 0)
+                };
+                op = Some(Op {
+                    kind,
+                    a,
+                    b: bb,
+                    col,
+                    row,
+                    ring: rng.gen_bool(0.5),
+                });
+            }
+        }
+        b.step(op, rng.gen_bool(p_slot), rng.gen_bool(p_take), false);
+    }
+    b.drain(50_000);
+    b
+}
+
+#[test]
+fn every_op_comes_out_in_order_with_what_it_became() {
+    for (bits, seed, cycles, reset_at) in [
+        (8, 0x5e7a_0001, 60_000, 23_000),
+        (13, 0x5e7a_0002, 60_000, 51_000),
+    ] {
+        let b = random_run(bits, seed, cycles, reset_at);
+        eprintln!(
+            "{}: out {} makes, {} finds, {} joins ({} merged), {} markers; {} cycles a make waited for a slot, {} without room",
+            b.what, b.out[0], b.out[1], b.out[2], b.merged, b.out[3], b.slot_waits, b.room_low
+        );
+        assert!(
+            b.merged > 1_000 && b.out[3] > 100 && b.slot_waits > 100 && b.room_low > 500,
+            "{}: too easy a trace",
+            b.what
+        );
+    }
+}
+
+/// Throughput: ops pushed back to back (finds of one or two words, joins
+/// of a new label to a cluster, makes and markers) come out at the
+/// union-find's rate, the queue's own rate (an op every other cycle)
+/// hidden behind it.
+#[test]
+fn a_burst_goes_at_the_union_finds_rate() {
+    let p = params(13);
+    let model = load_plain::<QIn, QOut>(BenchBlock::SetQueue, &p).expect("set queue model");
+    let mut rng = ChaCha8Rng::seed_from_u64(0x5e7a_0003);
+    let mut b = Bench::new(&model, p.max_label() as usize, "burst".into());
+    let op = |kind, a, b| Op {
+        kind,
+        a,
+        b,
+        col: 0,
+        row: 0,
+        ring: false,
+    };
+    // 40 clusters of 10 labels, joined to their first.
+    for l in 1..=400u16 {
+        b.m.made[l as usize] = true;
+        b.step(Some(op(Kind::Make, l, 0)), true, true, false);
+        b.step(None, true, true, false);
+    }
+    for c in 0..40u16 {
+        for k in 1..10u16 {
+            b.step(
+                Some(op(Kind::Join, 1 + c * 10 + k, 1 + c * 10)),
+                true,
+                true,
+                false,
+            );
+            b.step(None, true, true, false);
+        }
+    }
+    // 400 labels more, made alone, for the joins.
+    for l in 401..=800u16 {
+        b.m.made[l as usize] = true;
+        b.step(Some(op(Kind::Make, l, 0)), true, true, false);
+    }
+    b.drain(100_000);
+    let mut alone = 401u16;
+    let mut fresh = 801u16;
+    for (what, make, mark, join, per) in [
+        ("finds", 0.0, 0.0, 0.0, 3.0),
+        ("joins", 0.0, 0.0, 1.0, 3.1),
+        ("makes and markers", 0.5, 1.0, 0.0, 2.1),
+    ] {
+        let start = b.cycle;
+        let n = 200u64;
+        for _ in 0..n {
+            let o = if rng.gen_bool(make) {
+                b.m.made[fresh as usize] = true;
+                fresh += 1;
+                op(Kind::Make, fresh - 1, 0)
+            } else if rng.gen_bool(mark) {
+                op(Kind::Mark, 0, 0)
+            } else if rng.gen_bool(join) {
+                alone += 1;
+                op(Kind::Join, alone - 1, 1 + 10 * rng.gen_range(0..40u16))
+            } else {
+                op(Kind::Find, rng.gen_range(1..=400u16), 0)
+            };
+            b.step(Some(o), true, true, false);
+        }
+        b.drain(100_000);
+        let cycles = b.cycle - start;
+        eprintln!(
+            "{what}: {cycles} cycles for {n} ops, {:.2} an op",
+            cycles as f64 / n as f64
+        );
+        let bound = (per * n as f64) as u64 + 12;
+        assert!(cycles <= bound, "{what}: {cycles} cycles, at most {bound}");
+    }
+}
