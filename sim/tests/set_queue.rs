@@ -326,7 +326,7 @@ impl Bench {
             assert_eq!(
                 defined(got(&o)),
                 want,
-                "{}, cycle {}, op {n} out {op:?}: expected (left), got (right)",
+                "{}, cycle {}, op {n} out {op:?}: got (left), expected (right)",
                 self.what,
                 self.cycle
             );
@@ -563,4 +563,45 @@ fn a_burst_goes_at_the_union_finds_rate() {
         let bound = (per * n as f64) as u64 + 12;
         assert!(cycles <= bound, "{what}: {cycles} cycles, at most {bound}");
     }
+}
+
+/// With no slot free, the ops that need none still go: finds, joins and
+/// column markers pushed behind nothing but each other come out (a
+/// marker held for a slot would hold the closes that free slots).
+#[test]
+fn ops_without_a_make_pass_while_no_slot_is_free() {
+    let p = params(8);
+    let model = load_plain::<QIn, QOut>(BenchBlock::SetQueue, &p).expect("set queue model");
+    let mut b = Bench::new(&model, p.max_label() as usize, "no slot free".into());
+    let op = |kind, a, b, col| Op {
+        kind,
+        a,
+        b,
+        col,
+        row: 0,
+        ring: false,
+    };
+    for l in 1..=20u16 {
+        b.m.made[l as usize] = true;
+        b.step(Some(op(Kind::Make, l, 0, 0)), true, true, false);
+        b.step(None, true, true, false);
+    }
+    b.drain(1_000);
+    for k in 0..30u16 {
+        let o = match k % 3 {
+            0 => op(Kind::Mark, 0, 0, k),
+            1 => op(Kind::Find, 1 + k % 20, 0, k),
+            _ => op(Kind::Join, 1 + k % 20, 1 + (k * 7) % 20, k),
+        };
+        b.step(Some(o), false, true, false);
+    }
+    for _ in 0..500 {
+        b.step(None, false, true, false);
+    }
+    assert!(
+        b.pending.is_empty(),
+        "{} ops held with no slot free (the first: {:?})",
+        b.pending.len(),
+        b.pending.front()
+    );
 }

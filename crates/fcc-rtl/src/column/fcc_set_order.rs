@@ -1,6 +1,6 @@
 //! `FccSetOrder`: the order of `FccSetQueue`. Each op `FccSetGate` took
 //! reserves one of [`ORDER_ENTRIES`] entries a cycle later (`space` says
-//! one is free, counting that reservation): a make (its label and slot)
+//! one is free, counting a reservation on its way): a make (its label and slot)
 //! or a column marker complete at once; a find or a join complete when its
 //! event comes from `FccLabelSets` (events come in the order of their ops,
 //! so the entries waiting for one are kept in a list, `pend`). The entries
@@ -149,7 +149,7 @@ impl Logic for FccSetOrder {
             self.pend[i].d.next = self.pend[i].q.val();
         }
         // Free: fewer than all entries in use, one fewer while a take's
-        // reservation is on its way.
+        // reservation is on its way (takes can come a cycle apart).
         self.space.next = self.count.q.val() != self.full.val();
         if self.took.val() {
             self.space.next = self.count.q.val() != self.full_less1.val();

@@ -10,15 +10,20 @@
 //! and slot; a join's slot kept and slot gone, `merged` when they were two
 //! clusters; a marker as it came. So a column's marker follows every op
 //! of the column, and the record store sees each op's slots as the
-//! union-find had them when it took the op. The head's issue is
-//! `FccSetGate`'s, the order `FccSetOrder`'s; this block is wiring.
+//! union-find had them when it took the op. Two ops wait ahead of the
+//! FIFO in flip-flops (`FccSetAhead`), so that the union-find can take one
+//! a cycle after the one before; the head's issue is `FccSetGate`'s (what
+//! it became, registered, `FccSetTook`'s), the order `FccSetOrder`'s; this
+//! block is wiring.
 
 use fcc_params::FccParams;
 use rust_hdl::prelude::*;
 
 use super::fcc_label_sets::{FccLabelSets, SLOT_BITS};
+use super::fcc_set_ahead::FccSetAhead;
 use super::fcc_set_gate::FccSetGate;
 use super::fcc_set_order::FccSetOrder;
+use super::fcc_set_took::FccSetTook;
 use crate::fcc_fifo::FccFifo;
 use crate::types::kb;
 
@@ -93,8 +98,10 @@ pub struct FccSetQueue {
     pub idle: Signal<Out, Bit>,
     op: Signal<Local, SetQOp>,
     queue: FccFifo<SetQOp, SET_QUEUE_BITS, { SET_QUEUE_BITS + 1 }>,
+    ahead: FccSetAhead,
     sets: FccLabelSets,
     gate: FccSetGate,
+    taken: FccSetTook,
     order: FccSetOrder,
     room_q: DFF<Bit>,
     /// An op was pushed a cycle ago (not yet in the FIFO's level).
@@ -137,8 +144,10 @@ impl FccSetQueue {
             idle: Default::default(),
             op: Default::default(),
             queue: Default::default(),
+            ahead: Default::default(),
             sets: FccLabelSets::new(p),
             gate: Default::default(),
+            taken: Default::default(),
             order: Default::default(),
             room_q: Default::default(),
             pushed: Default::default(),
@@ -171,11 +180,16 @@ impl Logic for FccSetQueue {
         self.room_q.d.next = self.queue.level.val() < self.high.val();
         self.room.next = self.room_q.q.val();
         // The head through the gate into the union-find and the order.
-        self.gate.clk.next = self.clk.val();
-        self.gate.rst.next = self.rst.val();
-        self.gate.h_valid.next = self.queue.valid.val();
-        self.gate.h_op.next = self.queue.dout.val();
-        self.queue.take.next = self.gate.h_take.val();
+        self.taken.clk.next = self.clk.val();
+        self.taken.rst.next = self.rst.val();
+        self.ahead.clk.next = self.clk.val();
+        self.ahead.rst.next = self.rst.val();
+        self.ahead.f_valid.next = self.queue.valid.val();
+        self.ahead.f_op.next = self.queue.dout.val();
+        self.queue.take.next = self.ahead.f_take.val();
+        self.gate.h_valid.next = self.ahead.h_valid.val();
+        self.gate.h_op.next = self.ahead.h_op.val();
+        self.ahead.pop.next = self.taken.h_take.val();
         self.gate.space.next = self.order.space.val();
         self.gate.slot_ok.next = self.slot_ok.val();
         self.gate.slot.next = self.slot.val();
@@ -184,15 +198,18 @@ impl Logic for FccSetQueue {
         self.sets.mk_label.next = self.gate.mk_label.val();
         self.sets.mk_slot.next = self.gate.mk_slot.val();
         self.sets.op_valid.next = self.gate.op_valid.val();
-        self.sets.op_join.next = self.queue.dout.val().join;
-        self.sets.op_a.next = self.queue.dout.val().a;
-        self.sets.op_b.next = self.queue.dout.val().b;
-        self.gate.op_take.next = self.sets.op_take.val();
-        self.order.took.next = self.gate.took.val();
-        self.order.took_op.next = self.gate.took_op.val();
-        self.order.took_direct.next = self.gate.took_direct.val();
-        self.order.took_tag.next = self.gate.took_tag.val();
-        self.order.took_made.next = self.gate.took_made.val();
+        self.sets.op_join.next = self.ahead.h_op.val().join;
+        self.sets.op_a.next = self.ahead.h_op.val().a;
+        self.sets.op_b.next = self.ahead.h_op.val().b;
+        self.taken.direct.next = self.gate.direct.val();
+        self.taken.op_take.next = self.sets.op_take.val();
+        self.taken.tag.next = self.gate.tag.val();
+        self.taken.made.next = self.gate.made.val();
+        self.order.took.next = self.taken.took.val();
+        self.order.took_op.next = self.taken.took_op.val();
+        self.order.took_direct.next = self.taken.took_direct.val();
+        self.order.took_tag.next = self.taken.took_tag.val();
+        self.order.took_made.next = self.taken.took_made.val();
         self.order.s_valid.next = self.sets.ev_valid.val();
         self.order.s_merged.next = self.sets.ev_merged.val();
         self.order.s_keep.next = self.sets.ev_keep.val();
@@ -216,8 +233,9 @@ impl Logic for FccSetQueue {
         self.idle.next = !self.in_valid.val()
             & !self.pushed.q.val()
             & !self.queue.valid.val()
+            & !self.ahead.h_valid.val()
             & (self.queue.level.val() == self.zero.val())
-            & !self.gate.took.val()
+            & !self.taken.took.val()
             & !self.order.busy.val()
             & self.sets.idle.val();
     }
