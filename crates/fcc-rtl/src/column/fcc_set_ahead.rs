@@ -67,9 +67,7 @@ impl Logic for FccSetAhead {
             if self.pop.val() {
                 self.held.d.next = self.held.q.val();
             }
-            if self.held.q.val() == self.zero.val() {
-                self.e0.d.next = self.f_op.val();
-            } else if self.pop.val() {
+            if (self.held.q.val() == self.zero.val()) | self.pop.val() {
                 self.e0.d.next = self.f_op.val();
             } else {
                 self.e1.d.next = self.f_op.val();
