@@ -186,6 +186,13 @@ fn labels_are_handed_out_once_and_free_again_when_returned() {
     run(8, 0x9001_0001, 120_000, 20_011, 47_017);
 }
 
+/// The record slots are this pool at 9 bits (`FccLabelPool::with_bits`,
+/// slots 1 to 511).
+#[test]
+fn nine_bits_the_record_slots() {
+    run(9, 0x9001_0003, 150_000, 40_009, 97_001);
+}
+
 #[test]
 fn wider_labels_and_the_corpus_width() {
     run(13, 0x9001_0002, 600_000, 200_003, 310_007);

@@ -27,6 +27,8 @@
 //!   of the cycles before. The core's column-start check compares it with
 //!   the rows a column can start runs in (docs/column-core.md).
 //!
+//! The same block, 9 bits wide, hands out the record slots (`with_bits`).
+//!
 //! The slot table returns a closing cluster's labels (`ret`, `ret_label`)
 //! one per cycle; a label is returned once, after it was handed out.
 
@@ -97,9 +99,17 @@ pub struct FccLabelPool {
 }
 
 impl FccLabelPool {
+    /// The pool of the build's provisional labels (`FccParams::label_bits`).
     pub fn new(p: &FccParams) -> Self {
-        let b = super::label_bits(p);
-        let max = u64::from(p.max_label());
+        Self::with_bits(super::label_bits(p))
+    }
+
+    /// A pool of `b`-bit labels, `1 ..= 2^b - 1`: with `b` =
+    /// [`SLOT_BITS`](super::fcc_label_sets::SLOT_BITS), the free record
+    /// slots (slot 0 is never handed out).
+    pub fn with_bits(b: usize) -> Self {
+        assert!((1..=16).contains(&b), "labels of 1 to 16 bits");
+        let max = (1u64 << b) - 1;
         Self {
             clk: Default::default(),
             rst: Default::default(),
