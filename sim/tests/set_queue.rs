@@ -535,7 +535,7 @@ fn a_burst_goes_at_the_union_finds_rate() {
     for (what, make, mark, join, per) in [
         ("finds", 0.0, 0.0, 0.0, 3.0),
         ("joins", 0.0, 0.0, 1.0, 3.1),
-        ("makes and markers", 0.5, 1.0, 0.0, 2.1),
+        ("makes and markers", 0.5, 1.0, 0.0, 1.1),
     ] {
         let start = b.cycle;
         let n = 200u64;

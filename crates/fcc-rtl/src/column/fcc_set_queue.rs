@@ -10,9 +10,9 @@
 //! and slot; a join's slot kept and slot gone, `merged` when they were two
 //! clusters; a marker as it came. So a column's marker follows every op
 //! of the column, and the record store sees each op's slots as the
-//! union-find had them when it took the op. Two ops wait ahead of the
-//! FIFO in flip-flops (`FccSetAhead`), so that the union-find can take one
-//! a cycle after the one before; the head's issue is `FccSetGate`'s (what
+//! union-find had them when it took the op. The FIFO gives an op a cycle
+//! (`FccStreamFifo`), so that the union-find can take one a cycle after
+//! the one before and makes and markers go one a cycle; the head's issue is `FccSetGate`'s (what
 //! it became, registered, `FccSetTook`'s), the order `FccSetOrder`'s; this
 //! block is wiring.
 
@@ -20,11 +20,10 @@ use fcc_params::FccParams;
 use rust_hdl::prelude::*;
 
 use super::fcc_label_sets::{FccLabelSets, SLOT_BITS};
-use super::fcc_set_ahead::FccSetAhead;
 use super::fcc_set_gate::FccSetGate;
 use super::fcc_set_order::FccSetOrder;
 use super::fcc_set_took::FccSetTook;
-use crate::fcc_fifo::FccFifo;
+use crate::fcc_stream_fifo::FccStreamFifo;
 use crate::types::kb;
 
 /// The queue holds `2^SET_QUEUE_BITS` ops.
@@ -97,8 +96,7 @@ pub struct FccSetQueue {
     /// Nothing pushed, queued, in the union-find or waiting to go out.
     pub idle: Signal<Out, Bit>,
     op: Signal<Local, SetQOp>,
-    queue: FccFifo<SetQOp, SET_QUEUE_BITS, { SET_QUEUE_BITS + 1 }>,
-    ahead: FccSetAhead,
+    queue: FccStreamFifo<SetQOp, SET_QUEUE_BITS, { SET_QUEUE_BITS + 1 }>,
     sets: FccLabelSets,
     gate: FccSetGate,
     taken: FccSetTook,
@@ -144,7 +142,6 @@ impl FccSetQueue {
             idle: Default::default(),
             op: Default::default(),
             queue: Default::default(),
-            ahead: Default::default(),
             sets: FccLabelSets::new(p),
             gate: Default::default(),
             taken: Default::default(),
@@ -182,14 +179,9 @@ impl Logic for FccSetQueue {
         // The head through the gate into the union-find and the order.
         self.taken.clk.next = self.clk.val();
         self.taken.rst.next = self.rst.val();
-        self.ahead.clk.next = self.clk.val();
-        self.ahead.rst.next = self.rst.val();
-        self.ahead.f_valid.next = self.queue.valid.val();
-        self.ahead.f_op.next = self.queue.dout.val();
-        self.queue.take.next = self.ahead.f_take.val();
-        self.gate.h_valid.next = self.ahead.h_valid.val();
-        self.gate.h_op.next = self.ahead.h_op.val();
-        self.ahead.pop.next = self.taken.h_take.val();
+        self.gate.h_valid.next = self.queue.valid.val();
+        self.gate.h_op.next = self.queue.dout.val();
+        self.queue.take.next = self.taken.h_take.val();
         self.gate.space.next = self.order.space.val();
         self.gate.slot_ok.next = self.slot_ok.val();
         self.gate.slot.next = self.slot.val();
@@ -198,9 +190,9 @@ impl Logic for FccSetQueue {
         self.sets.mk_label.next = self.gate.mk_label.val();
         self.sets.mk_slot.next = self.gate.mk_slot.val();
         self.sets.op_valid.next = self.gate.op_valid.val();
-        self.sets.op_join.next = self.ahead.h_op.val().join;
-        self.sets.op_a.next = self.ahead.h_op.val().a;
-        self.sets.op_b.next = self.ahead.h_op.val().b;
+        self.sets.op_join.next = self.queue.dout.val().join;
+        self.sets.op_a.next = self.queue.dout.val().a;
+        self.sets.op_b.next = self.queue.dout.val().b;
         self.taken.direct.next = self.gate.direct.val();
         self.taken.op_take.next = self.sets.op_take.val();
         self.taken.tag.next = self.gate.tag.val();
@@ -233,7 +225,6 @@ impl Logic for FccSetQueue {
         self.idle.next = !self.in_valid.val()
             & !self.pushed.q.val()
             & !self.queue.valid.val()
-            & !self.ahead.h_valid.val()
             & (self.queue.level.val() == self.zero.val())
             & !self.taken.took.val()
             & !self.order.busy.val()

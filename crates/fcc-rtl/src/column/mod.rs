@@ -9,15 +9,17 @@
 //! over), and the front of the slot table, the representative rows
 //! (`FccRepJoins`: a label of each run's cluster, the joins between labels
 //! a union-find must make; see docs/column-core.md), and the union-find
-//! over labels behind it (`FccLabelSets`: each root's record slot), and
-//! the record store (`FccSlotRecords`: a record and the holds per slot,
-//! added to, merged, and read out as clusters close), and the closer's
+//! over labels behind it (`FccLabelSets`: each root's record slot) with
+//! its queue (`FccSetQueue`: the slot table's ops in pixel order through
+//! it, out in order with their slots), and the record store
+//! (`FccSlotRecords`: a record and the holds per slot, added to, merged,
+//! and read out as clusters close), and the closer's
 //! sorted entries (`FccCloseOrder`: a column's closes in the golden
 //! order) and the closer around them (`FccCloser`: the quiet clusters'
 //! wait list, passed over once a column is done), and the labels' lists
-//! (`FccLabelLists`: a closed cluster's labels back to the pool). The
-//! rest of the slot table (slot allocation, the union-find's queue, the
-//! column-start check) and the top are to come.
+//! (`FccLabelLists`: a closed cluster's labels back to the pool); the
+//! record slots are handed out by a 9-bit `FccLabelPool`. The column-start
+//! check and the top are to come.
 
 pub mod fcc_acc_merge;
 pub mod fcc_acc_pixel;
@@ -66,7 +68,6 @@ pub mod fcc_row_runs_probe;
 pub mod fcc_run_acc;
 pub mod fcc_run_acc_probe;
 pub mod fcc_run_decide;
-pub mod fcc_set_ahead;
 pub mod fcc_set_gate;
 pub mod fcc_set_op;
 pub mod fcc_set_order;
