@@ -48,6 +48,8 @@ pub struct FccStreamFifo<T: Synth, const A: usize, const AP1: usize> {
     pop: Signal<Local, Bit>,
     /// Entries held after this cycle's pop: where an arriving word goes.
     kept: Signal<Local, Bits<3>>,
+    held_m1: Signal<Local, Bits<3>>,
+    held_p1: Signal<Local, Bits<3>>,
     /// Entries held and reads on their way.
     claimed: Signal<Local, Bits<3>>,
     _n: usize,
@@ -84,6 +86,8 @@ impl<T: Synth, const A: usize, const AP1: usize> Default for FccStreamFifo<T, A,
             issue: Default::default(),
             pop: Default::default(),
             kept: Default::default(),
+            held_m1: Default::default(),
+            held_p1: Default::default(),
             claimed: Default::default(),
             _n: AHEAD,
             idx: (0..AHEAD).map(|i| kb(i as u64)).collect(),
@@ -129,9 +133,13 @@ impl<T: Synth, const A: usize, const AP1: usize> Logic for FccStreamFifo<T, A, A
         self.r2.d.next = self.r1.q.val();
         // The entries: a pop moves them up, an arriving word goes after
         // the last one kept.
+        // The counts one less and one more come from the flip-flops, so
+        // that the late `pop` only chooses among them.
+        self.held_m1.next = self.held.q.val() - self.one3.val();
+        self.held_p1.next = self.held.q.val() + self.one3.val();
         self.kept.next = self.held.q.val();
         if self.pop.val() {
-            self.kept.next = self.held.q.val() - self.one3.val();
+            self.kept.next = self.held_m1.val();
         }
         for i in 0..(self._n - 1) {
             if self.pop.val() {
@@ -143,9 +151,12 @@ impl<T: Synth, const A: usize, const AP1: usize> Logic for FccStreamFifo<T, A, A
                 self.ahead[i].d.next = self.ram.read_data.val();
             }
         }
-        self.held.d.next = self.kept.val();
-        if self.r2.q.val() {
-            self.held.d.next = self.kept.val() + self.one3.val();
+        self.held.d.next = self.held.q.val();
+        if self.pop.val() & !self.r2.q.val() {
+            self.held.d.next = self.held_m1.val();
+        }
+        if !self.pop.val() & self.r2.q.val() {
+            self.held.d.next = self.held_p1.val();
         }
         self.held_any.d.next = (self.kept.val() != self.zero3.val()) | self.r2.q.val();
         // The write side and the level.
