@@ -225,6 +225,8 @@ struct Bench {
     pending: VecDeque<Op>,
     taken: VecDeque<u16>,
     room: bool,
+    /// Cycles since `room` was last seen high.
+    since_room: u64,
     idle: bool,
     cycle: u64,
     out: [u64; 4],
@@ -243,6 +245,7 @@ impl Bench {
             pending: VecDeque::new(),
             taken: VecDeque::new(),
             room: false,
+            since_room: 0,
             idle: false,
             cycle: 0,
             out: [0; 4],
@@ -286,6 +289,7 @@ impl Bench {
         let o = self.d.step(&inp);
         self.cycle += 1;
         self.room = o.room != 0;
+        self.since_room = if self.room { 0 } else { self.since_room + 1 };
         self.idle = o.idle != 0;
         self.room_low += u64::from(!self.room);
         if rst {
@@ -374,7 +378,10 @@ fn params(label_bits: u32) -> FccParams {
     }
 }
 
-/// Labels made (pushed) so far and not freed, which later ops may name.
+/// Ops pushed after `room` falls (the pixels in flight in front of the
+/// queue; its margin is 64).
+const IN_FLIGHT: u64 = 56;
+
 fn random_run(bits: u32, seed: u64, cycles: u64, reset_at: u64) -> Bench {
     let p = params(bits);
     let model = load_plain::<QIn, QOut>(BenchBlock::SetQueue, &p).expect("set queue model");
@@ -419,7 +426,9 @@ fn random_run(bits: u32, seed: u64, cycles: u64, reset_at: u64) -> Bench {
             live.retain(|l| made[*l as usize]);
         }
         let mut op = None;
-        if b.room && rng.gen_bool(p_in) {
+        // Ops go on coming for a while after `room` falls, as those of the
+        // pixels in flight in front of the queue do.
+        if b.since_room < IN_FLIGHT && rng.gen_bool(p_in) {
             row = (row + 1) % 128;
             if row == 0 || rng.gen_bool(0.01) {
                 op = Some(Op {
