@@ -70,6 +70,8 @@ pub enum BenchBlock {
     Closer,
     /// The column core's clusters' label lists `FccLabelLists`.
     LabelLists,
+    /// The column core's column-start check `FccColStart`.
+    ColStart,
     /// The column core's union-find queue `FccSetQueue` (with
     /// `FccLabelSets` and `FccSetOrder`).
     SetQueue,
@@ -103,7 +105,7 @@ impl Row {
 
 impl BenchBlock {
     /// Every block with a bench.
-    pub const ALL: [BenchBlock; 26] = [
+    pub const ALL: [BenchBlock; 27] = [
         BenchBlock::Regs,
         BenchBlock::AxilAdapter,
         BenchBlock::MergeTable,
@@ -129,6 +131,7 @@ impl BenchBlock {
         BenchBlock::Closer,
         BenchBlock::LabelLists,
         BenchBlock::SetQueue,
+        BenchBlock::ColStart,
         BenchBlock::RepJoins,
     ];
 
@@ -321,6 +324,18 @@ impl BenchBlock {
                     )
                 },
                 waivers: lint::label_lists_waivers,
+            },
+            BenchBlock::ColStart => Row {
+                name: "fcc_col_start",
+                generate: |p| {
+                    gen(
+                        p,
+                        crate::column::fcc_col_start::FccColStart::default(),
+                        "fcc_col_start",
+                    )
+                },
+                // Its counts are widened with bit_cast.
+                waivers: lint::acc_waivers,
             },
             BenchBlock::SetQueue => Row {
                 name: "fcc_set_queue",
