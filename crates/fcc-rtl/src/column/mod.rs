@@ -18,8 +18,9 @@
 //! order) and the closer around them (`FccCloser`: the quiet clusters'
 //! wait list, passed over once a column is done), and the labels' lists
 //! (`FccLabelLists`: a closed cluster's labels back to the pool); the
-//! record slots are handed out by a 9-bit `FccLabelPool`. The column-start
-//! check and the top are to come.
+//! record slots are handed out by a 9-bit `FccLabelPool`, and the
+//! column-start check (`FccColStart`: when a column may start). The top is
+//! to come.
 
 pub mod fcc_acc_merge;
 pub mod fcc_acc_pixel;
