@@ -10,6 +10,9 @@
 
 use std::collections::VecDeque;
 
+mod column;
+use column::forest::Forest;
+
 use fcc_params::FccParams;
 use fcc_rtl::BenchBlock;
 use fcc_sim::{c_struct, load_plain, PlainDut, PlainModel};
@@ -63,103 +66,56 @@ struct Op {
     b: u16,
 }
 
-/// The contract: a forest over labels, each root with its slot; the
-/// clusters' labels, to close them.
+/// The contract: the forest over labels and the free slots.
 struct Model {
-    parent: Vec<u16>,
-    slot: Vec<u16>,
-    made: Vec<bool>,
-    /// Per open cluster (by root at its make): its labels.
-    clusters: Vec<Vec<u16>>,
+    f: Forest,
     free_slots: Vec<u16>,
-    /// The longest walk seen, and the words read by all (one a node).
-    walk_max: u32,
-    reads: u64,
 }
 
 impl Model {
     fn new(labels: usize) -> Model {
         Model {
-            parent: vec![0; labels + 1],
-            slot: vec![0; labels + 1],
-            made: vec![false; labels + 1],
-            clusters: Vec::new(),
+            f: Forest::new(labels),
             free_slots: (0..512).rev().collect(),
-            walk_max: 0,
-            reads: 0,
         }
-    }
-
-    fn root(&mut self, mut x: u16) -> u16 {
-        assert!(self.made[x as usize], "the bench names label {x}, not made");
-        let mut reads = 1;
-        while self.parent[x as usize] != x {
-            x = self.parent[x as usize];
-            reads += 1;
-        }
-        self.walk_max = self.walk_max.max(reads);
-        self.reads += u64::from(reads);
-        x
     }
 
     fn make(&mut self, l: u16) -> u16 {
         let s = self.free_slots.pop().expect("a free slot");
-        self.parent[l as usize] = l;
-        self.slot[l as usize] = s;
-        self.made[l as usize] = true;
-        self.clusters.push(vec![l]);
+        self.f.make(l, s);
         s
     }
 
-    fn cluster_of(&mut self, l: u16) -> usize {
-        let r = self.root(l);
-        (0..self.clusters.len())
-            .find(|&c| self.root(self.clusters[c][0]) == r)
-            .expect("every made label is in a cluster")
-    }
-
     fn apply(&mut self, op: Op) -> Ev {
-        let ra = self.root(op.a);
         if !op.join {
-            let s = self.slot[ra as usize];
+            let ra = self.f.root(op.a);
             return Ev {
                 join: false,
                 merged: false,
                 keep: ra,
-                keep_slot: s,
+                keep_slot: self.f.slot[ra as usize],
                 gone: 0,
                 gone_slot: 0,
             };
         }
-        let rb = self.root(op.b);
-        let (keep, gone) = (ra.min(rb), ra.max(rb));
-        let merged = ra != rb;
+        let (keep, gone, merged) = self.f.join(op.a, op.b);
         if merged {
-            let (ck, cg) = (self.cluster_of(keep), self.cluster_of(gone));
-            let moved = std::mem::take(&mut self.clusters[cg]);
-            self.clusters[ck].extend(moved);
-            self.clusters.swap_remove(cg);
-            self.free_slots.push(self.slot[gone as usize]);
-            self.parent[gone as usize] = keep;
+            self.free_slots.push(self.f.slot[gone as usize]);
         }
         Ev {
             join: true,
             merged,
             keep,
-            keep_slot: self.slot[keep as usize],
+            keep_slot: self.f.slot[keep as usize],
             gone,
-            gone_slot: self.slot[gone as usize],
+            gone_slot: self.f.slot[gone as usize],
         }
     }
 
     /// Close cluster `c`: its labels are free again.
     fn close(&mut self, c: usize) -> Vec<u16> {
-        let labels = self.clusters.swap_remove(c);
-        let r = self.root(labels[0]);
-        self.free_slots.push(self.slot[r as usize]);
-        for &l in &labels {
-            self.made[l as usize] = false;
-        }
+        let (labels, s) = self.f.close(c);
+        self.free_slots.push(s);
         labels
     }
 }
@@ -322,16 +278,16 @@ fn random_run(bits: u32, seed: u64, cycles: u64, reset_at: u64) -> (u64, u64, u6
         }
         live.append(&mut fresh);
         // Close a cluster now and then, once its ops are done.
-        if m.clusters.len() > labels / 2 || (rng.gen_bool(0.01) && !m.clusters.is_empty()) {
+        if m.f.clusters.len() > labels / 2 || (rng.gen_bool(0.01) && !m.f.clusters.is_empty()) {
             b.drain(10_000);
-            let c = rng.gen_range(0..m.clusters.len());
+            let c = rng.gen_range(0..m.f.clusters.len());
             for l in m.close(c) {
                 live.retain(|&x| x != l);
             }
         }
         let mk = if rng.gen_bool(p_make) && !m.free_slots.is_empty() {
             let free: Vec<u16> = (1..=labels as u16)
-                .filter(|&l| !m.made[l as usize])
+                .filter(|&l| !m.f.made[l as usize])
                 .collect();
             (!free.is_empty()).then(|| {
                 let l = free[rng.gen_range(0..free.len())];
@@ -364,7 +320,7 @@ fn random_run(bits: u32, seed: u64, cycles: u64, reset_at: u64) -> (u64, u64, u6
         b.step(mk, false);
     }
     b.drain(10_000);
-    (b.ops, b.merged, b.cycle, m.walk_max)
+    (b.ops, b.merged, b.cycle, m.f.walk_max)
 }
 
 #[test]
@@ -415,9 +371,9 @@ fn deep_chains_and_finds_done_out_of_order_give_events_in_order() {
         b.push(op, ev);
         b.drain(1_000);
     }
-    assert_eq!(m.walk_max as u16, top - 1, "the walks down the chain");
+    assert_eq!(m.f.walk_max as u16, top - 1, "the walks down the chain");
     let start = b.cycle;
-    let reads = m.reads;
+    let reads = m.f.reads;
     for k in 0..20u16 {
         for a in [top, 1 + k % 5] {
             let op = Op {
@@ -438,12 +394,12 @@ fn deep_chains_and_finds_done_out_of_order_give_events_in_order() {
         b.push(op, ev);
     }
     b.drain(100_000);
-    assert_eq!(m.walk_max as u16, top, "the chain is {top} deep");
+    assert_eq!(m.f.walk_max as u16, top, "the chain is {top} deep");
     let walked = b.cycle - start;
     eprintln!("60 ops on a chain of {top}: {walked} cycles");
     // One read a cycle: the walks read at least as many words as a
     // model walking them reads (the block's chase never reads more).
-    let reads = m.reads - reads;
+    let reads = m.f.reads - reads;
     eprintln!("{reads} words read");
     assert!(
         walked >= reads && reads > 40 * 50,
@@ -515,7 +471,7 @@ fn shallow_sets_take_a_find_in_three_cycles_and_a_join_in_three() {
         eprintln!(
             "join share {join_share}: {cycles} cycles for {n} ops, {:.2} an op (walks up to {})",
             cycles as f64 / f64::from(n),
-            m.walk_max
+            m.f.walk_max
         );
         // The last event's latency and the drain's closing cycle on top.
         let bound = (per * f64::from(n)) as u64 + 8;

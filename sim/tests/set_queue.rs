@@ -13,6 +13,9 @@
 
 use std::collections::VecDeque;
 
+mod column;
+use column::forest::Forest;
+
 use fcc_params::FccParams;
 use fcc_rtl::BenchBlock;
 use fcc_sim::{c_struct, load_plain, PlainDut, PlainModel};
@@ -134,40 +137,19 @@ fn defined(mut o: Out) -> Out {
     o
 }
 
-/// The contract's state: a forest over labels, each root with its slot;
-/// the open clusters' labels; the free slots (the pool's order).
+/// The contract's state: the forest over labels; the free slots (the
+/// pool's order).
 struct Model {
-    parent: Vec<u16>,
-    slot: Vec<u16>,
-    made: Vec<bool>,
-    clusters: Vec<Vec<u16>>,
+    f: Forest,
     free_slots: VecDeque<u16>,
 }
 
 impl Model {
     fn new(labels: usize) -> Model {
         Model {
-            parent: vec![0; labels + 1],
-            slot: vec![0; labels + 1],
-            made: vec![false; labels + 1],
-            clusters: Vec::new(),
+            f: Forest::new(labels),
             free_slots: (0..512).collect(),
         }
-    }
-
-    fn root(&self, mut x: u16) -> u16 {
-        assert!(self.made[x as usize], "the bench names label {x}, not made");
-        while self.parent[x as usize] != x {
-            x = self.parent[x as usize];
-        }
-        x
-    }
-
-    fn cluster_of(&self, l: u16) -> usize {
-        let r = self.root(l);
-        (0..self.clusters.len())
-            .find(|&c| self.root(self.clusters[c][0]) == r)
-            .expect("every made label is in a cluster")
     }
 
     /// Op `op` as it comes out, a make with slot `s` (the pool's head
@@ -186,28 +168,20 @@ impl Model {
         match op.kind {
             Kind::Make => {
                 let s = s.expect("a make took a slot");
-                self.parent[op.a as usize] = op.a;
-                self.slot[op.a as usize] = s;
-                self.clusters.push(vec![op.a]);
+                self.f.make(op.a, s);
                 (o.label, o.slot) = (op.a, s);
             }
             Kind::Find => {
-                let r = self.root(op.a);
-                (o.label, o.slot) = (r, self.slot[r as usize]);
+                let r = self.f.root(op.a);
+                (o.label, o.slot) = (r, self.f.slot[r as usize]);
             }
             Kind::Join => {
-                let (ra, rb) = (self.root(op.a), self.root(op.b));
-                let (keep, gone) = (ra.min(rb), ra.max(rb));
-                o.merged = ra != rb;
-                if o.merged {
-                    let (ck, cg) = (self.cluster_of(keep), self.cluster_of(gone));
-                    let moved = std::mem::take(&mut self.clusters[cg]);
-                    self.clusters[ck].extend(moved);
-                    self.clusters.swap_remove(cg);
-                    self.parent[gone as usize] = keep;
-                    o.other = self.slot[gone as usize];
+                let (keep, gone, merged) = self.f.join(op.a, op.b);
+                o.merged = merged;
+                if merged {
+                    o.other = self.f.slot[gone as usize];
                 }
-                (o.label, o.slot) = (keep, self.slot[keep as usize]);
+                (o.label, o.slot) = (keep, self.f.slot[keep as usize]);
             }
             Kind::Mark => {}
         }
@@ -411,16 +385,14 @@ fn random_run(bits: u32, seed: u64, cycles: u64, reset_at: u64) -> Bench {
         }
         // Close a cluster now and then once every op is out: its labels
         // and its slot are free again.
-        let open = b.m.clusters.len() + b.pending.iter().filter(|o| o.kind == Kind::Make).count();
+        let open = b.m.f.clusters.len() + b.pending.iter().filter(|o| o.kind == Kind::Make).count();
         // Fewer open than slots (512), as the core's open limit keeps them.
-        if open > (labels / 2).min(400) || (rng.gen_bool(0.002) && !b.m.clusters.is_empty()) {
+        if open > (labels / 2).min(400) || (rng.gen_bool(0.002) && !b.m.f.clusters.is_empty()) {
             b.drain(20_000);
-            let c = rng.gen_range(0..b.m.clusters.len());
-            let labs = b.m.clusters.swap_remove(c);
-            let r = b.m.root(labs[0]);
-            b.m.free_slots.push_back(b.m.slot[r as usize]);
+            let c = rng.gen_range(0..b.m.f.clusters.len());
+            let (labs, s) = b.m.f.close(c);
+            b.m.free_slots.push_back(s);
             for &l in &labs {
-                b.m.made[l as usize] = false;
                 made[l as usize] = false;
             }
             live.retain(|l| made[*l as usize]);
@@ -445,7 +417,7 @@ fn random_run(bits: u32, seed: u64, cycles: u64, reset_at: u64) -> Bench {
                 if !free.is_empty() {
                     let l = free[rng.gen_range(0..free.len())];
                     made[l as usize] = true;
-                    b.m.made[l as usize] = true;
+                    b.m.f.made[l as usize] = true;
                     live.push(l);
                     op = Some(Op {
                         kind: Kind::Make,
@@ -518,7 +490,7 @@ fn a_burst_goes_at_the_union_finds_rate() {
     };
     // 40 clusters of 10 labels, joined to their first.
     for l in 1..=400u16 {
-        b.m.made[l as usize] = true;
+        b.m.f.made[l as usize] = true;
         b.step(Some(op(Kind::Make, l, 0)), true, true, false);
         b.step(None, true, true, false);
     }
@@ -535,7 +507,7 @@ fn a_burst_goes_at_the_union_finds_rate() {
     }
     // 400 labels more, made alone, for the joins.
     for l in 401..=800u16 {
-        b.m.made[l as usize] = true;
+        b.m.f.made[l as usize] = true;
         b.step(Some(op(Kind::Make, l, 0)), true, true, false);
     }
     b.drain(100_000);
@@ -550,7 +522,7 @@ fn a_burst_goes_at_the_union_finds_rate() {
         let n = 200u64;
         for _ in 0..n {
             let o = if rng.gen_bool(make) {
-                b.m.made[fresh as usize] = true;
+                b.m.f.made[fresh as usize] = true;
                 fresh += 1;
                 op(Kind::Make, fresh - 1, 0)
             } else if rng.gen_bool(mark) {
@@ -591,7 +563,7 @@ fn ops_without_a_make_pass_while_no_slot_is_free() {
         ring: false,
     };
     for l in 1..=20u16 {
-        b.m.made[l as usize] = true;
+        b.m.f.made[l as usize] = true;
         b.step(Some(op(Kind::Make, l, 0, 0)), true, true, false);
         b.step(None, true, true, false);
     }

@@ -5,6 +5,8 @@
 //! pairs as window entries). Each bench uses part of it.
 #![allow(dead_code)]
 
+pub mod forest;
+
 use fcc_golden::{Frame, Point, Thresholds};
 use fcc_params::FccParams;
 use rand::Rng;
