@@ -1,7 +1,7 @@
-//! `FccSetOrder`: the order of `FccSetQueue`. Each op `FccSetGate` took
+//! `FccSetOrder`: the order of `FccSetQueue`. Each op taken at its head
 //! reserves one of [`ORDER_ENTRIES`] entries a cycle later (`space` says
-//! one is free, counting a reservation on its way): a make (its label and slot)
-//! or a column marker complete at once; a find or a join complete when its
+//! one is free, counting a reservation on its way): a make (its label and
+//! slot) or a column marker complete at once; a find or a join complete when its
 //! event comes from `FccLabelSets` (events come in the order of their ops,
 //! so the entries waiting for one are kept in a list, `pend`). The entries
 //! leave in the order they were taken, each once complete (`ev_valid`,
@@ -13,7 +13,7 @@ use super::fcc_label_sets::SLOT_BITS;
 use super::fcc_set_queue::SetQEv;
 use crate::types::{kb, vec_of};
 
-/// Ops issued and not yet out.
+/// Ops issued and not yet out (its pointers are 3 bits).
 pub const ORDER_ENTRIES: usize = 8;
 
 /// What an issued op keeps of itself while it waits: its kind, ring
@@ -44,7 +44,7 @@ pub struct FccSetOrder {
     pub rst: Signal<In, Bit>,
     /// An entry is free for an op taken now.
     pub space: Signal<Out, Bit>,
-    // What `FccSetGate` took a cycle ago.
+    // What the head became a cycle ago (`FccSetTook`).
     pub took: Signal<In, Bit>,
     pub took_op: Signal<In, Bit>,
     pub took_direct: Signal<In, Bit>,

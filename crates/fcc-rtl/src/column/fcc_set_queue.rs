@@ -12,9 +12,9 @@
 //! of the column, and the record store sees each op's slots as the
 //! union-find had them when it took the op. The FIFO gives an op a cycle
 //! (`FccStreamFifo`), so that the union-find can take one a cycle after
-//! the one before and makes and markers go one a cycle; the head's issue is `FccSetGate`'s (what
-//! it became, registered, `FccSetTook`'s), the order `FccSetOrder`'s; this
-//! block is wiring.
+//! the one before and makes and markers go one a cycle. The head's issue
+//! is `FccSetGate`'s (what it became, registered, `FccSetTook`'s), the
+//! order `FccSetOrder`'s; this block is wiring.
 
 use fcc_params::FccParams;
 use rust_hdl::prelude::*;
