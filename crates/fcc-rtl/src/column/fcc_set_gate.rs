@@ -1,9 +1,10 @@
 //! `FccSetGate`: the issue of `FccSetQueue`'s head. With an entry free in
 //! `FccSetOrder` (`space`), a make with a free slot or a column marker is
-//! taken at once (`direct`; a make goes to `FccLabelSets`' write port in
-//! that cycle, so an op naming its label may be taken in the next), a find
-//! or a join is offered to `FccLabelSets` (`op_valid`). What the order
-//! keeps of the head (`tag`, `made`) is worked out here too. Combinational,
+//! taken at once (`direct`; a make, `slot_take`, goes to `FccLabelSets`'
+//! write port in that cycle, so an op naming its label may be taken in the
+//! next), a find or a join is offered to `FccLabelSets` (`op_valid`). What
+//! the order keeps of the head (`tag`, `made`) is worked out here too.
+//! Combinational,
 //! and apart from `FccSetTook`, which reads `op_take`: `FccLabelSets` reads
 //! `op_valid` and the make before it says `op_take`, and a block that reads
 //! `op_take` and gives them would close a loop in the emitted Verilog's
@@ -25,9 +26,6 @@ pub struct FccSetGate {
     pub slot_take: Signal<Out, Bit>,
     pub direct: Signal<Out, Bit>,
     pub op_valid: Signal<Out, Bit>,
-    pub mk_valid: Signal<Out, Bit>,
-    pub mk_label: Signal<Out, Bits<16>>,
-    pub mk_slot: Signal<Out, Bits<SLOT_BITS>>,
     pub tag: Signal<Out, SetQTag>,
     pub made: Signal<Out, SetRes>,
 }
@@ -41,9 +39,6 @@ impl Logic for FccSetGate {
             self.slot_take.val() | (self.h_valid.val() & self.space.val() & self.h_op.val().mark);
         self.op_valid.next =
             self.h_valid.val() & self.space.val() & !self.h_op.val().make & !self.h_op.val().mark;
-        self.mk_valid.next = self.slot_take.val();
-        self.mk_label.next = self.h_op.val().a;
-        self.mk_slot.next = self.slot.val();
         self.tag.next.make = self.h_op.val().make;
         self.tag.next.join = self.h_op.val().join;
         self.tag.next.mark = self.h_op.val().mark;

@@ -186,9 +186,9 @@ impl Logic for FccSetQueue {
         self.gate.slot_ok.next = self.slot_ok.val();
         self.gate.slot.next = self.slot.val();
         self.slot_take.next = self.gate.slot_take.val();
-        self.sets.mk_valid.next = self.gate.mk_valid.val();
-        self.sets.mk_label.next = self.gate.mk_label.val();
-        self.sets.mk_slot.next = self.gate.mk_slot.val();
+        self.sets.mk_valid.next = self.gate.slot_take.val();
+        self.sets.mk_label.next = self.queue.dout.val().a;
+        self.sets.mk_slot.next = self.slot.val();
         self.sets.op_valid.next = self.gate.op_valid.val();
         self.sets.op_join.next = self.queue.dout.val().join;
         self.sets.op_a.next = self.queue.dout.val().a;
@@ -224,7 +224,6 @@ impl Logic for FccSetQueue {
         self.pushed.d.next = self.in_valid.val();
         self.idle.next = !self.in_valid.val()
             & !self.pushed.q.val()
-            & !self.queue.valid.val()
             & (self.queue.level.val() == self.zero.val())
             & !self.taken.took.val()
             & !self.order.busy.val()
