@@ -14,7 +14,7 @@ use fcc_golden::MergeMode;
 use fcc_lidar::clusters::ClusterRow;
 use fcc_lidar::ground::GroundMethod;
 use fcc_lidar::live::LiveFrame;
-use fcc_lidar::live::{Decoder, End, Event, LiveOptions, LiveSource};
+use fcc_lidar::live::{Decoder, End, Event, LiveOptions, LiveSource, Receive};
 use fcc_lidar::ouster::{bump_frame_id, ImageOrigin, OusterMetadata};
 use fcc_lidar::pcap::PcapReader;
 use fcc_lidar::pipeline::{params_for, ColumnStream, PipelineConfig};
@@ -150,8 +150,21 @@ pub fn run_live(args: &LiveArgs) -> anyhow::Result<()> {
         ctrlc::set_handler(move || stop.store(true, Ordering::Relaxed))
             .context("cannot catch Ctrl-C")?;
     }
+    #[cfg(feature = "foxglove")]
+    let want_points = args.mcap.is_some() || args.foxglove.is_some();
+    #[cfg(not(feature = "foxglove"))]
+    let want_points = args.mcap.is_some();
+    // Streamed as the sweep passes and written as JSON lines only, the work
+    // keeps up with the packets (no frame's worth at its end): the socket is
+    // read on this thread, without a hand-off per packet.
+    let inline = streamed && !want_points && matches!(decoder, Decoder::Ouster(_));
     let live = LiveOptions {
         idle_timeout: Duration::from_secs_f64(args.idle_timeout),
+        receive: if inline {
+            Receive::Inline
+        } else {
+            Receive::Thread
+        },
     };
     let mut mcap = args.mcap.as_deref().map(McapSink::create).transpose()?;
     let mut src = LiveSource::bind(addr, decoder, live)?;
@@ -194,10 +207,6 @@ pub fn run_live(args: &LiveArgs) -> anyhow::Result<()> {
             cfg.ground.method
         );
     }
-    #[cfg(feature = "foxglove")]
-    let want_points = mcap.is_some() || viz.is_some();
-    #[cfg(not(feature = "foxglove"))]
-    let want_points = mcap.is_some();
     let mut columns = ColumnPath::default();
     let (mut frames, mut clusters) = (0u64, 0usize);
     let mut latency_ms: Vec<f64> = Vec::new();
@@ -359,7 +368,8 @@ pub fn run_live(args: &LiveArgs) -> anyhow::Result<()> {
 }
 
 /// The column path: the frame's columns through the stream, each record's
-/// JSON line written and flushed as it closes. With the sweep origin an
+/// JSON line written and flushed as it closes (the records of one packet's
+/// columns in one write). With the sweep origin an
 /// Ouster frame's columns go in as they become complete ([`Event::Columns`]),
 /// the rest when the frame ends; with the sensor origin (whose frames that
 /// miss packets are dropped whole, as offline) and for a Velodyne rotation,
@@ -380,6 +390,8 @@ struct ColumnPath {
     /// Per pushed column, when the packet that completed it was received.
     ready_at: Vec<Instant>,
     rows: Vec<ClusterRow>,
+    /// Rows written so far.
+    written: usize,
     column: Vec<Option<fcc_golden::Point>>,
     pixels: Vec<Option<[f32; 3]>>,
 }
@@ -394,6 +406,7 @@ impl Default for ColumnPath {
             image: RangeImage::empty(0, 0),
             ready_at: Vec::new(),
             rows: Vec::new(),
+            written: 0,
             column: Vec::new(),
             pixels: Vec::new(),
         }
@@ -434,18 +447,14 @@ impl ColumnPath {
         self.pushed = 0;
         self.ready_at.clear();
         self.rows.clear();
+        self.written = 0;
         Ok(())
     }
 
     /// Push column `self.pushed`, whose pixels are `self.pixels`, completed
-    /// at `at`, and write the records it closed.
-    fn push(
-        &mut self,
-        at: Instant,
-        name: &str,
-        out: &mut impl std::io::Write,
-        record_ms: &mut Vec<f64>,
-    ) -> anyhow::Result<()> {
+    /// at `at`, and make the rows of the records it closed (written by
+    /// [`write`](Self::write)).
+    fn push(&mut self, at: Instant, name: &str) -> anyhow::Result<()> {
         let (cols, c) = (self.image.cols, self.pushed);
         self.column.clear();
         for (r, p) in self.pixels.iter().enumerate() {
@@ -459,37 +468,40 @@ impl ColumnPath {
         let n = s.push_column(&self.column)?.len();
         self.pushed += 1;
         self.ready_at.push(at);
-        self.write(n, name, out, record_ms)?;
+        self.rows_of(n, name);
         if self.pushed == cols {
             let n = self.stream.as_mut().expect("made by begin").finish()?.len();
             self.finished = true;
-            self.write(n, name, out, record_ms)?;
+            self.rows_of(n, name);
         }
         Ok(())
     }
 
-    /// Write the `n` records of the stream's last call.
-    fn write(
-        &mut self,
-        n: usize,
-        name: &str,
-        out: &mut impl std::io::Write,
-        record_ms: &mut Vec<f64>,
-    ) -> anyhow::Result<()> {
-        if n == 0 {
-            return Ok(());
-        }
+    /// The rows of the `n` records of the stream's last call.
+    fn rows_of(&mut self, n: usize, name: &str) {
         let s = self.stream.as_mut().expect("made by begin");
-        let start = self.rows.len();
         for k in 0..n {
             self.rows.push(s.row(k, name, &self.image));
         }
-        write_json_lines(out, &self.rows[start..])?;
+    }
+
+    /// Write the rows not yet written, in one write.
+    fn write(
+        &mut self,
+        out: &mut impl std::io::Write,
+        record_ms: &mut Vec<f64>,
+    ) -> anyhow::Result<()> {
+        let new = &self.rows[self.written..];
+        if new.is_empty() {
+            return Ok(());
+        }
+        write_json_lines(out, new)?;
         let now = Instant::now();
-        for r in &self.rows[start..] {
+        for r in new {
             let t = self.ready_at[r.span_last_col as usize];
             record_ms.push(now.saturating_duration_since(t).as_secs_f64() * 1e3);
         }
+        self.written = self.rows.len();
         Ok(())
     }
 
@@ -513,13 +525,15 @@ impl ColumnPath {
             let m = d.metadata();
             self.begin(frame, (m.pixels_per_column, m.columns_per_frame), cfg, name)?;
         }
+        let was_finished = self.finished;
         while self.pushed < ready.min(self.image.cols) {
             self.pixels.resize(self.image.rows, None);
             src.column_into(self.pushed, &mut self.pixels);
-            self.push(at, name, out, record_ms)?;
-            if self.finished {
-                frame_ms.push(at.elapsed().as_secs_f64() * 1e3);
-            }
+            self.push(at, name)?;
+        }
+        self.write(out, record_ms)?;
+        if self.finished && !was_finished {
+            frame_ms.push(at.elapsed().as_secs_f64() * 1e3);
         }
         Ok(())
     }
@@ -551,7 +565,10 @@ impl ColumnPath {
             self.pixels
                 .extend((0..f.image.rows).map(|r| f.image.at(r, c)));
             let at = f.column_time(c).unwrap_or(f.received_at);
-            self.push(at, name, out, record_ms)?;
+            self.push(at, name)?;
+            // A whole frame's columns at once: each column's records out
+            // as soon as they are made.
+            self.write(out, record_ms)?;
         }
         if !was_finished && !f.at_end {
             frame_ms.push(f.received_at.elapsed().as_secs_f64() * 1e3);

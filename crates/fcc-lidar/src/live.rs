@@ -2,10 +2,15 @@
 //! capture readers use ([`OusterDecoder`], [`VelodyneDecoder`]), frames out
 //! as they complete, delimited exactly as in a capture.
 //!
-//! A receiving thread drains the socket into a bounded queue so that a slow
-//! frame never makes the kernel drop packets unseen; packets the queue has
-//! no room for are counted as lost. The decoder holds one frame being
-//! received, so memory stays bounded however long it runs.
+//! The socket is read in one of two ways ([`Receive`]): by a receiving
+//! thread that drains it into a bounded queue, so that a long frame end (a
+//! whole frame's ground removal, its recording) never makes the kernel drop
+//! packets, or by the caller's own thread as it waits for the next packet,
+//! which saves a hand-off between threads per packet when the work keeps up
+//! with the packets. Either way packets lost for want of room are counted,
+//! never lost unseen (in the queue, or on Linux in the kernel's buffer). The
+//! decoder holds one frame being received, so memory stays bounded however
+//! long it runs.
 //!
 //! Faults are counted, never fatal, except where going on would give wrong
 //! output: a long run of packets that no decoder accepts (packets of
@@ -101,14 +106,37 @@ pub struct LiveOptions {
     /// With no packet for this long, the stream has ended (or, before the
     /// first packet, never started: an error).
     pub idle_timeout: Duration,
+    /// Which thread reads the socket.
+    pub receive: Receive,
 }
 
 impl Default for LiveOptions {
     fn default() -> Self {
         LiveOptions {
             idle_timeout: Duration::from_secs(5),
+            receive: Receive::Thread,
         }
     }
+}
+
+/// Which thread reads the socket.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Receive {
+    /// A receiving thread drains the socket into a queue of
+    /// [`QUEUE_PACKETS`], so that work that falls behind the packets for a
+    /// while (a whole frame processed at its end) leaves them in the
+    /// process, not in the kernel's buffer; a packet the queue has no room
+    /// for is counted in [`LiveStats::dropped`].
+    #[default]
+    Thread,
+    /// The caller's thread reads the socket while it waits for the next
+    /// packet: no hand-off between threads per packet, the kernel's buffer
+    /// ([`RECEIVE_BUFFER`] asked for) the only queue. For work that keeps up
+    /// with the packets, as the column path streamed as the sweep passes
+    /// does. On Linux the packets the kernel dropped for want of room are
+    /// counted in [`LiveStats::dropped`] (`SO_RXQ_OVFL`); elsewhere they
+    /// show only as lost columns.
+    Inline,
 }
 
 /// One frame received live.
@@ -174,7 +202,8 @@ pub struct LiveStats {
     pub foreign: u64,
     /// Ouster columns that arrived twice in a frame (the later one wins).
     pub duplicate_columns: u64,
-    /// Packets dropped because the decoder fell behind the socket.
+    /// Packets dropped because the decoder fell behind the socket (no room
+    /// in the queue of [`Receive::Thread`], or in the kernel's buffer).
     pub dropped: u64,
     /// Frames delivered.
     pub frames: u64,
@@ -221,7 +250,7 @@ struct Datagram {
 /// Bytes of socket receive buffer asked for (the kernel caps it, on Linux
 /// at `net.core.rmem_max`): a few frames of the largest sensors, so that a
 /// busy moment of the receiving thread loses nothing.
-const RECEIVE_BUFFER: i32 = 8 << 20;
+pub const RECEIVE_BUFFER: i32 = 8 << 20;
 
 /// Ask for a receive buffer of [`RECEIVE_BUFFER`] bytes; the default stays
 /// where the system refuses.
@@ -245,6 +274,187 @@ fn grow_receive_buffer(socket: &UdpSocket) {
 #[cfg(not(unix))]
 fn grow_receive_buffer(_: &UdpSocket) {}
 
+/// Ask the kernel to attach its count of the datagrams it dropped for want
+/// of buffer room to each datagram received ([`recv_counting`]).
+#[cfg(target_os = "linux")]
+fn count_kernel_drops(socket: &UdpSocket) {
+    use std::os::unix::io::AsRawFd;
+    let on: libc::c_int = 1;
+    // SAFETY: as in `grow_receive_buffer`.
+    unsafe {
+        libc::setsockopt(
+            socket.as_raw_fd(),
+            libc::SOL_SOCKET,
+            libc::SO_RXQ_OVFL,
+            (&on as *const libc::c_int).cast(),
+            std::mem::size_of::<libc::c_int>() as libc::socklen_t,
+        );
+    }
+}
+
+#[cfg(not(target_os = "linux"))]
+fn count_kernel_drops(_: &UdpSocket) {}
+
+/// One datagram into `buf`: its length, and the kernel's count of the
+/// datagrams it has dropped on this socket so far, where it gives one.
+#[cfg(target_os = "linux")]
+fn recv_counting(socket: &UdpSocket, buf: &mut [u8]) -> std::io::Result<(usize, Option<u32>)> {
+    use std::os::unix::io::AsRawFd;
+    // Room for one control message of a u32, aligned as cmsghdr wants.
+    let mut control = [0u64; 8];
+    let mut iov = libc::iovec {
+        iov_base: buf.as_mut_ptr().cast(),
+        iov_len: buf.len(),
+    };
+    // SAFETY: msghdr is plain data; zeroed is its empty value.
+    let mut msg: libc::msghdr = unsafe { std::mem::zeroed() };
+    msg.msg_iov = &mut iov;
+    msg.msg_iovlen = 1;
+    msg.msg_control = control.as_mut_ptr().cast();
+    msg.msg_controllen = std::mem::size_of_val(&control) as _;
+    // SAFETY: `msg` points at `iov` (into `buf`) and `control`, which
+    // outlive the call, with their lengths.
+    let n = unsafe { libc::recvmsg(socket.as_raw_fd(), &mut msg, 0) };
+    if n < 0 {
+        return Err(std::io::Error::last_os_error());
+    }
+    let mut drops = None;
+    // SAFETY: the CMSG macros walk the control buffer the kernel filled,
+    // within `msg_controllen`.
+    unsafe {
+        let mut c = libc::CMSG_FIRSTHDR(&msg);
+        while !c.is_null() {
+            if (*c).cmsg_level == libc::SOL_SOCKET && (*c).cmsg_type == libc::SO_RXQ_OVFL {
+                drops = Some(std::ptr::read_unaligned(libc::CMSG_DATA(c).cast::<u32>()));
+            }
+            c = libc::CMSG_NXTHDR(&msg, c);
+        }
+    }
+    Ok((n as usize, drops))
+}
+
+impl Reading {
+    /// Start the receiving thread of [`Receive::Thread`] on `socket`.
+    fn thread(socket: UdpSocket) -> Result<Reading> {
+        let (tx, queue) = sync_channel::<Datagram>(QUEUE_PACKETS);
+        let dropped = Arc::new(AtomicU64::new(0));
+        let kernel = Arc::new(AtomicU64::new(0));
+        let quit = Arc::new(AtomicBool::new(false));
+        let (d, kd, q) = (dropped.clone(), kernel.clone(), quit.clone());
+        count_kernel_drops(&socket);
+        let thread = std::thread::Builder::new()
+            .name("fcc-udp".into())
+            .spawn(move || {
+                let mut buf = vec![0u8; MAX_DATAGRAM];
+                while !q.load(Ordering::Relaxed) {
+                    let n = match recv_counting(&socket, &mut buf) {
+                        Ok((n, drops)) => {
+                            if let Some(k) = drops {
+                                kd.store(u64::from(k), Ordering::Relaxed);
+                            }
+                            n
+                        }
+                        // Timeouts (to look at the flag) and transient errors.
+                        Err(_) => continue,
+                    };
+                    let dg = Datagram {
+                        payload: buf[..n].to_vec(),
+                        at: Instant::now(),
+                        unix_ns: unix_ns(),
+                    };
+                    match tx.try_send(dg) {
+                        Ok(()) => {}
+                        Err(TrySendError::Full(_)) => {
+                            d.fetch_add(1, Ordering::Relaxed);
+                        }
+                        Err(TrySendError::Disconnected(_)) => break,
+                    }
+                }
+            })
+            .map_err(|e| LidarError::Config(format!("cannot start the UDP thread: {e}")))?;
+        Ok(Reading::Thread {
+            queue,
+            dropped,
+            kernel,
+            quit,
+            thread: Some(thread),
+        })
+    }
+
+    /// The next datagram within `wait`, `None` when none came; an error
+    /// when the receiving thread has stopped.
+    fn next(&mut self, wait: Duration) -> std::result::Result<Option<Datagram>, ()> {
+        match self {
+            Reading::Thread { queue, .. } => match queue.recv_timeout(wait) {
+                Ok(dg) => Ok(Some(dg)),
+                Err(RecvTimeoutError::Timeout) => Ok(None),
+                Err(RecvTimeoutError::Disconnected) => Err(()),
+            },
+            Reading::Inline {
+                socket,
+                buf,
+                timeout,
+                dropped,
+            } => {
+                // The socket's timeout moves only for a wait shorter than
+                // the poll (the idle timeout's last moments).
+                let want = wait.clamp(Duration::from_millis(1), POLL);
+                if want != *timeout && socket.set_read_timeout(Some(want)).is_ok() {
+                    *timeout = want;
+                }
+                // Timeouts, signals and transient errors: nothing came.
+                let Ok((n, drops)) = recv_counting(socket, buf) else {
+                    return Ok(None);
+                };
+                if let Some(k) = drops {
+                    *dropped = u64::from(k);
+                }
+                Ok(Some(Datagram {
+                    payload: buf[..n].to_vec(),
+                    at: Instant::now(),
+                    unix_ns: unix_ns(),
+                }))
+            }
+        }
+    }
+
+    /// Packets dropped for want of room so far.
+    fn dropped(&self) -> u64 {
+        match self {
+            Reading::Thread {
+                dropped, kernel, ..
+            } => dropped.load(Ordering::Relaxed) + kernel.load(Ordering::Relaxed),
+            Reading::Inline { dropped, .. } => *dropped,
+        }
+    }
+}
+
+#[cfg(not(target_os = "linux"))]
+fn recv_counting(socket: &UdpSocket, buf: &mut [u8]) -> std::io::Result<(usize, Option<u32>)> {
+    socket.recv(buf).map(|n| (n, None))
+}
+
+/// How the socket is read ([`Receive`]).
+enum Reading {
+    Thread {
+        queue: Receiver<Datagram>,
+        /// Datagrams the queue had no room for.
+        dropped: Arc<AtomicU64>,
+        /// The kernel's count of datagrams dropped, as last given.
+        kernel: Arc<AtomicU64>,
+        quit: Arc<AtomicBool>,
+        thread: Option<JoinHandle<()>>,
+    },
+    Inline {
+        socket: UdpSocket,
+        buf: Vec<u8>,
+        /// The read timeout set on the socket.
+        timeout: Duration,
+        /// The kernel's count of datagrams dropped, as last given.
+        dropped: u64,
+    },
+}
+
 /// The system clock, nanoseconds since the Unix epoch (0 before it).
 fn unix_ns() -> u64 {
     std::time::SystemTime::now()
@@ -258,10 +468,7 @@ pub struct LiveSource {
     addr: SocketAddr,
     port: u16,
     opts: LiveOptions,
-    queue: Receiver<Datagram>,
-    dropped: Arc<AtomicU64>,
-    quit: Arc<AtomicBool>,
-    thread: Option<JoinHandle<()>>,
+    reading: Reading,
     stats: LiveStats,
     last_packet: Option<(Instant, u64)>,
     started: Instant,
@@ -285,44 +492,24 @@ impl LiveSource {
         socket.set_read_timeout(Some(POLL)).map_err(io)?;
         grow_receive_buffer(&socket);
         let local = socket.local_addr().map_err(io)?;
-        let (tx, queue) = sync_channel::<Datagram>(QUEUE_PACKETS);
-        let dropped = Arc::new(AtomicU64::new(0));
-        let quit = Arc::new(AtomicBool::new(false));
-        let (d, q) = (dropped.clone(), quit.clone());
-        let thread = std::thread::Builder::new()
-            .name("fcc-udp".into())
-            .spawn(move || {
-                let mut buf = vec![0u8; MAX_DATAGRAM];
-                while !q.load(Ordering::Relaxed) {
-                    let n = match socket.recv(&mut buf) {
-                        Ok(n) => n,
-                        // Timeouts (to look at the flag) and transient errors.
-                        Err(_) => continue,
-                    };
-                    let dg = Datagram {
-                        payload: buf[..n].to_vec(),
-                        at: Instant::now(),
-                        unix_ns: unix_ns(),
-                    };
-                    match tx.try_send(dg) {
-                        Ok(()) => {}
-                        Err(TrySendError::Full(_)) => {
-                            d.fetch_add(1, Ordering::Relaxed);
-                        }
-                        Err(TrySendError::Disconnected(_)) => break,
-                    }
+        let reading = match opts.receive {
+            Receive::Thread => Reading::thread(socket)?,
+            Receive::Inline => {
+                count_kernel_drops(&socket);
+                Reading::Inline {
+                    socket,
+                    buf: vec![0u8; MAX_DATAGRAM],
+                    timeout: POLL,
+                    dropped: 0,
                 }
-            })
-            .map_err(|e| LidarError::Config(format!("cannot start the UDP thread: {e}")))?;
+            }
+        };
         Ok(LiveSource {
             decoder,
             addr: SocketAddr::new(addr.ip(), local.port()),
             port: local.port(),
             opts,
-            queue,
-            dropped,
-            quit,
-            thread: Some(thread),
+            reading,
             stats: LiveStats::default(),
             last_packet: None,
             started: Instant::now(),
@@ -343,7 +530,7 @@ impl LiveSource {
     /// What was met so far.
     pub fn stats(&self) -> LiveStats {
         let mut s = self.stats.clone();
-        s.dropped = self.dropped.load(Ordering::Relaxed);
+        s.dropped = self.reading.dropped();
         s
     }
 
@@ -408,10 +595,10 @@ impl LiveSource {
                 });
             }
             let wait = (self.opts.idle_timeout - since).min(POLL);
-            let dg = match self.queue.recv_timeout(wait) {
-                Ok(dg) => dg,
-                Err(RecvTimeoutError::Timeout) => continue,
-                Err(RecvTimeoutError::Disconnected) => {
+            let dg = match self.reading.next(wait) {
+                Ok(Some(dg)) => dg,
+                Ok(None) => continue,
+                Err(()) => {
                     return Err(LidarError::Config(format!(
                         "udp {}: the receiving thread stopped",
                         self.addr
@@ -554,11 +741,13 @@ impl LiveSource {
     }
 }
 
-impl Drop for LiveSource {
+impl Drop for Reading {
     fn drop(&mut self) {
-        self.quit.store(true, Ordering::Relaxed);
-        if let Some(t) = self.thread.take() {
-            let _ = t.join();
+        if let Reading::Thread { quit, thread, .. } = self {
+            quit.store(true, Ordering::Relaxed);
+            if let Some(t) = thread.take() {
+                let _ = t.join();
+            }
         }
     }
 }

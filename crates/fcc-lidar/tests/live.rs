@@ -3,9 +3,10 @@
 //! the faults of a live stream, each crafted from a sample capture's
 //! packets: loss, reordering, duplicates, a frame id jump, malformed
 //! packets, packets of another profile, no packets at all. The socket tests
-//! use 127.0.0.1 and stop by themselves (idle timeouts of a second or less).
+//! use 127.0.0.1 and stop by themselves (idle timeouts of a few seconds at
+//! most), and run with both ways of reading the socket ([`Receive`]).
 
-use fcc_lidar::live::{Decoder, End, LiveOptions, LiveSource};
+use fcc_lidar::live::{Decoder, End, LiveOptions, LiveSource, Receive, RECEIVE_BUFFER};
 use fcc_lidar::ouster::{
     sample_dir, DecodeOptions, OusterDecoder, OusterFrame, OusterMetadata, OusterReader, Profile,
     SAMPLE_CAPTURES,
@@ -234,12 +235,23 @@ fn malformed_packets_are_counted_and_skipped() {
     assert_eq!(s.lidar_packets, packets.len() as u64);
 }
 
+const BOTH: [Receive; 2] = [Receive::Thread, Receive::Inline];
+
 fn bind(decoder: Decoder, idle: f64) -> (LiveSource, SocketAddr, UdpSocket) {
+    bind_reading(decoder, idle, Receive::Thread)
+}
+
+fn bind_reading(
+    decoder: Decoder,
+    idle: f64,
+    receive: Receive,
+) -> (LiveSource, SocketAddr, UdpSocket) {
     let src = LiveSource::bind(
         "127.0.0.1:0".parse().unwrap(),
         decoder,
         LiveOptions {
             idle_timeout: Duration::from_secs_f64(idle),
+            receive,
         },
     )
     .unwrap();
@@ -265,9 +277,15 @@ fn send_all(tx: &UdpSocket, to: SocketAddr, packets: &[Vec<u8>]) {
 
 #[test]
 fn the_socket_gives_the_frames_of_the_capture_and_ends_when_idle() {
+    for receive in BOTH {
+        socket_gives_the_frames(receive);
+    }
+}
+
+fn socket_gives_the_frames(receive: Receive) {
     let (m, packets) = profile_capture();
     let (want, _) = decode(&m, false, &packets);
-    let (mut src, to, tx) = bind(ouster(&m), 0.5);
+    let (mut src, to, tx) = bind_reading(ouster(&m), 0.5, receive);
     send_all(&tx, to, &packets);
     let stop = AtomicBool::new(false);
     let t = Instant::now();
@@ -295,24 +313,72 @@ fn the_socket_gives_the_frames_of_the_capture_and_ends_when_idle() {
 #[test]
 fn the_stop_flag_ends_the_wait() {
     let (m, _) = profile_capture();
-    let (mut src, _, _) = bind(ouster(&m), 30.0);
-    let stop = AtomicBool::new(true);
-    let t = Instant::now();
-    assert_eq!(src.next_frame(&stop).unwrap().err(), Some(End::Stopped));
-    assert!(t.elapsed() < Duration::from_secs(5));
+    for receive in BOTH {
+        let (mut src, _, _) = bind_reading(ouster(&m), 30.0, receive);
+        let stop = AtomicBool::new(true);
+        let t = Instant::now();
+        assert_eq!(src.next_frame(&stop).unwrap().err(), Some(End::Stopped));
+        assert!(t.elapsed() < Duration::from_secs(5));
+    }
 }
 
 #[test]
 fn no_packet_at_all_is_an_error_after_the_idle_timeout() {
     let (m, _) = profile_capture();
-    let t = Instant::now();
-    let (mut src, _, _) = bind(ouster(&m), 0.3);
-    let err = src
-        .next_frame(&AtomicBool::new(false))
-        .unwrap_err()
-        .to_string();
-    assert!(err.contains("no packet in 0.3 s"), "{err}");
-    assert!(t.elapsed() >= Duration::from_millis(300) && t.elapsed() < Duration::from_secs(10));
+    for receive in BOTH {
+        let t = Instant::now();
+        let (mut src, _, _) = bind_reading(ouster(&m), 0.3, receive);
+        let err = src
+            .next_frame(&AtomicBool::new(false))
+            .unwrap_err()
+            .to_string();
+        assert!(err.contains("no packet in 0.3 s"), "{receive:?}: {err}");
+        let took = t.elapsed();
+        assert!(
+            took >= Duration::from_millis(300) && took < Duration::from_secs(10),
+            "{receive:?}: {took:?}"
+        );
+    }
+}
+
+/// A burst far larger than any buffer on the way, sent before anything is
+/// read, then one packet once the buffers have drained: every packet is
+/// either received or counted as dropped, whichever way the socket is read.
+/// (The kernel reports its drops with the next datagram it queues, hence the
+/// last packet.)
+#[test]
+fn packets_without_room_are_counted_as_dropped() {
+    let (m, packets) = profile_capture();
+    let size = packets[0].len();
+    // Four times the most the kernel can give (twice the buffer asked for),
+    // and more than the receiving thread's queue.
+    let burst = (4 * 2 * RECEIVE_BUFFER as usize / size).max(2 * fcc_lidar::live::QUEUE_PACKETS);
+    for receive in BOTH {
+        let (mut src, to, tx) = bind_reading(ouster(&m), 2.0, receive);
+        for k in 0..burst {
+            tx.send_to(&packets[k % packets.len()], to).unwrap();
+            // Never faster than the loopback's own queue drains.
+            if k % 64 == 63 {
+                std::thread::sleep(Duration::from_millis(1));
+            }
+        }
+        let mut last = packets[0].clone();
+        set_frame_id(&mut last, 999);
+        let late = std::thread::spawn(move || {
+            std::thread::sleep(Duration::from_millis(700));
+            tx.send_to(&last, to).unwrap();
+        });
+        let stop = AtomicBool::new(false);
+        while src.next_event(&stop).unwrap().is_ok() {}
+        late.join().unwrap();
+        let s = src.stats();
+        assert!(s.dropped > 0, "{receive:?}: none dropped of {burst}: {s:?}");
+        assert_eq!(
+            s.packets + s.dropped,
+            burst as u64 + 1,
+            "{receive:?}: received and dropped against sent: {s:?}"
+        );
+    }
 }
 
 #[test]
