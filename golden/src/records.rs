@@ -423,13 +423,13 @@ fn sorted_extremes(points: &[Point]) -> Vec<[i64; 2]> {
     });
     let span = i64::from(hi) - i64::from(lo) + 1;
     if points.len() < 16 || span > 2 * points.len() as i64 {
-        let mut p: Vec<[i64; 2]> = points
-            .iter()
-            .map(|q| [i64::from(q[0]), i64::from(q[1])])
-            .collect();
-        p.sort_unstable();
-        p.dedup();
-        return p;
+        // Sorted as one key a point, x then y: offset binary keeps the order.
+        let key = |v: i16| u32::from(v as u16 ^ 0x8000);
+        let mut k: Vec<u32> = points.iter().map(|q| key(q[0]) << 16 | key(q[1])).collect();
+        k.sort_unstable();
+        k.dedup();
+        let coord = |v: u32| i64::from((v as u16 ^ 0x8000) as i16);
+        return k.iter().map(|&v| [coord(v >> 16), coord(v)]).collect();
     }
     let mut ys = vec![(i16::MAX, i16::MIN); span as usize];
     for q in points {
@@ -543,6 +543,42 @@ mod tests {
         );
         assert!((b.yaw - 30f64.to_radians()).abs() < 0.01, "{b:?}");
         assert!((b.center[0] - 10.0).abs() < 0.01 && (b.center[1] - 5.0).abs() < 0.01);
+    }
+
+    #[test]
+    fn sorted_extremes_sort_as_pairs_over_the_whole_range() {
+        // The sort's one key a point against a sort of (x, y) pairs, on
+        // spread points (the sorting path) from the whole i16 range, ends
+        // and signs included, with duplicates.
+        let mut seed = 0x2545_f491_4f6c_dd1du64;
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            seed
+        };
+        let ends = [i16::MIN, i16::MIN + 1, -1, 0, 1, i16::MAX - 1, i16::MAX];
+        for n in [1usize, 5, 15, 16, 40, 300] {
+            for _ in 0..50 {
+                let pts: Vec<Point> = (0..n)
+                    .map(|_| {
+                        let r = next();
+                        let v = |s: u32| match (r >> (s + 16)) % 4 {
+                            0 => ends[((r >> s) % 7) as usize],
+                            _ => (r >> s) as u16 as i16,
+                        };
+                        [v(0), if r % 5 == 0 { v(0) } else { v(32) }, 0]
+                    })
+                    .collect();
+                let mut want: Vec<[i64; 2]> = pts
+                    .iter()
+                    .map(|q| [i64::from(q[0]), i64::from(q[1])])
+                    .collect();
+                want.sort_unstable();
+                want.dedup();
+                assert_eq!(sorted_extremes(&pts), want, "{pts:?}");
+            }
+        }
     }
 
     #[test]

@@ -165,6 +165,8 @@ pub fn run_live(args: &LiveArgs) -> anyhow::Result<()> {
         } else {
             Receive::Thread
         },
+        // Streamed, each column is read as it becomes complete.
+        columns_read: streamed,
     };
     let mut mcap = args.mcap.as_deref().map(McapSink::create).transpose()?;
     let mut src = LiveSource::bind(addr, decoder, live)?;

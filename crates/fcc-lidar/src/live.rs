@@ -108,6 +108,12 @@ pub struct LiveOptions {
     pub idle_timeout: Duration,
     /// Which thread reads the socket.
     pub receive: Receive,
+    /// The caller reads each Ouster column through
+    /// [`LiveSource::column_into`] as [`Event::Columns`] reports it: the
+    /// frame's image then holds only the columns not reported by the time
+    /// the frame ended, the others empty
+    /// ([`OusterDecoder::set_columns_read`]).
+    pub columns_read: bool,
 }
 
 impl Default for LiveOptions {
@@ -115,6 +121,7 @@ impl Default for LiveOptions {
         LiveOptions {
             idle_timeout: Duration::from_secs(5),
             receive: Receive::Thread,
+            columns_read: false,
         }
     }
 }
@@ -146,6 +153,8 @@ pub struct LiveFrame {
     /// Velodyne rotation counted from the first packet (as the capture
     /// readers name frames).
     pub frame: u64,
+    /// The frame (with [`LiveOptions::columns_read`], only its columns not
+    /// reported by [`Event::Columns`]).
     pub image: RangeImage,
     /// Reflectivity (Ouster) or intensity (Velodyne) per pixel.
     pub intensity: Vec<f32>,
@@ -486,7 +495,10 @@ pub struct LiveSource {
 
 impl LiveSource {
     /// Bind `addr` (UDP) and start receiving.
-    pub fn bind(addr: SocketAddr, decoder: Decoder, opts: LiveOptions) -> Result<LiveSource> {
+    pub fn bind(addr: SocketAddr, mut decoder: Decoder, opts: LiveOptions) -> Result<LiveSource> {
+        if let Decoder::Ouster(d) = &mut decoder {
+            d.set_columns_read(opts.columns_read);
+        }
         let io = |e: std::io::Error| LidarError::Config(format!("udp {addr}: cannot bind: {e}"));
         let socket = UdpSocket::bind(addr).map_err(io)?;
         socket.set_read_timeout(Some(POLL)).map_err(io)?;

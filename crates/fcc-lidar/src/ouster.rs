@@ -754,6 +754,8 @@ pub struct OusterDecoder {
     distinct_offsets: Vec<usize>,
     current: Option<Assembly>,
     stats: CaptureStats,
+    /// See [`set_columns_read`](Self::set_columns_read).
+    columns_read: bool,
 }
 
 impl OusterDecoder {
@@ -777,7 +779,18 @@ impl OusterDecoder {
             opts,
             current: None,
             stats: CaptureStats::default(),
+            columns_read: false,
         })
+    }
+
+    /// For a consumer that reads each image column through
+    /// [`column_into`](Self::column_into) as soon as
+    /// [`ready_columns`](Self::ready_columns) counts it complete: a frame's
+    /// image then leaves out (empty) the columns counted complete when it
+    /// closed, which that consumer has already read, instead of working
+    /// their points out a second time. Off by default.
+    pub fn set_columns_read(&mut self, on: bool) {
+        self.columns_read = on;
     }
 
     /// The metadata in use.
@@ -834,11 +847,12 @@ impl OusterDecoder {
     /// The point of beam `u`, measurement column `v` at range `r` mm, or
     /// `None` for no return or one nearer than the minimum range.
     fn pixel(&self, u: usize, v: usize, r: u32) -> Option<[f32; 3]> {
-        if r == 0 || f64::from(r) < self.opts.min_range_m * 1000.0 {
-            None
-        } else {
-            Some(self.lut.xyz_m(u, v, r))
-        }
+        self.is_return(r).then(|| self.lut.xyz_m(u, v, r))
+    }
+
+    /// A range of `r` mm is a return: not 0, not nearer than the minimum.
+    fn is_return(&self, r: u32) -> bool {
+        r != 0 && f64::from(r) >= self.opts.min_range_m * 1000.0
     }
 
     /// Move the frame's count of complete image columns on.
@@ -995,17 +1009,23 @@ impl OusterDecoder {
         let mut image = RangeImage::empty(h, w);
         let mut reflectivity = vec![f32::NAN; h * w];
         let mut returns = 0;
+        // The columns the consumer has read already (`set_columns_read`).
+        let read = if self.columns_read { a.ready } else { 0 };
         for u in 0..h {
             let off = self.offsets[u];
             for v in 0..w {
-                let Some(p) = self.pixel(u, v, a.range_mm[u * w + v]) else {
+                let r = a.range_mm[u * w + v];
+                if !self.is_return(r) {
                     continue;
-                };
+                }
+                returns += 1;
                 // (v + offset) mod w, both below w, without a division.
                 let col = if v + off >= w { v + off - w } else { v + off };
-                image.set(u * w + col, Some(p));
+                if col < read {
+                    continue;
+                }
+                image.set(u * w + col, Some(self.lut.xyz_m(u, v, r)));
                 reflectivity[u * w + col] = f32::from(a.reflectivity[u * w + v]);
-                returns += 1;
             }
         }
         self.stats.frames += 1;

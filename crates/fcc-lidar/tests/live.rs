@@ -8,8 +8,8 @@
 
 use fcc_lidar::live::{Decoder, End, LiveOptions, LiveSource, Receive, RECEIVE_BUFFER};
 use fcc_lidar::ouster::{
-    sample_dir, DecodeOptions, OusterDecoder, OusterFrame, OusterMetadata, OusterReader, Profile,
-    SAMPLE_CAPTURES,
+    sample_dir, DecodeOptions, ImageOrigin, OusterDecoder, OusterFrame, OusterMetadata,
+    OusterReader, Profile, SAMPLE_CAPTURES,
 };
 use fcc_lidar::pcap::{PcapReader, UdpDatagram};
 use fcc_lidar::velodyne::{VelodyneDecoder, VelodyneOptions, VelodyneReader};
@@ -119,6 +119,81 @@ fn packets_pushed_one_by_one_give_the_readers_frames() {
     for (a, b) in got.iter().zip(&want) {
         assert_eq!((a.index, a.complete), (b.index, b.complete));
         assert!(same_image(&a.image, &b.image));
+    }
+}
+
+/// Columns read as they complete (`column_into` as `ready_columns` grows),
+/// and the columns a frame's image holds when it ends with
+/// `set_columns_read`, make the image of the capture reader, at both image
+/// origins, with every packet and with one lost in each frame; the image
+/// leaves the columns read empty.
+#[test]
+fn columns_read_as_they_complete_and_the_frame_end_make_the_readers_image() {
+    let (m, packets) = profile_capture();
+    let port = m.udp_port_lidar.unwrap_or(7502);
+    let mut lossy = packets.clone();
+    lossy.remove(10);
+    for origin in [ImageOrigin::Sweep, ImageOrigin::Sensor] {
+        for input in [&packets, &lossy] {
+            let opts = DecodeOptions {
+                origin,
+                keep_incomplete: true,
+                ..DecodeOptions::default()
+            };
+            let mut reference = OusterDecoder::new(&m, opts.clone()).unwrap();
+            let mut want: Vec<OusterFrame> = input
+                .iter()
+                .filter_map(|p| reference.push(port, p))
+                .collect();
+            want.extend(reference.flush());
+            let mut d = OusterDecoder::new(&m, opts).unwrap();
+            d.set_columns_read(true);
+            let (h, w) = (m.pixels_per_column, m.columns_per_frame);
+            let mut col = vec![None; h];
+            let (mut image, mut read) = (RangeImage::empty(h, w), 0);
+            let (mut got, mut read_before_end) = (Vec::new(), 0);
+            let mut end = |f: OusterFrame, image: &mut RangeImage, read: &mut usize| {
+                for c in 0..w {
+                    for r in 0..h {
+                        let p = f.image.at(r, c);
+                        if c < *read {
+                            assert!(p.is_none(), "{origin:?}: column {c} read, yet in the image");
+                        } else {
+                            image.set(r * w + c, p);
+                        }
+                    }
+                }
+                read_before_end += *read;
+                got.push(std::mem::replace(image, RangeImage::empty(h, w)));
+                *read = 0;
+            };
+            for p in input {
+                if let Some(f) = d.push(port, p) {
+                    end(f, &mut image, &mut read);
+                }
+                let (_, ready) = d.ready_columns().unwrap();
+                for c in read..ready {
+                    d.column_into(c, &mut col);
+                    for (r, p) in col.iter().enumerate() {
+                        image.set(r * w + c, *p);
+                    }
+                }
+                read = read.max(ready);
+            }
+            if let Some(f) = d.flush() {
+                end(f, &mut image, &mut read);
+            }
+            assert_eq!(got.len(), want.len(), "{origin:?}");
+            for (a, b) in got.iter().zip(&want) {
+                assert!(
+                    same_image(a, &b.image),
+                    "{origin:?}, {} packets",
+                    input.len()
+                );
+            }
+            // The sweep origin reads columns before the end.
+            assert!(origin == ImageOrigin::Sensor || read_before_end > 0);
+        }
     }
 }
 
@@ -252,6 +327,7 @@ fn bind_reading(
         LiveOptions {
             idle_timeout: Duration::from_secs_f64(idle),
             receive,
+            columns_read: false,
         },
     )
     .unwrap();
