@@ -434,7 +434,7 @@ impl ColumnPath {
             );
             self.stream = None;
         }
-        self.image = RangeImage::empty(rows, cols);
+        self.image.reset(rows, cols);
         let params = params_for(&self.image, &cfg.params);
         if !self
             .stream

@@ -38,6 +38,15 @@ impl RangeImage {
         }
     }
 
+    /// Every pixel empty again, at `rows` x `cols`, in the memory already
+    /// held where it is enough (a frame after frame without fresh pages).
+    pub fn reset(&mut self, rows: usize, cols: usize) {
+        self.rows = rows;
+        self.cols = cols;
+        self.xyz.clear();
+        self.xyz.resize(rows * cols * 3, f32::NAN);
+    }
+
     /// Wrap coordinates, checking the length.
     pub fn from_xyz(rows: usize, cols: usize, xyz: Vec<f32>) -> Result<RangeImage> {
         let expected = rows * cols * 3;
@@ -134,5 +143,16 @@ mod tests {
         assert_eq!(f.get(0, 0), None);
         let cleared = img.without(&[false, true, false]);
         assert_eq!(cleared.valid_count(), 0);
+    }
+
+    #[test]
+    fn reset_empties_every_pixel_at_the_new_size() {
+        let mut img = RangeImage::empty(2, 3);
+        img.set(5, Some([1.0, 2.0, 2.0]));
+        img.reset(2, 3);
+        assert_eq!(img, RangeImage::empty(2, 3));
+        img.set(0, Some([1.0, 2.0, 2.0]));
+        img.reset(4, 2);
+        assert_eq!(img, RangeImage::empty(4, 2));
     }
 }
