@@ -20,6 +20,12 @@ image columns complete as their packets arrive): the sample set has no
 
     python3 bench/live_latency.py --fcc target/release/fcc [--repeat 20] [--json out.json]
 
+Two builds compared (the machine's speed drifts, so the CPU of one run says
+little against another run's): `--against OTHER_FCC --pairs N` runs each
+case (or those whose capture name contains `--only TEXT`) N times with
+both builds, the order alternating, and prints the CPU of each and the
+median ratio, `--fcc`'s over `--against`'s.
+
 Needs numpy (the `.venv` of ./setup.sh has it). Ports: 127.0.0.1, from
 27502 up. Every child is bounded in time.
 """
@@ -164,12 +170,36 @@ def main():
     ap.add_argument("--fcc", default="target/release/fcc")
     ap.add_argument("--repeat", type=int, default=20, help="passes of each capture (10 Hz)")
     ap.add_argument("--json", help="write the rows here as well")
+    ap.add_argument("--against", help="a second fcc build: the CPU of the two in pairs")
+    ap.add_argument("--pairs", type=int, default=8, help="pairs per case with --against")
+    ap.add_argument("--only", default="", help="only the captures whose name contains this")
     a = ap.parse_args()
     with tempfile.TemporaryDirectory(prefix="fcc-live-bench-") as tmp:
-        run_cases(a, tmp)
+        if a.against:
+            run_pairs(a, tmp)
+        else:
+            run_cases(a, tmp)
 
 
-def run_cases(a, tmp):
+def run_pairs(a, tmp):
+    print("| capture | setting | CPU, --fcc (each pair) | CPU, --against | median ratio |")
+    print("|---|---|---|---|--:|")
+    for k, (name, _, label, capture, sensor, extra) in enumerate(cases_of(a, tmp)):
+        if a.only not in name:
+            continue
+        mine, theirs = [], []
+        for n in range(a.pairs):
+            order = [(a.fcc, mine), (a.against, theirs)]
+            for fcc, out in order if n % 2 == 0 else order[::-1]:
+                out.append(measure(fcc, capture, sensor, a.repeat, 28502 + k, extra)["cpu"])
+        ratios = sorted(x / y for x, y in zip(mine, theirs))
+        median = (ratios[(len(ratios) - 1) // 2] + ratios[len(ratios) // 2]) / 2
+        fmt = lambda v: " ".join(f"{x:.2f}" for x in v)
+        print(f"| {name} | {label} | {fmt(mine)} | {fmt(theirs)} | {median:.3f} |", flush=True)
+
+
+def cases_of(a, tmp):
+    """(capture name, frame, setting, capture file, sensor options, live options) per case."""
     cases = []
     for name, pcap, meta in OUSTER:
         frame = {"OS-1-32": "32 x 1024", "OS-1-64": "64 x 1024"}.get(name, "128 x 1024")
@@ -187,6 +217,11 @@ def run_cases(a, tmp):
     vlp = os.path.join(DATA, "velodyne", "vlp16_600rpm.pcap")
     cases.append(("VLP-16, 600 rpm", "16 x 1800", "column (rotation end)", vlp,
                   ["--sensor", "velodyne"], ["--ground", "none"]))
+    return cases
+
+
+def run_cases(a, tmp):
+    cases = cases_of(a, tmp)
     rows = []
     print("| capture | frame | setting | last column to record: p50 / p99 / max (ms) "
           "| completing packet to last record: p50 / p99 / max (ms) | CPU (share of one core) |")
