@@ -261,23 +261,29 @@ struct Datagram {
 /// busy moment of the receiving thread loses nothing.
 pub const RECEIVE_BUFFER: i32 = 8 << 20;
 
-/// Ask for a receive buffer of [`RECEIVE_BUFFER`] bytes; the default stays
-/// where the system refuses.
+/// Set the socket option `name` (level `SOL_SOCKET`) to `value`; where the
+/// system refuses, the option stays as it was.
 #[cfg(unix)]
-fn grow_receive_buffer(socket: &UdpSocket) {
+fn set_socket_int(socket: &UdpSocket, name: libc::c_int, value: libc::c_int) {
     use std::os::unix::io::AsRawFd;
-    let size: libc::c_int = RECEIVE_BUFFER;
     // SAFETY: a valid socket descriptor and a pointer to a c_int of the
     // length given, as setsockopt(2) requires.
     unsafe {
         libc::setsockopt(
             socket.as_raw_fd(),
             libc::SOL_SOCKET,
-            libc::SO_RCVBUF,
-            (&size as *const libc::c_int).cast(),
+            name,
+            (&value as *const libc::c_int).cast(),
             std::mem::size_of::<libc::c_int>() as libc::socklen_t,
         );
     }
+}
+
+/// Ask for a receive buffer of [`RECEIVE_BUFFER`] bytes; the default stays
+/// where the system refuses.
+#[cfg(unix)]
+fn grow_receive_buffer(socket: &UdpSocket) {
+    set_socket_int(socket, libc::SO_RCVBUF, RECEIVE_BUFFER);
 }
 
 #[cfg(not(unix))]
@@ -287,18 +293,7 @@ fn grow_receive_buffer(_: &UdpSocket) {}
 /// of buffer room to each datagram received ([`recv_counting`]).
 #[cfg(target_os = "linux")]
 fn count_kernel_drops(socket: &UdpSocket) {
-    use std::os::unix::io::AsRawFd;
-    let on: libc::c_int = 1;
-    // SAFETY: as in `grow_receive_buffer`.
-    unsafe {
-        libc::setsockopt(
-            socket.as_raw_fd(),
-            libc::SOL_SOCKET,
-            libc::SO_RXQ_OVFL,
-            (&on as *const libc::c_int).cast(),
-            std::mem::size_of::<libc::c_int>() as libc::socklen_t,
-        );
-    }
+    set_socket_int(socket, libc::SO_RXQ_OVFL, 1);
 }
 
 #[cfg(not(target_os = "linux"))]
