@@ -612,14 +612,12 @@ fn corpus_trace(p: &FccParams, f: &fcc_golden::Frame) -> Trace {
     // One pixel of each record closed at each column (the frame end's at
     // `cols`), its run once the frame is done.
     let mut closed_px: Vec<Vec<u32>> = vec![Vec::new(); cols + 1];
-    for c in 0..cols {
+    for (c, closed) in closed_px.iter_mut().take(cols).enumerate() {
         for (i, v) in column.iter_mut().enumerate() {
             *v = f.get(i, c);
         }
         let n = stream.push_column(&column).expect("a column").len();
-        for k in 0..n {
-            closed_px[c].push(stream.pixels_of(k)[0]);
-        }
+        closed.extend((0..n).map(|k| stream.pixels_of(k)[0]));
     }
     let n = stream.finish().expect("the frame end").len();
     for k in 0..n {
