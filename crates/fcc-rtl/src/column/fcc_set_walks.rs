@@ -19,7 +19,11 @@
 //! A walk that read the linked word before the link was written (B's, or
 //! one started in the link's cycle) found a root that no longer is one: for
 //! two cycles after a link its root, recorded or arriving, is chased to the
-//! root kept (`FccSetOp`), and no op retires meanwhile. Reads issued after
+//! root kept (`FccSetOp`). No op retires in the first of them, when a root
+//! recorded before the link may still be the linked one; by the second,
+//! every recorded root is chased and every arriving one is chased as it
+//! arrives, so an op may retire (and link again: two links are two cycles
+//! apart at least, so a root misses one link at most). Reads issued after
 //! the link's cycle see it.
 
 use rust_hdl::prelude::*;
@@ -144,11 +148,12 @@ impl Logic for FccSetWalks {
         self.more.next = self.p2_valid.q.val() & (self.word_parent.val() != self.p2_addr.q.val());
         self.w_done.next = self.p2_valid.q.val() & !self.more.val();
         self.l_valid.next = self.l1.q.val() | self.l2.q.val();
-        // Retire A once its walks are done and chased (a join's link waits
-        // for the write port).
+        // Retire A once its walks are done and its roots chased: not in the
+        // cycle after a link, when a root recorded before it may be the one
+        // linked (a join's link also waits for the write port).
         self.retire.next = self.opa.valid.val()
             & self.opa.done0.val()
-            & !self.l_valid.val()
+            & !self.l1.q.val()
             & (!self.opa.is_join.val() | (self.opa.done1.val() & !self.mk_valid.val()));
         self.linking.next = self.retire.val()
             & self.opa.is_join.val()
