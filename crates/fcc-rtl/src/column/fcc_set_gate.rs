@@ -1,4 +1,5 @@
-//! `FccSetGate`: the issue of `FccSetQueue`'s head. With an entry free in
+//! `FccSetGate`: the issue of `FccSetQueue`'s head op (the part of the
+//! head's entry `FccSetPick` chose). With an entry free in
 //! `FccSetOrder` (`space`), a make with a free slot or a column marker is
 //! taken at once (`direct`; a make, `slot_take`, goes to `FccLabelSets`'
 //! write port in that cycle, so an op naming its label may be taken in the

@@ -1,10 +1,14 @@
 //! `FccSetQueue`: the union-find's queue (docs/column-core.md, item 3).
-//! The slot table's ops come in pixel order, one a cycle at most (`in_*`,
-//! while `room`): a run's start (*make*: its label, its row and ring flag),
-//! a run's flush (*find*: a label of its cluster), a join of two labels'
-//! clusters, and a column marker (every op of the column is in). They wait
-//! in a FIFO in block RAM (`2^SET_QUEUE_BITS` ops; `room` is low with fewer
-//! than [`SET_QUEUE_ROOM`] free), go through `FccLabelSets` (a make with a
+//! The slot table's ops come in pixel order, a pixel slot's at once, one
+//! slot a cycle at most (`in_*`, while `room`): its run's flush (*find*: a
+//! label of its cluster), its run's start (*make*: its label, its row and
+//! ring flag), a join of two labels' clusters, and the column's marker
+//! (every op of the column is in), any of them, in that order (a slot's
+//! second join comes as a slot of its own). They wait in a FIFO in block
+//! RAM (`2^SET_QUEUE_BITS` slots' ops; `room` is low with fewer than
+//! [`SET_QUEUE_ROOM`] free), go out of it one op a cycle at most
+//! (`FccSetPick`: the part of the head's entry that goes next), through
+//! `FccLabelSets` (a make with a
 //! free slot, `slot_*`, from the slot pool) and come out in the same order
 //! with what they became (`ev_*`): a make's label and slot; a find's root
 //! and slot; a join's slot kept and slot gone, `merged` when they were two
@@ -22,6 +26,7 @@ use rust_hdl::prelude::*;
 use super::fcc_label_sets::{FccLabelSets, SLOT_BITS};
 use super::fcc_set_gate::FccSetGate;
 use super::fcc_set_order::FccSetOrder;
+use super::fcc_set_pick::FccSetPick;
 use super::fcc_set_took::FccSetTook;
 use crate::fcc_stream_fifo::FccStreamFifo;
 use crate::types::kb;
@@ -33,9 +38,28 @@ pub const SET_QUEUE_BITS: usize = 9;
 /// pixels in flight in front of the queue.
 pub const SET_QUEUE_ROOM: usize = 64;
 
-/// An op in the queue. A make: `a` its label, `col` and `row` its first
+/// A pixel slot's ops, an entry of the queue: a find of `f`; a make of
+/// `m` (its first pixel `col` and `row`, its ring flag `ring`); a join of
+/// `ja` and `jb`; the marker of column `col`. Each at the column of the
+/// pixel slot that caused it.
+#[derive(Clone, Copy, Debug, PartialEq, Default, LogicStruct)]
+pub struct SetQBundle {
+    pub find: Bit,
+    pub make: Bit,
+    pub join: Bit,
+    pub mark: Bit,
+    pub ring: Bit,
+    pub f: Bits<16>,
+    pub m: Bits<16>,
+    pub ja: Bits<16>,
+    pub jb: Bits<16>,
+    pub col: Bits<12>,
+    pub row: Bits<7>,
+}
+
+/// One op of an entry. A make: `a` its label, `col` and `row` its first
 /// pixel, `ring` its ring flag; a find: `a`; a join: `a` and `b`; a
-/// marker: `col`. Each at the column of the pixel slot that caused it.
+/// marker: `col`.
 #[derive(Clone, Copy, Debug, PartialEq, Default, LogicStruct)]
 pub struct SetQOp {
     pub make: Bit,
@@ -69,12 +93,15 @@ pub struct FccSetQueue {
     pub clk: Signal<In, Clock>,
     pub rst: Signal<In, Bit>,
     pub in_valid: Signal<In, Bit>,
+    pub in_find: Signal<In, Bit>,
     pub in_make: Signal<In, Bit>,
     pub in_join: Signal<In, Bit>,
     pub in_mark: Signal<In, Bit>,
     pub in_ring: Signal<In, Bit>,
-    pub in_a: Signal<In, Bits<16>>,
-    pub in_b: Signal<In, Bits<16>>,
+    pub in_f: Signal<In, Bits<16>>,
+    pub in_m: Signal<In, Bits<16>>,
+    pub in_ja: Signal<In, Bits<16>>,
+    pub in_jb: Signal<In, Bits<16>>,
     pub in_col: Signal<In, Bits<12>>,
     pub in_row: Signal<In, Bits<7>>,
     pub room: Signal<Out, Bit>,
@@ -95,9 +122,12 @@ pub struct FccSetQueue {
     pub ev_take: Signal<In, Bit>,
     /// Nothing pushed, queued, in the union-find or waiting to go out.
     pub idle: Signal<Out, Bit>,
-    op: Signal<Local, SetQOp>,
-    queue: FccStreamFifo<SetQOp, SET_QUEUE_BITS, { SET_QUEUE_BITS + 1 }>,
+    slot_in: Signal<Local, SetQBundle>,
+    queue: FccStreamFifo<SetQBundle, SET_QUEUE_BITS, { SET_QUEUE_BITS + 1 }>,
     sets: FccLabelSets,
+    pick: FccSetPick,
+    /// The part of the head's entry that goes next (`FccSetPick`).
+    part: DFF<Bits<2>>,
     gate: FccSetGate,
     taken: FccSetTook,
     order: FccSetOrder,
@@ -107,6 +137,7 @@ pub struct FccSetQueue {
     /// The level at which `room` goes low.
     high: Constant<Bits<{ SET_QUEUE_BITS + 1 }>>,
     zero: Constant<Bits<{ SET_QUEUE_BITS + 1 }>>,
+    zero2: Constant<Bits<2>>,
 }
 
 impl FccSetQueue {
@@ -115,12 +146,15 @@ impl FccSetQueue {
             clk: Default::default(),
             rst: Default::default(),
             in_valid: Default::default(),
+            in_find: Default::default(),
             in_make: Default::default(),
             in_join: Default::default(),
             in_mark: Default::default(),
             in_ring: Default::default(),
-            in_a: Default::default(),
-            in_b: Default::default(),
+            in_f: Default::default(),
+            in_m: Default::default(),
+            in_ja: Default::default(),
+            in_jb: Default::default(),
             in_col: Default::default(),
             in_row: Default::default(),
             room: Default::default(),
@@ -140,9 +174,11 @@ impl FccSetQueue {
             ev_row: Default::default(),
             ev_take: Default::default(),
             idle: Default::default(),
-            op: Default::default(),
+            slot_in: Default::default(),
             queue: Default::default(),
             sets: FccLabelSets::new(p),
+            pick: Default::default(),
+            part: Default::default(),
             gate: Default::default(),
             taken: Default::default(),
             order: Default::default(),
@@ -150,6 +186,7 @@ impl FccSetQueue {
             pushed: Default::default(),
             high: kb(((1 << SET_QUEUE_BITS) - SET_QUEUE_ROOM) as u64),
             zero: kb(0),
+            zero2: kb(0),
         }
     }
 }
@@ -157,42 +194,55 @@ impl FccSetQueue {
 impl Logic for FccSetQueue {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clk, room_q, pushed);
+        dff_setup!(self, clk, room_q, pushed, part);
         self.queue.clk.next = self.clk.val();
         self.sets.clk.next = self.clk.val();
         self.order.clk.next = self.clk.val();
         self.queue.rst.next = self.rst.val();
         self.sets.rst.next = self.rst.val();
         self.order.rst.next = self.rst.val();
-        self.op.next.make = self.in_make.val();
-        self.op.next.join = self.in_join.val();
-        self.op.next.mark = self.in_mark.val();
-        self.op.next.ring = self.in_ring.val();
-        self.op.next.a = self.in_a.val();
-        self.op.next.b = self.in_b.val();
-        self.op.next.col = self.in_col.val();
-        self.op.next.row = self.in_row.val();
+        self.slot_in.next.find = self.in_find.val();
+        self.slot_in.next.make = self.in_make.val();
+        self.slot_in.next.join = self.in_join.val();
+        self.slot_in.next.mark = self.in_mark.val();
+        self.slot_in.next.ring = self.in_ring.val();
+        self.slot_in.next.f = self.in_f.val();
+        self.slot_in.next.m = self.in_m.val();
+        self.slot_in.next.ja = self.in_ja.val();
+        self.slot_in.next.jb = self.in_jb.val();
+        self.slot_in.next.col = self.in_col.val();
+        self.slot_in.next.row = self.in_row.val();
         self.queue.push.next = self.in_valid.val();
-        self.queue.din.next = self.op.val();
+        self.queue.din.next = self.slot_in.val();
         self.room_q.d.next = self.queue.level.val() < self.high.val();
         self.room.next = self.room_q.q.val();
-        // The head through the gate into the union-find and the order.
+        // The head's next op through the gate into the union-find and the
+        // order; the entry leaves with its last op.
         self.taken.clk.next = self.clk.val();
         self.taken.rst.next = self.rst.val();
+        self.pick.bundle.next = self.queue.dout.val();
+        self.pick.part.next = self.part.q.val();
         self.gate.h_valid.next = self.queue.valid.val();
-        self.gate.h_op.next = self.queue.dout.val();
+        self.gate.h_op.next = self.pick.op.val();
         self.queue.take.next = self.taken.h_take.val();
+        self.taken.last.next = self.pick.last.val();
+        self.taken.after.next = self.pick.after.val();
+        self.taken.part.next = self.part.q.val();
+        self.part.d.next = self.taken.part_d.val();
+        if self.rst.val() {
+            self.part.d.next = self.zero2.val();
+        }
         self.gate.space.next = self.order.space.val();
         self.gate.slot_ok.next = self.slot_ok.val();
         self.gate.slot.next = self.slot.val();
         self.slot_take.next = self.gate.slot_take.val();
         self.sets.mk_valid.next = self.gate.slot_take.val();
-        self.sets.mk_label.next = self.queue.dout.val().a;
+        self.sets.mk_label.next = self.pick.op.val().a;
         self.sets.mk_slot.next = self.slot.val();
         self.sets.op_valid.next = self.gate.op_valid.val();
-        self.sets.op_join.next = self.queue.dout.val().join;
-        self.sets.op_a.next = self.queue.dout.val().a;
-        self.sets.op_b.next = self.queue.dout.val().b;
+        self.sets.op_join.next = self.pick.op.val().join;
+        self.sets.op_a.next = self.pick.op.val().a;
+        self.sets.op_b.next = self.pick.op.val().b;
         self.taken.direct.next = self.gate.direct.val();
         self.taken.op_take.next = self.sets.op_take.val();
         self.taken.tag.next = self.gate.tag.val();

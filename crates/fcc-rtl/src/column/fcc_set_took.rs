@@ -1,7 +1,9 @@
-//! `FccSetTook`: what `FccSetQueue`'s head became in the cycle it was
-//! taken (`h_take`: taken at once, `direct`, or by `FccLabelSets`,
-//! `op_take`), registered for `FccSetOrder`, which reserves its entry a
-//! cycle later (`took*`).
+//! `FccSetTook`: what the op of `FccSetQueue`'s head became in the cycle
+//! it was taken (at once, `direct`, or by `FccLabelSets`, `op_take`),
+//! registered for `FccSetOrder`, which reserves its entry a cycle later
+//! (`took*`); the head's entry leaves the FIFO with its last op
+//! (`h_take`), and the part that goes next (`part_d`, which the queue
+//! registers: `FccSetPick` must not read a block that reads `op_take`).
 
 use rust_hdl::prelude::*;
 
@@ -15,7 +17,14 @@ pub struct FccSetTook {
     pub op_take: Signal<In, Bit>,
     pub tag: Signal<In, SetQTag>,
     pub made: Signal<In, SetRes>,
+    /// The op is its entry's last; the part after it (the first of the
+    /// next entry after the last).
+    pub last: Signal<In, Bit>,
+    pub after: Signal<In, Bits<2>>,
+    /// The part in the head's entry now.
+    pub part: Signal<In, Bits<2>>,
     pub h_take: Signal<Out, Bit>,
+    pub part_d: Signal<Out, Bits<2>>,
     pub took: Signal<Out, Bit>,
     pub took_op: Signal<Out, Bit>,
     pub took_direct: Signal<Out, Bit>,
@@ -26,14 +35,20 @@ pub struct FccSetTook {
     direct_q: DFF<Bit>,
     tag_q: DFF<SetQTag>,
     made_q: DFF<SetRes>,
+    went: Signal<Local, Bit>,
 }
 
 impl Logic for FccSetTook {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clk, took_q, op_q, direct_q, tag_q, made_q);
-        self.h_take.next = self.direct.val() | self.op_take.val();
-        self.took_q.d.next = self.h_take.val();
+        self.went.next = self.direct.val() | self.op_take.val();
+        self.h_take.next = self.went.val() & self.last.val();
+        self.part_d.next = self.part.val();
+        if self.went.val() {
+            self.part_d.next = self.after.val();
+        }
+        self.took_q.d.next = self.went.val();
         self.op_q.d.next = self.op_take.val();
         self.direct_q.d.next = self.direct.val();
         self.tag_q.d.next = self.tag.val();
