@@ -37,6 +37,7 @@ c_struct! {
     /// Outputs during one cycle.
     pub struct SetsOut {
         pub op_take: u8,
+        pub mk_ready: u8,
         pub ev_valid: u8,
         pub ev_join: u8,
         pub ev_merged: u8,
@@ -162,7 +163,8 @@ impl Bench {
     }
 
     /// One cycle: a make (label, slot) if any; the queue's head offered.
-    fn step(&mut self, mk: Option<(u16, u16)>, rst: bool) {
+    /// Whether the make was taken.
+    fn step(&mut self, mk: Option<(u16, u16)>, rst: bool) -> bool {
         let head = self.queue.front().copied().filter(|_| !rst);
         let inp = SetsIn {
             rst: rst as u8,
@@ -179,7 +181,7 @@ impl Bench {
         if rst {
             self.queue.clear();
             self.expect.clear();
-            return;
+            return false;
         }
         if o.ev_valid != 0 {
             let (op, want) = self.expect.pop_front().unwrap_or_else(|| {
@@ -215,6 +217,18 @@ impl Bench {
             self.queue.pop_front();
             self.ops += 1;
         }
+        mk.is_some() && o.mk_ready != 0
+    }
+
+    /// Offer a make until it is taken (a few cycles at most: while a join
+    /// may retire).
+    fn make(&mut self, mk: (u16, u16)) {
+        for _ in 0..4 {
+            if self.step(Some(mk), false) {
+                return;
+            }
+        }
+        panic!("{}, cycle {}: make {mk:?} not taken", self.what, self.cycle);
     }
 
     fn push(&mut self, op: Op, ev: Ev) {
@@ -257,9 +271,11 @@ fn random_run(bits: u32, seed: u64, cycles: u64, reset_at: u64) -> (u64, u64, u6
     let mut m = Model::new(labels);
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let (mut p_make, mut p_op, mut p_join) = (0.3, 0.5, 0.5);
-    // Labels made in the cycle before (named from this cycle on).
+    // Labels made in the cycle before (named from this cycle on), and a
+    // make offered and not yet taken.
     let mut live: Vec<u16> = Vec::new();
     let mut fresh: Vec<u16> = Vec::new();
+    let mut pending: Option<(u16, u16)> = None;
     for t in 0..cycles {
         if t % 400 == 0 {
             (p_make, p_op, p_join) = match rng.gen_range(0..4) {
@@ -274,30 +290,31 @@ fn random_run(bits: u32, seed: u64, cycles: u64, reset_at: u64) -> (u64, u64, u6
             m = Model::new(labels);
             live.clear();
             fresh.clear();
+            pending = None;
             continue;
         }
         live.append(&mut fresh);
         // Close a cluster now and then, once its ops are done.
         if m.f.clusters.len() > labels / 2 || (rng.gen_bool(0.01) && !m.f.clusters.is_empty()) {
+            if let Some(mk) = pending.take() {
+                b.make(mk);
+                live.push(mk.0);
+            }
             b.drain(10_000);
             let c = rng.gen_range(0..m.f.clusters.len());
             for l in m.close(c) {
                 live.retain(|&x| x != l);
             }
         }
-        let mk = if rng.gen_bool(p_make) && !m.free_slots.is_empty() {
+        if pending.is_none() && rng.gen_bool(p_make) && !m.free_slots.is_empty() {
             let free: Vec<u16> = (1..=labels as u16)
                 .filter(|&l| !m.f.made[l as usize])
                 .collect();
-            (!free.is_empty()).then(|| {
+            if !free.is_empty() {
                 let l = free[rng.gen_range(0..free.len())];
-                let s = m.make(l);
-                fresh.push(l);
-                (l, s)
-            })
-        } else {
-            None
-        };
+                pending = Some((l, m.make(l)));
+            }
+        }
         if !live.is_empty() && rng.gen_bool(p_op) && b.queue.len() < 8 {
             let a = live[rng.gen_range(0..live.len())];
             let op = if rng.gen_bool(p_join) {
@@ -317,7 +334,12 @@ fn random_run(bits: u32, seed: u64, cycles: u64, reset_at: u64) -> (u64, u64, u6
             let ev = m.apply(op);
             b.push(op, ev);
         }
-        b.step(mk, false);
+        if b.step(pending, false) {
+            fresh.push(pending.take().expect("a make").0);
+        }
+    }
+    if let Some(mk) = pending {
+        b.make(mk);
     }
     b.drain(10_000);
     (b.ops, b.merged, b.cycle, m.f.walk_max)
@@ -357,10 +379,10 @@ fn deep_chains_and_finds_done_out_of_order_give_events_in_order() {
     let mut m = Model::new(p.max_label() as usize);
     let top = 64u16;
     let s = m.make(top);
-    b.step(Some((top, s)), false);
+    b.make((top, s));
     for l in (1..top).rev() {
         let s = m.make(l);
-        b.step(Some((l, s)), false);
+        b.make((l, s));
         let op = Op {
             join: true,
             a: top,
@@ -426,7 +448,7 @@ fn shallow_sets_take_a_find_in_three_cycles_and_a_join_in_two() {
         let mut made = Vec::new();
         for l in 1..=400u16 {
             let s = m.make(l);
-            b.step(Some((l, s)), false);
+            b.make((l, s));
             made.push(l);
         }
         for c in 0..40u16 {
@@ -443,7 +465,7 @@ fn shallow_sets_take_a_find_in_three_cycles_and_a_join_in_two() {
         b.drain(100_000);
         for l in 401..=800u16 {
             let s = m.make(l);
-            b.step(Some((l, s)), false);
+            b.make((l, s));
         }
         let start = b.cycle;
         let n = 400u16;

@@ -3,8 +3,10 @@
 //! (itself at a root) and, at a root, the record slot its cluster owns.
 //!
 //! * A *make* (`mk_*`: a run starts with a label and its cluster a slot)
-//!   writes the label's word as a root; it takes the write port at once,
-//!   and an op naming the label may follow from the next cycle.
+//!   writes the label's word as a root. It is taken with `mk_ready` (from
+//!   flip-flops: low while a join may retire and link, which needs the
+//!   write port), and an op naming the label may follow from the next
+//!   cycle.
 //! * An *op* (`op_*`, taken when `op_take`): a find (the root and slot of
 //!   `op_a`: a run's flush) or a join (`op_a` and `op_b`'s sets united,
 //!   the larger root linked under the smaller, which keeps its slot). Each
@@ -30,6 +32,7 @@ pub struct FccLabelSets {
     pub mk_valid: Signal<In, Bit>,
     pub mk_label: Signal<In, Bits<16>>,
     pub mk_slot: Signal<In, Bits<SLOT_BITS>>,
+    pub mk_ready: Signal<Out, Bit>,
     pub op_valid: Signal<In, Bit>,
     pub op_join: Signal<In, Bit>,
     pub op_a: Signal<In, Bits<16>>,
@@ -46,6 +49,8 @@ pub struct FccLabelSets {
     parent: FccRam<Bits<16>, 16>,
     slot: FccRam<Bits<SLOT_BITS>, 16>,
     walks: FccSetWalks,
+    /// A make taken this cycle.
+    mk_go: Signal<Local, Bit>,
 }
 
 impl FccLabelSets {
@@ -57,6 +62,7 @@ impl FccLabelSets {
             mk_valid: Default::default(),
             mk_label: Default::default(),
             mk_slot: Default::default(),
+            mk_ready: Default::default(),
             op_valid: Default::default(),
             op_join: Default::default(),
             op_a: Default::default(),
@@ -73,6 +79,7 @@ impl FccLabelSets {
             parent: FccRam::with_stored_bits(1 << b, b),
             slot: FccRam::new(1 << b),
             walks: Default::default(),
+            mk_go: Default::default(),
         }
     }
 }
@@ -88,7 +95,8 @@ impl Logic for FccLabelSets {
         self.walks.op_join.next = self.op_join.val();
         self.walks.op_a.next = self.op_a.val();
         self.walks.op_b.next = self.op_b.val();
-        self.walks.mk_valid.next = self.mk_valid.val();
+        self.mk_ready.next = self.walks.mk_ready.val();
+        self.mk_go.next = self.mk_valid.val() & self.walks.mk_ready.val();
         self.op_take.next = self.walks.op_take.val();
         // Reads: both tables at once.
         self.parent.read_en.next = self.walks.read_en.val();
@@ -97,15 +105,17 @@ impl Logic for FccLabelSets {
         self.slot.read_addr.next = self.walks.read_addr.val();
         self.walks.word_parent.next = self.parent.read_data.val();
         self.walks.word_slot.next = self.slot.read_data.val();
-        // Writes: a make, else a link (which waits for a cycle without).
-        self.parent.write_en.next = self.mk_valid.val() | self.walks.link_en.val();
-        self.parent.write_addr.next = self.walks.link_gone.val();
-        self.parent.write_data.next = self.walks.link_keep.val();
-        if self.mk_valid.val() {
-            self.parent.write_addr.next = self.mk_label.val();
-            self.parent.write_data.next = self.mk_label.val();
+        // Writes: a make, else a link (never both: a link comes only while
+        // `mk_ready` is low, which also chooses the address and word, from
+        // flip-flops).
+        self.parent.write_en.next = self.mk_go.val() | self.walks.link_en.val();
+        self.parent.write_addr.next = self.mk_label.val();
+        self.parent.write_data.next = self.mk_label.val();
+        if !self.walks.mk_ready.val() {
+            self.parent.write_addr.next = self.walks.link_gone.val();
+            self.parent.write_data.next = self.walks.link_keep.val();
         }
-        self.slot.write_en.next = self.mk_valid.val();
+        self.slot.write_en.next = self.mk_go.val();
         self.slot.write_addr.next = self.mk_label.val();
         self.slot.write_data.next = self.mk_slot.val();
         self.ev_valid.next = self.walks.ev_valid.val();

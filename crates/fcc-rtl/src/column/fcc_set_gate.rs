@@ -1,6 +1,7 @@
 //! `FccSetGate`: the issue of `FccSetQueue`'s head op (the part of the
 //! head's entry `FccSetPick` chose). With an entry free in
-//! `FccSetOrder` (`space`), a make with a free slot or a column marker is
+//! `FccSetOrder` (`space`), a make with a free slot (while `FccLabelSets`
+//! takes makes, `mk_ready`) or a column marker is
 //! taken at once (`direct`; a make, `slot_take`, goes to `FccLabelSets`'
 //! write port in that cycle, so an op naming its label may be taken in the
 //! next), a find or a join is offered to `FccLabelSets` (`op_valid`). What
@@ -24,6 +25,8 @@ pub struct FccSetGate {
     pub space: Signal<In, Bit>,
     pub slot_ok: Signal<In, Bit>,
     pub slot: Signal<In, Bits<SLOT_BITS>>,
+    /// `FccLabelSets` takes a make now.
+    pub mk_ready: Signal<In, Bit>,
     pub slot_take: Signal<Out, Bit>,
     pub direct: Signal<Out, Bit>,
     pub op_valid: Signal<Out, Bit>,
@@ -34,8 +37,11 @@ pub struct FccSetGate {
 impl Logic for FccSetGate {
     #[hdl_gen]
     fn update(&mut self) {
-        self.slot_take.next =
-            self.h_valid.val() & self.space.val() & self.h_op.val().make & self.slot_ok.val();
+        self.slot_take.next = self.h_valid.val()
+            & self.space.val()
+            & self.h_op.val().make
+            & self.slot_ok.val()
+            & self.mk_ready.val();
         self.direct.next =
             self.slot_take.val() | (self.h_valid.val() & self.space.val() & self.h_op.val().mark);
         self.op_valid.next =

@@ -1,6 +1,7 @@
 //! `FccSetOp`: one op in flight in `FccSetWalks` (docs/column-core.md,
-//! item 3): a find or a join, its sequence bit (its walks carry it), a
-//! join's second label and whether its read is still to issue, and per
+//! item 3): a find or a join, its sequence bit (its walks carry it), its
+//! labels and whether their first reads are still to issue (a join's
+//! second always; the first when the read port was busy), and per
 //! side whether its root is found, the root and its slot. Every output is
 //! a flip-flop.
 //!
@@ -23,11 +24,16 @@ pub struct FccSetOp {
     pub take: Signal<In, Bit>,
     pub take_seq: Signal<In, Bit>,
     pub take_join: Signal<In, Bit>,
+    pub take_la: Signal<In, Bits<16>>,
     pub take_lb: Signal<In, Bits<16>>,
+    /// Its first read is not issued in the cycle it is taken.
+    pub take_apend: Signal<In, Bit>,
     pub shift: Signal<In, Bit>,
     pub sh_valid: Signal<In, Bit>,
     pub sh_seq: Signal<In, Bit>,
     pub sh_join: Signal<In, Bit>,
+    pub sh_la: Signal<In, Bits<16>>,
+    pub sh_apend: Signal<In, Bit>,
     pub sh_lb: Signal<In, Bits<16>>,
     pub sh_bpend: Signal<In, Bit>,
     pub sh_done0: Signal<In, Bit>,
@@ -37,7 +43,8 @@ pub struct FccSetOp {
     pub sh_root1: Signal<In, Bits<16>>,
     pub sh_slot1: Signal<In, Bits<SLOT_BITS>>,
     pub clear: Signal<In, Bit>,
-    /// Its second read issued this cycle.
+    /// Its first (second) read issued this cycle.
+    pub a_sent: Signal<In, Bit>,
     pub b_sent: Signal<In, Bit>,
     pub w_done: Signal<In, Bit>,
     pub w_seq: Signal<In, Bit>,
@@ -51,6 +58,8 @@ pub struct FccSetOp {
     pub valid: Signal<Out, Bit>,
     pub seq: Signal<Out, Bit>,
     pub is_join: Signal<Out, Bit>,
+    pub la: Signal<Out, Bits<16>>,
+    pub apend: Signal<Out, Bit>,
     pub lb: Signal<Out, Bits<16>>,
     pub bpend: Signal<Out, Bit>,
     pub done0: Signal<Out, Bit>,
@@ -62,6 +71,8 @@ pub struct FccSetOp {
     v: DFF<Bit>,
     sq: DFF<Bit>,
     jn: DFF<Bit>,
+    a: DFF<Bits<16>>,
+    ap: DFF<Bit>,
     b: DFF<Bits<16>>,
     bp: DFF<Bit>,
     d0: DFF<Bit>,
@@ -80,7 +91,7 @@ pub struct FccSetOp {
 impl Logic for FccSetOp {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clk, v, sq, jn, b, bp, d0, r0, s0, d1, r1, s1);
+        dff_setup!(self, clk, v, sq, jn, a, ap, b, bp, d0, r0, s0, d1, r1, s1);
         self.rt.next = self.w_root.val();
         self.sl.next = self.w_slot.val();
         if self.l_valid.val() {
@@ -97,6 +108,9 @@ impl Logic for FccSetOp {
                 self.s1.d.next = self.l_keep_slot.val();
             }
         }
+        if self.a_sent.val() {
+            self.ap.d.next = false;
+        }
         if self.b_sent.val() {
             self.bp.d.next = false;
         }
@@ -108,6 +122,8 @@ impl Logic for FccSetOp {
             self.v.d.next = self.sh_valid.val();
             self.sq.d.next = self.sh_seq.val();
             self.jn.d.next = self.sh_join.val();
+            self.a.d.next = self.sh_la.val();
+            self.ap.d.next = self.sh_apend.val();
             self.b.d.next = self.sh_lb.val();
             self.bp.d.next = self.sh_bpend.val();
             self.d0.d.next = self.sh_done0.val();
@@ -134,6 +150,8 @@ impl Logic for FccSetOp {
             self.v.d.next = true;
             self.sq.d.next = self.take_seq.val();
             self.jn.d.next = self.take_join.val();
+            self.a.d.next = self.take_la.val();
+            self.ap.d.next = self.take_apend.val();
             self.b.d.next = self.take_lb.val();
             self.bp.d.next = self.take_join.val();
             self.d0.d.next = false;
@@ -145,6 +163,8 @@ impl Logic for FccSetOp {
         self.valid.next = self.v.q.val();
         self.seq.next = self.sq.q.val();
         self.is_join.next = self.jn.q.val();
+        self.la.next = self.a.q.val();
+        self.apend.next = self.ap.q.val();
         self.lb.next = self.b.q.val();
         self.bpend.next = self.bp.q.val();
         self.done0.next = self.d0.q.val();

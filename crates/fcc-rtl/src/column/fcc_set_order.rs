@@ -72,8 +72,11 @@ pub struct FccSetOrder {
     pw: DFF<Bits<3>>,
     pr: DFF<Bits<3>>,
     count: DFF<Bits<4>>,
+    /// `pend[pr]`, kept in a flip-flop (an event's write names its entry
+    /// without a lookup).
+    fill_at: DFF<Bits<3>>,
+    pr_next: Signal<Local, Bits<3>>,
     pop: Signal<Local, Bit>,
-    fill_at: Signal<Local, Bits<3>>,
     /// The oldest entry's op and result.
     out_op: Signal<Local, SetQTag>,
     out_res: Signal<Local, SetRes>,
@@ -117,8 +120,9 @@ impl Default for FccSetOrder {
             pw: Default::default(),
             pr: Default::default(),
             count: Default::default(),
-            pop: Default::default(),
             fill_at: Default::default(),
+            pr_next: Default::default(),
+            pop: Default::default(),
             out_op: Default::default(),
             out_res: Default::default(),
             got: Default::default(),
@@ -137,7 +141,7 @@ impl Default for FccSetOrder {
 impl Logic for FccSetOrder {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clk, wr, rd, pw, pr, count);
+        dff_setup!(self, clk, wr, rd, pw, pr, count, fill_at);
         for i in 0..(self._n) {
             self.ops[i].clock.next = self.clk.val();
             self.ops[i].d.next = self.ops[i].q.val();
@@ -158,16 +162,23 @@ impl Logic for FccSetOrder {
         self.got.next.label = self.s_keep.val();
         self.got.next.slot = self.s_keep_slot.val();
         self.got.next.other = self.s_gone_slot.val();
-        // The oldest entry waiting for an event, and the oldest out.
-        self.fill_at.next = self.pend[0].q.val();
+        // The oldest entry waiting for an event after this cycle, read at
+        // `pr` as it will be. An op's event comes two cycles after its
+        // `took_op` at the soonest (the union-find's read takes two), so the
+        // list's word written with `took_op` is read here before its event.
+        self.pr_next.next = self.pr.q.val();
+        if self.s_valid.val() {
+            self.pr_next.next = self.pr.q.val() + self.one3.val();
+        }
+        for i in 0..(self._n) {
+            if self.pr_next.val() == self.idx[i].val() {
+                self.fill_at.d.next = self.pend[i].q.val();
+            }
+        }
+        // The oldest out.
         self.ev_valid.next = false;
         self.out_op.next = self.ops[0].q.val();
         self.out_res.next = self.res[0].q.val();
-        for i in 0..(self._n) {
-            if self.pr.q.val() == self.idx[i].val() {
-                self.fill_at.next = self.pend[i].q.val();
-            }
-        }
         for i in 0..(self._n) {
             if self.rd.q.val() == self.idx[i].val() {
                 self.ev_valid.next = self.done[i].q.val();
@@ -197,7 +208,7 @@ impl Logic for FccSetOrder {
             if self.took_op.val() & (self.pw.q.val() == self.idx[i].val()) {
                 self.pend[i].d.next = self.wr.q.val();
             }
-            if self.s_valid.val() & (self.fill_at.val() == self.idx[i].val()) {
+            if self.s_valid.val() & (self.fill_at.q.val() == self.idx[i].val()) {
                 self.res[i].d.next = self.got.val();
                 self.done[i].d.next = true;
             }

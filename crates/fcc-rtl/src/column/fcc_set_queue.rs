@@ -235,6 +235,7 @@ impl Logic for FccSetQueue {
         self.gate.space.next = self.order.space.val();
         self.gate.slot_ok.next = self.slot_ok.val();
         self.gate.slot.next = self.slot.val();
+        self.gate.mk_ready.next = self.sets.mk_ready.val();
         self.slot_take.next = self.gate.slot_take.val();
         self.sets.mk_valid.next = self.gate.slot_take.val();
         self.sets.mk_label.next = self.pick.op.val().a;

@@ -8,13 +8,15 @@
 //! Ops are taken in order, two in flight (`FccSetOp`: A the older, B the
 //! younger, known by a sequence bit their walks carry): a find (`op_join`
 //! low: the root of `op_a`) or a join (the roots of `op_a` and `op_b`,
-//! then the larger root linked under the smaller). A new op starts with a
-//! free read port, by reading its first word; a join's second read goes
-//! at the next free cycle. Ops retire in order, one a cycle, each with one
+//! then the larger root linked under the smaller). A new op is taken
+//! while A or B is free, whatever the read port does, so that `op_take`
+//! reads no word (it ends the queue's longest path); its reads go at the
+//! free cycles of the port, older ops' first (its first read in the cycle
+//! it is taken when the port is free). Ops retire in order, one a cycle, each with one
 //! event (`ev_*`, registered): a find's root and its slot; a join's two
 //! roots and slots, `ev_merged` when they differed and the link was
-//! written (when no make takes the write port; makes come first). B
-//! becomes A when A retires.
+//! written (a make waits for the write port while a join may retire:
+//! `mk_ready`). B becomes A when A retires.
 //!
 //! A walk that read the linked word before the link was written (B's, or
 //! one started in the link's cycle) found a root that no longer is one: for
@@ -40,8 +42,9 @@ pub struct FccSetWalks {
     pub op_a: Signal<In, Bits<16>>,
     pub op_b: Signal<In, Bits<16>>,
     pub op_take: Signal<Out, Bit>,
-    /// A make is written this cycle (the write port is taken).
-    pub mk_valid: Signal<In, Bit>,
+    /// A make may take the write port this cycle: no join of A can retire
+    /// (and link) in it. From flip-flops only.
+    pub mk_ready: Signal<Out, Bit>,
     // The read port: the word read two cycles ago shows now.
     pub read_en: Signal<Out, Bit>,
     pub read_addr: Signal<Out, Bits<16>>,
@@ -91,6 +94,11 @@ pub struct FccSetWalks {
     linking: Signal<Local, Bit>,
     /// A join whose root 1 is the smaller; the roots kept and gone.
     swap: Signal<Local, Bit>,
+    /// Root 1 is the smaller, and the roots a link writes (a join's
+    /// only: without the find's case, the write's word is a level sooner).
+    lt: Signal<Local, Bit>,
+    w_keep: Signal<Local, Bits<16>>,
+    w_gone: Signal<Local, Bits<16>>,
     keep: Signal<Local, Bits<16>>,
     keep_slot: Signal<Local, Bits<SLOT_BITS>>,
     gone: Signal<Local, Bits<16>>,
@@ -108,6 +116,8 @@ pub struct FccSetWalks {
     issue_seq: Signal<Local, Bit>,
     issue_side: Signal<Local, Bit>,
     issue_addr: Signal<Local, Bits<16>>,
+    /// The op taken now has its first read issued now.
+    new_sent: Signal<Local, Bit>,
     rd_valid: Signal<Local, Bit>,
     rd_addr: Signal<Local, Bits<16>>,
 }
@@ -150,15 +160,28 @@ impl Logic for FccSetWalks {
         self.l_valid.next = self.l1.q.val() | self.l2.q.val();
         // Retire A once its walks are done and its roots chased: not in the
         // cycle after a link, when a root recorded before it may be the one
-        // linked (a join's link also waits for the write port).
+        // linked. A join that may retire keeps the write port from makes
+        // (whether it links or not: `mk_ready` reads no root).
         self.retire.next = self.opa.valid.val()
             & self.opa.done0.val()
             & !self.l1.q.val()
-            & (!self.opa.is_join.val() | (self.opa.done1.val() & !self.mk_valid.val()));
+            & (!self.opa.is_join.val() | self.opa.done1.val());
+        self.mk_ready.next = !(self.opa.valid.val()
+            & self.opa.done0.val()
+            & !self.l1.q.val()
+            & self.opa.is_join.val()
+            & self.opa.done1.val());
         self.linking.next = self.retire.val()
             & self.opa.is_join.val()
             & (self.opa.root0.val() != self.opa.root1.val());
-        self.swap.next = self.opa.is_join.val() & (self.opa.root1.val() < self.opa.root0.val());
+        self.lt.next = self.opa.root1.val() < self.opa.root0.val();
+        self.swap.next = self.opa.is_join.val() & self.lt.val();
+        self.w_keep.next = self.opa.root0.val();
+        self.w_gone.next = self.opa.root1.val();
+        if self.lt.val() {
+            self.w_keep.next = self.opa.root1.val();
+            self.w_gone.next = self.opa.root0.val();
+        }
         self.keep.next = self.opa.root0.val();
         self.keep_slot.next = self.opa.slot0.val();
         self.gone.next = self.opa.root1.val();
@@ -171,35 +194,53 @@ impl Logic for FccSetWalks {
         }
         self.a_free.next = !self.opa.valid.val() | (self.retire.val() & !self.opb.valid.val());
         self.b_free.next = !self.opb.valid.val() | self.retire.val();
-        // The read this cycle: a join's second, else a new op's first.
+        // An op is taken with A or B free, whatever the read port does
+        // (`op_take` reads no word); its first read goes now if the port
+        // is free and no read of the ops before it is still to issue.
+        self.take_a.next = self.op_valid.val() & self.a_free.val();
+        self.take_b.next = self.op_valid.val() & !self.a_free.val() & self.b_free.val();
+        self.op_take.next = self.take_a.val() | self.take_b.val();
+        // The read this cycle: A's reads still to issue, first side
+        // first, then B's, then the new op's first.
         self.issue.next = false;
         self.issue_seq.next = self.opa.seq.val();
-        self.issue_side.next = true;
-        self.issue_addr.next = self.opa.lb.val();
-        self.take_a.next = false;
-        self.take_b.next = false;
+        self.issue_side.next = false;
+        self.issue_addr.next = self.opa.la.val();
+        self.new_sent.next = false;
+        self.opa.a_sent.next = false;
+        self.opb.a_sent.next = false;
         self.opa.b_sent.next = false;
         self.opb.b_sent.next = false;
         if !self.more.val() {
-            if self.opa.valid.val() & self.opa.bpend.val() {
+            if self.opa.valid.val() & self.opa.apend.val() {
                 self.issue.next = true;
+                self.opa.a_sent.next = true;
+            } else if self.opa.valid.val() & self.opa.bpend.val() {
+                self.issue.next = true;
+                self.issue_side.next = true;
+                self.issue_addr.next = self.opa.lb.val();
                 self.opa.b_sent.next = true;
+            } else if self.opb.valid.val() & self.opb.apend.val() {
+                self.issue.next = true;
+                self.issue_seq.next = self.opb.seq.val();
+                self.issue_addr.next = self.opb.la.val();
+                self.opb.a_sent.next = true;
             } else if self.opb.valid.val() & self.opb.bpend.val() {
                 self.issue.next = true;
                 self.issue_seq.next = self.opb.seq.val();
+                self.issue_side.next = true;
                 self.issue_addr.next = self.opb.lb.val();
                 self.opb.b_sent.next = true;
             } else if self.op_valid.val() {
-                self.take_a.next = self.a_free.val();
-                self.take_b.next = !self.a_free.val() & self.b_free.val();
+                // The address does not wait for `op_take`: an op not taken
+                // reads a word no token follows.
+                self.issue.next = self.op_take.val();
+                self.issue_seq.next = self.seq.q.val();
+                self.issue_addr.next = self.op_a.val();
+                self.new_sent.next = self.op_take.val();
             }
         }
-        self.op_take.next = self.take_a.val() | self.take_b.val();
         if self.op_take.val() {
-            self.issue.next = true;
-            self.issue_seq.next = self.seq.q.val();
-            self.issue_side.next = false;
-            self.issue_addr.next = self.op_a.val();
             self.seq.d.next = !self.seq.q.val();
         }
         // This cycle's read: the walk going on, else what was issued.
@@ -219,7 +260,9 @@ impl Logic for FccSetWalks {
         }
         self.p1_valid.d.next = self.rd_valid.val();
         self.p1_addr.d.next = self.rd_addr.val();
-        self.read_en.next = self.rd_valid.val();
+        // The port reads every cycle (the enable would wait for
+        // `op_take`); a word shows with a token only when `p2_valid`.
+        self.read_en.next = true;
         self.read_addr.next = self.rd_addr.val();
         // The ops: a new one taken, roots found and chased, B becoming A.
         self.opa.take.next = self.take_a.val();
@@ -228,6 +271,10 @@ impl Logic for FccSetWalks {
         self.opb.take_seq.next = self.seq.q.val();
         self.opa.take_join.next = self.op_join.val();
         self.opb.take_join.next = self.op_join.val();
+        self.opa.take_la.next = self.op_a.val();
+        self.opb.take_la.next = self.op_a.val();
+        self.opa.take_apend.next = !self.new_sent.val();
+        self.opb.take_apend.next = !self.new_sent.val();
         self.opa.take_lb.next = self.op_b.val();
         self.opb.take_lb.next = self.op_b.val();
         self.opa.shift.next = self.retire.val() & self.opb.valid.val();
@@ -237,6 +284,8 @@ impl Logic for FccSetWalks {
         self.opa.sh_valid.next = self.opb.valid.val();
         self.opa.sh_seq.next = self.opb.seq.val();
         self.opa.sh_join.next = self.opb.is_join.val();
+        self.opa.sh_la.next = self.opb.la.val();
+        self.opa.sh_apend.next = self.opb.apend.val() & !self.opb.a_sent.val();
         self.opa.sh_lb.next = self.opb.lb.val();
         self.opa.sh_bpend.next = self.opb.bpend.val() & !self.opb.b_sent.val();
         self.opa.sh_done0.next = self.opb.done0.val();
@@ -248,6 +297,8 @@ impl Logic for FccSetWalks {
         self.opb.sh_valid.next = false;
         self.opb.sh_seq.next = false;
         self.opb.sh_join.next = false;
+        self.opb.sh_la.next = self.opb.la.val();
+        self.opb.sh_apend.next = false;
         self.opb.sh_lb.next = self.opb.lb.val();
         self.opb.sh_bpend.next = false;
         self.opb.sh_done0.next = false;
@@ -283,8 +334,8 @@ impl Logic for FccSetWalks {
         self.evg.d.next = self.gone.val();
         self.evgs.d.next = self.gone_slot.val();
         self.link_en.next = self.linking.val();
-        self.link_gone.next = self.gone.val();
-        self.link_keep.next = self.keep.val();
+        self.link_gone.next = self.w_gone.val();
+        self.link_keep.next = self.w_keep.val();
         self.l1.d.next = self.linking.val();
         self.l2.d.next = self.l1.q.val();
         if self.linking.val() {
