@@ -73,6 +73,18 @@ enum Kind {
     Mark,
 }
 
+impl Kind {
+    /// Its part of a queue entry, in the entry's order (`FccSetPick`).
+    fn part(self) -> usize {
+        match self {
+            Kind::Find => 0,
+            Kind::Make => 1,
+            Kind::Join => 2,
+            Kind::Mark => 3,
+        }
+    }
+}
+
 /// An op pushed.
 #[derive(Debug, Clone, Copy)]
 struct Op {
@@ -128,7 +140,7 @@ impl Slot {
         ]
         .iter()
         .rposition(|&p| p);
-        last.is_none_or(|l| (op.kind as usize) > l)
+        last.is_none_or(|l| op.kind.part() > l)
     }
 
     /// Its ops, in order.
@@ -831,6 +843,12 @@ fn capture(name: &str) -> (FccParams, fcc_golden::Frame) {
 /// wait for the queue's input.
 const ENTERING: usize = 8;
 
+/// Run accumulators that can wait for their flush's find (from the pixel
+/// that ends the run until the find comes out with the slot), as the top
+/// will keep them (docs/column-core.md, "On a captured frame"): pixels
+/// stop entering while those waiting and [`ENTERING`] more would not fit.
+const FLUSH_WAIT: usize = 256;
+
 /// Cycles pixels would be held by the queue's input alone (one entry a
 /// cycle, [`ENTERING`] waiting at most), with room always.
 fn input_held(trace: &Trace) -> u64 {
@@ -847,19 +865,19 @@ fn input_held(trace: &Trace) -> u64 {
 }
 
 /// A captured frame's ops through the queue, a pixel slot entering a
-/// cycle while `room` is high and fewer than [`ENTERING`] entries wait to
-/// go in (a slot's ops in one entry): each op out must be the model's (so the trace is the golden
-/// clusters'), and the counts say what the slot table's queue absorbs:
-/// the cycles a slot took, the most ops waiting, the most flushes waiting
-/// for their slot (their accumulators wait meanwhile), the cycles `room`
-/// was low.
+/// cycle while `room` is high, fewer than [`ENTERING`] entries wait to go
+/// in (a slot's ops in one entry) and the flushes' accumulators fit in
+/// [`FLUSH_WAIT`]: each op out must be the model's (so the trace is the
+/// golden clusters'), and the counts say what the slot table's queue
+/// absorbs: the cycles a slot took, the most ops waiting, the most flushes
+/// waiting for their slot, the cycles `room` was low.
 #[test]
 fn a_captured_frames_ops_go_through_at_a_slot_a_cycle() {
     // The cycles a slot took as built (docs/column-core.md, item 3: the
     // target is 1.05): a ceiling each, so that a change that slows the
     // queue fails here.
     for (name, ceiling) in [
-        ("OS-2-128-U1_v2.3.0_1024x10", 1.08),
+        ("OS-2-128-U1_v2.3.0_1024x10", 1.055),
         ("OS-0-128-U1_v2.3.0_1024x10", 1.01),
     ] {
         captured_frame(name, ceiling);
@@ -877,12 +895,18 @@ fn captured_frame(name: &str, ceiling: f64) {
     let mut next = 0usize;
     let (mut peak_ops, mut peak_flushes, mut closed) = (0usize, 0usize, 0usize);
     let mut marks_out = 0usize;
-    let (mut held_room, mut held_ops) = (0u64, 0u64);
+    let (mut held_room, mut held_ops, mut held_flushes) = (0u64, 0u64, 0u64);
     loop {
         // A pixel slot enters, unless the queue has no room or its ops
         // still wait to go in.
+        // Accumulators waiting for their flush's find: those of the ops
+        // waiting to go in and of the finds not yet out.
+        let flushes = b.pending.iter().filter(|o| o.kind == Kind::Find).count()
+            + backlog.iter().filter(|s| s.find.is_some()).count();
         if !b.room && next < trace.slots.len() {
             held_room += 1;
+        } else if flushes + ENTERING > FLUSH_WAIT && next < trace.slots.len() {
+            held_flushes += 1;
         } else if backlog.len() >= ENTERING && next < trace.slots.len() {
             held_ops += 1;
         } else if next < trace.slots.len() {
@@ -897,7 +921,7 @@ fn captured_frame(name: &str, ceiling: f64) {
         let out_before = b.out[Kind::Mark as usize];
         b.step_slot(slot, true, true, false);
         peak_ops = peak_ops.max(b.pending.len());
-        peak_flushes = peak_flushes.max(b.pending.iter().filter(|o| o.kind == Kind::Find).count());
+        peak_flushes = peak_flushes.max(flushes);
         // A column's marker out: every op of the column is out, so the
         // clusters the golden stream closed at it close (slots and labels
         // free).
@@ -922,7 +946,7 @@ fn captured_frame(name: &str, ceiling: f64) {
     }
     let cycles = b.cycle - start;
     eprintln!(
-        "{name} (K = 7, bridge 16, ring 16): {slots} slots in {cycles} cycles ({:.3} a slot; pixels held {held_room} cycles for room, {held_ops} for ops entering, {} of them by the input's one op a cycle alone); out {} makes, {} finds, {} joins ({} merged), {} markers; {closed} clusters closed; at most {peak_ops} ops waiting, {peak_flushes} of them flushes; room low {} cycles, makes waiting for a slot {} cycles",
+        "{name} (K = 7, bridge 16, ring 16): {slots} slots in {cycles} cycles ({:.3} a slot; pixels held {held_room} cycles for room, {held_flushes} for the flushes' wait, {held_ops} for ops entering, {} of them by the input's one op a cycle alone); out {} makes, {} finds, {} joins ({} merged), {} markers; {closed} clusters closed; at most {peak_ops} ops waiting, {peak_flushes} flushes; room low {} cycles, makes waiting for a slot {} cycles",
         cycles as f64 / slots as f64,
         input_held(&trace),
         b.out[0], b.out[1], b.out[2], b.merged, b.out[3], b.room_low, b.slot_waits
@@ -933,6 +957,10 @@ fn captured_frame(name: &str, ceiling: f64) {
         "{name}: a marker per column and the frame end's"
     );
     assert_eq!(b.out[0], b.out[1], "{name}: a flush per run made");
+    assert!(
+        peak_flushes <= FLUSH_WAIT,
+        "{name}: {peak_flushes} flushes waiting, more than {FLUSH_WAIT}"
+    );
     let per = cycles as f64 / slots as f64;
     assert!(
         per <= ceiling,
