@@ -434,15 +434,16 @@ fn deep_chains_and_finds_done_out_of_order_give_events_in_order() {
 /// 400 labels made alone, then 400 ops offered all at once: finds of
 /// the clusters' labels (one or two words), joins of a label made alone
 /// to a cluster's root (one word each), or both mixed. Cycles an op,
-/// exact: two ops overlap (two words a find, so about two cycles and a
-/// half each); a join, one word a side, retires two cycles after the join
-/// before it (its link, then the cycle in which nothing retires).
+/// exact: four ops overlap, so a find takes about two cycles, a word a
+/// cycle through the read port (2.60 with two ops in flight); a join, one
+/// word a side, retires two cycles after the join before it (its link,
+/// then the cycle in which nothing retires).
 #[test]
-fn shallow_sets_take_a_find_in_three_cycles_and_a_join_in_two() {
+fn shallow_sets_take_a_find_or_a_join_in_two_cycles() {
     let p = params(13);
     let model = load_plain::<SetsIn, SetsOut>(BenchBlock::LabelSets, &p).expect("label sets model");
     let mut rng = ChaCha8Rng::seed_from_u64(0x5e75_0004);
-    for (join_share, per) in [(0.0, 2.6), (1.0, 2.02), (0.5, 2.45)] {
+    for (join_share, per) in [(0.0, 1.98), (1.0, 2.02), (0.5, 2.0)] {
         let mut b = Bench::new(&model, format!("join share {join_share}"));
         let mut m = Model::new(p.max_label() as usize);
         let mut made = Vec::new();

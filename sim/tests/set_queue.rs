@@ -625,7 +625,7 @@ fn a_burst_goes_at_the_union_finds_rate() {
     let mut alone = 401u16;
     let mut fresh = 801u16;
     for (what, make, mark, join, per) in [
-        ("finds", 0.0, 0.0, 0.0, 3.0),
+        ("finds", 0.0, 0.0, 0.0, 2.05),
         ("joins", 0.0, 0.0, 1.0, 2.1),
         ("makes and markers", 0.5, 1.0, 0.0, 1.1),
     ] {
@@ -847,7 +847,7 @@ const ENTERING: usize = 8;
 /// that ends the run until the find comes out with the slot), as the top
 /// will keep them (docs/column-core.md, "On a captured frame"): pixels
 /// stop entering while those waiting and [`ENTERING`] more would not fit.
-const FLUSH_WAIT: usize = 256;
+const FLUSH_WAIT: usize = 128;
 
 /// Cycles pixels would be held by the queue's input alone (one entry a
 /// cycle, [`ENTERING`] waiting at most), with room always.
@@ -877,7 +877,7 @@ fn a_captured_frames_ops_go_through_at_a_slot_a_cycle() {
     // target is 1.05): a ceiling each, so that a change that slows the
     // queue fails here.
     for (name, ceiling) in [
-        ("OS-2-128-U1_v2.3.0_1024x10", 1.055),
+        ("OS-2-128-U1_v2.3.0_1024x10", 1.02),
         ("OS-0-128-U1_v2.3.0_1024x10", 1.01),
     ] {
         captured_frame(name, ceiling);

@@ -1,13 +1,11 @@
 //! `FccSetOp`: one op in flight in `FccSetWalks` (docs/column-core.md,
-//! item 3): a find or a join, its sequence bit (its walks carry it), its
-//! labels and whether their first reads are still to issue (a join's
-//! second always; the first when the read port was busy), and per
-//! side whether its root is found, the root and its slot. Every output is
-//! a flip-flop.
+//! item 3): a find or a join, and per side whether its root is found, the
+//! root and its slot. Every output is a flip-flop. Its sequence number
+//! (its walks carry it) is its place's, kept by `FccSetWalks`.
 //!
-//! * `take` loads a new op; `shift` the other op's state (with a root it
+//! * `take` loads a new op; `shift` the next place's op (with a root it
 //!   finds in this cycle); `clear` empties it (`take` wins).
-//! * A root arriving for it (`w_*`, by sequence bit and side) is recorded;
+//! * A root arriving for it (`w_*`, by sequence number and side) is recorded;
 //!   while a link made in the last two cycles is given (`l_*`), a root
 //!   equal to the linked one, arriving or recorded, becomes the root kept:
 //!   a walk that read the linked word before the link was written found a
@@ -17,25 +15,23 @@ use rust_hdl::prelude::*;
 
 use super::fcc_label_sets::SLOT_BITS;
 
+/// Bits of an op's sequence number, which its walks carry: unique among
+/// the ops in flight (`SET_OPS` at most `2^SEQ_BITS`).
+pub const SEQ_BITS: usize = 2;
+
 #[derive(LogicBlock, Default)]
 pub struct FccSetOp {
     pub clk: Signal<In, Clock>,
     pub rst: Signal<In, Bit>,
     pub take: Signal<In, Bit>,
-    pub take_seq: Signal<In, Bit>,
+    /// Its place's sequence number, and the next place's (`FccSetWalks`
+    /// keeps them).
+    pub seq: Signal<In, Bits<SEQ_BITS>>,
     pub take_join: Signal<In, Bit>,
-    pub take_la: Signal<In, Bits<16>>,
-    pub take_lb: Signal<In, Bits<16>>,
-    /// Its first read is not issued in the cycle it is taken.
-    pub take_apend: Signal<In, Bit>,
     pub shift: Signal<In, Bit>,
     pub sh_valid: Signal<In, Bit>,
-    pub sh_seq: Signal<In, Bit>,
+    pub sh_seq: Signal<In, Bits<SEQ_BITS>>,
     pub sh_join: Signal<In, Bit>,
-    pub sh_la: Signal<In, Bits<16>>,
-    pub sh_apend: Signal<In, Bit>,
-    pub sh_lb: Signal<In, Bits<16>>,
-    pub sh_bpend: Signal<In, Bit>,
     pub sh_done0: Signal<In, Bit>,
     pub sh_root0: Signal<In, Bits<16>>,
     pub sh_slot0: Signal<In, Bits<SLOT_BITS>>,
@@ -43,11 +39,8 @@ pub struct FccSetOp {
     pub sh_root1: Signal<In, Bits<16>>,
     pub sh_slot1: Signal<In, Bits<SLOT_BITS>>,
     pub clear: Signal<In, Bit>,
-    /// Its first (second) read issued this cycle.
-    pub a_sent: Signal<In, Bit>,
-    pub b_sent: Signal<In, Bit>,
     pub w_done: Signal<In, Bit>,
-    pub w_seq: Signal<In, Bit>,
+    pub w_seq: Signal<In, Bits<SEQ_BITS>>,
     pub w_side: Signal<In, Bit>,
     pub w_root: Signal<In, Bits<16>>,
     pub w_slot: Signal<In, Bits<SLOT_BITS>>,
@@ -56,12 +49,7 @@ pub struct FccSetOp {
     pub l_keep: Signal<In, Bits<16>>,
     pub l_keep_slot: Signal<In, Bits<SLOT_BITS>>,
     pub valid: Signal<Out, Bit>,
-    pub seq: Signal<Out, Bit>,
     pub is_join: Signal<Out, Bit>,
-    pub la: Signal<Out, Bits<16>>,
-    pub apend: Signal<Out, Bit>,
-    pub lb: Signal<Out, Bits<16>>,
-    pub bpend: Signal<Out, Bit>,
     pub done0: Signal<Out, Bit>,
     pub root0: Signal<Out, Bits<16>>,
     pub slot0: Signal<Out, Bits<SLOT_BITS>>,
@@ -69,12 +57,7 @@ pub struct FccSetOp {
     pub root1: Signal<Out, Bits<16>>,
     pub slot1: Signal<Out, Bits<SLOT_BITS>>,
     v: DFF<Bit>,
-    sq: DFF<Bit>,
     jn: DFF<Bit>,
-    a: DFF<Bits<16>>,
-    ap: DFF<Bit>,
-    b: DFF<Bits<16>>,
-    bp: DFF<Bit>,
     d0: DFF<Bit>,
     r0: DFF<Bits<16>>,
     s0: DFF<Bits<SLOT_BITS>>,
@@ -91,7 +74,7 @@ pub struct FccSetOp {
 impl Logic for FccSetOp {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clk, v, sq, jn, a, ap, b, bp, d0, r0, s0, d1, r1, s1);
+        dff_setup!(self, clk, v, jn, d0, r0, s0, d1, r1, s1);
         self.rt.next = self.w_root.val();
         self.sl.next = self.w_slot.val();
         if self.l_valid.val() {
@@ -108,24 +91,13 @@ impl Logic for FccSetOp {
                 self.s1.d.next = self.l_keep_slot.val();
             }
         }
-        if self.a_sent.val() {
-            self.ap.d.next = false;
-        }
-        if self.b_sent.val() {
-            self.bp.d.next = false;
-        }
-        self.mine.next = self.w_done.val() & self.v.q.val() & (self.w_seq.val() == self.sq.q.val());
+        self.mine.next = self.w_done.val() & self.v.q.val() & (self.w_seq.val() == self.seq.val());
         if self.clear.val() {
             self.v.d.next = false;
         }
         if self.shift.val() {
             self.v.d.next = self.sh_valid.val();
-            self.sq.d.next = self.sh_seq.val();
             self.jn.d.next = self.sh_join.val();
-            self.a.d.next = self.sh_la.val();
-            self.ap.d.next = self.sh_apend.val();
-            self.b.d.next = self.sh_lb.val();
-            self.bp.d.next = self.sh_bpend.val();
             self.d0.d.next = self.sh_done0.val();
             self.r0.d.next = self.sh_root0.val();
             self.s0.d.next = self.sh_slot0.val();
@@ -148,12 +120,7 @@ impl Logic for FccSetOp {
         }
         if self.take.val() {
             self.v.d.next = true;
-            self.sq.d.next = self.take_seq.val();
             self.jn.d.next = self.take_join.val();
-            self.a.d.next = self.take_la.val();
-            self.ap.d.next = self.take_apend.val();
-            self.b.d.next = self.take_lb.val();
-            self.bp.d.next = self.take_join.val();
             self.d0.d.next = false;
             self.d1.d.next = false;
         }
@@ -161,12 +128,7 @@ impl Logic for FccSetOp {
             self.v.d.next = false;
         }
         self.valid.next = self.v.q.val();
-        self.seq.next = self.sq.q.val();
         self.is_join.next = self.jn.q.val();
-        self.la.next = self.a.q.val();
-        self.apend.next = self.ap.q.val();
-        self.lb.next = self.b.q.val();
-        self.bpend.next = self.bp.q.val();
         self.done0.next = self.d0.q.val();
         self.root0.next = self.r0.q.val();
         self.slot0.next = self.s0.q.val();

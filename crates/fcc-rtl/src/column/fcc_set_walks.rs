@@ -5,35 +5,41 @@
 //! root reads the parent at once, in the cycle its word shows, so up to
 //! two walks share the port, one a cycle each.
 //!
-//! Ops are taken in order, two in flight (`FccSetOp`: A the older, B the
-//! younger, known by a sequence bit their walks carry): a find (`op_join`
-//! low: the root of `op_a`) or a join (the roots of `op_a` and `op_b`,
-//! then the larger root linked under the smaller). A new op is taken
-//! while A or B is free, whatever the read port does, so that `op_take`
-//! reads no word (it ends the queue's longest path); its reads go at the
-//! free cycles of the port, older ops' first (its first read in the cycle
-//! it is taken when the port is free). Ops retire in order, one a cycle, each with one
-//! event (`ev_*`, registered): a find's root and its slot; a join's two
-//! roots and slots, `ev_merged` when they differed and the link was
-//! written (a make waits for the write port while a join may retire:
-//! `mk_ready`). B becomes A when A retires.
+//! Ops are taken in order, up to [`SET_OPS`] in flight (`FccSetOp`s, the
+//! oldest first, each known by a sequence number its walks carry): a find
+//! (`op_join` low: the root of `op_a`) or a join (the roots of `op_a` and
+//! `op_b`, then the larger root linked under the smaller). A new op is
+//! taken while a place is free, whatever the read port does, so that
+//! `op_take` reads no word (it ends the queue's longest path); the reads
+//! go at the free cycles of the port, the oldest op's first (a new op's
+//! first read in the cycle it is taken when none waits and the port is
+//! free). Ops retire in order, the oldest, one a cycle, each with one event
+//! (`ev_*`, registered): a find's root and its slot; a join's two roots
+//! and slots, `ev_merged` when they differed and the link was written (a
+//! make waits for the write port while a join may retire: `mk_ready`).
+//! The others move up when the oldest retires.
 //!
-//! A walk that read the linked word before the link was written (B's, or
-//! one started in the link's cycle) found a root that no longer is one: for
-//! two cycles after a link its root, recorded or arriving, is chased to the
-//! root kept (`FccSetOp`). No op retires in the first of them, when a root
-//! recorded before the link may still be the linked one; by the second,
-//! every recorded root is chased and every arriving one is chased as it
-//! arrives, so an op may retire (and link again: two links are two cycles
-//! apart at least, so a root misses one link at most). Reads issued after
-//! the link's cycle see it.
+//! A walk that read the linked word before the link was written (another
+//! op's, or one started in the link's cycle) found a root that no longer
+//! is one: for two cycles after a link its root, recorded or arriving, is
+//! chased to the root kept (`FccSetOp`). No op retires in the first of
+//! them, when a root recorded before the link may still be the linked one;
+//! by the second, every recorded root is chased and every arriving one is
+//! chased as it arrives, so an op may retire (and link again: two links
+//! are two cycles apart at least, so a root misses one link at most).
+//! Reads issued after the link's cycle see it.
 
 use rust_hdl::prelude::*;
 
 use super::fcc_label_sets::SLOT_BITS;
-use super::fcc_set_op::FccSetOp;
+use super::fcc_set_op::{FccSetOp, SEQ_BITS};
+use super::fcc_set_reads::FccSetReads;
+use crate::types::{kb, vec_of};
 
-#[derive(LogicBlock, Default)]
+/// Ops in flight at most.
+pub const SET_OPS: usize = 3;
+
+#[derive(LogicBlock)]
 pub struct FccSetWalks {
     pub clk: Signal<In, Clock>,
     pub rst: Signal<In, Bit>,
@@ -63,19 +69,24 @@ pub struct FccSetWalks {
     pub ev_gone_slot: Signal<Out, Bits<SLOT_BITS>>,
     /// No op in progress, no event to come.
     pub idle: Signal<Out, Bit>,
-    opa: FccSetOp,
-    opb: FccSetOp,
+    /// The ops in flight, the oldest in place 0; the places in use come
+    /// first.
+    ops: Vec<FccSetOp>,
+    /// The reads still to issue, oldest first.
+    reads: FccSetReads,
     // Tokens issued one (`p1`) and two (`p2`) cycles ago.
     p1_valid: DFF<Bit>,
-    p1_seq: DFF<Bit>,
+    p1_seq: DFF<Bits<SEQ_BITS>>,
     p1_side: DFF<Bit>,
     p1_addr: DFF<Bits<16>>,
     p2_valid: DFF<Bit>,
-    p2_seq: DFF<Bit>,
+    p2_seq: DFF<Bits<SEQ_BITS>>,
     p2_side: DFF<Bit>,
     p2_addr: DFF<Bits<16>>,
-    /// The next op's sequence bit.
-    seq: DFF<Bit>,
+    /// The next op's sequence number, and each place's op's (they move
+    /// with the ops).
+    seq: DFF<Bits<SEQ_BITS>>,
+    seqs: Vec<DFF<Bits<SEQ_BITS>>>,
     /// The last link, for the two cycles after it (`l1`, `l2`).
     l1: DFF<Bit>,
     l2: DFF<Bit>,
@@ -94,32 +105,112 @@ pub struct FccSetWalks {
     linking: Signal<Local, Bit>,
     /// A join whose root 1 is the smaller; the roots kept and gone.
     swap: Signal<Local, Bit>,
+    keep: Signal<Local, Bits<16>>,
+    keep_slot: Signal<Local, Bits<SLOT_BITS>>,
+    gone: Signal<Local, Bits<16>>,
+    gone_slot: Signal<Local, Bits<SLOT_BITS>>,
     /// Root 1 is the smaller, and the roots a link writes (a join's
     /// only: without the find's case, the write's word is a level sooner).
     lt: Signal<Local, Bit>,
     w_keep: Signal<Local, Bits<16>>,
     w_gone: Signal<Local, Bits<16>>,
-    keep: Signal<Local, Bits<16>>,
-    keep_slot: Signal<Local, Bits<SLOT_BITS>>,
-    gone: Signal<Local, Bits<16>>,
-    gone_slot: Signal<Local, Bits<SLOT_BITS>>,
-    /// A and B free after this cycle's retire.
-    a_free: Signal<Local, Bit>,
-    b_free: Signal<Local, Bit>,
-    take_a: Signal<Local, Bit>,
-    take_b: Signal<Local, Bit>,
+    /// Per place: free after this cycle's retire; the new op goes there.
+    free: Vec<Signal<Local, Bit>>,
+    take: Vec<Signal<Local, Bit>>,
     /// `p2`'s word is not its root: the walk reads on; else a walk is done
     /// (`w_done`) and the port is free for a new read (`issue`).
     more: Signal<Local, Bit>,
     w_done: Signal<Local, Bit>,
     issue: Signal<Local, Bit>,
-    issue_seq: Signal<Local, Bit>,
+    issue_seq: Signal<Local, Bits<SEQ_BITS>>,
     issue_side: Signal<Local, Bit>,
     issue_addr: Signal<Local, Bits<16>>,
-    /// The op taken now has its first read issued now.
-    new_sent: Signal<Local, Bit>,
     rd_valid: Signal<Local, Bit>,
     rd_addr: Signal<Local, Bits<16>>,
+    busy: Signal<Local, Bit>,
+    _n: usize,
+    one_seq: Constant<Bits<SEQ_BITS>>,
+    zero_seq: Constant<Bits<SEQ_BITS>>,
+}
+
+impl Default for FccSetWalks {
+    fn default() -> Self {
+        assert!(SET_OPS >= 2 && SET_OPS <= 1 << SEQ_BITS);
+        Self {
+            clk: Default::default(),
+            rst: Default::default(),
+            op_valid: Default::default(),
+            op_join: Default::default(),
+            op_a: Default::default(),
+            op_b: Default::default(),
+            op_take: Default::default(),
+            mk_ready: Default::default(),
+            read_en: Default::default(),
+            read_addr: Default::default(),
+            word_parent: Default::default(),
+            word_slot: Default::default(),
+            link_en: Default::default(),
+            link_gone: Default::default(),
+            link_keep: Default::default(),
+            ev_valid: Default::default(),
+            ev_join: Default::default(),
+            ev_merged: Default::default(),
+            ev_keep: Default::default(),
+            ev_keep_slot: Default::default(),
+            ev_gone: Default::default(),
+            ev_gone_slot: Default::default(),
+            idle: Default::default(),
+            ops: vec_of(SET_OPS),
+            reads: Default::default(),
+            p1_valid: Default::default(),
+            p1_seq: Default::default(),
+            p1_side: Default::default(),
+            p1_addr: Default::default(),
+            p2_valid: Default::default(),
+            p2_seq: Default::default(),
+            p2_side: Default::default(),
+            p2_addr: Default::default(),
+            seq: Default::default(),
+            seqs: vec_of(SET_OPS),
+            l1: Default::default(),
+            l2: Default::default(),
+            l_gone: Default::default(),
+            l_keep: Default::default(),
+            l_keep_slot: Default::default(),
+            evv: Default::default(),
+            evj: Default::default(),
+            evm: Default::default(),
+            evk: Default::default(),
+            evks: Default::default(),
+            evg: Default::default(),
+            evgs: Default::default(),
+            l_valid: Default::default(),
+            retire: Default::default(),
+            linking: Default::default(),
+            swap: Default::default(),
+            keep: Default::default(),
+            keep_slot: Default::default(),
+            gone: Default::default(),
+            gone_slot: Default::default(),
+            lt: Default::default(),
+            w_keep: Default::default(),
+            w_gone: Default::default(),
+            free: vec_of(SET_OPS),
+            take: vec_of(SET_OPS),
+            more: Default::default(),
+            w_done: Default::default(),
+            issue: Default::default(),
+            issue_seq: Default::default(),
+            issue_side: Default::default(),
+            issue_addr: Default::default(),
+            rd_valid: Default::default(),
+            rd_addr: Default::default(),
+            busy: Default::default(),
+            _n: SET_OPS,
+            one_seq: kb(1),
+            zero_seq: kb(0),
+        }
+    }
 }
 
 impl Logic for FccSetWalks {
@@ -150,98 +241,90 @@ impl Logic for FccSetWalks {
             evg,
             evgs
         );
-        self.opa.clk.next = self.clk.val();
-        self.opb.clk.next = self.clk.val();
-        self.opa.rst.next = self.rst.val();
-        self.opb.rst.next = self.rst.val();
+        for i in 0..(self._n) {
+            self.ops[i].clk.next = self.clk.val();
+            self.ops[i].rst.next = self.rst.val();
+            self.seqs[i].clock.next = self.clk.val();
+            self.seqs[i].d.next = self.seqs[i].q.val();
+        }
         // The word that shows: a root ends its walk.
         self.more.next = self.p2_valid.q.val() & (self.word_parent.val() != self.p2_addr.q.val());
         self.w_done.next = self.p2_valid.q.val() & !self.more.val();
         self.l_valid.next = self.l1.q.val() | self.l2.q.val();
-        // Retire A once its walks are done and its roots chased: not in the
-        // cycle after a link, when a root recorded before it may be the one
-        // linked. A join that may retire keeps the write port from makes
-        // (whether it links or not: `mk_ready` reads no root).
-        self.retire.next = self.opa.valid.val()
-            & self.opa.done0.val()
+        // Retire the oldest once its walks are done and its roots chased:
+        // not in the cycle after a link, when a root recorded before it may
+        // be the one linked. A join that may retire keeps the write port
+        // from makes (whether it links or not: `mk_ready` reads no root).
+        self.retire.next = self.ops[0].valid.val()
+            & self.ops[0].done0.val()
             & !self.l1.q.val()
-            & (!self.opa.is_join.val() | self.opa.done1.val());
-        self.mk_ready.next = !(self.opa.valid.val()
-            & self.opa.done0.val()
+            & (!self.ops[0].is_join.val() | self.ops[0].done1.val());
+        self.mk_ready.next = !(self.ops[0].valid.val()
+            & self.ops[0].done0.val()
             & !self.l1.q.val()
-            & self.opa.is_join.val()
-            & self.opa.done1.val());
+            & self.ops[0].is_join.val()
+            & self.ops[0].done1.val());
         self.linking.next = self.retire.val()
-            & self.opa.is_join.val()
-            & (self.opa.root0.val() != self.opa.root1.val());
-        self.lt.next = self.opa.root1.val() < self.opa.root0.val();
-        self.swap.next = self.opa.is_join.val() & self.lt.val();
-        self.w_keep.next = self.opa.root0.val();
-        self.w_gone.next = self.opa.root1.val();
+            & self.ops[0].is_join.val()
+            & (self.ops[0].root0.val() != self.ops[0].root1.val());
+        self.lt.next = self.ops[0].root1.val() < self.ops[0].root0.val();
+        self.swap.next = self.ops[0].is_join.val() & self.lt.val();
+        self.w_keep.next = self.ops[0].root0.val();
+        self.w_gone.next = self.ops[0].root1.val();
         if self.lt.val() {
-            self.w_keep.next = self.opa.root1.val();
-            self.w_gone.next = self.opa.root0.val();
+            self.w_keep.next = self.ops[0].root1.val();
+            self.w_gone.next = self.ops[0].root0.val();
         }
-        self.keep.next = self.opa.root0.val();
-        self.keep_slot.next = self.opa.slot0.val();
-        self.gone.next = self.opa.root1.val();
-        self.gone_slot.next = self.opa.slot1.val();
+        self.keep.next = self.ops[0].root0.val();
+        self.keep_slot.next = self.ops[0].slot0.val();
+        self.gone.next = self.ops[0].root1.val();
+        self.gone_slot.next = self.ops[0].slot1.val();
         if self.swap.val() {
-            self.keep.next = self.opa.root1.val();
-            self.keep_slot.next = self.opa.slot1.val();
-            self.gone.next = self.opa.root0.val();
-            self.gone_slot.next = self.opa.slot0.val();
+            self.keep.next = self.ops[0].root1.val();
+            self.keep_slot.next = self.ops[0].slot1.val();
+            self.gone.next = self.ops[0].root0.val();
+            self.gone_slot.next = self.ops[0].slot0.val();
         }
-        self.a_free.next = !self.opa.valid.val() | (self.retire.val() & !self.opb.valid.val());
-        self.b_free.next = !self.opb.valid.val() | self.retire.val();
-        // An op is taken with A or B free, whatever the read port does
-        // (`op_take` reads no word); its first read goes now if the port
-        // is free and no read of the ops before it is still to issue.
-        self.take_a.next = self.op_valid.val() & self.a_free.val();
-        self.take_b.next = self.op_valid.val() & !self.a_free.val() & self.b_free.val();
-        self.op_take.next = self.take_a.val() | self.take_b.val();
-        // The read this cycle: A's reads still to issue, first side
-        // first, then B's, then the new op's first.
-        self.issue.next = false;
-        self.issue_seq.next = self.opa.seq.val();
-        self.issue_side.next = false;
-        self.issue_addr.next = self.opa.la.val();
-        self.new_sent.next = false;
-        self.opa.a_sent.next = false;
-        self.opb.a_sent.next = false;
-        self.opa.b_sent.next = false;
-        self.opb.b_sent.next = false;
-        if !self.more.val() {
-            if self.opa.valid.val() & self.opa.apend.val() {
-                self.issue.next = true;
-                self.opa.a_sent.next = true;
-            } else if self.opa.valid.val() & self.opa.bpend.val() {
-                self.issue.next = true;
-                self.issue_side.next = true;
-                self.issue_addr.next = self.opa.lb.val();
-                self.opa.b_sent.next = true;
-            } else if self.opb.valid.val() & self.opb.apend.val() {
-                self.issue.next = true;
-                self.issue_seq.next = self.opb.seq.val();
-                self.issue_addr.next = self.opb.la.val();
-                self.opb.a_sent.next = true;
-            } else if self.opb.valid.val() & self.opb.bpend.val() {
-                self.issue.next = true;
-                self.issue_seq.next = self.opb.seq.val();
-                self.issue_side.next = true;
-                self.issue_addr.next = self.opb.lb.val();
-                self.opb.b_sent.next = true;
-            } else if self.op_valid.val() {
-                // The address does not wait for `op_take`: an op not taken
-                // reads a word no token follows.
-                self.issue.next = self.op_take.val();
-                self.issue_seq.next = self.seq.q.val();
-                self.issue_addr.next = self.op_a.val();
-                self.new_sent.next = self.op_take.val();
-            }
+        // Places free after this cycle's retire (the ones in use come
+        // first); a new op goes to the first, with one free, whatever the
+        // read port does (`op_take` reads no word).
+        for i in 0..(self._n - 1) {
+            self.free[i].next =
+                !self.ops[i].valid.val() | (self.retire.val() & !self.ops[i + 1].valid.val());
+        }
+        for i in (self._n - 1)..(self._n) {
+            self.free[i].next = !self.ops[i].valid.val() | self.retire.val();
+        }
+        self.take[0].next = self.op_valid.val() & self.free[0].val();
+        for i in 1..(self._n) {
+            self.take[i].next = self.op_valid.val() & self.free[i].val() & !self.free[i - 1].val();
+        }
+        for i in (self._n - 1)..(self._n) {
+            self.op_take.next = self.op_valid.val() & self.free[i].val();
+        }
+        // The read this cycle: the oldest still to issue (`FccSetReads`'
+        // head, from flip-flops), else the new op's first. The address
+        // does not wait for `op_take`: an op not taken reads a word no
+        // token follows.
+        self.reads.clk.next = self.clk.val();
+        self.reads.rst.next = self.rst.val();
+        self.reads.busy.next = self.more.val();
+        self.reads.take.next = self.op_take.val();
+        self.reads.is_join.next = self.op_join.val();
+        self.reads.seq.next = self.seq.q.val();
+        self.reads.a.next = self.op_a.val();
+        self.reads.b.next = self.op_b.val();
+        self.issue.next = !self.more.val() & (self.reads.valid.val() | self.op_take.val());
+        self.issue_seq.next = self.reads.head.val().seq;
+        self.issue_side.next = self.reads.head.val().side;
+        self.issue_addr.next = self.reads.head.val().addr;
+        if !self.reads.valid.val() {
+            self.issue_seq.next = self.seq.q.val();
+            self.issue_side.next = false;
+            self.issue_addr.next = self.op_a.val();
         }
         if self.op_take.val() {
-            self.seq.d.next = !self.seq.q.val();
+            self.seq.d.next = self.seq.q.val() + self.one_seq.val();
         }
         // This cycle's read: the walk going on, else what was issued.
         self.p2_valid.d.next = self.p1_valid.q.val();
@@ -264,70 +347,58 @@ impl Logic for FccSetWalks {
         // `op_take`); a word shows with a token only when `p2_valid`.
         self.read_en.next = true;
         self.read_addr.next = self.rd_addr.val();
-        // The ops: a new one taken, roots found and chased, B becoming A.
-        self.opa.take.next = self.take_a.val();
-        self.opb.take.next = self.take_b.val();
-        self.opa.take_seq.next = self.seq.q.val();
-        self.opb.take_seq.next = self.seq.q.val();
-        self.opa.take_join.next = self.op_join.val();
-        self.opb.take_join.next = self.op_join.val();
-        self.opa.take_la.next = self.op_a.val();
-        self.opb.take_la.next = self.op_a.val();
-        self.opa.take_apend.next = !self.new_sent.val();
-        self.opb.take_apend.next = !self.new_sent.val();
-        self.opa.take_lb.next = self.op_b.val();
-        self.opb.take_lb.next = self.op_b.val();
-        self.opa.shift.next = self.retire.val() & self.opb.valid.val();
-        self.opa.clear.next = self.retire.val();
-        self.opb.shift.next = false;
-        self.opb.clear.next = self.retire.val();
-        self.opa.sh_valid.next = self.opb.valid.val();
-        self.opa.sh_seq.next = self.opb.seq.val();
-        self.opa.sh_join.next = self.opb.is_join.val();
-        self.opa.sh_la.next = self.opb.la.val();
-        self.opa.sh_apend.next = self.opb.apend.val() & !self.opb.a_sent.val();
-        self.opa.sh_lb.next = self.opb.lb.val();
-        self.opa.sh_bpend.next = self.opb.bpend.val() & !self.opb.b_sent.val();
-        self.opa.sh_done0.next = self.opb.done0.val();
-        self.opa.sh_root0.next = self.opb.root0.val();
-        self.opa.sh_slot0.next = self.opb.slot0.val();
-        self.opa.sh_done1.next = self.opb.done1.val();
-        self.opa.sh_root1.next = self.opb.root1.val();
-        self.opa.sh_slot1.next = self.opb.slot1.val();
-        self.opb.sh_valid.next = false;
-        self.opb.sh_seq.next = false;
-        self.opb.sh_join.next = false;
-        self.opb.sh_la.next = self.opb.la.val();
-        self.opb.sh_apend.next = false;
-        self.opb.sh_lb.next = self.opb.lb.val();
-        self.opb.sh_bpend.next = false;
-        self.opb.sh_done0.next = false;
-        self.opb.sh_root0.next = self.opb.root0.val();
-        self.opb.sh_slot0.next = self.opb.slot0.val();
-        self.opb.sh_done1.next = false;
-        self.opb.sh_root1.next = self.opb.root1.val();
-        self.opb.sh_slot1.next = self.opb.slot1.val();
-        self.opa.w_done.next = self.w_done.val();
-        self.opb.w_done.next = self.w_done.val();
-        self.opa.w_seq.next = self.p2_seq.q.val();
-        self.opb.w_seq.next = self.p2_seq.q.val();
-        self.opa.w_side.next = self.p2_side.q.val();
-        self.opb.w_side.next = self.p2_side.q.val();
-        self.opa.w_root.next = self.p2_addr.q.val();
-        self.opb.w_root.next = self.p2_addr.q.val();
-        self.opa.w_slot.next = self.word_slot.val();
-        self.opb.w_slot.next = self.word_slot.val();
-        self.opa.l_valid.next = self.l_valid.val();
-        self.opb.l_valid.next = self.l_valid.val();
-        self.opa.l_gone.next = self.l_gone.q.val();
-        self.opb.l_gone.next = self.l_gone.q.val();
-        self.opa.l_keep.next = self.l_keep.q.val();
-        self.opb.l_keep.next = self.l_keep.q.val();
-        self.opa.l_keep_slot.next = self.l_keep_slot.q.val();
-        self.opb.l_keep_slot.next = self.l_keep_slot.q.val();
+        // The ops: a new one taken, roots found and chased, the others
+        // moving up as the oldest retires.
+        for i in 0..(self._n) {
+            self.ops[i].take.next = self.take[i].val();
+            self.ops[i].seq.next = self.seqs[i].q.val();
+            self.ops[i].take_join.next = self.op_join.val();
+            self.ops[i].shift.next = self.retire.val();
+            self.ops[i].clear.next = self.retire.val();
+            self.ops[i].w_done.next = self.w_done.val();
+            self.ops[i].w_seq.next = self.p2_seq.q.val();
+            self.ops[i].w_side.next = self.p2_side.q.val();
+            self.ops[i].w_root.next = self.p2_addr.q.val();
+            self.ops[i].w_slot.next = self.word_slot.val();
+            self.ops[i].l_valid.next = self.l_valid.val();
+            self.ops[i].l_gone.next = self.l_gone.q.val();
+            self.ops[i].l_keep.next = self.l_keep.q.val();
+            self.ops[i].l_keep_slot.next = self.l_keep_slot.q.val();
+        }
+        for i in 0..(self._n - 1) {
+            self.ops[i].sh_valid.next = self.ops[i + 1].valid.val();
+            self.ops[i].sh_seq.next = self.seqs[i + 1].q.val();
+            if self.retire.val() {
+                self.seqs[i].d.next = self.seqs[i + 1].q.val();
+            }
+            self.ops[i].sh_join.next = self.ops[i + 1].is_join.val();
+            self.ops[i].sh_done0.next = self.ops[i + 1].done0.val();
+            self.ops[i].sh_root0.next = self.ops[i + 1].root0.val();
+            self.ops[i].sh_slot0.next = self.ops[i + 1].slot0.val();
+            self.ops[i].sh_done1.next = self.ops[i + 1].done1.val();
+            self.ops[i].sh_root1.next = self.ops[i + 1].root1.val();
+            self.ops[i].sh_slot1.next = self.ops[i + 1].slot1.val();
+        }
+        for i in (self._n - 1)..(self._n) {
+            self.ops[i].sh_valid.next = false;
+            self.ops[i].sh_seq.next = self.zero_seq.val();
+            self.ops[i].sh_join.next = false;
+            self.ops[i].sh_done0.next = false;
+            self.ops[i].sh_root0.next = self.ops[i].root0.val();
+            self.ops[i].sh_slot0.next = self.ops[i].slot0.val();
+            self.ops[i].sh_done1.next = false;
+            self.ops[i].sh_root1.next = self.ops[i].root1.val();
+            self.ops[i].sh_slot1.next = self.ops[i].slot1.val();
+        }
+        // A new op's sequence number goes with it (after the move up).
+        for i in 0..(self._n) {
+            if self.take[i].val() {
+                self.seqs[i].d.next = self.seq.q.val();
+            }
+        }
         // Retire: the event, the link, kept for the chase.
         self.evv.d.next = self.retire.val();
-        self.evj.d.next = self.opa.is_join.val();
+        self.evj.d.next = self.ops[0].is_join.val();
         self.evm.d.next = self.linking.val();
         self.evk.d.next = self.keep.val();
         self.evks.d.next = self.keep_slot.val();
@@ -350,14 +421,20 @@ impl Logic for FccSetWalks {
         self.ev_keep_slot.next = self.evks.q.val();
         self.ev_gone.next = self.evg.q.val();
         self.ev_gone_slot.next = self.evgs.q.val();
-        self.idle.next = !self.opa.valid.val() & !self.opb.valid.val() & !self.evv.q.val();
+        self.busy.next = self.evv.q.val();
+        for i in 0..(self._n) {
+            if self.ops[i].valid.val() {
+                self.busy.next = true;
+            }
+        }
+        self.idle.next = !self.busy.val();
         if self.rst.val() {
             self.p1_valid.d.next = false;
             self.p2_valid.d.next = false;
             self.l1.d.next = false;
             self.l2.d.next = false;
             self.evv.d.next = false;
-            self.seq.d.next = false;
+            self.seq.d.next = self.zero_seq.val();
         }
     }
 }

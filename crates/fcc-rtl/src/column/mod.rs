@@ -75,6 +75,7 @@ pub mod fcc_set_op;
 pub mod fcc_set_order;
 pub mod fcc_set_pick;
 pub mod fcc_set_queue;
+pub mod fcc_set_reads;
 pub mod fcc_set_took;
 pub mod fcc_set_walks;
 pub mod fcc_slot_check;
