@@ -36,8 +36,9 @@ use super::fcc_set_op::{FccSetOp, SEQ_BITS};
 use super::fcc_set_reads::FccSetReads;
 use crate::types::{kb, vec_of};
 
-/// Ops in flight at most.
+/// Ops in flight at most (their sequence numbers must stay distinct).
 pub const SET_OPS: usize = 3;
+const _: () = assert!(SET_OPS >= 2 && SET_OPS <= 1 << SEQ_BITS);
 
 #[derive(LogicBlock)]
 pub struct FccSetWalks {
@@ -135,7 +136,6 @@ pub struct FccSetWalks {
 
 impl Default for FccSetWalks {
     fn default() -> Self {
-        assert!(SET_OPS >= 2 && SET_OPS <= 1 << SEQ_BITS);
         Self {
             clk: Default::default(),
             rst: Default::default(),
