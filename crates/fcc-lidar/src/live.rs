@@ -337,6 +337,11 @@ fn recv_counting(socket: &UdpSocket, buf: &mut [u8]) -> std::io::Result<(usize, 
     Ok((n as usize, drops))
 }
 
+#[cfg(not(target_os = "linux"))]
+fn recv_counting(socket: &UdpSocket, buf: &mut [u8]) -> std::io::Result<(usize, Option<u32>)> {
+    socket.recv(buf).map(|n| (n, None))
+}
+
 impl Reading {
     /// Start the receiving thread of [`Receive::Thread`] on `socket`.
     fn thread(socket: UdpSocket) -> Result<Reading> {
@@ -345,7 +350,6 @@ impl Reading {
         let kernel = Arc::new(AtomicU64::new(0));
         let quit = Arc::new(AtomicBool::new(false));
         let (d, kd, q) = (dropped.clone(), kernel.clone(), quit.clone());
-        count_kernel_drops(&socket);
         let thread = std::thread::Builder::new()
             .name("fcc-udp".into())
             .spawn(move || {
@@ -433,11 +437,6 @@ impl Reading {
     }
 }
 
-#[cfg(not(target_os = "linux"))]
-fn recv_counting(socket: &UdpSocket, buf: &mut [u8]) -> std::io::Result<(usize, Option<u32>)> {
-    socket.recv(buf).map(|n| (n, None))
-}
-
 /// How the socket is read ([`Receive`]).
 enum Reading {
     Thread {
@@ -498,18 +497,16 @@ impl LiveSource {
         let socket = UdpSocket::bind(addr).map_err(io)?;
         socket.set_read_timeout(Some(POLL)).map_err(io)?;
         grow_receive_buffer(&socket);
+        count_kernel_drops(&socket);
         let local = socket.local_addr().map_err(io)?;
         let reading = match opts.receive {
             Receive::Thread => Reading::thread(socket)?,
-            Receive::Inline => {
-                count_kernel_drops(&socket);
-                Reading::Inline {
-                    socket,
-                    buf: vec![0u8; MAX_DATAGRAM],
-                    timeout: POLL,
-                    dropped: 0,
-                }
-            }
+            Receive::Inline => Reading::Inline {
+                socket,
+                buf: vec![0u8; MAX_DATAGRAM],
+                timeout: POLL,
+                dropped: 0,
+            },
         };
         Ok(LiveSource {
             decoder,
