@@ -15,7 +15,10 @@
 //! * the clusters: a union-find over the labels, fed only by the joins,
 //!   makes each cluster the golden stream closes one set, holding no label
 //!   of another cluster;
-//! * no label named is ever missing from its row (`miss`).
+//! * no label named is ever missing from its row (`miss`);
+//! * a pixel whose row stops holding a run names, for its flush, a label
+//!   of that run's cluster (by the same union-find), nine times in ten
+//!   at least the model's representative of the run.
 //!
 //! Seeded random frames (fixed and range-adaptive thresholds, bridge and
 //! ring-reach limits, the smallest frame the block takes at the build's K),
@@ -48,6 +51,7 @@ c_struct! {
         pub ring: u8,
         pub ring_a: u16,
         pub ring_b: u16,
+        pub hold_drop: u16,
         pub hits: u64,
         pub lw0: u64,
         pub lw1: u64,
@@ -76,6 +80,8 @@ c_struct! {
         pub o_row: u8,
         pub o_col: u16,
         pub o_label: u16,
+        pub o_hold_drop: u16,
+        pub o_hold_rep: u16,
         pub j_valid: u8,
         pub j_a: u16,
         pub j_b: u16,
@@ -122,6 +128,10 @@ struct Fed {
     px: Pix,
     label: u16,
     joins: Vec<(u16, u16)>,
+    /// The run its row stops holding (its label, 0 for none) and its
+    /// representative in the model before the pixel.
+    drop: u16,
+    drop_rep: u16,
 }
 
 struct Bench {
@@ -138,6 +148,11 @@ struct Bench {
     uf: Uf,
     joins: u64,
     stalls: u64,
+    /// Flushes out; of them, named by the model's representative, and by
+    /// a representative other than the run's label.
+    flushes: u64,
+    flush_exact: u64,
+    flush_rep: u64,
     /// Cycles the input has been held in a row.
     held: u32,
     seed: u64,
@@ -162,6 +177,9 @@ impl Bench {
             uf: Uf::default(),
             joins: 0,
             stalls: 0,
+            flushes: 0,
+            flush_exact: 0,
+            flush_rep: 0,
             held: 0,
             seed,
             what: what.to_string(),
@@ -199,6 +217,11 @@ impl Bench {
             i.lw0, i.lw1, i.lw2, i.lw3, i.lw4, i.lw5, i.lw6, i.lw7, i.lw8, i.lw9, i.lw10, i.lw11,
             i.lw12, i.lw13,
         ] = words;
+        let (drop, drop_rep) = match px.hold {
+            Some((was, _)) if was != 0 => (self.label_of[&was], self.rep[&was]),
+            _ => (0, 0),
+        };
+        i.hold_drop = drop;
         let mut joins = Vec::new();
         if px.run != 0 {
             let mut named = vec![px.run];
@@ -225,6 +248,8 @@ impl Bench {
             px: px.clone(),
             label: i.label,
             joins,
+            drop,
+            drop_rep,
         };
         (i, fed)
     }
@@ -284,6 +309,24 @@ impl Bench {
         let mut got = std::mem::take(&mut self.got);
         got.sort_unstable();
         assert_eq!(got, f.joins, "{at}: the joins before the pixel");
+        // The flush names a label of the dropped run's cluster: its
+        // representative as the window had it at A2 (the model's, or one
+        // the pixels after A2 have rewritten since).
+        assert_eq!(o.o_hold_drop, f.drop, "{at}: the run its row stops holding");
+        if f.drop != 0 {
+            assert!(
+                o.o_hold_rep != 0 && self.uf.find(o.o_hold_rep) == self.uf.find(f.drop),
+                "{at}: the flush of label {} names {}, not of its cluster (the model's representative {})",
+                f.drop,
+                o.o_hold_rep,
+                f.drop_rep
+            );
+            self.flushes += 1;
+            self.flush_exact += u64::from(o.o_hold_rep == f.drop_rep);
+            self.flush_rep += u64::from(o.o_hold_rep != f.drop);
+        } else {
+            assert_eq!(o.o_hold_rep, 0, "{at}: a flush with no run dropped");
+        }
     }
 
     /// A reset: the block and the bench forget everything in flight, every
@@ -464,8 +507,20 @@ fn joins_follow_the_model_and_the_golden_clusters() {
             };
             run_frame(&mut b, &p, &f, feed, &mut rng);
         }
-        eprintln!("{what}: {} joins, {} stalls", b.joins, b.stalls);
+        eprintln!(
+            "{what}: {} joins, {} stalls; {} flushes, {} named by the model's representative, {} by a representative not the run's label",
+            b.joins, b.stalls, b.flushes, b.flush_exact, b.flush_rep
+        );
         assert!(b.joins > 0, "{what}: no join at all");
+        // Nearly every flush names the model's representative (the others
+        // one the pixels after A2 rewrote, or the run's label when the
+        // run is not among its row's two newest).
+        assert!(
+            b.flushes > 0 && b.flush_exact * 10 >= b.flushes * 9,
+            "{what}: {} of {} flushes named by the model's representative",
+            b.flush_exact,
+            b.flushes
+        );
     }
 }
 

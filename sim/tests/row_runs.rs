@@ -81,6 +81,7 @@ c_struct! {
         pub o_ring_b: u16,
         pub o_hold_drop: u16,
         pub o_hold_add: u16,
+        pub o_hold_rep: u16,
         pub pool_ok: u8,
         pub pool_label: u16,
         pub free_count: u16,
@@ -219,6 +220,12 @@ impl Bench {
             );
             self.held[row] = o.o_hold_add;
         }
+        // The flush's name, until the representative rows give theirs: the
+        // run's label.
+        assert_eq!(
+            o.o_hold_rep, o.o_hold_drop,
+            "{at}: the flush's name out of the row runs"
+        );
         if o.o_start != 0 {
             let l = self.taken.pop_front();
             assert_eq!(

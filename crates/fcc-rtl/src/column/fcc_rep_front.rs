@@ -5,12 +5,18 @@
 //! holds the pixel, its hits and their labels' matches (`FccRepEq`) for
 //! `FccRepMatch`; A2 the representatives of A1's rows as the window has
 //! them after this cycle's rewrite (`rep_next`), for the minimum tree
-//! (`v`, padded with `0xFFFF`; A2's mask says which are present). `miss`
-//! is sticky until reset (a cycle after the match).
+//! (`v`, padded with `0xFFFF`; A2's mask says which are present), and
+//! the representative of the run A2's row stops holding (`a2_drop`, when
+//! `a2_drop_hit`): its slot among the centre row's, `a1_label`, matched
+//! at A1, after the push, among the two newest (`a1_age` 0 and 1: the
+//! row's latest run, the one before it when the pixel starts one), the
+//! newer first, since a label given out again may still name an old run
+//! further back. `miss` is sticky until reset (a cycle after
+//! the match).
 
 use rust_hdl::prelude::*;
 
-use super::RunPix;
+use super::{RunPix, REP_AGE_BITS};
 use crate::types::{kb, vec_of};
 
 #[derive(LogicBlock)]
@@ -22,6 +28,9 @@ pub struct FccRepFront {
     /// The entries' and the pixel's own label matches (`FccRepEq`).
     pub inp_eq: Vec<Signal<In, Bit>>,
     pub inp_own_eq: Vec<Signal<In, Bit>>,
+    /// The centre row's run slots' labels while the pixel is at A1.
+    pub a1_label: Vec<Signal<In, Bits<16>>>,
+    pub a1_age: Vec<Signal<In, Bits<REP_AGE_BITS>>>,
     pub busy: Signal<In, Bit>,
     pub head_ok: Signal<In, Bit>,
     /// The window's representatives at A1's rows with this cycle's
@@ -37,19 +46,32 @@ pub struct FccRepFront {
     pub a1_eq: Vec<Signal<Out, Bit>>,
     pub a1_own_eq: Vec<Signal<Out, Bit>>,
     pub v: Vec<Signal<Out, Bits<16>>>,
+    pub a2_drop_hit: Signal<Out, Bit>,
+    pub a2_drop: Signal<Out, Bits<16>>,
     pub miss: Signal<Out, Bit>,
     pix_q: DFF<RunPix>,
     hit_q: Vec<DFF<Bit>>,
     eq_q: Vec<DFF<Bit>>,
     own_eq_q: Vec<DFF<Bit>>,
+    /// The dropped run's slot among the centre row's, at A2; at A1, the
+    /// newest two slots' matches.
+    drop2_q: Vec<DFF<Bit>>,
+    m0: Vec<Signal<Local, Bit>>,
+    m1: Vec<Signal<Local, Bit>>,
+    any0: Signal<Local, Bit>,
     rep_q: Vec<DFF<Bits<16>>>,
     /// A1's match missed last cycle (registered before `miss_q` takes it:
     /// the match is a long path).
     miss_p: DFF<Bit>,
     miss_q: DFF<Bit>,
     take: Signal<Local, Bit>,
+    /// The centre row's first run slot among `v`'s, `h n`.
+    _centre: usize,
     pix_zero: Constant<RunPix>,
     none: Constant<Bits<16>>,
+    zero16: Constant<Bits<16>>,
+    age0: Constant<Bits<REP_AGE_BITS>>,
+    age1: Constant<Bits<REP_AGE_BITS>>,
 }
 
 impl FccRepFront {
@@ -64,6 +86,8 @@ impl FccRepFront {
             inp_hit: vec_of(ne),
             inp_eq: vec_of(ne * n),
             inp_own_eq: vec_of(n),
+            a1_label: vec_of(n),
+            a1_age: vec_of(n),
             busy: Default::default(),
             head_ok: Default::default(),
             rep_next: vec_of(np),
@@ -77,17 +101,27 @@ impl FccRepFront {
             a1_eq: vec_of(ne * n),
             a1_own_eq: vec_of(n),
             v: vec_of(nv),
+            a2_drop_hit: Default::default(),
+            a2_drop: Default::default(),
             miss: Default::default(),
             pix_q: Default::default(),
             hit_q: vec_of(ne),
             eq_q: vec_of(ne * n),
             own_eq_q: vec_of(n),
+            drop2_q: vec_of(n),
+            m0: vec_of(n),
+            m1: vec_of(n),
+            any0: Default::default(),
             rep_q: vec_of(np),
             miss_p: Default::default(),
             miss_q: Default::default(),
             take: Default::default(),
+            _centre: (np / n - 1) / 2 * n,
             pix_zero: Constant::new(RunPix::default()),
             none: kb(0xFFFF),
+            zero16: kb(0),
+            age0: kb(0),
+            age1: kb(1),
         }
     }
 }
@@ -130,6 +164,36 @@ impl Logic for FccRepFront {
                 self.own_eq_q[k].d.next = self.inp_own_eq[k].val();
             }
             self.a1_own_eq[k].next = self.own_eq_q[k].q.val();
+        }
+        // The dropped run's slot, to A2, where its representative is read
+        // (one slot at most matches: a row's runs have different labels).
+        self.a2_drop_hit.next = false;
+        self.a2_drop.next = self.none.val();
+        self.any0.next = false;
+        for k in 0..self.drop2_q.len() {
+            self.m0[k].next = self.pix_q.q.val().valid
+                & (self.pix_q.q.val().hold_drop != self.zero16.val())
+                & (self.pix_q.q.val().hold_drop == self.a1_label[k].val());
+            self.m1[k].next = self.m0[k].val() & (self.a1_age[k].val() == self.age1.val());
+            self.m0[k].next = self.m0[k].val() & (self.a1_age[k].val() == self.age0.val());
+            if self.m0[k].val() {
+                self.any0.next = true;
+            }
+        }
+        for k in 0..self.drop2_q.len() {
+            self.drop2_q[k].clock.next = self.clk.val();
+            self.drop2_q[k].d.next = self.drop2_q[k].q.val();
+            if !self.busy.val() {
+                self.drop2_q[k].d.next = self.m0[k].val() | (self.m1[k].val() & !self.any0.val());
+            }
+        }
+        for c in self._centre..(self._centre + 1) {
+            for k in 0..self.drop2_q.len() {
+                if self.drop2_q[k].q.val() {
+                    self.a2_drop_hit.next = true;
+                    self.a2_drop.next = self.rep_q[c + k].q.val();
+                }
+            }
         }
         self.a1_pix.next = self.pix_q.q.val();
         for j in 0..self.v.len() {

@@ -110,6 +110,8 @@ pub struct FccRepJoins {
     _n: usize,
     /// The first run slot of the window's centre rows, `S (h + 1)`.
     _soff: usize,
+    /// The centre row's first run slot among the pixel's rows', `h n`.
+    _centre: usize,
     _g1: usize,
     _g2: usize,
 }
@@ -169,6 +171,7 @@ impl FccRepJoins {
             _np: np,
             _n: n,
             _soff: s * n,
+            _centre: h * n,
             _g1: g1,
             _g2: g2,
         }
@@ -224,6 +227,12 @@ impl Logic for FccRepJoins {
                 self.matcher.age[j].next = self.window.age[soff + j].val();
                 self.front.rep_next[j].next = self.window.rep_next[soff + j].val();
             }
+            for c in self._centre..(self._centre + 1) {
+                for k in 0..self._n {
+                    self.front.a1_label[k].next = self.window.label[soff + c + k].val();
+                    self.front.a1_age[k].next = self.window.age[soff + c + k].val();
+                }
+            }
             // The input pixel's rows as they will be once it shifts the
             // window in: one place up, the table's head row last.
             for nn in self._n..(self._n + 1) {
@@ -250,7 +259,12 @@ impl Logic for FccRepJoins {
         // A2, M1 .. M3: the pixels, the tree, the corrections.
         self.st0.in_pix.next = self.front.a1_pix.val();
         self.st0.in_sh.next = self.zero3.val();
+        // A2's flush names its run's representative (M1 on): a label of its
+        // cluster, as A2 sees the window.
         self.st1.in_pix.next = self.st0.pix.val();
+        if self.front.a2_drop_hit.val() {
+            self.st1.in_pix.next.hold_rep = self.front.a2_drop.val();
+        }
         self.st1.in_sh.next = self.st0.sh.val();
         self.st2.in_pix.next = self.st1.pix.val();
         self.st2.in_sh.next = self.st1.sh.val();

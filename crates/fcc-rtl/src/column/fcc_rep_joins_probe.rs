@@ -29,6 +29,7 @@ pub struct FccRepJoinsProbe {
     pub ring: Signal<In, Bit>,
     pub ring_a: Signal<In, Bits<16>>,
     pub ring_b: Signal<In, Bits<16>>,
+    pub hold_drop: Signal<In, Bits<16>>,
     pub hits: Signal<In, Bits<64>>,
     pub lw0: Signal<In, Bits<64>>,
     pub lw1: Signal<In, Bits<64>>,
@@ -51,6 +52,8 @@ pub struct FccRepJoinsProbe {
     pub o_row: Signal<Out, Bits<7>>,
     pub o_col: Signal<Out, Bits<12>>,
     pub o_label: Signal<Out, Bits<16>>,
+    pub o_hold_drop: Signal<Out, Bits<16>>,
+    pub o_hold_rep: Signal<Out, Bits<16>>,
     pub j_valid: Signal<Out, Bit>,
     pub j_a: Signal<Out, Bits<16>>,
     pub j_b: Signal<Out, Bits<16>>,
@@ -79,6 +82,7 @@ impl FccRepJoinsProbe {
             ring: Default::default(),
             ring_a: Default::default(),
             ring_b: Default::default(),
+            hold_drop: Default::default(),
             hits: Default::default(),
             lw0: Default::default(),
             lw1: Default::default(),
@@ -101,6 +105,8 @@ impl FccRepJoinsProbe {
             o_row: Default::default(),
             o_col: Default::default(),
             o_label: Default::default(),
+            o_hold_drop: Default::default(),
+            o_hold_rep: Default::default(),
             j_valid: Default::default(),
             j_a: Default::default(),
             j_b: Default::default(),
@@ -128,6 +134,8 @@ impl Logic for FccRepJoinsProbe {
         self.pix.next.ring = self.ring.val();
         self.pix.next.ring_a = self.ring_a.val();
         self.pix.next.ring_b = self.ring_b.val();
+        self.pix.next.hold_drop = self.hold_drop.val();
+        self.pix.next.hold_rep = self.hold_drop.val();
         self.words[0].next = self.lw0.val();
         self.words[1].next = self.lw1.val();
         self.words[2].next = self.lw2.val();
@@ -165,6 +173,8 @@ impl Logic for FccRepJoinsProbe {
         self.o_row.next = self.joins.out.val().row;
         self.o_col.next = self.joins.out.val().col;
         self.o_label.next = self.joins.out.val().label;
+        self.o_hold_drop.next = self.joins.out.val().hold_drop;
+        self.o_hold_rep.next = self.joins.out.val().hold_rep;
         self.j_valid.next = self.joins.j_valid.val();
         self.j_a.next = self.joins.j_a.val();
         self.j_b.next = self.joins.j_b.val();

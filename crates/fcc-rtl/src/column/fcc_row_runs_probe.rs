@@ -70,6 +70,7 @@ pub struct FccRowRunsProbe {
     pub o_ring_b: Signal<Out, Bits<16>>,
     pub o_hold_drop: Signal<Out, Bits<16>>,
     pub o_hold_add: Signal<Out, Bits<16>>,
+    pub o_hold_rep: Signal<Out, Bits<16>>,
     runs: FccRowRuns,
     pool: FccLabelPool,
     slot: Signal<Local, ColPix>,
@@ -130,6 +131,7 @@ impl FccRowRunsProbe {
             o_ring_b: Default::default(),
             o_hold_drop: Default::default(),
             o_hold_add: Default::default(),
+            o_hold_rep: Default::default(),
             runs: FccRowRuns::new(p.rows),
             pool: FccLabelPool::new(p),
             slot: Default::default(),
@@ -199,5 +201,6 @@ impl Logic for FccRowRunsProbe {
         self.o_ring_b.next = self.runs.out.val().ring_b;
         self.o_hold_drop.next = self.runs.out.val().hold_drop;
         self.o_hold_add.next = self.runs.out.val().hold_add;
+        self.o_hold_rep.next = self.runs.out.val().hold_rep;
     }
 }

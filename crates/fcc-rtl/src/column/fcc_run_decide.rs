@@ -166,9 +166,11 @@ impl Logic for FccRunDecide {
         self.out.next.ring_b = self.l_lab.val();
         self.out.next.hold_drop = self.zero16.val();
         self.out.next.hold_add = self.zero16.val();
+        self.out.next.hold_rep = self.zero16.val();
         if self.ctl.val().valid & self.changed.val() {
             self.out.next.hold_drop = self.ctl.val().h_lab;
             self.out.next.hold_add = self.h_lab.val();
+            self.out.next.hold_rep = self.ctl.val().h_lab;
         }
     }
 }

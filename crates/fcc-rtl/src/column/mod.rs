@@ -233,6 +233,10 @@ pub struct RunPix {
     /// closes at the frame end).
     pub hold_drop: Bits<16>,
     pub hold_add: Bits<16>,
+    /// A label of `hold_drop`'s cluster, for its flush's find: `hold_drop`
+    /// out of `FccRowRuns`, its run's representative out of `FccRepJoins`
+    /// (a shallower walk).
+    pub hold_rep: Bits<16>,
 }
 
 /// A pixel's word in the column window: its point, its pass-2 key and
