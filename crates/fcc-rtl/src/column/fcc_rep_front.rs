@@ -56,6 +56,7 @@ pub struct FccRepFront {
     /// The dropped run's slot among the centre row's, at A2; at A1, the
     /// newest two slots' matches.
     drop2_q: Vec<DFF<Bit>>,
+    hit: Vec<Signal<Local, Bit>>,
     m0: Vec<Signal<Local, Bit>>,
     m1: Vec<Signal<Local, Bit>>,
     any0: Signal<Local, Bit>,
@@ -109,6 +110,7 @@ impl FccRepFront {
             eq_q: vec_of(ne * n),
             own_eq_q: vec_of(n),
             drop2_q: vec_of(n),
+            hit: vec_of(n),
             m0: vec_of(n),
             m1: vec_of(n),
             any0: Default::default(),
@@ -165,17 +167,17 @@ impl Logic for FccRepFront {
             }
             self.a1_own_eq[k].next = self.own_eq_q[k].q.val();
         }
-        // The dropped run's slot, to A2, where its representative is read
-        // (one slot at most matches: a row's runs have different labels).
+        // The dropped run's slot, to A2, where its representative is read:
+        // the newest slot of its label, of the two newest.
         self.a2_drop_hit.next = false;
         self.a2_drop.next = self.none.val();
         self.any0.next = false;
         for k in 0..self.drop2_q.len() {
-            self.m0[k].next = self.pix_q.q.val().valid
+            self.hit[k].next = self.pix_q.q.val().valid
                 & (self.pix_q.q.val().hold_drop != self.zero16.val())
                 & (self.pix_q.q.val().hold_drop == self.a1_label[k].val());
-            self.m1[k].next = self.m0[k].val() & (self.a1_age[k].val() == self.age1.val());
-            self.m0[k].next = self.m0[k].val() & (self.a1_age[k].val() == self.age0.val());
+            self.m0[k].next = self.hit[k].val() & (self.a1_age[k].val() == self.age0.val());
+            self.m1[k].next = self.hit[k].val() & (self.a1_age[k].val() == self.age1.val());
             if self.m0[k].val() {
                 self.any0.next = true;
             }

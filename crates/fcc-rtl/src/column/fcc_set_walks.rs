@@ -49,8 +49,8 @@ pub struct FccSetWalks {
     pub op_a: Signal<In, Bits<16>>,
     pub op_b: Signal<In, Bits<16>>,
     pub op_take: Signal<Out, Bit>,
-    /// A make may take the write port this cycle: no join of A can retire
-    /// (and link) in it. From flip-flops only.
+    /// A make may take the write port this cycle: the oldest op is not a
+    /// join that can retire (and link) in it. From flip-flops only.
     pub mk_ready: Signal<Out, Bit>,
     // The read port: the word read two cycles ago shows now.
     pub read_en: Signal<Out, Bit>,
