@@ -4,7 +4,8 @@
 //! (its walks carry it) is its place's, kept by `FccSetWalks`.
 //!
 //! * `take` loads a new op; `shift` the next place's op (with a root it
-//!   finds in this cycle); `clear` empties it (`take` wins).
+//!   finds in this cycle; an empty one at the last place), `take`
+//!   winning.
 //! * A root arriving for it (`w_*`, by sequence number and side) is recorded;
 //!   while a link made in the last two cycles is given (`l_*`), a root
 //!   equal to the linked one, arriving or recorded, becomes the root kept:
@@ -38,7 +39,6 @@ pub struct FccSetOp {
     pub sh_done1: Signal<In, Bit>,
     pub sh_root1: Signal<In, Bits<16>>,
     pub sh_slot1: Signal<In, Bits<SLOT_BITS>>,
-    pub clear: Signal<In, Bit>,
     pub w_done: Signal<In, Bit>,
     pub w_seq: Signal<In, Bits<SEQ_BITS>>,
     pub w_side: Signal<In, Bit>,
@@ -92,9 +92,6 @@ impl Logic for FccSetOp {
             }
         }
         self.mine.next = self.w_done.val() & self.v.q.val() & (self.w_seq.val() == self.seq.val());
-        if self.clear.val() {
-            self.v.d.next = false;
-        }
         if self.shift.val() {
             self.v.d.next = self.sh_valid.val();
             self.jn.d.next = self.sh_join.val();

@@ -354,7 +354,6 @@ impl Logic for FccSetWalks {
             self.ops[i].seq.next = self.seqs[i].q.val();
             self.ops[i].take_join.next = self.op_join.val();
             self.ops[i].shift.next = self.retire.val();
-            self.ops[i].clear.next = self.retire.val();
             self.ops[i].w_done.next = self.w_done.val();
             self.ops[i].w_seq.next = self.p2_seq.q.val();
             self.ops[i].w_side.next = self.p2_side.q.val();
