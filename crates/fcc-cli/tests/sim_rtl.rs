@@ -2,32 +2,12 @@
 //! larger limits, its size, K and thresholds programmed through the run
 //! registers; and the errors of a frame or flags the build cannot run.
 
+use fcc_testkit::{s, text, tmpdir};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::process::Output;
 
 fn fcc(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_fcc"))
-        .args(args)
-        .output()
-        .expect("run fcc")
-}
-
-fn tmpdir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("fcc-sim-rtl-{}-{name}", std::process::id()));
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
-
-fn s(p: &Path) -> &str {
-    p.to_str().unwrap()
-}
-
-fn text(o: &Output) -> String {
-    format!(
-        "{}{}",
-        String::from_utf8_lossy(&o.stdout),
-        String::from_utf8_lossy(&o.stderr)
-    )
+    fcc_testkit::run_in(env!("CARGO_BIN_EXE_fcc"), None, args)
 }
 
 /// `fcc gen` of `flags` into `d/name` (constraints and scripts beside it).

@@ -336,15 +336,16 @@ pub fn write_xyz_f32(path: &Path, rows: usize, cols: usize, xyz: &[f32]) -> Resu
 mod tests {
     use super::*;
 
-    fn tmp(name: &str) -> PathBuf {
-        let dir = std::env::temp_dir().join(format!("fcc-npy-test-{}", std::process::id()));
-        fs::create_dir_all(&dir).unwrap();
-        dir.join(name)
+    /// A file `name` in a scratch directory of its own, removed with it.
+    fn tmp(name: &str) -> (fcc_testkit::Scratch, PathBuf) {
+        let dir = fcc_testkit::tmpdir(name);
+        let path = dir.join(name);
+        (dir, path)
     }
 
     #[test]
     fn xyz_round_trip_f32() {
-        let p = tmp("a.npy");
+        let (_dir, p) = tmp("a.npy");
         let xyz = [1.5f32, -2.0, f32::NAN, 0.0, 0.25, 3.0];
         write_xyz_f32(&p, 1, 2, &xyz).unwrap();
         let img = read_xyz(&p).unwrap();
@@ -357,7 +358,7 @@ mod tests {
 
     #[test]
     fn labels_round_trip() {
-        let p = tmp("l.npy");
+        let (_dir, p) = tmp("l.npy");
         write_labels(&p, 2, 2, &[0, 1, 70000, 3]).unwrap();
         let l = read_labels(&p).unwrap();
         assert_eq!(l.labels, vec![0, 1, 70000, 3]);
@@ -379,14 +380,14 @@ mod tests {
             .iter()
             .flat_map(|v| v.to_be_bytes())
             .collect();
-        let p = tmp("be.npy");
+        let (_dir, p) = tmp("be.npy");
         fs::write(&p, with_header(">f8", "(1, 1, 3)", &data)).unwrap();
         assert_eq!(read_xyz(&p).unwrap().xyz, vec![1.0, 2.0, 3.0]);
     }
 
     #[test]
     fn errors_name_the_file_and_the_problem() {
-        let p = tmp("bad.npy");
+        let (_dir, p) = tmp("bad.npy");
         fs::write(&p, b"hello world, not numpy").unwrap();
         let e = read_xyz(&p).unwrap_err().to_string();
         assert!(e.starts_with(&p.display().to_string()), "{e}");
@@ -428,7 +429,7 @@ mod tests {
             .to_string()
             .ends_with("truncated header"));
 
-        let missing = tmp("does-not-exist.npy");
+        let (_dir, missing) = tmp("does-not-exist.npy");
         assert!(read_xyz(&missing)
             .unwrap_err()
             .to_string()
@@ -437,7 +438,7 @@ mod tests {
 
     #[test]
     fn negative_labels_are_rejected() {
-        let p = tmp("neg.npy");
+        let (_dir, p) = tmp("neg.npy");
         let data: Vec<u8> = [1i32, -1].iter().flat_map(|v| v.to_le_bytes()).collect();
         fs::write(&p, with_header("<i4", "(1, 2)", &data)).unwrap();
         let e = read_labels(&p).unwrap_err().to_string();
@@ -449,7 +450,7 @@ mod tests {
 
     #[test]
     fn fortran_order_is_rejected() {
-        let p = tmp("f.npy");
+        let (_dir, p) = tmp("f.npy");
         let dict = "{'descr': '<f4', 'fortran_order': True, 'shape': (1, 1, 3), }\n";
         let mut out = MAGIC.to_vec();
         out.extend([1u8, 0]);

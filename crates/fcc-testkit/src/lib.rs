@@ -17,9 +17,35 @@ pub fn run_in(exe: &str, dir: Option<&Path>, args: &[&str]) -> Output {
         .unwrap_or_else(|e| panic!("cannot run {exe}: {e}"))
 }
 
+/// A scratch directory: removed when the test that made it passes, kept
+/// for a look when it fails (dropped while panicking). Reads as a `Path`.
+#[derive(Debug)]
+pub struct Scratch(PathBuf);
+
+impl std::ops::Deref for Scratch {
+    type Target = Path;
+    fn deref(&self) -> &Path {
+        &self.0
+    }
+}
+
+impl AsRef<Path> for Scratch {
+    fn as_ref(&self) -> &Path {
+        &self.0
+    }
+}
+
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        if !std::thread::panicking() {
+            let _ = std::fs::remove_dir_all(&self.0);
+        }
+    }
+}
+
 /// A fresh, empty scratch directory named after the test binary, the process
 /// and `name`.
-pub fn tmpdir(name: &str) -> PathBuf {
+pub fn tmpdir(name: &str) -> Scratch {
     let exe = std::env::current_exe().ok();
     let test = exe
         .as_deref()
@@ -30,7 +56,7 @@ pub fn tmpdir(name: &str) -> PathBuf {
     let d = std::env::temp_dir().join(format!("fcc-{test}-{}-{name}", std::process::id()));
     let _ = std::fs::remove_dir_all(&d);
     std::fs::create_dir_all(&d).unwrap_or_else(|e| panic!("cannot create {}: {e}", d.display()));
-    d
+    Scratch(d)
 }
 
 /// A path as `&str`, for command-line arguments.
@@ -90,9 +116,30 @@ mod tests {
         let d = tmpdir("reuse");
         std::fs::write(d.join("old"), b"x").unwrap();
         let d2 = tmpdir("reuse");
-        assert_eq!(d, d2);
+        assert_eq!(&*d, &*d2);
         assert_eq!(std::fs::read_dir(&d2).unwrap().count(), 0);
-        let _ = std::fs::remove_dir_all(&d2);
+    }
+
+    #[test]
+    fn tmpdir_goes_when_its_test_passes_and_stays_when_it_fails() {
+        let d = tmpdir("passes");
+        std::fs::write(d.join("f"), b"x").unwrap();
+        let path = d.to_path_buf();
+        drop(d);
+        assert!(!path.exists(), "a passing test's scratch was left behind");
+        let kept = std::panic::catch_unwind(|| {
+            let d = tmpdir("fails");
+            let path = d.to_path_buf();
+            std::fs::write(d.join("f"), b"x").unwrap();
+            std::panic::panic_any(path);
+        })
+        .unwrap_err();
+        let path = kept.downcast::<PathBuf>().unwrap();
+        assert!(
+            path.join("f").exists(),
+            "a failing test's scratch was removed"
+        );
+        std::fs::remove_dir_all(&*path).unwrap();
     }
 
     /// The full regression's switch (this crate's `full-regression`
