@@ -6,7 +6,9 @@
 //! them back when the golden stream closes their cluster (reused last
 //! freed first). Checked:
 //!
-//! * every pixel in input order, and the joins before it, one for one,
+//! * every pixel in input order, and the joins after it (its first in its
+//!   cycle, the others while `j_more` says they come, all before the next
+//!   pixel), one for one,
 //!   against the model of docs/column-core.md, item 3: a run's
 //!   representative is a label of its cluster; a pixel's smallest named
 //!   representative `m` becomes every named run's, every other distinct
@@ -83,6 +85,7 @@ c_struct! {
         pub o_hold_drop: u16,
         pub o_hold_rep: u16,
         pub j_valid: u8,
+        pub j_more: u8,
         pub j_a: u16,
         pub j_b: u16,
         pub miss: u8,
@@ -142,9 +145,12 @@ struct Bench {
     label_of: HashMap<u32, u16>,
     /// The model: each open run's representative.
     rep: HashMap<u32, u16>,
-    /// Pixels fed, waiting to come out; the joins out since the last.
+    /// Pixels fed, waiting to come out; the pixel out last, whose joins
+    /// `got` are, and whether `j_more` said more would come.
     pending: VecDeque<Fed>,
+    last: Option<Fed>,
     got: Vec<(u16, u16)>,
+    more: bool,
     uf: Uf,
     joins: u64,
     stalls: u64,
@@ -173,7 +179,9 @@ impl Bench {
             label_of: HashMap::new(),
             rep: HashMap::new(),
             pending: VecDeque::new(),
+            last: None,
             got: Vec::new(),
+            more: false,
             uf: Uf::default(),
             joins: 0,
             stalls: 0,
@@ -263,12 +271,22 @@ impl Bench {
             "{}: a label named is not in its row (seed {})",
             self.what, self.seed
         );
+        self.event(&o);
         if o.j_valid != 0 {
+            assert!(
+                o.o_valid != 0 || self.more,
+                "{}: a join after its pixel's last (seed {})",
+                self.what,
+                self.seed
+            );
             self.got.push((o.j_a, o.j_b));
             self.uf.union(o.j_a, o.j_b);
             self.joins += 1;
         }
-        self.event(&o);
+        self.more = o.j_more != 0;
+        if !self.more {
+            self.settle();
+        }
         let taken = i.valid != 0 && o.ready != 0;
         if o.ready == 0 {
             self.stalls += 1;
@@ -289,10 +307,36 @@ impl Bench {
         taken
     }
 
+    /// The pixel out last: its joins are all out, and must be the model's.
+    fn settle(&mut self) {
+        let mut got = std::mem::take(&mut self.got);
+        let Some(f) = self.last.take() else {
+            assert!(
+                got.is_empty(),
+                "{}: joins {got:?} with no pixel out (seed {})",
+                self.what,
+                self.seed
+            );
+            return;
+        };
+        got.sort_unstable();
+        assert_eq!(
+            got, f.joins,
+            "{}: row {}, col {}, seed {}: the joins after the pixel",
+            self.what, f.px.row, f.px.col, self.seed
+        );
+    }
+
     fn event(&mut self, o: &RjOut) {
         if o.o_valid == 0 {
             return;
         }
+        assert!(
+            !self.more,
+            "{}: a pixel out while the one before has joins to come (seed {})",
+            self.what, self.seed
+        );
+        self.settle();
         let f = self
             .pending
             .pop_front()
@@ -306,9 +350,7 @@ impl Bench {
             (f.px.row, f.px.col, f.px.run != 0, f.label),
             "{at}: (row, col, labelled, label) of the next pixel out"
         );
-        let mut got = std::mem::take(&mut self.got);
-        got.sort_unstable();
-        assert_eq!(got, f.joins, "{at}: the joins before the pixel");
+        self.last = Some(f.clone());
         // The flush names a label of the dropped run's cluster: its
         // representative as the window had it at A2 (the model's, or one
         // the pixels after A2 have rewritten since).
@@ -338,6 +380,8 @@ impl Bench {
         };
         self.cycle(p, i, None);
         self.pending.clear();
+        self.last = None;
+        self.more = false;
         self.got.clear();
         self.label_of.clear();
         self.rep.clear();
@@ -348,13 +392,17 @@ impl Bench {
     /// Bubbles until every pixel fed is out.
     fn drain(&mut self, p: &FccParams) {
         let mut n = 0;
-        while !self.pending.is_empty() || n < 3 {
-            n = if self.pending.is_empty() { n + 1 } else { 0 };
+        while !self.pending.is_empty() || self.more || n < 3 {
+            n = if self.pending.is_empty() && !self.more {
+                n + 1
+            } else {
+                0
+            };
             self.cycle(p, RjIn::default(), None);
         }
         assert!(
-            self.got.is_empty(),
-            "{}: joins after the last pixel",
+            self.got.is_empty() && self.last.is_none() && !self.more,
+            "{}: the last pixel's joins not settled",
             self.what
         );
     }

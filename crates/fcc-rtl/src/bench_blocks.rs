@@ -75,6 +75,9 @@ pub enum BenchBlock {
     /// The column core's union-find queue `FccSetQueue` (with
     /// `FccLabelSets` and `FccSetOrder`).
     SetQueue,
+    /// The column core's packer of a pixel slot's ops into the union-find
+    /// queue's entries `FccSetPack`.
+    SetPack,
     /// The column core's representative rows and join filter `FccRepJoins`
     /// behind the scalar ports of `FccRepJoinsProbe`.
     RepJoins,
@@ -105,7 +108,7 @@ impl Row {
 
 impl BenchBlock {
     /// Every block with a bench.
-    pub const ALL: [BenchBlock; 27] = [
+    pub const ALL: [BenchBlock; 28] = [
         BenchBlock::Regs,
         BenchBlock::AxilAdapter,
         BenchBlock::MergeTable,
@@ -131,6 +134,7 @@ impl BenchBlock {
         BenchBlock::Closer,
         BenchBlock::LabelLists,
         BenchBlock::SetQueue,
+        BenchBlock::SetPack,
         BenchBlock::ColStart,
         BenchBlock::RepJoins,
     ];
@@ -348,6 +352,13 @@ impl BenchBlock {
                 },
                 waivers: lint::set_queue_waivers,
             },
+            BenchBlock::SetPack => Row::plain("fcc_set_pack", |p| {
+                gen(
+                    p,
+                    crate::column::fcc_set_pack::FccSetPack::default(),
+                    "fcc_set_pack",
+                )
+            }),
             BenchBlock::RepJoins => Row {
                 name: "fcc_rep_joins_probe",
                 generate: |p| {

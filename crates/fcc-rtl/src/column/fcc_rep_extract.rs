@@ -29,6 +29,8 @@ pub struct FccRepExtract {
     pub b_m: Signal<In, Bits<16>>,
     pub busy: Signal<Out, Bit>,
     pub out: Signal<Out, RunPix>,
+    /// The pixel out last has joins still to come after this cycle's.
+    pub more: Signal<Out, Bit>,
     pub j_valid: Signal<Out, Bit>,
     pub j_a: Signal<Out, Bits<16>>,
     pub j_b: Signal<Out, Bits<16>>,
@@ -48,6 +50,7 @@ impl FccRepExtract {
             b_m: Default::default(),
             busy: Default::default(),
             out: Default::default(),
+            more: Default::default(),
             j_valid: Default::default(),
             j_a: Default::default(),
             j_b: Default::default(),
@@ -79,6 +82,7 @@ impl Logic for FccRepExtract {
             self.replay.f_val[b].next = self.sieve.val[b].val();
         }
         self.busy.next = self.replay.busy.val();
+        self.more.next = self.replay.more.val();
         self.out.next = self.replay.out.val();
         self.j_valid.next = self.replay.j_valid.val();
         self.j_a.next = self.replay.j_a.val();

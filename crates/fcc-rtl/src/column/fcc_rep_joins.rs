@@ -75,6 +75,9 @@ pub struct FccRepJoins {
     /// The frame's last row, `R - 1` (constant while a frame runs).
     pub last_row: Signal<In, Bits<7>>,
     pub out: Signal<Out, RunPix>,
+    /// The pixel out last has joins still to come after this cycle's
+    /// (its column's marker waits for them).
+    pub j_more: Signal<Out, Bit>,
     pub j_valid: Signal<Out, Bit>,
     pub j_a: Signal<Out, Bits<16>>,
     pub j_b: Signal<Out, Bits<16>>,
@@ -139,6 +142,7 @@ impl FccRepJoins {
             ready: Default::default(),
             last_row: Default::default(),
             out: Default::default(),
+            j_more: Default::default(),
             j_valid: Default::default(),
             j_a: Default::default(),
             j_b: Default::default(),
@@ -373,6 +377,7 @@ impl Logic for FccRepJoins {
         self.ready.next = self.front.ready.val();
         self.out.next = self.extract.out.val();
         self.j_valid.next = self.extract.j_valid.val();
+        self.j_more.next = self.extract.more.val();
         self.j_a.next = self.extract.j_a.val();
         self.j_b.next = self.extract.j_b.val();
         self.miss.next = self.front.miss.val();

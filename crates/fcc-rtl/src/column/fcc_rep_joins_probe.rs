@@ -55,6 +55,7 @@ pub struct FccRepJoinsProbe {
     pub o_hold_drop: Signal<Out, Bits<16>>,
     pub o_hold_rep: Signal<Out, Bits<16>>,
     pub j_valid: Signal<Out, Bit>,
+    pub j_more: Signal<Out, Bit>,
     pub j_a: Signal<Out, Bits<16>>,
     pub j_b: Signal<Out, Bits<16>>,
     pub miss: Signal<Out, Bit>,
@@ -108,6 +109,7 @@ impl FccRepJoinsProbe {
             o_hold_drop: Default::default(),
             o_hold_rep: Default::default(),
             j_valid: Default::default(),
+            j_more: Default::default(),
             j_a: Default::default(),
             j_b: Default::default(),
             miss: Default::default(),
@@ -176,6 +178,7 @@ impl Logic for FccRepJoinsProbe {
         self.o_hold_drop.next = self.joins.out.val().hold_drop;
         self.o_hold_rep.next = self.joins.out.val().hold_rep;
         self.j_valid.next = self.joins.j_valid.val();
+        self.j_more.next = self.joins.j_more.val();
         self.j_a.next = self.joins.j_a.val();
         self.j_b.next = self.joins.j_b.val();
         self.miss.next = self.joins.miss.val();

@@ -1,11 +1,13 @@
 //! `FccRepReplay`: stage R of the representative rows (docs/column-core.md,
-//! item 3). It sends the pixel's first join with the pixel, in one cycle
-//! when no other is left. Otherwise `busy` (a flip-flop) holds every stage
-//! before it while it finds the first flag left (`Pick`), takes its value
-//! and sends it (`Take`), then clears its equals (`Check`): three cycles a
-//! further join, and one to find none left. At the last column it then
-//! sends the ring check's pair (`Ring`), and lets the pixel go. In a cycle
-//! the join comes before the pixel, so a pixel leaves after its joins.
+//! item 3). The pixel goes out in its first cycle in R, with its first
+//! join (or, with none, at the last column, the ring check's pair). With
+//! more to send, `busy` (a flip-flop) holds every stage before it while it
+//! finds the first flag left (`Pick`), takes its value and sends it
+//! (`Take`), then clears its equals (`Check`): three cycles a further
+//! join, and one to find none left. At the last column it then sends the
+//! ring check's pair (`Ring`). So a pixel's joins follow it, all of them
+//! before the next pixel, and while `busy` is high the pixel out last has
+//! joins still to come (its slot's marker waits for them).
 
 use rust_hdl::prelude::*;
 
@@ -38,6 +40,8 @@ pub struct FccRepReplay {
     pub f_val: Vec<Signal<In, Bits<16>>>,
     pub busy: Signal<Out, Bit>,
     pub out: Signal<Out, RunPix>,
+    /// The pixel out last has joins still to come after this cycle's.
+    pub more: Signal<Out, Bit>,
     pub j_valid: Signal<Out, Bit>,
     pub j_a: Signal<Out, Bits<16>>,
     pub j_b: Signal<Out, Bits<16>>,
@@ -52,6 +56,8 @@ pub struct FccRepReplay {
     r_emit: DFF<Bit>,
     r_step: DFF<ReplayStep>,
     rb: DFF<Bit>,
+    /// R's pixel is new: it goes out this cycle.
+    r_new: DFF<Bit>,
     /// The flags left with the value just sent cleared.
     rem2: Vec<Signal<Local, Bit>>,
     pix_zero: Constant<RunPix>,
@@ -72,6 +78,7 @@ impl FccRepReplay {
             f_val: vec_of(n),
             busy: Default::default(),
             out: Default::default(),
+            more: Default::default(),
             j_valid: Default::default(),
             j_a: Default::default(),
             j_b: Default::default(),
@@ -86,6 +93,7 @@ impl FccRepReplay {
             r_emit: Default::default(),
             r_step: Default::default(),
             rb: Default::default(),
+            r_new: Default::default(),
             rem2: vec_of(n),
             pix_zero: Constant::new(RunPix::default()),
         }
@@ -95,7 +103,7 @@ impl FccRepReplay {
 impl Logic for FccRepReplay {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clk, r_pix, r_m, r_x, r_emit, r_step, rb);
+        dff_setup!(self, clk, r_pix, r_m, r_x, r_emit, r_step, rb, r_new);
         for b in 0..self.f_left.len() {
             self.r_rem[b].clock.next = self.clk.val();
             self.r_first[b].clock.next = self.clk.val();
@@ -111,6 +119,7 @@ impl Logic for FccRepReplay {
         if !self.rb.q.val() {
             // R takes F's pixel.
             self.r_pix.d.next = self.f_pix.val();
+            self.r_new.d.next = self.f_pix.val().valid;
             self.r_m.d.next = self.f_m.val();
             self.r_x.d.next = self.f_x.val();
             self.r_emit.d.next = self.f_pix.val().valid & self.f_any.val();
@@ -129,6 +138,7 @@ impl Logic for FccRepReplay {
             }
         } else {
             self.r_emit.d.next = false;
+            self.r_new.d.next = false;
             match self.r_step.q.val() {
                 ReplayStep::Idle => {}
                 ReplayStep::Pick => {
@@ -166,8 +176,10 @@ impl Logic for FccRepReplay {
                 }
             }
         }
-        // Out: R's join, then R's pixel once nothing holds it.
+        // Out: R's pixel in its first cycle, R's join in any.
         self.busy.next = self.rb.q.val();
+        self.more.next =
+            self.rb.q.val() & !((self.r_step.q.val() == ReplayStep::Ring) & !self.r_emit.q.val());
         self.j_valid.next = self.r_pix.q.val().valid
             & (self.r_emit.q.val() | ((self.r_step.q.val() == ReplayStep::Ring) & self.rb.q.val()));
         self.j_a.next = self.r_pix.q.val().ring_a;
@@ -177,10 +189,11 @@ impl Logic for FccRepReplay {
             self.j_b.next = self.r_m.q.val();
         }
         self.out.next = self.pix_zero.val();
-        if !self.rb.q.val() {
+        if self.r_new.q.val() {
             self.out.next = self.r_pix.q.val();
         }
         if self.rst.val() {
+            self.r_new.d.next = false;
             self.r_pix.d.next = self.pix_zero.val();
             self.r_emit.d.next = false;
             self.r_step.d.next = ReplayStep::Idle;

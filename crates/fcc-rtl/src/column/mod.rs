@@ -73,6 +73,7 @@ pub mod fcc_run_decide;
 pub mod fcc_set_gate;
 pub mod fcc_set_op;
 pub mod fcc_set_order;
+pub mod fcc_set_pack;
 pub mod fcc_set_pick;
 pub mod fcc_set_queue;
 pub mod fcc_set_reads;
