@@ -31,66 +31,14 @@ use std::collections::{HashMap, VecDeque};
 
 mod column;
 
+use column::rep_io::{rep_in, RjIn, RjOut};
 use column::{build, pixels, random_frame, run_params, Pix};
 use fcc_golden::{Frame, Stream};
 use fcc_params::FccParams;
 use fcc_rtl::BenchBlock;
-use fcc_sim::{c_struct, load_plain, PlainDut};
+use fcc_sim::{load_plain, PlainDut};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-
-c_struct! {
-    /// Inputs of one cycle, named as the ports.
-    pub struct RjIn {
-        pub rst: u8,
-        pub valid: u8,
-        pub ok: u8,
-        pub lok: u8,
-        pub row: u8,
-        pub col: u16,
-        pub label: u16,
-        pub start: u8,
-        pub ring: u8,
-        pub ring_a: u16,
-        pub ring_b: u16,
-        pub hold_drop: u16,
-        pub hits: u64,
-        pub lw0: u64,
-        pub lw1: u64,
-        pub lw2: u64,
-        pub lw3: u64,
-        pub lw4: u64,
-        pub lw5: u64,
-        pub lw6: u64,
-        pub lw7: u64,
-        pub lw8: u64,
-        pub lw9: u64,
-        pub lw10: u64,
-        pub lw11: u64,
-        pub lw12: u64,
-        pub lw13: u64,
-        pub last_row: u8,
-    }
-}
-
-c_struct! {
-    /// Outputs during one cycle.
-    pub struct RjOut {
-        pub ready: u8,
-        pub o_valid: u8,
-        pub o_lok: u8,
-        pub o_row: u8,
-        pub o_col: u16,
-        pub o_label: u16,
-        pub o_hold_drop: u16,
-        pub o_hold_rep: u16,
-        pub j_valid: u8,
-        pub j_more: u8,
-        pub j_a: u16,
-        pub j_b: u16,
-        pub miss: u8,
-    }
-}
 
 /// A union-find over labels, fed by the block's joins.
 #[derive(Default)]
@@ -204,32 +152,12 @@ impl Bench {
             self.label_of.insert(px.run, l);
             self.rep.insert(px.run, l);
         }
-        let lab = |b: &Bench, run: u32| if run == 0 { 0 } else { b.label_of[&run] };
-        let mut i = RjIn {
-            valid: 1,
-            ok: px.ok as u8,
-            lok: (px.run != 0) as u8,
-            row: px.row as u8,
-            col: px.col as u16,
-            label: lab(self, px.run),
-            start: px.start as u8,
-            last_row: (p.rows - 1) as u8,
-            ..RjIn::default()
-        };
-        let mut words = [0u64; 14];
-        for &(e, run) in &px.hits {
-            i.hits |= 1 << e;
-            words[e / 4] |= (lab(self, run) as u64) << (16 * (e % 4));
-        }
-        [
-            i.lw0, i.lw1, i.lw2, i.lw3, i.lw4, i.lw5, i.lw6, i.lw7, i.lw8, i.lw9, i.lw10, i.lw11,
-            i.lw12, i.lw13,
-        ] = words;
+        let label_of = &self.label_of;
+        let i = rep_in(p, px, |run| if run == 0 { 0 } else { label_of[&run] });
         let (drop, drop_rep) = match px.hold {
             Some((was, _)) if was != 0 => (self.label_of[&was], self.rep[&was]),
             _ => (0, 0),
         };
-        i.hold_drop = drop;
         let mut joins = Vec::new();
         if px.run != 0 {
             let mut named = vec![px.run];
@@ -247,8 +175,7 @@ impl Bench {
                 self.rep.insert(*r, m);
             }
         }
-        if let Some((a, b)) = px.ring {
-            (i.ring, i.ring_a, i.ring_b) = (1, lab(self, a), lab(self, b));
+        if px.ring.is_some() {
             joins.push((i.ring_a, i.ring_b));
         }
         joins.sort_unstable();

@@ -12,49 +12,14 @@
 //! `j_more` falls or alone in the cycle it falls; a cycle with no op no
 //! entry. A mismatch prints the cycle, expected, got and the seed.
 
+mod column;
+use column::pack_io::{PkIn, PkOut};
+
 use fcc_params::FccParams;
 use fcc_rtl::BenchBlock;
-use fcc_sim::{c_struct, load_plain, PlainDut};
+use fcc_sim::{load_plain, PlainDut};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-
-c_struct! {
-    /// Inputs of one cycle, named as the ports.
-    pub struct PkIn {
-        pub rst: u8,
-        pub p_valid: u8,
-        pub p_row: u8,
-        pub p_col: u16,
-        pub p_start: u8,
-        pub p_label: u16,
-        pub p_ring_first: u8,
-        pub p_hold_drop: u16,
-        pub p_hold_rep: u16,
-        pub j_valid: u8,
-        pub j_a: u16,
-        pub j_b: u16,
-        pub j_more: u8,
-        pub last_row: u8,
-    }
-}
-
-c_struct! {
-    /// Outputs during one cycle.
-    pub struct PkOut {
-        pub q_valid: u8,
-        pub q_find: u8,
-        pub q_make: u8,
-        pub q_join: u8,
-        pub q_mark: u8,
-        pub q_ring: u8,
-        pub q_f: u16,
-        pub q_m: u16,
-        pub q_ja: u16,
-        pub q_jb: u16,
-        pub q_col: u16,
-        pub q_row: u8,
-    }
-}
 
 /// An entry of the queue, the fields its parts define: a find's label; a
 /// make's label, first pixel and ring flag; a join's pair; a marker's

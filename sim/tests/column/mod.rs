@@ -6,6 +6,8 @@
 #![allow(dead_code)]
 
 pub mod forest;
+pub mod pack_io;
+pub mod rep_io;
 
 use fcc_golden::{Frame, Point, Thresholds};
 use fcc_params::FccParams;

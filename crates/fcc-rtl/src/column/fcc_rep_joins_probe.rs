@@ -26,6 +26,7 @@ pub struct FccRepJoinsProbe {
     pub col: Signal<In, Bits<12>>,
     pub label: Signal<In, Bits<16>>,
     pub start: Signal<In, Bit>,
+    pub ring_first: Signal<In, Bit>,
     pub ring: Signal<In, Bit>,
     pub ring_a: Signal<In, Bits<16>>,
     pub ring_b: Signal<In, Bits<16>>,
@@ -52,6 +53,8 @@ pub struct FccRepJoinsProbe {
     pub o_row: Signal<Out, Bits<7>>,
     pub o_col: Signal<Out, Bits<12>>,
     pub o_label: Signal<Out, Bits<16>>,
+    pub o_start: Signal<Out, Bit>,
+    pub o_ring_first: Signal<Out, Bit>,
     pub o_hold_drop: Signal<Out, Bits<16>>,
     pub o_hold_rep: Signal<Out, Bits<16>>,
     pub j_valid: Signal<Out, Bit>,
@@ -80,6 +83,7 @@ impl FccRepJoinsProbe {
             col: Default::default(),
             label: Default::default(),
             start: Default::default(),
+            ring_first: Default::default(),
             ring: Default::default(),
             ring_a: Default::default(),
             ring_b: Default::default(),
@@ -106,6 +110,8 @@ impl FccRepJoinsProbe {
             o_row: Default::default(),
             o_col: Default::default(),
             o_label: Default::default(),
+            o_start: Default::default(),
+            o_ring_first: Default::default(),
             o_hold_drop: Default::default(),
             o_hold_rep: Default::default(),
             j_valid: Default::default(),
@@ -133,6 +139,7 @@ impl Logic for FccRepJoinsProbe {
         self.pix.next.col = self.col.val();
         self.pix.next.label = self.label.val();
         self.pix.next.start = self.start.val();
+        self.pix.next.ring_first = self.ring_first.val();
         self.pix.next.ring = self.ring.val();
         self.pix.next.ring_a = self.ring_a.val();
         self.pix.next.ring_b = self.ring_b.val();
@@ -175,6 +182,8 @@ impl Logic for FccRepJoinsProbe {
         self.o_row.next = self.joins.out.val().row;
         self.o_col.next = self.joins.out.val().col;
         self.o_label.next = self.joins.out.val().label;
+        self.o_start.next = self.joins.out.val().start;
+        self.o_ring_first.next = self.joins.out.val().ring_first;
         self.o_hold_drop.next = self.joins.out.val().hold_drop;
         self.o_hold_rep.next = self.joins.out.val().hold_rep;
         self.j_valid.next = self.joins.j_valid.val();
