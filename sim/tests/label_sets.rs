@@ -5,7 +5,7 @@
 //! many times over; ops offered in bursts and sparse, with makes beside
 //! them; deep trees; a reset mid-run. Every event is checked, in op order:
 //! a find's root and slot, a join's roots and slots kept and gone (the
-//! smaller root keeps its slot) and whether it merged two sets. A mismatch
+//! second label's root keeps its slot) and whether it merged two sets. A mismatch
 //! prints the op, expected, got and the seed.
 
 use std::collections::VecDeque;
@@ -367,8 +367,8 @@ fn every_event_follows_the_model_with_labels_made_again() {
     eprintln!("total: {} ops, {} merges", total.0, total.1);
 }
 
-/// A chain 64 deep: each new label joined with the root, which is
-/// larger, so the old root goes under it; then finds from
+/// A chain 64 deep: each new label `l` joined as `(top, l)`, so the old
+/// root goes under it; then finds from
 /// the deepest label and the shallowest in turn (the younger one done
 /// first, waiting for the older), and joins from both ends.
 #[test]

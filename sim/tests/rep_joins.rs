@@ -11,8 +11,9 @@
 //!   pixel), one for one,
 //!   against the model of docs/column-core.md, item 3: a run's
 //!   representative is a label of its cluster; a pixel's smallest named
-//!   representative `m` becomes every named run's, every other distinct
-//!   value is a join `(x, m)`, and the next pixel sees the rewrite; at the
+//!   representative `m` (a run it starts counting only when it names no
+//!   other) becomes every named run's, every other distinct value is a
+//!   join `(x, m)`, and the next pixel sees the rewrite; at the
 //!   last column a ring check's pair is one more join;
 //! * the clusters: a union-find over the labels, fed only by the joins,
 //!   makes each cluster the golden stream closes one set, holding no label
@@ -166,7 +167,14 @@ impl Bench {
                     named.push(r);
                 }
             }
-            let m = named.iter().map(|r| self.rep[r]).min().expect("own run");
+            // A run the pixel starts takes the others' minimum when it
+            // names others (it does not rename their cluster).
+            let m = named
+                .iter()
+                .filter(|&&r| !(px.start && r == px.run && named.len() > 1))
+                .map(|r| self.rep[r])
+                .min()
+                .expect("own run");
             for r in &named {
                 let x = self.rep[r];
                 if x != m && !joins.contains(&(x, m)) {

@@ -1,6 +1,6 @@
 //! The union-find over labels as the column core's benches model it
 //! (`FccLabelSets`' contract): a forest over labels, each root with its
-//! record slot, the larger root going under the smaller on a join; each
+//! record slot, the first label's root going under the second's on a join; each
 //! open cluster's labels, so that a bench can close it.
 
 pub struct Forest {
@@ -40,6 +40,16 @@ impl Forest {
         x
     }
 
+    /// The words a walk from `x` to its root reads (uncounted).
+    pub fn depth(&self, mut x: u16) -> u64 {
+        let mut words = 1;
+        while self.parent[x as usize] != x {
+            x = self.parent[x as usize];
+            words += 1;
+        }
+        words
+    }
+
     /// Label `l` made a cluster of its own, with slot `s`.
     pub fn make(&mut self, l: u16, s: u16) {
         self.parent[l as usize] = l;
@@ -55,11 +65,11 @@ impl Forest {
             .expect("every made label is in a cluster")
     }
 
-    /// The sets of `a` and `b` united: the root kept, the root gone (the
-    /// larger) and whether they were two.
+    /// The sets of `a` and `b` united: the root kept (`b`'s), the root
+    /// gone (`a`'s) and whether they were two.
     pub fn join(&mut self, a: u16, b: u16) -> (u16, u16, bool) {
         let (ra, rb) = (self.root(a), self.root(b));
-        let (keep, gone) = (ra.min(rb), ra.max(rb));
+        let (keep, gone) = (rb, ra);
         if ra != rb {
             let (ck, cg) = (self.cluster_of(keep), self.cluster_of(gone));
             let moved = std::mem::take(&mut self.clusters[cg]);

@@ -9,7 +9,8 @@
 //!   cycle.
 //! * An *op* (`op_*`, taken when `op_take`): a find (the root and slot of
 //!   `op_a`: a run's flush) or a join (`op_a` and `op_b`'s sets united,
-//!   the larger root linked under the smaller, which keeps its slot). Each
+//!   `op_a`'s root linked under `op_b`'s, which keeps its slot: the
+//!   representative rows name the cluster kept by `op_b`). Each
 //!   gives one event, in order (`ev_*`): a find's root and slot; a join's
 //!   root and slot kept and gone, `ev_merged` when they were two sets.
 //!

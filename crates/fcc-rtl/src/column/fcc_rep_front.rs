@@ -12,7 +12,13 @@
 //! row's latest run, the one before it when the pixel starts one), the
 //! newer first, since a label given out again may still name an old run
 //! further back. `miss` is sticky until reset (a cycle after
-//! the match).
+//! the match). A run pushed by a pixel that names others (a hit) takes
+//! `0xFFFF` as its representative (`push_rep`) until the pixel's minimum
+//! rewrites it: above every label, it leaves the minimum to the others'
+//! representatives (a new run takes its neighbours' cluster's name rather
+//! than renaming it, which would only make more joins), and a pixel in
+//! flight that names it takes the rewrite's `m` in its correction, as the
+//! rewrite never raises a value.
 
 use rust_hdl::prelude::*;
 
@@ -41,6 +47,7 @@ pub struct FccRepFront {
     pub adv: Signal<Out, Bit>,
     pub shift: Signal<Out, Bit>,
     pub push: Signal<Out, Bit>,
+    pub push_rep: Signal<Out, Bits<16>>,
     pub a1_pix: Signal<Out, RunPix>,
     pub a1_hit: Vec<Signal<Out, Bit>>,
     pub a1_eq: Vec<Signal<Out, Bit>>,
@@ -60,6 +67,8 @@ pub struct FccRepFront {
     m0: Vec<Signal<Local, Bit>>,
     m1: Vec<Signal<Local, Bit>>,
     any0: Signal<Local, Bit>,
+    /// The input pixel names a run by a hit.
+    named: Signal<Local, Bit>,
     rep_q: Vec<DFF<Bits<16>>>,
     /// A1's match missed last cycle (registered before `miss_q` takes it:
     /// the match is a long path).
@@ -97,6 +106,7 @@ impl FccRepFront {
             adv: Default::default(),
             shift: Default::default(),
             push: Default::default(),
+            push_rep: Default::default(),
             a1_pix: Default::default(),
             a1_hit: vec_of(ne),
             a1_eq: vec_of(ne * n),
@@ -114,6 +124,7 @@ impl FccRepFront {
             m0: vec_of(n),
             m1: vec_of(n),
             any0: Default::default(),
+            named: Default::default(),
             rep_q: vec_of(np),
             miss_p: Default::default(),
             miss_q: Default::default(),
@@ -137,6 +148,16 @@ impl Logic for FccRepFront {
         self.take.next = self.inp.val().valid & !self.busy.val() & self.head_ok.val();
         self.shift.next = self.take.val();
         self.push.next = self.take.val() & self.inp.val().start;
+        self.named.next = false;
+        for e in 0..self.inp_hit.len() {
+            if self.inp_hit[e].val() {
+                self.named.next = true;
+            }
+        }
+        self.push_rep.next = self.inp.val().label;
+        if self.named.val() & self.inp.val().lok {
+            self.push_rep.next = self.none.val();
+        }
         if !self.busy.val() {
             self.pix_q.d.next = self.pix_zero.val();
             if self.take.val() {

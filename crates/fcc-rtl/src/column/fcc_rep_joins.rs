@@ -203,6 +203,7 @@ impl Logic for FccRepJoins {
         self.window.shift.next = self.front.shift.val();
         self.window.push.next = self.front.push.val();
         self.window.push_label.next = self.inp.val().label;
+        self.window.push_rep.next = self.front.push_rep.val();
         // A1: the pixel, its mask, the representatives it names.
         self.front.clk.next = self.clk.val();
         self.front.rst.next = self.rst.val();

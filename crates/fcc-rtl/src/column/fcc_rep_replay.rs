@@ -14,7 +14,7 @@ use rust_hdl::prelude::*;
 use super::fcc_rep_first::FccRepFirst;
 use super::fcc_rep_take::FccRepTake;
 use super::RunPix;
-use crate::types::vec_of;
+use crate::types::{kb, vec_of};
 
 /// What R does next while it holds a pixel.
 #[derive(Copy, Clone, Debug, PartialEq, LogicState)]
@@ -61,6 +61,7 @@ pub struct FccRepReplay {
     /// The flags left with the value just sent cleared.
     rem2: Vec<Signal<Local, Bit>>,
     pix_zero: Constant<RunPix>,
+    none: Constant<Bits<16>>,
 }
 
 impl FccRepReplay {
@@ -96,6 +97,7 @@ impl FccRepReplay {
             r_new: Default::default(),
             rem2: vec_of(n),
             pix_zero: Constant::new(RunPix::default()),
+            none: kb(0xFFFF),
         }
     }
 }
@@ -187,6 +189,11 @@ impl Logic for FccRepReplay {
         if self.r_emit.q.val() {
             self.j_a.next = self.r_x.q.val();
             self.j_b.next = self.r_m.q.val();
+            // The run the pixel started, named by `0xFFFF` until its
+            // rewrite (`FccRepFront`): its label.
+            if self.r_x.q.val() == self.none.val() {
+                self.j_a.next = self.r_pix.q.val().label;
+            }
         }
         self.out.next = self.pix_zero.val();
         if self.r_new.q.val() {

@@ -14,7 +14,9 @@
 //!   position 0's row leaves as `wb_*` (to be written back to the table,
 //!   this cycle's rewrite applied).
 //! * `push` (with `shift` only): the pixel moving into the centre starts a
-//!   run, whose label (`push_label`) is its own representative.
+//!   run, with its label (`push_label`) and representative (`push_rep`:
+//!   its label, or `0xFFFF` until the pixel's minimum rewrites it when it
+//!   names other runs).
 //! * `rw_valid`: the representatives at the positions of `rw_mask`
 //!   (position `j`'s run slot `k` at `j * (h + 1) + k`, as the window is
 //!   this cycle) become `rw_rep`, at the edge, before the shift moves them;
@@ -39,6 +41,7 @@ pub struct FccRowReps {
     pub load_age: Vec<Signal<In, Bits<REP_AGE_BITS>>>,
     pub push: Signal<In, Bit>,
     pub push_label: Signal<In, Bits<16>>,
+    pub push_rep: Signal<In, Bits<16>>,
     pub rw_valid: Signal<In, Bit>,
     pub rw_mask: Vec<Signal<In, Bit>>,
     pub rw_rep: Signal<In, Bits<16>>,
@@ -86,6 +89,7 @@ impl FccRowReps {
             load_age: vec_of(n),
             push: Default::default(),
             push_label: Default::default(),
+            push_rep: Default::default(),
             rw_valid: Default::default(),
             rw_mask: vec_of(p * n),
             rw_rep: Default::default(),
@@ -164,7 +168,7 @@ impl Logic for FccRowReps {
                             self.age_q[(c + 1) * nn + k].q.val() + self.one_age.val();
                         if self.age_q[(c + 1) * nn + k].q.val() == self.oldest.val() {
                             self.label_q[c * nn + k].d.next = self.push_label.val();
-                            self.rep_q[c * nn + k].d.next = self.push_label.val();
+                            self.rep_q[c * nn + k].d.next = self.push_rep.val();
                             self.age_q[c * nn + k].d.next = self.zero_age.val();
                         }
                     }

@@ -8,7 +8,7 @@
 //! Ops are taken in order, up to [`SET_OPS`] in flight (`FccSetOp`s, the
 //! oldest first, each known by a sequence number its walks carry): a find
 //! (`op_join` low: the root of `op_a`) or a join (the roots of `op_a` and
-//! `op_b`, then the larger root linked under the smaller). A new op is
+//! `op_b`, then `op_a`'s root linked under `op_b`'s). A new op is
 //! taken while a place is free, whatever the read port does, so that
 //! `op_take` reads no word (it ends the queue's longest path); the reads
 //! go at the free cycles of the port, the oldest op's first (a new op's
@@ -104,15 +104,13 @@ pub struct FccSetWalks {
     l_valid: Signal<Local, Bit>,
     retire: Signal<Local, Bit>,
     linking: Signal<Local, Bit>,
-    /// A join whose root 1 is the smaller; the roots kept and gone.
-    swap: Signal<Local, Bit>,
+    /// The roots kept and gone (a join keeps root 1, `b`'s).
     keep: Signal<Local, Bits<16>>,
     keep_slot: Signal<Local, Bits<SLOT_BITS>>,
     gone: Signal<Local, Bits<16>>,
     gone_slot: Signal<Local, Bits<SLOT_BITS>>,
-    /// Root 1 is the smaller, and the roots a link writes (a join's
-    /// only: without the find's case, the write's word is a level sooner).
-    lt: Signal<Local, Bit>,
+    /// The roots a link writes (a join's only: without the find's case,
+    /// the write's word is a level sooner).
     w_keep: Signal<Local, Bits<16>>,
     w_gone: Signal<Local, Bits<16>>,
     /// Per place: free after this cycle's retire; the new op goes there.
@@ -187,12 +185,10 @@ impl Default for FccSetWalks {
             l_valid: Default::default(),
             retire: Default::default(),
             linking: Default::default(),
-            swap: Default::default(),
             keep: Default::default(),
             keep_slot: Default::default(),
             gone: Default::default(),
             gone_slot: Default::default(),
-            lt: Default::default(),
             w_keep: Default::default(),
             w_gone: Default::default(),
             free: vec_of(SET_OPS),
@@ -267,19 +263,14 @@ impl Logic for FccSetWalks {
         self.linking.next = self.retire.val()
             & self.ops[0].is_join.val()
             & (self.ops[0].root0.val() != self.ops[0].root1.val());
-        self.lt.next = self.ops[0].root1.val() < self.ops[0].root0.val();
-        self.swap.next = self.ops[0].is_join.val() & self.lt.val();
-        self.w_keep.next = self.ops[0].root0.val();
-        self.w_gone.next = self.ops[0].root1.val();
-        if self.lt.val() {
-            self.w_keep.next = self.ops[0].root1.val();
-            self.w_gone.next = self.ops[0].root0.val();
-        }
+        // A join links `a`'s root under `b`'s (a find keeps its one root).
+        self.w_keep.next = self.ops[0].root1.val();
+        self.w_gone.next = self.ops[0].root0.val();
         self.keep.next = self.ops[0].root0.val();
         self.keep_slot.next = self.ops[0].slot0.val();
         self.gone.next = self.ops[0].root1.val();
         self.gone_slot.next = self.ops[0].slot1.val();
-        if self.swap.val() {
+        if self.ops[0].is_join.val() {
             self.keep.next = self.ops[0].root1.val();
             self.keep_slot.next = self.ops[0].slot1.val();
             self.gone.next = self.ops[0].root0.val();
