@@ -16,8 +16,9 @@
 //! free). Ops retire in order, the oldest, one a cycle, each with one event
 //! (`ev_*`, registered): a find's root and its slot; a join's two roots
 //! and slots, `ev_merged` when they differed and the link was written (a
-//! make waits for the write port while a join may retire: `mk_ready`).
-//! The others move up when the oldest retires.
+//! make waits for the write port while a join may retire: `mk_ready`;
+//! the retire, the link and the event are `FccSetRetire`'s). The others
+//! move up when the oldest retires.
 //!
 //! A walk that read the linked word before the link was written (another
 //! op's, or one started in the link's cycle) found a root that no longer
@@ -34,6 +35,7 @@ use rust_hdl::prelude::*;
 use super::fcc_label_sets::SLOT_BITS;
 use super::fcc_set_op::{FccSetOp, SEQ_BITS};
 use super::fcc_set_reads::FccSetReads;
+use super::fcc_set_retire::FccSetRetire;
 use crate::types::{kb, vec_of};
 
 /// Ops in flight at most (their sequence numbers must stay distinct).
@@ -84,35 +86,13 @@ pub struct FccSetWalks {
     p2_seq: DFF<Bits<SEQ_BITS>>,
     p2_side: DFF<Bit>,
     p2_addr: DFF<Bits<16>>,
+    /// The oldest op's retire, its link and its event.
+    ret: FccSetRetire,
     /// The next op's sequence number, and each place's op's (they move
     /// with the ops).
     seq: DFF<Bits<SEQ_BITS>>,
     seqs: Vec<DFF<Bits<SEQ_BITS>>>,
-    /// The last link, for the two cycles after it (`l1`, `l2`).
-    l1: DFF<Bit>,
-    l2: DFF<Bit>,
-    l_gone: DFF<Bits<16>>,
-    l_keep: DFF<Bits<16>>,
-    l_keep_slot: DFF<Bits<SLOT_BITS>>,
-    evv: DFF<Bit>,
-    evj: DFF<Bit>,
-    evm: DFF<Bit>,
-    evk: DFF<Bits<16>>,
-    evks: DFF<Bits<SLOT_BITS>>,
-    evg: DFF<Bits<16>>,
-    evgs: DFF<Bits<SLOT_BITS>>,
-    l_valid: Signal<Local, Bit>,
     retire: Signal<Local, Bit>,
-    linking: Signal<Local, Bit>,
-    /// The roots kept and gone (a join keeps root 1, `b`'s).
-    keep: Signal<Local, Bits<16>>,
-    keep_slot: Signal<Local, Bits<SLOT_BITS>>,
-    gone: Signal<Local, Bits<16>>,
-    gone_slot: Signal<Local, Bits<SLOT_BITS>>,
-    /// The roots a link writes (a join's only: without the find's case,
-    /// the write's word is a level sooner).
-    w_keep: Signal<Local, Bits<16>>,
-    w_gone: Signal<Local, Bits<16>>,
     /// Per place: free after this cycle's retire; the new op goes there.
     free: Vec<Signal<Local, Bit>>,
     take: Vec<Signal<Local, Bit>>,
@@ -168,29 +148,10 @@ impl Default for FccSetWalks {
             p2_seq: Default::default(),
             p2_side: Default::default(),
             p2_addr: Default::default(),
+            ret: Default::default(),
             seq: Default::default(),
             seqs: vec_of(SET_OPS),
-            l1: Default::default(),
-            l2: Default::default(),
-            l_gone: Default::default(),
-            l_keep: Default::default(),
-            l_keep_slot: Default::default(),
-            evv: Default::default(),
-            evj: Default::default(),
-            evm: Default::default(),
-            evk: Default::default(),
-            evks: Default::default(),
-            evg: Default::default(),
-            evgs: Default::default(),
-            l_valid: Default::default(),
             retire: Default::default(),
-            linking: Default::default(),
-            keep: Default::default(),
-            keep_slot: Default::default(),
-            gone: Default::default(),
-            gone_slot: Default::default(),
-            w_keep: Default::default(),
-            w_gone: Default::default(),
             free: vec_of(SET_OPS),
             take: vec_of(SET_OPS),
             more: Default::default(),
@@ -213,29 +174,7 @@ impl Logic for FccSetWalks {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self,
-            clk,
-            p1_valid,
-            p1_seq,
-            p1_side,
-            p1_addr,
-            p2_valid,
-            p2_seq,
-            p2_side,
-            p2_addr,
-            seq,
-            l1,
-            l2,
-            l_gone,
-            l_keep,
-            l_keep_slot,
-            evv,
-            evj,
-            evm,
-            evk,
-            evks,
-            evg,
-            evgs
+            self, clk, p1_valid, p1_seq, p1_side, p1_addr, p2_valid, p2_seq, p2_side, p2_addr, seq
         );
         for i in 0..(self._n) {
             self.ops[i].clk.next = self.clk.val();
@@ -246,36 +185,19 @@ impl Logic for FccSetWalks {
         // The word that shows: a root ends its walk.
         self.more.next = self.p2_valid.q.val() & (self.word_parent.val() != self.p2_addr.q.val());
         self.w_done.next = self.p2_valid.q.val() & !self.more.val();
-        self.l_valid.next = self.l1.q.val() | self.l2.q.val();
-        // Retire the oldest once its walks are done and its roots chased:
-        // not in the cycle after a link, when a root recorded before it may
-        // be the one linked. A join that may retire keeps the write port
-        // from makes (whether it links or not: `mk_ready` reads no root).
-        self.retire.next = self.ops[0].valid.val()
-            & self.ops[0].done0.val()
-            & !self.l1.q.val()
-            & (!self.ops[0].is_join.val() | self.ops[0].done1.val());
-        self.mk_ready.next = !(self.ops[0].valid.val()
-            & self.ops[0].done0.val()
-            & !self.l1.q.val()
-            & self.ops[0].is_join.val()
-            & self.ops[0].done1.val());
-        self.linking.next = self.retire.val()
-            & self.ops[0].is_join.val()
-            & (self.ops[0].root0.val() != self.ops[0].root1.val());
-        // A join links `a`'s root under `b`'s (a find keeps its one root).
-        self.w_keep.next = self.ops[0].root1.val();
-        self.w_gone.next = self.ops[0].root0.val();
-        self.keep.next = self.ops[0].root0.val();
-        self.keep_slot.next = self.ops[0].slot0.val();
-        self.gone.next = self.ops[0].root1.val();
-        self.gone_slot.next = self.ops[0].slot1.val();
-        if self.ops[0].is_join.val() {
-            self.keep.next = self.ops[0].root1.val();
-            self.keep_slot.next = self.ops[0].slot1.val();
-            self.gone.next = self.ops[0].root0.val();
-            self.gone_slot.next = self.ops[0].slot0.val();
-        }
+        // The oldest op's retire (`FccSetRetire`).
+        self.ret.clk.next = self.clk.val();
+        self.ret.rst.next = self.rst.val();
+        self.ret.o_valid.next = self.ops[0].valid.val();
+        self.ret.o_join.next = self.ops[0].is_join.val();
+        self.ret.o_done0.next = self.ops[0].done0.val();
+        self.ret.o_done1.next = self.ops[0].done1.val();
+        self.ret.o_root0.next = self.ops[0].root0.val();
+        self.ret.o_root1.next = self.ops[0].root1.val();
+        self.ret.o_slot0.next = self.ops[0].slot0.val();
+        self.ret.o_slot1.next = self.ops[0].slot1.val();
+        self.retire.next = self.ret.retire.val();
+        self.mk_ready.next = self.ret.mk_ready.val();
         // Places free after this cycle's retire (the ones in use come
         // first); a new op goes to the first, with one free, whatever the
         // read port does (`op_take` reads no word).
@@ -350,10 +272,10 @@ impl Logic for FccSetWalks {
             self.ops[i].w_side.next = self.p2_side.q.val();
             self.ops[i].w_root.next = self.p2_addr.q.val();
             self.ops[i].w_slot.next = self.word_slot.val();
-            self.ops[i].l_valid.next = self.l_valid.val();
-            self.ops[i].l_gone.next = self.l_gone.q.val();
-            self.ops[i].l_keep.next = self.l_keep.q.val();
-            self.ops[i].l_keep_slot.next = self.l_keep_slot.q.val();
+            self.ops[i].l_valid.next = self.ret.l_valid.val();
+            self.ops[i].l_gone.next = self.ret.l_gone.val();
+            self.ops[i].l_keep.next = self.ret.l_keep.val();
+            self.ops[i].l_keep_slot.next = self.ret.l_keep_slot.val();
         }
         for i in 0..(self._n - 1) {
             self.ops[i].sh_valid.next = self.ops[i + 1].valid.val();
@@ -386,32 +308,18 @@ impl Logic for FccSetWalks {
                 self.seqs[i].d.next = self.seq.q.val();
             }
         }
-        // Retire: the event, the link, kept for the chase.
-        self.evv.d.next = self.retire.val();
-        self.evj.d.next = self.ops[0].is_join.val();
-        self.evm.d.next = self.linking.val();
-        self.evk.d.next = self.keep.val();
-        self.evks.d.next = self.keep_slot.val();
-        self.evg.d.next = self.gone.val();
-        self.evgs.d.next = self.gone_slot.val();
-        self.link_en.next = self.linking.val();
-        self.link_gone.next = self.w_gone.val();
-        self.link_keep.next = self.w_keep.val();
-        self.l1.d.next = self.linking.val();
-        self.l2.d.next = self.l1.q.val();
-        if self.linking.val() {
-            self.l_gone.d.next = self.gone.val();
-            self.l_keep.d.next = self.keep.val();
-            self.l_keep_slot.d.next = self.keep_slot.val();
-        }
-        self.ev_valid.next = self.evv.q.val();
-        self.ev_join.next = self.evj.q.val();
-        self.ev_merged.next = self.evm.q.val();
-        self.ev_keep.next = self.evk.q.val();
-        self.ev_keep_slot.next = self.evks.q.val();
-        self.ev_gone.next = self.evg.q.val();
-        self.ev_gone_slot.next = self.evgs.q.val();
-        self.busy.next = self.evv.q.val();
+        // Retire: the event, the link.
+        self.link_en.next = self.ret.link_en.val();
+        self.link_gone.next = self.ret.link_gone.val();
+        self.link_keep.next = self.ret.link_keep.val();
+        self.ev_valid.next = self.ret.ev_valid.val();
+        self.ev_join.next = self.ret.ev_join.val();
+        self.ev_merged.next = self.ret.ev_merged.val();
+        self.ev_keep.next = self.ret.ev_keep.val();
+        self.ev_keep_slot.next = self.ret.ev_keep_slot.val();
+        self.ev_gone.next = self.ret.ev_gone.val();
+        self.ev_gone_slot.next = self.ret.ev_gone_slot.val();
+        self.busy.next = self.ret.ev_valid.val();
         for i in 0..(self._n) {
             if self.ops[i].valid.val() {
                 self.busy.next = true;
@@ -421,9 +329,6 @@ impl Logic for FccSetWalks {
         if self.rst.val() {
             self.p1_valid.d.next = false;
             self.p2_valid.d.next = false;
-            self.l1.d.next = false;
-            self.l2.d.next = false;
-            self.evv.d.next = false;
             self.seq.d.next = self.zero_seq.val();
         }
     }

@@ -77,6 +77,7 @@ pub mod fcc_set_pack;
 pub mod fcc_set_pick;
 pub mod fcc_set_queue;
 pub mod fcc_set_reads;
+pub mod fcc_set_retire;
 pub mod fcc_set_took;
 pub mod fcc_set_walks;
 pub mod fcc_slot_check;
