@@ -57,7 +57,7 @@ pub struct FccSetRetire {
     evks: DFF<Bits<SLOT_BITS>>,
     evg: DFF<Bits<16>>,
     evgs: DFF<Bits<SLOT_BITS>>,
-    ret: Signal<Local, Bit>,
+    fire: Signal<Local, Bit>,
     linking: Signal<Local, Bit>,
     /// The roots kept and gone (a join keeps root 1, `b`'s).
     keep: Signal<Local, Bits<16>>,
@@ -70,18 +70,18 @@ impl Logic for FccSetRetire {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clk, l1, l2, lg, lk, lks, evv, evj, evm, evk, evks, evg, evgs);
-        self.ret.next = self.o_valid.val()
+        self.fire.next = self.o_valid.val()
             & self.o_done0.val()
             & !self.l1.q.val()
             & (!self.o_join.val() | self.o_done1.val());
-        self.retire.next = self.ret.val();
+        self.retire.next = self.fire.val();
         self.mk_ready.next = !(self.o_valid.val()
             & self.o_done0.val()
             & !self.l1.q.val()
             & self.o_join.val()
             & self.o_done1.val());
         self.linking.next =
-            self.ret.val() & self.o_join.val() & (self.o_root0.val() != self.o_root1.val());
+            self.fire.val() & self.o_join.val() & (self.o_root0.val() != self.o_root1.val());
         self.keep.next = self.o_root0.val();
         self.keep_slot.next = self.o_slot0.val();
         self.gone.next = self.o_root1.val();
@@ -108,7 +108,7 @@ impl Logic for FccSetRetire {
         self.l_gone.next = self.lg.q.val();
         self.l_keep.next = self.lk.q.val();
         self.l_keep_slot.next = self.lks.q.val();
-        self.evv.d.next = self.ret.val();
+        self.evv.d.next = self.fire.val();
         self.evj.d.next = self.o_join.val();
         self.evm.d.next = self.linking.val();
         self.evk.d.next = self.keep.val();

@@ -87,7 +87,7 @@ pub struct FccSetWalks {
     p2_side: DFF<Bit>,
     p2_addr: DFF<Bits<16>>,
     /// The oldest op's retire, its link and its event.
-    ret: FccSetRetire,
+    oldest: FccSetRetire,
     /// The next op's sequence number, and each place's op's (they move
     /// with the ops).
     seq: DFF<Bits<SEQ_BITS>>,
@@ -148,7 +148,7 @@ impl Default for FccSetWalks {
             p2_seq: Default::default(),
             p2_side: Default::default(),
             p2_addr: Default::default(),
-            ret: Default::default(),
+            oldest: Default::default(),
             seq: Default::default(),
             seqs: vec_of(SET_OPS),
             retire: Default::default(),
@@ -186,18 +186,18 @@ impl Logic for FccSetWalks {
         self.more.next = self.p2_valid.q.val() & (self.word_parent.val() != self.p2_addr.q.val());
         self.w_done.next = self.p2_valid.q.val() & !self.more.val();
         // The oldest op's retire (`FccSetRetire`).
-        self.ret.clk.next = self.clk.val();
-        self.ret.rst.next = self.rst.val();
-        self.ret.o_valid.next = self.ops[0].valid.val();
-        self.ret.o_join.next = self.ops[0].is_join.val();
-        self.ret.o_done0.next = self.ops[0].done0.val();
-        self.ret.o_done1.next = self.ops[0].done1.val();
-        self.ret.o_root0.next = self.ops[0].root0.val();
-        self.ret.o_root1.next = self.ops[0].root1.val();
-        self.ret.o_slot0.next = self.ops[0].slot0.val();
-        self.ret.o_slot1.next = self.ops[0].slot1.val();
-        self.retire.next = self.ret.retire.val();
-        self.mk_ready.next = self.ret.mk_ready.val();
+        self.oldest.clk.next = self.clk.val();
+        self.oldest.rst.next = self.rst.val();
+        self.oldest.o_valid.next = self.ops[0].valid.val();
+        self.oldest.o_join.next = self.ops[0].is_join.val();
+        self.oldest.o_done0.next = self.ops[0].done0.val();
+        self.oldest.o_done1.next = self.ops[0].done1.val();
+        self.oldest.o_root0.next = self.ops[0].root0.val();
+        self.oldest.o_root1.next = self.ops[0].root1.val();
+        self.oldest.o_slot0.next = self.ops[0].slot0.val();
+        self.oldest.o_slot1.next = self.ops[0].slot1.val();
+        self.retire.next = self.oldest.retire.val();
+        self.mk_ready.next = self.oldest.mk_ready.val();
         // Places free after this cycle's retire (the ones in use come
         // first); a new op goes to the first, with one free, whatever the
         // read port does (`op_take` reads no word).
@@ -272,10 +272,10 @@ impl Logic for FccSetWalks {
             self.ops[i].w_side.next = self.p2_side.q.val();
             self.ops[i].w_root.next = self.p2_addr.q.val();
             self.ops[i].w_slot.next = self.word_slot.val();
-            self.ops[i].l_valid.next = self.ret.l_valid.val();
-            self.ops[i].l_gone.next = self.ret.l_gone.val();
-            self.ops[i].l_keep.next = self.ret.l_keep.val();
-            self.ops[i].l_keep_slot.next = self.ret.l_keep_slot.val();
+            self.ops[i].l_valid.next = self.oldest.l_valid.val();
+            self.ops[i].l_gone.next = self.oldest.l_gone.val();
+            self.ops[i].l_keep.next = self.oldest.l_keep.val();
+            self.ops[i].l_keep_slot.next = self.oldest.l_keep_slot.val();
         }
         for i in 0..(self._n - 1) {
             self.ops[i].sh_valid.next = self.ops[i + 1].valid.val();
@@ -309,17 +309,17 @@ impl Logic for FccSetWalks {
             }
         }
         // Retire: the event, the link.
-        self.link_en.next = self.ret.link_en.val();
-        self.link_gone.next = self.ret.link_gone.val();
-        self.link_keep.next = self.ret.link_keep.val();
-        self.ev_valid.next = self.ret.ev_valid.val();
-        self.ev_join.next = self.ret.ev_join.val();
-        self.ev_merged.next = self.ret.ev_merged.val();
-        self.ev_keep.next = self.ret.ev_keep.val();
-        self.ev_keep_slot.next = self.ret.ev_keep_slot.val();
-        self.ev_gone.next = self.ret.ev_gone.val();
-        self.ev_gone_slot.next = self.ret.ev_gone_slot.val();
-        self.busy.next = self.ret.ev_valid.val();
+        self.link_en.next = self.oldest.link_en.val();
+        self.link_gone.next = self.oldest.link_gone.val();
+        self.link_keep.next = self.oldest.link_keep.val();
+        self.ev_valid.next = self.oldest.ev_valid.val();
+        self.ev_join.next = self.oldest.ev_join.val();
+        self.ev_merged.next = self.oldest.ev_merged.val();
+        self.ev_keep.next = self.oldest.ev_keep.val();
+        self.ev_keep_slot.next = self.oldest.ev_keep_slot.val();
+        self.ev_gone.next = self.oldest.ev_gone.val();
+        self.ev_gone_slot.next = self.oldest.ev_gone_slot.val();
+        self.busy.next = self.oldest.ev_valid.val();
         for i in 0..(self._n) {
             if self.ops[i].valid.val() {
                 self.busy.next = true;
