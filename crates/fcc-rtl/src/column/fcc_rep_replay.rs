@@ -6,8 +6,11 @@
 //! (`Take`), then clears its equals (`Check`): three cycles a further
 //! join, and one to find none left. At the last column it then sends the
 //! ring check's pair (`Ring`). So a pixel's joins follow it, all of them
-//! before the next pixel, and while `busy` is high the pixel out last has
-//! joins still to come (its slot's marker waits for them).
+//! before the next pixel; `more` says the pixel out last has joins still
+//! to come (it falls with the last, or a cycle after it when `Pick` only
+//! then finds none left), and its slot's marker waits for them. A join's
+//! `x` of `0xFFFF` is the run the pixel started (`FccRepFront`'s
+//! `push_rep`): it goes out as the pixel's label.
 
 use rust_hdl::prelude::*;
 
