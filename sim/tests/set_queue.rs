@@ -1013,12 +1013,13 @@ const CHAIN_LABELS: u16 = 8191;
 /// column, once that column's marker is out, must be one set of the
 /// union-find holding the labels of its runs and no other: so the joins
 /// and flushes of the blocks as built make the golden clusters. The
-/// cycles a slot took must stay under `ceiling`.
-fn chained_frame(name: &str, ceiling: f64) {
+/// cycles a slot took must stay under `ceiling`. At filter size `k`.
+fn chained_frame(name: &str, k: usize, ceiling: f64) {
     use column::pack_io::pack_in;
     use column::rep_io::rep_in;
     use std::collections::HashMap;
     let (p, f) = capture(name);
+    let p = FccParams { fsize: k, ..p };
     let (rows, cols) = (p.rows, p.cols);
     // The golden runs and, per column (the frame end's at `cols`), the
     // runs of each cluster closed there.
@@ -1053,6 +1054,7 @@ fn chained_frame(name: &str, ceiling: f64) {
 
     let build = FccParams {
         rows,
+        fsize: k,
         ..FccParams::default()
     };
     let mut rj = PlainDut::new(
@@ -1209,7 +1211,7 @@ fn chained_frame(name: &str, ceiling: f64) {
     let cycles = b.cycle - start;
     let per = cycles as f64 / slots as f64;
     eprintln!(
-        "{name} (K = 7, bridge 16, ring 16), chained: {slots} slots in {cycles} cycles ({per:.3} a slot; pixels held {held_room} cycles for room, {held_flushes} for the flushes' wait, {held_ready} by the representative rows); out {} makes, {} finds, {} joins ({} merged), {} markers; {closed} clusters closed; at most {peak_flushes} flushes waiting, {peak_labels} labels given out; the walks' words {} (the longest {})",
+        "{name} (K = {k}, bridge 16, ring 16), chained: {slots} slots in {cycles} cycles ({per:.3} a slot; pixels held {held_room} cycles for room, {held_flushes} for the flushes' wait, {held_ready} by the representative rows); out {} makes, {} finds, {} joins ({} merged), {} markers; {closed} clusters closed; at most {peak_flushes} flushes waiting, {peak_labels} labels given out; the walks' words {} (the longest {})",
         b.out[0], b.out[1], b.out[2], b.merged, b.out[3], b.m.walked, b.m.f.walk_max
     );
     assert!(
@@ -1219,20 +1221,24 @@ fn chained_frame(name: &str, ceiling: f64) {
     assert_eq!(b.out[0], b.out[1], "{name}: a flush per run made");
     assert!(
         per <= ceiling,
-        "{name}: chained, {per:.3} cycles a slot, more than {ceiling}"
+        "{name}, K = {k}: chained, {per:.3} cycles a slot, more than {ceiling}"
     );
 }
 
-/// The slot table's front as built, on the captured frames (see
-/// [`chained_frame`]): a ceiling each, as measured (1.096 and 1.019; the
-/// target is 1.05, docs/column-core.md, item 3, "Chained"), so that a
-/// change that slows the chain fails here.
+/// The slot table's front as built, on the captured frames at every K
+/// (see [`chained_frame`]): a ceiling each, a little over the cycles a
+/// slot measured (the target is 1.05, docs/column-core.md, item 3,
+/// "Chained"), so that a change that slows the chain fails here.
 #[test]
 fn a_captured_frame_through_the_rep_rows_the_packer_and_the_queue() {
-    for (name, ceiling) in [
-        ("OS-2-128-U1_v2.3.0_1024x10", 1.10),
-        ("OS-0-128-U1_v2.3.0_1024x10", 1.025),
+    for (k, os2, os0) in [
+        (3, 1.085, 1.045),
+        (5, 1.09, 1.035),
+        (7, 1.10, 1.025),
+        (9, 1.085, 1.02),
+        (11, 1.045, 1.025),
     ] {
-        chained_frame(name, ceiling);
+        chained_frame("OS-2-128-U1_v2.3.0_1024x10", k, os2);
+        chained_frame("OS-0-128-U1_v2.3.0_1024x10", k, os0);
     }
 }
