@@ -5,7 +5,9 @@
 //! many times over; ops offered in bursts and sparse, with makes beside
 //! them; deep trees; a reset mid-run. Every event is checked, in op order:
 //! a find's root and slot, a join's roots and slots kept and gone (the
-//! second label's root keeps its slot) and whether it merged two sets. A mismatch
+//! second label's root keeps its slot when the join files a run just
+//! started under the second's cluster, else the smaller root) and whether
+//! it merged two sets. A mismatch
 //! prints the op, expected, got and the seed.
 
 use std::collections::VecDeque;
@@ -28,6 +30,7 @@ c_struct! {
         pub mk_slot: u16,
         pub op_valid: u8,
         pub op_join: u8,
+        pub op_under: u8,
         pub op_a: u16,
         pub op_b: u16,
     }
@@ -63,6 +66,7 @@ struct Ev {
 #[derive(Debug, Clone, Copy)]
 struct Op {
     join: bool,
+    under: bool,
     a: u16,
     b: u16,
 }
@@ -99,7 +103,7 @@ impl Model {
                 gone_slot: 0,
             };
         }
-        let (keep, gone, merged) = self.f.join(op.a, op.b);
+        let (keep, gone, merged) = self.f.join(op.a, op.b, op.under);
         if merged {
             self.free_slots.push(self.f.slot[gone as usize]);
         }
@@ -173,6 +177,7 @@ impl Bench {
             mk_slot: mk.map_or(0, |m| m.1),
             op_valid: head.is_some() as u8,
             op_join: head.is_some_and(|o| o.join) as u8,
+            op_under: head.is_some_and(|o| o.under) as u8,
             op_a: head.map_or(0, |o| o.a),
             op_b: head.map_or(0, |o| o.b),
         };
@@ -321,12 +326,14 @@ fn random_run(bits: u32, seed: u64, cycles: u64, reset_at: u64) -> (u64, u64, u6
                 let bb = live[rng.gen_range(0..live.len())];
                 Op {
                     join: true,
+                    under: rng.gen_bool(0.5),
                     a,
                     b: bb,
                 }
             } else {
                 Op {
                     join: false,
+                    under: false,
                     a,
                     b: 0,
                 }
@@ -385,6 +392,7 @@ fn deep_chains_and_finds_done_out_of_order_give_events_in_order() {
         b.make((l, s));
         let op = Op {
             join: true,
+            under: false,
             a: top,
             b: l,
         };
@@ -400,6 +408,7 @@ fn deep_chains_and_finds_done_out_of_order_give_events_in_order() {
         for a in [top, 1 + k % 5] {
             let op = Op {
                 join: false,
+                under: false,
                 a,
                 b: 0,
             };
@@ -408,6 +417,7 @@ fn deep_chains_and_finds_done_out_of_order_give_events_in_order() {
         }
         let op = Op {
             join: true,
+            under: false,
             a: top - k,
             b: 1 + k,
         };
@@ -456,6 +466,7 @@ fn shallow_sets_take_a_find_or_a_join_in_two_cycles() {
             for k in 1..10u16 {
                 let op = Op {
                     join: true,
+                    under: false,
                     a: 1 + c * 10 + k,
                     b: 1 + c * 10,
                 };
@@ -476,12 +487,14 @@ fn shallow_sets_take_a_find_or_a_join_in_two_cycles() {
                 next += 1;
                 Op {
                     join: true,
+                    under: true,
                     a: next - 1,
                     b: 1 + 10 * rng.gen_range(0..40u16),
                 }
             } else {
                 Op {
                     join: false,
+                    under: false,
                     a: made[rng.gen_range(0..made.len())],
                     b: 0,
                 }

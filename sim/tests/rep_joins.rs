@@ -34,7 +34,7 @@ mod column;
 
 use column::rep_io::{rep_in, RjIn, RjOut};
 use column::{build, pixels, random_frame, run_params, Pix};
-use fcc_golden::{Frame, Stream};
+use fcc_golden::Frame;
 use fcc_params::FccParams;
 use fcc_rtl::BenchBlock;
 use fcc_sim::{load_plain, PlainDut};
@@ -79,7 +79,7 @@ struct Feed {
 struct Fed {
     px: Pix,
     label: u16,
-    joins: Vec<(u16, u16)>,
+    joins: Vec<(u16, u16, bool)>,
     /// The run its row stops holding (its label, 0 for none) and its
     /// representative in the model before the pixel.
     drop: u16,
@@ -98,7 +98,7 @@ struct Bench {
     /// `got` are, and whether `j_more` said more would come.
     pending: VecDeque<Fed>,
     last: Option<Fed>,
-    got: Vec<(u16, u16)>,
+    got: Vec<(u16, u16, bool)>,
     more: bool,
     uf: Uf,
     joins: u64,
@@ -177,14 +177,16 @@ impl Bench {
                 .expect("own run");
             for r in &named {
                 let x = self.rep[r];
-                if x != m && !joins.contains(&(x, m)) {
-                    joins.push((x, m));
+                // The run started, filed under its neighbours' cluster.
+                let under = px.start && *r == px.run;
+                if x != m && !joins.contains(&(x, m, under)) {
+                    joins.push((x, m, under));
                 }
                 self.rep.insert(*r, m);
             }
         }
         if px.ring.is_some() {
-            joins.push((i.ring_a, i.ring_b));
+            joins.push((i.ring_a, i.ring_b, false));
         }
         joins.sort_unstable();
         let fed = Fed {
@@ -214,7 +216,7 @@ impl Bench {
                 self.what,
                 self.seed
             );
-            self.got.push((o.j_a, o.j_b));
+            self.got.push((o.j_a, o.j_b, o.j_under != 0));
             self.uf.union(o.j_a, o.j_b);
             self.joins += 1;
         }
@@ -342,17 +344,10 @@ impl Bench {
         );
     }
 
-    /// Close the clusters with these pixels: each one set of the joins'
+    /// Close the clusters of these runs: each one set of the joins'
     /// union-find holding no other open run's label; their labels freed.
-    fn close(&mut self, runs: &[u32], clusters: &[Vec<u32>], at: &str) {
-        let mut closing: Vec<Vec<u32>> = Vec::new();
-        for px in clusters {
-            let mut rs: Vec<u32> = px.iter().map(|&k| runs[k as usize]).collect();
-            rs.sort_unstable();
-            rs.dedup();
-            closing.push(rs);
-        }
-        for rs in &closing {
+    fn close(&mut self, closing: &[Vec<u32>], at: &str) {
+        for rs in closing {
             let root = self.uf.find(self.label_of[&rs[0]]);
             for r in rs {
                 let l = self.label_of[r];
@@ -379,7 +374,7 @@ impl Bench {
                 );
             }
         }
-        for rs in &closing {
+        for rs in closing {
             for r in rs {
                 let l = self.label_of.remove(r).expect("a label");
                 self.rep.remove(r);
@@ -394,26 +389,8 @@ impl Bench {
 fn run_frame(b: &mut Bench, p: &FccParams, f: &Frame, feed: Feed, rng: &mut ChaCha8Rng) {
     assert_eq!(p.fsize, b.k, "the run's K is the build's");
     let (rows, cols) = (p.rows, p.cols);
-    let mut golden = Stream::new(p).unwrap();
-    let mut column = vec![None; rows];
-    let mut closed: Vec<Vec<Vec<u32>>> = Vec::new();
-    for c in 0..cols {
-        for (r, v) in column.iter_mut().enumerate() {
-            *v = f.get(r, c);
-        }
-        let recs = golden.push_column(&column).unwrap();
-        closed.push(
-            (0..recs.len())
-                .map(|k| golden.pixels_of(k).to_vec())
-                .collect(),
-        );
-    }
-    let recs = golden.finish().unwrap();
-    let at_end: Vec<Vec<u32>> = (0..recs.len())
-        .map(|k| golden.pixels_of(k).to_vec())
-        .collect();
-    let mut runs = Vec::new();
-    golden.runs_into(&mut runs).unwrap();
+    let column::Closing { runs, at: mut closed } = column::closing(p, f);
+    let at_end = closed.pop().expect("the frame end's closes");
     let pix = pixels(p, f, &runs);
     let mut deferred: Vec<Vec<u32>> = Vec::new();
     for c in 0..cols {
@@ -427,7 +404,7 @@ fn run_frame(b: &mut Bench, p: &FccParams, f: &Frame, feed: Feed, rng: &mut ChaC
         if feed.drain {
             b.drain(p);
             let at = format!("{}: after column {c}, seed {}", b.what, b.seed);
-            b.close(&runs, &closed[c], &at);
+            b.close(&closed[c], &at);
         } else {
             deferred.extend(closed[c].iter().cloned());
         }
@@ -435,7 +412,7 @@ fn run_frame(b: &mut Bench, p: &FccParams, f: &Frame, feed: Feed, rng: &mut ChaC
     b.drain(p);
     let at = format!("{}: at the frame end, seed {}", b.what, b.seed);
     deferred.extend(at_end);
-    b.close(&runs, &deferred, &at);
+    b.close(&deferred, &at);
     assert!(
         b.label_of.is_empty(),
         "{at}: runs left open after the frame"
@@ -547,17 +524,7 @@ fn a_reset_mid_frame_starts_afresh() {
     let mut b = Bench::new(&build, &p, seed, "reset mid-frame");
     for cut in [5, 16 * 17 + 3, 16 * 39 + 15] {
         let f = random_frame(p.rows, p.cols, 0.8, 0.05, true, &mut rng);
-        let mut runs = Vec::new();
-        let mut golden = Stream::new(&p).unwrap();
-        let mut column = vec![None; p.rows];
-        for c in 0..p.cols {
-            for (r, v) in column.iter_mut().enumerate() {
-                *v = f.get(r, c);
-            }
-            golden.push_column(&column).unwrap();
-        }
-        golden.finish().unwrap();
-        golden.runs_into(&mut runs).unwrap();
+        let runs = column::closing(&p, &f).runs;
         for px in pixels(&p, &f, &runs).iter().take(cut) {
             let (i, fed) = b.input(&p, px);
             while !b.cycle(&p, i, Some(&fed)) {}

@@ -15,7 +15,7 @@
 mod column;
 
 use column::{build, pixels, random_frame, run_params, Pix};
-use fcc_golden::{Acc, Frame, Stream};
+use fcc_golden::{Acc, Frame};
 use fcc_params::FccParams;
 use fcc_rtl::BenchBlock;
 use fcc_sim::core_form::{offset_binary as ob, CoreAcc};
@@ -244,17 +244,7 @@ impl Bench {
 
 /// The golden runs of `f` and its pixels as the block gets them.
 fn frame_pixels(p: &FccParams, f: &Frame) -> Vec<Pix> {
-    let mut s = Stream::new(p).expect("stream");
-    let mut column = vec![None; p.rows];
-    for c in 0..p.cols {
-        for (i, v) in column.iter_mut().enumerate() {
-            *v = f.get(i, c);
-        }
-        s.push_column(&column).expect("column");
-    }
-    s.finish().expect("finish");
-    let mut runs = Vec::new();
-    s.runs_into(&mut runs).expect("runs");
+    let runs = column::closing(p, f).runs;
     assert!(
         runs.iter().all(|&r| r < u32::from(u16::MAX)),
         "labels are run numbers: too many runs"

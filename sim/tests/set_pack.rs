@@ -22,13 +22,13 @@ use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
 /// An entry of the queue, the fields its parts define: a find's label; a
-/// make's label, first pixel and ring flag; a join's pair; a marker's
-/// column.
+/// make's label, first pixel and ring flag; a join's pair and whether it
+/// files a run just started (`under`); a marker's column.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 struct Entry {
     find: Option<u16>,
     make: Option<(u16, u16, u8, bool)>,
-    join: Option<(u16, u16)>,
+    join: Option<(u16, u16, bool)>,
     mark: Option<u16>,
 }
 
@@ -45,7 +45,7 @@ fn got(o: &PkOut) -> Option<Entry> {
     Some(Entry {
         find: (o.q_find != 0).then_some(o.q_f),
         make: (o.q_make != 0).then_some((o.q_m, o.q_col, o.q_row, o.q_ring != 0)),
-        join: (o.q_join != 0).then_some((o.q_ja, o.q_jb)),
+        join: (o.q_join != 0).then_some((o.q_ja, o.q_jb, o.q_under != 0)),
         mark: (o.q_mark != 0).then_some(o.q_col),
     })
 }
@@ -108,7 +108,7 @@ struct Px {
     col: u16,
     start: Option<(u16, bool)>,
     drop: Option<(u16, u16)>,
-    joins: Vec<(u16, u16)>,
+    joins: Vec<(u16, u16, bool)>,
 }
 
 fn random_px(rng: &mut ChaCha8Rng, row: u8, col: u16, last_col: bool) -> Px {
@@ -121,9 +121,11 @@ fn random_px(rng: &mut ChaCha8Rng, row: u8, col: u16, last_col: bool) -> Px {
         8 => 2,
         _ => rng.gen_range(3..6),
     };
-    let mut joins: Vec<(u16, u16)> = (0..n).map(|_| (label(rng), label(rng))).collect();
+    let mut joins: Vec<(u16, u16, bool)> = (0..n)
+        .map(|_| (label(rng), label(rng), rng.gen_bool(0.3)))
+        .collect();
     if last_col && rng.gen_bool(0.5) {
-        joins.push((label(rng), label(rng)));
+        joins.push((label(rng), label(rng), false));
     }
     Px {
         row,
@@ -168,12 +170,12 @@ fn send(b: &mut Bench, rng: &mut ChaCha8Rng, px: &Px, last_row: u8) {
         mark: (is_last && n <= 1).then_some(px.col),
         ..Entry::default()
     };
-    if let Some(&(a, b2)) = px.joins.first() {
-        (i.j_valid, i.j_a, i.j_b) = (1, a, b2);
-        want.join = Some((a, b2));
+    if let Some(&(a, b2, under)) = px.joins.first() {
+        (i.j_valid, i.j_a, i.j_b, i.j_under) = (1, a, b2, under as u8);
+        want.join = Some((a, b2, under));
     }
     b.step(i, Some(want));
-    for (k, &(a, j)) in px.joins.iter().enumerate().skip(1) {
+    for (k, &(a, j, under)) in px.joins.iter().enumerate().skip(1) {
         for _ in 0..rng.gen_range(0..3) {
             b.step(PkIn { j_more: 1, ..base }, None);
         }
@@ -183,11 +185,12 @@ fn send(b: &mut Bench, rng: &mut ChaCha8Rng, px: &Px, last_row: u8) {
                 j_valid: 1,
                 j_a: a,
                 j_b: j,
+                j_under: under as u8,
                 j_more: (!last || late) as u8,
                 ..base
             },
             Some(Entry {
-                join: Some((a, j)),
+                join: Some((a, j, under)),
                 mark: (is_last && last && !late).then_some(px.col),
                 ..Entry::default()
             }),
@@ -272,7 +275,7 @@ fn a_reset_forgets_a_marker_waiting_for_joins() {
             ..PkIn::default()
         },
         Some(Entry {
-            join: Some((5, 2)),
+            join: Some((5, 2, false)),
             ..Entry::default()
         }),
     );

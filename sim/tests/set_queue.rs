@@ -40,6 +40,7 @@ c_struct! {
         pub in_join: u8,
         pub in_mark: u8,
         pub in_ring: u8,
+        pub in_under: u8,
         pub in_f: u16,
         pub in_m: u16,
         pub in_ja: u16,
@@ -101,6 +102,8 @@ struct Op {
     col: u16,
     row: u8,
     ring: bool,
+    /// A join filing `a`, a run just started, under `b`'s cluster.
+    under: bool,
 }
 
 /// A pixel slot's ops, pushed together (an entry of the queue): a find, a
@@ -109,7 +112,7 @@ struct Op {
 struct Slot {
     find: Option<u16>,
     make: Option<(u16, bool)>,
-    join: Option<(u16, u16)>,
+    join: Option<(u16, u16, bool)>,
     mark: bool,
     col: u16,
     row: u8,
@@ -132,7 +135,7 @@ impl Slot {
         match op.kind {
             Kind::Find => self.find = Some(op.a),
             Kind::Make => self.make = Some((op.a, op.ring)),
-            Kind::Join => self.join = Some((op.a, op.b)),
+            Kind::Join => self.join = Some((op.a, op.b, op.under)),
             Kind::Mark => self.mark = true,
         }
     }
@@ -159,11 +162,15 @@ impl Slot {
             col: self.col,
             row: self.row,
             ring,
+            under: false,
         };
         let mut v = Vec::new();
         v.extend(self.find.map(|f| op(Kind::Find, f, 0, false)));
         v.extend(self.make.map(|(m, ring)| op(Kind::Make, m, 0, ring)));
-        v.extend(self.join.map(|(a, b)| op(Kind::Join, a, b, false)));
+        v.extend(self.join.map(|(a, b, under)| Op {
+            under,
+            ..op(Kind::Join, a, b, false)
+        }));
         if self.mark {
             v.push(op(Kind::Mark, 0, 0, false));
         }
@@ -285,7 +292,7 @@ impl Model {
             }
             Kind::Join => {
                 self.walked += self.f.depth(op.a) + self.f.depth(op.b);
-                let (keep, gone, merged) = self.f.join(op.a, op.b);
+                let (keep, gone, merged) = self.f.join(op.a, op.b, op.under);
                 o.merged = merged;
                 if merged {
                     o.other = self.f.slot[gone as usize];
@@ -372,6 +379,7 @@ impl Bench {
             in_m: op.and_then(|o| o.make).map_or(0, |m| m.0),
             in_ja: op.and_then(|o| o.join).map_or(0, |j| j.0),
             in_jb: op.and_then(|o| o.join).map_or(0, |j| j.1),
+            in_under: op.is_some_and(|o| o.join.is_some_and(|j| j.2)) as u8,
             in_col: op.map_or(0, |o| o.col),
             in_row: op.map_or(0, |o| o.row),
             slot_ok: slot_ok as u8,
@@ -453,12 +461,23 @@ impl Bench {
             if idle_before && self.idle {
                 return;
             }
-            assert!(
-                self.cycle - start < limit,
-                "{}: {} ops still to come after {limit} cycles",
-                self.what,
-                self.pending.len()
-            );
+            if self.cycle - start >= limit {
+                let words: u64 = self
+                    .pending
+                    .iter()
+                    .filter(|o| matches!(o.kind, Kind::Find | Kind::Join))
+                    .map(|o| {
+                        let d = |l: u16| if self.m.f.made[l as usize] { self.m.f.depth(l) } else { 0 };
+                        d(o.a) + if o.kind == Kind::Join { d(o.b) } else { 0 }
+                    })
+                    .sum();
+                panic!(
+                    "{}: {} ops still to come after {limit} cycles (their walks about {words} words; the longest walk so far {})",
+                    self.what,
+                    self.pending.len(),
+                    self.m.f.walk_max
+                );
+            }
         }
     }
 }
@@ -507,8 +526,8 @@ fn random_run(bits: u32, seed: u64, cycles: u64, reset_at: u64) -> Bench {
         let open = b.m.f.clusters.len() + b.pending.iter().filter(|o| o.kind == Kind::Make).count();
         // Fewer open than slots (512), as the core's open limit keeps them.
         if open > (labels / 2).min(400) || (rng.gen_bool(0.002) && !b.m.f.clusters.is_empty()) {
-            // (Random joins link clusters under labels just made, so trees
-            // grow deep: a drain may take long.)
+            // (Random joins make deeper trees than the representative
+            // rows' do: a drain may take long.)
             b.drain(200_000);
             let c = rng.gen_range(0..b.m.f.clusters.len());
             let (labs, s) = b.m.f.close(c);
@@ -547,8 +566,14 @@ fn random_run(bits: u32, seed: u64, cycles: u64, reset_at: u64) -> Bench {
                     s.make = make(&mut rng, &mut live, &mut b.m.f);
                 }
                 if !live.is_empty() && rng.gen_bool(p_join.max(0.3)) {
-                    let a = live[rng.gen_range(0..live.len())];
-                    s.join = Some((a, live[rng.gen_range(0..live.len())]));
+                    let b = live[rng.gen_range(0..live.len())];
+                    // Half the time the label just made, filed under the
+                    // other's cluster (`under`), as the representative
+                    // rows send a run a pixel starts.
+                    s.join = match s.make {
+                        Some((l, _)) if l != b && rng.gen_bool(0.5) => Some((l, b, true)),
+                        _ => Some((live[rng.gen_range(0..live.len())], b, false)),
+                    };
                 }
                 s.mark = row == 0 || rng.gen_bool(0.2);
             } else if row == 0 || rng.gen_bool(0.01) {
@@ -558,7 +583,7 @@ fn random_run(bits: u32, seed: u64, cycles: u64, reset_at: u64) -> Bench {
             } else {
                 let a = live[rng.gen_range(0..live.len())];
                 if rng.gen_bool(p_join) {
-                    s.join = Some((a, live[rng.gen_range(0..live.len())]));
+                    s.join = Some((a, live[rng.gen_range(0..live.len())], false));
                 } else {
                     s.find = Some(a);
                 }
@@ -612,6 +637,7 @@ fn a_burst_goes_at_the_union_finds_rate() {
         col: 0,
         row: 0,
         ring: false,
+        under: false,
     };
     // 40 clusters of 10 labels, joined to their first.
     for l in 1..=400u16 {
@@ -686,6 +712,7 @@ fn ops_without_a_make_pass_while_no_slot_is_free() {
         col,
         row: 0,
         ring: false,
+        under: false,
     };
     for l in 1..=20u16 {
         b.m.f.made[l as usize] = true;
@@ -735,24 +762,8 @@ struct Trace {
 
 fn corpus_trace(p: &FccParams, f: &fcc_golden::Frame) -> Trace {
     let (rows, cols) = (p.rows, p.cols);
-    let mut stream = fcc_golden::Stream::new(p).expect("stream");
-    let mut column = vec![None; rows];
-    // One pixel of each record closed at each column (the frame end's at
-    // `cols`), its run once the frame is done.
-    let mut closed_px: Vec<Vec<u32>> = vec![Vec::new(); cols + 1];
-    for (c, closed) in closed_px.iter_mut().take(cols).enumerate() {
-        for (i, v) in column.iter_mut().enumerate() {
-            *v = f.get(i, c);
-        }
-        let n = stream.push_column(&column).expect("a column").len();
-        closed.extend((0..n).map(|k| stream.pixels_of(k)[0]));
-    }
-    let n = stream.finish().expect("the frame end").len();
-    for k in 0..n {
-        closed_px[cols].push(stream.pixels_of(k)[0]);
-    }
-    let mut runs = Vec::new();
-    stream.runs_into(&mut runs).expect("runs");
+    let closing = column::closing(p, f);
+    let runs = closing.runs;
     assert!(
         runs.iter().all(|&r| r <= u32::from(u16::MAX)),
         "more runs than 16-bit labels"
@@ -765,6 +776,7 @@ fn corpus_trace(p: &FccParams, f: &fcc_golden::Frame) -> Trace {
         col: col as u16,
         row: row as u8,
         ring,
+        under: false,
     };
     let n_runs = runs.iter().copied().max().unwrap_or(0) as usize + 1;
     let mut rep: Vec<u32> = (0..n_runs as u32).collect();
@@ -794,7 +806,10 @@ fn corpus_trace(p: &FccParams, f: &fcc_golden::Frame) -> Trace {
             let own = usize::from(px.start && reps.len() > 1);
             let least = *reps[own..].iter().min().expect("one at least");
             for &x in reps.iter().filter(|&&x| x != least) {
-                ops.push(op(Kind::Join, x, least, c, r, false));
+                ops.push(Op {
+                    under: own == 1 && x == reps[0],
+                    ..op(Kind::Join, x, least, c, r, false)
+                });
             }
             rep[px.run as usize] = least;
             for &(_, other) in &px.hits {
@@ -814,9 +829,10 @@ fn corpus_trace(p: &FccParams, f: &fcc_golden::Frame) -> Trace {
         .map(|r| op(Kind::Find, rep[held[r] as usize], 0, cols - 1, r, false))
         .collect();
     end.push(op(Kind::Mark, 0, 0, cols, 0, false));
-    let closes = closed_px
+    let closes = closing
+        .at
         .iter()
-        .map(|px| px.iter().map(|&i| runs[i as usize] as u16).collect())
+        .map(|cl| cl.iter().map(|rs| rs[0] as u16).collect())
         .collect();
     Trace { slots, end, closes }
 }
@@ -894,7 +910,7 @@ fn a_captured_frames_ops_go_through_at_a_slot_a_cycle() {
     // target is 1.05): a ceiling each, so that a change that slows the
     // queue fails here.
     for (name, ceiling) in [
-        ("OS-2-128-U1_v2.3.0_1024x10", 1.07),
+        ("OS-2-128-U1_v2.3.0_1024x10", 1.02),
         ("OS-0-128-U1_v2.3.0_1024x10", 1.01),
     ] {
         captured_frame(name, ceiling);
@@ -990,14 +1006,15 @@ fn packed_entry(e: &PkOut) -> Option<Slot> {
     (e.q_valid != 0).then(|| Slot {
         find: (e.q_find != 0).then_some(e.q_f),
         make: (e.q_make != 0).then_some((e.q_m, e.q_ring != 0)),
-        join: (e.q_join != 0).then_some((e.q_ja, e.q_jb)),
+        join: (e.q_join != 0).then_some((e.q_ja, e.q_jb, e.q_under != 0)),
         mark: e.q_mark != 0,
         col: e.q_col,
         row: e.q_row,
     })
 }
 
-/// Labels the representative rows give out (their build's 13 bits).
+/// Labels the chain gives out and takes back (below the 15-bit build's
+/// `0xFFFF`; as the rep_joins bench gives out).
 const CHAIN_LABELS: u16 = 8191;
 
 /// A captured frame through the slot table's front as built, chained
@@ -1023,33 +1040,7 @@ fn chained_frame(name: &str, k: usize, ceiling: f64) {
     let (rows, cols) = (p.rows, p.cols);
     // The golden runs and, per column (the frame end's at `cols`), the
     // runs of each cluster closed there.
-    let mut stream = fcc_golden::Stream::new(&p).expect("stream");
-    let mut column = vec![None; rows];
-    let mut closed_px: Vec<Vec<Vec<u32>>> = vec![Vec::new(); cols + 1];
-    for (c, closed) in closed_px.iter_mut().take(cols).enumerate() {
-        for (i, v) in column.iter_mut().enumerate() {
-            *v = f.get(i, c);
-        }
-        let n = stream.push_column(&column).expect("a column").len();
-        closed.extend((0..n).map(|k| stream.pixels_of(k).to_vec()));
-    }
-    let n = stream.finish().expect("the frame end").len();
-    closed_px[cols].extend((0..n).map(|k| stream.pixels_of(k).to_vec()));
-    let mut runs = Vec::new();
-    stream.runs_into(&mut runs).expect("runs");
-    let closes: Vec<Vec<Vec<u32>>> = closed_px
-        .iter()
-        .map(|recs| {
-            recs.iter()
-                .map(|px| {
-                    let mut rs: Vec<u32> = px.iter().map(|&k| runs[k as usize]).collect();
-                    rs.sort_unstable();
-                    rs.dedup();
-                    rs
-                })
-                .collect()
-        })
-        .collect();
+    let column::Closing { runs, at: closes } = column::closing(&p, &f);
     let pixels = column::pixels(&p, &f, &runs);
 
     let build = FccParams {
@@ -1152,6 +1143,7 @@ fn chained_frame(name: &str, k: usize, ceiling: f64) {
                         col: (cols - 1) as u16,
                         row: r as u8,
                         ring: false,
+                        under: false,
                     })
                 }));
                 end.push_back(Slot::of(Op {
@@ -1161,6 +1153,7 @@ fn chained_frame(name: &str, k: usize, ceiling: f64) {
                     col: cols as u16,
                     row: 0,
                     ring: false,
+                    under: false,
                 }));
                 end_sent = true;
             }
@@ -1232,11 +1225,11 @@ fn chained_frame(name: &str, k: usize, ceiling: f64) {
 #[test]
 fn a_captured_frame_through_the_rep_rows_the_packer_and_the_queue() {
     for (k, os2, os0) in [
-        (3, 1.085, 1.045),
-        (5, 1.09, 1.035),
-        (7, 1.10, 1.025),
-        (9, 1.085, 1.02),
-        (11, 1.045, 1.025),
+        (3, 1.08, 1.045),
+        (5, 1.065, 1.035),
+        (7, 1.05, 1.025),
+        (9, 1.045, 1.022),
+        (11, 1.035, 1.022),
     ] {
         chained_frame("OS-2-128-U1_v2.3.0_1024x10", k, os2);
         chained_frame("OS-0-128-U1_v2.3.0_1024x10", k, os0);

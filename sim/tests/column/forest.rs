@@ -1,6 +1,8 @@
 //! The union-find over labels as the column core's benches model it
 //! (`FccLabelSets`' contract): a forest over labels, each root with its
-//! record slot, the first label's root going under the second's on a join; each
+//! record slot; on a join the second label's root kept when the first is
+//! a run just started filed under the second's cluster (`under`), else the
+//! smaller root; each
 //! open cluster's labels, so that a bench can close it.
 
 pub struct Forest {
@@ -65,11 +67,11 @@ impl Forest {
             .expect("every made label is in a cluster")
     }
 
-    /// The sets of `a` and `b` united: the root kept (`b`'s), the root
-    /// gone (`a`'s) and whether they were two.
-    pub fn join(&mut self, a: u16, b: u16) -> (u16, u16, bool) {
+    /// The sets of `a` and `b` united: the root kept (`b`'s with `under`,
+    /// else the smaller), the root gone and whether they were two.
+    pub fn join(&mut self, a: u16, b: u16, under: bool) -> (u16, u16, bool) {
         let (ra, rb) = (self.root(a), self.root(b));
-        let (keep, gone) = (rb, ra);
+        let (keep, gone) = if under || rb < ra { (rb, ra) } else { (ra, rb) };
         if ra != rb {
             let (ck, cg) = (self.cluster_of(keep), self.cluster_of(gone));
             let moved = std::mem::take(&mut self.clusters[cg]);

@@ -9,7 +9,7 @@ pub mod forest;
 pub mod pack_io;
 pub mod rep_io;
 
-use fcc_golden::{Frame, Point, Thresholds};
+use fcc_golden::{Frame, Point, Stream, Thresholds};
 use fcc_params::FccParams;
 use rand::Rng;
 use rand_chacha::ChaCha8Rng;
@@ -120,6 +120,51 @@ pub fn pixels(p: &FccParams, f: &Frame, runs: &[u32]) -> Vec<Pix> {
         }
     }
     out
+}
+
+/// The golden stream over a frame, as the column core's benches check
+/// against it: the frame's runs (by pixel, row-major) and, per column, the
+/// clusters closed at it.
+pub struct Closing {
+    /// Each pixel's golden run (0: none), row-major.
+    pub runs: Vec<u32>,
+    /// Per column (the frame end's at `cols`), the runs of each cluster
+    /// closed there, each cluster's sorted and once each.
+    pub at: Vec<Vec<Vec<u32>>>,
+}
+
+/// Stream `f` through the golden `Stream` column by column (spec §9) and
+/// collect its runs and, by column, its closed clusters' runs.
+pub fn closing(p: &FccParams, f: &Frame) -> Closing {
+    let (rows, cols) = (p.rows, p.cols);
+    let mut stream = Stream::new(p).expect("the golden stream");
+    let mut column = vec![None; rows];
+    let mut pixels: Vec<Vec<Vec<u32>>> = vec![Vec::new(); cols + 1];
+    for (c, closed) in pixels.iter_mut().take(cols).enumerate() {
+        for (r, v) in column.iter_mut().enumerate() {
+            *v = f.get(r, c);
+        }
+        let n = stream.push_column(&column).expect("a column").len();
+        closed.extend((0..n).map(|k| stream.pixels_of(k).to_vec()));
+    }
+    let n = stream.finish().expect("the frame end").len();
+    pixels[cols].extend((0..n).map(|k| stream.pixels_of(k).to_vec()));
+    let mut runs = Vec::new();
+    stream.runs_into(&mut runs).expect("runs");
+    let at = pixels
+        .iter()
+        .map(|recs| {
+            recs.iter()
+                .map(|px| {
+                    let mut rs: Vec<u32> = px.iter().map(|&k| runs[k as usize]).collect();
+                    rs.sort_unstable();
+                    rs.dedup();
+                    rs
+                })
+                .collect()
+        })
+        .collect();
+    Closing { runs, at }
 }
 
 /// A seeded frame of objects whose rows meet and part: a range profile

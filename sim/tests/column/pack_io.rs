@@ -20,6 +20,7 @@ c_struct! {
         pub j_valid: u8,
         pub j_a: u16,
         pub j_b: u16,
+        pub j_under: u8,
         pub j_more: u8,
         pub last_row: u8,
     }
@@ -34,6 +35,7 @@ c_struct! {
         pub q_join: u8,
         pub q_mark: u8,
         pub q_ring: u8,
+        pub q_under: u8,
         pub q_f: u16,
         pub q_m: u16,
         pub q_ja: u16,
@@ -58,6 +60,7 @@ pub fn pack_in(o: &RjOut, last_row: u8) -> PkIn {
         j_valid: o.j_valid,
         j_a: o.j_a,
         j_b: o.j_b,
+        j_under: o.j_under,
         j_more: o.j_more,
         last_row,
     }

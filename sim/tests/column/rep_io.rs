@@ -58,6 +58,7 @@ c_struct! {
         pub j_more: u8,
         pub j_a: u16,
         pub j_b: u16,
+        pub j_under: u8,
         pub miss: u8,
     }
 }

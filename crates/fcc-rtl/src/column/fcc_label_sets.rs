@@ -9,8 +9,11 @@
 //!   cycle.
 //! * An *op* (`op_*`, taken when `op_take`): a find (the root and slot of
 //!   `op_a`: a run's flush) or a join (`op_a` and `op_b`'s sets united,
-//!   `op_a`'s root linked under `op_b`'s, which keeps its slot: the
-//!   representative rows name the cluster kept by `op_b`). Each
+//!   one root linked under the other, which keeps its slot). With
+//!   `op_under` (`op_a` is a run the pixel just started, filed under its
+//!   neighbours' cluster, named `op_b` by the representative rows) `op_b`'s
+//!   root is kept, so that the cluster's name stays near its root; else the
+//!   smaller root (the two clusters' roots, whichever the rows name). Each
 //!   gives one event, in order (`ev_*`): a find's root and slot; a join's
 //!   root and slot kept and gone, `ev_merged` when they were two sets.
 //!
@@ -36,6 +39,7 @@ pub struct FccLabelSets {
     pub mk_ready: Signal<Out, Bit>,
     pub op_valid: Signal<In, Bit>,
     pub op_join: Signal<In, Bit>,
+    pub op_under: Signal<In, Bit>,
     pub op_a: Signal<In, Bits<16>>,
     pub op_b: Signal<In, Bits<16>>,
     pub op_take: Signal<Out, Bit>,
@@ -66,6 +70,7 @@ impl FccLabelSets {
             mk_ready: Default::default(),
             op_valid: Default::default(),
             op_join: Default::default(),
+            op_under: Default::default(),
             op_a: Default::default(),
             op_b: Default::default(),
             op_take: Default::default(),
@@ -94,6 +99,7 @@ impl Logic for FccLabelSets {
         self.walks.rst.next = self.rst.val();
         self.walks.op_valid.next = self.op_valid.val();
         self.walks.op_join.next = self.op_join.val();
+        self.walks.op_under.next = self.op_under.val();
         self.walks.op_a.next = self.op_a.val();
         self.walks.op_b.next = self.op_b.val();
         self.mk_ready.next = self.walks.mk_ready.val();

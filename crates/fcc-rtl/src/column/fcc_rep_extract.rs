@@ -34,6 +34,7 @@ pub struct FccRepExtract {
     pub j_valid: Signal<Out, Bit>,
     pub j_a: Signal<Out, Bits<16>>,
     pub j_b: Signal<Out, Bits<16>>,
+    pub j_under: Signal<Out, Bit>,
     sieve: FccRepSieve,
     replay: FccRepReplay,
 }
@@ -54,6 +55,7 @@ impl FccRepExtract {
             j_valid: Default::default(),
             j_a: Default::default(),
             j_b: Default::default(),
+            j_under: Default::default(),
             sieve: FccRepSieve::new(n),
             replay: FccRepReplay::new(n),
         }
@@ -86,6 +88,7 @@ impl Logic for FccRepExtract {
         self.out.next = self.replay.out.val();
         self.j_valid.next = self.replay.j_valid.val();
         self.j_a.next = self.replay.j_a.val();
+        self.j_under.next = self.replay.under.val();
         self.j_b.next = self.replay.j_b.val();
     }
 }

@@ -81,6 +81,8 @@ pub struct FccRepJoins {
     pub j_valid: Signal<Out, Bit>,
     pub j_a: Signal<Out, Bits<16>>,
     pub j_b: Signal<Out, Bits<16>>,
+    /// `j_a` is the run the pixel started, filed under `j_b`'s cluster.
+    pub j_under: Signal<Out, Bit>,
     pub miss: Signal<Out, Bit>,
     feed: FccRepRowFeed,
     window: FccRowReps,
@@ -146,6 +148,7 @@ impl FccRepJoins {
             j_valid: Default::default(),
             j_a: Default::default(),
             j_b: Default::default(),
+            j_under: Default::default(),
             miss: Default::default(),
             feed: FccRepRowFeed::new(rows, k, s),
             window: FccRowReps::new(k, s),
@@ -381,6 +384,7 @@ impl Logic for FccRepJoins {
         self.j_more.next = self.extract.more.val();
         self.j_a.next = self.extract.j_a.val();
         self.j_b.next = self.extract.j_b.val();
+        self.j_under.next = self.extract.j_under.val();
         self.miss.next = self.front.miss.val();
     }
 }

@@ -61,6 +61,8 @@ pub struct FccRepJoinsProbe {
     pub j_more: Signal<Out, Bit>,
     pub j_a: Signal<Out, Bits<16>>,
     pub j_b: Signal<Out, Bits<16>>,
+    /// `j_a` is the run the pixel started, filed under `j_b`'s cluster.
+    pub j_under: Signal<Out, Bit>,
     pub miss: Signal<Out, Bit>,
     joins: FccRepJoins,
     pix: Signal<Local, RunPix>,
@@ -118,6 +120,7 @@ impl FccRepJoinsProbe {
             j_more: Default::default(),
             j_a: Default::default(),
             j_b: Default::default(),
+            j_under: Default::default(),
             miss: Default::default(),
             joins: FccRepJoins::new(p.rows, p.fsize),
             pix: Default::default(),
@@ -190,6 +193,7 @@ impl Logic for FccRepJoinsProbe {
         self.j_more.next = self.joins.j_more.val();
         self.j_a.next = self.joins.j_a.val();
         self.j_b.next = self.joins.j_b.val();
+        self.j_under.next = self.joins.j_under.val();
         self.miss.next = self.joins.miss.val();
     }
 }

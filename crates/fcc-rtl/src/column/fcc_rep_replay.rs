@@ -10,7 +10,8 @@
 //! to come (it falls with the last, or a cycle after it when `Pick` only
 //! then finds none left), and its slot's marker waits for them. A join's
 //! `x` of `0xFFFF` is the run the pixel started (`FccRepFront`'s
-//! `push_rep`): it goes out as the pixel's label.
+//! `push_rep`): it goes out as the pixel's label, `under` high (the run
+//! filed under its neighbours' cluster, `m`).
 
 use rust_hdl::prelude::*;
 
@@ -48,6 +49,8 @@ pub struct FccRepReplay {
     pub j_valid: Signal<Out, Bit>,
     pub j_a: Signal<Out, Bits<16>>,
     pub j_b: Signal<Out, Bits<16>>,
+    /// `j_a` is the run the pixel started, filed under `j_b`'s cluster.
+    pub under: Signal<Out, Bit>,
     first: FccRepFirst,
     take: FccRepTake,
     r_pix: DFF<RunPix>,
@@ -86,6 +89,7 @@ impl FccRepReplay {
             j_valid: Default::default(),
             j_a: Default::default(),
             j_b: Default::default(),
+            under: Default::default(),
             first: FccRepFirst::new(n),
             take: FccRepTake::new(n),
             r_pix: Default::default(),
@@ -189,6 +193,7 @@ impl Logic for FccRepReplay {
             & (self.r_emit.q.val() | ((self.r_step.q.val() == ReplayStep::Ring) & self.rb.q.val()));
         self.j_a.next = self.r_pix.q.val().ring_a;
         self.j_b.next = self.r_pix.q.val().ring_b;
+        self.under.next = false;
         if self.r_emit.q.val() {
             self.j_a.next = self.r_x.q.val();
             self.j_b.next = self.r_m.q.val();
@@ -196,6 +201,7 @@ impl Logic for FccRepReplay {
             // rewrite (`FccRepFront`): its label.
             if self.r_x.q.val() == self.none.val() {
                 self.j_a.next = self.r_pix.q.val().label;
+                self.under.next = true;
             }
         }
         self.out.next = self.pix_zero.val();

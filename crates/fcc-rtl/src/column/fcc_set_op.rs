@@ -1,5 +1,6 @@
 //! `FccSetOp`: one op in flight in `FccSetWalks` (docs/column-core.md,
-//! item 3): a find or a join, and per side whether its root is found, the
+//! item 3): a find or a join (`under`: `a` is a run just started, filed
+//! under `b`'s cluster), and per side whether its root is found, the
 //! root and its slot. Every output is a flip-flop. Its sequence number
 //! (its walks carry it) is its place's, kept by `FccSetWalks`.
 //!
@@ -11,6 +12,11 @@
 //!   equal to the linked one, arriving or recorded, becomes the root kept:
 //!   a walk that read the linked word before the link was written found a
 //!   root that is no longer one.
+//! * `lt` says root 1 is below root 0, registered (off the link's path):
+//!   as a root arrives, against the other side's recorded one; else from
+//!   the recorded roots, a cycle after them. `lt_ok` says it is the
+//!   roots' order: not when a chase changed a root in the cycle before (a
+//!   cycle later it is).
 
 use rust_hdl::prelude::*;
 
@@ -29,10 +35,14 @@ pub struct FccSetOp {
     /// keeps them).
     pub seq: Signal<In, Bits<SEQ_BITS>>,
     pub take_join: Signal<In, Bit>,
+    pub take_under: Signal<In, Bit>,
     pub shift: Signal<In, Bit>,
     pub sh_valid: Signal<In, Bit>,
     pub sh_seq: Signal<In, Bits<SEQ_BITS>>,
     pub sh_join: Signal<In, Bit>,
+    pub sh_under: Signal<In, Bit>,
+    /// The next place's roots compared now (its `lt_now`).
+    pub sh_lt: Signal<In, Bit>,
     pub sh_done0: Signal<In, Bit>,
     pub sh_root0: Signal<In, Bits<16>>,
     pub sh_slot0: Signal<In, Bits<SLOT_BITS>>,
@@ -50,6 +60,12 @@ pub struct FccSetOp {
     pub l_keep_slot: Signal<In, Bits<SLOT_BITS>>,
     pub valid: Signal<Out, Bit>,
     pub is_join: Signal<Out, Bit>,
+    pub under: Signal<Out, Bit>,
+    /// Root 1 below root 0, as they are now (combinational, for the
+    /// place before's move up).
+    pub lt_now: Signal<Out, Bit>,
+    pub lt: Signal<Out, Bit>,
+    pub lt_ok: Signal<Out, Bit>,
     pub done0: Signal<Out, Bit>,
     pub root0: Signal<Out, Bits<16>>,
     pub slot0: Signal<Out, Bits<SLOT_BITS>>,
@@ -58,6 +74,19 @@ pub struct FccSetOp {
     pub slot1: Signal<Out, Bits<SLOT_BITS>>,
     v: DFF<Bit>,
     jn: DFF<Bit>,
+    un: DFF<Bit>,
+    lt_q: DFF<Bit>,
+    lt_okq: DFF<Bit>,
+    /// A recorded root is chased this cycle; the arriving one is.
+    chased: Signal<Local, Bit>,
+    w_chased: Signal<Local, Bit>,
+    /// An arriving root against the other side's recorded one (the op's
+    /// own, or the next place's as it moves up): root 1 below root 0.
+    c_own0: Signal<Local, Bit>,
+    c_own1: Signal<Local, Bit>,
+    c_sh0: Signal<Local, Bit>,
+    c_sh1: Signal<Local, Bit>,
+    arr_lt: Signal<Local, Bit>,
     d0: DFF<Bit>,
     r0: DFF<Bits<16>>,
     s0: DFF<Bits<SLOT_BITS>>,
@@ -74,9 +103,28 @@ pub struct FccSetOp {
 impl Logic for FccSetOp {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clk, v, jn, d0, r0, s0, d1, r1, s1);
+        dff_setup!(self, clk, v, jn, un, lt_q, lt_okq, d0, r0, s0, d1, r1, s1);
         self.rt.next = self.w_root.val();
         self.sl.next = self.w_slot.val();
+        self.chased.next = self.l_valid.val()
+            & ((self.r0.q.val() == self.l_gone.val()) | (self.r1.q.val() == self.l_gone.val()));
+        self.w_chased.next = self.l_valid.val() & (self.w_root.val() == self.l_gone.val());
+        self.lt_now.next = self.r1.q.val() < self.r0.q.val();
+        self.lt_q.d.next = self.lt_now.val();
+        self.c_own0.next = self.w_root.val() < self.r0.q.val();
+        self.c_own1.next = self.r1.q.val() < self.w_root.val();
+        self.c_sh0.next = self.w_root.val() < self.sh_root0.val();
+        self.c_sh1.next = self.sh_root1.val() < self.w_root.val();
+        self.arr_lt.next = self.c_own1.val();
+        if self.w_side.val() {
+            self.arr_lt.next = self.c_own0.val();
+        }
+        if self.shift.val() {
+            self.arr_lt.next = self.c_sh1.val();
+            if self.w_side.val() {
+                self.arr_lt.next = self.c_sh0.val();
+            }
+        }
         if self.l_valid.val() {
             if self.w_root.val() == self.l_gone.val() {
                 self.rt.next = self.l_keep.val();
@@ -95,6 +143,7 @@ impl Logic for FccSetOp {
         if self.shift.val() {
             self.v.d.next = self.sh_valid.val();
             self.jn.d.next = self.sh_join.val();
+            self.un.d.next = self.sh_under.val();
             self.d0.d.next = self.sh_done0.val();
             self.r0.d.next = self.sh_root0.val();
             self.s0.d.next = self.sh_slot0.val();
@@ -103,6 +152,7 @@ impl Logic for FccSetOp {
             self.s1.d.next = self.sh_slot1.val();
             self.mine.next =
                 self.w_done.val() & self.sh_valid.val() & (self.w_seq.val() == self.sh_seq.val());
+            self.lt_q.d.next = self.sh_lt.val();
         }
         if self.mine.val() {
             if self.w_side.val() {
@@ -115,9 +165,20 @@ impl Logic for FccSetOp {
                 self.s0.d.next = self.sl.val();
             }
         }
+        // `lt` is the next roots' order unless a chase changes one (a
+        // chase does not reach an op moving up: it is chased a cycle
+        // later).
+        self.lt_okq.d.next = !self.take.val() & (self.shift.val() | !self.chased.val());
+        if self.mine.val() {
+            self.lt_q.d.next = self.arr_lt.val();
+            if self.w_chased.val() {
+                self.lt_okq.d.next = false;
+            }
+        }
         if self.take.val() {
             self.v.d.next = true;
             self.jn.d.next = self.take_join.val();
+            self.un.d.next = self.take_under.val();
             self.d0.d.next = false;
             self.d1.d.next = false;
         }
@@ -126,6 +187,9 @@ impl Logic for FccSetOp {
         }
         self.valid.next = self.v.q.val();
         self.is_join.next = self.jn.q.val();
+        self.under.next = self.un.q.val();
+        self.lt.next = self.lt_q.q.val();
+        self.lt_ok.next = self.lt_okq.q.val();
         self.done0.next = self.d0.q.val();
         self.root0.next = self.r0.q.val();
         self.slot0.next = self.s0.q.val();

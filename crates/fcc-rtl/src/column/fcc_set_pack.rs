@@ -10,8 +10,9 @@
 //!   find of `p_hold_rep`, a label of the run's cluster, when
 //!   `p_hold_drop` names one), the make of the run it starts (`p_start`:
 //!   `p_label`, its first pixel `p_col`, `p_row`, its ring flag), its
-//!   first join, and at the column's last row, with no join to come, the
-//!   column's marker;
+//!   first join (`j_under`: the join files the run the pixel started under
+//!   its neighbours' cluster), and at the column's last row, with no join
+//!   to come, the column's marker;
 //! * each further join in an entry of its own; the last row's marker
 //!   with the join after which `j_more` falls, or alone in the first
 //!   cycle it is low (no pixel comes out then: `FccRepJoins` takes its
@@ -38,6 +39,7 @@ pub struct FccSetPack {
     pub j_valid: Signal<In, Bit>,
     pub j_a: Signal<In, Bits<16>>,
     pub j_b: Signal<In, Bits<16>>,
+    pub j_under: Signal<In, Bit>,
     /// The pixel out last has joins still to come after this cycle's.
     pub j_more: Signal<In, Bit>,
     /// The frame's last row, `R - 1` (constant while a frame runs).
@@ -48,6 +50,7 @@ pub struct FccSetPack {
     pub q_join: Signal<Out, Bit>,
     pub q_mark: Signal<Out, Bit>,
     pub q_ring: Signal<Out, Bit>,
+    pub q_under: Signal<Out, Bit>,
     pub q_f: Signal<Out, Bits<16>>,
     pub q_m: Signal<Out, Bits<16>>,
     pub q_ja: Signal<Out, Bits<16>>,
@@ -81,6 +84,7 @@ impl Logic for FccSetPack {
         self.ent.next.join = self.j_valid.val();
         self.ent.next.mark = self.owed.val() & !self.j_more.val();
         self.ent.next.ring = self.p_ring_first.val();
+        self.ent.next.under = self.j_valid.val() & self.j_under.val();
         self.ent.next.f = self.p_hold_rep.val();
         self.ent.next.m = self.p_label.val();
         self.ent.next.ja = self.j_a.val();
@@ -99,6 +103,7 @@ impl Logic for FccSetPack {
         self.q_join.next = self.e.q.val().join;
         self.q_mark.next = self.e.q.val().mark;
         self.q_ring.next = self.e.q.val().ring;
+        self.q_under.next = self.e.q.val().under;
         self.q_f.next = self.e.q.val().f;
         self.q_m.next = self.e.q.val().m;
         self.q_ja.next = self.e.q.val().ja;

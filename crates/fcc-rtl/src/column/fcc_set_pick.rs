@@ -70,6 +70,7 @@ impl Logic for FccSetPick {
         self.op.next.join = self.sel_join.val();
         self.op.next.mark = !self.sel_find.val() & !self.sel_make.val() & !self.sel_join.val();
         self.op.next.ring = self.bundle.val().ring;
+        self.op.next.under = self.bundle.val().under;
         self.op.next.a = self.bundle.val().ja;
         if self.sel_find.val() {
             self.op.next.a = self.bundle.val().f;

@@ -2,7 +2,8 @@
 //! The slot table's ops come in pixel order, a pixel slot's at once, one
 //! slot a cycle at most (`in_*`, while `room`): its run's flush (*find*: a
 //! label of its cluster), its run's start (*make*: its label, its row and
-//! ring flag), a join of two labels' clusters, and the column's marker
+//! ring flag), a join of two labels' clusters (`in_under`: the first a run
+//! just started, filed under the second's cluster), and the column's marker
 //! (every op of the column is in), any of them, in that order (a slot's
 //! second join comes as a slot of its own). They wait in a FIFO in block
 //! RAM (`2^SET_QUEUE_BITS` slots' ops; `room` is low with fewer than
@@ -40,8 +41,9 @@ pub const SET_QUEUE_ROOM: usize = 64;
 
 /// A pixel slot's ops, an entry of the queue: a find of `f`; a make of
 /// `m` (its first pixel `col` and `row`, its ring flag `ring`); a join of
-/// `ja` and `jb`; the marker of column `col`. Each at the column of the
-/// pixel slot that caused it.
+/// `ja` and `jb` (`under`: `ja` a run just started, filed under `jb`'s
+/// cluster); the marker of column `col`. Each at the column of the pixel
+/// slot that caused it.
 #[derive(Clone, Copy, Debug, PartialEq, Default, LogicStruct)]
 pub struct SetQBundle {
     pub find: Bit,
@@ -49,6 +51,7 @@ pub struct SetQBundle {
     pub join: Bit,
     pub mark: Bit,
     pub ring: Bit,
+    pub under: Bit,
     pub f: Bits<16>,
     pub m: Bits<16>,
     pub ja: Bits<16>,
@@ -58,14 +61,15 @@ pub struct SetQBundle {
 }
 
 /// One op of an entry. A make: `a` its label, `col` and `row` its first
-/// pixel, `ring` its ring flag; a find: `a`; a join: `a` and `b`; a
-/// marker: `col`.
+/// pixel, `ring` its ring flag; a find: `a`; a join: `a` and `b`, `under`
+/// as the entry's; a marker: `col`.
 #[derive(Clone, Copy, Debug, PartialEq, Default, LogicStruct)]
 pub struct SetQOp {
     pub make: Bit,
     pub join: Bit,
     pub mark: Bit,
     pub ring: Bit,
+    pub under: Bit,
     pub a: Bits<16>,
     pub b: Bits<16>,
     pub col: Bits<12>,
@@ -98,6 +102,7 @@ pub struct FccSetQueue {
     pub in_join: Signal<In, Bit>,
     pub in_mark: Signal<In, Bit>,
     pub in_ring: Signal<In, Bit>,
+    pub in_under: Signal<In, Bit>,
     pub in_f: Signal<In, Bits<16>>,
     pub in_m: Signal<In, Bits<16>>,
     pub in_ja: Signal<In, Bits<16>>,
@@ -151,6 +156,7 @@ impl FccSetQueue {
             in_join: Default::default(),
             in_mark: Default::default(),
             in_ring: Default::default(),
+            in_under: Default::default(),
             in_f: Default::default(),
             in_m: Default::default(),
             in_ja: Default::default(),
@@ -206,6 +212,7 @@ impl Logic for FccSetQueue {
         self.slot_in.next.join = self.in_join.val();
         self.slot_in.next.mark = self.in_mark.val();
         self.slot_in.next.ring = self.in_ring.val();
+        self.slot_in.next.under = self.in_under.val();
         self.slot_in.next.f = self.in_f.val();
         self.slot_in.next.m = self.in_m.val();
         self.slot_in.next.ja = self.in_ja.val();
@@ -242,6 +249,7 @@ impl Logic for FccSetQueue {
         self.sets.mk_slot.next = self.slot.val();
         self.sets.op_valid.next = self.gate.op_valid.val();
         self.sets.op_join.next = self.pick.op.val().join;
+        self.sets.op_under.next = self.pick.op.val().under;
         self.sets.op_a.next = self.pick.op.val().a;
         self.sets.op_b.next = self.pick.op.val().b;
         self.taken.direct.next = self.gate.direct.val();

@@ -1,10 +1,14 @@
 //! `FccSetRetire`: the retire of `FccSetWalks`' oldest op (docs/column-core.md,
 //! item 3). The oldest op (`o_*`: place 0's) retires once its walks are
 //! done and its roots chased, but not in the cycle after a link, when a
-//! root recorded before the link may still be the one linked (`retire`).
+//! root recorded before the link may still be the one linked, and a join
+//! once its roots' order (`o_lt`, a cycle behind them) is theirs
+//! (`o_lt_ok`) (`retire`).
 //! A join that may retire keeps the write port from makes, whether it
 //! links or not (`mk_ready`, from flip-flops and place 0 only: it reads no
-//! root). A join of two roots links `a`'s under `b`'s (`link_*`); the
+//! root). A join of two roots links one under the other (`link_*`):
+//! `a`'s under `b`'s when `o_under` (a run just started, filed under its
+//! neighbours' cluster), else the larger under the smaller; the
 //! link is kept for the two cycles after it (`l_*`), for the chase. Each
 //! retire gives one event (`ev_*`, registered): a find's root and slot, a
 //! join's roots and slots kept and gone, `ev_merged` when it linked.
@@ -19,6 +23,10 @@ pub struct FccSetRetire {
     pub rst: Signal<In, Bit>,
     pub o_valid: Signal<In, Bit>,
     pub o_join: Signal<In, Bit>,
+    pub o_under: Signal<In, Bit>,
+    /// Root 1 below root 0, and whether that is the roots' order now.
+    pub o_lt: Signal<In, Bit>,
+    pub o_lt_ok: Signal<In, Bit>,
     pub o_done0: Signal<In, Bit>,
     pub o_done1: Signal<In, Bit>,
     pub o_root0: Signal<In, Bits<16>>,
@@ -59,7 +67,9 @@ pub struct FccSetRetire {
     evgs: DFF<Bits<SLOT_BITS>>,
     fire: Signal<Local, Bit>,
     linking: Signal<Local, Bit>,
-    /// The roots kept and gone (a join keeps root 1, `b`'s).
+    /// A join keeps root 1 (`b`'s).
+    keep1: Signal<Local, Bit>,
+    /// The roots kept and gone.
     keep: Signal<Local, Bits<16>>,
     keep_slot: Signal<Local, Bits<SLOT_BITS>>,
     gone: Signal<Local, Bits<16>>,
@@ -73,30 +83,31 @@ impl Logic for FccSetRetire {
         self.fire.next = self.o_valid.val()
             & self.o_done0.val()
             & !self.l1.q.val()
-            & (!self.o_join.val() | self.o_done1.val());
+            & (!self.o_join.val() | (self.o_done1.val() & self.o_lt_ok.val()));
         self.retire.next = self.fire.val();
         self.mk_ready.next = !(self.o_valid.val()
             & self.o_done0.val()
             & !self.l1.q.val()
             & self.o_join.val()
-            & self.o_done1.val());
+            & self.o_done1.val()
+            & self.o_lt_ok.val());
         self.linking.next =
             self.fire.val() & self.o_join.val() & (self.o_root0.val() != self.o_root1.val());
+        self.keep1.next =
+            self.o_join.val() & (self.o_under.val() | self.o_lt.val());
         self.keep.next = self.o_root0.val();
         self.keep_slot.next = self.o_slot0.val();
         self.gone.next = self.o_root1.val();
         self.gone_slot.next = self.o_slot1.val();
-        if self.o_join.val() {
+        if self.keep1.val() {
             self.keep.next = self.o_root1.val();
             self.keep_slot.next = self.o_slot1.val();
             self.gone.next = self.o_root0.val();
             self.gone_slot.next = self.o_slot0.val();
         }
-        // The link's word is a join's only: chosen without the find's
-        // case, it is a level sooner.
         self.link_en.next = self.linking.val();
-        self.link_gone.next = self.o_root0.val();
-        self.link_keep.next = self.o_root1.val();
+        self.link_gone.next = self.gone.val();
+        self.link_keep.next = self.keep.val();
         self.l1.d.next = self.linking.val();
         self.l2.d.next = self.l1.q.val();
         if self.linking.val() {

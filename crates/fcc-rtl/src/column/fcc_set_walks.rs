@@ -8,7 +8,9 @@
 //! Ops are taken in order, up to [`SET_OPS`] in flight (`FccSetOp`s, the
 //! oldest first, each known by a sequence number its walks carry): a find
 //! (`op_join` low: the root of `op_a`) or a join (the roots of `op_a` and
-//! `op_b`, then `op_a`'s root linked under `op_b`'s). A new op is
+//! `op_b`, then one linked under the other: `op_b`'s kept when `op_under`
+//! says `op_a` is a run just started, filed under `op_b`'s cluster, else
+//! the smaller root). A new op is
 //! taken while a place is free, whatever the read port does, so that
 //! `op_take` reads no word (it ends the queue's longest path); the reads
 //! go at the free cycles of the port, the oldest op's first (a new op's
@@ -48,6 +50,7 @@ pub struct FccSetWalks {
     pub rst: Signal<In, Bit>,
     pub op_valid: Signal<In, Bit>,
     pub op_join: Signal<In, Bit>,
+    pub op_under: Signal<In, Bit>,
     pub op_a: Signal<In, Bits<16>>,
     pub op_b: Signal<In, Bits<16>>,
     pub op_take: Signal<Out, Bit>,
@@ -119,6 +122,7 @@ impl Default for FccSetWalks {
             rst: Default::default(),
             op_valid: Default::default(),
             op_join: Default::default(),
+            op_under: Default::default(),
             op_a: Default::default(),
             op_b: Default::default(),
             op_take: Default::default(),
@@ -190,6 +194,9 @@ impl Logic for FccSetWalks {
         self.oldest.rst.next = self.rst.val();
         self.oldest.o_valid.next = self.ops[0].valid.val();
         self.oldest.o_join.next = self.ops[0].is_join.val();
+        self.oldest.o_under.next = self.ops[0].under.val();
+        self.oldest.o_lt.next = self.ops[0].lt.val();
+        self.oldest.o_lt_ok.next = self.ops[0].lt_ok.val();
         self.oldest.o_done0.next = self.ops[0].done0.val();
         self.oldest.o_done1.next = self.ops[0].done1.val();
         self.oldest.o_root0.next = self.ops[0].root0.val();
@@ -266,6 +273,7 @@ impl Logic for FccSetWalks {
             self.ops[i].take.next = self.take[i].val();
             self.ops[i].seq.next = self.seqs[i].q.val();
             self.ops[i].take_join.next = self.op_join.val();
+            self.ops[i].take_under.next = self.op_under.val();
             self.ops[i].shift.next = self.retire.val();
             self.ops[i].w_done.next = self.w_done.val();
             self.ops[i].w_seq.next = self.p2_seq.q.val();
@@ -284,6 +292,8 @@ impl Logic for FccSetWalks {
                 self.seqs[i].d.next = self.seqs[i + 1].q.val();
             }
             self.ops[i].sh_join.next = self.ops[i + 1].is_join.val();
+            self.ops[i].sh_under.next = self.ops[i + 1].under.val();
+            self.ops[i].sh_lt.next = self.ops[i + 1].lt_now.val();
             self.ops[i].sh_done0.next = self.ops[i + 1].done0.val();
             self.ops[i].sh_root0.next = self.ops[i + 1].root0.val();
             self.ops[i].sh_slot0.next = self.ops[i + 1].slot0.val();
@@ -295,6 +305,8 @@ impl Logic for FccSetWalks {
             self.ops[i].sh_valid.next = false;
             self.ops[i].sh_seq.next = self.zero_seq.val();
             self.ops[i].sh_join.next = false;
+            self.ops[i].sh_under.next = false;
+            self.ops[i].sh_lt.next = false;
             self.ops[i].sh_done0.next = false;
             self.ops[i].sh_root0.next = self.ops[i].root0.val();
             self.ops[i].sh_slot0.next = self.ops[i].slot0.val();
