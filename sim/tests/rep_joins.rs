@@ -389,7 +389,10 @@ impl Bench {
 fn run_frame(b: &mut Bench, p: &FccParams, f: &Frame, feed: Feed, rng: &mut ChaCha8Rng) {
     assert_eq!(p.fsize, b.k, "the run's K is the build's");
     let (rows, cols) = (p.rows, p.cols);
-    let column::Closing { runs, at: mut closed } = column::closing(p, f);
+    let column::Closing {
+        runs,
+        at: mut closed,
+    } = column::closing(p, f);
     let at_end = closed.pop().expect("the frame end's closes");
     let pix = pixels(p, f, &runs);
     let mut deferred: Vec<Vec<u32>> = Vec::new();

@@ -467,7 +467,13 @@ impl Bench {
                     .iter()
                     .filter(|o| matches!(o.kind, Kind::Find | Kind::Join))
                     .map(|o| {
-                        let d = |l: u16| if self.m.f.made[l as usize] { self.m.f.depth(l) } else { 0 };
+                        let d = |l: u16| {
+                            if self.m.f.made[l as usize] {
+                                self.m.f.depth(l)
+                            } else {
+                                0
+                            }
+                        };
                         d(o.a) + if o.kind == Kind::Join { d(o.b) } else { 0 }
                     })
                     .sum();

@@ -282,9 +282,9 @@ pub fn set_queue_waivers(p: &FccParams, name: &str) -> String {
          // clusters by their slots: a join's gone root is not needed.\n\
          lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'sets$ev_join'*\"\n\
          lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'sets$ev_gone'*\"\n\
-         // The gate sees the whole head; a join's second label goes from the\n\
-         // head to the union-find, not through the gate.\n\
-         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'h_op'[35:20]*\"\n"
+         // The gate sees the whole head; a join's second label and its\n\
+         // `under` go from the head to the union-find, not through the gate.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'h_op'[36:21,4]*\"\n"
     ));
     s
 }

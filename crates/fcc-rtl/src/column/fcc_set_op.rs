@@ -14,9 +14,9 @@
 //!   root that is no longer one.
 //! * `lt` says root 1 is below root 0, registered (off the link's path):
 //!   as a root arrives, against the other side's recorded one; else from
-//!   the recorded roots, a cycle after them. `lt_ok` says it is the
-//!   roots' order: not when a chase changed a root in the cycle before (a
-//!   cycle later it is).
+//!   the recorded roots, a cycle after them; moving up, the next place's.
+//!   `lt_ok` says it is the roots' order: not when a chase changed a root
+//!   in the cycle before (a cycle later it is).
 
 use rust_hdl::prelude::*;
 
@@ -41,8 +41,9 @@ pub struct FccSetOp {
     pub sh_seq: Signal<In, Bits<SEQ_BITS>>,
     pub sh_join: Signal<In, Bit>,
     pub sh_under: Signal<In, Bit>,
-    /// The next place's roots compared now (its `lt_now`).
+    /// The next place's `lt` and `lt_ok`.
     pub sh_lt: Signal<In, Bit>,
+    pub sh_lt_ok: Signal<In, Bit>,
     pub sh_done0: Signal<In, Bit>,
     pub sh_root0: Signal<In, Bits<16>>,
     pub sh_slot0: Signal<In, Bits<SLOT_BITS>>,
@@ -61,9 +62,6 @@ pub struct FccSetOp {
     pub valid: Signal<Out, Bit>,
     pub is_join: Signal<Out, Bit>,
     pub under: Signal<Out, Bit>,
-    /// Root 1 below root 0, as they are now (combinational, for the
-    /// place before's move up).
-    pub lt_now: Signal<Out, Bit>,
     pub lt: Signal<Out, Bit>,
     pub lt_ok: Signal<Out, Bit>,
     pub done0: Signal<Out, Bit>,
@@ -87,6 +85,8 @@ pub struct FccSetOp {
     c_sh0: Signal<Local, Bit>,
     c_sh1: Signal<Local, Bit>,
     arr_lt: Signal<Local, Bit>,
+    /// The recorded roots' order.
+    lt_now: Signal<Local, Bit>,
     d0: DFF<Bit>,
     r0: DFF<Bits<16>>,
     s0: DFF<Bits<SLOT_BITS>>,
@@ -108,6 +108,9 @@ impl Logic for FccSetOp {
         self.sl.next = self.w_slot.val();
         self.chased.next = self.l_valid.val()
             & ((self.r0.q.val() == self.l_gone.val()) | (self.r1.q.val() == self.l_gone.val()));
+        // The recorded roots' order is the next one's unless a chase
+        // changes one.
+        self.lt_okq.d.next = !self.chased.val();
         self.w_chased.next = self.l_valid.val() & (self.w_root.val() == self.l_gone.val());
         self.lt_now.next = self.r1.q.val() < self.r0.q.val();
         self.lt_q.d.next = self.lt_now.val();
@@ -153,6 +156,7 @@ impl Logic for FccSetOp {
             self.mine.next =
                 self.w_done.val() & self.sh_valid.val() & (self.w_seq.val() == self.sh_seq.val());
             self.lt_q.d.next = self.sh_lt.val();
+            self.lt_okq.d.next = self.sh_lt_ok.val();
         }
         if self.mine.val() {
             if self.w_side.val() {
@@ -164,16 +168,10 @@ impl Logic for FccSetOp {
                 self.r0.d.next = self.rt.val();
                 self.s0.d.next = self.sl.val();
             }
-        }
-        // `lt` is the next roots' order unless a chase changes one (a
-        // chase does not reach an op moving up: it is chased a cycle
-        // later).
-        self.lt_okq.d.next = !self.take.val() & (self.shift.val() | !self.chased.val());
-        if self.mine.val() {
+            // An arriving root gives the order (a chase does not reach an
+            // op moving up: it is chased a cycle later).
             self.lt_q.d.next = self.arr_lt.val();
-            if self.w_chased.val() {
-                self.lt_okq.d.next = false;
-            }
+            self.lt_okq.d.next = !self.w_chased.val() & (self.shift.val() | !self.chased.val());
         }
         if self.take.val() {
             self.v.d.next = true;
@@ -181,6 +179,7 @@ impl Logic for FccSetOp {
             self.un.d.next = self.take_under.val();
             self.d0.d.next = false;
             self.d1.d.next = false;
+            self.lt_okq.d.next = false;
         }
         if self.rst.val() {
             self.v.d.next = false;

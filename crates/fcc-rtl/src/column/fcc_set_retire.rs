@@ -93,8 +93,7 @@ impl Logic for FccSetRetire {
             & self.o_lt_ok.val());
         self.linking.next =
             self.fire.val() & self.o_join.val() & (self.o_root0.val() != self.o_root1.val());
-        self.keep1.next =
-            self.o_join.val() & (self.o_under.val() | self.o_lt.val());
+        self.keep1.next = self.o_join.val() & (self.o_under.val() | self.o_lt.val());
         self.keep.next = self.o_root0.val();
         self.keep_slot.next = self.o_slot0.val();
         self.gone.next = self.o_root1.val();

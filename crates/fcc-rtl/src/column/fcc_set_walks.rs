@@ -293,7 +293,8 @@ impl Logic for FccSetWalks {
             }
             self.ops[i].sh_join.next = self.ops[i + 1].is_join.val();
             self.ops[i].sh_under.next = self.ops[i + 1].under.val();
-            self.ops[i].sh_lt.next = self.ops[i + 1].lt_now.val();
+            self.ops[i].sh_lt.next = self.ops[i + 1].lt.val();
+            self.ops[i].sh_lt_ok.next = self.ops[i + 1].lt_ok.val();
             self.ops[i].sh_done0.next = self.ops[i + 1].done0.val();
             self.ops[i].sh_root0.next = self.ops[i + 1].root0.val();
             self.ops[i].sh_slot0.next = self.ops[i + 1].slot0.val();
@@ -307,6 +308,7 @@ impl Logic for FccSetWalks {
             self.ops[i].sh_join.next = false;
             self.ops[i].sh_under.next = false;
             self.ops[i].sh_lt.next = false;
+            self.ops[i].sh_lt_ok.next = false;
             self.ops[i].sh_done0.next = false;
             self.ops[i].sh_root0.next = self.ops[i].root0.val();
             self.ops[i].sh_slot0.next = self.ops[i].slot0.val();
