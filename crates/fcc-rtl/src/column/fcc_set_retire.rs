@@ -2,7 +2,7 @@
 //! item 3). The oldest op (`o_*`: place 0's) retires once its walks are
 //! done and its roots chased, but not in the cycle after a link, when a
 //! root recorded before the link may still be the one linked, and a join
-//! once its roots' order (`o_lt`, a cycle behind them) is theirs
+//! once its roots' order (`o_lt`, registered) is theirs
 //! (`o_lt_ok`) (`retire`).
 //! A join that may retire keeps the write port from makes, whether it
 //! links or not (`mk_ready`, from flip-flops and place 0 only: it reads no
