@@ -17,7 +17,7 @@ mod column;
 use column::{build, pixels, random_frame, run_params, Pix};
 use fcc_golden::{Acc, Frame};
 use fcc_params::FccParams;
-use fcc_rtl::BenchBlock;
+use fcc_rtl::{BenchBlock, RUN_ACC_LATENCY};
 use fcc_sim::core_form::{offset_binary as ob, CoreAcc};
 use fcc_sim::{c_struct, core_acc_out, load_plain, PlainDut};
 use rand::{Rng, SeedableRng};
@@ -40,6 +40,7 @@ c_struct! {
         pub last: u8,
         pub half: u16,
         pub last_row: u8,
+        pub drain_go: u8,
     }
 }
 
@@ -108,22 +109,29 @@ struct Why {
 /// at most one (a run starting while its row's run is open flushes that
 /// one; a row dropping its open run flushes it, the pixel included when it
 /// continued it), then at the frame end every row's open run, row by row.
-/// Labels are the golden run numbers.
-fn expected(p: &FccParams, f: &Frame, px: &[Pix], why: &mut Why) -> Vec<Flush> {
+/// Labels are the golden run numbers. Beside each flush, the pixel
+/// (its index in `px`) that made it, none at the frame end.
+fn expected(
+    p: &FccParams,
+    f: &Frame,
+    px: &[Pix],
+    why: &mut Why,
+) -> (Vec<Flush>, Vec<Option<usize>>) {
     let half = (p.cols / 2) as u32;
     let mut open: Vec<Option<(u32, Acc)>> = vec![None; p.rows];
-    let mut out = Vec::new();
+    let (mut out, mut from) = (Vec::new(), Vec::new());
     let flush = |run: u32, a: &Acc| Flush {
         label: run as u16,
         acc: CoreAcc::of(a),
     };
-    for x in px {
+    for (n, x) in px.iter().enumerate() {
         let r = x.row;
         if x.run != 0 {
             let pt = f.get(r, x.col).expect("a labelled pixel has a point");
             if x.start {
                 if let Some((run, a)) = open[r].take() {
                     out.push(flush(run, &a));
+                    from.push(Some(n));
                     why.start += 1;
                 }
                 open[r] = Some((x.run, Acc::default()));
@@ -136,6 +144,7 @@ fn expected(p: &FccParams, f: &Frame, px: &[Pix], why: &mut Why) -> Vec<Flush> {
             if before != 0 && open[r].as_ref().is_some_and(|(run, _)| *run == before) {
                 let (run, a) = open[r].take().expect("checked");
                 out.push(flush(run, &a));
+                from.push(Some(n));
                 why.drop += 1;
             }
         }
@@ -143,10 +152,11 @@ fn expected(p: &FccParams, f: &Frame, px: &[Pix], why: &mut Why) -> Vec<Flush> {
     for o in open.iter_mut() {
         if let Some((run, a)) = o.take() {
             out.push(flush(run, &a));
+            from.push(None);
             why.end += 1;
         }
     }
-    out
+    (out, from)
 }
 
 /// A cycle without a pixel, with the frame's run parameters.
@@ -154,6 +164,7 @@ fn idle(p: &FccParams) -> RaIn {
     RaIn {
         half: (p.cols / 2) as u16,
         last_row: (p.rows - 1) as u8,
+        drain_go: 1,
         ..RaIn::default()
     }
 }
@@ -161,6 +172,15 @@ fn idle(p: &FccParams) -> RaIn {
 struct Bench {
     dut: PlainDut<RaIn, RaOut>,
     got: Vec<Flush>,
+    /// The cycle of each flush got, and of each pixel taken; `drain_go`
+    /// each cycle.
+    got_at: Vec<u64>,
+    took_at: Vec<u64>,
+    go: Vec<bool>,
+    /// The frame end's flush reads a row in a cycle with probability
+    /// `go_rate` (`drain_go`).
+    go_rate: f64,
+    rng: ChaCha8Rng,
     done: u32,
     /// Cycles with `ready` low, and with `bad` set.
     held: u64,
@@ -174,6 +194,11 @@ impl Bench {
         let mut b = Bench {
             dut: PlainDut::new(model),
             got: Vec::new(),
+            got_at: Vec::new(),
+            took_at: Vec::new(),
+            go: Vec::new(),
+            go_rate: 1.0,
+            rng: ChaCha8Rng::seed_from_u64(0),
             done: 0,
             held: 0,
             bad: 0,
@@ -185,11 +210,18 @@ impl Bench {
         b
     }
 
-    /// One cycle; returns `ready` as it was during it.
+    /// One cycle; returns `ready` as it was during it. `drain_go` is the
+    /// bench's (high with probability `go_rate`).
     fn step(&mut self, i: &RaIn) -> bool {
-        let o = self.dut.step(i);
+        let go = self.go_rate >= 1.0 || self.rng.gen_bool(self.go_rate);
+        let o = self.dut.step(&RaIn {
+            drain_go: u8::from(go),
+            ..*i
+        });
+        self.go.push(go);
         if o.f_valid != 0 {
             self.got.push(Flush::got(&o));
+            self.got_at.push(self.go.len() as u64 - 1);
         }
         self.done += u32::from(o.done);
         self.held += u64::from(o.ready == 0);
@@ -230,13 +262,55 @@ impl Bench {
                 ..idle
             };
             while !self.step(&i) {}
+            self.took_at.push(self.go.len() as u64 - 1);
         }
     }
 
-    /// Cycles enough for the frame end's flushes.
+    /// Forget the flushes and pixels of earlier frames.
+    fn clear(&mut self) {
+        self.got.clear();
+        self.got_at.clear();
+        self.took_at.clear();
+        self.done = 0;
+    }
+
+    /// A pixel's flush came [`RUN_ACC_LATENCY`] cycles after it was taken;
+    /// a frame end's flush five cycles after a cycle with `drain_go` (its
+    /// row's read).
+    fn check_timing(&self, from: &[Option<usize>], what: &str) {
+        for (n, (&at, src)) in self.got_at.iter().zip(from).enumerate() {
+            match src {
+                Some(x) => assert_eq!(
+                    at - self.took_at[*x],
+                    RUN_ACC_LATENCY as u64,
+                    "{what}: flush {n}, of pixel {x}: cycles after the pixel was taken"
+                ),
+                None => assert!(
+                    self.go[at as usize - 5],
+                    "{what}: flush {n}, at the frame end: its row read without drain_go"
+                ),
+            }
+        }
+    }
+
+    /// Cycles enough for the frame end's flushes with `drain_go` high.
     fn settle(&mut self, p: &FccParams) {
         let idle = idle(p);
         for _ in 0..p.rows + 16 {
+            self.step(&idle);
+        }
+    }
+
+    /// Cycles until the frame end's flushes are done, and a few more.
+    fn finish(&mut self, p: &FccParams, what: &str) {
+        let idle = idle(p);
+        let mut left = 100 * p.rows + 100;
+        while self.done == 0 {
+            self.step(&idle);
+            left -= 1;
+            assert!(left > 0, "{what}: the frame end's flushes never done");
+        }
+        for _ in 0..16 {
             self.step(&idle);
         }
     }
@@ -327,14 +401,17 @@ fn runs_flush_their_golden_accumulators() {
             let mut rng = ChaCha8Rng::seed_from_u64(seed);
             let f = random_frame(p.rows, p.cols, 0.8, 0.05, name.ends_with("seam"), &mut rng);
             let px = frame_pixels(p, &f);
-            let want = expected(p, &f, &px, &mut why);
-            b.got.clear();
-            b.done = 0;
+            let (want, from) = expected(p, &f, &px, &mut why);
+            b.clear();
+            // The frame end's flush reads its rows every cycle, or now and
+            // then (held for places where its accumulators wait).
+            b.go_rate = [1.0, 0.3, 0.05][seed as usize % 3];
+            let what = format!("{name}, seed {seed}, drain_go {}", b.go_rate);
             // Frames back to back: the next one waits for this one's end.
             b.feed(p, &f, &px, true, *bubbles, &mut rng);
-            b.settle(p);
-            let what = format!("{name}, seed {seed}");
+            b.finish(p, &what);
             check(&b.got, &want, &what);
+            b.check_timing(&from, &what);
             assert_eq!(b.done, 1, "{what}: done once after the frame end");
             assert_eq!(b.bad, 0, "{what}: bad set");
         }
@@ -365,13 +442,13 @@ fn a_reset_mid_frame_starts_afresh() {
         });
         // ... then the whole frame: its flushes only, nothing left of the
         // half frame's open runs.
-        b.got.clear();
-        b.done = 0;
+        b.clear();
         b.feed(&p, &f, &px, true, 0.1, &mut rng);
-        b.settle(&p);
-        let want = expected(&p, &f, &px, &mut Why::default());
         let what = format!("reset mid-frame, seed {}", 700 + seed);
+        b.finish(&p, &what);
+        let (want, from) = expected(&p, &f, &px, &mut Why::default());
         check(&b.got, &want, &what);
+        b.check_timing(&from, &what);
         assert_eq!(b.done, 1, "{what}: done once");
         assert_eq!(b.bad, 0, "{what}: bad set");
     }

@@ -81,6 +81,9 @@ pub enum BenchBlock {
     /// The column core's representative rows and join filter `FccRepJoins`
     /// behind the scalar ports of `FccRepJoinsProbe`.
     RepJoins,
+    /// The column core's flushes' accumulators waiting for their finds
+    /// `FccFlushWait` behind the scalar ports of `FccFlushWaitProbe`.
+    FlushWait,
 }
 
 /// One row of the table: the module's name before the configuration
@@ -108,7 +111,7 @@ impl Row {
 
 impl BenchBlock {
     /// Every block with a bench.
-    pub const ALL: [BenchBlock; 28] = [
+    pub const ALL: [BenchBlock; 29] = [
         BenchBlock::Regs,
         BenchBlock::AxilAdapter,
         BenchBlock::MergeTable,
@@ -137,6 +140,7 @@ impl BenchBlock {
         BenchBlock::SetPack,
         BenchBlock::ColStart,
         BenchBlock::RepJoins,
+        BenchBlock::FlushWait,
     ];
 
     fn row(self) -> Row {
@@ -351,6 +355,17 @@ impl BenchBlock {
                     )
                 },
                 waivers: lint::set_queue_waivers,
+            },
+            BenchBlock::FlushWait => Row {
+                name: "fcc_flush_wait_probe",
+                generate: |p| {
+                    gen(
+                        p,
+                        crate::column::fcc_flush_wait_probe::FccFlushWaitProbe::default(),
+                        "fcc_flush_wait_probe",
+                    )
+                },
+                waivers: lint::flush_wait_waivers,
             },
             BenchBlock::SetPack => Row::plain("fcc_set_pack", |p| {
                 gen(

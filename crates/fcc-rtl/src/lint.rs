@@ -271,6 +271,17 @@ pub fn label_lists_waivers(p: &FccParams, name: &str) -> String {
     s
 }
 
+/// The waivers of the flushes' wait's probe `name`: the FIFO's RAM ports
+/// (it has no side RAM).
+pub fn flush_wait_waivers(p: &FccParams, name: &str) -> String {
+    let mut s = block_waivers(p, name);
+    s.push_str(&format!(
+        "// FccFifo offers its RAM's ports (for side RAMs); the wait has none.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'flushes$queue$ram_*\"\n"
+    ));
+    s
+}
+
 /// The waivers of the union-find's queue `name`: the FIFO's RAM ports (it
 /// has no side RAM) and the parts of its entries some ops leave unused.
 pub fn set_queue_waivers(p: &FccParams, name: &str) -> String {

@@ -7,8 +7,14 @@
 //! A run is over when its row drops its hold (spec §9.2: `hold_drop`, the
 //! bridge passed and not the ring's), when its row starts another run, or
 //! at the frame end: after the frame's last pixel (`last`) the block
-//! flushes every row's run still open, one row a cycle (`ready` low
-//! meanwhile, so the next frame waits), and says so with `done`.
+//! flushes every row's run still open, one row a cycle while `drain_go`
+//! (`ready` low meanwhile, so the next frame waits), and says so with
+//! `done`.
+//!
+//! A pixel taken in cycle `t` flushes (if at all) in cycle
+//! `t + RUN_ACC_LATENCY`, a frame-end row read in cycle `t` (a cycle with
+//! `drain_go` high) sooner: so a place for the accumulator (`FccFlushWait`)
+//! can be made sure of before the pixel is let in or the row read.
 //!
 //! Pipeline (a pixel per cycle, every pixel slot of the frame, empty ones
 //! too, since a row drops its hold at any slot):
@@ -39,6 +45,11 @@ use crate::types::{kb, vec_of};
 
 /// Row address bits (frames of at most 128 rows).
 const ROW_BITS: usize = 7;
+
+/// Cycles from a pixel taken to its flush on `f_valid` (the pixel's
+/// accumulator, then D, E, W and the flush's register); a frame-end row
+/// flushes five cycles after its read.
+pub const RUN_ACC_LATENCY: usize = ACC_PIXEL_LATENCY + 3;
 
 /// A row's entry: its open run's label and accumulator.
 #[derive(Clone, Copy, Debug, PartialEq, Default, LogicStruct)]
@@ -84,6 +95,9 @@ pub struct FccRunAcc {
     /// `C / 2` and the frame's last row `R - 1` (constant while a frame runs).
     pub half: Signal<In, Bits<12>>,
     pub last_row: Signal<In, Bits<7>>,
+    /// The frame-end flush may read a row this cycle (a place waits for
+    /// its accumulator).
+    pub drain_go: Signal<In, Bit>,
     /// A run is over: its label and accumulator.
     pub f_valid: Signal<Out, Bit>,
     pub f_label: Signal<Out, Bits<16>>,
@@ -110,6 +124,10 @@ pub struct FccRunAcc {
     /// read.
     rd_in: Signal<Local, RunStep>,
     rd_step: Signal<Local, RunStep>,
+    /// A pixel is in the steps up to the read's (the frame end's reads
+    /// wait for the last pixel's, so that its flushes come first).
+    ahead: Signal<Local, Bit>,
+    ahead_step: Signal<Local, RunStep>,
     live_row: DFF<Bits<7>>,
     /// The live flag of `live_row`: the masked flags' running OR, then
     /// registered for D.
@@ -157,6 +175,7 @@ impl FccRunAcc {
             ready: Default::default(),
             half: Default::default(),
             last_row: Default::default(),
+            drain_go: Default::default(),
             f_valid: Default::default(),
             f_label: Default::default(),
             f_acc: Default::default(),
@@ -171,6 +190,8 @@ impl FccRunAcc {
             drain_row: Default::default(),
             rd_in: Default::default(),
             rd_step: Default::default(),
+            ahead: Default::default(),
+            ahead_step: Default::default(),
             live_row: Default::default(),
             live_or: vec_of(rows),
             old_live_q: Default::default(),
@@ -233,12 +254,21 @@ impl Logic for FccRunAcc {
         self.pixel.row.next = self.inp.val().row;
         self.pixel.col.next = self.inp.val().col;
         // The step two before D issues the read; while the frame-end flush
-        // runs, its rows take the step's place (no pixel enters then).
+        // runs, its rows take the step's place (no pixel enters then), one
+        // a cycle while `drain_go`, once the last pixels have issued
+        // theirs.
         for ri in (self.steps.len() - 3)..(self.steps.len() - 2) {
             self.rd_in.next = self.steps[ri].q.val();
         }
+        self.ahead.next = false;
+        for sa in 0..(self.steps.len() - 2) {
+            self.ahead_step.next = self.steps[sa].q.val();
+            if self.ahead_step.val().valid {
+                self.ahead.next = true;
+            }
+        }
         self.rd_step.next = self.rd_in.val();
-        if self.busy.q.val() & !self.rd_in.val().valid {
+        if self.busy.q.val() & !self.ahead.val() & self.drain_go.val() {
             self.rd_step.next = self.step_zero.val();
             self.rd_step.next.drain = true;
             self.rd_step.next.row = self.drain_row.q.val();
@@ -254,8 +284,8 @@ impl Logic for FccRunAcc {
         self.entries.read_en.next = true;
         self.entries.read_addr.next = self.rd_step.val().row;
         self.live_row.d.next = self.rd_step.val().row;
-        // The frame-end flush starts once the last pixel has issued its
-        // read, and reads the rows 0 ..= R - 1.
+        // The frame-end flush starts once the last pixel is taken, reads
+        // once it has issued its read, and reads the rows 0 ..= R - 1.
         self.busy.d.next = self.busy.q.val();
         self.drain_row.d.next = self.drain_row.q.val();
         if self.inp.val().valid & self.inp.val().last & !self.busy.q.val() {

@@ -26,6 +26,7 @@ pub struct FccRunAccProbe {
     pub last: Signal<In, Bit>,
     pub half: Signal<In, Bits<12>>,
     pub last_row: Signal<In, Bits<7>>,
+    pub drain_go: Signal<In, Bit>,
     pub ready: Signal<Out, Bit>,
     pub f_valid: Signal<Out, Bit>,
     pub f_label: Signal<Out, Bits<16>>,
@@ -79,6 +80,7 @@ impl FccRunAccProbe {
             last: Default::default(),
             half: Default::default(),
             last_row: Default::default(),
+            drain_go: Default::default(),
             ready: Default::default(),
             f_valid: Default::default(),
             f_label: Default::default(),
@@ -135,6 +137,7 @@ impl Logic for FccRunAccProbe {
         self.acc.inp.next = self.pix.val();
         self.acc.half.next = self.half.val();
         self.acc.last_row.next = self.last_row.val();
+        self.acc.drain_go.next = self.drain_go.val();
         self.ready.next = self.acc.ready.val();
         self.f_valid.next = self.acc.f_valid.val();
         self.f_label.next = self.acc.f_label.val();

@@ -18,9 +18,10 @@
 //! order) and the closer around them (`FccCloser`: the quiet clusters'
 //! wait list, passed over once a column is done), and the labels' lists
 //! (`FccLabelLists`: a closed cluster's labels back to the pool); the
-//! record slots are handed out by a 9-bit `FccLabelPool`, and the
-//! column-start check (`FccColStart`: when a column may start). The top is
-//! to come.
+//! record slots are handed out by a 9-bit `FccLabelPool`, the
+//! column-start check (`FccColStart`: when a column may start), and the
+//! flushes' accumulators waiting for their finds (`FccFlushWait`). The top
+//! is to come.
 
 pub mod fcc_acc_merge;
 pub mod fcc_acc_pixel;
@@ -37,6 +38,8 @@ pub mod fcc_col_start;
 pub mod fcc_col_window;
 pub mod fcc_col_window_probe;
 pub mod fcc_col_word_split;
+pub mod fcc_flush_wait;
+pub mod fcc_flush_wait_probe;
 pub mod fcc_holds_merge;
 pub mod fcc_label_lists;
 pub mod fcc_label_pool;
