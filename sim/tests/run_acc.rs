@@ -241,9 +241,27 @@ impl Bench {
         bubbles: f64,
         rng: &mut ChaCha8Rng,
     ) {
+        self.feed_gaps(p, f, px, ends, |_| {
+            let mut n = 0;
+            while rng.gen_bool(bubbles) {
+                n += 1;
+            }
+            n
+        });
+    }
+
+    /// Feed the frame's pixels with `gap(n)` bubbles before pixel `n`.
+    fn feed_gaps(
+        &mut self,
+        p: &FccParams,
+        f: &Frame,
+        px: &[Pix],
+        ends: bool,
+        mut gap: impl FnMut(usize) -> usize,
+    ) {
         let idle = idle(p);
         for (n, x) in px.iter().enumerate() {
-            while rng.gen_bool(bubbles) {
+            for _ in 0..gap(n) {
                 self.step(&idle);
             }
             let [px_x, px_y, px_z] = f.get(x.row, x.col).unwrap_or([0; 3]);
@@ -419,6 +437,48 @@ fn runs_flush_their_golden_accumulators() {
     // Every reason to flush was exercised, and the frame end held the input.
     assert!(why.start > 0 && why.drop > 0 && why.end > 0, "{why:?}");
     assert!(b.held > 0, "the frame end never held the input");
+}
+
+/// The frame end's flushes come after every pixel's, whatever the bubbles
+/// before the last pixels: here frames whose last or second-to-last pixel
+/// flushes a run, fed back to back but for one to three bubbles before
+/// one of the last three pixels (so the frame end's reads could start
+/// before the last pixels have read their rows).
+#[test]
+fn the_frame_end_flushes_after_the_last_pixels() {
+    let build = build();
+    let p = FccParams {
+        bridge: Some(1),
+        ..run_params(8, 12)
+    };
+    let mut b = Bench::new(&build);
+    let mut frames = 0;
+    for seed in 0..400u64 {
+        let mut rng = ChaCha8Rng::seed_from_u64(900 + seed);
+        let f = random_frame(p.rows, p.cols, 0.6, 0.3, false, &mut rng);
+        let px = frame_pixels(&p, &f);
+        let (want, from) = expected(&p, &f, &px, &mut Why::default());
+        let n = px.len();
+        if !from.iter().any(|x| matches!(x, Some(i) if *i + 2 >= n)) {
+            continue;
+        }
+        for (before, bubbles) in [(n - 1, 1), (n - 2, 1), (n - 3, 2), (n - 2, 3)] {
+            b.clear();
+            b.feed_gaps(&p, &f, &px, true, |i| if i == before { bubbles } else { 0 });
+            let what = format!(
+                "seed {}, {bubbles} bubbles before pixel {before} of {n}",
+                900 + seed
+            );
+            b.finish(&p, &what);
+            check(&b.got, &want, &what);
+            b.check_timing(&from, &what);
+        }
+        frames += 1;
+        if frames == 12 {
+            break;
+        }
+    }
+    assert_eq!(frames, 12, "frames whose last pixels flush");
 }
 
 #[test]
