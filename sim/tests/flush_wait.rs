@@ -186,11 +186,18 @@ impl Bench {
         for _ in 0..RUN_ACC_LATENCY - DRAIN_LATENCY {
             self.step(None, 0.0, take);
         }
-        let mut left = ph.rows;
+        let (mut left, mut cycles) = (ph.rows, 0);
         while left > 0 {
             if self.step(Some(DRAIN_LATENCY), ph.flush, take) {
                 left -= 1;
             }
+            cycles += 1;
+            assert!(
+                cycles < 100 * (ph.rows + FLUSH_WAIT),
+                "seed {:#x}: room never came back at the frame end ({} waiting)",
+                self.seed,
+                self.want.len()
+            );
         }
     }
 
