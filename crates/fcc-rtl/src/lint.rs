@@ -272,12 +272,14 @@ pub fn label_lists_waivers(p: &FccParams, name: &str) -> String {
 }
 
 /// The waivers of the flushes' wait's probe `name`: the FIFO's RAM ports
-/// (it has no side RAM).
+/// (it has no side RAM) and level (it counts its places itself).
 pub fn flush_wait_waivers(p: &FccParams, name: &str) -> String {
     let mut s = block_waivers(p, name);
     s.push_str(&format!(
         "// FccFifo offers its RAM's ports (for side RAMs); the wait has none.\n\
-         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'flushes$queue$ram_*\"\n"
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'queue$ram_*\"\n\
+         // The wait counts its places exactly; the FIFO's level is a cycle late.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'queue$level'*\"\n"
     ));
     s
 }
@@ -308,7 +310,10 @@ pub fn run_acc_waivers(p: &FccParams, name: &str) -> String {
     let mut s = acc_waivers(p, name);
     s.push_str(&format!(
         "// `FccRunAcc` reads the pixel's run, point and dropped hold only.\n\
-         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'inp'*\"\n"
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'inp'*\"\n\
+         // Its steps' valid flags are read in a loop through a whole step\n\
+         // (rust-hdl cannot take a field of an element indexed by a loop).\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'ahead_step'*\"\n"
     ));
     s
 }

@@ -30,6 +30,9 @@ pub struct FccFlushWaitProbe {
     pub bad: Signal<Out, Bit>,
     flushes: FccFlushWait,
     word: Signal<Local, AccWord>,
+    /// The head, and its tag (a field of a field is not sliced again).
+    head: Signal<Local, AccWord>,
+    head_tag: Signal<Local, Bits<51>>,
 }
 
 impl Default for FccFlushWaitProbe {
@@ -50,6 +53,8 @@ impl Default for FccFlushWaitProbe {
             bad: Default::default(),
             flushes: FccFlushWait::new(RUN_ACC_LATENCY),
             word: Default::default(),
+            head: Default::default(),
+            head_tag: Default::default(),
         }
     }
 }
@@ -89,31 +94,32 @@ impl Logic for FccFlushWaitProbe {
             (self.take.val() & self.flushes.valid.val()) | self.take_none.val();
         self.took.next = self.take.val() & self.flushes.valid.val();
         self.valid.next = self.flushes.valid.val();
-        self.o_tag.next = self.flushes.dout.val().sab;
-        self.o_agree.next = (self.flushes.dout.val().points
-            == self.flushes.dout.val().sab.get_bits::<20>(0))
-            & (self.flushes.dout.val().min_col == self.flushes.dout.val().sab.get_bits::<12>(0))
-            & (self.flushes.dout.val().max_col == self.flushes.dout.val().sab.get_bits::<12>(0))
-            & (self.flushes.dout.val().lo_has == self.flushes.dout.val().sab.get_bit(0))
-            & (self.flushes.dout.val().lo_max == self.flushes.dout.val().sab.get_bits::<12>(0))
-            & (self.flushes.dout.val().hi_has == self.flushes.dout.val().sab.get_bit(0))
-            & (self.flushes.dout.val().hi_min == self.flushes.dout.val().sab.get_bits::<12>(0))
-            & (self.flushes.dout.val().first_row == self.flushes.dout.val().sab.get_bits::<7>(0))
-            & (self.flushes.dout.val().last_row == self.flushes.dout.val().sab.get_bits::<7>(0))
-            & (self.flushes.dout.val().min_x == self.flushes.dout.val().sab.get_bits::<16>(0))
-            & (self.flushes.dout.val().min_y == self.flushes.dout.val().sab.get_bits::<16>(0))
-            & (self.flushes.dout.val().min_z == self.flushes.dout.val().sab.get_bits::<16>(0))
-            & (self.flushes.dout.val().max_x == self.flushes.dout.val().sab.get_bits::<16>(0))
-            & (self.flushes.dout.val().max_y == self.flushes.dout.val().sab.get_bits::<16>(0))
-            & (self.flushes.dout.val().max_z == self.flushes.dout.val().sab.get_bits::<16>(0))
-            & (self.flushes.dout.val().r2_min == self.flushes.dout.val().sab.get_bits::<32>(0))
-            & (self.flushes.dout.val().r2_max == self.flushes.dout.val().sab.get_bits::<32>(0))
-            & (self.flushes.dout.val().sa == self.flushes.dout.val().sab.get_bits::<35>(0))
-            & (self.flushes.dout.val().sb == self.flushes.dout.val().sab.get_bits::<35>(0))
-            & (self.flushes.dout.val().sc == self.flushes.dout.val().sab.get_bits::<35>(0))
-            & (self.flushes.dout.val().sxx == self.flushes.dout.val().sab.get_bits::<50>(0))
-            & (self.flushes.dout.val().syy == self.flushes.dout.val().sab.get_bits::<50>(0))
-            & (self.flushes.dout.val().seam == self.flushes.dout.val().sab.get_bit(0));
+        self.head.next = self.flushes.dout.val();
+        self.head_tag.next = self.head.val().sab;
+        self.o_tag.next = self.head_tag.val();
+        self.o_agree.next = (self.head.val().points == self.head_tag.val().get_bits::<20>(0))
+            & (self.head.val().min_col == self.head_tag.val().get_bits::<12>(0))
+            & (self.head.val().max_col == self.head_tag.val().get_bits::<12>(0))
+            & (self.head.val().lo_has == self.head_tag.val().get_bit(0))
+            & (self.head.val().lo_max == self.head_tag.val().get_bits::<12>(0))
+            & (self.head.val().hi_has == self.head_tag.val().get_bit(0))
+            & (self.head.val().hi_min == self.head_tag.val().get_bits::<12>(0))
+            & (self.head.val().first_row == self.head_tag.val().get_bits::<7>(0))
+            & (self.head.val().last_row == self.head_tag.val().get_bits::<7>(0))
+            & (self.head.val().min_x == self.head_tag.val().get_bits::<16>(0))
+            & (self.head.val().min_y == self.head_tag.val().get_bits::<16>(0))
+            & (self.head.val().min_z == self.head_tag.val().get_bits::<16>(0))
+            & (self.head.val().max_x == self.head_tag.val().get_bits::<16>(0))
+            & (self.head.val().max_y == self.head_tag.val().get_bits::<16>(0))
+            & (self.head.val().max_z == self.head_tag.val().get_bits::<16>(0))
+            & (self.head.val().r2_min == self.head_tag.val().get_bits::<32>(0))
+            & (self.head.val().r2_max == self.head_tag.val().get_bits::<32>(0))
+            & (self.head.val().sa == self.head_tag.val().get_bits::<35>(0))
+            & (self.head.val().sb == self.head_tag.val().get_bits::<35>(0))
+            & (self.head.val().sc == self.head_tag.val().get_bits::<35>(0))
+            & (self.head.val().sxx == self.head_tag.val().get_bits::<50>(0))
+            & (self.head.val().syy == self.head_tag.val().get_bits::<50>(0))
+            & (self.head.val().seam == self.head_tag.val().get_bit(0));
         self.room.next = self.flushes.room.val();
         self.idle.next = self.flushes.idle.val();
         self.bad.next = self.flushes.bad.val();
