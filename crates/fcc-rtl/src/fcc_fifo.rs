@@ -78,6 +78,14 @@ impl<T: Synth, const A: usize, const AP1: usize> FccFifo<T, A, AP1> {
     }
 }
 
+impl<T: Synth, const A: usize, const AP1: usize> FccFifo<T, A, AP1> {
+    /// Its entries in LUT RAM (`FccRam::in_lut_ram`).
+    pub fn in_lut_ram(mut self) -> Self {
+        self.ram = self.ram.in_lut_ram();
+        self
+    }
+}
+
 impl<T: Synth, const A: usize, const AP1: usize> Default for FccFifo<T, A, AP1> {
     fn default() -> Self {
         Self::with_stored_bits(T::BITS)

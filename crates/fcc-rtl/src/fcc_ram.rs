@@ -31,6 +31,7 @@ pub struct FccRam<T: Synth, const A: usize> {
     pub write_data: Signal<In, T>,
     _depth: usize,
     _stored_bits: usize,
+    _lut_ram: bool,
     _mem: Vec<T>,
     _rd1: T,
 }
@@ -59,9 +60,20 @@ impl<T: Synth, const A: usize> FccRam<T, A> {
             write_data: Default::default(),
             _depth: depth,
             _stored_bits: stored_bits,
+            _lut_ram: false,
             _mem: vec![T::default(); depth],
             _rd1: T::default(),
         }
+    }
+}
+
+impl<T: Synth, const A: usize> FccRam<T, A> {
+    /// Kept in LUT RAM (`ram_style = "distributed"`, which Vivado and
+    /// Yosys both follow) instead of where the tool finds it cheapest: a
+    /// few wide words that would take block RAM for their width alone.
+    pub fn in_lut_ram(mut self) -> Self {
+        self._lut_ram = true;
+        self
     }
 }
 
@@ -123,8 +135,13 @@ impl<T: Synth, const A: usize> Logic for FccRam<T, A> {
                 unused.join(", ")
             )
         };
+        let style = if self._lut_ram {
+            "(* ram_style = \"distributed\" *)\n"
+        } else {
+            ""
+        };
         Verilog::Custom(format!(
-            "{unused_decl}reg [{sw_m1}:0] mem [0:{depth_m1}];\n\
+            "{unused_decl}{style}reg [{sw_m1}:0] mem [0:{depth_m1}];\n\
              // The block RAM's output register, then a fabric register.\n\
              reg [{sw_m1}:0] rd1;\n\
              always @(posedge clk) begin\n\

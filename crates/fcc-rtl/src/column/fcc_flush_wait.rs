@@ -8,9 +8,9 @@
 //! flushes go row by row in both). The head is taken (`take`) with its
 //! find's event, and the record store adds it to that slot.
 //!
-//! [`FLUSH_WAIT`] places, a FIFO (`FccFifo`: LUT RAM at this depth and
-//! width, the head in flip-flops; after a take the next head shows two
-//! cycles later). Upstream holds what could flush while `room` is low:
+//! [`FLUSH_WAIT`] places, a FIFO (`FccFifo`, in LUT RAM: a few words too
+//! wide for block RAM to be worth it; the head in flip-flops; after a take
+//! the next head shows two cycles later). Upstream holds what could flush while `room` is low:
 //! `room` (registered) says that the places held after this cycle's push
 //! and take, and `margin` flushes more, and the one decided in the cycle
 //! `room` is seen, fit. `margin` is how many cycles after being let in a
@@ -79,7 +79,7 @@ impl FccFlushWait {
             room: Default::default(),
             idle: Default::default(),
             bad: Default::default(),
-            queue: Default::default(),
+            queue: FccFifo::default().in_lut_ram(),
             held: Default::default(),
             held_next: Default::default(),
             room_q: Default::default(),

@@ -183,7 +183,7 @@ impl FccRunAcc {
             bad: Default::default(),
             pixel: Default::default(),
             merger: Default::default(),
-            entries: FccRam::new(rows),
+            entries: FccRam::new(rows).in_lut_ram(),
             live: vec_of(rows),
             steps: vec_of(ACC_PIXEL_LATENCY),
             busy: Default::default(),
