@@ -11,7 +11,7 @@
 //! [`FLUSH_WAIT`] places, a FIFO (`FccFifo`, in LUT RAM: a few words too
 //! wide for block RAM to be worth it; the head in flip-flops; after a take
 //! the next head shows two cycles later). Upstream holds what could flush while `room` is low:
-//! `room` (registered) says that the places held after this cycle's push
+//! `room` (from the places held, a register) says that the places held after this cycle's push
 //! and take, and `margin` flushes more, and the one decided in the cycle
 //! `room` is seen, fit. `margin` is how many cycles after being let in a
 //! pixel (or a frame-end step) can flush, one flush each, at most: so
@@ -41,7 +41,7 @@ pub struct FccFlushWait {
     pub take: Signal<In, Bit>,
     /// Upstream may let in what can flush.
     pub room: Signal<Out, Bit>,
-    /// No accumulator waits (registered).
+    /// No accumulator waits (from the places held, a register).
     pub idle: Signal<Out, Bit>,
     /// Sticky until reset: a push with every place held and none taken, or
     /// a take with no head.
@@ -50,8 +50,6 @@ pub struct FccFlushWait {
     /// Places held (exact, unlike the FIFO's registered level).
     held: DFF<Bits<8>>,
     held_next: Signal<Local, Bits<8>>,
-    room_q: DFF<Bit>,
-    idle_q: DFF<Bit>,
     bad_q: DFF<Bit>,
     /// The most places held after a cycle with `room` still high.
     limit: Constant<Bits<8>>,
@@ -82,8 +80,6 @@ impl FccFlushWait {
             queue: FccFifo::default().in_lut_ram(),
             held: Default::default(),
             held_next: Default::default(),
-            room_q: Default::default(),
-            idle_q: Default::default(),
             bad_q: Default::default(),
             limit: kb((FLUSH_WAIT - margin - 1) as u64),
             full: kb(FLUSH_WAIT as u64),
@@ -96,7 +92,7 @@ impl FccFlushWait {
 impl Logic for FccFlushWait {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clk, held, room_q, idle_q, bad_q);
+        dff_setup!(self, clk, held, bad_q);
         self.queue.clk.next = self.clk.val();
         self.queue.rst.next = self.rst.val();
         self.queue.push.next = self.push.val();
@@ -114,10 +110,8 @@ impl Logic for FccFlushWait {
             self.held_next.next = self.held.q.val() - self.one.val();
         }
         self.held.d.next = self.held_next.val();
-        self.room_q.d.next = self.held_next.val() <= self.limit.val();
-        self.idle_q.d.next = self.held_next.val() == self.zero.val();
-        self.room.next = self.room_q.q.val();
-        self.idle.next = self.idle_q.q.val();
+        self.room.next = self.held.q.val() <= self.limit.val();
+        self.idle.next = self.held.q.val() == self.zero.val();
         self.bad_q.d.next = self.bad_q.q.val();
         if (self.push.val()
             & (self.held.q.val() == self.full.val())
@@ -129,8 +123,6 @@ impl Logic for FccFlushWait {
         self.bad.next = self.bad_q.q.val();
         if self.rst.val() {
             self.held.d.next = self.zero.val();
-            self.room_q.d.next = true;
-            self.idle_q.d.next = true;
             self.bad_q.d.next = false;
         }
     }
