@@ -10,10 +10,10 @@
 //!
 //! [`FLUSH_WAIT`] places, a FIFO (`FccFifo`, in LUT RAM: a few words too
 //! wide for block RAM to be worth it; the head in flip-flops; after a take
-//! the next head shows two cycles later). Upstream holds what could flush while `room` is low:
-//! `room` (from the places held, a register) says that the places held after this cycle's push
-//! and take, and `margin` flushes more, and the one decided in the cycle
-//! `room` is seen, fit. `margin` is how many cycles after being let in a
+//! the next head shows two cycles later). Upstream holds what could flush
+//! while `room` is low: `room` (read off the places held, a register) says
+//! that the places held after the last cycle's push and take, and `margin`
+//! flushes more, and the one decided in the cycle `room` is seen, fit. `margin` is how many cycles after being let in a
 //! pixel (or a frame-end step) can flush, one flush each, at most: so
 //! while upstream honours `room` the places never overflow. If one does
 //! anyway (a push with every place held and none taken), or a take finds
