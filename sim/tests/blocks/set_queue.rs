@@ -19,7 +19,7 @@
 
 use std::collections::VecDeque;
 
-mod column;
+use crate::column;
 use column::forest::Forest;
 use column::pack_io::{PkIn, PkOut};
 use column::rep_io::{RjIn, RjOut};

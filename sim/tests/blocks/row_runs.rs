@@ -11,7 +11,7 @@
 //! back on one instance, a reset mid-frame, and labels that run out and are
 //! reused. A mismatch prints the frame, pixel, expected, got and the seed.
 
-mod column;
+use crate::column;
 
 use column::{build, run_params};
 use std::collections::{HashMap, VecDeque};

@@ -12,7 +12,7 @@
 
 use std::collections::VecDeque;
 
-mod column;
+use crate::column;
 use column::forest::Forest;
 
 use fcc_params::FccParams;

@@ -12,7 +12,7 @@
 //! on one instance, and a reset mid-frame. A mismatch prints the frame,
 //! the flush, expected, got and the seed.
 
-mod column;
+use crate::column;
 
 use column::{build, pixels, random_frame, run_params, Pix};
 use fcc_golden::{Acc, Frame};

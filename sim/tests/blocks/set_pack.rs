@@ -12,7 +12,7 @@
 //! `j_more` falls or alone in the cycle it falls; a cycle with no op no
 //! entry. A mismatch prints the cycle, expected, got and the seed.
 
-mod column;
+use crate::column;
 use column::pack_io::{PkIn, PkOut};
 
 use fcc_params::FccParams;

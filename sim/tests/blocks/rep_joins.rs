@@ -30,7 +30,7 @@
 
 use std::collections::{HashMap, VecDeque};
 
-mod column;
+use crate::column;
 
 use column::rep_io::{rep_in, RjIn, RjOut};
 use column::{build, pixels, random_frame, run_params, Pix};
