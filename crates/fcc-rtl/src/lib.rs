@@ -292,7 +292,36 @@ pub fn file_header(p: &FccParams, prefix: &str) -> String {
 }
 
 /// Build the design for `p`, check it and emit Verilog plus its companions.
+///
+/// The last few configurations generated in this process are kept: a
+/// command that checks the model cache, loads the model and sets up the
+/// virtual board asks for the same configuration several times, and a large
+/// core takes the generator seconds each time.
 pub fn generate(p: &FccParams) -> Result<Generated, RtlError> {
+    /// How many configurations are kept.
+    const KEPT: usize = 4;
+    static LAST: std::sync::Mutex<Vec<Generated>> = std::sync::Mutex::new(Vec::new());
+    let kept = |g: &Generated| g.params == *p;
+    if let Some(g) = LAST
+        .lock()
+        .unwrap_or_else(|e| e.into_inner())
+        .iter()
+        .find(|g| kept(g))
+    {
+        return Ok(g.clone());
+    }
+    let g = generate_uncached(p)?;
+    let mut last = LAST.lock().unwrap_or_else(|e| e.into_inner());
+    if !last.iter().any(kept) {
+        if last.len() == KEPT {
+            last.remove(0);
+        }
+        last.push(g.clone());
+    }
+    Ok(g)
+}
+
+fn generate_uncached(p: &FccParams) -> Result<Generated, RtlError> {
     p.validate_for_hardware()?;
     let mut top = FccTop::new(p);
     top.connect_all();
