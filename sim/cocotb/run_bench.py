@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The cocotb bench of the generated `fcc_top` on Icarus Verilog.
 
-For every configuration (16 x 128, each K, 8..10 label bits, K = 9 with
+For every configuration (16 x 256, each K, 8..10 label bits, K = 9 with
 range-adaptive thresholds) this
 1. generates the RTL with `fcc gen`, and a copy with every `initial` block
    removed (flip-flops start as X: reset alone must bring the core up);
@@ -35,7 +35,7 @@ sys.path.insert(0, str(HERE))
 import frames as fr  # noqa: E402
 
 ROWS = 16
-COLS = 128
+COLS = 256
 TH_H = 0.5
 TH_V = 1.0
 # (label bits, labels per beat) of each K: every K, 8..10 label bits, and

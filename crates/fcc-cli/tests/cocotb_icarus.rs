@@ -1,6 +1,6 @@
 //! The cocotb bench of the generated core on Icarus Verilog (4-state).
 //!
-//! `sim/cocotb/run_bench.py` generates a 16 x 128 configuration of every K
+//! `sim/cocotb/run_bench.py` generates a 16 x 256 configuration of every K
 //! with this crate's `fcc` binary, gets the expected labels from `fcc
 //! cluster` (the golden model), and simulates each configuration twice, as
 //! generated and with every `initial` block removed (reset only), driving
