@@ -2,7 +2,8 @@
 //! model of its contract (docs/column-core.md, item 4). Frames of columns,
 //! each with the record store's quiet reports of its ops (quiet column
 //! the op's, last column up to a few columns back, due `max(last + h,
-//! quiet column)`) and then its marker, now and then after a few reports
+//! quiet column)`, `last + h` at most the frame's last column) and then
+//! its marker, now and then after a few reports
 //! of the next column; sparse columns, busy ones, floods of a hundred
 //! reports due at one column (more closes than sorted entries: passes
 //! again) and of reports that fill the wait list (the reports then wait
@@ -28,6 +29,7 @@ c_struct! {
         pub rst: u8,
         pub clear: u8,
         pub half: u8,
+        pub last_col: u16,
         pub ending: u8,
         pub end_col: u16,
         pub q_valid: u8,
@@ -94,6 +96,9 @@ struct Seen {
     /// Cycles `room` was low.
     no_room: u64,
     end_closes: u64,
+    /// Reports whose `last + h` is past the frame's last column (due
+    /// there: hold 1 ends with the frame).
+    past_end: u64,
     /// The most cycles from a marker to the last close of its column.
     worst_wait: u64,
     /// The most entries waiting at once (the model's, those due and not
@@ -104,6 +109,8 @@ struct Seen {
 struct Bench {
     d: PlainDut<ClIn, ClOut>,
     half: u16,
+    /// The frame's last column (a run parameter: set before its frame).
+    last_col: u16,
     /// Entries waiting: (due, key, slot).
     waiting: Vec<(u16, u32, u16)>,
     /// Closes due, in order: (column, key, slot, marker cycle).
@@ -122,6 +129,7 @@ impl Bench {
         let mut b = Bench {
             d: PlainDut::new(model.clone()),
             half,
+            last_col: 4095,
             waiting: vec![],
             expect: VecDeque::new(),
             ending: None,
@@ -141,6 +149,7 @@ impl Bench {
     /// One cycle; checks the close offered (taken if `take`) and `caught_up`.
     fn step(&mut self, mut inp: ClIn) -> ClOut {
         inp.half = self.half as u8;
+        inp.last_col = self.last_col;
         inp.ending = self.ending.is_some() as u8;
         inp.end_col = self.ending.unwrap_or(0);
         let o = self.d.step(&inp);
@@ -188,7 +197,11 @@ impl Bench {
             self.seen.reports += 1;
             let due = match self.ending {
                 Some(end) => end,
-                None => (inp.q_last + self.half).max(inp.q_col),
+                None => {
+                    let reach = inp.q_last + self.half;
+                    self.seen.past_end += u64::from(reach > self.last_col);
+                    reach.min(self.last_col).max(inp.q_col)
+                }
             };
             self.waiting.push((due, inp.q_first, inp.q_slot));
             let waiting = self.waiting.len() + self.expect.len();
@@ -410,6 +423,7 @@ fn closes_come_by_column_then_first_pixel() {
             let ends = [0, 60, 512][(seed as usize + f) % 3];
             let reset_at = (f == 1).then(|| rng.gen_range(10..cols));
             let events = frame(&mut rng, cols, ends, reset_at);
+            b.last_col = cols - 1;
             b.run(&mut rng, events, rate, take);
         }
         b.drain(1_000_000);
@@ -420,6 +434,7 @@ fn closes_come_by_column_then_first_pixel() {
         all.long_columns += s.long_columns;
         all.no_room += s.no_room;
         all.end_closes += s.end_closes;
+        all.past_end += s.past_end;
         all.worst_wait = all.worst_wait.max(s.worst_wait);
         all.most_waiting = all.most_waiting.max(s.most_waiting);
     }
@@ -430,6 +445,7 @@ fn closes_come_by_column_then_first_pixel() {
             && all.long_columns > 20
             && all.no_room > 1_000
             && all.end_closes > 1_000
+            && all.past_end > 50
             && all.most_waiting > WAIT,
         "too little of some traffic: {all:?}"
     );

@@ -3,8 +3,8 @@
 //! contract (docs/column-core.md, items 3 and 4) over the golden record
 //! accumulator (`fcc_golden::Acc`, spec §9.3) and the holds of spec §9.2:
 //! runs started and flushed into slots, slots merged into others, closes
-//! at a column (a record leaves only if nothing holds its cluster) and at
-//! the frame end, each naming the cluster's first pixel or, now and then,
+//! at a column (a record leaves only if nothing holds its cluster; at the
+//! frame's last column hold 1 no longer counts) and at the frame end, each naming the cluster's first pixel or, now and then,
 //! another (a stale report: the record stays), peeks (a slot with a
 //! record reported, whatever holds it), in any order over few slots (an op on the slot of the op
 //! before it, often) and many; ops offered in bursts and sparse; resets
@@ -28,6 +28,7 @@ c_struct! {
     pub struct SrIn {
         pub rst: u8,
         pub half: u8,
+        pub last_col: u16,
         pub op_valid: u8,
         pub merge: u8,
         pub close: u8,
@@ -255,17 +256,28 @@ impl Slot {
     }
 
     /// Whether a close at `col` (`None`: at the frame end) naming first
-    /// pixel `key` takes the record, or would but for the key (`.1`).
-    fn leaves(&self, col: Option<u16>, half: u16, key: u32) -> (bool, bool) {
-        let due = self.due(col, half);
+    /// pixel `key` takes the record, or would but for the key (`.1`). At
+    /// the frame's last column `last_col` hold 1 no longer counts.
+    fn leaves(&self, col: Option<u16>, half: u16, last_col: u16, key: u32) -> (bool, bool) {
+        let due = self.due(col, half, last_col);
         (due && self.first == key, due && self.first != key)
     }
 
-    fn due(&self, col: Option<u16>, half: u16) -> bool {
+    fn due(&self, col: Option<u16>, half: u16, last_col: u16) -> bool {
         let last = CoreAcc::of(&self.acc).max_col as u16;
         self.acc.points > 0
-            && col
-                .is_none_or(|c| self.open == 0 && !self.ring && self.quiet <= c && last + half <= c)
+            && col.is_none_or(|c| {
+                self.open == 0
+                    && !self.ring
+                    && self.quiet <= c
+                    && (last + half <= c || c == last_col)
+            })
+    }
+
+    /// Whether hold 1 alone would keep the record after `col` but for the
+    /// last column.
+    fn window_held(&self, col: u16, half: u16) -> bool {
+        CoreAcc::of(&self.acc).max_col as u16 + half > col
     }
 }
 
@@ -275,6 +287,8 @@ struct Seen {
     ops: u64,
     out_close: u64,
     out_end: u64,
+    /// Records out at the last column that hold 1 would have kept.
+    out_last: u64,
     closes_held: u64,
     /// Closes and ends that named another first pixel than the slot's and
     /// would have taken the record otherwise.
@@ -292,6 +306,7 @@ struct Seen {
 struct Bench {
     d: PlainDut<SrIn, SrOut>,
     half: u16,
+    last_col: u16,
     queue: VecDeque<Op>,
     slots: Vec<Slot>,
     due: VecDeque<(u64, u16, CoreAcc, (u16, u16))>,
@@ -306,10 +321,11 @@ struct Bench {
 }
 
 impl Bench {
-    fn new(model: &PlainModel<SrIn, SrOut>, half: u16, what: String) -> Bench {
+    fn new(model: &PlainModel<SrIn, SrOut>, half: u16, last_col: u16, what: String) -> Bench {
         let mut b = Bench {
             d: PlainDut::new(model.clone()),
             half,
+            last_col,
             queue: VecDeque::new(),
             slots: vec![Slot::default(); SLOTS],
             due: VecDeque::new(),
@@ -348,6 +364,7 @@ impl Bench {
         let mut inp = head.map_or_else(SrIn::default, |op| op.input(&self.slots));
         inp.rst = rst as u8;
         inp.half = self.half as u8;
+        inp.last_col = self.last_col;
         let o = self.d.step(&inp);
         let now = self.cycle;
         self.cycle += 1;
@@ -518,8 +535,12 @@ impl Bench {
         key: u32,
         when: u64,
     ) -> Option<(u16, (u32, u16, u16))> {
-        let (leaves, key_held) = self.slots[s as usize].leaves(col, self.half, key);
+        let slot = &self.slots[s as usize];
+        let (leaves, key_held) = slot.leaves(col, self.half, self.last_col, key);
         self.seen.key_held += u64::from(key_held);
+        if leaves && col.is_some_and(|c| slot.window_held(c, self.half)) {
+            self.seen.out_last += 1;
+        }
         if leaves {
             let r = std::mem::take(&mut self.slots[s as usize]);
             self.due
@@ -637,7 +658,8 @@ fn random_run(
     let base = rng.gen_range(0..SLOTS);
     let slot_of = |k: usize| ((base + k) % SLOTS) as u16;
     let what = format!("seed {seed:#x}, {pool} slots, h = {half}");
-    let mut b = Bench::new(model, half, what);
+    // The last column: the frame's (`cols - 1`), where hold 1 drops.
+    let mut b = Bench::new(model, half, (cols - 1) as u16, what);
     // The points a slot may reach: the accumulator's widths hold 2^19.
     const FULL: u32 = 300_000;
     let (mut rate, mut col) = (1.0, 0u32);
@@ -645,7 +667,8 @@ fn random_run(
         if cycle % 300 == 0 {
             rate = [1.0, 0.7, 0.3, 0.05][rng.gen_range(0..4)];
         }
-        if rng.gen_range(0..6) == 0 {
+        // The last column lasts longer: closes there drop hold 1.
+        if rng.gen_range(0..if col == cols - 1 { 60 } else { 6 }) == 0 {
             col = (col + 1) % cols;
         }
         if b.queue.len() < 4 && rng.gen_bool(rate) {
@@ -676,7 +699,10 @@ fn random_run(
                         Some(x) => {
                             let due = (slot(x).acc.max_col + u32::from(half))
                                 .max(u32::from(slot(x).quiet));
-                            let at = (due + rng.gen_range(0..=2)).saturating_sub(1);
+                            let mut at = (due + rng.gen_range(0..=2)).saturating_sub(1);
+                            if col == cols - 1 && rng.gen_bool(0.5) {
+                                at = col;
+                            }
                             Op::Close(x, at.min(cols - 1) as u16, stale(&mut rng, slot(x).first))
                         }
                         None => Op::Close(s, c16, None),
@@ -719,6 +745,7 @@ fn records_and_holds_follow_the_ops_in_order() {
         all.ops += s.ops;
         all.out_close += s.out_close;
         all.out_end += s.out_end;
+        all.out_last += s.out_last;
         all.closes_held += s.closes_held;
         all.key_held += s.key_held;
         all.peeks += s.peeks;
@@ -730,6 +757,7 @@ fn records_and_holds_follow_the_ops_in_order() {
         all.ops > 50_000
             && all.out_close > 2_000
             && all.out_end > 500
+            && all.out_last > 0
             && all.closes_held > 10_000
             && all.key_held > 100
             && all.peeks > 500
@@ -739,10 +767,57 @@ fn records_and_holds_follow_the_ops_in_order() {
     );
 }
 
+/// Spec §9.2 at the frame's last column: a quiet cluster whose last
+/// column is within `h` of it leaves there (hold 1 ends with the frame's
+/// columns), while one column earlier hold 1 still keeps such a cluster.
+#[test]
+fn at_the_last_column_hold_1_no_longer_keeps_a_cluster() {
+    const LAST: u16 = 99;
+    let model = model();
+    let mut rng = ChaCha8Rng::seed_from_u64(0x58);
+    let mut b = Bench::new(&model, 3, LAST, "the last column".to_string());
+    // A run started and flushed in column `c`: its last column `c`, quiet
+    // at `c`.
+    let run = |rng: &mut ChaCha8Rng, s: u16, c: u16| {
+        let mut acc = Acc::default();
+        acc.add(5, u32::from(c), [100, -200, 300], 64);
+        let flush = Word {
+            acc,
+            open: -1,
+            ring: false,
+            first: NO_FIRST,
+            ends: None,
+        };
+        [
+            Op::Add(s, start(rng, u32::from(c)), c),
+            Op::Add(s, flush, c),
+        ]
+    };
+    // Slot 7: last column 98, closed at 99 (the last): it leaves. Slot 8:
+    // last column 97, closed at 98: held (97 + 3 > 98); it leaves at 99.
+    let ops: Vec<Op> = [run(&mut rng, 7, LAST - 1), run(&mut rng, 8, LAST - 2)]
+        .into_iter()
+        .flatten()
+        .chain([
+            Op::Close(8, LAST - 1, None),
+            Op::Close(7, LAST, None),
+            Op::Close(8, LAST, None),
+        ])
+        .collect();
+    b.queue.extend(ops);
+    b.drain([], 1_000);
+    assert_eq!(
+        (b.seen.out_close, b.seen.out_last, b.seen.closes_held),
+        (2, 2, 1),
+        "(records out at a column, of them at the last column held by hold 1 \
+         but for it, closes held): expected (left), got (right)"
+    );
+}
+
 /// The cycles from offering `ops` at once to the last one taken, and the
 /// records of `touched` slots then checked.
 fn cycles_for(model: &PlainModel<SrIn, SrOut>, what: &str, ops: Vec<Op>, touched: &[u16]) -> u64 {
-    let mut b = Bench::new(model, 3, what.to_string());
+    let mut b = Bench::new(model, 3, 4095, what.to_string());
     b.queue.extend(ops);
     let start = b.cycle;
     while !b.queue.is_empty() {

@@ -2,7 +2,9 @@
 //! (docs/column-core.md, item 4). The record store reports a cluster as
 //! it goes quiet (`q_*`: slot, first pixel, last column, quiet column);
 //! the closer keeps each report in a wait list (`FccFifo`, block RAM, in
-//! arrival order) with its due column `max(last + h, quiet column)`.
+//! arrival order) with its due column `max(last + h, quiet column)`,
+//! `last + h` at most the frame's last column `last_col` (spec §9.2: hold
+//! 1 ends with the frame's columns).
 //! Once column `c` is done (`mark_*`: every op of column `c` has left the
 //! store), and if an entry is due by `c`, it passes over the list once:
 //! the entries due go into the sorted entries (`FccCloseOrder`, by first
@@ -62,6 +64,8 @@ pub struct FccCloser {
     pub rst: Signal<In, Bit>,
     pub clear: Signal<In, Bit>,
     pub half: Signal<In, Bits<3>>,
+    /// The frame's last column, `C - 1` (run parameter): hold 1 ends there.
+    pub last_col: Signal<In, Bits<12>>,
     pub ending: Signal<In, Bit>,
     pub end_col: Signal<In, Bits<12>>,
     pub q_valid: Signal<In, Bit>,
@@ -101,6 +105,7 @@ impl Logic for FccCloser {
         self.list.rst.next = self.rst.val() | self.clear.val();
         self.order.rst.next = self.rst.val() | self.clear.val();
         self.inp.half.next = self.half.val();
+        self.inp.last_col.next = self.last_col.val();
         self.inp.ending.next = self.ending.val();
         self.inp.end_col.next = self.end_col.val();
         self.inp.q_valid.next = self.q_valid.val();

@@ -1,8 +1,10 @@
 //! `FccCloserIn`: what reaches the closer (`FccCloser`,
 //! docs/column-core.md, item 4). The record store's quiet reports are
 //! registered twice on their way to the wait list: first with `last + h`
-//! added, then with their due column, `max(last + h, quiet column)` (at
-//! the frame end, `ending`: `end_col`, where every cluster closes). A
+//! added (at most the frame's last column, `last_col`: hold 1 is gone
+//! after it, spec §9.2), then with their due column, `max(last + h, quiet
+//! column)` (at the frame end, `ending`: `end_col`, where every cluster
+//! closes). A
 //! column marker (`mark_*`: every op of that column has left the store, so
 //! every report it causes has come) is delayed as long, so that the
 //! column is `done` only once those reports are counted in the wait list.
@@ -20,6 +22,7 @@ pub struct FccCloserIn {
     pub rst: Signal<In, Bit>,
     pub clear: Signal<In, Bit>,
     pub half: Signal<In, Bits<3>>,
+    pub last_col: Signal<In, Bits<12>>,
     pub ending: Signal<In, Bit>,
     pub end_col: Signal<In, Bits<12>>,
     pub q_valid: Signal<In, Bit>,
@@ -38,6 +41,7 @@ pub struct FccCloserIn {
     /// No report or marker in flight.
     pub empty: Signal<Out, Bit>,
     e2: Signal<Local, WaitEntry>,
+    reach: Signal<Local, Bits<13>>,
     // Stage 1: the report with `last + h`, and its quiet column (or
     // `end_col`).
     v1: DFF<Bit>,
@@ -65,7 +69,12 @@ impl Logic for FccCloserIn {
         self.v1.d.next = self.q_valid.val();
         self.s1.d.next = self.q_slot.val();
         self.f1.d.next = self.q_first.val();
-        self.l1.d.next = bit_cast::<13, 12>(self.q_last.val()) + bit_cast::<13, 3>(self.half.val());
+        self.reach.next =
+            bit_cast::<13, 12>(self.q_last.val()) + bit_cast::<13, 3>(self.half.val());
+        self.l1.d.next = self.reach.val();
+        if self.reach.val() > bit_cast::<13, 12>(self.last_col.val()) {
+            self.l1.d.next = bit_cast::<13, 12>(self.last_col.val());
+        }
         self.q1.d.next = bit_cast::<13, 12>(self.q_col.val());
         if self.ending.val() {
             self.q1.d.next = bit_cast::<13, 12>(self.end_col.val());

@@ -3,7 +3,8 @@
 //! that nothing holds after `col`: it has points, no run open, no ring
 //! flag, it went quiet by `col` and its last column is at least `h`
 //! columns back (`last <= lim`, `lim = col - h` worked out a cycle
-//! ahead, its bit 12 set when negative). At the frame end (`frame_end`)
+//! ahead, its bit 12 set when negative; `lim = col` at the frame's last
+//! column, after which hold 1 is gone). At the frame end (`frame_end`)
 //! every cluster with points leaves. Either way the op names the cluster
 //! by its first pixel (`key`, from the closer's wait list): a report gone
 //! stale (the cluster merged, or its slot freed and taken by another) does

@@ -7,8 +7,9 @@
 //! word is known a cycle ahead: an add's, taken with the op; a merge's
 //! gone word, in stage 2 while its kept half is in stage 1; the empty word
 //! (the merges' identity) for a close. So the merges start from registers,
-//! and so does the check: the close's column less `h` is worked out in
-//! stage 1, and the first pixel it names (its word's) is registered.
+//! and so does the check: the close's column less `h` (the column itself
+//! at the last column, `last_col`, after which hold 1 is gone) is worked
+//! out in stage 1, and the first pixel it names (its word's) is registered.
 
 use rust_hdl::prelude::*;
 
@@ -26,6 +27,8 @@ pub struct FccSlotPipe {
     pub op_word: Signal<In, SlotWord>,
     pub op_col: Signal<In, Bits<12>>,
     pub half: Signal<In, Bits<3>>,
+    /// The frame's last column, `C - 1`: a close there drops hold 1.
+    pub last_col: Signal<In, Bits<12>>,
     pub h1: Signal<In, SlotHalf>,
     /// Stage 2: the word read.
     pub word: Signal<In, SlotWord>,
@@ -71,6 +74,7 @@ impl Default for FccSlotPipe {
             op_word: Default::default(),
             op_col: Default::default(),
             half: Default::default(),
+            last_col: Default::default(),
             h1: Default::default(),
             word: Default::default(),
             merged: Default::default(),
@@ -116,6 +120,10 @@ impl Logic for FccSlotPipe {
         }
         self.c2.d.next = self.c1.q.val();
         self.l2.d.next = bit_cast::<13, 12>(self.c1.q.val()) - bit_cast::<13, 3>(self.half.val());
+        // Spec §9.2: no later column holds a cluster after the last one.
+        if self.c1.q.val() == self.last_col.val() {
+            self.l2.d.next = bit_cast::<13, 12>(self.c1.q.val());
+        }
         self.ah.next = self.a1.q.val().holds;
         self.f2.d.next = self.ah.val().first;
         self.k2.d.next = (self.h1.val() == SlotHalf::Close) | (self.h1.val() == SlotHalf::End);

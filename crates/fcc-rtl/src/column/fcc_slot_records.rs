@@ -11,8 +11,9 @@
 //! * `Merge`: the word of `op_other` merged into `op_slot`'s (a union's
 //!   gone slot into the kept one; the two differ), `op_other` then empty;
 //! * `Close`: the record of `op_slot` out if nothing holds the cluster
-//!   after `op_col` (`FccSlotCheck`, with `half` = `h`), the slot then
-//!   empty; otherwise nothing;
+//!   after `op_col` (`FccSlotCheck`, with `half` = `h`; at the last
+//!   column, `last_col`, hold 1 no longer counts), the slot then empty;
+//!   otherwise nothing;
 //! * `End`: at the frame end, the record out if the slot has one;
 //! * `Peek`: at the frame end, the slot reported (`q_*`, as a quiet
 //!   cluster is) if it has a record, whatever holds it, and left as it
@@ -63,6 +64,9 @@ pub struct FccSlotRecords {
     pub rst: Signal<In, Bit>,
     /// `h`, the window's half-size (run parameter).
     pub half: Signal<In, Bits<3>>,
+    /// The frame's last column, `C - 1` (run parameter): a close there
+    /// drops hold 1, as nothing follows it (spec §9.2).
+    pub last_col: Signal<In, Bits<12>>,
     pub op_valid: Signal<In, Bit>,
     pub op_kind: Signal<In, SlotOp>,
     pub op_slot: Signal<In, Bits<SLOT_BITS>>,
@@ -103,6 +107,7 @@ impl Default for FccSlotRecords {
             clk: Default::default(),
             rst: Default::default(),
             half: Default::default(),
+            last_col: Default::default(),
             op_valid: Default::default(),
             op_kind: Default::default(),
             op_slot: Default::default(),
@@ -155,6 +160,7 @@ impl Logic for FccSlotRecords {
         self.pipe.op_word.next = self.op_word.val();
         self.pipe.op_col.next = self.op_col.val();
         self.pipe.half.next = self.half.val();
+        self.pipe.last_col.next = self.last_col.val();
         self.pipe.h1.next = self.issue.h1.val();
         self.pipe.word.next = self.records.read_data.val();
         // Stage 3: an add's or a kept word written, a gone slot or a

@@ -16,6 +16,7 @@ pub struct FccSlotRecordsProbe {
     pub clk: Signal<In, Clock>,
     pub rst: Signal<In, Bit>,
     pub half: Signal<In, Bits<3>>,
+    pub last_col: Signal<In, Bits<12>>,
     pub op_valid: Signal<In, Bit>,
     pub merge: Signal<In, Bit>,
     pub close: Signal<In, Bit>,
@@ -104,6 +105,7 @@ impl Logic for FccSlotRecordsProbe {
         self.records.clk.next = self.clk.val();
         self.records.rst.next = self.rst.val();
         self.records.half.next = self.half.val();
+        self.records.last_col.next = self.last_col.val();
         self.records.op_valid.next = self.op_valid.val();
         self.records.op_kind.next = SlotOp::Add;
         if self.merge.val() {
