@@ -13,9 +13,10 @@
 //! the next head shows two cycles later). Upstream holds what could flush
 //! while `room` is low: `room` (read off the places held, a register) says
 //! that the places held after the last cycle's push and take, and `margin`
-//! flushes more, and the one decided in the cycle `room` is seen, fit. `margin` is how many cycles after being let in a
-//! pixel (or a frame-end step) can flush, one flush each, at most: so
-//! while upstream honours `room` the places never overflow. If one does
+//! flushes more, and the one decided in the cycle `room` is seen, fit.
+//! `margin` is how many cycles after being let in a pixel (or a frame-end
+//! step) can flush, one flush each, at most: so while upstream honours
+//! `room` the places never overflow. If one does
 //! anyway (a push with every place held and none taken), or a take finds
 //! no head, `bad` says so until reset.
 
