@@ -12,6 +12,7 @@ use crate::records::{Acc, Record};
 use crate::threshold::{JoinsWith, Thresholds};
 use crate::GoldenError;
 use fcc_params::FccParams;
+use fcc_pixel::record::FrameEnd;
 use serde::Serialize;
 
 /// No run: an empty or unlabelled pixel; the end of a pixel list.
@@ -397,6 +398,18 @@ impl Stream {
     /// What the finished frame (or the frame so far) reported.
     pub fn stats(&self) -> StreamStats {
         self.stats
+    }
+
+    /// The finished frame's end beat (spec §9.4): its records, and whether
+    /// a run was refused a label (label overflow or the open limit). The
+    /// input's framing is the caller's: `frame_error` is false. `None` until
+    /// the frame is finished.
+    pub fn frame_end(&self) -> Option<FrameEnd> {
+        self.finished.then_some(FrameEnd {
+            records: self.stats.clusters,
+            overflow: self.stats.overflow || self.stats.open_refused > 0,
+            frame_error: false,
+        })
     }
 
     /// The label image of the finished frame, raster order, numbered by

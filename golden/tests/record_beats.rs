@@ -3,7 +3,7 @@
 //! (`fcc_params::limits`) has its beats.
 
 use fcc_params::limits;
-use fcc_pixel::record::{HwRecord, RECORD_LAYOUT, RECORD_WORDS};
+use fcc_pixel::record::{HwRecord, END_LAYOUT, RECORD_LAYOUT, RECORD_WORDS};
 
 /// The rows of the spec's §9.4 table: beat, lsb, bits, signed, field.
 fn spec_rows() -> Vec<(usize, u32, u32, bool, String)> {
@@ -14,6 +14,7 @@ fn spec_rows() -> Vec<(usize, u32, u32, bool, String)> {
     let section = &section[..section.find("\n## ").unwrap_or(section.len())];
     section
         .lines()
+        .take_while(|l| !l.starts_with("**Frame end.**"))
         .filter(|l| l.starts_with("| ") && !l.starts_with("| beat"))
         .map(|l| {
             let c: Vec<&str> = l.split('|').map(str::trim).collect();
@@ -83,4 +84,39 @@ fn a_record_of_the_largest_frame_has_its_beats() {
         let words = r.pack().unwrap_or_else(|e| panic!("{e}"));
         assert_eq!(HwRecord::unpack(&words), Ok(r));
     }
+}
+
+/// The rows of the spec's end-beat table (§9.4, "Frame end"): lsb, bits,
+/// field.
+fn spec_end_rows() -> Vec<(u32, u32, String)> {
+    let spec = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/spec.md"))
+        .expect("docs/spec.md");
+    let start = spec.find("**Frame end.**").expect("spec §9.4's frame end");
+    let section = &spec[start..];
+    let section = &section[..section.find("\n## ").unwrap_or(section.len())];
+    section
+        .lines()
+        .filter(|l| l.starts_with("| ") && !l.starts_with("| lsb"))
+        .map(|l| {
+            let c: Vec<&str> = l.split('|').map(str::trim).collect();
+            (
+                c[1].parse().unwrap(),
+                c[2].parse().unwrap(),
+                c[3].trim_matches('`').to_string(),
+            )
+        })
+        .collect()
+}
+
+#[test]
+fn the_spec_end_beat_table_is_the_layout() {
+    let rows = spec_end_rows();
+    let layout: Vec<_> = END_LAYOUT
+        .iter()
+        .map(|l| (l.lsb, l.bits, l.name.to_string()))
+        .collect();
+    assert_eq!(
+        rows, layout,
+        "spec §9.4's end beat: got (spec), expected (layout)"
+    );
 }

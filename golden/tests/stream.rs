@@ -8,7 +8,7 @@ use fcc_golden::{
     Record, Stream,
 };
 use fcc_params::FccParams;
-use fcc_pixel::record::HwRecord;
+use fcc_pixel::record::{frame_beats, FrameEnd, HwRecord, Item, RecordReader};
 use fcc_scene::{generate, SceneConfig};
 use proptest::prelude::*;
 
@@ -144,18 +144,36 @@ fn check_stream(p: &FccParams, f: &Frame, what: &str) {
         );
         assert!(again.iter().all(|r| r.frame == 1), "{what}: frame numbers");
     }
-    // Every record has its beats (spec §9.4), which give it back.
-    for r in &records {
-        let words = r
-            .hw()
-            .pack()
-            .unwrap_or_else(|e| panic!("{what}: {e} in {r:?}"));
-        assert_eq!(
-            HwRecord::unpack(&words),
-            Ok(r.hw()),
-            "{what}: beats of {r:?}"
-        );
+    // The frame's beats (spec §9.4): every record's, then the end beat,
+    // which a reader gives back; the end beat says whether a valid pixel
+    // was left unlabelled.
+    let end = s.frame_end().expect("the frame is finished");
+    let refused =
+        (0..f.rows * f.cols).any(|k| f.get(k / f.cols, k % f.cols).is_some() && labels[k] == 0);
+    assert!(
+        end.records as usize == records.len() && end.overflow == refused && !end.frame_error,
+        "{what}: end beat {end:?}, {} records, a pixel refused: {refused}",
+        records.len()
+    );
+    let hw: Vec<HwRecord> = records.iter().map(Record::hw).collect();
+    let mut beats = Vec::new();
+    frame_beats(&hw, end, &mut beats).unwrap_or_else(|e| panic!("{what}: {e}"));
+    let mut reader = RecordReader::new();
+    let mut back = Vec::new();
+    for (k, &(w, last)) in beats.iter().enumerate() {
+        match reader.push(w, last) {
+            Ok(Some(item)) => back.push(item),
+            Ok(None) => {}
+            Err(e) => panic!("{what}: beat {k}: {e}"),
+        }
     }
+    reader.finish().unwrap_or_else(|e| panic!("{what}: {e}"));
+    let want: Vec<Item> = hw
+        .iter()
+        .map(|&r| Item::Record(r))
+        .chain([Item::End(end)])
+        .collect();
+    assert_eq!(back, want, "{what}: the frame's beats read back");
     // Frame mode has no open limit (and refuses one).
     let unlimited = FccParams {
         open_limit: None,
@@ -628,6 +646,14 @@ fn overflow_leaves_the_runs_that_start_while_every_label_is_in_use() {
         "{st:?}"
     );
     assert_eq!(r.len(), 255);
+    assert_eq!(
+        s.frame_end(),
+        Some(FrameEnd {
+            records: 255,
+            overflow: true,
+            frame_error: false
+        })
+    );
     // The unlabelled pixels are the last 45 rows of column 0.
     assert!((0..rows).all(|i| (labels[i * 2] == 0) == (i >= 255)));
 }

@@ -3,7 +3,9 @@
 //! beat at the place [`RECORD_LAYOUT`] gives it, bits outside the fields
 //! zero. The widths hold every value of the largest hardware frame (128 rows,
 //! 4096 columns, 2^19 points of 16-bit coordinates; the golden model's test
-//! `record_beats` packs such a record).
+//! `record_beats` packs such a record). After a frame's last record comes
+//! its end beat ([`FrameEnd`], `tlast` high); [`RecordReader`] reads such a
+//! stream back and refuses one that is not.
 
 use core::fmt;
 
@@ -233,9 +235,296 @@ impl HwRecord {
     }
 }
 
+/// One field of the end beat.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum EndField {
+    Id,
+    Records,
+    Overflow,
+    FrameError,
+}
+
+/// Where an end-beat field lies: bits `lsb .. lsb + bits`, unsigned.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct EndFieldLayout {
+    pub field: EndField,
+    /// The field's name (spec §9.4).
+    pub name: &'static str,
+    pub lsb: u32,
+    pub bits: u32,
+}
+
+const fn e(field: EndField, name: &'static str, lsb: u32, bits: u32) -> EndFieldLayout {
+    EndFieldLayout {
+        field,
+        name,
+        lsb,
+        bits,
+    }
+}
+
+/// The end beat's fields, from bit 0 up (spec §9.4). Its `id` is 0, which
+/// no record has.
+pub const END_LAYOUT: [EndFieldLayout; 4] = [
+    e(EndField::Id, "id", 0, 20),
+    e(EndField::Records, "records", 20, 20),
+    e(EndField::Overflow, "overflow", 40, 1),
+    e(EndField::FrameError, "frame_error", 41, 1),
+];
+
+/// The end beat of a frame (spec §9.4): what follows its last record, with
+/// `tlast`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub struct FrameEnd {
+    /// Records of the frame (their ids are `1 ..= records`).
+    pub records: u32,
+    /// A run of the frame was refused a label (labels or the open limit).
+    pub overflow: bool,
+    /// The frame's input `tlast` came early or late.
+    pub frame_error: bool,
+}
+
+impl FrameEnd {
+    fn value(&self, field: EndField) -> u64 {
+        match field {
+            EndField::Id => 0,
+            EndField::Records => self.records.into(),
+            EndField::Overflow => self.overflow.into(),
+            EndField::FrameError => self.frame_error.into(),
+        }
+    }
+
+    /// The end beat, or `DoesNotFit` for a count of records beyond its bits.
+    pub fn pack(&self) -> Result<u64, RecordError> {
+        let mut w = 0;
+        for l in &END_LAYOUT {
+            let v = self.value(l.field);
+            if v > mask(l.bits) {
+                return Err(RecordError::DoesNotFit {
+                    field: l.name,
+                    value: v.into(),
+                });
+            }
+            w |= v << l.lsb;
+        }
+        Ok(w)
+    }
+
+    /// Whether beat `w`, the first of a record or an end beat, is an end
+    /// beat (its `id` field is 0).
+    pub fn is_end(w: u64) -> bool {
+        w & mask(END_LAYOUT[0].bits) == 0
+    }
+
+    /// The end beat `w`: `None` when its `id` is not 0 (a record's beat),
+    /// `SpareBits` (beat 0) when bits outside its fields are set.
+    pub fn unpack(w: u64) -> Result<Option<FrameEnd>, RecordError> {
+        if !Self::is_end(w) {
+            return Ok(None);
+        }
+        let mut used = 0;
+        let mut end = FrameEnd::default();
+        for l in &END_LAYOUT {
+            let v = (w >> l.lsb) & mask(l.bits);
+            used |= mask(l.bits) << l.lsb;
+            match l.field {
+                EndField::Id => {}
+                EndField::Records => end.records = v as u32,
+                EndField::Overflow => end.overflow = v != 0,
+                EndField::FrameError => end.frame_error = v != 0,
+            }
+        }
+        if w & !used != 0 {
+            return Err(RecordError::SpareBits {
+                word: 0,
+                bits: w & !used,
+            });
+        }
+        Ok(Some(end))
+    }
+}
+
+/// What a [`RecordReader`] gives back: a record, or a frame's end.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Item {
+    Record(HwRecord),
+    End(FrameEnd),
+}
+
+/// Why a beat stream is no record stream (spec §9.4).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ReadError {
+    /// A record or end beat with bad bits.
+    Beat(RecordError),
+    /// `tlast` on beat `word` of a record.
+    LastInRecord { word: usize },
+    /// An end beat without `tlast`.
+    EndWithoutLast,
+    /// A record whose id is not the next of its frame.
+    IdOutOfOrder { expected: u32, got: u32 },
+    /// An end beat whose count of records is not the number read.
+    CountDiffers { said: u32, read: u32 },
+    /// The stream ended after `words` beats of a record.
+    EndsInRecord { words: usize },
+    /// The stream ended after `records` records of a frame without its end
+    /// beat.
+    EndsInFrame { records: u32 },
+}
+
+impl fmt::Display for ReadError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ReadError::Beat(e) => e.fmt(f),
+            ReadError::LastInRecord { word } => {
+                write!(
+                    f,
+                    "tlast on beat {word} of a record (only an end beat has it)"
+                )
+            }
+            ReadError::EndWithoutLast => write!(f, "an end beat without tlast"),
+            ReadError::IdOutOfOrder { expected, got } => {
+                write!(f, "record id {got} where {expected} comes next")
+            }
+            ReadError::CountDiffers { said, read } => {
+                write!(
+                    f,
+                    "the end beat counts {said} records, the frame had {read}"
+                )
+            }
+            ReadError::EndsInRecord { words } => {
+                write!(f, "the stream ends after {words} beats of a record")
+            }
+            ReadError::EndsInFrame { records } => write!(
+                f,
+                "the stream ends after {records} records of a frame, without its end beat"
+            ),
+        }
+    }
+}
+
+/// Reads a stream of record beats (spec §9.4) one beat at a time: push
+/// each beat with its `tlast`, take each record and each frame end as it
+/// completes, and [`finish`](Self::finish) at the stream's end. After an
+/// error the reader is of no further use.
+#[derive(Clone, Debug, Default)]
+pub struct RecordReader {
+    words: [u64; RECORD_WORDS],
+    /// Beats of the record being read.
+    n: usize,
+    /// Records of the frame being read.
+    records: u32,
+    frames: u64,
+    beats: u64,
+}
+
+impl RecordReader {
+    pub fn new() -> RecordReader {
+        RecordReader::default()
+    }
+
+    /// Frames ended so far.
+    pub fn frames(&self) -> u64 {
+        self.frames
+    }
+
+    /// Beats pushed so far (the failing beat is `beats() - 1`).
+    pub fn beats(&self) -> u64 {
+        self.beats
+    }
+
+    /// Take one beat.
+    pub fn push(&mut self, beat: u64, last: bool) -> Result<Option<Item>, ReadError> {
+        self.beats += 1;
+        if self.n == 0 {
+            if let Some(end) = FrameEnd::unpack(beat).map_err(ReadError::Beat)? {
+                if !last {
+                    return Err(ReadError::EndWithoutLast);
+                }
+                if end.records != self.records {
+                    return Err(ReadError::CountDiffers {
+                        said: end.records,
+                        read: self.records,
+                    });
+                }
+                self.records = 0;
+                self.frames += 1;
+                return Ok(Some(Item::End(end)));
+            }
+        }
+        if last {
+            return Err(ReadError::LastInRecord { word: self.n });
+        }
+        self.words[self.n] = beat;
+        self.n += 1;
+        if self.n < RECORD_WORDS {
+            return Ok(None);
+        }
+        self.n = 0;
+        let r = HwRecord::unpack(&self.words).map_err(ReadError::Beat)?;
+        let expected = self.records + 1;
+        if r.id != expected {
+            return Err(ReadError::IdOutOfOrder {
+                expected,
+                got: r.id,
+            });
+        }
+        self.records = expected;
+        Ok(Some(Item::Record(r)))
+    }
+
+    /// The stream ended: an error if it ends inside a record or a frame.
+    pub fn finish(&self) -> Result<(), ReadError> {
+        if self.n > 0 {
+            Err(ReadError::EndsInRecord { words: self.n })
+        } else if self.records > 0 {
+            Err(ReadError::EndsInFrame {
+                records: self.records,
+            })
+        } else {
+            Ok(())
+        }
+    }
+}
+
+/// Append one frame's beats, `(beat, tlast)`: each record's, then the end
+/// beat (spec §9.4). The records' ids must count `1, 2, ...`, which the
+/// caller's reader checks.
+pub fn frame_beats<'a>(
+    records: impl IntoIterator<Item = &'a HwRecord>,
+    end: FrameEnd,
+    out: &mut impl Extend<(u64, bool)>,
+) -> Result<(), RecordError> {
+    for r in records {
+        out.extend(r.pack()?.into_iter().map(|w| (w, false)));
+    }
+    out.extend(core::iter::once((end.pack()?, true)));
+    Ok(())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn end_fields_lie_apart_inside_their_beat() {
+        let mut used = 0u64;
+        for l in &END_LAYOUT {
+            assert!(
+                l.bits >= 1 && l.lsb + l.bits <= 64,
+                "{} leaves its beat",
+                l.name
+            );
+            let m = mask(l.bits) << l.lsb;
+            assert_eq!(used & m, 0, "{} overlaps another field", l.name);
+            used |= m;
+        }
+        // The end beat's id is where a record's is.
+        assert_eq!(
+            (END_LAYOUT[0].lsb, END_LAYOUT[0].bits),
+            (RECORD_LAYOUT[0].lsb, RECORD_LAYOUT[0].bits)
+        );
+        assert_eq!((END_LAYOUT[0].name, RECORD_LAYOUT[0].name), ("id", "id"));
+    }
 
     #[test]
     fn fields_lie_apart_inside_their_beats() {
@@ -286,6 +575,161 @@ mod tests {
                 bits: 1 << 40
             })
         );
+    }
+
+    struct Beats([(u64, bool); 64], usize);
+    impl Extend<(u64, bool)> for Beats {
+        fn extend<I: IntoIterator<Item = (u64, bool)>>(&mut self, it: I) {
+            for b in it {
+                self.0[self.1] = b;
+                self.1 += 1;
+            }
+        }
+    }
+
+    fn rec(id: u32) -> HwRecord {
+        HwRecord {
+            id,
+            points: id + 2,
+            min: [-3, 4, -5],
+            ..HwRecord::default()
+        }
+    }
+
+    /// Two frames: records 1 and 2 then an end beat; an end beat alone.
+    fn two_frames() -> Beats {
+        let mut b = Beats([(0, false); 64], 0);
+        let end = FrameEnd {
+            records: 2,
+            overflow: true,
+            frame_error: false,
+        };
+        frame_beats(&[rec(1), rec(2)], end, &mut b).unwrap();
+        frame_beats(&[], FrameEnd::default(), &mut b).unwrap();
+        b
+    }
+
+    fn read(beats: &[(u64, bool)]) -> Result<(u32, u64), (u64, ReadError)> {
+        let mut r = RecordReader::new();
+        let mut records = 0;
+        for &(w, last) in beats {
+            match r.push(w, last) {
+                Ok(Some(Item::Record(_))) => records += 1,
+                Ok(_) => {}
+                Err(e) => return Err((r.beats() - 1, e)),
+            }
+        }
+        r.finish().map_err(|e| (r.beats(), e))?;
+        Ok((records, r.frames()))
+    }
+
+    #[test]
+    fn a_reader_takes_records_and_end_beats_back() {
+        let b = two_frames();
+        let beats = &b.0[..b.1];
+        assert_eq!(beats.len(), 2 * RECORD_WORDS + 2);
+        assert_eq!(beats[2 * RECORD_WORDS], (1 << 40 | 2 << 20, true));
+        assert_eq!(beats[2 * RECORD_WORDS + 1], (0, true));
+        let mut r = RecordReader::new();
+        let mut items = [None; 4];
+        let mut n = 0;
+        for &(w, last) in beats {
+            if let Some(i) = r.push(w, last).unwrap() {
+                items[n] = Some(i);
+                n += 1;
+            }
+        }
+        assert_eq!(
+            items,
+            [
+                Some(Item::Record(rec(1))),
+                Some(Item::Record(rec(2))),
+                Some(Item::End(FrameEnd {
+                    records: 2,
+                    overflow: true,
+                    frame_error: false
+                })),
+                Some(Item::End(FrameEnd::default())),
+            ]
+        );
+        assert_eq!(r.finish(), Ok(()));
+        assert_eq!(read(beats), Ok((2, 2)));
+    }
+
+    #[test]
+    fn a_reader_refuses_what_is_no_record_stream() {
+        let b = two_frames();
+        let good = &b.0[..b.1];
+        let with = |k: usize, beat: (u64, bool)| {
+            let mut v = Beats([(0, false); 64], 0);
+            v.extend(good.iter().copied());
+            v.0[k] = beat;
+            read(&v.0[..v.1])
+        };
+        let end1 = 2 * RECORD_WORDS;
+        // tlast on a record's beat 3.
+        assert_eq!(
+            with(3, (good[3].0, true)),
+            Err((3, ReadError::LastInRecord { word: 3 }))
+        );
+        // The end beat without tlast.
+        assert_eq!(
+            with(end1, (good[end1].0, false)),
+            Err((end1 as u64, ReadError::EndWithoutLast))
+        );
+        // The end beat counts 3 records.
+        assert_eq!(
+            with(end1, (3 << 20, true)),
+            Err((end1 as u64, ReadError::CountDiffers { said: 3, read: 2 }))
+        );
+        // Spare bits in the end beat.
+        assert_eq!(
+            with(end1, (good[end1].0 | 1 << 50, true)),
+            Err((
+                end1 as u64,
+                ReadError::Beat(RecordError::SpareBits {
+                    word: 0,
+                    bits: 1 << 50
+                })
+            ))
+        );
+        // The second record numbered 3.
+        let w0 = good[RECORD_WORDS].0;
+        let w3 = (w0 & !0xF_FFFF) | 3;
+        assert_eq!(
+            with(RECORD_WORDS, (w3, false)),
+            Err((
+                2 * RECORD_WORDS as u64 - 1,
+                ReadError::IdOutOfOrder {
+                    expected: 2,
+                    got: 3
+                }
+            ))
+        );
+        // Ends inside a record, inside a frame.
+        assert_eq!(
+            read(&good[..RECORD_WORDS + 4]),
+            Err((
+                (RECORD_WORDS + 4) as u64,
+                ReadError::EndsInRecord { words: 4 }
+            ))
+        );
+        assert_eq!(
+            read(&good[..RECORD_WORDS]),
+            Err((RECORD_WORDS as u64, ReadError::EndsInFrame { records: 1 }))
+        );
+        // A count of records beyond 20 bits has no end beat.
+        let big = FrameEnd {
+            records: 1 << 20,
+            ..FrameEnd::default()
+        };
+        assert!(matches!(
+            big.pack(),
+            Err(RecordError::DoesNotFit {
+                field: "records",
+                ..
+            })
+        ));
     }
 
     #[test]
