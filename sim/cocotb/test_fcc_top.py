@@ -200,7 +200,7 @@ class Bench:
                 lambda: len(self.mon.done) > ndone + k, 16, f"case '{case['name']}' status_frame_done {k}", step=1
             )
             status = self.mon.done[ndone + k]
-            self.compare(f, self.labels_of(got_frame), status, case, cols)
+            self.compare(f, self.labels_of(got_frame), status, case, cols or f["cols"])
             self.joins.setdefault(f["name"], status["status_joins"])
         return status
 
@@ -331,7 +331,14 @@ async def fcc_top_against_golden(dut):
     await bench.reset(4)
     for case in manifest["cases"]:
         c0 = bench.mon.cycle
-        if case["kind"] == "frames":
+        if case["kind"] == "frames" and case["run_cols"] is not None:
+            # A run size below the build's: RUN_COLS programmed, then its
+            # power-on value restored (each case leaves the power-on values).
+            await bench.write("RUN_COLS", case["run_cols"])
+            await bench.expect("ERROR", 0, f"case '{case['name']}': RUN_COLS = {case['run_cols']}")
+            await bench.run_frames(case, [frames[n] for n in case["frames"]], cols=case["run_cols"])
+            await bench.write("RUN_COLS", bench.regs["RUN_COLS"]["reset"])
+        elif case["kind"] == "frames":
             await bench.run_frames(case, [frames[n] for n in case["frames"]])
         elif case["kind"] == "reset_mid_frame":
             await bench.reset_mid_frame(case, frames[case["frames"][0]])

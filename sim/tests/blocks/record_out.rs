@@ -1,16 +1,20 @@
-//! The column core's record output `fcc_record_out` (its beats from
+//! The column core's record stream `fcc_record_out` (its beats from
 //! `FccRecBeats`) alone under Verilator, against the golden records' beats
 //! (`fcc_golden::Acc::record(..).hw().pack()`, spec §9.3 and §9.4): seeded
 //! random accumulators (a few pixels to many, at the ends of the Q7.8
 //! range, seam clusters with columns in both halves or one), ids and
 //! closing columns up to their widths, sent with random back-pressure; the
 //! beats start the second cycle after the load, a beat must hold while
-//! `valid` and not `ready`, `last` mark beat 10, `idle` the end. A mismatch prints the record, the beat, expected, got
-//! and the seed.
+//! `valid` and not `ready`, no record beat has `last`, `idle` marks the end.
+//! Then frames of records and end beats (spec §9.4's frame end), read back
+//! by `fcc_pixel::record::RecordReader`: counts, flags, `last` on the end
+//! beat alone, frames without records, end requests refused while busy or
+//! beside a load. A mismatch prints the record, the beat, expected, got and
+//! the seed.
 
 use fcc_golden::{Acc, Point};
 use fcc_params::FccParams;
-use fcc_pixel::record::RECORD_WORDS;
+use fcc_pixel::record::{FrameEnd, Item, RecordReader, RECORD_WORDS};
 use fcc_rtl::BenchBlock;
 use fcc_sim::core_form::CoreAcc;
 use fcc_sim::{c_struct, load_plain, PlainDut};
@@ -48,6 +52,9 @@ c_struct! {
         pub syy: u64,
         pub sab: u64,
         pub seam: u8,
+        pub load_end: u8,
+        pub overflow: u8,
+        pub frame_error: u8,
         pub ready: u8,
     }
 }
@@ -185,12 +192,7 @@ fn records_leave_as_the_golden_records_beats() {
             if let Some(h) = held {
                 assert_eq!(o.beat, h, "{at}: beat {} changed while held", got.len());
             }
-            assert_eq!(
-                o.last != 0,
-                got.len() == RECORD_WORDS - 1,
-                "{at}: last at beat {}",
-                got.len()
-            );
+            assert_eq!(o.last, 0, "{at}: last on record beat {}", got.len());
             if ready {
                 let k = got.len();
                 assert_eq!(
@@ -206,4 +208,108 @@ fn records_leave_as_the_golden_records_beats() {
         }
         assert_eq!(got.len(), RECORD_WORDS, "{at}: beats sent");
     }
+}
+
+#[test]
+fn frames_of_records_end_with_their_end_beat() {
+    let model = load_plain::<RoIn, RoOut>(BenchBlock::RecordOut, &FccParams::default())
+        .expect("record output model");
+    let mut d = PlainDut::new(model);
+    let seed = 0x4ec0_0002;
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    d.step(&RoIn {
+        rst: 1,
+        ..RoIn::default()
+    });
+    let mut want = Vec::new();
+    let mut reader = RecordReader::new();
+    let mut got = Vec::new();
+    let mut held: Option<(u64, u8)> = None;
+    // Step one cycle with `i` (plus a random `ready`), taking what leaves.
+    let mut step = |d: &mut PlainDut<RoIn, RoOut>, rng: &mut ChaCha8Rng, i: RoIn, at: &str| {
+        let ready = rng.gen_bool(0.6);
+        let o = d.step(&RoIn {
+            ready: ready as u8,
+            ..i
+        });
+        if o.valid == 1 {
+            if let Some(h) = held {
+                assert_eq!((o.beat, o.last), h, "{at}: a beat changed while held");
+            }
+            if ready {
+                let k = reader.beats();
+                match reader.push(o.beat, o.last != 0) {
+                    Ok(Some(item)) => got.push(item),
+                    Ok(None) => {}
+                    Err(e) => panic!("{at}: output beat {k}: {e} (beat {:#x})", o.beat),
+                }
+                held = None;
+            } else {
+                held = Some((o.beat, o.last));
+            }
+        }
+        o
+    };
+    for frame in 0..80 {
+        let n = [0, 1, 2, 5, 0, 3][frame % 6];
+        for id in 1..=n {
+            let at = format!("frame {frame} record {id}, seed {seed:#x}");
+            let a = random_acc(&mut rng, 2048, 20);
+            let closed = rng.gen_range(0..=2048u16);
+            want.push(Item::Record(a.record(0, id, u32::from(closed)).hw()));
+            while step(&mut d, &mut rng, RoIn::default(), &at).idle == 0 {}
+            // A load with an end request beside it: the load is taken, the
+            // end request is not.
+            let beside = rng.gen_bool(0.3) as u8;
+            step(
+                &mut d,
+                &mut rng,
+                RoIn {
+                    load_end: beside,
+                    ..load(&a, id, closed)
+                },
+                &at,
+            );
+            // End requests while the record is sent are not taken.
+            for _ in 0..rng.gen_range(0..4) {
+                let i = RoIn {
+                    load_end: rng.gen_bool(0.5) as u8,
+                    overflow: 1,
+                    ..RoIn::default()
+                };
+                step(&mut d, &mut rng, i, &at);
+            }
+        }
+        let at = format!("frame {frame} end, seed {seed:#x}");
+        let end = FrameEnd {
+            records: n,
+            overflow: rng.gen_bool(0.5),
+            frame_error: rng.gen_bool(0.3),
+        };
+        want.push(Item::End(end));
+        while step(&mut d, &mut rng, RoIn::default(), &at).idle == 0 {}
+        let i = RoIn {
+            load_end: 1,
+            overflow: end.overflow as u8,
+            frame_error: end.frame_error as u8,
+            ..RoIn::default()
+        };
+        let o = step(&mut d, &mut rng, i, &at);
+        assert_eq!(o.idle, 1, "{at}: not idle at the end request");
+    }
+    for _ in 0..64 {
+        step(&mut d, &mut rng, RoIn::default(), "tail");
+    }
+    reader
+        .finish()
+        .unwrap_or_else(|e| panic!("the stream's end: {e}, seed {seed:#x}"));
+    let first = want.iter().zip(&got).position(|(w, g)| w != g);
+    assert!(
+        got.len() == want.len() && first.is_none(),
+        "{} items out for {}; first differing item {first:?}: expected {:?}, got {:?}, seed {seed:#x}",
+        got.len(),
+        want.len(),
+        first.map(|k| want[k]),
+        first.map(|k| got[k])
+    );
 }

@@ -37,6 +37,9 @@ pub struct FccRecordOutProbe {
     pub syy: Signal<In, Bits<50>>,
     pub sab: Signal<In, Bits<51>>,
     pub seam: Signal<In, Bit>,
+    pub load_end: Signal<In, Bit>,
+    pub overflow: Signal<In, Bit>,
+    pub frame_error: Signal<In, Bit>,
     pub ready: Signal<In, Bit>,
     pub idle: Signal<Out, Bit>,
     pub valid: Signal<Out, Bit>,
@@ -79,6 +82,9 @@ impl Logic for FccRecordOutProbe {
         self.out.acc.next = self.word.val();
         self.out.id.next = self.id.val();
         self.out.closed_col.next = self.closed_col.val();
+        self.out.load_end.next = self.load_end.val();
+        self.out.overflow.next = self.overflow.val();
+        self.out.frame_error.next = self.frame_error.val();
         self.out.ready.next = self.ready.val();
         self.idle.next = self.out.idle.val();
         self.valid.next = self.out.valid.val();
