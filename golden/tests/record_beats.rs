@@ -5,29 +5,47 @@
 use fcc_params::limits;
 use fcc_pixel::record::{HwRecord, END_LAYOUT, RECORD_LAYOUT, RECORD_WORDS};
 
-/// The rows of the spec's §9.4 table: beat, lsb, bits, signed, field.
-fn spec_rows() -> Vec<(usize, u32, u32, bool, String)> {
+/// The cells of the table rows (not the header) of docs/spec.md between
+/// `from` and the next of `to` or a new chapter.
+fn spec_table(from: &str, to: &str) -> Vec<Vec<String>> {
     let spec = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/spec.md"))
         .expect("docs/spec.md");
-    let start = spec.find("### 9.4 Record beats").expect("spec §9.4");
-    let section = &spec[start..];
-    let section = &section[..section.find("\n## ").unwrap_or(section.len())];
-    section
+    let start = spec.find(from).unwrap_or_else(|| panic!("spec: {from}"));
+    let section = &spec[start + from.len()..];
+    let end = [to, "\n## "]
+        .iter()
+        .filter_map(|m| section.find(m))
+        .min()
+        .unwrap_or(section.len());
+    section[..end]
         .lines()
-        .take_while(|l| !l.starts_with("**Frame end.**"))
-        .filter(|l| l.starts_with("| ") && !l.starts_with("| beat"))
+        .filter(|l| l.starts_with("| ") && !l.starts_with("|--"))
+        .skip(1)
         .map(|l| {
             let c: Vec<&str> = l.split('|').map(str::trim).collect();
+            c[1..c.len() - 1]
+                .iter()
+                .map(|x| x.trim_matches('`').to_string())
+                .collect()
+        })
+        .collect()
+}
+
+/// The rows of the spec's §9.4 table: beat, lsb, bits, signed, field.
+fn spec_rows() -> Vec<(usize, u32, u32, bool, String)> {
+    spec_table("### 9.4 Record beats", "**Frame end.**")
+        .into_iter()
+        .map(|c| {
             (
+                c[0].parse().unwrap(),
                 c[1].parse().unwrap(),
                 c[2].parse().unwrap(),
-                c[3].parse().unwrap(),
-                match c[4] {
+                match c[3].as_str() {
                     "yes" => true,
                     "no" => false,
-                    other => panic!("spec §9.4: signed is {other:?} in {l:?}"),
+                    other => panic!("spec §9.4: signed is {other:?} in {c:?}"),
                 },
-                c[5].trim_matches('`').to_string(),
+                c[4].clone(),
             )
         })
         .collect()
@@ -89,22 +107,9 @@ fn a_record_of_the_largest_frame_has_its_beats() {
 /// The rows of the spec's end-beat table (§9.4, "Frame end"): lsb, bits,
 /// field.
 fn spec_end_rows() -> Vec<(u32, u32, String)> {
-    let spec = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/spec.md"))
-        .expect("docs/spec.md");
-    let start = spec.find("**Frame end.**").expect("spec §9.4's frame end");
-    let section = &spec[start..];
-    let section = &section[..section.find("\n## ").unwrap_or(section.len())];
-    section
-        .lines()
-        .filter(|l| l.starts_with("| ") && !l.starts_with("| lsb"))
-        .map(|l| {
-            let c: Vec<&str> = l.split('|').map(str::trim).collect();
-            (
-                c[1].parse().unwrap(),
-                c[2].parse().unwrap(),
-                c[3].trim_matches('`').to_string(),
-            )
-        })
+    spec_table("**Frame end.**", "\n### ")
+        .into_iter()
+        .map(|c| (c[0].parse().unwrap(), c[1].parse().unwrap(), c[2].clone()))
         .collect()
 }
 
