@@ -5847,6 +5847,7 @@ module fcc_top__in_stage_k7_668cf05b(clk,rst,rst_next,s_axis_tdata,s_axis_tvalid
     output reg  idle_next;
 
     // Constant declarations
+    localparam  col_major = 1'b0;
     localparam  sign16 = 16'h8000;
     localparam  zero8 = 8'h0;
     localparam  one8 = 8'h1;
@@ -6067,18 +6068,34 @@ module fcc_top__in_stage_k7_668cf05b(clk,rst,rst_next,s_axis_tdata,s_axis_tvalid
         end
         if (slot_now) begin
             first$d = 1'b0;
-            col0$d = col_last$q;
-            col$d = col$q + one12;
-            col_last$d = col$q == pen_col$q;
-            if (col_last$q) begin
-                col$d = zero12;
-                col_last$d = 1'b0;
+            if (col_major) begin
                 row$d = row$q + one8;
                 row_last$d = row$q == pen_row$q;
+                if (row_last$q) begin
+                    row$d = zero8;
+                    row_last$d = one_row$q;
+                    col0$d = 1'b0;
+                    col$d = col$q + one12;
+                    col_last$d = col$q == pen_col$q;
+                end
+            end
+            else begin
+                col0$d = col_last$q;
+                col$d = col$q + one12;
+                col_last$d = col$q == pen_col$q;
+                if (col_last$q) begin
+                    col$d = zero12;
+                    col_last$d = 1'b0;
+                    row$d = row$q + one8;
+                    row_last$d = row$q == pen_row$q;
+                end
             end
             if (is_last) begin
                 row$d = zero8;
                 row_last$d = one_row$q;
+                col$d = zero12;
+                col_last$d = 1'b0;
+                col0$d = 1'b1;
                 first$d = 1'b1;
                 nxt_done = 1'b1;
                 nxt_pad = 1'b0;

@@ -29,6 +29,9 @@ pub enum BenchBlock {
     /// The core's AXI4-Stream input stage `FccInputStage`, its slot field by
     /// field behind `FccInputStageProbe`.
     InputStage,
+    /// The same stage in column order (`FccInputStage::column_order`, the
+    /// column-streaming core's).
+    ColInputStage,
     /// The front end's credit counter `FccCredits`.
     Credits,
     /// The frame-phase machine `FccFramePhase`.
@@ -111,7 +114,7 @@ impl Row {
 
 impl BenchBlock {
     /// Every block with a bench.
-    pub const ALL: [BenchBlock; 29] = [
+    pub const ALL: [BenchBlock; 30] = [
         BenchBlock::Regs,
         BenchBlock::AxilAdapter,
         BenchBlock::MergeTable,
@@ -120,6 +123,7 @@ impl BenchBlock {
         BenchBlock::SortNet,
         BenchBlock::PointThr,
         BenchBlock::InputStage,
+        BenchBlock::ColInputStage,
         BenchBlock::Credits,
         BenchBlock::FramePhase,
         BenchBlock::FiltCentre,
@@ -182,6 +186,13 @@ impl BenchBlock {
                     p,
                     crate::fcc_input_stage_probe::FccInputStageProbe::default(),
                     "fcc_input_stage",
+                )
+            }),
+            BenchBlock::ColInputStage => Row::plain("fcc_col_input_stage", |p| {
+                gen(
+                    p,
+                    crate::fcc_input_stage_probe::FccInputStageProbe::column_order(),
+                    "fcc_col_input_stage",
                 )
             }),
             BenchBlock::Credits => Row::plain("fcc_credits", |p| {

@@ -1,5 +1,8 @@
-//! `FccInputStage`: the row-major core's AXI4-Stream input, one pixel slot
-//! per cycle.
+//! `FccInputStage`: the core's AXI4-Stream input, one pixel slot per
+//! cycle. The row-major core takes its frame in raster order (`default`);
+//! the column-streaming core in column order (`column_order`: rows
+//! `0 .. R-1` of column 0, then of column 1, ...), where `col0` and `coln`
+//! mark the slots of the first and the last column.
 //!
 //! Each accepted beat (64-bit `s_axis_tdata`: x, y, z Q7.8 in bits 47:0,
 //! valid in bit 48) becomes a registered slot (`slot`, the coordinates
@@ -69,6 +72,8 @@ pub struct FccInputStage {
     pen_col: DFF<Bits<12>>,
     pen_row: DFF<Bits<8>>,
     one_row: DFF<Bit>,
+    /// Column order (build time).
+    col_major: Constant<Bit>,
     accept: Signal<Local, Bit>,
     beat: Signal<Local, Bit>,
     is_last: Signal<Local, Bit>,
@@ -125,6 +130,7 @@ impl Default for FccInputStage {
             pen_col: Default::default(),
             pen_row: Default::default(),
             one_row: Default::default(),
+            col_major: Constant::new(false),
             accept: Default::default(),
             beat: Default::default(),
             is_last: Default::default(),
@@ -139,6 +145,16 @@ impl Default for FccInputStage {
             zero12: kb(0),
             one12: kb(1),
             two12: kb(2),
+        }
+    }
+}
+
+impl FccInputStage {
+    /// The stage of the column-streaming core: the frame in column order.
+    pub fn column_order() -> Self {
+        Self {
+            col_major: Constant::new(true),
+            ..Self::default()
         }
     }
 }
@@ -181,18 +197,34 @@ impl Logic for FccInputStage {
         }
         if self.slot_now.val() {
             self.first.d.next = false;
-            self.col0.d.next = self.col_last.q.val();
-            self.col.d.next = self.col.q.val() + self.one12.val();
-            self.col_last.d.next = self.col.q.val() == self.pen_col.q.val();
-            if self.col_last.q.val() {
-                self.col.d.next = self.zero12.val();
-                self.col_last.d.next = false;
+            if self.col_major.val() {
+                // Column order: the row counts, then the column.
                 self.row.d.next = self.row.q.val() + self.one8.val();
                 self.row_last.d.next = self.row.q.val() == self.pen_row.q.val();
+                if self.row_last.q.val() {
+                    self.row.d.next = self.zero8.val();
+                    self.row_last.d.next = self.one_row.q.val();
+                    self.col0.d.next = false;
+                    self.col.d.next = self.col.q.val() + self.one12.val();
+                    self.col_last.d.next = self.col.q.val() == self.pen_col.q.val();
+                }
+            } else {
+                self.col0.d.next = self.col_last.q.val();
+                self.col.d.next = self.col.q.val() + self.one12.val();
+                self.col_last.d.next = self.col.q.val() == self.pen_col.q.val();
+                if self.col_last.q.val() {
+                    self.col.d.next = self.zero12.val();
+                    self.col_last.d.next = false;
+                    self.row.d.next = self.row.q.val() + self.one8.val();
+                    self.row_last.d.next = self.row.q.val() == self.pen_row.q.val();
+                }
             }
             if self.is_last.val() {
                 self.row.d.next = self.zero8.val();
                 self.row_last.d.next = self.one_row.q.val();
+                self.col.d.next = self.zero12.val();
+                self.col_last.d.next = false;
+                self.col0.d.next = true;
                 self.first.d.next = true;
                 self.nxt_done.next = true;
                 self.nxt_pad.next = false;

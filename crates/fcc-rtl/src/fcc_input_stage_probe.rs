@@ -41,6 +41,16 @@ pub struct FccInputStageProbe {
     stage: FccInputStage,
 }
 
+impl FccInputStageProbe {
+    /// The probe of the column-order stage (`FccInputStage::column_order`).
+    pub fn column_order() -> Self {
+        Self {
+            stage: FccInputStage::column_order(),
+            ..Self::default()
+        }
+    }
+}
+
 impl Logic for FccInputStageProbe {
     #[hdl_gen]
     fn update(&mut self) {

@@ -1,7 +1,8 @@
 //! The core's AXI4-Stream input stage `fcc_input_stage` (behind
 //! `FccInputStageProbe`, its slot field by field) alone under Verilator,
 //! against a software stage written from its module documentation: slot k
-//! of a frame is pixel (k / C, k % C) with its first / last / column flags,
+//! of a frame is pixel (k / C, k % C) with its first / last / column flags
+//! (in column order, `fcc_col_input_stage`: pixel (k % R, k / R)),
 //! a beat's x, y, z offset binary and its valid bit as `ok`; a frame that
 //! ends early is padded with empty slots, one that ends late has its beats
 //! dropped up to its `tlast`, either sets `err` until the next frame starts;
@@ -68,6 +69,8 @@ c_struct! {
 struct Model {
     rows: usize,
     cols: usize,
+    /// The frame comes in column order.
+    col_major: bool,
     ready: bool,
     pad_go: bool,
     /// The registered slot: its fields (valid or not).
@@ -82,10 +85,11 @@ struct Model {
 }
 
 impl Model {
-    fn new(rows: usize, cols: usize) -> Self {
+    fn new(rows: usize, cols: usize, col_major: bool) -> Self {
         Model {
             rows,
             cols,
+            col_major,
             ..Model::default()
         }
     }
@@ -109,7 +113,11 @@ impl Model {
             ..self.slot
         };
         if slot_now {
-            let (row, col) = (self.k / self.cols, self.k % self.cols);
+            let (row, col) = if self.col_major {
+                (self.k % self.rows, self.k / self.rows)
+            } else {
+                (self.k / self.cols, self.k % self.cols)
+            };
             let d = i.s_axis_tdata;
             slot.slot_ok = b(beat && (d >> 48) & 1 != 0);
             slot.slot_x = (d as u16) ^ 0x8000;
@@ -247,13 +255,31 @@ fn first_difference(want: &IsOut, got: &IsOut) -> Option<String> {
         .map(|(name, w, g)| format!("{name}: expected {w:#x}, got {g:#x}"))
 }
 
-/// Run `cycles` cycles of frames of `rows` x `cols` with resets at the rate
-/// `resets`; returns the frames that completed and the slots compared.
-fn run(rows: usize, cols: usize, cycles: usize, resets: f64, seed: u64) -> (usize, usize) {
+/// The order a stage takes its frame in.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Order {
+    Raster,
+    Column,
+}
+
+/// Run `cycles` cycles of frames of `rows` x `cols` in `order` with resets
+/// at the rate `resets`; returns the frames that completed and the slots
+/// compared.
+fn run(
+    order: Order,
+    (rows, cols): (usize, usize),
+    cycles: usize,
+    resets: f64,
+    seed: u64,
+) -> (usize, usize) {
     let p = FccParams::default();
-    let model = load_plain::<IsIn, IsOut>(BenchBlock::InputStage, &p).expect("input stage model");
+    let block = match order {
+        Order::Raster => BenchBlock::InputStage,
+        Order::Column => BenchBlock::ColInputStage,
+    };
+    let model = load_plain::<IsIn, IsOut>(block, &p).expect("input stage model");
     let mut dut = PlainDut::new(model);
-    let mut m = Model::new(rows, cols);
+    let mut m = Model::new(rows, cols, order == Order::Column);
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let mut src = Source {
         beats: Source::frame(&mut rng, rows * cols),
@@ -320,7 +346,7 @@ fn run(rows: usize, cols: usize, cycles: usize, resets: f64, seed: u64) -> (usiz
         if t >= 2 {
             if let Some(d) = first_difference(&want, &got) {
                 panic!(
-                    "{rows} x {cols}: outputs differ at cycle {t} (input {i:?}): {d}; expected {want:?}, got {got:?}, seed {seed}"
+                    "{rows} x {cols} in {order:?} order: outputs differ at cycle {t} (input {i:?}): {d}; expected {want:?}, got {got:?}, seed {seed}"
                 );
             }
             slots += want.slot_valid as usize;
@@ -345,29 +371,33 @@ fn run(rows: usize, cols: usize, cycles: usize, resets: f64, seed: u64) -> (usiz
 
 #[test]
 fn frames_exact_short_and_long_with_gaps_and_back_pressure() {
-    for (seed, (rows, cols)) in [(1, 3), (2, 3), (3, 5), (4, 8), (1, 17)]
-        .into_iter()
-        .enumerate()
-    {
-        let (frames, slots) = run(rows, cols, 30_000, 0.0, seed as u64);
-        assert!(
-            frames > 100,
-            "{rows} x {cols}: only {frames} frames completed"
-        );
-        assert!(
-            slots > frames * rows * cols / 2,
-            "{rows} x {cols}: only {slots} slots"
-        );
+    for order in [Order::Raster, Order::Column] {
+        for (seed, (rows, cols)) in [(1, 3), (2, 3), (3, 5), (4, 8), (1, 17), (17, 3)]
+            .into_iter()
+            .enumerate()
+        {
+            let (frames, slots) = run(order, (rows, cols), 30_000, 0.0, seed as u64);
+            assert!(
+                frames > 100,
+                "{rows} x {cols} in {order:?} order: only {frames} frames completed"
+            );
+            assert!(
+                slots > frames * rows * cols / 2,
+                "{rows} x {cols} in {order:?} order: only {slots} slots"
+            );
+        }
     }
 }
 
 #[test]
 fn seeded_random_resets_in_every_phase() {
-    for (seed, (rows, cols)) in [(2, 4), (3, 3), (4, 6)].into_iter().enumerate() {
-        let (frames, _) = run(rows, cols, 30_000, 0.003, 10 + seed as u64);
-        assert!(
-            frames > 50,
-            "{rows} x {cols}: only {frames} frames completed"
-        );
+    for order in [Order::Raster, Order::Column] {
+        for (seed, (rows, cols)) in [(2, 4), (3, 3), (4, 6)].into_iter().enumerate() {
+            let (frames, _) = run(order, (rows, cols), 30_000, 0.003, 10 + seed as u64);
+            assert!(
+                frames > 50,
+                "{rows} x {cols} in {order:?} order: only {frames} frames completed"
+            );
+        }
     }
 }
