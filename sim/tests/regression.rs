@@ -4,7 +4,8 @@
 //! random input gaps and output back-pressure, early and late `tlast` with
 //! recovery, a reset in the middle of a frame (16 x 256), and two synthetic
 //! 64 x 2048 scenes whose cycle counts are printed. Range-adaptive
-//! thresholds at K = 3, 7 and 11. Models are built once per
+//! thresholds at K = 3, 7 and 11 through the run registers of those cores.
+//! Models are built once per
 //! configuration and cached (see `fcc_sim::model`).
 
 use fcc_golden::Frame;
@@ -12,7 +13,8 @@ use fcc_params::FccParams;
 use fcc_rtl::regmap::{bits, offset};
 use fcc_sim::model::FccIn;
 use fcc_sim::{
-    compare, expected, frames, load, run_and_check, AxilMaster, Drive, Dut, FrameRun, Tlast,
+    compare, expected, frames, load, run_and_check, run_and_check_with, AxilMaster, Drive, Dut,
+    FrameRun, Tlast,
 };
 
 /// 16 x 256 with 11-bit labels, so the `label_overflow` and `checkerboard`
@@ -324,33 +326,38 @@ per_fsize! {
 }
 
 /// Range-adaptive thresholds (spec §2) at the `adaptive` preset's slopes and
-/// at steeper ones: the synthetic scenes (objects out to 80 m) at 64 x 2048
-/// and K = 7, seeded random frames (ranges to 80 m) with gaps and
-/// back-pressure at 16 x 256 and K = 3 and 11. The slopes are the build's.
-fn adaptive(fsize: usize, rows: usize, cols: usize, slopes: (f64, f64)) {
+/// at steeper ones, programmed through the run registers (RUN_TH_*,
+/// RUN_SLOPE_*) of cores the other tests build, so no model is built for
+/// them alone (a build's own power-on slopes are the register bench's and
+/// the cocotb bench's K = 9): the synthetic scenes (objects out to 80 m) on
+/// the 64 x 2048 K = 7 core of `scenes`, seeded random frames (ranges to
+/// 80 m) with gaps and back-pressure on it and on the 16 x 256 cores of K =
+/// 3 and 11.
+fn adaptive(build: FccParams, slopes: (f64, f64)) {
     let (th_h, th_v, _, _) = fcc_params::ADAPTIVE;
-    let p = FccParams {
-        rows,
-        cols,
-        fsize,
+    let run = FccParams {
         th_h,
         th_v,
         th_h_slope: slopes.0,
         th_v_slope: slopes.1,
-        label_bits: if rows * cols > 4096 { 15 } else { 11 },
-        ..Default::default()
+        ..build.clone()
     };
-    let mut d = dut(&p);
-    if rows == 64 {
+    let mut d = dut(&build);
+    let mut check = |d: &mut Dut, f: &Frame, drive: &Drive, what: &str| {
+        if let Err(e) = run_and_check_with(d, &run, f, drive, what) {
+            panic!("{e}");
+        }
+    };
+    if run.rows == 64 {
         for seed in [1u64, 4] {
             let cfg = fcc_scene::SceneConfig {
-                rows,
-                cols,
+                rows: run.rows,
+                cols: run.cols,
                 seed,
                 ..Default::default()
             };
             let scene = fcc_scene::generate(&cfg).unwrap();
-            let f = Frame::from_xyz_f32(rows, cols, &scene.xyz);
+            let f = Frame::from_xyz_f32(run.rows, run.cols, &scene.xyz);
             check(
                 &mut d,
                 &f,
@@ -360,7 +367,7 @@ fn adaptive(fsize: usize, rows: usize, cols: usize, slopes: (f64, f64)) {
         }
     }
     for seed in 1..=8u64 {
-        let f = frames::random(&p, seed);
+        let f = frames::random(&run, seed);
         let drive = Drive {
             gap: 0.1,
             backpressure: 0.2,
@@ -371,7 +378,7 @@ fn adaptive(fsize: usize, rows: usize, cols: usize, slopes: (f64, f64)) {
     }
     check(
         &mut d,
-        &frames::thresholds(&p),
+        &frames::thresholds(&run),
         &Drive::default(),
         "adaptive thresholds",
     );
@@ -380,13 +387,17 @@ fn adaptive(fsize: usize, rows: usize, cols: usize, slopes: (f64, f64)) {
 #[test]
 fn adaptive_thresholds_fsize7_scenes_64x2048() {
     let (_, _, a_h, a_v) = fcc_params::ADAPTIVE;
-    adaptive(7, 64, 2048, (a_h, a_v));
+    let build = FccParams {
+        fsize: 7,
+        ..Default::default()
+    };
+    adaptive(build, (a_h, a_v));
 }
 
 #[test]
 fn adaptive_thresholds_fsize3_and_fsize11_random() {
-    adaptive(3, 16, 256, (0.08, 0.2));
-    adaptive(11, 16, 256, (0.05, 0.5));
+    adaptive(small(3), (0.08, 0.2));
+    adaptive(small(11), (0.05, 0.5));
 }
 
 /// A reset in every state of the top-level state machine and of the merge
