@@ -343,7 +343,7 @@ fn adaptive(build: FccParams, slopes: (f64, f64)) {
         ..build.clone()
     };
     let mut d = dut(&build);
-    let mut check = |d: &mut Dut, f: &Frame, drive: &Drive, what: &str| {
+    let check = |d: &mut Dut, f: &Frame, drive: &Drive, what: &str| {
         if let Err(e) = run_and_check_with(d, &run, f, drive, what) {
             panic!("{e}");
         }

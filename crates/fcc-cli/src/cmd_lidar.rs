@@ -27,6 +27,7 @@ use fcc_lidar::projection::{project, BackProjection, ProjectionConfig, VerticalL
 use fcc_lidar::sinks::mcap::{McapFrame, McapSink};
 use fcc_lidar::source::{for_each_ouster_frame, Frame as Item, InputKind, Source, SourceOptions};
 use fcc_lidar::RangeImage;
+use fcc_pixel::record::{frame_beats, FrameEnd, RECORD_WORDS};
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
 use serde::Serialize;
@@ -285,6 +286,13 @@ pub struct ClusterLidarArgs {
     /// in columns from each cluster's last column to its record.
     #[arg(long)]
     pub stream: bool,
+    /// With --stream: write each frame's record beats as the
+    /// column-streaming core sends them (spec §9.4: 11 little-endian 64-bit
+    /// words per record, then the frame's end beat, which carries `tlast`),
+    /// the golden stream's, for a bench or a board to compare with. Every
+    /// cluster is sent, so no --min-points.
+    #[arg(long)]
+    pub beats: Option<PathBuf>,
     /// Write a ROS 2 recording (MCAP): per frame a sensor_msgs/msg/PointCloud2
     /// with the cluster `label` and a visualization_msgs/msg/MarkerArray of
     /// the clusters' boxes, stamped with the frame's time where the input
@@ -322,6 +330,7 @@ impl ClusterLidarArgs {
             ("--output", &self.output),
             ("--label", &self.label),
             ("--ply", &self.ply),
+            ("--beats", &self.beats),
         ]
         .into_iter()
         .filter_map(|(flag, p)| p.as_ref().map(|p| (flag, output_path(p, name, single))))
@@ -580,8 +589,14 @@ fn process(
 ) -> anyhow::Result<Processed> {
     args.check_outputs(&item.name, single)?;
     let t = Instant::now();
+    let mut end = None;
     let (mut out, streamed): (PipelineResult, Option<(Vec<ClosedRecord>, u32)>) = if args.stream {
         let s = stream_image(&item.image, cfg, |_| {}).with_context(|| item.name.clone())?;
+        end = Some(FrameEnd {
+            records: s.records.len() as u32,
+            overflow: s.stats.overflow || s.stats.open_refused > 0,
+            frame_error: false,
+        });
         (s.result, Some((s.records, s.stats.peak_labels)))
     } else {
         (
@@ -663,6 +678,16 @@ fn process(
     if let Some(p) = &args.output {
         let path = output_path(p, &item.name, single);
         fcc_npy::write_labels(&path, item.image.rows, item.image.cols, &out.labels)?;
+        wrote.push(path);
+    }
+    if let (Some(p), Some((records, _)), Some(end)) = (&args.beats, &streamed, end) {
+        let path = output_path(p, &item.name, single);
+        let hw: Vec<_> = records.iter().map(|c| c.record.hw()).collect();
+        let mut beats = Vec::with_capacity(hw.len() * RECORD_WORDS + 1);
+        frame_beats(&hw, end, &mut beats).map_err(|e| anyhow::anyhow!("{}: {e}", item.name))?;
+        let bytes: Vec<u8> = beats.iter().flat_map(|(w, _)| w.to_le_bytes()).collect();
+        fcc_io::write_atomic(&path, &bytes)
+            .with_context(|| format!("{}: cannot write the record beats", path.display()))?;
         wrote.push(path);
     }
     let (points, labels, ground, intensity) = per_point(item, &out)?;
@@ -891,6 +916,15 @@ pub fn run_cluster_on(args: &ClusterLidarArgs, hw: Option<&dyn Hardware>) -> any
     check_png_path(args.png.as_deref())?;
     if args.stream && args.model.merge != MergeMode::Exact {
         bail!("--stream clusters exactly (spec §9): drop --merge paper");
+    }
+    if args.beats.is_some() && !args.stream {
+        bail!("--beats writes the column-streaming core's records: add --stream");
+    }
+    if args.beats.is_some() && args.min_points > 0 {
+        bail!(
+            "--beats writes what the core sends, every cluster: drop --min-points {}",
+            args.min_points
+        );
     }
     let sources = SourceOptions {
         strict: args.strict,

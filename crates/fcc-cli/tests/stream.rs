@@ -1,8 +1,10 @@
 //! `fcc cluster --stream` (spec §9): on the Ouster captures the label image
 //! is the frame's partition, with and without the reach limits; one JSON
 //! record per cluster in closing order; the latency in `--stats`; the
-//! row-major core refuses the limits and the stream.
+//! row-major core refuses the limits and the stream; `--beats`, the record
+//! beats the column-streaming core sends, read back.
 
+use fcc_pixel::record::{FrameEnd, Item, RecordReader, RECORD_WORDS};
 use fcc_testkit::{lidar_data, s, same_partition, stderr, tmpdir};
 use std::path::Path;
 use std::process::Output;
@@ -396,4 +398,126 @@ fn stream_report_counts_the_labels_in_use() {
             "peak open {open}, counted {counted}, labels {peak}: {md}"
         );
     }
+}
+
+/// The beats of `--beats` (spec §9.4) read back: a record's 11 words, or an
+/// end beat (id 0, `tlast`) at a record boundary.
+fn read_beats(path: &Path) -> Vec<Item> {
+    let bytes = std::fs::read(path).unwrap();
+    assert_eq!(bytes.len() % 8, 0, "{}: whole words", path.display());
+    let words: Vec<u64> = bytes
+        .chunks_exact(8)
+        .map(|c| u64::from_le_bytes(c.try_into().unwrap()))
+        .collect();
+    let mut reader = RecordReader::new();
+    let mut items = Vec::new();
+    let mut k = 0;
+    while k < words.len() {
+        let n = if FrameEnd::is_end(words[k]) {
+            1
+        } else {
+            RECORD_WORDS
+        };
+        for (j, &w) in words[k..(k + n).min(words.len())].iter().enumerate() {
+            let last = n == 1;
+            match reader.push(w, last) {
+                Ok(Some(item)) => items.push(item),
+                Ok(None) => {}
+                Err(e) => panic!("{}: word {}: {e}", path.display(), k + j),
+            }
+        }
+        k += n;
+    }
+    reader.finish().unwrap();
+    items
+}
+
+#[test]
+fn beats_are_the_streamed_records_then_the_end_beat() {
+    let d = tmpdir("stream-beats");
+    let npy = small_scene(&d);
+    let beats = d.join("b.bin");
+    let run = |extra: &[&str]| {
+        let mut a = vec![
+            "cluster",
+            "--input",
+            s(&npy),
+            "--stream",
+            "--beats",
+            s(&beats),
+        ];
+        a.extend_from_slice(extra);
+        fcc(&a)
+    };
+    let o = run(&[]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = String::from_utf8(o.stdout).unwrap();
+    let lines: Vec<serde_json::Value> = out
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    let items = read_beats(&beats);
+    let (end, records) = items.split_last().expect("an end beat");
+    assert!(lines.len() > 3, "a scene with clusters: {out}");
+    assert_eq!(
+        *end,
+        Item::End(FrameEnd {
+            records: lines.len() as u32,
+            overflow: false,
+            frame_error: false
+        })
+    );
+    assert_eq!(records.len(), lines.len());
+    for (r, l) in records.iter().zip(&lines) {
+        let Item::Record(r) = r else {
+            panic!("{r:?}: not a record")
+        };
+        assert_eq!(
+            (
+                u64::from(r.id),
+                u64::from(r.points),
+                u64::from(r.closed_col)
+            ),
+            (
+                l["cluster"].as_u64().unwrap(),
+                l["points"].as_u64().unwrap(),
+                l["closed_col"].as_u64().unwrap()
+            ),
+            "record {r:?} against its line {l}"
+        );
+    }
+    // Runs refused by the open limit show in the end beat.
+    let o = run(&["--open-limit", "2"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let items = read_beats(&beats);
+    assert!(
+        matches!(items.last(), Some(Item::End(e)) if e.overflow),
+        "{:?}",
+        items.last()
+    );
+    // What the core does not send, or nothing to write it from.
+    let o = fcc(&["cluster", "--input", s(&npy), "--beats", s(&beats)]);
+    assert!(
+        !o.status.success() && stderr(&o).contains("add --stream"),
+        "{}",
+        stderr(&o)
+    );
+    let o = run(&["--min-points", "5"]);
+    assert!(
+        !o.status.success() && stderr(&o).contains("drop --min-points 5"),
+        "{}",
+        stderr(&o)
+    );
+    // An output naming the input is refused, the input kept.
+    let before = std::fs::read(&npy).unwrap();
+    let o = fcc(&[
+        "cluster",
+        "--input",
+        s(&npy),
+        "--stream",
+        "--beats",
+        s(&npy),
+    ]);
+    assert!(!o.status.success(), "--beats over the input ran");
+    assert_eq!(std::fs::read(&npy).unwrap(), before, "the input changed");
 }
