@@ -189,6 +189,19 @@ pub struct StreamStats {
     pub peak_col_freed: u32,
 }
 
+impl StreamStats {
+    /// The end beat of the frame these stats report (spec §9.4): its
+    /// records, and whether a run was refused a label (label overflow or
+    /// the open limit); `frame_error` is the input's framing, the caller's.
+    pub fn frame_end(&self) -> FrameEnd {
+        FrameEnd {
+            records: self.clusters,
+            overflow: self.overflow || self.open_refused > 0,
+            frame_error: false,
+        }
+    }
+}
+
 /// The golden stream. Make one with [`Stream::new`], then per frame call
 /// [`push_column`](Self::push_column) for columns `0 .. C-1` and
 /// [`finish`](Self::finish); the next push starts the next frame.
@@ -405,11 +418,7 @@ impl Stream {
     /// input's framing is the caller's: `frame_error` is false. `None` until
     /// the frame is finished.
     pub fn frame_end(&self) -> Option<FrameEnd> {
-        self.finished.then_some(FrameEnd {
-            records: self.stats.clusters,
-            overflow: self.stats.overflow || self.stats.open_refused > 0,
-            frame_error: false,
-        })
+        self.finished.then_some(self.stats.frame_end())
     }
 
     /// The label image of the finished frame, raster order, numbered by

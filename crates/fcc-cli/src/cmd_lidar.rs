@@ -27,7 +27,7 @@ use fcc_lidar::projection::{project, BackProjection, ProjectionConfig, VerticalL
 use fcc_lidar::sinks::mcap::{McapFrame, McapSink};
 use fcc_lidar::source::{for_each_ouster_frame, Frame as Item, InputKind, Source, SourceOptions};
 use fcc_lidar::RangeImage;
-use fcc_pixel::record::{frame_beats, FrameEnd, RECORD_WORDS};
+use fcc_pixel::record::{frame_beats, RECORD_WORDS};
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
 use serde::Serialize;
@@ -592,11 +592,8 @@ fn process(
     let mut end = None;
     let (mut out, streamed): (PipelineResult, Option<(Vec<ClosedRecord>, u32)>) = if args.stream {
         let s = stream_image(&item.image, cfg, |_| {}).with_context(|| item.name.clone())?;
-        end = Some(FrameEnd {
-            records: s.records.len() as u32,
-            overflow: s.stats.overflow || s.stats.open_refused > 0,
-            frame_error: false,
-        });
+        // Every record is the stream's (--beats refuses --min-points).
+        end = Some(s.stats.frame_end());
         (s.result, Some((s.records, s.stats.peak_labels)))
     } else {
         (
