@@ -557,6 +557,8 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
     reg  in_stage$restart;
     reg  in_stage$run_next;
     reg  in_stage$room;
+    reg  in_stage$col_hold;
+    wire  in_stage$col_first;
     wire  in_stage$slot_now;
     wire  [73:0] in_stage$slot;
     wire  in_stage$in_done;
@@ -1114,6 +1116,8 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
         .restart(in_stage$restart),
         .run_next(in_stage$run_next),
         .room(in_stage$room),
+        .col_hold(in_stage$col_hold),
+        .col_first(in_stage$col_first),
         .slot_now(in_stage$slot_now),
         .slot(in_stage$slot),
         .in_done(in_stage$in_done),
@@ -1201,6 +1205,7 @@ module fcc_top_k7_668cf05b(clk,rst,s_axis_tdata,s_axis_tkeep,s_axis_tvalid,s_axi
         in_stage$restart = phase$restart;
         in_stage$run_next = phase$run_next;
         in_stage$room = credits$room;
+        in_stage$col_hold = 1'b0;
         credits$rst = regs$core_rst;
         credits$slot = in_stage$slot_now;
         credits$drop = sort_net$drop;
@@ -5822,7 +5827,7 @@ module fcc_top__dist_tree_rst_k7_668cf05b(clock,d,q);
 endmodule // fcc_top__dist_tree_rst_k7_668cf05b
 
 
-module fcc_top__in_stage_k7_668cf05b(clk,rst,rst_next,s_axis_tdata,s_axis_tvalid,s_axis_tlast,s_axis_tready,run_rows,run_cols,run,restart,run_next,room,slot_now,slot,in_done,err,last_col,idle,idle_next);
+module fcc_top__in_stage_k7_668cf05b(clk,rst,rst_next,s_axis_tdata,s_axis_tvalid,s_axis_tlast,s_axis_tready,run_rows,run_cols,run,restart,run_next,room,col_hold,col_first,slot_now,slot,in_done,err,last_col,idle,idle_next);
 
     // Module arguments
     input wire  clk;
@@ -5838,6 +5843,8 @@ module fcc_top__in_stage_k7_668cf05b(clk,rst,rst_next,s_axis_tdata,s_axis_tvalid
     input wire  restart;
     input wire  run_next;
     input wire  room;
+    input wire  col_hold;
+    output reg  col_first;
     output reg  slot_now;
     output reg  [73:0] slot;
     output reg  in_done;
@@ -5911,6 +5918,7 @@ module fcc_top__in_stage_k7_668cf05b(clk,rst,rst_next,s_axis_tdata,s_axis_tvalid
 
     // Local signals
     reg  accept;
+    reg  held;
     reg  beat;
     reg  is_last;
     reg  nxt_pad;
@@ -6045,9 +6053,11 @@ module fcc_top__in_stage_k7_668cf05b(clk,rst,rst_next,s_axis_tdata,s_axis_tvalid
         pen_col$d = run_cols - two12;
         pen_row$d = run_rows - two8;
         one_row$d = run_rows == one8;
-        accept = s_axis_tvalid & tready_q$q;
+        col_first = col_major & (row$q == zero8) & ~discard$q;
+        held = col_first & col_hold;
+        accept = s_axis_tvalid & tready_q$q & ~held;
         beat = accept & ~discard$q;
-        slot_now = beat | pad_go$q;
+        slot_now = beat | (pad_go$q & ~held);
         is_last = col_last$q & row_last$q;
         slot_q$d[0:0] = slot_now;
         slot_q$d[1:1] = beat & s_axis_tdata[48];
@@ -6144,7 +6154,7 @@ module fcc_top__in_stage_k7_668cf05b(clk,rst,rst_next,s_axis_tdata,s_axis_tvalid
             done$d = 1'b0;
             err_q$d = 1'b0;
         end
-        s_axis_tready = tready_q$q;
+        s_axis_tready = tready_q$q & ~held;
         slot = slot_q$q;
         in_done = done$q;
         err = err_q$q;

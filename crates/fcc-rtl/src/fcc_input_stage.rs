@@ -4,6 +4,13 @@
 //! `0 .. R-1` of column 0, then of column 1, ...), where `col0` and `coln`
 //! mark the slots of the first and the last column.
 //!
+//! In column order a column's first slot can be held (`col_hold`, the
+//! column-start check's `hold`): while `col_first` (the next slot is its
+//! column's first) and `col_hold` are high, neither a beat nor a padding
+//! slot is taken and `s_axis_tready` is low. `col_first` comes from
+//! registers; `col_hold` reaches the ready and the slot through one gate.
+//! The row-major order ignores `col_hold`.
+//!
 //! Each accepted beat (64-bit `s_axis_tdata`: x, y, z Q7.8 in bits 47:0,
 //! valid in bit 48) becomes a registered slot (`slot`, the coordinates
 //! offset binary) with its row, column and frame flags; a frame that ends
@@ -43,6 +50,10 @@ pub struct FccInputStage {
     pub run_next: Signal<In, Bit>,
     /// The credit counter has room (registered).
     pub room: Signal<In, Bit>,
+    /// Column order: the next slot, its column's first, waits.
+    pub col_hold: Signal<In, Bit>,
+    /// Column order: the next slot is its column's first (registered).
+    pub col_first: Signal<Out, Bit>,
     /// A slot enters this cycle (a beat or a padding slot).
     pub slot_now: Signal<Out, Bit>,
     /// The registered slot.
@@ -75,6 +86,8 @@ pub struct FccInputStage {
     /// Column order (build time).
     col_major: Constant<Bit>,
     accept: Signal<Local, Bit>,
+    /// The next slot waits for `col_hold`.
+    held: Signal<Local, Bit>,
     beat: Signal<Local, Bit>,
     is_last: Signal<Local, Bit>,
     nxt_pad: Signal<Local, Bit>,
@@ -106,6 +119,8 @@ impl Default for FccInputStage {
             restart: Default::default(),
             run_next: Default::default(),
             room: Default::default(),
+            col_hold: Default::default(),
+            col_first: Default::default(),
             slot_now: Default::default(),
             slot: Default::default(),
             in_done: Default::default(),
@@ -132,6 +147,7 @@ impl Default for FccInputStage {
             one_row: Default::default(),
             col_major: Constant::new(false),
             accept: Default::default(),
+            held: Default::default(),
             beat: Default::default(),
             is_last: Default::default(),
             nxt_pad: Default::default(),
@@ -171,10 +187,14 @@ impl Logic for FccInputStage {
         self.pen_col.d.next = self.run_cols.val() - self.two12.val();
         self.pen_row.d.next = self.run_rows.val() - self.two8.val();
         self.one_row.d.next = self.run_rows.val() == self.one8.val();
-        // Slots: a beat taken, or a padding slot of a short frame.
-        self.accept.next = self.s_axis_tvalid.val() & self.tready_q.q.val();
+        // Slots: a beat taken, or a padding slot of a short frame; in column
+        // order not a column's first while it is held.
+        self.col_first.next =
+            self.col_major.val() & (self.row.q.val() == self.zero8.val()) & !self.discard.q.val();
+        self.held.next = self.col_first.val() & self.col_hold.val();
+        self.accept.next = self.s_axis_tvalid.val() & self.tready_q.q.val() & !self.held.val();
         self.beat.next = self.accept.val() & !self.discard.q.val();
-        self.slot_now.next = self.beat.val() | self.pad_go.q.val();
+        self.slot_now.next = self.beat.val() | (self.pad_go.q.val() & !self.held.val());
         self.is_last.next = self.col_last.q.val() & self.row_last.q.val();
         self.slot_q.d.next.valid = self.slot_now.val();
         self.slot_q.d.next.ok = self.beat.val() & self.s_axis_tdata.val().get_bit(48);
@@ -276,7 +296,7 @@ impl Logic for FccInputStage {
             self.done.d.next = false;
             self.err_q.d.next = false;
         }
-        self.s_axis_tready.next = self.tready_q.q.val();
+        self.s_axis_tready.next = self.tready_q.q.val() & !self.held.val();
         self.slot.next = self.slot_q.q.val();
         self.in_done.next = self.done.q.val();
         self.err.next = self.err_q.q.val();

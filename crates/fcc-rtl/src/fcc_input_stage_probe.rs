@@ -21,6 +21,8 @@ pub struct FccInputStageProbe {
     pub restart: Signal<In, Bit>,
     pub run_next: Signal<In, Bit>,
     pub room: Signal<In, Bit>,
+    pub col_hold: Signal<In, Bit>,
+    pub col_first: Signal<Out, Bit>,
     pub slot_now: Signal<Out, Bit>,
     pub slot_valid: Signal<Out, Bit>,
     pub slot_ok: Signal<Out, Bit>,
@@ -66,6 +68,8 @@ impl Logic for FccInputStageProbe {
         self.stage.restart.next = self.restart.val();
         self.stage.run_next.next = self.run_next.val();
         self.stage.room.next = self.room.val();
+        self.stage.col_hold.next = self.col_hold.val();
+        self.col_first.next = self.stage.col_first.val();
         self.s_axis_tready.next = self.stage.s_axis_tready.val();
         self.slot_now.next = self.stage.slot_now.val();
         self.slot_valid.next = self.stage.slot.val().valid;

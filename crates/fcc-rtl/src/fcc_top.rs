@@ -238,6 +238,8 @@ impl Logic for FccTop {
         self.in_stage.restart.next = self.phase.restart.val();
         self.in_stage.run_next.next = self.phase.run_next.val();
         self.in_stage.room.next = self.credits.room.val();
+        // Raster order: no column waits.
+        self.in_stage.col_hold.next = false;
         self.credits.rst.next = self.regs.core_rst.val();
         self.credits.slot.next = self.in_stage.slot_now.val();
         self.credits.drop.next = self.sort_net.drop.val();

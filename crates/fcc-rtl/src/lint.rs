@@ -28,6 +28,9 @@ pub fn waivers(p: &FccParams) -> String {
          // it) and the join queue has no side RAMs.\n\
          lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'records$level'*\"\n\
          lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'queue$ram_*\"\n\
+         // The input stage serves both cores: the raster order's column-start\n\
+         // flag is constant low and its top holds no column.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'in_stage$col_first'*\"\n\
          // rust-hdl declares a state enum's names (`SerPhase`) as localparams in\n\
          // every module that holds the enum, the state register's DFF included,\n\
          // which does not read them, and that DFF initialises its output with a\n\

@@ -8,6 +8,9 @@
 //! dropped up to its `tlast`, either sets `err` until the next frame starts;
 //! `s_axis_tready` and the padding are registered from the frame phase and
 //! the credits' `room`; `rst_next` drops the ready a cycle ahead of `rst`.
+//! In column order a column's first slot (`col_first`) waits while
+//! `col_hold` is high: no beat, no padding slot, the ready low; the
+//! raster order ignores `col_hold`.
 //!
 //! A software frame phase (INIT, RUN until `in_done`, DRAIN, OUT, RUN again
 //! with `restart`) and a source of frames (exact, short and long, random
@@ -36,6 +39,7 @@ c_struct! {
         pub restart: u8,
         pub run_next: u8,
         pub room: u8,
+        pub col_hold: u8,
     }
 }
 
@@ -61,6 +65,7 @@ c_struct! {
         pub err: u8,
         pub idle: u8,
         pub idle_next: u8,
+        pub col_first: u8,
     }
 }
 
@@ -97,9 +102,11 @@ impl Model {
     /// The outputs before the clock edge, then the edge.
     fn step(&mut self, i: &IsIn) -> IsOut {
         let b = |x: bool| x as u8;
-        let accept = i.s_axis_tvalid != 0 && self.ready;
+        let col_first = self.col_major && self.k.is_multiple_of(self.rows) && !self.discard;
+        let held = col_first && i.col_hold != 0;
+        let accept = i.s_axis_tvalid != 0 && self.ready && !held;
         let beat = accept && !self.discard;
-        let slot_now = beat || self.pad_go;
+        let slot_now = beat || (self.pad_go && !held);
         let is_last = self.k + 1 == self.rows * self.cols;
         let run = i.run != 0;
         // The next state.
@@ -171,7 +178,8 @@ impl Model {
             err = false;
         }
         let out = IsOut {
-            s_axis_tready: b(self.ready),
+            s_axis_tready: b(self.ready && !held),
+            col_first: b(col_first),
             slot_now: b(slot_now),
             in_done: b(self.done),
             err: b(self.err),
@@ -223,12 +231,13 @@ impl Source {
 
 /// What differs between two outputs: the first field, expected and got.
 fn first_difference(want: &IsOut, got: &IsOut) -> Option<String> {
-    let fields: [(&str, u64, u64); 18] = [
+    let fields: [(&str, u64, u64); 19] = [
         (
             "s_axis_tready",
             want.s_axis_tready.into(),
             got.s_axis_tready.into(),
         ),
+        ("col_first", want.col_first.into(), got.col_first.into()),
         ("slot_now", want.slot_now.into(), got.slot_now.into()),
         ("slot_valid", want.slot_valid.into(), got.slot_valid.into()),
         ("in_done", want.in_done.into(), got.in_done.into()),
@@ -248,7 +257,7 @@ fn first_difference(want: &IsOut, got: &IsOut) -> Option<String> {
         ("slot_coln", want.slot_coln.into(), got.slot_coln.into()),
     ];
     // A slot's fields count while it is valid.
-    let n = if want.slot_valid != 0 { 18 } else { 8 };
+    let n = if want.slot_valid != 0 { 19 } else { 9 };
     fields[..n]
         .iter()
         .find(|(_, w, g)| w != g)
@@ -263,15 +272,16 @@ enum Order {
 }
 
 /// Run `cycles` cycles of frames of `rows` x `cols` in `order` with resets
-/// at the rate `resets`; returns the frames that completed and the slots
-/// compared.
+/// at the rate `resets`, a column's first slot held now and then; returns
+/// the frames that completed, the slots compared and the cycles a slot
+/// waited for `col_hold` alone.
 fn run(
     order: Order,
     (rows, cols): (usize, usize),
     cycles: usize,
     resets: f64,
     seed: u64,
-) -> (usize, usize) {
+) -> (usize, usize, usize) {
     let p = FccParams::default();
     let block = match order {
         Order::Raster => BenchBlock::InputStage,
@@ -290,8 +300,9 @@ fn run(
     let mut rst_next = true;
     let mut rst = false;
     let mut in_done = false;
-    let (mut frames, mut slots) = (0, 0);
+    let (mut frames, mut slots, mut held) = (0, 0, 0);
     let mut room = true;
+    let mut hold = false;
     for t in 0..cycles {
         // The phase after this edge, from the stage's in_done of this cycle.
         let mut restart = false;
@@ -322,6 +333,9 @@ fn run(
         if rng.gen_bool(0.05) {
             room = !room;
         }
+        if rng.gen_bool(0.1) {
+            hold = !hold;
+        }
         let (data, last) = src.beats[src.next];
         let valid = rng.gen_bool(0.7);
         let i = IsIn {
@@ -340,8 +354,11 @@ fn run(
             restart: restart as u8,
             run_next: (next == Phase::Run) as u8,
             room: room as u8,
+            col_hold: hold as u8,
         };
+        let waits = hold && (m.pad_go || (valid && m.ready));
         let want = m.step(&i);
+        held += usize::from(waits && want.col_first != 0);
         let got = dut.step(&i);
         if t >= 2 {
             if let Some(d) = first_difference(&want, &got) {
@@ -366,7 +383,7 @@ fn run(
         rst = rst_next;
         rst_next = rng.gen_bool(resets);
     }
-    (frames, slots)
+    (frames, slots, held)
 }
 
 #[test]
@@ -376,7 +393,7 @@ fn frames_exact_short_and_long_with_gaps_and_back_pressure() {
             .into_iter()
             .enumerate()
         {
-            let (frames, slots) = run(order, (rows, cols), 30_000, 0.0, seed as u64);
+            let (frames, slots, held) = run(order, (rows, cols), 30_000, 0.0, seed as u64);
             assert!(
                 frames > 100,
                 "{rows} x {cols} in {order:?} order: only {frames} frames completed"
@@ -384,6 +401,11 @@ fn frames_exact_short_and_long_with_gaps_and_back_pressure() {
             assert!(
                 slots > frames * rows * cols / 2,
                 "{rows} x {cols} in {order:?} order: only {slots} slots"
+            );
+            assert_eq!(
+                held > 100,
+                order == Order::Column,
+                "{rows} x {cols} in {order:?} order: a column's first slot held {held} cycles"
             );
         }
     }
@@ -393,7 +415,7 @@ fn frames_exact_short_and_long_with_gaps_and_back_pressure() {
 fn seeded_random_resets_in_every_phase() {
     for order in [Order::Raster, Order::Column] {
         for (seed, (rows, cols)) in [(2, 4), (3, 3), (4, 6)].into_iter().enumerate() {
-            let (frames, _) = run(order, (rows, cols), 30_000, 0.003, 10 + seed as u64);
+            let (frames, _, _) = run(order, (rows, cols), 30_000, 0.003, 10 + seed as u64);
             assert!(
                 frames > 50,
                 "{rows} x {cols} in {order:?} order: only {frames} frames completed"
