@@ -50,6 +50,9 @@ pub enum BenchBlock {
     /// The column core's pass-2 distance tests `FccColDist` behind the
     /// scalar ports of `FccColDistProbe`.
     ColDist,
+    /// The column core's front `FccColFront` (thresholds, row runs, window,
+    /// distance tests) behind the scalar ports of `FccColFrontProbe`.
+    ColFront,
     /// The column core's record accumulator (`FccAccPixel`, `FccAccMerge`)
     /// over the four registers of `FccAccProbe`.
     Acc,
@@ -114,7 +117,7 @@ impl Row {
 
 impl BenchBlock {
     /// Every block with a bench.
-    pub const ALL: [BenchBlock; 30] = [
+    pub const ALL: [BenchBlock; 31] = [
         BenchBlock::Regs,
         BenchBlock::AxilAdapter,
         BenchBlock::MergeTable,
@@ -131,6 +134,7 @@ impl BenchBlock {
         BenchBlock::RowRuns,
         BenchBlock::ColWindow,
         BenchBlock::ColDist,
+        BenchBlock::ColFront,
         BenchBlock::Acc,
         BenchBlock::RecordOut,
         BenchBlock::LabelPool,
@@ -256,6 +260,17 @@ impl BenchBlock {
                     )
                 },
                 waivers: lint::col_dist_waivers,
+            },
+            BenchBlock::ColFront => Row {
+                name: "fcc_col_front",
+                generate: |p| {
+                    gen(
+                        p,
+                        crate::column::fcc_col_front_probe::FccColFrontProbe::new(p),
+                        "fcc_col_front",
+                    )
+                },
+                waivers: lint::col_front_waivers,
             },
             BenchBlock::Acc => Row {
                 name: "fcc_acc",

@@ -214,6 +214,24 @@ pub fn col_dist_waivers(p: &FccParams, name: &str) -> String {
     s
 }
 
+/// The waivers of the column core front's probe `name`: the window's
+/// centre positions (as [`col_window_waivers`]), the label words and mask
+/// sized for K = 11, and the centre's fields the probe does not bring out.
+pub fn col_front_waivers(p: &FccParams, name: &str) -> String {
+    let mut s = col_window_waivers(p, name);
+    s.push_str(&format!(
+        "// Sized for K = 11: a smaller window leaves upper words unread.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'words$*\"\n\
+         // The probe brings out the centre's position, run and flags only.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'front$centre'*\"\n\
+         // The input stage's slot: the column core reads rows below 128 and\n\
+         // marks columns by their number, not by the row-major flags.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'thr$out'*\"\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'row8'*\"\n"
+    ));
+    s
+}
+
 /// The waivers of the record accumulator's probe `name`: rust-hdl emits a
 /// widening `bit_cast` as an AND with the wider mask, which zero-extends
 /// the narrower operand as intended.

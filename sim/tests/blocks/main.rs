@@ -28,6 +28,7 @@ mod acc;
 mod close_order;
 mod closer;
 mod col_dist;
+mod col_front;
 mod col_start;
 mod col_window;
 mod flush_wait;

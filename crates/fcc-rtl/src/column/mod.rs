@@ -20,8 +20,10 @@
 //! (`FccLabelLists`: a closed cluster's labels back to the pool); the
 //! record slots are handed out by a 9-bit `FccLabelPool`, the
 //! column-start check (`FccColStart`: when a column may start), and the
-//! flushes' accumulators waiting for their finds (`FccFlushWait`). The top
-//! is to come.
+//! flushes' accumulators waiting for their finds (`FccFlushWait`); and the
+//! front (`FccColFront`: thresholds, row runs, window and distance tests
+//! wired, the part of the core a slot passes without a hold). The top is
+//! to come.
 
 pub mod fcc_acc_merge;
 pub mod fcc_acc_pixel;
@@ -34,6 +36,8 @@ pub mod fcc_closer_pass;
 pub mod fcc_col_dist;
 pub mod fcc_col_dist_probe;
 pub mod fcc_col_edge;
+pub mod fcc_col_front;
+pub mod fcc_col_front_probe;
 pub mod fcc_col_start;
 pub mod fcc_col_window;
 pub mod fcc_col_window_probe;
