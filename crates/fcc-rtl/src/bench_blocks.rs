@@ -53,6 +53,9 @@ pub enum BenchBlock {
     /// The column core's front `FccColFront` (thresholds, row runs, window,
     /// distance tests) behind the scalar ports of `FccColFrontProbe`.
     ColFront,
+    /// The column core's slot buffer with its credits `FccColSlotBuf`
+    /// behind the scalar ports of `FccColSlotBufProbe`.
+    ColSlotBuf,
     /// The column core's record accumulator (`FccAccPixel`, `FccAccMerge`)
     /// over the four registers of `FccAccProbe`.
     Acc,
@@ -117,7 +120,7 @@ impl Row {
 
 impl BenchBlock {
     /// Every block with a bench.
-    pub const ALL: [BenchBlock; 31] = [
+    pub const ALL: [BenchBlock; 32] = [
         BenchBlock::Regs,
         BenchBlock::AxilAdapter,
         BenchBlock::MergeTable,
@@ -135,6 +138,7 @@ impl BenchBlock {
         BenchBlock::ColWindow,
         BenchBlock::ColDist,
         BenchBlock::ColFront,
+        BenchBlock::ColSlotBuf,
         BenchBlock::Acc,
         BenchBlock::RecordOut,
         BenchBlock::LabelPool,
@@ -271,6 +275,17 @@ impl BenchBlock {
                     )
                 },
                 waivers: lint::col_front_waivers,
+            },
+            BenchBlock::ColSlotBuf => Row {
+                name: "fcc_col_slot_buf",
+                generate: |p| {
+                    gen(
+                        p,
+                        crate::column::fcc_col_slot_buf_probe::FccColSlotBufProbe::new(p),
+                        "fcc_col_slot_buf",
+                    )
+                },
+                waivers: lint::col_slot_buf_waivers,
             },
             BenchBlock::Acc => Row {
                 name: "fcc_acc",

@@ -36,6 +36,15 @@ pub struct FccCredits {
 
 impl Default for FccCredits {
     fn default() -> Self {
+        Self::with_limit(CREDITS)
+    }
+}
+
+impl FccCredits {
+    /// A counter whose `room` is high while fewer than `limit` credits are
+    /// out (below 1024).
+    pub fn with_limit(limit: usize) -> Self {
+        assert!(limit < 1024, "{limit} credits do not fit the counter");
         Self {
             clk: Default::default(),
             rst: Default::default(),
@@ -48,7 +57,7 @@ impl Default for FccCredits {
             one10: kb(1),
             two10: kb(2),
             zero10: kb(0),
-            limit: kb(CREDITS as u64),
+            limit: kb(limit as u64),
         }
     }
 }

@@ -172,6 +172,7 @@ pub use column::fcc_close_order::{CLOSE_ENTRIES, CLOSE_KEY_BITS};
 pub use column::fcc_closer::{WAIT_ADDR_BITS, WAIT_ROOM};
 pub use column::fcc_col_dist::COL_DIST_LATENCY;
 pub use column::fcc_col_front::FRONT_LATENCY;
+pub use column::fcc_col_slot_buf::{SLOT_BUF, SLOT_CREDITS};
 pub use column::fcc_col_window::COL_WINDOW_LATENCY;
 pub use column::fcc_flush_wait::FLUSH_WAIT;
 pub use column::fcc_label_lists::{WALK_BITS, WALK_ROOM};

@@ -232,6 +232,30 @@ pub fn col_front_waivers(p: &FccParams, name: &str) -> String {
     s
 }
 
+/// The waivers of the column slot buffer's probe `name`: its lanes move in
+/// step, so the first lane's `valid` and `level` stand for all; the credit
+/// counter's `drop` (the row-major core's) is tied low; the probe feeds a
+/// few of the centre's fields.
+pub fn col_slot_buf_waivers(p: &FccParams, name: &str) -> String {
+    let mut s = block_waivers(p, name);
+    s.push_str(&format!(
+        "// The lanes move in step: the centre's lane's valid and level stand\n\
+         // for all (the credits, not the level, bound the buffer).\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'hits$valid'*\"\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'fifo$valid'*\"\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*$level'*\"\n\
+         // Sized for K = 11: a smaller window leaves upper bits, words and a\n\
+         // last lane's labels unread.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'hits'*\"\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'hits$dout'*\"\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'words$*\"\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'labels$*\"\n\
+         // The probe feeds and reads a few of the centre's fields.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'slots$centre'*\"\n"
+    ));
+    s
+}
+
 /// The waivers of the record accumulator's probe `name`: rust-hdl emits a
 /// widening `bit_cast` as an AND with the wider mask, which zero-extends
 /// the narrower operand as intended.

@@ -14,7 +14,7 @@ use super::RunPix;
 use crate::fcc_dist_unit::FccDistUnit;
 use crate::fcc_sq_dist::SQ_LATENCY;
 use crate::fcc_thr_window::THR_WIN_LAG;
-use crate::types::vec_of;
+use crate::types::{kb, vec_of};
 
 /// Cycles from the window to `hit` and `centre`.
 pub const COL_DIST_LATENCY: usize = SQ_LATENCY;
@@ -49,6 +49,8 @@ pub struct FccColDist {
     /// The centre and the labels, `SQ_LATENCY` stages (entry e's at `7e + s`).
     cd: Vec<DFF<RunPix>>,
     label_d: Vec<DFF<Bits<16>>>,
+    zero16: Constant<Bits<16>>,
+    zero36: Constant<Bits<36>>,
     _n: usize,
 }
 
@@ -77,6 +79,8 @@ impl FccColDist {
             ccv_d: vec_of(THR_WIN_LAG),
             cd: vec_of(COL_DIST_LATENCY),
             label_d: vec_of(SQ_LATENCY * n),
+            zero16: kb(0),
+            zero36: kb(0),
             _n: n,
         }
     }
@@ -131,7 +135,16 @@ impl Logic for FccColDist {
             }
             self.hit_label[e].next = self.label_d[7 * e + 6].q.val();
         }
+        // The keys' and addends' last stages have a reset, so that they stay
+        // flip-flops: chained with the window's registers, a delay line
+        // without one becomes shift-register LUTs, whose output is slow.
         if self.rst.val() {
+            self.ckey_d[1].d.next = self.zero16.val();
+            self.ccv_d[1].d.next = self.zero36.val();
+            for e in 0..self.units.len() {
+                self.key_d[2 * e + 1].d.next = self.zero16.val();
+                self.cv_d[2 * e + 1].d.next = self.zero36.val();
+            }
             self.cd[0].d.next.valid = false;
             self.cd[1].d.next.valid = false;
             self.cd[2].d.next.valid = false;

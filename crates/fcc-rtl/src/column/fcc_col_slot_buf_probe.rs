@@ -1,0 +1,266 @@
+//! `FccColSlotBufProbe`: `FccColSlotBuf` of the build behind scalar ports,
+//! for its own bench: the credit taken (`slot`), a slot pushed (`push`
+//! with a few of the centre's fields, the hits as a mask, the labels four
+//! to a word `lw0` .. `lw13`) and `take` in; `room`, the head (`valid`,
+//! `o_*`, `o_hits`, `o0` .. `o13`) out.
+
+use fcc_params::FccParams;
+use rust_hdl::prelude::*;
+
+use super::fcc_col_slot_buf::FccColSlotBuf;
+use super::fcc_quad_lane::LabelQuad;
+use super::RunPix;
+use crate::types::{kb, vec_of};
+
+/// Label words: 56 entries, K = 11's 55.
+const WORDS: usize = 14;
+
+#[derive(LogicBlock)]
+pub struct FccColSlotBufProbe {
+    pub clk: Signal<In, Clock>,
+    pub rst: Signal<In, Bit>,
+    pub slot: Signal<In, Bit>,
+    pub push: Signal<In, Bit>,
+    pub row: Signal<In, Bits<7>>,
+    pub col: Signal<In, Bits<12>>,
+    pub label: Signal<In, Bits<16>>,
+    pub start: Signal<In, Bit>,
+    pub hits: Signal<In, Bits<64>>,
+    pub lw0: Signal<In, Bits<64>>,
+    pub lw1: Signal<In, Bits<64>>,
+    pub lw2: Signal<In, Bits<64>>,
+    pub lw3: Signal<In, Bits<64>>,
+    pub lw4: Signal<In, Bits<64>>,
+    pub lw5: Signal<In, Bits<64>>,
+    pub lw6: Signal<In, Bits<64>>,
+    pub lw7: Signal<In, Bits<64>>,
+    pub lw8: Signal<In, Bits<64>>,
+    pub lw9: Signal<In, Bits<64>>,
+    pub lw10: Signal<In, Bits<64>>,
+    pub lw11: Signal<In, Bits<64>>,
+    pub lw12: Signal<In, Bits<64>>,
+    pub lw13: Signal<In, Bits<64>>,
+    pub take: Signal<In, Bit>,
+    pub room: Signal<Out, Bit>,
+    pub valid: Signal<Out, Bit>,
+    pub o_valid: Signal<Out, Bit>,
+    pub o_row: Signal<Out, Bits<7>>,
+    pub o_col: Signal<Out, Bits<12>>,
+    pub o_label: Signal<Out, Bits<16>>,
+    pub o_start: Signal<Out, Bit>,
+    pub o_hits: Signal<Out, Bits<64>>,
+    pub o0: Signal<Out, LabelQuad>,
+    pub o1: Signal<Out, LabelQuad>,
+    pub o2: Signal<Out, LabelQuad>,
+    pub o3: Signal<Out, LabelQuad>,
+    pub o4: Signal<Out, LabelQuad>,
+    pub o5: Signal<Out, LabelQuad>,
+    pub o6: Signal<Out, LabelQuad>,
+    pub o7: Signal<Out, LabelQuad>,
+    pub o8: Signal<Out, LabelQuad>,
+    pub o9: Signal<Out, LabelQuad>,
+    pub o10: Signal<Out, LabelQuad>,
+    pub o11: Signal<Out, LabelQuad>,
+    pub o12: Signal<Out, LabelQuad>,
+    pub o13: Signal<Out, LabelQuad>,
+    slots: FccColSlotBuf,
+    pix: Signal<Local, RunPix>,
+    pix_zero: Constant<RunPix>,
+    words: Vec<Signal<Local, Bits<64>>>,
+    /// The head's mask so far, and its labels (zeros past the last).
+    acc: Vec<Signal<Local, Bits<64>>>,
+    onehot: Vec<Constant<Bits<64>>>,
+    lab: Vec<Signal<Local, Bits<16>>>,
+    zero16: Constant<Bits<16>>,
+    zero64: Constant<Bits<64>>,
+    _n: usize,
+}
+
+impl FccColSlotBufProbe {
+    pub fn new(p: &FccParams) -> Self {
+        let n = p.window_positions();
+        assert!(
+            n <= 4 * WORDS,
+            "{n} window entries do not fit the label words"
+        );
+        Self {
+            clk: Default::default(),
+            rst: Default::default(),
+            slot: Default::default(),
+            push: Default::default(),
+            row: Default::default(),
+            col: Default::default(),
+            label: Default::default(),
+            start: Default::default(),
+            hits: Default::default(),
+            lw0: Default::default(),
+            lw1: Default::default(),
+            lw2: Default::default(),
+            lw3: Default::default(),
+            lw4: Default::default(),
+            lw5: Default::default(),
+            lw6: Default::default(),
+            lw7: Default::default(),
+            lw8: Default::default(),
+            lw9: Default::default(),
+            lw10: Default::default(),
+            lw11: Default::default(),
+            lw12: Default::default(),
+            lw13: Default::default(),
+            take: Default::default(),
+            room: Default::default(),
+            valid: Default::default(),
+            o_valid: Default::default(),
+            o_row: Default::default(),
+            o_col: Default::default(),
+            o_label: Default::default(),
+            o_start: Default::default(),
+            o_hits: Default::default(),
+            o0: Default::default(),
+            o1: Default::default(),
+            o2: Default::default(),
+            o3: Default::default(),
+            o4: Default::default(),
+            o5: Default::default(),
+            o6: Default::default(),
+            o7: Default::default(),
+            o8: Default::default(),
+            o9: Default::default(),
+            o10: Default::default(),
+            o11: Default::default(),
+            o12: Default::default(),
+            o13: Default::default(),
+            slots: FccColSlotBuf::new(p),
+            pix: Default::default(),
+            pix_zero: Constant::new(RunPix::default()),
+            words: vec_of(WORDS),
+            acc: vec_of(n + 1),
+            onehot: (0..n).map(|e| kb(1u64 << e)).collect(),
+            lab: vec_of(4 * WORDS),
+            zero16: kb(0),
+            zero64: kb(0),
+            _n: n,
+        }
+    }
+}
+
+impl Logic for FccColSlotBufProbe {
+    #[hdl_gen]
+    fn update(&mut self) {
+        self.pix.next = self.pix_zero.val();
+        self.pix.next.valid = self.push.val();
+        self.pix.next.row = self.row.val();
+        self.pix.next.col = self.col.val();
+        self.pix.next.label = self.label.val();
+        self.pix.next.start = self.start.val();
+        self.slots.clk.next = self.clk.val();
+        self.slots.rst.next = self.rst.val();
+        self.slots.slot.next = self.slot.val();
+        self.slots.take.next = self.take.val();
+        self.slots.in_centre.next = self.pix.val();
+        self.words[0].next = self.lw0.val();
+        self.words[1].next = self.lw1.val();
+        self.words[2].next = self.lw2.val();
+        self.words[3].next = self.lw3.val();
+        self.words[4].next = self.lw4.val();
+        self.words[5].next = self.lw5.val();
+        self.words[6].next = self.lw6.val();
+        self.words[7].next = self.lw7.val();
+        self.words[8].next = self.lw8.val();
+        self.words[9].next = self.lw9.val();
+        self.words[10].next = self.lw10.val();
+        self.words[11].next = self.lw11.val();
+        self.words[12].next = self.lw12.val();
+        self.words[13].next = self.lw13.val();
+        for e in 0..self._n {
+            self.slots.in_hit[e].next = self.hits.val().get_bit(e);
+        }
+        for w in 0..(self._n / 4) {
+            for m in 0..4 {
+                self.slots.in_label[w * 4 + m].next = self.words[w].val().get_bits::<16>(m * 16);
+            }
+        }
+        for w in (self._n / 4)..(self._n / 4 + 1) {
+            for m in 0..(self._n % 4) {
+                self.slots.in_label[w * 4 + m].next = self.words[w].val().get_bits::<16>(m * 16);
+            }
+        }
+        self.room.next = self.slots.room.val();
+        self.valid.next = self.slots.valid.val();
+        self.o_valid.next = self.slots.centre.val().valid;
+        self.o_row.next = self.slots.centre.val().row;
+        self.o_col.next = self.slots.centre.val().col;
+        self.o_label.next = self.slots.centre.val().label;
+        self.o_start.next = self.slots.centre.val().start;
+        self.acc[0].next = self.zero64.val();
+        for e in 0..self._n {
+            self.acc[e + 1].next = self.acc[e].val();
+            if self.slots.hit[e].val() {
+                self.acc[e + 1].next = self.acc[e].val() | self.onehot[e].val();
+            }
+            self.lab[e].next = self.slots.hit_label[e].val();
+        }
+        for e in (self._n)..(self._n + 1) {
+            self.o_hits.next = self.acc[e].val();
+        }
+        for e in (self._n)..(4 * WORDS) {
+            self.lab[e].next = self.zero16.val();
+        }
+        self.o0.next.l0 = self.lab[0].val();
+        self.o0.next.l1 = self.lab[1].val();
+        self.o0.next.l2 = self.lab[2].val();
+        self.o0.next.l3 = self.lab[3].val();
+        self.o1.next.l0 = self.lab[4].val();
+        self.o1.next.l1 = self.lab[5].val();
+        self.o1.next.l2 = self.lab[6].val();
+        self.o1.next.l3 = self.lab[7].val();
+        self.o2.next.l0 = self.lab[8].val();
+        self.o2.next.l1 = self.lab[9].val();
+        self.o2.next.l2 = self.lab[10].val();
+        self.o2.next.l3 = self.lab[11].val();
+        self.o3.next.l0 = self.lab[12].val();
+        self.o3.next.l1 = self.lab[13].val();
+        self.o3.next.l2 = self.lab[14].val();
+        self.o3.next.l3 = self.lab[15].val();
+        self.o4.next.l0 = self.lab[16].val();
+        self.o4.next.l1 = self.lab[17].val();
+        self.o4.next.l2 = self.lab[18].val();
+        self.o4.next.l3 = self.lab[19].val();
+        self.o5.next.l0 = self.lab[20].val();
+        self.o5.next.l1 = self.lab[21].val();
+        self.o5.next.l2 = self.lab[22].val();
+        self.o5.next.l3 = self.lab[23].val();
+        self.o6.next.l0 = self.lab[24].val();
+        self.o6.next.l1 = self.lab[25].val();
+        self.o6.next.l2 = self.lab[26].val();
+        self.o6.next.l3 = self.lab[27].val();
+        self.o7.next.l0 = self.lab[28].val();
+        self.o7.next.l1 = self.lab[29].val();
+        self.o7.next.l2 = self.lab[30].val();
+        self.o7.next.l3 = self.lab[31].val();
+        self.o8.next.l0 = self.lab[32].val();
+        self.o8.next.l1 = self.lab[33].val();
+        self.o8.next.l2 = self.lab[34].val();
+        self.o8.next.l3 = self.lab[35].val();
+        self.o9.next.l0 = self.lab[36].val();
+        self.o9.next.l1 = self.lab[37].val();
+        self.o9.next.l2 = self.lab[38].val();
+        self.o9.next.l3 = self.lab[39].val();
+        self.o10.next.l0 = self.lab[40].val();
+        self.o10.next.l1 = self.lab[41].val();
+        self.o10.next.l2 = self.lab[42].val();
+        self.o10.next.l3 = self.lab[43].val();
+        self.o11.next.l0 = self.lab[44].val();
+        self.o11.next.l1 = self.lab[45].val();
+        self.o11.next.l2 = self.lab[46].val();
+        self.o11.next.l3 = self.lab[47].val();
+        self.o12.next.l0 = self.lab[48].val();
+        self.o12.next.l1 = self.lab[49].val();
+        self.o12.next.l2 = self.lab[50].val();
+        self.o12.next.l3 = self.lab[51].val();
+        self.o13.next.l0 = self.lab[52].val();
+        self.o13.next.l1 = self.lab[53].val();
+        self.o13.next.l2 = self.lab[54].val();
+        self.o13.next.l3 = self.lab[55].val();
+    }
+}
