@@ -4,7 +4,9 @@
 //! centre, its window's hit bits from the golden threshold, the upper pixels'
 //! representatives as the block itself wrote them back, the row's ring join
 //! on its last pixel, input credits, random idle cycles and back-pressure
-//! from the union engine), for every build K, on seeded random frames, the
+//! from the union engine), for build K = 3, 7 and 11 (the smallest, the
+//! default, the largest; the Verilator regression and the cocotb bench run
+//! the whole core at every K), on seeded random frames, the
 //! directed frames and scenes. The joins it emits must connect exactly the
 //! components the golden join set (pass-2 joins and ring joins) connects: a
 //! join the golden set keeps apart, or a golden join left unconnected, fails
@@ -513,8 +515,6 @@ macro_rules! per_k {
 
 per_k! {
     3: random_directed_and_scene_frames_connect_as_golden_fsize3, striped_frame_with_slow_union_engine_fsize3;
-    5: random_directed_and_scene_frames_connect_as_golden_fsize5, striped_frame_with_slow_union_engine_fsize5;
     7: random_directed_and_scene_frames_connect_as_golden_fsize7, striped_frame_with_slow_union_engine_fsize7;
-    9: random_directed_and_scene_frames_connect_as_golden_fsize9, striped_frame_with_slow_union_engine_fsize9;
     11: random_directed_and_scene_frames_connect_as_golden_fsize11, striped_frame_with_slow_union_engine_fsize11;
 }
