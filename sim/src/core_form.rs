@@ -24,6 +24,27 @@ pub struct PointAddends {
     pub cv: u64,
 }
 
+/// The run parameters `FccPointThr` (and `FccPixThr`) take: the squared
+/// slopes `S = A^2 >> 8` and the fixed thresholds' addends `-(tH^2 + 1)`
+/// and `-tV^2`, 36-bit two's complement.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ThrInputs {
+    pub sh: u32,
+    pub sv: u32,
+    pub ch_t: u64,
+    pub cv_t: u64,
+}
+
+/// The threshold inputs of `p`, as the register file gives them.
+pub fn thr_inputs(p: &FccParams) -> ThrInputs {
+    ThrInputs {
+        sh: p.th_h_slope_sq() as u32,
+        sv: p.th_v_slope_sq() as u32,
+        ch_t: (-(p.th_h_sq() + 1)) as u64 & MASK36,
+        cv_t: (-p.th_v_sq()) as u64 & MASK36,
+    }
+}
+
 /// The key and addends of `q` under the thresholds of `p` (spec §2).
 pub fn point_addends(p: &FccParams, q: Point) -> PointAddends {
     let th = p.th_h_sq().max(point_threshold(p.th_h_slope_sq(), q));

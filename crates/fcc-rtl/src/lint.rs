@@ -220,9 +220,7 @@ pub fn col_dist_waivers(p: &FccParams, name: &str) -> String {
 pub fn col_front_waivers(p: &FccParams, name: &str) -> String {
     let mut s = col_window_waivers(p, name);
     s.push_str(&format!(
-        "// Sized for K = 11: a smaller window leaves upper words unread.\n\
-         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'words$*\"\n\
-         // The probe brings out the centre's position, run and flags only.\n\
+        "// The probe brings out the centre's position, run and flags only.\n\
          lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'front$centre'*\"\n\
          // The input stage's slot: the column core reads rows below 128 and\n\
          // marks columns by their number, not by the row-major flags.\n\

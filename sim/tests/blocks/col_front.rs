@@ -18,7 +18,7 @@ use std::collections::{HashMap, VecDeque};
 use fcc_golden::{Frame, Stream};
 use fcc_params::FccParams;
 use fcc_rtl::{BenchBlock, RunLimits, FRONT_LATENCY};
-use fcc_sim::core_form::offset_binary as ob;
+use fcc_sim::core_form::{offset_binary as ob, thr_inputs};
 use fcc_sim::{c_struct, load_plain, PlainDut};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -139,13 +139,13 @@ impl Bench {
     /// One cycle: the pixel at (row, col) of `f` or a bubble in.
     fn cycle(&mut self, p: &FccParams, f: &Frame, slot: Option<(usize, usize)>, rst: bool) {
         let lim = RunLimits::new(p);
-        let neg36 = |v: i64| (-v) as u64 & ((1 << 36) - 1);
+        let thr = thr_inputs(p);
         let mut i = FrIn {
             rst: rst as u8,
-            ch_t: neg36(p.th_h_sq() + 1),
-            cv_t: neg36(p.th_v_sq()),
-            sh: p.th_h_slope_sq() as u32,
-            sv: p.th_v_slope_sq() as u32,
+            ch_t: thr.ch_t,
+            cv_t: thr.cv_t,
+            sh: thr.sh,
+            sv: thr.sv,
             last_col: (p.cols - 1) as u16,
             reach: lim.reach,
             ring_on: lim.ring_on as u8,

@@ -9,20 +9,10 @@ use fcc_params::FccParams;
 use rust_hdl::prelude::*;
 
 use super::fcc_col_front::FccColFront;
+use super::fcc_hits_pack::FccHitsPack;
 use super::fcc_open_room::OPEN_ROOM_BITS;
-use crate::types::{kb, vec_of, Pix};
-
-/// Label words: 56 entries, K = 11's 55.
-const WORDS: usize = 14;
-
-/// Four entries' labels in one 64-bit port, the first in the low bits.
-#[derive(Clone, Copy, Debug, PartialEq, Default, LogicStruct)]
-pub struct LabelQuad {
-    pub l0: Bits<16>,
-    pub l1: Bits<16>,
-    pub l2: Bits<16>,
-    pub l3: Bits<16>,
-}
+use super::fcc_quad_lane::LabelQuad;
+use crate::types::Pix;
 
 #[derive(LogicBlock)]
 pub struct FccColFrontProbe {
@@ -84,24 +74,14 @@ pub struct FccColFrontProbe {
     pub lw12: Signal<Out, LabelQuad>,
     pub lw13: Signal<Out, LabelQuad>,
     front: FccColFront,
+    pack: FccHitsPack,
     slot: Signal<Local, Pix>,
-    /// The entries' labels, zeros past the last.
-    lab: Vec<Signal<Local, Bits<16>>>,
-    /// The mask so far: entries below `e` at `acc[e]`.
-    acc: Vec<Signal<Local, Bits<64>>>,
-    onehot: Vec<Constant<Bits<64>>>,
-    zero16: Constant<Bits<16>>,
-    zero64: Constant<Bits<64>>,
     _n: usize,
 }
 
 impl FccColFrontProbe {
     pub fn new(p: &FccParams) -> Self {
         let n = p.window_positions();
-        assert!(
-            n <= 4 * WORDS,
-            "{n} window entries do not fit the label words"
-        );
         Self {
             clk: Default::default(),
             rst: Default::default(),
@@ -161,12 +141,8 @@ impl FccColFrontProbe {
             lw12: Default::default(),
             lw13: Default::default(),
             front: FccColFront::new(p),
+            pack: FccHitsPack::new(p),
             slot: Default::default(),
-            lab: vec_of(4 * WORDS),
-            acc: vec_of(n + 1),
-            onehot: (0..n).map(|e| kb(1u64 << e)).collect(),
-            zero16: kb(0),
-            zero64: kb(0),
             _n: n,
         }
     }
@@ -220,75 +196,24 @@ impl Logic for FccColFrontProbe {
         self.o_ring_b.next = self.front.centre.val().ring_b;
         self.o_hold_drop.next = self.front.centre.val().hold_drop;
         self.o_hold_add.next = self.front.centre.val().hold_add;
-        self.acc[0].next = self.zero64.val();
         for e in 0..self._n {
-            self.acc[e + 1].next = self.acc[e].val();
-            if self.front.hit[e].val() {
-                self.acc[e + 1].next = self.acc[e].val() | self.onehot[e].val();
-            }
-            self.lab[e].next = self.front.hit_label[e].val();
+            self.pack.hit[e].next = self.front.hit[e].val();
+            self.pack.hit_label[e].next = self.front.hit_label[e].val();
         }
-        for e in (self._n)..(self._n + 1) {
-            self.hits.next = self.acc[e].val();
-        }
-        for e in (self._n)..(4 * WORDS) {
-            self.lab[e].next = self.zero16.val();
-        }
-        self.lw0.next.l0 = self.lab[0].val();
-        self.lw0.next.l1 = self.lab[1].val();
-        self.lw0.next.l2 = self.lab[2].val();
-        self.lw0.next.l3 = self.lab[3].val();
-        self.lw1.next.l0 = self.lab[4].val();
-        self.lw1.next.l1 = self.lab[5].val();
-        self.lw1.next.l2 = self.lab[6].val();
-        self.lw1.next.l3 = self.lab[7].val();
-        self.lw2.next.l0 = self.lab[8].val();
-        self.lw2.next.l1 = self.lab[9].val();
-        self.lw2.next.l2 = self.lab[10].val();
-        self.lw2.next.l3 = self.lab[11].val();
-        self.lw3.next.l0 = self.lab[12].val();
-        self.lw3.next.l1 = self.lab[13].val();
-        self.lw3.next.l2 = self.lab[14].val();
-        self.lw3.next.l3 = self.lab[15].val();
-        self.lw4.next.l0 = self.lab[16].val();
-        self.lw4.next.l1 = self.lab[17].val();
-        self.lw4.next.l2 = self.lab[18].val();
-        self.lw4.next.l3 = self.lab[19].val();
-        self.lw5.next.l0 = self.lab[20].val();
-        self.lw5.next.l1 = self.lab[21].val();
-        self.lw5.next.l2 = self.lab[22].val();
-        self.lw5.next.l3 = self.lab[23].val();
-        self.lw6.next.l0 = self.lab[24].val();
-        self.lw6.next.l1 = self.lab[25].val();
-        self.lw6.next.l2 = self.lab[26].val();
-        self.lw6.next.l3 = self.lab[27].val();
-        self.lw7.next.l0 = self.lab[28].val();
-        self.lw7.next.l1 = self.lab[29].val();
-        self.lw7.next.l2 = self.lab[30].val();
-        self.lw7.next.l3 = self.lab[31].val();
-        self.lw8.next.l0 = self.lab[32].val();
-        self.lw8.next.l1 = self.lab[33].val();
-        self.lw8.next.l2 = self.lab[34].val();
-        self.lw8.next.l3 = self.lab[35].val();
-        self.lw9.next.l0 = self.lab[36].val();
-        self.lw9.next.l1 = self.lab[37].val();
-        self.lw9.next.l2 = self.lab[38].val();
-        self.lw9.next.l3 = self.lab[39].val();
-        self.lw10.next.l0 = self.lab[40].val();
-        self.lw10.next.l1 = self.lab[41].val();
-        self.lw10.next.l2 = self.lab[42].val();
-        self.lw10.next.l3 = self.lab[43].val();
-        self.lw11.next.l0 = self.lab[44].val();
-        self.lw11.next.l1 = self.lab[45].val();
-        self.lw11.next.l2 = self.lab[46].val();
-        self.lw11.next.l3 = self.lab[47].val();
-        self.lw12.next.l0 = self.lab[48].val();
-        self.lw12.next.l1 = self.lab[49].val();
-        self.lw12.next.l2 = self.lab[50].val();
-        self.lw12.next.l3 = self.lab[51].val();
-        self.lw13.next.l0 = self.lab[52].val();
-        self.lw13.next.l1 = self.lab[53].val();
-        self.lw13.next.l2 = self.lab[54].val();
-        self.lw13.next.l3 = self.lab[55].val();
+        self.hits.next = self.pack.hits.val();
+        self.lw0.next = self.pack.lw0.val();
+        self.lw1.next = self.pack.lw1.val();
+        self.lw2.next = self.pack.lw2.val();
+        self.lw3.next = self.pack.lw3.val();
+        self.lw4.next = self.pack.lw4.val();
+        self.lw5.next = self.pack.lw5.val();
+        self.lw6.next = self.pack.lw6.val();
+        self.lw7.next = self.pack.lw7.val();
+        self.lw8.next = self.pack.lw8.val();
+        self.lw9.next = self.pack.lw9.val();
+        self.lw10.next = self.pack.lw10.val();
+        self.lw11.next = self.pack.lw11.val();
+        self.lw12.next = self.pack.lw12.val();
+        self.lw13.next = self.pack.lw13.val();
     }
 }

@@ -8,12 +8,10 @@ use fcc_params::FccParams;
 use rust_hdl::prelude::*;
 
 use super::fcc_col_slot_buf::FccColSlotBuf;
+use super::fcc_hits_pack::{FccHitsPack, PACK_WORDS};
 use super::fcc_quad_lane::LabelQuad;
 use super::RunPix;
-use crate::types::{kb, vec_of};
-
-/// Label words: 56 entries, K = 11's 55.
-const WORDS: usize = 14;
+use crate::types::vec_of;
 
 #[derive(LogicBlock)]
 pub struct FccColSlotBufProbe {
@@ -64,25 +62,16 @@ pub struct FccColSlotBufProbe {
     pub o12: Signal<Out, LabelQuad>,
     pub o13: Signal<Out, LabelQuad>,
     slots: FccColSlotBuf,
+    pack: FccHitsPack,
     pix: Signal<Local, RunPix>,
     pix_zero: Constant<RunPix>,
     words: Vec<Signal<Local, Bits<64>>>,
-    /// The head's mask so far, and its labels (zeros past the last).
-    acc: Vec<Signal<Local, Bits<64>>>,
-    onehot: Vec<Constant<Bits<64>>>,
-    lab: Vec<Signal<Local, Bits<16>>>,
-    zero16: Constant<Bits<16>>,
-    zero64: Constant<Bits<64>>,
     _n: usize,
 }
 
 impl FccColSlotBufProbe {
     pub fn new(p: &FccParams) -> Self {
         let n = p.window_positions();
-        assert!(
-            n <= 4 * WORDS,
-            "{n} window entries do not fit the label words"
-        );
         Self {
             clk: Default::default(),
             rst: Default::default(),
@@ -131,14 +120,10 @@ impl FccColSlotBufProbe {
             o12: Default::default(),
             o13: Default::default(),
             slots: FccColSlotBuf::new(p),
+            pack: FccHitsPack::new(p),
             pix: Default::default(),
             pix_zero: Constant::new(RunPix::default()),
-            words: vec_of(WORDS),
-            acc: vec_of(n + 1),
-            onehot: (0..n).map(|e| kb(1u64 << e)).collect(),
-            lab: vec_of(4 * WORDS),
-            zero16: kb(0),
-            zero64: kb(0),
+            words: vec_of(PACK_WORDS),
             _n: n,
         }
     }
@@ -192,75 +177,24 @@ impl Logic for FccColSlotBufProbe {
         self.o_col.next = self.slots.centre.val().col;
         self.o_label.next = self.slots.centre.val().label;
         self.o_start.next = self.slots.centre.val().start;
-        self.acc[0].next = self.zero64.val();
         for e in 0..self._n {
-            self.acc[e + 1].next = self.acc[e].val();
-            if self.slots.hit[e].val() {
-                self.acc[e + 1].next = self.acc[e].val() | self.onehot[e].val();
-            }
-            self.lab[e].next = self.slots.hit_label[e].val();
+            self.pack.hit[e].next = self.slots.hit[e].val();
+            self.pack.hit_label[e].next = self.slots.hit_label[e].val();
         }
-        for e in (self._n)..(self._n + 1) {
-            self.o_hits.next = self.acc[e].val();
-        }
-        for e in (self._n)..(4 * WORDS) {
-            self.lab[e].next = self.zero16.val();
-        }
-        self.o0.next.l0 = self.lab[0].val();
-        self.o0.next.l1 = self.lab[1].val();
-        self.o0.next.l2 = self.lab[2].val();
-        self.o0.next.l3 = self.lab[3].val();
-        self.o1.next.l0 = self.lab[4].val();
-        self.o1.next.l1 = self.lab[5].val();
-        self.o1.next.l2 = self.lab[6].val();
-        self.o1.next.l3 = self.lab[7].val();
-        self.o2.next.l0 = self.lab[8].val();
-        self.o2.next.l1 = self.lab[9].val();
-        self.o2.next.l2 = self.lab[10].val();
-        self.o2.next.l3 = self.lab[11].val();
-        self.o3.next.l0 = self.lab[12].val();
-        self.o3.next.l1 = self.lab[13].val();
-        self.o3.next.l2 = self.lab[14].val();
-        self.o3.next.l3 = self.lab[15].val();
-        self.o4.next.l0 = self.lab[16].val();
-        self.o4.next.l1 = self.lab[17].val();
-        self.o4.next.l2 = self.lab[18].val();
-        self.o4.next.l3 = self.lab[19].val();
-        self.o5.next.l0 = self.lab[20].val();
-        self.o5.next.l1 = self.lab[21].val();
-        self.o5.next.l2 = self.lab[22].val();
-        self.o5.next.l3 = self.lab[23].val();
-        self.o6.next.l0 = self.lab[24].val();
-        self.o6.next.l1 = self.lab[25].val();
-        self.o6.next.l2 = self.lab[26].val();
-        self.o6.next.l3 = self.lab[27].val();
-        self.o7.next.l0 = self.lab[28].val();
-        self.o7.next.l1 = self.lab[29].val();
-        self.o7.next.l2 = self.lab[30].val();
-        self.o7.next.l3 = self.lab[31].val();
-        self.o8.next.l0 = self.lab[32].val();
-        self.o8.next.l1 = self.lab[33].val();
-        self.o8.next.l2 = self.lab[34].val();
-        self.o8.next.l3 = self.lab[35].val();
-        self.o9.next.l0 = self.lab[36].val();
-        self.o9.next.l1 = self.lab[37].val();
-        self.o9.next.l2 = self.lab[38].val();
-        self.o9.next.l3 = self.lab[39].val();
-        self.o10.next.l0 = self.lab[40].val();
-        self.o10.next.l1 = self.lab[41].val();
-        self.o10.next.l2 = self.lab[42].val();
-        self.o10.next.l3 = self.lab[43].val();
-        self.o11.next.l0 = self.lab[44].val();
-        self.o11.next.l1 = self.lab[45].val();
-        self.o11.next.l2 = self.lab[46].val();
-        self.o11.next.l3 = self.lab[47].val();
-        self.o12.next.l0 = self.lab[48].val();
-        self.o12.next.l1 = self.lab[49].val();
-        self.o12.next.l2 = self.lab[50].val();
-        self.o12.next.l3 = self.lab[51].val();
-        self.o13.next.l0 = self.lab[52].val();
-        self.o13.next.l1 = self.lab[53].val();
-        self.o13.next.l2 = self.lab[54].val();
-        self.o13.next.l3 = self.lab[55].val();
+        self.o_hits.next = self.pack.hits.val();
+        self.o0.next = self.pack.lw0.val();
+        self.o1.next = self.pack.lw1.val();
+        self.o2.next = self.pack.lw2.val();
+        self.o3.next = self.pack.lw3.val();
+        self.o4.next = self.pack.lw4.val();
+        self.o5.next = self.pack.lw5.val();
+        self.o6.next = self.pack.lw6.val();
+        self.o7.next = self.pack.lw7.val();
+        self.o8.next = self.pack.lw8.val();
+        self.o9.next = self.pack.lw9.val();
+        self.o10.next = self.pack.lw10.val();
+        self.o11.next = self.pack.lw11.val();
+        self.o12.next = self.pack.lw12.val();
+        self.o13.next = self.pack.lw13.val();
     }
 }
