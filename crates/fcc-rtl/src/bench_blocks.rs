@@ -56,6 +56,10 @@ pub enum BenchBlock {
     /// The column core's slot buffer with its credits `FccColSlotBuf`
     /// behind the scalar ports of `FccColSlotBufProbe`.
     ColSlotBuf,
+    /// The column core's input half `FccColIn` (input stage, column-start
+    /// check, front, slot buffer) behind the scalar ports of
+    /// `FccColInProbe`.
+    ColIn,
     /// The column core's record accumulator (`FccAccPixel`, `FccAccMerge`)
     /// over the four registers of `FccAccProbe`.
     Acc,
@@ -120,7 +124,7 @@ impl Row {
 
 impl BenchBlock {
     /// Every block with a bench.
-    pub const ALL: [BenchBlock; 32] = [
+    pub const ALL: [BenchBlock; 33] = [
         BenchBlock::Regs,
         BenchBlock::AxilAdapter,
         BenchBlock::MergeTable,
@@ -139,6 +143,7 @@ impl BenchBlock {
         BenchBlock::ColDist,
         BenchBlock::ColFront,
         BenchBlock::ColSlotBuf,
+        BenchBlock::ColIn,
         BenchBlock::Acc,
         BenchBlock::RecordOut,
         BenchBlock::LabelPool,
@@ -286,6 +291,17 @@ impl BenchBlock {
                     )
                 },
                 waivers: lint::col_slot_buf_waivers,
+            },
+            BenchBlock::ColIn => Row {
+                name: "fcc_col_in",
+                generate: |p| {
+                    gen(
+                        p,
+                        crate::column::fcc_col_in_probe::FccColInProbe::new(p),
+                        "fcc_col_in",
+                    )
+                },
+                waivers: lint::col_in_waivers,
             },
             BenchBlock::Acc => Row {
                 name: "fcc_acc",

@@ -254,6 +254,39 @@ pub fn col_slot_buf_waivers(p: &FccParams, name: &str) -> String {
     s
 }
 
+/// The waivers of the column core input half's probe `name`: the front's
+/// (the window's centre positions, the stage's slot fields the column
+/// core does not read) and the slot buffer's lanes, and the centre's
+/// fields the probe does not bring out.
+pub fn col_in_waivers(p: &FccParams, name: &str) -> String {
+    let mut s = col_window_waivers(p, name);
+    s.push_str(&format!(
+        "// The probe brings out the centre's position, run and flags only.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'half$centre'*\"\n\
+         // The input stage's slot: the column core reads rows below 128 and\n\
+         // marks columns by their number, not by the row-major flags.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'thr$out'*\"\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'row8'*\"\n\
+         // The slot buffer's lanes move in step: the centre's lane's valid\n\
+         // and level stand for all; a smaller window leaves upper bits and a\n\
+         // last lane's labels unread.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'hits$valid'*\"\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'fifo$valid'*\"\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*$level'*\"\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'hits$dout'*\"\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'labels$*\"\n\
+         // rust-hdl's widening bit_cast in the column-start check: an AND with\n\
+         // the wider mask (the narrower operand is zero-extended, the cast).\n\
+         lint_off -rule WIDTH -file \"*{name}.v\" -match \"*Operator AND expects*\"\n\
+         // Not a loop: the stage's col_first comes from its registers, and the\n\
+         // check's hold from it and its own; rust-hdl writes each block's logic\n\
+         // as one always block, whose every output Verilator takes to follow\n\
+         // every input.\n\
+         lint_off -rule UNOPTFLAT -file \"*{name}.v\" -match \"*'*start$hold'*\"\n"
+    ));
+    s
+}
+
 /// The waivers of the record accumulator's probe `name`: rust-hdl emits a
 /// widening `bit_cast` as an AND with the wider mask, which zero-extends
 /// the narrower operand as intended.

@@ -93,7 +93,7 @@ c_struct! {
 
 impl FrOut {
     /// Window entry `e`'s label.
-    fn label(&self, e: usize) -> u16 {
+    pub fn label(&self, e: usize) -> u16 {
         let w = [
             self.lw0, self.lw1, self.lw2, self.lw3, self.lw4, self.lw5, self.lw6, self.lw7,
             self.lw8, self.lw9, self.lw10, self.lw11, self.lw12, self.lw13,
@@ -243,6 +243,11 @@ fn run_frame(
         "{what}: labels taken but not seen at a start, seed {}",
         b.seed
     );
+    check(&b.outs, b.seed, p, &golden_pixels(p, f), what)
+}
+
+/// Every pixel of `f` as the front must give it, from the golden stream.
+pub fn golden_pixels(p: &FccParams, f: &Frame) -> Vec<Pix> {
     let mut stream = Stream::new(p).expect("the golden stream");
     let mut column = vec![None; p.rows];
     for c in 0..p.cols {
@@ -254,32 +259,51 @@ fn run_frame(
     stream.finish().expect("the frame end");
     let mut runs = Vec::new();
     stream.runs_into(&mut runs).expect("the runs");
-    check(b, p, &column::pixels(p, f, &runs), what)
+    column::pixels(p, f, &runs)
 }
 
 /// What a frame's check saw: runs started, ring checks, hold changes,
 /// entries joined.
 #[derive(Default, Debug)]
-struct Seen {
-    starts: usize,
-    rings: usize,
-    holds: usize,
-    hits: usize,
+pub struct Seen {
+    pub starts: usize,
+    pub rings: usize,
+    pub holds: usize,
+    pub hits: usize,
+}
+
+impl Seen {
+    pub fn add(&mut self, s: Seen) {
+        self.starts += s.starts;
+        self.rings += s.rings;
+        self.holds += s.holds;
+        self.hits += s.hits;
+    }
+
+    /// The frames reached every check.
+    pub fn enough(&self) -> bool {
+        self.starts > 100 && self.rings > 5 && self.holds > 100 && self.hits > 1000
+    }
 }
 
 /// Every pixel's output against its golden one: runs mapped to labels at
 /// their first pixels.
-fn check(b: &Bench, p: &FccParams, want: &[Pix], what: &str) -> Seen {
+pub fn check(
+    outs: &HashMap<(usize, usize), FrOut>,
+    seed: u64,
+    p: &FccParams,
+    want: &[Pix],
+    what: &str,
+) -> Seen {
     let mut seen = Seen::default();
     let mut label_of: HashMap<u32, u16> = HashMap::new();
     let lab = |m: &HashMap<u32, u16>, run: u32| if run == 0 { 0 } else { m[&run] };
     for px in want {
         let at = format!(
             "K = {}, {what}: row {}, col {}, seed {}",
-            p.fsize, px.row, px.col, b.seed
+            p.fsize, px.row, px.col, seed
         );
-        let o = b
-            .outs
+        let o = outs
             .get(&(px.row, px.col))
             .unwrap_or_else(|| panic!("{at}: never left the front"));
         assert_eq!(o.o_ok != 0, px.ok, "{at}: ok");
@@ -384,19 +408,10 @@ fn every_case(k: usize) {
         let cut = rng.gen_range(1..p.rows * p.cols);
         let what = format!("{what}, reset mid-frame");
         frames.push(run_frame(&mut b, p, &f, *bubbles, Some(cut), &what));
-        for s in frames {
-            seen.starts += s.starts;
-            seen.rings += s.rings;
-            seen.holds += s.holds;
-            seen.hits += s.hits;
-        }
+        frames.into_iter().for_each(|s| seen.add(s));
     }
     eprintln!("K = {k}: {seen:?}");
-    // The frames reach every check.
-    assert!(
-        seen.starts > 100 && seen.rings > 5 && seen.holds > 100 && seen.hits > 1000,
-        "K = {k}: too little seen: {seen:?}"
-    );
+    assert!(seen.enough(), "K = {k}: too little seen: {seen:?}");
 }
 
 #[test]

@@ -29,6 +29,7 @@ mod close_order;
 mod closer;
 mod col_dist;
 mod col_front;
+mod col_in;
 mod col_slot_buf;
 mod col_start;
 mod col_window;

@@ -22,8 +22,10 @@
 //! column-start check (`FccColStart`: when a column may start), and the
 //! flushes' accumulators waiting for their finds (`FccFlushWait`); and the
 //! front (`FccColFront`: thresholds, row runs, window and distance tests
-//! wired, the part of the core a slot passes without a hold). The top is
-//! to come.
+//! wired, the part of the core a slot passes without a hold), its slot
+//! buffer with credits (`FccColSlotBuf`), and the input half they make
+//! with the input stage and the column-start check (`FccColIn`). The top
+//! is to come.
 
 pub mod fcc_acc_merge;
 pub mod fcc_acc_pixel;
@@ -38,6 +40,8 @@ pub mod fcc_col_dist_probe;
 pub mod fcc_col_edge;
 pub mod fcc_col_front;
 pub mod fcc_col_front_probe;
+pub mod fcc_col_in;
+pub mod fcc_col_in_probe;
 pub mod fcc_col_slot_buf;
 pub mod fcc_col_slot_buf_probe;
 pub mod fcc_col_start;
