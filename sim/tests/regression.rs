@@ -483,15 +483,26 @@ fn label_overflow_with_8_bit_labels() {
 /// number of labels: 16 x 256 leaves a full beat, 19 x 259, 18 x 257 and
 /// 17 x 259 leave 1, 2 and 3 of 4 labels (17 x 257 leaves 1 of 2). Labels
 /// run out in every build (11 bits), so unlabelled pixels reach every slot.
+/// Three tests, so that their builds run beside each other.
 #[test]
 fn one_and_two_labels_per_beat_and_odd_sizes() {
-    for (lpb, rows, cols, fsize) in [
-        (1u32, 16, 256, 3usize),
-        (2, 17, 257, 7),
-        (4, 19, 259, 9),
-        (4, 18, 257, 3),
-        (4, 17, 259, 5),
-    ] {
+    labels_per_beat_and_sizes(&[(1, 16, 256, 3), (2, 17, 257, 7)]);
+}
+
+#[test]
+fn four_labels_per_beat_odd_sizes_k9() {
+    labels_per_beat_and_sizes(&[(4, 19, 259, 9)]);
+}
+
+#[test]
+fn four_labels_per_beat_odd_sizes_k3_k5() {
+    labels_per_beat_and_sizes(&[(4, 18, 257, 3), (4, 17, 259, 5)]);
+}
+
+/// Each (labels per beat, rows, cols, K): the directed frames under gaps
+/// and back-pressure, then a random frame.
+fn labels_per_beat_and_sizes(configs: &[(u32, usize, usize, usize)]) {
+    for &(lpb, rows, cols, fsize) in configs {
         let p = FccParams {
             rows,
             cols,
@@ -569,7 +580,9 @@ fn bad_parameters_are_reported_not_panicked() {
 /// (32, 64 and 128 beams x 1024 columns) as run registers, ground left in:
 /// the hardest join load the core sees. K = 7, default thresholds, on the
 /// K_max = 11, 128 x 2048, B = 16 core of `run_size` and the virtual board
-/// (one Verilator model shared through the cache, not one per size).
+/// (one Verilator model shared through the cache, not a core built to each
+/// size: `run_size` runs the first frame of each at every K; this test
+/// every frame, with its cycles).
 #[test]
 fn real_ouster_frames_at_their_own_size() {
     use fcc_lidar::ouster::{read_capture, DecodeOptions, OusterMetadata, SAMPLE_CAPTURES};

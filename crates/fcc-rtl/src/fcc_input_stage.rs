@@ -8,8 +8,9 @@
 //! column-start check's `hold`): while `col_first` (the next slot is its
 //! column's first) and `col_hold` are high, neither a beat nor a padding
 //! slot is taken and `s_axis_tready` is low. `col_first` comes from
-//! registers; `col_hold` reaches the ready and the slot through one gate.
-//! The row-major order ignores `col_hold`.
+//! registers; `col_hold` reaches the ready and the slot through a gate
+//! each (an AND with `col_first`, then with the registered ready). The
+//! row-major order ignores `col_hold`.
 //!
 //! Each accepted beat (64-bit `s_axis_tdata`: x, y, z Q7.8 in bits 47:0,
 //! valid in bit 48) becomes a registered slot (`slot`, the coordinates
@@ -19,9 +20,10 @@
 //! `tlast`; either sets `err` for the frame. `in_done` is set by the frame's
 //! last slot and cleared when the next frame starts (`restart`).
 //!
-//! `s_axis_tready` is a register, high in the next cycle while the frame
-//! runs (`run`), has slots left to take and the credits leave `room` (or
-//! while a long frame's beats are dropped). The pipeline's reset `rst` is
+//! `s_axis_tready` comes from a register, high in the next cycle while the
+//! frame runs (`run`), has slots left to take and the credits leave `room`
+//! (or while a long frame's beats are dropped); in column order it is also
+//! low while a column's first slot is held. The pipeline's reset `rst` is
 //! one cycle behind `rst_next`: the ready goes low in the cycle before it,
 //! so a beat offered right after a short reset waits instead of being lost.
 

@@ -2,13 +2,15 @@
 //! the input stage in column order, the column-start check, the front and
 //! the slot buffer as the core wires them) alone under Verilator: frames
 //! sent as AXI4-Stream beats in column order with random gaps, the
-//! buffer's head taken at random, frames back to back, at K = 3 and 11.
+//! buffer's head taken at random, frames back to back, a reset in the
+//! middle of a frame (then the whole frame again), at K = 3 and 11.
 //! Every pixel must come out of the buffer once, as the front's bench
 //! checks it against the golden stream (its run, holds, ring check and
 //! joins with their labels); the input must stop while the buffer's
 //! credits are out and hold a column's first pixel while the column-start
 //! check says so (labels short, the previous column not settled), and go on
-//! when it is. A mismatch prints K, the case, the pixel, expected, got and
+//! when it is. The counts are given as the golden stream's (no open limit
+//! binds here yet: see docs/column-core.md, "The input half"). A mismatch prints K, the case, the pixel, expected, got and
 //! the seed.
 
 use std::collections::{HashMap, VecDeque};
@@ -17,7 +19,7 @@ use crate::col_front::{check, golden_pixels, FrOut, Seen};
 use crate::column;
 use column::run_params;
 
-use fcc_golden::Frame;
+use fcc_golden::{Frame, Stream};
 use fcc_params::FccParams;
 use fcc_rtl::{BenchBlock, RunLimits};
 use fcc_sim::core_form::thr_inputs;
@@ -170,6 +172,7 @@ fn run_frame(
     p: &FccParams,
     f: &Frame,
     (start, take): (Start, f64),
+    cut: Option<usize>,
     rng: &mut ChaCha8Rng,
     what: &str,
 ) -> Seen {
@@ -186,10 +189,37 @@ fn run_frame(
             })
         })
         .collect();
+    // The clusters open after each column's previous one (spec §9.1's
+    // count, the slot table's when the column is settled).
+    let mut opens = vec![0u16; p.cols];
+    let mut golden = Stream::new(p).expect("the golden stream");
+    let mut column = vec![None; p.rows];
+    for (c, open) in opens.iter_mut().enumerate().skip(1) {
+        for (r, v) in column.iter_mut().enumerate() {
+            *v = f.get(r, c - 1);
+        }
+        golden.push_column(&column).expect("a column");
+        *open = golden.open_clusters() as u16;
+    }
     let (mut next, mut restart, mut done) = (0usize, true, false);
     b.outs.clear();
     let mut cycles = 0;
+    let mut cut = cut;
     while b.outs.len() < p.pixels() {
+        if cut == Some(next) {
+            // A reset mid-frame (`rst_next` a cycle ahead of `rst`), then the
+            // whole frame again: nothing of the cut frame may come out.
+            for (rst_next, rst) in [(1, 0), (0, 1)] {
+                b.dut.step(&CiIn {
+                    rst_next,
+                    rst,
+                    ..CiIn::default()
+                });
+            }
+            (cut, next, restart, done) = (None, 0, true, false);
+            b.outs.clear();
+            b.taken.clear();
+        }
         let valid = next < beats.len() && rng.gen_bool(0.8);
         let settled = match start {
             Start::Fast => true,
@@ -214,8 +244,12 @@ fn run_frame(
             ring_on: lim.ring_on as u8,
             ring_f_max: lim.ring_f_max,
             ring_l_min: lim.ring_l_min,
-            n_o: 511,
-            slots_used: 0,
+            n_o: p.open_limit.unwrap_or(511) as u16,
+            slots_used: if next < beats.len() {
+                opens[next / p.rows]
+            } else {
+                0
+            },
             in_flight: 0,
             labels_free: match start {
                 Start::Fast => 0xFFFF,
@@ -340,9 +374,18 @@ fn every_case(k: usize) {
                 ..CiIn::default()
             });
         }
-        for (density, jump) in [(0.8, 0.05), (0.4, 0.1)] {
+        for (density, jump, cut) in [(0.8, 0.05, false), (0.4, 0.1, false), (0.7, 0.05, true)] {
             let f = column::random_frame(p.rows, p.cols, density, jump, true, &mut rng);
-            seen.add(run_frame(&mut b, p, &f, (*start, *take), &mut rng, what));
+            let cut = cut.then(|| rng.gen_range(1..p.pixels()));
+            seen.add(run_frame(
+                &mut b,
+                p,
+                &f,
+                (*start, *take),
+                cut,
+                &mut rng,
+                what,
+            ));
         }
         if matches!(start, Start::Settled(_)) {
             assert!(

@@ -1,9 +1,10 @@
 //! The column core's slot buffer `fcc_col_slot_buf` (behind
 //! `FccColSlotBufProbe`) alone under Verilator, against a model of its
-//! module documentation: the input takes a slot only while `room`
-//! (registered: fewer than `SLOT_CREDITS` credits out at the last edge),
-//! each slot reaches the buffer `FRONT_LATENCY + 2` cycles after it was
-//! taken (the front's delay), and the consumer takes the head at random,
+//! module documentation: the input takes a slot only in the cycle after
+//! `room` (registered: fewer than `SLOT_CREDITS` credits out at the last
+//! edge), as the input stage's registered ready does, and each slot
+//! reaches the buffer `FRONT_LATENCY + 1` cycles after it was taken (the
+//! stage's slot register and the front), and the consumer takes the head at random,
 //! in bursts, or every cycle. Every slot must leave in order with its
 //! fields, hits and labels; the buffer never holds more than `SLOT_BUF`;
 //! a slot waiting six cycles is at the head; with the consumer taking
@@ -140,18 +141,19 @@ fn run(k: usize, take: Take, offer: f64, resets: f64, cycles: usize, seed: u64) 
     let model = load_plain::<SbIn, SbOut>(BenchBlock::ColSlotBuf, &build).expect("slot buffer");
     let mut dut = PlainDut::new(model);
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
-    let delay = FRONT_LATENCY + 2;
+    let delay = FRONT_LATENCY + 1;
     // The front: slots taken, on their way to the buffer.
     let mut front: VecDeque<Option<Slot>> = VecDeque::from(vec![None; delay]);
     // In the buffer, with the cycle each was pushed.
     let mut queue: VecDeque<(Slot, usize)> = VecDeque::new();
-    let (mut credits, mut room) = (0usize, true);
+    let (mut credits, mut room, mut ready) = (0usize, true, false);
     let mut left = 0;
     let mut burst = false;
     let mut rst = true;
     for t in 0..cycles {
         let at = format!("K = {k}, {take:?}, cycle {t}, seed {seed}");
-        let slot = room && !rst && rng.gen_bool(offer);
+        // The stage's ready: `room` of the cycle before.
+        let slot = ready && !rst && rng.gen_bool(offer);
         let pushed = front.pop_front().unwrap();
         let taking = match take {
             Take::Random(p) => rng.gen_bool(p),
@@ -209,6 +211,7 @@ fn run(k: usize, take: Take, offer: f64, resets: f64, cycles: usize, seed: u64) 
                 queue.len()
             );
         }
+        ready = room && !rst;
         room = credits < SLOT_CREDITS;
         credits = credits + usize::from(slot) - usize::from(popped);
         front.push_back(slot.then(|| Slot::random(&mut rng, n)));
@@ -245,7 +248,7 @@ fn slots_leave_in_order_and_the_credits_keep_it_from_overflowing() {
 fn a_slot_a_cycle_while_the_consumer_takes() {
     let cycles = 4_000;
     let left = run(7, Take::Always, 1.0, 0.0, cycles, 7);
-    let through = cycles - (FRONT_LATENCY + 2) - 6;
+    let through = cycles - (FRONT_LATENCY + 1) - 8;
     assert!(
         left >= through,
         "{left} slots left in {cycles} cycles, fewer than {through}"

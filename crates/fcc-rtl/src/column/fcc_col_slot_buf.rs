@@ -16,7 +16,8 @@
 //! cycle while `take` is high.
 //!
 //! The size: a slot taken at the input is at the buffer's head
-//! `FRONT_LATENCY + 6` cycles later at the soonest, and the input starts
+//! `FRONT_LATENCY + 5` cycles later at the soonest (the stage's register,
+//! the front, the buffer's four), and the input starts
 //! again two cycles after a credit comes back, so with more credits than
 //! that round trip slots flow one a cycle while the consumer takes them,
 //! and after a hold the slots buffered cover the input's restart.
@@ -41,6 +42,9 @@ pub const SLOT_CREDITS: usize = SLOT_BUF - 4;
 // A credit's round trip fits: the input stage's two registers, the
 // front, the buffer's four cycles to its head, `room` and the ready.
 const _: () = assert!(SLOT_CREDITS >= FRONT_LATENCY + 8);
+// Two slots can enter after the credits run out (`room` and the ready it
+// gates are registered): the buffer holds them.
+const _: () = assert!(SLOT_CREDITS + 2 <= SLOT_BUF);
 
 type Lane<T> = FccStreamFifo<T, SLOT_BUF_BITS, { SLOT_BUF_BITS + 1 }>;
 
