@@ -9,9 +9,10 @@
 //! joins with their labels); the input must stop while the buffer's
 //! credits are out and hold a column's first pixel while the column-start
 //! check says so (labels short, the previous column not settled), and go on
-//! when it is. The counts are given as the golden stream's (no open limit
-//! binds here yet: see docs/column-core.md, "The input half"). A mismatch prints K, the case, the pixel, expected, got and
-//! the seed.
+//! when it is. The counts are given as the golden stream's; in one case an
+//! open limit binds, each column settled, and the runs the golden stream
+//! leaves unlabelled must be left so. A mismatch prints K, the case, the
+//! pixel, expected, got and the seed.
 
 use std::collections::{HashMap, VecDeque};
 
@@ -319,7 +320,17 @@ fn every_case(k: usize) {
         fsize: k,
         ..FccParams::default()
     };
-    let cases: [(&str, FccParams, Start, f64); 3] = [
+    let cases: [(&str, FccParams, Start, f64); 4] = [
+        (
+            "an open limit that binds, each column settled",
+            FccParams {
+                fsize: k,
+                open_limit: Some(12),
+                ..run_params(16, 40)
+            },
+            Start::Settled(0.2),
+            0.8,
+        ),
         (
             "fast starts, the head taken often",
             FccParams {
@@ -355,6 +366,7 @@ fn every_case(k: usize) {
     ];
     let mut seen = Seen::default();
     for (n, (what, p, start, take)) in cases.iter().enumerate() {
+        let mut case_seen = Seen::default();
         let seed = 0xc011_0000 + (k * 16 + n) as u64;
         let model = load_plain::<CiIn, CiOut>(BenchBlock::ColIn, &build).expect("input half");
         let mut b = Bench {
@@ -377,7 +389,7 @@ fn every_case(k: usize) {
         for (density, jump, cut) in [(0.8, 0.05, false), (0.4, 0.1, false), (0.7, 0.05, true)] {
             let f = column::random_frame(p.rows, p.cols, density, jump, true, &mut rng);
             let cut = cut.then(|| rng.gen_range(1..p.pixels()));
-            seen.add(run_frame(
+            case_seen.add(run_frame(
                 &mut b,
                 p,
                 &f,
