@@ -60,6 +60,9 @@ pub enum BenchBlock {
     /// check, front, slot buffer) behind the scalar ports of
     /// `FccColInProbe`.
     ColIn,
+    /// The column core's input half and slot table half (`FccColIn`,
+    /// `FccColTable`) wired, behind the scalar ports of `FccColTableProbe`.
+    ColTable,
     /// The column core's record accumulator (`FccAccPixel`, `FccAccMerge`)
     /// over the four registers of `FccAccProbe`.
     Acc,
@@ -124,7 +127,7 @@ impl Row {
 
 impl BenchBlock {
     /// Every block with a bench.
-    pub const ALL: [BenchBlock; 33] = [
+    pub const ALL: [BenchBlock; 34] = [
         BenchBlock::Regs,
         BenchBlock::AxilAdapter,
         BenchBlock::MergeTable,
@@ -144,6 +147,7 @@ impl BenchBlock {
         BenchBlock::ColFront,
         BenchBlock::ColSlotBuf,
         BenchBlock::ColIn,
+        BenchBlock::ColTable,
         BenchBlock::Acc,
         BenchBlock::RecordOut,
         BenchBlock::LabelPool,
@@ -302,6 +306,17 @@ impl BenchBlock {
                     )
                 },
                 waivers: lint::col_in_waivers,
+            },
+            BenchBlock::ColTable => Row {
+                name: "fcc_col_table",
+                generate: |p| {
+                    gen(
+                        p,
+                        crate::column::fcc_col_table_probe::FccColTableProbe::new(p),
+                        "fcc_col_table",
+                    )
+                },
+                waivers: lint::col_table_waivers,
             },
             BenchBlock::Acc => Row {
                 name: "fcc_acc",

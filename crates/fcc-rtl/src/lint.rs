@@ -491,3 +491,23 @@ pub fn sort_net_waivers(p: &FccParams) -> String {
     s.push_str(&enum_register_waivers("fcc_sort_net.v"));
     s
 }
+
+/// The waivers of the column core's two halves' probe `name`: its blocks'
+/// own, as their probes have them (the input half's, the representative
+/// rows', the union-find queue's, the run accumulators' and the flushes'
+/// wait's), each without the file's header.
+pub fn col_table_waivers(p: &FccParams, name: &str) -> String {
+    let base = block_waivers(p, name);
+    let mut s = enum_block_waivers(p, name);
+    for part in [
+        col_in_waivers,
+        rep_joins_waivers,
+        set_queue_waivers,
+        run_acc_waivers,
+        flush_wait_waivers,
+    ] {
+        let w = part(p, name);
+        s.push_str(w.strip_prefix(base.as_str()).unwrap_or(&w));
+    }
+    s
+}

@@ -166,6 +166,21 @@ struct Bench {
     seed: u64,
 }
 
+/// The frame's pixel beats in column order.
+pub fn beats(p: &FccParams, f: &Frame) -> Vec<u64> {
+    (0..p.pixels())
+        .map(|k| {
+            let (r, c) = (k % p.rows, k / p.rows);
+            f.get(r, c).map_or(0, |q| {
+                u64::from(q[0] as u16)
+                    | u64::from(q[1] as u16) << 16
+                    | u64::from(q[2] as u16) << 32
+                    | 1 << 48
+            })
+        })
+        .collect()
+}
+
 /// One frame: its beats sent with gaps, the head taken at random; the
 /// frame's outputs checked once all have left.
 fn run_frame(
@@ -179,17 +194,7 @@ fn run_frame(
 ) -> Seen {
     let lim = RunLimits::new(p);
     let thr = thr_inputs(p);
-    let beats: Vec<u64> = (0..p.pixels())
-        .map(|k| {
-            let (r, c) = (k % p.rows, k / p.rows);
-            f.get(r, c).map_or(0, |q| {
-                u64::from(q[0] as u16)
-                    | u64::from(q[1] as u16) << 16
-                    | u64::from(q[2] as u16) << 32
-                    | 1 << 48
-            })
-        })
-        .collect();
+    let beats = beats(p, f);
     // The clusters open after each column's previous one (spec §9.1's
     // count, the slot table's when the column is settled).
     let mut opens = vec![0u16; p.cols];
@@ -399,6 +404,15 @@ fn every_case(k: usize) {
                 what,
             ));
         }
+        if p.open_limit.is_some() {
+            // The limit binds: runs are left unlabelled by it.
+            assert!(
+                case_seen.unlabelled > 20,
+                "K = {k}, {what}: only {} points left unlabelled",
+                case_seen.unlabelled
+            );
+        }
+        seen.add(case_seen);
         if matches!(start, Start::Settled(_)) {
             assert!(
                 b.held > 100,

@@ -32,6 +32,7 @@ mod col_front;
 mod col_in;
 mod col_slot_buf;
 mod col_start;
+mod col_table;
 mod col_window;
 mod flush_wait;
 mod label_lists;

@@ -50,6 +50,7 @@ c_struct! {
         pub ready: u8,
         pub f_valid: u8,
         pub f_label: u16,
+        pub f_end: u8,
         pub done: u8,
         pub bad: u8,
         pub o_points: u32,
@@ -85,6 +86,8 @@ c_struct! {
 struct Flush {
     label: u16,
     acc: CoreAcc,
+    /// The frame end's flush, not a pixel's.
+    end: bool,
 }
 
 impl Flush {
@@ -93,6 +96,7 @@ impl Flush {
         Flush {
             label: o.f_label,
             acc,
+            end: o.f_end != 0,
         }
     }
 }
@@ -123,6 +127,7 @@ fn expected(
     let flush = |run: u32, a: &Acc| Flush {
         label: run as u16,
         acc: CoreAcc::of(a),
+        end: false,
     };
     for (n, x) in px.iter().enumerate() {
         let r = x.row;
@@ -151,7 +156,10 @@ fn expected(
     }
     for o in open.iter_mut() {
         if let Some((run, a)) = o.take() {
-            out.push(flush(run, &a));
+            out.push(Flush {
+                end: true,
+                ..flush(run, &a)
+            });
             from.push(None);
             why.end += 1;
         }

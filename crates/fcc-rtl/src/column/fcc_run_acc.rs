@@ -83,6 +83,8 @@ pub struct RunWrite {
     pub flush: Bit,
     pub flush_old: Bit,
     pub flush_label: Bits<16>,
+    /// The flush is the frame end's.
+    pub end: Bit,
     pub done: Bit,
 }
 
@@ -102,6 +104,9 @@ pub struct FccRunAcc {
     pub f_valid: Signal<Out, Bit>,
     pub f_label: Signal<Out, Bits<16>>,
     pub f_acc: Signal<Out, AccWord>,
+    /// The flush is the frame end's (a row's run still open after the
+    /// frame's last pixel), not a pixel's.
+    pub f_end: Signal<Out, Bit>,
     /// The frame-end flush is complete (one cycle, after its last flush).
     pub done: Signal<Out, Bit>,
     /// Sticky until reset: a pixel continued a run its row does not have
@@ -153,6 +158,7 @@ pub struct FccRunAcc {
     f_valid_q: DFF<Bit>,
     f_label_q: DFF<Bits<16>>,
     f_acc_q: DFF<AccWord>,
+    f_end_q: DFF<Bit>,
     done_q: DFF<Bit>,
     bad_q: DFF<Bit>,
     row_id: Vec<Constant<Bits<7>>>,
@@ -179,6 +185,7 @@ impl FccRunAcc {
             f_valid: Default::default(),
             f_label: Default::default(),
             f_acc: Default::default(),
+            f_end: Default::default(),
             done: Default::default(),
             bad: Default::default(),
             pixel: Default::default(),
@@ -211,6 +218,7 @@ impl FccRunAcc {
             f_valid_q: Default::default(),
             f_label_q: Default::default(),
             f_acc_q: Default::default(),
+            f_end_q: Default::default(),
             done_q: Default::default(),
             bad_q: Default::default(),
             row_id: (0..rows).map(|r| kb(r as u64)).collect(),
@@ -229,7 +237,7 @@ impl Logic for FccRunAcc {
     fn update(&mut self) {
         dff_setup!(
             self, clk, busy, drain_row, live_row, old_live_q, e_wr, e_a, e_b, e_old, w_wr, w_acc,
-            w_old, f_valid_q, f_label_q, f_acc_q, done_q, bad_q
+            w_old, f_valid_q, f_label_q, f_acc_q, f_end_q, done_q, bad_q
         );
         self.ready.next = !self.busy.q.val();
         // IN: the pixel's step, and its accumulator's inputs.
@@ -349,6 +357,7 @@ impl Logic for FccRunAcc {
             self.wr.next.live = false;
             self.wr.next.flush = self.old_live.val();
         }
+        self.wr.next.end = self.dstep.val().drain;
         self.wr.next.done = self.dstep.val().drain & (self.dstep.val().row == self.last_row.val());
         self.e_wr.d.next = self.wr.val();
         self.e_a.d.next = self.empty.val();
@@ -388,10 +397,12 @@ impl Logic for FccRunAcc {
         if self.w_wr.q.val().flush_old {
             self.f_acc_q.d.next = self.w_old.q.val();
         }
+        self.f_end_q.d.next = self.w_wr.q.val().end;
         self.done_q.d.next = self.w_wr.q.val().done;
         self.f_valid.next = self.f_valid_q.q.val();
         self.f_label.next = self.f_label_q.q.val();
         self.f_acc.next = self.f_acc_q.q.val();
+        self.f_end.next = self.f_end_q.q.val();
         self.done.next = self.done_q.q.val();
         // A pixel that continues a run must find it open in its row.
         self.bad_q.d.next = self.bad_q.q.val();

@@ -30,6 +30,7 @@ pub struct FccRunAccProbe {
     pub ready: Signal<Out, Bit>,
     pub f_valid: Signal<Out, Bit>,
     pub f_label: Signal<Out, Bits<16>>,
+    pub f_end: Signal<Out, Bit>,
     pub done: Signal<Out, Bit>,
     pub bad: Signal<Out, Bit>,
     pub o_points: Signal<Out, Bits<20>>,
@@ -84,6 +85,7 @@ impl FccRunAccProbe {
             ready: Default::default(),
             f_valid: Default::default(),
             f_label: Default::default(),
+            f_end: Default::default(),
             done: Default::default(),
             bad: Default::default(),
             o_points: Default::default(),
@@ -141,6 +143,7 @@ impl Logic for FccRunAccProbe {
         self.ready.next = self.acc.ready.val();
         self.f_valid.next = self.acc.f_valid.val();
         self.f_label.next = self.acc.f_label.val();
+        self.f_end.next = self.acc.f_end.val();
         self.done.next = self.acc.done.val();
         self.bad.next = self.acc.bad.val();
         self.o_points.next = self.acc.f_acc.val().points;

@@ -1,0 +1,101 @@
+//! `FccColEnd`: the union-find queue's input and the frame end's ops
+//! (docs/column-core.md, item 8, "The slot table half"). While pixels
+//! come, the queue takes the packer's entries (`pk_*`). After the frame's
+//! last column's marker has left the packer (`tail`), `FccRunAcc` may
+//! flush the rows' runs still open (`drain_ok`); each of those flushes
+//! (`f_end`) becomes a find of its run's label, in the flushes' order, so
+//! that the finds meet their accumulators in `FccFlushWait`; after the
+//! last (`done`) comes the frame end's marker, column `C`. The packer's
+//! entry goes first, then a frame-end find, then the marker, which waits
+//! while either is there.
+
+use rust_hdl::prelude::*;
+
+use super::fcc_set_queue::SetQBundle;
+use crate::types::kb;
+
+#[derive(LogicBlock)]
+pub struct FccColEnd {
+    pub clk: Signal<In, Clock>,
+    pub rst: Signal<In, Bit>,
+    /// The frame's last column, `C - 1` (constant while a frame runs).
+    pub last_col: Signal<In, Bits<12>>,
+    /// The packer's entry.
+    pub pk_valid: Signal<In, Bit>,
+    pub pk: Signal<In, SetQBundle>,
+    /// `FccRunAcc`'s flushes (`f_end`: the frame end's) and `done`.
+    pub f_valid: Signal<In, Bit>,
+    pub f_end: Signal<In, Bit>,
+    pub f_label: Signal<In, Bits<16>>,
+    pub done: Signal<In, Bit>,
+    /// The frame-end flush may read rows.
+    pub drain_ok: Signal<Out, Bit>,
+    /// The queue's entry.
+    pub e_valid: Signal<Out, Bit>,
+    pub e: Signal<Out, SetQBundle>,
+    tail: DFF<Bit>,
+    owed: DFF<Bit>,
+    end_find: Signal<Local, Bit>,
+    none: Constant<SetQBundle>,
+    one: Constant<Bits<12>>,
+}
+
+impl Default for FccColEnd {
+    fn default() -> Self {
+        Self {
+            clk: Default::default(),
+            rst: Default::default(),
+            last_col: Default::default(),
+            pk_valid: Default::default(),
+            pk: Default::default(),
+            f_valid: Default::default(),
+            f_end: Default::default(),
+            f_label: Default::default(),
+            done: Default::default(),
+            drain_ok: Default::default(),
+            e_valid: Default::default(),
+            e: Default::default(),
+            tail: Default::default(),
+            owed: Default::default(),
+            end_find: Default::default(),
+            none: Constant::new(SetQBundle::default()),
+            one: kb(1),
+        }
+    }
+}
+
+impl Logic for FccColEnd {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clk, tail, owed);
+        self.tail.d.next = self.tail.q.val();
+        if self.pk_valid.val() & self.pk.val().mark & (self.pk.val().col == self.last_col.val()) {
+            self.tail.d.next = true;
+        }
+        if self.done.val() {
+            self.tail.d.next = false;
+        }
+        self.drain_ok.next = self.tail.q.val();
+        self.end_find.next = self.f_valid.val() & self.f_end.val();
+        // The marker is owed from the cycle after `done` until it goes.
+        self.owed.d.next =
+            self.done.val() | (self.owed.q.val() & (self.pk_valid.val() | self.end_find.val()));
+        self.e_valid.next = self.pk_valid.val() | self.end_find.val() | self.owed.q.val();
+        self.e.next = self.pk.val();
+        if !self.pk_valid.val() {
+            self.e.next = self.none.val();
+            if self.end_find.val() {
+                self.e.next.find = true;
+                self.e.next.f = self.f_label.val();
+                self.e.next.col = self.last_col.val();
+            } else if self.owed.q.val() {
+                self.e.next.mark = true;
+                self.e.next.col = self.last_col.val() + self.one.val();
+            }
+        }
+        if self.rst.val() {
+            self.tail.d.next = false;
+            self.owed.d.next = false;
+        }
+    }
+}

@@ -1,0 +1,534 @@
+//! The column core's two halves before the record store, `fcc_col_table`
+//! (behind `FccColTableProbe`: the input half `FccColIn` and the slot
+//! table half `FccColTable` as the core wires them) under Verilator:
+//! frames sent as AXI4-Stream beats in column order with random gaps, the
+//! union-find queue's events taken at random (a find with its run's
+//! accumulator), frames back to back, a reset in the middle of a frame
+//! (then the whole frame again), at K = 3 and 11.
+//!
+//! The bench is the record store: a record per slot, made by a make, two
+//! merged by a join that merged (the slot gone back to the slot pool), a
+//! run's accumulator added by its find. At each column's marker, every
+//! cluster the golden stream closes at that column must be one record
+//! holding exactly the labels of its runs and exactly their golden
+//! accumulators (`fcc_golden::Acc`, in the core's form), one a run; it is
+//! closed, its slot and labels back to the pools. After the frame end's
+//! marker (column `C`) no record is left. So the halves' runs, joins,
+//! flushes and frame end make the golden clusters. A mismatch prints K,
+//! the case, the column, expected, got and the seed.
+
+use std::collections::{HashMap, VecDeque};
+
+use crate::col_in::beats;
+use crate::column;
+use column::{random_frame, run_params};
+
+use fcc_golden::{Acc, Frame};
+use fcc_params::FccParams;
+use fcc_rtl::{BenchBlock, RunLimits};
+use fcc_sim::core_form::{thr_inputs, CoreAcc};
+use fcc_sim::{c_struct, core_acc_out, load_plain, PlainDut};
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+
+c_struct! {
+    /// Inputs of one cycle, named as the ports of `FccColTableProbe`.
+    pub struct TbIn {
+        pub s_axis_tdata: u64,
+        pub ch_t: u64,
+        pub cv_t: u64,
+        pub sh: u32,
+        pub sv: u32,
+        pub run_cols: u16,
+        pub reach: u16,
+        pub ring_f_max: u16,
+        pub ring_l_min: u16,
+        pub n_o: u16,
+        pub slots_used: u16,
+        pub in_flight: u16,
+        pub labels_free: u16,
+        pub free_label: u16,
+        pub last_col: u16,
+        pub half: u16,
+        pub slot: u16,
+        pub rst: u8,
+        pub rst_next: u8,
+        pub s_axis_tvalid: u8,
+        pub s_axis_tlast: u8,
+        pub run: u8,
+        pub restart: u8,
+        pub run_next: u8,
+        pub run_rows: u8,
+        pub last_row: u8,
+        pub run_k: u8,
+        pub ring_on: u8,
+        pub settled: u8,
+        pub free_ok: u8,
+        pub slot_ok: u8,
+        pub ev_ready: u8,
+    }
+}
+
+c_struct! {
+    /// Outputs during one cycle.
+    pub struct TbOut {
+        pub o_sa: u64,
+        pub o_sb: u64,
+        pub o_sc: u64,
+        pub o_sxx: u64,
+        pub o_syy: u64,
+        pub o_sab: u64,
+        pub o_points: u32,
+        pub o_r2_min: u32,
+        pub o_r2_max: u32,
+        pub ev_label: u16,
+        pub ev_slot: u16,
+        pub ev_other: u16,
+        pub ev_col: u16,
+        pub o_min_col: u16,
+        pub o_max_col: u16,
+        pub o_lo_max: u16,
+        pub o_hi_min: u16,
+        pub o_min_x: u16,
+        pub o_min_y: u16,
+        pub o_min_z: u16,
+        pub o_max_x: u16,
+        pub o_max_y: u16,
+        pub o_max_z: u16,
+        pub s_axis_tready: u8,
+        pub in_done: u8,
+        pub err: u8,
+        pub label_take: u8,
+        pub idle: u8,
+        pub idle_next: u8,
+        pub sets_idle: u8,
+        pub slot_take: u8,
+        pub ev_valid: u8,
+        pub ev_make: u8,
+        pub ev_join: u8,
+        pub ev_mark: u8,
+        pub ev_ring: u8,
+        pub ev_merged: u8,
+        pub ev_row: u8,
+        pub acc_valid: u8,
+        pub miss: u8,
+        pub bad: u8,
+        pub o_lo_has: u8,
+        pub o_hi_has: u8,
+        pub o_first_row: u8,
+        pub o_last_row: u8,
+        pub o_seam: u8,
+    }
+}
+
+/// Labels the bench's pool gives out (reused once their clusters close).
+const LABELS: u16 = 2047;
+/// Slots of the record store (`FccLabelPool` at 9 bits: 1 to 511).
+const SLOTS: u16 = 511;
+
+/// A record: the labels of its runs, the accumulators of its runs' flushes.
+#[derive(Default)]
+struct Rec {
+    labels: Vec<u16>,
+    flushes: Vec<CoreAcc>,
+}
+
+/// What the frames saw.
+#[derive(Default, Debug)]
+struct Seen {
+    makes: usize,
+    finds: usize,
+    merges: usize,
+    closed: usize,
+    /// Pixel slots sent, and the cycles they took.
+    slots: usize,
+    cycles: usize,
+}
+
+struct Bench {
+    dut: PlainDut<TbIn, TbOut>,
+    recs: HashMap<u16, Rec>,
+    labels: VecDeque<u16>,
+    slots: VecDeque<u16>,
+    taken: usize,
+    makes: usize,
+    marks: usize,
+    run_label: HashMap<u32, u16>,
+    seed: u64,
+}
+
+impl Bench {
+    /// The pools full, no record: as after a reset.
+    fn clear(&mut self) {
+        self.recs.clear();
+        self.labels = (1..=LABELS).collect();
+        self.slots = (1..=SLOTS).collect();
+        (self.taken, self.makes, self.marks) = (0, 0, 0);
+        self.run_label.clear();
+    }
+
+    /// A reset (`rst_next` a cycle ahead of `rst`) with the frame's run
+    /// parameters: the representative rows' feed takes its rows then.
+    fn reset(&mut self, p: &FccParams, steps: &[(u8, u8)]) {
+        for &(rst_next, rst) in steps {
+            self.dut.step(&TbIn {
+                rst_next,
+                rst,
+                ..params_in(p)
+            });
+        }
+        self.clear();
+    }
+}
+
+/// A cycle's inputs with nothing offered: the frame's run parameters.
+fn params_in(p: &FccParams) -> TbIn {
+    let lim = RunLimits::new(p);
+    let thr = thr_inputs(p);
+    TbIn {
+        run: 1,
+        run_next: 1,
+        run_rows: p.rows as u8,
+        run_cols: p.cols as u16,
+        last_row: (p.rows - 1) as u8,
+        last_col: (p.cols - 1) as u16,
+        half: (p.cols / 2) as u16,
+        run_k: p.fsize as u8,
+        ch_t: thr.ch_t,
+        cv_t: thr.cv_t,
+        sh: thr.sh,
+        sv: thr.sv,
+        reach: lim.reach,
+        ring_on: lim.ring_on as u8,
+        ring_f_max: lim.ring_f_max,
+        ring_l_min: lim.ring_l_min,
+        n_o: 511,
+        ..TbIn::default()
+    }
+}
+
+/// Each golden run's accumulator, in the core's form.
+fn run_accs(p: &FccParams, f: &Frame, runs: &[u32]) -> HashMap<u32, CoreAcc> {
+    let half = (p.cols / 2) as u32;
+    let mut acc: HashMap<u32, Acc> = HashMap::new();
+    for c in 0..p.cols {
+        for r in 0..p.rows {
+            let run = runs[r * p.cols + c];
+            if run != 0 {
+                let q = f.get(r, c).expect("a labelled pixel has a point");
+                acc.entry(run)
+                    .or_default()
+                    .add_in_scan(r as u32, c as u32, q, half);
+            }
+        }
+    }
+    acc.iter().map(|(&r, a)| (r, CoreAcc::of(a))).collect()
+}
+
+/// Sorted by their text, to compare as multisets.
+fn sorted(mut v: Vec<CoreAcc>) -> Vec<CoreAcc> {
+    v.sort_by_cached_key(|a| format!("{a:?}"));
+    v
+}
+
+/// One frame through the halves; its clusters checked at their markers.
+fn run_frame(
+    b: &mut Bench,
+    p: &FccParams,
+    f: &Frame,
+    ready: f64,
+    cut: Option<usize>,
+    rng: &mut ChaCha8Rng,
+    what: &str,
+) -> Seen {
+    let beats = beats(p, f);
+    let column::Closing { runs, at } = column::closing(p, f);
+    let accs = run_accs(p, f, &runs);
+    let mut seen = Seen {
+        slots: p.pixels(),
+        ..Seen::default()
+    };
+    let (mut next, mut restart, mut cut) = (0usize, true, cut);
+    let mut cycles = 0usize;
+    // This frame's makes and finds (a run flushes once).
+    let (mut made, mut found) = (0usize, 0usize);
+    let seed = b.seed;
+    let at_ = |c: usize| format!("K = {}, {what}: column {c}, seed {seed}", p.fsize);
+    while b.marks <= p.cols {
+        if cut == Some(next) {
+            // A reset mid-frame, then the whole frame again.
+            b.reset(p, &[(1, 0), (0, 1)]);
+            (cut, next, restart) = (None, 0, true);
+            (made, found) = (0, 0);
+        }
+        let valid = next < beats.len() && rng.gen_bool(0.8);
+        let in_flight = b.taken - b.makes;
+        let i = TbIn {
+            s_axis_tdata: if valid { beats[next] } else { 0 },
+            s_axis_tvalid: valid as u8,
+            s_axis_tlast: (valid && next + 1 == beats.len()) as u8,
+            restart: restart as u8,
+            slots_used: b.recs.len() as u16,
+            in_flight: in_flight as u16,
+            labels_free: b.labels.len() as u16,
+            settled: (in_flight == 0 && b.marks >= next.min(beats.len() - 1) / p.rows) as u8,
+            free_ok: !b.labels.is_empty() as u8,
+            free_label: b.labels.front().copied().unwrap_or(0),
+            slot_ok: !b.slots.is_empty() as u8,
+            slot: b.slots.front().copied().unwrap_or(0),
+            ev_ready: rng.gen_bool(ready) as u8,
+            ..params_in(p)
+        };
+        restart = false;
+        let o = b.dut.step(&i);
+        assert_eq!(o.err, 0, "{}: a frame error", at_(next / p.rows));
+        assert_eq!(o.bad, 0, "{}: bad", at_(next / p.rows));
+        assert_eq!(o.miss, 0, "{}: a label not in its row", at_(next / p.rows));
+        if o.label_take != 0 {
+            b.labels.pop_front().expect("a label given");
+            b.taken += 1;
+        }
+        let made_slot = (o.slot_take != 0).then(|| b.slots.pop_front().expect("a slot given"));
+        if valid && o.s_axis_tready != 0 {
+            next += 1;
+        }
+        let find = o.ev_make == 0 && o.ev_join == 0 && o.ev_mark == 0;
+        if o.ev_valid != 0 && i.ev_ready != 0 && (!find || o.acc_valid != 0) {
+            let c = usize::from(o.ev_col);
+            if o.ev_make != 0 {
+                let (r, c) = (usize::from(o.ev_row), c);
+                let run = runs[r * p.cols + c];
+                assert_ne!(run, 0, "{}, row {r}: a make where no run is", at_(c));
+                assert!(
+                    !b.recs.contains_key(&o.ev_slot),
+                    "{}: a make into slot {} in use",
+                    at_(c),
+                    o.ev_slot
+                );
+                b.recs.insert(
+                    o.ev_slot,
+                    Rec {
+                        labels: vec![o.ev_label],
+                        flushes: Vec::new(),
+                    },
+                );
+                assert!(
+                    b.run_label.insert(run, o.ev_label).is_none(),
+                    "{}, row {r}: run {run} made twice",
+                    at_(c)
+                );
+                b.makes += 1;
+                made += 1;
+                seen.makes += 1;
+            } else if o.ev_join != 0 {
+                if o.ev_merged != 0 {
+                    let gone = b.recs.remove(&o.ev_other).unwrap_or_else(|| {
+                        panic!("{}: slot {} merged away, not open", at_(c), o.ev_other)
+                    });
+                    let keep = b
+                        .recs
+                        .get_mut(&o.ev_slot)
+                        .unwrap_or_else(|| panic!("{}: slot {} kept, not open", at_(c), o.ev_slot));
+                    keep.labels.extend(gone.labels);
+                    keep.flushes.extend(gone.flushes);
+                    b.slots.push_back(o.ev_other);
+                    seen.merges += 1;
+                }
+            } else if o.ev_mark != 0 {
+                assert_eq!(
+                    c, b.marks,
+                    "K = {}, {what}: markers out of order, seed {}",
+                    p.fsize, b.seed
+                );
+                for rs in &at[c] {
+                    let mut want: Vec<u16> = rs
+                        .iter()
+                        .map(|r| {
+                            *b.run_label
+                                .get(r)
+                                .unwrap_or_else(|| panic!("{}: run {r} never made", at_(c)))
+                        })
+                        .collect();
+                    want.sort_unstable();
+                    let slot = *b
+                        .recs
+                        .iter()
+                        .find(|(_, rec)| rec.labels.contains(&want[0]))
+                        .unwrap_or_else(|| {
+                            panic!("{}: label {} in no open record", at_(c), want[0])
+                        })
+                        .0;
+                    let rec = b.recs.remove(&slot).expect("found");
+                    let mut got = rec.labels.clone();
+                    got.sort_unstable();
+                    assert_eq!(
+                        got, want,
+                        "{}: the record's labels (left) against the golden cluster's runs' (right, runs {rs:?})",
+                        at_(c)
+                    );
+                    let want_acc = sorted(rs.iter().map(|r| accs[r]).collect());
+                    assert_eq!(
+                        sorted(rec.flushes),
+                        want_acc,
+                        "{}: the record's flushes (left) against its runs' golden accumulators (right, runs {rs:?})",
+                        at_(c)
+                    );
+                    b.slots.push_back(slot);
+                    b.labels.extend(got);
+                    for r in rs {
+                        b.run_label.remove(r);
+                    }
+                    seen.closed += 1;
+                }
+                b.marks += 1;
+            } else {
+                let acc = core_acc_out!(o);
+                b.recs
+                    .get_mut(&o.ev_slot)
+                    .unwrap_or_else(|| panic!("{}: a find of slot {}, not open", at_(c), o.ev_slot))
+                    .flushes
+                    .push(acc);
+                found += 1;
+                seen.finds += 1;
+            }
+        }
+        if let Some(s) = made_slot {
+            // The slot taken is the one the next make names (checked there
+            // as not in use); it is not in the pool any more.
+            assert!(
+                !b.slots.contains(&s),
+                "{}: slot {s} twice in the pool",
+                at_(next / p.rows)
+            );
+        }
+        cycles += 1;
+        assert!(
+            cycles < 20 * p.pixels() + 2000,
+            "{}: {} of {} markers out after {cycles} cycles ({next} beats in)",
+            at_(next / p.rows),
+            b.marks,
+            p.cols + 1
+        );
+    }
+    assert!(
+        b.recs.is_empty(),
+        "K = {}, {what}: {} records open after the frame end, seed {}",
+        p.fsize,
+        b.recs.len(),
+        b.seed
+    );
+    assert_eq!(
+        found,
+        made,
+        "K = {}, {what}: finds (left) against runs made (right), seed {seed}",
+        p.fsize
+    );
+    // Nothing left in the halves.
+    let mut quiet = 0;
+    while quiet < 40 {
+        let o = b.dut.step(&TbIn {
+            ev_ready: 1,
+            ..params_in(p)
+        });
+        assert_eq!(
+            o.ev_valid, 0,
+            "K = {}, {what}: an event after the frame end",
+            p.fsize
+        );
+        quiet += 1;
+        if quiet == 40 {
+            assert_eq!(
+                o.sets_idle, 1,
+                "K = {}, {what}: not idle after the frame",
+                p.fsize
+            );
+        }
+    }
+    b.marks = 0;
+    b.run_label.clear();
+    seen.cycles = cycles;
+    seen
+}
+
+fn every_case(k: usize) {
+    let build = FccParams {
+        fsize: k,
+        ..FccParams::default()
+    };
+    let cases: [(&str, FccParams, f64); 3] = [
+        (
+            "the fewest rows, events taken often",
+            FccParams {
+                fsize: k,
+                // `FccRepJoins` takes frames of `max(16, K + 8)` rows.
+                ..run_params((k + 8).max(16), 48)
+            },
+            0.9,
+        ),
+        (
+            "bridge 2, ring reach 6, events taken rarely",
+            FccParams {
+                fsize: k,
+                bridge: Some(2),
+                ring_reach: Some(6),
+                ..run_params(20, 40)
+            },
+            0.3,
+        ),
+        (
+            "range-adaptive, events taken every cycle",
+            FccParams {
+                fsize: k,
+                th_h: 0.1,
+                th_h_slope: 0.05,
+                th_v_slope: 0.03,
+                ..run_params(24, 36)
+            },
+            1.0,
+        ),
+    ];
+    let model = load_plain::<TbIn, TbOut>(BenchBlock::ColTable, &build).expect("the two halves");
+    let mut all = Seen::default();
+    for (n, (what, p, ready)) in cases.iter().enumerate() {
+        let seed = 0xc07a_0000 + (k * 16 + n) as u64;
+        let mut b = Bench {
+            dut: PlainDut::new(model.clone()),
+            recs: HashMap::new(),
+            labels: VecDeque::new(),
+            slots: VecDeque::new(),
+            taken: 0,
+            makes: 0,
+            marks: 0,
+            run_label: HashMap::new(),
+            seed,
+        };
+        b.reset(p, &[(1, 0), (1, 1), (0, 1), (0, 0)]);
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        for (density, jump, cut) in [(0.8, 0.05, false), (0.5, 0.1, false), (0.7, 0.05, true)] {
+            let f = random_frame(p.rows, p.cols, density, jump, true, &mut rng);
+            let cut = cut.then(|| rng.gen_range(1..p.pixels()));
+            let s = run_frame(&mut b, p, &f, *ready, cut, &mut rng, what);
+            all.makes += s.makes;
+            all.finds += s.finds;
+            all.merges += s.merges;
+            all.closed += s.closed;
+            all.slots += s.slots;
+            all.cycles += s.cycles;
+        }
+    }
+    eprintln!("K = {k}: {all:?}");
+    assert!(
+        all.makes > 300 && all.merges > 30 && all.closed > 100,
+        "K = {k}: too little seen: {all:?}"
+    );
+}
+
+#[test]
+fn the_halves_make_the_golden_clusters_k3() {
+    every_case(3);
+}
+
+#[test]
+fn the_halves_make_the_golden_clusters_k11() {
+    every_case(11);
+}
