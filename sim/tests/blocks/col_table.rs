@@ -367,12 +367,19 @@ fn run_frame(
                         at_(c)
                     );
                     let want_acc = sorted(rs.iter().map(|r| accs[r]).collect());
-                    assert_eq!(
-                        sorted(rec.flushes),
-                        want_acc,
-                        "{}: the record's flushes (left) against its runs' golden accumulators (right, runs {rs:?})",
-                        at_(c)
-                    );
+                    let got_acc = sorted(rec.flushes);
+                    if let Some(n) = (0..got_acc.len().max(want_acc.len()))
+                        .find(|&n| got_acc.get(n) != want_acc.get(n))
+                    {
+                        panic!(
+                            "{}: the record of runs {rs:?}: {} flushes, {} runs; the first differing (in sorted order), expected {:?}, got {:?}",
+                            at_(c),
+                            got_acc.len(),
+                            want_acc.len(),
+                            want_acc.get(n),
+                            got_acc.get(n)
+                        );
+                    }
                     b.slots.push_back(slot);
                     b.labels.extend(got);
                     for r in rs {
@@ -418,8 +425,7 @@ fn run_frame(
         b.seed
     );
     assert_eq!(
-        found,
-        made,
+        found, made,
         "K = {}, {what}: finds (left) against runs made (right), seed {seed}",
         p.fsize
     );
