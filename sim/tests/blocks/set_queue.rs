@@ -1226,14 +1226,14 @@ fn chained_frame(name: &str, k: usize, ceiling: f64) {
 
 /// The slot table's front as built, on the captured frames (see
 /// [`chained_frame`]): the long-range 128-beam capture, the heavier load,
-/// at K = 3, 7 and 11 (the smallest, the default, the largest), the
-/// wide-angle one at K = 7; a ceiling each, a little over
-/// the cycles a slot measured (the target is 1.05, docs/column-core.md,
-/// item 3, "Chained"), so that a change that slows the chain fails here.
+/// and the wide-angle one, at the default K = 7 (one 128-row build; the
+/// slot table half's own bench, `col_table`, runs the blocks as wired at
+/// K = 3 and 11, and docs/column-core.md keeps this test's figures at K =
+/// 3 and 11); a ceiling each, a little over the cycles a slot measured
+/// (the target is 1.05, docs/column-core.md, item 3, "Chained"), so that a
+/// change that slows the chain fails here.
 #[test]
 fn a_captured_frame_through_the_rep_rows_the_packer_and_the_queue() {
-    for (k, ceiling) in [(3, 1.08), (7, 1.05), (11, 1.035)] {
-        chained_frame("OS-2-128-U1_v2.3.0_1024x10", k, ceiling);
-    }
+    chained_frame("OS-2-128-U1_v2.3.0_1024x10", 7, 1.05);
     chained_frame("OS-0-128-U1_v2.3.0_1024x10", 7, 1.025);
 }
