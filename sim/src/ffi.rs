@@ -40,8 +40,50 @@ pub trait CStruct {
 /// Declare a `#[repr(C)]` struct of fixed-width integers and implement
 /// [`CStruct`] for it from the same field list. Exported, so that a plain
 /// block's bench declares its ports' structs in its own test file.
+///
+/// `pub struct Name with acc_out { ... }` adds the 24 fields of an
+/// accumulator (`AccWord`) that the column core's probes bring out as
+/// `o_points` ... `o_seam`, which [`core_acc_out!`](crate::core_acc_out)
+/// reads back.
 #[macro_export]
 macro_rules! c_struct {
+    (
+        $(#[$meta:meta])*
+        pub struct $name:ident with acc_out {
+            $( $(#[$fmeta:meta])* pub $field:ident : $ty:ty, )*
+        }
+    ) => {
+        $crate::c_struct! {
+            $(#[$meta])*
+            pub struct $name {
+                $( $(#[$fmeta])* pub $field: $ty, )*
+                pub o_points: u32,
+                pub o_min_col: u16,
+                pub o_max_col: u16,
+                pub o_lo_has: u8,
+                pub o_lo_max: u16,
+                pub o_hi_has: u8,
+                pub o_hi_min: u16,
+                pub o_first_row: u8,
+                pub o_last_row: u8,
+                pub o_min_x: u16,
+                pub o_min_y: u16,
+                pub o_min_z: u16,
+                pub o_max_x: u16,
+                pub o_max_y: u16,
+                pub o_max_z: u16,
+                pub o_r2_min: u32,
+                pub o_r2_max: u32,
+                pub o_sa: u64,
+                pub o_sb: u64,
+                pub o_sc: u64,
+                pub o_sxx: u64,
+                pub o_syy: u64,
+                pub o_sab: u64,
+                pub o_seam: u8,
+            }
+        }
+    };
     (
         $(#[$meta:meta])*
         pub struct $name:ident {

@@ -46,37 +46,13 @@ c_struct! {
 
 c_struct! {
     /// Outputs during one cycle.
-    pub struct RaOut {
+    pub struct RaOut with acc_out {
         pub ready: u8,
         pub f_valid: u8,
         pub f_label: u16,
         pub f_end: u8,
         pub done: u8,
         pub bad: u8,
-        pub o_points: u32,
-        pub o_min_col: u16,
-        pub o_max_col: u16,
-        pub o_lo_has: u8,
-        pub o_lo_max: u16,
-        pub o_hi_has: u8,
-        pub o_hi_min: u16,
-        pub o_first_row: u8,
-        pub o_last_row: u8,
-        pub o_min_x: u16,
-        pub o_min_y: u16,
-        pub o_min_z: u16,
-        pub o_max_x: u16,
-        pub o_max_y: u16,
-        pub o_max_z: u16,
-        pub o_r2_min: u32,
-        pub o_r2_max: u32,
-        pub o_sa: u64,
-        pub o_sb: u64,
-        pub o_sc: u64,
-        pub o_sxx: u64,
-        pub o_syy: u64,
-        pub o_sab: u64,
-        pub o_seam: u8,
     }
 }
 

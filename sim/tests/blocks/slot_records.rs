@@ -71,7 +71,7 @@ c_struct! {
 
 c_struct! {
     /// Outputs during one cycle.
-    pub struct SrOut {
+    pub struct SrOut with acc_out {
         pub op_take: u8,
         pub out_valid: u8,
         pub out_slot: u16,
@@ -86,30 +86,6 @@ c_struct! {
         pub link_from: u16,
         pub link_to: u16,
         pub idle: u8,
-        pub o_points: u32,
-        pub o_min_col: u16,
-        pub o_max_col: u16,
-        pub o_lo_has: u8,
-        pub o_lo_max: u16,
-        pub o_hi_has: u8,
-        pub o_hi_min: u16,
-        pub o_first_row: u8,
-        pub o_last_row: u8,
-        pub o_min_x: u16,
-        pub o_min_y: u16,
-        pub o_min_z: u16,
-        pub o_max_x: u16,
-        pub o_max_y: u16,
-        pub o_max_z: u16,
-        pub o_r2_min: u32,
-        pub o_r2_max: u32,
-        pub o_sa: u64,
-        pub o_sb: u64,
-        pub o_sc: u64,
-        pub o_sxx: u64,
-        pub o_syy: u64,
-        pub o_sab: u64,
-        pub o_seam: u8,
     }
 }
 
