@@ -514,7 +514,11 @@ pub fn col_table_waivers(p: &FccParams, name: &str) -> String {
          // probe's take from it; rust-hdl writes each block's logic as one\n\
          // always block, whose every output Verilator takes to follow every\n\
          // input.\n\
-         lint_off -rule UNOPTFLAT -file \"*{name}.v\" -match \"*'*sets$ev_take'*\"\n"
+         lint_off -rule UNOPTFLAT -file \"*{name}.v\" -match \"*'*sets$ev_take'*\"\n\
+         // The slot table half's frame is done at its marker of column C; its\n\
+         // queue's and wait's idle flags are not needed.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'queue$idle'*\"\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'flushes$idle'*\"\n"
     ));
     s
 }

@@ -1,10 +1,10 @@
 //! The column core's two halves before the record store, `fcc_col_table`
 //! (behind `FccColTableProbe`: the input half `FccColIn` and the slot
 //! table half `FccColTable` as the core wires them) under Verilator:
-//! frames sent as AXI4-Stream beats in column order with random gaps, the
-//! union-find queue's events taken at random (a find with its run's
-//! accumulator), frames back to back, a reset in the middle of a frame
-//! (then the whole frame again), at K = 3 and 11.
+//! frames sent as AXI4-Stream beats in column order with random gaps,
+//! three back to back, the union-find queue's events taken at random (a
+//! find with its run's accumulator), a reset in the middle of a frame and
+//! one in a frame's end (then that frame again), at K = 3 and 11.
 //!
 //! The bench is the record store: a record per slot, made by a make, two
 //! merged by a join that merged (the slot gone back to the slot pool), a
@@ -82,7 +82,6 @@ c_struct! {
         pub label_take: u8,
         pub idle: u8,
         pub idle_next: u8,
-        pub sets_idle: u8,
         pub slot_take: u8,
         pub ev_valid: u8,
         pub ev_make: u8,
@@ -207,47 +206,99 @@ fn sorted(mut v: Vec<CoreAcc>) -> Vec<CoreAcc> {
     v
 }
 
-/// One frame through the halves; its clusters checked at their markers.
-fn run_frame(
+/// A frame with its golden clusters: the runs, the clusters closed at each
+/// column (the frame end's at `C`), each run's accumulator.
+struct Golden {
+    beats: Vec<u64>,
+    runs: Vec<u32>,
+    at: Vec<Vec<Vec<u32>>>,
+    accs: HashMap<u32, CoreAcc>,
+}
+
+impl Golden {
+    fn of(p: &FccParams, f: &Frame) -> Golden {
+        let column::Closing { runs, at } = column::closing(p, f);
+        let accs = run_accs(p, f, &runs);
+        Golden {
+            beats: beats(p, f),
+            runs,
+            at,
+            accs,
+        }
+    }
+}
+
+/// Frames back to back through the halves (the next frame's beats offered
+/// as soon as the input stage has the last one's), each cluster checked at
+/// its marker; `cut`: a reset after that many beats of the last frame (all
+/// of them: in its frame end, between the last column's marker and the
+/// frame end's), then that frame again.
+fn run_frames(
     b: &mut Bench,
     p: &FccParams,
-    f: &Frame,
+    frames: &[Golden],
     ready: f64,
     cut: Option<usize>,
     rng: &mut ChaCha8Rng,
     what: &str,
 ) -> Seen {
-    let beats = beats(p, f);
-    let column::Closing { runs, at } = column::closing(p, f);
-    let accs = run_accs(p, f, &runs);
+    let px = p.pixels();
+    let per = p.cols + 1;
+    let total = frames.len() * px;
+    let cut = cut.map(|n| (frames.len() - 1) * px + n);
     let mut seen = Seen {
-        slots: p.pixels(),
+        slots: total,
         ..Seen::default()
     };
-    let (mut next, mut restart, mut cut) = (0usize, true, cut);
-    let mut cycles = 0usize;
-    // This frame's makes and finds (a run flushes once).
+    // Beats sent (all frames), markers out (all frames); the frame a
+    // restart is owed to; this frame's makes and finds (a run flushes once).
+    let (mut next, mut cut, mut restart) = (0usize, cut, Some(0usize));
     let (mut made, mut found) = (0usize, 0usize);
+    let mut given: VecDeque<u16> = VecDeque::new();
+    let mut cycles = 0usize;
     let seed = b.seed;
-    let at_ = |c: usize| format!("K = {}, {what}: column {c}, seed {seed}", p.fsize);
-    while b.marks <= p.cols {
-        if cut == Some(next) {
-            // A reset mid-frame, then the whole frame again.
+    let at_ = |n: usize, c: usize| {
+        format!(
+            "K = {}, {what}: frame {n}, column {c}, seed {seed}",
+            p.fsize
+        )
+    };
+    while b.marks < frames.len() * per {
+        // A cut after all the beats lands in the frame end: the last
+        // column's marker out, the frame end's not yet.
+        let due = match cut {
+            Some(n) if n < total => next == n,
+            Some(_) => b.marks + 1 == frames.len() * per,
+            None => false,
+        };
+        if due {
+            // A reset (mid-frame, or in the last frame's end), then that
+            // frame again; the frames before it done or abandoned.
             b.reset(p, &[(1, 0), (0, 1)]);
-            (cut, next, restart) = (None, 0, true);
+            let last = frames.len() - 1;
+            (cut, next, restart) = (None, last * px, Some(last));
+            b.marks = last * per;
             (made, found) = (0, 0);
+            given.clear();
         }
-        let valid = next < beats.len() && rng.gen_bool(0.8);
+        let frame = next / px;
+        let valid = next < total && restart.is_none() && rng.gen_bool(0.8);
         let in_flight = b.taken - b.makes;
+        // The next beat's column, counted as markers are.
+        let col = (next.min(total - 1) / px) * per + (next.min(total - 1) % px) / p.rows;
         let i = TbIn {
-            s_axis_tdata: if valid { beats[next] } else { 0 },
+            s_axis_tdata: if valid {
+                frames[frame].beats[next % px]
+            } else {
+                0
+            },
             s_axis_tvalid: valid as u8,
-            s_axis_tlast: (valid && next + 1 == beats.len()) as u8,
-            restart: restart as u8,
+            s_axis_tlast: (valid && (next + 1) % px == 0) as u8,
+            restart: restart.is_some() as u8,
             slots_used: b.recs.len() as u16,
             in_flight: in_flight as u16,
             labels_free: b.labels.len() as u16,
-            settled: (in_flight == 0 && b.marks >= next.min(beats.len() - 1) / p.rows) as u8,
+            settled: (in_flight == 0 && b.marks >= col) as u8,
             free_ok: !b.labels.is_empty() as u8,
             free_label: b.labels.front().copied().unwrap_or(0),
             slot_ok: !b.slots.is_empty() as u8,
@@ -255,30 +306,44 @@ fn run_frame(
             ev_ready: rng.gen_bool(ready) as u8,
             ..params_in(p)
         };
-        restart = false;
+        restart = None;
         let o = b.dut.step(&i);
-        assert_eq!(o.err, 0, "{}: a frame error", at_(next / p.rows));
-        assert_eq!(o.bad, 0, "{}: bad", at_(next / p.rows));
-        assert_eq!(o.miss, 0, "{}: a label not in its row", at_(next / p.rows));
+        let (n, c) = (b.marks / per, b.marks % per);
+        assert_eq!(o.err, 0, "{}: a frame error", at_(n, c));
+        assert_eq!(o.bad, 0, "{}: bad", at_(n, c));
+        assert_eq!(o.miss, 0, "{}: a label not in its row", at_(n, c));
         if o.label_take != 0 {
             b.labels.pop_front().expect("a label given");
             b.taken += 1;
         }
-        let made_slot = (o.slot_take != 0).then(|| b.slots.pop_front().expect("a slot given"));
+        if o.slot_take != 0 {
+            given.push_back(b.slots.pop_front().expect("a slot given"));
+        }
         if valid && o.s_axis_tready != 0 {
             next += 1;
         }
+        if o.in_done != 0 && next % px == 0 && next < total && next > 0 {
+            // The input stage has the frame: the next one starts.
+            restart = Some(next / px);
+        }
         let find = o.ev_make == 0 && o.ev_join == 0 && o.ev_mark == 0;
         if o.ev_valid != 0 && i.ev_ready != 0 && (!find || o.acc_valid != 0) {
-            let c = usize::from(o.ev_col);
+            let g = &frames[n];
+            let ec = usize::from(o.ev_col);
             if o.ev_make != 0 {
-                let (r, c) = (usize::from(o.ev_row), c);
-                let run = runs[r * p.cols + c];
-                assert_ne!(run, 0, "{}, row {r}: a make where no run is", at_(c));
+                let r = usize::from(o.ev_row);
+                let run = g.runs[r * p.cols + ec];
+                assert_ne!(run, 0, "{}, row {r}: a make where no run is", at_(n, ec));
+                assert_eq!(
+                    given.pop_front(),
+                    Some(o.ev_slot),
+                    "{}, row {r}: a make's slot (right) not the one the pool gave (left)",
+                    at_(n, ec)
+                );
                 assert!(
                     !b.recs.contains_key(&o.ev_slot),
                     "{}: a make into slot {} in use",
-                    at_(c),
+                    at_(n, ec),
                     o.ev_slot
                 );
                 b.recs.insert(
@@ -291,7 +356,7 @@ fn run_frame(
                 assert!(
                     b.run_label.insert(run, o.ev_label).is_none(),
                     "{}, row {r}: run {run} made twice",
-                    at_(c)
+                    at_(n, ec)
                 );
                 b.makes += 1;
                 made += 1;
@@ -299,137 +364,122 @@ fn run_frame(
             } else if o.ev_join != 0 {
                 if o.ev_merged != 0 {
                     let gone = b.recs.remove(&o.ev_other).unwrap_or_else(|| {
-                        panic!("{}: slot {} merged away, not open", at_(c), o.ev_other)
+                        panic!("{}: slot {} merged away, not open", at_(n, ec), o.ev_other)
                     });
-                    let keep = b
-                        .recs
-                        .get_mut(&o.ev_slot)
-                        .unwrap_or_else(|| panic!("{}: slot {} kept, not open", at_(c), o.ev_slot));
+                    let keep = b.recs.get_mut(&o.ev_slot).unwrap_or_else(|| {
+                        panic!("{}: slot {} kept, not open", at_(n, ec), o.ev_slot)
+                    });
                     keep.labels.extend(gone.labels);
                     keep.flushes.extend(gone.flushes);
                     b.slots.push_back(o.ev_other);
                     seen.merges += 1;
                 }
             } else if o.ev_mark != 0 {
-                assert_eq!(
-                    c, b.marks,
-                    "K = {}, {what}: markers out of order, seed {}",
-                    p.fsize, b.seed
-                );
-                for rs in &at[c] {
-                    let mut want: Vec<u16> = rs
-                        .iter()
-                        .map(|r| {
-                            *b.run_label
-                                .get(r)
-                                .unwrap_or_else(|| panic!("{}: run {r} never made", at_(c)))
-                        })
-                        .collect();
-                    want.sort_unstable();
-                    let slot = *b
-                        .recs
-                        .iter()
-                        .find(|(_, rec)| rec.labels.contains(&want[0]))
-                        .unwrap_or_else(|| {
-                            panic!("{}: label {} in no open record", at_(c), want[0])
-                        })
-                        .0;
-                    let rec = b.recs.remove(&slot).expect("found");
-                    let mut got = rec.labels.clone();
-                    got.sort_unstable();
-                    assert_eq!(
-                        got, want,
-                        "{}: the record's labels (left) against the golden cluster's runs' (right, runs {rs:?})",
-                        at_(c)
-                    );
-                    let want_acc = sorted(rs.iter().map(|r| accs[r]).collect());
-                    let got_acc = sorted(rec.flushes);
-                    if let Some(n) = (0..got_acc.len().max(want_acc.len()))
-                        .find(|&n| got_acc.get(n) != want_acc.get(n))
-                    {
-                        panic!(
-                            "{}: the record of runs {rs:?}: {} flushes, {} runs; the first differing (in sorted order), expected {:?}, got {:?}",
-                            at_(c),
-                            got_acc.len(),
-                            want_acc.len(),
-                            want_acc.get(n),
-                            got_acc.get(n)
-                        );
-                    }
-                    b.slots.push_back(slot);
-                    b.labels.extend(got);
-                    for r in rs {
-                        b.run_label.remove(r);
-                    }
+                assert_eq!(ec, c, "{}: a marker out of order", at_(n, c));
+                for rs in &g.at[c] {
+                    close(b, g, rs, &at_(n, c));
                     seen.closed += 1;
                 }
                 b.marks += 1;
+                if c == p.cols {
+                    // The frame's end: every record closed, a find a run.
+                    assert!(
+                        b.recs.is_empty(),
+                        "{}: {} records open after the frame end",
+                        at_(n, c),
+                        b.recs.len()
+                    );
+                    assert_eq!(
+                        found,
+                        made,
+                        "{}: finds (left) against runs made (right)",
+                        at_(n, c)
+                    );
+                    (made, found) = (0, 0);
+                    b.run_label.clear();
+                }
             } else {
                 let acc = core_acc_out!(o);
                 b.recs
                     .get_mut(&o.ev_slot)
-                    .unwrap_or_else(|| panic!("{}: a find of slot {}, not open", at_(c), o.ev_slot))
+                    .unwrap_or_else(|| {
+                        panic!("{}: a find of slot {}, not open", at_(n, ec), o.ev_slot)
+                    })
                     .flushes
                     .push(acc);
                 found += 1;
                 seen.finds += 1;
             }
         }
-        if let Some(s) = made_slot {
-            // The slot taken is the one the next make names (checked there
-            // as not in use); it is not in the pool any more.
-            assert!(
-                !b.slots.contains(&s),
-                "{}: slot {s} twice in the pool",
-                at_(next / p.rows)
-            );
-        }
         cycles += 1;
         assert!(
-            cycles < 20 * p.pixels() + 2000,
+            cycles < 20 * total + 2000,
             "{}: {} of {} markers out after {cycles} cycles ({next} beats in)",
-            at_(next / p.rows),
+            at_(n, c),
             b.marks,
-            p.cols + 1
+            frames.len() * per
         );
     }
-    assert!(
-        b.recs.is_empty(),
-        "K = {}, {what}: {} records open after the frame end, seed {}",
-        p.fsize,
-        b.recs.len(),
-        b.seed
-    );
-    assert_eq!(
-        found, made,
-        "K = {}, {what}: finds (left) against runs made (right), seed {seed}",
-        p.fsize
-    );
-    // Nothing left in the halves.
-    let mut quiet = 0;
-    while quiet < 40 {
+    // Nothing more comes out.
+    for _ in 0..40 {
         let o = b.dut.step(&TbIn {
             ev_ready: 1,
             ..params_in(p)
         });
         assert_eq!(
             o.ev_valid, 0,
-            "K = {}, {what}: an event after the frame end",
+            "K = {}, {what}: an event after the last frame end",
             p.fsize
         );
-        quiet += 1;
-        if quiet == 40 {
-            assert_eq!(
-                o.sets_idle, 1,
-                "K = {}, {what}: not idle after the frame",
-                p.fsize
-            );
-        }
     }
     b.marks = 0;
-    b.run_label.clear();
     seen.cycles = cycles;
     seen
+}
+
+/// Cluster `rs` (golden runs) closed at this marker: one record holding
+/// exactly its runs' labels and accumulators; its slot and labels back.
+fn close(b: &mut Bench, g: &Golden, rs: &[u32], at: &str) {
+    let mut want: Vec<u16> = rs
+        .iter()
+        .map(|r| {
+            *b.run_label
+                .get(r)
+                .unwrap_or_else(|| panic!("{at}: run {r} never made"))
+        })
+        .collect();
+    want.sort_unstable();
+    let slot = *b
+        .recs
+        .iter()
+        .find(|(_, rec)| rec.labels.contains(&want[0]))
+        .unwrap_or_else(|| panic!("{at}: label {} in no open record", want[0]))
+        .0;
+    let rec = b.recs.remove(&slot).expect("found");
+    let mut got = rec.labels.clone();
+    got.sort_unstable();
+    assert_eq!(
+        got, want,
+        "{at}: the record's labels (left) against the golden cluster's runs' (right, runs {rs:?})"
+    );
+    let want_acc = sorted(rs.iter().map(|r| g.accs[r]).collect());
+    let got_acc = sorted(rec.flushes);
+    if let Some(n) =
+        (0..got_acc.len().max(want_acc.len())).find(|&n| got_acc.get(n) != want_acc.get(n))
+    {
+        panic!(
+            "{at}: the record of runs {rs:?}: {} flushes, {} runs; the first differing (in sorted order), expected {:?}, got {:?}",
+            got_acc.len(),
+            want_acc.len(),
+            want_acc.get(n),
+            got_acc.get(n)
+        );
+    }
+    b.slots.push_back(slot);
+    b.labels.extend(got);
+    for r in rs {
+        b.run_label.remove(r);
+    }
 }
 
 fn every_case(k: usize) {
@@ -486,10 +536,20 @@ fn every_case(k: usize) {
         };
         b.reset(p, &[(1, 0), (1, 1), (0, 1), (0, 0)]);
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
-        for (density, jump, cut) in [(0.8, 0.05, false), (0.5, 0.1, false), (0.7, 0.05, true)] {
-            let f = random_frame(p.rows, p.cols, density, jump, true, &mut rng);
-            let cut = cut.then(|| rng.gen_range(1..p.pixels()));
-            let s = run_frame(&mut b, p, &f, *ready, cut, &mut rng, what);
+        let frames: Vec<Golden> = [(0.8, 0.05), (0.5, 0.1), (0.7, 0.05)]
+            .iter()
+            .map(|&(density, jump)| {
+                Golden::of(
+                    p,
+                    &random_frame(p.rows, p.cols, density, jump, true, &mut rng),
+                )
+            })
+            .collect();
+        // Three frames back to back; two with a reset mid-frame in the
+        // second; one with a reset in its frame end.
+        let mid = rng.gen_range(1..p.pixels());
+        for (from, cut) in [(0, None), (1, Some(mid)), (2, Some(p.pixels()))] {
+            let s = run_frames(&mut b, p, &frames[from..], *ready, cut, &mut rng, what);
             all.makes += s.makes;
             all.finds += s.finds;
             all.merges += s.merges;

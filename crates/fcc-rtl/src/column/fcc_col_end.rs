@@ -5,9 +5,12 @@
 //! flush the rows' runs still open (`drain_ok`); each of those flushes
 //! (`f_end`) becomes a find of its run's label, in the flushes' order, so
 //! that the finds meet their accumulators in `FccFlushWait`; after the
-//! last (`done`) comes the frame end's marker, column `C`. The packer's
-//! entry goes first, then a frame-end find, then the marker, which waits
-//! while either is there.
+//! last (`done`) comes the frame end's marker, column `C`. From the last
+//! column's marker to the frame end's, `busy` keeps the next frame's
+//! pixels out (`FccColTable`), so the packer sends nothing while the frame
+//! end's ops go (a frame-end flush cannot wait: `FccRunAcc` is not held);
+//! `FccRunAcc` is busy with the frame end meanwhile anyway, so this costs
+//! the cycle of the marker at most.
 
 use rust_hdl::prelude::*;
 
@@ -30,6 +33,8 @@ pub struct FccColEnd {
     pub done: Signal<In, Bit>,
     /// The frame-end flush may read rows.
     pub drain_ok: Signal<Out, Bit>,
+    /// The frame end's ops are under way: no pixel may enter.
+    pub busy: Signal<Out, Bit>,
     /// The queue's entry.
     pub e_valid: Signal<Out, Bit>,
     pub e: Signal<Out, SetQBundle>,
@@ -53,6 +58,7 @@ impl Default for FccColEnd {
             f_label: Default::default(),
             done: Default::default(),
             drain_ok: Default::default(),
+            busy: Default::default(),
             e_valid: Default::default(),
             e: Default::default(),
             tail: Default::default(),
@@ -76,6 +82,7 @@ impl Logic for FccColEnd {
             self.tail.d.next = false;
         }
         self.drain_ok.next = self.tail.q.val();
+        self.busy.next = self.tail.q.val() | self.owed.q.val();
         self.end_find.next = self.f_valid.val() & self.f_end.val();
         // The marker is owed from the cycle after `done` until it goes.
         self.owed.d.next =

@@ -8,10 +8,10 @@ use fcc_params::FccParams;
 use rust_hdl::prelude::*;
 
 use super::fcc_col_slot_buf::FccColSlotBuf;
-use super::fcc_hits_pack::{FccHitsPack, PACK_WORDS};
+use super::fcc_hits_pack::FccHitsPack;
+use super::fcc_hits_unpack::FccHitsUnpack;
 use super::fcc_quad_lane::LabelQuad;
 use super::RunPix;
-use crate::types::vec_of;
 
 #[derive(LogicBlock)]
 pub struct FccColSlotBufProbe {
@@ -65,7 +65,7 @@ pub struct FccColSlotBufProbe {
     pack: FccHitsPack,
     pix: Signal<Local, RunPix>,
     pix_zero: Constant<RunPix>,
-    words: Vec<Signal<Local, Bits<64>>>,
+    unpack: FccHitsUnpack,
     _n: usize,
 }
 
@@ -123,7 +123,7 @@ impl FccColSlotBufProbe {
             pack: FccHitsPack::new(p),
             pix: Default::default(),
             pix_zero: Constant::new(RunPix::default()),
-            words: vec_of(PACK_WORDS),
+            unpack: FccHitsUnpack::new(p),
             _n: n,
         }
     }
@@ -143,32 +143,24 @@ impl Logic for FccColSlotBufProbe {
         self.slots.slot.next = self.slot.val();
         self.slots.take.next = self.take.val();
         self.slots.in_centre.next = self.pix.val();
-        self.words[0].next = self.lw0.val();
-        self.words[1].next = self.lw1.val();
-        self.words[2].next = self.lw2.val();
-        self.words[3].next = self.lw3.val();
-        self.words[4].next = self.lw4.val();
-        self.words[5].next = self.lw5.val();
-        self.words[6].next = self.lw6.val();
-        self.words[7].next = self.lw7.val();
-        self.words[8].next = self.lw8.val();
-        self.words[9].next = self.lw9.val();
-        self.words[10].next = self.lw10.val();
-        self.words[11].next = self.lw11.val();
-        self.words[12].next = self.lw12.val();
-        self.words[13].next = self.lw13.val();
+        self.unpack.hits.next = self.hits.val();
+        self.unpack.lw0.next = self.lw0.val();
+        self.unpack.lw1.next = self.lw1.val();
+        self.unpack.lw2.next = self.lw2.val();
+        self.unpack.lw3.next = self.lw3.val();
+        self.unpack.lw4.next = self.lw4.val();
+        self.unpack.lw5.next = self.lw5.val();
+        self.unpack.lw6.next = self.lw6.val();
+        self.unpack.lw7.next = self.lw7.val();
+        self.unpack.lw8.next = self.lw8.val();
+        self.unpack.lw9.next = self.lw9.val();
+        self.unpack.lw10.next = self.lw10.val();
+        self.unpack.lw11.next = self.lw11.val();
+        self.unpack.lw12.next = self.lw12.val();
+        self.unpack.lw13.next = self.lw13.val();
         for e in 0..self._n {
-            self.slots.in_hit[e].next = self.hits.val().get_bit(e);
-        }
-        for w in 0..(self._n / 4) {
-            for m in 0..4 {
-                self.slots.in_label[w * 4 + m].next = self.words[w].val().get_bits::<16>(m * 16);
-            }
-        }
-        for w in (self._n / 4)..(self._n / 4 + 1) {
-            for m in 0..(self._n % 4) {
-                self.slots.in_label[w * 4 + m].next = self.words[w].val().get_bits::<16>(m * 16);
-            }
+            self.slots.in_hit[e].next = self.unpack.hit[e].val();
+            self.slots.in_label[e].next = self.unpack.hit_label[e].val();
         }
         self.room.next = self.slots.room.val();
         self.valid.next = self.slots.valid.val();

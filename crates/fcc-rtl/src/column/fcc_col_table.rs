@@ -9,9 +9,11 @@
 //! a column's marker) and the oldest accumulator waiting for its find,
 //! for the record store.
 //!
-//! A pixel is taken only when both blocks take it and the flushes' wait
-//! and the queue have room; the frame end's flush reads its rows under
-//! the same rooms. Wiring only.
+//! A pixel is taken only when both blocks take it, the flushes' wait and
+//! the queue have room and the frame end's ops are not under way
+//! (`FccColEnd.busy`); the frame end's flush reads its rows under the same
+//! rooms. The frame is done when its marker of column `C` is out. Wiring
+//! only.
 
 use fcc_params::FccParams;
 use rust_hdl::prelude::*;
@@ -66,9 +68,6 @@ pub struct FccColTable {
     /// a take with no accumulator.
     pub miss: Signal<Out, Bit>,
     pub bad: Signal<Out, Bit>,
-    /// Nothing in the half: no pixel, op or accumulator waits, no frame
-    /// end under way.
-    pub idle: Signal<Out, Bit>,
     go: Signal<Local, Bit>,
     joins: FccRepJoins,
     runs: FccRunAcc,
@@ -113,7 +112,6 @@ impl FccColTable {
             acc_take: Default::default(),
             miss: Default::default(),
             bad: Default::default(),
-            idle: Default::default(),
             go: Default::default(),
             joins: FccRepJoins::new(p.rows, p.fsize),
             runs: FccRunAcc::new(p.rows),
@@ -134,7 +132,8 @@ impl Logic for FccColTable {
             & self.joins.ready.val()
             & self.runs.ready.val()
             & self.flushes.room.val()
-            & self.queue.room.val();
+            & self.queue.room.val()
+            & !self.ends.busy.val();
         self.take.next = self.go.val();
         self.joins.clk.next = self.clk.val();
         self.joins.rst.next = self.rst.val();
@@ -231,6 +230,5 @@ impl Logic for FccColTable {
         self.acc_valid.next = self.flushes.valid.val();
         self.acc.next = self.flushes.dout.val();
         self.bad.next = self.runs.bad.val() | self.flushes.bad.val();
-        self.idle.next = self.queue.idle.val() & self.flushes.idle.val() & self.runs.ready.val();
     }
 }

@@ -57,7 +57,6 @@ pub struct FccColTableProbe {
     pub label_take: Signal<Out, Bit>,
     pub idle: Signal<Out, Bit>,
     pub idle_next: Signal<Out, Bit>,
-    pub sets_idle: Signal<Out, Bit>,
     pub slot_take: Signal<Out, Bit>,
     pub ev_valid: Signal<Out, Bit>,
     pub ev_make: Signal<Out, Bit>,
@@ -148,7 +147,6 @@ impl FccColTableProbe {
             label_take: Default::default(),
             idle: Default::default(),
             idle_next: Default::default(),
-            sets_idle: Default::default(),
             slot_take: Default::default(),
             ev_valid: Default::default(),
             ev_make: Default::default(),
@@ -232,7 +230,6 @@ impl Logic for FccColTableProbe {
         self.label_take.next = self.inp.label_take.val();
         self.idle.next = self.inp.idle.val();
         self.idle_next.next = self.inp.idle_next.val();
-        self.sets_idle.next = self.sets.idle.val();
         self.sets.clk.next = self.clk.val();
         self.sets.rst.next = self.rst.val();
         self.sets.last_row.next = self.last_row.val();

@@ -8,12 +8,9 @@
 use fcc_params::FccParams;
 use rust_hdl::prelude::*;
 
+use super::fcc_hits_unpack::FccHitsUnpack;
 use super::fcc_rep_joins::FccRepJoins;
 use super::RunPix;
-use crate::types::vec_of;
-
-/// Label words: four entries each, for the largest window (K = 11: 55).
-pub const LABEL_WORDS: usize = 14;
 
 #[derive(LogicBlock)]
 pub struct FccRepJoinsProbe {
@@ -67,14 +64,13 @@ pub struct FccRepJoinsProbe {
     joins: FccRepJoins,
     pix: Signal<Local, RunPix>,
     pix_zero: Constant<RunPix>,
-    words: Vec<Signal<Local, Bits<64>>>,
+    unpack: FccHitsUnpack,
     _ne: usize,
 }
 
 impl FccRepJoinsProbe {
     pub fn new(p: &FccParams) -> Self {
         let ne = p.window_positions();
-        assert!(ne <= 4 * LABEL_WORDS, "{ne} window entries do not fit");
         Self {
             clk: Default::default(),
             rst: Default::default(),
@@ -125,7 +121,7 @@ impl FccRepJoinsProbe {
             joins: FccRepJoins::new(p.rows, p.fsize),
             pix: Default::default(),
             pix_zero: Constant::new(RunPix::default()),
-            words: vec_of(LABEL_WORDS),
+            unpack: FccHitsUnpack::new(p),
             _ne: ne,
         }
     }
@@ -148,36 +144,28 @@ impl Logic for FccRepJoinsProbe {
         self.pix.next.ring_b = self.ring_b.val();
         self.pix.next.hold_drop = self.hold_drop.val();
         self.pix.next.hold_rep = self.hold_drop.val();
-        self.words[0].next = self.lw0.val();
-        self.words[1].next = self.lw1.val();
-        self.words[2].next = self.lw2.val();
-        self.words[3].next = self.lw3.val();
-        self.words[4].next = self.lw4.val();
-        self.words[5].next = self.lw5.val();
-        self.words[6].next = self.lw6.val();
-        self.words[7].next = self.lw7.val();
-        self.words[8].next = self.lw8.val();
-        self.words[9].next = self.lw9.val();
-        self.words[10].next = self.lw10.val();
-        self.words[11].next = self.lw11.val();
-        self.words[12].next = self.lw12.val();
-        self.words[13].next = self.lw13.val();
         self.joins.clk.next = self.clk.val();
         self.joins.rst.next = self.rst.val();
         self.joins.inp.next = self.pix.val();
         self.joins.last_row.next = self.last_row.val();
+        self.unpack.hits.next = self.hits.val();
+        self.unpack.lw0.next = self.lw0.val();
+        self.unpack.lw1.next = self.lw1.val();
+        self.unpack.lw2.next = self.lw2.val();
+        self.unpack.lw3.next = self.lw3.val();
+        self.unpack.lw4.next = self.lw4.val();
+        self.unpack.lw5.next = self.lw5.val();
+        self.unpack.lw6.next = self.lw6.val();
+        self.unpack.lw7.next = self.lw7.val();
+        self.unpack.lw8.next = self.lw8.val();
+        self.unpack.lw9.next = self.lw9.val();
+        self.unpack.lw10.next = self.lw10.val();
+        self.unpack.lw11.next = self.lw11.val();
+        self.unpack.lw12.next = self.lw12.val();
+        self.unpack.lw13.next = self.lw13.val();
         for e in 0..self._ne {
-            self.joins.inp_hit[e].next = self.hits.val().get_bit(e);
-        }
-        for w in 0..(self._ne / 4) {
-            for m in 0..4 {
-                self.joins.inp_label[w * 4 + m].next = self.words[w].val().get_bits::<16>(m * 16);
-            }
-        }
-        for w in (self._ne / 4)..(self._ne / 4 + 1) {
-            for m in 0..(self._ne % 4) {
-                self.joins.inp_label[w * 4 + m].next = self.words[w].val().get_bits::<16>(m * 16);
-            }
+            self.joins.inp_hit[e].next = self.unpack.hit[e].val();
+            self.joins.inp_label[e].next = self.unpack.hit_label[e].val();
         }
         self.ready.next = self.joins.ready.val();
         self.o_valid.next = self.joins.out.val().valid;

@@ -107,7 +107,8 @@ pub struct FccRunAcc {
     /// The flush is the frame end's (a row's run still open after the
     /// frame's last pixel), not a pixel's.
     pub f_end: Signal<Out, Bit>,
-    /// The frame-end flush is complete (one cycle, after its last flush).
+    /// The frame-end flush is complete (one cycle, with the last row's
+    /// flush if it has one).
     pub done: Signal<Out, Bit>,
     /// Sticky until reset: a pixel continued a run its row does not have
     /// open (the input does not follow `FccRowRuns`' runs; the pixel was

@@ -54,6 +54,7 @@ pub mod fcc_col_word_split;
 pub mod fcc_flush_wait;
 pub mod fcc_flush_wait_probe;
 pub mod fcc_hits_pack;
+pub mod fcc_hits_unpack;
 pub mod fcc_holds_merge;
 pub mod fcc_label_lists;
 pub mod fcc_label_pool;
