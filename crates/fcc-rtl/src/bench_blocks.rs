@@ -63,6 +63,9 @@ pub enum BenchBlock {
     /// The column core's input half and slot table half (`FccColIn`,
     /// `FccColTable`) wired, behind the scalar ports of `FccColTableProbe`.
     ColTable,
+    /// The column core's datapath `FccColCore`: the input, slot table and
+    /// record store halves wired, pixels in and records out.
+    ColCore,
     /// The column core's record accumulator (`FccAccPixel`, `FccAccMerge`)
     /// over the four registers of `FccAccProbe`.
     Acc,
@@ -127,7 +130,7 @@ impl Row {
 
 impl BenchBlock {
     /// Every block with a bench.
-    pub const ALL: [BenchBlock; 34] = [
+    pub const ALL: [BenchBlock; 35] = [
         BenchBlock::Regs,
         BenchBlock::AxilAdapter,
         BenchBlock::MergeTable,
@@ -148,6 +151,7 @@ impl BenchBlock {
         BenchBlock::ColSlotBuf,
         BenchBlock::ColIn,
         BenchBlock::ColTable,
+        BenchBlock::ColCore,
         BenchBlock::Acc,
         BenchBlock::RecordOut,
         BenchBlock::LabelPool,
@@ -317,6 +321,17 @@ impl BenchBlock {
                     )
                 },
                 waivers: lint::col_table_waivers,
+            },
+            BenchBlock::ColCore => Row {
+                name: "fcc_col_core",
+                generate: |p| {
+                    gen(
+                        p,
+                        crate::column::fcc_col_core::FccColCore::new(p),
+                        "fcc_col_core",
+                    )
+                },
+                waivers: lint::col_core_waivers,
             },
             BenchBlock::Acc => Row {
                 name: "fcc_acc",

@@ -27,6 +27,7 @@ mod word_window;
 mod acc;
 mod close_order;
 mod closer;
+mod col_core;
 mod col_dist;
 mod col_front;
 mod col_in;

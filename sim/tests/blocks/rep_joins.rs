@@ -79,7 +79,8 @@ struct Feed {
 struct Fed {
     px: Pix,
     label: u16,
-    joins: Vec<(u16, u16, bool)>,
+    /// Each join: its labels, `under`, and whether it is the ring check's.
+    joins: Vec<(u16, u16, bool, bool)>,
     /// The run its row stops holding (its label, 0 for none) and its
     /// representative in the model before the pixel.
     drop: u16,
@@ -98,7 +99,7 @@ struct Bench {
     /// `got` are, and whether `j_more` said more would come.
     pending: VecDeque<Fed>,
     last: Option<Fed>,
-    got: Vec<(u16, u16, bool)>,
+    got: Vec<(u16, u16, bool, bool)>,
     more: bool,
     uf: Uf,
     joins: u64,
@@ -179,14 +180,14 @@ impl Bench {
                 let x = self.rep[r];
                 // The run started, filed under its neighbours' cluster.
                 let under = px.start && *r == px.run;
-                if x != m && !joins.contains(&(x, m, under)) {
-                    joins.push((x, m, under));
+                if x != m && !joins.contains(&(x, m, under, false)) {
+                    joins.push((x, m, under, false));
                 }
                 self.rep.insert(*r, m);
             }
         }
         if px.ring.is_some() {
-            joins.push((i.ring_a, i.ring_b, false));
+            joins.push((i.ring_a, i.ring_b, false, true));
         }
         joins.sort_unstable();
         let fed = Fed {
@@ -216,7 +217,7 @@ impl Bench {
                 self.what,
                 self.seed
             );
-            self.got.push((o.j_a, o.j_b, o.j_under != 0));
+            self.got.push((o.j_a, o.j_b, o.j_under != 0, o.j_seam != 0));
             self.uf.union(o.j_a, o.j_b);
             self.joins += 1;
         }

@@ -77,6 +77,7 @@ c_struct! {
         pub o_refused: u8,
         pub o_ring_first: u8,
         pub o_ring: u8,
+        pub o_ring_hold: u8,
         pub o_ring_a: u16,
         pub o_ring_b: u16,
         pub o_hold_drop: u16,
@@ -508,6 +509,12 @@ fn check_frame(
             assert_eq!(
                 held[r], want_held,
                 "{at}: the row's held label after the column"
+            );
+            // After the last column only hold 4 holds, and it says so.
+            assert_eq!(
+                o.o_ring_hold != 0,
+                c == cols - 1 && want_held != 0,
+                "{at}: hold 4 after the last column"
             );
             if drained {
                 assert_eq!(

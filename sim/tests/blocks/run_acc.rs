@@ -38,6 +38,7 @@ c_struct! {
         pub start: u8,
         pub hold_drop: u16,
         pub last: u8,
+        pub ring_hold: u8,
         pub half: u16,
         pub last_row: u8,
         pub drain_go: u8,
@@ -51,6 +52,7 @@ c_struct! {
         pub f_valid: u8,
         pub f_label: u16,
         pub f_end: u8,
+        pub f_ring: u8,
         pub done: u8,
         pub bad: u8,
     }
@@ -64,6 +66,8 @@ struct Flush {
     acc: CoreAcc,
     /// The frame end's flush, not a pixel's.
     end: bool,
+    /// A frame end's flush of a run its row holds by hold 4.
+    ring: bool,
 }
 
 impl Flush {
@@ -73,6 +77,7 @@ impl Flush {
             label: o.f_label,
             acc,
             end: o.f_end != 0,
+            ring: o.f_ring != 0,
         }
     }
 }
@@ -104,6 +109,7 @@ fn expected(
         label: run as u16,
         acc: CoreAcc::of(a),
         end: false,
+        ring: false,
     };
     for (n, x) in px.iter().enumerate() {
         let r = x.row;
@@ -130,10 +136,11 @@ fn expected(
             }
         }
     }
-    for o in open.iter_mut() {
+    for (r, o) in open.iter_mut().enumerate() {
         if let Some((run, a)) = o.take() {
             out.push(Flush {
                 end: true,
+                ring: ring_hold(p, r, p.cols - 1),
                 ..flush(run, &a)
             });
             from.push(None);
@@ -141,6 +148,13 @@ fn expected(
         }
     }
     (out, from)
+}
+
+/// Whether the bench says the row holds its latest run by hold 4 at this
+/// slot: at the last column, every third row (the frame end's flush of
+/// that row's run must say so, and no other flush).
+fn ring_hold(p: &FccParams, row: usize, col: usize) -> bool {
+    col + 1 == p.cols && row % 3 == 1
 }
 
 /// A cycle without a pixel, with the frame's run parameters.
@@ -261,6 +275,7 @@ impl Bench {
                 start: x.start as u8,
                 hold_drop: x.hold.map_or(0, |(before, _)| before as u16),
                 last: (ends && n + 1 == px.len()) as u8,
+                ring_hold: ring_hold(p, x.row, x.col) as u8,
                 ..idle
             };
             while !self.step(&i) {}

@@ -11,6 +11,12 @@
 //! end's ops go (a frame-end flush cannot wait: `FccRunAcc` is not held);
 //! `FccRunAcc` is busy with the frame end meanwhile anyway, so this costs
 //! the cycle of the marker at most.
+//!
+//! The frame end's marker carries the frame's flags (spec §9.4's end
+//! beat): `ring`, a run of the frame refused a label (`refused`, a pixel
+//! taken that was, kept since the last frame end's marker); `row` bit 0,
+//! the frame's input error (`frame_err`, the input's flag of its last
+//! frame, read as the marker goes).
 
 use rust_hdl::prelude::*;
 
@@ -30,7 +36,14 @@ pub struct FccColEnd {
     pub f_valid: Signal<In, Bit>,
     pub f_end: Signal<In, Bit>,
     pub f_label: Signal<In, Bits<16>>,
+    /// The frame end's flush is of a run held by hold 4: its find carries
+    /// `ring`, so that its cluster is held to the frame end.
+    pub f_ring: Signal<In, Bit>,
     pub done: Signal<In, Bit>,
+    /// A pixel taken whose run was refused a label; the input's error
+    /// flag of the frame.
+    pub refused: Signal<In, Bit>,
+    pub frame_err: Signal<In, Bit>,
     /// The frame-end flush may read rows.
     pub drain_ok: Signal<Out, Bit>,
     /// The frame end's ops are under way: no pixel may enter.
@@ -40,9 +53,11 @@ pub struct FccColEnd {
     pub e: Signal<Out, SetQBundle>,
     tail: DFF<Bit>,
     owed: DFF<Bit>,
+    ovf: DFF<Bit>,
     end_find: Signal<Local, Bit>,
     none: Constant<SetQBundle>,
     one: Constant<Bits<12>>,
+    one7: Constant<Bits<7>>,
 }
 
 impl Default for FccColEnd {
@@ -56,16 +71,21 @@ impl Default for FccColEnd {
             f_valid: Default::default(),
             f_end: Default::default(),
             f_label: Default::default(),
+            f_ring: Default::default(),
             done: Default::default(),
+            refused: Default::default(),
+            frame_err: Default::default(),
             drain_ok: Default::default(),
             busy: Default::default(),
             e_valid: Default::default(),
             e: Default::default(),
             tail: Default::default(),
             owed: Default::default(),
+            ovf: Default::default(),
             end_find: Default::default(),
             none: Constant::new(SetQBundle::default()),
             one: kb(1),
+            one7: kb(1),
         }
     }
 }
@@ -73,7 +93,8 @@ impl Default for FccColEnd {
 impl Logic for FccColEnd {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clk, tail, owed);
+        dff_setup!(self, clk, tail, owed, ovf);
+        self.ovf.d.next = self.ovf.q.val() | self.refused.val();
         self.tail.d.next = self.tail.q.val();
         if self.pk_valid.val() & self.pk.val().mark & (self.pk.val().col == self.last_col.val()) {
             self.tail.d.next = true;
@@ -94,15 +115,22 @@ impl Logic for FccColEnd {
             if self.end_find.val() {
                 self.e.next.find = true;
                 self.e.next.f = self.f_label.val();
+                self.e.next.ring = self.f_ring.val();
                 self.e.next.col = self.last_col.val();
             } else if self.owed.q.val() {
                 self.e.next.mark = true;
                 self.e.next.col = self.last_col.val() + self.one.val();
+                self.e.next.ring = self.ovf.q.val();
+                if self.frame_err.val() {
+                    self.e.next.row = self.one7.val();
+                }
+                self.ovf.d.next = false;
             }
         }
         if self.rst.val() {
             self.tail.d.next = false;
             self.owed.d.next = false;
+            self.ovf.d.next = false;
         }
     }
 }

@@ -39,6 +39,8 @@ pub struct FccColIn {
     pub err: Signal<Out, Bit>,
     pub idle: Signal<Out, Bit>,
     pub idle_next: Signal<Out, Bit>,
+    /// A column's first slot enters the front.
+    pub col_begin: Signal<Out, Bit>,
     /// Run parameters: the frame's size (`last_row` is `R - 1`), K, the
     /// thresholds, the bridge and ring limits.
     pub run_rows: Signal<In, Bits<8>>,
@@ -94,6 +96,7 @@ impl FccColIn {
             err: Default::default(),
             idle: Default::default(),
             idle_next: Default::default(),
+            col_begin: Default::default(),
             run_rows: Default::default(),
             run_cols: Default::default(),
             last_row: Default::default(),
@@ -161,6 +164,7 @@ impl Logic for FccColIn {
         self.start.settled.next = self.settled.val();
         self.start.first.next = self.stage.col_first.val();
         self.start.accept.next = self.stage.slot_now.val();
+        self.col_begin.next = self.stage.col_first.val() & self.stage.slot_now.val();
         // The front.
         self.front.clk.next = self.clk.val();
         self.front.rst.next = self.rst.val();

@@ -55,6 +55,7 @@ pub struct FccColStart {
     fast: DFF<Bit>,
     room: DFF<Bits<OPEN_ROOM_BITS>>,
     margin: Constant<Bits<12>>,
+    need_max: Constant<Bits<12>>,
     zero: Constant<Bits<OPEN_ROOM_BITS>>,
 }
 
@@ -80,6 +81,7 @@ impl Default for FccColStart {
             fast: Default::default(),
             room: Default::default(),
             margin: kb(COUNT_MARGIN as u64),
+            need_max: kb(0xfff),
             zero: kb(0),
         }
     }
@@ -114,8 +116,10 @@ impl Logic for FccColStart {
             }
         }
         self.open_room.next = self.room.q.val();
+        // After a reset the counts are fresh only a cycle later: `need` at
+        // its largest keeps `fast` low until they are.
         if self.rst.val() {
-            self.need.d.next = self.margin.val();
+            self.need.d.next = self.need_max.val();
             self.fast.d.next = false;
             self.room.d.next = self.zero.val();
         }

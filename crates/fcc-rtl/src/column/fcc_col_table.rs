@@ -7,7 +7,10 @@
 //! their wait (`FccFlushWait`). Out of it: the queue's events (a make's
 //! label and slot, a find's root and slot, a join's slots kept and gone,
 //! a column's marker) and the oldest accumulator waiting for its find,
-//! for the record store.
+//! for the record store. `ev_ring` is a make's ring flag, a join's seam
+//! (the ring check's join), a frame-end find's hold 4, and the frame end
+//! marker's overflow (a pixel taken whose run was refused a label), whose
+//! `ev_row` bit 0 is the input's error flag of the frame (`frame_err`).
 //!
 //! A pixel is taken only when both blocks take it, the flushes' wait and
 //! the queue have room and the frame end's ops are not under way
@@ -43,6 +46,8 @@ pub struct FccColTable {
     pub hit_label: Vec<Signal<In, Bits<16>>>,
     pub take: Signal<Out, Bit>,
     /// The slot pool's head, and `slot_take` pops it.
+    /// The input's error flag of its last frame (read at the frame end).
+    pub frame_err: Signal<In, Bit>,
     pub slot_ok: Signal<In, Bit>,
     pub slot: Signal<In, Bits<SLOT_BITS>>,
     pub slot_take: Signal<Out, Bit>,
@@ -92,6 +97,7 @@ impl FccColTable {
             hit: vec_of(n),
             hit_label: vec_of(n),
             take: Default::default(),
+            frame_err: Default::default(),
             slot_ok: Default::default(),
             slot: Default::default(),
             slot_take: Default::default(),
@@ -168,6 +174,7 @@ impl Logic for FccColTable {
         self.pack.j_a.next = self.joins.j_a.val();
         self.pack.j_b.next = self.joins.j_b.val();
         self.pack.j_under.next = self.joins.j_under.val();
+        self.pack.j_seam.next = self.joins.j_seam.val();
         self.pack.j_more.next = self.joins.j_more.val();
         self.pack.last_row.next = self.last_row.val();
         // The queue's input: the packer's entries, the frame end's.
@@ -181,6 +188,7 @@ impl Logic for FccColTable {
         self.ends.pk.next.mark = self.pack.q_mark.val();
         self.ends.pk.next.ring = self.pack.q_ring.val();
         self.ends.pk.next.under = self.pack.q_under.val();
+        self.ends.pk.next.seam = self.pack.q_seam.val();
         self.ends.pk.next.f = self.pack.q_f.val();
         self.ends.pk.next.m = self.pack.q_m.val();
         self.ends.pk.next.ja = self.pack.q_ja.val();
@@ -190,7 +198,10 @@ impl Logic for FccColTable {
         self.ends.f_valid.next = self.runs.f_valid.val();
         self.ends.f_end.next = self.runs.f_end.val();
         self.ends.f_label.next = self.runs.f_label.val();
+        self.ends.f_ring.next = self.runs.f_ring.val();
         self.ends.done.next = self.runs.done.val();
+        self.ends.refused.next = self.go.val() & self.centre.val().refused;
+        self.ends.frame_err.next = self.frame_err.val();
         self.queue.clk.next = self.clk.val();
         self.queue.rst.next = self.rst.val();
         self.queue.in_valid.next = self.ends.e_valid.val();
@@ -200,6 +211,7 @@ impl Logic for FccColTable {
         self.queue.in_mark.next = self.ends.e.val().mark;
         self.queue.in_ring.next = self.ends.e.val().ring;
         self.queue.in_under.next = self.ends.e.val().under;
+        self.queue.in_seam.next = self.ends.e.val().seam;
         self.queue.in_f.next = self.ends.e.val().f;
         self.queue.in_m.next = self.ends.e.val().m;
         self.queue.in_ja.next = self.ends.e.val().ja;

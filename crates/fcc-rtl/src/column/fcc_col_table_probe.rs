@@ -235,6 +235,8 @@ impl Logic for FccColTableProbe {
         self.sets.last_row.next = self.last_row.val();
         self.sets.last_col.next = self.last_col.val();
         self.sets.half.next = self.half.val();
+        // The end beat's flags are the record store's (its bench: `col_core`).
+        self.sets.frame_err.next = self.inp.err.val();
         self.sets.slot_ok.next = self.slot_ok.val();
         self.sets.slot.next = self.slot.val();
         // A find waits for its accumulator.

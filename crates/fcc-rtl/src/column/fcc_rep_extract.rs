@@ -35,6 +35,8 @@ pub struct FccRepExtract {
     pub j_a: Signal<Out, Bits<16>>,
     pub j_b: Signal<Out, Bits<16>>,
     pub j_under: Signal<Out, Bit>,
+    /// The join is the ring check's.
+    pub j_seam: Signal<Out, Bit>,
     sieve: FccRepSieve,
     replay: FccRepReplay,
 }
@@ -56,6 +58,7 @@ impl FccRepExtract {
             j_a: Default::default(),
             j_b: Default::default(),
             j_under: Default::default(),
+            j_seam: Default::default(),
             sieve: FccRepSieve::new(n),
             replay: FccRepReplay::new(n),
         }
@@ -89,6 +92,7 @@ impl Logic for FccRepExtract {
         self.j_valid.next = self.replay.j_valid.val();
         self.j_a.next = self.replay.j_a.val();
         self.j_under.next = self.replay.under.val();
+        self.j_seam.next = self.replay.seam.val();
         self.j_b.next = self.replay.j_b.val();
     }
 }

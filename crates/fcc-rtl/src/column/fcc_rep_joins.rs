@@ -83,6 +83,8 @@ pub struct FccRepJoins {
     pub j_b: Signal<Out, Bits<16>>,
     /// `j_a` is the run the pixel started, filed under `j_b`'s cluster.
     pub j_under: Signal<Out, Bit>,
+    /// The join is the ring check's pair.
+    pub j_seam: Signal<Out, Bit>,
     pub miss: Signal<Out, Bit>,
     feed: FccRepRowFeed,
     window: FccRowReps,
@@ -149,6 +151,7 @@ impl FccRepJoins {
             j_a: Default::default(),
             j_b: Default::default(),
             j_under: Default::default(),
+            j_seam: Default::default(),
             miss: Default::default(),
             feed: FccRepRowFeed::new(rows, k, s),
             window: FccRowReps::new(k, s),
@@ -385,6 +388,7 @@ impl Logic for FccRepJoins {
         self.j_a.next = self.extract.j_a.val();
         self.j_b.next = self.extract.j_b.val();
         self.j_under.next = self.extract.j_under.val();
+        self.j_seam.next = self.extract.j_seam.val();
         self.miss.next = self.front.miss.val();
     }
 }

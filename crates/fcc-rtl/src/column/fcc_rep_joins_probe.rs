@@ -60,6 +60,7 @@ pub struct FccRepJoinsProbe {
     pub j_b: Signal<Out, Bits<16>>,
     /// `j_a` is the run the pixel started, filed under `j_b`'s cluster.
     pub j_under: Signal<Out, Bit>,
+    pub j_seam: Signal<Out, Bit>,
     pub miss: Signal<Out, Bit>,
     joins: FccRepJoins,
     pix: Signal<Local, RunPix>,
@@ -117,6 +118,7 @@ impl FccRepJoinsProbe {
             j_a: Default::default(),
             j_b: Default::default(),
             j_under: Default::default(),
+            j_seam: Default::default(),
             miss: Default::default(),
             joins: FccRepJoins::new(p.rows, p.fsize),
             pix: Default::default(),
@@ -182,6 +184,7 @@ impl Logic for FccRepJoinsProbe {
         self.j_a.next = self.joins.j_a.val();
         self.j_b.next = self.joins.j_b.val();
         self.j_under.next = self.joins.j_under.val();
+        self.j_seam.next = self.joins.j_seam.val();
         self.miss.next = self.joins.miss.val();
     }
 }

@@ -51,6 +51,8 @@ pub struct FccRepReplay {
     pub j_b: Signal<Out, Bits<16>>,
     /// `j_a` is the run the pixel started, filed under `j_b`'s cluster.
     pub under: Signal<Out, Bit>,
+    /// The join is the ring check's pair.
+    pub seam: Signal<Out, Bit>,
     first: FccRepFirst,
     take: FccRepTake,
     r_pix: DFF<RunPix>,
@@ -90,6 +92,7 @@ impl FccRepReplay {
             j_a: Default::default(),
             j_b: Default::default(),
             under: Default::default(),
+            seam: Default::default(),
             first: FccRepFirst::new(n),
             take: FccRepTake::new(n),
             r_pix: Default::default(),
@@ -194,6 +197,7 @@ impl Logic for FccRepReplay {
         self.j_a.next = self.r_pix.q.val().ring_a;
         self.j_b.next = self.r_pix.q.val().ring_b;
         self.under.next = false;
+        self.seam.next = !self.r_emit.q.val();
         if self.r_emit.q.val() {
             self.j_a.next = self.r_x.q.val();
             self.j_b.next = self.r_m.q.val();

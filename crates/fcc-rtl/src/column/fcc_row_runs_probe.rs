@@ -66,6 +66,7 @@ pub struct FccRowRunsProbe {
     pub o_refused: Signal<Out, Bit>,
     pub o_ring_first: Signal<Out, Bit>,
     pub o_ring: Signal<Out, Bit>,
+    pub o_ring_hold: Signal<Out, Bit>,
     pub o_ring_a: Signal<Out, Bits<16>>,
     pub o_ring_b: Signal<Out, Bits<16>>,
     pub o_hold_drop: Signal<Out, Bits<16>>,
@@ -127,6 +128,7 @@ impl FccRowRunsProbe {
             o_refused: Default::default(),
             o_ring_first: Default::default(),
             o_ring: Default::default(),
+            o_ring_hold: Default::default(),
             o_ring_a: Default::default(),
             o_ring_b: Default::default(),
             o_hold_drop: Default::default(),
@@ -197,6 +199,7 @@ impl Logic for FccRowRunsProbe {
         self.o_refused.next = self.runs.out.val().refused;
         self.o_ring_first.next = self.runs.out.val().ring_first;
         self.o_ring.next = self.runs.out.val().ring;
+        self.o_ring_hold.next = self.runs.out.val().ring_hold;
         self.o_ring_a.next = self.runs.out.val().ring_a;
         self.o_ring_b.next = self.runs.out.val().ring_b;
         self.o_hold_drop.next = self.runs.out.val().hold_drop;

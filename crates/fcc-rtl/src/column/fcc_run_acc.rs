@@ -55,6 +55,8 @@ pub const RUN_ACC_LATENCY: usize = ACC_PIXEL_LATENCY + 3;
 #[derive(Clone, Copy, Debug, PartialEq, Default, LogicStruct)]
 pub struct RunEntry {
     pub label: Bits<16>,
+    /// The row holds the run by hold 4 after the last column.
+    pub ring: Bit,
     pub acc: AccWord,
 }
 
@@ -69,6 +71,7 @@ pub struct RunStep {
     pub row: Bits<7>,
     pub label: Bits<16>,
     pub hold_drop: Bits<16>,
+    pub ring_hold: Bit,
 }
 
 /// What D decided for W: write the row's entry (its label and live flag),
@@ -85,6 +88,9 @@ pub struct RunWrite {
     pub flush_label: Bits<16>,
     /// The flush is the frame end's.
     pub end: Bit,
+    /// The entry's hold-4 flag; the frame end's flush is of a run so held.
+    pub ring: Bit,
+    pub f_ring: Bit,
     pub done: Bit,
 }
 
@@ -107,6 +113,9 @@ pub struct FccRunAcc {
     /// The flush is the frame end's (a row's run still open after the
     /// frame's last pixel), not a pixel's.
     pub f_end: Signal<Out, Bit>,
+    /// A frame-end flush whose run the row holds by hold 4 (its cluster
+    /// is held to the frame end).
+    pub f_ring: Signal<Out, Bit>,
     /// The frame-end flush is complete (one cycle, with the last row's
     /// flush if it has one).
     pub done: Signal<Out, Bit>,
@@ -160,6 +169,7 @@ pub struct FccRunAcc {
     f_label_q: DFF<Bits<16>>,
     f_acc_q: DFF<AccWord>,
     f_end_q: DFF<Bit>,
+    f_ring_q: DFF<Bit>,
     done_q: DFF<Bit>,
     bad_q: DFF<Bit>,
     row_id: Vec<Constant<Bits<7>>>,
@@ -187,6 +197,7 @@ impl FccRunAcc {
             f_label: Default::default(),
             f_acc: Default::default(),
             f_end: Default::default(),
+            f_ring: Default::default(),
             done: Default::default(),
             bad: Default::default(),
             pixel: Default::default(),
@@ -220,6 +231,7 @@ impl FccRunAcc {
             f_label_q: Default::default(),
             f_acc_q: Default::default(),
             f_end_q: Default::default(),
+            f_ring_q: Default::default(),
             done_q: Default::default(),
             bad_q: Default::default(),
             row_id: (0..rows).map(|r| kb(r as u64)).collect(),
@@ -238,7 +250,7 @@ impl Logic for FccRunAcc {
     fn update(&mut self) {
         dff_setup!(
             self, clk, busy, drain_row, live_row, old_live_q, e_wr, e_a, e_b, e_old, w_wr, w_acc,
-            w_old, f_valid_q, f_label_q, f_acc_q, f_end_q, done_q, bad_q
+            w_old, f_valid_q, f_label_q, f_acc_q, f_end_q, f_ring_q, done_q, bad_q
         );
         self.ready.next = !self.busy.q.val();
         // IN: the pixel's step, and its accumulator's inputs.
@@ -253,6 +265,7 @@ impl Logic for FccRunAcc {
             self.steps[0].d.next.row = self.inp.val().row;
             self.steps[0].d.next.label = self.inp.val().label;
             self.steps[0].d.next.hold_drop = self.inp.val().hold_drop;
+            self.steps[0].d.next.ring_hold = self.inp.val().ring_hold;
         }
         self.pixel.clk.next = self.clk.val();
         self.pixel.rst.next = self.rst.val();
@@ -359,6 +372,8 @@ impl Logic for FccRunAcc {
             self.wr.next.flush = self.old_live.val();
         }
         self.wr.next.end = self.dstep.val().drain;
+        self.wr.next.ring = self.dstep.val().ring_hold;
+        self.wr.next.f_ring = self.dstep.val().drain & self.entries.read_data.val().ring;
         self.wr.next.done = self.dstep.val().drain & (self.dstep.val().row == self.last_row.val());
         self.e_wr.d.next = self.wr.val();
         self.e_a.d.next = self.empty.val();
@@ -381,6 +396,7 @@ impl Logic for FccRunAcc {
         self.entries.write_addr.next = self.w_wr.q.val().row;
         self.w_entry.next.label = self.w_wr.q.val().label;
         self.w_entry.next.acc = self.w_acc.q.val();
+        self.w_entry.next.ring = self.w_wr.q.val().ring;
         self.entries.write_data.next = self.w_entry.val();
         for r in 0..self.row_id.len() {
             self.live[r].clock.next = self.clk.val();
@@ -399,11 +415,13 @@ impl Logic for FccRunAcc {
             self.f_acc_q.d.next = self.w_old.q.val();
         }
         self.f_end_q.d.next = self.w_wr.q.val().end;
+        self.f_ring_q.d.next = self.w_wr.q.val().f_ring;
         self.done_q.d.next = self.w_wr.q.val().done;
         self.f_valid.next = self.f_valid_q.q.val();
         self.f_label.next = self.f_label_q.q.val();
         self.f_acc.next = self.f_acc_q.q.val();
         self.f_end.next = self.f_end_q.q.val();
+        self.f_ring.next = self.f_ring_q.q.val();
         self.done.next = self.done_q.q.val();
         // A pixel that continues a run must find it open in its row.
         self.bad_q.d.next = self.bad_q.q.val();

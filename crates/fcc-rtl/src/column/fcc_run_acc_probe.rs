@@ -24,6 +24,7 @@ pub struct FccRunAccProbe {
     pub start: Signal<In, Bit>,
     pub hold_drop: Signal<In, Bits<16>>,
     pub last: Signal<In, Bit>,
+    pub ring_hold: Signal<In, Bit>,
     pub half: Signal<In, Bits<12>>,
     pub last_row: Signal<In, Bits<7>>,
     pub drain_go: Signal<In, Bit>,
@@ -31,6 +32,7 @@ pub struct FccRunAccProbe {
     pub f_valid: Signal<Out, Bit>,
     pub f_label: Signal<Out, Bits<16>>,
     pub f_end: Signal<Out, Bit>,
+    pub f_ring: Signal<Out, Bit>,
     pub done: Signal<Out, Bit>,
     pub bad: Signal<Out, Bit>,
     pub o_points: Signal<Out, Bits<20>>,
@@ -79,6 +81,7 @@ impl FccRunAccProbe {
             start: Default::default(),
             hold_drop: Default::default(),
             last: Default::default(),
+            ring_hold: Default::default(),
             half: Default::default(),
             last_row: Default::default(),
             drain_go: Default::default(),
@@ -86,6 +89,7 @@ impl FccRunAccProbe {
             f_valid: Default::default(),
             f_label: Default::default(),
             f_end: Default::default(),
+            f_ring: Default::default(),
             done: Default::default(),
             bad: Default::default(),
             o_points: Default::default(),
@@ -134,6 +138,7 @@ impl Logic for FccRunAccProbe {
         self.pix.next.start = self.start.val();
         self.pix.next.hold_drop = self.hold_drop.val();
         self.pix.next.last = self.last.val();
+        self.pix.next.ring_hold = self.ring_hold.val();
         self.acc.clk.next = self.clk.val();
         self.acc.rst.next = self.rst.val();
         self.acc.inp.next = self.pix.val();
@@ -144,6 +149,7 @@ impl Logic for FccRunAccProbe {
         self.f_valid.next = self.acc.f_valid.val();
         self.f_label.next = self.acc.f_label.val();
         self.f_end.next = self.acc.f_end.val();
+        self.f_ring.next = self.acc.f_ring.val();
         self.done.next = self.acc.done.val();
         self.bad.next = self.acc.bad.val();
         self.o_points.next = self.acc.f_acc.val().points;

@@ -164,6 +164,7 @@ impl Logic for FccRunDecide {
             & (self.taken.val() | self.ctl.val().f_ne_l);
         self.out.next.ring_a = self.f_lab.val();
         self.out.next.ring_b = self.l_lab.val();
+        self.out.next.ring_hold = self.ctl.val().last_col & self.held.val();
         self.out.next.hold_drop = self.zero16.val();
         self.out.next.hold_add = self.zero16.val();
         self.out.next.hold_rep = self.zero16.val();

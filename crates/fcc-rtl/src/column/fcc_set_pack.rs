@@ -40,6 +40,8 @@ pub struct FccSetPack {
     pub j_a: Signal<In, Bits<16>>,
     pub j_b: Signal<In, Bits<16>>,
     pub j_under: Signal<In, Bit>,
+    /// The join is the ring check's.
+    pub j_seam: Signal<In, Bit>,
     /// The pixel out last has joins still to come after this cycle's.
     pub j_more: Signal<In, Bit>,
     /// The frame's last row, `R - 1` (constant while a frame runs).
@@ -51,6 +53,7 @@ pub struct FccSetPack {
     pub q_mark: Signal<Out, Bit>,
     pub q_ring: Signal<Out, Bit>,
     pub q_under: Signal<Out, Bit>,
+    pub q_seam: Signal<Out, Bit>,
     pub q_f: Signal<Out, Bits<16>>,
     pub q_m: Signal<Out, Bits<16>>,
     pub q_ja: Signal<Out, Bits<16>>,
@@ -85,6 +88,7 @@ impl Logic for FccSetPack {
         self.ent.next.mark = self.owed.val() & !self.j_more.val();
         self.ent.next.ring = self.p_ring_first.val();
         self.ent.next.under = self.j_valid.val() & self.j_under.val();
+        self.ent.next.seam = self.j_valid.val() & self.j_seam.val();
         self.ent.next.f = self.p_hold_rep.val();
         self.ent.next.m = self.p_label.val();
         self.ent.next.ja = self.j_a.val();
@@ -104,6 +108,7 @@ impl Logic for FccSetPack {
         self.q_mark.next = self.e.q.val().mark;
         self.q_ring.next = self.e.q.val().ring;
         self.q_under.next = self.e.q.val().under;
+        self.q_seam.next = self.e.q.val().seam;
         self.q_f.next = self.e.q.val().f;
         self.q_m.next = self.e.q.val().m;
         self.q_ja.next = self.e.q.val().ja;

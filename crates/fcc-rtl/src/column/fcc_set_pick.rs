@@ -70,6 +70,15 @@ impl Logic for FccSetPick {
         self.op.next.join = self.sel_join.val();
         self.op.next.mark = !self.sel_find.val() & !self.sel_make.val() & !self.sel_join.val();
         self.op.next.ring = self.bundle.val().ring;
+        // A join's: the ring check's; a find's: the frame end's flush of a
+        // run held by hold 4 (a make's ring flag belongs to the make: a
+        // row's first run starts with a make).
+        if self.sel_join.val() {
+            self.op.next.ring = self.bundle.val().seam;
+        }
+        if self.sel_find.val() {
+            self.op.next.ring = self.bundle.val().ring & !self.bundle.val().make;
+        }
         self.op.next.under = self.bundle.val().under;
         self.op.next.a = self.bundle.val().ja;
         if self.sel_find.val() {

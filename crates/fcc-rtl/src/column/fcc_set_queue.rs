@@ -42,8 +42,11 @@ pub const SET_QUEUE_ROOM: usize = 64;
 /// A pixel slot's ops, an entry of the queue: a find of `f`; a make of
 /// `m` (its first pixel `col` and `row`, its ring flag `ring`); a join of
 /// `ja` and `jb` (`under`: `ja` a run just started, filed under `jb`'s
-/// cluster); the marker of column `col`. Each at the column of the pixel
-/// slot that caused it.
+/// cluster; `seam`: the ring check's); the marker of column `col`. Each at
+/// the column of the pixel slot that caused it. The frame end's entries
+/// (`FccColEnd`) use `ring` for more: a find's, its run held by hold 4;
+/// the frame end's marker's, the frame's overflow (and `row` bit 0, its
+/// input error).
 #[derive(Clone, Copy, Debug, PartialEq, Default, LogicStruct)]
 pub struct SetQBundle {
     pub find: Bit,
@@ -52,6 +55,7 @@ pub struct SetQBundle {
     pub mark: Bit,
     pub ring: Bit,
     pub under: Bit,
+    pub seam: Bit,
     pub f: Bits<16>,
     pub m: Bits<16>,
     pub ja: Bits<16>,
@@ -103,6 +107,7 @@ pub struct FccSetQueue {
     pub in_mark: Signal<In, Bit>,
     pub in_ring: Signal<In, Bit>,
     pub in_under: Signal<In, Bit>,
+    pub in_seam: Signal<In, Bit>,
     pub in_f: Signal<In, Bits<16>>,
     pub in_m: Signal<In, Bits<16>>,
     pub in_ja: Signal<In, Bits<16>>,
@@ -157,6 +162,7 @@ impl FccSetQueue {
             in_mark: Default::default(),
             in_ring: Default::default(),
             in_under: Default::default(),
+            in_seam: Default::default(),
             in_f: Default::default(),
             in_m: Default::default(),
             in_ja: Default::default(),
@@ -213,6 +219,7 @@ impl Logic for FccSetQueue {
         self.slot_in.next.mark = self.in_mark.val();
         self.slot_in.next.ring = self.in_ring.val();
         self.slot_in.next.under = self.in_under.val();
+        self.slot_in.next.seam = self.in_seam.val();
         self.slot_in.next.f = self.in_f.val();
         self.slot_in.next.m = self.in_m.val();
         self.slot_in.next.ja = self.in_ja.val();

@@ -35,6 +35,7 @@ pub mod fcc_closer;
 pub mod fcc_closer_in;
 pub mod fcc_closer_list;
 pub mod fcc_closer_pass;
+pub mod fcc_col_core;
 pub mod fcc_col_dist;
 pub mod fcc_col_dist_probe;
 pub mod fcc_col_edge;
@@ -43,9 +44,11 @@ pub mod fcc_col_front;
 pub mod fcc_col_front_probe;
 pub mod fcc_col_in;
 pub mod fcc_col_in_probe;
+pub mod fcc_col_settle;
 pub mod fcc_col_slot_buf;
 pub mod fcc_col_slot_buf_probe;
 pub mod fcc_col_start;
+pub mod fcc_col_store;
 pub mod fcc_col_table;
 pub mod fcc_col_table_probe;
 pub mod fcc_col_window;
@@ -104,6 +107,9 @@ pub mod fcc_slot_issue;
 pub mod fcc_slot_pipe;
 pub mod fcc_slot_records;
 pub mod fcc_slot_records_probe;
+pub mod fcc_slot_returns;
+pub mod fcc_store_end;
+pub mod fcc_store_ops;
 
 use rust_hdl::prelude::*;
 
@@ -254,6 +260,10 @@ pub struct RunPix {
     /// closes at the frame end).
     pub hold_drop: Bits<16>,
     pub hold_add: Bits<16>,
+    /// At the last column: the row still holds its latest run by hold 4
+    /// (its ring check pends), so that run's cluster is held to the frame
+    /// end, not only to the last column (spec §9.2).
+    pub ring_hold: Bit,
     /// A label of `hold_drop`'s cluster, for its flush's find: `hold_drop`
     /// out of `FccRowRuns`, its run's representative out of `FccRepJoins`
     /// (a shallower walk).

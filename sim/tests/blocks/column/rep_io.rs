@@ -59,6 +59,7 @@ c_struct! {
         pub j_a: u16,
         pub j_b: u16,
         pub j_under: u8,
+        pub j_seam: u8,
         pub miss: u8,
     }
 }

@@ -1,0 +1,413 @@
+//! The column core's datapath, `fcc_col_core` (`FccColCore`: the input,
+//! slot table and record store halves wired) under Verilator: frames sent
+//! as AXI4-Stream beats in column order with random gaps, back to back,
+//! the record stream taken under random back-pressure and read by
+//! `fcc_pixel::record::RecordReader`. Every record and every end beat must
+//! be the golden stream's (`fcc_golden::Stream`, spec §9.3 and §9.4),
+//! record for record and in order: ids, counts, columns, rows, boxes,
+//! ranges, sums, seams, the end beat's count and overflow flag. Cases: the
+//! fewest rows, bridge and ring limits (seam clusters), range-adaptive
+//! thresholds, an open limit that binds (the end beat's overflow), a reset
+//! in the middle of a frame (then that frame again). At K = 3 and 11. A
+//! mismatch prints K, the case, the frame, the item and the seed, the
+//! frame's items read and expected from there to its end, and the first
+//! difference in full.
+
+use std::collections::VecDeque;
+
+use crate::col_in::beats;
+use crate::column::{random_frame, run_params};
+
+use fcc_golden::{Frame, Stream};
+use fcc_params::FccParams;
+use fcc_pixel::record::{Item, RecordReader};
+use fcc_rtl::{BenchBlock, RunLimits};
+use fcc_sim::core_form::thr_inputs;
+use fcc_sim::{c_struct, load_plain, PlainDut};
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+
+c_struct! {
+    /// Inputs of one cycle, named as the ports of `FccColCore`.
+    pub struct TbIn {
+        pub s_axis_tdata: u64,
+        pub ch_t: u64,
+        pub cv_t: u64,
+        pub sh: u32,
+        pub sv: u32,
+        pub run_cols: u16,
+        pub last_col: u16,
+        pub col_half: u16,
+        pub reach: u16,
+        pub ring_f_max: u16,
+        pub ring_l_min: u16,
+        pub n_o: u16,
+        pub rst: u8,
+        pub rst_next: u8,
+        pub s_axis_tvalid: u8,
+        pub s_axis_tlast: u8,
+        pub run: u8,
+        pub restart: u8,
+        pub run_next: u8,
+        pub run_rows: u8,
+        pub last_row: u8,
+        pub run_k: u8,
+        pub h: u8,
+        pub ring_on: u8,
+        pub m_axis_tready: u8,
+    }
+}
+
+c_struct! {
+    /// Outputs during one cycle.
+    pub struct TbOut {
+        pub m_axis_tdata: u64,
+        pub s_axis_tready: u8,
+        pub in_done: u8,
+        pub err: u8,
+        pub idle: u8,
+        pub idle_next: u8,
+        pub m_axis_tvalid: u8,
+        pub m_axis_tlast: u8,
+        pub miss: u8,
+        pub bad: u8,
+    }
+}
+
+/// The build's label bits: the column core's (13 hold the corpus).
+const LABEL_BITS: u32 = 13;
+
+/// A cycle's inputs with nothing offered: the frame's run parameters.
+fn params_in(p: &FccParams) -> TbIn {
+    let lim = RunLimits::new(p);
+    let thr = thr_inputs(p);
+    TbIn {
+        run: 1,
+        run_next: 1,
+        run_rows: p.rows as u8,
+        run_cols: p.cols as u16,
+        last_row: (p.rows - 1) as u8,
+        last_col: (p.cols - 1) as u16,
+        col_half: (p.cols / 2) as u16,
+        run_k: p.fsize as u8,
+        h: (p.fsize / 2) as u8,
+        ch_t: thr.ch_t,
+        cv_t: thr.cv_t,
+        sh: thr.sh,
+        sv: thr.sv,
+        reach: lim.reach,
+        ring_on: lim.ring_on as u8,
+        ring_f_max: lim.ring_f_max,
+        ring_l_min: lim.ring_l_min,
+        n_o: p.open_limit.map_or(511, |n| n.min(511)) as u16,
+        ..TbIn::default()
+    }
+}
+
+/// A frame's beats in and the golden stream's items out.
+struct Golden {
+    beats: Vec<u64>,
+    items: Vec<Item>,
+}
+
+impl Golden {
+    fn of(p: &FccParams, f: &Frame) -> Golden {
+        let mut s = Stream::new(p).expect("the golden stream");
+        let mut items = Vec::new();
+        let mut column = vec![None; p.rows];
+        for c in 0..p.cols {
+            for (r, v) in column.iter_mut().enumerate() {
+                *v = f.get(r, c);
+            }
+            let recs = s.push_column(&column).expect("a column");
+            items.extend(recs.iter().map(|r| Item::Record(r.hw())));
+        }
+        let recs = s.finish().expect("the frame end");
+        items.extend(recs.iter().map(|r| Item::Record(r.hw())));
+        items.push(Item::End(s.frame_end().expect("finished")));
+        Golden {
+            beats: beats(p, f),
+            items,
+        }
+    }
+}
+
+/// An item in one line.
+fn short(i: &Item) -> String {
+    match i {
+        Item::Record(r) => format!(
+            "record {}: {} points, columns {}..{} closed at {}, rows {}..{}, seam {}",
+            r.id, r.points, r.first_col, r.last_col, r.closed_col, r.first_row, r.last_row, r.seam
+        ),
+        Item::End(e) => format!("{e:?}"),
+    }
+}
+
+/// The frame's items from the first difference to its end beat, read and
+/// expected, then the first difference in full.
+fn mismatch(at: &str, got: &[Item], want: &[Item]) -> ! {
+    for (g, w) in got.iter().zip(want) {
+        eprintln!(
+            "got      {}
+expected {}",
+            short(g),
+            short(w)
+        );
+    }
+    panic!(
+        "{at}: the item (left) against the golden one (right)\n  left: {:?}\n right: {:?}",
+        got[0], want[0]
+    );
+}
+
+/// What the runs saw.
+#[derive(Default, Debug)]
+struct Seen {
+    records: usize,
+    seams: usize,
+    overflows: usize,
+    frames: usize,
+    pixels: usize,
+    cycles: usize,
+}
+
+/// The frames back to back (the next frame's beats offered as soon as the
+/// input stage has the last one's); `cut`: a reset after that many beats
+/// of the last frame, then that frame again. Every item out is checked
+/// against the next one expected.
+#[allow(clippy::too_many_arguments)]
+fn run_frames(
+    dut: &mut PlainDut<TbIn, TbOut>,
+    p: &FccParams,
+    frames: &[Golden],
+    ready: f64,
+    cut: Option<usize>,
+    rng: &mut ChaCha8Rng,
+    what: &str,
+    seed: u64,
+) -> Seen {
+    let px = p.pixels();
+    let total = frames.len() * px;
+    let mut cut = cut.map(|n| (frames.len() - 1) * px + n);
+    let mut seen = Seen::default();
+    // Items expected, each with its frame; the reader of the beats.
+    let mut want: VecDeque<(usize, Item)> = frames
+        .iter()
+        .enumerate()
+        .flat_map(|(n, g)| g.items.iter().map(move |i| (n, *i)))
+        .collect();
+    let mut reader = RecordReader::new();
+    let (mut next, mut restart) = (0usize, Some(0usize));
+    let mut cycles = 0usize;
+    let mut item = 0usize;
+    // The first mismatch: where, the items read and expected since.
+    let mut bad: Option<(String, Vec<Item>, Vec<Item>)> = None;
+    while !want.is_empty() {
+        if cut == Some(next) {
+            // A reset mid-frame, then that frame again.
+            for (rst_next, rst) in [(1, 0), (0, 1)] {
+                dut.step(&TbIn {
+                    rst_next,
+                    rst,
+                    ..params_in(p)
+                });
+            }
+            let last = frames.len() - 1;
+            (cut, next, restart) = (None, last * px, Some(last));
+            want = frames[last].items.iter().map(|i| (last, *i)).collect();
+            reader = RecordReader::new();
+        }
+        let frame = next.min(total - 1) / px;
+        let valid = next < total && restart.is_none() && rng.gen_bool(0.8);
+        let take = rng.gen_bool(ready);
+        let i = TbIn {
+            s_axis_tdata: if valid {
+                frames[frame].beats[next % px]
+            } else {
+                0
+            },
+            s_axis_tvalid: valid as u8,
+            s_axis_tlast: (valid && (next + 1) % px == 0) as u8,
+            restart: restart.is_some() as u8,
+            m_axis_tready: take as u8,
+            ..params_in(p)
+        };
+        restart = None;
+        let o = dut.step(&i);
+        let (n, _) = want.front().copied().expect("an item expected");
+        let at = format!(
+            "K = {}, {what}: frame {n}, item {item}, seed {seed:#x}",
+            p.fsize
+        );
+        assert_eq!(o.err, 0, "{at}: a frame error");
+        assert_eq!(o.bad, 0, "{at}: bad");
+        assert_eq!(o.miss, 0, "{at}: a label not in its row");
+        if valid && o.s_axis_tready != 0 {
+            next += 1;
+        }
+        if o.in_done != 0 && next % px == 0 && next < total && next > 0 {
+            restart = Some(next / px);
+        }
+        if o.m_axis_tvalid != 0 && take {
+            let k = reader.beats();
+            match reader.push(o.m_axis_tdata, o.m_axis_tlast != 0) {
+                Ok(Some(got)) => {
+                    let (_, exp) = want.pop_front().expect("an item expected");
+                    if got != exp || bad.is_some() {
+                        // Keep reading to the frame's end beat, then show
+                        // the frame's items from the first difference.
+                        bad.get_or_insert_with(|| (at.clone(), Vec::new(), Vec::new()));
+                        let (first, gots, exps) = bad.as_mut().expect("set");
+                        gots.push(got);
+                        exps.push(exp);
+                        if matches!(got, Item::End(_)) {
+                            mismatch(first, gots, exps);
+                        }
+                    }
+                    item += 1;
+                    match got {
+                        Item::Record(r) => {
+                            seen.records += 1;
+                            seen.seams += usize::from(r.seam);
+                        }
+                        Item::End(e) => {
+                            seen.frames += 1;
+                            seen.overflows += usize::from(e.overflow);
+                            item = 0;
+                        }
+                    }
+                }
+                Ok(None) => {}
+                Err(e) => panic!("{at}: output beat {k}: {e} (beat {:#x})", o.m_axis_tdata),
+            }
+        }
+        cycles += 1;
+        assert!(
+            cycles < 30 * total + 20_000,
+            "{at}: {} items still expected after {cycles} cycles ({next} beats in)",
+            want.len()
+        );
+    }
+    // Nothing more comes out.
+    for _ in 0..200 {
+        let o = dut.step(&TbIn {
+            m_axis_tready: 1,
+            ..params_in(p)
+        });
+        assert_eq!(
+            o.m_axis_tvalid, 0,
+            "K = {}, {what}: a beat after the last frame end, seed {seed:#x}",
+            p.fsize
+        );
+    }
+    seen.pixels = total;
+    seen.cycles = cycles;
+    seen
+}
+
+fn every_case(k: usize) {
+    let build = FccParams {
+        fsize: k,
+        label_bits: LABEL_BITS,
+        ..FccParams::default()
+    };
+    let base = |rows, cols| FccParams {
+        fsize: k,
+        label_bits: LABEL_BITS,
+        ..run_params(rows, cols)
+    };
+    let cases: [(&str, FccParams, f64); 4] = [
+        (
+            "the fewest rows, records taken often",
+            // `FccRepJoins` takes frames of `max(16, K + 8)` rows.
+            base((k + 8).max(16), 48),
+            0.9,
+        ),
+        (
+            "bridge 2, ring reach 6, records taken rarely",
+            FccParams {
+                bridge: Some(2),
+                ring_reach: Some(6),
+                ..base(20, 40)
+            },
+            0.3,
+        ),
+        (
+            "range-adaptive, records taken every cycle",
+            FccParams {
+                th_h: 0.1,
+                th_h_slope: 0.05,
+                th_v_slope: 0.03,
+                ..base(24, 36)
+            },
+            1.0,
+        ),
+        (
+            "an open limit of 12",
+            FccParams {
+                open_limit: Some(12),
+                ..base((k + 8).max(16), 40)
+            },
+            0.7,
+        ),
+    ];
+    let model = load_plain::<TbIn, TbOut>(BenchBlock::ColCore, &build).expect("the column core");
+    let mut all = Seen::default();
+    for (n, (what, p, ready)) in cases.iter().enumerate() {
+        let seed = 0xc0c0_0000 + (k * 16 + n) as u64;
+        let mut dut = PlainDut::new(model.clone());
+        for (rst_next, rst) in [(1, 0), (1, 1), (0, 1), (0, 0)] {
+            dut.step(&TbIn {
+                rst_next,
+                rst,
+                ..params_in(p)
+            });
+        }
+        let mut rng = ChaCha8Rng::seed_from_u64(seed);
+        let frames: Vec<Golden> = [(0.8, 0.05), (0.5, 0.1), (0.7, 0.05)]
+            .iter()
+            .map(|&(density, jump)| {
+                Golden::of(
+                    p,
+                    &random_frame(p.rows, p.cols, density, jump, true, &mut rng),
+                )
+            })
+            .collect();
+        // Three frames back to back; then the last two again with a reset
+        // in the middle of the second.
+        let mid = rng.gen_range(1..p.pixels());
+        for (from, cut) in [(0, None), (1, Some(mid))] {
+            let s = run_frames(
+                &mut dut,
+                p,
+                &frames[from..],
+                *ready,
+                cut,
+                &mut rng,
+                what,
+                seed,
+            );
+            all.records += s.records;
+            all.seams += s.seams;
+            all.overflows += s.overflows;
+            all.frames += s.frames;
+            all.pixels += s.pixels;
+            all.cycles += s.cycles;
+        }
+    }
+    eprintln!("K = {k}: {all:?}");
+    assert!(
+        all.records > 200 && all.seams > 0 && all.overflows > 0,
+        "K = {k}: too little seen: {all:?}"
+    );
+}
+
+#[test]
+fn the_core_streams_the_golden_records_k3() {
+    every_case(3);
+}
+
+#[test]
+fn the_core_streams_the_golden_records_k11() {
+    every_case(11);
+}
