@@ -5,10 +5,13 @@
 //! `fcc_pixel::record::RecordReader`. Every record and every end beat must
 //! be the golden stream's (`fcc_golden::Stream`, spec §9.3 and §9.4),
 //! record for record and in order: ids, counts, columns, rows, boxes,
-//! ranges, sums, seams, the end beat's count and overflow flag. Cases: the
-//! fewest rows, bridge and ring limits (seam clusters), range-adaptive
-//! thresholds, an open limit that binds (the end beat's overflow), a reset
-//! in the middle of a frame (then that frame again). At K = 3 and 11. A
+//! ranges, sums, seams, the end beat's count and flags. Cases: the fewest
+//! rows, bridge and ring limits (seam clusters), range-adaptive
+//! thresholds, an open limit that binds (the end beat's overflow); in
+//! each, frames whose `tlast` comes early (the rest of the frame empty)
+//! and late (the beats after it dropped), both with the end beat's input
+//! error, and a reset in the middle of a frame (then that frame again).
+//! At K = 3 and 11. A
 //! mismatch prints K, the case, the frame, the item and the seed, the
 //! frame's items read and expected from there to its end, and the first
 //! difference in full.
@@ -20,7 +23,7 @@ use crate::column::{random_frame, run_params};
 
 use fcc_golden::{Frame, Stream};
 use fcc_params::FccParams;
-use fcc_pixel::record::{Item, RecordReader};
+use fcc_pixel::record::{FrameEnd, Item, RecordReader};
 use fcc_rtl::{BenchBlock, RunLimits};
 use fcc_sim::core_form::thr_inputs;
 use fcc_sim::{c_struct, load_plain, PlainDut};
@@ -64,7 +67,6 @@ c_struct! {
         pub m_axis_tdata: u64,
         pub s_axis_tready: u8,
         pub in_done: u8,
-        pub err: u8,
         pub idle: u8,
         pub idle_next: u8,
         pub m_axis_tvalid: u8,
@@ -112,24 +114,54 @@ struct Golden {
 
 impl Golden {
     fn of(p: &FccParams, f: &Frame) -> Golden {
-        let mut s = Stream::new(p).expect("the golden stream");
-        let mut items = Vec::new();
-        let mut column = vec![None; p.rows];
-        for c in 0..p.cols {
-            for (r, v) in column.iter_mut().enumerate() {
-                *v = f.get(r, c);
-            }
-            let recs = s.push_column(&column).expect("a column");
-            items.extend(recs.iter().map(|r| Item::Record(r.hw())));
-        }
-        let recs = s.finish().expect("the frame end");
-        items.extend(recs.iter().map(|r| Item::Record(r.hw())));
-        items.push(Item::End(s.frame_end().expect("finished")));
         Golden {
             beats: beats(p, f),
-            items,
+            items: items(p, f, false),
         }
     }
+
+    /// The frame's `tlast` after its first `n` beats: the frame with the
+    /// rest of its pixels empty, and an input error (spec §9.4).
+    fn early(p: &FccParams, f: &Frame, n: usize) -> Golden {
+        let mut short = f.clone();
+        for k in n..p.pixels() {
+            short.set(k % p.rows, k / p.rows, None);
+        }
+        Golden {
+            beats: beats(p, f)[..n].to_vec(),
+            items: items(p, &short, true),
+        }
+    }
+
+    /// The frame's `tlast` `extra` beats after its last pixel: those beats
+    /// dropped, and an input error.
+    fn late(p: &FccParams, f: &Frame, extra: usize, rng: &mut ChaCha8Rng) -> Golden {
+        let mut b = beats(p, f);
+        b.extend((0..extra).map(|_| rng.gen::<u64>() & ((1 << 49) - 1)));
+        Golden {
+            beats: b,
+            items: items(p, f, true),
+        }
+    }
+}
+
+/// The golden stream's records of a frame, then its end beat.
+fn items(p: &FccParams, f: &Frame, frame_error: bool) -> Vec<Item> {
+    let mut s = Stream::new(p).expect("the golden stream");
+    let mut items = Vec::new();
+    let mut column = vec![None; p.rows];
+    for c in 0..p.cols {
+        for (r, v) in column.iter_mut().enumerate() {
+            *v = f.get(r, c);
+        }
+        let recs = s.push_column(&column).expect("a column");
+        items.extend(recs.iter().map(|r| Item::Record(r.hw())));
+    }
+    let recs = s.finish().expect("the frame end");
+    items.extend(recs.iter().map(|r| Item::Record(r.hw())));
+    let end = s.frame_end().expect("finished");
+    items.push(Item::End(FrameEnd { frame_error, ..end }));
+    items
 }
 
 /// An item in one line.
@@ -167,6 +199,7 @@ struct Seen {
     seams: usize,
     overflows: usize,
     frames: usize,
+    errors: usize,
     pixels: usize,
     cycles: usize,
 }
@@ -186,9 +219,9 @@ fn run_frames(
     what: &str,
     seed: u64,
 ) -> Seen {
-    let px = p.pixels();
-    let total = frames.len() * px;
-    let mut cut = cut.map(|n| (frames.len() - 1) * px + n);
+    let total: usize = frames.iter().map(|g| g.beats.len()).sum();
+    let last = frames.len() - 1;
+    let mut cut = cut;
     let mut seen = Seen::default();
     // Items expected, each with its frame; the reader of the beats.
     let mut want: VecDeque<(usize, Item)> = frames
@@ -197,13 +230,17 @@ fn run_frames(
         .flat_map(|(n, g)| g.items.iter().map(move |i| (n, *i)))
         .collect();
     let mut reader = RecordReader::new();
-    let (mut next, mut restart) = (0usize, Some(0usize));
+    // The frame being sent, its beats sent, the beats sent in all; a
+    // restart owed.
+    let (mut frame, mut pos, mut sent) = (0usize, 0usize, 0usize);
+    let mut restart = Some(0usize);
+    let mut owed = false;
     let mut cycles = 0usize;
     let mut item = 0usize;
     // The first mismatch: where, the items read and expected since.
     let mut bad: Option<(String, Vec<Item>, Vec<Item>)> = None;
     while !want.is_empty() {
-        if cut == Some(next) {
+        if frame == last && cut == Some(pos) {
             // A reset mid-frame, then that frame again.
             for (rst_next, rst) in [(1, 0), (0, 1)] {
                 dut.step(&TbIn {
@@ -212,22 +249,17 @@ fn run_frames(
                     ..params_in(p)
                 });
             }
-            let last = frames.len() - 1;
-            (cut, next, restart) = (None, last * px, Some(last));
+            (cut, frame, pos, restart, owed) = (None, last, 0, Some(last), false);
             want = frames[last].items.iter().map(|i| (last, *i)).collect();
             reader = RecordReader::new();
         }
-        let frame = next.min(total - 1) / px;
-        let valid = next < total && restart.is_none() && rng.gen_bool(0.8);
+        let beats = &frames[frame.min(last)].beats;
+        let valid = frame <= last && restart.is_none() && rng.gen_bool(0.8);
         let take = rng.gen_bool(ready);
         let i = TbIn {
-            s_axis_tdata: if valid {
-                frames[frame].beats[next % px]
-            } else {
-                0
-            },
+            s_axis_tdata: if valid { beats[pos] } else { 0 },
             s_axis_tvalid: valid as u8,
-            s_axis_tlast: (valid && (next + 1) % px == 0) as u8,
+            s_axis_tlast: (valid && pos + 1 == beats.len()) as u8,
             restart: restart.is_some() as u8,
             m_axis_tready: take as u8,
             ..params_in(p)
@@ -239,14 +271,18 @@ fn run_frames(
             "K = {}, {what}: frame {n}, item {item}, seed {seed:#x}",
             p.fsize
         );
-        assert_eq!(o.err, 0, "{at}: a frame error");
         assert_eq!(o.bad, 0, "{at}: bad");
         assert_eq!(o.miss, 0, "{at}: a label not in its row");
         if valid && o.s_axis_tready != 0 {
-            next += 1;
+            (pos, sent) = (pos + 1, sent + 1);
+            if pos == beats.len() {
+                (frame, pos) = (frame + 1, 0);
+                // The next frame waits for the input stage to be done.
+                owed = frame <= last;
+            }
         }
-        if o.in_done != 0 && next % px == 0 && next < total && next > 0 {
-            restart = Some(next / px);
+        if owed && o.in_done != 0 {
+            (owed, restart) = (false, Some(frame));
         }
         if o.m_axis_tvalid != 0 && take {
             let k = reader.beats();
@@ -273,6 +309,7 @@ fn run_frames(
                         Item::End(e) => {
                             seen.frames += 1;
                             seen.overflows += usize::from(e.overflow);
+                            seen.errors += usize::from(e.frame_error);
                             item = 0;
                         }
                     }
@@ -284,7 +321,7 @@ fn run_frames(
         cycles += 1;
         assert!(
             cycles < 30 * total + 20_000,
-            "{at}: {} items still expected after {cycles} cycles ({next} beats in)",
+            "{at}: {} items still expected after {cycles} cycles ({sent} beats in)",
             want.len()
         );
     }
@@ -364,19 +401,29 @@ fn every_case(k: usize) {
             });
         }
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
-        let frames: Vec<Golden> = [(0.8, 0.05), (0.5, 0.1), (0.7, 0.05)]
-            .iter()
-            .map(|&(density, jump)| {
-                Golden::of(
-                    p,
-                    &random_frame(p.rows, p.cols, density, jump, true, &mut rng),
-                )
-            })
-            .collect();
-        // Three frames back to back; then the last two again with a reset
-        // in the middle of the second.
-        let mid = rng.gen_range(1..p.pixels());
-        for (from, cut) in [(0, None), (1, Some(mid))] {
+        let mut frame = |density, jump, rng: &mut ChaCha8Rng| {
+            random_frame(p.rows, p.cols, density, jump, true, rng)
+        };
+        let px = p.pixels();
+        let f = [
+            frame(0.8, 0.05, &mut rng),
+            frame(0.5, 0.1, &mut rng),
+            frame(0.7, 0.05, &mut rng),
+            frame(0.7, 0.05, &mut rng),
+        ];
+        let early = rng.gen_range(px / 2..px);
+        let extra = rng.gen_range(1..20);
+        let frames = [
+            Golden::of(p, &f[0]),
+            Golden::of(p, &f[1]),
+            Golden::early(p, &f[2], early),
+            Golden::late(p, &f[3], extra, &mut rng),
+        ];
+        // Four frames back to back (the third's `tlast` early, the
+        // fourth's late); then the last two again with a reset in the
+        // middle of the late one.
+        let mid = rng.gen_range(1..px);
+        for (from, cut) in [(0, None), (2, Some(mid))] {
             let s = run_frames(
                 &mut dut,
                 p,
@@ -391,13 +438,14 @@ fn every_case(k: usize) {
             all.seams += s.seams;
             all.overflows += s.overflows;
             all.frames += s.frames;
+            all.errors += s.errors;
             all.pixels += s.pixels;
             all.cycles += s.cycles;
         }
     }
     eprintln!("K = {k}: {all:?}");
     assert!(
-        all.records > 200 && all.seams > 0 && all.overflows > 0,
+        all.records > 200 && all.seams > 0 && all.overflows > 0 && all.errors > 0,
         "K = {k}: too little seen: {all:?}"
     );
 }

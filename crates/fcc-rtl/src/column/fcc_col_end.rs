@@ -1,16 +1,20 @@
 //! `FccColEnd`: the union-find queue's input and the frame end's ops
 //! (docs/column-core.md, item 8, "The slot table half"). While pixels
-//! come, the queue takes the packer's entries (`pk_*`). After the frame's
-//! last column's marker has left the packer (`tail`), `FccRunAcc` may
-//! flush the rows' runs still open (`drain_ok`); each of those flushes
-//! (`f_end`) becomes a find of its run's label, in the flushes' order, so
-//! that the finds meet their accumulators in `FccFlushWait`; after the
-//! last (`done`) comes the frame end's marker, column `C`. From the last
-//! column's marker to the frame end's, `busy` keeps the next frame's
-//! pixels out (`FccColTable`), so the packer sends nothing while the frame
-//! end's ops go (a frame-end flush cannot wait: `FccRunAcc` is not held);
-//! `FccRunAcc` is busy with the frame end meanwhile anyway, so this costs
-//! the cycle of the marker at most.
+//! come, the queue takes the packer's entries (`pk_*`). The packer's
+//! marker of the frame's last column starts the frame end and is held
+//! back (its entry goes without it): `FccRunAcc` may then flush the rows'
+//! runs still open (`drain_ok`); each of those flushes (`f_end`) becomes a
+//! find of its run's label, in the flushes' order, so that the finds meet
+//! their accumulators in `FccFlushWait`; after the last (`done`) come the
+//! last column's marker and the frame end's, column `C`. So the clusters
+//! those finds leave quiet are reported before the last column is passed
+//! and close there (spec §9.2: holds 1 and 2 end with it), and those held
+//! by hold 4 (the find's `ring`, `f_ring`) wait for the frame end. From
+//! the last column's marker to the frame end's, `busy` keeps the next
+//! frame's pixels out (`FccColTable`), so the packer sends nothing while
+//! the frame end's ops go (a frame-end flush cannot wait: `FccRunAcc` is
+//! not held); `FccRunAcc` is busy with the frame end meanwhile anyway, so
+//! this costs the cycles of the markers at most.
 //!
 //! The frame end's marker carries the frame's flags (spec §9.4's end
 //! beat): `ring`, a run of the frame refused a label (`refused`, a pixel
@@ -53,6 +57,11 @@ pub struct FccColEnd {
     pub e: Signal<Out, SetQBundle>,
     tail: DFF<Bit>,
     owed: DFF<Bit>,
+    owed_end: DFF<Bit>,
+    strip: Signal<Local, Bit>,
+    free: Signal<Local, Bit>,
+    mark_last: Signal<Local, Bit>,
+    mark_end: Signal<Local, Bit>,
     ovf: DFF<Bit>,
     end_find: Signal<Local, Bit>,
     none: Constant<SetQBundle>,
@@ -81,6 +90,11 @@ impl Default for FccColEnd {
             e: Default::default(),
             tail: Default::default(),
             owed: Default::default(),
+            owed_end: Default::default(),
+            strip: Default::default(),
+            free: Default::default(),
+            mark_last: Default::default(),
+            mark_end: Default::default(),
             ovf: Default::default(),
             end_find: Default::default(),
             none: Constant::new(SetQBundle::default()),
@@ -93,23 +107,38 @@ impl Default for FccColEnd {
 impl Logic for FccColEnd {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clk, tail, owed, ovf);
+        dff_setup!(self, clk, tail, owed, owed_end, ovf);
         self.ovf.d.next = self.ovf.q.val() | self.refused.val();
-        self.tail.d.next = self.tail.q.val();
-        if self.pk_valid.val() & self.pk.val().mark & (self.pk.val().col == self.last_col.val()) {
-            self.tail.d.next = true;
-        }
+        // The last column's marker: the frame end starts, the marker waits.
+        self.strip.next =
+            self.pk_valid.val() & self.pk.val().mark & (self.pk.val().col == self.last_col.val());
+        self.tail.d.next = self.tail.q.val() | self.strip.val();
         if self.done.val() {
             self.tail.d.next = false;
         }
         self.drain_ok.next = self.tail.q.val();
-        self.busy.next = self.tail.q.val() | self.owed.q.val();
+        self.busy.next = self.tail.q.val() | self.owed.q.val() | self.owed_end.q.val();
         self.end_find.next = self.f_valid.val() & self.f_end.val();
-        // The marker is owed from the cycle after `done` until it goes.
-        self.owed.d.next =
-            self.done.val() | (self.owed.q.val() & (self.pk_valid.val() | self.end_find.val()));
-        self.e_valid.next = self.pk_valid.val() | self.end_find.val() | self.owed.q.val();
+        // The markers are owed from the cycle after `done` until they go,
+        // the last column's, then the frame end's.
+        self.free.next = !self.pk_valid.val() & !self.end_find.val();
+        self.mark_last.next = self.free.val() & self.owed.q.val();
+        self.mark_end.next = self.free.val() & !self.owed.q.val() & self.owed_end.q.val();
+        self.owed.d.next = self.done.val() | (self.owed.q.val() & !self.mark_last.val());
+        self.owed_end.d.next =
+            self.mark_last.val() | (self.owed_end.q.val() & !self.mark_end.val());
+        self.e_valid.next = (self.pk_valid.val()
+            & (self.pk.val().find
+                | self.pk.val().make
+                | self.pk.val().join
+                | (self.pk.val().mark & !self.strip.val())))
+            | self.end_find.val()
+            | self.owed.q.val()
+            | self.owed_end.q.val();
         self.e.next = self.pk.val();
+        if self.strip.val() {
+            self.e.next.mark = false;
+        }
         if !self.pk_valid.val() {
             self.e.next = self.none.val();
             if self.end_find.val() {
@@ -118,6 +147,9 @@ impl Logic for FccColEnd {
                 self.e.next.ring = self.f_ring.val();
                 self.e.next.col = self.last_col.val();
             } else if self.owed.q.val() {
+                self.e.next.mark = true;
+                self.e.next.col = self.last_col.val();
+            } else if self.owed_end.q.val() {
                 self.e.next.mark = true;
                 self.e.next.col = self.last_col.val() + self.one.val();
                 self.e.next.ring = self.ovf.q.val();
@@ -130,6 +162,7 @@ impl Logic for FccColEnd {
         if self.rst.val() {
             self.tail.d.next = false;
             self.owed.d.next = false;
+            self.owed_end.d.next = false;
             self.ovf.d.next = false;
         }
     }
