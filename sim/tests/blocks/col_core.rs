@@ -401,7 +401,7 @@ fn every_case(k: usize) {
             });
         }
         let mut rng = ChaCha8Rng::seed_from_u64(seed);
-        let mut frame = |density, jump, rng: &mut ChaCha8Rng| {
+        let frame = |density, jump, rng: &mut ChaCha8Rng| {
             random_frame(p.rows, p.cols, density, jump, true, rng)
         };
         let px = p.pixels();
