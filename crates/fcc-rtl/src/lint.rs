@@ -283,9 +283,11 @@ pub fn col_in_waivers(p: &FccParams, name: &str) -> String {
          // as one always block, whose every output Verilator takes to follow\n\
          // every input.\n\
          lint_off -rule UNOPTFLAT -file \"*{name}.v\" -match \"*'*start$hold'*\"\n\
-         // The columns begun are counted by the datapath (`FccColSettle`);\n\
-         // the half's probes give the counts.\n\
-         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'*$col_begin'*\"\n"
+         // The columns begun are counted by the datapath (`FccColSettle`),\n\
+         // and the cycles held are its output; the half's probes give the\n\
+         // counts.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'*$col_begin'*\"\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'*$col_held'*\"\n"
     ));
     s
 }

@@ -71,6 +71,7 @@ c_struct! {
         pub idle_next: u8,
         pub m_axis_tvalid: u8,
         pub m_axis_tlast: u8,
+        pub col_held: u8,
         pub miss: u8,
         pub bad: u8,
     }
@@ -458,4 +459,122 @@ fn the_core_streams_the_golden_records_k3() {
 #[test]
 fn the_core_streams_the_golden_records_k11() {
     every_case(11);
+}
+
+/// The core on the first frame of the OS-2-128 sample capture (128 x
+/// 1024, ground removed, K = 7, bridge 16, ring reach 16), pixels offered
+/// every cycle and records taken every cycle: its records must be the
+/// golden stream's; it reports the cycles a pixel (the input held back)
+/// and each record's latency, from the cycle its closing column's last
+/// pixel is taken (the frame's last, for the frame end's) to the cycle its
+/// first beat leaves. A measurement with Verilator's exact cycle counts;
+/// on demand (a 128-row build and 131,072 pixels): `cargo test --release
+/// -p fcc-sim --test blocks -- --ignored col_core:: --nocapture`.
+#[test]
+#[ignore = "a measurement: a 128-row build; run with --ignored"]
+fn the_core_on_a_captured_frame_k7() {
+    let (mut p, f) = crate::set_queue::capture("OS-2-128-U1_v2.3.0_1024x10");
+    p.label_bits = LABEL_BITS;
+    let build = FccParams {
+        rows: p.rows,
+        fsize: p.fsize,
+        label_bits: LABEL_BITS,
+        ..FccParams::default()
+    };
+    let g = Golden::of(&p, &f);
+    let model = load_plain::<TbIn, TbOut>(BenchBlock::ColCore, &build).expect("the column core");
+    let mut dut = PlainDut::new(model);
+    for (rst_next, rst) in [(1, 0), (1, 1), (0, 1), (0, 0)] {
+        dut.step(&TbIn {
+            rst_next,
+            rst,
+            ..params_in(&p)
+        });
+    }
+    let px = p.pixels();
+    // The cycle each column's last pixel was taken.
+    let mut col_done = vec![0usize; p.cols + 1];
+    let (mut sent, mut cycle, mut first) = (0usize, 0usize, None);
+    let mut reader = RecordReader::new();
+    let mut want: VecDeque<Item> = g.items.iter().copied().collect();
+    let mut beat0 = true;
+    let mut lat: Vec<(u32, usize)> = Vec::new();
+    let mut restart = true;
+    let mut held = 0usize;
+    while !want.is_empty() {
+        let valid = sent < px && !restart;
+        let i = TbIn {
+            s_axis_tdata: if valid { g.beats[sent] } else { 0 },
+            s_axis_tvalid: valid as u8,
+            s_axis_tlast: (valid && sent + 1 == px) as u8,
+            restart: restart as u8,
+            m_axis_tready: 1,
+            ..params_in(&p)
+        };
+        restart = false;
+        let o = dut.step(&i);
+        assert_eq!(o.bad, 0, "captured frame: bad at cycle {cycle}");
+        held += usize::from(o.col_held);
+        assert_eq!(
+            o.miss, 0,
+            "captured frame: a label not in its row at cycle {cycle}"
+        );
+        if valid && o.s_axis_tready != 0 {
+            first.get_or_insert(cycle);
+            sent += 1;
+            if sent % p.rows == 0 {
+                col_done[sent / p.rows - 1] = cycle;
+            }
+            if sent == px {
+                col_done[p.cols] = cycle;
+            }
+        }
+        if o.m_axis_tvalid != 0 {
+            // A record's first beat: its latency.
+            if beat0 {
+                if let Some(Item::Record(r)) = want.front() {
+                    let c = r.closed_col as usize;
+                    lat.push((r.closed_col, cycle - col_done[c]));
+                }
+            }
+            match reader.push(o.m_axis_tdata, o.m_axis_tlast != 0) {
+                Ok(Some(got)) => {
+                    let exp = want.pop_front().expect("an item expected");
+                    assert_eq!(
+                        got, exp,
+                        "captured frame: the item (left) against the golden one (right)"
+                    );
+                    beat0 = true;
+                }
+                Ok(None) => beat0 = false,
+                Err(e) => panic!("captured frame: {e}"),
+            }
+        }
+        cycle += 1;
+        assert!(
+            cycle < 4 * px + 100_000,
+            "captured frame: {} items left after {cycle} cycles",
+            want.len()
+        );
+    }
+    let span = col_done[p.cols] - first.expect("a pixel taken") + 1;
+    let (end, cols): (Vec<_>, Vec<_>) = lat.iter().partition(|(c, _)| *c as usize == p.cols);
+    let mut l: Vec<usize> = cols.iter().map(|&(_, d)| d).collect();
+    l.sort_unstable();
+    let q = |f: f64| l[((l.len() - 1) as f64 * f) as usize];
+    eprintln!(
+        "captured frame, K = {}: {} pixels in {span} cycles ({:.4} a pixel); {} records closed in the frame, latency from the column's last pixel: median {}, 90 % {}, 99 % {}, largest {} cycles (R = {}), over R: {}; {} at the frame end, largest {} cycles; a column's first pixel held {held} cycles",
+        p.fsize,
+        px,
+        span as f64 / px as f64,
+        l.len(),
+        q(0.5),
+        q(0.9),
+        q(0.99),
+        l[l.len() - 1],
+        p.rows,
+        l.iter().filter(|&&d| d > p.rows).count(),
+        end.len(),
+        end.iter().map(|&(_, d)| d).max().unwrap_or(0),
+    );
 }

@@ -4,8 +4,8 @@
 //! sent as AXI4-Stream beats in column order with random gaps, the
 //! buffer's head taken at random, frames back to back, a reset in the
 //! middle of a frame (then the whole frame again), at K = 3 (K = 11 on
-//! demand, an ignored test, and through the two halves' bench,
-//! `col_table`).
+//! demand, an ignored test, and through the datapath's bench,
+//! `col_core`).
 //! Every pixel must come out of the buffer once, as the front's bench
 //! checks it against the golden stream (its run, holds, ring check and
 //! joins with their labels); the input must stop while the buffer's
@@ -439,7 +439,7 @@ fn every_pixel_through_the_buffer_with_its_golden_run_and_joins_k3() {
 /// per-pixel check at the largest window; CI runs K = 11 through the two
 /// halves' bench.
 #[test]
-#[ignore = "CI time: K = 11 runs in col_table; run with --ignored"]
+#[ignore = "CI time: K = 11 runs in col_core; run with --ignored"]
 fn every_pixel_through_the_buffer_with_its_golden_run_and_joins_k11() {
     every_case(11);
 }

@@ -565,12 +565,17 @@ fn every_case(k: usize) {
     );
 }
 
+// CI runs the datapath's bench (`col_core`), the same halves to the
+// records; these check the clusters at each marker, to find where a
+// difference starts.
 #[test]
+#[ignore = "CI time: col_core covers the halves to the records; run with --ignored"]
 fn the_halves_make_the_golden_clusters_k3() {
     every_case(3);
 }
 
 #[test]
+#[ignore = "CI time: col_core covers the halves to the records; run with --ignored"]
 fn the_halves_make_the_golden_clusters_k11() {
     every_case(11);
 }

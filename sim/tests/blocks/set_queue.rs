@@ -846,7 +846,7 @@ fn corpus_trace(p: &FccParams, f: &fcc_golden::Frame) -> Trace {
 /// The first frame of sample capture `name` (its `.pcap` and `.json`), its
 /// ground removed, with the recommended setting (K = 7, bridge 16, ring
 /// 16; docs/streaming.md), as `fcc stream-report` measures it.
-fn capture(name: &str) -> (FccParams, fcc_golden::Frame) {
+pub(crate) fn capture(name: &str) -> (FccParams, fcc_golden::Frame) {
     use fcc_lidar::ground::{detect_ground, GroundMethod, GroundParams};
     use fcc_lidar::ouster::{read_capture, DecodeOptions, OusterMetadata};
     let data =

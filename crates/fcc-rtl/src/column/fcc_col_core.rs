@@ -39,6 +39,9 @@ pub struct FccColCore {
     pub err: Signal<Out, Bit>,
     pub idle: Signal<Out, Bit>,
     pub idle_next: Signal<Out, Bit>,
+    /// A column's first pixel waits for the column-start check (the
+    /// previous column to settle).
+    pub col_held: Signal<Out, Bit>,
     /// Run parameters: the frame's size (`last_row`, `last_col`: `R - 1`,
     /// `C - 1`; `col_half`: `C / 2`), K and `h`, the thresholds, the
     /// bridge and ring limits, the open limit `N_o`.
@@ -95,6 +98,7 @@ impl FccColCore {
             err: Default::default(),
             idle: Default::default(),
             idle_next: Default::default(),
+            col_held: Default::default(),
             run_rows: Default::default(),
             run_cols: Default::default(),
             last_row: Default::default(),
@@ -145,6 +149,7 @@ impl Logic for FccColCore {
         self.err.next = self.inp.err.val();
         self.idle.next = self.inp.idle.val();
         self.idle_next.next = self.inp.idle_next.val();
+        self.col_held.next = self.inp.col_held.val();
         self.inp.run_rows.next = self.run_rows.val();
         self.inp.run_cols.next = self.run_cols.val();
         self.inp.last_row.next = self.last_row.val();
@@ -217,8 +222,9 @@ impl Logic for FccColCore {
         self.settle.marked.next = self.store.marked.val();
         self.settle.calm.next = self.store.calm.val();
         self.settle.label_take.next = self.inp.label_take.val();
-        self.settle.make_taken.next =
-            self.sets.ev_valid.val() & self.sets.ev_make.val() & self.store.ev_take.val();
+        // A make takes its slot in the union-find: from then on the slot
+        // pool counts it.
+        self.settle.make_taken.next = self.sets.slot_take.val();
         self.settle.in_done.next = self.inp.in_done.val();
         self.settle.err.next = self.inp.err.val();
     }

@@ -41,6 +41,8 @@ pub struct FccColIn {
     pub idle_next: Signal<Out, Bit>,
     /// A column's first slot enters the front.
     pub col_begin: Signal<Out, Bit>,
+    /// The column-start check holds a column's first pixel this cycle.
+    pub col_held: Signal<Out, Bit>,
     /// Run parameters: the frame's size (`last_row` is `R - 1`), K, the
     /// thresholds, the bridge and ring limits.
     pub run_rows: Signal<In, Bits<8>>,
@@ -97,6 +99,7 @@ impl FccColIn {
             idle: Default::default(),
             idle_next: Default::default(),
             col_begin: Default::default(),
+            col_held: Default::default(),
             run_rows: Default::default(),
             run_cols: Default::default(),
             last_row: Default::default(),
@@ -165,6 +168,7 @@ impl Logic for FccColIn {
         self.start.first.next = self.stage.col_first.val();
         self.start.accept.next = self.stage.slot_now.val();
         self.col_begin.next = self.stage.col_first.val() & self.stage.slot_now.val();
+        self.col_held.next = self.start.hold.val();
         // The front.
         self.front.clk.next = self.clk.val();
         self.front.rst.next = self.rst.val();

@@ -8,11 +8,14 @@
 //!   end's marker too), the store is `calm` (so those columns' closes are
 //!   out, their labels and slots back) and has been for [`CALM_CYCLES`]
 //!   cycles (a label returned is handed out four cycles later), and no
-//!   run's start is on its way to the store (`in_flight` 0). Columns are
+//!   run's start is on its way to a slot (`in_flight` 0). Columns are
 //!   counted as they begin (`col_begin`), frame by frame (`last_col`, the
 //!   frame's `C - 1`).
 //! * `in_flight`: labels taken by runs' starts (`label_take`) whose makes
-//!   the store has not taken (`make_taken`).
+//!   have not taken a slot (`make_taken`, the union-find's take from the
+//!   slot pool, after which the pool counts it in use); a make still on
+//!   its way to the store comes before the next marker, so `settled`
+//!   waits for it anyway.
 //! * `frame_err`: the input's error flag of its last frame (`err` while
 //!   `in_done`: both hold until the next frame starts), kept until the
 //!   next frame is in.
