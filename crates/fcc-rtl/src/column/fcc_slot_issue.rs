@@ -1,11 +1,12 @@
-//! `FccSlotIssue`: the order of `FccSlotRecords`' ops and the slots in
-//! flight (docs/column-core.md, item 3). An op is taken when no op in
-//! flight touches its slots; it reads its record (a merge: the gone
-//! record, then the kept one in the next cycle, two halves), and its
-//! halves move through three stages: 1, the block RAM's read; 2, the word
-//! shows and is merged; 3, the merged word is written (or, for a close,
-//! goes out). A read in the cycle of a write to its slot would miss the
-//! write, so stage 3 counts as in flight.
+//! `FccSlotIssue`: the order of `FccSlotRecords`' ops and their stages
+//! (docs/column-core.md, item 3). An op is taken one a cycle (a merge:
+//! two); it reads its record (a merge: the gone record, then the kept one
+//! in the next cycle, two halves), and its halves move through three
+//! stages: 1, the block RAM's read; 2, the word shows and is merged; 3,
+//! the merged word is written (or, for a close, goes out). A read misses
+//! the writes of the cycle it is issued in and the two after it: ops on a
+//! slot still in the stages do not wait, `FccSlotPipe` forwards those
+//! writes into stage 2 instead (`s2`: stage 2's slot).
 //!
 //! After a reset no op is taken for `2^SLOT_BITS` cycles (`clearing`):
 //! the write port empties every slot (`sweep`), so that the block RAM
@@ -58,6 +59,9 @@ pub struct FccSlotIssue {
     pub read_addr: Signal<Out, Bits<SLOT_BITS>>,
     // The stages' halves: stage 1's (what for) and stage 3's.
     pub h1: Signal<Out, SlotHalf>,
+    /// Stage 2's slot (its read shows: `FccSlotPipe` forwards the words
+    /// written since the read was issued).
+    pub s2: Signal<Out, Bits<SLOT_BITS>>,
     pub v3: Signal<Out, Bit>,
     pub h3: Signal<Out, SlotHalf>,
     pub s3: Signal<Out, Bits<SLOT_BITS>>,
@@ -66,7 +70,6 @@ pub struct FccSlotIssue {
     pub sweep: Signal<Out, Bits<SLOT_BITS>>,
     /// No op in flight, none held back.
     pub idle: Signal<Out, Bit>,
-    busy: Signal<Local, Bit>,
     take: Signal<Local, Bit>,
     /// A merge's kept record is read this cycle.
     second: DFF<Bit>,
@@ -100,13 +103,13 @@ impl Default for FccSlotIssue {
             read_en: Default::default(),
             read_addr: Default::default(),
             h1: Default::default(),
+            s2: Default::default(),
             v3: Default::default(),
             h3: Default::default(),
             s3: Default::default(),
             clearing: Default::default(),
             sweep: Default::default(),
             idle: Default::default(),
-            busy: Default::default(),
             take: Default::default(),
             second: Default::default(),
             keep: Default::default(),
@@ -134,20 +137,8 @@ impl Logic for FccSlotIssue {
         dff_setup!(
             self, clk, second, keep, sv1, sh1, ss1, sv2, sh2, ss2, sv3, sh3, ss3, clear, next
         );
-        self.busy.next = (self.sv1.q.val() & (self.ss1.q.val() == self.op_slot.val()))
-            | (self.sv2.q.val() & (self.ss2.q.val() == self.op_slot.val()))
-            | (self.sv3.q.val() & (self.ss3.q.val() == self.op_slot.val()));
-        if self.op_kind.val() == SlotOp::Merge {
-            self.busy.next = self.busy.val()
-                | (self.sv1.q.val() & (self.ss1.q.val() == self.op_other.val()))
-                | (self.sv2.q.val() & (self.ss2.q.val() == self.op_other.val()))
-                | (self.sv3.q.val() & (self.ss3.q.val() == self.op_other.val()));
-        }
-        self.take.next = self.op_valid.val()
-            & !self.second.q.val()
-            & !self.busy.val()
-            & !self.clear.q.val()
-            & !self.rst.val();
+        self.take.next =
+            self.op_valid.val() & !self.second.q.val() & !self.clear.q.val() & !self.rst.val();
         self.op_take.next = self.take.val();
         self.read_en.next = self.take.val() | self.second.q.val();
         self.read_addr.next = self.op_slot.val();
@@ -194,6 +185,7 @@ impl Logic for FccSlotIssue {
             self.sv3.d.next = false;
         }
         self.h1.next = self.sh1.q.val();
+        self.s2.next = self.ss2.q.val();
         self.v3.next = self.sv3.q.val();
         self.h3.next = self.sh3.q.val();
         self.s3.next = self.ss3.q.val();

@@ -15,6 +15,7 @@ use rust_hdl::prelude::*;
 
 use super::fcc_acc_merge::FccAccMerge;
 use super::fcc_holds_merge::FccHoldsMerge;
+use super::fcc_label_sets::SLOT_BITS;
 use super::fcc_slot_check::FccSlotCheck;
 use super::fcc_slot_issue::SlotHalf;
 use super::{AccWord, SlotHolds, SlotWord, FIRST_BITS};
@@ -41,6 +42,24 @@ pub struct FccSlotPipe {
     pub link: Signal<Out, Bit>,
     pub link_from: Signal<Out, Bits<16>>,
     pub link_to: Signal<Out, Bits<16>>,
+    /// Stage 2's and stage 3's slots, stage 3's half (`FccSlotIssue`).
+    pub s2: Signal<In, Bits<SLOT_BITS>>,
+    pub v3: Signal<In, Bit>,
+    pub h3: Signal<In, SlotHalf>,
+    pub s3: Signal<In, Bits<SLOT_BITS>>,
+    /// Stage 3's write into the block RAM (its slot is `s3`).
+    pub wen: Signal<Out, Bit>,
+    pub wdata: Signal<Out, SlotWord>,
+    kept: Signal<Local, Bit>,
+    /// Stage 2's word, forwarded.
+    fw: Signal<Local, SlotWord>,
+    /// The writes of the last two cycles.
+    w4v: DFF<Bit>,
+    w4a: DFF<Bits<SLOT_BITS>>,
+    w4d: DFF<SlotWord>,
+    w5v: DFF<Bit>,
+    w5a: DFF<Bits<SLOT_BITS>>,
+    w5d: DFF<SlotWord>,
     mw: Signal<Local, SlotWord>,
     wa: Signal<Local, AccWord>,
     wh: Signal<Local, SlotHolds>,
@@ -71,6 +90,20 @@ impl Default for FccSlotPipe {
         Self {
             clk: Default::default(),
             take: Default::default(),
+            s2: Default::default(),
+            v3: Default::default(),
+            h3: Default::default(),
+            s3: Default::default(),
+            wen: Default::default(),
+            wdata: Default::default(),
+            kept: Default::default(),
+            fw: Default::default(),
+            w4v: Default::default(),
+            w4a: Default::default(),
+            w4d: Default::default(),
+            w5v: Default::default(),
+            w5a: Default::default(),
+            w5d: Default::default(),
             op_word: Default::default(),
             op_col: Default::default(),
             half: Default::default(),
@@ -112,7 +145,38 @@ impl Default for FccSlotPipe {
 impl Logic for FccSlotPipe {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clk, a1, c1, b2, c2, l2, f2, k2, e2, m3, l3, q3, lk3, lf3, lt3);
+        dff_setup!(
+            self, clk, a1, c1, b2, c2, l2, f2, k2, e2, m3, l3, q3, lk3, lf3, lt3, w4v, w4a, w4d,
+            w5v, w5a, w5d
+        );
+        // Stage 3's write: a kept word (an add's, a merge's kept half), or
+        // the empty word (a merge's gone half, a record that leaves).
+        self.kept.next = (self.h3.val() == SlotHalf::Add) | (self.h3.val() == SlotHalf::Keep);
+        self.wen.next =
+            self.v3.val() & (self.kept.val() | (self.h3.val() == SlotHalf::Gone) | self.l3.q.val());
+        self.wdata.next = self.empty.val();
+        if self.kept.val() {
+            self.wdata.next = self.m3.q.val();
+        }
+        self.w4v.d.next = self.wen.val();
+        self.w4a.d.next = self.s3.val();
+        self.w4d.d.next = self.wdata.val();
+        self.w5v.d.next = self.w4v.q.val();
+        self.w5a.d.next = self.w4a.q.val();
+        self.w5d.d.next = self.w4d.q.val();
+        // Stage 2's word: the read, or the latest write to its slot since
+        // the read was issued (this cycle's and the last two's: the read
+        // missed them).
+        self.fw.next = self.word.val();
+        if self.w5v.q.val() & (self.w5a.q.val() == self.s2.val()) {
+            self.fw.next = self.w5d.q.val();
+        }
+        if self.w4v.q.val() & (self.w4a.q.val() == self.s2.val()) {
+            self.fw.next = self.w4d.q.val();
+        }
+        if self.wen.val() & (self.s3.val() == self.s2.val()) {
+            self.fw.next = self.wdata.val();
+        }
         // Stage 1: the op's word and column; the other word of stage 2.
         self.a1.d.next = self.op_word.val();
         if self.take.val() {
@@ -133,11 +197,11 @@ impl Logic for FccSlotPipe {
             self.b2.d.next = self.a1.q.val();
         }
         if self.h1.val() == SlotHalf::Keep {
-            self.b2.d.next = self.word.val();
+            self.b2.d.next = self.fw.val();
         }
         // Stage 2: the merges and the check.
-        self.wa.next = self.word.val().acc;
-        self.wh.next = self.word.val().holds;
+        self.wa.next = self.fw.val().acc;
+        self.wh.next = self.fw.val().holds;
         self.acc.a.next = self.wa.val();
         self.acc.b.next = self.b2.q.val().acc;
         self.holds.a.next = self.wh.val();

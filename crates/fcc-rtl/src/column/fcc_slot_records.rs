@@ -39,10 +39,9 @@
 //! was emptied holds the empty word: a merge's gone slot and a closed one
 //! are written empty in the cycle a kept or added word would be, and
 //! after a reset every slot is, one a cycle, before an op is taken
-//! (`2^SLOT_BITS` cycles, `idle` low). An op waits while an op in flight
-//! touches one of its slots (`FccSlotIssue`), so an op takes a cycle (a
-//! merge two) but one on the slot of the op before it waits until that
-//! one is written: four cycles apart. This block is wiring.
+//! (`2^SLOT_BITS` cycles, `idle` low). An op takes a cycle (a merge two),
+//! on any slot: the writes its read misses are forwarded into stage 2
+//! (`FccSlotPipe`). This block is wiring.
 
 use rust_hdl::prelude::*;
 
@@ -171,14 +170,13 @@ impl Logic for FccSlotRecords {
         self.mh.next = self.mw.val().holds;
         self.kept.next =
             (self.issue.h3.val() == SlotHalf::Add) | (self.issue.h3.val() == SlotHalf::Keep);
-        self.records.write_en.next = (self.issue.v3.val()
-            & (self.kept.val() | (self.issue.h3.val() == SlotHalf::Gone) | self.pipe.leaves.val()))
-            | self.issue.clearing.val();
+        self.pipe.s2.next = self.issue.s2.val();
+        self.pipe.v3.next = self.issue.v3.val();
+        self.pipe.h3.next = self.issue.h3.val();
+        self.pipe.s3.next = self.issue.s3.val();
+        self.records.write_en.next = self.pipe.wen.val() | self.issue.clearing.val();
         self.records.write_addr.next = self.issue.s3.val();
-        self.records.write_data.next = self.empty.val();
-        if self.kept.val() {
-            self.records.write_data.next = self.mw.val();
-        }
+        self.records.write_data.next = self.pipe.wdata.val();
         if self.issue.clearing.val() {
             self.records.write_addr.next = self.issue.sweep.val();
             self.records.write_data.next = self.empty.val();
