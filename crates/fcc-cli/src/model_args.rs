@@ -147,6 +147,11 @@ pub struct HwArgs {
     /// The build's slopes (power-on values of RUN_SLOPE_H and RUN_SLOPE_V).
     #[command(flatten)]
     pub slopes: SlopeArgs,
+    /// The core: `row` (raster order in, the frame's labels out) or
+    /// `column` (column order in, one record per cluster as it closes;
+    /// docs/column-core.md) [default: row]
+    #[arg(long, value_name = "ORDER")]
+    pub scan: Option<fcc_params::Scan>,
 }
 
 impl HwArgs {
@@ -165,6 +170,7 @@ impl HwArgs {
             bridge: self.limits.bridge.or(b.bridge),
             ring_reach: self.limits.ring_reach.or(b.ring_reach),
             open_limit: self.limits.open_limit.or(b.open_limit),
+            scan: self.scan.unwrap_or(b.scan),
             ..b
         };
         if self.slopes.given() {

@@ -35,6 +35,19 @@ pub mod limits {
     pub const HW_FSIZE: RangeInclusive<usize> = 3..=11;
     /// Label widths the RTL generator accepts (output slots are 16 bits).
     pub const HW_LABEL_BITS: RangeInclusive<u32> = 8..=fcc_pixel::LABEL_SLOT_BITS;
+    /// Columns the column-streaming core accepts at most (its column
+    /// numbers are 12 bits wide, and a frame's end is marked at column C).
+    pub const HW_COLUMN_COLS_MAX: usize = 4095;
+    /// Rows the column-streaming core needs at least at filter size K: a
+    /// row's run state is read again `R` slots after it was written, and the
+    /// window spans `K + 8` rows of that pipeline.
+    pub const fn hw_column_rows_min(fsize: usize) -> usize {
+        if fsize + 8 > 16 {
+            fsize + 8
+        } else {
+            16
+        }
+    }
     /// Labels packed into one output beat.
     pub const LABELS_PER_BEAT: [u32; 3] = [1, 2, 4];
     /// Clock requested from the XDC, MHz.
@@ -104,6 +117,47 @@ pub struct FccParams {
     /// mode refuses it.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub open_limit: Option<u32>,
+    /// The core the RTL generator builds (hardware only): the row-major
+    /// core (labels of a finished frame) or the column-streaming core (one
+    /// record per cluster as it closes, spec §9).
+    #[serde(default, skip_serializing_if = "Scan::is_row")]
+    pub scan: Scan,
+}
+
+/// The pixel order of the generated core (`--scan`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Scan {
+    /// Raster order in, labels of the finished frame out (the default).
+    #[default]
+    Row,
+    /// Column order in, one record per cluster out as it closes.
+    Column,
+}
+
+impl Scan {
+    fn is_row(&self) -> bool {
+        *self == Scan::Row
+    }
+
+    /// `row` or `column`, as `--scan` takes it.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Scan::Row => "row",
+            Scan::Column => "column",
+        }
+    }
+}
+
+impl std::str::FromStr for Scan {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        match s {
+            "row" => Ok(Scan::Row),
+            "column" => Ok(Scan::Column),
+            _ => Err(format!("unknown scan `{s}`: expected `row` or `column`")),
+        }
+    }
 }
 
 fn is_zero(v: &f64) -> bool {
@@ -181,6 +235,7 @@ impl Default for FccParams {
             th_h_slope: 0.0,
             th_v_slope: 0.0,
             open_limit: None,
+            scan: Scan::Row,
         }
     }
 }
@@ -230,6 +285,18 @@ impl FccParams {
         check_range("cols", self.cols, &limits::HW_COLS)?;
         check_fsize("fsize", self.fsize, &limits::HW_FSIZE)?;
         check_range("label_bits", self.label_bits, &limits::HW_LABEL_BITS)?;
+        if self.scan == Scan::Column {
+            let rows = limits::hw_column_rows_min(self.fsize)..=*limits::HW_ROWS.end();
+            check_range("rows", self.rows, &rows).map_err(|e| ParamError {
+                allowed: format!("{} (the column core at K = {})", e.allowed, self.fsize),
+                ..e
+            })?;
+            let cols = *limits::HW_COLS.start()..=limits::HW_COLUMN_COLS_MAX;
+            check_range("cols", self.cols, &cols).map_err(|e| ParamError {
+                allowed: format!("{} (the column core)", e.allowed),
+                ..e
+            })?;
+        }
         Ok(())
     }
 
@@ -239,7 +306,11 @@ impl FccParams {
     /// checked with this and the build's own ranges.
     pub fn validate_rtl_contract(&self) -> Result<(), ParamError> {
         // The row-major core follows the unlimited contract, and labels a
-        // whole frame (no open limit).
+        // whole frame (no open limit). The column core has all three as run
+        // registers.
+        if self.scan == Scan::Column {
+            return Ok(());
+        }
         for (field, v) in [
             ("bridge", self.bridge),
             ("ring_reach", self.ring_reach),
@@ -249,7 +320,7 @@ impl FccParams {
                 return Err(range_err(
                     field,
                     v,
-                    "unlimited only: the row-major core has no limit (the stream and the golden model do)",
+                    "unlimited only: the row-major core has no limit (the stream, the golden model and the column core, --scan column, do)",
                 ));
             }
         }
@@ -365,6 +436,7 @@ impl FccParams {
             th_h_slope,
             th_v_slope,
             open_limit,
+            scan,
         } = self;
         let limits = [("bridge", bridge), ("ring_reach", ring_reach)];
         let slopes = [("th_h_slope", th_h_slope), ("th_v_slope", th_v_slope)];
@@ -390,6 +462,9 @@ impl FccParams {
                 .map(|(name, v)| (name, v.to_string())),
         );
         fields.extend(open_limit.map(|s| ("open_limit", s.to_string())));
+        if !scan.is_row() {
+            fields.push(("scan", scan.as_str().to_string()));
+        }
         fields
     }
 

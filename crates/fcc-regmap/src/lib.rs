@@ -43,6 +43,10 @@ pub mod offset {
     pub const RUN_COLS: u32 = 0x090;
     pub const RUN_SLOPE_H: u32 = 0x094;
     pub const RUN_SLOPE_V: u32 = 0x098;
+    /// The column-streaming core only (`--scan column`).
+    pub const RUN_BRIDGE: u32 = 0x09C;
+    pub const RUN_RING_REACH: u32 = 0x0A0;
+    pub const RUN_OPEN_LIMIT: u32 = 0x0A4;
 }
 
 /// Bit masks of the fields.
@@ -76,6 +80,12 @@ pub mod bits {
     pub const ERROR_SLOPE_H: u32 = 1 << 5;
     /// ERROR: a write to RUN_SLOPE_V was refused.
     pub const ERROR_SLOPE_V: u32 = 1 << 6;
+    /// ERROR: a write to RUN_BRIDGE was refused (the column core).
+    pub const ERROR_BRIDGE: u32 = 1 << 7;
+    /// ERROR: a write to RUN_RING_REACH was refused (the column core).
+    pub const ERROR_RING_REACH: u32 = 1 << 8;
+    /// ERROR: a write to RUN_OPEN_LIMIT was refused (the column core).
+    pub const ERROR_OPEN_LIMIT: u32 = 1 << 9;
 }
 
 /// Largest threshold register value: `floor(th * 256 + 0.5)` of a threshold
@@ -85,6 +95,16 @@ pub const TH_Q_MAX: u32 = 0x8000;
 /// Largest threshold slope register value: a slope below 1 metre per metre
 /// in UQ0.16, `floor(a * 65536 + 0.5)` (spec §2; 0: a fixed threshold).
 pub const SLOPE_Q_MAX: u32 = 0xFFFF;
+
+/// RUN_BRIDGE and RUN_RING_REACH: the largest value, and the one that
+/// means no limit (no frame of the column core, at most 4095 columns, has
+/// a gap or a reach that long).
+pub const LIMIT_MAX: u32 = 0xFFF;
+
+/// RUN_OPEN_LIMIT: the largest value, the column core's record slots (511
+/// clusters open at once; the value that a build without an open limit
+/// starts with).
+pub const OPEN_LIMIT_MAX: u32 = 511;
 
 /// Fewest columns a frame may have (RUN_COLS), in every build. The
 /// representative of a row's first columns is written back a few tens of

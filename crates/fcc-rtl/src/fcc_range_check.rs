@@ -25,7 +25,8 @@ pub struct FccRangeCheck {
     hi_zero: DFF<Bit>,
     ge: DFF<Bit>,
     le: DFF<Bit>,
-    min: Constant<Bits<16>>,
+    /// The lower bound; none when it is 0 (every value is at least 0).
+    min: Vec<Constant<Bits<16>>>,
     max: Constant<Bits<16>>,
     zero16: Constant<Bits<16>>,
     /// Any value is accepted whatever its bit 0 (not an odd-only register).
@@ -48,7 +49,10 @@ impl FccRangeCheck {
             hi_zero: Default::default(),
             ge: Default::default(),
             le: Default::default(),
-            min: kb(u64::from(range.min)),
+            min: (range.min > 0)
+                .then(|| kb(u64::from(range.min)))
+                .into_iter()
+                .collect(),
             max: kb(u64::from(range.max)),
             zero16: kb(0),
             any_lsb: Constant::new(!odd),
@@ -62,7 +66,10 @@ impl Logic for FccRangeCheck {
         dff_setup!(self, clk, hi_zero, ge, le);
         if self.w_take.val() {
             self.hi_zero.d.next = self.bus_wdata.val().get_bits::<16>(16) == self.zero16.val();
-            self.ge.d.next = self.bus_wdata.val().get_bits::<16>(0) >= self.min.val();
+            self.ge.d.next = true;
+            for m in 0..self.min.len() {
+                self.ge.d.next = self.bus_wdata.val().get_bits::<16>(0) >= self.min[m].val();
+            }
             self.le.d.next = self.bus_wdata.val().get_bits::<16>(0) <= self.max.val();
         }
         self.ok.next = self.hi_zero.q.val()

@@ -29,7 +29,7 @@ use crate::fcc_keep_reg::FccKeepReg;
 use crate::fcc_reg_run::FccRegRun;
 use crate::fcc_reg_thresholds::{FccRegThresholds, SquaredResets};
 use crate::fcc_reg_w1c::FccRegW1c;
-use crate::regmap::{self, offset, Access, Register, RunRange};
+use crate::regmap::{self, bits, offset, Access, Register, RunRange};
 
 #[derive(LogicBlock)]
 pub struct FccRegRunParams {
@@ -125,7 +125,7 @@ pub(crate) fn find(regs: &[Register], off: u32, access: Access) -> &Register {
 }
 
 /// The range and reset value of the run register at `off`.
-fn run(regs: &[Register], off: u32) -> (RunRange, u32) {
+pub(crate) fn run(regs: &[Register], off: u32) -> (RunRange, u32) {
     let r = find(regs, off, Access::ReadWrite);
     let range = r.range.unwrap_or_else(|| panic!("{} has no range", r.name));
     (range, r.reset)
@@ -135,7 +135,15 @@ impl FccRegRunParams {
     /// The run registers and ERROR of the map `regs`.
     pub fn new(regs: &[Register]) -> Self {
         let error = find(regs, offset::ERROR, Access::WriteOneToClear);
-        let err_lsbs: Vec<u32> = error.fields.iter().map(|f| f.lsb).collect();
+        // Its own registers' bits (the stream limits' are
+        // `FccRegStreamLimits`').
+        let theirs = bits::ERROR_BRIDGE | bits::ERROR_RING_REACH | bits::ERROR_OPEN_LIMIT;
+        let err_lsbs: Vec<u32> = error
+            .fields
+            .iter()
+            .map(|f| f.lsb)
+            .filter(|l| theirs & (1 << l) == 0)
+            .collect();
         let err = |off: u32| {
             let b = regmap::run_error_bit(off).expect("a run register");
             err_lsbs

@@ -41,6 +41,7 @@ use crate::fcc_reg_control::FccRegControl;
 use crate::fcc_reg_frame_status::FccRegFrameStatus;
 use crate::fcc_reg_mux::{FccRegMux, MuxSrc};
 use crate::fcc_reg_run_params::{find, FccRegRunParams};
+use crate::fcc_reg_stream_limits::FccRegStreamLimits;
 use crate::regmap::{self, bits, offset, Access, ADDR_BITS};
 
 /// A `MuxSrc::Flags` list from (field mask, flag input) pairs.
@@ -98,6 +99,10 @@ pub struct FccRegs {
     /// taken while the pipeline is in reset.
     pub core_rst_next: Signal<Out, Bit>,
     pub irq: Signal<Out, Bit>,
+    /// A write to any register is performed (the column core's frame
+    /// sequence waits for its run registers to load).
+    /// (A column core's map only.)
+    pub written: Vec<Signal<Out, Bit>>,
     pub frame_done: Signal<Out, Bit>,
     pub st_clusters: Signal<Out, Bits<16>>,
     pub st_provisional: Signal<Out, Bits<16>>,
@@ -117,12 +122,18 @@ pub struct FccRegs {
     /// Squared threshold slopes `A^2 >> 8` (UQ0.24, spec §2).
     pub run_sl_h: Signal<Out, Bits<24>>,
     pub run_sl_v: Signal<Out, Bits<24>>,
+    /// The column core's stream limits (active; none in a row-major
+    /// build): RUN_BRIDGE, RUN_RING_REACH, RUN_OPEN_LIMIT (9 bits).
+    pub run_lims: Vec<Signal<Out, Bits<12>>>,
     bus: FccAxilAdapter,
     mux: FccRegMux,
     // Field blocks.
     control: FccRegControl,
     frame_status: FccRegFrameStatus,
     run: FccRegRunParams,
+    /// RUN_BRIDGE, RUN_RING_REACH, RUN_OPEN_LIMIT: one block in a column
+    /// core's map, none in a row-major one.
+    lims: Vec<FccRegStreamLimits>,
     // The position of each writable register among the bus adapter's
     // write-enables, in the map.
     _we_control: usize,
@@ -135,11 +146,16 @@ pub struct FccRegs {
     _we_cols: usize,
     _we_sl_h: usize,
     _we_sl_v: usize,
+    // The stream limits' write-enables (`lims` empty: never read).
+    _we_bridge: usize,
+    _we_reach: usize,
+    _we_open: usize,
 }
 
 impl FccRegs {
     pub fn new(p: &FccParams) -> Self {
         let regs = regmap::registers(p);
+        let column = regs.iter().any(|r| r.offset == offset::RUN_BRIDGE);
         let mut entries: Vec<(u32, MuxSrc)> = vec![];
         for r in &regs {
             // The inputs are wired in `update` in the same numbering.
@@ -158,17 +174,26 @@ impl FccRegs {
                 offset::RUN_COLS => MuxSrc::W16(6),
                 offset::RUN_SLOPE_H => MuxSrc::W16(7),
                 offset::RUN_SLOPE_V => MuxSrc::W16(8),
+                offset::RUN_BRIDGE => MuxSrc::W16(9),
+                offset::RUN_RING_REACH => MuxSrc::W16(10),
+                offset::RUN_OPEN_LIMIT => MuxSrc::W16(11),
                 // Flags: 0 irq_en, 1 done_sticky, 2 idle, 3 overflow,
-                // 4 frame_error, 5 .. 11 the ERROR bits.
-                offset::ERROR => MuxSrc::Flags(flags(&[
-                    (bits::ERROR_K, 5),
-                    (bits::ERROR_TH_H, 6),
-                    (bits::ERROR_TH_V, 7),
-                    (bits::ERROR_ROWS, 8),
-                    (bits::ERROR_COLS, 9),
-                    (bits::ERROR_SLOPE_H, 10),
-                    (bits::ERROR_SLOPE_V, 11),
-                ])),
+                // 4 frame_error, 5 .. 11 the ERROR bits, 12 .. 14 the
+                // stream limits' ERROR bits (a column core's).
+                offset::ERROR => MuxSrc::Flags(flags(
+                    &[
+                        (bits::ERROR_K, 5),
+                        (bits::ERROR_TH_H, 6),
+                        (bits::ERROR_TH_V, 7),
+                        (bits::ERROR_ROWS, 8),
+                        (bits::ERROR_COLS, 9),
+                        (bits::ERROR_SLOPE_H, 10),
+                        (bits::ERROR_SLOPE_V, 11),
+                        (bits::ERROR_BRIDGE, 12),
+                        (bits::ERROR_RING_REACH, 13),
+                        (bits::ERROR_OPEN_LIMIT, 14),
+                    ][..if column { 10 } else { 7 }],
+                )),
                 offset::CONTROL => MuxSrc::Flags(flags(&[(bits::CONTROL_IRQ_ENABLE, 0)])),
                 offset::STATUS => MuxSrc::Flags(flags(&[
                     (bits::STATUS_FRAME_DONE, 1),
@@ -199,6 +224,9 @@ impl FccRegs {
             offset::RUN_COLS,
             offset::RUN_SLOPE_H,
             offset::RUN_SLOPE_V,
+            offset::RUN_BRIDGE,
+            offset::RUN_RING_REACH,
+            offset::RUN_OPEN_LIMIT,
         ];
         for off in &writable {
             assert!(served.contains(off), "no field block serves {off:#x}");
@@ -253,6 +281,9 @@ impl FccRegs {
             core_rst: Default::default(),
             core_rst_next: Default::default(),
             irq: Default::default(),
+            written: (0..if column { 1 } else { 0 })
+                .map(|_| Default::default())
+                .collect(),
             frame_done: Default::default(),
             st_clusters: Default::default(),
             st_provisional: Default::default(),
@@ -268,11 +299,19 @@ impl FccRegs {
             run_cols: Default::default(),
             run_sl_h: Default::default(),
             run_sl_v: Default::default(),
+            run_lims: (0..if column { 3 } else { 0 })
+                .map(|_| Default::default())
+                .collect(),
             bus: FccAxilAdapter::new(&writable),
             mux: FccRegMux::new(entries),
             control: FccRegControl::new(),
             frame_status: FccRegFrameStatus::new(done_lsb),
             run: FccRegRunParams::new(&regs),
+            lims: if column {
+                vec![FccRegStreamLimits::new(&regs)]
+            } else {
+                vec![]
+            },
             _we_control: we(offset::CONTROL),
             _we_status: we(offset::STATUS),
             _we_error: we(offset::ERROR),
@@ -283,6 +322,17 @@ impl FccRegs {
             _we_cols: we(offset::RUN_COLS),
             _we_sl_h: we(offset::RUN_SLOPE_H),
             _we_sl_v: we(offset::RUN_SLOPE_V),
+            _we_bridge: if column { we(offset::RUN_BRIDGE) } else { 0 },
+            _we_reach: if column {
+                we(offset::RUN_RING_REACH)
+            } else {
+                0
+            },
+            _we_open: if column {
+                we(offset::RUN_OPEN_LIMIT)
+            } else {
+                0
+            },
         }
     }
 }
@@ -378,6 +428,38 @@ impl Logic for FccRegs {
         }
         for w in self._we_sl_v..(self._we_sl_v + 1) {
             self.run.we_sl_v.next = self.bus.we[w].val();
+        }
+        // ---- The stream limits (a column core's; the loop binds the
+        // write-enables' positions).
+        for l in 0..self.lims.len() {
+            self.lims[l].clk.next = self.clk.val();
+            self.lims[l].rst.next = self.rst.val();
+            self.lims[l].w_take.next = self.bus.w_take.val();
+            self.lims[l].bus_wdata.next = self.s_axil_wdata.val();
+            self.lims[l].wdata.next = self.bus.wdata.val();
+            self.lims[l].idle_next.next = self.idle_next.val();
+            for w in self._we_error..(self._we_error + 1) {
+                self.lims[l].we_error.next = self.bus.we[w].val();
+            }
+            for w in self._we_bridge..(self._we_bridge + 1) {
+                self.lims[l].we_bridge.next = self.bus.we[w].val();
+            }
+            for w in self._we_reach..(self._we_reach + 1) {
+                self.lims[l].we_reach.next = self.bus.we[w].val();
+            }
+            for w in self._we_open..(self._we_open + 1) {
+                self.lims[l].we_open.next = self.bus.we[w].val();
+            }
+            self.mux.flags[12].next = self.lims[l].err_bridge.val();
+            self.mux.flags[13].next = self.lims[l].err_reach.val();
+            self.mux.flags[14].next = self.lims[l].err_open.val();
+            self.mux.w16[9].next = self.lims[l].shadow_bridge.val();
+            self.mux.w16[10].next = self.lims[l].shadow_reach.val();
+            self.mux.w16[11].next = self.lims[l].shadow_open.val();
+            self.run_lims[0].next = self.lims[l].run_bridge.val();
+            self.run_lims[1].next = self.lims[l].run_reach.val();
+            self.run_lims[2].next = self.lims[l].run_open.val();
+            self.written[0].next = self.bus.wr.val();
         }
         // ---- Read multiplexer (inputs numbered as in `new`).
         self.mux.flags[5].next = self.run.err_k.val();

@@ -130,6 +130,7 @@ mod fcc_reg_run;
 mod fcc_reg_run_params;
 mod fcc_reg_snapshot;
 mod fcc_reg_squared;
+mod fcc_reg_stream_limits;
 mod fcc_reg_thresholds;
 mod fcc_reg_w1c;
 mod fcc_regs;
@@ -162,7 +163,7 @@ pub mod vivado;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
-use fcc_params::{FccParams, ParamError};
+use fcc_params::{FccParams, ParamError, Scan};
 use rust_hdl::prelude::*;
 use thiserror::Error;
 
@@ -325,10 +326,10 @@ pub fn generate(p: &FccParams) -> Result<Generated, RtlError> {
 
 fn generate_uncached(p: &FccParams) -> Result<Generated, RtlError> {
     p.validate_for_hardware()?;
-    let mut top = FccTop::new(p);
-    top.connect_all();
-    check_all(&top).map_err(|e| RtlError::Check(format!("{e:?}")))?;
-    let raw = generate_verilog_unchecked(&top);
+    let raw = match p.scan {
+        Scan::Row => top_verilog(FccTop::new(p))?,
+        Scan::Column => top_verilog(column::fcc_col_top::FccColTop::new(p))?,
+    };
     let body = rename_modules(&constant_selects(&raw), TOP_NAME, &p.module_suffix());
     let mut verilog = file_header(p, "//");
     verilog.push_str(&io_comment());
@@ -347,6 +348,13 @@ fn generate_uncached(p: &FccParams) -> Result<Generated, RtlError> {
         regs_header: regmap::c_header(p),
         lint_waivers: lint::waivers(p),
     })
+}
+
+/// Check the top `top` and emit its Verilog as rust-hdl writes it.
+fn top_verilog<B: Block>(mut top: B) -> Result<String, RtlError> {
+    top.connect_all();
+    check_all(&top).map_err(|e| RtlError::Check(format!("{e:?}")))?;
+    Ok(generate_verilog_unchecked(&top))
 }
 
 /// Check `block` and emit it alone as the module `name` with the

@@ -9,6 +9,9 @@ use crate::{file_header, top_module, RtlError};
 
 /// The waiver file written beside the Verilog. Every waiver says why.
 pub fn waivers(p: &FccParams) -> String {
+    if p.scan == fcc_params::Scan::Column {
+        return col_top_waivers(p);
+    }
     let mut s = file_header(p, "//");
     s.push_str("`verilator_config\n");
     s.push_str(
@@ -553,5 +556,41 @@ pub fn col_core_waivers(p: &FccParams, name: &str) -> String {
          lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'used'[15:10]*\"\n\
          lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'slots$free_label'[15:9]*\"\n"
     ));
+    s
+}
+
+/// The waivers of the column core's `fcc_top.v` (`fcc gen --scan column`):
+/// its datapath's ([`col_core_waivers`]), the register file's, and the
+/// top's own.
+fn col_top_waivers(p: &FccParams) -> String {
+    let mut s = file_header(p, "//");
+    s.push_str("`verilator_config\n");
+    s.push_str(
+        "// The generator writes every module of the core into one file, fcc_top.v;\n\
+         // the file is named after the top module only.\n\
+         lint_off -rule DECLFILENAME -file \"*fcc_top.v\"\n\
+         // Bits 63:49 of an input beat are reserved and ignored by definition.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'s_axis_tdata'[63:49]*\"\n\
+         // s_axis_tkeep is ignored by definition: every beat is one whole pixel\n\
+         // (the port exists so that an AXI DMA's MM2S stream connects cleanly).\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'s_axis_tkeep'*\"\n\
+         // The column core has at most 4095 columns (fcc-params checks it), so\n\
+         // bit 12 of RUN_COLS is 0.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'run_cols'[12]*\"\n\
+         // The datapath's fault flags (a label not in its row, a run, flush,\n\
+         // accumulator or slot return gone wrong) never rise by design; its\n\
+         // bench (col_core) asserts them low on every cycle.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'core$miss'*\"\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'core$bad'*\"\n\
+         // The frame's input error rides on its end beat; the status takes it\n\
+         // from there.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'core$err'*\"\n\
+         // RUN_OPEN_LIMIT is at most 511.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'open_limit'[11:10]*\"\n",
+    );
+    let core = col_core_waivers(p, "fcc_top");
+    let base = block_waivers(p, "fcc_top");
+    s.push_str(core.strip_prefix(base.as_str()).unwrap_or(&core));
+    s.push_str(&axil_waivers("fcc_top.v"));
     s
 }

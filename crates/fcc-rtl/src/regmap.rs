@@ -13,12 +13,14 @@
 //! return 0 with OKAY; writes to an unmapped or read-only offset are ignored
 //! (OKAY). Write strobes are ignored: every write is a full 32-bit write.
 
-use fcc_params::FccParams;
+use fcc_params::{limits, FccParams, Scan};
 use serde::Serialize;
 
 use crate::GENERATOR_VERSION;
 
-pub use fcc_regmap::{bits, offset, ADDR_BITS, ID_MAGIC, RUN_COLS_MIN, SLOPE_Q_MAX, TH_Q_MAX};
+pub use fcc_regmap::{
+    bits, offset, ADDR_BITS, ID_MAGIC, LIMIT_MAX, OPEN_LIMIT_MAX, RUN_COLS_MIN, SLOPE_Q_MAX, TH_Q_MAX,
+};
 
 /// How software may access a register.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -78,9 +80,14 @@ pub struct RunRange {
     pub max: u32,
 }
 
-/// Smallest RUN_ROWS a build accepts: a frame of one row runs.
-pub fn run_rows_min(_p: &FccParams) -> u32 {
-    1
+/// Smallest RUN_ROWS a build accepts: a frame of one row runs in the
+/// row-major core; the column core needs the rows of its K_MAX
+/// (`limits::hw_column_rows_min`).
+pub fn run_rows_min(p: &FccParams) -> u32 {
+    match p.scan {
+        Scan::Row => 1,
+        Scan::Column => limits::hw_column_rows_min(p.fsize) as u32,
+    }
 }
 
 /// Smallest RUN_COLS a build accepts ([`RUN_COLS_MIN`]; every build has
@@ -99,6 +106,8 @@ pub fn run_range(p: &FccParams, off: u32) -> Option<RunRange> {
         offset::RUN_SLOPE_H | offset::RUN_SLOPE_V => (0, SLOPE_Q_MAX),
         offset::RUN_ROWS => (run_rows_min(p), p.rows as u32),
         offset::RUN_COLS => (run_cols_min(p), p.cols as u32),
+        offset::RUN_BRIDGE | offset::RUN_RING_REACH => (0, LIMIT_MAX),
+        offset::RUN_OPEN_LIMIT => (1, OPEN_LIMIT_MAX),
         _ => return None,
     };
     Some(RunRange { min, max })
@@ -120,6 +129,9 @@ pub fn run_error_bit(off: u32) -> Option<u32> {
         offset::RUN_COLS => Some(bits::ERROR_COLS),
         offset::RUN_SLOPE_H => Some(bits::ERROR_SLOPE_H),
         offset::RUN_SLOPE_V => Some(bits::ERROR_SLOPE_V),
+        offset::RUN_BRIDGE => Some(bits::ERROR_BRIDGE),
+        offset::RUN_RING_REACH => Some(bits::ERROR_RING_REACH),
+        offset::RUN_OPEN_LIMIT => Some(bits::ERROR_OPEN_LIMIT),
         _ => None,
     }
 }
@@ -192,7 +204,26 @@ pub fn registers(p: &FccParams) -> Vec<Register> {
         fields,
         range: None,
     };
-    vec![
+    let column = p.scan == Scan::Column;
+    // The frame status of the column core comes from its end beat.
+    let pick = |row: &'static str, col: &'static str| if column { col } else { row };
+    let mut error_fields = vec![
+        field("K", 0, 1, "a RUN_K write was refused"),
+        field("TH_H", 1, 1, "a RUN_TH_H write was refused"),
+        field("TH_V", 2, 1, "a RUN_TH_V write was refused"),
+        field("ROWS", 3, 1, "a RUN_ROWS write was refused"),
+        field("COLS", 4, 1, "a RUN_COLS write was refused"),
+        field("SLOPE_H", 5, 1, "a RUN_SLOPE_H write was refused"),
+        field("SLOPE_V", 6, 1, "a RUN_SLOPE_V write was refused"),
+    ];
+    if column {
+        error_fields.extend([
+            field("BRIDGE", 7, 1, "a RUN_BRIDGE write was refused"),
+            field("RING_REACH", 8, 1, "a RUN_RING_REACH write was refused"),
+            field("OPEN_LIMIT", 9, 1, "a RUN_OPEN_LIMIT write was refused"),
+        ]);
+    }
+    let mut regs = vec![
         build(
             "ID",
             offset::ID,
@@ -309,7 +340,10 @@ pub fn registers(p: &FccParams) -> Vec<Register> {
                     "FRAME_DONE",
                     0,
                     1,
-                    "sticky: a frame's last label beat left (write 1 to clear)",
+                    pick(
+                        "sticky: a frame's last label beat left (write 1 to clear)",
+                        "sticky: a frame's end beat left (write 1 to clear)",
+                    ),
                 ),
                 field(
                     "IDLE",
@@ -327,15 +361,7 @@ pub fn registers(p: &FccParams) -> Vec<Register> {
             build_constant: false,
             range: None,
             doc: "Refused writes of run parameters (sticky, write 1 to clear)",
-            fields: vec![
-                field("K", 0, 1, "a RUN_K write was refused"),
-                field("TH_H", 1, 1, "a RUN_TH_H write was refused"),
-                field("TH_V", 2, 1, "a RUN_TH_V write was refused"),
-                field("ROWS", 3, 1, "a RUN_ROWS write was refused"),
-                field("COLS", 4, 1, "a RUN_COLS write was refused"),
-                field("SLOPE_H", 5, 1, "a RUN_SLOPE_H write was refused"),
-                field("SLOPE_V", 6, 1, "a RUN_SLOPE_V write was refused"),
-            ],
+            fields: error_fields,
         },
         status(
             "FRAME_COUNT",
@@ -346,19 +372,28 @@ pub fn registers(p: &FccParams) -> Vec<Register> {
         status(
             "CLUSTERS",
             offset::CLUSTERS,
-            "Last frame: clusters (largest label)",
+            pick(
+                "Last frame: clusters (largest label)",
+                "Last frame: records (its end beat's count; 0xFFFF: that many or more)",
+            ),
             whole("CLUSTERS", 16, "count"),
         ),
         status(
             "PROVISIONAL",
             offset::PROVISIONAL,
-            "Last frame: provisional labels used",
+            pick(
+                "Last frame: provisional labels used",
+                "Most provisional labels in use at once since the frame before it ended",
+            ),
             whole("PROVISIONAL", 16, "count"),
         ),
         status(
             "UNLABELLED",
             offset::UNLABELLED,
-            "Last frame: points left with label 0 (labels ran out)",
+            pick(
+                "Last frame: points left with label 0 (labels ran out)",
+                "Not counted by the column core (reads 0): its end beat's overflow flags a refused run",
+            ),
             whole("UNLABELLED", 20, "count"),
         ),
         status(
@@ -373,13 +408,19 @@ pub fn registers(p: &FccParams) -> Vec<Register> {
         status(
             "JOINS",
             offset::JOINS,
-            "Last frame: joins sent to the union engine",
+            pick(
+                "Last frame: joins sent to the union engine",
+                "Not counted by the column core (reads 0)",
+            ),
             whole("JOINS", 24, "count"),
         ),
         status(
             "GEAR_STALLS",
             offset::GEAR_STALLS,
-            "Last frame: read-back cycles that waited for labels",
+            pick(
+                "Last frame: read-back cycles that waited for labels",
+                "Cycles a column's first pixel waited for the column before it to settle, since the frame before it ended",
+            ),
             whole("STALLS", 24, "cycles"),
         ),
         run(
@@ -431,7 +472,34 @@ pub fn registers(p: &FccParams) -> Vec<Register> {
             "Run: inter-channel threshold slope aV = floor(a * 65536 + 0.5), 0 ..= 0xFFFF (0: fixed)",
             whole("SLOPE", 16, "UQ0.16 metres per metre"),
         ),
-    ]
+    ];
+    if column {
+        let limit = |v: Option<u32>, max: u32| v.map_or(max, |v| v.min(max)) as usize;
+        regs.extend([
+            run(
+                "RUN_BRIDGE",
+                offset::RUN_BRIDGE,
+                limit(p.bridge, LIMIT_MAX),
+                "Run: bridge limit (spec §3), 0 ..= 0xFFF (0xFFF: none)",
+                whole("BRIDGE", 12, "empty pixels"),
+            ),
+            run(
+                "RUN_RING_REACH",
+                offset::RUN_RING_REACH,
+                limit(p.ring_reach, LIMIT_MAX),
+                "Run: ring-check reach (spec §3), 0 ..= 0xFFF (0: no ring check; RUN_COLS or more: none)",
+                whole("REACH", 12, "columns"),
+            ),
+            run(
+                "RUN_OPEN_LIMIT",
+                offset::RUN_OPEN_LIMIT,
+                limit(p.open_limit, OPEN_LIMIT_MAX),
+                "Run: open limit N_o (spec §9.1), 1 ..= 511 (511: the core's record slots)",
+                whole("OPEN", 9, "clusters"),
+            ),
+        ]);
+    }
+    regs
 }
 
 /// The byte offsets of the registers of `p` that software may write, in

@@ -42,6 +42,8 @@ pub struct FccColCore {
     /// A column's first pixel waits for the column-start check (the
     /// previous column to settle).
     pub col_held: Signal<Out, Bit>,
+    /// Provisional labels free in the label pool.
+    pub labels_free: Signal<Out, Bits<16>>,
     /// Run parameters: the frame's size (`last_row`, `last_col`: `R - 1`,
     /// `C - 1`; `col_half`: `C / 2`), K and `h`, the thresholds, the
     /// bridge and ring limits, the open limit `N_o`.
@@ -99,6 +101,7 @@ impl FccColCore {
             idle: Default::default(),
             idle_next: Default::default(),
             col_held: Default::default(),
+            labels_free: Default::default(),
             run_rows: Default::default(),
             run_cols: Default::default(),
             last_row: Default::default(),
@@ -167,6 +170,7 @@ impl Logic for FccColCore {
         self.inp.slots_used.next = self.used.val().get_bits::<OPEN_ROOM_BITS>(0);
         self.inp.in_flight.next = self.settle.in_flight.val();
         self.inp.labels_free.next = self.store.labels_free.val();
+        self.labels_free.next = self.store.labels_free.val();
         self.inp.settled.next = self.settle.settled.val();
         self.inp.free_ok.next = self.store.free_ok.val();
         self.inp.free_label.next = self.store.free_label.val();

@@ -24,8 +24,9 @@
 //! front (`FccColFront`: thresholds, row runs, window and distance tests
 //! wired, the part of the core a slot passes without a hold), its slot
 //! buffer with credits (`FccColSlotBuf`), and the input half they make
-//! with the input stage and the column-start check (`FccColIn`). The top
-//! is to come.
+//! with the input stage and the column-start check (`FccColIn`); the
+//! datapath of all three halves (`FccColCore`) and the top around it with
+//! the register file (`FccColTop`, `fcc gen --scan column`).
 
 pub mod fcc_acc_merge;
 pub mod fcc_acc_pixel;
@@ -40,17 +41,21 @@ pub mod fcc_col_dist;
 pub mod fcc_col_dist_probe;
 pub mod fcc_col_edge;
 pub mod fcc_col_end;
+pub mod fcc_col_flow;
 pub mod fcc_col_front;
 pub mod fcc_col_front_probe;
 pub mod fcc_col_in;
 pub mod fcc_col_in_probe;
+pub mod fcc_col_limits;
 pub mod fcc_col_settle;
 pub mod fcc_col_slot_buf;
 pub mod fcc_col_slot_buf_probe;
 pub mod fcc_col_start;
+pub mod fcc_col_stats;
 pub mod fcc_col_store;
 pub mod fcc_col_table;
 pub mod fcc_col_table_probe;
+pub mod fcc_col_top;
 pub mod fcc_col_window;
 pub mod fcc_col_window_probe;
 pub mod fcc_col_word_split;

@@ -1,0 +1,106 @@
+//! `FccColFlow`: the column core's frame sequence, for its top. A frame's
+//! records leave well after its last pixel (the last columns close at the
+//! frame end), so frames overlap: the next frame's pixels are taken while
+//! the last one's records are still on their way. The run registers must
+//! not change under a frame in either state, so:
+//! - `quiet`: no frame is in the datapath (every frame whose last pixel
+//!   went in has sent its end beat); counted here, +1 as a frame's input
+//!   is done (`in_done` rises), -1 as an end beat is taken (`end_sent`);
+//! - `load_next`: the input waits for a frame's first pixel and the core is
+//!   quiet in the next cycle, the register file's `idle_next` (its active
+//!   copies load then, and STATUS.IDLE reads it);
+//! - `restart`: the next frame may start once the input stage is done with
+//!   this one (`in_done`); while a register write is owed (`dirty`: any
+//!   register was written since the last load) it waits for `quiet`, so a
+//!   write takes effect at the next frame boundary even when frames come
+//!   back to back. One pulse per frame.
+
+use rust_hdl::prelude::*;
+
+use crate::types::kb;
+
+#[derive(LogicBlock)]
+pub struct FccColFlow {
+    pub clk: Signal<In, Clock>,
+    pub rst: Signal<In, Bit>,
+    /// The input stage has taken the frame's last slot (until `restart`).
+    pub in_done: Signal<In, Bit>,
+    /// The input waits for a frame's first pixel (now, and in the next cycle).
+    pub idle: Signal<In, Bit>,
+    pub idle_next: Signal<In, Bit>,
+    /// An end beat is taken (`tvalid`, `tready` and `tlast`).
+    pub end_sent: Signal<In, Bit>,
+    /// A register write is performed.
+    pub written: Signal<In, Bit>,
+    pub restart: Signal<Out, Bit>,
+    pub quiet: Signal<Out, Bit>,
+    pub load_next: Signal<Out, Bit>,
+    /// Frames in the datapath after their last pixel (at most 2: one
+    /// ending, one whose input is done).
+    open: DFF<Bits<2>>,
+    done_q: DFF<Bit>,
+    restarted: DFF<Bit>,
+    dirty: DFF<Bit>,
+    /// A frame's input is done in this cycle.
+    rise: Signal<Local, Bit>,
+    zero2: Constant<Bits<2>>,
+    one2: Constant<Bits<2>>,
+}
+
+impl Default for FccColFlow {
+    fn default() -> Self {
+        Self {
+            clk: Default::default(),
+            rst: Default::default(),
+            in_done: Default::default(),
+            idle: Default::default(),
+            idle_next: Default::default(),
+            end_sent: Default::default(),
+            written: Default::default(),
+            restart: Default::default(),
+            quiet: Default::default(),
+            load_next: Default::default(),
+            open: Default::default(),
+            done_q: Default::default(),
+            restarted: Default::default(),
+            dirty: Default::default(),
+            rise: Default::default(),
+            zero2: kb(0),
+            one2: kb(1),
+        }
+    }
+}
+
+impl Logic for FccColFlow {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clk, open, done_q, restarted, dirty);
+        self.rise.next = self.in_done.val() & !self.done_q.q.val();
+        self.done_q.d.next = self.in_done.val();
+        if self.rise.val() & !self.end_sent.val() {
+            self.open.d.next = self.open.q.val() + self.one2.val();
+        }
+        if !self.rise.val() & self.end_sent.val() {
+            self.open.d.next = self.open.q.val() - self.one2.val();
+        }
+        self.quiet.next = self.open.q.val() == self.zero2.val();
+        self.load_next.next = self.idle_next.val() & (self.open.d.val() == self.zero2.val());
+        self.restart.next = self.in_done.val()
+            & !self.restarted.q.val()
+            & (!self.dirty.q.val() | (self.open.q.val() == self.zero2.val()));
+        self.restarted.d.next = self.restart.val();
+        // The registers load while idle and quiet.
+        if self.idle.val() & (self.open.q.val() == self.zero2.val()) {
+            self.dirty.d.next = false;
+        }
+        if self.written.val() {
+            self.dirty.d.next = true;
+        }
+        if self.rst.val() {
+            self.open.d.next = self.zero2.val();
+            self.done_q.d.next = false;
+            self.restarted.d.next = false;
+            self.dirty.d.next = false;
+        }
+    }
+}
