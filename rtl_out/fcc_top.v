@@ -19553,7 +19553,7 @@ module fcc_regs__run__reg_cols__check_k7_668cf05b(clk,w_take,bus_wdata,lsb,ok);
     output reg  ok;
 
     // Constant declarations
-    localparam  min = 16'h20;
+    localparam  min$0 = 16'h20;
     localparam  max = 16'h800;
     localparam  zero16 = 16'h0;
     localparam  any_lsb = 1'b1;
@@ -19596,7 +19596,8 @@ module fcc_regs__run__reg_cols__check_k7_668cf05b(clk,w_take,bus_wdata,lsb,ok);
         le$d = le$q;
         if (w_take) begin
             hi_zero$d = bus_wdata[31:16] == zero16;
-            ge$d = bus_wdata[15:0] >= min;
+            ge$d = 1'b1;
+            ge$d = bus_wdata[15:0] >= min$0;
             le$d = bus_wdata[15:0] <= max;
         end
         ok = hi_zero$q & ge$q & le$q & (lsb | any_lsb);
@@ -19788,7 +19789,7 @@ module fcc_regs__run__reg_k__check_k7_668cf05b(clk,w_take,bus_wdata,lsb,ok);
     output reg  ok;
 
     // Constant declarations
-    localparam  min = 16'h3;
+    localparam  min$0 = 16'h3;
     localparam  max = 16'h7;
     localparam  zero16 = 16'h0;
     localparam  any_lsb = 1'b0;
@@ -19831,7 +19832,8 @@ module fcc_regs__run__reg_k__check_k7_668cf05b(clk,w_take,bus_wdata,lsb,ok);
         le$d = le$q;
         if (w_take) begin
             hi_zero$d = bus_wdata[31:16] == zero16;
-            ge$d = bus_wdata[15:0] >= min;
+            ge$d = 1'b1;
+            ge$d = bus_wdata[15:0] >= min$0;
             le$d = bus_wdata[15:0] <= max;
         end
         ok = hi_zero$q & ge$q & le$q & (lsb | any_lsb);
@@ -20023,7 +20025,7 @@ module fcc_regs__run__reg_rows__check_k7_668cf05b(clk,w_take,bus_wdata,lsb,ok);
     output reg  ok;
 
     // Constant declarations
-    localparam  min = 16'h1;
+    localparam  min$0 = 16'h1;
     localparam  max = 16'h40;
     localparam  zero16 = 16'h0;
     localparam  any_lsb = 1'b1;
@@ -20066,7 +20068,8 @@ module fcc_regs__run__reg_rows__check_k7_668cf05b(clk,w_take,bus_wdata,lsb,ok);
         le$d = le$q;
         if (w_take) begin
             hi_zero$d = bus_wdata[31:16] == zero16;
-            ge$d = bus_wdata[15:0] >= min;
+            ge$d = 1'b1;
+            ge$d = bus_wdata[15:0] >= min$0;
             le$d = bus_wdata[15:0] <= max;
         end
         ok = hi_zero$q & ge$q & le$q & (lsb | any_lsb);
@@ -20650,7 +20653,7 @@ module fcc_regs__run__thresholds__check_k7_668cf05b(clk,w_take,bus_wdata,lsb,ok)
     output reg  ok;
 
     // Constant declarations
-    localparam  min = 16'h1;
+    localparam  min$0 = 16'h1;
     localparam  max = 16'h8000;
     localparam  zero16 = 16'h0;
     localparam  any_lsb = 1'b1;
@@ -20693,7 +20696,8 @@ module fcc_regs__run__thresholds__check_k7_668cf05b(clk,w_take,bus_wdata,lsb,ok)
         le$d = le$q;
         if (w_take) begin
             hi_zero$d = bus_wdata[31:16] == zero16;
-            ge$d = bus_wdata[15:0] >= min;
+            ge$d = 1'b1;
+            ge$d = bus_wdata[15:0] >= min$0;
             le$d = bus_wdata[15:0] <= max;
         end
         ok = hi_zero$q & ge$q & le$q & (lsb | any_lsb);

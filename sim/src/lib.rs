@@ -11,6 +11,7 @@ pub mod axil_adapter_bench;
 pub mod block;
 pub mod board;
 pub mod check;
+pub mod column;
 pub mod core_form;
 pub mod drive;
 pub mod ffi;

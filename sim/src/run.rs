@@ -13,9 +13,10 @@ use crate::model::Dut;
 use crate::SimError;
 
 /// The run registers and the values that program `run` (thresholds as
-/// Q7.8 integers and slopes as UQ0.16, the golden model's quantisation).
-pub fn run_values(run: &FccParams) -> [(&'static str, u32, u32); 7] {
-    [
+/// Q7.8 integers and slopes as UQ0.16, the golden model's quantisation);
+/// for the column core also its stream limits.
+pub fn run_values(run: &FccParams) -> Vec<(&'static str, u32, u32)> {
+    let mut v = vec![
         ("RUN_K", offset::RUN_K, run.fsize as u32),
         ("RUN_TH_H", offset::RUN_TH_H, run.th_h_q() as u32),
         ("RUN_TH_V", offset::RUN_TH_V, run.th_v_q() as u32),
@@ -31,7 +32,11 @@ pub fn run_values(run: &FccParams) -> [(&'static str, u32, u32); 7] {
             offset::RUN_SLOPE_V,
             run.th_v_slope_q() as u32,
         ),
-    ]
+    ];
+    if run.scan == fcc_params::Scan::Column {
+        v.extend(regmap::stream_limit_values(run));
+    }
+    v
 }
 
 /// Whether the core built for `build` can run a frame with `run`: the
@@ -44,6 +49,13 @@ pub fn check_run(build: &FccParams, run: &FccParams) -> Result<(), SimError> {
         return Err(SimError::BadRun(format!(
             "label_bits {} and labels_per_beat {} are the build's ({} and {})",
             run.label_bits, run.labels_per_beat, build.label_bits, build.labels_per_beat
+        )));
+    }
+    if run.scan != build.scan {
+        return Err(SimError::BadRun(format!(
+            "scan {} is the build's ({})",
+            run.scan.as_str(),
+            build.scan.as_str()
         )));
     }
     for (name, off, v) in run_values(run) {

@@ -474,32 +474,52 @@ pub fn registers(p: &FccParams) -> Vec<Register> {
         ),
     ];
     if column {
-        let limit = |v: Option<u32>, max: u32| v.map_or(max, |v| v.min(max)) as usize;
+        let [bridge, reach, open] = stream_limit_values(p).map(|(_, _, v)| v as usize);
         regs.extend([
             run(
                 "RUN_BRIDGE",
                 offset::RUN_BRIDGE,
-                limit(p.bridge, LIMIT_MAX),
+                bridge,
                 "Run: bridge limit (spec §3), 0 ..= 0xFFF (0xFFF: none)",
                 whole("BRIDGE", 12, "empty pixels"),
             ),
             run(
                 "RUN_RING_REACH",
                 offset::RUN_RING_REACH,
-                limit(p.ring_reach, LIMIT_MAX),
+                reach,
                 "Run: ring-check reach (spec §3), 0 ..= 0xFFF (0: no ring check; RUN_COLS or more: none)",
                 whole("REACH", 12, "columns"),
             ),
             run(
                 "RUN_OPEN_LIMIT",
                 offset::RUN_OPEN_LIMIT,
-                limit(p.open_limit, OPEN_LIMIT_MAX),
+                open,
                 "Run: open limit N_o (spec §9.1), 1 ..= 511 (511: the core's record slots)",
                 whole("OPEN", 9, "clusters"),
             ),
         ]);
     }
     regs
+}
+
+/// The column core's stream-limit registers and the values that give the
+/// limits of `p` (a limit beyond what the registers hold is no limit for
+/// the core: 0xFFF columns, or its 511 record slots).
+pub fn stream_limit_values(p: &FccParams) -> [(&'static str, u32, u32); 3] {
+    let limit = |v: Option<u32>, max: u32| v.map_or(max, |v| v.min(max));
+    [
+        ("RUN_BRIDGE", offset::RUN_BRIDGE, limit(p.bridge, LIMIT_MAX)),
+        (
+            "RUN_RING_REACH",
+            offset::RUN_RING_REACH,
+            limit(p.ring_reach, LIMIT_MAX),
+        ),
+        (
+            "RUN_OPEN_LIMIT",
+            offset::RUN_OPEN_LIMIT,
+            limit(p.open_limit, OPEN_LIMIT_MAX),
+        ),
+    ]
 }
 
 /// The byte offsets of the registers of `p` that software may write, in

@@ -52,6 +52,7 @@ c_struct! {
         pub run: u8,
         pub restart: u8,
         pub run_next: u8,
+        pub start_hold: u8,
         pub run_rows: u8,
         pub last_row: u8,
         pub run_k: u8,

@@ -39,6 +39,8 @@ pub struct FccColCore {
     pub err: Signal<Out, Bit>,
     pub idle: Signal<Out, Bit>,
     pub idle_next: Signal<Out, Bit>,
+    /// Hold the frame's first pixel (while `idle`).
+    pub start_hold: Signal<In, Bit>,
     /// A column's first pixel waits for the column-start check (the
     /// previous column to settle).
     pub col_held: Signal<Out, Bit>,
@@ -100,6 +102,7 @@ impl FccColCore {
             err: Default::default(),
             idle: Default::default(),
             idle_next: Default::default(),
+            start_hold: Default::default(),
             col_held: Default::default(),
             labels_free: Default::default(),
             run_rows: Default::default(),
@@ -152,6 +155,7 @@ impl Logic for FccColCore {
         self.err.next = self.inp.err.val();
         self.idle.next = self.inp.idle.val();
         self.idle_next.next = self.inp.idle_next.val();
+        self.inp.start_hold.next = self.start_hold.val();
         self.col_held.next = self.inp.col_held.val();
         self.inp.run_rows.next = self.run_rows.val();
         self.inp.run_cols.next = self.run_cols.val();

@@ -13,7 +13,17 @@
 //!   this one (`in_done`); while a register write is owed (`dirty`: any
 //!   register was written since the last load) it waits for `quiet`, so a
 //!   write takes effect at the next frame boundary even when frames come
-//!   back to back. One pulse per frame.
+//!   back to back. One pulse per frame;
+//! - `start_hold`: high while the input waits for a frame's first pixel
+//!   and a write is owed (or performed now), so that no frame starts until
+//!   the registers have loaded (it holds the first pixel as the
+//!   column-start check holds a column's);
+//! - `reload_next`, `reload`: the registers load with a write owed (`dirty`,
+//!   idle and quiet): the datapath is reset in the next cycle (`reload`,
+//!   with `reload_next` its flip-flop's input, as the register file's
+//!   `core_rst`), since its per-row state and tables follow the frame's
+//!   size and K. Nothing is lost: no frame is in it, and no pixel is taken
+//!   while `run` is low.
 
 use rust_hdl::prelude::*;
 
@@ -35,12 +45,16 @@ pub struct FccColFlow {
     pub restart: Signal<Out, Bit>,
     pub quiet: Signal<Out, Bit>,
     pub load_next: Signal<Out, Bit>,
+    pub start_hold: Signal<Out, Bit>,
+    pub reload_next: Signal<Out, Bit>,
+    pub reload: Signal<Out, Bit>,
     /// Frames in the datapath after their last pixel (at most 2: one
     /// ending, one whose input is done).
     open: DFF<Bits<2>>,
     done_q: DFF<Bit>,
     restarted: DFF<Bit>,
     dirty: DFF<Bit>,
+    reload_q: DFF<Bit>,
     /// A frame's input is done in this cycle.
     rise: Signal<Local, Bit>,
     zero2: Constant<Bits<2>>,
@@ -60,10 +74,14 @@ impl Default for FccColFlow {
             restart: Default::default(),
             quiet: Default::default(),
             load_next: Default::default(),
+            start_hold: Default::default(),
+            reload_next: Default::default(),
+            reload: Default::default(),
             open: Default::default(),
             done_q: Default::default(),
             restarted: Default::default(),
             dirty: Default::default(),
+            reload_q: Default::default(),
             rise: Default::default(),
             zero2: kb(0),
             one2: kb(1),
@@ -74,7 +92,7 @@ impl Default for FccColFlow {
 impl Logic for FccColFlow {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clk, open, done_q, restarted, dirty);
+        dff_setup!(self, clk, open, done_q, restarted, dirty, reload_q);
         self.rise.next = self.in_done.val() & !self.done_q.q.val();
         self.done_q.d.next = self.in_done.val();
         if self.rise.val() & !self.end_sent.val() {
@@ -89,10 +107,16 @@ impl Logic for FccColFlow {
             & !self.restarted.q.val()
             & (!self.dirty.q.val() | (self.open.q.val() == self.zero2.val()));
         self.restarted.d.next = self.restart.val();
-        // The registers load while idle and quiet.
+        // The registers load while idle and quiet; with a write owed, the
+        // datapath is reset after.
+        self.reload_next.next = false;
         if self.idle.val() & (self.open.q.val() == self.zero2.val()) {
             self.dirty.d.next = false;
+            self.reload_next.next = self.dirty.q.val();
         }
+        self.reload_q.d.next = self.reload_next.val();
+        self.reload.next = self.reload_q.q.val();
+        self.start_hold.next = self.idle.val() & (self.dirty.q.val() | self.written.val());
         if self.written.val() {
             self.dirty.d.next = true;
         }
@@ -101,6 +125,7 @@ impl Logic for FccColFlow {
             self.done_q.d.next = false;
             self.restarted.d.next = false;
             self.dirty.d.next = false;
+            self.reload_q.d.next = false;
         }
     }
 }

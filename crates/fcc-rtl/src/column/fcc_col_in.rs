@@ -38,6 +38,8 @@ pub struct FccColIn {
     pub in_done: Signal<Out, Bit>,
     pub err: Signal<Out, Bit>,
     pub idle: Signal<Out, Bit>,
+    /// The frame's first pixel waits (the top's run registers are loading).
+    pub start_hold: Signal<In, Bit>,
     pub idle_next: Signal<Out, Bit>,
     /// A column's first slot enters the front.
     pub col_begin: Signal<Out, Bit>,
@@ -97,6 +99,7 @@ impl FccColIn {
             in_done: Default::default(),
             err: Default::default(),
             idle: Default::default(),
+            start_hold: Default::default(),
             idle_next: Default::default(),
             col_begin: Default::default(),
             col_held: Default::default(),
@@ -151,7 +154,8 @@ impl Logic for FccColIn {
         self.stage.restart.next = self.restart.val();
         self.stage.run_next.next = self.run_next.val();
         self.stage.room.next = self.slots.room.val();
-        self.stage.col_hold.next = self.start.hold.val();
+        // A frame's first pixel is its first column's first.
+        self.stage.col_hold.next = self.start.hold.val() | self.start_hold.val();
         self.in_done.next = self.stage.in_done.val();
         self.err.next = self.stage.err.val();
         self.idle.next = self.stage.idle.val();

@@ -176,6 +176,7 @@ impl Logic for FccColInProbe {
         self.half.run.next = self.run.val();
         self.half.restart.next = self.restart.val();
         self.half.run_next.next = self.run_next.val();
+        self.half.start_hold.next = false;
         self.half.run_rows.next = self.run_rows.val();
         self.half.run_cols.next = self.run_cols.val();
         self.half.last_row.next = self.last_row.val();

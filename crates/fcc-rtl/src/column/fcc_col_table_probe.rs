@@ -205,6 +205,7 @@ impl Logic for FccColTableProbe {
         self.inp.run.next = self.run.val();
         self.inp.restart.next = self.restart.val();
         self.inp.run_next.next = self.run_next.val();
+        self.inp.start_hold.next = false;
         self.inp.run_rows.next = self.run_rows.val();
         self.inp.run_cols.next = self.run_cols.val();
         self.inp.last_row.next = self.last_row.val();

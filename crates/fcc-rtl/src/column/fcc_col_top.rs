@@ -209,14 +209,15 @@ impl Logic for FccColTop {
         self.stats.col_held.next = self.core.col_held.val();
         // ---- The datapath.
         self.core.clk.next = self.clk.val();
-        self.core.rst.next = self.regs.core_rst.val();
-        self.core.rst_next.next = self.regs.core_rst_next.val();
+        self.core.rst.next = self.regs.core_rst.val() | self.flow.reload.val();
+        self.core.rst_next.next = self.regs.core_rst_next.val() | self.flow.reload_next.val();
         self.core.s_axis_tdata.next = self.s_axis_tdata.val().get_bits::<49>(0);
         self.core.s_axis_tvalid.next = self.s_axis_tvalid.val();
         self.core.s_axis_tlast.next = self.s_axis_tlast.val();
         self.s_axis_tready.next = self.core.s_axis_tready.val();
         self.core.run.next = true;
         self.core.run_next.next = true;
+        self.core.start_hold.next = self.flow.start_hold.val();
         self.core.restart.next = self.flow.restart.val();
         self.core.run_rows.next = self.regs.run_rows.val();
         self.core.run_cols.next = self.limits.cols.val();
