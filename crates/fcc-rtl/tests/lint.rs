@@ -2,7 +2,7 @@
 
 use std::path::PathBuf;
 
-use fcc_params::FccParams;
+use fcc_params::{limits, FccParams, Scan};
 use fcc_rtl::{generate, lint, write_rtl};
 
 fn scratch(name: &str) -> PathBuf {
@@ -82,6 +82,88 @@ fn lint_clean_default_and_odd_sizes() {
         }
         let _ = std::fs::remove_dir_all(&dir);
     }
+}
+
+/// The column core (`--scan column`) at every K on its fewest rows, and
+/// on the largest frame it takes with 16-bit labels and every stream limit.
+#[test]
+fn column_core_lints_clean_for_every_fsize_and_the_largest_frame() {
+    if !verilator_present() {
+        eprintln!("verilator not installed: lint skipped");
+        return;
+    }
+    let column = |fsize: usize, rows: usize, cols: usize, label_bits: u32| FccParams {
+        rows,
+        cols,
+        fsize,
+        label_bits,
+        scan: Scan::Column,
+        ..Default::default()
+    };
+    let mut all: Vec<FccParams> = [3, 5, 7, 9, 11]
+        .map(|k| column(k, limits::hw_column_rows_min(k), 256, 13))
+        .to_vec();
+    all.push(FccParams {
+        bridge: Some(4),
+        ring_reach: Some(32),
+        open_limit: Some(100),
+        ..column(3, 128, limits::HW_COLUMN_COLS_MAX, 16)
+    });
+    for p in all {
+        let dir = scratch(&format!("col{}", p.hash()));
+        write_rtl(&p, &dir).unwrap();
+        if let Err(e) = lint::lint_files(&p, &dir.join("fcc_top.v"), &dir.join("fcc_lint.vlt")) {
+            panic!("{}: {e}", fcc_rtl::param_summary(&p));
+        }
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+}
+
+/// The column core's limits are errors naming the field and the rule.
+#[test]
+fn column_core_sizes_are_checked() {
+    let p = FccParams {
+        scan: Scan::Column,
+        ..Default::default()
+    };
+    for (bad, field, rule) in [
+        (
+            FccParams {
+                cols: 4096,
+                ..p.clone()
+            },
+            "cols",
+            "the column core",
+        ),
+        (
+            FccParams {
+                rows: 18,
+                fsize: 11,
+                ..p.clone()
+            },
+            "rows",
+            "19 ..= 128 (the column core at K = 11)",
+        ),
+    ] {
+        let e = generate(&bad).unwrap_err().to_string();
+        assert!(e.contains(field) && e.contains(rule), "{e}");
+    }
+    // The limits the row-major core refuses are its run registers.
+    let limited = FccParams {
+        bridge: Some(3),
+        ring_reach: Some(0),
+        open_limit: Some(7),
+        ..p.clone()
+    };
+    let g = generate(&limited).unwrap();
+    assert!(g.regs_header.contains("RUN_BRIDGE") && g.params_json.contains("\"scan\": \"column\""));
+    let e = generate(&FccParams {
+        scan: Scan::Row,
+        ..limited
+    })
+    .unwrap_err()
+    .to_string();
+    assert!(e.contains("bridge") && e.contains("--scan column"), "{e}");
 }
 
 #[test]

@@ -76,7 +76,9 @@ pub struct FccColSlotBuf {
     /// The entries' labels, zeros past the last.
     lab: Vec<Signal<Local, Bits<16>>>,
     popped: Signal<Local, Bit>,
-    zero16: Constant<Bits<16>>,
+    /// Zero for the last word's unused labels (none when the entries fill
+    /// whole words, as at K = 9).
+    zero16: Vec<Constant<Bits<16>>>,
     zero64: Constant<Bits<64>>,
     _n: usize,
 }
@@ -108,7 +110,7 @@ impl FccColSlotBuf {
             onehot: (0..n).map(|e| kb(1u64 << e)).collect(),
             lab: vec_of(4 * w),
             popped: Default::default(),
-            zero16: kb(0),
+            zero16: (n < 4 * w).then(|| kb(0)).into_iter().collect(),
             zero64: kb(0),
             _n: n,
         }
@@ -156,7 +158,7 @@ impl Logic for FccColSlotBuf {
             self.lab[e].next = self.in_label[e].val();
         }
         for e in (self._n)..(self.lab.len()) {
-            self.lab[e].next = self.zero16.val();
+            self.lab[e].next = self.zero16[0].val();
         }
         for w in 0..self.labels.len() {
             self.labels[w].clk.next = self.clk.val();
