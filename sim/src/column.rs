@@ -39,9 +39,9 @@ pub fn golden_items(p: &FccParams, f: &Frame, frame_error: bool) -> Result<Vec<I
     }
     let recs = s.finish()?;
     items.extend(recs.iter().map(|r| Item::Record(r.hw())));
-    let end = s
-        .frame_end()
-        .ok_or_else(|| SimError::Mismatch("the golden stream has no frame end after finish".into()))?;
+    let end = s.frame_end().ok_or_else(|| {
+        SimError::Mismatch("the golden stream has no frame end after finish".into())
+    })?;
     items.push(Item::End(FrameEnd { frame_error, ..end }));
     Ok(items)
 }
@@ -51,6 +51,9 @@ pub fn golden_items(p: &FccParams, f: &Frame, frame_error: bool) -> Result<Vec<I
 #[derive(Debug, Clone)]
 pub struct ColFrame {
     pub name: String,
+    /// The frame's size.
+    pub rows: usize,
+    pub cols: usize,
     pub beats: Vec<u64>,
     pub items: Vec<Item>,
 }
@@ -78,6 +81,8 @@ impl ColFrame {
         };
         Ok(ColFrame {
             name: name.to_string(),
+            rows: p.rows,
+            cols: p.cols,
             beats,
             items,
         })
@@ -128,6 +133,30 @@ pub struct ColRun {
     /// Per frame, the status registers' snapshot as the port gives it after
     /// `status_frame_done`: (clusters, provisional, gear_stalls).
     pub status: Vec<(u32, u32, u32)>,
+    /// Per record closed before its frame's end, the cycles from the last
+    /// pixel of its closing column (`closed_col`) taken to its first beat
+    /// taken.
+    pub latency: Vec<u64>,
+    /// Per record closed at its frame's end, the cycles from the frame's
+    /// last pixel taken to its first beat taken.
+    pub end_latency: Vec<u64>,
+}
+
+impl ColRun {
+    /// Cycles per pixel in: the input's cycles over the pixels of `frames`.
+    pub fn cycles_per_pixel(&self, frames: &[ColFrame], p: &FccParams) -> f64 {
+        self.in_cycles as f64 / (frames.len() * p.pixels()) as f64
+    }
+}
+
+/// The `q`-quantile (0 ..= 1) of `v` (sorted here), 0 for none.
+pub fn quantile(v: &[u64], q: f64) -> u64 {
+    let mut s = v.to_vec();
+    s.sort_unstable();
+    match s.len() {
+        0 => 0,
+        n => s[((n - 1) as f64 * q).round() as usize],
+    }
 }
 
 /// An item in one line.
@@ -151,7 +180,11 @@ impl Dut {
     /// rules (`tkeep` all ones; `tdata`, `tlast` held while not taken).
     /// The first difference is an error naming the frame, the item, what
     /// was expected and what came, and the seed.
-    pub fn run_columns(&mut self, frames: &[ColFrame], drive: &ColDrive) -> Result<ColRun, SimError> {
+    pub fn run_columns(
+        &mut self,
+        frames: &[ColFrame],
+        drive: &ColDrive,
+    ) -> Result<ColRun, SimError> {
         let mut rng = ChaCha8Rng::seed_from_u64(drive.seed);
         let mut want: VecDeque<(usize, usize, Item)> = frames
             .iter()
@@ -164,6 +197,11 @@ impl Dut {
         let mut run = ColRun::default();
         let start = self.cycle;
         let mut held: Option<(u64, u8)> = None;
+        // Per frame sent, the cycle each column's last pixel was taken (a
+        // frame cut short: its last beat's for the rest).
+        let mut col_done: Vec<Vec<u64>> = vec![Vec::new(); frames.len()];
+        // The frame being read and the cycle its current item began.
+        let (mut reading, mut item_start) = (0usize, None::<u64>);
         while !want.is_empty() || !ends.is_empty() {
             let offer = frame < frames.len() && !rng.gen_bool(drive.gap);
             let take = !rng.gen_bool(drive.backpressure);
@@ -185,6 +223,16 @@ impl Dut {
             }
             if offer && o.s_axis_tready != 0 {
                 pos += 1;
+                let (rows, cols) = (frames[frame].rows, frames[frame].cols);
+                let upto = if pos == beats.len() {
+                    cols
+                } else {
+                    (pos / rows).min(cols)
+                };
+                let done = &mut col_done[frame];
+                while done.len() < upto {
+                    done.push(self.cycle);
+                }
                 if pos == beats.len() {
                     (frame, pos) = (frame + 1, 0);
                     if frame == frames.len() {
@@ -214,8 +262,11 @@ impl Dut {
                         drive.seed
                     )));
                 }
-                run.status
-                    .push((o.status_clusters, o.status_provisional, o.status_gear_stalls));
+                run.status.push((
+                    o.status_clusters,
+                    o.status_provisional,
+                    o.status_gear_stalls,
+                ));
             }
             if o.m_axis_tvalid == 0 {
                 if held.is_some() {
@@ -245,10 +296,14 @@ impl Dut {
                 continue;
             }
             held = None;
+            let begun = *item_start.get_or_insert(self.cycle);
             let got = reader
                 .push(o.m_axis_tdata, o.m_axis_tlast != 0)
-                .map_err(|e| SimError::Mismatch(format!("the record stream: {e} (seed {:#x})", drive.seed)))?;
+                .map_err(|e| {
+                    SimError::Mismatch(format!("the record stream: {e} (seed {:#x})", drive.seed))
+                })?;
             let Some(got) = got else { continue };
+            item_start = None;
             let Some((n, i, exp)) = want.pop_front() else {
                 return Err(SimError::Mismatch(format!(
                     "an item after the last frame's end beat: {} (seed {:#x})",
@@ -266,8 +321,19 @@ impl Dut {
                 )));
             }
             match got {
-                Item::Record(_) => run.records += 1,
-                Item::End(e) => ends.push_back(e),
+                Item::Record(r) => {
+                    run.records += 1;
+                    let done = &col_done[reading];
+                    let last = *done.last().unwrap_or(&begun);
+                    match done.get(r.closed_col as usize) {
+                        Some(&at) => run.latency.push(begun.saturating_sub(at)),
+                        None => run.end_latency.push(begun.saturating_sub(last)),
+                    }
+                }
+                Item::End(e) => {
+                    ends.push_back(e);
+                    reading += 1;
+                }
             }
             run.cycles = self.cycle - start;
         }

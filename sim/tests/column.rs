@@ -56,18 +56,27 @@ fn column_core(fsize: usize) {
         set.push(frame(&p, &f, Tlast::Normal, &format!("random {seed}")));
     }
     assert!(
-        set.iter().any(|f| matches!(f.items.last(), Some(fcc_pixel::record::Item::End(e)) if e.overflow)),
+        set.iter()
+            .any(|f| matches!(f.items.last(), Some(fcc_pixel::record::Item::End(e)) if e.overflow)),
         "a frame must run out of the {} labels",
         p.max_label()
     );
-    for (n, (gap, backpressure)) in [(0.0, 0.0), (0.3, 0.5), (0.05, 0.8)].into_iter().enumerate() {
+    for (n, (gap, backpressure)) in [(0.0, 0.0), (0.3, 0.5), (0.05, 0.8)]
+        .into_iter()
+        .enumerate()
+    {
         let drive = ColDrive {
             gap,
             backpressure,
             seed: (fsize * 100 + n) as u64,
             ..Default::default()
         };
-        let r = run(&mut d, &set, &drive, &format!("directed and random, drive {n}"));
+        let r = run(
+            &mut d,
+            &set,
+            &drive,
+            &format!("directed and random, drive {n}"),
+        );
         assert_eq!(r.status.len(), set.len());
         for (f, (clusters, _, _)) in set.iter().zip(&r.status) {
             assert_eq!(*clusters, f.records().min(0xFFFF), "{}: CLUSTERS", f.name);
@@ -89,14 +98,20 @@ fn column_core(fsize: usize) {
     };
     run(&mut d, &ends, &drive, "early and late tlast");
     // A reset in the middle of a frame, then frames from scratch.
-    let clean = [frame(&p, &frames::u_shapes(&p), Tlast::Normal, "after reset")];
+    let clean = [frame(
+        &p,
+        &frames::u_shapes(&p),
+        Tlast::Normal,
+        "after reset",
+    )];
     d.feed_columns(&ends[0], p.pixels() / 2).unwrap();
     d.reset(3);
     run(&mut d, &clean, &ColDrive::default(), "after a reset");
     // The same with CONTROL.SOFT_RESET: the registers keep their values.
     d.feed_columns(&ends[2], p.pixels() / 3).unwrap();
     let mut m = AxilMaster::new(fsize as u64);
-    m.write_ok(&mut d, offset::CONTROL, bits::CONTROL_SOFT_RESET).unwrap();
+    m.write_ok(&mut d, offset::CONTROL, bits::CONTROL_SOFT_RESET)
+        .unwrap();
     run(&mut d, &clean, &ColDrive::default(), "after a soft reset");
     // Run registers: a smaller K and frame, adaptive thresholds and the
     // stream's limits, then the build's values again.
@@ -112,11 +127,17 @@ fn column_core(fsize: usize) {
         ..p.clone()
     };
     for runp in [small.clone(), p.clone()] {
-        d.program_run(&runp).unwrap_or_else(|e| panic!("programming: {e}"));
+        d.program_run(&runp)
+            .unwrap_or_else(|e| panic!("programming: {e}"));
         let set: Vec<ColFrame> = (0..3u64)
             .map(|s| {
                 let f = frames::random(&runp, 500 + s);
-                frame(&runp, &f, Tlast::Normal, &format!("run registers, random {s}"))
+                frame(
+                    &runp,
+                    &f,
+                    Tlast::Normal,
+                    &format!("run registers, random {s}"),
+                )
             })
             .collect();
         run(&mut d, &set, &drive, "run registers");

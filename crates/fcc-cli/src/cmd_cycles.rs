@@ -10,8 +10,9 @@ use clap::Args;
 use fcc_golden::Frame;
 use fcc_lidar::ground::{detect_ground, GroundParams};
 use fcc_lidar::ouster::{read_capture, sample_dir, DecodeOptions, OusterMetadata, SAMPLE_CAPTURES};
-use fcc_params::FccParams;
+use fcc_params::{FccParams, Scan};
 use fcc_scene::{generate, SceneConfig};
+use fcc_sim::column::{quantile, ColDrive, ColFrame};
 use fcc_sim::{load, run_and_check, Drive, Dut};
 use fcc_synth::results::{CycleInput, SYNTHETIC_CORPUS};
 use std::path::{Path, PathBuf};
@@ -32,6 +33,76 @@ pub struct CyclesArgs {
     /// Write the measurements here as JSON.
     #[arg(long)]
     pub json: Option<PathBuf>,
+    /// The core: `row` (default) or `column` (the column-streaming core:
+    /// each corpus's frames back to back, record latency reported).
+    #[arg(long, default_value = "row")]
+    pub scan: Scan,
+    /// Label width of the column core's builds.
+    #[arg(long, default_value_t = COLUMN_LABEL_BITS)]
+    pub label_bits: u32,
+}
+
+/// The column core's default label width here: enough for the corpus (it
+/// reuses labels of closed clusters; `fcc cycles --scan column` reports
+/// the most in use at once).
+pub const COLUMN_LABEL_BITS: u32 = 13;
+
+/// One measurement of the column core.
+#[derive(Debug, Clone, serde::Serialize)]
+pub struct ColumnCycles {
+    pub fsize: usize,
+    pub corpus: String,
+    pub frames: usize,
+    /// Rows R (one column time, the latency target) and pixels of a frame.
+    pub rows: usize,
+    pub pixels: usize,
+    /// Input cycles (first beat to the last frame's last beat taken) per pixel.
+    pub cycles_per_pixel: f64,
+    /// Records closed before their frame's end, and their latency after
+    /// their closing column's last pixel: median, 99 %, largest.
+    pub records: usize,
+    pub latency_median: u64,
+    pub latency_99: u64,
+    pub latency_max: u64,
+    /// Records closed at their frame's end: largest latency after its last pixel.
+    pub end_records: usize,
+    pub end_latency_max: u64,
+    /// Most provisional labels in use at once (PROVISIONAL, over the frames).
+    pub labels_in_use_max: u32,
+    /// Cycles column starts waited for the column-start check (GEAR_STALLS, summed).
+    pub held_cycles: u64,
+}
+
+/// Run `frames` back to back through the column core of `p`, checking every
+/// record; one measurement.
+fn measure_columns(p: &FccParams, corpus: &str, frames: &[Frame]) -> anyhow::Result<ColumnCycles> {
+    let mut dut = Dut::new(load(p)?);
+    dut.reset(4);
+    let set = frames
+        .iter()
+        .enumerate()
+        .map(|(i, f)| ColFrame::new(p, f, fcc_sim::Tlast::Normal, &format!("{corpus} frame {i}")))
+        .collect::<Result<Vec<_>, _>>()?;
+    let run = dut
+        .run_columns(&set, &ColDrive::default())
+        .with_context(|| format!("K = {}, {corpus}", p.fsize))?;
+    let q = |v: &[u64], x: f64| quantile(v, x);
+    Ok(ColumnCycles {
+        fsize: p.fsize,
+        corpus: corpus.to_string(),
+        frames: frames.len(),
+        rows: p.rows,
+        pixels: p.pixels(),
+        cycles_per_pixel: run.cycles_per_pixel(&set, p),
+        records: run.latency.len(),
+        latency_median: q(&run.latency, 0.5),
+        latency_99: q(&run.latency, 0.99),
+        latency_max: q(&run.latency, 1.0),
+        end_records: run.end_latency.len(),
+        end_latency_max: q(&run.end_latency, 1.0),
+        labels_in_use_max: run.status.iter().map(|s| s.1).max().unwrap_or(0),
+        held_cycles: run.status.iter().map(|s| u64::from(s.2)).sum(),
+    })
 }
 
 /// Run `frames` through the core of `p`, checking each; returns one measurement.
@@ -82,9 +153,11 @@ fn ouster_frames(dir: &Path) -> anyhow::Result<Vec<(String, Frame, Frame)>> {
     Ok(out)
 }
 
-/// All measurements asked for, with progress on stderr.
-pub fn collect(args: &CyclesArgs) -> anyhow::Result<Vec<CycleInput>> {
-    let base = FccParams::default();
+/// The corpus: the synthetic scenes (64 x 2048) and the Ouster frames
+/// (each with its ground removed and kept).
+type Corpus = (Vec<Frame>, Vec<(String, Frame, Frame)>);
+
+fn corpus(args: &CyclesArgs, base: &FccParams) -> anyhow::Result<Corpus> {
     let scenes = (1..=args.frames)
         .map(|seed| {
             let cfg = SceneConfig {
@@ -108,6 +181,13 @@ pub fn collect(args: &CyclesArgs) -> anyhow::Result<Vec<CycleInput>> {
             )
         })?
     };
+    Ok((scenes, ouster))
+}
+
+/// All measurements asked for, with progress on stderr.
+pub fn collect(args: &CyclesArgs) -> anyhow::Result<Vec<CycleInput>> {
+    let base = FccParams::default();
+    let (scenes, ouster) = corpus(args, &base)?;
     let mut all = Vec::new();
     for &k in &args.fsize {
         let p = FccParams {
@@ -139,7 +219,81 @@ pub fn collect(args: &CyclesArgs) -> anyhow::Result<Vec<CycleInput>> {
     Ok(all)
 }
 
+/// The column core's measurements, with progress on stderr.
+pub fn collect_columns(args: &CyclesArgs) -> anyhow::Result<Vec<ColumnCycles>> {
+    let base = FccParams {
+        label_bits: args.label_bits,
+        scan: Scan::Column,
+        ..FccParams::default()
+    };
+    let (scenes, ouster) = corpus(args, &base)?;
+    let mut all = Vec::new();
+    for &k in &args.fsize {
+        let p = FccParams {
+            fsize: k,
+            ..base.clone()
+        };
+        p.validate_for_hardware()?;
+        eprintln!(
+            "K = {k}: {} synthetic scenes back to back ...",
+            scenes.len()
+        );
+        all.push(measure_columns(&p, SYNTHETIC_CORPUS, &scenes)?);
+        for (name, with_ground, without) in &ouster {
+            let q = FccParams {
+                rows: with_ground.rows,
+                cols: with_ground.cols,
+                ..p.clone()
+            };
+            eprintln!("K = {k}: {name} ...");
+            all.push(measure_columns(
+                &q,
+                &format!("{name} ground removed"),
+                std::slice::from_ref(without),
+            )?);
+            all.push(measure_columns(
+                &q,
+                &format!("{name} ground kept"),
+                std::slice::from_ref(with_ground),
+            )?);
+        }
+    }
+    Ok(all)
+}
+
+fn run_columns(args: &CyclesArgs) -> anyhow::Result<()> {
+    let all = collect_columns(args)?;
+    println!("| K | corpus | frames | cycles / pixel | records | latency median / 99 % / max | R | frame-end records, max latency | labels in use, most | column starts held |");
+    println!("|---|---|---|---|---|---|---|---|---|---|");
+    for m in &all {
+        println!(
+            "| {} | {} | {} | {:.3} | {} | {} / {} / {} | {} | {}, {} | {} | {} |",
+            m.fsize,
+            m.corpus,
+            m.frames,
+            m.cycles_per_pixel,
+            m.records,
+            m.latency_median,
+            m.latency_99,
+            m.latency_max,
+            m.rows,
+            m.end_records,
+            m.end_latency_max,
+            m.labels_in_use_max,
+            m.held_cycles
+        );
+    }
+    if let Some(path) = &args.json {
+        fcc_io::write_atomic(path, serde_json::to_string_pretty(&all)?.as_bytes())
+            .with_context(|| format!("{}: cannot write", path.display()))?;
+    }
+    Ok(())
+}
+
 pub fn run(args: &CyclesArgs) -> anyhow::Result<()> {
+    if args.scan == Scan::Column {
+        return run_columns(args);
+    }
     let all = collect(args)?;
     println!("| K | corpus | frames | cycles / frame | x R x C | latency |");
     println!("|---|---|---|---|---|---|");

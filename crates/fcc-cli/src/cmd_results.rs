@@ -63,6 +63,8 @@ pub fn run(args: &ResultsArgs) -> anyhow::Result<()> {
         frames: args.frames,
         ouster_dir: None,
         json: Some(cycles_json.clone()),
+        scan: fcc_params::Scan::Row,
+        label_bits: cmd_cycles::COLUMN_LABEL_BITS,
     })?;
     eprintln!("3/3 Yosys resources and timing (fcc synth --all)");
     let attach = |file: &PathBuf, table: &str, how: &str| {

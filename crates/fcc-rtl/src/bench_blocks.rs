@@ -66,6 +66,10 @@ pub enum BenchBlock {
     /// The column core's datapath `FccColCore`: the input, slot table and
     /// record store halves wired, pixels in and records out.
     ColCore,
+    /// The column top's run parameters in the datapath's form
+    /// (`FccColLimits`) behind the registered inputs of
+    /// `FccColLimitsProbe`.
+    ColLimits,
     /// The column core's record accumulator (`FccAccPixel`, `FccAccMerge`)
     /// over the four registers of `FccAccProbe`.
     Acc,
@@ -130,7 +134,7 @@ impl Row {
 
 impl BenchBlock {
     /// Every block with a bench.
-    pub const ALL: [BenchBlock; 35] = [
+    pub const ALL: [BenchBlock; 36] = [
         BenchBlock::Regs,
         BenchBlock::AxilAdapter,
         BenchBlock::MergeTable,
@@ -152,6 +156,7 @@ impl BenchBlock {
         BenchBlock::ColIn,
         BenchBlock::ColTable,
         BenchBlock::ColCore,
+        BenchBlock::ColLimits,
         BenchBlock::Acc,
         BenchBlock::RecordOut,
         BenchBlock::LabelPool,
@@ -332,6 +337,17 @@ impl BenchBlock {
                     )
                 },
                 waivers: lint::col_core_waivers,
+            },
+            BenchBlock::ColLimits => Row {
+                name: "fcc_col_limits",
+                generate: |p| {
+                    gen(
+                        p,
+                        crate::column::fcc_col_limits_probe::FccColLimitsProbe::default(),
+                        "fcc_col_limits",
+                    )
+                },
+                waivers: lint::col_limits_waivers,
             },
             BenchBlock::Acc => Row {
                 name: "fcc_acc",

@@ -594,3 +594,18 @@ fn col_top_waivers(p: &FccParams) -> String {
     s.push_str(&axil_waivers("fcc_top.v"));
     s
 }
+
+/// The waivers of the column top's limits behind their probe: the probe
+/// takes RUN_COLS as the register holds it (13 bits; the column core's
+/// frames have at most 4095 columns) and RUN_OPEN_LIMIT in 12 bits (at
+/// most 511).
+pub fn col_limits_waivers(p: &FccParams, name: &str) -> String {
+    let mut s = block_waivers(p, name);
+    s.push_str(&format!(
+        "// RUN_COLS is at most 4095 in the column core.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'run_cols'[12]*\"\n\
+         // RUN_OPEN_LIMIT is at most 511.\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*{name}.v\" -match \"*'open_limit'[11:10]*\"\n"
+    ));
+    s
+}

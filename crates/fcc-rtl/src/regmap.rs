@@ -19,7 +19,8 @@ use serde::Serialize;
 use crate::GENERATOR_VERSION;
 
 pub use fcc_regmap::{
-    bits, offset, ADDR_BITS, ID_MAGIC, LIMIT_MAX, OPEN_LIMIT_MAX, RUN_COLS_MIN, SLOPE_Q_MAX, TH_Q_MAX,
+    bits, offset, ADDR_BITS, ID_MAGIC, LIMIT_MAX, OPEN_LIMIT_MAX, RUN_COLS_MIN, SLOPE_Q_MAX,
+    TH_Q_MAX,
 };
 
 /// How software may access a register.

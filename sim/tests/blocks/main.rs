@@ -31,6 +31,7 @@ mod col_core;
 mod col_dist;
 mod col_front;
 mod col_in;
+mod col_limits;
 mod col_slot_buf;
 mod col_start;
 mod col_table;

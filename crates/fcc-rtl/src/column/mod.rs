@@ -47,6 +47,7 @@ pub mod fcc_col_front_probe;
 pub mod fcc_col_in;
 pub mod fcc_col_in_probe;
 pub mod fcc_col_limits;
+pub mod fcc_col_limits_probe;
 pub mod fcc_col_settle;
 pub mod fcc_col_slot_buf;
 pub mod fcc_col_slot_buf_probe;
