@@ -40,6 +40,14 @@ pub struct CyclesArgs {
     /// Label width of the column core's builds.
     #[arg(long, default_value_t = COLUMN_LABEL_BITS)]
     pub label_bits: u32,
+    /// The column core's bridge limit (default: the recommended streaming
+    /// setting; 0xFFF or more: none).
+    #[arg(long, default_value_t = fcc_params::RECOMMENDED_BRIDGE)]
+    pub bridge: u32,
+    /// The column core's ring reach (default: the recommended streaming
+    /// setting; 0xFFF or more: none).
+    #[arg(long, default_value_t = fcc_params::RECOMMENDED_RING_REACH)]
+    pub ring_reach: u32,
 }
 
 /// The column core's default label width here: enough for the corpus (it
@@ -221,8 +229,11 @@ pub fn collect(args: &CyclesArgs) -> anyhow::Result<Vec<CycleInput>> {
 
 /// The column core's measurements, with progress on stderr.
 pub fn collect_columns(args: &CyclesArgs) -> anyhow::Result<Vec<ColumnCycles>> {
+    let none = |v: u32| (v < fcc_rtl::regmap::LIMIT_MAX).then_some(v);
     let base = FccParams {
         label_bits: args.label_bits,
+        bridge: none(args.bridge),
+        ring_reach: none(args.ring_reach),
         scan: Scan::Column,
         ..FccParams::default()
     };

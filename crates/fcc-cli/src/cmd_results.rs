@@ -65,6 +65,8 @@ pub fn run(args: &ResultsArgs) -> anyhow::Result<()> {
         json: Some(cycles_json.clone()),
         scan: fcc_params::Scan::Row,
         label_bits: cmd_cycles::COLUMN_LABEL_BITS,
+        bridge: fcc_params::RECOMMENDED_BRIDGE,
+        ring_reach: fcc_params::RECOMMENDED_RING_REACH,
     })?;
     eprintln!("3/3 Yosys resources and timing (fcc synth --all)");
     let attach = |file: &PathBuf, table: &str, how: &str| {

@@ -164,6 +164,12 @@ fn is_zero(v: &f64) -> bool {
     *v == 0.0
 }
 
+/// The recommended streaming limits (docs/streaming.md): `--bridge 16
+/// --ring-reach 16` keeps every record within 17 columns of its last one
+/// at almost no change of the partition.
+pub const RECOMMENDED_BRIDGE: u32 = 16;
+pub const RECOMMENDED_RING_REACH: u32 = 16;
+
 /// Fractional bits of a threshold slope (UQ0.16, metres per metre).
 pub const SLOPE_FRAC_BITS: u32 = 16;
 

@@ -70,6 +70,8 @@ pub enum BenchBlock {
     /// (`FccColLimits`) behind the registered inputs of
     /// `FccColLimitsProbe`.
     ColLimits,
+    /// The column top's frame sequence (`FccColFlow`).
+    ColFlow,
     /// The column core's record accumulator (`FccAccPixel`, `FccAccMerge`)
     /// over the four registers of `FccAccProbe`.
     Acc,
@@ -134,7 +136,7 @@ impl Row {
 
 impl BenchBlock {
     /// Every block with a bench.
-    pub const ALL: [BenchBlock; 36] = [
+    pub const ALL: [BenchBlock; 37] = [
         BenchBlock::Regs,
         BenchBlock::AxilAdapter,
         BenchBlock::MergeTable,
@@ -157,6 +159,7 @@ impl BenchBlock {
         BenchBlock::ColTable,
         BenchBlock::ColCore,
         BenchBlock::ColLimits,
+        BenchBlock::ColFlow,
         BenchBlock::Acc,
         BenchBlock::RecordOut,
         BenchBlock::LabelPool,
@@ -348,6 +351,17 @@ impl BenchBlock {
                     )
                 },
                 waivers: lint::col_limits_waivers,
+            },
+            BenchBlock::ColFlow => Row {
+                name: "fcc_col_flow",
+                generate: |p| {
+                    gen(
+                        p,
+                        crate::column::fcc_col_flow::FccColFlow::default(),
+                        "fcc_col_flow",
+                    )
+                },
+                waivers: lint::block_waivers,
             },
             BenchBlock::Acc => Row {
                 name: "fcc_acc",

@@ -29,6 +29,7 @@ mod close_order;
 mod closer;
 mod col_core;
 mod col_dist;
+mod col_flow;
 mod col_front;
 mod col_in;
 mod col_limits;

@@ -48,17 +48,17 @@ pub struct FccColFlow {
     pub start_hold: Signal<Out, Bit>,
     pub reload_next: Signal<Out, Bit>,
     pub reload: Signal<Out, Bit>,
-    /// Frames in the datapath after their last pixel (at most 2: one
-    /// ending, one whose input is done).
-    open: DFF<Bits<2>>,
+    /// Frames in the datapath after their last pixel (short frames can
+    /// queue up behind a long frame end; far fewer than 255).
+    open: DFF<Bits<8>>,
     done_q: DFF<Bit>,
     restarted: DFF<Bit>,
     dirty: DFF<Bit>,
     reload_q: DFF<Bit>,
     /// A frame's input is done in this cycle.
     rise: Signal<Local, Bit>,
-    zero2: Constant<Bits<2>>,
-    one2: Constant<Bits<2>>,
+    zero8: Constant<Bits<8>>,
+    one8: Constant<Bits<8>>,
 }
 
 impl Default for FccColFlow {
@@ -83,8 +83,8 @@ impl Default for FccColFlow {
             dirty: Default::default(),
             reload_q: Default::default(),
             rise: Default::default(),
-            zero2: kb(0),
-            one2: kb(1),
+            zero8: kb(0),
+            one8: kb(1),
         }
     }
 }
@@ -96,21 +96,21 @@ impl Logic for FccColFlow {
         self.rise.next = self.in_done.val() & !self.done_q.q.val();
         self.done_q.d.next = self.in_done.val();
         if self.rise.val() & !self.end_sent.val() {
-            self.open.d.next = self.open.q.val() + self.one2.val();
+            self.open.d.next = self.open.q.val() + self.one8.val();
         }
         if !self.rise.val() & self.end_sent.val() {
-            self.open.d.next = self.open.q.val() - self.one2.val();
+            self.open.d.next = self.open.q.val() - self.one8.val();
         }
-        self.quiet.next = self.open.q.val() == self.zero2.val();
-        self.load_next.next = self.idle_next.val() & (self.open.d.val() == self.zero2.val());
+        self.quiet.next = self.open.q.val() == self.zero8.val();
+        self.load_next.next = self.idle_next.val() & (self.open.d.val() == self.zero8.val());
         self.restart.next = self.in_done.val()
             & !self.restarted.q.val()
-            & (!self.dirty.q.val() | (self.open.q.val() == self.zero2.val()));
+            & (!self.dirty.q.val() | (self.open.q.val() == self.zero8.val()));
         self.restarted.d.next = self.restart.val();
         // The registers load while idle and quiet; with a write owed, the
         // datapath is reset after.
         self.reload_next.next = false;
-        if self.idle.val() & (self.open.q.val() == self.zero2.val()) {
+        if self.idle.val() & (self.open.q.val() == self.zero8.val()) {
             self.dirty.d.next = false;
             self.reload_next.next = self.dirty.q.val();
         }
@@ -121,7 +121,7 @@ impl Logic for FccColFlow {
             self.dirty.d.next = true;
         }
         if self.rst.val() {
-            self.open.d.next = self.zero2.val();
+            self.open.d.next = self.zero8.val();
             self.done_q.d.next = false;
             self.restarted.d.next = false;
             self.dirty.d.next = false;
