@@ -12,18 +12,9 @@ pub fn waivers(p: &FccParams) -> String {
     if p.scan == fcc_params::Scan::Column {
         return col_top_waivers(p);
     }
-    let mut s = file_header(p, "//");
-    s.push_str("`verilator_config\n");
+    let mut s = top_waivers(p);
     s.push_str(
-        "// The generator writes every module of the core into one file, fcc_top.v;\n\
-         // the file is named after the top module only.\n\
-         lint_off -rule DECLFILENAME -file \"*fcc_top.v\"\n\
-         // Bits 63:49 of an input beat are reserved and ignored by definition.\n\
-         lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'s_axis_tdata'[63:49]*\"\n\
-         // s_axis_tkeep is ignored by definition: every beat is one whole pixel\n\
-         // (the port exists so that an AXI DMA's MM2S stream connects cleanly).\n\
-         lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'s_axis_tkeep'*\"\n\
-         // The frame's columns C (<= 4096) are used modulo 4096 (as C - 1 and\n\
+        "// The frame's columns C (<= 4096) are used modulo 4096 (as C - 1 and\n\
          // C - 2, both below 4096), so bit 12 of the run value is not read.\n\
          lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'regs$run_cols'[12]*\"\n\
          // FccFifo offers its fill level and its RAM's ports (for side RAMs) to\n\
@@ -559,10 +550,9 @@ pub fn col_core_waivers(p: &FccParams, name: &str) -> String {
     s
 }
 
-/// The waivers of the column core's `fcc_top.v` (`fcc gen --scan column`):
-/// its datapath's ([`col_core_waivers`]), the register file's, and the
-/// top's own.
-fn col_top_waivers(p: &FccParams) -> String {
+/// The header of `fcc_lint.vlt` and the waivers of the top's ports, the
+/// same in both cores.
+fn top_waivers(p: &FccParams) -> String {
     let mut s = file_header(p, "//");
     s.push_str("`verilator_config\n");
     s.push_str(
@@ -573,8 +563,18 @@ fn col_top_waivers(p: &FccParams) -> String {
          lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'s_axis_tdata'[63:49]*\"\n\
          // s_axis_tkeep is ignored by definition: every beat is one whole pixel\n\
          // (the port exists so that an AXI DMA's MM2S stream connects cleanly).\n\
-         lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'s_axis_tkeep'*\"\n\
-         // The column core has at most 4095 columns (fcc-params checks it), so\n\
+         lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'s_axis_tkeep'*\"\n",
+    );
+    s
+}
+
+/// The waivers of the column core's `fcc_top.v` (`fcc gen --scan column`):
+/// its datapath's ([`col_core_waivers`]), the register file's, and the
+/// top's own.
+fn col_top_waivers(p: &FccParams) -> String {
+    let mut s = top_waivers(p);
+    s.push_str(
+        "// The column core has at most 4095 columns (fcc-params checks it), so\n\
          // bit 12 of RUN_COLS is 0.\n\
          lint_off -rule UNUSEDSIGNAL -file \"*fcc_top.v\" -match \"*'run_cols'[12]*\"\n\
          // The datapath's fault flags (a label not in its row, a run, flush,\n\

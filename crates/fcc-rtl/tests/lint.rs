@@ -119,6 +119,25 @@ fn column_core_lints_clean_for_every_fsize_and_the_largest_frame() {
     }
 }
 
+/// The column core has the row-major core's ports, in the same order and
+/// widths (so one XDC, block design and Verilator harness serve both).
+#[test]
+fn the_column_core_has_the_row_cores_ports() {
+    let row = small(7);
+    let col = FccParams {
+        scan: Scan::Column,
+        label_bits: 13,
+        ..row.clone()
+    };
+    let ports = |p: &FccParams| {
+        let g = generate(p).unwrap();
+        fcc_rtl::vivado::top_ports(&g.verilog, &fcc_rtl::top_module(p))
+    };
+    let (a, b) = (ports(&row), ports(&col));
+    assert!(a.len() > 30, "{} ports read", a.len());
+    assert_eq!(a, b);
+}
+
 /// The column core's limits are errors naming the field and the rule.
 #[test]
 fn column_core_sizes_are_checked() {
