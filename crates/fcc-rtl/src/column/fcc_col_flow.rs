@@ -23,7 +23,8 @@
 //!   with `reload_next` its flip-flop's input, as the register file's
 //!   `core_rst`), since its per-row state and tables follow the frame's
 //!   size and K. Nothing is lost: no frame is in it, and no pixel is taken
-//!   while `run` is low.
+//!   while `start_hold` is high (the reset's cycle drops the input's ready
+//!   itself).
 
 use rust_hdl::prelude::*;
 
