@@ -47,6 +47,19 @@ pub fn c_example(p: &FccParams, board: Board) -> String {
     };
     let mut s = file_header(p, "//");
     s.push_str(&format!("// Board: {} ({})\n", b.name, b.part));
+    if p.scan == fcc_params::Scan::Column {
+        // Not a label example that compiles and misreads records.
+        s.push_str(
+            "//\n\
+             // This example reads a row-major core's label image; this build is the\n\
+             // column-streaming core (--scan column), which sends one record per\n\
+             // cluster and an end beat per frame (docs/spec.md, section 9.4). Its\n\
+             // bare-metal example and its driver are still to be written\n\
+             // (docs/column-core.md); `fcc sim --rtl DIR` runs this build in Verilator.\n\
+             #error \"fcc: no bare-metal example for the column-streaming core yet\"\n",
+        );
+        return s;
+    }
     s.push_str(&crate::vivado::fill_public(
         EXAMPLE,
         &[

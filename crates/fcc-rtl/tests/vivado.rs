@@ -1246,3 +1246,35 @@ fn another_configuration_is_not_overwritten_without_force() {
         .unwrap()
         .contains(&k5.hash()));
 }
+
+/// A column build's S2MM is sized for a frame of records (each pixel a
+/// cluster at most, then the end beat), and its C example refuses to
+/// compile rather than misread records as labels.
+#[test]
+fn a_column_build_sizes_its_dma_for_records_and_has_no_label_example() {
+    let p = FccParams {
+        scan: fcc_params::Scan::Column,
+        label_bits: 13,
+        ..small()
+    };
+    let (_, out) = vivado::dma_frame_bytes(&p, &ports(&p)).unwrap();
+    assert_eq!(
+        out,
+        (p.pixels() as u64 * fcc_pixel::record::RECORD_WORDS as u64 + 1) * 8
+    );
+    let bits = vivado::dma_length_width(&p, &ports(&p)).unwrap();
+    assert!(1u64 << bits > out, "{bits} length bits for {out} bytes");
+    let fs = files(&p);
+    let example = fs
+        .iter()
+        .find(|(name, _)| name.ends_with("_example.c"))
+        .expect("the C example");
+    assert!(example.1.contains("#error"), "{}", example.1);
+    // The row-major build's example is the label example.
+    let row = files(&small());
+    let example = row
+        .iter()
+        .find(|(name, _)| name.ends_with("_example.c"))
+        .expect("the C example");
+    assert!(!example.1.contains("#error"));
+}

@@ -1,6 +1,6 @@
 //! `scripts/fcc_<board>_bd.tcl`.
 
-use fcc_params::FccParams;
+use fcc_params::{FccParams, Scan};
 
 use crate::{file_header, top_module, RtlError, TOP_NAME};
 
@@ -20,12 +20,18 @@ pub fn register_map_lines(p: &FccParams) -> Vec<String> {
         .collect()
 }
 
-/// Bytes the DMA moves per frame: (MM2S into `s_axis`, S2MM from `m_axis`).
+/// Bytes the DMA moves per frame at most: (MM2S into `s_axis`, S2MM from
+/// `m_axis`: a frame of labels, or of records in a column build).
 pub fn dma_frame_bytes(p: &FccParams, ports: &[Port]) -> Result<(u64, u64), RtlError> {
     let pixels = p.pixels() as u64;
     let in_beat = u64::from(port(ports, "s_axis_tdata")?.width / 8);
     let out_beat = u64::from(port(ports, "m_axis_tdata")?.width / 8);
-    let out_beats = pixels.div_ceil(u64::from(p.labels_per_beat));
+    let out_beats = match p.scan {
+        Scan::Row => pixels.div_ceil(u64::from(p.labels_per_beat)),
+        // A record per pixel at most (every pixel a cluster), then the end
+        // beat (spec §9.4).
+        Scan::Column => pixels * fcc_pixel::record::RECORD_WORDS as u64 + 1,
+    };
     Ok((pixels * in_beat, out_beats * out_beat))
 }
 
