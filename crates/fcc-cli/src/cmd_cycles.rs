@@ -192,10 +192,15 @@ fn corpus(args: &CyclesArgs, base: &FccParams) -> anyhow::Result<Corpus> {
     Ok((scenes, ouster))
 }
 
-/// All measurements asked for, with progress on stderr.
-pub fn collect(args: &CyclesArgs) -> anyhow::Result<Vec<CycleInput>> {
-    let base = FccParams::default();
-    let (scenes, ouster) = corpus(args, &base)?;
+/// `measure` of every K asked for on the corpus (the scenes together, each
+/// capture with its ground removed and kept), cores built from `base`,
+/// with progress on stderr.
+fn each_build<T>(
+    args: &CyclesArgs,
+    base: &FccParams,
+    measure: impl Fn(&FccParams, &str, &[Frame]) -> anyhow::Result<T>,
+) -> anyhow::Result<Vec<T>> {
+    let (scenes, ouster) = corpus(args, base)?;
     let mut all = Vec::new();
     for &k in &args.fsize {
         let p = FccParams {
@@ -227,7 +232,13 @@ pub fn collect(args: &CyclesArgs) -> anyhow::Result<Vec<CycleInput>> {
     Ok(all)
 }
 
-/// The column core's measurements, with progress on stderr.
+/// All measurements asked for, with progress on stderr.
+pub fn collect(args: &CyclesArgs) -> anyhow::Result<Vec<CycleInput>> {
+    each_build(args, &FccParams::default(), measure)
+}
+
+/// The column core's measurements (each corpus's frames back to back),
+/// with progress on stderr.
 pub fn collect_columns(args: &CyclesArgs) -> anyhow::Result<Vec<ColumnCycles>> {
     let none = |v: u32| (v < fcc_rtl::regmap::LIMIT_MAX).then_some(v);
     let base = FccParams {
@@ -237,39 +248,7 @@ pub fn collect_columns(args: &CyclesArgs) -> anyhow::Result<Vec<ColumnCycles>> {
         scan: Scan::Column,
         ..FccParams::default()
     };
-    let (scenes, ouster) = corpus(args, &base)?;
-    let mut all = Vec::new();
-    for &k in &args.fsize {
-        let p = FccParams {
-            fsize: k,
-            ..base.clone()
-        };
-        p.validate_for_hardware()?;
-        eprintln!(
-            "K = {k}: {} synthetic scenes back to back ...",
-            scenes.len()
-        );
-        all.push(measure_columns(&p, SYNTHETIC_CORPUS, &scenes)?);
-        for (name, with_ground, without) in &ouster {
-            let q = FccParams {
-                rows: with_ground.rows,
-                cols: with_ground.cols,
-                ..p.clone()
-            };
-            eprintln!("K = {k}: {name} ...");
-            all.push(measure_columns(
-                &q,
-                &format!("{name} ground removed"),
-                std::slice::from_ref(without),
-            )?);
-            all.push(measure_columns(
-                &q,
-                &format!("{name} ground kept"),
-                std::slice::from_ref(with_ground),
-            )?);
-        }
-    }
-    Ok(all)
+    each_build(args, &base, measure_columns)
 }
 
 fn run_columns(args: &CyclesArgs) -> anyhow::Result<()> {

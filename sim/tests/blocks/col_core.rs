@@ -18,13 +18,13 @@
 
 use std::collections::VecDeque;
 
-use crate::col_in::beats;
 use crate::column::{random_frame, run_params};
 
-use fcc_golden::{Frame, Stream};
+use fcc_golden::Frame;
 use fcc_params::FccParams;
-use fcc_pixel::record::{FrameEnd, Item, RecordReader};
+use fcc_pixel::record::{Item, RecordReader};
 use fcc_rtl::{BenchBlock, RunLimits};
+use fcc_sim::column::{column_beats, golden_items, short};
 use fcc_sim::core_form::thr_inputs;
 use fcc_sim::{c_struct, load_plain, PlainDut};
 use rand::{Rng, SeedableRng};
@@ -117,7 +117,7 @@ struct Golden {
 impl Golden {
     fn of(p: &FccParams, f: &Frame) -> Golden {
         Golden {
-            beats: beats(p, f),
+            beats: column_beats(p, f),
             items: items(p, f, false),
         }
     }
@@ -130,7 +130,7 @@ impl Golden {
             short.set(k % p.rows, k / p.rows, None);
         }
         Golden {
-            beats: beats(p, f)[..n].to_vec(),
+            beats: column_beats(p, f)[..n].to_vec(),
             items: items(p, &short, true),
         }
     }
@@ -138,7 +138,7 @@ impl Golden {
     /// The frame's `tlast` `extra` beats after its last pixel: those beats
     /// dropped, and an input error.
     fn late(p: &FccParams, f: &Frame, extra: usize, rng: &mut ChaCha8Rng) -> Golden {
-        let mut b = beats(p, f);
+        let mut b = column_beats(p, f);
         b.extend((0..extra).map(|_| rng.gen::<u64>() & ((1 << 49) - 1)));
         Golden {
             beats: b,
@@ -149,32 +149,7 @@ impl Golden {
 
 /// The golden stream's records of a frame, then its end beat.
 fn items(p: &FccParams, f: &Frame, frame_error: bool) -> Vec<Item> {
-    let mut s = Stream::new(p).expect("the golden stream");
-    let mut items = Vec::new();
-    let mut column = vec![None; p.rows];
-    for c in 0..p.cols {
-        for (r, v) in column.iter_mut().enumerate() {
-            *v = f.get(r, c);
-        }
-        let recs = s.push_column(&column).expect("a column");
-        items.extend(recs.iter().map(|r| Item::Record(r.hw())));
-    }
-    let recs = s.finish().expect("the frame end");
-    items.extend(recs.iter().map(|r| Item::Record(r.hw())));
-    let end = s.frame_end().expect("finished");
-    items.push(Item::End(FrameEnd { frame_error, ..end }));
-    items
-}
-
-/// An item in one line.
-fn short(i: &Item) -> String {
-    match i {
-        Item::Record(r) => format!(
-            "record {}: {} points, columns {}..{} closed at {}, rows {}..{}, seam {}",
-            r.id, r.points, r.first_col, r.last_col, r.closed_col, r.first_row, r.last_row, r.seam
-        ),
-        Item::End(e) => format!("{e:?}"),
-    }
+    golden_items(p, f, frame_error).expect("the golden stream")
 }
 
 /// The frame's items from the first difference to its end beat, read and

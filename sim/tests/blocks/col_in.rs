@@ -25,6 +25,7 @@ use column::run_params;
 use fcc_golden::{Frame, Stream};
 use fcc_params::FccParams;
 use fcc_rtl::{BenchBlock, RunLimits};
+use fcc_sim::column::column_beats;
 use fcc_sim::core_form::thr_inputs;
 use fcc_sim::{c_struct, load_plain, PlainDut};
 use rand::{Rng, SeedableRng};
@@ -168,21 +169,6 @@ struct Bench {
     seed: u64,
 }
 
-/// The frame's pixel beats in column order.
-pub fn beats(p: &FccParams, f: &Frame) -> Vec<u64> {
-    (0..p.pixels())
-        .map(|k| {
-            let (r, c) = (k % p.rows, k / p.rows);
-            f.get(r, c).map_or(0, |q| {
-                u64::from(q[0] as u16)
-                    | u64::from(q[1] as u16) << 16
-                    | u64::from(q[2] as u16) << 32
-                    | 1 << 48
-            })
-        })
-        .collect()
-}
-
 /// One frame: its beats sent with gaps, the head taken at random; the
 /// frame's outputs checked once all have left.
 fn run_frame(
@@ -196,7 +182,7 @@ fn run_frame(
 ) -> Seen {
     let lim = RunLimits::new(p);
     let thr = thr_inputs(p);
-    let beats = beats(p, f);
+    let beats = column_beats(p, f);
     // The clusters open after each column's previous one (spec §9.1's
     // count, the slot table's when the column is settled).
     let mut opens = vec![0u16; p.cols];

@@ -19,9 +19,9 @@
 
 use std::collections::{HashMap, VecDeque};
 
-use crate::col_in::beats;
 use crate::column;
 use column::{random_frame, run_params};
+use fcc_sim::column::column_beats;
 
 use fcc_golden::{Acc, Frame};
 use fcc_params::FccParams;
@@ -220,7 +220,7 @@ impl Golden {
         let column::Closing { runs, at } = column::closing(p, f);
         let accs = run_accs(p, f, &runs);
         Golden {
-            beats: beats(p, f),
+            beats: column_beats(p, f),
             runs,
             at,
             accs,
