@@ -5,7 +5,7 @@
 //! cycle-accurate on the core's side.
 //!
 //! One clock drives everything. Each cycle the DMA model offers the next
-//! pixel beat (MM2S) and takes label beats (S2MM) from the core; register
+//! pixel beat (MM2S) and takes label or record beats (S2MM) from the core; register
 //! accesses to the core go through its AXI4-Lite slave (a few cycles each),
 //! accesses to the DMA take [`DMA_ACCESS_CYCLES`]. The CPU's cache is
 //! modelled by buffers that hold the CPU's view apart from memory: a driver
@@ -390,10 +390,16 @@ impl VirtualBoard {
         }
     }
 
-    /// Memory for the driver's two buffers of the largest frame and some slack.
+    /// Memory for the driver's two buffers of the largest frame (pixels in;
+    /// labels, or a frame of records for the column core, out) and some
+    /// slack.
     pub fn mem_for(p: &fcc_params::FccParams) -> usize {
         let px = p.pixels();
-        px * 8 + px.div_ceil(4) * 8 + 4 * DMA_ALIGN
+        let out = match p.scan {
+            fcc_params::Scan::Row => fcc_driver::label_buffer_bytes(px),
+            fcc_params::Scan::Column => fcc_driver::record_buffer_bytes(px),
+        };
+        px * fcc_pixel::PIXEL_BYTES + out + 4 * DMA_ALIGN
     }
 
     /// Inject a fault (taken by the next transfer of its channel).
@@ -552,6 +558,7 @@ pub fn build_expect_for(
         hash: fcc_rtl::regmap::hash_value(p),
         dma_length_bits: fcc_rtl::vivado::dma_length_width(p, &ports)?,
         dma_addr_bits: board.info().ps.info().dma_addr_width,
+        column: p.scan == fcc_params::Scan::Column,
     })
 }
 
@@ -587,5 +594,14 @@ pub fn build_run(p: &fcc_params::FccParams) -> fcc_driver::RunConfig {
         th_v_q: q(p.th_v_q()),
         th_h_slope_q: q(p.th_h_slope_q()),
         th_v_slope_q: q(p.th_v_slope_q()),
+        limits: (p.scan == fcc_params::Scan::Column).then(|| {
+            let [bridge, ring_reach, open_limit] =
+                fcc_rtl::regmap::stream_limit_values(p).map(|(_, _, v)| v);
+            fcc_driver::StreamLimits {
+                bridge,
+                ring_reach,
+                open_limit,
+            }
+        }),
     }
 }

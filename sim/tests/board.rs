@@ -269,3 +269,203 @@ fn wrong_build_and_wrong_run_parameters_are_refused() {
     );
     run_ok(&mut d, &p, &f, "after the refusals");
 }
+
+// ---- The column-streaming core on the virtual board.
+
+/// The column regression's K = 3 build (24 x 256, 9-bit labels; its
+/// Verilator model is shared).
+fn column_build() -> FccParams {
+    FccParams {
+        rows: 24,
+        cols: 256,
+        fsize: 3,
+        label_bits: 9,
+        scan: fcc_params::Scan::Column,
+        ..Default::default()
+    }
+}
+
+/// Run `frame` (row-major pixels; the driver sends them in column order)
+/// under `p`'s run values and compare every record and the end beat with
+/// the golden stream's, and the status with the end beat.
+fn records_ok(
+    d: &mut Driver<VirtualBoard>,
+    p: &FccParams,
+    frame: &Frame,
+    pixels: Pixels<'_>,
+    what: &str,
+) -> u32 {
+    use fcc_pixel::record::Item;
+    let mut got = Vec::new();
+    let r = d
+        .run_records(&build_run(p), pixels, &mut got)
+        .unwrap_or_else(|e| panic!("{what}: {e}"));
+    let want = fcc_sim::column::golden_items(p, frame, false).unwrap();
+    let got: Vec<Item> = got
+        .into_iter()
+        .map(Item::Record)
+        .chain([Item::End(r.end)])
+        .collect();
+    if let Some(i) = (0..want.len().max(got.len())).find(|&i| want.get(i) != got.get(i)) {
+        let show = |v: Option<&Item>| v.map_or("nothing".into(), fcc_sim::column::short);
+        panic!(
+            "{what}: item {i} of {} differs: expected {} != got {}",
+            want.len(),
+            show(want.get(i)),
+            show(got.get(i))
+        );
+    }
+    assert_eq!(r.status.clusters, r.end.records.min(0xffff), "{what}");
+    assert_eq!(r.status.overflow, r.end.overflow, "{what}");
+    assert!(r.time_ns > 0);
+    r.end.records
+}
+
+fn records_of(d: &mut Driver<VirtualBoard>, p: &FccParams, f: &Frame, what: &str) -> u32 {
+    records_ok(d, p, f, Pixels::Points(&f.points), what)
+}
+
+#[test]
+fn column_core_records_through_the_dma_equal_the_golden_streams_back_to_back() {
+    let p = column_build();
+    let mut d = open(&p);
+    assert_eq!(d.defaults(), build_run(&p), "the build's run values");
+    let mut total = 0;
+    for seed in 1..=2 {
+        let f = frames::random(&p, seed);
+        total += records_of(&mut d, &p, &f, &format!("random seed {seed}"));
+    }
+    assert!(total > 20, "{total} records");
+    // The first directed frame that runs out of the 511 labels.
+    let (name, f) = frames::directed(&p)
+        .into_iter()
+        .find(|(_, f)| {
+            let items = fcc_sim::column::golden_items(&p, f, false).unwrap();
+            matches!(items.last(), Some(fcc_pixel::record::Item::End(e)) if e.overflow)
+        })
+        .expect("a directed frame runs out of labels");
+    records_of(&mut d, &p, &f, name);
+    records_of(&mut d, &p, &frames::empty(&p), "empty");
+    // Other run values, the stream limits among them, then the build's.
+    let q = FccParams {
+        rows: 21,
+        cols: 200,
+        bridge: Some(2),
+        ring_reach: Some(6),
+        open_limit: Some(12),
+        th_h_slope: 0.02,
+        ..p.clone()
+    };
+    records_of(
+        &mut d,
+        &q,
+        &frames::random(&q, 3),
+        "21 x 200, limits 2 / 6 / 12",
+    );
+    records_of(
+        &mut d,
+        &p,
+        &frames::random(&p, 3),
+        "the build's values again",
+    );
+}
+
+#[test]
+fn column_core_float_input_is_quantised_and_sent_in_column_order() {
+    let p = column_build();
+    let mut d = open(&p);
+    let base = frames::random(&p, 5);
+    // Row-major metres, with NaN and out-of-range coordinates mixed in.
+    let mut xyz = Vec::with_capacity(p.pixels() * 3);
+    for (i, pt) in base.points.iter().enumerate() {
+        match pt {
+            Some(_) if i % 11 == 0 => xyz.extend([f64::NAN, 1.0, 1.0]),
+            Some(_) if i % 13 == 0 => xyz.extend([-128.002, 1.0, 1.0]),
+            Some(q) => xyz.extend(q.map(|v| f64::from(v) / 256.0)),
+            None => xyz.extend([f64::INFINITY, 0.0, 0.0]),
+        }
+    }
+    let frame = Frame::from_xyz_f64(p.rows, p.cols, &xyz);
+    records_ok(&mut d, &p, &frame, Pixels::XyzF64(&xyz), "float input");
+}
+
+#[test]
+fn column_core_refusals_and_faults_end_clearly_and_the_next_frame_is_right() {
+    let p = column_build();
+    let mut d = open(&p);
+    let f = frames::random(&p, 9);
+    let base = build_run(&p);
+    let limits = base.limits.expect("a column build has stream limits");
+    for (l, name) in [
+        (
+            fcc_driver::StreamLimits {
+                open_limit: 0,
+                ..limits
+            },
+            "RUN_OPEN_LIMIT = 0",
+        ),
+        (
+            fcc_driver::StreamLimits {
+                open_limit: 512,
+                ..limits
+            },
+            "RUN_OPEN_LIMIT = 512",
+        ),
+        (
+            fcc_driver::StreamLimits {
+                bridge: 0x1000,
+                ..limits
+            },
+            "RUN_BRIDGE = 4096",
+        ),
+    ] {
+        let run = RunConfig {
+            limits: Some(l),
+            ..base
+        };
+        let e = d
+            .run_records(&run, Pixels::Points(&f.points), &mut Vec::new())
+            .expect_err("refused");
+        assert!(matches!(e, Error::RunRefused { .. }), "{run:?}: {e}");
+        assert!(e.to_string().contains(name), "{run:?}: {e}");
+    }
+    records_of(&mut d, &p, &f, "after the refusals");
+    // Labels are refused on the column core.
+    let e = d
+        .run_frame(&base, Pixels::Points(&f.points), &mut vec![0; p.pixels()])
+        .unwrap_err();
+    assert!(e.to_string().contains("run_records"), "{e}");
+
+    d.hal().inject(Fault::ShortFrame { beats: 1000 });
+    let e = d
+        .run_records(&base, Pixels::Points(&f.points), &mut Vec::new())
+        .unwrap_err();
+    assert!(matches!(e, Error::StreamLength { pixels: 6144 }), "{e}");
+    records_of(&mut d, &p, &f, "after the short frame");
+
+    d.hal().inject(Fault::DecodeError {
+        channel: Channel::S2mm,
+        beat: 5,
+    });
+    let e = d
+        .run_records(&base, Pixels::Points(&f.points), &mut Vec::new())
+        .unwrap_err();
+    assert!(
+        matches!(
+            e,
+            Error::Dma {
+                channel: Channel::S2mm,
+                ..
+            }
+        ),
+        "{e}"
+    );
+    records_of(&mut d, &p, &f, "after the decode error");
+
+    d.hal().inject(Fault::StuckS2mm);
+    let e = d
+        .run_records(&base, Pixels::Points(&f.points), &mut Vec::new())
+        .unwrap_err();
+    assert!(matches!(e, Error::Timeout { .. }), "{e}");
+    records_of(&mut d, &p, &f, "after the timeout");
+}

@@ -1,5 +1,6 @@
 //! The driver proper: open, program, run a frame, recover.
 
+use fcc_pixel::record::{frame_beats_max, FrameEnd, HwRecord, Item, ReadError, RecordReader};
 use fcc_pixel::{label_of_beat, pixel_beat, quantize_point, Point, LABEL_BEAT_BYTES, PIXEL_BYTES};
 use fcc_regmap::{bits, offset, ID_MAGIC};
 
@@ -11,16 +12,20 @@ use crate::hal::{DmaBuffer, Hal, Window, DMA_ALIGN};
 /// every beat of a packet whole except the last, so every slot of a beat
 /// must hold a label.
 pub const LABELS_PER_BEAT: u32 = 4;
-/// Every bit of the ERROR register (one per run register).
-const ERROR_ALL: u32 = bits::ERROR_K
+/// The ERROR bits of the run registers both cores have.
+const ERROR_RUN: u32 = bits::ERROR_K
     | bits::ERROR_TH_H
     | bits::ERROR_TH_V
     | bits::ERROR_ROWS
     | bits::ERROR_COLS
     | bits::ERROR_SLOPE_H
     | bits::ERROR_SLOPE_V;
+/// The ERROR bits of the column core's stream-limit registers.
+const ERROR_STREAM: u32 = bits::ERROR_BRIDGE | bits::ERROR_RING_REACH | bits::ERROR_OPEN_LIMIT;
 /// Bytes of one label in the S2MM buffer.
 const LABEL_BYTES: usize = 2;
+/// Bytes of one record or end beat in the S2MM buffer.
+const BEAT_BYTES: usize = 8;
 
 /// The parameters one frame runs with (the run registers of the core).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -36,6 +41,19 @@ pub struct RunConfig {
     /// threshold is fixed).
     pub th_h_slope_q: u32,
     pub th_v_slope_q: u32,
+    /// The column core's stream limits; `None` leaves its registers as they
+    /// are (and is the only value a row-major core takes).
+    pub limits: Option<StreamLimits>,
+}
+
+/// The column core's stream limits (spec §9.1), as its run registers hold
+/// them: RUN_BRIDGE and RUN_RING_REACH in columns (0xFFF: no limit),
+/// RUN_OPEN_LIMIT in clusters (1 ..= 511).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct StreamLimits {
+    pub bridge: u32,
+    pub ring_reach: u32,
+    pub open_limit: u32,
 }
 
 impl RunConfig {
@@ -58,6 +76,10 @@ pub struct BuildExpect {
     /// of the address registers (PG021 MM2S_SA_MSB, S2MM_DA_MSB), which a
     /// 32-bit DMA does not have.
     pub dma_addr_bits: u32,
+    /// The build is the column-streaming core (`fcc_params.json`'s `scan`
+    /// is `column`): it takes a frame in column order and sends a record
+    /// per cluster ([`Driver::run_records`]) instead of labels.
+    pub column: bool,
 }
 
 /// The build as the core reports it.
@@ -89,15 +111,19 @@ pub struct Timeouts {
 }
 
 impl Timeouts {
-    /// Generous limits for a build: four times the cycles of the largest
-    /// frame (the core needs about 1.3 x R x C) plus the table
+    /// Generous limits for a build: for the row-major core four times the
+    /// cycles of the largest frame (it needs about 1.3 x R x C); for the
+    /// column core (`column`) 64 cycles a pixel (it needs 1.0 to 1.1 on the
+    /// corpus, but up to about 12 on frames of many small clusters, whose
+    /// closes hold the input: docs/column-core.md); plus the table
     /// initialisation, and fixed margins.
-    pub fn for_build(b: &BuildInfo) -> Timeouts {
+    pub fn for_build(b: &BuildInfo, column: bool) -> Timeouts {
         let mhz = u64::from(b.clock_khz.max(1000)) / 1000;
         let pixels = u64::from(b.rows_max) * u64::from(b.cols_max);
         let init_us = (1u64 << b.label_bits) / mhz + 1;
+        let cycles_per_pixel = if column { 64 } else { 4 };
         Timeouts {
-            frame_us: 4 * pixels / mhz + init_us + 200,
+            frame_us: cycles_per_pixel * pixels / mhz + init_us + 200,
             dma_done_us: 100,
             reset_us: init_us + 100,
             poll_us: 100,
@@ -117,12 +143,31 @@ pub struct FrameStatus {
     pub gear_stalls: u32,
 }
 
-/// One frame's result (the labels are in the caller's buffer).
+/// One frame's result (the labels or records are the caller's).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct FrameReport {
     pub status: FrameStatus,
     /// From the start of MM2S to S2MM idle, on the platform's clock.
     pub time_ns: u64,
+}
+
+/// One frame's result on the column core: the status and the frame's end
+/// beat (spec §9.4; the records went to the caller).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct RecordReport {
+    pub status: FrameStatus,
+    pub end: FrameEnd,
+    /// From the start of MM2S to S2MM idle, on the platform's clock.
+    pub time_ns: u64,
+}
+
+/// The order the core takes a frame's pixels in.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Order {
+    /// Row by row (the row-major core).
+    Rows,
+    /// Column by column, rows 0 .. R-1 of each (the column core).
+    Columns { rows: usize, cols: usize },
 }
 
 /// A frame's pixels, row-major, before quantisation (metres; a pixel is
@@ -153,10 +198,15 @@ impl Pixels<'_> {
     }
 
     /// Quantise (the golden model's rule, `fcc_pixel::quantize_point`) and
-    /// pack into `out`, 8 bytes per pixel, little-endian.
-    fn pack(&self, out: &mut [u8]) {
+    /// pack into `out` in `order`, 8 bytes per pixel, little-endian. The
+    /// pixels are row-major.
+    fn pack(&self, out: &mut [u8], order: Order) {
         let put = |i: usize, out: &mut [u8], p: Option<Point>| {
-            out[i * PIXEL_BYTES..(i + 1) * PIXEL_BYTES]
+            let at = match order {
+                Order::Rows => i,
+                Order::Columns { rows, cols } => (i % cols) * rows + i / cols,
+            };
+            out[at * PIXEL_BYTES..(at + 1) * PIXEL_BYTES]
                 .copy_from_slice(&pixel_beat(p).to_le_bytes());
         };
         match self {
@@ -185,8 +235,15 @@ fn round_up(n: usize) -> usize {
 }
 
 /// Bytes of the S2MM buffer for `pixels` labels (whole beats).
-fn label_buffer_bytes(pixels: usize) -> usize {
+pub fn label_buffer_bytes(pixels: usize) -> usize {
     pixels.div_ceil(LABELS_PER_BEAT as usize) * LABEL_BEAT_BYTES
+}
+
+/// Bytes of the S2MM buffer for the records of a frame of `pixels` (every
+/// pixel a cluster at most) and its end beat: what `fcc gen` sizes the
+/// block design's S2MM length for.
+pub fn record_buffer_bytes(pixels: usize) -> usize {
+    frame_beats_max(pixels) * BEAT_BYTES
 }
 
 /// The FCC core and its AXI DMA, through a [`Hal`].
@@ -196,6 +253,7 @@ pub struct Driver<H: Hal> {
     defaults: RunConfig,
     length_bits: u32,
     addr_bits: u32,
+    column: bool,
     pub timeouts: Timeouts,
     tx: H::Buffer,
     rx: H::Buffer,
@@ -234,7 +292,7 @@ impl<H: Hal> Driver<H> {
             labels_per_beat: rd(offset::LABELS_PER_BEAT)?,
             clock_khz: rd(offset::CLOCK_KHZ)?,
         };
-        if build.labels_per_beat != LABELS_PER_BEAT {
+        if !expect.column && build.labels_per_beat != LABELS_PER_BEAT {
             return Err(Error::Unsupported(
                 "the AXI DMA's S2MM channel needs whole beats (all but the last), so the core must put 4 labels in each; generate it with --labels-per-beat 4",
             ));
@@ -245,12 +303,17 @@ impl<H: Hal> Driver<H> {
             ));
         }
         let pixels = build.rows_max as usize * build.cols_max as usize;
+        let out_bytes = if expect.column {
+            record_buffer_bytes(pixels)
+        } else {
+            label_buffer_bytes(pixels)
+        };
         // The build's largest frame must fit the DMA's length registers;
         // refused here rather than at the first large frame.
         let max = (1usize << expect.dma_length_bits) - 1;
         for (channel, bytes) in [
             (Channel::Mm2s, pixels * PIXEL_BYTES),
-            (Channel::S2mm, label_buffer_bytes(pixels)),
+            (Channel::S2mm, out_bytes),
         ] {
             if bytes > max {
                 return Err(Error::TooLong {
@@ -266,7 +329,7 @@ impl<H: Hal> Driver<H> {
             ));
         }
         let tx = hal.alloc_dma(round_up(pixels * PIXEL_BYTES))?;
-        let rx = hal.alloc_dma(round_up(label_buffer_bytes(pixels)))?;
+        let rx = hal.alloc_dma(round_up(out_bytes))?;
         for b in [&tx, &rx] {
             let end = b.phys().checked_add(b.bytes().len() as u64);
             let limit = 1u128 << expect.dma_addr_bits;
@@ -281,7 +344,7 @@ impl<H: Hal> Driver<H> {
         // The power-on run values (the build's), or what the last program
         // left in the run registers.
         let mut rd = |o| hal.read32(Window::Core, o);
-        let defaults = RunConfig {
+        let mut defaults = RunConfig {
             rows: rd(offset::RUN_ROWS)?,
             cols: rd(offset::RUN_COLS)?,
             k: rd(offset::RUN_K)?,
@@ -289,12 +352,21 @@ impl<H: Hal> Driver<H> {
             th_v_q: rd(offset::RUN_TH_V)?,
             th_h_slope_q: rd(offset::RUN_SLOPE_H)?,
             th_v_slope_q: rd(offset::RUN_SLOPE_V)?,
+            limits: None,
         };
+        if expect.column {
+            defaults.limits = Some(StreamLimits {
+                bridge: rd(offset::RUN_BRIDGE)?,
+                ring_reach: rd(offset::RUN_RING_REACH)?,
+                open_limit: rd(offset::RUN_OPEN_LIMIT)?,
+            });
+        }
         let mut d = Driver {
             defaults,
-            timeouts: Timeouts::for_build(&build),
+            timeouts: Timeouts::for_build(&build, expect.column),
             length_bits: expect.dma_length_bits,
             addr_bits: expect.dma_addr_bits,
+            column: expect.column,
             build,
             hal,
             tx,
@@ -406,7 +478,17 @@ impl<H: Hal> Driver<H> {
     /// each value, read ERROR. A set bit means the core refused that value
     /// (it keeps the old one); the bits are cleared and reported.
     fn write_run_registers(&mut self, run: &RunConfig) -> Res<(), H> {
-        self.core_w(offset::ERROR, ERROR_ALL)?;
+        if run.limits.is_some() && !self.column {
+            return Err(Error::Unsupported(
+                "stream limits (bridge, ring reach, open limit) are run registers of the column core only; this is the row-major core",
+            ));
+        }
+        let error_all = if self.column {
+            ERROR_RUN | ERROR_STREAM
+        } else {
+            ERROR_RUN
+        };
+        self.core_w(offset::ERROR, error_all)?;
         self.core_w(offset::RUN_K, run.k)?;
         self.core_w(offset::RUN_TH_H, run.th_h_q)?;
         self.core_w(offset::RUN_TH_V, run.th_v_q)?;
@@ -414,7 +496,12 @@ impl<H: Hal> Driver<H> {
         self.core_w(offset::RUN_COLS, run.cols)?;
         self.core_w(offset::RUN_SLOPE_H, run.th_h_slope_q)?;
         self.core_w(offset::RUN_SLOPE_V, run.th_v_slope_q)?;
-        let refused = self.core_r(offset::ERROR)? & ERROR_ALL;
+        if let Some(l) = run.limits {
+            self.core_w(offset::RUN_BRIDGE, l.bridge)?;
+            self.core_w(offset::RUN_RING_REACH, l.ring_reach)?;
+            self.core_w(offset::RUN_OPEN_LIMIT, l.open_limit)?;
+        }
+        let refused = self.core_r(offset::ERROR)? & error_all;
         if refused != 0 {
             self.core_w(offset::ERROR, refused)?;
             let b = &self.build;
@@ -438,6 +525,83 @@ impl<H: Hal> Driver<H> {
         pixels: Pixels<'_>,
         labels: &mut [u32],
     ) -> Res<FrameReport, H> {
+        if self.column {
+            return Err(Error::Unsupported(
+                "the column core sends records, not labels: use run_records",
+            ));
+        }
+        self.program_frame(run, &pixels)?;
+        let n = run.pixels();
+        if labels.len() < n {
+            return Err(Error::LabelsBuffer {
+                expected: n,
+                got: labels.len(),
+            });
+        }
+        let rx_bytes = label_buffer_bytes(n);
+        let (status, time_ns, got) = self.transfer(run, pixels, Order::Rows, rx_bytes)?;
+        let expected = (n * LABEL_BYTES) as u32;
+        if got != expected {
+            self.recover()?;
+            return Err(Error::LabelBytes { expected, got });
+        }
+        let rx = self.rx.bytes();
+        for (i, l) in labels[..n].iter_mut().enumerate() {
+            let b = (i / LABELS_PER_BEAT as usize) * LABEL_BEAT_BYTES;
+            let mut w = [0u8; 8];
+            w.copy_from_slice(&rx[b..b + 8]);
+            *l = label_of_beat(u64::from_le_bytes(w), i % LABELS_PER_BEAT as usize);
+        }
+        Ok(FrameReport { status, time_ns })
+    }
+
+    /// Send one frame (its pixels row-major, as for [`Driver::run_frame`];
+    /// the driver sends them in column order) through the column core and
+    /// hand each of its records to `records`, in the order the core sent
+    /// them (spec §9.4: the golden stream's order). Returns the status and
+    /// the frame's end beat.
+    ///
+    /// The S2MM bytes are read as a record stream: whole records with ids
+    /// `1, 2, ...`, then the end beat (the transfer's last beat, counting
+    /// the records). Anything else is [`Error::Records`], after which the
+    /// DMA and the core are reset.
+    pub fn run_records(
+        &mut self,
+        run: &RunConfig,
+        pixels: Pixels<'_>,
+        records: &mut impl Extend<HwRecord>,
+    ) -> Res<RecordReport, H> {
+        if !self.column {
+            return Err(Error::Unsupported(
+                "the row-major core sends labels, not records: use run_frame",
+            ));
+        }
+        self.program_frame(run, &pixels)?;
+        let order = Order::Columns {
+            rows: run.rows as usize,
+            cols: run.cols as usize,
+        };
+        let rx_bytes = record_buffer_bytes(run.pixels());
+        let (status, time_ns, got) = self.transfer(run, pixels, order, rx_bytes)?;
+        match read_records(&self.rx.bytes()[..(got as usize).min(rx_bytes)], records) {
+            Ok(end) => Ok(RecordReport {
+                status,
+                end,
+                time_ns,
+            }),
+            Err((beat, error)) => {
+                self.recover()?;
+                Err(Error::Records {
+                    bytes: got,
+                    beat,
+                    error,
+                })
+            }
+        }
+    }
+
+    /// Program `run` and check that `pixels` is a frame of its size.
+    fn program_frame(&mut self, run: &RunConfig, pixels: &Pixels<'_>) -> Res<(), H> {
         self.program_run(run)?;
         let n = run.pixels();
         if !pixels.exact() || pixels.len() != n {
@@ -446,14 +610,23 @@ impl<H: Hal> Driver<H> {
                 got: pixels.len(),
             });
         }
-        if labels.len() < n {
-            return Err(Error::LabelsBuffer {
-                expected: n,
-                got: labels.len(),
-            });
-        }
+        Ok(())
+    }
+
+    /// One frame through both DMA channels (`run` programmed and `pixels`
+    /// checked by [`Self::program_frame`]): pack `pixels` in `order`, arm
+    /// S2MM for `rx_bytes`, send, wait for the core's interrupt and both
+    /// channels' end. Returns the status, the time and the bytes S2MM
+    /// wrote (already visible to the CPU).
+    fn transfer(
+        &mut self,
+        run: &RunConfig,
+        pixels: Pixels<'_>,
+        order: Order,
+        rx_bytes: usize,
+    ) -> Res<(FrameStatus, u64, u32), H> {
+        let n = run.pixels();
         let tx_bytes = n * PIXEL_BYTES;
-        let rx_bytes = label_buffer_bytes(n);
         let max = (1usize << self.length_bits) - 1;
         for (channel, bytes) in [(Channel::Mm2s, tx_bytes), (Channel::S2mm, rx_bytes)] {
             if bytes > max {
@@ -473,16 +646,16 @@ impl<H: Hal> Driver<H> {
             });
         }
 
-        pixels.pack(&mut self.tx.bytes_mut()[..tx_bytes]);
+        pixels.pack(&mut self.tx.bytes_mut()[..tx_bytes], order);
         self.hal.cache_clean(&mut self.tx, 0, tx_bytes)?;
-        // No dirty line of the label buffer may be written back over the
+        // No dirty line of the output buffer may be written back over the
         // DMA's data.
         self.hal
             .cache_invalidate(&mut self.rx, 0, round_up(rx_bytes))?;
         self.core_w(offset::STATUS, bits::STATUS_FRAME_DONE)?;
         self.core_w(offset::CONTROL, bits::CONTROL_IRQ_ENABLE)?;
 
-        // S2MM first, so no label beat waits for a channel that is not armed.
+        // S2MM first, so no output beat waits for a channel that is not armed.
         let cr = dma::CR_RS | dma::CR_IOC_IRQ_EN | dma::CR_ERR_IRQ_EN;
         let (rx_phys, tx_phys) = (self.rx.phys(), self.tx.phys());
         self.dma_w(dma::S2MM_DMASR, dma::SR_IRQS)?;
@@ -514,7 +687,7 @@ impl<H: Hal> Driver<H> {
                 break;
             }
         }
-        // The last label beat left the core; wait for S2MM to write it.
+        // The last output beat left the core; wait for S2MM to write it.
         let t1 = self.hal.now_ns();
         for (channel, sr) in [
             (Channel::S2mm, dma::S2MM_DMASR),
@@ -531,7 +704,7 @@ impl<H: Hal> Driver<H> {
                 let waited = self.elapsed_us(t1);
                 if waited > self.timeouts.dma_done_us {
                     let stage = match channel {
-                        Channel::S2mm => "S2MM to finish writing the labels",
+                        Channel::S2mm => "S2MM to finish writing the core's output",
                         Channel::Mm2s => {
                             "MM2S to finish (the core ended the frame before taking every pixel)"
                         }
@@ -542,7 +715,6 @@ impl<H: Hal> Driver<H> {
         }
         let time_ns = self.hal.now_ns() - t0;
         let got = self.dma_r(dma::S2MM_LENGTH)?;
-        let expected = (n * LABEL_BYTES) as u32;
 
         let status = self.read_status()?;
         self.core_w(offset::STATUS, bits::STATUS_FRAME_DONE)?;
@@ -551,23 +723,9 @@ impl<H: Hal> Driver<H> {
         if status.1 & bits::FLAGS_FRAME_ERROR != 0 {
             return Err(Error::StreamLength { pixels: n });
         }
-        if got != expected {
-            self.recover()?;
-            return Err(Error::LabelBytes { expected, got });
-        }
         self.hal
             .cache_invalidate(&mut self.rx, 0, round_up(rx_bytes))?;
-        let rx = self.rx.bytes();
-        for (i, l) in labels[..n].iter_mut().enumerate() {
-            let b = (i / LABELS_PER_BEAT as usize) * LABEL_BEAT_BYTES;
-            let mut w = [0u8; 8];
-            w.copy_from_slice(&rx[b..b + 8]);
-            *l = label_of_beat(u64::from_le_bytes(w), i % LABELS_PER_BEAT as usize);
-        }
-        Ok(FrameReport {
-            status: status.0,
-            time_ns,
-        })
+        Ok((status.0, time_ns, got))
     }
 
     /// The latched frame status and the raw FRAME_FLAGS.
@@ -633,5 +791,127 @@ impl<H: Hal> Driver<H> {
             mm2s_sr,
             s2mm_sr,
         }
+    }
+}
+
+/// Read S2MM's bytes as one frame's record stream (spec §9.4): each record
+/// to `records`, and the end beat, which must be the last beat. On an error
+/// the beat it was found at (from 0) and why.
+fn read_records(
+    bytes: &[u8],
+    records: &mut impl Extend<HwRecord>,
+) -> Result<FrameEnd, (u64, ReadError)> {
+    let beats = bytes.len() / BEAT_BYTES;
+    // A part of a beat at the end is no end beat.
+    let whole = bytes.len().is_multiple_of(BEAT_BYTES);
+    let mut reader = RecordReader::new();
+    for (i, b) in bytes.chunks_exact(BEAT_BYTES).enumerate() {
+        let mut w = [0u8; BEAT_BYTES];
+        w.copy_from_slice(b);
+        let last = whole && i + 1 == beats;
+        match reader.push(u64::from_le_bytes(w), last) {
+            Ok(Some(Item::Record(r))) => records.extend(core::iter::once(r)),
+            Ok(Some(Item::End(end))) => return Ok(end),
+            Ok(None) => {}
+            Err(e) => return Err((i as u64, e)),
+        }
+    }
+    // No end beat: the stream stopped inside a record or a frame (or S2MM
+    // wrote a part of a beat).
+    let e = reader
+        .finish()
+        .err()
+        .unwrap_or(ReadError::EndsInFrame { records: 0 });
+    Err((beats as u64, e))
+}
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use super::*;
+    use fcc_pixel::record::{frame_beats, RECORD_WORDS};
+    use std::vec::Vec;
+
+    /// A frame of `n` records (ids 1 ..= n) and its end beat, as bytes.
+    fn stream(n: u32) -> (Vec<HwRecord>, Vec<u8>) {
+        let recs: Vec<HwRecord> = (1..=n)
+            .map(|id| HwRecord {
+                id,
+                points: id,
+                ..HwRecord::default()
+            })
+            .collect();
+        let mut beats: Vec<(u64, bool)> = Vec::new();
+        let end = FrameEnd {
+            records: n,
+            ..FrameEnd::default()
+        };
+        frame_beats(&recs, end, &mut beats).expect("packs");
+        let bytes = beats.iter().flat_map(|(w, _)| w.to_le_bytes()).collect();
+        (recs, bytes)
+    }
+
+    #[derive(Default)]
+    struct Sink(usize, Option<HwRecord>);
+    impl Extend<HwRecord> for Sink {
+        fn extend<T: IntoIterator<Item = HwRecord>>(&mut self, it: T) {
+            for r in it {
+                self.0 += 1;
+                self.1 = Some(r);
+            }
+        }
+    }
+
+    #[test]
+    fn a_frame_of_records_reads_back_with_its_end_beat() {
+        let (recs, bytes) = stream(3);
+        let mut sink = Sink::default();
+        let end = read_records(&bytes, &mut sink).expect("a record stream");
+        assert_eq!((end.records, sink.0, sink.1), (3, 3, recs.last().copied()));
+        let (_, empty) = stream(0);
+        assert_eq!(
+            read_records(&empty, &mut Sink::default()).map(|e| e.records),
+            Ok(0)
+        );
+    }
+
+    #[test]
+    fn a_stream_that_is_not_one_frame_says_where_and_why() {
+        let (_, bytes) = stream(2);
+        let w = BEAT_BYTES;
+        // The transfer (which ends at `tlast`) ends inside the second
+        // record, or after it: `tlast` on a record's beat.
+        let e = read_records(&bytes[..(RECORD_WORDS + 3) * w], &mut Sink::default());
+        assert_eq!(e, Err((13, ReadError::LastInRecord { word: 2 })));
+        let e = read_records(&bytes[..2 * RECORD_WORDS * w], &mut Sink::default());
+        assert_eq!(e, Err((21, ReadError::LastInRecord { word: 10 })));
+        // Ending in a part of a beat: no end beat.
+        let e = read_records(&bytes[..2 * RECORD_WORDS * w + 3], &mut Sink::default());
+        assert_eq!(e, Err((22, ReadError::EndsInFrame { records: 2 })));
+        // A part of a beat after the end beat: the end beat is not the last.
+        let mut longer = bytes.clone();
+        longer.extend([0; 4]);
+        let e = read_records(&longer, &mut Sink::default());
+        assert_eq!(e, Err((22, ReadError::EndWithoutLast)));
+        // Nothing at all.
+        let e = read_records(&[], &mut Sink::default());
+        assert_eq!(e, Err((0, ReadError::EndsInFrame { records: 0 })));
+        // A wrong id.
+        let (_, mut bad) = stream(1);
+        bad[0] = 5;
+        let e = read_records(&bad, &mut Sink::default());
+        assert!(
+            matches!(
+                e,
+                Err((
+                    10,
+                    ReadError::IdOutOfOrder {
+                        expected: 1,
+                        got: 5
+                    }
+                ))
+            ),
+            "{e:?}"
+        );
     }
 }

@@ -4,7 +4,8 @@
 use core::fmt;
 
 use crate::dma;
-use crate::driver::RunConfig;
+use crate::driver::{RunConfig, StreamLimits};
+use fcc_pixel::record::ReadError;
 
 /// The bits of the core's ERROR register: which run registers refused the
 /// value written.
@@ -19,6 +20,11 @@ impl RefusedBits {
         run: &RunConfig,
     ) -> impl Iterator<Item = (&'static str, u32, &'static str)> + '_ {
         use fcc_regmap::bits;
+        let limits = run.limits.unwrap_or(StreamLimits {
+            bridge: 0,
+            ring_reach: 0,
+            open_limit: 0,
+        });
         [
             (bits::ERROR_K, "RUN_K", run.k, "odd, 3 ..= K_MAX"),
             (
@@ -52,6 +58,24 @@ impl RefusedBits {
                 run.th_v_slope_q,
                 "0 ..= 0xFFFF (UQ0.16)",
             ),
+            (
+                bits::ERROR_BRIDGE,
+                "RUN_BRIDGE",
+                limits.bridge,
+                "0 ..= 0xFFF columns (0xFFF: no limit)",
+            ),
+            (
+                bits::ERROR_RING_REACH,
+                "RUN_RING_REACH",
+                limits.ring_reach,
+                "0 ..= 0xFFF columns (0xFFF: no limit)",
+            ),
+            (
+                bits::ERROR_OPEN_LIMIT,
+                "RUN_OPEN_LIMIT",
+                limits.open_limit,
+                "1 ..= 511 clusters",
+            ),
         ]
         .into_iter()
         .filter(move |(b, ..)| self.0 & b != 0)
@@ -64,7 +88,7 @@ impl RefusedBits {
 pub enum Channel {
     /// Memory to stream: the pixel frame into the core.
     Mm2s,
-    /// Stream to memory: the labels out of the core.
+    /// Stream to memory: the labels (or records) out of the core.
     S2mm,
 }
 
@@ -72,7 +96,7 @@ impl fmt::Display for Channel {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(match self {
             Channel::Mm2s => "MM2S (pixels in)",
-            Channel::S2mm => "S2MM (labels out)",
+            Channel::S2mm => "S2MM (labels or records out)",
         })
     }
 }
@@ -161,6 +185,14 @@ pub enum Error<E> {
     StreamLength { pixels: usize },
     /// S2MM received another number of label bytes than the frame has.
     LabelBytes { expected: u32, got: u32 },
+    /// What S2MM received from the column core is not one frame's record
+    /// stream (spec §9.4): `error` at beat `beat` of the `bytes` written
+    /// (the driver reset the DMA and the core).
+    Records {
+        bytes: u32,
+        beat: u64,
+        error: ReadError,
+    },
     /// The core was not waiting for a frame (left in the middle of one by a
     /// previous run): it was reset; run the frame again.
     CoreWasBusy {
@@ -254,6 +286,10 @@ impl<E: fmt::Display> fmt::Display for Error<E> {
             Error::LabelBytes { expected, got } => write!(
                 f,
                 "S2MM received {got} label bytes, the frame has {expected}; the DMA and the core were reset"
+            ),
+            Error::Records { bytes, beat, error } => write!(
+                f,
+                "S2MM received {bytes} bytes that are not one frame's records and end beat: at beat {beat}, {error}; the DMA and the core were reset"
             ),
             Error::CoreWasBusy {
                 status,

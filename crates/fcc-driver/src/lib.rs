@@ -8,7 +8,8 @@
 //! it checks the ID word and the parameter hash, quantises and packs a frame
 //! exactly as the golden model does (`fcc-pixel`, the one definition of the
 //! rule), runs both DMA channels as PG021 describes (S2MM armed before MM2S,
-//! error bits, timeouts), unpacks the labels and the frame status, and
+//! error bits, timeouts), unpacks the labels (row-major core) or reads the
+//! records (column core, [`Driver::run_records`]) and the frame status, and
 //! recovers from an aborted frame with a DMA reset and the core's soft reset.
 //!
 //! Backends: [`linux`] (feature `linux`: UIO and u-dma-buf) and the virtual
@@ -24,8 +25,8 @@ mod hal;
 pub mod linux;
 
 pub use driver::{
-    BuildExpect, BuildInfo, Driver, FrameReport, FrameStatus, Pixels, RunConfig, Timeouts,
-    LABELS_PER_BEAT,
+    label_buffer_bytes, record_buffer_bytes, BuildExpect, BuildInfo, Driver, FrameReport,
+    FrameStatus, Pixels, RecordReport, RunConfig, StreamLimits, Timeouts, LABELS_PER_BEAT,
 };
 pub use error::{Channel, DmaCause, Error, RefusedBits};
 pub use hal::{DmaBuffer, Hal, Window, DMA_ALIGN};

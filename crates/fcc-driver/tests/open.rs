@@ -1,13 +1,15 @@
 //! `Driver::open` on a register-level fake of the core and the DMA: the
 //! checks that need no simulation (ID word, hash, labels per beat, DMA
 //! length width, a DMA reset that never ends, the run registers and the
-//! ERROR register). Frames are run on the virtual board (`fcc-sim`).
+//! ERROR register, the column core's stream limits). Frames are run on the
+//! virtual board (`fcc-sim`).
 
 use std::collections::HashMap;
 use std::fmt;
 
 use fcc_driver::{
-    dma, BuildExpect, DmaBuffer, Driver, Error, Hal, Pixels, RefusedBits, RunConfig, Window,
+    dma, BuildExpect, DmaBuffer, Driver, Error, Hal, Pixels, RefusedBits, RunConfig, StreamLimits,
+    Window,
 };
 use fcc_regmap::{bits, offset, ID_MAGIC};
 
@@ -59,6 +61,9 @@ fn run_rule(o: u32) -> Option<(u32, Accepts)> {
         offset::RUN_COLS => (bits::ERROR_COLS, |v| (32..=256).contains(&v)),
         offset::RUN_SLOPE_H => (bits::ERROR_SLOPE_H, |v| v <= 0xffff),
         offset::RUN_SLOPE_V => (bits::ERROR_SLOPE_V, |v| v <= 0xffff),
+        offset::RUN_BRIDGE => (bits::ERROR_BRIDGE, |v| v <= 0xfff),
+        offset::RUN_RING_REACH => (bits::ERROR_RING_REACH, |v| v <= 0xfff),
+        offset::RUN_OPEN_LIMIT => (bits::ERROR_OPEN_LIMIT, |v| (1..=511).contains(&v)),
         _ => return None,
     })
 }
@@ -160,6 +165,7 @@ fn expect() -> BuildExpect {
         hash: HASH,
         dma_length_bits: 16,
         dma_addr_bits: 32,
+        column: false,
     }
 }
 
@@ -272,6 +278,7 @@ fn defaults_are_read_from_the_run_registers() {
             th_v_q: 256,
             th_h_slope_q: 0,
             th_v_slope_q: 3277,
+            limits: None,
         }
     );
 }
@@ -287,6 +294,7 @@ fn run_values_are_written_to_the_run_registers() {
         th_v_q: 0x8000,
         th_h_slope_q: 0xffff,
         th_v_slope_q: 1,
+        limits: None,
     };
     d.program_run(&run).unwrap();
     let c = &d.hal().core;
@@ -483,4 +491,167 @@ fn a_32_bit_dma_gets_no_msb_address_writes() {
     assert_eq!(d.hal().dma.get(&dma::MM2S_SA), Some(&0x1000_0000));
     assert!(!d.hal().dma.contains_key(&dma::MM2S_SA_MSB));
     assert!(!d.hal().dma.contains_key(&dma::S2MM_DA_MSB));
+}
+
+/// A column build: the fake's stream-limit registers hold its limits.
+fn column_fake() -> Fake {
+    let mut f = fake(4);
+    f.core.extend([
+        (offset::RUN_BRIDGE, 16),
+        (offset::RUN_RING_REACH, 0xfff),
+        (offset::RUN_OPEN_LIMIT, 511),
+    ]);
+    f
+}
+
+fn column() -> BuildExpect {
+    BuildExpect {
+        column: true,
+        dma_length_bits: 19,
+        ..expect()
+    }
+}
+
+#[test]
+fn a_column_build_reads_writes_and_checks_its_stream_limits() {
+    let mut d = Driver::open(column_fake(), &column()).unwrap();
+    let base = d.defaults();
+    let limits = StreamLimits {
+        bridge: 16,
+        ring_reach: 0xfff,
+        open_limit: 511,
+    };
+    assert_eq!(base.limits, Some(limits));
+    let run = RunConfig {
+        limits: Some(StreamLimits {
+            bridge: 2,
+            ring_reach: 6,
+            open_limit: 12,
+        }),
+        ..base
+    };
+    d.hal().writes.clear();
+    d.program_run(&run).unwrap();
+    let c = &d.hal().core;
+    let got = [
+        offset::RUN_BRIDGE,
+        offset::RUN_RING_REACH,
+        offset::RUN_OPEN_LIMIT,
+    ]
+    .map(|o| c[&o]);
+    assert_eq!(got, [2, 6, 12]);
+    // ERROR is cleared with the stream bits too.
+    assert_eq!(d.hal().writes.first(), Some(&(offset::ERROR, 0x3ff)));
+    for (l, want, name) in [
+        (
+            StreamLimits {
+                open_limit: 0,
+                ..limits
+            },
+            bits::ERROR_OPEN_LIMIT,
+            "RUN_OPEN_LIMIT = 0 (takes 1 ..= 511 clusters)",
+        ),
+        (
+            StreamLimits {
+                bridge: 0x1000,
+                ..limits
+            },
+            bits::ERROR_BRIDGE,
+            "RUN_BRIDGE = 4096",
+        ),
+        (
+            StreamLimits {
+                ring_reach: 5000,
+                ..limits
+            },
+            bits::ERROR_RING_REACH,
+            "RUN_RING_REACH = 5000",
+        ),
+    ] {
+        let run = RunConfig {
+            limits: Some(l),
+            ..base
+        };
+        let e = d.program_run(&run).expect_err("refused");
+        assert!(
+            matches!(e, Error::RunRefused { bits, .. } if bits == RefusedBits(want)),
+            "{e}"
+        );
+        assert!(e.to_string().contains(name), "{e}");
+    }
+    // `None` leaves the registers as they are.
+    d.hal().writes.clear();
+    d.program_run(&RunConfig {
+        limits: None,
+        ..base
+    })
+    .unwrap();
+    let w = &d.hal().writes;
+    assert!(
+        !w.iter().any(|(o, _)| *o == offset::RUN_OPEN_LIMIT),
+        "{w:?}"
+    );
+}
+
+#[test]
+fn each_core_refuses_the_others_call_and_the_row_core_stream_limits() {
+    let pts = vec![None; 4096];
+    let mut d = Driver::open(column_fake(), &column()).unwrap();
+    let run = d.defaults();
+    let e = d
+        .run_frame(&run, Pixels::Points(&pts), &mut vec![0; 4096])
+        .unwrap_err();
+    assert!(e.to_string().contains("use run_records"), "{e}");
+
+    let mut d = Driver::open(fake(4), &expect()).unwrap();
+    let run = d.defaults();
+    let mut records = Vec::new();
+    let e = d
+        .run_records(&run, Pixels::Points(&pts), &mut records)
+        .unwrap_err();
+    assert!(e.to_string().contains("use run_frame"), "{e}");
+    let e = d
+        .program_run(&RunConfig {
+            limits: Some(StreamLimits {
+                bridge: 1,
+                ring_reach: 1,
+                open_limit: 1,
+            }),
+            ..run
+        })
+        .unwrap_err();
+    assert!(e.to_string().contains("column core only"), "{e}");
+}
+
+#[test]
+fn a_column_build_takes_labels_per_beat_as_it_is_and_sizes_s2mm_for_records() {
+    // 16 x 256 pixels: (4096 x 11 + 1) x 8 = 360,456 bytes of records
+    // need 19 length bits.
+    for (bits, ok) in [(18, false), (19, true)] {
+        let r = Driver::open(
+            column_fake(),
+            &BuildExpect {
+                dma_length_bits: bits,
+                ..column()
+            },
+        );
+        match r {
+            Ok(_) => assert!(ok, "{bits} bits took a frame of records"),
+            Err(e) => {
+                assert!(!ok, "{bits} bits: {e}");
+                assert!(matches!(e, Error::TooLong { bytes: 360_456, .. }), "{e}");
+            }
+        }
+    }
+    // Labels per beat do not matter for records.
+    let mut f = column_fake();
+    f.core.insert(offset::LABELS_PER_BEAT, 1);
+    assert!(Driver::open(
+        f,
+        &BuildExpect {
+            dma_length_bits: 19,
+            ..column()
+        }
+    )
+    .is_ok());
 }

@@ -12,6 +12,13 @@ use core::fmt;
 /// Beats (64-bit words) of one record.
 pub const RECORD_WORDS: usize = 11;
 
+/// The most beats one frame's record stream can take: a record per pixel
+/// (every pixel a cluster) and the end beat. What a buffer for a frame's
+/// records must hold (the block design's S2MM length, the driver's buffer).
+pub const fn frame_beats_max(pixels: usize) -> usize {
+    pixels * RECORD_WORDS + 1
+}
+
 /// One field of a record.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum RecordField {

@@ -30,7 +30,7 @@ pub fn dma_frame_bytes(p: &FccParams, ports: &[Port]) -> Result<(u64, u64), RtlE
         Scan::Row => pixels.div_ceil(u64::from(p.labels_per_beat)),
         // A record per pixel at most (every pixel a cluster), then the end
         // beat (spec §9.4).
-        Scan::Column => pixels * fcc_pixel::record::RECORD_WORDS as u64 + 1,
+        Scan::Column => fcc_pixel::record::frame_beats_max(p.pixels()) as u64,
     };
     Ok((pixels * in_beat, out_beats * out_beat))
 }
