@@ -12,9 +12,10 @@ use anyhow::{bail, Context};
 use clap::{Args, Subcommand};
 use fcc_driver::{Driver, Pixels, RunConfig};
 use fcc_golden::MergeMode;
-use fcc_lidar::pipeline::PipelineResult;
+use fcc_lidar::pipeline::{ClosedRecord, PipelineResult};
 use fcc_lidar::RangeImage;
-use fcc_params::FccParams;
+use fcc_params::{FccParams, Scan};
+use fcc_pixel::record::{FrameEnd, HwRecord, Item};
 use fcc_sim::VirtualBoard;
 
 use crate::cmd_lidar::{run_cluster_on, ClusterLidarArgs, Hardware};
@@ -40,6 +41,18 @@ pub struct BoardRunArgs {
     /// of the K_max = 11, 128 x 2048 build.
     #[arg(long, value_name = "DIR", requires = "virtual_board")]
     pub rtl: Option<PathBuf>,
+    /// With --virtual (without --rtl): the core of the virtual board, `row`
+    /// (labels of whole frames) or `column` (the column-streaming core:
+    /// pixels in column order, one record per cluster as it closes, checked
+    /// against the golden stream and written as `fcc cluster --stream`
+    /// writes them). With --rtl or --params the build says which.
+    #[arg(
+        long,
+        value_name = "ORDER",
+        requires = "virtual_board",
+        conflicts_with = "rtl"
+    )]
+    pub scan: Option<Scan>,
     /// On a board under Linux: the UIO device of the core's registers and
     /// interrupt (its device-tree node name, or uioN).
     #[arg(long, value_name = "NAME", requires = "params")]
@@ -72,26 +85,65 @@ pub fn run(cmd: &BoardCommand) -> anyhow::Result<()> {
 
 /// The core of `fcc board run --virtual` without --rtl: one build for every
 /// sensor (K_max = 11, 128 rows, 2048 columns, 16-bit labels, 4 labels per
-/// beat), the same as the run-time-size regression's.
-pub fn virtual_build() -> FccParams {
+/// beat), the same as the run-time-size regression's; of the column core
+/// with `scan` column.
+pub fn virtual_build(scan: Scan) -> FccParams {
     FccParams {
         rows: 128,
         cols: 2048,
         fsize: 11,
         label_bits: 16,
         labels_per_beat: fcc_driver::LABELS_PER_BEAT,
+        scan,
         ..FccParams::default()
     }
 }
 
+/// What the golden model runs with beside the core of `build`: the row
+/// core keeps the unlimited frame contract; the column core streams, its
+/// open limit at most what its record slots hold (511, and that when none
+/// is given: the golden stream's "no limit" is more than the core has).
+fn check_model_for(args: &BoardRunArgs, build: &FccParams) -> anyhow::Result<ClusterLidarArgs> {
+    let mut cluster = args.cluster.clone();
+    let m = &mut cluster.model.limits;
+    match build.scan {
+        Scan::Row => {
+            if m.bridge.is_some() || m.ring_reach.is_some() || m.open_limit.is_some() {
+                bail!("the row-major core keeps the unlimited contract: drop --bridge, --ring-reach and --open-limit (the column core takes them: --scan column; the golden stream: fcc cluster --stream)");
+            }
+            if cluster.stream {
+                bail!("the row-major core returns labels of whole frames: drop --stream, or run the column core (--scan column)");
+            }
+        }
+        Scan::Column => {
+            let most = fcc_rtl::regmap::OPEN_LIMIT_MAX;
+            match m.open_limit {
+                Some(n) if n > most => bail!(
+                    "--open-limit {n}: the column core holds at most {most} open clusters (its record slots); give 1 ..= {most}"
+                ),
+                Some(_) => {}
+                None => m.open_limit = Some(most),
+            }
+            if cluster.min_points > 0 {
+                bail!(
+                    "the column core sends a record for every cluster: drop --min-points {}",
+                    cluster.min_points
+                );
+            }
+            cluster.stream = true;
+        }
+    }
+    Ok(cluster)
+}
+
 /// The build's label bits B for the golden model: `--label-bits` must be B
-/// when given; when not, it is B.
+/// when given; when not, it is B. The rest as [`check_model_for`].
 fn label_bits_of(
     args: &BoardRunArgs,
     build: &FccParams,
     where_: &str,
 ) -> anyhow::Result<ClusterLidarArgs> {
-    let mut cluster = args.cluster.clone();
+    let mut cluster = check_model_for(args, build)?;
     if let Some(b) = cluster.model.label_bits.filter(|&b| b != build.label_bits) {
         bail!(
             "--label-bits {b} differs from the core's B = {} ({where_}): drop it or give --label-bits {}",
@@ -107,14 +159,11 @@ fn run_board(args: &BoardRunArgs) -> anyhow::Result<()> {
     if args.cluster.model.merge != MergeMode::Exact {
         bail!("the core computes exact connected components: drop --merge paper");
     }
-    let m = &args.cluster.model.limits;
-    // The model options are checked before any board is opened.
+    // The model options are checked before any board is opened (and
+    // against the build once it is known).
     args.cluster.model.params(1, 1)?;
-    if m.bridge.is_some() || m.ring_reach.is_some() || m.open_limit.is_some() {
-        bail!("the row-major core keeps the unlimited contract: drop --bridge, --ring-reach and --open-limit (the golden stream takes them: fcc cluster --stream)");
-    }
-    if args.cluster.stream {
-        bail!("the row-major core returns labels of whole frames: drop --stream (fcc cluster --stream runs the golden stream)");
+    if args.rtl.is_none() && args.uio.is_none() {
+        check_model_for(args, &virtual_build(args.scan.unwrap_or_default()))?;
     }
     let t = Instant::now();
     let report = if args.virtual_board {
@@ -125,15 +174,26 @@ fn run_board(args: &BoardRunArgs) -> anyhow::Result<()> {
                 (g.params, model, dir.display().to_string())
             }
             None => {
-                let b = virtual_build();
+                let b = virtual_build(args.scan.unwrap_or_default());
                 let model = crate::cmd_sim::load_params(&b)?;
                 (b, model, "the virtual board's build".to_string())
             }
         };
         let cluster = label_bits_of(args, &build, &where_)?;
-        println!(
-            "virtual board: one core for K_max {}, up to {} x {}, B = {} ({where_}); each frame runs at its own size, K and thresholds, set through the run registers",
-            build.fsize, build.rows, build.cols, build.label_bits
+        eprintln!(
+            "virtual board: one {} core for K_max {}, up to {} x {}, B = {} ({where_}); each frame runs at its own size, K and thresholds{}, set through the run registers",
+            match build.scan {
+                Scan::Row => "row-major",
+                Scan::Column => "column-streaming",
+            },
+            build.fsize,
+            build.rows,
+            build.cols,
+            build.label_bits,
+            match build.scan {
+                Scan::Row => "",
+                Scan::Column => " (and stream limits)",
+            }
         );
         let (board, expect) = fcc_sim::virtual_board_with(&build, model)?;
         let mut d = Driver::open(board, &expect).map_err(|e| anyhow::anyhow!("{e}"))?;
@@ -152,7 +212,12 @@ fn run_board(args: &BoardRunArgs) -> anyhow::Result<()> {
             "say where the core is: --virtual, or --uio NAME --params fcc_params.json on a board"
         );
     };
-    println!("{report} ({:.1} s)", t.elapsed().as_secs_f64());
+    // With the column core, stdout carries the records (JSON lines).
+    if report.starts_with("PASS") && report.contains("record") {
+        eprintln!("{report} ({:.1} s)", t.elapsed().as_secs_f64());
+    } else {
+        println!("{report} ({:.1} s)", t.elapsed().as_secs_f64());
+    }
     Ok(())
 }
 
@@ -236,10 +301,30 @@ impl Runner {
 
     fn summary(&self) -> String {
         let (n, ms) = *self.frames.borrow();
+        let what = match self.build().scan {
+            Scan::Row => "every label equal to the golden model's",
+            Scan::Column => "every record equal to the golden stream's",
+        };
         format!(
-            "PASS: {n} frame{} through the core, every label equal to the golden model's, {ms:.3} ms of core time",
+            "PASS: {n} frame{} through the core, {what}, {ms:.3} ms of core time",
             if n == 1 { "" } else { "s" }
         )
+    }
+
+    /// The build of the core.
+    fn build(&self) -> FccParams {
+        match &*self.target.borrow() {
+            Target::Virtual(_, b) => b.clone(),
+            #[cfg(target_os = "linux")]
+            Target::Linux(_, b) => b.clone(),
+        }
+    }
+
+    /// One more frame of `ms` core time.
+    fn count(&self, ms: f64) {
+        let mut f = self.frames.borrow_mut();
+        f.0 += 1;
+        f.1 += ms;
     }
 }
 
@@ -255,6 +340,25 @@ fn driver_err<E: std::fmt::Display>(
 }
 
 impl Hardware for Runner {
+    fn stream(
+        &self,
+        name: &str,
+        kept: &RangeImage,
+        gold: &PipelineResult,
+        records: &[ClosedRecord],
+        end: FrameEnd,
+    ) -> anyhow::Result<()> {
+        if self.build().scan != Scan::Column {
+            bail!("{name}: the row-major core returns labels, not records");
+        }
+        // The frame's run values with the column core's stream limits.
+        let p = FccParams {
+            scan: Scan::Column,
+            ..gold.params.clone()
+        };
+        self.stream_frame(name, kept, &p, records, end)
+    }
+
     fn cluster(
         &self,
         name: &str,
@@ -290,11 +394,7 @@ impl Hardware for Runner {
         compare(name, &p, &gold.clustering, &labels, &report.status)?;
         let s = &report.status;
         let ms = report.time_ns as f64 / 1e6;
-        {
-            let mut f = self.frames.borrow_mut();
-            f.0 += 1;
-            f.1 += ms;
-        }
+        self.count(ms);
         println!(
             "{name}: {} x {}, K {}: {:.3} ms{} at {clock_mhz} MHz, {} clusters, {} provisional labels, {} joins, frame {}{}; labels equal to the golden model's",
             p.rows,
@@ -318,6 +418,117 @@ impl Hardware for Runner {
         );
         Ok(labels)
     }
+}
+
+impl Runner {
+    /// The column core: `kept` in, its records out, each checked against
+    /// the golden stream's `gold` and its end beat `end`.
+    fn stream_frame(
+        &self,
+        name: &str,
+        kept: &RangeImage,
+        p: &FccParams,
+        gold: &[ClosedRecord],
+        end: FrameEnd,
+    ) -> anyhow::Result<()> {
+        let mut target = self.target.borrow_mut();
+        let run = run_config(p);
+        let mut got = Vec::with_capacity(gold.len());
+        let wall = Instant::now();
+        let (report, clock_mhz, simulated) = match &mut *target {
+            Target::Virtual(d, build) => {
+                eprintln!(
+                    "{name}: {} x {}, K {} through the virtual board ...",
+                    p.rows, p.cols, p.fsize
+                );
+                let r = d
+                    .run_records(&run, Pixels::XyzF32(&kept.xyz), &mut got)
+                    .map_err(driver_err(name))?;
+                (r, build.clock_mhz, true)
+            }
+            #[cfg(target_os = "linux")]
+            Target::Linux(d, build) => {
+                let r = d
+                    .run_records(&run, Pixels::XyzF32(&kept.xyz), &mut got)
+                    .map_err(driver_err(name))?;
+                (r, build.clock_mhz, false)
+            }
+        };
+        compare_records(name, p, gold, end, &got, &report)?;
+        let ms = report.time_ns as f64 / 1e6;
+        self.count(ms);
+        let s = &report.status;
+        eprintln!(
+            "{name}: {} x {}, K {}: {:.3} ms{} at {clock_mhz} MHz ({:.2} cycles a pixel), {} records, at most {} labels in use, frame {}{}; records equal to the golden stream's",
+            p.rows,
+            p.cols,
+            p.fsize,
+            ms,
+            if simulated {
+                format!(" (simulated; {:.1} s wall)", wall.elapsed().as_secs_f64())
+            } else {
+                String::new()
+            },
+            report.time_ns as f64 * clock_mhz / 1e3 / p.pixels() as f64,
+            report.end.records,
+            s.provisional,
+            s.frame_count,
+            if report.end.overflow {
+                ", OVERFLOW: a run was refused a label (labels or the open limit)"
+            } else {
+                ""
+            },
+        );
+        Ok(())
+    }
+}
+
+/// The core's records and end beat against the golden stream's, and the
+/// status against the end beat; the first differing record on a mismatch.
+fn compare_records(
+    name: &str,
+    p: &FccParams,
+    gold: &[ClosedRecord],
+    end: FrameEnd,
+    got: &[HwRecord],
+    report: &fcc_driver::RecordReport,
+) -> anyhow::Result<()> {
+    let want: Vec<Item> = gold
+        .iter()
+        .map(|r| Item::Record(r.record.hw()))
+        .chain([Item::End(end)])
+        .collect();
+    let got: Vec<Item> = got
+        .iter()
+        .copied()
+        .map(Item::Record)
+        .chain([Item::End(report.end)])
+        .collect();
+    if let Some(i) = (0..want.len().max(got.len())).find(|&i| want.get(i) != got.get(i)) {
+        let show = |v: Option<&Item>| v.map_or("nothing".to_string(), fcc_sim::column::short);
+        bail!(
+            "{name}: the core's records differ from the golden stream's ({}): first at item {i} of {}: expected {} != got {}",
+            fcc_rtl::param_summary(p),
+            want.len(),
+            show(want.get(i)),
+            show(got.get(i))
+        );
+    }
+    let s = &report.status;
+    let pairs = [
+        (
+            "clusters",
+            u64::from(end.records.min(0xffff)),
+            u64::from(s.clusters),
+        ),
+        ("overflow", u64::from(end.overflow), u64::from(s.overflow)),
+    ];
+    for (what, e, g) in pairs {
+        if e != g {
+            bail!("{name}: status {what}: expected {e} != got {g}");
+        }
+    }
+    Ok(())
 }
 
 /// Every label and the status against the golden model; the first

@@ -27,7 +27,7 @@ use fcc_lidar::projection::{project, BackProjection, ProjectionConfig, VerticalL
 use fcc_lidar::sinks::mcap::{McapFrame, McapSink};
 use fcc_lidar::source::{for_each_ouster_frame, Frame as Item, InputKind, Source, SourceOptions};
 use fcc_lidar::RangeImage;
-use fcc_pixel::record::{frame_beats, RECORD_WORDS};
+use fcc_pixel::record::{frame_beats, FrameEnd, RECORD_WORDS};
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
 use serde::Serialize;
@@ -578,6 +578,18 @@ pub trait Hardware {
         kept: &RangeImage,
         gold: &PipelineResult,
     ) -> anyhow::Result<Vec<u32>>;
+
+    /// With `--stream` (the column core): the frame's records, checked
+    /// against the golden stream's `records` (in closing order) and its
+    /// end beat `end`; the outputs are then the golden stream's.
+    fn stream(
+        &self,
+        name: &str,
+        kept: &RangeImage,
+        gold: &PipelineResult,
+        records: &[ClosedRecord],
+        end: FrameEnd,
+    ) -> anyhow::Result<()>;
 }
 
 fn process(
@@ -602,7 +614,12 @@ fn process(
         )
     };
     let time_ms = t.elapsed().as_secs_f64() * 1e3;
-    if let Some(hw) = hw {
+    if let (Some(hw), Some((records, _)), Some(end)) = (hw, &streamed, end) {
+        // The records the outputs are made of are the hardware's (equal to
+        // the golden stream's, or `stream` failed).
+        let kept = item.image.without(&out.ground.mask);
+        hw.stream(&item.name, &kept, &out, records, end)?;
+    } else if let Some(hw) = hw {
         // The outputs carry the hardware's labels (equal to the golden
         // model's, or `cluster` failed), through the same min-points filter.
         let kept = item.image.without(&out.ground.mask);

@@ -235,3 +235,107 @@ fn board_run_reads_the_build_from_fcc_params_json_and_refuses_garbage() {
     assert!(text(&o).contains("UIO"), "{}", text(&o));
     let _ = std::fs::remove_dir_all(&d);
 }
+
+/// The column core (`--scan column`) on the virtual board: the 32- and
+/// 64-beam captures through its K_max = 11, 128 x 2048, B = 16 build, every
+/// record and end beat checked by the command against the golden stream's;
+/// the records it writes (JSON lines on stdout) are those of
+/// `fcc cluster --stream` with the core's open limit.
+#[test]
+fn ouster_captures_on_the_virtual_column_core_equal_the_golden_stream() {
+    let data = lidar_data();
+    let runs: Vec<_> = SAMPLE_CAPTURES
+        .iter()
+        .filter(|c| c.0.starts_with("OS-1-"))
+        .collect();
+    assert_eq!(runs.len(), 2);
+    for (i, (pcap, json)) in runs.into_iter().enumerate() {
+        let (input, meta) = (data.join(pcap), data.join(json));
+        // The second with range-adaptive thresholds and stream limits.
+        let extra: &[&str] = if i == 0 {
+            &[]
+        } else {
+            &[
+                "--preset",
+                "adaptive",
+                "--bridge",
+                "16",
+                "--ring-reach",
+                "16",
+            ]
+        };
+        let mut args = vec!["board", "run", "--virtual", "--scan", "column"];
+        args.extend(extra);
+        args.extend(["--input", s(&input), "--meta", s(&meta)]);
+        let o = fcc(&args);
+        let err = fcc_testkit::stderr(&o);
+        assert!(o.status.success(), "{pcap}: {}", text(&o));
+        assert!(err.contains("column-streaming core for K_max 11"), "{err}");
+        assert!(
+            err.contains("records equal to the golden stream's"),
+            "{err}"
+        );
+        assert!(
+            err.contains("PASS: 1 frame through the core, every record equal"),
+            "{err}"
+        );
+        let mut sw = vec![
+            "cluster",
+            "--stream",
+            "--label-bits",
+            "16",
+            "--open-limit",
+            "511",
+        ];
+        sw.extend(extra);
+        sw.extend(["--input", s(&input), "--meta", s(&meta)]);
+        let g = fcc(&sw);
+        assert!(g.status.success(), "{pcap}: {}", text(&g));
+        let (hw, gold) = (
+            String::from_utf8_lossy(&o.stdout),
+            String::from_utf8_lossy(&g.stdout),
+        );
+        assert!(hw.lines().count() > 40, "{pcap}: {hw}");
+        if let Some((n, (a, b))) = hw
+            .lines()
+            .zip(gold.lines())
+            .enumerate()
+            .find(|(_, (a, b))| a != b)
+        {
+            panic!("{pcap}: record line {n}: expected {b} != got {a}");
+        }
+        assert_eq!(hw.lines().count(), gold.lines().count(), "{pcap}");
+    }
+}
+
+/// What the column core cannot do is refused before a model is built.
+#[test]
+fn column_core_refuses_open_limits_past_its_slots_and_min_points() {
+    let data = lidar_data();
+    let input = data.join(SAMPLE_CAPTURES[1].0);
+    for (extra, says) in [
+        (
+            &["--open-limit", "600"][..],
+            "--open-limit 600: the column core holds at most 511",
+        ),
+        (&["--min-points", "5"], "drop --min-points 5"),
+    ] {
+        let mut args = vec!["board", "run", "--virtual", "--scan", "column"];
+        args.extend(extra);
+        args.extend(["--input", s(&input)]);
+        let o = fcc(&args);
+        assert!(!o.status.success());
+        assert!(text(&o).contains(says), "{}", text(&o));
+        assert!(!text(&o).contains("building"), "{}", text(&o));
+    }
+    let o = fcc(&[
+        "board",
+        "run",
+        "--virtual",
+        "--stream",
+        "--input",
+        s(&input),
+    ]);
+    assert!(!o.status.success());
+    assert!(text(&o).contains("--scan column"), "{}", text(&o));
+}

@@ -589,7 +589,43 @@ pub fn c_header(p: &FccParams) -> String {
         }
         s.push('\n');
     }
+    if p.scan == fcc_params::Scan::Column {
+        s.push_str(&record_layout_c());
+    }
     s.push_str("#endif  // FCC_REGS_H\n");
+    s
+}
+
+/// The column core's output stream in C (spec §9.4, from
+/// `fcc_pixel::record`'s layouts): beats per record and, for each field of
+/// a record and of the end beat, its beat, shift, width and signedness.
+fn record_layout_c() -> String {
+    use fcc_pixel::record::{END_LAYOUT, RECORD_LAYOUT, RECORD_WORDS};
+    let mut s = format!(
+        "// The output stream (spec 9.4): each record is FCC_RECORD_WORDS 64-bit beats,\n\
+         // each field in one beat (FCC_REC_<F>_WORD) at bits SHIFT .. SHIFT + BITS - 1,\n\
+         // two's complement when SIGNED; bits outside the fields are 0. After the\n\
+         // frame's last record comes its end beat (tlast high; its id field is 0).\n\
+         #define FCC_RECORD_WORDS {RECORD_WORDS}u\n"
+    );
+    for l in &RECORD_LAYOUT {
+        let n = l.name.to_uppercase();
+        s.push_str(&format!(
+            "#define FCC_REC_{n}_WORD {}u\n#define FCC_REC_{n}_SHIFT {}u\n#define FCC_REC_{n}_BITS {}u\n#define FCC_REC_{n}_SIGNED {}\n",
+            l.word,
+            l.lsb,
+            l.bits,
+            u8::from(l.signed)
+        ));
+    }
+    for l in &END_LAYOUT {
+        let n = l.name.to_uppercase();
+        s.push_str(&format!(
+            "#define FCC_END_{n}_SHIFT {}u\n#define FCC_END_{n}_BITS {}u\n",
+            l.lsb, l.bits
+        ));
+    }
+    s.push('\n');
     s
 }
 

@@ -252,3 +252,189 @@ fn c_quantisation_matches_the_golden_model_on_corners_and_seeded_random_points()
         );
     }
 }
+
+/// A record's fields by their names in spec §9.4, read from the record's
+/// own fields (not from the layout the header is made of).
+fn record_fields(r: &fcc_pixel::record::HwRecord) -> Vec<(&'static str, i128)> {
+    let mut v: Vec<(&'static str, i128)> = vec![
+        ("id", r.id.into()),
+        ("points", r.points.into()),
+        ("first_row", r.first_row.into()),
+        ("last_row", r.last_row.into()),
+        ("seam", u8::from(r.seam).into()),
+        ("first_col", r.first_col.into()),
+        ("last_col", r.last_col.into()),
+        ("closed_col", r.closed_col.into()),
+        ("range2_min", r.range2_min.into()),
+        ("range2_max", r.range2_max.into()),
+        ("sum_xx", r.sum_xx.into()),
+        ("sum_xy", r.sum_xy.into()),
+        ("sum_yy", r.sum_yy.into()),
+    ];
+    for (i, a) in ["x", "y", "z"].iter().enumerate() {
+        v.push((leak(format!("min_{a}")), r.min[i].into()));
+        v.push((leak(format!("max_{a}")), r.max[i].into()));
+        v.push((leak(format!("sum_{a}")), r.sum[i].into()));
+    }
+    v
+}
+
+fn leak(s: String) -> &'static str {
+    Box::leak(s.into_boxed_str())
+}
+
+/// `fcc_regs.h` of a column build gives the record layout: a C program
+/// that reads seeded random records (packed by `fcc_pixel`, as the core
+/// sends them) and the end beat with nothing but the header's macros gets
+/// every field back.
+#[test]
+fn a_column_builds_register_header_decodes_records_in_c() {
+    if !gcc_present() {
+        eprintln!("gcc not installed: C record layout check skipped");
+        return;
+    }
+    use fcc_pixel::record::{FrameEnd, HwRecord};
+    let p = FccParams {
+        rows: 24,
+        cols: 256,
+        fsize: 3,
+        scan: fcc_params::Scan::Column,
+        ..Default::default()
+    };
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("fcc-c-records-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(dir.join("fcc_regs.h"), fcc_rtl::regmap::c_header(&p)).unwrap();
+    let names: Vec<&str> = record_fields(&HwRecord::default())
+        .iter()
+        .map(|f| f.0)
+        .collect();
+    let mut c = String::from(
+        "#include <inttypes.h>\n#include <stdint.h>\n#include <stdio.h>\n#include \"fcc_regs.h\"\n\
+         static int64_t field(const uint64_t *w, unsigned word, unsigned shift, unsigned bits, int sign) {\n\
+         \x20   uint64_t m = bits >= 64 ? ~UINT64_C(0) : (UINT64_C(1) << bits) - 1;\n\
+         \x20   uint64_t v = (w[word] >> shift) & m;\n\
+         \x20   if (sign && ((v >> (bits - 1)) & 1)) return (int64_t)(v | ~m);\n\
+         \x20   return (int64_t)v;\n}\n\
+         int main(void) {\n    uint64_t w[FCC_RECORD_WORDS];\n    unsigned n;\n\
+         \x20   if (scanf(\"%u\", &n) != 1) return 1;\n\
+         \x20   for (unsigned r = 0; r < n; r++) {\n        for (unsigned i = 0; i < FCC_RECORD_WORDS; i++)\n\
+         \x20           if (scanf(\"%\" SCNx64, &w[i]) != 1) return 1;\n",
+    );
+    for n in &names {
+        let u = n.to_uppercase();
+        c.push_str(&format!(
+            "        printf(\"{n} %\" PRId64 \"\\n\", field(w, FCC_REC_{u}_WORD, FCC_REC_{u}_SHIFT, FCC_REC_{u}_BITS, FCC_REC_{u}_SIGNED));\n"
+        ));
+    }
+    c.push_str(
+        "    }\n    if (scanf(\"%\" SCNx64, &w[0]) != 1) return 1;\n\
+         \x20   printf(\"records %\" PRId64 \" overflow %\" PRId64 \" frame_error %\" PRId64 \" id %\" PRId64 \"\\n\",\n\
+         \x20       field(w, 0, FCC_END_RECORDS_SHIFT, FCC_END_RECORDS_BITS, 0),\n\
+         \x20       field(w, 0, FCC_END_OVERFLOW_SHIFT, FCC_END_OVERFLOW_BITS, 0),\n\
+         \x20       field(w, 0, FCC_END_FRAME_ERROR_SHIFT, FCC_END_FRAME_ERROR_BITS, 0),\n\
+         \x20       field(w, 0, FCC_END_ID_SHIFT, FCC_END_ID_BITS, 0));\n    return 0;\n}\n",
+    );
+    let src = dir.join("records.c");
+    std::fs::write(&src, c).unwrap();
+    let exe = dir.join("records");
+    let out = gcc(&[
+        "-std=c99".as_ref(),
+        "-Wall".as_ref(),
+        "-Wextra".as_ref(),
+        "-Werror".as_ref(),
+        "-I".as_ref(),
+        dir.as_os_str(),
+        src.as_os_str(),
+        "-o".as_ref(),
+        exe.as_os_str(),
+    ]);
+    assert!(
+        out.status.success(),
+        "gcc failed:\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    // Seeded random records over each field's whole range, and the extremes.
+    let seed = 29;
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+    let mut records = vec![];
+    for i in 0..200u32 {
+        let ext = i % 2 == 0;
+        let u = |rng: &mut rand_chacha::ChaCha8Rng, bits: u32| -> u64 {
+            if ext {
+                (1u64 << bits) - 1
+            } else {
+                rng.gen_range(0..1u64 << bits)
+            }
+        };
+        let s = |rng: &mut rand_chacha::ChaCha8Rng, bits: u32| -> i64 {
+            let half = 1i64 << (bits - 1);
+            if ext {
+                -half
+            } else {
+                rng.gen_range(-half..half)
+            }
+        };
+        let r = HwRecord {
+            id: u(&mut rng, 20) as u32,
+            points: u(&mut rng, 20) as u32,
+            first_row: u(&mut rng, 7) as u32,
+            last_row: u(&mut rng, 7) as u32,
+            seam: ext || rng.gen(),
+            first_col: u(&mut rng, 13) as u32,
+            last_col: u(&mut rng, 13) as u32,
+            closed_col: u(&mut rng, 13) as u32,
+            min: [0; 3].map(|_| s(&mut rng, 16) as i16),
+            max: [0; 3].map(|_| s(&mut rng, 16) as i16),
+            range2_min: u(&mut rng, 32),
+            range2_max: u(&mut rng, 32),
+            sum: [0; 3].map(|_| s(&mut rng, 35)),
+            sum_xx: u(&mut rng, 50) as i64,
+            sum_xy: s(&mut rng, 51),
+            sum_yy: u(&mut rng, 50) as i64,
+        };
+        records.push(r);
+    }
+    let end = FrameEnd {
+        records: 0xF_FFFF,
+        overflow: true,
+        frame_error: true,
+    };
+    let mut input = format!("{}\n", records.len());
+    let mut want = String::new();
+    for r in &records {
+        let words = r.pack().unwrap_or_else(|e| panic!("{r:?}: {e}"));
+        for w in words {
+            input.push_str(&format!("{w:x}\n"));
+        }
+        for (n, v) in record_fields(r) {
+            want.push_str(&format!("{n} {v}\n"));
+        }
+    }
+    input.push_str(&format!("{:x}\n", end.pack().unwrap()));
+    want.push_str("records 1048575 overflow 1 frame_error 1 id 0\n");
+    let mut child = Command::new(&exe)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .spawn()
+        .unwrap();
+    child
+        .stdin
+        .take()
+        .unwrap()
+        .write_all(input.as_bytes())
+        .unwrap();
+    let out = child.wait_with_output().unwrap();
+    let got = String::from_utf8_lossy(&out.stdout);
+    let mismatch = got
+        .lines()
+        .zip(want.lines())
+        .enumerate()
+        .find(|(_, (g, w))| g != w);
+    if let Some((i, (g, w))) = mismatch {
+        panic!("line {i} (seed {seed}): expected {w:?} != got {g:?}");
+    }
+    assert_eq!(got.lines().count(), want.lines().count(), "seed {seed}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
