@@ -92,6 +92,24 @@ CASES = {
 }
 
 
+# The column-streaming core (`fcc gen --scan column`): K -> label bits, at
+# COL_ROWS x COLS (24 rows: at least K + 8 at K = 11). Its cases are the row
+# core's that concern a stream of records (the directed frames, late `tlast`
+# and frames back to back are the Verilator regression's): seeded random
+# frames at full size, early `tlast` at RUN_COLS = SMALL_COLS and a reset in
+# the middle of a frame (its RAMs then hold the partial frame's words). As
+# generated only: the reset-only copy does not run yet (docs/column-core.md,
+# "cocotb": a union-find table read before its first write is X in 4-state
+# simulation and stops the core), so no case is listed for it.
+COL_ROWS = 24
+COL_CONFIGS = {3: 9, 11: 9}
+COL_CASES = {
+    3: {"generated": ("random", "early tlast", "reset in the middle of a frame")},
+    11: {"generated": ("random",)},
+}
+SCANS = ("row", "column")
+
+
 def log(msg):
     print(msg, flush=True)
 
@@ -308,11 +326,125 @@ def prepare(fcc, root, k):
     return work, n
 
 
+def header_value(text, name):
+    """The value of `#define name Nu` in a generated C header."""
+    m = re.search(rf"^#define {name} (\d+)u$", text, flags=re.M)
+    if m is None:
+        raise RuntimeError(f"fcc_regs.h has no {name}")
+    return int(m.group(1))
+
+
+def column_order(pixels, rows, cols):
+    """A row-major frame's pixels in column order (the column core's input)."""
+    return [pixels[r * cols + c] for c in range(cols) for r in range(rows)]
+
+
+def golden_column(fcc, work, name, pixels, k, bits, open_limit, rows, cols):
+    """The golden stream's record beats (and end beat) of one frame, from
+    `fcc cluster --stream --beats` with the build's open limit."""
+    npy = work / f"{name}.npy"
+    out = work / f"{name}.beats"
+    fr.write_npy_f32(npy, rows, cols, pixels)
+    run(
+        [
+            fcc, "cluster", "--stream", "--input", npy, "--beats", out,
+            "--fsize", str(k), "--th-h", str(TH_H), "--th-v", str(TH_V), "--label-bits", str(bits),
+            "--open-limit", str(open_limit),
+        ]
+    )
+    data = out.read_bytes()
+    return [int.from_bytes(data[i : i + 8], "little") for i in range(0, len(data), 8)]
+
+
+def prepare_column(fcc, root, k):
+    """Generate one column-core configuration's RTL (both variants) and its
+    manifest: the input beats in column order, the expected output beats."""
+    bits = COL_CONFIGS[k]
+    rows = COL_ROWS
+    work = root / f"col_k{k}"
+    if work.exists():
+        shutil.rmtree(work)
+    gen_dir = work / "gen"
+    run(
+        [
+            fcc, "gen", "--scan", "column", "--fsize", str(k), "--rows", str(rows), "--cols", str(COLS),
+            "--th-h", str(TH_H), "--th-v", str(TH_V), "--label-bits", str(bits),
+            "--rtl", gen_dir, "--constraints", gen_dir / "xdc", "--scripts", gen_dir / "tcl", "--no-lint",
+        ]
+    )
+    build = json.loads((gen_dir / "fcc_params.json").read_text())
+    resets = {r["name"]: r["reset"] for r in build["registers"]}
+    header = (gen_dir / "fcc_regs.h").read_text()
+    limit_none = header_value(header, "FCC_RUN_BRIDGE_MAX")
+    if resets["RUN_BRIDGE"] != limit_none or resets["RUN_RING_REACH"] != limit_none:
+        raise RuntimeError("the bench's column build has no bridge or ring-reach limit")
+    open_limit = resets["RUN_OPEN_LIMIT"]
+    words = header_value(header, "FCC_RECORD_WORDS")
+    text = (gen_dir / "fcc_top.v").read_text()
+    stripped, n = strip_initial(text)
+    for v in VARIANTS:
+        (work / v).mkdir(parents=True)
+        shutil.copy(gen_dir / "fcc_params.vh", work / v / "fcc_params.vh")
+    (work / "reset_only" / "fcc_top.v").write_text(stripped)
+    shutil.copy(gen_dir / "fcc_top.v", work / "generated" / "fcc_top.v")
+    frames, cs = cases(k, rows, COLS)
+    fdir = work / "frames"
+    fdir.mkdir()
+    flist = []
+    used = {f for c in cs if any(c["name"] in COL_CASES[k].get(v, ()) for v in VARIANTS) for f in c["frames"]}
+    for name, (pixels, tlast, fcols) in frames.items():
+        if name not in used:
+            continue
+        order = column_order(pixels, rows, fcols)
+        if tlast == "early":
+            at = rows * fcols // 3
+            seen = set(range(at + 1))
+            cut = [p if (i % fcols) * rows + i // fcols in seen else None for i, p in enumerate(pixels)]
+            beats_out = golden_column(fcc, fdir, name, cut, k, bits, open_limit, rows, fcols)
+            beats = [fr.beat(p) for p in order[: at + 1]]
+        elif tlast == "late":
+            beats_out = golden_column(fcc, fdir, name, pixels, k, bits, open_limit, rows, fcols)
+            beats = [fr.beat(p) for p in order] + [fr.beat((i, 0, 0)) for i in range(7)]
+        else:
+            beats_out = golden_column(fcc, fdir, name, pixels, k, bits, open_limit, rows, fcols)
+            beats = [fr.beat(p) for p in order]
+        end = beats_out[-1]
+        flist.append(
+            {
+                "name": name,
+                "beats": beats,
+                "cols": fcols,
+                "beats_out": beats_out,
+                "records": (len(beats_out) - 1) // words,
+                "overflow": (end >> header_value(header, "FCC_END_OVERFLOW_SHIFT")) & 1,
+            }
+        )
+    manifest = {
+        "fsize": k,
+        "rows": rows,
+        "cols": COLS,
+        "label_bits": bits,
+        "labels_per_beat": build["params"]["labels_per_beat"],
+        "record_words": words,
+        "end_frame_error_shift": header_value(header, "FCC_END_FRAME_ERROR_SHIFT"),
+        "frames": flist,
+        "registers": build["registers"],
+        "params_hash": build["params_hash"],
+        "test_module": "test_fcc_col_top",
+    }
+    for v in VARIANTS:
+        vc = [c for c in cs if c["name"] in COL_CASES[k].get(v, ())]
+        m = dict(manifest, cases=vc, tag=f"column K={k} {rows}x{COLS} B={bits} {v}")
+        (work / v / "manifest.json").write_text(json.dumps(m))
+    return work, n
+
+
 def simulate(work, variant):
     """Build and run one variant with cocotb's Icarus runner (in this process)."""
     from cocotb_tools.runner import get_runner
 
     vdir = work / variant
+    test_module = json.loads((vdir / "manifest.json").read_text()).get("test_module", "test_fcc_top")
     runner = get_runner("icarus")
     runner.build(
         sources=[vdir / "fcc_top.v", HERE / "fcc_bench_top.v"],
@@ -325,7 +457,7 @@ def simulate(work, variant):
     )
     xml = runner.test(
         hdl_toplevel="fcc_bench_top",
-        test_module="test_fcc_top",
+        test_module=test_module,
         build_dir=vdir / "build",
         test_dir=vdir,
         extra_env={"FCC_MANIFEST": str(vdir / "manifest.json")},
@@ -343,6 +475,7 @@ def main():
     ap.add_argument("--work", default="target/cocotb", help="work directory (default target/cocotb)")
     ap.add_argument("--fsize", default=",".join(map(str, CONFIGS)), help="K values, comma separated")
     ap.add_argument("--variants", default=",".join(VARIANTS), help="generated and/or reset_only")
+    ap.add_argument("--scan", default=",".join(SCANS), help="the cores: row and/or column")
     ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1, help="simulations at once")
     ap.add_argument("--one", nargs=2, metavar=("DIR", "VARIANT"), help=argparse.SUPPRESS)
     a = ap.parse_args()
@@ -358,16 +491,23 @@ def main():
     root = Path(a.work).resolve()
     ks = [int(x) for x in a.fsize.split(",") if x]
     variants = [v for v in a.variants.split(",") if v]
+    scans = [x for x in a.scan.split(",") if x]
+    for x in scans:
+        if x not in SCANS:
+            sys.exit(f"--scan {x}: expected one of {', '.join(SCANS)}")
     for k in ks:
         if k not in CONFIGS:
             sys.exit(f"--fsize {k}: the bench has configurations for K in {sorted(CONFIGS)}")
+    # (scan, K) of every configuration to run, the longest first.
+    configs = [("row", k) for k in ks if "row" in scans] + [("column", k) for k in ks if "column" in scans and k in COL_CONFIGS]
+    configs.sort(key=lambda c: (-c[1], c[0] != "column"))
     for v in variants:
         if v not in VARIANTS:
             sys.exit(f"--variants {v}: expected one of {', '.join(VARIANTS)}")
     t0 = time.time()
 
     def one(job):
-        k, work, v = job
+        tag, work, v = job
         t = time.time()
         r = subprocess.run(
             [sys.executable, str(Path(__file__).resolve()), "--fcc", fcc, "--one", str(work), v],
@@ -388,17 +528,27 @@ def main():
                 summary = "\n    ".join(bad[-12:]) or "\n    ".join(lines[-20:])
         else:
             summary = (r.stdout + r.stderr)[-3000:]
-        log(f"K={k} {v}: {'pass' if ok else 'FAIL'} in {dt:.0f} s ({cpu} s CPU)  {summary}")
+        log(f"{tag} {v}: {'pass' if ok else 'FAIL'} in {dt:.0f} s ({cpu} s CPU)  {summary}")
         return ok
 
     # Largest K first: the longest simulations start first, each as soon as
     # its configuration is prepared (the next one is prepared meanwhile).
     with ThreadPoolExecutor(max_workers=max(1, a.jobs)) as ex:
         futures = []
-        for k in sorted(ks, reverse=True):
-            work, n = prepare(fcc, root, k)
-            log(f"K={k}: RTL generated ({n} initial blocks stripped for reset_only), golden labels from fcc cluster")
-            futures += [ex.submit(one, (k, work, v)) for v in variants]
+        for scan, k in configs:
+            if scan == "row":
+                work, n = prepare(fcc, root, k)
+                tag = f"K={k}"
+                log(f"{tag}: RTL generated ({n} initial blocks stripped for reset_only), golden labels from fcc cluster")
+            else:
+                work, n = prepare_column(fcc, root, k)
+                tag = f"column K={k}"
+                log(f"{tag}: RTL generated, golden records from fcc cluster --stream")
+            futures += [
+                ex.submit(one, (tag, work, v))
+                for v in variants
+                if scan == "row" or COL_CASES[k].get(v)
+            ]
         results = [f.result() for f in futures]
     passed = sum(results)
     failed = len(results) - passed

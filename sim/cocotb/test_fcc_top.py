@@ -315,6 +315,12 @@ class Bench:
 
 @cocotb.test()
 async def fcc_top_against_golden(dut):
+    await run_manifest(dut, Bench)
+
+
+async def run_manifest(dut, bench_class):
+    """Every case of the manifest on `dut` with a `bench_class` bench (the
+    row-major core's `Bench`, or the column core's in `test_fcc_col_top`)."""
     with open(os.environ["FCC_MANIFEST"]) as fh:
         manifest = json.load(fh)
     frames = {f["name"]: f for f in manifest["frames"]}
@@ -326,7 +332,7 @@ async def fcc_top_against_golden(dut):
     dut.s_axil_arvalid.value = 0
     dut.s_axil_bready.value = 0
     dut.s_axil_rready.value = 0
-    bench = Bench(dut, manifest)
+    bench = bench_class(dut, manifest)
     cocotb.start_soon(bench.mon.run())
     await bench.reset(4)
     for case in manifest["cases"]:

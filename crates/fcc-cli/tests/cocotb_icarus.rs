@@ -4,7 +4,10 @@
 //! with this crate's `fcc` binary, gets the expected labels from `fcc
 //! cluster` (the golden model), and simulates each configuration twice, as
 //! generated and with every `initial` block removed (reset only), driving
-//! AXI4-Stream with cocotbext-axi and random pauses on both sides.
+//! AXI4-Stream with cocotbext-axi and random pauses on both sides. It also
+//! runs the column-streaming core (`--scan column`, K = 3 and 11 at 24 x
+//! 256, as generated), its output beats against `fcc cluster --stream
+//! --beats`.
 //!
 //! Needs Icarus Verilog and the Python environment of
 //! `sim/cocotb/requirements.txt` in `.venv` at the repository root (made by
