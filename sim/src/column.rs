@@ -173,6 +173,19 @@ pub fn short(i: &Item) -> String {
     }
 }
 
+/// The first item where `got` differs from `want` (a frame's records and
+/// end beat): "item I of N: expected ... != got ...", `None` when equal.
+pub fn first_difference(want: &[Item], got: &[Item]) -> Option<String> {
+    let i = (0..want.len().max(got.len())).find(|&i| want.get(i) != got.get(i))?;
+    let show = |v: Option<&Item>| v.map_or("nothing".to_string(), short);
+    Some(format!(
+        "item {i} of {}: expected {} != got {}",
+        want.len(),
+        show(want.get(i)),
+        show(got.get(i))
+    ))
+}
+
 impl Dut {
     /// Send `frames` back to back (random gaps and back-pressure as
     /// `drive` says) and check every item read against the frames' golden

@@ -306,14 +306,8 @@ fn records_ok(
         .map(Item::Record)
         .chain([Item::End(r.end)])
         .collect();
-    if let Some(i) = (0..want.len().max(got.len())).find(|&i| want.get(i) != got.get(i)) {
-        let show = |v: Option<&Item>| v.map_or("nothing".into(), fcc_sim::column::short);
-        panic!(
-            "{what}: item {i} of {} differs: expected {} != got {}",
-            want.len(),
-            show(want.get(i)),
-            show(got.get(i))
-        );
+    if let Some(d) = fcc_sim::column::first_difference(&want, &got) {
+        panic!("{what}: {d}");
     }
     assert_eq!(r.status.clusters, r.end.records.min(0xffff), "{what}");
     assert_eq!(r.status.overflow, r.end.overflow, "{what}");

@@ -278,6 +278,62 @@ fn recover_if_busy<H: fcc_driver::Hal>(d: &mut Driver<H>, what: &str) -> anyhow:
     Ok(())
 }
 
+/// What `fcc board run` asks of a driver, whatever its platform.
+trait Core {
+    fn labels(
+        &mut self,
+        run: &RunConfig,
+        px: Pixels<'_>,
+        labels: &mut [u32],
+    ) -> Result<fcc_driver::FrameReport, String>;
+    fn records(
+        &mut self,
+        run: &RunConfig,
+        px: Pixels<'_>,
+        out: &mut Vec<HwRecord>,
+    ) -> Result<fcc_driver::RecordReport, String>;
+}
+
+impl<H: fcc_driver::Hal> Core for Driver<H>
+where
+    H::Error: std::fmt::Display,
+{
+    fn labels(
+        &mut self,
+        run: &RunConfig,
+        px: Pixels<'_>,
+        labels: &mut [u32],
+    ) -> Result<fcc_driver::FrameReport, String> {
+        self.run_frame(run, px, labels).map_err(|e| e.to_string())
+    }
+    fn records(
+        &mut self,
+        run: &RunConfig,
+        px: Pixels<'_>,
+        out: &mut Vec<HwRecord>,
+    ) -> Result<fcc_driver::RecordReport, String> {
+        self.run_records(run, px, out).map_err(|e| e.to_string())
+    }
+}
+
+impl Target {
+    /// The driver, the build's clock and whether the core is simulated;
+    /// on the virtual board, says that the frame `name` of `p` goes in.
+    fn core(&mut self, name: &str, p: &FccParams) -> (&mut dyn Core, f64, bool) {
+        match self {
+            Target::Virtual(d, build) => {
+                eprintln!(
+                    "{name}: {} x {}, K {} through the virtual board ...",
+                    p.rows, p.cols, p.fsize
+                );
+                (d.as_mut(), build.clock_mhz, true)
+            }
+            #[cfg(target_os = "linux")]
+            Target::Linux(d, build) => (d.as_mut(), build.clock_mhz, false),
+        }
+    }
+}
+
 enum Target {
     /// The virtual board and the build of its core.
     Virtual(Box<Driver<VirtualBoard>>, FccParams),
@@ -333,12 +389,6 @@ fn run_config(p: &FccParams) -> RunConfig {
     fcc_sim::build_run(p)
 }
 
-fn driver_err<E: std::fmt::Display>(
-    name: &str,
-) -> impl FnOnce(fcc_driver::Error<E>) -> anyhow::Error + '_ {
-    move |e| anyhow::anyhow!("{name}: {e}")
-}
-
 impl Hardware for Runner {
     fn stream(
         &self,
@@ -372,25 +422,10 @@ impl Hardware for Runner {
         let p = gold.params.clone();
         let run = run_config(&p);
         let wall = Instant::now();
-        let (report, clock_mhz, simulated) = match &mut *target {
-            Target::Virtual(d, build) => {
-                eprintln!(
-                    "{name}: {} x {}, K {} through the virtual board ...",
-                    p.rows, p.cols, p.fsize
-                );
-                let r = d
-                    .run_frame(&run, Pixels::XyzF32(&kept.xyz), &mut labels)
-                    .map_err(driver_err(name))?;
-                (r, build.clock_mhz, true)
-            }
-            #[cfg(target_os = "linux")]
-            Target::Linux(d, build) => {
-                let r = d
-                    .run_frame(&run, Pixels::XyzF32(&kept.xyz), &mut labels)
-                    .map_err(driver_err(name))?;
-                (r, build.clock_mhz, false)
-            }
-        };
+        let (d, clock_mhz, simulated) = target.core(name, &p);
+        let report = d
+            .labels(&run, Pixels::XyzF32(&kept.xyz), &mut labels)
+            .map_err(|e| anyhow::anyhow!("{name}: {e}"))?;
         compare(name, &p, &gold.clustering, &labels, &report.status)?;
         let s = &report.status;
         let ms = report.time_ns as f64 / 1e6;
@@ -435,25 +470,10 @@ impl Runner {
         let run = run_config(p);
         let mut got = Vec::with_capacity(gold.len());
         let wall = Instant::now();
-        let (report, clock_mhz, simulated) = match &mut *target {
-            Target::Virtual(d, build) => {
-                eprintln!(
-                    "{name}: {} x {}, K {} through the virtual board ...",
-                    p.rows, p.cols, p.fsize
-                );
-                let r = d
-                    .run_records(&run, Pixels::XyzF32(&kept.xyz), &mut got)
-                    .map_err(driver_err(name))?;
-                (r, build.clock_mhz, true)
-            }
-            #[cfg(target_os = "linux")]
-            Target::Linux(d, build) => {
-                let r = d
-                    .run_records(&run, Pixels::XyzF32(&kept.xyz), &mut got)
-                    .map_err(driver_err(name))?;
-                (r, build.clock_mhz, false)
-            }
-        };
+        let (d, clock_mhz, simulated) = target.core(name, p);
+        let report = d
+            .records(&run, Pixels::XyzF32(&kept.xyz), &mut got)
+            .map_err(|e| anyhow::anyhow!("{name}: {e}"))?;
         compare_records(name, p, gold, end, &got, &report)?;
         let ms = report.time_ns as f64 / 1e6;
         self.count(ms);
@@ -504,14 +524,10 @@ fn compare_records(
         .map(Item::Record)
         .chain([Item::End(report.end)])
         .collect();
-    if let Some(i) = (0..want.len().max(got.len())).find(|&i| want.get(i) != got.get(i)) {
-        let show = |v: Option<&Item>| v.map_or("nothing".to_string(), fcc_sim::column::short);
+    if let Some(d) = fcc_sim::column::first_difference(&want, &got) {
         bail!(
-            "{name}: the core's records differ from the golden stream's ({}): first at item {i} of {}: expected {} != got {}",
+            "{name}: the core's records differ from the golden stream's ({}): first at {d}",
             fcc_rtl::param_summary(p),
-            want.len(),
-            show(want.get(i)),
-            show(got.get(i))
         );
     }
     let s = &report.status;
