@@ -6,7 +6,7 @@
 //! generated and with every `initial` block removed (reset only), driving
 //! AXI4-Stream with cocotbext-axi and random pauses on both sides. It also
 //! runs the column-streaming core (`--scan column`, K = 3 and 11 at 24 x
-//! 256, as generated), its output beats against `fcc cluster --stream
+//! 256, both copies), its output beats against `fcc cluster --stream
 //! --beats`.
 //!
 //! Needs Icarus Verilog and the Python environment of

@@ -106,8 +106,11 @@ impl Logic for FccSetOp {
         dff_setup!(self, clk, v, jn, un, lt_q, lt_okq, d0, r0, s0, d1, r1, s1);
         self.rt.next = self.w_root.val();
         self.sl.next = self.w_slot.val();
+        // Only a recorded root is chased (an unrecorded one is no word
+        // the op has read: after reset it is not even defined).
         self.chased.next = self.l_valid.val()
-            & ((self.r0.q.val() == self.l_gone.val()) | (self.r1.q.val() == self.l_gone.val()));
+            & ((self.d0.q.val() & (self.r0.q.val() == self.l_gone.val()))
+                | (self.d1.q.val() & (self.r1.q.val() == self.l_gone.val())));
         // The recorded roots' order is the next one's unless a chase
         // changes one.
         self.lt_okq.d.next = !self.chased.val();
@@ -133,11 +136,11 @@ impl Logic for FccSetOp {
                 self.rt.next = self.l_keep.val();
                 self.sl.next = self.l_keep_slot.val();
             }
-            if self.r0.q.val() == self.l_gone.val() {
+            if self.d0.q.val() & (self.r0.q.val() == self.l_gone.val()) {
                 self.r0.d.next = self.l_keep.val();
                 self.s0.d.next = self.l_keep_slot.val();
             }
-            if self.r1.q.val() == self.l_gone.val() {
+            if self.d1.q.val() & (self.r1.q.val() == self.l_gone.val()) {
                 self.r1.d.next = self.l_keep.val();
                 self.s1.d.next = self.l_keep_slot.val();
             }
@@ -183,6 +186,8 @@ impl Logic for FccSetOp {
         }
         if self.rst.val() {
             self.v.d.next = false;
+            self.d0.d.next = false;
+            self.d1.d.next = false;
         }
         self.valid.next = self.v.q.val();
         self.is_join.next = self.jn.q.val();
