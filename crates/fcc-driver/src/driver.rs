@@ -114,8 +114,9 @@ impl Timeouts {
     /// Generous limits for a build: for the row-major core four times the
     /// cycles of the largest frame (it needs about 1.3 x R x C); for the
     /// column core (`column`) 64 cycles a pixel (it needs 1.0 to 1.1 on the
-    /// corpus, but up to about 12 on frames of many small clusters, whose
-    /// closes hold the input: docs/column-core.md); plus the table
+    /// corpus, but up to about 12 on a small frame of many small clusters
+    /// whose labels run out, and 8 on a 32-row capture whose closes lag:
+    /// docs/column-core.md); plus the table
     /// initialisation, and fixed margins.
     pub fn for_build(b: &BuildInfo, column: bool) -> Timeouts {
         let mhz = u64::from(b.clock_khz.max(1000)) / 1000;
