@@ -115,7 +115,7 @@ impl Timeouts {
     /// cycles of the largest frame (it needs about 1.3 x R x C); for the
     /// column core (`column`) 64 cycles a pixel (it needs 1.0 to 1.1 on the
     /// corpus, but up to about 12 on a small frame of many small clusters
-    /// whose labels run out, and 8 on a 32-row capture whose closes lag:
+    /// at 9-bit labels, and 8 on a 32-row capture whose closes lag:
     /// docs/column-core.md); plus the table
     /// initialisation, and fixed margins.
     pub fn for_build(b: &BuildInfo, column: bool) -> Timeouts {
