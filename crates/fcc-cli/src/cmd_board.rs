@@ -166,7 +166,7 @@ fn run_board(args: &BoardRunArgs) -> anyhow::Result<()> {
         check_model_for(args, &virtual_build(args.scan.unwrap_or_default()))?;
     }
     let t = Instant::now();
-    let report = if args.virtual_board {
+    let (report, scan) = if args.virtual_board {
         let (build, model, where_) = match &args.rtl {
             Some(dir) => {
                 let g = fcc_sim::read_generated(dir)?;
@@ -200,20 +200,20 @@ fn run_board(args: &BoardRunArgs) -> anyhow::Result<()> {
         recover_if_busy(&mut d, "virtual board")?;
         let hw = Runner::new(Target::Virtual(Box::new(d), build));
         run_cluster_on(&cluster, Some(&hw))?;
-        hw.summary()
+        (hw.summary(), hw.build().scan)
     } else if let Some(core) = &args.uio {
         let params = args.params.as_ref().context("--uio needs --params")?;
         let (target, cluster) = open_linux(args, core, params)?;
         let hw = Runner::new(target);
         run_cluster_on(&cluster, Some(&hw))?;
-        hw.summary()
+        (hw.summary(), hw.build().scan)
     } else {
         bail!(
             "say where the core is: --virtual, or --uio NAME --params fcc_params.json on a board"
         );
     };
     // With the column core, stdout carries the records (JSON lines).
-    if report.starts_with("PASS") && report.contains("record") {
+    if scan == Scan::Column {
         eprintln!("{report} ({:.1} s)", t.elapsed().as_secs_f64());
     } else {
         println!("{report} ({:.1} s)", t.elapsed().as_secs_f64());
