@@ -14,7 +14,7 @@ use fcc_params::{FccParams, Scan};
 use fcc_scene::{generate, SceneConfig};
 use fcc_sim::column::{quantile, ColDrive, ColFrame};
 use fcc_sim::{load, run_and_check, Drive, Dut};
-use fcc_synth::results::{CycleInput, SYNTHETIC_CORPUS};
+use fcc_synth::results::{CycleInput, StreamCycles, SYNTHETIC_CORPUS};
 use std::path::{Path, PathBuf};
 
 #[derive(Args, Debug, Clone)]
@@ -28,7 +28,7 @@ pub struct CyclesArgs {
     /// Directory holding the Ouster sample captures and their metadata
     /// (default: fcc-lidar's tests/data in the source tree `fcc` was built
     /// from; an empty string skips them).
-    #[arg(long)]
+    #[arg(long, value_parser = clap::builder::TypedValueParser::map(clap::builder::OsStringValueParser::new(), PathBuf::from))]
     pub ouster_dir: Option<PathBuf>,
     /// Write the measurements here as JSON.
     #[arg(long)]
@@ -55,35 +55,9 @@ pub struct CyclesArgs {
 /// the most in use at once).
 pub const COLUMN_LABEL_BITS: u32 = 13;
 
-/// One measurement of the column core.
-#[derive(Debug, Clone, serde::Serialize)]
-pub struct ColumnCycles {
-    pub fsize: usize,
-    pub corpus: String,
-    pub frames: usize,
-    /// Rows R (one column time, the latency target) and pixels of a frame.
-    pub rows: usize,
-    pub pixels: usize,
-    /// Input cycles (first beat to the last frame's last beat taken) per pixel.
-    pub cycles_per_pixel: f64,
-    /// Records closed before their frame's end, and their latency after
-    /// their closing column's last pixel: median, 99 %, largest.
-    pub records: usize,
-    pub latency_median: u64,
-    pub latency_99: u64,
-    pub latency_max: u64,
-    /// Records closed at their frame's end: largest latency after its last pixel.
-    pub end_records: usize,
-    pub end_latency_max: u64,
-    /// Most provisional labels in use at once (PROVISIONAL, over the frames).
-    pub labels_in_use_max: u32,
-    /// Cycles column starts waited for the column-start check (GEAR_STALLS, summed).
-    pub held_cycles: u64,
-}
-
 /// Run `frames` back to back through the column core of `p`, checking every
 /// record; one measurement.
-fn measure_columns(p: &FccParams, corpus: &str, frames: &[Frame]) -> anyhow::Result<ColumnCycles> {
+fn measure_columns(p: &FccParams, corpus: &str, frames: &[Frame]) -> anyhow::Result<StreamCycles> {
     let mut dut = Dut::new(load(p)?);
     dut.reset(4);
     let set = frames
@@ -95,12 +69,13 @@ fn measure_columns(p: &FccParams, corpus: &str, frames: &[Frame]) -> anyhow::Res
         .run_columns(&set, &ColDrive::default())
         .with_context(|| format!("K = {}, {corpus}", p.fsize))?;
     let q = |v: &[u64], x: f64| quantile(v, x);
-    Ok(ColumnCycles {
+    Ok(StreamCycles {
         fsize: p.fsize,
         corpus: corpus.to_string(),
         frames: frames.len(),
         rows: p.rows,
         pixels: p.pixels(),
+        label_bits: p.label_bits,
         cycles_per_pixel: run.cycles_per_pixel(&set, p),
         records: run.latency.len(),
         latency_median: q(&run.latency, 0.5),
@@ -239,7 +214,7 @@ pub fn collect(args: &CyclesArgs) -> anyhow::Result<Vec<CycleInput>> {
 
 /// The column core's measurements (each corpus's frames back to back),
 /// with progress on stderr.
-pub fn collect_columns(args: &CyclesArgs) -> anyhow::Result<Vec<ColumnCycles>> {
+pub fn collect_columns(args: &CyclesArgs) -> anyhow::Result<Vec<StreamCycles>> {
     let none = |v: u32| (v < fcc_rtl::regmap::LIMIT_MAX).then_some(v);
     let base = FccParams {
         label_bits: args.label_bits,
@@ -304,4 +279,26 @@ pub fn run(args: &CyclesArgs) -> anyhow::Result<()> {
             .with_context(|| format!("{}: cannot write", path.display()))?;
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::Parser;
+
+    #[derive(Parser)]
+    struct Cli {
+        #[command(flatten)]
+        cycles: CyclesArgs,
+    }
+
+    #[test]
+    fn an_empty_ouster_dir_skips_the_captures() {
+        let a = Cli::try_parse_from(["cycles", "--ouster-dir", "", "--frames", "0"])
+            .expect("`--ouster-dir ''` is how the captures are skipped")
+            .cycles;
+        assert_eq!(a.ouster_dir, Some(PathBuf::new()));
+        let (scenes, ouster) = corpus(&a, &FccParams::default()).unwrap();
+        assert!(scenes.is_empty() && ouster.is_empty());
+    }
 }

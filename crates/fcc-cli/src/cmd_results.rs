@@ -1,14 +1,16 @@
 //! `fcc results`: every hardware and software number of `docs/results.md` in
 //! one run: golden-model time per K (`fcc bench`), Verilator cycles per K on
 //! the synthetic corpus and the Ouster frames (`fcc cycles`), and Yosys
-//! resources and pre-route timing per K (`fcc synth --all`).
+//! resources and pre-route timing per K (`fcc synth --all`), for the
+//! row-major core and then for the column-streaming core (`--scan column`
+//! at the recommended streaming limits).
 
 use crate::cmd_bench::{self, BenchArgs};
 use crate::cmd_cycles::{self, CyclesArgs};
 use crate::cmd_synth::{self, SynthArgs};
 use anyhow::Context;
 use clap::Args;
-use fcc_params::FccParams;
+use fcc_params::{FccParams, Scan};
 use fcc_scene::SceneConfig;
 use fcc_synth::results::{self, Report};
 use std::path::PathBuf;
@@ -42,7 +44,7 @@ pub fn run(args: &ResultsArgs) -> anyhow::Result<()> {
     let bench_json = args.work_dir.join("bench.json");
     let cycles_json = args.work_dir.join("cycles.json");
     let base = FccParams::default();
-    eprintln!("1/3 golden model times (fcc bench)");
+    eprintln!("1/5 golden model times (fcc bench)");
     cmd_bench::run(&BenchArgs {
         fsize: fsizes.clone(),
         frames: args.frames,
@@ -57,18 +59,18 @@ pub fn run(args: &ResultsArgs) -> anyhow::Result<()> {
         jobs: None,
         json: Some(bench_json.clone()),
     })?;
-    eprintln!("2/3 Verilator cycles (fcc cycles)");
+    eprintln!("2/5 Verilator cycles (fcc cycles)");
     cmd_cycles::run(&CyclesArgs {
-        fsize: fsizes,
+        fsize: fsizes.clone(),
         frames: args.frames,
         ouster_dir: None,
         json: Some(cycles_json.clone()),
-        scan: fcc_params::Scan::Row,
+        scan: Scan::Row,
         label_bits: cmd_cycles::COLUMN_LABEL_BITS,
         bridge: fcc_params::RECOMMENDED_BRIDGE,
         ring_reach: fcc_params::RECOMMENDED_RING_REACH,
     })?;
-    eprintln!("3/3 Yosys resources and timing (fcc synth --all)");
+    eprintln!("3/5 Yosys resources and timing (fcc synth --all)");
     let attach = |file: &PathBuf, table: &str, how: &str| {
         if file.is_file() {
             Some(file.clone())
@@ -91,6 +93,34 @@ pub fn run(args: &ResultsArgs) -> anyhow::Result<()> {
         work_dir: args.work_dir.join("synth"),
         ..SynthArgs::default()
     })?;
+    let column_cycles_json = args.work_dir.join("cycles-column.json");
+    eprintln!("4/5 the column-streaming core's Verilator cycles (fcc cycles --scan column)");
+    cmd_cycles::run(&CyclesArgs {
+        fsize: fsizes.clone(),
+        frames: args.frames,
+        ouster_dir: None,
+        json: Some(column_cycles_json.clone()),
+        scan: Scan::Column,
+        label_bits: cmd_cycles::COLUMN_LABEL_BITS,
+        bridge: fcc_params::RECOMMENDED_BRIDGE,
+        ring_reach: fcc_params::RECOMMENDED_RING_REACH,
+    })?;
+    eprintln!(
+        "5/5 the column-streaming core's resources and timing (fcc synth --all --scan column)"
+    );
+    let mut column = SynthArgs {
+        all: true,
+        cycles_json: Some(column_cycles_json),
+        out: args.out.clone(),
+        json: args.json.clone(),
+        work_dir: args.work_dir.join("synth-column"),
+        ..SynthArgs::default()
+    };
+    column.hw.scan = Some(Scan::Column);
+    column.hw.limits.bridge = Some(fcc_params::RECOMMENDED_BRIDGE);
+    column.hw.limits.ring_reach = Some(fcc_params::RECOMMENDED_RING_REACH);
+    // Its part goes into the document the row-major run wrote.
+    cmd_synth::run(&column)?;
     // Name the command that regenerates the whole document.
     let text = std::fs::read_to_string(&args.json)
         .with_context(|| format!("{}: cannot read", args.json.display()))?;

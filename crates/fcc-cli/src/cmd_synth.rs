@@ -15,7 +15,7 @@ use std::path::{Path, PathBuf};
 
 use anyhow::Context;
 use clap::Args;
-use fcc_params::{limits, FccParams};
+use fcc_params::{limits, FccParams, Scan};
 use fcc_synth::results::{self, MeasureOptions, Report, ResultRow};
 use fcc_synth::vivado;
 use fcc_synth::yosys::YosysConfig;
@@ -329,9 +329,24 @@ fn run_all(args: &SynthArgs) -> anyhow::Result<()> {
             report
         }
     };
-    report.command = match &args.from_json {
-        Some(_) => args.command_after(&report.command),
-        None => args.command(),
+    let scan = args.hw.unchecked().scan;
+    let json_in = args.from_json.as_deref().unwrap_or(&args.json);
+    match &args.from_json {
+        Some(_) => {
+            let part = core_part(&mut report, scan, json_in)?;
+            part.command = args.command_after(&part.command);
+        }
+        None => report.command = args.command(),
+    }
+    let rewrites_its_input = args.from_json.as_deref().is_some_and(|f| {
+        f == args.json
+            || f.canonicalize()
+                .is_ok_and(|a| args.json.canonicalize().is_ok_and(|b| a == b))
+    });
+    let mut report = if rewrites_its_input {
+        report
+    } else {
+        with_the_other_core(report, &args.json)?
     };
     if let Some(path) = &args.coverage_json {
         let n = report
@@ -355,7 +370,7 @@ fn run_all(args: &SynthArgs) -> anyhow::Result<()> {
         eprintln!("golden-model times for {n} K from {}", path.display());
     }
     if let Some(path) = &args.cycles_json {
-        let n = report
+        let n = core_part(&mut report, scan, json_in)?
             .attach_cycles_json(&read(path)?)
             .map_err(anyhow::Error::msg)
             .with_context(|| format!("{}", path.display()))?;
@@ -364,6 +379,76 @@ fn run_all(args: &SynthArgs) -> anyhow::Result<()> {
     results::write_report(&report, &args.out, &args.json)?;
     eprintln!("wrote {} and {}", args.out.display(), args.json.display());
     Ok(())
+}
+
+/// The part of `report` (read from `file`) that belongs to the core of
+/// `scan`: a row-major core's report holds the column core's as its column part.
+fn core_part<'a>(
+    report: &'a mut Report,
+    scan: Scan,
+    file: &Path,
+) -> anyhow::Result<&'a mut Report> {
+    if scan == Scan::Column && report.base.scan == Scan::Row {
+        return report.column.as_deref_mut().ok_or_else(|| {
+            anyhow::anyhow!(
+                "{}: holds no column-streaming core's part (measure it first: \
+                 fcc synth --all --scan column)",
+                file.display()
+            )
+        });
+    }
+    if scan != report.base.scan {
+        anyhow::bail!(
+            "{}: a {} core's report, not the {} core's",
+            file.display(),
+            report.base.scan.as_str(),
+            scan.as_str()
+        );
+    }
+    Ok(report)
+}
+
+/// The report to write for `report` (measured, or read from another file),
+/// given what `json` holds:
+/// each core's `--all` run replaces its own part of the document and keeps
+/// the other core's. A column core's report goes into a row-major core's
+/// report there as its column part; a row-major core's report takes the
+/// column part the file held. A file that is not a report is refused, not
+/// overwritten.
+fn with_the_other_core(report: Report, json: &Path) -> anyhow::Result<Report> {
+    if !json.is_file() {
+        return Ok(report);
+    }
+    let previous = Report::from_json(&read(json)?)
+        .map_err(anyhow::Error::msg)
+        .with_context(|| {
+            format!(
+                "{}: not a results report, so it is not replaced (pass another --json)",
+                json.display()
+            )
+        })?;
+    Ok(match (report.base.scan, previous.base.scan) {
+        (Scan::Column, Scan::Row) => {
+            eprintln!(
+                "{}: the column-streaming core's part replaced, the row-major core's kept",
+                json.display()
+            );
+            let mut merged = previous;
+            merged.set_column(report).map_err(anyhow::Error::msg)?;
+            merged
+        }
+        (Scan::Row, Scan::Row) if report.column.is_none() && previous.column.is_some() => {
+            eprintln!(
+                "{}: the row-major core's part replaced, the column-streaming core's kept",
+                json.display()
+            );
+            Report {
+                column: previous.column,
+                ..report
+            }
+        }
+        _ => report,
+    })
 }
 
 #[cfg(test)]
@@ -416,6 +501,74 @@ mod tests {
             fcc_synth::yosys::script(&files, &results_cfg, &blocks)
         );
         assert!(synth.by_block, "the results document counts K = 7 by block");
+    }
+
+    fn empty_report(scan: Scan, command: &str) -> Report {
+        Report {
+            base: FccParams {
+                scan,
+                ..FccParams::default()
+            },
+            yosys_version: None,
+            command: command.into(),
+            rows: vec![],
+            coverage: None,
+            quality: None,
+            column: None,
+            stream_cycles: vec![],
+        }
+    }
+
+    #[test]
+    fn each_cores_run_replaces_its_part_of_the_document_and_keeps_the_others() {
+        let d = tempfile::tempdir().unwrap();
+        let json = d.path().join("results.json");
+        let md = d.path().join("results.md");
+        // No document yet: the measured report alone.
+        let col = empty_report(Scan::Column, "fcc synth --all --scan column");
+        let first = with_the_other_core(col.clone(), &json).unwrap();
+        assert_eq!(first, col);
+        // A row-major document takes the column core's as its part ...
+        let row = empty_report(Scan::Row, "fcc synth --all");
+        results::write_report(&row, &md, &json).unwrap();
+        let merged = with_the_other_core(col.clone(), &json).unwrap();
+        assert_eq!(merged.command, "fcc synth --all");
+        assert_eq!(merged.column.as_deref(), Some(&col));
+        // ... and keeps it when the row-major core is measured again.
+        results::write_report(&merged, &md, &json).unwrap();
+        let again =
+            with_the_other_core(empty_report(Scan::Row, "fcc synth --all --rows 32"), &json)
+                .unwrap();
+        assert_eq!(again.command, "fcc synth --all --rows 32");
+        assert_eq!(again.column.as_deref(), Some(&col));
+        // The part of each core, and a part that is not there.
+        let mut again = again;
+        assert_eq!(
+            core_part(&mut again, Scan::Column, &json).unwrap().command,
+            col.command
+        );
+        assert_eq!(
+            core_part(&mut again, Scan::Row, &json).unwrap().base.scan,
+            Scan::Row
+        );
+        let mut bare = empty_report(Scan::Row, "x");
+        let e = core_part(&mut bare, Scan::Column, &json)
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("fcc synth --all --scan column"), "{e}");
+        let mut alone = col.clone();
+        let e = core_part(&mut alone, Scan::Row, &json)
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("a column core's report"), "{e}");
+        // A file that is not a report is neither read as one nor replaced.
+        std::fs::write(&json, "not json").unwrap();
+        let e = format!("{:#}", with_the_other_core(col, &json).unwrap_err());
+        assert!(
+            e.contains("not a results report, so it is not replaced"),
+            "{e}"
+        );
+        assert_eq!(std::fs::read_to_string(&json).unwrap(), "not json");
     }
 
     #[test]

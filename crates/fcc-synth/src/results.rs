@@ -6,6 +6,7 @@
 //! `fcc bench --json`) are attached afterwards. [`render_markdown`] is a pure
 //! function of the report, so the document is regenerated, never edited.
 
+mod column;
 mod measurement;
 mod paper;
 mod render;
@@ -14,6 +15,7 @@ mod targets;
 #[cfg(test)]
 mod tests;
 
+pub use column::{render_column, ColumnTargets, StreamCycles, COLUMN_TARGETS};
 pub use measurement::{measure, yosys_config_for, MeasureOptions};
 pub use paper::{
     paper_row, PaperRow, PAPER_CLOCK_MHZ, PAPER_CPU_S_PER_FRAME, PAPER_FRAME_MS, PAPER_TABLE_I,

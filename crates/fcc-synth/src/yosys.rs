@@ -182,7 +182,11 @@ pub fn sta_script(top: &str) -> String {
     s
 }
 
-/// The first-level blocks in `files`: modules named without `__`, other than `top`.
+/// The blocks in `files`, other than `top`:
+/// - modules named without `__` (the row-major core's blocks, each its own module);
+/// - the top's `core` instance, its sub-blocks and theirs (`<top>__core`,
+///   `<top>__core__sets`, `<top>__core__sets__joins`: the column core, whose
+///   blocks are all inside one instance). Deeper modules stay inside their block.
 pub fn block_modules(files: &[PathBuf], top: &str) -> Result<Vec<String>, SynthError> {
     let mut blocks = vec![];
     for f in files {
@@ -193,7 +197,7 @@ pub fn block_modules(files: &[PathBuf], top: &str) -> Result<Vec<String>, SynthE
                     .chars()
                     .take_while(|c| c.is_ascii_alphanumeric() || *c == '_' || *c == '$')
                     .collect();
-                if !name.is_empty() && name != top && !name.contains("__") {
+                if !name.is_empty() && name != top && is_block(&block_name(&name, top)) {
                     blocks.push(name);
                 }
             }
@@ -204,6 +208,18 @@ pub fn block_modules(files: &[PathBuf], top: &str) -> Result<Vec<String>, SynthE
     Ok(blocks)
 }
 
+/// Whether a module (named without the configuration suffix) is a block of [`block_modules`].
+fn is_block(name: &str) -> bool {
+    match name.strip_prefix(&format!("{}__{CORE_INSTANCE}", fcc_rtl::TOP_NAME)) {
+        Some("") => true,
+        Some(below) => below.starts_with("__") && below.matches("__").count() <= 2,
+        None => !name.contains("__"),
+    }
+}
+
+/// The instance of the top that holds a core's blocks when they are not modules of their own.
+const CORE_INSTANCE: &str = "core";
+
 /// A block's name without the configuration suffix its top `top` carries
 /// (`fcc_intra_k7_1b2c3d4e` -> `fcc_intra`), so reports name blocks the same
 /// for every configuration.
@@ -213,6 +229,17 @@ pub fn block_name(module: &str, top: &str) -> String {
         return module.to_string();
     }
     module.strip_suffix(suffix).unwrap_or(module).to_string()
+}
+
+/// How a report names a block of [`block_modules`]: [`block_name`], with a
+/// block inside the top's instances written as its instance path
+/// (`fcc_top__core__sets__joins` -> `core.sets.joins`).
+pub fn block_label(module: &str, top: &str) -> String {
+    let name = block_name(module, top);
+    match name.strip_prefix(&format!("{}__", fcc_rtl::TOP_NAME)) {
+        Some(path) => path.replace("__", "."),
+        None => name,
+    }
 }
 
 /// Start `program` with `args`, mapping a failure to start to [`SynthError::ToolMissing`].
@@ -378,7 +405,7 @@ pub fn synthesize(
                     tail: log_tail(),
                 })?
                 .into_iter()
-                .map(|(name, r)| (block_name(&name, &cfg.top), r))
+                .map(|(name, r)| (block_label(&name, &cfg.top), r))
                 .collect(),
         )
     } else {
@@ -494,6 +521,40 @@ mod tests {
             block_modules(&[f], "fcc_top").unwrap(),
             vec!["fcc_intra".to_string(), "fcc_window".to_string()]
         );
+    }
+
+    #[test]
+    fn the_column_cores_blocks_are_two_levels_below_its_core_instance() {
+        let d = tempfile::tempdir().unwrap();
+        let f = d.path().join("x.v");
+        let top = "fcc_top_k7_1b2c3d4e";
+        let text: String = [
+            "fcc_top",
+            "fcc_regs",
+            "fcc_regs__bus",
+            "fcc_top__flow",
+            "fcc_top__core",
+            "fcc_top__core__sets",
+            "fcc_top__core__sets__joins",
+            "fcc_top__core__sets__joins__min1",
+            "fcc_top__corex",
+        ]
+        .iter()
+        .map(|m| format!("module {m}_k7_1b2c3d4e(a);\nendmodule\n"))
+        .collect();
+        std::fs::write(&f, text).unwrap();
+        let mut labels: Vec<String> = block_modules(&[f], top)
+            .unwrap()
+            .iter()
+            .map(|m| block_label(m, top))
+            .collect();
+        labels.sort();
+        assert_eq!(
+            labels,
+            vec!["core", "core.sets", "core.sets.joins", "fcc_regs"],
+            "the blocks and how a report names them"
+        );
+        assert_eq!(block_label(top, top), "fcc_top");
     }
 
     #[test]

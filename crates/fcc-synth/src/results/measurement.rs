@@ -43,6 +43,8 @@ pub fn measure(
         rows: vec![],
         coverage: None,
         quality: None,
+        column: None,
+        stream_cycles: vec![],
     };
     if opts.fsizes.contains(&TARGETS.fsize) {
         report.base.fsize = TARGETS.fsize;

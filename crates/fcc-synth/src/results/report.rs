@@ -4,14 +4,14 @@
 use std::collections::BTreeMap;
 use std::path::Path;
 
-use fcc_params::FccParams;
+use fcc_params::{FccParams, Scan};
 use serde::{Deserialize, Serialize};
 
 use crate::routing::Routing;
 use crate::yosys::YosysRun;
 use crate::{io_err, Resources, SynthError, Timing};
 
-use super::{render_markdown, PAPER_CLOCK_MHZ};
+use super::{render_markdown, StreamCycles, PAPER_CLOCK_MHZ};
 
 /// Frame time and rate at one clock.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -187,6 +187,14 @@ pub struct Report {
     /// (`bench/quality.py`); `None` until attached.
     #[serde(default)]
     pub quality: Option<Quality>,
+    /// The column-streaming core's report (`fcc synth --all --scan column`),
+    /// rendered as a section beside these rows; `None` until measured.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub column: Option<Box<Report>>,
+    /// A column core's report: its cycles and record latency (`fcc cycles
+    /// --scan column --json`); empty until attached.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub stream_cycles: Vec<StreamCycles>,
 }
 
 /// The summary `bench/quality.py --json` writes (docs/quality.json).
@@ -387,6 +395,9 @@ impl Report {
     /// Attach the cycle counts of a JSON array of [`CycleInput`]. Returns how
     /// many rows got one; a line whose K has no row is an error.
     pub fn attach_cycles_json(&mut self, text: &str) -> Result<usize, String> {
+        if self.base.scan == Scan::Column {
+            return self.attach_stream_cycles_json(text);
+        }
         let lines: Vec<CycleInput> = serde_json::from_str(text).map_err(|e| {
             format!("not a JSON array of {{fsize, corpus, frames, cycles_per_frame, max_cycles_per_frame, latency_cycles}}: {e}")
         })?;
@@ -412,6 +423,43 @@ impl Report {
             }
         }
         Ok(lines.len())
+    }
+
+    /// A column core's report: attach the JSON array of [`StreamCycles`]
+    /// `fcc cycles --scan column --json` writes, replacing what the report
+    /// held for the same K and corpus.
+    fn attach_stream_cycles_json(&mut self, text: &str) -> Result<usize, String> {
+        let lines: Vec<StreamCycles> = serde_json::from_str(text).map_err(|e| {
+            format!("not the JSON of `fcc cycles --scan column` (an array of {{fsize, corpus, frames, rows, pixels, cycles_per_pixel, ...}}): {e}")
+        })?;
+        for l in &lines {
+            if !self.rows.iter().any(|r| r.fsize == l.fsize) {
+                return Err(format!(
+                    "cycles for K = {}, but the report has no such row",
+                    l.fsize
+                ));
+            }
+            self.stream_cycles
+                .retain(|m| (m.fsize, &m.corpus) != (l.fsize, &l.corpus));
+            self.stream_cycles.push(l.clone());
+        }
+        self.stream_cycles
+            .sort_by(|a, b| (a.fsize, &a.corpus).cmp(&(b.fsize, &b.corpus)));
+        Ok(lines.len())
+    }
+
+    /// Put the column core's report `col` into this row-major core's report
+    /// (replacing the one it held). Either report's other core is refused.
+    pub fn set_column(&mut self, col: Report) -> Result<(), String> {
+        if self.base.scan != Scan::Row || col.base.scan != Scan::Column {
+            return Err(format!(
+                "a {} core's report cannot take a {} core's as its column part",
+                self.base.scan.as_str(),
+                col.base.scan.as_str()
+            ));
+        }
+        self.column = Some(Box::new(col));
+        Ok(())
     }
 
     /// The parameters of the row of `fsize`.

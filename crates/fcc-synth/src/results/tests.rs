@@ -56,6 +56,8 @@ fn report(rows: Vec<ResultRow>) -> Report {
         rows,
         coverage: None,
         quality: None,
+        column: None,
+        stream_cycles: vec![],
     }
 }
 
@@ -446,4 +448,111 @@ fn quality_table_rendered_and_kept_through_json() {
         .attach_quality_json(&QUALITY.replace("\"held_out\"", "\"x\""))
         .unwrap_err();
     assert!(e.contains("no held-out row"), "{e}");
+}
+
+fn column_report(rows: Vec<ResultRow>) -> Report {
+    let mut r = report(rows);
+    r.base.scan = fcc_params::Scan::Column;
+    r.base.bridge = Some(16);
+    r.base.ring_reach = Some(16);
+    r.command = "fcc synth --all --scan column --bridge 16 --ring-reach 16".into();
+    r
+}
+
+fn stream_cycles(k: usize, corpus: &str, cycles_per_pixel: f64, latency_max: u64) -> String {
+    format!(
+        r#"{{"fsize": {k}, "corpus": "{corpus}", "frames": 4, "rows": 64, "pixels": 131072,
+            "label_bits": 13, "cycles_per_pixel": {cycles_per_pixel}, "records": 900,
+            "latency_median": 40, "latency_99": 60, "latency_max": {latency_max},
+            "end_records": 30, "end_latency_max": 200, "labels_in_use_max": 700,
+            "held_cycles": 0}}"#
+    )
+}
+
+#[test]
+fn the_column_core_is_a_section_beside_the_row_major_cores_rows() {
+    let mut rows = report(vec![row(7, resources(8_000, 9_000, 71, 71, 0), 2.9)]);
+    let mut col = column_report(vec![row(7, resources(9_600, 30_000, 71, 20, 4), 3.2)]);
+    let n = col
+        .attach_cycles_json(&format!(
+            "[{}]",
+            stream_cycles(7, SYNTHETIC_CORPUS, 1.04, 80)
+        ))
+        .unwrap();
+    assert_eq!(n, 1);
+    rows.set_column(col.clone()).unwrap();
+    let md = render_markdown(&rows);
+    assert!(md.contains("## The column-streaming core"), "{md}");
+    assert!(md.contains("bridge 16, ring reach 16"), "{md}");
+    assert!(
+        md.contains("| 7 | 9,600 (8,000) | 30,000 (9,000) | 71 (71) | 22 (71) | 3.200 (2.900) |"),
+        "the row-major core's figures beside the column core's:\n{md}"
+    );
+    for line in [
+        "| Slice LUTs | row-major x 1.25 | 9,600 (x 1.20) | met |",
+        "| BRAM (36 eq.) | 24 | 22 | met |",
+        "| DSP48E1 | row-major's | 71 | met |",
+        "| pre-route path (ns) | 3.0 | 3.200 | **missed** |",
+        "| input cycles / pixel (synthetic) | 1.05 | 1.040 | met |",
+        "| record latency, largest (synthetic) | one column time (R cycles) | 80 cycles (R = 64) | **missed** |",
+        "| 7 | synthetic | 4 | 1.040 | 900 | 40 / 60 / 80 | 64 | 30, 200 | 13 | 700 | 0 |",
+    ] {
+        assert!(md.contains(line), "missing `{line}`:\n{md}");
+    }
+    // The row-major core's own sections are unchanged by it.
+    assert!(md.starts_with("# FCC hardware results\n"));
+    assert_eq!(
+        md.split("## The column-streaming core").next().unwrap(),
+        render_markdown(&report(vec![row(
+            7,
+            resources(8_000, 9_000, 71, 71, 0),
+            2.9
+        )])) + "\n"
+    );
+    // Alone, the column core's report is its section without the brackets.
+    let alone = render_markdown(&col);
+    assert!(alone.starts_with("# FCC hardware results: the column-streaming core"));
+    assert!(
+        alone.contains("| 7 | 9,600 | 30,000 | 71 | 22 | 3.200 |"),
+        "{alone}"
+    );
+    assert!(
+        alone.contains("| Slice LUTs | row-major x 1.25 | 9,600 | – |"),
+        "{alone}"
+    );
+    // Through JSON and back.
+    assert_eq!(
+        Report::from_json(&serde_json::to_string(&rows).unwrap()).unwrap(),
+        rows
+    );
+}
+
+#[test]
+fn column_cycles_replace_their_k_and_corpus_and_refuse_unknown_rows() {
+    let mut col = column_report(vec![row(7, resources(1, 1, 1, 1, 0), 3.0)]);
+    col.attach_cycles_json(&format!("[{}]", stream_cycles(7, "a", 1.5, 10)))
+        .unwrap();
+    col.attach_cycles_json(&format!(
+        "[{}, {}]",
+        stream_cycles(7, "a", 1.2, 10),
+        stream_cycles(7, "b", 1.1, 10)
+    ))
+    .unwrap();
+    let got: Vec<(&str, f64)> = col
+        .stream_cycles
+        .iter()
+        .map(|m| (m.corpus.as_str(), m.cycles_per_pixel))
+        .collect();
+    assert_eq!(got, vec![("a", 1.2), ("b", 1.1)]);
+    let e = col
+        .attach_cycles_json(&format!("[{}]", stream_cycles(9, "a", 1.0, 1)))
+        .unwrap_err();
+    assert!(e.contains("K = 9"), "{e}");
+    let e = col.attach_cycles_json("[{\"fsize\": 7}]").unwrap_err();
+    assert!(e.contains("fcc cycles --scan column"), "{e}");
+    // Only a row-major core's report takes a column core's as its part.
+    let e = col.clone().set_column(col.clone()).unwrap_err();
+    assert!(e.contains("column core's report cannot take"), "{e}");
+    let row_report = report(vec![]);
+    assert!(report(vec![]).set_column(row_report).is_err());
 }
