@@ -19,6 +19,7 @@ use fcc_pixel::record::{FrameEnd, HwRecord, Item};
 use fcc_sim::VirtualBoard;
 
 use crate::cmd_lidar::{run_cluster_on, ClusterLidarArgs, Hardware};
+use crate::model_args::ModelArgs;
 
 #[derive(Subcommand, Debug)]
 pub enum BoardCommand {
@@ -116,24 +117,74 @@ fn check_model_for(args: &BoardRunArgs, build: &FccParams) -> anyhow::Result<Clu
             }
         }
         Scan::Column => {
-            let most = fcc_rtl::regmap::OPEN_LIMIT_MAX;
-            match m.open_limit {
-                Some(n) if n > most => bail!(
-                    "--open-limit {n}: the column core holds at most {most} open clusters (its record slots); give 1 ..= {most}"
-                ),
-                Some(_) => {}
-                None => m.open_limit = Some(most),
-            }
-            if cluster.min_points > 0 {
-                bail!(
-                    "the column core sends a record for every cluster: drop --min-points {}",
-                    cluster.min_points
-                );
-            }
+            column_model(&mut cluster.model, cluster.min_points)?;
             cluster.stream = true;
         }
     }
     Ok(cluster)
+}
+
+/// The golden stream beside the column core: its open limit at most what
+/// the core's record slots hold (511, and that when none is given: the
+/// golden stream's "no limit" is more than the core has); no
+/// `--min-points` (the core sends a record for every cluster).
+fn column_model(model: &mut ModelArgs, min_points: usize) -> anyhow::Result<()> {
+    let most = fcc_rtl::regmap::OPEN_LIMIT_MAX;
+    match model.limits.open_limit {
+        Some(n) if n > most => bail!(
+            "--open-limit {n}: the column core holds at most {most} open clusters (its record slots); give 1 ..= {most}"
+        ),
+        Some(_) => {}
+        None => model.limits.open_limit = Some(most),
+    }
+    if min_points > 0 {
+        bail!("the column core sends a record for every cluster: drop --min-points {min_points}");
+    }
+    Ok(())
+}
+
+/// The column-streaming core of the virtual board (`fcc live --virtual`),
+/// with the model options `model` adjusted to it (as `fcc board run
+/// --virtual --scan column` does: the open limit, the build's label bits).
+pub fn virtual_column_core(
+    model: &ModelArgs,
+    min_points: usize,
+) -> anyhow::Result<(VirtualCore, ModelArgs)> {
+    let build = virtual_build(Scan::Column);
+    let mut model = model.clone();
+    column_model(&mut model, min_points)?;
+    if let Some(b) = model.label_bits.filter(|&b| b != build.label_bits) {
+        bail!(
+            "--label-bits {b} differs from the virtual board's column core's B = {}: drop it",
+            build.label_bits
+        );
+    }
+    model.label_bits = Some(build.label_bits);
+    model.params(1, 1)?;
+    let loaded = crate::cmd_sim::load_params(&build)?;
+    let (board, expect) = fcc_sim::virtual_board_with(&build, loaded)?;
+    let mut d = Driver::open(board, &expect).map_err(|e| anyhow::anyhow!("{e}"))?;
+    recover_if_busy(&mut d, "virtual board")?;
+    Ok((
+        VirtualCore(Runner::new(Target::Virtual(Box::new(d), build))),
+        model,
+    ))
+}
+
+/// A core on the virtual board for another command: [`Hardware`], and the
+/// summary of the frames it ran.
+pub struct VirtualCore(Runner);
+
+impl VirtualCore {
+    pub fn hardware(&self) -> &dyn Hardware {
+        &self.0
+    }
+
+    /// `PASS: N frames through the core, ...` (every frame that came back
+    /// was checked, or the command failed).
+    pub fn summary(&self) -> String {
+        self.0.summary()
+    }
 }
 
 /// The build's label bits B for the golden model: `--label-bits` must be B

@@ -868,12 +868,27 @@ fn table_rows(
 }
 
 /// One frame through the golden stream exactly as `fcc cluster --stream`
-/// takes it: the result and the rows it prints, in closing order.
+/// takes it: the result and the rows it prints, in closing order; with
+/// `hw`, the frame (its ground removed) through the hardware too, its
+/// records checked against the golden stream's.
 pub(crate) fn stream_rows(
     item: &Item,
     cfg: &PipelineConfig,
+    hw: Option<&dyn Hardware>,
 ) -> anyhow::Result<(PipelineResult, Vec<ClusterRow>)> {
     let s = stream_image(&item.image, cfg, |_| {}).with_context(|| item.name.clone())?;
+    if let Some(hw) = hw {
+        // The records the rows are made of are the hardware's (equal to the
+        // golden stream's, or `stream` failed).
+        let kept = item.image.without(&s.result.ground.mask);
+        hw.stream(
+            &item.name,
+            &kept,
+            &s.result,
+            &s.records,
+            s.stats.frame_end(),
+        )?;
+    }
     let (points, labels, _, _) = per_point(item, &s.result)?;
     let rows = table_rows(item, &s.result, &points, &labels, Some(s.records))?;
     Ok((s.result, rows))

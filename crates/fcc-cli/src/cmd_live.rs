@@ -90,6 +90,17 @@ pub struct LiveArgs {
     #[cfg(feature = "foxglove")]
     #[arg(long, value_name = "ADDR", num_args = 0..=1, default_missing_value = fcc_viz::DEFAULT_ADDR)]
     pub foxglove: Option<String>,
+    /// Cluster on the column-streaming core of the virtual board (its
+    /// Verilator model, built on first use, then cached, behind a model of
+    /// the AXI DMA and memory, as `fcc board run --virtual --scan column`)
+    /// instead of the golden stream: each frame's records are the core's,
+    /// every one checked against the golden stream's (a difference ends the
+    /// command). A frame goes to the core once its last packet has arrived:
+    /// the simple-mode AXI DMA ends each transfer with `tlast`, which the
+    /// core takes as the frame's end. The open limit is at most 511 (the
+    /// core's record slots; 511 when none is given); --min-points is refused.
+    #[arg(long = "virtual")]
+    pub virtual_board: bool,
 }
 
 /// The address to listen on: `spec` with the decoder's default port when
@@ -121,9 +132,19 @@ pub fn run_live(args: &LiveArgs) -> anyhow::Result<()> {
             args.idle_timeout
         );
     }
+    // The virtual board's column core, and the golden stream's options beside it.
+    let (core, model) = if args.virtual_board {
+        eprintln!("virtual board: the column-streaming core (K_max 11, up to 128 x 2048, 16-bit labels); each frame goes in once its last packet has arrived");
+        let (core, model) = crate::cmd_board::virtual_column_core(&args.model, args.min_points)?;
+        (Some(core), model)
+    } else {
+        (None, args.model.clone())
+    };
+    let hw = core.as_ref().map(|c| c.hardware());
     // The ground removals that fit a plane to the whole frame need the frame
-    // before any column can be cleared of its ground.
-    let column_path = args.ground.params(false)?.method == GroundMethod::None;
+    // before any column can be cleared of its ground; the core on the
+    // virtual board gets whole frames.
+    let column_path = args.ground.params(false)?.method == GroundMethod::None && hw.is_none();
     // Streamed as the sweep passes, a frame has records out before it is
     // known complete, so it cannot be dropped for missing columns.
     let streamed = column_path && args.image_origin == ImageOrigin::Sweep;
@@ -137,8 +158,8 @@ pub fn run_live(args: &LiveArgs) -> anyhow::Result<()> {
         ..SourceOptions::default()
     };
     let cfg = PipelineConfig {
-        params: args.model.params(1, 1)?,
-        mode: args.model.merge,
+        params: model.params(1, 1)?,
+        mode: model.merge,
         ground: args.ground.params(false)?,
         min_points: args.min_points,
     };
@@ -202,6 +223,11 @@ pub fn run_live(args: &LiveArgs) -> anyhow::Result<()> {
         };
         eprintln!(
             "column path: each record written as the stream closes it (--ground none), {wait}"
+        );
+    } else if hw.is_some() {
+        eprintln!(
+            "frame path: each frame through the column core when its last packet has arrived (ground removal `{}`), its records written when the core has sent them all",
+            cfg.ground.method
         );
     } else {
         eprintln!(
@@ -281,7 +307,7 @@ pub fn run_live(args: &LiveArgs) -> anyhow::Result<()> {
                 // The image moves into the item; the column times stay with `f`.
                 let image = std::mem::replace(&mut f.image, fcc_lidar::RangeImage::empty(0, 0));
                 let item = Item::image(name, image, Some(std::mem::take(&mut f.intensity)));
-                let (out, rows) = stream_rows(&item, &cfg)?;
+                let (out, rows) = stream_rows(&item, &cfg, hw)?;
                 write_json_lines(&mut stdout.lock(), &rows)?;
                 if !f.at_end {
                     let now = Instant::now();
@@ -365,6 +391,9 @@ pub fn run_live(args: &LiveArgs) -> anyhow::Result<()> {
     if let (Some(sink), Some(p)) = (mcap, &args.mcap) {
         sink.finish()?;
         eprintln!("wrote {} ({frames} frames)", p.display());
+    }
+    if let (Some(core), Ok(())) = (&core, &result) {
+        eprintln!("{}", core.summary());
     }
     result
 }

@@ -240,7 +240,8 @@ fn board_run_reads_the_build_from_fcc_params_json_and_refuses_garbage() {
 /// 64-beam captures through its K_max = 11, 128 x 2048, B = 16 build, every
 /// record and end beat checked by the command against the golden stream's;
 /// the records it writes (JSON lines on stdout) are those of
-/// `fcc cluster --stream` with the core's open limit.
+/// `fcc cluster --stream` with the core's open limit; and the capture's
+/// packets replayed to `fcc live --virtual` give the same lines.
 #[test]
 fn ouster_captures_on_the_virtual_column_core_equal_the_golden_stream() {
     let data = lidar_data();
@@ -305,10 +306,51 @@ fn ouster_captures_on_the_virtual_column_core_equal_the_golden_stream() {
             panic!("{pcap}: record line {n}: expected {b} != got {a}");
         }
         assert_eq!(hw.lines().count(), gold.lines().count(), "{pcap}");
+        // The capture's packets to `fcc live --virtual`: the same records.
+        let stem = Path::new(pcap)
+            .file_stem()
+            .and_then(|n| n.to_str())
+            .unwrap();
+        let mut live = vec![
+            "--virtual",
+            "--meta",
+            s(&meta),
+            "--name",
+            stem,
+            "--idle-timeout",
+            "1.5",
+        ];
+        live.extend(extra);
+        let (o, err) = fcc_testkit::live::live_on_replay(
+            env!("CARGO_BIN_EXE_fcc"),
+            &input,
+            &live,
+            &["--meta", s(&meta)],
+        );
+        assert!(o.status.success(), "{pcap}: {err}");
+        for says in [
+            "frame path: each frame through the column core",
+            "records equal to the golden stream's",
+            "PASS: 1 frame through the core, every record equal",
+            "live: 1 frames",
+        ] {
+            assert!(err.contains(says), "{pcap}: no `{says}` in {err}");
+        }
+        let live = String::from_utf8_lossy(&o.stdout);
+        if let Some((n, (a, b))) = live
+            .lines()
+            .zip(gold.lines())
+            .enumerate()
+            .find(|(_, (a, b))| a != b)
+        {
+            panic!("{pcap}: fcc live --virtual, record line {n}: expected {b} != got {a}");
+        }
+        assert_eq!(live.lines().count(), gold.lines().count(), "{pcap}: {err}");
     }
 }
 
-/// What the column core cannot do is refused before a model is built.
+/// What the column core cannot do is refused before a model is built, by
+/// `fcc board run` and `fcc live`.
 #[test]
 fn column_core_refuses_open_limits_past_its_slots_and_min_points() {
     let data = lidar_data();
@@ -327,6 +369,13 @@ fn column_core_refuses_open_limits_past_its_slots_and_min_points() {
         assert!(!o.status.success());
         assert!(text(&o).contains(says), "{}", text(&o));
         assert!(!text(&o).contains("building"), "{}", text(&o));
+        // As `fcc live --virtual` refuses them, before it listens.
+        let mut args = vec!["live", "--virtual", "--udp", "127.0.0.1:0"];
+        args.extend(extra);
+        let o = fcc(&args);
+        assert!(!o.status.success());
+        assert!(text(&o).contains(says), "{}", text(&o));
+        assert!(!text(&o).contains("listening"), "{}", text(&o));
     }
     let o = fcc(&[
         "board",

@@ -6,108 +6,26 @@
 //! offline; memory stays flat over hundreds of frames. Every child is
 //! bounded in time and killed on failure.
 
+use fcc_testkit::live::{Guard, LIMIT};
 use fcc_testkit::{lidar_data, s};
-use std::io::{BufRead, BufReader, Read};
+use std::io::Read;
 use std::path::Path;
-use std::process::{Child, Command, Output, Stdio};
+use std::process::{Child, Command, Output};
 use std::time::{Duration, Instant};
 
 const FCC: &str = env!("CARGO_BIN_EXE_fcc");
-/// No child runs longer than this.
-const LIMIT: Duration = Duration::from_secs(120);
 
 fn fcc(args: &[&str]) -> Output {
     fcc_testkit::run_in(FCC, None, args)
 }
 
-/// A child that is killed when dropped (a failed assertion included).
-struct Guard(Option<Child>);
-
-impl Drop for Guard {
-    fn drop(&mut self) {
-        if let Some(c) = &mut self.0 {
-            let _ = c.kill();
-            let _ = c.wait();
-        }
-    }
-}
-
-impl Guard {
-    /// Wait for the child to end within `LIMIT`, then kill it; its output.
-    fn wait(mut self) -> Output {
-        let mut c = self.0.take().expect("a child");
-        let start = Instant::now();
-        // Read both pipes on threads so a full pipe never blocks the child.
-        let mut out = c.stdout.take().expect("piped");
-        let mut err = c.stderr.take().expect("piped");
-        let o = std::thread::spawn(move || {
-            let mut v = Vec::new();
-            let _ = out.read_to_end(&mut v);
-            v
-        });
-        let e = std::thread::spawn(move || {
-            let mut v = Vec::new();
-            let _ = err.read_to_end(&mut v);
-            v
-        });
-        let status = loop {
-            if let Some(st) = c.try_wait().expect("wait") {
-                break st;
-            }
-            if start.elapsed() > LIMIT {
-                let _ = c.kill();
-                break c.wait().expect("wait");
-            }
-            std::thread::sleep(Duration::from_millis(20));
-        };
-        Output {
-            status,
-            stdout: o.join().unwrap_or_default(),
-            stderr: e.join().unwrap_or_default(),
-        }
-    }
-}
-
-/// Start `fcc live` on a port of the system's choice; the child and the
-/// port, read from its first line on stderr.
 fn start_live(args: &[&str]) -> (Guard, u16, Vec<u8>) {
-    let mut c = Command::new(FCC)
-        .arg("live")
-        .args(["--udp", "127.0.0.1:0"])
-        .args(args)
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("start fcc live");
-    let mut err = BufReader::new(c.stderr.take().expect("piped"));
-    let mut line = String::new();
-    err.read_line(&mut line).expect("read stderr");
-    let mut rest = Vec::new();
-    let port = line
-        .split_whitespace()
-        .find_map(|w| w.rsplit_once(':').and_then(|(_, p)| p.parse::<u16>().ok()))
-        .unwrap_or_else(|| {
-            let _ = c.kill();
-            let _ = err.read_to_end(&mut rest);
-            panic!("no port in `{line}` {}", String::from_utf8_lossy(&rest))
-        });
-    // Give stderr back to the guard, with what was read past the line.
-    let mut first = line.into_bytes();
-    first.extend_from_slice(err.buffer());
-    c.stderr = Some(err.into_inner());
-    (Guard(Some(c)), port, first)
+    fcc_testkit::live::start_live(FCC, args)
 }
 
 /// Replay `capture` to `fcc live ARGS` and return live's output.
 fn live_on_replay(capture: &Path, args: &[&str]) -> (Output, String) {
-    let (live, port, first) = start_live(args);
-    let to = format!("127.0.0.1:{port}");
-    // Half the recorded rate: no loss however busy the machine.
-    let r = fcc(&["replay", s(capture), "--udp", &to, "--rate", "0.5"]);
-    assert!(r.status.success(), "{}", String::from_utf8_lossy(&r.stderr));
-    let out = live.wait();
-    let err = String::from_utf8_lossy(&first).into_owned() + &String::from_utf8_lossy(&out.stderr);
-    (out, err)
+    fcc_testkit::live::live_on_replay(FCC, capture, args, &[])
 }
 
 /// Live's stdout holds offline's JSON lines, line for line (the first

@@ -5,6 +5,8 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
+pub mod live;
+
 /// Run the binary `exe` with `args`, in `dir` if given (pass
 /// `env!("CARGO_BIN_EXE_fcc")` from the test).
 pub fn run_in(exe: &str, dir: Option<&Path>, args: &[&str]) -> Output {
