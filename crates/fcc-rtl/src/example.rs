@@ -47,22 +47,16 @@ pub fn c_example(p: &FccParams, board: Board) -> String {
     };
     let mut s = file_header(p, "//");
     s.push_str(&format!("// Board: {} ({})\n", b.name, b.part));
-    if p.scan == fcc_params::Scan::Column {
-        // Not a label example that compiles and misreads records.
-        s.push_str(
-            "//\n\
-             // This example reads a row-major core's label image; this build is the\n\
-             // column-streaming core (--scan column), which sends one record per\n\
-             // cluster and an end beat per frame (docs/spec.md, section 9.4). Its\n\
-             // bare-metal example and its driver are still to be written\n\
-             // (docs/column-core.md); `fcc sim --rtl DIR` runs this build in Verilator.\n\
-             #error \"fcc: no bare-metal example for the column-streaming core yet\"\n",
-        );
-        return s;
-    }
+    let column = p.scan == fcc_params::Scan::Column;
+    let out_words = fcc_pixel::record::frame_beats_max(p.pixels());
     s.push_str(&crate::vivado::fill_public(
-        EXAMPLE,
+        if column { COLUMN_EXAMPLE } else { EXAMPLE },
         &[
+            ("HEAD", HEAD.to_string()),
+            ("QUANTIZE", QUANTIZE.to_string()),
+            ("OPEN", OPEN.to_string()),
+            ("WAIT", WAIT.to_string()),
+            ("OUT_WORDS", out_words.to_string()),
             ("TITLE", b.title.to_string()),
             ("BD", b.bd_script.to_string()),
             ("ADDR_NOTE", addr_note.to_string()),
@@ -76,30 +70,14 @@ pub fn c_example(p: &FccParams, board: Board) -> String {
                 format!("0x{:X}u", (1u64 << LABEL_SLOT_BITS) - 1),
             ),
             ("RUN_WRITES", RUN_WRITES.to_string()),
+            ("STREAM_WRITES", STREAM_WRITES.to_string()),
         ],
     ));
     s
 }
 
-const EXAMPLE: &str = r#"//
-// Bare-metal example for the @TITLE@ block design (scripts/@BD@, exported
-// as an .xsa): sends one frame through the AXI DMA in simple mode, waits for
-// the core, and reads back the labels and the frame's status. C99, for a
-// Vitis standalone application; @ADDR_NOTE@.
-//
-// Build: add this file and fcc_regs.h (beside it, written by fcc gen from the
-// same parameters) to a standalone application on the exported platform.
-// The core's base address comes from xparameters.h (the cell is named
-// "fcc"); if the BSP names it differently, compile with -DFCC_BASEADDR=0x...
-// (the fcc segment in the block design's _map.txt). The DMA is found by
-// device ID (XPAR_AXIDMA_0_DEVICE_ID, or -DFCC_DMA_ID=...).
-//
-// The sequence: check ID and parameter hash; clear; enable the interrupt;
-// arm S2MM (labels) before MM2S (pixels); wait for STATUS.FRAME_DONE (the
-// level of the core's irq) and for both DMA channels; read the latched
-// status; clear FRAME_DONE.
-
-#include <math.h>
+/// The includes and the addresses of the core and the DMA.
+const HEAD: &str = r#"#include <math.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -119,30 +97,10 @@ const EXAMPLE: &str = r#"//
 #define FCC_DMA_ID XPAR_AXIDMA_0_DEVICE_ID
 #endif
 
-/* The frame this build takes (build constants of fcc_regs.h). */
-#define FCC_ROWS FCC_REG_ROWS_MAX_RESET
-#define FCC_COLS FCC_REG_COLS_MAX_RESET
-#define FCC_PIXELS (FCC_ROWS * FCC_COLS)
-#define FCC_LPB FCC_REG_LABELS_PER_BEAT_RESET
-#define FCC_OUT_WORDS ((FCC_PIXELS + FCC_LPB - 1u) / FCC_LPB)
-#define FCC_IN_BYTES (FCC_PIXELS * @PIXEL_BYTES@u)
-#define FCC_OUT_BYTES (FCC_OUT_WORDS * @PIXEL_BYTES@u)
-/* Q7.8: 1 m = 256; bit @VALID_BIT@ of an input word marks a pixel with a point
- * (fcc-pixel, the format the golden model and the drivers share). */
-#define FCC_Q_ONE @Q_ONE@
-#define FCC_VALID_BIT @VALID_BIT@u
-/* 16-bit fields: coordinates in an input word, labels in an output word. */
-#define FCC_SLOT_BITS @SLOT_BITS@u
-/* Polls before a frame is given up (each poll is one register read). */
-#define FCC_POLL_LIMIT 100000000u
+"#;
 
-static uint64_t fcc_in[FCC_PIXELS] __attribute__((aligned(@CACHE_LINE@)));
-static uint64_t fcc_out[FCC_OUT_WORDS] __attribute__((aligned(@CACHE_LINE@)));
-
-static uint32_t fcc_rd(uint32_t offset) { return Xil_In32((UINTPTR)FCC_BASEADDR + offset); }
-static void fcc_wr(uint32_t offset, uint32_t value) { Xil_Out32((UINTPTR)FCC_BASEADDR + offset, value); }
-
-/* One coordinate in metres to Q7.8, the golden model's rule:
+/// The golden model's quantisation and the input word.
+const QUANTIZE: &str = r#"/* One coordinate in metres to Q7.8, the golden model's rule:
  * sign(x) * floor(|x| * 256 + 0.5); 0 (no value) when x is not finite or the
  * result is outside [-32768, 32767]. */
 int fcc_quantize(double x, int16_t *q)
@@ -183,33 +141,10 @@ uint64_t fcc_pack_pixel(double x, double y, double z)
            ((uint64_t)(uint16_t)q[2] << (2u * FCC_SLOT_BITS)) | ((uint64_t)1 << FCC_VALID_BIT);
 }
 
-/* The label of pixel i (raster order) in the output buffer. */
-static uint32_t fcc_label(uint32_t i)
-{
-    return (uint32_t)(fcc_out[i / FCC_LPB] >> (FCC_SLOT_BITS * (i % FCC_LPB))) & @SLOT_MASK@;
-}
+"#;
 
-/* A demonstration frame: two short walls of points 10 m ahead, on the
- * first two rows, far enough apart to be two clusters. Replace it with a
- * sensor's range image (x, y, z per pixel, NaN for no return). */
-static void fcc_demo_frame(void)
-{
-    uint32_t i;
-    for (i = 0; i < FCC_PIXELS; i++) {
-        uint32_t r = i / FCC_COLS, c = i % FCC_COLS;
-        int wall = r < 2u && (c < 4u || (c >= 16u && c < 20u));
-        fcc_in[i] = wall ? fcc_pack_pixel(10.0, 0.05 * (double)c, 0.1 * (double)r) : 0;
-    }
-}
-
-int main(void)
-{
-    XAxiDma dma;
-    XAxiDma_Config *cfg;
-    uint32_t polls, status, i, labelled = 0;
-    uint64_t hash;
-
-    /* 1. The right core: ID and the parameter hash of this build. */
+/// Steps 1 to 3: the right core, the DMA, the interrupt.
+const OPEN: &str = r#"    /* 1. The right core: ID and the parameter hash of this build. */
     if (fcc_rd(FCC_REG_ID) != FCC_ID_MAGIC) {
         xil_printf("fcc: no FCC core at 0x%08x (ID 0x%08x)\r\n", (unsigned)FCC_BASEADDR,
                    (unsigned)fcc_rd(FCC_REG_ID));
@@ -237,21 +172,10 @@ int main(void)
     fcc_wr(FCC_REG_CONTROL, FCC_CONTROL_CLEAR_MASK);
     fcc_wr(FCC_REG_CONTROL, FCC_CONTROL_IRQ_ENABLE_MASK);
 
-    /* 4. Run parameters. */
-@RUN_WRITES@
-    /* 5. The frame, out of the data cache; the label buffer invalidated. */
-    fcc_demo_frame();
-    Xil_DCacheFlushRange((UINTPTR)fcc_in, FCC_IN_BYTES);
-    Xil_DCacheInvalidateRange((UINTPTR)fcc_out, FCC_OUT_BYTES);
+"#;
 
-    /* 6. Arm S2MM (labels) first, then start MM2S (pixels). */
-    if (XAxiDma_SimpleTransfer(&dma, (UINTPTR)fcc_out, FCC_OUT_BYTES, XAXIDMA_DEVICE_TO_DMA) != XST_SUCCESS ||
-        XAxiDma_SimpleTransfer(&dma, (UINTPTR)fcc_in, FCC_IN_BYTES, XAXIDMA_DMA_TO_DEVICE) != XST_SUCCESS) {
-        xil_printf("fcc: the DMA refused the transfer\r\n");
-        return 1;
-    }
-
-    /* 7. Wait for the frame: FRAME_DONE (irq) and both channels idle. */
+/// Step 7: the frame done and both channels idle, or a reset.
+const WAIT: &str = r#"    /* 7. Wait for the frame: FRAME_DONE (irq) and both channels idle. */
     for (polls = 0; polls < FCC_POLL_LIMIT; polls++) {
         status = fcc_rd(FCC_REG_STATUS);
         if ((status & FCC_STATUS_FRAME_DONE_MASK) && !XAxiDma_Busy(&dma, XAXIDMA_DEVICE_TO_DMA) &&
@@ -266,7 +190,90 @@ int main(void)
         fcc_wr(FCC_REG_CONTROL, FCC_CONTROL_SOFT_RESET_MASK);
         return 1;
     }
+"#;
+
+const EXAMPLE: &str = r#"//
+// Bare-metal example for the @TITLE@ block design (scripts/@BD@, exported
+// as an .xsa): sends one frame through the AXI DMA in simple mode, waits for
+// the core, and reads back the labels and the frame's status. C99, for a
+// Vitis standalone application; @ADDR_NOTE@.
+//
+// Build: add this file and fcc_regs.h (beside it, written by fcc gen from the
+// same parameters) to a standalone application on the exported platform.
+// The core's base address comes from xparameters.h (the cell is named
+// "fcc"); if the BSP names it differently, compile with -DFCC_BASEADDR=0x...
+// (the fcc segment in the block design's _map.txt). The DMA is found by
+// device ID (XPAR_AXIDMA_0_DEVICE_ID, or -DFCC_DMA_ID=...).
+//
+// The sequence: check ID and parameter hash; clear; enable the interrupt;
+// arm S2MM (labels) before MM2S (pixels); wait for STATUS.FRAME_DONE (the
+// level of the core's irq) and for both DMA channels; read the latched
+// status; clear FRAME_DONE.
+
+@HEAD@/* The frame this build takes (build constants of fcc_regs.h). */
+#define FCC_ROWS FCC_REG_ROWS_MAX_RESET
+#define FCC_COLS FCC_REG_COLS_MAX_RESET
+#define FCC_PIXELS (FCC_ROWS * FCC_COLS)
+#define FCC_LPB FCC_REG_LABELS_PER_BEAT_RESET
+#define FCC_OUT_WORDS ((FCC_PIXELS + FCC_LPB - 1u) / FCC_LPB)
+#define FCC_IN_BYTES (FCC_PIXELS * @PIXEL_BYTES@u)
+#define FCC_OUT_BYTES (FCC_OUT_WORDS * @PIXEL_BYTES@u)
+/* Q7.8: 1 m = 256; bit @VALID_BIT@ of an input word marks a pixel with a point
+ * (fcc-pixel, the format the golden model and the drivers share). */
+#define FCC_Q_ONE @Q_ONE@
+#define FCC_VALID_BIT @VALID_BIT@u
+/* 16-bit fields: coordinates in an input word, labels in an output word. */
+#define FCC_SLOT_BITS @SLOT_BITS@u
+/* Polls before a frame is given up (each poll is one register read). */
+#define FCC_POLL_LIMIT 100000000u
+
+static uint64_t fcc_in[FCC_PIXELS] __attribute__((aligned(@CACHE_LINE@)));
+static uint64_t fcc_out[FCC_OUT_WORDS] __attribute__((aligned(@CACHE_LINE@)));
+
+static uint32_t fcc_rd(uint32_t offset) { return Xil_In32((UINTPTR)FCC_BASEADDR + offset); }
+static void fcc_wr(uint32_t offset, uint32_t value) { Xil_Out32((UINTPTR)FCC_BASEADDR + offset, value); }
+
+@QUANTIZE@/* The label of pixel i (raster order) in the output buffer. */
+static uint32_t fcc_label(uint32_t i)
+{
+    return (uint32_t)(fcc_out[i / FCC_LPB] >> (FCC_SLOT_BITS * (i % FCC_LPB))) & @SLOT_MASK@;
+}
+
+/* A demonstration frame: two short walls of points 10 m ahead, on the
+ * first two rows, far enough apart to be two clusters. Replace it with a
+ * sensor's range image (x, y, z per pixel, NaN for no return). */
+static void fcc_demo_frame(void)
+{
+    uint32_t i;
+    for (i = 0; i < FCC_PIXELS; i++) {
+        uint32_t r = i / FCC_COLS, c = i % FCC_COLS;
+        int wall = r < 2u && (c < 4u || (c >= 16u && c < 20u));
+        fcc_in[i] = wall ? fcc_pack_pixel(10.0, 0.05 * (double)c, 0.1 * (double)r) : 0;
+    }
+}
+
+int main(void)
+{
+    XAxiDma dma;
+    XAxiDma_Config *cfg;
+    uint32_t polls, status, i, labelled = 0;
+    uint64_t hash;
+
+@OPEN@    /* 4. Run parameters. */
+@RUN_WRITES@
+    /* 5. The frame, out of the data cache; the label buffer invalidated. */
+    fcc_demo_frame();
+    Xil_DCacheFlushRange((UINTPTR)fcc_in, FCC_IN_BYTES);
     Xil_DCacheInvalidateRange((UINTPTR)fcc_out, FCC_OUT_BYTES);
+
+    /* 6. Arm S2MM (labels) first, then start MM2S (pixels). */
+    if (XAxiDma_SimpleTransfer(&dma, (UINTPTR)fcc_out, FCC_OUT_BYTES, XAXIDMA_DEVICE_TO_DMA) != XST_SUCCESS ||
+        XAxiDma_SimpleTransfer(&dma, (UINTPTR)fcc_in, FCC_IN_BYTES, XAXIDMA_DMA_TO_DEVICE) != XST_SUCCESS) {
+        xil_printf("fcc: the DMA refused the transfer\r\n");
+        return 1;
+    }
+
+@WAIT@    Xil_DCacheInvalidateRange((UINTPTR)fcc_out, FCC_OUT_BYTES);
 
     /* 8. The frame's latched status, then clear FRAME_DONE (and irq). */
     xil_printf("fcc: frame %u: %u clusters, %u provisional labels, %u unlabelled, flags 0x%x, %u joins, %u stalls\r\n",
@@ -280,6 +287,177 @@ int main(void)
         labelled += fcc_label(i) != 0u;
     }
     xil_printf("fcc: %u labelled pixels\r\n", (unsigned)labelled);
+    return 0;
+}
+"#;
+
+/// The stream limits of a column build, written after the run parameters
+/// (its power-on values here; each frame may take its own).
+const STREAM_WRITES: &str = r#"    /*    The stream's limits (docs/spec.md, section 9.1): bridge, ring reach
+     *    and open limit; here the build's power-on values. A refused value
+     *    keeps the old one and sets its ERROR bit. */
+    fcc_wr(FCC_REG_ERROR, FCC_ERROR_BRIDGE_MASK | FCC_ERROR_RING_REACH_MASK | FCC_ERROR_OPEN_LIMIT_MASK);
+    fcc_wr(FCC_REG_RUN_BRIDGE, FCC_REG_RUN_BRIDGE_RESET);
+    fcc_wr(FCC_REG_RUN_RING_REACH, FCC_REG_RUN_RING_REACH_RESET);
+    fcc_wr(FCC_REG_RUN_OPEN_LIMIT, FCC_REG_RUN_OPEN_LIMIT_RESET);
+    if (fcc_rd(FCC_REG_ERROR) != 0u) {
+        xil_printf("fcc: stream limits refused (ERROR 0x%03x)\r\n", (unsigned)fcc_rd(FCC_REG_ERROR));
+        return 1;
+    }
+"#;
+
+/// The column-streaming core's example: the frame in column order, one
+/// record per cluster and the frame's end beat back.
+const COLUMN_EXAMPLE: &str = r#"//
+// Bare-metal example for the @TITLE@ block design (scripts/@BD@, exported
+// as an .xsa) with the column-streaming core (fcc gen --scan column): sends
+// one frame in column order through the AXI DMA in simple mode, waits for
+// the core, and reads back one record per cluster and the frame's end beat
+// (docs/spec.md, section 9.4). C99, for a Vitis standalone application;
+// @ADDR_NOTE@.
+//
+// Build: add this file and fcc_regs.h (beside it, written by fcc gen from the
+// same parameters) to a standalone application on the exported platform.
+// The core's base address comes from xparameters.h (the cell is named
+// "fcc"); if the BSP names it differently, compile with -DFCC_BASEADDR=0x...
+// (the fcc segment in the block design's _map.txt). The DMA is found by
+// device ID (XPAR_AXIDMA_0_DEVICE_ID, or -DFCC_DMA_ID=...).
+//
+// The sequence: check ID and parameter hash; clear; enable the interrupt;
+// write the run parameters and the stream's limits; arm S2MM (records)
+// before MM2S (pixels); wait for STATUS.FRAME_DONE (the level of the core's
+// irq) and for both DMA channels; read the records (S2MM's length register
+// says how many bytes came: the records, then the end beat); read the
+// latched status; clear FRAME_DONE. The S2MM transfer is the whole frame's:
+// the simple-mode DMA ends each transfer at tlast, which the core raises on
+// the end beat only.
+
+@HEAD@/* The frame this build takes (build constants of fcc_regs.h). */
+#define FCC_ROWS FCC_REG_ROWS_MAX_RESET
+#define FCC_COLS FCC_REG_COLS_MAX_RESET
+#define FCC_PIXELS (FCC_ROWS * FCC_COLS)
+/* The most beats a frame's records take: a record (FCC_RECORD_WORDS beats)
+ * per pixel at most, then the end beat. */
+#define FCC_OUT_WORDS @OUT_WORDS@u
+#define FCC_IN_BYTES (FCC_PIXELS * @PIXEL_BYTES@u)
+#define FCC_OUT_BYTES (FCC_OUT_WORDS * @PIXEL_BYTES@u)
+/* Q7.8: 1 m = 256; bit @VALID_BIT@ of an input word marks a pixel with a point
+ * (fcc-pixel, the format the golden model and the drivers share). */
+#define FCC_Q_ONE @Q_ONE@
+#define FCC_VALID_BIT @VALID_BIT@u
+/* 16-bit fields: coordinates in an input word. */
+#define FCC_SLOT_BITS @SLOT_BITS@u
+/* Polls before a frame is given up (each poll is one register read). */
+#define FCC_POLL_LIMIT 100000000u
+
+static uint64_t fcc_in[FCC_PIXELS] __attribute__((aligned(@CACHE_LINE@)));
+static uint64_t fcc_out[FCC_OUT_WORDS] __attribute__((aligned(@CACHE_LINE@)));
+
+static uint32_t fcc_rd(uint32_t offset) { return Xil_In32((UINTPTR)FCC_BASEADDR + offset); }
+static void fcc_wr(uint32_t offset, uint32_t value) { Xil_Out32((UINTPTR)FCC_BASEADDR + offset, value); }
+
+@QUANTIZE@/* Bits shift .. shift + bits - 1 of w, two's complement when sign. */
+static int64_t fcc_bits(uint64_t w, unsigned shift, unsigned bits, unsigned sign)
+{
+    uint64_t m = bits >= 64u ? ~(uint64_t)0 : (((uint64_t)1 << bits) - 1u);
+    uint64_t v = (w >> shift) & m;
+    if (sign != 0u && bits < 64u && ((v >> (bits - 1u)) & 1u) != 0u) {
+        v |= ~m;
+    }
+    return (int64_t)v;
+}
+
+/* Field F of the record at r, by its layout in fcc_regs.h. */
+#define FCC_REC(r, F)                                                                          \
+    fcc_bits((r)[FCC_REC_##F##_WORD], FCC_REC_##F##_SHIFT, FCC_REC_##F##_BITS,                 \
+             FCC_REC_##F##_SIGNED)
+#define FCC_END(w, F) fcc_bits((w), FCC_END_##F##_SHIFT, FCC_END_##F##_BITS, 0u)
+
+/* The frame's output as the core sent it, `beats` 64-bit words: a record
+ * of FCC_RECORD_WORDS beats per cluster in closing order, then the end
+ * beat. Prints each record (its box in Q7.8, 1/256 m) and the end beat;
+ * returns the number of records, or -1 when the words are not one frame's. */
+int fcc_read_records(const uint64_t *w, uint32_t beats)
+{
+    uint32_t n, i;
+    int64_t counted;
+    if (beats == 0u || (beats - 1u) % FCC_RECORD_WORDS != 0u) {
+        xil_printf("fcc: %u beats: not records of %u beats and an end beat\r\n", (unsigned)beats,
+                   (unsigned)FCC_RECORD_WORDS);
+        return -1;
+    }
+    n = (beats - 1u) / FCC_RECORD_WORDS;
+    for (i = 0; i < n; i++) {
+        const uint64_t *r = w + (size_t)i * FCC_RECORD_WORDS;
+        xil_printf("fcc: cluster %u: %u points, columns %u..%u, closed at %u, rows %u..%u, "
+                   "x %d..%d, y %d..%d, z %d..%d\r\n",
+                   (unsigned)FCC_REC(r, ID), (unsigned)FCC_REC(r, POINTS),
+                   (unsigned)FCC_REC(r, FIRST_COL), (unsigned)FCC_REC(r, LAST_COL),
+                   (unsigned)FCC_REC(r, CLOSED_COL), (unsigned)FCC_REC(r, FIRST_ROW),
+                   (unsigned)FCC_REC(r, LAST_ROW), (int)FCC_REC(r, MIN_X), (int)FCC_REC(r, MAX_X),
+                   (int)FCC_REC(r, MIN_Y), (int)FCC_REC(r, MAX_Y), (int)FCC_REC(r, MIN_Z),
+                   (int)FCC_REC(r, MAX_Z));
+    }
+    counted = FCC_END(w[beats - 1u], RECORDS);
+    xil_printf("fcc: end of frame: %u records, overflow %u, frame error %u\r\n", (unsigned)counted,
+               (unsigned)FCC_END(w[beats - 1u], OVERFLOW),
+               (unsigned)FCC_END(w[beats - 1u], FRAME_ERROR));
+    if (counted != (int64_t)n) {
+        xil_printf("fcc: the end beat counts %u records, %u came\r\n", (unsigned)counted, (unsigned)n);
+        return -1;
+    }
+    return (int)n;
+}
+
+/* A demonstration frame: two short walls of points 10 m ahead, on the
+ * first two rows, far enough apart to be two clusters, in column order
+ * (pixel (r, c) at index c * FCC_ROWS + r). Replace it with a sensor's
+ * columns (x, y, z per pixel, NaN for no return). */
+static void fcc_demo_frame(void)
+{
+    uint32_t i;
+    for (i = 0; i < FCC_PIXELS; i++) {
+        uint32_t c = i / FCC_ROWS, r = i % FCC_ROWS;
+        int wall = r < 2u && (c < 4u || (c >= 16u && c < 20u));
+        fcc_in[i] = wall ? fcc_pack_pixel(10.0, 0.05 * (double)c, 0.1 * (double)r) : 0;
+    }
+}
+
+int main(void)
+{
+    XAxiDma dma;
+    XAxiDma_Config *cfg;
+    uint32_t polls, status, received;
+    uint64_t hash;
+
+@OPEN@    /* 4. Run parameters and the stream's limits. */
+@RUN_WRITES@@STREAM_WRITES@
+    /* 5. The frame, out of the data cache; the record buffer invalidated. */
+    fcc_demo_frame();
+    Xil_DCacheFlushRange((UINTPTR)fcc_in, FCC_IN_BYTES);
+    Xil_DCacheInvalidateRange((UINTPTR)fcc_out, FCC_OUT_BYTES);
+
+    /* 6. Arm S2MM (records) first, then start MM2S (pixels). */
+    if (XAxiDma_SimpleTransfer(&dma, (UINTPTR)fcc_out, FCC_OUT_BYTES, XAXIDMA_DEVICE_TO_DMA) != XST_SUCCESS ||
+        XAxiDma_SimpleTransfer(&dma, (UINTPTR)fcc_in, FCC_IN_BYTES, XAXIDMA_DMA_TO_DEVICE) != XST_SUCCESS) {
+        xil_printf("fcc: the DMA refused the transfer\r\n");
+        return 1;
+    }
+
+@WAIT@    /* 8. The records: S2MM's length register holds the bytes received. */
+    received = XAxiDma_ReadReg(dma.RegBase, XAXIDMA_RX_OFFSET + XAXIDMA_BUFFLEN_OFFSET);
+    Xil_DCacheInvalidateRange((UINTPTR)fcc_out, FCC_OUT_BYTES);
+    if (received % @PIXEL_BYTES@u != 0u || fcc_read_records(fcc_out, received / @PIXEL_BYTES@u) < 0) {
+        xil_printf("fcc: %u bytes received are not one frame's records\r\n", (unsigned)received);
+        return 1;
+    }
+
+    /* 9. The frame's latched status, then clear FRAME_DONE (and irq). */
+    xil_printf("fcc: frame %u: %u clusters, %u labels in use at most, flags 0x%x, %u joins, %u cycles held\r\n",
+               (unsigned)fcc_rd(FCC_REG_FRAME_COUNT), (unsigned)fcc_rd(FCC_REG_CLUSTERS),
+               (unsigned)fcc_rd(FCC_REG_PROVISIONAL), (unsigned)fcc_rd(FCC_REG_FRAME_FLAGS),
+               (unsigned)fcc_rd(FCC_REG_JOINS), (unsigned)fcc_rd(FCC_REG_GEAR_STALLS));
+    fcc_wr(FCC_REG_STATUS, FCC_STATUS_FRAME_DONE_MASK);
     return 0;
 }
 "#;

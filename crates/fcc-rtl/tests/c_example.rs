@@ -9,7 +9,7 @@ use std::process::{Command, Stdio};
 
 use fcc_params::FccParams;
 use fcc_rtl::vivado::{Board, BOARDS};
-use fcc_rtl::{generate, vivado, Layout};
+use fcc_rtl::{generate, vivado, Generated, Layout};
 use rand::{Rng, SeedableRng};
 
 fn stubs() -> PathBuf {
@@ -41,17 +41,27 @@ fn small() -> FccParams {
     }
 }
 
-/// The example and `fcc_regs.h` of `board`, written to a fresh directory.
-fn written(board: Board, p: &FccParams) -> (PathBuf, PathBuf) {
+/// The column core's build of the same size (K = 3, its smallest).
+fn small_column() -> FccParams {
+    FccParams {
+        fsize: 3,
+        scan: fcc_params::Scan::Column,
+        ..small()
+    }
+}
+
+/// The example and `fcc_regs.h` of `board` for the generated `g`, written
+/// to a fresh directory.
+fn written(board: Board, g: &Generated) -> (PathBuf, PathBuf) {
     let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!(
-        "fcc-c-example-{}-{}",
+        "fcc-c-example-{}-{}-{}",
         std::process::id(),
-        board.info().name
+        board.info().name,
+        g.params.scan.as_str()
     ));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
-    let g = generate(p).unwrap();
-    for (name, text) in vivado::extra_scripts(&g, &Layout::default(), board).unwrap() {
+    for (name, text) in vivado::extra_scripts(g, &Layout::default(), board).unwrap() {
         std::fs::write(dir.join(name), text).unwrap();
     }
     let example = dir.join(board.info().example);
@@ -70,8 +80,15 @@ fn example_compiles_as_c99_with_wall_werror_for_every_board() {
         eprintln!("gcc not installed: C example check skipped");
         return;
     }
-    for board in BOARDS {
-        let (dir, example) = written(board, &small());
+    let builds = [
+        generate(&small()).unwrap(),
+        generate(&small_column()).unwrap(),
+    ];
+    for (board, g) in BOARDS
+        .into_iter()
+        .flat_map(|b| builds.iter().map(move |g| (b, g)))
+    {
+        let (dir, example) = written(board, g);
         let obj = dir.join("example.o");
         let inc = stubs();
         let out = gcc(&[
@@ -90,8 +107,9 @@ fn example_compiles_as_c99_with_wall_werror_for_every_board() {
         ]);
         assert!(
             out.status.success(),
-            "{}: gcc failed:\n{}",
+            "{} ({} core): gcc failed:\n{}",
             board.info().name,
+            g.params.scan.as_str(),
             String::from_utf8_lossy(&out.stderr)
         );
     }
@@ -145,7 +163,7 @@ fn c_quantisation_matches_the_golden_model_on_corners_and_seeded_random_points()
         eprintln!("gcc not installed: C quantisation check skipped");
         return;
     }
-    let (dir, example) = written(Board::Zc706, &small());
+    let (dir, example) = written(Board::Zc706, &generate(&small()).unwrap());
     let exe = dir.join("pack");
     let inc = stubs();
     let define = format!("-DFCC_EXAMPLE=\"{}\"", example.display());
@@ -437,4 +455,191 @@ fn a_column_builds_register_header_decodes_records_in_c() {
     }
     assert_eq!(got.lines().count(), want.lines().count(), "seed {seed}");
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The column build's example takes its registers, stream limits and record
+/// layout from `fcc_regs.h` by name, sends the frame in column order and
+/// arms S2MM before MM2S.
+#[test]
+fn column_example_retypes_no_register_offset_or_record_layout() {
+    let p = small_column();
+    for board in BOARDS {
+        let text = fcc_rtl::example::c_example(&p, board);
+        for name in [
+            "FCC_REG_RUN_BRIDGE_RESET",
+            "FCC_REG_RUN_RING_REACH_RESET",
+            "FCC_REG_RUN_OPEN_LIMIT_RESET",
+            "FCC_ERROR_OPEN_LIMIT_MASK",
+            "FCC_RECORD_WORDS",
+            "FCC_REC_##F##_WORD",
+            "FCC_END_##F##_SHIFT",
+            "XAXIDMA_RX_OFFSET + XAXIDMA_BUFFLEN_OFFSET",
+            "c * FCC_ROWS + r",
+        ] {
+            assert!(text.contains(name), "{}: {name}", board.info().name);
+        }
+        assert!(!text.contains("#error"));
+        assert!(!text.contains("fcc_label("), "no label read-out");
+        let beats = fcc_pixel::record::frame_beats_max(p.pixels());
+        assert!(text.contains(&format!("#define FCC_OUT_WORDS {beats}u")));
+        let s2mm = text
+            .find("fcc_out, FCC_OUT_BYTES, XAXIDMA_DEVICE_TO_DMA")
+            .unwrap();
+        let mm2s = text
+            .find("fcc_in, FCC_IN_BYTES, XAXIDMA_DMA_TO_DEVICE")
+            .unwrap();
+        assert!(s2mm < mm2s);
+    }
+}
+
+/// The line the column example prints for record `r` (its format, from
+/// the record's own fields; `\r\n` ends it, `lines()` takes both off).
+fn record_line(r: &fcc_pixel::record::HwRecord) -> String {
+    format!(
+        "fcc: cluster {}: {} points, columns {}..{}, closed at {}, rows {}..{}, x {}..{}, y {}..{}, z {}..{}",
+        r.id,
+        r.points,
+        r.first_col,
+        r.last_col,
+        r.closed_col,
+        r.first_row,
+        r.last_row,
+        r.min[0],
+        r.max[0],
+        r.min[1],
+        r.max[1],
+        r.min[2],
+        r.max[2]
+    )
+}
+
+/// The column example's `fcc_read_records`, compiled on the host, reads a
+/// frame's records as the core sends them (seeded random records over each
+/// field's range, packed by `fcc_pixel`) and the end beat, and refuses
+/// words that are not one frame's: a cut record, an end beat that counts
+/// otherwise.
+#[test]
+fn column_example_reads_the_records_and_the_end_beat_of_a_frame() {
+    if !gcc_present() {
+        eprintln!("gcc not installed: C record reading check skipped");
+        return;
+    }
+    use fcc_pixel::record::{FrameEnd, HwRecord};
+    let (dir, example) = written(Board::Zc706, &generate(&small_column()).unwrap());
+    let exe = dir.join("records");
+    let inc = stubs();
+    let define = format!("-DFCC_EXAMPLE=\"{}\"", example.display());
+    let out = gcc(&[
+        "-std=c99".as_ref(),
+        "-Wall".as_ref(),
+        "-Wextra".as_ref(),
+        "-Werror".as_ref(),
+        define.as_ref(),
+        "-I".as_ref(),
+        inc.as_os_str(),
+        "-I".as_ref(),
+        dir.as_os_str(),
+        inc.join("records_main.c").as_os_str(),
+        inc.join("stub.c").as_os_str(),
+        "-o".as_ref(),
+        exe.as_os_str(),
+    ]);
+    assert!(
+        out.status.success(),
+        "gcc failed:\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let run = |words: &[u64]| -> String {
+        let mut child = Command::new(&exe)
+            .stdin(Stdio::piped())
+            .stdout(Stdio::piped())
+            .spawn()
+            .unwrap();
+        let input: String = std::iter::once(format!("{}\n", words.len()))
+            .chain(words.iter().map(|w| format!("{w:x}\n")))
+            .collect();
+        let mut stdin = child.stdin.take().unwrap();
+        let feeder = std::thread::spawn(move || stdin.write_all(input.as_bytes()));
+        let out = child.wait_with_output().unwrap();
+        feeder.join().unwrap().unwrap();
+        assert!(out.status.success());
+        String::from_utf8(out.stdout).unwrap()
+    };
+    let seed = 31;
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+    let s16 = |rng: &mut rand_chacha::ChaCha8Rng| rng.gen_range(i16::MIN..=i16::MAX);
+    let records: Vec<HwRecord> = (0..40)
+        .map(|i| {
+            let ext = i % 5 == 0;
+            HwRecord {
+                id: if ext {
+                    (1 << 20) - 1
+                } else {
+                    rng.gen_range(0..1 << 20)
+                },
+                points: rng.gen_range(1..1 << 20),
+                first_row: rng.gen_range(0..128),
+                last_row: rng.gen_range(0..128),
+                seam: rng.gen(),
+                first_col: rng.gen_range(0..1 << 13),
+                last_col: rng.gen_range(0..1 << 13),
+                closed_col: if ext {
+                    (1 << 13) - 1
+                } else {
+                    rng.gen_range(0..1 << 13)
+                },
+                min: [0; 3].map(|_| if ext { i16::MIN } else { s16(&mut rng) }),
+                max: [0; 3].map(|_| if ext { i16::MAX } else { s16(&mut rng) }),
+                range2_min: rng.gen_range(0..1 << 32),
+                range2_max: rng.gen_range(0..1 << 32),
+                sum: [0; 3].map(|_| rng.gen_range(-(1i64 << 34)..1i64 << 34)),
+                sum_xx: rng.gen_range(0..1i64 << 50),
+                sum_xy: rng.gen_range(-(1i64 << 50)..1i64 << 50),
+                sum_yy: rng.gen_range(0..1i64 << 50),
+            }
+        })
+        .collect();
+    let frame = |n: usize, counted: u32, overflow: bool| -> Vec<u64> {
+        let mut w: Vec<u64> = records[..n]
+            .iter()
+            .flat_map(|r| r.pack().unwrap_or_else(|e| panic!("{r:?}: {e}")))
+            .collect();
+        let end = FrameEnd {
+            records: counted,
+            overflow,
+            frame_error: false,
+        };
+        w.push(end.pack().unwrap());
+        w
+    };
+    for (n, overflow) in [(40usize, false), (1, true), (0, false)] {
+        let got = run(&frame(n, n as u32, overflow));
+        let mut want: Vec<String> = records[..n].iter().map(record_line).collect();
+        want.push(format!(
+            "fcc: end of frame: {n} records, overflow {}, frame error 0",
+            u8::from(overflow)
+        ));
+        want.push(format!("returned {n}"));
+        let got: Vec<&str> = got.lines().collect();
+        if let Some((i, (g, w))) = got.iter().zip(&want).enumerate().find(|(_, (g, w))| g != w) {
+            panic!("{n} records, line {i} (seed {seed}): expected {w:?} != got {g:?}");
+        }
+        assert_eq!(got.len(), want.len(), "{n} records (seed {seed})");
+    }
+    // Not one frame's: a record cut short, an end beat counting otherwise.
+    let mut cut = frame(3, 3, false);
+    cut.remove(5);
+    let got = run(&cut);
+    assert!(
+        got.contains("33 beats: not records of 11 beats and an end beat"),
+        "{got}"
+    );
+    assert!(got.ends_with("returned -1\n"), "{got}");
+    let got = run(&frame(3, 4, false));
+    assert!(
+        got.contains("the end beat counts 4 records, 3 came"),
+        "{got}"
+    );
+    assert!(got.ends_with("returned -1\n"), "{got}");
+    assert!(run(&[]).ends_with("returned -1\n"));
 }
