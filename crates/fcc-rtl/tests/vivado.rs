@@ -1248,10 +1248,10 @@ fn another_configuration_is_not_overwritten_without_force() {
 }
 
 /// A column build's S2MM is sized for a frame of records (each pixel a
-/// cluster at most, then the end beat), and its C example refuses to
-/// compile rather than misread records as labels.
+/// cluster at most, then the end beat), as its C example's record buffer
+/// is, and its C example reads records, not labels.
 #[test]
-fn a_column_build_sizes_its_dma_for_records_and_has_no_label_example() {
+fn a_column_build_sizes_its_dma_for_records_and_its_example_reads_records() {
     let p = FccParams {
         scan: fcc_params::Scan::Column,
         label_bits: 13,
@@ -1269,12 +1269,21 @@ fn a_column_build_sizes_its_dma_for_records_and_has_no_label_example() {
         .iter()
         .find(|(name, _)| name.ends_with("_example.c"))
         .expect("the C example");
-    assert!(example.1.contains("#error"), "{}", example.1);
+    assert!(
+        example
+            .1
+            .contains(&format!("#define FCC_OUT_WORDS {}u", out / 8)),
+        "{}",
+        example.1
+    );
+    assert!(example.1.contains("fcc_read_records(fcc_out"));
+    assert!(!example.1.contains("fcc_label("));
     // The row-major build's example is the label example.
     let row = files(&small());
     let example = row
         .iter()
         .find(|(name, _)| name.ends_with("_example.c"))
         .expect("the C example");
-    assert!(!example.1.contains("#error"));
+    assert!(example.1.contains("fcc_label("));
+    assert!(!example.1.contains("fcc_read_records"));
 }
