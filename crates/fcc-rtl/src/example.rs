@@ -52,6 +52,9 @@ pub fn c_example(p: &FccParams, board: Board) -> String {
     s.push_str(&crate::vivado::fill_public(
         if column { COLUMN_EXAMPLE } else { EXAMPLE },
         &[
+            ("BUILD", BUILD.to_string()),
+            ("SIZES", SIZES.to_string()),
+            ("BUFFERS", BUFFERS.to_string()),
             ("HEAD", HEAD.to_string()),
             ("QUANTIZE", QUANTIZE.to_string()),
             ("OPEN", OPEN.to_string()),
@@ -75,6 +78,35 @@ pub fn c_example(p: &FccParams, board: Board) -> String {
     ));
     s
 }
+
+/// How to build the example (both cores).
+const BUILD: &str = r#"// Build: add this file and fcc_regs.h (beside it, written by fcc gen from the
+// same parameters) to a standalone application on the exported platform.
+// The core's base address comes from xparameters.h (the cell is named
+// "fcc"); if the BSP names it differently, compile with -DFCC_BASEADDR=0x...
+// (the fcc segment in the block design's _map.txt). The DMA is found by
+// device ID (XPAR_AXIDMA_0_DEVICE_ID, or -DFCC_DMA_ID=...).
+"#;
+
+/// The buffers' sizes in bytes, the Q7.8 scale and the valid bit.
+const SIZES: &str = r#"#define FCC_IN_BYTES (FCC_PIXELS * @PIXEL_BYTES@u)
+#define FCC_OUT_BYTES (FCC_OUT_WORDS * @PIXEL_BYTES@u)
+/* Q7.8: 1 m = 256; bit @VALID_BIT@ of an input word marks a pixel with a point
+ * (fcc-pixel, the format the golden model and the drivers share). */
+#define FCC_Q_ONE @Q_ONE@
+#define FCC_VALID_BIT @VALID_BIT@u
+"#;
+
+/// The poll limit, the buffers and the register access.
+const BUFFERS: &str = r#"/* Polls before a frame is given up (each poll is one register read). */
+#define FCC_POLL_LIMIT 100000000u
+
+static uint64_t fcc_in[FCC_PIXELS] __attribute__((aligned(@CACHE_LINE@)));
+static uint64_t fcc_out[FCC_OUT_WORDS] __attribute__((aligned(@CACHE_LINE@)));
+
+static uint32_t fcc_rd(uint32_t offset) { return Xil_In32((UINTPTR)FCC_BASEADDR + offset); }
+static void fcc_wr(uint32_t offset, uint32_t value) { Xil_Out32((UINTPTR)FCC_BASEADDR + offset, value); }
+"#;
 
 /// The includes and the addresses of the core and the DMA.
 const HEAD: &str = r#"#include <math.h>
@@ -198,13 +230,7 @@ const EXAMPLE: &str = r#"//
 // the core, and reads back the labels and the frame's status. C99, for a
 // Vitis standalone application; @ADDR_NOTE@.
 //
-// Build: add this file and fcc_regs.h (beside it, written by fcc gen from the
-// same parameters) to a standalone application on the exported platform.
-// The core's base address comes from xparameters.h (the cell is named
-// "fcc"); if the BSP names it differently, compile with -DFCC_BASEADDR=0x...
-// (the fcc segment in the block design's _map.txt). The DMA is found by
-// device ID (XPAR_AXIDMA_0_DEVICE_ID, or -DFCC_DMA_ID=...).
-//
+@BUILD@//
 // The sequence: check ID and parameter hash; clear; enable the interrupt;
 // arm S2MM (labels) before MM2S (pixels); wait for STATUS.FRAME_DONE (the
 // level of the core's irq) and for both DMA channels; read the latched
@@ -216,23 +242,9 @@ const EXAMPLE: &str = r#"//
 #define FCC_PIXELS (FCC_ROWS * FCC_COLS)
 #define FCC_LPB FCC_REG_LABELS_PER_BEAT_RESET
 #define FCC_OUT_WORDS ((FCC_PIXELS + FCC_LPB - 1u) / FCC_LPB)
-#define FCC_IN_BYTES (FCC_PIXELS * @PIXEL_BYTES@u)
-#define FCC_OUT_BYTES (FCC_OUT_WORDS * @PIXEL_BYTES@u)
-/* Q7.8: 1 m = 256; bit @VALID_BIT@ of an input word marks a pixel with a point
- * (fcc-pixel, the format the golden model and the drivers share). */
-#define FCC_Q_ONE @Q_ONE@
-#define FCC_VALID_BIT @VALID_BIT@u
-/* 16-bit fields: coordinates in an input word, labels in an output word. */
+@SIZES@/* 16-bit fields: coordinates in an input word, labels in an output word. */
 #define FCC_SLOT_BITS @SLOT_BITS@u
-/* Polls before a frame is given up (each poll is one register read). */
-#define FCC_POLL_LIMIT 100000000u
-
-static uint64_t fcc_in[FCC_PIXELS] __attribute__((aligned(@CACHE_LINE@)));
-static uint64_t fcc_out[FCC_OUT_WORDS] __attribute__((aligned(@CACHE_LINE@)));
-
-static uint32_t fcc_rd(uint32_t offset) { return Xil_In32((UINTPTR)FCC_BASEADDR + offset); }
-static void fcc_wr(uint32_t offset, uint32_t value) { Xil_Out32((UINTPTR)FCC_BASEADDR + offset, value); }
-
+@BUFFERS@
 @QUANTIZE@/* The label of pixel i (raster order) in the output buffer. */
 static uint32_t fcc_label(uint32_t i)
 {
@@ -316,13 +328,7 @@ const COLUMN_EXAMPLE: &str = r#"//
 // (docs/spec.md, section 9.4). C99, for a Vitis standalone application;
 // @ADDR_NOTE@.
 //
-// Build: add this file and fcc_regs.h (beside it, written by fcc gen from the
-// same parameters) to a standalone application on the exported platform.
-// The core's base address comes from xparameters.h (the cell is named
-// "fcc"); if the BSP names it differently, compile with -DFCC_BASEADDR=0x...
-// (the fcc segment in the block design's _map.txt). The DMA is found by
-// device ID (XPAR_AXIDMA_0_DEVICE_ID, or -DFCC_DMA_ID=...).
-//
+@BUILD@//
 // The sequence: check ID and parameter hash; clear; enable the interrupt;
 // write the run parameters and the stream's limits; arm S2MM (records)
 // before MM2S (pixels); wait for STATUS.FRAME_DONE (the level of the core's
@@ -339,23 +345,9 @@ const COLUMN_EXAMPLE: &str = r#"//
 /* The most beats a frame's records take: a record (FCC_RECORD_WORDS beats)
  * per pixel at most, then the end beat. */
 #define FCC_OUT_WORDS @OUT_WORDS@u
-#define FCC_IN_BYTES (FCC_PIXELS * @PIXEL_BYTES@u)
-#define FCC_OUT_BYTES (FCC_OUT_WORDS * @PIXEL_BYTES@u)
-/* Q7.8: 1 m = 256; bit @VALID_BIT@ of an input word marks a pixel with a point
- * (fcc-pixel, the format the golden model and the drivers share). */
-#define FCC_Q_ONE @Q_ONE@
-#define FCC_VALID_BIT @VALID_BIT@u
-/* 16-bit fields: coordinates in an input word. */
+@SIZES@/* 16-bit fields: coordinates in an input word. */
 #define FCC_SLOT_BITS @SLOT_BITS@u
-/* Polls before a frame is given up (each poll is one register read). */
-#define FCC_POLL_LIMIT 100000000u
-
-static uint64_t fcc_in[FCC_PIXELS] __attribute__((aligned(@CACHE_LINE@)));
-static uint64_t fcc_out[FCC_OUT_WORDS] __attribute__((aligned(@CACHE_LINE@)));
-
-static uint32_t fcc_rd(uint32_t offset) { return Xil_In32((UINTPTR)FCC_BASEADDR + offset); }
-static void fcc_wr(uint32_t offset, uint32_t value) { Xil_Out32((UINTPTR)FCC_BASEADDR + offset, value); }
-
+@BUFFERS@
 @QUANTIZE@/* Bits shift .. shift + bits - 1 of w, two's complement when sign. */
 static int64_t fcc_bits(uint64_t w, unsigned shift, unsigned bits, unsigned sign)
 {

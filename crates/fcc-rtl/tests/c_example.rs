@@ -74,6 +74,53 @@ fn gcc(args: &[&std::ffi::OsStr]) -> std::process::Output {
     Command::new("gcc").args(args).output().unwrap()
 }
 
+/// A host program of the ZC706 example of `g` with `main_c` of the stubs
+/// (which includes the example, its own main renamed), linked with the
+/// stand-ins of the BSP calls.
+fn host_program(g: &Generated, main_c: &str) -> PathBuf {
+    let (dir, example) = written(Board::Zc706, g);
+    let exe = dir.join(main_c.trim_end_matches(".c"));
+    let inc = stubs();
+    let define = format!("-DFCC_EXAMPLE=\"{}\"", example.display());
+    let out = gcc(&[
+        "-std=c99".as_ref(),
+        "-Wall".as_ref(),
+        "-Wextra".as_ref(),
+        "-Werror".as_ref(),
+        define.as_ref(),
+        "-I".as_ref(),
+        inc.as_os_str(),
+        "-I".as_ref(),
+        dir.as_os_str(),
+        inc.join(main_c).as_os_str(),
+        inc.join("stub.c").as_os_str(),
+        "-o".as_ref(),
+        exe.as_os_str(),
+    ]);
+    assert!(
+        out.status.success(),
+        "gcc failed:\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    exe
+}
+
+/// Run `exe` with `input` on stdin (fed from another thread: the output
+/// pipe fills while input remains); its stdout.
+fn run_fed(exe: &Path, input: String) -> String {
+    let mut child = Command::new(exe)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut stdin = child.stdin.take().unwrap();
+    let feeder = std::thread::spawn(move || stdin.write_all(input.as_bytes()));
+    let out = child.wait_with_output().unwrap();
+    feeder.join().unwrap().unwrap();
+    assert!(out.status.success(), "{}", exe.display());
+    String::from_utf8(out.stdout).unwrap()
+}
+
 #[test]
 fn example_compiles_as_c99_with_wall_werror_for_every_board() {
     if !gcc_present() {
@@ -163,29 +210,7 @@ fn c_quantisation_matches_the_golden_model_on_corners_and_seeded_random_points()
         eprintln!("gcc not installed: C quantisation check skipped");
         return;
     }
-    let (dir, example) = written(Board::Zc706, &generate(&small()).unwrap());
-    let exe = dir.join("pack");
-    let inc = stubs();
-    let define = format!("-DFCC_EXAMPLE=\"{}\"", example.display());
-    let out = gcc(&[
-        "-std=c99".as_ref(),
-        "-Wall".as_ref(),
-        "-Werror".as_ref(),
-        define.as_ref(),
-        "-I".as_ref(),
-        inc.as_os_str(),
-        "-I".as_ref(),
-        dir.as_os_str(),
-        inc.join("pack_main.c").as_os_str(),
-        inc.join("stub.c").as_os_str(),
-        "-o".as_ref(),
-        exe.as_os_str(),
-    ]);
-    assert!(
-        out.status.success(),
-        "gcc failed:\n{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    let exe = host_program(&generate(&small()).unwrap(), "pack_main.c");
 
     // Directed corners: zero of both signs, the rounding halves, the ends of
     // the Q7.8 range and just past them, not-finite values, huge values.
@@ -233,11 +258,6 @@ fn c_quantisation_matches_the_golden_model_on_corners_and_seeded_random_points()
         }
         points.push(p);
     }
-    let mut child = Command::new(&exe)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .spawn()
-        .unwrap();
     let input: String = points
         .iter()
         .map(|p| {
@@ -249,14 +269,7 @@ fn c_quantisation_matches_the_golden_model_on_corners_and_seeded_random_points()
             )
         })
         .collect();
-    // Fed from another thread: the output pipe fills while input remains.
-    let mut stdin = child.stdin.take().unwrap();
-    let feeder = std::thread::spawn(move || stdin.write_all(input.as_bytes()));
-    let out = child.wait_with_output().unwrap();
-    feeder.join().unwrap().unwrap();
-    assert!(out.status.success());
-    let got: Vec<u64> = String::from_utf8(out.stdout)
-        .unwrap()
+    let got: Vec<u64> = run_fed(&exe, input)
         .lines()
         .map(|l| u64::from_str_radix(l, 16).unwrap())
         .collect();
@@ -432,19 +445,7 @@ fn a_column_builds_register_header_decodes_records_in_c() {
     }
     input.push_str(&format!("{:x}\n", end.pack().unwrap()));
     want.push_str("records 1048575 overflow 1 frame_error 1 id 0\n");
-    let mut child = Command::new(&exe)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .spawn()
-        .unwrap();
-    child
-        .stdin
-        .take()
-        .unwrap()
-        .write_all(input.as_bytes())
-        .unwrap();
-    let out = child.wait_with_output().unwrap();
-    let got = String::from_utf8_lossy(&out.stdout);
+    let got = run_fed(&exe, input);
     let mismatch = got
         .lines()
         .zip(want.lines())
@@ -525,45 +526,12 @@ fn column_example_reads_the_records_and_the_end_beat_of_a_frame() {
         return;
     }
     use fcc_pixel::record::{FrameEnd, HwRecord};
-    let (dir, example) = written(Board::Zc706, &generate(&small_column()).unwrap());
-    let exe = dir.join("records");
-    let inc = stubs();
-    let define = format!("-DFCC_EXAMPLE=\"{}\"", example.display());
-    let out = gcc(&[
-        "-std=c99".as_ref(),
-        "-Wall".as_ref(),
-        "-Wextra".as_ref(),
-        "-Werror".as_ref(),
-        define.as_ref(),
-        "-I".as_ref(),
-        inc.as_os_str(),
-        "-I".as_ref(),
-        dir.as_os_str(),
-        inc.join("records_main.c").as_os_str(),
-        inc.join("stub.c").as_os_str(),
-        "-o".as_ref(),
-        exe.as_os_str(),
-    ]);
-    assert!(
-        out.status.success(),
-        "gcc failed:\n{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    let exe = host_program(&generate(&small_column()).unwrap(), "records_main.c");
     let run = |words: &[u64]| -> String {
-        let mut child = Command::new(&exe)
-            .stdin(Stdio::piped())
-            .stdout(Stdio::piped())
-            .spawn()
-            .unwrap();
         let input: String = std::iter::once(format!("{}\n", words.len()))
             .chain(words.iter().map(|w| format!("{w:x}\n")))
             .collect();
-        let mut stdin = child.stdin.take().unwrap();
-        let feeder = std::thread::spawn(move || stdin.write_all(input.as_bytes()));
-        let out = child.wait_with_output().unwrap();
-        feeder.join().unwrap().unwrap();
-        assert!(out.status.success());
-        String::from_utf8(out.stdout).unwrap()
+        run_fed(&exe, input)
     };
     let seed = 31;
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
