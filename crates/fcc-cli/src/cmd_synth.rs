@@ -58,9 +58,13 @@ pub struct SynthArgs {
     #[arg(long)]
     pub no_timing: bool,
     /// Also count cells per block (a second synthesis). With --all it is done
-    /// for the targets' K = 7 row in any case.
-    #[arg(long)]
+    /// for the targets' K = 7 row in any case, unless --no-by-block.
+    #[arg(long, conflicts_with = "no_by_block")]
     pub by_block: bool,
+    /// With --all: no by-block synthesis of the targets' K (it about doubles
+    /// that K's time; `fcc synth --fsize 7` alone still does it).
+    #[arg(long, requires = "all")]
+    pub no_by_block: bool,
     /// With --all: the Markdown document.
     #[arg(long, default_value = RESULTS_MD)]
     pub out: PathBuf,
@@ -101,6 +105,7 @@ impl Default for SynthArgs {
             yosys_bin: YOSYS.into(),
             no_timing: false,
             by_block: false,
+            no_by_block: false,
             out: RESULTS_MD.into(),
             json: RESULTS_JSON.into(),
             bench_json: None,
@@ -134,6 +139,9 @@ impl SynthArgs {
     /// The command line that regenerates the document, for its header.
     fn command(&self) -> String {
         let mut c = format!("fcc synth --all{}", self.hw.changed_flags());
+        if self.no_by_block {
+            c.push_str(" --no-by-block");
+        }
         if self.bench_json.is_some() {
             c.push_str(" --bench-json BENCH.json");
         }
@@ -319,7 +327,7 @@ fn run_all(args: &SynthArgs) -> anyhow::Result<()> {
             let opts = MeasureOptions {
                 fsizes,
                 yosys: args.yosys_config(),
-                by_block_for_targets: true,
+                by_block_for_targets: !args.no_by_block,
                 work_dir: args.work_dir.clone(),
                 command: args.command(),
             };

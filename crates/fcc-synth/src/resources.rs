@@ -166,12 +166,21 @@ impl Resources {
     /// Read `stat -json -top TOP` of a synthesis that kept the first-level
     /// blocks as hierarchy: each block's cells (times its instances in the
     /// top), and the top's own cells under the top's name.
+    ///
+    /// Yosys 0.23 writes the hierarchy of a design kept more than one level
+    /// deep into that JSON as text (a line per module: its name and count,
+    /// between `modules` and `design`); those lines are left out.
     pub fn blocks_from_stat_json(
         text: &str,
         top: &str,
     ) -> Result<BTreeMap<String, Resources>, String> {
+        let json: String = text
+            .lines()
+            .filter(|l| !is_hierarchy_line(l))
+            .flat_map(|l| [l, "\n"])
+            .collect();
         let stat: StatJson =
-            serde_json::from_str(text).map_err(|e| format!("not stat -json output: {e}"))?;
+            serde_json::from_str(&json).map_err(|e| format!("not stat -json output: {e}"))?;
         let modules: BTreeMap<String, BTreeMap<String, u64>> = stat
             .modules
             .into_iter()
@@ -216,6 +225,13 @@ impl Resources {
         v.truncate(n);
         v
     }
+}
+
+/// A line of the hierarchy Yosys 0.23 writes as text into `stat -json -top`
+/// (a module's name and its count, no JSON punctuation).
+fn is_hierarchy_line(line: &str) -> bool {
+    let t = line.trim();
+    !t.is_empty() && !t.contains(['"', '{', '}', '[', ']', ',', ':'])
 }
 
 #[cfg(test)]
@@ -273,6 +289,22 @@ mod tests {
     fn garbage_is_refused_with_the_reason() {
         let e = Resources::from_stat_json("ERROR: something").unwrap_err();
         assert!(e.starts_with("not stat -json output"), "{e}");
+    }
+
+    #[test]
+    fn the_hierarchy_text_of_yosys_0_23_in_the_json_is_left_out() {
+        let text = "{\n   \"modules\": {\n      \"\\\\top\": {\n         \"num_cells_by_type\": {\n\
+                    \x20           \"LUT2\": 1,\n            \"core\": 1\n         }\n      },\n\
+                    \x20     \"\\\\core\": { \"num_cells_by_type\": { \"FDRE\": 3, \"core__sets\": 1 } },\n\
+                    \x20     \"\\\\core__sets\": { \"num_cells_by_type\": { \"LUT6\": 2 } }\n   },\n\
+                    \x20      core      1\n         core__sets      1\n\
+                    \x20     \"design\": {\n         \"num_cells\": 7\n      }\n}\n";
+        assert!(serde_json::from_str::<serde_json::Value>(text).is_err());
+        let b = Resources::blocks_from_stat_json(text, "top").unwrap();
+        assert_eq!(b["top"].lut_logic, 1);
+        assert_eq!(b["core"].ff, 3);
+        assert!(!b["core"].by_type.contains_key("core__sets"));
+        assert_eq!(b["core__sets"].lut_logic, 2);
     }
 
     #[test]
