@@ -491,6 +491,10 @@ mod tests {
         assert!(parse(&["--all", "--rtl-dir", "x"]).is_err());
         assert!(parse(&["--from-json", "r.json"]).is_err());
         assert!(parse(&["--all", "--from-json", "r.json"]).is_ok());
+        assert!(parse(&["--no-by-block"]).is_err());
+        assert!(parse(&["--all", "--no-by-block", "--by-block"]).is_err());
+        let a = parse(&["--all", "--no-by-block"]).unwrap();
+        assert_eq!(a.command(), "fcc synth --all --no-by-block");
     }
 
     #[test]
