@@ -595,6 +595,21 @@ mod tests {
         assert_eq!(parse(&["--all"]).unwrap().command(), "fcc synth --all");
         let a = parse(&["--all", "--rows", "32", "--clock-mhz", "250"]).unwrap();
         assert_eq!(a.command(), "fcc synth --all --rows 32 --clock-mhz 250");
+        // Flags of fields the defaults leave out are named too.
+        let a = parse(&[
+            "--all",
+            "--scan",
+            "column",
+            "--bridge",
+            "16",
+            "--ring-reach",
+            "16",
+        ])
+        .unwrap();
+        assert_eq!(
+            a.command(),
+            "fcc synth --all --bridge 16 --ring-reach 16 --scan column"
+        );
     }
 
     #[test]

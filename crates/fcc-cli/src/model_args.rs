@@ -196,11 +196,12 @@ impl HwArgs {
     /// The flags that differ from the defaults, as ` --name value` pairs
     /// (K excluded), to name a command in generated reports.
     pub fn changed_flags(&self) -> String {
+        // By name: a field the defaults leave out (the stream limits, the
+        // slopes, the scan) is a change too.
         let (d, p) = (defaults().fields(), self.unchecked().fields());
         p.iter()
-            .zip(&d)
-            .filter(|((name, v), (_, d))| *name != "fsize" && v != d)
-            .map(|((name, v), _)| format!(" --{} {v}", name.replace('_', "-")))
+            .filter(|(name, v)| *name != "fsize" && !d.iter().any(|(n, x)| n == name && x == v))
+            .map(|(name, v)| format!(" --{} {v}", name.replace('_', "-")))
             .collect()
     }
 }

@@ -196,7 +196,10 @@ fn render_column_targets(s: &mut String, col: &Report, row: Option<&Report>) {
     lines.push((
         "DSP48E1".into(),
         "row-major's".into(),
-        opt(res, |a| a.dsp48e1.to_string()),
+        match (res, row_res) {
+            (Some(a), Some(b)) => format!("{} ({})", a.dsp48e1, b.dsp48e1),
+            _ => opt(res, |a| a.dsp48e1.to_string()),
+        },
         res.zip(row_res).map(|(a, b)| a.dsp48e1 <= b.dsp48e1),
     ));
     let tm = c.timing.as_ref();
