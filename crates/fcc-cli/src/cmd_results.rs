@@ -59,17 +59,21 @@ pub fn run(args: &ResultsArgs) -> anyhow::Result<()> {
         jobs: None,
         json: Some(bench_json.clone()),
     })?;
+    // `fcc cycles` of one core, its defaults otherwise.
+    let cycles = |scan: Scan, json: &PathBuf| {
+        cmd_cycles::run(&CyclesArgs {
+            fsize: fsizes.clone(),
+            frames: args.frames,
+            ouster_dir: None,
+            json: Some(json.clone()),
+            scan,
+            label_bits: cmd_cycles::COLUMN_LABEL_BITS,
+            bridge: fcc_params::RECOMMENDED_BRIDGE,
+            ring_reach: fcc_params::RECOMMENDED_RING_REACH,
+        })
+    };
     eprintln!("2/5 Verilator cycles (fcc cycles)");
-    cmd_cycles::run(&CyclesArgs {
-        fsize: fsizes.clone(),
-        frames: args.frames,
-        ouster_dir: None,
-        json: Some(cycles_json.clone()),
-        scan: Scan::Row,
-        label_bits: cmd_cycles::COLUMN_LABEL_BITS,
-        bridge: fcc_params::RECOMMENDED_BRIDGE,
-        ring_reach: fcc_params::RECOMMENDED_RING_REACH,
-    })?;
+    cycles(Scan::Row, &cycles_json)?;
     eprintln!("3/5 Yosys resources and timing (fcc synth --all)");
     let attach = |file: &PathBuf, table: &str, how: &str| {
         if file.is_file() {
@@ -95,16 +99,7 @@ pub fn run(args: &ResultsArgs) -> anyhow::Result<()> {
     })?;
     let column_cycles_json = args.work_dir.join("cycles-column.json");
     eprintln!("4/5 the column-streaming core's Verilator cycles (fcc cycles --scan column)");
-    cmd_cycles::run(&CyclesArgs {
-        fsize: fsizes.clone(),
-        frames: args.frames,
-        ouster_dir: None,
-        json: Some(column_cycles_json.clone()),
-        scan: Scan::Column,
-        label_bits: cmd_cycles::COLUMN_LABEL_BITS,
-        bridge: fcc_params::RECOMMENDED_BRIDGE,
-        ring_reach: fcc_params::RECOMMENDED_RING_REACH,
-    })?;
+    cycles(Scan::Column, &column_cycles_json)?;
     eprintln!(
         "5/5 the column-streaming core's resources and timing (fcc synth --all --scan column)"
     );
