@@ -153,22 +153,19 @@ pub fn virtual_column_core(
     let build = virtual_build(Scan::Column);
     let mut model = model.clone();
     column_model(&mut model, min_points)?;
-    if let Some(b) = model.label_bits.filter(|&b| b != build.label_bits) {
-        bail!(
-            "--label-bits {b} differs from the virtual board's column core's B = {}: drop it",
-            build.label_bits
-        );
-    }
-    model.label_bits = Some(build.label_bits);
+    build_label_bits(&mut model, &build, "the virtual board's build")?;
     model.params(1, 1)?;
     let loaded = crate::cmd_sim::load_params(&build)?;
-    let (board, expect) = fcc_sim::virtual_board_with(&build, loaded)?;
+    Ok((VirtualCore(open_virtual(build, loaded)?), model))
+}
+
+/// The virtual board with the core `build` (its Verilator model `model`),
+/// opened by the driver, a core left busy reset.
+fn open_virtual(build: FccParams, model: std::sync::Arc<fcc_sim::Model>) -> anyhow::Result<Runner> {
+    let (board, expect) = fcc_sim::virtual_board_with(&build, model)?;
     let mut d = Driver::open(board, &expect).map_err(|e| anyhow::anyhow!("{e}"))?;
     recover_if_busy(&mut d, "virtual board")?;
-    Ok((
-        VirtualCore(Runner::new(Target::Virtual(Box::new(d), build))),
-        model,
-    ))
+    Ok(Runner::new(Target::Virtual(Box::new(d), build)))
 }
 
 /// A core on the virtual board for another command: [`Hardware`], and the
@@ -195,15 +192,21 @@ fn label_bits_of(
     where_: &str,
 ) -> anyhow::Result<ClusterLidarArgs> {
     let mut cluster = check_model_for(args, build)?;
-    if let Some(b) = cluster.model.label_bits.filter(|&b| b != build.label_bits) {
+    build_label_bits(&mut cluster.model, build, where_)?;
+    Ok(cluster)
+}
+
+/// `--label-bits` of `model` must be the build's B when given; it is B.
+fn build_label_bits(model: &mut ModelArgs, build: &FccParams, where_: &str) -> anyhow::Result<()> {
+    if let Some(b) = model.label_bits.filter(|&b| b != build.label_bits) {
         bail!(
             "--label-bits {b} differs from the core's B = {} ({where_}): drop it or give --label-bits {}",
             build.label_bits,
             build.label_bits
         );
     }
-    cluster.model.label_bits = Some(build.label_bits);
-    Ok(cluster)
+    model.label_bits = Some(build.label_bits);
+    Ok(())
 }
 
 fn run_board(args: &BoardRunArgs) -> anyhow::Result<()> {
@@ -246,10 +249,7 @@ fn run_board(args: &BoardRunArgs) -> anyhow::Result<()> {
                 Scan::Column => " (and stream limits)",
             }
         );
-        let (board, expect) = fcc_sim::virtual_board_with(&build, model)?;
-        let mut d = Driver::open(board, &expect).map_err(|e| anyhow::anyhow!("{e}"))?;
-        recover_if_busy(&mut d, "virtual board")?;
-        let hw = Runner::new(Target::Virtual(Box::new(d), build));
+        let hw = open_virtual(build, model)?;
         run_cluster_on(&cluster, Some(&hw))?;
         (hw.summary(), hw.build().scan)
     } else if let Some(core) = &args.uio {
