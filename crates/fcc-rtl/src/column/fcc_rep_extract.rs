@@ -8,7 +8,7 @@
 //! `FccRepSieve` finds the first join and flags the rest in four stages
 //! (C to F: flags, the first flag, its value, its equals cleared), so that
 //! a first flag and its value never share a cycle; `FccRepReplay` (R)
-//! sends it with the pixel and holds the stages (`busy`) while it sends
+//! sends it with the pixel and holds the stages (`go` low) while it sends
 //! the rest. This block is wiring.
 
 use rust_hdl::prelude::*;
@@ -22,12 +22,13 @@ use crate::types::vec_of;
 pub struct FccRepExtract {
     pub clk: Signal<In, Clock>,
     pub rst: Signal<In, Bit>,
-    /// The pixel at B (captured when not `busy`).
+    /// The pixel at B (captured on `go`).
     pub b_pix: Signal<In, RunPix>,
     pub b_mask: Vec<Signal<In, Bit>>,
     pub b_val: Vec<Signal<In, Bits<16>>>,
     pub b_m: Signal<In, Bits<16>>,
-    pub busy: Signal<Out, Bit>,
+    /// The stages before R, and every one before B, move this cycle.
+    pub go: Signal<Out, Bit>,
     pub out: Signal<Out, RunPix>,
     /// The pixel out last has joins still to come after this cycle's.
     pub more: Signal<Out, Bit>,
@@ -51,7 +52,7 @@ impl FccRepExtract {
             b_mask: vec_of(n),
             b_val: vec_of(n),
             b_m: Default::default(),
-            busy: Default::default(),
+            go: Default::default(),
             out: Default::default(),
             more: Default::default(),
             j_valid: Default::default(),
@@ -70,7 +71,7 @@ impl Logic for FccRepExtract {
     fn update(&mut self) {
         self.sieve.clk.next = self.clk.val();
         self.sieve.rst.next = self.rst.val();
-        self.sieve.hold.next = self.replay.busy.val();
+        self.sieve.go.next = self.replay.go.val();
         self.sieve.b_pix.next = self.b_pix.val();
         self.sieve.b_m.next = self.b_m.val();
         self.replay.clk.next = self.clk.val();
@@ -86,7 +87,7 @@ impl Logic for FccRepExtract {
             self.replay.f_left[b].next = self.sieve.left[b].val();
             self.replay.f_val[b].next = self.sieve.val[b].val();
         }
-        self.busy.next = self.replay.busy.val();
+        self.go.next = self.replay.go.val();
         self.more.next = self.replay.more.val();
         self.out.next = self.replay.out.val();
         self.j_valid.next = self.replay.j_valid.val();

@@ -37,7 +37,9 @@ pub struct FccRepFront {
     /// The centre row's run slots' labels while the pixel is at A1.
     pub a1_label: Vec<Signal<In, Bits<16>>>,
     pub a1_age: Vec<Signal<In, Bits<REP_AGE_BITS>>>,
-    pub busy: Signal<In, Bit>,
+    /// The pipeline moves this cycle: nothing replays (`FccRepReplay`'s
+    /// replicated register).
+    pub go: Signal<In, Bit>,
     pub head_ok: Signal<In, Bit>,
     /// The window's representatives at A1's rows with this cycle's
     /// rewrite, and A1's match's `miss`.
@@ -98,7 +100,7 @@ impl FccRepFront {
             inp_own_eq: vec_of(n),
             a1_label: vec_of(n),
             a1_age: vec_of(n),
-            busy: Default::default(),
+            go: Default::default(),
             head_ok: Default::default(),
             rep_next: vec_of(np),
             match_miss: Default::default(),
@@ -143,9 +145,9 @@ impl Logic for FccRepFront {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clk, pix_q, miss_p, miss_q);
-        self.adv.next = !self.busy.val();
-        self.ready.next = !self.busy.val() & self.head_ok.val();
-        self.take.next = self.inp.val().valid & !self.busy.val() & self.head_ok.val();
+        self.adv.next = self.go.val();
+        self.ready.next = self.go.val() & self.head_ok.val();
+        self.take.next = self.inp.val().valid & self.go.val() & self.head_ok.val();
         self.shift.next = self.take.val();
         self.push.next = self.take.val() & self.inp.val().start;
         self.named.next = false;
@@ -158,7 +160,7 @@ impl Logic for FccRepFront {
         if self.named.val() & self.inp.val().lok {
             self.push_rep.next = self.none.val();
         }
-        if !self.busy.val() {
+        if self.go.val() {
             self.pix_q.d.next = self.pix_zero.val();
             if self.take.val() {
                 self.pix_q.d.next = self.inp.val();
@@ -167,7 +169,7 @@ impl Logic for FccRepFront {
         for e in 0..self.hit_q.len() {
             self.hit_q[e].clock.next = self.clk.val();
             self.hit_q[e].d.next = self.hit_q[e].q.val();
-            if !self.busy.val() {
+            if self.go.val() {
                 self.hit_q[e].d.next = self.inp_hit[e].val();
             }
             self.a1_hit[e].next = self.hit_q[e].q.val();
@@ -175,7 +177,7 @@ impl Logic for FccRepFront {
         for q in 0..self.eq_q.len() {
             self.eq_q[q].clock.next = self.clk.val();
             self.eq_q[q].d.next = self.eq_q[q].q.val();
-            if !self.busy.val() {
+            if self.go.val() {
                 self.eq_q[q].d.next = self.inp_eq[q].val();
             }
             self.a1_eq[q].next = self.eq_q[q].q.val();
@@ -183,7 +185,7 @@ impl Logic for FccRepFront {
         for k in 0..self.own_eq_q.len() {
             self.own_eq_q[k].clock.next = self.clk.val();
             self.own_eq_q[k].d.next = self.own_eq_q[k].q.val();
-            if !self.busy.val() {
+            if self.go.val() {
                 self.own_eq_q[k].d.next = self.inp_own_eq[k].val();
             }
             self.a1_own_eq[k].next = self.own_eq_q[k].q.val();
@@ -206,7 +208,7 @@ impl Logic for FccRepFront {
         for k in 0..self.drop2_q.len() {
             self.drop2_q[k].clock.next = self.clk.val();
             self.drop2_q[k].d.next = self.drop2_q[k].q.val();
-            if !self.busy.val() {
+            if self.go.val() {
                 self.drop2_q[k].d.next = self.m0[k].val() | (self.m1[k].val() & !self.any0.val());
             }
         }
@@ -225,7 +227,7 @@ impl Logic for FccRepFront {
         for j in 0..self.rep_q.len() {
             self.rep_q[j].clock.next = self.clk.val();
             self.rep_q[j].d.next = self.rep_q[j].q.val();
-            if !self.busy.val() {
+            if self.go.val() {
                 self.rep_q[j].d.next = self.rep_next[j].val();
             }
             self.v[j].next = self.rep_q[j].q.val();

@@ -214,7 +214,7 @@ impl Logic for FccRepJoins {
         self.front.clk.next = self.clk.val();
         self.front.rst.next = self.rst.val();
         self.front.inp.next = self.inp.val();
-        self.front.busy.next = self.extract.busy.val();
+        self.front.go.next = self.extract.go.val();
         self.front.head_ok.next = self.feed.head_ok.val();
         self.front.match_miss.next = self.matcher.miss.val();
         for e in 0..self.inp_hit.len() {
@@ -334,9 +334,9 @@ impl Logic for FccRepJoins {
         self.min1.clk.next = self.clk.val();
         self.min2.clk.next = self.clk.val();
         self.min3.clk.next = self.clk.val();
-        self.min1.hold.next = self.extract.busy.val();
-        self.min2.hold.next = self.extract.busy.val();
-        self.min3.hold.next = self.extract.busy.val();
+        self.min1.go.next = self.extract.go.val();
+        self.min2.go.next = self.extract.go.val();
+        self.min3.go.next = self.extract.go.val();
         self.min1.m.next = self.m.val();
         self.min2.m.next = self.m.val();
         self.min3.m.next = self.m.val();

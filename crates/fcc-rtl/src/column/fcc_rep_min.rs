@@ -5,7 +5,8 @@
 //! broadcast this cycle names a position the group covers), the rewrite's
 //! `m` too: `m` is no larger than any value at the positions it rewrites,
 //! so that is the group's minimum with the rewrite applied. `0xFFFF`
-//! (above any label) when neither. Registered; held while `hold`.
+//! (above any label) when neither. Registered; taken while `go` (the
+//! pipeline moves), held otherwise.
 //!
 //! Every value is compared with every other and with `m`, straight from
 //! the registers before (presence and overlap only enter the choice, not
@@ -19,7 +20,7 @@ use crate::types::{kb, vec_of};
 #[derive(LogicBlock)]
 pub struct FccRepMin {
     pub clk: Signal<In, Clock>,
-    pub hold: Signal<In, Bit>,
+    pub go: Signal<In, Bit>,
     pub v: Vec<Signal<In, Bits<16>>>,
     pub pres: Vec<Signal<In, Bit>>,
     pub ov: Vec<Signal<In, Bit>>,
@@ -47,7 +48,7 @@ impl FccRepMin {
     pub fn new(g: usize, gs: usize) -> Self {
         Self {
             clk: Default::default(),
-            hold: Default::default(),
+            go: Default::default(),
             v: vec_of(g * gs),
             pres: vec_of(g * gs),
             ov: vec_of(g),
@@ -120,9 +121,9 @@ impl Logic for FccRepMin {
                     self.pick[g].next = self.none.val();
                 }
                 self.out_q[g].clock.next = self.clk.val();
-                self.out_q[g].d.next = self.pick[g].val();
-                if self.hold.val() {
-                    self.out_q[g].d.next = self.out_q[g].q.val();
+                self.out_q[g].d.next = self.out_q[g].q.val();
+                if self.go.val() {
+                    self.out_q[g].d.next = self.pick[g].val();
                 }
                 self.out[g].next = self.out_q[g].q.val();
             }

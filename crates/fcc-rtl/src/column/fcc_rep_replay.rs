@@ -1,7 +1,7 @@
 //! `FccRepReplay`: stage R of the representative rows (docs/column-core.md,
 //! item 3). The pixel goes out in its first cycle in R, with its first
 //! join (or, with none, at the last column, the ring check's pair). With
-//! more to send, `busy` (a flip-flop) holds every stage before it while it
+//! more to send, it holds every stage before it while it
 //! finds the first flag left (`Pick`), takes its value and sends it
 //! (`Take`), then clears its equals (`Check`): three cycles a further
 //! join, and one to find none left. At the last column it then sends the
@@ -12,12 +12,19 @@
 //! `x` of `0xFFFF` is the run the pixel started (`FccRepFront`'s
 //! `push_rep`): it goes out as the pixel's label, `under` high (the run
 //! filed under its neighbours' cluster, `m`).
+//!
+//! Every stage before R moves on `go`, high while R does not hold: a
+//! register of its own, the complement of R's busy flag, so that the
+//! thousands of registers it enables take it straight to their clock
+//! enables, with no inverter each, and Vivado replicates it
+//! (`FccFanoutReg`). It powers up low, a cycle in which nothing moves.
 
 use rust_hdl::prelude::*;
 
 use super::fcc_rep_first::FccRepFirst;
 use super::fcc_rep_take::FccRepTake;
 use super::RunPix;
+use crate::fcc_fanout_reg::FccFanoutReg;
 use crate::types::{kb, vec_of};
 
 /// What R does next while it holds a pixel.
@@ -34,7 +41,7 @@ pub enum ReplayStep {
 pub struct FccRepReplay {
     pub clk: Signal<In, Clock>,
     pub rst: Signal<In, Bit>,
-    /// F's pixel (`FccRepSieve`), taken when not `busy`.
+    /// F's pixel (`FccRepSieve`), taken on `go`.
     pub f_pix: Signal<In, RunPix>,
     pub f_m: Signal<In, Bits<16>>,
     pub f_x: Signal<In, Bits<16>>,
@@ -42,7 +49,8 @@ pub struct FccRepReplay {
     pub f_more: Signal<In, Bit>,
     pub f_left: Vec<Signal<In, Bit>>,
     pub f_val: Vec<Signal<In, Bits<16>>>,
-    pub busy: Signal<Out, Bit>,
+    /// The stages before R move this cycle.
+    pub go: Signal<Out, Bit>,
     pub out: Signal<Out, RunPix>,
     /// The pixel out last has joins still to come after this cycle's.
     pub more: Signal<Out, Bit>,
@@ -64,6 +72,9 @@ pub struct FccRepReplay {
     r_emit: DFF<Bit>,
     r_step: DFF<ReplayStep>,
     rb: DFF<Bit>,
+    /// `rb`'s next value; `go_q` holds its complement.
+    rb_n: Signal<Local, Bit>,
+    go_q: FccFanoutReg<Bit>,
     /// R's pixel is new: it goes out this cycle.
     r_new: DFF<Bit>,
     /// The flags left with the value just sent cleared.
@@ -85,7 +96,7 @@ impl FccRepReplay {
             f_more: Default::default(),
             f_left: vec_of(n),
             f_val: vec_of(n),
-            busy: Default::default(),
+            go: Default::default(),
             out: Default::default(),
             more: Default::default(),
             j_valid: Default::default(),
@@ -104,6 +115,8 @@ impl FccRepReplay {
             r_emit: Default::default(),
             r_step: Default::default(),
             rb: Default::default(),
+            rb_n: Default::default(),
+            go_q: Default::default(),
             r_new: Default::default(),
             rem2: vec_of(n),
             pix_zero: Constant::new(RunPix::default()),
@@ -116,6 +129,8 @@ impl Logic for FccRepReplay {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clk, r_pix, r_m, r_x, r_emit, r_step, rb, r_new);
+        self.go_q.clock.next = self.clk.val();
+        self.rb_n.next = self.rb.q.val();
         for b in 0..self.f_left.len() {
             self.r_rem[b].clock.next = self.clk.val();
             self.r_first[b].clock.next = self.clk.val();
@@ -128,7 +143,7 @@ impl Logic for FccRepReplay {
             self.take.val[b].next = self.r_val[b].q.val();
             self.rem2[b].next = self.r_rem[b].q.val() & (self.r_val[b].q.val() != self.r_x.q.val());
         }
-        if !self.rb.q.val() {
+        if self.go_q.q.val() {
             // R takes F's pixel.
             self.r_pix.d.next = self.f_pix.val();
             self.r_new.d.next = self.f_pix.val().valid;
@@ -142,11 +157,11 @@ impl Logic for FccRepReplay {
             self.r_step.d.next = ReplayStep::Idle;
             if self.f_pix.val().valid & self.f_pix.val().ring {
                 self.r_step.d.next = ReplayStep::Ring;
-                self.rb.d.next = true;
+                self.rb_n.next = true;
             }
             if self.f_pix.val().valid & self.f_more.val() {
                 self.r_step.d.next = ReplayStep::Pick;
-                self.rb.d.next = true;
+                self.rb_n.next = true;
             }
         } else {
             self.r_emit.d.next = false;
@@ -163,7 +178,7 @@ impl Logic for FccRepReplay {
                         self.r_step.d.next = ReplayStep::Ring;
                     } else {
                         self.r_step.d.next = ReplayStep::Idle;
-                        self.rb.d.next = false;
+                        self.rb_n.next = false;
                     }
                 }
                 ReplayStep::Take => {
@@ -183,13 +198,13 @@ impl Logic for FccRepReplay {
                 ReplayStep::Ring => {
                     if !self.r_emit.q.val() {
                         self.r_step.d.next = ReplayStep::Idle;
-                        self.rb.d.next = false;
+                        self.rb_n.next = false;
                     }
                 }
             }
         }
         // Out: R's pixel in its first cycle, R's join in any.
-        self.busy.next = self.rb.q.val();
+        self.go.next = self.go_q.q.val();
         self.more.next =
             self.rb.q.val() & !((self.r_step.q.val() == ReplayStep::Ring) & !self.r_emit.q.val());
         self.j_valid.next = self.r_pix.q.val().valid
@@ -217,7 +232,9 @@ impl Logic for FccRepReplay {
             self.r_pix.d.next = self.pix_zero.val();
             self.r_emit.d.next = false;
             self.r_step.d.next = ReplayStep::Idle;
-            self.rb.d.next = false;
+            self.rb_n.next = false;
         }
+        self.rb.d.next = self.rb_n.val();
+        self.go_q.d.next = !self.rb_n.val();
     }
 }

@@ -1,6 +1,6 @@
 //! `FccRepSieve`: a pixel's first join and the rest flagged, in four
-//! stages after B (docs/column-core.md, item 3), each holding while `hold`
-//! (R replays a pixel):
+//! stages after B (docs/column-core.md, item 3), each moving while `go`
+//! and holding while R replays a pixel:
 //!
 //! * C: the window's values as they were at B, flagged where the pixel
 //!   names them with a value other than its `m`;
@@ -20,7 +20,7 @@ use crate::types::vec_of;
 pub struct FccRepSieve {
     pub clk: Signal<In, Clock>,
     pub rst: Signal<In, Bit>,
-    pub hold: Signal<In, Bit>,
+    pub go: Signal<In, Bit>,
     pub b_pix: Signal<In, RunPix>,
     pub b_mask: Vec<Signal<In, Bit>>,
     pub b_val: Vec<Signal<In, Bits<16>>>,
@@ -67,7 +67,7 @@ impl FccRepSieve {
         Self {
             clk: Default::default(),
             rst: Default::default(),
-            hold: Default::default(),
+            go: Default::default(),
             b_pix: Default::default(),
             b_mask: vec_of(n),
             b_val: vec_of(n),
@@ -144,7 +144,7 @@ impl Logic for FccRepSieve {
                 self.more.next = true;
             }
         }
-        if !self.hold.val() {
+        if self.go.val() {
             self.c_pix.d.next = self.b_pix.val();
             self.c_m.d.next = self.b_m.val();
             self.d_pix.d.next = self.c_pix.q.val();
