@@ -16,6 +16,8 @@
 
 use rust_hdl::prelude::*;
 
+use crate::fcc_fanout_reg::FccFanoutReg;
+
 use crate::fcc_ram::FccRam;
 use crate::types::{kb, vec_of};
 
@@ -33,15 +35,15 @@ pub struct FccStreamFifo<T: Synth, const A: usize, const AP1: usize> {
     pub take: Signal<In, Bit>,
     pub level: Signal<Out, Bits<AP1>>,
     ram: FccRam<T, A>,
-    ahead: Vec<DFF<T>>,
+    ahead: Vec<FccFanoutReg<T>>,
     /// Entries held ahead (0 to 4), and whether any is.
     held: DFF<Bits<3>>,
-    held_any: DFF<Bit>,
+    held_any: FccFanoutReg<Bit>,
     /// Reads issued one and two cycles ago (the latter's word shows now).
-    r1: DFF<Bit>,
-    r2: DFF<Bit>,
-    wp: DFF<Bits<AP1>>,
-    rp: DFF<Bits<AP1>>,
+    r1: FccFanoutReg<Bit>,
+    r2: FccFanoutReg<Bit>,
+    wp: FccFanoutReg<Bits<AP1>>,
+    rp: FccFanoutReg<Bits<AP1>>,
     tp: DFF<Bits<AP1>>,
     level_q: DFF<Bits<AP1>>,
     issue: Signal<Local, Bit>,

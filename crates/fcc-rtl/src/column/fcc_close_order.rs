@@ -21,6 +21,8 @@
 
 use rust_hdl::prelude::*;
 
+use crate::fcc_fanout_reg::FccFanoutReg;
+
 use super::fcc_label_sets::SLOT_BITS;
 use super::FIRST_BITS;
 use crate::types::vec_of;
@@ -64,7 +66,7 @@ pub struct FccCloseOrder {
     lt: Vec<Signal<Local, Bit>>,
     mv: Vec<Signal<Local, CloseMove>>,
     // The entries: valid, key, slot.
-    ev: Vec<DFF<Bit>>,
+    ev: Vec<FccFanoutReg<Bit>>,
     ek: Vec<DFF<Bits<CLOSE_KEY_BITS>>>,
     es: Vec<DFF<Bits<SLOT_BITS>>>,
     _n: usize,

@@ -16,6 +16,8 @@
 
 use rust_hdl::prelude::*;
 
+use crate::fcc_fanout_reg::FccFanoutReg;
+
 use super::fcc_close_order::CLOSE_KEY_BITS;
 use super::fcc_closer::{WaitEntry, WAIT_BITS};
 use super::fcc_label_sets::SLOT_BITS;
@@ -75,7 +77,7 @@ pub struct FccCloserPass {
     left: DFF<Bits<WAIT_BITS>>,
     // The entry taken, and whether it is due by `pass_col`.
     r1v: DFF<Bit>,
-    r1: DFF<WaitEntry>,
+    r1: FccFanoutReg<WaitEntry>,
     r1n: DFF<Bit>,
     one: Constant<Bits<WAIT_BITS>>,
     col_one: Constant<Bits<13>>,

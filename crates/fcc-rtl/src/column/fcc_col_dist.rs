@@ -10,6 +10,8 @@
 use fcc_params::FccParams;
 use rust_hdl::prelude::*;
 
+use crate::fcc_fanout_reg::FccFanoutReg;
+
 use super::RunPix;
 use crate::fcc_dist_unit::FccDistUnit;
 use crate::fcc_sq_dist::SQ_LATENCY;
@@ -45,7 +47,7 @@ pub struct FccColDist {
     key_d: Vec<DFF<Bits<16>>>,
     cv_d: Vec<DFF<Bits<36>>>,
     ckey_d: Vec<DFF<Bits<16>>>,
-    ccv_d: Vec<DFF<Bits<36>>>,
+    ccv_d: Vec<FccFanoutReg<Bits<36>>>,
     /// The centre and the labels, `SQ_LATENCY` stages (entry e's at `7e + s`).
     cd: Vec<DFF<RunPix>>,
     label_d: Vec<DFF<Bits<16>>>,

@@ -31,6 +31,8 @@
 use fcc_params::FccParams;
 use rust_hdl::prelude::*;
 
+use crate::fcc_fanout_reg::FccFanoutReg;
+
 use super::fcc_col_edge::FccColEdge;
 use super::fcc_col_word_split::FccColWordSplit;
 use super::{ColWord, RunPix};
@@ -67,7 +69,7 @@ pub struct FccColWindow {
     lok_lane: FccWordWindow<Bit, 7>,
     split: Vec<FccColWordSplit>,
     masks: FccColEdge,
-    pd: Vec<DFF<RunPix>>,
+    pd: Vec<FccFanoutReg<RunPix>>,
     up: Vec<DFF<ColWord>>,
     up_lok: Vec<DFF<Bit>>,
     word: Signal<Local, ColWord>,

@@ -35,6 +35,8 @@
 use fcc_params::FccParams;
 use rust_hdl::prelude::*;
 
+use crate::fcc_fanout_reg::FccFanoutReg;
+
 use crate::fcc_ram::FccRam;
 use crate::types::{kb, vec_of};
 
@@ -63,7 +65,7 @@ pub struct FccLabelPool {
     fifo: FccRam<Bits<16>, 16>,
     queue: Vec<DFF<Bits<16>>>,
     queued: DFF<Bits<3>>,
-    queue_any: DFF<Bit>,
+    queue_any: FccFanoutReg<Bit>,
     /// Reads of the FIFO issued one and two cycles ago (the latter's word
     /// shows now).
     read_s1: DFF<Bit>,

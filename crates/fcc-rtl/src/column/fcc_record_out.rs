@@ -11,6 +11,8 @@
 
 use rust_hdl::prelude::*;
 
+use crate::fcc_fanout_reg::FccFanoutReg;
+
 use super::fcc_rec_beats::FccRecBeats;
 use super::AccWord;
 use crate::types::kb;
@@ -44,7 +46,7 @@ pub struct FccRecordOut {
     rec: DFF<AccWord>,
     rid: DFF<Bits<20>>,
     rclosed: DFF<Bits<13>>,
-    count: DFF<Bits<4>>,
+    count: FccFanoutReg<Bits<4>>,
     state: DFF<OutState>,
     /// Records sent since the last end beat, counted in place in the end
     /// beat (masked to the field's bits there).

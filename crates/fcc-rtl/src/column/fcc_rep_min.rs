@@ -15,6 +15,8 @@
 
 use rust_hdl::prelude::*;
 
+use crate::fcc_fanout_reg::FccFanoutReg;
+
 use crate::types::{kb, vec_of};
 
 #[derive(LogicBlock)]
@@ -26,7 +28,7 @@ pub struct FccRepMin {
     pub ov: Vec<Signal<In, Bit>>,
     pub m: Signal<In, Bits<16>>,
     pub out: Vec<Signal<Out, Bits<16>>>,
-    out_q: Vec<DFF<Bits<16>>>,
+    out_q: Vec<FccFanoutReg<Bits<16>>>,
     /// Group `g`'s value `c` wins, at `g * gs + c`; `m` wins.
     win: Vec<Signal<Local, Bit>>,
     win_m: Vec<Signal<Local, Bit>>,

@@ -68,7 +68,7 @@ pub struct FccRepReplay {
     r_first: Vec<DFF<Bit>>,
     r_val: Vec<DFF<Bits<16>>>,
     r_m: DFF<Bits<16>>,
-    r_x: DFF<Bits<16>>,
+    r_x: FccFanoutReg<Bits<16>>,
     r_emit: DFF<Bit>,
     r_step: DFF<ReplayStep>,
     rb: DFF<Bit>,

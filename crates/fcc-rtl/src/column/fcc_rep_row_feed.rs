@@ -23,6 +23,8 @@
 
 use rust_hdl::prelude::*;
 
+use crate::fcc_fanout_reg::FccFanoutReg;
+
 use super::REP_AGE_BITS;
 use crate::fcc_ram::FccRam;
 use crate::types::{kb, vec_of};
@@ -47,19 +49,19 @@ pub struct FccRepRowFeed {
     labels: Vec<FccRam<Bits<16>, 7>>,
     reps: Vec<FccRam<Bits<16>, 7>>,
     ages: Vec<FccRam<Bits<REP_AGE_BITS>, 7>>,
-    rd_row: DFF<Bits<7>>,
+    rd_row: FccFanoutReg<Bits<7>>,
     wr_row: DFF<Bits<7>>,
     fresh: DFF<Bit>,
     /// A read issued one and two cycles ago, and whether it was fresh.
     v1: DFF<Bit>,
-    v2: DFF<Bit>,
+    v2: FccFanoutReg<Bit>,
     f1: DFF<Bit>,
-    f2: DFF<Bit>,
+    f2: FccFanoutReg<Bit>,
     count: DFF<Bits<3>>,
     /// The rows ready, head first: entry `j`'s slot `k` at `j * (h + 1) + k`.
     q_label: Vec<DFF<Bits<16>>>,
     q_rep: Vec<DFF<Bits<16>>>,
-    q_age: Vec<DFF<Bits<REP_AGE_BITS>>>,
+    q_age: Vec<FccFanoutReg<Bits<REP_AGE_BITS>>>,
     issue: Signal<Local, Bit>,
     /// Rows ready and coming.
     infl: Signal<Local, Bits<3>>,

@@ -11,6 +11,8 @@
 
 use rust_hdl::prelude::*;
 
+use crate::fcc_fanout_reg::FccFanoutReg;
+
 use super::fcc_rep_first::FccRepFirst;
 use super::fcc_rep_take::FccRepTake;
 use super::RunPix;
@@ -50,7 +52,7 @@ pub struct FccRepSieve {
     e_f: Vec<DFF<Bit>>,
     e_val: Vec<DFF<Bits<16>>>,
     e_m: DFF<Bits<16>>,
-    e_x: DFF<Bits<16>>,
+    e_x: FccFanoutReg<Bits<16>>,
     e_any: DFF<Bit>,
     f_pix: DFF<RunPix>,
     f_g: Vec<DFF<Bit>>,

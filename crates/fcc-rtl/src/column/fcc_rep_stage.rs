@@ -6,6 +6,8 @@
 
 use rust_hdl::prelude::*;
 
+use crate::fcc_fanout_reg::FccFanoutReg;
+
 use super::RunPix;
 use crate::types::{kb, vec_of};
 
@@ -22,7 +24,7 @@ pub struct FccRepStage {
     pub mask: Vec<Signal<Out, Bit>>,
     pub sh: Signal<Out, Bits<3>>,
     pix_q: DFF<RunPix>,
-    mask_q: Vec<DFF<Bit>>,
+    mask_q: Vec<FccFanoutReg<Bit>>,
     sh_q: DFF<Bits<3>>,
     pix_zero: Constant<RunPix>,
     one3: Constant<Bits<3>>,

@@ -27,6 +27,8 @@
 use fcc_params::limits;
 use rust_hdl::prelude::*;
 
+use crate::fcc_fanout_reg::FccFanoutReg;
+
 use super::fcc_open_room::{FccOpenRoom, OPEN_ROOM_BITS};
 use super::fcc_row_entry::FccRowEntry;
 use super::fcc_run_decide::FccRunDecide;
@@ -78,9 +80,9 @@ pub struct FccRowRuns {
     pub out: Signal<Out, RunPix>,
     pts: FccRam<RowPts, ROW_BITS>,
     labs: FccRam<RowLabs, ROW_BITS>,
-    pd: Vec<DFF<ColPix>>,
+    pd: Vec<FccFanoutReg<ColPix>>,
     entry: FccRowEntry,
-    cd: Vec<DFF<RunCtl>>,
+    cd: Vec<FccFanoutReg<RunCtl>>,
     near: FccSqDist,
     ring: FccSqDist,
     /// N3: the two tests' points' keys and addends (pixel and latest;

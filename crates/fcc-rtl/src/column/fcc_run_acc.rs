@@ -37,6 +37,8 @@
 
 use rust_hdl::prelude::*;
 
+use crate::fcc_fanout_reg::FccFanoutReg;
+
 use super::fcc_acc_merge::FccAccMerge;
 use super::fcc_acc_pixel::{FccAccPixel, ACC_PIXEL_LATENCY};
 use super::{AccWord, RunPix};
@@ -161,11 +163,11 @@ pub struct FccRunAcc {
     e_b: DFF<AccWord>,
     e_old: DFF<AccWord>,
     /// W: what it does, the row's new accumulator, the entry as read.
-    w_wr: DFF<RunWrite>,
+    w_wr: FccFanoutReg<RunWrite>,
     w_acc: DFF<AccWord>,
     w_old: DFF<AccWord>,
     w_entry: Signal<Local, RunEntry>,
-    f_valid_q: DFF<Bit>,
+    f_valid_q: FccFanoutReg<Bit>,
     f_label_q: DFF<Bits<16>>,
     f_acc_q: DFF<AccWord>,
     f_end_q: DFF<Bit>,

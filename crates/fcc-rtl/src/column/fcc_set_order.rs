@@ -9,6 +9,8 @@
 
 use rust_hdl::prelude::*;
 
+use crate::fcc_fanout_reg::FccFanoutReg;
+
 use super::fcc_label_sets::SLOT_BITS;
 use super::fcc_set_queue::SetQEv;
 use crate::types::{kb, vec_of};
@@ -68,7 +70,7 @@ pub struct FccSetOrder {
     /// The entries waiting for an event, oldest at `pr`.
     pend: Vec<DFF<Bits<3>>>,
     wr: DFF<Bits<3>>,
-    rd: DFF<Bits<3>>,
+    rd: FccFanoutReg<Bits<3>>,
     pw: DFF<Bits<3>>,
     pr: DFF<Bits<3>>,
     count: DFF<Bits<4>>,

@@ -22,6 +22,8 @@
 
 use rust_hdl::prelude::*;
 
+use crate::fcc_fanout_reg::FccFanoutReg;
+
 use super::fcc_set_queue::SetQBundle;
 
 #[derive(LogicBlock, Default)]
@@ -62,7 +64,7 @@ pub struct FccSetPack {
     pub q_row: Signal<Out, Bits<7>>,
     /// The entry and whether it holds an op.
     e: DFF<SetQBundle>,
-    ev: DFF<Bit>,
+    ev: FccFanoutReg<Bit>,
     /// The last row's marker waits for the pixel's joins; its column.
     pend: DFF<Bit>,
     mcol: DFF<Bits<12>>,

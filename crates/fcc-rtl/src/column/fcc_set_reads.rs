@@ -16,6 +16,8 @@
 
 use rust_hdl::prelude::*;
 
+use crate::fcc_fanout_reg::FccFanoutReg;
+
 use super::fcc_set_op::SEQ_BITS;
 use super::fcc_set_walks::SET_OPS;
 use crate::types::vec_of;
@@ -43,7 +45,7 @@ pub struct FccSetReads {
     pub b: Signal<In, Bits<16>>,
     pub valid: Signal<Out, Bit>,
     pub head: Signal<Out, SetRead>,
-    v: Vec<DFF<Bit>>,
+    v: Vec<FccFanoutReg<Bit>>,
     e: Vec<DFF<SetRead>>,
     ra: Signal<Local, SetRead>,
     rb: Signal<Local, SetRead>,

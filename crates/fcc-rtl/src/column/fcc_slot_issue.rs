@@ -14,6 +14,8 @@
 
 use rust_hdl::prelude::*;
 
+use crate::fcc_fanout_reg::FccFanoutReg;
+
 use super::fcc_label_sets::SLOT_BITS;
 
 /// An op on the record store.
@@ -83,7 +85,7 @@ pub struct FccSlotIssue {
     sv3: DFF<Bit>,
     sh3: DFF<SlotHalf>,
     ss3: DFF<Bits<SLOT_BITS>>,
-    clear: DFF<Bit>,
+    clear: FccFanoutReg<Bit>,
     next: DFF<Bits<SLOT_BITS>>,
     zero: Constant<Bits<SLOT_BITS>>,
     one: Constant<Bits<SLOT_BITS>>,

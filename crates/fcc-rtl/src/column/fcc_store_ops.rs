@@ -32,6 +32,8 @@
 
 use rust_hdl::prelude::*;
 
+use crate::fcc_fanout_reg::FccFanoutReg;
+
 use super::fcc_close_order::CLOSE_KEY_BITS;
 use super::fcc_label_sets::SLOT_BITS;
 use super::fcc_slot_issue::SlotOp;
@@ -123,7 +125,7 @@ pub struct FccStoreOps {
     ev_go: Signal<Local, Bit>,
     mark_in: Signal<Local, Bit>,
     /// The ring join's seam add is done; its merge is next.
-    seamed: DFF<Bit>,
+    seamed: FccFanoutReg<Bit>,
     gap: DFF<Bits<3>>,
     mv: Vec<DFF<Bit>>,
     mc: Vec<DFF<Bits<12>>>,
