@@ -8,7 +8,10 @@
 //! column-start check. Pixels in (`s_axis_*`, spec §9's beats in column
 //! order), one record per cluster out as it closes and an end beat per
 //! frame (`m_axis_*`, spec §9.4). The run parameters come from the
-//! registers at the top. This block is wiring.
+//! registers at the top. This block is wiring, and the reset tree: each
+//! half has its own copy of `rst` (a register of `rst_next`, as `rst` is),
+//! which Vivado replicates further (`FccKeepReg::with_max_fanout`); the
+//! settle counts, a few registers, take `rst` itself.
 
 use fcc_params::FccParams;
 use rust_hdl::prelude::*;
@@ -19,6 +22,8 @@ use super::fcc_col_store::FccColStore;
 use super::fcc_col_table::FccColTable;
 use super::fcc_label_sets::SLOT_BITS;
 use super::fcc_open_room::OPEN_ROOM_BITS;
+use crate::fcc_fanout_reg::MAX_FANOUT;
+use crate::fcc_keep_reg::FccKeepReg;
 use crate::types::kb;
 
 #[derive(LogicBlock)]
@@ -79,6 +84,10 @@ pub struct FccColCore {
     sets: FccColTable,
     store: FccColStore,
     settle: FccColSettle,
+    /// The reset tree: `rst` again, one copy per half.
+    inp_rst: FccKeepReg<Bit>,
+    sets_rst: FccKeepReg<Bit>,
+    store_rst: FccKeepReg<Bit>,
     /// Slots in use.
     used: Signal<Local, Bits<16>>,
     max_slot: Constant<Bits<16>>,
@@ -131,6 +140,9 @@ impl FccColCore {
             sets: FccColTable::new(p),
             store: FccColStore::new(p),
             settle: Default::default(),
+            inp_rst: FccKeepReg::with_max_fanout(MAX_FANOUT),
+            sets_rst: FccKeepReg::with_max_fanout(MAX_FANOUT),
+            store_rst: FccKeepReg::with_max_fanout(MAX_FANOUT),
             used: Default::default(),
             max_slot: kb((1 << SLOT_BITS) - 1),
         }
@@ -140,9 +152,16 @@ impl FccColCore {
 impl Logic for FccColCore {
     #[hdl_gen]
     fn update(&mut self) {
+        // The reset tree: each copy is `rst`'s flip-flop again.
+        self.inp_rst.clock.next = self.clk.val();
+        self.sets_rst.clock.next = self.clk.val();
+        self.store_rst.clock.next = self.clk.val();
+        self.inp_rst.d.next = self.rst_next.val();
+        self.sets_rst.d.next = self.rst_next.val();
+        self.store_rst.d.next = self.rst_next.val();
         // The input half.
         self.inp.clk.next = self.clk.val();
-        self.inp.rst.next = self.rst.val();
+        self.inp.rst.next = self.inp_rst.q.val();
         self.inp.rst_next.next = self.rst_next.val();
         self.inp.s_axis_tdata.next = self.s_axis_tdata.val();
         self.inp.s_axis_tvalid.next = self.s_axis_tvalid.val();
@@ -181,7 +200,7 @@ impl Logic for FccColCore {
         self.inp.take.next = self.sets.take.val();
         // The slot table half.
         self.sets.clk.next = self.clk.val();
-        self.sets.rst.next = self.rst.val();
+        self.sets.rst.next = self.sets_rst.q.val();
         self.sets.last_row.next = self.last_row.val();
         self.sets.last_col.next = self.last_col.val();
         self.sets.half.next = self.col_half.val();
@@ -200,7 +219,7 @@ impl Logic for FccColCore {
         self.bad.next = self.sets.bad.val() | self.store.bad.val();
         // The record store half.
         self.store.clk.next = self.clk.val();
-        self.store.rst.next = self.rst.val();
+        self.store.rst.next = self.store_rst.q.val();
         self.store.half.next = self.h.val();
         self.store.last_col.next = self.last_col.val();
         self.store.ev_valid.next = self.sets.ev_valid.val();

@@ -21,6 +21,8 @@
 use fcc_params::FccParams;
 use rust_hdl::prelude::*;
 
+use crate::fcc_fanout_net::FccFanoutNet;
+
 use super::fcc_col_end::FccColEnd;
 use super::fcc_flush_wait::FccFlushWait;
 use super::fcc_label_sets::SLOT_BITS;
@@ -74,6 +76,9 @@ pub struct FccColTable {
     pub miss: Signal<Out, Bit>,
     pub bad: Signal<Out, Bit>,
     go: Signal<Local, Bit>,
+    /// `go` reaches every lane of the slot buffer and both blocks'
+    /// pipelines: its logic is replicated.
+    go_net: FccFanoutNet<Bit>,
     joins: FccRepJoins,
     runs: FccRunAcc,
     pack: FccSetPack,
@@ -119,6 +124,7 @@ impl FccColTable {
             miss: Default::default(),
             bad: Default::default(),
             go: Default::default(),
+            go_net: Default::default(),
             joins: FccRepJoins::new(p.rows, p.fsize),
             runs: FccRunAcc::new(p.rows),
             pack: Default::default(),
@@ -134,12 +140,13 @@ impl Logic for FccColTable {
     fn update(&mut self) {
         // The head goes into both blocks together, while both and the
         // rooms behind them allow.
-        self.go.next = self.valid.val()
+        self.go_net.x.next = self.valid.val()
             & self.joins.ready.val()
             & self.runs.ready.val()
             & self.flushes.room.val()
             & self.queue.room.val()
             & !self.ends.busy.val();
+        self.go.next = self.go_net.y.val();
         self.take.next = self.go.val();
         self.joins.clk.next = self.clk.val();
         self.joins.rst.next = self.rst.val();
