@@ -16,6 +16,8 @@
 
 use rust_hdl::prelude::*;
 
+use crate::fcc_fanout_net::FccFanoutNet;
+
 use crate::fcc_fanout_reg::FccFanoutReg;
 
 use crate::fcc_ram::FccRam;
@@ -47,10 +49,14 @@ pub struct FccStreamFifo<T: Synth, const A: usize, const AP1: usize> {
     tp: DFF<Bits<AP1>>,
     level_q: DFF<Bits<AP1>>,
     issue: Signal<Local, Bit>,
+    /// `issue`, replicated by Vivado (it reaches many loads).
+    issue_net: FccFanoutNet<Bit>,
     pop: Signal<Local, Bit>,
     /// Entries held after this cycle's pop: where an arriving word goes.
     kept: Signal<Local, Bits<3>>,
     held_m1: Signal<Local, Bits<3>>,
+    /// `held_m1`, replicated by Vivado (it reaches many loads).
+    held_m1_net: FccFanoutNet<Bits<3>>,
     held_p1: Signal<Local, Bits<3>>,
     /// Entries held and reads on their way.
     claimed: Signal<Local, Bits<3>>,
@@ -86,9 +92,11 @@ impl<T: Synth, const A: usize, const AP1: usize> Default for FccStreamFifo<T, A,
             tp: Default::default(),
             level_q: Default::default(),
             issue: Default::default(),
+            issue_net: Default::default(),
             pop: Default::default(),
             kept: Default::default(),
             held_m1: Default::default(),
+            held_m1_net: Default::default(),
             held_p1: Default::default(),
             claimed: Default::default(),
             _n: AHEAD,
@@ -126,12 +134,12 @@ impl<T: Synth, const A: usize, const AP1: usize> Logic for FccStreamFifo<T, A, A
         }
         self.issue.next =
             (self.rp.q.val() != self.wp.q.val()) & (self.claimed.val() < self.room.val());
-        self.ram.read_en.next = self.issue.val();
+        self.ram.read_en.next = self.issue_net.y.val();
         self.ram.read_addr.next = self.rp.q.val().get_bits::<A>(0);
-        if self.issue.val() {
+        if self.issue_net.y.val() {
             self.rp.d.next = self.rp.q.val() + self.one.val();
         }
-        self.r1.d.next = self.issue.val();
+        self.r1.d.next = self.issue_net.y.val();
         self.r2.d.next = self.r1.q.val();
         // The entries: a pop moves them up, an arriving word goes after
         // the last one kept.
@@ -141,7 +149,7 @@ impl<T: Synth, const A: usize, const AP1: usize> Logic for FccStreamFifo<T, A, A
         self.held_p1.next = self.held.q.val() + self.one3.val();
         self.kept.next = self.held.q.val();
         if self.pop.val() {
-            self.kept.next = self.held_m1.val();
+            self.kept.next = self.held_m1_net.y.val();
         }
         for i in 0..(self._n - 1) {
             if self.pop.val() {
@@ -155,7 +163,7 @@ impl<T: Synth, const A: usize, const AP1: usize> Logic for FccStreamFifo<T, A, A
         }
         self.held.d.next = self.held.q.val();
         if self.pop.val() & !self.r2.q.val() {
-            self.held.d.next = self.held_m1.val();
+            self.held.d.next = self.held_m1_net.y.val();
         }
         if !self.pop.val() & self.r2.q.val() {
             self.held.d.next = self.held_p1.val();
@@ -183,5 +191,7 @@ impl<T: Synth, const A: usize, const AP1: usize> Logic for FccStreamFifo<T, A, A
             self.tp.d.next = self.zero.val();
             self.level_q.d.next = self.zero.val();
         }
+        self.held_m1_net.x.next = self.held_m1.val();
+        self.issue_net.x.next = self.issue.val();
     }
 }

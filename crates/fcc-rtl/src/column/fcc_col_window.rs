@@ -31,6 +31,8 @@
 use fcc_params::FccParams;
 use rust_hdl::prelude::*;
 
+use crate::fcc_fanout_net::FccFanoutNet;
+
 use crate::fcc_fanout_reg::FccFanoutReg;
 
 use super::fcc_col_edge::FccColEdge;
@@ -77,6 +79,10 @@ pub struct FccColWindow {
     /// (registered: `last_row` is constant while a frame runs).
     wrap_at: DFF<Bits<7>>,
     rd_row: Signal<Local, Bits<7>>,
+    /// `rd_row`, replicated by Vivado (it reaches many loads).
+    rd_row_net: FccFanoutNet<Bits<7>>,
+    /// The reads' enable, replicated by Vivado as `rd_row`.
+    rd_en_net: FccFanoutNet<Bit>,
     h7: Constant<Bits<7>>,
     hm1: Constant<Bits<7>>,
     _k: usize,
@@ -111,6 +117,8 @@ impl FccColWindow {
             word: Default::default(),
             wrap_at: Default::default(),
             rd_row: Default::default(),
+            rd_row_net: Default::default(),
+            rd_en_net: Default::default(),
             h7: kb(h as u64),
             hm1: kb(h as u64 - 1),
             _k: k,
@@ -133,11 +141,12 @@ impl Logic for FccColWindow {
             self.rd_row.next = self.inp.val().row - self.wrap_at.q.val();
         }
         self.lane.clk.next = self.clk.val();
-        self.lane.read_en.next = self.inp.val().valid;
-        self.lane.read_addr.next = self.rd_row.val();
+        self.rd_en_net.x.next = self.inp.val().valid;
+        self.lane.read_en.next = self.rd_en_net.y.val();
+        self.lane.read_addr.next = self.rd_row_net.y.val();
         self.lok_lane.clk.next = self.clk.val();
-        self.lok_lane.read_en.next = self.inp.val().valid;
-        self.lok_lane.read_addr.next = self.rd_row.val();
+        self.lok_lane.read_en.next = self.rd_en_net.y.val();
+        self.lok_lane.read_addr.next = self.rd_row_net.y.val();
         self.pd[0].d.next = self.inp.val();
         self.pd[1].d.next = self.pd[0].q.val();
         // ---- T2: shift, write the cascade and the column's register.
@@ -220,5 +229,6 @@ impl Logic for FccColWindow {
             self.pd[2].d.next.valid = false;
         }
         self.centre.next = self.pd[2].q.val();
+        self.rd_row_net.x.next = self.rd_row.val();
     }
 }

@@ -23,6 +23,8 @@
 
 use rust_hdl::prelude::*;
 
+use crate::fcc_fanout_net::FccFanoutNet;
+
 use crate::fcc_fanout_reg::FccFanoutReg;
 
 use super::REP_AGE_BITS;
@@ -67,6 +69,8 @@ pub struct FccRepRowFeed {
     infl: Signal<Local, Bits<3>>,
     /// The entry a row arriving takes.
     at: Signal<Local, Bits<3>>,
+    /// `at`, replicated by Vivado (it reaches many loads).
+    at_net: FccFanoutNet<Bits<3>>,
     in_label: Vec<Signal<Local, Bits<16>>>,
     in_rep: Vec<Signal<Local, Bits<16>>>,
     in_age: Vec<Signal<Local, Bits<REP_AGE_BITS>>>,
@@ -121,6 +125,7 @@ impl FccRepRowFeed {
             issue: Default::default(),
             infl: Default::default(),
             at: Default::default(),
+            at_net: Default::default(),
             in_label: vec_of(n),
             in_rep: vec_of(n),
             in_age: vec_of(n),
@@ -223,10 +228,10 @@ impl Logic for FccRepRowFeed {
             }
         }
         if self.v2.q.val() {
-            self.count.d.next = self.at.val() + self.one3.val();
+            self.count.d.next = self.at_net.y.val() + self.one3.val();
             for nn in self._n..(self._n + 1) {
                 for j in 0..self._d {
-                    if self.at.val() == self.entry_no[j].val() {
+                    if self.at_net.y.val() == self.entry_no[j].val() {
                         for k in 0..self._n {
                             self.q_label[j * nn + k].d.next = self.in_label[k].val();
                             self.q_rep[j * nn + k].d.next = self.in_rep[k].val();
@@ -250,5 +255,6 @@ impl Logic for FccRepRowFeed {
             self.v2.d.next = false;
             self.count.d.next = self.zero3.val();
         }
+        self.at_net.x.next = self.at.val();
     }
 }

@@ -37,6 +37,7 @@
 
 use rust_hdl::prelude::*;
 
+use crate::fcc_fanout_net::FccFanoutNet;
 use crate::fcc_fanout_reg::FccFanoutReg;
 
 use super::fcc_acc_merge::FccAccMerge;
@@ -141,6 +142,9 @@ pub struct FccRunAcc {
     /// read.
     rd_in: Signal<Local, RunStep>,
     rd_step: Signal<Local, RunStep>,
+    /// `rd_step`'s row, the entries' read address, replicated by Vivado
+    /// (it reaches every LUT RAM of the entries).
+    rd_row_net: FccFanoutNet<Bits<ROW_BITS>>,
     /// A pixel is in the steps up to the read's (the frame end's reads
     /// wait for the last pixel's, so that its flushes come first).
     ahead: Signal<Local, Bit>,
@@ -211,6 +215,7 @@ impl FccRunAcc {
             drain_row: Default::default(),
             rd_in: Default::default(),
             rd_step: Default::default(),
+            rd_row_net: Default::default(),
             ahead: Default::default(),
             ahead_step: Default::default(),
             live_row: Default::default(),
@@ -306,7 +311,8 @@ impl Logic for FccRunAcc {
         }
         self.entries.clk.next = self.clk.val();
         self.entries.read_en.next = true;
-        self.entries.read_addr.next = self.rd_step.val().row;
+        self.rd_row_net.x.next = self.rd_step.val().row;
+        self.entries.read_addr.next = self.rd_row_net.y.val();
         self.live_row.d.next = self.rd_step.val().row;
         // The frame-end flush starts once the last pixel is taken, reads
         // once it has issued its read, and reads the rows 0 ..= R - 1.
