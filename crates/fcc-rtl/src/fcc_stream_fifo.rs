@@ -17,9 +17,7 @@
 use rust_hdl::prelude::*;
 
 use crate::fcc_fanout_net::FccFanoutNet;
-
 use crate::fcc_fanout_reg::FccFanoutReg;
-
 use crate::fcc_ram::FccRam;
 use crate::types::{kb, vec_of};
 

@@ -21,10 +21,9 @@
 
 use rust_hdl::prelude::*;
 
-use crate::fcc_fanout_reg::FccFanoutReg;
-
 use super::fcc_label_sets::SLOT_BITS;
 use super::FIRST_BITS;
+use crate::fcc_fanout_reg::FccFanoutReg;
 use crate::types::vec_of;
 
 /// Entries the closer holds.

@@ -16,11 +16,10 @@
 
 use rust_hdl::prelude::*;
 
-use crate::fcc_fanout_reg::FccFanoutReg;
-
 use super::fcc_close_order::CLOSE_KEY_BITS;
 use super::fcc_closer::{WaitEntry, WAIT_BITS};
 use super::fcc_label_sets::SLOT_BITS;
+use crate::fcc_fanout_reg::FccFanoutReg;
 use crate::types::kb;
 
 /// The closer's state.

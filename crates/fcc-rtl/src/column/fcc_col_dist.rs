@@ -10,10 +10,9 @@
 use fcc_params::FccParams;
 use rust_hdl::prelude::*;
 
-use crate::fcc_fanout_reg::FccFanoutReg;
-
 use super::RunPix;
 use crate::fcc_dist_unit::FccDistUnit;
+use crate::fcc_fanout_reg::FccFanoutReg;
 use crate::fcc_sq_dist::SQ_LATENCY;
 use crate::fcc_thr_window::THR_WIN_LAG;
 use crate::types::{kb, vec_of};

@@ -21,8 +21,6 @@
 use fcc_params::FccParams;
 use rust_hdl::prelude::*;
 
-use crate::fcc_fanout_net::FccFanoutNet;
-
 use super::fcc_col_end::FccColEnd;
 use super::fcc_flush_wait::FccFlushWait;
 use super::fcc_label_sets::SLOT_BITS;
@@ -31,6 +29,7 @@ use super::fcc_run_acc::{FccRunAcc, RUN_ACC_LATENCY};
 use super::fcc_set_pack::FccSetPack;
 use super::fcc_set_queue::FccSetQueue;
 use super::{AccWord, RunPix};
+use crate::fcc_fanout_net::FccFanoutNet;
 use crate::types::vec_of;
 
 #[derive(LogicBlock)]

@@ -31,13 +31,11 @@
 use fcc_params::FccParams;
 use rust_hdl::prelude::*;
 
-use crate::fcc_fanout_net::FccFanoutNet;
-
-use crate::fcc_fanout_reg::FccFanoutReg;
-
 use super::fcc_col_edge::FccColEdge;
 use super::fcc_col_word_split::FccColWordSplit;
 use super::{ColWord, RunPix};
+use crate::fcc_fanout_net::FccFanoutNet;
+use crate::fcc_fanout_reg::FccFanoutReg;
 use crate::fcc_word_window::FccWordWindow;
 use crate::types::{kb, vec_of};
 

@@ -36,7 +36,6 @@ use fcc_params::FccParams;
 use rust_hdl::prelude::*;
 
 use crate::fcc_fanout_reg::FccFanoutReg;
-
 use crate::fcc_ram::FccRam;
 use crate::types::{kb, vec_of};
 

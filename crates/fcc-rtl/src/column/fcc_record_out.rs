@@ -11,10 +11,9 @@
 
 use rust_hdl::prelude::*;
 
-use crate::fcc_fanout_reg::FccFanoutReg;
-
 use super::fcc_rec_beats::FccRecBeats;
 use super::AccWord;
+use crate::fcc_fanout_reg::FccFanoutReg;
 use crate::types::kb;
 use fcc_pixel::record::{EndField, END_LAYOUT, RECORD_WORDS};
 

@@ -16,7 +16,6 @@
 use rust_hdl::prelude::*;
 
 use crate::fcc_fanout_reg::FccFanoutReg;
-
 use crate::types::{kb, vec_of};
 
 #[derive(LogicBlock)]

@@ -23,11 +23,9 @@
 
 use rust_hdl::prelude::*;
 
-use crate::fcc_fanout_net::FccFanoutNet;
-
-use crate::fcc_fanout_reg::FccFanoutReg;
-
 use super::REP_AGE_BITS;
+use crate::fcc_fanout_net::FccFanoutNet;
+use crate::fcc_fanout_reg::FccFanoutReg;
 use crate::fcc_ram::FccRam;
 use crate::types::{kb, vec_of};
 

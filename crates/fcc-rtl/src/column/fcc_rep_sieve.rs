@@ -11,11 +11,10 @@
 
 use rust_hdl::prelude::*;
 
-use crate::fcc_fanout_reg::FccFanoutReg;
-
 use super::fcc_rep_first::FccRepFirst;
 use super::fcc_rep_take::FccRepTake;
 use super::RunPix;
+use crate::fcc_fanout_reg::FccFanoutReg;
 use crate::types::vec_of;
 
 #[derive(LogicBlock)]

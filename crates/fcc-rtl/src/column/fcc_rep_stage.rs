@@ -6,9 +6,8 @@
 
 use rust_hdl::prelude::*;
 
-use crate::fcc_fanout_reg::FccFanoutReg;
-
 use super::RunPix;
+use crate::fcc_fanout_reg::FccFanoutReg;
 use crate::types::{kb, vec_of};
 
 #[derive(LogicBlock)]

@@ -27,12 +27,11 @@
 use fcc_params::limits;
 use rust_hdl::prelude::*;
 
-use crate::fcc_fanout_reg::FccFanoutReg;
-
 use super::fcc_open_room::{FccOpenRoom, OPEN_ROOM_BITS};
 use super::fcc_row_entry::FccRowEntry;
 use super::fcc_run_decide::FccRunDecide;
 use super::{ColPix, RowLabs, RowPts, RunCtl, RunPix};
+use crate::fcc_fanout_reg::FccFanoutReg;
 use crate::fcc_pix_thr::THR_LAG;
 use crate::fcc_ram::FccRam;
 use crate::fcc_sq_dist::{FccSqDist, SQ_LATENCY};

@@ -37,12 +37,11 @@
 
 use rust_hdl::prelude::*;
 
-use crate::fcc_fanout_net::FccFanoutNet;
-use crate::fcc_fanout_reg::FccFanoutReg;
-
 use super::fcc_acc_merge::FccAccMerge;
 use super::fcc_acc_pixel::{FccAccPixel, ACC_PIXEL_LATENCY};
 use super::{AccWord, RunPix};
+use crate::fcc_fanout_net::FccFanoutNet;
+use crate::fcc_fanout_reg::FccFanoutReg;
 use crate::fcc_ram::FccRam;
 use crate::types::{kb, vec_of};
 

@@ -9,10 +9,9 @@
 
 use rust_hdl::prelude::*;
 
-use crate::fcc_fanout_reg::FccFanoutReg;
-
 use super::fcc_label_sets::SLOT_BITS;
 use super::fcc_set_queue::SetQEv;
+use crate::fcc_fanout_reg::FccFanoutReg;
 use crate::types::{kb, vec_of};
 
 /// Ops issued and not yet out (its pointers are 3 bits).

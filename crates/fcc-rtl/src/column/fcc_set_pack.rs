@@ -22,9 +22,8 @@
 
 use rust_hdl::prelude::*;
 
-use crate::fcc_fanout_reg::FccFanoutReg;
-
 use super::fcc_set_queue::SetQBundle;
+use crate::fcc_fanout_reg::FccFanoutReg;
 
 #[derive(LogicBlock, Default)]
 pub struct FccSetPack {

@@ -16,10 +16,9 @@
 
 use rust_hdl::prelude::*;
 
-use crate::fcc_fanout_reg::FccFanoutReg;
-
 use super::fcc_set_op::SEQ_BITS;
 use super::fcc_set_walks::SET_OPS;
+use crate::fcc_fanout_reg::FccFanoutReg;
 use crate::types::vec_of;
 
 /// Reads waiting at most: two an op in flight.

@@ -14,9 +14,8 @@
 
 use rust_hdl::prelude::*;
 
-use crate::fcc_fanout_reg::FccFanoutReg;
-
 use super::fcc_label_sets::SLOT_BITS;
+use crate::fcc_fanout_reg::FccFanoutReg;
 
 /// An op on the record store.
 #[derive(Copy, Clone, Debug, PartialEq, LogicState)]

@@ -32,13 +32,12 @@
 
 use rust_hdl::prelude::*;
 
-use crate::fcc_fanout_reg::FccFanoutReg;
-
 use super::fcc_close_order::CLOSE_KEY_BITS;
 use super::fcc_label_sets::SLOT_BITS;
 use super::fcc_slot_issue::SlotOp;
 use super::fcc_slot_records::SLOT_RECORDS_LATENCY;
 use super::{AccWord, SlotHolds, SlotWord};
+use crate::fcc_fanout_reg::FccFanoutReg;
 use crate::types::kb;
 
 /// Cycles from a close's taking to the next close: its record out of the
