@@ -132,6 +132,7 @@ impl<T: Synth, const A: usize, const AP1: usize> Logic for FccStreamFifo<T, A, A
         }
         self.issue.next =
             (self.rp.q.val() != self.wp.q.val()) & (self.claimed.val() < self.room.val());
+        self.issue_net.x.next = self.issue.val();
         self.ram.read_en.next = self.issue_net.y.val();
         self.ram.read_addr.next = self.rp.q.val().get_bits::<A>(0);
         if self.issue_net.y.val() {
@@ -144,6 +145,7 @@ impl<T: Synth, const A: usize, const AP1: usize> Logic for FccStreamFifo<T, A, A
         // The counts one less and one more come from the flip-flops, so
         // that the late `pop` only chooses among them.
         self.held_m1.next = self.held.q.val() - self.one3.val();
+        self.held_m1_net.x.next = self.held_m1.val();
         self.held_p1.next = self.held.q.val() + self.one3.val();
         self.kept.next = self.held.q.val();
         if self.pop.val() {
@@ -189,7 +191,5 @@ impl<T: Synth, const A: usize, const AP1: usize> Logic for FccStreamFifo<T, A, A
             self.tp.d.next = self.zero.val();
             self.level_q.d.next = self.zero.val();
         }
-        self.held_m1_net.x.next = self.held_m1.val();
-        self.issue_net.x.next = self.issue.val();
     }
 }

@@ -138,6 +138,7 @@ impl Logic for FccColWindow {
         if self.inp.val().row >= self.wrap_at.q.val() {
             self.rd_row.next = self.inp.val().row - self.wrap_at.q.val();
         }
+        self.rd_row_net.x.next = self.rd_row.val();
         self.lane.clk.next = self.clk.val();
         self.rd_en_net.x.next = self.inp.val().valid;
         self.lane.read_en.next = self.rd_en_net.y.val();
@@ -227,6 +228,5 @@ impl Logic for FccColWindow {
             self.pd[2].d.next.valid = false;
         }
         self.centre.next = self.pd[2].q.val();
-        self.rd_row_net.x.next = self.rd_row.val();
     }
 }

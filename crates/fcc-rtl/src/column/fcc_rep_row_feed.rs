@@ -225,6 +225,7 @@ impl Logic for FccRepRowFeed {
                 }
             }
         }
+        self.at_net.x.next = self.at.val();
         if self.v2.q.val() {
             self.count.d.next = self.at_net.y.val() + self.one3.val();
             for nn in self._n..(self._n + 1) {
@@ -253,6 +254,5 @@ impl Logic for FccRepRowFeed {
             self.v2.d.next = false;
             self.count.d.next = self.zero3.val();
         }
-        self.at_net.x.next = self.at.val();
     }
 }
