@@ -23241,24 +23241,26 @@ module fcc_sort_net__centre_buf__records_k7_668cf05b(clk,rst,push,din,valid,dout
     reg  ram$write_en;
     reg  [8:0] ram$write_addr;
     reg  [49:0] ram$write_data;
+    reg  wp$clock;
     reg  [9:0] wp$d;
     wire  [9:0] wp$q;
-    reg  wp$clock;
+    reg  rp$clock;
     reg  [9:0] rp$d;
     wire  [9:0] rp$q;
-    reg  rp$clock;
     reg  [9:0] tp$d;
     wire  [9:0] tp$q;
     reg  tp$clock;
     reg  [9:0] level_q$d;
     wire  [9:0] level_q$q;
     reg  level_q$clock;
+    reg  r1$clock;
     reg  r1$d;
     wire  r1$q;
-    reg  r1$clock;
+    reg  ov$clock;
     reg  ov$d;
     wire  ov$q;
-    reg  ov$clock;
+    reg  issue_net$x;
+    wire  issue_net$y;
 
     // Local signals
     reg  empty;
@@ -23275,14 +23277,14 @@ module fcc_sort_net__centre_buf__records_k7_668cf05b(clk,rst,push,din,valid,dout
         .write_data(ram$write_data)
     );
     fcc_sort_net__centre_buf__records__wp_k7_668cf05b wp(
+        .clock(wp$clock),
         .d(wp$d),
-        .q(wp$q),
-        .clock(wp$clock)
+        .q(wp$q)
     );
     fcc_sort_net__centre_buf__records__rp_k7_668cf05b rp(
+        .clock(rp$clock),
         .d(rp$d),
-        .q(rp$q),
-        .clock(rp$clock)
+        .q(rp$q)
     );
     fcc_sort_net__centre_buf__records__tp_k7_668cf05b tp(
         .d(tp$d),
@@ -23295,14 +23297,18 @@ module fcc_sort_net__centre_buf__records_k7_668cf05b(clk,rst,push,din,valid,dout
         .clock(level_q$clock)
     );
     fcc_sort_net__centre_buf__records__r1_k7_668cf05b r1(
+        .clock(r1$clock),
         .d(r1$d),
-        .q(r1$q),
-        .clock(r1$clock)
+        .q(r1$q)
     );
     fcc_sort_net__centre_buf__records__ov_k7_668cf05b ov(
+        .clock(ov$clock),
         .d(ov$d),
-        .q(ov$q),
-        .clock(ov$clock)
+        .q(ov$q)
+    );
+    fcc_sort_net__centre_buf__records__issue_net_k7_668cf05b issue_net(
+        .x(issue_net$x),
+        .y(issue_net$y)
     );
 
     // Update code
@@ -23322,12 +23328,13 @@ module fcc_sort_net__centre_buf__records_k7_668cf05b(clk,rst,push,din,valid,dout
         ram$clk = clk;
         empty = rp$q == wp$q;
         issue = ~empty & ~r1$q & (~ov$q | take);
-        ram$read_en = issue;
+        issue_net$x = issue;
+        ram$read_en = issue_net$y;
         ram$read_addr = rp$q[8:0];
-        if (issue) begin
+        if (issue_net$y) begin
             rp$d = rp$q + one;
         end
-        r1$d = issue;
+        r1$d = issue_net$y;
         ov$d = r1$q | (ov$q & ~take);
         ram$write_en = push;
         ram$write_addr = wp$q[8:0];
@@ -23340,7 +23347,7 @@ module fcc_sort_net__centre_buf__records_k7_668cf05b(clk,rst,push,din,valid,dout
         end
         level_q$d = wp$q - tp$q;
         level = level_q$q;
-        ram_re = issue;
+        ram_re = issue_net$y;
         ram_raddr = rp$q[8:0];
         ram_we = push;
         ram_waddr = wp$q[8:0];
@@ -23357,6 +23364,21 @@ module fcc_sort_net__centre_buf__records_k7_668cf05b(clk,rst,push,din,valid,dout
     end
 
 endmodule // fcc_sort_net__centre_buf__records_k7_668cf05b
+
+
+module fcc_sort_net__centre_buf__records__issue_net_k7_668cf05b(x,y);
+
+    // Module arguments
+    input wire  x;
+    output reg  y;
+
+    // Update code (custom)
+    (* max_fanout = 64 *) wire net;
+    assign net = x;
+    always @(*) begin
+        y = net;
+    end
+endmodule // fcc_sort_net__centre_buf__records__issue_net_k7_668cf05b
 
 
 module fcc_sort_net__centre_buf__records__level_q_k7_668cf05b(d,q,clock);
@@ -23378,41 +23400,45 @@ module fcc_sort_net__centre_buf__records__level_q_k7_668cf05b(d,q,clock);
 endmodule // fcc_sort_net__centre_buf__records__level_q_k7_668cf05b
 
 
-module fcc_sort_net__centre_buf__records__ov_k7_668cf05b(d,q,clock);
+module fcc_sort_net__centre_buf__records__ov_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  d;
     output reg  q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg held;
     initial begin
-       q = 1'h0;
+        held = 1'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__centre_buf__records__ov_k7_668cf05b
 
 
-module fcc_sort_net__centre_buf__records__r1_k7_668cf05b(d,q,clock);
+module fcc_sort_net__centre_buf__records__r1_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  d;
     output reg  q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg held;
     initial begin
-       q = 1'h0;
+        held = 1'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__centre_buf__records__r1_k7_668cf05b
 
 
@@ -23443,22 +23469,24 @@ module fcc_sort_net__centre_buf__records__ram_k7_668cf05b(clk,read_en,read_addr,
 endmodule // fcc_sort_net__centre_buf__records__ram_k7_668cf05b
 
 
-module fcc_sort_net__centre_buf__records__rp_k7_668cf05b(d,q,clock);
+module fcc_sort_net__centre_buf__records__rp_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [9:0] d;
     output reg  [9:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [9:0] held;
     initial begin
-       q = 10'h0;
+        held = 10'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__centre_buf__records__rp_k7_668cf05b
 
 
@@ -23481,22 +23509,24 @@ module fcc_sort_net__centre_buf__records__tp_k7_668cf05b(d,q,clock);
 endmodule // fcc_sort_net__centre_buf__records__tp_k7_668cf05b
 
 
-module fcc_sort_net__centre_buf__records__wp_k7_668cf05b(d,q,clock);
+module fcc_sort_net__centre_buf__records__wp_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [9:0] d;
     output reg  [9:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [9:0] held;
     initial begin
-       q = 10'h0;
+        held = 10'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__centre_buf__records__wp_k7_668cf05b
 
 
@@ -53936,24 +53966,26 @@ module fcc_sort_net__join_queue__queue_k7_668cf05b(clk,rst,push,din,valid,dout,t
     reg  ram$write_en;
     reg  [11:0] ram$write_addr;
     reg  [32:0] ram$write_data;
+    reg  wp$clock;
     reg  [12:0] wp$d;
     wire  [12:0] wp$q;
-    reg  wp$clock;
+    reg  rp$clock;
     reg  [12:0] rp$d;
     wire  [12:0] rp$q;
-    reg  rp$clock;
     reg  [12:0] tp$d;
     wire  [12:0] tp$q;
     reg  tp$clock;
     reg  [12:0] level_q$d;
     wire  [12:0] level_q$q;
     reg  level_q$clock;
+    reg  r1$clock;
     reg  r1$d;
     wire  r1$q;
-    reg  r1$clock;
+    reg  ov$clock;
     reg  ov$d;
     wire  ov$q;
-    reg  ov$clock;
+    reg  issue_net$x;
+    wire  issue_net$y;
 
     // Local signals
     reg  empty;
@@ -53970,14 +54002,14 @@ module fcc_sort_net__join_queue__queue_k7_668cf05b(clk,rst,push,din,valid,dout,t
         .write_data(ram$write_data)
     );
     fcc_sort_net__join_queue__queue__wp_k7_668cf05b wp(
+        .clock(wp$clock),
         .d(wp$d),
-        .q(wp$q),
-        .clock(wp$clock)
+        .q(wp$q)
     );
     fcc_sort_net__join_queue__queue__rp_k7_668cf05b rp(
+        .clock(rp$clock),
         .d(rp$d),
-        .q(rp$q),
-        .clock(rp$clock)
+        .q(rp$q)
     );
     fcc_sort_net__join_queue__queue__tp_k7_668cf05b tp(
         .d(tp$d),
@@ -53990,14 +54022,18 @@ module fcc_sort_net__join_queue__queue_k7_668cf05b(clk,rst,push,din,valid,dout,t
         .clock(level_q$clock)
     );
     fcc_sort_net__join_queue__queue__r1_k7_668cf05b r1(
+        .clock(r1$clock),
         .d(r1$d),
-        .q(r1$q),
-        .clock(r1$clock)
+        .q(r1$q)
     );
     fcc_sort_net__join_queue__queue__ov_k7_668cf05b ov(
+        .clock(ov$clock),
         .d(ov$d),
-        .q(ov$q),
-        .clock(ov$clock)
+        .q(ov$q)
+    );
+    fcc_sort_net__join_queue__queue__issue_net_k7_668cf05b issue_net(
+        .x(issue_net$x),
+        .y(issue_net$y)
     );
 
     // Update code
@@ -54017,12 +54053,13 @@ module fcc_sort_net__join_queue__queue_k7_668cf05b(clk,rst,push,din,valid,dout,t
         ram$clk = clk;
         empty = rp$q == wp$q;
         issue = ~empty & ~r1$q & (~ov$q | take);
-        ram$read_en = issue;
+        issue_net$x = issue;
+        ram$read_en = issue_net$y;
         ram$read_addr = rp$q[11:0];
-        if (issue) begin
+        if (issue_net$y) begin
             rp$d = rp$q + one;
         end
-        r1$d = issue;
+        r1$d = issue_net$y;
         ov$d = r1$q | (ov$q & ~take);
         ram$write_en = push;
         ram$write_addr = wp$q[11:0];
@@ -54035,7 +54072,7 @@ module fcc_sort_net__join_queue__queue_k7_668cf05b(clk,rst,push,din,valid,dout,t
         end
         level_q$d = wp$q - tp$q;
         level = level_q$q;
-        ram_re = issue;
+        ram_re = issue_net$y;
         ram_raddr = rp$q[11:0];
         ram_we = push;
         ram_waddr = wp$q[11:0];
@@ -54052,6 +54089,21 @@ module fcc_sort_net__join_queue__queue_k7_668cf05b(clk,rst,push,din,valid,dout,t
     end
 
 endmodule // fcc_sort_net__join_queue__queue_k7_668cf05b
+
+
+module fcc_sort_net__join_queue__queue__issue_net_k7_668cf05b(x,y);
+
+    // Module arguments
+    input wire  x;
+    output reg  y;
+
+    // Update code (custom)
+    (* max_fanout = 64 *) wire net;
+    assign net = x;
+    always @(*) begin
+        y = net;
+    end
+endmodule // fcc_sort_net__join_queue__queue__issue_net_k7_668cf05b
 
 
 module fcc_sort_net__join_queue__queue__level_q_k7_668cf05b(d,q,clock);
@@ -54073,41 +54125,45 @@ module fcc_sort_net__join_queue__queue__level_q_k7_668cf05b(d,q,clock);
 endmodule // fcc_sort_net__join_queue__queue__level_q_k7_668cf05b
 
 
-module fcc_sort_net__join_queue__queue__ov_k7_668cf05b(d,q,clock);
+module fcc_sort_net__join_queue__queue__ov_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  d;
     output reg  q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg held;
     initial begin
-       q = 1'h0;
+        held = 1'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__join_queue__queue__ov_k7_668cf05b
 
 
-module fcc_sort_net__join_queue__queue__r1_k7_668cf05b(d,q,clock);
+module fcc_sort_net__join_queue__queue__r1_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  d;
     output reg  q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg held;
     initial begin
-       q = 1'h0;
+        held = 1'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__join_queue__queue__r1_k7_668cf05b
 
 
@@ -54138,22 +54194,24 @@ module fcc_sort_net__join_queue__queue__ram_k7_668cf05b(clk,read_en,read_addr,re
 endmodule // fcc_sort_net__join_queue__queue__ram_k7_668cf05b
 
 
-module fcc_sort_net__join_queue__queue__rp_k7_668cf05b(d,q,clock);
+module fcc_sort_net__join_queue__queue__rp_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [12:0] d;
     output reg  [12:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [12:0] held;
     initial begin
-       q = 13'h0;
+        held = 13'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__join_queue__queue__rp_k7_668cf05b
 
 
@@ -54176,22 +54234,24 @@ module fcc_sort_net__join_queue__queue__tp_k7_668cf05b(d,q,clock);
 endmodule // fcc_sort_net__join_queue__queue__tp_k7_668cf05b
 
 
-module fcc_sort_net__join_queue__queue__wp_k7_668cf05b(d,q,clock);
+module fcc_sort_net__join_queue__queue__wp_k7_668cf05b(clock,d,q);
 
     // Module arguments
+    input wire  clock;
     input wire  [12:0] d;
     output reg  [12:0] q;
-    input wire  clock;
 
     // Update code (custom)
+    (* max_fanout = 64 *) reg [12:0] held;
     initial begin
-       q = 13'h0;
+        held = 13'h0;
     end
-
     always @(posedge clock) begin
-       q <= d;
+        held <= d;
     end
-
+    always @(*) begin
+        q = held;
+    end
 endmodule // fcc_sort_net__join_queue__queue__wp_k7_668cf05b
 
 

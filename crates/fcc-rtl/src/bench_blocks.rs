@@ -4,6 +4,7 @@
 //! here, its test and (for a block with a non-plain port) its shim.
 
 use fcc_params::FccParams;
+use rust_hdl::prelude::Bits;
 
 use crate::{lint, RtlError};
 
@@ -34,6 +35,9 @@ pub enum BenchBlock {
     ColInputStage,
     /// The front end's credit counter `FccCredits`.
     Credits,
+    /// The stream FIFO `FccStreamFifo` (its control `FccStreamCtl` and one
+    /// lane `FccStreamLane`) of 16-bit words, 16 deep.
+    StreamFifo,
     /// The frame-phase machine `FccFramePhase`.
     FramePhase,
     /// The sort filter's centre pipeline `FccFiltCentre`.
@@ -136,7 +140,7 @@ impl Row {
 
 impl BenchBlock {
     /// Every block with a bench.
-    pub const ALL: [BenchBlock; 37] = [
+    pub const ALL: [BenchBlock; 38] = [
         BenchBlock::Regs,
         BenchBlock::AxilAdapter,
         BenchBlock::MergeTable,
@@ -147,6 +151,7 @@ impl BenchBlock {
         BenchBlock::InputStage,
         BenchBlock::ColInputStage,
         BenchBlock::Credits,
+        BenchBlock::StreamFifo,
         BenchBlock::FramePhase,
         BenchBlock::FiltCentre,
         BenchBlock::WordWindow,
@@ -226,6 +231,13 @@ impl BenchBlock {
             }),
             BenchBlock::Credits => Row::plain("fcc_credits", |p| {
                 gen(p, crate::fcc_credits::FccCredits::default(), "fcc_credits")
+            }),
+            BenchBlock::StreamFifo => Row::plain("fcc_stream_fifo", |p| {
+                gen(
+                    p,
+                    crate::fcc_stream_fifo::FccStreamFifo::<Bits<16>, 4, 5>::default(),
+                    "fcc_stream_fifo",
+                )
             }),
             BenchBlock::FramePhase => Row {
                 name: "fcc_frame_phase",

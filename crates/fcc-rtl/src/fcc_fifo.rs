@@ -9,9 +9,15 @@
 //! consume. The RAM's ports are
 //! outputs too, so that side RAMs (`FccRam` of the same depth) can hold more
 //! fields of each entry and show them beside `dout`.
+//!
+//! The pointers, the read in flight, the output's flag and the read issue
+//! are built for Vivado to replicate (`FccFanoutReg`, `FccFanoutNet`): in
+//! LUT RAM a wide entry makes each of them reach every word's bits.
 
 use rust_hdl::prelude::*;
 
+use crate::fcc_fanout_net::FccFanoutNet;
+use crate::fcc_fanout_reg::FccFanoutReg;
 use crate::fcc_ram::FccRam;
 use crate::types::kb;
 
@@ -34,14 +40,16 @@ pub struct FccFifo<T: Synth, const A: usize, const AP1: usize> {
     pub ram_we: Signal<Out, Bit>,
     pub ram_waddr: Signal<Out, Bits<A>>,
     ram: FccRam<T, A>,
-    wp: DFF<Bits<AP1>>,
-    rp: DFF<Bits<AP1>>,
+    wp: FccFanoutReg<Bits<AP1>>,
+    rp: FccFanoutReg<Bits<AP1>>,
     tp: DFF<Bits<AP1>>,
     level_q: DFF<Bits<AP1>>,
-    r1: DFF<Bit>,
-    ov: DFF<Bit>,
+    r1: FccFanoutReg<Bit>,
+    ov: FccFanoutReg<Bit>,
     empty: Signal<Local, Bit>,
     issue: Signal<Local, Bit>,
+    /// `issue`, replicated by Vivado (it reaches many loads).
+    issue_net: FccFanoutNet<Bit>,
     one: Constant<Bits<AP1>>,
     zero: Constant<Bits<AP1>>,
 }
@@ -72,6 +80,7 @@ impl<T: Synth, const A: usize, const AP1: usize> FccFifo<T, A, AP1> {
             ov: Default::default(),
             empty: Default::default(),
             issue: Default::default(),
+            issue_net: Default::default(),
             one: kb(1),
             zero: kb(0),
         }
@@ -102,12 +111,13 @@ impl<T: Synth, const A: usize, const AP1: usize> Logic for FccFifo<T, A, AP1> {
         // At most one read in flight, and only into a free output register.
         self.issue.next =
             !self.empty.val() & !self.r1.q.val() & (!self.ov.q.val() | self.take.val());
-        self.ram.read_en.next = self.issue.val();
+        self.issue_net.x.next = self.issue.val();
+        self.ram.read_en.next = self.issue_net.y.val();
         self.ram.read_addr.next = self.rp.q.val().get_bits::<A>(0);
-        if self.issue.val() {
+        if self.issue_net.y.val() {
             self.rp.d.next = self.rp.q.val() + self.one.val();
         }
-        self.r1.d.next = self.issue.val();
+        self.r1.d.next = self.issue_net.y.val();
         self.ov.d.next = self.r1.q.val() | (self.ov.q.val() & !self.take.val());
         self.ram.write_en.next = self.push.val();
         self.ram.write_addr.next = self.wp.q.val().get_bits::<A>(0);
@@ -120,7 +130,7 @@ impl<T: Synth, const A: usize, const AP1: usize> Logic for FccFifo<T, A, AP1> {
         }
         self.level_q.d.next = self.wp.q.val() - self.tp.q.val();
         self.level.next = self.level_q.q.val();
-        self.ram_re.next = self.issue.val();
+        self.ram_re.next = self.issue_net.y.val();
         self.ram_raddr.next = self.rp.q.val().get_bits::<A>(0);
         self.ram_we.next = self.push.val();
         self.ram_waddr.next = self.wp.q.val().get_bits::<A>(0);

@@ -3,7 +3,8 @@
 //! Each hardware block is a rust-hdl `LogicBlock` in a file of its own name
 //! (`fcc_intra`, `fcc_window`, `fcc_dist_tree`, `fcc_sort_net`,
 //! `fcc_merge_table`, `fcc_label_update`, `fcc_top`, plus the helpers
-//! `fcc_sq_dist`, `fcc_dist_unit`, `fcc_line_buf`, `fcc_fifo`, `fcc_stream_fifo`, `fcc_ram`,
+//! `fcc_sq_dist`, `fcc_dist_unit`, `fcc_line_buf`, `fcc_fifo`, `fcc_stream_fifo` (with
+//! `fcc_stream_ctl`, `fcc_stream_lane`), `fcc_ram`,
 //! `fcc_row_word`, `fcc_keep_reg`, `fcc_fanout_reg`, `fcc_fanout_net`,
 //! `fcc_prefix_or`, `fcc_any_or`, `fcc_two_or`, `fcc_pick`; inside `fcc_window`:
 //! `fcc_win_edge`, `fcc_rep_window` (a lane of `fcc_word_window`, as
@@ -142,7 +143,9 @@ mod fcc_slot_mux;
 mod fcc_sort_filter;
 mod fcc_sort_net;
 mod fcc_sq_dist;
+mod fcc_stream_ctl;
 mod fcc_stream_fifo;
+mod fcc_stream_lane;
 mod fcc_table_init;
 mod fcc_table_ports;
 mod fcc_th_square;

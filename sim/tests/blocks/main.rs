@@ -48,3 +48,4 @@ mod run_acc;
 mod set_pack;
 mod set_queue;
 mod slot_records;
+mod stream_fifo;

@@ -9,11 +9,11 @@
 //! (it is registered, and so is the ready it gates), so the buffer never
 //! overflows.
 //!
-//! Lanes of [`FccStreamFifo`], pushed and taken together, so they stay in
+//! A stream FIFO (`FccStreamFifo`'s blocks) of several lanes
+//! (`FccStreamLane`) under one control (`FccStreamCtl`), so they stay in
 //! step: the centre (`RunPix`), the hits as a mask, the labels four to a
-//! word (`FccQuadLane`). The head is valid and taken from the centre's lane; a slot pushed
-//! at `t` is at the head at `t + 4` at the soonest, and one leaves every
-//! cycle while `take` is high.
+//! word (`FccQuadLane`). A slot pushed at `t` is at the head at `t + 4` at
+//! the soonest, and one leaves every cycle while `take` is high.
 //!
 //! The size: a slot taken at the input is at the buffer's head
 //! `FRONT_LATENCY + 5` cycles later at the soonest (the stage's register,
@@ -29,7 +29,8 @@ use super::fcc_col_front::FRONT_LATENCY;
 use super::fcc_quad_lane::FccQuadLane;
 use super::RunPix;
 use crate::fcc_credits::FccCredits;
-use crate::fcc_stream_fifo::FccStreamFifo;
+use crate::fcc_stream_ctl::FccStreamCtl;
+use crate::fcc_stream_lane::FccStreamLane;
 use crate::types::{kb, vec_of};
 
 /// Address bits of the buffer.
@@ -46,7 +47,7 @@ const _: () = assert!(SLOT_CREDITS >= FRONT_LATENCY + 8);
 // gates are registered): the buffer holds them.
 const _: () = assert!(SLOT_CREDITS + 2 <= SLOT_BUF);
 
-type Lane<T> = FccStreamFifo<T, SLOT_BUF_BITS, { SLOT_BUF_BITS + 1 }>;
+type Lane<T> = FccStreamLane<T, SLOT_BUF_BITS>;
 
 #[derive(LogicBlock)]
 pub struct FccColSlotBuf {
@@ -67,6 +68,7 @@ pub struct FccColSlotBuf {
     pub hit_label: Vec<Signal<Out, Bits<16>>>,
     pub take: Signal<In, Bit>,
     credits: FccCredits,
+    ctl: FccStreamCtl<SLOT_BUF_BITS, { SLOT_BUF_BITS + 1 }>,
     pix: Lane<RunPix>,
     hits: Lane<Bits<64>>,
     labels: Vec<FccQuadLane>,
@@ -103,6 +105,7 @@ impl FccColSlotBuf {
             hit_label: vec_of(n),
             take: Default::default(),
             credits: FccCredits::with_limit(SLOT_CREDITS),
+            ctl: Default::default(),
             pix: Default::default(),
             hits: Default::default(),
             labels: (0..w).map(|_| Default::default()).collect(),
@@ -120,20 +123,28 @@ impl FccColSlotBuf {
 impl Logic for FccColSlotBuf {
     #[hdl_gen]
     fn update(&mut self) {
-        self.popped.next = self.take.val() & self.pix.valid.val();
+        self.popped.next = self.take.val() & self.ctl.valid.val();
         self.credits.clk.next = self.clk.val();
         self.credits.rst.next = self.rst.val();
         self.credits.slot.next = self.slot.val();
         self.credits.take.next = self.popped.val();
         self.credits.drop.next = false;
         self.room.next = self.credits.room.val();
+        // The one control.
+        self.ctl.clk.next = self.clk.val();
+        self.ctl.rst.next = self.rst.val();
+        self.ctl.push.next = self.in_centre.val().valid;
+        self.ctl.take.next = self.take.val();
+        self.valid.next = self.ctl.valid.val();
         // The centre's lane.
         self.pix.clk.next = self.clk.val();
-        self.pix.rst.next = self.rst.val();
-        self.pix.push.next = self.in_centre.val().valid;
+        self.pix.we.next = self.in_centre.val().valid;
+        self.pix.waddr.next = self.ctl.ram_waddr.val();
         self.pix.din.next = self.in_centre.val();
-        self.pix.take.next = self.popped.val();
-        self.valid.next = self.pix.valid.val();
+        self.pix.re.next = self.ctl.ram_re.val();
+        self.pix.raddr.next = self.ctl.ram_raddr.val();
+        self.pix.shift.next = self.ctl.shift.val();
+        self.pix.load.next = self.ctl.load.val();
         self.centre.next = self.pix.dout.val();
         // The hits as a mask.
         self.acc[0].next = self.zero64.val();
@@ -144,12 +155,15 @@ impl Logic for FccColSlotBuf {
             }
         }
         self.hits.clk.next = self.clk.val();
-        self.hits.rst.next = self.rst.val();
-        self.hits.push.next = self.in_centre.val().valid;
+        self.hits.we.next = self.in_centre.val().valid;
+        self.hits.waddr.next = self.ctl.ram_waddr.val();
         for e in (self._n)..(self._n + 1) {
             self.hits.din.next = self.acc[e].val();
         }
-        self.hits.take.next = self.popped.val();
+        self.hits.re.next = self.ctl.ram_re.val();
+        self.hits.raddr.next = self.ctl.ram_raddr.val();
+        self.hits.shift.next = self.ctl.shift.val();
+        self.hits.load.next = self.ctl.load.val();
         for e in 0..self._n {
             self.hit[e].next = self.hits.dout.val().get_bit(e);
         }
@@ -162,9 +176,12 @@ impl Logic for FccColSlotBuf {
         }
         for w in 0..self.labels.len() {
             self.labels[w].clk.next = self.clk.val();
-            self.labels[w].rst.next = self.rst.val();
-            self.labels[w].push.next = self.in_centre.val().valid;
-            self.labels[w].take.next = self.popped.val();
+            self.labels[w].we.next = self.in_centre.val().valid;
+            self.labels[w].waddr.next = self.ctl.ram_waddr.val();
+            self.labels[w].re.next = self.ctl.ram_re.val();
+            self.labels[w].raddr.next = self.ctl.ram_raddr.val();
+            self.labels[w].shift.next = self.ctl.shift.val();
+            self.labels[w].load.next = self.ctl.load.val();
             self.labels[w].l0.next = self.lab[w * 4].val();
             self.labels[w].l1.next = self.lab[w * 4 + 1].val();
             self.labels[w].l2.next = self.lab[w * 4 + 2].val();
