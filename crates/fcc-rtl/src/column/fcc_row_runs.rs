@@ -31,6 +31,7 @@ use super::fcc_open_room::{FccOpenRoom, OPEN_ROOM_BITS};
 use super::fcc_row_entry::FccRowEntry;
 use super::fcc_run_decide::FccRunDecide;
 use super::{ColPix, RowLabs, RowPts, RunCtl, RunPix};
+use crate::fcc_fanout_net::FccFanoutNet;
 use crate::fcc_fanout_reg::FccFanoutReg;
 use crate::fcc_pix_thr::THR_LAG;
 use crate::fcc_ram::FccRam;
@@ -79,6 +80,10 @@ pub struct FccRowRuns {
     pub out: Signal<Out, RunPix>,
     pts: FccRam<RowPts, ROW_BITS>,
     labs: FccRam<RowLabs, ROW_BITS>,
+    /// The tables' read row and enable, replicated by Vivado: in LUT RAM
+    /// they reach every word's bits.
+    rd_row: FccFanoutNet<Bits<ROW_BITS>>,
+    rd_en: FccFanoutNet<Bit>,
     pd: Vec<FccFanoutReg<ColPix>>,
     entry: FccRowEntry,
     cd: Vec<FccFanoutReg<RunCtl>>,
@@ -127,6 +132,8 @@ impl FccRowRuns {
             out: Default::default(),
             pts: FccRam::new(rows),
             labs: FccRam::new(rows),
+            rd_row: Default::default(),
+            rd_en: Default::default(),
             pd: vec_of(2),
             entry: Default::default(),
             cd: vec_of(SQ_LATENCY + 1),
@@ -171,10 +178,12 @@ impl Logic for FccRowRuns {
         // ---- N0: read the row's entry.
         self.pts.clk.next = self.clk.val();
         self.labs.clk.next = self.clk.val();
-        self.pts.read_en.next = self.pix.val().valid;
-        self.pts.read_addr.next = self.pix.val().row;
-        self.labs.read_en.next = self.pix.val().valid;
-        self.labs.read_addr.next = self.pix.val().row;
+        self.rd_row.x.next = self.pix.val().row;
+        self.rd_en.x.next = self.pix.val().valid;
+        self.pts.read_en.next = self.rd_en.y.val();
+        self.pts.read_addr.next = self.rd_row.y.val();
+        self.labs.read_en.next = self.rd_en.y.val();
+        self.labs.read_addr.next = self.rd_row.y.val();
         self.pd[0].d.next = self.pix.val();
         self.pd[1].d.next = self.pd[0].q.val();
         // N1: the last column the bridge reaches from this pixel, saturated.

@@ -158,6 +158,10 @@ pub struct FccRunAcc {
     dstep: Signal<Local, RunStep>,
     old_live: Signal<Local, Bit>,
     lokv: Signal<Local, Bit>,
+    /// The selects of E's two accumulator inputs, replicated by Vivado:
+    /// each reaches an accumulator's 501 bits.
+    sel_a: FccFanoutNet<Bit>,
+    sel_b: FccFanoutNet<Bit>,
     start_flush: Signal<Local, Bit>,
     wr: Signal<Local, RunWrite>,
     /// E: what W does, the merge's inputs, the entry as read.
@@ -223,6 +227,8 @@ impl FccRunAcc {
             dstep: Default::default(),
             old_live: Default::default(),
             lokv: Default::default(),
+            sel_a: Default::default(),
+            sel_b: Default::default(),
             start_flush: Default::default(),
             wr: Default::default(),
             e_wr: Default::default(),
@@ -383,12 +389,14 @@ impl Logic for FccRunAcc {
         self.wr.next.f_ring = self.dstep.val().drain & self.entries.read_data.val().ring;
         self.wr.next.done = self.dstep.val().drain & (self.dstep.val().row == self.last_row.val());
         self.e_wr.d.next = self.wr.val();
+        self.sel_a.x.next = self.old_live.val() & !(self.lokv.val() & self.dstep.val().start);
+        self.sel_b.x.next = self.lokv.val();
         self.e_a.d.next = self.empty.val();
-        if self.old_live.val() & !(self.lokv.val() & self.dstep.val().start) {
+        if self.sel_a.y.val() {
             self.e_a.d.next = self.entries.read_data.val().acc;
         }
         self.e_b.d.next = self.empty.val();
-        if self.lokv.val() {
+        if self.sel_b.y.val() {
             self.e_b.d.next = self.pixel.acc.val();
         }
         self.e_old.d.next = self.entries.read_data.val().acc;
