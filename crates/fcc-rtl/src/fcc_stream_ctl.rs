@@ -6,10 +6,13 @@
 //! this block says, once for all of them, when the RAM is read and where
 //! (`ram_re`, `ram_raddr`), where a push writes (`ram_waddr`), when the
 //! entries move up (`shift`, a pop) and which entry takes the word the RAM
-//! gives (`load`, one bit an entry). So the lanes share one set of these
-//! registers rather than holding equal copies, and each signal that
-//! reaches every lane's bits is built for Vivado to replicate
-//! (`FccFanoutReg`, `FccFanoutNet`).
+//! gives (one bit an entry: `load_pop` in a cycle with a pop,
+//! `load_keep` in one without; both registers, worked out a cycle ahead
+//! for either case, so that each lane bit's multiplexer takes them and
+//! `shift` straight). So the lanes share one set of these registers
+//! rather than holding equal copies, and each signal that reaches every
+//! lane's bits is built for Vivado to replicate (`FccFanoutReg`,
+//! `FccFanoutNet`).
 //!
 //! A read is issued while the RAM has a word not read and the entries held
 //! and the reads on their way (two cycles' latency) are fewer than
@@ -42,8 +45,10 @@ pub struct FccStreamCtl<const A: usize, const AP1: usize> {
     pub ram_waddr: Signal<Out, Bits<A>>,
     /// The head is taken: each entry takes the one after it.
     pub shift: Signal<Out, Bit>,
-    /// Entry `i` takes the word the RAM gives (bit `i`; after `shift`).
-    pub load: Signal<Out, Bits<AHEAD>>,
+    /// Entry `i` takes the word the RAM gives (bit `i`, after `shift`):
+    /// `load_pop` while `shift`, `load_keep` otherwise.
+    pub load_pop: Signal<Out, Bits<AHEAD>>,
+    pub load_keep: Signal<Out, Bits<AHEAD>>,
     /// Entries held ahead (0 to 4), and whether any is.
     held: DFF<Bits<3>>,
     held_any: FccFanoutReg<Bit>,
@@ -60,17 +65,19 @@ pub struct FccStreamCtl<const A: usize, const AP1: usize> {
     pop: Signal<Local, Bit>,
     /// `pop`, replicated by Vivado (every lane's entries).
     pop_net: FccFanoutNet<Bit>,
-    /// Entries held after this cycle's pop: where an arriving word goes.
-    kept: Signal<Local, Bits<3>>,
     held_m1: Signal<Local, Bits<3>>,
     /// `held_m1`, replicated by Vivado (it reaches many loads).
     held_m1_net: FccFanoutNet<Bits<3>>,
     held_p1: Signal<Local, Bits<3>>,
     /// Entries held and reads on their way.
     claimed: Signal<Local, Bits<3>>,
-    loads: Signal<Local, Bits<AHEAD>>,
-    /// `loads`, replicated by Vivado (every lane's entries).
-    load_net: FccFanoutNet<Bits<AHEAD>>,
+    /// The entries held after this cycle (where next cycle's word goes
+    /// if no pop comes with it), and the selects worked out from them.
+    held_next: Signal<Local, Bits<3>>,
+    lp_next: Signal<Local, Bits<AHEAD>>,
+    lk_next: Signal<Local, Bits<AHEAD>>,
+    lp: FccFanoutReg<Bits<AHEAD>>,
+    lk: FccFanoutReg<Bits<AHEAD>>,
     _n: usize,
     idx: Vec<Constant<Bits<3>>>,
     onehot: Vec<Constant<Bits<AHEAD>>>,
@@ -96,7 +103,8 @@ impl<const A: usize, const AP1: usize> Default for FccStreamCtl<A, AP1> {
             ram_raddr: Default::default(),
             ram_waddr: Default::default(),
             shift: Default::default(),
-            load: Default::default(),
+            load_pop: Default::default(),
+            load_keep: Default::default(),
             held: Default::default(),
             held_any: Default::default(),
             r1: Default::default(),
@@ -109,13 +117,15 @@ impl<const A: usize, const AP1: usize> Default for FccStreamCtl<A, AP1> {
             issue_net: Default::default(),
             pop: Default::default(),
             pop_net: Default::default(),
-            kept: Default::default(),
             held_m1: Default::default(),
             held_m1_net: Default::default(),
             held_p1: Default::default(),
             claimed: Default::default(),
-            loads: Default::default(),
-            load_net: Default::default(),
+            held_next: Default::default(),
+            lp_next: Default::default(),
+            lk_next: Default::default(),
+            lp: Default::default(),
+            lk: Default::default(),
             _n: AHEAD,
             idx: (0..AHEAD).map(|i| kb(i as u64)).collect(),
             onehot: (0..AHEAD).map(|i| kb(1u64 << i)).collect(),
@@ -132,7 +142,7 @@ impl<const A: usize, const AP1: usize> Default for FccStreamCtl<A, AP1> {
 impl<const A: usize, const AP1: usize> Logic for FccStreamCtl<A, AP1> {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clk, held, held_any, r1, r2, wp, rp, tp, level_q);
+        dff_setup!(self, clk, held, held_any, r1, r2, wp, rp, tp, level_q, lp, lk);
         self.valid.next = self.held_any.q.val();
         self.pop.next = self.take.val() & self.held_any.q.val();
         self.pop_net.x.next = self.pop.val();
@@ -163,26 +173,32 @@ impl<const A: usize, const AP1: usize> Logic for FccStreamCtl<A, AP1> {
         self.held_m1.next = self.held.q.val() - self.one3.val();
         self.held_m1_net.x.next = self.held_m1.val();
         self.held_p1.next = self.held.q.val() + self.one3.val();
-        self.kept.next = self.held.q.val();
-        if self.pop.val() {
-            self.kept.next = self.held_m1_net.y.val();
-        }
-        self.loads.next = self.zero_load.val();
-        for i in 0..(self._n) {
-            if self.r2.q.val() & (self.kept.val() == self.idx[i].val()) {
-                self.loads.next = self.loads.val() | self.onehot[i].val();
-            }
-        }
-        self.load_net.x.next = self.loads.val();
-        self.load.next = self.load_net.y.val();
-        self.held.d.next = self.held.q.val();
+        self.held_next.next = self.held.q.val();
         if self.pop.val() & !self.r2.q.val() {
-            self.held.d.next = self.held_m1_net.y.val();
+            self.held_next.next = self.held_m1_net.y.val();
         }
         if !self.pop.val() & self.r2.q.val() {
-            self.held.d.next = self.held_p1.val();
+            self.held_next.next = self.held_p1.val();
         }
-        self.held_any.d.next = (self.kept.val() != self.zero3.val()) | self.r2.q.val();
+        self.held.d.next = self.held_next.val();
+        // The entries held after this cycle and any word arriving now.
+        self.held_any.d.next = (self.held_next.val() != self.zero3.val()) | self.r2.q.val();
+        // Next cycle's word (read now, `r1`) goes to entry `held_next - 1`
+        // if a pop comes with it, else to entry `held_next`.
+        self.lp_next.next = self.zero_load.val();
+        self.lk_next.next = self.zero_load.val();
+        for i in 0..(self._n) {
+            if self.r1.q.val() & (self.held_next.val() == self.idx[i].val()) {
+                self.lk_next.next = self.lk_next.val() | self.onehot[i].val();
+            }
+            if self.r1.q.val() & (self.held_next.val() == (self.idx[i].val() + self.one3.val())) {
+                self.lp_next.next = self.lp_next.val() | self.onehot[i].val();
+            }
+        }
+        self.lp.d.next = self.lp_next.val();
+        self.lk.d.next = self.lk_next.val();
+        self.load_pop.next = self.lp.q.val();
+        self.load_keep.next = self.lk.q.val();
         // The write side and the level.
         self.ram_waddr.next = self.wp.q.val().get_bits::<A>(0);
         if self.push.val() {
@@ -194,6 +210,8 @@ impl<const A: usize, const AP1: usize> Logic for FccStreamCtl<A, AP1> {
         self.level_q.d.next = self.wp.q.val() - self.tp.q.val();
         self.level.next = self.level_q.q.val();
         if self.rst.val() {
+            self.lp.d.next = self.zero_load.val();
+            self.lk.d.next = self.zero_load.val();
             self.held.d.next = self.zero3.val();
             self.held_any.d.next = false;
             self.r1.d.next = false;

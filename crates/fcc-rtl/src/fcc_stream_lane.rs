@@ -3,8 +3,9 @@
 //! ahead of it, the head in entry 0 (`dout`).
 //!
 //! A push (`we`) writes `din` at `waddr`; a read (`re`, `raddr`) gives its
-//! word two cycles later, which the entry named by `load` takes; `shift`
-//! moves each entry up to the one before it (the head is taken). The lanes
+//! word two cycles later, which the entry named by `load_pop` (with
+//! `shift`) or `load_keep` (without) takes; `shift` moves each entry up to
+//! the one before it (the head is taken). The lanes
 //! of one FIFO take the same control, so they stay in step.
 
 use rust_hdl::prelude::*;
@@ -23,7 +24,8 @@ pub struct FccStreamLane<T: Synth, const A: usize> {
     pub re: Signal<In, Bit>,
     pub raddr: Signal<In, Bits<A>>,
     pub shift: Signal<In, Bit>,
-    pub load: Signal<In, Bits<AHEAD>>,
+    pub load_pop: Signal<In, Bits<AHEAD>>,
+    pub load_keep: Signal<In, Bits<AHEAD>>,
     /// The head's word.
     pub dout: Signal<Out, T>,
     ram: FccRam<T, A>,
@@ -41,7 +43,8 @@ impl<T: Synth, const A: usize> Default for FccStreamLane<T, A> {
             re: Default::default(),
             raddr: Default::default(),
             shift: Default::default(),
-            load: Default::default(),
+            load_pop: Default::default(),
+            load_keep: Default::default(),
             dout: Default::default(),
             ram: FccRam::new(1 << A),
             ahead: vec_of(AHEAD),
@@ -69,7 +72,9 @@ impl<T: Synth, const A: usize> Logic for FccStreamLane<T, A> {
             }
         }
         for i in 0..(self._n) {
-            if self.load.val().get_bit(i) {
+            if (self.shift.val() & self.load_pop.val().get_bit(i))
+                | (!self.shift.val() & self.load_keep.val().get_bit(i))
+            {
                 self.ahead[i].d.next = self.ram.read_data.val();
             }
         }

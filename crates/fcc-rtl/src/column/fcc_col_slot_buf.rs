@@ -144,7 +144,8 @@ impl Logic for FccColSlotBuf {
         self.pix.re.next = self.ctl.ram_re.val();
         self.pix.raddr.next = self.ctl.ram_raddr.val();
         self.pix.shift.next = self.ctl.shift.val();
-        self.pix.load.next = self.ctl.load.val();
+        self.pix.load_pop.next = self.ctl.load_pop.val();
+        self.pix.load_keep.next = self.ctl.load_keep.val();
         self.centre.next = self.pix.dout.val();
         // The hits as a mask.
         self.acc[0].next = self.zero64.val();
@@ -163,7 +164,8 @@ impl Logic for FccColSlotBuf {
         self.hits.re.next = self.ctl.ram_re.val();
         self.hits.raddr.next = self.ctl.ram_raddr.val();
         self.hits.shift.next = self.ctl.shift.val();
-        self.hits.load.next = self.ctl.load.val();
+        self.hits.load_pop.next = self.ctl.load_pop.val();
+        self.hits.load_keep.next = self.ctl.load_keep.val();
         for e in 0..self._n {
             self.hit[e].next = self.hits.dout.val().get_bit(e);
         }
@@ -181,7 +183,8 @@ impl Logic for FccColSlotBuf {
             self.labels[w].re.next = self.ctl.ram_re.val();
             self.labels[w].raddr.next = self.ctl.ram_raddr.val();
             self.labels[w].shift.next = self.ctl.shift.val();
-            self.labels[w].load.next = self.ctl.load.val();
+            self.labels[w].load_pop.next = self.ctl.load_pop.val();
+            self.labels[w].load_keep.next = self.ctl.load_keep.val();
             self.labels[w].l0.next = self.lab[w * 4].val();
             self.labels[w].l1.next = self.lab[w * 4 + 1].val();
             self.labels[w].l2.next = self.lab[w * 4 + 2].val();

@@ -26,7 +26,8 @@ pub struct FccQuadLane {
     pub re: Signal<In, Bit>,
     pub raddr: Signal<In, Bits<SLOT_BUF_BITS>>,
     pub shift: Signal<In, Bit>,
-    pub load: Signal<In, Bits<AHEAD>>,
+    pub load_pop: Signal<In, Bits<AHEAD>>,
+    pub load_keep: Signal<In, Bits<AHEAD>>,
     pub l0: Signal<In, Bits<16>>,
     pub l1: Signal<In, Bits<16>>,
     pub l2: Signal<In, Bits<16>>,
@@ -54,7 +55,8 @@ impl Logic for FccQuadLane {
         self.lane.re.next = self.re.val();
         self.lane.raddr.next = self.raddr.val();
         self.lane.shift.next = self.shift.val();
-        self.lane.load.next = self.load.val();
+        self.lane.load_pop.next = self.load_pop.val();
+        self.lane.load_keep.next = self.load_keep.val();
         self.o0.next = self.lane.dout.val().l0;
         self.o1.next = self.lane.dout.val().l1;
         self.o2.next = self.lane.dout.val().l2;

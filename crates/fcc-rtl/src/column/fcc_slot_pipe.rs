@@ -19,7 +19,6 @@ use super::fcc_label_sets::SLOT_BITS;
 use super::fcc_slot_check::FccSlotCheck;
 use super::fcc_slot_issue::SlotHalf;
 use super::{AccWord, SlotHolds, SlotWord, FIRST_BITS};
-use crate::fcc_fanout_net::FccFanoutNet;
 
 #[derive(LogicBlock)]
 pub struct FccSlotPipe {
@@ -52,15 +51,6 @@ pub struct FccSlotPipe {
     pub wen: Signal<Out, Bit>,
     pub wdata: Signal<Out, SlotWord>,
     kept: Signal<Local, Bit>,
-    /// The selects of the word-wide muxes (stage 3's write, stage 2's
-    /// forwarded word, stage 1's other word), replicated by Vivado: each
-    /// reaches a word's 517 bits.
-    kept_net: FccFanoutNet<Bit>,
-    fwd3: FccFanoutNet<Bit>,
-    fwd4: FccFanoutNet<Bit>,
-    fwd5: FccFanoutNet<Bit>,
-    other_add: FccFanoutNet<Bit>,
-    other_keep: FccFanoutNet<Bit>,
     /// Stage 2's word, forwarded.
     fw: Signal<Local, SlotWord>,
     /// The writes of the last two cycles.
@@ -107,12 +97,6 @@ impl Default for FccSlotPipe {
             wen: Default::default(),
             wdata: Default::default(),
             kept: Default::default(),
-            kept_net: Default::default(),
-            fwd3: Default::default(),
-            fwd4: Default::default(),
-            fwd5: Default::default(),
-            other_add: Default::default(),
-            other_keep: Default::default(),
             fw: Default::default(),
             w4v: Default::default(),
             w4a: Default::default(),
@@ -170,9 +154,8 @@ impl Logic for FccSlotPipe {
         self.kept.next = (self.h3.val() == SlotHalf::Add) | (self.h3.val() == SlotHalf::Keep);
         self.wen.next =
             self.v3.val() & (self.kept.val() | (self.h3.val() == SlotHalf::Gone) | self.l3.q.val());
-        self.kept_net.x.next = self.kept.val();
         self.wdata.next = self.empty.val();
-        if self.kept_net.y.val() {
+        if self.kept.val() {
             self.wdata.next = self.m3.q.val();
         }
         self.w4v.d.next = self.wen.val();
@@ -184,17 +167,14 @@ impl Logic for FccSlotPipe {
         // Stage 2's word: the read, or the latest write to its slot since
         // the read was issued (this cycle's and the last two's: the read
         // missed them).
-        self.fwd5.x.next = self.w5v.q.val() & (self.w5a.q.val() == self.s2.val());
-        self.fwd4.x.next = self.w4v.q.val() & (self.w4a.q.val() == self.s2.val());
-        self.fwd3.x.next = self.wen.val() & (self.s3.val() == self.s2.val());
         self.fw.next = self.word.val();
-        if self.fwd5.y.val() {
+        if self.w5v.q.val() & (self.w5a.q.val() == self.s2.val()) {
             self.fw.next = self.w5d.q.val();
         }
-        if self.fwd4.y.val() {
+        if self.w4v.q.val() & (self.w4a.q.val() == self.s2.val()) {
             self.fw.next = self.w4d.q.val();
         }
-        if self.fwd3.y.val() {
+        if self.wen.val() & (self.s3.val() == self.s2.val()) {
             self.fw.next = self.wdata.val();
         }
         // Stage 1: the op's word and column; the other word of stage 2.
@@ -212,13 +192,11 @@ impl Logic for FccSlotPipe {
         self.f2.d.next = self.ah.val().first;
         self.k2.d.next = (self.h1.val() == SlotHalf::Close) | (self.h1.val() == SlotHalf::End);
         self.e2.d.next = self.h1.val() == SlotHalf::End;
-        self.other_add.x.next = self.h1.val() == SlotHalf::Add;
-        self.other_keep.x.next = self.h1.val() == SlotHalf::Keep;
         self.b2.d.next = self.empty.val();
-        if self.other_add.y.val() {
+        if self.h1.val() == SlotHalf::Add {
             self.b2.d.next = self.a1.q.val();
         }
-        if self.other_keep.y.val() {
+        if self.h1.val() == SlotHalf::Keep {
             self.b2.d.next = self.fw.val();
         }
         // Stage 2: the merges and the check.
