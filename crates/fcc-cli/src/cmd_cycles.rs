@@ -37,8 +37,9 @@ pub struct CyclesArgs {
     /// each corpus's frames back to back, record latency reported).
     #[arg(long, default_value = "row")]
     pub scan: Scan,
-    /// Label width of the column core's builds.
-    #[arg(long, default_value_t = COLUMN_LABEL_BITS)]
+    /// Label width of the column core's builds (its default: enough for
+    /// the corpus, whose most labels in use at once this reports).
+    #[arg(long, default_value_t = Scan::Column.default_label_bits())]
     pub label_bits: u32,
     /// The column core's bridge limit (default: the recommended streaming
     /// setting; 0xFFF or more: none).
@@ -49,11 +50,6 @@ pub struct CyclesArgs {
     #[arg(long, default_value_t = fcc_params::RECOMMENDED_RING_REACH)]
     pub ring_reach: u32,
 }
-
-/// The column core's default label width here: enough for the corpus (it
-/// reuses labels of closed clusters; `fcc cycles --scan column` reports
-/// the most in use at once).
-pub const COLUMN_LABEL_BITS: u32 = 13;
 
 /// Run `frames` back to back through the column core of `p`, checking every
 /// record; one measurement.

@@ -67,7 +67,7 @@ pub fn run(args: &ResultsArgs) -> anyhow::Result<()> {
             ouster_dir: None,
             json: Some(json.clone()),
             scan,
-            label_bits: cmd_cycles::COLUMN_LABEL_BITS,
+            label_bits: Scan::Column.default_label_bits(),
             bridge: fcc_params::RECOMMENDED_BRIDGE,
             ring_reach: fcc_params::RECOMMENDED_RING_REACH,
         })

@@ -610,6 +610,15 @@ mod tests {
             a.command(),
             "fcc synth --all --bridge 16 --ring-reach 16 --scan column"
         );
+        // The column core's label width is its own default; another is a
+        // change, and the row-major core's default is one for it.
+        assert_eq!(a.hw.unchecked().label_bits, 13);
+        let a = parse(&["--all", "--scan", "column", "--label-bits", "15"]).unwrap();
+        assert_eq!(a.command(), "fcc synth --all --label-bits 15 --scan column");
+        let a = parse(&["--all", "--label-bits", "13"]).unwrap();
+        assert_eq!(a.hw.unchecked().label_bits, 13);
+        assert_eq!(a.command(), "fcc synth --all --label-bits 13");
+        assert_eq!(parse(&["--all"]).unwrap().hw.unchecked().label_bits, 15);
     }
 
     #[test]

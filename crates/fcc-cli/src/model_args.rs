@@ -3,7 +3,7 @@
 use anyhow::Context;
 use clap::Args;
 use fcc_golden::MergeMode;
-use fcc_params::{FccParams, Preset};
+use fcc_params::{FccParams, Preset, Scan};
 
 fn defaults() -> FccParams {
     FccParams::default()
@@ -135,7 +135,7 @@ pub struct HwArgs {
     pub th_h: Option<f64>,
     #[arg(long, value_name = "M", allow_negative_numbers = true, help = with_default("Inter-channel threshold th_V, metres", defaults().th_v))]
     pub th_v: Option<f64>,
-    #[arg(long, value_name = "B", help = with_default("Provisional label width B (8..=16 in hardware)", defaults().label_bits))]
+    #[arg(long, value_name = "B", help = with_default("Provisional label width B (8..=16 in hardware)", format!("{}; {} with --scan column", Scan::Row.default_label_bits(), Scan::Column.default_label_bits())))]
     pub label_bits: Option<u32>,
     #[arg(long, value_name = "MHZ", allow_negative_numbers = true, help = with_default("Clock the constraints ask for, MHz", defaults().clock_mhz))]
     pub clock_mhz: Option<f64>,
@@ -180,9 +180,15 @@ impl HwArgs {
         }
     }
 
-    /// The parameters as given over the defaults, not yet validated.
+    /// The defaults of the core asked for (`--scan`).
+    fn scan_defaults(&self) -> FccParams {
+        FccParams::defaults_for(self.scan.unwrap_or_default())
+    }
+
+    /// The parameters as given over the defaults of the core asked for,
+    /// not yet validated.
     pub fn unchecked(&self) -> FccParams {
-        self.over(&defaults())
+        self.over(&self.scan_defaults())
     }
 
     /// The parameters, validated for the RTL generator.
@@ -197,10 +203,15 @@ impl HwArgs {
     /// (K excluded), to name a command in generated reports.
     pub fn changed_flags(&self) -> String {
         // By name: a field the defaults leave out (the stream limits, the
-        // slopes, the scan) is a change too.
-        let (d, p) = (defaults().fields(), self.unchecked().fields());
+        // slopes, the scan) is a change too. Against the defaults of the
+        // core asked for, whose label width is its own; the scan is only
+        // in the fields when it is not the default.
+        let (d, p) = (self.scan_defaults().fields(), self.unchecked().fields());
         p.iter()
-            .filter(|(name, v)| *name != "fsize" && !d.iter().any(|(n, x)| n == name && x == v))
+            .filter(|(name, v)| {
+                *name != "fsize"
+                    && (*name == "scan" || !d.iter().any(|(n, x)| n == name && x == v))
+            })
             .map(|(name, v)| format!(" --{} {v}", name.replace('_', "-")))
             .collect()
     }

@@ -140,6 +140,19 @@ impl Scan {
         *self == Scan::Row
     }
 
+    /// The label width B a core of this scan is built with unless told.
+    /// The row-major core labels a whole frame before any label comes
+    /// back: a 128 x 2048 frame needs 15 bits. The column core reuses the
+    /// labels of closed clusters: 13 bits hold every source of the corpus
+    /// at every K (at most 6,899 labels at once; docs/column-core.md,
+    /// "Width"), at 24.5 block RAMs where 15 bits take 65.
+    pub fn default_label_bits(self) -> u32 {
+        match self {
+            Scan::Row => 15,
+            Scan::Column => 13,
+        }
+    }
+
     /// `row` or `column`, as `--scan` takes it.
     pub fn as_str(self) -> &'static str {
         match self {
@@ -233,7 +246,7 @@ impl Default for FccParams {
             fsize: 7,
             th_h: 0.5,
             th_v: 1.0,
-            label_bits: 15,
+            label_bits: Scan::Row.default_label_bits(),
             clock_mhz: 200.0,
             labels_per_beat: 4,
             bridge: None,
@@ -252,6 +265,16 @@ pub fn quantize_threshold(th: f64) -> i64 {
 }
 
 impl FccParams {
+    /// The defaults of the core `scan`: [`Default`] with that scan and its
+    /// label width ([`Scan::default_label_bits`]).
+    pub fn defaults_for(scan: Scan) -> Self {
+        FccParams {
+            scan,
+            label_bits: scan.default_label_bits(),
+            ..FccParams::default()
+        }
+    }
+
     /// Check every field against the ranges the golden model supports.
     pub fn validate(&self) -> Result<(), ParamError> {
         check_range("rows", self.rows, &limits::ROWS)?;

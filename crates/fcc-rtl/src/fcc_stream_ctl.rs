@@ -6,10 +6,10 @@
 //! this block says, once for all of them, when the RAM is read and where
 //! (`ram_re`, `ram_raddr`), where a push writes (`ram_waddr`), when the
 //! entries move up (`shift`, a pop) and which entry takes the word the RAM
-//! gives (one bit an entry: `load_pop` in a cycle with a pop,
-//! `load_keep` in one without; both registers, worked out a cycle ahead
-//! for either case, so that each lane bit's multiplexer takes them and
-//! `shift` straight). So the lanes share one set of these registers
+//! gives (`load`, one-hot over the [`LOAD`] places counted before this
+//! cycle's pop: entry `i` takes the word at bit `i + 1` with `shift` and at
+//! bit `i` without; a register, worked out a cycle ahead, so that each lane
+//! bit's multiplexer takes it and `shift` straight). So the lanes share one set of these registers
 //! rather than holding equal copies, and each signal that reaches every
 //! lane's bits is built for Vivado to replicate (`FccFanoutReg`,
 //! `FccFanoutNet`).
@@ -29,6 +29,8 @@ use crate::types::kb;
 
 /// Entries held ahead of the RAM.
 pub const AHEAD: usize = 4;
+/// Places the RAM's next word can go, counted before a pop: `0..=AHEAD`.
+pub const LOAD: usize = AHEAD + 1;
 
 #[derive(LogicBlock)]
 pub struct FccStreamCtl<const A: usize, const AP1: usize> {
@@ -45,10 +47,10 @@ pub struct FccStreamCtl<const A: usize, const AP1: usize> {
     pub ram_waddr: Signal<Out, Bits<A>>,
     /// The head is taken: each entry takes the one after it.
     pub shift: Signal<Out, Bit>,
-    /// Entry `i` takes the word the RAM gives (bit `i`, after `shift`):
-    /// `load_pop` while `shift`, `load_keep` otherwise.
-    pub load_pop: Signal<Out, Bits<AHEAD>>,
-    pub load_keep: Signal<Out, Bits<AHEAD>>,
+    /// Where the word the RAM gives now goes, one-hot, counted before
+    /// this cycle's pop: entry `i` takes it at bit `i + 1` while `shift`,
+    /// at bit `i` otherwise (none: no word).
+    pub load: Signal<Out, Bits<LOAD>>,
     /// Entries held ahead (0 to 4), and whether any is.
     held: DFF<Bits<3>>,
     held_any: FccFanoutReg<Bit>,
@@ -66,25 +68,21 @@ pub struct FccStreamCtl<const A: usize, const AP1: usize> {
     /// `pop`, replicated by Vivado (every lane's entries).
     pop_net: FccFanoutNet<Bit>,
     held_m1: Signal<Local, Bits<3>>,
-    /// `held_m1`, replicated by Vivado (it reaches many loads).
-    held_m1_net: FccFanoutNet<Bits<3>>,
     held_p1: Signal<Local, Bits<3>>,
     /// Entries held and reads on their way.
     claimed: Signal<Local, Bits<3>>,
-    /// The entries held after this cycle (where next cycle's word goes
-    /// if no pop comes with it), and the selects worked out from them.
+    /// The entries held after this cycle: where next cycle's word goes,
+    /// counted before next cycle's pop, and that place one-hot.
     held_next: Signal<Local, Bits<3>>,
-    lp_next: Signal<Local, Bits<AHEAD>>,
-    lk_next: Signal<Local, Bits<AHEAD>>,
-    lp: FccFanoutReg<Bits<AHEAD>>,
-    lk: FccFanoutReg<Bits<AHEAD>>,
+    load_next: Signal<Local, Bits<LOAD>>,
+    load_q: FccFanoutReg<Bits<LOAD>>,
     _n: usize,
     idx: Vec<Constant<Bits<3>>>,
-    onehot: Vec<Constant<Bits<AHEAD>>>,
+    onehot: Vec<Constant<Bits<LOAD>>>,
     room: Constant<Bits<3>>,
     one3: Constant<Bits<3>>,
     zero3: Constant<Bits<3>>,
-    zero_load: Constant<Bits<AHEAD>>,
+    zero_load: Constant<Bits<LOAD>>,
     one: Constant<Bits<AP1>>,
     zero: Constant<Bits<AP1>>,
 }
@@ -103,8 +101,7 @@ impl<const A: usize, const AP1: usize> Default for FccStreamCtl<A, AP1> {
             ram_raddr: Default::default(),
             ram_waddr: Default::default(),
             shift: Default::default(),
-            load_pop: Default::default(),
-            load_keep: Default::default(),
+            load: Default::default(),
             held: Default::default(),
             held_any: Default::default(),
             r1: Default::default(),
@@ -118,17 +115,14 @@ impl<const A: usize, const AP1: usize> Default for FccStreamCtl<A, AP1> {
             pop: Default::default(),
             pop_net: Default::default(),
             held_m1: Default::default(),
-            held_m1_net: Default::default(),
             held_p1: Default::default(),
             claimed: Default::default(),
             held_next: Default::default(),
-            lp_next: Default::default(),
-            lk_next: Default::default(),
-            lp: Default::default(),
-            lk: Default::default(),
-            _n: AHEAD,
-            idx: (0..AHEAD).map(|i| kb(i as u64)).collect(),
-            onehot: (0..AHEAD).map(|i| kb(1u64 << i)).collect(),
+            load_next: Default::default(),
+            load_q: Default::default(),
+            _n: LOAD,
+            idx: (0..LOAD).map(|i| kb(i as u64)).collect(),
+            onehot: (0..LOAD).map(|i| kb(1u64 << i)).collect(),
             room: kb(AHEAD as u64),
             one3: kb(1),
             zero3: kb(0),
@@ -142,7 +136,7 @@ impl<const A: usize, const AP1: usize> Default for FccStreamCtl<A, AP1> {
 impl<const A: usize, const AP1: usize> Logic for FccStreamCtl<A, AP1> {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clk, held, held_any, r1, r2, wp, rp, tp, level_q, lp, lk);
+        dff_setup!(self, clk, held, held_any, r1, r2, wp, rp, tp, level_q, load_q);
         self.valid.next = self.held_any.q.val();
         self.pop.next = self.take.val() & self.held_any.q.val();
         self.pop_net.x.next = self.pop.val();
@@ -171,11 +165,10 @@ impl<const A: usize, const AP1: usize> Logic for FccStreamCtl<A, AP1> {
         // the last one kept. The counts one less and one more come from
         // the flip-flops, so that the late `pop` only chooses among them.
         self.held_m1.next = self.held.q.val() - self.one3.val();
-        self.held_m1_net.x.next = self.held_m1.val();
         self.held_p1.next = self.held.q.val() + self.one3.val();
         self.held_next.next = self.held.q.val();
         if self.pop.val() & !self.r2.q.val() {
-            self.held_next.next = self.held_m1_net.y.val();
+            self.held_next.next = self.held_m1.val();
         }
         if !self.pop.val() & self.r2.q.val() {
             self.held_next.next = self.held_p1.val();
@@ -183,22 +176,16 @@ impl<const A: usize, const AP1: usize> Logic for FccStreamCtl<A, AP1> {
         self.held.d.next = self.held_next.val();
         // The entries held after this cycle and any word arriving now.
         self.held_any.d.next = (self.held_next.val() != self.zero3.val()) | self.r2.q.val();
-        // Next cycle's word (read now, `r1`) goes to entry `held_next - 1`
-        // if a pop comes with it, else to entry `held_next`.
-        self.lp_next.next = self.zero_load.val();
-        self.lk_next.next = self.zero_load.val();
+        // Next cycle's word (read now, `r1`) goes to place `held_next`:
+        // entry `held_next - 1` if a pop comes with it, else `held_next`.
+        self.load_next.next = self.zero_load.val();
         for i in 0..(self._n) {
             if self.r1.q.val() & (self.held_next.val() == self.idx[i].val()) {
-                self.lk_next.next = self.lk_next.val() | self.onehot[i].val();
-            }
-            if self.r1.q.val() & (self.held_next.val() == (self.idx[i].val() + self.one3.val())) {
-                self.lp_next.next = self.lp_next.val() | self.onehot[i].val();
+                self.load_next.next = self.onehot[i].val();
             }
         }
-        self.lp.d.next = self.lp_next.val();
-        self.lk.d.next = self.lk_next.val();
-        self.load_pop.next = self.lp.q.val();
-        self.load_keep.next = self.lk.q.val();
+        self.load_q.d.next = self.load_next.val();
+        self.load.next = self.load_q.q.val();
         // The write side and the level.
         self.ram_waddr.next = self.wp.q.val().get_bits::<A>(0);
         if self.push.val() {
@@ -210,8 +197,7 @@ impl<const A: usize, const AP1: usize> Logic for FccStreamCtl<A, AP1> {
         self.level_q.d.next = self.wp.q.val() - self.tp.q.val();
         self.level.next = self.level_q.q.val();
         if self.rst.val() {
-            self.lp.d.next = self.zero_load.val();
-            self.lk.d.next = self.zero_load.val();
+            self.load_q.d.next = self.zero_load.val();
             self.held.d.next = self.zero3.val();
             self.held_any.d.next = false;
             self.r1.d.next = false;

@@ -65,8 +65,7 @@ impl<T: Synth, const A: usize, const AP1: usize> Logic for FccStreamFifo<T, A, A
         self.lane.re.next = self.ctl.ram_re.val();
         self.lane.raddr.next = self.ctl.ram_raddr.val();
         self.lane.shift.next = self.ctl.shift.val();
-        self.lane.load_pop.next = self.ctl.load_pop.val();
-        self.lane.load_keep.next = self.ctl.load_keep.val();
+        self.lane.load.next = self.ctl.load.val();
         self.dout.next = self.lane.dout.val();
     }
 }

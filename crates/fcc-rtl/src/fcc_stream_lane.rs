@@ -3,8 +3,8 @@
 //! ahead of it, the head in entry 0 (`dout`).
 //!
 //! A push (`we`) writes `din` at `waddr`; a read (`re`, `raddr`) gives its
-//! word two cycles later, which the entry named by `load_pop` (with
-//! `shift`) or `load_keep` (without) takes; `shift` moves each entry up to
+//! word two cycles later, which the entry `load` names takes (bit `i + 1`
+//! names entry `i` with `shift`, bit `i` without); `shift` moves each entry up to
 //! the one before it (the head is taken). The lanes
 //! of one FIFO take the same control, so they stay in step.
 
@@ -12,7 +12,7 @@ use rust_hdl::prelude::*;
 
 use crate::fcc_fanout_reg::FccFanoutReg;
 use crate::fcc_ram::FccRam;
-use crate::fcc_stream_ctl::AHEAD;
+use crate::fcc_stream_ctl::{AHEAD, LOAD};
 use crate::types::vec_of;
 
 #[derive(LogicBlock)]
@@ -24,8 +24,7 @@ pub struct FccStreamLane<T: Synth, const A: usize> {
     pub re: Signal<In, Bit>,
     pub raddr: Signal<In, Bits<A>>,
     pub shift: Signal<In, Bit>,
-    pub load_pop: Signal<In, Bits<AHEAD>>,
-    pub load_keep: Signal<In, Bits<AHEAD>>,
+    pub load: Signal<In, Bits<LOAD>>,
     /// The head's word.
     pub dout: Signal<Out, T>,
     ram: FccRam<T, A>,
@@ -43,8 +42,7 @@ impl<T: Synth, const A: usize> Default for FccStreamLane<T, A> {
             re: Default::default(),
             raddr: Default::default(),
             shift: Default::default(),
-            load_pop: Default::default(),
-            load_keep: Default::default(),
+            load: Default::default(),
             dout: Default::default(),
             ram: FccRam::new(1 << A),
             ahead: vec_of(AHEAD),
@@ -72,8 +70,8 @@ impl<T: Synth, const A: usize> Logic for FccStreamLane<T, A> {
             }
         }
         for i in 0..(self._n) {
-            if (self.shift.val() & self.load_pop.val().get_bit(i))
-                | (!self.shift.val() & self.load_keep.val().get_bit(i))
+            if (self.shift.val() & self.load.val().get_bit(i + 1))
+                | (!self.shift.val() & self.load.val().get_bit(i))
             {
                 self.ahead[i].d.next = self.ram.read_data.val();
             }

@@ -77,7 +77,6 @@ pub struct FccColSlotBuf {
     onehot: Vec<Constant<Bits<64>>>,
     /// The entries' labels, zeros past the last.
     lab: Vec<Signal<Local, Bits<16>>>,
-    popped: Signal<Local, Bit>,
     /// Zero for the last word's unused labels (none when the entries fill
     /// whole words, as at K = 9).
     zero16: Vec<Constant<Bits<16>>>,
@@ -112,7 +111,6 @@ impl FccColSlotBuf {
             acc: vec_of(n + 1),
             onehot: (0..n).map(|e| kb(1u64 << e)).collect(),
             lab: vec_of(4 * w),
-            popped: Default::default(),
             zero16: (n < 4 * w).then(|| kb(0)).into_iter().collect(),
             zero64: kb(0),
             _n: n,
@@ -123,11 +121,11 @@ impl FccColSlotBuf {
 impl Logic for FccColSlotBuf {
     #[hdl_gen]
     fn update(&mut self) {
-        self.popped.next = self.take.val() & self.ctl.valid.val();
         self.credits.clk.next = self.clk.val();
         self.credits.rst.next = self.rst.val();
         self.credits.slot.next = self.slot.val();
-        self.credits.take.next = self.popped.val();
+        // A slot comes back as its entry leaves (the control's pop).
+        self.credits.take.next = self.ctl.shift.val();
         self.credits.drop.next = false;
         self.room.next = self.credits.room.val();
         // The one control.
@@ -144,8 +142,7 @@ impl Logic for FccColSlotBuf {
         self.pix.re.next = self.ctl.ram_re.val();
         self.pix.raddr.next = self.ctl.ram_raddr.val();
         self.pix.shift.next = self.ctl.shift.val();
-        self.pix.load_pop.next = self.ctl.load_pop.val();
-        self.pix.load_keep.next = self.ctl.load_keep.val();
+        self.pix.load.next = self.ctl.load.val();
         self.centre.next = self.pix.dout.val();
         // The hits as a mask.
         self.acc[0].next = self.zero64.val();
@@ -164,8 +161,7 @@ impl Logic for FccColSlotBuf {
         self.hits.re.next = self.ctl.ram_re.val();
         self.hits.raddr.next = self.ctl.ram_raddr.val();
         self.hits.shift.next = self.ctl.shift.val();
-        self.hits.load_pop.next = self.ctl.load_pop.val();
-        self.hits.load_keep.next = self.ctl.load_keep.val();
+        self.hits.load.next = self.ctl.load.val();
         for e in 0..self._n {
             self.hit[e].next = self.hits.dout.val().get_bit(e);
         }
@@ -183,8 +179,7 @@ impl Logic for FccColSlotBuf {
             self.labels[w].re.next = self.ctl.ram_re.val();
             self.labels[w].raddr.next = self.ctl.ram_raddr.val();
             self.labels[w].shift.next = self.ctl.shift.val();
-            self.labels[w].load_pop.next = self.ctl.load_pop.val();
-            self.labels[w].load_keep.next = self.ctl.load_keep.val();
+            self.labels[w].load.next = self.ctl.load.val();
             self.labels[w].l0.next = self.lab[w * 4].val();
             self.labels[w].l1.next = self.lab[w * 4 + 1].val();
             self.labels[w].l2.next = self.lab[w * 4 + 2].val();

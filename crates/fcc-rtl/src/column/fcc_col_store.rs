@@ -81,6 +81,9 @@ pub struct FccColStore {
     lists: FccLabelLists,
     out: FccRecordOut,
     rets: FccSlotReturns,
+    /// The free record slots, their FIFO (512 x 9 bits) in LUT RAM: about
+    /// 150 LUTs for a RAMB18, so that the core at its 13-bit labels takes
+    /// 24 block RAMs (36k equivalents; docs/column-core.md).
     slots: FccLabelPool,
     labels: FccLabelPool,
     one: Constant<Bits<12>>,
@@ -131,7 +134,7 @@ impl FccColStore {
             lists: FccLabelLists::new(p),
             out: Default::default(),
             rets: Default::default(),
-            slots: FccLabelPool::with_bits(SLOT_BITS),
+            slots: FccLabelPool::with_bits(SLOT_BITS).in_lut_ram(),
             labels: FccLabelPool::new(p),
             one: kb(1),
         }

@@ -150,6 +150,13 @@ impl FccLabelPool {
             max_label: kb(max),
         }
     }
+
+    /// Its FIFO in LUT RAM ([`FccRam::in_lut_ram`]): for a small pool
+    /// (the 511 record slots), whose FIFO would take a block RAM alone.
+    pub fn in_lut_ram(mut self) -> Self {
+        self.fifo = self.fifo.in_lut_ram();
+        self
+    }
 }
 
 impl Logic for FccLabelPool {

@@ -5,7 +5,7 @@
 use rust_hdl::prelude::*;
 
 use super::fcc_col_slot_buf::SLOT_BUF_BITS;
-use crate::fcc_stream_ctl::AHEAD;
+use crate::fcc_stream_ctl::LOAD;
 use crate::fcc_stream_lane::FccStreamLane;
 
 /// Four entries' labels in one lane word, the first in the low bits.
@@ -26,8 +26,7 @@ pub struct FccQuadLane {
     pub re: Signal<In, Bit>,
     pub raddr: Signal<In, Bits<SLOT_BUF_BITS>>,
     pub shift: Signal<In, Bit>,
-    pub load_pop: Signal<In, Bits<AHEAD>>,
-    pub load_keep: Signal<In, Bits<AHEAD>>,
+    pub load: Signal<In, Bits<LOAD>>,
     pub l0: Signal<In, Bits<16>>,
     pub l1: Signal<In, Bits<16>>,
     pub l2: Signal<In, Bits<16>>,
@@ -55,8 +54,7 @@ impl Logic for FccQuadLane {
         self.lane.re.next = self.re.val();
         self.lane.raddr.next = self.raddr.val();
         self.lane.shift.next = self.shift.val();
-        self.lane.load_pop.next = self.load_pop.val();
-        self.lane.load_keep.next = self.load_keep.val();
+        self.lane.load.next = self.load.val();
         self.o0.next = self.lane.dout.val().l0;
         self.o1.next = self.lane.dout.val().l1;
         self.o2.next = self.lane.dout.val().l2;
