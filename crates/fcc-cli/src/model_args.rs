@@ -209,8 +209,7 @@ impl HwArgs {
         let (d, p) = (self.scan_defaults().fields(), self.unchecked().fields());
         p.iter()
             .filter(|(name, v)| {
-                *name != "fsize"
-                    && (*name == "scan" || !d.iter().any(|(n, x)| n == name && x == v))
+                *name != "fsize" && (*name == "scan" || !d.iter().any(|(n, x)| n == name && x == v))
             })
             .map(|(name, v)| format!(" --{} {v}", name.replace('_', "-")))
             .collect()

@@ -100,27 +100,46 @@ fn the_limits_are_run_limits_and_the_frame_size() {
             rng.gen_range(1..=511),
         ));
     }
+    // Each case is given for two cycles. The probe's inputs are registered,
+    // so the combinational outputs show a case one step after it is given
+    // and the ring check's (registered) one step later: after a case's
+    // first step the ring check's are still the case before's.
     let mut last: Option<(String, LimOut)> = None;
     for &(r, c, k, bridge, reach, open) in &cases {
-        let o = d.step(&LimIn {
+        let input = LimIn {
             run_rows: r as u8,
             run_cols: c as u16,
             half_k: (k >> 1) as u8,
             bridge: bridge as u16,
             ring_reach: reach as u16,
             open_limit: open as u16,
-        });
-        if let Some((what, want)) = last.take() {
+        };
+        let what = format!(
+            "rows {r}, cols {c}, K {k}, RUN_BRIDGE {bridge}, RUN_RING_REACH {reach}, RUN_OPEN_LIMIT {open}"
+        );
+        let want = expected(r, c, k, bridge, reach, open);
+        // First step: the case before, whole.
+        let o = d.step(&input);
+        if let Some((what, want)) = &last {
             assert_eq!(
                 format!("{o:?}"),
                 format!("{want:?}"),
                 "{what}, seed {seed:#x}"
             );
         }
-        last = Some((
-            format!("rows {r}, cols {c}, K {k}, RUN_BRIDGE {bridge}, RUN_RING_REACH {reach}, RUN_OPEN_LIMIT {open}"),
-            expected(r, c, k, bridge, reach, open),
-        ));
+        // Second step: this case, the ring check's still the one before's.
+        let o = d.step(&input);
+        let mut mixed = want;
+        if let Some((_, before)) = &last {
+            (mixed.ring_on, mixed.ring_f_max, mixed.ring_l_min) =
+                (before.ring_on, before.ring_f_max, before.ring_l_min);
+            assert_eq!(
+                format!("{o:?}"),
+                format!("{mixed:?}"),
+                "{what} (the ring check's a cycle late, the case before's), seed {seed:#x}"
+            );
+        }
+        last = Some((what, want));
     }
     let (what, want) = last.expect("a case");
     let o = d.step(&LimIn::default());

@@ -1,6 +1,6 @@
 //! `FccColLimitsProbe`: `FccColLimits` behind registered inputs (the inputs
 //! given in one cycle are its inputs in the next), for its bench; the
-//! outputs are the block's.
+//! outputs are the block's (the ring check's a cycle later).
 
 use rust_hdl::prelude::*;
 
@@ -45,6 +45,7 @@ impl Logic for FccColLimitsProbe {
         self.bridge_q.d.next = self.bridge.val();
         self.reach_q.d.next = self.ring_reach.val();
         self.open_q.d.next = self.open_limit.val();
+        self.limits.clk.next = self.clk.val();
         self.limits.run_rows.next = self.rows_q.q.val();
         self.limits.run_cols.next = self.cols_q.q.val();
         self.limits.half_k.next = self.k_q.q.val();

@@ -187,6 +187,7 @@ impl Logic for FccColTop {
         self.regs.joins.next = self.zero24.val();
         self.regs.gear_stalls.next = self.stats.held.val();
         // ---- The run parameters in the datapath's form.
+        self.limits.clk.next = self.clk.val();
         self.limits.run_rows.next = self.regs.run_rows.val().get_bits::<7>(0);
         self.limits.run_cols.next = self.regs.run_cols.val();
         self.limits.half_k.next = self.regs.run_k.val().get_bits::<3>(1);
