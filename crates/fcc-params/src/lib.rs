@@ -145,7 +145,8 @@ impl Scan {
     /// back: a 128 x 2048 frame needs 15 bits. The column core reuses the
     /// labels of closed clusters: 13 bits hold every source of the corpus
     /// at every K (at most 6,899 labels at once; docs/column-core.md,
-    /// "Width"), at 24.5 block RAMs where 15 bits take 65.
+    /// "Width"): the column core takes 24 block RAMs (36k equivalents)
+    /// at 13 bits, 65 at 15.
     pub fn default_label_bits(self) -> u32 {
         match self {
             Scan::Row => 15,

@@ -9,10 +9,10 @@
 //! gives (`load`, one-hot over the [`LOAD`] places counted before this
 //! cycle's pop: entry `i` takes the word at bit `i + 1` with `shift` and at
 //! bit `i` without; a register, worked out a cycle ahead, so that each lane
-//! bit's multiplexer takes it and `shift` straight). So the lanes share one set of these registers
-//! rather than holding equal copies, and each signal that reaches every
-//! lane's bits is built for Vivado to replicate (`FccFanoutReg`,
-//! `FccFanoutNet`).
+//! bit's multiplexer takes it and `shift` straight). So the lanes share
+//! one set of these registers rather than holding equal copies, and each
+//! signal that reaches every lane's bits is built for Vivado to replicate
+//! (`FccFanoutReg`, `FccFanoutNet`).
 //!
 //! A read is issued while the RAM has a word not read and the entries held
 //! and the reads on their way (two cycles' latency) are fewer than

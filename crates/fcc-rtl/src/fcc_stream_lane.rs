@@ -4,9 +4,9 @@
 //!
 //! A push (`we`) writes `din` at `waddr`; a read (`re`, `raddr`) gives its
 //! word two cycles later, which the entry `load` names takes (bit `i + 1`
-//! names entry `i` with `shift`, bit `i` without); `shift` moves each entry up to
-//! the one before it (the head is taken). The lanes
-//! of one FIFO take the same control, so they stay in step.
+//! names entry `i` with `shift`, bit `i` without); `shift` moves each entry
+//! up to the one before it (the head is taken). The lanes of one FIFO take
+//! the same control, so they stay in step.
 
 use rust_hdl::prelude::*;
 

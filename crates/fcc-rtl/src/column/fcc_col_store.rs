@@ -82,7 +82,7 @@ pub struct FccColStore {
     out: FccRecordOut,
     rets: FccSlotReturns,
     /// The free record slots, their FIFO (512 x 9 bits) in LUT RAM: about
-    /// 150 LUTs for a RAMB18, so that the core at its 13-bit labels takes
+    /// 140 LUTs for a RAMB18, so that the core at its 13-bit labels takes
     /// 24 block RAMs (36k equivalents; docs/column-core.md).
     slots: FccLabelPool,
     labels: FccLabelPool,
